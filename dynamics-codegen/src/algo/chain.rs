@@ -1,0 +1,241 @@
+//! The robot as a chain of joint frames.
+//!
+//! Standard D-H (Niku, Paul): `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)`; frame i sits
+//! at the far end of link i, and joint i moves about z_{i−1}. Because `Rotz` and `Transz`
+//! commute, the product `A_1 A_2 ⋯` regroups as
+//! `[Rotz(θ_1) Transz(d_1)] [Transx(a_1) Rotx(α_1) Rotz(θ_2) Transz(d_2)] ⋯`, so a frame J_i on
+//! the axis of joint i (J_i = frame i of the standard table times `(Transx(a_i) Rotx(α_i))⁻¹`)
+//! follows from J_{i−1} by `Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)`: the modified
+//! (Craig) form. The algorithms work in J frames, where joint i's axis is z and its torque is
+//! a single component. A link's inertia, given in standard frame i, is carried into J_i exactly.
+
+use super::{Mat3, Scalar, V3};
+
+/// Revolute or prismatic.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum JointKind {
+    /// Rotates about its axis: q = θ.
+    Revolute,
+    /// Slides along its axis: q = d.
+    Prismatic,
+}
+
+/// One row of a standard D-H table with the joint variable substituted: for a revolute joint
+/// `sin_theta`, `cos_theta` are of `q + offset`, for a prismatic one `d` is `q + offset`.
+#[derive(Clone, Copy, Debug)]
+pub struct DhRow<S> {
+    /// Joint kind.
+    pub kind: JointKind,
+    /// sin θ_i.
+    pub sin_theta: S,
+    /// cos θ_i.
+    pub cos_theta: S,
+    /// d_i.
+    pub d: S,
+    /// a_i.
+    pub a: S,
+    /// sin α_i.
+    pub sin_alpha: S,
+    /// cos α_i.
+    pub cos_alpha: S,
+}
+
+/// Inertial parameters of a link as a datasheet gives them: mass, centre of mass in link frame
+/// i, and the inertia tensor about the centre of mass in the axes of frame i,
+/// `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` with `Ixy = −∫xy dm` (as URDF).
+#[derive(Clone, Copy, Debug)]
+pub struct Inertial<S> {
+    /// Mass.
+    pub mass: S,
+    /// Centre of mass.
+    pub com: V3<S>,
+    /// Inertia tensor about the centre of mass.
+    pub inertia: [S; 6],
+}
+
+/// Inertial parameters about a joint frame's origin, linear in the parameters: mass `m`, first
+/// moment `h = m c`, inertia tensor `I_O = I_C + m(cᵀc·1 − c cᵀ)`.
+#[derive(Clone, Copy, Debug)]
+pub struct Body<S> {
+    /// Mass.
+    pub mass: S,
+    /// First moment of mass about the origin.
+    pub h: V3<S>,
+    /// Inertia tensor about the origin, `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`.
+    pub inertia: [S; 6],
+}
+
+impl<S: Scalar> Body<S> {
+    /// The body of a link whose frame is `(shift_x, 0, 0)` and `Rotx(α)` from the joint frame.
+    pub fn from_inertial(link: &Inertial<S>, shift_x: S, sin_alpha: S, cos_alpha: S) -> Body<S> {
+        let rot = Mat3::rot_x(sin_alpha, cos_alpha);
+        let c = rot.mul_vec(link.com);
+        let c = V3::new(c.x + shift_x, c.y, c.z);
+        let ic = Mat3::symmetric(link.inertia).congruence(&rot);
+        let m = link.mass;
+        let (mx, my, mz) = (m * c.x, m * c.y, m * c.z);
+        Body {
+            mass: m,
+            h: V3::new(mx, my, mz),
+            inertia: [
+                ic[0] + (my * c.y + mz * c.z),
+                ic[1] + (mx * c.x + mz * c.z),
+                ic[2] + (mx * c.x + my * c.y),
+                ic[3] - mx * c.y,
+                ic[4] - mx * c.z,
+                ic[5] - my * c.z,
+            ],
+        }
+    }
+
+    /// `I_O · w`.
+    pub fn inertia_mul(&self, w: V3<S>) -> V3<S> {
+        Mat3::symmetric(self.inertia).mul_vec(w)
+    }
+
+    /// `self + o` (both about the same origin, same axes).
+    #[must_use]
+    pub fn add(&self, o: &Body<S>) -> Body<S> {
+        let i = &self.inertia;
+        let j = &o.inertia;
+        Body {
+            mass: self.mass + o.mass,
+            h: self.h.add(o.h),
+            inertia: [i[0] + j[0], i[1] + j[1], i[2] + j[2], i[3] + j[3], i[4] + j[4], i[5] + j[5]],
+        }
+    }
+}
+
+/// Joint i of a [`Chain`]: the transform from J_{i−1} to J_i, `Rotx(α) Transx(a) Rotz(θ)
+/// Transz(d)`, and link i's body in J_i.
+#[derive(Clone, Copy, Debug)]
+pub struct ChainJoint<S> {
+    /// Joint kind.
+    pub kind: JointKind,
+    /// sin α (twist about the previous x axis).
+    pub sin_alpha: S,
+    /// cos α.
+    pub cos_alpha: S,
+    /// a (length along the previous x axis).
+    pub a: S,
+    /// sin θ.
+    pub sin_theta: S,
+    /// cos θ.
+    pub cos_theta: S,
+    /// d (offset along the new z axis).
+    pub d: S,
+    /// The link moved by this joint, about J_i's origin.
+    pub body: Body<S>,
+}
+
+impl<S: Scalar> ChainJoint<S> {
+    /// `Rᵀ v`: a vector in J_{i−1} axes expressed in J_i axes, with `R = Rotx(α) Rotz(θ)`.
+    pub fn to_child(&self, v: V3<S>) -> V3<S> {
+        let (sa, ca, st, ct) = (self.sin_alpha, self.cos_alpha, self.sin_theta, self.cos_theta);
+        let w = V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y);
+        V3::new(ct * w.x + st * w.y, ct * w.y - st * w.x, w.z)
+    }
+
+    /// `R v`: a vector in J_i axes expressed in J_{i−1} axes.
+    pub fn to_parent(&self, v: V3<S>) -> V3<S> {
+        let (sa, ca, st, ct) = (self.sin_alpha, self.cos_alpha, self.sin_theta, self.cos_theta);
+        let u = V3::new(ct * v.x - st * v.y, st * v.x + ct * v.y, v.z);
+        V3::new(u.x, ca * u.y - sa * u.z, sa * u.y + ca * u.z)
+    }
+
+    /// The origin of J_i in J_{i−1}: `(a, −sin α · d, cos α · d)`.
+    pub fn offset(&self) -> V3<S> {
+        V3::new(self.a, -(self.sin_alpha * self.d), self.cos_alpha * self.d)
+    }
+
+    /// The rotation `R` as a matrix.
+    pub fn rotation(&self) -> Mat3<S> {
+        Mat3::rot_x(self.sin_alpha, self.cos_alpha).mul(&Mat3::rot_z(self.sin_theta, self.cos_theta))
+    }
+
+    /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes.
+    pub fn body_to_parent(&self, b: &Body<S>) -> Body<S> {
+        let p = self.offset();
+        let m = b.mass;
+        let hr = self.to_parent(b.h);
+        let ir = Mat3::symmetric(b.inertia).congruence(&self.rotation());
+        let mp = p.scale(m);
+        // I' = R I Rᵀ + m(|p|²1 − p pᵀ) + 2(p·h')1 − p h'ᵀ − h' pᵀ, with h' = R h
+        let (px, py, pz) = (p.x, p.y, p.z);
+        let xx = mp.y * py + mp.z * pz;
+        let yy = mp.x * px + mp.z * pz;
+        let zz = mp.x * px + mp.y * py;
+        let (phx, phy, phz) = (px * hr.x, py * hr.y, pz * hr.z);
+        Body {
+            mass: m,
+            h: hr.add(mp),
+            inertia: [
+                ir[0] + xx + (phy + phz) + (phy + phz),
+                ir[1] + yy + (phx + phz) + (phx + phz),
+                ir[2] + zz + (phx + phy) + (phx + phy),
+                ir[3] - mp.x * py - (px * hr.y + hr.x * py),
+                ir[4] - mp.x * pz - (px * hr.z + hr.x * pz),
+                ir[5] - mp.y * pz - (py * hr.z + hr.y * pz),
+            ],
+        }
+    }
+}
+
+/// A serial robot as joint frames; see the module documentation.
+#[derive(Clone, Debug)]
+pub struct Chain<S> {
+    /// The joints, base to tip.
+    pub joints: Vec<ChainJoint<S>>,
+}
+
+impl<S: Scalar> Chain<S> {
+    /// The chain of a standard D-H table. `rows` and `links` have one entry per joint.
+    pub fn standard(rows: &[DhRow<S>], links: &[Inertial<S>]) -> Chain<S> {
+        let joints = rows
+            .iter()
+            .zip(links)
+            .enumerate()
+            .map(|(i, (row, link))| {
+                let zero = row.d.zero();
+                let (sa, ca, a) = match i.checked_sub(1).map(|p| &rows[p]) {
+                    Some(prev) => (prev.sin_alpha, prev.cos_alpha, prev.a),
+                    None => (zero, zero.one(), zero),
+                };
+                ChainJoint {
+                    kind: row.kind,
+                    sin_alpha: sa,
+                    cos_alpha: ca,
+                    a,
+                    sin_theta: row.sin_theta,
+                    cos_theta: row.cos_theta,
+                    d: row.d,
+                    body: Body::from_inertial(link, row.a, row.sin_alpha, row.cos_alpha),
+                }
+            })
+            .collect();
+        Chain { joints }
+    }
+
+    /// The chain of a modified (Craig) D-H table, whose row i holds `a_{i−1}`, `α_{i−1}`,
+    /// `θ_i`, `d_i`; link frames are the joint frames.
+    pub fn modified(rows: &[DhRow<S>], links: &[Inertial<S>]) -> Chain<S> {
+        let joints = rows
+            .iter()
+            .zip(links)
+            .map(|(row, link)| {
+                let zero = row.d.zero();
+                ChainJoint {
+                    kind: row.kind,
+                    sin_alpha: row.sin_alpha,
+                    cos_alpha: row.cos_alpha,
+                    a: row.a,
+                    sin_theta: row.sin_theta,
+                    cos_theta: row.cos_theta,
+                    d: row.d,
+                    body: Body::from_inertial(link, zero, zero, zero.one()),
+                }
+            })
+            .collect();
+        Chain { joints }
+    }
+}

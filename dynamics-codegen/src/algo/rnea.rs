@@ -1,0 +1,71 @@
+//! Recursive Newton-Euler (Luh, Walker, Paul): inverse dynamics
+//! `tau = M(q) qdd + C(q, qd) qd + g(q)` in O(n).
+//!
+//! Forward, in joint frames: `ω_i = Rᵀω_{i−1} + q̇_i z`, `ω̇_i = Rᵀω̇_{i−1} + Rᵀω_{i−1} × q̇_i z +
+//! q̈_i z`, `v̇_i = Rᵀ(v̇_{i−1} + ω̇_{i−1} × p_i + ω_{i−1} × (ω_{i−1} × p_i))` (plus `2ω_i × ḋ z + d̈ z`
+//! for a prismatic joint), with `v̇_0 = −gravity`. With first moments `h = m c`:
+//! `F_i = m v̇_i + ω̇_i × h + ω_i × (ω_i × h)`, `N_i = I ω̇_i + ω_i × I ω_i + h × v̇_i`.
+//! Backward: `f_i = F_i + R f_{i+1}`, `n_i = N_i + R n_{i+1} + p_{i+1} × R f_{i+1}`, and
+//! `tau_i = n_i · z` (revolute) or `f_i · z` (prismatic). Setting `qdd = 0` and gravity to zero
+//! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
+//! without gravity.
+
+use super::{Chain, JointKind, Scalar, V3};
+
+/// Joint torques of `chain` moving with velocities `qd` and accelerations `qdd` under `gravity`
+/// (the gravity acceleration in the base frame). Actuator inertia and springs are not included.
+pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) -> Vec<S> {
+    let n = chain.joints.len();
+    let zero = gravity.x.zero();
+    let mut w = V3::zero(zero);
+    let mut wd = V3::zero(zero);
+    let mut vd = gravity.neg();
+    let mut forces = Vec::with_capacity(n);
+    for (i, j) in chain.joints.iter().enumerate() {
+        let p = j.offset();
+        let vd_parent = vd.add(wd.cross(p)).add(w.cross(w.cross(p)));
+        let w_in = j.to_child(w);
+        let wd_in = j.to_child(wd);
+        vd = j.to_child(vd_parent);
+        match j.kind {
+            JointKind::Revolute => {
+                w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
+                let c = w_in.cross_z(qd[i]);
+                wd = V3::new(wd_in.x + c.x, wd_in.y + c.y, wd_in.z + qdd[i]);
+            }
+            JointKind::Prismatic => {
+                w = w_in;
+                wd = wd_in;
+                let c = w.cross_z(qd[i] + qd[i]);
+                vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
+            }
+        }
+        let b = &j.body;
+        let f = vd
+            .scale(b.mass)
+            .add(wd.cross(b.h))
+            .add(w.cross(w.cross(b.h)));
+        let nn = b
+            .inertia_mul(wd)
+            .add(w.cross(b.inertia_mul(w)))
+            .add(b.h.cross(vd));
+        forces.push((f, nn));
+    }
+    let mut tau = vec![zero; n];
+    let mut child: Option<(V3<S>, V3<S>)> = None;
+    for i in (0..n).rev() {
+        let (mut f, mut nn) = forces[i];
+        if let Some((fc, nc)) = child {
+            let next = &chain.joints[i + 1];
+            let rf = next.to_parent(fc);
+            f = f.add(rf);
+            nn = nn.add(next.to_parent(nc)).add(next.offset().cross(rf));
+        }
+        tau[i] = match chain.joints[i].kind {
+            JointKind::Revolute => nn.z,
+            JointKind::Prismatic => f.z,
+        };
+        child = Some((f, nn));
+    }
+    tau
+}

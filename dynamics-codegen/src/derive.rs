@@ -1,0 +1,294 @@
+//! Derivation: traces the algorithms of [`crate::algo`] on the symbolic scalar, turning a
+//! [`Robot`] into the closed-form [`Equations`] in one shared expression graph.
+//!
+//! * `M` by the composite rigid body algorithm, plus actuator inertia on the diagonal;
+//! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` (the book's
+//!   D_ijk, eq. 6.44) by differentiating `M`'s graph, and `C_ij = Σ_k Γ_ijk q̇_k`;
+//! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
+//! * the kinetic and potential energy.
+
+use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
+use crate::model::{Convention, Robot, Value};
+use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
+use std::cell::RefCell;
+
+/// The closed-form equations of a robot: node ids into [`Equations::graph`].
+#[derive(Clone, Debug)]
+pub struct Equations {
+    /// The shared expression graph.
+    pub graph: Graph,
+    /// Number of joints.
+    pub dof: usize,
+    /// Struct fields, in the order of [`Var::Param`] indices.
+    pub fields: Vec<String>,
+    /// Joint kinds.
+    pub kinds: Vec<JointKind>,
+    /// For revolute joint i whose θ offset is not a multiple of π/2: the offset's node, so that
+    /// [`Var::SinQ`]`(i)` is `sin(q_i + offset)`.
+    pub angle_offsets: Vec<Option<NodeId>>,
+    /// `M(q)`, n × n.
+    pub mass: Vec<Vec<NodeId>>,
+    /// `Γ_ijk` (= D_ijk) as `christoffel[i][j][k]`.
+    pub christoffel: Vec<Vec<Vec<NodeId>>>,
+    /// `C(q, q̇)`, n × n.
+    pub coriolis: Vec<Vec<NodeId>>,
+    /// `C(q, q̇) q̇`.
+    pub coriolis_torques: Vec<NodeId>,
+    /// `g(q)` with springs.
+    pub gravity: Vec<NodeId>,
+    /// `C q̇ + g`.
+    pub bias: Vec<NodeId>,
+    /// `τ = M q̈ + C q̇ + g`.
+    pub tau: Vec<NodeId>,
+    /// Kinetic energy.
+    pub kinetic_energy: NodeId,
+    /// Potential energy.
+    pub potential_energy: NodeId,
+}
+
+/// Sine and cosine of an exact multiple `k` of π when they are rational.
+fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
+    // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
+    let quarter_turns = k.mul(Number::int(2)).as_integer()?;
+    Some(match quarter_turns.rem_euclid(4) {
+        0 => (Number::ZERO, Number::ONE),
+        1 => (Number::ONE, Number::ZERO),
+        2 => (Number::ZERO, Number::MINUS_ONE),
+        _ => (Number::MINUS_ONE, Number::ZERO),
+    })
+}
+
+struct Tracer<'g> {
+    graph: &'g RefCell<Graph>,
+    fields: &'g [String],
+}
+
+impl<'g> Tracer<'g> {
+    fn expr(&self, id: NodeId) -> Expr<'g> {
+        Expr::new(self.graph, id)
+    }
+
+    fn num(&self, n: Number) -> Expr<'g> {
+        let id = self.graph.borrow_mut().num(n);
+        self.expr(id)
+    }
+
+    fn var(&self, v: Var) -> Expr<'g> {
+        let id = self.graph.borrow_mut().var(v);
+        self.expr(id)
+    }
+
+    fn value(&self, v: &Value) -> Expr<'g> {
+        match v {
+            Value::Num(n) => self.num(*n),
+            Value::Pi => self.num(Number::Float(std::f64::consts::PI)),
+            Value::Field(f) => {
+                let k = self.fields.iter().position(|x| x == f).unwrap_or(0);
+                self.var(Var::Param(u16::try_from(k).unwrap_or(u16::MAX)))
+            }
+            // The joint variable was split off by the front end; it never reaches here.
+            Value::Joint(_) => self.num(Number::ZERO),
+            Value::Neg(a) => -self.value(a),
+            Value::Add(a, b) => self.value(a) + self.value(b),
+            Value::Sub(a, b) => self.value(a) - self.value(b),
+            Value::Mul(a, b) => self.value(a) * self.value(b),
+            Value::Div(a, b) => {
+                let num = self.value(a);
+                let den = self.value(b);
+                let r = self.graph.borrow_mut().recip(den.id());
+                // A literal zero divisor is rejected by the front end's check.
+                num * r.map_or_else(|| self.num(Number::ZERO), |id| self.expr(id))
+            }
+        }
+    }
+
+    /// `(sin v, cos v)`, exact where `v` is an exact multiple of π with rational sine and
+    /// cosine.
+    fn sin_cos(&self, v: &Value) -> (Expr<'g>, Expr<'g>) {
+        if let Some((s, c)) = v.pi_multiple().and_then(exact_sin_cos) {
+            return (self.num(s), self.num(c));
+        }
+        let x = self.value(v);
+        let mut g = self.graph.borrow_mut();
+        let (s, c) = (g.sin(x.id()), g.cos(x.id()));
+        drop(g);
+        (self.expr(s), self.expr(c))
+    }
+}
+
+/// Traces the equations of `robot`. The front end has checked the robot: every field exists and
+/// the table is not empty.
+#[must_use]
+pub fn derive(robot: &Robot) -> Equations {
+    let fields = robot.fields();
+    let graph = RefCell::new(Graph::new());
+    let t = Tracer { graph: &graph, fields: &fields };
+    let n = robot.dof();
+    let idx = |i: usize| u16::try_from(i).unwrap_or(u16::MAX);
+    let zero = t.num(Number::ZERO);
+    let half = t.num(Number::ratio(1, 2).unwrap_or(Number::ONE));
+
+    let mut angle_offsets = vec![None; n];
+    let mut rows = Vec::with_capacity(n);
+    let mut links = Vec::with_capacity(n);
+    for (i, j) in robot.joints.iter().enumerate() {
+        let (sin_theta, cos_theta, d) = match j.kind {
+            JointKind::Revolute => {
+                let (s, c) = (t.var(Var::SinQ(idx(i))), t.var(Var::CosQ(idx(i))));
+                let quarter_turns = j
+                    .theta
+                    .pi_multiple()
+                    .and_then(|k| k.mul(Number::int(2)).as_integer());
+                let (s, c) = match quarter_turns {
+                    // sin(q + kπ/2), cos(q + kπ/2) from sin q, cos q
+                    Some(k) => match k.rem_euclid(4) {
+                        0 => (s, c),
+                        1 => (c, -s),
+                        2 => (-s, -c),
+                        _ => (-c, s),
+                    },
+                    None => {
+                        angle_offsets[i] = Some(t.value(&j.theta).id());
+                        (s, c)
+                    }
+                };
+                (s, c, t.value(&j.d))
+            }
+            JointKind::Prismatic => {
+                let (s, c) = t.sin_cos(&j.theta);
+                (s, c, t.var(Var::Q(idx(i))) + t.value(&j.d))
+            }
+        };
+        let (sin_alpha, cos_alpha) = t.sin_cos(&j.alpha);
+        rows.push(DhRow { kind: j.kind, sin_theta, cos_theta, d, a: t.value(&j.a), sin_alpha, cos_alpha });
+        links.push(Inertial {
+            mass: t.value(&j.mass),
+            com: V3::new(t.value(&j.com[0]), t.value(&j.com[1]), t.value(&j.com[2])),
+            inertia: [
+                t.value(&j.inertia[0]),
+                t.value(&j.inertia[1]),
+                t.value(&j.inertia[2]),
+                t.value(&j.inertia[3]),
+                t.value(&j.inertia[4]),
+                t.value(&j.inertia[5]),
+            ],
+        });
+    }
+    let chain = match robot.convention {
+        Convention::Standard => Chain::standard(&rows, &links),
+        Convention::Modified => Chain::modified(&rows, &links),
+    };
+    let gravity = V3::new(t.value(&robot.gravity[0]), t.value(&robot.gravity[1]), t.value(&robot.gravity[2]));
+    let no_gravity = V3::zero(zero);
+    let q: Vec<Expr> = (0..n).map(|i| t.var(Var::Q(idx(i)))).collect();
+    let qd: Vec<Expr> = (0..n).map(|i| t.var(Var::Qd(idx(i)))).collect();
+    let qdd: Vec<Expr> = (0..n).map(|i| t.var(Var::Qdd(idx(i)))).collect();
+    let zeros = vec![zero; n];
+    let actuator: Vec<Expr> = robot.joints.iter().map(|j| t.value(&j.actuator_inertia)).collect();
+    let springs: Vec<Option<(Expr, Expr)>> = robot
+        .joints
+        .iter()
+        .map(|j| j.spring.as_ref().map(|s| (t.value(&s.stiffness), t.value(&s.rest))))
+        .collect();
+    let spring_torque = |i: usize| springs[i].map_or(zero, |(k, rest)| k * (q[i] - rest));
+
+    // M(q)
+    let mut mass = algo::crba(&chain);
+    for (i, row) in mass.iter_mut().enumerate() {
+        row[i] = row[i] + actuator[i];
+    }
+    // RNEA traces
+    let gravity_torques: Vec<Expr> = algo::rnea(&chain, &zeros, &zeros, gravity)
+        .into_iter()
+        .enumerate()
+        .map(|(i, x)| x + spring_torque(i))
+        .collect();
+    let coriolis_torques = algo::rnea(&chain, &qd, &zeros, no_gravity);
+    let bias: Vec<Expr> = algo::rnea(&chain, &qd, &zeros, gravity)
+        .into_iter()
+        .enumerate()
+        .map(|(i, x)| x + spring_torque(i))
+        .collect();
+    let tau: Vec<Expr> = algo::rnea(&chain, &qd, &qdd, gravity)
+        .into_iter()
+        .enumerate()
+        .map(|(i, x)| x + actuator[i] * qdd[i] + spring_torque(i))
+        .collect();
+    let mut kinetic = algo::kinetic_energy(&chain, &qd, zero);
+    for i in 0..n {
+        kinetic = kinetic + half * actuator[i] * qd[i] * qd[i];
+    }
+    let mut potential = algo::potential_energy(&chain, gravity);
+    for (i, s) in springs.iter().enumerate() {
+        if let Some((k, rest)) = s {
+            let dq = q[i] - *rest;
+            potential = potential + half * *k * dq * dq;
+        }
+    }
+
+    let ids = |v: &[Expr]| v.iter().map(|e| e.id()).collect::<Vec<_>>();
+    let mass_ids: Vec<Vec<NodeId>> = mass.iter().map(|r| ids(r)).collect();
+    let flat: Vec<NodeId> = mass_ids.iter().flatten().copied().collect();
+    let half_id = half.id();
+    let qd_ids: Vec<NodeId> = ids(&qd);
+    let (coriolis_torques, gravity_ids, bias, tau) =
+        (ids(&coriolis_torques), ids(&gravity_torques), ids(&bias), ids(&tau));
+    let (kinetic_energy, potential_energy) = (kinetic.id(), potential.id());
+
+    // ∂M/∂q_k, then Γ_ijk and C.
+    let mut g = graph.into_inner();
+    let dm: Vec<Vec<NodeId>> = (0..n).map(|k| g.derivative(&flat, idx(k))).collect();
+    let d = |k: usize, i: usize, j: usize| dm[k][i * n + j];
+    let mut christoffel = vec![vec![vec![half_id; n]; n]; n];
+    let mut coriolis = vec![vec![half_id; n]; n];
+    for i in 0..n {
+        for j in 0..n {
+            let mut c = g.num(Number::ZERO);
+            for k in 0..n {
+                let gamma = if k < j {
+                    christoffel[i][k][j]
+                } else {
+                    let s = g.add(d(k, i, j), d(j, i, k));
+                    let s = g.sub(s, d(i, j, k));
+                    g.mul(half_id, s)
+                };
+                christoffel[i][j][k] = gamma;
+                let term = g.mul(gamma, qd_ids[k]);
+                c = g.add(c, term);
+            }
+            coriolis[i][j] = c;
+        }
+    }
+
+    Equations {
+        graph: g,
+        dof: n,
+        fields: fields.clone(),
+        kinds: robot.joints.iter().map(|j| j.kind).collect(),
+        angle_offsets,
+        mass: mass_ids,
+        christoffel,
+        coriolis,
+        coriolis_torques,
+        gravity: gravity_ids,
+        bias,
+        tau,
+        kinetic_energy,
+        potential_energy,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exact_sin_cos;
+    use crate::symbolic::Number;
+
+    #[test]
+    fn exact_angles() {
+        let half = Number::ratio(1, 2).unwrap();
+        assert_eq!(exact_sin_cos(half), Some((Number::ONE, Number::ZERO)));
+        assert_eq!(exact_sin_cos(half.neg()), Some((Number::MINUS_ONE, Number::ZERO)));
+        assert_eq!(exact_sin_cos(Number::ONE), Some((Number::ZERO, Number::MINUS_ONE)));
+        assert_eq!(exact_sin_cos(Number::ratio(1, 3).unwrap()), None);
+    }
+}

@@ -1,0 +1,138 @@
+//! The generator behind `#[derive(Dynamics)]`: it turns a serial robot's Denavit-Hartenberg
+//! table into closed-form, straight-line Rust for its equations of motion.
+//!
+//! This crate is an implementation detail of `dynamics-macros` and of the command-line tool;
+//! its API is **not** semver-stable. Use `dynamics-runtime` with its `derive` feature.
+//!
+//! The pipeline is a compiler, one module per step:
+//!
+//! 1. [`front`]: the derive input (or a description file, [`model::from_text`]) is parsed
+//!    into a [`model::Robot`], with every error on its span;
+//! 2. [`derive`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
+//!    builds the closed forms as one hash-consed expression graph, simplified as it is built;
+//! 3. [`emit`]: each output (`M`, `C`, `g`, `τ`, …) becomes a straight-line function body.
+
+pub mod algo;
+pub mod derive;
+pub mod emit;
+pub mod front;
+pub mod model;
+pub mod symbolic;
+
+use proc_macro2::TokenStream;
+use quote::{quote, ToTokens};
+
+pub use derive::{derive, Equations};
+pub use emit::OpCount;
+
+/// Entry point of `#[derive(Dynamics)]`.
+#[must_use]
+pub fn derive_dynamics(input: TokenStream) -> TokenStream {
+    let input: syn::DeriveInput = match syn::parse2(input) {
+        Ok(i) => i,
+        Err(e) => return e.to_compile_error(),
+    };
+    match front::parse(&input) {
+        Ok(parsed) => expand(&input, &parsed),
+        Err(e) => e.to_compile_error(),
+    }
+}
+
+/// One generated method: its name, its arguments and its body, with operation counts.
+pub struct Method {
+    /// Method name, e.g. `mass_matrix`.
+    pub name: &'static str,
+    /// The body.
+    pub body: TokenStream,
+    /// Its operations.
+    pub ops: OpCount,
+}
+
+/// The generated methods of the [`Equations`], reading struct fields through `fields`.
+#[must_use]
+pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Vec<Method> {
+    use emit::Shape;
+    let ctx = emit::Context { krate, fields };
+    let shapes: [(&'static str, Shape); 8] = [
+        ("mass_matrix", Shape::Matrix(&eq.mass)),
+        ("coriolis_matrix", Shape::Matrix(&eq.coriolis)),
+        ("coriolis_torques", Shape::Vector(&eq.coriolis_torques)),
+        ("gravity_torques", Shape::Vector(&eq.gravity)),
+        ("bias_torques", Shape::Vector(&eq.bias)),
+        ("inverse_dynamics", Shape::Vector(&eq.tau)),
+        ("kinetic_energy", Shape::Scalar(eq.kinetic_energy)),
+        ("potential_energy", Shape::Scalar(eq.potential_energy)),
+    ];
+    shapes
+        .into_iter()
+        .map(|(name, shape)| {
+            let (body, ops) = emit::body(eq, &shape, &ctx);
+            Method { name, body, ops }
+        })
+        .collect()
+}
+
+fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
+    let eq = derive::derive(&parsed.robot);
+    let krate = parsed
+        .krate
+        .as_ref()
+        .map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream);
+    let fields = eq
+        .fields
+        .iter()
+        .map(|f| {
+            let ident = syn::Ident::new(f, proc_macro2::Span::call_site());
+            quote!(self.#ident)
+        })
+        .collect();
+    let n = eq.dof;
+    let methods = methods(&eq, &krate, fields);
+    let ident = &input.ident;
+    let (impl_generics, ty_generics, where_clause) = input.generics.split_generics();
+    let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
+    let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
+    let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());
+    let fns = methods.iter().map(|m| {
+        let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
+        let body = &m.body;
+        let (args, ret) = match m.name {
+            "mass_matrix" => (quote!(#q: &[T; #n]), quote!([[T; #n]; #n])),
+            "coriolis_matrix" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([[T; #n]; #n])),
+            "coriolis_torques" | "bias_torques" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([T; #n])),
+            "gravity_torques" => (quote!(#q: &[T; #n]), quote!([T; #n])),
+            "inverse_dynamics" => (quote!(#q: &[T; #n], #qd: &[T; #n], #qdd: &[T; #n]), quote!([T; #n])),
+            "kinetic_energy" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!(T)),
+            _ => (quote!(#q: &[T; #n]), quote!(T)),
+        };
+        quote! {
+            #[inline]
+            #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+            fn #name<T: #krate::Real>(&self, #args) -> #ret {
+                #body
+            }
+        }
+    });
+    let track = parsed.tracked_file.as_ref().map(|path| {
+        quote!(const _: &[u8] = ::core::include_bytes!(#path);)
+    });
+    quote! {
+        const _: () = {
+            #track
+            #[automatically_derived]
+            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
+                #(#fns)*
+            }
+        };
+    }
+}
+
+trait SplitGenerics {
+    fn split_generics(&self) -> (syn::ImplGenerics<'_>, syn::TypeGenerics<'_>, Option<&syn::WhereClause>);
+}
+
+impl SplitGenerics for syn::Generics {
+    fn split_generics(&self) -> (syn::ImplGenerics<'_>, syn::TypeGenerics<'_>, Option<&syn::WhereClause>) {
+        self.split_for_impl()
+    }
+}

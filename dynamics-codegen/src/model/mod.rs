@@ -1,0 +1,97 @@
+//! The robot as the generator sees it: a D-H table and link parameters whose values are exact
+//! literals or expressions over struct fields. Free of syn, so that the derive, description
+//! files and the command-line tool all produce it.
+
+mod file;
+mod value;
+
+pub use crate::algo::JointKind;
+pub use file::{from_json, from_text, from_toml, FileError};
+pub use value::{parse_value, Spanned, Value};
+
+/// Which D-H convention a table uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Convention {
+    /// Niku, Paul: `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)`.
+    Standard,
+    /// Craig: `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)`, with `a_{i−1}`,
+    /// `α_{i−1}` stored in row i.
+    Modified,
+}
+
+/// A joint spring with potential `½ k (q − rest)²`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spring {
+    /// Stiffness k.
+    pub stiffness: Value,
+    /// Rest position.
+    pub rest: Value,
+}
+
+/// Joint i and link i.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    /// Revolute (q = θ − offset) or prismatic (q = d − offset).
+    pub kind: JointKind,
+    /// θ: the offset added to q for a revolute joint, the constant angle for a prismatic one.
+    pub theta: Value,
+    /// d: the offset added to q for a prismatic joint, the constant length for a revolute one.
+    pub d: Value,
+    /// a.
+    pub a: Value,
+    /// α.
+    pub alpha: Value,
+    /// Mass of link i.
+    pub mass: Value,
+    /// Centre of mass in link frame i.
+    pub com: [Value; 3],
+    /// Inertia tensor about the centre of mass, axes of frame i: `[Ixx, Iyy, Izz, Ixy, Ixz,
+    /// Iyz]`, off-diagonal entries `−∫xy dm` (as URDF).
+    pub inertia: [Value; 6],
+    /// Actuator inertia I_i(act) (eq. 6.39), added to `M_ii`.
+    pub actuator_inertia: Value,
+    /// Optional joint spring.
+    pub spring: Option<Spring>,
+}
+
+/// A serial robot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Robot {
+    /// Name, for documentation.
+    pub name: String,
+    /// D-H convention of the table.
+    pub convention: Convention,
+    /// Gravity acceleration in the base frame, e.g. `[0, 0, −9.81]`.
+    pub gravity: [Value; 3],
+    /// Joints, base to tip.
+    pub joints: Vec<Joint>,
+}
+
+impl Robot {
+    /// Number of joints.
+    #[must_use]
+    pub fn dof(&self) -> usize {
+        self.joints.len()
+    }
+
+    /// Every value of the robot, in a fixed order.
+    pub fn values(&self) -> impl Iterator<Item = &Value> {
+        self.gravity.iter().chain(self.joints.iter().flat_map(|j| {
+            [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
+                .into_iter()
+                .chain(j.com.iter())
+                .chain(j.inertia.iter())
+                .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
+        }))
+    }
+
+    /// The struct fields that the robot's values name, sorted and without repetition.
+    #[must_use]
+    pub fn fields(&self) -> Vec<String> {
+        let mut names = std::collections::BTreeSet::new();
+        for v in self.values() {
+            v.collect_fields(&mut names);
+        }
+        names.into_iter().collect()
+    }
+}

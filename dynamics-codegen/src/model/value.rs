@@ -1,0 +1,370 @@
+//! Values of a robot description: exact literals and expressions over struct fields.
+//!
+//! Grammar (the same in attributes and in description-file strings):
+//!
+//! ```text
+//! value := term (('+' | '-') term)*
+//! term  := power (('*' | '/') power)*
+//! power := unary ('^' integer)?
+//! unary := '-' unary | atom ('deg' | 'rad')?
+//! atom  := number | 'pi' | 'PI' | 'q' | 'q'N | field | 'self' '.' field | '(' value ')'
+//! ```
+//!
+//! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
+//! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact.
+
+use crate::symbolic::Number;
+use proc_macro2::Span;
+use std::collections::BTreeSet;
+use syn::parse::{Parse, ParseStream};
+use syn::{Ident, Lit, Token};
+
+/// A value: a literal or an expression.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// An exact number.
+    Num(Number),
+    /// π.
+    Pi,
+    /// A struct field.
+    Field(String),
+    /// The joint variable, with the index written after `q` (1-based), if any.
+    Joint(Option<usize>),
+    /// `−a`.
+    Neg(Box<Value>),
+    /// `a + b`.
+    Add(Box<Value>, Box<Value>),
+    /// `a − b`.
+    Sub(Box<Value>, Box<Value>),
+    /// `a · b`.
+    Mul(Box<Value>, Box<Value>),
+    /// `a / b`.
+    Div(Box<Value>, Box<Value>),
+}
+
+impl Value {
+    /// Zero.
+    #[must_use]
+    pub fn zero() -> Value {
+        Value::Num(Number::ZERO)
+    }
+
+    /// A number, made exact where it is a short decimal.
+    #[must_use]
+    pub fn from_f64(x: f64) -> Value {
+        Value::Num(Number::from_f64(x))
+    }
+
+    /// Whether the value is the literal zero.
+    #[must_use]
+    pub fn is_zero(&self) -> bool {
+        matches!(self, Value::Num(n) if n.is_zero())
+    }
+
+    pub(crate) fn collect_fields(&self, out: &mut BTreeSet<String>) {
+        match self {
+            Value::Field(f) => {
+                out.insert(f.clone());
+            }
+            Value::Neg(a) => a.collect_fields(out),
+            Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) | Value::Div(a, b) => {
+                a.collect_fields(out);
+                b.collect_fields(out);
+            }
+            Value::Num(_) | Value::Pi | Value::Joint(_) => {}
+        }
+    }
+
+    /// How often the joint variable occurs.
+    #[must_use]
+    pub fn joint_occurrences(&self) -> usize {
+        match self {
+            Value::Joint(_) => 1,
+            Value::Neg(a) => a.joint_occurrences(),
+            Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) | Value::Div(a, b) => {
+                a.joint_occurrences() + b.joint_occurrences()
+            }
+            Value::Num(_) | Value::Pi | Value::Field(_) => 0,
+        }
+    }
+
+    /// Splits `q`, `q + o`, `o + q`, `q − o` into the offset `o`; `None` if the joint variable
+    /// appears in another way.
+    #[must_use]
+    pub fn joint_offset(&self) -> Option<Value> {
+        match self {
+            Value::Joint(_) => Some(Value::zero()),
+            Value::Add(a, b) if matches!(**a, Value::Joint(_)) && b.joint_occurrences() == 0 => {
+                Some((**b).clone())
+            }
+            Value::Add(a, b) if matches!(**b, Value::Joint(_)) && a.joint_occurrences() == 0 => {
+                Some((**a).clone())
+            }
+            Value::Sub(a, b) if matches!(**a, Value::Joint(_)) && b.joint_occurrences() == 0 => {
+                Some(Value::Neg(b.clone()))
+            }
+            _ => None,
+        }
+    }
+
+    /// The value as an exact multiple of π, if it is one: `90 deg` and `pi / 2` give `1/2`, and
+    /// so does the float nearest to π/2 (as description files store it).
+    #[must_use]
+    pub fn pi_multiple(&self) -> Option<Number> {
+        match self {
+            Value::Num(n) if n.is_zero() => Some(Number::ZERO),
+            Value::Num(n) => {
+                let x = n.to_f64();
+                (-16i64..=16)
+                    .filter(|k| *k != 0)
+                    .find(|k| {
+                        #[allow(clippy::cast_precision_loss)]
+                        let kf = *k as f64;
+                        (kf * std::f64::consts::FRAC_PI_2 - x).abs() <= 2.0 * f64::EPSILON * x.abs()
+                    })
+                    .and_then(|k| Number::ratio(i128::from(k), 2))
+            }
+            Value::Pi => Some(Number::ONE),
+            Value::Neg(a) => a.pi_multiple().map(Number::neg),
+            Value::Add(a, b) => Some(a.pi_multiple()?.add(b.pi_multiple()?)),
+            Value::Sub(a, b) => Some(a.pi_multiple()?.sub(b.pi_multiple()?)),
+            Value::Mul(a, b) => match (a.exact(), b.exact()) {
+                (Some(k), _) => Some(k.mul(b.pi_multiple()?)),
+                (_, Some(k)) => Some(k.mul(a.pi_multiple()?)),
+                _ => None,
+            },
+            Value::Div(a, b) => Some(a.pi_multiple()?.mul(b.exact()?.recip()?)),
+            Value::Field(_) | Value::Joint(_) => None,
+        }
+    }
+
+    /// The value as an exact number, if it is one (π is not).
+    #[must_use]
+    pub fn exact(&self) -> Option<Number> {
+        match self {
+            Value::Num(n) => Some(*n),
+            Value::Neg(a) => Some(a.exact()?.neg()),
+            Value::Add(a, b) => Some(a.exact()?.add(b.exact()?)),
+            Value::Sub(a, b) => Some(a.exact()?.sub(b.exact()?)),
+            Value::Mul(a, b) => Some(a.exact()?.mul(b.exact()?)),
+            Value::Div(a, b) => a.exact()?.mul(b.exact()?.recip()?).into(),
+            Value::Pi | Value::Field(_) | Value::Joint(_) => None,
+        }
+    }
+
+    /// The value with fields read from `field` (π as `f64`); `None` if it names the joint
+    /// variable.
+    pub fn eval(&self, field: &dyn Fn(&str) -> Option<f64>) -> Option<f64> {
+        Some(match self {
+            Value::Num(n) => n.to_f64(),
+            Value::Pi => std::f64::consts::PI,
+            Value::Field(f) => field(f)?,
+            Value::Joint(_) => return None,
+            Value::Neg(a) => -a.eval(field)?,
+            Value::Add(a, b) => a.eval(field)? + b.eval(field)?,
+            Value::Sub(a, b) => a.eval(field)? - b.eval(field)?,
+            Value::Mul(a, b) => a.eval(field)? * b.eval(field)?,
+            Value::Div(a, b) => a.eval(field)? / b.eval(field)?,
+        })
+    }
+}
+
+impl std::fmt::Display for Value {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Value::Num(n) => write!(f, "{n}"),
+            Value::Pi => write!(f, "pi"),
+            Value::Field(x) => write!(f, "{x}"),
+            Value::Joint(None) => write!(f, "q"),
+            Value::Joint(Some(i)) => write!(f, "q{i}"),
+            Value::Neg(a) => write!(f, "-({a})"),
+            Value::Add(a, b) => write!(f, "({a} + {b})"),
+            Value::Sub(a, b) => write!(f, "({a} - {b})"),
+            Value::Mul(a, b) => write!(f, "{a} * {b}"),
+            Value::Div(a, b) => write!(f, "{a} / ({b})"),
+        }
+    }
+}
+
+/// A value parsed with the span of its first token (for error messages).
+pub struct Spanned {
+    /// The value.
+    pub value: Value,
+    /// Where it was written.
+    pub span: Span,
+    /// Fields it names, each with where it was written.
+    pub fields: Vec<(String, Span)>,
+}
+
+impl Parse for Spanned {
+    fn parse(input: ParseStream) -> syn::Result<Spanned> {
+        let span = input.span();
+        let mut fields = Vec::new();
+        let value = parse_sum(input, &mut fields)?;
+        Ok(Spanned { value, span, fields })
+    }
+}
+
+/// Parses a value from text (a description-file string).
+///
+/// # Errors
+/// A message if the text is not a value.
+pub fn parse_value(text: &str) -> Result<Value, String> {
+    let tokens: proc_macro2::TokenStream = text
+        .parse()
+        .map_err(|e: proc_macro2::LexError| format!("cannot read `{text}`: {e}"))?;
+    syn::parse2::<Spanned>(tokens)
+        .map(|s| s.value)
+        .map_err(|e| format!("cannot read `{text}` as a value: {e}"))
+}
+
+fn parse_sum(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+    let mut left = parse_product(input, fields)?;
+    loop {
+        if input.peek(Token![+]) {
+            input.parse::<Token![+]>()?;
+            left = Value::Add(Box::new(left), Box::new(parse_product(input, fields)?));
+        } else if input.peek(Token![-]) {
+            input.parse::<Token![-]>()?;
+            left = Value::Sub(Box::new(left), Box::new(parse_product(input, fields)?));
+        } else {
+            return Ok(left);
+        }
+    }
+}
+
+fn parse_product(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+    let mut left = parse_power(input, fields)?;
+    loop {
+        if input.peek(Token![*]) {
+            input.parse::<Token![*]>()?;
+            left = Value::Mul(Box::new(left), Box::new(parse_power(input, fields)?));
+        } else if input.peek(Token![/]) {
+            input.parse::<Token![/]>()?;
+            left = Value::Div(Box::new(left), Box::new(parse_power(input, fields)?));
+        } else {
+            return Ok(left);
+        }
+    }
+}
+
+fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+    let base = parse_unary(input, fields)?;
+    if !input.peek(Token![^]) {
+        return Ok(base);
+    }
+    input.parse::<Token![^]>()?;
+    let exponent: syn::LitInt = input.parse()?;
+    let n: u32 = exponent.base10_parse()?;
+    if !(1..=8).contains(&n) {
+        return Err(syn::Error::new(exponent.span(), "exponent must be an integer from 1 to 8"));
+    }
+    let mut value = base.clone();
+    for _ in 1..n {
+        value = Value::Mul(Box::new(value), Box::new(base.clone()));
+    }
+    Ok(value)
+}
+
+fn parse_unary(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+    if input.peek(Token![-]) {
+        input.parse::<Token![-]>()?;
+        return Ok(Value::Neg(Box::new(parse_unary(input, fields)?)));
+    }
+    let atom = parse_atom(input, fields)?;
+    if input.peek(Ident) {
+        let fork = input.fork();
+        let unit: Ident = fork.parse()?;
+        if unit == "deg" {
+            input.parse::<Ident>()?;
+            let pi_over_180 = Value::Div(Box::new(Value::Pi), Box::new(Value::Num(Number::int(180))));
+            return Ok(Value::Mul(Box::new(atom), Box::new(pi_over_180)));
+        }
+        if unit == "rad" {
+            input.parse::<Ident>()?;
+        }
+    }
+    Ok(atom)
+}
+
+fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+    if input.peek(syn::token::Paren) {
+        let content;
+        syn::parenthesized!(content in input);
+        let v = parse_sum(&content, fields)?;
+        if !content.is_empty() {
+            return Err(content.error("expected `)` after the value"));
+        }
+        return Ok(v);
+    }
+    if input.peek(Token![self]) {
+        input.parse::<Token![self]>()?;
+        input.parse::<Token![.]>()?;
+        let name: Ident = input.parse()?;
+        fields.push((name.to_string(), name.span()));
+        return Ok(Value::Field(name.to_string()));
+    }
+    if input.peek(Lit) {
+        let lit: Lit = input.parse()?;
+        let digits = match &lit {
+            Lit::Int(i) => i.base10_digits().to_string(),
+            Lit::Float(f) => f.base10_digits().to_string(),
+            _ => {
+                return Err(syn::Error::new(
+                    lit.span(),
+                    "expected a number, a struct field or an expression of them",
+                ))
+            }
+        };
+        let n = Number::parse_decimal(&digits)
+            .or_else(|| digits.parse::<f64>().ok().map(Number::from_f64))
+            .ok_or_else(|| syn::Error::new(lit.span(), "this number cannot be read"))?;
+        return Ok(Value::Num(n));
+    }
+    if input.peek(Ident) {
+        let name: Ident = input.parse()?;
+        let text = name.to_string();
+        if text == "pi" || text == "PI" {
+            return Ok(Value::Pi);
+        }
+        if text == "q" {
+            return Ok(Value::Joint(None));
+        }
+        if let Some(index) = text.strip_prefix('q').and_then(|d| d.parse::<usize>().ok()) {
+            return Ok(Value::Joint(Some(index)));
+        }
+        fields.push((text.clone(), name.span()));
+        return Ok(Value::Field(text));
+    }
+    Err(input.error("expected a number, a struct field or an expression of them"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{parse_value, Value};
+    use crate::symbolic::Number;
+
+    #[test]
+    fn literals_stay_exact() {
+        assert_eq!(parse_value("0.4318").unwrap(), Value::Num(Number::ratio(4318, 10000).unwrap()));
+        assert_eq!(parse_value("90 deg").unwrap().pi_multiple(), Number::ratio(1, 2));
+        assert_eq!(parse_value("-pi/2").unwrap().pi_multiple(), Number::ratio(-1, 2));
+        assert_eq!(Value::from_f64(1.5707963267948966).pi_multiple(), Number::ratio(1, 2));
+        assert_eq!(Value::from_f64(-1.5707963267948966).pi_multiple(), Number::ratio(-1, 2));
+        assert_eq!(Value::from_f64(1.2).pi_multiple(), None);
+    }
+
+    #[test]
+    fn expressions_over_fields() {
+        let v = parse_value("m2 * l2^2 / 12").unwrap();
+        let x = v.eval(&|f| match f {
+            "m2" => Some(3.0),
+            "l2" => Some(2.0),
+            _ => None,
+        });
+        assert_eq!(x, Some(1.0));
+        assert_eq!(parse_value("q + 90 deg").unwrap().joint_offset().unwrap().pi_multiple(), Number::ratio(1, 2));
+        assert!(parse_value("2 * q").unwrap().joint_offset().is_none());
+        assert!(parse_value("3 +").is_err());
+    }
+}

@@ -1,0 +1,462 @@
+//! A hash-consed expression graph.
+//!
+//! Nodes live in one arena, children before parents, addressed by [`NodeId`]. Every
+//! constructor looks its node up first, so a subexpression built twice is stored once: common
+//! subexpressions are shared as they are built. Constructors also apply cheap local rules
+//! (constant folding, `x·0`, `x·1`, `x + 0`, `−(−x)`, `c₁·(c₂·x)`, `a·x + b·x`), so a traced
+//! algorithm comes out already customized to its robot: every zero, one and exact constant of
+//! the D-H table folded away.
+
+use super::number::Number;
+use std::collections::HashMap;
+use std::fmt;
+
+/// Index of a node in a [`Graph`]; displayed as `t12`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct NodeId(pub u32);
+
+impl NodeId {
+    /// The index into the arena.
+    #[must_use]
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+impl fmt::Display for NodeId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "t{}", self.0)
+    }
+}
+
+/// A leaf of the graph: an input of the generated function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Var {
+    /// Position `q_i` (0-based joint index).
+    Q(u16),
+    /// `sin(q_i + offset_i)` of a revolute joint.
+    SinQ(u16),
+    /// `cos(q_i + offset_i)` of a revolute joint.
+    CosQ(u16),
+    /// Velocity `qd_i`.
+    Qd(u16),
+    /// Acceleration `qdd_i`.
+    Qdd(u16),
+    /// Robot parameter `k` (a struct field).
+    Param(u16),
+}
+
+/// A node of the graph.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Node {
+    /// A constant.
+    Const(Number),
+    /// An input.
+    Var(Var),
+    /// `a + b`.
+    Add(NodeId, NodeId),
+    /// `a · b`.
+    Mul(NodeId, NodeId),
+    /// `−a`.
+    Neg(NodeId),
+    /// `1 / a`.
+    Recip(NodeId),
+    /// `sin a` (of a parameter expression; joint angles use [`Var::SinQ`]).
+    Sin(NodeId),
+    /// `cos a`.
+    Cos(NodeId),
+}
+
+/// Counters of the graph's construction, for tests and benchmarks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Nodes stored.
+    pub nodes: usize,
+    /// Constructions answered by an existing node.
+    pub shared: usize,
+    /// Constructions answered by a simplification rule.
+    pub simplified: usize,
+}
+
+/// The expression arena.
+#[derive(Clone, Debug, Default)]
+pub struct Graph {
+    nodes: Vec<Node>,
+    // Only looked up, never iterated: emission order is the arena's order.
+    memo: HashMap<Node, NodeId>,
+    stats: Stats,
+}
+
+impl Graph {
+    /// An empty graph.
+    #[must_use]
+    pub fn new() -> Graph {
+        Graph::default()
+    }
+
+    /// The node behind an id.
+    #[must_use]
+    pub fn node(&self, id: NodeId) -> Node {
+        self.nodes[id.index()]
+    }
+
+    /// Number of nodes.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Whether the graph is empty.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.nodes.is_empty()
+    }
+
+    /// Construction counters.
+    #[must_use]
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// All nodes, children before parents.
+    pub fn nodes(&self) -> impl Iterator<Item = (NodeId, Node)> + '_ {
+        self.nodes
+            .iter()
+            .enumerate()
+            .map(|(i, n)| (NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")), *n))
+    }
+
+    fn intern(&mut self, node: Node) -> NodeId {
+        if let Some(&id) = self.memo.get(&node) {
+            self.stats.shared += 1;
+            return id;
+        }
+        let id = NodeId(u32::try_from(self.nodes.len()).expect("graph exceeds u32 nodes"));
+        self.nodes.push(node);
+        self.memo.insert(node, id);
+        self.stats.nodes += 1;
+        id
+    }
+
+    fn simplified(&mut self, id: NodeId) -> NodeId {
+        self.stats.simplified += 1;
+        id
+    }
+
+    /// The constant, if `id` is one.
+    #[must_use]
+    pub fn constant(&self, id: NodeId) -> Option<Number> {
+        match self.node(id) {
+            Node::Const(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// Whether `id` is the constant zero.
+    #[must_use]
+    pub fn is_zero(&self, id: NodeId) -> bool {
+        self.constant(id).is_some_and(Number::is_zero)
+    }
+
+    /// A constant node.
+    pub fn num(&mut self, c: Number) -> NodeId {
+        self.intern(Node::Const(c))
+    }
+
+    /// An input node.
+    pub fn var(&mut self, v: Var) -> NodeId {
+        self.intern(Node::Var(v))
+    }
+
+    /// Splits `c·x` into `(c, x)`, `−x` into `(−1, x)` and `x` into `(1, x)`.
+    fn coefficient(&self, id: NodeId) -> (Number, NodeId) {
+        match self.node(id) {
+            Node::Mul(a, b) => match self.node(a) {
+                Node::Const(c) => (c, b),
+                _ => (Number::ONE, id),
+            },
+            Node::Neg(a) => (Number::MINUS_ONE, a),
+            _ => (Number::ONE, id),
+        }
+    }
+
+    /// `a + b`.
+    pub fn add(&mut self, a: NodeId, b: NodeId) -> NodeId {
+        match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                let c = self.num(x.add(y));
+                return self.simplified(c);
+            }
+            (Node::Const(x), _) if x.is_zero() => return self.simplified(b),
+            (_, Node::Const(y)) if y.is_zero() => return self.simplified(a),
+            _ => {}
+        }
+        let (ca, ta) = self.coefficient(a);
+        let (cb, tb) = self.coefficient(b);
+        if ta == tb {
+            let c = self.num(ca.add(cb));
+            let sum = self.mul(c, ta);
+            return self.simplified(sum);
+        }
+        let (a, b) = if a <= b { (a, b) } else { (b, a) };
+        self.intern(Node::Add(a, b))
+    }
+
+    /// `a − b`.
+    pub fn sub(&mut self, a: NodeId, b: NodeId) -> NodeId {
+        let nb = self.neg(b);
+        self.add(a, nb)
+    }
+
+    /// `a · b`.
+    pub fn mul(&mut self, a: NodeId, b: NodeId) -> NodeId {
+        let (a, b) = match (self.node(a), self.node(b)) {
+            (Node::Const(x), Node::Const(y)) => {
+                let c = self.num(x.mul(y));
+                return self.simplified(c);
+            }
+            (_, Node::Const(_)) => (b, a),
+            _ => (a, b),
+        };
+        if let Node::Const(c) = self.node(a) {
+            if c.is_zero() {
+                return self.simplified(a);
+            }
+            if c.is_one() {
+                return self.simplified(b);
+            }
+            if c.is_minus_one() {
+                let n = self.neg(b);
+                return self.simplified(n);
+            }
+            // c·(d·x) = (cd)·x and c·(−x) = (−c)·x
+            let (d, x) = self.coefficient(b);
+            if x != b {
+                let cd = self.num(c.mul(d));
+                let r = self.mul(cd, x);
+                return self.simplified(r);
+            }
+            return self.intern(Node::Mul(a, b));
+        }
+        // Pull constants and signs out of products: (c·x)·y = c·(x·y).
+        let (ca, xa) = self.coefficient(a);
+        let (cb, xb) = self.coefficient(b);
+        if xa != a || xb != b {
+            let c = self.num(ca.mul(cb));
+            let xy = self.mul(xa, xb);
+            let r = self.mul(c, xy);
+            return self.simplified(r);
+        }
+        let (a, b) = if a <= b { (a, b) } else { (b, a) };
+        self.intern(Node::Mul(a, b))
+    }
+
+    /// `−a`.
+    pub fn neg(&mut self, a: NodeId) -> NodeId {
+        match self.node(a) {
+            Node::Const(c) => {
+                let r = self.num(c.neg());
+                self.simplified(r)
+            }
+            Node::Neg(x) => self.simplified(x),
+            Node::Mul(c, x) if self.constant(c).is_some() => {
+                let nc = self.num(self.constant(c).unwrap_or(Number::ONE).neg());
+                let r = self.mul(nc, x);
+                self.simplified(r)
+            }
+            _ => self.intern(Node::Neg(a)),
+        }
+    }
+
+    /// `1 / a`. A constant zero has no reciprocal: the result is then `None`.
+    pub fn recip(&mut self, a: NodeId) -> Option<NodeId> {
+        match self.node(a) {
+            Node::Const(c) => {
+                let r = c.recip()?;
+                Some(self.num(r))
+            }
+            Node::Recip(x) => Some(x),
+            _ => Some(self.intern(Node::Recip(a))),
+        }
+    }
+
+    /// `sin a`.
+    pub fn sin(&mut self, a: NodeId) -> NodeId {
+        match self.node(a) {
+            Node::Const(c) if c.is_zero() => a,
+            Node::Const(c) => self.num(Number::from_float(c.to_f64().sin())),
+            _ => self.intern(Node::Sin(a)),
+        }
+    }
+
+    /// `cos a`.
+    pub fn cos(&mut self, a: NodeId) -> NodeId {
+        match self.node(a) {
+            Node::Const(c) if c.is_zero() => self.num(Number::ONE),
+            Node::Const(c) => self.num(Number::from_float(c.to_f64().cos())),
+            _ => self.intern(Node::Cos(a)),
+        }
+    }
+
+    /// Evaluates every node in order, reading inputs from `input`.
+    pub fn eval(&self, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        let mut values: Vec<f64> = Vec::with_capacity(self.nodes.len());
+        for node in &self.nodes {
+            let v = match *node {
+                Node::Const(c) => c.to_f64(),
+                Node::Var(v) => input(v),
+                Node::Add(a, b) => values[a.index()] + values[b.index()],
+                Node::Mul(a, b) => values[a.index()] * values[b.index()],
+                Node::Neg(a) => -values[a.index()],
+                Node::Recip(a) => 1.0 / values[a.index()],
+                Node::Sin(a) => values[a.index()].sin(),
+                Node::Cos(a) => values[a.index()].cos(),
+            };
+            values.push(v);
+        }
+        values
+    }
+
+    /// Marks the nodes that `outputs` depend on.
+    #[must_use]
+    pub fn live(&self, outputs: &[NodeId]) -> Vec<bool> {
+        let mut live = vec![false; self.nodes.len()];
+        let mut stack: Vec<NodeId> = outputs.to_vec();
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut live[id.index()], true) {
+                continue;
+            }
+            match self.node(id) {
+                Node::Add(a, b) | Node::Mul(a, b) => {
+                    stack.push(a);
+                    stack.push(b);
+                }
+                Node::Neg(a) | Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => stack.push(a),
+                Node::Const(_) | Node::Var(_) => {}
+            }
+        }
+        live
+    }
+
+    /// Partial derivatives of `outputs` with respect to joint position `q_j`, by forward
+    /// differentiation of the graph: `∂ sin(q_j)/∂q_j = cos(q_j)`, `∂ cos(q_j)/∂q_j = −sin(q_j)`,
+    /// `∂q_j/∂q_j = 1`. Returns one node per output (a constant zero where independent).
+    pub fn derivative(&mut self, outputs: &[NodeId], joint: u16) -> Vec<NodeId> {
+        let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
+        let live = self.live(outputs);
+        let zero = self.num(Number::ZERO);
+        let one = self.num(Number::ONE);
+        let mut d: Vec<NodeId> = vec![zero; end];
+        for i in 0..end {
+            if !live[i] {
+                continue;
+            }
+            let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
+            d[i] = match self.node(id) {
+                Node::Const(_) => zero,
+                Node::Var(v) => match v {
+                    Var::Q(j) if j == joint => one,
+                    Var::SinQ(j) if j == joint => self.var(Var::CosQ(j)),
+                    Var::CosQ(j) if j == joint => {
+                        let s = self.var(Var::SinQ(j));
+                        self.neg(s)
+                    }
+                    _ => zero,
+                },
+                Node::Add(a, b) => self.add(d[a.index()], d[b.index()]),
+                Node::Mul(a, b) => {
+                    let l = self.mul(d[a.index()], b);
+                    let r = self.mul(a, d[b.index()]);
+                    self.add(l, r)
+                }
+                Node::Neg(a) => self.neg(d[a.index()]),
+                Node::Recip(a) => {
+                    // d(1/a) = −da / a²
+                    let aa = self.mul(id, id);
+                    let t = self.mul(d[a.index()], aa);
+                    self.neg(t)
+                }
+                Node::Sin(a) => {
+                    let c = self.cos(a);
+                    self.mul(c, d[a.index()])
+                }
+                Node::Cos(a) => {
+                    let s = self.sin(a);
+                    let t = self.mul(s, d[a.index()]);
+                    self.neg(t)
+                }
+            };
+        }
+        outputs.iter().map(|o| d[o.index()]).collect()
+    }
+}
+
+impl Number {
+    /// A float result of a numeric function, snapped to an exact rational when it is one of
+    /// 0, ±1, ±1/2 to within 4 ulp (so that `cos(π/2)` is an exact 0).
+    #[must_use]
+    pub fn from_float(x: f64) -> Number {
+        for exact in [0.0, 1.0, -1.0, 0.5, -0.5] {
+            if (x - exact).abs() <= 4.0 * f64::EPSILON {
+                return Number::from_f64(exact);
+            }
+        }
+        Number::Float(x)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Graph, Node, Var};
+    use crate::symbolic::Number;
+
+    #[test]
+    fn building_twice_shares() {
+        let mut g = Graph::new();
+        let x = g.var(Var::Param(0));
+        let y = g.var(Var::Param(1));
+        let a = g.mul(x, y);
+        let b = g.mul(y, x);
+        assert_eq!(a, b);
+        assert_eq!(g.stats().nodes, 3);
+    }
+
+    #[test]
+    fn local_rules() {
+        let mut g = Graph::new();
+        let x = g.var(Var::Param(0));
+        let zero = g.num(Number::ZERO);
+        let two = g.num(Number::int(2));
+        let three = g.num(Number::int(3));
+        assert_eq!(g.add(x, zero), x);
+        assert_eq!(g.mul(x, zero), zero);
+        let nx = g.neg(x);
+        assert_eq!(g.neg(nx), x);
+        assert_eq!(g.add(x, nx), zero);
+        let two_x = g.mul(two, x);
+        let three_x = g.mul(x, three);
+        let five = g.num(Number::int(5));
+        let five_x = g.mul(five, x);
+        assert_eq!(g.add(two_x, three_x), five_x);
+        let six = g.num(Number::int(6));
+        let six_x = g.mul(six, x);
+        assert_eq!(g.mul(two, three_x), six_x);
+        assert!(matches!(g.node(six_x), Node::Mul(..)));
+    }
+
+    #[test]
+    fn derivative_of_trigonometric_leaves() {
+        let mut g = Graph::new();
+        let s = g.var(Var::SinQ(0));
+        let c = g.var(Var::CosQ(0));
+        let sc = g.mul(s, c);
+        let d = g.derivative(&[sc], 0)[0];
+        let values = g.eval(|v| match v {
+            Var::SinQ(_) => 0.3f64.sin(),
+            Var::CosQ(_) => 0.3f64.cos(),
+            _ => 0.0,
+        });
+        assert!((values[d.index()] - (2.0 * 0.3f64).cos()).abs() < 1e-15);
+        assert!(g.is_zero(g.derivative(&[sc], 1)[0]));
+    }
+}

@@ -1,0 +1,99 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+
+use dynamics_reference::nalgebra::{DMatrix, Matrix4};
+use dynamics_reference::Robot;
+
+/// Directory of the reference data (`tests/data/reference/` of the workspace).
+pub fn reference_dir() -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../tests/data/reference/"
+    ))
+}
+
+/// Sorted list of the `*.json` files in `reference_dir()/sub`.
+pub fn json_files(sub: &str) -> Vec<PathBuf> {
+    let dir = reference_dir().join(sub);
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", dir.display()))
+        .map(|entry| entry.expect("directory entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Loads `reference_dir()/robots/NAME.json`.
+pub fn load_robot(name: &str) -> Robot {
+    let path = reference_dir().join("robots").join(format!("{name}.json"));
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    Robot::from_json(&text).unwrap_or_else(|e| panic!("cannot parse {}: {e}", path.display()))
+}
+
+/// All robots of `reference_dir()/robots/`.
+pub fn all_robots() -> Vec<Robot> {
+    json_files("robots")
+        .iter()
+        .map(|p| {
+            let text = std::fs::read_to_string(p).expect("readable robot file");
+            Robot::from_json(&text).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+        })
+        .collect()
+}
+
+/// `max|a − b| / max(1, max|b|)` over matching entries (`b` is the reference).
+pub fn scaled_error(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len(), "length mismatch");
+    if a.iter().chain(b).any(|x| !x.is_finite()) {
+        // `f64::max` would silently drop a NaN.
+        return f64::INFINITY;
+    }
+    let diff = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0_f64, f64::max);
+    let scale = b.iter().map(|y| y.abs()).fold(1.0_f64, f64::max);
+    diff / scale
+}
+
+/// Scaled error between two dynamic matrices of the same shape.
+pub fn matrix_error(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
+    assert_eq!(a.shape(), b.shape(), "shape mismatch");
+    scaled_error(a.as_slice(), b.as_slice())
+}
+
+/// Scaled error between two 4×4 matrices.
+pub fn matrix4_error(a: &Matrix4<f64>, b: &Matrix4<f64>) -> f64 {
+    scaled_error(a.as_slice(), b.as_slice())
+}
+
+/// Tiny deterministic pseudo-random generator (64-bit LCG), so the tests need no
+/// extra dependency and are reproducible.
+pub struct Lcg(u64);
+
+impl Lcg {
+    pub fn new(seed: u64) -> Self {
+        Lcg(seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407))
+    }
+
+    /// Uniform in `[lo, hi)`.
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        let unit = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
+        lo + (hi - lo) * unit
+    }
+
+    pub fn vector(&mut self, n: usize, lo: f64, hi: f64) -> Vec<f64> {
+        (0..n).map(|_| self.uniform(lo, hi)).collect()
+    }
+}

@@ -1,0 +1,63 @@
+//! Closed-form equations of motion of serial robots, generated at compile time from a
+//! Denavit-Hartenberg table.
+//!
+//! This crate is what generated code runs on: the [`Dynamics`] trait that `#[derive(Dynamics)]`
+//! implements, and the [`Real`] scalars (`f32`, `f64`) it computes with. It is `no_std`, uses no
+//! heap, and evaluates straight-line code with no matrix-product loops.
+//!
+//! # Glossary
+//!
+//! For a robot with `N` joints:
+//!
+//! | name | meaning | book (Niku, ch. 6) |
+//! |---|---|---|
+//! | `q` | joint positions: θ (rad) for a revolute joint, d (m) for a prismatic one | q_i |
+//! | `qd`, `qdd` | joint velocities and accelerations | q̇_i, q̈_i |
+//! | `tau` | joint torques (N·m) or forces (N) | T_i |
+//! | `M(q)` | mass matrix, with actuator inertia on the diagonal | D_ij + I_i(act) |
+//! | `C(q, qd)` | Coriolis matrix, C_ij = Σ_k Γ_ijk q̇_k | Σ_k D_ijk q̇_k |
+//! | `g(q)` | gravity (and joint spring) torques | D_i |
+//!
+//! The equation of motion is `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46). `C` is built
+//! from the Christoffel symbols of `M`, so `Ṁ − 2C` is skew-symmetric.
+//!
+//! # Example
+//!
+//! ```
+#![doc = include_str!("../examples/two_link.rs")]
+//! ```
+//!
+//! # Features
+//!
+//! * `std` (default): sin and cos from std; without it they come from `libm`.
+//! * `derive` (default): re-exports `#[derive(Dynamics)]`.
+//! * `nalgebra`: [`nalgebra`](mod@crate::nalgebra) conversions.
+#![cfg_attr(not(feature = "std"), no_std)]
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod dynamics;
+#[cfg(feature = "nalgebra")]
+pub mod nalgebra;
+mod real;
+
+pub use crate::dynamics::Dynamics;
+pub use crate::real::Real;
+
+#[cfg(feature = "derive")]
+pub use dynamics_macros::Dynamics;
+
+/// Items that generated code names. Not public API.
+#[doc(hidden)]
+pub mod __private {
+    pub use crate::real::Real;
+    pub use core;
+
+    /// Converts a robot parameter (a struct field of type `f32` or `f64`) to the scalar type
+    /// of the evaluation.
+    #[inline(always)]
+    #[must_use]
+    pub fn param<T: Real, F: Into<f64>>(value: F) -> T {
+        T::from_f64(value.into())
+    }
+}

@@ -1,0 +1,107 @@
+//! Scalars that generated code computes with.
+
+use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// A floating-point scalar: `f32` (for single-precision FPUs) or `f64`.
+///
+/// Trigonometry comes from std when the `std` feature is on and from `libm` otherwise.
+pub trait Real:
+    Copy
+    + PartialOrd
+    + core::fmt::Debug
+    + Default
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+{
+    /// Zero.
+    const ZERO: Self;
+    /// One.
+    const ONE: Self;
+    /// The nearest value to an `f64` constant.
+    fn from_f64(value: f64) -> Self;
+    /// The value as `f64`.
+    fn to_f64(self) -> f64;
+    /// Sine and cosine, in this order.
+    fn sin_cos(self) -> (Self, Self);
+    /// Sine.
+    fn sin(self) -> Self;
+    /// Cosine.
+    fn cos(self) -> Self;
+}
+
+macro_rules! impl_real {
+    ($t:ty, $sin:path, $cos:path) => {
+        impl Real for $t {
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            #[inline(always)]
+            #[allow(clippy::cast_possible_truncation)]
+            fn from_f64(value: f64) -> Self {
+                value as $t
+            }
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                f64::from(self)
+            }
+            #[inline(always)]
+            fn sin_cos(self) -> (Self, Self) {
+                (Real::sin(self), Real::cos(self))
+            }
+            #[cfg(feature = "std")]
+            #[inline(always)]
+            fn sin(self) -> Self {
+                <$t>::sin(self)
+            }
+            #[cfg(feature = "std")]
+            #[inline(always)]
+            fn cos(self) -> Self {
+                <$t>::cos(self)
+            }
+            #[cfg(not(feature = "std"))]
+            #[inline(always)]
+            fn sin(self) -> Self {
+                $sin(self)
+            }
+            #[cfg(not(feature = "std"))]
+            #[inline(always)]
+            fn cos(self) -> Self {
+                $cos(self)
+            }
+        }
+    };
+}
+
+impl_real!(f64, libm::sin, libm::cos);
+impl_real!(f32, libm::sinf, libm::cosf);
+
+#[cfg(test)]
+mod tests {
+    use super::Real;
+
+    #[test]
+    fn sin_cos_agree_with_sin_and_cos() {
+        for i in -40..=40 {
+            let x = f64::from(i) * 0.37;
+            let (s, c) = Real::sin_cos(x);
+            assert_eq!(s, Real::sin(x));
+            assert_eq!(c, Real::cos(x));
+            assert!((s * s + c * c - 1.0).abs() < 1e-15);
+            let (sf, cf) = Real::sin_cos(x as f32);
+            assert!((f64::from(sf) - s).abs() < 1e-6);
+            assert!((f64::from(cf) - c).abs() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn conversions() {
+        assert_eq!(<f32 as Real>::from_f64(0.5), 0.5f32);
+        assert_eq!(Real::to_f64(0.25f32), 0.25);
+        assert_eq!(<f64 as Real>::ZERO + <f64 as Real>::ONE, 1.0);
+    }
+}

@@ -1,0 +1,1 @@
+//! Examples of dynamics-runtime; see the `[[example]]` targets.
