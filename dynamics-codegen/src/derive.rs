@@ -7,6 +7,7 @@
 //! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * the kinetic and potential energy.
 
+use std::ops::Mul;
 use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
 use crate::model::{Convention, Robot, Value};
 use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
@@ -122,7 +123,10 @@ impl<'g> Tracer<'g> {
 pub fn derive(robot: &Robot) -> Equations {
     let fields = robot.fields();
     let graph = RefCell::new(Graph::new());
-    let t = Tracer { graph: &graph, fields: &fields };
+    let t = Tracer {
+        graph: &graph,
+        fields: &fields,
+    };
     let n = robot.dof();
     let idx = |i: usize| u16::try_from(i).unwrap_or(u16::MAX);
     let zero = t.num(Number::ZERO);
@@ -160,7 +164,15 @@ pub fn derive(robot: &Robot) -> Equations {
             }
         };
         let (sin_alpha, cos_alpha) = t.sin_cos(&j.alpha);
-        rows.push(DhRow { kind: j.kind, sin_theta, cos_theta, d, a: t.value(&j.a), sin_alpha, cos_alpha });
+        rows.push(DhRow {
+            kind: j.kind,
+            sin_theta,
+            cos_theta,
+            d,
+            a: t.value(&j.a),
+            sin_alpha,
+            cos_alpha,
+        });
         links.push(Inertial {
             mass: t.value(&j.mass),
             com: V3::new(t.value(&j.com[0]), t.value(&j.com[1]), t.value(&j.com[2])),
@@ -178,17 +190,29 @@ pub fn derive(robot: &Robot) -> Equations {
         Convention::Standard => Chain::standard(&rows, &links),
         Convention::Modified => Chain::modified(&rows, &links),
     };
-    let gravity = V3::new(t.value(&robot.gravity[0]), t.value(&robot.gravity[1]), t.value(&robot.gravity[2]));
+    let gravity = V3::new(
+        t.value(&robot.gravity[0]),
+        t.value(&robot.gravity[1]),
+        t.value(&robot.gravity[2]),
+    );
     let no_gravity = V3::zero(zero);
     let q: Vec<Expr> = (0..n).map(|i| t.var(Var::Q(idx(i)))).collect();
     let qd: Vec<Expr> = (0..n).map(|i| t.var(Var::Qd(idx(i)))).collect();
     let qdd: Vec<Expr> = (0..n).map(|i| t.var(Var::Qdd(idx(i)))).collect();
     let zeros = vec![zero; n];
-    let actuator: Vec<Expr> = robot.joints.iter().map(|j| t.value(&j.actuator_inertia)).collect();
+    let actuator: Vec<Expr> = robot
+        .joints
+        .iter()
+        .map(|j| t.value(&j.actuator_inertia))
+        .collect();
     let springs: Vec<Option<(Expr, Expr)>> = robot
         .joints
         .iter()
-        .map(|j| j.spring.as_ref().map(|s| (t.value(&s.stiffness), t.value(&s.rest))))
+        .map(|j| {
+            j.spring
+                .as_ref()
+                .map(|s| (t.value(&s.stiffness), t.value(&s.rest)))
+        })
         .collect();
     let spring_torque = |i: usize| springs[i].map_or(zero, |(k, rest)| k * (q[i] - rest));
 
@@ -231,8 +255,12 @@ pub fn derive(robot: &Robot) -> Equations {
     let flat: Vec<NodeId> = mass_ids.iter().flatten().copied().collect();
     let half_id = half.id();
     let qd_ids: Vec<NodeId> = ids(&qd);
-    let (coriolis_torques, gravity_ids, bias, tau) =
-        (ids(&coriolis_torques), ids(&gravity_torques), ids(&bias), ids(&tau));
+    let (coriolis_torques, gravity_ids, bias, tau) = (
+        ids(&coriolis_torques),
+        ids(&gravity_torques),
+        ids(&bias),
+        ids(&tau),
+    );
     let (kinetic_energy, potential_energy) = (kinetic.id(), potential.id());
 
     // ∂M/∂q_k, then Γ_ijk and C.
@@ -287,8 +315,14 @@ mod tests {
     fn exact_angles() {
         let half = Number::ratio(1, 2).unwrap();
         assert_eq!(exact_sin_cos(half), Some((Number::ONE, Number::ZERO)));
-        assert_eq!(exact_sin_cos(half.neg()), Some((Number::MINUS_ONE, Number::ZERO)));
-        assert_eq!(exact_sin_cos(Number::ONE), Some((Number::ZERO, Number::MINUS_ONE)));
+        assert_eq!(
+            exact_sin_cos(-half),
+            Some((Number::MINUS_ONE, Number::ZERO))
+        );
+        assert_eq!(
+            exact_sin_cos(Number::ONE),
+            Some((Number::ZERO, Number::MINUS_ONE))
+        );
         assert_eq!(exact_sin_cos(Number::ratio(1, 3).unwrap()), None);
     }
 }

@@ -44,13 +44,16 @@ struct LinkAttr {
     spring: Option<(Spanned, Spanned)>,
 }
 
+/// A D-H row `[θ, d, a, α]` with the span of its first token.
+type DhRowAttr = (Span, [Spanned; 4]);
+
 #[derive(Default)]
 struct Attrs {
     file: Option<LitStr>,
     krate: Option<syn::Path>,
     convention: Option<(Convention, Span)>,
     gravity: Option<[Spanned; 3]>,
-    dh: Option<(Vec<(Span, [Spanned; 4])>, Span)>,
+    dh: Option<(Vec<DhRowAttr>, Span)>,
     links: Vec<LinkAttr>,
     name: Option<LitStr>,
 }
@@ -79,21 +82,31 @@ fn values<const N: usize>(input: ParseStream, what: &str) -> syn::Result<[Spanne
     let bracket = bracketed!(content in input);
     let items: Punctuated<Spanned, Token![,]> = Punctuated::parse_terminated(&content)?;
     let count = items.len();
-    items.into_iter().collect::<Vec<_>>().try_into().map_err(|_| {
-        syn::Error::new(
-            bracket.span.join(),
-            format!("{what} takes {N} values, found {count}"),
-        )
-    })
+    items
+        .into_iter()
+        .collect::<Vec<_>>()
+        .try_into()
+        .map_err(|_| {
+            syn::Error::new(
+                bracket.span.join(),
+                format!("{what} takes {N} values, found {count}"),
+            )
+        })
 }
 
 fn parse_link(input: ParseStream, span: Span) -> syn::Result<LinkAttr> {
-    let mut link = LinkAttr { span: Some(span), ..LinkAttr::default() };
+    let mut link = LinkAttr {
+        span: Some(span),
+        ..LinkAttr::default()
+    };
     while !input.is_empty() {
         let key: Ident = input.parse()?;
         let dup = |set: bool| -> syn::Result<()> {
             if set {
-                Err(syn::Error::new(key.span(), format!("duplicate link attribute `{key}`")))
+                Err(syn::Error::new(
+                    key.span(),
+                    format!("duplicate link attribute `{key}`"),
+                ))
             } else {
                 Ok(())
             }
@@ -110,8 +123,10 @@ fn parse_link(input: ParseStream, span: Span) -> syn::Result<LinkAttr> {
             }
             "inertia" => {
                 dup(link.inertia.is_some())?;
-                link.inertia =
-                    Some(values::<6>(input, "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`")?);
+                link.inertia = Some(values::<6>(
+                    input,
+                    "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`",
+                )?);
             }
             "actuator_inertia" => {
                 dup(link.actuator_inertia.is_some())?;
@@ -158,7 +173,10 @@ fn parse_attrs(input: ParseStream, attrs: &mut Attrs) -> syn::Result<()> {
         let name = key.to_string();
         let dup = |set: bool| -> syn::Result<()> {
             if set {
-                Err(syn::Error::new(key.span(), format!("duplicate dynamics attribute `{key}`")))
+                Err(syn::Error::new(
+                    key.span(),
+                    format!("duplicate dynamics attribute `{key}`"),
+                ))
             } else {
                 Ok(())
             }
@@ -198,7 +216,9 @@ fn parse_attrs(input: ParseStream, attrs: &mut Attrs) -> syn::Result<()> {
                         _ => {
                             return Err(syn::Error::new(
                                 span,
-                                format!("unknown convention `{text}`: expected `standard` or `modified`"),
+                                format!(
+                                "unknown convention `{text}`: expected `standard` or `modified`"
+                            ),
                             ))
                         }
                     };
@@ -312,7 +332,10 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
     }
     let fields = struct_fields(input);
     if !matches!(input.data, syn::Data::Struct(_)) {
-        errors.push(input.ident.span(), "`Dynamics` can only be derived for a struct");
+        errors.push(
+            input.ident.span(),
+            "`Dynamics` can only be derived for a struct",
+        );
     }
     if !seen {
         errors.push(
@@ -338,14 +361,22 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
         Some(from_attrs(&attrs, input, &fields, &mut errors))
     };
     if let Some(robot) = &robot {
-        check(robot, attrs.file.as_ref().map_or(input.ident.span(), LitStr::span), &mut errors);
+        check(
+            robot,
+            attrs.file.as_ref().map_or(input.ident.span(), LitStr::span),
+            &mut errors,
+        );
     }
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
             if let Some(name) = &attrs.name {
                 robot.name = name.value();
             }
-            Ok(Input { robot, krate: attrs.krate, tracked_file })
+            Ok(Input {
+                robot,
+                krate: attrs.krate,
+                tracked_file,
+            })
         }
         (Some(e), _) => Err(e),
         (None, None) => Err(syn::Error::new(input.ident.span(), "no robot description")),
@@ -364,7 +395,10 @@ fn load_file(
     let text = match std::fs::read_to_string(&path) {
         Ok(t) => t,
         Err(e) => {
-            errors.push(file.span(), format!("cannot read `{}`: {e}", path.display()));
+            errors.push(
+                file.span(),
+                format!("cannot read `{}`: {e}", path.display()),
+            );
             return None;
         }
     };
@@ -393,10 +427,19 @@ fn load_file(
     }
 }
 
-fn from_attrs(attrs: &Attrs, input: &syn::DeriveInput, fields: &[Field], errors: &mut Errors) -> Robot {
+fn from_attrs(
+    attrs: &Attrs,
+    input: &syn::DeriveInput,
+    fields: &[Field],
+    errors: &mut Errors,
+) -> Robot {
     let span = input.ident.span();
     let gravity = match &attrs.gravity {
-        Some(g) => [value(Some(&g[0]), fields, errors), value(Some(&g[1]), fields, errors), value(Some(&g[2]), fields, errors)],
+        Some(g) => [
+            value(Some(&g[0]), fields, errors),
+            value(Some(&g[1]), fields, errors),
+            value(Some(&g[2]), fields, errors),
+        ],
         None => {
             errors.push(span, "missing `gravity = [gx, gy, gz]`: the gravity acceleration in the base frame, e.g. `[0, 0, -9.81]`");
             Default::default()
@@ -404,13 +447,23 @@ fn from_attrs(attrs: &Attrs, input: &syn::DeriveInput, fields: &[Field], errors:
     };
     let mut joints = Vec::new();
     match &attrs.dh {
-        None => errors.push(span, "missing `dh = [[θ, d, a, α], ...]`: the D-H table, one row per joint"),
+        None => errors.push(
+            span,
+            "missing `dh = [[θ, d, a, α], ...]`: the D-H table, one row per joint",
+        ),
         Some((rows, table_span)) => {
             if rows.is_empty() {
-                errors.push(*table_span, "the D-H table is empty: give one row `[θ, d, a, α]` per joint");
+                errors.push(
+                    *table_span,
+                    "the D-H table is empty: give one row `[θ, d, a, α]` per joint",
+                );
             }
             if !rows.is_empty() && rows.len() != attrs.links.len() {
-                let at = attrs.links.get(rows.len()).and_then(|l| l.span).unwrap_or(*table_span);
+                let at = attrs
+                    .links
+                    .get(rows.len())
+                    .and_then(|l| l.span)
+                    .unwrap_or(*table_span);
                 errors.push(
                     at,
                     format!(
@@ -447,7 +500,10 @@ fn from_attrs(attrs: &Attrs, input: &syn::DeriveInput, fields: &[Field], errors:
                         return cell.value.clone();
                     }
                     cell.value.joint_offset().unwrap_or_else(|| {
-                        errors.push(cell.span, "write the joint variable as `q`, `q + offset` or `q - offset`");
+                        errors.push(
+                            cell.span,
+                            "write the joint variable as `q`, `q + offset` or `q - offset`",
+                        );
                         Value::zero()
                     })
                 };
@@ -456,9 +512,14 @@ fn from_attrs(attrs: &Attrs, input: &syn::DeriveInput, fields: &[Field], errors:
                 let a_v = value(Some(a), fields, errors);
                 let alpha_v = value(Some(alpha), fields, errors);
                 let link = attrs.links.get(i);
-                let link_value = |s: Option<&Spanned>, errors: &mut Errors| value(s, fields, errors);
+                let link_value =
+                    |s: Option<&Spanned>, errors: &mut Errors| value(s, fields, errors);
                 let com = match link.and_then(|l| l.com.as_ref()) {
-                    Some(c) => [link_value(Some(&c[0]), errors), link_value(Some(&c[1]), errors), link_value(Some(&c[2]), errors)],
+                    Some(c) => [
+                        link_value(Some(&c[0]), errors),
+                        link_value(Some(&c[1]), errors),
+                        link_value(Some(&c[2]), errors),
+                    ],
                     None => Default::default(),
                 };
                 let mut inertia: [Value; 6] = Default::default();
@@ -469,14 +530,31 @@ fn from_attrs(attrs: &Attrs, input: &syn::DeriveInput, fields: &[Field], errors:
                 }
                 let mass = link_value(link.and_then(|l| l.mass.as_ref()), errors);
                 if let (Some(l), None) = (link, link.and_then(|l| l.mass.as_ref())) {
-                    errors.push(l.span.unwrap_or(span), format!("link {n} has no `mass = ..`"));
+                    errors.push(
+                        l.span.unwrap_or(span),
+                        format!("link {n} has no `mass = ..`"),
+                    );
                 }
-                let actuator_inertia = link_value(link.and_then(|l| l.actuator_inertia.as_ref()), errors);
-                let spring = link.and_then(|l| l.spring.as_ref()).map(|(k, rest)| Spring {
-                    stiffness: link_value(Some(k), errors),
-                    rest: link_value(Some(rest), errors),
+                let actuator_inertia =
+                    link_value(link.and_then(|l| l.actuator_inertia.as_ref()), errors);
+                let spring = link
+                    .and_then(|l| l.spring.as_ref())
+                    .map(|(k, rest)| Spring {
+                        stiffness: link_value(Some(k), errors),
+                        rest: link_value(Some(rest), errors),
+                    });
+                joints.push(Joint {
+                    kind,
+                    theta: theta_v,
+                    d: d_v,
+                    a: a_v,
+                    alpha: alpha_v,
+                    mass,
+                    com,
+                    inertia,
+                    actuator_inertia,
+                    spring,
                 });
-                joints.push(Joint { kind, theta: theta_v, d: d_v, a: a_v, alpha: alpha_v, mass, com, inertia, actuator_inertia, spring });
             }
         }
     }
@@ -530,7 +608,9 @@ fn divides_by_zero(v: &Value) -> bool {
     match v {
         Value::Div(a, b) => divides_by_zero(a) || b.exact().is_some_and(|x| x.is_zero()),
         Value::Neg(a) => divides_by_zero(a),
-        Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) => divides_by_zero(a) || divides_by_zero(b),
+        Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) => {
+            divides_by_zero(a) || divides_by_zero(b)
+        }
         _ => false,
     }
 }
@@ -543,4 +623,3 @@ pub fn parse_str(text: &str) -> syn::Result<Input> {
     let input: syn::DeriveInput = syn::parse_str(text)?;
     parse(&input)
 }
-

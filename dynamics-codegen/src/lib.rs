@@ -100,9 +100,14 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         let (args, ret) = match m.name {
             "mass_matrix" => (quote!(#q: &[T; #n]), quote!([[T; #n]; #n])),
             "coriolis_matrix" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([[T; #n]; #n])),
-            "coriolis_torques" | "bias_torques" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([T; #n])),
+            "coriolis_torques" | "bias_torques" => {
+                (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([T; #n]))
+            }
             "gravity_torques" => (quote!(#q: &[T; #n]), quote!([T; #n])),
-            "inverse_dynamics" => (quote!(#q: &[T; #n], #qd: &[T; #n], #qdd: &[T; #n]), quote!([T; #n])),
+            "inverse_dynamics" => (
+                quote!(#q: &[T; #n], #qd: &[T; #n], #qdd: &[T; #n]),
+                quote!([T; #n]),
+            ),
             "kinetic_energy" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!(T)),
             _ => (quote!(#q: &[T; #n]), quote!(T)),
         };
@@ -115,7 +120,9 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         }
     });
     let track = parsed.tracked_file.as_ref().map(|path| {
-        quote!(const _: &[u8] = ::core::include_bytes!(#path);)
+        quote!(
+            const _: &[u8] = ::core::include_bytes!(#path);
+        )
     });
     quote! {
         const _: () = {
@@ -129,11 +136,23 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
 }
 
 trait SplitGenerics {
-    fn split_generics(&self) -> (syn::ImplGenerics<'_>, syn::TypeGenerics<'_>, Option<&syn::WhereClause>);
+    fn split_generics(
+        &self,
+    ) -> (
+        syn::ImplGenerics<'_>,
+        syn::TypeGenerics<'_>,
+        Option<&syn::WhereClause>,
+    );
 }
 
 impl SplitGenerics for syn::Generics {
-    fn split_generics(&self) -> (syn::ImplGenerics<'_>, syn::TypeGenerics<'_>, Option<&syn::WhereClause>) {
+    fn split_generics(
+        &self,
+    ) -> (
+        syn::ImplGenerics<'_>,
+        syn::TypeGenerics<'_>,
+        Option<&syn::WhereClause>,
+    ) {
         self.split_for_impl()
     }
 }

@@ -3,6 +3,7 @@
 //! coefficients and `S_i²` rewritten as `1 − C_i²`. Two expressions are equal exactly when their
 //! canonical forms are. For display and tests on small robots; code is emitted from the graph.
 
+use std::ops::{Add, Mul, Neg};
 use crate::symbolic::{Graph, Node, NodeId, Number, Var};
 use std::collections::BTreeMap;
 use std::fmt;
@@ -127,7 +128,12 @@ impl Poly {
     /// The canonical form of graph node `id`; `None` where the graph holds a reciprocal or the
     /// sine of a parameter, or the form exceeds `max_terms`.
     #[must_use]
-    pub fn from_graph(graph: &Graph, id: NodeId, fields: &[String], max_terms: usize) -> Option<Poly> {
+    pub fn from_graph(
+        graph: &Graph,
+        id: NodeId,
+        fields: &[String],
+        max_terms: usize,
+    ) -> Option<Poly> {
         let live = graph.live(&[id]);
         let mut memo: Vec<Option<Poly>> = vec![None; id.index() + 1];
         for (n, node) in graph.nodes().take(id.index() + 1) {
@@ -178,22 +184,25 @@ impl Poly {
 /// Rewrites `S_i^e` with `e ≥ 2` through `S_i² = 1 − C_i²`.
 fn reduce(m: BTreeMap<Sym, u32>) -> Vec<(Monomial, Number)> {
     let mut out: Vec<(BTreeMap<Sym, u32>, Number)> = vec![(m, Number::ONE)];
-    loop {
-        let Some(pos) = out.iter().position(|(m, _)| m.iter().any(|(s, e)| matches!(s, Sym::Sin(_)) && *e >= 2)) else {
+    let is_square = |(s, e): (&Sym, &u32)| matches!(s, Sym::Sin(_)) && *e >= 2;
+    while let Some(pos) = out.iter().position(|(m, _)| m.iter().any(is_square)) {
+        let (m, c) = out.swap_remove(pos);
+        let Some((&Sym::Sin(i), _)) = m.iter().find(|x| is_square(*x)) else {
             break;
         };
-        let (m, c) = out.swap_remove(pos);
-        let (s, _) = m.iter().find(|(s, e)| matches!(s, Sym::Sin(_)) && **e >= 2).map(|(s, e)| (s.clone(), *e)).unwrap_or((Sym::Q(0), 0));
-        let Sym::Sin(i) = s else { break };
         let mut base = m.clone();
-        *base.get_mut(&Sym::Sin(i)).unwrap_or(&mut 0) -= 2;
+        if let Some(e) = base.get_mut(&Sym::Sin(i)) {
+            *e -= 2;
+        }
         base.retain(|_, e| *e > 0);
         let mut with_cos = base.clone();
         *with_cos.entry(Sym::Cos(i)).or_insert(0) += 2;
         out.push((base, c));
-        out.push((with_cos, c.neg()));
+        out.push((with_cos, -c));
     }
-    out.into_iter().map(|(m, c)| (m.into_iter().collect(), c)).collect()
+    out.into_iter()
+        .map(|(m, c)| (m.into_iter().collect(), c))
+        .collect()
 }
 
 fn tokenize(text: &str) -> Result<Vec<String>, String> {
@@ -206,7 +215,9 @@ fn tokenize(text: &str) -> Result<Vec<String>, String> {
             i += 1;
         } else if c.is_ascii_alphanumeric() || c == '_' || c == '.' {
             let start = i;
-            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_' || chars[i] == '.') {
+            while i < chars.len()
+                && (chars[i].is_ascii_alphanumeric() || chars[i] == '_' || chars[i] == '.')
+            {
                 i += 1;
             }
             tokens.push(chars[start..i].iter().collect());
@@ -238,7 +249,12 @@ fn parse_product(t: &[String], pos: &mut usize) -> Result<Poly, String> {
         *pos += 1;
         let r = parse_power(t, pos)?;
         p = if div {
-            let c = r.terms.get(&Vec::new()).copied().filter(|_| r.len() == 1).ok_or("division by a non-number")?;
+            let c = r
+                .terms
+                .get(&Vec::new())
+                .copied()
+                .filter(|_| r.len() == 1)
+                .ok_or("division by a non-number")?;
             p.scale(c.recip().ok_or("division by zero")?)
         } else {
             p.mul(&r)
@@ -251,7 +267,10 @@ fn parse_power(t: &[String], pos: &mut usize) -> Result<Poly, String> {
     let base = parse_atom(t, pos)?;
     if *pos < t.len() && t[*pos] == "^" {
         *pos += 1;
-        let e: u32 = t.get(*pos).and_then(|s| s.parse().ok()).ok_or("expected an integer exponent")?;
+        let e: u32 = t
+            .get(*pos)
+            .and_then(|s| s.parse().ok())
+            .ok_or("expected an integer exponent")?;
         *pos += 1;
         let mut r = Poly::constant(Number::ONE);
         for _ in 0..e {
@@ -263,7 +282,13 @@ fn parse_power(t: &[String], pos: &mut usize) -> Result<Poly, String> {
 }
 
 fn joint_sum(digits: &str) -> Option<Vec<u16>> {
-    digits.chars().map(|d| d.to_digit(10).and_then(|x| u16::try_from(x).ok()?.checked_sub(1))).collect()
+    digits
+        .chars()
+        .map(|d| {
+            d.to_digit(10)
+                .and_then(|x| u16::try_from(x).ok()?.checked_sub(1))
+        })
+        .collect()
 }
 
 fn parse_atom(t: &[String], pos: &mut usize) -> Result<Poly, String> {
@@ -283,7 +308,11 @@ fn parse_atom(t: &[String], pos: &mut usize) -> Result<Poly, String> {
     if let Some(n) = Number::parse_decimal(&tok) {
         return Ok(Poly::constant(n));
     }
-    let index = |prefix: &str| tok.strip_prefix(prefix).and_then(|d| d.parse::<u16>().ok()).and_then(|i| i.checked_sub(1));
+    let index = |prefix: &str| {
+        tok.strip_prefix(prefix)
+            .and_then(|d| d.parse::<u16>().ok())
+            .and_then(|i| i.checked_sub(1))
+    };
     if let Some(i) = index("qdd") {
         return Ok(Poly::sym(Sym::Qdd(i)));
     }
@@ -294,7 +323,11 @@ fn parse_atom(t: &[String], pos: &mut usize) -> Result<Poly, String> {
         return Ok(Poly::sym(Sym::Q(i)));
     }
     for (prefix, is_sin) in [("S", true), ("C", false)] {
-        if let Some(joints) = tok.strip_prefix(prefix).filter(|d| !d.is_empty()).and_then(joint_sum) {
+        if let Some(joints) = tok
+            .strip_prefix(prefix)
+            .filter(|d| !d.is_empty())
+            .and_then(joint_sum)
+        {
             // sin and cos of a sum of joint angles, by the addition formulas
             let (mut s, mut c) = (Poly::constant(Number::ZERO), Poly::constant(Number::ONE));
             for j in joints {
@@ -307,7 +340,11 @@ fn parse_atom(t: &[String], pos: &mut usize) -> Result<Poly, String> {
             return Ok(if is_sin { s } else { c });
         }
     }
-    if tok.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') {
+    if tok
+        .chars()
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+    {
         return Ok(Poly::sym(Sym::Param(tok)));
     }
     Err(format!("unexpected `{tok}`"))
@@ -346,7 +383,11 @@ impl fmt::Display for Poly {
                 parts.push(abs.to_string());
             }
             for (s, e) in m {
-                parts.push(if *e == 1 { s.to_string() } else { format!("{s}^{e}") });
+                parts.push(if *e == 1 {
+                    s.to_string()
+                } else {
+                    format!("{s}^{e}")
+                });
             }
             write!(f, "{}", parts.join("*"))?;
         }
@@ -374,6 +415,9 @@ mod tests {
             "1/3*m*l^2 + m*l^2/6" => "m*l^2/2",
             "x - x" => "0",
         }
-        assert_eq!(Poly::parse("2*m*l^2*C2 - 1/2*g").unwrap().to_string(), "-1/2*g + 2*l^2*m*C2");
+        assert_eq!(
+            Poly::parse("2*m*l^2*C2 - 1/2*g").unwrap().to_string(),
+            "-1/2*g + 2*l^2*m*C2"
+        );
     }
 }

@@ -15,7 +15,10 @@ fn assert_printed(eq: &Equations, id: NodeId, printed: &str, what: &str) {
     let got = Poly::from_graph(&eq.graph, id, &eq.fields, 10_000).expect("polynomial");
     let want = Poly::parse(printed).expect("printed form");
     let diff = got.sub(&want);
-    assert!(diff.is_zero(), "{what}:\n  derived {got}\n  printed {want}\n  derived − printed = {diff}");
+    assert!(
+        diff.is_zero(),
+        "{what}:\n  derived {got}\n  printed {want}\n  derived − printed = {diff}"
+    );
 }
 
 /// Example 6.8: the 2R arm of Example 6.4 with equal links (a1 = a2 = l), rods whose centre of
@@ -41,10 +44,20 @@ fn example_6_8_effective_and_coupling_inertia() {
     let d11 = "1/3*m1*l^2 + 4/3*m2*l^2 + m2*l^2*C2";
     let d12 = "1/3*m2*l^2 + 1/2*m2*l^2*C2";
     let d22 = "1/3*m2*l^2";
-    assert_printed(&eq, eq.mass[0][0], &format!("{d11} + I1act"), "D11 + I1(act)");
+    assert_printed(
+        &eq,
+        eq.mass[0][0],
+        &format!("{d11} + I1act"),
+        "D11 + I1(act)",
+    );
     assert_printed(&eq, eq.mass[0][1], d12, "D12");
     assert_printed(&eq, eq.mass[1][0], d12, "D21");
-    assert_printed(&eq, eq.mass[1][1], &format!("{d22} + I2act"), "D22 + I2(act)");
+    assert_printed(
+        &eq,
+        eq.mass[1][1],
+        &format!("{d22} + I2act"),
+        "D22 + I2(act)",
+    );
 }
 
 #[test]
@@ -66,7 +79,12 @@ fn example_6_8_centripetal_and_coriolis_coefficients() {
     }
     // C_ij = Σ_k D_ijk q̇_k
     assert_printed(&eq, eq.coriolis[0][0], "-1/2*m2*l^2*S2*qd2", "C11");
-    assert_printed(&eq, eq.coriolis[0][1], "-1/2*m2*l^2*S2*qd1 - 1/2*m2*l^2*S2*qd2", "C12");
+    assert_printed(
+        &eq,
+        eq.coriolis[0][1],
+        "-1/2*m2*l^2*S2*qd1 - 1/2*m2*l^2*S2*qd2",
+        "C12",
+    );
     assert_printed(&eq, eq.coriolis[1][0], "1/2*m2*l^2*S2*qd1", "C21");
     assert_printed(&eq, eq.coriolis[1][1], "0", "C22");
 }
@@ -74,7 +92,12 @@ fn example_6_8_centripetal_and_coriolis_coefficients() {
 #[test]
 fn example_6_8_gravity() {
     let eq = equations(EXAMPLE_6_8);
-    assert_printed(&eq, eq.gravity[0], "1/2*m1*g*l*C1 + 1/2*m2*g*l*C12 + m2*g*l*C1", "D1");
+    assert_printed(
+        &eq,
+        eq.gravity[0],
+        "1/2*m1*g*l*C1 + 1/2*m2*g*l*C12 + m2*g*l*C1",
+        "D1",
+    );
     assert_printed(&eq, eq.gravity[1], "1/2*m2*g*l*C12", "D2");
 }
 
@@ -118,5 +141,10 @@ fn example_6_4_two_link_arm() {
     let k = "qd1^2*(1/6*m1*l1^2 + 1/6*m2*l2^2 + 1/2*m2*l1^2 + 1/2*m2*l1*l2*C2)
              + qd2^2*(1/6*m2*l2^2) + qd1*qd2*(1/3*m2*l2^2 + 1/2*m2*l1*l2*C2)";
     assert_printed(&eq, eq.kinetic_energy, k, "K (6.9)");
-    assert_printed(&eq, eq.potential_energy, "m1*g*l1/2*S1 + m2*g*(l1*S1 + l2/2*S12)", "P (6.10)");
+    assert_printed(
+        &eq,
+        eq.potential_energy,
+        "m1*g*l1/2*S1 + m2*g*(l1*S1 + l2/2*S12)",
+        "P (6.10)",
+    );
 }

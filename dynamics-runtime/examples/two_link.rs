@@ -22,11 +22,20 @@ struct TwoLink {
 }
 
 fn main() {
-    let arm = TwoLink { l1: 1.0, l2: 0.8, m1: 2.0, m2: 1.5, g: 9.81 };
+    let arm = TwoLink {
+        l1: 1.0,
+        l2: 0.8,
+        m1: 2.0,
+        m2: 1.5,
+        g: 9.81,
+    };
     let q = [0.3, -0.5];
     let tau = arm.inverse_dynamics(&q, &[0.1, 0.2], &[1.0, -1.0]);
     // Holding the arm still takes exactly the gravity torques.
-    assert_eq!(arm.inverse_dynamics(&q, &[0.0; 2], &[0.0; 2]), arm.gravity_torques(&q));
+    assert_eq!(
+        arm.inverse_dynamics(&q, &[0.0; 2], &[0.0; 2]),
+        arm.gravity_torques(&q)
+    );
     let m = arm.mass_matrix(&q);
     assert_eq!(m[0][1], m[1][0]);
     // The same robot in single precision, for an FPU without doubles.

@@ -41,42 +41,75 @@ fn scaled_error(got: &[f64], want: &[f64]) -> f64 {
     let worst = got
         .iter()
         .zip(want)
-        .map(|(a, b)| if a.is_finite() { (a - b).abs() } else { f64::INFINITY })
+        .map(|(a, b)| {
+            if a.is_finite() {
+                (a - b).abs()
+            } else {
+                f64::INFINITY
+            }
+        })
         .fold(0.0, f64::max);
     worst / scale
 }
 
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
     let path = format!("{}/data/reference/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let data: Value = serde_json::from_str(&std::fs::read_to_string(path).expect("data file"))
-        .expect("json");
+    let data: Value =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("data file")).expect("json");
     let samples = data["samples"].as_array().expect("samples");
     assert_eq!(samples.len(), 20);
     let mut worst = 0.0f64;
     for (k, s) in samples.iter().enumerate() {
-        let (q, qd, qdd) = (vector::<N>(&s["q"]), vector::<N>(&s["qd"]), vector::<N>(&s["qdd"]));
+        let (q, qd, qdd) = (
+            vector::<N>(&s["q"]),
+            vector::<N>(&s["qd"]),
+            vector::<N>(&s["qdd"]),
+        );
         let flat = |m: [[f64; N]; N]| m.iter().flatten().copied().collect::<Vec<_>>();
         let checks: [(&str, Vec<f64>, Vec<f64>); 8] = [
-            ("tau", robot.inverse_dynamics(&q, &qd, &qdd).to_vec(), vector::<N>(&s["tau"]).to_vec()),
-            ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
-            ("C", flat(robot.coriolis_matrix(&q, &qd)), flat(matrix::<N>(&s["C"]))),
-            ("h", robot.bias_torques(&q, &qd).to_vec(), vector::<N>(&s["h"]).to_vec()),
-            ("g", robot.gravity_torques(&q).to_vec(), vector::<N>(&s["g"]).to_vec()),
             (
-                "C qd",
-                robot.coriolis_torques(&q, &qd).to_vec(),
-                {
-                    let h = vector::<N>(&s["h"]);
-                    let g = vector::<N>(&s["g"]);
-                    (0..N).map(|i| h[i] - g[i]).collect()
-                },
+                "tau",
+                robot.inverse_dynamics(&q, &qd, &qdd).to_vec(),
+                vector::<N>(&s["tau"]).to_vec(),
             ),
-            ("kinetic energy", vec![robot.kinetic_energy(&q, &qd)], vec![s["kinetic_energy"].as_f64().expect("number")]),
-            ("potential energy", vec![robot.potential_energy(&q)], vec![s["potential_energy"].as_f64().expect("number")]),
+            ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
+            (
+                "C",
+                flat(robot.coriolis_matrix(&q, &qd)),
+                flat(matrix::<N>(&s["C"])),
+            ),
+            (
+                "h",
+                robot.bias_torques(&q, &qd).to_vec(),
+                vector::<N>(&s["h"]).to_vec(),
+            ),
+            (
+                "g",
+                robot.gravity_torques(&q).to_vec(),
+                vector::<N>(&s["g"]).to_vec(),
+            ),
+            ("C qd", robot.coriolis_torques(&q, &qd).to_vec(), {
+                let h = vector::<N>(&s["h"]);
+                let g = vector::<N>(&s["g"]);
+                (0..N).map(|i| h[i] - g[i]).collect()
+            }),
+            (
+                "kinetic energy",
+                vec![robot.kinetic_energy(&q, &qd)],
+                vec![s["kinetic_energy"].as_f64().expect("number")],
+            ),
+            (
+                "potential energy",
+                vec![robot.potential_energy(&q)],
+                vec![s["potential_energy"].as_f64().expect("number")],
+            ),
         ];
         for (what, got, want) in checks {
             let e = scaled_error(&got, &want);
-            assert!(e < TOLERANCE, "{file} sample {k}: {what} off by {e:e}\n got {got:?}\nwant {want:?}");
+            assert!(
+                e < TOLERANCE,
+                "{file} sample {k}: {what} off by {e:e}\n got {got:?}\nwant {want:?}"
+            );
             worst = worst.max(e);
         }
     }

@@ -9,6 +9,7 @@
 //! (Craig) form. The algorithms work in J frames, where joint i's axis is z and its torque is
 //! a single component. A link's inertia, given in standard frame i, is carried into J_i exactly.
 
+use std::ops::Add;
 use super::{Mat3, Scalar, V3};
 
 /// Revolute or prismatic.
@@ -101,7 +102,14 @@ impl<S: Scalar> Body<S> {
         Body {
             mass: self.mass + o.mass,
             h: self.h.add(o.h),
-            inertia: [i[0] + j[0], i[1] + j[1], i[2] + j[2], i[3] + j[3], i[4] + j[4], i[5] + j[5]],
+            inertia: [
+                i[0] + j[0],
+                i[1] + j[1],
+                i[2] + j[2],
+                i[3] + j[3],
+                i[4] + j[4],
+                i[5] + j[5],
+            ],
         }
     }
 }
@@ -131,14 +139,24 @@ pub struct ChainJoint<S> {
 impl<S: Scalar> ChainJoint<S> {
     /// `Rᵀ v`: a vector in J_{i−1} axes expressed in J_i axes, with `R = Rotx(α) Rotz(θ)`.
     pub fn to_child(&self, v: V3<S>) -> V3<S> {
-        let (sa, ca, st, ct) = (self.sin_alpha, self.cos_alpha, self.sin_theta, self.cos_theta);
+        let (sa, ca, st, ct) = (
+            self.sin_alpha,
+            self.cos_alpha,
+            self.sin_theta,
+            self.cos_theta,
+        );
         let w = V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y);
         V3::new(ct * w.x + st * w.y, ct * w.y - st * w.x, w.z)
     }
 
     /// `R v`: a vector in J_i axes expressed in J_{i−1} axes.
     pub fn to_parent(&self, v: V3<S>) -> V3<S> {
-        let (sa, ca, st, ct) = (self.sin_alpha, self.cos_alpha, self.sin_theta, self.cos_theta);
+        let (sa, ca, st, ct) = (
+            self.sin_alpha,
+            self.cos_alpha,
+            self.sin_theta,
+            self.cos_theta,
+        );
         let u = V3::new(ct * v.x - st * v.y, st * v.x + ct * v.y, v.z);
         V3::new(u.x, ca * u.y - sa * u.z, sa * u.y + ca * u.z)
     }
@@ -150,7 +168,8 @@ impl<S: Scalar> ChainJoint<S> {
 
     /// The rotation `R` as a matrix.
     pub fn rotation(&self) -> Mat3<S> {
-        Mat3::rot_x(self.sin_alpha, self.cos_alpha).mul(&Mat3::rot_z(self.sin_theta, self.cos_theta))
+        Mat3::rot_x(self.sin_alpha, self.cos_alpha)
+            .mul(&Mat3::rot_z(self.sin_theta, self.cos_theta))
     }
 
     /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes.

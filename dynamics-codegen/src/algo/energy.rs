@@ -5,6 +5,7 @@
 //! angular velocity of link i; `P = −Σ (m_i g·p_i + g_i·h_i)` with `p_i` the origin of J_i in the
 //! base and `g_i` the gravity vector in J_i axes.
 
+use std::ops::Add;
 use super::{Chain, JointKind, Scalar, V3};
 use crate::symbolic::Number;
 
@@ -45,4 +46,3 @@ pub fn potential_energy<S: Scalar>(chain: &Chain<S>, gravity: V3<S>) -> S {
     }
     -total
 }
-

@@ -10,6 +10,7 @@
 //! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
 //! without gravity.
 
+use std::ops::{Add, Neg};
 use super::{Chain, JointKind, Scalar, V3};
 
 /// Joint torques of `chain` moving with velocities `qd` and accelerations `qdd` under `gravity`

@@ -26,23 +26,8 @@ impl<S: Scalar> V3<S> {
         V3::new(z, z, z)
     }
 
-    /// `self + o`.
-    #[must_use]
-    pub fn add(self, o: V3<S>) -> V3<S> {
-        V3::new(self.x + o.x, self.y + o.y, self.z + o.z)
-    }
 
-    /// `self − o`.
-    #[must_use]
-    pub fn sub(self, o: V3<S>) -> V3<S> {
-        V3::new(self.x - o.x, self.y - o.y, self.z - o.z)
-    }
 
-    /// `−self`.
-    #[must_use]
-    pub fn neg(self) -> V3<S> {
-        V3::new(-self.x, -self.y, -self.z)
-    }
 
     /// `k · self`.
     #[must_use]
@@ -83,19 +68,25 @@ impl<S: Scalar> Mat3<S> {
     /// The symmetric matrix of `[xx, yy, zz, xy, xz, yz]`.
     pub fn symmetric(e: [S; 6]) -> Mat3<S> {
         let [xx, yy, zz, xy, xz, yz] = e;
-        Mat3 { m: [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]] }
+        Mat3 {
+            m: [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]],
+        }
     }
 
     /// The rotation about x by an angle with sine `s` and cosine `c`.
     pub fn rot_x(s: S, c: S) -> Mat3<S> {
         let (o, l) = (s.zero(), s.one());
-        Mat3 { m: [[l, o, o], [o, c, -s], [o, s, c]] }
+        Mat3 {
+            m: [[l, o, o], [o, c, -s], [o, s, c]],
+        }
     }
 
     /// The rotation about z by an angle with sine `s` and cosine `c`.
     pub fn rot_z(s: S, c: S) -> Mat3<S> {
         let (o, l) = (s.zero(), s.one());
-        Mat3 { m: [[c, -s, o], [s, c, o], [o, o, l]] }
+        Mat3 {
+            m: [[c, -s, o], [s, c, o], [o, o, l]],
+        }
     }
 
     /// `self · v`.
@@ -116,19 +107,55 @@ impl<S: Scalar> Mat3<S> {
         let e = |i: usize, j: usize| {
             self.m[i][0] * o.m[0][j] + self.m[i][1] * o.m[1][j] + self.m[i][2] * o.m[2][j]
         };
-        Mat3 { m: [[e(0, 0), e(0, 1), e(0, 2)], [e(1, 0), e(1, 1), e(1, 2)], [e(2, 0), e(2, 1), e(2, 2)]] }
+        Mat3 {
+            m: [
+                [e(0, 0), e(0, 1), e(0, 2)],
+                [e(1, 0), e(1, 1), e(1, 2)],
+                [e(2, 0), e(2, 1), e(2, 2)],
+            ],
+        }
     }
 
     /// `selfᵀ`.
     #[must_use]
     pub fn transpose(&self) -> Mat3<S> {
         let m = &self.m;
-        Mat3 { m: [[m[0][0], m[1][0], m[2][0]], [m[0][1], m[1][1], m[2][1]], [m[0][2], m[1][2], m[2][2]]] }
+        Mat3 {
+            m: [
+                [m[0][0], m[1][0], m[2][0]],
+                [m[0][1], m[1][1], m[2][1]],
+                [m[0][2], m[1][2], m[2][2]],
+            ],
+        }
     }
 
     /// `R · self · Rᵀ` for a symmetric `self`, returned as `[xx, yy, zz, xy, xz, yz]`.
     pub fn congruence(&self, r: &Mat3<S>) -> [S; 6] {
         let t = r.mul(self).mul(&r.transpose());
-        [t.m[0][0], t.m[1][1], t.m[2][2], t.m[0][1], t.m[0][2], t.m[1][2]]
+        [
+            t.m[0][0], t.m[1][1], t.m[2][2], t.m[0][1], t.m[0][2], t.m[1][2],
+        ]
     }
 }
+
+impl<S: Scalar> std::ops::Add for V3<S> {
+    type Output = V3<S>;
+    fn add(self, o: V3<S>) -> V3<S> {
+        V3::new(self.x + o.x, self.y + o.y, self.z + o.z)
+    }
+}
+
+impl<S: Scalar> std::ops::Sub for V3<S> {
+    type Output = V3<S>;
+    fn sub(self, o: V3<S>) -> V3<S> {
+        V3::new(self.x - o.x, self.y - o.y, self.z - o.z)
+    }
+}
+
+impl<S: Scalar> std::ops::Neg for V3<S> {
+    type Output = V3<S>;
+    fn neg(self) -> V3<S> {
+        V3::new(-self.x, -self.y, -self.z)
+    }
+}
+

@@ -74,7 +74,11 @@ impl std::fmt::Display for FileError {
 }
 
 fn plain(message: String) -> FileError {
-    FileError { message, line: None, column: None }
+    FileError {
+        message,
+        line: None,
+        column: None,
+    }
 }
 
 fn value(v: Option<&FileValue>, what: &str) -> Result<Value, FileError> {
@@ -123,8 +127,8 @@ fn convert(file: FileRobot, default_name: &str) -> Result<Robot, FileError> {
             "prismatic" => JointKind::Prismatic,
             other => {
                 return Err(plain(format!(
-                    "joint {n}: unknown joint type `{other}`: expected \"revolute\" or \"prismatic\""
-                )))
+                "joint {n}: unknown joint type `{other}`: expected \"revolute\" or \"prismatic\""
+            )))
             }
         };
         let com = match &j.com {
@@ -149,7 +153,10 @@ fn convert(file: FileRobot, default_name: &str) -> Result<Robot, FileError> {
         let spring = if stiffness.is_zero() {
             None
         } else {
-            Some(Spring { stiffness, rest: value(j.spring_rest.as_ref(), "spring_rest")? })
+            Some(Spring {
+                stiffness,
+                rest: value(j.spring_rest.as_ref(), "spring_rest")?,
+            })
         };
         joints.push(Joint {
             kind,
@@ -184,7 +191,12 @@ impl Default for Value {
 /// The first problem found, with its line and column.
 pub fn from_json(text: &str, default_name: &str) -> Result<Robot, FileError> {
     let file: FileRobot = serde_json::from_str(text).map_err(|e| FileError {
-        message: e.to_string().split(" at line").next().unwrap_or_default().to_string(),
+        message: e
+            .to_string()
+            .split(" at line")
+            .next()
+            .unwrap_or_default()
+            .to_string(),
         line: Some(e.line()),
         column: Some(e.column()),
     })?;
@@ -203,7 +215,11 @@ pub fn from_toml(text: &str, default_name: &str) -> Result<Robot, FileError> {
             let column = before.len() - before.rfind('\n').map_or(0, |p| p + 1) + 1;
             (Some(line), Some(column))
         });
-        FileError { message: e.message().to_string(), line, column }
+        FileError {
+            message: e.message().to_string(),
+            line,
+            column,
+        }
     })?;
     convert(file, default_name)
 }
@@ -253,14 +269,21 @@ mod tests {
         let b = from_toml(toml, "x").unwrap();
         assert_eq!(a.convention, Convention::Standard);
         assert_eq!(a.joints[0].kind, JointKind::Revolute);
-        assert_eq!(a.joints[0].alpha.pi_multiple(), b.joints[0].alpha.pi_multiple());
+        assert_eq!(
+            a.joints[0].alpha.pi_multiple(),
+            b.joints[0].alpha.pi_multiple()
+        );
         assert_eq!(a.joints[0].mass, b.joints[0].mass);
         assert_eq!(a.joints[0].com, b.joints[0].com);
     }
 
     #[test]
     fn errors_have_positions() {
-        let e = from_json("{\n \"gravity\": [0, 0, -9.81],\n \"joints\": [{\"type\": \"revolut\"}]}", "x").unwrap_err();
+        let e = from_json(
+            "{\n \"gravity\": [0, 0, -9.81],\n \"joints\": [{\"type\": \"revolut\"}]}",
+            "x",
+        )
+        .unwrap_err();
         assert!(e.message.contains("revolut"), "{e}");
         let e = from_json("{\n \"gravity\": [0, 0, -9.81],\n \"jionts\": []}", "x").unwrap_err();
         assert_eq!(e.line, Some(3));

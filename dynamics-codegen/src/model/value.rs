@@ -13,6 +13,7 @@
 //! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
 //! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact.
 
+use std::ops::{Add, Mul, Neg, Sub};
 use crate::symbolic::Number;
 use proc_macro2::Span;
 use std::collections::BTreeSet;
@@ -201,7 +202,11 @@ impl Parse for Spanned {
         let span = input.span();
         let mut fields = Vec::new();
         let value = parse_sum(input, &mut fields)?;
-        Ok(Spanned { value, span, fields })
+        Ok(Spanned {
+            value,
+            span,
+            fields,
+        })
     }
 }
 
@@ -257,7 +262,10 @@ fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Res
     let exponent: syn::LitInt = input.parse()?;
     let n: u32 = exponent.base10_parse()?;
     if !(1..=8).contains(&n) {
-        return Err(syn::Error::new(exponent.span(), "exponent must be an integer from 1 to 8"));
+        return Err(syn::Error::new(
+            exponent.span(),
+            "exponent must be an integer from 1 to 8",
+        ));
     }
     let mut value = base.clone();
     for _ in 1..n {
@@ -277,7 +285,8 @@ fn parse_unary(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Res
         let unit: Ident = fork.parse()?;
         if unit == "deg" {
             input.parse::<Ident>()?;
-            let pi_over_180 = Value::Div(Box::new(Value::Pi), Box::new(Value::Num(Number::int(180))));
+            let pi_over_180 =
+                Value::Div(Box::new(Value::Pi), Box::new(Value::Num(Number::int(180))));
             return Ok(Value::Mul(Box::new(atom), Box::new(pi_over_180)));
         }
         if unit == "rad" {
@@ -346,11 +355,26 @@ mod tests {
 
     #[test]
     fn literals_stay_exact() {
-        assert_eq!(parse_value("0.4318").unwrap(), Value::Num(Number::ratio(4318, 10000).unwrap()));
-        assert_eq!(parse_value("90 deg").unwrap().pi_multiple(), Number::ratio(1, 2));
-        assert_eq!(parse_value("-pi/2").unwrap().pi_multiple(), Number::ratio(-1, 2));
-        assert_eq!(Value::from_f64(1.5707963267948966).pi_multiple(), Number::ratio(1, 2));
-        assert_eq!(Value::from_f64(-1.5707963267948966).pi_multiple(), Number::ratio(-1, 2));
+        assert_eq!(
+            parse_value("0.4318").unwrap(),
+            Value::Num(Number::ratio(4318, 10000).unwrap())
+        );
+        assert_eq!(
+            parse_value("90 deg").unwrap().pi_multiple(),
+            Number::ratio(1, 2)
+        );
+        assert_eq!(
+            parse_value("-pi/2").unwrap().pi_multiple(),
+            Number::ratio(-1, 2)
+        );
+        assert_eq!(
+            Value::from_f64(std::f64::consts::FRAC_PI_2).pi_multiple(),
+            Number::ratio(1, 2)
+        );
+        assert_eq!(
+            Value::from_f64(-std::f64::consts::FRAC_PI_2).pi_multiple(),
+            Number::ratio(-1, 2)
+        );
         assert_eq!(Value::from_f64(1.2).pi_multiple(), None);
     }
 
@@ -363,7 +387,14 @@ mod tests {
             _ => None,
         });
         assert_eq!(x, Some(1.0));
-        assert_eq!(parse_value("q + 90 deg").unwrap().joint_offset().unwrap().pi_multiple(), Number::ratio(1, 2));
+        assert_eq!(
+            parse_value("q + 90 deg")
+                .unwrap()
+                .joint_offset()
+                .unwrap()
+                .pi_multiple(),
+            Number::ratio(1, 2)
+        );
         assert!(parse_value("2 * q").unwrap().joint_offset().is_none());
         assert!(parse_value("3 +").is_err());
     }

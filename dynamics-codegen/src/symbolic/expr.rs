@@ -28,7 +28,10 @@ impl<'g> Expr<'g> {
 
     fn with(self, f: impl FnOnce(&mut Graph) -> NodeId) -> Expr<'g> {
         let id = f(&mut self.graph.borrow_mut());
-        Expr { graph: self.graph, id }
+        Expr {
+            graph: self.graph,
+            id,
+        }
     }
 }
 

@@ -7,6 +7,7 @@
 //! algorithm comes out already customized to its robot: every zero, one and exact constant of
 //! the D-H table folded away.
 
+use std::ops::{Add, Mul, Neg};
 use super::number::Number;
 use std::collections::HashMap;
 use std::fmt;
@@ -120,10 +121,12 @@ impl Graph {
 
     /// All nodes, children before parents.
     pub fn nodes(&self) -> impl Iterator<Item = (NodeId, Node)> + '_ {
-        self.nodes
-            .iter()
-            .enumerate()
-            .map(|(i, n)| (NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")), *n))
+        self.nodes.iter().enumerate().map(|(i, n)| {
+            (
+                NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")),
+                *n,
+            )
+        })
     }
 
     fn intern(&mut self, node: Node) -> NodeId {

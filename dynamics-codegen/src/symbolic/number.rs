@@ -4,6 +4,7 @@
 //! cancel; a result that would overflow `i128` falls back to `f64`, which is then exact to
 //! rounding only.
 
+use std::ops::{Add, Neg};
 use std::cmp::Ordering;
 use std::fmt;
 use std::hash::{Hash, Hasher};
@@ -172,49 +173,8 @@ impl Number {
         Number::Float(if x == 0.0 { 0.0 } else { x })
     }
 
-    /// `self + other`.
-    #[must_use]
-    pub fn add(self, other: Number) -> Number {
-        if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
-            let exact = (|| {
-                let num = a.checked_mul(d)?.checked_add(c.checked_mul(b)?)?;
-                Number::ratio(num, b.checked_mul(d)?)
-            })();
-            if let Some(n) = exact {
-                return n;
-            }
-        }
-        Number::float(self.to_f64() + other.to_f64())
-    }
 
-    /// `self * other`.
-    #[must_use]
-    pub fn mul(self, other: Number) -> Number {
-        if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
-            let g1 = gcd(a, d).max(1);
-            let g2 = gcd(c, b).max(1);
-            let exact = (|| {
-                let num = (a / g1).checked_mul(c / g2)?;
-                Number::ratio(num, (b / g2).checked_mul(d / g1)?)
-            })();
-            if let Some(n) = exact {
-                return n;
-            }
-        }
-        Number::float(self.to_f64() * other.to_f64())
-    }
 
-    /// `-self`.
-    #[must_use]
-    pub fn neg(self) -> Number {
-        match self {
-            Number::Rational(n, d) => match n.checked_neg() {
-                Some(m) => Number::Rational(m, d),
-                None => Number::float(-self.to_f64()),
-            },
-            Number::Float(x) => Number::float(-x),
-        }
-    }
 
     /// `1 / self`; `None` for zero.
     #[must_use]
@@ -230,11 +190,6 @@ impl Number {
         })
     }
 
-    /// `self - other`.
-    #[must_use]
-    pub fn sub(self, other: Number) -> Number {
-        self.add(other.neg())
-    }
 
     fn key(self) -> (u8, i128, i128) {
         match self {
@@ -284,6 +239,61 @@ impl fmt::Display for Number {
     }
 }
 
+impl std::ops::Add for Number {
+    type Output = Number;
+    fn add(self, other: Number) -> Number {
+        if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
+            let exact = (|| {
+                let num = a.checked_mul(d)?.checked_add(c.checked_mul(b)?)?;
+                Number::ratio(num, b.checked_mul(d)?)
+            })();
+            if let Some(n) = exact {
+                return n;
+            }
+        }
+        Number::float(self.to_f64() + other.to_f64())
+    }
+}
+
+#[allow(clippy::suspicious_arithmetic_impl)] // reduces by gcds before multiplying
+impl std::ops::Mul for Number {
+    type Output = Number;
+    fn mul(self, other: Number) -> Number {
+        if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
+            let g1 = gcd(a, d).max(1);
+            let g2 = gcd(c, b).max(1);
+            let exact = (|| {
+                let num = (a / g1).checked_mul(c / g2)?;
+                Number::ratio(num, (b / g2).checked_mul(d / g1)?)
+            })();
+            if let Some(n) = exact {
+                return n;
+            }
+        }
+        Number::float(self.to_f64() * other.to_f64())
+    }
+}
+
+impl std::ops::Neg for Number {
+    type Output = Number;
+    fn neg(self) -> Number {
+        match self {
+            Number::Rational(n, d) => match n.checked_neg() {
+                Some(m) => Number::Rational(m, d),
+                None => Number::float(-self.to_f64()),
+            },
+            Number::Float(x) => Number::float(-x),
+        }
+    }
+}
+
+impl std::ops::Sub for Number {
+    type Output = Number;
+    fn sub(self, other: Number) -> Number {
+        self.add(other.neg())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::Number;
@@ -306,12 +316,12 @@ mod tests {
     #[test]
     fn arithmetic_is_exact_and_falls_back_to_float() {
         let third = Number::ratio(1, 3).unwrap();
-        assert_eq!(third.add(third).add(third), Number::ONE);
-        assert_eq!(third.mul(Number::int(3)), Number::ONE);
-        assert!(third.sub(third).is_zero());
+        assert_eq!(third + third + third, Number::ONE);
+        assert_eq!(third * Number::int(3), Number::ONE);
+        assert!((third - third).is_zero());
         assert_eq!(third.recip(), Some(Number::int(3)));
         let big = Number::ratio(1, 100_000_000_000_000_000_000).unwrap();
-        let tiny = big.mul(big);
+        let tiny = big * big;
         assert!(!tiny.is_exact());
         assert!((tiny.to_f64() - 1e-40).abs() < 1e-54);
     }
