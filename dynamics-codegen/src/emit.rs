@@ -146,8 +146,21 @@ impl<'a> Emitter<'a> {
             Node::Const(c) if c.is_zero() => quote!(T::ZERO),
             Node::Const(c) if c.is_one() => quote!(T::ONE),
             Node::Const(c) => {
-                let lit = proc_macro2::Literal::f64_suffixed(c.to_f64());
-                quote!(<T as #krate::__private::Real>::from_f64(#lit))
+                let x = c.to_f64();
+                // A literal cannot spell a non-finite value (and the literal constructor
+                // panics on one); such a constant can only come from overflowing arithmetic
+                // of finite parameters.
+                let value = if x.is_nan() {
+                    quote!(::core::f64::NAN)
+                } else if x.is_infinite() && x > 0.0 {
+                    quote!(::core::f64::INFINITY)
+                } else if x.is_infinite() {
+                    quote!(::core::f64::NEG_INFINITY)
+                } else {
+                    let lit = proc_macro2::Literal::f64_suffixed(x);
+                    quote!(#lit)
+                };
+                quote!(<T as #krate::__private::Real>::from_f64(#value))
             }
             Node::Var(Var::Q(i)) => {
                 let i = usize::from(i);

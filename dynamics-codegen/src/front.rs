@@ -324,10 +324,13 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
     let mut errors = Errors::default();
     let mut attrs = Attrs::default();
     let mut seen = false;
+    // After a syntax error, what follows it is unknown: report no missing keys then.
+    let mut parse_failed = false;
     for attr in input.attrs.iter().filter(|a| a.path().is_ident("dynamics")) {
         seen = true;
         if let Err(e) = attr.parse_args_with(|s: ParseStream| parse_attrs(s, &mut attrs)) {
             errors.0.push(e);
+            parse_failed = true;
         }
     }
     let fields = struct_fields(input);
@@ -357,6 +360,8 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
             }
         }
         load_file(file, &fields, &mut errors, &mut tracked_file)
+    } else if parse_failed {
+        None
     } else {
         Some(from_attrs(&attrs, input, &fields, &mut errors))
     };
@@ -397,7 +402,7 @@ fn load_file(
         Err(e) => {
             errors.push(
                 file.span(),
-                format!("cannot read `{}`: {e}", path.display()),
+                format!("cannot read `{relative}` (relative to the crate's Cargo.toml): {e}"),
             );
             return None;
         }
@@ -467,7 +472,7 @@ fn from_attrs(
                 errors.push(
                     at,
                     format!(
-                        "the D-H table has {} rows but there are {} `link(...)` entries: give one per joint",
+                        "the D-H table has {} rows but {} `link(...)` entries are given: give one per joint",
                         rows.len(),
                         attrs.links.len()
                     ),

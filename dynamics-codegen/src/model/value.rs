@@ -328,6 +328,9 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
         let n = Number::parse_decimal(&digits)
             .or_else(|| digits.parse::<f64>().ok().map(Number::from_f64))
             .ok_or_else(|| syn::Error::new(lit.span(), "this number cannot be read"))?;
+        if !n.to_f64().is_finite() {
+            return Err(syn::Error::new(lit.span(), "this number is too large for an f64"));
+        }
         return Ok(Value::Num(n));
     }
     if input.peek(Ident) {

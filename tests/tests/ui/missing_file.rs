@@ -1,0 +1,7 @@
+use dynamics_runtime::Dynamics;
+
+#[derive(Dynamics)]
+#[dynamics(file = "robots/nowhere.json")]
+struct Arm;
+
+fn main() {}

@@ -1,0 +1,9 @@
+use dynamics_runtime::Dynamics;
+
+#[derive(Dynamics)]
+#[dynamics(gravity = [0, 0, -9.81], dh = [[q, 0, lenght, 0]], link(mass = 1))]
+struct Arm {
+    length: f64,
+}
+
+fn main() {}
