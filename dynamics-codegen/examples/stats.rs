@@ -24,14 +24,33 @@ fn main() {
     });
     let methods = methods(&eq, &krate, fields.collect());
     let elapsed = start.elapsed();
-    println!("{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms", robot.name, eq.dof, eq.graph.len(), elapsed.as_secs_f64() * 1e3);
-    println!("{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}", "method", "mul", "add", "neg", "div", "trig", "flops", "bytes");
+    println!(
+        "{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms",
+        robot.name,
+        eq.dof,
+        eq.graph.len(),
+        elapsed.as_secs_f64() * 1e3
+    );
+    println!(
+        "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}",
+        "method", "mul", "add", "neg", "div", "trig", "flops", "bytes"
+    );
     let mut total = 0;
     for m in &methods {
         let bytes = m.body.to_string().len();
         total += bytes;
         let o = m.ops;
-        println!("{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}", m.name, o.mul, o.add, o.neg, o.div, o.trig, o.flops(), bytes);
+        println!(
+            "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}",
+            m.name,
+            o.mul,
+            o.add,
+            o.neg,
+            o.div,
+            o.trig,
+            o.flops(),
+            bytes
+        );
     }
     println!("total generated code: {total} bytes");
 }

@@ -7,11 +7,11 @@
 //! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * the kinetic and potential energy.
 
-use std::ops::Mul;
 use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
 use crate::model::{Convention, Robot, Value};
 use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
 use std::cell::RefCell;
+use std::ops::Mul;
 
 /// The closed-form equations of a robot: node ids into [`Equations::graph`].
 #[derive(Clone, Debug)]

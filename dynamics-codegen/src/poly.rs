@@ -3,10 +3,10 @@
 //! coefficients and `S_i²` rewritten as `1 − C_i²`. Two expressions are equal exactly when their
 //! canonical forms are. For display and tests on small robots; code is emitted from the graph.
 
-use std::ops::{Add, Mul, Neg};
 use crate::symbolic::{Graph, Node, NodeId, Number, Var};
 use std::collections::BTreeMap;
 use std::fmt;
+use std::ops::{Add, Mul, Neg};
 
 /// A variable of a polynomial.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]

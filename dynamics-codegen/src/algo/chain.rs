@@ -9,8 +9,8 @@
 //! (Craig) form. The algorithms work in J frames, where joint i's axis is z and its torque is
 //! a single component. A link's inertia, given in standard frame i, is carried into J_i exactly.
 
-use std::ops::Add;
 use super::{Mat3, Scalar, V3};
+use std::ops::Add;
 
 /// Revolute or prismatic.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -7,8 +7,8 @@
 //! J_j (`f ← R f`, `n ← R n + p × R f`) its component on joint j's axis is `M_ji`. Column j of
 //! the result equals [`super::rnea`] with `qd = 0`, `qdd = e_j` and no gravity.
 
-use std::ops::Add;
 use super::{Body, Chain, JointKind, Scalar, V3};
+use std::ops::Add;
 
 /// The joint-space mass matrix of `chain`, full and symmetric.
 pub fn crba<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<S>> {

@@ -5,9 +5,9 @@
 //! angular velocity of link i; `P = −Σ (m_i g·p_i + g_i·h_i)` with `p_i` the origin of J_i in the
 //! base and `g_i` the gravity vector in J_i axes.
 
-use std::ops::Add;
 use super::{Chain, JointKind, Scalar, V3};
 use crate::symbolic::Number;
+use std::ops::Add;
 
 /// Kinetic energy of the links of `chain` moving with velocities `qd`.
 /// `zero` gives the scalar context.

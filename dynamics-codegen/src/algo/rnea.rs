@@ -10,8 +10,8 @@
 //! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
 //! without gravity.
 
-use std::ops::{Add, Neg};
 use super::{Chain, JointKind, Scalar, V3};
+use std::ops::{Add, Neg};
 
 /// Joint torques of `chain` moving with velocities `qd` and accelerations `qdd` under `gravity`
 /// (the gravity acceleration in the base frame). Actuator inertia and springs are not included.

@@ -26,9 +26,6 @@ impl<S: Scalar> V3<S> {
         V3::new(z, z, z)
     }
 
-
-
-
     /// `k · self`.
     #[must_use]
     pub fn scale(self, k: S) -> V3<S> {
@@ -158,4 +155,3 @@ impl<S: Scalar> std::ops::Neg for V3<S> {
         V3::new(-self.x, -self.y, -self.z)
     }
 }
-

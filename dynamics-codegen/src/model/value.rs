@@ -13,10 +13,10 @@
 //! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
 //! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact.
 
-use std::ops::{Add, Mul, Neg, Sub};
 use crate::symbolic::Number;
 use proc_macro2::Span;
 use std::collections::BTreeSet;
+use std::ops::{Add, Mul, Neg, Sub};
 use syn::parse::{Parse, ParseStream};
 use syn::{Ident, Lit, Token};
 
@@ -329,7 +329,10 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
             .or_else(|| digits.parse::<f64>().ok().map(Number::from_f64))
             .ok_or_else(|| syn::Error::new(lit.span(), "this number cannot be read"))?;
         if !n.to_f64().is_finite() {
-            return Err(syn::Error::new(lit.span(), "this number is too large for an f64"));
+            return Err(syn::Error::new(
+                lit.span(),
+                "this number is too large for an f64",
+            ));
         }
         return Ok(Value::Num(n));
     }

@@ -7,10 +7,10 @@
 //! algorithm comes out already customized to its robot: every zero, one and exact constant of
 //! the D-H table folded away.
 
-use std::ops::{Add, Mul, Neg};
 use super::number::Number;
 use std::collections::HashMap;
 use std::fmt;
+use std::ops::{Add, Mul, Neg};
 
 /// Index of a node in a [`Graph`]; displayed as `t12`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -4,10 +4,10 @@
 //! cancel; a result that would overflow `i128` falls back to `f64`, which is then exact to
 //! rounding only.
 
-use std::ops::{Add, Neg};
 use std::cmp::Ordering;
 use std::fmt;
 use std::hash::{Hash, Hasher};
+use std::ops::{Add, Neg};
 
 /// A rational with `i128` numerator and denominator, or an `f64` where a rational overflowed.
 #[derive(Clone, Copy, Debug)]
@@ -173,9 +173,6 @@ impl Number {
         Number::Float(if x == 0.0 { 0.0 } else { x })
     }
 
-
-
-
     /// `1 / self`; `None` for zero.
     #[must_use]
     pub fn recip(self) -> Option<Number> {
@@ -189,7 +186,6 @@ impl Number {
             Number::Float(x) => Number::float(1.0 / x),
         })
     }
-
 
     fn key(self) -> (u8, i128, i128) {
         match self {

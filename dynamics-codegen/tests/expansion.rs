@@ -1,0 +1,106 @@
+//! Properties of the expansion as a whole: deterministic output, and description files in
+//! JSON and TOML giving the same robot.
+
+use dynamics_codegen::{derive, derive_dynamics, model};
+
+const PUMA: &str = include_str!("../../tests/data/reference/robots/puma560.json");
+
+fn expand(source: &str) -> String {
+    derive_dynamics(source.parse().expect("tokens")).to_string()
+}
+
+#[test]
+fn expanding_twice_gives_identical_code() {
+    let source = "
+        #[dynamics(
+            gravity = [0, -g, 0],
+            dh = [[q, 0, l1, 90 deg], [q + 0.3, 0, l2, 0], [0.2, q, 0, -90 deg]],
+            link(mass = m1, com = [-l1 / 2, 0, 0], inertia = [0, 0.1, 0.1, 0.01, 0, 0]),
+            link(mass = m2, com = [-l2 / 2, 0.1, 0], inertia = [0.2, 0.1, 0.1, 0, 0.02, 0]),
+            link(mass = 1.5, com = [0, 0, 0.1], inertia = [0.01, 0.01, 0.02, 0, 0, 0.001], spring = (k, 0.1)),
+        )]
+        struct Arm { l1: f64, l2: f64, m1: f64, m2: f64, g: f64, k: f64 }
+    ";
+    let first = expand(source);
+    assert!(first.contains("impl"), "{first}");
+    for _ in 0..3 {
+        assert_eq!(expand(source), first);
+    }
+}
+
+#[test]
+fn errors_are_compile_errors_not_panics() {
+    for source in [
+        "struct A;",
+        "#[dynamics] struct A;",
+        "#[dynamics(dh = [])] struct A;",
+        "#[dynamics(gravity = [0, 0], dh = [[q, 0, 0, 0]], link(mass = 1))] struct A;",
+        "#[dynamics(gravity = [0, 0, 1], dh = [[q, 0, 1 / 0, 0]], link(mass = 1))] struct A;",
+        "#[dynamics(gravity = [0, 0, 1], dh = [[q2, 0, 1, 0]], link(mass = -1))] struct A;",
+        "#[dynamics(gravity = [0, 0, 1], dh = [[q * q, 0, 1, 0]], link(mass = 1))] struct A;",
+        "enum E { A }",
+    ] {
+        let out = expand(source);
+        assert!(out.contains("compile_error"), "{source} gave {out}");
+    }
+}
+
+#[test]
+fn json_and_toml_descriptions_agree() {
+    let json = model::from_json(PUMA, "puma560").expect("json");
+    let mut toml = String::from("name = \"puma560\"\ngravity = [0, 0, -9.81]\n");
+    let rows = [
+        ("0.6718299999999999", "0", "\"90 deg\""),
+        ("0", "0.4318", "0"),
+        ("0.15005", "0.0203", "\"-90 deg\""),
+        ("0.4318", "0", "\"90 deg\""),
+        ("0", "0", "\"-pi/2\""),
+        ("0", "0", "0"),
+    ];
+    for (j, (d, a, alpha)) in json.joints.iter().zip(rows) {
+        let show = |v: &model::Value| v.to_string();
+        toml += &format!(
+            "[[joints]]\ntype = \"revolute\"\nd = {d}\na = {a}\nalpha = {alpha}\nmass = \"{}\"\ncom = [{}]\ninertia = [{}]\n",
+            show(&j.mass),
+            j.com.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
+            j.inertia.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
+        );
+    }
+    let toml = model::from_toml(&toml, "puma560").expect("toml");
+    let (a, b) = (derive(&json), derive(&toml));
+    let values = |eq: &dynamics_codegen::Equations| {
+        let v = eq.graph.eval(|var| match var {
+            dynamics_codegen::symbolic::Var::SinQ(i) => (0.3 * f64::from(i) + 0.1).sin(),
+            dynamics_codegen::symbolic::Var::CosQ(i) => (0.3 * f64::from(i) + 0.1).cos(),
+            _ => 0.7,
+        });
+        eq.tau.iter().map(|t| v[t.index()]).collect::<Vec<_>>()
+    };
+    assert_eq!(values(&a), values(&b));
+}
+
+#[test]
+fn readme_toml_sample_loads() {
+    let text = r#"
+name = "two_link"
+gravity = [0, -9.81, 0]
+
+[[joints]]
+type = "revolute"        # q is θ; `theta` is its offset, `d` a constant
+a = 0.7
+alpha = "0 deg"
+mass = 2.0
+com = [-0.35, 0, 0]
+inertia = [0, "2.0 * 0.7^2 / 12", "2.0 * 0.7^2 / 12", 0, 0, 0]
+actuator_inertia = 0.05
+"#;
+    let robot = model::from_toml(text, "x").expect("README sample");
+    assert_eq!(robot.joints.len(), 1);
+    // 2.0 * 0.7^2 / 12 = 0.98 / 12 = 49/600, exactly
+    let iyy = robot.joints[0].inertia[1].exact().expect("exact");
+    assert_eq!(iyy.to_string(), "49/600");
+    assert_eq!(
+        robot.joints[0].alpha.pi_multiple().map(|k| k.to_string()),
+        Some("0".into())
+    );
+}
