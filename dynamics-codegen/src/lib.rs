@@ -8,7 +8,7 @@
 //!
 //! 1. [`front`]: the derive input (or a description file, [`model::from_text`]) is parsed
 //!    into a [`model::Robot`], with every error on its span;
-//! 2. [`derive`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
+//! 2. [`mod@derive`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
 //!    builds the closed forms as one hash-consed expression graph, simplified as it is built;
 //! 3. [`emit`]: each output (`M`, `C`, `g`, `τ`, …) becomes a straight-line function body.
 

@@ -35,7 +35,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestError, TestRunner};
 
 /// Cases per property.
-const CASES: u32 = 64;
+const CASES: u32 = 3000;
 /// Relative tolerance between the closed form and the reference.
 const EXACT: f64 = 1e-9;
 /// Relative tolerance of identities checked by central differences.
