@@ -25,6 +25,16 @@ pub struct OpCount {
     pub trig: usize,
 }
 
+/// An emitted function body.
+pub struct Body {
+    /// The statements and the result expression.
+    pub tokens: TokenStream,
+    /// Its operations.
+    pub ops: OpCount,
+    /// The struct fields (indices into [`Equations::fields`]) it reads.
+    pub fields_read: Vec<usize>,
+}
+
 impl OpCount {
     /// Multiplications, additions and negations together.
     #[must_use]
@@ -67,7 +77,7 @@ fn local(name: &str) -> proc_macro2::Ident {
 
 /// Emits the body of a function computing `shape` from `eq`, and counts its operations.
 #[must_use]
-pub fn body(eq: &Equations, shape: &Shape, ctx: &Context) -> (TokenStream, OpCount) {
+pub fn body(eq: &Equations, shape: &Shape, ctx: &Context) -> Body {
     Emitter::new(eq, ctx).run(shape)
 }
 
@@ -257,7 +267,7 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    fn run(mut self, shape: &Shape) -> (TokenStream, OpCount) {
+    fn run(mut self, shape: &Shape) -> Body {
         let krate = self.ctx.krate;
         let outputs = shape.outputs();
         self.mark(&outputs);
@@ -273,10 +283,12 @@ impl<'a> Emitter<'a> {
         }
         let mut prelude = Vec::new();
         let mut statements = Vec::new();
+        let mut fields_read = Vec::new();
         // Parameters, read once.
         for (id, node) in self.graph.nodes() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
+                    fields_read.push(usize::from(k));
                     let name = self.leaf(id);
                     let field = &self.ctx.fields[usize::from(k)];
                     prelude.push(quote!(let #name: T = #krate::__private::param::<T, _>(#field);));
@@ -361,6 +373,10 @@ impl<'a> Emitter<'a> {
                 quote!([#(#rows),*])
             }
         };
-        (quote!(#(#prelude)* #(#statements)* #result), self.ops)
+        Body {
+            tokens: quote!(#(#prelude)* #(#statements)* #result),
+            ops: self.ops,
+            fields_read,
+        }
     }
 }

@@ -47,6 +47,8 @@ pub struct Method {
     pub body: TokenStream,
     /// Its operations.
     pub ops: OpCount,
+    /// The struct fields (indices into [`Equations::fields`]) it reads.
+    pub fields_read: Vec<usize>,
 }
 
 /// The generated methods of the [`Equations`], reading struct fields through `fields`.
@@ -67,8 +69,8 @@ pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) ->
     shapes
         .into_iter()
         .map(|(name, shape)| {
-            let (body, ops) = emit::body(eq, &shape, &ctx);
-            Method { name, body, ops }
+            let b = emit::body(eq, &shape, &ctx);
+            Method { name, body: b.tokens, ops: b.ops, fields_read: b.fields_read }
         })
         .collect()
 }
@@ -89,6 +91,15 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         .collect();
     let n = eq.dof;
     let methods = methods(&eq, &krate, fields);
+    // A field the description names may drop out of every equation (a gravity magnitude on a
+    // horizontal axis); reading it once keeps the user's crate free of dead-code warnings.
+    let unread: Vec<proc_macro2::Ident> = eq
+        .fields
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| !methods.iter().any(|m| m.fields_read.contains(k)))
+        .map(|(_, f)| syn::Ident::new(f, proc_macro2::Span::call_site()))
+        .collect();
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_generics();
     let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
@@ -97,6 +108,8 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let fns = methods.iter().map(|m| {
         let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
         let body = &m.body;
+        let touch = (m.name == "potential_energy" && !unread.is_empty())
+            .then(|| quote!(let _ = (#(&self.#unread,)*);));
         let (args, ret) = match m.name {
             "mass_matrix" => (quote!(#q: &[T; #n]), quote!([[T; #n]; #n])),
             "coriolis_matrix" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([[T; #n]; #n])),
@@ -115,6 +128,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             #[inline]
             #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
             fn #name<T: #krate::Real>(&self, #args) -> #ret {
+                #touch
                 #body
             }
         }
