@@ -70,7 +70,12 @@ pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) ->
         .into_iter()
         .map(|(name, shape)| {
             let b = emit::body(eq, &shape, &ctx);
-            Method { name, body: b.tokens, ops: b.ops, fields_read: b.fields_read }
+            Method {
+                name,
+                body: b.tokens,
+                ops: b.ops,
+                fields_read: b.fields_read,
+            }
         })
         .collect()
 }
