@@ -17,6 +17,7 @@ pub mod derive;
 pub mod emit;
 pub mod front;
 pub mod model;
+pub mod numeric;
 pub mod poly;
 pub mod symbolic;
 

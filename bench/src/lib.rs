@@ -1,0 +1,1 @@
+//! Benchmarks of the generated dynamics; see `bench/README.md`.

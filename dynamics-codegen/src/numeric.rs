@@ -1,0 +1,161 @@
+//! The algorithms of [`crate::algo`] run on `f64`: a plain numeric recursive Newton-Euler and
+//! composite-rigid-body implementation of a [`Robot`], with loops over joints at run time.
+//! It is what the generated code is measured against, and a second numeric implementation
+//! beside the book's method of `dynamics-reference`.
+
+use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
+use crate::model::{Convention, Robot, Value};
+
+/// A robot evaluated numerically.
+#[derive(Clone, Debug)]
+pub struct Numeric {
+    robot: Robot,
+    values: Vec<f64>,
+    fields: Vec<String>,
+}
+
+/// A value of the robot named no field that `Numeric::new` was given.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MissingField(pub String);
+
+impl Numeric {
+    /// The robot, with its fields' values given by name.
+    ///
+    /// # Errors
+    /// The first field the robot names that `fields` lacks.
+    pub fn new(robot: &Robot, fields: &[(&str, f64)]) -> Result<Numeric, MissingField> {
+        let names = robot.fields();
+        let values = names
+            .iter()
+            .map(|n| {
+                fields
+                    .iter()
+                    .find(|(f, _)| f == n)
+                    .map(|(_, v)| *v)
+                    .ok_or_else(|| MissingField(n.clone()))
+            })
+            .collect::<Result<Vec<f64>, _>>()?;
+        Ok(Numeric {
+            robot: robot.clone(),
+            values,
+            fields: names,
+        })
+    }
+
+    fn value(&self, v: &Value) -> f64 {
+        v.eval(&|f| {
+            self.fields
+                .iter()
+                .position(|x| x == f)
+                .map(|k| self.values[k])
+        })
+        .unwrap_or(f64::NAN)
+    }
+
+    /// The chain at position `q`.
+    #[must_use]
+    pub fn chain(&self, q: &[f64]) -> Chain<f64> {
+        let mut rows = Vec::with_capacity(q.len());
+        let mut links = Vec::with_capacity(q.len());
+        for (j, &qi) in self.robot.joints.iter().zip(q) {
+            let (theta, d) = match j.kind {
+                JointKind::Revolute => (qi + self.value(&j.theta), self.value(&j.d)),
+                JointKind::Prismatic => (self.value(&j.theta), qi + self.value(&j.d)),
+            };
+            let alpha = self.value(&j.alpha);
+            rows.push(DhRow {
+                kind: j.kind,
+                sin_theta: theta.sin(),
+                cos_theta: theta.cos(),
+                d,
+                a: self.value(&j.a),
+                sin_alpha: alpha.sin(),
+                cos_alpha: alpha.cos(),
+            });
+            let v = |x: &Value| self.value(x);
+            links.push(Inertial {
+                mass: v(&j.mass),
+                com: V3::new(v(&j.com[0]), v(&j.com[1]), v(&j.com[2])),
+                inertia: [
+                    v(&j.inertia[0]),
+                    v(&j.inertia[1]),
+                    v(&j.inertia[2]),
+                    v(&j.inertia[3]),
+                    v(&j.inertia[4]),
+                    v(&j.inertia[5]),
+                ],
+            });
+        }
+        match self.robot.convention {
+            Convention::Standard => Chain::standard(&rows, &links),
+            Convention::Modified => Chain::modified(&rows, &links),
+        }
+    }
+
+    fn gravity(&self) -> V3<f64> {
+        let g = &self.robot.gravity;
+        V3::new(self.value(&g[0]), self.value(&g[1]), self.value(&g[2]))
+    }
+
+    fn springs(&self, q: &[f64]) -> Vec<f64> {
+        self.robot
+            .joints
+            .iter()
+            .zip(q)
+            .map(|(j, qi)| {
+                j.spring.as_ref().map_or(0.0, |s| {
+                    self.value(&s.stiffness) * (qi - self.value(&s.rest))
+                })
+            })
+            .collect()
+    }
+
+    /// `tau = M(q) qdd + C(q, qd) qd + g(q)` by recursive Newton-Euler, with actuator inertia
+    /// and springs.
+    #[must_use]
+    pub fn inverse_dynamics(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> Vec<f64> {
+        let tau = algo::rnea(&self.chain(q), qd, qdd, self.gravity());
+        let springs = self.springs(q);
+        tau.iter()
+            .zip(&self.robot.joints)
+            .enumerate()
+            .map(|(i, (t, j))| t + self.value(&j.actuator_inertia) * qdd[i] + springs[i])
+            .collect()
+    }
+
+    /// `M(q)` by the composite rigid body algorithm, with actuator inertia.
+    #[must_use]
+    pub fn mass_matrix(&self, q: &[f64]) -> Vec<Vec<f64>> {
+        let mut m = algo::crba(&self.chain(q));
+        for (i, j) in self.robot.joints.iter().enumerate() {
+            m[i][i] += self.value(&j.actuator_inertia);
+        }
+        m
+    }
+
+    /// `g(q)` with springs.
+    #[must_use]
+    pub fn gravity_torques(&self, q: &[f64]) -> Vec<f64> {
+        let zeros = vec![0.0; q.len()];
+        let g = algo::rnea(&self.chain(q), &zeros, &zeros, self.gravity());
+        g.iter().zip(self.springs(q)).map(|(a, b)| a + b).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Numeric;
+    use crate::model;
+
+    #[test]
+    fn fields_are_required() {
+        let robot = model::from_toml(
+            "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = \"m\"\n",
+            "x",
+        )
+        .unwrap();
+        assert!(Numeric::new(&robot, &[]).is_err());
+        let n = Numeric::new(&robot, &[("m", 2.0)]).unwrap();
+        assert_eq!(n.gravity_torques(&[0.3]), vec![0.0]);
+    }
+}
