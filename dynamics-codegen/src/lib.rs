@@ -107,7 +107,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         .map(|(_, f)| syn::Ident::new(f, proc_macro2::Span::call_site()))
         .collect();
     let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_generics();
+    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
     let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
     let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());
@@ -152,27 +152,5 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
                 #(#fns)*
             }
         };
-    }
-}
-
-trait SplitGenerics {
-    fn split_generics(
-        &self,
-    ) -> (
-        syn::ImplGenerics<'_>,
-        syn::TypeGenerics<'_>,
-        Option<&syn::WhereClause>,
-    );
-}
-
-impl SplitGenerics for syn::Generics {
-    fn split_generics(
-        &self,
-    ) -> (
-        syn::ImplGenerics<'_>,
-        syn::TypeGenerics<'_>,
-        Option<&syn::WhereClause>,
-    ) {
-        self.split_for_impl()
     }
 }
