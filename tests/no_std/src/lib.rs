@@ -1,37 +1,50 @@
-//! A `#![no_std]` crate that derives a robot and calls every method, in `f32` and `f64`.
+//! A `#![no_std]` crate that derives robots and calls every method, in `f32` and `f64`.
 //! It builds only if generated code and the runtime (with `libm`) need nothing from std.
 #![no_std]
 
 use dynamics_runtime::Dynamics;
 
-/// The PUMA 560 of the reference data, with a payload mass as a field.
+/// A 6-joint robot with prismatic joints and products of inertia, from a description file.
+#[derive(Dynamics)]
+#[dynamics(file = "../data/reference/robots/random5.json")]
+pub struct Random5;
+
+/// A planar arm whose lengths, masses, spring and gravity are fields.
 #[derive(Dynamics)]
 #[dynamics(
-    gravity = [0, 0, -9.81],
+    gravity = [0, -g, 0],
     dh = [
-        //  θ   d         a        α
-        [   q,  0.67183,  0,       90 deg ],
-        [   q,  0,        0.4318,  0      ],
-        [   q,  0.15005,  0.0203, -90 deg ],
-        [   q,  0.4318,   0,       90 deg ],
-        [   q,  0,        0,      -90 deg ],
-        [   q,  0,        0,       0      ],
+        //  θ          d   a    α
+        [   q,         0,  l1,  0 ],
+        [   q + 0.25,  0,  l2,  0 ],
     ],
-    link(mass = 0, inertia = [0, 0.35, 0, 0, 0, 0]),
-    link(mass = 17.4, com = [-0.3638, 0.006, 0.2275], inertia = [0.13, 0.524, 0.539, 0, 0, 0]),
-    link(mass = 4.8, com = [-0.0203, -0.0141, 0.07], inertia = [0.066, 0.086, 0.0125, 0, 0, 0]),
-    link(mass = 0.82, com = [0, 0.019, 0], inertia = [0.0018, 0.0013, 0.0018, 0, 0, 0]),
-    link(mass = 0.34, inertia = [0.0003, 0.0004, 0.0003, 0, 0, 0]),
-    link(mass = 0.09 + payload, com = [0, 0, 0.032], inertia = [0.00015, 0.00015, 0.00004, 0, 0, 0]),
+    link(mass = m1, com = [-l1 / 2, 0, 0], inertia = [0, m1 * l1^2 / 12, m1 * l1^2 / 12, 0, 0, 0]),
+    link(mass = m2, com = [-l2 / 2, 0, 0], inertia = [0, m2 * l2^2 / 12, m2 * l2^2 / 12, 0, 0, 0],
+         actuator_inertia = 0.02, spring = (k, 0.1)),
 )]
-pub struct Puma560 {
-    /// Payload at the last link's centre of mass, kg.
-    pub payload: f32,
+pub struct TwoLink {
+    /// Link lengths, m.
+    pub l1: f32,
+    /// Link lengths, m.
+    pub l2: f32,
+    /// Masses, kg.
+    pub m1: f32,
+    /// Masses, kg.
+    pub m2: f32,
+    /// Spring stiffness, N m / rad.
+    pub k: f32,
+    /// Gravity, m/s².
+    pub g: f32,
 }
 
-/// Every method, in single precision.
+/// Every method, in single precision, summed so that nothing is optimized away.
 #[must_use]
-pub fn evaluate_f32(robot: &Puma560, q: &[f32; 6], qd: &[f32; 6], qdd: &[f32; 6]) -> f32 {
+pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
+    robot: &R,
+    q: &[f32; N],
+    qd: &[f32; N],
+    qdd: &[f32; N],
+) -> f32 {
     let m = robot.mass_matrix(q);
     let c = robot.coriolis_matrix(q, qd);
     let cqd = robot.coriolis_torques(q, qd);
@@ -39,17 +52,21 @@ pub fn evaluate_f32(robot: &Puma560, q: &[f32; 6], qd: &[f32; 6], qdd: &[f32; 6]
     let h = robot.bias_torques(q, qd);
     let tau = robot.inverse_dynamics(q, qd, qdd);
     m[0][0]
-        + c[1][2]
+        + c[N - 1][0]
         + cqd[0]
-        + g[1]
-        + h[2]
-        + tau[3]
+        + g[0]
+        + h[0]
+        + tau[N - 1]
         + robot.kinetic_energy(q, qd)
         + robot.potential_energy(q)
 }
 
-/// Inverse dynamics in double precision.
+/// Inverse dynamics of both robots in double precision.
 #[must_use]
-pub fn torques_f64(robot: &Puma560, q: &[f64; 6], qd: &[f64; 6], qdd: &[f64; 6]) -> [f64; 6] {
-    robot.inverse_dynamics(q, qd, qdd)
+pub fn torques_f64(arm: &TwoLink, q: &[f64; 6]) -> ([f64; 6], [f64; 2]) {
+    let zero = [0.0; 6];
+    (
+        Random5.inverse_dynamics(q, &zero, &zero),
+        arm.inverse_dynamics(&[q[0], q[1]], &[0.0; 2], &[0.0; 2]),
+    )
 }
