@@ -189,7 +189,8 @@ pub fn derive(robot: &Robot) -> Equations {
     let chain = match robot.convention {
         Convention::Standard => Chain::standard(&rows, &links),
         Convention::Modified => Chain::modified(&rows, &links),
-    };
+    }
+    .regrouped();
     let gravity = V3::new(
         t.value(&robot.gravity[0]),
         t.value(&robot.gravity[1]),
