@@ -1,1 +1,155 @@
-//! Benchmarks of the generated dynamics; see `bench/README.md`.
+//! Shared pieces of the benchmarks of the generated dynamics (see `bench/README.md`).
+//!
+//! * The four 6-joint reference robots of `tests/data/reference/robots/`, each derived with
+//!   `#[derive(Dynamics)]` from its JSON description: [`Puma560`], [`Stanford`], [`Ur5`] and
+//!   [`Random5`].
+//! * Their 20 reference samples (`q`, `qd`, `qdd` and the expected `tau`, computed with
+//!   Pinocchio 4.1.0), read at run time by [`samples`].
+//! * The two other implementations the generated code is compared with, built from the same
+//!   descriptions: the plain numeric recursive Newton-Euler / composite-rigid-body of
+//!   `dynamics-codegen` ([`numeric`]) and the book's O(n⁴) Lagrangian method of
+//!   `dynamics-reference` ([`book`]).
+//!
+//! Used by the `timings` binary (the numbers compared with Pinocchio) and by the criterion
+//! benchmark `benches/dynamics.rs`.
+
+use dynamics_codegen::numeric::Numeric;
+use dynamics_runtime::Dynamics;
+
+/// Number of joints of every benchmarked robot.
+pub const DOF: usize = 6;
+
+/// Names of the benchmarked robots, in output order. Each is the stem of its description
+/// `tests/data/reference/robots/<name>.json` and of its data `tests/data/reference/data/<name>.json`.
+pub const ROBOTS: [&str; 4] = ["puma560", "stanford", "ur5", "random5"];
+
+/// The PUMA 560 (Corke's Robotics Toolbox parameters, motor inertia and friction dropped): RRRRRR.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../tests/data/reference/robots/puma560.json")]
+pub struct Puma560;
+
+/// The Stanford arm (Robotics Toolbox parameters): RRPRRR.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../tests/data/reference/robots/stanford.json")]
+pub struct Stanford;
+
+/// The UR5 (Robotics Toolbox parameters, point masses): RRRRRR.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../tests/data/reference/robots/ur5.json")]
+pub struct Ur5;
+
+/// A seeded random robot with general inertial parameters: PRPRRR.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../tests/data/reference/robots/random5.json")]
+pub struct Random5;
+
+/// One reference sample: a state and the torques Pinocchio computed for it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// Joint positions.
+    pub q: [f64; DOF],
+    /// Joint velocities.
+    pub qd: [f64; DOF],
+    /// Joint accelerations.
+    pub qdd: [f64; DOF],
+    /// Expected inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)`.
+    pub tau: [f64; DOF],
+}
+
+const REFERENCE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/reference");
+
+fn read(kind: &str, robot: &str) -> String {
+    let path = format!("{REFERENCE_DIR}/{kind}/{robot}.json");
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"))
+}
+
+fn vector(v: &serde_json::Value, what: &str) -> [f64; DOF] {
+    let a = v
+        .as_array()
+        .unwrap_or_else(|| panic!("{what} is not an array"));
+    assert_eq!(a.len(), DOF, "{what} has {} entries, not {DOF}", a.len());
+    core::array::from_fn(|i| {
+        a[i].as_f64()
+            .unwrap_or_else(|| panic!("{what}[{i}] is not a number"))
+    })
+}
+
+/// The 20 reference samples of `robot` (one of [`ROBOTS`]), read from
+/// `tests/data/reference/data/<robot>.json`.
+///
+/// # Panics
+/// If the file is missing or malformed.
+#[must_use]
+pub fn samples(robot: &str) -> Vec<Sample> {
+    let data: serde_json::Value = serde_json::from_str(&read("data", robot))
+        .unwrap_or_else(|e| panic!("data of {robot}: {e}"));
+    let samples = data["samples"]
+        .as_array()
+        .unwrap_or_else(|| panic!("data of {robot} has no samples"));
+    samples
+        .iter()
+        .map(|s| Sample {
+            q: vector(&s["q"], "q"),
+            qd: vector(&s["qd"], "qd"),
+            qdd: vector(&s["qdd"], "qdd"),
+            tau: vector(&s["tau"], "tau"),
+        })
+        .collect()
+}
+
+/// The JSON description of `robot`, `tests/data/reference/robots/<robot>.json`: the file its
+/// struct is derived from.
+///
+/// # Panics
+/// If the file is missing.
+#[must_use]
+pub fn description(robot: &str) -> String {
+    read("robots", robot)
+}
+
+/// `robot` evaluated by the plain numeric recursive Newton-Euler (`inverse_dynamics`) and
+/// composite-rigid-body (`mass_matrix`) algorithms of `dynamics-codegen`, with loops over the
+/// joints at run time.
+///
+/// # Panics
+/// If the description is missing or invalid.
+#[must_use]
+pub fn numeric(robot: &str) -> Numeric {
+    let model = dynamics_codegen::model::from_json(&description(robot), robot)
+        .unwrap_or_else(|e| panic!("description of {robot}: {e}"));
+    // The reference robots name no struct fields: every parameter is a number.
+    Numeric::new(&model, &[]).unwrap_or_else(|e| panic!("{robot} needs field {:?}", e.0))
+}
+
+/// `robot` evaluated by the book's method (Niku, ch. 6: Lagrangian with 4×4 matrices,
+/// O(n⁴)), as implemented by `dynamics-reference`.
+///
+/// # Panics
+/// If the description is missing or invalid.
+#[must_use]
+pub fn book(robot: &str) -> dynamics_reference::Robot {
+    dynamics_reference::Robot::from_json(&description(robot))
+        .unwrap_or_else(|e| panic!("description of {robot}: {e}"))
+}
+
+/// `max|got − want| / max(1, max|want|)`, infinite if `got` has a non-finite entry.
+///
+/// # Panics
+/// If the lengths differ.
+#[must_use]
+pub fn scaled_error(got: &[f64], want: &[f64]) -> f64 {
+    assert_eq!(got.len(), want.len(), "lengths differ");
+    let scale = want.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+    let worst = got
+        .iter()
+        .zip(want)
+        .map(|(a, b)| {
+            if a.is_finite() {
+                (a - b).abs()
+            } else {
+                f64::INFINITY
+            }
+        })
+        .fold(0.0, f64::max);
+    worst / scale
+}

@@ -1,0 +1,347 @@
+//! Wall-clock time per call of the generated dynamics of the four 6-joint reference robots,
+//! measured with the same protocol as the C++ Pinocchio benchmark of `bench/pinocchio/`, so that
+//! the two sets of numbers compare directly.
+//!
+//! ```text
+//! cargo run --release -p dynamics-bench --bin timings [-- [--all] [--robot R] [--function F]]
+//! ```
+//!
+//! # What is measured
+//!
+//! For each robot (`puma560`, `stanford`, `ur5`, `random5`, each derived with
+//! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`), the generated `f64`
+//! methods:
+//!
+//! | function | method |
+//! |---|---|
+//! | `tau` | `inverse_dynamics(&q, &qd, &qdd)` |
+//! | `M` | `mass_matrix(&q)` |
+//! | `g` | `gravity_torques(&q)` |
+//! | `C` | `coriolis_matrix(&q, &qd)` |
+//! | `h` | `bias_torques(&q, &qd)` (`C qd + g`, Pinocchio's non-linear effects) |
+//!
+//! With `--all`, three more for context, computed from the same description:
+//!
+//! | function | implementation |
+//! |---|---|
+//! | `tau_reference` | the book's O(n⁴) Lagrangian method, `dynamics_reference::Robot::inverse_dynamics` |
+//! | `tau_rnea` | a plain numeric recursive Newton-Euler, `dynamics_codegen::numeric::Numeric::inverse_dynamics` |
+//! | `M_crba` | a plain numeric composite rigid body algorithm, `Numeric::mass_matrix` |
+//!
+//! `tau_rnea` and `M_crba` loop over the joints at run time and return `Vec`s, so their time
+//! includes heap allocation; they are a baseline, not a tuned implementation.
+//!
+//! # Protocol
+//!
+//! The inputs are the 20 samples `(q, qd, qdd)` of `tests/data/reference/data/<robot>.json`,
+//! used cyclically. After 10,000 warm-up calls, 31 batches of 20,000 calls are timed with
+//! `std::time::Instant`; a batch's time per call is its elapsed time divided by its number of
+//! calls, and the median over the batches is printed. (`tau_reference`, thousands of times
+//! slower, gets 10 warm-up calls and 31 batches of 20.) Inputs and outputs go through
+//! `std::hint::black_box`, so no call is hoisted out of the loop or optimized away.
+//!
+//! Output, on stdout, one line per (robot, function): robot, function and median ns per call,
+//! separated by single tabs, e.g. `puma560\ttau\t41.3`.
+//!
+//! On stderr, one sanity line per robot: the generated `tau` must equal the data's `tau`
+//! (Pinocchio 4.1.0) within 1e-9 (scaled as `max|a − b| / max(1, max|b|)`), else the program
+//! exits with status 1 before timing that robot. `--robot` and `--function` restrict the run
+//! to one robot or one function.
+//!
+//! # Instruction counts (callgrind)
+//!
+//! `--calls N --robot R --function F` makes exactly `N` calls of one function (any of the names
+//! above), cycling over the samples as in the timed loop, and prints nothing: no timing, no
+//! sanity check. Under callgrind this gives a deterministic instruction count; subtracting a
+//! `--calls 0` run removes the start-up cost (reading the JSON files, building the numeric
+//! models):
+//!
+//! ```text
+//! cargo build --release -p dynamics-bench --bin timings
+//! valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.out \
+//!     target/release/timings --calls 10000 --robot puma560 --function tau
+//! valgrind --tool=callgrind --callgrind-out-file=/tmp/cg0.out \
+//!     target/release/timings --calls 0 --robot puma560 --function tau
+//! callgrind_annotate /tmp/cg.out | head    # "PROGRAM TOTALS", minus that of /tmp/cg0.out,
+//!                                          # divided by 10000 = instructions per call
+//! ```
+
+use std::hint::black_box;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use dynamics_bench::{Puma560, Random5, Sample, Stanford, Ur5, DOF, ROBOTS};
+use dynamics_codegen::numeric::Numeric;
+use dynamics_runtime::Dynamics;
+
+/// The generated methods, timed by default.
+const GENERATED: [&str; 5] = ["tau", "M", "g", "C", "h"];
+/// The other implementations, timed with `--all`.
+const EXTRA: [&str; 3] = ["tau_reference", "tau_rnea", "M_crba"];
+
+/// Largest accepted scaled error of the generated `tau` against the reference data.
+const TOLERANCE: f64 = 1e-9;
+
+/// Number of calls of each phase of a timing.
+#[derive(Clone, Copy, Debug)]
+struct Protocol {
+    warm_up: usize,
+    batches: usize,
+    calls_per_batch: usize,
+}
+
+/// The protocol shared with the Pinocchio benchmark.
+const PROTOCOL: Protocol = Protocol {
+    warm_up: 10_000,
+    batches: 31,
+    calls_per_batch: 20_000,
+};
+
+/// The same with fewer calls, for the book's method.
+const SLOW_PROTOCOL: Protocol = Protocol {
+    warm_up: 10,
+    batches: 31,
+    calls_per_batch: 20,
+};
+
+/// Time per call or exact number of calls.
+#[derive(Clone, Copy, Debug)]
+enum Mode {
+    /// Time with the protocol; return the median ns per call.
+    Time,
+    /// Make exactly this many calls, untimed (for callgrind).
+    Calls(usize),
+}
+
+/// The implementations other than the generated code, for `--all` and the sanity line.
+struct Others {
+    /// Numeric RNEA / CRBA. Allocates `Vec`s on every call; that is part of what it costs.
+    numeric: Numeric,
+    /// The book's method.
+    book: dynamics_reference::Robot,
+}
+
+/// Calls `f` on the samples cyclically: the warm-up and the timed batches of `protocol`,
+/// returning the median ns per call, or, in [`Mode::Calls`], exactly that many calls.
+fn drive<O>(
+    samples: &[Sample],
+    protocol: Protocol,
+    mode: Mode,
+    mut f: impl FnMut(&Sample) -> O,
+) -> Option<f64> {
+    assert!(!samples.is_empty(), "no samples");
+    let mut k = 0;
+    let mut call = || {
+        black_box(f(black_box(&samples[k])));
+        k += 1;
+        if k == samples.len() {
+            k = 0;
+        }
+    };
+    if let Mode::Calls(n) = mode {
+        for _ in 0..n {
+            call();
+        }
+        return None;
+    }
+    for _ in 0..protocol.warm_up {
+        call();
+    }
+    let mut per_call: Vec<f64> = (0..protocol.batches)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..protocol.calls_per_batch {
+                call();
+            }
+            start.elapsed().as_nanos() as f64 / protocol.calls_per_batch as f64
+        })
+        .collect();
+    Some(median(&mut per_call))
+}
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    if n % 2 == 1 {
+        values[n / 2]
+    } else {
+        (values[n / 2 - 1] + values[n / 2]) / 2.0
+    }
+}
+
+/// Times (or calls, in [`Mode::Calls`]) `function` of `robot`.
+fn measure<R: Dynamics<DOF>>(
+    robot: &R,
+    others: &Others,
+    samples: &[Sample],
+    function: &str,
+    mode: Mode,
+) -> Option<f64> {
+    let robot = black_box(robot);
+    let (p, s) = (PROTOCOL, samples);
+    match function {
+        "tau" => drive(s, p, mode, |x| robot.inverse_dynamics(&x.q, &x.qd, &x.qdd)),
+        "M" => drive(s, p, mode, |x| robot.mass_matrix(&x.q)),
+        "g" => drive(s, p, mode, |x| robot.gravity_torques(&x.q)),
+        "C" => drive(s, p, mode, |x| robot.coriolis_matrix(&x.q, &x.qd)),
+        "h" => drive(s, p, mode, |x| robot.bias_torques(&x.q, &x.qd)),
+        "tau_reference" => drive(s, SLOW_PROTOCOL, mode, |x| {
+            others.book.inverse_dynamics(&x.q, &x.qd, &x.qdd)
+        }),
+        "tau_rnea" => drive(s, p, mode, |x| {
+            others.numeric.inverse_dynamics(&x.q, &x.qd, &x.qdd)
+        }),
+        "M_crba" => drive(s, p, mode, |x| others.numeric.mass_matrix(&x.q)),
+        _ => unreachable!("function names are checked when parsing the arguments"),
+    }
+}
+
+/// Worst scaled error of `tau` over the samples.
+fn worst_error(samples: &[Sample], tau: impl Fn(&Sample) -> Vec<f64>) -> f64 {
+    samples
+        .iter()
+        .map(|s| dynamics_bench::scaled_error(&tau(s), &s.tau))
+        .fold(0.0, f64::max)
+}
+
+/// The sanity line of `name` on stderr; `false` if the generated `tau` is off.
+fn sanity<R: Dynamics<DOF>>(
+    robot: &R,
+    name: &str,
+    others: &Others,
+    samples: &[Sample],
+    all: bool,
+) -> bool {
+    let generated = worst_error(samples, |s| {
+        robot.inverse_dynamics(&s.q, &s.qd, &s.qdd).to_vec()
+    });
+    let ok = generated <= TOLERANCE;
+    let mut line = format!(
+        "{name}: generated tau vs reference data over {} samples: max scaled error {generated:.1e} ({})",
+        samples.len(),
+        if ok { "ok, <= 1e-9" } else { "FAILED, > 1e-9" },
+    );
+    if all {
+        let rnea = worst_error(samples, |s| {
+            others.numeric.inverse_dynamics(&s.q, &s.qd, &s.qdd)
+        });
+        let book = worst_error(samples, |s| {
+            others
+                .book
+                .inverse_dynamics(&s.q, &s.qd, &s.qdd)
+                .as_slice()
+                .to_vec()
+        });
+        line += &format!("; tau_rnea {rnea:.1e}, tau_reference {book:.1e}");
+    }
+    eprintln!("{line}");
+    ok
+}
+
+/// Runs the selected functions of one robot; `false` if its sanity check failed.
+fn run<R: Dynamics<DOF>>(robot: &R, name: &str, functions: &[&str], args: &Args) -> bool {
+    let samples = dynamics_bench::samples(name);
+    let others = Others {
+        numeric: dynamics_bench::numeric(name),
+        book: dynamics_bench::book(name),
+    };
+    if let Some(n) = args.calls {
+        for function in functions {
+            measure(robot, &others, &samples, function, Mode::Calls(n));
+        }
+        return true;
+    }
+    if !sanity(robot, name, &others, &samples, args.all) {
+        return false;
+    }
+    for function in functions {
+        let ns = measure(robot, &others, &samples, function, Mode::Time)
+            .expect("a timed run returns a time");
+        println!("{name}\t{function}\t{ns:.1}");
+    }
+    true
+}
+
+#[derive(Debug, Default)]
+struct Args {
+    all: bool,
+    robot: Option<String>,
+    function: Option<String>,
+    calls: Option<usize>,
+}
+
+const USAGE: &str = "\
+usage: timings [--all] [--robot ROBOT] [--function FUNCTION]
+       timings --calls N --robot ROBOT --function FUNCTION
+
+  --all          also time tau_reference, tau_rnea and M_crba
+  --robot R      only robot R: puma560, stanford, ur5, random5
+  --function F   only function F: tau, M, g, C, h, tau_reference, tau_rnea, M_crba
+  --calls N      make exactly N calls of one function, print nothing (for callgrind)";
+
+fn parse_args() -> Result<Args, String> {
+    let mut args = Args::default();
+    let mut it = std::env::args().skip(1);
+    while let Some(arg) = it.next() {
+        let mut value = || it.next().ok_or_else(|| format!("{arg} needs a value"));
+        match arg.as_str() {
+            "--all" => args.all = true,
+            "--robot" => args.robot = Some(value()?),
+            "--function" => args.function = Some(value()?),
+            "--calls" => {
+                let v = value()?;
+                args.calls = Some(v.parse().map_err(|_| format!("--calls {v}: not a count"))?);
+            }
+            "-h" | "--help" => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
+            _ => return Err(format!("unknown argument {arg}")),
+        }
+    }
+    if let Some(r) = &args.robot {
+        if !ROBOTS.contains(&r.as_str()) {
+            return Err(format!("unknown robot {r}"));
+        }
+    }
+    if let Some(f) = &args.function {
+        if !GENERATED.contains(&f.as_str()) && !EXTRA.contains(&f.as_str()) {
+            return Err(format!("unknown function {f}"));
+        }
+    }
+    if args.calls.is_some() && (args.robot.is_none() || args.function.is_none()) {
+        return Err("--calls needs --robot and --function".into());
+    }
+    Ok(args)
+}
+
+fn main() -> ExitCode {
+    let args = match parse_args() {
+        Ok(args) => args,
+        Err(e) => {
+            eprintln!("timings: {e}\n{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    let functions: Vec<&str> = match &args.function {
+        Some(f) => vec![f.as_str()],
+        None if args.all => GENERATED.iter().chain(&EXTRA).copied().collect(),
+        None => GENERATED.to_vec(),
+    };
+    for name in ROBOTS {
+        if args.robot.as_deref().is_some_and(|r| r != name) {
+            continue;
+        }
+        let ok = match name {
+            "puma560" => run(&Puma560, name, &functions, &args),
+            "stanford" => run(&Stanford, name, &functions, &args),
+            "ur5" => run(&Ur5, name, &functions, &args),
+            "random5" => run(&Random5, name, &functions, &args),
+            _ => unreachable!("every robot of ROBOTS has a struct"),
+        };
+        if !ok {
+            return ExitCode::FAILURE;
+        }
+    }
+    ExitCode::SUCCESS
+}
