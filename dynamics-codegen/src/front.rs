@@ -316,11 +316,20 @@ fn value(s: Option<&Spanned>, fields: &[Field], errors: &mut Errors) -> Value {
     }
 }
 
+/// Why the derive input gave no robot.
+pub struct Failure {
+    /// Every error found, each on its own span.
+    pub error: syn::Error,
+    /// The number of joints, where the table was read that far: the fallback expansion then
+    /// still implements the trait, so that the user sees these errors and not a cascade.
+    pub dof: Option<usize>,
+}
+
 /// Parses the derive input into a robot; every error found is returned together.
 ///
 /// # Errors
-/// The combined errors, each on its own span.
-pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
+/// The combined errors, each on its own span, and the number of joints if known.
+pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
     let mut errors = Errors::default();
     let mut attrs = Attrs::default();
     let mut seen = false;
@@ -383,8 +392,17 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, syn::Error> {
                 tracked_file,
             })
         }
-        (Some(e), _) => Err(e),
-        (None, None) => Err(syn::Error::new(input.ident.span(), "no robot description")),
+        (Some(error), robot) => Err(Failure {
+            error,
+            dof: robot
+                .map(|r| r.dof())
+                .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
+                .filter(|n| *n > 0),
+        }),
+        (None, None) => Err(Failure {
+            error: syn::Error::new(input.ident.span(), "no robot description"),
+            dof: None,
+        }),
     }
 }
 
@@ -626,5 +644,5 @@ fn divides_by_zero(v: &Value) -> bool {
 /// The parse error.
 pub fn parse_str(text: &str) -> syn::Result<Input> {
     let input: syn::DeriveInput = syn::parse_str(text)?;
-    parse(&input)
+    parse(&input).map_err(|f| f.error)
 }

@@ -36,7 +36,7 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
     };
     match front::parse(&input) {
         Ok(parsed) => expand(&input, &parsed),
-        Err(e) => e.to_compile_error(),
+        Err(failure) => fallback(&input, &failure),
     }
 }
 
@@ -108,36 +108,11 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         .collect();
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
-    let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
-    let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());
     let fns = methods.iter().map(|m| {
-        let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
         let body = &m.body;
         let touch = (m.name == "potential_energy" && !unread.is_empty())
             .then(|| quote!(let _ = (#(&self.#unread,)*);));
-        let (args, ret) = match m.name {
-            "mass_matrix" => (quote!(#q: &[T; #n]), quote!([[T; #n]; #n])),
-            "coriolis_matrix" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([[T; #n]; #n])),
-            "coriolis_torques" | "bias_torques" => {
-                (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!([T; #n]))
-            }
-            "gravity_torques" => (quote!(#q: &[T; #n]), quote!([T; #n])),
-            "inverse_dynamics" => (
-                quote!(#q: &[T; #n], #qd: &[T; #n], #qdd: &[T; #n]),
-                quote!([T; #n]),
-            ),
-            "kinetic_energy" => (quote!(#q: &[T; #n], #qd: &[T; #n]), quote!(T)),
-            _ => (quote!(#q: &[T; #n]), quote!(T)),
-        };
-        quote! {
-            #[inline]
-            #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
-            fn #name<T: #krate::Real>(&self, #args) -> #ret {
-                #touch
-                #body
-            }
-        }
+        method(m.name, n, &krate, &quote!(#touch #body))
     });
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
@@ -147,6 +122,69 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     quote! {
         const _: () = {
             #track
+            #[automatically_derived]
+            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
+                #(#fns)*
+            }
+        };
+    }
+}
+
+/// One method of the `Dynamics` impl with the given body.
+fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
+    let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
+    let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
+    let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());
+    let vector = quote!(&[T; #n]);
+    let (args, ret) = match name {
+        "mass_matrix" => (quote!(#q: #vector), quote!([[T; #n]; #n])),
+        "coriolis_matrix" => (quote!(#q: #vector, #qd: #vector), quote!([[T; #n]; #n])),
+        "coriolis_torques" | "bias_torques" => (quote!(#q: #vector, #qd: #vector), quote!([T; #n])),
+        "gravity_torques" => (quote!(#q: #vector), quote!([T; #n])),
+        "inverse_dynamics" => (
+            quote!(#q: #vector, #qd: #vector, #qdd: #vector),
+            quote!([T; #n]),
+        ),
+        "kinetic_energy" => (quote!(#q: #vector, #qd: #vector), quote!(T)),
+        _ => (quote!(#q: #vector), quote!(T)),
+    };
+    let name = syn::Ident::new(name, proc_macro2::Span::call_site());
+    quote! {
+        #[inline]
+        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+        fn #name<T: #krate::Real>(&self, #args) -> #ret {
+            #body
+        }
+    }
+}
+
+/// The names of the generated methods, in the trait's order.
+const METHODS: [&str; 8] = [
+    "mass_matrix",
+    "coriolis_matrix",
+    "coriolis_torques",
+    "gravity_torques",
+    "bias_torques",
+    "inverse_dynamics",
+    "kinetic_energy",
+    "potential_energy",
+];
+
+/// The errors, and where the joint count is known an impl whose methods are unreachable, so
+/// that code calling them compiles and the user sees only the real errors.
+fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
+    let errors = failure.error.to_compile_error();
+    let Some(n) = failure.dof else {
+        return errors;
+    };
+    let krate = quote!(::dynamics_runtime);
+    let ident = &input.ident;
+    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
+    let body = quote!(::core::unreachable!("the Dynamics derive failed"));
+    let fns = METHODS.iter().map(|name| method(name, n, &krate, &body));
+    quote! {
+        #errors
+        const _: () = {
             #[automatically_derived]
             impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
                 #(#fns)*
