@@ -1,0 +1,569 @@
+// Pinocchio side of the side-by-side benchmark (see bench/README.md; driven by bench/run).
+//
+// Usage: pinocchio_bench DATA.json [DATA.json ...]
+//
+// Each argument is a reference data file of tests/data/reference/data/ (format in
+// tests/data/reference/README.md). For each file the program
+//   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
+//      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
+//      transforms, link inertias mapped with post_i.act(...), armature = actuator inertias,
+//      gravity = the JSON gravity),
+//   2. checks rnea, crba, computeGeneralizedGravity, computeCoriolisMatrix and nonLinearEffects
+//      against the file's sample CHECK_SAMPLE (relative tolerance 1e-9) and aborts on a mismatch,
+//      so that the timed model is the right robot,
+//   3. times each function with the shared protocol: the 20 samples' (q, qd, qdd) used
+//      cyclically, WARMUP calls, then BATCHES batches of CALLS calls, ns per call of a batch =
+//      elapsed / CALLS (std::chrono::steady_clock), report the median over the batches.
+//
+// Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
+// the file stem. A checksum (one output element per call, summed) goes to stderr so that the
+// optimizer cannot drop the work.
+
+#include <algorithm>
+#include <chrono>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pinocchio/multibody.hpp"
+#include "pinocchio/algorithm/crba.hpp"
+#include "pinocchio/algorithm/rnea.hpp"
+
+// ---------------------------------------------------------------------------------------------
+// Minimal JSON reader: null, booleans, numbers, strings, arrays, objects. Enough for the
+// reference data files; not a general-purpose validating parser.
+// ---------------------------------------------------------------------------------------------
+
+namespace json
+{
+  struct Value
+  {
+    enum Kind
+    {
+      Null,
+      Bool,
+      Number,
+      String,
+      Array,
+      Object
+    } kind = Null;
+    bool b = false;
+    double num = 0.0;
+    std::string str;
+    std::vector<Value> arr;
+    std::map<std::string, Value> obj;
+
+    const Value & operator[](const std::string & key) const
+    {
+      if (kind != Object)
+        throw std::runtime_error("JSON: not an object (looking up \"" + key + "\")");
+      auto it = obj.find(key);
+      if (it == obj.end())
+        throw std::runtime_error("JSON: missing key \"" + key + "\"");
+      return it->second;
+    }
+    const Value & operator[](std::size_t i) const
+    {
+      if (kind != Array)
+        throw std::runtime_error("JSON: not an array");
+      if (i >= arr.size())
+        throw std::runtime_error("JSON: index out of range");
+      return arr[i];
+    }
+    bool has(const std::string & key) const
+    {
+      return kind == Object && obj.count(key) != 0;
+    }
+    std::size_t size() const
+    {
+      if (kind != Array)
+        throw std::runtime_error("JSON: not an array");
+      return arr.size();
+    }
+    double number() const
+    {
+      if (kind != Number)
+        throw std::runtime_error("JSON: not a number");
+      return num;
+    }
+    const std::string & string() const
+    {
+      if (kind != String)
+        throw std::runtime_error("JSON: not a string");
+      return str;
+    }
+  };
+
+  class Parser
+  {
+  public:
+    explicit Parser(const std::string & text)
+    : s(text)
+    {
+    }
+
+    Value parse()
+    {
+      Value v = value();
+      ws();
+      if (pos != s.size())
+        fail("trailing characters");
+      return v;
+    }
+
+  private:
+    const std::string & s;
+    std::size_t pos = 0;
+
+    [[noreturn]] void fail(const std::string & what) const
+    {
+      throw std::runtime_error("JSON parse error at byte " + std::to_string(pos) + ": " + what);
+    }
+    void ws()
+    {
+      while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos])))
+        ++pos;
+    }
+    char peek()
+    {
+      ws();
+      if (pos >= s.size())
+        fail("unexpected end of input");
+      return s[pos];
+    }
+    void expect(char c)
+    {
+      if (peek() != c)
+        fail(std::string("expected '") + c + "'");
+      ++pos;
+    }
+    bool literal(const char * word)
+    {
+      std::size_t len = std::char_traits<char>::length(word);
+      if (s.compare(pos, len, word) == 0)
+      {
+        pos += len;
+        return true;
+      }
+      return false;
+    }
+
+    Value value()
+    {
+      Value v;
+      char c = peek();
+      if (c == '{')
+      {
+        v.kind = Value::Object;
+        ++pos;
+        if (peek() == '}')
+        {
+          ++pos;
+          return v;
+        }
+        for (;;)
+        {
+          if (peek() != '"')
+            fail("expected a string key");
+          std::string key = string();
+          expect(':');
+          v.obj[key] = value();
+          char d = peek();
+          ++pos;
+          if (d == '}')
+            break;
+          if (d != ',')
+            fail("expected ',' or '}'");
+        }
+      }
+      else if (c == '[')
+      {
+        v.kind = Value::Array;
+        ++pos;
+        if (peek() == ']')
+        {
+          ++pos;
+          return v;
+        }
+        for (;;)
+        {
+          v.arr.push_back(value());
+          char d = peek();
+          ++pos;
+          if (d == ']')
+            break;
+          if (d != ',')
+            fail("expected ',' or ']'");
+        }
+      }
+      else if (c == '"')
+      {
+        v.kind = Value::String;
+        v.str = string();
+      }
+      else if (literal("true"))
+      {
+        v.kind = Value::Bool;
+        v.b = true;
+      }
+      else if (literal("false"))
+      {
+        v.kind = Value::Bool;
+      }
+      else if (literal("null"))
+      {
+        v.kind = Value::Null;
+      }
+      else
+      {
+        const char * begin = s.c_str() + pos;
+        char * end = nullptr;
+        v.kind = Value::Number;
+        v.num = std::strtod(begin, &end);
+        if (end == begin)
+          fail("unexpected character");
+        pos += static_cast<std::size_t>(end - begin);
+      }
+      return v;
+    }
+
+    std::string string()
+    {
+      expect('"');
+      std::string out;
+      while (pos < s.size() && s[pos] != '"')
+      {
+        char c = s[pos++];
+        if (c == '\\')
+        {
+          if (pos >= s.size())
+            fail("unterminated escape");
+          char e = s[pos++];
+          switch (e)
+          {
+          case 'n':
+            out += '\n';
+            break;
+          case 't':
+            out += '\t';
+            break;
+          case 'r':
+            out += '\r';
+            break;
+          case 'b':
+            out += '\b';
+            break;
+          case 'f':
+            out += '\f';
+            break;
+          case 'u': // code point not needed here: keep a placeholder
+            if (pos + 4 > s.size())
+              fail("bad \\u escape");
+            pos += 4;
+            out += '?';
+            break;
+          default: // '"', '\\', '/'
+            out += e;
+          }
+        }
+        else
+          out += c;
+      }
+      if (pos >= s.size())
+        fail("unterminated string");
+      ++pos;
+      return out;
+    }
+  };
+
+  Value parse_file(const std::string & path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw std::runtime_error("cannot open " + path);
+    std::stringstream buf;
+    buf << in.rdbuf();
+    std::string text = buf.str();
+    return Parser(text).parse();
+  }
+} // namespace json
+
+// ---------------------------------------------------------------------------------------------
+// Model from a D-H description
+// ---------------------------------------------------------------------------------------------
+
+using pinocchio::Data;
+using pinocchio::Inertia;
+using pinocchio::Model;
+using pinocchio::SE3;
+
+static SE3 rotz(double t)
+{
+  return SE3(Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()).toRotationMatrix(), Eigen::Vector3d::Zero());
+}
+static SE3 rotx(double t)
+{
+  return SE3(Eigen::AngleAxisd(t, Eigen::Vector3d::UnitX()).toRotationMatrix(), Eigen::Vector3d::Zero());
+}
+static SE3 transz(double d)
+{
+  return SE3(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, d));
+}
+static SE3 transx(double a)
+{
+  return SE3(Eigen::Matrix3d::Identity(), Eigen::Vector3d(a, 0.0, 0.0));
+}
+
+static double num_or(const json::Value & v, const std::string & key, double dflt)
+{
+  return v.has(key) ? v[key].number() : dflt;
+}
+
+static Eigen::Vector3d vec3(const json::Value & v)
+{
+  if (v.size() != 3)
+    throw std::runtime_error("expected a 3-vector");
+  return Eigen::Vector3d(v[0].number(), v[1].number(), v[2].number());
+}
+
+// One Pinocchio joint per D-H joint, as in "How the reference models were built".
+static Model build_model(const json::Value & desc)
+{
+  Model model;
+  const std::string convention = desc.has("convention") ? desc["convention"].string() : "standard";
+  if (convention != "standard" && convention != "modified")
+    throw std::runtime_error("unknown convention " + convention);
+  const bool modified = convention == "modified";
+  const json::Value & joints = desc["joints"];
+  const std::size_t n = joints.size();
+
+  model.gravity.linear(vec3(desc["gravity"]));
+  model.gravity.angular().setZero();
+
+  std::vector<double> armature(n, 0.0);
+  SE3 post_prev = SE3::Identity();
+  pinocchio::JointIndex parent = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const json::Value & j = joints[i];
+    const std::string type = j["type"].string();
+    const bool revolute = type == "revolute";
+    if (!revolute && type != "prismatic")
+      throw std::runtime_error("unknown joint type " + type);
+    const double theta = j["theta"].number(), d = j["d"].number();
+    const double a = j["a"].number(), alpha = j["alpha"].number();
+    if (num_or(j, "spring_stiffness", 0.0) != 0.0)
+      throw std::runtime_error("joint springs are not modelled by Pinocchio");
+
+    SE3 pre, post;
+    if (modified)
+    {
+      pre = rotx(alpha) * transx(a) * rotz(theta) * transz(d);
+      post = SE3::Identity();
+    }
+    else if (revolute)
+    {
+      pre = rotz(theta);
+      post = transz(d) * transx(a) * rotx(alpha);
+    }
+    else
+    {
+      pre = rotz(theta) * transz(d);
+      post = transx(a) * rotx(alpha);
+    }
+
+    const std::string name = "joint" + std::to_string(i + 1);
+    pinocchio::JointIndex jid =
+      revolute ? model.addJoint(parent, pinocchio::JointModelRZ(), post_prev * pre, name)
+               : model.addJoint(parent, pinocchio::JointModelPZ(), post_prev * pre, name);
+
+    const json::Value & in = j["inertia"]; // [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] about the CoM, frame i
+    Eigen::Matrix3d I;
+    I << in[0].number(), in[3].number(), in[4].number(), //
+      in[3].number(), in[1].number(), in[5].number(),     //
+      in[4].number(), in[5].number(), in[2].number();
+    const Inertia link(j["mass"].number(), vec3(j["com"]), I);
+    model.appendBodyToJoint(jid, post.act(link), SE3::Identity());
+
+    armature[i] = num_or(j, "actuator_inertia", 0.0);
+    post_prev = post;
+    parent = jid;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    model.armature[static_cast<Eigen::Index>(i)] = armature[i];
+  return model;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Check against the reference data
+// ---------------------------------------------------------------------------------------------
+
+static Eigen::VectorXd vecn(const json::Value & v)
+{
+  Eigen::VectorXd out(static_cast<Eigen::Index>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out[static_cast<Eigen::Index>(i)] = v[i].number();
+  return out;
+}
+
+static Eigen::MatrixXd matn(const json::Value & v)
+{
+  const std::size_t rows = v.size(), cols = v[0].size();
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t c = 0; c < cols; ++c)
+      out(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v[r][c].number();
+  return out;
+}
+
+static const double TOLERANCE = 1e-9;
+static const std::size_t CHECK_SAMPLE = 5;
+
+// max|got - want| / max(1, max|want|) must not exceed TOLERANCE.
+static void check(
+  const std::string & robot, const std::string & what, const Eigen::MatrixXd & got, const Eigen::MatrixXd & want)
+{
+  if (got.rows() != want.rows() || got.cols() != want.cols())
+  {
+    std::fprintf(stderr, "%s: %s has the wrong shape\n", robot.c_str(), what.c_str());
+    std::exit(1);
+  }
+  const double err = (got - want).cwiseAbs().maxCoeff() / std::max(1.0, want.cwiseAbs().maxCoeff());
+  if (!(err <= TOLERANCE))
+  {
+    std::fprintf(
+      stderr, "%s: %s differs from the reference (sample %zu) by %.3e relative (> %.0e): wrong model?\n",
+      robot.c_str(), what.c_str(), CHECK_SAMPLE, err, TOLERANCE);
+    std::exit(1);
+  }
+}
+
+static void check_model(const std::string & robot, const Model & model, const json::Value & sample)
+{
+  Data data(model);
+  const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
+  check(robot, "tau (rnea)", pinocchio::rnea(model, data, q, v, a), vecn(sample["tau"]));
+  Eigen::MatrixXd M = pinocchio::crba(model, data, q); // upper triangle only
+  M.triangularView<Eigen::StrictlyLower>() = M.transpose().triangularView<Eigen::StrictlyLower>();
+  check(robot, "M (crba)", M, matn(sample["M"]));
+  check(robot, "g (computeGeneralizedGravity)", pinocchio::computeGeneralizedGravity(model, data, q), vecn(sample["g"]));
+  check(robot, "C (computeCoriolisMatrix)", pinocchio::computeCoriolisMatrix(model, data, q, v), matn(sample["C"]));
+  check(robot, "h (nonLinearEffects)", pinocchio::nonLinearEffects(model, data, q, v), vecn(sample["h"]));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Timing protocol (the same as the Rust side's `timings`)
+// ---------------------------------------------------------------------------------------------
+
+static const int WARMUP = 10000;
+static const int BATCHES = 31;
+static const int CALLS = 20000;
+
+// The inputs are the samples' (q, qd, qdd), used cyclically. `f(k)` runs the function on sample
+// k and returns one element of its output, which is added to the checksum.
+template<typename F>
+static double median_ns(std::size_t nsamples, F && f, double & checksum)
+{
+  std::size_t k = 0;
+  double sum = 0.0;
+  for (int i = 0; i < WARMUP; ++i)
+  {
+    sum += f(k);
+    if (++k == nsamples)
+      k = 0;
+  }
+  std::vector<double> ns(BATCHES);
+  for (int b = 0; b < BATCHES; ++b)
+  {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < CALLS; ++i)
+    {
+      sum += f(k);
+      if (++k == nsamples)
+        k = 0;
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    ns[static_cast<std::size_t>(b)] =
+      std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(CALLS);
+  }
+  checksum += sum;
+  std::sort(ns.begin(), ns.end());
+  return ns[BATCHES / 2];
+}
+
+static std::string stem(const std::string & path)
+{
+  std::size_t slash = path.find_last_of('/');
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  std::size_t dot = base.rfind('.');
+  return dot == std::string::npos ? base : base.substr(0, dot);
+}
+
+int main(int argc, char ** argv)
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s DATA.json [DATA.json ...]\n", argv[0]);
+    return 2;
+  }
+  double checksum = 0.0;
+  for (int arg = 1; arg < argc; ++arg)
+  {
+    const std::string path = argv[arg];
+    const std::string robot = stem(path);
+    json::Value file;
+    Model model;
+    try
+    {
+      file = json::parse_file(path);
+      model = build_model(file["description"]);
+    }
+    catch (const std::exception & e)
+    {
+      std::fprintf(stderr, "%s: %s\n", path.c_str(), e.what());
+      return 1;
+    }
+    const json::Value & samples = file["samples"];
+    check_model(robot, model, samples[CHECK_SAMPLE]);
+
+    std::vector<Eigen::VectorXd> qs, vs, as;
+    for (std::size_t s = 0; s < samples.size(); ++s)
+    {
+      qs.push_back(vecn(samples[s]["q"]));
+      vs.push_back(vecn(samples[s]["qd"]));
+      as.push_back(vecn(samples[s]["qdd"]));
+    }
+    const std::size_t ns = qs.size();
+    Data data(model);
+
+    auto report = [&](const char * function, double t) {
+      std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, t);
+      std::fflush(stdout);
+    };
+    report("tau", median_ns(ns, [&](std::size_t k) {
+      return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0];
+    }, checksum));
+    report("M", median_ns(ns, [&](std::size_t k) {
+      return pinocchio::crba(model, data, qs[k])(0, 0);
+    }, checksum));
+    report("g", median_ns(ns, [&](std::size_t k) {
+      return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0];
+    }, checksum));
+    report("C", median_ns(ns, [&](std::size_t k) {
+      return pinocchio::computeCoriolisMatrix(model, data, qs[k], vs[k])(0, 0);
+    }, checksum));
+    report("h", median_ns(ns, [&](std::size_t k) {
+      return pinocchio::nonLinearEffects(model, data, qs[k], vs[k])[0];
+    }, checksum));
+  }
+  std::fprintf(stderr, "checksum %.17g\n", checksum);
+  return 0;
+}
