@@ -132,24 +132,4 @@ pub fn book(robot: &str) -> dynamics_reference::Robot {
         .unwrap_or_else(|e| panic!("description of {robot}: {e}"))
 }
 
-/// `max|got − want| / max(1, max|want|)`, infinite if `got` has a non-finite entry.
-///
-/// # Panics
-/// If the lengths differ.
-#[must_use]
-pub fn scaled_error(got: &[f64], want: &[f64]) -> f64 {
-    assert_eq!(got.len(), want.len(), "lengths differ");
-    let scale = want.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-    let worst = got
-        .iter()
-        .zip(want)
-        .map(|(a, b)| {
-            if a.is_finite() {
-                (a - b).abs()
-            } else {
-                f64::INFINITY
-            }
-        })
-        .fold(0.0, f64::max);
-    worst / scale
-}
+pub use dynamics_reference::scaled_error;

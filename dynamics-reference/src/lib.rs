@@ -80,3 +80,24 @@ pub use robot::{Convention, Joint, JointKind, Robot};
 
 /// Re-export of the linear-algebra crate used in the public API.
 pub use nalgebra;
+
+/// The error measure of the reference data: `max|a − b| / max(1, max|b|)` over matching
+/// entries, with `b` the reference; infinite if any value is not finite (`f64::max` would
+/// silently drop a NaN).
+///
+/// # Panics
+/// If the lengths differ.
+#[must_use]
+pub fn scaled_error(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len(), "length mismatch");
+    if a.iter().chain(b).any(|x| !x.is_finite()) {
+        return f64::INFINITY;
+    }
+    let diff = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0_f64, f64::max);
+    let scale = b.iter().map(|y| y.abs()).fold(1.0_f64, f64::max);
+    diff / scale
+}

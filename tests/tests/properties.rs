@@ -23,6 +23,7 @@
 //! The runs are deterministic (fixed seed and case count) and write no failure-persistence
 //! files. A failure reports the shrunk robot and state.
 
+use dynamics_reference::scaled_error;
 use std::cell::RefCell;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -419,24 +420,6 @@ impl Values {
 
 // ---------------------------------------------------------------------------------------------
 // Helpers
-
-/// `max |got − want| / max(1, max |want|)`; infinite if `got` is not finite.
-fn scaled_error(got: &[f64], want: &[f64]) -> f64 {
-    assert_eq!(got.len(), want.len());
-    let scale = want.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-    let worst = got
-        .iter()
-        .zip(want)
-        .map(|(a, b)| {
-            if a.is_finite() {
-                (a - b).abs()
-            } else {
-                f64::INFINITY
-            }
-        })
-        .fold(0.0, f64::max);
-    worst / scale
-}
 
 fn max_abs(v: &[f64]) -> f64 {
     v.iter().fold(0.0f64, |m, x| m.max(x.abs()))

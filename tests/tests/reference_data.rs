@@ -2,6 +2,7 @@
 //! cross-checked with the Robotics Toolbox): for every sample, τ, M, C, C·qd + g, g and both
 //! energies match to 1e-10, scaled as max|a − b| / max(1, max|b|).
 
+use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
 use serde_json::Value;
 
@@ -33,23 +34,6 @@ fn vector<const N: usize>(v: &Value) -> [f64; N] {
 fn matrix<const N: usize>(v: &Value) -> [[f64; N]; N] {
     let a = v.as_array().expect("array");
     core::array::from_fn(|i| vector::<N>(&a[i]))
-}
-
-fn scaled_error(got: &[f64], want: &[f64]) -> f64 {
-    assert_eq!(got.len(), want.len());
-    let scale = want.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-    let worst = got
-        .iter()
-        .zip(want)
-        .map(|(a, b)| {
-            if a.is_finite() {
-                (a - b).abs()
-            } else {
-                f64::INFINITY
-            }
-        })
-        .fold(0.0, f64::max);
-    worst / scale
 }
 
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {

@@ -45,21 +45,7 @@ pub fn all_robots() -> Vec<Robot> {
         .collect()
 }
 
-/// `max|a − b| / max(1, max|b|)` over matching entries (`b` is the reference).
-pub fn scaled_error(a: &[f64], b: &[f64]) -> f64 {
-    assert_eq!(a.len(), b.len(), "length mismatch");
-    if a.iter().chain(b).any(|x| !x.is_finite()) {
-        // `f64::max` would silently drop a NaN.
-        return f64::INFINITY;
-    }
-    let diff = a
-        .iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0_f64, f64::max);
-    let scale = b.iter().map(|y| y.abs()).fold(1.0_f64, f64::max);
-    diff / scale
-}
+pub use dynamics_reference::scaled_error;
 
 /// Scaled error between two dynamic matrices of the same shape.
 pub fn matrix_error(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
