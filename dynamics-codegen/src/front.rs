@@ -323,6 +323,8 @@ pub struct Failure {
     /// The number of joints, where the table was read that far: the fallback expansion then
     /// still implements the trait, so that the user sees these errors and not a cascade.
     pub dof: Option<usize>,
+    /// The runtime crate's path, if `crate = "..."` was read.
+    pub krate: Option<syn::Path>,
 }
 
 /// Parses the derive input into a robot; every error found is returned together.
@@ -398,10 +400,12 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
                 .map(|r| r.dof())
                 .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
                 .filter(|n| *n > 0),
+            krate: attrs.krate,
         }),
         (None, None) => Err(Failure {
             error: syn::Error::new(input.ident.span(), "no robot description"),
             dof: None,
+            krate: attrs.krate,
         }),
     }
 }

@@ -83,10 +83,7 @@ pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) ->
 
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let eq = derive::derive(&parsed.robot);
-    let krate = parsed
-        .krate
-        .as_ref()
-        .map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream);
+    let krate = runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields
         .iter()
@@ -177,7 +174,7 @@ fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let Some(n) = failure.dof else {
         return errors;
     };
-    let krate = quote!(::dynamics_runtime);
+    let krate = runtime_path(failure.krate.as_ref());
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
@@ -191,4 +188,9 @@ fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
             }
         };
     }
+}
+
+/// The runtime crate's path: `crate = "..."` if given, else `::dynamics_runtime`.
+fn runtime_path(krate: Option<&syn::Path>) -> TokenStream {
+    krate.map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream)
 }

@@ -104,3 +104,14 @@ actuator_inertia = 0.05
         Some("0".into())
     );
 }
+
+#[test]
+fn fallback_implements_the_trait_at_the_given_crate_path() {
+    let out = expand(
+        r#"#[dynamics(crate = "my_runtime", gravity = [0, 0, -9.81], dh = [[q, 0, nope, 0]], link(mass = 1))]
+           struct A;"#,
+    );
+    assert!(out.contains("compile_error"), "{out}");
+    assert!(out.contains("my_runtime :: Dynamics < 1usize >"), "{out}");
+    assert!(out.contains("unreachable"), "{out}");
+}
