@@ -1,0 +1,282 @@
+//! Sine and cosine of one argument together, for `f64` and `f32`: one range reduction shared
+//! by both, two polynomial kernels evaluated side by side, and a branch-free choice of quadrant (by a
+//! table of 0 and ±1 coefficients).
+//!
+//! `x = k·π/2 + r` with `k` the integer nearest `x·2/π` and `|r| ≤ π/4` (a hair more when
+//! `x·2/π` rounds across a half-integer, which the kernels tolerate). Then `sin x` and `cos x`
+//! are `±sin r` or `±cos r`, chosen by `k mod 4`.
+//!
+//! **Reduction (Cody-Waite).** π/2 is split into parts `P1 + P2 + … ≈ π/2` whose leading
+//! parts have so few significant bits that `k·P1`, `k·P2`, … are exact for every `k` of the
+//! fast range; `x − k·P1` is then exact too (Sterbenz: `x` and `k·P1` are within a factor of
+//! two). The rounding error of the next subtraction is recovered exactly with Fast2Sum or
+//! TwoSum, so `r` comes out as an unevaluated sum `r + r_lo`. The parts, the bound and the
+//! exactness conditions were checked with exact rational arithmetic over every `k` of the fast
+//! range, at the double nearest each `k·π/2` (where `|r|` is smallest; the smallest of all is
+//! 2^-60.5, at `x ≈ 45.55`, for `f64` and 2^-27.8, at `x ≈ 252.9`, for `f32`): the reduced
+//! argument's relative error is below 2^-61 for `f64` and 2^-32 for `f32`.
+//!
+//! * `f64`: parts of 35, 35 and 53 bits, fast for `|x| ≤ 2^16` (`|k| < 2^16`).
+//! * `f32`: parts of 12, 12, 12 and 22 bits, fast for `|x| ≤ 2^12` (`|k| < 2^12`), computed in
+//!   `f32` throughout, for single-precision FPUs without `f64` hardware.
+//!
+//! **Kernels.** The minimax polynomials of fdlibm on [−π/4, π/4]: for `f64`, those of Sun's
+//! `k_sin.c` and `k_cos.c` (fdlibm 5.3, 1993; both accurate to 2^-58), for `f32`, those of
+//! FreeBSD's `k_sinf.c` and `k_cosf.c` (Bruce D. Evans, 2005), rounded to `f32`. Both are in
+//! `z = r²`, evaluated in Estrin form on shared powers of `z`, and carry `r_lo` to first order:
+//! `sin(r + r_lo) ≈ sin r + r_lo·(1 − z/2)`, `cos(r + r_lo) ≈ cos r − r·r_lo`.
+//! `cos r = 1 − z/2 + …` adds the rounding error of `1 − z/2` back in (it is exact by Fast2Sum),
+//! which keeps `cos` near π/4 within an ulp.
+//!
+//! **Outside the fast range.** Tiny arguments (`|x| < 2^-27`, `2^-12` for `f32`) return
+//! `(x, 1)`, which is the correctly rounded result, keeps the sign of `±0` and never squares a
+//! subnormal. Larger arguments than the bound, `±∞` and NaN go to `libm` (NaN in, NaN out).
+//!
+//! Measured on x86-64 (AMD EPYC, glibc 2.35): the error against correctly rounded values
+//! (mpmath) is at most 0.76 ulp for `f64` (200,000 random arguments of the fast range; 2.7 %
+//! of results differ from glibc's, by 1 ulp) and 0.83 ulp for `f32` (every `f32` of the fast
+//! range, against the `f64` result); see `tests/trig.rs`. Cost: 71 instructions a pair for
+//! `f64` (glibc's `sincos`: 99), about 10 ns against 12 ns; glibc's `sincosf` (which computes
+//! in `f64`) remains faster than this `f32` path on such a machine.
+
+// Constants are written as published (kernels) or as exact decimal expansions (parts of π/2).
+#![allow(clippy::excessive_precision)]
+
+/// `1.5·2^52`: adding it rounds a double of magnitude below 2^51 to an integer, which lands
+/// in the low bits of the sum's representation (`2^51 + k`, so the two lowest bits are
+/// `k mod 4`).
+const SHIFT_F64: f64 = 6_755_399_441_055_744.0;
+/// `1.5·2^23`, the same for `f32`.
+const SHIFT_F32: f32 = 12_582_912.0;
+
+/// `f64`: below this, `(x, 1)` is the correctly rounded result (`x³/6` and `x²/2` are under
+/// half an ulp of `x` and of 1).
+const TINY_F64: f64 = 7.450_580_596_923_828e-9; // 2^-27
+/// `f64`: the fast path's bound, 2^16 (`|k| ≤ 41722 < 2^16`).
+const BOUND_F64: f64 = 65_536.0;
+/// `f32`: 2^-12, as [`TINY_F64`].
+const TINY_F32: f32 = 2.441_406_25e-4;
+/// `f32`: the fast path's bound, 2^12 (`|k| ≤ 2608 < 2^12`).
+const BOUND_F32: f32 = 4_096.0;
+
+// π/2 = P1 + P2 + P3 + 5.3e-40 for f64. P1 and P2 have 35 significant bits, so k·P1 and k·P2
+// are exact for |k| < 2^18.
+const P1_F64: f64 = 1.570_796_326_792_333_3; // 0x1.921fb5444p+0
+const P2_F64: f64 = 2.563_344_151_583_955_8e-12; // 0x1.68c234c4cp-39
+const P3_F64: f64 = 1.056_299_906_698_742_8e-23; // 0x1.98a2e03707345p-77
+
+// π/2 = P1 + P2 + P3 + P4 + 2.0e-21 for f32. P1, P2 and P3 have 12 significant bits, so their
+// products with |k| < 2^12 are exact.
+const P1_F32: f32 = 1.570_800_781_25; // 0x1.922p+0
+const P2_F32: f32 = -4.453_584_551_811_218e-6; // -0x1.2aep-18
+const P3_F32: f32 = -8.706_138_032_721_356e-10; // -0x1.deap-31
+const P4_F32: f32 = 6.223_371_969_669_989e-14; // 0x1.184698p-44
+
+// fdlibm k_sin.c: sin r ≈ r + S1·r³ + … + S6·r¹³ on [−π/4, π/4].
+const S1_F64: f64 = -1.666_666_666_666_663_243_48e-1;
+const S2_F64: f64 = 8.333_333_333_322_489_461_24e-3;
+const S3_F64: f64 = -1.984_126_982_985_794_931_34e-4;
+const S4_F64: f64 = 2.755_731_370_707_006_767_89e-6;
+const S5_F64: f64 = -2.505_076_025_340_686_341_95e-8;
+const S6_F64: f64 = 1.589_690_995_211_550_102_21e-10;
+// fdlibm k_cos.c: cos r ≈ 1 − r²/2 + C1·r⁴ + … + C6·r¹² on [−π/4, π/4].
+const C1_F64: f64 = 4.166_666_666_666_660_190_37e-2;
+const C2_F64: f64 = -1.388_888_888_887_410_957_49e-3;
+const C3_F64: f64 = 2.480_158_728_947_672_941_78e-5;
+const C4_F64: f64 = -2.755_731_435_139_066_330_35e-7;
+const C5_F64: f64 = 2.087_572_321_298_174_827_90e-9;
+const C6_F64: f64 = -1.135_964_755_778_819_482_65e-11;
+
+// FreeBSD k_sinf.c (|sin(x)/x − s(x)| < 2^-37.5) and k_cosf.c (|cos(x) − c(x)| < 2^-34.1),
+// rounded to f32; their C0 = −0.4999999973 rounds to −1/2.
+#[allow(clippy::cast_possible_truncation)]
+mod coefficients_f32 {
+    pub(super) const S1: f32 = -0.166_666_666_416_265_235_595_f64 as f32;
+    pub(super) const S2: f32 = 0.008_333_329_385_889_463_175_6_f64 as f32;
+    pub(super) const S3: f32 = -0.000_198_393_348_360_966_317_347_f64 as f32;
+    pub(super) const S4: f32 = 0.000_002_718_311_493_989_821_906_4_f64 as f32;
+    pub(super) const C1: f32 = 0.041_666_623_323_739_063_189_4_f64 as f32;
+    pub(super) const C2: f32 = -0.001_388_676_377_460_992_946_92_f64 as f32;
+    pub(super) const C3: f32 = 0.000_024_390_448_796_277_409_065_4_f64 as f32;
+}
+use coefficients_f32::{
+    C1 as C1_F32, C2 as C2_F32, C3 as C3_F32, S1 as S1_F32, S2 as S2_F32, S3 as S3_F32,
+    S4 as S4_F32,
+};
+
+/// `(sin x, cos x)` for `f64`.
+#[inline(always)]
+pub(crate) fn sin_cos_f64(x: f64) -> (f64, f64) {
+    let ax = x.abs();
+    if (TINY_F64..=BOUND_F64).contains(&ax) {
+        fast_f64(x)
+    } else {
+        slow_f64(x)
+    }
+}
+
+/// `(sin x, cos x)` for `f32`.
+#[inline(always)]
+pub(crate) fn sin_cos_f32(x: f32) -> (f32, f32) {
+    let ax = x.abs();
+    if (TINY_F32..=BOUND_F32).contains(&ax) {
+        fast_f32(x)
+    } else {
+        slow_f32(x)
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn slow_f64(x: f64) -> (f64, f64) {
+    if x.abs() < TINY_F64 {
+        (x, 1.0)
+    } else {
+        libm::sincos(x)
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn slow_f32(x: f32) -> (f32, f32) {
+    if x.abs() < TINY_F32 {
+        (x, 1.0)
+    } else {
+        libm::sincosf(x)
+    }
+}
+
+#[inline(always)]
+fn fast_f64(x: f64) -> (f64, f64) {
+    let shifted = x * core::f64::consts::FRAC_2_PI + SHIFT_F64;
+    #[allow(clippy::cast_possible_truncation)]
+    let quadrant = shifted.to_bits() as u32;
+    let k = shifted - SHIFT_F64;
+
+    // x − k·P1, k·P2 are exact. Their difference is exact below 2^-20 (both lie on the grid
+    // 2^-73); above, |x − k·P1| > |k·P2|, so Fast2Sum recovers its rounding error `e`. Then
+    // |r| > 400·|k·P3| over the whole range, so the second Fast2Sum is valid too. `e` goes into
+    // `r_lo` rather than `r`, off the critical path (|r_lo| stays below an ulp of `r`).
+    let a = x - k * P1_F64;
+    let b = k * P2_F64;
+    let c = k * P3_F64;
+    let s = a - b;
+    let e = (a - s) - b;
+    let r = s - c;
+    let r_lo = ((s - r) - c) + e;
+
+    let z = r * r;
+    let z2 = z * z;
+    let z4 = z2 * z2;
+    let sin_poly = (S1_F64 + z * S2_F64) + z2 * (S3_F64 + z * S4_F64) + z4 * (S5_F64 + z * S6_F64);
+    let cos_poly = (C1_F64 + z * C2_F64) + z2 * (C3_F64 + z * C4_F64) + z4 * (C5_F64 + z * C6_F64);
+    let half_z = 0.5 * z;
+    let w = 1.0 - half_z;
+    let sin_r = r + ((r * z) * sin_poly + r_lo * w);
+    let cos_r = w + (((1.0 - w) - half_z) + (z2 * cos_poly - r * r_lo));
+
+    quadrant_f64(quadrant, sin_r, cos_r)
+}
+
+#[inline(always)]
+fn fast_f32(x: f32) -> (f32, f32) {
+    let shifted = x * core::f32::consts::FRAC_2_PI + SHIFT_F32;
+    let quadrant = shifted.to_bits();
+    let k = shifted - SHIFT_F32;
+
+    // x − k·P1, k·P2, k·P3 are exact. a − b is exact below 2^-5 (grid 2^-29), and above it
+    // |a| > |b|: Fast2Sum. s − c has no such margin: TwoSum. |r| > 400·|k·P4|: Fast2Sum. The
+    // errors go into `r_lo`, off the critical path.
+    let a = x - k * P1_F32;
+    let b = k * P2_F32;
+    let c = k * P3_F32;
+    let d = k * P4_F32;
+    let s = a - b;
+    let e1 = (a - s) - b;
+    let t = s - c;
+    let t_s = t - s;
+    let e2 = (s - (t - t_s)) - (c + t_s);
+    let r = t - d;
+    let r_lo = ((t - r) - d) + (e1 + e2);
+
+    let z = r * r;
+    let z2 = z * z;
+    let sin_poly = (S1_F32 + z * S2_F32) + z2 * (S3_F32 + z * S4_F32);
+    let cos_poly = (C1_F32 + z * C2_F32) + z2 * C3_F32;
+    let half_z = 0.5 * z;
+    let w = 1.0 - half_z;
+    let sin_r = r + ((r * z) * sin_poly + r_lo * w);
+    let cos_r = w + (((1.0 - w) - half_z) + (z2 * cos_poly - r * r_lo));
+
+    quadrant_f32(quadrant, sin_r, cos_r)
+}
+
+/// `sin(x)` and `cos(x)` as combinations of `sin r` and `cos r` with coefficients 0 and ±1,
+/// indexed by `k mod 4`: `sin(r + kπ/2) = T[k]·sin r + T[k + 3]·cos r` and
+/// `cos(r + kπ/2) = T[k + 1]·sin r + T[k]·cos r`. The products and the sum are exact (one
+/// term is ±0, the other is never 0 on the fast path), and no branch depends on `k`.
+const QUADRANT_F64: [f64; 8] = [1.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0];
+/// [`QUADRANT_F64`] for `f32`.
+const QUADRANT_F32: [f32; 8] = [1.0, 0.0, -1.0, 0.0, 1.0, 0.0, -1.0, 0.0];
+
+#[inline(always)]
+fn quadrant_f64(k: u32, sin_r: f64, cos_r: f64) -> (f64, f64) {
+    let k = (k & 3) as usize;
+    let t = &QUADRANT_F64;
+    (
+        t[k] * sin_r + t[k + 3] * cos_r,
+        t[k + 1] * sin_r + t[k] * cos_r,
+    )
+}
+
+#[inline(always)]
+fn quadrant_f32(k: u32, sin_r: f32, cos_r: f32) -> (f32, f32) {
+    let k = (k & 3) as usize;
+    let t = &QUADRANT_F32;
+    (
+        t[k] * sin_r + t[k + 3] * cos_r,
+        t[k + 1] * sin_r + t[k] * cos_r,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Significant bits of a finite, nonzero `f64` (its `f32`s are exactly `f64`s).
+    fn significant_bits(x: f64) -> u32 {
+        let mantissa = (x.to_bits() & ((1 << 52) - 1)) | (1 << 52);
+        53 - mantissa.trailing_zeros()
+    }
+
+    #[test]
+    fn parts_of_half_pi_are_the_analysed_ones() {
+        // The bit patterns the exhaustive analysis used.
+        assert_eq!(P1_F64.to_bits(), 0x3FF9_21FB_5444_0000);
+        assert_eq!(P2_F64.to_bits(), 0x3D86_8C23_4C4C_0000);
+        assert_eq!(P3_F64.to_bits(), 0x3B29_8A2E_0370_7345);
+        assert_eq!(P1_F32.to_bits(), 0x3FC9_1000);
+        assert_eq!(P2_F32.to_bits(), 0xB695_7000);
+        assert_eq!(P3_F32.to_bits(), 0xB06F_5000);
+        assert_eq!(P4_F32.to_bits(), 0x298C_234C);
+        // k·P is exact for |k| < 2^16 (f64) and 2^12 (f32).
+        assert!(significant_bits(P1_F64) + 16 <= 53 && significant_bits(P2_F64) + 16 <= 53);
+        for p in [P1_F32, P2_F32, P3_F32] {
+            assert!(significant_bits(f64::from(p)) + 12 <= 24);
+        }
+        // The largest k of the fast range stays below those limits.
+        assert!((BOUND_F64 * core::f64::consts::FRAC_2_PI).round() < 65_536.0);
+        assert!((BOUND_F32 * core::f32::consts::FRAC_2_PI).round() < 4_096.0);
+        // And the sum is π/2 to the working precision.
+        assert_eq!(P1_F64 + P2_F64, core::f64::consts::FRAC_PI_2);
+        assert_eq!(P1_F32 + P2_F32 + P3_F32, core::f32::consts::FRAC_PI_2);
+    }
+
+    #[test]
+    fn thresholds_are_powers_of_two() {
+        assert_eq!(TINY_F64, 2f64.powi(-27));
+        assert_eq!(TINY_F32, 2f32.powi(-12));
+        assert_eq!(SHIFT_F64, 1.5 * 2f64.powi(52));
+        assert_eq!(SHIFT_F32, 1.5 * 2f32.powi(23));
+    }
+}
