@@ -1,9 +1,13 @@
 //! Emission: a set of graph outputs becomes one straight-line Rust function body.
 //!
-//! Only the nodes the outputs need are emitted, in the arena's order (children first). Nodes
-//! that depend only on robot parameters are hoisted to the top, then each needed joint's sine
-//! and cosine are computed once, then the rest. A node used once is written inline in its
-//! user; a node used more often gets a `let tN`. `a + (−b)` is written `a − b`.
+//! Only the nodes the outputs need are emitted, in the arena's order (children first). First
+//! come the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
+//! (`let p_m2: T = param(self.m2);`) and the nodes that depend on them alone; then each needed
+//! joint's sine and cosine, computed once (`let (s1, c1) = T::sin_cos(q[0]);`); then the rest.
+//! A node used once is written inline in its user; a node used more often gets a `let tN`,
+//! numbered in order of appearance; each output element gets a name saying what it is
+//! (`m1_2` for M₁₂, `tau3` for τ₃). `a + (−b)` is written `a − b`, and parentheses appear
+//! only where precedence or the order of evaluation needs them.
 
 use crate::derive::Equations;
 use crate::symbolic::{Graph, Node, NodeId, Var};
@@ -75,10 +79,26 @@ fn local(name: &str) -> proc_macro2::Ident {
     proc_macro2::Ident::new(name, Span::mixed_site())
 }
 
-/// Emits the body of a function computing `shape` from `eq`, and counts its operations.
+/// Emits the body of a function computing `shape` from `eq`, and counts its operations. Its
+/// output elements are named after `output` (`m` gives `m1_2`; `tau` gives `tau3`).
 #[must_use]
-pub fn body(eq: &Equations, shape: &Shape, ctx: &Context) -> Body {
-    Emitter::new(eq, ctx).run(shape)
+pub fn body(eq: &Equations, shape: &Shape, output: &str, ctx: &Context) -> Body {
+    Emitter::new(eq, ctx).run(shape, output)
+}
+
+/// Where an expression is written, which decides whether it needs parentheses.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Place {
+    /// A statement's right-hand side or an array element.
+    Top,
+    /// Left of `+` or `−`.
+    AddLeft,
+    /// Right of `+` or `−`.
+    AddRight,
+    /// Left of `*`.
+    MulLeft,
+    /// Right of `*` or `/`, or under a unary minus.
+    MulRight,
 }
 
 struct Emitter<'a> {
@@ -87,7 +107,9 @@ struct Emitter<'a> {
     ctx: &'a Context<'a>,
     uses: Vec<u32>,
     needed: Vec<bool>,
-    bound: Vec<bool>,
+    /// The local each bound node (and each constant) is known by.
+    names: Vec<Option<proc_macro2::Ident>>,
+    temporaries: usize,
     ops: OpCount,
 }
 
@@ -100,7 +122,8 @@ impl<'a> Emitter<'a> {
             ctx,
             uses: vec![0; n],
             needed: vec![false; n],
-            bound: vec![false; n],
+            names: vec![None; n],
+            temporaries: 0,
             ops: OpCount::default(),
         }
     }
@@ -150,8 +173,15 @@ impl<'a> Emitter<'a> {
         matches!(self.graph.node(id), Node::Var(_) | Node::Const(_))
     }
 
+    /// A constant other than 0 and 1, which gets its own `let kN`.
+    fn is_named_constant(&self, id: NodeId) -> bool {
+        matches!(self.graph.node(id), Node::Const(c) if !c.is_zero() && !c.is_one())
+    }
+
     fn leaf(&self, id: NodeId) -> TokenStream {
-        let krate = self.ctx.krate;
+        if let Some(name) = &self.names[id.index()] {
+            return quote!(#name);
+        }
         match self.graph.node(id) {
             Node::Const(c) if c.is_zero() => quote!(T::ZERO),
             Node::Const(c) if c.is_one() => quote!(T::ONE),
@@ -167,23 +197,23 @@ impl<'a> Emitter<'a> {
                 } else if x.is_infinite() {
                     quote!(::core::f64::NEG_INFINITY)
                 } else {
-                    let lit = proc_macro2::Literal::f64_suffixed(x);
+                    let lit = proc_macro2::Literal::f64_unsuffixed(x);
                     quote!(#lit)
                 };
-                quote!(<T as #krate::__private::Real>::from_f64(#value))
+                quote!(T::from_f64(#value))
             }
             Node::Var(Var::Q(i)) => {
-                let i = usize::from(i);
+                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
                 let q = local("q");
                 quote!(#q[#i])
             }
             Node::Var(Var::Qd(i)) => {
-                let i = usize::from(i);
+                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
                 let qd = local("qd");
                 quote!(#qd[#i])
             }
             Node::Var(Var::Qdd(i)) => {
-                let i = usize::from(i);
+                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
                 let qdd = local("qdd");
                 quote!(#qdd[#i])
             }
@@ -203,74 +233,118 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// The expression of a node: its name if bound, else written out.
-    fn expr(&mut self, id: NodeId) -> TokenStream {
+    /// A node's expression at `place`: its name if it has one, else written out, in
+    /// parentheses where the place needs them.
+    fn expr(&mut self, id: NodeId, place: Place) -> TokenStream {
         if self.is_leaf(id) {
             return self.leaf(id);
         }
-        if self.bound[id.index()] {
-            let t = local(&format!("t{}", id.0));
-            return quote!(#t);
+        if let Some(name) = &self.names[id.index()] {
+            return quote!(#name);
         }
-        self.define(id)
-    }
-
-    /// An operand, parenthesized when it is written out.
-    fn operand(&mut self, id: NodeId) -> TokenStream {
-        let e = self.expr(id);
-        if self.is_leaf(id) || self.bound[id.index()] {
-            e
-        } else {
+        let wrap = match self.graph.node(id) {
+            Node::Add(..) => place != Place::Top && place != Place::AddLeft,
+            Node::Mul(..) | Node::Recip(_) => place == Place::MulRight,
+            Node::Neg(_) => place == Place::MulRight || place == Place::AddRight,
+            _ => false,
+        };
+        let e = self.define(id);
+        if wrap {
             quote!((#e))
+        } else {
+            e
         }
     }
 
     fn define(&mut self, id: NodeId) -> TokenStream {
-        let krate = self.ctx.krate;
         match self.graph.node(id) {
             Node::Add(a, b) => {
                 self.ops.add += 1;
                 if let Some((a, x)) = self.as_sub(a, b) {
-                    let (a, x) = (self.operand(a), self.operand(x));
+                    let (a, x) = (self.expr(a, Place::AddLeft), self.expr(x, Place::AddRight));
                     quote!(#a - #x)
                 } else {
-                    let (a, b) = (self.operand(a), self.operand(b));
+                    let (a, b) = (self.expr(a, Place::AddLeft), self.expr(b, Place::AddRight));
                     quote!(#a + #b)
                 }
             }
             Node::Mul(a, b) => {
                 self.ops.mul += 1;
-                let (a, b) = (self.operand(a), self.operand(b));
+                let (a, b) = (self.expr(a, Place::MulLeft), self.expr(b, Place::MulRight));
                 quote!(#a * #b)
             }
             Node::Neg(a) => {
                 self.ops.neg += 1;
-                let a = self.operand(a);
+                let a = self.expr(a, Place::MulRight);
                 quote!(-#a)
             }
             Node::Recip(a) => {
                 self.ops.div += 1;
-                let a = self.operand(a);
+                let a = self.expr(a, Place::MulRight);
                 quote!(T::ONE / #a)
             }
             Node::Sin(a) => {
                 self.ops.trig += 1;
-                let a = self.expr(a);
-                quote!(<T as #krate::__private::Real>::sin(#a))
+                let a = self.expr(a, Place::Top);
+                quote!(T::sin(#a))
             }
             Node::Cos(a) => {
                 self.ops.trig += 1;
-                let a = self.expr(a);
-                quote!(<T as #krate::__private::Real>::cos(#a))
+                let a = self.expr(a, Place::Top);
+                quote!(T::cos(#a))
             }
             Node::Const(_) | Node::Var(_) => self.leaf(id),
         }
     }
 
-    fn run(mut self, shape: &Shape) -> Body {
+    /// `let name = expr;` for node `id`, which from then on is read by its name.
+    fn bind(&mut self, id: NodeId, name: proc_macro2::Ident) -> TokenStream {
+        let e = self.define(id);
+        self.names[id.index()] = Some(name.clone());
+        quote!(let #name = #e;)
+    }
+
+    fn temporary(&mut self) -> proc_macro2::Ident {
+        self.temporaries += 1;
+        local(&format!("t{}", self.temporaries))
+    }
+
+    /// The names of the output elements, by node; an element equal to an earlier one (M's
+    /// lower triangle) keeps the earlier name.
+    fn output_names(&self, shape: &Shape, output: &str) -> Vec<(NodeId, String)> {
+        let mut named: Vec<(NodeId, String)> = Vec::new();
+        let mut add = |id: NodeId, name: String| {
+            if !self.is_leaf(id) && !named.iter().any(|(n, _)| *n == id) {
+                named.push((id, name));
+            }
+        };
+        match shape {
+            Shape::Scalar(id) => add(*id, output.to_owned()),
+            Shape::Vector(v) => {
+                for (i, &id) in v.iter().enumerate() {
+                    add(id, format!("{output}{}", i + 1));
+                }
+            }
+            Shape::Matrix(m) => {
+                for (i, row) in m.iter().enumerate() {
+                    for (j, &id) in row.iter().enumerate() {
+                        add(id, format!("{output}{}_{}", i + 1, j + 1));
+                    }
+                }
+            }
+        }
+        named
+    }
+
+    fn run(mut self, shape: &Shape, output: &str) -> Body {
         let krate = self.ctx.krate;
         let outputs = shape.outputs();
         self.mark(&outputs);
+        let mut output_names = self.output_names(shape, output);
+        // A scalar result is returned as an expression, not bound.
+        if matches!(shape, Shape::Scalar(_)) {
+            output_names.clear();
+        }
         // A node depends on the state if it reads q, qd or qdd.
         let n = self.graph.len();
         let mut state = vec![false; n];
@@ -284,71 +358,51 @@ impl<'a> Emitter<'a> {
         let mut prelude = Vec::new();
         let mut statements = Vec::new();
         let mut fields_read = Vec::new();
+        // Constants, once each.
+        let mut constants = 0;
+        for (id, _) in self.graph.nodes() {
+            if self.needed[id.index()] && self.is_named_constant(id) {
+                let value = self.leaf(id);
+                constants += 1;
+                let k = local(&format!("k{constants}"));
+                prelude.push(quote!(let #k: T = #value;));
+                self.names[id.index()] = Some(k);
+            }
+        }
         // Parameters, read once.
+        let param = local("param");
+        let mut params = Vec::new();
         for (id, node) in self.graph.nodes() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
                     fields_read.push(usize::from(k));
                     let name = self.leaf(id);
                     let field = &self.ctx.fields[usize::from(k)];
-                    prelude.push(quote!(let #name: T = #krate::__private::param::<T, _>(#field);));
+                    params.push(quote!(let #name: T = #param(#field);));
                 }
             }
         }
-        let bind = |me: &Self, id: NodeId| {
+        if !params.is_empty() {
+            prelude.push(quote!(use #krate::__private::param as #param;));
+            prelude.extend(params);
+        }
+        let needs_name = |me: &Self, id: NodeId| {
             !me.is_leaf(id) && (me.uses[id.index()] > 1 || outputs.contains(&id))
         };
         for phase_state in [false, true] {
             if phase_state {
-                // Sines and cosines of the joint angles, once each.
-                for i in 0..self.eq.dof {
-                    let i16 = u16::try_from(i).unwrap_or(u16::MAX);
-                    let find = |v: Var| {
-                        self.graph
-                            .nodes()
-                            .find(|(id, node)| *node == Node::Var(v) && self.needed[id.index()])
-                            .map(|(id, _)| id)
-                    };
-                    let (s, c) = (find(Var::SinQ(i16)), find(Var::CosQ(i16)));
-                    if s.is_none() && c.is_none() {
-                        continue;
-                    }
-                    let q = local("q");
-                    let angle = match self.eq.angle_offsets[i] {
-                        Some(off) => {
-                            let o = self.operand(off);
-                            quote!(#q[#i] + #o)
-                        }
-                        None => quote!(#q[#i]),
-                    };
-                    let sn = local(&format!("s{}", i + 1));
-                    let cn = local(&format!("c{}", i + 1));
-                    let real = quote!(<T as #krate::__private::Real>);
-                    statements.push(match (s, c) {
-                        (Some(_), Some(_)) => {
-                            self.ops.trig += 2;
-                            quote!(let (#sn, #cn) = #real::sin_cos(#angle);)
-                        }
-                        (Some(_), None) => {
-                            self.ops.trig += 1;
-                            quote!(let #sn = #real::sin(#angle);)
-                        }
-                        _ => {
-                            self.ops.trig += 1;
-                            quote!(let #cn = #real::cos(#angle);)
-                        }
-                    });
-                }
+                self.sines_and_cosines(&mut statements);
             }
             for (id, _) in self.graph.nodes() {
                 let i = id.index();
-                if !self.needed[i] || state[i] != phase_state || !bind(&self, id) {
+                if !self.needed[i] || state[i] != phase_state || !needs_name(&self, id) {
                     continue;
                 }
-                let e = self.define(id);
-                self.bound[i] = true;
-                let t = local(&format!("t{}", id.0));
-                let line = quote!(let #t = #e;);
+                let name = match output_names.iter().find(|(n, _)| *n == id) {
+                    Some((_, name)) => local(name),
+                    None => self.temporary(),
+                };
+                let line = self.bind(id, name);
                 if phase_state {
                     statements.push(line);
                 } else {
@@ -357,16 +411,18 @@ impl<'a> Emitter<'a> {
             }
         }
         let result = match shape {
-            Shape::Scalar(id) => self.expr(*id),
+            Shape::Scalar(id) => self.expr(*id, Place::Top),
             Shape::Vector(v) => {
-                let items: Vec<TokenStream> = v.iter().map(|&id| self.expr(id)).collect();
+                let items: Vec<TokenStream> =
+                    v.iter().map(|&id| self.expr(id, Place::Top)).collect();
                 quote!([#(#items),*])
             }
             Shape::Matrix(m) => {
                 let rows: Vec<TokenStream> = m
                     .iter()
                     .map(|r| {
-                        let items: Vec<TokenStream> = r.iter().map(|&id| self.expr(id)).collect();
+                        let items: Vec<TokenStream> =
+                            r.iter().map(|&id| self.expr(id, Place::Top)).collect();
                         quote!([#(#items),*])
                     })
                     .collect();
@@ -377,6 +433,48 @@ impl<'a> Emitter<'a> {
             tokens: quote!(#(#prelude)* #(#statements)* #result),
             ops: self.ops,
             fields_read,
+        }
+    }
+
+    /// `let (s1, c1) = T::sin_cos(q[0]);` for each joint whose sine or cosine is needed.
+    fn sines_and_cosines(&mut self, statements: &mut Vec<TokenStream>) {
+        for i in 0..self.eq.dof {
+            let i16 = u16::try_from(i).unwrap_or(u16::MAX);
+            let find = |v: Var| {
+                self.graph
+                    .nodes()
+                    .find(|(id, node)| *node == Node::Var(v) && self.needed[id.index()])
+                    .map(|(id, _)| id)
+            };
+            let (s, c) = (find(Var::SinQ(i16)), find(Var::CosQ(i16)));
+            if s.is_none() && c.is_none() {
+                continue;
+            }
+            let q = local("q");
+            let index = proc_macro2::Literal::usize_unsuffixed(i);
+            let angle = match self.eq.angle_offsets[i] {
+                Some(off) => {
+                    let o = self.expr(off, Place::AddRight);
+                    quote!(#q[#index] + #o)
+                }
+                None => quote!(#q[#index]),
+            };
+            let sn = local(&format!("s{}", i + 1));
+            let cn = local(&format!("c{}", i + 1));
+            statements.push(match (s, c) {
+                (Some(_), Some(_)) => {
+                    self.ops.trig += 2;
+                    quote!(let (#sn, #cn) = T::sin_cos(#angle);)
+                }
+                (Some(_), None) => {
+                    self.ops.trig += 1;
+                    quote!(let #sn = T::sin(#angle);)
+                }
+                _ => {
+                    self.ops.trig += 1;
+                    quote!(let #cn = T::cos(#angle);)
+                }
+            });
         }
     }
 }

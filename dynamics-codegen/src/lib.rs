@@ -13,12 +13,14 @@
 //! 3. [`emit`]: each output (`M`, `C`, `g`, `τ`, …) becomes a straight-line function body.
 
 pub mod algo;
+pub mod check;
 pub mod derive;
 pub mod emit;
 pub mod front;
 pub mod model;
 pub mod numeric;
 pub mod poly;
+pub mod readable;
 pub mod symbolic;
 
 use proc_macro2::TokenStream;
@@ -57,20 +59,25 @@ pub struct Method {
 pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Vec<Method> {
     use emit::Shape;
     let ctx = emit::Context { krate, fields };
-    let shapes: [(&'static str, Shape); 8] = [
-        ("mass_matrix", Shape::Matrix(&eq.mass)),
-        ("coriolis_matrix", Shape::Matrix(&eq.coriolis)),
-        ("coriolis_torques", Shape::Vector(&eq.coriolis_torques)),
-        ("gravity_torques", Shape::Vector(&eq.gravity)),
-        ("bias_torques", Shape::Vector(&eq.bias)),
-        ("inverse_dynamics", Shape::Vector(&eq.tau)),
-        ("kinetic_energy", Shape::Scalar(eq.kinetic_energy)),
-        ("potential_energy", Shape::Scalar(eq.potential_energy)),
+    // Each method with the name of its output elements (`m1_2`, `tau3`).
+    let shapes: [(&'static str, &str, Shape); 8] = [
+        ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
+        ("coriolis_matrix", "cor", Shape::Matrix(&eq.coriolis)),
+        (
+            "coriolis_torques",
+            "cqd",
+            Shape::Vector(&eq.coriolis_torques),
+        ),
+        ("gravity_torques", "g", Shape::Vector(&eq.gravity)),
+        ("bias_torques", "h", Shape::Vector(&eq.bias)),
+        ("inverse_dynamics", "tau", Shape::Vector(&eq.tau)),
+        ("kinetic_energy", "k", Shape::Scalar(eq.kinetic_energy)),
+        ("potential_energy", "p", Shape::Scalar(eq.potential_energy)),
     ];
     shapes
         .into_iter()
-        .map(|(name, shape)| {
-            let b = emit::body(eq, &shape, &ctx);
+        .map(|(name, output, shape)| {
+            let b = emit::body(eq, &shape, output, &ctx);
             Method {
                 name,
                 body: b.tokens,
@@ -127,8 +134,10 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     }
 }
 
-/// One method of the `Dynamics` impl with the given body.
-fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
+/// One method of the `Dynamics` impl with the given body (also used by the command-line
+/// tool's `emit`).
+#[must_use]
+pub fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
     let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
     let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
     let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());

@@ -70,6 +70,12 @@ impl Poly {
         self.terms.is_empty()
     }
 
+    /// The terms in canonical order: each monomial (variables with exponents) and its
+    /// coefficient.
+    pub fn terms(&self) -> impl Iterator<Item = (&[(Sym, u32)], Number)> + '_ {
+        self.terms.iter().map(|(m, c)| (m.as_slice(), *c))
+    }
+
     fn add_term(&mut self, m: Monomial, c: Number) {
         let entry = self.terms.entry(m).or_insert(Number::ZERO);
         *entry = entry.add(c);

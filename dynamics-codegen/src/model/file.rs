@@ -5,11 +5,72 @@
 use super::{parse_value, Convention, Joint, JointKind, Robot, Spring, Value};
 use serde::Deserialize;
 
+/// A value in a description file: a number, or a string holding a value (`"90 deg"`). It is
+/// read and checked while the file is parsed, so that its errors carry a line and column.
+struct FileValue(Value);
+
+impl<'de> Deserialize<'de> for FileValue {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(ValueVisitor)
+    }
+}
+
+struct ValueVisitor;
+
+impl serde::de::Visitor<'_> for ValueVisitor {
+    type Value = FileValue;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a number, or a string holding a value such as \"90 deg\" or \"m * l^2 / 12\"")
+    }
+
+    fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<FileValue, E> {
+        if x.is_finite() {
+            Ok(FileValue(Value::from_f64(x)))
+        } else {
+            Err(E::custom(format!("{x} is not a finite number")))
+        }
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileValue, E> {
+        Ok(FileValue(Value::Num(crate::symbolic::Number::int(x))))
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileValue, E> {
+        match i64::try_from(x) {
+            Ok(x) => self.visit_i64(x),
+            #[allow(clippy::cast_precision_loss)]
+            Err(_) => self.visit_f64(x as f64),
+        }
+    }
+
+    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<FileValue, E> {
+        let v = parse_value(text).map_err(E::custom)?;
+        if v.joint_occurrences() > 0 {
+            return Err(E::custom(
+                "the joint variable `q` has no place in a description file; `theta` (revolute) \
+                 or `d` (prismatic) is the offset added to it",
+            ));
+        }
+        if v.exact().is_some_and(|n| !n.to_f64().is_finite()) {
+            return Err(E::custom(format!("`{text}` is not a finite number")));
+        }
+        Ok(FileValue(v))
+    }
+}
+
 #[derive(Deserialize)]
-#[serde(untagged)]
-enum FileValue {
-    Number(f64),
-    Text(String),
+#[serde(rename_all = "lowercase")]
+enum FileConvention {
+    Standard,
+    Modified,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum FileKind {
+    Revolute,
+    Prismatic,
 }
 
 #[derive(Deserialize)]
@@ -21,7 +82,7 @@ struct FileRobot {
     #[allow(dead_code)]
     description: Option<String>,
     #[serde(default)]
-    convention: Option<String>,
+    convention: Option<FileConvention>,
     gravity: [FileValue; 3],
     joints: Vec<FileJoint>,
 }
@@ -30,7 +91,7 @@ struct FileRobot {
 #[serde(deny_unknown_fields)]
 struct FileJoint {
     #[serde(rename = "type")]
-    kind: String,
+    kind: FileKind,
     #[serde(default)]
     theta: Option<FileValue>,
     #[serde(default)]
@@ -39,8 +100,7 @@ struct FileJoint {
     a: Option<FileValue>,
     #[serde(default)]
     alpha: Option<FileValue>,
-    #[serde(default)]
-    mass: Option<FileValue>,
+    mass: FileValue,
     #[serde(default)]
     com: Option<[FileValue; 3]>,
     #[serde(default)]
@@ -51,6 +111,17 @@ struct FileJoint {
     spring_stiffness: Option<FileValue>,
     #[serde(default)]
     spring_rest: Option<FileValue>,
+    /// `false` keeps an inertia tensor that fails the physical checks.
+    #[serde(default)]
+    check_inertia: Option<bool>,
+}
+
+/// A robot read from a description file, with what the file says about checking it.
+pub struct Loaded {
+    /// The robot.
+    pub robot: Robot,
+    /// Per joint, whether its inertia tensor is checked (`"check_inertia": false` opts out).
+    pub check_inertia: Vec<bool>,
 }
 
 /// An error in a description file, with the 1-based line and column where known.
@@ -81,101 +152,55 @@ fn plain(message: String) -> FileError {
     }
 }
 
-fn value(v: Option<&FileValue>, what: &str) -> Result<Value, FileError> {
-    match v {
-        None => Ok(Value::zero()),
-        Some(FileValue::Number(x)) => {
-            if x.is_finite() {
-                Ok(Value::from_f64(*x))
-            } else {
-                Err(plain(format!("`{what}` is not a finite number")))
-            }
-        }
-        Some(FileValue::Text(t)) => {
-            let v = parse_value(t).map_err(|e| plain(format!("`{what}`: {e}")))?;
-            if v.joint_occurrences() > 0 {
-                return Err(plain(format!(
-                    "`{what}`: the joint variable `q` has no place in a description file; \
-                     `theta` (revolute) or `d` (prismatic) is the offset added to it"
-                )));
-            }
-            Ok(v)
-        }
-    }
+fn value(v: Option<&FileValue>) -> Value {
+    v.map_or_else(Value::zero, |v| v.0.clone())
 }
 
-fn convert(file: FileRobot, default_name: &str) -> Result<Robot, FileError> {
-    let convention = match file.convention.as_deref() {
-        None | Some("standard") => Convention::Standard,
-        Some("modified") => Convention::Modified,
-        Some(other) => {
-            return Err(plain(format!(
-                "unknown convention `{other}`: expected \"standard\" or \"modified\""
-            )))
-        }
+fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, FileError> {
+    let convention = match file.convention {
+        None | Some(FileConvention::Standard) => Convention::Standard,
+        Some(FileConvention::Modified) => Convention::Modified,
     };
-    let gravity = [
-        value(Some(&file.gravity[0]), "gravity[0]")?,
-        value(Some(&file.gravity[1]), "gravity[1]")?,
-        value(Some(&file.gravity[2]), "gravity[2]")?,
-    ];
+    if file.joints.is_empty() {
+        return Err(plain(
+            "`joints` is empty: give one entry per joint, base to tip".to_string(),
+        ));
+    }
+    let gravity = file.gravity.map(|g| g.0);
     let mut joints = Vec::with_capacity(file.joints.len());
-    for (i, j) in file.joints.iter().enumerate() {
-        let n = i + 1;
-        let kind = match j.kind.as_str() {
-            "revolute" => JointKind::Revolute,
-            "prismatic" => JointKind::Prismatic,
-            other => {
-                return Err(plain(format!(
-                "joint {n}: unknown joint type `{other}`: expected \"revolute\" or \"prismatic\""
-            )))
-            }
+    let mut check_inertia = Vec::with_capacity(file.joints.len());
+    for j in file.joints {
+        let kind = match j.kind {
+            FileKind::Revolute => JointKind::Revolute,
+            FileKind::Prismatic => JointKind::Prismatic,
         };
-        let com = match &j.com {
-            Some(c) => [
-                value(Some(&c[0]), "com")?,
-                value(Some(&c[1]), "com")?,
-                value(Some(&c[2]), "com")?,
-            ],
-            None => [Value::zero(), Value::zero(), Value::zero()],
-        };
-        let inertia = match &j.inertia {
-            Some(c) => {
-                let mut out: [Value; 6] = Default::default();
-                for (o, x) in out.iter_mut().zip(c) {
-                    *o = value(Some(x), "inertia")?;
-                }
-                out
-            }
-            None => Default::default(),
-        };
-        let stiffness = value(j.spring_stiffness.as_ref(), "spring_stiffness")?;
-        let spring = if stiffness.is_zero() {
-            None
-        } else {
-            Some(Spring {
-                stiffness,
-                rest: value(j.spring_rest.as_ref(), "spring_rest")?,
-            })
-        };
+        let stiffness = value(j.spring_stiffness.as_ref());
+        let spring = (!stiffness.is_zero()).then(|| Spring {
+            stiffness,
+            rest: value(j.spring_rest.as_ref()),
+        });
+        check_inertia.push(j.check_inertia.unwrap_or(true));
         joints.push(Joint {
             kind,
-            theta: value(j.theta.as_ref(), "theta")?,
-            d: value(j.d.as_ref(), "d")?,
-            a: value(j.a.as_ref(), "a")?,
-            alpha: value(j.alpha.as_ref(), "alpha")?,
-            mass: value(j.mass.as_ref(), "mass")?,
-            com,
-            inertia,
-            actuator_inertia: value(j.actuator_inertia.as_ref(), "actuator_inertia")?,
+            theta: value(j.theta.as_ref()),
+            d: value(j.d.as_ref()),
+            a: value(j.a.as_ref()),
+            alpha: value(j.alpha.as_ref()),
+            mass: j.mass.0,
+            com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
+            inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
+            actuator_inertia: value(j.actuator_inertia.as_ref()),
             spring,
         });
     }
-    Ok(Robot {
-        name: file.name.unwrap_or_else(|| default_name.to_string()),
-        convention,
-        gravity,
-        joints,
+    Ok(Loaded {
+        robot: Robot {
+            name: file.name.unwrap_or_else(|| default_name.to_string()),
+            convention,
+            gravity,
+            joints,
+        },
+        check_inertia,
     })
 }
 
@@ -185,11 +210,7 @@ impl Default for Value {
     }
 }
 
-/// Reads a robot from JSON text.
-///
-/// # Errors
-/// The first problem found, with its line and column.
-pub fn from_json(text: &str, default_name: &str) -> Result<Robot, FileError> {
+fn json(text: &str, default_name: &str) -> Result<Loaded, FileError> {
     let file: FileRobot = serde_json::from_str(text).map_err(|e| FileError {
         message: e
             .to_string()
@@ -203,20 +224,20 @@ pub fn from_json(text: &str, default_name: &str) -> Result<Robot, FileError> {
     convert(file, default_name)
 }
 
-/// Reads a robot from TOML text.
-///
-/// # Errors
-/// The first problem found, with its line and column.
-pub fn from_toml(text: &str, default_name: &str) -> Result<Robot, FileError> {
+fn toml(text: &str, default_name: &str) -> Result<Loaded, FileError> {
     let file: FileRobot = toml::from_str(text).map_err(|e| {
         let (line, column) = e.span().map_or((None, None), |s| {
-            let before = &text[..s.start.min(text.len())];
+            let before = text.get(..s.start).unwrap_or(text);
             let line = before.matches('\n').count() + 1;
-            let column = before.len() - before.rfind('\n').map_or(0, |p| p + 1) + 1;
+            let column = before.chars().count()
+                - before
+                    .rfind('\n')
+                    .map_or(0, |p| before[..=p].chars().count())
+                + 1;
             (Some(line), Some(column))
         });
         FileError {
-            message: e.message().to_string(),
+            message: e.message().trim_end().to_string(),
             line,
             column,
         }
@@ -224,19 +245,44 @@ pub fn from_toml(text: &str, default_name: &str) -> Result<Robot, FileError> {
     convert(file, default_name)
 }
 
+/// Reads a robot from JSON text.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn from_json(text: &str, default_name: &str) -> Result<Robot, FileError> {
+    json(text, default_name).map(|l| l.robot)
+}
+
+/// Reads a robot from TOML text.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn from_toml(text: &str, default_name: &str) -> Result<Robot, FileError> {
+    toml(text, default_name).map(|l| l.robot)
+}
+
 /// Reads a robot from a file's text, as JSON or TOML by the file's extension.
 ///
 /// # Errors
 /// The first problem found, with its line and column.
 pub fn from_text(path: &str, text: &str) -> Result<Robot, FileError> {
+    load(path, text).map(|l| l.robot)
+}
+
+/// Reads a robot and its per-joint check flags from a file's text, as JSON or TOML by the
+/// file's extension.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn load(path: &str, text: &str) -> Result<Loaded, FileError> {
     let stem = std::path::Path::new(path)
         .file_stem()
         .and_then(|s| s.to_str())
         .unwrap_or("robot");
     if path.ends_with(".toml") {
-        from_toml(text, stem)
+        toml(text, stem)
     } else if path.ends_with(".json") {
-        from_json(text, stem)
+        json(text, stem)
     } else {
         Err(plain(format!(
             "cannot tell the format of `{path}`: name it *.json or *.toml"

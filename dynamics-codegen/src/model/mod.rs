@@ -6,7 +6,7 @@ mod file;
 mod value;
 
 pub use crate::algo::JointKind;
-pub use file::{from_json, from_text, from_toml, FileError};
+pub use file::{from_json, from_text, from_toml, load, FileError, Loaded};
 pub use value::{parse_value, Spanned, Value};
 
 /// Which D-H convention a table uses.

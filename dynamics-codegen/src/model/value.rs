@@ -191,8 +191,10 @@ impl std::fmt::Display for Value {
 pub struct Spanned {
     /// The value.
     pub value: Value,
-    /// Where it was written.
+    /// Where it was written: its first token.
     pub span: Span,
+    /// Its last token.
+    pub end: Span,
     /// Fields it names, each with where it was written.
     pub fields: Vec<(String, Span)>,
 }
@@ -200,11 +202,22 @@ pub struct Spanned {
 impl Parse for Spanned {
     fn parse(input: ParseStream) -> syn::Result<Spanned> {
         let span = input.span();
+        let start = input.cursor();
         let mut fields = Vec::new();
         let value = parse_sum(input, &mut fields)?;
+        let mut end = span;
+        let mut cursor = start;
+        while cursor != input.cursor() {
+            let Some((token, next)) = cursor.token_tree() else {
+                break;
+            };
+            end = token.span();
+            cursor = next;
+        }
         Ok(Spanned {
             value,
             span,
+            end,
             fields,
         })
     }
@@ -318,6 +331,12 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
         let digits = match &lit {
             Lit::Int(i) => i.base10_digits().to_string(),
             Lit::Float(f) => f.base10_digits().to_string(),
+            Lit::Str(_) => {
+                return Err(syn::Error::new(
+                    lit.span(),
+                    "write the value without quotes (quotes are for description files)",
+                ))
+            }
             _ => {
                 return Err(syn::Error::new(
                     lit.span(),
