@@ -65,8 +65,8 @@ impl F {
         matches!(self, F::Qd(_) | F::Qdd(_))
     }
 
-    fn is_configuration(&self) -> bool {
-        matches!(self, F::Q(_) | F::Trig { .. })
+    fn is_trig(&self) -> bool {
+        matches!(self, F::Trig { .. })
     }
 }
 
@@ -305,12 +305,13 @@ fn arrange(terms: Vec<(Mono, Number)>) -> Vec<Term> {
     out
 }
 
-/// Terms without accelerations or velocities, grouped by their sines, cosines and prismatic
-/// positions with their common parameters taken out.
+/// Terms without accelerations or velocities, grouped by their sines and cosines with their
+/// common factors taken out. A prismatic position stays inside the group, as the book writes
+/// `(m1 g l1/2 + m2 g r) Cθ` (6.14).
 fn arrange_configuration(terms: Vec<(Mono, Number)>) -> Vec<Term> {
     let mut by_config: BTreeMap<Mono, Vec<(Mono, Number)>> = BTreeMap::new();
     for (m, c) in terms {
-        let (config, params): (Mono, Mono) = m.into_iter().partition(|(f, _)| f.is_configuration());
+        let (config, params): (Mono, Mono) = m.into_iter().partition(|(f, _)| f.is_trig());
         by_config.entry(config).or_default().push((params, c));
     }
     let mut out = Vec::new();
@@ -948,6 +949,8 @@ mod tests {
             "0" => "0",
             "-1/2*m2*l1*l2*S3*qd1^2" => "-1/2 m2 l1 l2 S3 θ̇1²",
             "k*q2*qd2" => "k d2 d\u{307}2",
+            // a prismatic position stays inside its sine's or cosine's group (Niku 6.14)
+            "m1*g*l1*C1/2 + m2*g*q2*C1" => "(1/2 m1 l1 + m2 d2) g C1",
             "0.4318*17.4*C1 + 1/3" => "1/3 + 7.51332 C1",
             "x/7" => "0.142857 x",
         }
