@@ -581,7 +581,11 @@ fn decimal(x: Number) -> String {
         let places = (5.0 - exponent).max(0.0) as usize;
         trim(format!("{v:.places$}"))
     } else {
-        format!("{v:.5e}")
+        let s = format!("{v:.5e}");
+        match s.split_once('e') {
+            Some((mantissa, exp)) => format!("{}e{exp}", trim(mantissa.to_string())),
+            None => s,
+        }
     }
 }
 
@@ -953,6 +957,7 @@ mod tests {
             "m1*g*l1*C1/2 + m2*g*q2*C1" => "(1/2 m1 l1 + m2 d2) g C1",
             "0.4318*17.4*C1 + 1/3" => "1/3 + 7.51332 C1",
             "x/7" => "0.142857 x",
+            "0.0000584640*x" => "5.8464e-5 x",
         }
     }
 
