@@ -1,0 +1,269 @@
+//! The `dynamics` command end to end: `eval --json` against Pinocchio's reference data, errors
+//! in description files reported as `file:line:col`, usage errors, `stats` and `inspect`.
+//! (`emit` is checked by the golden test and compiled by the `emitted_puma560` example.)
+
+use dynamics_reference::scaled_error;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("workspace root")
+        .to_path_buf()
+}
+
+fn dynamics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("run dynamics")
+}
+
+fn stdout(out: &Output) -> String {
+    assert!(
+        out.status.success(),
+        "failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout.clone()).expect("UTF-8")
+}
+
+fn numbers(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Array(a) => a.iter().flat_map(numbers).collect(),
+        Value::Number(n) => vec![n.as_f64().expect("f64")],
+        _ => panic!("not a number or an array: {v}"),
+    }
+}
+
+/// `1.5,-2,...` with every digit of each number (Rust's shortest round-trip form).
+fn list(v: &Value) -> String {
+    let s: Vec<String> = numbers(v).iter().map(|x| format!("{x:?}")).collect();
+    s.join(",")
+}
+
+/// `eval --json` on `robots/puma560.toml` reproduces τ, M, C and g of every sample of
+/// `tests/data/reference/data/puma560.json` (Pinocchio 4.1.0, a copy of the shared reference
+/// data; see its README).
+#[test]
+fn eval_json_matches_the_reference_data() {
+    let path = root().join("tests/data/reference/data/puma560.json");
+    let data: Value = serde_json::from_str(&std::fs::read_to_string(path).expect("reference data"))
+        .expect("json");
+    let samples = data["samples"].as_array().expect("samples");
+    assert_eq!(samples.len(), 20);
+    let mut worst: f64 = 0.0;
+    for s in samples {
+        let out = dynamics(&[
+            "eval",
+            "robots/puma560.toml",
+            "--q",
+            &list(&s["q"]),
+            "--qd",
+            &list(&s["qd"]),
+            "--qdd",
+            &list(&s["qdd"]),
+            "--json",
+        ]);
+        let got: Value = serde_json::from_str(&stdout(&out)).expect("eval --json prints JSON");
+        for (ours, theirs) in [("tau", "tau"), ("M", "M"), ("C", "C"), ("g", "g")] {
+            let (a, b) = (numbers(&got[ours]), numbers(&s[theirs]));
+            assert_eq!(a.len(), b.len(), "{ours}: wrong size");
+            let e = scaled_error(&a, &b);
+            assert!(e < 1e-10, "{ours} differs from Pinocchio by {e:e}");
+            worst = worst.max(e);
+        }
+    }
+    println!("eval --json vs reference: worst scaled error {worst:.1e}");
+}
+
+/// Parameters given with `--set`; a missing or unknown one is a usage error (exit code 2).
+#[test]
+fn eval_with_parameters() {
+    let base = [
+        "eval",
+        "robots/niku_example_6_1.toml",
+        "--q",
+        "0.5",
+        "--qdd",
+        "2",
+    ];
+    let mut args = base.to_vec();
+    args.extend(["--set", "m=3", "--set", "k=10", "--set", "g=9.81", "--json"]);
+    let out = dynamics(&args);
+    let got: Value = serde_json::from_str(&stdout(&out)).expect("JSON");
+    // Example 6.1: F = m ẍ + k x = 3·2 + 10·0.5
+    assert!((numbers(&got["tau"])[0] - 11.0).abs() < 1e-12, "{got}");
+    assert!((numbers(&got["M"])[0] - 3.0).abs() < 1e-12, "{got}");
+
+    let out = dynamics(&base);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("give --set"), "{err}");
+
+    let mut args = base.to_vec();
+    args.extend([
+        "--set", "m=3", "--set", "k=1", "--set", "g=1", "--set", "z=1",
+    ]);
+    let out = dynamics(&args);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no parameter `z`"));
+
+    let out = dynamics(&["eval", "robots/puma560.toml", "--q", "1,2"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("2 values given, the robot has 6 joints"));
+}
+
+/// Writes `text` to a fresh file named `name` and runs `dynamics inspect` on it; returns the
+/// path as given and the error output (the run must fail with exit code 1).
+fn inspect_bad_file(name: &str, text: &str) -> (String, String) {
+    let dir = std::env::temp_dir().join(format!("dynamics-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write");
+    let path = path.to_string_lossy().into_owned();
+    let out = dynamics(&["inspect", &path]);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{name}: {}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    (path, String::from_utf8(out.stderr).expect("UTF-8"))
+}
+
+/// Each error names the file, the line and the column of the offending value (1-based),
+/// located here by searching the text for it.
+#[test]
+fn file_errors_have_line_and_column() {
+    // (file name, text, the offending text, what the message says)
+    let cases = [
+        (
+            "bad_value.toml",
+            "name = \"arm\"\ngravity = [0, \"-g\", 0]\n\n[[joints]]\ntype = \"revolute\"\na = \"l1 +\"\nmass = \"m1\"\n",
+            "\"l1 +\"",
+            "cannot read `l1 +`",
+        ),
+        (
+            "unknown_key.toml",
+            "name = \"arm\"\ngravity = [0, 0, -9.81]\n\n[[joints]]\ntype = \"revolute\"\nmasss = 1\n",
+            "masss",
+            "unknown field `masss`",
+        ),
+        (
+            "syntax.toml",
+            "name = \"arm\"\ngravity = [0, 0, -9.81\n",
+            "\n",
+            "",
+        ),
+        (
+            "joint_kind.json",
+            "{\"name\": \"arm\", \"gravity\": [0, 0, -9.81],\n \"joints\": [\n  {\"type\": \"sliding\", \"mass\": 1}\n ]}\n",
+            "\"sliding\"",
+            "unknown variant `sliding`",
+        ),
+    ];
+    for (name, text, at, says) in cases {
+        let (path, err) = inspect_bad_file(name, text);
+        let message = err
+            .strip_prefix("dynamics: ")
+            .unwrap_or_else(|| panic!("{name}: {err}"));
+        let rest = message
+            .strip_prefix(&format!("{path}:"))
+            .unwrap_or_else(|| panic!("{name}: no file name in {err}"));
+        let mut parts = rest.splitn(3, ':');
+        let line: usize = parts.next().and_then(|l| l.parse().ok()).expect(&err);
+        let col: usize = parts.next().and_then(|c| c.parse().ok()).expect(&err);
+        assert!(
+            parts.next().expect(&err).contains(says),
+            "{name}: message: {err}"
+        );
+        if name == "syntax.toml" {
+            // an unclosed array: reported on its line, after what was read
+            assert_eq!(line, 2, "{err}");
+            assert!(col > "gravity = [".len(), "{err}");
+            continue;
+        }
+        let offset = text.find(at).expect("offending text");
+        let want_line = text[..offset].matches('\n').count() + 1;
+        let want_col = offset - text[..offset].rfind('\n').map_or(0, |n| n + 1) + 1;
+        // The TOML parser points at the key or the value, the JSON parser at the end of the
+        // value: the same line, between the key and the end of the value.
+        assert_eq!(line, want_line, "{name}: {err}");
+        let line_start = text[..offset].rfind('\n').map_or(0, |n| n + 1);
+        let key_col = text[line_start..]
+            .find(|c: char| !c.is_whitespace())
+            .map_or(1, |n| n + 1);
+        let end_col = want_col + at.chars().count();
+        assert!(
+            (key_col..=end_col).contains(&col),
+            "{name}: column {col}, want {key_col}..={end_col}: {err}"
+        );
+    }
+}
+
+#[test]
+fn usage_errors() {
+    for (args, says) in [
+        (vec![], "no command"),
+        (vec!["frobnicate", "robots/puma560.toml"], "unknown command"),
+        (vec!["inspect"], "needs a ROBOT file"),
+        (
+            vec!["inspect", "robots/puma560.toml", "--tex"],
+            "unexpected argument `--tex`",
+        ),
+    ] {
+        let out = dynamics(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains(says) && err.contains("usage:"),
+            "{args:?}: {err}"
+        );
+    }
+    let out = dynamics(&["inspect", "robots/nowhere.toml"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("robots/nowhere.toml"));
+}
+
+/// `stats` lists the eight methods with their operation counts; the per-method code sizes
+/// add up to the total.
+#[test]
+fn stats_per_method() {
+    let out = stdout(&dynamics(&["stats", "robots/puma560.toml"]));
+    let mut total = 0;
+    let mut methods = Vec::new();
+    for line in out.lines().skip(2) {
+        let cols: Vec<&str> = line.split_whitespace().collect();
+        if line.starts_with("total generated code") {
+            let t: usize = cols[3].parse().expect("total");
+            assert_eq!(t, total, "{out}");
+            continue;
+        }
+        assert_eq!(cols.len(), 8, "{line}");
+        let n: Vec<usize> = cols[1..]
+            .iter()
+            .map(|c| c.parse().expect("count"))
+            .collect();
+        // flops = mul + add + neg + div
+        assert_eq!(n[5], n[0] + n[1] + n[2] + n[3], "{line}");
+        total += n[6];
+        methods.push(cols[0].to_string());
+    }
+    assert_eq!(
+        methods,
+        [
+            "mass_matrix",
+            "coriolis_matrix",
+            "coriolis_torques",
+            "gravity_torques",
+            "bias_torques",
+            "inverse_dynamics",
+            "kinetic_energy",
+            "potential_energy"
+        ]
+    );
+}
