@@ -19,9 +19,11 @@ use dynamics_runtime::Dynamics;
         [   q,  0,        0,       0      ],
     ],
     //   mass            centre of mass (frame i)        inertia about it [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]
-    link(mass = 0,                                       inertia = [0, 0.35, 0, 0, 0, 0]),
+    // Links 1 and 3 as published break the triangle inequality of principal moments
+    // (0 + 0 < 0.35, 0.0125 + 0.066 < 0.086): `check_inertia = false` keeps them.
+    link(mass = 0,                                       inertia = [0, 0.35, 0, 0, 0, 0], check_inertia = false),
     link(mass = 17.4,    com = [-0.3638, 0.006, 0.2275], inertia = [0.13, 0.524, 0.539, 0, 0, 0]),
-    link(mass = 4.8,     com = [-0.0203, -0.0141, 0.07], inertia = [0.066, 0.086, 0.0125, 0, 0, 0]),
+    link(mass = 4.8,     com = [-0.0203, -0.0141, 0.07], inertia = [0.066, 0.086, 0.0125, 0, 0, 0], check_inertia = false),
     link(mass = 0.82,    com = [0, 0.019, 0],            inertia = [0.0018, 0.0013, 0.0018, 0, 0, 0]),
     link(mass = 0.34,                                    inertia = [0.0003, 0.0004, 0.0003, 0, 0, 0]),
     link(mass = 0.09 + payload, com = [0, 0, 0.032],     inertia = [0.00015, 0.00015, 0.00004, 0, 0, 0]),

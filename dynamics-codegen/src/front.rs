@@ -18,6 +18,7 @@
 //! Rot(x,α)`; the joint variable `q` (or `qN` in row N) in the θ cell makes the joint revolute,
 //! in the d cell prismatic, with an optional constant offset (`q + 90 deg`).
 
+use crate::check::{self, Part};
 use crate::model::{self, Convention, Joint, JointKind, Robot, Spanned, Spring, Value};
 use proc_macro2::Span;
 use syn::parse::ParseStream;
@@ -39,9 +40,13 @@ struct LinkAttr {
     span: Option<Span>,
     mass: Option<Spanned>,
     com: Option<[Spanned; 3]>,
-    inertia: Option<[Spanned; 6]>,
+    /// The six values and the span of their brackets.
+    inertia: Option<([Spanned; 6], Span)>,
     actuator_inertia: Option<Spanned>,
     spring: Option<(Spanned, Spanned)>,
+    check_inertia: Option<bool>,
+    /// Whether an unknown key was given (perhaps a misspelt `mass`).
+    unknown_key: bool,
 }
 
 /// A D-H row `[θ, d, a, α]` with the span of its first token.
@@ -56,6 +61,8 @@ struct Attrs {
     dh: Option<(Vec<DhRowAttr>, Span)>,
     links: Vec<LinkAttr>,
     name: Option<LitStr>,
+    /// `check_inertia = false` for every link (or every joint of the file).
+    check_inertia: Option<bool>,
 }
 
 /// Collects errors; they are all reported together.
@@ -77,82 +84,143 @@ impl Errors {
     }
 }
 
-fn values<const N: usize>(input: ParseStream, what: &str) -> syn::Result<[Spanned; N]> {
+/// `N` values in brackets, and the span of the brackets.
+fn values<const N: usize>(input: ParseStream, what: &str) -> syn::Result<([Spanned; N], Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(format!("expected {N} values in brackets: {what}")));
+    }
     let content;
     let bracket = bracketed!(content in input);
     let items: Punctuated<Spanned, Token![,]> = Punctuated::parse_terminated(&content)?;
     let count = items.len();
-    items
+    let span = bracket.span.join();
+    let items: [Spanned; N] = items
         .into_iter()
         .collect::<Vec<_>>()
         .try_into()
-        .map_err(|_| {
-            syn::Error::new(
-                bracket.span.join(),
-                format!("{what} takes {N} values, found {count}"),
-            )
-        })
+        .map_err(|_| syn::Error::new(span, format!("{what} takes {N} values, found {count}")))?;
+    Ok((items, span))
 }
 
-fn parse_link(input: ParseStream, span: Span) -> syn::Result<LinkAttr> {
+/// Stores the first value given for a key; a repeated key is an error, and parsing goes on.
+fn set<T>(slot: &mut Option<T>, value: T, key: &Ident, what: &str, errors: &mut Errors) {
+    if slot.is_some() {
+        errors.push(
+            key.span(),
+            format!("duplicate {what} `{key}`: it is given earlier in this list"),
+        );
+    } else {
+        *slot = Some(value);
+    }
+}
+
+/// Skips what follows an unknown key, up to the next `,` at this level, so that the keys
+/// after it are still checked.
+fn skip_entry(input: ParseStream) -> syn::Result<()> {
+    while !input.is_empty() && !input.peek(Token![,]) {
+        input.parse::<proc_macro2::TokenTree>()?;
+    }
+    Ok(())
+}
+
+/// The number of single-character edits between two short words.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (diagonal + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+/// "unknown {what} `key`: expected ..." with a suggestion for a near miss.
+fn unknown_key(key: &Ident, what: &str, known: &[&str]) -> String {
+    let key = key.to_string();
+    let list = known
+        .iter()
+        .map(|k| format!("`{k}`"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let near = known
+        .iter()
+        .map(|k| (edit_distance(&key, k), *k))
+        .filter(|(d, k)| *d <= 2 && *d < k.len())
+        .min();
+    match near {
+        Some((_, k)) => {
+            format!("unknown {what} `{key}`: did you mean `{k}`? (expected one of {list})")
+        }
+        None => format!("unknown {what} `{key}`: expected one of {list}"),
+    }
+}
+
+const LINK_KEYS: [&str; 6] = [
+    "mass",
+    "com",
+    "inertia",
+    "actuator_inertia",
+    "spring",
+    "check_inertia",
+];
+
+const KEYS: [&str; 8] = [
+    "gravity",
+    "dh",
+    "link",
+    "convention",
+    "file",
+    "name",
+    "crate",
+    "check_inertia",
+];
+
+fn parse_link(input: ParseStream, span: Span, errors: &mut Errors) -> syn::Result<LinkAttr> {
     let mut link = LinkAttr {
         span: Some(span),
         ..LinkAttr::default()
     };
+    let what = "link attribute";
     while !input.is_empty() {
         let key: Ident = input.parse()?;
-        let dup = |set: bool| -> syn::Result<()> {
-            if set {
-                Err(syn::Error::new(
-                    key.span(),
-                    format!("duplicate link attribute `{key}`"),
-                ))
-            } else {
-                Ok(())
-            }
-        };
-        input.parse::<Token![=]>()?;
-        match key.to_string().as_str() {
-            "mass" => {
-                dup(link.mass.is_some())?;
-                link.mass = Some(input.parse()?);
-            }
-            "com" => {
-                dup(link.com.is_some())?;
-                link.com = Some(values::<3>(input, "`com = [x, y, z]`")?);
-            }
-            "inertia" => {
-                dup(link.inertia.is_some())?;
-                link.inertia = Some(values::<6>(
-                    input,
-                    "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`",
-                )?);
-            }
-            "actuator_inertia" => {
-                dup(link.actuator_inertia.is_some())?;
-                link.actuator_inertia = Some(input.parse()?);
-            }
-            "spring" => {
-                dup(link.spring.is_some())?;
-                let content;
-                parenthesized!(content in input);
-                let k: Spanned = content.parse()?;
-                content.parse::<Token![,]>()?;
-                let rest: Spanned = content.parse()?;
-                content.parse::<Option<Token![,]>>()?;
-                if !content.is_empty() {
-                    return Err(content.error("expected `spring = (stiffness, rest_position)`"));
+        let name = key.to_string();
+        if !LINK_KEYS.contains(&name.as_str()) {
+            errors.push(key.span(), unknown_key(&key, what, &LINK_KEYS));
+            link.unknown_key = true;
+            skip_entry(input)?;
+        } else {
+            input.parse::<Token![=]>()?;
+            match name.as_str() {
+                "mass" => set(&mut link.mass, input.parse()?, &key, what, errors),
+                "com" => {
+                    let (com, _) = values::<3>(input, "`com = [x, y, z]`")?;
+                    set(&mut link.com, com, &key, what, errors);
                 }
-                link.spring = Some((k, rest));
-            }
-            _ => {
-                return Err(syn::Error::new(
-                    key.span(),
-                    format!(
-                        "unknown link attribute `{key}`: expected `mass`, `com`, `inertia`, \
-                         `actuator_inertia` or `spring`"
-                    ),
-                ))
+                "inertia" => {
+                    let inertia = values::<6>(input, "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`")?;
+                    set(&mut link.inertia, inertia, &key, what, errors);
+                }
+                "actuator_inertia" => {
+                    set(
+                        &mut link.actuator_inertia,
+                        input.parse()?,
+                        &key,
+                        what,
+                        errors,
+                    );
+                }
+                "spring" => {
+                    let spring = parse_spring(input)?;
+                    set(&mut link.spring, spring, &key, what, errors);
+                }
+                _ => set(&mut link.check_inertia, boolean(input)?, &key, what, errors),
             }
         }
         if !input.is_empty() {
@@ -162,7 +230,87 @@ fn parse_link(input: ParseStream, span: Span) -> syn::Result<LinkAttr> {
     Ok(link)
 }
 
-fn parse_attrs(input: ParseStream, attrs: &mut Attrs) -> syn::Result<()> {
+fn parse_spring(input: ParseStream) -> syn::Result<(Spanned, Spanned)> {
+    let usage = "expected `spring = (stiffness, rest_position)`";
+    if !input.peek(syn::token::Paren) {
+        return Err(input.error(usage));
+    }
+    let content;
+    parenthesized!(content in input);
+    let k: Spanned = content.parse()?;
+    if !content.peek(Token![,]) {
+        return Err(content.error(usage));
+    }
+    content.parse::<Token![,]>()?;
+    let rest: Spanned = content.parse()?;
+    content.parse::<Option<Token![,]>>()?;
+    if !content.is_empty() {
+        return Err(content.error(usage));
+    }
+    Ok((k, rest))
+}
+
+fn parse_convention(input: ParseStream) -> syn::Result<(Convention, Span)> {
+    let (text, span) = if input.peek(LitStr) {
+        let s: LitStr = input.parse()?;
+        (s.value(), s.span())
+    } else if input.peek(Ident) {
+        let i: Ident = input.parse()?;
+        (i.to_string(), i.span())
+    } else {
+        return Err(input.error("expected `standard` or `modified`"));
+    };
+    match text.as_str() {
+        "standard" => Ok((Convention::Standard, span)),
+        "modified" => Ok((Convention::Modified, span)),
+        _ => Err(syn::Error::new(
+            span,
+            format!("unknown convention `{text}`: expected `standard` or `modified`"),
+        )),
+    }
+}
+
+fn parse_dh(input: ParseStream) -> syn::Result<(Vec<DhRowAttr>, Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(
+            "expected the D-H table in brackets, one row per joint: `dh = [[θ, d, a, α], ...]`",
+        ));
+    }
+    let content;
+    let bracket = bracketed!(content in input);
+    let mut rows = Vec::new();
+    while !content.is_empty() {
+        let span = content.span();
+        let (row, _) = values::<4>(&content, "a D-H row `[θ, d, a, α]`")?;
+        rows.push((span, row));
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
+    }
+    Ok((rows, bracket.span.join()))
+}
+
+fn boolean(input: ParseStream) -> syn::Result<bool> {
+    if input.peek(syn::LitBool) {
+        Ok(input.parse::<syn::LitBool>()?.value)
+    } else {
+        Err(input.error(
+            "expected `true` or `false`: `check_inertia = false` keeps an inertia tensor that \
+             fails the physical checks",
+        ))
+    }
+}
+
+fn string(input: ParseStream, usage: &str) -> syn::Result<LitStr> {
+    if input.peek(LitStr) {
+        input.parse()
+    } else {
+        Err(input.error(format!("expected a string: {usage}")))
+    }
+}
+
+fn parse_attrs(input: ParseStream, attrs: &mut Attrs, errors: &mut Errors) -> syn::Result<()> {
+    let what = "dynamics attribute";
     while !input.is_empty() {
         let key: Ident = if input.peek(Token![crate]) {
             let k: Token![crate] = input.parse()?;
@@ -171,85 +319,53 @@ fn parse_attrs(input: ParseStream, attrs: &mut Attrs) -> syn::Result<()> {
             input.parse()?
         };
         let name = key.to_string();
-        let dup = |set: bool| -> syn::Result<()> {
-            if set {
-                Err(syn::Error::new(
-                    key.span(),
-                    format!("duplicate dynamics attribute `{key}`"),
-                ))
-            } else {
-                Ok(())
+        if !KEYS.contains(&name.as_str()) {
+            errors.push(key.span(), unknown_key(&key, what, &KEYS));
+            skip_entry(input)?;
+        } else if name == "link" {
+            if !input.peek(syn::token::Paren) {
+                return Err(input.error(
+                    "expected `link(mass = .., com = [..], inertia = [..])`, one per joint",
+                ));
             }
-        };
-        if name == "link" {
             let content;
             parenthesized!(content in input);
-            attrs.links.push(parse_link(&content, key.span())?);
+            attrs.links.push(parse_link(&content, key.span(), errors)?);
         } else {
             input.parse::<Token![=]>()?;
             match name.as_str() {
                 "file" => {
-                    dup(attrs.file.is_some())?;
-                    attrs.file = Some(input.parse()?);
+                    let s = string(input, "`file = \"robots/arm.toml\"`")?;
+                    set(&mut attrs.file, s, &key, what, errors);
                 }
                 "name" => {
-                    dup(attrs.name.is_some())?;
-                    attrs.name = Some(input.parse()?);
+                    let s = string(input, "`name = \"arm\"`")?;
+                    set(&mut attrs.name, s, &key, what, errors);
                 }
                 "crate" => {
-                    dup(attrs.krate.is_some())?;
-                    let s: LitStr = input.parse()?;
-                    attrs.krate = Some(s.parse()?);
+                    let s = string(input, "`crate = \"path::to::dynamics_runtime\"`")?;
+                    set(&mut attrs.krate, s.parse()?, &key, what, errors);
                 }
                 "convention" => {
-                    dup(attrs.convention.is_some())?;
-                    let (text, span) = if input.peek(LitStr) {
-                        let s: LitStr = input.parse()?;
-                        (s.value(), s.span())
-                    } else {
-                        let i: Ident = input.parse()?;
-                        (i.to_string(), i.span())
-                    };
-                    let c = match text.as_str() {
-                        "standard" => Convention::Standard,
-                        "modified" => Convention::Modified,
-                        _ => {
-                            return Err(syn::Error::new(
-                                span,
-                                format!(
-                                "unknown convention `{text}`: expected `standard` or `modified`"
-                            ),
-                            ))
-                        }
-                    };
-                    attrs.convention = Some((c, span));
+                    let c = parse_convention(input)?;
+                    set(&mut attrs.convention, c, &key, what, errors);
                 }
                 "gravity" => {
-                    dup(attrs.gravity.is_some())?;
-                    attrs.gravity = Some(values::<3>(input, "`gravity = [gx, gy, gz]`")?);
+                    let (g, _) = values::<3>(input, "`gravity = [gx, gy, gz]`")?;
+                    set(&mut attrs.gravity, g, &key, what, errors);
                 }
-                "dh" => {
-                    dup(attrs.dh.is_some())?;
-                    let content;
-                    let bracket = bracketed!(content in input);
-                    let mut rows = Vec::new();
-                    while !content.is_empty() {
-                        let span = content.span();
-                        rows.push((span, values::<4>(&content, "a D-H row `[θ, d, a, α]`")?));
-                        if !content.is_empty() {
-                            content.parse::<Token![,]>()?;
-                        }
-                    }
-                    attrs.dh = Some((rows, bracket.span.join()));
+                "check_inertia" => {
+                    set(
+                        &mut attrs.check_inertia,
+                        boolean(input)?,
+                        &key,
+                        what,
+                        errors,
+                    );
                 }
                 _ => {
-                    return Err(syn::Error::new(
-                        key.span(),
-                        format!(
-                            "unknown dynamics attribute `{key}`: expected `gravity`, `dh`, `link`, \
-                             `convention`, `file`, `name` or `crate`"
-                        ),
-                    ))
+                    let dh = parse_dh(input)?;
+                    set(&mut attrs.dh, dh, &key, what, errors);
                 }
             }
         }
@@ -285,7 +401,8 @@ pub fn struct_fields(input: &syn::DeriveInput) -> Vec<Field> {
         .collect()
 }
 
-fn check_fields(spanned: &Spanned, fields: &[Field], errors: &mut Errors) {
+/// Errors for fields a value names that the struct lacks or that are not floats.
+fn check_names(spanned: &Spanned, fields: &[Field], errors: &mut Errors) {
     for (name, span) in &spanned.fields {
         match fields.iter().find(|f| &f.name == name) {
             None => errors.push(
@@ -298,10 +415,26 @@ fn check_fields(spanned: &Spanned, fields: &[Field], errors: &mut Errors) {
             Some(_) => {}
         }
     }
-    if spanned.value.joint_occurrences() > 0 {
+}
+
+/// Errors for literal arithmetic that has no finite result.
+fn check_arithmetic(spanned: &Spanned, errors: &mut Errors) {
+    if divides_by_zero(&spanned.value) {
         errors.push(
             spanned.span,
-            "the joint variable `q` may appear only in the θ or d column of the D-H table",
+            format!("division by zero in `{}`", spanned.value),
+        );
+    } else if spanned
+        .value
+        .exact()
+        .is_some_and(|x| !x.to_f64().is_finite())
+    {
+        errors.push(
+            spanned.span,
+            format!(
+                "`{}` overflows an f64: it is not a finite number",
+                spanned.value
+            ),
         );
     }
 }
@@ -309,7 +442,14 @@ fn check_fields(spanned: &Spanned, fields: &[Field], errors: &mut Errors) {
 fn value(s: Option<&Spanned>, fields: &[Field], errors: &mut Errors) -> Value {
     match s {
         Some(s) => {
-            check_fields(s, fields, errors);
+            check_names(s, fields, errors);
+            check_arithmetic(s, errors);
+            if s.value.joint_occurrences() > 0 {
+                errors.push(
+                    s.span,
+                    "the joint variable `q` may appear only in the θ or d column of the D-H table",
+                );
+            }
             s.value.clone()
         }
         None => Value::zero(),
@@ -339,7 +479,8 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
     let mut parse_failed = false;
     for attr in input.attrs.iter().filter(|a| a.path().is_ident("dynamics")) {
         seen = true;
-        if let Err(e) = attr.parse_args_with(|s: ParseStream| parse_attrs(s, &mut attrs)) {
+        let parsed = attr.parse_args_with(|s: ParseStream| parse_attrs(s, &mut attrs, &mut errors));
+        if let Err(e) = parsed {
             errors.0.push(e);
             parse_failed = true;
         }
@@ -370,19 +511,13 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
                 errors.push(file.span(), format!("`{what}` cannot be combined with `file`: the file describes the whole robot"));
             }
         }
-        load_file(file, &fields, &mut errors, &mut tracked_file)
-    } else if parse_failed {
+        let checked = attrs.check_inertia.unwrap_or(true);
+        load_file(file, checked, &fields, &mut errors, &mut tracked_file)
+    } else if parse_failed || !seen {
         None
     } else {
         Some(from_attrs(&attrs, input, &fields, &mut errors))
     };
-    if let Some(robot) = &robot {
-        check(
-            robot,
-            attrs.file.as_ref().map_or(input.ident.span(), LitStr::span),
-            &mut errors,
-        );
-    }
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
             if let Some(name) = &attrs.name {
@@ -410,8 +545,11 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
     }
 }
 
+/// Reads the description file; its errors go on the `file = "..."` string, with the file's
+/// name, line and column in the message.
 fn load_file(
     file: &LitStr,
+    check_inertia: bool,
     fields: &[Field],
     errors: &mut Errors,
     tracked: &mut Option<String>,
@@ -430,28 +568,105 @@ fn load_file(
         }
     };
     *tracked = Some(path.display().to_string());
-    match model::from_text(&relative, &text) {
-        Ok(robot) => {
-            for name in robot.fields() {
-                match fields.iter().find(|f| f.name == name) {
-                    None => errors.push(
-                        file.span(),
-                        format!("{relative}: `{name}` is not a field of this struct"),
-                    ),
-                    Some(f) if !f.is_float => errors.push(
-                        file.span(),
-                        format!("{relative}: field `{name}` must be of type `f64` or `f32`"),
-                    ),
-                    Some(_) => {}
-                }
-            }
-            Some(robot)
-        }
+    let loaded = match model::load(&relative, &text) {
+        Ok(loaded) => loaded,
         Err(e) => {
-            errors.push(file.span(), format!("{relative}:{e}"));
-            None
+            let sep = if e.line.is_some() { "" } else { " " };
+            errors.push(file.span(), format!("{relative}:{sep}{e}"));
+            return None;
+        }
+    };
+    let robot = loaded.robot;
+    // `file:line:col: ` for joint `i`'s `key`, where the file says it.
+    let at = |i: usize, key: &str| {
+        loaded
+            .positions
+            .get(i)
+            .and_then(|p| p.get(key))
+            .map_or_else(
+                || format!("{relative}: "),
+                |(line, column)| format!("{relative}:{line}:{column}: "),
+            )
+    };
+    for name in robot.fields() {
+        let (i, key) = field_location(&robot, &name);
+        let at = i.map_or_else(|| format!("{relative}: "), |i| at(i, key));
+        match fields.iter().find(|f| f.name == name) {
+            None => errors.push(
+                file.span(),
+                format!("{at}`{name}` is not a field of this struct (values may name `f32` or `f64` fields)"),
+            ),
+            Some(f) if !f.is_float => errors.push(
+                file.span(),
+                format!("{at}field `{name}` must be of type `f64` or `f32`"),
+            ),
+            Some(_) => {}
         }
     }
+    if robot.dof() > check::MAX_JOINTS {
+        errors.push(
+            file.span(),
+            format!(
+                "{}{} joints; at most {} are supported (the generated code grows as n³)",
+                at(check::MAX_JOINTS, "type"),
+                robot.dof(),
+                check::MAX_JOINTS
+            ),
+        );
+    }
+    for v in robot.values() {
+        if divides_by_zero(v) {
+            errors.push(
+                file.span(),
+                format!("{relative}: division by zero in `{v}`"),
+            );
+        }
+    }
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let checked = check_inertia && loaded.check_inertia.get(i).copied().unwrap_or(true);
+        for problem in check::link(&joint.mass, &joint.inertia, checked) {
+            let key = match problem.part {
+                Part::Mass => "mass",
+                Part::Inertia => "inertia",
+            };
+            errors.push(
+                file.span(),
+                format!("{}joint {}: {}", at(i, key), i + 1, problem.message),
+            );
+        }
+    }
+    Some(robot)
+}
+
+/// The first joint (`None` for gravity) and file key whose value names field `name`.
+fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
+    let names = |v: &Value| {
+        let mut set = std::collections::BTreeSet::new();
+        v.collect_fields(&mut set);
+        set.contains(name)
+    };
+    for (i, j) in robot.joints.iter().enumerate() {
+        let spring = j.spring.as_ref();
+        let keys: [(&'static str, Vec<&Value>); 10] = [
+            ("theta", vec![&j.theta]),
+            ("d", vec![&j.d]),
+            ("a", vec![&j.a]),
+            ("alpha", vec![&j.alpha]),
+            ("mass", vec![&j.mass]),
+            ("com", j.com.iter().collect()),
+            ("inertia", j.inertia.iter().collect()),
+            ("actuator_inertia", vec![&j.actuator_inertia]),
+            (
+                "spring_stiffness",
+                spring.map(|s| &s.stiffness).into_iter().collect(),
+            ),
+            ("spring_rest", spring.map(|s| &s.rest).into_iter().collect()),
+        ];
+        if let Some((key, _)) = keys.iter().find(|(_, vs)| vs.iter().any(|v| names(v))) {
+            return (Some(i), key);
+        }
+    }
+    (None, "gravity")
 }
 
 fn from_attrs(
@@ -485,6 +700,17 @@ fn from_attrs(
                     "the D-H table is empty: give one row `[θ, d, a, α]` per joint",
                 );
             }
+            if let Some((row_span, _)) = rows.get(check::MAX_JOINTS) {
+                errors.push(
+                    *row_span,
+                    format!(
+                        "the D-H table has {} rows; at most {} joints are supported (the \
+                         generated code grows as n³)",
+                        rows.len(),
+                        check::MAX_JOINTS
+                    ),
+                );
+            }
             if !rows.is_empty() && rows.len() != attrs.links.len() {
                 let at = attrs
                     .links
@@ -503,11 +729,8 @@ fn from_attrs(
             for (i, (row_span, [theta, d, a, alpha])) in rows.iter().enumerate() {
                 let n = i + 1;
                 for cell in [theta, d] {
-                    for (name, span) in &cell.fields {
-                        if !fields.iter().any(|f| &f.name == name) {
-                            errors.push(*span, format!("`{name}` is not a field of this struct (values may name `f32` or `f64` fields)"));
-                        }
-                    }
+                    check_names(cell, fields, errors);
+                    check_arithmetic(cell, errors);
                     check_joint_index(&cell.value, n, cell.span, errors);
                 }
                 let kind = match (theta.value.joint_occurrences(), d.value.joint_occurrences()) {
@@ -550,17 +773,22 @@ fn from_attrs(
                     None => Default::default(),
                 };
                 let mut inertia: [Value; 6] = Default::default();
-                if let Some(c) = link.and_then(|l| l.inertia.as_ref()) {
+                if let Some((c, _)) = link.and_then(|l| l.inertia.as_ref()) {
                     for (o, s) in inertia.iter_mut().zip(c) {
                         *o = link_value(Some(s), errors);
                     }
                 }
                 let mass = link_value(link.and_then(|l| l.mass.as_ref()), errors);
-                if let (Some(l), None) = (link, link.and_then(|l| l.mass.as_ref())) {
+                // After an unknown key (a misspelt `mass`?), a missing mass is no news.
+                if let Some(l) = link.filter(|l| l.mass.is_none() && !l.unknown_key) {
                     errors.push(
                         l.span.unwrap_or(span),
                         format!("link {n} has no `mass = ..`"),
                     );
+                }
+                if let Some(l) = link {
+                    let checked = l.check_inertia.or(attrs.check_inertia).unwrap_or(true);
+                    check_link(n, l, checked, &mass, &inertia, errors);
                 }
                 let actuator_inertia =
                     link_value(link.and_then(|l| l.actuator_inertia.as_ref()), errors);
@@ -593,6 +821,36 @@ fn from_attrs(
     }
 }
 
+/// The physical checks of link `n`, each error on the value it is about.
+fn check_link(
+    n: usize,
+    link: &LinkAttr,
+    checked: bool,
+    mass: &Value,
+    inertia: &[Value; 6],
+    errors: &mut Errors,
+) {
+    let finite = |v: &Value| v.exact().map_or(true, |x| x.to_f64().is_finite());
+    // A non-finite literal was reported where it is written; do not report it twice.
+    let mass = if finite(mass) {
+        mass.clone()
+    } else {
+        Value::zero()
+    };
+    let checked = checked && inertia.iter().all(finite);
+    let fallback = link.span.unwrap_or_else(Span::call_site);
+    for problem in check::link(&mass, inertia, checked) {
+        let at = match problem.part {
+            Part::Mass => link.mass.as_ref().map(|m| m.span),
+            Part::Inertia => link.inertia.as_ref().map(|(_, span)| *span),
+        };
+        errors.push(
+            at.unwrap_or(fallback),
+            format!("link {n}: {}", problem.message),
+        );
+    }
+}
+
 fn check_joint_index(v: &Value, row: usize, span: Span, errors: &mut Errors) {
     match v {
         Value::Joint(Some(k)) if *k != row => errors.push(
@@ -605,29 +863,6 @@ fn check_joint_index(v: &Value, row: usize, span: Span, errors: &mut Errors) {
             check_joint_index(b, row, span, errors);
         }
         _ => {}
-    }
-}
-
-/// Checks across fields that the parser cannot see: literal divisions by zero, negative or
-/// non-finite literal masses.
-fn check(robot: &Robot, span: Span, errors: &mut Errors) {
-    if robot.joints.is_empty() {
-        return;
-    }
-    for v in robot.values() {
-        if divides_by_zero(v) {
-            errors.push(span, format!("division by zero in `{v}`"));
-        }
-    }
-    for (i, j) in robot.joints.iter().enumerate() {
-        if let Some(m) = j.mass.exact() {
-            if m.is_negative() {
-                errors.push(span, format!("link {}: the mass {m} is negative", i + 1));
-            }
-        }
-    }
-    if robot.joints.len() > 64 {
-        errors.push(span, "more than 64 joints are not supported");
     }
 }
 

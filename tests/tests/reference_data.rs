@@ -9,15 +9,27 @@ use serde_json::Value;
 const TOLERANCE: f64 = 1e-10;
 
 macro_rules! reference_robot {
-    ($name:ident, $file:literal, $n:literal) => {
+    ($name:ident, $file:literal, $n:literal $(, $key:ident = $value:tt)?) => {
         #[derive(Dynamics)]
-        #[dynamics(file = $file)]
+        #[dynamics(file = $file $(, $key = $value)?)]
         struct $name;
     };
 }
 
-reference_robot!(Puma560, "data/reference/robots/puma560.json", 6);
-reference_robot!(Stanford, "data/reference/robots/stanford.json", 6);
+// PUMA 560 links 1 and 3 and Stanford link 5, as published, break the triangle inequality of
+// principal moments of inertia; the reference data keep them.
+reference_robot!(
+    Puma560,
+    "data/reference/robots/puma560.json",
+    6,
+    check_inertia = false
+);
+reference_robot!(
+    Stanford,
+    "data/reference/robots/stanford.json",
+    6,
+    check_inertia = false
+);
 reference_robot!(Ur5, "data/reference/robots/ur5.json", 6);
 reference_robot!(NikuTwoLink, "data/reference/robots/niku_2link.json", 2);
 reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json", 2);

@@ -1,8 +1,12 @@
-//! Compile-fail tests: each file under `ui/` makes one mistake, and its `.stderr` holds the
-//! error the derive must give, on the offending token. Refresh with `TRYBUILD=overwrite`.
+//! Compile-fail tests: each file under `ui/<category>/` makes one mistake, and its `.stderr`
+//! holds the error the derive must give, on the offending token. The categories are
+//! `attributes` (keys of `#[dynamics(...)]`), `values` (the D-H table and its values),
+//! `fields` (struct fields named by values), `physics` (mass and inertia) and `files`
+//! (description files, which live next to their tests). Refresh with `TRYBUILD=overwrite`,
+//! then read every changed `.stderr`.
 
 #[test]
 fn ui() {
     let t = trybuild::TestCases::new();
-    t.compile_fail("tests/ui/*.rs");
+    t.compile_fail("tests/ui/*/*.rs");
 }

@@ -4,6 +4,7 @@
 
 use super::{parse_value, Convention, Joint, JointKind, Robot, Spring, Value};
 use serde::Deserialize;
+use std::collections::BTreeMap;
 
 /// A value in a description file: a number, or a string holding a value (`"90 deg"`). It is
 /// read and checked while the file is parsed, so that its errors carry a line and column.
@@ -122,6 +123,9 @@ pub struct Loaded {
     pub robot: Robot,
     /// Per joint, whether its inertia tensor is checked (`"check_inertia": false` opts out).
     pub check_inertia: Vec<bool>,
+    /// Per joint, where the value of each key is written (1-based line and column), so that
+    /// checks after loading can point into the file.
+    pub positions: Vec<BTreeMap<String, (usize, usize)>>,
 }
 
 /// An error in a description file, with the 1-based line and column where known.
@@ -201,6 +205,7 @@ fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, FileError> {
             joints,
         },
         check_inertia,
+        positions: Vec::new(),
     })
 }
 
@@ -221,28 +226,217 @@ fn json(text: &str, default_name: &str) -> Result<Loaded, FileError> {
         line: Some(e.line()),
         column: Some(e.column()),
     })?;
-    convert(file, default_name)
+    let mut loaded = convert(file, default_name)?;
+    loaded.positions = json_positions(text);
+    Ok(loaded)
 }
 
 fn toml(text: &str, default_name: &str) -> Result<Loaded, FileError> {
     let file: FileRobot = toml::from_str(text).map_err(|e| {
-        let (line, column) = e.span().map_or((None, None), |s| {
-            let before = text.get(..s.start).unwrap_or(text);
-            let line = before.matches('\n').count() + 1;
-            let column = before.chars().count()
-                - before
-                    .rfind('\n')
-                    .map_or(0, |p| before[..=p].chars().count())
-                + 1;
-            (Some(line), Some(column))
-        });
+        let (line, column) = e
+            .span()
+            .map_or((None, None), |s| line_column(text, s.start));
+        let mut message = e.message().trim_end().to_string();
+        // toml does not say which key is repeated; it is the one its span starts at.
+        if let (true, Some(s)) = (message == "duplicate key", e.span()) {
+            let key = text.get(s.start..).unwrap_or_default();
+            let key = key
+                .split(['=', '\n', ']'])
+                .next()
+                .unwrap_or_default()
+                .trim();
+            if !key.is_empty() {
+                message = format!("duplicate key `{key}`");
+            }
+        }
         FileError {
-            message: e.message().trim_end().to_string(),
+            message,
             line,
             column,
         }
     })?;
-    convert(file, default_name)
+    let mut loaded = convert(file, default_name)?;
+    loaded.positions = toml_positions(text);
+    Ok(loaded)
+}
+
+/// The 1-based line and column (in characters) of a byte offset.
+fn line_column(text: &str, offset: usize) -> (Option<usize>, Option<usize>) {
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let column = before.chars().count()
+        - before
+            .rfind('\n')
+            .map_or(0, |p| before[..=p].chars().count())
+        + 1;
+    (Some(line), Some(column))
+}
+
+fn positions_at(
+    text: &str,
+    joints: impl IntoIterator<Item = Vec<(String, usize)>>,
+) -> Vec<BTreeMap<String, (usize, usize)>> {
+    joints
+        .into_iter()
+        .map(|keys| {
+            keys.into_iter()
+                .filter_map(|(key, offset)| match line_column(text, offset) {
+                    (Some(l), Some(c)) => Some((key, (l, c))),
+                    _ => None,
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Where each joint's values are in TOML text (read a second time, with spans).
+fn toml_positions(text: &str) -> Vec<BTreeMap<String, (usize, usize)>> {
+    #[derive(Deserialize)]
+    struct Joints {
+        #[serde(default)]
+        joints: Vec<BTreeMap<String, toml::Spanned<serde::de::IgnoredAny>>>,
+    }
+    let Ok(file) = toml::from_str::<Joints>(text) else {
+        return Vec::new();
+    };
+    let offsets = file.joints.into_iter().map(|joint| {
+        joint
+            .into_iter()
+            .map(|(key, value)| (key, value.span().start))
+            .collect()
+    });
+    positions_at(text, offsets)
+}
+
+/// Where each joint's values are in JSON text: a scan of the text that the parser has already
+/// accepted (serde_json keeps no positions of values).
+fn json_positions(text: &str) -> Vec<BTreeMap<String, (usize, usize)>> {
+    let mut scan = JsonScan {
+        bytes: text.as_bytes(),
+        at: 0,
+    };
+    let mut joints = Vec::new();
+    scan.object(&mut |scan, key| {
+        if key == "joints" && scan.peek() == Some(b'[') {
+            scan.at += 1;
+            loop {
+                scan.space();
+                match scan.peek() {
+                    Some(b'{') => {
+                        let mut keys = Vec::new();
+                        scan.object(&mut |scan, key| {
+                            keys.push((key.to_string(), scan.at));
+                            scan.value();
+                        });
+                        joints.push(keys);
+                    }
+                    Some(b',') => scan.at += 1,
+                    Some(b']') | None => break,
+                    Some(_) => scan.value(),
+                }
+            }
+            scan.at += 1;
+        } else {
+            scan.value();
+        }
+    });
+    positions_at(text, joints)
+}
+
+/// A cursor over valid JSON.
+struct JsonScan<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl JsonScan<'_> {
+    fn peek(&self) -> Option<u8> {
+        self.bytes.get(self.at).copied()
+    }
+
+    fn space(&mut self) {
+        while self.peek().is_some_and(|b| b.is_ascii_whitespace()) {
+            self.at += 1;
+        }
+    }
+
+    /// A string's raw content; the cursor is on its opening quote.
+    fn string(&mut self) -> &str {
+        self.at += 1;
+        let start = self.at;
+        while let Some(b) = self.peek() {
+            match b {
+                b'\\' => self.at += 2,
+                b'"' => break,
+                _ => self.at += 1,
+            }
+        }
+        let end = self.at.min(self.bytes.len());
+        self.at += 1;
+        std::str::from_utf8(self.bytes.get(start..end).unwrap_or_default()).unwrap_or_default()
+    }
+
+    /// Skips one value (and the space before it).
+    fn value(&mut self) {
+        self.space();
+        match self.peek() {
+            Some(b'"') => {
+                self.string();
+            }
+            Some(b'{' | b'[') => {
+                let mut depth = 0usize;
+                while let Some(b) = self.peek() {
+                    match b {
+                        b'"' => {
+                            self.string();
+                            continue;
+                        }
+                        b'{' | b'[' => depth += 1,
+                        b'}' | b']' => depth = depth.saturating_sub(1),
+                        _ => {}
+                    }
+                    self.at += 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+            }
+            _ => {
+                while self
+                    .peek()
+                    .is_some_and(|b| !matches!(b, b',' | b'}' | b']') && !b.is_ascii_whitespace())
+                {
+                    self.at += 1;
+                }
+            }
+        }
+    }
+
+    /// Walks an object, calling `each` with the cursor on each key's value.
+    fn object(&mut self, each: &mut dyn FnMut(&mut Self, &str)) {
+        self.space();
+        if self.peek() != Some(b'{') {
+            return;
+        }
+        self.at += 1;
+        loop {
+            self.space();
+            match self.peek() {
+                Some(b'"') => {
+                    let key = self.string().to_string();
+                    self.space();
+                    if self.peek() == Some(b':') {
+                        self.at += 1;
+                    }
+                    self.space();
+                    each(self, &key);
+                }
+                Some(b',') => self.at += 1,
+                _ => break,
+            }
+        }
+        self.at += 1;
+    }
 }
 
 /// Reads a robot from JSON text.
@@ -284,15 +478,16 @@ pub fn load(path: &str, text: &str) -> Result<Loaded, FileError> {
     } else if path.ends_with(".json") {
         json(text, stem)
     } else {
-        Err(plain(format!(
-            "cannot tell the format of `{path}`: name it *.json or *.toml"
-        )))
+        Err(plain(
+            "cannot tell the format from the file's extension: name it *.json or *.toml"
+                .to_string(),
+        ))
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{from_json, from_toml};
+    use super::{from_json, from_toml, load};
     use crate::model::{Convention, JointKind};
 
     #[test]
@@ -336,5 +531,19 @@ mod tests {
         assert!(e.message.contains("jionts"));
         let e = from_toml("gravity = [0, 0]\njoints = []", "x").unwrap_err();
         assert_eq!(e.line, Some(1));
+    }
+
+    #[test]
+    fn values_have_positions_for_later_checks() {
+        let json = "{\"gravity\": [0, 0, -9.81], \"name\": \"a{[\\\"\",\n \"joints\": [\n  {\"type\": \"revolute\", \"mass\": 1},\n  {\"type\": \"revolute\",\n   \"mass\": 2, \"inertia\": [1, 2, 3, 0, 0, 0]}]}";
+        let loaded = load("a.json", json).expect("json");
+        assert_eq!(loaded.positions.len(), 2);
+        assert_eq!(loaded.positions[0]["mass"], (3, 32));
+        assert_eq!(loaded.positions[1]["mass"], (5, 12));
+        assert_eq!(loaded.positions[1]["inertia"], (5, 26));
+        let toml = "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\n[[joints]]\ntype = \"prismatic\"\nmass = 2\ninertia = [1, 2, 3, 0, 0, 0]\n";
+        let loaded = load("a.toml", toml).expect("toml");
+        assert_eq!(loaded.positions[0]["mass"], (4, 8));
+        assert_eq!(loaded.positions[1]["inertia"], (9, 11));
     }
 }

@@ -1,0 +1,9 @@
+use dynamics_runtime::Dynamics;
+
+#[derive(Dynamics)]
+#[dynamics(gravity = [0, 0, -9.81], dh = [[q + offset, 0, 1, 0]], link(mass = 1))]
+struct Arm {
+    offset: i32,
+}
+
+fn main() {}
