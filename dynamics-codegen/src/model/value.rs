@@ -76,6 +76,17 @@ impl Value {
         }
     }
 
+    /// The number of nodes of the expression tree.
+    fn size(&self) -> usize {
+        match self {
+            Value::Neg(a) => 1 + a.size(),
+            Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) | Value::Div(a, b) => {
+                1 + a.size() + b.size()
+            }
+            Value::Num(_) | Value::Pi | Value::Field(_) | Value::Joint(_) => 1,
+        }
+    }
+
     /// How often the joint variable occurs.
     #[must_use]
     pub fn joint_occurrences(&self) -> usize {
@@ -203,6 +214,7 @@ impl Parse for Spanned {
     fn parse(input: ParseStream) -> syn::Result<Spanned> {
         let span = input.span();
         let start = input.cursor();
+        bounded_extent(start, 0, &mut 0)?;
         let mut fields = Vec::new();
         let value = parse_sum(input, &mut fields)?;
         let mut end = span;
@@ -221,6 +233,43 @@ impl Parse for Spanned {
             fields,
         })
     }
+}
+
+/// The deepest nesting of parentheses a value may have.
+const MAX_DEPTH: usize = 32;
+/// The most tokens a value may have.
+const MAX_TOKENS: usize = 2000;
+
+/// Rejects a value (the tokens up to the next `,` at this level) that is nested or long enough
+/// to exhaust the stack of the recursive parser and of the tree walks after it.
+fn bounded_extent(
+    mut cursor: syn::buffer::Cursor,
+    depth: usize,
+    count: &mut usize,
+) -> syn::Result<()> {
+    while let Some((token, next)) = cursor.token_tree() {
+        if depth == 0 && matches!(&token, proc_macro2::TokenTree::Punct(p) if p.as_char() == ',') {
+            break;
+        }
+        *count += 1;
+        if *count > MAX_TOKENS {
+            return Err(syn::Error::new(
+                token.span(),
+                format!("a value may have at most {MAX_TOKENS} tokens"),
+            ));
+        }
+        if let Some((inner, span, _)) = cursor.group(proc_macro2::Delimiter::Parenthesis) {
+            if depth >= MAX_DEPTH {
+                return Err(syn::Error::new(
+                    span.open(),
+                    format!("parentheses nested more than {MAX_DEPTH} deep"),
+                ));
+            }
+            bounded_extent(inner, depth + 1, count)?;
+        }
+        cursor = next;
+    }
+    Ok(())
 }
 
 /// Parses a value from text (a description-file string).
@@ -266,6 +315,9 @@ fn parse_product(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::R
     }
 }
 
+/// The most terms a power may expand to.
+const MAX_POWER_SIZE: usize = 4096;
+
 fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
     let base = parse_unary(input, fields)?;
     if !input.peek(Token![^]) {
@@ -278,6 +330,14 @@ fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Res
         return Err(syn::Error::new(
             exponent.span(),
             "exponent must be an integer from 1 to 8",
+        ));
+    }
+    // `x^n` is stored as n − 1 products of copies of `x`, so nested powers grow as a product
+    // of exponents: bound the copies so that `((x^8)^8)^8…` is an error, not a hang.
+    if base.size().saturating_mul(n as usize) > MAX_POWER_SIZE {
+        return Err(syn::Error::new(
+            exponent.span(),
+            format!("this power expands to more than {MAX_POWER_SIZE} terms: write it with fewer nested powers"),
         ));
     }
     let mut value = base.clone();
