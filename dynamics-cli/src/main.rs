@@ -3,7 +3,8 @@
 //!
 //! * `inspect ROBOT [--latex]`: the equations of motion in the book's notation;
 //! * `emit ROBOT`: a standalone Rust module with the code the derive generates;
-//! * `stats ROBOT`: expansion time, operation counts and code size per method;
+//! * `stats ROBOT`: expansion time, operation counts and code size per method, and the cost
+//!   of the readable equations the derive adds;
 //! * `eval ROBOT --q .. [--qd ..] [--qdd ..] [--set NAME=VALUE].. [--json]`: τ, M, C and g.
 //!
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors
@@ -222,6 +223,26 @@ fn stats(robot: &Robot) -> String {
         );
     }
     let _ = writeln!(out, "total generated code: {total} bytes");
+    // What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, within its limits.
+    let start = Instant::now();
+    let inspection = readable::inspect(&eq, robot, Limits::DERIVE);
+    let (text, latex) = (
+        inspection.render(Format::Text),
+        inspection.render(Format::Latex),
+    );
+    let elapsed = start.elapsed();
+    let _ = writeln!(
+        out,
+        "readable equations in the derive: {:.1} ms, {} + {} bytes (text + LaTeX), {}",
+        elapsed.as_secs_f64() * 1e3,
+        text.len(),
+        latex.len(),
+        if inspection.complete() {
+            "complete"
+        } else {
+            "capped: some sections point to `dynamics inspect`"
+        }
+    );
     out
 }
 

@@ -241,7 +241,7 @@ fn stats_per_method() {
         if line.starts_with("total generated code") {
             let t: usize = cols[3].parse().expect("total");
             assert_eq!(t, total, "{out}");
-            continue;
+            break;
         }
         assert_eq!(cols.len(), 8, "{line}");
         let n: Vec<usize> = cols[1..]
