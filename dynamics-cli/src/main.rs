@@ -10,6 +10,7 @@
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors
 //! exit with code 2.
 
+use dynamics_codegen::check;
 use dynamics_codegen::model::{self, Robot};
 use dynamics_codegen::readable::{self, Format, Limits};
 use dynamics_codegen::symbolic::{NodeId, Var};
@@ -94,10 +95,52 @@ fn flags<'a>(options: &'a [String], allowed: &[&str]) -> Result<Vec<&'a str>, Fa
         .collect()
 }
 
-/// Reads and checks a description file; errors carry `file:line:col`.
+/// Reads and checks a description file as the derive does (values, then the physical checks
+/// of each link and the joint count); errors carry `file:line:col`.
 fn load(path: &str) -> Result<Robot, Failure> {
     let text = std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}"), 1))?;
-    model::from_text(path, &text).map_err(|e| Failure(format!("{path}:{e}"), 1))
+    let loaded = model::load(path, &text).map_err(|e| Failure(format!("{path}:{e}"), 1))?;
+    // `file:line:col: ` of joint `i`'s `key`, where the file says it
+    let at = |i: usize, key: &str| {
+        loaded
+            .positions
+            .get(i)
+            .and_then(|p| p.get(key))
+            .map_or_else(
+                || format!("{path}: "),
+                |(line, column)| format!("{path}:{line}:{column}: "),
+            )
+    };
+    let robot = &loaded.robot;
+    let mut problems = Vec::new();
+    if robot.dof() > check::MAX_JOINTS {
+        problems.push(format!(
+            "{}{} joints; at most {} are supported (the generated code grows as n³)",
+            at(check::MAX_JOINTS, "type"),
+            robot.dof(),
+            check::MAX_JOINTS
+        ));
+    }
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let checked = loaded.check_inertia.get(i).copied().unwrap_or(true);
+        for problem in check::link(&joint.mass, &joint.inertia, checked) {
+            let key = match problem.part {
+                check::Part::Mass => "mass",
+                check::Part::Inertia => "inertia",
+            };
+            problems.push(format!(
+                "{}joint {}: {}",
+                at(i, key),
+                i + 1,
+                problem.message
+            ));
+        }
+    }
+    if problems.is_empty() {
+        Ok(loaded.robot)
+    } else {
+        Err(Failure(problems.join("\ndynamics: "), 1))
+    }
 }
 
 /// `two_link` → `TwoLink`.

@@ -165,6 +165,18 @@ fn file_errors_have_line_and_column() {
             "\"sliding\"",
             "unknown variant `sliding`",
         ),
+        (
+            "negative_mass.json",
+            "{\"name\": \"arm\", \"gravity\": [0, 0, -9.81],\n \"joints\": [\n  {\"type\": \"revolute\",\n   \"mass\": -2}\n ]}\n",
+            "-2",
+            "joint 1: the mass is negative",
+        ),
+        (
+            "bad_inertia.toml",
+            "name = \"arm\"\ngravity = [0, 0, -9.81]\n\n[[joints]]\ntype = \"revolute\"\nmass = 1\ninertia = [0, 0.35, 0, 0, 0, 0]\n",
+            "[0, 0.35",
+            "joint 1: the principal moments of inertia",
+        ),
     ];
     for (name, text, at, says) in cases {
         let (path, err) = inspect_bad_file(name, text);
@@ -203,6 +215,23 @@ fn file_errors_have_line_and_column() {
             "{name}: column {col}, want {key_col}..={end_col}: {err}"
         );
     }
+}
+
+/// `check_inertia = false` keeps a published tensor that fails the check (principal moments
+/// 0 + 0 < 0.35), as the derive does; about z0 = z1 the link's inertia is Izz.
+#[test]
+fn check_inertia_opt_out() {
+    let dir = std::env::temp_dir().join(format!("dynamics-cli-opt-out-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("opt_out.toml");
+    std::fs::write(
+        &path,
+        "name = \"arm\"\ngravity = [0, 0, -9.81]\n\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\
+         inertia = [0, 0, 0.35, 0, 0, 0]\ncheck_inertia = false\n",
+    )
+    .expect("write");
+    let out = stdout(&dynamics(&["inspect", &path.to_string_lossy()]));
+    assert!(out.contains("D11 = 0.35"), "{out}");
 }
 
 #[test]
