@@ -24,7 +24,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut forces = Vec::with_capacity(n);
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
-        let vd_parent = vd.add(wd.cross(p)).add(w.cross(w.cross(p)));
+        let vd_parent = vd.add(u_mul(w, wd, p));
         let w_in = j.to_child(w);
         let wd_in = j.to_child(wd);
         vd = j.to_child(vd_parent);
@@ -42,10 +42,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
             }
         }
         let b = &j.body;
-        let f = vd
-            .scale(b.mass)
-            .add(wd.cross(b.h))
-            .add(w.cross(w.cross(b.h)));
+        let f = vd.scale(b.mass).add(u_mul(w, wd, b.h));
         let nn = b
             .inertia_mul(wd)
             .add(w.cross(b.inertia_mul(w)))
@@ -69,4 +66,21 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         child = Some((f, nn));
     }
     tau
+}
+
+/// `U x` with `U = [ω̇]× + [ω]×[ω]×`, that is `ω̇ × x + ω × (ω × x)`, written with the products
+/// `ω_i ω_j` so that the link's centre-of-mass and next-origin terms share them (Khalil).
+fn u_mul<S: Scalar>(w: V3<S>, wd: V3<S>, x: V3<S>) -> V3<S> {
+    let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
+    let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
+    let u = [
+        [-(yy + zz), xy - wd.z, xz + wd.y],
+        [xy + wd.z, -(xx + zz), yz - wd.x],
+        [xz - wd.y, yz + wd.x, -(xx + yy)],
+    ];
+    V3::new(
+        u[0][0] * x.x + u[0][1] * x.y + u[0][2] * x.z,
+        u[1][0] * x.x + u[1][1] * x.y + u[1][2] * x.z,
+        u[2][0] * x.x + u[2][1] * x.y + u[2][2] * x.z,
+    )
 }

@@ -201,6 +201,14 @@ impl Graph {
             let sum = self.mul(c, ta);
             return self.simplified(sum);
         }
+        // c·x + c·y = c·(x + y) and c·x − c·y = c·(x − y): one multiplication fewer.
+        if !ca.is_one() && !ca.is_minus_one() && (ca == cb || ca == cb.neg()) {
+            let y = if ca == cb { tb } else { self.neg(tb) };
+            let sum = self.add(ta, y);
+            let c = self.num(ca);
+            let r = self.mul(c, sum);
+            return self.simplified(r);
+        }
         let (a, b) = if a <= b { (a, b) } else { (b, a) };
         self.intern(Node::Add(a, b))
     }
@@ -445,6 +453,20 @@ mod tests {
         let six_x = g.mul(six, x);
         assert_eq!(g.mul(two, three_x), six_x);
         assert!(matches!(g.node(six_x), Node::Mul(..)));
+        // A common constant factor comes out: 3x + 3y = 3(x + y), 3x − 3y = 3(x − y).
+        let y = g.var(Var::Param(1));
+        let three_y = g.mul(three, y);
+        let x_plus_y = g.add(x, y);
+        let factored = g.mul(three, x_plus_y);
+        assert_eq!(g.add(three_x, three_y), factored);
+        let minus_three_y = g.neg(three_y);
+        let ny = g.neg(y);
+        let x_minus_y = g.add(x, ny);
+        let factored = g.mul(three, x_minus_y);
+        assert_eq!(g.add(three_x, minus_three_y), factored);
+        // Different factors stay apart: 2x + 3y keeps its two products.
+        let sum = g.add(two_x, three_y);
+        assert!(matches!(g.node(sum), Node::Add(..)));
     }
 
     #[test]
