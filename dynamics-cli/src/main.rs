@@ -14,7 +14,7 @@ use dynamics_codegen::check;
 use dynamics_codegen::model::{self, Robot};
 use dynamics_codegen::readable::{self, Format, Limits};
 use dynamics_codegen::symbolic::{NodeId, Var};
-use dynamics_codegen::{derive, methods, Equations};
+use dynamics_codegen::{derive, generate, Equations};
 use quote::quote;
 use std::fmt::Write;
 use std::process::ExitCode;
@@ -171,12 +171,11 @@ fn emit(path: &str, robot: &Robot) -> String {
         .collect();
     let fields = idents.iter().map(|i| quote!(self.#i)).collect();
     let n = eq.dof;
-    let fns = methods(&eq, &krate, fields).into_iter().map(|m| {
-        let doc = format!(" {}", method_doc(m.name));
-        let f = dynamics_codegen::method(m.name, n, &krate, &m.body);
-        quote!(#[doc = #doc] #f)
-    });
+    let generated = generate(&eq, &krate, fields);
     let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &quote!(), &|name| {
+        Some(format!(" {}", method_doc(name)))
+    });
     let struct_doc = format!(" {}: {n} joints, read from `{path}`.", robot.name);
     let def = if idents.is_empty() {
         quote!(pub struct #ty;)
@@ -188,9 +187,7 @@ fn emit(path: &str, robot: &Robot) -> String {
         #[doc = #struct_doc]
         #[derive(Clone, Copy, Debug, Default, PartialEq)]
         #def
-        impl #krate::Dynamics<#n> for #ty {
-            #(#fns)*
-        }
+        #items
     };
     let body = match syn::parse2::<syn::File>(tokens.clone()) {
         Ok(file) => prettyplease::unparse(&file),
@@ -231,7 +228,7 @@ fn stats(robot: &Robot) -> String {
             quote!(self.#ident)
         })
         .collect();
-    let methods = methods(&eq, &krate, fields);
+    let generated = generate(&eq, &krate, fields);
     let elapsed = start.elapsed();
     let mut out = String::new();
     let _ = writeln!(
@@ -248,7 +245,16 @@ fn stats(robot: &Robot) -> String {
         "method", "mul", "add", "neg", "div", "trig", "flops", "bytes"
     );
     let mut total = 0;
-    for m in &methods {
+    if let Some(c) = &generated.configuration {
+        let bytes = c.tokens.to_string().len();
+        total += bytes;
+        let _ = writeln!(
+            out,
+            "{:<18} {:>42} {:>9}",
+            "(shared)", "computed once, counted below", bytes
+        );
+    }
+    for m in &generated.methods {
         let bytes = m.body.to_string().len();
         total += bytes;
         let o = m.ops;

@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release -p dynamics-codegen --example stats -- tests/data/reference/robots/puma560.json`
 
-use dynamics_codegen::{derive, methods, model};
+use dynamics_codegen::{derive, generate, model};
 use quote::quote;
 use std::time::Instant;
 
@@ -22,7 +22,8 @@ fn main() {
         let ident = proc_macro2::Ident::new(f, proc_macro2::Span::call_site());
         quote!(self.#ident)
     });
-    let methods = methods(&eq, &krate, fields.collect());
+    let generated = generate(&eq, &krate, fields.collect());
+    let methods = &generated.methods;
     let elapsed = start.elapsed();
     println!(
         "{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms",
@@ -36,7 +37,15 @@ fn main() {
         "method", "mul", "add", "neg", "div", "trig", "flops", "bytes"
     );
     let mut total = 0;
-    for m in &methods {
+    if let Some(c) = &generated.configuration {
+        let bytes = c.tokens.to_string().len();
+        total += bytes;
+        println!(
+            "{:<18} {:>42} {:>9}",
+            "(configuration)", "shared: counted in each method", bytes
+        );
+    }
+    for m in methods {
         let bytes = m.body.to_string().len();
         total += bytes;
         let o = m.ops;

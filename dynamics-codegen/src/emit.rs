@@ -1,13 +1,20 @@
-//! Emission: a set of graph outputs becomes one straight-line Rust function body.
+//! Emission: the graph's outputs become straight-line Rust.
 //!
-//! Only the nodes the outputs need are emitted, in the arena's order (children first). First
-//! come the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
+//! Everything that depends on the parameters and `q` alone (constants, struct fields, the
+//! sines and cosines, the kinematics, `M`, `g`, the `Γ_ijk`) is written once, in a shared
+//! *configuration* function returning a struct; each method calls it and adds only its terms in
+//! `q̇` and `q̈`. The configuration function is `#[inline(always)]`, so each method compiles to
+//! just the operations it needs, as if written alone, while the source holds each expression
+//! once.
+//!
+//! Within a function, only the nodes the outputs need are emitted, in the arena's order
+//! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
 //! (`let p_m2: T = param(self.m2);`) and the nodes that depend on them alone; then each needed
 //! joint's sine and cosine, computed once (`let (s1, c1) = T::sin_cos(q[0]);`); then the rest.
 //! A node used once is written inline in its user; a node used more often gets a `let tN`,
 //! numbered in order of appearance; each output element gets a name saying what it is
-//! (`m1_2` for M₁₂, `tau3` for τ₃). `a + (−b)` is written `a − b`, and parentheses appear
-//! only where precedence or the order of evaluation needs them.
+//! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, and
+//! parentheses appear only where precedence or the order of evaluation needs them.
 
 use crate::derive::Equations;
 use crate::symbolic::{Graph, Node, NodeId, Var};
@@ -33,10 +40,8 @@ pub struct OpCount {
 pub struct Body {
     /// The statements and the result expression.
     pub tokens: TokenStream,
-    /// Its operations.
+    /// Its operations, shared code included.
     pub ops: OpCount,
-    /// The struct fields (indices into [`Equations::fields`]) it reads.
-    pub fields_read: Vec<usize>,
 }
 
 impl OpCount {
@@ -48,6 +53,7 @@ impl OpCount {
 }
 
 /// The shape of a function's result.
+#[derive(Clone, Copy)]
 pub enum Shape<'a> {
     /// A scalar.
     Scalar(NodeId),
@@ -79,11 +85,163 @@ fn local(name: &str) -> proc_macro2::Ident {
     proc_macro2::Ident::new(name, Span::mixed_site())
 }
 
-/// Emits the body of a function computing `shape` from `eq`, and counts its operations. Its
-/// output elements are named after `output` (`m` gives `m1_2`; `tau` gives `tau3`).
+/// One output of [`emit`]: the prefix of its element names (`m` gives `m1_2`, `tau` gives
+/// `tau3`) and its shape.
+pub struct Output<'a> {
+    /// Element name prefix.
+    pub prefix: &'a str,
+    /// Shape.
+    pub shape: Shape<'a>,
+}
+
+/// The code shared by all functions: everything that depends on the parameters and `q` alone,
+/// computed once by one inlined function and handed over as a struct.
+pub struct Configuration {
+    /// The struct's fields, in order.
+    pub fields: Vec<proc_macro2::Ident>,
+    /// The function's body, ending in the struct literal of `struct_name`.
+    pub tokens: TokenStream,
+    /// The struct fields of the robot (indices into [`Equations::fields`]) it reads.
+    pub fields_read: Vec<usize>,
+}
+
+/// Everything [`emit`] writes.
+pub struct Emission {
+    /// The shared configuration function, if any output needs one.
+    pub configuration: Option<Configuration>,
+    /// One body per output, in order.
+    pub bodies: Vec<Body>,
+}
+
+/// Name of the configuration struct.
+pub const CONFIGURATION_STRUCT: &str = "__DynamicsConfiguration";
+/// Name of the (inherent, hidden) method computing it.
+pub const CONFIGURATION_FN: &str = "__dynamics_configuration";
+
+/// Emits the functions computing `outputs` from `eq`. What depends only on the parameters and
+/// `q` (the trigonometry, the kinematics, `M`, `g`, the `Γ_ijk`) goes into one shared
+/// configuration function; each output's body calls it and adds the terms in `q̇` and `q̈`.
+/// Inlined, the compiler keeps of the shared code only what each function reads, so the run
+/// time is that of separate functions, and the code is written once.
 #[must_use]
-pub fn body(eq: &Equations, shape: &Shape, output: &str, ctx: &Context) -> Body {
-    Emitter::new(eq, ctx).run(shape, output)
+pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
+    let class = classes(eq);
+    // Per output, the parameter- and q-only nodes its own code reads.
+    let mut shared = vec![false; eq.graph.len()];
+    for o in outputs {
+        for id in boundary(eq, &class, &o.shape.outputs()) {
+            shared[id.index()] = true;
+        }
+    }
+    let boundary: Vec<NodeId> = eq
+        .graph
+        .nodes()
+        .filter(|(id, _)| shared[id.index()])
+        .map(|(id, _)| id)
+        .collect();
+    // Field names: outputs computed entirely in the configuration keep their names (`m1_2`,
+    // `g3`); leaves keep theirs (`s1`, `p_m2`, `k4`); the rest are numbered temporaries.
+    let mut field_names: Vec<Option<String>> = vec![None; eq.graph.len()];
+    for o in outputs {
+        let e = Emitter::new(eq, Some(ctx));
+        for (id, name) in e.output_names(&o.shape, o.prefix) {
+            if shared[id.index()] && field_names[id.index()].is_none() {
+                field_names[id.index()] = Some(name);
+            }
+        }
+    }
+    let configuration = (!boundary.is_empty()).then(|| {
+        let mut e = Emitter::new(eq, Some(ctx));
+        e.configuration(&boundary, &field_names)
+    });
+    let x = local("x");
+    let bodies = outputs
+        .iter()
+        .map(|o| {
+            let mut e = Emitter::new(eq, Some(ctx));
+            if let Some(c) = &configuration {
+                for (&id, field) in boundary.iter().zip(&c.fields) {
+                    e.names[id.index()] = Some(quote!(#x.#field));
+                    e.stop[id.index()] = true;
+                }
+            }
+            e.function(&o.shape, o.prefix, &x)
+        })
+        .collect();
+    Emission {
+        configuration,
+        bodies,
+    }
+}
+
+/// What a node depends on: 0 for parameters and constants only, 1 for `q` too, 2 for `q̇` or
+/// `q̈`.
+fn classes(eq: &Equations) -> Vec<u8> {
+    let e = Emitter::new(eq, None);
+    let mut class = vec![0u8; eq.graph.len()];
+    for (id, node) in eq.graph.nodes() {
+        class[id.index()] = match node {
+            Node::Var(Var::Param(_)) | Node::Const(_) => 0,
+            Node::Var(Var::Qd(_) | Var::Qdd(_)) => 2,
+            Node::Var(Var::Q(_)) => 1,
+            _ => e
+                .operands(id)
+                .iter()
+                .map(|c| class[c.index()])
+                .max()
+                .unwrap_or(1)
+                .max(u8::from(matches!(
+                    node,
+                    Node::Var(Var::SinQ(_) | Var::CosQ(_))
+                ))),
+        };
+    }
+    class
+}
+
+/// The nodes without `q̇` and `q̈` that the code of `outputs` reads: outputs of class ≤ 1 and
+/// operands of its class-2 nodes, except zero, one and `q_i`, which are written in place.
+fn boundary(eq: &Equations, class: &[u8], outputs: &[NodeId]) -> Vec<NodeId> {
+    let e = Emitter::new(eq, None);
+    let mut seen = vec![false; eq.graph.len()];
+    let mut found = Vec::new();
+    let mut stack = outputs.to_vec();
+    while let Some(id) = stack.pop() {
+        if std::mem::replace(&mut seen[id.index()], true) {
+            continue;
+        }
+        if class[id.index()] == 2 {
+            stack.extend(e.operands(id));
+        } else if !matches!(eq.graph.node(id), Node::Var(Var::Q(_)))
+            && !matches!(eq.graph.node(id), Node::Const(c) if c.is_zero() || c.is_one())
+        {
+            found.push(id);
+        }
+    }
+    found
+}
+
+/// Operation counts of the code computing `outputs`, shared parts included: what a function
+/// costs once the compiler has inlined the configuration and dropped what it does not read.
+#[must_use]
+pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
+    let mut e = Emitter::new(eq, None);
+    e.mark(outputs);
+    let mut ops = OpCount::default();
+    for (id, node) in eq.graph.nodes() {
+        if !e.needed[id.index()] {
+            continue;
+        }
+        match node {
+            Node::Add(..) => ops.add += 1,
+            Node::Mul(..) => ops.mul += 1,
+            Node::Neg(_) => ops.neg += 1,
+            Node::Recip(_) => ops.div += 1,
+            Node::Sin(_) | Node::Cos(_) | Node::Var(Var::SinQ(_) | Var::CosQ(_)) => ops.trig += 1,
+            Node::Const(_) | Node::Var(_) => {}
+        }
+    }
+    ops
 }
 
 /// Where an expression is written, which decides whether it needs parentheses.
@@ -104,17 +262,20 @@ enum Place {
 struct Emitter<'a> {
     graph: &'a Graph,
     eq: &'a Equations,
-    ctx: &'a Context<'a>,
+    ctx: Option<&'a Context<'a>>,
     uses: Vec<u32>,
     needed: Vec<bool>,
-    /// The local each bound node (and each constant) is known by.
-    names: Vec<Option<proc_macro2::Ident>>,
+    /// What each bound node (and each constant) is read as: a local, or a field of the
+    /// configuration.
+    names: Vec<Option<TokenStream>>,
+    /// Nodes computed elsewhere (the configuration's fields): marking stops there.
+    stop: Vec<bool>,
     temporaries: usize,
     ops: OpCount,
 }
 
 impl<'a> Emitter<'a> {
-    fn new(eq: &'a Equations, ctx: &'a Context<'a>) -> Emitter<'a> {
+    fn new(eq: &'a Equations, ctx: Option<&'a Context<'a>>) -> Emitter<'a> {
         let n = eq.graph.len();
         Emitter {
             graph: &eq.graph,
@@ -123,6 +284,7 @@ impl<'a> Emitter<'a> {
             uses: vec![0; n],
             needed: vec![false; n],
             names: vec![None; n],
+            stop: vec![false; n],
             temporaries: 0,
             ops: OpCount::default(),
         }
@@ -159,7 +321,7 @@ impl<'a> Emitter<'a> {
             self.uses[o.index()] += 1;
         }
         while let Some(id) = stack.pop() {
-            if std::mem::replace(&mut self.needed[id.index()], true) {
+            if std::mem::replace(&mut self.needed[id.index()], true) || self.stop[id.index()] {
                 continue;
             }
             for c in self.operands(id) {
@@ -180,7 +342,7 @@ impl<'a> Emitter<'a> {
 
     fn leaf(&self, id: NodeId) -> TokenStream {
         if let Some(name) = &self.names[id.index()] {
-            return quote!(#name);
+            return name.clone();
         }
         match self.graph.node(id) {
             Node::Const(c) if c.is_zero() => quote!(T::ZERO),
@@ -240,7 +402,7 @@ impl<'a> Emitter<'a> {
             return self.leaf(id);
         }
         if let Some(name) = &self.names[id.index()] {
-            return quote!(#name);
+            return name.clone();
         }
         let wrap = match self.graph.node(id) {
             Node::Add(..) => place != Place::Top && place != Place::AddLeft,
@@ -300,7 +462,7 @@ impl<'a> Emitter<'a> {
     /// `let name = expr;` for node `id`, which from then on is read by its name.
     fn bind(&mut self, id: NodeId, name: proc_macro2::Ident) -> TokenStream {
         let e = self.define(id);
-        self.names[id.index()] = Some(name.clone());
+        self.names[id.index()] = Some(quote!(#name));
         quote!(let #name = #e;)
     }
 
@@ -336,28 +498,17 @@ impl<'a> Emitter<'a> {
         named
     }
 
-    fn run(mut self, shape: &Shape, output: &str) -> Body {
-        let krate = self.ctx.krate;
-        let outputs = shape.outputs();
-        self.mark(&outputs);
-        let mut output_names = self.output_names(shape, output);
-        // A scalar result is returned as an expression, not bound.
-        if matches!(shape, Shape::Scalar(_)) {
-            output_names.clear();
-        }
-        // A node depends on the state if it reads q, qd or qdd.
-        let n = self.graph.len();
-        let mut state = vec![false; n];
-        for (id, node) in self.graph.nodes() {
-            state[id.index()] = match node {
-                Node::Var(Var::Param(_)) | Node::Const(_) => false,
-                Node::Var(_) => true,
-                _ => self.operands(id).iter().any(|c| state[c.index()]),
-            };
-        }
-        let mut prelude = Vec::new();
+    /// The body of the configuration function: computes `boundary` and returns it as the
+    /// configuration struct, each node under its field name where `field_names` has one.
+    fn configuration(
+        &mut self,
+        boundary: &[NodeId],
+        field_names: &[Option<String>],
+    ) -> Configuration {
+        let ctx = self.ctx.expect("emission has a context");
+        let krate = ctx.krate;
+        self.mark(boundary);
         let mut statements = Vec::new();
-        let mut fields_read = Vec::new();
         // Constants, once each.
         let mut constants = 0;
         for (id, _) in self.graph.nodes() {
@@ -365,50 +516,102 @@ impl<'a> Emitter<'a> {
                 let value = self.leaf(id);
                 constants += 1;
                 let k = local(&format!("k{constants}"));
-                prelude.push(quote!(let #k: T = #value;));
-                self.names[id.index()] = Some(k);
+                statements.push(quote!(let #k: T = #value;));
+                self.names[id.index()] = Some(quote!(#k));
             }
         }
         // Parameters, read once.
         let param = local("param");
         let mut params = Vec::new();
+        let mut fields_read = Vec::new();
         for (id, node) in self.graph.nodes() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
                     fields_read.push(usize::from(k));
                     let name = self.leaf(id);
-                    let field = &self.ctx.fields[usize::from(k)];
+                    let field = &ctx.fields[usize::from(k)];
                     params.push(quote!(let #name: T = #param(#field);));
                 }
             }
         }
         if !params.is_empty() {
-            prelude.push(quote!(use #krate::__private::param as #param;));
-            prelude.extend(params);
+            statements.push(quote!(use #krate::__private::param as #param;));
+            statements.extend(params);
         }
-        let needs_name = |me: &Self, id: NodeId| {
-            !me.is_leaf(id) && (me.uses[id.index()] > 1 || outputs.contains(&id))
+        let class = classes(self.eq);
+        let is_boundary = {
+            let mut b = vec![false; self.graph.len()];
+            for id in boundary {
+                b[id.index()] = true;
+            }
+            b
         };
-        for phase_state in [false, true] {
-            if phase_state {
+        for phase in [0, 1] {
+            if phase == 1 {
                 self.sines_and_cosines(&mut statements);
             }
             for (id, _) in self.graph.nodes() {
                 let i = id.index();
-                if !self.needed[i] || state[i] != phase_state || !needs_name(&self, id) {
+                if !self.needed[i] || class[i] != phase || self.is_leaf(id) {
                     continue;
                 }
-                let name = match output_names.iter().find(|(n, _)| *n == id) {
-                    Some((_, name)) => local(name),
+                if self.uses[i] <= 1 && !is_boundary[i] {
+                    continue;
+                }
+                let name = match &field_names[i] {
+                    Some(name) => local(name),
                     None => self.temporary(),
                 };
-                let line = self.bind(id, name);
-                if phase_state {
-                    statements.push(line);
-                } else {
-                    prelude.push(line);
-                }
+                statements.push(self.bind(id, name));
             }
+        }
+        // The struct literal, one field per boundary node, named as its local.
+        let locals: Vec<TokenStream> = boundary.iter().map(|&id| self.leaf(id)).collect();
+        let fields = locals
+            .iter()
+            .map(|l| proc_macro2::Ident::new(&l.to_string(), Span::call_site()))
+            .collect();
+        let ty = proc_macro2::Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        Configuration {
+            fields,
+            tokens: quote!(#(#statements)* #ty { #(#locals),* }),
+            fields_read,
+        }
+    }
+
+    /// A function's body computing `shape`: the configuration read as `x` where used, then
+    /// the terms in `q̇` and `q̈`, then the result.
+    fn function(mut self, shape: &Shape, output: &str, x: &proc_macro2::Ident) -> Body {
+        let outputs = shape.outputs();
+        self.mark(&outputs);
+        let mut output_names = self.output_names(shape, output);
+        // A scalar result is returned as an expression, not bound.
+        if matches!(shape, Shape::Scalar(_)) {
+            output_names.clear();
+        }
+        let mut statements = Vec::new();
+        let reads_configuration = self
+            .graph
+            .nodes()
+            .any(|(id, _)| self.stop[id.index()] && self.needed[id.index()]);
+        if reads_configuration {
+            let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
+            let q = local("q");
+            statements.push(quote!(let #x = self.#f(#q);));
+        }
+        for (id, _) in self.graph.nodes() {
+            let i = id.index();
+            if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
+                continue;
+            }
+            if self.uses[i] <= 1 && !outputs.contains(&id) {
+                continue;
+            }
+            let name = match output_names.iter().find(|(n, _)| *n == id) {
+                Some((_, name)) => local(name),
+                None => self.temporary(),
+            };
+            statements.push(self.bind(id, name));
         }
         let result = match shape {
             Shape::Scalar(id) => self.expr(*id, Place::Top),
@@ -430,9 +633,8 @@ impl<'a> Emitter<'a> {
             }
         };
         Body {
-            tokens: quote!(#(#prelude)* #(#statements)* #result),
-            ops: self.ops,
-            fields_read,
+            tokens: quote!(#(#statements)* #result),
+            ops: count(self.eq, &outputs),
         }
     }
 

@@ -48,44 +48,179 @@ pub struct Method {
     pub name: &'static str,
     /// The body.
     pub body: TokenStream,
-    /// Its operations.
+    /// Its operations, the shared configuration's included.
     pub ops: OpCount,
-    /// The struct fields (indices into [`Equations::fields`]) it reads.
-    pub fields_read: Vec<usize>,
 }
 
-/// The generated methods of the [`Equations`], reading struct fields through `fields`.
+/// The generated code of a robot: the shared configuration (see [`emit::emit`]) and the
+/// methods of the `Dynamics` impl.
+pub struct Generated {
+    /// Number of joints.
+    pub dof: usize,
+    /// The configuration function's struct fields and body, if any method reads it.
+    pub configuration: Option<emit::Configuration>,
+    /// The methods, in the trait's order.
+    pub methods: Vec<Method>,
+}
+
+/// The generated code of the [`Equations`], reading struct fields through `fields`.
 #[must_use]
-pub fn methods(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Vec<Method> {
-    use emit::Shape;
+pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Generated {
+    use emit::{Output, Shape};
     let ctx = emit::Context { krate, fields };
     // Each method with the name of its output elements (`m1_2`, `tau3`).
-    let shapes: [(&'static str, &str, Shape); 8] = [
-        ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
-        ("coriolis_matrix", "cor", Shape::Matrix(&eq.coriolis)),
+    let outputs: [(&'static str, Output); 8] = [
+        (
+            "mass_matrix",
+            Output {
+                prefix: "m",
+                shape: Shape::Matrix(&eq.mass),
+            },
+        ),
+        (
+            "coriolis_matrix",
+            Output {
+                prefix: "cor",
+                shape: Shape::Matrix(&eq.coriolis),
+            },
+        ),
         (
             "coriolis_torques",
-            "cqd",
-            Shape::Vector(&eq.coriolis_torques),
+            Output {
+                prefix: "cqd",
+                shape: Shape::Vector(&eq.coriolis_torques),
+            },
         ),
-        ("gravity_torques", "g", Shape::Vector(&eq.gravity)),
-        ("bias_torques", "h", Shape::Vector(&eq.bias)),
-        ("inverse_dynamics", "tau", Shape::Vector(&eq.tau)),
-        ("kinetic_energy", "k", Shape::Scalar(eq.kinetic_energy)),
-        ("potential_energy", "p", Shape::Scalar(eq.potential_energy)),
+        (
+            "gravity_torques",
+            Output {
+                prefix: "g",
+                shape: Shape::Vector(&eq.gravity),
+            },
+        ),
+        (
+            "bias_torques",
+            Output {
+                prefix: "h",
+                shape: Shape::Vector(&eq.bias),
+            },
+        ),
+        (
+            "inverse_dynamics",
+            Output {
+                prefix: "tau",
+                shape: Shape::Vector(&eq.tau),
+            },
+        ),
+        (
+            "kinetic_energy",
+            Output {
+                prefix: "k",
+                shape: Shape::Scalar(eq.kinetic_energy),
+            },
+        ),
+        (
+            "potential_energy",
+            Output {
+                prefix: "p",
+                shape: Shape::Scalar(eq.potential_energy),
+            },
+        ),
     ];
-    shapes
-        .into_iter()
-        .map(|(name, output, shape)| {
-            let b = emit::body(eq, &shape, output, &ctx);
-            Method {
-                name,
-                body: b.tokens,
-                ops: b.ops,
-                fields_read: b.fields_read,
-            }
+    let shapes: Vec<Output> = outputs
+        .iter()
+        .map(|(_, o)| Output {
+            prefix: o.prefix,
+            shape: o.shape,
         })
-        .collect()
+        .collect();
+    let emission = emit::emit(eq, &shapes, &ctx);
+    let methods = outputs
+        .iter()
+        .zip(emission.bodies)
+        .map(|((name, _), b)| Method {
+            name,
+            body: b.tokens,
+            ops: b.ops,
+        })
+        .collect();
+    Generated {
+        dof: eq.dof,
+        configuration: emission.configuration,
+        methods,
+    }
+}
+
+impl Generated {
+    /// Size of the generated code, in bytes of its token text.
+    #[must_use]
+    pub fn code_size(&self) -> usize {
+        self.configuration
+            .as_ref()
+            .map_or(0, |c| c.tokens.to_string().len())
+            + self
+                .methods
+                .iter()
+                .map(|m| m.body.to_string().len())
+                .sum::<usize>()
+    }
+
+    /// The items for the robot type `ident`: the configuration struct and the hidden inherent
+    /// method computing it, and the `Dynamics` impl. `docs` gives each method's doc comment.
+    #[must_use]
+    pub fn items(
+        &self,
+        krate: &TokenStream,
+        ident: &syn::Ident,
+        generics: &syn::Generics,
+        prologue: &TokenStream,
+        docs: &dyn Fn(&str) -> Option<String>,
+    ) -> TokenStream {
+        let n = self.dof;
+        let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+        let configuration = self.configuration.as_ref().map(|c| {
+            let ty = syn::Ident::new(emit::CONFIGURATION_STRUCT, proc_macro2::Span::call_site());
+            let f = syn::Ident::new(emit::CONFIGURATION_FN, proc_macro2::Span::call_site());
+            let fields = &c.fields;
+            let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
+            let body = &c.tokens;
+            quote! {
+                /// What the dynamics need from the parameters and `q` alone, computed once.
+                #[doc(hidden)]
+                #[allow(non_camel_case_types)]
+                struct #ty<T> { #(#fields: T),* }
+                #[automatically_derived]
+                impl #impl_generics #ident #ty_generics #where_clause {
+                    // Inlined into each method, which keeps of it only what it reads.
+                    #[doc(hidden)]
+                    #[inline(always)]
+                    #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+                    fn #f<T: #krate::Real>(&self, #q: &[T; #n]) -> #ty<T> {
+                        #prologue
+                        #body
+                    }
+                }
+            }
+        });
+        // Without a configuration, the prologue goes to the first method.
+        let mut prologue = self.configuration.is_none().then_some(prologue);
+        let fns = self.methods.iter().map(|m| {
+            let body = &m.body;
+            let first = prologue.take();
+            let f = method(m.name, n, krate, &quote!(#first #body));
+            match docs(m.name) {
+                Some(doc) => quote!(#[doc = #doc] #f),
+                None => f,
+            }
+        });
+        quote! {
+            #configuration
+            #[automatically_derived]
+            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
+                #(#fns)*
+            }
+        }
+    }
 }
 
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
@@ -99,25 +234,28 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             quote!(self.#ident)
         })
         .collect();
-    let n = eq.dof;
-    let methods = methods(&eq, &krate, fields);
+    let generated = generate(&eq, &krate, fields);
     // A field the description names may drop out of every equation (a gravity magnitude on a
     // horizontal axis); reading it once keeps the user's crate free of dead-code warnings.
+    let read = generated
+        .configuration
+        .as_ref()
+        .map_or(&[][..], |c| &c.fields_read[..]);
     let unread: Vec<proc_macro2::Ident> = eq
         .fields
         .iter()
         .enumerate()
-        .filter(|(k, _)| !methods.iter().any(|m| m.fields_read.contains(k)))
+        .filter(|(k, _)| !read.contains(k))
         .map(|(_, f)| syn::Ident::new(f, proc_macro2::Span::call_site()))
         .collect();
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
-    let fns = methods.iter().map(|m| {
-        let body = &m.body;
-        let touch = (m.name == "potential_energy" && !unread.is_empty())
-            .then(|| quote!(let _ = (#(&self.#unread,)*);));
-        method(m.name, n, &krate, &quote!(#touch #body))
-    });
+    let touch = (!unread.is_empty()).then(|| quote!(let _ = (#(&self.#unread,)*);));
+    let items = generated.items(
+        &krate,
+        &input.ident,
+        &input.generics,
+        &quote!(#touch),
+        &|_| None,
+    );
     let equations = equations(input, &eq, &parsed.robot);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
@@ -127,10 +265,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     quote! {
         const _: () = {
             #track
-            #[automatically_derived]
-            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
-                #(#fns)*
-            }
+            #items
             #equations
         };
     }
