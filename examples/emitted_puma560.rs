@@ -7,6 +7,645 @@
 /// puma560: 6 joints, read from `robots/puma560.toml`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Puma560;
+/// What the dynamics need from the parameters and `q` alone, computed once.
+#[doc(hidden)]
+#[allow(non_camel_case_types)]
+struct __DynamicsConfiguration<T> {
+    k1: T,
+    s2: T,
+    c2: T,
+    k2: T,
+    s3: T,
+    c3: T,
+    k3: T,
+    k4: T,
+    k5: T,
+    s4: T,
+    c4: T,
+    s5: T,
+    c5: T,
+    k6: T,
+    s6: T,
+    c6: T,
+    k7: T,
+    k8: T,
+    k9: T,
+    k10: T,
+    k11: T,
+    k12: T,
+    k13: T,
+    k14: T,
+    k15: T,
+    k16: T,
+    k17: T,
+    k18: T,
+    k19: T,
+    k20: T,
+    k21: T,
+    k22: T,
+    k23: T,
+    k24: T,
+    k25: T,
+    k26: T,
+    k27: T,
+    k28: T,
+    k29: T,
+    k30: T,
+    k31: T,
+    k32: T,
+    k33: T,
+    m4_6: T,
+    t3: T,
+    k34: T,
+    m4_4: T,
+    t5: T,
+    k35: T,
+    k38: T,
+    k39: T,
+    m3_4: T,
+    m3_3: T,
+    m2_3: T,
+    k41: T,
+    m2_2: T,
+    t65: T,
+    m1_2: T,
+    m1_1: T,
+    t68: T,
+    m1_3: T,
+    m2_4: T,
+    m1_4: T,
+    t86: T,
+    m3_5: T,
+    m2_5: T,
+    t107: T,
+    m1_5: T,
+    m2_6: T,
+    t116: T,
+    m1_6: T,
+    t117: T,
+    t118: T,
+    t119: T,
+    g5: T,
+    g4: T,
+    g3: T,
+    g2: T,
+    g1: T,
+    k50: T,
+    k51: T,
+    k52: T,
+    k53: T,
+    k54: T,
+    k55: T,
+    k56: T,
+    p: T,
+    t128: T,
+    t135: T,
+    t136: T,
+    t144: T,
+    t146: T,
+    t148: T,
+    t157: T,
+    t162: T,
+    t166: T,
+    t167: T,
+    t175: T,
+    t184: T,
+    t196: T,
+    t200: T,
+    t205: T,
+    t207: T,
+    t208: T,
+    t209: T,
+    t210: T,
+    t211: T,
+    k66: T,
+    t212: T,
+    t213: T,
+    t214: T,
+    k67: T,
+    t215: T,
+    t216: T,
+    t217: T,
+    k68: T,
+    t218: T,
+    t219: T,
+    t220: T,
+    t221: T,
+    t222: T,
+    t223: T,
+    t224: T,
+    t225: T,
+    t226: T,
+    t227: T,
+    t228: T,
+    t229: T,
+    t230: T,
+    t231: T,
+    t232: T,
+    t233: T,
+    t234: T,
+    t235: T,
+    t236: T,
+}
+#[automatically_derived]
+impl Puma560 {
+    #[doc(hidden)]
+    #[inline(always)]
+    #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+    fn __dynamics_configuration<T: ::dynamics_runtime::Real>(
+        &self,
+        q: &[T; 6usize],
+    ) -> __DynamicsConfiguration<T> {
+        let k1: T = T::from_f64(0.5);
+        let k2: T = T::from_f64(0.4318);
+        let k3: T = T::from_f64(0.15005);
+        let k4: T = T::from_f64(0.0203);
+        let k5: T = T::from_f64(-0.0203);
+        let k6: T = T::from_f64(0.0003);
+        let k7: T = T::from_f64(0.00004);
+        let k8: T = T::from_f64(0.0070992);
+        let k9: T = T::from_f64(-0.0070992);
+        let k10: T = T::from_f64(0.023751);
+        let k11: T = T::from_f64(-0.023751);
+        let k12: T = T::from_f64(-0.0047376);
+        let k13: T = T::from_f64(-0.0004);
+        let k14: T = T::from_f64(0.00288);
+        let k15: T = T::from_f64(0.00024216);
+        let k16: T = T::from_f64(-0.00024216);
+        let k17: T = T::from_f64(-0.00288);
+        let k18: T = T::from_f64(0.00064216);
+        let k19: T = T::from_f64(-0.0003);
+        let k20: T = T::from_f64(0.0016);
+        let k21: T = T::from_f64(-0.4318);
+        let k22: T = T::from_f64(0.025375);
+        let k23: T = T::from_f64(0.010956925);
+        let k24: T = T::from_f64(-0.011273199);
+        let k25: T = T::from_f64(0.89133);
+        let k26: T = T::from_f64(0.3586500705);
+        let k27: T = T::from_f64(0.3251198455);
+        let k28: T = T::from_f64(1.748114002);
+        let k29: T = T::from_f64(-0.6903913435);
+        let k30: T = T::from_f64(-1.601861202);
+        let k31: T = T::from_f64(3.153542285625);
+        let k32: T = T::from_f64(-0.00004);
+        let k33: T = T::from_f64(-0.00064216);
+        let k34: T = T::from_f64(0.00020216);
+        let k35: T = T::from_f64(-0.00020216);
+        let k36: T = T::from_f64(-0.000058464);
+        let k37: T = T::from_f64(0.001243584);
+        let k38: T = T::from_f64(0.000058464);
+        let k39: T = T::from_f64(-0.001243584);
+        let k40: T = T::from_f64(0.000432144);
+        let k41: T = T::from_f64(-0.15005);
+        let k42: T = T::from_f64(-0.000432144);
+        let k43: T = T::from_f64(9.81);
+        let k44: T = T::from_f64(37.2347379);
+        let k45: T = T::from_f64(-1.024164);
+        let k46: T = T::from_f64(0.24892875);
+        let k47: T = T::from_f64(-8.7439473);
+        let k48: T = T::from_f64(0.0282528);
+        let k49: T = T::from_f64(-0.0282528);
+        let k50: T = T::from_f64(2.0);
+        let k51: T = T::from_f64(0.8636);
+        let k52: T = T::from_f64(-0.025375);
+        let k53: T = T::from_f64(-0.89133);
+        let k54: T = T::from_f64(0.384876294);
+        let k55: T = T::from_f64(-0.0013);
+        let k56: T = T::from_f64(-0.00576);
+        let k57: T = T::from_f64(-154.550796435);
+        let k58: T = T::from_f64(-37.2347379);
+        let k59: T = T::from_f64(-0.24892875);
+        let k60: T = T::from_f64(0.00128432);
+        let k61: T = T::from_f64(-0.00128432);
+        let k62: T = T::from_f64(0.000116928);
+        let k63: T = T::from_f64(-0.000116928);
+        let k64: T = T::from_f64(-0.00040432);
+        let k65: T = T::from_f64(0.00040432);
+        let k66: T = T::from_f64(-0.00002);
+        let k67: T = T::from_f64(-0.5);
+        let k68: T = T::from_f64(0.00002);
+        let (s2, c2) = T::sin_cos(q[1]);
+        let (s3, c3) = T::sin_cos(q[2]);
+        let (s4, c4) = T::sin_cos(q[3]);
+        let (s5, c5) = T::sin_cos(q[4]);
+        let (s6, c6) = T::sin_cos(q[5]);
+        let m4_6 = k7 * c5;
+        let t1 = c5 * c5;
+        let t2 = s5 * s5;
+        let t3 = s5 * c5;
+        let t4 = k6 + (k15 * t1 + k7 * t2);
+        let m4_4 = k20 + (k15 * t2 + k7 * t1);
+        let t5 = c4 * s5;
+        let t6 = s4 * s5;
+        let t7 = c4 * t4;
+        let t8 = c4 * t3;
+        let t9 = k34 * t8;
+        let t10 = s4 * t4;
+        let t11 = s4 * t3;
+        let t12 = c4 * t7;
+        let t13 = s4 * s4;
+        let t14 = s4 * t7;
+        let t15 = s4 * c4;
+        let t16 = c4 * t10;
+        let t17 = s4 * t10;
+        let t18 = c4 * c4;
+        let t19 = k36 * t5;
+        let t20 = k37 * c5;
+        let t21 = m4_4 + t19;
+        let t22 = t19 + t21;
+        let t23 = t19 + t20;
+        let t24 = k39 * t5;
+        let t25 = k38 * t6;
+        let t26 = k18 * t15 - t14 + k36 * t6;
+        let t27 = k37 * t6;
+        let m3_4 = k35 * t11 + k39 * t6;
+        let t28 = k22 + k17 * t5;
+        let t29 = k25 + k14 * c5;
+        let t30 = k27 + (t20 + (t12 + k18 * t13 + t20));
+        let m3_3 = k26 + (t23 + (t17 + k18 * t18 + t23));
+        let t31 = k24 + (t9 - (k38 * c5 + t24));
+        let t32 = k12 + m3_4;
+        let t33 = c3 * t28;
+        let t34 = s3 * t29;
+        let t35 = t33 - t34;
+        let t36 = s3 * t28;
+        let t37 = c3 * t29;
+        let t38 = t36 + t37;
+        let t39 = s3 * t31;
+        let t40 = c3 * t30 - t39;
+        let t41 = c3 * t31;
+        let t42 = t41 - s3 * t22;
+        let t43 = c3 * t26 - s3 * t32;
+        let t44 = s3 * t30;
+        let t45 = t41 + t44;
+        let t46 = c3 * t22;
+        let t47 = t39 + t46;
+        let t48 = s3 * t26;
+        let t49 = c3 * t32;
+        let t50 = t48 + t49;
+        let t51 = c3 * t40;
+        let t52 = s3 * t42;
+        let t53 = s3 * t40;
+        let t54 = c3 * t42;
+        let t55 = k2 * t35;
+        let t56 = k40 * t6;
+        let t57 = t55 + t56;
+        let t58 = t57 + (s3 * t45 + c3 * t47 + t57);
+        let m2_3 = m3_3 + t55;
+        let t59 = k30 + (t56 + (t51 - t52 + t56));
+        let m2_2 = k28 + (t55 + m2_3);
+        let t60 = k9 + (t53 + t54 + k21 * t38);
+        let t61 = k29 + (t43 - (t27 + k3 * t35));
+        let t62 = k11 + (t50 + k41 * t38);
+        let t63 = s2 * t60;
+        let t64 = c2 * t60;
+        let t65 = c2 * t61 - s2 * t62;
+        let t66 = t64 + s2 * t59;
+        let t67 = t63 + c2 * t58;
+        let m1_2 = s2 * t61 + c2 * t62;
+        let m1_1 = k31 + (s2 * t66 + c2 * t67);
+        let t68 = -t37 - t36;
+        let t69 = t43 + k41 * t35;
+        let t70 = t50 + k3 * t68;
+        let t71 = c2 * t69;
+        let t72 = t71 - s2 * t70;
+        let m1_3 = s2 * t69 + c2 * t70;
+        let t73 = k37 * t5;
+        let t74 = t9 + t73;
+        let t75 = c3 * t6;
+        let t76 = s3 * t6;
+        let t77 = s3 * t74;
+        let t78 = c3 * t21;
+        let t79 = k42 * t76;
+        let t80 = k40 * t75;
+        let t81 = c3 * t74 - s3 * t21 + t79;
+        let t82 = t77 + t78 + (t24 + t80);
+        let m2_4 = m3_4 + k37 * t76;
+        let t83 = c2 * t81;
+        let t84 = t83 - s2 * t82;
+        let m1_4 = s2 * t81 + c2 * t82;
+        let t85 = c4 * c5;
+        let t86 = s4 * c5;
+        let t87 = k18 * c4;
+        let t88 = k37 * t86;
+        let t89 = k36 * s5;
+        let t90 = k39 * t85;
+        let t91 = k37 * t85;
+        let t92 = k18 * s4 + t88;
+        let m3_5 = t87 + (t89 + t91);
+        let t93 = c3 * t85;
+        let t94 = t93 - s3 * s5;
+        let t95 = s3 * t85;
+        let t96 = c3 * s5;
+        let t97 = t95 + t96;
+        let t98 = s3 * t86;
+        let t99 = c3 * t92 + k38 * t98;
+        let t100 = s3 * t92;
+        let t101 = c3 * t86;
+        let t102 = k40 * t97;
+        let t103 = k42 * t94;
+        let t104 = k39 * t86;
+        let t105 = t99 + t102;
+        let t106 = t100 + k36 * t101 + (t103 + t104);
+        let m2_5 = m3_5 + k39 * t97;
+        let t107 = s2 * t94 + c2 * t97;
+        let t108 = c2 * t105 - s2 * t106;
+        let m1_5 = s2 * t105 + c2 * t106;
+        let m2_6 = k7 * t6;
+        let t109 = c3 * t5;
+        let t110 = s3 * c5;
+        let t111 = t109 + t110;
+        let t112 = s3 * t5;
+        let t113 = c3 * c5;
+        let t114 = t112 - t113;
+        let t115 = c2 * t111;
+        let t116 = t115 - s2 * t114;
+        let m1_6 = k32 * (s2 * t111 + c2 * t114);
+        let t117 = k43 * s2;
+        let t118 = k43 * c2;
+        let t119 = k44 * c2 + k45 * s2;
+        let t120 = s2 * c3 + c2 * s3;
+        let t121 = c2 * c3 - s2 * s3;
+        let t122 = c4 * t120;
+        let t123 = s4 * t120;
+        let t124 = c5 * t122 + s5 * t121;
+        let g5 = k49 * t124;
+        let t125 = c5 * t123;
+        let t126 = s5 * t123;
+        let g4 = k48 * t126;
+        let t127 = c4 * t125 - s4 * t124;
+        let g3 = k46 * t121 + k47 * t120 + k49 * (s4 * t125 + c4 * t124);
+        let g2 = t119 + g3;
+        let g1 = k48 * (s2 * (c3 * t127 - s3 * t126) + c2 * (s3 * t127 + c3 * t126));
+        let p = -(k57 + (k58 * s2 + k45 * c2) + (k59 * t120 + k47 * t121)
+            + k49 * (c5 * t121 - s5 * t122));
+        let t128 = s2 * (c2 * t59 - t63) + c2 * t66 + (c2 * (t64 - s2 * t58) - s2 * t67);
+        let t129 = -t44 - t41;
+        let t130 = -t39 - t46;
+        let t131 = k2 * t68;
+        let t132 = t51 + s3 * t129 + (c3 * t130 - t52) + k21 * t35;
+        let t133 = s2 * (-t48 - t49 + k41 * t68);
+        let t134 = t71 + t133;
+        let t135 = s2 * (c2 * t132 + s2 * (c3 * t129 - t53 - (t54 + s3 * t130)))
+            + c2
+                * (s2 * t132 + c2 * (t131 + (t53 + c3 * t45 + (t54 - s3 * t47) + t131)));
+        let t136 = t133 + c2 * (t43 + k3 * (t34 - t33));
+        let t137 = k42 * t75;
+        let t138 = k37 * t75;
+        let t139 = t83 + s2 * (-t77 - t78 + t137);
+        let t140 = k40 * t94;
+        let t141 = k39 * t94;
+        let t142 = s2 * (k38 * t101 - t100 + t140) + c2 * (t99 + k42 * (-t95 - t96));
+        let t143 = t113 - t112;
+        let t144 = t115 + s2 * t143;
+        let t145 = -t14 - t16 + k60 * t15;
+        let t146 = t25 + (t25 + (t14 + t16 + k61 * t15));
+        let t147 = t19 + (k18 * (t18 - t13) - (t12 - t17));
+        let t148 = t24 + k35 * t8;
+        let t149 = s3 * m3_4;
+        let t150 = c3 * t145 - t149;
+        let t151 = c3 * m3_4;
+        let t152 = t151 + k63 * t76;
+        let t153 = c3 * t147 - s3 * t148;
+        let t154 = k40 * t5;
+        let t155 = t138 + t154;
+        let t156 = t138 + t146;
+        let t157 = t138 + t156;
+        let t158 = k39 * t76;
+        let t159 = s3 * t150 + c3 * t152 + t158;
+        let t160 = c2 * (t79 + (s3 * t147 + c3 * t148));
+        let t161 = s2 * (t153 - (t73 + t80)) + t160;
+        let t162 = s2 * (c2 * t159 + s2 * (t154 + (c3 * t150 - s3 * t152 + t154)))
+            + c2
+                * (s2 * t159
+                    + c2
+                        * (t155
+                            + (s3 * (t151 + s3 * t145) + c3 * (t149 + k62 * t75)
+                                + t155)));
+        let t163 = t160 + s2 * (t137 + t153);
+        let t164 = k36 * t76;
+        let t165 = k38 * t75;
+        let t166 = t148 + k37 * t112;
+        let t167 = s2 * (t151 + t164 + k42 * t112)
+            + c2 * (t149 + t165 + (t27 + k40 * t109));
+        let t168 = t87 + t91;
+        let t169 = k33 * s4 + t104;
+        let t170 = k42 * t98;
+        let t171 = t90 + k40 * t101;
+        let t172 = k37 * t98;
+        let t173 = t169 + t172;
+        let t174 = s2 * (c3 * t168 + k38 * t95 + t170)
+            + c2 * (s3 * t168 + k36 * t93 + t171);
+        let t175 = -(s2 * t75) - c2 * t76;
+        let t176 = t1 - t2;
+        let t177 = k34 * (c4 * t176);
+        let t178 = k36 * t85;
+        let t179 = k39 * s5;
+        let t180 = t179 + (k64 * (c4 * t8) + t179);
+        let t181 = k65 * t3 + t178;
+        let t182 = t178 + t181;
+        let t183 = t178 + t179;
+        let t184 = t183 + (k64 * (s4 * t11) + t183);
+        let t185 = t177 - (t89 + t90);
+        let t186 = k36 * t86 + k65 * (s4 * t8);
+        let t187 = t104 + k35 * (s4 * t176);
+        let t188 = s3 * t185;
+        let t189 = c3 * t180 - t188;
+        let t190 = c3 * t185;
+        let t191 = t190 - s3 * t182;
+        let t192 = c3 * t186 - s3 * t187;
+        let t193 = k40 * t86;
+        let t194 = t141 + t193;
+        let t195 = t141 + t184;
+        let t196 = t141 + t195;
+        let t197 = s3 * t189 + c3 * t191 + k37 * t97;
+        let t198 = c2 * (t102 + (s3 * t186 + c3 * t187));
+        let t199 = s2 * (t192 - (t88 + t103)) + t198;
+        let t200 = s2 * (c2 * t197 + s2 * (t193 + (c3 * t189 - s3 * t191 + t193)))
+            + c2
+                * (s2 * t197
+                    + c2
+                        * (t194
+                            + (s3 * (t190 + s3 * t180) + c3 * (t188 + c3 * t182)
+                                + t194)));
+        let t201 = t198 + s2 * (t140 + t192);
+        let t202 = t91 + t177;
+        let t203 = t172 + t187;
+        let t204 = s2 * (t170 + (c3 * t202 - s3 * t181))
+            + c2 * (t171 + (s3 * t202 + c3 * t181));
+        let t205 = t24 + k36 * c5;
+        let t206 = k39 * t75;
+        let t207 = t205 + k39 * t143;
+        let t208 = s2 * (t164 + t206 + k40 * t143)
+            + c2 * (t158 + t165 + (t27 + k42 * (-t110 - t109)));
+        let t209 = t72 + t134;
+        let t210 = t84 + t161;
+        let t211 = t108 + t199;
+        let t212 = t139 + t163;
+        let t213 = t142 + t201;
+        let t214 = t174 + t204;
+        let t215 = t134 - t72;
+        let t216 = t161 - t84;
+        let t217 = t199 - t108;
+        let t218 = t173 + t203;
+        let t219 = t72 - t134;
+        let t220 = t163 - t139;
+        let t221 = t201 - t142;
+        let t222 = t156 + t206;
+        let t223 = t195 + k37 * t94;
+        let t224 = t169 + t187;
+        let t225 = t84 - t161;
+        let t226 = t139 - t163;
+        let t227 = t204 - t174;
+        let t228 = t138 - t156;
+        let t229 = t203 - t173;
+        let t230 = t187 - t169;
+        let t231 = t108 - t199;
+        let t232 = t142 - t201;
+        let t233 = t174 - t204;
+        let t234 = t141 - t195;
+        let t235 = t173 - t203;
+        let t236 = t169 - t187;
+        __DynamicsConfiguration {
+            k1,
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            s6,
+            c6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k29,
+            k30,
+            k31,
+            k32,
+            k33,
+            m4_6,
+            t3,
+            k34,
+            m4_4,
+            t5,
+            k35,
+            k38,
+            k39,
+            m3_4,
+            m3_3,
+            m2_3,
+            k41,
+            m2_2,
+            t65,
+            m1_2,
+            m1_1,
+            t68,
+            m1_3,
+            m2_4,
+            m1_4,
+            t86,
+            m3_5,
+            m2_5,
+            t107,
+            m1_5,
+            m2_6,
+            t116,
+            m1_6,
+            t117,
+            t118,
+            t119,
+            g5,
+            g4,
+            g3,
+            g2,
+            g1,
+            k50,
+            k51,
+            k52,
+            k53,
+            k54,
+            k55,
+            k56,
+            p,
+            t128,
+            t135,
+            t136,
+            t144,
+            t146,
+            t148,
+            t157,
+            t162,
+            t166,
+            t167,
+            t175,
+            t184,
+            t196,
+            t200,
+            t205,
+            t207,
+            t208,
+            t209,
+            t210,
+            t211,
+            k66,
+            t212,
+            t213,
+            t214,
+            k67,
+            t215,
+            t216,
+            t217,
+            k68,
+            t218,
+            t219,
+            t220,
+            t221,
+            t222,
+            t223,
+            t224,
+            t225,
+            t226,
+            t227,
+            t228,
+            t229,
+            t230,
+            t231,
+            t232,
+            t233,
+            t234,
+            t235,
+            t236,
+        }
+    }
+}
+#[automatically_derived]
 impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     /// M(q), with the actuator inertia on the diagonal.
     #[inline]
@@ -15,117 +654,14 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         &self,
         q: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let k1: T = T::from_f64(0.4318);
-        let k2: T = T::from_f64(0.15005);
-        let k3: T = T::from_f64(0.0003);
-        let k4: T = T::from_f64(0.00004);
-        let k5: T = T::from_f64(-0.0070992);
-        let k6: T = T::from_f64(-0.023751);
-        let k7: T = T::from_f64(-0.0047376);
-        let k8: T = T::from_f64(0.00288);
-        let k9: T = T::from_f64(0.00024216);
-        let k10: T = T::from_f64(-0.00288);
-        let k11: T = T::from_f64(0.00064216);
-        let k12: T = T::from_f64(0.0016);
-        let k13: T = T::from_f64(-0.4318);
-        let k14: T = T::from_f64(0.025375);
-        let k15: T = T::from_f64(-0.011273199);
-        let k16: T = T::from_f64(0.89133);
-        let k17: T = T::from_f64(0.3586500705);
-        let k18: T = T::from_f64(0.3251198455);
-        let k19: T = T::from_f64(1.748114002);
-        let k20: T = T::from_f64(-0.6903913435);
-        let k21: T = T::from_f64(-1.601861202);
-        let k22: T = T::from_f64(3.153542285625);
-        let k23: T = T::from_f64(-0.00004);
-        let k24: T = T::from_f64(0.00020216);
-        let k25: T = T::from_f64(-0.00020216);
-        let k26: T = T::from_f64(-0.000058464);
-        let k27: T = T::from_f64(0.001243584);
-        let k28: T = T::from_f64(0.000058464);
-        let k29: T = T::from_f64(-0.001243584);
-        let k30: T = T::from_f64(0.000432144);
-        let k31: T = T::from_f64(-0.15005);
-        let k32: T = T::from_f64(-0.000432144);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let m4_6 = k4 * c5;
-        let t1 = c5 * c5;
-        let t2 = s5 * s5;
-        let t3 = s5 * c5;
-        let t4 = k3 + (k9 * t1 + k4 * t2);
-        let m4_4 = k12 + (k9 * t2 + k4 * t1);
-        let t5 = c4 * s5;
-        let t6 = s4 * s5;
-        let t7 = c4 * t4;
-        let t8 = k24 * (c4 * t3);
-        let t9 = k26 * t5;
-        let t10 = k27 * c5;
-        let t11 = m4_4 + t9;
-        let t12 = t9 + t11;
-        let t13 = t9 + t10;
-        let t14 = k29 * t5;
-        let t15 = k11 * (s4 * c4) - s4 * t7 + k26 * t6;
-        let m3_4 = k25 * (s4 * t3) + k29 * t6;
-        let t16 = k14 + k10 * t5;
-        let t17 = k16 + k8 * c5;
-        let t18 = k18 + (t10 + (c4 * t7 + k11 * (s4 * s4) + t10));
-        let m3_3 = k17 + (t13 + (s4 * (s4 * t4) + k11 * (c4 * c4) + t13));
-        let t19 = k15 + (t8 - (k28 * c5 + t14));
-        let t20 = k7 + m3_4;
-        let t21 = c3 * t16 - s3 * t17;
-        let t22 = s3 * t16;
-        let t23 = c3 * t17;
-        let t24 = t22 + t23;
-        let t25 = s3 * t19;
-        let t26 = c3 * t18 - t25;
-        let t27 = c3 * t19;
-        let t28 = t27 - s3 * t12;
-        let t29 = c3 * t15 - s3 * t20;
-        let t30 = s3 * t15 + c3 * t20;
-        let t31 = k1 * t21;
-        let t32 = k30 * t6;
-        let t33 = t31 + t32;
-        let m2_3 = m3_3 + t31;
-        let m2_2 = k19 + (t31 + m2_3);
-        let t34 = k5 + (s3 * t26 + c3 * t28 + k13 * t24);
-        let m1_2 = s2 * (k20 + (t29 - (k27 * t6 + k2 * t21)))
-            + c2 * (k6 + (t30 + k31 * t24));
-        let m1_1 = k22
-            + (s2 * (c2 * t34 + s2 * (k21 + (t32 + (c3 * t26 - s3 * t28 + t32))))
-                + c2
-                    * (s2 * t34
-                        + c2
-                            * (t33
-                                + (s3 * (t27 + s3 * t18) + c3 * (t25 + c3 * t12) + t33))));
-        let m1_3 = s2 * (t29 + k31 * t21) + c2 * (t30 + k2 * (-t23 - t22));
-        let t35 = t8 + k27 * t5;
-        let t36 = s3 * t6;
-        let m2_4 = m3_4 + k27 * t36;
-        let m1_4 = s2 * (c3 * t35 - s3 * t11 + k32 * t36)
-            + c2 * (s3 * t35 + c3 * t11 + (t14 + k30 * (c3 * t6)));
-        let t37 = c4 * c5;
-        let t38 = s4 * c5;
-        let t39 = k11 * s4 + k27 * t38;
-        let m3_5 = k11 * c4 + (k26 * s5 + k27 * t37);
-        let t40 = k10 * (s3 * t37) + k10 * (c3 * s5);
-        let m2_5 = m3_5 + k1 * t40;
-        let m1_5 = s2 * (c3 * t39 + k28 * (s3 * t38) + k31 * t40)
-            + c2
-                * (s3 * t39 + k26 * (c3 * t38)
-                    + (k2 * (k10 * (c3 * t37) + k8 * (s3 * s5)) + k29 * t38));
-        let m2_6 = k4 * t6;
-        let m1_6 = s2 * (k23 * (c3 * t5) + k23 * (s3 * c5))
-            + c2 * (k23 * (s3 * t5) + k4 * (c3 * c5));
+        let x = self.__dynamics_configuration(q);
         [
-            [m1_1, m1_2, m1_3, m1_4, m1_5, m1_6],
-            [m1_2, m2_2, m2_3, m2_4, m2_5, m2_6],
-            [m1_3, m2_3, m3_3, m3_4, m3_5, m2_6],
-            [m1_4, m2_4, m3_4, m4_4, T::ZERO, m4_6],
-            [m1_5, m2_5, m3_5, T::ZERO, k11, T::ZERO],
-            [m1_6, m2_6, m2_6, m4_6, T::ZERO, k4],
+            [x.m1_1, x.m1_2, x.m1_3, x.m1_4, x.m1_5, x.m1_6],
+            [x.m1_2, x.m2_2, x.m2_3, x.m2_4, x.m2_5, x.m2_6],
+            [x.m1_3, x.m2_3, x.m3_3, x.m3_4, x.m3_5, x.m2_6],
+            [x.m1_4, x.m2_4, x.m3_4, x.m4_4, T::ZERO, x.m4_6],
+            [x.m1_5, x.m2_5, x.m3_5, T::ZERO, x.k18, T::ZERO],
+            [x.m1_6, x.m2_6, x.m2_6, x.m4_6, T::ZERO, x.k7],
         ]
     }
     /// C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.
@@ -136,376 +672,94 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         q: &[T; 6usize],
         qd: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let k1: T = T::from_f64(0.5);
-        let k2: T = T::from_f64(0.4318);
-        let k3: T = T::from_f64(0.15005);
-        let k4: T = T::from_f64(0.0003);
-        let k5: T = T::from_f64(0.00004);
-        let k6: T = T::from_f64(-0.0070992);
-        let k7: T = T::from_f64(-0.023751);
-        let k8: T = T::from_f64(-0.0047376);
-        let k9: T = T::from_f64(0.00288);
-        let k10: T = T::from_f64(0.00024216);
-        let k11: T = T::from_f64(-0.00288);
-        let k12: T = T::from_f64(0.00064216);
-        let k13: T = T::from_f64(0.0016);
-        let k14: T = T::from_f64(-0.4318);
-        let k15: T = T::from_f64(0.025375);
-        let k16: T = T::from_f64(-0.011273199);
-        let k17: T = T::from_f64(0.89133);
-        let k18: T = T::from_f64(0.3251198455);
-        let k19: T = T::from_f64(-0.6903913435);
-        let k20: T = T::from_f64(-1.601861202);
-        let k21: T = T::from_f64(-0.00004);
-        let k22: T = T::from_f64(-0.00064216);
-        let k23: T = T::from_f64(0.00020216);
-        let k24: T = T::from_f64(-0.00020216);
-        let k25: T = T::from_f64(-0.000058464);
-        let k26: T = T::from_f64(0.001243584);
-        let k27: T = T::from_f64(0.000058464);
-        let k28: T = T::from_f64(-0.001243584);
-        let k29: T = T::from_f64(0.000432144);
-        let k30: T = T::from_f64(-0.15005);
-        let k31: T = T::from_f64(-0.000432144);
-        let k32: T = T::from_f64(0.00128432);
-        let k33: T = T::from_f64(-0.00128432);
-        let k34: T = T::from_f64(0.000116928);
-        let k35: T = T::from_f64(-0.000116928);
-        let k36: T = T::from_f64(-0.00040432);
-        let k37: T = T::from_f64(0.00040432);
-        let k38: T = T::from_f64(-0.5);
-        let k39: T = T::from_f64(0.00002);
-        let k40: T = T::from_f64(-0.00002);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let t1 = c5 * c5;
-        let t2 = s5 * s5;
-        let t3 = s5 * c5;
-        let t4 = k4 + (k10 * t1 + k5 * t2);
-        let t5 = c4 * s5;
-        let t6 = s4 * s5;
-        let t7 = c4 * t4;
-        let t8 = c4 * t3;
-        let t9 = k23 * t8;
-        let t10 = s4 * t4;
-        let t11 = s4 * t3;
-        let t12 = c4 * t7;
-        let t13 = s4 * s4;
-        let t14 = s4 * t7;
-        let t15 = s4 * c4;
-        let t16 = c4 * t10;
-        let t17 = k25 * t5;
-        let t18 = k26 * c5;
-        let t19 = k13 + (k10 * t2 + k5 * t1) + t17;
-        let t20 = t17 + t19;
-        let t21 = k28 * t5;
-        let t22 = k27 * t6;
-        let t23 = k12 * t15 - t14 + k25 * t6;
-        let t24 = k26 * t6;
-        let t25 = k24 * t11 + k28 * t6;
-        let t26 = k15 + k11 * t5;
-        let t27 = k17 + k9 * c5;
-        let t28 = k18 + (t18 + (t12 + k12 * t13 + t18));
-        let t29 = k16 + (t9 - (k27 * c5 + t21));
-        let t30 = k8 + t25;
-        let t31 = c3 * t26;
-        let t32 = s3 * t27;
-        let t33 = t31 - t32;
-        let t34 = s3 * t26;
-        let t35 = c3 * t27;
-        let t36 = t34 + t35;
-        let t37 = s3 * t29;
-        let t38 = c3 * t28 - t37;
-        let t39 = c3 * t29;
-        let t40 = t39 - s3 * t20;
-        let t41 = c3 * t23 - s3 * t30;
-        let t42 = s3 * t28;
-        let t43 = t39 + t42;
-        let t44 = c3 * t20;
-        let t45 = t37 + t44;
-        let t46 = s3 * t23;
-        let t47 = c3 * t30;
-        let t48 = t46 + t47;
-        let t49 = c3 * t38;
-        let t50 = s3 * t40;
-        let t51 = s3 * t38;
-        let t52 = c3 * t40;
-        let t53 = k29 * t6;
-        let t54 = k2 * t33 + t53;
-        let t55 = t54 + (s3 * t43 + c3 * t45 + t54);
-        let t56 = k20 + (t53 + (t49 - t50 + t53));
-        let t57 = k6 + (t51 + t52 + k14 * t36);
-        let t58 = s2 * t57;
-        let t59 = c2 * t57;
-        let t60 = -t35 - t34;
-        let t61 = c2 * (t41 + k30 * t33);
-        let t62 = t61 - s2 * (t48 + k3 * t60);
-        let t63 = k26 * t5;
-        let t64 = t9 + t63;
-        let t65 = c3 * t6;
-        let t66 = s3 * t6;
-        let t67 = s3 * t64;
-        let t68 = c3 * t19;
-        let t69 = k31 * t66;
-        let t70 = k29 * t65;
-        let t71 = c2 * (c3 * t64 - s3 * t19 + t69);
-        let t72 = t71 - s2 * (t67 + t68 + (t21 + t70));
-        let t73 = c4 * c5;
-        let t74 = s4 * c5;
-        let t75 = k26 * t74;
-        let t76 = k28 * t73;
-        let t77 = k26 * t73;
-        let t78 = k12 * s4 + t75;
-        let t79 = c3 * t73;
-        let t80 = s3 * s5;
-        let t81 = k11 * t79 + k9 * t80;
-        let t82 = s3 * t73;
-        let t83 = c3 * s5;
-        let t84 = k11 * t82 + k11 * t83;
-        let t85 = s3 * t74;
-        let t86 = c3 * t78 + k27 * t85;
-        let t87 = s3 * t78;
-        let t88 = c3 * t74;
-        let t89 = k30 * t84;
-        let t90 = k3 * t81;
-        let t91 = k28 * t74;
-        let t92 = c2 * (t86 + t89) - s2 * (t87 + k25 * t88 + (t90 + t91));
-        let t93 = c3 * t5;
-        let t94 = s3 * c5;
-        let t95 = s3 * t5;
-        let t96 = c3 * c5;
-        let t97 = c2 * (k21 * t93 + k21 * t94);
-        let t98 = t97 - s2 * (k21 * t95 + k5 * t96);
-        let t99 = s2 * (c2 * t56 - t58) + c2 * (t59 + s2 * t56)
-            + (c2 * (t59 - s2 * t55) - s2 * (t58 + c2 * t55));
-        let t100 = -t42 - t39;
-        let t101 = -t37 - t44;
-        let t102 = k2 * t60;
-        let t103 = t49 + s3 * t100 + (c3 * t101 - t50) + k14 * t33;
-        let t104 = s2 * (-t46 - t47 + k30 * t60);
-        let t105 = t61 + t104;
-        let t106 = s2 * (c2 * t103 + s2 * (c3 * t100 - t51 - (t52 + s3 * t101)))
-            + c2
-                * (s2 * t103 + c2 * (t102 + (t51 + c3 * t43 + (t52 - s3 * t45) + t102)));
-        let t107 = k31 * t65;
-        let t108 = k26 * t65;
-        let t109 = t71 + s2 * (-t67 - t68 + t107);
-        let t110 = k30 * t81;
-        let t111 = k3 * (k9 * t82 + k9 * t83);
-        let t112 = k2 * t81;
-        let t113 = s2 * (k27 * t88 - t87 + t110) + c2 * (t86 + t111);
-        let t114 = t97 + s2 * (k5 * t95 + k21 * t96);
-        let t115 = -t14 - t16 + k32 * t15;
-        let t116 = t22 + (t22 + (t14 + t16 + k33 * t15));
-        let t117 = t17 + (k12 * (c4 * c4 - t13) - (t12 - s4 * t10));
-        let t118 = t21 + k24 * t8;
-        let t119 = s3 * t25;
-        let t120 = c3 * t115 - t119;
-        let t121 = c3 * t25;
-        let t122 = t121 + k35 * t66;
-        let t123 = c3 * t117 - s3 * t118;
-        let t124 = k29 * t5;
-        let t125 = t108 + t124;
-        let t126 = t108 + t116;
-        let t127 = t108 + t126;
-        let t128 = k28 * t66;
-        let t129 = s3 * t120 + c3 * t122 + t128;
-        let t130 = c2 * (t69 + (s3 * t117 + c3 * t118));
-        let t131 = s2 * (t123 - (t63 + t70)) + t130;
-        let t132 = s2 * (c2 * t129 + s2 * (t124 + (c3 * t120 - s3 * t122 + t124)))
-            + c2
-                * (s2 * t129
-                    + c2
-                        * (t125
-                            + (s3 * (t121 + s3 * t115) + c3 * (t119 + k34 * t65)
-                                + t125)));
-        let t133 = t130 + s2 * (t107 + t123);
-        let t134 = k25 * t66;
-        let t135 = k27 * t65;
-        let t136 = k12 * c4 + t77;
-        let t137 = k22 * s4 + t91;
-        let t138 = k31 * t85;
-        let t139 = t76 + k29 * t88;
-        let t140 = k26 * t85;
-        let t141 = t137 + t140;
-        let t142 = s2 * (c3 * t136 + k27 * t82 + t138)
-            + c2 * (s3 * t136 + k25 * t79 + t139);
-        let t143 = k5 * (s2 * t65) + k5 * (c2 * t66);
-        let t144 = t1 - t2;
-        let t145 = k23 * (c4 * t144);
-        let t146 = k25 * t73;
-        let t147 = k28 * s5;
-        let t148 = t147 + (k36 * (c4 * t8) + t147);
-        let t149 = k37 * t3 + t146;
-        let t150 = t146 + t149;
-        let t151 = t146 + t147;
-        let t152 = t151 + (k36 * (s4 * t11) + t151);
-        let t153 = t145 - (k25 * s5 + t76);
-        let t154 = k25 * t74 + k37 * (s4 * t8);
-        let t155 = t91 + k24 * (s4 * t144);
-        let t156 = s3 * t153;
-        let t157 = c3 * t148 - t156;
-        let t158 = c3 * t153;
-        let t159 = t158 - s3 * t150;
-        let t160 = c3 * t154 - s3 * t155;
-        let t161 = s3 * t154 + c3 * t155;
-        let t162 = k29 * t74;
-        let t163 = t112 + t162;
-        let t164 = t112 + t152;
-        let t165 = t112 + t164;
-        let t166 = s3 * t157 + c3 * t159 + k14 * t84;
-        let t167 = s2 * (t160 - (t75 + t90)) + c2 * (t89 + t161);
-        let t168 = s2 * (c2 * t166 + s2 * (t162 + (c3 * t157 - s3 * t159 + t162)))
-            + c2
-                * (s2 * t166
-                    + c2
-                        * (t163
-                            + (s3 * (t158 + s3 * t148) + c3 * (t156 + c3 * t150)
-                                + t163)));
-        let t169 = s2 * (t110 + t160) + c2 * (t111 + t161);
-        let t170 = t77 + t145;
-        let t171 = t140 + t155;
-        let t172 = s2 * (t138 + (c3 * t170 - s3 * t149))
-            + c2 * (t139 + (s3 * t170 + c3 * t149));
-        let t173 = t21 + k25 * c5;
-        let t174 = k9 * t95 + k11 * t96;
-        let t175 = k28 * t65;
-        let t176 = s2 * (k21 * t79 + k5 * t80) + c2 * (k21 * t82 + k21 * t83);
-        let cor1_1 = k1 * (qd[1] * t99) + k1 * (qd[2] * t106) + k1 * (qd[3] * t132)
-            + k1 * (qd[4] * t168);
-        let t177 = qd[0] * t99;
-        let t178 = t62 + t105;
-        let t179 = t72 + t131;
-        let t180 = t92 + t167;
-        let t181 = qd[5] * t98;
-        let cor1_2 = k1 * t177
-            + qd[1]
-                * (c2 * (k19 + (t41 - (t24 + k3 * t33))) - s2 * (k7 + (t48 + k30 * t36)))
-            + k1 * (qd[2] * t178) + k1 * (qd[3] * t179) + k1 * (qd[4] * t180)
-            + k1 * t181;
-        let t182 = qd[0] * t106;
-        let t183 = t109 + t133;
-        let t184 = t113 + t169;
-        let t185 = qd[5] * t114;
-        let cor1_3 = k1 * t182 + k1 * (qd[1] * t178)
-            + qd[2] * (t104 + c2 * (t41 + k3 * (t32 - t31))) + k1 * (qd[3] * t183)
-            + k1 * (qd[4] * t184) + k1 * t185;
-        let t186 = qd[0] * t132;
-        let t187 = t142 + t172;
-        let t188 = qd[5] * t143;
-        let cor1_4 = k1 * t186 + k1 * (qd[1] * t179) + k1 * (qd[2] * t183)
-            + qd[3]
-                * (s2 * (t121 + t134 + k31 * t95)
-                    + c2 * (t119 + t135 + (t24 + k29 * t93))) + k1 * (qd[4] * t187)
-            + k1 * t188;
-        let t189 = qd[0] * t168;
-        let t190 = qd[5] * t176;
-        let cor1_5 = k1 * t189 + k1 * (qd[1] * t180) + k1 * (qd[2] * t184)
-            + k1 * (qd[3] * t187)
-            + qd[4]
-                * (s2 * (t134 + t175 + k30 * t174)
-                    + c2 * (t128 + t135 + (t24 + k3 * (k9 * t93 + k9 * t94))))
-            + k1 * t190;
-        let cor1_6 = k1 * (qd[1] * t98) + k1 * (qd[2] * t114) + k1 * (qd[3] * t143)
-            + k1 * (qd[4] * t176);
-        let t191 = t105 - t62;
-        let t192 = t131 - t72;
-        let t193 = t167 - t92;
-        let cor2_1 = k38 * t177 + k1 * (qd[2] * t191) + k1 * (qd[3] * t192)
-            + k1 * (qd[4] * t193) + k38 * t181;
-        let t194 = k2 * (qd[2] * t60);
-        let t195 = k1 * (qd[3] * t127);
-        let t196 = k1 * (qd[4] * t165);
-        let cor2_2 = t194 + t195 + t196;
-        let t197 = qd[1] * t60;
-        let cor2_3 = t196 + (t195 + (t194 + (k1 * (qd[0] * t191) + k2 * t197)));
-        let t198 = qd[1] * t127;
-        let t199 = t141 + t171;
-        let t200 = qd[5] * t5;
-        let t201 = k39 * t200;
-        let cor2_4 = k1 * (qd[0] * t192) + k1 * t198 + k1 * (qd[2] * t127)
-            + qd[3] * (t118 + k26 * t95) + k1 * (qd[4] * t199) + t201;
-        let t202 = qd[1] * t165;
-        let t203 = qd[5] * t74;
-        let t204 = k39 * t203;
-        let cor2_5 = k1 * (qd[0] * t193) + k1 * t202 + k1 * (qd[2] * t165)
-            + k1 * (qd[3] * t199) + qd[4] * (t173 + k2 * t174) + t204;
-        let t205 = qd[0] * t98;
-        let t206 = k39 * (qd[3] * t5);
-        let t207 = k39 * (qd[4] * t74);
-        let cor2_6 = k38 * t205 + t206 + t207;
-        let t208 = t62 - t105;
-        let t209 = t133 - t109;
-        let t210 = t169 - t113;
-        let cor3_1 = k38 * t182 + k1 * (qd[1] * t208) + k1 * (qd[3] * t209)
-            + k1 * (qd[4] * t210) + k38 * t185;
-        let t211 = t126 + t175;
-        let t212 = t164 + k14 * t81;
-        let cor3_2 = k1 * (qd[0] * t208) + k14 * t197 + k1 * (qd[3] * t211)
-            + k1 * (qd[4] * t212);
-        let cor3_3 = k1 * (qd[3] * t116) + k1 * (qd[4] * t152);
-        let t213 = qd[2] * t116;
-        let t214 = t137 + t155;
-        let cor3_4 = t201
-            + (k1 * (qd[0] * t209) + k1 * (qd[1] * t211) + k1 * t213 + qd[3] * t118
-                + k1 * (qd[4] * t214));
-        let t215 = qd[2] * t152;
-        let cor3_5 = t204
-            + (k1 * (qd[0] * t210) + k1 * (qd[1] * t212) + k1 * t215
-                + k1 * (qd[3] * t214) + qd[4] * t173);
-        let t216 = qd[0] * t114;
-        let cor3_6 = t207 + (t206 + k38 * t216);
-        let t217 = t72 - t131;
-        let t218 = t109 - t133;
-        let t219 = t172 - t142;
-        let cor4_1 = k38 * t186 + k1 * (qd[1] * t217) + k1 * (qd[2] * t218)
-            + k1 * (qd[4] * t219) + k38 * t188;
-        let t220 = t108 - t126;
-        let t221 = t171 - t141;
-        let t222 = k40 * t200;
-        let cor4_2 = k1 * (qd[0] * t217) + k38 * t198 + k1 * (qd[2] * t220)
-            + k1 * (qd[4] * t221) + t222;
-        let t223 = t155 - t137;
-        let cor4_3 = t222
-            + (k1 * (qd[0] * t218) + k1 * (qd[1] * t220) + k38 * t213
-                + k1 * (qd[4] * t223));
-        let cor4_4 = k23 * (qd[4] * t3);
-        let t224 = qd[3] * t3;
-        let t225 = s5 * qd[5];
-        let cor4_5 = k1 * (qd[0] * t219) + k1 * (qd[1] * t221) + k1 * (qd[2] * t223)
-            + k23 * t224 + k40 * t225;
-        let t226 = qd[0] * t143;
-        let t227 = qd[1] * t5;
-        let t228 = qd[2] * t5;
-        let t229 = k40 * (s5 * qd[4]);
-        let cor4_6 = k38 * t226 + k40 * t227 + k40 * t228 + t229;
-        let t230 = t92 - t167;
-        let t231 = t113 - t169;
-        let t232 = t142 - t172;
-        let cor5_1 = k38 * t189 + k1 * (qd[1] * t230) + k1 * (qd[2] * t231)
-            + k1 * (qd[3] * t232) + k38 * t190;
-        let t233 = t112 - t164;
-        let t234 = t141 - t171;
-        let t235 = k40 * t203;
-        let cor5_2 = k1 * (qd[0] * t230) + k38 * t202 + k1 * (qd[2] * t233)
-            + k1 * (qd[3] * t234) + t235;
-        let t236 = t137 - t155;
-        let cor5_3 = t235
-            + (k1 * (qd[0] * t231) + k1 * (qd[1] * t233) + k38 * t215
-                + k1 * (qd[3] * t236));
-        let cor5_4 = k1 * (qd[0] * t232) + k1 * (qd[1] * t234) + k1 * (qd[2] * t236)
-            + k24 * t224 + k39 * t225;
-        let t237 = qd[0] * t176;
-        let t238 = qd[1] * t74;
-        let t239 = qd[2] * t74;
-        let t240 = s5 * qd[3];
-        let cor5_6 = k38 * t237 + k40 * t238 + k40 * t239 + k39 * t240;
-        let cor6_2 = t207 + (t206 + k1 * t205);
-        let cor6_3 = t207 + (t206 + k1 * t216);
-        let cor6_4 = t229 + (k1 * t226 + k39 * t227 + k39 * t228);
-        let cor6_5 = k1 * t237 + k39 * t238 + k39 * t239 + k40 * t240;
+        let x = self.__dynamics_configuration(q);
+        let cor1_1 = x.k1
+            * (qd[1] * x.t128 + qd[2] * x.t135 + qd[3] * x.t162 + qd[4] * x.t200);
+        let t1 = qd[0] * x.t128;
+        let t2 = qd[5] * x.t116;
+        let cor1_2 = x.k1 * t1 + qd[1] * x.t65 + x.k1 * (qd[2] * x.t209)
+            + x.k1 * (qd[3] * x.t210) + x.k1 * (qd[4] * x.t211) + x.k66 * t2;
+        let t3 = qd[0] * x.t135;
+        let t4 = qd[5] * x.t144;
+        let cor1_3 = x.k1 * (t3 + qd[1] * x.t209) + qd[2] * x.t136
+            + x.k1 * (qd[3] * x.t212) + x.k1 * (qd[4] * x.t213) + x.k66 * t4;
+        let t5 = qd[0] * x.t162;
+        let t6 = qd[5] * x.t175;
+        let cor1_4 = x.k1 * (t5 + qd[1] * x.t210 + qd[2] * x.t212) + qd[3] * x.t167
+            + x.k1 * (qd[4] * x.t214) + x.k66 * t6;
+        let t7 = qd[0] * x.t200;
+        let t8 = qd[5] * x.t107;
+        let cor1_5 = x.k1 * (t7 + qd[1] * x.t211 + qd[2] * x.t213 + qd[3] * x.t214)
+            + qd[4] * x.t208 + x.k66 * t8;
+        let cor1_6 = x.k66
+            * (qd[1] * x.t116 + qd[2] * x.t144 + qd[3] * x.t175 + qd[4] * x.t107);
+        let cor2_1 = x.k67 * (t1 - qd[2] * x.t215 - qd[3] * x.t216 - qd[4] * x.t217)
+            + x.k68 * t2;
+        let t9 = x.k2 * (qd[2] * x.t68);
+        let t10 = x.k1 * (qd[3] * x.t157);
+        let t11 = x.k1 * (qd[4] * x.t196);
+        let cor2_2 = t9 + t10 + t11;
+        let t12 = qd[1] * x.t68;
+        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd[0] * x.t215) + x.k2 * t12)));
+        let t13 = qd[1] * x.t157;
+        let t14 = qd[5] * x.t5;
+        let t15 = x.k68 * t14;
+        let cor2_4 = x.k1 * (qd[0] * x.t216 + t13 + qd[2] * x.t157) + qd[3] * x.t166
+            + x.k1 * (qd[4] * x.t218) + t15;
+        let t16 = qd[1] * x.t196;
+        let t17 = qd[5] * x.t86;
+        let t18 = x.k68 * t17;
+        let cor2_5 = x.k1 * (qd[0] * x.t217 + t16 + qd[2] * x.t196 + qd[3] * x.t218)
+            + qd[4] * x.t207 + t18;
+        let t19 = qd[0] * x.t116;
+        let t20 = qd[3] * x.t5;
+        let t21 = qd[4] * x.t86;
+        let cor2_6 = x.k68 * (t19 + t20 + t21);
+        let cor3_1 = x.k67 * (t3 - qd[1] * x.t219 - qd[3] * x.t220 - qd[4] * x.t221)
+            + x.k68 * t4;
+        let cor3_2 = x.k1 * (qd[0] * x.t219) + x.k21 * t12 + x.k1 * (qd[3] * x.t222)
+            + x.k1 * (qd[4] * x.t223);
+        let cor3_3 = x.k1 * (qd[3] * x.t146 + qd[4] * x.t184);
+        let t22 = qd[2] * x.t146;
+        let cor3_4 = t15
+            + (x.k1 * (qd[0] * x.t220 + qd[1] * x.t222 + t22) + qd[3] * x.t148
+                + x.k1 * (qd[4] * x.t224));
+        let t23 = qd[2] * x.t184;
+        let cor3_5 = t18
+            + (x.k1 * (qd[0] * x.t221 + qd[1] * x.t223 + t23 + qd[3] * x.t224)
+                + qd[4] * x.t205);
+        let t24 = qd[0] * x.t144;
+        let cor3_6 = x.k68 * (t21 + (t20 + t24));
+        let cor4_1 = x.k67 * (t5 - qd[1] * x.t225 - qd[2] * x.t226 - qd[4] * x.t227)
+            + x.k68 * t6;
+        let t25 = x.k66 * t14;
+        let cor4_2 = x.k1 * (qd[0] * x.t225 - t13 + qd[2] * x.t228 + qd[4] * x.t229)
+            + t25;
+        let cor4_3 = t25
+            + x.k1 * (qd[0] * x.t226 + qd[1] * x.t228 - t22 + qd[4] * x.t230);
+        let cor4_4 = x.k34 * (qd[4] * x.t3);
+        let t26 = qd[3] * x.t3;
+        let t27 = x.s5 * qd[5];
+        let cor4_5 = x.k1 * (qd[0] * x.t227 + qd[1] * x.t229 + qd[2] * x.t230)
+            + x.k34 * t26 + x.k66 * t27;
+        let t28 = qd[0] * x.t175 - qd[1] * x.t5 - qd[2] * x.t5;
+        let t29 = x.s5 * qd[4];
+        let cor4_6 = x.k68 * (t28 - t29);
+        let cor5_1 = x.k67 * (t7 - qd[1] * x.t231 - qd[2] * x.t232 - qd[3] * x.t233)
+            + x.k68 * t8;
+        let t30 = x.k66 * t17;
+        let cor5_2 = x.k1 * (qd[0] * x.t231 - t16 + qd[2] * x.t234 + qd[3] * x.t235)
+            + t30;
+        let cor5_3 = t30
+            + x.k1 * (qd[0] * x.t232 + qd[1] * x.t234 - t23 + qd[3] * x.t236);
+        let cor5_4 = x.k1 * (qd[0] * x.t233 + qd[1] * x.t235 + qd[2] * x.t236)
+            + x.k35 * t26 + x.k68 * t27;
+        let t31 = qd[0] * x.t107 - qd[1] * x.t86 - qd[2] * x.t86 + x.s5 * qd[3];
+        let cor5_6 = x.k68 * t31;
+        let cor6_2 = x.k66 * (t19 - t20 - t21);
+        let cor6_3 = x.k66 * (t24 - t20 - t21);
+        let cor6_4 = x.k66 * (t28 + t29);
+        let cor6_5 = x.k66 * t31;
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -523,122 +777,86 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         q: &[T; 6usize],
         qd: &[T; 6usize],
     ) -> [T; 6usize] {
-        let k1: T = T::from_f64(0.4318);
-        let k2: T = T::from_f64(0.15005);
-        let k3: T = T::from_f64(0.0203);
-        let k4: T = T::from_f64(-0.0203);
-        let k5: T = T::from_f64(0.0003);
-        let k6: T = T::from_f64(0.00004);
-        let k7: T = T::from_f64(0.0070992);
-        let k8: T = T::from_f64(-0.0070992);
-        let k9: T = T::from_f64(0.023751);
-        let k10: T = T::from_f64(-0.023751);
-        let k11: T = T::from_f64(-0.0047376);
-        let k12: T = T::from_f64(-0.0004);
-        let k13: T = T::from_f64(0.00288);
-        let k14: T = T::from_f64(0.00024216);
-        let k15: T = T::from_f64(-0.00024216);
-        let k16: T = T::from_f64(-0.00288);
-        let k17: T = T::from_f64(0.00064216);
-        let k18: T = T::from_f64(-0.0003);
-        let k19: T = T::from_f64(0.0016);
-        let k20: T = T::from_f64(-0.4318);
-        let k21: T = T::from_f64(0.025375);
-        let k22: T = T::from_f64(-0.011273199);
-        let k23: T = T::from_f64(0.89133);
-        let k24: T = T::from_f64(0.3586500705);
-        let k25: T = T::from_f64(0.3251198455);
-        let k26: T = T::from_f64(1.748114002);
-        let k27: T = T::from_f64(-0.6903913435);
-        let k28: T = T::from_f64(-1.601861202);
-        let k29: T = T::from_f64(-0.00004);
-        let k30: T = T::from_f64(-0.00064216);
-        let k31: T = T::from_f64(-0.15005);
-        let k32: T = T::from_f64(-0.89133);
-        let k33: T = T::from_f64(-0.025375);
-        let k34: T = T::from_f64(-0.0013);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let (s6, c6) = T::sin_cos(q[5]);
-        let t1 = s2 * qd[0];
-        let t2 = c2 * qd[0];
+        let x = self.__dynamics_configuration(q);
+        let t1 = x.s2 * qd[0];
+        let t2 = x.c2 * qd[0];
         let t3 = qd[1] * t2;
         let t4 = qd[1] * t1;
-        let t5 = k28 * t1 + k8 * t2 + k27 * qd[1];
-        let t6 = k8 * t1 + k10 * qd[1];
-        let t7 = k27 * t1 + k10 * t2 + k26 * qd[1];
-        let t8 = k1 * qd[1] + k31 * t1;
-        let t9 = t2 * t2;
-        let t10 = k31 * t4 + (k20 * t9 - qd[1] * t8);
-        let t11 = k31 * t3 + (k2 * t3 + k1 * (t1 * t2));
-        let t12 = k1 * t4 + (t1 * t8 + k31 * t9);
-        let t13 = c3 * t1 + s3 * t2;
-        let t14 = c3 * t2 - s3 * t1;
-        let t15 = c3 * t10 + s3 * t11;
-        let t16 = c3 * t11 - s3 * t10;
-        let t17 = qd[1] + qd[2];
-        let t18 = c3 * t3 - s3 * t4 + qd[2] * t14;
-        let t19 = -(c3 * t4) - s3 * t3 - qd[2] * t13;
-        let t20 = k23 * t13 + k33 * t14;
-        let t21 = t17 * t17;
-        let t22 = t13 * t17;
-        let t23 = t14 * t17;
-        let t24 = k25 * t13 + k22 * t14;
-        let t25 = k22 * t13 + k11 * t17;
-        let t26 = k11 * t14 + k24 * t17;
-        let t27 = k1 * t13 + k4 * t14;
-        let t28 = t15 + (t14 * t27 + k4 * t21);
-        let t29 = t12 + (k1 * t18 + k4 * t19) + (k3 * t22 + k1 * t23);
-        let t30 = c4 * t13 - s4 * t17;
-        let t31 = -(c4 * t17) - s4 * t13;
-        let t32 = qd[3] + t14;
-        let t33 = c4 * t18 + qd[3] * t31;
-        let t34 = -(s4 * t18) - qd[3] * t30;
-        let t35 = c5 * t30 + s5 * t32;
-        let t36 = c5 * t32 - s5 * t30;
+        let t5 = t2 * t2;
+        let t6 = t1 * t2;
+        let t7 = t5 + qd[1] * qd[1];
+        let t8 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
+        let t9 = x.k9 * t1 + x.k11 * qd[1];
+        let t10 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t11 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
+        let t12 = x.c3 * t1 + x.s3 * t2;
+        let t13 = x.c3 * t2 - x.s3 * t1;
+        let t14 = x.c3 * t7 - x.s3 * t6;
+        let t15 = x.c3 * t6 + x.s3 * t7;
+        let t16 = qd[1] + qd[2];
+        let t17 = x.c3 * t3 - x.s3 * t4 + qd[2] * t13;
+        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd[2] * t12;
+        let t19 = t16 * t16;
+        let t20 = t12 * t13;
+        let t21 = t13 * t13 + t19;
+        let t22 = t12 * t12 + t19;
+        let t23 = t12 * t16 - t18;
+        let t24 = t17 + t13 * t16;
+        let t25 = x.k27 * t12 + x.k24 * t13;
+        let t26 = x.k24 * t12 + x.k12 * t16;
+        let t27 = x.k12 * t13 + x.k26 * t16;
+        let t28 = x.k21 * t14 + (x.k5 * t21 + x.k2 * t20);
+        let t29 = t11 + (x.k4 * t23 + x.k2 * t24);
+        let t30 = x.c4 * t12 - x.s4 * t16;
+        let t31 = -(x.c4 * t16) - x.s4 * t12;
+        let t32 = qd[3] + t13;
+        let t33 = x.c4 * t17 + qd[3] * t31;
+        let t34 = -(x.s4 * t17) - qd[3] * t30;
+        let t35 = x.c5 * t30 + x.s5 * t32;
+        let t36 = x.c5 * t32 - x.s5 * t30;
         let t37 = qd[4] - t31;
-        let t38 = c5 * t33 + s5 * t19 + qd[4] * t36;
+        let t38 = x.c5 * t33 + x.s5 * t18 + qd[4] * t36;
         let t39 = t35 * t36;
-        let t40 = k16 * (t37 * t37) + k16 * (t35 * t35);
-        let t41 = t36 * t37;
-        let t42 = k13 * t34 + k13 * t39;
-        let t43 = k13 * t38 + k13 * t41;
+        let t40 = t36 * t37;
+        let t41 = t34 + t39;
+        let t42 = t35 * t35 + t37 * t37;
+        let t43 = t38 + t40;
         let t44 = qd[5] + t36;
-        let cqd6 = k6 * (c5 * t19 - s5 * t33 - qd[4] * t35);
-        let t45 = (-(c6 * t37) - s6 * t35) * t44;
-        let t46 = (c6 * t35 - s6 * t37) * t44;
-        let t47 = k14 * t38 + k17 * t41 + k16 * (-(c4 * t29) - s4 * t28)
-            + (k6 * (c6 * t45) + k6 * (s6 * t46));
-        let t48 = k12 * (t35 * t37) + cqd6;
-        let cqd5 = k30 * t34 + k15 * t39
-            + k16 * (c5 * (c4 * t28 - s4 * t29) + s5 * (t16 + (k20 * t21 - t13 * t27)))
-            - (k6 * (s6 * t45) + k29 * (c6 * t46));
-        let t49 = c5 * t42 - s5 * t40;
-        let t50 = s5 * t42 + c5 * t40;
-        let t51 = k5 * t33 + k19 * (t31 * t32) + (c5 * t47 - s5 * t48);
-        let t52 = k34 * (t30 * t32) - cqd5;
-        let cqd4 = k19 * t19 + k18 * (t30 * t31) + (s5 * t47 + c5 * t48);
-        let t53 = c4 * t49 + s4 * t43;
-        let t54 = s4 * t49 - c4 * t43;
-        let t55 = t14 * t20 + k33 * t21 + t53;
-        let t56 = k32 * t21 - t13 * t20 + t50;
-        let t57 = k25 * t18 + k22 * t19 + (t14 * t26 - t17 * t25) + k23 * t12
-            + (c4 * t51 - s4 * t52) + k20 * t54;
-        let t58 = k22 * t18 + (t17 * t24 - t13 * t26) + k33 * t12 + cqd4 + k3 * t54;
-        let cqd3 = k11 * t19 + (t13 * t25 - t14 * t24) + (k21 * t16 + k32 * t15)
-            - (s4 * t51 + c4 * t52) + (k3 * t50 + k20 * t53);
-        let t59 = s3 * t55 + c3 * t56;
-        let cqd2 = k27 * t3 + k9 * t4 + (t1 * t6 - t2 * t5) + cqd3 + k1 * t59;
-        let cqd1 = s2
-            * (k28 * t3 + k7 * t4 + (t2 * t7 - qd[1] * t6) + (c3 * t57 - s3 * t58)
-                + k31 * t59)
-            + c2
-                * (k8 * t3 + (qd[1] * t5 - t1 * t7) + (s3 * t57 + c3 * t58)
-                    + (k2 * (c3 * t55 - s3 * t56)
-                        + k20
-                            * (k23 * t18 + k33 * t19 + (k21 * t22 + k23 * t23) - t54)));
+        let t45 = (x.c6 * t35 - x.s6 * t37) * t44;
+        let t46 = (-(x.c6 * t37) - x.s6 * t35) * t44;
+        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd[4] * t35);
+        let t47 = x.k15 * t38 + x.k18 * t40 + x.k17 * (-(x.c4 * t29) - x.s4 * t28)
+            + x.k7 * (x.c6 * t46 + x.s6 * t45);
+        let t48 = x.k13 * (t35 * t37) + cqd6;
+        let cqd5 = x.k33 * t34 + x.k16 * t39
+            + x.k17
+                * (x.c5 * (x.c4 * t28 - x.s4 * t29)
+                    + x.s5 * (x.k2 * t15 + (x.k4 * t20 + x.k21 * t22)))
+            + x.k32 * (x.s6 * t46 - x.c6 * t45);
+        let t49 = x.c5 * t41 + x.s5 * t42;
+        let t50 = x.s5 * t41 - x.c5 * t42;
+        let t51 = x.k6 * t33 + x.k20 * (t31 * t32) + (x.c5 * t47 - x.s5 * t48);
+        let t52 = x.k55 * (t30 * t32) - cqd5;
+        let cqd4 = x.k20 * t18 + x.k19 * (t30 * t31) + (x.s5 * t47 + x.c5 * t48);
+        let t53 = x.c4 * t49 + x.s4 * t43;
+        let t54 = x.s4 * t49 - x.c4 * t43;
+        let t55 = x.k52 * t21 + x.k25 * t20 + x.k14 * t53;
+        let t56 = x.k22 * t20 + x.k53 * t22 + x.k14 * t50;
+        let t57 = x.k27 * t17 + x.k24 * t18 + (t13 * t27 - t16 * t26) + x.k25 * t11
+            + (x.c4 * t51 - x.s4 * t52) + x.k39 * t54;
+        let t58 = x.k24 * t17 + (t16 * t25 - t12 * t27) + x.k52 * t11 + cqd4
+            + x.k38 * t54;
+        let cqd3 = x.k12 * t18 + (t12 * t26 - t13 * t25) + (x.k23 * t15 + x.k54 * t14)
+            - (x.s4 * t51 + x.c4 * t52) + (x.k38 * t50 + x.k39 * t53);
+        let t59 = x.s3 * t55 + x.c3 * t56;
+        let cqd2 = x.k29 * t3 + x.k10 * t4 + (t1 * t9 - t2 * t8) + cqd3 + x.k2 * t59;
+        let cqd1 = x.s2
+            * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd[1] * t9)
+                + (x.c3 * t57 - x.s3 * t58) + x.k41 * t59)
+            + x.c2
+                * (x.k9 * t3 + (qd[1] * t8 - t1 * t10) + (x.s3 * t57 + x.c3 * t58)
+                    + (x.k3 * (x.c3 * t55 - x.s3 * t56)
+                        + x.k21 * (x.k22 * t23 + x.k25 * t24 + x.k17 * t54)));
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
     /// g(q), with joint springs.
@@ -648,31 +866,8 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         &self,
         q: &[T; 6usize],
     ) -> [T; 6usize] {
-        let k1: T = T::from_f64(0.00288);
-        let k2: T = T::from_f64(-0.00288);
-        let k3: T = T::from_f64(0.025375);
-        let k4: T = T::from_f64(-9.81);
-        let k5: T = T::from_f64(9.81);
-        let k6: T = T::from_f64(37.2347379);
-        let k7: T = T::from_f64(-1.024164);
-        let k8: T = T::from_f64(-0.89133);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let t1 = k5 * (s2 * c3) + k5 * (c2 * s3);
-        let t2 = k5 * (c2 * c3) + k4 * (s2 * s3);
-        let t3 = s4 * t1;
-        let t4 = c5 * (c4 * t1) + s5 * t2;
-        let g5 = k2 * t4;
-        let t5 = c5 * t3;
-        let t6 = s5 * t3;
-        let g4 = k1 * t6;
-        let t7 = k1 * (c4 * t5) + k2 * (s4 * t4);
-        let g3 = k3 * t2 + k8 * t1 - (k1 * (s4 * t5) + k1 * (c4 * t4));
-        let g2 = k6 * c2 + k7 * s2 + g3;
-        let g1 = s2 * (c3 * t7 + k2 * (s3 * t6)) + c2 * (s3 * t7 + k1 * (c3 * t6));
-        [g1, g2, g3, g4, g5, T::ZERO]
+        let x = self.__dynamics_configuration(q);
+        [x.g1, x.g2, x.g3, x.g4, x.g5, T::ZERO]
     }
     /// C(q, q̇) q̇ + g(q).
     #[inline]
@@ -682,127 +877,90 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         q: &[T; 6usize],
         qd: &[T; 6usize],
     ) -> [T; 6usize] {
-        let k1: T = T::from_f64(0.4318);
-        let k2: T = T::from_f64(0.15005);
-        let k3: T = T::from_f64(0.0203);
-        let k4: T = T::from_f64(-0.0203);
-        let k5: T = T::from_f64(0.0003);
-        let k6: T = T::from_f64(0.00004);
-        let k7: T = T::from_f64(0.0070992);
-        let k8: T = T::from_f64(-0.0070992);
-        let k9: T = T::from_f64(0.023751);
-        let k10: T = T::from_f64(-0.023751);
-        let k11: T = T::from_f64(-0.0047376);
-        let k12: T = T::from_f64(-0.0004);
-        let k13: T = T::from_f64(0.00288);
-        let k14: T = T::from_f64(0.00024216);
-        let k15: T = T::from_f64(-0.00024216);
-        let k16: T = T::from_f64(-0.00288);
-        let k17: T = T::from_f64(0.00064216);
-        let k18: T = T::from_f64(-0.0003);
-        let k19: T = T::from_f64(0.0016);
-        let k20: T = T::from_f64(-0.4318);
-        let k21: T = T::from_f64(0.025375);
-        let k22: T = T::from_f64(-0.011273199);
-        let k23: T = T::from_f64(0.89133);
-        let k24: T = T::from_f64(0.3586500705);
-        let k25: T = T::from_f64(0.3251198455);
-        let k26: T = T::from_f64(1.748114002);
-        let k27: T = T::from_f64(-0.6903913435);
-        let k28: T = T::from_f64(-1.601861202);
-        let k29: T = T::from_f64(-0.00004);
-        let k30: T = T::from_f64(-0.00064216);
-        let k31: T = T::from_f64(-0.15005);
-        let k32: T = T::from_f64(9.81);
-        let k33: T = T::from_f64(37.2347379);
-        let k34: T = T::from_f64(-1.024164);
-        let k35: T = T::from_f64(-0.89133);
-        let k36: T = T::from_f64(-0.025375);
-        let k37: T = T::from_f64(-0.0013);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let (s6, c6) = T::sin_cos(q[5]);
-        let t1 = s2 * qd[0];
-        let t2 = c2 * qd[0];
+        let x = self.__dynamics_configuration(q);
+        let t1 = x.s2 * qd[0];
+        let t2 = x.c2 * qd[0];
         let t3 = qd[1] * t2;
         let t4 = qd[1] * t1;
-        let t5 = k28 * t1 + k8 * t2 + k27 * qd[1];
-        let t6 = k8 * t1 + k10 * qd[1];
-        let t7 = k27 * t1 + k10 * t2 + k26 * qd[1];
-        let t8 = k1 * qd[1] + k31 * t1;
-        let t9 = t2 * t2;
-        let t10 = k1 * t4 + (t1 * t8 + k31 * t9);
-        let t11 = c3 * t1 + s3 * t2;
-        let t12 = c3 * t2 - s3 * t1;
-        let t13 = qd[1] + qd[2];
-        let t14 = c3 * t3 - s3 * t4 + qd[2] * t12;
-        let t15 = -(c3 * t4) - s3 * t3 - qd[2] * t11;
-        let t16 = k23 * t11 + k36 * t12;
-        let t17 = t13 * t13;
-        let t18 = t11 * t13;
-        let t19 = t12 * t13;
-        let t20 = k25 * t11 + k22 * t12;
-        let t21 = k22 * t11 + k11 * t13;
-        let t22 = k11 * t12 + k24 * t13;
-        let t23 = k1 * t11 + k4 * t12;
-        let t24 = t10 + (k1 * t14 + k4 * t15) + (k3 * t18 + k1 * t19);
-        let t25 = c4 * t11 - s4 * t13;
-        let t26 = -(c4 * t13) - s4 * t11;
-        let t27 = qd[3] + t12;
-        let t28 = c4 * t14 + qd[3] * t26;
-        let t29 = -(s4 * t14) - qd[3] * t25;
-        let t30 = c5 * t25 + s5 * t27;
-        let t31 = c5 * t27 - s5 * t25;
+        let t5 = t2 * t2;
+        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
+        let t7 = x.k9 * t1 + x.k11 * qd[1];
+        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t9 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
+        let t10 = x.c3 * t1 + x.s3 * t2;
+        let t11 = x.c3 * t2 - x.s3 * t1;
+        let t12 = qd[1] + qd[2];
+        let t13 = x.c3 * t3 - x.s3 * t4 + qd[2] * t11;
+        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd[2] * t10;
+        let t15 = t12 * t12;
+        let t16 = t10 * t11;
+        let t17 = t11 * t11 + t15;
+        let t18 = t10 * t10 + t15;
+        let t19 = t10 * t12 - t14;
+        let t20 = t13 + t11 * t12;
+        let t21 = x.k27 * t10 + x.k24 * t11;
+        let t22 = x.k24 * t10 + x.k12 * t12;
+        let t23 = x.k12 * t11 + x.k26 * t12;
+        let t24 = t9 + (x.k4 * t19 + x.k2 * t20);
+        let t25 = x.c4 * t10 - x.s4 * t12;
+        let t26 = -(x.c4 * t12) - x.s4 * t10;
+        let t27 = qd[3] + t11;
+        let t28 = x.c4 * t13 + qd[3] * t26;
+        let t29 = -(x.s4 * t13) - qd[3] * t25;
+        let t30 = x.c5 * t25 + x.s5 * t27;
+        let t31 = x.c5 * t27 - x.s5 * t25;
         let t32 = qd[4] - t26;
-        let t33 = c5 * t28 + s5 * t15 + qd[4] * t31;
+        let t33 = x.c5 * t28 + x.s5 * t14 + qd[4] * t31;
         let t34 = t30 * t31;
-        let t35 = k16 * (t32 * t32) + k16 * (t30 * t30);
-        let t36 = t31 * t32;
-        let t37 = k13 * t29 + k13 * t34;
-        let t38 = k13 * t33 + k13 * t36;
+        let t35 = t31 * t32;
+        let t36 = t29 + t34;
+        let t37 = t30 * t30 + t32 * t32;
+        let t38 = t33 + t35;
         let t39 = qd[5] + t31;
-        let h6 = k6 * (c5 * t15 - s5 * t28 - qd[4] * t30);
-        let t40 = (-(c6 * t32) - s6 * t30) * t39;
-        let t41 = (c6 * t30 - s6 * t32) * t39;
-        let t42 = k12 * (t30 * t32) + h6;
-        let t43 = c5 * t37 - s5 * t35;
-        let t44 = s5 * t37 + c5 * t35;
-        let t45 = c4 * t43 + s4 * t38;
-        let t46 = s4 * t43 - c4 * t38;
-        let t47 = t12 * t16 + k36 * t17 + t45;
-        let t48 = k35 * t17 - t11 * t16 + t44;
-        let t49 = s3 * t47 + c3 * t48;
-        let t50 = k20 * t9 - qd[1] * t8 + (k32 * s2 + k31 * t4);
-        let t51 = k2 * t3 + k1 * (t1 * t2) + (k32 * c2 + k31 * t3);
-        let t52 = c3 * t50 + s3 * t51;
-        let t53 = c3 * t51 - s3 * t50;
-        let t54 = t12 * t23 + k4 * t17 + t52;
-        let t55 = k6 * (c6 * t40) + k6 * (s6 * t41)
-            + (k14 * t33 + k17 * t36 + k16 * (-(c4 * t24) - s4 * t54));
-        let h5 = k30 * t29 + k15 * t34
-            + k16 * (c5 * (c4 * t54 - s4 * t24) + s5 * (k20 * t17 - t11 * t23 + t53))
-            - (k6 * (s6 * t40) + k29 * (c6 * t41));
-        let t56 = k5 * t28 + k19 * (t26 * t27) + (c5 * t55 - s5 * t42);
-        let t57 = k37 * (t25 * t27) - h5;
-        let h4 = k19 * t15 + k18 * (t25 * t26) + (c5 * t42 + s5 * t55);
-        let t58 = k20 * t46
-            + (k25 * t14 + k22 * t15 + (t12 * t22 - t13 * t21) + k23 * t10
-                + (c4 * t56 - s4 * t57));
-        let t59 = k3 * t46 + (k22 * t14 + (t13 * t20 - t11 * t22) + k36 * t10 + h4);
-        let h3 = k3 * t44 + k20 * t45
-            + (k11 * t15 + (t11 * t21 - t12 * t20) + (k21 * t53 + k35 * t52)
-                - (s4 * t56 + c4 * t57));
-        let h2 = k1 * t49
-            + (k33 * c2 + k34 * s2 + (k27 * t3 + k9 * t4 + (t1 * t6 - t2 * t5)) + h3);
-        let h1 = s2
-            * (k31 * t49
-                + (k28 * t3 + k7 * t4 + (t2 * t7 - qd[1] * t6) + (c3 * t58 - s3 * t59)))
-            + c2
-                * (k2 * (c3 * t47 - s3 * t48)
-                    + k20 * (k23 * t14 + k36 * t15 + (k21 * t18 + k23 * t19) - t46)
-                    + (k8 * t3 + (qd[1] * t5 - t1 * t7) + (s3 * t58 + c3 * t59)));
+        let t40 = (x.c6 * t30 - x.s6 * t32) * t39;
+        let t41 = (-(x.c6 * t32) - x.s6 * t30) * t39;
+        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd[4] * t30);
+        let t42 = x.k13 * (t30 * t32) + h6;
+        let t43 = x.c5 * t36 + x.s5 * t37;
+        let t44 = x.s5 * t36 - x.c5 * t37;
+        let t45 = x.c4 * t43 + x.s4 * t38;
+        let t46 = x.s4 * t43 - x.c4 * t38;
+        let t47 = x.k52 * t17 + x.k25 * t16 + x.k14 * t45;
+        let t48 = x.k22 * t16 + x.k53 * t18 + x.k14 * t44;
+        let t49 = x.s3 * t47 + x.c3 * t48;
+        let t50 = x.t117 + x.k21 * (t5 + qd[1] * qd[1]);
+        let t51 = x.t118 + x.k2 * (t1 * t2);
+        let t52 = x.c3 * t50 + x.s3 * t51;
+        let t53 = x.c3 * t51 - x.s3 * t50;
+        let t54 = x.k5 * t17 + x.k2 * t16 + t52;
+        let t55 = x.k7 * (x.c6 * t41 + x.s6 * t40)
+            + (x.k15 * t33 + x.k18 * t35 + x.k17 * (-(x.c4 * t24) - x.s4 * t54));
+        let h5 = x.k32 * (x.s6 * t41 - x.c6 * t40)
+            + (x.k33 * t29 + x.k16 * t34
+                + x.k17
+                    * (x.c5 * (x.c4 * t54 - x.s4 * t24)
+                        + x.s5 * (x.k4 * t16 + x.k21 * t18 + t53)));
+        let t56 = x.k6 * t28 + x.k20 * (t26 * t27) + (x.c5 * t55 - x.s5 * t42);
+        let t57 = x.k55 * (t25 * t27) - h5;
+        let h4 = x.k20 * t14 + x.k19 * (t25 * t26) + (x.c5 * t42 + x.s5 * t55);
+        let t58 = x.k39 * t46
+            + (x.k27 * t13 + x.k24 * t14 + (t11 * t23 - t12 * t22) + x.k25 * t9
+                + (x.c4 * t56 - x.s4 * t57));
+        let t59 = x.k38 * t46
+            + (x.k24 * t13 + (t12 * t21 - t10 * t23) + x.k52 * t9 + h4);
+        let h3 = x.k38 * t44 + x.k39 * t45
+            + (x.k12 * t14 + (t10 * t22 - t11 * t21) + (x.k22 * t53 + x.k53 * t52)
+                - (x.s4 * t56 + x.c4 * t57));
+        let h2 = x.k2 * t49
+            + (x.t119 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
+        let h1 = x.s2
+            * (x.k41 * t49
+                + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd[1] * t7)
+                    + (x.c3 * t58 - x.s3 * t59)))
+            + x.c2
+                * (x.k3 * (x.c3 * t47 - x.s3 * t48)
+                    + x.k21 * (x.k22 * t19 + x.k25 * t20 + x.k17 * t46)
+                    + (x.k9 * t3 + (qd[1] * t6 - t1 * t8) + (x.s3 * t58 + x.c3 * t59)));
         [h1, h2, h3, h4, h5, h6]
     }
     /// τ = M(q) q̈ + C(q, q̇) q̇ + g(q).
@@ -814,134 +972,97 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         qd: &[T; 6usize],
         qdd: &[T; 6usize],
     ) -> [T; 6usize] {
-        let k1: T = T::from_f64(0.4318);
-        let k2: T = T::from_f64(0.15005);
-        let k3: T = T::from_f64(0.0203);
-        let k4: T = T::from_f64(-0.0203);
-        let k5: T = T::from_f64(0.0003);
-        let k6: T = T::from_f64(0.00004);
-        let k7: T = T::from_f64(-0.0070992);
-        let k8: T = T::from_f64(-0.023751);
-        let k9: T = T::from_f64(-0.0047376);
-        let k10: T = T::from_f64(-0.0004);
-        let k11: T = T::from_f64(0.00288);
-        let k12: T = T::from_f64(0.00024216);
-        let k13: T = T::from_f64(-0.00024216);
-        let k14: T = T::from_f64(-0.00288);
-        let k15: T = T::from_f64(0.00064216);
-        let k16: T = T::from_f64(-0.0003);
-        let k17: T = T::from_f64(0.0016);
-        let k18: T = T::from_f64(-0.4318);
-        let k19: T = T::from_f64(0.025375);
-        let k20: T = T::from_f64(-0.011273199);
-        let k21: T = T::from_f64(0.89133);
-        let k22: T = T::from_f64(0.3586500705);
-        let k23: T = T::from_f64(0.3251198455);
-        let k24: T = T::from_f64(1.748114002);
-        let k25: T = T::from_f64(-0.6903913435);
-        let k26: T = T::from_f64(-1.601861202);
-        let k27: T = T::from_f64(3.153542285625);
-        let k28: T = T::from_f64(-0.00004);
-        let k29: T = T::from_f64(-0.15005);
-        let k30: T = T::from_f64(9.81);
-        let k31: T = T::from_f64(37.2347379);
-        let k32: T = T::from_f64(-1.024164);
-        let k33: T = T::from_f64(-0.89133);
-        let k34: T = T::from_f64(-0.025375);
-        let k35: T = T::from_f64(-0.0013);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let (s6, c6) = T::sin_cos(q[5]);
-        let t1 = s2 * qd[0];
-        let t2 = c2 * qd[0];
+        let x = self.__dynamics_configuration(q);
+        let t1 = x.s2 * qd[0];
+        let t2 = x.c2 * qd[0];
         let t3 = qd[1] * t2;
-        let t4 = k26 * t1 + k7 * t2 + k25 * qd[1];
-        let t5 = k7 * t1 + k8 * qd[1];
-        let t6 = k25 * t1 + k8 * t2 + k24 * qd[1];
-        let t7 = k1 * qd[1] + k29 * t1;
-        let t8 = t2 * t2;
-        let t9 = c3 * t1 + s3 * t2;
-        let t10 = c3 * t2 - s3 * t1;
+        let t4 = qd[1] * t1;
+        let t5 = t2 * t2;
+        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
+        let t7 = x.k9 * t1 + x.k11 * qd[1];
+        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t9 = x.c3 * t1 + x.s3 * t2;
+        let t10 = x.c3 * t2 - x.s3 * t1;
         let t11 = qd[1] + qd[2];
-        let t12 = k21 * t9 + k34 * t10;
-        let t13 = t11 * t11;
-        let t14 = t9 * t11;
-        let t15 = t10 * t11;
-        let t16 = k23 * t9 + k20 * t10;
-        let t17 = k20 * t9 + k9 * t11;
-        let t18 = k9 * t10 + k22 * t11;
-        let t19 = k1 * t9 + k4 * t10;
-        let t20 = c4 * t9 - s4 * t11;
-        let t21 = -(c4 * t11) - s4 * t9;
-        let t22 = qd[3] + t10;
-        let t23 = c5 * t20 + s5 * t22;
-        let t24 = c5 * t22 - s5 * t20;
-        let t25 = qd[4] - t21;
+        let t12 = t11 * t11;
+        let t13 = t9 * t10;
+        let t14 = t10 * t10 + t12;
+        let t15 = t9 * t9 + t12;
+        let t16 = x.k27 * t9 + x.k24 * t10;
+        let t17 = x.k24 * t9 + x.k12 * t11;
+        let t18 = x.k12 * t10 + x.k26 * t11;
+        let t19 = x.c4 * t9 - x.s4 * t11;
+        let t20 = -(x.c4 * t11) - x.s4 * t9;
+        let t21 = qd[3] + t10;
+        let t22 = x.c5 * t19 + x.s5 * t21;
+        let t23 = x.c5 * t21 - x.s5 * t19;
+        let t24 = qd[4] - t20;
+        let t25 = t22 * t23;
         let t26 = t23 * t24;
-        let t27 = k14 * (t25 * t25) + k14 * (t23 * t23);
-        let t28 = t24 * t25;
-        let t29 = qd[5] + t24;
-        let t30 = (-(c6 * t25) - s6 * t23) * t29;
-        let t31 = (c6 * t23 - s6 * t25) * t29;
-        let t32 = t3 + s2 * qdd[0];
-        let t33 = c2 * qdd[0] - qd[1] * t1;
-        let t34 = k18 * t8 - qd[1] * t7 + (k30 * s2 + k2 * t33);
-        let t35 = k2 * t3 + k1 * (t1 * t2) + (k30 * c2 + (k1 * qdd[1] + k29 * t32));
-        let t36 = t1 * t7 + k29 * t8 + k18 * t33;
-        let t37 = c3 * t34 + s3 * t35;
-        let t38 = c3 * t35 - s3 * t34;
-        let t39 = qd[2] * t10 + (c3 * t32 + s3 * t33);
-        let t40 = c3 * t33 - s3 * t32 - qd[2] * t9;
-        let t41 = qdd[1] + qdd[2];
-        let t42 = t10 * t19 + k4 * t13 + (t37 + k18 * t41);
-        let t43 = k3 * t14 + k1 * t15 + (t36 + (k1 * t39 + k4 * t40));
-        let t44 = qd[3] * t21 + (c4 * t39 - s4 * t41);
-        let t45 = qdd[3] + t40;
-        let t46 = qd[4] * t24 + (c5 * t44 + s5 * t45);
-        let t47 = qdd[4] - (-(c4 * t41) - s4 * t39 - qd[3] * t20);
-        let t48 = k11 * t26 + k14 * t47;
-        let t49 = k11 * t28 + k11 * t46;
-        let tau6 = k6 * (qdd[5] + (c5 * t45 - s5 * t44 - qd[4] * t23));
-        let t50 = k6 * (c6 * t30) + k6 * (s6 * t31)
-            + (k15 * t28 + k12 * t46 + k14 * (-(c4 * t43) - s4 * t42));
-        let t51 = k10 * (t23 * t25) + tau6;
-        let tau5 = k13 * t26 + k15 * t47
-            + k14
-                * (c5 * (c4 * t42 - s4 * t43)
-                    + s5 * (k18 * t13 - t9 * t19 + (t38 + k3 * t41)))
-            - (k6 * (s6 * t30) + k28 * (c6 * t31));
-        let t52 = c5 * t48 - s5 * t27;
-        let t53 = c5 * t27 + s5 * t48;
-        let t54 = k17 * (t21 * t22) + k5 * t44 + (c5 * t50 - s5 * t51);
-        let t55 = k35 * (t20 * t22) - tau5;
-        let tau4 = k16 * (t20 * t21) + k17 * t45 + (s5 * t50 + c5 * t51);
-        let t56 = c4 * t52 + s4 * t49;
-        let t57 = s4 * t52 - c4 * t49;
-        let t58 = t10 * t12 + k34 * t13 + k33 * t41 + t56;
-        let t59 = k33 * t13 - t9 * t12 + k19 * t41 + t53;
-        let t60 = t10 * t18 - t11 * t17 + (k23 * t39 + k20 * t40) + k21 * t36
-            + (c4 * t54 - s4 * t55) + k18 * t57;
-        let t61 = t11 * t16 - t9 * t18 + (k20 * t39 + k9 * t41) + k34 * t36 + tau4
-            + k3 * t57;
-        let tau3 = t9 * t17 - t10 * t16 + (k9 * t40 + k22 * t41)
-            + (k19 * t38 + k33 * t37) - (s4 * t54 + c4 * t55) + (k3 * t53 + k18 * t56);
-        let t62 = s3 * t58 + c3 * t59;
-        let tau2 = k31 * c2 + k32 * s2
-            + (t1 * t5 - t2 * t4 + (k25 * t32 + k8 * t33 + k24 * qdd[1])) + tau3
-            + k1 * t62;
-        let tau1 = k27 * qdd[0]
-            + (s2
-                * (t2 * t6 - qd[1] * t5 + (k26 * t32 + k7 * t33 + k25 * qdd[1])
-                    + (c3 * t60 - s3 * t61) + k29 * t62)
-                + c2
-                    * (qd[1] * t4 - t1 * t6 + (k7 * t32 + k8 * qdd[1])
-                        + (s3 * t60 + c3 * t61)
-                        + (k2 * (c3 * t58 - s3 * t59)
-                            + k18
-                                * (k19 * t14 + k21 * t15 + (k21 * t39 + k34 * t40)
-                                    - t57))));
+        let t27 = t22 * t22 + t24 * t24;
+        let t28 = qd[5] + t23;
+        let t29 = (x.c6 * t22 - x.s6 * t24) * t28;
+        let t30 = (-(x.c6 * t24) - x.s6 * t22) * t28;
+        let t31 = t3 + x.s2 * qdd[0];
+        let t32 = x.c2 * qdd[0] - t4;
+        let t33 = x.k41 * (t1 * t1 + t5) + x.k2 * (t4 - t32);
+        let t34 = x.t117 + (x.k21 * (t5 + qd[1] * qd[1]) + x.k3 * (t4 + t32));
+        let t35 = x.t118 + (x.k2 * (qdd[1] + t1 * t2) + x.k3 * (t3 - t31));
+        let t36 = x.c3 * t34 + x.s3 * t35;
+        let t37 = x.c3 * t35 - x.s3 * t34;
+        let t38 = qd[2] * t10 + (x.c3 * t31 + x.s3 * t32);
+        let t39 = x.c3 * t32 - x.s3 * t31 - qd[2] * t9;
+        let t40 = qdd[1] + qdd[2];
+        let t41 = t13 - t40;
+        let t42 = t13 + t40;
+        let t43 = t9 * t11 - t39;
+        let t44 = t10 * t11 + t38;
+        let t45 = t36 + (x.k5 * t14 + x.k2 * t41);
+        let t46 = t33 + (x.k4 * t43 + x.k2 * t44);
+        let t47 = qd[3] * t20 + (x.c4 * t38 - x.s4 * t40);
+        let t48 = qdd[3] + t39;
+        let t49 = qd[4] * t23 + (x.c5 * t47 + x.s5 * t48);
+        let t50 = qdd[4] - (-(x.c4 * t40) - x.s4 * t38 - qd[3] * t19);
+        let t51 = t25 - t50;
+        let t52 = t26 + t49;
+        let tau6 = x.k7 * (qdd[5] + (x.c5 * t48 - x.s5 * t47 - qd[4] * t22));
+        let t53 = x.k7 * (x.c6 * t30 + x.s6 * t29)
+            + (x.k18 * t26 + x.k15 * t49 + x.k17 * (-(x.c4 * t46) - x.s4 * t45));
+        let t54 = x.k13 * (t22 * t24) + tau6;
+        let tau5 = x.k32 * (x.s6 * t30 - x.c6 * t29)
+            + (x.k16 * t25 + x.k18 * t50
+                + x.k17
+                    * (x.c5 * (x.c4 * t45 - x.s4 * t46)
+                        + x.s5 * (t37 + (x.k21 * t15 + x.k4 * t42))));
+        let t55 = x.s5 * t27 + x.c5 * t51;
+        let t56 = x.s5 * t51 - x.c5 * t27;
+        let t57 = x.k20 * (t20 * t21) + x.k6 * t47 + (x.c5 * t53 - x.s5 * t54);
+        let t58 = x.k55 * (t19 * t21) - tau5;
+        let tau4 = x.k19 * (t19 * t20) + x.k20 * t48 + (x.s5 * t53 + x.c5 * t54);
+        let t59 = x.c4 * t55 + x.s4 * t52;
+        let t60 = x.s4 * t55 - x.c4 * t52;
+        let t61 = x.k52 * t14 + x.k25 * t41 + x.k14 * t59;
+        let t62 = x.k53 * t15 + x.k22 * t42 + x.k14 * t56;
+        let t63 = t10 * t18 - t11 * t17 + (x.k27 * t38 + x.k24 * t39) + x.k25 * t33
+            + (x.c4 * t57 - x.s4 * t58) + x.k39 * t60;
+        let t64 = t11 * t16 - t9 * t18 + (x.k24 * t38 + x.k12 * t40) + x.k52 * t33 + tau4
+            + x.k38 * t60;
+        let tau3 = t9 * t17 - t10 * t16 + (x.k12 * t39 + x.k26 * t40)
+            + (x.k22 * t37 + x.k53 * t36) - (x.s4 * t57 + x.c4 * t58)
+            + (x.k38 * t56 + x.k39 * t59);
+        let t65 = x.s3 * t61 + x.c3 * t62;
+        let tau2 = x.t119
+            + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd[1])) + tau3
+            + x.k2 * t65;
+        let tau1 = x.k31 * qdd[0]
+            + (x.s2
+                * (t2 * t8 - qd[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd[1])
+                    + (x.c3 * t63 - x.s3 * t64) + x.k41 * t65)
+                + x.c2
+                    * (qd[1] * t6 - t1 * t8 + (x.k9 * t31 + x.k11 * qdd[1])
+                        + (x.s3 * t63 + x.c3 * t64)
+                        + (x.k3 * (x.c3 * t61 - x.s3 * t62)
+                            + x.k21 * (x.k22 * t43 + x.k25 * t44 + x.k17 * t60))));
         [tau1, tau2, tau3, tau4, tau5, tau6]
     }
     /// The kinetic energy.
@@ -952,90 +1073,47 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         q: &[T; 6usize],
         qd: &[T; 6usize],
     ) -> T {
-        let k1: T = T::from_f64(0.5);
-        let k2: T = T::from_f64(0.4318);
-        let k3: T = T::from_f64(0.15005);
-        let k4: T = T::from_f64(0.0203);
-        let k5: T = T::from_f64(-0.0203);
-        let k6: T = T::from_f64(0.0003);
-        let k7: T = T::from_f64(0.00004);
-        let k8: T = T::from_f64(-0.0070992);
-        let k9: T = T::from_f64(-0.023751);
-        let k10: T = T::from_f64(-0.0047376);
-        let k11: T = T::from_f64(0.00024216);
-        let k12: T = T::from_f64(-0.00288);
-        let k13: T = T::from_f64(0.00064216);
-        let k14: T = T::from_f64(0.0016);
-        let k15: T = T::from_f64(-0.4318);
-        let k16: T = T::from_f64(0.025375);
-        let k17: T = T::from_f64(-0.011273199);
-        let k18: T = T::from_f64(0.89133);
-        let k19: T = T::from_f64(0.3586500705);
-        let k20: T = T::from_f64(0.3251198455);
-        let k21: T = T::from_f64(1.748114002);
-        let k22: T = T::from_f64(-0.6903913435);
-        let k23: T = T::from_f64(-1.601861202);
-        let k24: T = T::from_f64(3.153542285625);
-        let k25: T = T::from_f64(-0.15005);
-        let k26: T = T::from_f64(-0.89133);
-        let k27: T = T::from_f64(2.0);
-        let k28: T = T::from_f64(-0.025375);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let t1 = s2 * qd[0];
-        let t2 = c2 * qd[0];
-        let t3 = k2 * qd[1] + k25 * t1;
-        let t4 = s3 * t2;
-        let t5 = c3 * t1 + t4;
-        let t6 = c3 * t2;
-        let t7 = t6 - s3 * t1;
-        let t8 = qd[1] + qd[2];
-        let t9 = c4 * t5 - s4 * t8;
-        let t10 = qd[3] + t7;
-        let t11 = c5 * t9 + s5 * t10;
-        let t12 = qd[4] - (-(c4 * t8) - s4 * t5);
-        let t13 = qd[5] + (c5 * t10 - s5 * t9);
-        let t14 = k3 * t6 + s3 * t3;
-        let t15 = c3 * t3 + k25 * t4;
-        let t16 = k15 * t8 + t14;
-        let t17 = k15 * t2 + (k2 * t5 + k5 * t7);
-        let t18 = k1
-            * (k24 * (qd[0] * qd[0])
-                + (t1 * (k23 * t1 + k8 * t2 + k22 * qd[1]) + t2 * (k8 * t1 + k9 * qd[1])
-                    + qd[1] * (k22 * t1 + k9 * t2 + k21 * qd[1]))
-                + k27
-                    * (k26 * (t8 * t14) + k16 * (t8 * t15)
-                        + k15 * (t2 * (k18 * t5 + k28 * t7)))
-                + (t5 * (k20 * t5 + k17 * t7) + t7 * (k17 * t5 + k10 * t8)
-                    + t8 * (k10 * t7 + k19 * t8)) + (k6 * (t9 * t9) + k14 * (t10 * t10))
-                + k27
-                    * (k12 * (t12 * (c5 * (c4 * t16 - s4 * t17) + s5 * (k4 * t8 + t15)))
-                        + k12 * (t11 * (-(c4 * t17) - s4 * t16)))
-                + (k11 * (t11 * t11) + k13 * (t12 * t12)) + k7 * (t13 * t13));
+        let x = self.__dynamics_configuration(q);
+        let t1 = x.s2 * qd[0];
+        let t2 = x.c2 * qd[0];
+        let t3 = x.s3 * t2;
+        let t4 = x.c3 * t1 + t3;
+        let t5 = x.c3 * t2;
+        let t6 = t5 - x.s3 * t1;
+        let t7 = qd[1] + qd[2];
+        let t8 = x.c4 * t4 - x.s4 * t7;
+        let t9 = qd[3] + t6;
+        let t10 = x.c5 * t8 + x.s5 * t9;
+        let t11 = qd[4] - (-(x.c4 * t7) - x.s4 * t4);
+        let t12 = qd[5] + (x.c5 * t9 - x.s5 * t8);
+        let t13 = x.k2 * qd[1] + x.k41 * t1;
+        let t14 = x.k3 * t5 + x.s3 * t13;
+        let t15 = x.c3 * t13 + x.k41 * t3;
+        let t16 = t14 + x.k21 * t7;
+        let t17 = x.k21 * t2 + (x.k2 * t4 + x.k5 * t6);
+        let t18 = x.k1
+            * (x.k31 * (qd[0] * qd[0])
+                + (t1 * (x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1])
+                    + t2 * (x.k9 * t1 + x.k11 * qd[1])
+                    + qd[1] * (x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1]))
+                + x.k50
+                    * (x.k53 * (t7 * t14) + x.k22 * (t7 * t15)
+                        + x.k21 * (t2 * (x.k25 * t4 + x.k52 * t6)))
+                + (t4 * (x.k27 * t4 + x.k24 * t6) + t6 * (x.k24 * t4 + x.k12 * t7)
+                    + t7 * (x.k12 * t6 + x.k26 * t7))
+                + (x.k6 * (t8 * t8) + x.k20 * (t9 * t9))
+                + x.k56
+                    * (t11
+                        * (x.c5 * (x.c4 * t16 - x.s4 * t17) + x.s5 * (t15 + x.k4 * t7))
+                        + t10 * (-(x.c4 * t17) - x.s4 * t16))
+                + (x.k15 * (t10 * t10) + x.k18 * (t11 * t11)) + x.k7 * (t12 * t12));
         t18
     }
     /// The potential energy.
     #[inline]
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn potential_energy<T: ::dynamics_runtime::Real>(&self, q: &[T; 6usize]) -> T {
-        let k1: T = T::from_f64(0.00288);
-        let k2: T = T::from_f64(0.025375);
-        let k3: T = T::from_f64(0.89133);
-        let k4: T = T::from_f64(-9.81);
-        let k5: T = T::from_f64(9.81);
-        let k6: T = T::from_f64(-1.024164);
-        let k7: T = T::from_f64(-154.550796435);
-        let k8: T = T::from_f64(-37.2347379);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let c4 = T::cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let t1 = k4 * (s2 * c3) + k4 * (c2 * s3);
-        let t2 = k5 * (s2 * s3) + k4 * (c2 * c3);
-        let t3 = -(k7 + (k8 * s2 + k6 * c2) + (k2 * t1 + k3 * t2)
-            + k1 * (c5 * t2 - s5 * (c4 * t1)));
-        t3
+        let x = self.__dynamics_configuration(q);
+        x.p
     }
 }

@@ -46,7 +46,11 @@ fn impl_doc(out: &syn::File) -> String {
             let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
                 continue;
             };
-            if imp.trait_.is_some() {
+            let holds_equations = imp
+                .items
+                .iter()
+                .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"));
+            if imp.trait_.is_some() || !holds_equations {
                 continue;
             }
             let mut doc = String::new();
