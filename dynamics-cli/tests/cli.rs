@@ -270,7 +270,10 @@ fn stats_per_method() {
         if line.starts_with("(shared)") {
             // The shared configuration's code: computed once, its operations counted in the
             // methods that read it.
-            total += cols.last().and_then(|b| b.parse::<usize>().ok()).expect("bytes");
+            total += cols
+                .last()
+                .and_then(|b| b.parse::<usize>().ok())
+                .expect("bytes");
             continue;
         }
         if line.starts_with("total generated code") {
