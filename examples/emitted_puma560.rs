@@ -154,7 +154,7 @@ impl Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn __dynamics_configuration<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
+        q_: &[T; 6usize],
     ) -> __DynamicsConfiguration<T> {
         let k1: T = T::from_f64(0.5);
         let k2: T = T::from_f64(0.4318);
@@ -224,11 +224,11 @@ impl Puma560 {
         let k66: T = T::from_f64(-0.00002);
         let k67: T = T::from_f64(-0.5);
         let k68: T = T::from_f64(0.00002);
-        let (s2, c2) = T::sin_cos(q[1]);
-        let (s3, c3) = T::sin_cos(q[2]);
-        let (s4, c4) = T::sin_cos(q[3]);
-        let (s5, c5) = T::sin_cos(q[4]);
-        let (s6, c6) = T::sin_cos(q[5]);
+        let (s2, c2) = T::sin_cos(q_[1]);
+        let (s3, c3) = T::sin_cos(q_[2]);
+        let (s4, c4) = T::sin_cos(q_[3]);
+        let (s5, c5) = T::sin_cos(q_[4]);
+        let (s6, c6) = T::sin_cos(q_[5]);
         let m4_6 = k7 * c5;
         let t1 = c5 * c5;
         let t2 = s5 * s5;
@@ -652,9 +652,9 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn mass_matrix<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
+        q_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = self.__dynamics_configuration(q);
+        let x = self.__dynamics_configuration(q_);
         [
             [x.m1_1, x.m1_2, x.m1_3, x.m1_4, x.m1_5, x.m1_6],
             [x.m1_2, x.m2_2, x.m2_3, x.m2_4, x.m2_5, x.m2_6],
@@ -669,92 +669,92 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn coriolis_matrix<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
-        qd: &[T; 6usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = self.__dynamics_configuration(q);
+        let x = self.__dynamics_configuration(q_);
         let cor1_1 = x.k1
-            * (qd[1] * x.t128 + qd[2] * x.t135 + qd[3] * x.t162 + qd[4] * x.t200);
-        let t1 = qd[0] * x.t128;
-        let t2 = qd[5] * x.t116;
-        let cor1_2 = x.k1 * t1 + qd[1] * x.t65 + x.k1 * (qd[2] * x.t209)
-            + x.k1 * (qd[3] * x.t210) + x.k1 * (qd[4] * x.t211) + x.k66 * t2;
-        let t3 = qd[0] * x.t135;
-        let t4 = qd[5] * x.t144;
-        let cor1_3 = x.k1 * (t3 + qd[1] * x.t209) + qd[2] * x.t136
-            + x.k1 * (qd[3] * x.t212) + x.k1 * (qd[4] * x.t213) + x.k66 * t4;
-        let t5 = qd[0] * x.t162;
-        let t6 = qd[5] * x.t175;
-        let cor1_4 = x.k1 * (t5 + qd[1] * x.t210 + qd[2] * x.t212) + qd[3] * x.t167
-            + x.k1 * (qd[4] * x.t214) + x.k66 * t6;
-        let t7 = qd[0] * x.t200;
-        let t8 = qd[5] * x.t107;
-        let cor1_5 = x.k1 * (t7 + qd[1] * x.t211 + qd[2] * x.t213 + qd[3] * x.t214)
-            + qd[4] * x.t208 + x.k66 * t8;
+            * (qd_[1] * x.t128 + qd_[2] * x.t135 + qd_[3] * x.t162 + qd_[4] * x.t200);
+        let t1 = qd_[0] * x.t128;
+        let t2 = qd_[5] * x.t116;
+        let cor1_2 = x.k1 * t1 + qd_[1] * x.t65 + x.k1 * (qd_[2] * x.t209)
+            + x.k1 * (qd_[3] * x.t210) + x.k1 * (qd_[4] * x.t211) + x.k66 * t2;
+        let t3 = qd_[0] * x.t135;
+        let t4 = qd_[5] * x.t144;
+        let cor1_3 = x.k1 * (t3 + qd_[1] * x.t209) + qd_[2] * x.t136
+            + x.k1 * (qd_[3] * x.t212) + x.k1 * (qd_[4] * x.t213) + x.k66 * t4;
+        let t5 = qd_[0] * x.t162;
+        let t6 = qd_[5] * x.t175;
+        let cor1_4 = x.k1 * (t5 + qd_[1] * x.t210 + qd_[2] * x.t212) + qd_[3] * x.t167
+            + x.k1 * (qd_[4] * x.t214) + x.k66 * t6;
+        let t7 = qd_[0] * x.t200;
+        let t8 = qd_[5] * x.t107;
+        let cor1_5 = x.k1 * (t7 + qd_[1] * x.t211 + qd_[2] * x.t213 + qd_[3] * x.t214)
+            + qd_[4] * x.t208 + x.k66 * t8;
         let cor1_6 = x.k66
-            * (qd[1] * x.t116 + qd[2] * x.t144 + qd[3] * x.t175 + qd[4] * x.t107);
-        let cor2_1 = x.k67 * (t1 - qd[2] * x.t215 - qd[3] * x.t216 - qd[4] * x.t217)
+            * (qd_[1] * x.t116 + qd_[2] * x.t144 + qd_[3] * x.t175 + qd_[4] * x.t107);
+        let cor2_1 = x.k67 * (t1 - qd_[2] * x.t215 - qd_[3] * x.t216 - qd_[4] * x.t217)
             + x.k68 * t2;
-        let t9 = x.k2 * (qd[2] * x.t68);
-        let t10 = x.k1 * (qd[3] * x.t157);
-        let t11 = x.k1 * (qd[4] * x.t196);
+        let t9 = x.k2 * (qd_[2] * x.t68);
+        let t10 = x.k1 * (qd_[3] * x.t157);
+        let t11 = x.k1 * (qd_[4] * x.t196);
         let cor2_2 = t9 + t10 + t11;
-        let t12 = qd[1] * x.t68;
-        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd[0] * x.t215) + x.k2 * t12)));
-        let t13 = qd[1] * x.t157;
-        let t14 = qd[5] * x.t5;
+        let t12 = qd_[1] * x.t68;
+        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd_[0] * x.t215) + x.k2 * t12)));
+        let t13 = qd_[1] * x.t157;
+        let t14 = qd_[5] * x.t5;
         let t15 = x.k68 * t14;
-        let cor2_4 = x.k1 * (qd[0] * x.t216 + t13 + qd[2] * x.t157) + qd[3] * x.t166
-            + x.k1 * (qd[4] * x.t218) + t15;
-        let t16 = qd[1] * x.t196;
-        let t17 = qd[5] * x.t86;
+        let cor2_4 = x.k1 * (qd_[0] * x.t216 + t13 + qd_[2] * x.t157) + qd_[3] * x.t166
+            + x.k1 * (qd_[4] * x.t218) + t15;
+        let t16 = qd_[1] * x.t196;
+        let t17 = qd_[5] * x.t86;
         let t18 = x.k68 * t17;
-        let cor2_5 = x.k1 * (qd[0] * x.t217 + t16 + qd[2] * x.t196 + qd[3] * x.t218)
-            + qd[4] * x.t207 + t18;
-        let t19 = qd[0] * x.t116;
-        let t20 = qd[3] * x.t5;
-        let t21 = qd[4] * x.t86;
+        let cor2_5 = x.k1 * (qd_[0] * x.t217 + t16 + qd_[2] * x.t196 + qd_[3] * x.t218)
+            + qd_[4] * x.t207 + t18;
+        let t19 = qd_[0] * x.t116;
+        let t20 = qd_[3] * x.t5;
+        let t21 = qd_[4] * x.t86;
         let cor2_6 = x.k68 * (t19 + t20 + t21);
-        let cor3_1 = x.k67 * (t3 - qd[1] * x.t219 - qd[3] * x.t220 - qd[4] * x.t221)
+        let cor3_1 = x.k67 * (t3 - qd_[1] * x.t219 - qd_[3] * x.t220 - qd_[4] * x.t221)
             + x.k68 * t4;
-        let cor3_2 = x.k1 * (qd[0] * x.t219) + x.k21 * t12 + x.k1 * (qd[3] * x.t222)
-            + x.k1 * (qd[4] * x.t223);
-        let cor3_3 = x.k1 * (qd[3] * x.t146 + qd[4] * x.t184);
-        let t22 = qd[2] * x.t146;
+        let cor3_2 = x.k1 * (qd_[0] * x.t219) + x.k21 * t12 + x.k1 * (qd_[3] * x.t222)
+            + x.k1 * (qd_[4] * x.t223);
+        let cor3_3 = x.k1 * (qd_[3] * x.t146 + qd_[4] * x.t184);
+        let t22 = qd_[2] * x.t146;
         let cor3_4 = t15
-            + (x.k1 * (qd[0] * x.t220 + qd[1] * x.t222 + t22) + qd[3] * x.t148
-                + x.k1 * (qd[4] * x.t224));
-        let t23 = qd[2] * x.t184;
+            + (x.k1 * (qd_[0] * x.t220 + qd_[1] * x.t222 + t22) + qd_[3] * x.t148
+                + x.k1 * (qd_[4] * x.t224));
+        let t23 = qd_[2] * x.t184;
         let cor3_5 = t18
-            + (x.k1 * (qd[0] * x.t221 + qd[1] * x.t223 + t23 + qd[3] * x.t224)
-                + qd[4] * x.t205);
-        let t24 = qd[0] * x.t144;
+            + (x.k1 * (qd_[0] * x.t221 + qd_[1] * x.t223 + t23 + qd_[3] * x.t224)
+                + qd_[4] * x.t205);
+        let t24 = qd_[0] * x.t144;
         let cor3_6 = x.k68 * (t21 + (t20 + t24));
-        let cor4_1 = x.k67 * (t5 - qd[1] * x.t225 - qd[2] * x.t226 - qd[4] * x.t227)
+        let cor4_1 = x.k67 * (t5 - qd_[1] * x.t225 - qd_[2] * x.t226 - qd_[4] * x.t227)
             + x.k68 * t6;
         let t25 = x.k66 * t14;
-        let cor4_2 = x.k1 * (qd[0] * x.t225 - t13 + qd[2] * x.t228 + qd[4] * x.t229)
+        let cor4_2 = x.k1 * (qd_[0] * x.t225 - t13 + qd_[2] * x.t228 + qd_[4] * x.t229)
             + t25;
         let cor4_3 = t25
-            + x.k1 * (qd[0] * x.t226 + qd[1] * x.t228 - t22 + qd[4] * x.t230);
-        let cor4_4 = x.k34 * (qd[4] * x.t3);
-        let t26 = qd[3] * x.t3;
-        let t27 = x.s5 * qd[5];
-        let cor4_5 = x.k1 * (qd[0] * x.t227 + qd[1] * x.t229 + qd[2] * x.t230)
+            + x.k1 * (qd_[0] * x.t226 + qd_[1] * x.t228 - t22 + qd_[4] * x.t230);
+        let cor4_4 = x.k34 * (qd_[4] * x.t3);
+        let t26 = qd_[3] * x.t3;
+        let t27 = x.s5 * qd_[5];
+        let cor4_5 = x.k1 * (qd_[0] * x.t227 + qd_[1] * x.t229 + qd_[2] * x.t230)
             + x.k34 * t26 + x.k66 * t27;
-        let t28 = qd[0] * x.t175 - qd[1] * x.t5 - qd[2] * x.t5;
-        let t29 = x.s5 * qd[4];
+        let t28 = qd_[0] * x.t175 - qd_[1] * x.t5 - qd_[2] * x.t5;
+        let t29 = x.s5 * qd_[4];
         let cor4_6 = x.k68 * (t28 - t29);
-        let cor5_1 = x.k67 * (t7 - qd[1] * x.t231 - qd[2] * x.t232 - qd[3] * x.t233)
+        let cor5_1 = x.k67 * (t7 - qd_[1] * x.t231 - qd_[2] * x.t232 - qd_[3] * x.t233)
             + x.k68 * t8;
         let t30 = x.k66 * t17;
-        let cor5_2 = x.k1 * (qd[0] * x.t231 - t16 + qd[2] * x.t234 + qd[3] * x.t235)
+        let cor5_2 = x.k1 * (qd_[0] * x.t231 - t16 + qd_[2] * x.t234 + qd_[3] * x.t235)
             + t30;
         let cor5_3 = t30
-            + x.k1 * (qd[0] * x.t232 + qd[1] * x.t234 - t23 + qd[3] * x.t236);
-        let cor5_4 = x.k1 * (qd[0] * x.t233 + qd[1] * x.t235 + qd[2] * x.t236)
+            + x.k1 * (qd_[0] * x.t232 + qd_[1] * x.t234 - t23 + qd_[3] * x.t236);
+        let cor5_4 = x.k1 * (qd_[0] * x.t233 + qd_[1] * x.t235 + qd_[2] * x.t236)
             + x.k35 * t26 + x.k68 * t27;
-        let t31 = qd[0] * x.t107 - qd[1] * x.t86 - qd[2] * x.t86 + x.s5 * qd[3];
+        let t31 = qd_[0] * x.t107 - qd_[1] * x.t86 - qd_[2] * x.t86 + x.s5 * qd_[3];
         let cor5_6 = x.k68 * t31;
         let cor6_2 = x.k66 * (t19 - t20 - t21);
         let cor6_3 = x.k66 * (t24 - t20 - t21);
@@ -774,28 +774,28 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn coriolis_torques<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
-        qd: &[T; 6usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q);
-        let t1 = x.s2 * qd[0];
-        let t2 = x.c2 * qd[0];
-        let t3 = qd[1] * t2;
-        let t4 = qd[1] * t1;
+        let x = self.__dynamics_configuration(q_);
+        let t1 = x.s2 * qd_[0];
+        let t2 = x.c2 * qd_[0];
+        let t3 = qd_[1] * t2;
+        let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
         let t6 = t1 * t2;
-        let t7 = t5 + qd[1] * qd[1];
-        let t8 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
-        let t9 = x.k9 * t1 + x.k11 * qd[1];
-        let t10 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t7 = t5 + qd_[1] * qd_[1];
+        let t8 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
+        let t9 = x.k9 * t1 + x.k11 * qd_[1];
+        let t10 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
         let t11 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
         let t12 = x.c3 * t1 + x.s3 * t2;
         let t13 = x.c3 * t2 - x.s3 * t1;
         let t14 = x.c3 * t7 - x.s3 * t6;
         let t15 = x.c3 * t6 + x.s3 * t7;
-        let t16 = qd[1] + qd[2];
-        let t17 = x.c3 * t3 - x.s3 * t4 + qd[2] * t13;
-        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd[2] * t12;
+        let t16 = qd_[1] + qd_[2];
+        let t17 = x.c3 * t3 - x.s3 * t4 + qd_[2] * t13;
+        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t12;
         let t19 = t16 * t16;
         let t20 = t12 * t13;
         let t21 = t13 * t13 + t19;
@@ -809,22 +809,22 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t29 = t11 + (x.k4 * t23 + x.k2 * t24);
         let t30 = x.c4 * t12 - x.s4 * t16;
         let t31 = -(x.c4 * t16) - x.s4 * t12;
-        let t32 = qd[3] + t13;
-        let t33 = x.c4 * t17 + qd[3] * t31;
-        let t34 = -(x.s4 * t17) - qd[3] * t30;
+        let t32 = qd_[3] + t13;
+        let t33 = x.c4 * t17 + qd_[3] * t31;
+        let t34 = -(x.s4 * t17) - qd_[3] * t30;
         let t35 = x.c5 * t30 + x.s5 * t32;
         let t36 = x.c5 * t32 - x.s5 * t30;
-        let t37 = qd[4] - t31;
-        let t38 = x.c5 * t33 + x.s5 * t18 + qd[4] * t36;
+        let t37 = qd_[4] - t31;
+        let t38 = x.c5 * t33 + x.s5 * t18 + qd_[4] * t36;
         let t39 = t35 * t36;
         let t40 = t36 * t37;
         let t41 = t34 + t39;
         let t42 = t35 * t35 + t37 * t37;
         let t43 = t38 + t40;
-        let t44 = qd[5] + t36;
+        let t44 = qd_[5] + t36;
         let t45 = (x.c6 * t35 - x.s6 * t37) * t44;
         let t46 = (-(x.c6 * t37) - x.s6 * t35) * t44;
-        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd[4] * t35);
+        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd_[4] * t35);
         let t47 = x.k15 * t38 + x.k18 * t40 + x.k17 * (-(x.c4 * t29) - x.s4 * t28)
             + x.k7 * (x.c6 * t46 + x.s6 * t45);
         let t48 = x.k13 * (t35 * t37) + cqd6;
@@ -851,10 +851,10 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t59 = x.s3 * t55 + x.c3 * t56;
         let cqd2 = x.k29 * t3 + x.k10 * t4 + (t1 * t9 - t2 * t8) + cqd3 + x.k2 * t59;
         let cqd1 = x.s2
-            * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd[1] * t9)
+            * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd_[1] * t9)
                 + (x.c3 * t57 - x.s3 * t58) + x.k41 * t59)
             + x.c2
-                * (x.k9 * t3 + (qd[1] * t8 - t1 * t10) + (x.s3 * t57 + x.c3 * t58)
+                * (x.k9 * t3 + (qd_[1] * t8 - t1 * t10) + (x.s3 * t57 + x.c3 * t58)
                     + (x.k3 * (x.c3 * t55 - x.s3 * t56)
                         + x.k21 * (x.k22 * t23 + x.k25 * t24 + x.k17 * t54)));
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
@@ -864,9 +864,9 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn gravity_torques<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
+        q_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q);
+        let x = self.__dynamics_configuration(q_);
         [x.g1, x.g2, x.g3, x.g4, x.g5, T::ZERO]
     }
     /// C(q, q̇) q̇ + g(q).
@@ -874,24 +874,24 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn bias_torques<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
-        qd: &[T; 6usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q);
-        let t1 = x.s2 * qd[0];
-        let t2 = x.c2 * qd[0];
-        let t3 = qd[1] * t2;
-        let t4 = qd[1] * t1;
+        let x = self.__dynamics_configuration(q_);
+        let t1 = x.s2 * qd_[0];
+        let t2 = x.c2 * qd_[0];
+        let t3 = qd_[1] * t2;
+        let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
-        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
-        let t7 = x.k9 * t1 + x.k11 * qd[1];
-        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
+        let t7 = x.k9 * t1 + x.k11 * qd_[1];
+        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
         let t9 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
         let t10 = x.c3 * t1 + x.s3 * t2;
         let t11 = x.c3 * t2 - x.s3 * t1;
-        let t12 = qd[1] + qd[2];
-        let t13 = x.c3 * t3 - x.s3 * t4 + qd[2] * t11;
-        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd[2] * t10;
+        let t12 = qd_[1] + qd_[2];
+        let t13 = x.c3 * t3 - x.s3 * t4 + qd_[2] * t11;
+        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t10;
         let t15 = t12 * t12;
         let t16 = t10 * t11;
         let t17 = t11 * t11 + t15;
@@ -904,22 +904,22 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t24 = t9 + (x.k4 * t19 + x.k2 * t20);
         let t25 = x.c4 * t10 - x.s4 * t12;
         let t26 = -(x.c4 * t12) - x.s4 * t10;
-        let t27 = qd[3] + t11;
-        let t28 = x.c4 * t13 + qd[3] * t26;
-        let t29 = -(x.s4 * t13) - qd[3] * t25;
+        let t27 = qd_[3] + t11;
+        let t28 = x.c4 * t13 + qd_[3] * t26;
+        let t29 = -(x.s4 * t13) - qd_[3] * t25;
         let t30 = x.c5 * t25 + x.s5 * t27;
         let t31 = x.c5 * t27 - x.s5 * t25;
-        let t32 = qd[4] - t26;
-        let t33 = x.c5 * t28 + x.s5 * t14 + qd[4] * t31;
+        let t32 = qd_[4] - t26;
+        let t33 = x.c5 * t28 + x.s5 * t14 + qd_[4] * t31;
         let t34 = t30 * t31;
         let t35 = t31 * t32;
         let t36 = t29 + t34;
         let t37 = t30 * t30 + t32 * t32;
         let t38 = t33 + t35;
-        let t39 = qd[5] + t31;
+        let t39 = qd_[5] + t31;
         let t40 = (x.c6 * t30 - x.s6 * t32) * t39;
         let t41 = (-(x.c6 * t32) - x.s6 * t30) * t39;
-        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd[4] * t30);
+        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd_[4] * t30);
         let t42 = x.k13 * (t30 * t32) + h6;
         let t43 = x.c5 * t36 + x.s5 * t37;
         let t44 = x.s5 * t36 - x.c5 * t37;
@@ -928,7 +928,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t47 = x.k52 * t17 + x.k25 * t16 + x.k14 * t45;
         let t48 = x.k22 * t16 + x.k53 * t18 + x.k14 * t44;
         let t49 = x.s3 * t47 + x.c3 * t48;
-        let t50 = x.t117 + x.k21 * (t5 + qd[1] * qd[1]);
+        let t50 = x.t117 + x.k21 * (t5 + qd_[1] * qd_[1]);
         let t51 = x.t118 + x.k2 * (t1 * t2);
         let t52 = x.c3 * t50 + x.s3 * t51;
         let t53 = x.c3 * t51 - x.s3 * t50;
@@ -955,12 +955,12 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + (x.t119 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
         let h1 = x.s2
             * (x.k41 * t49
-                + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd[1] * t7)
+                + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd_[1] * t7)
                     + (x.c3 * t58 - x.s3 * t59)))
             + x.c2
                 * (x.k3 * (x.c3 * t47 - x.s3 * t48)
                     + x.k21 * (x.k22 * t19 + x.k25 * t20 + x.k17 * t46)
-                    + (x.k9 * t3 + (qd[1] * t6 - t1 * t8) + (x.s3 * t58 + x.c3 * t59)));
+                    + (x.k9 * t3 + (qd_[1] * t6 - t1 * t8) + (x.s3 * t58 + x.c3 * t59)));
         [h1, h2, h3, h4, h5, h6]
     }
     /// τ = M(q) q̈ + C(q, q̇) q̇ + g(q).
@@ -968,22 +968,22 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn inverse_dynamics<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
-        qd: &[T; 6usize],
-        qdd: &[T; 6usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        qdd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q);
-        let t1 = x.s2 * qd[0];
-        let t2 = x.c2 * qd[0];
-        let t3 = qd[1] * t2;
-        let t4 = qd[1] * t1;
+        let x = self.__dynamics_configuration(q_);
+        let t1 = x.s2 * qd_[0];
+        let t2 = x.c2 * qd_[0];
+        let t3 = qd_[1] * t2;
+        let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
-        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1];
-        let t7 = x.k9 * t1 + x.k11 * qd[1];
-        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1];
+        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
+        let t7 = x.k9 * t1 + x.k11 * qd_[1];
+        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
         let t9 = x.c3 * t1 + x.s3 * t2;
         let t10 = x.c3 * t2 - x.s3 * t1;
-        let t11 = qd[1] + qd[2];
+        let t11 = qd_[1] + qd_[2];
         let t12 = t11 * t11;
         let t13 = t9 * t10;
         let t14 = t10 * t10 + t12;
@@ -993,39 +993,39 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t18 = x.k12 * t10 + x.k26 * t11;
         let t19 = x.c4 * t9 - x.s4 * t11;
         let t20 = -(x.c4 * t11) - x.s4 * t9;
-        let t21 = qd[3] + t10;
+        let t21 = qd_[3] + t10;
         let t22 = x.c5 * t19 + x.s5 * t21;
         let t23 = x.c5 * t21 - x.s5 * t19;
-        let t24 = qd[4] - t20;
+        let t24 = qd_[4] - t20;
         let t25 = t22 * t23;
         let t26 = t23 * t24;
         let t27 = t22 * t22 + t24 * t24;
-        let t28 = qd[5] + t23;
+        let t28 = qd_[5] + t23;
         let t29 = (x.c6 * t22 - x.s6 * t24) * t28;
         let t30 = (-(x.c6 * t24) - x.s6 * t22) * t28;
-        let t31 = t3 + x.s2 * qdd[0];
-        let t32 = x.c2 * qdd[0] - t4;
+        let t31 = t3 + x.s2 * qdd_[0];
+        let t32 = x.c2 * qdd_[0] - t4;
         let t33 = x.k41 * (t1 * t1 + t5) + x.k2 * (t4 - t32);
-        let t34 = x.t117 + (x.k21 * (t5 + qd[1] * qd[1]) + x.k3 * (t4 + t32));
-        let t35 = x.t118 + (x.k2 * (qdd[1] + t1 * t2) + x.k3 * (t3 - t31));
+        let t34 = x.t117 + (x.k21 * (t5 + qd_[1] * qd_[1]) + x.k3 * (t4 + t32));
+        let t35 = x.t118 + (x.k2 * (qdd_[1] + t1 * t2) + x.k3 * (t3 - t31));
         let t36 = x.c3 * t34 + x.s3 * t35;
         let t37 = x.c3 * t35 - x.s3 * t34;
-        let t38 = qd[2] * t10 + (x.c3 * t31 + x.s3 * t32);
-        let t39 = x.c3 * t32 - x.s3 * t31 - qd[2] * t9;
-        let t40 = qdd[1] + qdd[2];
+        let t38 = qd_[2] * t10 + (x.c3 * t31 + x.s3 * t32);
+        let t39 = x.c3 * t32 - x.s3 * t31 - qd_[2] * t9;
+        let t40 = qdd_[1] + qdd_[2];
         let t41 = t13 - t40;
         let t42 = t13 + t40;
         let t43 = t9 * t11 - t39;
         let t44 = t10 * t11 + t38;
         let t45 = t36 + (x.k5 * t14 + x.k2 * t41);
         let t46 = t33 + (x.k4 * t43 + x.k2 * t44);
-        let t47 = qd[3] * t20 + (x.c4 * t38 - x.s4 * t40);
-        let t48 = qdd[3] + t39;
-        let t49 = qd[4] * t23 + (x.c5 * t47 + x.s5 * t48);
-        let t50 = qdd[4] - (-(x.c4 * t40) - x.s4 * t38 - qd[3] * t19);
+        let t47 = qd_[3] * t20 + (x.c4 * t38 - x.s4 * t40);
+        let t48 = qdd_[3] + t39;
+        let t49 = qd_[4] * t23 + (x.c5 * t47 + x.s5 * t48);
+        let t50 = qdd_[4] - (-(x.c4 * t40) - x.s4 * t38 - qd_[3] * t19);
         let t51 = t25 - t50;
         let t52 = t26 + t49;
-        let tau6 = x.k7 * (qdd[5] + (x.c5 * t48 - x.s5 * t47 - qd[4] * t22));
+        let tau6 = x.k7 * (qdd_[5] + (x.c5 * t48 - x.s5 * t47 - qd_[4] * t22));
         let t53 = x.k7 * (x.c6 * t30 + x.s6 * t29)
             + (x.k18 * t26 + x.k15 * t49 + x.k17 * (-(x.c4 * t46) - x.s4 * t45));
         let t54 = x.k13 * (t22 * t24) + tau6;
@@ -1052,14 +1052,14 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + (x.k38 * t56 + x.k39 * t59);
         let t65 = x.s3 * t61 + x.c3 * t62;
         let tau2 = x.t119
-            + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd[1])) + tau3
+            + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd_[1])) + tau3
             + x.k2 * t65;
-        let tau1 = x.k31 * qdd[0]
+        let tau1 = x.k31 * qdd_[0]
             + (x.s2
-                * (t2 * t8 - qd[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd[1])
+                * (t2 * t8 - qd_[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd_[1])
                     + (x.c3 * t63 - x.s3 * t64) + x.k41 * t65)
                 + x.c2
-                    * (qd[1] * t6 - t1 * t8 + (x.k9 * t31 + x.k11 * qdd[1])
+                    * (qd_[1] * t6 - t1 * t8 + (x.k9 * t31 + x.k11 * qdd_[1])
                         + (x.s3 * t63 + x.c3 * t64)
                         + (x.k3 * (x.c3 * t61 - x.s3 * t62)
                             + x.k21 * (x.k22 * t43 + x.k25 * t44 + x.k17 * t60))));
@@ -1070,32 +1070,32 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
     fn kinetic_energy<T: ::dynamics_runtime::Real>(
         &self,
-        q: &[T; 6usize],
-        qd: &[T; 6usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
     ) -> T {
-        let x = self.__dynamics_configuration(q);
-        let t1 = x.s2 * qd[0];
-        let t2 = x.c2 * qd[0];
+        let x = self.__dynamics_configuration(q_);
+        let t1 = x.s2 * qd_[0];
+        let t2 = x.c2 * qd_[0];
         let t3 = x.s3 * t2;
         let t4 = x.c3 * t1 + t3;
         let t5 = x.c3 * t2;
         let t6 = t5 - x.s3 * t1;
-        let t7 = qd[1] + qd[2];
+        let t7 = qd_[1] + qd_[2];
         let t8 = x.c4 * t4 - x.s4 * t7;
-        let t9 = qd[3] + t6;
+        let t9 = qd_[3] + t6;
         let t10 = x.c5 * t8 + x.s5 * t9;
-        let t11 = qd[4] - (-(x.c4 * t7) - x.s4 * t4);
-        let t12 = qd[5] + (x.c5 * t9 - x.s5 * t8);
-        let t13 = x.k2 * qd[1] + x.k41 * t1;
+        let t11 = qd_[4] - (-(x.c4 * t7) - x.s4 * t4);
+        let t12 = qd_[5] + (x.c5 * t9 - x.s5 * t8);
+        let t13 = x.k2 * qd_[1] + x.k41 * t1;
         let t14 = x.k3 * t5 + x.s3 * t13;
         let t15 = x.c3 * t13 + x.k41 * t3;
         let t16 = t14 + x.k21 * t7;
         let t17 = x.k21 * t2 + (x.k2 * t4 + x.k5 * t6);
         let t18 = x.k1
-            * (x.k31 * (qd[0] * qd[0])
-                + (t1 * (x.k30 * t1 + x.k9 * t2 + x.k29 * qd[1])
-                    + t2 * (x.k9 * t1 + x.k11 * qd[1])
-                    + qd[1] * (x.k29 * t1 + x.k11 * t2 + x.k28 * qd[1]))
+            * (x.k31 * (qd_[0] * qd_[0])
+                + (t1 * (x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1])
+                    + t2 * (x.k9 * t1 + x.k11 * qd_[1])
+                    + qd_[1] * (x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1]))
                 + x.k50
                     * (x.k53 * (t7 * t14) + x.k22 * (t7 * t15)
                         + x.k21 * (t2 * (x.k25 * t4 + x.k52 * t6)))
@@ -1112,8 +1112,8 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     /// The potential energy.
     #[inline]
     #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
-    fn potential_energy<T: ::dynamics_runtime::Real>(&self, q: &[T; 6usize]) -> T {
-        let x = self.__dynamics_configuration(q);
+    fn potential_energy<T: ::dynamics_runtime::Real>(&self, q_: &[T; 6usize]) -> T {
+        let x = self.__dynamics_configuration(q_);
         x.p
     }
 }

@@ -10,11 +10,13 @@
 //! Within a function, only the nodes the outputs need are emitted, in the arena's order
 //! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
 //! (`let p_m2: T = param(self.m2);`) and the nodes that depend on them alone; then each needed
-//! joint's sine and cosine, computed once (`let (s1, c1) = T::sin_cos(q[0]);`); then the rest.
+//! joint's sine and cosine, computed once (`let (s1, c1) = T::sin_cos(q_[0]);`); then the rest.
 //! A node used once is written inline in its user; a node used more often gets a `let tN`,
 //! numbered in order of appearance; each output element gets a name saying what it is
 //! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, and
-//! parentheses appear only where precedence or the order of evaluation needs them.
+//! parentheses appear only where precedence or the order of evaluation needs them. The
+//! arguments are `q_`, `qd_` and `qdd_`: a pattern cannot shadow a constant, and a user's
+//! constant `q` would otherwise turn the argument into a constant pattern.
 
 use crate::derive::Equations;
 use crate::symbolic::{Graph, Node, NodeId, Var};
@@ -366,17 +368,17 @@ impl<'a> Emitter<'a> {
             }
             Node::Var(Var::Q(i)) => {
                 let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let q = local("q");
+                let q = local("q_");
                 quote!(#q[#i])
             }
             Node::Var(Var::Qd(i)) => {
                 let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let qd = local("qd");
+                let qd = local("qd_");
                 quote!(#qd[#i])
             }
             Node::Var(Var::Qdd(i)) => {
                 let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let qdd = local("qdd");
+                let qdd = local("qdd_");
                 quote!(#qdd[#i])
             }
             Node::Var(Var::SinQ(i)) => {
@@ -596,7 +598,7 @@ impl<'a> Emitter<'a> {
             .any(|(id, _)| self.stop[id.index()] && self.needed[id.index()]);
         if reads_configuration {
             let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
-            let q = local("q");
+            let q = local("q_");
             statements.push(quote!(let #x = self.#f(#q);));
         }
         for (id, _) in self.graph.nodes() {
@@ -638,7 +640,7 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// `let (s1, c1) = T::sin_cos(q[0]);` for each joint whose sine or cosine is needed.
+    /// `let (s1, c1) = T::sin_cos(q_[0]);` for each joint whose sine or cosine is needed.
     fn sines_and_cosines(&mut self, statements: &mut Vec<TokenStream>) {
         for i in 0..self.eq.dof {
             let i16 = u16::try_from(i).unwrap_or(u16::MAX);
@@ -652,7 +654,7 @@ impl<'a> Emitter<'a> {
             if s.is_none() && c.is_none() {
                 continue;
             }
-            let q = local("q");
+            let q = local("q_");
             let index = proc_macro2::Literal::usize_unsuffixed(i);
             let angle = match self.eq.angle_offsets[i] {
                 Some(off) => {

@@ -182,7 +182,7 @@ impl Generated {
             let ty = syn::Ident::new(emit::CONFIGURATION_STRUCT, proc_macro2::Span::call_site());
             let f = syn::Ident::new(emit::CONFIGURATION_FN, proc_macro2::Span::call_site());
             let fields = &c.fields;
-            let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
+            let q = proc_macro2::Ident::new("q_", proc_macro2::Span::mixed_site());
             let body = &c.tokens;
             quote! {
                 /// What the dynamics need from the parameters and `q` alone, computed once.
@@ -303,9 +303,9 @@ fn equations(input: &syn::DeriveInput, eq: &Equations, robot: &model::Robot) -> 
 /// tool's `emit`).
 #[must_use]
 pub fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
-    let q = proc_macro2::Ident::new("q", proc_macro2::Span::mixed_site());
-    let qd = proc_macro2::Ident::new("qd", proc_macro2::Span::mixed_site());
-    let qdd = proc_macro2::Ident::new("qdd", proc_macro2::Span::mixed_site());
+    let q = proc_macro2::Ident::new("q_", proc_macro2::Span::mixed_site());
+    let qd = proc_macro2::Ident::new("qd_", proc_macro2::Span::mixed_site());
+    let qdd = proc_macro2::Ident::new("qdd_", proc_macro2::Span::mixed_site());
     let vector = quote!(&[T; #n]);
     let (args, ret) = match name {
         "mass_matrix" => (quote!(#q: #vector), quote!([[T; #n]; #n])),

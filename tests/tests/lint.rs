@@ -4,9 +4,9 @@
 //! uses: `sin`, `cos`, `M`, `T`, `param`, `core`, a `f64` type alias, and struct fields
 //! named like its temporaries (`t1`, `s1`, `c1`, `k1`, `p_m1`, `param`).
 //!
-//! Not covered: a *constant* named `q`, `qd`, `qdd` or like a temporary (`t1`) in scope at the
-//! derive breaks it, since hygiene does not hide items from patterns ("function parameters
-//! cannot shadow constants"); the generated names would have to change (emit.rs).
+//! Constants named `q`, `qd` and `qdd` (the trait's argument names) are in scope too: a
+//! pattern cannot shadow a constant, so the generated methods name their arguments `q_`, `qd_`
+//! and `qdd_`.
 #![deny(warnings, clippy::all, clippy::pedantic)]
 
 use dynamics_runtime::Dynamics;
@@ -25,6 +25,9 @@ mod traps {
     pub fn param(x: f64) -> f64 {
         x
     }
+    pub const q: f64 = 1.0;
+    pub const qd: f64 = 2.0;
+    pub const qdd: f64 = 3.0;
 }
 #[allow(unused_imports)]
 use traps::*;
@@ -101,10 +104,10 @@ fn derived_robots_compute() {
         p_m1: 2.0,
         param: 0.01,
     };
-    let q = [0.1, -0.4, 0.05];
-    let tau = arm.inverse_dynamics(&q, &[0.3; 3], &[1.0; 3]);
-    let m = arm.mass_matrix(&q);
-    let h = arm.bias_torques(&q, &[0.3; 3]);
+    let angles = [0.1, -0.4, 0.05];
+    let tau = arm.inverse_dynamics(&angles, &[0.3; 3], &[1.0; 3]);
+    let m = arm.mass_matrix(&angles);
+    let h = arm.bias_torques(&angles, &[0.3; 3]);
     // τ = M q̈ + h, computed by separate generated methods.
     for i in 0..3 {
         let sum: f64 = m[i].iter().sum::<f64>() + h[i];
@@ -118,6 +121,7 @@ fn derived_robots_compute() {
     // The traps are still what the user defined.
     assert!((sin(2.0) - 2.0).abs() < f64::EPSILON && (cos(1.0) - 1.0).abs() < f64::EPSILON);
     assert!(param(1.0) > 0.0);
+    assert!((std::hint::black_box(q) + qd + qdd - 6.0).abs() < f64::EPSILON);
     // A robot whose outputs do not depend on q or qd: unused arguments raise no warning.
     let slider = Slider;
     assert!(slider.coriolis_matrix(&[1.0f64], &[2.0])[0][0].abs() < f64::EPSILON);
