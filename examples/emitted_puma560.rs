@@ -147,7 +147,6 @@ struct __DynamicsConfiguration<T> {
     t235: T,
     t236: T,
 }
-#[automatically_derived]
 impl Puma560 {
     #[doc(hidden)]
     #[inline(always)]

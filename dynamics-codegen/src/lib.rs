@@ -189,7 +189,6 @@ impl Generated {
                 #[doc(hidden)]
                 #[allow(non_camel_case_types)]
                 struct #ty<T> { #(#fields: T),* }
-                #[automatically_derived]
                 impl #impl_generics #ident #ty_generics #where_clause {
                     // Inlined into each method, which keeps of it only what it reads.
                     #[doc(hidden)]
