@@ -461,11 +461,18 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// `let name = expr;` for node `id`, which from then on is read by its name.
+    /// `let name = expr;` for node `id`, which from then on is read by its name; an output
+    /// element gets a one-line doc comment saying what it is, which `cargo expand` shows.
     fn bind(&mut self, id: NodeId, name: proc_macro2::Ident) -> TokenStream {
         let e = self.define(id);
         self.names[id.index()] = Some(quote!(#name));
-        quote!(let #name = #e;)
+        match describe(&name.to_string()) {
+            Some(doc) => {
+                let doc = format!(" {doc}");
+                quote!(#[doc = #doc] let #name = #e;)
+            }
+            None => quote!(let #name = #e;),
+        }
     }
 
     fn temporary(&mut self) -> proc_macro2::Ident {
@@ -606,7 +613,9 @@ impl<'a> Emitter<'a> {
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
                 continue;
             }
-            if self.uses[i] <= 1 && !outputs.contains(&id) {
+            // A scalar result is written in place unless it is read elsewhere too.
+            let bound_output = outputs.contains(&id) && !matches!(shape, Shape::Scalar(_));
+            if self.uses[i] <= 1 && !bound_output {
                 continue;
             }
             let name = match output_names.iter().find(|(n, _)| *n == id) {
@@ -681,4 +690,40 @@ impl<'a> Emitter<'a> {
             });
         }
     }
+}
+
+/// What an output element named `name` (`m1_2`, `tau3`, …) is, in the book's terms.
+fn describe(name: &str) -> Option<String> {
+    let pair = |rest: &str| {
+        let (i, j) = rest.split_once('_')?;
+        Some((i.parse::<usize>().ok()?, j.parse::<usize>().ok()?))
+    };
+    let one = |rest: &str| rest.parse::<usize>().ok();
+    if let Some((i, j)) = name.strip_prefix("cor").and_then(pair) {
+        return Some(format!("C{i}{j} = Σ_k D{i}{j}k q̇_k (eq. 6.44)"));
+    }
+    if let Some(i) = name.strip_prefix("cqd").and_then(one) {
+        return Some(format!(
+            "(C q̇){i} = Σ_jk D{i}jk q̇_j q̇_k: centripetal and Coriolis"
+        ));
+    }
+    if let Some(i) = name.strip_prefix("tau").and_then(one) {
+        return Some(format!("T{i}: torque or force of joint {i} (eq. 6.46)"));
+    }
+    if let Some((i, j)) = name.strip_prefix('m').and_then(pair) {
+        return Some(if i == j {
+            format!("M{i}{i} = D{i}{i} (eq. 6.43) + actuator inertia: effective inertia")
+        } else {
+            format!("M{i}{j} = M{j}{i} = D{i}{j} (eq. 6.43): coupling inertia")
+        });
+    }
+    if let Some(i) = name.strip_prefix('g').and_then(one) {
+        return Some(format!(
+            "g{i} = D{i} (eq. 6.45): gravity (and spring) torque"
+        ));
+    }
+    if let Some(i) = name.strip_prefix('h').and_then(one) {
+        return Some(format!("h{i} = (C q̇){i} + g{i}"));
+    }
+    (name == "p").then(|| "P: potential energy".to_owned())
 }

@@ -193,7 +193,7 @@ impl Generated {
                     // Inlined into each method, which keeps of it only what it reads.
                     #[doc(hidden)]
                     #[inline(always)]
-                    #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+                    #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
                     fn #f<T: #krate::Real>(&self, #q: &[T; #n]) -> #ty<T> {
                         #prologue
                         #body
@@ -321,7 +321,7 @@ pub fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> 
     let name = syn::Ident::new(name, proc_macro2::Span::call_site());
     quote! {
         #[inline]
-        #[allow(unused_variables, clippy::all, clippy::pedantic, clippy::nursery)]
+        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
         fn #name<T: #krate::Real>(&self, #args) -> #ret {
             #body
         }

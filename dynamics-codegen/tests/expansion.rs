@@ -115,3 +115,33 @@ fn fallback_implements_the_trait_at_the_given_crate_path() {
     assert!(out.contains("my_runtime :: Dynamics < 1usize >"), "{out}");
     assert!(out.contains("unreachable"), "{out}");
 }
+
+/// Every output element is bound under its own name with a one-line comment saying what it
+/// is, so that `cargo expand` reads like the book.
+#[test]
+fn output_elements_are_named_and_commented() {
+    let code = expand(
+        "#[dynamics(
+            gravity = [0, -9.81, 0],
+            dh = [[q, 0, 0.5, 0], [q, 0, 0.4, 0]],
+            link(mass = 2, com = [-0.25, 0, 0], inertia = [0, 0.04, 0.04, 0, 0, 0]),
+            link(mass = 1, com = [-0.2, 0, 0], inertia = [0, 0.01, 0.01, 0, 0, 0]),
+        )]
+        struct TwoLink;",
+    );
+    for (name, doc) in [
+        (
+            "m1_1",
+            "M11 = D11 (eq. 6.43) + actuator inertia: effective inertia",
+        ),
+        ("m1_2", "M12 = M21 = D12 (eq. 6.43): coupling inertia"),
+        ("g2", "g2 = D2 (eq. 6.45): gravity (and spring) torque"),
+        ("cor1_2", "C12 = Σ_k D12k q̇_k (eq. 6.44)"),
+        ("tau1", "T1: torque or force of joint 1 (eq. 6.46)"),
+        ("h2", "h2 = (C q̇)2 + g2"),
+    ] {
+        let doc = proc_macro2::Literal::string(&format!(" {doc}"));
+        let binding = format!("# [doc = {doc}] let {name} =");
+        assert!(code.contains(&binding), "no `{binding}` in {code}");
+    }
+}
