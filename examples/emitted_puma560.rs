@@ -234,13 +234,13 @@ impl Puma560 {
         let (s4, c4) = T::sin_cos(q_[3]);
         let (s5, c5) = T::sin_cos(q_[4]);
         let (s6, c6) = T::sin_cos(q_[5]);
-        /// M46 = M64 = D46 (eq. 6.43): coupling inertia
+        /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         let t1 = c5 * c5;
         let t2 = s5 * s5;
         let t3 = s5 * c5;
         let t4 = k6 + (k15 * t1 + k7 * t2);
-        /// M44 = D44 (eq. 6.43) + actuator inertia: effective inertia
+        /// D44 (6.43) + actuator inertia
         let m4_4 = k20 + (k15 * t2 + k7 * t1);
         let t5 = c4 * s5;
         let t6 = s4 * s5;
@@ -265,12 +265,12 @@ impl Puma560 {
         let t25 = k38 * t6;
         let t26 = k18 * t15 - t14 + k36 * t6;
         let t27 = k37 * t6;
-        /// M34 = M43 = D34 (eq. 6.43): coupling inertia
+        /// D34 = D43 (6.43)
         let m3_4 = k35 * t11 + k39 * t6;
         let t28 = k22 + k17 * t5;
         let t29 = k25 + k14 * c5;
         let t30 = k27 + (t20 + (t12 + k18 * t13 + t20));
-        /// M33 = D33 (eq. 6.43) + actuator inertia: effective inertia
+        /// D33 (6.43) + actuator inertia
         let m3_3 = k26 + (t23 + (t17 + k18 * t18 + t23));
         let t31 = k24 + (t9 - (k38 * c5 + t24));
         let t32 = k12 + m3_4;
@@ -300,10 +300,10 @@ impl Puma560 {
         let t56 = k40 * t6;
         let t57 = t55 + t56;
         let t58 = t57 + (s3 * t45 + c3 * t47 + t57);
-        /// M23 = M32 = D23 (eq. 6.43): coupling inertia
+        /// D23 = D32 (6.43)
         let m2_3 = m3_3 + t55;
         let t59 = k30 + (t56 + (t51 - t52 + t56));
-        /// M22 = D22 (eq. 6.43) + actuator inertia: effective inertia
+        /// D22 (6.43) + actuator inertia
         let m2_2 = k28 + (t55 + m2_3);
         let t60 = k9 + (t53 + t54 + k21 * t38);
         let t61 = k29 + (t43 - (t27 + k3 * t35));
@@ -313,16 +313,16 @@ impl Puma560 {
         let t65 = c2 * t61 - s2 * t62;
         let t66 = t64 + s2 * t59;
         let t67 = t63 + c2 * t58;
-        /// M12 = M21 = D12 (eq. 6.43): coupling inertia
+        /// D12 = D21 (6.43)
         let m1_2 = s2 * t61 + c2 * t62;
-        /// M11 = D11 (eq. 6.43) + actuator inertia: effective inertia
+        /// D11 (6.43) + actuator inertia
         let m1_1 = k31 + (s2 * t66 + c2 * t67);
         let t68 = -t37 - t36;
         let t69 = t43 + k41 * t35;
         let t70 = t50 + k3 * t68;
         let t71 = c2 * t69;
         let t72 = t71 - s2 * t70;
-        /// M13 = M31 = D13 (eq. 6.43): coupling inertia
+        /// D13 = D31 (6.43)
         let m1_3 = s2 * t69 + c2 * t70;
         let t73 = k37 * t5;
         let t74 = t9 + t73;
@@ -334,11 +334,11 @@ impl Puma560 {
         let t80 = k40 * t75;
         let t81 = c3 * t74 - s3 * t21 + t79;
         let t82 = t77 + t78 + (t24 + t80);
-        /// M24 = M42 = D24 (eq. 6.43): coupling inertia
+        /// D24 = D42 (6.43)
         let m2_4 = m3_4 + k37 * t76;
         let t83 = c2 * t81;
         let t84 = t83 - s2 * t82;
-        /// M14 = M41 = D14 (eq. 6.43): coupling inertia
+        /// D14 = D41 (6.43)
         let m1_4 = s2 * t81 + c2 * t82;
         let t85 = c4 * c5;
         let t86 = s4 * c5;
@@ -348,7 +348,7 @@ impl Puma560 {
         let t90 = k39 * t85;
         let t91 = k37 * t85;
         let t92 = k18 * s4 + t88;
-        /// M35 = M53 = D35 (eq. 6.43): coupling inertia
+        /// D35 = D53 (6.43)
         let m3_5 = t87 + (t89 + t91);
         let t93 = c3 * t85;
         let t94 = t93 - s3 * s5;
@@ -364,13 +364,13 @@ impl Puma560 {
         let t104 = k39 * t86;
         let t105 = t99 + t102;
         let t106 = t100 + k36 * t101 + (t103 + t104);
-        /// M25 = M52 = D25 (eq. 6.43): coupling inertia
+        /// D25 = D52 (6.43)
         let m2_5 = m3_5 + k39 * t97;
         let t107 = s2 * t94 + c2 * t97;
         let t108 = c2 * t105 - s2 * t106;
-        /// M15 = M51 = D15 (eq. 6.43): coupling inertia
+        /// D15 = D51 (6.43)
         let m1_5 = s2 * t105 + c2 * t106;
-        /// M26 = M62 = D26 (eq. 6.43): coupling inertia
+        /// D26 = D62 (6.43)
         let m2_6 = k7 * t6;
         let t109 = c3 * t5;
         let t110 = s3 * c5;
@@ -380,7 +380,7 @@ impl Puma560 {
         let t114 = t112 - t113;
         let t115 = c2 * t111;
         let t116 = t115 - s2 * t114;
-        /// M16 = M61 = D16 (eq. 6.43): coupling inertia
+        /// D16 = D61 (6.43)
         let m1_6 = k32 * (s2 * t111 + c2 * t114);
         let t117 = k43 * s2;
         let t118 = k43 * c2;
@@ -390,20 +390,20 @@ impl Puma560 {
         let t122 = c4 * t120;
         let t123 = s4 * t120;
         let t124 = c5 * t122 + s5 * t121;
-        /// g5 = D5 (eq. 6.45): gravity (and spring) torque
+        /// D5 (6.45), gravity and spring
         let g5 = k49 * t124;
         let t125 = c5 * t123;
         let t126 = s5 * t123;
-        /// g4 = D4 (eq. 6.45): gravity (and spring) torque
+        /// D4 (6.45), gravity and spring
         let g4 = k48 * t126;
         let t127 = c4 * t125 - s4 * t124;
-        /// g3 = D3 (eq. 6.45): gravity (and spring) torque
+        /// D3 (6.45), gravity and spring
         let g3 = k46 * t121 + k47 * t120 + k49 * (s4 * t125 + c4 * t124);
-        /// g2 = D2 (eq. 6.45): gravity (and spring) torque
+        /// D2 (6.45), gravity and spring
         let g2 = t119 + g3;
-        /// g1 = D1 (eq. 6.45): gravity (and spring) torque
+        /// D1 (6.45), gravity and spring
         let g1 = k48 * (s2 * (c3 * t127 - s3 * t126) + c2 * (s3 * t127 + c3 * t126));
-        /// P: potential energy
+        /// potential energy
         let p = -(k57 + (k58 * s2 + k45 * c2) + (k59 * t120 + k47 * t121)
             + k49 * (c5 * t121 - s5 * t122));
         let t128 = s2 * (c2 * t59 - t63) + c2 * t66 + (c2 * (t64 - s2 * t58) - s2 * t67);
@@ -712,125 +712,125 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
         let x = self.__dynamics_configuration(q_);
-        /// C11 = Σ_k D11k q̇_k (eq. 6.44)
+        /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = x.k1
             * (qd_[1] * x.t128 + qd_[2] * x.t135 + qd_[3] * x.t162 + qd_[4] * x.t200);
         let t1 = qd_[0] * x.t128;
         let t2 = qd_[5] * x.t116;
-        /// C12 = Σ_k D12k q̇_k (eq. 6.44)
+        /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = x.k1 * t1 + qd_[1] * x.t65 + x.k1 * (qd_[2] * x.t209)
             + x.k1 * (qd_[3] * x.t210) + x.k1 * (qd_[4] * x.t211) + x.k66 * t2;
         let t3 = qd_[0] * x.t135;
         let t4 = qd_[5] * x.t144;
-        /// C13 = Σ_k D13k q̇_k (eq. 6.44)
+        /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = x.k1 * (t3 + qd_[1] * x.t209) + qd_[2] * x.t136
             + x.k1 * (qd_[3] * x.t212) + x.k1 * (qd_[4] * x.t213) + x.k66 * t4;
         let t5 = qd_[0] * x.t162;
         let t6 = qd_[5] * x.t175;
-        /// C14 = Σ_k D14k q̇_k (eq. 6.44)
+        /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = x.k1 * (t5 + qd_[1] * x.t210 + qd_[2] * x.t212) + qd_[3] * x.t167
             + x.k1 * (qd_[4] * x.t214) + x.k66 * t6;
         let t7 = qd_[0] * x.t200;
         let t8 = qd_[5] * x.t107;
-        /// C15 = Σ_k D15k q̇_k (eq. 6.44)
+        /// C15 = sum of D15k qd_k (6.44)
         let cor1_5 = x.k1 * (t7 + qd_[1] * x.t211 + qd_[2] * x.t213 + qd_[3] * x.t214)
             + qd_[4] * x.t208 + x.k66 * t8;
-        /// C16 = Σ_k D16k q̇_k (eq. 6.44)
+        /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = x.k66
             * (qd_[1] * x.t116 + qd_[2] * x.t144 + qd_[3] * x.t175 + qd_[4] * x.t107);
-        /// C21 = Σ_k D21k q̇_k (eq. 6.44)
+        /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = x.k67 * (t1 - qd_[2] * x.t215 - qd_[3] * x.t216 - qd_[4] * x.t217)
             + x.k68 * t2;
         let t9 = x.k2 * (qd_[2] * x.t68);
         let t10 = x.k1 * (qd_[3] * x.t157);
         let t11 = x.k1 * (qd_[4] * x.t196);
-        /// C22 = Σ_k D22k q̇_k (eq. 6.44)
+        /// C22 = sum of D22k qd_k (6.44)
         let cor2_2 = t9 + t10 + t11;
         let t12 = qd_[1] * x.t68;
-        /// C23 = Σ_k D23k q̇_k (eq. 6.44)
+        /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd_[0] * x.t215) + x.k2 * t12)));
         let t13 = qd_[1] * x.t157;
         let t14 = qd_[5] * x.t5;
         let t15 = x.k68 * t14;
-        /// C24 = Σ_k D24k q̇_k (eq. 6.44)
+        /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = x.k1 * (qd_[0] * x.t216 + t13 + qd_[2] * x.t157) + qd_[3] * x.t166
             + x.k1 * (qd_[4] * x.t218) + t15;
         let t16 = qd_[1] * x.t196;
         let t17 = qd_[5] * x.t86;
         let t18 = x.k68 * t17;
-        /// C25 = Σ_k D25k q̇_k (eq. 6.44)
+        /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = x.k1 * (qd_[0] * x.t217 + t16 + qd_[2] * x.t196 + qd_[3] * x.t218)
             + qd_[4] * x.t207 + t18;
         let t19 = qd_[0] * x.t116;
         let t20 = qd_[3] * x.t5;
         let t21 = qd_[4] * x.t86;
-        /// C26 = Σ_k D26k q̇_k (eq. 6.44)
+        /// C26 = sum of D26k qd_k (6.44)
         let cor2_6 = x.k68 * (t19 + t20 + t21);
-        /// C31 = Σ_k D31k q̇_k (eq. 6.44)
+        /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = x.k67 * (t3 - qd_[1] * x.t219 - qd_[3] * x.t220 - qd_[4] * x.t221)
             + x.k68 * t4;
-        /// C32 = Σ_k D32k q̇_k (eq. 6.44)
+        /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = x.k1 * (qd_[0] * x.t219) + x.k21 * t12 + x.k1 * (qd_[3] * x.t222)
             + x.k1 * (qd_[4] * x.t223);
-        /// C33 = Σ_k D33k q̇_k (eq. 6.44)
+        /// C33 = sum of D33k qd_k (6.44)
         let cor3_3 = x.k1 * (qd_[3] * x.t146 + qd_[4] * x.t184);
         let t22 = qd_[2] * x.t146;
-        /// C34 = Σ_k D34k q̇_k (eq. 6.44)
+        /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = t15
             + (x.k1 * (qd_[0] * x.t220 + qd_[1] * x.t222 + t22) + qd_[3] * x.t148
                 + x.k1 * (qd_[4] * x.t224));
         let t23 = qd_[2] * x.t184;
-        /// C35 = Σ_k D35k q̇_k (eq. 6.44)
+        /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = t18
             + (x.k1 * (qd_[0] * x.t221 + qd_[1] * x.t223 + t23 + qd_[3] * x.t224)
                 + qd_[4] * x.t205);
         let t24 = qd_[0] * x.t144;
-        /// C36 = Σ_k D36k q̇_k (eq. 6.44)
+        /// C36 = sum of D36k qd_k (6.44)
         let cor3_6 = x.k68 * (t21 + (t20 + t24));
-        /// C41 = Σ_k D41k q̇_k (eq. 6.44)
+        /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = x.k67 * (t5 - qd_[1] * x.t225 - qd_[2] * x.t226 - qd_[4] * x.t227)
             + x.k68 * t6;
         let t25 = x.k66 * t14;
-        /// C42 = Σ_k D42k q̇_k (eq. 6.44)
+        /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = x.k1 * (qd_[0] * x.t225 - t13 + qd_[2] * x.t228 + qd_[4] * x.t229)
             + t25;
-        /// C43 = Σ_k D43k q̇_k (eq. 6.44)
+        /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = t25
             + x.k1 * (qd_[0] * x.t226 + qd_[1] * x.t228 - t22 + qd_[4] * x.t230);
-        /// C44 = Σ_k D44k q̇_k (eq. 6.44)
+        /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = x.k34 * (qd_[4] * x.t3);
         let t26 = qd_[3] * x.t3;
         let t27 = x.s5 * qd_[5];
-        /// C45 = Σ_k D45k q̇_k (eq. 6.44)
+        /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = x.k1 * (qd_[0] * x.t227 + qd_[1] * x.t229 + qd_[2] * x.t230)
             + x.k34 * t26 + x.k66 * t27;
         let t28 = qd_[0] * x.t175 - qd_[1] * x.t5 - qd_[2] * x.t5;
         let t29 = x.s5 * qd_[4];
-        /// C46 = Σ_k D46k q̇_k (eq. 6.44)
+        /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = x.k68 * (t28 - t29);
-        /// C51 = Σ_k D51k q̇_k (eq. 6.44)
+        /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = x.k67 * (t7 - qd_[1] * x.t231 - qd_[2] * x.t232 - qd_[3] * x.t233)
             + x.k68 * t8;
         let t30 = x.k66 * t17;
-        /// C52 = Σ_k D52k q̇_k (eq. 6.44)
+        /// C52 = sum of D52k qd_k (6.44)
         let cor5_2 = x.k1 * (qd_[0] * x.t231 - t16 + qd_[2] * x.t234 + qd_[3] * x.t235)
             + t30;
-        /// C53 = Σ_k D53k q̇_k (eq. 6.44)
+        /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = t30
             + x.k1 * (qd_[0] * x.t232 + qd_[1] * x.t234 - t23 + qd_[3] * x.t236);
-        /// C54 = Σ_k D54k q̇_k (eq. 6.44)
+        /// C54 = sum of D54k qd_k (6.44)
         let cor5_4 = x.k1 * (qd_[0] * x.t233 + qd_[1] * x.t235 + qd_[2] * x.t236)
             + x.k35 * t26 + x.k68 * t27;
         let t31 = qd_[0] * x.t107 - qd_[1] * x.t86 - qd_[2] * x.t86 + x.s5 * qd_[3];
-        /// C56 = Σ_k D56k q̇_k (eq. 6.44)
+        /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = x.k68 * t31;
-        /// C62 = Σ_k D62k q̇_k (eq. 6.44)
+        /// C62 = sum of D62k qd_k (6.44)
         let cor6_2 = x.k66 * (t19 - t20 - t21);
-        /// C63 = Σ_k D63k q̇_k (eq. 6.44)
+        /// C63 = sum of D63k qd_k (6.44)
         let cor6_3 = x.k66 * (t24 - t20 - t21);
-        /// C64 = Σ_k D64k q̇_k (eq. 6.44)
+        /// C64 = sum of D64k qd_k (6.44)
         let cor6_4 = x.k66 * (t28 + t29);
-        /// C65 = Σ_k D65k q̇_k (eq. 6.44)
+        /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = x.k66 * t31;
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
@@ -902,12 +902,12 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t44 = qd_[5] + t36;
         let t45 = (x.c6 * t35 - x.s6 * t37) * t44;
         let t46 = (-(x.c6 * t37) - x.s6 * t35) * t44;
-        /// (C q̇)6 = Σ_jk D6jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 6
         let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd_[4] * t35);
         let t47 = x.k15 * t38 + x.k18 * t40 + x.k17 * (-(x.c4 * t29) - x.s4 * t28)
             + x.k7 * (x.c6 * t46 + x.s6 * t45);
         let t48 = x.k13 * (t35 * t37) + cqd6;
-        /// (C q̇)5 = Σ_jk D5jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 5
         let cqd5 = x.k33 * t34 + x.k16 * t39
             + x.k17
                 * (x.c5 * (x.c4 * t28 - x.s4 * t29)
@@ -917,7 +917,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t50 = x.s5 * t41 - x.c5 * t42;
         let t51 = x.k6 * t33 + x.k20 * (t31 * t32) + (x.c5 * t47 - x.s5 * t48);
         let t52 = x.k55 * (t30 * t32) - cqd5;
-        /// (C q̇)4 = Σ_jk D4jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 4
         let cqd4 = x.k20 * t18 + x.k19 * (t30 * t31) + (x.s5 * t47 + x.c5 * t48);
         let t53 = x.c4 * t49 + x.s4 * t43;
         let t54 = x.s4 * t49 - x.c4 * t43;
@@ -927,13 +927,13 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + (x.c4 * t51 - x.s4 * t52) + x.k39 * t54;
         let t58 = x.k24 * t17 + (t16 * t25 - t12 * t27) + x.k52 * t11 + cqd4
             + x.k38 * t54;
-        /// (C q̇)3 = Σ_jk D3jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 3
         let cqd3 = x.k12 * t18 + (t12 * t26 - t13 * t25) + (x.k23 * t15 + x.k54 * t14)
             - (x.s4 * t51 + x.c4 * t52) + (x.k38 * t50 + x.k39 * t53);
         let t59 = x.s3 * t55 + x.c3 * t56;
-        /// (C q̇)2 = Σ_jk D2jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 2
         let cqd2 = x.k29 * t3 + x.k10 * t4 + (t1 * t9 - t2 * t8) + cqd3 + x.k2 * t59;
-        /// (C q̇)1 = Σ_jk D1jk q̇_j q̇_k: centripetal and Coriolis
+        /// centripetal and Coriolis torque 1
         let cqd1 = x.s2
             * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd_[1] * t9)
                 + (x.c3 * t57 - x.s3 * t58) + x.k41 * t59)
@@ -1015,7 +1015,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t39 = qd_[5] + t31;
         let t40 = (x.c6 * t30 - x.s6 * t32) * t39;
         let t41 = (-(x.c6 * t32) - x.s6 * t30) * t39;
-        /// h6 = (C q̇)6 + g6
+        /// centripetal, Coriolis and gravity torque 6
         let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd_[4] * t30);
         let t42 = x.k13 * (t30 * t32) + h6;
         let t43 = x.c5 * t36 + x.s5 * t37;
@@ -1032,7 +1032,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t54 = x.k5 * t17 + x.k2 * t16 + t52;
         let t55 = x.k7 * (x.c6 * t41 + x.s6 * t40)
             + (x.k15 * t33 + x.k18 * t35 + x.k17 * (-(x.c4 * t24) - x.s4 * t54));
-        /// h5 = (C q̇)5 + g5
+        /// centripetal, Coriolis and gravity torque 5
         let h5 = x.k32 * (x.s6 * t41 - x.c6 * t40)
             + (x.k33 * t29 + x.k16 * t34
                 + x.k17
@@ -1040,21 +1040,21 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                         + x.s5 * (x.k4 * t16 + x.k21 * t18 + t53)));
         let t56 = x.k6 * t28 + x.k20 * (t26 * t27) + (x.c5 * t55 - x.s5 * t42);
         let t57 = x.k55 * (t25 * t27) - h5;
-        /// h4 = (C q̇)4 + g4
+        /// centripetal, Coriolis and gravity torque 4
         let h4 = x.k20 * t14 + x.k19 * (t25 * t26) + (x.c5 * t42 + x.s5 * t55);
         let t58 = x.k39 * t46
             + (x.k27 * t13 + x.k24 * t14 + (t11 * t23 - t12 * t22) + x.k25 * t9
                 + (x.c4 * t56 - x.s4 * t57));
         let t59 = x.k38 * t46
             + (x.k24 * t13 + (t12 * t21 - t10 * t23) + x.k52 * t9 + h4);
-        /// h3 = (C q̇)3 + g3
+        /// centripetal, Coriolis and gravity torque 3
         let h3 = x.k38 * t44 + x.k39 * t45
             + (x.k12 * t14 + (t10 * t22 - t11 * t21) + (x.k22 * t53 + x.k53 * t52)
                 - (x.s4 * t56 + x.c4 * t57));
-        /// h2 = (C q̇)2 + g2
+        /// centripetal, Coriolis and gravity torque 2
         let h2 = x.k2 * t49
             + (x.t119 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
-        /// h1 = (C q̇)1 + g1
+        /// centripetal, Coriolis and gravity torque 1
         let h1 = x.s2
             * (x.k41 * t49
                 + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd_[1] * t7)
@@ -1133,12 +1133,12 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t50 = qdd_[4] - (-(x.c4 * t40) - x.s4 * t38 - qd_[3] * t19);
         let t51 = t25 - t50;
         let t52 = t26 + t49;
-        /// T6: torque or force of joint 6 (eq. 6.46)
+        /// T6 (6.46)
         let tau6 = x.k7 * (qdd_[5] + (x.c5 * t48 - x.s5 * t47 - qd_[4] * t22));
         let t53 = x.k7 * (x.c6 * t30 + x.s6 * t29)
             + (x.k18 * t26 + x.k15 * t49 + x.k17 * (-(x.c4 * t46) - x.s4 * t45));
         let t54 = x.k13 * (t22 * t24) + tau6;
-        /// T5: torque or force of joint 5 (eq. 6.46)
+        /// T5 (6.46)
         let tau5 = x.k32 * (x.s6 * t30 - x.c6 * t29)
             + (x.k16 * t25 + x.k18 * t50
                 + x.k17
@@ -1148,7 +1148,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t56 = x.s5 * t51 - x.c5 * t27;
         let t57 = x.k20 * (t20 * t21) + x.k6 * t47 + (x.c5 * t53 - x.s5 * t54);
         let t58 = x.k55 * (t19 * t21) - tau5;
-        /// T4: torque or force of joint 4 (eq. 6.46)
+        /// T4 (6.46)
         let tau4 = x.k19 * (t19 * t20) + x.k20 * t48 + (x.s5 * t53 + x.c5 * t54);
         let t59 = x.c4 * t55 + x.s4 * t52;
         let t60 = x.s4 * t55 - x.c4 * t52;
@@ -1158,16 +1158,16 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + (x.c4 * t57 - x.s4 * t58) + x.k39 * t60;
         let t64 = t11 * t16 - t9 * t18 + (x.k24 * t38 + x.k12 * t40) + x.k52 * t33 + tau4
             + x.k38 * t60;
-        /// T3: torque or force of joint 3 (eq. 6.46)
+        /// T3 (6.46)
         let tau3 = t9 * t17 - t10 * t16 + (x.k12 * t39 + x.k26 * t40)
             + (x.k22 * t37 + x.k53 * t36) - (x.s4 * t57 + x.c4 * t58)
             + (x.k38 * t56 + x.k39 * t59);
         let t65 = x.s3 * t61 + x.c3 * t62;
-        /// T2: torque or force of joint 2 (eq. 6.46)
+        /// T2 (6.46)
         let tau2 = x.t119
             + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd_[1])) + tau3
             + x.k2 * t65;
-        /// T1: torque or force of joint 1 (eq. 6.46)
+        /// T1 (6.46)
         let tau1 = x.k31 * qdd_[0]
             + (x.s2
                 * (t2 * t8 - qd_[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd_[1])

@@ -692,7 +692,8 @@ impl<'a> Emitter<'a> {
     }
 }
 
-/// What an output element named `name` (`m1_2`, `tau3`, …) is, in the book's terms.
+/// What an output element named `name` (`m1_2`, `tau3`, …) is, in the book's terms: short and
+/// ASCII, since a large robot has a hundred of them and non-ASCII text is escaped in tokens.
 fn describe(name: &str) -> Option<String> {
     let pair = |rest: &str| {
         let (i, j) = rest.split_once('_')?;
@@ -700,30 +701,26 @@ fn describe(name: &str) -> Option<String> {
     };
     let one = |rest: &str| rest.parse::<usize>().ok();
     if let Some((i, j)) = name.strip_prefix("cor").and_then(pair) {
-        return Some(format!("C{i}{j} = Σ_k D{i}{j}k q̇_k (eq. 6.44)"));
+        return Some(format!("C{i}{j} = sum of D{i}{j}k qd_k (6.44)"));
     }
     if let Some(i) = name.strip_prefix("cqd").and_then(one) {
-        return Some(format!(
-            "(C q̇){i} = Σ_jk D{i}jk q̇_j q̇_k: centripetal and Coriolis"
-        ));
+        return Some(format!("centripetal and Coriolis torque {i}"));
     }
     if let Some(i) = name.strip_prefix("tau").and_then(one) {
-        return Some(format!("T{i}: torque or force of joint {i} (eq. 6.46)"));
+        return Some(format!("T{i} (6.46)"));
     }
     if let Some((i, j)) = name.strip_prefix('m').and_then(pair) {
         return Some(if i == j {
-            format!("M{i}{i} = D{i}{i} (eq. 6.43) + actuator inertia: effective inertia")
+            format!("D{i}{i} (6.43) + actuator inertia")
         } else {
-            format!("M{i}{j} = M{j}{i} = D{i}{j} (eq. 6.43): coupling inertia")
+            format!("D{i}{j} = D{j}{i} (6.43)")
         });
     }
     if let Some(i) = name.strip_prefix('g').and_then(one) {
-        return Some(format!(
-            "g{i} = D{i} (eq. 6.45): gravity (and spring) torque"
-        ));
+        return Some(format!("D{i} (6.45), gravity and spring"));
     }
     if let Some(i) = name.strip_prefix('h').and_then(one) {
-        return Some(format!("h{i} = (C q̇){i} + g{i}"));
+        return Some(format!("centripetal, Coriolis and gravity torque {i}"));
     }
-    (name == "p").then(|| "P: potential energy".to_owned())
+    (name == "p").then(|| "potential energy".to_owned())
 }

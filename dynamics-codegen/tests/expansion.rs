@@ -130,15 +130,12 @@ fn output_elements_are_named_and_commented() {
         struct TwoLink;",
     );
     for (name, doc) in [
-        (
-            "m1_1",
-            "M11 = D11 (eq. 6.43) + actuator inertia: effective inertia",
-        ),
-        ("m1_2", "M12 = M21 = D12 (eq. 6.43): coupling inertia"),
-        ("g2", "g2 = D2 (eq. 6.45): gravity (and spring) torque"),
-        ("cor1_2", "C12 = Σ_k D12k q̇_k (eq. 6.44)"),
-        ("tau1", "T1: torque or force of joint 1 (eq. 6.46)"),
-        ("h2", "h2 = (C q̇)2 + g2"),
+        ("m1_1", "D11 (6.43) + actuator inertia"),
+        ("m1_2", "D12 = D21 (6.43)"),
+        ("g2", "D2 (6.45), gravity and spring"),
+        ("cor1_2", "C12 = sum of D12k qd_k (6.44)"),
+        ("tau1", "T1 (6.46)"),
+        ("h2", "centripetal, Coriolis and gravity torque 2"),
     ] {
         let doc = proc_macro2::Literal::string(&format!(" {doc}"));
         let binding = format!("# [doc = {doc}] let {name} =");
