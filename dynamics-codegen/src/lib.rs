@@ -69,76 +69,29 @@ pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -
     use emit::{Output, Shape};
     let ctx = emit::Context { krate, fields };
     // Each method with the name of its output elements (`m1_2`, `tau3`).
-    let outputs: [(&'static str, Output); 8] = [
-        (
-            "mass_matrix",
-            Output {
-                prefix: "m",
-                shape: Shape::Matrix(&eq.mass),
-            },
-        ),
-        (
-            "coriolis_matrix",
-            Output {
-                prefix: "cor",
-                shape: Shape::Matrix(&eq.coriolis),
-            },
-        ),
+    let table: [(&'static str, &str, Shape); 8] = [
+        ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
+        ("coriolis_matrix", "cor", Shape::Matrix(&eq.coriolis)),
         (
             "coriolis_torques",
-            Output {
-                prefix: "cqd",
-                shape: Shape::Vector(&eq.coriolis_torques),
-            },
+            "cqd",
+            Shape::Vector(&eq.coriolis_torques),
         ),
-        (
-            "gravity_torques",
-            Output {
-                prefix: "g",
-                shape: Shape::Vector(&eq.gravity),
-            },
-        ),
-        (
-            "bias_torques",
-            Output {
-                prefix: "h",
-                shape: Shape::Vector(&eq.bias),
-            },
-        ),
-        (
-            "inverse_dynamics",
-            Output {
-                prefix: "tau",
-                shape: Shape::Vector(&eq.tau),
-            },
-        ),
-        (
-            "kinetic_energy",
-            Output {
-                prefix: "k",
-                shape: Shape::Scalar(eq.kinetic_energy),
-            },
-        ),
-        (
-            "potential_energy",
-            Output {
-                prefix: "p",
-                shape: Shape::Scalar(eq.potential_energy),
-            },
-        ),
+        ("gravity_torques", "g", Shape::Vector(&eq.gravity)),
+        ("bias_torques", "h", Shape::Vector(&eq.bias)),
+        ("inverse_dynamics", "tau", Shape::Vector(&eq.tau)),
+        ("kinetic_energy", "k", Shape::Scalar(eq.kinetic_energy)),
+        ("potential_energy", "p", Shape::Scalar(eq.potential_energy)),
     ];
-    let shapes: Vec<Output> = outputs
+    let shapes: Vec<Output> = table
         .iter()
-        .map(|(_, o)| Output {
-            prefix: o.prefix,
-            shape: o.shape,
-        })
+        .map(|&(_, prefix, shape)| Output { prefix, shape })
         .collect();
     let emission = emit::emit(eq, &shapes, &ctx);
-    let methods = outputs
+    let methods = table
         .iter()
         .zip(emission.bodies)
-        .map(|((name, _), b)| Method {
+        .map(|(&(name, _, _), b)| Method {
             name,
             body: b.tokens,
             ops: b.ops,
@@ -152,19 +105,6 @@ pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -
 }
 
 impl Generated {
-    /// Size of the generated code, in bytes of its token text.
-    #[must_use]
-    pub fn code_size(&self) -> usize {
-        self.configuration
-            .as_ref()
-            .map_or(0, |c| c.tokens.to_string().len())
-            + self
-                .methods
-                .iter()
-                .map(|m| m.body.to_string().len())
-                .sum::<usize>()
-    }
-
     /// The items for the robot type `ident`: the configuration struct and the hidden inherent
     /// method computing it, and the `Dynamics` impl. `docs` gives each method's doc comment.
     #[must_use]
