@@ -53,99 +53,99 @@ struct __DynamicsConfiguration<T> {
     k30: T,
     k31: T,
     k32: T,
-    k33: T,
-    m4_6: T,
     t3: T,
     k34: T,
-    m4_4: T,
-    t5: T,
     k35: T,
-    k38: T,
+    m4_4: T,
+    t7: T,
+    k36: T,
     k39: T,
+    k40: T,
     m3_4: T,
     m3_3: T,
-    m2_3: T,
     k41: T,
+    m2_3: T,
+    k44: T,
     m2_2: T,
-    t65: T,
+    t59: T,
     m1_2: T,
     m1_1: T,
-    t68: T,
+    t60: T,
     m1_3: T,
     m2_4: T,
     m1_4: T,
-    t86: T,
+    t78: T,
     m3_5: T,
     m2_5: T,
-    t107: T,
+    t99: T,
     m1_5: T,
+    m4_6: T,
     m2_6: T,
-    t116: T,
+    t108: T,
     m1_6: T,
-    t117: T,
-    t118: T,
-    t119: T,
+    t109: T,
+    t110: T,
+    t111: T,
     g5: T,
     g4: T,
     g3: T,
     g2: T,
     g1: T,
-    k50: T,
-    k51: T,
-    k52: T,
     k53: T,
     k54: T,
     k55: T,
     k56: T,
+    k57: T,
+    k58: T,
     p: T,
-    t128: T,
+    t120: T,
+    t124: T,
+    t127: T,
     t135: T,
-    t136: T,
-    t144: T,
-    t146: T,
-    t148: T,
-    t157: T,
-    t162: T,
-    t166: T,
-    t167: T,
-    t175: T,
+    t137: T,
+    t139: T,
+    t147: T,
+    t149: T,
+    t155: T,
+    t156: T,
+    t164: T,
+    t173: T,
     t184: T,
+    t185: T,
+    t192: T,
+    t194: T,
+    t195: T,
     t196: T,
+    t197: T,
+    t198: T,
+    k68: T,
+    t199: T,
     t200: T,
+    t201: T,
+    t202: T,
+    t203: T,
+    t204: T,
+    k69: T,
     t205: T,
+    k70: T,
+    t206: T,
     t207: T,
     t208: T,
     t209: T,
     t210: T,
     t211: T,
-    k66: T,
     t212: T,
     t213: T,
     t214: T,
-    k67: T,
     t215: T,
     t216: T,
     t217: T,
-    k68: T,
     t218: T,
     t219: T,
     t220: T,
     t221: T,
     t222: T,
     t223: T,
-    t224: T,
-    t225: T,
-    t226: T,
-    t227: T,
-    t228: T,
-    t229: T,
-    t230: T,
-    t231: T,
-    t232: T,
-    t233: T,
-    t234: T,
-    t235: T,
-    t236: T,
 }
 impl Puma560 {
     #[doc(hidden)]
@@ -193,346 +193,327 @@ impl Puma560 {
         let k30: T = T::from_f64(-1.601861202);
         let k31: T = T::from_f64(3.153542285625);
         let k32: T = T::from_f64(-0.00004);
-        let k33: T = T::from_f64(-0.00064216);
+        let k33: T = T::from_f64(0.00028216);
         let k34: T = T::from_f64(0.00020216);
-        let k35: T = T::from_f64(-0.00020216);
-        let k36: T = T::from_f64(-0.000058464);
-        let k37: T = T::from_f64(0.001243584);
-        let k38: T = T::from_f64(0.000058464);
-        let k39: T = T::from_f64(-0.001243584);
-        let k40: T = T::from_f64(0.000432144);
-        let k41: T = T::from_f64(-0.15005);
-        let k42: T = T::from_f64(-0.000432144);
-        let k43: T = T::from_f64(9.81);
-        let k44: T = T::from_f64(37.2347379);
-        let k45: T = T::from_f64(-1.024164);
-        let k46: T = T::from_f64(0.24892875);
-        let k47: T = T::from_f64(-8.7439473);
-        let k48: T = T::from_f64(0.0282528);
-        let k49: T = T::from_f64(-0.0282528);
-        let k50: T = T::from_f64(2.0);
-        let k51: T = T::from_f64(0.8636);
-        let k52: T = T::from_f64(-0.025375);
-        let k53: T = T::from_f64(-0.89133);
-        let k54: T = T::from_f64(0.384876294);
-        let k55: T = T::from_f64(-0.0013);
-        let k56: T = T::from_f64(-0.00576);
-        let k57: T = T::from_f64(-154.550796435);
-        let k58: T = T::from_f64(-37.2347379);
-        let k59: T = T::from_f64(-0.24892875);
-        let k60: T = T::from_f64(0.00128432);
-        let k61: T = T::from_f64(-0.00128432);
-        let k62: T = T::from_f64(0.000116928);
-        let k63: T = T::from_f64(-0.000116928);
-        let k64: T = T::from_f64(-0.00040432);
-        let k65: T = T::from_f64(0.00040432);
-        let k66: T = T::from_f64(-0.00002);
-        let k67: T = T::from_f64(-0.5);
-        let k68: T = T::from_f64(0.00002);
+        let k35: T = T::from_f64(-0.00064216);
+        let k36: T = T::from_f64(-0.00020216);
+        let k37: T = T::from_f64(-0.000058464);
+        let k38: T = T::from_f64(0.001243584);
+        let k39: T = T::from_f64(0.000058464);
+        let k40: T = T::from_f64(-0.001243584);
+        let k41: T = T::from_f64(2.0);
+        let k42: T = T::from_f64(-2.0);
+        let k43: T = T::from_f64(0.000432144);
+        let k44: T = T::from_f64(-0.15005);
+        let k45: T = T::from_f64(-0.000432144);
+        let k46: T = T::from_f64(9.81);
+        let k47: T = T::from_f64(37.2347379);
+        let k48: T = T::from_f64(-1.024164);
+        let k49: T = T::from_f64(0.24892875);
+        let k50: T = T::from_f64(-8.7439473);
+        let k51: T = T::from_f64(0.0282528);
+        let k52: T = T::from_f64(-0.0282528);
+        let k53: T = T::from_f64(0.8636);
+        let k54: T = T::from_f64(-0.025375);
+        let k55: T = T::from_f64(-0.89133);
+        let k56: T = T::from_f64(0.384876294);
+        let k57: T = T::from_f64(-0.0013);
+        let k58: T = T::from_f64(-0.00576);
+        let k59: T = T::from_f64(-154.550796435);
+        let k60: T = T::from_f64(-37.2347379);
+        let k61: T = T::from_f64(-0.24892875);
+        let k62: T = T::from_f64(-4.0);
+        let k63: T = T::from_f64(0.00128432);
+        let k64: T = T::from_f64(0.000116928);
+        let k65: T = T::from_f64(-0.000116928);
+        let k66: T = T::from_f64(-0.00040432);
+        let k67: T = T::from_f64(0.00040432);
+        let k68: T = T::from_f64(-0.00002);
+        let k69: T = T::from_f64(0.00002);
+        let k70: T = T::from_f64(-0.5);
         let (s2, c2) = T::sin_cos(q_[1]);
         let (s3, c3) = T::sin_cos(q_[2]);
         let (s4, c4) = T::sin_cos(q_[3]);
         let (s5, c5) = T::sin_cos(q_[4]);
         let (s6, c6) = T::sin_cos(q_[5]);
-        /// D46 = D64 (6.43)
-        let m4_6 = k7 * c5;
         let t1 = c5 * c5;
         let t2 = s5 * s5;
         let t3 = s5 * c5;
-        let t4 = k6 + (k15 * t1 + k7 * t2);
+        let t4 = k15 * t1 + k7 * t2;
+        let t5 = t1 - t2;
+        let t6 = k6 + t4;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k20 + (k15 * t2 + k7 * t1);
-        let t5 = c4 * s5;
-        let t6 = s4 * s5;
-        let t7 = c4 * t4;
-        let t8 = c4 * t3;
-        let t9 = k34 * t8;
-        let t10 = s4 * t4;
-        let t11 = s4 * t3;
-        let t12 = c4 * t7;
-        let t13 = s4 * s4;
-        let t14 = s4 * t7;
-        let t15 = s4 * c4;
-        let t16 = c4 * t10;
-        let t17 = s4 * t10;
-        let t18 = c4 * c4;
-        let t19 = k36 * t5;
-        let t20 = k37 * c5;
-        let t21 = m4_4 + t19;
-        let t22 = t19 + t21;
-        let t23 = t19 + t20;
-        let t24 = k39 * t5;
-        let t25 = k38 * t6;
-        let t26 = k18 * t15 - t14 + k36 * t6;
-        let t27 = k37 * t6;
+        let m4_4 = k20 + (k33 - t4);
+        let t7 = c4 * s5;
+        let t8 = s4 * s5;
+        let t9 = c4 * c4;
+        let t10 = s4 * s4;
+        let t11 = s4 * c4;
+        let t12 = t6 * t9 + k18 * t10;
+        let t13 = k35 + t6;
+        let t14 = c4 * t3;
+        let t15 = k34 * t14;
+        let t16 = k37 * t7;
+        let t17 = k38 * c5;
+        let t18 = m4_4 + t16;
+        let t19 = t16 + t18;
+        let t20 = t16 + t17;
+        let t21 = k40 * t7;
+        let t22 = k39 * t8;
+        let t23 = k37 * t8 - t11 * t13;
+        let t24 = k38 * t8;
         /// D34 = D43 (6.43)
-        let m3_4 = k35 * t11 + k39 * t6;
-        let t28 = k22 + k17 * t5;
-        let t29 = k25 + k14 * c5;
-        let t30 = k27 + (t20 + (t12 + k18 * t13 + t20));
+        let m3_4 = k36 * (s4 * t3) + k40 * t8;
+        let t25 = k22 + k17 * t7;
+        let t26 = k25 + k14 * c5;
+        let t27 = k27 + (t17 + (t12 + t17));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k26 + (t23 + (t17 + k18 * t18 + t23));
-        let t31 = k24 + (t9 - (k38 * c5 + t24));
-        let t32 = k12 + m3_4;
-        let t33 = c3 * t28;
-        let t34 = s3 * t29;
-        let t35 = t33 - t34;
-        let t36 = s3 * t28;
-        let t37 = c3 * t29;
-        let t38 = t36 + t37;
-        let t39 = s3 * t31;
-        let t40 = c3 * t30 - t39;
-        let t41 = c3 * t31;
-        let t42 = t41 - s3 * t22;
-        let t43 = c3 * t26 - s3 * t32;
-        let t44 = s3 * t30;
-        let t45 = t41 + t44;
-        let t46 = c3 * t22;
-        let t47 = t39 + t46;
-        let t48 = s3 * t26;
-        let t49 = c3 * t32;
+        let m3_3 = k26 + (t20 + (k18 + t6 - t12 + t20));
+        let t28 = k24 + (t15 - (k39 * c5 + t21));
+        let t29 = k12 + m3_4;
+        let t30 = c3 * t25;
+        let t31 = s3 * t26;
+        let t32 = t30 - t31;
+        let t33 = s3 * t25;
+        let t34 = c3 * t26;
+        let t35 = t33 + t34;
+        let t36 = c3 * c3;
+        let t37 = s3 * s3;
+        let t38 = s3 * c3;
+        let t39 = t28 * t38;
+        let t40 = t27 * t36 + k42 * t39 + t19 * t37;
+        let t41 = t27 - t19;
+        let t42 = t36 - t37;
+        let t43 = t28 * t42;
+        let t44 = c3 * t23 - s3 * t29;
+        let t45 = s3 * t23;
+        let t46 = c3 * t29;
+        let t47 = t45 + t46;
+        let t48 = k2 * t32;
+        let t49 = k43 * t8;
         let t50 = t48 + t49;
-        let t51 = c3 * t40;
-        let t52 = s3 * t42;
-        let t53 = s3 * t40;
-        let t54 = c3 * t42;
-        let t55 = k2 * t35;
-        let t56 = k40 * t6;
-        let t57 = t55 + t56;
-        let t58 = t57 + (s3 * t45 + c3 * t47 + t57);
+        let t51 = t50 + (t19 + t27 - t40 + t50);
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + t55;
-        let t59 = k30 + (t56 + (t51 - t52 + t56));
+        let m2_3 = m3_3 + t48;
+        let t52 = k30 + (t49 + (t40 + t49));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k28 + (t55 + m2_3);
-        let t60 = k9 + (t53 + t54 + k21 * t38);
-        let t61 = k29 + (t43 - (t27 + k3 * t35));
-        let t62 = k11 + (t50 + k41 * t38);
-        let t63 = s2 * t60;
-        let t64 = c2 * t60;
-        let t65 = c2 * t61 - s2 * t62;
-        let t66 = t64 + s2 * t59;
-        let t67 = t63 + c2 * t58;
+        let m2_2 = k28 + (t48 + m2_3);
+        let t53 = k9 + (t38 * t41 + t43 + k21 * t35);
+        let t54 = k29 + (t44 - (t24 + k3 * t32));
+        let t55 = k11 + (t47 + k44 * t35);
+        let t56 = c2 * c2;
+        let t57 = s2 * s2;
+        let t58 = s2 * c2;
+        let t59 = c2 * t54 - s2 * t55;
         /// D12 = D21 (6.43)
-        let m1_2 = s2 * t61 + c2 * t62;
+        let m1_2 = s2 * t54 + c2 * t55;
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k31 + (s2 * t66 + c2 * t67);
-        let t68 = -t37 - t36;
-        let t69 = t43 + k41 * t35;
-        let t70 = t50 + k3 * t68;
-        let t71 = c2 * t69;
-        let t72 = t71 - s2 * t70;
+        let m1_1 = k31 + (t51 + t52 - (t52 * t56 + k42 * (t53 * t58) + t51 * t57));
+        let t60 = -t34 - t33;
+        let t61 = t44 + k44 * t32;
+        let t62 = t47 + k3 * t60;
+        let t63 = c2 * t61;
+        let t64 = t63 - s2 * t62;
         /// D13 = D31 (6.43)
-        let m1_3 = s2 * t69 + c2 * t70;
-        let t73 = k37 * t5;
-        let t74 = t9 + t73;
-        let t75 = c3 * t6;
-        let t76 = s3 * t6;
-        let t77 = s3 * t74;
-        let t78 = c3 * t21;
-        let t79 = k42 * t76;
-        let t80 = k40 * t75;
-        let t81 = c3 * t74 - s3 * t21 + t79;
-        let t82 = t77 + t78 + (t24 + t80);
+        let m1_3 = s2 * t61 + c2 * t62;
+        let t65 = k38 * t7;
+        let t66 = t15 + t65;
+        let t67 = c3 * t8;
+        let t68 = s3 * t8;
+        let t69 = s3 * t66;
+        let t70 = c3 * t18;
+        let t71 = k45 * t68;
+        let t72 = k43 * t67;
+        let t73 = c3 * t66 - s3 * t18 + t71;
+        let t74 = t69 + t70 + (t21 + t72);
         /// D24 = D42 (6.43)
-        let m2_4 = m3_4 + k37 * t76;
-        let t83 = c2 * t81;
-        let t84 = t83 - s2 * t82;
+        let m2_4 = m3_4 + k38 * t68;
+        let t75 = c2 * t73;
+        let t76 = t75 - s2 * t74;
         /// D14 = D41 (6.43)
-        let m1_4 = s2 * t81 + c2 * t82;
-        let t85 = c4 * c5;
-        let t86 = s4 * c5;
-        let t87 = k18 * c4;
-        let t88 = k37 * t86;
-        let t89 = k36 * s5;
-        let t90 = k39 * t85;
-        let t91 = k37 * t85;
-        let t92 = k18 * s4 + t88;
+        let m1_4 = s2 * t73 + c2 * t74;
+        let t77 = c4 * c5;
+        let t78 = s4 * c5;
+        let t79 = k18 * c4;
+        let t80 = k38 * t78;
+        let t81 = k37 * s5;
+        let t82 = k40 * t77;
+        let t83 = k38 * t77;
+        let t84 = k18 * s4 + t80;
         /// D35 = D53 (6.43)
-        let m3_5 = t87 + (t89 + t91);
-        let t93 = c3 * t85;
-        let t94 = t93 - s3 * s5;
-        let t95 = s3 * t85;
-        let t96 = c3 * s5;
-        let t97 = t95 + t96;
-        let t98 = s3 * t86;
-        let t99 = c3 * t92 + k38 * t98;
-        let t100 = s3 * t92;
-        let t101 = c3 * t86;
-        let t102 = k40 * t97;
-        let t103 = k42 * t94;
-        let t104 = k39 * t86;
-        let t105 = t99 + t102;
-        let t106 = t100 + k36 * t101 + (t103 + t104);
+        let m3_5 = t79 + (t81 + t83);
+        let t85 = c3 * t77;
+        let t86 = t85 - s3 * s5;
+        let t87 = s3 * t77;
+        let t88 = c3 * s5;
+        let t89 = t87 + t88;
+        let t90 = s3 * t78;
+        let t91 = c3 * t84 + k39 * t90;
+        let t92 = s3 * t84;
+        let t93 = c3 * t78;
+        let t94 = k43 * t89;
+        let t95 = k45 * t86;
+        let t96 = k40 * t78;
+        let t97 = t91 + t94;
+        let t98 = t92 + k37 * t93 + (t95 + t96);
         /// D25 = D52 (6.43)
-        let m2_5 = m3_5 + k39 * t97;
-        let t107 = s2 * t94 + c2 * t97;
-        let t108 = c2 * t105 - s2 * t106;
+        let m2_5 = m3_5 + k40 * t89;
+        let t99 = s2 * t86 + c2 * t89;
+        let t100 = c2 * t97 - s2 * t98;
         /// D15 = D51 (6.43)
-        let m1_5 = s2 * t105 + c2 * t106;
+        let m1_5 = s2 * t97 + c2 * t98;
+        /// D46 = D64 (6.43)
+        let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
-        let m2_6 = k7 * t6;
-        let t109 = c3 * t5;
-        let t110 = s3 * c5;
-        let t111 = t109 + t110;
-        let t112 = s3 * t5;
-        let t113 = c3 * c5;
-        let t114 = t112 - t113;
-        let t115 = c2 * t111;
-        let t116 = t115 - s2 * t114;
+        let m2_6 = k7 * t8;
+        let t101 = c3 * t7;
+        let t102 = s3 * c5;
+        let t103 = t101 + t102;
+        let t104 = s3 * t7;
+        let t105 = c3 * c5;
+        let t106 = t104 - t105;
+        let t107 = c2 * t103;
+        let t108 = t107 - s2 * t106;
         /// D16 = D61 (6.43)
-        let m1_6 = k32 * (s2 * t111 + c2 * t114);
-        let t117 = k43 * s2;
-        let t118 = k43 * c2;
-        let t119 = k44 * c2 + k45 * s2;
-        let t120 = s2 * c3 + c2 * s3;
-        let t121 = c2 * c3 - s2 * s3;
-        let t122 = c4 * t120;
-        let t123 = s4 * t120;
-        let t124 = c5 * t122 + s5 * t121;
+        let m1_6 = k32 * (s2 * t103 + c2 * t106);
+        let t109 = k46 * s2;
+        let t110 = k46 * c2;
+        let t111 = k47 * c2 + k48 * s2;
+        let t112 = s2 * c3 + c2 * s3;
+        let t113 = c2 * c3 - s2 * s3;
+        let t114 = c4 * t112;
+        let t115 = s4 * t112;
+        let t116 = c5 * t114 + s5 * t113;
         /// D5 (6.45), gravity and spring
-        let g5 = k49 * t124;
-        let t125 = c5 * t123;
-        let t126 = s5 * t123;
+        let g5 = k52 * t116;
+        let t117 = c5 * t115;
+        let t118 = s5 * t115;
         /// D4 (6.45), gravity and spring
-        let g4 = k48 * t126;
-        let t127 = c4 * t125 - s4 * t124;
+        let g4 = k51 * t118;
+        let t119 = c4 * t117 - s4 * t116;
         /// D3 (6.45), gravity and spring
-        let g3 = k46 * t121 + k47 * t120 + k49 * (s4 * t125 + c4 * t124);
+        let g3 = k49 * t113 + k50 * t112 + k52 * (s4 * t117 + c4 * t116);
         /// D2 (6.45), gravity and spring
-        let g2 = t119 + g3;
+        let g2 = t111 + g3;
         /// D1 (6.45), gravity and spring
-        let g1 = k48 * (s2 * (c3 * t127 - s3 * t126) + c2 * (s3 * t127 + c3 * t126));
+        let g1 = k51 * (s2 * (c3 * t119 - s3 * t118) + c2 * (s3 * t119 + c3 * t118));
         /// potential energy
-        let p = -(k57 + (k58 * s2 + k45 * c2) + (k59 * t120 + k47 * t121)
-            + k49 * (c5 * t121 - s5 * t122));
-        let t128 = s2 * (c2 * t59 - t63) + c2 * t66 + (c2 * (t64 - s2 * t58) - s2 * t67);
-        let t129 = -t44 - t41;
-        let t130 = -t39 - t46;
-        let t131 = k2 * t68;
-        let t132 = t51 + s3 * t129 + (c3 * t130 - t52) + k21 * t35;
-        let t133 = s2 * (-t48 - t49 + k41 * t68);
-        let t134 = t71 + t133;
-        let t135 = s2 * (c2 * t132 + s2 * (c3 * t129 - t53 - (t54 + s3 * t130)))
-            + c2
-                * (s2 * t132 + c2 * (t131 + (t53 + c3 * t45 + (t54 - s3 * t47) + t131)));
-        let t136 = t133 + c2 * (t43 + k3 * (t34 - t33));
-        let t137 = k42 * t75;
-        let t138 = k37 * t75;
-        let t139 = t83 + s2 * (-t77 - t78 + t137);
-        let t140 = k40 * t94;
-        let t141 = k39 * t94;
-        let t142 = s2 * (k38 * t101 - t100 + t140) + c2 * (t99 + k42 * (-t95 - t96));
-        let t143 = t113 - t112;
-        let t144 = t115 + s2 * t143;
-        let t145 = -t14 - t16 + k60 * t15;
-        let t146 = t25 + (t25 + (t14 + t16 + k61 * t15));
-        let t147 = t19 + (k18 * (t18 - t13) - (t12 - t17));
-        let t148 = t24 + k35 * t8;
-        let t149 = s3 * m3_4;
-        let t150 = c3 * t145 - t149;
-        let t151 = c3 * m3_4;
-        let t152 = t151 + k63 * t76;
-        let t153 = c3 * t147 - s3 * t148;
-        let t154 = k40 * t5;
-        let t155 = t138 + t154;
-        let t156 = t138 + t146;
-        let t157 = t138 + t156;
-        let t158 = k39 * t76;
-        let t159 = s3 * t150 + c3 * t152 + t158;
-        let t160 = c2 * (t79 + (s3 * t147 + c3 * t148));
-        let t161 = s2 * (t153 - (t73 + t80)) + t160;
-        let t162 = s2 * (c2 * t159 + s2 * (t154 + (c3 * t150 - s3 * t152 + t154)))
-            + c2
-                * (s2 * t159
-                    + c2
-                        * (t155
-                            + (s3 * (t151 + s3 * t145) + c3 * (t149 + k62 * t75)
-                                + t155)));
-        let t163 = t160 + s2 * (t137 + t153);
-        let t164 = k36 * t76;
-        let t165 = k38 * t75;
-        let t166 = t148 + k37 * t112;
-        let t167 = s2 * (t151 + t164 + k42 * t112)
-            + c2 * (t149 + t165 + (t27 + k40 * t109));
-        let t168 = t87 + t91;
-        let t169 = k33 * s4 + t104;
-        let t170 = k42 * t98;
-        let t171 = t90 + k40 * t101;
-        let t172 = k37 * t98;
-        let t173 = t169 + t172;
-        let t174 = s2 * (c3 * t168 + k38 * t95 + t170)
-            + c2 * (s3 * t168 + k36 * t93 + t171);
-        let t175 = -(s2 * t75) - c2 * t76;
-        let t176 = t1 - t2;
-        let t177 = k34 * (c4 * t176);
-        let t178 = k36 * t85;
-        let t179 = k39 * s5;
-        let t180 = t179 + (k64 * (c4 * t8) + t179);
-        let t181 = k65 * t3 + t178;
-        let t182 = t178 + t181;
-        let t183 = t178 + t179;
-        let t184 = t183 + (k64 * (s4 * t11) + t183);
-        let t185 = t177 - (t89 + t90);
-        let t186 = k36 * t86 + k65 * (s4 * t8);
-        let t187 = t104 + k35 * (s4 * t176);
-        let t188 = s3 * t185;
-        let t189 = c3 * t180 - t188;
-        let t190 = c3 * t185;
-        let t191 = t190 - s3 * t182;
-        let t192 = c3 * t186 - s3 * t187;
-        let t193 = k40 * t86;
-        let t194 = t141 + t193;
-        let t195 = t141 + t184;
-        let t196 = t141 + t195;
-        let t197 = s3 * t189 + c3 * t191 + k37 * t97;
-        let t198 = c2 * (t102 + (s3 * t186 + c3 * t187));
-        let t199 = s2 * (t192 - (t88 + t103)) + t198;
-        let t200 = s2 * (c2 * t197 + s2 * (t193 + (c3 * t189 - s3 * t191 + t193)))
-            + c2
-                * (s2 * t197
-                    + c2
-                        * (t194
-                            + (s3 * (t190 + s3 * t180) + c3 * (t188 + c3 * t182)
-                                + t194)));
-        let t201 = t198 + s2 * (t140 + t192);
-        let t202 = t91 + t177;
-        let t203 = t172 + t187;
-        let t204 = s2 * (t170 + (c3 * t202 - s3 * t181))
-            + c2 * (t171 + (s3 * t202 + c3 * t181));
-        let t205 = t24 + k36 * c5;
-        let t206 = k39 * t75;
-        let t207 = t205 + k39 * t143;
-        let t208 = s2 * (t164 + t206 + k40 * t143)
-            + c2 * (t158 + t165 + (t27 + k42 * (-t110 - t109)));
-        let t209 = t72 + t134;
-        let t210 = t84 + t161;
-        let t211 = t108 + t199;
-        let t212 = t139 + t163;
-        let t213 = t142 + t201;
-        let t214 = t174 + t204;
-        let t215 = t134 - t72;
-        let t216 = t161 - t84;
-        let t217 = t199 - t108;
-        let t218 = t173 + t203;
-        let t219 = t72 - t134;
-        let t220 = t163 - t139;
-        let t221 = t201 - t142;
-        let t222 = t156 + t206;
-        let t223 = t195 + k37 * t94;
-        let t224 = t169 + t187;
-        let t225 = t84 - t161;
-        let t226 = t139 - t163;
-        let t227 = t204 - t174;
-        let t228 = t138 - t156;
-        let t229 = t203 - t173;
-        let t230 = t187 - t169;
-        let t231 = t108 - t199;
-        let t232 = t142 - t201;
-        let t233 = t174 - t204;
-        let t234 = t141 - t195;
-        let t235 = t173 - t203;
-        let t236 = t169 - t187;
+        let p = -(k59 + (k60 * s2 + k48 * c2) + (k61 * t112 + k50 * t113)
+            + k52 * (c5 * t113 - s5 * t114));
+        let t120 = t53 * (t56 - t57) + t52 * t58 - t51 * t58;
+        let t121 = t43 + t27 * t38 - t19 * t38;
+        let t122 = k2 * t60;
+        let t123 = t122 + (k41 * t121 + t122);
+        let t124 = k42 * t121 + t123
+            - (k42 * (t56 * t121 + t58 * (t41 * t42 + k62 * t39 + k21 * t32))
+                + t57 * t123);
+        let t125 = s2 * (-t45 - t46 + k44 * t60);
+        let t126 = t63 + t125;
+        let t127 = t125 + c2 * (t44 + k3 * (t31 - t30));
+        let t128 = k45 * t67;
+        let t129 = k38 * t67;
+        let t130 = t75 + s2 * (-t69 - t70 + t128);
+        let t131 = k43 * t86;
+        let t132 = k40 * t86;
+        let t133 = s2 * (k39 * t93 - t92 + t131) + c2 * (t91 + k45 * (-t87 - t88));
+        let t134 = t105 - t104;
+        let t135 = t107 + s2 * t134;
+        let t136 = k42 * (t6 * t11) + k63 * t11;
+        let t137 = t22 + (t22 - t136);
+        let t138 = t16 - t13 * (t9 - t10);
+        let t139 = k36 * t14 + t21;
+        let t140 = t36 * t136 + k42 * (m3_4 * t38) + k64 * (t8 * t37);
+        let t141 = c3 * t138 - s3 * t139;
+        let t142 = k43 * t7;
+        let t143 = t142 + (t140 + t142);
+        let t144 = t129 + t142;
+        let t145 = t144 + (t136 + k64 * t8 - t140 + t144);
+        let t146 = t129 + t137;
+        let t147 = t129 + t146;
+        let t148 = k40 * t68;
+        let t149 = t143 + t145
+            - (t56 * t143 + k42 * (t58 * (t38 * (t136 + k65 * t8) + m3_4 * t42 + t148))
+                + t57 * t145);
+        let t150 = c2 * (t71 + (s3 * t138 + c3 * t139));
+        let t151 = s2 * (t141 - (t65 + t72)) + t150;
+        let t152 = t150 + s2 * (t128 + t141);
+        let t153 = k37 * t68;
+        let t154 = k39 * t67;
+        let t155 = t139 + k38 * t104;
+        let t156 = s2 * (c3 * m3_4 + t153 + k45 * t104)
+            + c2 * (s3 * m3_4 + t154 + (t24 + k43 * t101));
+        let t157 = t79 + t83;
+        let t158 = k35 * s4 + t96;
+        let t159 = k45 * t90;
+        let t160 = t82 + k43 * t93;
+        let t161 = k38 * t90;
+        let t162 = t158 + t161;
+        let t163 = s2 * (c3 * t157 + k39 * t87 + t159)
+            + c2 * (s3 * t157 + k37 * t85 + t160);
+        let t164 = -(s2 * t67) - c2 * t68;
+        let t165 = t3 * t9;
+        let t166 = k34 * (c4 * t5);
+        let t167 = k37 * t77;
+        let t168 = k40 * s5;
+        let t169 = t168 + (k66 * t165 + t168);
+        let t170 = k67 * t3 + t167;
+        let t171 = t167 + t170;
+        let t172 = t167 + t168;
+        let t173 = t172 + (k66 * (t3 - t165) + t172);
+        let t174 = t166 - (t81 + t82);
+        let t175 = k37 * t78 + k67 * (t3 * t11);
+        let t176 = t96 + k36 * (s4 * t5);
+        let t177 = t36 * t169 + k42 * (t38 * t174) + t37 * t171;
+        let t178 = c3 * t175 - s3 * t176;
+        let t179 = k43 * t78;
+        let t180 = t179 + (t177 + t179);
+        let t181 = t132 + t179;
+        let t182 = t181 + (t169 + t171 - t177 + t181);
+        let t183 = t132 + t173;
+        let t184 = t132 + t183;
+        let t185 = t180 + t182
+            - (t56 * t180 + k42 * (t58 * (t38 * (t169 - t171) + t42 * t174 + k38 * t89))
+                + t57 * t182);
+        let t186 = c2 * (t94 + (s3 * t175 + c3 * t176));
+        let t187 = s2 * (t178 - (t80 + t95)) + t186;
+        let t188 = t186 + s2 * (t131 + t178);
+        let t189 = t83 + t166;
+        let t190 = t161 + t176;
+        let t191 = s2 * (t159 + (c3 * t189 - s3 * t170))
+            + c2 * (t160 + (s3 * t189 + c3 * t170));
+        let t192 = t21 + k37 * c5;
+        let t193 = k40 * t67;
+        let t194 = t192 + k40 * t134;
+        let t195 = s2 * (t153 + t193 + k43 * t134)
+            + c2 * (t148 + t154 + (t24 + k45 * (-t102 - t101)));
+        let t196 = t64 + t126;
+        let t197 = t76 + t151;
+        let t198 = t100 + t187;
+        let t199 = t130 + t152;
+        let t200 = t133 + t188;
+        let t201 = t163 + t191;
+        let t202 = t126 - t64;
+        let t203 = t151 - t76;
+        let t204 = t187 - t100;
+        let t205 = t162 + t190;
+        let t206 = t64 - t126;
+        let t207 = t152 - t130;
+        let t208 = t188 - t133;
+        let t209 = t146 + t193;
+        let t210 = t183 + k38 * t86;
+        let t211 = t158 + t176;
+        let t212 = t76 - t151;
+        let t213 = t130 - t152;
+        let t214 = t191 - t163;
+        let t215 = t129 - t146;
+        let t216 = t190 - t162;
+        let t217 = t176 - t158;
+        let t218 = t100 - t187;
+        let t219 = t133 - t188;
+        let t220 = t163 - t191;
+        let t221 = t132 - t183;
+        let t222 = t162 - t190;
+        let t223 = t158 - t176;
         __DynamicsConfiguration {
             k1,
             s2,
@@ -576,99 +557,99 @@ impl Puma560 {
             k30,
             k31,
             k32,
-            k33,
-            m4_6,
             t3,
             k34,
-            m4_4,
-            t5,
             k35,
-            k38,
+            m4_4,
+            t7,
+            k36,
             k39,
+            k40,
             m3_4,
             m3_3,
-            m2_3,
             k41,
+            m2_3,
+            k44,
             m2_2,
-            t65,
+            t59,
             m1_2,
             m1_1,
-            t68,
+            t60,
             m1_3,
             m2_4,
             m1_4,
-            t86,
+            t78,
             m3_5,
             m2_5,
-            t107,
+            t99,
             m1_5,
+            m4_6,
             m2_6,
-            t116,
+            t108,
             m1_6,
-            t117,
-            t118,
-            t119,
+            t109,
+            t110,
+            t111,
             g5,
             g4,
             g3,
             g2,
             g1,
-            k50,
-            k51,
-            k52,
             k53,
             k54,
             k55,
             k56,
+            k57,
+            k58,
             p,
-            t128,
+            t120,
+            t124,
+            t127,
             t135,
-            t136,
-            t144,
-            t146,
-            t148,
-            t157,
-            t162,
-            t166,
-            t167,
-            t175,
+            t137,
+            t139,
+            t147,
+            t149,
+            t155,
+            t156,
+            t164,
+            t173,
             t184,
+            t185,
+            t192,
+            t194,
+            t195,
             t196,
+            t197,
+            t198,
+            k68,
+            t199,
             t200,
+            t201,
+            t202,
+            t203,
+            t204,
+            k69,
             t205,
+            k70,
+            t206,
             t207,
             t208,
             t209,
             t210,
             t211,
-            k66,
             t212,
             t213,
             t214,
-            k67,
             t215,
             t216,
             t217,
-            k68,
             t218,
             t219,
             t220,
             t221,
             t222,
             t223,
-            t224,
-            t225,
-            t226,
-            t227,
-            t228,
-            t229,
-            t230,
-            t231,
-            t232,
-            t233,
-            t234,
-            t235,
-            t236,
         }
     }
 }
@@ -713,125 +694,125 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     ) -> [[T; 6usize]; 6usize] {
         let x = self.__dynamics_configuration(q_);
         /// C11 = sum of D11k qd_k (6.44)
-        let cor1_1 = x.k1
-            * (qd_[1] * x.t128 + qd_[2] * x.t135 + qd_[3] * x.t162 + qd_[4] * x.t200);
-        let t1 = qd_[0] * x.t128;
-        let t2 = qd_[5] * x.t116;
+        let cor1_1 = qd_[1] * x.t120 + x.k1 * (qd_[2] * x.t124)
+            + x.k1 * (qd_[3] * x.t149) + x.k1 * (qd_[4] * x.t185);
+        let t1 = qd_[0] * x.t120;
+        let t2 = qd_[5] * x.t108;
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = x.k1 * t1 + qd_[1] * x.t65 + x.k1 * (qd_[2] * x.t209)
-            + x.k1 * (qd_[3] * x.t210) + x.k1 * (qd_[4] * x.t211) + x.k66 * t2;
-        let t3 = qd_[0] * x.t135;
-        let t4 = qd_[5] * x.t144;
+        let cor1_2 = t1 + qd_[1] * x.t59 + x.k1 * (qd_[2] * x.t196)
+            + x.k1 * (qd_[3] * x.t197) + x.k1 * (qd_[4] * x.t198) + x.k68 * t2;
+        let t3 = qd_[0] * x.t124;
+        let t4 = qd_[5] * x.t135;
         /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = x.k1 * (t3 + qd_[1] * x.t209) + qd_[2] * x.t136
-            + x.k1 * (qd_[3] * x.t212) + x.k1 * (qd_[4] * x.t213) + x.k66 * t4;
-        let t5 = qd_[0] * x.t162;
-        let t6 = qd_[5] * x.t175;
+        let cor1_3 = x.k1 * (t3 + qd_[1] * x.t196) + qd_[2] * x.t127
+            + x.k1 * (qd_[3] * x.t199) + x.k1 * (qd_[4] * x.t200) + x.k68 * t4;
+        let t5 = qd_[0] * x.t149;
+        let t6 = qd_[5] * x.t164;
         /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = x.k1 * (t5 + qd_[1] * x.t210 + qd_[2] * x.t212) + qd_[3] * x.t167
-            + x.k1 * (qd_[4] * x.t214) + x.k66 * t6;
-        let t7 = qd_[0] * x.t200;
-        let t8 = qd_[5] * x.t107;
+        let cor1_4 = x.k1 * (t5 + qd_[1] * x.t197 + qd_[2] * x.t199) + qd_[3] * x.t156
+            + x.k1 * (qd_[4] * x.t201) + x.k68 * t6;
+        let t7 = qd_[0] * x.t185;
+        let t8 = qd_[5] * x.t99;
         /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = x.k1 * (t7 + qd_[1] * x.t211 + qd_[2] * x.t213 + qd_[3] * x.t214)
-            + qd_[4] * x.t208 + x.k66 * t8;
+        let cor1_5 = x.k1 * (t7 + qd_[1] * x.t198 + qd_[2] * x.t200 + qd_[3] * x.t201)
+            + qd_[4] * x.t195 + x.k68 * t8;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = x.k66
-            * (qd_[1] * x.t116 + qd_[2] * x.t144 + qd_[3] * x.t175 + qd_[4] * x.t107);
+        let cor1_6 = x.k68
+            * (qd_[1] * x.t108 + qd_[2] * x.t135 + qd_[3] * x.t164 + qd_[4] * x.t99);
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = x.k67 * (t1 - qd_[2] * x.t215 - qd_[3] * x.t216 - qd_[4] * x.t217)
-            + x.k68 * t2;
-        let t9 = x.k2 * (qd_[2] * x.t68);
-        let t10 = x.k1 * (qd_[3] * x.t157);
-        let t11 = x.k1 * (qd_[4] * x.t196);
+        let cor2_1 = x.k1 * (qd_[2] * x.t202) - t1 + x.k1 * (qd_[3] * x.t203)
+            + x.k1 * (qd_[4] * x.t204) + x.k69 * t2;
+        let t9 = x.k2 * (qd_[2] * x.t60);
+        let t10 = x.k1 * (qd_[3] * x.t147);
+        let t11 = x.k1 * (qd_[4] * x.t184);
         /// C22 = sum of D22k qd_k (6.44)
         let cor2_2 = t9 + t10 + t11;
-        let t12 = qd_[1] * x.t68;
+        let t12 = qd_[1] * x.t60;
         /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd_[0] * x.t215) + x.k2 * t12)));
-        let t13 = qd_[1] * x.t157;
-        let t14 = qd_[5] * x.t5;
-        let t15 = x.k68 * t14;
+        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd_[0] * x.t202) + x.k2 * t12)));
+        let t13 = qd_[1] * x.t147;
+        let t14 = qd_[5] * x.t7;
+        let t15 = x.k69 * t14;
         /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = x.k1 * (qd_[0] * x.t216 + t13 + qd_[2] * x.t157) + qd_[3] * x.t166
-            + x.k1 * (qd_[4] * x.t218) + t15;
-        let t16 = qd_[1] * x.t196;
-        let t17 = qd_[5] * x.t86;
-        let t18 = x.k68 * t17;
+        let cor2_4 = x.k1 * (qd_[0] * x.t203 + t13 + qd_[2] * x.t147) + qd_[3] * x.t155
+            + x.k1 * (qd_[4] * x.t205) + t15;
+        let t16 = qd_[1] * x.t184;
+        let t17 = qd_[5] * x.t78;
+        let t18 = x.k69 * t17;
         /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = x.k1 * (qd_[0] * x.t217 + t16 + qd_[2] * x.t196 + qd_[3] * x.t218)
-            + qd_[4] * x.t207 + t18;
-        let t19 = qd_[0] * x.t116;
-        let t20 = qd_[3] * x.t5;
-        let t21 = qd_[4] * x.t86;
+        let cor2_5 = x.k1 * (qd_[0] * x.t204 + t16 + qd_[2] * x.t184 + qd_[3] * x.t205)
+            + qd_[4] * x.t194 + t18;
+        let t19 = qd_[0] * x.t108;
+        let t20 = qd_[3] * x.t7;
+        let t21 = qd_[4] * x.t78;
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = x.k68 * (t19 + t20 + t21);
+        let cor2_6 = x.k69 * (t19 + t20 + t21);
         /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = x.k67 * (t3 - qd_[1] * x.t219 - qd_[3] * x.t220 - qd_[4] * x.t221)
-            + x.k68 * t4;
+        let cor3_1 = x.k70 * (t3 - qd_[1] * x.t206 - qd_[3] * x.t207 - qd_[4] * x.t208)
+            + x.k69 * t4;
         /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = x.k1 * (qd_[0] * x.t219) + x.k21 * t12 + x.k1 * (qd_[3] * x.t222)
-            + x.k1 * (qd_[4] * x.t223);
+        let cor3_2 = x.k1 * (qd_[0] * x.t206) + x.k21 * t12 + x.k1 * (qd_[3] * x.t209)
+            + x.k1 * (qd_[4] * x.t210);
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = x.k1 * (qd_[3] * x.t146 + qd_[4] * x.t184);
-        let t22 = qd_[2] * x.t146;
+        let cor3_3 = x.k1 * (qd_[3] * x.t137 + qd_[4] * x.t173);
+        let t22 = qd_[2] * x.t137;
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = t15
-            + (x.k1 * (qd_[0] * x.t220 + qd_[1] * x.t222 + t22) + qd_[3] * x.t148
-                + x.k1 * (qd_[4] * x.t224));
-        let t23 = qd_[2] * x.t184;
+            + (x.k1 * (qd_[0] * x.t207 + qd_[1] * x.t209 + t22) + qd_[3] * x.t139
+                + x.k1 * (qd_[4] * x.t211));
+        let t23 = qd_[2] * x.t173;
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = t18
-            + (x.k1 * (qd_[0] * x.t221 + qd_[1] * x.t223 + t23 + qd_[3] * x.t224)
-                + qd_[4] * x.t205);
-        let t24 = qd_[0] * x.t144;
+            + (x.k1 * (qd_[0] * x.t208 + qd_[1] * x.t210 + t23 + qd_[3] * x.t211)
+                + qd_[4] * x.t192);
+        let t24 = qd_[0] * x.t135;
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = x.k68 * (t21 + (t20 + t24));
+        let cor3_6 = x.k69 * (t21 + (t20 + t24));
         /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = x.k67 * (t5 - qd_[1] * x.t225 - qd_[2] * x.t226 - qd_[4] * x.t227)
-            + x.k68 * t6;
-        let t25 = x.k66 * t14;
+        let cor4_1 = x.k70 * (t5 - qd_[1] * x.t212 - qd_[2] * x.t213 - qd_[4] * x.t214)
+            + x.k69 * t6;
+        let t25 = x.k68 * t14;
         /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = x.k1 * (qd_[0] * x.t225 - t13 + qd_[2] * x.t228 + qd_[4] * x.t229)
+        let cor4_2 = x.k1 * (qd_[0] * x.t212 - t13 + qd_[2] * x.t215 + qd_[4] * x.t216)
             + t25;
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = t25
-            + x.k1 * (qd_[0] * x.t226 + qd_[1] * x.t228 - t22 + qd_[4] * x.t230);
+            + x.k1 * (qd_[0] * x.t213 + qd_[1] * x.t215 - t22 + qd_[4] * x.t217);
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = x.k34 * (qd_[4] * x.t3);
         let t26 = qd_[3] * x.t3;
         let t27 = x.s5 * qd_[5];
         /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = x.k1 * (qd_[0] * x.t227 + qd_[1] * x.t229 + qd_[2] * x.t230)
-            + x.k34 * t26 + x.k66 * t27;
-        let t28 = qd_[0] * x.t175 - qd_[1] * x.t5 - qd_[2] * x.t5;
+        let cor4_5 = x.k1 * (qd_[0] * x.t214 + qd_[1] * x.t216 + qd_[2] * x.t217)
+            + x.k34 * t26 + x.k68 * t27;
+        let t28 = qd_[0] * x.t164 - qd_[1] * x.t7 - qd_[2] * x.t7;
         let t29 = x.s5 * qd_[4];
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = x.k68 * (t28 - t29);
+        let cor4_6 = x.k69 * (t28 - t29);
         /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = x.k67 * (t7 - qd_[1] * x.t231 - qd_[2] * x.t232 - qd_[3] * x.t233)
-            + x.k68 * t8;
-        let t30 = x.k66 * t17;
+        let cor5_1 = x.k70 * (t7 - qd_[1] * x.t218 - qd_[2] * x.t219 - qd_[3] * x.t220)
+            + x.k69 * t8;
+        let t30 = x.k68 * t17;
         /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = x.k1 * (qd_[0] * x.t231 - t16 + qd_[2] * x.t234 + qd_[3] * x.t235)
+        let cor5_2 = x.k1 * (qd_[0] * x.t218 - t16 + qd_[2] * x.t221 + qd_[3] * x.t222)
             + t30;
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = t30
-            + x.k1 * (qd_[0] * x.t232 + qd_[1] * x.t234 - t23 + qd_[3] * x.t236);
+            + x.k1 * (qd_[0] * x.t219 + qd_[1] * x.t221 - t23 + qd_[3] * x.t223);
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = x.k1 * (qd_[0] * x.t233 + qd_[1] * x.t235 + qd_[2] * x.t236)
-            + x.k35 * t26 + x.k68 * t27;
-        let t31 = qd_[0] * x.t107 - qd_[1] * x.t86 - qd_[2] * x.t86 + x.s5 * qd_[3];
+        let cor5_4 = x.k1 * (qd_[0] * x.t220 + qd_[1] * x.t222 + qd_[2] * x.t223)
+            + x.k36 * t26 + x.k69 * t27;
+        let t31 = qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78 + x.s5 * qd_[3];
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = x.k68 * t31;
+        let cor5_6 = x.k69 * t31;
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = x.k66 * (t19 - t20 - t21);
+        let cor6_2 = x.k68 * (t19 - t20 - t21);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = x.k66 * (t24 - t20 - t21);
+        let cor6_3 = x.k68 * (t24 - t20 - t21);
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = x.k66 * (t28 + t29);
+        let cor6_4 = x.k68 * (t28 + t29);
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = x.k66 * t31;
+        let cor6_5 = x.k68 * t31;
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -866,7 +847,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t8 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
         let t9 = x.k9 * t1 + x.k11 * qd_[1];
         let t10 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
-        let t11 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
+        let t11 = x.k53 * t4 + x.k44 * (t1 * t1 + t5);
         let t12 = x.c3 * t1 + x.s3 * t2;
         let t13 = x.c3 * t2 - x.s3 * t1;
         let t14 = x.c3 * t7 - x.s3 * t6;
@@ -908,7 +889,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + x.k7 * (x.c6 * t46 + x.s6 * t45);
         let t48 = x.k13 * (t35 * t37) + cqd6;
         /// centripetal and Coriolis torque 5
-        let cqd5 = x.k33 * t34 + x.k16 * t39
+        let cqd5 = x.k35 * t34 + x.k16 * t39
             + x.k17
                 * (x.c5 * (x.c4 * t28 - x.s4 * t29)
                     + x.s5 * (x.k2 * t15 + (x.k4 * t20 + x.k21 * t22)))
@@ -916,27 +897,27 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t49 = x.c5 * t41 + x.s5 * t42;
         let t50 = x.s5 * t41 - x.c5 * t42;
         let t51 = x.k6 * t33 + x.k20 * (t31 * t32) + (x.c5 * t47 - x.s5 * t48);
-        let t52 = x.k55 * (t30 * t32) - cqd5;
+        let t52 = x.k57 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
         let cqd4 = x.k20 * t18 + x.k19 * (t30 * t31) + (x.s5 * t47 + x.c5 * t48);
         let t53 = x.c4 * t49 + x.s4 * t43;
         let t54 = x.s4 * t49 - x.c4 * t43;
-        let t55 = x.k52 * t21 + x.k25 * t20 + x.k14 * t53;
-        let t56 = x.k22 * t20 + x.k53 * t22 + x.k14 * t50;
+        let t55 = x.k54 * t21 + x.k25 * t20 + x.k14 * t53;
+        let t56 = x.k22 * t20 + x.k55 * t22 + x.k14 * t50;
         let t57 = x.k27 * t17 + x.k24 * t18 + (t13 * t27 - t16 * t26) + x.k25 * t11
-            + (x.c4 * t51 - x.s4 * t52) + x.k39 * t54;
-        let t58 = x.k24 * t17 + (t16 * t25 - t12 * t27) + x.k52 * t11 + cqd4
-            + x.k38 * t54;
+            + (x.c4 * t51 - x.s4 * t52) + x.k40 * t54;
+        let t58 = x.k24 * t17 + (t16 * t25 - t12 * t27) + x.k54 * t11 + cqd4
+            + x.k39 * t54;
         /// centripetal and Coriolis torque 3
-        let cqd3 = x.k12 * t18 + (t12 * t26 - t13 * t25) + (x.k23 * t15 + x.k54 * t14)
-            - (x.s4 * t51 + x.c4 * t52) + (x.k38 * t50 + x.k39 * t53);
+        let cqd3 = x.k12 * t18 + (t12 * t26 - t13 * t25) + (x.k23 * t15 + x.k56 * t14)
+            - (x.s4 * t51 + x.c4 * t52) + (x.k39 * t50 + x.k40 * t53);
         let t59 = x.s3 * t55 + x.c3 * t56;
         /// centripetal and Coriolis torque 2
         let cqd2 = x.k29 * t3 + x.k10 * t4 + (t1 * t9 - t2 * t8) + cqd3 + x.k2 * t59;
         /// centripetal and Coriolis torque 1
         let cqd1 = x.s2
             * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd_[1] * t9)
-                + (x.c3 * t57 - x.s3 * t58) + x.k41 * t59)
+                + (x.c3 * t57 - x.s3 * t58) + x.k44 * t59)
             + x.c2
                 * (x.k9 * t3 + (qd_[1] * t8 - t1 * t10) + (x.s3 * t57 + x.c3 * t58)
                     + (x.k3 * (x.c3 * t55 - x.s3 * t56)
@@ -982,7 +963,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
         let t7 = x.k9 * t1 + x.k11 * qd_[1];
         let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
-        let t9 = x.k51 * t4 + x.k41 * (t1 * t1 + t5);
+        let t9 = x.k53 * t4 + x.k44 * (t1 * t1 + t5);
         let t10 = x.c3 * t1 + x.s3 * t2;
         let t11 = x.c3 * t2 - x.s3 * t1;
         let t12 = qd_[1] + qd_[2];
@@ -1022,11 +1003,11 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t44 = x.s5 * t36 - x.c5 * t37;
         let t45 = x.c4 * t43 + x.s4 * t38;
         let t46 = x.s4 * t43 - x.c4 * t38;
-        let t47 = x.k52 * t17 + x.k25 * t16 + x.k14 * t45;
-        let t48 = x.k22 * t16 + x.k53 * t18 + x.k14 * t44;
+        let t47 = x.k54 * t17 + x.k25 * t16 + x.k14 * t45;
+        let t48 = x.k22 * t16 + x.k55 * t18 + x.k14 * t44;
         let t49 = x.s3 * t47 + x.c3 * t48;
-        let t50 = x.t117 + x.k21 * (t5 + qd_[1] * qd_[1]);
-        let t51 = x.t118 + x.k2 * (t1 * t2);
+        let t50 = x.t109 + x.k21 * (t5 + qd_[1] * qd_[1]);
+        let t51 = x.t110 + x.k2 * (t1 * t2);
         let t52 = x.c3 * t50 + x.s3 * t51;
         let t53 = x.c3 * t51 - x.s3 * t50;
         let t54 = x.k5 * t17 + x.k2 * t16 + t52;
@@ -1034,29 +1015,29 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             + (x.k15 * t33 + x.k18 * t35 + x.k17 * (-(x.c4 * t24) - x.s4 * t54));
         /// centripetal, Coriolis and gravity torque 5
         let h5 = x.k32 * (x.s6 * t41 - x.c6 * t40)
-            + (x.k33 * t29 + x.k16 * t34
+            + (x.k35 * t29 + x.k16 * t34
                 + x.k17
                     * (x.c5 * (x.c4 * t54 - x.s4 * t24)
                         + x.s5 * (x.k4 * t16 + x.k21 * t18 + t53)));
         let t56 = x.k6 * t28 + x.k20 * (t26 * t27) + (x.c5 * t55 - x.s5 * t42);
-        let t57 = x.k55 * (t25 * t27) - h5;
+        let t57 = x.k57 * (t25 * t27) - h5;
         /// centripetal, Coriolis and gravity torque 4
         let h4 = x.k20 * t14 + x.k19 * (t25 * t26) + (x.c5 * t42 + x.s5 * t55);
-        let t58 = x.k39 * t46
+        let t58 = x.k40 * t46
             + (x.k27 * t13 + x.k24 * t14 + (t11 * t23 - t12 * t22) + x.k25 * t9
                 + (x.c4 * t56 - x.s4 * t57));
-        let t59 = x.k38 * t46
-            + (x.k24 * t13 + (t12 * t21 - t10 * t23) + x.k52 * t9 + h4);
+        let t59 = x.k39 * t46
+            + (x.k24 * t13 + (t12 * t21 - t10 * t23) + x.k54 * t9 + h4);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = x.k38 * t44 + x.k39 * t45
-            + (x.k12 * t14 + (t10 * t22 - t11 * t21) + (x.k22 * t53 + x.k53 * t52)
+        let h3 = x.k39 * t44 + x.k40 * t45
+            + (x.k12 * t14 + (t10 * t22 - t11 * t21) + (x.k22 * t53 + x.k55 * t52)
                 - (x.s4 * t56 + x.c4 * t57));
         /// centripetal, Coriolis and gravity torque 2
         let h2 = x.k2 * t49
-            + (x.t119 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
+            + (x.t111 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = x.s2
-            * (x.k41 * t49
+            * (x.k44 * t49
                 + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd_[1] * t7)
                     + (x.c3 * t58 - x.s3 * t59)))
             + x.c2
@@ -1113,9 +1094,9 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t30 = (-(x.c6 * t24) - x.s6 * t22) * t28;
         let t31 = t3 + x.s2 * qdd_[0];
         let t32 = x.c2 * qdd_[0] - t4;
-        let t33 = x.k41 * (t1 * t1 + t5) + x.k2 * (t4 - t32);
-        let t34 = x.t117 + (x.k21 * (t5 + qd_[1] * qd_[1]) + x.k3 * (t4 + t32));
-        let t35 = x.t118 + (x.k2 * (qdd_[1] + t1 * t2) + x.k3 * (t3 - t31));
+        let t33 = x.k44 * (t1 * t1 + t5) + x.k2 * (t4 - t32);
+        let t34 = x.t109 + (x.k21 * (t5 + qd_[1] * qd_[1]) + x.k3 * (t4 + t32));
+        let t35 = x.t110 + (x.k2 * (qdd_[1] + t1 * t2) + x.k3 * (t3 - t31));
         let t36 = x.c3 * t34 + x.s3 * t35;
         let t37 = x.c3 * t35 - x.s3 * t34;
         let t38 = qd_[2] * t10 + (x.c3 * t31 + x.s3 * t32);
@@ -1147,31 +1128,31 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t55 = x.s5 * t27 + x.c5 * t51;
         let t56 = x.s5 * t51 - x.c5 * t27;
         let t57 = x.k20 * (t20 * t21) + x.k6 * t47 + (x.c5 * t53 - x.s5 * t54);
-        let t58 = x.k55 * (t19 * t21) - tau5;
+        let t58 = x.k57 * (t19 * t21) - tau5;
         /// T4 (6.46)
         let tau4 = x.k19 * (t19 * t20) + x.k20 * t48 + (x.s5 * t53 + x.c5 * t54);
         let t59 = x.c4 * t55 + x.s4 * t52;
         let t60 = x.s4 * t55 - x.c4 * t52;
-        let t61 = x.k52 * t14 + x.k25 * t41 + x.k14 * t59;
-        let t62 = x.k53 * t15 + x.k22 * t42 + x.k14 * t56;
+        let t61 = x.k54 * t14 + x.k25 * t41 + x.k14 * t59;
+        let t62 = x.k55 * t15 + x.k22 * t42 + x.k14 * t56;
         let t63 = t10 * t18 - t11 * t17 + (x.k27 * t38 + x.k24 * t39) + x.k25 * t33
-            + (x.c4 * t57 - x.s4 * t58) + x.k39 * t60;
-        let t64 = t11 * t16 - t9 * t18 + (x.k24 * t38 + x.k12 * t40) + x.k52 * t33 + tau4
-            + x.k38 * t60;
+            + (x.c4 * t57 - x.s4 * t58) + x.k40 * t60;
+        let t64 = t11 * t16 - t9 * t18 + (x.k24 * t38 + x.k12 * t40) + x.k54 * t33 + tau4
+            + x.k39 * t60;
         /// T3 (6.46)
         let tau3 = t9 * t17 - t10 * t16 + (x.k12 * t39 + x.k26 * t40)
-            + (x.k22 * t37 + x.k53 * t36) - (x.s4 * t57 + x.c4 * t58)
-            + (x.k38 * t56 + x.k39 * t59);
+            + (x.k22 * t37 + x.k55 * t36) - (x.s4 * t57 + x.c4 * t58)
+            + (x.k39 * t56 + x.k40 * t59);
         let t65 = x.s3 * t61 + x.c3 * t62;
         /// T2 (6.46)
-        let tau2 = x.t119
+        let tau2 = x.t111
             + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd_[1])) + tau3
             + x.k2 * t65;
         /// T1 (6.46)
         let tau1 = x.k31 * qdd_[0]
             + (x.s2
                 * (t2 * t8 - qd_[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd_[1])
-                    + (x.c3 * t63 - x.s3 * t64) + x.k41 * t65)
+                    + (x.c3 * t63 - x.s3 * t64) + x.k44 * t65)
                 + x.c2
                     * (qd_[1] * t6 - t1 * t8 + (x.k9 * t31 + x.k11 * qdd_[1])
                         + (x.s3 * t63 + x.c3 * t64)
@@ -1206,9 +1187,9 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t10 = x.c5 * t8 + x.s5 * t9;
         let t11 = qd_[4] - (-(x.c4 * t7) - x.s4 * t4);
         let t12 = qd_[5] + (x.c5 * t9 - x.s5 * t8);
-        let t13 = x.k2 * qd_[1] + x.k41 * t1;
+        let t13 = x.k2 * qd_[1] + x.k44 * t1;
         let t14 = x.k3 * t5 + x.s3 * t13;
-        let t15 = x.c3 * t13 + x.k41 * t3;
+        let t15 = x.c3 * t13 + x.k44 * t3;
         let t16 = t14 + x.k21 * t7;
         let t17 = x.k21 * t2 + (x.k2 * t4 + x.k5 * t6);
         x.k1
@@ -1216,13 +1197,13 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                 + (t1 * (x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1])
                     + t2 * (x.k9 * t1 + x.k11 * qd_[1])
                     + qd_[1] * (x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1]))
-                + x.k50
-                    * (x.k53 * (t7 * t14) + x.k22 * (t7 * t15)
-                        + x.k21 * (t2 * (x.k25 * t4 + x.k52 * t6)))
+                + x.k41
+                    * (x.k55 * (t7 * t14) + x.k22 * (t7 * t15)
+                        + x.k21 * (t2 * (x.k25 * t4 + x.k54 * t6)))
                 + (t4 * (x.k27 * t4 + x.k24 * t6) + t6 * (x.k24 * t4 + x.k12 * t7)
                     + t7 * (x.k12 * t6 + x.k26 * t7))
                 + (x.k6 * (t8 * t8) + x.k20 * (t9 * t9))
-                + x.k56
+                + x.k58
                     * (t11
                         * (x.c5 * (x.c4 * t16 - x.s4 * t17) + x.s5 * (t15 + x.k4 * t7))
                         + t10 * (-(x.c4 * t17) - x.s4 * t16))

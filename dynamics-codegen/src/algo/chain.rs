@@ -177,7 +177,8 @@ impl<S: Scalar> ChainJoint<S> {
         let p = self.offset();
         let m = b.mass;
         let hr = self.to_parent(b.h);
-        let ir = Mat3::symmetric(b.inertia).congruence(&self.rotation());
+        let ir = rotate_inertia(b.inertia, self.sin_theta, self.cos_theta, 0, 1);
+        let ir = rotate_inertia(ir, self.sin_alpha, self.cos_alpha, 1, 2);
         let mp = p.scale(m);
         // I' = R I Rᵀ + m(|p|²1 − p pᵀ) + 2(p·h')1 − p h'ᵀ − h' pᵀ, with h' = R h
         let (px, py, pz) = (p.x, p.y, p.z);
@@ -320,5 +321,66 @@ impl<S: Scalar> Chain<S> {
             joints[j - 1].body = joints[j - 1].body.add(&carried);
         }
         Chain { joints }
+    }
+}
+
+/// `R I Rᵀ` for the rotation by the angle of sine `s` and cosine `c` in the plane of axes `u`
+/// and `v` (x, y for Rotz; y, z for Rotx) of the symmetric `I = [xx, yy, zz, xy, xz, yz]`:
+/// in that plane `I_uu' = c² I_uu − 2cs I_uv + s² I_vv`, `I_vv' = s² I_uu + 2cs I_uv + c² I_vv
+/// = I_uu + I_vv − I_uu'`,
+/// `I_uv' = cs (I_uu − I_vv) + (c² − s²) I_uv`; the products with the third axis w turn as a
+/// vector.
+fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6] {
+    // Index of the product of two axes in [xx, yy, zz, xy, xz, yz].
+    let product = |a: usize, b: usize| match (a.min(b), a.max(b)) {
+        (0, 1) => 3,
+        (0, 2) => 4,
+        _ => 5,
+    };
+    let w = 3 - u - v;
+    let (uu, vv, uv) = (i[u], i[v], i[product(u, v)]);
+    let (uw, vw) = (i[product(u, w)], i[product(v, w)]);
+    let (cc, ss, cs) = (c * c, s * s, c * s);
+    let uu2 = cc * uu - (cs * uv + cs * uv) + ss * vv;
+    // With a constant angle (a twist α, or θ of a prismatic joint) the direct form folds to
+    // little or nothing; with a joint angle the trace `I_uu + I_vv − I_uu'` is cheaper.
+    let vv2 = if s.is_constant() && c.is_constant() {
+        ss * uu + (cs * uv + cs * uv) + cc * vv
+    } else {
+        uu + vv - uu2
+    };
+    let uv2 = cs * (uu - vv) + (cc - ss) * uv;
+    let mut out = i;
+    out[u] = uu2;
+    out[v] = vv2;
+    out[product(u, v)] = uv2;
+    out[product(u, w)] = c * uw - s * vw;
+    out[product(v, w)] = s * uw + c * vw;
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{rotate_inertia, Mat3};
+
+    /// The plane-rotation formulas agree with `R I Rᵀ` of the full matrices, for Rotz then
+    /// Rotx (the order of `ChainJoint::rotation`).
+    #[test]
+    fn rotating_an_inertia_tensor() {
+        let i = [0.7, 0.5, 0.4, -0.05, 0.08, 0.03];
+        for (theta, alpha) in [
+            (0.3f64, -1.2f64),
+            (2.5, 0.0),
+            (-1.1, std::f64::consts::FRAC_PI_2),
+        ] {
+            let (st, ct) = theta.sin_cos();
+            let (sa, ca) = alpha.sin_cos();
+            let by_planes = rotate_inertia(rotate_inertia(i, st, ct, 0, 1), sa, ca, 1, 2);
+            let r = Mat3::rot_x(sa, ca).mul(&Mat3::rot_z(st, ct));
+            let full = Mat3::symmetric(i).congruence(&r);
+            for (a, b) in by_planes.iter().zip(full) {
+                assert!((a - b).abs() < 1e-15, "{by_planes:?} vs {full:?}");
+            }
+        }
     }
 }

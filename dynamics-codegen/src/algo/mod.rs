@@ -34,6 +34,10 @@ pub trait Scalar:
         self.constant(Number::ZERO)
     }
 
+    /// Whether `self` is a known constant (always, for a number): the algorithms pick forms
+    /// that fold away for constants.
+    fn is_constant(self) -> bool;
+
     /// One, in the context of `self`.
     #[must_use]
     fn one(self) -> Self {
@@ -44,5 +48,9 @@ pub trait Scalar:
 impl Scalar for f64 {
     fn constant(self, c: Number) -> f64 {
         c.to_f64()
+    }
+
+    fn is_constant(self) -> bool {
+        true
     }
 }

@@ -73,4 +73,8 @@ impl Scalar for Expr<'_> {
     fn constant(self, c: Number) -> Self {
         self.with(|g| g.num(c))
     }
+
+    fn is_constant(self) -> bool {
+        self.graph.borrow().constant(self.id).is_some()
+    }
 }
