@@ -231,10 +231,12 @@ impl Puma560 {
         let k68: T = T::from_f64(-0.00002);
         let k69: T = T::from_f64(0.00002);
         let k70: T = T::from_f64(-0.5);
-        let (s2, c2) = T::sin_cos(q_[1]);
-        let (s3, c3) = T::sin_cos(q_[2]);
-        let (s4, c4) = T::sin_cos(q_[3]);
-        let (s5, c5) = T::sin_cos(q_[4]);
+        let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
+            q_[1],
+            q_[2],
+            q_[3],
+            q_[4],
+        ]);
         let (s6, c6) = T::sin_cos(q_[5]);
         let t1 = c5 * c5;
         let t2 = s5 * s5;

@@ -10,7 +10,9 @@
 //! Within a function, only the nodes the outputs need are emitted, in the arena's order
 //! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
 //! (`let p_m2: T = param(self.m2);`) and the nodes that depend on them alone; then each needed
-//! joint's sine and cosine, computed once (`let (s1, c1) = T::sin_cos(q_[0]);`); then the rest.
+//! joint's sine and cosine, computed once, four joints side by side
+//! (`let ([s1, s2, s3, s4], [c1, c2, c3, c4]) = T::sin_cos_4([q_[0], q_[1], q_[2], q_[3]]);`);
+//! then the rest.
 //! A node used once is written inline in its user; a node used more often gets a `let tN`,
 //! numbered in order of appearance; each output element gets a name saying what it is
 //! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, and
@@ -649,18 +651,21 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// `let (s1, c1) = T::sin_cos(q_[0]);` for each joint whose sine or cosine is needed.
+    /// The sines and cosines of the joints that need them, four joints a call computed side by
+    /// side, `let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([q_[1], …]);` (`_` for
+    /// an unused one; a last group of two or three is padded with `T::ONE`), a last single joint
+    /// on its own, `let (s6, c6) = T::sin_cos(q_[5]);`.
     fn sines_and_cosines(&mut self, statements: &mut Vec<TokenStream>) {
+        let mut joints = Vec::new();
         for i in 0..self.eq.dof {
             let i16 = u16::try_from(i).unwrap_or(u16::MAX);
-            let find = |v: Var| {
+            let needed = |v: Var| {
                 self.graph
                     .nodes()
-                    .find(|(id, node)| *node == Node::Var(v) && self.needed[id.index()])
-                    .map(|(id, _)| id)
+                    .any(|(id, node)| node == Node::Var(v) && self.needed[id.index()])
             };
-            let (s, c) = (find(Var::SinQ(i16)), find(Var::CosQ(i16)));
-            if s.is_none() && c.is_none() {
+            let (s, c) = (needed(Var::SinQ(i16)), needed(Var::CosQ(i16)));
+            if !s && !c {
                 continue;
             }
             let q = local("q_");
@@ -672,22 +677,36 @@ impl<'a> Emitter<'a> {
                 }
                 None => quote!(#q[#index]),
             };
-            let sn = local(&format!("s{}", i + 1));
-            let cn = local(&format!("c{}", i + 1));
-            statements.push(match (s, c) {
-                (Some(_), Some(_)) => {
-                    self.ops.trig += 2;
-                    quote!(let (#sn, #cn) = T::sin_cos(#angle);)
+            let name = |used: bool, letter: char| {
+                if used {
+                    let n = local(&format!("{letter}{}", i + 1));
+                    quote!(#n)
+                } else {
+                    quote!(_)
                 }
-                (Some(_), None) => {
-                    self.ops.trig += 1;
-                    quote!(let #sn = T::sin(#angle);)
-                }
-                _ => {
-                    self.ops.trig += 1;
-                    quote!(let #cn = T::cos(#angle);)
-                }
-            });
+            };
+            joints.push((name(s, 's'), name(c, 'c'), angle, s, c));
+        }
+        for group in joints.chunks(4) {
+            if let [(sn, cn, angle, s, c)] = group {
+                statements.push(match (s, c) {
+                    (true, true) => quote!(let (#sn, #cn) = T::sin_cos(#angle);),
+                    (true, false) => quote!(let #sn = T::sin(#angle);),
+                    _ => quote!(let #cn = T::cos(#angle);),
+                });
+                continue;
+            }
+            let pad = 4 - group.len();
+            let blank = std::iter::repeat(quote!(_)).take(pad);
+            let sines = group.iter().map(|j| j.0.clone()).chain(blank.clone());
+            let cosines = group.iter().map(|j| j.1.clone()).chain(blank);
+            let angles = group
+                .iter()
+                .map(|j| j.2.clone())
+                .chain(std::iter::repeat(quote!(T::ONE)).take(pad));
+            statements.push(quote!(
+                let ([#(#sines),*], [#(#cosines),*]) = T::sin_cos_4([#(#angles),*]);
+            ));
         }
     }
 }

@@ -35,10 +35,14 @@ pub trait Real:
     fn sin(self) -> Self;
     /// Cosine.
     fn cos(self) -> Self;
+    /// The sines and the cosines of four arguments, computed side by side (in vector
+    /// registers where the build enables AVX2); each pair equals [`Real::sin_cos`] of its
+    /// argument, bit for bit.
+    fn sin_cos_4(x: [Self; 4]) -> ([Self; 4], [Self; 4]);
 }
 
 macro_rules! impl_real {
-    ($t:ty, $sin_cos:path) => {
+    ($t:ty, $sin_cos:path, $sin_cos_4:path) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -63,12 +67,16 @@ macro_rules! impl_real {
             fn cos(self) -> Self {
                 $sin_cos(self).1
             }
+            #[inline(always)]
+            fn sin_cos_4(x: [Self; 4]) -> ([Self; 4], [Self; 4]) {
+                $sin_cos_4(x)
+            }
         }
     };
 }
 
-impl_real!(f64, crate::trig::sin_cos_f64);
-impl_real!(f32, crate::trig::sin_cos_f32);
+impl_real!(f64, crate::trig::sin_cos_f64, crate::trig::sin_cos_4_f64);
+impl_real!(f32, crate::trig::sin_cos_f32, crate::trig::sin_cos_4_f32);
 
 #[cfg(test)]
 mod tests {

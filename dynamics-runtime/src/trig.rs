@@ -239,6 +239,123 @@ fn quadrant_f32(k: u32, sin_r: f32, cos_r: f32) -> (f32, f32) {
     )
 }
 
+/// Sines and cosines of four `f64` arguments, each pair equal to [`sin_cos_f64`] of its
+/// argument, bit for bit. With AVX2 and all four in the fast range, the four lanes are
+/// computed at once in vector registers, the same operations in the same order as
+/// [`sin_cos_f64`]; otherwise one by one.
+#[inline(always)]
+pub(crate) fn sin_cos_4_f64(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    if x.iter().all(|v| (TINY_F64..=BOUND_F64).contains(&v.abs())) {
+        #[allow(unsafe_code)]
+        // SAFETY: this line is compiled only when the build enables AVX2 (the `cfg` above),
+        // which is the one requirement of `lanes::fast_4`.
+        return unsafe { lanes::fast_4(x) };
+    }
+    let (s0, c0) = sin_cos_f64(x[0]);
+    let (s1, c1) = sin_cos_f64(x[1]);
+    let (s2, c2) = sin_cos_f64(x[2]);
+    let (s3, c3) = sin_cos_f64(x[3]);
+    ([s0, s1, s2, s3], [c0, c1, c2, c3])
+}
+
+/// Sines and cosines of four `f32` arguments, one by one.
+#[inline(always)]
+pub(crate) fn sin_cos_4_f32(x: [f32; 4]) -> ([f32; 4], [f32; 4]) {
+    let (s0, c0) = sin_cos_f32(x[0]);
+    let (s1, c1) = sin_cos_f32(x[1]);
+    let (s2, c2) = sin_cos_f32(x[2]);
+    let (s3, c3) = sin_cos_f32(x[3]);
+    ([s0, s1, s2, s3], [c0, c1, c2, c3])
+}
+
+/// [`fast_f64`] on four lanes of AVX2 registers. The functions are `unsafe` only because they
+/// are `#[target_feature]` functions (as the crate's minimum Rust version requires); their
+/// bodies are plain arithmetic on registers.
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+#[allow(unsafe_code)]
+mod lanes {
+    use super::{
+        C1_F64, C2_F64, C3_F64, C4_F64, C5_F64, C6_F64, P1_F64, P2_F64, P3_F64, S1_F64, S2_F64,
+        S3_F64, S4_F64, S5_F64, S6_F64, SHIFT_F64,
+    };
+    use core::arch::x86_64::{
+        __m256d, _mm256_add_epi64, _mm256_add_pd, _mm256_and_si256, _mm256_blendv_pd,
+        _mm256_castpd256_pd128, _mm256_castpd_si256, _mm256_castsi256_pd, _mm256_cmpeq_epi64,
+        _mm256_extractf128_pd, _mm256_mul_pd, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set_pd,
+        _mm256_slli_epi64, _mm256_sub_pd, _mm256_xor_pd, _mm_cvtsd_f64, _mm_unpackhi_pd,
+    };
+
+    /// The four lanes of `v`.
+    #[target_feature(enable = "avx2")]
+    unsafe fn lanes(v: __m256d) -> [f64; 4] {
+        let lo = _mm256_castpd256_pd128(v);
+        let hi = _mm256_extractf128_pd::<1>(v);
+        [
+            _mm_cvtsd_f64(lo),
+            _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo)),
+            _mm_cvtsd_f64(hi),
+            _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi)),
+        ]
+    }
+
+    /// `(sin x, cos x)` of four arguments in the fast range: [`super::fast_f64`] lane by lane,
+    /// the quadrant chosen by a swap (odd `k`) and two sign flips instead of the table.
+    #[target_feature(enable = "avx2")]
+    pub(super) unsafe fn fast_4(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
+        let k = _mm256_set1_pd;
+        let (add, sub, mul) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd);
+        let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
+        let shifted = add(mul(x, k(core::f64::consts::FRAC_2_PI)), k(SHIFT_F64));
+        let n = sub(shifted, k(SHIFT_F64));
+
+        let a = sub(x, mul(n, k(P1_F64)));
+        let b = mul(n, k(P2_F64));
+        let c = mul(n, k(P3_F64));
+        let s = sub(a, b);
+        let e = sub(sub(a, s), b);
+        let r = sub(s, c);
+        let r_lo = add(sub(sub(s, r), c), e);
+
+        let z = mul(r, r);
+        let z2 = mul(z, z);
+        let z4 = mul(z2, z2);
+        let pair = |p: f64, q: f64| add(k(p), mul(z, k(q)));
+        let sin_poly = add(
+            add(pair(S1_F64, S2_F64), mul(z2, pair(S3_F64, S4_F64))),
+            mul(z4, pair(S5_F64, S6_F64)),
+        );
+        let cos_poly = add(
+            add(pair(C1_F64, C2_F64), mul(z2, pair(C3_F64, C4_F64))),
+            mul(z4, pair(C5_F64, C6_F64)),
+        );
+        let half_z = mul(k(0.5), z);
+        let w = sub(k(1.0), half_z);
+        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
+        let cos_r = add(
+            w,
+            add(
+                sub(sub(k(1.0), w), half_z),
+                sub(mul(z2, cos_poly), mul(r, r_lo)),
+            ),
+        );
+
+        // k mod 4 is in the low bits of `shifted`.
+        let bits = _mm256_castpd_si256(shifted);
+        let one = _mm256_set1_epi64x(1);
+        let two = _mm256_set1_epi64x(2);
+        let odd = _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(bits, one), one));
+        let sin_k = _mm256_blendv_pd(sin_r, cos_r, odd);
+        let cos_k = _mm256_blendv_pd(cos_r, sin_r, odd);
+        let sin_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(bits, two));
+        let cos_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(_mm256_add_epi64(bits, one), two));
+        (
+            lanes(_mm256_xor_pd(sin_k, _mm256_castsi256_pd(sin_sign))),
+            lanes(_mm256_xor_pd(cos_k, _mm256_castsi256_pd(cos_sign))),
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

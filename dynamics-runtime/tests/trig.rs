@@ -485,3 +485,52 @@ fn f32_exhaustive_fast_range() {
     }
     worst.check("f32, every |x| <= 2^12", MAX_ULP_F32);
 }
+
+/// Four at once equals one at a time, bit for bit, in and out of the fast range (with AVX2
+/// builds, `RUSTFLAGS="-C target-cpu=native"`, this checks the vector path; `.ci/run` runs it
+/// both ways).
+#[test]
+fn four_at_once_equal_one_at_a_time() {
+    use dynamics_runtime::Real;
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    #[allow(clippy::cast_precision_loss)]
+    for round in 0..100_000 {
+        let mut x = [0.0f64; 4];
+        for v in &mut x {
+            let u = (next() >> 11) as f64 / (1u64 << 53) as f64;
+            *v = match round % 4 {
+                0 => (u - 0.5) * 20.0,
+                1 => (u - 0.5) * 2.0 * 65_536.0,
+                2 => (u - 0.5) * 1e-6,
+                _ => (u - 0.5) * 1e6,
+            };
+        }
+        let (s4, c4) = f64::sin_cos_4(x);
+        for i in 0..4 {
+            let (s, c) = Real::sin_cos(x[i]);
+            assert_eq!(
+                (s4[i].to_bits(), c4[i].to_bits()),
+                (s.to_bits(), c.to_bits()),
+                "{}",
+                x[i]
+            );
+        }
+        let y = x.map(|v| v as f32);
+        let (s4, c4) = f32::sin_cos_4(y);
+        for i in 0..4 {
+            let (s, c) = Real::sin_cos(y[i]);
+            assert_eq!(
+                (s4[i].to_bits(), c4[i].to_bits()),
+                (s.to_bits(), c.to_bits()),
+                "{}",
+                y[i]
+            );
+        }
+    }
+}
