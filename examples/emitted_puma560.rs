@@ -241,7 +241,7 @@ impl Puma560 {
         let t1 = c5 * c5;
         let t2 = s5 * s5;
         let t3 = s5 * c5;
-        let t4 = k15 * t1 + k7 * t2;
+        let t4 = k7.mul_add(t2, k15 * t1);
         let t5 = t1 - t2;
         let t6 = k6 + t4;
         /// D44 (6.43) + actuator inertia
@@ -251,7 +251,7 @@ impl Puma560 {
         let t9 = c4 * c4;
         let t10 = s4 * s4;
         let t11 = s4 * c4;
-        let t12 = t6 * t9 + k18 * t10;
+        let t12 = k18.mul_add(t10, t6 * t9);
         let t13 = k35 + t6;
         let t14 = c4 * t3;
         let t15 = k34 * t14;
@@ -265,13 +265,13 @@ impl Puma560 {
         let t23 = k37 * t8 - t11 * t13;
         let t24 = k38 * t8;
         /// D34 = D43 (6.43)
-        let m3_4 = k36 * (s4 * t3) + k40 * t8;
-        let t25 = k22 + k17 * t7;
-        let t26 = k25 + k14 * c5;
+        let m3_4 = k40.mul_add(t8, k36 * (s4 * t3));
+        let t25 = k17.mul_add(t7, k22);
+        let t26 = k14.mul_add(c5, k25);
         let t27 = k27 + (t17 + (t12 + t17));
         /// D33 (6.43) + actuator inertia
         let m3_3 = k26 + (t20 + (k18 + t6 - t12 + t20));
-        let t28 = k24 + (t15 - (k39 * c5 + t21));
+        let t28 = k24 + (t15 - k39.mul_add(c5, t21));
         let t29 = k12 + m3_4;
         let t30 = c3 * t25;
         let t31 = s3 * t26;
@@ -283,7 +283,7 @@ impl Puma560 {
         let t37 = s3 * s3;
         let t38 = s3 * c3;
         let t39 = t28 * t38;
-        let t40 = t27 * t36 + k42 * t39 + t19 * t37;
+        let t40 = t19.mul_add(t37, k42.mul_add(t39, t27 * t36));
         let t41 = t27 - t19;
         let t42 = t36 - t37;
         let t43 = t28 * t42;
@@ -300,24 +300,25 @@ impl Puma560 {
         let t52 = k30 + (t49 + (t40 + t49));
         /// D22 (6.43) + actuator inertia
         let m2_2 = k28 + (t48 + m2_3);
-        let t53 = k9 + (t38 * t41 + t43 + k21 * t35);
-        let t54 = k29 + (t44 - (t24 + k3 * t32));
-        let t55 = k11 + (t47 + k44 * t35);
+        let t53 = k9 + k21.mul_add(t35, t38.mul_add(t41, t43));
+        let t54 = k29 + (t44 - k3.mul_add(t32, t24));
+        let t55 = k11 + k44.mul_add(t35, t47);
         let t56 = c2 * c2;
         let t57 = s2 * s2;
         let t58 = s2 * c2;
         let t59 = c2 * t54 - s2 * t55;
         /// D12 = D21 (6.43)
-        let m1_2 = s2 * t54 + c2 * t55;
+        let m1_2 = c2.mul_add(t55, s2 * t54);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k31 + (t51 + t52 - (t52 * t56 + k42 * (t53 * t58) + t51 * t57));
+        let m1_1 = k31
+            + (t51 + t52 - t51.mul_add(t57, k42.mul_add(t53 * t58, t52 * t56)));
         let t60 = -t34 - t33;
-        let t61 = t44 + k44 * t32;
-        let t62 = t47 + k3 * t60;
+        let t61 = k44.mul_add(t32, t44);
+        let t62 = k3.mul_add(t60, t47);
         let t63 = c2 * t61;
         let t64 = t63 - s2 * t62;
         /// D13 = D31 (6.43)
-        let m1_3 = s2 * t61 + c2 * t62;
+        let m1_3 = c2.mul_add(t62, s2 * t61);
         let t65 = k38 * t7;
         let t66 = t15 + t65;
         let t67 = c3 * t8;
@@ -329,11 +330,11 @@ impl Puma560 {
         let t73 = c3 * t66 - s3 * t18 + t71;
         let t74 = t69 + t70 + (t21 + t72);
         /// D24 = D42 (6.43)
-        let m2_4 = m3_4 + k38 * t68;
+        let m2_4 = k38.mul_add(t68, m3_4);
         let t75 = c2 * t73;
         let t76 = t75 - s2 * t74;
         /// D14 = D41 (6.43)
-        let m1_4 = s2 * t73 + c2 * t74;
+        let m1_4 = c2.mul_add(t74, s2 * t73);
         let t77 = c4 * c5;
         let t78 = s4 * c5;
         let t79 = k18 * c4;
@@ -341,7 +342,7 @@ impl Puma560 {
         let t81 = k37 * s5;
         let t82 = k40 * t77;
         let t83 = k38 * t77;
-        let t84 = k18 * s4 + t80;
+        let t84 = k18.mul_add(s4, t80);
         /// D35 = D53 (6.43)
         let m3_5 = t79 + (t81 + t83);
         let t85 = c3 * t77;
@@ -350,20 +351,20 @@ impl Puma560 {
         let t88 = c3 * s5;
         let t89 = t87 + t88;
         let t90 = s3 * t78;
-        let t91 = c3 * t84 + k39 * t90;
+        let t91 = k39.mul_add(t90, c3 * t84);
         let t92 = s3 * t84;
         let t93 = c3 * t78;
         let t94 = k43 * t89;
         let t95 = k45 * t86;
         let t96 = k40 * t78;
         let t97 = t91 + t94;
-        let t98 = t92 + k37 * t93 + (t95 + t96);
+        let t98 = k37.mul_add(t93, t92) + (t95 + t96);
         /// D25 = D52 (6.43)
-        let m2_5 = m3_5 + k40 * t89;
-        let t99 = s2 * t86 + c2 * t89;
+        let m2_5 = k40.mul_add(t89, m3_5);
+        let t99 = c2.mul_add(t89, s2 * t86);
         let t100 = c2 * t97 - s2 * t98;
         /// D15 = D51 (6.43)
-        let m1_5 = s2 * t97 + c2 * t98;
+        let m1_5 = c2.mul_add(t98, s2 * t97);
         /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
@@ -377,15 +378,15 @@ impl Puma560 {
         let t107 = c2 * t103;
         let t108 = t107 - s2 * t106;
         /// D16 = D61 (6.43)
-        let m1_6 = k32 * (s2 * t103 + c2 * t106);
+        let m1_6 = k32 * c2.mul_add(t106, s2 * t103);
         let t109 = k46 * s2;
         let t110 = k46 * c2;
-        let t111 = k47 * c2 + k48 * s2;
-        let t112 = s2 * c3 + c2 * s3;
+        let t111 = k48.mul_add(s2, k47 * c2);
+        let t112 = c2.mul_add(s3, s2 * c3);
         let t113 = c2 * c3 - s2 * s3;
         let t114 = c4 * t112;
         let t115 = s4 * t112;
-        let t116 = c5 * t114 + s5 * t113;
+        let t116 = s5.mul_add(t113, c5 * t114);
         /// D5 (6.45), gravity and spring
         let g5 = k52 * t116;
         let t117 = c5 * t115;
@@ -394,78 +395,105 @@ impl Puma560 {
         let g4 = k51 * t118;
         let t119 = c4 * t117 - s4 * t116;
         /// D3 (6.45), gravity and spring
-        let g3 = k49 * t113 + k50 * t112 + k52 * (s4 * t117 + c4 * t116);
+        let g3 = k52.mul_add(c4.mul_add(t116, s4 * t117), k50.mul_add(t112, k49 * t113));
         /// D2 (6.45), gravity and spring
         let g2 = t111 + g3;
         /// D1 (6.45), gravity and spring
-        let g1 = k51 * (s2 * (c3 * t119 - s3 * t118) + c2 * (s3 * t119 + c3 * t118));
+        let g1 = k51
+            * c2.mul_add(c3.mul_add(t118, s3 * t119), s2 * (c3 * t119 - s3 * t118));
         /// potential energy
-        let p = -(k59 + (k60 * s2 + k48 * c2) + (k61 * t112 + k50 * t113)
-            + k52 * (c5 * t113 - s5 * t114));
-        let t120 = t53 * (t56 - t57) + t52 * t58 - t51 * t58;
-        let t121 = t43 + t27 * t38 - t19 * t38;
+        let p = -k52
+            .mul_add(
+                c5 * t113 - s5 * t114,
+                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(t113, k61 * t112),
+            );
+        let t120 = t52.mul_add(t58, t53 * (t56 - t57)) - t51 * t58;
+        let t121 = t27.mul_add(t38, t43) - t19 * t38;
         let t122 = k2 * t60;
-        let t123 = t122 + (k41 * t121 + t122);
-        let t124 = k42 * t121 + t123
-            - (k42 * (t56 * t121 + t58 * (t41 * t42 + k62 * t39 + k21 * t32))
-                + t57 * t123);
-        let t125 = s2 * (-t45 - t46 + k44 * t60);
+        let t123 = t122 + k41.mul_add(t121, t122);
+        let t124 = k42.mul_add(t121, t123)
+            - t57
+                .mul_add(
+                    t123,
+                    k42
+                        * t58
+                            .mul_add(
+                                k21.mul_add(t32, k62.mul_add(t39, t41 * t42)),
+                                t56 * t121,
+                            ),
+                );
+        let t125 = s2 * k44.mul_add(t60, -t45 - t46);
         let t126 = t63 + t125;
-        let t127 = t125 + c2 * (t44 + k3 * (t31 - t30));
+        let t127 = c2.mul_add(k3.mul_add(t31 - t30, t44), t125);
         let t128 = k45 * t67;
         let t129 = k38 * t67;
-        let t130 = t75 + s2 * (-t69 - t70 + t128);
+        let t130 = s2.mul_add(-t69 - t70 + t128, t75);
         let t131 = k43 * t86;
         let t132 = k40 * t86;
-        let t133 = s2 * (k39 * t93 - t92 + t131) + c2 * (t91 + k45 * (-t87 - t88));
+        let t133 = c2
+            .mul_add(k45.mul_add(-t87 - t88, t91), s2 * (k39 * t93 - t92 + t131));
         let t134 = t105 - t104;
-        let t135 = t107 + s2 * t134;
-        let t136 = k42 * (t6 * t11) + k63 * t11;
+        let t135 = s2.mul_add(t134, t107);
+        let t136 = k63.mul_add(t11, k42 * (t6 * t11));
         let t137 = t22 + (t22 - t136);
         let t138 = t16 - t13 * (t9 - t10);
-        let t139 = k36 * t14 + t21;
-        let t140 = t36 * t136 + k42 * (m3_4 * t38) + k64 * (t8 * t37);
+        let t139 = k36.mul_add(t14, t21);
+        let t140 = k64.mul_add(t8 * t37, k42.mul_add(m3_4 * t38, t36 * t136));
         let t141 = c3 * t138 - s3 * t139;
         let t142 = k43 * t7;
         let t143 = t142 + (t140 + t142);
         let t144 = t129 + t142;
-        let t145 = t144 + (t136 + k64 * t8 - t140 + t144);
+        let t145 = t144 + (k64.mul_add(t8, t136) - t140 + t144);
         let t146 = t129 + t137;
         let t147 = t129 + t146;
         let t148 = k40 * t68;
         let t149 = t143 + t145
-            - (t56 * t143 + k42 * (t58 * (t38 * (t136 + k65 * t8) + m3_4 * t42 + t148))
-                + t57 * t145);
-        let t150 = c2 * (t71 + (s3 * t138 + c3 * t139));
-        let t151 = s2 * (t141 - (t65 + t72)) + t150;
-        let t152 = t150 + s2 * (t128 + t141);
+            - t57
+                .mul_add(
+                    t145,
+                    k42
+                        .mul_add(
+                            t58
+                                * (m3_4.mul_add(t42, t38 * k65.mul_add(t8, t136)) + t148),
+                            t56 * t143,
+                        ),
+                );
+        let t150 = c2 * (t71 + c3.mul_add(t139, s3 * t138));
+        let t151 = s2.mul_add(t141 - (t65 + t72), t150);
+        let t152 = s2.mul_add(t128 + t141, t150);
         let t153 = k37 * t68;
         let t154 = k39 * t67;
-        let t155 = t139 + k38 * t104;
-        let t156 = s2 * (c3 * m3_4 + t153 + k45 * t104)
-            + c2 * (s3 * m3_4 + t154 + (t24 + k43 * t101));
+        let t155 = k38.mul_add(t104, t139);
+        let t156 = c2
+            .mul_add(
+                s3.mul_add(m3_4, t154) + k43.mul_add(t101, t24),
+                s2 * k45.mul_add(t104, c3.mul_add(m3_4, t153)),
+            );
         let t157 = t79 + t83;
-        let t158 = k35 * s4 + t96;
+        let t158 = k35.mul_add(s4, t96);
         let t159 = k45 * t90;
-        let t160 = t82 + k43 * t93;
+        let t160 = k43.mul_add(t93, t82);
         let t161 = k38 * t90;
         let t162 = t158 + t161;
-        let t163 = s2 * (c3 * t157 + k39 * t87 + t159)
-            + c2 * (s3 * t157 + k37 * t85 + t160);
+        let t163 = c2
+            .mul_add(
+                k37.mul_add(t85, s3 * t157) + t160,
+                s2 * (k39.mul_add(t87, c3 * t157) + t159),
+            );
         let t164 = -(s2 * t67) - c2 * t68;
         let t165 = t3 * t9;
         let t166 = k34 * (c4 * t5);
         let t167 = k37 * t77;
         let t168 = k40 * s5;
-        let t169 = t168 + (k66 * t165 + t168);
-        let t170 = k67 * t3 + t167;
+        let t169 = t168 + k66.mul_add(t165, t168);
+        let t170 = k67.mul_add(t3, t167);
         let t171 = t167 + t170;
         let t172 = t167 + t168;
-        let t173 = t172 + (k66 * (t3 - t165) + t172);
+        let t173 = t172 + k66.mul_add(t3 - t165, t172);
         let t174 = t166 - (t81 + t82);
-        let t175 = k37 * t78 + k67 * (t3 * t11);
-        let t176 = t96 + k36 * (s4 * t5);
-        let t177 = t36 * t169 + k42 * (t38 * t174) + t37 * t171;
+        let t175 = k67.mul_add(t3 * t11, k37 * t78);
+        let t176 = k36.mul_add(s4 * t5, t96);
+        let t177 = t37.mul_add(t171, k42.mul_add(t38 * t174, t36 * t169));
         let t178 = c3 * t175 - s3 * t176;
         let t179 = k43 * t78;
         let t180 = t179 + (t177 + t179);
@@ -474,20 +502,34 @@ impl Puma560 {
         let t183 = t132 + t173;
         let t184 = t132 + t183;
         let t185 = t180 + t182
-            - (t56 * t180 + k42 * (t58 * (t38 * (t169 - t171) + t42 * t174 + k38 * t89))
-                + t57 * t182);
-        let t186 = c2 * (t94 + (s3 * t175 + c3 * t176));
-        let t187 = s2 * (t178 - (t80 + t95)) + t186;
-        let t188 = t186 + s2 * (t131 + t178);
+            - t57
+                .mul_add(
+                    t182,
+                    k42
+                        .mul_add(
+                            t58
+                                * k38.mul_add(t89, t42.mul_add(t174, t38 * (t169 - t171))),
+                            t56 * t180,
+                        ),
+                );
+        let t186 = c2 * (t94 + c3.mul_add(t176, s3 * t175));
+        let t187 = s2.mul_add(t178 - (t80 + t95), t186);
+        let t188 = s2.mul_add(t131 + t178, t186);
         let t189 = t83 + t166;
         let t190 = t161 + t176;
-        let t191 = s2 * (t159 + (c3 * t189 - s3 * t170))
-            + c2 * (t160 + (s3 * t189 + c3 * t170));
-        let t192 = t21 + k37 * c5;
+        let t191 = c2
+            .mul_add(
+                t160 + c3.mul_add(t170, s3 * t189),
+                s2 * (t159 + (c3 * t189 - s3 * t170)),
+            );
+        let t192 = k37.mul_add(c5, t21);
         let t193 = k40 * t67;
-        let t194 = t192 + k40 * t134;
-        let t195 = s2 * (t153 + t193 + k43 * t134)
-            + c2 * (t148 + t154 + (t24 + k45 * (-t102 - t101)));
+        let t194 = k40.mul_add(t134, t192);
+        let t195 = c2
+            .mul_add(
+                t148 + t154 + k45.mul_add(-t102 - t101, t24),
+                s2 * k43.mul_add(t134, t153 + t193),
+            );
         let t196 = t64 + t126;
         let t197 = t76 + t151;
         let t198 = t100 + t187;
@@ -502,7 +544,7 @@ impl Puma560 {
         let t207 = t152 - t130;
         let t208 = t188 - t133;
         let t209 = t146 + t193;
-        let t210 = t183 + k38 * t86;
+        let t210 = k38.mul_add(t86, t183);
         let t211 = t158 + t176;
         let t212 = t76 - t151;
         let t213 = t130 - t152;
@@ -696,34 +738,110 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     ) -> [[T; 6usize]; 6usize] {
         let x = self.__dynamics_configuration(q_);
         /// C11 = sum of D11k qd_k (6.44)
-        let cor1_1 = qd_[1] * x.t120 + x.k1 * (qd_[2] * x.t124)
-            + x.k1 * (qd_[3] * x.t149) + x.k1 * (qd_[4] * x.t185);
+        let cor1_1 = x
+            .k1
+            .mul_add(
+                qd_[4] * x.t185,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[3] * x.t149,
+                        x.k1.mul_add(qd_[2] * x.t124, qd_[1] * x.t120),
+                    ),
+            );
         let t1 = qd_[0] * x.t120;
         let t2 = qd_[5] * x.t108;
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = t1 + qd_[1] * x.t59 + x.k1 * (qd_[2] * x.t196)
-            + x.k1 * (qd_[3] * x.t197) + x.k1 * (qd_[4] * x.t198) + x.k68 * t2;
+        let cor1_2 = x
+            .k68
+            .mul_add(
+                t2,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[4] * x.t198,
+                        x
+                            .k1
+                            .mul_add(
+                                qd_[3] * x.t197,
+                                x.k1.mul_add(qd_[2] * x.t196, qd_[1].mul_add(x.t59, t1)),
+                            ),
+                    ),
+            );
         let t3 = qd_[0] * x.t124;
         let t4 = qd_[5] * x.t135;
         /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = x.k1 * (t3 + qd_[1] * x.t196) + qd_[2] * x.t127
-            + x.k1 * (qd_[3] * x.t199) + x.k1 * (qd_[4] * x.t200) + x.k68 * t4;
+        let cor1_3 = x
+            .k68
+            .mul_add(
+                t4,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[4] * x.t200,
+                        x
+                            .k1
+                            .mul_add(
+                                qd_[3] * x.t199,
+                                qd_[2].mul_add(x.t127, x.k1 * qd_[1].mul_add(x.t196, t3)),
+                            ),
+                    ),
+            );
         let t5 = qd_[0] * x.t149;
         let t6 = qd_[5] * x.t164;
         /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = x.k1 * (t5 + qd_[1] * x.t197 + qd_[2] * x.t199) + qd_[3] * x.t156
-            + x.k1 * (qd_[4] * x.t201) + x.k68 * t6;
+        let cor1_4 = x
+            .k68
+            .mul_add(
+                t6,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[4] * x.t201,
+                        qd_[3]
+                            .mul_add(
+                                x.t156,
+                                x.k1 * qd_[2].mul_add(x.t199, qd_[1].mul_add(x.t197, t5)),
+                            ),
+                    ),
+            );
         let t7 = qd_[0] * x.t185;
         let t8 = qd_[5] * x.t99;
         /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = x.k1 * (t7 + qd_[1] * x.t198 + qd_[2] * x.t200 + qd_[3] * x.t201)
-            + qd_[4] * x.t195 + x.k68 * t8;
+        let cor1_5 = x
+            .k68
+            .mul_add(
+                t8,
+                qd_[4]
+                    .mul_add(
+                        x.t195,
+                        x.k1
+                            * qd_[3]
+                                .mul_add(
+                                    x.t201,
+                                    qd_[2].mul_add(x.t200, qd_[1].mul_add(x.t198, t7)),
+                                ),
+                    ),
+            );
         /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = x.k68
-            * (qd_[1] * x.t108 + qd_[2] * x.t135 + qd_[3] * x.t164 + qd_[4] * x.t99);
+            * qd_[4]
+                .mul_add(
+                    x.t99,
+                    qd_[3].mul_add(x.t164, qd_[2].mul_add(x.t135, qd_[1] * x.t108)),
+                );
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = x.k1 * (qd_[2] * x.t202) - t1 + x.k1 * (qd_[3] * x.t203)
-            + x.k1 * (qd_[4] * x.t204) + x.k69 * t2;
+        let cor2_1 = x
+            .k69
+            .mul_add(
+                t2,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[4] * x.t204,
+                        x.k1.mul_add(qd_[3] * x.t203, x.k1 * (qd_[2] * x.t202) - t1),
+                    ),
+            );
         let t9 = x.k2 * (qd_[2] * x.t60);
         let t10 = x.k1 * (qd_[3] * x.t147);
         let t11 = x.k1 * (qd_[4] * x.t184);
@@ -731,80 +849,171 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let cor2_2 = t9 + t10 + t11;
         let t12 = qd_[1] * x.t60;
         /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = t11 + (t10 + (t9 + (x.k1 * (qd_[0] * x.t202) + x.k2 * t12)));
+        let cor2_3 = t11 + (t10 + (t9 + x.k2.mul_add(t12, x.k1 * (qd_[0] * x.t202))));
         let t13 = qd_[1] * x.t147;
         let t14 = qd_[5] * x.t7;
         let t15 = x.k69 * t14;
         /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = x.k1 * (qd_[0] * x.t203 + t13 + qd_[2] * x.t147) + qd_[3] * x.t155
-            + x.k1 * (qd_[4] * x.t205) + t15;
+        let cor2_4 = x
+            .k1
+            .mul_add(
+                qd_[4] * x.t205,
+                qd_[3]
+                    .mul_add(
+                        x.t155,
+                        x.k1 * qd_[2].mul_add(x.t147, qd_[0].mul_add(x.t203, t13)),
+                    ),
+            ) + t15;
         let t16 = qd_[1] * x.t184;
         let t17 = qd_[5] * x.t78;
         let t18 = x.k69 * t17;
         /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = x.k1 * (qd_[0] * x.t204 + t16 + qd_[2] * x.t184 + qd_[3] * x.t205)
-            + qd_[4] * x.t194 + t18;
+        let cor2_5 = qd_[4]
+            .mul_add(
+                x.t194,
+                x.k1
+                    * qd_[3]
+                        .mul_add(
+                            x.t205,
+                            qd_[2].mul_add(x.t184, qd_[0].mul_add(x.t204, t16)),
+                        ),
+            ) + t18;
         let t19 = qd_[0] * x.t108;
         let t20 = qd_[3] * x.t7;
         let t21 = qd_[4] * x.t78;
         /// C26 = sum of D26k qd_k (6.44)
         let cor2_6 = x.k69 * (t19 + t20 + t21);
         /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = x.k70 * (t3 - qd_[1] * x.t206 - qd_[3] * x.t207 - qd_[4] * x.t208)
-            + x.k69 * t4;
+        let cor3_1 = x
+            .k69
+            .mul_add(
+                t4,
+                x.k70 * (t3 - qd_[1] * x.t206 - qd_[3] * x.t207 - qd_[4] * x.t208),
+            );
         /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = x.k1 * (qd_[0] * x.t206) + x.k21 * t12 + x.k1 * (qd_[3] * x.t209)
-            + x.k1 * (qd_[4] * x.t210);
+        let cor3_2 = x
+            .k1
+            .mul_add(
+                qd_[4] * x.t210,
+                x
+                    .k1
+                    .mul_add(
+                        qd_[3] * x.t209,
+                        x.k21.mul_add(t12, x.k1 * (qd_[0] * x.t206)),
+                    ),
+            );
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = x.k1 * (qd_[3] * x.t137 + qd_[4] * x.t173);
+        let cor3_3 = x.k1 * qd_[4].mul_add(x.t173, qd_[3] * x.t137);
         let t22 = qd_[2] * x.t137;
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = t15
-            + (x.k1 * (qd_[0] * x.t207 + qd_[1] * x.t209 + t22) + qd_[3] * x.t139
-                + x.k1 * (qd_[4] * x.t211));
+            + x
+                .k1
+                .mul_add(
+                    qd_[4] * x.t211,
+                    qd_[3]
+                        .mul_add(
+                            x.t139,
+                            x.k1 * (qd_[1].mul_add(x.t209, qd_[0] * x.t207) + t22),
+                        ),
+                );
         let t23 = qd_[2] * x.t173;
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = t18
-            + (x.k1 * (qd_[0] * x.t208 + qd_[1] * x.t210 + t23 + qd_[3] * x.t211)
-                + qd_[4] * x.t192);
+            + qd_[4]
+                .mul_add(
+                    x.t192,
+                    x.k1
+                        * qd_[3]
+                            .mul_add(
+                                x.t211,
+                                qd_[1].mul_add(x.t210, qd_[0] * x.t208) + t23,
+                            ),
+                );
         let t24 = qd_[0] * x.t135;
         /// C36 = sum of D36k qd_k (6.44)
         let cor3_6 = x.k69 * (t21 + (t20 + t24));
         /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = x.k70 * (t5 - qd_[1] * x.t212 - qd_[2] * x.t213 - qd_[4] * x.t214)
-            + x.k69 * t6;
+        let cor4_1 = x
+            .k69
+            .mul_add(
+                t6,
+                x.k70 * (t5 - qd_[1] * x.t212 - qd_[2] * x.t213 - qd_[4] * x.t214),
+            );
         let t25 = x.k68 * t14;
         /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = x.k1 * (qd_[0] * x.t212 - t13 + qd_[2] * x.t215 + qd_[4] * x.t216)
-            + t25;
+        let cor4_2 = x
+            .k1
+            .mul_add(
+                qd_[4].mul_add(x.t216, qd_[2].mul_add(x.t215, qd_[0] * x.t212 - t13)),
+                t25,
+            );
         /// C43 = sum of D43k qd_k (6.44)
-        let cor4_3 = t25
-            + x.k1 * (qd_[0] * x.t213 + qd_[1] * x.t215 - t22 + qd_[4] * x.t217);
+        let cor4_3 = x
+            .k1
+            .mul_add(
+                qd_[4].mul_add(x.t217, qd_[1].mul_add(x.t215, qd_[0] * x.t213) - t22),
+                t25,
+            );
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = x.k34 * (qd_[4] * x.t3);
         let t26 = qd_[3] * x.t3;
         let t27 = x.s5 * qd_[5];
         /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = x.k1 * (qd_[0] * x.t214 + qd_[1] * x.t216 + qd_[2] * x.t217)
-            + x.k34 * t26 + x.k68 * t27;
+        let cor4_5 = x
+            .k68
+            .mul_add(
+                t27,
+                x
+                    .k34
+                    .mul_add(
+                        t26,
+                        x.k1
+                            * qd_[2]
+                                .mul_add(x.t217, qd_[1].mul_add(x.t216, qd_[0] * x.t214)),
+                    ),
+            );
         let t28 = qd_[0] * x.t164 - qd_[1] * x.t7 - qd_[2] * x.t7;
         let t29 = x.s5 * qd_[4];
         /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = x.k69 * (t28 - t29);
         /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = x.k70 * (t7 - qd_[1] * x.t218 - qd_[2] * x.t219 - qd_[3] * x.t220)
-            + x.k69 * t8;
+        let cor5_1 = x
+            .k69
+            .mul_add(
+                t8,
+                x.k70 * (t7 - qd_[1] * x.t218 - qd_[2] * x.t219 - qd_[3] * x.t220),
+            );
         let t30 = x.k68 * t17;
         /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = x.k1 * (qd_[0] * x.t218 - t16 + qd_[2] * x.t221 + qd_[3] * x.t222)
-            + t30;
+        let cor5_2 = x
+            .k1
+            .mul_add(
+                qd_[3].mul_add(x.t222, qd_[2].mul_add(x.t221, qd_[0] * x.t218 - t16)),
+                t30,
+            );
         /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = t30
-            + x.k1 * (qd_[0] * x.t219 + qd_[1] * x.t221 - t23 + qd_[3] * x.t223);
+        let cor5_3 = x
+            .k1
+            .mul_add(
+                qd_[3].mul_add(x.t223, qd_[1].mul_add(x.t221, qd_[0] * x.t219) - t23),
+                t30,
+            );
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = x.k1 * (qd_[0] * x.t220 + qd_[1] * x.t222 + qd_[2] * x.t223)
-            + x.k36 * t26 + x.k69 * t27;
-        let t31 = qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78 + x.s5 * qd_[3];
+        let cor5_4 = x
+            .k69
+            .mul_add(
+                t27,
+                x
+                    .k36
+                    .mul_add(
+                        t26,
+                        x.k1
+                            * qd_[2]
+                                .mul_add(x.t223, qd_[1].mul_add(x.t222, qd_[0] * x.t220)),
+                    ),
+            );
+        let t31 = x.s5.mul_add(qd_[3], qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78);
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = x.k69 * t31;
         /// C62 = sum of D62k qd_k (6.44)
@@ -845,85 +1054,130 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
         let t6 = t1 * t2;
-        let t7 = t5 + qd_[1] * qd_[1];
-        let t8 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
-        let t9 = x.k9 * t1 + x.k11 * qd_[1];
-        let t10 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
-        let t11 = x.k53 * t4 + x.k44 * (t1 * t1 + t5);
-        let t12 = x.c3 * t1 + x.s3 * t2;
+        let t7 = qd_[1].mul_add(qd_[1], t5);
+        let t8 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
+        let t9 = x.k11.mul_add(qd_[1], x.k9 * t1);
+        let t10 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t11 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
+        let t12 = x.s3.mul_add(t2, x.c3 * t1);
         let t13 = x.c3 * t2 - x.s3 * t1;
         let t14 = x.c3 * t7 - x.s3 * t6;
-        let t15 = x.c3 * t6 + x.s3 * t7;
+        let t15 = x.s3.mul_add(t7, x.c3 * t6);
         let t16 = qd_[1] + qd_[2];
-        let t17 = x.c3 * t3 - x.s3 * t4 + qd_[2] * t13;
+        let t17 = qd_[2].mul_add(t13, x.c3 * t3 - x.s3 * t4);
         let t18 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t12;
         let t19 = t16 * t16;
         let t20 = t12 * t13;
-        let t21 = t13 * t13 + t19;
-        let t22 = t12 * t12 + t19;
+        let t21 = t13.mul_add(t13, t19);
+        let t22 = t12.mul_add(t12, t19);
         let t23 = t12 * t16 - t18;
-        let t24 = t17 + t13 * t16;
-        let t25 = x.k27 * t12 + x.k24 * t13;
-        let t26 = x.k24 * t12 + x.k12 * t16;
-        let t27 = x.k12 * t13 + x.k26 * t16;
-        let t28 = x.k21 * t14 + (x.k5 * t21 + x.k2 * t20);
-        let t29 = t11 + (x.k4 * t23 + x.k2 * t24);
+        let t24 = t13.mul_add(t16, t17);
+        let t25 = x.k24.mul_add(t13, x.k27 * t12);
+        let t26 = x.k12.mul_add(t16, x.k24 * t12);
+        let t27 = x.k26.mul_add(t16, x.k12 * t13);
+        let t28 = x.k21.mul_add(t14, x.k2.mul_add(t20, x.k5 * t21));
+        let t29 = t11 + x.k2.mul_add(t24, x.k4 * t23);
         let t30 = x.c4 * t12 - x.s4 * t16;
         let t31 = -(x.c4 * t16) - x.s4 * t12;
         let t32 = qd_[3] + t13;
-        let t33 = x.c4 * t17 + qd_[3] * t31;
+        let t33 = qd_[3].mul_add(t31, x.c4 * t17);
         let t34 = -(x.s4 * t17) - qd_[3] * t30;
-        let t35 = x.c5 * t30 + x.s5 * t32;
+        let t35 = x.s5.mul_add(t32, x.c5 * t30);
         let t36 = x.c5 * t32 - x.s5 * t30;
         let t37 = qd_[4] - t31;
-        let t38 = x.c5 * t33 + x.s5 * t18 + qd_[4] * t36;
+        let t38 = qd_[4].mul_add(t36, x.s5.mul_add(t18, x.c5 * t33));
         let t39 = t35 * t36;
         let t40 = t36 * t37;
         let t41 = t34 + t39;
-        let t42 = t35 * t35 + t37 * t37;
+        let t42 = t37.mul_add(t37, t35 * t35);
         let t43 = t38 + t40;
         let t44 = qd_[5] + t36;
         let t45 = (x.c6 * t35 - x.s6 * t37) * t44;
         let t46 = (-(x.c6 * t37) - x.s6 * t35) * t44;
         /// centripetal and Coriolis torque 6
         let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd_[4] * t35);
-        let t47 = x.k15 * t38 + x.k18 * t40 + x.k17 * (-(x.c4 * t29) - x.s4 * t28)
-            + x.k7 * (x.c6 * t46 + x.s6 * t45);
-        let t48 = x.k13 * (t35 * t37) + cqd6;
+        let t47 = x
+            .k7
+            .mul_add(
+                x.s6.mul_add(t45, x.c6 * t46),
+                x
+                    .k17
+                    .mul_add(-(x.c4 * t29) - x.s4 * t28, x.k18.mul_add(t40, x.k15 * t38)),
+            );
+        let t48 = x.k13.mul_add(t35 * t37, cqd6);
         /// centripetal and Coriolis torque 5
-        let cqd5 = x.k35 * t34 + x.k16 * t39
-            + x.k17
-                * (x.c5 * (x.c4 * t28 - x.s4 * t29)
-                    + x.s5 * (x.k2 * t15 + (x.k4 * t20 + x.k21 * t22)))
-            + x.k32 * (x.s6 * t46 - x.c6 * t45);
-        let t49 = x.c5 * t41 + x.s5 * t42;
+        let cqd5 = x
+            .k32
+            .mul_add(
+                x.s6 * t46 - x.c6 * t45,
+                x
+                    .k17
+                    .mul_add(
+                        x
+                            .s5
+                            .mul_add(
+                                x.k2.mul_add(t15, x.k21.mul_add(t22, x.k4 * t20)),
+                                x.c5 * (x.c4 * t28 - x.s4 * t29),
+                            ),
+                        x.k16.mul_add(t39, x.k35 * t34),
+                    ),
+            );
+        let t49 = x.s5.mul_add(t42, x.c5 * t41);
         let t50 = x.s5 * t41 - x.c5 * t42;
-        let t51 = x.k6 * t33 + x.k20 * (t31 * t32) + (x.c5 * t47 - x.s5 * t48);
+        let t51 = x.k20.mul_add(t31 * t32, x.k6 * t33) + (x.c5 * t47 - x.s5 * t48);
         let t52 = x.k57 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = x.k20 * t18 + x.k19 * (t30 * t31) + (x.s5 * t47 + x.c5 * t48);
-        let t53 = x.c4 * t49 + x.s4 * t43;
+        let cqd4 = x.k19.mul_add(t30 * t31, x.k20 * t18) + x.c5.mul_add(t48, x.s5 * t47);
+        let t53 = x.s4.mul_add(t43, x.c4 * t49);
         let t54 = x.s4 * t49 - x.c4 * t43;
-        let t55 = x.k54 * t21 + x.k25 * t20 + x.k14 * t53;
-        let t56 = x.k22 * t20 + x.k55 * t22 + x.k14 * t50;
-        let t57 = x.k27 * t17 + x.k24 * t18 + (t13 * t27 - t16 * t26) + x.k25 * t11
-            + (x.c4 * t51 - x.s4 * t52) + x.k40 * t54;
-        let t58 = x.k24 * t17 + (t16 * t25 - t12 * t27) + x.k54 * t11 + cqd4
-            + x.k39 * t54;
+        let t55 = x.k14.mul_add(t53, x.k25.mul_add(t20, x.k54 * t21));
+        let t56 = x.k14.mul_add(t50, x.k55.mul_add(t22, x.k22 * t20));
+        let t57 = x
+            .k40
+            .mul_add(
+                t54,
+                x
+                    .k25
+                    .mul_add(
+                        t11,
+                        x.k24.mul_add(t18, x.k27 * t17) + (t13 * t27 - t16 * t26),
+                    ) + (x.c4 * t51 - x.s4 * t52),
+            );
+        let t58 = x
+            .k39
+            .mul_add(
+                t54,
+                x.k54.mul_add(t11, x.k24.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
+            );
         /// centripetal and Coriolis torque 3
-        let cqd3 = x.k12 * t18 + (t12 * t26 - t13 * t25) + (x.k23 * t15 + x.k56 * t14)
-            - (x.s4 * t51 + x.c4 * t52) + (x.k39 * t50 + x.k40 * t53);
-        let t59 = x.s3 * t55 + x.c3 * t56;
+        let cqd3 = x.k12.mul_add(t18, t12 * t26 - t13 * t25)
+            + x.k56.mul_add(t14, x.k23 * t15) - x.c4.mul_add(t52, x.s4 * t51)
+            + x.k40.mul_add(t53, x.k39 * t50);
+        let t59 = x.c3.mul_add(t56, x.s3 * t55);
         /// centripetal and Coriolis torque 2
-        let cqd2 = x.k29 * t3 + x.k10 * t4 + (t1 * t9 - t2 * t8) + cqd3 + x.k2 * t59;
+        let cqd2 = x
+            .k2
+            .mul_add(t59, x.k10.mul_add(t4, x.k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
         /// centripetal and Coriolis torque 1
-        let cqd1 = x.s2
-            * (x.k30 * t3 + x.k8 * t4 + (t2 * t10 - qd_[1] * t9)
-                + (x.c3 * t57 - x.s3 * t58) + x.k44 * t59)
-            + x.c2
-                * (x.k9 * t3 + (qd_[1] * t8 - t1 * t10) + (x.s3 * t57 + x.c3 * t58)
-                    + (x.k3 * (x.c3 * t55 - x.s3 * t56)
-                        + x.k21 * (x.k22 * t23 + x.k25 * t24 + x.k17 * t54)));
+        let cqd1 = x
+            .c2
+            .mul_add(
+                x.k9.mul_add(t3, qd_[1] * t8 - t1 * t10) + x.c3.mul_add(t58, x.s3 * t57)
+                    + x
+                        .k21
+                        .mul_add(
+                            x.k17.mul_add(t54, x.k25.mul_add(t24, x.k22 * t23)),
+                            x.k3 * (x.c3 * t55 - x.s3 * t56),
+                        ),
+                x.s2
+                    * x
+                        .k44
+                        .mul_add(
+                            t59,
+                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t10 - qd_[1] * t9)
+                                + (x.c3 * t57 - x.s3 * t58),
+                        ),
+            );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
     /// g(q), with joint springs.
@@ -962,90 +1216,135 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t3 = qd_[1] * t2;
         let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
-        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
-        let t7 = x.k9 * t1 + x.k11 * qd_[1];
-        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
-        let t9 = x.k53 * t4 + x.k44 * (t1 * t1 + t5);
-        let t10 = x.c3 * t1 + x.s3 * t2;
+        let t6 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
+        let t7 = x.k11.mul_add(qd_[1], x.k9 * t1);
+        let t8 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t9 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
+        let t10 = x.s3.mul_add(t2, x.c3 * t1);
         let t11 = x.c3 * t2 - x.s3 * t1;
         let t12 = qd_[1] + qd_[2];
-        let t13 = x.c3 * t3 - x.s3 * t4 + qd_[2] * t11;
+        let t13 = qd_[2].mul_add(t11, x.c3 * t3 - x.s3 * t4);
         let t14 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t10;
         let t15 = t12 * t12;
         let t16 = t10 * t11;
-        let t17 = t11 * t11 + t15;
-        let t18 = t10 * t10 + t15;
+        let t17 = t11.mul_add(t11, t15);
+        let t18 = t10.mul_add(t10, t15);
         let t19 = t10 * t12 - t14;
-        let t20 = t13 + t11 * t12;
-        let t21 = x.k27 * t10 + x.k24 * t11;
-        let t22 = x.k24 * t10 + x.k12 * t12;
-        let t23 = x.k12 * t11 + x.k26 * t12;
-        let t24 = t9 + (x.k4 * t19 + x.k2 * t20);
+        let t20 = t11.mul_add(t12, t13);
+        let t21 = x.k24.mul_add(t11, x.k27 * t10);
+        let t22 = x.k12.mul_add(t12, x.k24 * t10);
+        let t23 = x.k26.mul_add(t12, x.k12 * t11);
+        let t24 = t9 + x.k2.mul_add(t20, x.k4 * t19);
         let t25 = x.c4 * t10 - x.s4 * t12;
         let t26 = -(x.c4 * t12) - x.s4 * t10;
         let t27 = qd_[3] + t11;
-        let t28 = x.c4 * t13 + qd_[3] * t26;
+        let t28 = qd_[3].mul_add(t26, x.c4 * t13);
         let t29 = -(x.s4 * t13) - qd_[3] * t25;
-        let t30 = x.c5 * t25 + x.s5 * t27;
+        let t30 = x.s5.mul_add(t27, x.c5 * t25);
         let t31 = x.c5 * t27 - x.s5 * t25;
         let t32 = qd_[4] - t26;
-        let t33 = x.c5 * t28 + x.s5 * t14 + qd_[4] * t31;
+        let t33 = qd_[4].mul_add(t31, x.s5.mul_add(t14, x.c5 * t28));
         let t34 = t30 * t31;
         let t35 = t31 * t32;
         let t36 = t29 + t34;
-        let t37 = t30 * t30 + t32 * t32;
+        let t37 = t32.mul_add(t32, t30 * t30);
         let t38 = t33 + t35;
         let t39 = qd_[5] + t31;
         let t40 = (x.c6 * t30 - x.s6 * t32) * t39;
         let t41 = (-(x.c6 * t32) - x.s6 * t30) * t39;
         /// centripetal, Coriolis and gravity torque 6
         let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd_[4] * t30);
-        let t42 = x.k13 * (t30 * t32) + h6;
-        let t43 = x.c5 * t36 + x.s5 * t37;
+        let t42 = x.k13.mul_add(t30 * t32, h6);
+        let t43 = x.s5.mul_add(t37, x.c5 * t36);
         let t44 = x.s5 * t36 - x.c5 * t37;
-        let t45 = x.c4 * t43 + x.s4 * t38;
+        let t45 = x.s4.mul_add(t38, x.c4 * t43);
         let t46 = x.s4 * t43 - x.c4 * t38;
-        let t47 = x.k54 * t17 + x.k25 * t16 + x.k14 * t45;
-        let t48 = x.k22 * t16 + x.k55 * t18 + x.k14 * t44;
-        let t49 = x.s3 * t47 + x.c3 * t48;
-        let t50 = x.t109 + x.k21 * (t5 + qd_[1] * qd_[1]);
-        let t51 = x.t110 + x.k2 * (t1 * t2);
-        let t52 = x.c3 * t50 + x.s3 * t51;
+        let t47 = x.k14.mul_add(t45, x.k25.mul_add(t16, x.k54 * t17));
+        let t48 = x.k14.mul_add(t44, x.k55.mul_add(t18, x.k22 * t16));
+        let t49 = x.c3.mul_add(t48, x.s3 * t47);
+        let t50 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t109);
+        let t51 = x.k2.mul_add(t1 * t2, x.t110);
+        let t52 = x.s3.mul_add(t51, x.c3 * t50);
         let t53 = x.c3 * t51 - x.s3 * t50;
-        let t54 = x.k5 * t17 + x.k2 * t16 + t52;
-        let t55 = x.k7 * (x.c6 * t41 + x.s6 * t40)
-            + (x.k15 * t33 + x.k18 * t35 + x.k17 * (-(x.c4 * t24) - x.s4 * t54));
+        let t54 = x.k2.mul_add(t16, x.k5 * t17) + t52;
+        let t55 = x
+            .k7
+            .mul_add(
+                x.s6.mul_add(t40, x.c6 * t41),
+                x
+                    .k17
+                    .mul_add(-(x.c4 * t24) - x.s4 * t54, x.k18.mul_add(t35, x.k15 * t33)),
+            );
         /// centripetal, Coriolis and gravity torque 5
-        let h5 = x.k32 * (x.s6 * t41 - x.c6 * t40)
-            + (x.k35 * t29 + x.k16 * t34
-                + x.k17
-                    * (x.c5 * (x.c4 * t54 - x.s4 * t24)
-                        + x.s5 * (x.k4 * t16 + x.k21 * t18 + t53)));
-        let t56 = x.k6 * t28 + x.k20 * (t26 * t27) + (x.c5 * t55 - x.s5 * t42);
+        let h5 = x
+            .k32
+            .mul_add(
+                x.s6 * t41 - x.c6 * t40,
+                x
+                    .k17
+                    .mul_add(
+                        x
+                            .s5
+                            .mul_add(
+                                x.k21.mul_add(t18, x.k4 * t16) + t53,
+                                x.c5 * (x.c4 * t54 - x.s4 * t24),
+                            ),
+                        x.k16.mul_add(t34, x.k35 * t29),
+                    ),
+            );
+        let t56 = x.k20.mul_add(t26 * t27, x.k6 * t28) + (x.c5 * t55 - x.s5 * t42);
         let t57 = x.k57 * (t25 * t27) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = x.k20 * t14 + x.k19 * (t25 * t26) + (x.c5 * t42 + x.s5 * t55);
-        let t58 = x.k40 * t46
-            + (x.k27 * t13 + x.k24 * t14 + (t11 * t23 - t12 * t22) + x.k25 * t9
-                + (x.c4 * t56 - x.s4 * t57));
-        let t59 = x.k39 * t46
-            + (x.k24 * t13 + (t12 * t21 - t10 * t23) + x.k54 * t9 + h4);
+        let h4 = x.k19.mul_add(t25 * t26, x.k20 * t14) + x.s5.mul_add(t55, x.c5 * t42);
+        let t58 = x
+            .k40
+            .mul_add(
+                t46,
+                x
+                    .k25
+                    .mul_add(
+                        t9,
+                        x.k24.mul_add(t14, x.k27 * t13) + (t11 * t23 - t12 * t22),
+                    ) + (x.c4 * t56 - x.s4 * t57),
+            );
+        let t59 = x
+            .k39
+            .mul_add(
+                t46,
+                x.k54.mul_add(t9, x.k24.mul_add(t13, t12 * t21 - t10 * t23)) + h4,
+            );
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = x.k39 * t44 + x.k40 * t45
-            + (x.k12 * t14 + (t10 * t22 - t11 * t21) + (x.k22 * t53 + x.k55 * t52)
-                - (x.s4 * t56 + x.c4 * t57));
+        let h3 = x.k40.mul_add(t45, x.k39 * t44)
+            + (x.k12.mul_add(t14, t10 * t22 - t11 * t21)
+                + x.k55.mul_add(t52, x.k22 * t53) - x.c4.mul_add(t57, x.s4 * t56));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = x.k2 * t49
-            + (x.t111 + (x.k29 * t3 + x.k10 * t4 + (t1 * t7 - t2 * t6)) + h3);
+        let h2 = x
+            .k2
+            .mul_add(
+                t49,
+                x.t111 + (x.k10.mul_add(t4, x.k29 * t3) + (t1 * t7 - t2 * t6)) + h3,
+            );
         /// centripetal, Coriolis and gravity torque 1
-        let h1 = x.s2
-            * (x.k44 * t49
-                + (x.k30 * t3 + x.k8 * t4 + (t2 * t8 - qd_[1] * t7)
-                    + (x.c3 * t58 - x.s3 * t59)))
-            + x.c2
-                * (x.k3 * (x.c3 * t47 - x.s3 * t48)
-                    + x.k21 * (x.k22 * t19 + x.k25 * t20 + x.k17 * t46)
-                    + (x.k9 * t3 + (qd_[1] * t6 - t1 * t8) + (x.s3 * t58 + x.c3 * t59)));
+        let h1 = x
+            .c2
+            .mul_add(
+                x
+                    .k21
+                    .mul_add(
+                        x.k17.mul_add(t46, x.k25.mul_add(t20, x.k22 * t19)),
+                        x.k3 * (x.c3 * t47 - x.s3 * t48),
+                    )
+                    + (x.k9.mul_add(t3, qd_[1] * t6 - t1 * t8)
+                        + x.c3.mul_add(t59, x.s3 * t58)),
+                x.s2
+                    * x
+                        .k44
+                        .mul_add(
+                            t49,
+                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t8 - qd_[1] * t7)
+                                + (x.c3 * t58 - x.s3 * t59),
+                        ),
+            );
         [h1, h2, h3, h4, h5, h6]
     }
     /// τ = M(q) q̈ + C(q, q̇) q̇ + g(q).
@@ -1069,97 +1368,153 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t3 = qd_[1] * t2;
         let t4 = qd_[1] * t1;
         let t5 = t2 * t2;
-        let t6 = x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1];
-        let t7 = x.k9 * t1 + x.k11 * qd_[1];
-        let t8 = x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1];
-        let t9 = x.c3 * t1 + x.s3 * t2;
+        let t6 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
+        let t7 = x.k11.mul_add(qd_[1], x.k9 * t1);
+        let t8 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t9 = x.s3.mul_add(t2, x.c3 * t1);
         let t10 = x.c3 * t2 - x.s3 * t1;
         let t11 = qd_[1] + qd_[2];
         let t12 = t11 * t11;
         let t13 = t9 * t10;
-        let t14 = t10 * t10 + t12;
-        let t15 = t9 * t9 + t12;
-        let t16 = x.k27 * t9 + x.k24 * t10;
-        let t17 = x.k24 * t9 + x.k12 * t11;
-        let t18 = x.k12 * t10 + x.k26 * t11;
+        let t14 = t10.mul_add(t10, t12);
+        let t15 = t9.mul_add(t9, t12);
+        let t16 = x.k24.mul_add(t10, x.k27 * t9);
+        let t17 = x.k12.mul_add(t11, x.k24 * t9);
+        let t18 = x.k26.mul_add(t11, x.k12 * t10);
         let t19 = x.c4 * t9 - x.s4 * t11;
         let t20 = -(x.c4 * t11) - x.s4 * t9;
         let t21 = qd_[3] + t10;
-        let t22 = x.c5 * t19 + x.s5 * t21;
+        let t22 = x.s5.mul_add(t21, x.c5 * t19);
         let t23 = x.c5 * t21 - x.s5 * t19;
         let t24 = qd_[4] - t20;
         let t25 = t22 * t23;
         let t26 = t23 * t24;
-        let t27 = t22 * t22 + t24 * t24;
+        let t27 = t24.mul_add(t24, t22 * t22);
         let t28 = qd_[5] + t23;
         let t29 = (x.c6 * t22 - x.s6 * t24) * t28;
         let t30 = (-(x.c6 * t24) - x.s6 * t22) * t28;
-        let t31 = t3 + x.s2 * qdd_[0];
+        let t31 = x.s2.mul_add(qdd_[0], t3);
         let t32 = x.c2 * qdd_[0] - t4;
-        let t33 = x.k44 * (t1 * t1 + t5) + x.k2 * (t4 - t32);
-        let t34 = x.t109 + (x.k21 * (t5 + qd_[1] * qd_[1]) + x.k3 * (t4 + t32));
-        let t35 = x.t110 + (x.k2 * (qdd_[1] + t1 * t2) + x.k3 * (t3 - t31));
-        let t36 = x.c3 * t34 + x.s3 * t35;
+        let t33 = x.k2.mul_add(t4 - t32, x.k44 * t1.mul_add(t1, t5));
+        let t34 = x.t109 + x.k3.mul_add(t4 + t32, x.k21 * qd_[1].mul_add(qd_[1], t5));
+        let t35 = x.t110 + x.k3.mul_add(t3 - t31, x.k2 * t1.mul_add(t2, qdd_[1]));
+        let t36 = x.s3.mul_add(t35, x.c3 * t34);
         let t37 = x.c3 * t35 - x.s3 * t34;
-        let t38 = qd_[2] * t10 + (x.c3 * t31 + x.s3 * t32);
+        let t38 = qd_[2].mul_add(t10, x.s3.mul_add(t32, x.c3 * t31));
         let t39 = x.c3 * t32 - x.s3 * t31 - qd_[2] * t9;
         let t40 = qdd_[1] + qdd_[2];
         let t41 = t13 - t40;
         let t42 = t13 + t40;
         let t43 = t9 * t11 - t39;
-        let t44 = t10 * t11 + t38;
-        let t45 = t36 + (x.k5 * t14 + x.k2 * t41);
-        let t46 = t33 + (x.k4 * t43 + x.k2 * t44);
-        let t47 = qd_[3] * t20 + (x.c4 * t38 - x.s4 * t40);
+        let t44 = t10.mul_add(t11, t38);
+        let t45 = t36 + x.k2.mul_add(t41, x.k5 * t14);
+        let t46 = t33 + x.k2.mul_add(t44, x.k4 * t43);
+        let t47 = qd_[3].mul_add(t20, x.c4 * t38 - x.s4 * t40);
         let t48 = qdd_[3] + t39;
-        let t49 = qd_[4] * t23 + (x.c5 * t47 + x.s5 * t48);
+        let t49 = qd_[4].mul_add(t23, x.s5.mul_add(t48, x.c5 * t47));
         let t50 = qdd_[4] - (-(x.c4 * t40) - x.s4 * t38 - qd_[3] * t19);
         let t51 = t25 - t50;
         let t52 = t26 + t49;
         /// T6 (6.46)
         let tau6 = x.k7 * (qdd_[5] + (x.c5 * t48 - x.s5 * t47 - qd_[4] * t22));
-        let t53 = x.k7 * (x.c6 * t30 + x.s6 * t29)
-            + (x.k18 * t26 + x.k15 * t49 + x.k17 * (-(x.c4 * t46) - x.s4 * t45));
-        let t54 = x.k13 * (t22 * t24) + tau6;
+        let t53 = x
+            .k7
+            .mul_add(
+                x.s6.mul_add(t29, x.c6 * t30),
+                x
+                    .k17
+                    .mul_add(-(x.c4 * t46) - x.s4 * t45, x.k15.mul_add(t49, x.k18 * t26)),
+            );
+        let t54 = x.k13.mul_add(t22 * t24, tau6);
         /// T5 (6.46)
-        let tau5 = x.k32 * (x.s6 * t30 - x.c6 * t29)
-            + (x.k16 * t25 + x.k18 * t50
-                + x.k17
-                    * (x.c5 * (x.c4 * t45 - x.s4 * t46)
-                        + x.s5 * (t37 + (x.k21 * t15 + x.k4 * t42))));
-        let t55 = x.s5 * t27 + x.c5 * t51;
+        let tau5 = x
+            .k32
+            .mul_add(
+                x.s6 * t30 - x.c6 * t29,
+                x
+                    .k17
+                    .mul_add(
+                        x
+                            .s5
+                            .mul_add(
+                                t37 + x.k4.mul_add(t42, x.k21 * t15),
+                                x.c5 * (x.c4 * t45 - x.s4 * t46),
+                            ),
+                        x.k18.mul_add(t50, x.k16 * t25),
+                    ),
+            );
+        let t55 = x.c5.mul_add(t51, x.s5 * t27);
         let t56 = x.s5 * t51 - x.c5 * t27;
-        let t57 = x.k20 * (t20 * t21) + x.k6 * t47 + (x.c5 * t53 - x.s5 * t54);
+        let t57 = x.k6.mul_add(t47, x.k20 * (t20 * t21)) + (x.c5 * t53 - x.s5 * t54);
         let t58 = x.k57 * (t19 * t21) - tau5;
         /// T4 (6.46)
-        let tau4 = x.k19 * (t19 * t20) + x.k20 * t48 + (x.s5 * t53 + x.c5 * t54);
-        let t59 = x.c4 * t55 + x.s4 * t52;
+        let tau4 = x.k20.mul_add(t48, x.k19 * (t19 * t20))
+            + x.c5.mul_add(t54, x.s5 * t53);
+        let t59 = x.s4.mul_add(t52, x.c4 * t55);
         let t60 = x.s4 * t55 - x.c4 * t52;
-        let t61 = x.k54 * t14 + x.k25 * t41 + x.k14 * t59;
-        let t62 = x.k55 * t15 + x.k22 * t42 + x.k14 * t56;
-        let t63 = t10 * t18 - t11 * t17 + (x.k27 * t38 + x.k24 * t39) + x.k25 * t33
-            + (x.c4 * t57 - x.s4 * t58) + x.k40 * t60;
-        let t64 = t11 * t16 - t9 * t18 + (x.k24 * t38 + x.k12 * t40) + x.k54 * t33 + tau4
-            + x.k39 * t60;
+        let t61 = x.k14.mul_add(t59, x.k25.mul_add(t41, x.k54 * t14));
+        let t62 = x.k14.mul_add(t56, x.k22.mul_add(t42, x.k55 * t15));
+        let t63 = x
+            .k40
+            .mul_add(
+                t60,
+                x
+                    .k25
+                    .mul_add(
+                        t33,
+                        t10 * t18 - t11 * t17 + x.k24.mul_add(t39, x.k27 * t38),
+                    ) + (x.c4 * t57 - x.s4 * t58),
+            );
+        let t64 = x
+            .k39
+            .mul_add(
+                t60,
+                x
+                    .k54
+                    .mul_add(t33, t11 * t16 - t9 * t18 + x.k12.mul_add(t40, x.k24 * t38))
+                    + tau4,
+            );
         /// T3 (6.46)
-        let tau3 = t9 * t17 - t10 * t16 + (x.k12 * t39 + x.k26 * t40)
-            + (x.k22 * t37 + x.k55 * t36) - (x.s4 * t57 + x.c4 * t58)
-            + (x.k39 * t56 + x.k40 * t59);
-        let t65 = x.s3 * t61 + x.c3 * t62;
+        let tau3 = t9 * t17 - t10 * t16 + x.k26.mul_add(t40, x.k12 * t39)
+            + x.k55.mul_add(t36, x.k22 * t37) - x.c4.mul_add(t58, x.s4 * t57)
+            + x.k40.mul_add(t59, x.k39 * t56);
+        let t65 = x.c3.mul_add(t62, x.s3 * t61);
         /// T2 (6.46)
-        let tau2 = x.t111
-            + (t1 * t7 - t2 * t6 + (x.k29 * t31 + x.k11 * t32 + x.k28 * qdd_[1])) + tau3
-            + x.k2 * t65;
+        let tau2 = x
+            .k2
+            .mul_add(
+                t65,
+                x.t111
+                    + (t1 * t7 - t2 * t6
+                        + x.k28.mul_add(qdd_[1], x.k11.mul_add(t32, x.k29 * t31))) + tau3,
+            );
         /// T1 (6.46)
-        let tau1 = x.k31 * qdd_[0]
-            + (x.s2
-                * (t2 * t8 - qd_[1] * t7 + (x.k30 * t31 + x.k9 * t32 + x.k29 * qdd_[1])
-                    + (x.c3 * t63 - x.s3 * t64) + x.k44 * t65)
-                + x.c2
-                    * (qd_[1] * t6 - t1 * t8 + (x.k9 * t31 + x.k11 * qdd_[1])
-                        + (x.s3 * t63 + x.c3 * t64)
-                        + (x.k3 * (x.c3 * t61 - x.s3 * t62)
-                            + x.k21 * (x.k22 * t43 + x.k25 * t44 + x.k17 * t60))));
+        let tau1 = x
+            .k31
+            .mul_add(
+                qdd_[0],
+                x
+                    .c2
+                    .mul_add(
+                        qd_[1] * t6 - t1 * t8 + x.k11.mul_add(qdd_[1], x.k9 * t31)
+                            + x.c3.mul_add(t64, x.s3 * t63)
+                            + x
+                                .k21
+                                .mul_add(
+                                    x.k17.mul_add(t60, x.k25.mul_add(t44, x.k22 * t43)),
+                                    x.k3 * (x.c3 * t61 - x.s3 * t62),
+                                ),
+                        x.s2
+                            * x
+                                .k44
+                                .mul_add(
+                                    t65,
+                                    t2 * t8 - qd_[1] * t7
+                                        + x.k29.mul_add(qdd_[1], x.k9.mul_add(t32, x.k30 * t31))
+                                        + (x.c3 * t63 - x.s3 * t64),
+                                ),
+                    ),
+            );
         [tau1, tau2, tau3, tau4, tau5, tau6]
     }
     /// The kinetic energy.
@@ -1180,36 +1535,74 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t1 = x.s2 * qd_[0];
         let t2 = x.c2 * qd_[0];
         let t3 = x.s3 * t2;
-        let t4 = x.c3 * t1 + t3;
+        let t4 = x.c3.mul_add(t1, t3);
         let t5 = x.c3 * t2;
         let t6 = t5 - x.s3 * t1;
         let t7 = qd_[1] + qd_[2];
         let t8 = x.c4 * t4 - x.s4 * t7;
         let t9 = qd_[3] + t6;
-        let t10 = x.c5 * t8 + x.s5 * t9;
+        let t10 = x.s5.mul_add(t9, x.c5 * t8);
         let t11 = qd_[4] - (-(x.c4 * t7) - x.s4 * t4);
         let t12 = qd_[5] + (x.c5 * t9 - x.s5 * t8);
-        let t13 = x.k2 * qd_[1] + x.k44 * t1;
-        let t14 = x.k3 * t5 + x.s3 * t13;
-        let t15 = x.c3 * t13 + x.k44 * t3;
-        let t16 = t14 + x.k21 * t7;
-        let t17 = x.k21 * t2 + (x.k2 * t4 + x.k5 * t6);
+        let t13 = x.k44.mul_add(t1, x.k2 * qd_[1]);
+        let t14 = x.s3.mul_add(t13, x.k3 * t5);
+        let t15 = x.k44.mul_add(t3, x.c3 * t13);
+        let t16 = x.k21.mul_add(t7, t14);
+        let t17 = x.k21.mul_add(t2, x.k5.mul_add(t6, x.k2 * t4));
         x.k1
-            * (x.k31 * (qd_[0] * qd_[0])
-                + (t1 * (x.k30 * t1 + x.k9 * t2 + x.k29 * qd_[1])
-                    + t2 * (x.k9 * t1 + x.k11 * qd_[1])
-                    + qd_[1] * (x.k29 * t1 + x.k11 * t2 + x.k28 * qd_[1]))
-                + x.k41
-                    * (x.k55 * (t7 * t14) + x.k22 * (t7 * t15)
-                        + x.k21 * (t2 * (x.k25 * t4 + x.k54 * t6)))
-                + (t4 * (x.k27 * t4 + x.k24 * t6) + t6 * (x.k24 * t4 + x.k12 * t7)
-                    + t7 * (x.k12 * t6 + x.k26 * t7))
-                + (x.k6 * (t8 * t8) + x.k20 * (t9 * t9))
-                + x.k58
-                    * (t11
-                        * (x.c5 * (x.c4 * t16 - x.s4 * t17) + x.s5 * (t15 + x.k4 * t7))
-                        + t10 * (-(x.c4 * t17) - x.s4 * t16))
-                + (x.k15 * (t10 * t10) + x.k18 * (t11 * t11)) + x.k7 * (t12 * t12))
+            * x
+                .k7
+                .mul_add(
+                    t12 * t12,
+                    x
+                        .k58
+                        .mul_add(
+                            t10
+                                .mul_add(
+                                    -(x.c4 * t17) - x.s4 * t16,
+                                    t11
+                                        * x
+                                            .s5
+                                            .mul_add(
+                                                x.k4.mul_add(t7, t15),
+                                                x.c5 * (x.c4 * t16 - x.s4 * t17),
+                                            ),
+                                ),
+                            x
+                                .k41
+                                .mul_add(
+                                    x
+                                        .k21
+                                        .mul_add(
+                                            t2 * x.k54.mul_add(t6, x.k25 * t4),
+                                            x.k22.mul_add(t7 * t15, x.k55 * (t7 * t14)),
+                                        ),
+                                    x
+                                        .k31
+                                        .mul_add(
+                                            qd_[0] * qd_[0],
+                                            qd_[1]
+                                                .mul_add(
+                                                    x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1)),
+                                                    t2
+                                                        .mul_add(
+                                                            x.k11.mul_add(qd_[1], x.k9 * t1),
+                                                            t1 * x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1)),
+                                                        ),
+                                                ),
+                                        ),
+                                )
+                                + t7
+                                    .mul_add(
+                                        x.k26.mul_add(t7, x.k12 * t6),
+                                        t6
+                                            .mul_add(
+                                                x.k12.mul_add(t7, x.k24 * t4),
+                                                t4 * x.k24.mul_add(t6, x.k27 * t4),
+                                            ),
+                                    ) + x.k20.mul_add(t9 * t9, x.k6 * (t8 * t8)),
+                        ) + x.k18.mul_add(t11 * t11, x.k15 * (t10 * t10)),
+                )
     }
     /// The potential energy.
     #[inline]

@@ -15,8 +15,10 @@
 //! then the rest.
 //! A node used once is written inline in its user; a node used more often gets a `let tN`,
 //! numbered in order of appearance; each output element gets a name saying what it is
-//! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, and
-//! parentheses appear only where precedence or the order of evaluation needs them. The
+//! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, `x·y + z` is
+//! `x.mul_add(y, z)` (the runtime's `Real::mul_add`: one fused instruction where the target
+//! has FMA), and parentheses appear only where precedence or the order of evaluation needs
+//! them. The
 //! arguments are `q_`, `qd_` and `qdd_`: a pattern cannot shadow a constant, and a user's
 //! constant `q` would otherwise turn the argument into a constant pattern.
 
@@ -261,6 +263,8 @@ enum Place {
     MulLeft,
     /// Right of `*` or `/`, or under a unary minus.
     MulRight,
+    /// Before a method call's dot.
+    Receiver,
 }
 
 struct Emitter<'a> {
@@ -409,9 +413,11 @@ impl<'a> Emitter<'a> {
             return name.clone();
         }
         let wrap = match self.graph.node(id) {
+            // A fused multiply-add is a method call, which needs no parentheses.
+            Node::Add(a, b) if self.as_sub(a, b).is_none() && self.fusable(a, b).is_some() => false,
             Node::Add(..) => place != Place::Top && place != Place::AddLeft,
-            Node::Mul(..) | Node::Recip(_) => place == Place::MulRight,
-            Node::Neg(_) => place == Place::MulRight || place == Place::AddRight,
+            Node::Mul(..) | Node::Recip(_) => place == Place::MulRight || place == Place::Receiver,
+            Node::Neg(_) => matches!(place, Place::MulRight | Place::AddRight | Place::Receiver),
             _ => false,
         };
         let e = self.define(id);
@@ -429,6 +435,12 @@ impl<'a> Emitter<'a> {
                 if let Some((a, x)) = self.as_sub(a, b) {
                     let (a, x) = (self.expr(a, Place::AddLeft), self.expr(x, Place::AddRight));
                     quote!(#a - #x)
+                } else if let Some((x, y, other)) = self.fusable(a, b) {
+                    // `x·y + other` as one fused multiply-add where the target has one.
+                    self.ops.mul += 1;
+                    let (x, y) = (self.expr(x, Place::Receiver), self.expr(y, Place::Top));
+                    let other = self.expr(other, Place::Top);
+                    quote!(#x.mul_add(#y, #other))
                 } else {
                     let (a, b) = (self.expr(a, Place::AddLeft), self.expr(b, Place::AddRight));
                     quote!(#a + #b)
@@ -461,6 +473,17 @@ impl<'a> Emitter<'a> {
             }
             Node::Const(_) | Node::Var(_) => self.leaf(id),
         }
+    }
+
+    /// `(x, y, other)` if `a + b` is `x·y + other` with the product written in place (not
+    /// bound to a name): the right operand's product first, as it is the later term.
+    fn fusable(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId, NodeId)> {
+        [(b, a), (a, b)]
+            .into_iter()
+            .find_map(|(m, other)| match self.graph.node(m) {
+                Node::Mul(x, y) if self.names[m.index()].is_none() => Some((x, y, other)),
+                _ => None,
+            })
     }
 
     /// `let name = expr;` for node `id`, which from then on is read by its name; an output

@@ -35,6 +35,10 @@ pub trait Real:
     fn sin(self) -> Self;
     /// Cosine.
     fn cos(self) -> Self;
+    /// `self * a + b`, fused into one instruction with one rounding where the build has FMA
+    /// (`-C target-cpu=native` on most x86-64 machines, every aarch64) and std; otherwise the
+    /// two operations.
+    fn mul_add(self, a: Self, b: Self) -> Self;
     /// The sines and the cosines of four arguments, computed side by side (in vector
     /// registers where the build enables AVX2); each pair equals [`Real::sin_cos`] of its
     /// argument, bit for bit.
@@ -66,6 +70,21 @@ macro_rules! impl_real {
             #[inline(always)]
             fn cos(self) -> Self {
                 $sin_cos(self).1
+            }
+            #[inline(always)]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                // Only where it is one instruction: elsewhere std's `mul_add` is a slow
+                // software routine.
+                #[cfg(all(
+                    feature = "std",
+                    any(target_feature = "fma", target_arch = "aarch64")
+                ))]
+                return <$t>::mul_add(self, a, b);
+                #[cfg(not(all(
+                    feature = "std",
+                    any(target_feature = "fma", target_arch = "aarch64")
+                )))]
+                return self * a + b;
             }
             #[inline(always)]
             fn sin_cos_4(x: [Self; 4]) -> ([Self; 4], [Self; 4]) {
