@@ -100,17 +100,7 @@ fn flags<'a>(options: &'a [String], allowed: &[&str]) -> Result<Vec<&'a str>, Fa
 fn load(path: &str) -> Result<Robot, Failure> {
     let text = std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}"), 1))?;
     let loaded = model::load(path, &text).map_err(|e| Failure(format!("{path}:{e}"), 1))?;
-    // `file:line:col: ` of joint `i`'s `key`, where the file says it
-    let at = |i: usize, key: &str| {
-        loaded
-            .positions
-            .get(i)
-            .and_then(|p| p.get(key))
-            .map_or_else(
-                || format!("{path}: "),
-                |(line, column)| format!("{path}:{line}:{column}: "),
-            )
-    };
+    let at = |i: usize, key: &str| loaded.at(path, i, key);
     let robot = &loaded.robot;
     let mut problems = Vec::new();
     if robot.dof() > check::MAX_JOINTS {

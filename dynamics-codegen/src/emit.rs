@@ -279,7 +279,6 @@ struct Emitter<'a> {
     /// Nodes computed elsewhere (the configuration's fields): marking stops there.
     stop: Vec<bool>,
     temporaries: usize,
-    ops: OpCount,
 }
 
 impl<'a> Emitter<'a> {
@@ -294,7 +293,6 @@ impl<'a> Emitter<'a> {
             names: vec![None; n],
             stop: vec![false; n],
             temporaries: 0,
-            ops: OpCount::default(),
         }
     }
 
@@ -431,13 +429,11 @@ impl<'a> Emitter<'a> {
     fn define(&mut self, id: NodeId) -> TokenStream {
         match self.graph.node(id) {
             Node::Add(a, b) => {
-                self.ops.add += 1;
                 if let Some((a, x)) = self.as_sub(a, b) {
                     let (a, x) = (self.expr(a, Place::AddLeft), self.expr(x, Place::AddRight));
                     quote!(#a - #x)
                 } else if let Some((x, y, other)) = self.fusable(a, b) {
                     // `x·y + other` as one fused multiply-add where the target has one.
-                    self.ops.mul += 1;
                     let (x, y) = (self.expr(x, Place::Receiver), self.expr(y, Place::Top));
                     let other = self.expr(other, Place::Top);
                     quote!(#x.mul_add(#y, #other))
@@ -447,27 +443,22 @@ impl<'a> Emitter<'a> {
                 }
             }
             Node::Mul(a, b) => {
-                self.ops.mul += 1;
                 let (a, b) = (self.expr(a, Place::MulLeft), self.expr(b, Place::MulRight));
                 quote!(#a * #b)
             }
             Node::Neg(a) => {
-                self.ops.neg += 1;
                 let a = self.expr(a, Place::MulRight);
                 quote!(-#a)
             }
             Node::Recip(a) => {
-                self.ops.div += 1;
                 let a = self.expr(a, Place::MulRight);
                 quote!(T::ONE / #a)
             }
             Node::Sin(a) => {
-                self.ops.trig += 1;
                 let a = self.expr(a, Place::Top);
                 quote!(T::sin(#a))
             }
             Node::Cos(a) => {
-                self.ops.trig += 1;
                 let a = self.expr(a, Place::Top);
                 quote!(T::cos(#a))
             }

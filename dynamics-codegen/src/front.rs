@@ -576,20 +576,10 @@ fn load_file(
             return None;
         }
     };
-    let robot = loaded.robot;
-    // `file:line:col: ` for joint `i`'s `key`, where the file says it.
-    let at = |i: usize, key: &str| {
-        loaded
-            .positions
-            .get(i)
-            .and_then(|p| p.get(key))
-            .map_or_else(
-                || format!("{relative}: "),
-                |(line, column)| format!("{relative}:{line}:{column}: "),
-            )
-    };
+    let robot = &loaded.robot;
+    let at = |i: usize, key: &str| loaded.at(&relative, i, key);
     for name in robot.fields() {
-        let (i, key) = field_location(&robot, &name);
+        let (i, key) = field_location(robot, &name);
         let at = i.map_or_else(|| format!("{relative}: "), |i| at(i, key));
         match fields.iter().find(|f| f.name == name) {
             None => errors.push(
@@ -635,7 +625,7 @@ fn load_file(
             );
         }
     }
-    Some(robot)
+    Some(loaded.robot)
 }
 
 /// The first joint (`None` for gravity) and file key whose value names field `name`.

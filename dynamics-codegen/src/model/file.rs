@@ -128,6 +128,21 @@ pub struct Loaded {
     pub positions: Vec<BTreeMap<String, (usize, usize)>>,
 }
 
+impl Loaded {
+    /// `path:line:col: ` where the file gives joint `joint`'s `key`, or `path: ` when it does
+    /// not say: the prefix of a message about that value.
+    #[must_use]
+    pub fn at(&self, path: &str, joint: usize, key: &str) -> String {
+        self.positions
+            .get(joint)
+            .and_then(|p| p.get(key))
+            .map_or_else(
+                || format!("{path}: "),
+                |(line, column)| format!("{path}:{line}:{column}: "),
+            )
+    }
+}
+
 /// An error in a description file, with the 1-based line and column where known.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FileError {
