@@ -58,7 +58,7 @@ struct __DynamicsConfiguration<T> {
     k35: T,
     m4_4: T,
     t7: T,
-    k36: T,
+    k38: T,
     k39: T,
     k40: T,
     m3_4: T,
@@ -71,13 +71,18 @@ struct __DynamicsConfiguration<T> {
     m1_2: T,
     m1_1: T,
     t60: T,
+    t64: T,
     m1_3: T,
+    t67: T,
     m2_4: T,
+    t76: T,
     m1_4: T,
     t78: T,
     m3_5: T,
+    t86: T,
     m2_5: T,
     t99: T,
+    t100: T,
     m1_5: T,
     m4_6: T,
     m2_6: T,
@@ -100,52 +105,40 @@ struct __DynamicsConfiguration<T> {
     p: T,
     t120: T,
     t124: T,
+    t126: T,
     t127: T,
+    t130: T,
+    t133: T,
     t135: T,
     t137: T,
     t139: T,
+    t146: T,
     t147: T,
     t149: T,
+    t151: T,
+    t152: T,
     t155: T,
     t156: T,
+    t158: T,
+    t162: T,
+    t163: T,
     t164: T,
+    k67: T,
     t173: T,
+    t176: T,
+    t183: T,
     t184: T,
     t185: T,
+    t187: T,
+    t188: T,
+    t190: T,
+    t191: T,
     t192: T,
+    t193: T,
     t194: T,
-    t195: T,
-    t196: T,
-    t197: T,
-    t198: T,
     k68: T,
-    t199: T,
-    t200: T,
-    t201: T,
-    t202: T,
-    t203: T,
-    t204: T,
     k69: T,
-    t205: T,
     k70: T,
-    t206: T,
-    t207: T,
-    t208: T,
-    t209: T,
-    t210: T,
-    t211: T,
-    t212: T,
-    t213: T,
-    t214: T,
-    t215: T,
-    t216: T,
-    t217: T,
-    t218: T,
-    t219: T,
-    t220: T,
-    t221: T,
-    t222: T,
-    t223: T,
 }
 impl Puma560 {
     #[doc(hidden)]
@@ -523,41 +516,12 @@ impl Puma560 {
                 s2 * (t159 + (c3 * t189 - s3 * t170)),
             );
         let t192 = k37.mul_add(c5, t21);
-        let t193 = k40 * t67;
-        let t194 = k40.mul_add(t134, t192);
-        let t195 = c2
+        let t193 = k40.mul_add(t134, t192);
+        let t194 = c2
             .mul_add(
                 t148 + t154 + k45.mul_add(-t102 - t101, t24),
-                s2 * k43.mul_add(t134, t153 + t193),
+                s2 * k43.mul_add(t134, k40.mul_add(t67, t153)),
             );
-        let t196 = t64 + t126;
-        let t197 = t76 + t151;
-        let t198 = t100 + t187;
-        let t199 = t130 + t152;
-        let t200 = t133 + t188;
-        let t201 = t163 + t191;
-        let t202 = t126 - t64;
-        let t203 = t151 - t76;
-        let t204 = t187 - t100;
-        let t205 = t162 + t190;
-        let t206 = t64 - t126;
-        let t207 = t152 - t130;
-        let t208 = t188 - t133;
-        let t209 = t146 + t193;
-        let t210 = k38.mul_add(t86, t183);
-        let t211 = t158 + t176;
-        let t212 = t76 - t151;
-        let t213 = t130 - t152;
-        let t214 = t191 - t163;
-        let t215 = t129 - t146;
-        let t216 = t190 - t162;
-        let t217 = t176 - t158;
-        let t218 = t100 - t187;
-        let t219 = t133 - t188;
-        let t220 = t163 - t191;
-        let t221 = t132 - t183;
-        let t222 = t162 - t190;
-        let t223 = t158 - t176;
         __DynamicsConfiguration {
             k1,
             s2,
@@ -606,7 +570,7 @@ impl Puma560 {
             k35,
             m4_4,
             t7,
-            k36,
+            k38,
             k39,
             k40,
             m3_4,
@@ -619,13 +583,18 @@ impl Puma560 {
             m1_2,
             m1_1,
             t60,
+            t64,
             m1_3,
+            t67,
             m2_4,
+            t76,
             m1_4,
             t78,
             m3_5,
+            t86,
             m2_5,
             t99,
+            t100,
             m1_5,
             m4_6,
             m2_6,
@@ -648,52 +617,40 @@ impl Puma560 {
             p,
             t120,
             t124,
+            t126,
             t127,
+            t130,
+            t133,
             t135,
             t137,
             t139,
+            t146,
             t147,
             t149,
+            t151,
+            t152,
             t155,
             t156,
+            t158,
+            t162,
+            t163,
             t164,
+            k67,
             t173,
+            t176,
+            t183,
             t184,
             t185,
+            t187,
+            t188,
+            t190,
+            t191,
             t192,
+            t193,
             t194,
-            t195,
-            t196,
-            t197,
-            t198,
             k68,
-            t199,
-            t200,
-            t201,
-            t202,
-            t203,
-            t204,
             k69,
-            t205,
             k70,
-            t206,
-            t207,
-            t208,
-            t209,
-            t210,
-            t211,
-            t212,
-            t213,
-            t214,
-            t215,
-            t216,
-            t217,
-            t218,
-            t219,
-            t220,
-            t221,
-            t222,
-            t223,
         }
     }
 }
@@ -737,92 +694,10 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
         let x = self.__dynamics_configuration(q_);
-        /// C11 = sum of D11k qd_k (6.44)
-        let cor1_1 = x
-            .k1
-            .mul_add(
-                qd_[4] * x.t185,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[3] * x.t149,
-                        x.k1.mul_add(qd_[2] * x.t124, qd_[1] * x.t120),
-                    ),
-            );
-        let t1 = qd_[0] * x.t120;
-        let t2 = qd_[5] * x.t108;
-        /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = x
-            .k68
-            .mul_add(
-                t2,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[4] * x.t198,
-                        x
-                            .k1
-                            .mul_add(
-                                qd_[3] * x.t197,
-                                x.k1.mul_add(qd_[2] * x.t196, qd_[1].mul_add(x.t59, t1)),
-                            ),
-                    ),
-            );
-        let t3 = qd_[0] * x.t124;
-        let t4 = qd_[5] * x.t135;
-        /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = x
-            .k68
-            .mul_add(
-                t4,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[4] * x.t200,
-                        x
-                            .k1
-                            .mul_add(
-                                qd_[3] * x.t199,
-                                qd_[2].mul_add(x.t127, x.k1 * qd_[1].mul_add(x.t196, t3)),
-                            ),
-                    ),
-            );
-        let t5 = qd_[0] * x.t149;
-        let t6 = qd_[5] * x.t164;
-        /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = x
-            .k68
-            .mul_add(
-                t6,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[4] * x.t201,
-                        qd_[3]
-                            .mul_add(
-                                x.t156,
-                                x.k1 * qd_[2].mul_add(x.t199, qd_[1].mul_add(x.t197, t5)),
-                            ),
-                    ),
-            );
-        let t7 = qd_[0] * x.t185;
-        let t8 = qd_[5] * x.t99;
-        /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = x
-            .k68
-            .mul_add(
-                t8,
-                qd_[4]
-                    .mul_add(
-                        x.t195,
-                        x.k1
-                            * qd_[3]
-                                .mul_add(
-                                    x.t201,
-                                    qd_[2].mul_add(x.t200, qd_[1].mul_add(x.t198, t7)),
-                                ),
-                    ),
-            );
+        let t1 = qd_[1] * x.t59;
+        let t2 = qd_[2] * x.t127;
+        let t3 = qd_[3] * x.t156;
+        let t4 = qd_[4] * x.t194;
         /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = x.k68
             * qd_[4]
@@ -830,200 +705,199 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                     x.t99,
                     qd_[3].mul_add(x.t164, qd_[2].mul_add(x.t135, qd_[1] * x.t108)),
                 );
-        /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = x
-            .k69
-            .mul_add(
-                t2,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[4] * x.t204,
-                        x.k1.mul_add(qd_[3] * x.t203, x.k1 * (qd_[2] * x.t202) - t1),
-                    ),
-            );
-        let t9 = x.k2 * (qd_[2] * x.t60);
-        let t10 = x.k1 * (qd_[3] * x.t147);
-        let t11 = x.k1 * (qd_[4] * x.t184);
-        /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = t9 + t10 + t11;
-        let t12 = qd_[1] * x.t60;
-        /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = t11 + (t10 + (t9 + x.k2.mul_add(t12, x.k1 * (qd_[0] * x.t202))));
-        let t13 = qd_[1] * x.t147;
-        let t14 = qd_[5] * x.t7;
-        let t15 = x.k69 * t14;
-        /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = x
-            .k1
-            .mul_add(
-                qd_[4] * x.t205,
-                qd_[3]
-                    .mul_add(
-                        x.t155,
-                        x.k1 * qd_[2].mul_add(x.t147, qd_[0].mul_add(x.t203, t13)),
-                    ),
-            ) + t15;
-        let t16 = qd_[1] * x.t184;
-        let t17 = qd_[5] * x.t78;
-        let t18 = x.k69 * t17;
-        /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = qd_[4]
-            .mul_add(
-                x.t194,
-                x.k1
-                    * qd_[3]
-                        .mul_add(
-                            x.t205,
-                            qd_[2].mul_add(x.t184, qd_[0].mul_add(x.t204, t16)),
-                        ),
-            ) + t18;
-        let t19 = qd_[0] * x.t108;
-        let t20 = qd_[3] * x.t7;
-        let t21 = qd_[4] * x.t78;
-        /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = x.k69 * (t19 + t20 + t21);
-        /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = x
-            .k69
-            .mul_add(
-                t4,
-                x.k70 * (t3 - qd_[1] * x.t206 - qd_[3] * x.t207 - qd_[4] * x.t208),
-            );
-        /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = x
-            .k1
-            .mul_add(
-                qd_[4] * x.t210,
-                x
-                    .k1
-                    .mul_add(
-                        qd_[3] * x.t209,
-                        x.k21.mul_add(t12, x.k1 * (qd_[0] * x.t206)),
-                    ),
-            );
+        let t5 = qd_[2] * x.t60;
+        let t6 = x.k2 * t5;
+        let t7 = qd_[3] * x.t155;
+        let t8 = qd_[4] * x.t193;
+        let t9 = qd_[0] * x.t108;
         /// C33 = sum of D33k qd_k (6.44)
         let cor3_3 = x.k1 * qd_[4].mul_add(x.t173, qd_[3] * x.t137);
-        let t22 = qd_[2] * x.t137;
-        /// C34 = sum of D34k qd_k (6.44)
-        let cor3_4 = t15
-            + x
-                .k1
-                .mul_add(
-                    qd_[4] * x.t211,
-                    qd_[3]
-                        .mul_add(
-                            x.t139,
-                            x.k1 * (qd_[1].mul_add(x.t209, qd_[0] * x.t207) + t22),
-                        ),
-                );
-        let t23 = qd_[2] * x.t173;
-        /// C35 = sum of D35k qd_k (6.44)
-        let cor3_5 = t18
-            + qd_[4]
-                .mul_add(
-                    x.t192,
-                    x.k1
-                        * qd_[3]
-                            .mul_add(
-                                x.t211,
-                                qd_[1].mul_add(x.t210, qd_[0] * x.t208) + t23,
-                            ),
-                );
-        let t24 = qd_[0] * x.t135;
-        /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = x.k69 * (t21 + (t20 + t24));
-        /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = x
-            .k69
-            .mul_add(
-                t6,
-                x.k70 * (t5 - qd_[1] * x.t212 - qd_[2] * x.t213 - qd_[4] * x.t214),
-            );
-        let t25 = x.k68 * t14;
-        /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = x
-            .k1
-            .mul_add(
-                qd_[4].mul_add(x.t216, qd_[2].mul_add(x.t215, qd_[0] * x.t212 - t13)),
-                t25,
-            );
-        /// C43 = sum of D43k qd_k (6.44)
-        let cor4_3 = x
-            .k1
-            .mul_add(
-                qd_[4].mul_add(x.t217, qd_[1].mul_add(x.t215, qd_[0] * x.t213) - t22),
-                t25,
-            );
+        let t10 = qd_[3] * x.t139;
+        let t11 = qd_[4] * x.t192;
+        let t12 = qd_[0] * x.t135;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = x.k34 * (qd_[4] * x.t3);
-        let t26 = qd_[3] * x.t3;
-        let t27 = x.s5 * qd_[5];
-        /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = x
-            .k68
-            .mul_add(
-                t27,
-                x
-                    .k34
-                    .mul_add(
-                        t26,
-                        x.k1
-                            * qd_[2]
-                                .mul_add(x.t217, qd_[1].mul_add(x.t216, qd_[0] * x.t214)),
-                    ),
-            );
-        let t28 = qd_[0] * x.t164 - qd_[1] * x.t7 - qd_[2] * x.t7;
-        let t29 = x.s5 * qd_[4];
-        /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = x.k69 * (t28 - t29);
-        /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = x
-            .k69
-            .mul_add(
-                t8,
-                x.k70 * (t7 - qd_[1] * x.t218 - qd_[2] * x.t219 - qd_[3] * x.t220),
-            );
-        let t30 = x.k68 * t17;
-        /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = x
-            .k1
-            .mul_add(
-                qd_[3].mul_add(x.t222, qd_[2].mul_add(x.t221, qd_[0] * x.t218 - t16)),
-                t30,
-            );
-        /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = x
-            .k1
-            .mul_add(
-                qd_[3].mul_add(x.t223, qd_[1].mul_add(x.t221, qd_[0] * x.t219) - t23),
-                t30,
-            );
-        /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = x
-            .k69
-            .mul_add(
-                t27,
-                x
-                    .k36
-                    .mul_add(
-                        t26,
-                        x.k1
-                            * qd_[2]
-                                .mul_add(x.t223, qd_[1].mul_add(x.t222, qd_[0] * x.t220)),
-                    ),
-            );
-        let t31 = x.s5.mul_add(qd_[3], qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78);
+        let t13 = qd_[0] * x.t164 - qd_[1] * x.t7 - qd_[2] * x.t7;
+        let t14 = x.s5 * qd_[4];
+        let t15 = x.s5.mul_add(qd_[3], qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = x.k69 * t31;
-        /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = x.k68 * (t19 - t20 - t21);
-        /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = x.k68 * (t24 - t20 - t21);
+        let cor5_6 = x.k69 * t15;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = x.k68 * (t28 + t29);
+        let cor6_4 = x.k68 * (t13 + t14);
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = x.k68 * t31;
+        let cor6_5 = x.k68 * t15;
+        /// C11 = sum of D11k qd_k (6.44)
+        let cor1_1 = x.k1
+            * qd_[4]
+                .mul_add(
+                    x.t185,
+                    qd_[3]
+                        .mul_add(x.t149, x.k41.mul_add(qd_[1] * x.t120, qd_[2] * x.t124)),
+                );
+        let t16 = qd_[4]
+            .mul_add(x.t187, qd_[3].mul_add(x.t151, qd_[2].mul_add(x.t126, t1)));
+        let t17 = x
+            .k32
+            .mul_add(
+                qd_[5] * x.t108,
+                qd_[4]
+                    .mul_add(
+                        x.t100,
+                        qd_[3]
+                            .mul_add(
+                                x.t76,
+                                qd_[2].mul_add(x.t64, x.k41.mul_add(qd_[0] * x.t120, t1)),
+                            ),
+                    ),
+            );
+        /// C12 = sum of D12k qd_k (6.44)
+        let cor1_2 = x.k1 * (t16 + t17);
+        /// C21 = sum of D21k qd_k (6.44)
+        let cor2_1 = x.k1 * (t16 - t17);
+        let t18 = qd_[4]
+            .mul_add(x.t188, qd_[3].mul_add(x.t152, qd_[1].mul_add(x.t64, t2)));
+        let t19 = x
+            .k32
+            .mul_add(
+                qd_[5] * x.t135,
+                qd_[4]
+                    .mul_add(
+                        x.t133,
+                        qd_[3]
+                            .mul_add(
+                                x.t130,
+                                t2 + qd_[1].mul_add(x.t126, qd_[0] * x.t124),
+                            ),
+                    ),
+            );
+        /// C13 = sum of D13k qd_k (6.44)
+        let cor1_3 = x.k1 * (t18 + t19);
+        /// C31 = sum of D31k qd_k (6.44)
+        let cor3_1 = x.k1 * (t18 - t19);
+        let t20 = qd_[4].mul_add(x.t191, t3 + qd_[2].mul_add(x.t130, qd_[1] * x.t76));
+        let t21 = x
+            .k32
+            .mul_add(
+                qd_[5] * x.t164,
+                qd_[4]
+                    .mul_add(
+                        x.t163,
+                        t3
+                            + qd_[2]
+                                .mul_add(x.t152, qd_[1].mul_add(x.t151, qd_[0] * x.t149)),
+                    ),
+            );
+        /// C14 = sum of D14k qd_k (6.44)
+        let cor1_4 = x.k1 * (t20 + t21);
+        /// C41 = sum of D41k qd_k (6.44)
+        let cor4_1 = x.k1 * (t20 - t21);
+        let t22 = t4 + qd_[3].mul_add(x.t163, qd_[2].mul_add(x.t133, qd_[1] * x.t100));
+        let t23 = x
+            .k32
+            .mul_add(
+                qd_[5] * x.t99,
+                t4
+                    + qd_[3]
+                        .mul_add(
+                            x.t191,
+                            qd_[2]
+                                .mul_add(x.t188, qd_[1].mul_add(x.t187, qd_[0] * x.t185)),
+                        ),
+            );
+        /// C15 = sum of D15k qd_k (6.44)
+        let cor1_5 = x.k1 * (t22 + t23);
+        /// C51 = sum of D51k qd_k (6.44)
+        let cor5_1 = x.k1 * (t22 - t23);
+        /// C22 = sum of D22k qd_k (6.44)
+        let cor2_2 = x.k1 * qd_[4].mul_add(x.t184, x.k53.mul_add(t5, qd_[3] * x.t147));
+        let t24 = qd_[4].mul_add(x.t183, qd_[3].mul_add(x.t146, t6));
+        let t25 = x
+            .k40
+            .mul_add(
+                qd_[4] * x.t86,
+                x
+                    .k38
+                    .mul_add(
+                        qd_[3] * x.t67,
+                        t6 + x.k53.mul_add(qd_[1] * x.t60, qd_[0] * x.t126),
+                    ),
+            ) - qd_[0] * x.t64;
+        /// C23 = sum of D23k qd_k (6.44)
+        let cor2_3 = x.k1 * (t24 + t25);
+        /// C32 = sum of D32k qd_k (6.44)
+        let cor3_2 = x.k1 * (t24 - t25);
+        let t26 = qd_[4].mul_add(x.t190, x.k38.mul_add(qd_[2] * x.t67, t7));
+        let t27 = x.k7 * (qd_[5] * x.t7);
+        let t28 = qd_[4]
+            .mul_add(
+                x.t162,
+                t7 + qd_[2].mul_add(x.t146, qd_[0].mul_add(x.t151, qd_[1] * x.t147)),
+            ) + t27 - qd_[0] * x.t76;
+        /// C24 = sum of D24k qd_k (6.44)
+        let cor2_4 = x.k1 * (t26 + t28);
+        /// C42 = sum of D42k qd_k (6.44)
+        let cor4_2 = x.k1 * (t26 - t28);
+        let t29 = t8 + qd_[3].mul_add(x.t162, x.k40 * (qd_[2] * x.t86));
+        let t30 = x.k7 * (qd_[5] * x.t78);
+        let t31 = t8
+            + qd_[3]
+                .mul_add(
+                    x.t190,
+                    qd_[2].mul_add(x.t183, qd_[0].mul_add(x.t187, qd_[1] * x.t184)),
+                ) + t30 - qd_[0] * x.t100;
+        /// C25 = sum of D25k qd_k (6.44)
+        let cor2_5 = x.k1 * (t29 + t31);
+        /// C52 = sum of D52k qd_k (6.44)
+        let cor5_2 = x.k1 * (t29 - t31);
+        let t32 = qd_[4].mul_add(x.t78, qd_[3] * x.t7);
+        /// C26 = sum of D26k qd_k (6.44)
+        let cor2_6 = x.k69 * (t9 + t32);
+        /// C62 = sum of D62k qd_k (6.44)
+        let cor6_2 = x.k69 * (t32 - t9);
+        let t33 = qd_[4].mul_add(x.t176, t10);
+        let t34 = t27
+            + qd_[4]
+                .mul_add(
+                    x.t158,
+                    t10 + qd_[2].mul_add(x.t137, qd_[1].mul_add(x.t146, qd_[0] * x.t152)),
+                ) - x.k38.mul_add(qd_[1] * x.t67, qd_[0] * x.t130);
+        /// C34 = sum of D34k qd_k (6.44)
+        let cor3_4 = x.k1 * (t33 + t34);
+        /// C43 = sum of D43k qd_k (6.44)
+        let cor4_3 = x.k1 * (t33 - t34);
+        let t35 = qd_[3].mul_add(x.t158, t11);
+        let t36 = t30
+            + (t11
+                + qd_[3]
+                    .mul_add(
+                        x.t176,
+                        qd_[2].mul_add(x.t173, qd_[1].mul_add(x.t183, qd_[0] * x.t188)),
+                    )) - x.k40.mul_add(qd_[1] * x.t86, qd_[0] * x.t133);
+        /// C35 = sum of D35k qd_k (6.44)
+        let cor3_5 = x.k1 * (t35 + t36);
+        /// C53 = sum of D53k qd_k (6.44)
+        let cor5_3 = x.k1 * (t35 - t36);
+        /// C36 = sum of D36k qd_k (6.44)
+        let cor3_6 = x.k69 * (t12 + t32);
+        /// C63 = sum of D63k qd_k (6.44)
+        let cor6_3 = x.k69 * (t32 - t12);
+        let t37 = x
+            .k32
+            .mul_add(
+                x.s5 * qd_[5],
+                x
+                    .k67
+                    .mul_add(
+                        qd_[3] * x.t3,
+                        qd_[2].mul_add(x.t176, qd_[1].mul_add(x.t190, qd_[0] * x.t191)),
+                    ),
+            ) - qd_[2].mul_add(x.t158, qd_[1].mul_add(x.t162, qd_[0] * x.t163));
+        /// C45 = sum of D45k qd_k (6.44)
+        let cor4_5 = x.k1 * t37;
+        /// C54 = sum of D54k qd_k (6.44)
+        let cor5_4 = x.k70 * t37;
+        /// C46 = sum of D46k qd_k (6.44)
+        let cor4_6 = x.k68 * (t14 - t13);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],

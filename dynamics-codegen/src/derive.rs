@@ -3,13 +3,14 @@
 //!
 //! * `M` by the composite rigid body algorithm, plus actuator inertia on the diagonal;
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` (the book's
-//!   D_ijk, eq. 6.44) by differentiating `M`'s graph, and `C_ij = Σ_k Γ_ijk q̇_k`;
+//!   D_ijk, eq. 6.44) by differentiating `M`'s graph, and `C_ij = Σ_k Γ_ijk q̇_k`, summed as
+//!   `½(Ṁ_ij + P_ij − P_ji)` with `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`;
 //! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * the kinetic and potential energy.
 
 use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
 use crate::model::{Convention, Robot, Value};
-use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
+use crate::symbolic::{Expr, Graph, Node, NodeId, Number, Var};
 use std::cell::RefCell;
 use std::ops::Mul;
 
@@ -268,26 +269,73 @@ pub fn derive(robot: &Robot) -> Equations {
     let mut g = graph.into_inner();
     let dm: Vec<Vec<NodeId>> = (0..n).map(|k| g.derivative(&flat, idx(k))).collect();
     let d = |k: usize, i: usize, j: usize| dm[k][i * n + j];
-    let mut christoffel = vec![vec![vec![half_id; n]; n]; n];
-    let mut coriolis = vec![vec![half_id; n]; n];
+    // Γ_ijk = Γ_ikj: built from the ordered pair, so that hash-consing shares the node.
+    let christoffel: Vec<Vec<Vec<NodeId>>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    (0..n)
+                        .map(|k| {
+                            let (j, k) = (j.min(k), j.max(k));
+                            let s = g.add(d(k, i, j), d(j, i, k));
+                            let s = g.sub(s, d(i, j, k));
+                            g.mul(half_id, s)
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+        .collect();
+    // C_ij = Σ_k Γ_ijk q̇_k, summed two ways; the cheaper one is kept (which one wins depends
+    // on the robot's zeros: PUMA 560 and the 7-joint arm prefer the second, 6-joint random
+    // robots the first).
+    let contract = |g: &mut Graph, term: &dyn Fn(usize) -> NodeId| {
+        let mut sum = g.num(Number::ZERO);
+        for (k, &qd_k) in qd_ids.iter().enumerate() {
+            let t = g.mul(term(k), qd_k);
+            sum = g.add(sum, t);
+        }
+        sum
+    };
+    let by_symbols: Vec<Vec<NodeId>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| contract(&mut g, &|k| christoffel[i][j][k]))
+                .collect()
+        })
+        .collect();
+    // ½(Ṁ_ij + P_ij − P_ji), with Ṁ_ij = Σ_k ∂M_ij/∂q_k q̇_k and P_ij = Σ_k ∂M_ik/∂q_j q̇_k:
+    // the same sums without forming the n³ symbols.
+    let mut by_derivatives = vec![vec![half_id; n]; n];
+    #[allow(clippy::needless_range_loop)] // fills C_ij and C_ji together
     for i in 0..n {
-        for j in 0..n {
-            let mut c = g.num(Number::ZERO);
-            for k in 0..n {
-                let gamma = if k < j {
-                    christoffel[i][k][j]
-                } else {
-                    let s = g.add(d(k, i, j), d(j, i, k));
-                    let s = g.sub(s, d(i, j, k));
-                    g.mul(half_id, s)
-                };
-                christoffel[i][j][k] = gamma;
-                let term = g.mul(gamma, qd_ids[k]);
-                c = g.add(c, term);
-            }
-            coriolis[i][j] = c;
+        let m_dot = contract(&mut g, &|k| d(k, i, i));
+        by_derivatives[i][i] = g.mul(half_id, m_dot);
+        for j in i + 1..n {
+            let m_dot = contract(&mut g, &|k| d(k, i, j));
+            let p_ij = contract(&mut g, &|k| d(j, i, k));
+            let p_ji = contract(&mut g, &|k| d(i, j, k));
+            let skew = g.sub(p_ij, p_ji);
+            let upper = g.add(m_dot, skew);
+            let lower = g.sub(m_dot, skew);
+            by_derivatives[i][j] = g.mul(half_id, upper);
+            by_derivatives[j][i] = g.mul(half_id, lower);
         }
     }
+    let cost = |c: &[Vec<NodeId>]| {
+        let flat: Vec<NodeId> = c.iter().flatten().copied().collect();
+        let live = g.live(&flat);
+        g.nodes()
+            .filter(|(id, node)| {
+                live[id.index()] && matches!(node, Node::Add(..) | Node::Mul(..) | Node::Neg(_))
+            })
+            .count()
+    };
+    let coriolis = if cost(&by_derivatives) < cost(&by_symbols) {
+        by_derivatives
+    } else {
+        by_symbols
+    };
 
     Equations {
         graph: g,
