@@ -40,8 +40,8 @@ pub trait Real:
     /// two operations.
     fn mul_add(self, a: Self, b: Self) -> Self;
     /// The sines and the cosines of four arguments, computed side by side (in vector
-    /// registers where the build enables AVX2); each pair equals [`Real::sin_cos`] of its
-    /// argument, bit for bit.
+    /// registers on x86-64: SSE2 or AVX2 for `f64`, SSE for `f32`); each pair equals
+    /// [`Real::sin_cos`] of its argument, bit for bit.
     fn sin_cos_4(x: [Self; 4]) -> ([Self; 4], [Self; 4]);
 }
 

@@ -486,9 +486,9 @@ fn f32_exhaustive_fast_range() {
     worst.check("f32, every |x| <= 2^12", MAX_ULP_F32);
 }
 
-/// Four at once equals one at a time, bit for bit, in and out of the fast range (with AVX2
-/// builds, `RUSTFLAGS="-C target-cpu=native"`, this checks the vector path; `.ci/run` runs it
-/// both ways).
+/// Four at once equals one at a time, bit for bit, in and out of the fast range. On x86-64 this
+/// checks the vector paths: SSE2 pairs for `f64` and SSE quads for `f32` in a default build, AVX2
+/// lanes for `f64` with `RUSTFLAGS="-C target-cpu=native"` (`.ci/run` runs it both ways).
 #[test]
 fn four_at_once_equal_one_at_a_time() {
     use dynamics_runtime::Real;
