@@ -25,8 +25,6 @@ struct __DynamicsConfiguration<T> {
     s5: T,
     c5: T,
     k6: T,
-    s6: T,
-    c6: T,
     k7: T,
     k8: T,
     k9: T,
@@ -230,7 +228,6 @@ impl Puma560 {
             q_[3],
             q_[4],
         ]);
-        let (s6, c6) = T::sin_cos(q_[5]);
         let t1 = c5 * c5;
         let t2 = s5 * s5;
         let t3 = s5 * c5;
@@ -537,8 +534,6 @@ impl Puma560 {
             s5,
             c5,
             k6,
-            s6,
-            c6,
             k7,
             k8,
             k9,
@@ -966,24 +961,22 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t42 = t37.mul_add(t37, t35 * t35);
         let t43 = t38 + t40;
         let t44 = qd_[5] + t36;
-        let t45 = (x.c6 * t35 - x.s6 * t37) * t44;
-        let t46 = (-(x.c6 * t37) - x.s6 * t35) * t44;
         /// centripetal and Coriolis torque 6
         let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd_[4] * t35);
-        let t47 = x
-            .k7
+        let t45 = x
+            .k32
             .mul_add(
-                x.s6.mul_add(t45, x.c6 * t46),
+                t37 * t44,
                 x
                     .k17
                     .mul_add(-(x.c4 * t29) - x.s4 * t28, x.k18.mul_add(t40, x.k15 * t38)),
             );
-        let t48 = x.k13.mul_add(t35 * t37, cqd6);
+        let t46 = x.k13.mul_add(t35 * t37, cqd6);
         /// centripetal and Coriolis torque 5
         let cqd5 = x
-            .k32
+            .k7
             .mul_add(
-                x.s6 * t46 - x.c6 * t45,
+                t35 * t44,
                 x
                     .k17
                     .mul_add(
@@ -996,60 +989,60 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                         x.k16.mul_add(t39, x.k35 * t34),
                     ),
             );
-        let t49 = x.s5.mul_add(t42, x.c5 * t41);
-        let t50 = x.s5 * t41 - x.c5 * t42;
-        let t51 = x.k20.mul_add(t31 * t32, x.k6 * t33) + (x.c5 * t47 - x.s5 * t48);
-        let t52 = x.k57 * (t30 * t32) - cqd5;
+        let t47 = x.s5.mul_add(t42, x.c5 * t41);
+        let t48 = x.s5 * t41 - x.c5 * t42;
+        let t49 = x.k20.mul_add(t31 * t32, x.k6 * t33) + (x.c5 * t45 - x.s5 * t46);
+        let t50 = x.k57 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = x.k19.mul_add(t30 * t31, x.k20 * t18) + x.c5.mul_add(t48, x.s5 * t47);
-        let t53 = x.s4.mul_add(t43, x.c4 * t49);
-        let t54 = x.s4 * t49 - x.c4 * t43;
-        let t55 = x.k14.mul_add(t53, x.k25.mul_add(t20, x.k54 * t21));
-        let t56 = x.k14.mul_add(t50, x.k55.mul_add(t22, x.k22 * t20));
-        let t57 = x
+        let cqd4 = x.k19.mul_add(t30 * t31, x.k20 * t18) + x.c5.mul_add(t46, x.s5 * t45);
+        let t51 = x.s4.mul_add(t43, x.c4 * t47);
+        let t52 = x.s4 * t47 - x.c4 * t43;
+        let t53 = x.k14.mul_add(t51, x.k25.mul_add(t20, x.k54 * t21));
+        let t54 = x.k14.mul_add(t48, x.k55.mul_add(t22, x.k22 * t20));
+        let t55 = x
             .k40
             .mul_add(
-                t54,
+                t52,
                 x
                     .k25
                     .mul_add(
                         t11,
                         x.k24.mul_add(t18, x.k27 * t17) + (t13 * t27 - t16 * t26),
-                    ) + (x.c4 * t51 - x.s4 * t52),
+                    ) + (x.c4 * t49 - x.s4 * t50),
             );
-        let t58 = x
+        let t56 = x
             .k39
             .mul_add(
-                t54,
+                t52,
                 x.k54.mul_add(t11, x.k24.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
             );
         /// centripetal and Coriolis torque 3
         let cqd3 = x.k12.mul_add(t18, t12 * t26 - t13 * t25)
-            + x.k56.mul_add(t14, x.k23 * t15) - x.c4.mul_add(t52, x.s4 * t51)
-            + x.k40.mul_add(t53, x.k39 * t50);
-        let t59 = x.c3.mul_add(t56, x.s3 * t55);
+            + x.k56.mul_add(t14, x.k23 * t15) - x.c4.mul_add(t50, x.s4 * t49)
+            + x.k40.mul_add(t51, x.k39 * t48);
+        let t57 = x.c3.mul_add(t54, x.s3 * t53);
         /// centripetal and Coriolis torque 2
         let cqd2 = x
             .k2
-            .mul_add(t59, x.k10.mul_add(t4, x.k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
+            .mul_add(t57, x.k10.mul_add(t4, x.k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = x
             .c2
             .mul_add(
-                x.k9.mul_add(t3, qd_[1] * t8 - t1 * t10) + x.c3.mul_add(t58, x.s3 * t57)
+                x.k9.mul_add(t3, qd_[1] * t8 - t1 * t10) + x.c3.mul_add(t56, x.s3 * t55)
                     + x
                         .k21
                         .mul_add(
-                            x.k17.mul_add(t54, x.k25.mul_add(t24, x.k22 * t23)),
-                            x.k3 * (x.c3 * t55 - x.s3 * t56),
+                            x.k17.mul_add(t52, x.k25.mul_add(t24, x.k22 * t23)),
+                            x.k3 * (x.c3 * t53 - x.s3 * t54),
                         ),
                 x.s2
                     * x
                         .k44
                         .mul_add(
-                            t59,
+                            t57,
                             x.k8.mul_add(t4, x.k30 * t3) + (t2 * t10 - qd_[1] * t9)
-                                + (x.c3 * t57 - x.s3 * t58),
+                                + (x.c3 * t55 - x.s3 * t56),
                         ),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
@@ -1124,78 +1117,76 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t37 = t32.mul_add(t32, t30 * t30);
         let t38 = t33 + t35;
         let t39 = qd_[5] + t31;
-        let t40 = (x.c6 * t30 - x.s6 * t32) * t39;
-        let t41 = (-(x.c6 * t32) - x.s6 * t30) * t39;
         /// centripetal, Coriolis and gravity torque 6
         let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd_[4] * t30);
-        let t42 = x.k13.mul_add(t30 * t32, h6);
-        let t43 = x.s5.mul_add(t37, x.c5 * t36);
-        let t44 = x.s5 * t36 - x.c5 * t37;
-        let t45 = x.s4.mul_add(t38, x.c4 * t43);
-        let t46 = x.s4 * t43 - x.c4 * t38;
-        let t47 = x.k14.mul_add(t45, x.k25.mul_add(t16, x.k54 * t17));
-        let t48 = x.k14.mul_add(t44, x.k55.mul_add(t18, x.k22 * t16));
-        let t49 = x.c3.mul_add(t48, x.s3 * t47);
-        let t50 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t109);
-        let t51 = x.k2.mul_add(t1 * t2, x.t110);
-        let t52 = x.s3.mul_add(t51, x.c3 * t50);
-        let t53 = x.c3 * t51 - x.s3 * t50;
-        let t54 = x.k2.mul_add(t16, x.k5 * t17) + t52;
-        let t55 = x
-            .k7
+        let t40 = x.k13.mul_add(t30 * t32, h6);
+        let t41 = x.s5.mul_add(t37, x.c5 * t36);
+        let t42 = x.s5 * t36 - x.c5 * t37;
+        let t43 = x.s4.mul_add(t38, x.c4 * t41);
+        let t44 = x.s4 * t41 - x.c4 * t38;
+        let t45 = x.k14.mul_add(t43, x.k25.mul_add(t16, x.k54 * t17));
+        let t46 = x.k14.mul_add(t42, x.k55.mul_add(t18, x.k22 * t16));
+        let t47 = x.c3.mul_add(t46, x.s3 * t45);
+        let t48 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t109);
+        let t49 = x.k2.mul_add(t1 * t2, x.t110);
+        let t50 = x.s3.mul_add(t49, x.c3 * t48);
+        let t51 = x.c3 * t49 - x.s3 * t48;
+        let t52 = x.k2.mul_add(t16, x.k5 * t17) + t50;
+        let t53 = x
+            .k32
             .mul_add(
-                x.s6.mul_add(t40, x.c6 * t41),
+                t32 * t39,
                 x
                     .k17
-                    .mul_add(-(x.c4 * t24) - x.s4 * t54, x.k18.mul_add(t35, x.k15 * t33)),
+                    .mul_add(-(x.c4 * t24) - x.s4 * t52, x.k18.mul_add(t35, x.k15 * t33)),
             );
         /// centripetal, Coriolis and gravity torque 5
         let h5 = x
-            .k32
+            .k7
             .mul_add(
-                x.s6 * t41 - x.c6 * t40,
+                t30 * t39,
                 x
                     .k17
                     .mul_add(
                         x
                             .s5
                             .mul_add(
-                                x.k21.mul_add(t18, x.k4 * t16) + t53,
-                                x.c5 * (x.c4 * t54 - x.s4 * t24),
+                                x.k21.mul_add(t18, x.k4 * t16) + t51,
+                                x.c5 * (x.c4 * t52 - x.s4 * t24),
                             ),
                         x.k16.mul_add(t34, x.k35 * t29),
                     ),
             );
-        let t56 = x.k20.mul_add(t26 * t27, x.k6 * t28) + (x.c5 * t55 - x.s5 * t42);
-        let t57 = x.k57 * (t25 * t27) - h5;
+        let t54 = x.k20.mul_add(t26 * t27, x.k6 * t28) + (x.c5 * t53 - x.s5 * t40);
+        let t55 = x.k57 * (t25 * t27) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = x.k19.mul_add(t25 * t26, x.k20 * t14) + x.s5.mul_add(t55, x.c5 * t42);
-        let t58 = x
+        let h4 = x.k19.mul_add(t25 * t26, x.k20 * t14) + x.s5.mul_add(t53, x.c5 * t40);
+        let t56 = x
             .k40
             .mul_add(
-                t46,
+                t44,
                 x
                     .k25
                     .mul_add(
                         t9,
                         x.k24.mul_add(t14, x.k27 * t13) + (t11 * t23 - t12 * t22),
-                    ) + (x.c4 * t56 - x.s4 * t57),
+                    ) + (x.c4 * t54 - x.s4 * t55),
             );
-        let t59 = x
+        let t57 = x
             .k39
             .mul_add(
-                t46,
+                t44,
                 x.k54.mul_add(t9, x.k24.mul_add(t13, t12 * t21 - t10 * t23)) + h4,
             );
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = x.k40.mul_add(t45, x.k39 * t44)
+        let h3 = x.k40.mul_add(t43, x.k39 * t42)
             + (x.k12.mul_add(t14, t10 * t22 - t11 * t21)
-                + x.k55.mul_add(t52, x.k22 * t53) - x.c4.mul_add(t57, x.s4 * t56));
+                + x.k55.mul_add(t50, x.k22 * t51) - x.c4.mul_add(t55, x.s4 * t54));
         /// centripetal, Coriolis and gravity torque 2
         let h2 = x
             .k2
             .mul_add(
-                t49,
+                t47,
                 x.t111 + (x.k10.mul_add(t4, x.k29 * t3) + (t1 * t7 - t2 * t6)) + h3,
             );
         /// centripetal, Coriolis and gravity torque 1
@@ -1205,18 +1196,18 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                 x
                     .k21
                     .mul_add(
-                        x.k17.mul_add(t46, x.k25.mul_add(t20, x.k22 * t19)),
-                        x.k3 * (x.c3 * t47 - x.s3 * t48),
+                        x.k17.mul_add(t44, x.k25.mul_add(t20, x.k22 * t19)),
+                        x.k3 * (x.c3 * t45 - x.s3 * t46),
                     )
                     + (x.k9.mul_add(t3, qd_[1] * t6 - t1 * t8)
-                        + x.c3.mul_add(t59, x.s3 * t58)),
+                        + x.c3.mul_add(t57, x.s3 * t56)),
                 x.s2
                     * x
                         .k44
                         .mul_add(
-                            t49,
+                            t47,
                             x.k8.mul_add(t4, x.k30 * t3) + (t2 * t8 - qd_[1] * t7)
-                                + (x.c3 * t58 - x.s3 * t59),
+                                + (x.c3 * t56 - x.s3 * t57),
                         ),
             );
         [h1, h2, h3, h4, h5, h6]
@@ -1265,102 +1256,100 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t26 = t23 * t24;
         let t27 = t24.mul_add(t24, t22 * t22);
         let t28 = qd_[5] + t23;
-        let t29 = (x.c6 * t22 - x.s6 * t24) * t28;
-        let t30 = (-(x.c6 * t24) - x.s6 * t22) * t28;
-        let t31 = x.s2.mul_add(qdd_[0], t3);
-        let t32 = x.c2 * qdd_[0] - t4;
-        let t33 = x.k2.mul_add(t4 - t32, x.k44 * t1.mul_add(t1, t5));
-        let t34 = x.t109 + x.k3.mul_add(t4 + t32, x.k21 * qd_[1].mul_add(qd_[1], t5));
-        let t35 = x.t110 + x.k3.mul_add(t3 - t31, x.k2 * t1.mul_add(t2, qdd_[1]));
-        let t36 = x.s3.mul_add(t35, x.c3 * t34);
-        let t37 = x.c3 * t35 - x.s3 * t34;
-        let t38 = qd_[2].mul_add(t10, x.s3.mul_add(t32, x.c3 * t31));
-        let t39 = x.c3 * t32 - x.s3 * t31 - qd_[2] * t9;
-        let t40 = qdd_[1] + qdd_[2];
-        let t41 = t13 - t40;
-        let t42 = t13 + t40;
-        let t43 = t9 * t11 - t39;
-        let t44 = t10.mul_add(t11, t38);
-        let t45 = t36 + x.k2.mul_add(t41, x.k5 * t14);
-        let t46 = t33 + x.k2.mul_add(t44, x.k4 * t43);
-        let t47 = qd_[3].mul_add(t20, x.c4 * t38 - x.s4 * t40);
-        let t48 = qdd_[3] + t39;
-        let t49 = qd_[4].mul_add(t23, x.s5.mul_add(t48, x.c5 * t47));
-        let t50 = qdd_[4] - (-(x.c4 * t40) - x.s4 * t38 - qd_[3] * t19);
-        let t51 = t25 - t50;
-        let t52 = t26 + t49;
+        let t29 = x.s2.mul_add(qdd_[0], t3);
+        let t30 = x.c2 * qdd_[0] - t4;
+        let t31 = x.k2.mul_add(t4 - t30, x.k44 * t1.mul_add(t1, t5));
+        let t32 = x.t109 + x.k3.mul_add(t4 + t30, x.k21 * qd_[1].mul_add(qd_[1], t5));
+        let t33 = x.t110 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd_[1]));
+        let t34 = x.s3.mul_add(t33, x.c3 * t32);
+        let t35 = x.c3 * t33 - x.s3 * t32;
+        let t36 = qd_[2].mul_add(t10, x.s3.mul_add(t30, x.c3 * t29));
+        let t37 = x.c3 * t30 - x.s3 * t29 - qd_[2] * t9;
+        let t38 = qdd_[1] + qdd_[2];
+        let t39 = t13 - t38;
+        let t40 = t13 + t38;
+        let t41 = t9 * t11 - t37;
+        let t42 = t10.mul_add(t11, t36);
+        let t43 = t34 + x.k2.mul_add(t39, x.k5 * t14);
+        let t44 = t31 + x.k2.mul_add(t42, x.k4 * t41);
+        let t45 = qd_[3].mul_add(t20, x.c4 * t36 - x.s4 * t38);
+        let t46 = qdd_[3] + t37;
+        let t47 = qd_[4].mul_add(t23, x.s5.mul_add(t46, x.c5 * t45));
+        let t48 = qdd_[4] - (-(x.c4 * t38) - x.s4 * t36 - qd_[3] * t19);
+        let t49 = t25 - t48;
+        let t50 = t26 + t47;
         /// T6 (6.46)
-        let tau6 = x.k7 * (qdd_[5] + (x.c5 * t48 - x.s5 * t47 - qd_[4] * t22));
-        let t53 = x
-            .k7
-            .mul_add(
-                x.s6.mul_add(t29, x.c6 * t30),
-                x
-                    .k17
-                    .mul_add(-(x.c4 * t46) - x.s4 * t45, x.k15.mul_add(t49, x.k18 * t26)),
-            );
-        let t54 = x.k13.mul_add(t22 * t24, tau6);
-        /// T5 (6.46)
-        let tau5 = x
+        let tau6 = x.k7 * (qdd_[5] + (x.c5 * t46 - x.s5 * t45 - qd_[4] * t22));
+        let t51 = x
             .k32
             .mul_add(
-                x.s6 * t30 - x.c6 * t29,
+                t24 * t28,
+                x
+                    .k17
+                    .mul_add(-(x.c4 * t44) - x.s4 * t43, x.k15.mul_add(t47, x.k18 * t26)),
+            );
+        let t52 = x.k13.mul_add(t22 * t24, tau6);
+        /// T5 (6.46)
+        let tau5 = x
+            .k7
+            .mul_add(
+                t22 * t28,
                 x
                     .k17
                     .mul_add(
                         x
                             .s5
                             .mul_add(
-                                t37 + x.k4.mul_add(t42, x.k21 * t15),
-                                x.c5 * (x.c4 * t45 - x.s4 * t46),
+                                t35 + x.k4.mul_add(t40, x.k21 * t15),
+                                x.c5 * (x.c4 * t43 - x.s4 * t44),
                             ),
-                        x.k18.mul_add(t50, x.k16 * t25),
+                        x.k18.mul_add(t48, x.k16 * t25),
                     ),
             );
-        let t55 = x.c5.mul_add(t51, x.s5 * t27);
-        let t56 = x.s5 * t51 - x.c5 * t27;
-        let t57 = x.k6.mul_add(t47, x.k20 * (t20 * t21)) + (x.c5 * t53 - x.s5 * t54);
-        let t58 = x.k57 * (t19 * t21) - tau5;
+        let t53 = x.c5.mul_add(t49, x.s5 * t27);
+        let t54 = x.s5 * t49 - x.c5 * t27;
+        let t55 = x.k6.mul_add(t45, x.k20 * (t20 * t21)) + (x.c5 * t51 - x.s5 * t52);
+        let t56 = x.k57 * (t19 * t21) - tau5;
         /// T4 (6.46)
-        let tau4 = x.k20.mul_add(t48, x.k19 * (t19 * t20))
-            + x.c5.mul_add(t54, x.s5 * t53);
-        let t59 = x.s4.mul_add(t52, x.c4 * t55);
-        let t60 = x.s4 * t55 - x.c4 * t52;
-        let t61 = x.k14.mul_add(t59, x.k25.mul_add(t41, x.k54 * t14));
-        let t62 = x.k14.mul_add(t56, x.k22.mul_add(t42, x.k55 * t15));
-        let t63 = x
+        let tau4 = x.k20.mul_add(t46, x.k19 * (t19 * t20))
+            + x.c5.mul_add(t52, x.s5 * t51);
+        let t57 = x.s4.mul_add(t50, x.c4 * t53);
+        let t58 = x.s4 * t53 - x.c4 * t50;
+        let t59 = x.k14.mul_add(t57, x.k25.mul_add(t39, x.k54 * t14));
+        let t60 = x.k14.mul_add(t54, x.k22.mul_add(t40, x.k55 * t15));
+        let t61 = x
             .k40
             .mul_add(
-                t60,
+                t58,
                 x
                     .k25
                     .mul_add(
-                        t33,
-                        t10 * t18 - t11 * t17 + x.k24.mul_add(t39, x.k27 * t38),
-                    ) + (x.c4 * t57 - x.s4 * t58),
+                        t31,
+                        t10 * t18 - t11 * t17 + x.k24.mul_add(t37, x.k27 * t36),
+                    ) + (x.c4 * t55 - x.s4 * t56),
             );
-        let t64 = x
+        let t62 = x
             .k39
             .mul_add(
-                t60,
+                t58,
                 x
                     .k54
-                    .mul_add(t33, t11 * t16 - t9 * t18 + x.k12.mul_add(t40, x.k24 * t38))
+                    .mul_add(t31, t11 * t16 - t9 * t18 + x.k12.mul_add(t38, x.k24 * t36))
                     + tau4,
             );
         /// T3 (6.46)
-        let tau3 = t9 * t17 - t10 * t16 + x.k26.mul_add(t40, x.k12 * t39)
-            + x.k55.mul_add(t36, x.k22 * t37) - x.c4.mul_add(t58, x.s4 * t57)
-            + x.k40.mul_add(t59, x.k39 * t56);
-        let t65 = x.c3.mul_add(t62, x.s3 * t61);
+        let tau3 = t9 * t17 - t10 * t16 + x.k26.mul_add(t38, x.k12 * t37)
+            + x.k55.mul_add(t34, x.k22 * t35) - x.c4.mul_add(t56, x.s4 * t55)
+            + x.k40.mul_add(t57, x.k39 * t54);
+        let t63 = x.c3.mul_add(t60, x.s3 * t59);
         /// T2 (6.46)
         let tau2 = x
             .k2
             .mul_add(
-                t65,
+                t63,
                 x.t111
                     + (t1 * t7 - t2 * t6
-                        + x.k28.mul_add(qdd_[1], x.k11.mul_add(t32, x.k29 * t31))) + tau3,
+                        + x.k28.mul_add(qdd_[1], x.k11.mul_add(t30, x.k29 * t29))) + tau3,
             );
         /// T1 (6.46)
         let tau1 = x
@@ -1370,22 +1359,22 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                 x
                     .c2
                     .mul_add(
-                        qd_[1] * t6 - t1 * t8 + x.k11.mul_add(qdd_[1], x.k9 * t31)
-                            + x.c3.mul_add(t64, x.s3 * t63)
+                        qd_[1] * t6 - t1 * t8 + x.k11.mul_add(qdd_[1], x.k9 * t29)
+                            + x.c3.mul_add(t62, x.s3 * t61)
                             + x
                                 .k21
                                 .mul_add(
-                                    x.k17.mul_add(t60, x.k25.mul_add(t44, x.k22 * t43)),
-                                    x.k3 * (x.c3 * t61 - x.s3 * t62),
+                                    x.k17.mul_add(t58, x.k25.mul_add(t42, x.k22 * t41)),
+                                    x.k3 * (x.c3 * t59 - x.s3 * t60),
                                 ),
                         x.s2
                             * x
                                 .k44
                                 .mul_add(
-                                    t65,
+                                    t63,
                                     t2 * t8 - qd_[1] * t7
-                                        + x.k29.mul_add(qdd_[1], x.k9.mul_add(t32, x.k30 * t31))
-                                        + (x.c3 * t63 - x.s3 * t64),
+                                        + x.k29.mul_add(qdd_[1], x.k9.mul_add(t30, x.k30 * t29))
+                                        + (x.c3 * t61 - x.s3 * t62),
                                 ),
                     ),
             );

@@ -142,3 +142,25 @@ fn output_elements_are_named_and_commented() {
         assert!(code.contains(&binding), "no `{binding}` in {code}");
     }
 }
+
+/// PUMA 560's last link, once regrouped, keeps only `Izz`: it is computed in unturned axes, so
+/// the Newton-Euler methods read no sine or cosine of q6 (joints 2 to 5 only: q1 never appears).
+/// Give that link `Ixx ≠ Iyy` and they need q6's again.
+#[test]
+fn symmetric_last_link_needs_no_turn() {
+    let trig = |robot: &model::Robot| {
+        let eq = derive::derive(robot);
+        let generated = dynamics_codegen::generate(&eq, &quote::quote!(::r), Vec::new());
+        generated
+            .methods
+            .iter()
+            .filter(|m| ["inverse_dynamics", "bias_torques", "coriolis_torques"].contains(&m.name))
+            .map(|m| m.ops.trig)
+            .collect::<Vec<_>>()
+    };
+    let mut puma = model::from_json(PUMA, "puma560").expect("json");
+    assert_eq!(trig(&puma), [8, 8, 8]);
+    let last = puma.joints.last_mut().expect("joints");
+    last.inertia[0] = model::Value::Num(dynamics_codegen::symbolic::Number::Float(2e-4));
+    assert_eq!(trig(&puma), [10, 10, 10]);
+}

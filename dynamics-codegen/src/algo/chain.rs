@@ -89,6 +89,19 @@ impl<S: Scalar> Body<S> {
         }
     }
 
+    /// Whether the body looks the same after any rotation about z: `Ixx = Iyy`, no products of
+    /// inertia, first moment on the axis. Known exactly: a symbolic parameter is not assumed
+    /// to be zero.
+    pub fn is_axially_symmetric(&self) -> bool {
+        let [xx, yy, _, xy, xz, yz] = self.inertia;
+        (xx - yy).is_zero()
+            && xy.is_zero()
+            && xz.is_zero()
+            && yz.is_zero()
+            && self.h.x.is_zero()
+            && self.h.y.is_zero()
+    }
+
     /// `I_O · w`.
     pub fn inertia_mul(&self, w: V3<S>) -> V3<S> {
         Mat3::symmetric(self.inertia).mul_vec(w)
@@ -147,6 +160,19 @@ impl<S: Scalar> ChainJoint<S> {
         );
         let w = V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y);
         V3::new(ct * w.x + st * w.y, ct * w.y - st * w.x, w.z)
+    }
+
+    /// `Rotx(α)ᵀ v`: a vector in J_{i−1} axes expressed in the axes of J_i before its turn by
+    /// θ, which differ from J_i's by a rotation about z.
+    pub fn untwist(&self, v: V3<S>) -> V3<S> {
+        let (sa, ca) = (self.sin_alpha, self.cos_alpha);
+        V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y)
+    }
+
+    /// `Rotx(α) v`: back from the axes of [`ChainJoint::untwist`] to J_{i−1}'s.
+    pub fn twist(&self, v: V3<S>) -> V3<S> {
+        let (sa, ca) = (self.sin_alpha, self.cos_alpha);
+        V3::new(v.x, ca * v.y - sa * v.z, sa * v.y + ca * v.z)
     }
 
     /// `R v`: a vector in J_i axes expressed in J_{i−1} axes.

@@ -38,6 +38,9 @@ pub trait Scalar:
     /// that fold away for constants.
     fn is_constant(self) -> bool;
 
+    /// Whether `self` is exactly zero (a known constant zero, for a symbolic scalar).
+    fn is_zero(self) -> bool;
+
     /// One, in the context of `self`.
     #[must_use]
     fn one(self) -> Self {
@@ -52,5 +55,9 @@ impl Scalar for f64 {
 
     fn is_constant(self) -> bool {
         true
+    }
+
+    fn is_zero(self) -> bool {
+        self == 0.0
     }
 }

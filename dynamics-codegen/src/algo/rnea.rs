@@ -9,6 +9,11 @@
 //! `tau_i = n_i · z` (revolute) or `f_i · z` (prismatic). Setting `qdd = 0` and gravity to zero
 //! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
 //! without gravity.
+//!
+//! A last link that is axially symmetric about its revolute joint (after regrouping this is
+//! often a flange or tool with only `Izz` left) is computed in the axes of its joint frame
+//! before the turn by θ: its equations read the same there, and neither its velocities nor its
+//! moment need that turn (PUMA 560: no sine or cosine of q6 in `τ` at all).
 
 use super::{Chain, JointKind, Scalar, V3};
 use std::ops::{Add, Neg};
@@ -22,12 +27,20 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut wd = V3::zero(zero);
     let mut vd = gravity.neg();
     let mut forces = Vec::with_capacity(n);
+    let unturned = unturned_last(chain);
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
         let vd_parent = vd.add(u_mul(w, wd, p));
-        let w_in = j.to_child(w);
-        let wd_in = j.to_child(wd);
-        vd = j.to_child(vd_parent);
+        let to_child = |v| {
+            if unturned == Some(i) {
+                j.untwist(v)
+            } else {
+                j.to_child(v)
+            }
+        };
+        let w_in = to_child(w);
+        let wd_in = to_child(wd);
+        vd = to_child(vd_parent);
         match j.kind {
             JointKind::Revolute => {
                 w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
@@ -55,9 +68,16 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         let (mut f, mut nn) = forces[i];
         if let Some((fc, nc)) = child {
             let next = &chain.joints[i + 1];
-            let rf = next.to_parent(fc);
+            let to_parent = |v| {
+                if unturned == Some(i + 1) {
+                    next.twist(v)
+                } else {
+                    next.to_parent(v)
+                }
+            };
+            let rf = to_parent(fc);
             f = f.add(rf);
-            nn = nn.add(next.to_parent(nc)).add(next.offset().cross(rf));
+            nn = nn.add(to_parent(nc)).add(next.offset().cross(rf));
         }
         tau[i] = match chain.joints[i].kind {
             JointKind::Revolute => nn.z,
@@ -66,6 +86,14 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         child = Some((f, nn));
     }
     tau
+}
+
+/// The last joint, if it is revolute and its link axially symmetric about it: that link is
+/// computed in unturned axes.
+fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
+    let last = chain.joints.len().checked_sub(1)?;
+    let j = &chain.joints[last];
+    (j.kind == JointKind::Revolute && j.body.is_axially_symmetric()).then_some(last)
 }
 
 /// `U x` with `U = [ω̇]× + [ω]×[ω]×`, that is `ω̇ × x + ω × (ω × x)`, written with the products

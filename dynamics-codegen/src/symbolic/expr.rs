@@ -77,4 +77,8 @@ impl Scalar for Expr<'_> {
     fn is_constant(self) -> bool {
         self.graph.borrow().constant(self.id).is_some()
     }
+
+    fn is_zero(self) -> bool {
+        self.graph.borrow().is_zero(self.id)
+    }
 }
