@@ -51,44 +51,47 @@ struct __DynamicsConfiguration<T> {
     k30: T,
     k31: T,
     k32: T,
-    t3: T,
+    t1: T,
     k34: T,
     k35: T,
     m4_4: T,
-    t7: T,
+    t5: T,
     k38: T,
     k39: T,
     k40: T,
     m3_4: T,
     m3_3: T,
+    t31: T,
     k41: T,
     m2_3: T,
     k44: T,
     m2_2: T,
-    t59: T,
+    t53: T,
+    t54: T,
     m1_2: T,
     m1_1: T,
-    t60: T,
-    t64: T,
+    t55: T,
+    t59: T,
     m1_3: T,
-    t67: T,
+    t62: T,
     m2_4: T,
-    t76: T,
+    t69: T,
+    t71: T,
     m1_4: T,
-    t78: T,
+    t73: T,
     m3_5: T,
-    t86: T,
+    t82: T,
     m2_5: T,
-    t99: T,
-    t100: T,
+    t93: T,
+    t95: T,
     m1_5: T,
     m4_6: T,
     m2_6: T,
-    t108: T,
+    t102: T,
     m1_6: T,
-    t109: T,
-    t110: T,
-    t111: T,
+    t103: T,
+    t104: T,
+    t105: T,
     g5: T,
     g4: T,
     g3: T,
@@ -101,42 +104,41 @@ struct __DynamicsConfiguration<T> {
     k57: T,
     k58: T,
     p: T,
+    k62: T,
+    t115: T,
+    t116: T,
+    t117: T,
     t120: T,
-    t124: T,
-    t126: T,
+    t122: T,
+    t123: T,
+    t125: T,
     t127: T,
-    t130: T,
-    t133: T,
+    t134: T,
     t135: T,
     t137: T,
     t139: T,
-    t146: T,
+    t140: T,
+    t143: T,
+    t144: T,
     t147: T,
-    t149: T,
     t151: T,
     t152: T,
-    t155: T,
-    t156: T,
-    t158: T,
-    t162: T,
-    t163: T,
+    k65: T,
+    t161: T,
     t164: T,
-    k67: T,
-    t173: T,
+    t171: T,
+    t172: T,
+    t174: T,
     t176: T,
+    t177: T,
+    t179: T,
+    t180: T,
+    t181: T,
+    t182: T,
     t183: T,
-    t184: T,
-    t185: T,
-    t187: T,
-    t188: T,
-    t190: T,
-    t191: T,
-    t192: T,
-    t193: T,
-    t194: T,
+    k67: T,
     k68: T,
     k69: T,
-    k70: T,
 }
 impl Puma560 {
     #[doc(hidden)]
@@ -213,311 +215,293 @@ impl Puma560 {
         let k59: T = T::from_f64(-154.550796435);
         let k60: T = T::from_f64(-37.2347379);
         let k61: T = T::from_f64(-0.24892875);
-        let k62: T = T::from_f64(-4.0);
-        let k63: T = T::from_f64(0.00128432);
-        let k64: T = T::from_f64(0.000116928);
-        let k65: T = T::from_f64(-0.000116928);
+        let k62: T = T::from_f64(-0.8636);
+        let k63: T = T::from_f64(0.000116928);
+        let k64: T = T::from_f64(-0.000116928);
+        let k65: T = T::from_f64(0.00040432);
         let k66: T = T::from_f64(-0.00040432);
-        let k67: T = T::from_f64(0.00040432);
-        let k68: T = T::from_f64(-0.00002);
-        let k69: T = T::from_f64(0.00002);
-        let k70: T = T::from_f64(-0.5);
+        let k67: T = T::from_f64(-0.00002);
+        let k68: T = T::from_f64(0.00002);
+        let k69: T = T::from_f64(-0.5);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
             q_[3],
             q_[4],
         ]);
-        let t1 = c5 * c5;
-        let t2 = s5 * s5;
-        let t3 = s5 * c5;
-        let t4 = k7.mul_add(t2, k15 * t1);
-        let t5 = t1 - t2;
-        let t6 = k6 + t4;
+        let t1 = s5 * c5;
+        let t2 = k7.mul_add(s5 * s5, k15 * (c5 * c5));
+        let t3 = k33 - t2;
+        let t4 = k6 + t2;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k20 + (k33 - t4);
-        let t7 = c4 * s5;
-        let t8 = s4 * s5;
-        let t9 = c4 * c4;
-        let t10 = s4 * s4;
-        let t11 = s4 * c4;
-        let t12 = k18.mul_add(t10, t6 * t9);
-        let t13 = k35 + t6;
-        let t14 = c4 * t3;
-        let t15 = k34 * t14;
-        let t16 = k37 * t7;
-        let t17 = k38 * c5;
-        let t18 = m4_4 + t16;
-        let t19 = t16 + t18;
-        let t20 = t16 + t17;
-        let t21 = k40 * t7;
-        let t22 = k39 * t8;
-        let t23 = k37 * t8 - t11 * t13;
-        let t24 = k38 * t8;
+        let m4_4 = k20 + t3;
+        let t5 = c4 * s5;
+        let t6 = s4 * s5;
+        let t7 = c4 * c4;
+        let t8 = s4 * c4;
+        let t9 = k18.mul_add(s4 * s4, t4 * t7);
+        let t10 = k18 + t4 - t9;
+        let t11 = t8 * (k35 + t4);
+        let t12 = c4 * t1;
+        let t13 = k34 * t12;
+        let t14 = k37 * t5;
+        let t15 = k38 * c5;
+        let t16 = m4_4 + t14;
+        let t17 = t14 + t16;
+        let t18 = t14 + t15;
+        let t19 = k40 * t5;
+        let t20 = k39 * t6;
+        let t21 = k37 * t6 - t11;
+        let t22 = k38 * t6;
         /// D34 = D43 (6.43)
-        let m3_4 = k40.mul_add(t8, k36 * (s4 * t3));
-        let t25 = k17.mul_add(t7, k22);
-        let t26 = k14.mul_add(c5, k25);
-        let t27 = k27 + (t17 + (t12 + t17));
+        let m3_4 = k40.mul_add(t6, k36 * (s4 * t1));
+        let t23 = k17.mul_add(t5, k22);
+        let t24 = k14.mul_add(c5, k25);
+        let t25 = k27 + (t15 + (t9 + t15));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k26 + (t20 + (k18 + t6 - t12 + t20));
-        let t28 = k24 + (t15 - k39.mul_add(c5, t21));
-        let t29 = k12 + m3_4;
-        let t30 = c3 * t25;
-        let t31 = s3 * t26;
-        let t32 = t30 - t31;
-        let t33 = s3 * t25;
-        let t34 = c3 * t26;
-        let t35 = t33 + t34;
-        let t36 = c3 * c3;
-        let t37 = s3 * s3;
-        let t38 = s3 * c3;
-        let t39 = t28 * t38;
-        let t40 = t19.mul_add(t37, k42.mul_add(t39, t27 * t36));
-        let t41 = t27 - t19;
-        let t42 = t36 - t37;
-        let t43 = t28 * t42;
-        let t44 = c3 * t23 - s3 * t29;
-        let t45 = s3 * t23;
-        let t46 = c3 * t29;
-        let t47 = t45 + t46;
-        let t48 = k2 * t32;
-        let t49 = k43 * t8;
-        let t50 = t48 + t49;
-        let t51 = t50 + (t19 + t27 - t40 + t50);
+        let m3_3 = k26 + (t18 + (t10 + t18));
+        let t26 = k24 + (t13 - k39.mul_add(c5, t19));
+        let t27 = k12 + m3_4;
+        let t28 = c3 * t23 - s3 * t24;
+        let t29 = s3 * t23;
+        let t30 = c3 * t24;
+        let t31 = t29 + t30;
+        let t32 = c3 * c3;
+        let t33 = s3 * s3;
+        let t34 = s3 * c3;
+        let t35 = t17.mul_add(t33, k42.mul_add(t26 * t34, t25 * t32));
+        let t36 = t17 + t25 - t35;
+        let t37 = t32 - t33;
+        let t38 = t26.mul_add(t37, t34 * (t25 - t17));
+        let t39 = c3 * t21 - s3 * t27;
+        let t40 = c3.mul_add(t27, s3 * t21);
+        let t41 = k2 * t28;
+        let t42 = k43 * t6;
+        let t43 = t41 + t42;
+        let t44 = t43 + (t36 + t43);
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + t48;
-        let t52 = k30 + (t49 + (t40 + t49));
+        let m2_3 = m3_3 + t41;
+        let t45 = k21 * t31;
+        let t46 = k30 + (t42 + (t35 + t42));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k28 + (t48 + m2_3);
-        let t53 = k9 + k21.mul_add(t35, t38.mul_add(t41, t43));
-        let t54 = k29 + (t44 - k3.mul_add(t32, t24));
-        let t55 = k11 + k44.mul_add(t35, t47);
-        let t56 = c2 * c2;
-        let t57 = s2 * s2;
-        let t58 = s2 * c2;
-        let t59 = c2 * t54 - s2 * t55;
+        let m2_2 = k28 + (t41 + m2_3);
+        let t47 = k9 + (t38 + t45);
+        let t48 = k29 + (t39 - k3.mul_add(t28, t22));
+        let t49 = k11 + k44.mul_add(t31, t40);
+        let t50 = c2 * c2;
+        let t51 = s2 * s2;
+        let t52 = s2 * c2;
+        let t53 = t47.mul_add(t50 - t51, t52 * (t46 - t44));
+        let t54 = c2 * t48 - s2 * t49;
         /// D12 = D21 (6.43)
-        let m1_2 = c2.mul_add(t55, s2 * t54);
+        let m1_2 = c2.mul_add(t49, s2 * t48);
         /// D11 (6.43) + actuator inertia
         let m1_1 = k31
-            + (t51 + t52 - t51.mul_add(t57, k42.mul_add(t53 * t58, t52 * t56)));
-        let t60 = -t34 - t33;
-        let t61 = k44.mul_add(t32, t44);
-        let t62 = k3.mul_add(t60, t47);
-        let t63 = c2 * t61;
-        let t64 = t63 - s2 * t62;
+            + (t44 + t46 - t44.mul_add(t51, k42.mul_add(t47 * t52, t46 * t50)));
+        let t55 = -t30 - t29;
+        let t56 = k44.mul_add(t28, t39);
+        let t57 = k3.mul_add(t55, t40);
+        let t58 = c2 * t56;
+        let t59 = t58 - s2 * t57;
         /// D13 = D31 (6.43)
-        let m1_3 = c2.mul_add(t62, s2 * t61);
-        let t65 = k38 * t7;
-        let t66 = t15 + t65;
-        let t67 = c3 * t8;
-        let t68 = s3 * t8;
-        let t69 = s3 * t66;
-        let t70 = c3 * t18;
-        let t71 = k45 * t68;
-        let t72 = k43 * t67;
-        let t73 = c3 * t66 - s3 * t18 + t71;
-        let t74 = t69 + t70 + (t21 + t72);
+        let m1_3 = c2.mul_add(t57, s2 * t56);
+        let t60 = k38 * t5;
+        let t61 = t13 + t60;
+        let t62 = c3 * t6;
+        let t63 = s3 * t6;
+        let t64 = c3.mul_add(t16, s3 * t61);
+        let t65 = k45 * t63;
+        let t66 = k43 * t62;
+        let t67 = c3 * t61 - s3 * t16 + t65;
+        let t68 = t64 + (t19 + t66);
         /// D24 = D42 (6.43)
-        let m2_4 = k38.mul_add(t68, m3_4);
-        let t75 = c2 * t73;
-        let t76 = t75 - s2 * t74;
+        let m2_4 = k38.mul_add(t63, m3_4);
+        let t69 = c2.mul_add(t63, s2 * t62);
+        let t70 = c2 * t67;
+        let t71 = t70 - s2 * t68;
         /// D14 = D41 (6.43)
-        let m1_4 = c2.mul_add(t74, s2 * t73);
-        let t77 = c4 * c5;
-        let t78 = s4 * c5;
-        let t79 = k18 * c4;
-        let t80 = k38 * t78;
-        let t81 = k37 * s5;
-        let t82 = k40 * t77;
-        let t83 = k38 * t77;
-        let t84 = k18.mul_add(s4, t80);
+        let m1_4 = c2.mul_add(t68, s2 * t67);
+        let t72 = c4 * c5;
+        let t73 = s4 * c5;
+        let t74 = k18 * c4;
+        let t75 = k38 * t73;
+        let t76 = k37 * s5;
+        let t77 = k40 * t72;
+        let t78 = k38 * t72;
+        let t79 = k18.mul_add(s4, t75);
         /// D35 = D53 (6.43)
-        let m3_5 = t79 + (t81 + t83);
-        let t85 = c3 * t77;
-        let t86 = t85 - s3 * s5;
-        let t87 = s3 * t77;
-        let t88 = c3 * s5;
-        let t89 = t87 + t88;
-        let t90 = s3 * t78;
-        let t91 = k39.mul_add(t90, c3 * t84);
-        let t92 = s3 * t84;
-        let t93 = c3 * t78;
-        let t94 = k43 * t89;
-        let t95 = k45 * t86;
-        let t96 = k40 * t78;
-        let t97 = t91 + t94;
-        let t98 = k37.mul_add(t93, t92) + (t95 + t96);
+        let m3_5 = t74 + (t76 + t78);
+        let t80 = c3 * t72;
+        let t81 = s3 * s5;
+        let t82 = t80 - t81;
+        let t83 = s3 * t72;
+        let t84 = c3.mul_add(s5, t83);
+        let t85 = s3 * t73;
+        let t86 = c3 * t73;
+        let t87 = k37.mul_add(t86, s3 * t79);
+        let t88 = k43 * t84;
+        let t89 = k45 * t82;
+        let t90 = k40 * t73;
+        let t91 = k39.mul_add(t85, c3 * t79) + t88;
+        let t92 = t87 + (t89 + t90);
         /// D25 = D52 (6.43)
-        let m2_5 = k40.mul_add(t89, m3_5);
-        let t99 = c2.mul_add(t89, s2 * t86);
-        let t100 = c2 * t97 - s2 * t98;
+        let m2_5 = k40.mul_add(t84, m3_5);
+        let t93 = c2.mul_add(t84, s2 * t82);
+        let t94 = c2 * t91;
+        let t95 = t94 - s2 * t92;
         /// D15 = D51 (6.43)
-        let m1_5 = c2.mul_add(t98, s2 * t97);
+        let m1_5 = c2.mul_add(t92, s2 * t91);
         /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
-        let m2_6 = k7 * t8;
-        let t101 = c3 * t7;
-        let t102 = s3 * c5;
-        let t103 = t101 + t102;
-        let t104 = s3 * t7;
-        let t105 = c3 * c5;
-        let t106 = t104 - t105;
-        let t107 = c2 * t103;
-        let t108 = t107 - s2 * t106;
+        let m2_6 = k7 * t6;
+        let t96 = c3 * t5;
+        let t97 = s3.mul_add(c5, t96);
+        let t98 = s3 * t5;
+        let t99 = t98 - c3 * c5;
+        let t100 = c2 * t97;
+        let t101 = s2 * t99;
+        let t102 = t100 - t101;
         /// D16 = D61 (6.43)
-        let m1_6 = k32 * c2.mul_add(t106, s2 * t103);
-        let t109 = k46 * s2;
-        let t110 = k46 * c2;
-        let t111 = k48.mul_add(s2, k47 * c2);
-        let t112 = c2.mul_add(s3, s2 * c3);
-        let t113 = c2 * c3 - s2 * s3;
-        let t114 = c4 * t112;
-        let t115 = s4 * t112;
-        let t116 = s5.mul_add(t113, c5 * t114);
+        let m1_6 = k32 * c2.mul_add(t99, s2 * t97);
+        let t103 = k46 * s2;
+        let t104 = k46 * c2;
+        let t105 = k48.mul_add(s2, k47 * c2);
+        let t106 = c2.mul_add(s3, s2 * c3);
+        let t107 = c2 * c3 - s2 * s3;
+        let t108 = c4 * t106;
+        let t109 = s4 * t106;
+        let t110 = s5.mul_add(t107, c5 * t108);
         /// D5 (6.45), gravity and spring
-        let g5 = k52 * t116;
-        let t117 = c5 * t115;
-        let t118 = s5 * t115;
+        let g5 = k52 * t110;
+        let t111 = c5 * t109;
+        let t112 = s5 * t109;
         /// D4 (6.45), gravity and spring
-        let g4 = k51 * t118;
-        let t119 = c4 * t117 - s4 * t116;
+        let g4 = k51 * t112;
+        let t113 = c4 * t111 - s4 * t110;
         /// D3 (6.45), gravity and spring
-        let g3 = k52.mul_add(c4.mul_add(t116, s4 * t117), k50.mul_add(t112, k49 * t113));
+        let g3 = k52.mul_add(c4.mul_add(t110, s4 * t111), k50.mul_add(t106, k49 * t107));
         /// D2 (6.45), gravity and spring
-        let g2 = t111 + g3;
+        let g2 = t105 + g3;
         /// D1 (6.45), gravity and spring
         let g1 = k51
-            * c2.mul_add(c3.mul_add(t118, s3 * t119), s2 * (c3 * t119 - s3 * t118));
+            * c2.mul_add(c3.mul_add(t112, s3 * t113), s2 * (c3 * t113 - s3 * t112));
         /// potential energy
         let p = -k52
             .mul_add(
-                c5 * t113 - s5 * t114,
-                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(t113, k61 * t112),
+                c5 * t107 - s5 * t108,
+                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(t107, k61 * t106),
             );
-        let t120 = t52.mul_add(t58, t53 * (t56 - t57)) - t51 * t58;
-        let t121 = t27.mul_add(t38, t43) - t19 * t38;
-        let t122 = k2 * t60;
-        let t123 = t122 + k41.mul_add(t121, t122);
-        let t124 = k42.mul_add(t121, t123)
-            - t57
+        let t114 = t45 + k41.mul_add(t38, t45);
+        let t115 = k42.mul_add(t38, t114)
+            - t51
                 .mul_add(
-                    t123,
-                    k42
-                        * t58
-                            .mul_add(
-                                k21.mul_add(t32, k62.mul_add(t39, t41 * t42)),
-                                t56 * t121,
-                            ),
+                    t114,
+                    k42 * t52.mul_add(k21.mul_add(t28, t35 - t36), t38 * t50),
                 );
-        let t125 = s2 * k44.mul_add(t60, -t45 - t46);
-        let t126 = t63 + t125;
-        let t127 = c2.mul_add(k3.mul_add(t31 - t30, t44), t125);
-        let t128 = k45 * t67;
-        let t129 = k38 * t67;
-        let t130 = s2.mul_add(-t69 - t70 + t128, t75);
-        let t131 = k43 * t86;
-        let t132 = k40 * t86;
-        let t133 = c2
-            .mul_add(k45.mul_add(-t87 - t88, t91), s2 * (k39 * t93 - t92 + t131));
-        let t134 = t105 - t104;
-        let t135 = s2.mul_add(t134, t107);
-        let t136 = k63.mul_add(t11, k42 * (t6 * t11));
-        let t137 = t22 + (t22 - t136);
-        let t138 = t16 - t13 * (t9 - t10);
-        let t139 = k36.mul_add(t14, t21);
-        let t140 = k64.mul_add(t8 * t37, k42.mul_add(m3_4 * t38, t36 * t136));
-        let t141 = c3 * t138 - s3 * t139;
-        let t142 = k43 * t7;
-        let t143 = t142 + (t140 + t142);
-        let t144 = t129 + t142;
-        let t145 = t144 + (k64.mul_add(t8, t136) - t140 + t144);
-        let t146 = t129 + t137;
-        let t147 = t129 + t146;
-        let t148 = k40 * t68;
-        let t149 = t143 + t145
-            - t57
+        let t116 = s2.mul_add(k3 * t31 - t40, t58);
+        let t117 = s2.mul_add(k44 * t55 - t40, t58);
+        let t118 = k45 * t62;
+        let t119 = k38 * t62;
+        let t120 = s2.mul_add(t118 - t64, t70);
+        let t121 = k40 * t82;
+        let t122 = s2.mul_add(k43 * t82 - t87, t94);
+        let t123 = t101 - t100;
+        let t124 = k42 * t11;
+        let t125 = t20 + k41.mul_add(t11, t20);
+        let t126 = t14 - (t9 - t10);
+        let t127 = k36.mul_add(t12, t19);
+        let t128 = k63.mul_add(t6 * t33, k42 * m3_4.mul_add(t34, t11 * t32));
+        let t129 = c3 * t126 - s3 * t127;
+        let t130 = k43 * t5;
+        let t131 = t130 + (t128 + t130);
+        let t132 = t119 + t130;
+        let t133 = t132 + (k63.mul_add(t6, t124) - t128 + t132);
+        let t134 = t119 + t125;
+        let t135 = t119 + t134;
+        let t136 = k40 * t63;
+        let t137 = t131 + t133
+            - t51
                 .mul_add(
-                    t145,
+                    t133,
                     k42
                         .mul_add(
-                            t58
-                                * (m3_4.mul_add(t42, t38 * k65.mul_add(t8, t136)) + t148),
-                            t56 * t143,
+                            t52
+                                * (m3_4.mul_add(t37, t34 * k64.mul_add(t6, t124)) + t136),
+                            t50 * t131,
                         ),
                 );
-        let t150 = c2 * (t71 + c3.mul_add(t139, s3 * t138));
-        let t151 = s2.mul_add(t141 - (t65 + t72), t150);
-        let t152 = s2.mul_add(t128 + t141, t150);
-        let t153 = k37 * t68;
-        let t154 = k39 * t67;
-        let t155 = k38.mul_add(t104, t139);
-        let t156 = c2
+        let t138 = c2 * (t65 + c3.mul_add(t127, s3 * t126));
+        let t139 = s2.mul_add(t129 - (t60 + t66), t138);
+        let t140 = s2.mul_add(t118 + t129, t138);
+        let t141 = k37 * t63;
+        let t142 = k39 * t62;
+        let t143 = k38.mul_add(t98, t127);
+        let t144 = c2
             .mul_add(
-                s3.mul_add(m3_4, t154) + k43.mul_add(t101, t24),
-                s2 * k45.mul_add(t104, c3.mul_add(m3_4, t153)),
+                s3.mul_add(m3_4, t142) + k43.mul_add(t96, t22),
+                s2 * k45.mul_add(t98, c3.mul_add(m3_4, t141)),
             );
-        let t157 = t79 + t83;
-        let t158 = k35.mul_add(s4, t96);
-        let t159 = k45 * t90;
-        let t160 = k43.mul_add(t93, t82);
-        let t161 = k38 * t90;
-        let t162 = t158 + t161;
-        let t163 = c2
+        let t145 = k37 * t72;
+        let t146 = t74 + t78;
+        let t147 = k35.mul_add(s4, t90);
+        let t148 = k45 * t85;
+        let t149 = k43.mul_add(t86, t77);
+        let t150 = k38 * t85;
+        let t151 = t147 + t150;
+        let t152 = c2
             .mul_add(
-                k37.mul_add(t85, s3 * t157) + t160,
-                s2 * (k39.mul_add(t87, c3 * t157) + t159),
+                k37.mul_add(t80, s3 * t146) + t149,
+                s2 * (k39.mul_add(t83, c3 * t146) + t148),
             );
-        let t164 = -(s2 * t67) - c2 * t68;
-        let t165 = t3 * t9;
-        let t166 = k34 * (c4 * t5);
-        let t167 = k37 * t77;
-        let t168 = k40 * s5;
-        let t169 = t168 + k66.mul_add(t165, t168);
-        let t170 = k67.mul_add(t3, t167);
-        let t171 = t167 + t170;
-        let t172 = t167 + t168;
-        let t173 = t172 + k66.mul_add(t3 - t165, t172);
-        let t174 = t166 - (t81 + t82);
-        let t175 = k67.mul_add(t3 * t11, k37 * t78);
-        let t176 = k36.mul_add(s4 * t5, t96);
-        let t177 = t37.mul_add(t171, k42.mul_add(t38 * t174, t36 * t169));
-        let t178 = c3 * t175 - s3 * t176;
-        let t179 = k43 * t78;
-        let t180 = t179 + (t177 + t179);
-        let t181 = t132 + t179;
-        let t182 = t181 + (t169 + t171 - t177 + t181);
-        let t183 = t132 + t173;
-        let t184 = t132 + t183;
-        let t185 = t180 + t182
-            - t57
+        let t153 = t2 - t3;
+        let t154 = t1 * t7;
+        let t155 = c4 * t153;
+        let t156 = k40 * s5;
+        let t157 = t156 + k66.mul_add(t154, t156);
+        let t158 = k65.mul_add(t1, t145);
+        let t159 = t145 + t158;
+        let t160 = t145 + t156;
+        let t161 = t160 + k66.mul_add(t1 - t154, t160);
+        let t162 = t155 - (t76 + t77);
+        let t163 = k65.mul_add(t1 * t8, k37 * t73);
+        let t164 = t90 - s4 * t153;
+        let t165 = t33.mul_add(t159, k42.mul_add(t34 * t162, t32 * t157));
+        let t166 = c3 * t163 - s3 * t164;
+        let t167 = k43 * t73;
+        let t168 = t167 + (t165 + t167);
+        let t169 = t121 + t167;
+        let t170 = t169 + (t157 + t159 - t165 + t169);
+        let t171 = t121 + (t121 + t161);
+        let t172 = t168 + t170
+            - t51
                 .mul_add(
-                    t182,
+                    t170,
                     k42
                         .mul_add(
-                            t58
-                                * k38.mul_add(t89, t42.mul_add(t174, t38 * (t169 - t171))),
-                            t56 * t180,
+                            t52
+                                * k38.mul_add(t84, t37.mul_add(t162, t34 * (t157 - t159))),
+                            t50 * t168,
                         ),
                 );
-        let t186 = c2 * (t94 + c3.mul_add(t176, s3 * t175));
-        let t187 = s2.mul_add(t178 - (t80 + t95), t186);
-        let t188 = s2.mul_add(t131 + t178, t186);
-        let t189 = t83 + t166;
-        let t190 = t161 + t176;
-        let t191 = c2
+        let t173 = c2 * (t88 + c3.mul_add(t164, s3 * t163));
+        let t174 = s2.mul_add(t166 - (t75 + t89), t173);
+        let t175 = t81 - t80;
+        let t176 = k38.mul_add(t175, t161);
+        let t177 = s2.mul_add(k45.mul_add(t175, t166), t173);
+        let t178 = t78 + t155;
+        let t179 = t150 + t164;
+        let t180 = c2
             .mul_add(
-                t160 + c3.mul_add(t170, s3 * t189),
-                s2 * (t159 + (c3 * t189 - s3 * t170)),
+                t149 + c3.mul_add(t158, s3 * t178),
+                s2 * (t148 + (c3 * t178 - s3 * t158)),
             );
-        let t192 = k37.mul_add(c5, t21);
-        let t193 = k40.mul_add(t134, t192);
-        let t194 = c2
+        let t181 = k37.mul_add(c5, t19);
+        let t182 = k38.mul_add(t99, t181);
+        let t183 = c2
             .mul_add(
-                t148 + t154 + k45.mul_add(-t102 - t101, t24),
-                s2 * k43.mul_add(t134, k40.mul_add(t67, t153)),
+                t136 + t142 + k43.mul_add(t97, t22),
+                s2 * k45.mul_add(t99, k40.mul_add(t62, t141)),
             );
         __DynamicsConfiguration {
             k1,
@@ -560,44 +544,47 @@ impl Puma560 {
             k30,
             k31,
             k32,
-            t3,
+            t1,
             k34,
             k35,
             m4_4,
-            t7,
+            t5,
             k38,
             k39,
             k40,
             m3_4,
             m3_3,
+            t31,
             k41,
             m2_3,
             k44,
             m2_2,
-            t59,
+            t53,
+            t54,
             m1_2,
             m1_1,
-            t60,
-            t64,
+            t55,
+            t59,
             m1_3,
-            t67,
+            t62,
             m2_4,
-            t76,
+            t69,
+            t71,
             m1_4,
-            t78,
+            t73,
             m3_5,
-            t86,
+            t82,
             m2_5,
-            t99,
-            t100,
+            t93,
+            t95,
             m1_5,
             m4_6,
             m2_6,
-            t108,
+            t102,
             m1_6,
-            t109,
-            t110,
-            t111,
+            t103,
+            t104,
+            t105,
             g5,
             g4,
             g3,
@@ -610,42 +597,41 @@ impl Puma560 {
             k57,
             k58,
             p,
+            k62,
+            t115,
+            t116,
+            t117,
             t120,
-            t124,
-            t126,
+            t122,
+            t123,
+            t125,
             t127,
-            t130,
-            t133,
+            t134,
             t135,
             t137,
             t139,
-            t146,
+            t140,
+            t143,
+            t144,
             t147,
-            t149,
             t151,
             t152,
-            t155,
-            t156,
-            t158,
-            t162,
-            t163,
+            k65,
+            t161,
             t164,
-            k67,
-            t173,
+            t171,
+            t172,
+            t174,
             t176,
+            t177,
+            t179,
+            t180,
+            t181,
+            t182,
             t183,
-            t184,
-            t185,
-            t187,
-            t188,
-            t190,
-            t191,
-            t192,
-            t193,
-            t194,
+            k67,
             k68,
             k69,
-            k70,
         }
     }
 }
@@ -689,210 +675,208 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
         let x = self.__dynamics_configuration(q_);
-        let t1 = qd_[1] * x.t59;
-        let t2 = qd_[2] * x.t127;
-        let t3 = qd_[3] * x.t156;
-        let t4 = qd_[4] * x.t194;
-        /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = x.k68
-            * qd_[4]
-                .mul_add(
-                    x.t99,
-                    qd_[3].mul_add(x.t164, qd_[2].mul_add(x.t135, qd_[1] * x.t108)),
-                );
-        let t5 = qd_[2] * x.t60;
-        let t6 = x.k2 * t5;
-        let t7 = qd_[3] * x.t155;
-        let t8 = qd_[4] * x.t193;
-        let t9 = qd_[0] * x.t108;
-        /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = x.k1 * qd_[4].mul_add(x.t173, qd_[3] * x.t137);
-        let t10 = qd_[3] * x.t139;
-        let t11 = qd_[4] * x.t192;
-        let t12 = qd_[0] * x.t135;
+        let t1 = qd_[1] * x.t54;
+        let t2 = qd_[3] * x.t144;
+        let t3 = x.k2 * (qd_[2] * x.t55);
+        let t4 = qd_[3] * x.t143;
+        let t5 = qd_[0] * x.t102;
+        let t6 = qd_[3] * x.t127;
+        let t7 = qd_[4] * x.t181;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = x.k34 * (qd_[4] * x.t3);
-        let t13 = qd_[0] * x.t164 - qd_[1] * x.t7 - qd_[2] * x.t7;
-        let t14 = x.s5 * qd_[4];
-        let t15 = x.s5.mul_add(qd_[3], qd_[0] * x.t99 - qd_[1] * x.t78 - qd_[2] * x.t78);
+        let cor4_4 = x.k34 * (qd_[4] * x.t1);
+        let t8 = x.s5 * qd_[4];
+        let t9 = x.s5.mul_add(qd_[3], qd_[0] * x.t93 - qd_[1] * x.t73 - qd_[2] * x.t73);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = x.k69 * t15;
-        /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = x.k68 * (t13 + t14);
+        let cor5_6 = x.k68 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = x.k68 * t15;
+        let cor6_5 = x.k67 * t9;
+        let t10 = x.k7 * (qd_[5] * x.t5);
+        let t11 = x.k7 * (qd_[5] * x.t73);
+        let t12 = qd_[4].mul_add(x.t73, qd_[3] * x.t5);
+        /// C26 = sum of D26k qd_k (6.44)
+        let cor2_6 = x.k68 * (t5 + t12);
+        /// C62 = sum of D62k qd_k (6.44)
+        let cor6_2 = x.k68 * (t12 - t5);
+        let t13 = qd_[3].mul_add(x.t147, t7);
+        let t14 = qd_[2] * x.t117;
+        let t15 = qd_[4] * x.t183;
+        /// C16 = sum of D16k qd_k (6.44)
+        let cor1_6 = x.k67
+            * qd_[4].mul_add(x.t93, qd_[1] * x.t102 - qd_[2] * x.t123 - qd_[3] * x.t69);
+        let t16 = qd_[4] * x.t182;
+        /// C33 = sum of D33k qd_k (6.44)
+        let cor3_3 = x.k1 * qd_[3].mul_add(x.t125, qd_[4] * x.t161);
+        let t17 = qd_[0] * x.t123;
+        let t18 = qd_[2].mul_add(x.t5, qd_[0].mul_add(x.t69, qd_[1] * x.t5));
+        /// C46 = sum of D46k qd_k (6.44)
+        let cor4_6 = x.k67 * (t8 + t18);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = x.k1
             * qd_[4]
                 .mul_add(
-                    x.t185,
+                    x.t172,
                     qd_[3]
-                        .mul_add(x.t149, x.k41.mul_add(qd_[1] * x.t120, qd_[2] * x.t124)),
+                        .mul_add(x.t137, x.k41.mul_add(qd_[1] * x.t53, qd_[2] * x.t115)),
                 );
-        let t16 = qd_[4]
-            .mul_add(x.t187, qd_[3].mul_add(x.t151, qd_[2].mul_add(x.t126, t1)));
-        let t17 = x
+        let t19 = qd_[4]
+            .mul_add(x.t174, qd_[3].mul_add(x.t139, qd_[2].mul_add(x.t116, t1)));
+        let t20 = x
             .k32
             .mul_add(
-                qd_[5] * x.t108,
+                qd_[5] * x.t102,
                 qd_[4]
                     .mul_add(
-                        x.t100,
+                        x.t95,
                         qd_[3]
                             .mul_add(
-                                x.t76,
-                                qd_[2].mul_add(x.t64, x.k41.mul_add(qd_[0] * x.t120, t1)),
+                                x.t71,
+                                qd_[2].mul_add(x.t59, x.k41.mul_add(qd_[0] * x.t53, t1)),
                             ),
                     ),
             );
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = x.k1 * (t16 + t17);
+        let cor1_2 = x.k1 * (t19 + t20);
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = x.k1 * (t16 - t17);
-        let t18 = qd_[4]
-            .mul_add(x.t188, qd_[3].mul_add(x.t152, qd_[1].mul_add(x.t64, t2)));
-        let t19 = x
-            .k32
+        let cor2_1 = x.k1 * (t19 - t20);
+        let t21 = qd_[4]
+            .mul_add(x.t177, qd_[3].mul_add(x.t140, qd_[1].mul_add(x.t59, t14)));
+        let t22 = x
+            .k7
             .mul_add(
-                qd_[5] * x.t135,
+                qd_[5] * x.t123,
                 qd_[4]
                     .mul_add(
-                        x.t133,
+                        x.t122,
                         qd_[3]
                             .mul_add(
-                                x.t130,
-                                t2 + qd_[1].mul_add(x.t126, qd_[0] * x.t124),
+                                x.t120,
+                                t14 + qd_[1].mul_add(x.t116, qd_[0] * x.t115),
                             ),
                     ),
             );
         /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = x.k1 * (t18 + t19);
+        let cor1_3 = x.k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = x.k1 * (t18 - t19);
-        let t20 = qd_[4].mul_add(x.t191, t3 + qd_[2].mul_add(x.t130, qd_[1] * x.t76));
-        let t21 = x
-            .k32
+        let cor3_1 = x.k1 * (t21 - t22);
+        let t23 = qd_[4].mul_add(x.t180, t2 + qd_[2].mul_add(x.t120, qd_[1] * x.t71));
+        let t24 = x
+            .k7
             .mul_add(
-                qd_[5] * x.t164,
+                qd_[5] * x.t69,
                 qd_[4]
                     .mul_add(
-                        x.t163,
-                        t3
+                        x.t152,
+                        t2
                             + qd_[2]
-                                .mul_add(x.t152, qd_[1].mul_add(x.t151, qd_[0] * x.t149)),
+                                .mul_add(x.t140, qd_[1].mul_add(x.t139, qd_[0] * x.t137)),
                     ),
             );
         /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = x.k1 * (t20 + t21);
+        let cor1_4 = x.k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = x.k1 * (t20 - t21);
-        let t22 = t4 + qd_[3].mul_add(x.t163, qd_[2].mul_add(x.t133, qd_[1] * x.t100));
-        let t23 = x
+        let cor4_1 = x.k1 * (t23 - t24);
+        let t25 = t15 + qd_[3].mul_add(x.t152, qd_[2].mul_add(x.t122, qd_[1] * x.t95));
+        let t26 = x
             .k32
             .mul_add(
-                qd_[5] * x.t99,
-                t4
+                qd_[5] * x.t93,
+                t15
                     + qd_[3]
                         .mul_add(
-                            x.t191,
+                            x.t180,
                             qd_[2]
-                                .mul_add(x.t188, qd_[1].mul_add(x.t187, qd_[0] * x.t185)),
+                                .mul_add(x.t177, qd_[1].mul_add(x.t174, qd_[0] * x.t172)),
                         ),
             );
         /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = x.k1 * (t22 + t23);
+        let cor1_5 = x.k1 * (t25 + t26);
         /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = x.k1 * (t22 - t23);
+        let cor5_1 = x.k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = x.k1 * qd_[4].mul_add(x.t184, x.k53.mul_add(t5, qd_[3] * x.t147));
-        let t24 = qd_[4].mul_add(x.t183, qd_[3].mul_add(x.t146, t6));
-        let t25 = x
+        let cor2_2 = x.k1
+            * qd_[4].mul_add(x.t171, x.k62.mul_add(qd_[2] * x.t31, qd_[3] * x.t135));
+        let t27 = qd_[4].mul_add(x.t176, qd_[3].mul_add(x.t134, t3));
+        let t28 = x
             .k40
             .mul_add(
-                qd_[4] * x.t86,
+                qd_[4] * x.t82,
                 x
                     .k38
                     .mul_add(
-                        qd_[3] * x.t67,
-                        t6 + x.k53.mul_add(qd_[1] * x.t60, qd_[0] * x.t126),
+                        qd_[3] * x.t62,
+                        t3 + x.k62.mul_add(qd_[1] * x.t31, qd_[0] * x.t116),
                     ),
-            ) - qd_[0] * x.t64;
+            ) - qd_[0] * x.t59;
         /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = x.k1 * (t24 + t25);
+        let cor2_3 = x.k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = x.k1 * (t24 - t25);
-        let t26 = qd_[4].mul_add(x.t190, x.k38.mul_add(qd_[2] * x.t67, t7));
-        let t27 = x.k7 * (qd_[5] * x.t7);
-        let t28 = qd_[4]
-            .mul_add(
-                x.t162,
-                t7 + qd_[2].mul_add(x.t146, qd_[0].mul_add(x.t151, qd_[1] * x.t147)),
-            ) + t27 - qd_[0] * x.t76;
-        /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = x.k1 * (t26 + t28);
-        /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = x.k1 * (t26 - t28);
-        let t29 = t8 + qd_[3].mul_add(x.t162, x.k40 * (qd_[2] * x.t86));
-        let t30 = x.k7 * (qd_[5] * x.t78);
-        let t31 = t8
-            + qd_[3]
-                .mul_add(
-                    x.t190,
-                    qd_[2].mul_add(x.t183, qd_[0].mul_add(x.t187, qd_[1] * x.t184)),
-                ) + t30 - qd_[0] * x.t100;
-        /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = x.k1 * (t29 + t31);
-        /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = x.k1 * (t29 - t31);
-        let t32 = qd_[4].mul_add(x.t78, qd_[3] * x.t7);
-        /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = x.k69 * (t9 + t32);
-        /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = x.k69 * (t32 - t9);
-        let t33 = qd_[4].mul_add(x.t176, t10);
-        let t34 = t27
+        let cor3_2 = x.k1 * (t27 - t28);
+        let t29 = qd_[4].mul_add(x.t179, x.k38.mul_add(qd_[2] * x.t62, t4));
+        let t30 = t10
             + qd_[4]
                 .mul_add(
-                    x.t158,
-                    t10 + qd_[2].mul_add(x.t137, qd_[1].mul_add(x.t146, qd_[0] * x.t152)),
-                ) - x.k38.mul_add(qd_[1] * x.t67, qd_[0] * x.t130);
+                    x.t151,
+                    t4 + qd_[2].mul_add(x.t134, qd_[0].mul_add(x.t139, qd_[1] * x.t135)),
+                ) - qd_[0] * x.t71;
+        /// C24 = sum of D24k qd_k (6.44)
+        let cor2_4 = x.k1 * (t29 + t30);
+        /// C42 = sum of D42k qd_k (6.44)
+        let cor4_2 = x.k1 * (t29 - t30);
+        let t31 = qd_[3].mul_add(x.t151, x.k40 * (qd_[2] * x.t82)) + t16;
+        let t32 = t11
+            + (t16
+                + qd_[3]
+                    .mul_add(
+                        x.t179,
+                        qd_[2].mul_add(x.t176, qd_[0].mul_add(x.t174, qd_[1] * x.t171)),
+                    )) - qd_[0] * x.t95;
+        /// C25 = sum of D25k qd_k (6.44)
+        let cor2_5 = x.k1 * (t31 + t32);
+        /// C52 = sum of D52k qd_k (6.44)
+        let cor5_2 = x.k1 * (t31 - t32);
+        let t33 = qd_[4].mul_add(x.t164, t6);
+        let t34 = t10
+            + qd_[4]
+                .mul_add(
+                    x.t147,
+                    t6 + qd_[2].mul_add(x.t125, qd_[1].mul_add(x.t134, qd_[0] * x.t140)),
+                ) - qd_[0].mul_add(x.t120, x.k38 * (qd_[1] * x.t62));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = x.k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = x.k1 * (t33 - t34);
-        let t35 = qd_[3].mul_add(x.t158, t11);
-        let t36 = t30
-            + (t11
+        let t35 = t11
+            + (t7
                 + qd_[3]
                     .mul_add(
-                        x.t176,
-                        qd_[2].mul_add(x.t173, qd_[1].mul_add(x.t183, qd_[0] * x.t188)),
-                    )) - x.k40.mul_add(qd_[1] * x.t86, qd_[0] * x.t133);
+                        x.t164,
+                        qd_[2].mul_add(x.t161, qd_[1].mul_add(x.t176, qd_[0] * x.t177)),
+                    )) - qd_[0].mul_add(x.t122, x.k40 * (qd_[1] * x.t82));
         /// C35 = sum of D35k qd_k (6.44)
-        let cor3_5 = x.k1 * (t35 + t36);
+        let cor3_5 = x.k1 * (t13 + t35);
         /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = x.k1 * (t35 - t36);
+        let cor5_3 = x.k1 * (t13 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = x.k69 * (t12 + t32);
+        let cor3_6 = x.k68 * (t12 - t17);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = x.k69 * (t32 - t12);
-        let t37 = x
+        let cor6_3 = x.k68 * (t12 + t17);
+        let t36 = x
             .k32
             .mul_add(
                 x.s5 * qd_[5],
                 x
-                    .k67
+                    .k65
                     .mul_add(
-                        qd_[3] * x.t3,
-                        qd_[2].mul_add(x.t176, qd_[1].mul_add(x.t190, qd_[0] * x.t191)),
+                        qd_[3] * x.t1,
+                        qd_[2].mul_add(x.t164, qd_[1].mul_add(x.t179, qd_[0] * x.t180)),
                     ),
-            ) - qd_[2].mul_add(x.t158, qd_[1].mul_add(x.t162, qd_[0] * x.t163));
+            ) - qd_[2].mul_add(x.t147, qd_[1].mul_add(x.t151, qd_[0] * x.t152));
         /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = x.k1 * t37;
+        let cor4_5 = x.k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = x.k70 * t37;
-        /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = x.k68 * (t14 - t13);
+        let cor5_4 = x.k69 * t36;
+        /// C64 = sum of D64k qd_k (6.44)
+        let cor6_4 = x.k67 * (t8 - t18);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -1127,8 +1111,8 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t45 = x.k14.mul_add(t43, x.k25.mul_add(t16, x.k54 * t17));
         let t46 = x.k14.mul_add(t42, x.k55.mul_add(t18, x.k22 * t16));
         let t47 = x.c3.mul_add(t46, x.s3 * t45);
-        let t48 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t109);
-        let t49 = x.k2.mul_add(t1 * t2, x.t110);
+        let t48 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t103);
+        let t49 = x.k2.mul_add(t1 * t2, x.t104);
         let t50 = x.s3.mul_add(t49, x.c3 * t48);
         let t51 = x.c3 * t49 - x.s3 * t48;
         let t52 = x.k2.mul_add(t16, x.k5 * t17) + t50;
@@ -1187,7 +1171,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             .k2
             .mul_add(
                 t47,
-                x.t111 + (x.k10.mul_add(t4, x.k29 * t3) + (t1 * t7 - t2 * t6)) + h3,
+                x.t105 + (x.k10.mul_add(t4, x.k29 * t3) + (t1 * t7 - t2 * t6)) + h3,
             );
         /// centripetal, Coriolis and gravity torque 1
         let h1 = x
@@ -1259,8 +1243,8 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         let t29 = x.s2.mul_add(qdd_[0], t3);
         let t30 = x.c2 * qdd_[0] - t4;
         let t31 = x.k2.mul_add(t4 - t30, x.k44 * t1.mul_add(t1, t5));
-        let t32 = x.t109 + x.k3.mul_add(t4 + t30, x.k21 * qd_[1].mul_add(qd_[1], t5));
-        let t33 = x.t110 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd_[1]));
+        let t32 = x.t103 + x.k3.mul_add(t4 + t30, x.k21 * qd_[1].mul_add(qd_[1], t5));
+        let t33 = x.t104 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd_[1]));
         let t34 = x.s3.mul_add(t33, x.c3 * t32);
         let t35 = x.c3 * t33 - x.s3 * t32;
         let t36 = qd_[2].mul_add(t10, x.s3.mul_add(t30, x.c3 * t29));
@@ -1347,7 +1331,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             .k2
             .mul_add(
                 t63,
-                x.t111
+                x.t105
                     + (t1 * t7 - t2 * t6
                         + x.k28.mul_add(qdd_[1], x.k11.mul_add(t30, x.k29 * t29))) + tau3,
             );

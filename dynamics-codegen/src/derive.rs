@@ -48,6 +48,85 @@ pub struct Equations {
     pub potential_energy: NodeId,
 }
 
+/// `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` from `dm[k]` = `∂M/∂q_k` (rows first),
+/// built from the ordered pair (j, k) so that hash-consing makes `Γ_ikj` the same node.
+fn christoffel_symbols(g: &mut Graph, dm: &[Vec<NodeId>], half: NodeId) -> Vec<Vec<Vec<NodeId>>> {
+    let n = dm.len();
+    let d = |k: usize, i: usize, j: usize| dm[k][i * n + j];
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    (0..n)
+                        .map(|k| {
+                            let (j, k) = (j.min(k), j.max(k));
+                            let s = g.add(d(k, i, j), d(j, i, k));
+                            let s = g.sub(s, d(i, j, k));
+                            g.mul(half, s)
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `C_ij = Σ_k Γ_ijk q̇_k` summed two ways: over the symbols, and as `½(Ṁ_ij + P_ij − P_ji)`
+/// with `Ṁ_ij = Σ_k ∂M_ij/∂q_k q̇_k` and `P_ij = Σ_k ∂M_ik/∂q_j q̇_k` (the same terms without
+/// forming the n³ symbols).
+fn coriolis_sums(
+    g: &mut Graph,
+    dm: &[Vec<NodeId>],
+    christoffel: &[Vec<Vec<NodeId>>],
+    qd: &[NodeId],
+    half: NodeId,
+) -> [Vec<Vec<NodeId>>; 2] {
+    let n = dm.len();
+    let d = |k: usize, i: usize, j: usize| dm[k][i * n + j];
+    let contract = |g: &mut Graph, term: &dyn Fn(usize) -> NodeId| {
+        let mut sum = g.num(Number::ZERO);
+        for (k, &qd_k) in qd.iter().enumerate() {
+            let t = g.mul(term(k), qd_k);
+            sum = g.add(sum, t);
+        }
+        sum
+    };
+    let by_symbols: Vec<Vec<NodeId>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| contract(g, &|k| christoffel[i][j][k]))
+                .collect()
+        })
+        .collect();
+    let mut by_derivatives = vec![vec![half; n]; n];
+    #[allow(clippy::needless_range_loop)] // fills C_ij and C_ji together
+    for i in 0..n {
+        let m_dot = contract(g, &|k| d(k, i, i));
+        by_derivatives[i][i] = g.mul(half, m_dot);
+        for j in i + 1..n {
+            let m_dot = contract(g, &|k| d(k, i, j));
+            let p_ij = contract(g, &|k| d(j, i, k));
+            let p_ji = contract(g, &|k| d(i, j, k));
+            let skew = g.sub(p_ij, p_ji);
+            let upper = g.add(m_dot, skew);
+            let lower = g.sub(m_dot, skew);
+            by_derivatives[i][j] = g.mul(half, upper);
+            by_derivatives[j][i] = g.mul(half, lower);
+        }
+    }
+    [by_symbols, by_derivatives]
+}
+
+/// The additions, multiplications and negations that computing `outputs` takes.
+fn operations(g: &Graph, outputs: &[NodeId]) -> usize {
+    let live = g.live(outputs);
+    g.nodes()
+        .filter(|(id, node)| {
+            live[id.index()] && matches!(node, Node::Add(..) | Node::Mul(..) | Node::Neg(_))
+        })
+        .count()
+}
+
 /// Sine and cosine of an exact multiple `k` of π when they are rational.
 fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
     // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
@@ -265,77 +344,37 @@ pub fn derive(robot: &Robot) -> Equations {
     );
     let (kinetic_energy, potential_energy) = (kinetic.id(), potential.id());
 
-    // ∂M/∂q_k, then Γ_ijk and C.
+    // ∂M/∂q_k (by differentiating the composite rigid body algorithm for a revolute joint, its
+    // trace for a prismatic one), then Γ_ijk and C.
+    let analytic: Vec<Option<Vec<NodeId>>> = (0..n)
+        .map(|k| {
+            algo::crba_derivative(&chain, k).map(|dm| dm.iter().flat_map(|r| ids(r)).collect())
+        })
+        .collect();
     let mut g = graph.into_inner();
-    let dm: Vec<Vec<NodeId>> = (0..n).map(|k| g.derivative(&flat, idx(k))).collect();
-    let d = |k: usize, i: usize, j: usize| dm[k][i * n + j];
-    // Γ_ijk = Γ_ikj: built from the ordered pair, so that hash-consing shares the node.
-    let christoffel: Vec<Vec<Vec<NodeId>>> = (0..n)
-        .map(|i| {
-            (0..n)
-                .map(|j| {
-                    (0..n)
-                        .map(|k| {
-                            let (j, k) = (j.min(k), j.max(k));
-                            let s = g.add(d(k, i, j), d(j, i, k));
-                            let s = g.sub(s, d(i, j, k));
-                            g.mul(half_id, s)
-                        })
-                        .collect()
-                })
-                .collect()
-        })
+    let traced: Vec<Vec<NodeId>> = (0..n).map(|k| g.derivative(&flat, idx(k))).collect();
+    let by_algorithm: Vec<Vec<NodeId>> = analytic
+        .into_iter()
+        .zip(&traced)
+        .map(|(a, t)| a.unwrap_or_else(|| t.clone()))
         .collect();
-    // C_ij = Σ_k Γ_ijk q̇_k, summed two ways; the cheaper one is kept (which one wins depends
-    // on the robot's zeros: PUMA 560 and the 7-joint arm prefer the second, 6-joint random
-    // robots the first).
-    let contract = |g: &mut Graph, term: &dyn Fn(usize) -> NodeId| {
-        let mut sum = g.num(Number::ZERO);
-        for (k, &qd_k) in qd_ids.iter().enumerate() {
-            let t = g.mul(term(k), qd_k);
-            sum = g.add(sum, t);
-        }
-        sum
-    };
-    let by_symbols: Vec<Vec<NodeId>> = (0..n)
-        .map(|i| {
-            (0..n)
-                .map(|j| contract(&mut g, &|k| christoffel[i][j][k]))
-                .collect()
-        })
-        .collect();
-    // ½(Ṁ_ij + P_ij − P_ji), with Ṁ_ij = Σ_k ∂M_ij/∂q_k q̇_k and P_ij = Σ_k ∂M_ik/∂q_j q̇_k:
-    // the same sums without forming the n³ symbols.
-    let mut by_derivatives = vec![vec![half_id; n]; n];
-    #[allow(clippy::needless_range_loop)] // fills C_ij and C_ji together
-    for i in 0..n {
-        let m_dot = contract(&mut g, &|k| d(k, i, i));
-        by_derivatives[i][i] = g.mul(half_id, m_dot);
-        for j in i + 1..n {
-            let m_dot = contract(&mut g, &|k| d(k, i, j));
-            let p_ij = contract(&mut g, &|k| d(j, i, k));
-            let p_ji = contract(&mut g, &|k| d(i, j, k));
-            let skew = g.sub(p_ij, p_ji);
-            let upper = g.add(m_dot, skew);
-            let lower = g.sub(m_dot, skew);
-            by_derivatives[i][j] = g.mul(half_id, upper);
-            by_derivatives[j][i] = g.mul(half_id, lower);
+    // Which way is cheaper depends on the robot (differentiating the algorithm wins on PUMA 560
+    // and UR5, the trace on dense random arms; the sum of symbols on the latter too): the
+    // cheapest C of the four is kept, with its symbols.
+    let mut best = None;
+    let mut best_cost = usize::MAX;
+    for dm in [&traced, &by_algorithm] {
+        let christoffel = christoffel_symbols(&mut g, dm, half_id);
+        for coriolis in coriolis_sums(&mut g, dm, &christoffel, &qd_ids, half_id) {
+            let flat: Vec<NodeId> = coriolis.iter().flatten().copied().collect();
+            let cost = operations(&g, &flat);
+            if cost < best_cost {
+                best_cost = cost;
+                best = Some((christoffel.clone(), coriolis));
+            }
         }
     }
-    let cost = |c: &[Vec<NodeId>]| {
-        let flat: Vec<NodeId> = c.iter().flatten().copied().collect();
-        let live = g.live(&flat);
-        g.nodes()
-            .filter(|(id, node)| {
-                live[id.index()] && matches!(node, Node::Add(..) | Node::Mul(..) | Node::Neg(_))
-            })
-            .count()
-    };
-    let coriolis = if cost(&by_derivatives) < cost(&by_symbols) {
-        by_derivatives
-    } else {
-        by_symbols
-    };
+    let (christoffel, coriolis) = best.unwrap_or_default();
 
     Equations {
         graph: g,

@@ -177,13 +177,8 @@ impl<S: Scalar> ChainJoint<S> {
 
     /// `R v`: a vector in J_i axes expressed in J_{i−1} axes.
     pub fn to_parent(&self, v: V3<S>) -> V3<S> {
-        let (sa, ca, st, ct) = (
-            self.sin_alpha,
-            self.cos_alpha,
-            self.sin_theta,
-            self.cos_theta,
-        );
-        let u = V3::new(ct * v.x - st * v.y, st * v.x + ct * v.y, v.z);
+        let (sa, ca) = (self.sin_alpha, self.cos_alpha);
+        let u = self.to_turned(v);
         V3::new(u.x, ca * u.y - sa * u.z, sa * u.y + ca * u.z)
     }
 
@@ -198,12 +193,23 @@ impl<S: Scalar> ChainJoint<S> {
             .mul(&Mat3::rot_z(self.sin_theta, self.cos_theta))
     }
 
+    /// `Rotz(θ) v`: the first step of [`ChainJoint::to_parent`].
+    pub fn to_turned(&self, v: V3<S>) -> V3<S> {
+        let (st, ct) = (self.sin_theta, self.cos_theta);
+        V3::new(ct * v.x - st * v.y, st * v.x + ct * v.y, v.z)
+    }
+
+    /// `Rotz(θ) I Rotz(θ)ᵀ`: the first step of [`ChainJoint::body_to_parent`].
+    pub fn turned_inertia(&self, i: [S; 6]) -> [S; 6] {
+        rotate_inertia(i, self.sin_theta, self.cos_theta, 0, 1)
+    }
+
     /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes.
     pub fn body_to_parent(&self, b: &Body<S>) -> Body<S> {
         let p = self.offset();
         let m = b.mass;
         let hr = self.to_parent(b.h);
-        let ir = rotate_inertia(b.inertia, self.sin_theta, self.cos_theta, 0, 1);
+        let ir = self.turned_inertia(b.inertia);
         let ir = rotate_inertia(ir, self.sin_alpha, self.cos_alpha, 1, 2);
         let mp = p.scale(m);
         // I' = R I Rᵀ + m(|p|²1 − p pᵀ) + 2(p·h')1 − p h'ᵀ − h' pᵀ, with h' = R h

@@ -12,7 +12,7 @@ mod rnea;
 mod vector;
 
 pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, JointKind};
-pub use crba::crba;
+pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
 pub use rnea::rnea;
 pub use vector::{Mat3, V3};
