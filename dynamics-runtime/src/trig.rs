@@ -152,69 +152,121 @@ fn slow_f32(x: f32) -> (f32, f32) {
     }
 }
 
+/// The reduction and the kernels of `f64`, written once for the scalar and the vector paths:
+/// `$x` is the argument (a number or a register), `$k` makes a constant of that kind, and
+/// `$add`, `$sub`, `$mul` are its operations. Gives `(shifted, sin r, cos r)`: `k mod 4` is in
+/// the low bits of `shifted`. Every path runs these operations in this order, which is why
+/// their results agree bit for bit.
+macro_rules! reduce_and_evaluate_f64 {
+    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr) => {{
+        let (x, k, add, sub, mul) = ($x, $k, $add, $sub, $mul);
+        let shifted = add(mul(x, k(core::f64::consts::FRAC_2_PI)), k(SHIFT_F64));
+        let n = sub(shifted, k(SHIFT_F64));
+
+        // x − n·P1, n·P2 are exact. Their difference is exact below 2^-20 (both lie on the
+        // grid 2^-73); above, |x − n·P1| > |n·P2|, so Fast2Sum recovers its rounding error `e`.
+        // Then |r| > 400·|n·P3| over the whole range, so the second Fast2Sum is valid too. `e`
+        // goes into `r_lo` rather than `r`, off the critical path (|r_lo| stays below an ulp
+        // of `r`).
+        let a = sub(x, mul(n, k(P1_F64)));
+        let b = mul(n, k(P2_F64));
+        let c = mul(n, k(P3_F64));
+        let s = sub(a, b);
+        let e = sub(sub(a, s), b);
+        let r = sub(s, c);
+        let r_lo = add(sub(sub(s, r), c), e);
+
+        let z = mul(r, r);
+        let z2 = mul(z, z);
+        let z4 = mul(z2, z2);
+        let pair = |p: f64, q: f64| add(k(p), mul(z, k(q)));
+        let sin_poly = add(
+            add(pair(S1_F64, S2_F64), mul(z2, pair(S3_F64, S4_F64))),
+            mul(z4, pair(S5_F64, S6_F64)),
+        );
+        let cos_poly = add(
+            add(pair(C1_F64, C2_F64), mul(z2, pair(C3_F64, C4_F64))),
+            mul(z4, pair(C5_F64, C6_F64)),
+        );
+        let half_z = mul(k(0.5), z);
+        let w = sub(k(1.0), half_z);
+        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
+        let cos_r = add(
+            w,
+            add(
+                sub(sub(k(1.0), w), half_z),
+                sub(mul(z2, cos_poly), mul(r, r_lo)),
+            ),
+        );
+        (shifted, sin_r, cos_r)
+    }};
+}
+
+/// [`reduce_and_evaluate_f64`] for `f32`.
+macro_rules! reduce_and_evaluate_f32 {
+    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr) => {{
+        let (x, k, add, sub, mul) = ($x, $k, $add, $sub, $mul);
+        let shifted = add(mul(x, k(core::f32::consts::FRAC_2_PI)), k(SHIFT_F32));
+        let n = sub(shifted, k(SHIFT_F32));
+
+        // x − n·P1, n·P2, n·P3 are exact. a − b is exact below 2^-5 (grid 2^-29), and above it
+        // |a| > |b|: Fast2Sum. s − c has no such margin: TwoSum. |r| > 400·|n·P4|: Fast2Sum.
+        // The errors go into `r_lo`, off the critical path.
+        let a = sub(x, mul(n, k(P1_F32)));
+        let b = mul(n, k(P2_F32));
+        let c = mul(n, k(P3_F32));
+        let d = mul(n, k(P4_F32));
+        let s = sub(a, b);
+        let e1 = sub(sub(a, s), b);
+        let t = sub(s, c);
+        let t_s = sub(t, s);
+        let e2 = sub(sub(s, sub(t, t_s)), add(c, t_s));
+        let r = sub(t, d);
+        let r_lo = add(sub(sub(t, r), d), add(e1, e2));
+
+        let z = mul(r, r);
+        let z2 = mul(z, z);
+        let pair = |p: f32, q: f32| add(k(p), mul(z, k(q)));
+        let sin_poly = add(pair(S1_F32, S2_F32), mul(z2, pair(S3_F32, S4_F32)));
+        let cos_poly = add(pair(C1_F32, C2_F32), mul(z2, k(C3_F32)));
+        let half_z = mul(k(0.5), z);
+        let w = sub(k(1.0), half_z);
+        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
+        let cos_r = add(
+            w,
+            add(
+                sub(sub(k(1.0), w), half_z),
+                sub(mul(z2, cos_poly), mul(r, r_lo)),
+            ),
+        );
+        (shifted, sin_r, cos_r)
+    }};
+}
+
 #[inline(always)]
 fn fast_f64(x: f64) -> (f64, f64) {
-    let shifted = x * core::f64::consts::FRAC_2_PI + SHIFT_F64;
+    let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
+        x,
+        |c: f64| c,
+        |a: f64, b: f64| a + b,
+        |a: f64, b: f64| a - b,
+        |a: f64, b: f64| a * b
+    );
     #[allow(clippy::cast_possible_truncation)]
     let quadrant = shifted.to_bits() as u32;
-    let k = shifted - SHIFT_F64;
-
-    // x − k·P1, k·P2 are exact. Their difference is exact below 2^-20 (both lie on the grid
-    // 2^-73); above, |x − k·P1| > |k·P2|, so Fast2Sum recovers its rounding error `e`. Then
-    // |r| > 400·|k·P3| over the whole range, so the second Fast2Sum is valid too. `e` goes into
-    // `r_lo` rather than `r`, off the critical path (|r_lo| stays below an ulp of `r`).
-    let a = x - k * P1_F64;
-    let b = k * P2_F64;
-    let c = k * P3_F64;
-    let s = a - b;
-    let e = (a - s) - b;
-    let r = s - c;
-    let r_lo = ((s - r) - c) + e;
-
-    let z = r * r;
-    let z2 = z * z;
-    let z4 = z2 * z2;
-    let sin_poly = (S1_F64 + z * S2_F64) + z2 * (S3_F64 + z * S4_F64) + z4 * (S5_F64 + z * S6_F64);
-    let cos_poly = (C1_F64 + z * C2_F64) + z2 * (C3_F64 + z * C4_F64) + z4 * (C5_F64 + z * C6_F64);
-    let half_z = 0.5 * z;
-    let w = 1.0 - half_z;
-    let sin_r = r + ((r * z) * sin_poly + r_lo * w);
-    let cos_r = w + (((1.0 - w) - half_z) + (z2 * cos_poly - r * r_lo));
-
     quadrant_f64(quadrant, sin_r, cos_r)
 }
 
 #[inline(always)]
 fn fast_f32(x: f32) -> (f32, f32) {
-    let shifted = x * core::f32::consts::FRAC_2_PI + SHIFT_F32;
-    let quadrant = shifted.to_bits();
-    let k = shifted - SHIFT_F32;
-
-    // x − k·P1, k·P2, k·P3 are exact. a − b is exact below 2^-5 (grid 2^-29), and above it
-    // |a| > |b|: Fast2Sum. s − c has no such margin: TwoSum. |r| > 400·|k·P4|: Fast2Sum. The
-    // errors go into `r_lo`, off the critical path.
-    let a = x - k * P1_F32;
-    let b = k * P2_F32;
-    let c = k * P3_F32;
-    let d = k * P4_F32;
-    let s = a - b;
-    let e1 = (a - s) - b;
-    let t = s - c;
-    let t_s = t - s;
-    let e2 = (s - (t - t_s)) - (c + t_s);
-    let r = t - d;
-    let r_lo = ((t - r) - d) + (e1 + e2);
-
-    let z = r * r;
-    let z2 = z * z;
-    let sin_poly = (S1_F32 + z * S2_F32) + z2 * (S3_F32 + z * S4_F32);
-    let cos_poly = (C1_F32 + z * C2_F32) + z2 * C3_F32;
-    let half_z = 0.5 * z;
-    let w = 1.0 - half_z;
-    let sin_r = r + ((r * z) * sin_poly + r_lo * w);
-    let cos_r = w + (((1.0 - w) - half_z) + (z2 * cos_poly - r * r_lo));
-
-    quadrant_f32(quadrant, sin_r, cos_r)
+    let (shifted, sin_r, cos_r) = reduce_and_evaluate_f32!(
+        x,
+        |c: f32| c,
+        |a: f32, b: f32| a + b,
+        |a: f32, b: f32| a - b,
+        |a: f32, b: f32| a * b
+    );
+    quadrant_f32(shifted.to_bits(), sin_r, cos_r)
 }
 
 /// `sin(x)` and `cos(x)` as combinations of `sin r` and `cos r` with coefficients 0 and ±1,
@@ -330,41 +382,13 @@ mod lanes {
     /// the quadrant chosen by a swap (odd `k`) and two sign flips instead of the table.
     #[target_feature(enable = "avx2")]
     pub(super) unsafe fn fast_4(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
-        let k = _mm256_set1_pd;
-        let (add, sub, mul) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd);
         let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
-        let shifted = add(mul(x, k(core::f64::consts::FRAC_2_PI)), k(SHIFT_F64));
-        let n = sub(shifted, k(SHIFT_F64));
-
-        let a = sub(x, mul(n, k(P1_F64)));
-        let b = mul(n, k(P2_F64));
-        let c = mul(n, k(P3_F64));
-        let s = sub(a, b);
-        let e = sub(sub(a, s), b);
-        let r = sub(s, c);
-        let r_lo = add(sub(sub(s, r), c), e);
-
-        let z = mul(r, r);
-        let z2 = mul(z, z);
-        let z4 = mul(z2, z2);
-        let pair = |p: f64, q: f64| add(k(p), mul(z, k(q)));
-        let sin_poly = add(
-            add(pair(S1_F64, S2_F64), mul(z2, pair(S3_F64, S4_F64))),
-            mul(z4, pair(S5_F64, S6_F64)),
-        );
-        let cos_poly = add(
-            add(pair(C1_F64, C2_F64), mul(z2, pair(C3_F64, C4_F64))),
-            mul(z4, pair(C5_F64, C6_F64)),
-        );
-        let half_z = mul(k(0.5), z);
-        let w = sub(k(1.0), half_z);
-        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
-        let cos_r = add(
-            w,
-            add(
-                sub(sub(k(1.0), w), half_z),
-                sub(mul(z2, cos_poly), mul(r, r_lo)),
-            ),
+        let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
+            x,
+            |c: f64| _mm256_set1_pd(c),
+            |a, b| _mm256_add_pd(a, b),
+            |a, b| _mm256_sub_pd(a, b),
+            |a, b| _mm256_mul_pd(a, b)
         );
 
         // k mod 4 is in the low bits of `shifted`.
@@ -409,41 +433,13 @@ mod pairs {
     /// `(sin x, cos x)` of two arguments in the fast range.
     #[target_feature(enable = "sse2")]
     pub(super) unsafe fn fast_2(x: [f64; 2]) -> ([f64; 2], [f64; 2]) {
-        let k = _mm_set1_pd;
-        let (add, sub, mul) = (_mm_add_pd, _mm_sub_pd, _mm_mul_pd);
         let x = _mm_set_pd(x[1], x[0]);
-        let shifted = add(mul(x, k(core::f64::consts::FRAC_2_PI)), k(SHIFT_F64));
-        let n = sub(shifted, k(SHIFT_F64));
-
-        let a = sub(x, mul(n, k(P1_F64)));
-        let b = mul(n, k(P2_F64));
-        let c = mul(n, k(P3_F64));
-        let s = sub(a, b);
-        let e = sub(sub(a, s), b);
-        let r = sub(s, c);
-        let r_lo = add(sub(sub(s, r), c), e);
-
-        let z = mul(r, r);
-        let z2 = mul(z, z);
-        let z4 = mul(z2, z2);
-        let pair = |p: f64, q: f64| add(k(p), mul(z, k(q)));
-        let sin_poly = add(
-            add(pair(S1_F64, S2_F64), mul(z2, pair(S3_F64, S4_F64))),
-            mul(z4, pair(S5_F64, S6_F64)),
-        );
-        let cos_poly = add(
-            add(pair(C1_F64, C2_F64), mul(z2, pair(C3_F64, C4_F64))),
-            mul(z4, pair(C5_F64, C6_F64)),
-        );
-        let half_z = mul(k(0.5), z);
-        let w = sub(k(1.0), half_z);
-        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
-        let cos_r = add(
-            w,
-            add(
-                sub(sub(k(1.0), w), half_z),
-                sub(mul(z2, cos_poly), mul(r, r_lo)),
-            ),
+        let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
+            x,
+            |c: f64| _mm_set1_pd(c),
+            |a, b| _mm_add_pd(a, b),
+            |a, b| _mm_sub_pd(a, b),
+            |a, b| _mm_mul_pd(a, b)
         );
 
         // k mod 4 is in the low bits of `shifted`. Odd k swaps sine and cosine: the low bit,
@@ -492,38 +488,13 @@ mod quads {
     /// `(sin x, cos x)` of four arguments in the fast range.
     #[target_feature(enable = "sse2")]
     pub(super) unsafe fn fast_4(x: [f32; 4]) -> ([f32; 4], [f32; 4]) {
-        let k = _mm_set1_ps;
-        let (add, sub, mul) = (_mm_add_ps, _mm_sub_ps, _mm_mul_ps);
         let x = core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]);
-        let shifted = add(mul(x, k(core::f32::consts::FRAC_2_PI)), k(SHIFT_F32));
-        let n = sub(shifted, k(SHIFT_F32));
-
-        let a = sub(x, mul(n, k(P1_F32)));
-        let b = mul(n, k(P2_F32));
-        let c = mul(n, k(P3_F32));
-        let d = mul(n, k(P4_F32));
-        let s = sub(a, b);
-        let e1 = sub(sub(a, s), b);
-        let t = sub(s, c);
-        let t_s = sub(t, s);
-        let e2 = sub(sub(s, sub(t, t_s)), add(c, t_s));
-        let r = sub(t, d);
-        let r_lo = add(sub(sub(t, r), d), add(e1, e2));
-
-        let z = mul(r, r);
-        let z2 = mul(z, z);
-        let pair = |p: f32, q: f32| add(k(p), mul(z, k(q)));
-        let sin_poly = add(pair(S1_F32, S2_F32), mul(z2, pair(S3_F32, S4_F32)));
-        let cos_poly = add(pair(C1_F32, C2_F32), mul(z2, k(C3_F32)));
-        let half_z = mul(k(0.5), z);
-        let w = sub(k(1.0), half_z);
-        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
-        let cos_r = add(
-            w,
-            add(
-                sub(sub(k(1.0), w), half_z),
-                sub(mul(z2, cos_poly), mul(r, r_lo)),
-            ),
+        let (shifted, sin_r, cos_r) = reduce_and_evaluate_f32!(
+            x,
+            |c: f32| _mm_set1_ps(c),
+            |a, b| _mm_add_ps(a, b),
+            |a, b| _mm_sub_ps(a, b),
+            |a, b| _mm_mul_ps(a, b)
         );
 
         // k mod 4 is in the low bits of `shifted`: odd k swaps sine and cosine.
