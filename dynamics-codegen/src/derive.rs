@@ -3,8 +3,10 @@
 //!
 //! * `M` by the composite rigid body algorithm, plus actuator inertia on the diagonal;
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` (the book's
-//!   D_ijk, eq. 6.44) by differentiating `M`'s graph, and `C_ij = Σ_k Γ_ijk q̇_k`, summed as
-//!   `½(Ṁ_ij + P_ij − P_ji)` with `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`;
+//!   D_ijk, eq. 6.44), with `∂M/∂q_k` from differentiating `M`'s graph or, for a revolute
+//!   joint, the composite rigid body algorithm ([`algo::crba_derivative`]), and
+//!   `C_ij = Σ_k Γ_ijk q̇_k`, summed over the symbols or as `½(Ṁ_ij + P_ij − P_ji)` with
+//!   `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`: of the four, the cheapest C is kept;
 //! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * the kinetic and potential energy.
 
