@@ -7,153 +7,153 @@
 /// puma560: 6 joints, read from `robots/puma560.toml`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Puma560;
-/// What the dynamics need from the parameters and `q` alone, computed once.
-#[doc(hidden)]
-#[allow(non_camel_case_types)]
-struct __DynamicsConfiguration<T> {
-    k1: T,
-    s2: T,
-    c2: T,
-    k2: T,
-    s3: T,
-    c3: T,
-    k3: T,
-    k4: T,
-    k5: T,
-    s4: T,
-    c4: T,
-    s5: T,
-    c5: T,
-    k6: T,
-    k7: T,
-    k8: T,
-    k9: T,
-    k10: T,
-    k11: T,
-    k12: T,
-    k13: T,
-    k14: T,
-    k15: T,
-    k16: T,
-    k17: T,
-    k18: T,
-    k19: T,
-    k20: T,
-    k21: T,
-    k22: T,
-    k23: T,
-    k24: T,
-    k25: T,
-    k26: T,
-    k27: T,
-    k28: T,
-    k29: T,
-    k30: T,
-    k31: T,
-    k32: T,
-    t1: T,
-    k34: T,
-    k35: T,
-    m4_4: T,
-    t5: T,
-    k38: T,
-    k39: T,
-    k40: T,
-    m3_4: T,
-    m3_3: T,
-    t31: T,
-    k41: T,
-    m2_3: T,
-    k44: T,
-    m2_2: T,
-    t53: T,
-    t54: T,
-    m1_2: T,
-    m1_1: T,
-    t55: T,
-    t59: T,
-    m1_3: T,
-    t62: T,
-    m2_4: T,
-    t69: T,
-    t71: T,
-    m1_4: T,
-    t73: T,
-    m3_5: T,
-    t82: T,
-    m2_5: T,
-    t93: T,
-    t95: T,
-    m1_5: T,
-    m4_6: T,
-    m2_6: T,
-    t102: T,
-    m1_6: T,
-    t103: T,
-    t104: T,
-    t105: T,
-    g5: T,
-    g4: T,
-    g3: T,
-    g2: T,
-    g1: T,
-    k53: T,
-    k54: T,
-    k55: T,
-    k56: T,
-    k57: T,
-    k58: T,
-    p: T,
-    k62: T,
-    t115: T,
-    t116: T,
-    t117: T,
-    t120: T,
-    t122: T,
-    t123: T,
-    t125: T,
-    t127: T,
-    t134: T,
-    t135: T,
-    t137: T,
-    t139: T,
-    t140: T,
-    t143: T,
-    t144: T,
-    t147: T,
-    t151: T,
-    t152: T,
-    k65: T,
-    t161: T,
-    t164: T,
-    t171: T,
-    t172: T,
-    t174: T,
-    t176: T,
-    t177: T,
-    t179: T,
-    t180: T,
-    t181: T,
-    t182: T,
-    t183: T,
-    k67: T,
-    k68: T,
-    k69: T,
-}
-impl Puma560 {
-    #[doc(hidden)]
+/// The generated functions, out of reach of the names around the derive.
+#[allow(
+    non_snake_case,
+    non_camel_case_types,
+    unused_variables,
+    unused_doc_comments,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+mod __dynamics {
+    /// What the dynamics need from the parameters and `q` alone, computed once.
+    pub(super) struct Configuration<T> {
+        k1: T,
+        s2: T,
+        c2: T,
+        k2: T,
+        s3: T,
+        c3: T,
+        k3: T,
+        k4: T,
+        k5: T,
+        s4: T,
+        c4: T,
+        s5: T,
+        c5: T,
+        k6: T,
+        k7: T,
+        k8: T,
+        k9: T,
+        k10: T,
+        k11: T,
+        k12: T,
+        k13: T,
+        k14: T,
+        k15: T,
+        k16: T,
+        k17: T,
+        k18: T,
+        k19: T,
+        k20: T,
+        k21: T,
+        k22: T,
+        k23: T,
+        k24: T,
+        k25: T,
+        k26: T,
+        k27: T,
+        k28: T,
+        k29: T,
+        k30: T,
+        k31: T,
+        k32: T,
+        t1: T,
+        k34: T,
+        k35: T,
+        m4_4: T,
+        t5: T,
+        k38: T,
+        k39: T,
+        k40: T,
+        m3_4: T,
+        m3_3: T,
+        t31: T,
+        k41: T,
+        m2_3: T,
+        k44: T,
+        m2_2: T,
+        t53: T,
+        t54: T,
+        m1_2: T,
+        m1_1: T,
+        t55: T,
+        t59: T,
+        m1_3: T,
+        t62: T,
+        m2_4: T,
+        t69: T,
+        t71: T,
+        m1_4: T,
+        t73: T,
+        m3_5: T,
+        t82: T,
+        m2_5: T,
+        t93: T,
+        t95: T,
+        m1_5: T,
+        m4_6: T,
+        m2_6: T,
+        t102: T,
+        m1_6: T,
+        t103: T,
+        t104: T,
+        t105: T,
+        g5: T,
+        g4: T,
+        g3: T,
+        g2: T,
+        g1: T,
+        k53: T,
+        k54: T,
+        k55: T,
+        k56: T,
+        k57: T,
+        k58: T,
+        p: T,
+        k62: T,
+        t115: T,
+        t116: T,
+        t117: T,
+        t120: T,
+        t122: T,
+        t123: T,
+        t125: T,
+        t127: T,
+        t134: T,
+        t135: T,
+        t137: T,
+        t139: T,
+        t140: T,
+        t143: T,
+        t144: T,
+        t147: T,
+        t151: T,
+        t152: T,
+        k65: T,
+        t161: T,
+        t164: T,
+        t171: T,
+        t172: T,
+        t174: T,
+        t176: T,
+        t177: T,
+        t179: T,
+        t180: T,
+        t181: T,
+        t182: T,
+        t183: T,
+        k67: T,
+        k68: T,
+        k69: T,
+    }
     #[inline(always)]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn __dynamics_configuration<T: ::dynamics_runtime::Real>(
-        &self,
+    pub(super) fn configuration<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
-    ) -> __DynamicsConfiguration<T> {
+    ) -> Configuration<T> {
         let k1: T = T::from_f64(0.5);
         let k2: T = T::from_f64(0.4318);
         let k3: T = T::from_f64(0.15005);
@@ -503,7 +503,7 @@ impl Puma560 {
                 t136 + t142 + k43.mul_add(t97, t22),
                 s2 * k45.mul_add(t99, k40.mul_add(t62, t141)),
             );
-        __DynamicsConfiguration {
+        Configuration {
             k1,
             s2,
             c2,
@@ -634,23 +634,12 @@ impl Puma560 {
             k69,
         }
     }
-}
-#[automatically_derived]
-impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
-    /// M(q), with the actuator inertia on the diagonal.
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn mass_matrix<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn mass_matrix<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         [
             [x.m1_1, x.m1_2, x.m1_3, x.m1_4, x.m1_5, x.m1_6],
             [x.m1_2, x.m2_2, x.m2_3, x.m2_4, x.m2_5, x.m2_6],
@@ -660,21 +649,13 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             [x.m1_6, x.m2_6, x.m2_6, x.m4_6, T::ZERO, x.k7],
         ]
     }
-    /// C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn coriolis_matrix<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn coriolis_matrix<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         let t1 = qd_[1] * x.t54;
         let t2 = qd_[3] * x.t144;
         let t3 = x.k2 * (qd_[2] * x.t55);
@@ -886,21 +867,13 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             [cor1_6, cor6_2, cor6_3, cor6_4, cor6_5, T::ZERO],
         ]
     }
-    /// C(q, q̇) q̇.
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn coriolis_torques<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn coriolis_torques<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         let t1 = x.s2 * qd_[0];
         let t2 = x.c2 * qd_[0];
         let t3 = qd_[1] * t2;
@@ -1031,37 +1004,21 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
-    /// g(q), with joint springs.
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn gravity_torques<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn gravity_torques<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         [x.g1, x.g2, x.g3, x.g4, x.g5, T::ZERO]
     }
-    /// C(q, q̇) q̇ + g(q).
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn bias_torques<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn bias_torques<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         let t1 = x.s2 * qd_[0];
         let t2 = x.c2 * qd_[0];
         let t3 = qd_[1] * t2;
@@ -1196,22 +1153,14 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             );
         [h1, h2, h3, h4, h5, h6]
     }
-    /// τ = M(q) q̈ + C(q, q̇) q̇ + g(q).
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn inverse_dynamics<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn inverse_dynamics<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
         qdd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         let t1 = x.s2 * qd_[0];
         let t2 = x.c2 * qd_[0];
         let t3 = qd_[1] * t2;
@@ -1364,21 +1313,13 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]
     }
-    /// The kinetic energy.
-    #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
-    fn kinetic_energy<T: ::dynamics_runtime::Real>(
-        &self,
+    #[inline(always)]
+    pub(super) fn kinetic_energy<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> T {
-        let x = self.__dynamics_configuration(q_);
+        let x = configuration(p_, q_);
         let t1 = x.s2 * qd_[0];
         let t2 = x.c2 * qd_[0];
         let t3 = x.s3 * t2;
@@ -1451,17 +1392,91 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
                         ) + x.k18.mul_add(t11 * t11, x.k15 * (t10 * t10)),
                 )
     }
+    #[inline(always)]
+    pub(super) fn potential_energy<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> T {
+        let x = configuration(p_, q_);
+        x.p
+    }
+}
+impl Puma560 {
+    /// The parameters the equations read, in the order of the description.
+    #[doc(hidden)]
+    #[inline(always)]
+    #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+    fn __dynamics_parameters<T: ::dynamics_runtime::Real>(&self) -> [T; 0usize] {
+        []
+    }
+}
+#[automatically_derived]
+impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
+    /// M(q), with the actuator inertia on the diagonal.
+    #[inline]
+    fn mass_matrix<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6usize] {
+        __dynamics::mass_matrix(&self.__dynamics_parameters(), q_)
+    }
+    /// C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.
+    #[inline]
+    fn coriolis_matrix<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6usize] {
+        __dynamics::coriolis_matrix(&self.__dynamics_parameters(), q_, qd_)
+    }
+    /// C(q, q̇) q̇.
+    #[inline]
+    fn coriolis_torques<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6usize] {
+        __dynamics::coriolis_torques(&self.__dynamics_parameters(), q_, qd_)
+    }
+    /// g(q), with joint springs.
+    #[inline]
+    fn gravity_torques<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> [T; 6usize] {
+        __dynamics::gravity_torques(&self.__dynamics_parameters(), q_)
+    }
+    /// C(q, q̇) q̇ + g(q).
+    #[inline]
+    fn bias_torques<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6usize] {
+        __dynamics::bias_torques(&self.__dynamics_parameters(), q_, qd_)
+    }
+    /// τ = M(q) q̈ + C(q, q̇) q̇ + g(q).
+    #[inline]
+    fn inverse_dynamics<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        qdd_: &[T; 6usize],
+    ) -> [T; 6usize] {
+        __dynamics::inverse_dynamics(&self.__dynamics_parameters(), q_, qd_, qdd_)
+    }
+    /// The kinetic energy.
+    #[inline]
+    fn kinetic_energy<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> T {
+        __dynamics::kinetic_energy(&self.__dynamics_parameters(), q_, qd_)
+    }
     /// The potential energy.
     #[inline]
-    #[allow(
-        unused_variables,
-        unused_doc_comments,
-        clippy::all,
-        clippy::pedantic,
-        clippy::nursery
-    )]
     fn potential_energy<T: ::dynamics_runtime::Real>(&self, q_: &[T; 6usize]) -> T {
-        let x = self.__dynamics_configuration(q_);
-        x.p
+        __dynamics::potential_energy(&self.__dynamics_parameters(), q_)
     }
 }

@@ -163,7 +163,7 @@ fn emit(path: &str, robot: &Robot) -> String {
     let n = eq.dof;
     let generated = generate(&eq, &krate, fields);
     let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
-    let items = generated.items(&krate, &ty, &syn::Generics::default(), &quote!(), &|name| {
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|name| {
         Some(format!(" {}", method_doc(name)))
     });
     let struct_doc = format!(" {}: {n} joints, read from `{path}`.", robot.name);
@@ -262,6 +262,14 @@ fn stats(robot: &Robot) -> String {
         );
     }
     let _ = writeln!(out, "total generated code: {total} bytes");
+    // With the signatures, the struct and the forwarding impl around them.
+    let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|_| None);
+    let _ = writeln!(
+        out,
+        "all items the derive emits: {} bytes",
+        items.to_string().len()
+    );
     // What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, within its limits.
     let start = Instant::now();
     let inspection = readable::inspect(&eq, robot, Limits::DERIVE);

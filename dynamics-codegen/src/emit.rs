@@ -83,11 +83,13 @@ impl Shape<'_> {
 pub struct Context<'a> {
     /// Path of the runtime crate, e.g. `::dynamics_runtime`.
     pub krate: &'a TokenStream,
-    /// How to read struct field `k` (usually `self.name`).
+    /// How to read parameter `k` as a `T` (`p_[k]`).
     pub fields: Vec<TokenStream>,
 }
 
-fn local(name: &str) -> proc_macro2::Ident {
+/// A name the generated code binds (see [`crate::Generated::items`] for why no user item can
+/// take its place).
+pub fn local(name: &str) -> proc_macro2::Ident {
     proc_macro2::Ident::new(name, Span::mixed_site())
 }
 
@@ -105,10 +107,8 @@ pub struct Output<'a> {
 pub struct Configuration {
     /// The struct's fields, in order.
     pub fields: Vec<proc_macro2::Ident>,
-    /// The function's body, ending in the struct literal of `struct_name`.
+    /// The function's body, ending in the struct literal of [`CONFIGURATION_STRUCT`].
     pub tokens: TokenStream,
-    /// The struct fields of the robot (indices into [`Equations::fields`]) it reads.
-    pub fields_read: Vec<usize>,
 }
 
 /// Everything [`emit`] writes.
@@ -120,9 +120,12 @@ pub struct Emission {
 }
 
 /// Name of the configuration struct.
-pub const CONFIGURATION_STRUCT: &str = "__DynamicsConfiguration";
-/// Name of the (inherent, hidden) method computing it.
-pub const CONFIGURATION_FN: &str = "__dynamics_configuration";
+pub const CONFIGURATION_STRUCT: &str = "Configuration";
+/// Name of the function computing it, `configuration(p_, q_)`.
+pub const CONFIGURATION_FN: &str = "configuration";
+/// Name of the argument holding the robot's parameters, `[T; K]` in the order of
+/// [`Equations::fields`].
+pub const PARAMETERS: &str = "p_";
 
 /// Emits the functions computing `outputs` from `eq`. What depends only on the parameters and
 /// `q` (the trigonometry, the kinematics, `M`, `g`, the `Γ_ijk`) goes into one shared
@@ -531,7 +534,6 @@ impl<'a> Emitter<'a> {
         field_names: &[Option<String>],
     ) -> Configuration {
         let ctx = self.ctx.expect("emission has a context");
-        let krate = ctx.krate;
         self.mark(boundary);
         let mut statements = Vec::new();
         // Constants, once each.
@@ -546,22 +548,14 @@ impl<'a> Emitter<'a> {
             }
         }
         // Parameters, read once.
-        let param = local("param");
-        let mut params = Vec::new();
-        let mut fields_read = Vec::new();
         for (id, node) in self.graph.nodes() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
-                    fields_read.push(usize::from(k));
                     let name = self.leaf(id);
                     let field = &ctx.fields[usize::from(k)];
-                    params.push(quote!(let #name: T = #param(#field);));
+                    statements.push(quote!(let #name: T = #field;));
                 }
             }
-        }
-        if !params.is_empty() {
-            statements.push(quote!(use #krate::__private::param as #param;));
-            statements.extend(params);
         }
         let class = classes(self.eq);
         let is_boundary = {
@@ -600,7 +594,6 @@ impl<'a> Emitter<'a> {
         Configuration {
             fields,
             tokens: quote!(#(#statements)* #ty { #(#locals),* }),
-            fields_read,
         }
     }
 
@@ -621,8 +614,8 @@ impl<'a> Emitter<'a> {
             .any(|(id, _)| self.stop[id.index()] && self.needed[id.index()]);
         if reads_configuration {
             let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
-            let q = local("q_");
-            statements.push(quote!(let #x = self.#f(#q);));
+            let (p, q) = (local(PARAMETERS), local("q_"));
+            statements.push(quote!(let #x = #f(#p, #q);));
         }
         for (id, _) in self.graph.nodes() {
             let i = id.index();

@@ -57,17 +57,30 @@ pub struct Method {
 pub struct Generated {
     /// Number of joints.
     pub dof: usize,
+    /// How to read each struct field of the robot, in the order of [`Equations::fields`].
+    pub fields: Vec<TokenStream>,
     /// The configuration function's struct fields and body, if any method reads it.
     pub configuration: Option<emit::Configuration>,
     /// The methods, in the trait's order.
     pub methods: Vec<Method>,
 }
 
-/// The generated code of the [`Equations`], reading struct fields through `fields`.
+/// The generated code of the [`Equations`]; `fields` reads struct field `k` of the robot
+/// (`self.name`), in the order of [`Equations::fields`].
 #[must_use]
 pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Generated {
     use emit::{Output, Shape};
-    let ctx = emit::Context { krate, fields };
+    let p = emit::local(emit::PARAMETERS);
+    let parameters = (0..eq.fields.len())
+        .map(|k| {
+            let k = proc_macro2::Literal::usize_unsuffixed(k);
+            quote!(#p[#k])
+        })
+        .collect();
+    let ctx = emit::Context {
+        krate,
+        fields: parameters,
+    };
     // Each method with the name of its output elements (`m1_2`, `tau3`).
     let table: [(&'static str, &str, Shape); 8] = [
         ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
@@ -99,61 +112,99 @@ pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -
         .collect();
     Generated {
         dof: eq.dof,
+        fields,
         configuration: emission.configuration,
         methods,
     }
 }
 
 impl Generated {
-    /// The items for the robot type `ident`: the configuration struct and the hidden inherent
-    /// method computing it, and the `Dynamics` impl. `docs` gives each method's doc comment.
+    /// The items for the robot type `ident`, to go in a `const _: () = { … };` block:
+    ///
+    /// * a module `__dynamics` holding the configuration struct and function and one function
+    ///   per method, which take the parameters as an array `p_: &[T; K]`. A module sees none of
+    ///   the items around it, so no user constant can collide with a generated local (`let`
+    ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
+    /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
+    ///   array (every field the description names, so none is left unread);
+    /// * the `Dynamics` impl, each method one call into the module.
+    ///
+    /// `docs` gives each method's doc comment.
     #[must_use]
     pub fn items(
         &self,
         krate: &TokenStream,
         ident: &syn::Ident,
         generics: &syn::Generics,
-        prologue: &TokenStream,
         docs: &dyn Fn(&str) -> Option<String>,
     ) -> TokenStream {
         let n = self.dof;
+        let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+        let module = syn::Ident::new(MODULE, proc_macro2::Span::call_site());
+        let parameters = syn::Ident::new(PARAMETERS_FN, proc_macro2::Span::call_site());
+        let p = emit::local(emit::PARAMETERS);
+        let q = emit::local("q_");
         let configuration = self.configuration.as_ref().map(|c| {
             let ty = syn::Ident::new(emit::CONFIGURATION_STRUCT, proc_macro2::Span::call_site());
             let f = syn::Ident::new(emit::CONFIGURATION_FN, proc_macro2::Span::call_site());
             let fields = &c.fields;
-            let q = proc_macro2::Ident::new("q_", proc_macro2::Span::mixed_site());
             let body = &c.tokens;
             quote! {
                 /// What the dynamics need from the parameters and `q` alone, computed once.
-                #[doc(hidden)]
-                #[allow(non_camel_case_types)]
-                struct #ty<T> { #(#fields: T),* }
-                impl #impl_generics #ident #ty_generics #where_clause {
-                    // Inlined into each method, which keeps of it only what it reads.
-                    #[doc(hidden)]
-                    #[inline(always)]
-                    #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-                    fn #f<T: #krate::Real>(&self, #q: &[T; #n]) -> #ty<T> {
-                        #prologue
-                        #body
-                    }
+                pub(super) struct #ty<T> { #(#fields: T),* }
+                // Inlined into each method, which keeps of it only what it reads.
+                #[inline(always)]
+                pub(super) fn #f<T: #krate::Real>(#p: &[T; #k], #q: &[T; #n]) -> #ty<T> {
+                    #body
                 }
             }
         });
-        // Without a configuration, the prologue goes to the first method.
-        let mut prologue = self.configuration.is_none().then_some(prologue);
-        let fns = self.methods.iter().map(|m| {
+        let bodies = self.methods.iter().map(|m| {
+            let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
+            let (args, ret) = signature(m.name, n);
             let body = &m.body;
-            let first = prologue.take();
-            let f = method(m.name, n, krate, &quote!(#first #body));
+            quote! {
+                #[inline(always)]
+                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
+                    #body
+                }
+            }
+        });
+        let fns = self.methods.iter().map(|m| {
+            let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
+            let (args, ret) = signature(m.name, n);
+            let pass = call_arguments(m.name);
+            let f = quote! {
+                #[inline]
+                fn #name<T: #krate::Real>(&self, #args) -> #ret {
+                    #module::#name(&self.#parameters(), #pass)
+                }
+            };
             match docs(m.name) {
                 Some(doc) => quote!(#[doc = #doc] #f),
                 None => f,
             }
         });
+        let fields = &self.fields;
+        let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         quote! {
-            #configuration
+            /// The generated functions, out of reach of the names around the derive.
+            #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+            mod #module {
+                #configuration
+                #(#bodies)*
+            }
+            impl #impl_generics #ident #ty_generics #where_clause {
+                /// The parameters the equations read, in the order of the description.
+                #[doc(hidden)]
+                #[inline(always)]
+                #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+                fn #parameters<T: #krate::Real>(&self) -> [T; #k] {
+                    #reader
+                    [#(param(#fields)),*]
+                }
+            }
             #[automatically_derived]
             impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
                 #(#fns)*
@@ -161,6 +212,11 @@ impl Generated {
         }
     }
 }
+
+/// Name of the module holding the generated functions.
+const MODULE: &str = "__dynamics";
+/// Name of the hidden inherent method reading the robot's parameters.
+const PARAMETERS_FN: &str = "__dynamics_parameters";
 
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let eq = derive::derive(&parsed.robot);
@@ -174,27 +230,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         })
         .collect();
     let generated = generate(&eq, &krate, fields);
-    // A field the description names may drop out of every equation (a gravity magnitude on a
-    // horizontal axis); reading it once keeps the user's crate free of dead-code warnings.
-    let read = generated
-        .configuration
-        .as_ref()
-        .map_or(&[][..], |c| &c.fields_read[..]);
-    let unread: Vec<proc_macro2::Ident> = eq
-        .fields
-        .iter()
-        .enumerate()
-        .filter(|(k, _)| !read.contains(k))
-        .map(|(_, f)| syn::Ident::new(f, proc_macro2::Span::call_site()))
-        .collect();
-    let touch = (!unread.is_empty()).then(|| quote!(let _ = (#(&self.#unread,)*);));
-    let items = generated.items(
-        &krate,
-        &input.ident,
-        &input.generics,
-        &quote!(#touch),
-        &|_| None,
-    );
+    let items = generated.items(&krate, &input.ident, &input.generics, &|_| None);
     let equations = equations(input, &eq, &parsed.robot);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
@@ -242,11 +278,22 @@ fn equations(input: &syn::DeriveInput, eq: &Equations, robot: &model::Robot) -> 
 /// tool's `emit`).
 #[must_use]
 pub fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
-    let q = proc_macro2::Ident::new("q_", proc_macro2::Span::mixed_site());
-    let qd = proc_macro2::Ident::new("qd_", proc_macro2::Span::mixed_site());
-    let qdd = proc_macro2::Ident::new("qdd_", proc_macro2::Span::mixed_site());
+    let (args, ret) = signature(name, n);
+    let name = syn::Ident::new(name, proc_macro2::Span::call_site());
+    quote! {
+        #[inline]
+        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+        fn #name<T: #krate::Real>(&self, #args) -> #ret {
+            #body
+        }
+    }
+}
+
+/// The arguments and the result type of a method of the `Dynamics` trait.
+fn signature(name: &str, n: usize) -> (TokenStream, TokenStream) {
+    let (q, qd, qdd) = (emit::local("q_"), emit::local("qd_"), emit::local("qdd_"));
     let vector = quote!(&[T; #n]);
-    let (args, ret) = match name {
+    match name {
         "mass_matrix" => (quote!(#q: #vector), quote!([[T; #n]; #n])),
         "coriolis_matrix" => (quote!(#q: #vector, #qd: #vector), quote!([[T; #n]; #n])),
         "coriolis_torques" | "bias_torques" => (quote!(#q: #vector, #qd: #vector), quote!([T; #n])),
@@ -257,14 +304,18 @@ pub fn method(name: &str, n: usize, krate: &TokenStream, body: &TokenStream) -> 
         ),
         "kinetic_energy" => (quote!(#q: #vector, #qd: #vector), quote!(T)),
         _ => (quote!(#q: #vector), quote!(T)),
-    };
-    let name = syn::Ident::new(name, proc_macro2::Span::call_site());
-    quote! {
-        #[inline]
-        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-        fn #name<T: #krate::Real>(&self, #args) -> #ret {
-            #body
+    }
+}
+
+/// The arguments a method passes on, as in [`signature`].
+fn call_arguments(name: &str) -> TokenStream {
+    let (q, qd, qdd) = (emit::local("q_"), emit::local("qd_"), emit::local("qdd_"));
+    match name {
+        "coriolis_matrix" | "coriolis_torques" | "bias_torques" | "kinetic_energy" => {
+            quote!(#q, #qd)
         }
+        "inverse_dynamics" => quote!(#q, #qd, #qdd),
+        _ => quote!(#q),
     }
 }
 

@@ -6,7 +6,9 @@
 //!
 //! Constants named `q`, `qd` and `qdd` (the trait's argument names) are in scope too: a
 //! pattern cannot shadow a constant, so the generated methods name their arguments `q_`, `qd_`
-//! and `qdd_`.
+//! and `qdd_`. So are constants and a static named like the generated locals (`x`, `t1`, `k1`,
+//! `s2`, `m1_1`, `tau1`, `g1`, `p_m1`, `p_`): the generated functions live in a module, which
+//! sees none of them.
 #![deny(warnings, clippy::all, clippy::pedantic)]
 
 use dynamics_runtime::Dynamics;
@@ -14,20 +16,32 @@ use dynamics_runtime::Dynamics;
 /// Traps at the crate root.
 #[allow(dead_code, non_upper_case_globals)]
 mod traps {
-    pub fn sin(x: f64) -> f64 {
-        x
+    pub fn sin(v: f64) -> f64 {
+        v
     }
-    pub fn cos(x: f64) -> f64 {
-        x
+    pub fn cos(v: f64) -> f64 {
+        v
     }
     pub struct M;
     pub struct T;
-    pub fn param(x: f64) -> f64 {
-        x
+    pub fn param(v: f64) -> f64 {
+        v
     }
     pub const q: f64 = 1.0;
     pub const qd: f64 = 2.0;
     pub const qdd: f64 = 3.0;
+    // Named like generated locals: a `let` pattern cannot shadow a constant, so the generated
+    // functions live in a module that does not see these.
+    pub const x: f64 = 4.0;
+    pub const t1: f64 = 5.0;
+    pub const k1: f64 = 6.0;
+    pub const s2: f64 = 7.0;
+    pub const c2: f64 = 8.0;
+    pub const m1_1: f64 = 9.0;
+    pub const tau1: f64 = 10.0;
+    pub static g1: f64 = 11.0;
+    pub const p_m1: f64 = 12.0;
+    pub const p_: f64 = 13.0;
 }
 #[allow(unused_imports)]
 use traps::*;
@@ -115,7 +129,7 @@ fn derived_robots_compute() {
     }
     let shadowed = shadowed::Arm { l: 0.3, m: 1.0 };
     let g = shadowed.gravity_torques(&[0.2f32, 0.1]);
-    assert!(g.iter().all(|x| x.is_finite()));
+    assert!(g.iter().all(|v| v.is_finite()));
     assert!(Puma560.mass_matrix(&[0.0; 6])[0][0] > 0.0);
     assert!(Stanford.kinetic_energy(&[0.0; 6], &[1.0; 6]) > 0.0);
     // The traps are still what the user defined.
