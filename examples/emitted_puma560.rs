@@ -656,62 +656,61 @@ mod __dynamics {
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
         let x = configuration(p_, q_);
-        let t1 = qd_[1] * x.t54;
-        let t2 = qd_[3] * x.t144;
-        let t3 = x.k2 * (qd_[2] * x.t55);
-        let t4 = qd_[3] * x.t143;
-        let t5 = qd_[0] * x.t102;
-        let t6 = qd_[3] * x.t127;
-        let t7 = qd_[4] * x.t181;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let t1 = qd2 * x.t54;
+        let t2 = qd4 * x.t144;
+        let t3 = x.k2 * (qd3 * x.t55);
+        let t4 = qd4 * x.t143;
+        let t5 = qd1 * x.t102;
+        let t6 = qd4 * x.t127;
+        let t7 = qd5 * x.t181;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = x.k34 * (qd_[4] * x.t1);
-        let t8 = x.s5 * qd_[4];
-        let t9 = x.s5.mul_add(qd_[3], qd_[0] * x.t93 - qd_[1] * x.t73 - qd_[2] * x.t73);
+        let cor4_4 = x.k34 * (qd5 * x.t1);
+        let t8 = x.s5 * qd5;
+        let t9 = x.s5.mul_add(qd4, qd1 * x.t93 - qd2 * x.t73 - qd3 * x.t73);
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = x.k68 * t9;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = x.k67 * t9;
-        let t10 = x.k7 * (qd_[5] * x.t5);
-        let t11 = x.k7 * (qd_[5] * x.t73);
-        let t12 = qd_[4].mul_add(x.t73, qd_[3] * x.t5);
+        let t10 = x.k7 * (qd6 * x.t5);
+        let t11 = x.k7 * (qd6 * x.t73);
+        let t12 = qd5.mul_add(x.t73, qd4 * x.t5);
         /// C26 = sum of D26k qd_k (6.44)
         let cor2_6 = x.k68 * (t5 + t12);
         /// C62 = sum of D62k qd_k (6.44)
         let cor6_2 = x.k68 * (t12 - t5);
-        let t13 = qd_[3].mul_add(x.t147, t7);
-        let t14 = qd_[2] * x.t117;
-        let t15 = qd_[4] * x.t183;
+        let t13 = qd4.mul_add(x.t147, t7);
+        let t14 = qd3 * x.t117;
+        let t15 = qd5 * x.t183;
         /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = x.k67
-            * qd_[4].mul_add(x.t93, qd_[1] * x.t102 - qd_[2] * x.t123 - qd_[3] * x.t69);
-        let t16 = qd_[4] * x.t182;
+            * qd5.mul_add(x.t93, qd2 * x.t102 - qd3 * x.t123 - qd4 * x.t69);
+        let t16 = qd5 * x.t182;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = x.k1 * qd_[3].mul_add(x.t125, qd_[4] * x.t161);
-        let t17 = qd_[0] * x.t123;
-        let t18 = qd_[2].mul_add(x.t5, qd_[0].mul_add(x.t69, qd_[1] * x.t5));
+        let cor3_3 = x.k1 * qd4.mul_add(x.t125, qd5 * x.t161);
+        let t17 = qd1 * x.t123;
+        let t18 = qd3.mul_add(x.t5, qd1.mul_add(x.t69, qd2 * x.t5));
         /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = x.k67 * (t8 + t18);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = x.k1
-            * qd_[4]
+            * qd5
                 .mul_add(
                     x.t172,
-                    qd_[3]
-                        .mul_add(x.t137, x.k41.mul_add(qd_[1] * x.t53, qd_[2] * x.t115)),
+                    qd4.mul_add(x.t137, x.k41.mul_add(qd2 * x.t53, qd3 * x.t115)),
                 );
-        let t19 = qd_[4]
-            .mul_add(x.t174, qd_[3].mul_add(x.t139, qd_[2].mul_add(x.t116, t1)));
+        let t19 = qd5.mul_add(x.t174, qd4.mul_add(x.t139, qd3.mul_add(x.t116, t1)));
         let t20 = x
             .k32
             .mul_add(
-                qd_[5] * x.t102,
-                qd_[4]
+                qd6 * x.t102,
+                qd5
                     .mul_add(
                         x.t95,
-                        qd_[3]
+                        qd4
                             .mul_add(
                                 x.t71,
-                                qd_[2].mul_add(x.t59, x.k41.mul_add(qd_[0] * x.t53, t1)),
+                                qd3.mul_add(x.t59, x.k41.mul_add(qd1 * x.t53, t1)),
                             ),
                     ),
             );
@@ -719,54 +718,46 @@ mod __dynamics {
         let cor1_2 = x.k1 * (t19 + t20);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = x.k1 * (t19 - t20);
-        let t21 = qd_[4]
-            .mul_add(x.t177, qd_[3].mul_add(x.t140, qd_[1].mul_add(x.t59, t14)));
+        let t21 = qd5.mul_add(x.t177, qd4.mul_add(x.t140, qd2.mul_add(x.t59, t14)));
         let t22 = x
             .k7
             .mul_add(
-                qd_[5] * x.t123,
-                qd_[4]
+                qd6 * x.t123,
+                qd5
                     .mul_add(
                         x.t122,
-                        qd_[3]
-                            .mul_add(
-                                x.t120,
-                                t14 + qd_[1].mul_add(x.t116, qd_[0] * x.t115),
-                            ),
+                        qd4.mul_add(x.t120, t14 + qd2.mul_add(x.t116, qd1 * x.t115)),
                     ),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = x.k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = x.k1 * (t21 - t22);
-        let t23 = qd_[4].mul_add(x.t180, t2 + qd_[2].mul_add(x.t120, qd_[1] * x.t71));
+        let t23 = qd5.mul_add(x.t180, t2 + qd3.mul_add(x.t120, qd2 * x.t71));
         let t24 = x
             .k7
             .mul_add(
-                qd_[5] * x.t69,
-                qd_[4]
+                qd6 * x.t69,
+                qd5
                     .mul_add(
                         x.t152,
-                        t2
-                            + qd_[2]
-                                .mul_add(x.t140, qd_[1].mul_add(x.t139, qd_[0] * x.t137)),
+                        t2 + qd3.mul_add(x.t140, qd2.mul_add(x.t139, qd1 * x.t137)),
                     ),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = x.k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = x.k1 * (t23 - t24);
-        let t25 = t15 + qd_[3].mul_add(x.t152, qd_[2].mul_add(x.t122, qd_[1] * x.t95));
+        let t25 = t15 + qd4.mul_add(x.t152, qd3.mul_add(x.t122, qd2 * x.t95));
         let t26 = x
             .k32
             .mul_add(
-                qd_[5] * x.t93,
+                qd6 * x.t93,
                 t15
-                    + qd_[3]
+                    + qd4
                         .mul_add(
                             x.t180,
-                            qd_[2]
-                                .mul_add(x.t177, qd_[1].mul_add(x.t174, qd_[0] * x.t172)),
+                            qd3.mul_add(x.t177, qd2.mul_add(x.t174, qd1 * x.t172)),
                         ),
             );
         /// C15 = sum of D15k qd_k (6.44)
@@ -775,64 +766,59 @@ mod __dynamics {
         let cor5_1 = x.k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
         let cor2_2 = x.k1
-            * qd_[4].mul_add(x.t171, x.k62.mul_add(qd_[2] * x.t31, qd_[3] * x.t135));
-        let t27 = qd_[4].mul_add(x.t176, qd_[3].mul_add(x.t134, t3));
+            * qd5.mul_add(x.t171, x.k62.mul_add(qd3 * x.t31, qd4 * x.t135));
+        let t27 = qd5.mul_add(x.t176, qd4.mul_add(x.t134, t3));
         let t28 = x
             .k40
             .mul_add(
-                qd_[4] * x.t82,
-                x
-                    .k38
-                    .mul_add(
-                        qd_[3] * x.t62,
-                        t3 + x.k62.mul_add(qd_[1] * x.t31, qd_[0] * x.t116),
-                    ),
-            ) - qd_[0] * x.t59;
+                qd5 * x.t82,
+                x.k38.mul_add(qd4 * x.t62, t3 + x.k62.mul_add(qd2 * x.t31, qd1 * x.t116)),
+            ) - qd1 * x.t59;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = x.k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = x.k1 * (t27 - t28);
-        let t29 = qd_[4].mul_add(x.t179, x.k38.mul_add(qd_[2] * x.t62, t4));
+        let t29 = qd5.mul_add(x.t179, x.k38.mul_add(qd3 * x.t62, t4));
         let t30 = t10
-            + qd_[4]
+            + qd5
                 .mul_add(
                     x.t151,
-                    t4 + qd_[2].mul_add(x.t134, qd_[0].mul_add(x.t139, qd_[1] * x.t135)),
-                ) - qd_[0] * x.t71;
+                    t4 + qd3.mul_add(x.t134, qd1.mul_add(x.t139, qd2 * x.t135)),
+                ) - qd1 * x.t71;
         /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = x.k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = x.k1 * (t29 - t30);
-        let t31 = qd_[3].mul_add(x.t151, x.k40 * (qd_[2] * x.t82)) + t16;
+        let t31 = qd4.mul_add(x.t151, x.k40 * (qd3 * x.t82)) + t16;
         let t32 = t11
             + (t16
-                + qd_[3]
+                + qd4
                     .mul_add(
                         x.t179,
-                        qd_[2].mul_add(x.t176, qd_[0].mul_add(x.t174, qd_[1] * x.t171)),
-                    )) - qd_[0] * x.t95;
+                        qd3.mul_add(x.t176, qd1.mul_add(x.t174, qd2 * x.t171)),
+                    )) - qd1 * x.t95;
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = x.k1 * (t31 + t32);
         /// C52 = sum of D52k qd_k (6.44)
         let cor5_2 = x.k1 * (t31 - t32);
-        let t33 = qd_[4].mul_add(x.t164, t6);
+        let t33 = qd5.mul_add(x.t164, t6);
         let t34 = t10
-            + qd_[4]
+            + qd5
                 .mul_add(
                     x.t147,
-                    t6 + qd_[2].mul_add(x.t125, qd_[1].mul_add(x.t134, qd_[0] * x.t140)),
-                ) - qd_[0].mul_add(x.t120, x.k38 * (qd_[1] * x.t62));
+                    t6 + qd3.mul_add(x.t125, qd2.mul_add(x.t134, qd1 * x.t140)),
+                ) - qd1.mul_add(x.t120, x.k38 * (qd2 * x.t62));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = x.k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = x.k1 * (t33 - t34);
         let t35 = t11
             + (t7
-                + qd_[3]
+                + qd4
                     .mul_add(
                         x.t164,
-                        qd_[2].mul_add(x.t161, qd_[1].mul_add(x.t176, qd_[0] * x.t177)),
-                    )) - qd_[0].mul_add(x.t122, x.k40 * (qd_[1] * x.t82));
+                        qd3.mul_add(x.t161, qd2.mul_add(x.t176, qd1 * x.t177)),
+                    )) - qd1.mul_add(x.t122, x.k40 * (qd2 * x.t82));
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = x.k1 * (t13 + t35);
         /// C53 = sum of D53k qd_k (6.44)
@@ -844,14 +830,14 @@ mod __dynamics {
         let t36 = x
             .k32
             .mul_add(
-                x.s5 * qd_[5],
+                x.s5 * qd6,
                 x
                     .k65
                     .mul_add(
-                        qd_[3] * x.t1,
-                        qd_[2].mul_add(x.t164, qd_[1].mul_add(x.t179, qd_[0] * x.t180)),
+                        qd4 * x.t1,
+                        qd3.mul_add(x.t164, qd2.mul_add(x.t179, qd1 * x.t180)),
                     ),
-            ) - qd_[2].mul_add(x.t147, qd_[1].mul_add(x.t151, qd_[0] * x.t152));
+            ) - qd3.mul_add(x.t147, qd2.mul_add(x.t151, qd1 * x.t152));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = x.k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
@@ -874,24 +860,25 @@ mod __dynamics {
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
         let x = configuration(p_, q_);
-        let t1 = x.s2 * qd_[0];
-        let t2 = x.c2 * qd_[0];
-        let t3 = qd_[1] * t2;
-        let t4 = qd_[1] * t1;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let t1 = x.s2 * qd1;
+        let t2 = x.c2 * qd1;
+        let t3 = qd2 * t2;
+        let t4 = qd2 * t1;
         let t5 = t2 * t2;
         let t6 = t1 * t2;
-        let t7 = qd_[1].mul_add(qd_[1], t5);
-        let t8 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
-        let t9 = x.k11.mul_add(qd_[1], x.k9 * t1);
-        let t10 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t7 = qd2.mul_add(qd2, t5);
+        let t8 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
+        let t9 = x.k11.mul_add(qd2, x.k9 * t1);
+        let t10 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
         let t11 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
         let t12 = x.s3.mul_add(t2, x.c3 * t1);
         let t13 = x.c3 * t2 - x.s3 * t1;
         let t14 = x.c3 * t7 - x.s3 * t6;
         let t15 = x.s3.mul_add(t7, x.c3 * t6);
-        let t16 = qd_[1] + qd_[2];
-        let t17 = qd_[2].mul_add(t13, x.c3 * t3 - x.s3 * t4);
-        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t12;
+        let t16 = qd2 + qd3;
+        let t17 = qd3.mul_add(t13, x.c3 * t3 - x.s3 * t4);
+        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd3 * t12;
         let t19 = t16 * t16;
         let t20 = t12 * t13;
         let t21 = t13.mul_add(t13, t19);
@@ -905,21 +892,21 @@ mod __dynamics {
         let t29 = t11 + x.k2.mul_add(t24, x.k4 * t23);
         let t30 = x.c4 * t12 - x.s4 * t16;
         let t31 = -(x.c4 * t16) - x.s4 * t12;
-        let t32 = qd_[3] + t13;
-        let t33 = qd_[3].mul_add(t31, x.c4 * t17);
-        let t34 = -(x.s4 * t17) - qd_[3] * t30;
+        let t32 = qd4 + t13;
+        let t33 = qd4.mul_add(t31, x.c4 * t17);
+        let t34 = -(x.s4 * t17) - qd4 * t30;
         let t35 = x.s5.mul_add(t32, x.c5 * t30);
         let t36 = x.c5 * t32 - x.s5 * t30;
-        let t37 = qd_[4] - t31;
-        let t38 = qd_[4].mul_add(t36, x.s5.mul_add(t18, x.c5 * t33));
+        let t37 = qd5 - t31;
+        let t38 = qd5.mul_add(t36, x.s5.mul_add(t18, x.c5 * t33));
         let t39 = t35 * t36;
         let t40 = t36 * t37;
         let t41 = t34 + t39;
         let t42 = t37.mul_add(t37, t35 * t35);
         let t43 = t38 + t40;
-        let t44 = qd_[5] + t36;
+        let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
-        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd_[4] * t35);
+        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd5 * t35);
         let t45 = x
             .k32
             .mul_add(
@@ -986,7 +973,7 @@ mod __dynamics {
         let cqd1 = x
             .c2
             .mul_add(
-                x.k9.mul_add(t3, qd_[1] * t8 - t1 * t10) + x.c3.mul_add(t56, x.s3 * t55)
+                x.k9.mul_add(t3, qd2 * t8 - t1 * t10) + x.c3.mul_add(t56, x.s3 * t55)
                     + x
                         .k21
                         .mul_add(
@@ -998,7 +985,7 @@ mod __dynamics {
                         .k44
                         .mul_add(
                             t57,
-                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t10 - qd_[1] * t9)
+                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t10 - qd2 * t9)
                                 + (x.c3 * t55 - x.s3 * t56),
                         ),
             );
@@ -1019,20 +1006,21 @@ mod __dynamics {
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
         let x = configuration(p_, q_);
-        let t1 = x.s2 * qd_[0];
-        let t2 = x.c2 * qd_[0];
-        let t3 = qd_[1] * t2;
-        let t4 = qd_[1] * t1;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let t1 = x.s2 * qd1;
+        let t2 = x.c2 * qd1;
+        let t3 = qd2 * t2;
+        let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
-        let t7 = x.k11.mul_add(qd_[1], x.k9 * t1);
-        let t8 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t6 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
+        let t7 = x.k11.mul_add(qd2, x.k9 * t1);
+        let t8 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
         let t9 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
         let t10 = x.s3.mul_add(t2, x.c3 * t1);
         let t11 = x.c3 * t2 - x.s3 * t1;
-        let t12 = qd_[1] + qd_[2];
-        let t13 = qd_[2].mul_add(t11, x.c3 * t3 - x.s3 * t4);
-        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd_[2] * t10;
+        let t12 = qd2 + qd3;
+        let t13 = qd3.mul_add(t11, x.c3 * t3 - x.s3 * t4);
+        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd3 * t10;
         let t15 = t12 * t12;
         let t16 = t10 * t11;
         let t17 = t11.mul_add(t11, t15);
@@ -1045,21 +1033,21 @@ mod __dynamics {
         let t24 = t9 + x.k2.mul_add(t20, x.k4 * t19);
         let t25 = x.c4 * t10 - x.s4 * t12;
         let t26 = -(x.c4 * t12) - x.s4 * t10;
-        let t27 = qd_[3] + t11;
-        let t28 = qd_[3].mul_add(t26, x.c4 * t13);
-        let t29 = -(x.s4 * t13) - qd_[3] * t25;
+        let t27 = qd4 + t11;
+        let t28 = qd4.mul_add(t26, x.c4 * t13);
+        let t29 = -(x.s4 * t13) - qd4 * t25;
         let t30 = x.s5.mul_add(t27, x.c5 * t25);
         let t31 = x.c5 * t27 - x.s5 * t25;
-        let t32 = qd_[4] - t26;
-        let t33 = qd_[4].mul_add(t31, x.s5.mul_add(t14, x.c5 * t28));
+        let t32 = qd5 - t26;
+        let t33 = qd5.mul_add(t31, x.s5.mul_add(t14, x.c5 * t28));
         let t34 = t30 * t31;
         let t35 = t31 * t32;
         let t36 = t29 + t34;
         let t37 = t32.mul_add(t32, t30 * t30);
         let t38 = t33 + t35;
-        let t39 = qd_[5] + t31;
+        let t39 = qd6 + t31;
         /// centripetal, Coriolis and gravity torque 6
-        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd_[4] * t30);
+        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd5 * t30);
         let t40 = x.k13.mul_add(t30 * t32, h6);
         let t41 = x.s5.mul_add(t37, x.c5 * t36);
         let t42 = x.s5 * t36 - x.c5 * t37;
@@ -1068,7 +1056,7 @@ mod __dynamics {
         let t45 = x.k14.mul_add(t43, x.k25.mul_add(t16, x.k54 * t17));
         let t46 = x.k14.mul_add(t42, x.k55.mul_add(t18, x.k22 * t16));
         let t47 = x.c3.mul_add(t46, x.s3 * t45);
-        let t48 = x.k21.mul_add(qd_[1].mul_add(qd_[1], t5), x.t103);
+        let t48 = x.k21.mul_add(qd2.mul_add(qd2, t5), x.t103);
         let t49 = x.k2.mul_add(t1 * t2, x.t104);
         let t50 = x.s3.mul_add(t49, x.c3 * t48);
         let t51 = x.c3 * t49 - x.s3 * t48;
@@ -1140,14 +1128,14 @@ mod __dynamics {
                         x.k17.mul_add(t44, x.k25.mul_add(t20, x.k22 * t19)),
                         x.k3 * (x.c3 * t45 - x.s3 * t46),
                     )
-                    + (x.k9.mul_add(t3, qd_[1] * t6 - t1 * t8)
+                    + (x.k9.mul_add(t3, qd2 * t6 - t1 * t8)
                         + x.c3.mul_add(t57, x.s3 * t56)),
                 x.s2
                     * x
                         .k44
                         .mul_add(
                             t47,
-                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t8 - qd_[1] * t7)
+                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t8 - qd2 * t7)
                                 + (x.c3 * t56 - x.s3 * t57),
                         ),
             );
@@ -1161,17 +1149,19 @@ mod __dynamics {
         qdd_: &[T; 6usize],
     ) -> [T; 6usize] {
         let x = configuration(p_, q_);
-        let t1 = x.s2 * qd_[0];
-        let t2 = x.c2 * qd_[0];
-        let t3 = qd_[1] * t2;
-        let t4 = qd_[1] * t1;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let [qdd1, qdd2, qdd3, qdd4, qdd5, qdd6] = *qdd_;
+        let t1 = x.s2 * qd1;
+        let t2 = x.c2 * qd1;
+        let t3 = qd2 * t2;
+        let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1));
-        let t7 = x.k11.mul_add(qd_[1], x.k9 * t1);
-        let t8 = x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1));
+        let t6 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
+        let t7 = x.k11.mul_add(qd2, x.k9 * t1);
+        let t8 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
         let t9 = x.s3.mul_add(t2, x.c3 * t1);
         let t10 = x.c3 * t2 - x.s3 * t1;
-        let t11 = qd_[1] + qd_[2];
+        let t11 = qd2 + qd3;
         let t12 = t11 * t11;
         let t13 = t9 * t10;
         let t14 = t10.mul_add(t10, t12);
@@ -1181,38 +1171,38 @@ mod __dynamics {
         let t18 = x.k26.mul_add(t11, x.k12 * t10);
         let t19 = x.c4 * t9 - x.s4 * t11;
         let t20 = -(x.c4 * t11) - x.s4 * t9;
-        let t21 = qd_[3] + t10;
+        let t21 = qd4 + t10;
         let t22 = x.s5.mul_add(t21, x.c5 * t19);
         let t23 = x.c5 * t21 - x.s5 * t19;
-        let t24 = qd_[4] - t20;
+        let t24 = qd5 - t20;
         let t25 = t22 * t23;
         let t26 = t23 * t24;
         let t27 = t24.mul_add(t24, t22 * t22);
-        let t28 = qd_[5] + t23;
-        let t29 = x.s2.mul_add(qdd_[0], t3);
-        let t30 = x.c2 * qdd_[0] - t4;
+        let t28 = qd6 + t23;
+        let t29 = x.s2.mul_add(qdd1, t3);
+        let t30 = x.c2 * qdd1 - t4;
         let t31 = x.k2.mul_add(t4 - t30, x.k44 * t1.mul_add(t1, t5));
-        let t32 = x.t103 + x.k3.mul_add(t4 + t30, x.k21 * qd_[1].mul_add(qd_[1], t5));
-        let t33 = x.t104 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd_[1]));
+        let t32 = x.t103 + x.k3.mul_add(t4 + t30, x.k21 * qd2.mul_add(qd2, t5));
+        let t33 = x.t104 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd2));
         let t34 = x.s3.mul_add(t33, x.c3 * t32);
         let t35 = x.c3 * t33 - x.s3 * t32;
-        let t36 = qd_[2].mul_add(t10, x.s3.mul_add(t30, x.c3 * t29));
-        let t37 = x.c3 * t30 - x.s3 * t29 - qd_[2] * t9;
-        let t38 = qdd_[1] + qdd_[2];
+        let t36 = qd3.mul_add(t10, x.s3.mul_add(t30, x.c3 * t29));
+        let t37 = x.c3 * t30 - x.s3 * t29 - qd3 * t9;
+        let t38 = qdd2 + qdd3;
         let t39 = t13 - t38;
         let t40 = t13 + t38;
         let t41 = t9 * t11 - t37;
         let t42 = t10.mul_add(t11, t36);
         let t43 = t34 + x.k2.mul_add(t39, x.k5 * t14);
         let t44 = t31 + x.k2.mul_add(t42, x.k4 * t41);
-        let t45 = qd_[3].mul_add(t20, x.c4 * t36 - x.s4 * t38);
-        let t46 = qdd_[3] + t37;
-        let t47 = qd_[4].mul_add(t23, x.s5.mul_add(t46, x.c5 * t45));
-        let t48 = qdd_[4] - (-(x.c4 * t38) - x.s4 * t36 - qd_[3] * t19);
+        let t45 = qd4.mul_add(t20, x.c4 * t36 - x.s4 * t38);
+        let t46 = qdd4 + t37;
+        let t47 = qd5.mul_add(t23, x.s5.mul_add(t46, x.c5 * t45));
+        let t48 = qdd5 - (-(x.c4 * t38) - x.s4 * t36 - qd4 * t19);
         let t49 = t25 - t48;
         let t50 = t26 + t47;
         /// T6 (6.46)
-        let tau6 = x.k7 * (qdd_[5] + (x.c5 * t46 - x.s5 * t45 - qd_[4] * t22));
+        let tau6 = x.k7 * (qdd6 + (x.c5 * t46 - x.s5 * t45 - qd5 * t22));
         let t51 = x
             .k32
             .mul_add(
@@ -1282,17 +1272,17 @@ mod __dynamics {
                 t63,
                 x.t105
                     + (t1 * t7 - t2 * t6
-                        + x.k28.mul_add(qdd_[1], x.k11.mul_add(t30, x.k29 * t29))) + tau3,
+                        + x.k28.mul_add(qdd2, x.k11.mul_add(t30, x.k29 * t29))) + tau3,
             );
         /// T1 (6.46)
         let tau1 = x
             .k31
             .mul_add(
-                qdd_[0],
+                qdd1,
                 x
                     .c2
                     .mul_add(
-                        qd_[1] * t6 - t1 * t8 + x.k11.mul_add(qdd_[1], x.k9 * t29)
+                        qd2 * t6 - t1 * t8 + x.k11.mul_add(qdd2, x.k9 * t29)
                             + x.c3.mul_add(t62, x.s3 * t61)
                             + x
                                 .k21
@@ -1305,8 +1295,8 @@ mod __dynamics {
                                 .k44
                                 .mul_add(
                                     t63,
-                                    t2 * t8 - qd_[1] * t7
-                                        + x.k29.mul_add(qdd_[1], x.k9.mul_add(t30, x.k30 * t29))
+                                    t2 * t8 - qd2 * t7
+                                        + x.k29.mul_add(qdd2, x.k9.mul_add(t30, x.k30 * t29))
                                         + (x.c3 * t61 - x.s3 * t62),
                                 ),
                     ),
@@ -1320,19 +1310,20 @@ mod __dynamics {
         qd_: &[T; 6usize],
     ) -> T {
         let x = configuration(p_, q_);
-        let t1 = x.s2 * qd_[0];
-        let t2 = x.c2 * qd_[0];
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let t1 = x.s2 * qd1;
+        let t2 = x.c2 * qd1;
         let t3 = x.s3 * t2;
         let t4 = x.c3.mul_add(t1, t3);
         let t5 = x.c3 * t2;
         let t6 = t5 - x.s3 * t1;
-        let t7 = qd_[1] + qd_[2];
+        let t7 = qd2 + qd3;
         let t8 = x.c4 * t4 - x.s4 * t7;
-        let t9 = qd_[3] + t6;
+        let t9 = qd4 + t6;
         let t10 = x.s5.mul_add(t9, x.c5 * t8);
-        let t11 = qd_[4] - (-(x.c4 * t7) - x.s4 * t4);
-        let t12 = qd_[5] + (x.c5 * t9 - x.s5 * t8);
-        let t13 = x.k44.mul_add(t1, x.k2 * qd_[1]);
+        let t11 = qd5 - (-(x.c4 * t7) - x.s4 * t4);
+        let t12 = qd6 + (x.c5 * t9 - x.s5 * t8);
+        let t13 = x.k44.mul_add(t1, x.k2 * qd2);
         let t14 = x.s3.mul_add(t13, x.k3 * t5);
         let t15 = x.k44.mul_add(t3, x.c3 * t13);
         let t16 = x.k21.mul_add(t7, t14);
@@ -1368,14 +1359,14 @@ mod __dynamics {
                                     x
                                         .k31
                                         .mul_add(
-                                            qd_[0] * qd_[0],
-                                            qd_[1]
+                                            qd1 * qd1,
+                                            qd2
                                                 .mul_add(
-                                                    x.k28.mul_add(qd_[1], x.k11.mul_add(t2, x.k29 * t1)),
+                                                    x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1)),
                                                     t2
                                                         .mul_add(
-                                                            x.k11.mul_add(qd_[1], x.k9 * t1),
-                                                            t1 * x.k29.mul_add(qd_[1], x.k9.mul_add(t2, x.k30 * t1)),
+                                                            x.k11.mul_add(qd2, x.k9 * t1),
+                                                            t1 * x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1)),
                                                         ),
                                                 ),
                                         ),

@@ -19,8 +19,9 @@
 //! `x.mul_add(y, z)` (the runtime's `Real::mul_add`: one fused instruction where the target
 //! has FMA), and parentheses appear only where precedence or the order of evaluation needs
 //! them. The
-//! arguments are `q_`, `qd_` and `qdd_`: a pattern cannot shadow a constant, and a user's
-//! constant `q` would otherwise turn the argument into a constant pattern.
+//! arguments are `q_`, `qd_` and `qdd_` (a pattern cannot shadow a constant, and the trait's
+//! methods, in the user's scope, take the same names); each function names the components it
+//! reads as the book numbers them, `let [qd1, _, qd3] = *qd_;`.
 
 use crate::derive::Equations;
 use crate::symbolic::{Graph, Node, NodeId, Var};
@@ -374,19 +375,16 @@ impl<'a> Emitter<'a> {
                 quote!(T::from_f64(#value))
             }
             Node::Var(Var::Q(i)) => {
-                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let q = local("q_");
-                quote!(#q[#i])
+                let q = local(&format!("q{}", i + 1));
+                quote!(#q)
             }
             Node::Var(Var::Qd(i)) => {
-                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let qd = local("qd_");
-                quote!(#qd[#i])
+                let qd = local(&format!("qd{}", i + 1));
+                quote!(#qd)
             }
             Node::Var(Var::Qdd(i)) => {
-                let i = proc_macro2::Literal::usize_unsuffixed(usize::from(i));
-                let qdd = local("qdd_");
-                quote!(#qdd[#i])
+                let qdd = local(&format!("qdd{}", i + 1));
+                quote!(#qdd)
             }
             Node::Var(Var::SinQ(i)) => {
                 let s = local(&format!("s{}", i + 1));
@@ -565,6 +563,7 @@ impl<'a> Emitter<'a> {
             }
             b
         };
+        statements.extend(self.joint_variables());
         for phase in [0, 1] {
             if phase == 1 {
                 self.sines_and_cosines(&mut statements);
@@ -617,6 +616,7 @@ impl<'a> Emitter<'a> {
             let (p, q) = (local(PARAMETERS), local("q_"));
             statements.push(quote!(let #x = #f(#p, #q);));
         }
+        statements.extend(self.joint_variables());
         for (id, _) in self.graph.nodes() {
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
@@ -656,6 +656,41 @@ impl<'a> Emitter<'a> {
             tokens: quote!(#(#statements)* #result),
             ops: count(self.eq, &outputs),
         }
+    }
+
+    /// `let [qd1, _, qd3] = *qd_;`: the joint positions, velocities and accelerations the
+    /// marked nodes read, named as the book numbers them.
+    fn joint_variables(&self) -> Vec<TokenStream> {
+        let n = self.eq.dof;
+        let mut used = [vec![false; n], vec![false; n], vec![false; n]];
+        for (id, node) in self.graph.nodes() {
+            if !self.needed[id.index()] {
+                continue;
+            }
+            match node {
+                Node::Var(Var::Q(i)) => used[0][usize::from(i)] = true,
+                Node::Var(Var::Qd(i)) => used[1][usize::from(i)] = true,
+                Node::Var(Var::Qdd(i)) => used[2][usize::from(i)] = true,
+                _ => {}
+            }
+        }
+        ["q", "qd", "qdd"]
+            .iter()
+            .zip(used)
+            .filter(|(_, used)| used.contains(&true))
+            .map(|(name, used)| {
+                let array = local(&format!("{name}_"));
+                let names = used.iter().enumerate().map(|(i, &u)| {
+                    if u {
+                        let v = local(&format!("{name}{}", i + 1));
+                        quote!(#v)
+                    } else {
+                        quote!(_)
+                    }
+                });
+                quote!(let [#(#names),*] = *#array;)
+            })
+            .collect()
     }
 
     /// The sines and cosines of the joints that need them, four joints a call computed side by
