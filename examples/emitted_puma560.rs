@@ -60,47 +60,47 @@ mod __dynamics {
         k30: T,
         k31: T,
         k32: T,
-        t1: T,
+        u1: T,
         k34: T,
         k35: T,
         m4_4: T,
-        t5: T,
+        u5: T,
         k38: T,
         k39: T,
         k40: T,
         m3_4: T,
         m3_3: T,
-        t31: T,
+        u31: T,
         k41: T,
         m2_3: T,
         k44: T,
         m2_2: T,
-        t53: T,
-        t54: T,
+        u53: T,
+        u54: T,
         m1_2: T,
         m1_1: T,
-        t55: T,
-        t59: T,
+        u55: T,
+        u59: T,
         m1_3: T,
-        t62: T,
+        u62: T,
         m2_4: T,
-        t69: T,
-        t71: T,
+        u69: T,
+        u71: T,
         m1_4: T,
-        t73: T,
+        u73: T,
         m3_5: T,
-        t82: T,
+        u82: T,
         m2_5: T,
-        t93: T,
-        t95: T,
+        u93: T,
+        u95: T,
         m1_5: T,
         m4_6: T,
         m2_6: T,
-        t102: T,
+        u102: T,
         m1_6: T,
-        t103: T,
-        t104: T,
-        t105: T,
+        u103: T,
+        u104: T,
+        u105: T,
         g5: T,
         g4: T,
         g3: T,
@@ -114,37 +114,37 @@ mod __dynamics {
         k58: T,
         p: T,
         k62: T,
-        t115: T,
-        t116: T,
-        t117: T,
-        t120: T,
-        t122: T,
-        t123: T,
-        t125: T,
-        t127: T,
-        t134: T,
-        t135: T,
-        t137: T,
-        t139: T,
-        t140: T,
-        t143: T,
-        t144: T,
-        t147: T,
-        t151: T,
-        t152: T,
+        u115: T,
+        u116: T,
+        u117: T,
+        u120: T,
+        u122: T,
+        u123: T,
+        u125: T,
+        u127: T,
+        u134: T,
+        u135: T,
+        u137: T,
+        u139: T,
+        u140: T,
+        u143: T,
+        u144: T,
+        u147: T,
+        u151: T,
+        u152: T,
         k65: T,
-        t161: T,
-        t164: T,
-        t171: T,
-        t172: T,
-        t174: T,
-        t176: T,
-        t177: T,
-        t179: T,
-        t180: T,
-        t181: T,
-        t182: T,
-        t183: T,
+        u161: T,
+        u164: T,
+        u171: T,
+        u172: T,
+        u174: T,
+        u176: T,
+        u177: T,
+        u179: T,
+        u180: T,
+        u181: T,
+        u182: T,
+        u183: T,
         k67: T,
         k68: T,
         k69: T,
@@ -229,279 +229,279 @@ mod __dynamics {
             q_[3],
             q_[4],
         ]);
-        let t1 = s5 * c5;
-        let t2 = k7.mul_add(s5 * s5, k15 * (c5 * c5));
-        let t3 = k33 - t2;
-        let t4 = k6 + t2;
+        let u1 = s5 * c5;
+        let u2 = k7.mul_add(s5 * s5, k15 * (c5 * c5));
+        let u3 = k33 - u2;
+        let u4 = k6 + u2;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k20 + t3;
-        let t5 = c4 * s5;
-        let t6 = s4 * s5;
-        let t7 = c4 * c4;
-        let t8 = s4 * c4;
-        let t9 = k18.mul_add(s4 * s4, t4 * t7);
-        let t10 = k18 + t4 - t9;
-        let t11 = t8 * (k35 + t4);
-        let t12 = c4 * t1;
-        let t13 = k34 * t12;
-        let t14 = k37 * t5;
-        let t15 = k38 * c5;
-        let t16 = m4_4 + t14;
-        let t17 = t14 + t16;
-        let t18 = t14 + t15;
-        let t19 = k40 * t5;
-        let t20 = k39 * t6;
-        let t21 = k37 * t6 - t11;
-        let t22 = k38 * t6;
+        let m4_4 = k20 + u3;
+        let u5 = c4 * s5;
+        let u6 = s4 * s5;
+        let u7 = c4 * c4;
+        let u8 = s4 * c4;
+        let u9 = k18.mul_add(s4 * s4, u4 * u7);
+        let u10 = k18 + u4 - u9;
+        let u11 = u8 * (k35 + u4);
+        let u12 = c4 * u1;
+        let u13 = k34 * u12;
+        let u14 = k37 * u5;
+        let u15 = k38 * c5;
+        let u16 = m4_4 + u14;
+        let u17 = u14 + u16;
+        let u18 = u14 + u15;
+        let u19 = k40 * u5;
+        let u20 = k39 * u6;
+        let u21 = k37 * u6 - u11;
+        let u22 = k38 * u6;
         /// D34 = D43 (6.43)
-        let m3_4 = k40.mul_add(t6, k36 * (s4 * t1));
-        let t23 = k17.mul_add(t5, k22);
-        let t24 = k14.mul_add(c5, k25);
-        let t25 = k27 + (t15 + (t9 + t15));
+        let m3_4 = k40.mul_add(u6, k36 * (s4 * u1));
+        let u23 = k17.mul_add(u5, k22);
+        let u24 = k14.mul_add(c5, k25);
+        let u25 = k27 + (u15 + (u9 + u15));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k26 + (t18 + (t10 + t18));
-        let t26 = k24 + (t13 - k39.mul_add(c5, t19));
-        let t27 = k12 + m3_4;
-        let t28 = c3 * t23 - s3 * t24;
-        let t29 = s3 * t23;
-        let t30 = c3 * t24;
-        let t31 = t29 + t30;
-        let t32 = c3 * c3;
-        let t33 = s3 * s3;
-        let t34 = s3 * c3;
-        let t35 = t17.mul_add(t33, k42.mul_add(t26 * t34, t25 * t32));
-        let t36 = t17 + t25 - t35;
-        let t37 = t32 - t33;
-        let t38 = t26.mul_add(t37, t34 * (t25 - t17));
-        let t39 = c3 * t21 - s3 * t27;
-        let t40 = c3.mul_add(t27, s3 * t21);
-        let t41 = k2 * t28;
-        let t42 = k43 * t6;
-        let t43 = t41 + t42;
-        let t44 = t43 + (t36 + t43);
+        let m3_3 = k26 + (u18 + (u10 + u18));
+        let u26 = k24 + (u13 - k39.mul_add(c5, u19));
+        let u27 = k12 + m3_4;
+        let u28 = c3 * u23 - s3 * u24;
+        let u29 = s3 * u23;
+        let u30 = c3 * u24;
+        let u31 = u29 + u30;
+        let u32 = c3 * c3;
+        let u33 = s3 * s3;
+        let u34 = s3 * c3;
+        let u35 = u17.mul_add(u33, k42.mul_add(u26 * u34, u25 * u32));
+        let u36 = u17 + u25 - u35;
+        let u37 = u32 - u33;
+        let u38 = u26.mul_add(u37, u34 * (u25 - u17));
+        let u39 = c3 * u21 - s3 * u27;
+        let u40 = c3.mul_add(u27, s3 * u21);
+        let u41 = k2 * u28;
+        let u42 = k43 * u6;
+        let u43 = u41 + u42;
+        let u44 = u43 + (u36 + u43);
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + t41;
-        let t45 = k21 * t31;
-        let t46 = k30 + (t42 + (t35 + t42));
+        let m2_3 = m3_3 + u41;
+        let u45 = k21 * u31;
+        let u46 = k30 + (u42 + (u35 + u42));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k28 + (t41 + m2_3);
-        let t47 = k9 + (t38 + t45);
-        let t48 = k29 + (t39 - k3.mul_add(t28, t22));
-        let t49 = k11 + k44.mul_add(t31, t40);
-        let t50 = c2 * c2;
-        let t51 = s2 * s2;
-        let t52 = s2 * c2;
-        let t53 = t47.mul_add(t50 - t51, t52 * (t46 - t44));
-        let t54 = c2 * t48 - s2 * t49;
+        let m2_2 = k28 + (u41 + m2_3);
+        let u47 = k9 + (u38 + u45);
+        let u48 = k29 + (u39 - k3.mul_add(u28, u22));
+        let u49 = k11 + k44.mul_add(u31, u40);
+        let u50 = c2 * c2;
+        let u51 = s2 * s2;
+        let u52 = s2 * c2;
+        let u53 = u47.mul_add(u50 - u51, u52 * (u46 - u44));
+        let u54 = c2 * u48 - s2 * u49;
         /// D12 = D21 (6.43)
-        let m1_2 = c2.mul_add(t49, s2 * t48);
+        let m1_2 = c2.mul_add(u49, s2 * u48);
         /// D11 (6.43) + actuator inertia
         let m1_1 = k31
-            + (t44 + t46 - t44.mul_add(t51, k42.mul_add(t47 * t52, t46 * t50)));
-        let t55 = -t30 - t29;
-        let t56 = k44.mul_add(t28, t39);
-        let t57 = k3.mul_add(t55, t40);
-        let t58 = c2 * t56;
-        let t59 = t58 - s2 * t57;
+            + (u44 + u46 - u44.mul_add(u51, k42.mul_add(u47 * u52, u46 * u50)));
+        let u55 = -u30 - u29;
+        let u56 = k44.mul_add(u28, u39);
+        let u57 = k3.mul_add(u55, u40);
+        let u58 = c2 * u56;
+        let u59 = u58 - s2 * u57;
         /// D13 = D31 (6.43)
-        let m1_3 = c2.mul_add(t57, s2 * t56);
-        let t60 = k38 * t5;
-        let t61 = t13 + t60;
-        let t62 = c3 * t6;
-        let t63 = s3 * t6;
-        let t64 = c3.mul_add(t16, s3 * t61);
-        let t65 = k45 * t63;
-        let t66 = k43 * t62;
-        let t67 = c3 * t61 - s3 * t16 + t65;
-        let t68 = t64 + (t19 + t66);
+        let m1_3 = c2.mul_add(u57, s2 * u56);
+        let u60 = k38 * u5;
+        let u61 = u13 + u60;
+        let u62 = c3 * u6;
+        let u63 = s3 * u6;
+        let u64 = c3.mul_add(u16, s3 * u61);
+        let u65 = k45 * u63;
+        let u66 = k43 * u62;
+        let u67 = c3 * u61 - s3 * u16 + u65;
+        let u68 = u64 + (u19 + u66);
         /// D24 = D42 (6.43)
-        let m2_4 = k38.mul_add(t63, m3_4);
-        let t69 = c2.mul_add(t63, s2 * t62);
-        let t70 = c2 * t67;
-        let t71 = t70 - s2 * t68;
+        let m2_4 = k38.mul_add(u63, m3_4);
+        let u69 = c2.mul_add(u63, s2 * u62);
+        let u70 = c2 * u67;
+        let u71 = u70 - s2 * u68;
         /// D14 = D41 (6.43)
-        let m1_4 = c2.mul_add(t68, s2 * t67);
-        let t72 = c4 * c5;
-        let t73 = s4 * c5;
-        let t74 = k18 * c4;
-        let t75 = k38 * t73;
-        let t76 = k37 * s5;
-        let t77 = k40 * t72;
-        let t78 = k38 * t72;
-        let t79 = k18.mul_add(s4, t75);
+        let m1_4 = c2.mul_add(u68, s2 * u67);
+        let u72 = c4 * c5;
+        let u73 = s4 * c5;
+        let u74 = k18 * c4;
+        let u75 = k38 * u73;
+        let u76 = k37 * s5;
+        let u77 = k40 * u72;
+        let u78 = k38 * u72;
+        let u79 = k18.mul_add(s4, u75);
         /// D35 = D53 (6.43)
-        let m3_5 = t74 + (t76 + t78);
-        let t80 = c3 * t72;
-        let t81 = s3 * s5;
-        let t82 = t80 - t81;
-        let t83 = s3 * t72;
-        let t84 = c3.mul_add(s5, t83);
-        let t85 = s3 * t73;
-        let t86 = c3 * t73;
-        let t87 = k37.mul_add(t86, s3 * t79);
-        let t88 = k43 * t84;
-        let t89 = k45 * t82;
-        let t90 = k40 * t73;
-        let t91 = k39.mul_add(t85, c3 * t79) + t88;
-        let t92 = t87 + (t89 + t90);
+        let m3_5 = u74 + (u76 + u78);
+        let u80 = c3 * u72;
+        let u81 = s3 * s5;
+        let u82 = u80 - u81;
+        let u83 = s3 * u72;
+        let u84 = c3.mul_add(s5, u83);
+        let u85 = s3 * u73;
+        let u86 = c3 * u73;
+        let u87 = k37.mul_add(u86, s3 * u79);
+        let u88 = k43 * u84;
+        let u89 = k45 * u82;
+        let u90 = k40 * u73;
+        let u91 = k39.mul_add(u85, c3 * u79) + u88;
+        let u92 = u87 + (u89 + u90);
         /// D25 = D52 (6.43)
-        let m2_5 = k40.mul_add(t84, m3_5);
-        let t93 = c2.mul_add(t84, s2 * t82);
-        let t94 = c2 * t91;
-        let t95 = t94 - s2 * t92;
+        let m2_5 = k40.mul_add(u84, m3_5);
+        let u93 = c2.mul_add(u84, s2 * u82);
+        let u94 = c2 * u91;
+        let u95 = u94 - s2 * u92;
         /// D15 = D51 (6.43)
-        let m1_5 = c2.mul_add(t92, s2 * t91);
+        let m1_5 = c2.mul_add(u92, s2 * u91);
         /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
-        let m2_6 = k7 * t6;
-        let t96 = c3 * t5;
-        let t97 = s3.mul_add(c5, t96);
-        let t98 = s3 * t5;
-        let t99 = t98 - c3 * c5;
-        let t100 = c2 * t97;
-        let t101 = s2 * t99;
-        let t102 = t100 - t101;
+        let m2_6 = k7 * u6;
+        let u96 = c3 * u5;
+        let u97 = s3.mul_add(c5, u96);
+        let u98 = s3 * u5;
+        let u99 = u98 - c3 * c5;
+        let u100 = c2 * u97;
+        let u101 = s2 * u99;
+        let u102 = u100 - u101;
         /// D16 = D61 (6.43)
-        let m1_6 = k32 * c2.mul_add(t99, s2 * t97);
-        let t103 = k46 * s2;
-        let t104 = k46 * c2;
-        let t105 = k48.mul_add(s2, k47 * c2);
-        let t106 = c2.mul_add(s3, s2 * c3);
-        let t107 = c2 * c3 - s2 * s3;
-        let t108 = c4 * t106;
-        let t109 = s4 * t106;
-        let t110 = s5.mul_add(t107, c5 * t108);
+        let m1_6 = k32 * c2.mul_add(u99, s2 * u97);
+        let u103 = k46 * s2;
+        let u104 = k46 * c2;
+        let u105 = k48.mul_add(s2, k47 * c2);
+        let u106 = c2.mul_add(s3, s2 * c3);
+        let u107 = c2 * c3 - s2 * s3;
+        let u108 = c4 * u106;
+        let u109 = s4 * u106;
+        let u110 = s5.mul_add(u107, c5 * u108);
         /// D5 (6.45), gravity and spring
-        let g5 = k52 * t110;
-        let t111 = c5 * t109;
-        let t112 = s5 * t109;
+        let g5 = k52 * u110;
+        let u111 = c5 * u109;
+        let u112 = s5 * u109;
         /// D4 (6.45), gravity and spring
-        let g4 = k51 * t112;
-        let t113 = c4 * t111 - s4 * t110;
+        let g4 = k51 * u112;
+        let u113 = c4 * u111 - s4 * u110;
         /// D3 (6.45), gravity and spring
-        let g3 = k52.mul_add(c4.mul_add(t110, s4 * t111), k50.mul_add(t106, k49 * t107));
+        let g3 = k52.mul_add(c4.mul_add(u110, s4 * u111), k50.mul_add(u106, k49 * u107));
         /// D2 (6.45), gravity and spring
-        let g2 = t105 + g3;
+        let g2 = u105 + g3;
         /// D1 (6.45), gravity and spring
         let g1 = k51
-            * c2.mul_add(c3.mul_add(t112, s3 * t113), s2 * (c3 * t113 - s3 * t112));
+            * c2.mul_add(c3.mul_add(u112, s3 * u113), s2 * (c3 * u113 - s3 * u112));
         /// potential energy
         let p = -k52
             .mul_add(
-                c5 * t107 - s5 * t108,
-                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(t107, k61 * t106),
+                c5 * u107 - s5 * u108,
+                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(u107, k61 * u106),
             );
-        let t114 = t45 + k41.mul_add(t38, t45);
-        let t115 = k42.mul_add(t38, t114)
-            - t51
+        let u114 = u45 + k41.mul_add(u38, u45);
+        let u115 = k42.mul_add(u38, u114)
+            - u51
                 .mul_add(
-                    t114,
-                    k42 * t52.mul_add(k21.mul_add(t28, t35 - t36), t38 * t50),
+                    u114,
+                    k42 * u52.mul_add(k21.mul_add(u28, u35 - u36), u38 * u50),
                 );
-        let t116 = s2.mul_add(k3 * t31 - t40, t58);
-        let t117 = s2.mul_add(k44 * t55 - t40, t58);
-        let t118 = k45 * t62;
-        let t119 = k38 * t62;
-        let t120 = s2.mul_add(t118 - t64, t70);
-        let t121 = k40 * t82;
-        let t122 = s2.mul_add(k43 * t82 - t87, t94);
-        let t123 = t101 - t100;
-        let t124 = k42 * t11;
-        let t125 = t20 + k41.mul_add(t11, t20);
-        let t126 = t14 - (t9 - t10);
-        let t127 = k36.mul_add(t12, t19);
-        let t128 = k63.mul_add(t6 * t33, k42 * m3_4.mul_add(t34, t11 * t32));
-        let t129 = c3 * t126 - s3 * t127;
-        let t130 = k43 * t5;
-        let t131 = t130 + (t128 + t130);
-        let t132 = t119 + t130;
-        let t133 = t132 + (k63.mul_add(t6, t124) - t128 + t132);
-        let t134 = t119 + t125;
-        let t135 = t119 + t134;
-        let t136 = k40 * t63;
-        let t137 = t131 + t133
-            - t51
+        let u116 = s2.mul_add(k3 * u31 - u40, u58);
+        let u117 = s2.mul_add(k44 * u55 - u40, u58);
+        let u118 = k45 * u62;
+        let u119 = k38 * u62;
+        let u120 = s2.mul_add(u118 - u64, u70);
+        let u121 = k40 * u82;
+        let u122 = s2.mul_add(k43 * u82 - u87, u94);
+        let u123 = u101 - u100;
+        let u124 = k42 * u11;
+        let u125 = u20 + k41.mul_add(u11, u20);
+        let u126 = u14 - (u9 - u10);
+        let u127 = k36.mul_add(u12, u19);
+        let u128 = k63.mul_add(u6 * u33, k42 * m3_4.mul_add(u34, u11 * u32));
+        let u129 = c3 * u126 - s3 * u127;
+        let u130 = k43 * u5;
+        let u131 = u130 + (u128 + u130);
+        let u132 = u119 + u130;
+        let u133 = u132 + (k63.mul_add(u6, u124) - u128 + u132);
+        let u134 = u119 + u125;
+        let u135 = u119 + u134;
+        let u136 = k40 * u63;
+        let u137 = u131 + u133
+            - u51
                 .mul_add(
-                    t133,
+                    u133,
                     k42
                         .mul_add(
-                            t52
-                                * (m3_4.mul_add(t37, t34 * k64.mul_add(t6, t124)) + t136),
-                            t50 * t131,
+                            u52
+                                * (m3_4.mul_add(u37, u34 * k64.mul_add(u6, u124)) + u136),
+                            u50 * u131,
                         ),
                 );
-        let t138 = c2 * (t65 + c3.mul_add(t127, s3 * t126));
-        let t139 = s2.mul_add(t129 - (t60 + t66), t138);
-        let t140 = s2.mul_add(t118 + t129, t138);
-        let t141 = k37 * t63;
-        let t142 = k39 * t62;
-        let t143 = k38.mul_add(t98, t127);
-        let t144 = c2
+        let u138 = c2 * (u65 + c3.mul_add(u127, s3 * u126));
+        let u139 = s2.mul_add(u129 - (u60 + u66), u138);
+        let u140 = s2.mul_add(u118 + u129, u138);
+        let u141 = k37 * u63;
+        let u142 = k39 * u62;
+        let u143 = k38.mul_add(u98, u127);
+        let u144 = c2
             .mul_add(
-                s3.mul_add(m3_4, t142) + k43.mul_add(t96, t22),
-                s2 * k45.mul_add(t98, c3.mul_add(m3_4, t141)),
+                s3.mul_add(m3_4, u142) + k43.mul_add(u96, u22),
+                s2 * k45.mul_add(u98, c3.mul_add(m3_4, u141)),
             );
-        let t145 = k37 * t72;
-        let t146 = t74 + t78;
-        let t147 = k35.mul_add(s4, t90);
-        let t148 = k45 * t85;
-        let t149 = k43.mul_add(t86, t77);
-        let t150 = k38 * t85;
-        let t151 = t147 + t150;
-        let t152 = c2
+        let u145 = k37 * u72;
+        let u146 = u74 + u78;
+        let u147 = k35.mul_add(s4, u90);
+        let u148 = k45 * u85;
+        let u149 = k43.mul_add(u86, u77);
+        let u150 = k38 * u85;
+        let u151 = u147 + u150;
+        let u152 = c2
             .mul_add(
-                k37.mul_add(t80, s3 * t146) + t149,
-                s2 * (k39.mul_add(t83, c3 * t146) + t148),
+                k37.mul_add(u80, s3 * u146) + u149,
+                s2 * (k39.mul_add(u83, c3 * u146) + u148),
             );
-        let t153 = t2 - t3;
-        let t154 = t1 * t7;
-        let t155 = c4 * t153;
-        let t156 = k40 * s5;
-        let t157 = t156 + k66.mul_add(t154, t156);
-        let t158 = k65.mul_add(t1, t145);
-        let t159 = t145 + t158;
-        let t160 = t145 + t156;
-        let t161 = t160 + k66.mul_add(t1 - t154, t160);
-        let t162 = t155 - (t76 + t77);
-        let t163 = k65.mul_add(t1 * t8, k37 * t73);
-        let t164 = t90 - s4 * t153;
-        let t165 = t33.mul_add(t159, k42.mul_add(t34 * t162, t32 * t157));
-        let t166 = c3 * t163 - s3 * t164;
-        let t167 = k43 * t73;
-        let t168 = t167 + (t165 + t167);
-        let t169 = t121 + t167;
-        let t170 = t169 + (t157 + t159 - t165 + t169);
-        let t171 = t121 + (t121 + t161);
-        let t172 = t168 + t170
-            - t51
+        let u153 = u2 - u3;
+        let u154 = u1 * u7;
+        let u155 = c4 * u153;
+        let u156 = k40 * s5;
+        let u157 = u156 + k66.mul_add(u154, u156);
+        let u158 = k65.mul_add(u1, u145);
+        let u159 = u145 + u158;
+        let u160 = u145 + u156;
+        let u161 = u160 + k66.mul_add(u1 - u154, u160);
+        let u162 = u155 - (u76 + u77);
+        let u163 = k65.mul_add(u1 * u8, k37 * u73);
+        let u164 = u90 - s4 * u153;
+        let u165 = u33.mul_add(u159, k42.mul_add(u34 * u162, u32 * u157));
+        let u166 = c3 * u163 - s3 * u164;
+        let u167 = k43 * u73;
+        let u168 = u167 + (u165 + u167);
+        let u169 = u121 + u167;
+        let u170 = u169 + (u157 + u159 - u165 + u169);
+        let u171 = u121 + (u121 + u161);
+        let u172 = u168 + u170
+            - u51
                 .mul_add(
-                    t170,
+                    u170,
                     k42
                         .mul_add(
-                            t52
-                                * k38.mul_add(t84, t37.mul_add(t162, t34 * (t157 - t159))),
-                            t50 * t168,
+                            u52
+                                * k38.mul_add(u84, u37.mul_add(u162, u34 * (u157 - u159))),
+                            u50 * u168,
                         ),
                 );
-        let t173 = c2 * (t88 + c3.mul_add(t164, s3 * t163));
-        let t174 = s2.mul_add(t166 - (t75 + t89), t173);
-        let t175 = t81 - t80;
-        let t176 = k38.mul_add(t175, t161);
-        let t177 = s2.mul_add(k45.mul_add(t175, t166), t173);
-        let t178 = t78 + t155;
-        let t179 = t150 + t164;
-        let t180 = c2
+        let u173 = c2 * (u88 + c3.mul_add(u164, s3 * u163));
+        let u174 = s2.mul_add(u166 - (u75 + u89), u173);
+        let u175 = u81 - u80;
+        let u176 = k38.mul_add(u175, u161);
+        let u177 = s2.mul_add(k45.mul_add(u175, u166), u173);
+        let u178 = u78 + u155;
+        let u179 = u150 + u164;
+        let u180 = c2
             .mul_add(
-                t149 + c3.mul_add(t158, s3 * t178),
-                s2 * (t148 + (c3 * t178 - s3 * t158)),
+                u149 + c3.mul_add(u158, s3 * u178),
+                s2 * (u148 + (c3 * u178 - s3 * u158)),
             );
-        let t181 = k37.mul_add(c5, t19);
-        let t182 = k38.mul_add(t99, t181);
-        let t183 = c2
+        let u181 = k37.mul_add(c5, u19);
+        let u182 = k38.mul_add(u99, u181);
+        let u183 = c2
             .mul_add(
-                t136 + t142 + k43.mul_add(t97, t22),
-                s2 * k45.mul_add(t99, k40.mul_add(t62, t141)),
+                u136 + u142 + k43.mul_add(u97, u22),
+                s2 * k45.mul_add(u99, k40.mul_add(u62, u141)),
             );
         Configuration {
             k1,
@@ -544,47 +544,47 @@ mod __dynamics {
             k30,
             k31,
             k32,
-            t1,
+            u1,
             k34,
             k35,
             m4_4,
-            t5,
+            u5,
             k38,
             k39,
             k40,
             m3_4,
             m3_3,
-            t31,
+            u31,
             k41,
             m2_3,
             k44,
             m2_2,
-            t53,
-            t54,
+            u53,
+            u54,
             m1_2,
             m1_1,
-            t55,
-            t59,
+            u55,
+            u59,
             m1_3,
-            t62,
+            u62,
             m2_4,
-            t69,
-            t71,
+            u69,
+            u71,
             m1_4,
-            t73,
+            u73,
             m3_5,
-            t82,
+            u82,
             m2_5,
-            t93,
-            t95,
+            u93,
+            u95,
             m1_5,
             m4_6,
             m2_6,
-            t102,
+            u102,
             m1_6,
-            t103,
-            t104,
-            t105,
+            u103,
+            u104,
+            u105,
             g5,
             g4,
             g3,
@@ -598,37 +598,37 @@ mod __dynamics {
             k58,
             p,
             k62,
-            t115,
-            t116,
-            t117,
-            t120,
-            t122,
-            t123,
-            t125,
-            t127,
-            t134,
-            t135,
-            t137,
-            t139,
-            t140,
-            t143,
-            t144,
-            t147,
-            t151,
-            t152,
+            u115,
+            u116,
+            u117,
+            u120,
+            u122,
+            u123,
+            u125,
+            u127,
+            u134,
+            u135,
+            u137,
+            u139,
+            u140,
+            u143,
+            u144,
+            u147,
+            u151,
+            u152,
             k65,
-            t161,
-            t164,
-            t171,
-            t172,
-            t174,
-            t176,
-            t177,
-            t179,
-            t180,
-            t181,
-            t182,
-            t183,
+            u161,
+            u164,
+            u171,
+            u172,
+            u174,
+            u176,
+            u177,
+            u179,
+            u180,
+            u181,
+            u182,
+            u183,
             k67,
             k68,
             k69,
@@ -639,14 +639,34 @@ mod __dynamics {
         p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = configuration(p_, q_);
+        let Configuration {
+            k7,
+            k18,
+            m4_4,
+            m3_4,
+            m3_3,
+            m2_3,
+            m2_2,
+            m1_2,
+            m1_1,
+            m1_3,
+            m2_4,
+            m1_4,
+            m3_5,
+            m2_5,
+            m1_5,
+            m4_6,
+            m2_6,
+            m1_6,
+            ..
+        } = configuration(p_, q_);
         [
-            [x.m1_1, x.m1_2, x.m1_3, x.m1_4, x.m1_5, x.m1_6],
-            [x.m1_2, x.m2_2, x.m2_3, x.m2_4, x.m2_5, x.m2_6],
-            [x.m1_3, x.m2_3, x.m3_3, x.m3_4, x.m3_5, x.m2_6],
-            [x.m1_4, x.m2_4, x.m3_4, x.m4_4, T::ZERO, x.m4_6],
-            [x.m1_5, x.m2_5, x.m3_5, T::ZERO, x.k18, T::ZERO],
-            [x.m1_6, x.m2_6, x.m2_6, x.m4_6, T::ZERO, x.k7],
+            [m1_1, m1_2, m1_3, m1_4, m1_5, m1_6],
+            [m1_2, m2_2, m2_3, m2_4, m2_5, m2_6],
+            [m1_3, m2_3, m3_3, m3_4, m3_5, m2_6],
+            [m1_4, m2_4, m3_4, m4_4, T::ZERO, m4_6],
+            [m1_5, m2_5, m3_5, T::ZERO, k18, T::ZERO],
+            [m1_6, m2_6, m2_6, m4_6, T::ZERO, k7],
         ]
     }
     #[inline(always)]
@@ -655,195 +675,208 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [[T; 6usize]; 6usize] {
-        let x = configuration(p_, q_);
+        let Configuration {
+            k1,
+            k2,
+            s5,
+            k7,
+            k32,
+            u1,
+            k34,
+            u5,
+            k38,
+            k40,
+            u31,
+            k41,
+            u53,
+            u54,
+            u55,
+            u59,
+            u62,
+            u69,
+            u71,
+            u73,
+            u82,
+            u93,
+            u95,
+            u102,
+            k62,
+            u115,
+            u116,
+            u117,
+            u120,
+            u122,
+            u123,
+            u125,
+            u127,
+            u134,
+            u135,
+            u137,
+            u139,
+            u140,
+            u143,
+            u144,
+            u147,
+            u151,
+            u152,
+            k65,
+            u161,
+            u164,
+            u171,
+            u172,
+            u174,
+            u176,
+            u177,
+            u179,
+            u180,
+            u181,
+            u182,
+            u183,
+            k67,
+            k68,
+            k69,
+            ..
+        } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = qd2 * x.t54;
-        let t2 = qd4 * x.t144;
-        let t3 = x.k2 * (qd3 * x.t55);
-        let t4 = qd4 * x.t143;
-        let t5 = qd1 * x.t102;
-        let t6 = qd4 * x.t127;
-        let t7 = qd5 * x.t181;
+        let t1 = qd2 * u54;
+        let t2 = qd4 * u144;
+        let t3 = k2 * (qd3 * u55);
+        let t4 = qd4 * u143;
+        let t5 = qd1 * u102;
+        let t6 = qd4 * u127;
+        let t7 = qd5 * u181;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = x.k34 * (qd5 * x.t1);
-        let t8 = x.s5 * qd5;
-        let t9 = x.s5.mul_add(qd4, qd1 * x.t93 - qd2 * x.t73 - qd3 * x.t73);
+        let cor4_4 = k34 * (qd5 * u1);
+        let t8 = s5 * qd5;
+        let t9 = s5.mul_add(qd4, qd1 * u93 - qd2 * u73 - qd3 * u73);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = x.k68 * t9;
+        let cor5_6 = k68 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = x.k67 * t9;
-        let t10 = x.k7 * (qd6 * x.t5);
-        let t11 = x.k7 * (qd6 * x.t73);
-        let t12 = qd5.mul_add(x.t73, qd4 * x.t5);
+        let cor6_5 = k67 * t9;
+        let t10 = k7 * (qd6 * u5);
+        let t11 = k7 * (qd6 * u73);
+        let t12 = qd5.mul_add(u73, qd4 * u5);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = x.k68 * (t5 + t12);
+        let cor2_6 = k68 * (t5 + t12);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = x.k68 * (t12 - t5);
-        let t13 = qd4.mul_add(x.t147, t7);
-        let t14 = qd3 * x.t117;
-        let t15 = qd5 * x.t183;
+        let cor6_2 = k68 * (t12 - t5);
+        let t13 = qd4.mul_add(u147, t7);
+        let t14 = qd3 * u117;
+        let t15 = qd5 * u183;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = x.k67
-            * qd5.mul_add(x.t93, qd2 * x.t102 - qd3 * x.t123 - qd4 * x.t69);
-        let t16 = qd5 * x.t182;
+        let cor1_6 = k67 * qd5.mul_add(u93, qd2 * u102 - qd3 * u123 - qd4 * u69);
+        let t16 = qd5 * u182;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = x.k1 * qd4.mul_add(x.t125, qd5 * x.t161);
-        let t17 = qd1 * x.t123;
-        let t18 = qd3.mul_add(x.t5, qd1.mul_add(x.t69, qd2 * x.t5));
+        let cor3_3 = k1 * qd4.mul_add(u125, qd5 * u161);
+        let t17 = qd1 * u123;
+        let t18 = qd3.mul_add(u5, qd1.mul_add(u69, qd2 * u5));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = x.k67 * (t8 + t18);
+        let cor4_6 = k67 * (t8 + t18);
         /// C11 = sum of D11k qd_k (6.44)
-        let cor1_1 = x.k1
-            * qd5
-                .mul_add(
-                    x.t172,
-                    qd4.mul_add(x.t137, x.k41.mul_add(qd2 * x.t53, qd3 * x.t115)),
-                );
-        let t19 = qd5.mul_add(x.t174, qd4.mul_add(x.t139, qd3.mul_add(x.t116, t1)));
-        let t20 = x
-            .k32
+        let cor1_1 = k1
+            * qd5.mul_add(u172, qd4.mul_add(u137, k41.mul_add(qd2 * u53, qd3 * u115)));
+        let t19 = qd5.mul_add(u174, qd4.mul_add(u139, qd3.mul_add(u116, t1)));
+        let t20 = k32
             .mul_add(
-                qd6 * x.t102,
+                qd6 * u102,
                 qd5
                     .mul_add(
-                        x.t95,
-                        qd4
-                            .mul_add(
-                                x.t71,
-                                qd3.mul_add(x.t59, x.k41.mul_add(qd1 * x.t53, t1)),
-                            ),
+                        u95,
+                        qd4.mul_add(u71, qd3.mul_add(u59, k41.mul_add(qd1 * u53, t1))),
                     ),
             );
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = x.k1 * (t19 + t20);
+        let cor1_2 = k1 * (t19 + t20);
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = x.k1 * (t19 - t20);
-        let t21 = qd5.mul_add(x.t177, qd4.mul_add(x.t140, qd2.mul_add(x.t59, t14)));
-        let t22 = x
-            .k7
+        let cor2_1 = k1 * (t19 - t20);
+        let t21 = qd5.mul_add(u177, qd4.mul_add(u140, qd2.mul_add(u59, t14)));
+        let t22 = k7
             .mul_add(
-                qd6 * x.t123,
-                qd5
-                    .mul_add(
-                        x.t122,
-                        qd4.mul_add(x.t120, t14 + qd2.mul_add(x.t116, qd1 * x.t115)),
-                    ),
+                qd6 * u123,
+                qd5.mul_add(u122, qd4.mul_add(u120, t14 + qd2.mul_add(u116, qd1 * u115))),
             );
         /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = x.k1 * (t21 + t22);
+        let cor1_3 = k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = x.k1 * (t21 - t22);
-        let t23 = qd5.mul_add(x.t180, t2 + qd3.mul_add(x.t120, qd2 * x.t71));
-        let t24 = x
-            .k7
+        let cor3_1 = k1 * (t21 - t22);
+        let t23 = qd5.mul_add(u180, t2 + qd3.mul_add(u120, qd2 * u71));
+        let t24 = k7
             .mul_add(
-                qd6 * x.t69,
-                qd5
-                    .mul_add(
-                        x.t152,
-                        t2 + qd3.mul_add(x.t140, qd2.mul_add(x.t139, qd1 * x.t137)),
-                    ),
+                qd6 * u69,
+                qd5.mul_add(u152, t2 + qd3.mul_add(u140, qd2.mul_add(u139, qd1 * u137))),
             );
         /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = x.k1 * (t23 + t24);
+        let cor1_4 = k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = x.k1 * (t23 - t24);
-        let t25 = t15 + qd4.mul_add(x.t152, qd3.mul_add(x.t122, qd2 * x.t95));
-        let t26 = x
-            .k32
+        let cor4_1 = k1 * (t23 - t24);
+        let t25 = t15 + qd4.mul_add(u152, qd3.mul_add(u122, qd2 * u95));
+        let t26 = k32
             .mul_add(
-                qd6 * x.t93,
-                t15
-                    + qd4
-                        .mul_add(
-                            x.t180,
-                            qd3.mul_add(x.t177, qd2.mul_add(x.t174, qd1 * x.t172)),
-                        ),
+                qd6 * u93,
+                t15 + qd4.mul_add(u180, qd3.mul_add(u177, qd2.mul_add(u174, qd1 * u172))),
             );
         /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = x.k1 * (t25 + t26);
+        let cor1_5 = k1 * (t25 + t26);
         /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = x.k1 * (t25 - t26);
+        let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = x.k1
-            * qd5.mul_add(x.t171, x.k62.mul_add(qd3 * x.t31, qd4 * x.t135));
-        let t27 = qd5.mul_add(x.t176, qd4.mul_add(x.t134, t3));
-        let t28 = x
-            .k40
+        let cor2_2 = k1 * qd5.mul_add(u171, k62.mul_add(qd3 * u31, qd4 * u135));
+        let t27 = qd5.mul_add(u176, qd4.mul_add(u134, t3));
+        let t28 = k40
             .mul_add(
-                qd5 * x.t82,
-                x.k38.mul_add(qd4 * x.t62, t3 + x.k62.mul_add(qd2 * x.t31, qd1 * x.t116)),
-            ) - qd1 * x.t59;
+                qd5 * u82,
+                k38.mul_add(qd4 * u62, t3 + k62.mul_add(qd2 * u31, qd1 * u116)),
+            ) - qd1 * u59;
         /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = x.k1 * (t27 + t28);
+        let cor2_3 = k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = x.k1 * (t27 - t28);
-        let t29 = qd5.mul_add(x.t179, x.k38.mul_add(qd3 * x.t62, t4));
+        let cor3_2 = k1 * (t27 - t28);
+        let t29 = qd5.mul_add(u179, k38.mul_add(qd3 * u62, t4));
         let t30 = t10
-            + qd5
-                .mul_add(
-                    x.t151,
-                    t4 + qd3.mul_add(x.t134, qd1.mul_add(x.t139, qd2 * x.t135)),
-                ) - qd1 * x.t71;
+            + qd5.mul_add(u151, t4 + qd3.mul_add(u134, qd1.mul_add(u139, qd2 * u135)))
+            - qd1 * u71;
         /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = x.k1 * (t29 + t30);
+        let cor2_4 = k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = x.k1 * (t29 - t30);
-        let t31 = qd4.mul_add(x.t151, x.k40 * (qd3 * x.t82)) + t16;
+        let cor4_2 = k1 * (t29 - t30);
+        let t31 = qd4.mul_add(u151, k40 * (qd3 * u82)) + t16;
         let t32 = t11
-            + (t16
-                + qd4
-                    .mul_add(
-                        x.t179,
-                        qd3.mul_add(x.t176, qd1.mul_add(x.t174, qd2 * x.t171)),
-                    )) - qd1 * x.t95;
+            + (t16 + qd4.mul_add(u179, qd3.mul_add(u176, qd1.mul_add(u174, qd2 * u171))))
+            - qd1 * u95;
         /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = x.k1 * (t31 + t32);
+        let cor2_5 = k1 * (t31 + t32);
         /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = x.k1 * (t31 - t32);
-        let t33 = qd5.mul_add(x.t164, t6);
+        let cor5_2 = k1 * (t31 - t32);
+        let t33 = qd5.mul_add(u164, t6);
         let t34 = t10
-            + qd5
-                .mul_add(
-                    x.t147,
-                    t6 + qd3.mul_add(x.t125, qd2.mul_add(x.t134, qd1 * x.t140)),
-                ) - qd1.mul_add(x.t120, x.k38 * (qd2 * x.t62));
+            + qd5.mul_add(u147, t6 + qd3.mul_add(u125, qd2.mul_add(u134, qd1 * u140)))
+            - qd1.mul_add(u120, k38 * (qd2 * u62));
         /// C34 = sum of D34k qd_k (6.44)
-        let cor3_4 = x.k1 * (t33 + t34);
+        let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
-        let cor4_3 = x.k1 * (t33 - t34);
+        let cor4_3 = k1 * (t33 - t34);
         let t35 = t11
-            + (t7
-                + qd4
-                    .mul_add(
-                        x.t164,
-                        qd3.mul_add(x.t161, qd2.mul_add(x.t176, qd1 * x.t177)),
-                    )) - qd1.mul_add(x.t122, x.k40 * (qd2 * x.t82));
+            + (t7 + qd4.mul_add(u164, qd3.mul_add(u161, qd2.mul_add(u176, qd1 * u177))))
+            - qd1.mul_add(u122, k40 * (qd2 * u82));
         /// C35 = sum of D35k qd_k (6.44)
-        let cor3_5 = x.k1 * (t13 + t35);
+        let cor3_5 = k1 * (t13 + t35);
         /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = x.k1 * (t13 - t35);
+        let cor5_3 = k1 * (t13 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = x.k68 * (t12 - t17);
+        let cor3_6 = k68 * (t12 - t17);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = x.k68 * (t12 + t17);
-        let t36 = x
-            .k32
+        let cor6_3 = k68 * (t12 + t17);
+        let t36 = k32
             .mul_add(
-                x.s5 * qd6,
-                x
-                    .k65
-                    .mul_add(
-                        qd4 * x.t1,
-                        qd3.mul_add(x.t164, qd2.mul_add(x.t179, qd1 * x.t180)),
-                    ),
-            ) - qd3.mul_add(x.t147, qd2.mul_add(x.t151, qd1 * x.t152));
+                s5 * qd6,
+                k65.mul_add(qd4 * u1, qd3.mul_add(u164, qd2.mul_add(u179, qd1 * u180))),
+            ) - qd3.mul_add(u147, qd2.mul_add(u151, qd1 * u152));
         /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = x.k1 * t36;
+        let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = x.k69 * t36;
+        let cor5_4 = k69 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = x.k67 * (t8 - t18);
+        let cor6_4 = k67 * (t8 - t18);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -859,46 +892,95 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = configuration(p_, q_);
+        let Configuration {
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k29,
+            k30,
+            k32,
+            k35,
+            k39,
+            k40,
+            k44,
+            k53,
+            k54,
+            k55,
+            k56,
+            k57,
+            ..
+        } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = x.s2 * qd1;
-        let t2 = x.c2 * qd1;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t2 * t2;
         let t6 = t1 * t2;
         let t7 = qd2.mul_add(qd2, t5);
-        let t8 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
-        let t9 = x.k11.mul_add(qd2, x.k9 * t1);
-        let t10 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
-        let t11 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
-        let t12 = x.s3.mul_add(t2, x.c3 * t1);
-        let t13 = x.c3 * t2 - x.s3 * t1;
-        let t14 = x.c3 * t7 - x.s3 * t6;
-        let t15 = x.s3.mul_add(t7, x.c3 * t6);
+        let t8 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
+        let t9 = k11.mul_add(qd2, k9 * t1);
+        let t10 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
+        let t11 = k44.mul_add(t1.mul_add(t1, t5), k53 * t4);
+        let t12 = s3.mul_add(t2, c3 * t1);
+        let t13 = c3 * t2 - s3 * t1;
+        let t14 = c3 * t7 - s3 * t6;
+        let t15 = s3.mul_add(t7, c3 * t6);
         let t16 = qd2 + qd3;
-        let t17 = qd3.mul_add(t13, x.c3 * t3 - x.s3 * t4);
-        let t18 = -(x.c3 * t4) - x.s3 * t3 - qd3 * t12;
+        let t17 = qd3.mul_add(t13, c3 * t3 - s3 * t4);
+        let t18 = -(c3 * t4) - s3 * t3 - qd3 * t12;
         let t19 = t16 * t16;
         let t20 = t12 * t13;
         let t21 = t13.mul_add(t13, t19);
         let t22 = t12.mul_add(t12, t19);
         let t23 = t12 * t16 - t18;
         let t24 = t13.mul_add(t16, t17);
-        let t25 = x.k24.mul_add(t13, x.k27 * t12);
-        let t26 = x.k12.mul_add(t16, x.k24 * t12);
-        let t27 = x.k26.mul_add(t16, x.k12 * t13);
-        let t28 = x.k21.mul_add(t14, x.k2.mul_add(t20, x.k5 * t21));
-        let t29 = t11 + x.k2.mul_add(t24, x.k4 * t23);
-        let t30 = x.c4 * t12 - x.s4 * t16;
-        let t31 = -(x.c4 * t16) - x.s4 * t12;
+        let t25 = k24.mul_add(t13, k27 * t12);
+        let t26 = k12.mul_add(t16, k24 * t12);
+        let t27 = k26.mul_add(t16, k12 * t13);
+        let t28 = k21.mul_add(t14, k2.mul_add(t20, k5 * t21));
+        let t29 = t11 + k2.mul_add(t24, k4 * t23);
+        let t30 = c4 * t12 - s4 * t16;
+        let t31 = -(c4 * t16) - s4 * t12;
         let t32 = qd4 + t13;
-        let t33 = qd4.mul_add(t31, x.c4 * t17);
-        let t34 = -(x.s4 * t17) - qd4 * t30;
-        let t35 = x.s5.mul_add(t32, x.c5 * t30);
-        let t36 = x.c5 * t32 - x.s5 * t30;
+        let t33 = qd4.mul_add(t31, c4 * t17);
+        let t34 = -(s4 * t17) - qd4 * t30;
+        let t35 = s5.mul_add(t32, c5 * t30);
+        let t36 = c5 * t32 - s5 * t30;
         let t37 = qd5 - t31;
-        let t38 = qd5.mul_add(t36, x.s5.mul_add(t18, x.c5 * t33));
+        let t38 = qd5.mul_add(t36, s5.mul_add(t18, c5 * t33));
         let t39 = t35 * t36;
         let t40 = t36 * t37;
         let t41 = t34 + t39;
@@ -906,87 +988,70 @@ mod __dynamics {
         let t43 = t38 + t40;
         let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
-        let cqd6 = x.k7 * (x.c5 * t18 - x.s5 * t33 - qd5 * t35);
-        let t45 = x
-            .k32
+        let cqd6 = k7 * (c5 * t18 - s5 * t33 - qd5 * t35);
+        let t45 = k32
             .mul_add(
                 t37 * t44,
-                x
-                    .k17
-                    .mul_add(-(x.c4 * t29) - x.s4 * t28, x.k18.mul_add(t40, x.k15 * t38)),
+                k17.mul_add(-(c4 * t29) - s4 * t28, k18.mul_add(t40, k15 * t38)),
             );
-        let t46 = x.k13.mul_add(t35 * t37, cqd6);
+        let t46 = k13.mul_add(t35 * t37, cqd6);
         /// centripetal and Coriolis torque 5
-        let cqd5 = x
-            .k7
+        let cqd5 = k7
             .mul_add(
                 t35 * t44,
-                x
-                    .k17
+                k17
                     .mul_add(
-                        x
-                            .s5
+                        s5
                             .mul_add(
-                                x.k2.mul_add(t15, x.k21.mul_add(t22, x.k4 * t20)),
-                                x.c5 * (x.c4 * t28 - x.s4 * t29),
+                                k2.mul_add(t15, k21.mul_add(t22, k4 * t20)),
+                                c5 * (c4 * t28 - s4 * t29),
                             ),
-                        x.k16.mul_add(t39, x.k35 * t34),
+                        k16.mul_add(t39, k35 * t34),
                     ),
             );
-        let t47 = x.s5.mul_add(t42, x.c5 * t41);
-        let t48 = x.s5 * t41 - x.c5 * t42;
-        let t49 = x.k20.mul_add(t31 * t32, x.k6 * t33) + (x.c5 * t45 - x.s5 * t46);
-        let t50 = x.k57 * (t30 * t32) - cqd5;
+        let t47 = s5.mul_add(t42, c5 * t41);
+        let t48 = s5 * t41 - c5 * t42;
+        let t49 = k20.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
+        let t50 = k57 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = x.k19.mul_add(t30 * t31, x.k20 * t18) + x.c5.mul_add(t46, x.s5 * t45);
-        let t51 = x.s4.mul_add(t43, x.c4 * t47);
-        let t52 = x.s4 * t47 - x.c4 * t43;
-        let t53 = x.k14.mul_add(t51, x.k25.mul_add(t20, x.k54 * t21));
-        let t54 = x.k14.mul_add(t48, x.k55.mul_add(t22, x.k22 * t20));
-        let t55 = x
-            .k40
+        let cqd4 = k19.mul_add(t30 * t31, k20 * t18) + c5.mul_add(t46, s5 * t45);
+        let t51 = s4.mul_add(t43, c4 * t47);
+        let t52 = s4 * t47 - c4 * t43;
+        let t53 = k14.mul_add(t51, k25.mul_add(t20, k54 * t21));
+        let t54 = k14.mul_add(t48, k55.mul_add(t22, k22 * t20));
+        let t55 = k40
             .mul_add(
                 t52,
-                x
-                    .k25
-                    .mul_add(
-                        t11,
-                        x.k24.mul_add(t18, x.k27 * t17) + (t13 * t27 - t16 * t26),
-                    ) + (x.c4 * t49 - x.s4 * t50),
+                k25.mul_add(t11, k24.mul_add(t18, k27 * t17) + (t13 * t27 - t16 * t26))
+                    + (c4 * t49 - s4 * t50),
             );
-        let t56 = x
-            .k39
+        let t56 = k39
             .mul_add(
                 t52,
-                x.k54.mul_add(t11, x.k24.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
+                k54.mul_add(t11, k24.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
             );
         /// centripetal and Coriolis torque 3
-        let cqd3 = x.k12.mul_add(t18, t12 * t26 - t13 * t25)
-            + x.k56.mul_add(t14, x.k23 * t15) - x.c4.mul_add(t50, x.s4 * t49)
-            + x.k40.mul_add(t51, x.k39 * t48);
-        let t57 = x.c3.mul_add(t54, x.s3 * t53);
+        let cqd3 = k12.mul_add(t18, t12 * t26 - t13 * t25) + k56.mul_add(t14, k23 * t15)
+            - c4.mul_add(t50, s4 * t49) + k40.mul_add(t51, k39 * t48);
+        let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
-        let cqd2 = x
-            .k2
-            .mul_add(t57, x.k10.mul_add(t4, x.k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
+        let cqd2 = k2
+            .mul_add(t57, k10.mul_add(t4, k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
         /// centripetal and Coriolis torque 1
-        let cqd1 = x
-            .c2
+        let cqd1 = c2
             .mul_add(
-                x.k9.mul_add(t3, qd2 * t8 - t1 * t10) + x.c3.mul_add(t56, x.s3 * t55)
-                    + x
-                        .k21
+                k9.mul_add(t3, qd2 * t8 - t1 * t10) + c3.mul_add(t56, s3 * t55)
+                    + k21
                         .mul_add(
-                            x.k17.mul_add(t52, x.k25.mul_add(t24, x.k22 * t23)),
-                            x.k3 * (x.c3 * t53 - x.s3 * t54),
+                            k17.mul_add(t52, k25.mul_add(t24, k22 * t23)),
+                            k3 * (c3 * t53 - s3 * t54),
                         ),
-                x.s2
-                    * x
-                        .k44
+                s2
+                    * k44
                         .mul_add(
                             t57,
-                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t10 - qd2 * t9)
-                                + (x.c3 * t55 - x.s3 * t56),
+                            k8.mul_add(t4, k30 * t3) + (t2 * t10 - qd2 * t9)
+                                + (c3 * t55 - s3 * t56),
                         ),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
@@ -996,8 +1061,8 @@ mod __dynamics {
         p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = configuration(p_, q_);
-        [x.g1, x.g2, x.g3, x.g4, x.g5, T::ZERO]
+        let Configuration { g5, g4, g3, g2, g1, .. } = configuration(p_, q_);
+        [g1, g2, g3, g4, g5, T::ZERO]
     }
     #[inline(always)]
     pub(super) fn bias_torques<T: ::dynamics_runtime::Real>(
@@ -1005,41 +1070,91 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = configuration(p_, q_);
+        let Configuration {
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k29,
+            k30,
+            k32,
+            k35,
+            k39,
+            k40,
+            k44,
+            u103,
+            u104,
+            u105,
+            k53,
+            k54,
+            k55,
+            k57,
+            ..
+        } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = x.s2 * qd1;
-        let t2 = x.c2 * qd1;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
-        let t7 = x.k11.mul_add(qd2, x.k9 * t1);
-        let t8 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
-        let t9 = x.k44.mul_add(t1.mul_add(t1, t5), x.k53 * t4);
-        let t10 = x.s3.mul_add(t2, x.c3 * t1);
-        let t11 = x.c3 * t2 - x.s3 * t1;
+        let t6 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
+        let t7 = k11.mul_add(qd2, k9 * t1);
+        let t8 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
+        let t9 = k44.mul_add(t1.mul_add(t1, t5), k53 * t4);
+        let t10 = s3.mul_add(t2, c3 * t1);
+        let t11 = c3 * t2 - s3 * t1;
         let t12 = qd2 + qd3;
-        let t13 = qd3.mul_add(t11, x.c3 * t3 - x.s3 * t4);
-        let t14 = -(x.c3 * t4) - x.s3 * t3 - qd3 * t10;
+        let t13 = qd3.mul_add(t11, c3 * t3 - s3 * t4);
+        let t14 = -(c3 * t4) - s3 * t3 - qd3 * t10;
         let t15 = t12 * t12;
         let t16 = t10 * t11;
         let t17 = t11.mul_add(t11, t15);
         let t18 = t10.mul_add(t10, t15);
         let t19 = t10 * t12 - t14;
         let t20 = t11.mul_add(t12, t13);
-        let t21 = x.k24.mul_add(t11, x.k27 * t10);
-        let t22 = x.k12.mul_add(t12, x.k24 * t10);
-        let t23 = x.k26.mul_add(t12, x.k12 * t11);
-        let t24 = t9 + x.k2.mul_add(t20, x.k4 * t19);
-        let t25 = x.c4 * t10 - x.s4 * t12;
-        let t26 = -(x.c4 * t12) - x.s4 * t10;
+        let t21 = k24.mul_add(t11, k27 * t10);
+        let t22 = k12.mul_add(t12, k24 * t10);
+        let t23 = k26.mul_add(t12, k12 * t11);
+        let t24 = t9 + k2.mul_add(t20, k4 * t19);
+        let t25 = c4 * t10 - s4 * t12;
+        let t26 = -(c4 * t12) - s4 * t10;
         let t27 = qd4 + t11;
-        let t28 = qd4.mul_add(t26, x.c4 * t13);
-        let t29 = -(x.s4 * t13) - qd4 * t25;
-        let t30 = x.s5.mul_add(t27, x.c5 * t25);
-        let t31 = x.c5 * t27 - x.s5 * t25;
+        let t28 = qd4.mul_add(t26, c4 * t13);
+        let t29 = -(s4 * t13) - qd4 * t25;
+        let t30 = s5.mul_add(t27, c5 * t25);
+        let t31 = c5 * t27 - s5 * t25;
         let t32 = qd5 - t26;
-        let t33 = qd5.mul_add(t31, x.s5.mul_add(t14, x.c5 * t28));
+        let t33 = qd5.mul_add(t31, s5.mul_add(t14, c5 * t28));
         let t34 = t30 * t31;
         let t35 = t31 * t32;
         let t36 = t29 + t34;
@@ -1047,96 +1162,72 @@ mod __dynamics {
         let t38 = t33 + t35;
         let t39 = qd6 + t31;
         /// centripetal, Coriolis and gravity torque 6
-        let h6 = x.k7 * (x.c5 * t14 - x.s5 * t28 - qd5 * t30);
-        let t40 = x.k13.mul_add(t30 * t32, h6);
-        let t41 = x.s5.mul_add(t37, x.c5 * t36);
-        let t42 = x.s5 * t36 - x.c5 * t37;
-        let t43 = x.s4.mul_add(t38, x.c4 * t41);
-        let t44 = x.s4 * t41 - x.c4 * t38;
-        let t45 = x.k14.mul_add(t43, x.k25.mul_add(t16, x.k54 * t17));
-        let t46 = x.k14.mul_add(t42, x.k55.mul_add(t18, x.k22 * t16));
-        let t47 = x.c3.mul_add(t46, x.s3 * t45);
-        let t48 = x.k21.mul_add(qd2.mul_add(qd2, t5), x.t103);
-        let t49 = x.k2.mul_add(t1 * t2, x.t104);
-        let t50 = x.s3.mul_add(t49, x.c3 * t48);
-        let t51 = x.c3 * t49 - x.s3 * t48;
-        let t52 = x.k2.mul_add(t16, x.k5 * t17) + t50;
-        let t53 = x
-            .k32
+        let h6 = k7 * (c5 * t14 - s5 * t28 - qd5 * t30);
+        let t40 = k13.mul_add(t30 * t32, h6);
+        let t41 = s5.mul_add(t37, c5 * t36);
+        let t42 = s5 * t36 - c5 * t37;
+        let t43 = s4.mul_add(t38, c4 * t41);
+        let t44 = s4 * t41 - c4 * t38;
+        let t45 = k14.mul_add(t43, k25.mul_add(t16, k54 * t17));
+        let t46 = k14.mul_add(t42, k55.mul_add(t18, k22 * t16));
+        let t47 = c3.mul_add(t46, s3 * t45);
+        let t48 = k21.mul_add(qd2.mul_add(qd2, t5), u103);
+        let t49 = k2.mul_add(t1 * t2, u104);
+        let t50 = s3.mul_add(t49, c3 * t48);
+        let t51 = c3 * t49 - s3 * t48;
+        let t52 = k2.mul_add(t16, k5 * t17) + t50;
+        let t53 = k32
             .mul_add(
                 t32 * t39,
-                x
-                    .k17
-                    .mul_add(-(x.c4 * t24) - x.s4 * t52, x.k18.mul_add(t35, x.k15 * t33)),
+                k17.mul_add(-(c4 * t24) - s4 * t52, k18.mul_add(t35, k15 * t33)),
             );
         /// centripetal, Coriolis and gravity torque 5
-        let h5 = x
-            .k7
+        let h5 = k7
             .mul_add(
                 t30 * t39,
-                x
-                    .k17
+                k17
                     .mul_add(
-                        x
-                            .s5
+                        s5
                             .mul_add(
-                                x.k21.mul_add(t18, x.k4 * t16) + t51,
-                                x.c5 * (x.c4 * t52 - x.s4 * t24),
+                                k21.mul_add(t18, k4 * t16) + t51,
+                                c5 * (c4 * t52 - s4 * t24),
                             ),
-                        x.k16.mul_add(t34, x.k35 * t29),
+                        k16.mul_add(t34, k35 * t29),
                     ),
             );
-        let t54 = x.k20.mul_add(t26 * t27, x.k6 * t28) + (x.c5 * t53 - x.s5 * t40);
-        let t55 = x.k57 * (t25 * t27) - h5;
+        let t54 = k20.mul_add(t26 * t27, k6 * t28) + (c5 * t53 - s5 * t40);
+        let t55 = k57 * (t25 * t27) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = x.k19.mul_add(t25 * t26, x.k20 * t14) + x.s5.mul_add(t53, x.c5 * t40);
-        let t56 = x
-            .k40
+        let h4 = k19.mul_add(t25 * t26, k20 * t14) + s5.mul_add(t53, c5 * t40);
+        let t56 = k40
             .mul_add(
                 t44,
-                x
-                    .k25
-                    .mul_add(
-                        t9,
-                        x.k24.mul_add(t14, x.k27 * t13) + (t11 * t23 - t12 * t22),
-                    ) + (x.c4 * t54 - x.s4 * t55),
+                k25.mul_add(t9, k24.mul_add(t14, k27 * t13) + (t11 * t23 - t12 * t22))
+                    + (c4 * t54 - s4 * t55),
             );
-        let t57 = x
-            .k39
-            .mul_add(
-                t44,
-                x.k54.mul_add(t9, x.k24.mul_add(t13, t12 * t21 - t10 * t23)) + h4,
-            );
+        let t57 = k39
+            .mul_add(t44, k54.mul_add(t9, k24.mul_add(t13, t12 * t21 - t10 * t23)) + h4);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = x.k40.mul_add(t43, x.k39 * t42)
-            + (x.k12.mul_add(t14, t10 * t22 - t11 * t21)
-                + x.k55.mul_add(t50, x.k22 * t51) - x.c4.mul_add(t55, x.s4 * t54));
+        let h3 = k40.mul_add(t43, k39 * t42)
+            + (k12.mul_add(t14, t10 * t22 - t11 * t21) + k55.mul_add(t50, k22 * t51)
+                - c4.mul_add(t55, s4 * t54));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = x
-            .k2
-            .mul_add(
-                t47,
-                x.t105 + (x.k10.mul_add(t4, x.k29 * t3) + (t1 * t7 - t2 * t6)) + h3,
-            );
+        let h2 = k2
+            .mul_add(t47, u105 + (k10.mul_add(t4, k29 * t3) + (t1 * t7 - t2 * t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
-        let h1 = x
-            .c2
+        let h1 = c2
             .mul_add(
-                x
-                    .k21
+                k21
                     .mul_add(
-                        x.k17.mul_add(t44, x.k25.mul_add(t20, x.k22 * t19)),
-                        x.k3 * (x.c3 * t45 - x.s3 * t46),
-                    )
-                    + (x.k9.mul_add(t3, qd2 * t6 - t1 * t8)
-                        + x.c3.mul_add(t57, x.s3 * t56)),
-                x.s2
-                    * x
-                        .k44
+                        k17.mul_add(t44, k25.mul_add(t20, k22 * t19)),
+                        k3 * (c3 * t45 - s3 * t46),
+                    ) + (k9.mul_add(t3, qd2 * t6 - t1 * t8) + c3.mul_add(t57, s3 * t56)),
+                s2
+                    * k44
                         .mul_add(
                             t47,
-                            x.k8.mul_add(t4, x.k30 * t3) + (t2 * t8 - qd2 * t7)
-                                + (x.c3 * t56 - x.s3 * t57),
+                            k8.mul_add(t4, k30 * t3) + (t2 * t8 - qd2 * t7)
+                                + (c3 * t56 - s3 * t57),
                         ),
             );
         [h1, h2, h3, h4, h5, h6]
@@ -1148,156 +1239,183 @@ mod __dynamics {
         qd_: &[T; 6usize],
         qdd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let x = configuration(p_, q_);
+        let Configuration {
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            k7,
+            k9,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k29,
+            k30,
+            k31,
+            k32,
+            k39,
+            k40,
+            k44,
+            u103,
+            u104,
+            u105,
+            k54,
+            k55,
+            k57,
+            ..
+        } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
         let [qdd1, qdd2, qdd3, qdd4, qdd5, qdd6] = *qdd_;
-        let t1 = x.s2 * qd1;
-        let t2 = x.c2 * qd1;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1));
-        let t7 = x.k11.mul_add(qd2, x.k9 * t1);
-        let t8 = x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1));
-        let t9 = x.s3.mul_add(t2, x.c3 * t1);
-        let t10 = x.c3 * t2 - x.s3 * t1;
+        let t6 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
+        let t7 = k11.mul_add(qd2, k9 * t1);
+        let t8 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
+        let t9 = s3.mul_add(t2, c3 * t1);
+        let t10 = c3 * t2 - s3 * t1;
         let t11 = qd2 + qd3;
         let t12 = t11 * t11;
         let t13 = t9 * t10;
         let t14 = t10.mul_add(t10, t12);
         let t15 = t9.mul_add(t9, t12);
-        let t16 = x.k24.mul_add(t10, x.k27 * t9);
-        let t17 = x.k12.mul_add(t11, x.k24 * t9);
-        let t18 = x.k26.mul_add(t11, x.k12 * t10);
-        let t19 = x.c4 * t9 - x.s4 * t11;
-        let t20 = -(x.c4 * t11) - x.s4 * t9;
+        let t16 = k24.mul_add(t10, k27 * t9);
+        let t17 = k12.mul_add(t11, k24 * t9);
+        let t18 = k26.mul_add(t11, k12 * t10);
+        let t19 = c4 * t9 - s4 * t11;
+        let t20 = -(c4 * t11) - s4 * t9;
         let t21 = qd4 + t10;
-        let t22 = x.s5.mul_add(t21, x.c5 * t19);
-        let t23 = x.c5 * t21 - x.s5 * t19;
+        let t22 = s5.mul_add(t21, c5 * t19);
+        let t23 = c5 * t21 - s5 * t19;
         let t24 = qd5 - t20;
         let t25 = t22 * t23;
         let t26 = t23 * t24;
         let t27 = t24.mul_add(t24, t22 * t22);
         let t28 = qd6 + t23;
-        let t29 = x.s2.mul_add(qdd1, t3);
-        let t30 = x.c2 * qdd1 - t4;
-        let t31 = x.k2.mul_add(t4 - t30, x.k44 * t1.mul_add(t1, t5));
-        let t32 = x.t103 + x.k3.mul_add(t4 + t30, x.k21 * qd2.mul_add(qd2, t5));
-        let t33 = x.t104 + x.k3.mul_add(t3 - t29, x.k2 * t1.mul_add(t2, qdd2));
-        let t34 = x.s3.mul_add(t33, x.c3 * t32);
-        let t35 = x.c3 * t33 - x.s3 * t32;
-        let t36 = qd3.mul_add(t10, x.s3.mul_add(t30, x.c3 * t29));
-        let t37 = x.c3 * t30 - x.s3 * t29 - qd3 * t9;
+        let t29 = s2.mul_add(qdd1, t3);
+        let t30 = c2 * qdd1 - t4;
+        let t31 = k2.mul_add(t4 - t30, k44 * t1.mul_add(t1, t5));
+        let t32 = u103 + k3.mul_add(t4 + t30, k21 * qd2.mul_add(qd2, t5));
+        let t33 = u104 + k3.mul_add(t3 - t29, k2 * t1.mul_add(t2, qdd2));
+        let t34 = s3.mul_add(t33, c3 * t32);
+        let t35 = c3 * t33 - s3 * t32;
+        let t36 = qd3.mul_add(t10, s3.mul_add(t30, c3 * t29));
+        let t37 = c3 * t30 - s3 * t29 - qd3 * t9;
         let t38 = qdd2 + qdd3;
         let t39 = t13 - t38;
         let t40 = t13 + t38;
         let t41 = t9 * t11 - t37;
         let t42 = t10.mul_add(t11, t36);
-        let t43 = t34 + x.k2.mul_add(t39, x.k5 * t14);
-        let t44 = t31 + x.k2.mul_add(t42, x.k4 * t41);
-        let t45 = qd4.mul_add(t20, x.c4 * t36 - x.s4 * t38);
+        let t43 = t34 + k2.mul_add(t39, k5 * t14);
+        let t44 = t31 + k2.mul_add(t42, k4 * t41);
+        let t45 = qd4.mul_add(t20, c4 * t36 - s4 * t38);
         let t46 = qdd4 + t37;
-        let t47 = qd5.mul_add(t23, x.s5.mul_add(t46, x.c5 * t45));
-        let t48 = qdd5 - (-(x.c4 * t38) - x.s4 * t36 - qd4 * t19);
+        let t47 = qd5.mul_add(t23, s5.mul_add(t46, c5 * t45));
+        let t48 = qdd5 - (-(c4 * t38) - s4 * t36 - qd4 * t19);
         let t49 = t25 - t48;
         let t50 = t26 + t47;
         /// T6 (6.46)
-        let tau6 = x.k7 * (qdd6 + (x.c5 * t46 - x.s5 * t45 - qd5 * t22));
-        let t51 = x
-            .k32
+        let tau6 = k7 * (qdd6 + (c5 * t46 - s5 * t45 - qd5 * t22));
+        let t51 = k32
             .mul_add(
                 t24 * t28,
-                x
-                    .k17
-                    .mul_add(-(x.c4 * t44) - x.s4 * t43, x.k15.mul_add(t47, x.k18 * t26)),
+                k17.mul_add(-(c4 * t44) - s4 * t43, k15.mul_add(t47, k18 * t26)),
             );
-        let t52 = x.k13.mul_add(t22 * t24, tau6);
+        let t52 = k13.mul_add(t22 * t24, tau6);
         /// T5 (6.46)
-        let tau5 = x
-            .k7
+        let tau5 = k7
             .mul_add(
                 t22 * t28,
-                x
-                    .k17
+                k17
                     .mul_add(
-                        x
-                            .s5
+                        s5
                             .mul_add(
-                                t35 + x.k4.mul_add(t40, x.k21 * t15),
-                                x.c5 * (x.c4 * t43 - x.s4 * t44),
+                                t35 + k4.mul_add(t40, k21 * t15),
+                                c5 * (c4 * t43 - s4 * t44),
                             ),
-                        x.k18.mul_add(t48, x.k16 * t25),
+                        k18.mul_add(t48, k16 * t25),
                     ),
             );
-        let t53 = x.c5.mul_add(t49, x.s5 * t27);
-        let t54 = x.s5 * t49 - x.c5 * t27;
-        let t55 = x.k6.mul_add(t45, x.k20 * (t20 * t21)) + (x.c5 * t51 - x.s5 * t52);
-        let t56 = x.k57 * (t19 * t21) - tau5;
+        let t53 = c5.mul_add(t49, s5 * t27);
+        let t54 = s5 * t49 - c5 * t27;
+        let t55 = k6.mul_add(t45, k20 * (t20 * t21)) + (c5 * t51 - s5 * t52);
+        let t56 = k57 * (t19 * t21) - tau5;
         /// T4 (6.46)
-        let tau4 = x.k20.mul_add(t46, x.k19 * (t19 * t20))
-            + x.c5.mul_add(t52, x.s5 * t51);
-        let t57 = x.s4.mul_add(t50, x.c4 * t53);
-        let t58 = x.s4 * t53 - x.c4 * t50;
-        let t59 = x.k14.mul_add(t57, x.k25.mul_add(t39, x.k54 * t14));
-        let t60 = x.k14.mul_add(t54, x.k22.mul_add(t40, x.k55 * t15));
-        let t61 = x
-            .k40
+        let tau4 = k20.mul_add(t46, k19 * (t19 * t20)) + c5.mul_add(t52, s5 * t51);
+        let t57 = s4.mul_add(t50, c4 * t53);
+        let t58 = s4 * t53 - c4 * t50;
+        let t59 = k14.mul_add(t57, k25.mul_add(t39, k54 * t14));
+        let t60 = k14.mul_add(t54, k22.mul_add(t40, k55 * t15));
+        let t61 = k40
             .mul_add(
                 t58,
-                x
-                    .k25
-                    .mul_add(
-                        t31,
-                        t10 * t18 - t11 * t17 + x.k24.mul_add(t37, x.k27 * t36),
-                    ) + (x.c4 * t55 - x.s4 * t56),
+                k25.mul_add(t31, t10 * t18 - t11 * t17 + k24.mul_add(t37, k27 * t36))
+                    + (c4 * t55 - s4 * t56),
             );
-        let t62 = x
-            .k39
+        let t62 = k39
             .mul_add(
                 t58,
-                x
-                    .k54
-                    .mul_add(t31, t11 * t16 - t9 * t18 + x.k12.mul_add(t38, x.k24 * t36))
+                k54.mul_add(t31, t11 * t16 - t9 * t18 + k12.mul_add(t38, k24 * t36))
                     + tau4,
             );
         /// T3 (6.46)
-        let tau3 = t9 * t17 - t10 * t16 + x.k26.mul_add(t38, x.k12 * t37)
-            + x.k55.mul_add(t34, x.k22 * t35) - x.c4.mul_add(t56, x.s4 * t55)
-            + x.k40.mul_add(t57, x.k39 * t54);
-        let t63 = x.c3.mul_add(t60, x.s3 * t59);
+        let tau3 = t9 * t17 - t10 * t16 + k26.mul_add(t38, k12 * t37)
+            + k55.mul_add(t34, k22 * t35) - c4.mul_add(t56, s4 * t55)
+            + k40.mul_add(t57, k39 * t54);
+        let t63 = c3.mul_add(t60, s3 * t59);
         /// T2 (6.46)
-        let tau2 = x
-            .k2
+        let tau2 = k2
             .mul_add(
                 t63,
-                x.t105
+                u105
                     + (t1 * t7 - t2 * t6
-                        + x.k28.mul_add(qdd2, x.k11.mul_add(t30, x.k29 * t29))) + tau3,
+                        + k28.mul_add(qdd2, k11.mul_add(t30, k29 * t29))) + tau3,
             );
         /// T1 (6.46)
-        let tau1 = x
-            .k31
+        let tau1 = k31
             .mul_add(
                 qdd1,
-                x
-                    .c2
+                c2
                     .mul_add(
-                        qd2 * t6 - t1 * t8 + x.k11.mul_add(qdd2, x.k9 * t29)
-                            + x.c3.mul_add(t62, x.s3 * t61)
-                            + x
-                                .k21
+                        qd2 * t6 - t1 * t8 + k11.mul_add(qdd2, k9 * t29)
+                            + c3.mul_add(t62, s3 * t61)
+                            + k21
                                 .mul_add(
-                                    x.k17.mul_add(t58, x.k25.mul_add(t42, x.k22 * t41)),
-                                    x.k3 * (x.c3 * t59 - x.s3 * t60),
+                                    k17.mul_add(t58, k25.mul_add(t42, k22 * t41)),
+                                    k3 * (c3 * t59 - s3 * t60),
                                 ),
-                        x.s2
-                            * x
-                                .k44
+                        s2
+                            * k44
                                 .mul_add(
                                     t63,
                                     t2 * t8 - qd2 * t7
-                                        + x.k29.mul_add(qdd2, x.k9.mul_add(t30, x.k30 * t29))
-                                        + (x.c3 * t61 - x.s3 * t62),
+                                        + k29.mul_add(qdd2, k9.mul_add(t30, k30 * t29))
+                                        + (c3 * t61 - s3 * t62),
                                 ),
                     ),
             );
@@ -1309,78 +1427,107 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> T {
-        let x = configuration(p_, q_);
+        let Configuration {
+            k1,
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            k7,
+            k9,
+            k11,
+            k12,
+            k15,
+            k18,
+            k20,
+            k21,
+            k22,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k29,
+            k30,
+            k31,
+            k41,
+            k44,
+            k54,
+            k55,
+            k58,
+            ..
+        } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = x.s2 * qd1;
-        let t2 = x.c2 * qd1;
-        let t3 = x.s3 * t2;
-        let t4 = x.c3.mul_add(t1, t3);
-        let t5 = x.c3 * t2;
-        let t6 = t5 - x.s3 * t1;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
+        let t3 = s3 * t2;
+        let t4 = c3.mul_add(t1, t3);
+        let t5 = c3 * t2;
+        let t6 = t5 - s3 * t1;
         let t7 = qd2 + qd3;
-        let t8 = x.c4 * t4 - x.s4 * t7;
+        let t8 = c4 * t4 - s4 * t7;
         let t9 = qd4 + t6;
-        let t10 = x.s5.mul_add(t9, x.c5 * t8);
-        let t11 = qd5 - (-(x.c4 * t7) - x.s4 * t4);
-        let t12 = qd6 + (x.c5 * t9 - x.s5 * t8);
-        let t13 = x.k44.mul_add(t1, x.k2 * qd2);
-        let t14 = x.s3.mul_add(t13, x.k3 * t5);
-        let t15 = x.k44.mul_add(t3, x.c3 * t13);
-        let t16 = x.k21.mul_add(t7, t14);
-        let t17 = x.k21.mul_add(t2, x.k5.mul_add(t6, x.k2 * t4));
-        x.k1
-            * x
-                .k7
+        let t10 = s5.mul_add(t9, c5 * t8);
+        let t11 = qd5 - (-(c4 * t7) - s4 * t4);
+        let t12 = qd6 + (c5 * t9 - s5 * t8);
+        let t13 = k44.mul_add(t1, k2 * qd2);
+        let t14 = s3.mul_add(t13, k3 * t5);
+        let t15 = k44.mul_add(t3, c3 * t13);
+        let t16 = k21.mul_add(t7, t14);
+        let t17 = k21.mul_add(t2, k5.mul_add(t6, k2 * t4));
+        k1
+            * k7
                 .mul_add(
                     t12 * t12,
-                    x
-                        .k58
+                    k58
                         .mul_add(
                             t10
                                 .mul_add(
-                                    -(x.c4 * t17) - x.s4 * t16,
+                                    -(c4 * t17) - s4 * t16,
                                     t11
-                                        * x
-                                            .s5
-                                            .mul_add(
-                                                x.k4.mul_add(t7, t15),
-                                                x.c5 * (x.c4 * t16 - x.s4 * t17),
-                                            ),
+                                        * s5
+                                            .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
                                 ),
-                            x
-                                .k41
+                            k41
                                 .mul_add(
-                                    x
-                                        .k21
+                                    k21
                                         .mul_add(
-                                            t2 * x.k54.mul_add(t6, x.k25 * t4),
-                                            x.k22.mul_add(t7 * t15, x.k55 * (t7 * t14)),
+                                            t2 * k54.mul_add(t6, k25 * t4),
+                                            k22.mul_add(t7 * t15, k55 * (t7 * t14)),
                                         ),
-                                    x
-                                        .k31
+                                    k31
                                         .mul_add(
                                             qd1 * qd1,
                                             qd2
                                                 .mul_add(
-                                                    x.k28.mul_add(qd2, x.k11.mul_add(t2, x.k29 * t1)),
+                                                    k28.mul_add(qd2, k11.mul_add(t2, k29 * t1)),
                                                     t2
                                                         .mul_add(
-                                                            x.k11.mul_add(qd2, x.k9 * t1),
-                                                            t1 * x.k29.mul_add(qd2, x.k9.mul_add(t2, x.k30 * t1)),
+                                                            k11.mul_add(qd2, k9 * t1),
+                                                            t1 * k29.mul_add(qd2, k9.mul_add(t2, k30 * t1)),
                                                         ),
                                                 ),
                                         ),
                                 )
                                 + t7
                                     .mul_add(
-                                        x.k26.mul_add(t7, x.k12 * t6),
+                                        k26.mul_add(t7, k12 * t6),
                                         t6
                                             .mul_add(
-                                                x.k12.mul_add(t7, x.k24 * t4),
-                                                t4 * x.k24.mul_add(t6, x.k27 * t4),
+                                                k12.mul_add(t7, k24 * t4),
+                                                t4 * k24.mul_add(t6, k27 * t4),
                                             ),
-                                    ) + x.k20.mul_add(t9 * t9, x.k6 * (t8 * t8)),
-                        ) + x.k18.mul_add(t11 * t11, x.k15 * (t10 * t10)),
+                                    ) + k20.mul_add(t9 * t9, k6 * (t8 * t8)),
+                        ) + k18.mul_add(t11 * t11, k15 * (t10 * t10)),
                 )
     }
     #[inline(always)]
@@ -1388,8 +1535,8 @@ mod __dynamics {
         p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> T {
-        let x = configuration(p_, q_);
-        x.p
+        let Configuration { p, .. } = configuration(p_, q_);
+        p
     }
 }
 impl Puma560 {

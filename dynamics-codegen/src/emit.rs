@@ -2,19 +2,21 @@
 //!
 //! Everything that depends on the parameters and `q` alone (constants, struct fields, the
 //! sines and cosines, the kinematics, `M`, `g`, the `Γ_ijk`) is written once, in a shared
-//! *configuration* function returning a struct; each method calls it and adds only its terms in
-//! `q̇` and `q̈`. The configuration function is `#[inline(always)]`, so each method compiles to
-//! just the operations it needs, as if written alone, while the source holds each expression
-//! once.
+//! *configuration* function returning a struct; each method calls it, binds the fields it reads
+//! under their names (`let Configuration { s2, c2, k9, .. } = configuration(p_, q_);`), and adds
+//! only its terms in `q̇` and `q̈`. The configuration function is `#[inline(always)]`, so each
+//! method compiles to just the operations it needs, as if written alone, while the source holds
+//! each expression once.
 //!
 //! Within a function, only the nodes the outputs need are emitted, in the arena's order
 //! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
-//! (`let p_m2: T = param(self.m2);`) and the nodes that depend on them alone; then each needed
+//! (`let p_m2: T = p_[3];`) and the nodes that depend on them alone; then each needed
 //! joint's sine and cosine, computed once, four joints side by side
 //! (`let ([s1, s2, s3, s4], [c1, c2, c3, c4]) = T::sin_cos_4([q_[0], q_[1], q_[2], q_[3]]);`);
 //! then the rest.
-//! A node used once is written inline in its user; a node used more often gets a `let tN`,
-//! numbered in order of appearance; each output element gets a name saying what it is
+//! A node used once is written inline in its user; a node used more often gets a `let tN`
+//! (`uN` in the configuration, whose names the methods bind too), numbered in order of
+//! appearance; each output element gets a name saying what it is
 //! (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃). `a + (−b)` is written `a − b`, `x·y + z` is
 //! `x.mul_add(y, z)` (the runtime's `Real::mul_add`: one fused instruction where the target
 //! has FMA), and parentheses appear only where precedence or the order of evaluation needs
@@ -162,20 +164,21 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
     }
     let configuration = (!boundary.is_empty()).then(|| {
         let mut e = Emitter::new(eq, Some(ctx));
+        e.temporary_prefix = "u";
         e.configuration(&boundary, &field_names)
     });
-    let x = local("x");
     let bodies = outputs
         .iter()
         .map(|o| {
             let mut e = Emitter::new(eq, Some(ctx));
             if let Some(c) = &configuration {
                 for (&id, field) in boundary.iter().zip(&c.fields) {
-                    e.names[id.index()] = Some(quote!(#x.#field));
+                    let local = local(&field.to_string());
+                    e.names[id.index()] = Some(quote!(#local));
                     e.stop[id.index()] = true;
                 }
             }
-            e.function(&o.shape, o.prefix, &x)
+            e.function(&o.shape, o.prefix)
         })
         .collect();
     Emission {
@@ -283,6 +286,8 @@ struct Emitter<'a> {
     /// Nodes computed elsewhere (the configuration's fields): marking stops there.
     stop: Vec<bool>,
     temporaries: usize,
+    /// `t` in a method, `u` in the configuration, whose fields a method binds as locals too.
+    temporary_prefix: &'static str,
 }
 
 impl<'a> Emitter<'a> {
@@ -297,6 +302,7 @@ impl<'a> Emitter<'a> {
             names: vec![None; n],
             stop: vec![false; n],
             temporaries: 0,
+            temporary_prefix: "t",
         }
     }
 
@@ -494,7 +500,7 @@ impl<'a> Emitter<'a> {
 
     fn temporary(&mut self) -> proc_macro2::Ident {
         self.temporaries += 1;
-        local(&format!("t{}", self.temporaries))
+        local(&format!("{}{}", self.temporary_prefix, self.temporaries))
     }
 
     /// The names of the output elements, by node; an element equal to an earlier one (M's
@@ -596,9 +602,9 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// A function's body computing `shape`: the configuration read as `x` where used, then
+    /// A function's body computing `shape`: the configuration's fields it reads, then
     /// the terms in `q̇` and `q̈`, then the result.
-    fn function(mut self, shape: &Shape, output: &str, x: &proc_macro2::Ident) -> Body {
+    fn function(mut self, shape: &Shape, output: &str) -> Body {
         let outputs = shape.outputs();
         self.mark(&outputs);
         let mut output_names = self.output_names(shape, output);
@@ -607,14 +613,18 @@ impl<'a> Emitter<'a> {
             output_names.clear();
         }
         let mut statements = Vec::new();
-        let reads_configuration = self
+        // The configuration's fields this function reads, bound under their names.
+        let read: Vec<TokenStream> = self
             .graph
             .nodes()
-            .any(|(id, _)| self.stop[id.index()] && self.needed[id.index()]);
-        if reads_configuration {
+            .filter(|(id, _)| self.stop[id.index()] && self.needed[id.index()])
+            .filter_map(|(id, _)| self.names[id.index()].clone())
+            .collect();
+        if !read.is_empty() {
             let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
+            let ty = proc_macro2::Ident::new(CONFIGURATION_STRUCT, Span::call_site());
             let (p, q) = (local(PARAMETERS), local("q_"));
-            statements.push(quote!(let #x = #f(#p, #q);));
+            statements.push(quote!(let #ty { #(#read,)* .. } = #f(#p, #q);));
         }
         statements.extend(self.joint_variables());
         for (id, _) in self.graph.nodes() {
