@@ -161,7 +161,7 @@ fn emit(path: &str, robot: &Robot) -> String {
         .collect();
     let fields = idents.iter().map(|i| quote!(self.#i)).collect();
     let n = eq.dof;
-    let generated = generate(&eq, &krate, fields);
+    let generated = generate(&eq, fields);
     let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
     let items = generated.items(&krate, &ty, &syn::Generics::default(), &|name| {
         Some(format!(" {}", method_doc(name)))
@@ -218,7 +218,7 @@ fn stats(robot: &Robot) -> String {
             quote!(self.#ident)
         })
         .collect();
-    let generated = generate(&eq, &krate, fields);
+    let generated = generate(&eq, fields);
     let elapsed = start.elapsed();
     let mut out = String::new();
     let _ = writeln!(

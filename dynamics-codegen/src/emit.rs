@@ -82,10 +82,8 @@ impl Shape<'_> {
     }
 }
 
-/// Where emitted code finds the runtime and the robot's fields.
-pub struct Context<'a> {
-    /// Path of the runtime crate, e.g. `::dynamics_runtime`.
-    pub krate: &'a TokenStream,
+/// Where emitted code finds the robot's parameters.
+pub struct Context {
     /// How to read parameter `k` as a `T` (`p_[k]`).
     pub fields: Vec<TokenStream>,
 }
@@ -277,7 +275,7 @@ enum Place {
 struct Emitter<'a> {
     graph: &'a Graph,
     eq: &'a Equations,
-    ctx: Option<&'a Context<'a>>,
+    ctx: Option<&'a Context>,
     uses: Vec<u32>,
     needed: Vec<bool>,
     /// What each bound node (and each constant) is read as: a local, or a field of the
@@ -291,7 +289,7 @@ struct Emitter<'a> {
 }
 
 impl<'a> Emitter<'a> {
-    fn new(eq: &'a Equations, ctx: Option<&'a Context<'a>>) -> Emitter<'a> {
+    fn new(eq: &'a Equations, ctx: Option<&'a Context>) -> Emitter<'a> {
         let n = eq.graph.len();
         Emitter {
             graph: &eq.graph,

@@ -68,7 +68,7 @@ pub struct Generated {
 /// The generated code of the [`Equations`]; `fields` reads struct field `k` of the robot
 /// (`self.name`), in the order of [`Equations::fields`].
 #[must_use]
-pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -> Generated {
+pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     use emit::{Output, Shape};
     let p = emit::local(emit::PARAMETERS);
     let parameters = (0..eq.fields.len())
@@ -77,10 +77,7 @@ pub fn generate(eq: &Equations, krate: &TokenStream, fields: Vec<TokenStream>) -
             quote!(#p[#k])
         })
         .collect();
-    let ctx = emit::Context {
-        krate,
-        fields: parameters,
-    };
+    let ctx = emit::Context { fields: parameters };
     // Each method with the name of its output elements (`m1_2`, `tau3`).
     let table: [(&'static str, &str, Shape); 8] = [
         ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
@@ -229,7 +226,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             quote!(self.#ident)
         })
         .collect();
-    let generated = generate(&eq, &krate, fields);
+    let generated = generate(&eq, fields);
     let items = generated.items(&krate, &input.ident, &input.generics, &|_| None);
     let equations = equations(input, &eq, &parsed.robot);
     let track = parsed.tracked_file.as_ref().map(|path| {

@@ -150,7 +150,7 @@ fn output_elements_are_named_and_commented() {
 fn symmetric_last_link_needs_no_turn() {
     let trig = |robot: &model::Robot| {
         let eq = derive::derive(robot);
-        let generated = dynamics_codegen::generate(&eq, &quote::quote!(::r), Vec::new());
+        let generated = dynamics_codegen::generate(&eq, Vec::new());
         generated
             .methods
             .iter()
