@@ -25,6 +25,22 @@ pub enum Sym {
     Qdd(u16),
 }
 
+impl Sym {
+    /// The variable of a graph input; `fields` names the parameters (`None` for an unknown
+    /// one).
+    #[must_use]
+    pub fn of(v: Var, fields: &[String]) -> Option<Sym> {
+        Some(match v {
+            Var::Q(i) => Sym::Q(i),
+            Var::SinQ(i) => Sym::Sin(i),
+            Var::CosQ(i) => Sym::Cos(i),
+            Var::Qd(i) => Sym::Qd(i),
+            Var::Qdd(i) => Sym::Qdd(i),
+            Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
+        })
+    }
+}
+
 type Monomial = Vec<(Sym, u32)>;
 
 /// A polynomial with exact coefficients.
@@ -149,14 +165,7 @@ impl Poly {
             let get = |x: NodeId| memo[x.index()].clone();
             let p = match node {
                 Node::Const(c) => Poly::constant(c),
-                Node::Var(v) => Poly::sym(match v {
-                    Var::Q(i) => Sym::Q(i),
-                    Var::SinQ(i) => Sym::Sin(i),
-                    Var::CosQ(i) => Sym::Cos(i),
-                    Var::Qd(i) => Sym::Qd(i),
-                    Var::Qdd(i) => Sym::Qdd(i),
-                    Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
-                }),
+                Node::Var(v) => Poly::sym(Sym::of(v, fields)?),
                 Node::Add(a, b) => get(a)?.add(&get(b)?),
                 Node::Mul(a, b) => get(a)?.mul(&get(b)?),
                 Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),

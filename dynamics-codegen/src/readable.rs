@@ -18,7 +18,7 @@ use crate::algo::JointKind;
 use crate::derive::Equations;
 use crate::model::Robot;
 use crate::poly::{Poly, Sym};
-use crate::symbolic::{Node, NodeId, Number, Var};
+use crate::symbolic::{Node, NodeId, Number};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -123,14 +123,7 @@ impl<'a> Expander<'a> {
         let get = |x: NodeId| self.memo[x.index()].clone().flatten();
         let p = match node {
             Node::Const(c) => Poly::constant(c),
-            Node::Var(v) => Poly::sym(match v {
-                Var::Q(i) => Sym::Q(i),
-                Var::SinQ(i) => Sym::Sin(i),
-                Var::CosQ(i) => Sym::Cos(i),
-                Var::Qd(i) => Sym::Qd(i),
-                Var::Qdd(i) => Sym::Qdd(i),
-                Var::Param(k) => Sym::Param(self.eq.fields.get(usize::from(k))?.clone()),
-            }),
+            Node::Var(v) => Poly::sym(Sym::of(v, &self.eq.fields)?),
             Node::Add(a, b) => {
                 let (a, b) = (get(a)?, get(b)?);
                 self.charge((a.len() + b.len()) as u64)?;
