@@ -35,7 +35,6 @@ mod __dynamics {
         c5: T,
         k6: T,
         k7: T,
-        k8: T,
         k9: T,
         k10: T,
         k11: T,
@@ -56,24 +55,25 @@ mod __dynamics {
         k26: T,
         k27: T,
         k28: T,
-        k29: T,
         k30: T,
         k31: T,
         k32: T,
-        u1: T,
-        k34: T,
+        k33: T,
         k35: T,
+        u1: T,
+        k37: T,
+        k38: T,
         m4_4: T,
         u5: T,
-        k38: T,
-        k39: T,
-        k40: T,
+        k41: T,
+        k42: T,
+        k43: T,
         m3_4: T,
         m3_3: T,
         u31: T,
-        k41: T,
-        m2_3: T,
         k44: T,
+        m2_3: T,
+        k47: T,
         m2_2: T,
         u53: T,
         u54: T,
@@ -98,56 +98,55 @@ mod __dynamics {
         m2_6: T,
         u102: T,
         m1_6: T,
-        u103: T,
-        u104: T,
-        u105: T,
-        g5: T,
-        g4: T,
-        g3: T,
         g2: T,
-        g1: T,
-        k53: T,
-        k54: T,
+        g3: T,
+        g4: T,
+        g5: T,
+        u106: T,
+        u107: T,
+        u108: T,
         k55: T,
         k56: T,
         k57: T,
         k58: T,
+        k59: T,
+        k60: T,
         p: T,
-        k62: T,
+        k64: T,
+        u110: T,
+        u111: T,
+        u112: T,
         u115: T,
-        u116: T,
         u117: T,
+        u118: T,
         u120: T,
         u122: T,
-        u123: T,
-        u125: T,
-        u127: T,
+        u129: T,
+        u130: T,
+        u132: T,
         u134: T,
         u135: T,
-        u137: T,
+        u138: T,
         u139: T,
-        u140: T,
-        u143: T,
-        u144: T,
+        u142: T,
+        u146: T,
         u147: T,
-        u151: T,
-        u152: T,
-        k65: T,
-        u161: T,
-        u164: T,
+        k67: T,
+        u156: T,
+        u159: T,
+        u166: T,
+        u167: T,
+        u169: T,
         u171: T,
         u172: T,
         u174: T,
+        u175: T,
         u176: T,
         u177: T,
-        u179: T,
-        u180: T,
-        u181: T,
-        u182: T,
-        u183: T,
-        k67: T,
-        k68: T,
+        u178: T,
         k69: T,
+        k70: T,
+        k71: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -161,68 +160,70 @@ mod __dynamics {
         let k5: T = T::from_f64(-0.0203);
         let k6: T = T::from_f64(0.0003);
         let k7: T = T::from_f64(0.00004);
-        let k8: T = T::from_f64(0.0070992);
-        let k9: T = T::from_f64(-0.0070992);
-        let k10: T = T::from_f64(0.023751);
-        let k11: T = T::from_f64(-0.023751);
-        let k12: T = T::from_f64(-0.0047376);
-        let k13: T = T::from_f64(-0.0004);
-        let k14: T = T::from_f64(0.00288);
-        let k15: T = T::from_f64(0.00024216);
-        let k16: T = T::from_f64(-0.00024216);
-        let k17: T = T::from_f64(-0.00288);
-        let k18: T = T::from_f64(0.00064216);
-        let k19: T = T::from_f64(-0.0003);
-        let k20: T = T::from_f64(0.0016);
-        let k21: T = T::from_f64(-0.4318);
-        let k22: T = T::from_f64(0.025375);
-        let k23: T = T::from_f64(0.010956925);
-        let k24: T = T::from_f64(-0.011273199);
-        let k25: T = T::from_f64(0.89133);
-        let k26: T = T::from_f64(0.3586500705);
-        let k27: T = T::from_f64(0.3251198455);
-        let k28: T = T::from_f64(1.748114002);
-        let k29: T = T::from_f64(-0.6903913435);
-        let k30: T = T::from_f64(-1.601861202);
-        let k31: T = T::from_f64(3.153542285625);
-        let k32: T = T::from_f64(-0.00004);
-        let k33: T = T::from_f64(0.00028216);
-        let k34: T = T::from_f64(0.00020216);
-        let k35: T = T::from_f64(-0.00064216);
-        let k36: T = T::from_f64(-0.00020216);
-        let k37: T = T::from_f64(-0.000058464);
-        let k38: T = T::from_f64(0.001243584);
-        let k39: T = T::from_f64(0.000058464);
-        let k40: T = T::from_f64(-0.001243584);
-        let k41: T = T::from_f64(2.0);
-        let k42: T = T::from_f64(-2.0);
-        let k43: T = T::from_f64(0.000432144);
-        let k44: T = T::from_f64(-0.15005);
-        let k45: T = T::from_f64(-0.000432144);
-        let k46: T = T::from_f64(9.81);
-        let k47: T = T::from_f64(37.2347379);
-        let k48: T = T::from_f64(-1.024164);
-        let k49: T = T::from_f64(0.24892875);
-        let k50: T = T::from_f64(-8.7439473);
+        let k8: T = T::from_f64(0.1044);
+        let k9: T = T::from_f64(0.0070992);
+        let k10: T = T::from_f64(-0.0070992);
+        let k11: T = T::from_f64(0.023751);
+        let k12: T = T::from_f64(-0.023751);
+        let k13: T = T::from_f64(-0.0047376);
+        let k14: T = T::from_f64(-0.0004);
+        let k15: T = T::from_f64(0.00288);
+        let k16: T = T::from_f64(0.00024216);
+        let k17: T = T::from_f64(-0.00024216);
+        let k18: T = T::from_f64(-0.00288);
+        let k19: T = T::from_f64(0.00064216);
+        let k20: T = T::from_f64(-0.0003);
+        let k21: T = T::from_f64(0.0016);
+        let k22: T = T::from_f64(-0.4318);
+        let k23: T = T::from_f64(0.025375);
+        let k24: T = T::from_f64(0.010956925);
+        let k25: T = T::from_f64(-0.011273199);
+        let k26: T = T::from_f64(0.89133);
+        let k27: T = T::from_f64(0.3586500705);
+        let k28: T = T::from_f64(0.3251198455);
+        let k29: T = T::from_f64(3.79559);
+        let k30: T = T::from_f64(1.748114002);
+        let k31: T = T::from_f64(-0.6903913435);
+        let k32: T = T::from_f64(-1.601861202);
+        let k33: T = T::from_f64(3.153542285625);
+        let k34: T = T::from_f64(-9.81);
+        let k35: T = T::from_f64(-0.00004);
+        let k36: T = T::from_f64(0.00028216);
+        let k37: T = T::from_f64(0.00020216);
+        let k38: T = T::from_f64(-0.00064216);
+        let k39: T = T::from_f64(-0.00020216);
+        let k40: T = T::from_f64(-0.000058464);
+        let k41: T = T::from_f64(0.001243584);
+        let k42: T = T::from_f64(0.000058464);
+        let k43: T = T::from_f64(-0.001243584);
+        let k44: T = T::from_f64(2.0);
+        let k45: T = T::from_f64(-2.0);
+        let k46: T = T::from_f64(0.000432144);
+        let k47: T = T::from_f64(-0.15005);
+        let k48: T = T::from_f64(-0.000432144);
+        let k49: T = T::from_f64(9.81);
+        let k50: T = T::from_f64(-0.0282528);
         let k51: T = T::from_f64(0.0282528);
-        let k52: T = T::from_f64(-0.0282528);
-        let k53: T = T::from_f64(0.8636);
-        let k54: T = T::from_f64(-0.025375);
-        let k55: T = T::from_f64(-0.89133);
-        let k56: T = T::from_f64(0.384876294);
-        let k57: T = T::from_f64(-0.0013);
-        let k58: T = T::from_f64(-0.00576);
-        let k59: T = T::from_f64(-154.550796435);
-        let k60: T = T::from_f64(-37.2347379);
-        let k61: T = T::from_f64(-0.24892875);
-        let k62: T = T::from_f64(-0.8636);
-        let k63: T = T::from_f64(0.000116928);
-        let k64: T = T::from_f64(-0.000116928);
-        let k65: T = T::from_f64(0.00040432);
-        let k66: T = T::from_f64(-0.00040432);
-        let k67: T = T::from_f64(-0.00002);
-        let k68: T = T::from_f64(0.00002);
-        let k69: T = T::from_f64(-0.5);
+        let k52: T = T::from_f64(37.2347379);
+        let k53: T = T::from_f64(-1.024164);
+        let k54: T = T::from_f64(-8.7439473);
+        let k55: T = T::from_f64(0.8636);
+        let k56: T = T::from_f64(-0.025375);
+        let k57: T = T::from_f64(-0.89133);
+        let k58: T = T::from_f64(0.384876294);
+        let k59: T = T::from_f64(-0.0013);
+        let k60: T = T::from_f64(-0.00576);
+        let k61: T = T::from_f64(-154.550796435);
+        let k62: T = T::from_f64(-37.2347379);
+        let k63: T = T::from_f64(-0.24892875);
+        let k64: T = T::from_f64(-0.8636);
+        let k65: T = T::from_f64(0.000116928);
+        let k66: T = T::from_f64(-0.000116928);
+        let k67: T = T::from_f64(0.00040432);
+        let k68: T = T::from_f64(-0.00040432);
+        let k69: T = T::from_f64(-0.00002);
+        let k70: T = T::from_f64(0.00002);
+        let k71: T = T::from_f64(-0.5);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -230,38 +231,38 @@ mod __dynamics {
             q_[4],
         ]);
         let u1 = s5 * c5;
-        let u2 = k7.mul_add(s5 * s5, k15 * (c5 * c5));
-        let u3 = k33 - u2;
+        let u2 = k7.mul_add(s5 * s5, k16 * (c5 * c5));
+        let u3 = k36 - u2;
         let u4 = k6 + u2;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k20 + u3;
+        let m4_4 = k21 + u3;
         let u5 = c4 * s5;
         let u6 = s4 * s5;
         let u7 = c4 * c4;
         let u8 = s4 * c4;
-        let u9 = k18.mul_add(s4 * s4, u4 * u7);
-        let u10 = k18 + u4 - u9;
-        let u11 = u8 * (k35 + u4);
+        let u9 = k19.mul_add(s4 * s4, u4 * u7);
+        let u10 = k19 + u4 - u9;
+        let u11 = u8 * (k38 + u4);
         let u12 = c4 * u1;
-        let u13 = k34 * u12;
-        let u14 = k37 * u5;
-        let u15 = k38 * c5;
+        let u13 = k37 * u12;
+        let u14 = k40 * u5;
+        let u15 = k41 * c5;
         let u16 = m4_4 + u14;
         let u17 = u14 + u16;
         let u18 = u14 + u15;
-        let u19 = k40 * u5;
-        let u20 = k39 * u6;
-        let u21 = k37 * u6 - u11;
-        let u22 = k38 * u6;
+        let u19 = k43 * u5;
+        let u20 = k42 * u6;
+        let u21 = k40 * u6 - u11;
+        let u22 = k41 * u6;
         /// D34 = D43 (6.43)
-        let m3_4 = k40.mul_add(u6, k36 * (s4 * u1));
-        let u23 = k17.mul_add(u5, k22);
-        let u24 = k14.mul_add(c5, k25);
-        let u25 = k27 + (u15 + (u9 + u15));
+        let m3_4 = k43.mul_add(u6, k39 * (s4 * u1));
+        let u23 = k18.mul_add(u5, k23);
+        let u24 = k15.mul_add(c5, k26);
+        let u25 = k28 + (u15 + (u9 + u15));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k26 + (u18 + (u10 + u18));
-        let u26 = k24 + (u13 - k39.mul_add(c5, u19));
-        let u27 = k12 + m3_4;
+        let m3_3 = k27 + (u18 + (u10 + u18));
+        let u26 = k25 + (u13 - k42.mul_add(c5, u19));
+        let u27 = k13 + m3_4;
         let u28 = c3 * u23 - s3 * u24;
         let u29 = s3 * u23;
         let u30 = c3 * u24;
@@ -269,25 +270,25 @@ mod __dynamics {
         let u32 = c3 * c3;
         let u33 = s3 * s3;
         let u34 = s3 * c3;
-        let u35 = u17.mul_add(u33, k42.mul_add(u26 * u34, u25 * u32));
+        let u35 = u17.mul_add(u33, k45.mul_add(u26 * u34, u25 * u32));
         let u36 = u17 + u25 - u35;
         let u37 = u32 - u33;
         let u38 = u26.mul_add(u37, u34 * (u25 - u17));
         let u39 = c3 * u21 - s3 * u27;
         let u40 = c3.mul_add(u27, s3 * u21);
         let u41 = k2 * u28;
-        let u42 = k43 * u6;
+        let u42 = k46 * u6;
         let u43 = u41 + u42;
         let u44 = u43 + (u36 + u43);
         /// D23 = D32 (6.43)
         let m2_3 = m3_3 + u41;
-        let u45 = k21 * u31;
-        let u46 = k30 + (u42 + (u35 + u42));
+        let u45 = k22 * u31;
+        let u46 = k32 + (u42 + (u35 + u42));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k28 + (u41 + m2_3);
-        let u47 = k9 + (u38 + u45);
-        let u48 = k29 + (u39 - k3.mul_add(u28, u22));
-        let u49 = k11 + k44.mul_add(u31, u40);
+        let m2_2 = k30 + (u41 + m2_3);
+        let u47 = k10 + (u38 + u45);
+        let u48 = k31 + (u39 - k3.mul_add(u28, u22));
+        let u49 = k12 + k47.mul_add(u31, u40);
         let u50 = c2 * c2;
         let u51 = s2 * s2;
         let u52 = s2 * c2;
@@ -296,26 +297,26 @@ mod __dynamics {
         /// D12 = D21 (6.43)
         let m1_2 = c2.mul_add(u49, s2 * u48);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k31
-            + (u44 + u46 - u44.mul_add(u51, k42.mul_add(u47 * u52, u46 * u50)));
+        let m1_1 = k33
+            + (u44 + u46 - u44.mul_add(u51, k45.mul_add(u47 * u52, u46 * u50)));
         let u55 = -u30 - u29;
-        let u56 = k44.mul_add(u28, u39);
+        let u56 = k47.mul_add(u28, u39);
         let u57 = k3.mul_add(u55, u40);
         let u58 = c2 * u56;
         let u59 = u58 - s2 * u57;
         /// D13 = D31 (6.43)
         let m1_3 = c2.mul_add(u57, s2 * u56);
-        let u60 = k38 * u5;
+        let u60 = k41 * u5;
         let u61 = u13 + u60;
         let u62 = c3 * u6;
         let u63 = s3 * u6;
         let u64 = c3.mul_add(u16, s3 * u61);
-        let u65 = k45 * u63;
-        let u66 = k43 * u62;
+        let u65 = k48 * u63;
+        let u66 = k46 * u62;
         let u67 = c3 * u61 - s3 * u16 + u65;
         let u68 = u64 + (u19 + u66);
         /// D24 = D42 (6.43)
-        let m2_4 = k38.mul_add(u63, m3_4);
+        let m2_4 = k41.mul_add(u63, m3_4);
         let u69 = c2.mul_add(u63, s2 * u62);
         let u70 = c2 * u67;
         let u71 = u70 - s2 * u68;
@@ -323,12 +324,12 @@ mod __dynamics {
         let m1_4 = c2.mul_add(u68, s2 * u67);
         let u72 = c4 * c5;
         let u73 = s4 * c5;
-        let u74 = k18 * c4;
-        let u75 = k38 * u73;
-        let u76 = k37 * s5;
-        let u77 = k40 * u72;
-        let u78 = k38 * u72;
-        let u79 = k18.mul_add(s4, u75);
+        let u74 = k19 * c4;
+        let u75 = k41 * u73;
+        let u76 = k40 * s5;
+        let u77 = k43 * u72;
+        let u78 = k41 * u72;
+        let u79 = k19.mul_add(s4, u75);
         /// D35 = D53 (6.43)
         let m3_5 = u74 + (u76 + u78);
         let u80 = c3 * u72;
@@ -338,14 +339,14 @@ mod __dynamics {
         let u84 = c3.mul_add(s5, u83);
         let u85 = s3 * u73;
         let u86 = c3 * u73;
-        let u87 = k37.mul_add(u86, s3 * u79);
-        let u88 = k43 * u84;
-        let u89 = k45 * u82;
-        let u90 = k40 * u73;
-        let u91 = k39.mul_add(u85, c3 * u79) + u88;
+        let u87 = k40.mul_add(u86, s3 * u79);
+        let u88 = k46 * u84;
+        let u89 = k48 * u82;
+        let u90 = k43 * u73;
+        let u91 = k42.mul_add(u85, c3 * u79) + u88;
         let u92 = u87 + (u89 + u90);
         /// D25 = D52 (6.43)
-        let m2_5 = k40.mul_add(u84, m3_5);
+        let m2_5 = k43.mul_add(u84, m3_5);
         let u93 = c2.mul_add(u84, s2 * u82);
         let u94 = c2 * u91;
         let u95 = u94 - s2 * u92;
@@ -363,145 +364,137 @@ mod __dynamics {
         let u101 = s2 * u99;
         let u102 = u100 - u101;
         /// D16 = D61 (6.43)
-        let m1_6 = k32 * c2.mul_add(u99, s2 * u97);
-        let u103 = k46 * s2;
-        let u104 = k46 * c2;
-        let u105 = k48.mul_add(s2, k47 * c2);
-        let u106 = c2.mul_add(s3, s2 * c3);
-        let u107 = c2 * c3 - s2 * s3;
-        let u108 = c4 * u106;
-        let u109 = s4 * u106;
-        let u110 = s5.mul_add(u107, c5 * u108);
-        /// D5 (6.45), gravity and spring
-        let g5 = k52 * u110;
-        let u111 = c5 * u109;
-        let u112 = s5 * u109;
-        /// D4 (6.45), gravity and spring
-        let g4 = k51 * u112;
-        let u113 = c4 * u111 - s4 * u110;
-        /// D3 (6.45), gravity and spring
-        let g3 = k52.mul_add(c4.mul_add(u110, s4 * u111), k50.mul_add(u106, k49 * u107));
+        let m1_6 = k35 * c2.mul_add(u99, s2 * u97);
         /// D2 (6.45), gravity and spring
-        let g2 = u105 + g3;
-        /// D1 (6.45), gravity and spring
-        let g1 = k51
-            * c2.mul_add(c3.mul_add(u112, s3 * u113), s2 * (c3 * u113 - s3 * u112));
+        let g2 = k34 * (s2 * (k8 + u31) - c2 * (k29 + u28));
+        let u103 = c2.mul_add(s3, s2 * c3);
+        let u104 = c2 * c3 - s2 * s3;
+        /// D3 (6.45), gravity and spring
+        let g3 = k34 * (u24 * u103 - u23 * u104);
+        let u105 = c4 * u103;
+        /// D4 (6.45), gravity and spring
+        let g4 = k51 * (s5 * (s4 * u103));
+        /// D5 (6.45), gravity and spring
+        let g5 = k50 * s5.mul_add(u104, c5 * u105);
+        let u106 = k49 * s2;
+        let u107 = k49 * c2;
+        let u108 = k53.mul_add(s2, k52 * c2);
         /// potential energy
-        let p = -k52
+        let p = -k50
             .mul_add(
-                c5 * u107 - s5 * u108,
-                k59 + k48.mul_add(c2, k60 * s2) + k50.mul_add(u107, k61 * u106),
+                c5 * u104 - s5 * u105,
+                k61 + k53.mul_add(c2, k62 * s2) + k54.mul_add(u104, k63 * u103),
             );
-        let u114 = u45 + k41.mul_add(u38, u45);
-        let u115 = k42.mul_add(u38, u114)
+        let u109 = u45 + k44.mul_add(u38, u45);
+        let u110 = k45.mul_add(u38, u109)
             - u51
                 .mul_add(
-                    u114,
-                    k42 * u52.mul_add(k21.mul_add(u28, u35 - u36), u38 * u50),
+                    u109,
+                    k45 * u52.mul_add(k22.mul_add(u28, u35 - u36), u38 * u50),
                 );
-        let u116 = s2.mul_add(k3 * u31 - u40, u58);
-        let u117 = s2.mul_add(k44 * u55 - u40, u58);
-        let u118 = k45 * u62;
-        let u119 = k38 * u62;
-        let u120 = s2.mul_add(u118 - u64, u70);
-        let u121 = k40 * u82;
-        let u122 = s2.mul_add(k43 * u82 - u87, u94);
-        let u123 = u101 - u100;
-        let u124 = k42 * u11;
-        let u125 = u20 + k41.mul_add(u11, u20);
-        let u126 = u14 - (u9 - u10);
-        let u127 = k36.mul_add(u12, u19);
-        let u128 = k63.mul_add(u6 * u33, k42 * m3_4.mul_add(u34, u11 * u32));
-        let u129 = c3 * u126 - s3 * u127;
-        let u130 = k43 * u5;
-        let u131 = u130 + (u128 + u130);
-        let u132 = u119 + u130;
-        let u133 = u132 + (k63.mul_add(u6, u124) - u128 + u132);
-        let u134 = u119 + u125;
-        let u135 = u119 + u134;
+        let u111 = s2.mul_add(k3 * u31 - u40, u58);
+        let u112 = s2.mul_add(k47 * u55 - u40, u58);
+        let u113 = k48 * u62;
+        let u114 = k41 * u62;
+        let u115 = s2.mul_add(u113 - u64, u70);
+        let u116 = k43 * u82;
+        let u117 = s2.mul_add(k46 * u82 - u87, u94);
+        let u118 = u101 - u100;
+        let u119 = k45 * u11;
+        let u120 = u20 + k44.mul_add(u11, u20);
+        let u121 = u14 - (u9 - u10);
+        let u122 = k39.mul_add(u12, u19);
+        let u123 = k65.mul_add(u6 * u33, k45 * m3_4.mul_add(u34, u11 * u32));
+        let u124 = c3 * u121 - s3 * u122;
+        let u125 = k46 * u5;
+        let u126 = u125 + (u123 + u125);
+        let u127 = u114 + u125;
+        let u128 = u127 + (k65.mul_add(u6, u119) - u123 + u127);
+        let u129 = u114 + u120;
+        let u130 = u114 + u129;
+        let u131 = k43 * u63;
+        let u132 = u126 + u128
+            - u51
+                .mul_add(
+                    u128,
+                    k45
+                        .mul_add(
+                            u52
+                                * (m3_4.mul_add(u37, u34 * k66.mul_add(u6, u119)) + u131),
+                            u50 * u126,
+                        ),
+                );
+        let u133 = c2 * (u65 + c3.mul_add(u122, s3 * u121));
+        let u134 = s2.mul_add(u124 - (u60 + u66), u133);
+        let u135 = s2.mul_add(u113 + u124, u133);
         let u136 = k40 * u63;
-        let u137 = u131 + u133
+        let u137 = k42 * u62;
+        let u138 = k41.mul_add(u98, u122);
+        let u139 = c2
+            .mul_add(
+                s3.mul_add(m3_4, u137) + k46.mul_add(u96, u22),
+                s2 * k48.mul_add(u98, c3.mul_add(m3_4, u136)),
+            );
+        let u140 = k40 * u72;
+        let u141 = u74 + u78;
+        let u142 = k38.mul_add(s4, u90);
+        let u143 = k48 * u85;
+        let u144 = k46.mul_add(u86, u77);
+        let u145 = k41 * u85;
+        let u146 = u142 + u145;
+        let u147 = c2
+            .mul_add(
+                k40.mul_add(u80, s3 * u141) + u144,
+                s2 * (k42.mul_add(u83, c3 * u141) + u143),
+            );
+        let u148 = u2 - u3;
+        let u149 = u1 * u7;
+        let u150 = c4 * u148;
+        let u151 = k43 * s5;
+        let u152 = u151 + k68.mul_add(u149, u151);
+        let u153 = k67.mul_add(u1, u140);
+        let u154 = u140 + u153;
+        let u155 = u140 + u151;
+        let u156 = u155 + k68.mul_add(u1 - u149, u155);
+        let u157 = u150 - (u76 + u77);
+        let u158 = k67.mul_add(u1 * u8, k40 * u73);
+        let u159 = u90 - s4 * u148;
+        let u160 = u33.mul_add(u154, k45.mul_add(u34 * u157, u32 * u152));
+        let u161 = c3 * u158 - s3 * u159;
+        let u162 = k46 * u73;
+        let u163 = u162 + (u160 + u162);
+        let u164 = u116 + u162;
+        let u165 = u164 + (u152 + u154 - u160 + u164);
+        let u166 = u116 + (u116 + u156);
+        let u167 = u163 + u165
             - u51
                 .mul_add(
-                    u133,
-                    k42
+                    u165,
+                    k45
                         .mul_add(
                             u52
-                                * (m3_4.mul_add(u37, u34 * k64.mul_add(u6, u124)) + u136),
-                            u50 * u131,
+                                * k41.mul_add(u84, u37.mul_add(u157, u34 * (u152 - u154))),
+                            u50 * u163,
                         ),
                 );
-        let u138 = c2 * (u65 + c3.mul_add(u127, s3 * u126));
-        let u139 = s2.mul_add(u129 - (u60 + u66), u138);
-        let u140 = s2.mul_add(u118 + u129, u138);
-        let u141 = k37 * u63;
-        let u142 = k39 * u62;
-        let u143 = k38.mul_add(u98, u127);
-        let u144 = c2
+        let u168 = c2 * (u88 + c3.mul_add(u159, s3 * u158));
+        let u169 = s2.mul_add(u161 - (u75 + u89), u168);
+        let u170 = u81 - u80;
+        let u171 = k41.mul_add(u170, u156);
+        let u172 = s2.mul_add(k48.mul_add(u170, u161), u168);
+        let u173 = u78 + u150;
+        let u174 = u145 + u159;
+        let u175 = c2
             .mul_add(
-                s3.mul_add(m3_4, u142) + k43.mul_add(u96, u22),
-                s2 * k45.mul_add(u98, c3.mul_add(m3_4, u141)),
+                u144 + c3.mul_add(u153, s3 * u173),
+                s2 * (u143 + (c3 * u173 - s3 * u153)),
             );
-        let u145 = k37 * u72;
-        let u146 = u74 + u78;
-        let u147 = k35.mul_add(s4, u90);
-        let u148 = k45 * u85;
-        let u149 = k43.mul_add(u86, u77);
-        let u150 = k38 * u85;
-        let u151 = u147 + u150;
-        let u152 = c2
+        let u176 = k40.mul_add(c5, u19);
+        let u177 = k41.mul_add(u99, u176);
+        let u178 = c2
             .mul_add(
-                k37.mul_add(u80, s3 * u146) + u149,
-                s2 * (k39.mul_add(u83, c3 * u146) + u148),
-            );
-        let u153 = u2 - u3;
-        let u154 = u1 * u7;
-        let u155 = c4 * u153;
-        let u156 = k40 * s5;
-        let u157 = u156 + k66.mul_add(u154, u156);
-        let u158 = k65.mul_add(u1, u145);
-        let u159 = u145 + u158;
-        let u160 = u145 + u156;
-        let u161 = u160 + k66.mul_add(u1 - u154, u160);
-        let u162 = u155 - (u76 + u77);
-        let u163 = k65.mul_add(u1 * u8, k37 * u73);
-        let u164 = u90 - s4 * u153;
-        let u165 = u33.mul_add(u159, k42.mul_add(u34 * u162, u32 * u157));
-        let u166 = c3 * u163 - s3 * u164;
-        let u167 = k43 * u73;
-        let u168 = u167 + (u165 + u167);
-        let u169 = u121 + u167;
-        let u170 = u169 + (u157 + u159 - u165 + u169);
-        let u171 = u121 + (u121 + u161);
-        let u172 = u168 + u170
-            - u51
-                .mul_add(
-                    u170,
-                    k42
-                        .mul_add(
-                            u52
-                                * k38.mul_add(u84, u37.mul_add(u162, u34 * (u157 - u159))),
-                            u50 * u168,
-                        ),
-                );
-        let u173 = c2 * (u88 + c3.mul_add(u164, s3 * u163));
-        let u174 = s2.mul_add(u166 - (u75 + u89), u173);
-        let u175 = u81 - u80;
-        let u176 = k38.mul_add(u175, u161);
-        let u177 = s2.mul_add(k45.mul_add(u175, u166), u173);
-        let u178 = u78 + u155;
-        let u179 = u150 + u164;
-        let u180 = c2
-            .mul_add(
-                u149 + c3.mul_add(u158, s3 * u178),
-                s2 * (u148 + (c3 * u178 - s3 * u158)),
-            );
-        let u181 = k37.mul_add(c5, u19);
-        let u182 = k38.mul_add(u99, u181);
-        let u183 = c2
-            .mul_add(
-                u136 + u142 + k43.mul_add(u97, u22),
-                s2 * k45.mul_add(u99, k40.mul_add(u62, u141)),
+                u131 + u137 + k46.mul_add(u97, u22),
+                s2 * k48.mul_add(u99, k43.mul_add(u62, u136)),
             );
         Configuration {
             k1,
@@ -519,7 +512,6 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k8,
             k9,
             k10,
             k11,
@@ -540,24 +532,25 @@ mod __dynamics {
             k26,
             k27,
             k28,
-            k29,
             k30,
             k31,
             k32,
-            u1,
-            k34,
+            k33,
             k35,
+            u1,
+            k37,
+            k38,
             m4_4,
             u5,
-            k38,
-            k39,
-            k40,
+            k41,
+            k42,
+            k43,
             m3_4,
             m3_3,
             u31,
-            k41,
-            m2_3,
             k44,
+            m2_3,
+            k47,
             m2_2,
             u53,
             u54,
@@ -582,56 +575,55 @@ mod __dynamics {
             m2_6,
             u102,
             m1_6,
-            u103,
-            u104,
-            u105,
-            g5,
-            g4,
-            g3,
             g2,
-            g1,
-            k53,
-            k54,
+            g3,
+            g4,
+            g5,
+            u106,
+            u107,
+            u108,
             k55,
             k56,
             k57,
             k58,
+            k59,
+            k60,
             p,
-            k62,
+            k64,
+            u110,
+            u111,
+            u112,
             u115,
-            u116,
             u117,
+            u118,
             u120,
             u122,
-            u123,
-            u125,
-            u127,
+            u129,
+            u130,
+            u132,
             u134,
             u135,
-            u137,
+            u138,
             u139,
-            u140,
-            u143,
-            u144,
+            u142,
+            u146,
             u147,
-            u151,
-            u152,
-            k65,
-            u161,
-            u164,
+            k67,
+            u156,
+            u159,
+            u166,
+            u167,
+            u169,
             u171,
             u172,
             u174,
+            u175,
             u176,
             u177,
-            u179,
-            u180,
-            u181,
-            u182,
-            u183,
-            k67,
-            k68,
+            u178,
             k69,
+            k70,
+            k71,
         }
     }
     #[inline(always)]
@@ -641,7 +633,7 @@ mod __dynamics {
     ) -> [[T; 6usize]; 6usize] {
         let Configuration {
             k7,
-            k18,
+            k19,
             m4_4,
             m3_4,
             m3_3,
@@ -665,7 +657,7 @@ mod __dynamics {
             [m1_2, m2_2, m2_3, m2_4, m2_5, m2_6],
             [m1_3, m2_3, m3_3, m3_4, m3_5, m2_6],
             [m1_4, m2_4, m3_4, m4_4, T::ZERO, m4_6],
-            [m1_5, m2_5, m3_5, T::ZERO, k18, T::ZERO],
+            [m1_5, m2_5, m3_5, T::ZERO, k19, T::ZERO],
             [m1_6, m2_6, m2_6, m4_6, T::ZERO, k7],
         ]
     }
@@ -680,14 +672,14 @@ mod __dynamics {
             k2,
             s5,
             k7,
-            k32,
+            k35,
             u1,
-            k34,
+            k37,
             u5,
-            k38,
-            k40,
-            u31,
             k41,
+            k43,
+            u31,
+            k44,
             u53,
             u54,
             u55,
@@ -700,183 +692,183 @@ mod __dynamics {
             u93,
             u95,
             u102,
-            k62,
+            k64,
+            u110,
+            u111,
+            u112,
             u115,
-            u116,
             u117,
+            u118,
             u120,
             u122,
-            u123,
-            u125,
-            u127,
+            u129,
+            u130,
+            u132,
             u134,
             u135,
-            u137,
+            u138,
             u139,
-            u140,
-            u143,
-            u144,
+            u142,
+            u146,
             u147,
-            u151,
-            u152,
-            k65,
-            u161,
-            u164,
+            k67,
+            u156,
+            u159,
+            u166,
+            u167,
+            u169,
             u171,
             u172,
             u174,
+            u175,
             u176,
             u177,
-            u179,
-            u180,
-            u181,
-            u182,
-            u183,
-            k67,
-            k68,
+            u178,
             k69,
+            k70,
+            k71,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
         let t1 = qd2 * u54;
-        let t2 = qd4 * u144;
+        let t2 = qd4 * u139;
         let t3 = k2 * (qd3 * u55);
-        let t4 = qd4 * u143;
+        let t4 = qd4 * u138;
         let t5 = qd1 * u102;
-        let t6 = qd4 * u127;
-        let t7 = qd5 * u181;
+        let t6 = qd4 * u122;
+        let t7 = qd5 * u176;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = k34 * (qd5 * u1);
+        let cor4_4 = k37 * (qd5 * u1);
         let t8 = s5 * qd5;
         let t9 = s5.mul_add(qd4, qd1 * u93 - qd2 * u73 - qd3 * u73);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = k68 * t9;
+        let cor5_6 = k70 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k67 * t9;
+        let cor6_5 = k69 * t9;
         let t10 = k7 * (qd6 * u5);
         let t11 = k7 * (qd6 * u73);
         let t12 = qd5.mul_add(u73, qd4 * u5);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k68 * (t5 + t12);
+        let cor2_6 = k70 * (t5 + t12);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k68 * (t12 - t5);
-        let t13 = qd4.mul_add(u147, t7);
-        let t14 = qd3 * u117;
-        let t15 = qd5 * u183;
+        let cor6_2 = k70 * (t12 - t5);
+        let t13 = qd4.mul_add(u142, t7);
+        let t14 = qd3 * u112;
+        let t15 = qd5 * u178;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k67 * qd5.mul_add(u93, qd2 * u102 - qd3 * u123 - qd4 * u69);
-        let t16 = qd5 * u182;
+        let cor1_6 = k69 * qd5.mul_add(u93, qd2 * u102 - qd3 * u118 - qd4 * u69);
+        let t16 = qd5 * u177;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd4.mul_add(u125, qd5 * u161);
-        let t17 = qd1 * u123;
+        let cor3_3 = k1 * qd4.mul_add(u120, qd5 * u156);
+        let t17 = qd1 * u118;
         let t18 = qd3.mul_add(u5, qd1.mul_add(u69, qd2 * u5));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k67 * (t8 + t18);
+        let cor4_6 = k69 * (t8 + t18);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * qd5.mul_add(u172, qd4.mul_add(u137, k41.mul_add(qd2 * u53, qd3 * u115)));
-        let t19 = qd5.mul_add(u174, qd4.mul_add(u139, qd3.mul_add(u116, t1)));
-        let t20 = k32
+            * qd5.mul_add(u167, qd4.mul_add(u132, k44.mul_add(qd2 * u53, qd3 * u110)));
+        let t19 = qd5.mul_add(u169, qd4.mul_add(u134, qd3.mul_add(u111, t1)));
+        let t20 = k35
             .mul_add(
                 qd6 * u102,
                 qd5
                     .mul_add(
                         u95,
-                        qd4.mul_add(u71, qd3.mul_add(u59, k41.mul_add(qd1 * u53, t1))),
+                        qd4.mul_add(u71, qd3.mul_add(u59, k44.mul_add(qd1 * u53, t1))),
                     ),
             );
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t19 + t20);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t19 - t20);
-        let t21 = qd5.mul_add(u177, qd4.mul_add(u140, qd2.mul_add(u59, t14)));
+        let t21 = qd5.mul_add(u172, qd4.mul_add(u135, qd2.mul_add(u59, t14)));
         let t22 = k7
             .mul_add(
-                qd6 * u123,
-                qd5.mul_add(u122, qd4.mul_add(u120, t14 + qd2.mul_add(u116, qd1 * u115))),
+                qd6 * u118,
+                qd5.mul_add(u117, qd4.mul_add(u115, t14 + qd2.mul_add(u111, qd1 * u110))),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t21 - t22);
-        let t23 = qd5.mul_add(u180, t2 + qd3.mul_add(u120, qd2 * u71));
+        let t23 = qd5.mul_add(u175, t2 + qd3.mul_add(u115, qd2 * u71));
         let t24 = k7
             .mul_add(
                 qd6 * u69,
-                qd5.mul_add(u152, t2 + qd3.mul_add(u140, qd2.mul_add(u139, qd1 * u137))),
+                qd5.mul_add(u147, t2 + qd3.mul_add(u135, qd2.mul_add(u134, qd1 * u132))),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t23 - t24);
-        let t25 = t15 + qd4.mul_add(u152, qd3.mul_add(u122, qd2 * u95));
-        let t26 = k32
+        let t25 = t15 + qd4.mul_add(u147, qd3.mul_add(u117, qd2 * u95));
+        let t26 = k35
             .mul_add(
                 qd6 * u93,
-                t15 + qd4.mul_add(u180, qd3.mul_add(u177, qd2.mul_add(u174, qd1 * u172))),
+                t15 + qd4.mul_add(u175, qd3.mul_add(u172, qd2.mul_add(u169, qd1 * u167))),
             );
         /// C15 = sum of D15k qd_k (6.44)
         let cor1_5 = k1 * (t25 + t26);
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u171, k62.mul_add(qd3 * u31, qd4 * u135));
-        let t27 = qd5.mul_add(u176, qd4.mul_add(u134, t3));
-        let t28 = k40
+        let cor2_2 = k1 * qd5.mul_add(u166, k64.mul_add(qd3 * u31, qd4 * u130));
+        let t27 = qd5.mul_add(u171, qd4.mul_add(u129, t3));
+        let t28 = k43
             .mul_add(
                 qd5 * u82,
-                k38.mul_add(qd4 * u62, t3 + k62.mul_add(qd2 * u31, qd1 * u116)),
+                k41.mul_add(qd4 * u62, t3 + k64.mul_add(qd2 * u31, qd1 * u111)),
             ) - qd1 * u59;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t27 - t28);
-        let t29 = qd5.mul_add(u179, k38.mul_add(qd3 * u62, t4));
+        let t29 = qd5.mul_add(u174, k41.mul_add(qd3 * u62, t4));
         let t30 = t10
-            + qd5.mul_add(u151, t4 + qd3.mul_add(u134, qd1.mul_add(u139, qd2 * u135)))
+            + qd5.mul_add(u146, t4 + qd3.mul_add(u129, qd1.mul_add(u134, qd2 * u130)))
             - qd1 * u71;
         /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t29 - t30);
-        let t31 = qd4.mul_add(u151, k40 * (qd3 * u82)) + t16;
+        let t31 = qd4.mul_add(u146, k43 * (qd3 * u82)) + t16;
         let t32 = t11
-            + (t16 + qd4.mul_add(u179, qd3.mul_add(u176, qd1.mul_add(u174, qd2 * u171))))
+            + (t16 + qd4.mul_add(u174, qd3.mul_add(u171, qd1.mul_add(u169, qd2 * u166))))
             - qd1 * u95;
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t31 + t32);
         /// C52 = sum of D52k qd_k (6.44)
         let cor5_2 = k1 * (t31 - t32);
-        let t33 = qd5.mul_add(u164, t6);
+        let t33 = qd5.mul_add(u159, t6);
         let t34 = t10
-            + qd5.mul_add(u147, t6 + qd3.mul_add(u125, qd2.mul_add(u134, qd1 * u140)))
-            - qd1.mul_add(u120, k38 * (qd2 * u62));
+            + qd5.mul_add(u142, t6 + qd3.mul_add(u120, qd2.mul_add(u129, qd1 * u135)))
+            - qd1.mul_add(u115, k41 * (qd2 * u62));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
         let t35 = t11
-            + (t7 + qd4.mul_add(u164, qd3.mul_add(u161, qd2.mul_add(u176, qd1 * u177))))
-            - qd1.mul_add(u122, k40 * (qd2 * u82));
+            + (t7 + qd4.mul_add(u159, qd3.mul_add(u156, qd2.mul_add(u171, qd1 * u172))))
+            - qd1.mul_add(u117, k43 * (qd2 * u82));
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = k1 * (t13 + t35);
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = k1 * (t13 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k68 * (t12 - t17);
+        let cor3_6 = k70 * (t12 - t17);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k68 * (t12 + t17);
-        let t36 = k32
+        let cor6_3 = k70 * (t12 + t17);
+        let t36 = k35
             .mul_add(
                 s5 * qd6,
-                k65.mul_add(qd4 * u1, qd3.mul_add(u164, qd2.mul_add(u179, qd1 * u180))),
-            ) - qd3.mul_add(u147, qd2.mul_add(u151, qd1 * u152));
+                k67.mul_add(qd4 * u1, qd3.mul_add(u159, qd2.mul_add(u174, qd1 * u175))),
+            ) - qd3.mul_add(u142, qd2.mul_add(u146, qd1 * u147));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k69 * t36;
+        let cor5_4 = k71 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k67 * (t8 - t18);
+        let cor6_4 = k69 * (t8 - t18);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -907,7 +899,6 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k8,
             k9,
             k10,
             k11,
@@ -928,18 +919,19 @@ mod __dynamics {
             k26,
             k27,
             k28,
-            k29,
             k30,
+            k31,
             k32,
             k35,
-            k39,
-            k40,
-            k44,
-            k53,
-            k54,
+            k38,
+            k42,
+            k43,
+            k47,
             k55,
             k56,
             k57,
+            k58,
+            k59,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -950,10 +942,10 @@ mod __dynamics {
         let t5 = t2 * t2;
         let t6 = t1 * t2;
         let t7 = qd2.mul_add(qd2, t5);
-        let t8 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
-        let t9 = k11.mul_add(qd2, k9 * t1);
-        let t10 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
-        let t11 = k44.mul_add(t1.mul_add(t1, t5), k53 * t4);
+        let t8 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
+        let t9 = k12.mul_add(qd2, k10 * t1);
+        let t10 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
+        let t11 = k47.mul_add(t1.mul_add(t1, t5), k55 * t4);
         let t12 = s3.mul_add(t2, c3 * t1);
         let t13 = c3 * t2 - s3 * t1;
         let t14 = c3 * t7 - s3 * t6;
@@ -967,10 +959,10 @@ mod __dynamics {
         let t22 = t12.mul_add(t12, t19);
         let t23 = t12 * t16 - t18;
         let t24 = t13.mul_add(t16, t17);
-        let t25 = k24.mul_add(t13, k27 * t12);
-        let t26 = k12.mul_add(t16, k24 * t12);
-        let t27 = k26.mul_add(t16, k12 * t13);
-        let t28 = k21.mul_add(t14, k2.mul_add(t20, k5 * t21));
+        let t25 = k25.mul_add(t13, k28 * t12);
+        let t26 = k13.mul_add(t16, k25 * t12);
+        let t27 = k27.mul_add(t16, k13 * t13);
+        let t28 = k22.mul_add(t14, k2.mul_add(t20, k5 * t21));
         let t29 = t11 + k2.mul_add(t24, k4 * t23);
         let t30 = c4 * t12 - s4 * t16;
         let t31 = -(c4 * t16) - s4 * t12;
@@ -989,68 +981,68 @@ mod __dynamics {
         let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
         let cqd6 = k7 * (c5 * t18 - s5 * t33 - qd5 * t35);
-        let t45 = k32
+        let t45 = k35
             .mul_add(
                 t37 * t44,
-                k17.mul_add(-(c4 * t29) - s4 * t28, k18.mul_add(t40, k15 * t38)),
+                k18.mul_add(-(c4 * t29) - s4 * t28, k19.mul_add(t40, k16 * t38)),
             );
-        let t46 = k13.mul_add(t35 * t37, cqd6);
+        let t46 = k14.mul_add(t35 * t37, cqd6);
         /// centripetal and Coriolis torque 5
         let cqd5 = k7
             .mul_add(
                 t35 * t44,
-                k17
+                k18
                     .mul_add(
                         s5
                             .mul_add(
-                                k2.mul_add(t15, k21.mul_add(t22, k4 * t20)),
+                                k2.mul_add(t15, k22.mul_add(t22, k4 * t20)),
                                 c5 * (c4 * t28 - s4 * t29),
                             ),
-                        k16.mul_add(t39, k35 * t34),
+                        k17.mul_add(t39, k38 * t34),
                     ),
             );
         let t47 = s5.mul_add(t42, c5 * t41);
         let t48 = s5 * t41 - c5 * t42;
-        let t49 = k20.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
-        let t50 = k57 * (t30 * t32) - cqd5;
+        let t49 = k21.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
+        let t50 = k59 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = k19.mul_add(t30 * t31, k20 * t18) + c5.mul_add(t46, s5 * t45);
+        let cqd4 = k20.mul_add(t30 * t31, k21 * t18) + c5.mul_add(t46, s5 * t45);
         let t51 = s4.mul_add(t43, c4 * t47);
         let t52 = s4 * t47 - c4 * t43;
-        let t53 = k14.mul_add(t51, k25.mul_add(t20, k54 * t21));
-        let t54 = k14.mul_add(t48, k55.mul_add(t22, k22 * t20));
-        let t55 = k40
+        let t53 = k15.mul_add(t51, k26.mul_add(t20, k56 * t21));
+        let t54 = k15.mul_add(t48, k57.mul_add(t22, k23 * t20));
+        let t55 = k43
             .mul_add(
                 t52,
-                k25.mul_add(t11, k24.mul_add(t18, k27 * t17) + (t13 * t27 - t16 * t26))
+                k26.mul_add(t11, k25.mul_add(t18, k28 * t17) + (t13 * t27 - t16 * t26))
                     + (c4 * t49 - s4 * t50),
             );
-        let t56 = k39
+        let t56 = k42
             .mul_add(
                 t52,
-                k54.mul_add(t11, k24.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
+                k56.mul_add(t11, k25.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
             );
         /// centripetal and Coriolis torque 3
-        let cqd3 = k12.mul_add(t18, t12 * t26 - t13 * t25) + k56.mul_add(t14, k23 * t15)
-            - c4.mul_add(t50, s4 * t49) + k40.mul_add(t51, k39 * t48);
+        let cqd3 = k13.mul_add(t18, t12 * t26 - t13 * t25) + k58.mul_add(t14, k24 * t15)
+            - c4.mul_add(t50, s4 * t49) + k43.mul_add(t51, k42 * t48);
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
         let cqd2 = k2
-            .mul_add(t57, k10.mul_add(t4, k29 * t3) + (t1 * t9 - t2 * t8) + cqd3);
+            .mul_add(t57, k11.mul_add(t4, k31 * t3) + (t1 * t9 - t2 * t8) + cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = c2
             .mul_add(
-                k9.mul_add(t3, qd2 * t8 - t1 * t10) + c3.mul_add(t56, s3 * t55)
-                    + k21
+                k10.mul_add(t3, qd2 * t8 - t1 * t10) + c3.mul_add(t56, s3 * t55)
+                    + k22
                         .mul_add(
-                            k17.mul_add(t52, k25.mul_add(t24, k22 * t23)),
+                            k18.mul_add(t52, k26.mul_add(t24, k23 * t23)),
                             k3 * (c3 * t53 - s3 * t54),
                         ),
                 s2
-                    * k44
+                    * k47
                         .mul_add(
                             t57,
-                            k8.mul_add(t4, k30 * t3) + (t2 * t10 - qd2 * t9)
+                            k9.mul_add(t4, k32 * t3) + (t2 * t10 - qd2 * t9)
                                 + (c3 * t55 - s3 * t56),
                         ),
             );
@@ -1061,8 +1053,8 @@ mod __dynamics {
         p_: &[T; 0usize],
         q_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let Configuration { g5, g4, g3, g2, g1, .. } = configuration(p_, q_);
-        [g1, g2, g3, g4, g5, T::ZERO]
+        let Configuration { g2, g3, g4, g5, .. } = configuration(p_, q_);
+        [T::ZERO, g2, g3, g4, g5, T::ZERO]
     }
     #[inline(always)]
     pub(super) fn bias_torques<T: ::dynamics_runtime::Real>(
@@ -1085,7 +1077,6 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k8,
             k9,
             k10,
             k11,
@@ -1100,25 +1091,26 @@ mod __dynamics {
             k20,
             k21,
             k22,
-            k24,
+            k23,
             k25,
             k26,
             k27,
             k28,
-            k29,
             k30,
+            k31,
             k32,
             k35,
-            k39,
-            k40,
-            k44,
-            u103,
-            u104,
-            u105,
-            k53,
-            k54,
+            k38,
+            k42,
+            k43,
+            k47,
+            u106,
+            u107,
+            u108,
             k55,
+            k56,
             k57,
+            k59,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1127,10 +1119,10 @@ mod __dynamics {
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
-        let t7 = k11.mul_add(qd2, k9 * t1);
-        let t8 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
-        let t9 = k44.mul_add(t1.mul_add(t1, t5), k53 * t4);
+        let t6 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
+        let t7 = k12.mul_add(qd2, k10 * t1);
+        let t8 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
+        let t9 = k47.mul_add(t1.mul_add(t1, t5), k55 * t4);
         let t10 = s3.mul_add(t2, c3 * t1);
         let t11 = c3 * t2 - s3 * t1;
         let t12 = qd2 + qd3;
@@ -1142,9 +1134,9 @@ mod __dynamics {
         let t18 = t10.mul_add(t10, t15);
         let t19 = t10 * t12 - t14;
         let t20 = t11.mul_add(t12, t13);
-        let t21 = k24.mul_add(t11, k27 * t10);
-        let t22 = k12.mul_add(t12, k24 * t10);
-        let t23 = k26.mul_add(t12, k12 * t11);
+        let t21 = k25.mul_add(t11, k28 * t10);
+        let t22 = k13.mul_add(t12, k25 * t10);
+        let t23 = k27.mul_add(t12, k13 * t11);
         let t24 = t9 + k2.mul_add(t20, k4 * t19);
         let t25 = c4 * t10 - s4 * t12;
         let t26 = -(c4 * t12) - s4 * t10;
@@ -1163,70 +1155,71 @@ mod __dynamics {
         let t39 = qd6 + t31;
         /// centripetal, Coriolis and gravity torque 6
         let h6 = k7 * (c5 * t14 - s5 * t28 - qd5 * t30);
-        let t40 = k13.mul_add(t30 * t32, h6);
+        let t40 = k14.mul_add(t30 * t32, h6);
         let t41 = s5.mul_add(t37, c5 * t36);
         let t42 = s5 * t36 - c5 * t37;
         let t43 = s4.mul_add(t38, c4 * t41);
         let t44 = s4 * t41 - c4 * t38;
-        let t45 = k14.mul_add(t43, k25.mul_add(t16, k54 * t17));
-        let t46 = k14.mul_add(t42, k55.mul_add(t18, k22 * t16));
+        let t45 = k15.mul_add(t43, k26.mul_add(t16, k56 * t17));
+        let t46 = k15.mul_add(t42, k57.mul_add(t18, k23 * t16));
         let t47 = c3.mul_add(t46, s3 * t45);
-        let t48 = k21.mul_add(qd2.mul_add(qd2, t5), u103);
-        let t49 = k2.mul_add(t1 * t2, u104);
+        let t48 = k22.mul_add(qd2.mul_add(qd2, t5), u106);
+        let t49 = k2.mul_add(t1 * t2, u107);
         let t50 = s3.mul_add(t49, c3 * t48);
         let t51 = c3 * t49 - s3 * t48;
         let t52 = k2.mul_add(t16, k5 * t17) + t50;
-        let t53 = k32
+        let t53 = k35
             .mul_add(
                 t32 * t39,
-                k17.mul_add(-(c4 * t24) - s4 * t52, k18.mul_add(t35, k15 * t33)),
+                k18.mul_add(-(c4 * t24) - s4 * t52, k19.mul_add(t35, k16 * t33)),
             );
         /// centripetal, Coriolis and gravity torque 5
         let h5 = k7
             .mul_add(
                 t30 * t39,
-                k17
+                k18
                     .mul_add(
                         s5
                             .mul_add(
-                                k21.mul_add(t18, k4 * t16) + t51,
+                                k22.mul_add(t18, k4 * t16) + t51,
                                 c5 * (c4 * t52 - s4 * t24),
                             ),
-                        k16.mul_add(t34, k35 * t29),
+                        k17.mul_add(t34, k38 * t29),
                     ),
             );
-        let t54 = k20.mul_add(t26 * t27, k6 * t28) + (c5 * t53 - s5 * t40);
-        let t55 = k57 * (t25 * t27) - h5;
+        let t54 = k21.mul_add(t26 * t27, k6 * t28) + (c5 * t53 - s5 * t40);
+        let t55 = k59 * (t25 * t27) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = k19.mul_add(t25 * t26, k20 * t14) + s5.mul_add(t53, c5 * t40);
-        let t56 = k40
+        let h4 = k20.mul_add(t25 * t26, k21 * t14) + s5.mul_add(t53, c5 * t40);
+        let t56 = k43
             .mul_add(
                 t44,
-                k25.mul_add(t9, k24.mul_add(t14, k27 * t13) + (t11 * t23 - t12 * t22))
+                k26.mul_add(t9, k25.mul_add(t14, k28 * t13) + (t11 * t23 - t12 * t22))
                     + (c4 * t54 - s4 * t55),
             );
-        let t57 = k39
-            .mul_add(t44, k54.mul_add(t9, k24.mul_add(t13, t12 * t21 - t10 * t23)) + h4);
+        let t57 = k42
+            .mul_add(t44, k56.mul_add(t9, k25.mul_add(t13, t12 * t21 - t10 * t23)) + h4);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k40.mul_add(t43, k39 * t42)
-            + (k12.mul_add(t14, t10 * t22 - t11 * t21) + k55.mul_add(t50, k22 * t51)
+        let h3 = k43.mul_add(t43, k42 * t42)
+            + (k13.mul_add(t14, t10 * t22 - t11 * t21) + k57.mul_add(t50, k23 * t51)
                 - c4.mul_add(t55, s4 * t54));
         /// centripetal, Coriolis and gravity torque 2
         let h2 = k2
-            .mul_add(t47, u105 + (k10.mul_add(t4, k29 * t3) + (t1 * t7 - t2 * t6)) + h3);
+            .mul_add(t47, u108 + (k11.mul_add(t4, k31 * t3) + (t1 * t7 - t2 * t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
-                k21
+                k22
                     .mul_add(
-                        k17.mul_add(t44, k25.mul_add(t20, k22 * t19)),
+                        k18.mul_add(t44, k26.mul_add(t20, k23 * t19)),
                         k3 * (c3 * t45 - s3 * t46),
-                    ) + (k9.mul_add(t3, qd2 * t6 - t1 * t8) + c3.mul_add(t57, s3 * t56)),
+                    )
+                    + (k10.mul_add(t3, qd2 * t6 - t1 * t8) + c3.mul_add(t57, s3 * t56)),
                 s2
-                    * k44
+                    * k47
                         .mul_add(
                             t47,
-                            k8.mul_add(t4, k30 * t3) + (t2 * t8 - qd2 * t7)
+                            k9.mul_add(t4, k32 * t3) + (t2 * t8 - qd2 * t7)
                                 + (c3 * t56 - s3 * t57),
                         ),
             );
@@ -1254,8 +1247,7 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k9,
-            k11,
+            k10,
             k12,
             k13,
             k14,
@@ -1267,24 +1259,25 @@ mod __dynamics {
             k20,
             k21,
             k22,
-            k24,
+            k23,
             k25,
             k26,
             k27,
             k28,
-            k29,
             k30,
             k31,
             k32,
-            k39,
-            k40,
-            k44,
-            u103,
-            u104,
-            u105,
-            k54,
-            k55,
+            k33,
+            k35,
+            k42,
+            k43,
+            k47,
+            u106,
+            u107,
+            u108,
+            k56,
             k57,
+            k59,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1294,9 +1287,9 @@ mod __dynamics {
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t2 * t2;
-        let t6 = k29.mul_add(qd2, k9.mul_add(t2, k30 * t1));
-        let t7 = k11.mul_add(qd2, k9 * t1);
-        let t8 = k28.mul_add(qd2, k11.mul_add(t2, k29 * t1));
+        let t6 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
+        let t7 = k12.mul_add(qd2, k10 * t1);
+        let t8 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
         let t9 = s3.mul_add(t2, c3 * t1);
         let t10 = c3 * t2 - s3 * t1;
         let t11 = qd2 + qd3;
@@ -1304,9 +1297,9 @@ mod __dynamics {
         let t13 = t9 * t10;
         let t14 = t10.mul_add(t10, t12);
         let t15 = t9.mul_add(t9, t12);
-        let t16 = k24.mul_add(t10, k27 * t9);
-        let t17 = k12.mul_add(t11, k24 * t9);
-        let t18 = k26.mul_add(t11, k12 * t10);
+        let t16 = k25.mul_add(t10, k28 * t9);
+        let t17 = k13.mul_add(t11, k25 * t9);
+        let t18 = k27.mul_add(t11, k13 * t10);
         let t19 = c4 * t9 - s4 * t11;
         let t20 = -(c4 * t11) - s4 * t9;
         let t21 = qd4 + t10;
@@ -1319,9 +1312,9 @@ mod __dynamics {
         let t28 = qd6 + t23;
         let t29 = s2.mul_add(qdd1, t3);
         let t30 = c2 * qdd1 - t4;
-        let t31 = k2.mul_add(t4 - t30, k44 * t1.mul_add(t1, t5));
-        let t32 = u103 + k3.mul_add(t4 + t30, k21 * qd2.mul_add(qd2, t5));
-        let t33 = u104 + k3.mul_add(t3 - t29, k2 * t1.mul_add(t2, qdd2));
+        let t31 = k2.mul_add(t4 - t30, k47 * t1.mul_add(t1, t5));
+        let t32 = u106 + k3.mul_add(t4 + t30, k22 * qd2.mul_add(qd2, t5));
+        let t33 = u107 + k3.mul_add(t3 - t29, k2 * t1.mul_add(t2, qdd2));
         let t34 = s3.mul_add(t33, c3 * t32);
         let t35 = c3 * t33 - s3 * t32;
         let t36 = qd3.mul_add(t10, s3.mul_add(t30, c3 * t29));
@@ -1341,80 +1334,80 @@ mod __dynamics {
         let t50 = t26 + t47;
         /// T6 (6.46)
         let tau6 = k7 * (qdd6 + (c5 * t46 - s5 * t45 - qd5 * t22));
-        let t51 = k32
+        let t51 = k35
             .mul_add(
                 t24 * t28,
-                k17.mul_add(-(c4 * t44) - s4 * t43, k15.mul_add(t47, k18 * t26)),
+                k18.mul_add(-(c4 * t44) - s4 * t43, k16.mul_add(t47, k19 * t26)),
             );
-        let t52 = k13.mul_add(t22 * t24, tau6);
+        let t52 = k14.mul_add(t22 * t24, tau6);
         /// T5 (6.46)
         let tau5 = k7
             .mul_add(
                 t22 * t28,
-                k17
+                k18
                     .mul_add(
                         s5
                             .mul_add(
-                                t35 + k4.mul_add(t40, k21 * t15),
+                                t35 + k4.mul_add(t40, k22 * t15),
                                 c5 * (c4 * t43 - s4 * t44),
                             ),
-                        k18.mul_add(t48, k16 * t25),
+                        k19.mul_add(t48, k17 * t25),
                     ),
             );
         let t53 = c5.mul_add(t49, s5 * t27);
         let t54 = s5 * t49 - c5 * t27;
-        let t55 = k6.mul_add(t45, k20 * (t20 * t21)) + (c5 * t51 - s5 * t52);
-        let t56 = k57 * (t19 * t21) - tau5;
+        let t55 = k6.mul_add(t45, k21 * (t20 * t21)) + (c5 * t51 - s5 * t52);
+        let t56 = k59 * (t19 * t21) - tau5;
         /// T4 (6.46)
-        let tau4 = k20.mul_add(t46, k19 * (t19 * t20)) + c5.mul_add(t52, s5 * t51);
+        let tau4 = k21.mul_add(t46, k20 * (t19 * t20)) + c5.mul_add(t52, s5 * t51);
         let t57 = s4.mul_add(t50, c4 * t53);
         let t58 = s4 * t53 - c4 * t50;
-        let t59 = k14.mul_add(t57, k25.mul_add(t39, k54 * t14));
-        let t60 = k14.mul_add(t54, k22.mul_add(t40, k55 * t15));
-        let t61 = k40
+        let t59 = k15.mul_add(t57, k26.mul_add(t39, k56 * t14));
+        let t60 = k15.mul_add(t54, k23.mul_add(t40, k57 * t15));
+        let t61 = k43
             .mul_add(
                 t58,
-                k25.mul_add(t31, t10 * t18 - t11 * t17 + k24.mul_add(t37, k27 * t36))
+                k26.mul_add(t31, t10 * t18 - t11 * t17 + k25.mul_add(t37, k28 * t36))
                     + (c4 * t55 - s4 * t56),
             );
-        let t62 = k39
+        let t62 = k42
             .mul_add(
                 t58,
-                k54.mul_add(t31, t11 * t16 - t9 * t18 + k12.mul_add(t38, k24 * t36))
+                k56.mul_add(t31, t11 * t16 - t9 * t18 + k13.mul_add(t38, k25 * t36))
                     + tau4,
             );
         /// T3 (6.46)
-        let tau3 = t9 * t17 - t10 * t16 + k26.mul_add(t38, k12 * t37)
-            + k55.mul_add(t34, k22 * t35) - c4.mul_add(t56, s4 * t55)
-            + k40.mul_add(t57, k39 * t54);
+        let tau3 = t9 * t17 - t10 * t16 + k27.mul_add(t38, k13 * t37)
+            + k57.mul_add(t34, k23 * t35) - c4.mul_add(t56, s4 * t55)
+            + k43.mul_add(t57, k42 * t54);
         let t63 = c3.mul_add(t60, s3 * t59);
         /// T2 (6.46)
         let tau2 = k2
             .mul_add(
                 t63,
-                u105
+                u108
                     + (t1 * t7 - t2 * t6
-                        + k28.mul_add(qdd2, k11.mul_add(t30, k29 * t29))) + tau3,
+                        + k30.mul_add(qdd2, k12.mul_add(t30, k31 * t29))) + tau3,
             );
         /// T1 (6.46)
-        let tau1 = k31
+        let tau1 = k33
             .mul_add(
                 qdd1,
                 c2
                     .mul_add(
-                        qd2 * t6 - t1 * t8 + k11.mul_add(qdd2, k9 * t29)
+                        qd2 * t6 - t1 * t8 + k12.mul_add(qdd2, k10 * t29)
                             + c3.mul_add(t62, s3 * t61)
-                            + k21
+                            + k22
                                 .mul_add(
-                                    k17.mul_add(t58, k25.mul_add(t42, k22 * t41)),
+                                    k18.mul_add(t58, k26.mul_add(t42, k23 * t41)),
                                     k3 * (c3 * t59 - s3 * t60),
                                 ),
                         s2
-                            * k44
+                            * k47
                                 .mul_add(
                                     t63,
                                     t2 * t8 - qd2 * t7
-                                        + k29.mul_add(qdd2, k9.mul_add(t30, k30 * t29))
+                                        + k31.mul_add(qdd2, k10.mul_add(t30, k32 * t29))
                                         + (c3 * t61 - s3 * t62),
                                 ),
                     ),
@@ -1443,27 +1436,27 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k9,
-            k11,
+            k10,
             k12,
-            k15,
-            k18,
-            k20,
+            k13,
+            k16,
+            k19,
             k21,
             k22,
-            k24,
+            k23,
             k25,
             k26,
             k27,
             k28,
-            k29,
             k30,
             k31,
-            k41,
+            k32,
+            k33,
             k44,
-            k54,
-            k55,
-            k58,
+            k47,
+            k56,
+            k57,
+            k60,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1479,16 +1472,16 @@ mod __dynamics {
         let t10 = s5.mul_add(t9, c5 * t8);
         let t11 = qd5 - (-(c4 * t7) - s4 * t4);
         let t12 = qd6 + (c5 * t9 - s5 * t8);
-        let t13 = k44.mul_add(t1, k2 * qd2);
+        let t13 = k47.mul_add(t1, k2 * qd2);
         let t14 = s3.mul_add(t13, k3 * t5);
-        let t15 = k44.mul_add(t3, c3 * t13);
-        let t16 = k21.mul_add(t7, t14);
-        let t17 = k21.mul_add(t2, k5.mul_add(t6, k2 * t4));
+        let t15 = k47.mul_add(t3, c3 * t13);
+        let t16 = k22.mul_add(t7, t14);
+        let t17 = k22.mul_add(t2, k5.mul_add(t6, k2 * t4));
         k1
             * k7
                 .mul_add(
                     t12 * t12,
-                    k58
+                    k60
                         .mul_add(
                             t10
                                 .mul_add(
@@ -1497,37 +1490,37 @@ mod __dynamics {
                                         * s5
                                             .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
                                 ),
-                            k41
+                            k44
                                 .mul_add(
-                                    k21
+                                    k22
                                         .mul_add(
-                                            t2 * k54.mul_add(t6, k25 * t4),
-                                            k22.mul_add(t7 * t15, k55 * (t7 * t14)),
+                                            t2 * k56.mul_add(t6, k26 * t4),
+                                            k23.mul_add(t7 * t15, k57 * (t7 * t14)),
                                         ),
-                                    k31
+                                    k33
                                         .mul_add(
                                             qd1 * qd1,
                                             qd2
                                                 .mul_add(
-                                                    k28.mul_add(qd2, k11.mul_add(t2, k29 * t1)),
+                                                    k30.mul_add(qd2, k12.mul_add(t2, k31 * t1)),
                                                     t2
                                                         .mul_add(
-                                                            k11.mul_add(qd2, k9 * t1),
-                                                            t1 * k29.mul_add(qd2, k9.mul_add(t2, k30 * t1)),
+                                                            k12.mul_add(qd2, k10 * t1),
+                                                            t1 * k31.mul_add(qd2, k10.mul_add(t2, k32 * t1)),
                                                         ),
                                                 ),
                                         ),
                                 )
                                 + t7
                                     .mul_add(
-                                        k26.mul_add(t7, k12 * t6),
+                                        k27.mul_add(t7, k13 * t6),
                                         t6
                                             .mul_add(
-                                                k12.mul_add(t7, k24 * t4),
-                                                t4 * k24.mul_add(t6, k27 * t4),
+                                                k13.mul_add(t7, k25 * t4),
+                                                t4 * k25.mul_add(t6, k28 * t4),
                                             ),
-                                    ) + k20.mul_add(t9 * t9, k6 * (t8 * t8)),
-                        ) + k18.mul_add(t11 * t11, k15 * (t10 * t10)),
+                                    ) + k21.mul_add(t9 * t9, k6 * (t8 * t8)),
+                        ) + k19.mul_add(t11 * t11, k16 * (t10 * t10)),
                 )
     }
     #[inline(always)]

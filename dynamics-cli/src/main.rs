@@ -231,8 +231,8 @@ fn stats(robot: &Robot) -> String {
     );
     let _ = writeln!(
         out,
-        "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}",
-        "method", "mul", "add", "neg", "div", "trig", "flops", "bytes"
+        "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}",
+        "method", "mul", "add", "neg", "div", "trig", "flops", "depth", "bytes"
     );
     let mut total = 0;
     if let Some(c) = &generated.configuration {
@@ -240,7 +240,7 @@ fn stats(robot: &Robot) -> String {
         total += bytes;
         let _ = writeln!(
             out,
-            "{:<18} {:>42} {:>9}",
+            "{:<18} {:>49} {:>9}",
             "(shared)", "computed once, counted below", bytes
         );
     }
@@ -250,7 +250,7 @@ fn stats(robot: &Robot) -> String {
         let o = m.ops;
         let _ = writeln!(
             out,
-            "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>9}",
+            "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}",
             m.name,
             o.mul,
             o.add,
@@ -258,6 +258,7 @@ fn stats(robot: &Robot) -> String {
             o.div,
             o.trig,
             o.flops(),
+            o.depth,
             bytes
         );
     }

@@ -7,7 +7,9 @@
 //!   joint, the composite rigid body algorithm ([`algo::crba_derivative`]), and
 //!   `C_ij = Σ_k Γ_ijk q̇_k`, summed over the symbols or as `½(Ṁ_ij + P_ij − P_ji)` with
 //!   `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`: of the four, the cheapest C is kept;
-//! * `τ`, `C q̇`, `g` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
+//! * `τ`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
+//! * `g` by Newton-Euler at rest or from the composite bodies' first moments
+//!   ([`algo::gravity_torques`]), whichever takes fewer operations, plus springs;
 //! * the kinetic and potential energy.
 
 use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
@@ -305,11 +307,18 @@ pub fn derive(robot: &Robot) -> Equations {
         row[i] = row[i] + actuator[i];
     }
     // RNEA traces
-    let gravity_torques: Vec<Expr> = algo::rnea(&chain, &zeros, &zeros, gravity)
-        .into_iter()
-        .enumerate()
-        .map(|(i, x)| x + spring_torque(i))
-        .collect();
+    // g(q) two ways: Newton-Euler at rest, and from composite first moments (the gravity
+    // vector carried out and the composites carried in side by side, a shorter chain).
+    let with_springs = |g: Vec<Expr<'_>>| -> Vec<NodeId> {
+        g.into_iter()
+            .enumerate()
+            .map(|(i, x)| (x + spring_torque(i)).id())
+            .collect()
+    };
+    let gravity_candidates = [
+        with_springs(algo::gravity_torques(&chain, gravity)),
+        with_springs(algo::rnea(&chain, &zeros, &zeros, gravity)),
+    ];
     let coriolis_torques = algo::rnea(&chain, &qd, &zeros, no_gravity);
     let bias: Vec<Expr> = algo::rnea(&chain, &qd, &zeros, gravity)
         .into_iter()
@@ -338,12 +347,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let flat: Vec<NodeId> = mass_ids.iter().flatten().copied().collect();
     let half_id = half.id();
     let qd_ids: Vec<NodeId> = ids(&qd);
-    let (coriolis_torques, gravity_ids, bias, tau) = (
-        ids(&coriolis_torques),
-        ids(&gravity_torques),
-        ids(&bias),
-        ids(&tau),
-    );
+    let (coriolis_torques, bias, tau) = (ids(&coriolis_torques), ids(&bias), ids(&tau));
     let (kinetic_energy, potential_energy) = (kinetic.id(), potential.id());
 
     // ∂M/∂q_k (by differentiating the composite rigid body algorithm for a revolute joint, its
@@ -377,6 +381,13 @@ pub fn derive(robot: &Robot) -> Equations {
         }
     }
     let (christoffel, coriolis) = best.unwrap_or_default();
+    // The fewer operations; on a tie the composites, whose chain is shorter.
+    let [by_composites, by_newton_euler] = gravity_candidates;
+    let gravity_ids = if operations(&g, &by_newton_euler) < operations(&g, &by_composites) {
+        by_newton_euler
+    } else {
+        by_composites
+    };
 
     Equations {
         graph: g,

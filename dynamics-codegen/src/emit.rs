@@ -43,6 +43,11 @@ pub struct OpCount {
     pub div: usize,
     /// Sine and cosine evaluations (a `sin_cos` pair counts 2).
     pub trig: usize,
+    /// The longest chain of dependent multiplications, additions and divisions from the inputs
+    /// (the joint variables, their sines and cosines, the parameters) to a result: the
+    /// operations that cannot overlap, which bound the time of a call from below as the count
+    /// bounds its throughput.
+    pub depth: usize,
 }
 
 /// An emitted function body.
@@ -239,10 +244,19 @@ pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
     let mut e = Emitter::new(eq, None);
     e.mark(outputs);
     let mut ops = OpCount::default();
+    let mut depth = vec![0; eq.graph.len()];
     for (id, node) in eq.graph.nodes() {
         if !e.needed[id.index()] {
             continue;
         }
+        depth[id.index()] = match node {
+            Node::Add(a, b) | Node::Mul(a, b) => 1 + depth[a.index()].max(depth[b.index()]),
+            Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => 1 + depth[a.index()],
+            // A negation folds into the addition or multiplication that reads it.
+            Node::Neg(a) => depth[a.index()],
+            Node::Const(_) | Node::Var(_) => 0,
+        };
+        ops.depth = ops.depth.max(depth[id.index()]);
         match node {
             Node::Add(..) => ops.add += 1,
             Node::Mul(..) => ops.mul += 1,

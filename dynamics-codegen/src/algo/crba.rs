@@ -107,7 +107,7 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
 }
 
 /// The composite bodies `Ic_i = body_i + X_{i+1}(Ic_{i+1})`, each about J_i.
-fn composites<S: Scalar>(chain: &Chain<S>) -> Vec<Body<S>> {
+pub(super) fn composites<S: Scalar>(chain: &Chain<S>) -> Vec<Body<S>> {
     let n = chain.joints.len();
     let mut composite: Vec<Body<S>> = chain.joints.iter().map(|j| j.body).collect();
     for i in (0..n.saturating_sub(1)).rev() {
@@ -144,43 +144,7 @@ fn axis<S: Scalar>(chain: &Chain<S>, k: usize, f: V3<S>, nn: V3<S>) -> S {
 #[cfg(test)]
 mod tests {
     use super::{crba, crba_derivative};
-    use crate::algo::{Chain, DhRow, Inertial, JointKind, V3};
-
-    /// A 5-joint arm with arbitrary twists, offsets and inertias, joint 3 prismatic.
-    fn chain(q: &[f64]) -> Chain<f64> {
-        let kinds = [
-            JointKind::Revolute,
-            JointKind::Revolute,
-            JointKind::Prismatic,
-            JointKind::Revolute,
-            JointKind::Revolute,
-        ];
-        let mut rows = Vec::new();
-        let mut links = Vec::new();
-        for (i, (&kind, &qi)) in kinds.iter().zip(q).enumerate() {
-            let x = i as f64;
-            let (theta, d) = match kind {
-                JointKind::Revolute => (qi + 0.1 * x, 0.05 + 0.02 * x),
-                JointKind::Prismatic => (0.4, qi + 0.1),
-            };
-            let alpha = 0.7 - 0.45 * x;
-            rows.push(DhRow {
-                kind,
-                sin_theta: theta.sin(),
-                cos_theta: theta.cos(),
-                d,
-                a: 0.3 - 0.05 * x,
-                sin_alpha: alpha.sin(),
-                cos_alpha: alpha.cos(),
-            });
-            links.push(Inertial {
-                mass: 1.0 + 0.3 * x,
-                com: V3::new(-0.1 + 0.02 * x, 0.03, 0.05 - 0.01 * x),
-                inertia: [0.05, 0.04 + 0.01 * x, 0.03, 0.004, -0.002, 0.001 * x],
-            });
-        }
-        Chain::standard(&rows, &links)
-    }
+    use crate::algo::test_chain as chain;
 
     /// `∂M/∂q_k` by the carried commutators agrees with central differences of `M`, for the
     /// chain as given and regrouped.

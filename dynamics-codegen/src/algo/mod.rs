@@ -8,12 +8,14 @@
 mod chain;
 mod crba;
 mod energy;
+mod gravity;
 mod rnea;
 mod vector;
 
 pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, JointKind};
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
+pub use gravity::gravity_torques;
 pub use rnea::rnea;
 pub use vector::{Mat3, V3};
 
@@ -60,4 +62,42 @@ impl Scalar for f64 {
     fn is_zero(self) -> bool {
         self == 0.0
     }
+}
+
+/// A 5-joint arm with arbitrary twists, offsets and inertias, joint 3 prismatic: the
+/// algorithms' unit tests check each other on it.
+#[cfg(test)]
+pub(crate) fn test_chain(q: &[f64]) -> Chain<f64> {
+    let kinds = [
+        JointKind::Revolute,
+        JointKind::Revolute,
+        JointKind::Prismatic,
+        JointKind::Revolute,
+        JointKind::Revolute,
+    ];
+    let mut rows = Vec::new();
+    let mut links = Vec::new();
+    for (i, (&kind, &qi)) in kinds.iter().zip(q).enumerate() {
+        let x = i as f64;
+        let (theta, d) = match kind {
+            JointKind::Revolute => (qi + 0.1 * x, 0.05 + 0.02 * x),
+            JointKind::Prismatic => (0.4, qi + 0.1),
+        };
+        let alpha = 0.7 - 0.45 * x;
+        rows.push(DhRow {
+            kind,
+            sin_theta: theta.sin(),
+            cos_theta: theta.cos(),
+            d,
+            a: 0.3 - 0.05 * x,
+            sin_alpha: alpha.sin(),
+            cos_alpha: alpha.cos(),
+        });
+        links.push(Inertial {
+            mass: 1.0 + 0.3 * x,
+            com: V3::new(-0.1 + 0.02 * x, 0.03, 0.05 - 0.01 * x),
+            inertia: [0.05, 0.04 + 0.01 * x, 0.03, 0.004, -0.002, 0.001 * x],
+        });
+    }
+    Chain::standard(&rows, &links)
 }
