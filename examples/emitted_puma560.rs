@@ -1014,30 +1014,37 @@ mod __dynamics {
         let t55 = k43
             .mul_add(
                 t52,
-                k26.mul_add(t11, k25.mul_add(t18, k28 * t17) + (t13 * t27 - t16 * t26)),
-            ) + (c4 * t49 - s4 * t50);
-        let t56 = cqd4
-            + k42
-                .mul_add(t52, k56.mul_add(t11, k25.mul_add(t17, t16 * t25 - t12 * t27)));
+                k26.mul_add(t11, k25.mul_add(t18, k28 * t17) + (t13 * t27 - t16 * t26))
+                    + (c4 * t49 - s4 * t50),
+            );
+        let t56 = k42
+            .mul_add(
+                t52,
+                k56.mul_add(t11, k25.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
+            );
         /// centripetal and Coriolis torque 3
         let cqd3 = k13.mul_add(t18, t12 * t26 - t13 * t25) + k58.mul_add(t14, k24 * t15)
-            + k43.mul_add(t51, k42 * t48) - c4.mul_add(t50, s4 * t49);
+            - c4.mul_add(t50, s4 * t49) + k43.mul_add(t51, k42 * t48);
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
-        let cqd2 = cqd3
-            + k2.mul_add(t57, k11.mul_add(t4, k31 * t3) + (t1 * t9 - t2 * t8));
+        let cqd2 = k2
+            .mul_add(t57, k11.mul_add(t4, k31 * t3) + (t1 * t9 - t2 * t8) + cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = c2
             .mul_add(
-                k10.mul_add(t3, qd2 * t8 - t1 * t10)
+                k10.mul_add(t3, qd2 * t8 - t1 * t10) + c3.mul_add(t56, s3 * t55)
                     + k22
                         .mul_add(
                             k18.mul_add(t52, k26.mul_add(t24, k23 * t23)),
                             k3 * (c3 * t53 - s3 * t54),
-                        ) + c3.mul_add(t56, s3 * t55),
+                        ),
                 s2
-                    * (k47.mul_add(t57, k9.mul_add(t4, k32 * t3) + (t2 * t10 - qd2 * t9))
-                        + (c3 * t55 - s3 * t56)),
+                    * k47
+                        .mul_add(
+                            t57,
+                            k9.mul_add(t4, k32 * t3) + (t2 * t10 - qd2 * t9)
+                                + (c3 * t55 - s3 * t56),
+                        ),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
@@ -1187,29 +1194,34 @@ mod __dynamics {
         let t56 = k43
             .mul_add(
                 t44,
-                k26.mul_add(t9, k25.mul_add(t14, k28 * t13) + (t11 * t23 - t12 * t22)),
-            ) + (c4 * t54 - s4 * t55);
+                k26.mul_add(t9, k25.mul_add(t14, k28 * t13) + (t11 * t23 - t12 * t22))
+                    + (c4 * t54 - s4 * t55),
+            );
         let t57 = k42
-            .mul_add(t44, k56.mul_add(t9, k25.mul_add(t13, t12 * t21 - t10 * t23))) + h4;
+            .mul_add(t44, k56.mul_add(t9, k25.mul_add(t13, t12 * t21 - t10 * t23)) + h4);
         /// centripetal, Coriolis and gravity torque 3
         let h3 = k43.mul_add(t43, k42 * t42)
-            + (k13.mul_add(t14, t10 * t22 - t11 * t21) + k57.mul_add(t50, k23 * t51))
-            - c4.mul_add(t55, s4 * t54);
+            + (k13.mul_add(t14, t10 * t22 - t11 * t21) + k57.mul_add(t50, k23 * t51)
+                - c4.mul_add(t55, s4 * t54));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = h3
-            + k2.mul_add(t47, u108 + (k11.mul_add(t4, k31 * t3) + (t1 * t7 - t2 * t6)));
+        let h2 = k2
+            .mul_add(t47, u108 + (k11.mul_add(t4, k31 * t3) + (t1 * t7 - t2 * t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
-                k10.mul_add(t3, qd2 * t6 - t1 * t8)
-                    + k22
-                        .mul_add(
-                            k18.mul_add(t44, k26.mul_add(t20, k23 * t19)),
-                            k3 * (c3 * t45 - s3 * t46),
-                        ) + c3.mul_add(t57, s3 * t56),
+                k22
+                    .mul_add(
+                        k18.mul_add(t44, k26.mul_add(t20, k23 * t19)),
+                        k3 * (c3 * t45 - s3 * t46),
+                    )
+                    + (k10.mul_add(t3, qd2 * t6 - t1 * t8) + c3.mul_add(t57, s3 * t56)),
                 s2
-                    * (k47.mul_add(t47, k9.mul_add(t4, k32 * t3) + (t2 * t8 - qd2 * t7))
-                        + (c3 * t56 - s3 * t57)),
+                    * k47
+                        .mul_add(
+                            t47,
+                            k9.mul_add(t4, k32 * t3) + (t2 * t8 - qd2 * t7)
+                                + (c3 * t56 - s3 * t57),
+                        ),
             );
         [h1, h2, h3, h4, h5, h6]
     }
@@ -1355,28 +1367,28 @@ mod __dynamics {
         let t61 = k43
             .mul_add(
                 t58,
-                k26.mul_add(t31, t10 * t18 - t11 * t17 + k25.mul_add(t37, k28 * t36)),
-            ) + (c4 * t55 - s4 * t56);
-        let t62 = tau4
-            + k42
-                .mul_add(
-                    t58,
-                    k56.mul_add(t31, t11 * t16 - t9 * t18 + k13.mul_add(t38, k25 * t36)),
-                );
+                k26.mul_add(t31, t10 * t18 - t11 * t17 + k25.mul_add(t37, k28 * t36))
+                    + (c4 * t55 - s4 * t56),
+            );
+        let t62 = k42
+            .mul_add(
+                t58,
+                k56.mul_add(t31, t11 * t16 - t9 * t18 + k13.mul_add(t38, k25 * t36))
+                    + tau4,
+            );
         /// T3 (6.46)
         let tau3 = t9 * t17 - t10 * t16 + k27.mul_add(t38, k13 * t37)
-            + k57.mul_add(t34, k23 * t35) + k43.mul_add(t57, k42 * t54)
-            - c4.mul_add(t56, s4 * t55);
+            + k57.mul_add(t34, k23 * t35) - c4.mul_add(t56, s4 * t55)
+            + k43.mul_add(t57, k42 * t54);
         let t63 = c3.mul_add(t60, s3 * t59);
         /// T2 (6.46)
-        let tau2 = tau3
-            + k2
-                .mul_add(
-                    t63,
-                    u108
-                        + (t1 * t7 - t2 * t6
-                            + k30.mul_add(qdd2, k12.mul_add(t30, k31 * t29))),
-                );
+        let tau2 = k2
+            .mul_add(
+                t63,
+                u108
+                    + (t1 * t7 - t2 * t6
+                        + k30.mul_add(qdd2, k12.mul_add(t30, k31 * t29))) + tau3,
+            );
         /// T1 (6.46)
         let tau1 = k33
             .mul_add(
@@ -1384,18 +1396,20 @@ mod __dynamics {
                 c2
                     .mul_add(
                         qd2 * t6 - t1 * t8 + k12.mul_add(qdd2, k10 * t29)
+                            + c3.mul_add(t62, s3 * t61)
                             + k22
                                 .mul_add(
                                     k18.mul_add(t58, k26.mul_add(t42, k23 * t41)),
                                     k3 * (c3 * t59 - s3 * t60),
-                                ) + c3.mul_add(t62, s3 * t61),
+                                ),
                         s2
-                            * (k47
+                            * k47
                                 .mul_add(
                                     t63,
                                     t2 * t8 - qd2 * t7
-                                        + k31.mul_add(qdd2, k10.mul_add(t30, k32 * t29)),
-                                ) + (c3 * t61 - s3 * t62)),
+                                        + k31.mul_add(qdd2, k10.mul_add(t30, k32 * t29))
+                                        + (c3 * t61 - s3 * t62),
+                                ),
                     ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]

@@ -77,9 +77,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
             };
             let rf = to_parent(fc);
             f = f.add(rf);
-            // The child's moment last: it ends the longest chain, so it waits for one
-            // addition, not two.
-            nn = nn.add(next.offset().cross(rf)).add(to_parent(nc));
+            nn = nn.add(to_parent(nc)).add(next.offset().cross(rf));
         }
         tau[i] = match chain.joints[i].kind {
             JointKind::Revolute => nn.z,
