@@ -55,25 +55,26 @@ mod __dynamics {
         k26: T,
         k27: T,
         k28: T,
-        k30: T,
+        k29: T,
         k31: T,
         k32: T,
         k33: T,
-        k35: T,
+        k34: T,
+        k36: T,
         u1: T,
-        k37: T,
         k38: T,
+        k39: T,
         m4_4: T,
         u5: T,
-        k41: T,
         k42: T,
         k43: T,
+        k44: T,
         m3_4: T,
         m3_3: T,
         u31: T,
-        k44: T,
+        k45: T,
         m2_3: T,
-        k47: T,
+        k48: T,
         m2_2: T,
         u53: T,
         u54: T,
@@ -104,15 +105,23 @@ mod __dynamics {
         g5: T,
         u106: T,
         u107: T,
+        k53: T,
+        k54: T,
         u108: T,
-        k55: T,
-        k56: T,
         k57: T,
         k58: T,
-        k59: T,
         k60: T,
-        p: T,
+        k61: T,
+        k62: T,
+        k63: T,
         k64: T,
+        k65: T,
+        k66: T,
+        k67: T,
+        k68: T,
+        k69: T,
+        p: T,
+        k73: T,
         u110: T,
         u111: T,
         u112: T,
@@ -131,7 +140,7 @@ mod __dynamics {
         u142: T,
         u146: T,
         u147: T,
-        k67: T,
+        k76: T,
         u156: T,
         u159: T,
         u166: T,
@@ -144,9 +153,9 @@ mod __dynamics {
         u176: T,
         u177: T,
         u178: T,
-        k69: T,
-        k70: T,
-        k71: T,
+        k78: T,
+        k79: T,
+        k80: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -165,65 +174,74 @@ mod __dynamics {
         let k10: T = T::from_f64(-0.0070992);
         let k11: T = T::from_f64(0.023751);
         let k12: T = T::from_f64(-0.023751);
-        let k13: T = T::from_f64(-0.0047376);
-        let k14: T = T::from_f64(-0.0004);
-        let k15: T = T::from_f64(0.00288);
-        let k16: T = T::from_f64(0.00024216);
-        let k17: T = T::from_f64(-0.00024216);
-        let k18: T = T::from_f64(-0.00288);
-        let k19: T = T::from_f64(0.00064216);
-        let k20: T = T::from_f64(-0.0003);
-        let k21: T = T::from_f64(0.0016);
-        let k22: T = T::from_f64(-0.4318);
-        let k23: T = T::from_f64(0.025375);
-        let k24: T = T::from_f64(0.010956925);
-        let k25: T = T::from_f64(-0.011273199);
-        let k26: T = T::from_f64(0.89133);
-        let k27: T = T::from_f64(0.3586500705);
-        let k28: T = T::from_f64(0.3251198455);
-        let k29: T = T::from_f64(3.79559);
-        let k30: T = T::from_f64(1.748114002);
-        let k31: T = T::from_f64(-0.6903913435);
-        let k32: T = T::from_f64(-1.601861202);
-        let k33: T = T::from_f64(3.153542285625);
-        let k34: T = T::from_f64(-9.81);
-        let k35: T = T::from_f64(-0.00004);
-        let k36: T = T::from_f64(0.00028216);
-        let k37: T = T::from_f64(0.00020216);
-        let k38: T = T::from_f64(-0.00064216);
-        let k39: T = T::from_f64(-0.00020216);
-        let k40: T = T::from_f64(-0.000058464);
-        let k41: T = T::from_f64(0.001243584);
-        let k42: T = T::from_f64(0.000058464);
-        let k43: T = T::from_f64(-0.001243584);
-        let k44: T = T::from_f64(2.0);
-        let k45: T = T::from_f64(-2.0);
-        let k46: T = T::from_f64(0.000432144);
-        let k47: T = T::from_f64(-0.15005);
-        let k48: T = T::from_f64(-0.000432144);
-        let k49: T = T::from_f64(9.81);
-        let k50: T = T::from_f64(-0.0282528);
-        let k51: T = T::from_f64(0.0282528);
-        let k52: T = T::from_f64(37.2347379);
-        let k53: T = T::from_f64(-1.024164);
-        let k54: T = T::from_f64(-8.7439473);
-        let k55: T = T::from_f64(0.8636);
-        let k56: T = T::from_f64(-0.025375);
-        let k57: T = T::from_f64(-0.89133);
-        let k58: T = T::from_f64(0.384876294);
-        let k59: T = T::from_f64(-0.0013);
-        let k60: T = T::from_f64(-0.00576);
-        let k61: T = T::from_f64(-154.550796435);
-        let k62: T = T::from_f64(-37.2347379);
-        let k63: T = T::from_f64(-0.24892875);
-        let k64: T = T::from_f64(-0.8636);
-        let k65: T = T::from_f64(0.000116928);
-        let k66: T = T::from_f64(-0.000116928);
-        let k67: T = T::from_f64(0.00040432);
-        let k68: T = T::from_f64(-0.00040432);
-        let k69: T = T::from_f64(-0.00002);
-        let k70: T = T::from_f64(0.00002);
-        let k71: T = T::from_f64(-0.5);
+        let k13: T = T::from_f64(0.0047376);
+        let k14: T = T::from_f64(-0.0047376);
+        let k15: T = T::from_f64(-0.0004);
+        let k16: T = T::from_f64(0.00288);
+        let k17: T = T::from_f64(0.00024216);
+        let k18: T = T::from_f64(-0.00024216);
+        let k19: T = T::from_f64(-0.00288);
+        let k20: T = T::from_f64(0.00064216);
+        let k21: T = T::from_f64(-0.0003);
+        let k22: T = T::from_f64(0.0016);
+        let k23: T = T::from_f64(-0.4318);
+        let k24: T = T::from_f64(0.025375);
+        let k25: T = T::from_f64(0.010956925);
+        let k26: T = T::from_f64(-0.011273199);
+        let k27: T = T::from_f64(0.89133);
+        let k28: T = T::from_f64(0.3586500705);
+        let k29: T = T::from_f64(0.3251198455);
+        let k30: T = T::from_f64(3.79559);
+        let k31: T = T::from_f64(1.748114002);
+        let k32: T = T::from_f64(-0.6903913435);
+        let k33: T = T::from_f64(-1.601861202);
+        let k34: T = T::from_f64(3.153542285625);
+        let k35: T = T::from_f64(-9.81);
+        let k36: T = T::from_f64(-0.00004);
+        let k37: T = T::from_f64(0.00028216);
+        let k38: T = T::from_f64(0.00020216);
+        let k39: T = T::from_f64(-0.00064216);
+        let k40: T = T::from_f64(-0.00020216);
+        let k41: T = T::from_f64(-0.000058464);
+        let k42: T = T::from_f64(0.001243584);
+        let k43: T = T::from_f64(0.000058464);
+        let k44: T = T::from_f64(-0.001243584);
+        let k45: T = T::from_f64(2.0);
+        let k46: T = T::from_f64(-2.0);
+        let k47: T = T::from_f64(0.000432144);
+        let k48: T = T::from_f64(-0.15005);
+        let k49: T = T::from_f64(-0.000432144);
+        let k50: T = T::from_f64(9.81);
+        let k51: T = T::from_f64(-0.0282528);
+        let k52: T = T::from_f64(0.0282528);
+        let k53: T = T::from_f64(-3.349975204);
+        let k54: T = T::from_f64(1.601861202);
+        let k55: T = T::from_f64(37.2347379);
+        let k56: T = T::from_f64(-1.024164);
+        let k57: T = T::from_f64(-0.033530225);
+        let k58: T = T::from_f64(-0.3251198455);
+        let k59: T = T::from_f64(-8.7439473);
+        let k60: T = T::from_f64(-0.0013);
+        let k61: T = T::from_f64(-0.0141984);
+        let k62: T = T::from_f64(0.0141984);
+        let k63: T = T::from_f64(0.8636);
+        let k64: T = T::from_f64(-0.025375);
+        let k65: T = T::from_f64(-0.89133);
+        let k66: T = T::from_f64(0.011273199);
+        let k67: T = T::from_f64(0.384876294);
+        let k68: T = T::from_f64(0.6903913435);
+        let k69: T = T::from_f64(-0.00576);
+        let k70: T = T::from_f64(-154.550796435);
+        let k71: T = T::from_f64(-37.2347379);
+        let k72: T = T::from_f64(-0.24892875);
+        let k73: T = T::from_f64(-0.8636);
+        let k74: T = T::from_f64(0.000116928);
+        let k75: T = T::from_f64(-0.000116928);
+        let k76: T = T::from_f64(0.00040432);
+        let k77: T = T::from_f64(-0.00040432);
+        let k78: T = T::from_f64(-0.00002);
+        let k79: T = T::from_f64(0.00002);
+        let k80: T = T::from_f64(-0.5);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -231,38 +249,38 @@ mod __dynamics {
             q_[4],
         ]);
         let u1 = s5 * c5;
-        let u2 = k7.mul_add(s5 * s5, k16 * (c5 * c5));
-        let u3 = k36 - u2;
+        let u2 = k7.mul_add(s5 * s5, k17 * (c5 * c5));
+        let u3 = k37 - u2;
         let u4 = k6 + u2;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k21 + u3;
+        let m4_4 = k22 + u3;
         let u5 = c4 * s5;
         let u6 = s4 * s5;
         let u7 = c4 * c4;
         let u8 = s4 * c4;
-        let u9 = k19.mul_add(s4 * s4, u4 * u7);
-        let u10 = k19 + u4 - u9;
-        let u11 = u8 * (k38 + u4);
+        let u9 = k20.mul_add(s4 * s4, u4 * u7);
+        let u10 = k20 + u4 - u9;
+        let u11 = u8 * (k39 + u4);
         let u12 = c4 * u1;
-        let u13 = k37 * u12;
-        let u14 = k40 * u5;
-        let u15 = k41 * c5;
+        let u13 = k38 * u12;
+        let u14 = k41 * u5;
+        let u15 = k42 * c5;
         let u16 = m4_4 + u14;
         let u17 = u14 + u16;
         let u18 = u14 + u15;
-        let u19 = k43 * u5;
-        let u20 = k42 * u6;
-        let u21 = k40 * u6 - u11;
-        let u22 = k41 * u6;
+        let u19 = k44 * u5;
+        let u20 = k43 * u6;
+        let u21 = k41 * u6 - u11;
+        let u22 = k42 * u6;
         /// D34 = D43 (6.43)
-        let m3_4 = k43.mul_add(u6, k39 * (s4 * u1));
-        let u23 = k18.mul_add(u5, k23);
-        let u24 = k15.mul_add(c5, k26);
-        let u25 = k28 + (u15 + (u9 + u15));
+        let m3_4 = k44.mul_add(u6, k40 * (s4 * u1));
+        let u23 = k19.mul_add(u5, k24);
+        let u24 = k16.mul_add(c5, k27);
+        let u25 = k29 + (u15 + (u9 + u15));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k27 + (u18 + (u10 + u18));
-        let u26 = k25 + (u13 - k42.mul_add(c5, u19));
-        let u27 = k13 + m3_4;
+        let m3_3 = k28 + (u18 + (u10 + u18));
+        let u26 = k26 + (u13 - k43.mul_add(c5, u19));
+        let u27 = k14 + m3_4;
         let u28 = c3 * u23 - s3 * u24;
         let u29 = s3 * u23;
         let u30 = c3 * u24;
@@ -270,25 +288,25 @@ mod __dynamics {
         let u32 = c3 * c3;
         let u33 = s3 * s3;
         let u34 = s3 * c3;
-        let u35 = u17.mul_add(u33, k45.mul_add(u26 * u34, u25 * u32));
+        let u35 = u17.mul_add(u33, k46.mul_add(u26 * u34, u25 * u32));
         let u36 = u17 + u25 - u35;
         let u37 = u32 - u33;
         let u38 = u26.mul_add(u37, u34 * (u25 - u17));
         let u39 = c3 * u21 - s3 * u27;
         let u40 = c3.mul_add(u27, s3 * u21);
         let u41 = k2 * u28;
-        let u42 = k46 * u6;
+        let u42 = k47 * u6;
         let u43 = u41 + u42;
         let u44 = u43 + (u36 + u43);
         /// D23 = D32 (6.43)
         let m2_3 = m3_3 + u41;
-        let u45 = k22 * u31;
-        let u46 = k32 + (u42 + (u35 + u42));
+        let u45 = k23 * u31;
+        let u46 = k33 + (u42 + (u35 + u42));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k30 + (u41 + m2_3);
+        let m2_2 = k31 + (u41 + m2_3);
         let u47 = k10 + (u38 + u45);
-        let u48 = k31 + (u39 - k3.mul_add(u28, u22));
-        let u49 = k12 + k47.mul_add(u31, u40);
+        let u48 = k32 + (u39 - k3.mul_add(u28, u22));
+        let u49 = k12 + k48.mul_add(u31, u40);
         let u50 = c2 * c2;
         let u51 = s2 * s2;
         let u52 = s2 * c2;
@@ -297,26 +315,26 @@ mod __dynamics {
         /// D12 = D21 (6.43)
         let m1_2 = c2.mul_add(u49, s2 * u48);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k33
-            + (u44 + u46 - u44.mul_add(u51, k45.mul_add(u47 * u52, u46 * u50)));
+        let m1_1 = k34
+            + (u44 + u46 - u44.mul_add(u51, k46.mul_add(u47 * u52, u46 * u50)));
         let u55 = -u30 - u29;
-        let u56 = k47.mul_add(u28, u39);
+        let u56 = k48.mul_add(u28, u39);
         let u57 = k3.mul_add(u55, u40);
         let u58 = c2 * u56;
         let u59 = u58 - s2 * u57;
         /// D13 = D31 (6.43)
         let m1_3 = c2.mul_add(u57, s2 * u56);
-        let u60 = k41 * u5;
+        let u60 = k42 * u5;
         let u61 = u13 + u60;
         let u62 = c3 * u6;
         let u63 = s3 * u6;
         let u64 = c3.mul_add(u16, s3 * u61);
-        let u65 = k48 * u63;
-        let u66 = k46 * u62;
+        let u65 = k49 * u63;
+        let u66 = k47 * u62;
         let u67 = c3 * u61 - s3 * u16 + u65;
         let u68 = u64 + (u19 + u66);
         /// D24 = D42 (6.43)
-        let m2_4 = k41.mul_add(u63, m3_4);
+        let m2_4 = k42.mul_add(u63, m3_4);
         let u69 = c2.mul_add(u63, s2 * u62);
         let u70 = c2 * u67;
         let u71 = u70 - s2 * u68;
@@ -324,12 +342,12 @@ mod __dynamics {
         let m1_4 = c2.mul_add(u68, s2 * u67);
         let u72 = c4 * c5;
         let u73 = s4 * c5;
-        let u74 = k19 * c4;
-        let u75 = k41 * u73;
-        let u76 = k40 * s5;
-        let u77 = k43 * u72;
-        let u78 = k41 * u72;
-        let u79 = k19.mul_add(s4, u75);
+        let u74 = k20 * c4;
+        let u75 = k42 * u73;
+        let u76 = k41 * s5;
+        let u77 = k44 * u72;
+        let u78 = k42 * u72;
+        let u79 = k20.mul_add(s4, u75);
         /// D35 = D53 (6.43)
         let m3_5 = u74 + (u76 + u78);
         let u80 = c3 * u72;
@@ -339,14 +357,14 @@ mod __dynamics {
         let u84 = c3.mul_add(s5, u83);
         let u85 = s3 * u73;
         let u86 = c3 * u73;
-        let u87 = k40.mul_add(u86, s3 * u79);
-        let u88 = k46 * u84;
-        let u89 = k48 * u82;
-        let u90 = k43 * u73;
-        let u91 = k42.mul_add(u85, c3 * u79) + u88;
+        let u87 = k41.mul_add(u86, s3 * u79);
+        let u88 = k47 * u84;
+        let u89 = k49 * u82;
+        let u90 = k44 * u73;
+        let u91 = k43.mul_add(u85, c3 * u79) + u88;
         let u92 = u87 + (u89 + u90);
         /// D25 = D52 (6.43)
-        let m2_5 = k43.mul_add(u84, m3_5);
+        let m2_5 = k44.mul_add(u84, m3_5);
         let u93 = c2.mul_add(u84, s2 * u82);
         let u94 = c2 * u91;
         let u95 = u94 - s2 * u92;
@@ -364,104 +382,104 @@ mod __dynamics {
         let u101 = s2 * u99;
         let u102 = u100 - u101;
         /// D16 = D61 (6.43)
-        let m1_6 = k35 * c2.mul_add(u99, s2 * u97);
+        let m1_6 = k36 * c2.mul_add(u99, s2 * u97);
         /// D2 (6.45), gravity and spring
-        let g2 = k34 * (s2 * (k8 + u31) - c2 * (k29 + u28));
+        let g2 = k35 * (s2 * (k8 + u31) - c2 * (k30 + u28));
         let u103 = c2.mul_add(s3, s2 * c3);
         let u104 = c2 * c3 - s2 * s3;
         /// D3 (6.45), gravity and spring
-        let g3 = k34 * (u24 * u103 - u23 * u104);
+        let g3 = k35 * (u24 * u103 - u23 * u104);
         let u105 = c4 * u103;
         /// D4 (6.45), gravity and spring
-        let g4 = k51 * (s5 * (s4 * u103));
+        let g4 = k52 * (s5 * (s4 * u103));
         /// D5 (6.45), gravity and spring
-        let g5 = k50 * s5.mul_add(u104, c5 * u105);
-        let u106 = k49 * s2;
-        let u107 = k49 * c2;
-        let u108 = k53.mul_add(s2, k52 * c2);
+        let g5 = k51 * s5.mul_add(u104, c5 * u105);
+        let u106 = k50 * s2;
+        let u107 = k50 * c2;
+        let u108 = k56.mul_add(s2, k55 * c2);
         /// potential energy
-        let p = -k50
+        let p = -k51
             .mul_add(
                 c5 * u104 - s5 * u105,
-                k61 + k53.mul_add(c2, k62 * s2) + k54.mul_add(u104, k63 * u103),
+                k70 + k56.mul_add(c2, k71 * s2) + k59.mul_add(u104, k72 * u103),
             );
-        let u109 = u45 + k44.mul_add(u38, u45);
-        let u110 = k45.mul_add(u38, u109)
+        let u109 = u45 + k45.mul_add(u38, u45);
+        let u110 = k46.mul_add(u38, u109)
             - u51
                 .mul_add(
                     u109,
-                    k45 * u52.mul_add(k22.mul_add(u28, u35 - u36), u38 * u50),
+                    k46 * u52.mul_add(k23.mul_add(u28, u35 - u36), u38 * u50),
                 );
         let u111 = s2.mul_add(k3 * u31 - u40, u58);
-        let u112 = s2.mul_add(k47 * u55 - u40, u58);
-        let u113 = k48 * u62;
-        let u114 = k41 * u62;
+        let u112 = s2.mul_add(k48 * u55 - u40, u58);
+        let u113 = k49 * u62;
+        let u114 = k42 * u62;
         let u115 = s2.mul_add(u113 - u64, u70);
-        let u116 = k43 * u82;
-        let u117 = s2.mul_add(k46 * u82 - u87, u94);
+        let u116 = k44 * u82;
+        let u117 = s2.mul_add(k47 * u82 - u87, u94);
         let u118 = u101 - u100;
-        let u119 = k45 * u11;
-        let u120 = u20 + k44.mul_add(u11, u20);
+        let u119 = k46 * u11;
+        let u120 = u20 + k45.mul_add(u11, u20);
         let u121 = u14 - (u9 - u10);
-        let u122 = k39.mul_add(u12, u19);
-        let u123 = k65.mul_add(u6 * u33, k45 * m3_4.mul_add(u34, u11 * u32));
+        let u122 = k40.mul_add(u12, u19);
+        let u123 = k74.mul_add(u6 * u33, k46 * m3_4.mul_add(u34, u11 * u32));
         let u124 = c3 * u121 - s3 * u122;
-        let u125 = k46 * u5;
+        let u125 = k47 * u5;
         let u126 = u125 + (u123 + u125);
         let u127 = u114 + u125;
-        let u128 = u127 + (k65.mul_add(u6, u119) - u123 + u127);
+        let u128 = u127 + (k74.mul_add(u6, u119) - u123 + u127);
         let u129 = u114 + u120;
         let u130 = u114 + u129;
-        let u131 = k43 * u63;
+        let u131 = k44 * u63;
         let u132 = u126 + u128
             - u51
                 .mul_add(
                     u128,
-                    k45
+                    k46
                         .mul_add(
                             u52
-                                * (m3_4.mul_add(u37, u34 * k66.mul_add(u6, u119)) + u131),
+                                * (m3_4.mul_add(u37, u34 * k75.mul_add(u6, u119)) + u131),
                             u50 * u126,
                         ),
                 );
         let u133 = c2 * (u65 + c3.mul_add(u122, s3 * u121));
         let u134 = s2.mul_add(u124 - (u60 + u66), u133);
         let u135 = s2.mul_add(u113 + u124, u133);
-        let u136 = k40 * u63;
-        let u137 = k42 * u62;
-        let u138 = k41.mul_add(u98, u122);
+        let u136 = k41 * u63;
+        let u137 = k43 * u62;
+        let u138 = k42.mul_add(u98, u122);
         let u139 = c2
             .mul_add(
-                s3.mul_add(m3_4, u137) + k46.mul_add(u96, u22),
-                s2 * k48.mul_add(u98, c3.mul_add(m3_4, u136)),
+                s3.mul_add(m3_4, u137) + k47.mul_add(u96, u22),
+                s2 * k49.mul_add(u98, c3.mul_add(m3_4, u136)),
             );
-        let u140 = k40 * u72;
+        let u140 = k41 * u72;
         let u141 = u74 + u78;
-        let u142 = k38.mul_add(s4, u90);
-        let u143 = k48 * u85;
-        let u144 = k46.mul_add(u86, u77);
-        let u145 = k41 * u85;
+        let u142 = k39.mul_add(s4, u90);
+        let u143 = k49 * u85;
+        let u144 = k47.mul_add(u86, u77);
+        let u145 = k42 * u85;
         let u146 = u142 + u145;
         let u147 = c2
             .mul_add(
-                k40.mul_add(u80, s3 * u141) + u144,
-                s2 * (k42.mul_add(u83, c3 * u141) + u143),
+                k41.mul_add(u80, s3 * u141) + u144,
+                s2 * (k43.mul_add(u83, c3 * u141) + u143),
             );
         let u148 = u2 - u3;
         let u149 = u1 * u7;
         let u150 = c4 * u148;
-        let u151 = k43 * s5;
-        let u152 = u151 + k68.mul_add(u149, u151);
-        let u153 = k67.mul_add(u1, u140);
+        let u151 = k44 * s5;
+        let u152 = u151 + k77.mul_add(u149, u151);
+        let u153 = k76.mul_add(u1, u140);
         let u154 = u140 + u153;
         let u155 = u140 + u151;
-        let u156 = u155 + k68.mul_add(u1 - u149, u155);
+        let u156 = u155 + k77.mul_add(u1 - u149, u155);
         let u157 = u150 - (u76 + u77);
-        let u158 = k67.mul_add(u1 * u8, k40 * u73);
+        let u158 = k76.mul_add(u1 * u8, k41 * u73);
         let u159 = u90 - s4 * u148;
-        let u160 = u33.mul_add(u154, k45.mul_add(u34 * u157, u32 * u152));
+        let u160 = u33.mul_add(u154, k46.mul_add(u34 * u157, u32 * u152));
         let u161 = c3 * u158 - s3 * u159;
-        let u162 = k46 * u73;
+        let u162 = k47 * u73;
         let u163 = u162 + (u160 + u162);
         let u164 = u116 + u162;
         let u165 = u164 + (u152 + u154 - u160 + u164);
@@ -470,18 +488,18 @@ mod __dynamics {
             - u51
                 .mul_add(
                     u165,
-                    k45
+                    k46
                         .mul_add(
                             u52
-                                * k41.mul_add(u84, u37.mul_add(u157, u34 * (u152 - u154))),
+                                * k42.mul_add(u84, u37.mul_add(u157, u34 * (u152 - u154))),
                             u50 * u163,
                         ),
                 );
         let u168 = c2 * (u88 + c3.mul_add(u159, s3 * u158));
         let u169 = s2.mul_add(u161 - (u75 + u89), u168);
         let u170 = u81 - u80;
-        let u171 = k41.mul_add(u170, u156);
-        let u172 = s2.mul_add(k48.mul_add(u170, u161), u168);
+        let u171 = k42.mul_add(u170, u156);
+        let u172 = s2.mul_add(k49.mul_add(u170, u161), u168);
         let u173 = u78 + u150;
         let u174 = u145 + u159;
         let u175 = c2
@@ -489,12 +507,12 @@ mod __dynamics {
                 u144 + c3.mul_add(u153, s3 * u173),
                 s2 * (u143 + (c3 * u173 - s3 * u153)),
             );
-        let u176 = k40.mul_add(c5, u19);
-        let u177 = k41.mul_add(u99, u176);
+        let u176 = k41.mul_add(c5, u19);
+        let u177 = k42.mul_add(u99, u176);
         let u178 = c2
             .mul_add(
-                u131 + u137 + k46.mul_add(u97, u22),
-                s2 * k48.mul_add(u99, k43.mul_add(u62, u136)),
+                u131 + u137 + k47.mul_add(u97, u22),
+                s2 * k49.mul_add(u99, k44.mul_add(u62, u136)),
             );
         Configuration {
             k1,
@@ -532,25 +550,26 @@ mod __dynamics {
             k26,
             k27,
             k28,
-            k30,
+            k29,
             k31,
             k32,
             k33,
-            k35,
+            k34,
+            k36,
             u1,
-            k37,
             k38,
+            k39,
             m4_4,
             u5,
-            k41,
             k42,
             k43,
+            k44,
             m3_4,
             m3_3,
             u31,
-            k44,
+            k45,
             m2_3,
-            k47,
+            k48,
             m2_2,
             u53,
             u54,
@@ -581,15 +600,23 @@ mod __dynamics {
             g5,
             u106,
             u107,
+            k53,
+            k54,
             u108,
-            k55,
-            k56,
             k57,
             k58,
-            k59,
             k60,
-            p,
+            k61,
+            k62,
+            k63,
             k64,
+            k65,
+            k66,
+            k67,
+            k68,
+            k69,
+            p,
+            k73,
             u110,
             u111,
             u112,
@@ -608,7 +635,7 @@ mod __dynamics {
             u142,
             u146,
             u147,
-            k67,
+            k76,
             u156,
             u159,
             u166,
@@ -621,9 +648,9 @@ mod __dynamics {
             u176,
             u177,
             u178,
-            k69,
-            k70,
-            k71,
+            k78,
+            k79,
+            k80,
         }
     }
     #[inline(always)]
@@ -633,7 +660,7 @@ mod __dynamics {
     ) -> [[T; 6usize]; 6usize] {
         let Configuration {
             k7,
-            k19,
+            k20,
             m4_4,
             m3_4,
             m3_3,
@@ -657,7 +684,7 @@ mod __dynamics {
             [m1_2, m2_2, m2_3, m2_4, m2_5, m2_6],
             [m1_3, m2_3, m3_3, m3_4, m3_5, m2_6],
             [m1_4, m2_4, m3_4, m4_4, T::ZERO, m4_6],
-            [m1_5, m2_5, m3_5, T::ZERO, k19, T::ZERO],
+            [m1_5, m2_5, m3_5, T::ZERO, k20, T::ZERO],
             [m1_6, m2_6, m2_6, m4_6, T::ZERO, k7],
         ]
     }
@@ -672,14 +699,14 @@ mod __dynamics {
             k2,
             s5,
             k7,
-            k35,
+            k36,
             u1,
-            k37,
+            k38,
             u5,
-            k41,
-            k43,
-            u31,
+            k42,
             k44,
+            u31,
+            k45,
             u53,
             u54,
             u55,
@@ -692,7 +719,7 @@ mod __dynamics {
             u93,
             u95,
             u102,
-            k64,
+            k73,
             u110,
             u111,
             u112,
@@ -711,7 +738,7 @@ mod __dynamics {
             u142,
             u146,
             u147,
-            k67,
+            k76,
             u156,
             u159,
             u166,
@@ -724,9 +751,9 @@ mod __dynamics {
             u176,
             u177,
             u178,
-            k69,
-            k70,
-            k71,
+            k78,
+            k79,
+            k80,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -738,43 +765,43 @@ mod __dynamics {
         let t6 = qd4 * u122;
         let t7 = qd5 * u176;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = k37 * (qd5 * u1);
+        let cor4_4 = k38 * (qd5 * u1);
         let t8 = s5 * qd5;
         let t9 = s5.mul_add(qd4, qd1 * u93 - qd2 * u73 - qd3 * u73);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = k70 * t9;
+        let cor5_6 = k79 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k69 * t9;
+        let cor6_5 = k78 * t9;
         let t10 = k7 * (qd6 * u5);
         let t11 = k7 * (qd6 * u73);
         let t12 = qd5.mul_add(u73, qd4 * u5);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k70 * (t5 + t12);
+        let cor2_6 = k79 * (t5 + t12);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k70 * (t12 - t5);
+        let cor6_2 = k79 * (t12 - t5);
         let t13 = qd4.mul_add(u142, t7);
         let t14 = qd3 * u112;
         let t15 = qd5 * u178;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k69 * qd5.mul_add(u93, qd2 * u102 - qd3 * u118 - qd4 * u69);
+        let cor1_6 = k78 * qd5.mul_add(u93, qd2 * u102 - qd3 * u118 - qd4 * u69);
         let t16 = qd5 * u177;
         /// C33 = sum of D33k qd_k (6.44)
         let cor3_3 = k1 * qd4.mul_add(u120, qd5 * u156);
         let t17 = qd1 * u118;
         let t18 = qd3.mul_add(u5, qd1.mul_add(u69, qd2 * u5));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k69 * (t8 + t18);
+        let cor4_6 = k78 * (t8 + t18);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * qd5.mul_add(u167, qd4.mul_add(u132, k44.mul_add(qd2 * u53, qd3 * u110)));
+            * qd5.mul_add(u167, qd4.mul_add(u132, k45.mul_add(qd2 * u53, qd3 * u110)));
         let t19 = qd5.mul_add(u169, qd4.mul_add(u134, qd3.mul_add(u111, t1)));
-        let t20 = k35
+        let t20 = k36
             .mul_add(
                 qd6 * u102,
                 qd5
                     .mul_add(
                         u95,
-                        qd4.mul_add(u71, qd3.mul_add(u59, k44.mul_add(qd1 * u53, t1))),
+                        qd4.mul_add(u71, qd3.mul_add(u59, k45.mul_add(qd1 * u53, t1))),
                     ),
             );
         /// C12 = sum of D12k qd_k (6.44)
@@ -802,7 +829,7 @@ mod __dynamics {
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t23 - t24);
         let t25 = t15 + qd4.mul_add(u147, qd3.mul_add(u117, qd2 * u95));
-        let t26 = k35
+        let t26 = k36
             .mul_add(
                 qd6 * u93,
                 t15 + qd4.mul_add(u175, qd3.mul_add(u172, qd2.mul_add(u169, qd1 * u167))),
@@ -812,18 +839,18 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u166, k64.mul_add(qd3 * u31, qd4 * u130));
+        let cor2_2 = k1 * qd5.mul_add(u166, k73.mul_add(qd3 * u31, qd4 * u130));
         let t27 = qd5.mul_add(u171, qd4.mul_add(u129, t3));
-        let t28 = k43
+        let t28 = k44
             .mul_add(
                 qd5 * u82,
-                k41.mul_add(qd4 * u62, t3 + k64.mul_add(qd2 * u31, qd1 * u111)),
+                k42.mul_add(qd4 * u62, t3 + k73.mul_add(qd2 * u31, qd1 * u111)),
             ) - qd1 * u59;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t27 - t28);
-        let t29 = qd5.mul_add(u174, k41.mul_add(qd3 * u62, t4));
+        let t29 = qd5.mul_add(u174, k42.mul_add(qd3 * u62, t4));
         let t30 = t10
             + qd5.mul_add(u146, t4 + qd3.mul_add(u129, qd1.mul_add(u134, qd2 * u130)))
             - qd1 * u71;
@@ -831,7 +858,7 @@ mod __dynamics {
         let cor2_4 = k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t29 - t30);
-        let t31 = qd4.mul_add(u146, k43 * (qd3 * u82)) + t16;
+        let t31 = qd4.mul_add(u146, k44 * (qd3 * u82)) + t16;
         let t32 = t11
             + (t16 + qd4.mul_add(u174, qd3.mul_add(u171, qd1.mul_add(u169, qd2 * u166))))
             - qd1 * u95;
@@ -842,33 +869,33 @@ mod __dynamics {
         let t33 = qd5.mul_add(u159, t6);
         let t34 = t10
             + qd5.mul_add(u142, t6 + qd3.mul_add(u120, qd2.mul_add(u129, qd1 * u135)))
-            - qd1.mul_add(u115, k41 * (qd2 * u62));
+            - qd1.mul_add(u115, k42 * (qd2 * u62));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
         let t35 = t11
             + (t7 + qd4.mul_add(u159, qd3.mul_add(u156, qd2.mul_add(u171, qd1 * u172))))
-            - qd1.mul_add(u117, k43 * (qd2 * u82));
+            - qd1.mul_add(u117, k44 * (qd2 * u82));
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = k1 * (t13 + t35);
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = k1 * (t13 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k70 * (t12 - t17);
+        let cor3_6 = k79 * (t12 - t17);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k70 * (t12 + t17);
-        let t36 = k35
+        let cor6_3 = k79 * (t12 + t17);
+        let t36 = k36
             .mul_add(
                 s5 * qd6,
-                k67.mul_add(qd4 * u1, qd3.mul_add(u159, qd2.mul_add(u174, qd1 * u175))),
+                k76.mul_add(qd4 * u1, qd3.mul_add(u159, qd2.mul_add(u174, qd1 * u175))),
             ) - qd3.mul_add(u142, qd2.mul_add(u146, qd1 * u147));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k71 * t36;
+        let cor5_4 = k80 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k69 * (t8 - t18);
+        let cor6_4 = k78 * (t8 - t18);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -899,7 +926,6 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k9,
             k10,
             k11,
             k12,
@@ -919,19 +945,27 @@ mod __dynamics {
             k26,
             k27,
             k28,
-            k30,
+            k29,
             k31,
             k32,
-            k35,
-            k38,
-            k42,
+            k33,
+            k36,
+            k39,
             k43,
-            k47,
-            k55,
-            k56,
+            k44,
+            k48,
+            k53,
+            k54,
             k57,
             k58,
-            k59,
+            k60,
+            k61,
+            k62,
+            k63,
+            k64,
+            k65,
+            k66,
+            k67,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -939,40 +973,40 @@ mod __dynamics {
         let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
-        let t5 = t2 * t2;
-        let t6 = t1 * t2;
-        let t7 = qd2.mul_add(qd2, t5);
-        let t8 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
-        let t9 = k12.mul_add(qd2, k10 * t1);
-        let t10 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
-        let t11 = k47.mul_add(t1.mul_add(t1, t5), k55 * t4);
-        let t12 = s3.mul_add(t2, c3 * t1);
-        let t13 = c3 * t2 - s3 * t1;
-        let t14 = c3 * t7 - s3 * t6;
-        let t15 = s3.mul_add(t7, c3 * t6);
-        let t16 = qd2 + qd3;
-        let t17 = qd3.mul_add(t13, c3 * t3 - s3 * t4);
-        let t18 = -(c3 * t4) - s3 * t3 - qd3 * t12;
-        let t19 = t16 * t16;
-        let t20 = t12 * t13;
-        let t21 = t13.mul_add(t13, t19);
-        let t22 = t12.mul_add(t12, t19);
-        let t23 = t12 * t16 - t18;
-        let t24 = t13.mul_add(t16, t17);
-        let t25 = k25.mul_add(t13, k28 * t12);
-        let t26 = k13.mul_add(t16, k25 * t12);
-        let t27 = k27.mul_add(t16, k13 * t13);
-        let t28 = k22.mul_add(t14, k2.mul_add(t20, k5 * t21));
-        let t29 = t11 + k2.mul_add(t24, k4 * t23);
-        let t30 = c4 * t12 - s4 * t16;
-        let t31 = -(c4 * t16) - s4 * t12;
-        let t32 = qd4 + t13;
-        let t33 = qd4.mul_add(t31, c4 * t17);
-        let t34 = -(s4 * t17) - qd4 * t30;
+        let t5 = t1 * t1;
+        let t6 = t2 * t2;
+        let t7 = qd2 * qd2;
+        let t8 = t1 * t2;
+        let t9 = t6 + t7;
+        let t10 = k48.mul_add(t5 + t6, k63 * t4);
+        let t11 = s3.mul_add(t2, c3 * t1);
+        let t12 = c3 * t2 - s3 * t1;
+        let t13 = c3 * t9 - s3 * t8;
+        let t14 = s3.mul_add(t9, c3 * t8);
+        let t15 = qd2 + qd3;
+        let t16 = qd3.mul_add(t12, c3 * t3 - s3 * t4);
+        let t17 = -(c3 * t4) - s3 * t3 - qd3 * t11;
+        let t18 = t11 * t11;
+        let t19 = t12 * t12;
+        let t20 = t15 * t15;
+        let t21 = t11 * t12;
+        let t22 = t11 * t15;
+        let t23 = t12 * t15;
+        let t24 = t19 + t20;
+        let t25 = t18 + t20;
+        let t26 = t22 - t17;
+        let t27 = t16 + t23;
+        let t28 = k23.mul_add(t13, k2.mul_add(t21, k5 * t24));
+        let t29 = t10 + k2.mul_add(t27, k4 * t26);
+        let t30 = c4 * t11 - s4 * t15;
+        let t31 = -(c4 * t15) - s4 * t11;
+        let t32 = qd4 + t12;
+        let t33 = qd4.mul_add(t31, c4 * t16);
+        let t34 = -(s4 * t16) - qd4 * t30;
         let t35 = s5.mul_add(t32, c5 * t30);
         let t36 = c5 * t32 - s5 * t30;
         let t37 = qd5 - t31;
-        let t38 = qd5.mul_add(t36, s5.mul_add(t18, c5 * t33));
+        let t38 = qd5.mul_add(t36, s5.mul_add(t17, c5 * t33));
         let t39 = t35 * t36;
         let t40 = t36 * t37;
         let t41 = t34 + t39;
@@ -980,70 +1014,85 @@ mod __dynamics {
         let t43 = t38 + t40;
         let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
-        let cqd6 = k7 * (c5 * t18 - s5 * t33 - qd5 * t35);
-        let t45 = k35
+        let cqd6 = k7 * (c5 * t17 - s5 * t33 - qd5 * t35);
+        let t45 = k36
             .mul_add(
                 t37 * t44,
-                k18.mul_add(-(c4 * t29) - s4 * t28, k19.mul_add(t40, k16 * t38)),
+                k19.mul_add(-(c4 * t29) - s4 * t28, k20.mul_add(t40, k17 * t38)),
             );
-        let t46 = k14.mul_add(t35 * t37, cqd6);
+        let t46 = k15.mul_add(t35 * t37, cqd6);
         /// centripetal and Coriolis torque 5
         let cqd5 = k7
             .mul_add(
                 t35 * t44,
-                k18
+                k19
                     .mul_add(
                         s5
                             .mul_add(
-                                k2.mul_add(t15, k22.mul_add(t22, k4 * t20)),
+                                k2.mul_add(t14, k23.mul_add(t25, k4 * t21)),
                                 c5 * (c4 * t28 - s4 * t29),
                             ),
-                        k17.mul_add(t39, k38 * t34),
+                        k18.mul_add(t39, k39 * t34),
                     ),
             );
         let t47 = s5.mul_add(t42, c5 * t41);
         let t48 = s5 * t41 - c5 * t42;
-        let t49 = k21.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
-        let t50 = k59 * (t30 * t32) - cqd5;
+        let t49 = k22.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
+        let t50 = k60 * (t30 * t32) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = k20.mul_add(t30 * t31, k21 * t18) + c5.mul_add(t46, s5 * t45);
+        let cqd4 = k21.mul_add(t30 * t31, k22 * t17) + c5.mul_add(t46, s5 * t45);
         let t51 = s4.mul_add(t43, c4 * t47);
         let t52 = s4 * t47 - c4 * t43;
-        let t53 = k15.mul_add(t51, k26.mul_add(t20, k56 * t21));
-        let t54 = k15.mul_add(t48, k57.mul_add(t22, k23 * t20));
-        let t55 = k43
+        let t53 = k16.mul_add(t51, k27.mul_add(t21, k64 * t24));
+        let t54 = k16.mul_add(t48, k65.mul_add(t25, k24 * t21));
+        let t55 = k44
             .mul_add(
                 t52,
-                k26.mul_add(t11, k25.mul_add(t18, k28 * t17) + (t13 * t27 - t16 * t26))
-                    + (c4 * t49 - s4 * t50),
+                k27
+                    .mul_add(
+                        t10,
+                        k28
+                            .mul_add(
+                                t23,
+                                k14.mul_add(t19 - t20, k66.mul_add(t26, k29 * t16)),
+                            ),
+                    ) + (c4 * t49 - s4 * t50),
             );
-        let t56 = k42
+        let t56 = k43
             .mul_add(
                 t52,
-                k56.mul_add(t11, k25.mul_add(t17, t16 * t25 - t12 * t27)) + cqd4,
+                k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27))) + cqd4,
             );
         /// centripetal and Coriolis torque 3
-        let cqd3 = k13.mul_add(t18, t12 * t26 - t13 * t25) + k58.mul_add(t14, k24 * t15)
-            - c4.mul_add(t50, s4 * t49) + k43.mul_add(t51, k42 * t48);
+        let cqd3 = k58.mul_add(t21, k26.mul_add(t18 - t19, k14 * (t17 + t22)))
+            + k67.mul_add(t13, k25 * t14) - c4.mul_add(t50, s4 * t49)
+            + k44.mul_add(t51, k43 * t48);
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
-        let cqd2 = k2
-            .mul_add(t57, k11.mul_add(t4, k31 * t3) + (t1 * t9 - t2 * t8) + cqd3);
+        let cqd2 = k2.mul_add(t57, k54.mul_add(t8, k10 * (t5 - t6)) + cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = c2
             .mul_add(
-                k10.mul_add(t3, qd2 * t8 - t1 * t10) + c3.mul_add(t56, s3 * t55)
-                    + k22
+                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
+                    + c3.mul_add(t56, s3 * t55)
+                    + k23
                         .mul_add(
-                            k18.mul_add(t52, k26.mul_add(t24, k23 * t23)),
+                            k19.mul_add(t52, k27.mul_add(t27, k24 * t26)),
                             k3 * (c3 * t53 - s3 * t54),
                         ),
                 s2
-                    * k47
+                    * k48
                         .mul_add(
                             t57,
-                            k9.mul_add(t4, k32 * t3) + (t2 * t10 - qd2 * t9)
-                                + (c3 * t55 - s3 * t56),
+                            k31
+                                .mul_add(
+                                    t3,
+                                    k12
+                                        .mul_add(
+                                            t6 - t7,
+                                            k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                        ),
+                                ) + (c3 * t55 - s3 * t56),
                         ),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
@@ -1077,7 +1126,6 @@ mod __dynamics {
             c5,
             k6,
             k7,
-            k9,
             k10,
             k11,
             k12,
@@ -1092,25 +1140,33 @@ mod __dynamics {
             k21,
             k22,
             k23,
-            k25,
+            k24,
             k26,
             k27,
             k28,
-            k30,
+            k29,
             k31,
             k32,
-            k35,
-            k38,
-            k42,
+            k33,
+            k36,
+            k39,
             k43,
-            k47,
+            k44,
+            k48,
             u106,
             u107,
+            k53,
+            k54,
             u108,
-            k55,
-            k56,
             k57,
-            k59,
+            k58,
+            k60,
+            k61,
+            k62,
+            k63,
+            k64,
+            k65,
+            k66,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1118,109 +1174,127 @@ mod __dynamics {
         let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
-        let t5 = t2 * t2;
-        let t6 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
-        let t7 = k12.mul_add(qd2, k10 * t1);
-        let t8 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
-        let t9 = k47.mul_add(t1.mul_add(t1, t5), k55 * t4);
+        let t5 = t1 * t1;
+        let t6 = t2 * t2;
+        let t7 = qd2 * qd2;
+        let t8 = t1 * t2;
+        let t9 = k48.mul_add(t5 + t6, k63 * t4);
         let t10 = s3.mul_add(t2, c3 * t1);
         let t11 = c3 * t2 - s3 * t1;
         let t12 = qd2 + qd3;
         let t13 = qd3.mul_add(t11, c3 * t3 - s3 * t4);
         let t14 = -(c3 * t4) - s3 * t3 - qd3 * t10;
-        let t15 = t12 * t12;
-        let t16 = t10 * t11;
-        let t17 = t11.mul_add(t11, t15);
-        let t18 = t10.mul_add(t10, t15);
-        let t19 = t10 * t12 - t14;
-        let t20 = t11.mul_add(t12, t13);
-        let t21 = k25.mul_add(t11, k28 * t10);
-        let t22 = k13.mul_add(t12, k25 * t10);
-        let t23 = k27.mul_add(t12, k13 * t11);
-        let t24 = t9 + k2.mul_add(t20, k4 * t19);
-        let t25 = c4 * t10 - s4 * t12;
-        let t26 = -(c4 * t12) - s4 * t10;
-        let t27 = qd4 + t11;
-        let t28 = qd4.mul_add(t26, c4 * t13);
-        let t29 = -(s4 * t13) - qd4 * t25;
-        let t30 = s5.mul_add(t27, c5 * t25);
-        let t31 = c5 * t27 - s5 * t25;
-        let t32 = qd5 - t26;
-        let t33 = qd5.mul_add(t31, s5.mul_add(t14, c5 * t28));
-        let t34 = t30 * t31;
+        let t15 = t10 * t10;
+        let t16 = t11 * t11;
+        let t17 = t12 * t12;
+        let t18 = t10 * t11;
+        let t19 = t10 * t12;
+        let t20 = t11 * t12;
+        let t21 = t16 + t17;
+        let t22 = t15 + t17;
+        let t23 = t19 - t14;
+        let t24 = t13 + t20;
+        let t25 = t9 + k2.mul_add(t24, k4 * t23);
+        let t26 = c4 * t10 - s4 * t12;
+        let t27 = -(c4 * t12) - s4 * t10;
+        let t28 = qd4 + t11;
+        let t29 = qd4.mul_add(t27, c4 * t13);
+        let t30 = -(s4 * t13) - qd4 * t26;
+        let t31 = s5.mul_add(t28, c5 * t26);
+        let t32 = c5 * t28 - s5 * t26;
+        let t33 = qd5 - t27;
+        let t34 = qd5.mul_add(t32, s5.mul_add(t14, c5 * t29));
         let t35 = t31 * t32;
-        let t36 = t29 + t34;
-        let t37 = t32.mul_add(t32, t30 * t30);
-        let t38 = t33 + t35;
-        let t39 = qd6 + t31;
+        let t36 = t32 * t33;
+        let t37 = t30 + t35;
+        let t38 = t33.mul_add(t33, t31 * t31);
+        let t39 = t34 + t36;
+        let t40 = qd6 + t32;
         /// centripetal, Coriolis and gravity torque 6
-        let h6 = k7 * (c5 * t14 - s5 * t28 - qd5 * t30);
-        let t40 = k14.mul_add(t30 * t32, h6);
-        let t41 = s5.mul_add(t37, c5 * t36);
-        let t42 = s5 * t36 - c5 * t37;
-        let t43 = s4.mul_add(t38, c4 * t41);
-        let t44 = s4 * t41 - c4 * t38;
-        let t45 = k15.mul_add(t43, k26.mul_add(t16, k56 * t17));
-        let t46 = k15.mul_add(t42, k57.mul_add(t18, k23 * t16));
-        let t47 = c3.mul_add(t46, s3 * t45);
-        let t48 = k22.mul_add(qd2.mul_add(qd2, t5), u106);
-        let t49 = k2.mul_add(t1 * t2, u107);
-        let t50 = s3.mul_add(t49, c3 * t48);
-        let t51 = c3 * t49 - s3 * t48;
-        let t52 = k2.mul_add(t16, k5 * t17) + t50;
-        let t53 = k35
+        let h6 = k7 * (c5 * t14 - s5 * t29 - qd5 * t31);
+        let t41 = k15.mul_add(t31 * t33, h6);
+        let t42 = s5.mul_add(t38, c5 * t37);
+        let t43 = s5 * t37 - c5 * t38;
+        let t44 = s4.mul_add(t39, c4 * t42);
+        let t45 = s4 * t42 - c4 * t39;
+        let t46 = k16.mul_add(t44, k27.mul_add(t18, k64 * t21));
+        let t47 = k16.mul_add(t43, k65.mul_add(t22, k24 * t18));
+        let t48 = c3.mul_add(t47, s3 * t46);
+        let t49 = k23.mul_add(t6 + t7, u106);
+        let t50 = k2.mul_add(t8, u107);
+        let t51 = s3.mul_add(t50, c3 * t49);
+        let t52 = c3 * t50 - s3 * t49;
+        let t53 = k2.mul_add(t18, k5 * t21) + t51;
+        let t54 = k36
             .mul_add(
-                t32 * t39,
-                k18.mul_add(-(c4 * t24) - s4 * t52, k19.mul_add(t35, k16 * t33)),
+                t33 * t40,
+                k19.mul_add(-(c4 * t25) - s4 * t53, k20.mul_add(t36, k17 * t34)),
             );
         /// centripetal, Coriolis and gravity torque 5
         let h5 = k7
             .mul_add(
-                t30 * t39,
-                k18
+                t31 * t40,
+                k19
                     .mul_add(
                         s5
                             .mul_add(
-                                k22.mul_add(t18, k4 * t16) + t51,
-                                c5 * (c4 * t52 - s4 * t24),
+                                k23.mul_add(t22, k4 * t18) + t52,
+                                c5 * (c4 * t53 - s4 * t25),
                             ),
-                        k17.mul_add(t34, k38 * t29),
+                        k18.mul_add(t35, k39 * t30),
                     ),
             );
-        let t54 = k21.mul_add(t26 * t27, k6 * t28) + (c5 * t53 - s5 * t40);
-        let t55 = k59 * (t25 * t27) - h5;
+        let t55 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t54 - s5 * t41);
+        let t56 = k60 * (t26 * t28) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = k20.mul_add(t25 * t26, k21 * t14) + s5.mul_add(t53, c5 * t40);
-        let t56 = k43
+        let h4 = k21.mul_add(t26 * t27, k22 * t14) + s5.mul_add(t54, c5 * t41);
+        let t57 = k44
             .mul_add(
-                t44,
-                k26.mul_add(t9, k25.mul_add(t14, k28 * t13) + (t11 * t23 - t12 * t22))
-                    + (c4 * t54 - s4 * t55),
+                t45,
+                k27
+                    .mul_add(
+                        t9,
+                        k28
+                            .mul_add(
+                                t20,
+                                k14.mul_add(t16 - t17, k66.mul_add(t23, k29 * t13)),
+                            ),
+                    ) + (c4 * t55 - s4 * t56),
             );
-        let t57 = k42
-            .mul_add(t44, k56.mul_add(t9, k25.mul_add(t13, t12 * t21 - t10 * t23)) + h4);
+        let t58 = k43
+            .mul_add(
+                t45,
+                k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24))) + h4,
+            );
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k43.mul_add(t43, k42 * t42)
-            + (k13.mul_add(t14, t10 * t22 - t11 * t21) + k57.mul_add(t50, k23 * t51)
-                - c4.mul_add(t55, s4 * t54));
+        let h3 = k44.mul_add(t44, k43 * t43)
+            + (k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
+                + k65.mul_add(t51, k24 * t52) - c4.mul_add(t56, s4 * t55));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = k2
-            .mul_add(t47, u108 + (k11.mul_add(t4, k31 * t3) + (t1 * t7 - t2 * t6)) + h3);
+        let h2 = k2.mul_add(t48, u108 + k54.mul_add(t8, k10 * (t5 - t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
-                k22
+                k23
                     .mul_add(
-                        k18.mul_add(t44, k26.mul_add(t20, k23 * t19)),
-                        k3 * (c3 * t45 - s3 * t46),
+                        k19.mul_add(t45, k27.mul_add(t24, k24 * t23)),
+                        k3 * (c3 * t46 - s3 * t47),
                     )
-                    + (k10.mul_add(t3, qd2 * t6 - t1 * t8) + c3.mul_add(t57, s3 * t56)),
+                    + (k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
+                        + c3.mul_add(t58, s3 * t57)),
                 s2
-                    * k47
+                    * k48
                         .mul_add(
-                            t47,
-                            k9.mul_add(t4, k32 * t3) + (t2 * t8 - qd2 * t7)
-                                + (c3 * t56 - s3 * t57),
+                            t48,
+                            k31
+                                .mul_add(
+                                    t3,
+                                    k12
+                                        .mul_add(
+                                            t6 - t7,
+                                            k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                        ),
+                                ) + (c3 * t57 - s3 * t58),
                         ),
             );
         [h1, h2, h3, h4, h5, h6]
@@ -1247,7 +1321,9 @@ mod __dynamics {
             c5,
             k6,
             k7,
+            k9,
             k10,
+            k11,
             k12,
             k13,
             k14,
@@ -1260,24 +1336,31 @@ mod __dynamics {
             k21,
             k22,
             k23,
-            k25,
+            k24,
             k26,
             k27,
             k28,
-            k30,
+            k29,
             k31,
             k32,
             k33,
-            k35,
-            k42,
+            k34,
+            k36,
             k43,
-            k47,
+            k44,
+            k48,
             u106,
             u107,
+            k53,
+            k54,
             u108,
-            k56,
             k57,
-            k59,
+            k58,
+            k60,
+            k64,
+            k65,
+            k66,
+            k68,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1286,129 +1369,158 @@ mod __dynamics {
         let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
-        let t5 = t2 * t2;
-        let t6 = k31.mul_add(qd2, k10.mul_add(t2, k32 * t1));
-        let t7 = k12.mul_add(qd2, k10 * t1);
-        let t8 = k30.mul_add(qd2, k12.mul_add(t2, k31 * t1));
+        let t5 = t1 * t1;
+        let t6 = t2 * t2;
+        let t7 = qd2 * qd2;
+        let t8 = t1 * t2;
         let t9 = s3.mul_add(t2, c3 * t1);
         let t10 = c3 * t2 - s3 * t1;
         let t11 = qd2 + qd3;
-        let t12 = t11 * t11;
-        let t13 = t9 * t10;
-        let t14 = t10.mul_add(t10, t12);
-        let t15 = t9.mul_add(t9, t12);
-        let t16 = k25.mul_add(t10, k28 * t9);
-        let t17 = k13.mul_add(t11, k25 * t9);
-        let t18 = k27.mul_add(t11, k13 * t10);
-        let t19 = c4 * t9 - s4 * t11;
-        let t20 = -(c4 * t11) - s4 * t9;
-        let t21 = qd4 + t10;
-        let t22 = s5.mul_add(t21, c5 * t19);
-        let t23 = c5 * t21 - s5 * t19;
-        let t24 = qd5 - t20;
-        let t25 = t22 * t23;
+        let t12 = t9 * t9;
+        let t13 = t10 * t10;
+        let t14 = t11 * t11;
+        let t15 = t9 * t10;
+        let t16 = t9 * t11;
+        let t17 = t10 * t11;
+        let t18 = t13 + t14;
+        let t19 = t12 + t14;
+        let t20 = c4 * t9 - s4 * t11;
+        let t21 = -(c4 * t11) - s4 * t9;
+        let t22 = qd4 + t10;
+        let t23 = s5.mul_add(t22, c5 * t20);
+        let t24 = c5 * t22 - s5 * t20;
+        let t25 = qd5 - t21;
         let t26 = t23 * t24;
-        let t27 = t24.mul_add(t24, t22 * t22);
-        let t28 = qd6 + t23;
-        let t29 = s2.mul_add(qdd1, t3);
-        let t30 = c2 * qdd1 - t4;
-        let t31 = k2.mul_add(t4 - t30, k47 * t1.mul_add(t1, t5));
-        let t32 = u106 + k3.mul_add(t4 + t30, k22 * qd2.mul_add(qd2, t5));
-        let t33 = u107 + k3.mul_add(t3 - t29, k2 * t1.mul_add(t2, qdd2));
-        let t34 = s3.mul_add(t33, c3 * t32);
-        let t35 = c3 * t33 - s3 * t32;
-        let t36 = qd3.mul_add(t10, s3.mul_add(t30, c3 * t29));
-        let t37 = c3 * t30 - s3 * t29 - qd3 * t9;
-        let t38 = qdd2 + qdd3;
-        let t39 = t13 - t38;
-        let t40 = t13 + t38;
-        let t41 = t9 * t11 - t37;
-        let t42 = t10.mul_add(t11, t36);
-        let t43 = t34 + k2.mul_add(t39, k5 * t14);
-        let t44 = t31 + k2.mul_add(t42, k4 * t41);
-        let t45 = qd4.mul_add(t20, c4 * t36 - s4 * t38);
-        let t46 = qdd4 + t37;
-        let t47 = qd5.mul_add(t23, s5.mul_add(t46, c5 * t45));
-        let t48 = qdd5 - (-(c4 * t38) - s4 * t36 - qd4 * t19);
-        let t49 = t25 - t48;
-        let t50 = t26 + t47;
+        let t27 = t24 * t25;
+        let t28 = t25.mul_add(t25, t23 * t23);
+        let t29 = qd6 + t24;
+        let t30 = s2.mul_add(qdd1, t3);
+        let t31 = c2 * qdd1 - t4;
+        let t32 = t4 + t31;
+        let t33 = qdd2 + t8;
+        let t34 = t3 - t30;
+        let t35 = t4 - t31;
+        let t36 = k2.mul_add(t35, k48 * (t5 + t6));
+        let t37 = u106 + k3.mul_add(t32, k23 * (t6 + t7));
+        let t38 = u107 + k3.mul_add(t34, k2 * t33);
+        let t39 = s3.mul_add(t38, c3 * t37);
+        let t40 = c3 * t38 - s3 * t37;
+        let t41 = qd3.mul_add(t10, s3.mul_add(t31, c3 * t30));
+        let t42 = c3 * t31 - s3 * t30 - qd3 * t9;
+        let t43 = qdd2 + qdd3;
+        let t44 = t15 - t43;
+        let t45 = t15 + t43;
+        let t46 = t16 - t42;
+        let t47 = t17 + t41;
+        let t48 = t39 + k2.mul_add(t44, k5 * t18);
+        let t49 = t36 + k2.mul_add(t47, k4 * t46);
+        let t50 = qd4.mul_add(t21, c4 * t41 - s4 * t43);
+        let t51 = qdd4 + t42;
+        let t52 = qd5.mul_add(t24, s5.mul_add(t51, c5 * t50));
+        let t53 = qdd5 - (-(c4 * t43) - s4 * t41 - qd4 * t20);
+        let t54 = t26 - t53;
+        let t55 = t27 + t52;
         /// T6 (6.46)
-        let tau6 = k7 * (qdd6 + (c5 * t46 - s5 * t45 - qd5 * t22));
-        let t51 = k35
+        let tau6 = k7 * (qdd6 + (c5 * t51 - s5 * t50 - qd5 * t23));
+        let t56 = k36
             .mul_add(
-                t24 * t28,
-                k18.mul_add(-(c4 * t44) - s4 * t43, k16.mul_add(t47, k19 * t26)),
+                t25 * t29,
+                k19.mul_add(-(c4 * t49) - s4 * t48, k17.mul_add(t52, k20 * t27)),
             );
-        let t52 = k14.mul_add(t22 * t24, tau6);
+        let t57 = k15.mul_add(t23 * t25, tau6);
         /// T5 (6.46)
         let tau5 = k7
             .mul_add(
-                t22 * t28,
-                k18
+                t23 * t29,
+                k19
                     .mul_add(
                         s5
                             .mul_add(
-                                t35 + k4.mul_add(t40, k22 * t15),
-                                c5 * (c4 * t43 - s4 * t44),
+                                t40 + k4.mul_add(t45, k23 * t19),
+                                c5 * (c4 * t48 - s4 * t49),
                             ),
-                        k19.mul_add(t48, k17 * t25),
+                        k20.mul_add(t53, k18 * t26),
                     ),
             );
-        let t53 = c5.mul_add(t49, s5 * t27);
-        let t54 = s5 * t49 - c5 * t27;
-        let t55 = k6.mul_add(t45, k21 * (t20 * t21)) + (c5 * t51 - s5 * t52);
-        let t56 = k59 * (t19 * t21) - tau5;
+        let t58 = c5.mul_add(t54, s5 * t28);
+        let t59 = s5 * t54 - c5 * t28;
+        let t60 = k6.mul_add(t50, k22 * (t21 * t22)) + (c5 * t56 - s5 * t57);
+        let t61 = k60 * (t20 * t22) - tau5;
         /// T4 (6.46)
-        let tau4 = k21.mul_add(t46, k20 * (t19 * t20)) + c5.mul_add(t52, s5 * t51);
-        let t57 = s4.mul_add(t50, c4 * t53);
-        let t58 = s4 * t53 - c4 * t50;
-        let t59 = k15.mul_add(t57, k26.mul_add(t39, k56 * t14));
-        let t60 = k15.mul_add(t54, k23.mul_add(t40, k57 * t15));
-        let t61 = k43
+        let tau4 = k22.mul_add(t51, k21 * (t20 * t21)) + c5.mul_add(t57, s5 * t56);
+        let t62 = s4.mul_add(t55, c4 * t58);
+        let t63 = s4 * t58 - c4 * t55;
+        let t64 = k16.mul_add(t62, k27.mul_add(t44, k64 * t18));
+        let t65 = k16.mul_add(t59, k24.mul_add(t45, k65 * t19));
+        let t66 = k44
             .mul_add(
-                t58,
-                k26.mul_add(t31, t10 * t18 - t11 * t17 + k25.mul_add(t37, k28 * t36))
-                    + (c4 * t55 - s4 * t56),
+                t63,
+                k27
+                    .mul_add(
+                        t36,
+                        k28
+                            .mul_add(
+                                t17,
+                                k14.mul_add(t13 - t14, k66.mul_add(t46, k29 * t41)),
+                            ),
+                    ) + (c4 * t60 - s4 * t61),
             );
-        let t62 = k42
+        let t67 = k43
             .mul_add(
-                t58,
-                k56.mul_add(t31, t11 * t16 - t9 * t18 + k13.mul_add(t38, k25 * t36))
-                    + tau4,
+                t63,
+                k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47))) + tau4,
             );
         /// T3 (6.46)
-        let tau3 = t9 * t17 - t10 * t16 + k27.mul_add(t38, k13 * t37)
-            + k57.mul_add(t34, k23 * t35) - c4.mul_add(t56, s4 * t55)
-            + k43.mul_add(t57, k42 * t54);
-        let t63 = c3.mul_add(t60, s3 * t59);
+        let tau3 = k58
+            .mul_add(t15, k26.mul_add(t12 - t13, k14.mul_add(t16 + t42, k28 * t43)))
+            + k65.mul_add(t39, k24 * t40) - c4.mul_add(t61, s4 * t60)
+            + k44.mul_add(t62, k43 * t59);
+        let t68 = c3.mul_add(t65, s3 * t64);
         /// T2 (6.46)
         let tau2 = k2
             .mul_add(
-                t63,
+                t68,
                 u108
-                    + (t1 * t7 - t2 * t6
-                        + k30.mul_add(qdd2, k12.mul_add(t30, k31 * t29))) + tau3,
+                    + k54
+                        .mul_add(
+                            t8,
+                            k10
+                                .mul_add(
+                                    t5 - t6,
+                                    k12.mul_add(t32, k68.mul_add(t34, k31 * qdd2)),
+                                ),
+                        ) + tau3,
             );
         /// T1 (6.46)
-        let tau1 = k33
+        let tau1 = k34
             .mul_add(
                 qdd1,
                 c2
                     .mul_add(
-                        qd2 * t6 - t1 * t8 + k12.mul_add(qdd2, k10 * t29)
-                            + c3.mul_add(t62, s3 * t61)
-                            + k22
+                        k53
+                            .mul_add(
+                                t4,
+                                k32
+                                    .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t30))),
+                            ) + c3.mul_add(t67, s3 * t66)
+                            + k23
                                 .mul_add(
-                                    k18.mul_add(t58, k26.mul_add(t42, k23 * t41)),
-                                    k3 * (c3 * t59 - s3 * t60),
+                                    k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
+                                    k3 * (c3 * t64 - s3 * t65),
                                 ),
                         s2
-                            * k47
+                            * k48
                                 .mul_add(
-                                    t63,
-                                    t2 * t8 - qd2 * t7
-                                        + k31.mul_add(qdd2, k10.mul_add(t30, k32 * t29))
-                                        + (c3 * t61 - s3 * t62),
+                                    t68,
+                                    k31
+                                        .mul_add(
+                                            t3,
+                                            k12
+                                                .mul_add(
+                                                    t6 - t7,
+                                                    k32.mul_add(t33, k9.mul_add(t35, k33 * t30)),
+                                                ),
+                                        ) + (c3 * t66 - s3 * t67),
                                 ),
                     ),
             );
@@ -1438,25 +1550,25 @@ mod __dynamics {
             k7,
             k10,
             k12,
-            k13,
-            k16,
-            k19,
-            k21,
+            k14,
+            k17,
+            k20,
             k22,
             k23,
-            k25,
+            k24,
             k26,
             k27,
             k28,
-            k30,
+            k29,
             k31,
             k32,
             k33,
-            k44,
-            k47,
-            k56,
-            k57,
-            k60,
+            k34,
+            k45,
+            k48,
+            k64,
+            k65,
+            k69,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1472,16 +1584,16 @@ mod __dynamics {
         let t10 = s5.mul_add(t9, c5 * t8);
         let t11 = qd5 - (-(c4 * t7) - s4 * t4);
         let t12 = qd6 + (c5 * t9 - s5 * t8);
-        let t13 = k47.mul_add(t1, k2 * qd2);
+        let t13 = k48.mul_add(t1, k2 * qd2);
         let t14 = s3.mul_add(t13, k3 * t5);
-        let t15 = k47.mul_add(t3, c3 * t13);
-        let t16 = k22.mul_add(t7, t14);
-        let t17 = k22.mul_add(t2, k5.mul_add(t6, k2 * t4));
+        let t15 = k48.mul_add(t3, c3 * t13);
+        let t16 = k23.mul_add(t7, t14);
+        let t17 = k23.mul_add(t2, k5.mul_add(t6, k2 * t4));
         k1
             * k7
                 .mul_add(
                     t12 * t12,
-                    k60
+                    k69
                         .mul_add(
                             t10
                                 .mul_add(
@@ -1490,37 +1602,37 @@ mod __dynamics {
                                         * s5
                                             .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
                                 ),
-                            k44
+                            k45
                                 .mul_add(
-                                    k22
+                                    k23
                                         .mul_add(
-                                            t2 * k56.mul_add(t6, k26 * t4),
-                                            k23.mul_add(t7 * t15, k57 * (t7 * t14)),
+                                            t2 * k64.mul_add(t6, k27 * t4),
+                                            k24.mul_add(t7 * t15, k65 * (t7 * t14)),
                                         ),
-                                    k33
+                                    k34
                                         .mul_add(
                                             qd1 * qd1,
                                             qd2
                                                 .mul_add(
-                                                    k30.mul_add(qd2, k12.mul_add(t2, k31 * t1)),
+                                                    k31.mul_add(qd2, k12.mul_add(t2, k32 * t1)),
                                                     t2
                                                         .mul_add(
                                                             k12.mul_add(qd2, k10 * t1),
-                                                            t1 * k31.mul_add(qd2, k10.mul_add(t2, k32 * t1)),
+                                                            t1 * k32.mul_add(qd2, k10.mul_add(t2, k33 * t1)),
                                                         ),
                                                 ),
                                         ),
                                 )
                                 + t7
                                     .mul_add(
-                                        k27.mul_add(t7, k13 * t6),
+                                        k28.mul_add(t7, k14 * t6),
                                         t6
                                             .mul_add(
-                                                k13.mul_add(t7, k25 * t4),
-                                                t4 * k25.mul_add(t6, k28 * t4),
+                                                k14.mul_add(t7, k26 * t4),
+                                                t4 * k26.mul_add(t6, k29 * t4),
                                             ),
-                                    ) + k21.mul_add(t9 * t9, k6 * (t8 * t8)),
-                        ) + k19.mul_add(t11 * t11, k16 * (t10 * t10)),
+                                    ) + k22.mul_add(t9 * t9, k6 * (t8 * t8)),
+                        ) + k20.mul_add(t11 * t11, k17 * (t10 * t10)),
                 )
     }
     #[inline(always)]

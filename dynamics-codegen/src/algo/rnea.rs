@@ -4,7 +4,8 @@
 //! Forward, in joint frames: `ω_i = Rᵀω_{i−1} + q̇_i z`, `ω̇_i = Rᵀω̇_{i−1} + Rᵀω_{i−1} × q̇_i z +
 //! q̈_i z`, `v̇_i = Rᵀ(v̇_{i−1} + ω̇_{i−1} × p_i + ω_{i−1} × (ω_{i−1} × p_i))` (plus `2ω_i × ḋ z + d̈ z`
 //! for a prismatic joint), with `v̇_0 = −gravity`. With first moments `h = m c`:
-//! `F_i = m v̇_i + ω̇_i × h + ω_i × (ω_i × h)`, `N_i = I ω̇_i + ω_i × I ω_i + h × v̇_i`.
+//! `F_i = m v̇_i + ω̇_i × h + ω_i × (ω_i × h)`, `N_i = I ω̇_i + ω_i × I ω_i + h × v̇_i`, the first two
+//! terms of `N_i` read off Khalil's `U = [ω̇]× + [ω]×[ω]×`, which `F_i` and `v̇_{i+1}` use too.
 //! Backward: `f_i = F_i + R f_{i+1}`, `n_i = N_i + R n_{i+1} + p_{i+1} × R f_{i+1}`, and
 //! `tau_i = n_i · z` (revolute) or `f_i · z` (prismatic). Setting `qdd = 0` and gravity to zero
 //! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
@@ -26,11 +27,13 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut w = V3::zero(zero);
     let mut wd = V3::zero(zero);
     let mut vd = gravity.neg();
+    // The base does not move.
+    let mut u = Rates::new(w, wd);
     let mut forces = Vec::with_capacity(n);
     let unturned = unturned_last(chain);
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
-        let vd_parent = vd.add(u_mul(w, wd, p));
+        let vd_parent = vd.add(u.mul(p));
         let to_child = |v| {
             if unturned == Some(i) {
                 j.untwist(v)
@@ -55,11 +58,9 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
             }
         }
         let b = &j.body;
-        let f = vd.scale(b.mass).add(u_mul(w, wd, b.h));
-        let nn = b
-            .inertia_mul(wd)
-            .add(w.cross(b.inertia_mul(w)))
-            .add(b.h.cross(vd));
+        u = Rates::new(w, wd);
+        let f = vd.scale(b.mass).add(u.mul(b.h));
+        let nn = u.inertial_moment(b.inertia).add(b.h.cross(vd));
         forces.push((f, nn));
     }
     let mut tau = vec![zero; n];
@@ -96,19 +97,82 @@ fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
     (j.kind == JointKind::Revolute && j.body.is_axially_symmetric()).then_some(last)
 }
 
-/// `U x` with `U = [ω̇]× + [ω]×[ω]×`, that is `ω̇ × x + ω × (ω × x)`, written with the products
-/// `ω_i ω_j` so that the link's centre-of-mass and next-origin terms share them (Khalil).
-fn u_mul<S: Scalar>(w: V3<S>, wd: V3<S>, x: V3<S>) -> V3<S> {
-    let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
-    let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
-    let u = [
-        [-(yy + zz), xy - wd.z, xz + wd.y],
-        [xy + wd.z, -(xx + zz), yz - wd.x],
-        [xz - wd.y, yz + wd.x, -(xx + yy)],
-    ];
-    V3::new(
-        u[0][0] * x.x + u[0][1] * x.y + u[0][2] * x.z,
-        u[1][0] * x.x + u[1][1] * x.y + u[1][2] * x.z,
-        u[2][0] * x.x + u[2][1] * x.y + u[2][2] * x.z,
-    )
+/// A link's angular velocity `ω` and acceleration `ω̇` as Khalil writes them: the products
+/// `ω_i ω_j` and `U = [ω̇]× + [ω]×[ω]×`, which the link's force, its moment and the next
+/// link's acceleration all read.
+struct Rates<S> {
+    /// `ω̇`.
+    wd: V3<S>,
+    /// `[ω_x², ω_y², ω_z², ω_x ω_y, ω_x ω_z, ω_y ω_z]`.
+    products: [S; 6],
+    /// `U`, rows first.
+    u: [[S; 3]; 3],
+}
+
+impl<S: Scalar> Rates<S> {
+    fn new(w: V3<S>, wd: V3<S>) -> Rates<S> {
+        let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
+        let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
+        let u = [
+            [-(yy + zz), xy - wd.z, xz + wd.y],
+            [xy + wd.z, -(xx + zz), yz - wd.x],
+            [xz - wd.y, yz + wd.x, -(xx + yy)],
+        ];
+        Rates {
+            wd,
+            products: [xx, yy, zz, xy, xz, yz],
+            u,
+        }
+    }
+
+    /// `U x = ω̇ × x + ω × (ω × x)`: the acceleration of the point `x` of the link relative to
+    /// its origin (the centre of mass and the next origin share the products).
+    fn mul(&self, x: V3<S>) -> V3<S> {
+        let u = &self.u;
+        V3::new(
+            u[0][0] * x.x + u[0][1] * x.y + u[0][2] * x.z,
+            u[1][0] * x.x + u[1][1] * x.y + u[1][2] * x.z,
+            u[2][0] * x.x + u[2][1] * x.y + u[2][2] * x.z,
+        )
+    }
+
+    /// `I ω̇ + ω × I ω` for `I = [a, b, c, d, e, f]` (`[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`), read off
+    /// the entries of `U` rather than through `I ω`: its x component is
+    /// `a ω̇_x − d U_zx + e U_yx + f (ω_y² − ω_z²) + (c − b) ω_y ω_z`, and y and z follow by
+    /// turning the axes. 30 operations against 42, the off-diagonal `U_ij` being shared with
+    /// the forces.
+    fn inertial_moment(&self, inertia: [S; 6]) -> V3<S> {
+        let [xx, yy, zz, xy, xz, yz] = self.products;
+        let (u, wd) = (&self.u, self.wd);
+        let [a, b, c, d, e, f] = inertia;
+        V3::new(
+            a * wd.x - d * u[2][0] + e * u[1][0] + f * (yy - zz) + (c - b) * yz,
+            b * wd.y + d * u[2][1] - f * u[0][1] + e * (zz - xx) + (a - c) * xz,
+            c * wd.z - e * u[1][2] + f * u[0][2] + d * (xx - yy) + (b - a) * xy,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Rates;
+    use crate::algo::{Mat3, V3};
+    use std::ops::Add;
+
+    /// The moment read off `U` equals `I ω̇ + ω × I ω` computed directly.
+    #[test]
+    fn inertial_moment_from_u() {
+        let inertia = [0.7, 0.5, 0.4, -0.05, 0.08, 0.03];
+        for (w, wd) in [
+            (V3::new(0.3, -1.2, 2.1), V3::new(-0.7, 0.4, 1.9)),
+            (V3::new(-2.0, 0.1, 0.0), V3::new(0.0, 3.3, -0.2)),
+        ] {
+            let i = Mat3::symmetric(inertia);
+            let direct = i.mul_vec(wd).add(w.cross(i.mul_vec(w)));
+            let by_u = Rates::new(w, wd).inertial_moment(inertia);
+            for (a, b) in [(by_u.x, direct.x), (by_u.y, direct.y), (by_u.z, direct.z)] {
+                assert!((a - b).abs() < 1e-14, "{a} vs {b}");
+            }
+        }
+    }
 }
