@@ -61,53 +61,53 @@ mod __dynamics {
         k33: T,
         k34: T,
         k36: T,
+        k37: T,
         u1: T,
         k38: T,
-        k39: T,
+        k41: T,
         m4_4: T,
         u5: T,
-        k42: T,
         k43: T,
         k44: T,
+        k45: T,
         m3_4: T,
         m3_3: T,
-        u31: T,
-        k45: T,
+        u32: T,
         m2_3: T,
         k48: T,
         m2_2: T,
-        u53: T,
         u54: T,
+        u55: T,
         m1_2: T,
         m1_1: T,
-        u55: T,
-        u59: T,
+        u56: T,
+        u60: T,
         m1_3: T,
-        u62: T,
+        u63: T,
         m2_4: T,
-        u69: T,
-        u71: T,
+        u70: T,
+        u72: T,
         m1_4: T,
-        u73: T,
+        u74: T,
         m3_5: T,
-        u82: T,
+        u83: T,
         m2_5: T,
-        u93: T,
-        u95: T,
+        u94: T,
+        u96: T,
         m1_5: T,
         m4_6: T,
         m2_6: T,
-        u102: T,
+        u103: T,
         m1_6: T,
         g2: T,
         g3: T,
         g4: T,
         g5: T,
-        u106: T,
         u107: T,
+        u108: T,
         k53: T,
         k54: T,
-        u108: T,
+        u109: T,
         k57: T,
         k58: T,
         k60: T,
@@ -122,37 +122,37 @@ mod __dynamics {
         k69: T,
         p: T,
         k73: T,
-        u110: T,
-        u111: T,
         u112: T,
-        u115: T,
+        u113: T,
+        u114: T,
         u117: T,
-        u118: T,
+        u119: T,
         u120: T,
         u122: T,
-        u129: T,
-        u130: T,
+        u124: T,
         u132: T,
-        u134: T,
+        u133: T,
         u135: T,
+        u137: T,
         u138: T,
-        u139: T,
+        u141: T,
         u142: T,
-        u146: T,
-        u147: T,
+        u145: T,
+        u149: T,
+        u150: T,
         k76: T,
-        u156: T,
         u159: T,
-        u166: T,
-        u167: T,
-        u169: T,
+        u162: T,
+        u170: T,
         u171: T,
-        u172: T,
-        u174: T,
+        u173: T,
         u175: T,
         u176: T,
-        u177: T,
         u178: T,
+        u179: T,
+        u180: T,
+        u181: T,
+        u182: T,
         k78: T,
         k79: T,
         k80: T,
@@ -197,16 +197,16 @@ mod __dynamics {
         let k33: T = T::from_f64(-1.601861202);
         let k34: T = T::from_f64(3.153542285625);
         let k35: T = T::from_f64(-9.81);
-        let k36: T = T::from_f64(-0.00004);
-        let k37: T = T::from_f64(0.00028216);
+        let k36: T = T::from_f64(2.0);
+        let k37: T = T::from_f64(-0.00004);
         let k38: T = T::from_f64(0.00020216);
-        let k39: T = T::from_f64(-0.00064216);
-        let k40: T = T::from_f64(-0.00020216);
-        let k41: T = T::from_f64(-0.000058464);
-        let k42: T = T::from_f64(0.001243584);
-        let k43: T = T::from_f64(0.000058464);
-        let k44: T = T::from_f64(-0.001243584);
-        let k45: T = T::from_f64(2.0);
+        let k39: T = T::from_f64(-0.00020216);
+        let k40: T = T::from_f64(0.00028216);
+        let k41: T = T::from_f64(-0.00064216);
+        let k42: T = T::from_f64(-0.000058464);
+        let k43: T = T::from_f64(0.001243584);
+        let k44: T = T::from_f64(0.000058464);
+        let k45: T = T::from_f64(-0.001243584);
         let k46: T = T::from_f64(-2.0);
         let k47: T = T::from_f64(0.000432144);
         let k48: T = T::from_f64(-0.15005);
@@ -249,270 +249,259 @@ mod __dynamics {
             q_[4],
         ]);
         let u1 = s5 * c5;
-        let u2 = k7.mul_add(s5 * s5, k17 * (c5 * c5));
-        let u3 = k37 - u2;
+        let u2 = k39.mul_add(s5 * s5, k17);
+        let u3 = k40 - u2;
         let u4 = k6 + u2;
         /// D44 (6.43) + actuator inertia
         let m4_4 = k22 + u3;
         let u5 = c4 * s5;
         let u6 = s4 * s5;
-        let u7 = c4 * c4;
+        let u7 = s4 * s4;
         let u8 = s4 * c4;
-        let u9 = k20.mul_add(s4 * s4, u4 * u7);
-        let u10 = k20 + u4 - u9;
-        let u11 = u8 * (k39 + u4);
-        let u12 = c4 * u1;
-        let u13 = k38 * u12;
-        let u14 = k41 * u5;
-        let u15 = k42 * c5;
-        let u16 = m4_4 + u14;
-        let u17 = u14 + u16;
-        let u18 = u14 + u15;
-        let u19 = k44 * u5;
-        let u20 = k43 * u6;
-        let u21 = k41 * u6 - u11;
-        let u22 = k42 * u6;
+        let u9 = k41 + u4;
+        let u10 = u4 - u7 * u9;
+        let u11 = k20 + u4 - u10;
+        let u12 = u8 * u9;
+        let u13 = c4 * u1;
+        let u14 = k38 * u13;
+        let u15 = k42 * u5;
+        let u16 = k43 * c5;
+        let u17 = m4_4 + u15;
+        let u18 = u15 + u17;
+        let u19 = u15 + u16;
+        let u20 = k45 * u5;
+        let u21 = k44 * u6;
+        let u22 = k42 * u6 - u12;
+        let u23 = k43 * u6;
         /// D34 = D43 (6.43)
-        let m3_4 = k44.mul_add(u6, k40 * (s4 * u1));
-        let u23 = k19.mul_add(u5, k24);
-        let u24 = k16.mul_add(c5, k27);
-        let u25 = k29 + (u15 + (u9 + u15));
+        let m3_4 = k45.mul_add(u6, k39 * (s4 * u1));
+        let u24 = k19.mul_add(u5, k24);
+        let u25 = k16.mul_add(c5, k27);
+        let u26 = k29 + (u16 + (u10 + u16));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k28 + (u18 + (u10 + u18));
-        let u26 = k26 + (u13 - k43.mul_add(c5, u19));
-        let u27 = k14 + m3_4;
-        let u28 = c3 * u23 - s3 * u24;
-        let u29 = s3 * u23;
-        let u30 = c3 * u24;
-        let u31 = u29 + u30;
-        let u32 = c3 * c3;
+        let m3_3 = k28 + (u19 + (u11 + u19));
+        let u27 = k26 + (u14 - k44.mul_add(c5, u20));
+        let u28 = k14 + m3_4;
+        let u29 = c3 * u24 - s3 * u25;
+        let u30 = s3 * u24;
+        let u31 = c3 * u25;
+        let u32 = u30 + u31;
         let u33 = s3 * s3;
         let u34 = s3 * c3;
-        let u35 = u17.mul_add(u33, k46.mul_add(u26 * u34, u25 * u32));
-        let u36 = u17 + u25 - u35;
-        let u37 = u32 - u33;
-        let u38 = u26.mul_add(u37, u34 * (u25 - u17));
-        let u39 = c3 * u21 - s3 * u27;
-        let u40 = c3.mul_add(u27, s3 * u21);
-        let u41 = k2 * u28;
-        let u42 = k47 * u6;
-        let u43 = u41 + u42;
-        let u44 = u43 + (u36 + u43);
+        let u35 = u26 - u18;
+        let u36 = k46.mul_add(u27 * u34, u26 - u33 * u35);
+        let u37 = u18 + u26 - u36;
+        let u38 = c3 * c3 - u33;
+        let u39 = u27.mul_add(u38, u34 * u35);
+        let u40 = c3 * u22 - s3 * u28;
+        let u41 = c3.mul_add(u28, s3 * u22);
+        let u42 = k2 * u29;
+        let u43 = k47 * u6;
+        let u44 = u42 + u43;
+        let u45 = u44 + (u37 + u44);
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + u41;
-        let u45 = k23 * u31;
-        let u46 = k33 + (u42 + (u35 + u42));
+        let m2_3 = m3_3 + u42;
+        let u46 = k23 * u32;
+        let u47 = k33 + (u43 + (u36 + u43));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k31 + (u41 + m2_3);
-        let u47 = k10 + (u38 + u45);
-        let u48 = k32 + (u39 - k3.mul_add(u28, u22));
-        let u49 = k12 + k48.mul_add(u31, u40);
-        let u50 = c2 * c2;
+        let m2_2 = k31 + (u42 + m2_3);
+        let u48 = k10 + (u39 + u46);
+        let u49 = k32 + (u40 - k3.mul_add(u29, u23));
+        let u50 = k12 + k48.mul_add(u32, u41);
         let u51 = s2 * s2;
         let u52 = s2 * c2;
-        let u53 = u47.mul_add(u50 - u51, u52 * (u46 - u44));
-        let u54 = c2 * u48 - s2 * u49;
+        let u53 = u47 - u45;
+        let u54 = u48.mul_add(c2 * c2 - u51, u52 * u53);
+        let u55 = c2 * u49 - s2 * u50;
         /// D12 = D21 (6.43)
-        let m1_2 = c2.mul_add(u49, s2 * u48);
+        let m1_2 = c2.mul_add(u50, s2 * u49);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k34
-            + (u44 + u46 - u44.mul_add(u51, k46.mul_add(u47 * u52, u46 * u50)));
-        let u55 = -u30 - u29;
-        let u56 = k48.mul_add(u28, u39);
-        let u57 = k3.mul_add(u55, u40);
-        let u58 = c2 * u56;
-        let u59 = u58 - s2 * u57;
+        let m1_1 = k34 + (u45 + u47 - k46.mul_add(u48 * u52, u47 - u51 * u53));
+        let u56 = -u31 - u30;
+        let u57 = k48.mul_add(u29, u40);
+        let u58 = k3.mul_add(u56, u41);
+        let u59 = c2 * u57;
+        let u60 = u59 - s2 * u58;
         /// D13 = D31 (6.43)
-        let m1_3 = c2.mul_add(u57, s2 * u56);
-        let u60 = k42 * u5;
-        let u61 = u13 + u60;
-        let u62 = c3 * u6;
-        let u63 = s3 * u6;
-        let u64 = c3.mul_add(u16, s3 * u61);
-        let u65 = k49 * u63;
-        let u66 = k47 * u62;
-        let u67 = c3 * u61 - s3 * u16 + u65;
-        let u68 = u64 + (u19 + u66);
+        let m1_3 = c2.mul_add(u58, s2 * u57);
+        let u61 = k43 * u5;
+        let u62 = u14 + u61;
+        let u63 = c3 * u6;
+        let u64 = s3 * u6;
+        let u65 = c3.mul_add(u17, s3 * u62);
+        let u66 = k49 * u64;
+        let u67 = k47 * u63;
+        let u68 = c3 * u62 - s3 * u17 + u66;
+        let u69 = u65 + (u20 + u67);
         /// D24 = D42 (6.43)
-        let m2_4 = k42.mul_add(u63, m3_4);
-        let u69 = c2.mul_add(u63, s2 * u62);
-        let u70 = c2 * u67;
-        let u71 = u70 - s2 * u68;
+        let m2_4 = k43.mul_add(u64, m3_4);
+        let u70 = c2.mul_add(u64, s2 * u63);
+        let u71 = c2 * u68;
+        let u72 = u71 - s2 * u69;
         /// D14 = D41 (6.43)
-        let m1_4 = c2.mul_add(u68, s2 * u67);
-        let u72 = c4 * c5;
-        let u73 = s4 * c5;
-        let u74 = k20 * c4;
-        let u75 = k42 * u73;
-        let u76 = k41 * s5;
-        let u77 = k44 * u72;
-        let u78 = k42 * u72;
-        let u79 = k20.mul_add(s4, u75);
+        let m1_4 = c2.mul_add(u69, s2 * u68);
+        let u73 = c4 * c5;
+        let u74 = s4 * c5;
+        let u75 = k20 * c4;
+        let u76 = k43 * u74;
+        let u77 = k42 * s5;
+        let u78 = k45 * u73;
+        let u79 = k43 * u73;
+        let u80 = k20.mul_add(s4, u76);
         /// D35 = D53 (6.43)
-        let m3_5 = u74 + (u76 + u78);
-        let u80 = c3 * u72;
-        let u81 = s3 * s5;
-        let u82 = u80 - u81;
-        let u83 = s3 * u72;
-        let u84 = c3.mul_add(s5, u83);
-        let u85 = s3 * u73;
-        let u86 = c3 * u73;
-        let u87 = k41.mul_add(u86, s3 * u79);
-        let u88 = k47 * u84;
-        let u89 = k49 * u82;
-        let u90 = k44 * u73;
-        let u91 = k43.mul_add(u85, c3 * u79) + u88;
-        let u92 = u87 + (u89 + u90);
+        let m3_5 = u75 + (u77 + u79);
+        let u81 = c3 * u73;
+        let u82 = s3 * s5;
+        let u83 = u81 - u82;
+        let u84 = s3 * u73;
+        let u85 = c3.mul_add(s5, u84);
+        let u86 = s3 * u74;
+        let u87 = c3 * u74;
+        let u88 = k42.mul_add(u87, s3 * u80);
+        let u89 = k47 * u85;
+        let u90 = k49 * u83;
+        let u91 = k45 * u74;
+        let u92 = k44.mul_add(u86, c3 * u80) + u89;
+        let u93 = u88 + (u90 + u91);
         /// D25 = D52 (6.43)
-        let m2_5 = k44.mul_add(u84, m3_5);
-        let u93 = c2.mul_add(u84, s2 * u82);
-        let u94 = c2 * u91;
-        let u95 = u94 - s2 * u92;
+        let m2_5 = k45.mul_add(u85, m3_5);
+        let u94 = c2.mul_add(u85, s2 * u83);
+        let u95 = c2 * u92;
+        let u96 = u95 - s2 * u93;
         /// D15 = D51 (6.43)
-        let m1_5 = c2.mul_add(u92, s2 * u91);
+        let m1_5 = c2.mul_add(u93, s2 * u92);
         /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
         let m2_6 = k7 * u6;
-        let u96 = c3 * u5;
-        let u97 = s3.mul_add(c5, u96);
-        let u98 = s3 * u5;
-        let u99 = u98 - c3 * c5;
-        let u100 = c2 * u97;
-        let u101 = s2 * u99;
-        let u102 = u100 - u101;
+        let u97 = c3 * u5;
+        let u98 = s3.mul_add(c5, u97);
+        let u99 = s3 * u5;
+        let u100 = u99 - c3 * c5;
+        let u101 = c2 * u98;
+        let u102 = s2 * u100;
+        let u103 = u101 - u102;
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * c2.mul_add(u99, s2 * u97);
+        let m1_6 = k37 * c2.mul_add(u100, s2 * u98);
         /// D2 (6.45), gravity and spring
-        let g2 = k35 * (s2 * (k8 + u31) - c2 * (k30 + u28));
-        let u103 = c2.mul_add(s3, s2 * c3);
-        let u104 = c2 * c3 - s2 * s3;
+        let g2 = k35 * (s2 * (k8 + u32) - c2 * (k30 + u29));
+        let u104 = c2.mul_add(s3, s2 * c3);
+        let u105 = c2 * c3 - s2 * s3;
         /// D3 (6.45), gravity and spring
-        let g3 = k35 * (u24 * u103 - u23 * u104);
-        let u105 = c4 * u103;
+        let g3 = k35 * (u25 * u104 - u24 * u105);
+        let u106 = c4 * u104;
         /// D4 (6.45), gravity and spring
-        let g4 = k52 * (s5 * (s4 * u103));
+        let g4 = k52 * (s5 * (s4 * u104));
         /// D5 (6.45), gravity and spring
-        let g5 = k51 * s5.mul_add(u104, c5 * u105);
-        let u106 = k50 * s2;
-        let u107 = k50 * c2;
-        let u108 = k56.mul_add(s2, k55 * c2);
+        let g5 = k51 * s5.mul_add(u105, c5 * u106);
+        let u107 = k50 * s2;
+        let u108 = k50 * c2;
+        let u109 = k56.mul_add(s2, k55 * c2);
         /// potential energy
         let p = -k51
             .mul_add(
-                c5 * u104 - s5 * u105,
-                k70 + k56.mul_add(c2, k71 * s2) + k59.mul_add(u104, k72 * u103),
+                c5 * u105 - s5 * u106,
+                k70 + k56.mul_add(c2, k71 * s2) + k59.mul_add(u105, k72 * u104),
             );
-        let u109 = u45 + k45.mul_add(u38, u45);
-        let u110 = k46.mul_add(u38, u109)
-            - u51
+        let u110 = k46 * u39;
+        let u111 = u46 + k36.mul_add(u39, u46);
+        let u112 = u110 + u111
+            - k46.mul_add(u52 * k23.mul_add(u29, u36 - u37), u110 - u51 * (u110 - u111));
+        let u113 = s2.mul_add(k3 * u32 - u41, u59);
+        let u114 = s2.mul_add(k48 * u56 - u41, u59);
+        let u115 = k49 * u63;
+        let u116 = k43 * u63;
+        let u117 = s2.mul_add(u115 - u65, u71);
+        let u118 = k45 * u83;
+        let u119 = s2.mul_add(k47 * u83 - u88, u95);
+        let u120 = u102 - u101;
+        let u121 = k46 * u12;
+        let u122 = u21 + k36.mul_add(u12, u21);
+        let u123 = u15 - (u10 - u11);
+        let u124 = k39.mul_add(u13, u20);
+        let u125 = k75.mul_add(u6, u121);
+        let u126 = k46.mul_add(m3_4 * u34, u121 - u33 * u125);
+        let u127 = c3 * u123 - s3 * u124;
+        let u128 = k47 * u5;
+        let u129 = u128 + (u126 + u128);
+        let u130 = u116 + u128;
+        let u131 = u130 + (k74.mul_add(u6, u121) - u126 + u130);
+        let u132 = u116 + u122;
+        let u133 = u116 + u132;
+        let u134 = k45 * u64;
+        let u135 = u129 + u131
+            - k46
                 .mul_add(
-                    u109,
-                    k46 * u52.mul_add(k23.mul_add(u28, u35 - u36), u38 * u50),
+                    u52 * (m3_4.mul_add(u38, u34 * u125) + u134),
+                    u129 - u51 * (u129 - u131),
                 );
-        let u111 = s2.mul_add(k3 * u31 - u40, u58);
-        let u112 = s2.mul_add(k48 * u55 - u40, u58);
-        let u113 = k49 * u62;
-        let u114 = k42 * u62;
-        let u115 = s2.mul_add(u113 - u64, u70);
-        let u116 = k44 * u82;
-        let u117 = s2.mul_add(k47 * u82 - u87, u94);
-        let u118 = u101 - u100;
-        let u119 = k46 * u11;
-        let u120 = u20 + k45.mul_add(u11, u20);
-        let u121 = u14 - (u9 - u10);
-        let u122 = k40.mul_add(u12, u19);
-        let u123 = k74.mul_add(u6 * u33, k46 * m3_4.mul_add(u34, u11 * u32));
-        let u124 = c3 * u121 - s3 * u122;
-        let u125 = k47 * u5;
-        let u126 = u125 + (u123 + u125);
-        let u127 = u114 + u125;
-        let u128 = u127 + (k74.mul_add(u6, u119) - u123 + u127);
-        let u129 = u114 + u120;
-        let u130 = u114 + u129;
-        let u131 = k44 * u63;
-        let u132 = u126 + u128
-            - u51
+        let u136 = c2 * (u66 + c3.mul_add(u124, s3 * u123));
+        let u137 = s2.mul_add(u127 - (u61 + u67), u136);
+        let u138 = s2.mul_add(u115 + u127, u136);
+        let u139 = k42 * u64;
+        let u140 = k44 * u63;
+        let u141 = k43.mul_add(u99, u124);
+        let u142 = c2
+            .mul_add(
+                s3.mul_add(m3_4, u140) + k47.mul_add(u97, u23),
+                s2 * k49.mul_add(u99, c3.mul_add(m3_4, u139)),
+            );
+        let u143 = k42 * u73;
+        let u144 = u75 + u79;
+        let u145 = k41.mul_add(s4, u91);
+        let u146 = k49 * u86;
+        let u147 = k47.mul_add(u87, u78);
+        let u148 = k43 * u86;
+        let u149 = u145 + u148;
+        let u150 = c2
+            .mul_add(
+                k42.mul_add(u81, s3 * u144) + u147,
+                s2 * (k44.mul_add(u84, c3 * u144) + u146),
+            );
+        let u151 = u2 - u3;
+        let u152 = u1 - u1 * u7;
+        let u153 = c4 * u151;
+        let u154 = k45 * s5;
+        let u155 = u154 + k77.mul_add(u152, u154);
+        let u156 = k76.mul_add(u1, u143);
+        let u157 = u143 + u156;
+        let u158 = u143 + u154;
+        let u159 = u158 + k77.mul_add(u1 - u152, u158);
+        let u160 = u153 - (u77 + u78);
+        let u161 = k76.mul_add(u1 * u8, k42 * u74);
+        let u162 = u91 - s4 * u151;
+        let u163 = u155 - u157;
+        let u164 = k46.mul_add(u34 * u160, u155 - u33 * u163);
+        let u165 = c3 * u161 - s3 * u162;
+        let u166 = k47 * u74;
+        let u167 = u166 + (u164 + u166);
+        let u168 = u118 + u166;
+        let u169 = u168 + (u155 + u157 - u164 + u168);
+        let u170 = u118 + (u118 + u159);
+        let u171 = u167 + u169
+            - k46
                 .mul_add(
-                    u128,
-                    k46
-                        .mul_add(
-                            u52
-                                * (m3_4.mul_add(u37, u34 * k75.mul_add(u6, u119)) + u131),
-                            u50 * u126,
-                        ),
+                    u52 * k43.mul_add(u85, u38.mul_add(u160, u34 * u163)),
+                    u167 - u51 * (u167 - u169),
                 );
-        let u133 = c2 * (u65 + c3.mul_add(u122, s3 * u121));
-        let u134 = s2.mul_add(u124 - (u60 + u66), u133);
-        let u135 = s2.mul_add(u113 + u124, u133);
-        let u136 = k41 * u63;
-        let u137 = k43 * u62;
-        let u138 = k42.mul_add(u98, u122);
-        let u139 = c2
+        let u172 = c2 * (u89 + c3.mul_add(u162, s3 * u161));
+        let u173 = s2.mul_add(u165 - (u76 + u90), u172);
+        let u174 = u82 - u81;
+        let u175 = k43.mul_add(u174, u159);
+        let u176 = s2.mul_add(k49.mul_add(u174, u165), u172);
+        let u177 = u79 + u153;
+        let u178 = u148 + u162;
+        let u179 = c2
             .mul_add(
-                s3.mul_add(m3_4, u137) + k47.mul_add(u96, u22),
-                s2 * k49.mul_add(u98, c3.mul_add(m3_4, u136)),
+                u147 + c3.mul_add(u156, s3 * u177),
+                s2 * (u146 + (c3 * u177 - s3 * u156)),
             );
-        let u140 = k41 * u72;
-        let u141 = u74 + u78;
-        let u142 = k39.mul_add(s4, u90);
-        let u143 = k49 * u85;
-        let u144 = k47.mul_add(u86, u77);
-        let u145 = k42 * u85;
-        let u146 = u142 + u145;
-        let u147 = c2
+        let u180 = k42.mul_add(c5, u20);
+        let u181 = k43.mul_add(u100, u180);
+        let u182 = c2
             .mul_add(
-                k41.mul_add(u80, s3 * u141) + u144,
-                s2 * (k43.mul_add(u83, c3 * u141) + u143),
-            );
-        let u148 = u2 - u3;
-        let u149 = u1 * u7;
-        let u150 = c4 * u148;
-        let u151 = k44 * s5;
-        let u152 = u151 + k77.mul_add(u149, u151);
-        let u153 = k76.mul_add(u1, u140);
-        let u154 = u140 + u153;
-        let u155 = u140 + u151;
-        let u156 = u155 + k77.mul_add(u1 - u149, u155);
-        let u157 = u150 - (u76 + u77);
-        let u158 = k76.mul_add(u1 * u8, k41 * u73);
-        let u159 = u90 - s4 * u148;
-        let u160 = u33.mul_add(u154, k46.mul_add(u34 * u157, u32 * u152));
-        let u161 = c3 * u158 - s3 * u159;
-        let u162 = k47 * u73;
-        let u163 = u162 + (u160 + u162);
-        let u164 = u116 + u162;
-        let u165 = u164 + (u152 + u154 - u160 + u164);
-        let u166 = u116 + (u116 + u156);
-        let u167 = u163 + u165
-            - u51
-                .mul_add(
-                    u165,
-                    k46
-                        .mul_add(
-                            u52
-                                * k42.mul_add(u84, u37.mul_add(u157, u34 * (u152 - u154))),
-                            u50 * u163,
-                        ),
-                );
-        let u168 = c2 * (u88 + c3.mul_add(u159, s3 * u158));
-        let u169 = s2.mul_add(u161 - (u75 + u89), u168);
-        let u170 = u81 - u80;
-        let u171 = k42.mul_add(u170, u156);
-        let u172 = s2.mul_add(k49.mul_add(u170, u161), u168);
-        let u173 = u78 + u150;
-        let u174 = u145 + u159;
-        let u175 = c2
-            .mul_add(
-                u144 + c3.mul_add(u153, s3 * u173),
-                s2 * (u143 + (c3 * u173 - s3 * u153)),
-            );
-        let u176 = k41.mul_add(c5, u19);
-        let u177 = k42.mul_add(u99, u176);
-        let u178 = c2
-            .mul_add(
-                u131 + u137 + k47.mul_add(u97, u22),
-                s2 * k49.mul_add(u99, k44.mul_add(u62, u136)),
+                u134 + u140 + k47.mul_add(u98, u23),
+                s2 * k49.mul_add(u100, k45.mul_add(u63, u139)),
             );
         Configuration {
             k1,
@@ -556,53 +545,53 @@ mod __dynamics {
             k33,
             k34,
             k36,
+            k37,
             u1,
             k38,
-            k39,
+            k41,
             m4_4,
             u5,
-            k42,
             k43,
             k44,
+            k45,
             m3_4,
             m3_3,
-            u31,
-            k45,
+            u32,
             m2_3,
             k48,
             m2_2,
-            u53,
             u54,
+            u55,
             m1_2,
             m1_1,
-            u55,
-            u59,
+            u56,
+            u60,
             m1_3,
-            u62,
+            u63,
             m2_4,
-            u69,
-            u71,
+            u70,
+            u72,
             m1_4,
-            u73,
+            u74,
             m3_5,
-            u82,
+            u83,
             m2_5,
-            u93,
-            u95,
+            u94,
+            u96,
             m1_5,
             m4_6,
             m2_6,
-            u102,
+            u103,
             m1_6,
             g2,
             g3,
             g4,
             g5,
-            u106,
             u107,
+            u108,
             k53,
             k54,
-            u108,
+            u109,
             k57,
             k58,
             k60,
@@ -617,37 +606,37 @@ mod __dynamics {
             k69,
             p,
             k73,
-            u110,
-            u111,
             u112,
-            u115,
+            u113,
+            u114,
             u117,
-            u118,
+            u119,
             u120,
             u122,
-            u129,
-            u130,
+            u124,
             u132,
-            u134,
+            u133,
             u135,
+            u137,
             u138,
-            u139,
+            u141,
             u142,
-            u146,
-            u147,
+            u145,
+            u149,
+            u150,
             k76,
-            u156,
             u159,
-            u166,
-            u167,
-            u169,
+            u162,
+            u170,
             u171,
-            u172,
-            u174,
+            u173,
             u175,
             u176,
-            u177,
             u178,
+            u179,
+            u180,
+            u181,
+            u182,
             k78,
             k79,
             k80,
@@ -700,202 +689,202 @@ mod __dynamics {
             s5,
             k7,
             k36,
+            k37,
             u1,
             k38,
             u5,
-            k42,
-            k44,
-            u31,
+            k43,
             k45,
-            u53,
+            u32,
             u54,
             u55,
-            u59,
-            u62,
-            u69,
-            u71,
-            u73,
-            u82,
-            u93,
-            u95,
-            u102,
+            u56,
+            u60,
+            u63,
+            u70,
+            u72,
+            u74,
+            u83,
+            u94,
+            u96,
+            u103,
             k73,
-            u110,
-            u111,
             u112,
-            u115,
+            u113,
+            u114,
             u117,
-            u118,
+            u119,
             u120,
             u122,
-            u129,
-            u130,
+            u124,
             u132,
-            u134,
+            u133,
             u135,
+            u137,
             u138,
-            u139,
+            u141,
             u142,
-            u146,
-            u147,
+            u145,
+            u149,
+            u150,
             k76,
-            u156,
             u159,
-            u166,
-            u167,
-            u169,
+            u162,
+            u170,
             u171,
-            u172,
-            u174,
+            u173,
             u175,
             u176,
-            u177,
             u178,
+            u179,
+            u180,
+            u181,
+            u182,
             k78,
             k79,
             k80,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = qd2 * u54;
-        let t2 = qd4 * u139;
-        let t3 = k2 * (qd3 * u55);
-        let t4 = qd4 * u138;
-        let t5 = qd1 * u102;
-        let t6 = qd4 * u122;
-        let t7 = qd5 * u176;
+        let t1 = qd2 * u55;
+        let t2 = qd4 * u142;
+        let t3 = k2 * (qd3 * u56);
+        let t4 = qd4 * u141;
+        let t5 = qd1 * u103;
+        /// C33 = sum of D33k qd_k (6.44)
+        let cor3_3 = k1 * qd5.mul_add(u159, qd4 * u122);
+        let t6 = qd4 * u124;
+        let t7 = qd5 * u180;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = k38 * (qd5 * u1);
         let t8 = s5 * qd5;
-        let t9 = s5.mul_add(qd4, qd1 * u93 - qd2 * u73 - qd3 * u73);
+        let t9 = s5.mul_add(qd4, qd1 * u94 - qd2 * u74 - qd3 * u74);
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k79 * t9;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = k78 * t9;
-        let t10 = k7 * (qd6 * u5);
-        let t11 = k7 * (qd6 * u73);
-        let t12 = qd5.mul_add(u73, qd4 * u5);
-        /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k79 * (t5 + t12);
-        /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k79 * (t12 - t5);
-        let t13 = qd4.mul_add(u142, t7);
-        let t14 = qd3 * u112;
-        let t15 = qd5 * u178;
-        /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k78 * qd5.mul_add(u93, qd2 * u102 - qd3 * u118 - qd4 * u69);
-        let t16 = qd5 * u177;
-        /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd4.mul_add(u120, qd5 * u156);
-        let t17 = qd1 * u118;
-        let t18 = qd3.mul_add(u5, qd1.mul_add(u69, qd2 * u5));
-        /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k78 * (t8 + t18);
-        /// C11 = sum of D11k qd_k (6.44)
-        let cor1_1 = k1
-            * qd5.mul_add(u167, qd4.mul_add(u132, k45.mul_add(qd2 * u53, qd3 * u110)));
-        let t19 = qd5.mul_add(u169, qd4.mul_add(u134, qd3.mul_add(u111, t1)));
-        let t20 = k36
+        let t10 = k37
             .mul_add(
-                qd6 * u102,
+                qd6 * u103,
                 qd5
                     .mul_add(
-                        u95,
-                        qd4.mul_add(u71, qd3.mul_add(u59, k45.mul_add(qd1 * u53, t1))),
+                        u96,
+                        qd4.mul_add(u72, qd3.mul_add(u60, k36.mul_add(qd1 * u54, t1))),
                     ),
             );
+        let t11 = k7 * (qd6 * u5);
+        let t12 = k7 * (qd6 * u74);
+        let t13 = qd5.mul_add(u74, qd4 * u5);
+        /// C26 = sum of D26k qd_k (6.44)
+        let cor2_6 = k79 * (t5 + t13);
+        /// C62 = sum of D62k qd_k (6.44)
+        let cor6_2 = k79 * (t13 - t5);
+        let t14 = qd4.mul_add(u145, t7);
+        let t15 = qd3 * u114;
+        let t16 = qd5 * u182;
+        /// C16 = sum of D16k qd_k (6.44)
+        let cor1_6 = k78 * qd5.mul_add(u94, qd2 * u103 - qd3 * u120 - qd4 * u70);
+        let t17 = qd5 * u181;
+        let t18 = qd1 * u120;
+        let t19 = qd3.mul_add(u5, qd1.mul_add(u70, qd2 * u5));
+        /// C46 = sum of D46k qd_k (6.44)
+        let cor4_6 = k78 * (t8 + t19);
+        /// C11 = sum of D11k qd_k (6.44)
+        let cor1_1 = k1
+            * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k36 * (qd2 * u54))));
+        let t20 = qd5.mul_add(u173, qd4.mul_add(u137, qd3.mul_add(u113, t1)));
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = k1 * (t19 + t20);
+        let cor1_2 = k1 * (t10 + t20);
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = k1 * (t19 - t20);
-        let t21 = qd5.mul_add(u172, qd4.mul_add(u135, qd2.mul_add(u59, t14)));
+        let cor2_1 = k1 * (t20 - t10);
+        let t21 = qd5.mul_add(u176, qd4.mul_add(u138, qd2.mul_add(u60, t15)));
         let t22 = k7
             .mul_add(
-                qd6 * u118,
-                qd5.mul_add(u117, qd4.mul_add(u115, t14 + qd2.mul_add(u111, qd1 * u110))),
+                qd6 * u120,
+                qd5.mul_add(u119, qd4.mul_add(u117, t15 + qd2.mul_add(u113, qd1 * u112))),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t21 - t22);
-        let t23 = qd5.mul_add(u175, t2 + qd3.mul_add(u115, qd2 * u71));
+        let t23 = qd5.mul_add(u179, t2 + qd3.mul_add(u117, qd2 * u72));
         let t24 = k7
             .mul_add(
-                qd6 * u69,
-                qd5.mul_add(u147, t2 + qd3.mul_add(u135, qd2.mul_add(u134, qd1 * u132))),
+                qd6 * u70,
+                qd5.mul_add(u150, t2 + qd3.mul_add(u138, qd2.mul_add(u137, qd1 * u135))),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t23 - t24);
-        let t25 = t15 + qd4.mul_add(u147, qd3.mul_add(u117, qd2 * u95));
-        let t26 = k36
+        let t25 = t16 + qd4.mul_add(u150, qd3.mul_add(u119, qd2 * u96));
+        let t26 = k37
             .mul_add(
-                qd6 * u93,
-                t15 + qd4.mul_add(u175, qd3.mul_add(u172, qd2.mul_add(u169, qd1 * u167))),
+                qd6 * u94,
+                t16 + qd4.mul_add(u179, qd3.mul_add(u176, qd2.mul_add(u173, qd1 * u171))),
             );
         /// C15 = sum of D15k qd_k (6.44)
         let cor1_5 = k1 * (t25 + t26);
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u166, k73.mul_add(qd3 * u31, qd4 * u130));
-        let t27 = qd5.mul_add(u171, qd4.mul_add(u129, t3));
-        let t28 = k44
+        let cor2_2 = k1 * qd5.mul_add(u170, k73.mul_add(qd3 * u32, qd4 * u133));
+        let t27 = qd5.mul_add(u175, qd4.mul_add(u132, t3));
+        let t28 = k45
             .mul_add(
-                qd5 * u82,
-                k42.mul_add(qd4 * u62, t3 + k73.mul_add(qd2 * u31, qd1 * u111)),
-            ) - qd1 * u59;
+                qd5 * u83,
+                k43.mul_add(qd4 * u63, t3 + k73.mul_add(qd2 * u32, qd1 * u113)),
+            ) - qd1 * u60;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t27 - t28);
-        let t29 = qd5.mul_add(u174, k42.mul_add(qd3 * u62, t4));
-        let t30 = t10
-            + qd5.mul_add(u146, t4 + qd3.mul_add(u129, qd1.mul_add(u134, qd2 * u130)))
-            - qd1 * u71;
+        let t29 = qd5.mul_add(u178, k43.mul_add(qd3 * u63, t4));
+        let t30 = t11
+            + qd5.mul_add(u149, t4 + qd3.mul_add(u132, qd1.mul_add(u137, qd2 * u133)))
+            - qd1 * u72;
         /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t29 - t30);
-        let t31 = qd4.mul_add(u146, k44 * (qd3 * u82)) + t16;
-        let t32 = t11
-            + (t16 + qd4.mul_add(u174, qd3.mul_add(u171, qd1.mul_add(u169, qd2 * u166))))
-            - qd1 * u95;
+        let t31 = qd4.mul_add(u149, k45 * (qd3 * u83)) + t17;
+        let t32 = t12
+            + (t17 + qd4.mul_add(u178, qd3.mul_add(u175, qd1.mul_add(u173, qd2 * u170))))
+            - qd1 * u96;
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t31 + t32);
         /// C52 = sum of D52k qd_k (6.44)
         let cor5_2 = k1 * (t31 - t32);
-        let t33 = qd5.mul_add(u159, t6);
-        let t34 = t10
-            + qd5.mul_add(u142, t6 + qd3.mul_add(u120, qd2.mul_add(u129, qd1 * u135)))
-            - qd1.mul_add(u115, k42 * (qd2 * u62));
+        let t33 = qd5.mul_add(u162, t6);
+        let t34 = t11
+            + qd5.mul_add(u145, t6 + qd3.mul_add(u122, qd1.mul_add(u138, qd2 * u132)))
+            - qd1.mul_add(u117, k43 * (qd2 * u63));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
-        let t35 = t11
-            + (t7 + qd4.mul_add(u159, qd3.mul_add(u156, qd2.mul_add(u171, qd1 * u172))))
-            - qd1.mul_add(u117, k44 * (qd2 * u82));
+        let t35 = t12
+            + (t7 + qd4.mul_add(u162, qd3.mul_add(u159, qd2.mul_add(u175, qd1 * u176))))
+            - qd1.mul_add(u119, k45 * (qd2 * u83));
         /// C35 = sum of D35k qd_k (6.44)
-        let cor3_5 = k1 * (t13 + t35);
+        let cor3_5 = k1 * (t14 + t35);
         /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = k1 * (t13 - t35);
+        let cor5_3 = k1 * (t14 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k79 * (t12 - t17);
+        let cor3_6 = k79 * (t13 - t18);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k79 * (t12 + t17);
-        let t36 = k36
+        let cor6_3 = k79 * (t13 + t18);
+        let t36 = k37
             .mul_add(
                 s5 * qd6,
-                k76.mul_add(qd4 * u1, qd3.mul_add(u159, qd2.mul_add(u174, qd1 * u175))),
-            ) - qd3.mul_add(u142, qd2.mul_add(u146, qd1 * u147));
+                k76.mul_add(qd4 * u1, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
+            ) - qd3.mul_add(u145, qd2.mul_add(u149, qd1 * u150));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
         let cor5_4 = k80 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k78 * (t8 - t18);
+        let cor6_4 = k78 * (t8 - t19);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -949,10 +938,10 @@ mod __dynamics {
             k31,
             k32,
             k33,
-            k36,
-            k39,
-            k43,
+            k37,
+            k41,
             k44,
+            k45,
             k48,
             k53,
             k54,
@@ -1015,7 +1004,7 @@ mod __dynamics {
         let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
         let cqd6 = k7 * (c5 * t17 - s5 * t33 - qd5 * t35);
-        let t45 = k36
+        let t45 = k37
             .mul_add(
                 t37 * t44,
                 k19.mul_add(-(c4 * t29) - s4 * t28, k20.mul_add(t40, k17 * t38)),
@@ -1032,7 +1021,7 @@ mod __dynamics {
                                 k2.mul_add(t14, k23.mul_add(t25, k4 * t21)),
                                 c5 * (c4 * t28 - s4 * t29),
                             ),
-                        k18.mul_add(t39, k39 * t34),
+                        k18.mul_add(t39, k41 * t34),
                     ),
             );
         let t47 = s5.mul_add(t42, c5 * t41);
@@ -1045,7 +1034,7 @@ mod __dynamics {
         let t52 = s4 * t47 - c4 * t43;
         let t53 = k16.mul_add(t51, k27.mul_add(t21, k64 * t24));
         let t54 = k16.mul_add(t48, k65.mul_add(t25, k24 * t21));
-        let t55 = k44
+        let t55 = k45
             .mul_add(
                 t52,
                 k27
@@ -1058,7 +1047,7 @@ mod __dynamics {
                             ),
                     ) + (c4 * t49 - s4 * t50),
             );
-        let t56 = k43
+        let t56 = k44
             .mul_add(
                 t52,
                 k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27))) + cqd4,
@@ -1066,7 +1055,7 @@ mod __dynamics {
         /// centripetal and Coriolis torque 3
         let cqd3 = k58.mul_add(t21, k26.mul_add(t18 - t19, k14 * (t17 + t22)))
             + k67.mul_add(t13, k25 * t14) - c4.mul_add(t50, s4 * t49)
-            + k44.mul_add(t51, k43 * t48);
+            + k45.mul_add(t51, k44 * t48);
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
         let cqd2 = k2.mul_add(t57, k54.mul_add(t8, k10 * (t5 - t6)) + cqd3);
@@ -1148,16 +1137,16 @@ mod __dynamics {
             k31,
             k32,
             k33,
-            k36,
-            k39,
-            k43,
+            k37,
+            k41,
             k44,
+            k45,
             k48,
-            u106,
             u107,
+            u108,
             k53,
             k54,
-            u108,
+            u109,
             k57,
             k58,
             k60,
@@ -1220,12 +1209,12 @@ mod __dynamics {
         let t46 = k16.mul_add(t44, k27.mul_add(t18, k64 * t21));
         let t47 = k16.mul_add(t43, k65.mul_add(t22, k24 * t18));
         let t48 = c3.mul_add(t47, s3 * t46);
-        let t49 = k23.mul_add(t6 + t7, u106);
-        let t50 = k2.mul_add(t8, u107);
+        let t49 = k23.mul_add(t6 + t7, u107);
+        let t50 = k2.mul_add(t8, u108);
         let t51 = s3.mul_add(t50, c3 * t49);
         let t52 = c3 * t50 - s3 * t49;
         let t53 = k2.mul_add(t18, k5 * t21) + t51;
-        let t54 = k36
+        let t54 = k37
             .mul_add(
                 t33 * t40,
                 k19.mul_add(-(c4 * t25) - s4 * t53, k20.mul_add(t36, k17 * t34)),
@@ -1241,14 +1230,14 @@ mod __dynamics {
                                 k23.mul_add(t22, k4 * t18) + t52,
                                 c5 * (c4 * t53 - s4 * t25),
                             ),
-                        k18.mul_add(t35, k39 * t30),
+                        k18.mul_add(t35, k41 * t30),
                     ),
             );
         let t55 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t54 - s5 * t41);
         let t56 = k60 * (t26 * t28) - h5;
         /// centripetal, Coriolis and gravity torque 4
         let h4 = k21.mul_add(t26 * t27, k22 * t14) + s5.mul_add(t54, c5 * t41);
-        let t57 = k44
+        let t57 = k45
             .mul_add(
                 t45,
                 k27
@@ -1261,17 +1250,17 @@ mod __dynamics {
                             ),
                     ) + (c4 * t55 - s4 * t56),
             );
-        let t58 = k43
+        let t58 = k44
             .mul_add(
                 t45,
                 k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24))) + h4,
             );
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k44.mul_add(t44, k43 * t43)
+        let h3 = k45.mul_add(t44, k44 * t43)
             + (k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
                 + k65.mul_add(t51, k24 * t52) - c4.mul_add(t56, s4 * t55));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = k2.mul_add(t48, u108 + k54.mul_add(t8, k10 * (t5 - t6)) + h3);
+        let h2 = k2.mul_add(t48, u109 + k54.mul_add(t8, k10 * (t5 - t6)) + h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
@@ -1345,15 +1334,15 @@ mod __dynamics {
             k32,
             k33,
             k34,
-            k36,
-            k43,
+            k37,
             k44,
+            k45,
             k48,
-            u106,
             u107,
+            u108,
             k53,
             k54,
-            u108,
+            u109,
             k57,
             k58,
             k60,
@@ -1401,8 +1390,8 @@ mod __dynamics {
         let t34 = t3 - t30;
         let t35 = t4 - t31;
         let t36 = k2.mul_add(t35, k48 * (t5 + t6));
-        let t37 = u106 + k3.mul_add(t32, k23 * (t6 + t7));
-        let t38 = u107 + k3.mul_add(t34, k2 * t33);
+        let t37 = u107 + k3.mul_add(t32, k23 * (t6 + t7));
+        let t38 = u108 + k3.mul_add(t34, k2 * t33);
         let t39 = s3.mul_add(t38, c3 * t37);
         let t40 = c3 * t38 - s3 * t37;
         let t41 = qd3.mul_add(t10, s3.mul_add(t31, c3 * t30));
@@ -1422,7 +1411,7 @@ mod __dynamics {
         let t55 = t27 + t52;
         /// T6 (6.46)
         let tau6 = k7 * (qdd6 + (c5 * t51 - s5 * t50 - qd5 * t23));
-        let t56 = k36
+        let t56 = k37
             .mul_add(
                 t25 * t29,
                 k19.mul_add(-(c4 * t49) - s4 * t48, k17.mul_add(t52, k20 * t27)),
@@ -1452,7 +1441,7 @@ mod __dynamics {
         let t63 = s4 * t58 - c4 * t55;
         let t64 = k16.mul_add(t62, k27.mul_add(t44, k64 * t18));
         let t65 = k16.mul_add(t59, k24.mul_add(t45, k65 * t19));
-        let t66 = k44
+        let t66 = k45
             .mul_add(
                 t63,
                 k27
@@ -1465,7 +1454,7 @@ mod __dynamics {
                             ),
                     ) + (c4 * t60 - s4 * t61),
             );
-        let t67 = k43
+        let t67 = k44
             .mul_add(
                 t63,
                 k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47))) + tau4,
@@ -1474,13 +1463,13 @@ mod __dynamics {
         let tau3 = k58
             .mul_add(t15, k26.mul_add(t12 - t13, k14.mul_add(t16 + t42, k28 * t43)))
             + k65.mul_add(t39, k24 * t40) - c4.mul_add(t61, s4 * t60)
-            + k44.mul_add(t62, k43 * t59);
+            + k45.mul_add(t62, k44 * t59);
         let t68 = c3.mul_add(t65, s3 * t64);
         /// T2 (6.46)
         let tau2 = k2
             .mul_add(
                 t68,
-                u108
+                u109
                     + k54
                         .mul_add(
                             t8,
@@ -1564,7 +1553,7 @@ mod __dynamics {
             k32,
             k33,
             k34,
-            k45,
+            k36,
             k48,
             k64,
             k65,
@@ -1602,7 +1591,7 @@ mod __dynamics {
                                         * s5
                                             .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
                                 ),
-                            k45
+                            k36
                                 .mul_add(
                                     k23
                                         .mul_add(

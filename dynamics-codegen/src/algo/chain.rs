@@ -358,8 +358,8 @@ impl<S: Scalar> Chain<S> {
 
 /// `R I Rᵀ` for the rotation by the angle of sine `s` and cosine `c` in the plane of axes `u`
 /// and `v` (x, y for Rotz; y, z for Rotx) of the symmetric `I = [xx, yy, zz, xy, xz, yz]`:
-/// in that plane `I_uu' = c² I_uu − 2cs I_uv + s² I_vv`, `I_vv' = s² I_uu + 2cs I_uv + c² I_vv
-/// = I_uu + I_vv − I_uu'`,
+/// in that plane `I_uu' = c² I_uu − 2cs I_uv + s² I_vv = I_uu − s² (I_uu − I_vv) − 2cs I_uv`,
+/// `I_vv' = s² I_uu + 2cs I_uv + c² I_vv = I_uu + I_vv − I_uu'`,
 /// `I_uv' = cs (I_uu − I_vv) + (c² − s²) I_uv`; the products with the third axis w turn as a
 /// vector.
 fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6] {
@@ -373,15 +373,21 @@ fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6
     let (uu, vv, uv) = (i[u], i[v], i[product(u, v)]);
     let (uw, vw) = (i[product(u, w)], i[product(v, w)]);
     let (cc, ss, cs) = (c * c, s * s, c * s);
-    let uu2 = cc * uu - (cs * uv + cs * uv) + ss * vv;
-    // With a constant angle (a twist α, or θ of a prismatic joint) the direct form folds to
-    // little or nothing; with a joint angle the trace `I_uu + I_vv − I_uu'` is cheaper.
-    let vv2 = if s.is_constant() && c.is_constant() {
-        ss * uu + (cs * uv + cs * uv) + cc * vv
+    let difference = uu - vv;
+    // A quarter turn (or none) folds the direct forms to a swap; any other angle takes fewer
+    // multiplications through the difference `I_uu − I_vv`, which `I_uv'` needs anyway, and
+    // the trace.
+    let quarter_turn = s.is_constant() && c.is_constant() && (s.is_zero() || c.is_zero());
+    let (uu2, vv2) = if quarter_turn {
+        (
+            cc * uu - (cs * uv + cs * uv) + ss * vv,
+            ss * uu + (cs * uv + cs * uv) + cc * vv,
+        )
     } else {
-        uu + vv - uu2
+        let uu2 = uu - ss * difference - (cs + cs) * uv;
+        (uu2, uu + vv - uu2)
     };
-    let uv2 = cs * (uu - vv) + (cc - ss) * uv;
+    let uv2 = cs * difference + (cc - ss) * uv;
     let mut out = i;
     out[u] = uu2;
     out[v] = vv2;
