@@ -3,8 +3,8 @@
 //!
 //! * `inspect ROBOT [--latex]`: the equations of motion in the book's notation;
 //! * `emit ROBOT`: a standalone Rust module with the code the derive generates;
-//! * `stats ROBOT`: expansion time, operation counts and code size per method, and the cost
-//!   of the readable equations the derive adds;
+//! * `stats ROBOT`: expansion time, operation counts, longest chain of operations and code
+//!   size per method, and the cost of the readable equations the derive adds;
 //! * `eval ROBOT --q .. [--qd ..] [--qdd ..] [--set NAME=VALUE].. [--json]`: τ, M, C and g.
 //!
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors
@@ -23,7 +23,7 @@ use std::time::Instant;
 const USAGE: &str = "usage:
   dynamics inspect ROBOT [--latex]      the equations of motion (Niku ch. 6 notation)
   dynamics emit ROBOT > robot.rs        a standalone Rust module with the generated code
-  dynamics stats ROBOT                  expansion time, operation counts and code size
+  dynamics stats ROBOT                  expansion time, operation counts, depth and code size
   dynamics eval ROBOT --q Q1,Q2,.. [--qd ..] [--qdd ..] [--set NAME=VALUE].. [--json]
                                         tau, M, C and g at one state (qd, qdd default to 0)
 ROBOT is a description file (.json or .toml).";
