@@ -1034,55 +1034,40 @@ mod __dynamics {
         let t52 = s4 * t47 - c4 * t43;
         let t53 = k16.mul_add(t51, k27.mul_add(t21, k64 * t24));
         let t54 = k16.mul_add(t48, k65.mul_add(t25, k24 * t21));
-        let t55 = k45
+        let t55 = k27
             .mul_add(
-                t52,
-                k27
-                    .mul_add(
-                        t10,
-                        k28
-                            .mul_add(
-                                t23,
-                                k14.mul_add(t19 - t20, k66.mul_add(t26, k29 * t16)),
-                            ),
-                    ) + (c4 * t49 - s4 * t50),
-            );
-        let t56 = k44
-            .mul_add(
-                t52,
-                k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27))) + cqd4,
-            );
+                t10,
+                k28.mul_add(t23, k14.mul_add(t19 - t20, k66.mul_add(t26, k29 * t16))),
+            ) + k45.mul_add(t52, c4 * t49 - s4 * t50);
+        let t56 = k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27)))
+            + k44.mul_add(t52, cqd4);
         /// centripetal and Coriolis torque 3
         let cqd3 = k58.mul_add(t21, k26.mul_add(t18 - t19, k14 * (t17 + t22)))
-            + k67.mul_add(t13, k25 * t14) - c4.mul_add(t50, s4 * t49)
-            + k45.mul_add(t51, k44 * t48);
+            + k67.mul_add(t13, k25 * t14)
+            + (k45.mul_add(t51, k44 * t48) - c4.mul_add(t50, s4 * t49));
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
-        let cqd2 = k2.mul_add(t57, k54.mul_add(t8, k10 * (t5 - t6)) + cqd3);
+        let cqd2 = k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t57, cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = c2
             .mul_add(
                 k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
-                    + c3.mul_add(t56, s3 * t55)
-                    + k23
-                        .mul_add(
-                            k19.mul_add(t52, k27.mul_add(t27, k24 * t26)),
-                            k3 * (c3 * t53 - s3 * t54),
-                        ),
+                    + (c3.mul_add(t56, s3 * t55)
+                        + k23
+                            .mul_add(
+                                k19.mul_add(t52, k27.mul_add(t27, k24 * t26)),
+                                k3 * (c3 * t53 - s3 * t54),
+                            )),
                 s2
-                    * k48
+                    * (k31
                         .mul_add(
-                            t57,
-                            k31
+                            t3,
+                            k12
                                 .mul_add(
-                                    t3,
-                                    k12
-                                        .mul_add(
-                                            t6 - t7,
-                                            k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
-                                        ),
-                                ) + (c3 * t55 - s3 * t56),
-                        ),
+                                    t6 - t7,
+                                    k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                ),
+                        ) + k48.mul_add(t57, c3 * t55 - s3 * t56)),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
@@ -1237,54 +1222,38 @@ mod __dynamics {
         let t56 = k60 * (t26 * t28) - h5;
         /// centripetal, Coriolis and gravity torque 4
         let h4 = k21.mul_add(t26 * t27, k22 * t14) + s5.mul_add(t54, c5 * t41);
-        let t57 = k45
+        let t57 = k27
             .mul_add(
-                t45,
-                k27
-                    .mul_add(
-                        t9,
-                        k28
-                            .mul_add(
-                                t20,
-                                k14.mul_add(t16 - t17, k66.mul_add(t23, k29 * t13)),
-                            ),
-                    ) + (c4 * t55 - s4 * t56),
-            );
-        let t58 = k44
-            .mul_add(
-                t45,
-                k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24))) + h4,
-            );
+                t9,
+                k28.mul_add(t20, k14.mul_add(t16 - t17, k66.mul_add(t23, k29 * t13))),
+            ) + k45.mul_add(t45, c4 * t55 - s4 * t56);
+        let t58 = k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24)))
+            + k44.mul_add(t45, h4);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k45.mul_add(t44, k44 * t43)
-            + (k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
-                + k65.mul_add(t51, k24 * t52) - c4.mul_add(t56, s4 * t55));
+        let h3 = k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
+            + k65.mul_add(t51, k24 * t52)
+            + (k45.mul_add(t44, k44 * t43) - c4.mul_add(t56, s4 * t55));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = k2.mul_add(t48, u109 + k54.mul_add(t8, k10 * (t5 - t6)) + h3);
+        let h2 = u109 + k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t48, h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
-                k23
-                    .mul_add(
-                        k19.mul_add(t45, k27.mul_add(t24, k24 * t23)),
-                        k3 * (c3 * t46 - s3 * t47),
-                    )
-                    + (k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
-                        + c3.mul_add(t58, s3 * t57)),
-                s2
-                    * k48
+                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
+                    + (k23
                         .mul_add(
-                            t48,
-                            k31
+                            k19.mul_add(t45, k27.mul_add(t24, k24 * t23)),
+                            k3 * (c3 * t46 - s3 * t47),
+                        ) + c3.mul_add(t58, s3 * t57)),
+                s2
+                    * (k31
+                        .mul_add(
+                            t3,
+                            k12
                                 .mul_add(
-                                    t3,
-                                    k12
-                                        .mul_add(
-                                            t6 - t7,
-                                            k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
-                                        ),
-                                ) + (c3 * t57 - s3 * t58),
-                        ),
+                                    t6 - t7,
+                                    k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                ),
+                        ) + k48.mul_add(t48, c3 * t57 - s3 * t58)),
             );
         [h1, h2, h3, h4, h5, h6]
     }
@@ -1441,45 +1410,26 @@ mod __dynamics {
         let t63 = s4 * t58 - c4 * t55;
         let t64 = k16.mul_add(t62, k27.mul_add(t44, k64 * t18));
         let t65 = k16.mul_add(t59, k24.mul_add(t45, k65 * t19));
-        let t66 = k45
+        let t66 = k27
             .mul_add(
-                t63,
-                k27
-                    .mul_add(
-                        t36,
-                        k28
-                            .mul_add(
-                                t17,
-                                k14.mul_add(t13 - t14, k66.mul_add(t46, k29 * t41)),
-                            ),
-                    ) + (c4 * t60 - s4 * t61),
-            );
-        let t67 = k44
-            .mul_add(
-                t63,
-                k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47))) + tau4,
-            );
+                t36,
+                k28.mul_add(t17, k14.mul_add(t13 - t14, k66.mul_add(t46, k29 * t41))),
+            ) + k45.mul_add(t63, c4 * t60 - s4 * t61);
+        let t67 = k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47)))
+            + k44.mul_add(t63, tau4);
         /// T3 (6.46)
         let tau3 = k58
             .mul_add(t15, k26.mul_add(t12 - t13, k14.mul_add(t16 + t42, k28 * t43)))
-            + k65.mul_add(t39, k24 * t40) - c4.mul_add(t61, s4 * t60)
-            + k45.mul_add(t62, k44 * t59);
+            + k65.mul_add(t39, k24 * t40)
+            + (k45.mul_add(t62, k44 * t59) - c4.mul_add(t61, s4 * t60));
         let t68 = c3.mul_add(t65, s3 * t64);
         /// T2 (6.46)
-        let tau2 = k2
-            .mul_add(
-                t68,
-                u109
-                    + k54
-                        .mul_add(
-                            t8,
-                            k10
-                                .mul_add(
-                                    t5 - t6,
-                                    k12.mul_add(t32, k68.mul_add(t34, k31 * qdd2)),
-                                ),
-                        ) + tau3,
-            );
+        let tau2 = u109
+            + k54
+                .mul_add(
+                    t8,
+                    k10.mul_add(t5 - t6, k12.mul_add(t32, k68.mul_add(t34, k31 * qdd2))),
+                ) + k2.mul_add(t68, tau3);
         /// T1 (6.46)
         let tau1 = k34
             .mul_add(
@@ -1491,26 +1441,23 @@ mod __dynamics {
                                 t4,
                                 k32
                                     .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t30))),
-                            ) + c3.mul_add(t67, s3 * t66)
-                            + k23
-                                .mul_add(
-                                    k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
-                                    k3 * (c3 * t64 - s3 * t65),
-                                ),
+                            )
+                            + (c3.mul_add(t67, s3 * t66)
+                                + k23
+                                    .mul_add(
+                                        k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
+                                        k3 * (c3 * t64 - s3 * t65),
+                                    )),
                         s2
-                            * k48
+                            * (k31
                                 .mul_add(
-                                    t68,
-                                    k31
+                                    t3,
+                                    k12
                                         .mul_add(
-                                            t3,
-                                            k12
-                                                .mul_add(
-                                                    t6 - t7,
-                                                    k32.mul_add(t33, k9.mul_add(t35, k33 * t30)),
-                                                ),
-                                        ) + (c3 * t66 - s3 * t67),
-                                ),
+                                            t6 - t7,
+                                            k32.mul_add(t33, k9.mul_add(t35, k33 * t30)),
+                                        ),
+                                ) + k48.mul_add(t68, c3 * t66 - s3 * t67)),
                     ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]

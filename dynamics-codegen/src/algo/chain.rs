@@ -182,6 +182,35 @@ impl<S: Scalar> ChainJoint<S> {
         V3::new(u.x, ca * u.y - sa * u.z, sa * u.y + ca * u.z)
     }
 
+    /// A wrench about J_i's origin in J_i axes (force `f`, moment `n`) carried to J_{i−1}:
+    /// `R f` and `R n + p × R f`.
+    pub fn wrench_to_parent(&self, f: V3<S>, n: V3<S>) -> (V3<S>, V3<S>) {
+        if self.twist_is_quarter_turn() {
+            let rf = self.to_parent(f);
+            return (rf, self.to_parent(n).add(self.offset().cross(rf)));
+        }
+        self.wrench_from_turned(self.to_turned(f), self.to_turned(n))
+    }
+
+    /// [`ChainJoint::wrench_to_parent`] of a wrench already turned by θ (`Rotz(θ) f`,
+    /// `Rotz(θ) n`), or given in the axes of [`ChainJoint::untwist`]. Unless α is a quarter
+    /// turn, the moment arm is crossed before the twist, where it reads `(a, 0, d)` rather than
+    /// `(a, −sin α d, cos α d)`: two multiplications and two additions fewer.
+    pub fn wrench_from_turned(&self, f: V3<S>, n: V3<S>) -> (V3<S>, V3<S>) {
+        if self.twist_is_quarter_turn() {
+            let rf = self.twist(f);
+            return (rf, self.twist(n).add(self.offset().cross(rf)));
+        }
+        let arm = V3::new(self.a, self.d.zero(), self.d);
+        (self.twist(f), self.twist(n.add(arm.cross(f))))
+    }
+
+    /// Whether α is a known multiple of 90°, so that the twist only swaps axes and signs.
+    fn twist_is_quarter_turn(&self) -> bool {
+        let (s, c) = (self.sin_alpha, self.cos_alpha);
+        s.is_constant() && c.is_constant() && (s.is_zero() || c.is_zero())
+    }
+
     /// The origin of J_i in J_{i−1}: `(a, −sin α · d, cos α · d)`.
     pub fn offset(&self) -> V3<S> {
         V3::new(self.a, -(self.sin_alpha * self.d), self.cos_alpha * self.d)
@@ -400,6 +429,32 @@ fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6
 #[cfg(test)]
 mod tests {
     use super::{rotate_inertia, Mat3};
+    use crate::algo::{test_chain, V3};
+    use std::ops::Add;
+
+    /// A wrench carried to the parent, the arm crossed before the twist or after it, equals
+    /// `(R f, R n + p × R f)` with the full rotation matrix.
+    #[test]
+    fn carrying_a_wrench() {
+        let chain = test_chain(&[0.3, -1.1, 0.25, 2.0, -0.6]);
+        let (f, n) = (V3::new(0.4, -1.3, 2.2), V3::new(-0.9, 0.15, 0.6));
+        for joint in &chain.joints {
+            let r = joint.rotation();
+            let rf = r.mul_vec(f);
+            let expected = (rf, r.mul_vec(n).add(joint.offset().cross(rf)));
+            let carried = joint.wrench_to_parent(f, n);
+            for (a, b) in [
+                (carried.0.x, expected.0.x),
+                (carried.0.y, expected.0.y),
+                (carried.0.z, expected.0.z),
+                (carried.1.x, expected.1.x),
+                (carried.1.y, expected.1.y),
+                (carried.1.z, expected.1.z),
+            ] {
+                assert!((a - b).abs() < 1e-14, "{a} vs {b}");
+            }
+        }
+    }
 
     /// The plane-rotation formulas agree with `R I Rᵀ` of the full matrices, for Rotz then
     /// Rotx (the order of `ChainJoint::rotation`).

@@ -86,10 +86,9 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
             let turned = (j + 1 == k).then(|| {
                 let cross_z = |v: V3<S>| {
                     let u = through.to_turned(v);
-                    through.twist(V3::new(-u.y, u.x, zero))
+                    V3::new(-u.y, u.x, zero)
                 };
-                let rf = cross_z(f);
-                (rf, cross_z(nn).add(through.offset().cross(rf)))
+                through.wrench_from_turned(cross_z(f), cross_z(nn))
             });
             d = d.map(|(df, dn)| transport(through, df, dn));
             d = match (d, turned) {
@@ -129,8 +128,7 @@ fn wrench<S: Scalar>(chain: &Chain<S>, i: usize, body: &Body<S>) -> (V3<S>, V3<S
 
 /// A wrench at J_i carried to J_{i−1}: `f ← R f`, `n ← R n + p × R f`.
 fn transport<S: Scalar>(child: &ChainJoint<S>, f: V3<S>, nn: V3<S>) -> (V3<S>, V3<S>) {
-    let rf = child.to_parent(f);
-    (rf, child.to_parent(nn).add(child.offset().cross(rf)))
+    child.wrench_to_parent(f, nn)
 }
 
 /// The component of a wrench on joint k's axis.

@@ -69,16 +69,13 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         let (mut f, mut nn) = forces[i];
         if let Some((fc, nc)) = child {
             let next = &chain.joints[i + 1];
-            let to_parent = |v| {
-                if unturned == Some(i + 1) {
-                    next.twist(v)
-                } else {
-                    next.to_parent(v)
-                }
+            let (rf, rn) = if unturned == Some(i + 1) {
+                next.wrench_from_turned(fc, nc)
+            } else {
+                next.wrench_to_parent(fc, nc)
             };
-            let rf = to_parent(fc);
             f = f.add(rf);
-            nn = nn.add(to_parent(nc)).add(next.offset().cross(rf));
+            nn = nn.add(rn);
         }
         tau[i] = match chain.joints[i].kind {
             JointKind::Revolute => nn.z,
