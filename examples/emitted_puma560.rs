@@ -60,21 +60,21 @@ mod __dynamics {
         k32: T,
         k33: T,
         k34: T,
+        k35: T,
         k36: T,
-        k37: T,
         u1: T,
-        k38: T,
-        k41: T,
+        k37: T,
+        k40: T,
         m4_4: T,
         u5: T,
+        k42: T,
         k43: T,
         k44: T,
-        k45: T,
         m3_4: T,
         m3_3: T,
         u32: T,
         m2_3: T,
-        k48: T,
+        k47: T,
         m2_2: T,
         u54: T,
         u55: T,
@@ -196,21 +196,21 @@ mod __dynamics {
         let k32: T = T::from_f64(-0.6903913435);
         let k33: T = T::from_f64(-1.601861202);
         let k34: T = T::from_f64(3.153542285625);
-        let k35: T = T::from_f64(-9.81);
-        let k36: T = T::from_f64(2.0);
-        let k37: T = T::from_f64(-0.00004);
-        let k38: T = T::from_f64(0.00020216);
-        let k39: T = T::from_f64(-0.00020216);
-        let k40: T = T::from_f64(0.00028216);
-        let k41: T = T::from_f64(-0.00064216);
-        let k42: T = T::from_f64(-0.000058464);
-        let k43: T = T::from_f64(0.001243584);
-        let k44: T = T::from_f64(0.000058464);
-        let k45: T = T::from_f64(-0.001243584);
-        let k46: T = T::from_f64(-2.0);
-        let k47: T = T::from_f64(0.000432144);
-        let k48: T = T::from_f64(-0.15005);
-        let k49: T = T::from_f64(-0.000432144);
+        let k35: T = T::from_f64(2.0);
+        let k36: T = T::from_f64(-0.00004);
+        let k37: T = T::from_f64(0.00020216);
+        let k38: T = T::from_f64(-0.00020216);
+        let k39: T = T::from_f64(0.00028216);
+        let k40: T = T::from_f64(-0.00064216);
+        let k41: T = T::from_f64(-0.000058464);
+        let k42: T = T::from_f64(0.001243584);
+        let k43: T = T::from_f64(0.000058464);
+        let k44: T = T::from_f64(-0.001243584);
+        let k45: T = T::from_f64(-2.0);
+        let k46: T = T::from_f64(0.000432144);
+        let k47: T = T::from_f64(-0.15005);
+        let k48: T = T::from_f64(-0.000432144);
+        let k49: T = T::from_f64(-9.81);
         let k50: T = T::from_f64(9.81);
         let k51: T = T::from_f64(-0.0282528);
         let k52: T = T::from_f64(0.0282528);
@@ -249,8 +249,8 @@ mod __dynamics {
             q_[4],
         ]);
         let u1 = s5 * c5;
-        let u2 = k39.mul_add(s5 * s5, k17);
-        let u3 = k40 - u2;
+        let u2 = k38.mul_add(s5 * s5, k17);
+        let u3 = k39 - u2;
         let u4 = k6 + u2;
         /// D44 (6.43) + actuator inertia
         let m4_4 = k22 + u3;
@@ -258,29 +258,29 @@ mod __dynamics {
         let u6 = s4 * s5;
         let u7 = s4 * s4;
         let u8 = s4 * c4;
-        let u9 = k41 + u4;
+        let u9 = k40 + u4;
         let u10 = u4 - u7 * u9;
         let u11 = k20 + u4 - u10;
         let u12 = u8 * u9;
         let u13 = c4 * u1;
-        let u14 = k38 * u13;
-        let u15 = k42 * u5;
-        let u16 = k43 * c5;
+        let u14 = k37 * u13;
+        let u15 = k41 * u5;
+        let u16 = k42 * c5;
         let u17 = m4_4 + u15;
         let u18 = u15 + u17;
         let u19 = u15 + u16;
-        let u20 = k45 * u5;
-        let u21 = k44 * u6;
-        let u22 = k42 * u6 - u12;
-        let u23 = k43 * u6;
+        let u20 = k44 * u5;
+        let u21 = k43 * u6;
+        let u22 = k41 * u6 - u12;
+        let u23 = k42 * u6;
         /// D34 = D43 (6.43)
-        let m3_4 = k45.mul_add(u6, k39 * (s4 * u1));
+        let m3_4 = k44.mul_add(u6, k38 * (s4 * u1));
         let u24 = k19.mul_add(u5, k24);
         let u25 = k16.mul_add(c5, k27);
         let u26 = k29 + (u16 + (u10 + u16));
         /// D33 (6.43) + actuator inertia
         let m3_3 = k28 + (u19 + (u11 + u19));
-        let u27 = k26 + (u14 - k44.mul_add(c5, u20));
+        let u27 = k26 + (u14 - k43.mul_add(c5, u20));
         let u28 = k14 + m3_4;
         let u29 = c3 * u24 - s3 * u25;
         let u30 = s3 * u24;
@@ -289,14 +289,14 @@ mod __dynamics {
         let u33 = s3 * s3;
         let u34 = s3 * c3;
         let u35 = u26 - u18;
-        let u36 = k46.mul_add(u27 * u34, u26 - u33 * u35);
+        let u36 = k45.mul_add(u27 * u34, u26 - u33 * u35);
         let u37 = u18 + u26 - u36;
         let u38 = c3 * c3 - u33;
         let u39 = u27.mul_add(u38, u34 * u35);
         let u40 = c3 * u22 - s3 * u28;
         let u41 = c3.mul_add(u28, s3 * u22);
         let u42 = k2 * u29;
-        let u43 = k47 * u6;
+        let u43 = k46 * u6;
         let u44 = u42 + u43;
         let u45 = u44 + (u37 + u44);
         /// D23 = D32 (6.43)
@@ -307,7 +307,7 @@ mod __dynamics {
         let m2_2 = k31 + (u42 + m2_3);
         let u48 = k10 + (u39 + u46);
         let u49 = k32 + (u40 - k3.mul_add(u29, u23));
-        let u50 = k12 + k48.mul_add(u32, u41);
+        let u50 = k12 + k47.mul_add(u32, u41);
         let u51 = s2 * s2;
         let u52 = s2 * c2;
         let u53 = u47 - u45;
@@ -316,25 +316,25 @@ mod __dynamics {
         /// D12 = D21 (6.43)
         let m1_2 = c2.mul_add(u50, s2 * u49);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k34 + (u45 + u47 - k46.mul_add(u48 * u52, u47 - u51 * u53));
+        let m1_1 = k34 + (u45 + u47 - k45.mul_add(u48 * u52, u47 - u51 * u53));
         let u56 = -u31 - u30;
-        let u57 = k48.mul_add(u29, u40);
+        let u57 = k47.mul_add(u29, u40);
         let u58 = k3.mul_add(u56, u41);
         let u59 = c2 * u57;
         let u60 = u59 - s2 * u58;
         /// D13 = D31 (6.43)
         let m1_3 = c2.mul_add(u58, s2 * u57);
-        let u61 = k43 * u5;
+        let u61 = k42 * u5;
         let u62 = u14 + u61;
         let u63 = c3 * u6;
         let u64 = s3 * u6;
         let u65 = c3.mul_add(u17, s3 * u62);
-        let u66 = k49 * u64;
-        let u67 = k47 * u63;
+        let u66 = k48 * u64;
+        let u67 = k46 * u63;
         let u68 = c3 * u62 - s3 * u17 + u66;
         let u69 = u65 + (u20 + u67);
         /// D24 = D42 (6.43)
-        let m2_4 = k43.mul_add(u64, m3_4);
+        let m2_4 = k42.mul_add(u64, m3_4);
         let u70 = c2.mul_add(u64, s2 * u63);
         let u71 = c2 * u68;
         let u72 = u71 - s2 * u69;
@@ -343,10 +343,10 @@ mod __dynamics {
         let u73 = c4 * c5;
         let u74 = s4 * c5;
         let u75 = k20 * c4;
-        let u76 = k43 * u74;
-        let u77 = k42 * s5;
-        let u78 = k45 * u73;
-        let u79 = k43 * u73;
+        let u76 = k42 * u74;
+        let u77 = k41 * s5;
+        let u78 = k44 * u73;
+        let u79 = k42 * u73;
         let u80 = k20.mul_add(s4, u76);
         /// D35 = D53 (6.43)
         let m3_5 = u75 + (u77 + u79);
@@ -357,14 +357,14 @@ mod __dynamics {
         let u85 = c3.mul_add(s5, u84);
         let u86 = s3 * u74;
         let u87 = c3 * u74;
-        let u88 = k42.mul_add(u87, s3 * u80);
-        let u89 = k47 * u85;
-        let u90 = k49 * u83;
-        let u91 = k45 * u74;
-        let u92 = k44.mul_add(u86, c3 * u80) + u89;
+        let u88 = k41.mul_add(u87, s3 * u80);
+        let u89 = k46 * u85;
+        let u90 = k48 * u83;
+        let u91 = k44 * u74;
+        let u92 = k43.mul_add(u86, c3 * u80) + u89;
         let u93 = u88 + (u90 + u91);
         /// D25 = D52 (6.43)
-        let m2_5 = k45.mul_add(u85, m3_5);
+        let m2_5 = k44.mul_add(u85, m3_5);
         let u94 = c2.mul_add(u85, s2 * u83);
         let u95 = c2 * u92;
         let u96 = u95 - s2 * u93;
@@ -382,13 +382,13 @@ mod __dynamics {
         let u102 = s2 * u100;
         let u103 = u101 - u102;
         /// D16 = D61 (6.43)
-        let m1_6 = k37 * c2.mul_add(u100, s2 * u98);
+        let m1_6 = k36 * c2.mul_add(u100, s2 * u98);
         /// D2 (6.45), gravity and spring
-        let g2 = k35 * (s2 * (k8 + u32) - c2 * (k30 + u29));
+        let g2 = k49 * (s2 * (k8 + u32) - c2 * (k30 + u29));
         let u104 = c2.mul_add(s3, s2 * c3);
         let u105 = c2 * c3 - s2 * s3;
         /// D3 (6.45), gravity and spring
-        let g3 = k35 * (u25 * u104 - u24 * u105);
+        let g3 = k49 * (u25 * u104 - u24 * u105);
         let u106 = c4 * u104;
         /// D4 (6.45), gravity and spring
         let g4 = k52 * (s5 * (s4 * u104));
@@ -403,34 +403,34 @@ mod __dynamics {
                 c5 * u105 - s5 * u106,
                 k70 + k56.mul_add(c2, k71 * s2) + k59.mul_add(u105, k72 * u104),
             );
-        let u110 = k46 * u39;
-        let u111 = u46 + k36.mul_add(u39, u46);
+        let u110 = k45 * u39;
+        let u111 = u46 + k35.mul_add(u39, u46);
         let u112 = u110 + u111
-            - k46.mul_add(u52 * k23.mul_add(u29, u36 - u37), u110 - u51 * (u110 - u111));
+            - k45.mul_add(u52 * k23.mul_add(u29, u36 - u37), u110 - u51 * (u110 - u111));
         let u113 = s2.mul_add(k3 * u32 - u41, u59);
-        let u114 = s2.mul_add(k48 * u56 - u41, u59);
-        let u115 = k49 * u63;
-        let u116 = k43 * u63;
+        let u114 = s2.mul_add(k47 * u56 - u41, u59);
+        let u115 = k48 * u63;
+        let u116 = k42 * u63;
         let u117 = s2.mul_add(u115 - u65, u71);
-        let u118 = k45 * u83;
-        let u119 = s2.mul_add(k47 * u83 - u88, u95);
+        let u118 = k44 * u83;
+        let u119 = s2.mul_add(k46 * u83 - u88, u95);
         let u120 = u102 - u101;
-        let u121 = k46 * u12;
-        let u122 = u21 + k36.mul_add(u12, u21);
+        let u121 = k45 * u12;
+        let u122 = u21 + k35.mul_add(u12, u21);
         let u123 = u15 - (u10 - u11);
-        let u124 = k39.mul_add(u13, u20);
+        let u124 = k38.mul_add(u13, u20);
         let u125 = k75.mul_add(u6, u121);
-        let u126 = k46.mul_add(m3_4 * u34, u121 - u33 * u125);
+        let u126 = k45.mul_add(m3_4 * u34, u121 - u33 * u125);
         let u127 = c3 * u123 - s3 * u124;
-        let u128 = k47 * u5;
+        let u128 = k46 * u5;
         let u129 = u128 + (u126 + u128);
         let u130 = u116 + u128;
         let u131 = u130 + (k74.mul_add(u6, u121) - u126 + u130);
         let u132 = u116 + u122;
         let u133 = u116 + u132;
-        let u134 = k45 * u64;
+        let u134 = k44 * u64;
         let u135 = u129 + u131
-            - k46
+            - k45
                 .mul_add(
                     u52 * (m3_4.mul_add(u38, u34 * u125) + u134),
                     u129 - u51 * (u129 - u131),
@@ -438,57 +438,57 @@ mod __dynamics {
         let u136 = c2 * (u66 + c3.mul_add(u124, s3 * u123));
         let u137 = s2.mul_add(u127 - (u61 + u67), u136);
         let u138 = s2.mul_add(u115 + u127, u136);
-        let u139 = k42 * u64;
-        let u140 = k44 * u63;
-        let u141 = k43.mul_add(u99, u124);
+        let u139 = k41 * u64;
+        let u140 = k43 * u63;
+        let u141 = k42.mul_add(u99, u124);
         let u142 = c2
             .mul_add(
-                s3.mul_add(m3_4, u140) + k47.mul_add(u97, u23),
-                s2 * k49.mul_add(u99, c3.mul_add(m3_4, u139)),
+                s3.mul_add(m3_4, u140) + k46.mul_add(u97, u23),
+                s2 * k48.mul_add(u99, c3.mul_add(m3_4, u139)),
             );
-        let u143 = k42 * u73;
+        let u143 = k41 * u73;
         let u144 = u75 + u79;
-        let u145 = k41.mul_add(s4, u91);
-        let u146 = k49 * u86;
-        let u147 = k47.mul_add(u87, u78);
-        let u148 = k43 * u86;
+        let u145 = k40.mul_add(s4, u91);
+        let u146 = k48 * u86;
+        let u147 = k46.mul_add(u87, u78);
+        let u148 = k42 * u86;
         let u149 = u145 + u148;
         let u150 = c2
             .mul_add(
-                k42.mul_add(u81, s3 * u144) + u147,
-                s2 * (k44.mul_add(u84, c3 * u144) + u146),
+                k41.mul_add(u81, s3 * u144) + u147,
+                s2 * (k43.mul_add(u84, c3 * u144) + u146),
             );
         let u151 = u2 - u3;
         let u152 = u1 - u1 * u7;
         let u153 = c4 * u151;
-        let u154 = k45 * s5;
+        let u154 = k44 * s5;
         let u155 = u154 + k77.mul_add(u152, u154);
         let u156 = k76.mul_add(u1, u143);
         let u157 = u143 + u156;
         let u158 = u143 + u154;
         let u159 = u158 + k77.mul_add(u1 - u152, u158);
         let u160 = u153 - (u77 + u78);
-        let u161 = k76.mul_add(u1 * u8, k42 * u74);
+        let u161 = k76.mul_add(u1 * u8, k41 * u74);
         let u162 = u91 - s4 * u151;
         let u163 = u155 - u157;
-        let u164 = k46.mul_add(u34 * u160, u155 - u33 * u163);
+        let u164 = k45.mul_add(u34 * u160, u155 - u33 * u163);
         let u165 = c3 * u161 - s3 * u162;
-        let u166 = k47 * u74;
+        let u166 = k46 * u74;
         let u167 = u166 + (u164 + u166);
         let u168 = u118 + u166;
         let u169 = u168 + (u155 + u157 - u164 + u168);
         let u170 = u118 + (u118 + u159);
         let u171 = u167 + u169
-            - k46
+            - k45
                 .mul_add(
-                    u52 * k43.mul_add(u85, u38.mul_add(u160, u34 * u163)),
+                    u52 * k42.mul_add(u85, u38.mul_add(u160, u34 * u163)),
                     u167 - u51 * (u167 - u169),
                 );
         let u172 = c2 * (u89 + c3.mul_add(u162, s3 * u161));
         let u173 = s2.mul_add(u165 - (u76 + u90), u172);
         let u174 = u82 - u81;
-        let u175 = k43.mul_add(u174, u159);
-        let u176 = s2.mul_add(k49.mul_add(u174, u165), u172);
+        let u175 = k42.mul_add(u174, u159);
+        let u176 = s2.mul_add(k48.mul_add(u174, u165), u172);
         let u177 = u79 + u153;
         let u178 = u148 + u162;
         let u179 = c2
@@ -496,12 +496,12 @@ mod __dynamics {
                 u147 + c3.mul_add(u156, s3 * u177),
                 s2 * (u146 + (c3 * u177 - s3 * u156)),
             );
-        let u180 = k42.mul_add(c5, u20);
-        let u181 = k43.mul_add(u100, u180);
+        let u180 = k41.mul_add(c5, u20);
+        let u181 = k42.mul_add(u100, u180);
         let u182 = c2
             .mul_add(
-                u134 + u140 + k47.mul_add(u98, u23),
-                s2 * k49.mul_add(u100, k45.mul_add(u63, u139)),
+                u134 + u140 + k46.mul_add(u98, u23),
+                s2 * k48.mul_add(u100, k44.mul_add(u63, u139)),
             );
         Configuration {
             k1,
@@ -544,21 +544,21 @@ mod __dynamics {
             k32,
             k33,
             k34,
+            k35,
             k36,
-            k37,
             u1,
-            k38,
-            k41,
+            k37,
+            k40,
             m4_4,
             u5,
+            k42,
             k43,
             k44,
-            k45,
             m3_4,
             m3_3,
             u32,
             m2_3,
-            k48,
+            k47,
             m2_2,
             u54,
             u55,
@@ -688,13 +688,13 @@ mod __dynamics {
             k2,
             s5,
             k7,
+            k35,
             k36,
-            k37,
             u1,
-            k38,
+            k37,
             u5,
-            k43,
-            k45,
+            k42,
+            k44,
             u32,
             u54,
             u55,
@@ -746,35 +746,35 @@ mod __dynamics {
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = qd2 * u55;
+        let t1 = u55 * qd2;
         let t2 = qd4 * u142;
-        let t3 = k2 * (qd3 * u56);
+        let t3 = k2 * (u56 * qd3);
         let t4 = qd4 * u141;
-        let t5 = qd1 * u103;
+        let t5 = u103 * qd1;
         /// C33 = sum of D33k qd_k (6.44)
         let cor3_3 = k1 * qd5.mul_add(u159, qd4 * u122);
         let t6 = qd4 * u124;
         let t7 = qd5 * u180;
         /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = k38 * (qd5 * u1);
+        let cor4_4 = k37 * (u1 * qd5);
         let t8 = s5 * qd5;
-        let t9 = s5.mul_add(qd4, qd1 * u94 - qd2 * u74 - qd3 * u74);
+        let t9 = s5.mul_add(qd4, u94 * qd1 - u74 * qd2 - u74 * qd3);
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k79 * t9;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = k78 * t9;
-        let t10 = k37
+        let t10 = k36
             .mul_add(
-                qd6 * u103,
-                qd5
+                u103 * qd6,
+                u96
                     .mul_add(
-                        u96,
-                        qd4.mul_add(u72, qd3.mul_add(u60, k36.mul_add(qd1 * u54, t1))),
+                        qd5,
+                        u72.mul_add(qd4, u60.mul_add(qd3, k35.mul_add(u54 * qd1, t1))),
                     ),
             );
-        let t11 = k7 * (qd6 * u5);
-        let t12 = k7 * (qd6 * u74);
-        let t13 = qd5.mul_add(u74, qd4 * u5);
+        let t11 = k7 * (u5 * qd6);
+        let t12 = k7 * (u74 * qd6);
+        let t13 = u74.mul_add(qd5, u5 * qd4);
         /// C26 = sum of D26k qd_k (6.44)
         let cor2_6 = k79 * (t5 + t13);
         /// C62 = sum of D62k qd_k (6.44)
@@ -783,21 +783,21 @@ mod __dynamics {
         let t15 = qd3 * u114;
         let t16 = qd5 * u182;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k78 * qd5.mul_add(u94, qd2 * u103 - qd3 * u120 - qd4 * u70);
+        let cor1_6 = k78 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
         let t17 = qd5 * u181;
         let t18 = qd1 * u120;
-        let t19 = qd3.mul_add(u5, qd1.mul_add(u70, qd2 * u5));
+        let t19 = u5.mul_add(qd3, u70.mul_add(qd1, u5 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = k78 * (t8 + t19);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k36 * (qd2 * u54))));
+            * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k35 * (u54 * qd2))));
         let t20 = qd5.mul_add(u173, qd4.mul_add(u137, qd3.mul_add(u113, t1)));
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t10 + t20);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t20 - t10);
-        let t21 = qd5.mul_add(u176, qd4.mul_add(u138, qd2.mul_add(u60, t15)));
+        let t21 = qd5.mul_add(u176, qd4.mul_add(u138, u60.mul_add(qd2, t15)));
         let t22 = k7
             .mul_add(
                 qd6 * u120,
@@ -807,20 +807,20 @@ mod __dynamics {
         let cor1_3 = k1 * (t21 + t22);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t21 - t22);
-        let t23 = qd5.mul_add(u179, t2 + qd3.mul_add(u117, qd2 * u72));
+        let t23 = qd5.mul_add(u179, t2 + qd3.mul_add(u117, u72 * qd2));
         let t24 = k7
             .mul_add(
-                qd6 * u70,
+                u70 * qd6,
                 qd5.mul_add(u150, t2 + qd3.mul_add(u138, qd2.mul_add(u137, qd1 * u135))),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t23 + t24);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t23 - t24);
-        let t25 = t16 + qd4.mul_add(u150, qd3.mul_add(u119, qd2 * u96));
-        let t26 = k37
+        let t25 = t16 + qd4.mul_add(u150, qd3.mul_add(u119, u96 * qd2));
+        let t26 = k36
             .mul_add(
-                qd6 * u94,
+                u94 * qd6,
                 t16 + qd4.mul_add(u179, qd3.mul_add(u176, qd2.mul_add(u173, qd1 * u171))),
             );
         /// C15 = sum of D15k qd_k (6.44)
@@ -828,29 +828,29 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u170, k73.mul_add(qd3 * u32, qd4 * u133));
+        let cor2_2 = k1 * qd5.mul_add(u170, k73.mul_add(u32 * qd3, qd4 * u133));
         let t27 = qd5.mul_add(u175, qd4.mul_add(u132, t3));
-        let t28 = k45
+        let t28 = k44
             .mul_add(
-                qd5 * u83,
-                k43.mul_add(qd4 * u63, t3 + k73.mul_add(qd2 * u32, qd1 * u113)),
-            ) - qd1 * u60;
+                u83 * qd5,
+                k42.mul_add(u63 * qd4, t3 + k73.mul_add(u32 * qd2, qd1 * u113)),
+            ) - u60 * qd1;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t27 - t28);
-        let t29 = qd5.mul_add(u178, k43.mul_add(qd3 * u63, t4));
+        let t29 = qd5.mul_add(u178, k42.mul_add(u63 * qd3, t4));
         let t30 = t11
             + qd5.mul_add(u149, t4 + qd3.mul_add(u132, qd1.mul_add(u137, qd2 * u133)))
-            - qd1 * u72;
+            - u72 * qd1;
         /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = k1 * (t29 + t30);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t29 - t30);
-        let t31 = qd4.mul_add(u149, k45 * (qd3 * u83)) + t17;
+        let t31 = qd4.mul_add(u149, k44 * (u83 * qd3)) + t17;
         let t32 = t12
             + (t17 + qd4.mul_add(u178, qd3.mul_add(u175, qd1.mul_add(u173, qd2 * u170))))
-            - qd1 * u96;
+            - u96 * qd1;
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t31 + t32);
         /// C52 = sum of D52k qd_k (6.44)
@@ -858,14 +858,14 @@ mod __dynamics {
         let t33 = qd5.mul_add(u162, t6);
         let t34 = t11
             + qd5.mul_add(u145, t6 + qd3.mul_add(u122, qd1.mul_add(u138, qd2 * u132)))
-            - qd1.mul_add(u117, k43 * (qd2 * u63));
+            - qd1.mul_add(u117, k42 * (u63 * qd2));
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
         let t35 = t12
             + (t7 + qd4.mul_add(u162, qd3.mul_add(u159, qd2.mul_add(u175, qd1 * u176))))
-            - qd1.mul_add(u119, k45 * (qd2 * u83));
+            - qd1.mul_add(u119, k44 * (u83 * qd2));
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = k1 * (t14 + t35);
         /// C53 = sum of D53k qd_k (6.44)
@@ -874,10 +874,10 @@ mod __dynamics {
         let cor3_6 = k79 * (t13 - t18);
         /// C63 = sum of D63k qd_k (6.44)
         let cor6_3 = k79 * (t13 + t18);
-        let t36 = k37
+        let t36 = k36
             .mul_add(
                 s5 * qd6,
-                k76.mul_add(qd4 * u1, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
+                k76.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
             ) - qd3.mul_add(u145, qd2.mul_add(u149, qd1 * u150));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
@@ -938,11 +938,11 @@ mod __dynamics {
             k31,
             k32,
             k33,
-            k37,
-            k41,
+            k36,
+            k40,
+            k43,
             k44,
-            k45,
-            k48,
+            k47,
             k53,
             k54,
             k57,
@@ -967,7 +967,7 @@ mod __dynamics {
         let t7 = qd2 * qd2;
         let t8 = t1 * t2;
         let t9 = t6 + t7;
-        let t10 = k48.mul_add(t5 + t6, k63 * t4);
+        let t10 = k47.mul_add(t5 + t6, k63 * t4);
         let t11 = s3.mul_add(t2, c3 * t1);
         let t12 = c3 * t2 - s3 * t1;
         let t13 = c3 * t9 - s3 * t8;
@@ -1004,7 +1004,7 @@ mod __dynamics {
         let t44 = qd6 + t36;
         /// centripetal and Coriolis torque 6
         let cqd6 = k7 * (c5 * t17 - s5 * t33 - qd5 * t35);
-        let t45 = k37
+        let t45 = k36
             .mul_add(
                 t37 * t44,
                 k19.mul_add(-(c4 * t29) - s4 * t28, k20.mul_add(t40, k17 * t38)),
@@ -1021,7 +1021,7 @@ mod __dynamics {
                                 k2.mul_add(t14, k23.mul_add(t25, k4 * t21)),
                                 c5 * (c4 * t28 - s4 * t29),
                             ),
-                        k18.mul_add(t39, k41 * t34),
+                        k18.mul_add(t39, k40 * t34),
                     ),
             );
         let t47 = s5.mul_add(t42, c5 * t41);
@@ -1038,13 +1038,13 @@ mod __dynamics {
             .mul_add(
                 t10,
                 k28.mul_add(t23, k14.mul_add(t19 - t20, k66.mul_add(t26, k29 * t16))),
-            ) + k45.mul_add(t52, c4 * t49 - s4 * t50);
+            ) + k44.mul_add(t52, c4 * t49 - s4 * t50);
         let t56 = k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27)))
-            + k44.mul_add(t52, cqd4);
+            + k43.mul_add(t52, cqd4);
         /// centripetal and Coriolis torque 3
         let cqd3 = k58.mul_add(t21, k26.mul_add(t18 - t19, k14 * (t17 + t22)))
             + k67.mul_add(t13, k25 * t14)
-            + (k45.mul_add(t51, k44 * t48) - c4.mul_add(t50, s4 * t49));
+            + (k44.mul_add(t51, k43 * t48) - c4.mul_add(t50, s4 * t49));
         let t57 = c3.mul_add(t54, s3 * t53);
         /// centripetal and Coriolis torque 2
         let cqd2 = k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t57, cqd3);
@@ -1067,7 +1067,7 @@ mod __dynamics {
                                     t6 - t7,
                                     k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
                                 ),
-                        ) + k48.mul_add(t57, c3 * t55 - s3 * t56)),
+                        ) + k47.mul_add(t57, c3 * t55 - s3 * t56)),
             );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
@@ -1122,11 +1122,11 @@ mod __dynamics {
             k31,
             k32,
             k33,
-            k37,
-            k41,
+            k36,
+            k40,
+            k43,
             k44,
-            k45,
-            k48,
+            k47,
             u107,
             u108,
             k53,
@@ -1152,7 +1152,7 @@ mod __dynamics {
         let t6 = t2 * t2;
         let t7 = qd2 * qd2;
         let t8 = t1 * t2;
-        let t9 = k48.mul_add(t5 + t6, k63 * t4);
+        let t9 = k47.mul_add(t5 + t6, k63 * t4);
         let t10 = s3.mul_add(t2, c3 * t1);
         let t11 = c3 * t2 - s3 * t1;
         let t12 = qd2 + qd3;
@@ -1199,7 +1199,7 @@ mod __dynamics {
         let t51 = s3.mul_add(t50, c3 * t49);
         let t52 = c3 * t50 - s3 * t49;
         let t53 = k2.mul_add(t18, k5 * t21) + t51;
-        let t54 = k37
+        let t54 = k36
             .mul_add(
                 t33 * t40,
                 k19.mul_add(-(c4 * t25) - s4 * t53, k20.mul_add(t36, k17 * t34)),
@@ -1215,7 +1215,7 @@ mod __dynamics {
                                 k23.mul_add(t22, k4 * t18) + t52,
                                 c5 * (c4 * t53 - s4 * t25),
                             ),
-                        k18.mul_add(t35, k41 * t30),
+                        k18.mul_add(t35, k40 * t30),
                     ),
             );
         let t55 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t54 - s5 * t41);
@@ -1226,13 +1226,13 @@ mod __dynamics {
             .mul_add(
                 t9,
                 k28.mul_add(t20, k14.mul_add(t16 - t17, k66.mul_add(t23, k29 * t13))),
-            ) + k45.mul_add(t45, c4 * t55 - s4 * t56);
+            ) + k44.mul_add(t45, c4 * t55 - s4 * t56);
         let t58 = k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24)))
-            + k44.mul_add(t45, h4);
+            + k43.mul_add(t45, h4);
         /// centripetal, Coriolis and gravity torque 3
         let h3 = k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
             + k65.mul_add(t51, k24 * t52)
-            + (k45.mul_add(t44, k44 * t43) - c4.mul_add(t56, s4 * t55));
+            + (k44.mul_add(t44, k43 * t43) - c4.mul_add(t56, s4 * t55));
         /// centripetal, Coriolis and gravity torque 2
         let h2 = u109 + k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t48, h3);
         /// centripetal, Coriolis and gravity torque 1
@@ -1253,7 +1253,7 @@ mod __dynamics {
                                     t6 - t7,
                                     k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
                                 ),
-                        ) + k48.mul_add(t48, c3 * t57 - s3 * t58)),
+                        ) + k47.mul_add(t48, c3 * t57 - s3 * t58)),
             );
         [h1, h2, h3, h4, h5, h6]
     }
@@ -1303,10 +1303,10 @@ mod __dynamics {
             k32,
             k33,
             k34,
-            k37,
+            k36,
+            k43,
             k44,
-            k45,
-            k48,
+            k47,
             u107,
             u108,
             k53,
@@ -1358,7 +1358,7 @@ mod __dynamics {
         let t33 = qdd2 + t8;
         let t34 = t3 - t30;
         let t35 = t4 - t31;
-        let t36 = k2.mul_add(t35, k48 * (t5 + t6));
+        let t36 = k2.mul_add(t35, k47 * (t5 + t6));
         let t37 = u107 + k3.mul_add(t32, k23 * (t6 + t7));
         let t38 = u108 + k3.mul_add(t34, k2 * t33);
         let t39 = s3.mul_add(t38, c3 * t37);
@@ -1380,7 +1380,7 @@ mod __dynamics {
         let t55 = t27 + t52;
         /// T6 (6.46)
         let tau6 = k7 * (qdd6 + (c5 * t51 - s5 * t50 - qd5 * t23));
-        let t56 = k37
+        let t56 = k36
             .mul_add(
                 t25 * t29,
                 k19.mul_add(-(c4 * t49) - s4 * t48, k17.mul_add(t52, k20 * t27)),
@@ -1414,14 +1414,14 @@ mod __dynamics {
             .mul_add(
                 t36,
                 k28.mul_add(t17, k14.mul_add(t13 - t14, k66.mul_add(t46, k29 * t41))),
-            ) + k45.mul_add(t63, c4 * t60 - s4 * t61);
+            ) + k44.mul_add(t63, c4 * t60 - s4 * t61);
         let t67 = k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47)))
-            + k44.mul_add(t63, tau4);
+            + k43.mul_add(t63, tau4);
         /// T3 (6.46)
         let tau3 = k58
             .mul_add(t15, k26.mul_add(t12 - t13, k14.mul_add(t16 + t42, k28 * t43)))
             + k65.mul_add(t39, k24 * t40)
-            + (k45.mul_add(t62, k44 * t59) - c4.mul_add(t61, s4 * t60));
+            + (k44.mul_add(t62, k43 * t59) - c4.mul_add(t61, s4 * t60));
         let t68 = c3.mul_add(t65, s3 * t64);
         /// T2 (6.46)
         let tau2 = u109
@@ -1457,7 +1457,7 @@ mod __dynamics {
                                             t6 - t7,
                                             k32.mul_add(t33, k9.mul_add(t35, k33 * t30)),
                                         ),
-                                ) + k48.mul_add(t68, c3 * t66 - s3 * t67)),
+                                ) + k47.mul_add(t68, c3 * t66 - s3 * t67)),
                     ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]
@@ -1500,8 +1500,8 @@ mod __dynamics {
             k32,
             k33,
             k34,
-            k36,
-            k48,
+            k35,
+            k47,
             k64,
             k65,
             k69,
@@ -1520,9 +1520,9 @@ mod __dynamics {
         let t10 = s5.mul_add(t9, c5 * t8);
         let t11 = qd5 - (-(c4 * t7) - s4 * t4);
         let t12 = qd6 + (c5 * t9 - s5 * t8);
-        let t13 = k48.mul_add(t1, k2 * qd2);
+        let t13 = k47.mul_add(t1, k2 * qd2);
         let t14 = s3.mul_add(t13, k3 * t5);
-        let t15 = k48.mul_add(t3, c3 * t13);
+        let t15 = k47.mul_add(t3, c3 * t13);
         let t16 = k23.mul_add(t7, t14);
         let t17 = k23.mul_add(t2, k5.mul_add(t6, k2 * t4));
         k1
@@ -1538,7 +1538,7 @@ mod __dynamics {
                                         * s5
                                             .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
                                 ),
-                            k36
+                            k35
                                 .mul_add(
                                     k23
                                         .mul_add(

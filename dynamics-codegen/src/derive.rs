@@ -273,8 +273,23 @@ pub fn derive(robot: &Robot) -> Equations {
     let chain = match robot.convention {
         Convention::Standard => Chain::standard(&rows, &links),
         Convention::Modified => Chain::modified(&rows, &links),
-    }
-    .regrouped();
+    };
+    // Bodies carried through a general twist: moved to the parent's origin before the twist or
+    // after it, whichever makes M cheaper (before, on the dense random arm; after, on a
+    // two-joint one). With quarter-turn twists the two are the same graph.
+    let chain = {
+        let after = chain.clone().regrouped();
+        let before = chain.moving_before_twist(true).regrouped();
+        let cost = |c: &Chain<Expr<'_>>| {
+            let m: Vec<NodeId> = algo::crba(c).iter().flatten().map(|e| e.id()).collect();
+            operations(&graph.borrow(), &m)
+        };
+        if cost(&before) < cost(&after) {
+            before
+        } else {
+            after
+        }
+    };
     let gravity = V3::new(
         t.value(&robot.gravity[0]),
         t.value(&robot.gravity[1]),

@@ -107,6 +107,32 @@ impl<S: Scalar> Body<S> {
         Mat3::symmetric(self.inertia).mul_vec(w)
     }
 
+    /// The body about the point `−p` (same axes): seen from a frame whose origin is the
+    /// body's origin minus `p`. `I' = I + m(|p|²1 − p pᵀ) + 2(p·h)1 − p hᵀ − h pᵀ`,
+    /// `h' = h + m p`.
+    #[must_use]
+    pub fn moved_by(&self, p: V3<S>) -> Body<S> {
+        let (m, h, i) = (self.mass, self.h, self.inertia);
+        let mp = p.scale(m);
+        let (px, py, pz) = (p.x, p.y, p.z);
+        let xx = mp.y * py + mp.z * pz;
+        let yy = mp.x * px + mp.z * pz;
+        let zz = mp.x * px + mp.y * py;
+        let (phx, phy, phz) = (px * h.x, py * h.y, pz * h.z);
+        Body {
+            mass: m,
+            h: h.add(mp),
+            inertia: [
+                i[0] + xx + (phy + phz) + (phy + phz),
+                i[1] + yy + (phx + phz) + (phx + phz),
+                i[2] + zz + (phx + phy) + (phx + phy),
+                i[3] - mp.x * py - (px * h.y + h.x * py),
+                i[4] - mp.x * pz - (px * h.z + h.x * pz),
+                i[5] - mp.y * pz - (py * h.z + h.y * pz),
+            ],
+        }
+    }
+
     /// `self + o` (both about the same origin, same axes).
     #[must_use]
     pub fn add(&self, o: &Body<S>) -> Body<S> {
@@ -147,6 +173,10 @@ pub struct ChainJoint<S> {
     pub d: S,
     /// The link moved by this joint, about J_i's origin.
     pub body: Body<S>,
+    /// Whether [`ChainJoint::body_to_parent`] moves a body to the parent's origin before the
+    /// twist by α, where the arm is `(a, 0, d)`, rather than after it. Both give the same
+    /// body; which takes fewer operations depends on the robot ([`Chain::moving_before_twist`]).
+    pub move_before_twist: bool,
 }
 
 impl<S: Scalar> ChainJoint<S> {
@@ -235,29 +265,30 @@ impl<S: Scalar> ChainJoint<S> {
 
     /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes.
     pub fn body_to_parent(&self, b: &Body<S>) -> Body<S> {
-        let p = self.offset();
-        let m = b.mass;
-        let hr = self.to_parent(b.h);
-        let ir = self.turned_inertia(b.inertia);
-        let ir = rotate_inertia(ir, self.sin_alpha, self.cos_alpha, 1, 2);
-        let mp = p.scale(m);
-        // I' = R I Rᵀ + m(|p|²1 − p pᵀ) + 2(p·h')1 − p h'ᵀ − h' pᵀ, with h' = R h
-        let (px, py, pz) = (p.x, p.y, p.z);
-        let xx = mp.y * py + mp.z * pz;
-        let yy = mp.x * px + mp.z * pz;
-        let zz = mp.x * px + mp.y * py;
-        let (phx, phy, phz) = (px * hr.x, py * hr.y, pz * hr.z);
+        if !self.move_before_twist || self.twist_is_quarter_turn() {
+            let turned = Body {
+                mass: b.mass,
+                h: self.to_parent(b.h),
+                inertia: rotate_inertia(
+                    self.turned_inertia(b.inertia),
+                    self.sin_alpha,
+                    self.cos_alpha,
+                    1,
+                    2,
+                ),
+            };
+            return turned.moved_by(self.offset());
+        }
+        let turned = Body {
+            mass: b.mass,
+            h: self.to_turned(b.h),
+            inertia: self.turned_inertia(b.inertia),
+        };
+        let moved = turned.moved_by(V3::new(self.a, self.d.zero(), self.d));
         Body {
-            mass: m,
-            h: hr.add(mp),
-            inertia: [
-                ir[0] + xx + (phy + phz) + (phy + phz),
-                ir[1] + yy + (phx + phz) + (phx + phz),
-                ir[2] + zz + (phx + phy) + (phx + phy),
-                ir[3] - mp.x * py - (px * hr.y + hr.x * py),
-                ir[4] - mp.x * pz - (px * hr.z + hr.x * pz),
-                ir[5] - mp.y * pz - (py * hr.z + hr.y * pz),
-            ],
+            mass: moved.mass,
+            h: self.twist(moved.h),
+            inertia: rotate_inertia(moved.inertia, self.sin_alpha, self.cos_alpha, 1, 2),
         }
     }
 }
@@ -291,6 +322,7 @@ impl<S: Scalar> Chain<S> {
                     cos_theta: row.cos_theta,
                     d: row.d,
                     body: Body::from_inertial(link, row.a, row.sin_alpha, row.cos_alpha),
+                    move_before_twist: false,
                 }
             })
             .collect();
@@ -314,6 +346,7 @@ impl<S: Scalar> Chain<S> {
                     cos_theta: row.cos_theta,
                     d: row.d,
                     body: Body::from_inertial(link, zero, zero, zero.one()),
+                    move_before_twist: false,
                 }
             })
             .collect();
@@ -322,6 +355,15 @@ impl<S: Scalar> Chain<S> {
 }
 
 impl<S: Scalar> Chain<S> {
+    /// The same chain with [`ChainJoint::move_before_twist`] set to `on` for every joint.
+    #[must_use]
+    pub fn moving_before_twist(mut self, on: bool) -> Chain<S> {
+        for j in &mut self.joints {
+            j.move_before_twist = on;
+        }
+        self
+    }
+
     /// The same robot with inertial parameters regrouped onto fewer links, leaving `M`, `τ`,
     /// `g` and the energies exactly unchanged (in the spirit of Khalil and Gautier's base
     /// parameters):
@@ -431,6 +473,33 @@ mod tests {
     use super::{rotate_inertia, Mat3};
     use crate::algo::{test_chain, V3};
     use std::ops::Add;
+
+    /// A body carried to the parent is the same moved before the twist or after it, and its
+    /// first moment and inertia are those of `R h + m p` and the parallel-axis theorem.
+    #[test]
+    fn carrying_a_body() {
+        let chain = test_chain(&[0.3, -1.1, 0.25, 2.0, -0.6]);
+        for joint in &chain.joints[1..] {
+            let b = &joint.body;
+            let mut before = *joint;
+            before.move_before_twist = true;
+            let (x, y) = (joint.body_to_parent(b), before.body_to_parent(b));
+            let r = joint.rotation();
+            let h = r.mul_vec(b.h).add(joint.offset().scale(b.mass));
+            for (u, v) in [
+                (x.h.x, y.h.x),
+                (x.h.y, y.h.y),
+                (x.h.z, y.h.z),
+                (x.h.x, h.x),
+                (x.h.z, h.z),
+            ] {
+                assert!((u - v).abs() < 1e-14, "{u} vs {v}");
+            }
+            for (u, v) in x.inertia.iter().zip(y.inertia) {
+                assert!((u - v).abs() < 1e-14, "{:?} vs {:?}", x.inertia, y.inertia);
+            }
+        }
+    }
 
     /// A wrench carried to the parent, the arm crossed before the twist or after it, equals
     /// `(R f, R n + p × R f)` with the full rotation matrix.

@@ -150,13 +150,13 @@ mod tests {
     fn derivative_matches_finite_differences() {
         let q = [0.3, -1.1, 0.25, 2.0, -0.6];
         let h = 1e-6;
-        for regroup in [false, true] {
+        for (regroup, before) in [(false, false), (true, false), (true, true)] {
             let m_at = |q: &[f64]| {
-                let c = chain(q);
+                let c = chain(q).moving_before_twist(before);
                 crba(&if regroup { c.regrouped() } else { c })
             };
             for k in 0..q.len() {
-                let c = chain(&q);
+                let c = chain(&q).moving_before_twist(before);
                 let c = if regroup { c.regrouped() } else { c };
                 let Some(dm) = crba_derivative(&c, k) else {
                     assert_eq!(k, 2, "only the prismatic joint has no analytic derivative");
