@@ -119,9 +119,8 @@ mod __dynamics {
         k66: T,
         k67: T,
         k68: T,
-        k69: T,
         p: T,
-        k73: T,
+        k72: T,
         u112: T,
         u113: T,
         u114: T,
@@ -140,7 +139,7 @@ mod __dynamics {
         u145: T,
         u149: T,
         u150: T,
-        k76: T,
+        k75: T,
         u159: T,
         u162: T,
         u170: T,
@@ -153,9 +152,9 @@ mod __dynamics {
         u180: T,
         u181: T,
         u182: T,
+        k77: T,
         k78: T,
         k79: T,
-        k80: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -229,19 +228,18 @@ mod __dynamics {
         let k65: T = T::from_f64(-0.89133);
         let k66: T = T::from_f64(0.011273199);
         let k67: T = T::from_f64(0.384876294);
-        let k68: T = T::from_f64(0.6903913435);
-        let k69: T = T::from_f64(-0.00576);
-        let k70: T = T::from_f64(-154.550796435);
-        let k71: T = T::from_f64(-37.2347379);
-        let k72: T = T::from_f64(-0.24892875);
-        let k73: T = T::from_f64(-0.8636);
-        let k74: T = T::from_f64(0.000116928);
-        let k75: T = T::from_f64(-0.000116928);
-        let k76: T = T::from_f64(0.00040432);
-        let k77: T = T::from_f64(-0.00040432);
-        let k78: T = T::from_f64(-0.00002);
-        let k79: T = T::from_f64(0.00002);
-        let k80: T = T::from_f64(-0.5);
+        let k68: T = T::from_f64(-0.00576);
+        let k69: T = T::from_f64(-154.550796435);
+        let k70: T = T::from_f64(-37.2347379);
+        let k71: T = T::from_f64(-0.24892875);
+        let k72: T = T::from_f64(-0.8636);
+        let k73: T = T::from_f64(0.000116928);
+        let k74: T = T::from_f64(-0.000116928);
+        let k75: T = T::from_f64(0.00040432);
+        let k76: T = T::from_f64(-0.00040432);
+        let k77: T = T::from_f64(-0.00002);
+        let k78: T = T::from_f64(0.00002);
+        let k79: T = T::from_f64(-0.5);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -401,7 +399,7 @@ mod __dynamics {
         let p = -k51
             .mul_add(
                 c5 * u105 - s5 * u106,
-                k70 + k56.mul_add(c2, k71 * s2) + k59.mul_add(u105, k72 * u104),
+                k69 + k56.mul_add(c2, k70 * s2) + k59.mul_add(u105, k71 * u104),
             );
         let u110 = k45 * u39;
         let u111 = u46 + k35.mul_add(u39, u46);
@@ -419,13 +417,13 @@ mod __dynamics {
         let u122 = u21 + k35.mul_add(u12, u21);
         let u123 = u15 - (u10 - u11);
         let u124 = k38.mul_add(u13, u20);
-        let u125 = k75.mul_add(u6, u121);
+        let u125 = k74.mul_add(u6, u121);
         let u126 = k45.mul_add(m3_4 * u34, u121 - u33 * u125);
         let u127 = c3 * u123 - s3 * u124;
         let u128 = k46 * u5;
         let u129 = u128 + (u126 + u128);
         let u130 = u116 + u128;
-        let u131 = u130 + (k74.mul_add(u6, u121) - u126 + u130);
+        let u131 = u130 + (k73.mul_add(u6, u121) - u126 + u130);
         let u132 = u116 + u122;
         let u133 = u116 + u132;
         let u134 = k44 * u64;
@@ -459,16 +457,16 @@ mod __dynamics {
                 s2 * (k43.mul_add(u84, c3 * u144) + u146),
             );
         let u151 = u2 - u3;
-        let u152 = u1 - u1 * u7;
+        let u152 = u1 * u7;
         let u153 = c4 * u151;
         let u154 = k44 * s5;
-        let u155 = u154 + k77.mul_add(u152, u154);
-        let u156 = k76.mul_add(u1, u143);
+        let u155 = u154 + k76.mul_add(u1 - u152, u154);
+        let u156 = k75.mul_add(u1, u143);
         let u157 = u143 + u156;
         let u158 = u143 + u154;
-        let u159 = u158 + k77.mul_add(u1 - u152, u158);
+        let u159 = u158 + k76.mul_add(u152, u158);
         let u160 = u153 - (u77 + u78);
-        let u161 = k76.mul_add(u1 * u8, k41 * u74);
+        let u161 = k75.mul_add(u1 * u8, k41 * u74);
         let u162 = u91 - s4 * u151;
         let u163 = u155 - u157;
         let u164 = k45.mul_add(u34 * u160, u155 - u33 * u163);
@@ -603,9 +601,8 @@ mod __dynamics {
             k66,
             k67,
             k68,
-            k69,
             p,
-            k73,
+            k72,
             u112,
             u113,
             u114,
@@ -624,7 +621,7 @@ mod __dynamics {
             u145,
             u149,
             u150,
-            k76,
+            k75,
             u159,
             u162,
             u170,
@@ -637,9 +634,9 @@ mod __dynamics {
             u180,
             u181,
             u182,
+            k77,
             k78,
             k79,
-            k80,
         }
     }
     #[inline(always)]
@@ -708,7 +705,7 @@ mod __dynamics {
             u94,
             u96,
             u103,
-            k73,
+            k72,
             u112,
             u113,
             u114,
@@ -727,7 +724,7 @@ mod __dynamics {
             u145,
             u149,
             u150,
-            k76,
+            k75,
             u159,
             u162,
             u170,
@@ -740,9 +737,9 @@ mod __dynamics {
             u180,
             u181,
             u182,
+            k77,
             k78,
             k79,
-            k80,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -760,9 +757,9 @@ mod __dynamics {
         let t8 = s5 * qd5;
         let t9 = s5.mul_add(qd4, u94 * qd1 - u74 * qd2 - u74 * qd3);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = k79 * t9;
+        let cor5_6 = k78 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k78 * t9;
+        let cor6_5 = k77 * t9;
         let t10 = k36
             .mul_add(
                 u103 * qd6,
@@ -776,19 +773,19 @@ mod __dynamics {
         let t12 = k7 * (u74 * qd6);
         let t13 = u74.mul_add(qd5, u5 * qd4);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k79 * (t5 + t13);
+        let cor2_6 = k78 * (t5 + t13);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k79 * (t13 - t5);
+        let cor6_2 = k78 * (t13 - t5);
         let t14 = qd4.mul_add(u145, t7);
         let t15 = qd3 * u114;
         let t16 = qd5 * u182;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k78 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
+        let cor1_6 = k77 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
         let t17 = qd5 * u181;
         let t18 = qd1 * u120;
         let t19 = u5.mul_add(qd3, u70.mul_add(qd1, u5 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k78 * (t8 + t19);
+        let cor4_6 = k77 * (t8 + t19);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
             * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k35 * (u54 * qd2))));
@@ -828,12 +825,12 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u170, k73.mul_add(u32 * qd3, qd4 * u133));
+        let cor2_2 = k1 * qd5.mul_add(u170, k72.mul_add(u32 * qd3, qd4 * u133));
         let t27 = qd5.mul_add(u175, qd4.mul_add(u132, t3));
         let t28 = k44
             .mul_add(
                 u83 * qd5,
-                k42.mul_add(u63 * qd4, t3 + k73.mul_add(u32 * qd2, qd1 * u113)),
+                k42.mul_add(u63 * qd4, t3 + k72.mul_add(u32 * qd2, qd1 * u113)),
             ) - u60 * qd1;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
@@ -871,20 +868,20 @@ mod __dynamics {
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = k1 * (t14 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k79 * (t13 - t18);
+        let cor3_6 = k78 * (t13 - t18);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k79 * (t13 + t18);
+        let cor6_3 = k78 * (t13 + t18);
         let t36 = k36
             .mul_add(
                 s5 * qd6,
-                k76.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
+                k75.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
             ) - qd3.mul_add(u145, qd2.mul_add(u149, qd1 * u150));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k80 * t36;
+        let cor5_4 = k79 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k78 * (t8 - t19);
+        let cor6_4 = k77 * (t8 - t19);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -1318,7 +1315,6 @@ mod __dynamics {
             k64,
             k65,
             k66,
-            k68,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1352,19 +1348,19 @@ mod __dynamics {
         let t27 = t24 * t25;
         let t28 = t25.mul_add(t25, t23 * t23);
         let t29 = qd6 + t24;
-        let t30 = s2.mul_add(qdd1, t3);
-        let t31 = c2 * qdd1 - t4;
-        let t32 = t4 + t31;
-        let t33 = qdd2 + t8;
-        let t34 = t3 - t30;
-        let t35 = t4 - t31;
+        let t30 = s2 * qdd1;
+        let t31 = c2 * qdd1;
+        let t32 = t3 + t30;
+        let t33 = t31 - t4;
+        let t34 = qdd2 + t8;
+        let t35 = t4 - t33;
         let t36 = k2.mul_add(t35, k47 * (t5 + t6));
-        let t37 = u107 + k3.mul_add(t32, k23 * (t6 + t7));
-        let t38 = u108 + k3.mul_add(t34, k2 * t33);
+        let t37 = u107 + k3.mul_add(t31, k23 * (t6 + t7));
+        let t38 = u108 + k47.mul_add(t30, k2 * t34);
         let t39 = s3.mul_add(t38, c3 * t37);
         let t40 = c3 * t38 - s3 * t37;
-        let t41 = qd3.mul_add(t10, s3.mul_add(t31, c3 * t30));
-        let t42 = c3 * t31 - s3 * t30 - qd3 * t9;
+        let t41 = qd3.mul_add(t10, s3.mul_add(t33, c3 * t32));
+        let t42 = c3 * t33 - s3 * t32 - qd3 * t9;
         let t43 = qdd2 + qdd3;
         let t44 = t15 - t43;
         let t45 = t15 + t43;
@@ -1428,7 +1424,7 @@ mod __dynamics {
             + k54
                 .mul_add(
                     t8,
-                    k10.mul_add(t5 - t6, k12.mul_add(t32, k68.mul_add(t34, k31 * qdd2))),
+                    k10.mul_add(t5 - t6, k12.mul_add(t31, k32.mul_add(t30, k31 * qdd2))),
                 ) + k2.mul_add(t68, tau3);
         /// T1 (6.46)
         let tau1 = k34
@@ -1440,7 +1436,7 @@ mod __dynamics {
                             .mul_add(
                                 t4,
                                 k32
-                                    .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t30))),
+                                    .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t32))),
                             )
                             + (c3.mul_add(t67, s3 * t66)
                                 + k23
@@ -1455,7 +1451,7 @@ mod __dynamics {
                                     k12
                                         .mul_add(
                                             t6 - t7,
-                                            k32.mul_add(t33, k9.mul_add(t35, k33 * t30)),
+                                            k32.mul_add(t34, k9.mul_add(t35, k33 * t32)),
                                         ),
                                 ) + k47.mul_add(t68, c3 * t66 - s3 * t67)),
                     ),
@@ -1504,7 +1500,7 @@ mod __dynamics {
             k47,
             k64,
             k65,
-            k69,
+            k68,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1529,7 +1525,7 @@ mod __dynamics {
             * k7
                 .mul_add(
                     t12 * t12,
-                    k69
+                    k68
                         .mul_add(
                             t10
                                 .mul_add(

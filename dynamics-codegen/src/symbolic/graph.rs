@@ -194,6 +194,10 @@ impl Graph {
             (_, Node::Const(y)) if y.is_zero() => return self.simplified(a),
             _ => {}
         }
+        // x + (y − x) = y and x − (x + y) = −y: terms that cancel one level down.
+        if let Some(r) = self.cancel(a, b).or_else(|| self.cancel(b, a)) {
+            return self.simplified(r);
+        }
         let (ca, ta) = self.coefficient(a);
         let (cb, tb) = self.coefficient(b);
         if ta == tb {
@@ -211,6 +215,35 @@ impl Graph {
         }
         let (a, b) = if a <= b { (a, b) } else { (b, a) };
         self.intern(Node::Add(a, b))
+    }
+
+    /// `a + b` without a new node when `a` cancels a term of the sum `b`: `a + (−a + y) = y`,
+    /// and `a + (−(a + y)) = −y`.
+    fn cancel(&mut self, a: NodeId, b: NodeId) -> Option<NodeId> {
+        let (ca, ta) = self.coefficient(a);
+        let (cb, tb) = self.coefficient(b);
+        let Node::Add(x, y) = self.node(tb) else {
+            return None;
+        };
+        let is = |g: &Graph, t: NodeId, c: Number| g.coefficient(t) == (c, ta);
+        if cb.is_one() {
+            // a + (x + y) with x = −a
+            if is(self, x, ca.neg()) {
+                return Some(y);
+            }
+            if is(self, y, ca.neg()) {
+                return Some(x);
+            }
+        } else if cb.is_minus_one() {
+            // a − (x + y) with x = a
+            if is(self, x, ca) {
+                return Some(self.neg(y));
+            }
+            if is(self, y, ca) {
+                return Some(self.neg(x));
+            }
+        }
+        None
     }
 
     /// `a − b`.
@@ -418,7 +451,7 @@ impl Number {
 
 #[cfg(test)]
 mod tests {
-    use super::{Graph, Node, Var};
+    use super::{Graph, Node, NodeId, Var};
     use crate::symbolic::Number;
 
     #[test]
@@ -467,6 +500,67 @@ mod tests {
         // Different factors stay apart: 2x + 3y keeps its two products.
         let sum = g.add(two_x, three_y);
         assert!(matches!(g.node(sum), Node::Add(..)));
+    }
+
+    /// A term that cancels one of a sum's terms leaves the other.
+    #[test]
+    fn cancelling_one_level_down() {
+        let mut g = Graph::new();
+        let x = g.var(Var::Param(0));
+        let y = g.var(Var::Param(1));
+        let two = g.num(Number::int(2));
+        let two_x = g.mul(two, x);
+        type Build = Box<dyn Fn(&mut Graph) -> NodeId>;
+        let cases: [(&str, Build, NodeId); 5] = [
+            (
+                "x + (y − x)",
+                Box::new(move |g| {
+                    let d = g.sub(y, x);
+                    g.add(x, d)
+                }),
+                y,
+            ),
+            (
+                "(y − x) + x",
+                Box::new(move |g| {
+                    let d = g.sub(y, x);
+                    g.add(d, x)
+                }),
+                y,
+            ),
+            (
+                "x − (x + y)",
+                Box::new(move |g| {
+                    let s = g.add(x, y);
+                    g.sub(x, s)
+                }),
+                g.neg(y),
+            ),
+            (
+                "2x + (y − 2x)",
+                Box::new(move |g| {
+                    let d = g.sub(y, two_x);
+                    g.add(two_x, d)
+                }),
+                y,
+            ),
+            (
+                "−x + (x + y)",
+                Box::new(move |g| {
+                    let s = g.add(x, y);
+                    let nx = g.neg(x);
+                    g.add(nx, s)
+                }),
+                y,
+            ),
+        ];
+        for (name, build, expected) in cases {
+            assert_eq!(build(&mut g), expected, "{name}");
+        }
+        // Terms that do not cancel stay a sum: x + (y − 2x) is not simplified.
+        let d = g.sub(y, two_x);
+        let r = g.add(x, d);
+        assert!(matches!(g.node(r), Node::Add(..)));
     }
 
     #[test]
