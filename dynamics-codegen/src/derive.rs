@@ -276,19 +276,19 @@ pub fn derive(robot: &Robot) -> Equations {
     };
     // Bodies carried through a general twist: moved to the parent's origin before the twist or
     // after it, whichever makes M cheaper (before, on the dense random arm; after, on a
-    // two-joint one). With quarter-turn twists the two are the same graph.
-    let chain = {
-        let after = chain.clone().regrouped();
-        let before = chain.moving_before_twist(true).regrouped();
-        let cost = |c: &Chain<Expr<'_>>| {
-            let m: Vec<NodeId> = algo::crba(c).iter().flatten().map(|e| e.id()).collect();
-            operations(&graph.borrow(), &m)
+    // two-joint one). With quarter-turn twists the two are the same graph. M(q) is the
+    // winner's trace.
+    let (chain, mut mass) = {
+        let traced = |c: Chain<_>| {
+            let m = algo::crba(&c);
+            let ids: Vec<NodeId> = m.iter().flatten().map(|e: &Expr| e.id()).collect();
+            let cost = operations(&graph.borrow(), &ids);
+            (c, m, cost)
         };
-        if cost(&before) < cost(&after) {
-            before
-        } else {
-            after
-        }
+        let after = traced(chain.clone().regrouped());
+        let before = traced(chain.moving_before_twist(true).regrouped());
+        let (chain, mass, _) = if before.2 < after.2 { before } else { after };
+        (chain, mass)
     };
     let gravity = V3::new(
         t.value(&robot.gravity[0]),
@@ -316,12 +316,10 @@ pub fn derive(robot: &Robot) -> Equations {
         .collect();
     let spring_torque = |i: usize| springs[i].map_or(zero, |(k, rest)| k * (q[i] - rest));
 
-    // M(q)
-    let mut mass = algo::crba(&chain);
+    // M(q) with actuator inertia.
     for (i, row) in mass.iter_mut().enumerate() {
         row[i] = row[i] + actuator[i];
     }
-    // RNEA traces
     // g(q) two ways: Newton-Euler at rest, and from composite first moments (the gravity
     // vector carried out and the composites carried in side by side, a shorter chain).
     let with_springs = |g: Vec<Expr<'_>>| -> Vec<NodeId> {
