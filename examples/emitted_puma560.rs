@@ -100,6 +100,8 @@ mod __dynamics {
         u103: T,
         m1_6: T,
         g2: T,
+        u104: T,
+        u105: T,
         g3: T,
         g4: T,
         g5: T,
@@ -119,8 +121,14 @@ mod __dynamics {
         k66: T,
         k67: T,
         k68: T,
-        p: T,
+        k69: T,
+        k70: T,
+        k71: T,
         k72: T,
+        k73: T,
+        k74: T,
+        p: T,
+        k78: T,
         u112: T,
         u113: T,
         u114: T,
@@ -139,7 +147,7 @@ mod __dynamics {
         u145: T,
         u149: T,
         u150: T,
-        k75: T,
+        k81: T,
         u159: T,
         u162: T,
         u170: T,
@@ -152,9 +160,9 @@ mod __dynamics {
         u180: T,
         u181: T,
         u182: T,
-        k77: T,
-        k78: T,
-        k79: T,
+        k83: T,
+        k84: T,
+        k85: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -220,26 +228,32 @@ mod __dynamics {
         let k57: T = T::from_f64(-0.033530225);
         let k58: T = T::from_f64(-0.3251198455);
         let k59: T = T::from_f64(-8.7439473);
-        let k60: T = T::from_f64(-0.0013);
-        let k61: T = T::from_f64(-0.0141984);
-        let k62: T = T::from_f64(0.0141984);
-        let k63: T = T::from_f64(0.8636);
-        let k64: T = T::from_f64(-0.025375);
-        let k65: T = T::from_f64(-0.89133);
-        let k66: T = T::from_f64(0.011273199);
-        let k67: T = T::from_f64(0.384876294);
-        let k68: T = T::from_f64(-0.00576);
-        let k69: T = T::from_f64(-154.550796435);
-        let k70: T = T::from_f64(-37.2347379);
-        let k71: T = T::from_f64(-0.24892875);
-        let k72: T = T::from_f64(-0.8636);
-        let k73: T = T::from_f64(0.000116928);
-        let k74: T = T::from_f64(-0.000116928);
-        let k75: T = T::from_f64(0.00040432);
-        let k76: T = T::from_f64(-0.00040432);
-        let k77: T = T::from_f64(-0.00002);
-        let k78: T = T::from_f64(0.00002);
-        let k79: T = T::from_f64(-0.5);
+        let k60: T = T::from_f64(-0.0016);
+        let k61: T = T::from_f64(-0.0013);
+        let k62: T = T::from_f64(-0.0141984);
+        let k63: T = T::from_f64(0.0141984);
+        let k64: T = T::from_f64(0.8636);
+        let k65: T = T::from_f64(-0.025375);
+        let k66: T = T::from_f64(-0.89133);
+        let k67: T = T::from_f64(0.011273199);
+        let k68: T = T::from_f64(0.384876294);
+        let k69: T = T::from_f64(0.05075);
+        let k70: T = T::from_f64(1.78266);
+        let k71: T = T::from_f64(-0.022546398);
+        let k72: T = T::from_f64(0.022546398);
+        let k73: T = T::from_f64(0.0406);
+        let k74: T = T::from_f64(-0.00576);
+        let k75: T = T::from_f64(-154.550796435);
+        let k76: T = T::from_f64(-37.2347379);
+        let k77: T = T::from_f64(-0.24892875);
+        let k78: T = T::from_f64(-0.8636);
+        let k79: T = T::from_f64(0.000116928);
+        let k80: T = T::from_f64(-0.000116928);
+        let k81: T = T::from_f64(0.00040432);
+        let k82: T = T::from_f64(-0.00040432);
+        let k83: T = T::from_f64(-0.00002);
+        let k84: T = T::from_f64(0.00002);
+        let k85: T = T::from_f64(-0.5);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -399,7 +413,7 @@ mod __dynamics {
         let p = -k51
             .mul_add(
                 c5 * u105 - s5 * u106,
-                k69 + k56.mul_add(c2, k70 * s2) + k59.mul_add(u105, k71 * u104),
+                k75 + k56.mul_add(c2, k76 * s2) + k59.mul_add(u105, k77 * u104),
             );
         let u110 = k45 * u39;
         let u111 = u46 + k35.mul_add(u39, u46);
@@ -417,13 +431,13 @@ mod __dynamics {
         let u122 = u21 + k35.mul_add(u12, u21);
         let u123 = u15 - (u10 - u11);
         let u124 = k38.mul_add(u13, u20);
-        let u125 = k74.mul_add(u6, u121);
+        let u125 = k80.mul_add(u6, u121);
         let u126 = k45.mul_add(m3_4 * u34, u121 - u33 * u125);
         let u127 = c3 * u123 - s3 * u124;
         let u128 = k46 * u5;
         let u129 = u128 + (u126 + u128);
         let u130 = u116 + u128;
-        let u131 = u130 + (k73.mul_add(u6, u121) - u126 + u130);
+        let u131 = u130 + (k79.mul_add(u6, u121) - u126 + u130);
         let u132 = u116 + u122;
         let u133 = u116 + u132;
         let u134 = k44 * u64;
@@ -460,13 +474,13 @@ mod __dynamics {
         let u152 = u1 * u7;
         let u153 = c4 * u151;
         let u154 = k44 * s5;
-        let u155 = u154 + k76.mul_add(u1 - u152, u154);
-        let u156 = k75.mul_add(u1, u143);
+        let u155 = u154 + k82.mul_add(u1 - u152, u154);
+        let u156 = k81.mul_add(u1, u143);
         let u157 = u143 + u156;
         let u158 = u143 + u154;
-        let u159 = u158 + k76.mul_add(u152, u158);
+        let u159 = u158 + k82.mul_add(u152, u158);
         let u160 = u153 - (u77 + u78);
-        let u161 = k75.mul_add(u1 * u8, k41 * u74);
+        let u161 = k81.mul_add(u1 * u8, k41 * u74);
         let u162 = u91 - s4 * u151;
         let u163 = u155 - u157;
         let u164 = k45.mul_add(u34 * u160, u155 - u33 * u163);
@@ -582,6 +596,8 @@ mod __dynamics {
             u103,
             m1_6,
             g2,
+            u104,
+            u105,
             g3,
             g4,
             g5,
@@ -601,8 +617,14 @@ mod __dynamics {
             k66,
             k67,
             k68,
-            p,
+            k69,
+            k70,
+            k71,
             k72,
+            k73,
+            k74,
+            p,
+            k78,
             u112,
             u113,
             u114,
@@ -621,7 +643,7 @@ mod __dynamics {
             u145,
             u149,
             u150,
-            k75,
+            k81,
             u159,
             u162,
             u170,
@@ -634,9 +656,9 @@ mod __dynamics {
             u180,
             u181,
             u182,
-            k77,
-            k78,
-            k79,
+            k83,
+            k84,
+            k85,
         }
     }
     #[inline(always)]
@@ -705,7 +727,7 @@ mod __dynamics {
             u94,
             u96,
             u103,
-            k72,
+            k78,
             u112,
             u113,
             u114,
@@ -724,7 +746,7 @@ mod __dynamics {
             u145,
             u149,
             u150,
-            k75,
+            k81,
             u159,
             u162,
             u170,
@@ -737,9 +759,9 @@ mod __dynamics {
             u180,
             u181,
             u182,
-            k77,
-            k78,
-            k79,
+            k83,
+            k84,
+            k85,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -757,9 +779,9 @@ mod __dynamics {
         let t8 = s5 * qd5;
         let t9 = s5.mul_add(qd4, u94 * qd1 - u74 * qd2 - u74 * qd3);
         /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = k78 * t9;
+        let cor5_6 = k84 * t9;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k77 * t9;
+        let cor6_5 = k83 * t9;
         let t10 = k36
             .mul_add(
                 u103 * qd6,
@@ -773,19 +795,19 @@ mod __dynamics {
         let t12 = k7 * (u74 * qd6);
         let t13 = u74.mul_add(qd5, u5 * qd4);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k78 * (t5 + t13);
+        let cor2_6 = k84 * (t5 + t13);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k78 * (t13 - t5);
+        let cor6_2 = k84 * (t13 - t5);
         let t14 = qd4.mul_add(u145, t7);
         let t15 = qd3 * u114;
         let t16 = qd5 * u182;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k77 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
+        let cor1_6 = k83 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
         let t17 = qd5 * u181;
         let t18 = qd1 * u120;
         let t19 = u5.mul_add(qd3, u70.mul_add(qd1, u5 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k77 * (t8 + t19);
+        let cor4_6 = k83 * (t8 + t19);
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
             * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k35 * (u54 * qd2))));
@@ -825,12 +847,12 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t25 - t26);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u170, k72.mul_add(u32 * qd3, qd4 * u133));
+        let cor2_2 = k1 * qd5.mul_add(u170, k78.mul_add(u32 * qd3, qd4 * u133));
         let t27 = qd5.mul_add(u175, qd4.mul_add(u132, t3));
         let t28 = k44
             .mul_add(
                 u83 * qd5,
-                k42.mul_add(u63 * qd4, t3 + k72.mul_add(u32 * qd2, qd1 * u113)),
+                k42.mul_add(u63 * qd4, t3 + k78.mul_add(u32 * qd2, qd1 * u113)),
             ) - u60 * qd1;
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t27 + t28);
@@ -868,20 +890,20 @@ mod __dynamics {
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = k1 * (t14 - t35);
         /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k78 * (t13 - t18);
+        let cor3_6 = k84 * (t13 - t18);
         /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k78 * (t13 + t18);
+        let cor6_3 = k84 * (t13 + t18);
         let t36 = k36
             .mul_add(
                 s5 * qd6,
-                k75.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
+                k81.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
             ) - qd3.mul_add(u145, qd2.mul_add(u149, qd1 * u150));
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t36;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k79 * t36;
+        let cor5_4 = k85 * t36;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k77 * (t8 - t19);
+        let cor6_4 = k83 * (t8 - t19);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
@@ -940,6 +962,8 @@ mod __dynamics {
             k43,
             k44,
             k47,
+            u104,
+            u105,
             k53,
             k54,
             k57,
@@ -951,7 +975,12 @@ mod __dynamics {
             k64,
             k65,
             k66,
-            k67,
+            k68,
+            k69,
+            k70,
+            k71,
+            k72,
+            k73,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -964,108 +993,114 @@ mod __dynamics {
         let t7 = qd2 * qd2;
         let t8 = t1 * t2;
         let t9 = t6 + t7;
-        let t10 = k47.mul_add(t5 + t6, k63 * t4);
-        let t11 = s3.mul_add(t2, c3 * t1);
-        let t12 = c3 * t2 - s3 * t1;
-        let t13 = c3 * t9 - s3 * t8;
-        let t14 = s3.mul_add(t9, c3 * t8);
-        let t15 = qd2 + qd3;
-        let t16 = qd3.mul_add(t12, c3 * t3 - s3 * t4);
-        let t17 = -(c3 * t4) - s3 * t3 - qd3 * t11;
-        let t18 = t11 * t11;
-        let t19 = t12 * t12;
-        let t20 = t15 * t15;
-        let t21 = t11 * t12;
-        let t22 = t11 * t15;
-        let t23 = t12 * t15;
-        let t24 = t19 + t20;
-        let t25 = t18 + t20;
-        let t26 = t22 - t17;
-        let t27 = t16 + t23;
-        let t28 = k23.mul_add(t13, k2.mul_add(t21, k5 * t24));
-        let t29 = t10 + k2.mul_add(t27, k4 * t26);
-        let t30 = c4 * t11 - s4 * t15;
-        let t31 = -(c4 * t15) - s4 * t11;
-        let t32 = qd4 + t12;
-        let t33 = qd4.mul_add(t31, c4 * t16);
-        let t34 = -(s4 * t16) - qd4 * t30;
-        let t35 = s5.mul_add(t32, c5 * t30);
-        let t36 = c5 * t32 - s5 * t30;
-        let t37 = qd5 - t31;
-        let t38 = qd5.mul_add(t36, s5.mul_add(t17, c5 * t33));
-        let t39 = t35 * t36;
-        let t40 = t36 * t37;
-        let t41 = t34 + t39;
-        let t42 = t37.mul_add(t37, t35 * t35);
-        let t43 = t38 + t40;
-        let t44 = qd6 + t36;
+        let t10 = k47.mul_add(t5 + t6, k64 * t4);
+        let t11 = c3 * t9 - s3 * t8;
+        let t12 = s3.mul_add(t9, c3 * t8);
+        let t13 = qd2 + qd3;
+        let t14 = t13 * t13;
+        let t15 = qd1 * u104;
+        let t16 = qd1 * u105;
+        let t17 = t13 * t16;
+        let t18 = t13 * t15;
+        let t19 = t15 * t15;
+        let t20 = t16 * t16;
+        let t21 = t15 * t16;
+        let t22 = t14 + t20;
+        let t23 = t14 + t19;
+        let t24 = k23.mul_add(t11, k2.mul_add(t21, k5 * t22));
+        let t25 = t10 + k64.mul_add(t17, k73 * t18);
+        let t26 = c4 * t15 - s4 * t13;
+        let t27 = -(c4 * t13) - s4 * t15;
+        let t28 = qd4 + t16;
+        let t29 = qd4.mul_add(t27, c4 * t17);
+        let t30 = -(s4 * t17) - qd4 * t26;
+        let t31 = s5.mul_add(t28, c5 * t26);
+        let t32 = c5 * t28 - s5 * t26;
+        let t33 = qd5 - t27;
+        let t34 = qd5.mul_add(t32, c5 * t29 - s5 * t18);
+        let t35 = t31 * t32;
+        let t36 = t32 * t33;
+        let t37 = t30 + t35;
+        let t38 = t33.mul_add(t33, t31 * t31);
+        let t39 = t34 + t36;
+        let t40 = qd6 + t32;
         /// centripetal and Coriolis torque 6
-        let cqd6 = k7 * (c5 * t17 - s5 * t33 - qd5 * t35);
-        let t45 = k36
+        let cqd6 = k7 * (-(c5 * t18) - s5 * t29 - qd5 * t31);
+        let t41 = k36
             .mul_add(
-                t37 * t44,
-                k19.mul_add(-(c4 * t29) - s4 * t28, k20.mul_add(t40, k17 * t38)),
+                t33 * t40,
+                k19.mul_add(-(c4 * t25) - s4 * t24, k20.mul_add(t36, k17 * t34)),
             );
-        let t46 = k15.mul_add(t35 * t37, cqd6);
+        let t42 = k15.mul_add(t31 * t33, cqd6);
         /// centripetal and Coriolis torque 5
         let cqd5 = k7
             .mul_add(
-                t35 * t44,
+                t31 * t40,
                 k19
                     .mul_add(
                         s5
                             .mul_add(
-                                k2.mul_add(t14, k23.mul_add(t25, k4 * t21)),
-                                c5 * (c4 * t28 - s4 * t29),
+                                k2.mul_add(t12, k23.mul_add(t23, k4 * t21)),
+                                c5 * (c4 * t24 - s4 * t25),
                             ),
-                        k18.mul_add(t39, k40 * t34),
+                        k18.mul_add(t35, k40 * t30),
                     ),
             );
-        let t47 = s5.mul_add(t42, c5 * t41);
-        let t48 = s5 * t41 - c5 * t42;
-        let t49 = k22.mul_add(t31 * t32, k6 * t33) + (c5 * t45 - s5 * t46);
-        let t50 = k60 * (t30 * t32) - cqd5;
+        let t43 = s5.mul_add(t38, c5 * t37);
+        let t44 = s5 * t37 - c5 * t38;
+        let t45 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t41 - s5 * t42);
+        let t46 = k61 * (t26 * t28) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = k21.mul_add(t30 * t31, k22 * t17) + c5.mul_add(t46, s5 * t45);
-        let t51 = s4.mul_add(t43, c4 * t47);
-        let t52 = s4 * t47 - c4 * t43;
-        let t53 = k16.mul_add(t51, k27.mul_add(t21, k64 * t24));
-        let t54 = k16.mul_add(t48, k65.mul_add(t25, k24 * t21));
-        let t55 = k27
-            .mul_add(
-                t10,
-                k28.mul_add(t23, k14.mul_add(t19 - t20, k66.mul_add(t26, k29 * t16))),
-            ) + k44.mul_add(t52, c4 * t49 - s4 * t50);
-        let t56 = k64.mul_add(t10, k57.mul_add(t22, k13.mul_add(t21, k26 * t27)))
-            + k43.mul_add(t52, cqd4);
+        let cqd4 = k21.mul_add(t26 * t27, k60 * t18) + c5.mul_add(t42, s5 * t41);
+        let t47 = s4.mul_add(t39, c4 * t43);
+        let t48 = s4 * t43 - c4 * t39;
+        let t49 = k16.mul_add(t47, k27.mul_add(t21, k65 * t22));
+        let t50 = k16.mul_add(t44, k66.mul_add(t23, k24 * t21));
         /// centripetal and Coriolis torque 3
-        let cqd3 = k58.mul_add(t21, k26.mul_add(t18 - t19, k14 * (t17 + t22)))
-            + k67.mul_add(t13, k25 * t14)
-            + (k44.mul_add(t51, k43 * t48) - c4.mul_add(t50, s4 * t49));
-        let t57 = c3.mul_add(t54, s3 * t53);
+        let cqd3 = k68.mul_add(t11, k25 * t12) + k58.mul_add(t21, k26 * (t19 - t20))
+            + (k44.mul_add(t47, k43 * t44) - c4.mul_add(t46, s4 * t45));
+        let t51 = c3.mul_add(t50, s3 * t49);
         /// centripetal and Coriolis torque 2
-        let cqd2 = k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t57, cqd3);
+        let cqd2 = k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t51, cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = c2
             .mul_add(
-                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
-                    + (c3.mul_add(t56, s3 * t55)
-                        + k23
-                            .mul_add(
-                                k19.mul_add(t52, k27.mul_add(t27, k24 * t26)),
-                                k3 * (c3 * t53 - s3 * t54),
-                            )),
-                s2
-                    * (k31
+                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k62 * t3)))
+                    + k23
                         .mul_add(
-                            t3,
-                            k12
+                            k19.mul_add(t48, k70.mul_add(t17, k69 * t18)),
+                            k3 * (c3 * t49 - s3 * t50),
+                        ),
+                s2
+                    * k47
+                        .mul_add(
+                            t51,
+                            k31
                                 .mul_add(
-                                    t6 - t7,
-                                    k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                    t3,
+                                    k12
+                                        .mul_add(
+                                            t6 - t7,
+                                            k32.mul_add(t8, k63.mul_add(t4, k33 * t3)),
+                                        ),
                                 ),
-                        ) + k47.mul_add(t57, c3 * t55 - s3 * t56)),
-            );
+                        ),
+            )
+            + u105
+                .mul_add(
+                    k65.mul_add(t10, k57.mul_add(t18, k13.mul_add(t21, k71 * t17)))
+                        + k43.mul_add(t48, cqd4),
+                    u104
+                        * (k27
+                            .mul_add(
+                                t10,
+                                k28
+                                    .mul_add(
+                                        t17,
+                                        k14.mul_add(t20 - t14, k72.mul_add(t18, k29 * t17)),
+                                    ),
+                            ) + k44.mul_add(t48, c4 * t45 - s4 * t46)),
+                );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
     #[inline(always)]
@@ -1124,6 +1159,8 @@ mod __dynamics {
             k43,
             k44,
             k47,
+            u104,
+            u105,
             u107,
             u108,
             k53,
@@ -1138,6 +1175,11 @@ mod __dynamics {
             k64,
             k65,
             k66,
+            k69,
+            k70,
+            k71,
+            k72,
+            k73,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1149,109 +1191,116 @@ mod __dynamics {
         let t6 = t2 * t2;
         let t7 = qd2 * qd2;
         let t8 = t1 * t2;
-        let t9 = k47.mul_add(t5 + t6, k63 * t4);
-        let t10 = s3.mul_add(t2, c3 * t1);
-        let t11 = c3 * t2 - s3 * t1;
-        let t12 = qd2 + qd3;
-        let t13 = qd3.mul_add(t11, c3 * t3 - s3 * t4);
-        let t14 = -(c3 * t4) - s3 * t3 - qd3 * t10;
-        let t15 = t10 * t10;
-        let t16 = t11 * t11;
-        let t17 = t12 * t12;
-        let t18 = t10 * t11;
-        let t19 = t10 * t12;
-        let t20 = t11 * t12;
-        let t21 = t16 + t17;
-        let t22 = t15 + t17;
-        let t23 = t19 - t14;
-        let t24 = t13 + t20;
-        let t25 = t9 + k2.mul_add(t24, k4 * t23);
-        let t26 = c4 * t10 - s4 * t12;
-        let t27 = -(c4 * t12) - s4 * t10;
-        let t28 = qd4 + t11;
-        let t29 = qd4.mul_add(t27, c4 * t13);
-        let t30 = -(s4 * t13) - qd4 * t26;
-        let t31 = s5.mul_add(t28, c5 * t26);
-        let t32 = c5 * t28 - s5 * t26;
-        let t33 = qd5 - t27;
-        let t34 = qd5.mul_add(t32, s5.mul_add(t14, c5 * t29));
-        let t35 = t31 * t32;
-        let t36 = t32 * t33;
-        let t37 = t30 + t35;
-        let t38 = t33.mul_add(t33, t31 * t31);
-        let t39 = t34 + t36;
-        let t40 = qd6 + t32;
+        let t9 = k47.mul_add(t5 + t6, k64 * t4);
+        let t10 = qd2 + qd3;
+        let t11 = t10 * t10;
+        let t12 = qd1 * u104;
+        let t13 = qd1 * u105;
+        let t14 = t10 * t13;
+        let t15 = t10 * t12;
+        let t16 = t12 * t12;
+        let t17 = t13 * t13;
+        let t18 = t12 * t13;
+        let t19 = t11 + t17;
+        let t20 = t11 + t16;
+        let t21 = t9 + k64.mul_add(t14, k73 * t15);
+        let t22 = c4 * t12 - s4 * t10;
+        let t23 = -(c4 * t10) - s4 * t12;
+        let t24 = qd4 + t13;
+        let t25 = qd4.mul_add(t23, c4 * t14);
+        let t26 = -(s4 * t14) - qd4 * t22;
+        let t27 = s5.mul_add(t24, c5 * t22);
+        let t28 = c5 * t24 - s5 * t22;
+        let t29 = qd5 - t23;
+        let t30 = qd5.mul_add(t28, c5 * t25 - s5 * t15);
+        let t31 = t27 * t28;
+        let t32 = t28 * t29;
+        let t33 = t26 + t31;
+        let t34 = t29.mul_add(t29, t27 * t27);
+        let t35 = t30 + t32;
+        let t36 = qd6 + t28;
         /// centripetal, Coriolis and gravity torque 6
-        let h6 = k7 * (c5 * t14 - s5 * t29 - qd5 * t31);
-        let t41 = k15.mul_add(t31 * t33, h6);
-        let t42 = s5.mul_add(t38, c5 * t37);
-        let t43 = s5 * t37 - c5 * t38;
-        let t44 = s4.mul_add(t39, c4 * t42);
-        let t45 = s4 * t42 - c4 * t39;
-        let t46 = k16.mul_add(t44, k27.mul_add(t18, k64 * t21));
-        let t47 = k16.mul_add(t43, k65.mul_add(t22, k24 * t18));
-        let t48 = c3.mul_add(t47, s3 * t46);
-        let t49 = k23.mul_add(t6 + t7, u107);
-        let t50 = k2.mul_add(t8, u108);
-        let t51 = s3.mul_add(t50, c3 * t49);
-        let t52 = c3 * t50 - s3 * t49;
-        let t53 = k2.mul_add(t18, k5 * t21) + t51;
-        let t54 = k36
+        let h6 = k7 * (-(c5 * t15) - s5 * t25 - qd5 * t27);
+        let t37 = k15.mul_add(t27 * t29, h6);
+        let t38 = s5.mul_add(t34, c5 * t33);
+        let t39 = s5 * t33 - c5 * t34;
+        let t40 = s4.mul_add(t35, c4 * t38);
+        let t41 = s4 * t38 - c4 * t35;
+        let t42 = k16.mul_add(t40, k27.mul_add(t18, k65 * t19));
+        let t43 = k16.mul_add(t39, k66.mul_add(t20, k24 * t18));
+        let t44 = c3.mul_add(t43, s3 * t42);
+        let t45 = k23.mul_add(t6 + t7, u107);
+        let t46 = k2.mul_add(t8, u108);
+        let t47 = s3.mul_add(t46, c3 * t45);
+        let t48 = c3 * t46 - s3 * t45;
+        let t49 = k2.mul_add(t18, k5 * t19) + t47;
+        let t50 = k36
             .mul_add(
-                t33 * t40,
-                k19.mul_add(-(c4 * t25) - s4 * t53, k20.mul_add(t36, k17 * t34)),
+                t29 * t36,
+                k19.mul_add(-(c4 * t21) - s4 * t49, k20.mul_add(t32, k17 * t30)),
             );
         /// centripetal, Coriolis and gravity torque 5
         let h5 = k7
             .mul_add(
-                t31 * t40,
+                t27 * t36,
                 k19
                     .mul_add(
                         s5
                             .mul_add(
-                                k23.mul_add(t22, k4 * t18) + t52,
-                                c5 * (c4 * t53 - s4 * t25),
+                                k23.mul_add(t20, k4 * t18) + t48,
+                                c5 * (c4 * t49 - s4 * t21),
                             ),
-                        k18.mul_add(t35, k40 * t30),
+                        k18.mul_add(t31, k40 * t26),
                     ),
             );
-        let t55 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t54 - s5 * t41);
-        let t56 = k60 * (t26 * t28) - h5;
+        let t51 = k22.mul_add(t23 * t24, k6 * t25) + (c5 * t50 - s5 * t37);
+        let t52 = k61 * (t22 * t24) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = k21.mul_add(t26 * t27, k22 * t14) + s5.mul_add(t54, c5 * t41);
-        let t57 = k27
-            .mul_add(
-                t9,
-                k28.mul_add(t20, k14.mul_add(t16 - t17, k66.mul_add(t23, k29 * t13))),
-            ) + k44.mul_add(t45, c4 * t55 - s4 * t56);
-        let t58 = k64.mul_add(t9, k57.mul_add(t19, k13.mul_add(t18, k26 * t24)))
-            + k43.mul_add(t45, h4);
+        let h4 = k21.mul_add(t22 * t23, k60 * t15) + s5.mul_add(t50, c5 * t37);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k58.mul_add(t18, k26.mul_add(t15 - t16, k14 * (t14 + t19)))
-            + k65.mul_add(t51, k24 * t52)
-            + (k44.mul_add(t44, k43 * t43) - c4.mul_add(t56, s4 * t55));
+        let h3 = k58.mul_add(t18, k26 * (t16 - t17)) + k66.mul_add(t47, k24 * t48)
+            + (k44.mul_add(t40, k43 * t39) - c4.mul_add(t52, s4 * t51));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = u109 + k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t48, h3);
+        let h2 = u109 + k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t44, h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = c2
             .mul_add(
-                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k61 * t3)))
-                    + (k23
+                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k62 * t3)))
+                    + k23
                         .mul_add(
-                            k19.mul_add(t45, k27.mul_add(t24, k24 * t23)),
-                            k3 * (c3 * t46 - s3 * t47),
-                        ) + c3.mul_add(t58, s3 * t57)),
+                            k19.mul_add(t41, k70.mul_add(t14, k69 * t15)),
+                            k3 * (c3 * t42 - s3 * t43),
+                        ),
                 s2
-                    * (k31
+                    * k47
                         .mul_add(
-                            t3,
-                            k12
+                            t44,
+                            k31
                                 .mul_add(
-                                    t6 - t7,
-                                    k32.mul_add(t8, k62.mul_add(t4, k33 * t3)),
+                                    t3,
+                                    k12
+                                        .mul_add(
+                                            t6 - t7,
+                                            k32.mul_add(t8, k63.mul_add(t4, k33 * t3)),
+                                        ),
                                 ),
-                        ) + k47.mul_add(t48, c3 * t57 - s3 * t58)),
-            );
+                        ),
+            )
+            + u105
+                .mul_add(
+                    k65.mul_add(t9, k57.mul_add(t15, k13.mul_add(t18, k71 * t14)))
+                        + k43.mul_add(t41, h4),
+                    u104
+                        * (k27
+                            .mul_add(
+                                t9,
+                                k28
+                                    .mul_add(
+                                        t14,
+                                        k14.mul_add(t17 - t11, k72.mul_add(t15, k29 * t14)),
+                                    ),
+                            ) + k44.mul_add(t41, c4 * t51 - s4 * t52)),
+                );
         [h1, h2, h3, h4, h5, h6]
     }
     #[inline(always)]
@@ -1304,6 +1353,8 @@ mod __dynamics {
             k43,
             k44,
             k47,
+            u104,
+            u105,
             u107,
             u108,
             k53,
@@ -1311,10 +1362,10 @@ mod __dynamics {
             u109,
             k57,
             k58,
-            k60,
-            k64,
+            k61,
             k65,
             k66,
+            k67,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1327,20 +1378,20 @@ mod __dynamics {
         let t6 = t2 * t2;
         let t7 = qd2 * qd2;
         let t8 = t1 * t2;
-        let t9 = s3.mul_add(t2, c3 * t1);
-        let t10 = c3 * t2 - s3 * t1;
-        let t11 = qd2 + qd3;
-        let t12 = t9 * t9;
-        let t13 = t10 * t10;
-        let t14 = t11 * t11;
-        let t15 = t9 * t10;
-        let t16 = t9 * t11;
-        let t17 = t10 * t11;
-        let t18 = t13 + t14;
-        let t19 = t12 + t14;
-        let t20 = c4 * t9 - s4 * t11;
-        let t21 = -(c4 * t11) - s4 * t9;
-        let t22 = qd4 + t10;
+        let t9 = qd2 + qd3;
+        let t10 = t9 * t9;
+        let t11 = qd1 * u104;
+        let t12 = qd1 * u105;
+        let t13 = t9 * t12;
+        let t14 = t9 * t11;
+        let t15 = t11 * t11;
+        let t16 = t12 * t12;
+        let t17 = t11 * t12;
+        let t18 = t10 + t16;
+        let t19 = t10 + t15;
+        let t20 = c4 * t11 - s4 * t9;
+        let t21 = -(c4 * t9) - s4 * t11;
+        let t22 = qd4 + t12;
         let t23 = s5.mul_add(t22, c5 * t20);
         let t24 = c5 * t22 - s5 * t20;
         let t25 = qd5 - t21;
@@ -1351,27 +1402,27 @@ mod __dynamics {
         let t30 = s2 * qdd1;
         let t31 = c2 * qdd1;
         let t32 = t3 + t30;
-        let t33 = t31 - t4;
-        let t34 = qdd2 + t8;
-        let t35 = t4 - t33;
-        let t36 = k2.mul_add(t35, k47 * (t5 + t6));
-        let t37 = u107 + k3.mul_add(t31, k23 * (t6 + t7));
-        let t38 = u108 + k47.mul_add(t30, k2 * t34);
-        let t39 = s3.mul_add(t38, c3 * t37);
-        let t40 = c3 * t38 - s3 * t37;
-        let t41 = qd3.mul_add(t10, s3.mul_add(t33, c3 * t32));
-        let t42 = c3 * t33 - s3 * t32 - qd3 * t9;
-        let t43 = qdd2 + qdd3;
-        let t44 = t15 - t43;
-        let t45 = t15 + t43;
-        let t46 = t16 - t42;
-        let t47 = t17 + t41;
-        let t48 = t39 + k2.mul_add(t44, k5 * t18);
-        let t49 = t36 + k2.mul_add(t47, k4 * t46);
-        let t50 = qd4.mul_add(t21, c4 * t41 - s4 * t43);
-        let t51 = qdd4 + t42;
+        let t33 = qdd2 + t8;
+        let t34 = t4 - (t31 - t4);
+        let t35 = k2.mul_add(t34, k47 * (t5 + t6));
+        let t36 = u107 + k3.mul_add(t31, k23 * (t6 + t7));
+        let t37 = u108 + k47.mul_add(t30, k2 * t33);
+        let t38 = s3.mul_add(t37, c3 * t36);
+        let t39 = c3 * t37 - s3 * t36;
+        let t40 = qdd2 + qdd3;
+        let t41 = qdd1 * u105;
+        let t42 = qdd1.mul_add(u104, t13);
+        let t43 = t41 - t14;
+        let t44 = t17 - t40;
+        let t45 = t17 + t40;
+        let t46 = t14 - t43;
+        let t47 = t13 + t42;
+        let t48 = t38 + k2.mul_add(t44, k5 * t18);
+        let t49 = t35 + k2.mul_add(t47, k4 * t46);
+        let t50 = qd4.mul_add(t21, c4 * t42 - s4 * t40);
+        let t51 = qdd4 + t43;
         let t52 = qd5.mul_add(t24, s5.mul_add(t51, c5 * t50));
-        let t53 = qdd5 - (-(c4 * t43) - s4 * t41 - qd4 * t20);
+        let t53 = qdd5 - (-(c4 * t40) - s4 * t42 - qd4 * t20);
         let t54 = t26 - t53;
         let t55 = t27 + t52;
         /// T6 (6.46)
@@ -1390,7 +1441,7 @@ mod __dynamics {
                     .mul_add(
                         s5
                             .mul_add(
-                                t40 + k4.mul_add(t45, k23 * t19),
+                                t39 + k4.mul_add(t45, k23 * t19),
                                 c5 * (c4 * t48 - s4 * t49),
                             ),
                         k20.mul_add(t53, k18 * t26),
@@ -1399,33 +1450,25 @@ mod __dynamics {
         let t58 = c5.mul_add(t54, s5 * t28);
         let t59 = s5 * t54 - c5 * t28;
         let t60 = k6.mul_add(t50, k22 * (t21 * t22)) + (c5 * t56 - s5 * t57);
-        let t61 = k60 * (t20 * t22) - tau5;
+        let t61 = k61 * (t20 * t22) - tau5;
         /// T4 (6.46)
         let tau4 = k22.mul_add(t51, k21 * (t20 * t21)) + c5.mul_add(t57, s5 * t56);
         let t62 = s4.mul_add(t55, c4 * t58);
         let t63 = s4 * t58 - c4 * t55;
-        let t64 = k16.mul_add(t62, k27.mul_add(t44, k64 * t18));
-        let t65 = k16.mul_add(t59, k24.mul_add(t45, k65 * t19));
-        let t66 = k27
-            .mul_add(
-                t36,
-                k28.mul_add(t17, k14.mul_add(t13 - t14, k66.mul_add(t46, k29 * t41))),
-            ) + k44.mul_add(t63, c4 * t60 - s4 * t61);
-        let t67 = k64.mul_add(t36, k57.mul_add(t16, k13.mul_add(t44, k26 * t47)))
-            + k43.mul_add(t63, tau4);
+        let t64 = k16.mul_add(t62, k27.mul_add(t44, k65 * t18));
+        let t65 = k16.mul_add(t59, k24.mul_add(t45, k66 * t19));
         /// T3 (6.46)
-        let tau3 = k58
-            .mul_add(t15, k26.mul_add(t12 - t13, k14.mul_add(t16 + t42, k28 * t43)))
-            + k65.mul_add(t39, k24 * t40)
+        let tau3 = k66.mul_add(t38, k24 * t39)
+            + k58.mul_add(t17, k26.mul_add(t15 - t16, k14.mul_add(t41, k28 * t40)))
             + (k44.mul_add(t62, k43 * t59) - c4.mul_add(t61, s4 * t60));
-        let t68 = c3.mul_add(t65, s3 * t64);
+        let t66 = c3.mul_add(t65, s3 * t64);
         /// T2 (6.46)
         let tau2 = u109
             + k54
                 .mul_add(
                     t8,
                     k10.mul_add(t5 - t6, k12.mul_add(t31, k32.mul_add(t30, k31 * qdd2))),
-                ) + k2.mul_add(t68, tau3);
+                ) + k2.mul_add(t66, tau3);
         /// T1 (6.46)
         let tau1 = k34
             .mul_add(
@@ -1438,23 +1481,42 @@ mod __dynamics {
                                 k32
                                     .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t32))),
                             )
-                            + (c3.mul_add(t67, s3 * t66)
-                                + k23
-                                    .mul_add(
-                                        k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
-                                        k3 * (c3 * t64 - s3 * t65),
-                                    )),
-                        s2
-                            * (k31
+                            + k23
                                 .mul_add(
-                                    t3,
-                                    k12
+                                    k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
+                                    k3 * (c3 * t64 - s3 * t65),
+                                ),
+                        s2
+                            * k47
+                                .mul_add(
+                                    t66,
+                                    k31
                                         .mul_add(
-                                            t6 - t7,
-                                            k32.mul_add(t34, k9.mul_add(t35, k33 * t32)),
+                                            t3,
+                                            k12
+                                                .mul_add(
+                                                    t6 - t7,
+                                                    k32.mul_add(t33, k9.mul_add(t34, k33 * t32)),
+                                                ),
                                         ),
-                                ) + k47.mul_add(t68, c3 * t66 - s3 * t67)),
-                    ),
+                                ),
+                    )
+                    + u105
+                        .mul_add(
+                            k65
+                                .mul_add(t35, k57.mul_add(t14, k13.mul_add(t44, k26 * t47)))
+                                + k43.mul_add(t63, tau4),
+                            u104
+                                * (k27
+                                    .mul_add(
+                                        t35,
+                                        k28
+                                            .mul_add(
+                                                t13,
+                                                k14.mul_add(t16 - t10, k67.mul_add(t46, k29 * t42)),
+                                            ),
+                                    ) + k44.mul_add(t63, c4 * t60 - s4 * t61)),
+                        ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]
     }
@@ -1498,9 +1560,9 @@ mod __dynamics {
             k34,
             k35,
             k47,
-            k64,
             k65,
-            k68,
+            k66,
+            k74,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
@@ -1525,7 +1587,7 @@ mod __dynamics {
             * k7
                 .mul_add(
                     t12 * t12,
-                    k68
+                    k74
                         .mul_add(
                             t10
                                 .mul_add(
@@ -1538,8 +1600,8 @@ mod __dynamics {
                                 .mul_add(
                                     k23
                                         .mul_add(
-                                            t2 * k64.mul_add(t6, k27 * t4),
-                                            k24.mul_add(t7 * t15, k65 * (t7 * t14)),
+                                            t2 * k65.mul_add(t6, k27 * t4),
+                                            k24.mul_add(t7 * t15, k66 * (t7 * t14)),
                                         ),
                                     k34
                                         .mul_add(

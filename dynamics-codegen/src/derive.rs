@@ -131,6 +131,23 @@ fn operations(g: &Graph, outputs: &[NodeId]) -> usize {
         .count()
 }
 
+/// Of two ways to compute the same outputs, the one with fewer operations; `a` on a tie.
+fn fewer_operations<'g>(
+    graph: &RefCell<Graph>,
+    a: Vec<Expr<'g>>,
+    b: Vec<Expr<'g>>,
+) -> Vec<Expr<'g>> {
+    let cost = |v: &[Expr]| {
+        let ids: Vec<NodeId> = v.iter().map(|e| e.id()).collect();
+        operations(&graph.borrow(), &ids)
+    };
+    if cost(&b) < cost(&a) {
+        b
+    } else {
+        a
+    }
+}
+
 /// Sine and cosine of an exact multiple `k` of π when they are rational.
 fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
     // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
@@ -332,13 +349,24 @@ pub fn derive(robot: &Robot) -> Equations {
         with_springs(algo::gravity_torques(&chain, gravity)),
         with_springs(algo::rnea(&chain, &zeros, &zeros, gravity)),
     ];
-    let coriolis_torques = algo::rnea(&chain, &qd, &zeros, no_gravity);
-    let bias: Vec<Expr> = algo::rnea(&chain, &qd, &zeros, gravity)
+    // Newton-Euler with the rates of joints about parallel axes turned through the sums of
+    // their angles, or joint by joint: whichever takes fewer operations, method by method
+    // (the sums save on PUMA 560 and UR5; other robots have no parallel joints).
+    let summed = chain.clone().summing_angles(true);
+    let newton_euler = |qdd, gravity| {
+        fewer_operations(
+            &graph,
+            algo::rnea(&chain, &qd, qdd, gravity),
+            algo::rnea(&summed, &qd, qdd, gravity),
+        )
+    };
+    let coriolis_torques = newton_euler(&zeros, no_gravity);
+    let bias: Vec<Expr> = newton_euler(&zeros, gravity)
         .into_iter()
         .enumerate()
         .map(|(i, x)| x + spring_torque(i))
         .collect();
-    let tau: Vec<Expr> = algo::rnea(&chain, &qd, &qdd, gravity)
+    let tau: Vec<Expr> = newton_euler(&qdd, gravity)
         .into_iter()
         .enumerate()
         .map(|(i, x)| x + actuator[i] * qdd[i] + spring_torque(i))

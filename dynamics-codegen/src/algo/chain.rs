@@ -177,6 +177,12 @@ pub struct ChainJoint<S> {
     /// twist by α, where the arm is `(a, 0, d)`, rather than after it. Both give the same
     /// body; which takes fewer operations depends on the robot ([`Chain::moving_before_twist`]).
     pub move_before_twist: bool,
+    /// Whether this joint's angular rates are computed through the sum of its angle and the
+    /// angles of the joints before it that turn about parallel axes (α = 0 between revolute
+    /// joints): `ω_i = Rotz(θ_k + ⋯ + θ_i)ᵀ w_k + …` from the vector `w_k` that entered the
+    /// first joint k of the run, rather than turned joint by joint. Set by
+    /// [`Chain::summing_angles`]; the intermediate links' rates are still computed.
+    pub sum_angles: bool,
 }
 
 impl<S: Scalar> ChainJoint<S> {
@@ -190,6 +196,15 @@ impl<S: Scalar> ChainJoint<S> {
         );
         let w = V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y);
         V3::new(ct * w.x + st * w.y, ct * w.y - st * w.x, w.z)
+    }
+
+    /// Whether joint i turns about an axis parallel to joint i−1's, both revolute: α = 0
+    /// exactly, so that J_{i−2} to J_i is `Rotx(α_{i−2}) Rotz(θ_{i−1} + θ_i)` up to a shift.
+    pub fn parallel_to(&self, previous: &ChainJoint<S>) -> bool {
+        self.kind == JointKind::Revolute
+            && previous.kind == JointKind::Revolute
+            && self.sin_alpha.is_zero()
+            && (self.cos_alpha - self.cos_alpha.one()).is_zero()
     }
 
     /// `Rotx(α)ᵀ v`: a vector in J_{i−1} axes expressed in the axes of J_i before its turn by
@@ -318,6 +333,7 @@ impl<S: Scalar> Chain<S> {
                     d: row.d,
                     body: Body::from_inertial(link, row.a, row.sin_alpha, row.cos_alpha),
                     move_before_twist: false,
+                    sum_angles: false,
                 }
             })
             .collect();
@@ -342,6 +358,7 @@ impl<S: Scalar> Chain<S> {
                     d: row.d,
                     body: Body::from_inertial(link, zero, zero, zero.one()),
                     move_before_twist: false,
+                    sum_angles: false,
                 }
             })
             .collect();
@@ -355,6 +372,17 @@ impl<S: Scalar> Chain<S> {
     pub fn moving_before_twist(mut self, on: bool) -> Chain<S> {
         for j in &mut self.joints {
             j.move_before_twist = on;
+        }
+        self
+    }
+
+    /// The same chain with [`ChainJoint::sum_angles`] set to `on` for every joint parallel to
+    /// the one before it.
+    #[must_use]
+    pub fn summing_angles(mut self, on: bool) -> Chain<S> {
+        for i in 1..self.joints.len() {
+            let parallel = self.joints[i].parallel_to(&self.joints[i - 1]);
+            self.joints[i].sum_angles = on && parallel;
         }
         self
     }

@@ -15,6 +15,14 @@
 //! often a flange or tool with only `Izz` left) is computed in the axes of its joint frame
 //! before the turn by θ: its equations read the same there, and neither its velocities nor its
 //! moment need that turn (PUMA 560: no sine or cosine of q6 in `τ` at all).
+//!
+//! Joints about parallel axes (α = 0 between revolute joints k, …, i) turn about the same z, so
+//! `J_{k−1}` to `J_i` turns by `Rotz(θ_k + ⋯ + θ_i)`. With [`super::ChainJoint::sum_angles`],
+//! `ω_i = Rotz(Σθ)ᵀ w_k + (ω_{i−1})_z + q̇_i` and
+//! `ω̇_i = Rotz(Σθ)ᵀ ẇ_k + (q̇_k + ⋯ + q̇_i) ω_i × z + …` from the vectors `w_k`, `ẇ_k` that
+//! entered joint k, and each link's moment across z turns back to joint k in one step: where
+//! `w_k` is sparse (PUMA 560's `(0, q̇_1, 0)`), one turn costs what two did. The sine and
+//! cosine of the sum cost 3 operations each; derive keeps whichever way is cheaper.
 
 use super::{Chain, JointKind, Scalar, V3};
 use std::ops::{Add, Neg};
@@ -31,6 +39,11 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut u = Rates::new(w, wd);
     let mut forces = Vec::with_capacity(n);
     let unturned = unturned_last(chain);
+    // The vectors that entered the first joint of the current run of parallel revolute joints
+    // (untwisted, before its turn), with the sine and cosine of the run's angle so far.
+    let mut run: Option<Run<S>> = None;
+    // Per joint in a run, the sine and cosine of the run's angle up to it.
+    let mut run_angles = vec![None; n];
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
         let vd_parent = vd.add(u.mul(p));
@@ -41,22 +54,43 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
                 j.to_child(v)
             }
         };
-        let w_in = to_child(w);
-        let wd_in = to_child(wd);
         vd = to_child(vd_parent);
-        match j.kind {
-            JointKind::Revolute => {
+        let summed = match run {
+            Some(r) if j.sum_angles && unturned != Some(i) => Some(r.then(j)),
+            _ => None,
+        };
+        match (j.kind, summed) {
+            (JointKind::Revolute, Some(r)) => {
+                // ω_i = Rotz(Σθ)ᵀ w_k + (Σq̇) z, ω̇_i = Rotz(Σθ)ᵀ ẇ_k + (Σq̇) ω_i × z + (Σq̈) z.
+                let w_in = r.turned_back(r.w);
+                let wd_in = r.turned_back(r.wd);
+                let next = V3::new(w_in.x, w_in.y, w.z + qd[i]);
+                let c = next.cross_z(next.z - r.w.z);
+                wd = V3::new(wd_in.x + c.x, wd_in.y + c.y, wd.z + qdd[i]);
+                w = next;
+                run = Some(r);
+            }
+            (JointKind::Revolute, None) => {
+                run = (unturned != Some(i)).then(|| Run {
+                    w: j.untwist(w),
+                    wd: j.untwist(wd),
+                    sin: j.sin_theta,
+                    cos: j.cos_theta,
+                });
+                let (w_in, wd_in) = (to_child(w), to_child(wd));
                 w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
                 let c = w_in.cross_z(qd[i]);
                 wd = V3::new(wd_in.x + c.x, wd_in.y + c.y, wd_in.z + qdd[i]);
             }
-            JointKind::Prismatic => {
-                w = w_in;
-                wd = wd_in;
+            (JointKind::Prismatic, _) => {
+                run = None;
+                w = to_child(w);
+                wd = to_child(wd);
                 let c = w.cross_z(qd[i] + qd[i]);
                 vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
             }
         }
+        run_angles[i] = run.map(|r| (r.sin, r.cos));
         let b = &j.body;
         u = Rates::new(w, wd);
         let f = vd.scale(b.mass).add(u.mul(b.h));
@@ -65,14 +99,27 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     }
     let mut tau = vec![zero; n];
     let mut child: Option<(V3<S>, V3<S>)> = None;
+    // Moments of links in a run not yet turned into the run's first joint's axes: the part
+    // across z, in the axes of link p, which turns by the run's angle up to p at once.
+    let mut pending: Vec<(V3<S>, usize)> = Vec::new();
     for i in (0..n).rev() {
         let (mut f, mut nn) = forces[i];
         if let Some((fc, nc)) = child {
             let next = &chain.joints[i + 1];
             let (rf, rn) = if unturned == Some(i + 1) {
                 next.wrench_from_turned(fc, nc)
+            } else if next.sum_angles {
+                // Turning about z leaves the z component; the rest waits for the run's start.
+                pending.push((V3::new(nc.x, nc.y, zero), i + 1));
+                next.wrench_from_turned(next.to_turned(fc), V3::new(zero, zero, nc.z))
             } else {
-                next.wrench_to_parent(fc, nc)
+                let mut turned = next.to_turned(nc);
+                for (v, p) in pending.drain(..) {
+                    if let Some((s, c)) = run_angles[p] {
+                        turned = turned.add(V3::new(c * v.x - s * v.y, s * v.x + c * v.y, zero));
+                    }
+                }
+                next.wrench_from_turned(next.to_turned(fc), turned)
             };
             f = f.add(rf);
             nn = nn.add(rn);
@@ -92,6 +139,35 @@ fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
     let last = chain.joints.len().checked_sub(1)?;
     let j = &chain.joints[last];
     (j.kind == JointKind::Revolute && j.body.is_axially_symmetric()).then_some(last)
+}
+
+/// A run of revolute joints about parallel axes: the angular velocity and acceleration that
+/// entered its first joint k, in that joint's axes before its turn, and the sine and cosine of
+/// `θ_k + ⋯ + θ_i`.
+#[derive(Clone, Copy)]
+struct Run<S> {
+    w: V3<S>,
+    wd: V3<S>,
+    sin: S,
+    cos: S,
+}
+
+impl<S: Scalar> Run<S> {
+    /// The run extended by joint `j`: `sin(Σ + θ) = sin Σ cos θ + cos Σ sin θ`, and the cosine.
+    fn then(self, j: &super::ChainJoint<S>) -> Run<S> {
+        let (st, ct) = (j.sin_theta, j.cos_theta);
+        Run {
+            sin: self.sin * ct + self.cos * st,
+            cos: self.cos * ct - self.sin * st,
+            ..self
+        }
+    }
+
+    /// `Rotz(Σθ)ᵀ v`.
+    fn turned_back(&self, v: V3<S>) -> V3<S> {
+        let (s, c) = (self.sin, self.cos);
+        V3::new(c * v.x + s * v.y, c * v.y - s * v.x, v.z)
+    }
 }
 
 /// A link's angular velocity `ω` and acceleration `ω̇` as Khalil writes them: the products
@@ -152,9 +228,82 @@ impl<S: Scalar> Rates<S> {
 
 #[cfg(test)]
 mod tests {
-    use super::Rates;
-    use crate::algo::{Mat3, V3};
+    use super::{rnea, Rates};
+    use crate::algo::{Chain, DhRow, Inertial, JointKind, Mat3, V3};
     use std::ops::Add;
+
+    /// A 7-joint arm with runs of parallel revolute joints (2-3-4 and 5-6) and a prismatic
+    /// last joint; with `symmetric_tip`, it ends at joint 6, whose link is axially symmetric.
+    fn parallel_chain(q: &[f64], symmetric_tip: bool) -> Chain<f64> {
+        let alphas = [std::f64::consts::FRAC_PI_2, 0.0, 0.0, -0.7, 0.0, 0.0, 0.3];
+        let joints = if symmetric_tip { 6 } else { 7 };
+        let mut rows = Vec::new();
+        let mut links = Vec::new();
+        for (i, (&alpha, &qi)) in alphas.iter().zip(q).take(joints).enumerate() {
+            let x = i as f64;
+            let kind = if i == 6 {
+                JointKind::Prismatic
+            } else {
+                JointKind::Revolute
+            };
+            let (theta, d) = match kind {
+                JointKind::Revolute => (qi + 0.2 * x, 0.04 * x),
+                JointKind::Prismatic => (0.3, qi),
+            };
+            rows.push(DhRow {
+                kind,
+                sin_theta: theta.sin(),
+                cos_theta: theta.cos(),
+                d,
+                a: 0.25 - 0.03 * x,
+                sin_alpha: alpha.sin(),
+                cos_alpha: alpha.cos(),
+            });
+            let tip = symmetric_tip && i == 5;
+            links.push(Inertial {
+                mass: 1.0 + 0.2 * x,
+                com: if tip {
+                    V3::new(0.0, 0.0, 0.05)
+                } else {
+                    V3::new(-0.1 + 0.02 * x, 0.03, 0.05)
+                },
+                inertia: if tip {
+                    [0.02, 0.02, 0.01, 0.0, 0.0, 0.0]
+                } else {
+                    [0.05, 0.04 + 0.01 * x, 0.03, 0.004, -0.002, 0.001 * x]
+                },
+            });
+        }
+        // The standard table's last twist is not a joint's: the tip's link keeps its axes.
+        if symmetric_tip {
+            rows[5].sin_alpha = 0.0;
+            rows[5].cos_alpha = 1.0;
+        }
+        Chain::standard(&rows, &links)
+    }
+
+    /// Rates turned through the sums of parallel joints' angles, and moments turned back the
+    /// same way, give the torques of the joint-by-joint recursion.
+    #[test]
+    fn summing_angles_of_parallel_joints() {
+        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4, 0.15];
+        let qd = [0.8, -0.4, 1.3, -2.1, 0.5, 0.9, -0.3];
+        let qdd = [-1.2, 0.6, 0.2, 1.7, -0.9, 0.4, 0.8];
+        let gravity = V3::new(0.5, -1.0, -9.7);
+        for symmetric_tip in [false, true] {
+            let chain = parallel_chain(&q, symmetric_tip);
+            let summed = chain.clone().summing_angles(true);
+            let flags: Vec<bool> = summed.joints.iter().map(|j| j.sum_angles).collect();
+            let expected = [false, false, true, true, false, true, false];
+            assert_eq!(flags, expected[..chain.joints.len()]);
+            let n = chain.joints.len();
+            let plain = rnea(&chain, &qd[..n], &qdd[..n], gravity);
+            let by_sums = rnea(&summed, &qd[..n], &qdd[..n], gravity);
+            for (a, b) in plain.iter().zip(&by_sums) {
+                assert!((a - b).abs() < 1e-12, "{plain:?} vs {by_sums:?}");
+            }
+        }
+    }
 
     /// The moment read off `U` equals `I ω̇ + ω × I ω` computed directly.
     #[test]
