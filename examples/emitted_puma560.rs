@@ -661,6 +661,245 @@ mod __dynamics {
             k85,
         }
     }
+    /// What several methods compute from `q̇` too, computed once.
+    pub(super) struct Motion<T> {
+        v9: T,
+        v10: T,
+        v11: T,
+        v12: T,
+        v13: T,
+        v14: T,
+        v16: T,
+        v18: T,
+        v26: T,
+        v27: T,
+        v28: T,
+        v29: T,
+        v30: T,
+        v31: T,
+        v32: T,
+        v33: T,
+        v34: T,
+        v35: T,
+        v36: T,
+        v37: T,
+        v38: T,
+        v39: T,
+        v42: T,
+        v43: T,
+        v44: T,
+        v45: T,
+        v46: T,
+        v48: T,
+        v52: T,
+        v54: T,
+        v55: T,
+        v56: T,
+        v57: T,
+        v61: T,
+        v62: T,
+        v65: T,
+        v66: T,
+    }
+    #[inline(always)]
+    pub(super) fn motion<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> (Configuration<T>, Motion<T>) {
+        let c_ = configuration(p_, q_);
+        let Configuration {
+            s2,
+            c2,
+            k2,
+            s3,
+            c3,
+            k3,
+            k4,
+            k5,
+            s4,
+            c4,
+            s5,
+            c5,
+            k6,
+            k7,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k26,
+            k27,
+            k28,
+            k29,
+            k31,
+            k32,
+            k33,
+            k40,
+            k43,
+            k44,
+            k47,
+            u104,
+            u105,
+            k53,
+            k54,
+            k57,
+            k58,
+            k60,
+            k62,
+            k63,
+            k64,
+            k65,
+            k66,
+            k69,
+            k70,
+            k71,
+            k72,
+            k73,
+            ..
+        } = c_;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let v1 = s2 * qd1;
+        let v2 = c2 * qd1;
+        let v3 = qd2 * v2;
+        let v4 = qd2 * v1;
+        let v5 = v1 * v1;
+        let v6 = v2 * v2;
+        let v7 = qd2 * qd2;
+        let v8 = v1 * v2;
+        let v9 = v6 + v7;
+        let v10 = v5 + v6;
+        let v11 = v6 - v7;
+        let v12 = v7 - v5;
+        let v13 = v5 - v6;
+        let v14 = k54.mul_add(v8, k10 * v13);
+        let v15 = k47.mul_add(v10, k64 * v4);
+        let v16 = qd2 + qd3;
+        let v17 = v16 * v16;
+        let v18 = -(c4 * v16);
+        let v19 = qd1 * u104;
+        let v20 = qd1 * u105;
+        let v21 = v16 * v20;
+        let v22 = v16 * v19;
+        let v23 = v19 * v19;
+        let v24 = v20 * v20;
+        let v25 = v19 * v20;
+        let v26 = v17 + v24;
+        let v27 = v17 + v23;
+        let v28 = v24 - v17;
+        let v29 = v23 - v24;
+        let v30 = k58.mul_add(v25, k26 * v29);
+        let v31 = k27
+            .mul_add(
+                v15,
+                k28.mul_add(v21, k14.mul_add(v28, k72.mul_add(v22, k29 * v21))),
+            );
+        let v32 = k65.mul_add(v15, k57.mul_add(v22, k13.mul_add(v25, k71 * v21)));
+        let v33 = k2.mul_add(v25, k5 * v26);
+        let v34 = k23.mul_add(v27, k4 * v25);
+        let v35 = v15 + k64.mul_add(v21, k73 * v22);
+        let v36 = -(c4 * v35);
+        let v37 = c4 * v19 - s4 * v16;
+        let v38 = v18 - s4 * v19;
+        let v39 = qd4 + v20;
+        let v40 = qd4.mul_add(v38, c4 * v21);
+        let v41 = -(s4 * v21) - qd4 * v37;
+        let v42 = k22.mul_add(v38 * v39, k6 * v40);
+        let v43 = k21.mul_add(v37 * v38, k60 * v22);
+        let v44 = s5.mul_add(v39, c5 * v37);
+        let v45 = c5 * v39 - s5 * v37;
+        let v46 = qd5 - v38;
+        let v47 = qd5.mul_add(v45, c5 * v40 - s5 * v22);
+        let v48 = -(c5 * v22) - s5 * v40 - qd5 * v44;
+        let v49 = v44 * v45;
+        let v50 = v45 * v46;
+        let v51 = v41 + v49;
+        let v52 = v46.mul_add(v46, v44 * v44);
+        let v53 = v47 + v50;
+        let v54 = k20.mul_add(v50, k17 * v47);
+        let v55 = k18.mul_add(v49, k40 * v41);
+        let v56 = qd6 + v45;
+        let v57 = k7.mul_add(v48, k15 * (v44 * v46));
+        let v58 = s5.mul_add(v52, c5 * v51);
+        let v59 = s5 * v51 - c5 * v52;
+        let v60 = s4.mul_add(v53, c4 * v58);
+        let v61 = s4 * v58 - c4 * v53;
+        let v62 = k44.mul_add(v60, k43 * v59);
+        let v63 = k16.mul_add(v60, k27.mul_add(v25, k65 * v26));
+        let v64 = k16.mul_add(v59, k66.mul_add(v27, k24 * v25));
+        let v65 = c3.mul_add(v64, s3 * v63);
+        let v66 = c2
+            .mul_add(
+                k53.mul_add(v4, k32.mul_add(v12, k11.mul_add(v8, k62 * v3)))
+                    + k23
+                        .mul_add(
+                            k19.mul_add(v61, k70.mul_add(v21, k69 * v22)),
+                            k3 * (c3 * v63 - s3 * v64),
+                        ),
+                s2
+                    * k47
+                        .mul_add(
+                            v65,
+                            k31
+                                .mul_add(
+                                    v3,
+                                    k12.mul_add(v11, k32.mul_add(v8, k63.mul_add(v4, k33 * v3))),
+                                ),
+                        ),
+            );
+        (
+            c_,
+            Motion {
+                v9,
+                v10,
+                v11,
+                v12,
+                v13,
+                v14,
+                v16,
+                v18,
+                v26,
+                v27,
+                v28,
+                v29,
+                v30,
+                v31,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v37,
+                v38,
+                v39,
+                v42,
+                v43,
+                v44,
+                v45,
+                v46,
+                v48,
+                v52,
+                v54,
+                v55,
+                v56,
+                v57,
+                v61,
+                v62,
+                v65,
+                v66,
+            },
+        )
+    }
     #[inline(always)]
     pub(super) fn mass_matrix<T: ::dynamics_runtime::Real>(
         p_: &[T; 0usize],
@@ -919,187 +1158,90 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let Configuration {
-            s2,
-            c2,
-            k2,
-            s3,
-            c3,
-            k3,
-            k4,
-            k5,
-            s4,
-            c4,
-            s5,
-            c5,
-            k6,
-            k7,
-            k10,
-            k11,
-            k12,
-            k13,
-            k14,
-            k15,
-            k16,
-            k17,
-            k18,
-            k19,
-            k20,
-            k21,
-            k22,
-            k23,
-            k24,
-            k25,
-            k26,
-            k27,
-            k28,
-            k29,
-            k31,
-            k32,
-            k33,
-            k36,
-            k40,
-            k43,
-            k44,
-            k47,
-            u104,
-            u105,
-            k53,
-            k54,
-            k57,
-            k58,
-            k60,
-            k61,
-            k62,
-            k63,
-            k64,
-            k65,
-            k66,
-            k68,
-            k69,
-            k70,
-            k71,
-            k72,
-            k73,
-            ..
-        } = configuration(p_, q_);
-        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = s2 * qd1;
-        let t2 = c2 * qd1;
-        let t3 = qd2 * t2;
-        let t4 = qd2 * t1;
-        let t5 = t1 * t1;
-        let t6 = t2 * t2;
-        let t7 = qd2 * qd2;
-        let t8 = t1 * t2;
-        let t9 = t6 + t7;
-        let t10 = k47.mul_add(t5 + t6, k64 * t4);
-        let t11 = c3 * t9 - s3 * t8;
-        let t12 = s3.mul_add(t9, c3 * t8);
-        let t13 = qd2 + qd3;
-        let t14 = t13 * t13;
-        let t15 = qd1 * u104;
-        let t16 = qd1 * u105;
-        let t17 = t13 * t16;
-        let t18 = t13 * t15;
-        let t19 = t15 * t15;
-        let t20 = t16 * t16;
-        let t21 = t15 * t16;
-        let t22 = t14 + t20;
-        let t23 = t14 + t19;
-        let t24 = k23.mul_add(t11, k2.mul_add(t21, k5 * t22));
-        let t25 = t10 + k64.mul_add(t17, k73 * t18);
-        let t26 = c4 * t15 - s4 * t13;
-        let t27 = -(c4 * t13) - s4 * t15;
-        let t28 = qd4 + t16;
-        let t29 = qd4.mul_add(t27, c4 * t17);
-        let t30 = -(s4 * t17) - qd4 * t26;
-        let t31 = s5.mul_add(t28, c5 * t26);
-        let t32 = c5 * t28 - s5 * t26;
-        let t33 = qd5 - t27;
-        let t34 = qd5.mul_add(t32, c5 * t29 - s5 * t18);
-        let t35 = t31 * t32;
-        let t36 = t32 * t33;
-        let t37 = t30 + t35;
-        let t38 = t33.mul_add(t33, t31 * t31);
-        let t39 = t34 + t36;
-        let t40 = qd6 + t32;
+        let (
+            Configuration {
+                s2,
+                c2,
+                k2,
+                s3,
+                c3,
+                s4,
+                c4,
+                s5,
+                c5,
+                k7,
+                k19,
+                k23,
+                k25,
+                k36,
+                k43,
+                k44,
+                u104,
+                u105,
+                k61,
+                k68,
+                ..
+            },
+            Motion {
+                v9,
+                v14,
+                v30,
+                v31,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v37,
+                v39,
+                v42,
+                v43,
+                v44,
+                v46,
+                v48,
+                v54,
+                v55,
+                v56,
+                v57,
+                v61,
+                v62,
+                v65,
+                v66,
+                ..
+            },
+        ) = motion(p_, q_, qd_);
+        let [qd1, _, _, _, _, _] = *qd_;
+        let t1 = s2 * qd1 * (c2 * qd1);
+        let t2 = c3 * v9 - s3 * t1;
+        let t3 = s3.mul_add(v9, c3 * t1);
+        let t4 = k23.mul_add(t2, v33);
         /// centripetal and Coriolis torque 6
-        let cqd6 = k7 * (-(c5 * t18) - s5 * t29 - qd5 * t31);
-        let t41 = k36
-            .mul_add(
-                t33 * t40,
-                k19.mul_add(-(c4 * t25) - s4 * t24, k20.mul_add(t36, k17 * t34)),
-            );
-        let t42 = k15.mul_add(t31 * t33, cqd6);
+        let cqd6 = k7 * v48;
+        let t5 = k36.mul_add(v46 * v56, k19.mul_add(v36 - s4 * t4, v54));
         /// centripetal and Coriolis torque 5
         let cqd5 = k7
             .mul_add(
-                t31 * t40,
+                v44 * v56,
                 k19
                     .mul_add(
-                        s5
-                            .mul_add(
-                                k2.mul_add(t12, k23.mul_add(t23, k4 * t21)),
-                                c5 * (c4 * t24 - s4 * t25),
-                            ),
-                        k18.mul_add(t35, k40 * t30),
+                        s5.mul_add(k2.mul_add(t3, v34), c5 * (c4 * t4 - s4 * v35)),
+                        v55,
                     ),
             );
-        let t43 = s5.mul_add(t38, c5 * t37);
-        let t44 = s5 * t37 - c5 * t38;
-        let t45 = k22.mul_add(t27 * t28, k6 * t29) + (c5 * t41 - s5 * t42);
-        let t46 = k61 * (t26 * t28) - cqd5;
+        let t6 = v42 + (c5 * t5 - s5 * v57);
+        let t7 = k61 * (v37 * v39) - cqd5;
         /// centripetal and Coriolis torque 4
-        let cqd4 = k21.mul_add(t26 * t27, k60 * t18) + c5.mul_add(t42, s5 * t41);
-        let t47 = s4.mul_add(t39, c4 * t43);
-        let t48 = s4 * t43 - c4 * t39;
-        let t49 = k16.mul_add(t47, k27.mul_add(t21, k65 * t22));
-        let t50 = k16.mul_add(t44, k66.mul_add(t23, k24 * t21));
+        let cqd4 = v43 + c5.mul_add(v57, s5 * t5);
         /// centripetal and Coriolis torque 3
-        let cqd3 = k68.mul_add(t11, k25 * t12) + k58.mul_add(t21, k26 * (t19 - t20))
-            + (k44.mul_add(t47, k43 * t44) - c4.mul_add(t46, s4 * t45));
-        let t51 = c3.mul_add(t50, s3 * t49);
+        let cqd3 = k68.mul_add(t2, k25 * t3) + v30 + (v62 - c4.mul_add(t7, s4 * t6));
         /// centripetal and Coriolis torque 2
-        let cqd2 = k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t51, cqd3);
+        let cqd2 = v14 + k2.mul_add(v65, cqd3);
         /// centripetal and Coriolis torque 1
-        let cqd1 = c2
-            .mul_add(
-                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k62 * t3)))
-                    + k23
-                        .mul_add(
-                            k19.mul_add(t48, k70.mul_add(t17, k69 * t18)),
-                            k3 * (c3 * t49 - s3 * t50),
-                        ),
-                s2
-                    * k47
-                        .mul_add(
-                            t51,
-                            k31
-                                .mul_add(
-                                    t3,
-                                    k12
-                                        .mul_add(
-                                            t6 - t7,
-                                            k32.mul_add(t8, k63.mul_add(t4, k33 * t3)),
-                                        ),
-                                ),
-                        ),
-            )
+        let cqd1 = v66
             + u105
                 .mul_add(
-                    k65.mul_add(t10, k57.mul_add(t18, k13.mul_add(t21, k71 * t17)))
-                        + k43.mul_add(t48, cqd4),
-                    u104
-                        * (k27
-                            .mul_add(
-                                t10,
-                                k28
-                                    .mul_add(
-                                        t17,
-                                        k14.mul_add(t20 - t14, k72.mul_add(t18, k29 * t17)),
-                                    ),
-                            ) + k44.mul_add(t48, c4 * t45 - s4 * t46)),
+                    v32 + k43.mul_add(v61, cqd4),
+                    u104 * (v31 + k44.mul_add(v61, c4 * t6 - s4 * t7)),
                 );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
@@ -1117,189 +1259,90 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let Configuration {
-            s2,
-            c2,
-            k2,
-            s3,
-            c3,
-            k3,
-            k4,
-            k5,
-            s4,
-            c4,
-            s5,
-            c5,
-            k6,
-            k7,
-            k10,
-            k11,
-            k12,
-            k13,
-            k14,
-            k15,
-            k16,
-            k17,
-            k18,
-            k19,
-            k20,
-            k21,
-            k22,
-            k23,
-            k24,
-            k26,
-            k27,
-            k28,
-            k29,
-            k31,
-            k32,
-            k33,
-            k36,
-            k40,
-            k43,
-            k44,
-            k47,
-            u104,
-            u105,
-            u107,
-            u108,
-            k53,
-            k54,
-            u109,
-            k57,
-            k58,
-            k60,
-            k61,
-            k62,
-            k63,
-            k64,
-            k65,
-            k66,
-            k69,
-            k70,
-            k71,
-            k72,
-            k73,
-            ..
-        } = configuration(p_, q_);
-        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = s2 * qd1;
-        let t2 = c2 * qd1;
-        let t3 = qd2 * t2;
-        let t4 = qd2 * t1;
-        let t5 = t1 * t1;
-        let t6 = t2 * t2;
-        let t7 = qd2 * qd2;
-        let t8 = t1 * t2;
-        let t9 = k47.mul_add(t5 + t6, k64 * t4);
-        let t10 = qd2 + qd3;
-        let t11 = t10 * t10;
-        let t12 = qd1 * u104;
-        let t13 = qd1 * u105;
-        let t14 = t10 * t13;
-        let t15 = t10 * t12;
-        let t16 = t12 * t12;
-        let t17 = t13 * t13;
-        let t18 = t12 * t13;
-        let t19 = t11 + t17;
-        let t20 = t11 + t16;
-        let t21 = t9 + k64.mul_add(t14, k73 * t15);
-        let t22 = c4 * t12 - s4 * t10;
-        let t23 = -(c4 * t10) - s4 * t12;
-        let t24 = qd4 + t13;
-        let t25 = qd4.mul_add(t23, c4 * t14);
-        let t26 = -(s4 * t14) - qd4 * t22;
-        let t27 = s5.mul_add(t24, c5 * t22);
-        let t28 = c5 * t24 - s5 * t22;
-        let t29 = qd5 - t23;
-        let t30 = qd5.mul_add(t28, c5 * t25 - s5 * t15);
-        let t31 = t27 * t28;
-        let t32 = t28 * t29;
-        let t33 = t26 + t31;
-        let t34 = t29.mul_add(t29, t27 * t27);
-        let t35 = t30 + t32;
-        let t36 = qd6 + t28;
+        let (
+            Configuration {
+                s2,
+                c2,
+                k2,
+                s3,
+                c3,
+                s4,
+                c4,
+                s5,
+                c5,
+                k7,
+                k19,
+                k23,
+                k24,
+                k36,
+                k43,
+                k44,
+                u104,
+                u105,
+                u107,
+                u108,
+                u109,
+                k61,
+                k66,
+                ..
+            },
+            Motion {
+                v9,
+                v14,
+                v30,
+                v31,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v37,
+                v39,
+                v42,
+                v43,
+                v44,
+                v46,
+                v48,
+                v54,
+                v55,
+                v56,
+                v57,
+                v61,
+                v62,
+                v65,
+                v66,
+                ..
+            },
+        ) = motion(p_, q_, qd_);
+        let [qd1, _, _, _, _, _] = *qd_;
         /// centripetal, Coriolis and gravity torque 6
-        let h6 = k7 * (-(c5 * t15) - s5 * t25 - qd5 * t27);
-        let t37 = k15.mul_add(t27 * t29, h6);
-        let t38 = s5.mul_add(t34, c5 * t33);
-        let t39 = s5 * t33 - c5 * t34;
-        let t40 = s4.mul_add(t35, c4 * t38);
-        let t41 = s4 * t38 - c4 * t35;
-        let t42 = k16.mul_add(t40, k27.mul_add(t18, k65 * t19));
-        let t43 = k16.mul_add(t39, k66.mul_add(t20, k24 * t18));
-        let t44 = c3.mul_add(t43, s3 * t42);
-        let t45 = k23.mul_add(t6 + t7, u107);
-        let t46 = k2.mul_add(t8, u108);
-        let t47 = s3.mul_add(t46, c3 * t45);
-        let t48 = c3 * t46 - s3 * t45;
-        let t49 = k2.mul_add(t18, k5 * t19) + t47;
-        let t50 = k36
-            .mul_add(
-                t29 * t36,
-                k19.mul_add(-(c4 * t21) - s4 * t49, k20.mul_add(t32, k17 * t30)),
-            );
+        let h6 = k7 * v48;
+        let t1 = k23.mul_add(v9, u107);
+        let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u108);
+        let t3 = s3.mul_add(t2, c3 * t1);
+        let t4 = c3 * t2 - s3 * t1;
+        let t5 = v33 + t3;
+        let t6 = k36.mul_add(v46 * v56, k19.mul_add(v36 - s4 * t5, v54));
         /// centripetal, Coriolis and gravity torque 5
         let h5 = k7
             .mul_add(
-                t27 * t36,
-                k19
-                    .mul_add(
-                        s5
-                            .mul_add(
-                                k23.mul_add(t20, k4 * t18) + t48,
-                                c5 * (c4 * t49 - s4 * t21),
-                            ),
-                        k18.mul_add(t31, k40 * t26),
-                    ),
+                v44 * v56,
+                k19.mul_add(s5.mul_add(v34 + t4, c5 * (c4 * t5 - s4 * v35)), v55),
             );
-        let t51 = k22.mul_add(t23 * t24, k6 * t25) + (c5 * t50 - s5 * t37);
-        let t52 = k61 * (t22 * t24) - h5;
+        let t7 = v42 + (c5 * t6 - s5 * v57);
+        let t8 = k61 * (v37 * v39) - h5;
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = k21.mul_add(t22 * t23, k60 * t15) + s5.mul_add(t50, c5 * t37);
+        let h4 = v43 + s5.mul_add(t6, c5 * v57);
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = k58.mul_add(t18, k26 * (t16 - t17)) + k66.mul_add(t47, k24 * t48)
-            + (k44.mul_add(t40, k43 * t39) - c4.mul_add(t52, s4 * t51));
+        let h3 = v30 + k66.mul_add(t3, k24 * t4) + (v62 - c4.mul_add(t8, s4 * t7));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = u109 + k54.mul_add(t8, k10 * (t5 - t6)) + k2.mul_add(t44, h3);
+        let h2 = u109 + v14 + k2.mul_add(v65, h3);
         /// centripetal, Coriolis and gravity torque 1
-        let h1 = c2
-            .mul_add(
-                k53.mul_add(t4, k32.mul_add(t7 - t5, k11.mul_add(t8, k62 * t3)))
-                    + k23
-                        .mul_add(
-                            k19.mul_add(t41, k70.mul_add(t14, k69 * t15)),
-                            k3 * (c3 * t42 - s3 * t43),
-                        ),
-                s2
-                    * k47
-                        .mul_add(
-                            t44,
-                            k31
-                                .mul_add(
-                                    t3,
-                                    k12
-                                        .mul_add(
-                                            t6 - t7,
-                                            k32.mul_add(t8, k63.mul_add(t4, k33 * t3)),
-                                        ),
-                                ),
-                        ),
-            )
+        let h1 = v66
             + u105
                 .mul_add(
-                    k65.mul_add(t9, k57.mul_add(t15, k13.mul_add(t18, k71 * t14)))
-                        + k43.mul_add(t41, h4),
-                    u104
-                        * (k27
-                            .mul_add(
-                                t9,
-                                k28
-                                    .mul_add(
-                                        t14,
-                                        k14.mul_add(t17 - t11, k72.mul_add(t15, k29 * t14)),
-                                    ),
-                            ) + k44.mul_add(t41, c4 * t51 - s4 * t52)),
+                    v32 + k43.mul_add(v61, h4),
+                    u104 * (v31 + k44.mul_add(v61, c4 * t7 - s4 * t8)),
                 );
         [h1, h2, h3, h4, h5, h6]
     }
@@ -1310,165 +1353,171 @@ mod __dynamics {
         qd_: &[T; 6usize],
         qdd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let Configuration {
-            s2,
-            c2,
-            k2,
-            s3,
-            c3,
-            k3,
-            k4,
-            k5,
-            s4,
-            c4,
-            s5,
-            c5,
-            k6,
-            k7,
-            k9,
-            k10,
-            k11,
-            k12,
-            k13,
-            k14,
-            k15,
-            k16,
-            k17,
-            k18,
-            k19,
-            k20,
-            k21,
-            k22,
-            k23,
-            k24,
-            k26,
-            k27,
-            k28,
-            k29,
-            k31,
-            k32,
-            k33,
-            k34,
-            k36,
-            k43,
-            k44,
-            k47,
-            u104,
-            u105,
-            u107,
-            u108,
-            k53,
-            k54,
-            u109,
-            k57,
-            k58,
-            k61,
-            k65,
-            k66,
-            k67,
-            ..
-        } = configuration(p_, q_);
-        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let (
+            Configuration {
+                s2,
+                c2,
+                k2,
+                s3,
+                c3,
+                k3,
+                k4,
+                k5,
+                s4,
+                c4,
+                s5,
+                c5,
+                k6,
+                k7,
+                k9,
+                k10,
+                k11,
+                k12,
+                k13,
+                k14,
+                k15,
+                k16,
+                k17,
+                k18,
+                k19,
+                k20,
+                k21,
+                k22,
+                k23,
+                k24,
+                k26,
+                k27,
+                k28,
+                k29,
+                k31,
+                k32,
+                k33,
+                k34,
+                k36,
+                k43,
+                k44,
+                k47,
+                u104,
+                u105,
+                u107,
+                u108,
+                k53,
+                k54,
+                u109,
+                k57,
+                k58,
+                k61,
+                k65,
+                k66,
+                k67,
+                ..
+            },
+            Motion {
+                v9,
+                v10,
+                v11,
+                v12,
+                v13,
+                v16,
+                v26,
+                v27,
+                v28,
+                v29,
+                v37,
+                v38,
+                v39,
+                v44,
+                v45,
+                v46,
+                v52,
+                v56,
+                ..
+            },
+        ) = motion(p_, q_, qd_);
+        let [qd1, qd2, _, qd4, qd5, _] = *qd_;
         let [qdd1, qdd2, qdd3, qdd4, qdd5, qdd6] = *qdd_;
         let t1 = s2 * qd1;
         let t2 = c2 * qd1;
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
-        let t5 = t1 * t1;
-        let t6 = t2 * t2;
-        let t7 = qd2 * qd2;
-        let t8 = t1 * t2;
-        let t9 = qd2 + qd3;
-        let t10 = t9 * t9;
-        let t11 = qd1 * u104;
-        let t12 = qd1 * u105;
-        let t13 = t9 * t12;
-        let t14 = t9 * t11;
-        let t15 = t11 * t11;
-        let t16 = t12 * t12;
-        let t17 = t11 * t12;
-        let t18 = t10 + t16;
-        let t19 = t10 + t15;
-        let t20 = c4 * t11 - s4 * t9;
-        let t21 = -(c4 * t9) - s4 * t11;
-        let t22 = qd4 + t12;
-        let t23 = s5.mul_add(t22, c5 * t20);
-        let t24 = c5 * t22 - s5 * t20;
-        let t25 = qd5 - t21;
-        let t26 = t23 * t24;
-        let t27 = t24 * t25;
-        let t28 = t25.mul_add(t25, t23 * t23);
-        let t29 = qd6 + t24;
-        let t30 = s2 * qdd1;
-        let t31 = c2 * qdd1;
-        let t32 = t3 + t30;
-        let t33 = qdd2 + t8;
-        let t34 = t4 - (t31 - t4);
-        let t35 = k2.mul_add(t34, k47 * (t5 + t6));
-        let t36 = u107 + k3.mul_add(t31, k23 * (t6 + t7));
-        let t37 = u108 + k47.mul_add(t30, k2 * t33);
-        let t38 = s3.mul_add(t37, c3 * t36);
-        let t39 = c3 * t37 - s3 * t36;
-        let t40 = qdd2 + qdd3;
-        let t41 = qdd1 * u105;
-        let t42 = qdd1.mul_add(u104, t13);
-        let t43 = t41 - t14;
-        let t44 = t17 - t40;
-        let t45 = t17 + t40;
-        let t46 = t14 - t43;
-        let t47 = t13 + t42;
-        let t48 = t38 + k2.mul_add(t44, k5 * t18);
-        let t49 = t35 + k2.mul_add(t47, k4 * t46);
-        let t50 = qd4.mul_add(t21, c4 * t42 - s4 * t40);
-        let t51 = qdd4 + t43;
-        let t52 = qd5.mul_add(t24, s5.mul_add(t51, c5 * t50));
-        let t53 = qdd5 - (-(c4 * t40) - s4 * t42 - qd4 * t20);
-        let t54 = t26 - t53;
-        let t55 = t27 + t52;
+        let t5 = t1 * t2;
+        let t6 = qd1 * u104;
+        let t7 = qd1 * u105;
+        let t8 = v16 * t7;
+        let t9 = v16 * t6;
+        let t10 = t6 * t7;
+        let t11 = v44 * v45;
+        let t12 = v45 * v46;
+        let t13 = s2 * qdd1;
+        let t14 = c2 * qdd1;
+        let t15 = t3 + t13;
+        let t16 = qdd2 + t5;
+        let t17 = t4 - (t14 - t4);
+        let t18 = k2.mul_add(t17, k47 * v10);
+        let t19 = u107 + k3.mul_add(t14, k23 * v9);
+        let t20 = u108 + k47.mul_add(t13, k2 * t16);
+        let t21 = s3.mul_add(t20, c3 * t19);
+        let t22 = c3 * t20 - s3 * t19;
+        let t23 = qdd2 + qdd3;
+        let t24 = qdd1 * u105;
+        let t25 = qdd1.mul_add(u104, t8);
+        let t26 = t24 - t9;
+        let t27 = t10 - t23;
+        let t28 = t10 + t23;
+        let t29 = t9 - t26;
+        let t30 = t8 + t25;
+        let t31 = t21 + k2.mul_add(t27, k5 * v26);
+        let t32 = t18 + k2.mul_add(t30, k4 * t29);
+        let t33 = qd4.mul_add(v38, c4 * t25 - s4 * t23);
+        let t34 = qdd4 + t26;
+        let t35 = qd5.mul_add(v45, s5.mul_add(t34, c5 * t33));
+        let t36 = qdd5 - (-(c4 * t23) - s4 * t25 - qd4 * v37);
+        let t37 = t11 - t36;
+        let t38 = t12 + t35;
         /// T6 (6.46)
-        let tau6 = k7 * (qdd6 + (c5 * t51 - s5 * t50 - qd5 * t23));
-        let t56 = k36
+        let tau6 = k7 * (qdd6 + (c5 * t34 - s5 * t33 - qd5 * v44));
+        let t39 = k36
             .mul_add(
-                t25 * t29,
-                k19.mul_add(-(c4 * t49) - s4 * t48, k17.mul_add(t52, k20 * t27)),
+                v46 * v56,
+                k19.mul_add(-(c4 * t32) - s4 * t31, k17.mul_add(t35, k20 * t12)),
             );
-        let t57 = k15.mul_add(t23 * t25, tau6);
+        let t40 = k15.mul_add(v44 * v46, tau6);
         /// T5 (6.46)
         let tau5 = k7
             .mul_add(
-                t23 * t29,
+                v44 * v56,
                 k19
                     .mul_add(
                         s5
                             .mul_add(
-                                t39 + k4.mul_add(t45, k23 * t19),
-                                c5 * (c4 * t48 - s4 * t49),
+                                t22 + k4.mul_add(t28, k23 * v27),
+                                c5 * (c4 * t31 - s4 * t32),
                             ),
-                        k20.mul_add(t53, k18 * t26),
+                        k20.mul_add(t36, k18 * t11),
                     ),
             );
-        let t58 = c5.mul_add(t54, s5 * t28);
-        let t59 = s5 * t54 - c5 * t28;
-        let t60 = k6.mul_add(t50, k22 * (t21 * t22)) + (c5 * t56 - s5 * t57);
-        let t61 = k61 * (t20 * t22) - tau5;
+        let t41 = c5.mul_add(t37, s5 * v52);
+        let t42 = s5 * t37 - c5 * v52;
+        let t43 = k6.mul_add(t33, k22 * (v38 * v39)) + (c5 * t39 - s5 * t40);
+        let t44 = k61 * (v37 * v39) - tau5;
         /// T4 (6.46)
-        let tau4 = k22.mul_add(t51, k21 * (t20 * t21)) + c5.mul_add(t57, s5 * t56);
-        let t62 = s4.mul_add(t55, c4 * t58);
-        let t63 = s4 * t58 - c4 * t55;
-        let t64 = k16.mul_add(t62, k27.mul_add(t44, k65 * t18));
-        let t65 = k16.mul_add(t59, k24.mul_add(t45, k66 * t19));
+        let tau4 = k22.mul_add(t34, k21 * (v37 * v38)) + c5.mul_add(t40, s5 * t39);
+        let t45 = s4.mul_add(t38, c4 * t41);
+        let t46 = s4 * t41 - c4 * t38;
+        let t47 = k16.mul_add(t45, k27.mul_add(t27, k65 * v26));
+        let t48 = k16.mul_add(t42, k24.mul_add(t28, k66 * v27));
         /// T3 (6.46)
-        let tau3 = k66.mul_add(t38, k24 * t39)
-            + k58.mul_add(t17, k26.mul_add(t15 - t16, k14.mul_add(t41, k28 * t40)))
-            + (k44.mul_add(t62, k43 * t59) - c4.mul_add(t61, s4 * t60));
-        let t66 = c3.mul_add(t65, s3 * t64);
+        let tau3 = k66.mul_add(t21, k24 * t22)
+            + k58.mul_add(t10, k26.mul_add(v29, k14.mul_add(t24, k28 * t23)))
+            + (k44.mul_add(t45, k43 * t42) - c4.mul_add(t44, s4 * t43));
+        let t49 = c3.mul_add(t48, s3 * t47);
         /// T2 (6.46)
         let tau2 = u109
             + k54
                 .mul_add(
-                    t8,
-                    k10.mul_add(t5 - t6, k12.mul_add(t31, k32.mul_add(t30, k31 * qdd2))),
-                ) + k2.mul_add(t66, tau3);
+                    t5,
+                    k10.mul_add(v13, k12.mul_add(t14, k32.mul_add(t13, k31 * qdd2))),
+                ) + k2.mul_add(t49, tau3);
         /// T1 (6.46)
         let tau1 = k34
             .mul_add(
@@ -1478,44 +1527,37 @@ mod __dynamics {
                         k53
                             .mul_add(
                                 t4,
-                                k32
-                                    .mul_add(t7 - t5, k11.mul_add(t8 - qdd2, k10 * (t3 + t32))),
+                                k32.mul_add(v12, k11.mul_add(t5 - qdd2, k10 * (t3 + t15))),
                             )
                             + k23
                                 .mul_add(
-                                    k19.mul_add(t63, k27.mul_add(t47, k24 * t46)),
-                                    k3 * (c3 * t64 - s3 * t65),
+                                    k19.mul_add(t46, k27.mul_add(t30, k24 * t29)),
+                                    k3 * (c3 * t47 - s3 * t48),
                                 ),
                         s2
                             * k47
                                 .mul_add(
-                                    t66,
+                                    t49,
                                     k31
                                         .mul_add(
                                             t3,
                                             k12
-                                                .mul_add(
-                                                    t6 - t7,
-                                                    k32.mul_add(t33, k9.mul_add(t34, k33 * t32)),
-                                                ),
+                                                .mul_add(v11, k32.mul_add(t16, k9.mul_add(t17, k33 * t15))),
                                         ),
                                 ),
                     )
                     + u105
                         .mul_add(
                             k65
-                                .mul_add(t35, k57.mul_add(t14, k13.mul_add(t44, k26 * t47)))
-                                + k43.mul_add(t63, tau4),
+                                .mul_add(t18, k57.mul_add(t9, k13.mul_add(t27, k26 * t30)))
+                                + k43.mul_add(t46, tau4),
                             u104
                                 * (k27
                                     .mul_add(
-                                        t35,
+                                        t18,
                                         k28
-                                            .mul_add(
-                                                t13,
-                                                k14.mul_add(t16 - t10, k67.mul_add(t46, k29 * t42)),
-                                            ),
-                                    ) + k44.mul_add(t63, c4 * t60 - s4 * t61)),
+                                            .mul_add(t8, k14.mul_add(v28, k67.mul_add(t29, k29 * t25))),
+                                    ) + k44.mul_add(t46, c4 * t43 - s4 * t44)),
                         ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]
@@ -1526,82 +1568,84 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> T {
-        let Configuration {
-            k1,
-            s2,
-            c2,
-            k2,
-            s3,
-            c3,
-            k3,
-            k4,
-            k5,
-            s4,
-            c4,
-            s5,
-            c5,
-            k6,
-            k7,
-            k10,
-            k12,
-            k14,
-            k17,
-            k20,
-            k22,
-            k23,
-            k24,
-            k26,
-            k27,
-            k28,
-            k29,
-            k31,
-            k32,
-            k33,
-            k34,
-            k35,
-            k47,
-            k65,
-            k66,
-            k74,
-            ..
-        } = configuration(p_, q_);
-        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let (
+            Configuration {
+                k1,
+                s2,
+                c2,
+                k2,
+                s3,
+                c3,
+                k3,
+                k4,
+                k5,
+                s4,
+                c4,
+                s5,
+                c5,
+                k6,
+                k7,
+                k10,
+                k12,
+                k14,
+                k17,
+                k20,
+                k22,
+                k23,
+                k24,
+                k26,
+                k27,
+                k28,
+                k29,
+                k31,
+                k32,
+                k33,
+                k34,
+                k35,
+                k47,
+                k65,
+                k66,
+                k74,
+                ..
+            },
+            Motion { v16, v18, .. },
+        ) = motion(p_, q_, qd_);
+        let [qd1, qd2, _, qd4, qd5, qd6] = *qd_;
         let t1 = s2 * qd1;
         let t2 = c2 * qd1;
         let t3 = s3 * t2;
         let t4 = c3.mul_add(t1, t3);
         let t5 = c3 * t2;
         let t6 = t5 - s3 * t1;
-        let t7 = qd2 + qd3;
-        let t8 = c4 * t4 - s4 * t7;
-        let t9 = qd4 + t6;
-        let t10 = s5.mul_add(t9, c5 * t8);
-        let t11 = qd5 - (-(c4 * t7) - s4 * t4);
-        let t12 = qd6 + (c5 * t9 - s5 * t8);
-        let t13 = k47.mul_add(t1, k2 * qd2);
-        let t14 = s3.mul_add(t13, k3 * t5);
-        let t15 = k47.mul_add(t3, c3 * t13);
-        let t16 = k23.mul_add(t7, t14);
-        let t17 = k23.mul_add(t2, k5.mul_add(t6, k2 * t4));
+        let t7 = c4 * t4 - s4 * v16;
+        let t8 = qd4 + t6;
+        let t9 = s5.mul_add(t8, c5 * t7);
+        let t10 = qd5 - (v18 - s4 * t4);
+        let t11 = qd6 + (c5 * t8 - s5 * t7);
+        let t12 = k47.mul_add(t1, k2 * qd2);
+        let t13 = s3.mul_add(t12, k3 * t5);
+        let t14 = k47.mul_add(t3, c3 * t12);
+        let t15 = k23.mul_add(v16, t13);
+        let t16 = k23.mul_add(t2, k5.mul_add(t6, k2 * t4));
         k1
             * k7
                 .mul_add(
-                    t12 * t12,
+                    t11 * t11,
                     k74
                         .mul_add(
-                            t10
+                            t9
                                 .mul_add(
-                                    -(c4 * t17) - s4 * t16,
-                                    t11
+                                    -(c4 * t16) - s4 * t15,
+                                    t10
                                         * s5
-                                            .mul_add(k4.mul_add(t7, t15), c5 * (c4 * t16 - s4 * t17)),
+                                            .mul_add(k4.mul_add(v16, t14), c5 * (c4 * t15 - s4 * t16)),
                                 ),
                             k35
                                 .mul_add(
                                     k23
                                         .mul_add(
                                             t2 * k65.mul_add(t6, k27 * t4),
-                                            k24.mul_add(t7 * t15, k66 * (t7 * t14)),
+                                            k24.mul_add(v16 * t14, k66 * (v16 * t13)),
                                         ),
                                     k34
                                         .mul_add(
@@ -1617,16 +1661,16 @@ mod __dynamics {
                                                 ),
                                         ),
                                 )
-                                + t7
+                                + v16
                                     .mul_add(
-                                        k28.mul_add(t7, k14 * t6),
+                                        k28.mul_add(v16, k14 * t6),
                                         t6
                                             .mul_add(
-                                                k14.mul_add(t7, k26 * t4),
+                                                k14.mul_add(v16, k26 * t4),
                                                 t4 * k26.mul_add(t6, k29 * t4),
                                             ),
-                                    ) + k22.mul_add(t9 * t9, k6 * (t8 * t8)),
-                        ) + k20.mul_add(t11 * t11, k17 * (t10 * t10)),
+                                    ) + k22.mul_add(t8 * t8, k6 * (t7 * t7)),
+                        ) + k20.mul_add(t10 * t10, k17 * (t9 * t9)),
                 )
     }
     #[inline(always)]

@@ -235,14 +235,19 @@ fn stats(robot: &Robot) -> String {
         "method", "mul", "add", "neg", "div", "trig", "flops", "depth", "bytes"
     );
     let mut total = 0;
-    if let Some(c) = &generated.configuration {
-        let bytes = c.tokens.to_string().len();
-        total += bytes;
-        let _ = writeln!(
-            out,
-            "{:<18} {:>49} {:>9}",
-            "(shared)", "computed once, counted below", bytes
-        );
+    for (name, shared) in [
+        ("(configuration)", &generated.configuration),
+        ("(motion)", &generated.motion),
+    ] {
+        if let Some(c) = shared {
+            let bytes = c.tokens.to_string().len();
+            total += bytes;
+            let _ = writeln!(
+                out,
+                "{:<18} {:>49} {:>9}",
+                name, "computed once, counted below", bytes
+            );
+        }
     }
     for m in &generated.methods {
         let bytes = m.body.to_string().len();

@@ -267,9 +267,9 @@ fn stats_per_method() {
     let mut methods = Vec::new();
     for line in out.lines().skip(2) {
         let cols: Vec<&str> = line.split_whitespace().collect();
-        if line.starts_with("(shared)") {
-            // The shared configuration's code: computed once, its operations counted in the
-            // methods that read it.
+        if line.starts_with("(configuration)") || line.starts_with("(motion)") {
+            // The shared code: computed once, its operations counted in the methods that
+            // read it.
             total += cols
                 .last()
                 .and_then(|b| b.parse::<usize>().ok())

@@ -6,7 +6,12 @@
 //! under their names (`let Configuration { s2, c2, k9, .. } = configuration(p_, q_);`), and adds
 //! only its terms in `q̇` and `q̈`. The configuration function is `#[inline(always)]`, so each
 //! method compiles to just the operations it needs, as if written alone, while the source holds
-//! each expression once.
+//! each expression once. Terms in `q̇` that two methods or more compute (the velocities and
+//! Coriolis accelerations of Newton-Euler, which `C q̇`, `C q̇ + g`, `τ` and the kinetic energy
+//! all need) go the same way into a *motion* function, which also computes the configuration
+//! and hands both over: `let (Configuration { s2, .. }, Motion { v3, .. }) = motion(p_, q_,
+//! qd_);`. A product is left to each method that reads it, which may fuse it into a
+//! multiply-add.
 //!
 //! Within a function, only the nodes the outputs need are emitted, in the arena's order
 //! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
@@ -108,19 +113,22 @@ pub struct Output<'a> {
     pub shape: Shape<'a>,
 }
 
-/// The code shared by all functions: everything that depends on the parameters and `q` alone,
-/// computed once by one inlined function and handed over as a struct.
-pub struct Configuration {
+/// Code shared by several functions, computed by one inlined function and handed over as a
+/// struct: the configuration (what depends on the parameters and `q` alone) and the motion
+/// (what several methods compute from `q̇` too).
+pub struct Shared {
     /// The struct's fields, in order.
     pub fields: Vec<proc_macro2::Ident>,
-    /// The function's body, ending in the struct literal of [`CONFIGURATION_STRUCT`].
+    /// The function's body, ending in the struct literal.
     pub tokens: TokenStream,
 }
 
 /// Everything [`emit`] writes.
 pub struct Emission {
     /// The shared configuration function, if any output needs one.
-    pub configuration: Option<Configuration>,
+    pub configuration: Option<Shared>,
+    /// The shared motion function, if two methods compute the same terms in `q̇`.
+    pub motion: Option<Shared>,
     /// One body per output, in order.
     pub bodies: Vec<Body>,
 }
@@ -129,6 +137,12 @@ pub struct Emission {
 pub const CONFIGURATION_STRUCT: &str = "Configuration";
 /// Name of the function computing it, `configuration(p_, q_)`.
 pub const CONFIGURATION_FN: &str = "configuration";
+/// Name of the struct of terms in `q̇` that several methods share.
+pub const MOTION_STRUCT: &str = "Motion";
+/// Name of the function computing it, `motion(&c_, q_, qd_)`.
+pub const MOTION_FN: &str = "motion";
+/// Name of the local holding a method's configuration when it calls the motion function too.
+pub const CONFIGURATION_LOCAL: &str = "c_";
 /// Name of the argument holding the robot's parameters, `[T; K]` in the order of
 /// [`Equations::fields`].
 pub const PARAMETERS: &str = "p_";
@@ -170,15 +184,37 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
         e.temporary_prefix = "u";
         e.configuration(&boundary, &field_names)
     });
+    // Terms in q̇ (without q̈) that two methods or more compute: written once, in the motion
+    // function, whose fields the methods read.
+    let motion_boundary = shared_motion(eq, &class, outputs);
+    let config_names = |e: &mut Emitter| {
+        e.has_configuration = configuration.is_some();
+        if let Some(c) = &configuration {
+            for (&id, field) in boundary.iter().zip(&c.fields) {
+                let local = local(&field.to_string());
+                e.names[id.index()] = Some(quote!(#local));
+                e.stop[id.index()] = true;
+                e.origin[id.index()] = Origin::Configuration;
+            }
+        }
+    };
+    let motion = (!motion_boundary.is_empty()).then(|| {
+        let mut e = Emitter::new(eq, Some(ctx));
+        e.temporary_prefix = "v";
+        config_names(&mut e);
+        e.motion(&motion_boundary, &field_names)
+    });
     let bodies = outputs
         .iter()
         .map(|o| {
             let mut e = Emitter::new(eq, Some(ctx));
-            if let Some(c) = &configuration {
-                for (&id, field) in boundary.iter().zip(&c.fields) {
+            config_names(&mut e);
+            if let Some(m) = &motion {
+                for (&id, field) in motion_boundary.iter().zip(&m.fields) {
                     let local = local(&field.to_string());
                     e.names[id.index()] = Some(quote!(#local));
                     e.stop[id.index()] = true;
+                    e.origin[id.index()] = Origin::Motion;
                 }
             }
             e.function(&o.shape, o.prefix)
@@ -186,19 +222,66 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
         .collect();
     Emission {
         configuration,
+        motion,
         bodies,
     }
 }
 
-/// What a node depends on: 0 for parameters and constants only, 1 for `q` too, 2 for `q̇` or
-/// `q̈`.
+/// The terms in `q̇` (class 2) that the code of two outputs or more computes, as the nodes the
+/// rest of each output's code reads of them, in the arena's order.
+fn shared_motion(eq: &Equations, class: &[u8], outputs: &[Output]) -> Vec<NodeId> {
+    let e = Emitter::new(eq, None);
+    let n = eq.graph.len();
+    // Per node, how many outputs' code computes it.
+    let mut users = vec![0u32; n];
+    let walk = |outs: Vec<NodeId>, shared: Option<&[u32]>, found: &mut Vec<bool>| {
+        let mut seen = vec![false; n];
+        let mut stack = outs;
+        while let Some(id) = stack.pop() {
+            let i = id.index();
+            if class[i] < 2 || e.is_leaf(id) || std::mem::replace(&mut seen[i], true) {
+                continue;
+            }
+            // A product stays with its user, which may fuse it into a multiply-add.
+            let product = matches!(eq.graph.node(id), Node::Mul(..));
+            if !product && shared.is_some_and(|u| u[i] >= 2 && class[i] == 2) {
+                found[i] = true;
+                continue;
+            }
+            stack.extend(e.operands(id));
+        }
+        seen
+    };
+    let mut unused = vec![false; n];
+    for o in outputs {
+        for (i, seen) in walk(o.shape.outputs(), None, &mut unused)
+            .into_iter()
+            .enumerate()
+        {
+            users[i] += u32::from(seen);
+        }
+    }
+    let mut found = vec![false; n];
+    for o in outputs {
+        walk(o.shape.outputs(), Some(&users), &mut found);
+    }
+    eq.graph
+        .nodes()
+        .filter(|(id, _)| found[id.index()])
+        .map(|(id, _)| id)
+        .collect()
+}
+
+/// What a node depends on: 0 for parameters and constants only, 1 for `q` too, 2 for `q̇`,
+/// 3 for `q̈`.
 fn classes(eq: &Equations) -> Vec<u8> {
     let e = Emitter::new(eq, None);
     let mut class = vec![0u8; eq.graph.len()];
     for (id, node) in eq.graph.nodes() {
         class[id.index()] = match node {
             Node::Var(Var::Param(_)) | Node::Const(_) => 0,
-            Node::Var(Var::Qd(_) | Var::Qdd(_)) => 2,
+            Node::Var(Var::Qd(_)) => 2,
+            Node::Var(Var::Qdd(_)) => 3,
             Node::Var(Var::Q(_)) => 1,
             _ => e
                 .operands(id)
@@ -216,7 +299,7 @@ fn classes(eq: &Equations) -> Vec<u8> {
 }
 
 /// The nodes without `q̇` and `q̈` that the code of `outputs` reads: outputs of class ≤ 1 and
-/// operands of its class-2 nodes, except zero, one and `q_i`, which are written in place.
+/// operands of its class-2 and class-3 nodes, except zero, one and `q_i`, which are written in place.
 fn boundary(eq: &Equations, class: &[u8], outputs: &[NodeId]) -> Vec<NodeId> {
     let e = Emitter::new(eq, None);
     let mut seen = vec![false; eq.graph.len()];
@@ -226,7 +309,7 @@ fn boundary(eq: &Equations, class: &[u8], outputs: &[NodeId]) -> Vec<NodeId> {
         if std::mem::replace(&mut seen[id.index()], true) {
             continue;
         }
-        if class[id.index()] == 2 {
+        if class[id.index()] >= 2 {
             stack.extend(e.operands(id));
         } else if !matches!(eq.graph.node(id), Node::Var(Var::Q(_)))
             && !matches!(eq.graph.node(id), Node::Const(c) if c.is_zero() || c.is_one())
@@ -286,6 +369,17 @@ enum Place {
     Receiver,
 }
 
+/// Where a node read by a function is computed.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Origin {
+    /// In the function itself.
+    Here,
+    /// In the configuration.
+    Configuration,
+    /// In the motion.
+    Motion,
+}
+
 struct Emitter<'a> {
     graph: &'a Graph,
     eq: &'a Equations,
@@ -297,9 +391,14 @@ struct Emitter<'a> {
     names: Vec<Option<TokenStream>>,
     /// Nodes computed elsewhere (the configuration's fields): marking stops there.
     stop: Vec<bool>,
+    /// Which shared function computes a stop node.
+    origin: Vec<Origin>,
     temporaries: usize,
-    /// `t` in a method, `u` in the configuration, whose fields a method binds as locals too.
+    /// `t` in a method, `u` in the configuration and `v` in the motion, whose fields a method
+    /// binds as locals too.
     temporary_prefix: &'static str,
+    /// Whether there is a configuration function (the motion function takes its result).
+    has_configuration: bool,
 }
 
 impl<'a> Emitter<'a> {
@@ -313,8 +412,10 @@ impl<'a> Emitter<'a> {
             needed: vec![false; n],
             names: vec![None; n],
             stop: vec![false; n],
+            origin: vec![Origin::Here; n],
             temporaries: 0,
             temporary_prefix: "t",
+            has_configuration: false,
         }
     }
 
@@ -544,11 +645,7 @@ impl<'a> Emitter<'a> {
 
     /// The body of the configuration function: computes `boundary` and returns it as the
     /// configuration struct, each node under its field name where `field_names` has one.
-    fn configuration(
-        &mut self,
-        boundary: &[NodeId],
-        field_names: &[Option<String>],
-    ) -> Configuration {
+    fn configuration(&mut self, boundary: &[NodeId], field_names: &[Option<String>]) -> Shared {
         let ctx = self.ctx.expect("emission has a context");
         self.mark(boundary);
         let mut statements = Vec::new();
@@ -608,10 +705,109 @@ impl<'a> Emitter<'a> {
             .map(|l| proc_macro2::Ident::new(&l.to_string(), Span::call_site()))
             .collect();
         let ty = proc_macro2::Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-        Configuration {
+        Shared {
             fields,
             tokens: quote!(#(#statements)* #ty { #(#locals),* }),
         }
+    }
+
+    /// The body of the motion function: reads the configuration's fields it needs from `c_`,
+    /// computes `boundary` and returns it as the motion struct.
+    fn motion(&mut self, boundary: &[NodeId], field_names: &[Option<String>]) -> Shared {
+        self.mark(boundary);
+        let is_boundary = {
+            let mut b = vec![false; self.graph.len()];
+            for id in boundary {
+                b[id.index()] = true;
+            }
+            b
+        };
+        let mut statements = self.bind_shared(false);
+        statements.extend(self.joint_variables());
+        for (id, _) in self.graph.nodes() {
+            let i = id.index();
+            if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
+                continue;
+            }
+            if self.uses[i] <= 1 && !is_boundary[i] {
+                continue;
+            }
+            let name = match &field_names[i] {
+                Some(name) => local(name),
+                None => self.temporary(),
+            };
+            statements.push(self.bind(id, name));
+        }
+        let locals: Vec<TokenStream> = boundary
+            .iter()
+            .map(|&id| self.expr(id, Place::Top))
+            .collect();
+        let fields = boundary
+            .iter()
+            .map(|&id| {
+                let name = self.names[id.index()].clone().unwrap_or_default();
+                proc_macro2::Ident::new(&name.to_string(), Span::call_site())
+            })
+            .collect();
+        let ty = proc_macro2::Ident::new(MOTION_STRUCT, Span::call_site());
+        let result = quote!(#ty { #(#locals),* });
+        let c = local(CONFIGURATION_LOCAL);
+        Shared {
+            fields,
+            tokens: if self.has_configuration {
+                quote!(#(#statements)* (#c, #result))
+            } else {
+                quote!(#(#statements)* #result)
+            },
+        }
+    }
+
+    /// The statements binding the shared fields this function reads: in a method,
+    /// `let Configuration { s2, .. } = configuration(p_, q_);` (through a local `c_` when it
+    /// reads the motion too, `let Motion { v3, .. } = motion(&c_, q_, qd_);`); in the motion
+    /// function (`in_method` false), `let Configuration { s2, .. } = *c_;`.
+    fn bind_shared(&self, in_method: bool) -> Vec<TokenStream> {
+        let read = |origin: Origin| -> Vec<TokenStream> {
+            self.graph
+                .nodes()
+                .filter(|(id, _)| {
+                    let i = id.index();
+                    self.stop[i] && self.needed[i] && self.origin[i] == origin
+                })
+                .filter_map(|(id, _)| self.names[id.index()].clone())
+                .collect()
+        };
+        let (config, motion) = (read(Origin::Configuration), read(Origin::Motion));
+        let ty = proc_macro2::Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
+        let c = local(CONFIGURATION_LOCAL);
+        let (p, q, qd) = (local(PARAMETERS), local("q_"), local("qd_"));
+        let mut statements = Vec::new();
+        if !in_method {
+            if self.has_configuration {
+                statements.push(quote!(let #c = #f(#p, #q);));
+                if !config.is_empty() {
+                    statements.push(quote!(let #ty { #(#config,)* .. } = #c;));
+                }
+            }
+            return statements;
+        }
+        if motion.is_empty() {
+            if !config.is_empty() {
+                statements.push(quote!(let #ty { #(#config,)* .. } = #f(#p, #q);));
+            }
+            return statements;
+        }
+        let mty = proc_macro2::Ident::new(MOTION_STRUCT, Span::call_site());
+        let mf = proc_macro2::Ident::new(MOTION_FN, Span::call_site());
+        if self.has_configuration {
+            statements.push(quote!(
+                let (#ty { #(#config,)* .. }, #mty { #(#motion,)* .. }) = #mf(#p, #q, #qd);
+            ));
+        } else {
+            statements.push(quote!(let #mty { #(#motion,)* .. } = #mf(#p, #q, #qd);));
+        }
+        statements
     }
 
     /// A function's body computing `shape`: the configuration's fields it reads, then
@@ -625,19 +821,8 @@ impl<'a> Emitter<'a> {
             output_names.clear();
         }
         let mut statements = Vec::new();
-        // The configuration's fields this function reads, bound under their names.
-        let read: Vec<TokenStream> = self
-            .graph
-            .nodes()
-            .filter(|(id, _)| self.stop[id.index()] && self.needed[id.index()])
-            .filter_map(|(id, _)| self.names[id.index()].clone())
-            .collect();
-        if !read.is_empty() {
-            let f = proc_macro2::Ident::new(CONFIGURATION_FN, Span::call_site());
-            let ty = proc_macro2::Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-            let (p, q) = (local(PARAMETERS), local("q_"));
-            statements.push(quote!(let #ty { #(#read,)* .. } = #f(#p, #q);));
-        }
+        // The shared fields this function reads, bound under their names.
+        statements.extend(self.bind_shared(true));
         statements.extend(self.joint_variables());
         for (id, _) in self.graph.nodes() {
             let i = id.index();

@@ -60,7 +60,9 @@ pub struct Generated {
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
     /// The configuration function's struct fields and body, if any method reads it.
-    pub configuration: Option<emit::Configuration>,
+    pub configuration: Option<emit::Shared>,
+    /// The motion function's struct fields and body, if two methods share terms in `q̇`.
+    pub motion: Option<emit::Shared>,
     /// The methods, in the trait's order.
     pub methods: Vec<Method>,
 }
@@ -111,6 +113,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
         dof: eq.dof,
         fields,
         configuration: emission.configuration,
+        motion: emission.motion,
         methods,
     }
 }
@@ -157,6 +160,30 @@ impl Generated {
                 }
             }
         });
+        let motion = self.motion.as_ref().map(|m| {
+            let ty = syn::Ident::new(emit::MOTION_STRUCT, proc_macro2::Span::call_site());
+            let f = syn::Ident::new(emit::MOTION_FN, proc_macro2::Span::call_site());
+            let fields = &m.fields;
+            let body = &m.tokens;
+            let qd = emit::local("qd_");
+            // With a configuration, the motion function computes it too and hands both over.
+            let ret = match &self.configuration {
+                Some(_) => {
+                    let c = syn::Ident::new(emit::CONFIGURATION_STRUCT, proc_macro2::Span::call_site());
+                    quote!((#c<T>, #ty<T>))
+                }
+                None => quote!(#ty<T>),
+            };
+            quote! {
+                /// What several methods compute from `q̇` too, computed once.
+                pub(super) struct #ty<T> { #(#fields: T),* }
+                // Inlined into each method, which keeps of it only what it reads.
+                #[inline(always)]
+                pub(super) fn #f<T: #krate::Real>(#p: &[T; #k], #q: &[T; #n], #qd: &[T; #n]) -> #ret {
+                    #body
+                }
+            }
+        });
         let bodies = self.methods.iter().map(|m| {
             let name = syn::Ident::new(m.name, proc_macro2::Span::call_site());
             let (args, ret) = signature(m.name, n);
@@ -190,6 +217,7 @@ impl Generated {
             #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
             mod #module {
                 #configuration
+                #motion
                 #(#bodies)*
             }
             impl #impl_generics #ident #ty_generics #where_clause {
