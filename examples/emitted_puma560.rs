@@ -62,54 +62,47 @@ mod __dynamics {
         k34: T,
         k35: T,
         k36: T,
-        u1: T,
+        u2: T,
         k37: T,
         k40: T,
         m4_4: T,
-        u5: T,
+        u6: T,
         k42: T,
         k43: T,
         k44: T,
         m3_4: T,
         m3_3: T,
-        u32: T,
         m2_3: T,
         k47: T,
         m2_2: T,
-        u54: T,
-        u55: T,
+        u56: T,
+        u57: T,
         m1_2: T,
         m1_1: T,
-        u56: T,
-        u60: T,
-        m1_3: T,
-        u63: T,
+        u58: T,
+        u62: T,
         m2_4: T,
-        u70: T,
-        u72: T,
-        m1_4: T,
-        u74: T,
+        u68: T,
         m3_5: T,
-        u83: T,
+        u76: T,
         m2_5: T,
-        u94: T,
-        u96: T,
-        m1_5: T,
         m4_6: T,
         m2_6: T,
-        u103: T,
+        u89: T,
+        u90: T,
+        m1_3: T,
+        m1_4: T,
+        m1_5: T,
         m1_6: T,
         g2: T,
-        u104: T,
-        u105: T,
         g3: T,
         g4: T,
         g5: T,
-        u107: T,
-        u108: T,
+        u94: T,
+        u95: T,
         k53: T,
         k54: T,
-        u109: T,
+        u96: T,
         k57: T,
         k58: T,
         k60: T,
@@ -128,38 +121,42 @@ mod __dynamics {
         k73: T,
         k74: T,
         p: T,
-        k78: T,
+        u102: T,
+        u103: T,
+        u110: T,
+        u111: T,
         u112: T,
         u113: T,
-        u114: T,
+        u115: T,
         u117: T,
-        u119: T,
-        u120: T,
-        u122: T,
+        k81: T,
         u124: T,
-        u132: T,
-        u133: T,
-        u135: T,
-        u137: T,
+        u129: T,
+        u130: T,
+        u131: T,
+        u134: T,
+        u136: T,
         u138: T,
+        u139: T,
         u141: T,
         u142: T,
+        u143: T,
         u145: T,
+        u146: T,
+        u148: T,
         u149: T,
-        u150: T,
-        k81: T,
-        u159: T,
+        u151: T,
+        u153: T,
+        u154: T,
+        u157: T,
+        u161: T,
         u162: T,
-        u170: T,
-        u171: T,
-        u173: T,
-        u175: T,
-        u176: T,
-        u178: T,
-        u179: T,
-        u180: T,
-        u181: T,
-        u182: T,
+        u163: T,
+        u165: T,
+        u166: T,
+        u167: T,
+        u168: T,
+        u169: T,
         k83: T,
         k84: T,
         k85: T,
@@ -246,7 +243,7 @@ mod __dynamics {
         let k75: T = T::from_f64(-154.550796435);
         let k76: T = T::from_f64(-37.2347379);
         let k77: T = T::from_f64(-0.24892875);
-        let k78: T = T::from_f64(-0.8636);
+        let k78: T = T::from_f64(-4.0);
         let k79: T = T::from_f64(0.000116928);
         let k80: T = T::from_f64(-0.000116928);
         let k81: T = T::from_f64(0.00040432);
@@ -260,261 +257,246 @@ mod __dynamics {
             q_[3],
             q_[4],
         ]);
-        let u1 = s5 * c5;
-        let u2 = k38.mul_add(s5 * s5, k17);
-        let u3 = k39 - u2;
-        let u4 = k6 + u2;
+        let u1 = s5 * s5;
+        let u2 = s5 * c5;
+        let u3 = k38.mul_add(u1, k17);
+        let u4 = c5 * c5 - u1;
+        let u5 = k6 + u3;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k22 + u3;
-        let u5 = c4 * s5;
-        let u6 = s4 * s5;
-        let u7 = s4 * s4;
-        let u8 = s4 * c4;
-        let u9 = k40 + u4;
-        let u10 = u4 - u7 * u9;
-        let u11 = k20 + u4 - u10;
-        let u12 = u8 * u9;
-        let u13 = c4 * u1;
+        let m4_4 = k22 + (k39 - u3);
+        let u6 = c4 * s5;
+        let u7 = s4 * s5;
+        let u8 = s4 * s4;
+        let u9 = s4 * c4;
+        let u10 = k40 + u5;
+        let u11 = u5 - u8 * u10;
+        let u12 = u9 * u10;
+        let u13 = c4 * u2;
         let u14 = k37 * u13;
-        let u15 = k41 * u5;
+        let u15 = k41 * u6;
         let u16 = k42 * c5;
         let u17 = m4_4 + u15;
         let u18 = u15 + u17;
         let u19 = u15 + u16;
-        let u20 = k44 * u5;
-        let u21 = k43 * u6;
-        let u22 = k41 * u6 - u12;
-        let u23 = k42 * u6;
+        let u20 = k44 * u6;
+        let u21 = k43 * u7;
+        let u22 = k41 * u7 - u12;
+        let u23 = k42 * u7;
         /// D34 = D43 (6.43)
-        let m3_4 = k44.mul_add(u6, k38 * (s4 * u1));
-        let u24 = k19.mul_add(u5, k24);
+        let m3_4 = k44.mul_add(u7, k38 * (s4 * u2));
+        let u24 = k19.mul_add(u6, k24);
         let u25 = k16.mul_add(c5, k27);
-        let u26 = k29 + (u16 + (u10 + u16));
+        let u26 = k29 + (u16 + (u11 + u16));
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k28 + (u19 + (u11 + u19));
+        let m3_3 = k28 + (u19 + (k20 + u5 - u11 + u19));
         let u27 = k26 + (u14 - k43.mul_add(c5, u20));
         let u28 = k14 + m3_4;
-        let u29 = c3 * u24 - s3 * u25;
-        let u30 = s3 * u24;
-        let u31 = c3 * u25;
-        let u32 = u30 + u31;
-        let u33 = s3 * s3;
-        let u34 = s3 * c3;
-        let u35 = u26 - u18;
-        let u36 = k45.mul_add(u27 * u34, u26 - u33 * u35);
-        let u37 = u18 + u26 - u36;
-        let u38 = c3 * c3 - u33;
-        let u39 = u27.mul_add(u38, u34 * u35);
-        let u40 = c3 * u22 - s3 * u28;
-        let u41 = c3.mul_add(u28, s3 * u22);
-        let u42 = k2 * u29;
-        let u43 = k46 * u6;
-        let u44 = u42 + u43;
-        let u45 = u44 + (u37 + u44);
+        let u29 = c3 * u24;
+        let u30 = s3 * u25;
+        let u31 = u29 - u30;
+        let u32 = s3 * u24;
+        let u33 = c3 * u25;
+        let u34 = u32 + u33;
+        let u35 = s3 * s3;
+        let u36 = s3 * c3;
+        let u37 = u26 - u18;
+        let u38 = u27 * u36;
+        let u39 = k45.mul_add(u38, u26 - u35 * u37);
+        let u40 = c3 * c3 - u35;
+        let u41 = u27.mul_add(u40, u36 * u37);
+        let u42 = c3 * u22 - s3 * u28;
+        let u43 = s3 * u22;
+        let u44 = c3 * u28;
+        let u45 = k2 * u31;
+        let u46 = k46 * u7;
+        let u47 = u45 + u46;
+        let u48 = u47 + (u18 + u26 - u39 + u47);
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + u42;
-        let u46 = k23 * u32;
-        let u47 = k33 + (u43 + (u36 + u43));
+        let m2_3 = m3_3 + u45;
+        let u49 = k33 + (u46 + (u39 + u46));
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k31 + (u42 + m2_3);
-        let u48 = k10 + (u39 + u46);
-        let u49 = k32 + (u40 - k3.mul_add(u29, u23));
-        let u50 = k12 + k47.mul_add(u32, u41);
-        let u51 = s2 * s2;
-        let u52 = s2 * c2;
-        let u53 = u47 - u45;
-        let u54 = u48.mul_add(c2 * c2 - u51, u52 * u53);
-        let u55 = c2 * u49 - s2 * u50;
+        let m2_2 = k31 + (u45 + m2_3);
+        let u50 = k10 + k23.mul_add(u34, u41);
+        let u51 = k32 + (u42 - k3.mul_add(u31, u23));
+        let u52 = k12 + k47.mul_add(u34, u43 + u44);
+        let u53 = s2 * s2;
+        let u54 = s2 * c2;
+        let u55 = u49 - u48;
+        let u56 = u50.mul_add(c2 * c2 - u53, u54 * u55);
+        let u57 = c2 * u51 - s2 * u52;
         /// D12 = D21 (6.43)
-        let m1_2 = c2.mul_add(u50, s2 * u49);
+        let m1_2 = c2.mul_add(u52, s2 * u51);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k34 + (u45 + u47 - k45.mul_add(u48 * u52, u47 - u51 * u53));
-        let u56 = -u31 - u30;
-        let u57 = k47.mul_add(u29, u40);
-        let u58 = k3.mul_add(u56, u41);
-        let u59 = c2 * u57;
-        let u60 = u59 - s2 * u58;
-        /// D13 = D31 (6.43)
-        let m1_3 = c2.mul_add(u58, s2 * u57);
-        let u61 = k42 * u5;
-        let u62 = u14 + u61;
-        let u63 = c3 * u6;
-        let u64 = s3 * u6;
-        let u65 = c3.mul_add(u17, s3 * u62);
-        let u66 = k48 * u64;
-        let u67 = k46 * u63;
-        let u68 = c3 * u62 - s3 * u17 + u66;
-        let u69 = u65 + (u20 + u67);
+        let m1_1 = k34 + (u48 + u49 - k45.mul_add(u50 * u54, u49 - u53 * u55));
+        let u58 = -u33 - u32;
+        let u59 = s2 * u58;
+        let u60 = k42 * u6;
+        let u61 = u14 + u60;
+        let u62 = c3 * u7;
+        let u63 = s3 * u7;
+        let u64 = k46 * u62;
+        let u65 = u20 + u64;
         /// D24 = D42 (6.43)
-        let m2_4 = k42.mul_add(u64, m3_4);
-        let u70 = c2.mul_add(u64, s2 * u63);
-        let u71 = c2 * u68;
-        let u72 = u71 - s2 * u69;
-        /// D14 = D41 (6.43)
-        let m1_4 = c2.mul_add(u69, s2 * u68);
-        let u73 = c4 * c5;
-        let u74 = s4 * c5;
-        let u75 = k20 * c4;
-        let u76 = k42 * u74;
-        let u77 = k41 * s5;
-        let u78 = k44 * u73;
-        let u79 = k42 * u73;
-        let u80 = k20.mul_add(s4, u76);
+        let m2_4 = k42.mul_add(u63, m3_4);
+        let u66 = c2 * u63;
+        let u67 = c4 * c5;
+        let u68 = s4 * c5;
+        let u69 = k20 * c4;
+        let u70 = k42 * u68;
+        let u71 = k41 * s5;
+        let u72 = k44 * u67;
+        let u73 = k42 * u67;
+        let u74 = k20.mul_add(s4, u70);
         /// D35 = D53 (6.43)
-        let m3_5 = u75 + (u77 + u79);
-        let u81 = c3 * u73;
-        let u82 = s3 * s5;
-        let u83 = u81 - u82;
-        let u84 = s3 * u73;
-        let u85 = c3.mul_add(s5, u84);
-        let u86 = s3 * u74;
-        let u87 = c3 * u74;
-        let u88 = k41.mul_add(u87, s3 * u80);
-        let u89 = k46 * u85;
-        let u90 = k48 * u83;
-        let u91 = k44 * u74;
-        let u92 = k43.mul_add(u86, c3 * u80) + u89;
-        let u93 = u88 + (u90 + u91);
+        let m3_5 = u69 + (u71 + u73);
+        let u75 = s3 * u68;
+        let u76 = c3 * u67 - s3 * s5;
+        let u77 = s3 * u67;
+        let u78 = c3 * s5;
+        let u79 = u77 + u78;
+        let u80 = k48 * u76;
+        let u81 = k44 * u68;
+        let u82 = u80 + u81;
         /// D25 = D52 (6.43)
-        let m2_5 = k44.mul_add(u85, m3_5);
-        let u94 = c2.mul_add(u85, s2 * u83);
-        let u95 = c2 * u92;
-        let u96 = u95 - s2 * u93;
-        /// D15 = D51 (6.43)
-        let m1_5 = c2.mul_add(u93, s2 * u92);
+        let m2_5 = k44.mul_add(u79, m3_5);
+        let u83 = s2 * u76;
+        let u84 = c2 * u79;
         /// D46 = D64 (6.43)
         let m4_6 = k7 * c5;
         /// D26 = D62 (6.43)
-        let m2_6 = k7 * u6;
-        let u97 = c3 * u5;
-        let u98 = s3.mul_add(c5, u97);
-        let u99 = s3 * u5;
-        let u100 = u99 - c3 * c5;
-        let u101 = c2 * u98;
-        let u102 = s2 * u100;
-        let u103 = u101 - u102;
+        let m2_6 = k7 * u7;
+        let u85 = c3 * u6;
+        let u86 = s3 * u6;
+        let u87 = s2 * c3;
+        let u88 = c2 * s3;
+        let u89 = u87 + u88;
+        let u90 = c2 * c3 - s2 * s3;
+        /// D13 = D31 (6.43)
+        let m1_3 = k47.mul_add(s2 * u31 - c2 * u58, u28.mul_add(u90, u22 * u89));
+        /// D14 = D41 (6.43)
+        let m1_4 = c2.mul_add(u65, k48 * (s2 * u63)) + u17.mul_add(u90, u61 * u89);
+        /// D15 = D51 (6.43)
+        let m1_5 = c2.mul_add(u82, k46 * (s2 * u79)) + k41.mul_add(u68 * u90, u74 * u89);
+        let u91 = c5 * u90;
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * c2.mul_add(u100, s2 * u98);
+        let m1_6 = k36 * (u6 * u89 - u91);
         /// D2 (6.45), gravity and spring
-        let g2 = k49 * (s2 * (k8 + u32) - c2 * (k30 + u29));
-        let u104 = c2.mul_add(s3, s2 * c3);
-        let u105 = c2 * c3 - s2 * s3;
+        let g2 = k49 * (s2 * (k8 + u34) - c2 * (k30 + u31));
         /// D3 (6.45), gravity and spring
-        let g3 = k49 * (u25 * u104 - u24 * u105);
-        let u106 = c4 * u104;
+        let g3 = k49 * (u25 * u89 - u24 * u90);
+        let u92 = c4 * u89;
         /// D4 (6.45), gravity and spring
-        let g4 = k52 * (s5 * (s4 * u104));
+        let g4 = k52 * (s5 * (s4 * u89));
+        let u93 = s5 * u90;
         /// D5 (6.45), gravity and spring
-        let g5 = k51 * s5.mul_add(u105, c5 * u106);
-        let u107 = k50 * s2;
-        let u108 = k50 * c2;
-        let u109 = k56.mul_add(s2, k55 * c2);
+        let g5 = k51 * c5.mul_add(u92, u93);
+        let u94 = k50 * s2;
+        let u95 = k50 * c2;
+        let u96 = k56.mul_add(s2, k55 * c2);
         /// potential energy
         let p = -k51
             .mul_add(
-                c5 * u105 - s5 * u106,
-                k75 + k56.mul_add(c2, k76 * s2) + k59.mul_add(u105, k77 * u104),
+                u91 - s5 * u92,
+                k75 + k56.mul_add(c2, k76 * s2) + k59.mul_add(u90, k77 * u89),
             );
-        let u110 = k45 * u39;
-        let u111 = u46 + k35.mul_add(u39, u46);
-        let u112 = u110 + u111
-            - k45.mul_add(u52 * k23.mul_add(u29, u36 - u37), u110 - u51 * (u110 - u111));
-        let u113 = s2.mul_add(k3 * u32 - u41, u59);
-        let u114 = s2.mul_add(k47 * u56 - u41, u59);
-        let u115 = k48 * u63;
-        let u116 = k42 * u63;
-        let u117 = s2.mul_add(u115 - u65, u71);
-        let u118 = k44 * u83;
-        let u119 = s2.mul_add(k46 * u83 - u88, u95);
-        let u120 = u102 - u101;
-        let u121 = k45 * u12;
-        let u122 = u21 + k35.mul_add(u12, u21);
-        let u123 = u15 - (u10 - u11);
-        let u124 = k38.mul_add(u13, u20);
-        let u125 = k80.mul_add(u6, u121);
-        let u126 = k45.mul_add(m3_4 * u34, u121 - u33 * u125);
-        let u127 = c3 * u123 - s3 * u124;
-        let u128 = k46 * u5;
-        let u129 = u128 + (u126 + u128);
-        let u130 = u116 + u128;
-        let u131 = u130 + (k79.mul_add(u6, u121) - u126 + u130);
-        let u132 = u116 + u122;
-        let u133 = u116 + u132;
-        let u134 = k44 * u64;
-        let u135 = u129 + u131
+        let u97 = k45 * u41;
+        let u98 = k2 * u58;
+        let u99 = k42 * u62;
+        let u100 = k44 * u76;
+        let u101 = k45 * u12;
+        let u102 = u21 + k35.mul_add(u12, u21);
+        let u103 = k38.mul_add(u13, u20);
+        let u104 = k80.mul_add(u7, u101);
+        let u105 = k45.mul_add(m3_4 * u36, u101 - u35 * u104);
+        let u106 = k46 * u6;
+        let u107 = u106 + (u105 + u106);
+        let u108 = u99 + u106;
+        let u109 = u108 + (k79.mul_add(u7, u101) - u105 + u108);
+        let u110 = u99 + u102;
+        let u111 = u99 + u110;
+        let u112 = u107 + u109
             - k45
                 .mul_add(
-                    u52 * (m3_4.mul_add(u38, u34 * u125) + u134),
-                    u129 - u51 * (u129 - u131),
+                    u54 * k44.mul_add(u63, m3_4.mul_add(u40, u36 * u104)),
+                    u107 - u53 * (u107 - u109),
                 );
-        let u136 = c2 * (u66 + c3.mul_add(u124, s3 * u123));
-        let u137 = s2.mul_add(u127 - (u61 + u67), u136);
-        let u138 = s2.mul_add(u115 + u127, u136);
-        let u139 = k41 * u64;
-        let u140 = k43 * u63;
-        let u141 = k42.mul_add(u99, u124);
-        let u142 = c2
-            .mul_add(
-                s3.mul_add(m3_4, u140) + k46.mul_add(u97, u23),
-                s2 * k48.mul_add(u99, c3.mul_add(m3_4, u139)),
-            );
-        let u143 = k41 * u73;
-        let u144 = u75 + u79;
-        let u145 = k40.mul_add(s4, u91);
-        let u146 = k48 * u86;
-        let u147 = k46.mul_add(u87, u78);
-        let u148 = k42 * u86;
-        let u149 = u145 + u148;
-        let u150 = c2
-            .mul_add(
-                k41.mul_add(u81, s3 * u144) + u147,
-                s2 * (k43.mul_add(u84, c3 * u144) + u146),
-            );
-        let u151 = u2 - u3;
-        let u152 = u1 * u7;
-        let u153 = c4 * u151;
-        let u154 = k44 * s5;
-        let u155 = u154 + k82.mul_add(u1 - u152, u154);
-        let u156 = k81.mul_add(u1, u143);
-        let u157 = u143 + u156;
-        let u158 = u143 + u154;
-        let u159 = u158 + k82.mul_add(u152, u158);
-        let u160 = u153 - (u77 + u78);
-        let u161 = k81.mul_add(u1 * u8, k41 * u74);
-        let u162 = u91 - s4 * u151;
-        let u163 = u155 - u157;
-        let u164 = k45.mul_add(u34 * u160, u155 - u33 * u163);
-        let u165 = c3 * u161 - s3 * u162;
-        let u166 = k46 * u74;
-        let u167 = u166 + (u164 + u166);
-        let u168 = u118 + u166;
-        let u169 = u168 + (u155 + u157 - u164 + u168);
-        let u170 = u118 + (u118 + u159);
-        let u171 = u167 + u169
+        let u113 = k42.mul_add(u86, u103);
+        let u114 = k41 * u67;
+        let u115 = k40.mul_add(s4, u81);
+        let u116 = k42 * u75;
+        let u117 = u115 + u116;
+        let u118 = u2 * u8;
+        let u119 = k44 * s5;
+        let u120 = u119 + k82.mul_add(u2 - u118, u119);
+        let u121 = k81.mul_add(u2, u114);
+        let u122 = u114 + u121;
+        let u123 = u114 + u119;
+        let u124 = u123 + k82.mul_add(u118, u123);
+        let u125 = k81.mul_add(u2 * u9, k41 * u68);
+        let u126 = u120 - u122;
+        let u127 = k46 * u68;
+        let u128 = u100 + u127;
+        let u129 = u100 + u124;
+        let u130 = u100 + u129;
+        let u131 = k41.mul_add(c5, u20);
+        let u132 = -u87 - u88;
+        let u133 = u28.mul_add(u132, u22 * u90);
+        let u134 = k47.mul_add(c2.mul_add(u31, u59), u133);
+        let u135 = u17.mul_add(u132, u61 * u90);
+        let u136 = k48 * u66 - s2 * u65 + u135;
+        let u137 = k41.mul_add(u68 * u132, u74 * u90);
+        let u138 = k46 * u84 - s2 * u82 + u137;
+        let u139 = u6 * u90 - c5 * u132;
+        let u140 = u98 + k35.mul_add(u41, u98);
+        let u141 = u97 + u140
             - k45
                 .mul_add(
-                    u52 * k42.mul_add(u85, u38.mul_add(u160, u34 * u163)),
-                    u167 - u51 * (u167 - u169),
+                    u54 * k23.mul_add(u31, k78.mul_add(u38, u37 * u40)),
+                    u97 - u53 * (u97 - u140),
                 );
-        let u172 = c2 * (u89 + c3.mul_add(u162, s3 * u161));
-        let u173 = s2.mul_add(u165 - (u76 + u90), u172);
-        let u174 = u82 - u81;
-        let u175 = k42.mul_add(u174, u159);
-        let u176 = s2.mul_add(k48.mul_add(u174, u165), u172);
-        let u177 = u79 + u153;
-        let u178 = u148 + u162;
-        let u179 = c2
+        let u142 = s2.mul_add(k47.mul_add(u58, -u43 - u44), c2 * k47.mul_add(u31, u42));
+        let u143 = k47.mul_add(u59 - c2 * (u30 - u29), u133);
+        let u144 = k48 * s2.mul_add(u62, u66);
+        let u145 = u135 + u144;
+        let u146 = k46.mul_add(u83 - c2 * (-u77 - u78), u137);
+        let u147 = u15 - u10 * (c4 * c4 - u8);
+        let u148 = c2
             .mul_add(
-                u147 + c3.mul_add(u156, s3 * u177),
-                s2 * (u146 + (c3 * u177 - s3 * u156)),
+                k48.mul_add(u63, s3.mul_add(u147, c3 * u103)),
+                s2 * (c3 * u147 - s3 * u103 - (u60 + u64)),
             );
-        let u180 = k41.mul_add(c5, u20);
-        let u181 = k42.mul_add(u100, u180);
-        let u182 = c2
+        let u149 = u144 + u90.mul_add(u103, u89 * u147);
+        let u150 = k43 * (u7 * u90);
+        let u151 = c2.mul_add(k46.mul_add(u85, u23), k48 * (s2 * u86))
+            + m3_4.mul_add(u89, u150);
+        let u152 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
+        let u153 = u152 + k41.mul_add(u67 * u90, u89 * (u69 + u73));
+        let u154 = u7 * u89;
+        let u155 = k37 * (c4 * u4);
+        let u156 = u155 - (u71 + u72);
+        let u157 = k38.mul_add(s4 * u4, u81);
+        let u158 = k45.mul_add(u36 * u156, u120 - u35 * u126);
+        let u159 = u127 + (u127 + u158);
+        let u160 = u128 + (u128 + (u120 + u122 - u158));
+        let u161 = u159 + u160
+            - k45
+                .mul_add(
+                    u54 * k42.mul_add(u79, u40.mul_add(u156, u36 * u126)),
+                    u159 - u53 * (u159 - u160),
+                );
+        let u162 = c2
             .mul_add(
-                u134 + u140 + k46.mul_add(u98, u23),
-                s2 * k48.mul_add(u100, k44.mul_add(u63, u139)),
+                k46.mul_add(u79, c3.mul_add(u157, s3 * u125)),
+                s2 * (c3 * u125 - s3 * u157 - (u70 + u80)),
             );
+        let u163 = u116 + u157;
+        let u164 = c3 * c5 - u86;
+        let u165 = k44.mul_add(u164, u131);
+        let u166 = k46.mul_add(u83 + u84, u90.mul_add(u157, u89 * u125));
+        let u167 = u152 + u90.mul_add(u121, u89 * (u73 + u155));
+        let u168 = c2.mul_add(k48.mul_add(-u85 - s3 * c5, u23), k46 * (s2 * u164))
+            + k44.mul_add(u154, u150);
+        let u169 = u67.mul_add(u89, u93);
         Configuration {
             k1,
             s2,
@@ -558,54 +540,47 @@ mod __dynamics {
             k34,
             k35,
             k36,
-            u1,
+            u2,
             k37,
             k40,
             m4_4,
-            u5,
+            u6,
             k42,
             k43,
             k44,
             m3_4,
             m3_3,
-            u32,
             m2_3,
             k47,
             m2_2,
-            u54,
-            u55,
+            u56,
+            u57,
             m1_2,
             m1_1,
-            u56,
-            u60,
-            m1_3,
-            u63,
+            u58,
+            u62,
             m2_4,
-            u70,
-            u72,
-            m1_4,
-            u74,
+            u68,
             m3_5,
-            u83,
+            u76,
             m2_5,
-            u94,
-            u96,
-            m1_5,
             m4_6,
             m2_6,
-            u103,
+            u89,
+            u90,
+            m1_3,
+            m1_4,
+            m1_5,
             m1_6,
             g2,
-            u104,
-            u105,
             g3,
             g4,
             g5,
-            u107,
-            u108,
+            u94,
+            u95,
             k53,
             k54,
-            u109,
+            u96,
             k57,
             k58,
             k60,
@@ -624,38 +599,42 @@ mod __dynamics {
             k73,
             k74,
             p,
-            k78,
+            u102,
+            u103,
+            u110,
+            u111,
             u112,
             u113,
-            u114,
+            u115,
             u117,
-            u119,
-            u120,
-            u122,
+            k81,
             u124,
-            u132,
-            u133,
-            u135,
-            u137,
+            u129,
+            u130,
+            u131,
+            u134,
+            u136,
             u138,
+            u139,
             u141,
             u142,
+            u143,
             u145,
+            u146,
+            u148,
             u149,
-            u150,
-            k81,
-            u159,
+            u151,
+            u153,
+            u154,
+            u157,
+            u161,
             u162,
-            u170,
-            u171,
-            u173,
-            u175,
-            u176,
-            u178,
-            u179,
-            u180,
-            u181,
-            u182,
+            u163,
+            u165,
+            u166,
+            u167,
+            u168,
+            u169,
             k83,
             k84,
             k85,
@@ -749,8 +728,8 @@ mod __dynamics {
             k43,
             k44,
             k47,
-            u104,
-            u105,
+            u89,
+            u90,
             k53,
             k54,
             k57,
@@ -787,8 +766,8 @@ mod __dynamics {
         let v16 = qd2 + qd3;
         let v17 = v16 * v16;
         let v18 = -(c4 * v16);
-        let v19 = qd1 * u104;
-        let v20 = qd1 * u105;
+        let v19 = u89 * qd1;
+        let v20 = u90 * qd1;
         let v21 = v16 * v20;
         let v22 = v16 * v19;
         let v23 = v19 * v19;
@@ -915,14 +894,14 @@ mod __dynamics {
             m2_2,
             m1_2,
             m1_1,
-            m1_3,
             m2_4,
-            m1_4,
             m3_5,
             m2_5,
-            m1_5,
             m4_6,
             m2_6,
+            m1_3,
+            m1_4,
+            m1_5,
             m1_6,
             ..
         } = configuration(p_, q_);
@@ -948,208 +927,196 @@ mod __dynamics {
             k7,
             k35,
             k36,
-            u1,
+            u2,
             k37,
-            u5,
+            u6,
             k42,
             k44,
-            u32,
-            u54,
-            u55,
             u56,
-            u60,
-            u63,
-            u70,
-            u72,
-            u74,
-            u83,
-            u94,
-            u96,
+            u57,
+            u58,
+            u62,
+            u68,
+            u76,
+            k64,
+            u102,
             u103,
-            k78,
+            u110,
+            u111,
             u112,
             u113,
-            u114,
+            u115,
             u117,
-            u119,
-            u120,
-            u122,
+            k81,
             u124,
-            u132,
-            u133,
-            u135,
-            u137,
+            u129,
+            u130,
+            u131,
+            u134,
+            u136,
             u138,
+            u139,
             u141,
             u142,
+            u143,
             u145,
+            u146,
+            u148,
             u149,
-            u150,
-            k81,
-            u159,
+            u151,
+            u153,
+            u154,
+            u157,
+            u161,
             u162,
-            u170,
-            u171,
-            u173,
-            u175,
-            u176,
-            u178,
-            u179,
-            u180,
-            u181,
-            u182,
+            u163,
+            u165,
+            u166,
+            u167,
+            u168,
+            u169,
             k83,
             k84,
             k85,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = u55 * qd2;
-        let t2 = qd4 * u142;
-        let t3 = k2 * (u56 * qd3);
-        let t4 = qd4 * u141;
-        let t5 = u103 * qd1;
-        /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd5.mul_add(u159, qd4 * u122);
-        let t6 = qd4 * u124;
-        let t7 = qd5 * u180;
-        /// C44 = sum of D44k qd_k (6.44)
-        let cor4_4 = k37 * (u1 * qd5);
-        let t8 = s5 * qd5;
-        let t9 = s5.mul_add(qd4, u94 * qd1 - u74 * qd2 - u74 * qd3);
-        /// C56 = sum of D56k qd_k (6.44)
-        let cor5_6 = k84 * t9;
-        /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k83 * t9;
-        let t10 = k36
-            .mul_add(
-                u103 * qd6,
-                u96
-                    .mul_add(
-                        qd5,
-                        u72.mul_add(qd4, u60.mul_add(qd3, k35.mul_add(u54 * qd1, t1))),
-                    ),
-            );
-        let t11 = k7 * (u5 * qd6);
-        let t12 = k7 * (u74 * qd6);
-        let t13 = u74.mul_add(qd5, u5 * qd4);
-        /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k84 * (t5 + t13);
-        /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k84 * (t13 - t5);
-        let t14 = qd4.mul_add(u145, t7);
-        let t15 = qd3 * u114;
-        let t16 = qd5 * u182;
+        let t1 = u57 * qd2;
+        let t2 = qd3 * u143;
+        let t3 = qd4 * u151;
+        let t4 = qd5 * u168;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k83 * u94.mul_add(qd5, u103 * qd2 - qd3 * u120 - u70 * qd4);
-        let t17 = qd5 * u181;
-        let t18 = qd1 * u120;
-        let t19 = u5.mul_add(qd3, u70.mul_add(qd1, u5 * qd2));
+        let cor1_6 = k83 * qd5.mul_add(u169, qd3.mul_add(u139, qd2 * u139) - qd4 * u154);
+        let t5 = u58 * qd3;
+        let t6 = k2 * t5;
+        let t7 = qd4 * u113;
+        let t8 = qd5 * u165;
+        let t9 = qd1 * u139;
+        /// C33 = sum of D33k qd_k (6.44)
+        let cor3_3 = k1 * qd5.mul_add(u124, qd4 * u102);
+        let t10 = qd4 * u103;
+        let t11 = qd5 * u131;
+        /// C44 = sum of D44k qd_k (6.44)
+        let cor4_4 = k37 * (u2 * qd5);
+        let t12 = u6.mul_add(qd3, u6.mul_add(qd2, qd1 * u154));
+        let t13 = s5 * qd5;
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k83 * (t8 + t19);
+        let cor4_6 = k83 * (t12 + t13);
+        let t14 = s5.mul_add(qd4, qd1 * u169 - u68 * qd2 - u68 * qd3);
+        /// C56 = sum of D56k qd_k (6.44)
+        let cor5_6 = k84 * t14;
+        /// C65 = sum of D65k qd_k (6.44)
+        let cor6_5 = k83 * t14;
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * qd5.mul_add(u171, qd4.mul_add(u135, qd3.mul_add(u112, k35 * (u54 * qd2))));
-        let t20 = qd5.mul_add(u173, qd4.mul_add(u137, qd3.mul_add(u113, t1)));
+            * qd5.mul_add(u161, qd4.mul_add(u112, k35.mul_add(u56 * qd2, qd3 * u141)));
+        let t15 = qd5.mul_add(u162, qd4.mul_add(u148, qd3.mul_add(u142, t1)));
+        let t16 = k36 * (qd6 * u139);
+        let t17 = qd5
+            .mul_add(
+                u138,
+                qd4.mul_add(u136, qd3.mul_add(u134, k35.mul_add(u56 * qd1, t1))),
+            ) + t16;
         /// C12 = sum of D12k qd_k (6.44)
-        let cor1_2 = k1 * (t10 + t20);
+        let cor1_2 = k1 * (t15 + t17);
         /// C21 = sum of D21k qd_k (6.44)
-        let cor2_1 = k1 * (t20 - t10);
-        let t21 = qd5.mul_add(u176, qd4.mul_add(u138, u60.mul_add(qd2, t15)));
-        let t22 = k7
-            .mul_add(
-                qd6 * u120,
-                qd5.mul_add(u119, qd4.mul_add(u117, t15 + qd2.mul_add(u113, qd1 * u112))),
-            );
+        let cor2_1 = k1 * (t15 - t17);
+        let t18 = qd5.mul_add(u166, qd4.mul_add(u149, qd2.mul_add(u134, t2)));
+        let t19 = t16
+            + qd5.mul_add(u146, qd4.mul_add(u145, t2 + qd2.mul_add(u142, qd1 * u141)));
         /// C13 = sum of D13k qd_k (6.44)
-        let cor1_3 = k1 * (t21 + t22);
+        let cor1_3 = k1 * (t18 + t19);
         /// C31 = sum of D31k qd_k (6.44)
-        let cor3_1 = k1 * (t21 - t22);
-        let t23 = qd5.mul_add(u179, t2 + qd3.mul_add(u117, u72 * qd2));
-        let t24 = k7
+        let cor3_1 = k1 * (t18 - t19);
+        let t20 = qd5.mul_add(u167, t3 + qd3.mul_add(u145, qd2 * u136));
+        let t21 = k7
             .mul_add(
-                u70 * qd6,
-                qd5.mul_add(u150, t2 + qd3.mul_add(u138, qd2.mul_add(u137, qd1 * u135))),
+                qd6 * u154,
+                qd5.mul_add(u153, t3 + qd3.mul_add(u149, qd2.mul_add(u148, qd1 * u112))),
             );
         /// C14 = sum of D14k qd_k (6.44)
-        let cor1_4 = k1 * (t23 + t24);
+        let cor1_4 = k1 * (t20 + t21);
         /// C41 = sum of D41k qd_k (6.44)
-        let cor4_1 = k1 * (t23 - t24);
-        let t25 = t16 + qd4.mul_add(u150, qd3.mul_add(u119, u96 * qd2));
-        let t26 = k36
+        let cor4_1 = k1 * (t20 - t21);
+        let t22 = t4 + qd4.mul_add(u153, qd3.mul_add(u146, qd2 * u138));
+        let t23 = k36
             .mul_add(
-                u94 * qd6,
-                t16 + qd4.mul_add(u179, qd3.mul_add(u176, qd2.mul_add(u173, qd1 * u171))),
+                qd6 * u169,
+                t4 + qd4.mul_add(u167, qd3.mul_add(u166, qd2.mul_add(u162, qd1 * u161))),
             );
         /// C15 = sum of D15k qd_k (6.44)
-        let cor1_5 = k1 * (t25 + t26);
+        let cor1_5 = k1 * (t22 + t23);
         /// C51 = sum of D51k qd_k (6.44)
-        let cor5_1 = k1 * (t25 - t26);
+        let cor5_1 = k1 * (t22 - t23);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u170, k78.mul_add(u32 * qd3, qd4 * u133));
-        let t27 = qd5.mul_add(u175, qd4.mul_add(u132, t3));
-        let t28 = k44
+        let cor2_2 = k1 * qd5.mul_add(u130, k64.mul_add(t5, qd4 * u111));
+        let t24 = qd5.mul_add(u129, qd4.mul_add(u110, t6));
+        let t25 = k44
             .mul_add(
-                u83 * qd5,
-                k42.mul_add(u63 * qd4, t3 + k78.mul_add(u32 * qd2, qd1 * u113)),
-            ) - u60 * qd1;
+                u76 * qd5,
+                k42.mul_add(u62 * qd4, t6 + k64.mul_add(u58 * qd2, qd1 * u142)),
+            ) - qd1 * u134;
         /// C23 = sum of D23k qd_k (6.44)
-        let cor2_3 = k1 * (t27 + t28);
+        let cor2_3 = k1 * (t24 + t25);
         /// C32 = sum of D32k qd_k (6.44)
-        let cor3_2 = k1 * (t27 - t28);
-        let t29 = qd5.mul_add(u178, k42.mul_add(u63 * qd3, t4));
-        let t30 = t11
-            + qd5.mul_add(u149, t4 + qd3.mul_add(u132, qd1.mul_add(u137, qd2 * u133)))
-            - u72 * qd1;
+        let cor3_2 = k1 * (t24 - t25);
+        let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t7));
+        let t27 = k7 * (u6 * qd6);
+        let t28 = qd5
+            .mul_add(u117, t7 + qd3.mul_add(u110, qd1.mul_add(u148, qd2 * u111))) + t27
+            - qd1 * u136;
         /// C24 = sum of D24k qd_k (6.44)
-        let cor2_4 = k1 * (t29 + t30);
+        let cor2_4 = k1 * (t26 + t28);
         /// C42 = sum of D42k qd_k (6.44)
-        let cor4_2 = k1 * (t29 - t30);
-        let t31 = qd4.mul_add(u149, k44 * (u83 * qd3)) + t17;
-        let t32 = t12
-            + (t17 + qd4.mul_add(u178, qd3.mul_add(u175, qd1.mul_add(u173, qd2 * u170))))
-            - u96 * qd1;
+        let cor4_2 = k1 * (t26 - t28);
+        let t29 = t8 + qd4.mul_add(u117, k44 * (u76 * qd3));
+        let t30 = k7 * (u68 * qd6);
+        let t31 = t8
+            + qd4.mul_add(u163, qd3.mul_add(u129, qd1.mul_add(u162, qd2 * u130))) + t30
+            - qd1 * u138;
         /// C25 = sum of D25k qd_k (6.44)
-        let cor2_5 = k1 * (t31 + t32);
+        let cor2_5 = k1 * (t29 + t31);
         /// C52 = sum of D52k qd_k (6.44)
-        let cor5_2 = k1 * (t31 - t32);
-        let t33 = qd5.mul_add(u162, t6);
-        let t34 = t11
-            + qd5.mul_add(u145, t6 + qd3.mul_add(u122, qd1.mul_add(u138, qd2 * u132)))
-            - qd1.mul_add(u117, k42 * (u63 * qd2));
+        let cor5_2 = k1 * (t29 - t31);
+        let t32 = u68.mul_add(qd5, u6 * qd4);
+        /// C26 = sum of D26k qd_k (6.44)
+        let cor2_6 = k84 * (t9 + t32);
+        /// C62 = sum of D62k qd_k (6.44)
+        let cor6_2 = k84 * (t32 - t9);
+        let t33 = qd5.mul_add(u157, t10);
+        let t34 = t27
+            + qd5.mul_add(u115, t10 + qd3.mul_add(u102, qd2.mul_add(u110, qd1 * u149)))
+            - k42.mul_add(u62 * qd2, qd1 * u145);
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
-        let t35 = t12
-            + (t7 + qd4.mul_add(u162, qd3.mul_add(u159, qd2.mul_add(u175, qd1 * u176))))
-            - qd1.mul_add(u119, k44 * (u83 * qd2));
+        let t35 = qd4.mul_add(u115, t11);
+        let t36 = t30
+            + (t11 + qd4.mul_add(u157, qd3.mul_add(u124, qd2.mul_add(u129, qd1 * u166))))
+            - k44.mul_add(u76 * qd2, qd1 * u146);
         /// C35 = sum of D35k qd_k (6.44)
-        let cor3_5 = k1 * (t14 + t35);
+        let cor3_5 = k1 * (t35 + t36);
         /// C53 = sum of D53k qd_k (6.44)
-        let cor5_3 = k1 * (t14 - t35);
-        /// C36 = sum of D36k qd_k (6.44)
-        let cor3_6 = k84 * (t13 - t18);
-        /// C63 = sum of D63k qd_k (6.44)
-        let cor6_3 = k84 * (t13 + t18);
-        let t36 = k36
+        let cor5_3 = k1 * (t35 - t36);
+        let t37 = k36
             .mul_add(
                 s5 * qd6,
-                k81.mul_add(u1 * qd4, qd3.mul_add(u162, qd2.mul_add(u178, qd1 * u179))),
-            ) - qd3.mul_add(u145, qd2.mul_add(u149, qd1 * u150));
+                k81.mul_add(u2 * qd4, qd3.mul_add(u157, qd2.mul_add(u163, qd1 * u167))),
+            ) - qd3.mul_add(u115, qd2.mul_add(u117, qd1 * u153));
         /// C45 = sum of D45k qd_k (6.44)
-        let cor4_5 = k1 * t36;
+        let cor4_5 = k1 * t37;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k85 * t36;
+        let cor5_4 = k85 * t37;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k83 * (t8 - t19);
+        let cor6_4 = k83 * (t13 - t12);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],
-            [cor3_1, cor3_2, cor3_3, cor3_4, cor3_5, cor3_6],
+            [cor3_1, cor3_2, cor3_3, cor3_4, cor3_5, cor2_6],
             [cor4_1, cor4_2, cor4_3, cor4_4, cor4_5, cor4_6],
             [cor5_1, cor5_2, cor5_3, cor5_4, T::ZERO, cor5_6],
-            [cor1_6, cor6_2, cor6_3, cor6_4, cor6_5, T::ZERO],
+            [cor1_6, cor6_2, cor6_2, cor6_4, cor6_5, T::ZERO],
         ]
     }
     #[inline(always)]
@@ -1176,8 +1143,8 @@ mod __dynamics {
                 k36,
                 k43,
                 k44,
-                u104,
-                u105,
+                u89,
+                u90,
                 k61,
                 k68,
                 ..
@@ -1238,10 +1205,10 @@ mod __dynamics {
         let cqd2 = v14 + k2.mul_add(v65, cqd3);
         /// centripetal and Coriolis torque 1
         let cqd1 = v66
-            + u105
+            + u90
                 .mul_add(
                     v32 + k43.mul_add(v61, cqd4),
-                    u104 * (v31 + k44.mul_add(v61, c4 * t6 - s4 * t7)),
+                    u89 * (v31 + k44.mul_add(v61, c4 * t6 - s4 * t7)),
                 );
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
@@ -1277,11 +1244,11 @@ mod __dynamics {
                 k36,
                 k43,
                 k44,
-                u104,
-                u105,
-                u107,
-                u108,
-                u109,
+                u89,
+                u90,
+                u94,
+                u95,
+                u96,
                 k61,
                 k66,
                 ..
@@ -1317,8 +1284,8 @@ mod __dynamics {
         let [qd1, _, _, _, _, _] = *qd_;
         /// centripetal, Coriolis and gravity torque 6
         let h6 = k7 * v48;
-        let t1 = k23.mul_add(v9, u107);
-        let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u108);
+        let t1 = k23.mul_add(v9, u94);
+        let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u95);
         let t3 = s3.mul_add(t2, c3 * t1);
         let t4 = c3 * t2 - s3 * t1;
         let t5 = v33 + t3;
@@ -1336,13 +1303,13 @@ mod __dynamics {
         /// centripetal, Coriolis and gravity torque 3
         let h3 = v30 + k66.mul_add(t3, k24 * t4) + (v62 - c4.mul_add(t8, s4 * t7));
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = u109 + v14 + k2.mul_add(v65, h3);
+        let h2 = u96 + v14 + k2.mul_add(v65, h3);
         /// centripetal, Coriolis and gravity torque 1
         let h1 = v66
-            + u105
+            + u90
                 .mul_add(
                     v32 + k43.mul_add(v61, h4),
-                    u104 * (v31 + k44.mul_add(v61, c4 * t7 - s4 * t8)),
+                    u89 * (v31 + k44.mul_add(v61, c4 * t7 - s4 * t8)),
                 );
         [h1, h2, h3, h4, h5, h6]
     }
@@ -1397,13 +1364,13 @@ mod __dynamics {
                 k43,
                 k44,
                 k47,
-                u104,
-                u105,
-                u107,
-                u108,
+                u89,
+                u90,
+                u94,
+                u95,
                 k53,
                 k54,
-                u109,
+                u96,
                 k57,
                 k58,
                 k61,
@@ -1441,8 +1408,8 @@ mod __dynamics {
         let t3 = qd2 * t2;
         let t4 = qd2 * t1;
         let t5 = t1 * t2;
-        let t6 = qd1 * u104;
-        let t7 = qd1 * u105;
+        let t6 = u89 * qd1;
+        let t7 = u90 * qd1;
         let t8 = v16 * t7;
         let t9 = v16 * t6;
         let t10 = t6 * t7;
@@ -1454,13 +1421,13 @@ mod __dynamics {
         let t16 = qdd2 + t5;
         let t17 = t4 - (t14 - t4);
         let t18 = k2.mul_add(t17, k47 * v10);
-        let t19 = u107 + k3.mul_add(t14, k23 * v9);
-        let t20 = u108 + k47.mul_add(t13, k2 * t16);
+        let t19 = u94 + k3.mul_add(t14, k23 * v9);
+        let t20 = u95 + k47.mul_add(t13, k2 * t16);
         let t21 = s3.mul_add(t20, c3 * t19);
         let t22 = c3 * t20 - s3 * t19;
         let t23 = qdd2 + qdd3;
-        let t24 = qdd1 * u105;
-        let t25 = qdd1.mul_add(u104, t8);
+        let t24 = u90 * qdd1;
+        let t25 = u89.mul_add(qdd1, t8);
         let t26 = t24 - t9;
         let t27 = t10 - t23;
         let t28 = t10 + t23;
@@ -1512,7 +1479,7 @@ mod __dynamics {
             + (k44.mul_add(t45, k43 * t42) - c4.mul_add(t44, s4 * t43));
         let t49 = c3.mul_add(t48, s3 * t47);
         /// T2 (6.46)
-        let tau2 = u109
+        let tau2 = u96
             + k54
                 .mul_add(
                     t5,
@@ -1546,12 +1513,12 @@ mod __dynamics {
                                         ),
                                 ),
                     )
-                    + u105
+                    + u90
                         .mul_add(
                             k65
                                 .mul_add(t18, k57.mul_add(t9, k13.mul_add(t27, k26 * t30)))
                                 + k43.mul_add(t46, tau4),
-                            u104
+                            u89
                                 * (k27
                                     .mul_add(
                                         t18,

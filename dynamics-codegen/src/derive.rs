@@ -296,11 +296,21 @@ pub fn derive(robot: &Robot) -> Equations {
     // two-joint one). With quarter-turn twists the two are the same graph. M(q) is the
     // winner's trace.
     let (chain, mut mass) = {
+        // Each with its moments carried joint by joint or through the sums of parallel
+        // joints' angles (as Newton-Euler below), whichever is cheaper.
         let traced = |c: Chain<_>| {
-            let m = algo::crba(&c);
-            let ids: Vec<NodeId> = m.iter().flatten().map(|e: &Expr| e.id()).collect();
-            let cost = operations(&graph.borrow(), &ids);
-            (c, m, cost)
+            let cost = |m: &[Vec<Expr>]| {
+                let ids: Vec<NodeId> = m.iter().flatten().map(|e: &Expr| e.id()).collect();
+                operations(&graph.borrow(), &ids)
+            };
+            let plain = algo::crba(&c);
+            let by_sums = algo::crba(&c.clone().summing_angles(true));
+            let (plain_cost, sums_cost) = (cost(&plain), cost(&by_sums));
+            if sums_cost < plain_cost {
+                (c, by_sums, sums_cost)
+            } else {
+                (c, plain, plain_cost)
+            }
         };
         let after = traced(chain.clone().regrouped());
         let before = traced(chain.moving_before_twist(true).regrouped());

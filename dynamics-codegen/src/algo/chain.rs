@@ -303,6 +303,48 @@ impl<S: Scalar> ChainJoint<S> {
     }
 }
 
+/// Carries wrenches towards the base, joint by joint, as [`ChainJoint::wrench_to_parent`]
+/// does, except through a joint with [`ChainJoint::sum_angles`]: there only the moment's z
+/// component (which the turn about z leaves alone) goes on at once; the rest waits, in the
+/// axes of its link p, until the first joint of the run turns it by the run's angle up to p
+/// ([`Chain::run_angles`]) in one step. A recursion that needs only the z components within a
+/// run (the joint torques) skips the turns in between.
+pub struct WrenchCarrier<'c, S> {
+    chain: &'c Chain<S>,
+    angles: Vec<Option<(S, S)>>,
+    /// Moments across z waiting for the first joint of their run, with their link.
+    pending: Vec<(V3<S>, usize)>,
+}
+
+impl<'c, S: Scalar> WrenchCarrier<'c, S> {
+    /// A carrier for `chain`, holding no moments back.
+    pub fn new(chain: &'c Chain<S>) -> WrenchCarrier<'c, S> {
+        WrenchCarrier {
+            chain,
+            angles: chain.run_angles(),
+            pending: Vec::new(),
+        }
+    }
+
+    /// The wrench `(f, n)` at J_i in J_i axes, carried to J_{i−1}: the moment without the
+    /// parts held back.
+    pub fn to_parent(&mut self, i: usize, f: V3<S>, n: V3<S>) -> (V3<S>, V3<S>) {
+        let joint = &self.chain.joints[i];
+        let zero = f.x.zero();
+        if joint.sum_angles {
+            self.pending.push((V3::new(n.x, n.y, zero), i));
+            return joint.wrench_from_turned(joint.to_turned(f), V3::new(zero, zero, n.z));
+        }
+        let mut turned = joint.to_turned(n);
+        for (v, p) in self.pending.drain(..) {
+            if let Some((s, c)) = self.angles[p] {
+                turned = turned.add(V3::new(c * v.x - s * v.y, s * v.x + c * v.y, zero));
+            }
+        }
+        joint.wrench_from_turned(joint.to_turned(f), turned)
+    }
+}
+
 /// A serial robot as joint frames; see the module documentation.
 #[derive(Clone, Debug)]
 pub struct Chain<S> {
@@ -385,6 +427,26 @@ impl<S: Scalar> Chain<S> {
             self.joints[i].sum_angles = on && parallel;
         }
         self
+    }
+
+    /// Per joint of a run of revolute joints about parallel axes (its first joint k and those
+    /// after it with [`ChainJoint::sum_angles`]), the sine and cosine of `θ_k + ⋯ + θ_i`:
+    /// `sin(Σ + θ) = sin Σ cos θ + cos Σ sin θ`, `cos(Σ + θ) = cos Σ cos θ − sin Σ sin θ`.
+    /// `None` for a prismatic joint.
+    pub fn run_angles(&self) -> Vec<Option<(S, S)>> {
+        let mut angles: Vec<Option<(S, S)>> = Vec::with_capacity(self.joints.len());
+        for j in &self.joints {
+            let (st, ct) = (j.sin_theta, j.cos_theta);
+            let angle = match (j.kind, angles.last().copied().flatten()) {
+                (JointKind::Prismatic, _) => None,
+                (JointKind::Revolute, Some((s, c))) if j.sum_angles => {
+                    Some((s * ct + c * st, c * ct - s * st))
+                }
+                (JointKind::Revolute, _) => Some((st, ct)),
+            };
+            angles.push(angle);
+        }
+        angles
     }
 
     /// The same robot with inertial parameters regrouped onto fewer links, leaving `M`, `τ`,

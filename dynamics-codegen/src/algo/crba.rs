@@ -5,9 +5,11 @@
 //! acceleration of joint i alone exerts the wrench `(f, n) = (z × h, I z)` (revolute) or
 //! `(m z, h × z)` (prismatic) at J_i. `M_ii` is its component on joint i's axis; carried to
 //! J_j (`f ← R f`, `n ← R n + p × R f`) its component on joint j's axis is `M_ji`. Column j of
-//! the result equals [`super::rnea`] with `qd = 0`, `qdd = e_j` and no gravity.
+//! the result equals [`super::rnea`] with `qd = 0`, `qdd = e_j` and no gravity. The wrenches
+//! go through a [`super::WrenchCarrier`], which turns moments through runs of parallel joints
+//! in one step where the chain asks for it.
 
-use super::{Body, Chain, ChainJoint, JointKind, Scalar, V3};
+use super::{Body, Chain, ChainJoint, JointKind, Scalar, WrenchCarrier, V3};
 use std::ops::Add;
 
 /// The joint-space mass matrix of `chain`, full and symmetric.
@@ -22,8 +24,9 @@ pub fn crba<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<S>> {
     for i in 0..n {
         let (mut f, mut nn) = wrench(chain, i, &composite[i]);
         m[i][i] = axis(chain, i, f, nn);
+        let mut carrier = WrenchCarrier::new(chain);
         for j in (0..i).rev() {
-            (f, nn) = transport(&chain.joints[j + 1], f, nn);
+            (f, nn) = carrier.to_parent(j + 1, f, nn);
             m[j][i] = axis(chain, j, f, nn);
             m[i][j] = m[j][i];
         }
@@ -142,7 +145,20 @@ fn axis<S: Scalar>(chain: &Chain<S>, k: usize, f: V3<S>, nn: V3<S>) -> S {
 #[cfg(test)]
 mod tests {
     use super::{crba, crba_derivative};
-    use crate::algo::test_chain as chain;
+    use crate::algo::{parallel_chain, test_chain as chain};
+
+    /// Moments carried through the sums of parallel joints' angles give the same `M`.
+    #[test]
+    fn summing_angles_of_parallel_joints() {
+        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4, 0.15];
+        for symmetric_tip in [false, true] {
+            let plain = parallel_chain(&q, symmetric_tip);
+            let (a, b) = (crba(&plain), crba(&plain.clone().summing_angles(true)));
+            for (x, y) in a.iter().flatten().zip(b.iter().flatten()) {
+                assert!((x - y).abs() < 1e-12, "{a:?} vs {b:?}");
+            }
+        }
+    }
 
     /// `∂M/∂q_k` by the carried commutators agrees with central differences of `M`, for the
     /// chain as given and regrouped.

@@ -24,7 +24,7 @@
 //! `w_k` is sparse (PUMA 560's `(0, q̇_1, 0)`), one turn costs what two did. The sine and
 //! cosine of the sum cost 3 operations each; derive keeps whichever way is cheaper.
 
-use super::{Chain, JointKind, Scalar, V3};
+use super::{Chain, JointKind, Scalar, WrenchCarrier, V3};
 use std::ops::{Add, Neg};
 
 /// Joint torques of `chain` moving with velocities `qd` and accelerations `qdd` under `gravity`
@@ -42,8 +42,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     // The vectors that entered the first joint of the current run of parallel revolute joints
     // (untwisted, before its turn), with the sine and cosine of the run's angle so far.
     let mut run: Option<Run<S>> = None;
-    // Per joint in a run, the sine and cosine of the run's angle up to it.
-    let mut run_angles = vec![None; n];
+    let angles = chain.run_angles();
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
         let vd_parent = vd.add(u.mul(p));
@@ -56,7 +55,10 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         };
         vd = to_child(vd_parent);
         let summed = match run {
-            Some(r) if j.sum_angles && unturned != Some(i) => Some(r.then(j)),
+            Some(r) if j.sum_angles && unturned != Some(i) => match angles[i] {
+                Some((sin, cos)) => Some(Run { sin, cos, ..r }),
+                None => None,
+            },
             _ => None,
         };
         match (j.kind, summed) {
@@ -90,7 +92,6 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
                 vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
             }
         }
-        run_angles[i] = run.map(|r| (r.sin, r.cos));
         let b = &j.body;
         u = Rates::new(w, wd);
         let f = vd.scale(b.mass).add(u.mul(b.h));
@@ -99,27 +100,14 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     }
     let mut tau = vec![zero; n];
     let mut child: Option<(V3<S>, V3<S>)> = None;
-    // Moments of links in a run not yet turned into the run's first joint's axes: the part
-    // across z, in the axes of link p, which turns by the run's angle up to p at once.
-    let mut pending: Vec<(V3<S>, usize)> = Vec::new();
+    let mut carrier = WrenchCarrier::new(chain);
     for i in (0..n).rev() {
         let (mut f, mut nn) = forces[i];
         if let Some((fc, nc)) = child {
-            let next = &chain.joints[i + 1];
             let (rf, rn) = if unturned == Some(i + 1) {
-                next.wrench_from_turned(fc, nc)
-            } else if next.sum_angles {
-                // Turning about z leaves the z component; the rest waits for the run's start.
-                pending.push((V3::new(nc.x, nc.y, zero), i + 1));
-                next.wrench_from_turned(next.to_turned(fc), V3::new(zero, zero, nc.z))
+                chain.joints[i + 1].wrench_from_turned(fc, nc)
             } else {
-                let mut turned = next.to_turned(nc);
-                for (v, p) in pending.drain(..) {
-                    if let Some((s, c)) = run_angles[p] {
-                        turned = turned.add(V3::new(c * v.x - s * v.y, s * v.x + c * v.y, zero));
-                    }
-                }
-                next.wrench_from_turned(next.to_turned(fc), turned)
+                carrier.to_parent(i + 1, fc, nc)
             };
             f = f.add(rf);
             nn = nn.add(rn);
@@ -153,16 +141,6 @@ struct Run<S> {
 }
 
 impl<S: Scalar> Run<S> {
-    /// The run extended by joint `j`: `sin(Σ + θ) = sin Σ cos θ + cos Σ sin θ`, and the cosine.
-    fn then(self, j: &super::ChainJoint<S>) -> Run<S> {
-        let (st, ct) = (j.sin_theta, j.cos_theta);
-        Run {
-            sin: self.sin * ct + self.cos * st,
-            cos: self.cos * ct - self.sin * st,
-            ..self
-        }
-    }
-
     /// `Rotz(Σθ)ᵀ v`.
     fn turned_back(&self, v: V3<S>) -> V3<S> {
         let (s, c) = (self.sin, self.cos);
@@ -229,58 +207,8 @@ impl<S: Scalar> Rates<S> {
 #[cfg(test)]
 mod tests {
     use super::{rnea, Rates};
-    use crate::algo::{Chain, DhRow, Inertial, JointKind, Mat3, V3};
+    use crate::algo::{parallel_chain, Mat3, V3};
     use std::ops::Add;
-
-    /// A 7-joint arm with runs of parallel revolute joints (2-3-4 and 5-6) and a prismatic
-    /// last joint; with `symmetric_tip`, it ends at joint 6, whose link is axially symmetric.
-    fn parallel_chain(q: &[f64], symmetric_tip: bool) -> Chain<f64> {
-        let alphas = [std::f64::consts::FRAC_PI_2, 0.0, 0.0, -0.7, 0.0, 0.0, 0.3];
-        let joints = if symmetric_tip { 6 } else { 7 };
-        let mut rows = Vec::new();
-        let mut links = Vec::new();
-        for (i, (&alpha, &qi)) in alphas.iter().zip(q).take(joints).enumerate() {
-            let x = i as f64;
-            let kind = if i == 6 {
-                JointKind::Prismatic
-            } else {
-                JointKind::Revolute
-            };
-            let (theta, d) = match kind {
-                JointKind::Revolute => (qi + 0.2 * x, 0.04 * x),
-                JointKind::Prismatic => (0.3, qi),
-            };
-            rows.push(DhRow {
-                kind,
-                sin_theta: theta.sin(),
-                cos_theta: theta.cos(),
-                d,
-                a: 0.25 - 0.03 * x,
-                sin_alpha: alpha.sin(),
-                cos_alpha: alpha.cos(),
-            });
-            let tip = symmetric_tip && i == 5;
-            links.push(Inertial {
-                mass: 1.0 + 0.2 * x,
-                com: if tip {
-                    V3::new(0.0, 0.0, 0.05)
-                } else {
-                    V3::new(-0.1 + 0.02 * x, 0.03, 0.05)
-                },
-                inertia: if tip {
-                    [0.02, 0.02, 0.01, 0.0, 0.0, 0.0]
-                } else {
-                    [0.05, 0.04 + 0.01 * x, 0.03, 0.004, -0.002, 0.001 * x]
-                },
-            });
-        }
-        // The standard table's last twist is not a joint's: the tip's link keeps its axes.
-        if symmetric_tip {
-            rows[5].sin_alpha = 0.0;
-            rows[5].cos_alpha = 1.0;
-        }
-        Chain::standard(&rows, &links)
-    }
 
     /// Rates turned through the sums of parallel joints' angles, and moments turned back the
     /// same way, give the torques of the joint-by-joint recursion.
