@@ -139,9 +139,9 @@ pub const CONFIGURATION_STRUCT: &str = "Configuration";
 pub const CONFIGURATION_FN: &str = "configuration";
 /// Name of the struct of terms in `q̇` that several methods share.
 pub const MOTION_STRUCT: &str = "Motion";
-/// Name of the function computing it, `motion(&c_, q_, qd_)`.
+/// Name of the function computing it with the configuration, `motion(p_, q_, qd_)`.
 pub const MOTION_FN: &str = "motion";
-/// Name of the local holding a method's configuration when it calls the motion function too.
+/// Name of the local holding the configuration in the motion function.
 pub const CONFIGURATION_LOCAL: &str = "c_";
 /// Name of the argument holding the robot's parameters, `[T; K]` in the order of
 /// [`Equations::fields`].
@@ -299,7 +299,8 @@ fn classes(eq: &Equations) -> Vec<u8> {
 }
 
 /// The nodes without `q̇` and `q̈` that the code of `outputs` reads: outputs of class ≤ 1 and
-/// operands of its class-2 and class-3 nodes, except zero, one and `q_i`, which are written in place.
+/// operands of its class-2 and class-3 nodes, except zero, one and `q_i`, which are written in
+/// place.
 fn boundary(eq: &Equations, class: &[u8], outputs: &[NodeId]) -> Vec<NodeId> {
     let e = Emitter::new(eq, None);
     let mut seen = vec![false; eq.graph.len()];
@@ -389,7 +390,7 @@ struct Emitter<'a> {
     /// What each bound node (and each constant) is read as: a local, or a field of the
     /// configuration.
     names: Vec<Option<TokenStream>>,
-    /// Nodes computed elsewhere (the configuration's fields): marking stops there.
+    /// Nodes computed elsewhere (the configuration's and the motion's fields): marking stops there.
     stop: Vec<bool>,
     /// Which shared function computes a stop node.
     origin: Vec<Origin>,
@@ -711,8 +712,9 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// The body of the motion function: reads the configuration's fields it needs from `c_`,
-    /// computes `boundary` and returns it as the motion struct.
+    /// The body of the motion function: computes the configuration (`let c_ =
+    /// configuration(p_, q_);`), reads the fields it needs, computes `boundary` and returns both
+    /// structs, `(c_, Motion { … })`.
     fn motion(&mut self, boundary: &[NodeId], field_names: &[Option<String>]) -> Shared {
         self.mark(boundary);
         let is_boundary = {
@@ -763,9 +765,10 @@ impl<'a> Emitter<'a> {
     }
 
     /// The statements binding the shared fields this function reads: in a method,
-    /// `let Configuration { s2, .. } = configuration(p_, q_);` (through a local `c_` when it
-    /// reads the motion too, `let Motion { v3, .. } = motion(&c_, q_, qd_);`); in the motion
-    /// function (`in_method` false), `let Configuration { s2, .. } = *c_;`.
+    /// `let Configuration { s2, .. } = configuration(p_, q_);`, or when it reads the motion too,
+    /// `let (Configuration { s2, .. }, Motion { v3, .. }) = motion(p_, q_, qd_);`; in the motion
+    /// function (`in_method` false), `let c_ = configuration(p_, q_);` and
+    /// `let Configuration { s2, .. } = c_;`.
     fn bind_shared(&self, in_method: bool) -> Vec<TokenStream> {
         let read = |origin: Origin| -> Vec<TokenStream> {
             self.graph

@@ -18,9 +18,9 @@
 //!
 //! Joints about parallel axes (α = 0 between revolute joints k, …, i) turn about the same z, so
 //! `J_{k−1}` to `J_i` turns by `Rotz(θ_k + ⋯ + θ_i)`. With [`super::ChainJoint::sum_angles`],
-//! `ω_i = Rotz(Σθ)ᵀ w_k + (ω_{i−1})_z + q̇_i` and
-//! `ω̇_i = Rotz(Σθ)ᵀ ẇ_k + (q̇_k + ⋯ + q̇_i) ω_i × z + …` from the vectors `w_k`, `ẇ_k` that
-//! entered joint k, and each link's moment across z turns back to joint k in one step: where
+//! `ω_i = Rotz(Σθ)ᵀ w_k + (q̇_k + ⋯ + q̇_i) z` and
+//! `ω̇_i = Rotz(Σθ)ᵀ ẇ_k + (q̇_k + ⋯ + q̇_i) ω_i × z + (q̈_k + ⋯ + q̈_i) z` from the vectors `w_k`,
+//! `ẇ_k` that entered joint k (in its axes before its turn), and each link's moment across z turns back to joint k in one step: where
 //! `w_k` is sparse (PUMA 560's `(0, q̇_1, 0)`), one turn costs what two did. The sine and
 //! cosine of the sum cost 3 operations each; derive keeps whichever way is cheaper.
 
@@ -39,9 +39,9 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut u = Rates::new(w, wd);
     let mut forces = Vec::with_capacity(n);
     let unturned = unturned_last(chain);
-    // The vectors that entered the first joint of the current run of parallel revolute joints
-    // (untwisted, before its turn), with the sine and cosine of the run's angle so far.
-    let mut run: Option<Run<S>> = None;
+    // The rates that entered the first joint of the current run of parallel revolute joints
+    // (untwisted, before its turn), and per joint the sine and cosine of the run's angle.
+    let mut run: Option<(V3<S>, V3<S>)> = None;
     let angles = chain.run_angles();
     for (i, j) in chain.joints.iter().enumerate() {
         let p = j.offset();
@@ -54,31 +54,25 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
             }
         };
         vd = to_child(vd_parent);
-        let summed = match run {
-            Some(r) if j.sum_angles && unturned != Some(i) => match angles[i] {
-                Some((sin, cos)) => Some(Run { sin, cos, ..r }),
-                None => None,
-            },
+        let summed = match (run, angles[i]) {
+            (Some(entered), Some(angle)) if j.sum_angles && unturned != Some(i) => {
+                Some((entered, angle))
+            }
             _ => None,
         };
         match (j.kind, summed) {
-            (JointKind::Revolute, Some(r)) => {
-                // ω_i = Rotz(Σθ)ᵀ w_k + (Σq̇) z, ω̇_i = Rotz(Σθ)ᵀ ẇ_k + (Σq̇) ω_i × z + (Σq̈) z.
-                let w_in = r.turned_back(r.w);
-                let wd_in = r.turned_back(r.wd);
+            (JointKind::Revolute, Some(((w_k, wd_k), (s, c)))) => {
+                // Rotz(Σθ)ᵀ; the z components add up as they go.
+                let turned_back = |v: V3<S>| V3::new(c * v.x + s * v.y, c * v.y - s * v.x, v.z);
+                let (w_in, wd_in) = (turned_back(w_k), turned_back(wd_k));
                 let next = V3::new(w_in.x, w_in.y, w.z + qd[i]);
-                let c = next.cross_z(next.z - r.w.z);
+                // (q̇_k + ⋯ + q̇_i) ω_i × z, the sum being ω_i's z less what entered the run.
+                let c = next.cross_z(next.z - w_k.z);
                 wd = V3::new(wd_in.x + c.x, wd_in.y + c.y, wd.z + qdd[i]);
                 w = next;
-                run = Some(r);
             }
             (JointKind::Revolute, None) => {
-                run = (unturned != Some(i)).then(|| Run {
-                    w: j.untwist(w),
-                    wd: j.untwist(wd),
-                    sin: j.sin_theta,
-                    cos: j.cos_theta,
-                });
+                run = (unturned != Some(i)).then(|| (j.untwist(w), j.untwist(wd)));
                 let (w_in, wd_in) = (to_child(w), to_child(wd));
                 w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
                 let c = w_in.cross_z(qd[i]);
@@ -127,25 +121,6 @@ fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
     let last = chain.joints.len().checked_sub(1)?;
     let j = &chain.joints[last];
     (j.kind == JointKind::Revolute && j.body.is_axially_symmetric()).then_some(last)
-}
-
-/// A run of revolute joints about parallel axes: the angular velocity and acceleration that
-/// entered its first joint k, in that joint's axes before its turn, and the sine and cosine of
-/// `θ_k + ⋯ + θ_i`.
-#[derive(Clone, Copy)]
-struct Run<S> {
-    w: V3<S>,
-    wd: V3<S>,
-    sin: S,
-    cos: S,
-}
-
-impl<S: Scalar> Run<S> {
-    /// `Rotz(Σθ)ᵀ v`.
-    fn turned_back(&self, v: V3<S>) -> V3<S> {
-        let (s, c) = (self.sin, self.cos);
-        V3::new(c * v.x + s * v.y, c * v.y - s * v.x, v.z)
-    }
 }
 
 /// A link's angular velocity `ω` and acceleration `ω̇` as Khalil writes them: the products
