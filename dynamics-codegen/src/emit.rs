@@ -672,32 +672,17 @@ impl<'a> Emitter<'a> {
             }
         }
         let class = classes(self.eq);
-        let is_boundary = {
-            let mut b = vec![false; self.graph.len()];
-            for id in boundary {
-                b[id.index()] = true;
-            }
-            b
-        };
         statements.extend(self.joint_variables());
         for phase in [0, 1] {
             if phase == 1 {
                 self.sines_and_cosines(&mut statements);
             }
-            for (id, _) in self.graph.nodes() {
-                let i = id.index();
-                if !self.needed[i] || class[i] != phase || self.is_leaf(id) {
-                    continue;
-                }
-                if self.uses[i] <= 1 && !is_boundary[i] {
-                    continue;
-                }
-                let name = match &field_names[i] {
-                    Some(name) => local(name),
-                    None => self.temporary(),
-                };
-                statements.push(self.bind(id, name));
-            }
+            self.bind_shared_nodes(
+                &|i| class[i] == phase,
+                boundary,
+                field_names,
+                &mut statements,
+            );
         }
         // The struct literal, one field per boundary node, named as its local.
         let locals: Vec<TokenStream> = boundary.iter().map(|&id| self.leaf(id)).collect();
@@ -712,26 +697,26 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// The body of the motion function: computes the configuration (`let c_ =
-    /// configuration(p_, q_);`), reads the fields it needs, computes `boundary` and returns both
-    /// structs, `(c_, Motion { … })`.
-    fn motion(&mut self, boundary: &[NodeId], field_names: &[Option<String>]) -> Shared {
-        self.mark(boundary);
-        let is_boundary = {
-            let mut b = vec![false; self.graph.len()];
-            for id in boundary {
-                b[id.index()] = true;
-            }
-            b
-        };
-        let mut statements = self.bind_shared(false);
-        statements.extend(self.joint_variables());
+    /// `let name = …;` for each needed node that `select` admits (by index) and that is read
+    /// more than once or handed over (in `boundary`), in the arena's order, under its name in
+    /// `field_names` or a new temporary.
+    fn bind_shared_nodes(
+        &mut self,
+        select: &dyn Fn(usize) -> bool,
+        boundary: &[NodeId],
+        field_names: &[Option<String>],
+        statements: &mut Vec<TokenStream>,
+    ) {
+        let mut handed_over = vec![false; self.graph.len()];
+        for id in boundary {
+            handed_over[id.index()] = true;
+        }
         for (id, _) in self.graph.nodes() {
             let i = id.index();
-            if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
+            if !self.needed[i] || !select(i) || self.is_leaf(id) {
                 continue;
             }
-            if self.uses[i] <= 1 && !is_boundary[i] {
+            if self.uses[i] <= 1 && !handed_over[i] {
                 continue;
             }
             let name = match &field_names[i] {
@@ -740,6 +725,17 @@ impl<'a> Emitter<'a> {
             };
             statements.push(self.bind(id, name));
         }
+    }
+
+    /// The body of the motion function: computes the configuration (`let c_ =
+    /// configuration(p_, q_);`), reads the fields it needs, computes `boundary` and returns both
+    /// structs, `(c_, Motion { … })`.
+    fn motion(&mut self, boundary: &[NodeId], field_names: &[Option<String>]) -> Shared {
+        self.mark(boundary);
+        let mut statements = self.bind_shared(false);
+        statements.extend(self.joint_variables());
+        let stop = self.stop.clone();
+        self.bind_shared_nodes(&|i| !stop[i], boundary, field_names, &mut statements);
         let locals: Vec<TokenStream> = boundary
             .iter()
             .map(|&id| self.expr(id, Place::Top))
