@@ -190,12 +190,7 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
     let config_names = |e: &mut Emitter| {
         e.has_configuration = configuration.is_some();
         if let Some(c) = &configuration {
-            for (&id, field) in boundary.iter().zip(&c.fields) {
-                let local = local(&field.to_string());
-                e.names[id.index()] = Some(quote!(#local));
-                e.stop[id.index()] = true;
-                e.origin[id.index()] = Origin::Configuration;
-            }
+            e.read_from(&boundary, c, Origin::Configuration);
         }
     };
     let motion = (!motion_boundary.is_empty()).then(|| {
@@ -210,12 +205,7 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
             let mut e = Emitter::new(eq, Some(ctx));
             config_names(&mut e);
             if let Some(m) = &motion {
-                for (&id, field) in motion_boundary.iter().zip(&m.fields) {
-                    let local = local(&field.to_string());
-                    e.names[id.index()] = Some(quote!(#local));
-                    e.stop[id.index()] = true;
-                    e.origin[id.index()] = Origin::Motion;
-                }
+                e.read_from(&motion_boundary, m, Origin::Motion);
             }
             e.function(&o.shape, o.prefix)
         })
@@ -417,6 +407,17 @@ impl<'a> Emitter<'a> {
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
+        }
+    }
+
+    /// Reads the nodes `computed` from the fields of `shared` (by `origin`): by name, without
+    /// computing them.
+    fn read_from(&mut self, computed: &[NodeId], shared: &Shared, origin: Origin) {
+        for (&id, field) in computed.iter().zip(&shared.fields) {
+            let local = local(&field.to_string());
+            self.names[id.index()] = Some(quote!(#local));
+            self.stop[id.index()] = true;
+            self.origin[id.index()] = origin;
         }
     }
 
