@@ -304,7 +304,12 @@ pub fn derive(robot: &Robot) -> Equations {
                 operations(&graph.borrow(), &ids)
             };
             let plain = algo::crba(&c);
-            let by_sums = algo::crba(&c.clone().summing_angles(true));
+            let summed = c.clone().summing_angles(true);
+            if !summed.has_runs() {
+                let plain_cost = cost(&plain);
+                return (c, plain, plain_cost);
+            }
+            let by_sums = algo::crba(&summed);
             let (plain_cost, sums_cost) = (cost(&plain), cost(&by_sums));
             if sums_cost < plain_cost {
                 (c, by_sums, sums_cost)
@@ -364,11 +369,11 @@ pub fn derive(robot: &Robot) -> Equations {
     // (the sums save on PUMA 560 and UR5; other robots have no parallel joints).
     let summed = chain.clone().summing_angles(true);
     let newton_euler = |qdd, gravity| {
-        fewer_operations(
-            &graph,
-            algo::rnea(&chain, &qd, qdd, gravity),
-            algo::rnea(&summed, &qd, qdd, gravity),
-        )
+        let plain = algo::rnea(&chain, &qd, qdd, gravity);
+        if !summed.has_runs() {
+            return plain;
+        }
+        fewer_operations(&graph, plain, algo::rnea(&summed, &qd, qdd, gravity))
     };
     let coriolis_torques = newton_euler(&zeros, no_gravity);
     let bias: Vec<Expr> = newton_euler(&zeros, gravity)

@@ -430,6 +430,12 @@ impl<S: Scalar> Chain<S> {
         self
     }
 
+    /// Whether some joint turns through the sum of angles of a run
+    /// ([`ChainJoint::sum_angles`]): otherwise the summed recursions are the plain ones.
+    pub fn has_runs(&self) -> bool {
+        self.joints.iter().any(|j| j.sum_angles)
+    }
+
     /// Per joint of a run of revolute joints about parallel axes (its first joint k and those
     /// after it with [`ChainJoint::sum_angles`]), the sine and cosine of `θ_k + ⋯ + θ_i`:
     /// `sin(Σ + θ) = sin Σ cos θ + cos Σ sin θ`, `cos(Σ + θ) = cos Σ cos θ − sin Σ sin θ`.
