@@ -153,7 +153,9 @@ mod tests {
         let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4, 0.15];
         for symmetric_tip in [false, true] {
             let plain = parallel_chain(&q, symmetric_tip);
-            let (a, b) = (crba(&plain), crba(&plain.clone().summing_angles(true)));
+            let summed = plain.clone().summing_angles(true);
+            assert!(summed.has_runs());
+            let (a, b) = (crba(&plain), crba(&summed));
             for (x, y) in a.iter().flatten().zip(b.iter().flatten()) {
                 assert!((x - y).abs() < 1e-12, "{a:?} vs {b:?}");
             }
