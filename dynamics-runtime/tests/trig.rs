@@ -533,4 +533,34 @@ fn four_at_once_equal_one_at_a_time() {
             );
         }
     }
+    // The edges of the fast range, where the four-lane test decides between the paths.
+    let tiny: f64 = 7.450_580_596_923_828e-9; // 2^-27, `TINY_F64`
+    let edges = [
+        tiny,
+        -tiny,
+        f64::from_bits(tiny.to_bits() - 1),
+        BOUND_F64,
+        -BOUND_F64,
+        f64::from_bits(BOUND_F64.to_bits() + 1),
+        0.0,
+        -0.0,
+        f64::NAN,
+        f64::INFINITY,
+        1.0,
+        -2.5,
+    ];
+    for (i, &a) in edges.iter().enumerate() {
+        for &b in &edges[i..] {
+            let x = [a, 1.0, b, -0.5];
+            let (s4, c4) = f64::sin_cos_4(x);
+            for k in 0..4 {
+                let (s, c) = Real::sin_cos(x[k]);
+                assert_eq!(
+                    (s4[k].to_bits(), c4[k].to_bits()),
+                    (s.to_bits(), c.to_bits()),
+                    "{x:?}"
+                );
+            }
+        }
+    }
 }
