@@ -315,16 +315,20 @@ pub(crate) fn sin_cos_4_f64(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
         }
     }
     #[cfg(all(target_arch = "x86_64", not(target_feature = "avx2")))]
-    if x.iter().all(|v| (TINY_F64..=BOUND_F64).contains(&v.abs())) {
+    {
         #[allow(unsafe_code)]
-        // SAFETY: SSE2, the one requirement of `pairs::fast_2`, is part of every x86-64 CPU
-        // and enabled in every x86-64 build.
-        let ((s01, c01), (s23, c23)) =
-            unsafe { (pairs::fast_2([x[0], x[1]]), pairs::fast_2([x[2], x[3]])) };
-        return (
-            [s01[0], s01[1], s23[0], s23[1]],
-            [c01[0], c01[1], c23[0], c23[1]],
-        );
+        // SAFETY: SSE2, the one requirement of `pairs::in_fast_range` and `pairs::fast_2`, is
+        // part of every x86-64 CPU and enabled in every x86-64 build.
+        unsafe {
+            if pairs::in_fast_range(x) {
+                let ((s01, c01), (s23, c23)) =
+                    (pairs::fast_2([x[0], x[1]]), pairs::fast_2([x[2], x[3]]));
+                return (
+                    [s01[0], s01[1], s23[0], s23[1]],
+                    [c01[0], c01[1], c23[0], c23[1]],
+                );
+            }
+        }
     }
     let (s0, c0) = sin_cos_f64(x[0]);
     let (s1, c1) = sin_cos_f64(x[1]);
@@ -339,11 +343,15 @@ pub(crate) fn sin_cos_4_f64(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
 #[inline(always)]
 pub(crate) fn sin_cos_4_f32(x: [f32; 4]) -> ([f32; 4], [f32; 4]) {
     #[cfg(target_arch = "x86_64")]
-    if x.iter().all(|v| (TINY_F32..=BOUND_F32).contains(&v.abs())) {
+    {
         #[allow(unsafe_code)]
-        // SAFETY: SSE2, the one requirement of `quads::fast_4`, is part of every x86-64 CPU
-        // and enabled in every x86-64 build.
-        return unsafe { quads::fast_4(x) };
+        // SAFETY: SSE2, the one requirement of `quads::in_fast_range` and `quads::fast_4`, is
+        // part of every x86-64 CPU and enabled in every x86-64 build.
+        unsafe {
+            if quads::in_fast_range(x) {
+                return quads::fast_4(x);
+            }
+        }
     }
     let (s0, c0) = sin_cos_f32(x[0]);
     let (s1, c1) = sin_cos_f32(x[1]);
@@ -437,14 +445,14 @@ mod lanes {
 #[allow(unsafe_code)]
 mod pairs {
     use super::{
-        C1_F64, C2_F64, C3_F64, C4_F64, C5_F64, C6_F64, P1_F64, P2_F64, P3_F64, S1_F64, S2_F64,
-        S3_F64, S4_F64, S5_F64, S6_F64, SHIFT_F64,
+        BOUND_F64, C1_F64, C2_F64, C3_F64, C4_F64, C5_F64, C6_F64, P1_F64, P2_F64, P3_F64, S1_F64,
+        S2_F64, S3_F64, S4_F64, S5_F64, S6_F64, SHIFT_F64, TINY_F64,
     };
     use core::arch::x86_64::{
         __m128d, _mm_add_epi64, _mm_add_pd, _mm_and_pd, _mm_and_si128, _mm_andnot_pd,
-        _mm_castpd_si128, _mm_castsi128_pd, _mm_cvtsd_f64, _mm_mul_pd, _mm_or_pd, _mm_set1_epi64x,
-        _mm_set1_pd, _mm_set_pd, _mm_shuffle_epi32, _mm_slli_epi64, _mm_srai_epi32, _mm_sub_pd,
-        _mm_unpackhi_pd, _mm_xor_pd,
+        _mm_castpd_si128, _mm_castsi128_pd, _mm_cmpge_pd, _mm_cmple_pd, _mm_cvtsd_f64,
+        _mm_movemask_pd, _mm_mul_pd, _mm_or_pd, _mm_set1_epi64x, _mm_set1_pd, _mm_set_pd,
+        _mm_shuffle_epi32, _mm_slli_epi64, _mm_srai_epi32, _mm_sub_pd, _mm_unpackhi_pd, _mm_xor_pd,
     };
 
     /// The two lanes of `v`.
@@ -452,6 +460,20 @@ mod pairs {
     #[target_feature(enable = "sse2")]
     unsafe fn lanes(v: __m128d) -> [f64; 2] {
         [_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))]
+    }
+
+    /// Whether all four `|x|` lie in `[TINY_F64, BOUND_F64]` (a NaN does not), two lanes a
+    /// comparison.
+    #[inline]
+    #[target_feature(enable = "sse2")]
+    pub(super) unsafe fn in_fast_range(x: [f64; 4]) -> bool {
+        let inside = |a: f64, b: f64| {
+            let abs = _mm_andnot_pd(_mm_set1_pd(-0.0), _mm_set_pd(b, a));
+            let low = _mm_cmpge_pd(abs, _mm_set1_pd(TINY_F64));
+            let high = _mm_cmple_pd(abs, _mm_set1_pd(BOUND_F64));
+            _mm_and_pd(low, high)
+        };
+        _mm_movemask_pd(_mm_and_pd(inside(x[0], x[1]), inside(x[2], x[3]))) == 0b11
     }
 
     /// `(sin x, cos x)` of two arguments in the fast range.
@@ -493,13 +515,14 @@ mod pairs {
 #[allow(unsafe_code)]
 mod quads {
     use super::{
-        C1_F32, C2_F32, C3_F32, P1_F32, P2_F32, P3_F32, P4_F32, S1_F32, S2_F32, S3_F32, S4_F32,
-        SHIFT_F32,
+        BOUND_F32, C1_F32, C2_F32, C3_F32, P1_F32, P2_F32, P3_F32, P4_F32, S1_F32, S2_F32, S3_F32,
+        S4_F32, SHIFT_F32, TINY_F32,
     };
     use core::arch::x86_64::{
         __m128, _mm_add_epi32, _mm_add_ps, _mm_and_ps, _mm_and_si128, _mm_andnot_ps,
-        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpeq_epi32, _mm_mul_ps, _mm_or_ps, _mm_set1_epi32,
-        _mm_set1_ps, _mm_slli_epi32, _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
+        _mm_castps_si128, _mm_castsi128_ps, _mm_cmpeq_epi32, _mm_cmpge_ps, _mm_cmple_ps,
+        _mm_movemask_ps, _mm_mul_ps, _mm_or_ps, _mm_set1_epi32, _mm_set1_ps, _mm_slli_epi32,
+        _mm_storeu_ps, _mm_sub_ps, _mm_xor_ps,
     };
 
     /// The four lanes of `v`.
@@ -509,6 +532,17 @@ mod quads {
         let mut out = [0.0; 4];
         _mm_storeu_ps(out.as_mut_ptr(), v);
         out
+    }
+
+    /// Whether all four `|x|` lie in `[TINY_F32, BOUND_F32]` (a NaN does not).
+    #[inline]
+    #[target_feature(enable = "sse2")]
+    pub(super) unsafe fn in_fast_range(x: [f32; 4]) -> bool {
+        let x = core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]);
+        let abs = _mm_andnot_ps(_mm_set1_ps(-0.0), x);
+        let low = _mm_cmpge_ps(abs, _mm_set1_ps(TINY_F32));
+        let high = _mm_cmple_ps(abs, _mm_set1_ps(BOUND_F32));
+        _mm_movemask_ps(_mm_and_ps(low, high)) == 0b1111
     }
 
     /// `(sin x, cos x)` of four arguments in the fast range.

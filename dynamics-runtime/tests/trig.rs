@@ -534,7 +534,7 @@ fn four_at_once_equal_one_at_a_time() {
         }
     }
     // The edges of the fast range, where the four-lane test decides between the paths.
-    let tiny: f64 = 7.450_580_596_923_828e-9; // 2^-27, `TINY_F64`
+    let tiny = 2f64.powi(-27); // `TINY_F64`
     let edges = [
         tiny,
         -tiny,
@@ -559,6 +559,33 @@ fn four_at_once_equal_one_at_a_time() {
                     (s4[k].to_bits(), c4[k].to_bits()),
                     (s.to_bits(), c.to_bits()),
                     "{x:?}"
+                );
+            }
+        }
+    }
+    let tiny = 2f32.powi(-12); // `TINY_F32`
+    let edges = [
+        tiny,
+        -tiny,
+        f32::from_bits(tiny.to_bits() - 1),
+        BOUND_F32,
+        -BOUND_F32,
+        f32::from_bits(BOUND_F32.to_bits() + 1),
+        0.0,
+        f32::NAN,
+        f32::NEG_INFINITY,
+        1.0,
+    ];
+    for (i, &a) in edges.iter().enumerate() {
+        for &b in &edges[i..] {
+            let y = [a, 1.0, b, -0.5];
+            let (s4, c4) = f32::sin_cos_4(y);
+            for k in 0..4 {
+                let (s, c) = Real::sin_cos(y[k]);
+                assert_eq!(
+                    (s4[k].to_bits(), c4[k].to_bits()),
+                    (s.to_bits(), c.to_bits()),
+                    "{y:?}"
                 );
             }
         }
