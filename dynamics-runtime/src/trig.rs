@@ -158,8 +158,8 @@ fn slow_f32(x: f32) -> (f32, f32) {
 /// the low bits of `shifted`. Every path runs these operations in this order, which is why
 /// their results agree bit for bit.
 macro_rules! reduce_and_evaluate_f64 {
-    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr) => {{
-        let (x, k, add, sub, mul) = ($x, $k, $add, $sub, $mul);
+    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr, $fma:expr) => {{
+        let (x, k, add, sub, mul, fma) = ($x, $k, $add, $sub, $mul, $fma);
         let shifted = add(mul(x, k(core::f64::consts::FRAC_2_PI)), k(SHIFT_F64));
         let n = sub(shifted, k(SHIFT_F64));
 
@@ -176,21 +176,25 @@ macro_rules! reduce_and_evaluate_f64 {
         let r = sub(s, c);
         let r_lo = add(sub(sub(s, r), c), e);
 
+        // The polynomials in Estrin's scheme, `fma(a, b, c) = a·b + c` fused where the build
+        // has FMA: a shorter chain from the argument to the result.
         let z = mul(r, r);
         let z2 = mul(z, z);
         let z4 = mul(z2, z2);
-        let pair = |p: f64, q: f64| add(k(p), mul(z, k(q)));
-        let sin_poly = add(
-            add(pair(S1_F64, S2_F64), mul(z2, pair(S3_F64, S4_F64))),
-            mul(z4, pair(S5_F64, S6_F64)),
+        let pair = |p: f64, q: f64| fma(z, k(q), k(p));
+        let sin_poly = fma(
+            z4,
+            pair(S5_F64, S6_F64),
+            fma(z2, pair(S3_F64, S4_F64), pair(S1_F64, S2_F64)),
         );
-        let cos_poly = add(
-            add(pair(C1_F64, C2_F64), mul(z2, pair(C3_F64, C4_F64))),
-            mul(z4, pair(C5_F64, C6_F64)),
+        let cos_poly = fma(
+            z4,
+            pair(C5_F64, C6_F64),
+            fma(z2, pair(C3_F64, C4_F64), pair(C1_F64, C2_F64)),
         );
         let half_z = mul(k(0.5), z);
         let w = sub(k(1.0), half_z);
-        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
+        let sin_r = add(r, fma(mul(r, z), sin_poly, mul(r_lo, w)));
         let cos_r = add(
             w,
             add(
@@ -243,6 +247,25 @@ macro_rules! reduce_and_evaluate_f32 {
     }};
 }
 
+/// `a·b + c`: one rounding where the build has FMA (as the vector paths, so that they agree
+/// bit for bit), two elsewhere.
+#[inline(always)]
+fn fma_f64(a: f64, b: f64, c: f64) -> f64 {
+    #[cfg(all(target_arch = "x86_64", target_feature = "fma"))]
+    {
+        use core::arch::x86_64::{_mm_cvtsd_f64, _mm_fmadd_sd, _mm_set_sd};
+        #[allow(unsafe_code)]
+        // SAFETY: compiled only when the build enables FMA, the intrinsic's one requirement.
+        unsafe {
+            _mm_cvtsd_f64(_mm_fmadd_sd(_mm_set_sd(a), _mm_set_sd(b), _mm_set_sd(c)))
+        }
+    }
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "fma")))]
+    {
+        a * b + c
+    }
+}
+
 #[inline(always)]
 fn fast_f64(x: f64) -> (f64, f64) {
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
@@ -250,7 +273,8 @@ fn fast_f64(x: f64) -> (f64, f64) {
         |c: f64| c,
         |a: f64, b: f64| a + b,
         |a: f64, b: f64| a - b,
-        |a: f64, b: f64| a * b
+        |a: f64, b: f64| a * b,
+        fma_f64
     );
     #[allow(clippy::cast_possible_truncation)]
     let quadrant = shifted.to_bits() as u32;
@@ -396,6 +420,16 @@ mod lanes {
         ]
     }
 
+    /// `a·b + c` on four lanes, fused where the build has FMA (as `super::fma_f64`).
+    #[inline]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fma(a: __m256d, b: __m256d, c: __m256d) -> __m256d {
+        #[cfg(target_feature = "fma")]
+        return core::arch::x86_64::_mm256_fmadd_pd(a, b, c);
+        #[cfg(not(target_feature = "fma"))]
+        return _mm256_add_pd(_mm256_mul_pd(a, b), c);
+    }
+
     /// Whether all four `|x|` lie in `[TINY_F64, BOUND_F64]` (a NaN does not): two vector
     /// comparisons and one mask, where four scalar tests take a dozen instructions and branches.
     #[inline]
@@ -419,7 +453,8 @@ mod lanes {
             |c: f64| _mm256_set1_pd(c),
             |a, b| _mm256_add_pd(a, b),
             |a, b| _mm256_sub_pd(a, b),
-            |a, b| _mm256_mul_pd(a, b)
+            |a, b| _mm256_mul_pd(a, b),
+            |a, b, c| fma(a, b, c)
         );
 
         // k mod 4 is in the low bits of `shifted`.
@@ -462,6 +497,16 @@ mod pairs {
         [_mm_cvtsd_f64(v), _mm_cvtsd_f64(_mm_unpackhi_pd(v, v))]
     }
 
+    /// `a·b + c` on two lanes, fused where the build has FMA (as `super::fma_f64`).
+    #[inline]
+    #[target_feature(enable = "sse2")]
+    unsafe fn fma(a: __m128d, b: __m128d, c: __m128d) -> __m128d {
+        #[cfg(target_feature = "fma")]
+        return core::arch::x86_64::_mm_fmadd_pd(a, b, c);
+        #[cfg(not(target_feature = "fma"))]
+        return _mm_add_pd(_mm_mul_pd(a, b), c);
+    }
+
     /// Whether all four `|x|` lie in `[TINY_F64, BOUND_F64]` (a NaN does not), two lanes a
     /// comparison.
     #[inline]
@@ -486,7 +531,8 @@ mod pairs {
             |c: f64| _mm_set1_pd(c),
             |a, b| _mm_add_pd(a, b),
             |a, b| _mm_sub_pd(a, b),
-            |a, b| _mm_mul_pd(a, b)
+            |a, b| _mm_mul_pd(a, b),
+            |a, b, c| fma(a, b, c)
         );
 
         // k mod 4 is in the low bits of `shifted`. Odd k swaps sine and cosine: the low bit,
