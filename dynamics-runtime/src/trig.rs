@@ -208,8 +208,8 @@ macro_rules! reduce_and_evaluate_f64 {
 
 /// [`reduce_and_evaluate_f64`] for `f32`.
 macro_rules! reduce_and_evaluate_f32 {
-    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr) => {{
-        let (x, k, add, sub, mul) = ($x, $k, $add, $sub, $mul);
+    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr, $fma:expr) => {{
+        let (x, k, add, sub, mul, fma) = ($x, $k, $add, $sub, $mul, $fma);
         let shifted = add(mul(x, k(core::f32::consts::FRAC_2_PI)), k(SHIFT_F32));
         let n = sub(shifted, k(SHIFT_F32));
 
@@ -230,12 +230,12 @@ macro_rules! reduce_and_evaluate_f32 {
 
         let z = mul(r, r);
         let z2 = mul(z, z);
-        let pair = |p: f32, q: f32| add(k(p), mul(z, k(q)));
-        let sin_poly = add(pair(S1_F32, S2_F32), mul(z2, pair(S3_F32, S4_F32)));
-        let cos_poly = add(pair(C1_F32, C2_F32), mul(z2, k(C3_F32)));
+        let pair = |p: f32, q: f32| fma(z, k(q), k(p));
+        let sin_poly = fma(z2, pair(S3_F32, S4_F32), pair(S1_F32, S2_F32));
+        let cos_poly = fma(z2, k(C3_F32), pair(C1_F32, C2_F32));
         let half_z = mul(k(0.5), z);
         let w = sub(k(1.0), half_z);
-        let sin_r = add(r, add(mul(mul(r, z), sin_poly), mul(r_lo, w)));
+        let sin_r = add(r, fma(mul(r, z), sin_poly, mul(r_lo, w)));
         let cos_r = add(
             w,
             add(
@@ -281,6 +281,24 @@ fn fast_f64(x: f64) -> (f64, f64) {
     quadrant_f64(quadrant, sin_r, cos_r)
 }
 
+/// [`fma_f64`] for `f32`.
+#[inline(always)]
+fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
+    #[cfg(all(target_arch = "x86_64", target_feature = "fma"))]
+    {
+        use core::arch::x86_64::{_mm_cvtss_f32, _mm_fmadd_ss, _mm_set_ss};
+        #[allow(unsafe_code)]
+        // SAFETY: compiled only when the build enables FMA, the intrinsic's one requirement.
+        unsafe {
+            _mm_cvtss_f32(_mm_fmadd_ss(_mm_set_ss(a), _mm_set_ss(b), _mm_set_ss(c)))
+        }
+    }
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "fma")))]
+    {
+        a * b + c
+    }
+}
+
 #[inline(always)]
 fn fast_f32(x: f32) -> (f32, f32) {
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f32!(
@@ -288,7 +306,8 @@ fn fast_f32(x: f32) -> (f32, f32) {
         |c: f32| c,
         |a: f32, b: f32| a + b,
         |a: f32, b: f32| a - b,
-        |a: f32, b: f32| a * b
+        |a: f32, b: f32| a * b,
+        fma_f32
     );
     quadrant_f32(shifted.to_bits(), sin_r, cos_r)
 }
@@ -580,6 +599,16 @@ mod quads {
         out
     }
 
+    /// `a·b + c` on four lanes, fused where the build has FMA (as `super::fma_f32`).
+    #[inline]
+    #[target_feature(enable = "sse2")]
+    unsafe fn fma(a: __m128, b: __m128, c: __m128) -> __m128 {
+        #[cfg(target_feature = "fma")]
+        return core::arch::x86_64::_mm_fmadd_ps(a, b, c);
+        #[cfg(not(target_feature = "fma"))]
+        return _mm_add_ps(_mm_mul_ps(a, b), c);
+    }
+
     /// Whether all four `|x|` lie in `[TINY_F32, BOUND_F32]` (a NaN does not).
     #[inline]
     #[target_feature(enable = "sse2")]
@@ -601,7 +630,8 @@ mod quads {
             |c: f32| _mm_set1_ps(c),
             |a, b| _mm_add_ps(a, b),
             |a, b| _mm_sub_ps(a, b),
-            |a, b| _mm_mul_ps(a, b)
+            |a, b| _mm_mul_ps(a, b),
+            |a, b, c| fma(a, b, c)
         );
 
         // k mod 4 is in the low bits of `shifted`: odd k swaps sine and cosine.
