@@ -168,10 +168,11 @@ macro_rules! reduce_and_evaluate_f64 {
         // Then |r| > 400·|n·P3| over the whole range, so the second Fast2Sum is valid too. `e`
         // goes into `r_lo` rather than `r`, off the critical path (|r_lo| stays below an ulp
         // of `r`).
-        let a = sub(x, mul(n, k(P1_F64)));
+        // Exact products: fusing them with their subtraction changes no bit, only the chain.
+        let a = fma(n, k(-P1_F64), x);
         let b = mul(n, k(P2_F64));
         let c = mul(n, k(P3_F64));
-        let s = sub(a, b);
+        let s = fma(n, k(-P2_F64), a);
         let e = sub(sub(a, s), b);
         let r = sub(s, c);
         let r_lo = add(sub(sub(s, r), c), e);
