@@ -217,13 +217,14 @@ macro_rules! reduce_and_evaluate_f32 {
         // x − n·P1, n·P2, n·P3 are exact. a − b is exact below 2^-5 (grid 2^-29), and above it
         // |a| > |b|: Fast2Sum. s − c has no such margin: TwoSum. |r| > 400·|n·P4|: Fast2Sum.
         // The errors go into `r_lo`, off the critical path.
-        let a = sub(x, mul(n, k(P1_F32)));
+        // Exact products: fusing them with their subtraction changes no bit, only the chain.
+        let a = fma(n, k(-P1_F32), x);
         let b = mul(n, k(P2_F32));
         let c = mul(n, k(P3_F32));
         let d = mul(n, k(P4_F32));
-        let s = sub(a, b);
+        let s = fma(n, k(-P2_F32), a);
         let e1 = sub(sub(a, s), b);
-        let t = sub(s, c);
+        let t = fma(n, k(-P3_F32), s);
         let t_s = sub(t, s);
         let e2 = sub(sub(s, sub(t, t_s)), add(c, t_s));
         let r = sub(t, d);
