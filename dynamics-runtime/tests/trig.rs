@@ -486,12 +486,28 @@ fn f32_exhaustive_fast_range() {
     worst.check("f32, every |x| <= 2^12", MAX_ULP_F32);
 }
 
+/// Asserts that `sin_cos_4` of the four arguments `$x` (of type `$t`) equals `Real::sin_cos` of
+/// each, bit for bit.
+macro_rules! assert_four_equal_one {
+    ($t:ty, $x:expr) => {{
+        let x: [$t; 4] = $x;
+        let (s4, c4) = <$t>::sin_cos_4(x);
+        for k in 0..4 {
+            let (s, c) = Real::sin_cos(x[k]);
+            assert_eq!(
+                (s4[k].to_bits(), c4[k].to_bits()),
+                (s.to_bits(), c.to_bits()),
+                "{x:?}"
+            );
+        }
+    }};
+}
+
 /// Four at once equals one at a time, bit for bit, in and out of the fast range. On x86-64 this
 /// checks the vector paths: SSE2 pairs for `f64` and SSE quads for `f32` in a default build, AVX2
 /// lanes for `f64` with `RUSTFLAGS="-C target-cpu=native"` (`.ci/run` runs it both ways).
 #[test]
 fn four_at_once_equal_one_at_a_time() {
-    use dynamics_runtime::Real;
     let mut state = 0x2545_f491_4f6c_dd1d_u64;
     let mut next = || {
         state ^= state << 13;
@@ -511,27 +527,8 @@ fn four_at_once_equal_one_at_a_time() {
                 _ => (u - 0.5) * 1e6,
             };
         }
-        let (s4, c4) = f64::sin_cos_4(x);
-        for i in 0..4 {
-            let (s, c) = Real::sin_cos(x[i]);
-            assert_eq!(
-                (s4[i].to_bits(), c4[i].to_bits()),
-                (s.to_bits(), c.to_bits()),
-                "{}",
-                x[i]
-            );
-        }
-        let y = x.map(|v| v as f32);
-        let (s4, c4) = f32::sin_cos_4(y);
-        for i in 0..4 {
-            let (s, c) = Real::sin_cos(y[i]);
-            assert_eq!(
-                (s4[i].to_bits(), c4[i].to_bits()),
-                (s.to_bits(), c.to_bits()),
-                "{}",
-                y[i]
-            );
-        }
+        assert_four_equal_one!(f64, x);
+        assert_four_equal_one!(f32, x.map(|v| v as f32));
     }
     // The edges of the fast range, where the four-lane test decides between the paths.
     let tiny = 2f64.powi(-27); // `TINY_F64`
@@ -551,16 +548,7 @@ fn four_at_once_equal_one_at_a_time() {
     ];
     for (i, &a) in edges.iter().enumerate() {
         for &b in &edges[i..] {
-            let x = [a, 1.0, b, -0.5];
-            let (s4, c4) = f64::sin_cos_4(x);
-            for k in 0..4 {
-                let (s, c) = Real::sin_cos(x[k]);
-                assert_eq!(
-                    (s4[k].to_bits(), c4[k].to_bits()),
-                    (s.to_bits(), c.to_bits()),
-                    "{x:?}"
-                );
-            }
+            assert_four_equal_one!(f64, [a, 1.0, b, -0.5]);
         }
     }
     let tiny = 2f32.powi(-12); // `TINY_F32`
@@ -578,16 +566,7 @@ fn four_at_once_equal_one_at_a_time() {
     ];
     for (i, &a) in edges.iter().enumerate() {
         for &b in &edges[i..] {
-            let y = [a, 1.0, b, -0.5];
-            let (s4, c4) = f32::sin_cos_4(y);
-            for k in 0..4 {
-                let (s, c) = Real::sin_cos(y[k]);
-                assert_eq!(
-                    (s4[k].to_bits(), c4[k].to_bits()),
-                    (s.to_bits(), c.to_bits()),
-                    "{y:?}"
-                );
-            }
+            assert_four_equal_one!(f32, [a, 1.0, b, -0.5]);
         }
     }
 }
