@@ -260,78 +260,78 @@ mod __dynamics {
         let u1 = s5 * s5;
         let u2 = s5 * c5;
         let u3 = k38.mul_add(u1, k17);
-        let u4 = c5 * c5 - u1;
+        let u4 = -(-c5).mul_add(c5, u1);
         let u5 = k6 + u3;
         /// D44 (6.43) + actuator inertia
-        let m4_4 = k22 + (k39 - u3);
+        let m4_4 = k22 + k39 - u3;
         let u6 = c4 * s5;
         let u7 = s4 * s5;
         let u8 = s4 * s4;
         let u9 = s4 * c4;
         let u10 = k40 + u5;
-        let u11 = u5 - u8 * u10;
+        let u11 = (-u8).mul_add(u10, u5);
         let u12 = u9 * u10;
         let u13 = c4 * u2;
         let u14 = k37 * u13;
         let u15 = k41 * u6;
         let u16 = k42 * c5;
-        let u17 = m4_4 + u15;
+        let u17 = u15 + m4_4;
         let u18 = u15 + u17;
-        let u19 = u15 + u16;
+        let u19 = u16 + u15;
         let u20 = k44 * u6;
         let u21 = k43 * u7;
-        let u22 = k41 * u7 - u12;
+        let u22 = -(-k41).mul_add(u7, u12);
         let u23 = k42 * u7;
         /// D34 = D43 (6.43)
-        let m3_4 = k44.mul_add(u7, k38 * (s4 * u2));
+        let m3_4 = k38.mul_add(s4 * u2, k44 * u7);
         let u24 = k19.mul_add(u6, k24);
         let u25 = k16.mul_add(c5, k27);
-        let u26 = k29 + (u16 + (u11 + u16));
+        let u26 = u16 + (k29 + u16) + u11;
         /// D33 (6.43) + actuator inertia
-        let m3_3 = k28 + (u19 + (k20 + u5 - u11 + u19));
-        let u27 = k26 + (u14 - k43.mul_add(c5, u20));
+        let m3_3 = k28 + k20 + u19 + (u19 + u5) - u11;
+        let u27 = u14 + ((-k43).mul_add(c5, k26) - u20);
         let u28 = k14 + m3_4;
         let u29 = c3 * u24;
         let u30 = s3 * u25;
         let u31 = u29 - u30;
         let u32 = s3 * u24;
         let u33 = c3 * u25;
-        let u34 = u32 + u33;
+        let u34 = u33 + u32;
         let u35 = s3 * s3;
         let u36 = s3 * c3;
         let u37 = u26 - u18;
         let u38 = u27 * u36;
-        let u39 = k45.mul_add(u38, u26 - u35 * u37);
-        let u40 = c3 * c3 - u35;
-        let u41 = u27.mul_add(u40, u36 * u37);
-        let u42 = c3 * u22 - s3 * u28;
+        let u39 = (-u35).mul_add(u37, k45.mul_add(u38, u26));
+        let u40 = -(-c3).mul_add(c3, u35);
+        let u41 = u36.mul_add(u37, u27 * u40);
+        let u42 = (-s3).mul_add(u28, c3 * u22);
         let u43 = s3 * u22;
         let u44 = c3 * u28;
         let u45 = k2 * u31;
         let u46 = k46 * u7;
-        let u47 = u45 + u46;
-        let u48 = u47 + (u18 + u26 - u39 + u47);
+        let u47 = u46 + u45;
+        let u48 = u18 + u47 + (u47 + u26) - u39;
         /// D23 = D32 (6.43)
-        let m2_3 = m3_3 + u45;
-        let u49 = k33 + (u46 + (u39 + u46));
+        let m2_3 = u45 + m3_3;
+        let u49 = u46 + (k33 + u46) + u39;
         /// D22 (6.43) + actuator inertia
-        let m2_2 = k31 + (u45 + m2_3);
-        let u50 = k10 + k23.mul_add(u34, u41);
-        let u51 = k32 + (u42 - k3.mul_add(u31, u23));
-        let u52 = k12 + k47.mul_add(u34, u43 + u44);
+        let m2_2 = k31 + u45 + m2_3;
+        let u50 = k23.mul_add(u34, k10) + u41;
+        let u51 = (-k3).mul_add(u31, k32 - u23) + u42;
+        let u52 = u43 + k47.mul_add(u34, k12 + u44);
         let u53 = s2 * s2;
         let u54 = s2 * c2;
         let u55 = u49 - u48;
-        let u56 = u50.mul_add(c2 * c2 - u53, u54 * u55);
-        let u57 = c2 * u51 - s2 * u52;
+        let u56 = u54.mul_add(u55, u50 * (-(-c2).mul_add(c2, u53)));
+        let u57 = (-s2).mul_add(u52, c2 * u51);
         /// D12 = D21 (6.43)
-        let m1_2 = c2.mul_add(u52, s2 * u51);
+        let m1_2 = s2.mul_add(u51, c2 * u52);
         /// D11 (6.43) + actuator inertia
-        let m1_1 = k34 + (u48 + u49 - k45.mul_add(u50 * u54, u49 - u53 * u55));
-        let u58 = -u33 - u32;
+        let m1_1 = k34 + u48 + (u49 - u49) + (-k45).mul_add(u50 * u54, u53 * u55);
+        let u58 = -(u33 + u32);
         let u59 = s2 * u58;
         let u60 = k42 * u6;
-        let u61 = u14 + u60;
+        let u61 = u60 + u14;
         let u62 = c3 * u7;
         let u63 = s3 * u7;
         let u64 = k46 * u62;
@@ -348,15 +348,15 @@ mod __dynamics {
         let u73 = k42 * u67;
         let u74 = k20.mul_add(s4, u70);
         /// D35 = D53 (6.43)
-        let m3_5 = u69 + (u71 + u73);
+        let m3_5 = u73 + (u69 + u71);
         let u75 = s3 * u68;
-        let u76 = c3 * u67 - s3 * s5;
+        let u76 = (-s3).mul_add(s5, c3 * u67);
         let u77 = s3 * u67;
         let u78 = c3 * s5;
-        let u79 = u77 + u78;
+        let u79 = u78 + u77;
         let u80 = k48 * u76;
         let u81 = k44 * u68;
-        let u82 = u80 + u81;
+        let u82 = u81 + u80;
         /// D25 = D52 (6.43)
         let m2_5 = k44.mul_add(u79, m3_5);
         let u83 = s2 * u76;
@@ -370,20 +370,22 @@ mod __dynamics {
         let u87 = s2 * c3;
         let u88 = c2 * s3;
         let u89 = u87 + u88;
-        let u90 = c2 * c3 - s2 * s3;
+        let u90 = (-s2).mul_add(s3, c2 * c3);
         /// D13 = D31 (6.43)
-        let m1_3 = k47.mul_add(s2 * u31 - c2 * u58, u28.mul_add(u90, u22 * u89));
+        let m1_3 = u22
+            .mul_add(u89, k47.mul_add((-c2).mul_add(u58, s2 * u31), u28 * u90));
         /// D14 = D41 (6.43)
-        let m1_4 = c2.mul_add(u65, k48 * (s2 * u63)) + u17.mul_add(u90, u61 * u89);
+        let m1_4 = u17.mul_add(u90, u61.mul_add(u89, c2.mul_add(u65, k48 * (s2 * u63))));
         /// D15 = D51 (6.43)
-        let m1_5 = c2.mul_add(u82, k46 * (s2 * u79)) + k41.mul_add(u68 * u90, u74 * u89);
+        let m1_5 = c2
+            .mul_add(u82, k46.mul_add(s2 * u79, k41.mul_add(u68 * u90, u74 * u89)));
         let u91 = c5 * u90;
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * (u6 * u89 - u91);
+        let m1_6 = k36 * (-(-u6).mul_add(u89, u91));
         /// D2 (6.45), gravity and spring
-        let g2 = k49 * (s2 * (k8 + u34) - c2 * (k30 + u31));
+        let g2 = k49 * (-c2).mul_add(k30 + u31, s2 * (k8 + u34));
         /// D3 (6.45), gravity and spring
-        let g3 = k49 * (u25 * u89 - u24 * u90);
+        let g3 = k49 * (-u24).mul_add(u90, u25 * u89);
         let u92 = c4 * u89;
         /// D4 (6.45), gravity and spring
         let g4 = k52 * (s5 * (s4 * u89));
@@ -396,30 +398,34 @@ mod __dynamics {
         /// potential energy
         let p = -k51
             .mul_add(
-                u91 - s5 * u92,
-                k75 + k56.mul_add(c2, k76 * s2) + k59.mul_add(u90, k77 * u89),
+                (-s5).mul_add(u92, u91),
+                k59.mul_add(u90, k77.mul_add(u89, k56.mul_add(c2, k76.mul_add(s2, k75)))),
             );
         let u97 = k45 * u41;
         let u98 = k2 * u58;
         let u99 = k42 * u62;
         let u100 = k44 * u76;
         let u101 = k45 * u12;
-        let u102 = u21 + k35.mul_add(u12, u21);
+        let u102 = k35.mul_add(u12, u21 + u21);
         let u103 = k38.mul_add(u13, u20);
         let u104 = k80.mul_add(u7, u101);
-        let u105 = k45.mul_add(m3_4 * u36, u101 - u35 * u104);
+        let u105 = (-u35).mul_add(u104, k45.mul_add(m3_4 * u36, u101));
         let u106 = k46 * u6;
-        let u107 = u106 + (u105 + u106);
-        let u108 = u99 + u106;
-        let u109 = u108 + (k79.mul_add(u7, u101) - u105 + u108);
+        let u107 = u106 + u106 + u105;
+        let u108 = u106 + u99;
+        let u109 = u108 + k79.mul_add(u7, u108) + u101 - u105;
         let u110 = u99 + u102;
         let u111 = u99 + u110;
-        let u112 = u107 + u109
-            - k45
-                .mul_add(
-                    u54 * k44.mul_add(u63, m3_4.mul_add(u40, u36 * u104)),
-                    u107 - u53 * (u107 - u109),
-                );
+        let u112 = u53
+            .mul_add(
+                u107 - u109,
+                u107 + u109
+                    - k45
+                        .mul_add(
+                            u54 * u36.mul_add(u104, m3_4.mul_add(u40, k44 * u63)),
+                            u107,
+                        ),
+            );
         let u113 = k42.mul_add(u86, u103);
         let u114 = k41 * u67;
         let u115 = k40.mul_add(s4, u81);
@@ -427,75 +433,87 @@ mod __dynamics {
         let u117 = u115 + u116;
         let u118 = u2 * u8;
         let u119 = k44 * s5;
-        let u120 = u119 + k82.mul_add(u2 - u118, u119);
+        let u120 = k82.mul_add(u2 - u118, u119 + u119);
         let u121 = k81.mul_add(u2, u114);
         let u122 = u114 + u121;
-        let u123 = u114 + u119;
+        let u123 = u119 + u114;
         let u124 = u123 + k82.mul_add(u118, u123);
         let u125 = k81.mul_add(u2 * u9, k41 * u68);
         let u126 = u120 - u122;
         let u127 = k46 * u68;
-        let u128 = u100 + u127;
+        let u128 = u127 + u100;
         let u129 = u100 + u124;
         let u130 = u100 + u129;
         let u131 = k41.mul_add(c5, u20);
-        let u132 = -u87 - u88;
-        let u133 = u28.mul_add(u132, u22 * u90);
+        let u132 = -(u87 + u88);
+        let u133 = u22.mul_add(u90, u28 * u132);
         let u134 = k47.mul_add(c2.mul_add(u31, u59), u133);
         let u135 = u17.mul_add(u132, u61 * u90);
-        let u136 = k48 * u66 - s2 * u65 + u135;
+        let u136 = (-s2).mul_add(u65, k48 * u66) + u135;
         let u137 = k41.mul_add(u68 * u132, u74 * u90);
-        let u138 = k46 * u84 - s2 * u82 + u137;
-        let u139 = u6 * u90 - c5 * u132;
-        let u140 = u98 + k35.mul_add(u41, u98);
-        let u141 = u97 + u140
-            - k45
-                .mul_add(
-                    u54 * k23.mul_add(u31, k78.mul_add(u38, u37 * u40)),
-                    u97 - u53 * (u97 - u140),
-                );
-        let u142 = s2.mul_add(k47.mul_add(u58, -u43 - u44), c2 * k47.mul_add(u31, u42));
-        let u143 = k47.mul_add(u59 - c2 * (u30 - u29), u133);
+        let u138 = (-s2).mul_add(u82, k46.mul_add(u84, u137));
+        let u139 = (-c5).mul_add(u132, u6 * u90);
+        let u140 = k35.mul_add(u41, u98 + u98);
+        let u141 = u53
+            .mul_add(
+                u97 - u140,
+                u97 - u97
+                    + (-k45)
+                        .mul_add(
+                            u54 * u37.mul_add(u40, k78.mul_add(u38, k23 * u31)),
+                            u140,
+                        ),
+            );
+        let u142 = c2
+            .mul_add(k47.mul_add(u31, u42), s2 * (-((-k47).mul_add(u58, u44) + u43)));
+        let u143 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u133);
         let u144 = k48 * s2.mul_add(u62, u66);
-        let u145 = u135 + u144;
-        let u146 = k46.mul_add(u83 - c2 * (-u77 - u78), u137);
-        let u147 = u15 - u10 * (c4 * c4 - u8);
+        let u145 = u144 + u135;
+        let u146 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u137);
+        let u147 = (-u10).mul_add(-(-c4).mul_add(c4, u8), u15);
         let u148 = c2
             .mul_add(
-                k48.mul_add(u63, s3.mul_add(u147, c3 * u103)),
-                s2 * (c3 * u147 - s3 * u103 - (u60 + u64)),
+                s3.mul_add(u147, c3.mul_add(u103, k48 * u63)),
+                s2 * (-(-c3).mul_add(u147, s3.mul_add(u103, u60 + u64))),
             );
-        let u149 = u144 + u90.mul_add(u103, u89 * u147);
+        let u149 = u89.mul_add(u147, u90.mul_add(u103, u144));
         let u150 = k43 * (u7 * u90);
-        let u151 = c2.mul_add(k46.mul_add(u85, u23), k48 * (s2 * u86))
-            + m3_4.mul_add(u89, u150);
+        let u151 = k48.mul_add(s2 * u86, u150)
+            + m3_4.mul_add(u89, c2 * k46.mul_add(u85, u23));
         let u152 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
-        let u153 = u152 + k41.mul_add(u67 * u90, u89 * (u69 + u73));
+        let u153 = k41.mul_add(u67 * u90, u89 * (u69 + u73)) + u152;
         let u154 = u7 * u89;
         let u155 = k37 * (c4 * u4);
         let u156 = u155 - (u71 + u72);
         let u157 = k38.mul_add(s4 * u4, u81);
-        let u158 = k45.mul_add(u36 * u156, u120 - u35 * u126);
-        let u159 = u127 + (u127 + u158);
-        let u160 = u128 + (u128 + (u120 + u122 - u158));
-        let u161 = u159 + u160
-            - k45
-                .mul_add(
-                    u54 * k42.mul_add(u79, u40.mul_add(u156, u36 * u126)),
-                    u159 - u53 * (u159 - u160),
-                );
+        let u158 = k45.mul_add(u36 * u156, (-u35).mul_add(u126, u120));
+        let u159 = u127 + u127 + u158;
+        let u160 = u122 + u128 + (u128 + u120) - u158;
+        let u161 = u53
+            .mul_add(
+                u159 - u160,
+                u159 + u160
+                    - k45
+                        .mul_add(
+                            u54 * u36.mul_add(u126, u40.mul_add(u156, k42 * u79)),
+                            u159,
+                        ),
+            );
         let u162 = c2
             .mul_add(
-                k46.mul_add(u79, c3.mul_add(u157, s3 * u125)),
-                s2 * (c3 * u125 - s3 * u157 - (u70 + u80)),
+                c3.mul_add(u157, s3.mul_add(u125, k46 * u79)),
+                s2 * (-s3.mul_add(u157, (-c3).mul_add(u125, u70 + u80))),
             );
         let u163 = u116 + u157;
-        let u164 = c3 * c5 - u86;
+        let u164 = -(-c3).mul_add(c5, u86);
         let u165 = k44.mul_add(u164, u131);
-        let u166 = k46.mul_add(u83 + u84, u90.mul_add(u157, u89 * u125));
-        let u167 = u152 + u90.mul_add(u121, u89 * (u73 + u155));
-        let u168 = c2.mul_add(k48.mul_add(-u85 - s3 * c5, u23), k46 * (s2 * u164))
-            + k44.mul_add(u154, u150);
+        let u166 = u90.mul_add(u157, k46.mul_add(u83 + u84, u89 * u125));
+        let u167 = u89.mul_add(u73 + u155, u90.mul_add(u121, u152));
+        let u168 = c2
+            .mul_add(
+                k48.mul_add(-s3.mul_add(c5, u85), u23),
+                k46.mul_add(s2 * u164, k44.mul_add(u154, u150)),
+            );
         let u169 = u67.mul_add(u89, u93);
         Configuration {
             k1,
@@ -756,12 +774,12 @@ mod __dynamics {
         let v6 = v2 * v2;
         let v7 = qd2 * qd2;
         let v8 = v1 * v2;
-        let v9 = v6 + v7;
+        let v9 = v7 + v6;
         let v10 = v5 + v6;
         let v11 = v6 - v7;
         let v12 = v7 - v5;
         let v13 = v5 - v6;
-        let v14 = k54.mul_add(v8, k10 * v13);
+        let v14 = k10.mul_add(v13, k54 * v8);
         let v15 = k47.mul_add(v10, k64 * v4);
         let v16 = qd2 + qd3;
         let v17 = v16 * v16;
@@ -777,63 +795,60 @@ mod __dynamics {
         let v27 = v17 + v23;
         let v28 = v24 - v17;
         let v29 = v23 - v24;
-        let v30 = k58.mul_add(v25, k26 * v29);
-        let v31 = k27
-            .mul_add(
-                v15,
-                k28.mul_add(v21, k14.mul_add(v28, k72.mul_add(v22, k29 * v21))),
-            );
-        let v32 = k65.mul_add(v15, k57.mul_add(v22, k13.mul_add(v25, k71 * v21)));
-        let v33 = k2.mul_add(v25, k5 * v26);
+        let v30 = k26.mul_add(v29, k58 * v25);
+        let v31 = k27.mul_add(v15, k28 * v21)
+            + k14.mul_add(v28, k72.mul_add(v22, k29 * v21));
+        let v32 = k13.mul_add(v25, k71 * v21) + k65.mul_add(v15, k57 * v22);
+        let v33 = k5.mul_add(v26, k2 * v25);
         let v34 = k23.mul_add(v27, k4 * v25);
-        let v35 = v15 + k64.mul_add(v21, k73 * v22);
+        let v35 = k64.mul_add(v21, k73.mul_add(v22, v15));
         let v36 = -(c4 * v35);
-        let v37 = c4 * v19 - s4 * v16;
-        let v38 = v18 - s4 * v19;
+        let v37 = (-s4).mul_add(v16, c4 * v19);
+        let v38 = (-s4).mul_add(v19, v18);
         let v39 = qd4 + v20;
         let v40 = qd4.mul_add(v38, c4 * v21);
-        let v41 = -(s4 * v21) - qd4 * v37;
-        let v42 = k22.mul_add(v38 * v39, k6 * v40);
+        let v41 = -qd4.mul_add(v37, s4 * v21);
+        let v42 = k6.mul_add(v40, k22 * (v38 * v39));
         let v43 = k21.mul_add(v37 * v38, k60 * v22);
-        let v44 = s5.mul_add(v39, c5 * v37);
-        let v45 = c5 * v39 - s5 * v37;
+        let v44 = c5.mul_add(v37, s5 * v39);
+        let v45 = (-s5).mul_add(v37, c5 * v39);
         let v46 = qd5 - v38;
-        let v47 = qd5.mul_add(v45, c5 * v40 - s5 * v22);
-        let v48 = -(c5 * v22) - s5 * v40 - qd5 * v44;
+        let v47 = qd5.mul_add(v45, (-s5).mul_add(v22, c5 * v40));
+        let v48 = -qd5.mul_add(v44, s5.mul_add(v40, c5 * v22));
         let v49 = v44 * v45;
         let v50 = v45 * v46;
         let v51 = v41 + v49;
-        let v52 = v46.mul_add(v46, v44 * v44);
-        let v53 = v47 + v50;
-        let v54 = k20.mul_add(v50, k17 * v47);
+        let v52 = v44.mul_add(v44, v46 * v46);
+        let v53 = v50 + v47;
+        let v54 = k17.mul_add(v47, k20 * v50);
         let v55 = k18.mul_add(v49, k40 * v41);
         let v56 = qd6 + v45;
         let v57 = k7.mul_add(v48, k15 * (v44 * v46));
         let v58 = s5.mul_add(v52, c5 * v51);
-        let v59 = s5 * v51 - c5 * v52;
+        let v59 = (-c5).mul_add(v52, s5 * v51);
         let v60 = s4.mul_add(v53, c4 * v58);
-        let v61 = s4 * v58 - c4 * v53;
+        let v61 = (-c4).mul_add(v53, s4 * v58);
         let v62 = k44.mul_add(v60, k43 * v59);
-        let v63 = k16.mul_add(v60, k27.mul_add(v25, k65 * v26));
+        let v63 = k16.mul_add(v60, k65.mul_add(v26, k27 * v25));
         let v64 = k16.mul_add(v59, k66.mul_add(v27, k24 * v25));
-        let v65 = c3.mul_add(v64, s3 * v63);
+        let v65 = s3.mul_add(v63, c3 * v64);
         let v66 = c2
             .mul_add(
-                k53.mul_add(v4, k32.mul_add(v12, k11.mul_add(v8, k62 * v3)))
-                    + k23
-                        .mul_add(
-                            k19.mul_add(v61, k70.mul_add(v21, k69 * v22)),
-                            k3 * (c3 * v63 - s3 * v64),
-                        ),
+                k3
+                    .mul_add(
+                        (-s3).mul_add(v64, c3 * v63),
+                        k23
+                            .mul_add(
+                                k19.mul_add(v61, k70.mul_add(v21, k69 * v22)),
+                                k11.mul_add(v8, k62 * v3) + k32.mul_add(v12, k53 * v4),
+                            ),
+                    ),
                 s2
                     * k47
                         .mul_add(
                             v65,
-                            k31
-                                .mul_add(
-                                    v3,
-                                    k12.mul_add(v11, k32.mul_add(v8, k63.mul_add(v4, k33 * v3))),
-                                ),
+                            k31.mul_add(v3, k32 * v8)
+                                + k12.mul_add(v11, k63.mul_add(v4, k33 * v3)),
                         ),
             );
         (
@@ -986,124 +1001,180 @@ mod __dynamics {
         let t3 = qd4 * u151;
         let t4 = qd5 * u168;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k83 * qd5.mul_add(u169, qd3.mul_add(u139, qd2 * u139) - qd4 * u154);
+        let cor1_6 = k83
+            * ((-qd4).mul_add(u154, qd2 * u139) + qd5.mul_add(u169, qd3 * u139));
         let t5 = u58 * qd3;
         let t6 = k2 * t5;
         let t7 = qd4 * u113;
         let t8 = qd5 * u165;
         let t9 = qd1 * u139;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd5.mul_add(u124, qd4 * u102);
+        let cor3_3 = k1 * qd4.mul_add(u102, qd5 * u124);
         let t10 = qd4 * u103;
         let t11 = qd5 * u131;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = k37 * (u2 * qd5);
-        let t12 = u6.mul_add(qd3, u6.mul_add(qd2, qd1 * u154));
+        let t12 = qd1.mul_add(u154, u6.mul_add(qd3, u6 * qd2));
         let t13 = s5 * qd5;
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k83 * (t12 + t13);
-        let t14 = s5.mul_add(qd4, qd1 * u169 - u68 * qd2 - u68 * qd3);
+        let cor4_6 = k83 * (t13 + t12);
+        let t14 = qd1.mul_add(u169, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k84 * t14;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = k83 * t14;
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * qd5.mul_add(u161, qd4.mul_add(u112, k35.mul_add(u56 * qd2, qd3 * u141)));
-        let t15 = qd5.mul_add(u162, qd4.mul_add(u148, qd3.mul_add(u142, t1)));
+            * (qd4.mul_add(u112, qd5 * u161) + k35.mul_add(u56 * qd2, qd3 * u141));
+        let t15 = qd5.mul_add(u162, qd4 * u148) + qd3.mul_add(u142, t1);
         let t16 = k36 * (qd6 * u139);
-        let t17 = qd5
+        let t17 = k35
             .mul_add(
-                u138,
-                qd4.mul_add(u136, qd3.mul_add(u134, k35.mul_add(u56 * qd1, t1))),
-            ) + t16;
+                u56 * qd1,
+                t1 + qd3.mul_add(u134, qd5.mul_add(u138, qd4.mul_add(u136, t16))),
+            );
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t15 + t17);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t15 - t17);
-        let t18 = qd5.mul_add(u166, qd4.mul_add(u149, qd2.mul_add(u134, t2)));
-        let t19 = t16
-            + qd5.mul_add(u146, qd4.mul_add(u145, t2 + qd2.mul_add(u142, qd1 * u141)));
+        let t18 = qd2.mul_add(u134, qd5.mul_add(u166, qd4 * u149) + t2);
+        let t19 = qd1
+            .mul_add(
+                u141,
+                qd2.mul_add(u142, qd5.mul_add(u146, qd4.mul_add(u145, t16)) + t2),
+            );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t18 + t19);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t18 - t19);
-        let t20 = qd5.mul_add(u167, t3 + qd3.mul_add(u145, qd2 * u136));
-        let t21 = k7
+        let t20 = qd2.mul_add(u136, t3) + qd5.mul_add(u167, qd3 * u145);
+        let t21 = qd1
             .mul_add(
-                qd6 * u154,
-                qd5.mul_add(u153, t3 + qd3.mul_add(u149, qd2.mul_add(u148, qd1 * u112))),
+                u112,
+                qd2
+                    .mul_add(
+                        u148,
+                        k7.mul_add(qd6 * u154, t3) + qd5.mul_add(u153, qd3 * u149),
+                    ),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t20 + t21);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t20 - t21);
-        let t22 = t4 + qd4.mul_add(u153, qd3.mul_add(u146, qd2 * u138));
-        let t23 = k36
+        let t22 = qd2.mul_add(u138, t4) + qd4.mul_add(u153, qd3 * u146);
+        let t23 = qd1
             .mul_add(
-                qd6 * u169,
-                t4 + qd4.mul_add(u167, qd3.mul_add(u166, qd2.mul_add(u162, qd1 * u161))),
+                u161,
+                qd2
+                    .mul_add(
+                        u162,
+                        k36.mul_add(qd6 * u169, t4) + qd3.mul_add(u166, qd4 * u167),
+                    ),
             );
         /// C15 = sum of D15k qd_k (6.44)
         let cor1_5 = k1 * (t22 + t23);
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t22 - t23);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd5.mul_add(u130, k64.mul_add(t5, qd4 * u111));
-        let t24 = qd5.mul_add(u129, qd4.mul_add(u110, t6));
-        let t25 = k44
+        let cor2_2 = k1 * qd4.mul_add(u111, qd5.mul_add(u130, k64 * t5));
+        let t24 = qd4.mul_add(u110, qd5.mul_add(u129, t6));
+        let t25 = qd1
             .mul_add(
-                u76 * qd5,
-                k42.mul_add(u62 * qd4, t6 + k64.mul_add(u58 * qd2, qd1 * u142)),
-            ) - qd1 * u134;
+                u142,
+                (-qd1)
+                    .mul_add(
+                        u134,
+                        k64
+                            .mul_add(
+                                u58 * qd2,
+                                k44.mul_add(u76 * qd5, k42 * (u62 * qd4)) + t6,
+                            ),
+                    ),
+            );
         /// C23 = sum of D23k qd_k (6.44)
         let cor2_3 = k1 * (t24 + t25);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t24 - t25);
         let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t7));
         let t27 = k7 * (u6 * qd6);
-        let t28 = qd5
-            .mul_add(u117, t7 + qd3.mul_add(u110, qd1.mul_add(u148, qd2 * u111))) + t27
-            - qd1 * u136;
+        let t28 = qd1
+            .mul_add(
+                u148,
+                qd2
+                    .mul_add(
+                        u111,
+                        (-qd1)
+                            .mul_add(
+                                u136,
+                                qd3.mul_add(u110, qd5.mul_add(u117, t27) + t7),
+                            ),
+                    ),
+            );
         /// C24 = sum of D24k qd_k (6.44)
         let cor2_4 = k1 * (t26 + t28);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t26 - t28);
         let t29 = t8 + qd4.mul_add(u117, k44 * (u76 * qd3));
         let t30 = k7 * (u68 * qd6);
-        let t31 = t8
-            + qd4.mul_add(u163, qd3.mul_add(u129, qd1.mul_add(u162, qd2 * u130))) + t30
-            - qd1 * u138;
+        let t31 = qd1
+            .mul_add(
+                u162,
+                qd2.mul_add(u130, t30 + t8)
+                    + (-qd1).mul_add(u138, qd4.mul_add(u163, qd3 * u129)),
+            );
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t29 + t31);
         /// C52 = sum of D52k qd_k (6.44)
         let cor5_2 = k1 * (t29 - t31);
         let t32 = u68.mul_add(qd5, u6 * qd4);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k84 * (t9 + t32);
+        let cor2_6 = k84 * (t32 + t9);
         /// C62 = sum of D62k qd_k (6.44)
         let cor6_2 = k84 * (t32 - t9);
         let t33 = qd5.mul_add(u157, t10);
-        let t34 = t27
-            + qd5.mul_add(u115, t10 + qd3.mul_add(u102, qd2.mul_add(u110, qd1 * u149)))
-            - k42.mul_add(u62 * qd2, qd1 * u145);
+        let t34 = qd2.mul_add(u110, qd1 * u149)
+            + (-qd1)
+                .mul_add(
+                    u145,
+                    qd3
+                        .mul_add(
+                            u102,
+                            t10 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u115, t27)),
+                        ),
+                );
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
         let t35 = qd4.mul_add(u115, t11);
-        let t36 = t30
-            + (t11 + qd4.mul_add(u157, qd3.mul_add(u124, qd2.mul_add(u129, qd1 * u166))))
-            - k44.mul_add(u76 * qd2, qd1 * u146);
+        let t36 = qd1
+            .mul_add(
+                u166,
+                (-qd1)
+                    .mul_add(
+                        u146,
+                        qd4.mul_add(u157, qd3 * u124)
+                            + qd2.mul_add(u129, (-k44).mul_add(u76 * qd2, t30 + t11)),
+                    ),
+            );
         /// C35 = sum of D35k qd_k (6.44)
         let cor3_5 = k1 * (t35 + t36);
         /// C53 = sum of D53k qd_k (6.44)
         let cor5_3 = k1 * (t35 - t36);
-        let t37 = k36
+        let t37 = qd2
             .mul_add(
-                s5 * qd6,
-                k81.mul_add(u2 * qd4, qd3.mul_add(u157, qd2.mul_add(u163, qd1 * u167))),
-            ) - qd3.mul_add(u115, qd2.mul_add(u117, qd1 * u153));
+                u163,
+                qd3
+                    .mul_add(
+                        u157,
+                        (-qd2)
+                            .mul_add(
+                                u117,
+                                (-qd3)
+                                    .mul_add(u115, k81.mul_add(u2 * qd4, k36 * (s5 * qd6))),
+                            ),
+                    ),
+            ) + (-qd1).mul_add(u153, qd1 * u167);
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t37;
         /// C54 = sum of D54k qd_k (6.44)
@@ -1179,37 +1250,32 @@ mod __dynamics {
         ) = motion(p_, q_, qd_);
         let [qd1, _, _, _, _, _] = *qd_;
         let t1 = s2 * qd1 * (c2 * qd1);
-        let t2 = c3 * v9 - s3 * t1;
+        let t2 = (-s3).mul_add(t1, c3 * v9);
         let t3 = s3.mul_add(v9, c3 * t1);
         let t4 = k23.mul_add(t2, v33);
         /// centripetal and Coriolis torque 6
         let cqd6 = k7 * v48;
-        let t5 = k36.mul_add(v46 * v56, k19.mul_add(v36 - s4 * t4, v54));
+        let t5 = k19.mul_add((-s4).mul_add(t4, v36), k36 * (v46 * v56)) + v54;
         /// centripetal and Coriolis torque 5
-        let cqd5 = k7
+        let cqd5 = k19
             .mul_add(
-                v44 * v56,
-                k19
-                    .mul_add(
-                        s5.mul_add(k2.mul_add(t3, v34), c5 * (c4 * t4 - s4 * v35)),
-                        v55,
-                    ),
+                c5.mul_add((-s4).mul_add(v35, c4 * t4), s5 * k2.mul_add(t3, v34)),
+                k7.mul_add(v44 * v56, v55),
             );
-        let t6 = v42 + (c5 * t5 - s5 * v57);
-        let t7 = k61 * (v37 * v39) - cqd5;
+        let t6 = c5.mul_add(t5, (-s5).mul_add(v57, v42));
+        let t7 = -(-k61).mul_add(v37 * v39, cqd5);
         /// centripetal and Coriolis torque 4
-        let cqd4 = v43 + c5.mul_add(v57, s5 * t5);
+        let cqd4 = s5.mul_add(t5, c5.mul_add(v57, v43));
         /// centripetal and Coriolis torque 3
-        let cqd3 = k68.mul_add(t2, k25 * t3) + v30 + (v62 - c4.mul_add(t7, s4 * t6));
+        let cqd3 = v30 + k68.mul_add(t2, k25 * t3) + v62 - c4.mul_add(t7, s4 * t6);
         /// centripetal and Coriolis torque 2
-        let cqd2 = v14 + k2.mul_add(v65, cqd3);
+        let cqd2 = k2.mul_add(v65, v14 + cqd3);
         /// centripetal and Coriolis torque 1
-        let cqd1 = v66
-            + u90
-                .mul_add(
-                    v32 + k43.mul_add(v61, cqd4),
-                    u89 * (v31 + k44.mul_add(v61, c4 * t6 - s4 * t7)),
-                );
+        let cqd1 = u89
+            .mul_add(
+                (-s4).mul_add(t7, c4.mul_add(t6, k44.mul_add(v61, v31))),
+                u90 * (k43.mul_add(v61, v32) + cqd4),
+            ) + v66;
         [cqd1, cqd2, cqd3, cqd4, cqd5, cqd6]
     }
     #[inline(always)]
@@ -1286,31 +1352,30 @@ mod __dynamics {
         let h6 = k7 * v48;
         let t1 = k23.mul_add(v9, u94);
         let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u95);
-        let t3 = s3.mul_add(t2, c3 * t1);
-        let t4 = c3 * t2 - s3 * t1;
+        let t3 = c3.mul_add(t1, s3 * t2);
+        let t4 = (-s3).mul_add(t1, c3 * t2);
         let t5 = v33 + t3;
-        let t6 = k36.mul_add(v46 * v56, k19.mul_add(v36 - s4 * t5, v54));
+        let t6 = k19.mul_add((-s4).mul_add(t5, v36), k36 * (v46 * v56)) + v54;
         /// centripetal, Coriolis and gravity torque 5
-        let h5 = k7
+        let h5 = k19
             .mul_add(
-                v44 * v56,
-                k19.mul_add(s5.mul_add(v34 + t4, c5 * (c4 * t5 - s4 * v35)), v55),
+                c5.mul_add((-s4).mul_add(v35, c4 * t5), s5 * (v34 + t4)),
+                k7.mul_add(v44 * v56, v55),
             );
-        let t7 = v42 + (c5 * t6 - s5 * v57);
-        let t8 = k61 * (v37 * v39) - h5;
+        let t7 = c5.mul_add(t6, (-s5).mul_add(v57, v42));
+        let t8 = -(-k61).mul_add(v37 * v39, h5);
         /// centripetal, Coriolis and gravity torque 4
-        let h4 = v43 + s5.mul_add(t6, c5 * v57);
+        let h4 = s5.mul_add(t6, c5.mul_add(v57, v43));
         /// centripetal, Coriolis and gravity torque 3
-        let h3 = v30 + k66.mul_add(t3, k24 * t4) + (v62 - c4.mul_add(t8, s4 * t7));
+        let h3 = k66.mul_add(t3, k24.mul_add(t4, v30)) + v62 - c4.mul_add(t8, s4 * t7);
         /// centripetal, Coriolis and gravity torque 2
-        let h2 = u96 + v14 + k2.mul_add(v65, h3);
+        let h2 = h3 + k2.mul_add(v65, u96 + v14);
         /// centripetal, Coriolis and gravity torque 1
-        let h1 = v66
-            + u90
-                .mul_add(
-                    v32 + k43.mul_add(v61, h4),
-                    u89 * (v31 + k44.mul_add(v61, c4 * t7 - s4 * t8)),
-                );
+        let h1 = u89
+            .mul_add(
+                (-s4).mul_add(t8, c4.mul_add(t7, k44.mul_add(v61, v31))),
+                u90 * (k43.mul_add(v61, v32) + h4),
+            ) + v66;
         [h1, h2, h3, h4, h5, h6]
     }
     #[inline(always)]
@@ -1417,115 +1482,146 @@ mod __dynamics {
         let t12 = v45 * v46;
         let t13 = s2 * qdd1;
         let t14 = c2 * qdd1;
-        let t15 = t3 + t13;
+        let t15 = t13 + t3;
         let t16 = qdd2 + t5;
-        let t17 = t4 - (t14 - t4);
+        let t17 = t4 + (t4 - t14);
         let t18 = k2.mul_add(t17, k47 * v10);
-        let t19 = u94 + k3.mul_add(t14, k23 * v9);
-        let t20 = u95 + k47.mul_add(t13, k2 * t16);
+        let t19 = k23.mul_add(v9, k3.mul_add(t14, u94));
+        let t20 = k2.mul_add(t16, k47.mul_add(t13, u95));
         let t21 = s3.mul_add(t20, c3 * t19);
-        let t22 = c3 * t20 - s3 * t19;
+        let t22 = (-s3).mul_add(t19, c3 * t20);
         let t23 = qdd2 + qdd3;
         let t24 = u90 * qdd1;
         let t25 = u89.mul_add(qdd1, t8);
         let t26 = t24 - t9;
         let t27 = t10 - t23;
-        let t28 = t10 + t23;
+        let t28 = t23 + t10;
         let t29 = t9 - t26;
         let t30 = t8 + t25;
         let t31 = t21 + k2.mul_add(t27, k5 * v26);
-        let t32 = t18 + k2.mul_add(t30, k4 * t29);
-        let t33 = qd4.mul_add(v38, c4 * t25 - s4 * t23);
+        let t32 = k2.mul_add(t30, k4.mul_add(t29, t18));
+        let t33 = c4.mul_add(t25, (-s4).mul_add(t23, qd4 * v38));
         let t34 = qdd4 + t26;
-        let t35 = qd5.mul_add(v45, s5.mul_add(t34, c5 * t33));
-        let t36 = qdd5 - (-(c4 * t23) - s4 * t25 - qd4 * v37);
+        let t35 = c5.mul_add(t33, qd5.mul_add(v45, s5 * t34));
+        let t36 = qd4.mul_add(v37, s4.mul_add(t25, c4.mul_add(t23, qdd5)));
         let t37 = t11 - t36;
         let t38 = t12 + t35;
         /// T6 (6.46)
-        let tau6 = k7 * (qdd6 + (c5 * t34 - s5 * t33 - qd5 * v44));
-        let t39 = k36
+        let tau6 = k7 * (-s5).mul_add(t33, (-qd5).mul_add(v44, c5.mul_add(t34, qdd6)));
+        let t39 = k19
             .mul_add(
-                v46 * v56,
-                k19.mul_add(-(c4 * t32) - s4 * t31, k17.mul_add(t35, k20 * t12)),
+                -c4.mul_add(t32, s4 * t31),
+                k17.mul_add(t35, k36.mul_add(v46 * v56, k20 * t12)),
             );
         let t40 = k15.mul_add(v44 * v46, tau6);
         /// T5 (6.46)
-        let tau5 = k7
+        let tau5 = k19
             .mul_add(
-                v44 * v56,
-                k19
+                c5
                     .mul_add(
-                        s5
-                            .mul_add(
-                                t22 + k4.mul_add(t28, k23 * v27),
-                                c5 * (c4 * t31 - s4 * t32),
-                            ),
-                        k20.mul_add(t36, k18 * t11),
+                        (-s4).mul_add(t32, c4 * t31),
+                        s5 * (t22 + k4.mul_add(t28, k23 * v27)),
                     ),
+                k7.mul_add(v44 * v56, k20.mul_add(t36, k18 * t11)),
             );
         let t41 = c5.mul_add(t37, s5 * v52);
-        let t42 = s5 * t37 - c5 * v52;
-        let t43 = k6.mul_add(t33, k22 * (v38 * v39)) + (c5 * t39 - s5 * t40);
-        let t44 = k61 * (v37 * v39) - tau5;
+        let t42 = (-c5).mul_add(v52, s5 * t37);
+        let t43 = c5
+            .mul_add(t39, (-s5).mul_add(t40, k6.mul_add(t33, k22 * (v38 * v39))));
+        let t44 = -(-k61).mul_add(v37 * v39, tau5);
         /// T4 (6.46)
-        let tau4 = k22.mul_add(t34, k21 * (v37 * v38)) + c5.mul_add(t40, s5 * t39);
+        let tau4 = s5.mul_add(t39, c5.mul_add(t40, k22.mul_add(t34, k21 * (v37 * v38))));
         let t45 = s4.mul_add(t38, c4 * t41);
-        let t46 = s4 * t41 - c4 * t38;
+        let t46 = (-c4).mul_add(t38, s4 * t41);
         let t47 = k16.mul_add(t45, k27.mul_add(t27, k65 * v26));
         let t48 = k16.mul_add(t42, k24.mul_add(t28, k66 * v27));
         /// T3 (6.46)
-        let tau3 = k66.mul_add(t21, k24 * t22)
-            + k58.mul_add(t10, k26.mul_add(v29, k14.mul_add(t24, k28 * t23)))
-            + (k44.mul_add(t45, k43 * t42) - c4.mul_add(t44, s4 * t43));
-        let t49 = c3.mul_add(t48, s3 * t47);
-        /// T2 (6.46)
-        let tau2 = u96
-            + k54
-                .mul_add(
-                    t5,
-                    k10.mul_add(v13, k12.mul_add(t14, k32.mul_add(t13, k31 * qdd2))),
-                ) + k2.mul_add(t49, tau3);
-        /// T1 (6.46)
-        let tau1 = k34
+        let tau3 = (-c4)
             .mul_add(
-                qdd1,
-                c2
+                t44,
+                (-s4)
                     .mul_add(
-                        k53
+                        t43,
+                        k44
                             .mul_add(
-                                t4,
-                                k32.mul_add(v12, k11.mul_add(t5 - qdd2, k10 * (t3 + t15))),
-                            )
-                            + k23
-                                .mul_add(
-                                    k19.mul_add(t46, k27.mul_add(t30, k24 * t29)),
-                                    k3 * (c3 * t47 - s3 * t48),
-                                ),
-                        s2
-                            * k47
-                                .mul_add(
-                                    t49,
-                                    k31
-                                        .mul_add(
-                                            t3,
-                                            k12
-                                                .mul_add(v11, k32.mul_add(t16, k9.mul_add(t17, k33 * t15))),
-                                        ),
-                                ),
-                    )
-                    + u90
-                        .mul_add(
-                            k65
-                                .mul_add(t18, k57.mul_add(t9, k13.mul_add(t27, k26 * t30)))
-                                + k43.mul_add(t46, tau4),
-                            u89
-                                * (k27
+                                t45,
+                                k43
                                     .mul_add(
-                                        t18,
-                                        k28
-                                            .mul_add(t8, k14.mul_add(v28, k67.mul_add(t29, k29 * t25))),
-                                    ) + k44.mul_add(t46, c4 * t43 - s4 * t44)),
-                        ),
+                                        t42,
+                                        k66
+                                            .mul_add(
+                                                t21,
+                                                k24
+                                                    .mul_add(
+                                                        t22,
+                                                        k26
+                                                            .mul_add(v29, k58.mul_add(t10, k14.mul_add(t24, k28 * t23))),
+                                                    ),
+                                            ),
+                                    ),
+                            ),
+                    ),
+            );
+        let t49 = s3.mul_add(t47, c3 * t48);
+        /// T2 (6.46)
+        let tau2 = k2
+            .mul_add(
+                t49,
+                k54.mul_add(t5, k31.mul_add(qdd2, u96))
+                    + k10.mul_add(v13, k12.mul_add(t14, k32 * t13)) + tau3,
+            );
+        /// T1 (6.46)
+        let tau1 = c2
+            .mul_add(
+                k3
+                    .mul_add(
+                        (-s3).mul_add(t48, c3 * t47),
+                        k23
+                            .mul_add(
+                                k19.mul_add(t46, k27.mul_add(t30, k24 * t29)),
+                                k10
+                                    .mul_add(
+                                        t3 + t15,
+                                        k11.mul_add(t5 - qdd2, k32.mul_add(v12, k53 * t4)),
+                                    ),
+                            ),
+                    ),
+                s2
+                    .mul_add(
+                        k47
+                            .mul_add(
+                                t49,
+                                k32.mul_add(t16, k33 * t15)
+                                    + k9.mul_add(t17, k12.mul_add(v11, k31 * t3)),
+                            ),
+                        u89
+                            .mul_add(
+                                (-s4)
+                                    .mul_add(
+                                        t44,
+                                        c4
+                                            .mul_add(
+                                                t43,
+                                                k44
+                                                    .mul_add(
+                                                        t46,
+                                                        k29.mul_add(t25, k14.mul_add(v28, k28 * t8))
+                                                            + k67.mul_add(t29, k27 * t18),
+                                                    ),
+                                            ),
+                                    ),
+                                u90
+                                    .mul_add(
+                                        k43
+                                            .mul_add(
+                                                t46,
+                                                k26
+                                                    .mul_add(t30, k65.mul_add(t18, k13.mul_add(t27, k57 * t9))),
+                                            ) + tau4,
+                                        k34 * qdd1,
+                                    ),
+                            ),
+                    ),
             );
         [tau1, tau2, tau3, tau4, tau5, tau6]
     }
@@ -1583,61 +1679,61 @@ mod __dynamics {
         let t3 = s3 * t2;
         let t4 = c3.mul_add(t1, t3);
         let t5 = c3 * t2;
-        let t6 = t5 - s3 * t1;
-        let t7 = c4 * t4 - s4 * v16;
+        let t6 = (-s3).mul_add(t1, t5);
+        let t7 = (-s4).mul_add(v16, c4 * t4);
         let t8 = qd4 + t6;
-        let t9 = s5.mul_add(t8, c5 * t7);
-        let t10 = qd5 - (v18 - s4 * t4);
-        let t11 = qd6 + (c5 * t8 - s5 * t7);
+        let t9 = c5.mul_add(t7, s5 * t8);
+        let t10 = s4.mul_add(t4, qd5 - v18);
+        let t11 = (-s5).mul_add(t7, c5.mul_add(t8, qd6));
         let t12 = k47.mul_add(t1, k2 * qd2);
         let t13 = s3.mul_add(t12, k3 * t5);
-        let t14 = k47.mul_add(t3, c3 * t12);
+        let t14 = c3.mul_add(t12, k47 * t3);
         let t15 = k23.mul_add(v16, t13);
-        let t16 = k23.mul_add(t2, k5.mul_add(t6, k2 * t4));
+        let t16 = k5.mul_add(t6, k2.mul_add(t4, k23 * t2));
         k1
-            * k7
+            * k74
                 .mul_add(
-                    t11 * t11,
-                    k74
+                    t10
                         .mul_add(
-                            t9
+                            c5
                                 .mul_add(
-                                    -(c4 * t16) - s4 * t15,
-                                    t10
-                                        * s5
-                                            .mul_add(k4.mul_add(v16, t14), c5 * (c4 * t15 - s4 * t16)),
+                                    (-s4).mul_add(t16, c4 * t15),
+                                    s5 * k4.mul_add(v16, t14),
                                 ),
-                            k35
-                                .mul_add(
-                                    k23
-                                        .mul_add(
-                                            t2 * k65.mul_add(t6, k27 * t4),
-                                            k24.mul_add(v16 * t14, k66 * (v16 * t13)),
-                                        ),
-                                    k34
-                                        .mul_add(
-                                            qd1 * qd1,
-                                            qd2
-                                                .mul_add(
-                                                    k31.mul_add(qd2, k12.mul_add(t2, k32 * t1)),
-                                                    t2
-                                                        .mul_add(
-                                                            k12.mul_add(qd2, k10 * t1),
-                                                            t1 * k32.mul_add(qd2, k10.mul_add(t2, k33 * t1)),
-                                                        ),
-                                                ),
-                                        ),
-                                )
-                                + v16
+                            t9 * (-s4.mul_add(t15, c4 * t16)),
+                        ),
+                    k7
+                        .mul_add(
+                            t11 * t11,
+                            k22.mul_add(t8 * t8, v16 * k14.mul_add(t6, k28 * v16))
+                                + k20.mul_add(t10 * t10, k6 * (t7 * t7)),
+                        )
+                        + k35
+                            .mul_add(
+                                k23
                                     .mul_add(
-                                        k28.mul_add(v16, k14 * t6),
-                                        t6
+                                        t2 * k65.mul_add(t6, k27 * t4),
+                                        k24.mul_add(v16 * t14, k66 * (v16 * t13)),
+                                    ),
+                                k17
+                                    .mul_add(
+                                        t9 * t9,
+                                        qd2
                                             .mul_add(
-                                                k14.mul_add(v16, k26 * t4),
-                                                t4 * k26.mul_add(t6, k29 * t4),
-                                            ),
-                                    ) + k22.mul_add(t8 * t8, k6 * (t7 * t7)),
-                        ) + k20.mul_add(t10 * t10, k17 * (t9 * t9)),
+                                                k12.mul_add(t2, k32.mul_add(t1, k31 * qd2)),
+                                                t1
+                                                    .mul_add(
+                                                        k10.mul_add(t2, k33.mul_add(t1, k32 * qd2)),
+                                                        t2.mul_add(k10.mul_add(t1, k12 * qd2), k34 * (qd1 * qd1)),
+                                                    ),
+                                            )
+                                            + t6
+                                                .mul_add(
+                                                    k26.mul_add(t4, k14 * v16),
+                                                    t4 * k26.mul_add(t6, k29 * t4),
+                                                ),
+                                    ),
+                            ),
                 )
     }
     #[inline(always)]
