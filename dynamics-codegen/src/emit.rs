@@ -15,7 +15,7 @@
 //!
 //! Within a function, only the nodes the outputs need are emitted, in the arena's order
 //! (children first): the constants (`let k1: T = T::from_f64(0.42);`), the struct fields read
-//! (`let p_m2: T = p_[3];`) and the nodes that depend on them alone; then each needed
+//! (`let [p_m1, _, p_cx1, …] = *p_;`) and the nodes that depend on them alone; then each needed
 //! joint's sine and cosine, computed once, four joints side by side
 //! (`let ([s1, s2, s3, s4], [c1, c2, c3, c4]) = T::sin_cos_4([q_[0], q_[1], q_[2], q_[3]]);`);
 //! then the rest.
@@ -94,8 +94,8 @@ impl Shape<'_> {
 
 /// Where emitted code finds the robot's parameters.
 pub struct Context {
-    /// How to read parameter `k` as a `T` (`p_[k]`).
-    pub fields: Vec<TokenStream>,
+    /// The array `[T; N]` of the parameters, in the order of [`Equations::fields`] (`p_`).
+    pub parameters: proc_macro2::Ident,
 }
 
 /// A name the generated code binds (see [`crate::Generated::items`] for why no user item can
@@ -906,15 +906,20 @@ impl<'a> Emitter<'a> {
                 self.names[id.index()] = Some(quote!(#k));
             }
         }
-        // Parameters, read once.
+        // Parameters, read once: `let [p_m1, _, p_cx1, …] = *p_;`.
+        let mut parameters = vec![quote!(_); self.eq.fields.len()];
+        let mut any = false;
         for (id, node) in self.graph.nodes() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
-                    let name = self.leaf(id);
-                    let field = &ctx.fields[usize::from(k)];
-                    statements.push(quote!(let #name: T = #field;));
+                    parameters[usize::from(k)] = self.leaf(id);
+                    any = true;
                 }
             }
+        }
+        if any {
+            let array = &ctx.parameters;
+            statements.push(quote!(let [#(#parameters),*] = *#array;));
         }
         let class = classes(self.eq);
         statements.extend(self.joint_variables());

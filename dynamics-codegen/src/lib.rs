@@ -72,14 +72,9 @@ pub struct Generated {
 #[must_use]
 pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     use emit::{Output, Shape};
-    let p = emit::local(emit::PARAMETERS);
-    let parameters = (0..eq.fields.len())
-        .map(|k| {
-            let k = proc_macro2::Literal::usize_unsuffixed(k);
-            quote!(#p[#k])
-        })
-        .collect();
-    let ctx = emit::Context { fields: parameters };
+    let ctx = emit::Context {
+        parameters: emit::local(emit::PARAMETERS),
+    };
     // Each method with the name of its output elements (`m1_2`, `tau3`).
     let table: [(&'static str, &str, Shape); 8] = [
         ("mass_matrix", "m", Shape::Matrix(&eq.mass)),
