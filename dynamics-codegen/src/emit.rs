@@ -49,9 +49,9 @@ pub struct OpCount {
     /// Sine and cosine evaluations (a `sin_cos` pair counts 2).
     pub trig: usize,
     /// The longest chain of dependent multiplications, additions and divisions from the inputs
-    /// (the joint variables, their sines and cosines, the parameters) to a result: the
-    /// operations that cannot overlap, which bound the time of a call from below as the count
-    /// bounds its throughput.
+    /// (the joint variables, their sines and cosines, the parameters) to a result, each sum
+    /// added in the order the emitted code adds it: the operations that cannot overlap, which
+    /// bound the time of a call from below as the count bounds its throughput.
     pub depth: usize,
 }
 
@@ -1185,13 +1185,7 @@ impl<'a> Emitter<'a> {
             };
             joints.push((name(s, 's'), name(c, 'c'), angle, s, c));
         }
-        let first = if std::env::var_os("SPLIT1").is_some() && joints.len() > 1 {
-            1
-        } else {
-            0
-        };
-        let (head, tail) = joints.split_at(first);
-        for group in head.chunks(1).chain(tail.chunks(4)) {
+        for group in joints.chunks(4) {
             if let [(sn, cn, angle, s, c)] = group {
                 statements.push(match (s, c) {
                     (true, true) => quote!(let (#sn, #cn) = T::sin_cos(#angle);),
