@@ -164,3 +164,24 @@ fn symmetric_last_link_needs_no_turn() {
     last.inertia[0] = model::Value::Num(dynamics_codegen::symbolic::Number::Float(2e-4));
     assert_eq!(trig(&puma), [10, 10, 10]);
 }
+
+/// The performance issue's budget: PUMA 560's inverse dynamics, with the reference parameters,
+/// in at most 300 multiplications and additions (a generic recursive Newton-Euler takes about
+/// 1,600; Armstrong, Khatib and Burdick's explicit model 305 after dropping every term under
+/// 1 %). A change that makes the generated τ dearer fails here, not only in a benchmark.
+#[test]
+fn puma560_inverse_dynamics_stays_within_its_operation_budget() {
+    let puma = model::from_json(PUMA, "puma560").expect("json");
+    let eq = derive::derive(&puma);
+    let generated = dynamics_codegen::generate(&eq, Vec::new());
+    let tau = generated
+        .methods
+        .iter()
+        .find(|m| m.name == "inverse_dynamics")
+        .expect("inverse dynamics");
+    let (mul, add) = (tau.ops.mul, tau.ops.add);
+    assert!(
+        mul + add <= 300,
+        "{mul} multiplications and {add} additions"
+    );
+}
