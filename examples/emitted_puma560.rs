@@ -260,7 +260,7 @@ mod __dynamics {
         let u1 = s5 * s5;
         let u2 = s5 * c5;
         let u3 = k38.mul_add(u1, k17);
-        let u4 = -(-c5).mul_add(c5, u1);
+        let u4 = c5.mul_add(c5, -u1);
         let u5 = k6 + u3;
         /// D44 (6.43) + actuator inertia
         let m4_4 = k22 + k39 - u3;
@@ -280,7 +280,7 @@ mod __dynamics {
         let u19 = u16 + u15;
         let u20 = k44 * u6;
         let u21 = k43 * u7;
-        let u22 = -(-k41).mul_add(u7, u12);
+        let u22 = k41.mul_add(u7, -u12);
         let u23 = k42 * u7;
         /// D34 = D43 (6.43)
         let m3_4 = k38.mul_add(s4 * u2, k44 * u7);
@@ -302,7 +302,7 @@ mod __dynamics {
         let u37 = u26 - u18;
         let u38 = u27 * u36;
         let u39 = (-u35).mul_add(u37, k45.mul_add(u38, u26));
-        let u40 = -(-c3).mul_add(c3, u35);
+        let u40 = c3.mul_add(c3, -u35);
         let u41 = u36.mul_add(u37, u27 * u40);
         let u42 = (-s3).mul_add(u28, c3 * u22);
         let u43 = s3 * u22;
@@ -322,7 +322,7 @@ mod __dynamics {
         let u53 = s2 * s2;
         let u54 = s2 * c2;
         let u55 = u49 - u48;
-        let u56 = u54.mul_add(u55, u50 * (-(-c2).mul_add(c2, u53)));
+        let u56 = u54.mul_add(u55, u50 * c2.mul_add(c2, -u53));
         let u57 = (-s2).mul_add(u52, c2 * u51);
         /// D12 = D21 (6.43)
         let m1_2 = s2.mul_add(u51, c2 * u52);
@@ -381,7 +381,7 @@ mod __dynamics {
             .mul_add(u82, k46.mul_add(s2 * u79, k41.mul_add(u68 * u90, u74 * u89)));
         let u91 = c5 * u90;
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * (-(-u6).mul_add(u89, u91));
+        let m1_6 = k36 * u6.mul_add(u89, -u91);
         /// D2 (6.45), gravity and spring
         let g2 = k49 * (-c2).mul_add(k30 + u31, s2 * (k8 + u34));
         /// D3 (6.45), gravity and spring
@@ -465,16 +465,16 @@ mod __dynamics {
                         ),
             );
         let u142 = c2
-            .mul_add(k47.mul_add(u31, u42), s2 * (-((-k47).mul_add(u58, u44) + u43)));
+            .mul_add(k47.mul_add(u31, u42), s2 * (k47.mul_add(u58, -u44) - u43));
         let u143 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u133);
         let u144 = k48 * s2.mul_add(u62, u66);
         let u145 = u144 + u135;
         let u146 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u137);
-        let u147 = (-u10).mul_add(-(-c4).mul_add(c4, u8), u15);
+        let u147 = (-u10).mul_add(c4.mul_add(c4, -u8), u15);
         let u148 = c2
             .mul_add(
                 s3.mul_add(u147, c3.mul_add(u103, k48 * u63)),
-                s2 * (-(-c3).mul_add(u147, s3.mul_add(u103, u60 + u64))),
+                s2 * c3.mul_add(u147, -s3.mul_add(u103, u60 + u64)),
             );
         let u149 = u89.mul_add(u147, u90.mul_add(u103, u144));
         let u150 = k43 * (u7 * u90);
@@ -502,10 +502,10 @@ mod __dynamics {
         let u162 = c2
             .mul_add(
                 c3.mul_add(u157, s3.mul_add(u125, k46 * u79)),
-                s2 * (-s3.mul_add(u157, (-c3).mul_add(u125, u70 + u80))),
+                s2 * (-s3).mul_add(u157, c3.mul_add(u125, -(u70 + u80))),
             );
         let u163 = u116 + u157;
-        let u164 = -(-c3).mul_add(c5, u86);
+        let u164 = c3.mul_add(c5, -u86);
         let u165 = k44.mul_add(u164, u131);
         let u166 = u90.mul_add(u157, k46.mul_add(u83 + u84, u89 * u125));
         let u167 = u89.mul_add(u73 + u155, u90.mul_add(u121, u152));
@@ -1263,7 +1263,7 @@ mod __dynamics {
                 k7.mul_add(v44 * v56, v55),
             );
         let t6 = c5.mul_add(t5, (-s5).mul_add(v57, v42));
-        let t7 = -(-k61).mul_add(v37 * v39, cqd5);
+        let t7 = k61.mul_add(v37 * v39, -cqd5);
         /// centripetal and Coriolis torque 4
         let cqd4 = s5.mul_add(t5, c5.mul_add(v57, v43));
         /// centripetal and Coriolis torque 3
@@ -1363,7 +1363,7 @@ mod __dynamics {
                 k7.mul_add(v44 * v56, v55),
             );
         let t7 = c5.mul_add(t6, (-s5).mul_add(v57, v42));
-        let t8 = -(-k61).mul_add(v37 * v39, h5);
+        let t8 = k61.mul_add(v37 * v39, -h5);
         /// centripetal, Coriolis and gravity torque 4
         let h4 = s5.mul_add(t6, c5.mul_add(v57, v43));
         /// centripetal, Coriolis and gravity torque 3
@@ -1528,7 +1528,7 @@ mod __dynamics {
         let t42 = (-c5).mul_add(v52, s5 * t37);
         let t43 = c5
             .mul_add(t39, (-s5).mul_add(t40, k6.mul_add(t33, k22 * (v38 * v39))));
-        let t44 = -(-k61).mul_add(v37 * v39, tau5);
+        let t44 = k61.mul_add(v37 * v39, -tau5);
         /// T4 (6.46)
         let tau4 = s5.mul_add(t39, c5.mul_add(t40, k22.mul_add(t34, k21 * (v37 * v38))));
         let t45 = s4.mul_add(t38, c4 * t41);

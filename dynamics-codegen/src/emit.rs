@@ -401,7 +401,7 @@ fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
         let fused = b.operands.is_some();
         let (cycles, depth, negative) = if fused {
             let cycles = a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY;
-            (cycles, 1 + a.depth.max(b.depth), a.negative)
+            (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
         } else {
             let cycles = a.cycles.max(b.cycles) + ADD_LATENCY;
             (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
@@ -641,7 +641,7 @@ impl<'a> Emitter<'a> {
         if let Some(name) = &self.names[id.index()] {
             return name.clone();
         }
-        if let Node::Add(..) = self.graph.node(id) {
+        if self.is_sum(id) {
             // A fused multiply-add is a method call, which needs no parentheses.
             let (e, call) = self.sum(id);
             return if call || place == Place::Top || place == Place::AddLeft {
@@ -692,10 +692,24 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// The terms of the sum `id` with their signs, and as [`sum_order`] weighs them.
+    /// Whether `id` is written as a sum: a sum, or a negated sum written in place, whose terms
+    /// then change sign (`−(a − x·y)` is written `x.mul_add(y, −a)`, not negated again).
+    fn is_sum(&self, id: NodeId) -> bool {
+        match self.graph.node(id) {
+            Node::Add(..) => true,
+            Node::Neg(a) => matches!(self.graph.node(a), Node::Add(..)) && self.in_place(a),
+            _ => false,
+        }
+    }
+
+    /// The terms of the sum [`Emitter::is_sum`] `id` with their signs, and as [`sum_order`]
+    /// weighs them.
     fn sum_terms_with_depth(&mut self, id: NodeId) -> (Vec<(NodeId, bool)>, Vec<SumTerm>) {
         let mut terms = Vec::new();
-        self.sum_terms(id, false, &mut terms);
+        match self.graph.node(id) {
+            Node::Neg(a) => self.sum_terms(a, true, &mut terms),
+            _ => self.sum_terms(id, false, &mut terms),
+        }
         let weighed = terms
             .iter()
             .map(|&(t, negative)| SumTerm {
@@ -764,7 +778,8 @@ impl<'a> Emitter<'a> {
     }
 
     /// Two partial sums with their signs (`true`: negative) added: if `fused`, `b` is a
-    /// product written in place, `±x·y`, and the sum `±x.mul_add(y, a)` has the sign of `a` (a
+    /// product written in place, `±x·y`, and the sum is `x.mul_add(y, a)` with the sign of both
+    /// if they have the same, else `(-x).mul_add(y, a)` or `x.mul_add(y, -a)`, positive (a
     /// negated operand of `mul_add` costs nothing: x86-64 and aarch64 have fused forms with
     /// either sign, and without FMA `−x·y + a` is `a − x·y`); else `a + b` or `a − b`.
     fn combine(&mut self, a: (Part, bool), b: (Part, bool), fused: bool) -> (Part, bool) {
@@ -788,15 +803,20 @@ impl<'a> Emitter<'a> {
                 }
             };
         };
-        let x = if a.1 == b.1 {
-            self.expr(x, Place::Receiver)
-        } else {
+        let x = if b.1 && !a.1 {
             let x = self.expr(x, Place::MulRight);
             quote!((-#x))
+        } else {
+            self.expr(x, Place::Receiver)
         };
         let y = self.expr(y, Place::Top);
-        let rest = self.part(a.0, Place::Top);
-        (Part::Call(quote!(#x.mul_add(#y, #rest))), a.1)
+        let rest = if a.1 && !b.1 {
+            let rest = self.part(a.0, Place::MulRight);
+            quote!(-#rest)
+        } else {
+            self.part(a.0, Place::Top)
+        };
+        (Part::Call(quote!(#x.mul_add(#y, #rest))), a.1 && b.1)
     }
 
     /// `a − b`.
@@ -817,8 +837,11 @@ impl<'a> Emitter<'a> {
     }
 
     fn define(&mut self, id: NodeId) -> TokenStream {
+        if self.is_sum(id) {
+            return self.sum(id).0;
+        }
         match self.graph.node(id) {
-            Node::Add(..) => self.sum(id).0,
+            Node::Add(..) => unreachable!("a sum is written by `sum`"),
             Node::Mul(a, b) => {
                 let (a, b) = (self.expr(a, Place::MulLeft), self.expr(b, Place::MulRight));
                 quote!(#a * #b)
