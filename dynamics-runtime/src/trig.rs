@@ -208,9 +208,9 @@ macro_rules! reduce_and_evaluate_f64 {
         let sin_r = add(r, fma(mul(r, z), sin_poly, mul(r_lo, w)));
         let cos_r = add(
             w,
-            add(
-                sub(sub(k(1.0), w), half_z),
-                fma(z2, cos_poly, mul(r, sub(k(0.0), r_lo))),
+            sub(
+                fma(z2, cos_poly, sub(sub(k(1.0), w), half_z)),
+                mul(r, r_lo),
             ),
         );
         (shifted, sin_r, cos_r)
@@ -253,9 +253,9 @@ macro_rules! reduce_and_evaluate_f32 {
         let sin_r = add(r, fma(mul(r, z), sin_poly, mul(r_lo, w)));
         let cos_r = add(
             w,
-            add(
-                sub(sub(k(1.0), w), half_z),
-                fma(z2, cos_poly, mul(r, sub(k(0.0), r_lo))),
+            sub(
+                fma(z2, cos_poly, sub(sub(k(1.0), w), half_z)),
+                mul(r, r_lo),
             ),
         );
         (shifted, sin_r, cos_r)
