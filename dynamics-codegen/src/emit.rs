@@ -350,8 +350,9 @@ struct Addition {
 /// (the first in the list among equals), as in Huffman's algorithm with the maximum in place
 /// of the sum, weighed in cycles ([`ADD_LATENCY`]). A pair is one fused multiply-add if either
 /// is a fusable product, which is then ready when its operands are: of two products, the
-/// negative one if their signs differ (so that the result is positive), else the one whose
-/// operands come later. Gives the additions and the sum's depth in operations (a fused
+/// negative one if their signs differ, else the one whose operands come later. (Either sign
+/// fuses, [`Emitter::combine`] negating an operand; fusing the negative one measured faster:
+/// the random 6-joint robot's τ 82.2 ns against 83.3 by the operands alone.) Gives the additions and the sum's depth in operations (a fused
 /// multiply-add counting two, as in the flop counts).
 ///
 /// Every order of n terms takes n − 1 additions. This one makes the last wait little, where
@@ -1315,7 +1316,7 @@ mod tests {
                 vec![add(1, 0, true)],
                 4,
             ),
-            // Of two products of opposite signs, the negative one, so that the sum is positive.
+            // Of two products of opposite signs, the negative one.
             (
                 vec![term(2, true, true), term(2, false, true)],
                 vec![add(1, 0, true)],
