@@ -1,6 +1,6 @@
 // Pinocchio side of the side-by-side benchmark (see bench/README.md; driven by bench/run).
 //
-// Usage: pinocchio_bench DATA.json [DATA.json ...]
+// Usage: pinocchio_bench [--generated LIB.so] DATA.json [DATA.json ...]
 //
 // Each argument is a reference data file of tests/data/reference/data/ (format in
 // tests/data/reference/README.md). For each file the program
@@ -18,6 +18,13 @@
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file stem. A checksum (one output element per call, summed) goes to stderr so that the
 // optimizer cannot drop the work.
+//
+// With --generated LIB.so (the cdylib of bench/ffi, the generated code of the same robots behind
+// a C ABI), the program also loads the generated functions, checks each against the reference
+// data on every sample (the same tolerance), and times the two sides in turn, batch by batch
+// (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
+// of this shared machine. Each line then reads `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`,
+// each the median over its own batches.
 
 #include <algorithm>
 #include <chrono>
@@ -31,7 +38,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <dlfcn.h>
 
 #include "pinocchio/multibody.hpp"
 #include "pinocchio/algorithm/crba.hpp"
@@ -429,7 +439,11 @@ static const std::size_t CHECK_SAMPLE = 5;
 
 // max|got - want| / max(1, max|want|) must not exceed TOLERANCE.
 static void check(
-  const std::string & robot, const std::string & what, const Eigen::MatrixXd & got, const Eigen::MatrixXd & want)
+  const std::string & robot,
+  const std::string & what,
+  const Eigen::MatrixXd & got,
+  const Eigen::MatrixXd & want,
+  std::size_t sample = CHECK_SAMPLE)
 {
   if (got.rows() != want.rows() || got.cols() != want.cols())
   {
@@ -441,7 +455,7 @@ static void check(
   {
     std::fprintf(
       stderr, "%s: %s differs from the reference (sample %zu) by %.3e relative (> %.0e): wrong model?\n",
-      robot.c_str(), what.c_str(), CHECK_SAMPLE, err, TOLERANCE);
+      robot.c_str(), what.c_str(), sample, err, TOLERANCE);
     std::exit(1);
   }
 }
@@ -499,6 +513,119 @@ static double median_ns(std::size_t nsamples, F && f, double & checksum)
   return ns[BATCHES / 2];
 }
 
+// The same protocol for two functions timed in turn: warm-up calls of each, then BATCHES pairs
+// of batches, the order within a pair alternating. Returns the two medians.
+template<typename F, typename G>
+static std::pair<double, double> median_ns_in_turn(std::size_t nsamples, F && f, G && g, double & checksum)
+{
+  std::size_t k = 0;
+  double sum = 0.0;
+  auto batch = [&](auto && h, int calls) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < calls; ++i)
+    {
+      sum += h(k);
+      if (++k == nsamples)
+        k = 0;
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    return std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(calls);
+  };
+  batch(f, WARMUP);
+  batch(g, WARMUP);
+  std::vector<double> ns_f(BATCHES), ns_g(BATCHES);
+  for (int b = 0; b < BATCHES; ++b)
+  {
+    const std::size_t i = static_cast<std::size_t>(b);
+    if (b % 2 == 0)
+    {
+      ns_f[i] = batch(f, CALLS);
+      ns_g[i] = batch(g, CALLS);
+    }
+    else
+    {
+      ns_g[i] = batch(g, CALLS);
+      ns_f[i] = batch(f, CALLS);
+    }
+  }
+  checksum += sum;
+  std::sort(ns_f.begin(), ns_f.end());
+  std::sort(ns_g.begin(), ns_g.end());
+  return {ns_f[BATCHES / 2], ns_g[BATCHES / 2]};
+}
+
+// ---------------------------------------------------------------------------------------------
+// The generated code (bench/ffi), loaded at run time
+// ---------------------------------------------------------------------------------------------
+
+// f(q, qd, qdd, out): out gets n × n values (M, C, row-major) or n (tau, g, h).
+using GeneratedFunction = void (*)(const double *, const double *, const double *, double *);
+using Lookup = GeneratedFunction (*)(const char *, const char *);
+
+struct Generated
+{
+  Lookup lookup = nullptr;
+  std::size_t dof = 0;
+
+  explicit Generated(const std::string & path)
+  {
+    void * lib = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!lib)
+      throw std::runtime_error(std::string("cannot load ") + path + ": " + dlerror());
+    lookup = reinterpret_cast<Lookup>(dlsym(lib, "dynamics_bench_function"));
+    auto dof_fn = reinterpret_cast<std::size_t (*)()>(dlsym(lib, "dynamics_bench_dof"));
+    if (!lookup || !dof_fn)
+      throw std::runtime_error(path + " does not export dynamics_bench_function and dynamics_bench_dof");
+    dof = dof_fn();
+  }
+
+  GeneratedFunction get(const std::string & robot, const char * function) const
+  {
+    GeneratedFunction f = lookup(robot.c_str(), function);
+    if (!f)
+      throw std::runtime_error("the generated code has no " + std::string(function) + " for " + robot);
+    return f;
+  }
+};
+
+// Every generated function against the reference data, on every sample.
+static void check_generated(const std::string & robot, const Generated & gen, const json::Value & samples)
+{
+  const std::size_t n = gen.dof;
+  std::vector<double> out(n * n);
+  auto vector = [&](std::size_t len) {
+    Eigen::MatrixXd v(static_cast<Eigen::Index>(len), 1);
+    for (std::size_t i = 0; i < len; ++i)
+      v(static_cast<Eigen::Index>(i), 0) = out[i];
+    return v;
+  };
+  auto matrix = [&]() {
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    for (std::size_t r = 0; r < n; ++r)
+      for (std::size_t c = 0; c < n; ++c)
+        m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = out[r * n + c];
+    return m;
+  };
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const json::Value & sample = samples[s];
+    const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
+    if (static_cast<std::size_t>(q.size()) != n)
+      throw std::runtime_error(robot + ": the generated code has " + std::to_string(n) + " joints");
+    const std::string at = " (generated)";
+    gen.get(robot, "tau")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "tau" + at, vector(n), vecn(sample["tau"]), s);
+    gen.get(robot, "M")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "M" + at, matrix(), matn(sample["M"]), s);
+    gen.get(robot, "g")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "g" + at, vector(n), vecn(sample["g"]), s);
+    gen.get(robot, "C")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "C" + at, matrix(), matn(sample["C"]), s);
+    gen.get(robot, "h")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "h" + at, vector(n), vecn(sample["h"]), s);
+  }
+}
+
 static std::string stem(const std::string & path)
 {
   std::size_t slash = path.find_last_of('/');
@@ -509,13 +636,28 @@ static std::string stem(const std::string & path)
 
 int main(int argc, char ** argv)
 {
-  if (argc < 2)
+  int first = 1;
+  std::unique_ptr<Generated> generated;
+  try
   {
-    std::fprintf(stderr, "usage: %s DATA.json [DATA.json ...]\n", argv[0]);
+    if (argc > 2 && std::string(argv[1]) == "--generated")
+    {
+      generated = std::make_unique<Generated>(argv[2]);
+      first = 3;
+    }
+  }
+  catch (const std::exception & e)
+  {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  if (argc <= first)
+  {
+    std::fprintf(stderr, "usage: %s [--generated LIB.so] DATA.json [DATA.json ...]\n", argv[0]);
     return 2;
   }
   double checksum = 0.0;
-  for (int arg = 1; arg < argc; ++arg)
+  for (int arg = first; arg < argc; ++arg)
   {
     const std::string path = argv[arg];
     const std::string robot = stem(path);
@@ -533,6 +675,18 @@ int main(int argc, char ** argv)
     }
     const json::Value & samples = file["samples"];
     check_model(robot, model, samples[CHECK_SAMPLE]);
+    if (generated)
+    {
+      try
+      {
+        check_generated(robot, *generated, samples);
+      }
+      catch (const std::exception & e)
+      {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+      }
+    }
 
     std::vector<Eigen::VectorXd> qs, vs, as;
     for (std::size_t s = 0; s < samples.size(); ++s)
@@ -544,25 +698,40 @@ int main(int argc, char ** argv)
     const std::size_t ns = qs.size();
     Data data(model);
 
-    auto report = [&](const char * function, double t) {
-      std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, t);
+    std::vector<double> out(qs[0].size() * qs[0].size());
+    // Pinocchio's `function`, and the generated one in turn with it when it is loaded.
+    auto time = [&](const char * function, auto && pin) {
+      if (!generated)
+      {
+        std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin, checksum));
+      }
+      else
+      {
+        const GeneratedFunction f = generated->get(robot, function);
+        auto gen = [&](std::size_t k) {
+          f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+          return out[0];
+        };
+        const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
+        std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+      }
       std::fflush(stdout);
     };
-    report("tau", median_ns(ns, [&](std::size_t k) {
+    time("tau", [&](std::size_t k) {
       return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0];
-    }, checksum));
-    report("M", median_ns(ns, [&](std::size_t k) {
+    });
+    time("M", [&](std::size_t k) {
       return pinocchio::crba(model, data, qs[k])(0, 0);
-    }, checksum));
-    report("g", median_ns(ns, [&](std::size_t k) {
+    });
+    time("g", [&](std::size_t k) {
       return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0];
-    }, checksum));
-    report("C", median_ns(ns, [&](std::size_t k) {
+    });
+    time("C", [&](std::size_t k) {
       return pinocchio::computeCoriolisMatrix(model, data, qs[k], vs[k])(0, 0);
-    }, checksum));
-    report("h", median_ns(ns, [&](std::size_t k) {
+    });
+    time("h", [&](std::size_t k) {
       return pinocchio::nonLinearEffects(model, data, qs[k], vs[k])[0];
-    }, checksum));
+    });
   }
   std::fprintf(stderr, "checksum %.17g\n", checksum);
   return 0;
