@@ -45,21 +45,19 @@ fn list(v: &Value) -> String {
     s.join(",")
 }
 
-/// `eval --json` on `robots/puma560.toml` reproduces τ, M, C and g of every sample of
-/// `tests/data/reference/data/puma560.json` (Pinocchio 4.1.0, a copy of the shared reference
-/// data; see its README).
-#[test]
-fn eval_json_matches_the_reference_data() {
-    let path = root().join("tests/data/reference/data/puma560.json");
-    let data: Value = serde_json::from_str(&std::fs::read_to_string(path).expect("reference data"))
-        .expect("json");
+/// `eval --json` on `description` reproduces τ, M, C and g of every sample of `data`; the worst
+/// scaled error.
+fn eval_matches(description: &str, data: &str) -> f64 {
+    let data: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join(data)).expect("reference data"))
+            .expect("json");
     let samples = data["samples"].as_array().expect("samples");
     assert_eq!(samples.len(), 20);
     let mut worst: f64 = 0.0;
     for s in samples {
         let out = dynamics(&[
             "eval",
-            "robots/puma560.toml",
+            description,
             "--q",
             &list(&s["q"]),
             "--qd",
@@ -71,13 +69,35 @@ fn eval_json_matches_the_reference_data() {
         let got: Value = serde_json::from_str(&stdout(&out)).expect("eval --json prints JSON");
         for (ours, theirs) in [("tau", "tau"), ("M", "M"), ("C", "C"), ("g", "g")] {
             let (a, b) = (numbers(&got[ours]), numbers(&s[theirs]));
-            assert_eq!(a.len(), b.len(), "{ours}: wrong size");
+            assert_eq!(a.len(), b.len(), "{description} {ours}: wrong size");
             let e = scaled_error(&a, &b);
-            assert!(e < 1e-10, "{ours} differs from Pinocchio by {e:e}");
+            assert!(
+                e < 1e-10,
+                "{description} {ours} differs from Pinocchio by {e:e}"
+            );
             worst = worst.max(e);
         }
     }
-    println!("eval --json vs reference: worst scaled error {worst:.1e}");
+    println!("eval --json {description} vs reference: worst scaled error {worst:.1e}");
+    worst
+}
+
+/// `eval --json` on `robots/puma560.toml` reproduces τ, M, C and g of every sample of
+/// `tests/data/reference/data/puma560.json` (Pinocchio 4.1.0, a copy of the shared reference
+/// data; see its README).
+#[test]
+fn eval_json_matches_the_reference_data() {
+    eval_matches(
+        "robots/puma560.toml",
+        "tests/data/reference/data/puma560.json",
+    );
+}
+
+/// The same for the 7-joint `robots/panda.toml` against `tests/data/panda/data.json`
+/// (Pinocchio 4.1.0, made by `tests/data/panda/make.py`).
+#[test]
+fn eval_json_matches_the_panda_data() {
+    eval_matches("robots/panda.toml", "tests/data/panda/data.json");
 }
 
 /// Parameters given with `--set`; a missing or unknown one is a usage error (exit code 2).

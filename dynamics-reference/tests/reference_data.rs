@@ -139,3 +139,22 @@ fn matches_reference_data_for_all_robots() {
     assert!(saw_modified, "no modified-convention robot in the data");
     assert!(failures.is_empty(), "robots over tolerance: {failures:?}");
 }
+
+/// A 7-joint arm in the modified convention, the Franka Emika Panda (`tests/data/panda/`,
+/// Pinocchio 4.1.0, checked against the URDF its parameters come from).
+#[test]
+fn matches_the_panda_data() {
+    let path = common::reference_dir().join("../panda/data.json");
+    let text = std::fs::read_to_string(&path).expect("tests/data/panda/data.json");
+    let data: DataFile = serde_json::from_str(&text).expect("panda data");
+    assert_eq!((data.n, data.samples.len()), (7, 20));
+    assert_eq!(data.description.convention, Convention::Modified);
+    let worst = check_file(&data);
+    for (name, e) in QUANTITIES.iter().zip(worst) {
+        assert!(e <= TOLERANCE, "panda: {name} off by {e:e}");
+    }
+    eprintln!(
+        "panda: worst scaled error {:.1e}",
+        worst.iter().copied().fold(0.0, f64::max)
+    );
+}

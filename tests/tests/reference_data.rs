@@ -1,6 +1,7 @@
 //! The generated code against the reference data of `data/reference/` (Pinocchio 4.1.0,
-//! cross-checked with the Robotics Toolbox): for every sample, τ, M, C, C·qd + g, g and both
-//! energies match to 1e-10, scaled as max|a − b| / max(1, max|b|).
+//! cross-checked with the Robotics Toolbox) and of `data/panda/` (a 7-joint arm, Pinocchio
+//! 4.1.0, checked against the URDF its parameters come from): for every sample, τ, M, C,
+//! C·qd + g, g and both energies match to 1e-10, scaled as max|a − b| / max(1, max|b|).
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
@@ -36,6 +37,7 @@ reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json", 2);
 reference_robot!(Random1, "data/reference/robots/random1.json", 2);
 reference_robot!(Random2, "data/reference/robots/random2.json", 3);
 reference_robot!(Random5, "data/reference/robots/random5.json", 6);
+reference_robot!(Panda, "data/panda/robot.json", 7);
 
 fn vector<const N: usize>(v: &Value) -> [f64; N] {
     let a = v.as_array().expect("array");
@@ -49,7 +51,7 @@ fn matrix<const N: usize>(v: &Value) -> [[f64; N]; N] {
 }
 
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
-    let path = format!("{}/data/reference/data/{file}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/data/{file}", env!("CARGO_MANIFEST_DIR"));
     let data: Value =
         serde_json::from_str(&std::fs::read_to_string(path).expect("data file")).expect("json");
     let samples = data["samples"].as_array().expect("samples");
@@ -115,41 +117,47 @@ fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
 
 #[test]
 fn puma560() {
-    check(&Puma560, "puma560.json");
+    check(&Puma560, "reference/data/puma560.json");
 }
 
 #[test]
 fn stanford() {
-    check(&Stanford, "stanford.json");
+    check(&Stanford, "reference/data/stanford.json");
 }
 
 #[test]
 fn ur5() {
-    check(&Ur5, "ur5.json");
+    check(&Ur5, "reference/data/ur5.json");
 }
 
 #[test]
 fn niku_2link() {
-    check(&NikuTwoLink, "niku_2link.json");
+    check(&NikuTwoLink, "reference/data/niku_2link.json");
 }
 
 #[test]
 fn niku_polar() {
-    check(&NikuPolar, "niku_polar.json");
+    check(&NikuPolar, "reference/data/niku_polar.json");
 }
 
 #[test]
 fn random1() {
-    check(&Random1, "random1.json");
+    check(&Random1, "reference/data/random1.json");
 }
 
 #[test]
 fn random5() {
-    check(&Random5, "random5.json");
+    check(&Random5, "reference/data/random5.json");
+}
+
+/// Franka Emika Panda: 7 joints, the modified (Craig) convention, inertias from its URDF.
+#[test]
+fn panda_seven_joints() {
+    check(&Panda, "panda/data.json");
 }
 
 /// random2 uses the modified (Craig) convention.
 #[test]
 fn random2_modified_convention() {
-    check(&Random2, "random2.json");
+    check(&Random2, "reference/data/random2.json");
 }
