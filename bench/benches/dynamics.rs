@@ -1,7 +1,7 @@
 //! Criterion benchmarks: the generated dynamics against the other implementations in this
-//! workspace, on the four 6-joint reference robots.
+//! workspace, on the four 6-joint reference robots and the 7-joint Panda.
 //!
-//! One group per robot (`puma560`, `stanford`, `ur5`, `random5`), each measuring, at one fixed
+//! One group per robot (`puma560`, `stanford`, `ur5`, `random5`, `panda`), each measuring, at one fixed
 //! state taken from the robot's reference data:
 //!
 //! * `inverse_dynamics`, `mass_matrix`, `coriolis_matrix`, `gravity_torques`: the generated
@@ -19,14 +19,14 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use dynamics_bench::{Puma560, Random5, Stanford, Ur5, DOF};
+use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5};
 use dynamics_runtime::Dynamics;
 
 /// Index of the reference sample used as the fixed input (sample 0 is the zero state).
 const SAMPLE: usize = 7;
 
-fn group<R: Dynamics<DOF>>(c: &mut Criterion, name: &str, robot: &R) {
-    let samples = dynamics_bench::samples(name);
+fn group<R: Dynamics<N>, const N: usize>(c: &mut Criterion, name: &str, robot: &R) {
+    let samples = dynamics_bench::samples::<N>(name);
     let s = samples[SAMPLE];
     let numeric = dynamics_bench::numeric(name);
     let book = dynamics_bench::book(name);
@@ -62,6 +62,7 @@ fn robots(c: &mut Criterion) {
     group(c, "stanford", &Stanford);
     group(c, "ur5", &Ur5);
     group(c, "random5", &Random5);
+    group(c, "panda", &Panda);
 }
 
 fn config() -> Criterion {

@@ -2,7 +2,7 @@
 //
 // Usage: pinocchio_bench [--generated LIB.so] DATA.json [DATA.json ...]
 //
-// Each argument is a reference data file of tests/data/reference/data/ (format in
+// Each argument is a reference data file, of tests/data/reference/data/ or tests/data/panda/ (format in
 // tests/data/reference/README.md). For each file the program
 //   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
 //      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
@@ -16,7 +16,7 @@
 //      elapsed / CALLS (std::chrono::steady_clock), report the median over the batches.
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
-// the file stem. A checksum (one output element per call, summed) goes to stderr so that the
+// the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
 // optimizer cannot drop the work.
 //
 // With --generated LIB.so (the cdylib of bench/ffi, the generated code of the same robots behind
@@ -565,7 +565,7 @@ using Lookup = GeneratedFunction (*)(const char *, const char *);
 struct Generated
 {
   Lookup lookup = nullptr;
-  std::size_t dof = 0;
+  std::size_t (*dof)(const char *) = nullptr;
 
   explicit Generated(const std::string & path)
   {
@@ -573,10 +573,9 @@ struct Generated
     if (!lib)
       throw std::runtime_error(std::string("cannot load ") + path + ": " + dlerror());
     lookup = reinterpret_cast<Lookup>(dlsym(lib, "dynamics_bench_function"));
-    auto dof_fn = reinterpret_cast<std::size_t (*)()>(dlsym(lib, "dynamics_bench_dof"));
-    if (!lookup || !dof_fn)
+    dof = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_dof"));
+    if (!lookup || !dof)
       throw std::runtime_error(path + " does not export dynamics_bench_function and dynamics_bench_dof");
-    dof = dof_fn();
   }
 
   GeneratedFunction get(const std::string & robot, const char * function) const
@@ -591,7 +590,7 @@ struct Generated
 // Every generated function against the reference data, on every sample.
 static void check_generated(const std::string & robot, const Generated & gen, const json::Value & samples)
 {
-  const std::size_t n = gen.dof;
+  const std::size_t n = gen.dof(robot.c_str());
   std::vector<double> out(n * n);
   auto vector = [&](std::size_t len) {
     Eigen::MatrixXd v(static_cast<Eigen::Index>(len), 1);
@@ -626,14 +625,6 @@ static void check_generated(const std::string & robot, const Generated & gen, co
   }
 }
 
-static std::string stem(const std::string & path)
-{
-  std::size_t slash = path.find_last_of('/');
-  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-  std::size_t dot = base.rfind('.');
-  return dot == std::string::npos ? base : base.substr(0, dot);
-}
-
 int main(int argc, char ** argv)
 {
   int first = 1;
@@ -660,12 +651,13 @@ int main(int argc, char ** argv)
   for (int arg = first; arg < argc; ++arg)
   {
     const std::string path = argv[arg];
-    const std::string robot = stem(path);
+    std::string robot;
     json::Value file;
     Model model;
     try
     {
       file = json::parse_file(path);
+      robot = file["robot"].string();
       model = build_model(file["description"]);
     }
     catch (const std::exception & e)

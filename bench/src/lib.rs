@@ -2,7 +2,7 @@
 //!
 //! * The four 6-joint reference robots of `tests/data/reference/robots/`, each derived with
 //!   `#[derive(Dynamics)]` from its JSON description: [`Puma560`], [`Stanford`], [`Ur5`] and
-//!   [`Random5`].
+//!   [`Random5`]; and the 7-joint [`Panda`] of `tests/data/panda/`.
 //! * Their 20 reference samples (`q`, `qd`, `qdd` and the expected `tau`, computed with
 //!   Pinocchio 4.1.0), read at run time by [`samples`].
 //! * The two other implementations the generated code is compared with, built from the same
@@ -16,12 +16,13 @@
 use dynamics_codegen::numeric::Numeric;
 use dynamics_runtime::Dynamics;
 
-/// Number of joints of every benchmarked robot.
+/// Number of joints of the four 6-joint reference robots.
 pub const DOF: usize = 6;
 
-/// Names of the benchmarked robots, in output order. Each is the stem of its description
-/// `tests/data/reference/robots/<name>.json` and of its data `tests/data/reference/data/<name>.json`.
-pub const ROBOTS: [&str; 4] = ["puma560", "stanford", "ur5", "random5"];
+/// Names of the benchmarked robots, in output order: the four 6-joint reference robots, whose
+/// description and data are `tests/data/reference/{robots,data}/<name>.json`, and `panda`, whose
+/// are `tests/data/panda/{robot,data}.json`.
+pub const ROBOTS: [&str; 5] = ["puma560", "stanford", "ur5", "random5", "panda"];
 
 /// The PUMA 560 (Corke's Robotics Toolbox parameters, motor inertia and friction dropped): RRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
@@ -51,44 +52,54 @@ pub struct Ur5;
 #[dynamics(file = "../tests/data/reference/robots/random5.json")]
 pub struct Random5;
 
-/// One reference sample: a state and the torques Pinocchio computed for it.
+/// The Franka Emika Panda arm (modified D-H, inertias from its URDF): RRRRRRR.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../tests/data/panda/robot.json")]
+pub struct Panda;
+
+/// One reference sample of an `N`-joint robot: a state and the torques Pinocchio computed for it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sample {
+pub struct Sample<const N: usize = DOF> {
     /// Joint positions.
-    pub q: [f64; DOF],
+    pub q: [f64; N],
     /// Joint velocities.
-    pub qd: [f64; DOF],
+    pub qd: [f64; N],
     /// Joint accelerations.
-    pub qdd: [f64; DOF],
+    pub qdd: [f64; N],
     /// Expected inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)`.
-    pub tau: [f64; DOF],
+    pub tau: [f64; N],
 }
 
-const REFERENCE_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data/reference");
+const DATA_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data");
 
+/// `kind` is `robots` (the description) or `data`.
 fn read(kind: &str, robot: &str) -> String {
-    let path = format!("{REFERENCE_DIR}/{kind}/{robot}.json");
+    let path = if robot == "panda" {
+        let file = if kind == "robots" { "robot" } else { "data" };
+        format!("{DATA_DIR}/panda/{file}.json")
+    } else {
+        format!("{DATA_DIR}/reference/{kind}/{robot}.json")
+    };
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"))
 }
 
-fn vector(v: &serde_json::Value, what: &str) -> [f64; DOF] {
+fn vector<const N: usize>(v: &serde_json::Value, what: &str) -> [f64; N] {
     let a = v
         .as_array()
         .unwrap_or_else(|| panic!("{what} is not an array"));
-    assert_eq!(a.len(), DOF, "{what} has {} entries, not {DOF}", a.len());
+    assert_eq!(a.len(), N, "{what} has {} entries, not {N}", a.len());
     core::array::from_fn(|i| {
         a[i].as_f64()
             .unwrap_or_else(|| panic!("{what}[{i}] is not a number"))
     })
 }
 
-/// The 20 reference samples of `robot` (one of [`ROBOTS`]), read from
-/// `tests/data/reference/data/<robot>.json`.
+/// The 20 reference samples of `robot` (one of [`ROBOTS`]), read from its data file.
 ///
 /// # Panics
-/// If the file is missing or malformed.
+/// If the file is missing or malformed, or the robot has not `N` joints.
 #[must_use]
-pub fn samples(robot: &str) -> Vec<Sample> {
+pub fn samples<const N: usize>(robot: &str) -> Vec<Sample<N>> {
     let data: serde_json::Value = serde_json::from_str(&read("data", robot))
         .unwrap_or_else(|e| panic!("data of {robot}: {e}"));
     let samples = data["samples"]
@@ -105,8 +116,7 @@ pub fn samples(robot: &str) -> Vec<Sample> {
         .collect()
 }
 
-/// The JSON description of `robot`, `tests/data/reference/robots/<robot>.json`: the file its
-/// struct is derived from.
+/// The JSON description of `robot`: the file its struct is derived from.
 ///
 /// # Panics
 /// If the file is missing.

@@ -1,26 +1,27 @@
-//! The generated dynamics of the four benchmark robots behind a C ABI, so that the Pinocchio
+//! The generated dynamics of the benchmark robots behind a C ABI, so that the Pinocchio
 //! benchmark (`bench/pinocchio/bench.cpp`) can load them (`dlopen`) and time both sides in one
 //! process, batch by batch in turn: the neighbours' load on this shared machine then slows both
 //! sides alike, where two programs run one after the other see different spells.
 //!
 //! One entry point, [`dynamics_bench_function`], looks up a function by robot and name; every
-//! function has the signature [`Function`].
+//! function has the signature [`Function`]; [`dynamics_bench_dof`] gives a robot's number of
+//! joints.
 
 use core::ffi::{c_char, CStr};
-use dynamics_bench::{Puma560, Random5, Stanford, Ur5, DOF};
+use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5};
 use dynamics_runtime::Dynamics;
 
-/// `f(q, qd, qdd, out)`: reads `DOF` values from each input it uses and writes its output to
-/// `out`, row-major: `DOF × DOF` values for `M` and `C`, `DOF` for the others.
+/// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
+/// and writes its output to `out`, row-major: n × n values for `M` and `C`, n for the others.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
-/// Reads `DOF` values.
+/// Reads `N` values.
 ///
 /// # Safety
-/// `p` points to `DOF` readable `f64`s.
-unsafe fn input(p: *const f64) -> [f64; DOF] {
+/// `p` points to `N` readable `f64`s.
+unsafe fn input<const N: usize>(p: *const f64) -> [f64; N] {
     // SAFETY: the caller's contract.
-    unsafe { p.cast::<[f64; DOF]>().read_unaligned() }
+    unsafe { p.cast::<[f64; N]>().read_unaligned() }
 }
 
 /// Writes `values`.
@@ -32,10 +33,10 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
     unsafe { out.cast::<[f64; N]>().write_unaligned(values) }
 }
 
-/// The five timed functions of one robot type, as C functions.
-struct Functions<R>(core::marker::PhantomData<R>);
+/// The five timed functions of one `N`-joint robot type, as C functions.
+struct Functions<R, const N: usize>(core::marker::PhantomData<R>);
 
-impl<R: Dynamics<DOF> + Default> Functions<R> {
+impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
@@ -46,7 +47,7 @@ impl<R: Dynamics<DOF> + Default> Functions<R> {
 
     unsafe extern "C" fn mass(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output(out, R::default().mass_matrix(&input(q)).concat_rows()) }
+        unsafe { output_matrix(out, R::default().mass_matrix(&input(q))) }
     }
 
     unsafe extern "C" fn gravity(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
@@ -58,7 +59,7 @@ impl<R: Dynamics<DOF> + Default> Functions<R> {
         // SAFETY: the contract of `Function`.
         unsafe {
             let c = R::default().coriolis_matrix(&input(q), &input(qd));
-            output(out, c.concat_rows());
+            output_matrix(out, c);
         }
     }
 
@@ -79,19 +80,19 @@ impl<R: Dynamics<DOF> + Default> Functions<R> {
     }
 }
 
-/// A `DOF × DOF` matrix as its rows one after the other.
-trait ConcatRows {
-    fn concat_rows(self) -> [f64; DOF * DOF];
-}
-
-impl ConcatRows for [[f64; DOF]; DOF] {
-    fn concat_rows(self) -> [f64; DOF * DOF] {
-        core::array::from_fn(|k| self[k / DOF][k % DOF])
+/// Writes the rows of an `N × N` matrix one after the other.
+///
+/// # Safety
+/// `out` points to room for `N × N` `f64`s.
+unsafe fn output_matrix<const N: usize>(out: *mut f64, m: [[f64; N]; N]) {
+    for (i, row) in m.into_iter().enumerate() {
+        // SAFETY: row i goes to out[i N .. (i + 1) N], within the caller's room.
+        unsafe { output(out.add(i * N), row) }
     }
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`) of `robot`
-/// (`puma560`, `stanford`, `ur5` or `random5`), or null for an unknown name.
+/// (`puma560`, `stanford`, `ur5`, `random5` or `panda`), or null for an unknown name.
 ///
 /// # Safety
 /// Both arguments are null or NUL-terminated strings.
@@ -107,24 +108,39 @@ pub unsafe extern "C" fn dynamics_bench_function(
     let (robot, function) = unsafe { (CStr::from_ptr(robot), CStr::from_ptr(function)) };
     let function = function.to_bytes();
     match robot.to_bytes() {
-        b"puma560" => Functions::<Puma560>::get(function),
-        b"stanford" => Functions::<Stanford>::get(function),
-        b"ur5" => Functions::<Ur5>::get(function),
-        b"random5" => Functions::<Random5>::get(function),
+        b"puma560" => Functions::<Puma560, 6>::get(function),
+        b"stanford" => Functions::<Stanford, 6>::get(function),
+        b"ur5" => Functions::<Ur5, 6>::get(function),
+        b"random5" => Functions::<Random5, 6>::get(function),
+        b"panda" => Functions::<Panda, 7>::get(function),
         _ => None,
     }
 }
 
-/// The number of joints of every robot, for the caller to check against its models.
+/// The number of joints of `robot`, 0 for an unknown name, for the caller to check against
+/// its model.
+///
+/// # Safety
+/// `robot` is null or a NUL-terminated string.
 #[no_mangle]
-pub extern "C" fn dynamics_bench_dof() -> usize {
-    DOF
+pub unsafe extern "C" fn dynamics_bench_dof(robot: *const c_char) -> usize {
+    if robot.is_null() {
+        return 0;
+    }
+    // SAFETY: the caller's contract.
+    match unsafe { CStr::from_ptr(robot) }.to_bytes() {
+        b"puma560" | b"stanford" | b"ur5" | b"random5" => 6,
+        b"panda" => 7,
+        _ => 0,
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use dynamics_bench::{samples, ROBOTS};
+    use dynamics_bench::{samples, Sample, ROBOTS};
+
+    const FUNCTIONS: [&str; 5] = ["tau", "M", "g", "C", "h"];
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -133,11 +149,18 @@ mod tests {
         unsafe { dynamics_bench_function(robot.as_ptr(), function.as_ptr()) }
     }
 
-    /// `function` of `robot` called through the C ABI on a sample, its output padded to 36.
-    fn call(robot: &str, function: &str, s: &dynamics_bench::Sample) -> [f64; DOF * DOF] {
+    fn dof(robot: &str) -> usize {
+        let robot = std::ffi::CString::new(robot).unwrap();
+        // SAFETY: a NUL-terminated string.
+        unsafe { dynamics_bench_dof(robot.as_ptr()) }
+    }
+
+    /// `function` of `robot` called through the C ABI on a sample, with room for 64 outputs
+    /// (NaN where nothing was written).
+    fn call<const N: usize>(robot: &str, function: &str, s: &Sample<N>) -> [f64; 64] {
         let f = lookup(robot, function).expect("a known function");
-        let mut out = [f64::NAN; DOF * DOF];
-        // SAFETY: DOF inputs each, room for DOF × DOF outputs.
+        let mut out = [f64::NAN; 64];
+        // SAFETY: N inputs each, room for N × N ≤ 64 outputs.
         unsafe {
             f(
                 s.q.as_ptr(),
@@ -149,47 +172,47 @@ mod tests {
         out
     }
 
-    fn direct<R: Dynamics<DOF>>(r: &R, function: &str, s: &dynamics_bench::Sample) -> Vec<f64> {
+    fn direct<R: Dynamics<N>, const N: usize>(r: &R, function: &str, s: &Sample<N>) -> Vec<f64> {
+        let rows = |m: [[f64; N]; N]| m.iter().flatten().copied().collect();
         match function {
             "tau" => r.inverse_dynamics(&s.q, &s.qd, &s.qdd).to_vec(),
-            "M" => r.mass_matrix(&s.q).concat_rows().to_vec(),
+            "M" => rows(r.mass_matrix(&s.q)),
             "g" => r.gravity_torques(&s.q).to_vec(),
-            "C" => r.coriolis_matrix(&s.q, &s.qd).concat_rows().to_vec(),
+            "C" => rows(r.coriolis_matrix(&s.q, &s.qd)),
             "h" => r.bias_torques(&s.q, &s.qd).to_vec(),
             _ => unreachable!(),
+        }
+    }
+
+    /// Every function of `robot` through the C ABI equals the trait method, writes nothing past
+    /// its output, and its `tau` matches the reference data.
+    fn check<R: Dynamics<N>, const N: usize>(r: &R, robot: &str) {
+        assert_eq!(dof(robot), N, "{robot}");
+        for s in samples::<N>(robot) {
+            for function in FUNCTIONS {
+                let want = direct(r, function, &s);
+                let got = call(robot, function, &s);
+                assert_eq!(&got[..want.len()], &want[..], "{robot} {function}");
+                assert!(
+                    got[want.len()..].iter().all(|x| x.is_nan()),
+                    "{robot} {function}"
+                );
+            }
+            let err = dynamics_bench::scaled_error(&call(robot, "tau", &s)[..N], &s.tau);
+            assert!(err < 1e-9, "{robot}: {err:e}");
         }
     }
 
     #[test]
     fn every_function_through_the_c_abi_equals_the_trait_method() {
         for robot in ROBOTS {
-            for s in samples(robot).iter().take(3) {
-                for function in ["tau", "M", "g", "C", "h"] {
-                    let want = match robot {
-                        "puma560" => direct(&Puma560, function, s),
-                        "stanford" => direct(&Stanford, function, s),
-                        "ur5" => direct(&Ur5, function, s),
-                        _ => direct(&Random5, function, s),
-                    };
-                    let got = call(robot, function, s);
-                    assert_eq!(&got[..want.len()], &want[..], "{robot} {function}");
-                    // Nothing is written past the output.
-                    assert!(
-                        got[want.len()..].iter().all(|x| x.is_nan()),
-                        "{robot} {function}"
-                    );
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn inverse_dynamics_through_the_c_abi_matches_the_reference_data() {
-        for robot in ROBOTS {
-            for s in samples(robot) {
-                let tau = call(robot, "tau", &s);
-                let err = dynamics_bench::scaled_error(&tau[..DOF], &s.tau);
-                assert!(err < 1e-9, "{robot}: {err:e}");
+            match robot {
+                "puma560" => check(&Puma560, robot),
+                "stanford" => check(&Stanford, robot),
+                "ur5" => check(&Ur5, robot),
+                "random5" => check(&Random5, robot),
+                "panda" => check(&Panda, robot),
+                _ => panic!("{robot} has no test"),
             }
         }
     }
@@ -202,6 +225,8 @@ mod tests {
         // SAFETY: null is allowed.
         let none = unsafe { dynamics_bench_function(core::ptr::null(), c"tau".as_ptr()) };
         assert!(none.is_none());
-        assert_eq!(dynamics_bench_dof(), 6);
+        assert_eq!(dof("puma"), 0);
+        // SAFETY: null is allowed.
+        assert_eq!(unsafe { dynamics_bench_dof(core::ptr::null()) }, 0);
     }
 }

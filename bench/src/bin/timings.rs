@@ -1,5 +1,5 @@
-//! Wall-clock time per call of the generated dynamics of the four 6-joint reference robots,
-//! measured with the same protocol as the C++ Pinocchio benchmark of `bench/pinocchio/`, so that
+//! Wall-clock time per call of the generated dynamics of the four 6-joint reference robots and
+//! the 7-joint Panda, measured with the same protocol as the C++ Pinocchio benchmark of `bench/pinocchio/`, so that
 //! the two sets of numbers compare directly.
 //!
 //! ```text
@@ -9,8 +9,8 @@
 //! # What is measured
 //!
 //! For each robot (`puma560`, `stanford`, `ur5`, `random5`, each derived with
-//! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`), the generated `f64`
-//! methods:
+//! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`, and `panda`, from
+//! `tests/data/panda/robot.json`), the generated `f64` methods:
 //!
 //! | function | method |
 //! |---|---|
@@ -33,7 +33,7 @@
 //!
 //! # Protocol
 //!
-//! The inputs are the 20 samples `(q, qd, qdd)` of `tests/data/reference/data/<robot>.json`,
+//! The inputs are the 20 samples `(q, qd, qdd)` of the robot's data file,
 //! used cyclically. After 10,000 warm-up calls, 31 batches of 20,000 calls are timed with
 //! `std::time::Instant`; a batch's time per call is its elapsed time divided by its number of
 //! calls, and the median over the batches is printed. (`tau_reference`, thousands of times
@@ -75,7 +75,7 @@ use std::hint::black_box;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use dynamics_bench::{Puma560, Random5, Sample, Stanford, Ur5, DOF, ROBOTS};
+use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
 use dynamics_runtime::Dynamics;
 
@@ -138,11 +138,11 @@ struct Others {
 /// Calls `f` on the samples cyclically: the warm-up and the timed batches of `protocol`,
 /// returning the median ns per call (in [`Mode::Fastest`], the fastest batch's, over many shorter
 /// batches), or, in [`Mode::Calls`], exactly that many calls.
-fn drive<O>(
-    samples: &[Sample],
+fn drive<O, const N: usize>(
+    samples: &[Sample<N>],
     protocol: Protocol,
     mode: Mode,
-    mut f: impl FnMut(&Sample) -> O,
+    mut f: impl FnMut(&Sample<N>) -> O,
 ) -> Option<f64> {
     assert!(!samples.is_empty(), "no samples");
     let mut k = 0;
@@ -195,10 +195,10 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 /// Times (or calls, in [`Mode::Calls`]) `function` of `robot`.
-fn measure<R: Dynamics<DOF>>(
+fn measure<R: Dynamics<N>, const N: usize>(
     robot: &R,
     others: &Others,
-    samples: &[Sample],
+    samples: &[Sample<N>],
     function: &str,
     mode: Mode,
 ) -> Option<f64> {
@@ -222,7 +222,7 @@ fn measure<R: Dynamics<DOF>>(
 }
 
 /// Worst scaled error of `tau` over the samples.
-fn worst_error(samples: &[Sample], tau: impl Fn(&Sample) -> Vec<f64>) -> f64 {
+fn worst_error<const N: usize>(samples: &[Sample<N>], tau: impl Fn(&Sample<N>) -> Vec<f64>) -> f64 {
     samples
         .iter()
         .map(|s| dynamics_bench::scaled_error(&tau(s), &s.tau))
@@ -230,11 +230,11 @@ fn worst_error(samples: &[Sample], tau: impl Fn(&Sample) -> Vec<f64>) -> f64 {
 }
 
 /// The sanity line of `name` on stderr; `false` if the generated `tau` is off.
-fn sanity<R: Dynamics<DOF>>(
+fn sanity<R: Dynamics<N>, const N: usize>(
     robot: &R,
     name: &str,
     others: &Others,
-    samples: &[Sample],
+    samples: &[Sample<N>],
     all: bool,
 ) -> bool {
     let generated = worst_error(samples, |s| {
@@ -264,8 +264,13 @@ fn sanity<R: Dynamics<DOF>>(
 }
 
 /// Runs the selected functions of one robot; `false` if its sanity check failed.
-fn run<R: Dynamics<DOF>>(robot: &R, name: &str, functions: &[&str], args: &Args) -> bool {
-    let samples = dynamics_bench::samples(name);
+fn run<R: Dynamics<N>, const N: usize>(
+    robot: &R,
+    name: &str,
+    functions: &[&str],
+    args: &Args,
+) -> bool {
+    let samples = dynamics_bench::samples::<N>(name);
     let others = Others {
         numeric: dynamics_bench::numeric(name),
         book: dynamics_bench::book(name),
@@ -307,7 +312,7 @@ usage: timings [--all] [--fastest] [--robot ROBOT] [--function FUNCTION]
 
   --all          also time tau_reference, tau_rnea and M_crba
   --fastest      the fastest of 300 batches of 2,000 calls, not the median of 31 of 20,000
-  --robot R      only robot R: puma560, stanford, ur5, random5
+  --robot R      only robot R: puma560, stanford, ur5, random5, panda
   --function F   only function F: tau, M, g, C, h, tau_reference, tau_rnea, M_crba
   --calls N      make exactly N calls of one function, print nothing (for callgrind)";
 
@@ -370,6 +375,7 @@ fn main() -> ExitCode {
             "stanford" => run(&Stanford, name, &functions, &args),
             "ur5" => run(&Ur5, name, &functions, &args),
             "random5" => run(&Random5, name, &functions, &args),
+            "panda" => run(&Panda, name, &functions, &args),
             _ => unreachable!("every robot of ROBOTS has a struct"),
         };
         if !ok {
