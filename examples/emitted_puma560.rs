@@ -134,6 +134,9 @@ mod __dynamics {
         u129: T,
         u130: T,
         u131: T,
+        k83: T,
+        k84: T,
+        k85: T,
         u134: T,
         u136: T,
         u138: T,
@@ -157,9 +160,6 @@ mod __dynamics {
         u167: T,
         u168: T,
         u169: T,
-        k83: T,
-        k84: T,
-        k85: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -248,9 +248,9 @@ mod __dynamics {
         let k80: T = T::from_f64(-0.000116928);
         let k81: T = T::from_f64(0.00040432);
         let k82: T = T::from_f64(-0.00040432);
-        let k83: T = T::from_f64(-0.00002);
+        let k83: T = T::from_f64(-0.5);
         let k84: T = T::from_f64(0.00002);
-        let k85: T = T::from_f64(-0.5);
+        let k85: T = T::from_f64(-0.00002);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -630,6 +630,9 @@ mod __dynamics {
             u129,
             u130,
             u131,
+            k83,
+            k84,
+            k85,
             u134,
             u136,
             u138,
@@ -653,9 +656,6 @@ mod __dynamics {
             u167,
             u168,
             u169,
-            k83,
-            k84,
-            k85,
         }
     }
     /// What several methods compute from `q̇` too, computed once.
@@ -967,6 +967,9 @@ mod __dynamics {
             u129,
             u130,
             u131,
+            k83,
+            k84,
+            k85,
             u134,
             u136,
             u138,
@@ -990,85 +993,82 @@ mod __dynamics {
             u167,
             u168,
             u169,
-            k83,
-            k84,
-            k85,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
-        let t1 = u57 * qd2;
-        let t2 = qd3 * u143;
-        let t3 = qd4 * u151;
-        let t4 = qd5 * u168;
+        let t1 = s5 * qd5;
+        let t2 = qd4 * u103;
+        let t3 = u57 * qd2;
+        let t4 = qd3 * u143;
+        let t5 = qd4 * u151;
+        let t6 = qd5 * u168;
         /// C16 = sum of D16k qd_k (6.44)
-        let cor1_6 = k83
+        let cor1_6 = k85
             * ((-qd4).mul_add(u154, qd2 * u139) + qd5.mul_add(u169, qd3 * u139));
-        let t5 = u58 * qd3;
-        let t6 = k2 * t5;
-        let t7 = qd4 * u113;
-        let t8 = qd5 * u165;
-        let t9 = qd1 * u139;
+        let t7 = u58 * qd3;
+        let t8 = k2 * t7;
+        let t9 = qd4 * u113;
+        let t10 = qd5 * u165;
+        let t11 = qd1 * u139;
         /// C33 = sum of D33k qd_k (6.44)
         let cor3_3 = k1 * qd4.mul_add(u102, qd5 * u124);
-        let t10 = qd4 * u103;
-        let t11 = qd5 * u131;
+        let t12 = qd5 * u131;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = k37 * (u2 * qd5);
-        let t12 = qd1.mul_add(u154, u6.mul_add(qd3, u6 * qd2));
-        let t13 = s5 * qd5;
+        let t13 = qd1.mul_add(u154, u6.mul_add(qd3, u6 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
-        let cor4_6 = k83 * (t13 + t12);
+        let cor4_6 = k85 * (t1 + t13);
         let t14 = qd1.mul_add(u169, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k84 * t14;
         /// C65 = sum of D65k qd_k (6.44)
-        let cor6_5 = k83 * t14;
+        let cor6_5 = k85 * t14;
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * (qd4.mul_add(u112, qd5 * u161) + k35.mul_add(u56 * qd2, qd3 * u141));
-        let t15 = qd5.mul_add(u162, qd4 * u148) + qd3.mul_add(u142, t1);
+            * (qd4.mul_add(u112, qd5 * u161) + qd3.mul_add(u141, k35 * (u56 * qd2)));
+        let t15 = qd5.mul_add(u162, qd4 * u148) + qd3.mul_add(u142, t3);
         let t16 = k36 * (qd6 * u139);
         let t17 = k35
             .mul_add(
                 u56 * qd1,
-                t1 + qd3.mul_add(u134, qd5.mul_add(u138, qd4.mul_add(u136, t16))),
+                t3 + qd3.mul_add(u134, qd5.mul_add(u138, qd4.mul_add(u136, t16))),
             );
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t15 + t17);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t15 - t17);
-        let t18 = qd2.mul_add(u134, qd5.mul_add(u166, qd4 * u149) + t2);
+        let t18 = qd2.mul_add(u134, qd5.mul_add(u166, qd4 * u149) + t4);
         let t19 = qd1
             .mul_add(
                 u141,
-                qd2.mul_add(u142, qd5.mul_add(u146, qd4.mul_add(u145, t16)) + t2),
+                qd2.mul_add(u142, qd5.mul_add(u146, qd4.mul_add(u145, t16)) + t4),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t18 + t19);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t18 - t19);
-        let t20 = qd2.mul_add(u136, t3) + qd5.mul_add(u167, qd3 * u145);
+        let t20 = qd2.mul_add(u136, t5) + qd5.mul_add(u167, qd3 * u145);
         let t21 = qd1
             .mul_add(
                 u112,
                 qd2
                     .mul_add(
                         u148,
-                        k7.mul_add(qd6 * u154, t3) + qd5.mul_add(u153, qd3 * u149),
+                        k7.mul_add(qd6 * u154, t5) + qd5.mul_add(u153, qd3 * u149),
                     ),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t20 + t21);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t20 - t21);
-        let t22 = qd2.mul_add(u138, t4) + qd4.mul_add(u153, qd3 * u146);
+        let t22 = qd2.mul_add(u138, t6) + qd4.mul_add(u153, qd3 * u146);
         let t23 = qd1
             .mul_add(
                 u161,
                 qd2
                     .mul_add(
                         u162,
-                        k36.mul_add(qd6 * u169, t4) + qd3.mul_add(u166, qd4 * u167),
+                        k36.mul_add(qd6 * u169, t6) + qd3.mul_add(u166, qd4 * u167),
                     ),
             );
         /// C15 = sum of D15k qd_k (6.44)
@@ -1076,8 +1076,8 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t22 - t23);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd4.mul_add(u111, qd5.mul_add(u130, k64 * t5));
-        let t24 = qd4.mul_add(u110, qd5.mul_add(u129, t6));
+        let cor2_2 = k1 * qd4.mul_add(u111, qd5.mul_add(u130, k64 * t7));
+        let t24 = qd4.mul_add(u110, qd5.mul_add(u129, t8));
         let t25 = qd1
             .mul_add(
                 u142,
@@ -1087,7 +1087,7 @@ mod __dynamics {
                         k64
                             .mul_add(
                                 u58 * qd2,
-                                k44.mul_add(u76 * qd5, k42 * (u62 * qd4)) + t6,
+                                k44.mul_add(u76 * qd5, k42 * (u62 * qd4)) + t8,
                             ),
                     ),
             );
@@ -1095,7 +1095,7 @@ mod __dynamics {
         let cor2_3 = k1 * (t24 + t25);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t24 - t25);
-        let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t7));
+        let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t9));
         let t27 = k7 * (u6 * qd6);
         let t28 = qd1
             .mul_add(
@@ -1106,7 +1106,7 @@ mod __dynamics {
                         (-qd1)
                             .mul_add(
                                 u136,
-                                qd3.mul_add(u110, qd5.mul_add(u117, t27) + t7),
+                                qd3.mul_add(u110, qd5.mul_add(u117, t27) + t9),
                             ),
                     ),
             );
@@ -1114,12 +1114,12 @@ mod __dynamics {
         let cor2_4 = k1 * (t26 + t28);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t26 - t28);
-        let t29 = t8 + qd4.mul_add(u117, k44 * (u76 * qd3));
+        let t29 = t10 + qd4.mul_add(u117, k44 * (u76 * qd3));
         let t30 = k7 * (u68 * qd6);
         let t31 = qd1
             .mul_add(
                 u162,
-                qd2.mul_add(u130, t30 + t8)
+                qd2.mul_add(u130, t30 + t10)
                     + (-qd1).mul_add(u138, qd4.mul_add(u163, qd3 * u129)),
             );
         /// C25 = sum of D25k qd_k (6.44)
@@ -1128,10 +1128,10 @@ mod __dynamics {
         let cor5_2 = k1 * (t29 - t31);
         let t32 = u68.mul_add(qd5, u6 * qd4);
         /// C26 = sum of D26k qd_k (6.44)
-        let cor2_6 = k84 * (t32 + t9);
+        let cor2_6 = k84 * (t32 + t11);
         /// C62 = sum of D62k qd_k (6.44)
-        let cor6_2 = k84 * (t32 - t9);
-        let t33 = qd5.mul_add(u157, t10);
+        let cor6_2 = k84 * (t32 - t11);
+        let t33 = qd5.mul_add(u157, t2);
         let t34 = qd2.mul_add(u110, qd1 * u149)
             + (-qd1)
                 .mul_add(
@@ -1139,14 +1139,14 @@ mod __dynamics {
                     qd3
                         .mul_add(
                             u102,
-                            t10 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u115, t27)),
+                            t2 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u115, t27)),
                         ),
                 );
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
-        let t35 = qd4.mul_add(u115, t11);
+        let t35 = qd4.mul_add(u115, t12);
         let t36 = qd1
             .mul_add(
                 u166,
@@ -1154,7 +1154,7 @@ mod __dynamics {
                     .mul_add(
                         u146,
                         qd4.mul_add(u157, qd3 * u124)
-                            + qd2.mul_add(u129, (-k44).mul_add(u76 * qd2, t30 + t11)),
+                            + qd2.mul_add(u129, (-k44).mul_add(u76 * qd2, t30 + t12)),
                     ),
             );
         /// C35 = sum of D35k qd_k (6.44)
@@ -1178,9 +1178,9 @@ mod __dynamics {
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t37;
         /// C54 = sum of D54k qd_k (6.44)
-        let cor5_4 = k85 * t37;
+        let cor5_4 = k83 * t37;
         /// C64 = sum of D64k qd_k (6.44)
-        let cor6_4 = k83 * (t13 - t12);
+        let cor6_4 = k85 * (t1 - t13);
         [
             [cor1_1, cor1_2, cor1_3, cor1_4, cor1_5, cor1_6],
             [cor2_1, cor2_2, cor2_3, cor2_4, cor2_5, cor2_6],

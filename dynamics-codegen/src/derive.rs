@@ -6,7 +6,9 @@
 //!   D_ijk, eq. 6.44), with `∂M/∂q_k` from differentiating `M`'s graph or, for a revolute
 //!   joint, the composite rigid body algorithm ([`algo::crba_derivative`]), and
 //!   `C_ij = Σ_k Γ_ijk q̇_k`, summed over the symbols or as `½(Ṁ_ij + P_ij − P_ji)` with
-//!   `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`: of the four, the cheapest C is kept;
+//!   `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`; or, for an all-revolute robot, by carrying two wrenches per
+//!   column down the chain ([`algo::coriolis_matrix`], O(n²)): of the five, the cheapest C
+//!   is kept (the symbols stay those of `M`'s graph when the carried C wins);
 //! * `τ`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * `g` by Newton-Euler at rest or from the composite bodies' first moments
 //!   ([`algo::gravity_torques`]), whichever takes fewer operations, plus springs;
@@ -413,6 +415,11 @@ pub fn derive(robot: &Robot) -> Equations {
             algo::crba_derivative(&chain, k).map(|dm| dm.iter().flat_map(|r| ids(r)).collect())
         })
         .collect();
+    // C in O(n²) carries, without the derivatives of M (all-revolute chains): fewer operations
+    // than the sums from seven joints on (the Panda 2,222 → 2,118, counting what C shares
+    // with M), more below (PUMA 560 743 against 994).
+    let carried: Option<Vec<Vec<NodeId>>> =
+        algo::coriolis_matrix(&chain, &qd).map(|c| c.iter().map(|r| ids(r)).collect());
     let mut g = graph.into_inner();
     let traced: Vec<Vec<NodeId>> = (0..n).map(|k| g.derivative(&flat, idx(k))).collect();
     let by_algorithm: Vec<Vec<NodeId>> = analytic
@@ -422,7 +429,7 @@ pub fn derive(robot: &Robot) -> Equations {
         .collect();
     // Which way is cheaper depends on the robot (differentiating the algorithm wins on PUMA 560
     // and UR5, the trace on dense random arms; the sum of symbols on the latter too): the
-    // cheapest C of the four is kept, with its symbols.
+    // cheapest C of the four is kept, with its symbols; then the carried one, if cheaper.
     let mut best = None;
     let mut best_cost = usize::MAX;
     for dm in [&traced, &by_algorithm] {
@@ -434,6 +441,12 @@ pub fn derive(robot: &Robot) -> Equations {
                 best_cost = cost;
                 best = Some((christoffel.clone(), coriolis));
             }
+        }
+    }
+    if let (Some(c), Some((christoffel, _))) = (carried, &best) {
+        let flat: Vec<NodeId> = c.iter().flatten().copied().collect();
+        if operations(&g, &flat) < best_cost {
+            best = Some((christoffel.clone(), c));
         }
     }
     let (christoffel, coriolis) = best.unwrap_or_default();

@@ -120,7 +120,7 @@ pub(super) fn composites<S: Scalar>(chain: &Chain<S>) -> Vec<Body<S>> {
 }
 
 /// The wrench at J_i of `body` given a unit acceleration of joint i.
-fn wrench<S: Scalar>(chain: &Chain<S>, i: usize, body: &Body<S>) -> (V3<S>, V3<S>) {
+pub(super) fn wrench<S: Scalar>(chain: &Chain<S>, i: usize, body: &Body<S>) -> (V3<S>, V3<S>) {
     let zero = body.mass.zero();
     let z = V3::new(zero, zero, zero.one());
     match chain.joints[i].kind {

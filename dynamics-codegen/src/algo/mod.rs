@@ -6,6 +6,7 @@
 //! joint's axis (the modified D-H form), which both D-H conventions convert to exactly.
 
 mod chain;
+mod coriolis;
 mod crba;
 mod energy;
 mod gravity;
@@ -13,6 +14,7 @@ mod rnea;
 mod vector;
 
 pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, JointKind, WrenchCarrier};
+pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
 pub use gravity::gravity_torques;
