@@ -13,7 +13,8 @@
 //!
 //! `İc_j` in J_j's axes is `v_j ×* Ic_j − Ic_j v_j × + L_j`, where `L_j` is the rate of `Ic_j`
 //! as J_j sees it: each joint k > j turning at `q̇_k` adds its commutator, carried inward as in
-//! [`super::crba_derivative`]. Revolute joints only: `None` when a joint is prismatic.
+//! [`super::crba_derivative`] (a prismatic joint adds the rate of a shift along z instead).
+//! `None` for a chain that turns through sums of angles.
 
 use super::crba::{composites, wrench};
 use super::{Body, Chain, ChainJoint, JointKind, Scalar, V3};
@@ -61,14 +62,10 @@ fn scaled_body<S: Scalar>(b: &Body<S>, k: S) -> Body<S> {
     }
 }
 
-/// The Coriolis matrix of an all-revolute `chain` at rates `qd`.
+/// The Coriolis matrix of `chain` at rates `qd`; `None` if the chain sums angles.
 pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<S>>> {
     let n = chain.joints.len();
-    if chain
-        .joints
-        .iter()
-        .any(|j| j.kind != JointKind::Revolute || j.sum_angles)
-    {
+    if chain.joints.iter().any(|j| j.sum_angles) {
         return None;
     }
     let first = chain.joints.first()?;
@@ -87,8 +84,17 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
             }
             None => (V3::zero(zero), V3::zero(zero)),
         };
-        omega.push(w.add(V3::new(zero, zero, qd[i])));
-        vel.push(v);
+        let rate = V3::new(zero, zero, qd[i]);
+        match joint.kind {
+            JointKind::Revolute => {
+                omega.push(w.add(rate));
+                vel.push(v);
+            }
+            JointKind::Prismatic => {
+                omega.push(w);
+                vel.push(v.add(rate));
+            }
+        }
     }
     let composite = composites(chain);
     // Momenta of the composites, hc_i = I_i v_i + X(hc_{i+1}).
@@ -104,7 +110,10 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
     for i in (0..n.saturating_sub(1)).rev() {
         let joint = &chain.joints[i + 1];
         let carried = rate[i + 1].as_ref().map(|r| joint.body_to_parent(r));
-        let own = commutator(joint, &composite[i + 1], qd[i + 1]);
+        let own = match joint.kind {
+            JointKind::Revolute => commutator(joint, &composite[i + 1], qd[i + 1]),
+            JointKind::Prismatic => slide(joint, &composite[i + 1], qd[i + 1]),
+        };
         rate[i] = Some(match carried {
             Some(c) => c.add(&own),
             None => own,
@@ -114,31 +123,70 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
     for j in 0..n {
         let f2 = wrench(chain, j, &composite[j]);
         let (w, v) = (omega[j], vel[j]);
-        // Ṡ_j = (ω_j × z, v_j × z) = −(z × ω_j, z × v_j).
-        let ic_s_dot = momentum(&composite[j], -z_cross(w), -z_cross(v));
+        // Ṡ_j = (ω_j × z, v_j × z) = −(z × ω_j, z × v_j), or (0, ω_j × z) when prismatic.
+        let revolute = chain.joints[j].kind == JointKind::Revolute;
+        let ic_s_dot = if revolute {
+            momentum(&composite[j], -z_cross(w), -z_cross(v))
+        } else {
+            momentum(&composite[j], V3::zero(zero), -z_cross(w))
+        };
         let l_s = rate[j]
             .as_ref()
             .map_or((V3::zero(zero), V3::zero(zero)), |r| wrench(chain, j, r));
-        let s_hc = (z_cross(hc[j].0), z_cross(hc[j].1));
+        let s_hc = if revolute {
+            (z_cross(hc[j].0), z_cross(hc[j].1))
+        } else {
+            (V3::zero(zero), z_cross(hc[j].0))
+        };
         // İc S = v ×* f2 − Ic Ṡ + L S.
         let ic_rate_s = add(sub(cross_force(w, v, f2), ic_s_dot), l_s);
         let mut a = add(ic_s_dot, half(add(ic_rate_s, s_hc)));
         let mut b = half(sub(ic_rate_s, s_hc));
         let mut f2 = f2;
-        c[j][j] = a.1.z;
+        c[j][j] = axis(chain, j, a);
         for i in (0..j).rev() {
             let through = &chain.joints[i + 1];
             f2 = through.wrench_to_parent(f2.0, f2.1);
             let (wi, vi) = (omega[i], vel[i]);
-            // Ṡ_i · Ic_j S_j with Ṡ_i = (ω_i × z, v_i × z).
-            let s_dot_f2 = wi.y * f2.1.x - wi.x * f2.1.y + (vi.y * f2.0.x - vi.x * f2.0.y);
+            // Ṡ_i · Ic_j S_j with Ṡ_i = (ω_i × z, v_i × z), or (0, ω_i × z).
+            let s_dot_f2 = match chain.joints[i].kind {
+                JointKind::Revolute => {
+                    wi.y * f2.1.x - wi.x * f2.1.y + (vi.y * f2.0.x - vi.x * f2.0.y)
+                }
+                JointKind::Prismatic => wi.y * f2.0.x - wi.x * f2.0.y,
+            };
             a = through.wrench_to_parent(a.0, a.1);
             b = through.wrench_to_parent(b.0, b.1);
-            c[i][j] = a.1.z;
-            c[j][i] = s_dot_f2 + b.1.z;
+            c[i][j] = axis(chain, i, a);
+            c[j][i] = s_dot_f2 + axis(chain, i, b);
         }
     }
     Some(c)
+}
+
+/// `S_i ·` a force: its moment's or its force's z component.
+fn axis<S: Scalar>(chain: &Chain<S>, i: usize, (f, n): Force<S>) -> S {
+    match chain.joints[i].kind {
+        JointKind::Revolute => n.z,
+        JointKind::Prismatic => f.z,
+    }
+}
+
+/// `q̇ ∂/∂d` of `X(d) Ic` through prismatic `joint`, which shifts `Ic` by `d` along z before
+/// the rest of its transform: the rate of a shift, `(0, m z, 2(z·h) 1 − z hᵀ − h zᵀ)`, of
+/// the shifted body, carried through the joint at d = 0.
+fn slide<S: Scalar>(joint: &ChainJoint<S>, ic: &Body<S>, qd: S) -> Body<S> {
+    let zero = qd.zero();
+    let shifted = ic.moved_by(V3::new(zero, zero, joint.d));
+    let h = shifted.h;
+    let hz2 = h.z + h.z;
+    let rate = Body {
+        mass: zero,
+        h: V3::new(zero, zero, shifted.mass),
+        inertia: [hz2, hz2, zero, zero, -h.x, -h.y],
+    };
+    let frozen = ChainJoint { d: zero, ..*joint };
+    scaled_body(&frozen.body_to_parent(&rate), qd)
 }
 
 /// `q̇ ∂/∂θ` of `X(θ) Ic` through revolute `joint`: the commutator of `Ic` turned by θ,
@@ -163,29 +211,28 @@ fn commutator<S: Scalar>(joint: &ChainJoint<S>, ic: &Body<S>, qd: S) -> Body<S> 
 #[cfg(test)]
 mod tests {
     use super::coriolis_matrix;
-    use crate::algo::{crba, parallel_chain};
+    use crate::algo::{crba, parallel_chain, test_chain};
 
-    /// Against the Christoffel symbols of `M` by central differences, on a 6-joint arm with
-    /// general and quarter-turn twists and parallel axes, as given and regrouped.
-    #[test]
-    fn matches_christoffel_symbols_of_the_mass_matrix() {
-        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4];
-        let qd = [0.4, -0.9, 1.3, 0.2, -1.7, 0.8];
+    use crate::algo::Chain;
+
+    /// `coriolis_matrix` of `at(q)` against the Christoffel symbols of `M` by central
+    /// differences, for the chain as given and regrouped.
+    fn check(at: &dyn Fn(&[f64]) -> Chain<f64>, q: &[f64], qd: &[f64]) {
         let n = q.len();
         for (regroup, before) in [(false, false), (true, false), (true, true)] {
             let at = |q: &[f64]| {
-                let c = parallel_chain(q, true).moving_before_twist(before);
+                let c = at(q).moving_before_twist(before);
                 if regroup {
                     c.regrouped()
                 } else {
                     c
                 }
             };
-            let c = coriolis_matrix(&at(&q), &qd).expect("all revolute");
+            let c = coriolis_matrix(&at(q), qd).expect("no sums of angles");
             let h = 1e-6;
             let dm: Vec<Vec<Vec<f64>>> = (0..n)
                 .map(|k| {
-                    let (mut p, mut m) = (q, q);
+                    let (mut p, mut m) = (q.to_vec(), q.to_vec());
                     p[k] += h;
                     m[k] -= h;
                     let (mp, mm) = (crba(&at(&p)), crba(&at(&m)));
@@ -207,5 +254,23 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A 6-joint all-revolute arm with general and quarter-turn twists and parallel axes.
+    #[test]
+    fn matches_christoffel_symbols_on_a_revolute_arm() {
+        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4];
+        let qd = [0.4, -0.9, 1.3, 0.2, -1.7, 0.8];
+        check(&|q| parallel_chain(q, true), &q, &qd);
+    }
+
+    /// With prismatic joints: the 5-joint test arm (joint 3) and the 7-joint one (joint 7).
+    #[test]
+    fn matches_christoffel_symbols_with_prismatic_joints() {
+        let (q, qd) = ([0.3, -1.1, 0.25, 2.0, -0.6], [0.4, -0.9, 1.3, 0.2, -1.7]);
+        check(&test_chain, &q, &qd);
+        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4, 0.35];
+        let qd = [0.4, -0.9, 1.3, 0.2, -1.7, 0.8, -0.6];
+        check(&|q| parallel_chain(q, false), &q, &qd);
     }
 }
