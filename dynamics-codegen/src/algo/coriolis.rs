@@ -16,7 +16,7 @@
 //! [`super::crba_derivative`] (a prismatic joint adds the rate of a shift along z instead).
 //! `None` for a chain that turns through sums of angles.
 
-use super::crba::{composites, wrench};
+use super::crba::{composites, turn_derivative, wrench};
 use super::{Body, Chain, ChainJoint, JointKind, Scalar, V3};
 use std::ops::Add;
 
@@ -189,23 +189,9 @@ fn slide<S: Scalar>(joint: &ChainJoint<S>, ic: &Body<S>, qd: S) -> Body<S> {
     scaled_body(&frozen.body_to_parent(&rate), qd)
 }
 
-/// `q̇ ∂/∂θ` of `X(θ) Ic` through revolute `joint`: the commutator of `Ic` turned by θ,
-/// carried through the joint frozen at θ = 0 (see [`super::crba_derivative`]).
+/// `q̇ ∂/∂θ` of `X(θ) Ic` through revolute `joint` ([`turn_derivative`]).
 fn commutator<S: Scalar>(joint: &ChainJoint<S>, ic: &Body<S>, qd: S) -> Body<S> {
-    let zero = qd.zero();
-    let h = joint.to_turned(ic.h);
-    let [xx, yy, _, xy, xz, yz] = joint.turned_inertia(ic.inertia);
-    let d_turned = Body {
-        mass: zero,
-        h: V3::new(-h.y, h.x, zero),
-        inertia: [-(xy + xy), xy + xy, zero, xx - yy, -yz, xz],
-    };
-    let frozen = ChainJoint {
-        sin_theta: zero,
-        cos_theta: zero.one(),
-        ..*joint
-    };
-    scaled_body(&frozen.body_to_parent(&d_turned), qd)
+    scaled_body(&turn_derivative(joint, ic), qd)
 }
 
 #[cfg(test)]

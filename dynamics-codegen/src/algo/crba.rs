@@ -53,23 +53,7 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
     // ∂Ic_i for i < k.
     let mut d_composite: Vec<Option<Body<S>>> = vec![None; n];
     if k > 0 {
-        let b = &composite[k];
-        let h = joint.to_turned(b.h);
-        let i = joint.turned_inertia(b.inertia);
-        let [xx, yy, _, xy, xz, yz] = i;
-        let d_turned = Body {
-            mass: zero,
-            h: V3::new(-h.y, h.x, zero),
-            inertia: [-(xy + xy), xy + xy, zero, xx - yy, -yz, xz],
-        };
-        // The rest of the carry (twist and offset) is linear: carry the derivative through a
-        // joint frozen at θ = 0.
-        let frozen = ChainJoint {
-            sin_theta: zero,
-            cos_theta: zero.one(),
-            ..*joint
-        };
-        d_composite[k - 1] = Some(frozen.body_to_parent(&d_turned));
+        d_composite[k - 1] = Some(turn_derivative(joint, &composite[k]));
         for i in (0..k - 1).rev() {
             d_composite[i] = d_composite[i + 1]
                 .as_ref()
@@ -106,6 +90,26 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
         }
     }
     Some(dm)
+}
+
+/// `∂/∂θ` of `X(θ) b` for revolute `joint`, `b` given in the joint's frame: the commutator
+/// `[z]× I' − I' [z]×` (and `z × h'`) of `b` turned by θ, carried through the joint frozen at
+/// θ = 0, since the rest of the carry (twist and offset) is linear.
+pub(super) fn turn_derivative<S: Scalar>(joint: &ChainJoint<S>, b: &Body<S>) -> Body<S> {
+    let zero = b.mass.zero();
+    let h = joint.to_turned(b.h);
+    let [xx, yy, _, xy, xz, yz] = joint.turned_inertia(b.inertia);
+    let d_turned = Body {
+        mass: zero,
+        h: V3::new(-h.y, h.x, zero),
+        inertia: [-(xy + xy), xy + xy, zero, xx - yy, -yz, xz],
+    };
+    let frozen = ChainJoint {
+        sin_theta: zero,
+        cos_theta: zero.one(),
+        ..*joint
+    };
+    frozen.body_to_parent(&d_turned)
 }
 
 /// The composite bodies `Ic_i = body_i + X_{i+1}(Ic_{i+1})`, each about J_i.
