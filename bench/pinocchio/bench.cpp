@@ -482,35 +482,40 @@ static const int BATCHES = 31;
 static const int CALLS = 20000;
 
 // The inputs are the samples' (q, qd, qdd), used cyclically. `f(k)` runs the function on sample
-// k and returns one element of its output, which is added to the checksum.
+// k and returns one element of its output, which is added to `sum`; `k` moves on from call to
+// call. Returns the batch's ns per call.
 template<typename F>
-static double median_ns(std::size_t nsamples, F && f, double & checksum)
+static double batch_ns(F && f, int calls, std::size_t nsamples, std::size_t & k, double & sum)
 {
-  std::size_t k = 0;
-  double sum = 0.0;
-  for (int i = 0; i < WARMUP; ++i)
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < calls; ++i)
   {
     sum += f(k);
     if (++k == nsamples)
       k = 0;
   }
-  std::vector<double> ns(BATCHES);
-  for (int b = 0; b < BATCHES; ++b)
-  {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < CALLS; ++i)
-    {
-      sum += f(k);
-      if (++k == nsamples)
-        k = 0;
-    }
-    const auto t1 = std::chrono::steady_clock::now();
-    ns[static_cast<std::size_t>(b)] =
-      std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(CALLS);
-  }
-  checksum += sum;
+  const auto t1 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(calls);
+}
+
+static double median(std::vector<double> ns)
+{
   std::sort(ns.begin(), ns.end());
-  return ns[BATCHES / 2];
+  return ns[ns.size() / 2];
+}
+
+// WARMUP calls, then the median of BATCHES batches of CALLS calls.
+template<typename F>
+static double median_ns(std::size_t nsamples, F && f, double & checksum)
+{
+  std::size_t k = 0;
+  double sum = 0.0;
+  batch_ns(f, WARMUP, nsamples, k, sum);
+  std::vector<double> ns(BATCHES);
+  for (auto & t : ns)
+    t = batch_ns(f, CALLS, nsamples, k, sum);
+  checksum += sum;
+  return median(ns);
 }
 
 // The same protocol for two functions timed in turn: warm-up calls of each, then BATCHES pairs
@@ -520,38 +525,24 @@ static std::pair<double, double> median_ns_in_turn(std::size_t nsamples, F && f,
 {
   std::size_t k = 0;
   double sum = 0.0;
-  auto batch = [&](auto && h, int calls) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < calls; ++i)
-    {
-      sum += h(k);
-      if (++k == nsamples)
-        k = 0;
-    }
-    const auto t1 = std::chrono::steady_clock::now();
-    return std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(calls);
-  };
-  batch(f, WARMUP);
-  batch(g, WARMUP);
+  batch_ns(f, WARMUP, nsamples, k, sum);
+  batch_ns(g, WARMUP, nsamples, k, sum);
   std::vector<double> ns_f(BATCHES), ns_g(BATCHES);
-  for (int b = 0; b < BATCHES; ++b)
+  for (std::size_t b = 0; b < ns_f.size(); ++b)
   {
-    const std::size_t i = static_cast<std::size_t>(b);
     if (b % 2 == 0)
     {
-      ns_f[i] = batch(f, CALLS);
-      ns_g[i] = batch(g, CALLS);
+      ns_f[b] = batch_ns(f, CALLS, nsamples, k, sum);
+      ns_g[b] = batch_ns(g, CALLS, nsamples, k, sum);
     }
     else
     {
-      ns_g[i] = batch(g, CALLS);
-      ns_f[i] = batch(f, CALLS);
+      ns_g[b] = batch_ns(g, CALLS, nsamples, k, sum);
+      ns_f[b] = batch_ns(f, CALLS, nsamples, k, sum);
     }
   }
   checksum += sum;
-  std::sort(ns_f.begin(), ns_f.end());
-  std::sort(ns_g.begin(), ns_g.end());
-  return {ns_f[BATCHES / 2], ns_g[BATCHES / 2]};
+  return {median(ns_f), median(ns_g)};
 }
 
 // ---------------------------------------------------------------------------------------------
