@@ -91,6 +91,32 @@ unsafe fn output_matrix<const N: usize>(out: *mut f64, m: [[f64; N]; N]) {
     }
 }
 
+/// A robot's number of joints and its function lookup.
+type Robot = (usize, fn(&[u8]) -> Option<Function>);
+
+fn entry<R: Dynamics<N> + Default, const N: usize>() -> Robot {
+    (N, Functions::<R, N>::get)
+}
+
+/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5` or `panda`).
+///
+/// # Safety
+/// `name` is null or a NUL-terminated string.
+unsafe fn robot(name: *const c_char) -> Option<Robot> {
+    if name.is_null() {
+        return None;
+    }
+    // SAFETY: the caller's contract.
+    Some(match unsafe { CStr::from_ptr(name) }.to_bytes() {
+        b"puma560" => entry::<Puma560, 6>(),
+        b"stanford" => entry::<Stanford, 6>(),
+        b"ur5" => entry::<Ur5, 6>(),
+        b"random5" => entry::<Random5, 6>(),
+        b"panda" => entry::<Panda, 7>(),
+        _ => return None,
+    })
+}
+
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5` or `panda`), or null for an unknown name.
 ///
@@ -101,20 +127,13 @@ pub unsafe extern "C" fn dynamics_bench_function(
     robot: *const c_char,
     function: *const c_char,
 ) -> Option<Function> {
-    if robot.is_null() || function.is_null() {
+    // SAFETY: the caller's contract.
+    let (_, get) = unsafe { self::robot(robot) }?;
+    if function.is_null() {
         return None;
     }
     // SAFETY: the caller's contract.
-    let (robot, function) = unsafe { (CStr::from_ptr(robot), CStr::from_ptr(function)) };
-    let function = function.to_bytes();
-    match robot.to_bytes() {
-        b"puma560" => Functions::<Puma560, 6>::get(function),
-        b"stanford" => Functions::<Stanford, 6>::get(function),
-        b"ur5" => Functions::<Ur5, 6>::get(function),
-        b"random5" => Functions::<Random5, 6>::get(function),
-        b"panda" => Functions::<Panda, 7>::get(function),
-        _ => None,
-    }
+    get(unsafe { CStr::from_ptr(function) }.to_bytes())
 }
 
 /// The number of joints of `robot`, 0 for an unknown name, for the caller to check against
@@ -124,15 +143,8 @@ pub unsafe extern "C" fn dynamics_bench_function(
 /// `robot` is null or a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn dynamics_bench_dof(robot: *const c_char) -> usize {
-    if robot.is_null() {
-        return 0;
-    }
     // SAFETY: the caller's contract.
-    match unsafe { CStr::from_ptr(robot) }.to_bytes() {
-        b"puma560" | b"stanford" | b"ur5" | b"random5" => 6,
-        b"panda" => 7,
-        _ => 0,
-    }
+    unsafe { self::robot(robot) }.map_or(0, |(n, _)| n)
 }
 
 #[cfg(test)]
