@@ -1,8 +1,8 @@
 //! Criterion benchmarks: the generated dynamics against the other implementations in this
 //! workspace, on the four 6-joint reference robots and the 7-joint Panda.
 //!
-//! One group per robot (`puma560`, `stanford`, `ur5`, `random5`, `panda`), each measuring, at one fixed
-//! state taken from the robot's reference data:
+//! One group per robot (`puma560`, `stanford`, `ur5`, `random5`, `panda`), each measuring, at
+//! one fixed state taken from the robot's reference data:
 //!
 //! * `inverse_dynamics`, `mass_matrix`, `coriolis_matrix`, `gravity_torques`: the generated
 //!   closed-form `f64` methods of `#[derive(Dynamics)]`;
@@ -13,7 +13,7 @@
 //!   fewer samples since one call takes far longer.
 //!
 //! Run with `cargo bench -p dynamics-bench` (about a minute). The numbers compared with
-//! Pinocchio come from the `timings` binary instead, whose protocol matches the C++ side.
+//! Pinocchio come from `bench/run` instead, whose C++ program times both sides in turn.
 
 use std::hint::black_box;
 use std::time::Duration;

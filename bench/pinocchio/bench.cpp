@@ -2,8 +2,8 @@
 //
 // Usage: pinocchio_bench [--generated LIB.so] DATA.json [DATA.json ...]
 //
-// Each argument is a reference data file, of tests/data/reference/data/ or tests/data/panda/ (format in
-// tests/data/reference/README.md). For each file the program
+// Each argument is a reference data file, of tests/data/reference/data/ or tests/data/panda/
+// (format in tests/data/reference/README.md). For each file the program
 //   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
 //      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
 //      transforms, link inertias mapped with post_i.act(...), armature = actuator inertias,
@@ -23,8 +23,8 @@
 // a C ABI), the program also loads the generated functions, checks each against the reference
 // data on every sample (the same tolerance), and times the two sides in turn, batch by batch
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
-// of this shared machine. Each line then reads `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`,
-// each the median over its own batches.
+// of this shared machine. Each line then reads
+// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches.
 
 #include <algorithm>
 #include <chrono>

@@ -7,8 +7,8 @@
 //!   joint, the composite rigid body algorithm ([`algo::crba_derivative`]), and
 //!   `C_ij = Σ_k Γ_ijk q̇_k`, summed over the symbols or as `½(Ṁ_ij + P_ij − P_ji)` with
 //!   `P_ij = Σ_k ∂M_ik/∂q_j q̇_k`; or by carrying two wrenches per column down the chain
-//!   ([`algo::coriolis_matrix`], O(n²)): of the five, the cheapest C
-//!   is kept (the symbols stay those of `M`'s graph when the carried C wins);
+//!   ([`algo::coriolis_matrix`], O(n²)): of the five, the cheapest C is kept (the symbols stay
+//!   those of `M`'s graph when the carried C wins);
 //! * `τ`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia and springs;
 //! * `g` by Newton-Euler at rest or from the composite bodies' first moments
 //!   ([`algo::gravity_torques`]), whichever takes fewer operations, plus springs;

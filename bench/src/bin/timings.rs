@@ -1,6 +1,8 @@
 //! Wall-clock time per call of the generated dynamics of the four 6-joint reference robots and
-//! the 7-joint Panda, measured with the same protocol as the C++ Pinocchio benchmark of `bench/pinocchio/`, so that
-//! the two sets of numbers compare directly.
+//! the 7-joint Panda, in Rust alone, with the protocol of the C++ program of `bench/pinocchio/`.
+//! The comparison with Pinocchio is that program's (`bench/run`), which calls the generated code
+//! through `bench/ffi` and times both sides in turn; this binary is for comparing builds of the
+//! generated code, the other implementations (`--all`) and instruction counts.
 //!
 //! ```text
 //! cargo run --release -p dynamics-bench --bin timings [-- [--all] [--robot R] [--function F]]
@@ -46,7 +48,7 @@
 //! `--fastest` prints instead the fastest of 300 batches of 2,000 calls: on a machine shared
 //! with noisy neighbours, the figure least disturbed by them, for comparing two builds of the
 //! generated code run alternately (a median moves with the neighbours' spells). It is not the
-//! protocol of the Pinocchio side; `bench/run` does not use it.
+//! protocol of the Pinocchio side.
 //!
 //! On stderr, one sanity line per robot: the generated `tau` must equal the data's `tau`
 //! (Pinocchio 4.1.0) within 1e-9 (scaled as `max|a − b| / max(1, max|b|)`), else the program
