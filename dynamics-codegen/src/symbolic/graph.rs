@@ -7,66 +7,10 @@
 //! algorithm comes out already customized to its robot: every zero, one and exact constant of
 //! the D-H table folded away.
 
+use super::node::{Node, NodeId, Var};
 use super::number::Number;
 use std::collections::HashMap;
-use std::fmt;
 use std::ops::{Add, Mul, Neg};
-
-/// Index of a node in a [`Graph`]; displayed as `t12`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct NodeId(pub u32);
-
-impl NodeId {
-    /// The index into the arena.
-    #[must_use]
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
-
-impl fmt::Display for NodeId {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "t{}", self.0)
-    }
-}
-
-/// A leaf of the graph: an input of the generated function.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Var {
-    /// Position `q_i` (0-based joint index).
-    Q(u16),
-    /// `sin(q_i + offset_i)` of a revolute joint.
-    SinQ(u16),
-    /// `cos(q_i + offset_i)` of a revolute joint.
-    CosQ(u16),
-    /// Velocity `qd_i`.
-    Qd(u16),
-    /// Acceleration `qdd_i`.
-    Qdd(u16),
-    /// Robot parameter `k` (a struct field).
-    Param(u16),
-}
-
-/// A node of the graph.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Node {
-    /// A constant.
-    Const(Number),
-    /// An input.
-    Var(Var),
-    /// `a + b`.
-    Add(NodeId, NodeId),
-    /// `a · b`.
-    Mul(NodeId, NodeId),
-    /// `−a`.
-    Neg(NodeId),
-    /// `1 / a`.
-    Recip(NodeId),
-    /// `sin a` (of a parameter expression; joint angles use [`Var::SinQ`]).
-    Sin(NodeId),
-    /// `cos a`.
-    Cos(NodeId),
-}
 
 /// Counters of the graph's construction, for tests and benchmarks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -82,7 +26,7 @@ pub struct Stats {
 /// The expression arena.
 #[derive(Clone, Debug, Default)]
 pub struct Graph {
-    nodes: Vec<Node>,
+    pub(super) nodes: Vec<Node>,
     // Only looked up, never iterated: emission order is the arena's order.
     memo: HashMap<Node, NodeId>,
     stats: Stats,
@@ -341,112 +285,6 @@ impl Graph {
             _ => self.intern(Node::Cos(a)),
         }
     }
-
-    /// Evaluates every node in order, reading inputs from `input`.
-    pub fn eval(&self, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
-        let mut values: Vec<f64> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
-            let v = match *node {
-                Node::Const(c) => c.to_f64(),
-                Node::Var(v) => input(v),
-                Node::Add(a, b) => values[a.index()] + values[b.index()],
-                Node::Mul(a, b) => values[a.index()] * values[b.index()],
-                Node::Neg(a) => -values[a.index()],
-                Node::Recip(a) => 1.0 / values[a.index()],
-                Node::Sin(a) => values[a.index()].sin(),
-                Node::Cos(a) => values[a.index()].cos(),
-            };
-            values.push(v);
-        }
-        values
-    }
-
-    /// Marks the nodes that `outputs` depend on.
-    #[must_use]
-    pub fn live(&self, outputs: &[NodeId]) -> Vec<bool> {
-        let mut live = vec![false; self.nodes.len()];
-        let mut stack: Vec<NodeId> = outputs.to_vec();
-        while let Some(id) = stack.pop() {
-            if std::mem::replace(&mut live[id.index()], true) {
-                continue;
-            }
-            match self.node(id) {
-                Node::Add(a, b) | Node::Mul(a, b) => {
-                    stack.push(a);
-                    stack.push(b);
-                }
-                Node::Neg(a) | Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => stack.push(a),
-                Node::Const(_) | Node::Var(_) => {}
-            }
-        }
-        live
-    }
-
-    /// Partial derivatives of `outputs` with respect to joint position `q_j`, by forward
-    /// differentiation of the graph: `∂ sin(q_j)/∂q_j = cos(q_j)`, `∂ cos(q_j)/∂q_j = −sin(q_j)`,
-    /// `∂q_j/∂q_j = 1`. Returns one node per output (a constant zero where independent).
-    pub fn derivative(&mut self, outputs: &[NodeId], joint: u16) -> Vec<NodeId> {
-        let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
-        let live = self.live(outputs);
-        let zero = self.num(Number::ZERO);
-        let one = self.num(Number::ONE);
-        let mut d: Vec<NodeId> = vec![zero; end];
-        for i in 0..end {
-            if !live[i] {
-                continue;
-            }
-            let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
-            d[i] = match self.node(id) {
-                Node::Const(_) => zero,
-                Node::Var(v) => match v {
-                    Var::Q(j) if j == joint => one,
-                    Var::SinQ(j) if j == joint => self.var(Var::CosQ(j)),
-                    Var::CosQ(j) if j == joint => {
-                        let s = self.var(Var::SinQ(j));
-                        self.neg(s)
-                    }
-                    _ => zero,
-                },
-                Node::Add(a, b) => self.add(d[a.index()], d[b.index()]),
-                Node::Mul(a, b) => {
-                    let l = self.mul(d[a.index()], b);
-                    let r = self.mul(a, d[b.index()]);
-                    self.add(l, r)
-                }
-                Node::Neg(a) => self.neg(d[a.index()]),
-                Node::Recip(a) => {
-                    // d(1/a) = −da / a²
-                    let aa = self.mul(id, id);
-                    let t = self.mul(d[a.index()], aa);
-                    self.neg(t)
-                }
-                Node::Sin(a) => {
-                    let c = self.cos(a);
-                    self.mul(c, d[a.index()])
-                }
-                Node::Cos(a) => {
-                    let s = self.sin(a);
-                    let t = self.mul(s, d[a.index()]);
-                    self.neg(t)
-                }
-            };
-        }
-        outputs.iter().map(|o| d[o.index()]).collect()
-    }
-}
-
-impl Number {
-    /// A float result of a numeric function, snapped to an exact rational when it is one of
-    /// 0, ±1, ±1/2 to within 4 ulp (so that `cos(π/2)` is an exact 0).
-    #[must_use]
-    pub fn from_float(x: f64) -> Number {
-        for exact in [0.0, 1.0, -1.0, 0.5, -0.5] {
-            if (x - exact).abs() <= 4.0 * f64::EPSILON {
-                return Number::from_f64(exact);
-            }
-        }
-        Number::Float(x)
-    }
 }
 
 #[cfg(test)]
@@ -561,22 +399,5 @@ mod tests {
         let d = g.sub(y, two_x);
         let r = g.add(x, d);
         assert!(matches!(g.node(r), Node::Add(..)));
-    }
-
-    #[test]
-    fn derivative_of_trigonometric_leaves() {
-        let mut g = Graph::new();
-        let s = g.var(Var::SinQ(0));
-        let c = g.var(Var::CosQ(0));
-        let sc = g.mul(s, c);
-        let d = g.derivative(&[sc], 0)[0];
-        let values = g.eval(|v| match v {
-            Var::SinQ(_) => 0.3f64.sin(),
-            Var::CosQ(_) => 0.3f64.cos(),
-            _ => 0.0,
-        });
-        assert!((values[d.index()] - (2.0 * 0.3f64).cos()).abs() < 1e-15);
-        let independent = g.derivative(&[sc], 1)[0];
-        assert!(g.is_zero(independent));
     }
 }

@@ -290,6 +290,20 @@ impl std::ops::Sub for Number {
     }
 }
 
+impl Number {
+    /// A float result of a numeric function, snapped to an exact rational when it is one of
+    /// 0, ±1, ±1/2 to within 4 ulp (so that `cos(π/2)` is an exact 0).
+    #[must_use]
+    pub fn from_float(x: f64) -> Number {
+        for exact in [0.0, 1.0, -1.0, 0.5, -0.5] {
+            if (x - exact).abs() <= 4.0 * f64::EPSILON {
+                return Number::from_f64(exact);
+            }
+        }
+        Number::Float(x)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::Number;

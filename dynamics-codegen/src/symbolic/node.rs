@@ -1,0 +1,60 @@
+//! The graph's vocabulary: node ids, leaves (the generated function's inputs) and operations.
+
+use super::number::Number;
+use std::fmt;
+
+/// Index of a node in a [`Graph`]; displayed as `t12`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct NodeId(pub u32);
+
+impl NodeId {
+    /// The index into the arena.
+    #[must_use]
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+impl fmt::Display for NodeId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "t{}", self.0)
+    }
+}
+
+/// A leaf of the graph: an input of the generated function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Var {
+    /// Position `q_i` (0-based joint index).
+    Q(u16),
+    /// `sin(q_i + offset_i)` of a revolute joint.
+    SinQ(u16),
+    /// `cos(q_i + offset_i)` of a revolute joint.
+    CosQ(u16),
+    /// Velocity `qd_i`.
+    Qd(u16),
+    /// Acceleration `qdd_i`.
+    Qdd(u16),
+    /// Robot parameter `k` (a struct field).
+    Param(u16),
+}
+
+/// A node of the graph.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Node {
+    /// A constant.
+    Const(Number),
+    /// An input.
+    Var(Var),
+    /// `a + b`.
+    Add(NodeId, NodeId),
+    /// `a · b`.
+    Mul(NodeId, NodeId),
+    /// `−a`.
+    Neg(NodeId),
+    /// `1 / a`.
+    Recip(NodeId),
+    /// `sin a` (of a parameter expression; joint angles use [`Var::SinQ`]).
+    Sin(NodeId),
+    /// `cos a`.
+    Cos(NodeId),
+}
