@@ -13,6 +13,7 @@ mod energy;
 mod gravity;
 mod regroup;
 mod rnea;
+mod robot;
 mod runs;
 mod vector;
 
@@ -23,6 +24,7 @@ pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
 pub use gravity::gravity_torques;
 pub use rnea::rnea;
+pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;
 pub use vector::{Mat3, V3};
 
