@@ -82,7 +82,7 @@ pub struct ChainJoint<S> {
     /// angles of the joints before it that turn about parallel axes (α = 0 between revolute
     /// joints): `ω_i = Rotz(θ_k + ⋯ + θ_i)ᵀ w_k + …` from the vector `w_k` that entered the
     /// first joint k of the run, rather than turned joint by joint, and moments carried back
-    /// the same way ([`WrenchCarrier`]). Set by [`Chain::summing_angles`]; the intermediate
+    /// the same way ([`super::WrenchCarrier`]). Set by [`Chain::summing_angles`]; the intermediate
     /// links' rates are still computed.
     pub sum_angles: bool,
 }

@@ -2,17 +2,17 @@
 //! [`Robot`] into the closed-form [`Equations`] in one shared expression graph.
 //!
 //! * `M(q)` by the composite rigid body algorithm, plus actuator inertia on the diagonal
-//!   ([`mass`]);
+//!   (`mass`);
 //! * `g(q)` by Newton-Euler at rest or from the composite bodies' first moments, plus springs
-//!   ([`gravity`]);
+//!   (`gravity`);
 //! * `τ = M q̈ + C q̇ + g`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia
-//!   and springs ([`newton_euler`]);
-//! * the kinetic and potential energy ([`energy`]);
+//!   and springs (`newton_euler`);
+//! * the kinetic and potential energy (`energy`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
-//!   `C_ij = Σ_k Γ_ijk q̇_k` ([`coriolis`]).
+//!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
 //!
 //! Where an output has several routes to the same value, each is traced and the one that
-//! takes the fewest operations is kept ([`cost`]). Node ids follow the order in which the
+//! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
 //! graph is built, and the emitted code follows node ids: the steps run in a fixed order.
 
 mod coriolis;
