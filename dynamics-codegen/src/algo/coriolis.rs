@@ -66,6 +66,7 @@ fn scaled_body<S: Scalar>(b: &Body<S>, k: S) -> Body<S> {
 /// the velocity of J_i's origin), the composite `Ic_i`, its momentum `hc_i` and its rate `L_i`
 /// as J_i sees it (`None` for the last link, whose composite is one rigid link).
 struct Composites<S> {
+    /// Zero, in the scalar's context.
     zero: S,
     omega: Vec<V3<S>>,
     vel: Vec<V3<S>>,
