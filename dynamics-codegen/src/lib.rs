@@ -8,13 +8,12 @@
 //!
 //! 1. [`front`]: the derive input (or a description file, [`model::from_text`]) is parsed
 //!    into a [`model::Robot`], with every error on its span;
-//! 2. [`mod@derive`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
+//! 2. [`trace`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
 //!    builds the closed forms as one hash-consed expression graph, simplified as it is built;
 //! 3. [`emit`]: each output (`M`, `C`, `g`, `τ`, …) becomes a straight-line function body.
 
 pub mod algo;
 pub mod check;
-pub mod derive;
 pub mod emit;
 pub mod front;
 pub mod model;
@@ -22,12 +21,15 @@ pub mod numeric;
 pub mod poly;
 pub mod readable;
 pub mod symbolic;
+pub mod trace;
 
 use proc_macro2::TokenStream;
 use quote::{quote, ToTokens};
 
-pub use derive::{derive, Equations};
 pub use emit::OpCount;
+/// The trace's former path, which the emitter and the readable form still name.
+pub use trace as derive;
+pub use trace::{derive, Equations};
 
 /// Entry point of `#[derive(Dynamics)]`.
 #[must_use]

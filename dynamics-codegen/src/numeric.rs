@@ -3,8 +3,8 @@
 //! It is what the generated code is measured against, and a second numeric implementation
 //! beside the book's method of `dynamics-reference`.
 
-use crate::algo::{self, Chain, DhRow, Inertial, JointKind, V3};
-use crate::model::{Convention, Robot, Value};
+use crate::algo::{self, Chain, RobotScalars, V3};
+use crate::model::{Robot, Value};
 
 /// A robot evaluated numerically.
 #[derive(Clone, Debug)]
@@ -52,49 +52,18 @@ impl Numeric {
         .unwrap_or(f64::NAN)
     }
 
-    /// The chain at position `q`.
+    /// The chain at position `q`, one entry per joint.
     #[must_use]
     pub fn chain(&self, q: &[f64]) -> Chain<f64> {
-        let mut rows = Vec::with_capacity(q.len());
-        let mut links = Vec::with_capacity(q.len());
-        for (j, &qi) in self.robot.joints.iter().zip(q) {
-            let (theta, d) = match j.kind {
-                JointKind::Revolute => (qi + self.value(&j.theta), self.value(&j.d)),
-                JointKind::Prismatic => (self.value(&j.theta), qi + self.value(&j.d)),
-            };
-            let alpha = self.value(&j.alpha);
-            rows.push(DhRow {
-                kind: j.kind,
-                sin_theta: theta.sin(),
-                cos_theta: theta.cos(),
-                d,
-                a: self.value(&j.a),
-                sin_alpha: alpha.sin(),
-                cos_alpha: alpha.cos(),
-            });
-            let v = |x: &Value| self.value(x);
-            links.push(Inertial {
-                mass: v(&j.mass),
-                com: V3::new(v(&j.com[0]), v(&j.com[1]), v(&j.com[2])),
-                inertia: [
-                    v(&j.inertia[0]),
-                    v(&j.inertia[1]),
-                    v(&j.inertia[2]),
-                    v(&j.inertia[3]),
-                    v(&j.inertia[4]),
-                    v(&j.inertia[5]),
-                ],
-            });
-        }
-        match self.robot.convention {
-            Convention::Standard => Chain::standard(&rows, &links),
-            Convention::Modified => Chain::modified(&rows, &links),
-        }
+        AtPosition { numeric: self, q }.chain(&self.robot)
     }
 
     fn gravity(&self) -> V3<f64> {
-        let g = &self.robot.gravity;
-        V3::new(self.value(&g[0]), self.value(&g[1]), self.value(&g[2]))
+        AtPosition {
+            numeric: self,
+            q: &[],
+        }
+        .gravity(&self.robot)
     }
 
     fn springs(&self, q: &[f64]) -> Vec<f64> {
@@ -139,6 +108,34 @@ impl Numeric {
         let zeros = vec![0.0; q.len()];
         let g = algo::rnea(&self.chain(q), &zeros, &zeros, self.gravity());
         g.iter().zip(self.springs(q)).map(|(a, b)| a + b).collect()
+    }
+}
+
+/// The robot's values evaluated, at joint position `q`.
+struct AtPosition<'a> {
+    numeric: &'a Numeric,
+    q: &'a [f64],
+}
+
+impl RobotScalars for AtPosition<'_> {
+    type Scalar = f64;
+
+    fn value(&self, v: &Value) -> f64 {
+        self.numeric.value(v)
+    }
+
+    fn sin_cos(&self, v: &Value) -> (f64, f64) {
+        let x = self.value(v);
+        (x.sin(), x.cos())
+    }
+
+    fn joint_variable(&self, joint: usize) -> f64 {
+        self.q[joint]
+    }
+
+    fn joint_sin_cos(&mut self, joint: usize, offset: &Value) -> (f64, f64) {
+        let theta = self.q[joint] + self.value(offset);
+        (theta.sin(), theta.cos())
     }
 }
 

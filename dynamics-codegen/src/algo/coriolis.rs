@@ -62,15 +62,48 @@ fn scaled_body<S: Scalar>(b: &Body<S>, k: S) -> Body<S> {
     }
 }
 
+/// What the columns of `C` are built from, per link i: its twist `(ω_i, v_i)` in J_i (`v_i`
+/// the velocity of J_i's origin), the composite `Ic_i`, its momentum `hc_i` and its rate `L_i`
+/// as J_i sees it (`None` for the last link, whose composite is one rigid link).
+struct Composites<S> {
+    /// Zero, in the scalar's context.
+    zero: S,
+    omega: Vec<V3<S>>,
+    vel: Vec<V3<S>>,
+    body: Vec<Body<S>>,
+    momentum: Vec<Force<S>>,
+    rate: Vec<Option<Body<S>>>,
+}
+
 /// The Coriolis matrix of `chain` at rates `qd`; `None` if the chain sums angles.
 pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<S>>> {
     let n = chain.joints.len();
     if chain.joints.iter().any(|j| j.sum_angles) {
         return None;
     }
-    let first = chain.joints.first()?;
-    let zero = first.a.zero();
-    // Link twists (ω_i, v_i) in J_i, v_i the velocity of J_i's origin.
+    let zero = chain.joints.first()?.a.zero();
+    let (omega, vel) = link_twists(chain, qd, zero);
+    let body = composites(chain);
+    let momentum = composite_momenta(chain, &omega, &vel);
+    let rate = composite_rates(chain, &body, qd);
+    let composites = Composites {
+        zero,
+        omega,
+        vel,
+        body,
+        momentum,
+        rate,
+    };
+    let mut c = vec![vec![zero; n]; n];
+    for j in 0..n {
+        fill_column(chain, &composites, j, &mut c);
+    }
+    Some(c)
+}
+
+/// Link twists `(ω_i, v_i)` in J_i, `v_i` the velocity of J_i's origin.
+fn link_twists<S: Scalar>(chain: &Chain<S>, qd: &[S], zero: S) -> (Vec<V3<S>>, Vec<V3<S>>) {
+    let n = chain.joints.len();
     let mut omega = Vec::with_capacity(n);
     let mut vel = Vec::with_capacity(n);
     for (i, joint) in chain.joints.iter().enumerate() {
@@ -96,8 +129,12 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
             }
         }
     }
-    let composite = composites(chain);
-    // Momenta of the composites, hc_i = I_i v_i + X(hc_{i+1}).
+    (omega, vel)
+}
+
+/// Momenta of the composites, `hc_i = I_i v_i + X(hc_{i+1})`.
+fn composite_momenta<S: Scalar>(chain: &Chain<S>, omega: &[V3<S>], vel: &[V3<S>]) -> Vec<Force<S>> {
+    let n = chain.joints.len();
     let mut hc: Vec<Force<S>> = (0..n)
         .map(|i| momentum(&chain.joints[i].body, omega[i], vel[i]))
         .collect();
@@ -105,7 +142,17 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
         let (f, nn) = hc[i + 1];
         hc[i] = add(hc[i], chain.joints[i + 1].wrench_to_parent(f, nn));
     }
-    // Rates of the composites as their frames see them.
+    hc
+}
+
+/// Rates of the composites as their frames see them: each joint beyond adds its own,
+/// carried inward.
+fn composite_rates<S: Scalar>(
+    chain: &Chain<S>,
+    composite: &[Body<S>],
+    qd: &[S],
+) -> Vec<Option<Body<S>>> {
+    let n = chain.joints.len();
     let mut rate: Vec<Option<Body<S>>> = vec![None; n];
     for i in (0..n.saturating_sub(1)).rev() {
         let joint = &chain.joints[i + 1];
@@ -119,49 +166,50 @@ pub fn coriolis_matrix<S: Scalar>(chain: &Chain<S>, qd: &[S]) -> Option<Vec<Vec<
             None => own,
         });
     }
-    let mut c = vec![vec![zero; n]; n];
-    for j in 0..n {
-        let f2 = wrench(chain, j, &composite[j]);
-        let (w, v) = (omega[j], vel[j]);
-        // Ṡ_j = (ω_j × z, v_j × z) = −(z × ω_j, z × v_j), or (0, ω_j × z) when prismatic.
-        let revolute = chain.joints[j].kind == JointKind::Revolute;
-        let ic_s_dot = if revolute {
-            momentum(&composite[j], -z_cross(w), -z_cross(v))
-        } else {
-            momentum(&composite[j], V3::zero(zero), -z_cross(w))
+    rate
+}
+
+/// `C_jj`, and `C_ij`, `C_ji` for `i < j`: `a_j`, `b_j` and `Ic_j S_j` carried inward.
+fn fill_column<S: Scalar>(chain: &Chain<S>, at: &Composites<S>, j: usize, c: &mut [Vec<S>]) {
+    let zero = at.zero;
+    let f2 = wrench(chain, j, &at.body[j]);
+    let (w, v) = (at.omega[j], at.vel[j]);
+    // Ṡ_j = (ω_j × z, v_j × z) = −(z × ω_j, z × v_j), or (0, ω_j × z) when prismatic.
+    let revolute = chain.joints[j].kind == JointKind::Revolute;
+    let ic_s_dot = if revolute {
+        momentum(&at.body[j], -z_cross(w), -z_cross(v))
+    } else {
+        momentum(&at.body[j], V3::zero(zero), -z_cross(w))
+    };
+    let l_s = at.rate[j]
+        .as_ref()
+        .map_or((V3::zero(zero), V3::zero(zero)), |r| wrench(chain, j, r));
+    let hc = at.momentum[j];
+    let s_hc = if revolute {
+        (z_cross(hc.0), z_cross(hc.1))
+    } else {
+        (V3::zero(zero), z_cross(hc.0))
+    };
+    // İc S = v ×* f2 − Ic Ṡ + L S.
+    let ic_rate_s = add(sub(cross_force(w, v, f2), ic_s_dot), l_s);
+    let mut a = add(ic_s_dot, half(add(ic_rate_s, s_hc)));
+    let mut b = half(sub(ic_rate_s, s_hc));
+    let mut f2 = f2;
+    c[j][j] = axis(chain, j, a);
+    for i in (0..j).rev() {
+        let through = &chain.joints[i + 1];
+        f2 = through.wrench_to_parent(f2.0, f2.1);
+        let (wi, vi) = (at.omega[i], at.vel[i]);
+        // Ṡ_i · Ic_j S_j with Ṡ_i = (ω_i × z, v_i × z), or (0, ω_i × z).
+        let s_dot_f2 = match chain.joints[i].kind {
+            JointKind::Revolute => wi.y * f2.1.x - wi.x * f2.1.y + (vi.y * f2.0.x - vi.x * f2.0.y),
+            JointKind::Prismatic => wi.y * f2.0.x - wi.x * f2.0.y,
         };
-        let l_s = rate[j]
-            .as_ref()
-            .map_or((V3::zero(zero), V3::zero(zero)), |r| wrench(chain, j, r));
-        let s_hc = if revolute {
-            (z_cross(hc[j].0), z_cross(hc[j].1))
-        } else {
-            (V3::zero(zero), z_cross(hc[j].0))
-        };
-        // İc S = v ×* f2 − Ic Ṡ + L S.
-        let ic_rate_s = add(sub(cross_force(w, v, f2), ic_s_dot), l_s);
-        let mut a = add(ic_s_dot, half(add(ic_rate_s, s_hc)));
-        let mut b = half(sub(ic_rate_s, s_hc));
-        let mut f2 = f2;
-        c[j][j] = axis(chain, j, a);
-        for i in (0..j).rev() {
-            let through = &chain.joints[i + 1];
-            f2 = through.wrench_to_parent(f2.0, f2.1);
-            let (wi, vi) = (omega[i], vel[i]);
-            // Ṡ_i · Ic_j S_j with Ṡ_i = (ω_i × z, v_i × z), or (0, ω_i × z).
-            let s_dot_f2 = match chain.joints[i].kind {
-                JointKind::Revolute => {
-                    wi.y * f2.1.x - wi.x * f2.1.y + (vi.y * f2.0.x - vi.x * f2.0.y)
-                }
-                JointKind::Prismatic => wi.y * f2.0.x - wi.x * f2.0.y,
-            };
-            a = through.wrench_to_parent(a.0, a.1);
-            b = through.wrench_to_parent(b.0, b.1);
-            c[i][j] = axis(chain, i, a);
-            c[j][i] = s_dot_f2 + axis(chain, i, b);
-        }
+        a = through.wrench_to_parent(a.0, a.1);
+        b = through.wrench_to_parent(b.0, b.1);
+        c[i][j] = axis(chain, i, a);
+        c[j][i] = s_dot_f2 + axis(chain, i, b);
     }
-    Some(c)
 }
 
 /// `S_i ·` a force: its moment's or its force's z component.

@@ -5,20 +5,27 @@
 //! All of them work on a [`Chain`]: the robot re-expressed with one frame per joint, on the
 //! joint's axis (the modified D-H form), which both D-H conventions convert to exactly.
 
+mod body;
 mod chain;
 mod coriolis;
 mod crba;
 mod energy;
 mod gravity;
+mod regroup;
 mod rnea;
+mod robot;
+mod runs;
 mod vector;
 
-pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, JointKind, WrenchCarrier};
+pub use body::Body;
+pub use chain::{Chain, ChainJoint, DhRow, Inertial, JointKind};
 pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
 pub use gravity::gravity_torques;
 pub use rnea::rnea;
+pub use robot::RobotScalars;
+pub use runs::WrenchCarrier;
 pub use vector::{Mat3, V3};
 
 use crate::symbolic::Number;

@@ -1,0 +1,104 @@
+//! The trace: the algorithms of [`crate::algo`] run on the symbolic scalar, turning a
+//! [`Robot`] into the closed-form [`Equations`] in one shared expression graph.
+//!
+//! * `M(q)` by the composite rigid body algorithm, plus actuator inertia on the diagonal
+//!   (`mass`);
+//! * `g(q)` by Newton-Euler at rest or from the composite bodies' first moments, plus springs
+//!   (`gravity`);
+//! * `τ = M q̈ + C q̇ + g`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia
+//!   and springs (`newton_euler`);
+//! * the kinetic and potential energy (`energy`);
+//! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
+//!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
+//!
+//! Where an output has several routes to the same value, each is traced and the one that
+//! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
+//! graph is built, and the emitted code follows node ids: the steps run in a fixed order.
+
+mod coriolis;
+mod cost;
+mod energy;
+mod gravity;
+mod joints;
+mod mass;
+mod newton_euler;
+mod tracer;
+
+use crate::algo::{JointKind, RobotScalars};
+use crate::model::Robot;
+use crate::symbolic::{Graph, NodeId, Number};
+use cost::matrix_ids;
+use joints::JointTerms;
+use std::cell::RefCell;
+use tracer::Tracer;
+
+/// The closed-form equations of a robot: node ids into [`Equations::graph`].
+#[derive(Clone, Debug)]
+pub struct Equations {
+    /// The shared expression graph.
+    pub graph: Graph,
+    /// Number of joints.
+    pub dof: usize,
+    /// Struct fields, in the order of [`crate::symbolic::Var::Param`] indices.
+    pub fields: Vec<String>,
+    /// Joint kinds.
+    pub kinds: Vec<JointKind>,
+    /// For revolute joint i whose θ offset is not a multiple of π/2: the offset's node, so that
+    /// [`crate::symbolic::Var::SinQ`]`(i)` is `sin(q_i + offset)`.
+    pub angle_offsets: Vec<Option<NodeId>>,
+    /// `M(q)`, n × n.
+    pub mass: Vec<Vec<NodeId>>,
+    /// `Γ_ijk` (= D_ijk) as `christoffel[i][j][k]`.
+    pub christoffel: Vec<Vec<Vec<NodeId>>>,
+    /// `C(q, q̇)`, n × n.
+    pub coriolis: Vec<Vec<NodeId>>,
+    /// `C(q, q̇) q̇`.
+    pub coriolis_torques: Vec<NodeId>,
+    /// `g(q)` with springs.
+    pub gravity: Vec<NodeId>,
+    /// `C q̇ + g`.
+    pub bias: Vec<NodeId>,
+    /// `τ = M q̈ + C q̇ + g`.
+    pub tau: Vec<NodeId>,
+    /// Kinetic energy.
+    pub kinetic_energy: NodeId,
+    /// Potential energy.
+    pub potential_energy: NodeId,
+}
+
+/// Traces the equations of `robot`. The front end has checked the robot: every field exists and
+/// the table is not empty.
+#[must_use]
+pub fn derive(robot: &Robot) -> Equations {
+    let fields = robot.fields();
+    let graph = RefCell::new(Graph::new());
+    let mut tracer = Tracer::new(&graph, &fields, robot);
+    let zero = tracer.num(Number::ZERO);
+    let half = tracer.num(Number::ratio(1, 2).unwrap_or(Number::ONE));
+    let chain = tracer.chain(robot);
+    let (chain, mass) = mass::mass_matrix(&graph, &chain);
+    let gravity = tracer.gravity(robot);
+    let joints = JointTerms::new(&tracer, robot, zero);
+    let mass = matrix_ids(&joints.with_actuator_inertia(mass));
+    let gravity_torques = gravity::gravity(&graph, &chain, gravity, &joints);
+    let newton_euler = newton_euler::newton_euler(&graph, &chain, gravity, &joints);
+    let (kinetic_energy, potential_energy) = energy::energies(&chain, gravity, &joints, half);
+    let (christoffel, coriolis) = coriolis::coriolis(&graph, &chain, &mass, &joints.qd, half.id());
+    let angle_offsets = tracer.angle_offsets();
+    Equations {
+        graph: graph.into_inner(),
+        dof: robot.dof(),
+        fields: fields.clone(),
+        kinds: robot.joints.iter().map(|j| j.kind).collect(),
+        angle_offsets,
+        mass,
+        christoffel,
+        coriolis,
+        coriolis_torques: newton_euler.coriolis_torques,
+        gravity: gravity_torques,
+        bias: newton_euler.bias,
+        tau: newton_euler.tau,
+        kinetic_energy,
+        potential_energy,
+    }
+}

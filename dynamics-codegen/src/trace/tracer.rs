@@ -1,0 +1,159 @@
+//! The symbolic side of [`RobotScalars`]: a robot's values as nodes of the shared graph, the
+//! joint variables as [`Var`] leaves, and `sin(q_i + θ)`, `cos(q_i + θ)` of a revolute joint
+//! from the leaves `sin q_i`, `cos q_i` where θ is a quarter turn
+//! (`sin(q + kπ/2)`, `cos(q + kπ/2)` are `±sin q`, `±cos q`).
+
+use crate::algo::RobotScalars;
+use crate::model::{Robot, Value};
+use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
+use std::cell::RefCell;
+use std::ops::Mul;
+
+/// Builds a robot's values into `graph`.
+pub(super) struct Tracer<'g> {
+    graph: &'g RefCell<Graph>,
+    fields: &'g [String],
+    /// Per revolute joint whose θ offset is not a quarter turn: the offset's node.
+    angle_offsets: Vec<Option<NodeId>>,
+}
+
+/// The index of joint `i` in a [`Var`].
+pub(super) fn joint_index(i: usize) -> u16 {
+    u16::try_from(i).unwrap_or(u16::MAX)
+}
+
+impl<'g> Tracer<'g> {
+    /// A tracer into `graph` for `robot`, whose struct fields are `fields`.
+    pub(super) fn new(graph: &'g RefCell<Graph>, fields: &'g [String], robot: &Robot) -> Self {
+        Tracer {
+            graph,
+            fields,
+            angle_offsets: vec![None; robot.dof()],
+        }
+    }
+
+    /// The θ offsets recorded while tracing the chain (see [`super::Equations::angle_offsets`]).
+    pub(super) fn angle_offsets(&self) -> Vec<Option<NodeId>> {
+        self.angle_offsets.clone()
+    }
+
+    pub(super) fn expr(&self, id: NodeId) -> Expr<'g> {
+        Expr::new(self.graph, id)
+    }
+
+    pub(super) fn num(&self, n: Number) -> Expr<'g> {
+        let id = self.graph.borrow_mut().num(n);
+        self.expr(id)
+    }
+
+    pub(super) fn var(&self, v: Var) -> Expr<'g> {
+        let id = self.graph.borrow_mut().var(v);
+        self.expr(id)
+    }
+
+    /// The variables of every joint: `q`, `q̇` or `q̈` as `kind` says.
+    pub(super) fn joint_vars(&self, n: usize, kind: fn(u16) -> Var) -> Vec<Expr<'g>> {
+        (0..n).map(|i| self.var(kind(joint_index(i)))).collect()
+    }
+
+    fn field(&self, name: &str) -> Expr<'g> {
+        let k = self.fields.iter().position(|x| x == name).unwrap_or(0);
+        self.var(Var::Param(u16::try_from(k).unwrap_or(u16::MAX)))
+    }
+}
+
+impl<'g> RobotScalars for Tracer<'g> {
+    type Scalar = Expr<'g>;
+
+    fn value(&self, v: &Value) -> Expr<'g> {
+        match v {
+            Value::Num(n) => self.num(*n),
+            Value::Pi => self.num(Number::Float(std::f64::consts::PI)),
+            Value::Field(f) => self.field(f),
+            // The joint variable was split off by the front end; it never reaches here.
+            Value::Joint(_) => self.num(Number::ZERO),
+            Value::Neg(a) => -self.value(a),
+            Value::Add(a, b) => self.value(a) + self.value(b),
+            Value::Sub(a, b) => self.value(a) - self.value(b),
+            Value::Mul(a, b) => self.value(a) * self.value(b),
+            Value::Div(a, b) => {
+                let num = self.value(a);
+                let den = self.value(b);
+                let r = self.graph.borrow_mut().recip(den.id());
+                // A literal zero divisor is rejected by the front end's check.
+                num * r.map_or_else(|| self.num(Number::ZERO), |id| self.expr(id))
+            }
+        }
+    }
+
+    /// Exact where `v` is an exact multiple of π with rational sine and cosine.
+    fn sin_cos(&self, v: &Value) -> (Expr<'g>, Expr<'g>) {
+        if let Some((s, c)) = v.pi_multiple().and_then(exact_sin_cos) {
+            return (self.num(s), self.num(c));
+        }
+        let x = self.value(v);
+        let mut g = self.graph.borrow_mut();
+        let (s, c) = (g.sin(x.id()), g.cos(x.id()));
+        drop(g);
+        (self.expr(s), self.expr(c))
+    }
+
+    fn joint_variable(&self, joint: usize) -> Expr<'g> {
+        self.var(Var::Q(joint_index(joint)))
+    }
+
+    /// From the leaves `sin q_i`, `cos q_i`: turned by a quarter-turn offset, or with any other
+    /// offset recorded for the emitter, which makes the leaves `sin(q_i + θ)`, `cos(q_i + θ)`.
+    fn joint_sin_cos(&mut self, joint: usize, offset: &Value) -> (Expr<'g>, Expr<'g>) {
+        let i = joint_index(joint);
+        let (s, c) = (self.var(Var::SinQ(i)), self.var(Var::CosQ(i)));
+        let quarter_turns = offset
+            .pi_multiple()
+            .and_then(|k| k.mul(Number::int(2)).as_integer());
+        match quarter_turns {
+            Some(k) => match k.rem_euclid(4) {
+                0 => (s, c),
+                1 => (c, -s),
+                2 => (-s, -c),
+                _ => (-c, s),
+            },
+            None => {
+                self.angle_offsets[joint] = Some(self.value(offset).id());
+                (s, c)
+            }
+        }
+    }
+}
+
+/// Sine and cosine of an exact multiple `k` of π when they are rational.
+fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
+    // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
+    let quarter_turns = k.mul(Number::int(2)).as_integer()?;
+    Some(match quarter_turns.rem_euclid(4) {
+        0 => (Number::ZERO, Number::ONE),
+        1 => (Number::ONE, Number::ZERO),
+        2 => (Number::ZERO, Number::MINUS_ONE),
+        _ => (Number::MINUS_ONE, Number::ZERO),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exact_sin_cos;
+    use crate::symbolic::Number;
+
+    #[test]
+    fn exact_angles() {
+        let half = Number::ratio(1, 2).unwrap();
+        assert_eq!(exact_sin_cos(half), Some((Number::ONE, Number::ZERO)));
+        assert_eq!(
+            exact_sin_cos(-half),
+            Some((Number::MINUS_ONE, Number::ZERO))
+        );
+        assert_eq!(
+            exact_sin_cos(Number::ONE),
+            Some((Number::ZERO, Number::MINUS_ONE))
+        );
+        assert_eq!(exact_sin_cos(Number::ratio(1, 3).unwrap()), None);
+    }
+}
