@@ -17,10 +17,9 @@ pub mod check;
 pub mod derive;
 pub mod emit;
 pub mod front;
+pub mod inspect;
 pub mod model;
 pub mod numeric;
-pub mod poly;
-pub mod readable;
 pub mod symbolic;
 
 use proc_macro2::TokenStream;
@@ -28,6 +27,9 @@ use quote::{quote, ToTokens};
 
 pub use derive::{derive, Equations};
 pub use emit::OpCount;
+#[doc(hidden)]
+/// The former path of [`inspect`], for callers not yet moved to it.
+pub use inspect as readable;
 
 /// Entry point of `#[derive(Dynamics)]`.
 #[must_use]
