@@ -27,8 +27,8 @@ use quote::{quote, ToTokens};
 
 pub use derive::{derive, Equations};
 pub use emit::OpCount;
+// The former path of `inspect`, for callers not yet moved to it.
 #[doc(hidden)]
-/// The former path of [`inspect`], for callers not yet moved to it.
 pub use inspect as readable;
 
 /// Entry point of `#[derive(Dynamics)]`.

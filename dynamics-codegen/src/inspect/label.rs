@@ -85,3 +85,38 @@ impl Label {
         format!("{name} + I{}({act})", printer.indices(&self.joints[..1]))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Label, Quantity};
+    use crate::algo::JointKind;
+    use crate::inspect::print::{Format, Printer};
+
+    #[test]
+    fn labels_print_themselves() {
+        let kinds = [JointKind::Revolute; 2];
+        let text = Printer {
+            format: Format::Text,
+            kinds: &kinds,
+        };
+        let latex = Printer {
+            format: Format::Latex,
+            kinds: &kinds,
+        };
+        let diagonal = Label::new(Quantity::Inertia, &[1, 1]).with_actuator_inertia();
+        assert_eq!(diagonal.render(&text), "D22 + I2(act)");
+        assert_eq!(diagonal.render(&latex), "D_{22} + I_{2}(\\mathrm{act})");
+        let christoffel = Label::new(Quantity::Christoffel, &[0, 1, 0]);
+        assert_eq!(christoffel.render(&text), "D121");
+        assert_eq!(Label::new(Quantity::Torque, &[0]).render(&text), "T1");
+        let ten = [JointKind::Revolute; 10];
+        let wide = Printer {
+            format: Format::Text,
+            kinds: &ten,
+        };
+        assert_eq!(
+            Label::new(Quantity::Coriolis, &[0, 9]).render(&wide),
+            "C1,10"
+        );
+    }
+}

@@ -1,5 +1,6 @@
 //! Readable closed forms: the equations of motion printed as a person writes them, in the
-//! notation of Niku ch. 6 (`T_i = Σ_j D_ij θ̈_j + Σ_jk D_ijk θ̇_j θ̇_k + D_i`, eqs. 6.43–6.46),
+//! notation of Niku ch. 6 (`T_i = Σ_j D_ij θ̈_j + I_i(act) θ̈_i + Σ_jk D_ijk θ̇_j θ̇_k + D_i`,
+//! eqs. 6.43–6.46),
 //! as plain text or LaTeX.
 //!
 //! Each output of the [`Equations`] is expanded into its exact canonical polynomial
@@ -10,7 +11,8 @@
 //! * terms are grouped by their accelerations and velocities (`(…) θ̈1`, `… θ̇1 θ̇2`), and
 //!   terms sharing a sine or cosine are grouped with their common parameters taken out
 //!   (`(1/2 m1 + m2) g l1 C1`; `arrange`);
-//! * each equation is named by a [`label`](self) and printed (`print`, `render`).
+//! * each equation is named by a typed label (`D12`, `D11 + I1(act)`; `label`) and printed
+//!   as text or LaTeX (`print`, `render`).
 //!
 //! One vocabulary serves the polynomial and the printer: a [`Sym`] is a parameter, a joint
 //! variable or the sine or cosine of a sum of joint angles, and a [`Monomial`] a product of
