@@ -1,7 +1,6 @@
 //! Readable closed forms: the equations of motion printed as a person writes them, in the
 //! notation of Niku ch. 6 (`T_i = Σ_j D_ij θ̈_j + I_i(act) θ̈_i + Σ_jk D_ijk θ̇_j θ̇_k + D_i`,
-//! eqs. 6.43–6.46),
-//! as plain text or LaTeX.
+//! eqs. 6.43–6.46), as plain text or LaTeX.
 //!
 //! Each output of the [`Equations`] is expanded into its exact canonical polynomial
 //! ([`Poly`], in `expand`), then rewritten for reading:
