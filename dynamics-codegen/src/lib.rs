@@ -16,10 +16,9 @@ pub mod algo;
 pub mod check;
 pub mod emit;
 pub mod front;
+pub mod inspect;
 pub mod model;
 pub mod numeric;
-pub mod poly;
-pub mod readable;
 pub mod symbolic;
 pub mod trace;
 
@@ -30,6 +29,9 @@ pub use emit::OpCount;
 /// The trace's former path, which the emitter and the readable form still name.
 pub use trace as derive;
 pub use trace::{derive, Equations};
+// The former path of `inspect`, for callers not yet moved to it.
+#[doc(hidden)]
+pub use inspect as readable;
 
 /// Entry point of `#[derive(Dynamics)]`.
 #[must_use]

@@ -19,8 +19,8 @@
 //! d1 and θ is θ2; Example 6.5's r is d2), and `cos θ` is written `Cθ`, the book's own short
 //! form.
 
+use dynamics_codegen::inspect::{inspect, Format, Limits};
 use dynamics_codegen::model;
-use dynamics_codegen::readable::{inspect, Format, Limits};
 use std::collections::BTreeMap;
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,109 @@
+//! Arranging a polynomial's terms for reading: grouped by their accelerations and velocities
+//! (`(…) θ̈1`, `… θ̇1 θ̇2`), then by their sines and cosines with the common parameters taken
+//! out (`(1/2 m1 + m2) g l1 C1`).
+
+use super::{Monomial, Sym};
+use crate::symbolic::Number;
+use std::collections::BTreeMap;
+
+/// A printed term: `coef · (group) · factors`, with an empty group meaning none.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Term {
+    pub(super) coef: Number,
+    pub(super) group: Vec<Term>,
+    pub(super) factors: Monomial,
+}
+
+/// Groups terms by their accelerations and velocities, then by their sines and cosines.
+pub(super) fn arrange(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+    let mut by_motion: BTreeMap<(u8, Monomial), Vec<(Monomial, Number)>> = BTreeMap::new();
+    for (m, c) in terms {
+        let (motion, rest) = m.split(Sym::is_motion);
+        // accelerations first, then velocity products, then what has neither
+        let rank = if motion
+            .factors()
+            .iter()
+            .any(|(s, _)| matches!(s, Sym::Qdd(_)))
+        {
+            0
+        } else if motion.is_one() {
+            2
+        } else {
+            1
+        };
+        by_motion.entry((rank, motion)).or_default().push((rest, c));
+    }
+    let mut out = Vec::new();
+    for ((_, motion), group) in by_motion {
+        let inner = arrange_configuration(group);
+        out.extend(wrap(inner, motion));
+    }
+    out
+}
+
+/// Terms without accelerations or velocities, grouped by their sines and cosines with their
+/// common factors taken out. A prismatic position stays inside the group, as the book writes
+/// `(m1 g l1/2 + m2 g r) Cθ` (6.14).
+fn arrange_configuration(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+    let mut by_config: BTreeMap<Monomial, Vec<(Monomial, Number)>> = BTreeMap::new();
+    for (m, c) in terms {
+        let (config, params) = m.split(Sym::is_trig);
+        by_config.entry(config).or_default().push((params, c));
+    }
+    let mut out = Vec::new();
+    for (config, group) in by_config {
+        if config.is_one() || group.len() == 1 {
+            out.extend(group.into_iter().map(|(params, coef)| Term {
+                coef,
+                group: Vec::new(),
+                factors: params.times(&config),
+            }));
+            continue;
+        }
+        // the parameters every term of the group has, to their lowest power
+        let common = group[1..]
+            .iter()
+            .fold(group[0].0.clone(), |common, (p, _)| common.common(p));
+        let inner: Vec<Term> = group
+            .into_iter()
+            .map(|(mut params, coef)| {
+                params.divide(&common);
+                Term {
+                    coef,
+                    group: Vec::new(),
+                    factors: params,
+                }
+            })
+            .collect();
+        out.extend(wrap(inner, common.times(&config)));
+    }
+    out
+}
+
+/// `(inner) · factors`, written without parentheses when `inner` is one term, and with a
+/// leading minus when all of it is negative.
+fn wrap(mut inner: Vec<Term>, factors: Monomial) -> Vec<Term> {
+    if factors.is_one() {
+        return inner;
+    }
+    if inner.len() == 1 {
+        let mut t = inner.remove(0);
+        t.factors = t.factors.times(&factors);
+        return vec![t];
+    }
+    let negative = inner.iter().all(|t| t.coef.is_negative());
+    if negative {
+        for t in &mut inner {
+            t.coef = -t.coef;
+        }
+    }
+    vec![Term {
+        coef: if negative {
+            Number::MINUS_ONE
+        } else {
+            Number::ONE
+        },
+        group: inner,
+        factors,
+    }]
+}

@@ -1,0 +1,105 @@
+//! Expansion of the graph's outputs into their canonical polynomials, within [`Limits`]:
+//! expanded polynomials grow fast with the number of joints (the code is emitted from the
+//! shared graph, never from these), so what does not fit is reported as too large.
+
+use super::arrange::{arrange, Term};
+use super::fold::fold_trig;
+use super::{Poly, Sym};
+use crate::derive::Equations;
+use crate::symbolic::{Node, NodeId, Number};
+
+/// Bounds on the polynomial expansion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Most terms of any one polynomial, intermediate ones included.
+    pub max_terms: usize,
+    /// Most term operations in all (each product of two terms, each term added).
+    pub max_work: u64,
+}
+
+impl Limits {
+    /// For the derive, which runs on every build and must stay fast: small robots print in
+    /// full, a 6-joint arm's gravity torques (and PUMA 560's D_ij and D_ijk) still do. A term
+    /// operation costs a few microseconds, as monomials are keyed by parameter names.
+    pub const DERIVE: Limits = Limits {
+        max_terms: 200,
+        max_work: 20_000,
+    };
+    /// For the command-line tool: no bound.
+    pub const UNBOUNDED: Limits = Limits {
+        max_terms: usize::MAX,
+        max_work: u64::MAX,
+    };
+}
+
+/// Expands graph nodes into polynomials, sharing the work (and the budget of [`Limits`])
+/// between outputs.
+pub(super) struct Expander<'a> {
+    eq: &'a Equations,
+    memo: Vec<Option<Option<Poly>>>,
+    limits: Limits,
+    work: u64,
+}
+
+impl<'a> Expander<'a> {
+    pub(super) fn new(eq: &'a Equations, limits: Limits) -> Expander<'a> {
+        Expander {
+            eq,
+            memo: vec![None; eq.graph.len()],
+            limits,
+            work: 0,
+        }
+    }
+
+    /// The polynomial of node `id`; `None` when it exceeds the limits or is not a polynomial
+    /// (a reciprocal or the sine of a parameter).
+    fn poly(&mut self, id: NodeId) -> Option<Poly> {
+        if let Some(p) = &self.memo[id.index()] {
+            return p.clone();
+        }
+        let live = self.eq.graph.live(&[id]);
+        for (n, node) in self.eq.graph.nodes().take(id.index() + 1) {
+            if !live[n.index()] || self.memo[n.index()].is_some() {
+                continue;
+            }
+            let p = self.node(node);
+            self.memo[n.index()] = Some(p);
+        }
+        self.memo[id.index()].clone().flatten()
+    }
+
+    fn node(&mut self, node: Node) -> Option<Poly> {
+        let get = |x: NodeId| self.memo[x.index()].clone().flatten();
+        let p = match node {
+            Node::Const(c) => Poly::constant(c),
+            Node::Var(v) => Poly::sym(Sym::of(v, &self.eq.fields)?),
+            Node::Add(a, b) => {
+                let (a, b) = (get(a)?, get(b)?);
+                self.charge((a.len() + b.len()) as u64)?;
+                a.add(&b)
+            }
+            Node::Mul(a, b) => {
+                let (a, b) = (get(a)?, get(b)?);
+                self.charge((a.len() as u64).saturating_mul(b.len() as u64))?;
+                a.mul(&b)
+            }
+            Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
+            Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
+        };
+        (p.len() <= self.limits.max_terms).then_some(p)
+    }
+
+    fn charge(&mut self, cost: u64) -> Option<()> {
+        self.work = self.work.saturating_add(cost);
+        (self.work <= self.limits.max_work).then_some(())
+    }
+
+    /// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
+    /// arranged; `None` when it does not fit the limits.
+    pub(super) fn terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
+        let mut terms = self.poly(id)?.into_terms();
+        // Each search for a pair to fold reads every term.
+        fold_trig(&mut terms, &mut |n| self.charge(n as u64))?;
+        Some(arrange(terms.into_iter().collect()))
+    }
+}

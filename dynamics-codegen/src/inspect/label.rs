@@ -1,0 +1,122 @@
+//! The names of the printed equations: which quantity (`D`, `C`, `T`), of which joints, and
+//! whether the actuator inertia is added (`D11 + I1(act)`).
+
+use super::print::Printer;
+
+/// A quantity of the equations of motion, each printed in its own section.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Quantity {
+    /// The inertia `D_ij` (eq. 6.43).
+    Inertia,
+    /// The centripetal and Coriolis coefficient `D_ijk` (eq. 6.44).
+    Christoffel,
+    /// The Coriolis matrix `C_ij`.
+    Coriolis,
+    /// The gravity torque `D_i` (eq. 6.45).
+    Gravity,
+    /// The joint torque or force `T_i` (eq. 6.46).
+    Torque,
+}
+
+impl Quantity {
+    /// The letter of its name in the book.
+    fn letter(self) -> char {
+        match self {
+            Quantity::Inertia | Quantity::Christoffel | Quantity::Gravity => 'D',
+            Quantity::Coriolis => 'C',
+            Quantity::Torque => 'T',
+        }
+    }
+
+    /// The title of its section.
+    pub(super) fn heading(self) -> &'static str {
+        match self {
+            Quantity::Inertia => "Inertia D_ij (eq. 6.43); M = D with the actuator inertia I_i(act) on the diagonal (6.39)",
+            Quantity::Christoffel => "Centripetal and Coriolis coefficients D_ijk (eq. 6.44; D_ijk = D_ikj)",
+            Quantity::Coriolis => "Coriolis matrix C_ij = Σ_k D_ijk θ̇_k",
+            Quantity::Gravity => "Gravity D_i (eq. 6.45), with joint springs",
+            Quantity::Torque => "Joint torques and forces T_i (eq. 6.46)",
+        }
+    }
+}
+
+/// The name of one printed equation: `D12`, `D112`, `T1`, `D11 + I1(act)`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) struct Label {
+    quantity: Quantity,
+    /// 0-based joint indices.
+    joints: Vec<usize>,
+    /// Whether the actuator inertia of the first joint is added (the diagonal of M).
+    actuator_inertia: bool,
+}
+
+impl Label {
+    pub(super) fn new(quantity: Quantity, joints: &[usize]) -> Label {
+        Label {
+            quantity,
+            joints: joints.to_vec(),
+            actuator_inertia: false,
+        }
+    }
+
+    /// The same name with the actuator inertia added.
+    pub(super) fn with_actuator_inertia(self) -> Label {
+        Label {
+            actuator_inertia: true,
+            ..self
+        }
+    }
+
+    /// The name as `printer` writes it.
+    pub(super) fn render(&self, printer: &Printer<'_>) -> String {
+        let name = format!(
+            "{}{}",
+            self.quantity.letter(),
+            printer.indices(&self.joints)
+        );
+        if !self.actuator_inertia {
+            return name;
+        }
+        let act = if printer.latex() {
+            "\\mathrm{act}"
+        } else {
+            "act"
+        };
+        format!("{name} + I{}({act})", printer.indices(&self.joints[..1]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Label, Quantity};
+    use crate::algo::JointKind;
+    use crate::inspect::print::{Format, Printer};
+
+    #[test]
+    fn labels_print_themselves() {
+        let kinds = [JointKind::Revolute; 2];
+        let text = Printer {
+            format: Format::Text,
+            kinds: &kinds,
+        };
+        let latex = Printer {
+            format: Format::Latex,
+            kinds: &kinds,
+        };
+        let diagonal = Label::new(Quantity::Inertia, &[1, 1]).with_actuator_inertia();
+        assert_eq!(diagonal.render(&text), "D22 + I2(act)");
+        assert_eq!(diagonal.render(&latex), "D_{22} + I_{2}(\\mathrm{act})");
+        let christoffel = Label::new(Quantity::Christoffel, &[0, 1, 0]);
+        assert_eq!(christoffel.render(&text), "D121");
+        assert_eq!(Label::new(Quantity::Torque, &[0]).render(&text), "T1");
+        let ten = [JointKind::Revolute; 10];
+        let wide = Printer {
+            format: Format::Text,
+            kinds: &ten,
+        };
+        assert_eq!(
+            Label::new(Quantity::Coriolis, &[0, 9]).render(&wide),
+            "C1,10"
+        );
+    }
+}

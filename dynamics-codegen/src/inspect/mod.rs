@@ -1,0 +1,77 @@
+//! Readable closed forms: the equations of motion printed as a person writes them, in the
+//! notation of Niku ch. 6 (`T_i = Σ_j D_ij θ̈_j + I_i(act) θ̈_i + Σ_jk D_ijk θ̇_j θ̇_k + D_i`,
+//! eqs. 6.43–6.46), as plain text or LaTeX.
+//!
+//! Each output of the [`Equations`] is expanded into its exact canonical polynomial
+//! ([`Poly`], in `expand`), then rewritten for reading:
+//!
+//! * products of sines and cosines of joint angles fold back into those of sums
+//!   (`C1 C2 − S1 S2` → `C12`, `S1 C2 + C1 S2` → `S12`; `fold`);
+//! * terms are grouped by their accelerations and velocities (`(…) θ̈1`, `… θ̇1 θ̇2`), and
+//!   terms sharing a sine or cosine are grouped with their common parameters taken out
+//!   (`(1/2 m1 + m2) g l1 C1`; `arrange`);
+//! * each equation is named by a typed label (`D12`, `D11 + I1(act)`; `label`) and printed
+//!   as text or LaTeX (`print`, `render`).
+//!
+//! One vocabulary serves the polynomial and the printer: a [`Sym`] is a parameter, a joint
+//! variable or the sine or cosine of a sum of joint angles, and a [`Monomial`] a product of
+//! them.
+
+mod arrange;
+mod expand;
+mod fold;
+mod label;
+mod monomial;
+mod number;
+mod parse;
+mod poly;
+mod print;
+mod render;
+mod sections;
+mod symbol;
+#[cfg(test)]
+mod tests;
+
+pub use expand::Limits;
+pub use monomial::Monomial;
+pub use poly::Poly;
+pub use print::Format;
+pub use symbol::{AngleSum, Sym};
+
+use crate::algo::JointKind;
+use crate::derive::Equations;
+use crate::model::Robot;
+use expand::Expander;
+use sections::Section;
+
+/// The equations of motion of a robot, ready to print.
+pub struct Inspection {
+    name: String,
+    kinds: Vec<JointKind>,
+    offsets: bool,
+    sections: Vec<Section>,
+    limits: Limits,
+}
+
+/// Expands and arranges every output of `eq` within `limits`.
+#[must_use]
+pub fn inspect(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
+    let mut expander = Expander::new(eq, limits);
+    Inspection {
+        name: robot.name.clone(),
+        kinds: eq.kinds.clone(),
+        offsets: eq.angle_offsets.iter().any(Option::is_some),
+        sections: sections::sections(&mut expander, eq, robot),
+        limits,
+    }
+}
+
+impl Inspection {
+    /// Whether every equation fitted the limits.
+    #[must_use]
+    pub fn complete(&self) -> bool {
+        self.sections
+            .iter()
+            .all(|s| s.entries.iter().all(|e| e.value.is_some()))
+    }
+}

@@ -1,0 +1,205 @@
+//! Printing of arranged terms as a person writes them, in the notation of Niku ch. 6: plain
+//! text (`1/2 m2 l1 l2 S2 θ̇1²`) or LaTeX (`\frac{1}{2} m_{2} … \dot{\theta}_{1}^{2}`).
+
+use super::arrange::Term;
+use super::number::{decimal, is_small_fraction};
+use super::Sym;
+use crate::algo::JointKind;
+use crate::symbolic::Number;
+
+/// Output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// Plain text (UTF-8): `1/2 m2 l1 l2 S2 θ̇1²`.
+    Text,
+    /// LaTeX math: `\frac{1}{2} m_{2} l_{1} l_{2} S_{2} \dot{\theta}_{1}^{2}`.
+    Latex,
+}
+
+/// Prints terms in one format for a robot with the given joints.
+pub(super) struct Printer<'a> {
+    pub(super) format: Format,
+    pub(super) kinds: &'a [JointKind],
+}
+
+const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+
+impl Printer<'_> {
+    pub(super) fn latex(&self) -> bool {
+        self.format == Format::Latex
+    }
+
+    /// Joint indices (0-based) as the book writes them: `12`, or `1,10` past nine joints.
+    pub(super) fn indices(&self, joints: &[usize]) -> String {
+        let sep = if self.kinds.len() > 9 { "," } else { "" };
+        let s: Vec<String> = joints.iter().map(|j| (j + 1).to_string()).collect();
+        let s = s.join(sep);
+        if self.latex() {
+            format!("_{{{s}}}")
+        } else {
+            s
+        }
+    }
+
+    /// The symbol of joint `i`'s variable: `d` for a prismatic joint, else `θ`.
+    pub(super) fn joint_letter(&self, i: usize) -> &'static str {
+        let prismatic = self.kinds.get(i) == Some(&JointKind::Prismatic);
+        match (prismatic, self.latex()) {
+            (true, _) => "d",
+            (false, true) => "\\theta",
+            (false, false) => "θ",
+        }
+    }
+
+    fn power(&self, base: String, e: u32) -> String {
+        if e == 1 {
+            base
+        } else if self.latex() {
+            format!("{base}^{{{e}}}")
+        } else {
+            let sup: String = e
+                .to_string()
+                .chars()
+                .filter_map(|d| d.to_digit(10).map(|d| SUPERSCRIPTS[d as usize]))
+                .collect();
+            format!("{base}{sup}")
+        }
+    }
+
+    fn symbol(&self, s: &Sym) -> String {
+        let index = |i: &u16| self.indices(&[usize::from(*i)]);
+        match s {
+            Sym::Param(p) if self.latex() => latex_name(p),
+            Sym::Param(p) => p.clone(),
+            Sym::Q(i) => format!("d{}", index(i)),
+            Sym::Sin(a) | Sym::Cos(a) => {
+                let joints: Vec<usize> = a.joints().map(usize::from).collect();
+                let letter = if matches!(s, Sym::Cos(_)) { "C" } else { "S" };
+                format!("{letter}{}", self.indices(&joints))
+            }
+            Sym::Qd(i) | Sym::Qdd(i) => {
+                let letter = self.joint_letter(usize::from(*i));
+                let dots = match (matches!(s, Sym::Qdd(_)), self.latex()) {
+                    (false, true) => return format!("\\dot{{{letter}}}{}", index(i)),
+                    (true, true) => return format!("\\ddot{{{letter}}}{}", index(i)),
+                    (false, false) => '\u{307}',
+                    (true, false) => '\u{308}',
+                };
+                format!("{letter}{dots}{}", index(i))
+            }
+        }
+    }
+
+    /// A sum of terms.
+    pub(super) fn sum(&self, terms: &[Term]) -> String {
+        if terms.is_empty() {
+            return "0".into();
+        }
+        let mut s = String::new();
+        for (k, t) in terms.iter().enumerate() {
+            let negative = t.coef.is_negative();
+            s.push_str(match (k, negative) {
+                (0, true) => "-",
+                (0, false) => "",
+                (_, true) => " - ",
+                (_, false) => " + ",
+            });
+            s.push_str(&self.term(t));
+        }
+        s
+    }
+
+    /// A term without its sign.
+    fn term(&self, t: &Term) -> String {
+        let mut parts: Vec<String> = Vec::new();
+        let abs = if t.coef.is_negative() {
+            -t.coef
+        } else {
+            t.coef
+        };
+        if !abs.is_one() || (t.group.is_empty() && t.factors.is_one()) {
+            parts.push(self.number(abs));
+        }
+        if !t.group.is_empty() {
+            let inner = self.sum(&t.group);
+            parts.push(if self.latex() {
+                format!("\\left({inner}\\right)")
+            } else {
+                format!("({inner})")
+            });
+        }
+        let mut factors: Vec<&(Sym, u32)> = t.factors.factors().iter().collect();
+        factors.sort_by_key(|(s, _)| person_order(s));
+        for (s, e) in factors {
+            parts.push(self.power(self.symbol(s), *e));
+        }
+        parts.join(" ")
+    }
+
+    fn number(&self, x: Number) -> String {
+        if let Number::Rational(n, d) = x {
+            if d == 1 {
+                return n.to_string();
+            }
+            if is_small_fraction(d) {
+                return if self.latex() {
+                    format!("\\frac{{{n}}}{{{d}}}")
+                } else {
+                    format!("{n}/{d}")
+                };
+            }
+        }
+        decimal(x)
+    }
+
+    /// A LaTeX sum broken into lines of four terms inside `align*`.
+    pub(super) fn latex_lines(&self, terms: &[Term]) -> String {
+        let mut s = String::new();
+        for (k, chunk) in terms.chunks(4).enumerate() {
+            let part = self.sum(chunk);
+            if k == 0 {
+                s.push_str(&part);
+            } else {
+                s.push_str(" \\\\\n  &\\quad ");
+                if !part.starts_with('-') {
+                    s.push_str("+ ");
+                }
+                s.push_str(&part);
+            }
+        }
+        if s.is_empty() {
+            s.push('0');
+        }
+        s
+    }
+}
+
+/// Masses first, then gravity, then the rest in symbol order, as the book writes
+/// `m2 g l2 C12`.
+fn person_order(s: &Sym) -> (u8, &Sym) {
+    let rank = match s {
+        Sym::Param(p) if p.starts_with('m') => 0,
+        Sym::Param(p) if p == "g" => 1,
+        _ => 2,
+    };
+    (rank, s)
+}
+
+/// `m2` → `m_{2}`, `I1act` → `I_{1act}`, `payload` → `\mathit{payload}`.
+fn latex_name(name: &str) -> String {
+    let letters: String = name.chars().take_while(char::is_ascii_alphabetic).collect();
+    let rest = &name[letters.len()..];
+    let base = if letters.chars().count() > 1 {
+        format!("\\mathit{{{letters}}}")
+    } else {
+        letters
+    };
+    let rest = rest.replace('_', "\\_");
+    if rest.is_empty() {
+        base
+    } else if rest.starts_with(|c: char| c.is_ascii_digit()) {
+        format!("{base}_{{{rest}}}")
+    } else {
+        format!("{base}\\mathit{{{rest}}}")
+    }
+}

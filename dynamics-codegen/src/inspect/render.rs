@@ -1,0 +1,92 @@
+//! The whole printout of an [`Inspection`]: a header naming the notation, then each section
+//! with its equations (LaTeX in `align*` environments), or a note where a section did not
+//! fit the limits.
+
+use super::print::{Format, Printer};
+use super::sections::{Entry, Section};
+use super::Inspection;
+use std::fmt::Write;
+
+impl Inspection {
+    /// The equations in `format`.
+    #[must_use]
+    pub fn render(&self, format: Format) -> String {
+        let p = Printer {
+            format,
+            kinds: &self.kinds,
+        };
+        let mut out = self.header(&p);
+        for section in &self.sections {
+            self.render_section(&p, section, &mut out);
+        }
+        out
+    }
+
+    /// The robot's name, its joint variables and the notation.
+    fn header(&self, p: &Printer<'_>) -> String {
+        let comment = if p.latex() { "% " } else { "" };
+        let joints: Vec<String> = (0..self.kinds.len())
+            .map(|i| format!("{}{}", p.joint_letter(i), p.indices(&[i])))
+            .collect();
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{comment}{}: equations of motion in the notation of Niku, Introduction to Robotics, ch. 6",
+            self.name
+        );
+        let _ = writeln!(out, "{comment}joint variables {}", joints.join(", "));
+        let _ = writeln!(
+            out,
+            "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …; θ̇, θ̈: velocity, acceleration"
+        );
+        if self.offsets {
+            let _ = writeln!(
+                out,
+                "{comment}θi in Si, Ci includes the joint's constant offset where it is not a multiple of 90°"
+            );
+        }
+        out
+    }
+
+    fn render_section(&self, p: &Printer<'_>, section: &Section, out: &mut String) {
+        let title = section.quantity.heading();
+        out.push('\n');
+        if p.latex() {
+            let _ = writeln!(out, "% {title}\n\\begin{{align*}}");
+        } else {
+            let _ = writeln!(out, "{title}:");
+        }
+        if section.entries.iter().any(|e| e.value.is_none()) {
+            let msg = format!(
+                "too large to print here (over {} terms or {} term operations): the `dynamics inspect` command prints it",
+                self.limits.max_terms, self.limits.max_work
+            );
+            if p.latex() {
+                let _ = writeln!(out, "&\\text{{{msg}}}");
+            } else {
+                let _ = writeln!(out, "  {msg}");
+            }
+        } else {
+            let last = section.entries.len().saturating_sub(1);
+            for (k, entry) in section.entries.iter().enumerate() {
+                out.push_str(&equation(p, entry, k == last));
+            }
+        }
+        if p.latex() {
+            let _ = writeln!(out, "\\end{{align*}}");
+        }
+    }
+}
+
+/// One line `D12 = D21 = …`; in LaTeX, a row of `align*`, ended by `\\` unless `last`.
+fn equation(p: &Printer<'_>, entry: &Entry, last: bool) -> String {
+    let names: Vec<String> = entry.labels.iter().map(|l| l.render(p)).collect();
+    let names = names.join(" = ");
+    let value = entry.value.as_deref().unwrap_or(&[]);
+    if p.latex() {
+        let end = if last { "" } else { " \\\\" };
+        format!("{names} &= {}{end}\n", p.latex_lines(value))
+    } else {
+        format!("  {names} = {}\n", p.sum(value))
+    }
+}

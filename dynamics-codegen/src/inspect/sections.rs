@@ -1,0 +1,88 @@
+//! The printed equations in sections, one per quantity: each entry names the equation and
+//! holds its arranged terms, or nothing when it did not fit the limits.
+
+use super::arrange::Term;
+use super::expand::Expander;
+use super::label::{Label, Quantity};
+use crate::derive::Equations;
+use crate::model::Robot;
+
+/// One printed equation: its names (`D12 = D21`) and its right-hand side, `None` when it was
+/// too large to expand.
+pub(super) struct Entry {
+    pub(super) labels: Vec<Label>,
+    pub(super) value: Option<Vec<Term>>,
+}
+
+/// The equations of one quantity.
+pub(super) struct Section {
+    pub(super) quantity: Quantity,
+    pub(super) entries: Vec<Entry>,
+}
+
+/// Every section of `eq`, in the order printed; expanded cheapest first (gravity first), so
+/// that what fits the limits is printed.
+pub(super) fn sections(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Section> {
+    let n = eq.dof;
+    let entry = |x: &mut Expander<'_>, labels, id| Entry {
+        labels,
+        value: x.terms(id),
+    };
+    let gravity = (0..n)
+        .map(|i| entry(x, vec![Label::new(Quantity::Gravity, &[i])], eq.gravity[i]))
+        .collect();
+    let inertia = inertia(x, eq, robot);
+    let mut christoffel = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            for k in j..n {
+                let mut labels = vec![Label::new(Quantity::Christoffel, &[i, j, k])];
+                if k != j {
+                    labels.push(Label::new(Quantity::Christoffel, &[i, k, j]));
+                }
+                christoffel.push(entry(x, labels, eq.christoffel[i][j][k]));
+            }
+        }
+    }
+    let mut coriolis = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let labels = vec![Label::new(Quantity::Coriolis, &[i, j])];
+            coriolis.push(entry(x, labels, eq.coriolis[i][j]));
+        }
+    }
+    let torque = (0..n)
+        .map(|i| entry(x, vec![Label::new(Quantity::Torque, &[i])], eq.tau[i]))
+        .collect();
+    [
+        (Quantity::Inertia, inertia),
+        (Quantity::Christoffel, christoffel),
+        (Quantity::Coriolis, coriolis),
+        (Quantity::Gravity, gravity),
+        (Quantity::Torque, torque),
+    ]
+    .into_iter()
+    .map(|(quantity, entries)| Section { quantity, entries })
+    .collect()
+}
+
+/// `D_ij = D_ji` for `j ≥ i`, the diagonal named with the actuator inertia where the joint
+/// has one (M's diagonal holds it).
+fn inertia(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Entry> {
+    let mut entries = Vec::new();
+    for (i, joint) in robot.joints.iter().enumerate() {
+        for j in i..eq.dof {
+            let mut labels = vec![Label::new(Quantity::Inertia, &[i, j])];
+            if j != i {
+                labels.push(Label::new(Quantity::Inertia, &[j, i]));
+            } else if !joint.actuator_inertia.is_zero() {
+                labels[0] = labels[0].clone().with_actuator_inertia();
+            }
+            entries.push(Entry {
+                labels,
+                value: x.terms(eq.mass[i][j]),
+            });
+        }
+    }
+    entries
+}

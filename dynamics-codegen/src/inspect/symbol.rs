@@ -1,0 +1,184 @@
+//! The symbols of the readable equations: parameters, joint variables and the sines and
+//! cosines of sums of joint angles (`S1 = sin θ1`, `C12 = cos(θ1 + θ2)`).
+//!
+//! One vocabulary for the polynomial ([`super::Poly`]) and the printer: the graph's leaves
+//! ([`Var`]) map onto these, and folding turns products of single-joint sines and cosines into
+//! ones of sums. The order of the variants is the order of printing.
+
+use crate::symbolic::Var;
+use std::cmp::Ordering;
+use std::fmt;
+
+/// A sum of joint angles `θ_a + θ_b + …`, as a set of 0-based joint indices (at most 64,
+/// which covers `check::MAX_JOINTS`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct AngleSum(u64);
+
+impl AngleSum {
+    /// The angle of joint `i` alone; `None` past 64 joints.
+    #[must_use]
+    pub fn joint(i: u16) -> Option<AngleSum> {
+        1u64.checked_shl(u32::from(i)).map(AngleSum)
+    }
+
+    /// The joints of the sum, in increasing order.
+    pub fn joints(self) -> impl Iterator<Item = u16> {
+        (0..64u16).filter(move |&j| self.0 & (1 << j) != 0)
+    }
+
+    /// Whether the two sums share no joint.
+    #[must_use]
+    pub fn is_disjoint(self, other: AngleSum) -> bool {
+        self.0 & other.0 == 0
+    }
+
+    /// The sum of both.
+    #[must_use]
+    pub fn union(self, other: AngleSum) -> AngleSum {
+        AngleSum(self.0 | other.0)
+    }
+}
+
+/// As the lists of joints compare (`1 < 12 < 123 < 13 < 2`), so that `C1` prints before
+/// `C12` and `C12` before `C2`.
+impl Ord for AngleSum {
+    fn cmp(&self, other: &AngleSum) -> Ordering {
+        let differ = self.0 ^ other.0;
+        if differ == 0 {
+            return Ordering::Equal;
+        }
+        // Below the lowest differing joint both lists agree; the list holding that joint
+        // continues with it, the other with a higher joint, or ends.
+        let lowest = differ & differ.wrapping_neg();
+        let above = !(lowest | (lowest - 1));
+        let (with, without) = if self.0 & lowest != 0 {
+            (Ordering::Less, other.0)
+        } else {
+            (Ordering::Greater, self.0)
+        };
+        if without & above != 0 {
+            with
+        } else {
+            with.reverse()
+        }
+    }
+}
+
+impl PartialOrd for AngleSum {
+    fn partial_cmp(&self, other: &AngleSum) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+/// A symbol of a polynomial. The order of the variants is the order of printing.
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Sym {
+    /// A parameter (struct field) by name.
+    Param(String),
+    /// The position `q_i` of a prismatic joint (0-based).
+    Q(u16),
+    /// The sine of a sum of joint angles.
+    Sin(AngleSum),
+    /// The cosine of a sum of joint angles.
+    Cos(AngleSum),
+    /// The acceleration `q̈_i`.
+    Qdd(u16),
+    /// The velocity `q̇_i`.
+    Qd(u16),
+}
+
+impl Sym {
+    /// The symbol of a graph input; `fields` names the parameters (`None` for an unknown
+    /// one).
+    #[must_use]
+    pub fn of(v: Var, fields: &[String]) -> Option<Sym> {
+        Some(match v {
+            Var::Q(i) => Sym::Q(i),
+            Var::SinQ(i) => Sym::Sin(AngleSum::joint(i)?),
+            Var::CosQ(i) => Sym::Cos(AngleSum::joint(i)?),
+            Var::Qd(i) => Sym::Qd(i),
+            Var::Qdd(i) => Sym::Qdd(i),
+            Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
+        })
+    }
+
+    /// `cos angle` when `cos`, else `sin angle`.
+    #[must_use]
+    pub fn trig(cos: bool, angle: AngleSum) -> Sym {
+        if cos {
+            Sym::Cos(angle)
+        } else {
+            Sym::Sin(angle)
+        }
+    }
+
+    /// Whether it is a cosine (`true`) or sine, and of which angle; `None` for other symbols.
+    #[must_use]
+    pub fn as_trig(&self) -> Option<(bool, AngleSum)> {
+        match self {
+            Sym::Sin(a) => Some((false, *a)),
+            Sym::Cos(a) => Some((true, *a)),
+            _ => None,
+        }
+    }
+
+    /// Whether it is a velocity or an acceleration.
+    #[must_use]
+    pub fn is_motion(&self) -> bool {
+        matches!(self, Sym::Qd(_) | Sym::Qdd(_))
+    }
+
+    /// Whether it is a sine or a cosine.
+    #[must_use]
+    pub fn is_trig(&self) -> bool {
+        self.as_trig().is_some()
+    }
+}
+
+/// The syntax of [`super::Poly::parse`]: `m1`, `q2`, `qd1`, `qdd1`, `S1`, `C12`.
+impl fmt::Display for Sym {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let angle = |f: &mut fmt::Formatter<'_>, a: &AngleSum| {
+            a.joints().try_for_each(|j| write!(f, "{}", j + 1))
+        };
+        match self {
+            Sym::Param(p) => write!(f, "{p}"),
+            Sym::Q(i) => write!(f, "q{}", i + 1),
+            Sym::Sin(a) => {
+                write!(f, "S")?;
+                angle(f, a)
+            }
+            Sym::Cos(a) => {
+                write!(f, "C")?;
+                angle(f, a)
+            }
+            Sym::Qdd(i) => write!(f, "qdd{}", i + 1),
+            Sym::Qd(i) => write!(f, "qd{}", i + 1),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::AngleSum;
+
+    fn sum(joints: &[u16]) -> AngleSum {
+        joints
+            .iter()
+            .map(|&j| AngleSum::joint(j).unwrap())
+            .reduce(AngleSum::union)
+            .unwrap()
+    }
+
+    /// The order is that of the sorted joint lists.
+    #[test]
+    fn angle_sums_order_as_lists() {
+        let lists: [&[u16]; 7] = [&[0], &[0, 1], &[0, 1, 2], &[0, 2], &[1], &[1, 2], &[5]];
+        for (x, a) in lists.iter().enumerate() {
+            for (y, b) in lists.iter().enumerate() {
+                assert_eq!(sum(a).cmp(&sum(b)), x.cmp(&y), "{a:?} vs {b:?}");
+                assert_eq!(sum(a).cmp(&sum(b)), a.cmp(b));
+            }
+        }
+    }
+}
