@@ -13,7 +13,8 @@ mod gravity;
 mod rnea;
 mod vector;
 
-pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, JointKind, WrenchCarrier};
+pub use crate::model::JointKind;
+pub use chain::{Body, Chain, ChainJoint, DhRow, Inertial, WrenchCarrier};
 pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
