@@ -50,15 +50,28 @@ const ATTRIBUTE: &str = "dynamics attribute";
 /// What the keys of `link(...)` are called in messages.
 const LINK_ATTRIBUTE: &str = "link attribute";
 
-/// Stores the first value given for a key; a repeated key is an error, and parsing goes on.
-fn set<T>(slot: &mut Option<T>, value: T, key: &Ident, what: &str, errors: &mut Errors) {
-    if slot.is_some() {
-        errors.push(
-            key.span(),
-            format!("duplicate {what} `{key}`: it is given earlier in this list"),
-        );
-    } else {
-        *slot = Some(value);
+/// One `key = value` entry of an attribute list, where a repeated key is reported.
+struct Entry<'a> {
+    /// The key as written.
+    ident: &'a Ident,
+    /// What the keys of the list are called in messages.
+    what: &'static str,
+    errors: &'a mut Errors,
+}
+
+impl Entry<'_> {
+    /// Stores the first value given for the key; a repeated key is an error on its second
+    /// occurrence, and parsing goes on.
+    fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
+        if slot.is_some() {
+            let (key, what) = (self.ident, self.what);
+            self.errors.push(
+                key.span(),
+                format!("duplicate {what} `{key}`: it is given earlier in this list"),
+            );
+        } else {
+            *slot = Some(value);
+        }
     }
 }
 
@@ -105,7 +118,6 @@ fn parse_attr(
     attrs: &mut Attrs,
     errors: &mut Errors,
 ) -> syn::Result<()> {
-    let what = ATTRIBUTE;
     if key == Key::Link {
         if !input.peek(syn::token::Paren) {
             return Err(input
@@ -119,35 +131,28 @@ fn parse_attr(
         return Ok(());
     }
     input.parse::<Token![=]>()?;
+    let mut entry = Entry {
+        ident,
+        what: ATTRIBUTE,
+        errors,
+    };
     match key {
-        Key::File => {
-            let s = string(input, "`file = \"robots/arm.toml\"`")?;
-            set(&mut attrs.file, s, ident, what, errors);
-        }
-        Key::Name => {
-            let s = string(input, "`name = \"arm\"`")?;
-            set(&mut attrs.name, s, ident, what, errors);
-        }
+        Key::File => entry.keep_first(
+            &mut attrs.file,
+            string(input, "`file = \"robots/arm.toml\"`")?,
+        ),
+        Key::Name => entry.keep_first(&mut attrs.name, string(input, "`name = \"arm\"`")?),
         Key::Crate => {
-            let s = string(input, "`crate = \"path::to::dynamics_runtime\"`")?;
-            set(&mut attrs.krate, s.parse()?, ident, what, errors);
+            let path = string(input, "`crate = \"path::to::dynamics_runtime\"`")?.parse()?;
+            entry.keep_first(&mut attrs.krate, path);
         }
-        Key::Convention => {
-            let c = parse_convention(input)?;
-            set(&mut attrs.convention, c, ident, what, errors);
-        }
+        Key::Convention => entry.keep_first(&mut attrs.convention, parse_convention(input)?),
         Key::Gravity => {
-            let (g, _) = values::<3>(input, "`gravity = [gx, gy, gz]`")?;
-            set(&mut attrs.gravity, g, ident, what, errors);
+            let (gravity, _) = values::<3>(input, "`gravity = [gx, gy, gz]`")?;
+            entry.keep_first(&mut attrs.gravity, gravity);
         }
-        Key::CheckInertia => {
-            let b = boolean(input)?;
-            set(&mut attrs.check_inertia, b, ident, what, errors);
-        }
-        Key::Dh => {
-            let dh = parse_dh(input)?;
-            set(&mut attrs.dh, dh, ident, what, errors);
-        }
+        Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input)?),
+        Key::Dh => entry.keep_first(&mut attrs.dh, parse_dh(input)?),
         // Read above: a `link(...)` has no `=`.
         Key::Link => {}
     }
@@ -186,29 +191,24 @@ fn parse_link_attr(
     link: &mut LinkAttr,
     errors: &mut Errors,
 ) -> syn::Result<()> {
-    let what = LINK_ATTRIBUTE;
+    let mut entry = Entry {
+        ident,
+        what: LINK_ATTRIBUTE,
+        errors,
+    };
     match key {
-        LinkKey::Mass => set(&mut link.mass, input.parse()?, ident, what, errors),
+        LinkKey::Mass => entry.keep_first(&mut link.mass, input.parse()?),
         LinkKey::Com => {
             let (com, _) = values::<3>(input, "`com = [x, y, z]`")?;
-            set(&mut link.com, com, ident, what, errors);
+            entry.keep_first(&mut link.com, com);
         }
         LinkKey::Inertia => {
             let inertia = values::<6>(input, "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`")?;
-            set(&mut link.inertia, inertia, ident, what, errors);
+            entry.keep_first(&mut link.inertia, inertia);
         }
-        LinkKey::ActuatorInertia => {
-            let inertia = input.parse()?;
-            set(&mut link.actuator_inertia, inertia, ident, what, errors);
-        }
-        LinkKey::Spring => {
-            let spring = parse_spring(input)?;
-            set(&mut link.spring, spring, ident, what, errors);
-        }
-        LinkKey::CheckInertia => {
-            let b = boolean(input)?;
-            set(&mut link.check_inertia, b, ident, what, errors);
-        }
+        LinkKey::ActuatorInertia => entry.keep_first(&mut link.actuator_inertia, input.parse()?),
+        LinkKey::Spring => entry.keep_first(&mut link.spring, parse_spring(input)?),
+        LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input)?),
     }
     Ok(())
 }

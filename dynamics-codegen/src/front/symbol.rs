@@ -6,11 +6,11 @@ use syn::Ident;
 
 /// An enum of keys with the name each is written as.
 macro_rules! keys {
-    ($(#[$doc:meta])* $name:ident { $($(#[$key_doc:meta])* $key:ident = $text:literal,)* }) => {
+    ($(#[$doc:meta])* $name:ident { $($key:ident = $text:literal,)* }) => {
         $(#[$doc])*
         #[derive(Clone, Copy, Debug, PartialEq, Eq)]
         pub(super) enum $name {
-            $($(#[$key_doc])* $key,)*
+            $($key,)*
         }
 
         impl $name {
@@ -35,41 +35,21 @@ macro_rules! keys {
 }
 
 keys! {
-    /// A key of `#[dynamics(...)]`.
+    /// A key of `#[dynamics(...)]`: `gravity = [gx, gy, gz]`, `dh = [[θ, d, a, α], ...]`,
+    /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
+    /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`.
     Key {
-        /// `gravity = [gx, gy, gz]`.
-        Gravity = "gravity",
-        /// `dh = [[θ, d, a, α], ...]`.
-        Dh = "dh",
-        /// `link(...)`, one per joint.
-        Link = "link",
-        /// `convention = standard | modified`.
-        Convention = "convention",
-        /// `file = "robot.toml"`.
-        File = "file",
-        /// `name = "arm"`.
-        Name = "name",
-        /// `crate = "path::to::dynamics_runtime"`.
-        Crate = "crate",
-        /// `check_inertia = false`, for every link.
-        CheckInertia = "check_inertia",
+        Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
+        File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
     }
 }
 
 keys! {
-    /// A key of `link(...)`.
+    /// A key of `link(...)`: `mass = m`, `com = [x, y, z]`,
+    /// `inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`, `actuator_inertia = I`,
+    /// `spring = (stiffness, rest_position)`, `check_inertia = false`.
     LinkKey {
-        /// `mass = m`.
-        Mass = "mass",
-        /// `com = [x, y, z]`.
-        Com = "com",
-        /// `inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`.
-        Inertia = "inertia",
-        /// `actuator_inertia = I`.
-        ActuatorInertia = "actuator_inertia",
-        /// `spring = (stiffness, rest_position)`.
-        Spring = "spring",
-        /// `check_inertia = false`, for this link.
-        CheckInertia = "check_inertia",
+        Mass = "mass", Com = "com", Inertia = "inertia",
+        ActuatorInertia = "actuator_inertia", Spring = "spring", CheckInertia = "check_inertia",
     }
 }
