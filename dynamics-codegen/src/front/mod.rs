@@ -18,10 +18,11 @@
 //! Rot(x,α)`; the joint variable `q` (or `qN` in row N) in the θ cell makes the joint revolute,
 //! in the d cell prismatic, with an optional constant offset (`q + 90 deg`).
 //!
-//! The front end reads the attributes into [`attr::Attrs`] (tokens with spans, by the keys of
-//! [`symbol`]), then builds the syn-free [`Robot`] from them ([`from_attrs`]) or from the
-//! description file they name ([`from_file`], read by [`file`]); values follow the grammar of
-//! [`value`]. Every error goes to one [`Errors`] and all are reported together.
+//! The steps, one module each: `attr` reads the attributes (by the keys of `symbol`, each
+//! value by `attr_value`) into tokens with their spans; `from_attrs` builds the syn-free
+//! [`Robot`] from them, or `from_file` from the description file they name (read by `file`,
+//! also for the command-line tool: [`load`]); values follow the grammar of `value`
+//! ([`parse_value`]). Every error goes to one [`Errors`] and all are reported together.
 
 mod attr;
 mod attr_value;
