@@ -133,7 +133,7 @@ pub fn description(robot: &str) -> String {
 /// If the description is missing or invalid.
 #[must_use]
 pub fn numeric(robot: &str) -> Numeric {
-    let model = dynamics_codegen::model::from_json(&description(robot), robot)
+    let model = dynamics_codegen::front::from_json(&description(robot), robot)
         .unwrap_or_else(|e| panic!("description of {robot}: {e}"));
     // The reference robots name no struct fields: every parameter is a number.
     Numeric::new(&model, &[]).unwrap_or_else(|e| panic!("{robot} needs field {:?}", e.0))

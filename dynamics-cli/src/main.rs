@@ -11,7 +11,8 @@
 //! exit with code 2.
 
 use dynamics_codegen::check;
-use dynamics_codegen::model::{self, Robot};
+use dynamics_codegen::front;
+use dynamics_codegen::model::Robot;
 use dynamics_codegen::readable::{self, Format, Limits};
 use dynamics_codegen::symbolic::{NodeId, Var};
 use dynamics_codegen::{derive, generate, Equations};
@@ -99,33 +100,11 @@ fn flags<'a>(options: &'a [String], allowed: &[&str]) -> Result<Vec<&'a str>, Fa
 /// of each link and the joint count); errors carry `file:line:col`.
 fn load(path: &str) -> Result<Robot, Failure> {
     let text = std::fs::read_to_string(path).map_err(|e| Failure(format!("{path}: {e}"), 1))?;
-    let loaded = model::load(path, &text).map_err(|e| Failure(format!("{path}:{e}"), 1))?;
-    let at = |i: usize, key: &str| loaded.at(path, i, key);
-    let robot = &loaded.robot;
-    let mut problems = Vec::new();
-    if robot.dof() > check::MAX_JOINTS {
-        problems.push(format!(
-            "{}{} joints; at most {} are supported (the generated code grows as n³)",
-            at(check::MAX_JOINTS, "type"),
-            robot.dof(),
-            check::MAX_JOINTS
-        ));
-    }
-    for (i, joint) in robot.joints.iter().enumerate() {
-        let checked = loaded.check_inertia.get(i).copied().unwrap_or(true);
-        for problem in check::link(&joint.mass, &joint.inertia, checked) {
-            let key = match problem.part {
-                check::Part::Mass => "mass",
-                check::Part::Inertia => "inertia",
-            };
-            problems.push(format!(
-                "{}joint {}: {}",
-                at(i, key),
-                i + 1,
-                problem.message
-            ));
-        }
-    }
+    let loaded = front::load(path, &text).map_err(|e| Failure(format!("{path}:{e}"), 1))?;
+    let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
+        .iter()
+        .map(|problem| loaded.describe(path, problem))
+        .collect();
     if problems.is_empty() {
         Ok(loaded.robot)
     } else {

@@ -2,7 +2,7 @@
 //! rustdoc of their impl, and the cap that keeps a large robot's derive fast. Run on the
 //! generator library directly, as the proc macro does.
 
-use dynamics_codegen::{derive_dynamics, model};
+use dynamics_codegen::{derive_dynamics, front};
 use quote::{format_ident, quote};
 use std::time::Instant;
 
@@ -108,7 +108,7 @@ fn large_robot_is_capped_and_fast() {
         "/../bench/robots/iiwa14_fields.toml"
     );
     let text = std::fs::read_to_string(path).expect("iiwa14_fields.toml");
-    let robot = model::from_text(path, &text).expect("valid");
+    let robot = front::from_text(path, &text).expect("valid");
     let fields: Vec<_> = robot
         .fields()
         .iter()

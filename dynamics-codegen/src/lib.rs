@@ -6,7 +6,7 @@
 //!
 //! The pipeline is a compiler, one module per step:
 //!
-//! 1. [`front`]: the derive input (or a description file, [`model::from_text`]) is parsed
+//! 1. [`front`]: the derive input (or a description file, [`front::from_text`]) is parsed
 //!    into a [`model::Robot`], with every error on its span;
 //! 2. [`trace`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
 //!    builds the closed forms as one hash-consed expression graph, simplified as it is built;

@@ -142,11 +142,11 @@ impl RobotScalars for AtPosition<'_> {
 #[cfg(test)]
 mod tests {
     use super::Numeric;
-    use crate::model;
+    use crate::front;
 
     #[test]
     fn fields_are_required() {
-        let robot = model::from_toml(
+        let robot = front::from_toml(
             "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = \"m\"\n",
             "x",
         )

@@ -1,7 +1,7 @@
 //! Properties of the expansion as a whole: deterministic output, and description files in
 //! JSON and TOML giving the same robot.
 
-use dynamics_codegen::{derive, derive_dynamics, model};
+use dynamics_codegen::{derive, derive_dynamics, front, model};
 
 const PUMA: &str = include_str!("../../tests/data/reference/robots/puma560.json");
 
@@ -47,7 +47,7 @@ fn errors_are_compile_errors_not_panics() {
 
 #[test]
 fn json_and_toml_descriptions_agree() {
-    let json = model::from_json(PUMA, "puma560").expect("json");
+    let json = front::from_json(PUMA, "puma560").expect("json");
     let mut toml = String::from("name = \"puma560\"\ngravity = [0, 0, -9.81]\n");
     let rows = [
         ("0.6718299999999999", "0", "\"90 deg\""),
@@ -66,7 +66,7 @@ fn json_and_toml_descriptions_agree() {
             j.inertia.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
         );
     }
-    let toml = model::from_toml(&toml, "puma560").expect("toml");
+    let toml = front::from_toml(&toml, "puma560").expect("toml");
     let (a, b) = (derive(&json), derive(&toml));
     let values = |eq: &dynamics_codegen::Equations| {
         let v = eq.graph.eval(|var| match var {
@@ -94,7 +94,7 @@ com = [-0.35, 0, 0]
 inertia = [0, "2.0 * 0.7^2 / 12", "2.0 * 0.7^2 / 12", 0, 0, 0]
 actuator_inertia = 0.05
 "#;
-    let robot = model::from_toml(text, "x").expect("README sample");
+    let robot = front::from_toml(text, "x").expect("README sample");
     assert_eq!(robot.joints.len(), 1);
     // 2.0 * 0.7^2 / 12 = 0.98 / 12 = 49/600, exactly
     let iyy = robot.joints[0].inertia[1].exact().expect("exact");
@@ -158,7 +158,7 @@ fn symmetric_last_link_needs_no_turn() {
             .map(|m| m.ops.trig)
             .collect::<Vec<_>>()
     };
-    let mut puma = model::from_json(PUMA, "puma560").expect("json");
+    let mut puma = front::from_json(PUMA, "puma560").expect("json");
     assert_eq!(trig(&puma), [8, 8, 8]);
     let last = puma.joints.last_mut().expect("joints");
     last.inertia[0] = model::Value::Num(dynamics_codegen::symbolic::Number::Float(2e-4));
@@ -171,7 +171,7 @@ fn symmetric_last_link_needs_no_turn() {
 /// 1 %). A change that makes the generated τ dearer fails here, not only in a benchmark.
 #[test]
 fn puma560_inverse_dynamics_stays_within_its_operation_budget() {
-    let puma = model::from_json(PUMA, "puma560").expect("json");
+    let puma = front::from_json(PUMA, "puma560").expect("json");
     let eq = derive::derive(&puma);
     let generated = dynamics_codegen::generate(&eq, Vec::new());
     let tau = generated

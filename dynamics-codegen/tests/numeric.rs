@@ -1,7 +1,7 @@
 //! The algorithms run on `f64` (the numeric Newton-Euler the benchmarks compare against)
 //! reproduce the reference data of every reference robot.
 
-use dynamics_codegen::{model, numeric::Numeric};
+use dynamics_codegen::{front, numeric::Numeric};
 use serde_json::Value;
 
 #[test]
@@ -18,7 +18,7 @@ fn numeric_algorithms_match_reference_data() {
         "ur5",
     ] {
         let text = std::fs::read_to_string(format!("{dir}/robots/{name}.json")).expect("robot");
-        let robot = model::from_json(&text, name).expect("json");
+        let robot = front::from_json(&text, name).expect("json");
         let numeric = Numeric::new(&robot, &[]).expect("no fields");
         let data: Value = serde_json::from_str(
             &std::fs::read_to_string(format!("{dir}/data/{name}.json")).expect("data"),

@@ -4,7 +4,7 @@
 //! its own thread under `catch_unwind` and must finish within [`BOUND`]. The generator is
 //! deterministic (a fixed-seed xorshift), so a failure is reproducible; the case is printed.
 
-use dynamics_codegen::{derive_dynamics, model};
+use dynamics_codegen::{derive_dynamics, front};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
@@ -338,7 +338,7 @@ fn random_description_files_never_panic_or_hang() {
         // Deriving a 6-joint robot takes milliseconds: do it for every tenth file.
         let generate = k % 10 < 2;
         let (result, _) = bounded(&shown, move || {
-            model::load(path, &text).map(|l| {
+            front::load(path, &text).map(|l| {
                 if generate {
                     drop(dynamics_codegen::derive(&l.robot));
                 }

@@ -19,8 +19,8 @@
 //! d1 and θ is θ2; Example 6.5's r is d2), and `cos θ` is written `Cθ`, the book's own short
 //! form.
 
+use dynamics_codegen::front;
 use dynamics_codegen::inspect::{inspect, Format, Limits};
-use dynamics_codegen::model;
 use std::collections::BTreeMap;
 
 // ---------------------------------------------------------------------------------------------
@@ -325,7 +325,7 @@ fn show(m: &BTreeMap<Mono, Q>) -> String {
 fn printed(file: &str) -> BTreeMap<String, String> {
     let path = format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("description file");
-    let robot = model::from_text(&path, &text).expect("valid description");
+    let robot = front::from_text(&path, &text).expect("valid description");
     let eq = dynamics_codegen::derive(&robot);
     let out = inspect(&eq, &robot, Limits::UNBOUNDED).render(Format::Text);
     let mut map = BTreeMap::new();

@@ -10,16 +10,8 @@
 //! a single component. A link's inertia, given in standard frame i, is carried into J_i exactly.
 
 use super::{Body, Mat3, Scalar, V3};
+use crate::model::JointKind;
 use std::ops::Add;
-
-/// Revolute or prismatic.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum JointKind {
-    /// Rotates about its axis: q = θ.
-    Revolute,
-    /// Slides along its axis: q = d.
-    Prismatic,
-}
 
 /// One row of a standard D-H table with the joint variable substituted: for a revolute joint
 /// `sin_theta`, `cos_theta` are of `q + offset`, for a prismatic one `d` is `q + offset`.

@@ -17,8 +17,9 @@ mod robot;
 mod runs;
 mod vector;
 
+pub use crate::model::JointKind;
 pub use body::Body;
-pub use chain::{Chain, ChainJoint, DhRow, Inertial, JointKind};
+pub use chain::{Chain, ChainJoint, DhRow, Inertial};
 pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};

@@ -1,8 +1,9 @@
 //! Polynomials written as a person would, for tests: the grammar of the description's values
-//! ([`crate::model::parse_value`]), whose identifiers name the polynomial's symbols.
+//! ([`crate::front::parse_value`]), whose identifiers name the polynomial's symbols.
 
 use super::{AngleSum, Poly, Sym};
-use crate::model::{parse_value, Value};
+use crate::front::parse_value;
+use crate::model::Value;
 use crate::symbolic::Number;
 
 impl Poly {

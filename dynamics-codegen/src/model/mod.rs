@@ -1,13 +1,23 @@
 //! The robot as the generator sees it: a D-H table and link parameters whose values are exact
-//! literals or expressions over struct fields. Free of syn, so that the derive, description
-//! files and the command-line tool all produce it.
+//! literals or expressions over struct fields. Data types only, free of syn: the front end
+//! (attributes or description files) produces them, the checks, the derivation and the
+//! command-line tool read them.
+//!
+//! Joint i moves link i by `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)` (standard D-H)
+//! or `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)` (modified D-H).
 
-mod file;
 mod value;
 
-pub use crate::algo::JointKind;
-pub use file::{from_json, from_text, from_toml, load, FileError, Loaded};
-pub use value::{parse_value, Spanned, Value};
+pub use value::Value;
+
+/// Revolute or prismatic.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum JointKind {
+    /// Rotates about its axis: q = θ.
+    Revolute,
+    /// Slides along its axis: q = d.
+    Prismatic,
+}
 
 /// Which D-H convention a table uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

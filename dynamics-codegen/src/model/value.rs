@@ -1,24 +1,10 @@
-//! Values of a robot description: exact literals and expressions over struct fields.
-//!
-//! Grammar (the same in attributes and in description-file strings):
-//!
-//! ```text
-//! value := term (('+' | '-') term)*
-//! term  := power (('*' | '/') power)*
-//! power := unary ('^' integer)?
-//! unary := '-' unary | atom ('deg' | 'rad')?
-//! atom  := number | 'pi' | 'PI' | 'q' | 'q'N | field | 'self' '.' field | '(' value ')'
-//! ```
-//!
-//! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
-//! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact.
+//! Values of a robot description: exact literals and expressions over struct fields, as the
+//! syntax tree the front end parses (`front::value` gives the grammar). `90 deg` is stored as
+//! `90 · π/180`, so [`Value::pi_multiple`] recovers exactly π/2 and its sine and cosine stay exact.
 
 use crate::symbolic::Number;
-use proc_macro2::Span;
 use std::collections::BTreeSet;
 use std::ops::{Add, Mul, Neg, Sub};
-use syn::parse::{Parse, ParseStream};
-use syn::{Ident, Lit, Token};
 
 /// A value: a literal or an expression.
 #[derive(Clone, Debug, PartialEq)]
@@ -77,7 +63,7 @@ impl Value {
     }
 
     /// The number of nodes of the expression tree.
-    fn size(&self) -> usize {
+    pub(crate) fn size(&self) -> usize {
         match self {
             Value::Neg(a) => 1 + a.size(),
             Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) | Value::Div(a, b) => {
@@ -150,6 +136,19 @@ impl Value {
         }
     }
 
+    /// Whether the value divides by a literal zero somewhere (`1 / 0`, `m / (2 - 2)`).
+    #[must_use]
+    pub fn divides_by_zero(&self) -> bool {
+        match self {
+            Value::Div(a, b) => a.divides_by_zero() || b.exact().is_some_and(|x| x.is_zero()),
+            Value::Neg(a) => a.divides_by_zero(),
+            Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) => {
+                a.divides_by_zero() || b.divides_by_zero()
+            }
+            Value::Num(_) | Value::Pi | Value::Field(_) | Value::Joint(_) => false,
+        }
+    }
+
     /// The value as an exact number, if it is one (π is not).
     #[must_use]
     pub fn exact(&self) -> Option<Number> {
@@ -198,289 +197,8 @@ impl std::fmt::Display for Value {
     }
 }
 
-/// A value parsed with the span of its first token (for error messages).
-pub struct Spanned {
-    /// The value.
-    pub value: Value,
-    /// Where it was written: its first token.
-    pub span: Span,
-    /// Its last token.
-    pub end: Span,
-    /// Fields it names, each with where it was written.
-    pub fields: Vec<(String, Span)>,
-}
-
-impl Parse for Spanned {
-    fn parse(input: ParseStream) -> syn::Result<Spanned> {
-        let span = input.span();
-        let start = input.cursor();
-        bounded_extent(start, 0, &mut 0)?;
-        let mut fields = Vec::new();
-        let value = parse_sum(input, &mut fields)?;
-        let mut end = span;
-        let mut cursor = start;
-        while cursor != input.cursor() {
-            let Some((token, next)) = cursor.token_tree() else {
-                break;
-            };
-            end = token.span();
-            cursor = next;
-        }
-        Ok(Spanned {
-            value,
-            span,
-            end,
-            fields,
-        })
-    }
-}
-
-/// The deepest nesting of parentheses a value may have.
-const MAX_DEPTH: usize = 32;
-/// The most tokens a value may have.
-const MAX_TOKENS: usize = 2000;
-
-/// Rejects a value (the tokens up to the next `,` at this level) that is nested or long enough
-/// to exhaust the stack of the recursive parser and of the tree walks after it.
-fn bounded_extent(
-    mut cursor: syn::buffer::Cursor,
-    depth: usize,
-    count: &mut usize,
-) -> syn::Result<()> {
-    while let Some((token, next)) = cursor.token_tree() {
-        if depth == 0 && matches!(&token, proc_macro2::TokenTree::Punct(p) if p.as_char() == ',') {
-            break;
-        }
-        *count += 1;
-        if *count > MAX_TOKENS {
-            return Err(syn::Error::new(
-                token.span(),
-                format!("a value may have at most {MAX_TOKENS} tokens"),
-            ));
-        }
-        if let Some((inner, span, _)) = cursor.group(proc_macro2::Delimiter::Parenthesis) {
-            if depth >= MAX_DEPTH {
-                return Err(syn::Error::new(
-                    span.open(),
-                    format!("parentheses nested more than {MAX_DEPTH} deep"),
-                ));
-            }
-            bounded_extent(inner, depth + 1, count)?;
-        }
-        cursor = next;
-    }
-    Ok(())
-}
-
-/// Parses a value from text (a description-file string).
-///
-/// # Errors
-/// A message if the text is not a value.
-pub fn parse_value(text: &str) -> Result<Value, String> {
-    let tokens: proc_macro2::TokenStream = text
-        .parse()
-        .map_err(|e: proc_macro2::LexError| format!("cannot read `{text}`: {e}"))?;
-    syn::parse2::<Spanned>(tokens)
-        .map(|s| s.value)
-        .map_err(|e| format!("cannot read `{text}` as a value: {e}"))
-}
-
-fn parse_sum(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let mut left = parse_product(input, fields)?;
-    loop {
-        if input.peek(Token![+]) {
-            input.parse::<Token![+]>()?;
-            left = Value::Add(Box::new(left), Box::new(parse_product(input, fields)?));
-        } else if input.peek(Token![-]) {
-            input.parse::<Token![-]>()?;
-            left = Value::Sub(Box::new(left), Box::new(parse_product(input, fields)?));
-        } else {
-            return Ok(left);
-        }
-    }
-}
-
-fn parse_product(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let mut left = parse_power(input, fields)?;
-    loop {
-        if input.peek(Token![*]) {
-            input.parse::<Token![*]>()?;
-            left = Value::Mul(Box::new(left), Box::new(parse_power(input, fields)?));
-        } else if input.peek(Token![/]) {
-            input.parse::<Token![/]>()?;
-            left = Value::Div(Box::new(left), Box::new(parse_power(input, fields)?));
-        } else {
-            return Ok(left);
-        }
-    }
-}
-
-/// The most terms a power may expand to.
-const MAX_POWER_SIZE: usize = 4096;
-
-fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let base = parse_unary(input, fields)?;
-    if !input.peek(Token![^]) {
-        return Ok(base);
-    }
-    input.parse::<Token![^]>()?;
-    let exponent: syn::LitInt = input.parse()?;
-    let n: u32 = exponent.base10_parse()?;
-    if !(1..=8).contains(&n) {
-        return Err(syn::Error::new(
-            exponent.span(),
-            "exponent must be an integer from 1 to 8",
-        ));
-    }
-    // `x^n` is stored as n − 1 products of copies of `x`, so nested powers grow as a product
-    // of exponents: bound the copies so that `((x^8)^8)^8…` is an error, not a hang.
-    if base.size().saturating_mul(n as usize) > MAX_POWER_SIZE {
-        return Err(syn::Error::new(
-            exponent.span(),
-            format!("this power expands to more than {MAX_POWER_SIZE} terms: write it with fewer nested powers"),
-        ));
-    }
-    let mut value = base.clone();
-    for _ in 1..n {
-        value = Value::Mul(Box::new(value), Box::new(base.clone()));
-    }
-    Ok(value)
-}
-
-fn parse_unary(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    if input.peek(Token![-]) {
-        input.parse::<Token![-]>()?;
-        return Ok(Value::Neg(Box::new(parse_unary(input, fields)?)));
-    }
-    let atom = parse_atom(input, fields)?;
-    if input.peek(Ident) {
-        let fork = input.fork();
-        let unit: Ident = fork.parse()?;
-        if unit == "deg" {
-            input.parse::<Ident>()?;
-            let pi_over_180 =
-                Value::Div(Box::new(Value::Pi), Box::new(Value::Num(Number::int(180))));
-            return Ok(Value::Mul(Box::new(atom), Box::new(pi_over_180)));
-        }
-        if unit == "rad" {
-            input.parse::<Ident>()?;
-        }
-    }
-    Ok(atom)
-}
-
-fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    if input.peek(syn::token::Paren) {
-        let content;
-        syn::parenthesized!(content in input);
-        let v = parse_sum(&content, fields)?;
-        if !content.is_empty() {
-            return Err(content.error("expected `)` after the value"));
-        }
-        return Ok(v);
-    }
-    if input.peek(Token![self]) {
-        input.parse::<Token![self]>()?;
-        input.parse::<Token![.]>()?;
-        let name: Ident = input.parse()?;
-        fields.push((name.to_string(), name.span()));
-        return Ok(Value::Field(name.to_string()));
-    }
-    if input.peek(Lit) {
-        let lit: Lit = input.parse()?;
-        let digits = match &lit {
-            Lit::Int(i) => i.base10_digits().to_string(),
-            Lit::Float(f) => f.base10_digits().to_string(),
-            Lit::Str(_) => {
-                return Err(syn::Error::new(
-                    lit.span(),
-                    "write the value without quotes (quotes are for description files)",
-                ))
-            }
-            _ => {
-                return Err(syn::Error::new(
-                    lit.span(),
-                    "expected a number, a struct field or an expression of them",
-                ))
-            }
-        };
-        let n = Number::parse_decimal(&digits)
-            .or_else(|| digits.parse::<f64>().ok().map(Number::from_f64))
-            .ok_or_else(|| syn::Error::new(lit.span(), "this number cannot be read"))?;
-        if !n.to_f64().is_finite() {
-            return Err(syn::Error::new(
-                lit.span(),
-                "this number is too large for an f64",
-            ));
-        }
-        return Ok(Value::Num(n));
-    }
-    if input.peek(Ident) {
-        let name: Ident = input.parse()?;
-        let text = name.to_string();
-        if text == "pi" || text == "PI" {
-            return Ok(Value::Pi);
-        }
-        if text == "q" {
-            return Ok(Value::Joint(None));
-        }
-        if let Some(index) = text.strip_prefix('q').and_then(|d| d.parse::<usize>().ok()) {
-            return Ok(Value::Joint(Some(index)));
-        }
-        fields.push((text.clone(), name.span()));
-        return Ok(Value::Field(text));
-    }
-    Err(input.error("expected a number, a struct field or an expression of them"))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{parse_value, Value};
-    use crate::symbolic::Number;
-
-    #[test]
-    fn literals_stay_exact() {
-        assert_eq!(
-            parse_value("0.4318").unwrap(),
-            Value::Num(Number::ratio(4318, 10000).unwrap())
-        );
-        assert_eq!(
-            parse_value("90 deg").unwrap().pi_multiple(),
-            Number::ratio(1, 2)
-        );
-        assert_eq!(
-            parse_value("-pi/2").unwrap().pi_multiple(),
-            Number::ratio(-1, 2)
-        );
-        assert_eq!(
-            Value::from_f64(std::f64::consts::FRAC_PI_2).pi_multiple(),
-            Number::ratio(1, 2)
-        );
-        assert_eq!(
-            Value::from_f64(-std::f64::consts::FRAC_PI_2).pi_multiple(),
-            Number::ratio(-1, 2)
-        );
-        assert_eq!(Value::from_f64(1.2).pi_multiple(), None);
-    }
-
-    #[test]
-    fn expressions_over_fields() {
-        let v = parse_value("m2 * l2^2 / 12").unwrap();
-        let x = v.eval(&|f| match f {
-            "m2" => Some(3.0),
-            "l2" => Some(2.0),
-            _ => None,
-        });
-        assert_eq!(x, Some(1.0));
-        assert_eq!(
-            parse_value("q + 90 deg")
-                .unwrap()
-                .joint_offset()
-                .unwrap()
-                .pi_multiple(),
-            Number::ratio(1, 2)
-        );
-        assert!(parse_value("2 * q").unwrap().joint_offset().is_none());
-        assert!(parse_value("3 +").is_err());
+impl Default for Value {
+    fn default() -> Value {
+        Value::zero()
     }
 }

@@ -1,0 +1,168 @@
+//! Physical checks on the values of a link that are known at compile time: the mass is finite
+//! and not negative, and the inertia tensor is one a rigid body can have: positive
+//! semi-definite, with principal moments `λ1 ≤ λ2 ≤ λ3` obeying the triangle inequality
+//! `λ1 + λ2 ≥ λ3`.
+
+use super::eigenvalues;
+use crate::model::Value;
+
+/// The link parameter a problem is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LinkParameter {
+    /// `mass`.
+    Mass,
+    /// `inertia`.
+    Inertia,
+}
+
+/// A physical problem with one link.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinkProblem {
+    /// Which value is wrong.
+    pub parameter: LinkParameter,
+    /// What is wrong and how to fix it.
+    pub message: String,
+}
+
+/// The problems of one link's mass and (unless `check_inertia` is false) inertia tensor
+/// `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`. Values that name struct fields are not known yet and pass.
+#[must_use]
+pub fn link(mass: &Value, inertia: &[Value; 6], check_inertia: bool) -> Vec<LinkProblem> {
+    let mass = mass_problem(mass);
+    let inertia = check_inertia.then(|| inertia_problem(inertia)).flatten();
+    mass.into_iter().chain(inertia).collect()
+}
+
+fn mass_problem(mass: &Value) -> Option<LinkProblem> {
+    let m = mass.exact()?;
+    let x = m.to_f64();
+    let message = if !x.is_finite() {
+        "the mass is not a finite number".into()
+    } else if m.is_negative() {
+        format!("the mass is negative ({}): a mass is 0 or more", short(x))
+    } else {
+        return None;
+    };
+    Some(LinkProblem {
+        parameter: LinkParameter::Mass,
+        message,
+    })
+}
+
+fn inertia_problem(inertia: &[Value; 6]) -> Option<LinkProblem> {
+    let i = inertia
+        .iter()
+        .map(|v| v.exact().map(crate::symbolic::Number::to_f64))
+        .collect::<Option<Vec<f64>>>()?;
+    let message = if i.iter().any(|x| !x.is_finite()) {
+        "the inertia tensor has an entry that is not a finite number".into()
+    } else {
+        principal_moments_problem(&i)?
+    };
+    Some(LinkProblem {
+        parameter: LinkParameter::Inertia,
+        message,
+    })
+}
+
+/// What is wrong with the principal moments of the finite tensor `i`, if anything.
+fn principal_moments_problem(i: &[f64]) -> Option<String> {
+    let tensor = [[i[0], i[3], i[4]], [i[3], i[1], i[5]], [i[4], i[5], i[2]]];
+    let [l1, l2, l3] = eigenvalues(tensor);
+    // Relative tolerance: the data are decimals rounded far above f64's rounding error.
+    let tol = 1e-9 * i.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let opt_out = "or add `check_inertia = false` to this link to keep the values as they are";
+    let (s1, s2, s3) = (short(l1), short(l2), short(l3));
+    if l1 < -tol {
+        Some(format!(
+            "the inertia tensor is not positive semi-definite (its principal moments are \
+             {s1}, {s2}, {s3}), so no rigid body has it: check the signs of Ixy, Ixz, Iyz (they \
+             are tensor entries, −∫xy dm), {opt_out}"
+        ))
+    } else if l1 + l2 < l3 - tol {
+        Some(format!(
+            "the principal moments of inertia {s1}, {s2}, {s3} break the triangle inequality \
+             ({s1} + {s2} < {s3}) that every rigid body obeys: check the values, {opt_out} \
+             (some published tables, such as PUMA 560's, have such links)"
+        ))
+    } else {
+        None
+    }
+}
+
+/// A number with four significant digits, for messages.
+fn short(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 17);
+    let text = format!("{x:.*}", usize::try_from(digits).unwrap_or(0));
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{link, short, LinkParameter};
+    use crate::front::parse_value;
+    use crate::model::Value;
+
+    fn values(text: [&str; 6]) -> [Value; 6] {
+        text.map(|t| parse_value(t).expect("value"))
+    }
+
+    #[test]
+    fn physical_links_pass() {
+        let zero = Value::zero();
+        // A thin rod (0, I, I) is the edge of the triangle inequality and passes.
+        let rod = values(["0", "0.08", "0.08", "0", "0", "0"]);
+        assert!(link(&parse_value("2").unwrap(), &rod, true).is_empty());
+        // Products of inertia that keep the tensor positive definite.
+        let tilted = values(["0.1", "0.12", "0.15", "0.01", "-0.005", "0.002"]);
+        assert!(link(&zero, &tilted, true).is_empty());
+        // Fields are unknown at compile time and pass.
+        let fields = values(["m * l^2", "0", "0", "0", "0", "0"]);
+        assert!(link(&parse_value("m").unwrap(), &fields, true).is_empty());
+    }
+
+    #[test]
+    fn unphysical_links_fail_unless_unchecked() {
+        let mass = parse_value("4.8").unwrap();
+        // PUMA 560 link 3: 0.0125 + 0.066 < 0.086.
+        let puma3 = values(["0.066", "0.086", "0.0125", "0", "0", "0"]);
+        let p = link(&mass, &puma3, true);
+        assert_eq!(p.len(), 1);
+        assert_eq!(p[0].parameter, LinkParameter::Inertia);
+        assert!(
+            p[0].message.contains("0.0125 + 0.066 < 0.086"),
+            "{}",
+            p[0].message
+        );
+        assert!(link(&mass, &puma3, false).is_empty());
+        // |Ixy| > √(Ixx Iyy): an eigenvalue of [[1, 2], [2, 1]] is −1.
+        let indefinite = values(["1", "1", "1", "2", "0", "0"]);
+        let p = link(&mass, &indefinite, true);
+        assert!(
+            p[0].message.contains("positive semi-definite"),
+            "{}",
+            p[0].message
+        );
+        assert!(p[0].message.contains("-1,"), "{}", p[0].message);
+        let p = link(&parse_value("-0.5").unwrap(), &Default::default(), true);
+        assert_eq!(p[0].parameter, LinkParameter::Mass);
+        assert!(p[0].message.contains("negative (-0.5)"), "{}", p[0].message);
+    }
+
+    #[test]
+    fn short_numbers() {
+        assert_eq!(short(0.0125), "0.0125");
+        assert_eq!(short(0.086_000_000_000_01), "0.086");
+        assert_eq!(short(-1.0), "-1");
+        assert_eq!(short(12345.6), "12346");
+        assert_eq!(short(4e-5), "0.00004");
+    }
+}

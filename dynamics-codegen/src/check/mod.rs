@@ -1,0 +1,119 @@
+//! The checks of a robot that need no derivation, shared by the derive and the command-line
+//! tool: the number of joints is within [`MAX_JOINTS`], and each link's mass and inertia tensor
+//! are ones a rigid body can have ([`link`]). Each problem says what it concerns; the caller
+//! places it on the tokens or the description-file value it comes from.
+
+mod eigenvalues;
+mod link;
+
+pub use eigenvalues::eigenvalues;
+pub use link::{link, LinkParameter, LinkProblem};
+
+use crate::model::Robot;
+
+/// The most joints a robot may have: the generated code grows about as n³, and sixteen joints
+/// keep a derive in the time of an ordinary build.
+pub const MAX_JOINTS: usize = 16;
+
+/// A problem with a whole robot.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Problem {
+    /// More than [`MAX_JOINTS`] joints.
+    TooManyJoints {
+        /// The number of joints.
+        count: usize,
+    },
+    /// A physical problem with link `joint` (0-based).
+    Link {
+        /// The link's (and its joint's) index, 0-based.
+        joint: usize,
+        /// What is wrong with it.
+        problem: LinkProblem,
+    },
+}
+
+impl std::fmt::Display for Problem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Problem::TooManyJoints { count } => write!(
+                f,
+                "{count} joints; at most {MAX_JOINTS} are supported (the generated code grows as n³)"
+            ),
+            Problem::Link { joint, problem } => write!(f, "joint {}: {}", joint + 1, problem.message),
+        }
+    }
+}
+
+/// The problems of `robot`: its number of joints first, then each link's, base to tip. Link i's
+/// inertia tensor is checked unless `check_inertia[i]` is false (a missing entry checks it).
+#[must_use]
+pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
+    let count = robot.dof();
+    let too_many = (count > MAX_JOINTS).then_some(Problem::TooManyJoints { count });
+    let links = robot.joints.iter().enumerate().flat_map(|(joint, j)| {
+        let checked = check_inertia.get(joint).copied().unwrap_or(true);
+        link(&j.mass, &j.inertia, checked)
+            .into_iter()
+            .map(move |problem| Problem::Link { joint, problem })
+    });
+    too_many.into_iter().chain(links).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{robot, LinkParameter, Problem, MAX_JOINTS};
+    use crate::model::{Convention, Joint, JointKind, Robot, Value};
+
+    fn joint(mass: f64) -> Joint {
+        Joint {
+            kind: JointKind::Revolute,
+            theta: Value::zero(),
+            d: Value::zero(),
+            a: Value::zero(),
+            alpha: Value::zero(),
+            mass: Value::from_f64(mass),
+            com: Default::default(),
+            inertia: [1.0, 1.0, 3.0, 0.0, 0.0, 0.0].map(Value::from_f64),
+            actuator_inertia: Value::zero(),
+            spring: None,
+        }
+    }
+
+    fn chain(masses: &[f64]) -> Robot {
+        Robot {
+            name: "chain".into(),
+            convention: Convention::Standard,
+            gravity: Default::default(),
+            joints: masses.iter().map(|m| joint(*m)).collect(),
+        }
+    }
+
+    #[test]
+    fn joint_count_first_then_links_base_to_tip() {
+        let mut masses = vec![1.0; MAX_JOINTS + 1];
+        masses[2] = -1.0;
+        let problems = robot(&chain(&masses), &[]);
+        // Every link breaks the triangle inequality 1 + 1 < 3; link 3's mass is negative too.
+        assert_eq!(problems.len(), 2 + masses.len());
+        assert_eq!(
+            problems[0],
+            Problem::TooManyJoints {
+                count: MAX_JOINTS + 1
+            }
+        );
+        assert!(problems[0].to_string().starts_with("17 joints; at most 16"));
+        let Problem::Link { joint, problem } = &problems[3] else {
+            panic!("{:?}", problems[3]);
+        };
+        assert_eq!((*joint, problem.parameter), (2, LinkParameter::Mass));
+        assert!(problems[3]
+            .to_string()
+            .starts_with("joint 3: the mass is negative"));
+    }
+
+    #[test]
+    fn unchecked_inertia_is_skipped() {
+        assert_eq!(robot(&chain(&[1.0, 1.0]), &[false, true]).len(), 1);
+        assert!(robot(&chain(&[1.0]), &[false]).is_empty());
+    }
+}

@@ -1,0 +1,214 @@
+//! The attribute parser: the keys of `#[dynamics(...)]` and of its `link(...)` entries read
+//! into [`Attrs`], still as tokens with their spans. An unknown or repeated key is an error
+//! and parsing goes on with the next key, so that one build reports every mistake.
+
+use super::attr_value::{boolean, parse_convention, parse_dh, parse_spring, string, values};
+use super::errors::{unknown_key, Errors};
+use super::symbol::{Key, LinkKey};
+use super::value::Spanned;
+use crate::model::Convention;
+use proc_macro2::Span;
+use syn::parse::ParseStream;
+use syn::{parenthesized, Ident, LitStr, Token};
+
+/// The keys of one `link(...)`.
+#[derive(Default)]
+pub(super) struct LinkAttr {
+    /// The `link` keyword.
+    pub span: Option<Span>,
+    pub mass: Option<Spanned>,
+    pub com: Option<[Spanned; 3]>,
+    /// The six values and the span of their brackets.
+    pub inertia: Option<([Spanned; 6], Span)>,
+    pub actuator_inertia: Option<Spanned>,
+    pub spring: Option<(Spanned, Spanned)>,
+    pub check_inertia: Option<bool>,
+    /// Whether an unknown key was given (perhaps a misspelt `mass`).
+    pub unknown_key: bool,
+}
+
+/// A D-H row `[θ, d, a, α]` with the span of its first token.
+pub(super) type DhRowAttr = (Span, [Spanned; 4]);
+
+/// The keys of every `#[dynamics(...)]` of the input.
+#[derive(Default)]
+pub(super) struct Attrs {
+    pub file: Option<LitStr>,
+    pub krate: Option<syn::Path>,
+    pub convention: Option<(Convention, Span)>,
+    pub gravity: Option<[Spanned; 3]>,
+    /// The rows and the span of the table's brackets.
+    pub dh: Option<(Vec<DhRowAttr>, Span)>,
+    pub links: Vec<LinkAttr>,
+    pub name: Option<LitStr>,
+    /// `check_inertia = false` for every link (or every joint of the file).
+    pub check_inertia: Option<bool>,
+}
+
+/// What the keys of `#[dynamics(...)]` are called in messages.
+const ATTRIBUTE: &str = "dynamics attribute";
+/// What the keys of `link(...)` are called in messages.
+const LINK_ATTRIBUTE: &str = "link attribute";
+
+/// One `key = value` entry of an attribute list, where a repeated key is reported.
+struct Entry<'a> {
+    /// The key as written.
+    ident: &'a Ident,
+    /// What the keys of the list are called in messages.
+    what: &'static str,
+    errors: &'a mut Errors,
+}
+
+impl Entry<'_> {
+    /// Stores the first value given for the key; a repeated key is an error on its second
+    /// occurrence, and parsing goes on.
+    fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
+        if slot.is_some() {
+            let (key, what) = (self.ident, self.what);
+            self.errors.push(
+                key.span(),
+                format!("duplicate {what} `{key}`: it is given earlier in this list"),
+            );
+        } else {
+            *slot = Some(value);
+        }
+    }
+}
+
+/// Skips what follows an unknown key, up to the next `,` at this level, so that the keys
+/// after it are still checked.
+fn skip_entry(input: ParseStream) -> syn::Result<()> {
+    while !input.is_empty() && !input.peek(Token![,]) {
+        input.parse::<proc_macro2::TokenTree>()?;
+    }
+    Ok(())
+}
+
+/// Parses the keys of one `#[dynamics(...)]` into `attrs`.
+pub(super) fn parse_attrs(
+    input: ParseStream,
+    attrs: &mut Attrs,
+    errors: &mut Errors,
+) -> syn::Result<()> {
+    while !input.is_empty() {
+        let ident: Ident = if input.peek(Token![crate]) {
+            let k: Token![crate] = input.parse()?;
+            Ident::new("crate", k.span)
+        } else {
+            input.parse()?
+        };
+        if let Some(key) = Key::find(&ident) {
+            parse_attr(input, key, &ident, attrs, errors)?;
+        } else {
+            errors.push(ident.span(), unknown_key(&ident, ATTRIBUTE, Key::NAMES));
+            skip_entry(input)?;
+        }
+        if !input.is_empty() {
+            input.parse::<Token![,]>()?;
+        }
+    }
+    Ok(())
+}
+
+/// Parses what follows `key` (written as `ident`) into its slot of `attrs`.
+fn parse_attr(
+    input: ParseStream,
+    key: Key,
+    ident: &Ident,
+    attrs: &mut Attrs,
+    errors: &mut Errors,
+) -> syn::Result<()> {
+    if key == Key::Link {
+        if !input.peek(syn::token::Paren) {
+            return Err(input
+                .error("expected `link(mass = .., com = [..], inertia = [..])`, one per joint"));
+        }
+        let content;
+        parenthesized!(content in input);
+        attrs
+            .links
+            .push(parse_link(&content, ident.span(), errors)?);
+        return Ok(());
+    }
+    input.parse::<Token![=]>()?;
+    let mut entry = Entry {
+        ident,
+        what: ATTRIBUTE,
+        errors,
+    };
+    match key {
+        Key::File => entry.keep_first(
+            &mut attrs.file,
+            string(input, "`file = \"robots/arm.toml\"`")?,
+        ),
+        Key::Name => entry.keep_first(&mut attrs.name, string(input, "`name = \"arm\"`")?),
+        Key::Crate => {
+            let path = string(input, "`crate = \"path::to::dynamics_runtime\"`")?.parse()?;
+            entry.keep_first(&mut attrs.krate, path);
+        }
+        Key::Convention => entry.keep_first(&mut attrs.convention, parse_convention(input)?),
+        Key::Gravity => {
+            let (gravity, _) = values::<3>(input, "`gravity = [gx, gy, gz]`")?;
+            entry.keep_first(&mut attrs.gravity, gravity);
+        }
+        Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input)?),
+        Key::Dh => entry.keep_first(&mut attrs.dh, parse_dh(input)?),
+        // Read above: a `link(...)` has no `=`.
+        Key::Link => {}
+    }
+    Ok(())
+}
+
+/// Parses the keys of one `link(...)`, whose keyword is at `span`.
+fn parse_link(input: ParseStream, span: Span, errors: &mut Errors) -> syn::Result<LinkAttr> {
+    let mut link = LinkAttr {
+        span: Some(span),
+        ..LinkAttr::default()
+    };
+    while !input.is_empty() {
+        let ident: Ident = input.parse()?;
+        if let Some(key) = LinkKey::find(&ident) {
+            input.parse::<Token![=]>()?;
+            parse_link_attr(input, key, &ident, &mut link, errors)?;
+        } else {
+            let message = unknown_key(&ident, LINK_ATTRIBUTE, LinkKey::NAMES);
+            errors.push(ident.span(), message);
+            link.unknown_key = true;
+            skip_entry(input)?;
+        }
+        if !input.is_empty() {
+            input.parse::<Token![,]>()?;
+        }
+    }
+    Ok(link)
+}
+
+/// Parses the value after `key =` (written as `ident`) into its slot of `link`.
+fn parse_link_attr(
+    input: ParseStream,
+    key: LinkKey,
+    ident: &Ident,
+    link: &mut LinkAttr,
+    errors: &mut Errors,
+) -> syn::Result<()> {
+    let mut entry = Entry {
+        ident,
+        what: LINK_ATTRIBUTE,
+        errors,
+    };
+    match key {
+        LinkKey::Mass => entry.keep_first(&mut link.mass, input.parse()?),
+        LinkKey::Com => {
+            let (com, _) = values::<3>(input, "`com = [x, y, z]`")?;
+            entry.keep_first(&mut link.com, com);
+        }
+        LinkKey::Inertia => {
+            let inertia = values::<6>(input, "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`")?;
+            entry.keep_first(&mut link.inertia, inertia);
+        }
+        LinkKey::ActuatorInertia => entry.keep_first(&mut link.actuator_inertia, input.parse()?),
+        LinkKey::Spring => entry.keep_first(&mut link.spring, parse_spring(input)?),
+        LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input)?),
+    }
+    Ok(())
+}

@@ -1,0 +1,111 @@
+//! Readers of the value after an attribute key: `N` values in brackets, the D-H table, a
+//! spring, a convention, a boolean, a string. Each reports a malformed value as a syntax
+//! error that says what was expected.
+
+use super::attr::DhRowAttr;
+use super::value::Spanned;
+use crate::model::Convention;
+use proc_macro2::Span;
+use syn::parse::ParseStream;
+use syn::punctuated::Punctuated;
+use syn::{bracketed, parenthesized, Ident, LitStr, Token};
+
+/// `N` values in brackets, and the span of the brackets.
+pub(super) fn values<const N: usize>(
+    input: ParseStream,
+    what: &str,
+) -> syn::Result<([Spanned; N], Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(format!("expected {N} values in brackets: {what}")));
+    }
+    let content;
+    let bracket = bracketed!(content in input);
+    let items: Punctuated<Spanned, Token![,]> = Punctuated::parse_terminated(&content)?;
+    let count = items.len();
+    let span = bracket.span.join();
+    let items: [Spanned; N] = items
+        .into_iter()
+        .collect::<Vec<_>>()
+        .try_into()
+        .map_err(|_| syn::Error::new(span, format!("{what} takes {N} values, found {count}")))?;
+    Ok((items, span))
+}
+
+pub(super) fn parse_spring(input: ParseStream) -> syn::Result<(Spanned, Spanned)> {
+    let usage = "expected `spring = (stiffness, rest_position)`";
+    if !input.peek(syn::token::Paren) {
+        return Err(input.error(usage));
+    }
+    let content;
+    parenthesized!(content in input);
+    let k: Spanned = content.parse()?;
+    if !content.peek(Token![,]) {
+        return Err(content.error(usage));
+    }
+    content.parse::<Token![,]>()?;
+    let rest: Spanned = content.parse()?;
+    content.parse::<Option<Token![,]>>()?;
+    if !content.is_empty() {
+        return Err(content.error(usage));
+    }
+    Ok((k, rest))
+}
+
+pub(super) fn parse_convention(input: ParseStream) -> syn::Result<(Convention, Span)> {
+    let (text, span) = if input.peek(LitStr) {
+        let s: LitStr = input.parse()?;
+        (s.value(), s.span())
+    } else if input.peek(Ident) {
+        let i: Ident = input.parse()?;
+        (i.to_string(), i.span())
+    } else {
+        return Err(input.error("expected `standard` or `modified`"));
+    };
+    match text.as_str() {
+        "standard" => Ok((Convention::Standard, span)),
+        "modified" => Ok((Convention::Modified, span)),
+        _ => Err(syn::Error::new(
+            span,
+            format!("unknown convention `{text}`: expected `standard` or `modified`"),
+        )),
+    }
+}
+
+pub(super) fn parse_dh(input: ParseStream) -> syn::Result<(Vec<DhRowAttr>, Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(
+            "expected the D-H table in brackets, one row per joint: `dh = [[θ, d, a, α], ...]`",
+        ));
+    }
+    let content;
+    let bracket = bracketed!(content in input);
+    let mut rows = Vec::new();
+    while !content.is_empty() {
+        let span = content.span();
+        let (row, _) = values::<4>(&content, "a D-H row `[θ, d, a, α]`")?;
+        rows.push((span, row));
+        if !content.is_empty() {
+            content.parse::<Token![,]>()?;
+        }
+    }
+    Ok((rows, bracket.span.join()))
+}
+
+pub(super) fn boolean(input: ParseStream) -> syn::Result<bool> {
+    if input.peek(syn::LitBool) {
+        Ok(input.parse::<syn::LitBool>()?.value)
+    } else {
+        Err(input.error(
+            "expected `true` or `false`: `check_inertia = false` keeps an inertia tensor that \
+             fails the physical checks",
+        ))
+    }
+}
+
+pub(super) fn string(input: ParseStream, usage: &str) -> syn::Result<LitStr> {
+    if input.peek(LitStr) {
+        input.parse()
+    } else {
+        Err(input.error(format!("expected a string: {usage}")))
+    }
+}

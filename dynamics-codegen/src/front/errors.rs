@@ -1,0 +1,70 @@
+//! The error collector: every error of the derive input, each on the span of the token that
+//! caused it, reported together; and the message for an unknown key, with a suggestion for a
+//! near miss (at most two single-character edits, the Levenshtein distance).
+
+use proc_macro2::Span;
+use syn::Ident;
+
+/// Collects errors; they are all reported together.
+#[derive(Default)]
+pub struct Errors(Vec<syn::Error>);
+
+impl Errors {
+    /// Adds an error on `span`.
+    pub(super) fn push(&mut self, span: Span, message: impl std::fmt::Display) {
+        self.0.push(syn::Error::new(span, message));
+    }
+
+    /// Adds an error that already has its span (a syntax error).
+    pub(super) fn push_error(&mut self, error: syn::Error) {
+        self.0.push(error);
+    }
+
+    /// All errors as one `syn::Error`, or `None`.
+    #[must_use]
+    pub fn combine(self) -> Option<syn::Error> {
+        self.0.into_iter().reduce(|mut a, b| {
+            a.combine(b);
+            a
+        })
+    }
+}
+
+/// The number of single-character edits between two short words.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let next = (diagonal + usize::from(ca != *cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diagonal = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+/// "unknown {what} `key`: expected ..." with a suggestion for a near miss.
+pub(super) fn unknown_key(key: &Ident, what: &str, known: &[&str]) -> String {
+    let key = key.to_string();
+    let list = known
+        .iter()
+        .map(|k| format!("`{k}`"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let near = known
+        .iter()
+        .map(|k| (edit_distance(&key, k), *k))
+        .filter(|(d, k)| *d <= 2 && *d < k.len())
+        .min();
+    match near {
+        Some((_, k)) => {
+            format!("unknown {what} `{key}`: did you mean `{k}`? (expected one of {list})")
+        }
+        None => format!("unknown {what} `{key}`: expected one of {list}"),
+    }
+}

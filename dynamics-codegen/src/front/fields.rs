@@ -1,0 +1,52 @@
+//! The struct's fields, which a robot's values may name: each named field must exist and be
+//! of type `f32` or `f64`.
+
+use super::errors::Errors;
+use super::value::Spanned;
+
+/// A struct field the values may name.
+pub struct Field {
+    /// Its name.
+    pub name: String,
+    /// Whether its type is `f32` or `f64`.
+    pub is_float: bool,
+}
+
+/// The named fields of a struct.
+#[must_use]
+pub fn struct_fields(input: &syn::DeriveInput) -> Vec<Field> {
+    let syn::Data::Struct(data) = &input.data else {
+        return Vec::new();
+    };
+    data.fields
+        .iter()
+        .filter_map(|f| {
+            let name = f.ident.as_ref()?.to_string();
+            let is_float = matches!(&f.ty, syn::Type::Path(p)
+                if p.qself.is_none() && (p.path.is_ident("f64") || p.path.is_ident("f32")));
+            Some(Field { name, is_float })
+        })
+        .collect()
+}
+
+/// What is wrong with naming field `name` in a value, if anything: the struct lacks it, or it
+/// is not a float.
+pub(super) fn field_error(name: &str, fields: &[Field]) -> Option<String> {
+    match fields.iter().find(|f| f.name == name) {
+        None => Some(format!(
+            "`{name}` is not a field of this struct (values may name `f32` or `f64` fields)"
+        )),
+        Some(f) if !f.is_float => Some(format!("field `{name}` must be of type `f64` or `f32`")),
+        Some(_) => None,
+    }
+}
+
+/// Errors, each on where it is written, for the fields `spanned` names that the struct lacks
+/// or that are not floats.
+pub(super) fn check_names(spanned: &Spanned, fields: &[Field], errors: &mut Errors) {
+    for (name, span) in &spanned.fields {
+        if let Some(message) = field_error(name, fields) {
+            errors.push(*span, message);
+        }
+    }
+}

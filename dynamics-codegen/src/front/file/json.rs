@@ -1,0 +1,152 @@
+//! Description files in JSON, the format of the reference data.
+
+use super::positions::{positions_at, Positions};
+use super::{schema, FileError, Loaded};
+
+/// Reads a robot from JSON text.
+pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> {
+    let file: schema::FileRobot = serde_json::from_str(text).map_err(|e| FileError {
+        message: e
+            .to_string()
+            .split(" at line")
+            .next()
+            .unwrap_or_default()
+            .to_string(),
+        line: Some(e.line()),
+        column: Some(e.column()),
+    })?;
+    let mut loaded = schema::convert(file, default_name)?;
+    loaded.positions = positions(text);
+    Ok(loaded)
+}
+
+/// Where each joint's values are in JSON text: a scan of the text that the parser has already
+/// accepted (serde_json keeps no positions of values).
+fn positions(text: &str) -> Positions {
+    let mut scan = JsonScan {
+        bytes: text.as_bytes(),
+        at: 0,
+    };
+    let mut joints = Vec::new();
+    scan.object(&mut |scan, key| {
+        if key == "joints" && scan.peek() == Some(b'[') {
+            scan.at += 1;
+            loop {
+                scan.space();
+                match scan.peek() {
+                    Some(b'{') => {
+                        let mut keys = Vec::new();
+                        scan.object(&mut |scan, key| {
+                            keys.push((key.to_string(), scan.at));
+                            scan.value();
+                        });
+                        joints.push(keys);
+                    }
+                    Some(b',') => scan.at += 1,
+                    Some(b']') | None => break,
+                    Some(_) => scan.value(),
+                }
+            }
+            scan.at += 1;
+        } else {
+            scan.value();
+        }
+    });
+    positions_at(text, joints)
+}
+
+/// A cursor over valid JSON.
+struct JsonScan<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl JsonScan<'_> {
+    fn peek(&self) -> Option<u8> {
+        self.bytes.get(self.at).copied()
+    }
+
+    fn space(&mut self) {
+        while self.peek().is_some_and(|b| b.is_ascii_whitespace()) {
+            self.at += 1;
+        }
+    }
+
+    /// A string's raw content; the cursor is on its opening quote.
+    fn string(&mut self) -> &str {
+        self.at += 1;
+        let start = self.at;
+        while let Some(b) = self.peek() {
+            match b {
+                b'\\' => self.at += 2,
+                b'"' => break,
+                _ => self.at += 1,
+            }
+        }
+        let end = self.at.min(self.bytes.len());
+        self.at += 1;
+        std::str::from_utf8(self.bytes.get(start..end).unwrap_or_default()).unwrap_or_default()
+    }
+
+    /// Skips one value (and the space before it).
+    fn value(&mut self) {
+        self.space();
+        match self.peek() {
+            Some(b'"') => {
+                self.string();
+            }
+            Some(b'{' | b'[') => {
+                let mut depth = 0usize;
+                while let Some(b) = self.peek() {
+                    match b {
+                        b'"' => {
+                            self.string();
+                            continue;
+                        }
+                        b'{' | b'[' => depth += 1,
+                        b'}' | b']' => depth = depth.saturating_sub(1),
+                        _ => {}
+                    }
+                    self.at += 1;
+                    if depth == 0 {
+                        break;
+                    }
+                }
+            }
+            _ => {
+                while self
+                    .peek()
+                    .is_some_and(|b| !matches!(b, b',' | b'}' | b']') && !b.is_ascii_whitespace())
+                {
+                    self.at += 1;
+                }
+            }
+        }
+    }
+
+    /// Walks an object, calling `each` with the cursor on each key's value.
+    fn object(&mut self, each: &mut dyn FnMut(&mut Self, &str)) {
+        self.space();
+        if self.peek() != Some(b'{') {
+            return;
+        }
+        self.at += 1;
+        loop {
+            self.space();
+            match self.peek() {
+                Some(b'"') => {
+                    let key = self.string().to_string();
+                    self.space();
+                    if self.peek() == Some(b':') {
+                        self.at += 1;
+                    }
+                    self.space();
+                    each(self, &key);
+                }
+                Some(b',') => self.at += 1,
+                _ => break,
+            }
+        }
+        self.at += 1;
+    }
+}

@@ -1,0 +1,194 @@
+//! Robot description files: the JSON format of the reference data, unchanged, and the same
+//! content as TOML. Numbers may also be written as strings holding a value (`"90 deg"`,
+//! `"m2 * l2^2 / 12"`), read by the attribute's value grammar, which TOML makes pleasant to
+//! write by hand. Errors carry the file's line and column.
+
+mod json;
+mod positions;
+mod schema;
+mod toml;
+
+use crate::check::{LinkParameter, Problem, MAX_JOINTS};
+use crate::model::Robot;
+pub use positions::Positions;
+
+/// A robot read from a description file, with what the file says about checking it.
+pub struct Loaded {
+    /// The robot.
+    pub robot: Robot,
+    /// Per joint, whether its inertia tensor is checked (`"check_inertia": false` opts out).
+    pub check_inertia: Vec<bool>,
+    /// Per joint, where the value of each key is written (1-based line and column), so that
+    /// checks after loading can point into the file.
+    pub positions: Positions,
+}
+
+impl Loaded {
+    /// `path:line:col: ` where the file gives joint `joint`'s `key`, or `path: ` when it does
+    /// not say: the prefix of a message about that value.
+    #[must_use]
+    pub fn at(&self, path: &str, joint: usize, key: &str) -> String {
+        self.positions
+            .get(joint)
+            .and_then(|p| p.get(key))
+            .map_or_else(
+                || format!("{path}: "),
+                |(line, column)| format!("{path}:{line}:{column}: "),
+            )
+    }
+
+    /// A check's problem as a message that points at the value it concerns in the file
+    /// `path` (`path:line:col: joint 2: the mass is negative (-1): ...`).
+    #[must_use]
+    pub fn describe(&self, path: &str, problem: &Problem) -> String {
+        let (joint, key) = match problem {
+            // The first joint past the limit, by the key that opens its entry.
+            Problem::TooManyJoints { .. } => (MAX_JOINTS, "type"),
+            Problem::Link { joint, problem } => (
+                *joint,
+                match problem.parameter {
+                    LinkParameter::Mass => "mass",
+                    LinkParameter::Inertia => "inertia",
+                },
+            ),
+        };
+        format!("{}{problem}", self.at(path, joint, key))
+    }
+}
+
+/// An error in a description file, with the 1-based line and column where known.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FileError {
+    /// What is wrong.
+    pub message: String,
+    /// Line, 1-based.
+    pub line: Option<usize>,
+    /// Column, 1-based.
+    pub column: Option<usize>,
+}
+
+impl std::fmt::Display for FileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match (self.line, self.column) {
+            (Some(l), Some(c)) => write!(f, "{l}:{c}: {}", self.message),
+            _ => write!(f, "{}", self.message),
+        }
+    }
+}
+
+fn plain(message: String) -> FileError {
+    FileError {
+        message,
+        line: None,
+        column: None,
+    }
+}
+
+/// Reads a robot from JSON text.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn from_json(text: &str, default_name: &str) -> Result<Robot, FileError> {
+    json::read(text, default_name).map(|l| l.robot)
+}
+
+/// Reads a robot from TOML text.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn from_toml(text: &str, default_name: &str) -> Result<Robot, FileError> {
+    self::toml::read(text, default_name).map(|l| l.robot)
+}
+
+/// Reads a robot from a file's text, as JSON or TOML by the file's extension.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn from_text(path: &str, text: &str) -> Result<Robot, FileError> {
+    load(path, text).map(|l| l.robot)
+}
+
+/// Reads a robot and its per-joint check flags from a file's text, as JSON or TOML by the
+/// file's extension.
+///
+/// # Errors
+/// The first problem found, with its line and column.
+pub fn load(path: &str, text: &str) -> Result<Loaded, FileError> {
+    let stem = std::path::Path::new(path)
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or("robot");
+    if path.ends_with(".toml") {
+        self::toml::read(text, stem)
+    } else if path.ends_with(".json") {
+        json::read(text, stem)
+    } else {
+        Err(plain(
+            "cannot tell the format from the file's extension: name it *.json or *.toml"
+                .to_string(),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{from_json, from_toml, load};
+    use crate::model::{Convention, JointKind};
+
+    #[test]
+    fn json_and_toml_agree() {
+        let json = r#"{"name": "arm", "convention": "standard", "gravity": [0, -9.81, 0],
+          "joints": [{"type": "revolute", "theta": 0.0, "d": 0.0, "a": 0.7, "alpha": 1.5707963267948966,
+                      "mass": 2.0, "com": [-0.35, 0, 0], "inertia": [0, 0.1, 0.1, 0, 0, 0]}]}"#;
+        let toml = r#"
+            name = "arm"
+            gravity = [0, -9.81, 0]
+            [[joints]]
+            type = "revolute"
+            a = 0.7
+            alpha = "90 deg"
+            mass = 2
+            com = [-0.35, 0, 0]
+            inertia = [0, 0.1, 0.1, 0, 0, 0]
+        "#;
+        let a = from_json(json, "x").unwrap();
+        let b = from_toml(toml, "x").unwrap();
+        assert_eq!(a.convention, Convention::Standard);
+        assert_eq!(a.joints[0].kind, JointKind::Revolute);
+        assert_eq!(
+            a.joints[0].alpha.pi_multiple(),
+            b.joints[0].alpha.pi_multiple()
+        );
+        assert_eq!(a.joints[0].mass, b.joints[0].mass);
+        assert_eq!(a.joints[0].com, b.joints[0].com);
+    }
+
+    #[test]
+    fn errors_have_positions() {
+        let e = from_json(
+            "{\n \"gravity\": [0, 0, -9.81],\n \"joints\": [{\"type\": \"revolut\"}]}",
+            "x",
+        )
+        .unwrap_err();
+        assert!(e.message.contains("revolut"), "{e}");
+        let e = from_json("{\n \"gravity\": [0, 0, -9.81],\n \"jionts\": []}", "x").unwrap_err();
+        assert_eq!(e.line, Some(3));
+        assert!(e.message.contains("jionts"));
+        let e = from_toml("gravity = [0, 0]\njoints = []", "x").unwrap_err();
+        assert_eq!(e.line, Some(1));
+    }
+
+    #[test]
+    fn values_have_positions_for_later_checks() {
+        let json = "{\"gravity\": [0, 0, -9.81], \"name\": \"a{[\\\"\",\n \"joints\": [\n  {\"type\": \"revolute\", \"mass\": 1},\n  {\"type\": \"revolute\",\n   \"mass\": 2, \"inertia\": [1, 2, 3, 0, 0, 0]}]}";
+        let loaded = load("a.json", json).expect("json");
+        assert_eq!(loaded.positions.len(), 2);
+        assert_eq!(loaded.positions[0]["mass"], (3, 32));
+        assert_eq!(loaded.positions[1]["mass"], (5, 12));
+        assert_eq!(loaded.positions[1]["inertia"], (5, 26));
+        let toml = "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\n[[joints]]\ntype = \"prismatic\"\nmass = 2\ninertia = [1, 2, 3, 0, 0, 0]\n";
+        let loaded = load("a.toml", toml).expect("toml");
+        assert_eq!(loaded.positions[0]["mass"], (4, 8));
+        assert_eq!(loaded.positions[1]["inertia"], (9, 11));
+    }
+}

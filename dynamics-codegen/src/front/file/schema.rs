@@ -1,0 +1,173 @@
+//! The schema of a description file, as serde reads it, and its conversion to a
+//! [`Robot`]. Absent D-H entries, offsets and spring values are zero.
+
+use super::{FileError, Loaded};
+use crate::front::value::parse_value;
+use crate::model::{Convention, Joint, JointKind, Robot, Spring, Value};
+use serde::Deserialize;
+
+/// A value in a description file: a number, or a string holding a value (`"90 deg"`). It is
+/// read and checked while the file is parsed, so that its errors carry a line and column.
+struct FileValue(Value);
+
+impl<'de> Deserialize<'de> for FileValue {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(ValueVisitor)
+    }
+}
+
+struct ValueVisitor;
+
+impl serde::de::Visitor<'_> for ValueVisitor {
+    type Value = FileValue;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a number, or a string holding a value such as \"90 deg\" or \"m * l^2 / 12\"")
+    }
+
+    fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<FileValue, E> {
+        if x.is_finite() {
+            Ok(FileValue(Value::from_f64(x)))
+        } else {
+            Err(E::custom(format!("{x} is not a finite number")))
+        }
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileValue, E> {
+        Ok(FileValue(Value::Num(crate::symbolic::Number::int(x))))
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileValue, E> {
+        match i64::try_from(x) {
+            Ok(x) => self.visit_i64(x),
+            #[allow(clippy::cast_precision_loss)]
+            Err(_) => self.visit_f64(x as f64),
+        }
+    }
+
+    fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<FileValue, E> {
+        let v = parse_value(text).map_err(E::custom)?;
+        if v.joint_occurrences() > 0 {
+            return Err(E::custom(
+                "the joint variable `q` has no place in a description file; `theta` (revolute) \
+                 or `d` (prismatic) is the offset added to it",
+            ));
+        }
+        if v.exact().is_some_and(|n| !n.to_f64().is_finite()) {
+            return Err(E::custom(format!("`{text}` is not a finite number")));
+        }
+        Ok(FileValue(v))
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum FileConvention {
+    Standard,
+    Modified,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "lowercase")]
+enum FileKind {
+    Revolute,
+    Prismatic,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileRobot {
+    #[serde(default)]
+    name: Option<String>,
+    #[serde(default)]
+    #[allow(dead_code)]
+    description: Option<String>,
+    #[serde(default)]
+    convention: Option<FileConvention>,
+    gravity: [FileValue; 3],
+    joints: Vec<FileJoint>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileJoint {
+    #[serde(rename = "type")]
+    kind: FileKind,
+    #[serde(default)]
+    theta: Option<FileValue>,
+    #[serde(default)]
+    d: Option<FileValue>,
+    #[serde(default)]
+    a: Option<FileValue>,
+    #[serde(default)]
+    alpha: Option<FileValue>,
+    mass: FileValue,
+    #[serde(default)]
+    com: Option<[FileValue; 3]>,
+    #[serde(default)]
+    inertia: Option<[FileValue; 6]>,
+    #[serde(default)]
+    actuator_inertia: Option<FileValue>,
+    #[serde(default)]
+    spring_stiffness: Option<FileValue>,
+    #[serde(default)]
+    spring_rest: Option<FileValue>,
+    /// `false` keeps an inertia tensor that fails the physical checks.
+    #[serde(default)]
+    check_inertia: Option<bool>,
+}
+
+fn value(v: Option<&FileValue>) -> Value {
+    v.map_or_else(Value::zero, |v| v.0.clone())
+}
+
+/// The robot the file describes, with its per-joint check flags (positions are filled in by
+/// the format's reader).
+pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, FileError> {
+    let convention = match file.convention {
+        None | Some(FileConvention::Standard) => Convention::Standard,
+        Some(FileConvention::Modified) => Convention::Modified,
+    };
+    if file.joints.is_empty() {
+        return Err(super::plain(
+            "`joints` is empty: give one entry per joint, base to tip".to_string(),
+        ));
+    }
+    let gravity = file.gravity.map(|g| g.0);
+    let mut joints = Vec::with_capacity(file.joints.len());
+    let mut check_inertia = Vec::with_capacity(file.joints.len());
+    for j in file.joints {
+        let kind = match j.kind {
+            FileKind::Revolute => JointKind::Revolute,
+            FileKind::Prismatic => JointKind::Prismatic,
+        };
+        let stiffness = value(j.spring_stiffness.as_ref());
+        let spring = (!stiffness.is_zero()).then(|| Spring {
+            stiffness,
+            rest: value(j.spring_rest.as_ref()),
+        });
+        check_inertia.push(j.check_inertia.unwrap_or(true));
+        joints.push(Joint {
+            kind,
+            theta: value(j.theta.as_ref()),
+            d: value(j.d.as_ref()),
+            a: value(j.a.as_ref()),
+            alpha: value(j.alpha.as_ref()),
+            mass: j.mass.0,
+            com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
+            inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
+            actuator_inertia: value(j.actuator_inertia.as_ref()),
+            spring,
+        });
+    }
+    Ok(Loaded {
+        robot: Robot {
+            name: file.name.unwrap_or_else(|| default_name.to_string()),
+            convention,
+            gravity,
+            joints,
+        },
+        check_inertia,
+        positions: Vec::new(),
+    })
+}

@@ -1,0 +1,55 @@
+//! Description files in TOML: the JSON format's content, pleasant to write by hand.
+
+use super::positions::{line_column, positions_at, Positions};
+use super::{schema, FileError, Loaded};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// Reads a robot from TOML text.
+pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> {
+    let file: schema::FileRobot = toml::from_str(text).map_err(|e| {
+        let (line, column) = e
+            .span()
+            .map_or((None, None), |s| line_column(text, s.start));
+        let mut message = e.message().trim_end().to_string();
+        // toml does not say which key is repeated; it is the one its span starts at.
+        if let (true, Some(s)) = (message == "duplicate key", e.span()) {
+            let key = text.get(s.start..).unwrap_or_default();
+            let key = key
+                .split(['=', '\n', ']'])
+                .next()
+                .unwrap_or_default()
+                .trim();
+            if !key.is_empty() {
+                message = format!("duplicate key `{key}`");
+            }
+        }
+        FileError {
+            message,
+            line,
+            column,
+        }
+    })?;
+    let mut loaded = schema::convert(file, default_name)?;
+    loaded.positions = positions(text);
+    Ok(loaded)
+}
+
+/// Where each joint's values are in TOML text (read a second time, with spans).
+fn positions(text: &str) -> Positions {
+    #[derive(Deserialize)]
+    struct Joints {
+        #[serde(default)]
+        joints: Vec<BTreeMap<String, toml::Spanned<serde::de::IgnoredAny>>>,
+    }
+    let Ok(file) = toml::from_str::<Joints>(text) else {
+        return Vec::new();
+    };
+    let offsets = file.joints.into_iter().map(|joint| {
+        joint
+            .into_iter()
+            .map(|(key, value)| (key, value.span().start))
+            .collect()
+    });
+    positions_at(text, offsets)
+}

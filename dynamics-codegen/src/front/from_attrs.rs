@@ -1,0 +1,301 @@
+//! The robot built from the attributes: gravity, one joint per D-H row and its `link(...)`,
+//! every value checked where it is written. In row i, `q` (or `qi`) in the θ cell makes
+//! joint i revolute with `θ = q + offset`, in the d cell prismatic with `d = q + offset`.
+
+use super::attr::{Attrs, DhRowAttr, LinkAttr};
+use super::errors::Errors;
+use super::fields::{check_names, Field};
+use super::value::Spanned;
+use crate::check;
+use crate::model::{Convention, Joint, JointKind, Robot, Spring, Value};
+use proc_macro2::Span;
+
+/// The robot the attributes describe; its errors go to `errors`.
+pub(super) fn robot_from_attrs(
+    attrs: &Attrs,
+    input: &syn::DeriveInput,
+    fields: &[Field],
+    errors: &mut Errors,
+) -> Robot {
+    let span = input.ident.span();
+    let mut reader = Reader { fields, errors };
+    let gravity = match &attrs.gravity {
+        Some(g) => reader.values(g),
+        None => {
+            reader.errors.push(span, "missing `gravity = [gx, gy, gz]`: the gravity acceleration in the base frame, e.g. `[0, 0, -9.81]`");
+            Default::default()
+        }
+    };
+    let joints = match &attrs.dh {
+        None => {
+            reader.errors.push(
+                span,
+                "missing `dh = [[θ, d, a, α], ...]`: the D-H table, one row per joint",
+            );
+            Vec::new()
+        }
+        Some((rows, table_span)) => {
+            check_table_size(rows, *table_span, &attrs.links, reader.errors);
+            rows.iter()
+                .enumerate()
+                .map(|(i, row)| reader.joint(i + 1, row, attrs, span))
+                .collect()
+        }
+    };
+    Robot {
+        name: input.ident.to_string(),
+        convention: attrs.convention.map_or(Convention::Standard, |c| c.0),
+        gravity,
+        joints,
+    }
+}
+
+/// Errors for an empty table, one with too many rows, and a number of `link(...)` entries
+/// that is not the number of rows.
+fn check_table_size(rows: &[DhRowAttr], table_span: Span, links: &[LinkAttr], errors: &mut Errors) {
+    if rows.is_empty() {
+        errors.push(
+            table_span,
+            "the D-H table is empty: give one row `[θ, d, a, α]` per joint",
+        );
+    }
+    if let Some((row_span, _)) = rows.get(check::MAX_JOINTS) {
+        errors.push(
+            *row_span,
+            format!(
+                "the D-H table has {} rows; at most {} joints are supported (the generated code \
+                 grows as n³)",
+                rows.len(),
+                check::MAX_JOINTS
+            ),
+        );
+    }
+    if !rows.is_empty() && rows.len() != links.len() {
+        let at = links
+            .get(rows.len())
+            .and_then(|l| l.span)
+            .unwrap_or(table_span);
+        errors.push(
+            at,
+            format!(
+                "the D-H table has {} rows but {} `link(...)` entries are given: give one per joint",
+                rows.len(),
+                links.len()
+            ),
+        );
+    }
+}
+
+/// The values of a `link(...)`, zero where it does not give them.
+struct LinkValues {
+    mass: Value,
+    com: [Value; 3],
+    inertia: [Value; 6],
+    actuator_inertia: Value,
+    spring: Option<Spring>,
+}
+
+/// Turns attribute values into model values, reporting the errors of each.
+struct Reader<'a> {
+    fields: &'a [Field],
+    errors: &'a mut Errors,
+}
+
+impl Reader<'_> {
+    /// A constant value (not a D-H cell that holds `q`), or zero where none is given.
+    fn value(&mut self, s: Option<&Spanned>) -> Value {
+        let Some(s) = s else {
+            return Value::zero();
+        };
+        check_names(s, self.fields, self.errors);
+        check_arithmetic(s, self.errors);
+        if s.value.joint_occurrences() > 0 {
+            self.errors.push(
+                s.span,
+                "the joint variable `q` may appear only in the θ or d column of the D-H table",
+            );
+        }
+        s.value.clone()
+    }
+
+    /// Constant values, in order.
+    fn values<const N: usize>(&mut self, s: &[Spanned; N]) -> [Value; N] {
+        s.each_ref().map(|s| self.value(Some(s)))
+    }
+
+    /// Joint `n` (1-based) from its D-H row and its `link(...)`.
+    fn joint(&mut self, n: usize, row: &DhRowAttr, attrs: &Attrs, span: Span) -> Joint {
+        let (row_span, [theta, d, a, alpha]) = row;
+        for cell in [theta, d] {
+            check_names(cell, self.fields, self.errors);
+            check_arithmetic(cell, self.errors);
+            check_joint_index(&cell.value, n, cell.span, self.errors);
+        }
+        let kind = self.kind(n, *row_span, theta, d);
+        let theta = self.offset(theta);
+        let d = self.offset(d);
+        let a = self.value(Some(a));
+        let alpha = self.value(Some(alpha));
+        let link = self.link(n, attrs.links.get(n - 1), attrs.check_inertia, span);
+        Joint {
+            kind,
+            theta,
+            d,
+            a,
+            alpha,
+            mass: link.mass,
+            com: link.com,
+            inertia: link.inertia,
+            actuator_inertia: link.actuator_inertia,
+            spring: link.spring,
+        }
+    }
+
+    /// Revolute if `q` is in the θ cell, prismatic if in the d cell.
+    fn kind(&mut self, n: usize, row_span: Span, theta: &Spanned, d: &Spanned) -> JointKind {
+        match (theta.value.joint_occurrences(), d.value.joint_occurrences()) {
+            (1, 0) => JointKind::Revolute,
+            (0, 1) => JointKind::Prismatic,
+            (0, 0) => {
+                self.errors.push(row_span, format!("row {n} has no joint variable: write `q` in the θ column (revolute) or the d column (prismatic)"));
+                JointKind::Revolute
+            }
+            _ => {
+                self.errors.push(
+                    row_span,
+                    format!(
+                        "row {n} must have the joint variable `q` once, in the θ or the d column"
+                    ),
+                );
+                JointKind::Revolute
+            }
+        }
+    }
+
+    /// The offset added to `q` in a D-H cell, or the cell's value where it has no `q`.
+    fn offset(&mut self, cell: &Spanned) -> Value {
+        if cell.value.joint_occurrences() == 0 {
+            return cell.value.clone();
+        }
+        cell.value.joint_offset().unwrap_or_else(|| {
+            self.errors.push(
+                cell.span,
+                "write the joint variable as `q`, `q + offset` or `q - offset`",
+            );
+            Value::zero()
+        })
+    }
+
+    /// The values of link `n`'s `link(...)`, checked; `check_all` is the derive's
+    /// `check_inertia`, which the link's own overrides.
+    fn link(
+        &mut self,
+        n: usize,
+        link: Option<&LinkAttr>,
+        check_all: Option<bool>,
+        span: Span,
+    ) -> LinkValues {
+        let com = match link.and_then(|l| l.com.as_ref()) {
+            Some(c) => self.values(c),
+            None => Default::default(),
+        };
+        let inertia = match link.and_then(|l| l.inertia.as_ref()) {
+            Some((c, _)) => self.values(c),
+            None => Default::default(),
+        };
+        let mass = self.value(link.and_then(|l| l.mass.as_ref()));
+        // After an unknown key (a misspelt `mass`?), a missing mass is no news.
+        if let Some(l) = link.filter(|l| l.mass.is_none() && !l.unknown_key) {
+            self.errors.push(
+                l.span.unwrap_or(span),
+                format!("link {n} has no `mass = ..`"),
+            );
+        }
+        if let Some(l) = link {
+            let checked = l.check_inertia.or(check_all).unwrap_or(true);
+            check_link(n, l, checked, &mass, &inertia, self.errors);
+        }
+        let actuator_inertia = self.value(link.and_then(|l| l.actuator_inertia.as_ref()));
+        let spring = link
+            .and_then(|l| l.spring.as_ref())
+            .map(|(k, rest)| Spring {
+                stiffness: self.value(Some(k)),
+                rest: self.value(Some(rest)),
+            });
+        LinkValues {
+            mass,
+            com,
+            inertia,
+            actuator_inertia,
+            spring,
+        }
+    }
+}
+
+/// Errors for literal arithmetic that has no finite result.
+fn check_arithmetic(spanned: &Spanned, errors: &mut Errors) {
+    if spanned.value.divides_by_zero() {
+        errors.push(
+            spanned.span,
+            format!("division by zero in `{}`", spanned.value),
+        );
+    } else if spanned
+        .value
+        .exact()
+        .is_some_and(|x| !x.to_f64().is_finite())
+    {
+        errors.push(
+            spanned.span,
+            format!(
+                "`{}` overflows an f64: it is not a finite number",
+                spanned.value
+            ),
+        );
+    }
+}
+
+/// The physical checks of link `n`, each error on the value it is about.
+fn check_link(
+    n: usize,
+    link: &LinkAttr,
+    checked: bool,
+    mass: &Value,
+    inertia: &[Value; 6],
+    errors: &mut Errors,
+) {
+    let finite = |v: &Value| v.exact().map_or(true, |x| x.to_f64().is_finite());
+    // A non-finite literal was reported where it is written; do not report it twice.
+    let mass = if finite(mass) {
+        mass.clone()
+    } else {
+        Value::zero()
+    };
+    let checked = checked && inertia.iter().all(finite);
+    let fallback = link.span.unwrap_or_else(Span::call_site);
+    for problem in check::link(&mass, inertia, checked) {
+        let at = match problem.parameter {
+            check::LinkParameter::Mass => link.mass.as_ref().map(|m| m.span),
+            check::LinkParameter::Inertia => link.inertia.as_ref().map(|(_, span)| *span),
+        };
+        errors.push(
+            at.unwrap_or(fallback),
+            format!("link {n}: {}", problem.message),
+        );
+    }
+}
+
+/// An error for `qk` in row `row` with `k ≠ row`.
+fn check_joint_index(v: &Value, row: usize, span: Span, errors: &mut Errors) {
+    match v {
+        Value::Joint(Some(k)) if *k != row => errors.push(
+            span,
+            format!("`q{k}` in row {row}: the joint variable of row {row} is `q` or `q{row}`"),
+        ),
+        Value::Neg(a) => check_joint_index(a, row, span, errors),
+        Value::Add(a, b) | Value::Sub(a, b) | Value::Mul(a, b) | Value::Div(a, b) => {
+            check_joint_index(a, row, span, errors);
+            check_joint_index(b, row, span, errors);
+        }
+        _ => {}
+    }
+}
