@@ -45,6 +45,10 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
+// First: the table of methods that `dynamics` and `nalgebra` declare their traits from.
+#[macro_use]
+mod methods;
+
 mod dynamics;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
