@@ -163,8 +163,8 @@ fn emit(path: &str, robot: &Robot) -> String {
     let n = eq.dof;
     let generated = generate(&eq, fields);
     let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
-    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|name| {
-        Some(format!(" {}", method_doc(name)))
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|method| {
+        Some(format!(" {}", method.summary()))
     });
     let struct_doc = format!(" {}: {n} joints, read from `{path}`.", robot.name);
     let def = if idents.is_empty() {
@@ -191,19 +191,6 @@ fn emit(path: &str, robot: &Robot) -> String {
          {body}",
         robot.name
     )
-}
-
-fn method_doc(name: &str) -> &'static str {
-    match name {
-        "mass_matrix" => "M(q), with the actuator inertia on the diagonal.",
-        "coriolis_matrix" => "C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.",
-        "coriolis_torques" => "C(q, q̇) q̇.",
-        "gravity_torques" => "g(q), with joint springs.",
-        "bias_torques" => "C(q, q̇) q̇ + g(q).",
-        "inverse_dynamics" => "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
-        "kinetic_energy" => "The kinetic energy.",
-        _ => "The potential energy.",
-    }
 }
 
 fn stats(robot: &Robot) -> String {

@@ -28,9 +28,15 @@ macro_rules! declare_dynamics {
 
 /// The array type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`.
 macro_rules! array_result {
-    (matrix, $t:ty, $n:ident) => { [[$t; $n]; $n] };
-    (vector, $t:ty, $n:ident) => { [$t; $n] };
-    (scalar, $t:ty, $n:ident) => { $t };
+    (matrix, $t:ty, $n:ident) => {
+        [[$t; $n]; $n]
+    };
+    (vector, $t:ty, $n:ident) => {
+        [$t; $n]
+    };
+    (scalar, $t:ty, $n:ident) => {
+        $t
+    };
 }
 
 for_each_method!(declare_dynamics);
