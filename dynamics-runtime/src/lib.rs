@@ -39,7 +39,8 @@
 //!   build enables AVX2 (`-C target-cpu=native` on most machines; 359 -> 224 and 900 -> 778
 //!   before fused multiply-adds); `f32` in four SSE lanes.
 //! * `derive` (default): re-exports `#[derive(Dynamics)]`.
-//! * `nalgebra`: [`nalgebra`](mod@crate::nalgebra) conversions.
+//! * `nalgebra`: the `nalgebra` module, conversions to and from nalgebra's types
+//!   (`DynamicsNalgebra`: an `_na` version of every method).
 #![cfg_attr(not(feature = "std"), no_std)]
 // `unsafe` only to call the vector sines and cosines (`#[target_feature]` functions) on x86-64.
 #![deny(unsafe_code)]
