@@ -75,9 +75,8 @@ macro_rules! returns {
 macro_rules! declare_method {
     ($(
         $(#[doc = $doc:literal])*
-        fn $name:ident($($argument:ident),*) -> $result:ident {
+        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
             variant: $variant:ident,
-            nalgebra: $wrapper:ident,
             equation: $equation:expr,
             prefix: $prefix:literal,
             summary: $summary:literal,

@@ -7,7 +7,9 @@ use crate::Real;
 macro_rules! declare_dynamics {
     ($(
         $(#[doc = $doc:literal])*
-        fn $name:ident($($argument:ident),*) -> $result:ident { $($_info:tt)* }
+        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+            $($_info:tt)*
+        }
     )*) => {
         /// Closed-form equations of motion of a serial robot with `N` joints,
         /// `tau = M(q) qdd + C(q, qd) qd + g(q)` (Niku eq. 6.46).

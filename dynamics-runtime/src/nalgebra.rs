@@ -10,12 +10,8 @@ use nalgebra::{SMatrix, SVector, Scalar};
 /// The trait from the method table's rows: one `_na` wrapper per method.
 macro_rules! declare_nalgebra {
     ($(
-        $(#[doc = $doc:literal])*
-        fn $name:ident($($argument:ident),*) -> $result:ident {
-            variant: $variant:ident,
-            nalgebra: $wrapper:ident,
-            $($_info:tt)*
-        }
+        $(#[$_doc:meta])*
+        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident { $($_info:tt)* }
     )*) => {
         /// nalgebra versions of the [`Dynamics`] methods, implemented for every robot.
         pub trait DynamicsNalgebra<const N: usize>: Dynamics<N> {

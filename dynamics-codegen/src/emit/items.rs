@@ -157,54 +157,80 @@ impl Generated {
 
     /// The configuration struct and function, if any method reads them.
     fn configuration_item(&self, krate: &TokenStream) -> Option<TokenStream> {
-        let (n, k) = (self.dof, self.fields.len());
-        let (p, q) = (local(PARAMETERS), argument_local(Argument::Q));
-        self.configuration.as_ref().map(|c| {
-            let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-            let f = Ident::new(CONFIGURATION_FN, Span::call_site());
-            let fields = &c.fields;
-            let body = &c.tokens;
-            quote! {
+        let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        let function = SharedFunction {
+            doc: quote!(
                 /// What the dynamics need from the parameters and `q` alone, computed once.
-                pub(super) struct #ty<T> { #(#fields: T),* }
-                // Inlined into each method, which keeps of it only what it reads.
-                #[inline(always)]
-                pub(super) fn #f<T: #krate::Real>(#p: &[T; #k], #q: &[T; #n]) -> #ty<T> {
-                    #body
-                }
-            }
-        })
+            ),
+            result: quote!(#ty<T>),
+            ty,
+            name: CONFIGURATION_FN,
+            arguments: &[Argument::Q],
+        };
+        Some(self.shared_item(self.configuration.as_ref()?, krate, function))
     }
 
-    /// The motion struct and function, if two methods share terms in `q̇`.
+    /// The motion struct and function, if two methods share terms in `q̇`; with a
+    /// configuration, the motion function computes it too and hands both over.
     fn motion_item(&self, krate: &TokenStream) -> Option<TokenStream> {
-        let (n, k) = (self.dof, self.fields.len());
-        let (p, q) = (local(PARAMETERS), argument_local(Argument::Q));
-        self.motion.as_ref().map(|m| {
-            let ty = Ident::new(MOTION_STRUCT, Span::call_site());
-            let f = Ident::new(MOTION_FN, Span::call_site());
-            let fields = &m.fields;
-            let body = &m.tokens;
-            let qd = argument_local(Argument::Qd);
-            // With a configuration, the motion function computes it too and hands both over.
-            let ret = match &self.configuration {
-                Some(_) => {
-                    let c = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-                    quote!((#c<T>, #ty<T>))
-                }
-                None => quote!(#ty<T>),
-            };
-            quote! {
+        let ty = Ident::new(MOTION_STRUCT, Span::call_site());
+        let configuration = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        let result = match &self.configuration {
+            Some(_) => quote!((#configuration<T>, #ty<T>)),
+            None => quote!(#ty<T>),
+        };
+        let function = SharedFunction {
+            doc: quote!(
                 /// What several methods compute from `q̇` too, computed once.
-                pub(super) struct #ty<T> { #(#fields: T),* }
-                // Inlined into each method, which keeps of it only what it reads.
-                #[inline(always)]
-                pub(super) fn #f<T: #krate::Real>(#p: &[T; #k], #q: &[T; #n], #qd: &[T; #n]) -> #ret {
-                    #body
-                }
-            }
-        })
+            ),
+            result,
+            ty,
+            name: MOTION_FN,
+            arguments: &[Argument::Q, Argument::Qd],
+        };
+        Some(self.shared_item(self.motion.as_ref()?, krate, function))
     }
+
+    /// A shared function's struct and the inlined function computing it.
+    fn shared_item(
+        &self,
+        shared: &Shared,
+        krate: &TokenStream,
+        function: SharedFunction,
+    ) -> TokenStream {
+        let (n, k) = (self.dof, self.fields.len());
+        let p = local(PARAMETERS);
+        let SharedFunction {
+            doc,
+            ty,
+            name,
+            arguments,
+            result,
+        } = function;
+        let name = Ident::new(name, Span::call_site());
+        let arguments = arguments.iter().map(|&a| argument_local(a));
+        let fields = &shared.fields;
+        let body = &shared.tokens;
+        quote! {
+            #doc
+            pub(super) struct #ty<T> { #(#fields: T),* }
+            // Inlined into each method, which keeps of it only what it reads.
+            #[inline(always)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #(#arguments: &[T; #n]),*) -> #result {
+                #body
+            }
+        }
+    }
+}
+
+/// A shared function: its struct's doc and name, its name, its arguments after the
+/// parameters and its result type.
+struct SharedFunction {
+    doc: TokenStream,
+    ty: Ident,
+    name: &'static str,
+    arguments: &'static [Argument],
+    result: TokenStream,
 }
 
 /// One method of the `Dynamics` impl with the given body (also used by the command-line
