@@ -50,3 +50,61 @@ fn array<T: Real + Scalar, const N: usize>(v: &SVector<T, N>) -> [T; N] {
 fn matrix<T: Real + Scalar, const N: usize>(m: &[[T; N]; N]) -> SMatrix<T, N, N> {
     SMatrix::from_fn(|i, j| m[i][j])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::DynamicsNalgebra;
+    use crate::{Dynamics, Real};
+    use nalgebra::{SMatrix, SVector};
+
+    /// A "robot" whose every method returns its first argument's sum, in every element.
+    struct Sums;
+
+    fn sum<T: Real>(v: &[T; 2]) -> T {
+        v[0] + v[1]
+    }
+
+    impl Dynamics<2> for Sums {
+        fn mass_matrix<T: Real>(&self, q: &[T; 2]) -> [[T; 2]; 2] {
+            [[sum(q); 2]; 2]
+        }
+        fn coriolis_matrix<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> [[T; 2]; 2] {
+            [[sum(q); 2]; 2]
+        }
+        fn coriolis_torques<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> [T; 2] {
+            [sum(q); 2]
+        }
+        fn gravity_torques<T: Real>(&self, q: &[T; 2]) -> [T; 2] {
+            [sum(q); 2]
+        }
+        fn bias_torques<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> [T; 2] {
+            [sum(q); 2]
+        }
+        fn inverse_dynamics<T: Real>(&self, q: &[T; 2], _: &[T; 2], _: &[T; 2]) -> [T; 2] {
+            [sum(q); 2]
+        }
+        fn kinetic_energy<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> T {
+            sum(q)
+        }
+        fn potential_energy<T: Real>(&self, q: &[T; 2]) -> T {
+            sum(q)
+        }
+    }
+
+    #[test]
+    fn every_method_has_a_wrapper_that_forwards_it() {
+        let (q, z) = (SVector::from([1.0, 2.0]), SVector::<f64, 2>::zeros());
+        let (m, v) = (
+            SMatrix::<f64, 2, 2>::repeat(3.0),
+            SVector::<f64, 2>::repeat(3.0),
+        );
+        assert_eq!(Sums.mass_matrix_na(&q), m);
+        assert_eq!(Sums.coriolis_matrix_na(&q, &z), m);
+        assert_eq!(Sums.coriolis_torques_na(&q, &z), v);
+        assert_eq!(Sums.gravity_torques_na(&q), v);
+        assert_eq!(Sums.bias_torques_na(&q, &z), v);
+        assert_eq!(Sums.inverse_dynamics_na(&q, &z, &z), v);
+        assert_eq!(Sums.kinetic_energy_na(&q, &z), 3.0);
+        assert_eq!(Sums.potential_energy_na(&q), 3.0);
+    }
+}
