@@ -29,6 +29,13 @@
 //! arguments are `q_`, `qd_` and `qdd_` (a pattern cannot shadow a constant, and the trait's
 //! methods, in the user's scope, take the same names); each function names the components it
 //! reads as the book numbers them, `let [qd1, _, qd3] = *qd_;`.
+//!
+//! By job: `depends` (what each node depends on, hence which function computes it),
+//! `emitter` (one function's state), `expr` (expressions and parentheses), `sum_order` (the
+//! order of a sum's additions), `inputs` (joint variables, sines and cosines), `shared` (the
+//! configuration and motion functions), `body` (a method's body), `names` (output elements),
+//! `count` (operation counts), `items` (the derive's items), `fallback` (the expansion of a
+//! failed derive), `equations` (the readable equations' constants).
 
 mod body;
 mod count;
