@@ -12,8 +12,8 @@
 
 use dynamics_codegen::check;
 use dynamics_codegen::front;
+use dynamics_codegen::inspect::{self, Format, Limits};
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::readable::{self, Format, Limits};
 use dynamics_codegen::symbolic::{NodeId, Var};
 use dynamics_codegen::{derive, generate, Equations};
 use quote::quote;
@@ -67,7 +67,7 @@ fn run(args: &[String]) -> Result<String, Failure> {
             let robot = load(path)?;
             let eq = derive(&robot);
             let format = if latex { Format::Latex } else { Format::Text };
-            Ok(readable::inspect(&eq, &robot, Limits::UNBOUNDED).render(format))
+            Ok(inspect::inspect(&eq, &robot, Limits::UNBOUNDED).render(format))
         }
         "emit" => {
             flags(options, &[])?;
@@ -142,8 +142,8 @@ fn emit(path: &str, robot: &Robot) -> String {
     let n = eq.dof;
     let generated = generate(&eq, fields);
     let ty = syn::Ident::new(&type_name(&robot.name), proc_macro2::Span::call_site());
-    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|name| {
-        Some(format!(" {}", method_doc(name)))
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|method| {
+        Some(format!(" {}", method.summary()))
     });
     let struct_doc = format!(" {}: {n} joints, read from `{path}`.", robot.name);
     let def = if idents.is_empty() {
@@ -170,19 +170,6 @@ fn emit(path: &str, robot: &Robot) -> String {
          {body}",
         robot.name
     )
-}
-
-fn method_doc(name: &str) -> &'static str {
-    match name {
-        "mass_matrix" => "M(q), with the actuator inertia on the diagonal.",
-        "coriolis_matrix" => "C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.",
-        "coriolis_torques" => "C(q, q̇) q̇.",
-        "gravity_torques" => "g(q), with joint springs.",
-        "bias_torques" => "C(q, q̇) q̇ + g(q).",
-        "inverse_dynamics" => "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
-        "kinetic_energy" => "The kinetic energy.",
-        _ => "The potential energy.",
-    }
 }
 
 fn stats(robot: &Robot) -> String {
@@ -257,7 +244,7 @@ fn stats(robot: &Robot) -> String {
     );
     // What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, within its limits.
     let start = Instant::now();
-    let inspection = readable::inspect(&eq, robot, Limits::DERIVE);
+    let inspection = inspect::inspect(&eq, robot, Limits::DERIVE);
     let (text, latex) = (
         inspection.render(Format::Text),
         inspection.render(Format::Latex),

@@ -149,7 +149,7 @@ fn output_elements_are_named_and_commented() {
 #[test]
 fn symmetric_last_link_needs_no_turn() {
     let trig = |robot: &model::Robot| {
-        let eq = derive::derive(robot);
+        let eq = derive(robot);
         let generated = dynamics_codegen::generate(&eq, Vec::new());
         generated
             .methods
@@ -172,7 +172,7 @@ fn symmetric_last_link_needs_no_turn() {
 #[test]
 fn puma560_inverse_dynamics_stays_within_its_operation_budget() {
     let puma = front::from_json(PUMA, "puma560").expect("json");
-    let eq = derive::derive(&puma);
+    let eq = derive(&puma);
     let generated = dynamics_codegen::generate(&eq, Vec::new());
     let tau = generated
         .methods

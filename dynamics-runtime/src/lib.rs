@@ -30,20 +30,22 @@
 //! # Features
 //!
 //! * `std` (default): links std. Sine and cosine do not depend on it: the crate computes both
-//!   at once with one shared range reduction (within 1 ulp of std; for `f64`, 71 instructions
-//!   a pair against glibc's 99, which takes PUMA 560's `inverse_dynamics` from 1,405 to 1,208;
-//!   `libm` beyond 2^16 rad for `f64`, 2^12 rad for `f32`). Generated code asks for four
+//!   at once with one shared range reduction, within 1 ulp of std and cheaper than two libm
+//!   calls (`libm` beyond 2^16 rad for `f64`, 2^12 rad for `f32`). Generated code asks for four
 //!   joints' at a time ([`Real::sin_cos_4`]), which x86-64 computes in vector lanes, bit for
-//!   bit the same values: `f64` in SSE2 pairs in every build (PUMA 560's `gravity_torques`
-//!   459 -> 337 instructions, `inverse_dynamics` 1,203 -> 1,082), in four AVX2 lanes where the
-//!   build enables AVX2 (`-C target-cpu=native` on most machines; 359 -> 224 and 900 -> 778
-//!   before fused multiply-adds); `f32` in four SSE lanes.
+//!   bit the same values: `f64` in SSE2 pairs in every build, in four AVX2 lanes where the
+//!   build enables AVX2 (`-C target-cpu=native` on most machines); `f32` in four SSE lanes.
 //! * `derive` (default): re-exports `#[derive(Dynamics)]`.
-//! * `nalgebra`: [`nalgebra`](mod@crate::nalgebra) conversions.
+//! * `nalgebra`: the `nalgebra` module, conversions to and from nalgebra's types
+//!   (`DynamicsNalgebra`: an `_na` version of every method).
 #![cfg_attr(not(feature = "std"), no_std)]
 // `unsafe` only to call the vector sines and cosines (`#[target_feature]` functions) on x86-64.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
+
+// First: the table of methods that `dynamics` and `nalgebra` declare their traits from.
+#[macro_use]
+mod methods;
 
 mod dynamics;
 #[cfg(feature = "nalgebra")]

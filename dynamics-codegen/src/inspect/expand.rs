@@ -5,8 +5,8 @@
 use super::arrange::{arrange, Term};
 use super::fold::fold_trig;
 use super::{Poly, Sym};
-use crate::derive::Equations;
 use crate::symbolic::{Node, NodeId, Number};
+use crate::trace::Equations;
 
 /// Bounds on the polynomial expansion.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -39,8 +39,8 @@ pub use print::Format;
 pub use symbol::{AngleSum, Sym};
 
 use crate::algo::JointKind;
-use crate::derive::Equations;
 use crate::model::Robot;
+use crate::trace::Equations;
 use expand::Expander;
 use sections::Section;
 

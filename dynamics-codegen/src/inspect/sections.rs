@@ -4,8 +4,8 @@
 use super::arrange::Term;
 use super::expand::Expander;
 use super::label::{Label, Quantity};
-use crate::derive::Equations;
 use crate::model::Robot;
+use crate::trace::Equations;
 
 /// One printed equation: its names (`D12 = D21`) and its right-hand side, `None` when it was
 /// too large to expand.

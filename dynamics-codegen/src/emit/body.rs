@@ -1,0 +1,91 @@
+//! The body of a method: the shared fields it reads, its own terms in `q̇` and `q̈`, its
+//! result; each output element bound under its name with a doc comment saying what it is.
+
+use super::count::count;
+use super::emitter::Emitter;
+use super::expr::Place;
+use super::names::Element;
+use super::{local, Body, Shape};
+use crate::method::Method;
+use crate::symbolic::NodeId;
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+impl Emitter<'_> {
+    /// `let name = expr;` for node `id`, which from then on is read by its name: an output
+    /// `element`'s name with a one-line doc comment saying what it is (which `cargo expand`
+    /// shows), else a new temporary.
+    pub(super) fn bind(&mut self, id: NodeId, element: Option<Element>) -> TokenStream {
+        let name = match element {
+            Some(element) => element.ident(),
+            None => self.temporary(),
+        };
+        let e = self.define(id);
+        self.names[id.index()] = Some(name.clone());
+        match element {
+            Some(element) => {
+                let doc = format!(" {}", element.describe());
+                quote!(#[doc = #doc] let #name = #e;)
+            }
+            None => quote!(let #name = #e;),
+        }
+    }
+
+    /// A function's body computing `shape`: the configuration's fields it reads, then
+    /// the terms in `q̇` and `q̈`, then the result.
+    pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
+        let outputs = shape.outputs();
+        self.mark(&outputs);
+        let mut output_names = self.output_names(shape, method);
+        // A scalar result is returned as an expression, not bound.
+        if matches!(shape, Shape::Scalar(_)) {
+            output_names.clear();
+        }
+        let mut statements = Vec::new();
+        // The shared fields this function reads, bound under their names.
+        statements.extend(self.bind_shared(true));
+        statements.extend(self.joint_variables());
+        for (id, _) in self.graph.nodes() {
+            let i = id.index();
+            if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
+                continue;
+            }
+            // A scalar result is written in place unless it is read elsewhere too.
+            let bound_output = outputs.contains(&id) && !matches!(shape, Shape::Scalar(_));
+            if self.uses[i] <= 1 && !bound_output {
+                continue;
+            }
+            let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
+            statements.push(self.bind(id, element));
+        }
+        let result = match shape {
+            Shape::Scalar(id) => self.expr(*id, Place::Top),
+            Shape::Vector(v) => {
+                let items: Vec<TokenStream> =
+                    v.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                quote!([#(#items),*])
+            }
+            Shape::Matrix(m) => {
+                let rows: Vec<TokenStream> = m
+                    .iter()
+                    .map(|r| {
+                        let items: Vec<TokenStream> =
+                            r.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                        quote!([#(#items),*])
+                    })
+                    .collect();
+                quote!([#(#rows),*])
+            }
+        };
+        Body {
+            tokens: quote!(#(#statements)* #result),
+            ops: count(self.eq, &outputs),
+        }
+    }
+
+    /// A new temporary, `t3` (`u3`, `v3` in the shared functions).
+    fn temporary(&mut self) -> Ident {
+        self.temporaries += 1;
+        local(&format!("{}{}", self.temporary_prefix, self.temporaries))
+    }
+}

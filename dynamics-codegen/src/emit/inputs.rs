@@ -1,0 +1,105 @@
+//! The joint variables a function reads, `let [qd1, _, qd3] = *qd_;`, and the sines and
+//! cosines of the joint angles, computed once each, four joints side by side.
+
+use super::emitter::Emitter;
+use super::expr::Place;
+use super::local;
+use crate::symbolic::{Node, Var};
+use proc_macro2::TokenStream;
+use quote::quote;
+
+impl Emitter<'_> {
+    /// `let [qd1, _, qd3] = *qd_;`: the joint positions, velocities and accelerations the
+    /// marked nodes read, named as the book numbers them.
+    pub(super) fn joint_variables(&self) -> Vec<TokenStream> {
+        let n = self.eq.dof;
+        let mut used = [vec![false; n], vec![false; n], vec![false; n]];
+        for (id, node) in self.graph.nodes() {
+            if !self.needed[id.index()] {
+                continue;
+            }
+            match node {
+                Node::Var(Var::Q(i)) => used[0][usize::from(i)] = true,
+                Node::Var(Var::Qd(i)) => used[1][usize::from(i)] = true,
+                Node::Var(Var::Qdd(i)) => used[2][usize::from(i)] = true,
+                _ => {}
+            }
+        }
+        ["q", "qd", "qdd"]
+            .iter()
+            .zip(used)
+            .filter(|(_, used)| used.contains(&true))
+            .map(|(name, used)| {
+                let array = local(&format!("{name}_"));
+                let names = used.iter().enumerate().map(|(i, &u)| {
+                    if u {
+                        let v = local(&format!("{name}{}", i + 1));
+                        quote!(#v)
+                    } else {
+                        quote!(_)
+                    }
+                });
+                quote!(let [#(#names),*] = *#array;)
+            })
+            .collect()
+    }
+
+    /// The sines and cosines of the joints that need them, four joints a call computed side by
+    /// side, `let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([q_[1], …]);` (`_` for
+    /// an unused one; a last group of two or three is padded with `T::ONE`), a last single joint
+    /// on its own, `let (s6, c6) = T::sin_cos(q_[5]);`.
+    pub(super) fn sines_and_cosines(&mut self, statements: &mut Vec<TokenStream>) {
+        let mut joints = Vec::new();
+        for i in 0..self.eq.dof {
+            let i16 = u16::try_from(i).unwrap_or(u16::MAX);
+            let needed = |v: Var| {
+                self.graph
+                    .nodes()
+                    .any(|(id, node)| node == Node::Var(v) && self.needed[id.index()])
+            };
+            let (s, c) = (needed(Var::SinQ(i16)), needed(Var::CosQ(i16)));
+            if !s && !c {
+                continue;
+            }
+            let q = local("q_");
+            let index = proc_macro2::Literal::usize_unsuffixed(i);
+            let angle = match self.eq.angle_offsets[i] {
+                Some(off) => {
+                    let o = self.expr(off, Place::AddRight);
+                    quote!(#q[#index] + #o)
+                }
+                None => quote!(#q[#index]),
+            };
+            let name = |used: bool, letter: char| {
+                if used {
+                    let n = local(&format!("{letter}{}", i + 1));
+                    quote!(#n)
+                } else {
+                    quote!(_)
+                }
+            };
+            joints.push((name(s, 's'), name(c, 'c'), angle, s, c));
+        }
+        for group in joints.chunks(4) {
+            if let [(sn, cn, angle, s, c)] = group {
+                statements.push(match (s, c) {
+                    (true, true) => quote!(let (#sn, #cn) = T::sin_cos(#angle);),
+                    (true, false) => quote!(let #sn = T::sin(#angle);),
+                    _ => quote!(let #cn = T::cos(#angle);),
+                });
+                continue;
+            }
+            let pad = 4 - group.len();
+            let blank = std::iter::repeat(quote!(_)).take(pad);
+            let sines = group.iter().map(|j| j.0.clone()).chain(blank.clone());
+            let cosines = group.iter().map(|j| j.1.clone()).chain(blank);
+            let angles = group
+                .iter()
+                .map(|j| j.2.clone())
+                .chain(std::iter::repeat(quote!(T::ONE)).take(pad));
+            statements.push(quote!(
+                let ([#(#sines),*], [#(#cosines),*]) = T::sin_cos_4([#(#angles),*]);
+            ));
+        }
+    }
+}

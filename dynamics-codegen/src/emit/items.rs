@@ -1,0 +1,279 @@
+//! The generated items: the emitted bodies of every [`Method`] put together into a module of
+//! functions, a parameter reader and the `Dynamics` impl forwarding to them.
+
+use super::{emit, local, Context, OpCount, Output, Shared};
+use super::{CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT, PARAMETERS};
+use crate::method::{Argument, Method, Returns};
+use crate::trace::Equations;
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::{quote, ToTokens};
+
+/// One generated method: which, its body, with operation counts.
+pub struct MethodCode {
+    /// The method.
+    pub method: Method,
+    /// Its name, `method.name()`, e.g. `mass_matrix`.
+    pub name: &'static str,
+    /// The body.
+    pub body: TokenStream,
+    /// Its operations, the shared configuration's included.
+    pub ops: OpCount,
+}
+
+/// The generated code of a robot: the shared configuration (see [`emit`]) and the methods of
+/// the `Dynamics` impl.
+pub struct Generated {
+    /// Number of joints.
+    pub dof: usize,
+    /// How to read each struct field of the robot, in the order of [`Equations::fields`].
+    pub fields: Vec<TokenStream>,
+    /// The configuration function's struct fields and body, if any method reads it.
+    pub configuration: Option<Shared>,
+    /// The motion function's struct fields and body, if two methods share terms in `q̇`.
+    pub motion: Option<Shared>,
+    /// The methods, in the trait's order.
+    pub methods: Vec<MethodCode>,
+}
+
+/// Name of the module holding the generated functions.
+const MODULE: &str = "__dynamics";
+/// Name of the hidden inherent method reading the robot's parameters.
+const PARAMETERS_FN: &str = "__dynamics_parameters";
+
+/// The generated code of the [`Equations`], every method of [`Method::ALL`]; `fields` reads
+/// struct field `k` of the robot (`self.name`), in the order of [`Equations::fields`].
+#[must_use]
+pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
+    let ctx = Context {
+        parameters: local(PARAMETERS),
+    };
+    let outputs: Vec<Output> = Method::ALL
+        .iter()
+        .map(|&method| Output {
+            method,
+            shape: method.shape(eq),
+        })
+        .collect();
+    let emission = emit(eq, &outputs, &ctx);
+    let methods = Method::ALL
+        .iter()
+        .zip(emission.bodies)
+        .map(|(&method, b)| MethodCode {
+            method,
+            name: method.name(),
+            body: b.tokens,
+            ops: b.ops,
+        })
+        .collect();
+    Generated {
+        dof: eq.dof,
+        fields,
+        configuration: emission.configuration,
+        motion: emission.motion,
+        methods,
+    }
+}
+
+impl Generated {
+    /// The items for the robot type `ident`, to go in a `const _: () = { … };` block:
+    ///
+    /// * a module `__dynamics` holding the configuration struct and function and one function
+    ///   per method, which take the parameters as an array `p_: &[T; K]`. A module sees none of
+    ///   the items around it, so no user constant can collide with a generated local (`let`
+    ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
+    /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
+    ///   array (every field the description names, so none is left unread);
+    /// * the `Dynamics` impl, each method one call into the module.
+    ///
+    /// `docs` gives each method's doc comment.
+    #[must_use]
+    pub fn items(
+        &self,
+        krate: &TokenStream,
+        ident: &syn::Ident,
+        generics: &syn::Generics,
+        docs: &dyn Fn(Method) -> Option<String>,
+    ) -> TokenStream {
+        let n = self.dof;
+        let k = self.fields.len();
+        let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+        let module = Ident::new(MODULE, Span::call_site());
+        let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
+        let configuration = self.configuration_item(krate);
+        let motion = self.motion_item(krate);
+        let p = local(PARAMETERS);
+        let bodies = self.methods.iter().map(|m| {
+            let name = Ident::new(m.name, Span::call_site());
+            let (args, ret) = signature(m.method, n);
+            let body = &m.body;
+            quote! {
+                #[inline(always)]
+                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
+                    #body
+                }
+            }
+        });
+        let fns = self.methods.iter().map(|m| {
+            let name = Ident::new(m.name, Span::call_site());
+            let (args, ret) = signature(m.method, n);
+            let pass = call_arguments(m.method);
+            let f = quote! {
+                #[inline]
+                fn #name<T: #krate::Real>(&self, #args) -> #ret {
+                    #module::#name(&self.#parameters(), #pass)
+                }
+            };
+            match docs(m.method) {
+                Some(doc) => quote!(#[doc = #doc] #f),
+                None => f,
+            }
+        });
+        let fields = &self.fields;
+        let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
+        quote! {
+            /// The generated functions, out of reach of the names around the derive.
+            #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+            mod #module {
+                #configuration
+                #motion
+                #(#bodies)*
+            }
+            impl #impl_generics #ident #ty_generics #where_clause {
+                /// The parameters the equations read, in the order of the description.
+                #[doc(hidden)]
+                #[inline(always)]
+                #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
+                fn #parameters<T: #krate::Real>(&self) -> [T; #k] {
+                    #reader
+                    [#(param(#fields)),*]
+                }
+            }
+            #[automatically_derived]
+            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
+                #(#fns)*
+            }
+        }
+    }
+
+    /// The configuration struct and function, if any method reads them.
+    fn configuration_item(&self, krate: &TokenStream) -> Option<TokenStream> {
+        let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        let function = SharedFunction {
+            doc: quote!(
+                /// What the dynamics need from the parameters and `q` alone, computed once.
+            ),
+            result: quote!(#ty<T>),
+            ty,
+            name: CONFIGURATION_FN,
+            arguments: &[Argument::Q],
+        };
+        Some(self.shared_item(self.configuration.as_ref()?, krate, function))
+    }
+
+    /// The motion struct and function, if two methods share terms in `q̇`; with a
+    /// configuration, the motion function computes it too and hands both over.
+    fn motion_item(&self, krate: &TokenStream) -> Option<TokenStream> {
+        let ty = Ident::new(MOTION_STRUCT, Span::call_site());
+        let configuration = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        let result = match &self.configuration {
+            Some(_) => quote!((#configuration<T>, #ty<T>)),
+            None => quote!(#ty<T>),
+        };
+        let function = SharedFunction {
+            doc: quote!(
+                /// What several methods compute from `q̇` too, computed once.
+            ),
+            result,
+            ty,
+            name: MOTION_FN,
+            arguments: &[Argument::Q, Argument::Qd],
+        };
+        Some(self.shared_item(self.motion.as_ref()?, krate, function))
+    }
+
+    /// A shared function's struct and the inlined function computing it.
+    fn shared_item(
+        &self,
+        shared: &Shared,
+        krate: &TokenStream,
+        function: SharedFunction,
+    ) -> TokenStream {
+        let (n, k) = (self.dof, self.fields.len());
+        let p = local(PARAMETERS);
+        let SharedFunction {
+            doc,
+            ty,
+            name,
+            arguments,
+            result,
+        } = function;
+        let name = Ident::new(name, Span::call_site());
+        let arguments = arguments.iter().map(|&a| argument_local(a));
+        let fields = &shared.fields;
+        let body = &shared.tokens;
+        quote! {
+            #doc
+            pub(super) struct #ty<T> { #(#fields: T),* }
+            // Inlined into each method, which keeps of it only what it reads.
+            #[inline(always)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #(#arguments: &[T; #n]),*) -> #result {
+                #body
+            }
+        }
+    }
+}
+
+/// A shared function: its struct's doc and name, its name, its arguments after the
+/// parameters and its result type.
+struct SharedFunction {
+    doc: TokenStream,
+    ty: Ident,
+    name: &'static str,
+    arguments: &'static [Argument],
+    result: TokenStream,
+}
+
+/// One method of the `Dynamics` impl with the given body (also used by the command-line
+/// tool's `emit`).
+#[must_use]
+pub fn method(method: Method, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
+    let (args, ret) = signature(method, n);
+    let name = Ident::new(method.name(), Span::call_site());
+    quote! {
+        #[inline]
+        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+        fn #name<T: #krate::Real>(&self, #args) -> #ret {
+            #body
+        }
+    }
+}
+
+/// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
+fn argument_local(argument: Argument) -> Ident {
+    local(&format!("{}_", argument.name()))
+}
+
+/// The arguments and the result type of a method of the `Dynamics` trait.
+fn signature(method: Method, n: usize) -> (TokenStream, TokenStream) {
+    let arguments = method.arguments().iter().map(|&a| {
+        let name = argument_local(a);
+        quote!(#name: &[T; #n])
+    });
+    let result = match method.returns() {
+        Returns::Matrix => quote!([[T; #n]; #n]),
+        Returns::Vector => quote!([T; #n]),
+        Returns::Scalar => quote!(T),
+    };
+    (quote!(#(#arguments),*), result)
+}
+
+/// The arguments a method passes on, as in [`signature`].
+fn call_arguments(method: Method) -> TokenStream {
+    let arguments = method.arguments().iter().map(|&a| argument_local(a));
+    quote!(#(#arguments),*)
+}
+
+/// The runtime crate's path: `crate = "..."` if given, else `::dynamics_runtime`.
+pub(crate) fn runtime_path(krate: Option<&syn::Path>) -> TokenStream {
+    krate.map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream)
+}

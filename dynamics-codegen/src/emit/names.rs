@@ -1,0 +1,74 @@
+//! The names of output elements (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃, `p`), typed: an
+//! element is its method and its index, which give both its name and its doc comment.
+
+use super::emitter::Emitter;
+use super::{local, Shape};
+use crate::method::Method;
+use crate::symbolic::NodeId;
+use proc_macro2::Ident;
+
+/// An element of a method's result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Element {
+    method: Method,
+    index: Index,
+}
+
+/// Where an element sits in its result, from 0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Index {
+    Scalar,
+    Vector(usize),
+    Matrix(usize, usize),
+}
+
+impl Element {
+    /// Its local: the method's prefix and the index from 1, `m1_2`, `tau3`, `p`.
+    pub(super) fn ident(self) -> Ident {
+        let prefix = self.method.prefix();
+        local(&match self.index {
+            Index::Scalar => prefix.to_owned(),
+            Index::Vector(i) => format!("{prefix}{}", i + 1),
+            Index::Matrix(i, j) => format!("{prefix}{}_{}", i + 1, j + 1),
+        })
+    }
+
+    /// What it is, in the book's terms ([`Method::describe`]).
+    pub(super) fn describe(self) -> String {
+        let (i, j) = match self.index {
+            Index::Scalar => (0, 0),
+            Index::Vector(i) => (i, 0),
+            Index::Matrix(i, j) => (i, j),
+        };
+        self.method.describe(i, j)
+    }
+}
+
+impl Emitter<'_> {
+    /// The output elements of `method`, whose result is `shape`, by node; an element equal to
+    /// an earlier one (M's lower triangle) keeps the earlier name.
+    pub(super) fn output_names(&self, shape: &Shape, method: Method) -> Vec<(NodeId, Element)> {
+        let mut named: Vec<(NodeId, Element)> = Vec::new();
+        let mut add = |id: NodeId, index: Index| {
+            if !self.is_leaf(id) && !named.iter().any(|(n, _)| *n == id) {
+                named.push((id, Element { method, index }));
+            }
+        };
+        match shape {
+            Shape::Scalar(id) => add(*id, Index::Scalar),
+            Shape::Vector(v) => {
+                for (i, &id) in v.iter().enumerate() {
+                    add(id, Index::Vector(i));
+                }
+            }
+            Shape::Matrix(m) => {
+                for (i, row) in m.iter().enumerate() {
+                    for (j, &id) in row.iter().enumerate() {
+                        add(id, Index::Matrix(i, j));
+                    }
+                }
+            }
+        }
+        named
+    }
+}

@@ -1,0 +1,247 @@
+//! The typed table of the generated methods: for each, its name, arguments, result shape,
+//! documentation, the book's equation and the names and docs of its output elements.
+//!
+//! The rows live in `dynamics-runtime/src/methods.rs` (symlinked here as `methods.rs`), which
+//! the runtime's `Dynamics` trait and nalgebra wrappers are declared from, so the trait and the
+//! generator cannot disagree. The one thing the runtime cannot say is which output of the
+//! [`Equations`] a method returns: [`Method::shape`], an exhaustive `match`.
+
+use crate::emit::Shape;
+use crate::trace::Equations;
+
+include!("methods.rs");
+
+/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Argument {
+    /// Joint positions.
+    Q,
+    /// Joint velocities.
+    Qd,
+    /// Joint accelerations.
+    Qdd,
+}
+
+impl Argument {
+    /// The name the trait gives it: `q`, `qd`, `qdd`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Argument::Q => "q",
+            Argument::Qd => "qd",
+            Argument::Qdd => "qdd",
+        }
+    }
+}
+
+/// The shape of a method's result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Returns {
+    /// `[[T; N]; N]`.
+    Matrix,
+    /// `[T; N]`.
+    Vector,
+    /// `T`.
+    Scalar,
+}
+
+/// The `Argument` of a row's argument name.
+macro_rules! argument {
+    (q) => {
+        Argument::Q
+    };
+    (qd) => {
+        Argument::Qd
+    };
+    (qdd) => {
+        Argument::Qdd
+    };
+}
+
+/// The `Returns` of a row's result shape.
+macro_rules! returns {
+    (matrix) => {
+        Returns::Matrix
+    };
+    (vector) => {
+        Returns::Vector
+    };
+    (scalar) => {
+        Returns::Scalar
+    };
+}
+
+/// `enum Method` and its accessors from the table's rows.
+macro_rules! declare_method {
+    ($(
+        $(#[doc = $doc:literal])*
+        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+            variant: $variant:ident,
+            equation: $equation:expr,
+            prefix: $prefix:literal,
+            summary: $summary:literal,
+            element: $element:literal,
+            $(diagonal: $diagonal:literal,)?
+        }
+    )*) => {
+        /// A method of the `Dynamics` trait.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub enum Method {
+            $($(#[doc = $doc])* $variant,)*
+        }
+
+        impl Method {
+            /// Every method, in the trait's order.
+            pub const ALL: &'static [Method] = &[$(Method::$variant),*];
+
+            /// Its name, e.g. `mass_matrix`.
+            #[must_use]
+            pub fn name(self) -> &'static str {
+                match self { $(Method::$variant => stringify!($name),)* }
+            }
+
+            /// Its arguments, in order.
+            #[must_use]
+            pub fn arguments(self) -> &'static [Argument] {
+                match self { $(Method::$variant => &[$(argument!($argument)),*],)* }
+            }
+
+            /// The shape of its result.
+            #[must_use]
+            pub fn returns(self) -> Returns {
+                match self { $(Method::$variant => returns!($result),)* }
+            }
+
+            /// The trait method's documentation.
+            #[must_use]
+            pub fn doc(self) -> &'static str {
+                match self { $(Method::$variant => concat!($($doc, "\n"),*),)* }
+            }
+
+            /// A one-line summary, e.g. `g(q), with joint springs.`
+            #[must_use]
+            pub fn summary(self) -> &'static str {
+                match self { $(Method::$variant => $summary,)* }
+            }
+
+            /// The number of its equation in Niku, *Introduction to Robotics*, ch. 6.
+            #[must_use]
+            pub fn equation(self) -> Option<&'static str> {
+                match self { $(Method::$variant => $equation,)* }
+            }
+
+            /// The prefix of its output elements' names (`m` gives `m1_2`, `tau` gives `tau3`).
+            #[must_use]
+            pub fn prefix(self) -> &'static str {
+                match self { $(Method::$variant => $prefix,)* }
+            }
+
+            /// The doc template of an element, on the diagonal or not (`{i}`, `{j}`,
+            /// `{equation}` to fill in).
+            fn element_template(self, diagonal: bool) -> &'static str {
+                match self {
+                    $(Method::$variant => {
+                        let on_diagonal: Option<&'static str> = None $(.or(Some($diagonal)))?;
+                        match on_diagonal {
+                            Some(template) if diagonal => template,
+                            _ => $element,
+                        }
+                    })*
+                }
+            }
+        }
+    };
+}
+
+for_each_method!(declare_method);
+
+impl Method {
+    /// The outputs of `eq` it returns.
+    #[must_use]
+    pub fn shape(self, eq: &Equations) -> Shape<'_> {
+        match self {
+            Method::MassMatrix => Shape::Matrix(&eq.mass),
+            Method::CoriolisMatrix => Shape::Matrix(&eq.coriolis),
+            Method::CoriolisTorques => Shape::Vector(&eq.coriolis_torques),
+            Method::GravityTorques => Shape::Vector(&eq.gravity),
+            Method::BiasTorques => Shape::Vector(&eq.bias),
+            Method::InverseDynamics => Shape::Vector(&eq.tau),
+            Method::KineticEnergy => Shape::Scalar(eq.kinetic_energy),
+            Method::PotentialEnergy => Shape::Scalar(eq.potential_energy),
+        }
+    }
+
+    /// The method called `name`.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Method> {
+        Method::ALL.iter().copied().find(|m| m.name() == name)
+    }
+
+    /// What element `(i, j)` (from 0; `j` 0 for a vector, both for a scalar) is, in the
+    /// book's terms: short and ASCII, since a large robot has a hundred of them and non-ASCII
+    /// text is escaped in tokens.
+    #[must_use]
+    pub fn describe(self, i: usize, j: usize) -> String {
+        let diagonal = self.returns() == Returns::Matrix && i == j;
+        self.element_template(diagonal)
+            .replace("{i}", &(i + 1).to_string())
+            .replace("{j}", &(j + 1).to_string())
+            .replace("{equation}", self.equation().unwrap_or_default())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Method, Returns};
+
+    #[test]
+    fn elements_are_described_in_the_books_terms() {
+        let table = [
+            (Method::MassMatrix, 0, 1, "D12 = D21 (6.43)"),
+            (Method::MassMatrix, 2, 2, "D33 (6.43) + actuator inertia"),
+            (
+                Method::CoriolisMatrix,
+                1,
+                0,
+                "C21 = sum of D21k qd_k (6.44)",
+            ),
+            (
+                Method::CoriolisTorques,
+                3,
+                0,
+                "centripetal and Coriolis torque 4",
+            ),
+            (
+                Method::GravityTorques,
+                2,
+                0,
+                "D3 (6.45), gravity and spring",
+            ),
+            (
+                Method::BiasTorques,
+                0,
+                0,
+                "centripetal, Coriolis and gravity torque 1",
+            ),
+            (Method::InverseDynamics, 2, 0, "T3 (6.46)"),
+            (Method::PotentialEnergy, 0, 0, "potential energy"),
+        ];
+        for (method, i, j, text) in table {
+            assert_eq!(method.describe(i, j), text);
+        }
+    }
+
+    #[test]
+    fn every_method_is_complete() {
+        for &m in Method::ALL {
+            assert_eq!(Method::from_name(m.name()), Some(m));
+            assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
+            assert_eq!(m.arguments().first(), Some(&super::Argument::Q), "{m:?}");
+            let template = [m.element_template(false), m.element_template(true)];
+            let cites = template.iter().any(|t| t.contains("{equation}"));
+            assert!(!cites || m.equation().is_some(), "{m:?} cites no equation");
+            let indexed = |key| template.iter().all(|t| t.contains(key));
+            assert_eq!(indexed("{i}"), m.returns() != Returns::Scalar, "{m:?}");
+        }
+    }
+}
