@@ -2,7 +2,7 @@
 //! worked examples against the equations Niku prints, typed in below by hand from
 //! `shared/seed/niku-ch6-dynamic-and-force-analysis.txt` (over-dots, superscripts and fraction
 //! bars are lost in that extraction and were restored from the derivations around them;
-//! corrected where `ERRATA.md` says so).
+//! corrected where `docs/errata.md` says so).
 //!
 //! Both sides are parsed into terms. Two comparisons, both blind to the order of terms:
 //!
@@ -584,7 +584,7 @@ const EXAMPLE_6_8_DIJK: [[[&str; 2]; 2]; 2] = [
 /// I2(act) written I1act, I2act. Ours prints M = D + I(act) on the diagonal (`D11 + I1(act) = …`). The book writes
 /// D1 = ½ m1 g l C1 + ½ m2 g l C12 + m2 g l C1 without collecting C1 as (6.11) does, and T_i's
 /// I_i(act) θ̈_i apart from the θ̈_i group: those are compared by terms. The final T2 misprints
-/// I2(act) θ̈1 for I2(act) θ̈2 (ERRATA #1): corrected here.
+/// I2(act) θ̈1 for I2(act) θ̈2 (`docs/errata.md` #1): corrected here.
 #[test]
 fn example_6_8() {
     let x = Example::new("niku_example_6_8.toml", &[]);
