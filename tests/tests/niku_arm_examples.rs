@@ -241,13 +241,13 @@ struct NikuArm {
     i2: f64,
 }
 
-/// Example 6.8: the printed final T1 and T2, **T2 corrected per erratum 1 of `docs/errata.md`** (its actuator term
-/// is I2(act) θ̈2, printed I2(act) θ̈1); M = [D_ij] + diag(I1(act), I2(act)) with the printed
-/// D11, D12 = D21, D22 (eqs. 6.42/6.46); the printed D_ijk as Christoffel symbols,
-/// C_ij = Σ_k D_ijk q̇_k, and the velocity terms Σ_jk D_ijk q̇_j q̇_k of (6.46); the printed D1, D2.
-/// K = ½ Σ D_ij q̇_i q̇_j + ½ Σ I_i(act) q̇_i² (6.38, 6.39 with 6.43); P from (6.10) with
-/// l1 = l2 = l (the book: "the same as Eqs. (6.11) and (6.12)"). Ṁ: d/dt (m2 l² C2) =
-/// −m2 l² S2 θ̇2.
+/// Example 6.8: the printed final T1 and T2, **T2 corrected per erratum 1 of
+/// `docs/errata.md`** (its actuator term is I2(act) θ̈2, printed I2(act) θ̈1);
+/// M = [D_ij] + diag(I1(act), I2(act)) with the printed D11, D12 = D21, D22 (eqs. 6.42/6.46);
+/// the printed D_ijk as Christoffel symbols, C_ij = Σ_k D_ijk q̇_k, and the velocity terms
+/// Σ_jk D_ijk q̇_j q̇_k of (6.46); the printed D1, D2. K = ½ Σ D_ij q̇_i q̇_j + ½ Σ I_i(act) q̇_i²
+/// (6.38, 6.39 with 6.43); P from (6.10) with l1 = l2 = l (the book: "the same as Eqs. (6.11)
+/// and (6.12)"). Ṁ: d/dt (m2 l² C2) = −m2 l² S2 θ̇2.
 #[test]
 fn example_6_8_two_link_actuators() {
     let worst = check("6.8", 68, [Joint::Revolute, Joint::Revolute], |rng| {
@@ -258,100 +258,109 @@ fn example_6_8_two_link_actuators() {
             rng.range(1.0, 20.0),
         );
         let (i1, i2) = (rng.range(0.0, 0.5), rng.range(0.0, 0.5));
-        let ll = l * l;
-        // The printed D11, D12 = D21, D22.
-        let d = move |q: &[f64; 2]| {
-            let c2 = q[1].cos();
-            let d12 = m2 * ll / 3.0 + m2 * ll * c2 / 2.0;
-            [
-                [m1 * ll / 3.0 + 4.0 * m2 * ll / 3.0 + m2 * ll * c2, d12],
-                [d12, m2 * ll / 3.0],
-            ]
+        let robot = NikuArm {
+            l,
+            m1,
+            m2,
+            g,
+            i1,
+            i2,
         };
-        // The printed D_ijk: D111 = 0, D112 = D121 = −½ m2 l² S2, D122 = −½ m2 l² S2,
-        // D211 = ½ m2 l² S2, D212 = D221 = D222 = 0.
-        let dijk = move |q: &[f64; 2]| {
-            let h = m2 * ll * q[1].sin() / 2.0;
-            [[[0.0, -h], [-h, -h]], [[h, 0.0], [0.0, 0.0]]]
-        };
-        // The printed D1, D2.
-        let di = move |q: &[f64; 2]| {
-            let (c1, c12) = (q[0].cos(), (q[0] + q[1]).cos());
-            [
-                m1 * g * l * c1 / 2.0 + m2 * g * l * c12 / 2.0 + m2 * g * l * c1,
-                m2 * g * l * c12 / 2.0,
-            ]
-        };
-        let book = Book::new(move |q, qd, qdd| {
-            let (c1, c2, s2, c12) = (q[0].cos(), q[1].cos(), q[1].sin(), (q[0] + q[1]).cos());
-            let [t1d, t2d] = *qd;
-            let [t1dd, t2dd] = *qdd;
-            [
-                (m1 * ll / 3.0 + 4.0 * m2 * ll / 3.0 + m2 * ll * c2) * t1dd
-                    + (m2 * ll / 3.0 + m2 * ll * c2 / 2.0) * t2dd
-                    - m2 * ll * s2 * t2d * t2d / 2.0
-                    - m2 * ll * s2 * t1d * t2d
-                    + m1 * g * l * c1 / 2.0
-                    + m2 * g * l * c12 / 2.0
-                    + m2 * g * l * c1
-                    + i1 * t1dd,
-                (m2 * ll / 3.0 + m2 * ll * c2 / 2.0) * t1dd
-                    + m2 * ll * t2dd / 3.0
-                    + m2 * ll * s2 * t1d * t1d / 2.0
-                    + m2 * g * l * c12 / 2.0
-                    + i2 * t2dd, // docs/errata.md #1: printed `I2(act) θ̈1`
-            ]
-        })
-        .mass(move |q| {
-            let mut m = d(q);
-            m[0][0] += i1;
-            m[1][1] += i2;
-            m
-        })
-        .velocity(move |q, qd| {
-            let dq = dijk(q);
-            core::array::from_fn(|i| {
-                (0..2)
-                    .flat_map(|j| (0..2).map(move |k| (j, k)))
-                    .map(|(j, k)| dq[i][j][k] * qd[j] * qd[k])
-                    .sum()
-            })
-        })
-        .gravity(di)
-        .christoffel(dijk)
-        .mass_dot(move |q, qd| {
-            let h = -m2 * ll * q[1].sin() * qd[1];
-            [[h, h / 2.0], [h / 2.0, 0.0]]
-        })
-        .kinetic(move |q, qd| {
-            let m = d(q);
-            0.5 * (m[0][0] * qd[0] * qd[0]
-                + 2.0 * m[0][1] * qd[0] * qd[1]
-                + m[1][1] * qd[1] * qd[1])
-                + 0.5 * (i1 * qd[0] * qd[0] + i2 * qd[1] * qd[1])
-        })
-        .potential(move |q| {
-            let (s1, s12) = (q[0].sin(), (q[0] + q[1]).sin());
-            m1 * g * l / 2.0 * s1 + m2 * g * (l * s1 + l / 2.0 * s12)
-        });
-        (
-            NikuArm {
-                l,
-                m1,
-                m2,
-                g,
-                i1,
-                i2,
-            },
-            book,
-        )
+        let book = example_6_8_book(&robot);
+        (robot, book)
     });
     assert!(worst <= TOLERANCE);
 }
 
-/// The uncorrected erratum 1 (`docs/errata.md`): the printed T2 of Example 6.8 (actuator term `I2(act) θ̈1`) does
-/// not match the generated code, while the corrected one does (checked above), i.e. the
-/// erratum is real and the test can tell the difference.
+/// The formulas Example 6.8 prints, for one parameter set (see the test above).
+fn example_6_8_book(robot: &NikuArm) -> Book<2> {
+    let NikuArm {
+        l,
+        m1,
+        m2,
+        g,
+        i1,
+        i2,
+    } = *robot;
+    let ll = l * l;
+    // The printed D11, D12 = D21, D22.
+    let d = move |q: &[f64; 2]| {
+        let c2 = q[1].cos();
+        let d12 = m2 * ll / 3.0 + m2 * ll * c2 / 2.0;
+        [
+            [m1 * ll / 3.0 + 4.0 * m2 * ll / 3.0 + m2 * ll * c2, d12],
+            [d12, m2 * ll / 3.0],
+        ]
+    };
+    // The printed D_ijk: D111 = 0, D112 = D121 = −½ m2 l² S2, D122 = −½ m2 l² S2,
+    // D211 = ½ m2 l² S2, D212 = D221 = D222 = 0.
+    let dijk = move |q: &[f64; 2]| {
+        let h = m2 * ll * q[1].sin() / 2.0;
+        [[[0.0, -h], [-h, -h]], [[h, 0.0], [0.0, 0.0]]]
+    };
+    // The printed D1, D2.
+    let di = move |q: &[f64; 2]| {
+        let (c1, c12) = (q[0].cos(), (q[0] + q[1]).cos());
+        [
+            m1 * g * l * c1 / 2.0 + m2 * g * l * c12 / 2.0 + m2 * g * l * c1,
+            m2 * g * l * c12 / 2.0,
+        ]
+    };
+    Book::new(move |q, qd, qdd| {
+        let (c1, c2, s2, c12) = (q[0].cos(), q[1].cos(), q[1].sin(), (q[0] + q[1]).cos());
+        let [t1d, t2d] = *qd;
+        let [t1dd, t2dd] = *qdd;
+        [
+            (m1 * ll / 3.0 + 4.0 * m2 * ll / 3.0 + m2 * ll * c2) * t1dd
+                + (m2 * ll / 3.0 + m2 * ll * c2 / 2.0) * t2dd
+                - m2 * ll * s2 * t2d * t2d / 2.0
+                - m2 * ll * s2 * t1d * t2d
+                + m1 * g * l * c1 / 2.0
+                + m2 * g * l * c12 / 2.0
+                + m2 * g * l * c1
+                + i1 * t1dd,
+            (m2 * ll / 3.0 + m2 * ll * c2 / 2.0) * t1dd
+                + m2 * ll * t2dd / 3.0
+                + m2 * ll * s2 * t1d * t1d / 2.0
+                + m2 * g * l * c12 / 2.0
+                + i2 * t2dd, // docs/errata.md #1: printed `I2(act) θ̈1`
+        ]
+    })
+    .mass(move |q| {
+        let mut m = d(q);
+        m[0][0] += i1;
+        m[1][1] += i2;
+        m
+    })
+    .velocity(move |q, qd| {
+        let dq = dijk(q);
+        core::array::from_fn(|i| {
+            (0..2)
+                .flat_map(|j| (0..2).map(move |k| (j, k)))
+                .map(|(j, k)| dq[i][j][k] * qd[j] * qd[k])
+                .sum()
+        })
+    })
+    .gravity(di)
+    .christoffel(dijk)
+    .mass_dot(move |q, qd| {
+        let h = -m2 * ll * q[1].sin() * qd[1];
+        [[h, h / 2.0], [h / 2.0, 0.0]]
+    })
+    .kinetic(move |q, qd| {
+        let m = d(q);
+        0.5 * (m[0][0] * qd[0] * qd[0] + 2.0 * m[0][1] * qd[0] * qd[1] + m[1][1] * qd[1] * qd[1])
+            + 0.5 * (i1 * qd[0] * qd[0] + i2 * qd[1] * qd[1])
+    })
+    .potential(move |q| {
+        let (s1, s12) = (q[0].sin(), (q[0] + q[1]).sin());
+        m1 * g * l / 2.0 * s1 + m2 * g * (l * s1 + l / 2.0 * s12)
+    })
+}
+
+/// The uncorrected erratum 1 (`docs/errata.md`): the printed T2 of Example 6.8 (actuator term
+/// `I2(act) θ̈1`) does not match the generated code, while the corrected one does (checked
+/// above), i.e. the erratum is real and the test can tell the difference.
 #[test]
 fn example_6_8_printed_t2_erratum_1_is_detected() {
     let (l, m1, m2, g, i1, i2) = (0.7, 2.0, 1.5, 9.81, 0.05, 0.02);
