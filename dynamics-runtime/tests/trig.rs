@@ -11,7 +11,10 @@
 use dynamics_runtime::Real;
 use dynamics_test_support::Rng;
 
-/// Fast path bounds (`src/trig.rs`).
+mod ulp;
+use ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
+
+/// Fast path bounds (`src/trig/reduction.rs`).
 const BOUND_F64: f64 = 65_536.0;
 const BOUND_F32: f32 = 4_096.0;
 
@@ -53,80 +56,6 @@ const HARD_F32: [(u32, u32, u32); 12] = [
     (0x41BC7EDD, 0xBF800000, 0x33800ADD), // x = 23.56194496154785 (k = 15): sin = -1.0, cos = 5.962440496887211e-08
     (0x457CE5F1, 0x338FD1DE, 0x3F800000), // x = 4046.371337890625 (k = 2576): sin = 6.697131027522119e-08, cos = 1.0
 ];
-
-/// Spacing of the `f64`s at the magnitude of `y`.
-fn ulp_f64(y: f64) -> f64 {
-    let exponent = ((y.abs().to_bits() >> 52) as i32).max(1) - 1075;
-    2f64.powi(exponent)
-}
-
-/// Spacing of the `f32`s at the magnitude of `y`.
-fn ulp_f32(y: f64) -> f64 {
-    let exponent = y.abs().log2().floor().max(-126.0) as i32 - 23;
-    2f64.powi(exponent)
-}
-
-/// Error of `got` in ulps of `want`; 0 when both are the same NaN-ness or equal.
-fn err_f64(got: f64, want: f64) -> f64 {
-    if got == want || (got.is_nan() && want.is_nan()) {
-        0.0
-    } else {
-        (got - want).abs() / ulp_f64(want)
-    }
-}
-
-fn err_f32(got: f32, want: f64) -> f64 {
-    let got = f64::from(got);
-    if got == want || (got.is_nan() && want.is_nan()) {
-        0.0
-    } else {
-        (got - want).abs() / ulp_f32(want)
-    }
-}
-
-/// The worst error seen and where.
-#[derive(Default)]
-struct Worst {
-    ulp: f64,
-    at: f64,
-    count: usize,
-}
-
-impl Worst {
-    fn see(&mut self, ulp: f64, at: f64) {
-        self.count += 1;
-        if ulp > self.ulp || ulp.is_nan() {
-            self.ulp = ulp;
-            self.at = at;
-        }
-    }
-
-    fn check(&self, what: &str, max: f64) {
-        println!(
-            "{what}: worst {:.3} ulp at x = {:e} ({} arguments)",
-            self.ulp, self.at, self.count
-        );
-        assert!(
-            self.ulp <= max,
-            "{what}: {} ulp at x = {:e} (allowed {max})",
-            self.ulp,
-            self.at
-        );
-    }
-}
-
-/// Compares `f64` sine and cosine with std at `x`.
-fn see_f64(worst: &mut Worst, x: f64) {
-    let (s, c) = Real::sin_cos(x);
-    worst.see(err_f64(s, x.sin()).max(err_f64(c, x.cos())), x);
-}
-
-/// Compares `f32` sine and cosine with std's `f64` ones at `x`.
-fn see_f32(worst: &mut Worst, x: f32) {
-    let (s, c) = Real::sin_cos(x);
-    let wide = f64::from(x);
-    worst.see(err_f32(s, wide.sin()).max(err_f32(c, wide.cos())), wide);
-}
 
 fn in_fast_f64(x: f64) -> bool {
     x.abs() <= BOUND_F64
