@@ -1,6 +1,6 @@
 //! The book's printed closed forms, term by term: the robot is parsed from its attributes, its
 //! equations derived, and each output's exact canonical polynomial compared with the printed
-//! expression (Niku ch. 6, corrected per `shared/seed/ERRATA.md`).
+//! expression (Niku ch. 6, corrected per `docs/errata.md`).
 
 use dynamics_codegen::inspect::Poly;
 use dynamics_codegen::symbolic::NodeId;
@@ -102,7 +102,7 @@ fn example_6_8_gravity() {
 }
 
 /// The final T1 and T2 of Example 6.8; T2 ends in I2(act) θ̈2, not the printed I2(act) θ̈1
-/// (ERRATA #1).
+/// (`docs/errata.md` #1).
 #[test]
 fn example_6_8_equations_of_motion() {
     let eq = equations(EXAMPLE_6_8);

@@ -2,35 +2,16 @@
 //! random robot tables, random description files and hand-made adversarial inputs go through
 //! the front end and the generator (the library functions, not rustc). Each expansion runs on
 //! its own thread under `catch_unwind` and must finish within [`BOUND`]. The generator is
-//! deterministic (a fixed-seed xorshift), so a failure is reproducible; the case is printed.
+//! deterministic (a fixed-seed generator), so a failure is reproducible; the case is printed.
 
 use dynamics_codegen::{derive_dynamics, front};
+use dynamics_test_support::Rng;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 /// Time allowed for one expansion. The largest inputs here (6 joints) expand in well under
 /// 0.1 s; the bound leaves room for a loaded 2-core machine.
 const BOUND: Duration = Duration::from_secs(10);
-
-/// xorshift64*: small, seeded, reproducible.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        usize::try_from(self.next() % n as u64).unwrap_or(0)
-    }
-
-    fn pick<'a>(&mut self, items: &[&'a str]) -> &'a str {
-        items[self.below(items.len())]
-    }
-}
 
 /// Runs `f` on a thread: `Err` if it panicked or took longer than [`BOUND`].
 fn bounded<T: Send + 'static>(
@@ -238,7 +219,7 @@ fn random_robot(rng: &mut Rng) -> String {
 
 #[test]
 fn mutated_inputs_never_panic_or_hang() {
-    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut rng = Rng::new(0x9E37_79B9_7F4A_7C15);
     let mut slowest = Duration::ZERO;
     for k in 0..1500 {
         let source = mutate(&mut rng, VALID[k % VALID.len()]);
@@ -249,7 +230,7 @@ fn mutated_inputs_never_panic_or_hang() {
 
 #[test]
 fn random_robots_never_panic_or_hang() {
-    let mut rng = Rng(0x0123_4567_89AB_CDEF);
+    let mut rng = Rng::new(0x0123_4567_89AB_CDEF);
     let mut slowest = Duration::ZERO;
     let mut expanded = 0;
     for _ in 0..120 {
@@ -311,7 +292,7 @@ fn adversarial_inputs_never_panic_or_hang() {
 fn random_description_files_never_panic_or_hang() {
     let toml = include_str!("../../robots/puma560.toml");
     let json = include_str!("../../tests/data/reference/robots/stanford.json");
-    let mut rng = Rng(0xDEAD_BEEF_CAFE_F00D);
+    let mut rng = Rng::new(0xDEAD_BEEF_CAFE_F00D);
     for k in 0..600 {
         let (path, base) = if k % 2 == 0 {
             ("r.toml", toml)

@@ -69,7 +69,7 @@ impl Robot {
     /// The description gives the inertia *tensor* `I_C` about the centre of mass, whose
     /// off-diagonal entries are `−∫xy dm` etc., while (6.37) uses the positive products
     /// `∫xy dm` and moments about the frame origin. Conversion (see the project's
-    /// `ERRATA.md`): parallel axis `I_O = I_C + m (cᵀc·1 − c cᵀ)`, then
+    /// `docs/errata.md`): parallel axis `I_O = I_C + m (cᵀc·1 − c cᵀ)`, then
     /// `Σ = ½ tr(I_O)·1 − I_O` (whose diagonal is (6.37)'s `(−Ixx + Iyy + Izz)/2` etc.
     /// and whose off-diagonal is `+∫xy dm`).
     ///

@@ -3,18 +3,19 @@
 
 mod common;
 
-use common::{all_robots, matrix4_error, matrix_error, scaled_error, Lcg};
+use common::{all_robots, matrix4_error, matrix_error, scaled_error};
 use dynamics_reference::nalgebra::{DMatrix, DVector};
 use dynamics_reference::{JointKind, Robot};
+use dynamics_test_support::Rng;
 
 /// Random state within the ranges of the reference data.
-fn random_state(robot: &Robot, rng: &mut Lcg) -> (Vec<f64>, Vec<f64>) {
+fn random_state(robot: &Robot, rng: &mut Rng) -> (Vec<f64>, Vec<f64>) {
     let q = robot
         .joints
         .iter()
         .map(|j| match j.kind {
-            JointKind::Revolute => rng.uniform(-std::f64::consts::PI, std::f64::consts::PI),
-            JointKind::Prismatic => rng.uniform(-0.5, 1.0),
+            JointKind::Revolute => rng.range(-std::f64::consts::PI, std::f64::consts::PI),
+            JointKind::Prismatic => rng.range(-0.5, 1.0),
         })
         .collect();
     let qd = rng.vector(robot.dof(), -2.0, 2.0);
@@ -41,7 +42,7 @@ fn directional_derivative(
 
 #[test]
 fn christoffel_symbols_are_symmetric_and_mass_matrix_is_symmetric() {
-    let mut rng = Lcg::new(1);
+    let mut rng = Rng::new(1);
     for robot in all_robots() {
         for _ in 0..3 {
             let (q, _) = random_state(&robot, &mut rng);
@@ -72,7 +73,7 @@ fn christoffel_symbols_are_symmetric_and_mass_matrix_is_symmetric() {
 
 #[test]
 fn mass_matrix_derivative_equals_c_plus_c_transpose() {
-    let mut rng = Lcg::new(2);
+    let mut rng = Rng::new(2);
     let mut worst = 0.0_f64;
     for robot in all_robots() {
         for _ in 0..3 {
@@ -90,7 +91,7 @@ fn mass_matrix_derivative_equals_c_plus_c_transpose() {
 #[test]
 fn christoffel_symbols_match_derivatives_of_the_mass_matrix() {
     // D_ijk = ½ (∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)
-    let mut rng = Lcg::new(3);
+    let mut rng = Rng::new(3);
     for robot in all_robots() {
         let n = robot.dof();
         let (q, _) = random_state(&robot, &mut rng);
@@ -110,7 +111,7 @@ fn christoffel_symbols_match_derivatives_of_the_mass_matrix() {
 
 #[test]
 fn coriolis_matrix_times_velocity_equals_double_sum() {
-    let mut rng = Lcg::new(4);
+    let mut rng = Rng::new(4);
     for robot in all_robots() {
         let (q, qd) = random_state(&robot, &mut rng);
         let via_matrix = robot.coriolis_matrix(&q, &qd) * DVector::from_column_slice(&qd);
@@ -124,7 +125,7 @@ fn coriolis_matrix_times_velocity_equals_double_sum() {
 
 #[test]
 fn kinetic_energy_is_half_qd_m_qd() {
-    let mut rng = Lcg::new(5);
+    let mut rng = Rng::new(5);
     for robot in all_robots() {
         let (q, qd) = random_state(&robot, &mut rng);
         let v = DVector::from_column_slice(&qd);
@@ -136,12 +137,12 @@ fn kinetic_energy_is_half_qd_m_qd() {
 
 #[test]
 fn gravity_torques_are_the_gradient_of_the_potential_energy_with_springs() {
-    let mut rng = Lcg::new(6);
+    let mut rng = Rng::new(6);
     for mut robot in all_robots() {
         // None of the reference robots has springs: add some to cover that term too.
         for joint in &mut robot.joints {
-            joint.spring_stiffness = rng.uniform(0.0, 50.0);
-            joint.spring_rest = rng.uniform(-0.5, 0.5);
+            joint.spring_stiffness = rng.range(0.0, 50.0);
+            joint.spring_rest = rng.range(-0.5, 0.5);
         }
         let n = robot.dof();
         let (q, _) = random_state(&robot, &mut rng);
@@ -162,7 +163,7 @@ fn gravity_torques_are_the_gradient_of_the_potential_energy_with_springs() {
 #[test]
 fn equations_of_motion_equal_lagrange_equations_by_finite_differences() {
     // tau = d/dt(∂K/∂qd) − ∂K/∂q + ∂P/∂q along a short trajectory q(t) = q + qd t + ½ qdd t².
-    let mut rng = Lcg::new(7);
+    let mut rng = Rng::new(7);
     for robot in all_robots() {
         let n = robot.dof();
         let (q, qd) = random_state(&robot, &mut rng);
@@ -200,7 +201,7 @@ fn equations_of_motion_equal_lagrange_equations_by_finite_differences() {
 
 #[test]
 fn link_transform_derivatives_match_finite_differences_in_both_conventions() {
-    let mut rng = Lcg::new(8);
+    let mut rng = Rng::new(8);
     for robot in all_robots() {
         let (q, _) = random_state(&robot, &mut rng);
         let h = 1e-6;
@@ -232,7 +233,7 @@ fn link_transform_derivatives_match_finite_differences_in_both_conventions() {
 #[test]
 fn jacobian_maps_joint_velocity_to_frame_velocity() {
     // v = d/dt p, [ω]× = Ṙ Rᵀ, by central differences along q(t) = q + qd t.
-    let mut rng = Lcg::new(9);
+    let mut rng = Rng::new(9);
     for robot in all_robots() {
         let (q, qd) = random_state(&robot, &mut rng);
         let h = 1e-6;

@@ -3,10 +3,11 @@
 
 mod common;
 
-use common::{load_robot, matrix4_error, Lcg};
+use common::{load_robot, matrix4_error};
 use dynamics_reference::nalgebra::{DMatrix, Matrix4};
 use dynamics_reference::statics::{equivalent_wrench, joint_forces};
 use dynamics_reference::{q_matrix, JointKind};
+use dynamics_test_support::Rng;
 
 fn assert_close(actual: f64, expected: f64, what: &str) {
     let err = (actual - expected).abs() / expected.abs().max(1.0);
@@ -55,15 +56,15 @@ fn example_6_10_equivalent_wrench_in_frame_b() {
 /// displacement of the object, and the transformation is consistent with T = JᵀF.
 #[test]
 fn equivalent_wrench_preserves_virtual_work() {
-    let mut rng = Lcg::new(610);
+    let mut rng = Rng::new(610);
     // A random frame B: rotation from a product of elementary rotations.
-    let b = dynamics_reference::rot_z(rng.uniform(-3.0, 3.0))
-        * dynamics_reference::rot_x(rng.uniform(-3.0, 3.0))
-        * dynamics_reference::rot_z(rng.uniform(-3.0, 3.0));
+    let b = dynamics_reference::rot_z(rng.range(-3.0, 3.0))
+        * dynamics_reference::rot_x(rng.range(-3.0, 3.0))
+        * dynamics_reference::rot_z(rng.range(-3.0, 3.0));
     let mut b = b;
-    b[(0, 3)] = rng.uniform(-2.0, 2.0);
-    b[(1, 3)] = rng.uniform(-2.0, 2.0);
-    b[(2, 3)] = rng.uniform(-2.0, 2.0);
+    b[(0, 3)] = rng.range(-2.0, 2.0);
+    b[(1, 3)] = rng.range(-2.0, 2.0);
+    b[(2, 3)] = rng.range(-2.0, 2.0);
     let w: Vec<f64> = rng.vector(6, -10.0, 10.0);
     let wrench = [w[0], w[1], w[2], w[3], w[4], w[5]];
     let bw = equivalent_wrench(&b, wrench);
@@ -95,10 +96,10 @@ fn example_6_6_stanford_u_matrices_are_products_with_q() {
     let robot = load_robot("stanford");
     assert_eq!(robot.joints[1].kind, JointKind::Revolute);
     assert_eq!(robot.joints[2].kind, JointKind::Prismatic);
-    let mut rng = Lcg::new(66);
+    let mut rng = Rng::new(66);
     for _ in 0..5 {
         let mut q = rng.vector(6, -3.0, 3.0);
-        q[2] = rng.uniform(-0.5, 1.0);
+        q[2] = rng.range(-0.5, 1.0);
         let a: Vec<Matrix4<f64>> = (0..6).map(|i| robot.link_transform(i, q[i])).collect();
         let qm: Vec<Matrix4<f64>> = robot.joints.iter().map(|j| q_matrix(j.kind)).collect();
         // Book: A1..A6 = a[0]..a[5], Q2 = qm[1], Q3 = qm[2], Q5 = qm[4].
@@ -126,7 +127,7 @@ fn example_6_6_stanford_u_matrices_are_products_with_q() {
 
 /// Example 6.8: the printed `D_ij`, `D_ijk` and `D_i` of the planar RR arm with equal
 /// links (`niku_2link`: l = 0.7, m1 = 2, m2 = 1.5, I1(act) = 0.05, I2(act) = 0.02,
-/// gravity −y, g = 9.81), and its final T1 and T2 (T2 with erratum 1 of ERRATA.md
+/// gravity −y, g = 9.81), and its final T1 and T2 (T2 with erratum 1 of `docs/errata.md`
 /// corrected: `I2(act) θ̈2`, printed `I2(act) θ̈1`).
 #[test]
 fn example_6_8_two_link_arm_coefficients() {
@@ -148,9 +149,9 @@ fn example_6_8_two_link_arm_coefficients() {
         assert!(err < 1e-15, "J{} ({err:e})", i + 1);
     }
 
-    let mut rng = Lcg::new(68);
+    let mut rng = Rng::new(68);
     let mut states = vec![[0.0, 0.0], [0.3, -1.1], [std::f64::consts::FRAC_PI_2, 2.0]];
-    states.extend((0..5).map(|_| [rng.uniform(-3.2, 3.2), rng.uniform(-3.2, 3.2)]));
+    states.extend((0..5).map(|_| [rng.range(-3.2, 3.2), rng.range(-3.2, 3.2)]));
     for q in states {
         let (t1, t2) = (q[0], q[1]);
         let (c1, c2, s2, c12) = (t1.cos(), t2.cos(), t2.sin(), (t1 + t2).cos());
@@ -196,7 +197,7 @@ fn example_6_8_two_link_arm_coefficients() {
             let expected_t2 = d12 * qdd[0] + d22 * qdd[1] + d211 * qd[0] * qd[0] + d2 + i2 * qdd[1];
             assert_close(tau[0], expected_t1, "T1");
             assert_close(tau[1], expected_t2, "T2");
-            // The printed T2 has I2(act) θ̈1 instead (erratum 1): it differs by
+            // The printed T2 has I2(act) θ̈1 instead (`docs/errata.md` #1): it differs by
             // I2(act) (θ̈2 − θ̈1) whenever the accelerations differ.
             let printed_t2 = expected_t2 - i2 * qdd[1] + i2 * qdd[0];
             assert_close(tau[1] - printed_t2, i2 * (qdd[1] - qdd[0]), "erratum 1");

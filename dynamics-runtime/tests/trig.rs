@@ -9,8 +9,12 @@
 //! cases; `-- --ignored` also runs the exhaustive test of every `f32` of the fast range.
 
 use dynamics_runtime::Real;
+use dynamics_test_support::Rng;
 
-/// Fast path bounds (`src/trig.rs`).
+mod ulp;
+use ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
+
+/// Fast path bounds (`src/trig/reduction.rs`).
 const BOUND_F64: f64 = 65_536.0;
 const BOUND_F32: f32 = 4_096.0;
 
@@ -53,114 +57,13 @@ const HARD_F32: [(u32, u32, u32); 12] = [
     (0x457CE5F1, 0x338FD1DE, 0x3F800000), // x = 4046.371337890625 (k = 2576): sin = 6.697131027522119e-08, cos = 1.0
 ];
 
-/// SplitMix64: a small deterministic generator, so that failures reproduce.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-
-    /// A finite `f64` of either sign whose biased exponent is uniform over `exponents`
-    /// (log-uniform magnitude), with a random significand.
-    fn log_uniform(&mut self, exponents: std::ops::RangeInclusive<u64>) -> f64 {
-        let span = exponents.end() - exponents.start() + 1;
-        let exponent = exponents.start() + self.next() % span;
-        let bits = self.next();
-        f64::from_bits((bits & 0x800F_FFFF_FFFF_FFFF) | (exponent << 52))
-    }
-}
-
-/// Spacing of the `f64`s at the magnitude of `y`.
-fn ulp_f64(y: f64) -> f64 {
-    let exponent = ((y.abs().to_bits() >> 52) as i32).max(1) - 1075;
-    2f64.powi(exponent)
-}
-
-/// Spacing of the `f32`s at the magnitude of `y`.
-fn ulp_f32(y: f64) -> f64 {
-    let exponent = y.abs().log2().floor().max(-126.0) as i32 - 23;
-    2f64.powi(exponent)
-}
-
-/// Error of `got` in ulps of `want`; 0 when both are the same NaN-ness or equal.
-fn err_f64(got: f64, want: f64) -> f64 {
-    if got == want || (got.is_nan() && want.is_nan()) {
-        0.0
-    } else {
-        (got - want).abs() / ulp_f64(want)
-    }
-}
-
-fn err_f32(got: f32, want: f64) -> f64 {
-    let got = f64::from(got);
-    if got == want || (got.is_nan() && want.is_nan()) {
-        0.0
-    } else {
-        (got - want).abs() / ulp_f32(want)
-    }
-}
-
-/// The worst error seen and where.
-#[derive(Default)]
-struct Worst {
-    ulp: f64,
-    at: f64,
-    count: usize,
-}
-
-impl Worst {
-    fn see(&mut self, ulp: f64, at: f64) {
-        self.count += 1;
-        if ulp > self.ulp || ulp.is_nan() {
-            self.ulp = ulp;
-            self.at = at;
-        }
-    }
-
-    fn check(&self, what: &str, max: f64) {
-        println!(
-            "{what}: worst {:.3} ulp at x = {:e} ({} arguments)",
-            self.ulp, self.at, self.count
-        );
-        assert!(
-            self.ulp <= max,
-            "{what}: {} ulp at x = {:e} (allowed {max})",
-            self.ulp,
-            self.at
-        );
-    }
-}
-
-/// Compares `f64` sine and cosine with std at `x`.
-fn see_f64(worst: &mut Worst, x: f64) {
-    let (s, c) = Real::sin_cos(x);
-    worst.see(err_f64(s, x.sin()).max(err_f64(c, x.cos())), x);
-}
-
-/// Compares `f32` sine and cosine with std's `f64` ones at `x`.
-fn see_f32(worst: &mut Worst, x: f32) {
-    let (s, c) = Real::sin_cos(x);
-    let wide = f64::from(x);
-    worst.see(err_f32(s, wide.sin()).max(err_f32(c, wide.cos())), wide);
-}
-
 fn in_fast_f64(x: f64) -> bool {
     x.abs() <= BOUND_F64
 }
 
 #[test]
 fn f64_random_over_all_exponents() {
-    let mut rng = Rng(1);
+    let mut rng = Rng::new(1);
     let (mut fast, mut slow) = (Worst::default(), Worst::default());
     for _ in 0..400_000 {
         let x = rng.log_uniform(0..=2046);
@@ -177,10 +80,10 @@ fn f64_random_over_all_exponents() {
 
 #[test]
 fn f32_random_over_all_exponents() {
-    let mut rng = Rng(2);
+    let mut rng = Rng::new(2);
     let (mut fast, mut slow) = (Worst::default(), Worst::default());
     for _ in 0..400_000 {
-        let bits = rng.next() as u32;
+        let bits = rng.next_u64() as u32;
         let x = f32::from_bits(bits & 0x807F_FFFF | ((bits >> 8) % 255) << 23);
         see_f32(
             if x.abs() <= BOUND_F32 {
@@ -261,10 +164,10 @@ fn near_multiples_of_quarter_pi() {
     let (mut wide, mut narrow) = (Worst::default(), Worst::default());
     // Every multiple of π/4 up to 1000 turns for f64 (and all up to the f32 bound), then
     // random ones up to the bound; each with 8 neighbours on either side.
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     let last = (BOUND_F64 / FRAC_PI_4) as i64;
     let ks = (-8000..=8000)
-        .chain((0..20_000).map(|_| (rng.next() % (2 * last as u64 + 1)) as i64 - last));
+        .chain((0..20_000).map(|_| (rng.next_u64() % (2 * last as u64 + 1)) as i64 - last));
     for k in ks {
         let centre = k as f64 * FRAC_PI_4;
         for step in -8..=8 {
@@ -428,7 +331,7 @@ fn nan_and_infinities_give_nan() {
 
 #[test]
 fn pythagoras_symmetry_and_bounds() {
-    let mut rng = Rng(4);
+    let mut rng = Rng::new(4);
     for _ in 0..200_000 {
         let x = (rng.unit() * 2.0 - 1.0) * BOUND_F64 * rng.unit().powi(8);
         let (s, c) = Real::sin_cos(x);

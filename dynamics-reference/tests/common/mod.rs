@@ -57,29 +57,3 @@ pub fn matrix_error(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
 pub fn matrix4_error(a: &Matrix4<f64>, b: &Matrix4<f64>) -> f64 {
     scaled_error(a.as_slice(), b.as_slice())
 }
-
-/// Tiny deterministic pseudo-random generator (64-bit LCG), so the tests need no
-/// extra dependency and are reproducible.
-pub struct Lcg(u64);
-
-impl Lcg {
-    pub fn new(seed: u64) -> Self {
-        Lcg(seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407))
-    }
-
-    /// Uniform in `[lo, hi)`.
-    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        let unit = (self.0 >> 11) as f64 / (1u64 << 53) as f64;
-        lo + (hi - lo) * unit
-    }
-
-    pub fn vector(&mut self, n: usize, lo: f64, hi: f64) -> Vec<f64> {
-        (0..n).map(|_| self.uniform(lo, hi)).collect()
-    }
-}

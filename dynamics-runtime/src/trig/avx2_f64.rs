@@ -1,0 +1,84 @@
+//! `super::scalar::fast_f64` on four lanes of AVX2 registers. The functions are `unsafe` only
+//! because they are `#[target_feature]` functions (as the crate's minimum Rust version
+//! requires); their bodies are plain arithmetic on registers. They are `#[inline]` (here and in
+//! the SSE modules) so that the generated code, in the user's crate, can inline them where its
+//! build has the feature: otherwise each call crosses the crate as a real call, its arguments
+//! and results through memory, which costs more than the sines and cosines themselves save.
+
+use super::kernels::{
+    C1_F64, C2_F64, C3_F64, C4_F64, C5_F64, C6_F64, S1_F64, S2_F64, S3_F64, S4_F64, S5_F64, S6_F64,
+};
+use super::reduction::{BOUND_F64, P1_F64, P2_F64, P3_F64, SHIFT_F64, TINY_F64};
+use core::arch::x86_64::{
+    __m256d, _mm256_add_epi64, _mm256_add_pd, _mm256_and_pd, _mm256_and_si256, _mm256_andnot_pd,
+    _mm256_blendv_pd, _mm256_castpd256_pd128, _mm256_castpd_si256, _mm256_castsi256_pd,
+    _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_extractf128_pd, _mm256_movemask_pd, _mm256_mul_pd,
+    _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set_pd, _mm256_slli_epi64, _mm256_sub_pd,
+    _mm256_xor_pd, _mm_cvtsd_f64, _mm_unpackhi_pd, _CMP_GE_OQ, _CMP_LE_OQ,
+};
+
+/// The four lanes of `v`.
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn lanes(v: __m256d) -> [f64; 4] {
+    let lo = _mm256_castpd256_pd128(v);
+    let hi = _mm256_extractf128_pd::<1>(v);
+    [
+        _mm_cvtsd_f64(lo),
+        _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo)),
+        _mm_cvtsd_f64(hi),
+        _mm_cvtsd_f64(_mm_unpackhi_pd(hi, hi)),
+    ]
+}
+
+/// `a·b + c` on four lanes, fused where the build has FMA (as `super::scalar::fma_f64`).
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn fma(a: __m256d, b: __m256d, c: __m256d) -> __m256d {
+    #[cfg(target_feature = "fma")]
+    return core::arch::x86_64::_mm256_fmadd_pd(a, b, c);
+    #[cfg(not(target_feature = "fma"))]
+    return _mm256_add_pd(_mm256_mul_pd(a, b), c);
+}
+
+/// Whether all four `|x|` lie in `[TINY_F64, BOUND_F64]` (a NaN does not): two vector
+/// comparisons and one mask, where four scalar tests take a dozen instructions and branches.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) unsafe fn in_fast_range(x: [f64; 4]) -> bool {
+    let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
+    let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
+    let low = _mm256_cmp_pd::<_CMP_GE_OQ>(abs, _mm256_set1_pd(TINY_F64));
+    let high = _mm256_cmp_pd::<_CMP_LE_OQ>(abs, _mm256_set1_pd(BOUND_F64));
+    _mm256_movemask_pd(_mm256_and_pd(low, high)) == 0b1111
+}
+
+/// `(sin x, cos x)` of four arguments in the fast range: `super::scalar::fast_f64` lane by lane,
+/// the quadrant chosen by a swap (odd `k`) and two sign flips instead of the table.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) unsafe fn fast_4(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
+    let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
+    let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
+        x,
+        |c: f64| _mm256_set1_pd(c),
+        |a, b| _mm256_add_pd(a, b),
+        |a, b| _mm256_sub_pd(a, b),
+        |a, b| _mm256_mul_pd(a, b),
+        |a, b, c| fma(a, b, c)
+    );
+
+    // k mod 4 is in the low bits of `shifted`.
+    let bits = _mm256_castpd_si256(shifted);
+    let one = _mm256_set1_epi64x(1);
+    let two = _mm256_set1_epi64x(2);
+    let odd = _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(bits, one), one));
+    let sin_k = _mm256_blendv_pd(sin_r, cos_r, odd);
+    let cos_k = _mm256_blendv_pd(cos_r, sin_r, odd);
+    let sin_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(bits, two));
+    let cos_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(_mm256_add_epi64(bits, one), two));
+    (
+        lanes(_mm256_xor_pd(sin_k, _mm256_castsi256_pd(sin_sign))),
+        lanes(_mm256_xor_pd(cos_k, _mm256_castsi256_pd(cos_sign))),
+    )
+}

@@ -1,0 +1,75 @@
+//! Sine and cosine of one argument together, for `f64` and `f32`: one range reduction shared
+//! by both, two polynomial kernels evaluated side by side, and a branch-free choice of quadrant (by a
+//! table of 0 and ±1 coefficients).
+//!
+//! `x = k·π/2 + r` with `k` the integer nearest `x·2/π` and `|r| ≤ π/4` (a hair more when
+//! `x·2/π` rounds across a half-integer, which the kernels tolerate). Then `sin x` and `cos x`
+//! are `±sin r` or `±cos r`, chosen by `k mod 4`.
+//!
+//! **Reduction (Cody-Waite).** π/2 is split into parts `P1 + P2 + … ≈ π/2` whose leading
+//! parts have so few significant bits that `k·P1`, `k·P2`, … are exact for every `k` of the
+//! fast range; `x − k·P1` is then exact too (Sterbenz: `x` and `k·P1` are within a factor of
+//! two). The rounding error of the next subtraction is recovered exactly with Fast2Sum or
+//! TwoSum, so `r` comes out as an unevaluated sum `r + r_lo`. The parts, the bound and the
+//! exactness conditions were checked with exact rational arithmetic over every `k` of the fast
+//! range, at the double nearest each `k·π/2` (where `|r|` is smallest; the smallest of all is
+//! 2^-60.5, at `x ≈ 45.55`, for `f64` and 2^-27.8, at `x ≈ 252.9`, for `f32`): the reduced
+//! argument's relative error is below 2^-61 for `f64` and 2^-32 for `f32`.
+//!
+//! * `f64`: parts of 35, 35 and 53 bits, fast for `|x| ≤ 2^16` (`|k| < 2^16`).
+//! * `f32`: parts of 12, 12, 12 and 22 bits, fast for `|x| ≤ 2^12` (`|k| < 2^12`), computed in
+//!   `f32` throughout, for single-precision FPUs without `f64` hardware.
+//!
+//! **Kernels.** The minimax polynomials of fdlibm on [−π/4, π/4]: for `f64`, those of Sun's
+//! `k_sin.c` and `k_cos.c` (fdlibm 5.3, 1993; both accurate to 2^-58), for `f32`, those of
+//! FreeBSD's `k_sinf.c` and `k_cosf.c` (Bruce D. Evans, 2005), rounded to `f32`. Both are in
+//! `z = r²`, evaluated in Estrin form on shared powers of `z`, and carry `r_lo` to first order:
+//! `sin(r + r_lo) ≈ sin r + r_lo·(1 − z/2)`, `cos(r + r_lo) ≈ cos r − r·r_lo`.
+//! `cos r = 1 − z/2 + …` adds the rounding error of `1 − z/2` back in (it is exact by Fast2Sum),
+//! which keeps `cos` near π/4 within an ulp. Where the build has FMA (x86-64 with
+//! `-C target-cpu=native` or `+fma`), the polynomials' multiply-adds are fused, and so are the
+//! exact products `k·P1`, `k·P2` (and `k·P3` for `f32`) with their subtractions, which changes
+//! no bit there, and `x·2/π` with the shift that rounds it to an integer: a shorter chain of
+//! dependent operations, the same on the scalar and the vector paths. The generated code
+//! waits for the sines and cosines before anything else, so each step off the chain counts.
+//!
+//! **Outside the fast range.** Tiny arguments (`|x| < 2^-27`, `2^-12` for `f32`) return
+//! `(x, 1)`, which is the correctly rounded result, keeps the sign of `±0` and never squares a
+//! subnormal. Larger arguments than the bound, `±∞` and NaN go to `libm` (NaN in, NaN out).
+//!
+//! **Accuracy.** Within an ulp of the correctly rounded values (mpmath) in the fast range, for
+//! `f64` on random arguments and for `f32` on every argument; `tests/trig.rs` holds the bounds
+//! and the hardest cases. The measured errors and costs are in `docs/performance.md`.
+//!
+//! **Four at once** (`Real::sin_cos_4`, which generated code calls for groups of four joints):
+//! on x86-64 the same operations run in vector lanes, bit for bit the results of one at a time.
+//! `f64` uses the four lanes of AVX2 where the build enables it (`-C target-cpu=native`), else
+//! two SSE2 registers of two lanes, which every x86-64 build has; `f32` uses the four lanes of
+//! SSE. Elsewhere, and whenever an argument is outside the fast range, one at a time.
+//!
+//! The files, by job: [`reduction`] (the constants of the reduction), [`kernels`] (the
+//! polynomials and the one body of reduction and kernels that every path expands), [`scalar`]
+//! (one argument), [`four`] (four arguments: the choice of path), and the vector lanes
+//! `avx2_f64`, `sse2_f64` and `sse_f32`.
+
+// Constants are written as published (kernels) or as exact decimal expansions (parts of π/2).
+#![allow(clippy::excessive_precision)]
+
+#[macro_use]
+mod kernels;
+mod four;
+mod reduction;
+mod scalar;
+
+#[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+#[allow(unsafe_code)]
+mod avx2_f64;
+#[cfg(all(target_arch = "x86_64", not(target_feature = "avx2")))]
+#[allow(unsafe_code)]
+mod sse2_f64;
+#[cfg(target_arch = "x86_64")]
+#[allow(unsafe_code)]
+mod sse_f32;
+
+pub(crate) use four::{sin_cos_4_f32, sin_cos_4_f64};
+pub(crate) use scalar::{sin_cos_f32, sin_cos_f64};
