@@ -1,0 +1,142 @@
+//! The command line, declared for clap: every subcommand, option and help text.
+
+use clap::{Args, Parser, Subcommand};
+use std::str::FromStr;
+
+/// The closed-form equations of motion of a serial robot, from its description file.
+#[derive(Parser, Debug)]
+#[command(
+    name = "dynamics",
+    version,
+    subcommand_required = true,
+    arg_required_else_help = true
+)]
+#[command(after_help = "ROBOT is a description file (.json or .toml), as \
+                        `#[dynamics(file = \"...\")]` reads it.")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Print the equations of motion in the book's notation (Niku, chapter 6)
+    Inspect(Inspect),
+    /// Print a standalone Rust module with the code `#[derive(Dynamics)]` generates
+    Emit(RobotFile),
+    /// Print expansion time, operation counts, depth and code size per method
+    Stats(RobotFile),
+    /// Print τ, M, C and g at one state
+    Eval(Eval),
+}
+
+#[derive(Args, Debug)]
+pub struct RobotFile {
+    /// The robot's description file (.json or .toml)
+    #[arg(value_name = "ROBOT")]
+    pub path: String,
+}
+
+#[derive(Args, Debug)]
+pub struct Inspect {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// LaTeX instead of plain text
+    #[arg(long)]
+    pub latex: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct Eval {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// Joint positions, one per joint (rad or m)
+    // Hyphen values: `--q -0.5,1` is a list, not a flag.
+    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
+    pub q: Numbers,
+    /// Joint velocities, one per joint [default: 0]
+    #[arg(long, value_name = "QD1,QD2,..", allow_hyphen_values = true)]
+    pub qd: Option<Numbers>,
+    /// Joint accelerations, one per joint [default: 0]
+    #[arg(long, value_name = "QDD1,QDD2,..", allow_hyphen_values = true)]
+    pub qdd: Option<Numbers>,
+    /// The value of a parameter of the robot; once for each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Print JSON: {"tau": [..], "M": [[..]..], "C": [[..]..], "g": [..]}
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// A comma-separated list of finite numbers: `1,2.5,-3`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Numbers(pub Vec<f64>);
+
+impl FromStr for Numbers {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        text.split(',')
+            .map(finite)
+            .collect::<Result<_, _>>()
+            .map(Numbers)
+    }
+}
+
+/// `--set NAME=VALUE`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setting {
+    pub name: String,
+    pub value: f64,
+}
+
+impl FromStr for Setting {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        let (name, value) = text
+            .split_once('=')
+            .filter(|(name, _)| !name.trim().is_empty())
+            .ok_or_else(|| "expected NAME=VALUE".to_string())?;
+        Ok(Setting {
+            name: name.trim().to_string(),
+            value: finite(value)?,
+        })
+    }
+}
+
+fn finite(text: &str) -> Result<f64, String> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .filter(|x| x.is_finite())
+        .ok_or_else(|| format!("`{text}` is not a finite number"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_declaration_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn lists_and_settings() {
+        assert_eq!("1, -2.5,3e1".parse(), Ok(Numbers(vec![1.0, -2.5, 30.0])));
+        assert!("1,,2".parse::<Numbers>().is_err());
+        assert!("1,inf".parse::<Numbers>().is_err());
+        assert_eq!(
+            "m=-3".parse(),
+            Ok(Setting {
+                name: "m".into(),
+                value: -3.0
+            })
+        );
+        for bad in ["m", "=3", "m=", "m=x", "m=NaN"] {
+            assert!(bad.parse::<Setting>().is_err(), "{bad}");
+        }
+    }
+}

@@ -1,0 +1,79 @@
+//! One module per subcommand; what they share: reading the description file and the names the
+//! generated code uses.
+
+mod emit;
+mod eval;
+mod inspect;
+mod stats;
+
+use crate::args::Command;
+use dynamics_codegen::check;
+use dynamics_codegen::front;
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::Equations;
+use proc_macro2::{Span, TokenStream};
+use quote::quote;
+
+/// Why a command failed.
+pub enum Failure {
+    /// A usage error found after parsing (a list of the wrong length, a missing parameter):
+    /// reported as clap reports its own, exit code 2.
+    Usage(clap::Error),
+    /// The description file cannot be read or fails the checks: `file:line:col: message`
+    /// lines, exit code 1.
+    File(String),
+}
+
+/// Runs `command`; what it prints.
+pub fn run(command: &Command) -> Result<String, Failure> {
+    match command {
+        Command::Inspect(args) => inspect::run(args),
+        Command::Emit(args) => emit::run(&args.path),
+        Command::Stats(args) => stats::run(&args.path),
+        Command::Eval(args) => eval::run(args),
+    }
+}
+
+/// Reads and checks a description file as the derive does (values, then the physical checks
+/// of each link and the joint count); errors carry `file:line:col`.
+fn load(path: &str) -> Result<Robot, Failure> {
+    let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
+    let loaded = front::load(path, &text).map_err(|e| Failure::File(format!("{path}:{e}")))?;
+    let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
+        .iter()
+        .map(|problem| loaded.describe(path, problem))
+        .collect();
+    if problems.is_empty() {
+        Ok(loaded.robot)
+    } else {
+        Err(Failure::File(problems.join("\ndynamics: ")))
+    }
+}
+
+/// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for.
+fn type_name(name: &str) -> syn::Ident {
+    let mut out = String::new();
+    for part in name.split(|c: char| !c.is_ascii_alphanumeric()) {
+        let mut chars = part.chars();
+        if let Some(c) = chars.next() {
+            out.push(c.to_ascii_uppercase());
+            out.extend(chars);
+        }
+    }
+    if out.is_empty() || out.starts_with(|c: char| c.is_ascii_digit()) {
+        out.insert_str(0, "Robot");
+    }
+    syn::Ident::new(&out, Span::call_site())
+}
+
+/// The struct's fields, one per parameter, as the generated code reads them: `self.m1`, ...
+fn field_idents(eq: &Equations) -> Vec<syn::Ident> {
+    eq.fields
+        .iter()
+        .map(|f| syn::Ident::new(f, Span::call_site()))
+        .collect()
+}
+
+fn self_fields(idents: &[syn::Ident]) -> Vec<TokenStream> {
+    idents.iter().map(|i| quote!(self.#i)).collect()
+}

@@ -1,0 +1,102 @@
+//! `dynamics stats ROBOT`: expansion time, operation counts, longest chain of operations and
+//! code size per method, and the cost of the readable equations the derive adds.
+
+use super::{field_idents, load, self_fields, type_name, Failure};
+use dynamics_codegen::inspect::{inspect, Format, Limits};
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::{derive, generate, Equations, Generated};
+use quote::quote;
+use std::fmt::Write;
+use std::time::Instant;
+
+pub fn run(path: &str) -> Result<String, Failure> {
+    let robot = load(path)?;
+    let start = Instant::now();
+    let eq = derive(&robot);
+    let generated = generate(&eq, self_fields(&field_idents(&eq)));
+    let elapsed = start.elapsed();
+    let mut out = format!(
+        "{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms\n",
+        robot.name,
+        eq.dof,
+        eq.graph.len(),
+        elapsed.as_secs_f64() * 1e3
+    );
+    out += &methods(&generated);
+    // With the signatures, the struct and the forwarding impl around them.
+    let krate = quote!(::dynamics_runtime);
+    let ty = type_name(&robot.name);
+    let items = generated.items(&krate, &ty, &syn::Generics::default(), &|_| None);
+    let _ = writeln!(
+        out,
+        "all items the derive emits: {} bytes",
+        items.to_string().len()
+    );
+    out += &readable(&eq, &robot);
+    Ok(out)
+}
+
+/// The table: per method its operations, depth and bytes; the shared code's bytes; the total.
+fn methods(generated: &Generated) -> String {
+    let mut out = format!(
+        "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}\n",
+        "method", "mul", "add", "neg", "div", "trig", "flops", "depth", "bytes"
+    );
+    let mut total = 0;
+    for (name, shared) in [
+        ("(configuration)", &generated.configuration),
+        ("(motion)", &generated.motion),
+    ] {
+        if let Some(c) = shared {
+            let bytes = c.tokens.to_string().len();
+            total += bytes;
+            let _ = writeln!(
+                out,
+                "{:<18} {:>49} {:>9}",
+                name, "computed once, counted below", bytes
+            );
+        }
+    }
+    for m in &generated.methods {
+        let bytes = m.body.to_string().len();
+        total += bytes;
+        let o = m.ops;
+        let _ = writeln!(
+            out,
+            "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}",
+            m.name,
+            o.mul,
+            o.add,
+            o.neg,
+            o.div,
+            o.trig,
+            o.flops(),
+            o.depth,
+            bytes
+        );
+    }
+    let _ = writeln!(out, "total generated code: {total} bytes");
+    out
+}
+
+/// What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, within its limits.
+fn readable(eq: &Equations, robot: &Robot) -> String {
+    let start = Instant::now();
+    let inspection = inspect(eq, robot, Limits::DERIVE);
+    let (text, latex) = (
+        inspection.render(Format::Text),
+        inspection.render(Format::Latex),
+    );
+    let elapsed = start.elapsed();
+    format!(
+        "readable equations in the derive: {:.1} ms, {} + {} bytes (text + LaTeX), {}\n",
+        elapsed.as_secs_f64() * 1e3,
+        text.len(),
+        latex.len(),
+        if inspection.complete() {
+            "complete"
+        } else {
+            "capped: some sections point to `dynamics inspect`"
+        }
+    )
+}
