@@ -1,5 +1,6 @@
 //! The `dynamics` command end to end: `eval --json` against Pinocchio's reference data, errors
-//! in description files reported as `file:line:col`, usage errors, `stats` and `inspect`.
+//! in description files reported as `file:line:col`, usage errors and help (clap's), `--`,
+//! numbers without a negative zero, `stats` and `inspect`.
 //! (`emit` is checked by the golden test and compiled by the `emitted_puma560` example.)
 
 use dynamics_reference::scaled_error;
@@ -15,9 +16,13 @@ fn root() -> PathBuf {
 }
 
 fn dynamics(args: &[&str]) -> Output {
+    dynamics_in(&root(), args)
+}
+
+fn dynamics_in(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_dynamics"))
         .args(args)
-        .current_dir(root())
+        .current_dir(dir)
         .output()
         .expect("run dynamics")
 }
@@ -254,28 +259,164 @@ fn check_inertia_opt_out() {
     assert!(out.contains("D11 = 0.35"), "{out}");
 }
 
+/// Usage errors are clap's: exit code 2, the message on stderr, nothing on stdout. A missing file is not a usage error (exit code 1).
 #[test]
 fn usage_errors() {
     for (args, says) in [
-        (vec![], "no command"),
-        (vec!["frobnicate", "robots/puma560.toml"], "unknown command"),
-        (vec!["inspect"], "needs a ROBOT file"),
+        (vec![], "Usage: dynamics <COMMAND>"),
+        (
+            vec!["frobnicate", "robots/puma560.toml"],
+            "unrecognized subcommand 'frobnicate'",
+        ),
+        (vec!["inspect"], "required arguments were not provided"),
         (
             vec!["inspect", "robots/puma560.toml", "--tex"],
-            "unexpected argument `--tex`",
+            "unexpected argument '--tex'",
+        ),
+        (vec!["eval", "robots/puma560.toml"], "--q <Q1,Q2,..>"),
+        (
+            vec!["eval", "robots/puma560.toml", "--q", "0,x,0"],
+            "`x` is not a finite number",
+        ),
+        (
+            vec!["eval", "robots/puma560.toml", "--q", "0", "--q", "1"],
+            "cannot be used multiple times",
+        ),
+        (
+            vec![
+                "eval",
+                "robots/niku_example_6_1.toml",
+                "--q",
+                "0",
+                "--set",
+                "m",
+            ],
+            "expected NAME=VALUE",
         ),
     ] {
         let out = dynamics(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(out.stdout.is_empty(), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert!(
-            err.contains(says) && err.contains("usage:"),
-            "{args:?}: {err}"
-        );
+        assert!(err.contains(says), "{args:?}: {err}");
+        // clap's ending (or, with no command at all, its help)
+        assert!(err.contains("--help"), "{args:?}: {err}");
     }
     let out = dynamics(&["inspect", "robots/nowhere.toml"]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("robots/nowhere.toml"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("robots/nowhere.toml: "));
+}
+
+/// `COMMAND --help` prints, on stdout with exit code 0, the command's one-line about, its usage
+/// and every option; `help COMMAND` prints the same.
+#[test]
+fn help_of_each_command() {
+    for (command, about, options) in [
+        (
+            "inspect",
+            "the equations of motion",
+            &["<ROBOT>", "--latex"][..],
+        ),
+        ("emit", "a standalone Rust module", &["<ROBOT>"][..]),
+        ("stats", "operation counts", &["<ROBOT>"][..]),
+        (
+            "eval",
+            "τ, M, C and g at one state",
+            &[
+                "<ROBOT>",
+                "--q <",
+                "--qd <",
+                "--qdd <",
+                "--set <NAME=VALUE>",
+                "--json",
+            ][..],
+        ),
+    ] {
+        let help = stdout(&dynamics(&[command, "--help"]));
+        let first = help.lines().next().unwrap_or_default();
+        assert!(first.contains(about), "{command}: {help}");
+        assert!(
+            help.contains(&format!("Usage: dynamics {command} ")),
+            "{command}: {help}"
+        );
+        for option in options {
+            assert!(help.contains(option), "{command}: no {option} in {help}");
+        }
+        assert_eq!(stdout(&dynamics(&["help", command])), help);
+    }
+    let help = stdout(&dynamics(&["--help"]));
+    for command in ["inspect", "emit", "stats", "eval"] {
+        assert!(help.contains(&format!("  {command}  ")), "{help}");
+    }
+}
+
+#[test]
+fn version() {
+    let out = stdout(&dynamics(&["--version"]));
+    assert_eq!(out, format!("dynamics {}\n", env!("CARGO_PKG_VERSION")));
+}
+
+/// After `--` an argument that looks like an option is the ROBOT file; before it, it is an
+/// unknown option.
+#[test]
+fn double_dash_ends_the_options() {
+    let dir = std::env::temp_dir().join(format!("dynamics-cli-dash-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    // One link of length 2 with a point mass 3 at its end, turning in the plane of gravity.
+    std::fs::write(
+        dir.join("-x.json"),
+        r#"{"name": "arm", "gravity": [0, -9.81, 0], "joints": [{"type": "revolute", "a": 2, "mass": 3}]}"#,
+    )
+    .expect("write");
+    let out = dynamics_in(&dir, &["eval", "--q", "0", "--json", "--", "-x.json"]);
+    let got: Value = serde_json::from_str(&stdout(&out)).expect("JSON");
+    // Held horizontal: τ = m g a = 3 · 9.81 · 2; M = m a² = 12.
+    assert!((numbers(&got["tau"])[0] - 58.86).abs() < 1e-12, "{got}");
+    assert!((numbers(&got["M"])[0] - 12.0).abs() < 1e-12, "{got}");
+
+    // Read as the short option `-x`.
+    let out = dynamics_in(&dir, &["inspect", "-x.json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("unexpected argument '-x'"), "{err}");
+}
+
+/// At rest (q̇ = 0) the Coriolis matrix, linear in q̇, is exactly zero: every entry prints as
+/// an unsigned zero, in text and in JSON, as does every other zero (PUMA 560 at q = 0 has
+/// entries that come out as -0.0 in floating point).
+#[test]
+fn zeros_print_without_sign() {
+    let args = ["eval", "robots/puma560.toml", "--q", "0,0,0,0,0,0"];
+    let text = stdout(&dynamics(&args));
+    assert!(!text.contains("-0.000000e0"), "{text}");
+    let c: Vec<&str> = text
+        .lines()
+        .skip_while(|l| !l.starts_with("C ="))
+        .skip(1)
+        .take(6)
+        .collect();
+    for row in &c {
+        let entries: Vec<&str> = row
+            .trim()
+            .trim_matches(['[', ']'])
+            .split_whitespace()
+            .collect();
+        assert_eq!(entries, ["0.000000e0"; 6], "{text}");
+    }
+
+    let json = stdout(&dynamics(&[&args[..], &["--json"]].concat()));
+    let tokens: Vec<&str> = json
+        .split(|c: char| !(c.is_ascii_digit() || "-.eE".contains(c)))
+        .collect();
+    assert!(!tokens.contains(&"-0.0"), "{json}");
+    let got: Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(numbers(&got["C"]), [0.0; 36]);
+    for x in ["tau", "M", "C", "g"]
+        .iter()
+        .flat_map(|k| numbers(&got[*k]))
+    {
+        assert!(x != 0.0 || x.is_sign_positive(), "{json}");
+    }
 }
 
 /// `stats` lists the eight methods with their operation counts; the shared code's and the

@@ -38,7 +38,15 @@ pub fn run(command: &Command) -> Result<String, Failure> {
 /// of each link and the joint count); errors carry `file:line:col`.
 fn load(path: &str) -> Result<Robot, Failure> {
     let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    let loaded = front::load(path, &text).map_err(|e| Failure::File(format!("{path}:{e}")))?;
+    let loaded = front::load(path, &text).map_err(|e| {
+        // `file:line:col: message`, or `file: message` when the error has no place.
+        let sep = if e.line.is_some() && e.column.is_some() {
+            ":"
+        } else {
+            ": "
+        };
+        Failure::File(format!("{path}{sep}{e}"))
+    })?;
     let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
         .iter()
         .map(|problem| loaded.describe(path, problem))
