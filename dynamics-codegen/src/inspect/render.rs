@@ -37,7 +37,7 @@ impl Inspection {
         let _ = writeln!(out, "{comment}joint variables {}", joints.join(", "));
         let _ = writeln!(
             out,
-            "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …; θ̇, θ̈: velocity, acceleration"
+            "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …; θi' = dθi/dt, θi'' = d²θi/dt²"
         );
         if self.offsets {
             let _ = writeln!(
