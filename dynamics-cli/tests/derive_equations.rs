@@ -1,9 +1,10 @@
-//! What the derive adds for reading: `EQUATIONS`, `EQUATIONS_LATEX` and the equations in the
-//! rustdoc of their impl, and the cap that keeps a large robot's derive fast. Run on the
-//! generator library directly, as the proc macro does.
+//! What the derive adds for reading: `equations()`, `equations_latex()` (and the hidden
+//! constants `EQUATIONS`, `EQUATIONS_LATEX` they return), the equations in the rustdoc of
+//! their impl, and the cap that keeps a large robot's derive fast. Run on the generator
+//! library directly, as the proc macro does.
 
 use dynamics_codegen::{derive_dynamics, front};
-use quote::{format_ident, quote};
+use quote::{format_ident, quote, ToTokens};
 use std::time::Instant;
 
 /// The `&'static str` literal assigned to `name` in the derive's output.
@@ -35,8 +36,8 @@ fn constant(out: &syn::File, name: &str) -> String {
     panic!("no constant {name}");
 }
 
-/// The doc of the impl that holds `EQUATIONS`.
-fn impl_doc(out: &syn::File) -> String {
+/// The inherent impl that holds `EQUATIONS`.
+fn equations_impl(out: &syn::File) -> &syn::ItemImpl {
     for item in &out.items {
         let syn::Item::Const(c) = item else { continue };
         let syn::Expr::Block(b) = c.expr.as_ref() else {
@@ -50,27 +51,38 @@ fn impl_doc(out: &syn::File) -> String {
                 .items
                 .iter()
                 .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"));
-            if imp.trait_.is_some() || !holds_equations {
-                continue;
+            if imp.trait_.is_none() && holds_equations {
+                return imp;
             }
-            let mut doc = String::new();
-            for a in &imp.attrs {
-                if let syn::Meta::NameValue(nv) = &a.meta {
-                    if nv.path.is_ident("doc") {
-                        if let syn::Expr::Lit(syn::ExprLit {
-                            lit: syn::Lit::Str(s),
-                            ..
-                        }) = &nv.value
-                        {
-                            doc.push_str(&s.value());
-                        }
-                    }
-                }
-            }
-            return doc;
         }
     }
     panic!("no inherent impl");
+}
+
+/// The text of the `#[doc = "…"]` attributes, and whether one is `#[doc(hidden)]`.
+fn doc_of(attrs: &[syn::Attribute]) -> (String, bool) {
+    let mut doc = String::new();
+    let mut hidden = false;
+    for a in attrs.iter().filter(|a| a.path().is_ident("doc")) {
+        match &a.meta {
+            syn::Meta::NameValue(syn::MetaNameValue {
+                value:
+                    syn::Expr::Lit(syn::ExprLit {
+                        lit: syn::Lit::Str(s),
+                        ..
+                    }),
+                ..
+            }) => doc.push_str(&s.value()),
+            syn::Meta::List(l) => hidden |= l.tokens.to_string() == "hidden",
+            _ => {}
+        }
+    }
+    (doc, hidden)
+}
+
+/// The doc of the impl that holds `EQUATIONS`.
+fn impl_doc(out: &syn::File) -> String {
+    doc_of(&equations_impl(out).attrs).0
 }
 
 fn expand(input: proc_macro2::TokenStream) -> syn::File {
@@ -90,12 +102,63 @@ fn equations_in_constants_and_rustdoc() {
     });
     let text = constant(&out, "EQUATIONS");
     let latex = constant(&out, "EQUATIONS_LATEX");
-    assert!(text.contains("T1 = 1/3 m l² θ̈1 + 1/2 m g l C1"), "{text}");
+    assert!(text.contains("T1 = 1/3 m l² θ1'' + 1/2 m g l C1"), "{text}");
     assert!(latex.contains(r"\begin{align*}"), "{latex}");
     let doc = impl_doc(&out);
     assert!(doc.contains("The equations of motion of `Rod`"), "{doc}");
     // the text in a fenced block, so that rustdoc shows it as written
     assert!(doc.contains(&format!("```text\n{text}```")), "{doc}");
+}
+
+/// rustdoc prints a constant's whole value, escaped (`\u{3b8}`), on the type's page: the
+/// constants are hidden, and documented functions return them.
+#[test]
+fn constants_hidden_behind_documented_functions() {
+    let out = expand(quote! {
+        #[dynamics(gravity = [0, -9.81, 0], dh = [[q, 0, l, 0]], link(mass = m))]
+        struct Rod { m: f64, l: f64 }
+    });
+    let imp = equations_impl(&out);
+    let mut seen = Vec::new();
+    for item in &imp.items {
+        match item {
+            syn::ImplItem::Const(k) => {
+                assert!(doc_of(&k.attrs).1, "{} is not hidden", k.ident);
+                seen.push(k.ident.to_string());
+            }
+            syn::ImplItem::Fn(f) => {
+                let (doc, hidden) = doc_of(&f.attrs);
+                let name = f.sig.ident.to_string();
+                assert!(
+                    !hidden && doc.contains("equations of motion"),
+                    "{name}: {doc}"
+                );
+                assert!(
+                    f.sig.constness.is_some() && f.sig.inputs.is_empty(),
+                    "{name}"
+                );
+                let body = f.block.to_token_stream().to_string();
+                let constant = if name == "equations" {
+                    "EQUATIONS"
+                } else {
+                    "EQUATIONS_LATEX"
+                };
+                assert_eq!(body, format!("{{ Self :: {constant} }}"), "{name}");
+                seen.push(name);
+            }
+            _ => panic!("unexpected item"),
+        }
+    }
+    seen.sort();
+    assert_eq!(
+        seen,
+        [
+            "EQUATIONS",
+            "EQUATIONS_LATEX",
+            "equations",
+            "equations_latex"
+        ]
+    );
 }
 
 /// The 7-joint arm with its 70 inertial parameters as fields: the expansion of the readable

@@ -21,6 +21,10 @@
 //! The equation of motion is `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46). `C` is built
 //! from the Christoffel symbols of `M`, so `Ṁ − 2C` is skew-symmetric.
 //!
+//! A derived type's `equations()` prints these in the book's notation, with θ̇_i, θ̈_i written
+//! `θi'`, `θi''` (`di'`, `di''` for a prismatic joint): a combining dot does not show in
+//! rustdoc's code font.
+//!
 //! # Example
 //!
 //! ```

@@ -1,5 +1,6 @@
 //! The book's printed equations as data: a parser of printed sums
-//! (`-1/2 m2 l1 l2 S2 θ̇2² + (1/2 m1 + m2) g l1 C1`) into [`Term`]s, their expansion into
+//! (`-1/2 m2 l1 l2 S2 θ̇2² + (1/2 m1 + m2) g l1 C1`, or the generator's `θ2'²`) into
+//! [`Term`]s, their expansion into
 //! monomials with exact rational coefficients ([`expand`]) and their grouped form ([`form`]),
 //! so that `tests/tests/readable_book.rs` can compare the generator's readable equations with
 //! the book's, blind to the order of terms.
@@ -66,6 +67,9 @@ impl std::fmt::Display for Q {
 
 // ---------------------------------------------------------------------------------------------
 // Printed sums: `-1/2 m2 l1 l2 S2 θ̇2² + (1/2 m1 + m2) g l1 C1`
+//
+// Time derivatives come in two notations: the book's dots over the letter (`θ̇2`, `ẍ`) and
+// the generator's primes after the index (`θ2'`, `x''`). Both parse to the primed name.
 
 /// A printed term: coefficient, groups in parentheses and factors with exponents.
 #[derive(Clone, Debug)]
@@ -89,7 +93,7 @@ enum Token {
 }
 
 fn tokens(text: &str) -> Vec<Token> {
-    // Letters with a precomposed dot as the generator writes them: letter + combining dot.
+    // Letters with a precomposed dot as letter + combining dot, which `primed` rewrites.
     let text = text
         .replace('ẋ', "x\u{307}")
         .replace('ẍ', "x\u{308}")
@@ -191,12 +195,34 @@ impl Parser {
     }
 }
 
-/// `l1²` → (`l1`, 2).
+/// A dotted name in primes: `θ̇2` → `θ2'`, `x\u{308}` → `x''`; primed names unchanged.
+fn primed(name: &str) -> String {
+    let order: usize = name
+        .chars()
+        .map(|c| match c {
+            '\u{307}' => 1,
+            '\u{308}' => 2,
+            _ => 0,
+        })
+        .sum();
+    let plain: String = name
+        .chars()
+        .filter(|c| !matches!(c, '\u{307}' | '\u{308}'))
+        .collect();
+    assert!(
+        order == 0 || !plain.contains('\''),
+        "dots and primes in {name}"
+    );
+    plain + &"'".repeat(order)
+}
+
+/// `l1²` → (`l1`, 2), `θ̇2²` → (`θ2'`, 2).
 fn power(w: &str) -> (String, u32) {
     let base = w.trim_end_matches(|c| SUPERSCRIPTS.contains(&c));
     let sup = &w[base.len()..];
+    let base = primed(base);
     if sup.is_empty() {
-        return (base.to_string(), 1);
+        return (base, 1);
     }
     let digits: String = sup
         .chars()
@@ -208,7 +234,7 @@ fn power(w: &str) -> (String, u32) {
             char::from(b'0' + u8::try_from(d).expect("digit"))
         })
         .collect();
-    (base.to_string(), digits.parse().expect("exponent"))
+    (base, digits.parse().expect("exponent"))
 }
 
 pub fn parse(text: &str) -> Vec<Term> {
@@ -222,19 +248,25 @@ pub fn parse(text: &str) -> Vec<Term> {
     s
 }
 
-/// Renames factors (the book's variables to the generator's).
+/// Renames factors (the book's variables to the generator's), with their derivatives:
+/// `("x", "d1")` also renames `x'` to `d1'` and `x''` to `d1''`.
 pub fn rename(terms: &mut [Term], names: &[(&str, &str)]) {
     for t in terms {
         t.factors = std::mem::take(&mut t.factors)
             .into_iter()
             .map(|(f, e)| {
+                let base = f.trim_end_matches('\'');
+                let primes = &f[base.len()..];
                 let f = names
                     .iter()
-                    .find(|(from, _)| *from == f)
-                    .map_or(f, |(_, to)| (*to).to_string());
+                    .find(|(from, _)| *from == base)
+                    .map_or(f.clone(), |(_, to)| format!("{to}{primes}"));
                 (f, e)
             })
-            .collect();
+            .fold(BTreeMap::new(), |mut m, (f, e)| {
+                *m.entry(f).or_insert(0) += e;
+                m
+            });
         for g in &mut t.groups {
             rename(g, names);
         }

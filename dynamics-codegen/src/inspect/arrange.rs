@@ -1,5 +1,5 @@
 //! Arranging a polynomial's terms for reading: grouped by their accelerations and velocities
-//! (`(…) θ̈1`, `… θ̇1 θ̇2`), then by their sines and cosines with the common parameters taken
+//! (`(…) θ1''`, `… θ1' θ2'`), then by their sines and cosines with the common parameters taken
 //! out (`(1/2 m1 + m2) g l1 C1`).
 
 use super::{Monomial, Sym};

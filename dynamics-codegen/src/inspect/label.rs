@@ -33,7 +33,7 @@ impl Quantity {
         match self {
             Quantity::Inertia => "Inertia D_ij (eq. 6.43); M = D with the actuator inertia I_i(act) on the diagonal (6.39)",
             Quantity::Christoffel => "Centripetal and Coriolis coefficients D_ijk (eq. 6.44; D_ijk = D_ikj)",
-            Quantity::Coriolis => "Coriolis matrix C_ij = Σ_k D_ijk θ̇_k",
+            Quantity::Coriolis => "Coriolis matrix C_ij = Σ_k D_ijk θ_k'",
             Quantity::Gravity => "Gravity D_i (eq. 6.45), with joint springs",
             Quantity::Torque => "Joint torques and forces T_i (eq. 6.46)",
         }

@@ -1,13 +1,14 @@
 //! Readable closed forms: the equations of motion printed as a person writes them, in the
-//! notation of Niku ch. 6 (`T_i = Σ_j D_ij θ̈_j + I_i(act) θ̈_i + Σ_jk D_ijk θ̇_j θ̇_k + D_i`,
-//! eqs. 6.43–6.46), as plain text or LaTeX.
+//! notation of Niku ch. 6 (`T_i = Σ_j D_ij θj'' + I_i(act) θi'' + Σ_jk D_ijk θj' θk' + D_i`,
+//! eqs. 6.43–6.46), as plain text or LaTeX. Plain text writes the book's dots as primes
+//! (`θ1'`, `θ1''`), which read the same in a terminal and in rustdoc's code font.
 //!
 //! Each output of the [`Equations`] is expanded into its exact canonical polynomial
 //! ([`Poly`], in `expand`), then rewritten for reading:
 //!
 //! * products of sines and cosines of joint angles fold back into those of sums
 //!   (`C1 C2 − S1 S2` → `C12`, `S1 C2 + C1 S2` → `S12`; `fold`);
-//! * terms are grouped by their accelerations and velocities (`(…) θ̈1`, `… θ̇1 θ̇2`), and
+//! * terms are grouped by their accelerations and velocities (`(…) θ1''`, `… θ1' θ2'`), and
 //!   terms sharing a sine or cosine are grouped with their common parameters taken out
 //!   (`(1/2 m1 + m2) g l1 C1`; `arrange`);
 //! * each equation is named by a typed label (`D12`, `D11 + I1(act)`; `label`) and printed

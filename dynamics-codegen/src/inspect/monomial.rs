@@ -1,4 +1,4 @@
-//! A product of symbols with positive integer exponents, `m2 l1² C12 θ̇1`: the key of a
+//! A product of symbols with positive integer exponents, `m2 l1² C12 θ1'`: the key of a
 //! polynomial's terms and the factors of a printed term.
 
 use super::Sym;

@@ -1,5 +1,9 @@
 //! Printing of arranged terms as a person writes them, in the notation of Niku ch. 6: plain
-//! text (`1/2 m2 l1 l2 S2 θ̇1²`) or LaTeX (`\frac{1}{2} m_{2} … \dot{\theta}_{1}^{2}`).
+//! text (`1/2 m2 l1 l2 S2 θ1'²`) or LaTeX (`\frac{1}{2} m_{2} … \dot{\theta}_{1}^{2}`).
+//!
+//! Plain text writes the book's dots as primes after the index (`θ1'` for θ̇1, `d2''` for
+//! d̈2): a combining dot over `θ` is invisible or misplaced in rustdoc's code font, which made
+//! `S2 θ̇2` read as `S2 θ2` (docs/design.md, "Primes for dots").
 
 use super::arrange::Term;
 use super::number::{decimal, is_small_fraction};
@@ -10,7 +14,7 @@ use crate::symbolic::Number;
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
-    /// Plain text (UTF-8): `1/2 m2 l1 l2 S2 θ̇1²`.
+    /// Plain text (UTF-8): `1/2 m2 l1 l2 S2 θ1'²`, velocities and accelerations primed.
     Text,
     /// LaTeX math: `\frac{1}{2} m_{2} l_{1} l_{2} S_{2} \dot{\theta}_{1}^{2}`.
     Latex,
@@ -79,13 +83,13 @@ impl Printer<'_> {
             }
             Sym::Qd(i) | Sym::Qdd(i) => {
                 let letter = self.joint_letter(usize::from(*i));
-                let dots = match (matches!(s, Sym::Qdd(_)), self.latex()) {
-                    (false, true) => return format!("\\dot{{{letter}}}{}", index(i)),
-                    (true, true) => return format!("\\ddot{{{letter}}}{}", index(i)),
-                    (false, false) => '\u{307}',
-                    (true, false) => '\u{308}',
-                };
-                format!("{letter}{dots}{}", index(i))
+                let second = matches!(s, Sym::Qdd(_));
+                match (second, self.latex()) {
+                    (false, true) => format!("\\dot{{{letter}}}{}", index(i)),
+                    (true, true) => format!("\\ddot{{{letter}}}{}", index(i)),
+                    (false, false) => format!("{letter}{}'", index(i)),
+                    (true, false) => format!("{letter}{}''", index(i)),
+                }
             }
         }
     }

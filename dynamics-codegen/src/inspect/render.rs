@@ -25,19 +25,32 @@ impl Inspection {
     /// The robot's name, its joint variables and the notation.
     fn header(&self, p: &Printer<'_>) -> String {
         let comment = if p.latex() { "% " } else { "" };
-        let joints: Vec<String> = (0..self.kinds.len())
-            .map(|i| format!("{}{}", p.joint_letter(i), p.indices(&[i])))
-            .collect();
+        let joints = |primes: &str| {
+            let names: Vec<String> = (0..self.kinds.len())
+                .map(|i| format!("{}{}{primes}", p.joint_letter(i), p.indices(&[i])))
+                .collect();
+            names.join(", ")
+        };
         let mut out = String::new();
         let _ = writeln!(
             out,
             "{comment}{}: equations of motion in the notation of Niku, Introduction to Robotics, ch. 6",
             self.name
         );
-        let _ = writeln!(out, "{comment}joint variables {}", joints.join(", "));
+        let mut variables = joints("");
+        if !p.latex() {
+            // Primes, not the book's dots (see `print`): named here, as the book never does.
+            let _ = write!(
+                variables,
+                "; velocities {}; accelerations {}",
+                joints("'"),
+                joints("''")
+            );
+        }
+        let _ = writeln!(out, "{comment}joint variables {variables}");
         let _ = writeln!(
             out,
-            "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …; θ̇, θ̈: velocity, acceleration"
+            "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …"
         );
         if self.offsets {
             let _ = writeln!(

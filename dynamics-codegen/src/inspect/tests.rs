@@ -46,11 +46,13 @@ fn grouping_and_common_factors() {
     reads! {
         // accelerations first, then velocities, then gravity with its common factor out
         "m*g*l*C1/2 + M*g*l*C1 + qdd1*a*C3 + qdd1*b + qd3^2*c*S3" =>
-            "(b + a C3) θ̈1 + c S3 θ̇3² + (M + 1/2 m) g l C1",
-        "-a*qd1*qd3 - b*C3*qd1*qd3" => "-(a + b C3) θ̇1 θ̇3",
+            "(b + a C3) θ1'' + c S3 θ3'² + (M + 1/2 m) g l C1",
+        "-a*qd1*qd3 - b*C3*qd1*qd3" => "-(a + b C3) θ1' θ3'",
         "0" => "0",
-        "-1/2*m2*l1*l2*S3*qd1^2" => "-1/2 m2 l1 l2 S3 θ̇1²",
-        "k*q2*qd2" => "k d2 d\u{307}2",
+        "-1/2*m2*l1*l2*S3*qd1^2" => "-1/2 m2 l1 l2 S3 θ1'²",
+        "k*q2*qd2" => "k d2 d2'",
+        // position, velocity and acceleration of a prismatic joint stay apart
+        "m*q2*qdd2 + qd1*qd2" => "m d2 d2'' + θ1' d2'",
         // a prismatic position stays inside its sine's or cosine's group (Niku 6.14)
         "m1*g*l1*C1/2 + m2*g*q2*C1" => "(1/2 m1 l1 + m2 d2) g C1",
         "0.4318*17.4*C1 + 1/3" => "1/3 + 7.51332 C1",

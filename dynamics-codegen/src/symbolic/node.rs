@@ -3,7 +3,7 @@
 use super::number::Number;
 use std::fmt;
 
-/// Index of a node in a [`Graph`]; displayed as `t12`.
+/// Index of a node in a [`Graph`](super::Graph); displayed as `t12`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct NodeId(pub u32);
 
