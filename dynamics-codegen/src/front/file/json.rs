@@ -5,19 +5,31 @@ use super::{schema, FileError, Loaded};
 
 /// Reads a robot from JSON text.
 pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> {
-    let file: schema::FileRobot = serde_json::from_str(text).map_err(|e| FileError {
-        message: e
-            .to_string()
-            .split(" at line")
-            .next()
-            .unwrap_or_default()
-            .to_string(),
-        line: Some(e.line()),
-        column: Some(e.column()),
+    let file: schema::FileRobot = serde_json::from_str(text).map_err(|e| {
+        let (line, column) = newline_at_end(text, e.line(), e.column());
+        FileError {
+            message: e
+                .to_string()
+                .split(" at line")
+                .next()
+                .unwrap_or_default()
+                .to_string(),
+            line: Some(line),
+            column: Some(column),
+        }
     })?;
     let mut loaded = schema::convert(file, default_name)?;
     loaded.positions = positions(text);
     Ok(loaded)
+}
+
+/// serde_json's column 0 (an error on a newline, once its line was counted) as the column
+/// just past the end of the line before, so that columns are 1-based.
+fn newline_at_end(text: &str, line: usize, column: usize) -> (usize, usize) {
+    match (column, text.split('\n').nth(line.wrapping_sub(2))) {
+        (0, Some(before)) => (line - 1, before.chars().count() + 1),
+        _ => (line, column.max(1)),
+    }
 }
 
 /// Where each joint's values are in JSON text: a scan of the text that the parser has already
