@@ -53,6 +53,10 @@ impl serde::de::Visitor<'_> for ValueVisitor {
                  or `d` (prismatic) is the offset added to it",
             ));
         }
+        // Here, so that the error has the string's line and column.
+        if v.divides_by_zero() {
+            return Err(E::custom(format!("division by zero in `{text}`")));
+        }
         if v.exact().is_some_and(|n| !n.to_f64().is_finite()) {
             return Err(E::custom(format!("`{text}` is not a finite number")));
         }
