@@ -77,8 +77,10 @@ pub fn compile_errors(tokens: TokenStream) -> Vec<CompileError> {
     for tree in tokens {
         match &tree {
             TokenTree::Ident(i) if i == "compile_error" => {
+                // The call site has no bytes of the input (its `start()` says 1:0).
                 let start = i.span().start();
-                pending = Some((start.line > 0).then_some((start.line, start.column)));
+                let site = i.span().byte_range().is_empty();
+                pending = Some((!site).then_some((start.line, start.column)));
             }
             TokenTree::Group(g) => {
                 if let Some(at) = pending.take() {
