@@ -4,6 +4,7 @@
 
 use proc_macro2::{TokenStream, TokenTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
@@ -30,12 +31,19 @@ pub fn runner(seed: u8, default: u32) -> TestRunner {
     )
 }
 
+static CASES: AtomicUsize = AtomicUsize::new(0);
+
 /// Runs `f` on a thread with rustc's 8 MiB proc-macro stack: `Err` if it panicked. A case that
 /// takes longer than [`BOUND`] fails the test at once (a hang is not worth shrinking).
 pub fn bounded<T: Send + 'static>(
     what: &str,
     f: impl FnOnce() -> T + Send + 'static,
 ) -> Result<T, String> {
+    // Progress of a long run (shown with `--nocapture`).
+    let n = CASES.fetch_add(1, Ordering::Relaxed) + 1;
+    if n % 10_000 == 0 {
+        eprintln!("{n} cases");
+    }
     let (tx, rx) = mpsc::channel();
     let start = Instant::now();
     std::thread::Builder::new()
