@@ -1,6 +1,6 @@
 //! Description files in JSON, the format of the reference data.
 
-use super::positions::{positions_at, Positions};
+use super::positions::{line_column, positions_at, Positions};
 use super::{schema, FileError, Loaded};
 
 /// Reads a robot from JSON text.
@@ -19,7 +19,7 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
         }
     })?;
     let mut loaded = schema::convert(file, default_name)?;
-    loaded.positions = positions(text);
+    (loaded.positions, loaded.gravity) = positions(text);
     Ok(loaded)
 }
 
@@ -34,12 +34,13 @@ fn newline_at_end(text: &str, line: usize, column: usize) -> (usize, usize) {
 
 /// Where each joint's values are in JSON text: a scan of the text that the parser has already
 /// accepted (serde_json keeps no positions of values).
-fn positions(text: &str) -> Positions {
+fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
     let mut scan = JsonScan {
         bytes: text.as_bytes(),
         at: 0,
     };
     let mut joints = Vec::new();
+    let mut gravity = None;
     scan.object(&mut |scan, key| {
         if key == "joints" && scan.peek() == Some(b'[') {
             scan.at += 1;
@@ -61,10 +62,18 @@ fn positions(text: &str) -> Positions {
             }
             scan.at += 1;
         } else {
+            if key == "gravity" {
+                scan.space();
+                gravity = Some(scan.at);
+            }
             scan.value();
         }
     });
-    positions_at(text, joints)
+    let gravity = gravity.and_then(|at| match line_column(text, at) {
+        (Some(l), Some(c)) => Some((l, c)),
+        _ => None,
+    });
+    (positions_at(text, joints), gravity)
 }
 
 /// A cursor over valid JSON.

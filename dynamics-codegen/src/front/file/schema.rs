@@ -173,5 +173,6 @@ pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, Fil
         },
         check_inertia,
         positions: Vec::new(),
+        gravity: None,
     })
 }
