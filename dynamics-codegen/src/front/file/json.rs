@@ -23,12 +23,18 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
     Ok(loaded)
 }
 
-/// serde_json's column 0 (an error on a newline, once its line was counted) as the column
-/// just past the end of the line before, so that columns are 1-based.
+/// serde_json's line and column as 1-based characters, as TOML's are: its column counts bytes,
+/// and is 0 for an error on a newline (once its line was counted), which is the column just
+/// past the end of the line before.
 fn newline_at_end(text: &str, line: usize, column: usize) -> (usize, usize) {
+    let chars =
+        |line: &str, bytes: usize| line.char_indices().take_while(|(i, _)| *i < bytes).count();
     match (column, text.split('\n').nth(line.wrapping_sub(2))) {
         (0, Some(before)) => (line - 1, before.chars().count() + 1),
-        _ => (line, column.max(1)),
+        _ => match text.split('\n').nth(line.wrapping_sub(1)) {
+            Some(this) => (line, chars(this, column.saturating_sub(1)) + 1),
+            None => (line, column.max(1)),
+        },
     }
 }
 
