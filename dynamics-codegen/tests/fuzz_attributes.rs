@@ -221,15 +221,15 @@ fn apply(tokens: &mut Vec<(String, bool)>, m: &Mutation) {
             if !spots.is_empty() {
                 let at = *i.get(&spots);
                 tokens[at] = piece(if literal {
-                    *by.get(&LITERALS)
+                    by.get::<&str>(&LITERALS)
                 } else {
-                    *by.get(&IDENTS)
+                    by.get::<&str>(&IDENTS)
                 });
             }
         }
         Mutation::Insert(i, p) => {
             let i = any(i, tokens.len() + 1);
-            tokens.insert(i, piece(*p.get(&PIECES)));
+            tokens.insert(i, piece(p.get::<&str>(&PIECES)));
         }
         Mutation::Nest { at, depth, paren } => {
             let i = any(at, tokens.len());

@@ -408,6 +408,10 @@ fn regressions() {
     // serde_json says column 0 for an error on a newline; it is the 12th character of line 1.
     let e = front::from_text("a.json", "{\"name\": \"a\nb\"}").unwrap_err();
     assert_eq!((e.line, e.column), (Some(1), Some(12)), "{e}");
+    // serde_json points at the unknown key's closing quote and counts bytes: after "é" (2 bytes)
+    // that quote is byte 18 but character 17.
+    let e = front::from_text("a.json", "{\"name\": \"é\", \"x\": 1}").unwrap_err();
+    assert_eq!((e.line, e.column), (Some(1), Some(17)), "{e}");
     // A division by zero in a string value named the file only; it is the string on line 2,
     // column 18 (the derive and the command-line tool both read the file this way).
     let e = front::from_text("a.toml", "# x\ngravity = [0, 0, \"1 / (2 - 2)\"]\n").unwrap_err();
