@@ -55,7 +55,10 @@ fn problems(loaded: &Loaded, relative: &str, check_inertia: bool, fields: &[Fiel
         if let Some(message) = field_error(&name, fields) {
             let at = match field_location(robot, &name) {
                 (Some(joint), key) => loaded.at(relative, joint, key),
-                (None, _) => format!("{relative}: "),
+                (None, _) => loaded.gravity.map_or_else(
+                    || format!("{relative}: "),
+                    |(line, column)| format!("{relative}:{line}:{column}: "),
+                ),
             };
             messages.push(format!("{at}{message}"));
         }

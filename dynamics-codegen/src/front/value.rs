@@ -59,9 +59,12 @@ impl Parse for Spanned {
 const MAX_DEPTH: usize = 32;
 /// The most tokens a value may have.
 const MAX_TOKENS: usize = 2000;
+/// The longest literal a value may have: an `f64` has 17 significant digits.
+const MAX_LITERAL: usize = 1000;
 
 /// Rejects a value (the tokens up to the next `,` at this level) that is nested or long enough
-/// to exhaust the stack of the recursive parser and of the tree walks after it.
+/// to exhaust the stack of the recursive parser and of the tree walks after it, or that has a
+/// literal too long to read quickly.
 fn bounded_extent(
     mut cursor: syn::buffer::Cursor,
     depth: usize,
@@ -77,6 +80,15 @@ fn bounded_extent(
                 token.span(),
                 format!("a value may have at most {MAX_TOKENS} tokens"),
             ));
+        }
+        // syn reads a literal's digits in quadratic time (seconds for 10,000 digits).
+        if let Some((lit, _)) = cursor.literal() {
+            if lit.to_string().len() > MAX_LITERAL {
+                return Err(syn::Error::new(
+                    lit.span(),
+                    format!("a literal may have at most {MAX_LITERAL} characters"),
+                ));
+            }
         }
         if let Some((inner, span, _)) = cursor.group(proc_macro2::Delimiter::Parenthesis) {
             if depth >= MAX_DEPTH {

@@ -1,33 +1,52 @@
 //! Description files in JSON, the format of the reference data.
 
-use super::positions::{positions_at, Positions};
+use super::positions::{line_column, positions_at, Positions};
 use super::{schema, FileError, Loaded};
 
 /// Reads a robot from JSON text.
 pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> {
-    let file: schema::FileRobot = serde_json::from_str(text).map_err(|e| FileError {
-        message: e
-            .to_string()
-            .split(" at line")
-            .next()
-            .unwrap_or_default()
-            .to_string(),
-        line: Some(e.line()),
-        column: Some(e.column()),
+    let file: schema::FileRobot = serde_json::from_str(text).map_err(|e| {
+        let (line, column) = newline_at_end(text, e.line(), e.column());
+        FileError {
+            message: e
+                .to_string()
+                .split(" at line")
+                .next()
+                .unwrap_or_default()
+                .to_string(),
+            line: Some(line),
+            column: Some(column),
+        }
     })?;
     let mut loaded = schema::convert(file, default_name)?;
-    loaded.positions = positions(text);
+    (loaded.positions, loaded.gravity) = positions(text);
     Ok(loaded)
+}
+
+/// serde_json's line and column as 1-based characters, as TOML's are: its column counts bytes,
+/// and is 0 for an error on a newline (once its line was counted), which is the column just
+/// past the end of the line before.
+fn newline_at_end(text: &str, line: usize, column: usize) -> (usize, usize) {
+    let chars =
+        |line: &str, bytes: usize| line.char_indices().take_while(|(i, _)| *i < bytes).count();
+    match (column, text.split('\n').nth(line.wrapping_sub(2))) {
+        (0, Some(before)) => (line - 1, before.chars().count() + 1),
+        _ => match text.split('\n').nth(line.wrapping_sub(1)) {
+            Some(this) => (line, chars(this, column.saturating_sub(1)) + 1),
+            None => (line, column.max(1)),
+        },
+    }
 }
 
 /// Where each joint's values are in JSON text: a scan of the text that the parser has already
 /// accepted (serde_json keeps no positions of values).
-fn positions(text: &str) -> Positions {
+fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
     let mut scan = JsonScan {
         bytes: text.as_bytes(),
         at: 0,
     };
     let mut joints = Vec::new();
+    let mut gravity = None;
     scan.object(&mut |scan, key| {
         if key == "joints" && scan.peek() == Some(b'[') {
             scan.at += 1;
@@ -49,10 +68,18 @@ fn positions(text: &str) -> Positions {
             }
             scan.at += 1;
         } else {
+            if key == "gravity" {
+                scan.space();
+                gravity = Some(scan.at);
+            }
             scan.value();
         }
     });
-    positions_at(text, joints)
+    let gravity = gravity.and_then(|at| match line_column(text, at) {
+        (Some(l), Some(c)) => Some((l, c)),
+        _ => None,
+    });
+    (positions_at(text, joints), gravity)
 }
 
 /// A cursor over valid JSON.

@@ -21,6 +21,8 @@ pub struct Loaded {
     /// Per joint, where the value of each key is written (1-based line and column), so that
     /// checks after loading can point into the file.
     pub positions: Positions,
+    /// Where `gravity`'s value is written, for a field it names that the struct lacks.
+    pub gravity: Option<(usize, usize)>,
 }
 
 impl Loaded {

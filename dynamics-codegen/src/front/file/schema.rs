@@ -53,6 +53,10 @@ impl serde::de::Visitor<'_> for ValueVisitor {
                  or `d` (prismatic) is the offset added to it",
             ));
         }
+        // Here, so that the error has the string's line and column.
+        if v.divides_by_zero() {
+            return Err(E::custom(format!("division by zero in `{text}`")));
+        }
         if v.exact().is_some_and(|n| !n.to_f64().is_finite()) {
             return Err(E::custom(format!("`{text}` is not a finite number")));
         }
@@ -169,5 +173,6 @@ pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, Fil
         },
         check_inertia,
         positions: Vec::new(),
+        gravity: None,
     })
 }

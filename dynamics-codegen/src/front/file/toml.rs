@@ -31,25 +31,32 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
         }
     })?;
     let mut loaded = schema::convert(file, default_name)?;
-    loaded.positions = positions(text);
+    (loaded.positions, loaded.gravity) = positions(text);
     Ok(loaded)
 }
 
 /// Where each joint's values are in TOML text (read a second time, with spans).
-fn positions(text: &str) -> Positions {
+fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
     #[derive(Deserialize)]
     struct Joints {
         #[serde(default)]
         joints: Vec<BTreeMap<String, toml::Spanned<serde::de::IgnoredAny>>>,
+        gravity: Option<toml::Spanned<serde::de::IgnoredAny>>,
     }
     let Ok(file) = toml::from_str::<Joints>(text) else {
-        return Vec::new();
+        return (Vec::new(), None);
     };
+    let gravity = file
+        .gravity
+        .and_then(|g| match line_column(text, g.span().start) {
+            (Some(l), Some(c)) => Some((l, c)),
+            _ => None,
+        });
     let offsets = file.joints.into_iter().map(|joint| {
         joint
             .into_iter()
             .map(|(key, value)| (key, value.span().start))
             .collect()
     });
-    positions_at(text, offsets)
+    (positions_at(text, offsets), gravity)
 }

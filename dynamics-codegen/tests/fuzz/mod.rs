@@ -1,0 +1,106 @@
+//! What the fuzz tests share: a seeded proptest runner whose case count the environment can
+//! raise (`DYNAMICS_FUZZ_CASES`), each case on its own thread under a time bound, and the
+//! `compile_error!`s of an expansion with the position of their span.
+
+use proc_macro2::{TokenStream, TokenTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+/// Time allowed for one case. Cases run in milliseconds; the bound leaves room for a loaded
+/// 2-core machine, and is far below what a hang takes.
+pub const BOUND: Duration = Duration::from_secs(10);
+
+/// A runner with a fixed seed (so that a failure is reproducible) and `default` cases, or the
+/// number in `DYNAMICS_FUZZ_CASES` for a long run.
+pub fn runner(seed: u8, default: u32) -> TestRunner {
+    let cases = std::env::var("DYNAMICS_FUZZ_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(default);
+    let config = Config {
+        cases,
+        failure_persistence: None,
+        max_shrink_iters: 2000,
+        ..Config::default()
+    };
+    TestRunner::new_with_rng(
+        config,
+        TestRng::from_seed(RngAlgorithm::ChaCha, &[seed; 32]),
+    )
+}
+
+static CASES: AtomicUsize = AtomicUsize::new(0);
+
+/// Runs `f` on a thread with rustc's 8 MiB proc-macro stack: `Err` if it panicked. A case that
+/// takes longer than [`BOUND`] fails the test at once (a hang is not worth shrinking).
+pub fn bounded<T: Send + 'static>(
+    what: &str,
+    f: impl FnOnce() -> T + Send + 'static,
+) -> Result<T, String> {
+    // Progress of a long run (shown with `--nocapture`).
+    let n = CASES.fetch_add(1, Ordering::Relaxed) + 1;
+    if n % 10_000 == 0 {
+        eprintln!("{n} cases");
+    }
+    let (tx, rx) = mpsc::channel();
+    let start = Instant::now();
+    std::thread::Builder::new()
+        .stack_size(8 << 20)
+        .spawn(move || {
+            let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+            let _ = tx.send(result);
+        })
+        .expect("thread");
+    match rx.recv_timeout(BOUND) {
+        Ok(Ok(value)) => Ok(value),
+        Ok(Err(payload)) => {
+            let message = payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_string()))
+                .unwrap_or_default();
+            Err(format!("panicked ({message}) on:\n{what}"))
+        }
+        // proptest would catch a panic and shrink, re-running the hang: stop the process.
+        Err(_) => {
+            eprintln!("took more than {:?} on:\n{what}", start.elapsed());
+            std::process::abort()
+        }
+    }
+}
+
+/// One `compile_error!` of an expansion: its message, and the line and column its span starts
+/// at (`None` for the call site, which has no position).
+pub struct CompileError {
+    pub message: String,
+    pub at: Option<(usize, usize)>,
+}
+
+/// Every `compile_error!{ "..." }` in `tokens`, at any depth.
+pub fn compile_errors(tokens: TokenStream) -> Vec<CompileError> {
+    let mut found = Vec::new();
+    let mut pending: Option<Option<(usize, usize)>> = None;
+    for tree in tokens {
+        match &tree {
+            TokenTree::Ident(i) if i == "compile_error" => {
+                // The call site has no bytes of the input (its `start()` says 1:0).
+                let start = i.span().start();
+                let site = i.span().byte_range().is_empty();
+                pending = Some((!site).then_some((start.line, start.column)));
+            }
+            TokenTree::Group(g) => {
+                if let Some(at) = pending.take() {
+                    let message = g.stream().to_string();
+                    found.push(CompileError { message, at });
+                } else {
+                    found.extend(compile_errors(g.stream()));
+                }
+            }
+            TokenTree::Punct(p) if p.as_char() == '!' => {}
+            _ => pending = None,
+        }
+    }
+    found
+}
