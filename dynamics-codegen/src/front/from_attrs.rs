@@ -2,6 +2,7 @@
 //! every value checked where it is written. In row i, `q` (or `qi`) in the θ cell makes
 //! joint i revolute with `θ = q + offset`, in the d cell prismatic with `d = q + offset`.
 
+use super::angle::unitless_angle;
 use super::attr::{Attrs, DhRowAttr, LinkAttr};
 use super::errors::Errors;
 use super::fields::{check_names, Field};
@@ -130,6 +131,11 @@ impl Reader<'_> {
             check_names(cell, self.fields, self.errors);
             check_arithmetic(cell, self.errors);
             check_joint_index(&cell.value, n, cell.span, self.errors);
+        }
+        for angle in [theta, alpha] {
+            if let Some((term, message)) = unitless_angle(&angle.unitless, false) {
+                self.errors.push_range(term.span, term.end, message);
+            }
         }
         let kind = self.kind(n, *row_span, theta, d);
         let theta = self.offset(theta);

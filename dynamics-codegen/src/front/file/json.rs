@@ -15,9 +15,9 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
         line: Some(e.line()),
         column: Some(e.column()),
     })?;
-    let mut loaded = schema::convert(file, default_name)?;
+    let (mut loaded, deferred) = schema::convert(file, default_name)?;
     loaded.positions = positions(text);
-    Ok(loaded)
+    super::first_error(loaded, &deferred)
 }
 
 /// Where each joint's values are in JSON text: a scan of the text that the parser has already
