@@ -49,6 +49,9 @@ impl Loaded {
                 match problem.parameter {
                     LinkParameter::Mass => "mass",
                     LinkParameter::Inertia => "inertia",
+                    LinkParameter::ActuatorInertia => "actuator_inertia",
+                    LinkParameter::SpringStiffness => "spring_stiffness",
+                    LinkParameter::SpringRest => "spring_rest",
                 },
             ),
         };
