@@ -1,9 +1,9 @@
 //! Compile-fail tests: each file under `ui/<category>/` makes one mistake, and its `.stderr`
 //! holds the error the derive must give, on the offending token. The categories are
 //! `attributes` (keys of `#[dynamics(...)]`), `values` (the D-H table and its values),
-//! `fields` (struct fields named by values), `physics` (mass and inertia) and `files`
-//! (description files, which live next to their tests). Refresh with `TRYBUILD=overwrite`,
-//! then read every changed `.stderr`.
+//! `fields` (struct fields named by values), `physics` (mass, inertia, actuator inertia,
+//! springs) and `files` (description files, which live next to their tests). Refresh with
+//! `TRYBUILD=overwrite`, then read every changed `.stderr`.
 
 #[test]
 fn ui() {

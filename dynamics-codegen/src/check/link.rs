@@ -13,6 +13,12 @@ pub enum LinkParameter {
     Mass,
     /// `inertia`.
     Inertia,
+    /// `actuator_inertia`.
+    ActuatorInertia,
+    /// The stiffness of `spring` (`spring_stiffness` in files).
+    SpringStiffness,
+    /// The rest position of `spring` (`spring_rest` in files).
+    SpringRest,
 }
 
 /// A physical problem with one link.
@@ -91,7 +97,7 @@ fn principal_moments_problem(i: &[f64]) -> Option<String> {
 }
 
 /// A number with four significant digits, for messages.
-fn short(x: f64) -> String {
+pub(super) fn short(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return format!("{x}");
     }

@@ -1,11 +1,14 @@
 //! The checks of a robot that need no derivation, shared by the derive and the command-line
-//! tool: the number of joints is within [`MAX_JOINTS`], and each link's mass and inertia tensor
-//! are ones a rigid body can have ([`link`]). Each problem says what it concerns; the caller
+//! tool: the number of joints is within [`MAX_JOINTS`], each link's mass and inertia tensor
+//! are ones a rigid body can have ([`link`]), and each joint's actuator inertia and spring are
+//! not negative ([`drive`]). Each problem says what it concerns; the caller
 //! places it on the tokens or the description-file value it comes from.
 
+mod drive;
 mod eigenvalues;
 mod link;
 
+pub use drive::drive;
 pub use eigenvalues::eigenvalues;
 pub use link::{link, LinkParameter, LinkProblem};
 
@@ -44,8 +47,8 @@ impl std::fmt::Display for Problem {
     }
 }
 
-/// The problems of `robot`: its number of joints first, then each link's, base to tip. Link i's
-/// inertia tensor is checked unless `check_inertia[i]` is false (a missing entry checks it).
+/// The problems of `robot`: its number of joints first, then each link's (and its joint's
+/// drive), base to tip. Link i's inertia tensor is checked unless `check_inertia[i]` is false (a missing entry checks it).
 #[must_use]
 pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
     let count = robot.dof();
@@ -54,6 +57,7 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
         let checked = check_inertia.get(joint).copied().unwrap_or(true);
         link(&j.mass, &j.inertia, checked)
             .into_iter()
+            .chain(drive(&j.actuator_inertia, j.spring.as_ref()))
             .map(move |problem| Problem::Link { joint, problem })
     });
     too_many.into_iter().chain(links).collect()

@@ -1,7 +1,7 @@
 //! The expansion of a derive that failed: its errors, plus an impl whose methods are
 //! unreachable, so that code calling them compiles and the user sees only the real errors.
 
-use super::items::{method, runtime_path};
+use super::items::{method, runtime_path, scalar_name};
 use crate::front;
 use crate::method::Method;
 use proc_macro2::TokenStream;
@@ -17,7 +17,8 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
-    let fns = Method::ALL.iter().map(|&m| method(m, n, &krate, &body));
+    let t = scalar_name(&input.generics);
+    let fns = Method::ALL.iter().map(|&m| method(m, n, &krate, &t, &body));
     quote! {
         #errors
         const _: () = {

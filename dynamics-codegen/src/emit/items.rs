@@ -97,6 +97,7 @@ impl Generated {
         let n = self.dof;
         let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+        let t = scalar_name(generics);
         let module = Ident::new(MODULE, Span::call_site());
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
         let configuration = self.configuration_item(krate);
@@ -104,7 +105,7 @@ impl Generated {
         let p = local(PARAMETERS);
         let bodies = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n);
+            let (args, ret) = signature(m.method, n, &Ident::new("T", Span::call_site()));
             let body = &m.body;
             quote! {
                 #[inline(always)]
@@ -115,11 +116,11 @@ impl Generated {
         });
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n);
+            let (args, ret) = signature(m.method, n, &t);
             let pass = call_arguments(m.method);
             let f = quote! {
                 #[inline]
-                fn #name<T: #krate::Real>(&self, #args) -> #ret {
+                fn #name<#t: #krate::Real>(&self, #args) -> #ret {
                     #module::#name(&self.#parameters(), #pass)
                 }
             };
@@ -143,7 +144,7 @@ impl Generated {
                 #[doc(hidden)]
                 #[inline(always)]
                 #[allow(clippy::all, clippy::pedantic, clippy::nursery)]
-                fn #parameters<T: #krate::Real>(&self) -> [T; #k] {
+                fn #parameters<#t: #krate::Real>(&self) -> [#t; #k] {
                     #reader
                     [#(param(#fields)),*]
                 }
@@ -233,16 +234,45 @@ struct SharedFunction {
     result: TokenStream,
 }
 
-/// One method of the `Dynamics` impl with the given body (also used by the command-line
-/// tool's `emit`).
+/// The name of the generated methods' scalar type parameter: `T`, unless the struct has a
+/// generic parameter of that name (a method's parameter may not reuse its impl's), then the
+/// first of `S`, `R`, `F`, `T0`, `T1`, … it does not use.
 #[must_use]
-pub fn method(method: Method, n: usize, krate: &TokenStream, body: &TokenStream) -> TokenStream {
-    let (args, ret) = signature(method, n);
+pub fn scalar_name(generics: &syn::Generics) -> Ident {
+    let taken: Vec<String> = generics
+        .params
+        .iter()
+        .filter_map(|p| match p {
+            syn::GenericParam::Type(t) => Some(t.ident.to_string()),
+            syn::GenericParam::Const(c) => Some(c.ident.to_string()),
+            syn::GenericParam::Lifetime(_) => None,
+        })
+        .collect();
+    let name = ["T", "S", "R", "F"]
+        .into_iter()
+        .map(String::from)
+        .chain((0..).map(|i| format!("T{i}")))
+        .find(|name| !taken.contains(name))
+        .unwrap_or_default();
+    Ident::new(&name, Span::call_site())
+}
+
+/// One method of the `Dynamics` impl with the given body, its scalar type parameter named
+/// `scalar` (see [`scalar_name`]).
+#[must_use]
+pub fn method(
+    method: Method,
+    n: usize,
+    krate: &TokenStream,
+    scalar: &Ident,
+    body: &TokenStream,
+) -> TokenStream {
+    let (args, ret) = signature(method, n, scalar);
     let name = Ident::new(method.name(), Span::call_site());
     quote! {
         #[inline]
         #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-        fn #name<T: #krate::Real>(&self, #args) -> #ret {
+        fn #name<#scalar: #krate::Real>(&self, #args) -> #ret {
             #body
         }
     }
@@ -253,16 +283,16 @@ fn argument_local(argument: Argument) -> Ident {
     local(&format!("{}_", argument.name()))
 }
 
-/// The arguments and the result type of a method of the `Dynamics` trait.
-fn signature(method: Method, n: usize) -> (TokenStream, TokenStream) {
+/// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`.
+fn signature(method: Method, n: usize, t: &Ident) -> (TokenStream, TokenStream) {
     let arguments = method.arguments().iter().map(|&a| {
         let name = argument_local(a);
-        quote!(#name: &[T; #n])
+        quote!(#name: &[#t; #n])
     });
     let result = match method.returns() {
-        Returns::Matrix => quote!([[T; #n]; #n]),
-        Returns::Vector => quote!([T; #n]),
-        Returns::Scalar => quote!(T),
+        Returns::Matrix => quote!([[#t; #n]; #n]),
+        Returns::Vector => quote!([#t; #n]),
+        Returns::Scalar => quote!(#t),
     };
     (quote!(#(#arguments),*), result)
 }

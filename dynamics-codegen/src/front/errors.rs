@@ -15,6 +15,17 @@ impl Errors {
         self.0.push(syn::Error::new(span, message));
     }
 
+    /// Adds an error on the tokens from `start` to `end` (rustc underlines them all).
+    pub(super) fn push_range(&mut self, start: Span, end: Span, message: impl std::fmt::Display) {
+        let ends = [start, end].map(|span| {
+            let mut punct = proc_macro2::Punct::new('*', proc_macro2::Spacing::Alone);
+            punct.set_span(span);
+            proc_macro2::TokenTree::Punct(punct)
+        });
+        let tokens: proc_macro2::TokenStream = ends.into_iter().collect();
+        self.0.push(syn::Error::new_spanned(tokens, message));
+    }
+
     /// Adds an error that already has its span (a syntax error).
     pub(super) fn push_error(&mut self, error: syn::Error) {
         self.0.push(error);

@@ -2,6 +2,7 @@
 //! every value checked where it is written. In row i, `q` (or `qi`) in the θ cell makes
 //! joint i revolute with `θ = q + offset`, in the d cell prismatic with `d = q + offset`.
 
+use super::angle::unitless_angle;
 use super::attr::{Attrs, DhRowAttr, LinkAttr};
 use super::errors::Errors;
 use super::fields::{check_names, Field};
@@ -131,6 +132,11 @@ impl Reader<'_> {
             check_arithmetic(cell, self.errors);
             check_joint_index(&cell.value, n, cell.span, self.errors);
         }
+        for angle in [theta, alpha] {
+            if let Some((term, message)) = unitless_angle(&angle.unitless, false) {
+                self.errors.push_range(term.span, term.end, message);
+            }
+        }
         let kind = self.kind(n, *row_span, theta, d);
         let theta = self.offset(theta);
         let d = self.offset(d);
@@ -211,10 +217,6 @@ impl Reader<'_> {
                 format!("link {n} has no `mass = ..`"),
             );
         }
-        if let Some(l) = link {
-            let checked = l.check_inertia.or(check_all).unwrap_or(true);
-            check_link(n, l, checked, &mass, &inertia, self.errors);
-        }
         let actuator_inertia = self.value(link.and_then(|l| l.actuator_inertia.as_ref()));
         let spring = link
             .and_then(|l| l.spring.as_ref())
@@ -222,13 +224,18 @@ impl Reader<'_> {
                 stiffness: self.value(Some(k)),
                 rest: self.value(Some(rest)),
             });
-        LinkValues {
+        let values = LinkValues {
             mass,
             com,
             inertia,
             actuator_inertia,
             spring,
+        };
+        if let Some(l) = link {
+            let checked = l.check_inertia.or(check_all).unwrap_or(true);
+            check_link(n, l, checked, &values, self.errors);
         }
+        values
     }
 }
 
@@ -254,33 +261,34 @@ fn check_arithmetic(spanned: &Spanned, errors: &mut Errors) {
     }
 }
 
-/// The physical checks of link `n`, each error on the value it is about.
-fn check_link(
-    n: usize,
-    link: &LinkAttr,
-    checked: bool,
-    mass: &Value,
-    inertia: &[Value; 6],
-    errors: &mut Errors,
-) {
+/// The physical checks of link `n` and its joint's drive, each error on the value it is about.
+fn check_link(n: usize, link: &LinkAttr, checked: bool, values: &LinkValues, errors: &mut Errors) {
     let finite = |v: &Value| v.exact().map_or(true, |x| x.to_f64().is_finite());
     // A non-finite literal was reported where it is written; do not report it twice.
-    let mass = if finite(mass) {
-        mass.clone()
-    } else {
-        Value::zero()
-    };
-    let checked = checked && inertia.iter().all(finite);
-    let fallback = link.span.unwrap_or_else(Span::call_site);
-    for problem in check::link(&mass, inertia, checked) {
+    let known = |v: &Value| if finite(v) { v.clone() } else { Value::zero() };
+    let checked = checked && values.inertia.iter().all(finite);
+    let spring = values.spring.as_ref().map(|s| Spring {
+        stiffness: known(&s.stiffness),
+        rest: known(&s.rest),
+    });
+    let problems = check::link(&known(&values.mass), &values.inertia, checked)
+        .into_iter()
+        .chain(check::drive(
+            &known(&values.actuator_inertia),
+            spring.as_ref(),
+        ));
+    let whole = |s: &Spanned| (s.span, s.end);
+    for problem in problems {
         let at = match problem.parameter {
-            check::LinkParameter::Mass => link.mass.as_ref().map(|m| m.span),
-            check::LinkParameter::Inertia => link.inertia.as_ref().map(|(_, span)| *span),
+            check::LinkParameter::Mass => link.mass.as_ref().map(|m| (m.span, m.span)),
+            check::LinkParameter::Inertia => link.inertia.as_ref().map(|(_, s)| (*s, *s)),
+            check::LinkParameter::ActuatorInertia => link.actuator_inertia.as_ref().map(whole),
+            check::LinkParameter::SpringStiffness => link.spring.as_ref().map(|(k, _)| whole(k)),
+            check::LinkParameter::SpringRest => link.spring.as_ref().map(|(_, r)| whole(r)),
         };
-        errors.push(
-            at.unwrap_or(fallback),
-            format!("link {n}: {}", problem.message),
-        );
+        let fallback = link.span.unwrap_or_else(Span::call_site);
+        let (start, end) = at.unwrap_or((fallback, fallback));
+        errors.push_range(start, end, format!("link {n}: {}", problem.message));
     }
 }
 

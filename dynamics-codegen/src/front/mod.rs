@@ -22,8 +22,9 @@
 //! value by `attr_value`) into tokens with their spans; `from_attrs` builds the syn-free
 //! [`Robot`] from them, or `from_file` from the description file they name (read by `file`,
 //! also for the command-line tool: [`load`]); values follow the grammar of `value`
-//! ([`parse_value`]). Every error goes to one [`Errors`] and all are reported together.
+//! ([`parse_value`]), and angles written as plain numbers above 2π are refused by `angle`. Every error goes to one [`Errors`] and all are reported together.
 
+mod angle;
 mod attr;
 mod attr_value;
 mod errors;
@@ -37,7 +38,7 @@ mod value;
 pub use errors::Errors;
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load, FileError, Loaded, Positions};
-pub use value::{parse_value, Spanned};
+pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::model::Robot;
 use attr::{parse_attrs, Attrs};

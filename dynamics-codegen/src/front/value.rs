@@ -10,7 +10,10 @@
 //! ```
 //!
 //! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
-//! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact.
+//! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact; `rad` states that a
+//! number is in radians. A number literal takes no suffix (`2m`, `2.5f64`, `90deg`): it would
+//! be silently ignored. The terms of the top-level sum written as plain numbers (no unit, `pi`
+//! or field) are kept as [`Unitless`], for the angle check of [`super::angle`].
 
 use crate::model::Value;
 use crate::symbolic::Number;
@@ -28,6 +31,29 @@ pub struct Spanned {
     pub end: Span,
     /// Fields it names, each with where it was written.
     pub fields: Vec<(String, Span)>,
+    /// The terms of its top-level sum that are plain numbers, without a unit.
+    pub unitless: Vec<Unitless>,
+}
+
+/// A term of a value's top-level sum (`90` in `q + 90`, `-90`, `45 * 2` in `pi + 45 * 2`) made
+/// of numbers alone: no `deg`, `rad`, `pi`, field or `q`.
+#[derive(Clone, Debug)]
+pub struct Unitless {
+    /// Its value (its sign as written in the term: `q - 90` gives 90).
+    pub value: Number,
+    /// Its first token.
+    pub span: Span,
+    /// Its last token.
+    pub end: Span,
+}
+
+/// What the parser gathers besides the value.
+#[derive(Default)]
+struct State {
+    fields: Vec<(String, Span)>,
+    /// How many `deg` and `rad` units it has read.
+    units: usize,
+    unitless: Vec<Unitless>,
 }
 
 impl Parse for Spanned {
@@ -35,24 +61,30 @@ impl Parse for Spanned {
         let span = input.span();
         let start = input.cursor();
         bounded_extent(start, 0, &mut 0)?;
-        let mut fields = Vec::new();
-        let value = parse_sum(input, &mut fields)?;
-        let mut end = span;
-        let mut cursor = start;
-        while cursor != input.cursor() {
-            let Some((token, next)) = cursor.token_tree() else {
-                break;
-            };
-            end = token.span();
-            cursor = next;
-        }
+        let mut state = State::default();
+        let value = parse_sum(input, &mut state, true)?;
         Ok(Spanned {
             value,
             span,
-            end,
-            fields,
+            end: last_span(start, input.cursor(), span),
+            fields: state.fields,
+            unitless: state.unitless,
         })
     }
+}
+
+/// The span of the last token from `start` up to `stop`, `default` if there is none.
+fn last_span(start: syn::buffer::Cursor, stop: syn::buffer::Cursor, default: Span) -> Span {
+    let mut end = default;
+    let mut cursor = start;
+    while cursor != stop {
+        let Some((token, next)) = cursor.token_tree() else {
+            break;
+        };
+        end = token.span();
+        cursor = next;
+    }
+    end
 }
 
 /// The deepest nesting of parentheses a value may have.
@@ -109,38 +141,60 @@ fn bounded_extent(
 /// # Errors
 /// A message if the text is not a value.
 pub fn parse_value(text: &str) -> Result<Value, String> {
+    parse_spanned(text).map(|s| s.value)
+}
+
+/// Parses a value from text (a description-file string), with what [`Spanned`] keeps.
+///
+/// # Errors
+/// A message if the text is not a value.
+pub fn parse_spanned(text: &str) -> Result<Spanned, String> {
     let tokens: proc_macro2::TokenStream = text
         .parse()
         .map_err(|e: proc_macro2::LexError| format!("cannot read `{text}`: {e}"))?;
-    syn::parse2::<Spanned>(tokens)
-        .map(|s| s.value)
-        .map_err(|e| format!("cannot read `{text}` as a value: {e}"))
+    syn::parse2::<Spanned>(tokens).map_err(|e| format!("cannot read `{text}` as a value: {e}"))
 }
 
-fn parse_sum(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let mut left = parse_product(input, fields)?;
+/// A sum; at the `top` level, its terms made of plain numbers go to `state.unitless`.
+fn parse_sum(input: ParseStream, state: &mut State, top: bool) -> syn::Result<Value> {
+    let mut left = parse_term(input, state, top)?;
     loop {
         if input.peek(Token![+]) {
             input.parse::<Token![+]>()?;
-            left = Value::Add(Box::new(left), Box::new(parse_product(input, fields)?));
+            left = Value::Add(Box::new(left), Box::new(parse_term(input, state, top)?));
         } else if input.peek(Token![-]) {
             input.parse::<Token![-]>()?;
-            left = Value::Sub(Box::new(left), Box::new(parse_product(input, fields)?));
+            left = Value::Sub(Box::new(left), Box::new(parse_term(input, state, top)?));
         } else {
             return Ok(left);
         }
     }
 }
 
-fn parse_product(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let mut left = parse_power(input, fields)?;
+/// One term of a sum, kept in `state.unitless` at the `top` level if made of plain numbers.
+fn parse_term(input: ParseStream, state: &mut State, top: bool) -> syn::Result<Value> {
+    let (span, start, units) = (input.span(), input.cursor(), state.units);
+    let term = parse_product(input, state)?;
+    // `exact` is `None` for `pi`, `deg` (a multiple of π), fields and `q`; `rad` is counted.
+    if let (true, true, Some(value)) = (top, state.units == units, term.exact()) {
+        state.unitless.push(Unitless {
+            value,
+            span,
+            end: last_span(start, input.cursor(), span),
+        });
+    }
+    Ok(term)
+}
+
+fn parse_product(input: ParseStream, state: &mut State) -> syn::Result<Value> {
+    let mut left = parse_power(input, state)?;
     loop {
         if input.peek(Token![*]) {
             input.parse::<Token![*]>()?;
-            left = Value::Mul(Box::new(left), Box::new(parse_power(input, fields)?));
+            left = Value::Mul(Box::new(left), Box::new(parse_power(input, state)?));
         } else if input.peek(Token![/]) {
             input.parse::<Token![/]>()?;
-            left = Value::Div(Box::new(left), Box::new(parse_power(input, fields)?));
+            left = Value::Div(Box::new(left), Box::new(parse_power(input, state)?));
         } else {
             return Ok(left);
         }
@@ -150,8 +204,8 @@ fn parse_product(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::R
 /// The most terms a power may expand to.
 const MAX_POWER_SIZE: usize = 4096;
 
-fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
-    let base = parse_unary(input, fields)?;
+fn parse_power(input: ParseStream, state: &mut State) -> syn::Result<Value> {
+    let base = parse_unary(input, state)?;
     if !input.peek(Token![^]) {
         return Ok(base);
     }
@@ -179,33 +233,35 @@ fn parse_power(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Res
     Ok(value)
 }
 
-fn parse_unary(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+fn parse_unary(input: ParseStream, state: &mut State) -> syn::Result<Value> {
     if input.peek(Token![-]) {
         input.parse::<Token![-]>()?;
-        return Ok(Value::Neg(Box::new(parse_unary(input, fields)?)));
+        return Ok(Value::Neg(Box::new(parse_unary(input, state)?)));
     }
-    let atom = parse_atom(input, fields)?;
+    let atom = parse_atom(input, state)?;
     if input.peek(Ident) {
         let fork = input.fork();
         let unit: Ident = fork.parse()?;
         if unit == "deg" {
             input.parse::<Ident>()?;
+            state.units += 1;
             let pi_over_180 =
                 Value::Div(Box::new(Value::Pi), Box::new(Value::Num(Number::int(180))));
             return Ok(Value::Mul(Box::new(atom), Box::new(pi_over_180)));
         }
         if unit == "rad" {
             input.parse::<Ident>()?;
+            state.units += 1;
         }
     }
     Ok(atom)
 }
 
-fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Result<Value> {
+fn parse_atom(input: ParseStream, state: &mut State) -> syn::Result<Value> {
     if input.peek(syn::token::Paren) {
         let content;
         syn::parenthesized!(content in input);
-        let v = parse_sum(&content, fields)?;
+        let v = parse_sum(&content, state, false)?;
         if !content.is_empty() {
             return Err(content.error("expected `)` after the value"));
         }
@@ -215,14 +271,14 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
         input.parse::<Token![self]>()?;
         input.parse::<Token![.]>()?;
         let name: Ident = input.parse()?;
-        fields.push((name.to_string(), name.span()));
+        state.fields.push((name.to_string(), name.span()));
         return Ok(Value::Field(name.to_string()));
     }
     if input.peek(Lit) {
         let lit: Lit = input.parse()?;
-        let digits = match &lit {
-            Lit::Int(i) => i.base10_digits().to_string(),
-            Lit::Float(f) => f.base10_digits().to_string(),
+        let (digits, suffix) = match &lit {
+            Lit::Int(i) => (i.base10_digits().to_string(), i.suffix()),
+            Lit::Float(f) => (f.base10_digits().to_string(), f.suffix()),
             Lit::Str(_) => {
                 return Err(syn::Error::new(
                     lit.span(),
@@ -236,6 +292,9 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
                 ))
             }
         };
+        if !suffix.is_empty() {
+            return Err(syn::Error::new(lit.span(), suffix_message(&digits, suffix)));
+        }
         let n = Number::parse_decimal(&digits)
             .or_else(|| digits.parse::<f64>().ok().map(Number::from_f64))
             .ok_or_else(|| syn::Error::new(lit.span(), "this number cannot be read"))?;
@@ -259,10 +318,28 @@ fn parse_atom(input: ParseStream, fields: &mut Vec<(String, Span)>) -> syn::Resu
         if let Some(index) = text.strip_prefix('q').and_then(|d| d.parse::<usize>().ok()) {
             return Ok(Value::Joint(Some(index)));
         }
-        fields.push((text.clone(), name.span()));
+        state.fields.push((text.clone(), name.span()));
         return Ok(Value::Field(text));
     }
     Err(input.error("expected a number, a struct field or an expression of them"))
+}
+
+/// Why a number may not have `suffix` (as in `2m`, `2.5f64`, `90deg`), and what to write.
+fn suffix_message(digits: &str, suffix: &str) -> String {
+    match suffix {
+        "deg" | "rad" => format!(
+            "write a space between the number and its unit: `{digits} {suffix}` (`{digits}{suffix}` \
+             is one number with a type suffix)"
+        ),
+        "f32" | "f64" => format!(
+            "write `{digits}` without the suffix `{suffix}`: values are exact numbers, converted \
+             to the scalar type of each generated method"
+        ),
+        _ => format!(
+            "`{digits}{suffix}`: a number takes no suffix; values are in SI units (m, kg, kg·m², \
+             N·m/rad) and angles take `deg` or `rad` after a space"
+        ),
+    }
 }
 
 #[cfg(test)]
@@ -314,5 +391,21 @@ mod tests {
         );
         assert!(parse_value("2 * q").unwrap().joint_offset().is_none());
         assert!(parse_value("3 +").is_err());
+    }
+
+    #[test]
+    fn suffixes_are_refused() {
+        for (text, says) in [
+            ("2m", "no suffix"),
+            ("2.5f64", "without the suffix `f64`"),
+            ("1f32", "without the suffix `f32`"),
+            ("90deg", "`90 deg`"),
+            ("q + 1rad", "`1 rad`"),
+        ] {
+            let e = parse_value(text).unwrap_err();
+            assert!(e.contains(says), "{text}: {e}");
+        }
+        // The units themselves are fine: `rad` keeps the number as it is.
+        assert_eq!(parse_value("2 rad").unwrap(), Value::Num(Number::int(2)));
     }
 }

@@ -18,9 +18,9 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
             column: Some(column),
         }
     })?;
-    let mut loaded = schema::convert(file, default_name)?;
+    let (mut loaded, deferred) = schema::convert(file, default_name)?;
     (loaded.positions, loaded.gravity) = positions(text);
-    Ok(loaded)
+    super::first_error(loaded, &deferred)
 }
 
 /// serde_json's line and column as 1-based characters, as TOML's are: its column counts bytes,

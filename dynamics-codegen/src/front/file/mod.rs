@@ -51,6 +51,9 @@ impl Loaded {
                 match problem.parameter {
                     LinkParameter::Mass => "mass",
                     LinkParameter::Inertia => "inertia",
+                    LinkParameter::ActuatorInertia => "actuator_inertia",
+                    LinkParameter::SpringStiffness => "spring_stiffness",
+                    LinkParameter::SpringRest => "spring_rest",
                 },
             ),
         };
@@ -76,6 +79,23 @@ impl std::fmt::Display for FileError {
             _ => write!(f, "{}", self.message),
         }
     }
+}
+
+/// The loaded robot, or the first of the errors found after parsing, at its position.
+fn first_error(loaded: Loaded, deferred: &[schema::Deferred]) -> Result<Loaded, FileError> {
+    let Some((joint, key, message)) = deferred.first() else {
+        return Ok(loaded);
+    };
+    let (line, column) = loaded
+        .positions
+        .get(*joint)
+        .and_then(|p| p.get(*key))
+        .map_or((None, None), |(l, c)| (Some(*l), Some(*c)));
+    Err(FileError {
+        message: format!("joint {}: {message}", joint + 1),
+        line,
+        column,
+    })
 }
 
 fn plain(message: String) -> FileError {
@@ -192,5 +212,29 @@ mod tests {
         let loaded = load("a.toml", toml).expect("toml");
         assert_eq!(loaded.positions[0]["mass"], (4, 8));
         assert_eq!(loaded.positions[1]["inertia"], (9, 11));
+    }
+
+    #[test]
+    fn unitless_angles_are_refused_at_their_position() {
+        let toml =
+            "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\nalpha = 90\n";
+        let e = load("a.toml", toml).err().expect("an error");
+        assert_eq!((e.line, e.column), (Some(5), Some(9)));
+        assert!(
+            e.message
+                .starts_with("joint 1: an angle of 90 without a unit"),
+            "{e}"
+        );
+        assert!(e.message.contains("`\"90 deg\"`"), "{e}");
+        let json = "{\"gravity\": [0, 0, -9.81], \"joints\": [\n {\"type\": \"prismatic\", \"mass\": 1,\n  \"theta\": \"pi/2 + 180\"}]}";
+        let e = load("a.json", json).err().expect("an error");
+        assert_eq!((e.line, e.column), (Some(3), Some(12)));
+        assert!(e.message.contains("an angle of 180 without"), "{e}");
+        // Radians said so, degrees, and numbers within 2π pass.
+        for alpha in ["\"90 rad\"", "\"90 deg\"", "-3.14159", "6", "\"q\""] {
+            let text = format!("gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\nalpha = {alpha}\n");
+            let ok = load("a.toml", &text);
+            assert_eq!(ok.is_ok(), alpha != "\"q\"", "{alpha}");
+        }
     }
 }

@@ -2,13 +2,26 @@
 //! [`Robot`]. Absent D-H entries, offsets and spring values are zero.
 
 use super::{FileError, Loaded};
-use crate::front::value::parse_value;
+use crate::front::angle::{self, unitless_angle};
+use crate::front::value::parse_spanned;
 use crate::model::{Convention, Joint, JointKind, Robot, Spring, Value};
+use crate::symbolic::Number;
 use serde::Deserialize;
 
 /// A value in a description file: a number, or a string holding a value (`"90 deg"`). It is
 /// read and checked while the file is parsed, so that its errors carry a line and column.
-struct FileValue(Value);
+/// The second field is what is wrong with it as an angle: a plain number above 2π (a number,
+/// or a term of a string without a unit).
+struct FileValue(Value, Option<String>);
+
+/// An error in joint `.0`'s value of key `.1`, found after parsing: it gets its position
+/// from [`Loaded::positions`].
+pub(super) type Deferred = (usize, &'static str, String);
+
+/// The message for a number used as an angle, if it is a plain number above 2π.
+fn angle_problem(value: Number) -> Option<String> {
+    (value.to_f64().abs() > std::f64::consts::TAU).then(|| angle::message(value, true))
+}
 
 impl<'de> Deserialize<'de> for FileValue {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
@@ -27,14 +40,17 @@ impl serde::de::Visitor<'_> for ValueVisitor {
 
     fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<FileValue, E> {
         if x.is_finite() {
-            Ok(FileValue(Value::from_f64(x)))
+            let value = Value::from_f64(x);
+            let angle = value.exact().and_then(angle_problem);
+            Ok(FileValue(value, angle))
         } else {
             Err(E::custom(format!("{x} is not a finite number")))
         }
     }
 
     fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileValue, E> {
-        Ok(FileValue(Value::Num(crate::symbolic::Number::int(x))))
+        let x = Number::int(x);
+        Ok(FileValue(Value::Num(x), angle_problem(x)))
     }
 
     fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileValue, E> {
@@ -46,7 +62,8 @@ impl serde::de::Visitor<'_> for ValueVisitor {
     }
 
     fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<FileValue, E> {
-        let v = parse_value(text).map_err(E::custom)?;
+        let spanned = parse_spanned(text).map_err(E::custom)?;
+        let v = spanned.value;
         if v.joint_occurrences() > 0 {
             return Err(E::custom(
                 "the joint variable `q` has no place in a description file; `theta` (revolute) \
@@ -60,7 +77,8 @@ impl serde::de::Visitor<'_> for ValueVisitor {
         if v.exact().is_some_and(|n| !n.to_f64().is_finite()) {
             return Err(E::custom(format!("`{text}` is not a finite number")));
         }
-        Ok(FileValue(v))
+        let angle = unitless_angle(&spanned.unitless, true).map(|(_, message)| message);
+        Ok(FileValue(v, angle))
     }
 }
 
@@ -125,9 +143,19 @@ fn value(v: Option<&FileValue>) -> Value {
     v.map_or_else(Value::zero, |v| v.0.clone())
 }
 
+/// The angles (θ and α) of joint `joint` written as plain numbers above 2π.
+fn angle_problems(joint: usize, j: &FileJoint) -> impl Iterator<Item = Deferred> + '_ {
+    [("theta", &j.theta), ("alpha", &j.alpha)]
+        .into_iter()
+        .filter_map(move |(key, v)| Some((joint, key, v.as_ref()?.1.clone()?)))
+}
+
 /// The robot the file describes, with its per-joint check flags (positions are filled in by
-/// the format's reader).
-pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, FileError> {
+/// the format's reader), and the errors that need them.
+pub(super) fn convert(
+    file: FileRobot,
+    default_name: &str,
+) -> Result<(Loaded, Vec<Deferred>), FileError> {
     let convention = match file.convention {
         None | Some(FileConvention::Standard) => Convention::Standard,
         Some(FileConvention::Modified) => Convention::Modified,
@@ -140,7 +168,9 @@ pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, Fil
     let gravity = file.gravity.map(|g| g.0);
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
-    for j in file.joints {
+    let mut deferred = Vec::new();
+    for (i, j) in file.joints.into_iter().enumerate() {
+        deferred.extend(angle_problems(i, &j));
         let kind = match j.kind {
             FileKind::Revolute => JointKind::Revolute,
             FileKind::Prismatic => JointKind::Prismatic,
@@ -164,7 +194,7 @@ pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, Fil
             spring,
         });
     }
-    Ok(Loaded {
+    let loaded = Loaded {
         robot: Robot {
             name: file.name.unwrap_or_else(|| default_name.to_string()),
             convention,
@@ -174,5 +204,6 @@ pub(super) fn convert(file: FileRobot, default_name: &str) -> Result<Loaded, Fil
         check_inertia,
         positions: Vec::new(),
         gravity: None,
-    })
+    };
+    Ok((loaded, deferred))
 }

@@ -30,9 +30,9 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
             column,
         }
     })?;
-    let mut loaded = schema::convert(file, default_name)?;
+    let (mut loaded, deferred) = schema::convert(file, default_name)?;
     (loaded.positions, loaded.gravity) = positions(text);
-    Ok(loaded)
+    super::first_error(loaded, &deferred)
 }
 
 /// Where each joint's values are in TOML text (read a second time, with spans).
