@@ -258,7 +258,7 @@ pub fn scalar_name(generics: &syn::Generics) -> Ident {
 }
 
 /// One method of the `Dynamics` impl with the given body, its scalar type parameter named
-/// `scalar` (see [`scalar_name`]).
+/// `scalar` (see `scalar_name`).
 #[must_use]
 pub fn method(
     method: Method,
