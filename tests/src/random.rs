@@ -98,8 +98,12 @@ impl RobotSpec {
                         stiffness: v(k),
                         rest: v(rest),
                     }),
+                    friction: None,
+                    frame: None,
+                    link_pose: model::Pose::identity(),
                 })
                 .collect(),
+            base: model::Pose::identity(),
         }
     }
 

@@ -66,7 +66,7 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
 #[cfg(test)]
 mod tests {
     use super::{robot, LinkParameter, Problem, MAX_JOINTS};
-    use crate::model::{Convention, Joint, JointKind, Robot, Value};
+    use crate::model::{Convention, Joint, JointKind, Pose, Robot, Value};
 
     fn joint(mass: f64) -> Joint {
         Joint {
@@ -80,6 +80,9 @@ mod tests {
             inertia: [1.0, 1.0, 3.0, 0.0, 0.0, 0.0].map(Value::from_f64),
             actuator_inertia: Value::zero(),
             spring: None,
+            friction: None,
+            frame: None,
+            link_pose: Pose::identity(),
         }
     }
 
@@ -89,6 +92,7 @@ mod tests {
             convention: Convention::Standard,
             gravity: Default::default(),
             joints: masses.iter().map(|m| joint(*m)).collect(),
+            base: Pose::identity(),
         }
     }
 

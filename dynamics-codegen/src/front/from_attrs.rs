@@ -8,7 +8,7 @@ use super::errors::Errors;
 use super::fields::{check_names, Field};
 use super::value::Spanned;
 use crate::check;
-use crate::model::{Convention, Joint, JointKind, Robot, Spring, Value};
+use crate::model::{Convention, Joint, JointKind, Pose, Robot, Spring, Value};
 use proc_macro2::Span;
 
 /// The robot the attributes describe; its errors go to `errors`.
@@ -48,6 +48,7 @@ pub(super) fn robot_from_attrs(
         convention: attrs.convention.map_or(Convention::Standard, |c| c.0),
         gravity,
         joints,
+        base: Pose::identity(),
     }
 }
 
@@ -154,6 +155,9 @@ impl Reader<'_> {
             inertia: link.inertia,
             actuator_inertia: link.actuator_inertia,
             spring: link.spring,
+            friction: None,
+            frame: None,
+            link_pose: Pose::identity(),
         }
     }
 

@@ -6,8 +6,10 @@
 //! Joint i moves link i by `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)` (standard D-H)
 //! or `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)` (modified D-H).
 
+mod frame;
 mod value;
 
+pub use frame::{AxisFrame, Placement, Pose};
 pub use value::Value;
 
 /// Revolute or prismatic.
@@ -38,6 +40,20 @@ pub struct Spring {
     pub rest: Value,
 }
 
+/// Joint friction: `τ_f = viscous · q̇ + coulomb · sign(q̇) + offset`, with `sign(q̇)` replaced
+/// by `tanh(q̇ / smoothing)` where a smoothing velocity is given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Friction {
+    /// Viscous coefficient f_v.
+    pub viscous: Value,
+    /// Coulomb coefficient f_c.
+    pub coulomb: Value,
+    /// Constant offset.
+    pub offset: Value,
+    /// Velocity scale ε of the smooth Coulomb term, if any.
+    pub smoothing: Option<Value>,
+}
+
 /// Joint i and link i.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Joint {
@@ -62,6 +78,14 @@ pub struct Joint {
     pub actuator_inertia: Value,
     /// Optional joint spring.
     pub spring: Option<Spring>,
+    /// Optional joint friction.
+    pub friction: Option<Friction>,
+    /// The joint as the user gave it, if not as a D-H row; the D-H columns above then hold the
+    /// robot's own table derived from it.
+    pub frame: Option<AxisFrame>,
+    /// The user's link frame i in D-H frame i (the identity for a robot given by its D-H
+    /// table); the inertial parameters above are in D-H frame i.
+    pub link_pose: Pose,
 }
 
 /// A serial robot.
@@ -75,6 +99,8 @@ pub struct Robot {
     pub gravity: [Value; 3],
     /// Joints, base to tip.
     pub joints: Vec<Joint>,
+    /// D-H frame 0 in the user's base frame (the identity for a robot given by its D-H table).
+    pub base: Pose,
 }
 
 impl Robot {

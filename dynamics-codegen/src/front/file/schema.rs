@@ -4,7 +4,7 @@
 use super::{FileError, Loaded};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
-use crate::model::{Convention, Joint, JointKind, Robot, Spring, Value};
+use crate::model::{Convention, Joint, JointKind, Pose, Robot, Spring, Value};
 use crate::symbolic::Number;
 use serde::Deserialize;
 
@@ -192,6 +192,9 @@ pub(super) fn convert(
             inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
             actuator_inertia: value(j.actuator_inertia.as_ref()),
             spring,
+            friction: None,
+            frame: None,
+            link_pose: Pose::identity(),
         });
     }
     let loaded = Loaded {
@@ -200,6 +203,7 @@ pub(super) fn convert(
             convention,
             gravity,
             joints,
+            base: Pose::identity(),
         },
         check_inertia,
         positions: Vec::new(),
