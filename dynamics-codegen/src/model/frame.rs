@@ -60,3 +60,253 @@ impl Default for Pose {
         Pose::identity()
     }
 }
+
+/// How far from a multiple of π/2 an angle given as a number may be and still be taken as that
+/// exact quarter turn, in radians. URDF files write π/2 as 1.5708 (3.7e-6 off) and π as 3.14159
+/// (2.7e-6 off), and exporters leave residues such as 1e-15; a turn meant as 0.0001 rad or more
+/// is kept.
+pub const QUARTER_TURN_TOLERANCE: f64 = 1e-5;
+
+/// `angle` as an exact multiple of π/2 (`k/2 · π`) if it is a number within
+/// [`QUARTER_TURN_TOLERANCE`] of one; otherwise unchanged.
+#[must_use]
+pub fn snap_angle(angle: &Value) -> Value {
+    if angle.pi_multiple().is_some() {
+        return angle.clone();
+    }
+    let Some(x) = angle.exact().map(crate::symbolic::Number::to_f64) else {
+        return angle.clone();
+    };
+    let quarter = std::f64::consts::FRAC_PI_2;
+    let k = (x / quarter).round();
+    if (x - k * quarter).abs() > QUARTER_TURN_TOLERANCE {
+        return angle.clone();
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    let half_turns = crate::symbolic::Number::ratio(k as i128, 2).expect("a small ratio");
+    Value::num(half_turns) * Value::Pi
+}
+
+/// `(sin θ, cos θ)` of a constant angle: exact for a multiple of π/2 (after
+/// [`snap_angle`]), a float otherwise; `None` for an angle that names a struct field.
+#[must_use]
+pub fn sin_cos(angle: &Value) -> Option<(Value, Value)> {
+    let angle = snap_angle(angle);
+    if let Some(k) = angle
+        .pi_multiple()
+        .and_then(|m| (m * crate::symbolic::Number::int(2)).as_integer())
+    {
+        let quarter = k.rem_euclid(4);
+        let (s, c) = [(0, 1), (1, 0), (0, -1), (-1, 0)][usize::try_from(quarter).ok()?];
+        return Some((
+            Value::num(crate::symbolic::Number::int(s)),
+            Value::num(crate::symbolic::Number::int(c)),
+        ));
+    }
+    let x = angle.eval(&|_| None)?;
+    let f = |v: f64| Value::num(crate::symbolic::Number::from_float(v));
+    Some((f(x.sin()), f(x.cos())))
+}
+
+/// A 3×3 matrix of values, row by row.
+pub type Matrix = [[Value; 3]; 3];
+
+/// `a · b`.
+#[must_use]
+pub fn mat_mul(a: &Matrix, b: &Matrix) -> Matrix {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..3).fold(Value::zero(), |acc, k| {
+                acc + a[i][k].clone() * b[k][j].clone()
+            })
+        })
+    })
+}
+
+/// `a · v`.
+#[must_use]
+pub fn mat_vec(a: &Matrix, v: &[Value; 3]) -> [Value; 3] {
+    std::array::from_fn(|i| {
+        (0..3).fold(Value::zero(), |acc, k| acc + a[i][k].clone() * v[k].clone())
+    })
+}
+
+/// `aᵀ`.
+#[must_use]
+pub fn transpose(a: &Matrix) -> Matrix {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[j][i].clone()))
+}
+
+/// The rotation by `(sin, cos)` about axis 0 (x), 1 (y) or 2 (z).
+fn axis_rotation(axis: usize, (s, c): (Value, Value)) -> Matrix {
+    let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
+    let mut m = Pose::identity().rotation;
+    m[j][j] = c.clone();
+    m[k][k] = c;
+    m[j][k] = -s.clone();
+    m[k][j] = s;
+    m
+}
+
+impl Placement {
+    /// The placement as a pose, `Trans(xyz) · Rz(yaw) Ry(pitch) Rx(roll)`, angles snapped with
+    /// [`snap_angle`]; `Err(i)` if angle `i` (0 roll, 1 pitch, 2 yaw) names a struct field.
+    pub fn pose(&self) -> Result<Pose, usize> {
+        let rot = |i: usize| {
+            sin_cos(&self.rpy[i])
+                .map(|sc| axis_rotation(i, sc))
+                .ok_or(i)
+        };
+        let rotation = mat_mul(&rot(2)?, &mat_mul(&rot(1)?, &rot(0)?));
+        Ok(Pose {
+            rotation,
+            translation: self.xyz.clone(),
+        })
+    }
+}
+
+impl Pose {
+    /// `self · other`: first `other`, then `self` (frames compose left to right).
+    #[must_use]
+    pub fn then(&self, other: &Pose) -> Pose {
+        let moved = mat_vec(&self.rotation, &other.translation);
+        Pose {
+            rotation: mat_mul(&self.rotation, &other.rotation),
+            translation: std::array::from_fn(|i| moved[i].clone() + self.translation[i].clone()),
+        }
+    }
+
+    /// The inverse transform: `(Rᵀ, −Rᵀ t)`.
+    #[must_use]
+    pub fn inverse(&self) -> Pose {
+        let rotation = transpose(&self.rotation);
+        let back = mat_vec(&rotation, &self.translation);
+        Pose {
+            rotation,
+            translation: back.map(|x| -x),
+        }
+    }
+
+    /// A point's coordinates mapped: `R p + t`.
+    #[must_use]
+    pub fn apply(&self, p: &[Value; 3]) -> [Value; 3] {
+        let r = mat_vec(&self.rotation, p);
+        std::array::from_fn(|i| r[i].clone() + self.translation[i].clone())
+    }
+}
+
+/// An inertia tensor `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` (tensor off-diagonals, as URDF) given in
+/// axes B, expressed in axes A where `rotation` maps B coordinates to A: `R I Rᵀ`.
+#[must_use]
+pub fn rotate_inertia(rotation: &Matrix, inertia: &[Value; 6]) -> [Value; 6] {
+    let [xx, yy, zz, xy, xz, yz] = inertia.clone();
+    let tensor = [
+        [xx, xy.clone(), xz.clone()],
+        [xy, yy, yz.clone()],
+        [xz, yz, zz],
+    ];
+    let t = mat_mul(&mat_mul(rotation, &tensor), &transpose(rotation));
+    [
+        t[0][0].clone(),
+        t[1][1].clone(),
+        t[2][2].clone(),
+        t[0][1].clone(),
+        t[0][2].clone(),
+        t[1][2].clone(),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::approx_constant)] // URDF files write 1.5708 and 3.14159: the inputs under test
+
+    use super::{rotate_inertia, snap_angle, Placement, Pose, Value};
+
+    fn num(v: &Value) -> f64 {
+        v.eval(&|_| None).expect("a number")
+    }
+
+    /// `Rz(y) Ry(p) Rx(r)` written out, as URDF defines it.
+    fn rpy_matrix(r: f64, p: f64, y: f64) -> [[f64; 3]; 3] {
+        let (sr, cr, sp, cp, sy, cy) = (r.sin(), r.cos(), p.sin(), p.cos(), y.sin(), y.cos());
+        [
+            [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr],
+        ]
+    }
+
+    fn placement(xyz: [f64; 3], rpy: [f64; 3]) -> Placement {
+        Placement {
+            xyz: xyz.map(Value::from_f64),
+            rpy: rpy.map(Value::from_f64),
+        }
+    }
+
+    #[test]
+    fn rpy_rotation_is_urdf_s() {
+        for rpy in [
+            [0.3, -1.1, 2.0],
+            [1.5708, 0.0, -3.14159],
+            [0.0486795, 1.2, 0.7],
+        ] {
+            let pose = placement([0.1, 0.2, 0.3], rpy).pose().unwrap();
+            let expected = rpy_matrix(rpy[0], rpy[1], rpy[2]);
+            for (row, want) in pose.rotation.iter().zip(expected) {
+                for (v, w) in row.iter().zip(want) {
+                    assert!((num(v) - w).abs() < 2e-5, "{rpy:?}: {v} vs {w}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn near_quarter_turns_snap_exactly() {
+        let pose = placement([0.0; 3], [1.5708, 3.14159, 1e-15])
+            .pose()
+            .unwrap();
+        for row in &pose.rotation {
+            for v in row {
+                let x = v.exact().expect("exact").to_f64();
+                assert!(x == 0.0 || x.abs() == 1.0, "{v}");
+            }
+        }
+        assert_eq!(
+            snap_angle(&Value::from_f64(0.0001)),
+            Value::from_f64(0.0001)
+        );
+        assert_eq!(
+            snap_angle(&Value::from_f64(-1.57079))
+                .pi_multiple()
+                .unwrap()
+                .to_f64(),
+            -0.5
+        );
+    }
+
+    #[test]
+    fn a_pose_then_its_inverse_is_the_identity() {
+        let pose = placement([0.4, -0.2, 1.1], [0.3, -1.1, 2.0])
+            .pose()
+            .unwrap();
+        let round = pose.then(&pose.inverse());
+        let id = Pose::identity();
+        for i in 0..3 {
+            assert!(num(&round.translation[i]).abs() < 1e-15);
+            for j in 0..3 {
+                assert!((num(&round.rotation[i][j]) - num(&id.rotation[i][j])).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn rotating_an_inertia_keeps_its_trace_and_turns_its_axes() {
+        let quarter = placement([0.0; 3], [0.0, 0.0, std::f64::consts::FRAC_PI_2])
+            .pose()
+            .unwrap();
+        let inertia = [1.0, 2.0, 3.0, 0.1, 0.0, 0.0].map(Value::from_f64);
+        let turned = rotate_inertia(&quarter.rotation, &inertia).map(|v| num(&v));
+        // A quarter turn about z swaps x and y: Ixx ↔ Iyy, Ixy → −Ixy.
+        assert_eq!(turned, [2.0, 1.0, 3.0, -0.1, 0.0, 0.0]);
+    }
+}

@@ -6,10 +6,14 @@
 //! Joint i moves link i by `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)` (standard D-H)
 //! or `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)` (modified D-H).
 
+mod arith;
 mod frame;
 mod value;
 
-pub use frame::{AxisFrame, Placement, Pose};
+pub use frame::{
+    mat_mul, mat_vec, rotate_inertia, sin_cos, snap_angle, transpose, AxisFrame, Matrix, Placement,
+    Pose, QUARTER_TURN_TOLERANCE,
+};
 pub use value::Value;
 
 /// Revolute or prismatic.
