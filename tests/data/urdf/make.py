@@ -3,10 +3,12 @@
 
 For each robot of ROBOTS (file, base link, tip link) this script
 
-1. reads the URDF and keeps the serial chain from the base link to the tip link alone: the links
-   on that path and the joints between them (fixed ones included; Pinocchio merges a fixed
-   joint's child into its parent link). Everything else (the hand, the gripper, frames hanging
-   off the chain, the links above the base) is dropped;
+1. reads the URDF and keeps the serial chain from the base link to the tip link as the project's
+   URDF front end takes it: the links on that path, and every link fixed to one of them
+   (Pinocchio merges a fixed joint's child into its parent's body, as the front end does). What
+   hangs off by a moving joint (the Panda's fingers, the Z1's and SO-101's jaws) and the links
+   above the base are dropped; the Panda's hand and the Z1's gripper stator, fixed to the tip,
+   stay;
 2. snaps every `rpy` angle within SNAP_TOLERANCE (1e-5 rad) of a multiple of pi/2 to that
    multiple, exactly as the project's front end does (URDFs write 1.57079632679, 1.5708,
    3.14159 or 1e-15), and records each change;
@@ -72,6 +74,28 @@ def chain(root, base, tip):
         link = parent_joint[link].find("parent").get("link")
         path.append(link)
     return path[::-1]
+
+
+def rigid_chain(root, base, tip):
+    """The links that move with the chain from base to tip, as the project's URDF front end takes
+    them: the path's links and every link fixed to one of them (a fixed joint's child is part of
+    its parent's rigid body); below a joint that moves off the path, nothing (such a joint may
+    only hang off the tip's rigid body: before the tip the chain would branch)."""
+    path = chain(root, base, tip)
+    children = {}
+    for j in root.findall("joint"):
+        children.setdefault(j.find("parent").get("link"), []).append(j)
+    keep, todo = set(), [base]
+    while todo:
+        link = todo.pop()
+        keep.add(link)
+        for j in children.get(link, []):
+            child = j.find("child").get("link")
+            if child in path or j.get("type") == "fixed":
+                todo.append(child)
+            else:
+                assert link not in path[:-1], f"{j.get('name')} branches off the chain at {link}"
+    return path, keep
 
 
 def prune(root, links):
@@ -229,8 +253,8 @@ def make(name, file, base, tip):
     with open(path, "rb") as f:
         sha256 = hashlib.sha256(f.read()).hexdigest()
     raw = ET.parse(path).getroot()
-    links = chain(raw, base, tip)
-    prune(raw, set(links))
+    links, rigid = rigid_chain(raw, base, tip)
+    prune(raw, rigid)
     owners(raw)
     snapped = copy.deepcopy(raw)
     changes = snap(snapped)
@@ -266,6 +290,7 @@ def make(name, file, base, tip):
         "base": base,
         "tip": tip,
         "links": links,
+        "fixed_to_the_chain": sorted(rigid - set(links)),
         "joints": joints,
         "joint_types": types,
         "damping": rounded(np.asarray(model.damping)),
