@@ -34,6 +34,7 @@ Usage, from the repository root (Pinocchio 4.1.0, the `pin` wheel):
 
 import copy
 import hashlib
+import importlib.util
 import json
 import math
 import os
@@ -59,9 +60,24 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 
 
-def scaled_error(a, b):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
+def module(path, name):
+    """A script of the repository, imported by path."""
+    spec = importlib.util.spec_from_file_location(name, path)
+    m = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(m)
+    return m
+
+
+# The D-H Panda's script: its error measure, samples, identity checks and rounding serve here too.
+panda = module(os.path.join(ROOT, "tests", "data", "panda", "make.py"), "panda_make")
+scaled_error, check_identities, rounded = panda.scaled_error, panda.check_identities, panda.rounded
+samples = panda.samples
+
+
+def write_json(path, value):
+    with open(path, "w") as f:
+        json.dump(value, f, indent=1)
+        f.write("\n")
 
 
 def chain(root, base, tip):
@@ -144,22 +160,6 @@ def load(root):
     return model
 
 
-def samples(n, rng):
-    out = []
-    for k in range(20):
-        q = rng.uniform(-math.pi, math.pi, n)
-        qd = rng.uniform(-2.0, 2.0, n)
-        qdd = rng.uniform(-5.0, 5.0, n)
-        if k == 0:
-            q, qd, qdd = np.zeros(n), np.zeros(n), np.zeros(n)
-        elif k == 1:
-            qd, qdd = np.zeros(n), np.zeros(n)
-        elif k == 2:
-            qdd = np.zeros(n)
-        out.append((q, qd, qdd))
-    return out
-
-
 def symmetric(M):
     return np.triu(M) + np.triu(M, 1).T
 
@@ -181,23 +181,6 @@ def quantities(model, tip, q, qd, qdd):
     x["ee_pose"] = data.oMf[fid].homogeneous.copy()
     x["jacobian"] = pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).copy()
     return x
-
-
-def check_identities(model, q, qd, qdd, x):
-    worst = max(
-        scaled_error(x["M"] @ qdd + x["h"], x["tau"]),
-        scaled_error(x["C"] @ qd + x["g"], x["h"]),
-        scaled_error(0.5 * qd @ x["M"] @ qd, x["kinetic_energy"]),
-    )
-    assert worst < TOLERANCE, f"identities: {worst:e}"
-    eps, data = 1e-6, model.createData()
-    crba = lambda q: symmetric(pin.crba(model, data, q).copy())
-    fd = scaled_error((crba(q + eps * qd) - crba(q - eps * qd)) / (2 * eps), x["C"] + x["C"].T)
-    energy = lambda q: pin.computePotentialEnergy(model, data, q)
-    grad = np.array([(energy(q + eps * e) - energy(q - eps * e)) / (2 * eps) for e in np.eye(model.nv)])
-    fd = max(fd, scaled_error(grad, x["g"]))
-    assert fd < 1e-7, f"finite differences: {fd:e}"
-    return worst, fd
 
 
 def friction_torque(model, qd):
@@ -240,14 +223,6 @@ def rebuild(description):
     return model
 
 
-def rounded(x):
-    if isinstance(x, np.ndarray):
-        return rounded(x.tolist())
-    if isinstance(x, list):
-        return [rounded(v) for v in x]
-    return float(f"{float(x):.15g}")
-
-
 def make(name, file, base, tip):
     path = os.path.join(ROOT, "robots", "urdf", file)
     with open(path, "rb") as f:
@@ -265,7 +240,7 @@ def make(name, file, base, tip):
     worst_id = worst_fd = worst_rebuild = 0.0
     change = {k: 0.0 for k in ("tau", "M", "C", "g", "kinetic_energy", "potential_energy")}
     out = []
-    for q, qd, qdd in samples(n, np.random.default_rng(SEED)):
+    for q, qd, qdd in samples(model, SEED):
         x = quantities(model, tip, q, qd, qdd)
         ident, fd = check_identities(model, q, qd, qdd, x)
         worst_id, worst_fd = max(worst_id, ident), max(worst_fd, fd)
@@ -318,9 +293,7 @@ def main():
     names = sys.argv[1:] or list(ROBOTS)
     for name in names:
         data, (ident, fd, change) = make(name, *ROBOTS[name])
-        with open(os.path.join(HERE, f"{name}.json"), "w") as f:
-            json.dump(data, f, indent=1)
-            f.write("\n")
+        write_json(os.path.join(HERE, f"{name}.json"), data)
         shown = ", ".join(f"{k} {v:.1e}" for k, v in change.items())
         print(f"{name}: n = {data['n']}, {data['base']} -> {data['tip']}, "
               f"{len(data['snapping']['changes'])} origins snapped (change: {shown}); "

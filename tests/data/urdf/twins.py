@@ -28,7 +28,6 @@ Usage, from the repository root: /work/venv/bin/python tests/data/urdf/twins.py
 """
 
 import importlib.util
-import json
 import math
 import os
 
@@ -39,15 +38,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 
 
-def module(path, name):
-    spec = importlib.util.spec_from_file_location(name, path)
-    m = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(m)
-    return m
-
-
-make = module(os.path.join(HERE, "make.py"), "urdf_make")
-panda = module(os.path.join(ROOT, "tests", "data", "panda", "make.py"), "panda_make")
+spec = importlib.util.spec_from_file_location("urdf_make", os.path.join(HERE, "make.py"))
+make = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(make)
+panda = make.panda
 
 # The UR5's modified D-H table (Craig): row i holds a_{i-1}, alpha_{i-1}, d_i; theta offsets 0.
 # Axes 2, 3 and 4 are parallel (the URDF's y): their common normals are put where d_2 = d_3 = 0,
@@ -112,7 +106,7 @@ def compare(name, desc):
     urdf, dh = urdf_model(name), panda.model_from_dh(desc)
     tip = make.ROBOTS[name][2]
     worst, out = 0.0, []
-    for q, qd, qdd in make.samples(urdf.nv, np.random.default_rng(make.SEED)):
+    for q, qd, qdd in make.samples(urdf, make.SEED):
         x = make.quantities(urdf, tip, q, qd, qdd)
         y = make.quantities(dh, f"link_{dh.nv}", q, qd, qdd)
         for k in ("tau", "M", "C", "h", "g", "kinetic_energy", "potential_energy"):
@@ -185,9 +179,7 @@ def main():
             "description": desc,
             "samples": samples,
         }
-        with open(os.path.join(HERE, f"{name}_dh.json"), "w") as f:
-            json.dump(data, f, indent=1)
-            f.write("\n")
+        make.write_json(os.path.join(HERE, f"{name}_dh.json"), data)
         print(f"{name}: D-H twin against the URDF {worst:.1e}: wrote robots/{name}_urdf_dh.toml, "
               f"tests/data/urdf/{name}_dh.json")
 
