@@ -2,12 +2,13 @@
 //
 // Usage: pinocchio_bench [--generated LIB.so] DATA.json [DATA.json ...]
 //
-// Each argument is a reference data file, of tests/data/reference/data/ or tests/data/panda/
-// (format in tests/data/reference/README.md). For each file the program
+// Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/ or
+// tests/data/urdf/ (format in tests/data/reference/README.md). For each file the program
 //   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
 //      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
 //      transforms, link inertias mapped with post_i.act(...), armature = actuator inertias,
-//      gravity = the JSON gravity),
+//      gravity = the JSON gravity), or, for a URDF robot, from its "pinocchio_model": the model
+//      Pinocchio's URDF loader built (tests/data/urdf/make.py), joint type by joint type,
 //   2. checks rnea, crba, computeGeneralizedGravity, computeCoriolisMatrix and nonLinearEffects
 //      against the file's sample CHECK_SAMPLE (relative tolerance 1e-9) and aborts on a mismatch,
 //      so that the timed model is the right robot,
@@ -24,7 +25,8 @@
 // data on every sample (the same tolerance), and times the two sides in turn, batch by batch
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
 // of this shared machine. Each line then reads
-// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches.
+// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
+// a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
 
 #include <algorithm>
 #include <chrono>
@@ -412,6 +414,52 @@ static Model build_model(const json::Value & desc)
   return model;
 }
 
+// The model Pinocchio's URDF loader built, as tests/data/urdf/make.py records it
+// ("pinocchio_model": per joint its parent, joint type, placement and merged body). Pinocchio's
+// URDF parser is a compiled library (urdfdom), which this header-only build does not link.
+static Model build_model_from_pinocchio(const json::Value & record)
+{
+  Model model;
+  model.gravity.linear(vec3(record["gravity"]));
+  model.gravity.angular().setZero();
+  const json::Value & joints = record["joints"];
+  for (std::size_t i = 0; i < joints.size(); ++i)
+  {
+    const json::Value & j = joints[i];
+    Eigen::Matrix3d R, I;
+    for (Eigen::Index r = 0; r < 3; ++r)
+      for (Eigen::Index c = 0; c < 3; ++c)
+      {
+        R(r, c) = j["rotation"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].number();
+        I(r, c) = j["inertia"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].number();
+      }
+    const SE3 placement(R, vec3(j["translation"]));
+    const auto parent = static_cast<pinocchio::JointIndex>(j["parent"].number());
+    const std::string type = j["type"].string(), name = j["name"].string();
+    pinocchio::JointIndex jid;
+    if (type == "JointModelRX")
+      jid = model.addJoint(parent, pinocchio::JointModelRX(), placement, name);
+    else if (type == "JointModelRY")
+      jid = model.addJoint(parent, pinocchio::JointModelRY(), placement, name);
+    else if (type == "JointModelRZ")
+      jid = model.addJoint(parent, pinocchio::JointModelRZ(), placement, name);
+    else if (type == "JointModelPX")
+      jid = model.addJoint(parent, pinocchio::JointModelPX(), placement, name);
+    else if (type == "JointModelPY")
+      jid = model.addJoint(parent, pinocchio::JointModelPY(), placement, name);
+    else if (type == "JointModelPZ")
+      jid = model.addJoint(parent, pinocchio::JointModelPZ(), placement, name);
+    else if (type == "JointModelRevoluteUnaligned")
+      jid = model.addJoint(parent, pinocchio::JointModelRevoluteUnaligned(vec3(j["axis"])), placement, name);
+    else if (type == "JointModelPrismaticUnaligned")
+      jid = model.addJoint(parent, pinocchio::JointModelPrismaticUnaligned(vec3(j["axis"])), placement, name);
+    else
+      throw std::runtime_error("unknown Pinocchio joint type " + type);
+    model.appendBodyToJoint(jid, Inertia(j["mass"].number(), vec3(j["lever"]), I), SE3::Identity());
+  }
+  return model;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Check against the reference data
 // ---------------------------------------------------------------------------------------------
@@ -649,7 +697,8 @@ int main(int argc, char ** argv)
     {
       file = json::parse_file(path);
       robot = file["robot"].string();
-      model = build_model(file["description"]);
+      model = file.has("pinocchio_model") ? build_model_from_pinocchio(file["pinocchio_model"])
+                                          : build_model(file["description"]);
     }
     catch (const std::exception & e)
     {
@@ -658,7 +707,11 @@ int main(int argc, char ** argv)
     }
     const json::Value & samples = file["samples"];
     check_model(robot, model, samples[CHECK_SAMPLE]);
-    if (generated)
+    // A robot the library does not have (dof 0) gets Pinocchio's column alone.
+    const bool with_generated = generated && generated->dof(robot.c_str()) != 0;
+    if (generated && !with_generated)
+      std::fprintf(stderr, "%s: not in the generated library: Pinocchio alone\n", robot.c_str());
+    if (with_generated)
     {
       try
       {
@@ -684,7 +737,7 @@ int main(int argc, char ** argv)
     std::vector<double> out(qs[0].size() * qs[0].size());
     // Pinocchio's `function`, and the generated one in turn with it when it is loaded.
     auto time = [&](const char * function, auto && pin) {
-      if (!generated)
+      if (!with_generated)
       {
         std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin, checksum));
       }

@@ -2,7 +2,9 @@
 //!
 //! * The four 6-joint reference robots of `tests/data/reference/robots/`, each derived with
 //!   `#[derive(Dynamics)]` from its JSON description: [`Puma560`], [`Stanford`], [`Ur5`] and
-//!   [`Random5`]; and the 7-joint [`Panda`] of `tests/data/panda/`.
+//!   [`Random5`]; the 7-joint [`Panda`] of `tests/data/panda/`; and [`Ur5Dh`], the UR5 of
+//!   `robots/urdf/ur5.urdf` written as a D-H table (`robots/ur5_urdf_dh.toml`, data in
+//!   `tests/data/urdf/`), the twin the URDF robot is compared with.
 //! * Their 20 reference samples (`q`, `qd`, `qdd` and the expected `tau`, computed with
 //!   Pinocchio 4.1.0), read at run time by [`samples`].
 //! * The two other implementations the generated code is compared with, built from the same
@@ -20,9 +22,10 @@ use dynamics_runtime::Dynamics;
 pub const DOF: usize = 6;
 
 /// Names of the benchmarked robots, in output order: the four 6-joint reference robots, whose
-/// description and data are `tests/data/reference/{robots,data}/<name>.json`, and `panda`, whose
-/// are `tests/data/panda/{robot,data}.json`.
-pub const ROBOTS: [&str; 5] = ["puma560", "stanford", "ur5", "random5", "panda"];
+/// description and data are `tests/data/reference/{robots,data}/<name>.json`, `panda`, whose
+/// are `tests/data/panda/{robot,data}.json`, and `ur5_dh`, whose data file
+/// `tests/data/urdf/ur5_dh.json` holds its description.
+pub const ROBOTS: [&str; 6] = ["puma560", "stanford", "ur5", "random5", "panda", "ur5_dh"];
 
 /// The PUMA 560 (Corke's Robotics Toolbox parameters, motor inertia and friction dropped): RRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
@@ -57,6 +60,12 @@ pub struct Random5;
 #[dynamics(file = "../tests/data/panda/robot.json")]
 pub struct Panda;
 
+/// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table, its link inertials re-expressed in
+/// the D-H frames (`tests/data/urdf/twins.py`): RRRRRR. Not the Robotics Toolbox's [`Ur5`].
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(file = "../robots/ur5_urdf_dh.toml")]
+pub struct Ur5Dh;
+
 /// One reference sample of an `N`-joint robot: a state and the torques Pinocchio computed for it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sample<const N: usize = DOF> {
@@ -72,15 +81,19 @@ pub struct Sample<const N: usize = DOF> {
 
 const DATA_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/data");
 
-/// `kind` is `robots` (the description) or `data`.
-fn read(kind: &str, robot: &str) -> String {
-    let path = if robot == "panda" {
-        let file = if kind == "robots" { "robot" } else { "data" };
-        format!("{DATA_DIR}/panda/{file}.json")
-    } else {
-        format!("{DATA_DIR}/reference/{kind}/{robot}.json")
-    };
+/// The text of `tests/data/<file>`.
+fn read(file: &str) -> String {
+    let path = format!("{DATA_DIR}/{file}");
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"))
+}
+
+/// The data file of `robot` in `tests/data/`.
+fn data_file(robot: &str) -> String {
+    match robot {
+        "panda" => "panda/data.json".into(),
+        "ur5_dh" => "urdf/ur5_dh.json".into(),
+        _ => format!("reference/data/{robot}.json"),
+    }
 }
 
 fn vector<const N: usize>(v: &serde_json::Value, what: &str) -> [f64; N] {
@@ -100,7 +113,7 @@ fn vector<const N: usize>(v: &serde_json::Value, what: &str) -> [f64; N] {
 /// If the file is missing or malformed, or the robot has not `N` joints.
 #[must_use]
 pub fn samples<const N: usize>(robot: &str) -> Vec<Sample<N>> {
-    let data: serde_json::Value = serde_json::from_str(&read("data", robot))
+    let data: serde_json::Value = serde_json::from_str(&read(&data_file(robot)))
         .unwrap_or_else(|e| panic!("data of {robot}: {e}"));
     let samples = data["samples"]
         .as_array()
@@ -116,13 +129,22 @@ pub fn samples<const N: usize>(robot: &str) -> Vec<Sample<N>> {
         .collect()
 }
 
-/// The JSON description of `robot`: the file its struct is derived from.
+/// The JSON description of `robot`: the file its struct is derived from, or for the UR5's twin
+/// the same robot as its data file describes it.
 ///
 /// # Panics
 /// If the file is missing.
 #[must_use]
 pub fn description(robot: &str) -> String {
-    read("robots", robot)
+    match robot {
+        "panda" => read("panda/robot.json"),
+        "ur5_dh" => {
+            let data: serde_json::Value = serde_json::from_str(&read(&data_file("ur5_dh")))
+                .unwrap_or_else(|e| panic!("data of ur5_dh: {e}"));
+            data["description"].to_string()
+        }
+        _ => read(&format!("reference/robots/{robot}.json")),
+    }
 }
 
 /// `robot` evaluated by the plain numeric recursive Newton-Euler (`inverse_dynamics`) and

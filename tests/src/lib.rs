@@ -1,7 +1,8 @@
 //! Integration tests of the workspace (see `tests/`), and the helpers they share:
 //! [`random`], proptest strategies for random robots and states; [`book`], the harness that
 //! checks the generated code against the book's worked examples; [`printed`], the book's
-//! printed equations parsed into exact polynomials. The helpers that the generator's and the
+//! printed equations parsed into exact polynomials; [`reference`], the comparison with a
+//! reference data file of `tests/data/`. The helpers that the generator's and the
 //! runtime's own tests need too (a seeded generator, the error measures) are in
 //! `dynamics-test-support` (`tests/support`), re-exported here, because those crates cannot
 //! depend on this one without a cycle.
@@ -9,5 +10,6 @@
 pub mod book;
 pub mod printed;
 pub mod random;
+pub mod reference;
 
 pub use dynamics_test_support::{error_over, relative_error, Rng};

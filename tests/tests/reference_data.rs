@@ -3,11 +3,8 @@
 //! 4.1.0, checked against the URDF its parameters come from): for every sample, τ, M, C,
 //! C·qd + g, g and both energies match to 1e-10, scaled as max|a − b| / max(1, max|b|).
 
-use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
-use serde_json::Value;
-
-const TOLERANCE: f64 = 1e-10;
+use dynamics_tests::reference::{self, Friction};
 
 macro_rules! reference_robot {
     ($name:ident, $file:literal, $n:literal $(, $key:ident = $value:tt)?) => {
@@ -39,80 +36,8 @@ reference_robot!(Random2, "data/reference/robots/random2.json", 3);
 reference_robot!(Random5, "data/reference/robots/random5.json", 6);
 reference_robot!(Panda, "data/panda/robot.json", 7);
 
-fn vector<const N: usize>(v: &Value) -> [f64; N] {
-    let a = v.as_array().expect("array");
-    assert_eq!(a.len(), N);
-    core::array::from_fn(|i| a[i].as_f64().expect("number"))
-}
-
-fn matrix<const N: usize>(v: &Value) -> [[f64; N]; N] {
-    let a = v.as_array().expect("array");
-    core::array::from_fn(|i| vector::<N>(&a[i]))
-}
-
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
-    let path = format!("{}/data/{file}", env!("CARGO_MANIFEST_DIR"));
-    let data: Value =
-        serde_json::from_str(&std::fs::read_to_string(path).expect("data file")).expect("json");
-    let samples = data["samples"].as_array().expect("samples");
-    assert_eq!(samples.len(), 20);
-    let mut worst = 0.0f64;
-    for (k, s) in samples.iter().enumerate() {
-        let (q, qd, qdd) = (
-            vector::<N>(&s["q"]),
-            vector::<N>(&s["qd"]),
-            vector::<N>(&s["qdd"]),
-        );
-        let flat = |m: [[f64; N]; N]| m.iter().flatten().copied().collect::<Vec<_>>();
-        let checks: [(&str, Vec<f64>, Vec<f64>); 8] = [
-            (
-                "tau",
-                robot.inverse_dynamics(&q, &qd, &qdd).to_vec(),
-                vector::<N>(&s["tau"]).to_vec(),
-            ),
-            ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
-            (
-                "C",
-                flat(robot.coriolis_matrix(&q, &qd)),
-                flat(matrix::<N>(&s["C"])),
-            ),
-            (
-                "h",
-                robot.bias_torques(&q, &qd).to_vec(),
-                vector::<N>(&s["h"]).to_vec(),
-            ),
-            (
-                "g",
-                robot.gravity_torques(&q).to_vec(),
-                vector::<N>(&s["g"]).to_vec(),
-            ),
-            ("C qd", robot.coriolis_torques(&q, &qd).to_vec(), {
-                let h = vector::<N>(&s["h"]);
-                let g = vector::<N>(&s["g"]);
-                (0..N).map(|i| h[i] - g[i]).collect()
-            }),
-            (
-                "kinetic energy",
-                vec![robot.kinetic_energy(&q, &qd)],
-                vec![s["kinetic_energy"].as_f64().expect("number")],
-            ),
-            (
-                "potential energy",
-                vec![robot.potential_energy(&q)],
-                vec![s["potential_energy"].as_f64().expect("number")],
-            ),
-        ];
-        for (what, got, want) in checks {
-            let e = scaled_error(&got, &want);
-            assert!(
-                e < TOLERANCE,
-                "{file} sample {k}: {what} off by {e:e}\n got {got:?}\nwant {want:?}"
-            );
-            worst = worst.max(e);
-        }
-    }
-    eprintln!("{file}: worst scaled error {worst:.1e}");
-    worst
+    reference::check(robot, file, Friction::None)
 }
 
 #[test]

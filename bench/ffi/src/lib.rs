@@ -8,7 +8,7 @@
 //! joints.
 
 use core::ffi::{c_char, CStr};
-use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5};
+use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh};
 use dynamics_runtime::Dynamics;
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
@@ -98,7 +98,7 @@ fn entry<R: Dynamics<N> + Default, const N: usize>() -> Robot {
     (N, Functions::<R, N>::get)
 }
 
-/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5` or `panda`).
+/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda` or `ur5_dh`).
 ///
 /// # Safety
 /// `name` is null or a NUL-terminated string.
@@ -113,12 +113,13 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"ur5" => entry::<Ur5, 6>(),
         b"random5" => entry::<Random5, 6>(),
         b"panda" => entry::<Panda, 7>(),
+        b"ur5_dh" => entry::<Ur5Dh, 6>(),
         _ => return None,
     })
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`) of `robot`
-/// (`puma560`, `stanford`, `ur5`, `random5` or `panda`), or null for an unknown name.
+/// (`puma560`, `stanford`, `ur5`, `random5`, `panda` or `ur5_dh`), or null for an unknown name.
 ///
 /// # Safety
 /// Both arguments are null or NUL-terminated strings.
@@ -224,6 +225,7 @@ mod tests {
                 "ur5" => check(&Ur5, robot),
                 "random5" => check(&Random5, robot),
                 "panda" => check(&Panda, robot),
+                "ur5_dh" => check(&Ur5Dh, robot),
                 _ => panic!("{robot} has no test"),
             }
         }

@@ -11,8 +11,9 @@
 //! # What is measured
 //!
 //! For each robot (`puma560`, `stanford`, `ur5`, `random5`, each derived with
-//! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`, and `panda`, from
-//! `tests/data/panda/robot.json`), the generated `f64` methods:
+//! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`, `panda`, from
+//! `tests/data/panda/robot.json`, and `ur5_dh`, the D-H twin of `robots/urdf/ur5.urdf`, from
+//! `robots/ur5_urdf_dh.toml`), the generated `f64` methods:
 //!
 //! | function | method |
 //! |---|---|
@@ -77,7 +78,7 @@ use std::hint::black_box;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, ROBOTS};
+use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
 use dynamics_runtime::Dynamics;
 
@@ -314,7 +315,7 @@ usage: timings [--all] [--fastest] [--robot ROBOT] [--function FUNCTION]
 
   --all          also time tau_reference, tau_rnea and M_crba
   --fastest      the fastest of 300 batches of 2,000 calls, not the median of 31 of 20,000
-  --robot R      only robot R: puma560, stanford, ur5, random5, panda
+  --robot R      only robot R: puma560, stanford, ur5, random5, panda, ur5_dh
   --function F   only function F: tau, M, g, C, h, tau_reference, tau_rnea, M_crba
   --calls N      make exactly N calls of one function, print nothing (for callgrind)";
 
@@ -378,6 +379,7 @@ fn main() -> ExitCode {
             "ur5" => run(&Ur5, name, &functions, &args),
             "random5" => run(&Random5, name, &functions, &args),
             "panda" => run(&Panda, name, &functions, &args),
+            "ur5_dh" => run(&Ur5Dh, name, &functions, &args),
             _ => unreachable!("every robot of ROBOTS has a struct"),
         };
         if !ok {

@@ -121,19 +121,21 @@ def model_from_urdf(path):
     return model
 
 
-def samples(model):
-    rng = np.random.default_rng(SEED)
+def samples(model, seed=SEED):
+    """20 states of `model`: all zero, q only, q and qd, then 17 random ones."""
+    n = model.nv
+    rng = np.random.default_rng(seed)
     out = []
     for k in range(20):
-        q = rng.uniform(-math.pi, math.pi, N)
-        qd = rng.uniform(-2.0, 2.0, N)
-        qdd = rng.uniform(-5.0, 5.0, N)
+        q = rng.uniform(-math.pi, math.pi, n)
+        qd = rng.uniform(-2.0, 2.0, n)
+        qdd = rng.uniform(-5.0, 5.0, n)
         if k == 0:
-            q, qd, qdd = np.zeros(N), np.zeros(N), np.zeros(N)
+            q, qd, qdd = np.zeros(n), np.zeros(n), np.zeros(n)
         elif k == 1:
-            qd, qdd = np.zeros(N), np.zeros(N)
+            qd, qdd = np.zeros(n), np.zeros(n)
         elif k == 2:
-            qdd = np.zeros(N)
+            qdd = np.zeros(n)
         out.append((q, qd, qdd))
     return out
 
@@ -172,7 +174,7 @@ def check_identities(model, q, qd, qdd, x):
     fd = scaled_error(mdot, x["C"] + x["C"].T)
     grad = np.array([
         (pin.computePotentialEnergy(model, data, q + eps * e) - pin.computePotentialEnergy(model, data, q - eps * e))
-        / (2 * eps) for e in np.eye(N)])
+        / (2 * eps) for e in np.eye(model.nv)])
     fd = max(fd, scaled_error(grad, x["g"]))
     assert fd < 1e-7, f"finite differences: {fd:e}"
     return worst, fd

@@ -1,0 +1,29 @@
+//! The D-H twins of two URDF robots (`robots/ur5_urdf_dh.toml`, `robots/panda_urdf_dh.toml`,
+//! made by `tests/data/urdf/twins.py`) against the reference data of the URDF robots
+//! themselves (`tests/data/urdf/`, Pinocchio 4.1.0's URDF loader, by `make.py`): for every
+//! sample, τ, M, C, C·q̇ + g, g and both energies match to 1e-10 (scaled). The twins declare no
+//! friction, so τ is Pinocchio's. The URDF robots' own test is `urdf_robots.rs`.
+
+use dynamics_runtime::Dynamics;
+use dynamics_tests::reference::{check, Friction};
+
+/// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table.
+#[derive(Dynamics)]
+#[dynamics(file = "../robots/ur5_urdf_dh.toml")]
+struct Ur5Twin;
+
+/// The Panda of `robots/urdf/panda.urdf` (to panda_link8, the hand fixed to it) as Franka's
+/// modified D-H table.
+#[derive(Dynamics)]
+#[dynamics(file = "../robots/panda_urdf_dh.toml")]
+struct PandaTwin;
+
+#[test]
+fn ur5_twin_matches_pinocchio_on_the_urdf() {
+    check(&Ur5Twin, "urdf/ur5.json", Friction::None);
+}
+
+#[test]
+fn panda_twin_matches_pinocchio_on_the_urdf() {
+    check(&PandaTwin, "urdf/panda.json", Friction::None);
+}
