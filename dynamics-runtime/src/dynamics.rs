@@ -8,7 +8,13 @@ macro_rules! declare_dynamics {
     ($(
         $(#[doc = $doc:literal])*
         fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
-            $($_info:tt)*
+            variant: $_variant:ident,
+            equation: $_equation:expr,
+            prefix: $_prefix:literal,
+            summary: $_summary:literal,
+            element: $_element:literal,
+            $(diagonal: $_diagonal:literal,)?
+            $(default: $default:ident,)?
         }
     )*) => {
         /// Closed-form equations of motion of a serial robot with `N` joints,
@@ -22,8 +28,26 @@ macro_rules! declare_dynamics {
             const DOF: usize = N;
             $(
                 $(#[doc = $doc])*
-                fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
+                trait_method!(
+                    fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
+                    $($default)?
+                );
             )*
+        }
+    };
+}
+
+/// A trait method's declaration, with a body where the row gives a default (`zeros`: the
+/// method of a term a robot may not have, such as friction).
+macro_rules! trait_method {
+    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty;) => {
+        fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret;
+    };
+    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty; zeros) => {
+        #[inline]
+        fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret {
+            $(let _ = $argument;)*
+            [T::ZERO; N]
         }
     };
 }
