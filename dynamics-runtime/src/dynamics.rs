@@ -27,8 +27,8 @@ macro_rules! declare_dynamics {
             /// Number of joints.
             const DOF: usize = N;
             $(
-                $(#[doc = $doc])*
                 trait_method!(
+                    $(#[doc = $doc])*
                     fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
                     $($default)?
                 );
@@ -40,10 +40,12 @@ macro_rules! declare_dynamics {
 /// A trait method's declaration, with a body where the row gives a default (`zeros`: the
 /// method of a term a robot may not have, such as friction).
 macro_rules! trait_method {
-    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty;) => {
+    ($(#[$doc:meta])* fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty;) => {
+        $(#[$doc])*
         fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret;
     };
-    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty; zeros) => {
+    ($(#[$doc:meta])* fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty; zeros) => {
+        $(#[$doc])*
         #[inline]
         fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret {
             $(let _ = $argument;)*
