@@ -40,6 +40,7 @@ fn cases() -> Vec<Case> {
         .collect();
     robots.sort();
     robots.push("puma560.toml".into());
+    robots.push("two_link_friction.toml".into());
     let mut cases = Vec::new();
     for r in &robots {
         let stem = r.trim_end_matches(".toml");

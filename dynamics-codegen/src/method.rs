@@ -82,6 +82,7 @@ macro_rules! declare_method {
             summary: $summary:literal,
             element: $element:literal,
             $(diagonal: $diagonal:literal,)?
+            $(default: $default:ident,)?
         }
     )*) => {
         /// A method of the `Dynamics` trait.
@@ -136,6 +137,15 @@ macro_rules! declare_method {
                 match self { $(Method::$variant => $prefix,)* }
             }
 
+            /// Whether the trait gives it a body (zeros), for a term a robot may not have: the
+            /// derive then writes it only for a robot that has the term.
+            #[must_use]
+            pub fn has_default(self) -> bool {
+                match self {
+                    $(Method::$variant => None::<&str> $(.or(Some(stringify!($default))))?.is_some(),)*
+                }
+            }
+
             /// The doc template of an element, on the diagonal or not (`{i}`, `{j}`,
             /// `{equation}` to fill in).
             fn element_template(self, diagonal: bool) -> &'static str {
@@ -166,9 +176,22 @@ impl Method {
             Method::GravityTorques => Shape::Vector(&eq.gravity),
             Method::BiasTorques => Shape::Vector(&eq.bias),
             Method::InverseDynamics => Shape::Vector(&eq.tau),
+            Method::FrictionTorques => Shape::Vector(&eq.friction),
             Method::KineticEnergy => Shape::Scalar(eq.kinetic_energy),
             Method::PotentialEnergy => Shape::Scalar(eq.potential_energy),
         }
+    }
+
+    /// Whether the derive writes it for these equations: a method the trait gives a body
+    /// of zeros (friction) only where its result is not zero.
+    #[must_use]
+    pub fn is_generated(self, eq: &Equations) -> bool {
+        !self.has_default()
+            || self
+                .shape(eq)
+                .outputs()
+                .iter()
+                .any(|&id| !eq.graph.is_zero(id))
     }
 
     /// The method called `name`.
@@ -224,6 +247,7 @@ mod tests {
                 "centripetal, Coriolis and gravity torque 1",
             ),
             (Method::InverseDynamics, 2, 0, "T3 (6.46)"),
+            (Method::FrictionTorques, 1, 0, "friction torque 2"),
             (Method::PotentialEnergy, 0, 0, "potential energy"),
         ];
         for (method, i, j, text) in table {
@@ -236,7 +260,9 @@ mod tests {
         for &m in Method::ALL {
             assert_eq!(Method::from_name(m.name()), Some(m));
             assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
-            assert_eq!(m.arguments().first(), Some(&super::Argument::Q), "{m:?}");
+            // Every method but friction's reads q.
+            let reads_q = m.arguments().first() == Some(&super::Argument::Q);
+            assert_eq!(reads_q, m != Method::FrictionTorques, "{m:?}");
             let template = [m.element_template(false), m.element_template(true)];
             let cites = template.iter().any(|t| t.contains("{equation}"));
             assert!(!cites || m.equation().is_some(), "{m:?} cites no equation");

@@ -79,16 +79,41 @@ impl Numeric {
             .collect()
     }
 
-    /// `tau = M(q) qdd + C(q, qd) qd + g(q)` by recursive Newton-Euler, with actuator inertia
-    /// and springs.
+    /// `tau = M(q) qdd + C(q, qd) qd + g(q)` by recursive Newton-Euler, with actuator inertia,
+    /// springs and friction.
     #[must_use]
     pub fn inverse_dynamics(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> Vec<f64> {
         let tau = algo::rnea(&self.chain(q), qd, qdd, self.gravity());
         let springs = self.springs(q);
+        let friction = self.friction_torques(qd);
         tau.iter()
             .zip(&self.robot.joints)
             .enumerate()
-            .map(|(i, (t, j))| t + self.value(&j.actuator_inertia) * qdd[i] + springs[i])
+            .map(|(i, (t, j))| {
+                t + self.value(&j.actuator_inertia) * qdd[i] + springs[i] + friction[i]
+            })
+            .collect()
+    }
+
+    /// Joint friction `f_v qd + f_c sign(qd) + f_0` (`f_c tanh(qd / ε)` smoothed), `sign(0) = 0`.
+    #[must_use]
+    pub fn friction_torques(&self, qd: &[f64]) -> Vec<f64> {
+        let sign = |x: f64| if x == 0.0 { 0.0 } else { x.signum() };
+        self.robot
+            .joints
+            .iter()
+            .zip(qd)
+            .map(|(j, &v)| {
+                j.friction.as_ref().map_or(0.0, |f| {
+                    let direction = f
+                        .smoothing
+                        .as_ref()
+                        .map_or_else(|| sign(v), |eps| (v / self.value(eps)).tanh());
+                    self.value(&f.viscous) * v
+                        + self.value(&f.coulomb) * direction
+                        + self.value(&f.offset)
+                })
+            })
             .collect()
     }
 

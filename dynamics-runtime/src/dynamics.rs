@@ -8,7 +8,13 @@ macro_rules! declare_dynamics {
     ($(
         $(#[doc = $doc:literal])*
         fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
-            $($_info:tt)*
+            variant: $_variant:ident,
+            equation: $_equation:expr,
+            prefix: $_prefix:literal,
+            summary: $_summary:literal,
+            element: $_element:literal,
+            $(diagonal: $_diagonal:literal,)?
+            $(default: $default:ident,)?
         }
     )*) => {
         /// Closed-form equations of motion of a serial robot with `N` joints,
@@ -21,9 +27,29 @@ macro_rules! declare_dynamics {
             /// Number of joints.
             const DOF: usize = N;
             $(
-                $(#[doc = $doc])*
-                fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
+                trait_method!(
+                    $(#[doc = $doc])*
+                    fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
+                    $($default)?
+                );
             )*
+        }
+    };
+}
+
+/// A trait method's declaration, with a body where the row gives a default (`zeros`: the
+/// method of a term a robot may not have, such as friction).
+macro_rules! trait_method {
+    ($(#[$doc:meta])* fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty;) => {
+        $(#[$doc])*
+        fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret;
+    };
+    ($(#[$doc:meta])* fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty; zeros) => {
+        $(#[$doc])*
+        #[inline]
+        fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret {
+            $(let _ = $argument;)*
+            [T::ZERO; N]
         }
     };
 }

@@ -16,6 +16,8 @@
 //         summary: "…",                  // one-line doc of `dynamics emit`
 //         element: "T{i} ({equation})",  // doc of a generated element; {i}, {j} from 1
 //         diagonal: "…",                 // optional: a matrix's diagonal elements, if different
+//         default: zeros,                // optional: the trait's body for robots whose
+//                                        // description gives no such term (friction)
 //     }
 //
 // Adding a method: a row here, its `Equations` output in `dynamics-codegen/src/method.rs`,
@@ -71,13 +73,24 @@ macro_rules! for_each_method {
                 element: "centripetal, Coriolis and gravity torque {i}",
             }
             /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46), actuator inertia and
-            /// springs included.
+            /// springs included, and joint friction where the robot declares it.
             fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na {
                 variant: InverseDynamics,
                 equation: Some("6.46"),
                 prefix: "tau",
                 summary: "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
                 element: "T{i} ({equation})",
+            }
+            /// Joint friction torques `f_v qd + f_c sign(qd) + f_0`, per joint, with `sign(0) = 0`
+            /// (`f_c tanh(qd / ε)` where a smoothing velocity ε is given). Zero for a robot
+            /// without friction; `inverse_dynamics` includes them.
+            fn friction_torques(qd) -> vector, nalgebra friction_torques_na {
+                variant: FrictionTorques,
+                equation: None,
+                prefix: "f",
+                summary: "Joint friction: f_v q̇ + f_c sign(q̇) + f_0.",
+                element: "friction torque {i}",
+                default: zeros,
             }
             /// Kinetic energy `½ qdᵀ M(q) qd` (eq. 6.39), actuators included.
             fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na {

@@ -19,6 +19,18 @@ pub enum LinkParameter {
     SpringStiffness,
     /// The rest position of `spring` (`spring_rest` in files).
     SpringRest,
+    /// `friction = (viscous = ..)` (`friction_viscous` in files).
+    FrictionViscous,
+    /// `friction = (coulomb = ..)` (`friction_coulomb` in files).
+    FrictionCoulomb,
+    /// `friction = (offset = ..)` (`friction_offset` in files).
+    FrictionOffset,
+    /// `friction = (smoothing = ..)` (`friction_smoothing` in files).
+    FrictionSmoothing,
+    /// `rotor_inertia`.
+    RotorInertia,
+    /// `gear_ratio`.
+    GearRatio,
 }
 
 /// A physical problem with one link.

@@ -1,15 +1,19 @@
 //! The checks of a robot that need no derivation, shared by the derive and the command-line
 //! tool: the number of joints is within [`MAX_JOINTS`], each link's mass and inertia tensor
 //! are ones a rigid body can have ([`link`]), and each joint's actuator inertia and spring are
-//! not negative ([`drive`]). Each problem says what it concerns; the caller
+//! not negative ([`drive`]), its friction coefficients not negative and its smoothing
+//! velocity positive ([`friction`]; [`gear`] for a rotor and gear ratio, which the front ends
+//! check before turning them into an actuator inertia). Each problem says what it concerns; the caller
 //! places it on the tokens or the description-file value it comes from.
 
 mod drive;
 mod eigenvalues;
+mod friction;
 mod link;
 
 pub use drive::drive;
 pub use eigenvalues::eigenvalues;
+pub use friction::{friction, gear, geared_inertia};
 pub use link::{link, LinkParameter, LinkProblem};
 
 use crate::model::Robot;
@@ -58,6 +62,7 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
         link(&j.mass, &j.inertia, checked)
             .into_iter()
             .chain(drive(&j.actuator_inertia, j.spring.as_ref()))
+            .chain(j.friction.iter().flat_map(friction))
             .map(move |problem| Problem::Link { joint, problem })
     });
     too_many.into_iter().chain(links).collect()

@@ -6,7 +6,7 @@ use super::emitter::Emitter;
 use super::expr::Place;
 use super::names::Element;
 use super::{local, Body, Shape};
-use crate::method::Method;
+use crate::method::{Argument, Method};
 use crate::symbolic::NodeId;
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
@@ -42,6 +42,11 @@ impl Emitter<'_> {
             output_names.clear();
         }
         let mut statements = Vec::new();
+        // A method without `q` (friction) calls no shared function: it reads its constants
+        // and parameters itself.
+        if !method.arguments().contains(&Argument::Q) {
+            self.constants_and_parameters(&mut statements);
+        }
         // The shared fields this function reads, bound under their names.
         statements.extend(self.bind_shared(true));
         statements.extend(self.joint_variables());

@@ -18,7 +18,8 @@ pub struct OpCount {
     pub neg: usize,
     /// Divisions.
     pub div: usize,
-    /// Sine and cosine evaluations (a `sin_cos` pair counts 2).
+    /// Sine and cosine evaluations (a `sin_cos` pair counts 2), and the `sign` and `tanh` of
+    /// friction.
     pub trig: usize,
     /// The longest chain of dependent multiplications, additions and divisions from the inputs
     /// (the joint variables, their sines and cosines, the parameters) to a result, each sum
@@ -54,7 +55,8 @@ pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
             Node::Mul(..) => ops.mul += 1,
             Node::Neg(_) => ops.neg += 1,
             Node::Recip(_) => ops.div += 1,
-            Node::Sin(_) | Node::Cos(_) | Node::Var(Var::SinQ(_) | Var::CosQ(_)) => ops.trig += 1,
+            Node::Sin(_) | Node::Cos(_) | Node::Sign(_) | Node::Tanh(_) => ops.trig += 1,
+            Node::Var(Var::SinQ(_) | Var::CosQ(_)) => ops.trig += 1,
             Node::Const(_) | Node::Var(_) => {}
         }
     }
@@ -75,7 +77,9 @@ impl Emitter<'_> {
                 sum_order(&depths).1
             }
             Node::Mul(a, b) => 1 + self.depth(a).max(self.depth(b)),
-            Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => 1 + self.depth(a),
+            Node::Recip(a) | Node::Sin(a) | Node::Cos(a) | Node::Sign(a) | Node::Tanh(a) => {
+                1 + self.depth(a)
+            }
             Node::Neg(a) => self.depth(a),
             Node::Const(_) | Node::Var(_) => 0,
         };

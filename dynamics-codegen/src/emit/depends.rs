@@ -75,7 +75,7 @@ pub(super) fn boundary(eq: &Equations, depends: &[Depends], outputs: &[NodeId]) 
 pub(super) fn shared_motion(
     eq: &Equations,
     depends: &[Depends],
-    outputs: &[Output],
+    outputs: &[&Output],
 ) -> Vec<NodeId> {
     let e = Emitter::new(eq, None);
     let n = eq.graph.len();

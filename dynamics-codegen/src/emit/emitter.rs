@@ -84,7 +84,12 @@ impl<'a> Emitter<'a> {
                 vec![a, b]
             }
             Node::Mul(a, b) => vec![a, b],
-            Node::Neg(a) | Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => vec![a],
+            Node::Neg(a)
+            | Node::Recip(a)
+            | Node::Sin(a)
+            | Node::Cos(a)
+            | Node::Sign(a)
+            | Node::Tanh(a) => vec![a],
             Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
                 self.eq.angle_offsets[usize::from(i)].into_iter().collect()
             }

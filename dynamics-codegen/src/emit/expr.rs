@@ -246,6 +246,14 @@ impl Emitter<'_> {
                 let a = self.expr(a, Place::Top);
                 quote!(T::cos(#a))
             }
+            Node::Sign(a) => {
+                let a = self.expr(a, Place::Top);
+                quote!(T::sign(#a))
+            }
+            Node::Tanh(a) => {
+                let a = self.expr(a, Place::Top);
+                quote!(T::tanh(#a))
+            }
             Node::Const(_) | Node::Var(_) => self.leaf(id),
         }
     }

@@ -47,7 +47,14 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     let ctx = Context {
         parameters: local(PARAMETERS),
     };
-    let outputs: Vec<Output> = Method::ALL
+    // A method the trait gives a body of zeros (friction) only where the robot has the term,
+    // so that the code of a robot without it is what it always was.
+    let methods: Vec<Method> = Method::ALL
+        .iter()
+        .copied()
+        .filter(|m| m.is_generated(eq))
+        .collect();
+    let outputs: Vec<Output> = methods
         .iter()
         .map(|&method| Output {
             method,
@@ -55,7 +62,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
         })
         .collect();
     let emission = emit(eq, &outputs, &ctx);
-    let methods = Method::ALL
+    let methods = methods
         .iter()
         .zip(emission.bodies)
         .map(|(&method, b)| MethodCode {

@@ -56,7 +56,7 @@ pub(crate) use fallback::fallback;
 pub(crate) use items::runtime_path;
 pub use items::{generate, method, Generated, MethodCode};
 
-use crate::method::Method;
+use crate::method::{Argument, Method};
 use crate::symbolic::NodeId;
 use crate::trace::Equations;
 use depends::{boundary, dependencies, shared_motion};
@@ -85,7 +85,7 @@ pub enum Shape<'a> {
 
 impl Shape<'_> {
     /// Its elements, rows first.
-    fn outputs(&self) -> Vec<NodeId> {
+    pub fn outputs(&self) -> Vec<NodeId> {
         match self {
             Shape::Scalar(id) => vec![*id],
             Shape::Vector(v) => v.to_vec(),
@@ -155,11 +155,14 @@ pub const PARAMETERS: &str = "p_";
 /// Inlined, the compiler keeps of the shared code only what each function reads, so the run
 /// time is that of separate functions, and the code is written once.
 #[must_use]
-pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
+pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     let depends = dependencies(eq);
+    // The shared functions take `q`: a method without it (friction) computes all it reads.
+    let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
+    let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
     // Per output, the parameter- and q-only nodes its own code reads.
     let mut shared = vec![false; eq.graph.len()];
-    for o in outputs {
+    for o in &outputs {
         for id in boundary(eq, &depends, &o.shape.outputs()) {
             shared[id.index()] = true;
         }
@@ -173,7 +176,7 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
     // Field names: outputs computed entirely in the configuration keep their names (`m1_2`,
     // `g3`); leaves keep theirs (`s1`, `p_m2`, `k4`); the rest are numbered temporaries.
     let mut field_names: Vec<Option<Element>> = vec![None; eq.graph.len()];
-    for o in outputs {
+    for o in &outputs {
         let e = Emitter::new(eq, Some(ctx));
         for (id, element) in e.output_names(&o.shape, o.method) {
             if shared[id.index()] && field_names[id.index()].is_none() {
@@ -188,7 +191,7 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
     });
     // Terms in q̇ (without q̈) that two methods or more compute: written once, in the motion
     // function, whose fields the methods read.
-    let motion_boundary = shared_motion(eq, &depends, outputs);
+    let motion_boundary = shared_motion(eq, &depends, &outputs);
     let config_names = |e: &mut Emitter| {
         e.has_configuration = configuration.is_some();
         if let Some(c) = &configuration {
@@ -201,10 +204,13 @@ pub fn emit(eq: &Equations, outputs: &[Output], ctx: &Context) -> Emission {
         config_names(&mut e);
         e.motion(&motion_boundary, &field_names)
     });
-    let bodies = outputs
+    let bodies = all
         .iter()
         .map(|o| {
             let mut e = Emitter::new(eq, Some(ctx));
+            if !reads_q(&o) {
+                return e.function(&o.shape, o.method);
+            }
             config_names(&mut e);
             if let Some(m) = &motion {
                 e.read_from(&motion_boundary, m, Origin::Motion);

@@ -22,9 +22,38 @@ impl Emitter<'_> {
         boundary: &[NodeId],
         field_names: &[Option<Element>],
     ) -> Shared {
-        let ctx = self.ctx.expect("emission has a context");
         self.mark(boundary);
         let mut statements = Vec::new();
+        self.constants_and_parameters(&mut statements);
+        let depends = dependencies(self.eq);
+        statements.extend(self.joint_variables());
+        // What depends on the parameters alone first, then the sines and cosines, then the
+        // rest.
+        for phase in [Depends::Constants, Depends::Configuration] {
+            if phase == Depends::Configuration {
+                self.sines_and_cosines(&mut statements);
+            }
+            self.bind_shared_nodes(
+                &|i| depends[i] == phase,
+                boundary,
+                field_names,
+                &mut statements,
+            );
+        }
+        // The struct literal, one field per boundary node, named as its local.
+        let locals: Vec<TokenStream> = boundary.iter().map(|&id| self.leaf(id)).collect();
+        let fields = boundary.iter().map(|&id| self.field(id)).collect();
+        let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
+        Shared {
+            fields,
+            tokens: quote!(#(#statements)* #ty { #(#locals),* }),
+        }
+    }
+
+    /// `let k1: T = …;` for each needed constant and `let [p_m1, _, …] = *p_;` for the
+    /// parameters: what the configuration reads first, and a function without one itself.
+    pub(super) fn constants_and_parameters(&mut self, statements: &mut Vec<TokenStream>) {
+        let ctx = self.ctx.expect("emission has a context");
         // Constants, once each.
         let mut constants = 0;
         for (id, _) in self.graph.nodes() {
@@ -50,29 +79,6 @@ impl Emitter<'_> {
         if any {
             let array = &ctx.parameters;
             statements.push(quote!(let [#(#parameters),*] = *#array;));
-        }
-        let depends = dependencies(self.eq);
-        statements.extend(self.joint_variables());
-        // What depends on the parameters alone first, then the sines and cosines, then the
-        // rest.
-        for phase in [Depends::Constants, Depends::Configuration] {
-            if phase == Depends::Configuration {
-                self.sines_and_cosines(&mut statements);
-            }
-            self.bind_shared_nodes(
-                &|i| depends[i] == phase,
-                boundary,
-                field_names,
-                &mut statements,
-            );
-        }
-        // The struct literal, one field per boundary node, named as its local.
-        let locals: Vec<TokenStream> = boundary.iter().map(|&id| self.leaf(id)).collect();
-        let fields = boundary.iter().map(|&id| self.field(id)).collect();
-        let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-        Shared {
-            fields,
-            tokens: quote!(#(#statements)* #ty { #(#locals),* }),
         }
     }
 

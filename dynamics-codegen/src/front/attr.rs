@@ -4,6 +4,7 @@
 
 use super::attr_value::{boolean, parse_convention, parse_dh, parse_spring, string, values};
 use super::errors::{unknown_key, Errors};
+use super::friction_attr::{parse_friction, FrictionAttr};
 use super::symbol::{Key, LinkKey};
 use super::value::Spanned;
 use crate::model::Convention;
@@ -23,6 +24,9 @@ pub(super) struct LinkAttr {
     pub actuator_inertia: Option<Spanned>,
     pub spring: Option<(Spanned, Spanned)>,
     pub check_inertia: Option<bool>,
+    pub friction: Option<FrictionAttr>,
+    pub rotor_inertia: Option<Spanned>,
+    pub gear_ratio: Option<Spanned>,
     /// Whether an unknown key was given (perhaps a misspelt `mass`).
     pub unknown_key: bool,
 }
@@ -209,6 +213,12 @@ fn parse_link_attr(
         LinkKey::ActuatorInertia => entry.keep_first(&mut link.actuator_inertia, input.parse()?),
         LinkKey::Spring => entry.keep_first(&mut link.spring, parse_spring(input)?),
         LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input)?),
+        LinkKey::Friction => {
+            let friction = parse_friction(input, entry.errors)?;
+            entry.keep_first(&mut link.friction, friction);
+        }
+        LinkKey::RotorInertia => entry.keep_first(&mut link.rotor_inertia, input.parse()?),
+        LinkKey::GearRatio => entry.keep_first(&mut link.gear_ratio, input.parse()?),
     }
     Ok(())
 }

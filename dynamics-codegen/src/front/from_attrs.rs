@@ -6,9 +6,10 @@ use super::angle::unitless_angle;
 use super::attr::{Attrs, DhRowAttr, LinkAttr};
 use super::errors::Errors;
 use super::fields::{check_names, Field};
+use super::friction_attr::FrictionAttr;
 use super::value::Spanned;
 use crate::check;
-use crate::model::{Convention, Joint, JointKind, Pose, Robot, Spring, Value};
+use crate::model::{Convention, Friction, Joint, JointKind, Pose, Robot, Spring, Value};
 use proc_macro2::Span;
 
 /// The robot the attributes describe; its errors go to `errors`.
@@ -95,6 +96,7 @@ struct LinkValues {
     inertia: [Value; 6],
     actuator_inertia: Value,
     spring: Option<Spring>,
+    friction: Option<Friction>,
 }
 
 /// Turns attribute values into model values, reporting the errors of each.
@@ -155,10 +157,44 @@ impl Reader<'_> {
             inertia: link.inertia,
             actuator_inertia: link.actuator_inertia,
             spring: link.spring,
-            friction: None,
+            friction: link.friction,
             frame: None,
             link_pose: Pose::identity(),
         }
+    }
+
+    /// The actuator inertia `gear_ratio² · rotor_inertia` of link `n`'s `link(...)` (ratio 1
+    /// without `gear_ratio`), which may not also give `actuator_inertia`.
+    fn geared(&mut self, n: usize, link: &LinkAttr) -> Value {
+        if let Some(a) = &link.actuator_inertia {
+            self.errors.push(a.span, format!("link {n}: give either `actuator_inertia` or `rotor_inertia` and `gear_ratio` (its N² I_rotor), not both"));
+        }
+        let Some(rotor) = &link.rotor_inertia else {
+            let at = link
+                .gear_ratio
+                .as_ref()
+                .map_or(Span::call_site(), |g| g.span);
+            self.errors.push(at, format!("link {n}: `gear_ratio` without `rotor_inertia`: the actuator inertia is gear_ratio² × rotor_inertia"));
+            return Value::zero();
+        };
+        let rotor = self.value(Some(rotor));
+        let ratio = link
+            .gear_ratio
+            .as_ref()
+            .map_or(Value::Num(crate::symbolic::Number::ONE), |g| {
+                self.value(Some(g))
+            });
+        for problem in check::gear(&rotor, &ratio) {
+            let at = match problem.parameter {
+                check::LinkParameter::GearRatio => link.gear_ratio.as_ref(),
+                _ => link.rotor_inertia.as_ref(),
+            };
+            let (start, end) =
+                at.map_or((Span::call_site(), Span::call_site()), |s| (s.span, s.end));
+            self.errors
+                .push_range(start, end, format!("link {n}: {}", problem.message));
+        }
+        check::geared_inertia(&rotor, &ratio)
     }
 
     /// Revolute if `q` is in the θ cell, prismatic if in the d cell.
@@ -221,7 +257,16 @@ impl Reader<'_> {
                 format!("link {n} has no `mass = ..`"),
             );
         }
-        let actuator_inertia = self.value(link.and_then(|l| l.actuator_inertia.as_ref()));
+        let actuator_inertia = match link {
+            Some(l) if l.rotor_inertia.is_some() || l.gear_ratio.is_some() => self.geared(n, l),
+            _ => self.value(link.and_then(|l| l.actuator_inertia.as_ref())),
+        };
+        let friction = link.and_then(|l| l.friction.as_ref()).map(|f| Friction {
+            viscous: self.value(f.viscous.as_ref()),
+            coulomb: self.value(f.coulomb.as_ref()),
+            offset: self.value(f.offset.as_ref()),
+            smoothing: f.smoothing.as_ref().map(|s| self.value(Some(s))),
+        });
         let spring = link
             .and_then(|l| l.spring.as_ref())
             .map(|(k, rest)| Spring {
@@ -234,6 +279,7 @@ impl Reader<'_> {
             inertia,
             actuator_inertia,
             spring,
+            friction,
         };
         if let Some(l) = link {
             let checked = l.check_inertia.or(check_all).unwrap_or(true);
@@ -275,13 +321,22 @@ fn check_link(n: usize, link: &LinkAttr, checked: bool, values: &LinkValues, err
         stiffness: known(&s.stiffness),
         rest: known(&s.rest),
     });
+    // A geared inertia was checked as its rotor and ratio.
+    let geared = link.rotor_inertia.is_some() || link.gear_ratio.is_some();
+    let actuator = if geared {
+        Value::zero()
+    } else {
+        known(&values.actuator_inertia)
+    };
     let problems = check::link(&known(&values.mass), &values.inertia, checked)
         .into_iter()
-        .chain(check::drive(
-            &known(&values.actuator_inertia),
-            spring.as_ref(),
-        ));
+        .chain(check::drive(&actuator, spring.as_ref()))
+        .chain(values.friction.iter().flat_map(check::friction));
     let whole = |s: &Spanned| (s.span, s.end);
+    let friction = |key: fn(&FrictionAttr) -> Option<&Spanned>| {
+        let f = link.friction.as_ref()?;
+        Some(key(f).map_or((f.span, f.span), whole))
+    };
     for problem in problems {
         let at = match problem.parameter {
             check::LinkParameter::Mass => link.mass.as_ref().map(|m| (m.span, m.span)),
@@ -289,6 +344,12 @@ fn check_link(n: usize, link: &LinkAttr, checked: bool, values: &LinkValues, err
             check::LinkParameter::ActuatorInertia => link.actuator_inertia.as_ref().map(whole),
             check::LinkParameter::SpringStiffness => link.spring.as_ref().map(|(k, _)| whole(k)),
             check::LinkParameter::SpringRest => link.spring.as_ref().map(|(_, r)| whole(r)),
+            check::LinkParameter::FrictionViscous => friction(|f| f.viscous.as_ref()),
+            check::LinkParameter::FrictionCoulomb => friction(|f| f.coulomb.as_ref()),
+            check::LinkParameter::FrictionOffset => friction(|f| f.offset.as_ref()),
+            check::LinkParameter::FrictionSmoothing => friction(|f| f.smoothing.as_ref()),
+            check::LinkParameter::RotorInertia => link.rotor_inertia.as_ref().map(whole),
+            check::LinkParameter::GearRatio => link.gear_ratio.as_ref().map(whole),
         };
         let fallback = link.span.unwrap_or_else(Span::call_site);
         let (start, end) = at.unwrap_or((fallback, fallback));

@@ -89,7 +89,8 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
     };
     for (i, j) in robot.joints.iter().enumerate() {
         let spring = j.spring.as_ref();
-        let keys: [(&'static str, Vec<&Value>); 10] = [
+        let friction = j.friction.as_ref();
+        let keys: [(&'static str, Vec<&Value>); 14] = [
             ("theta", vec![&j.theta]),
             ("d", vec![&j.d]),
             ("a", vec![&j.a]),
@@ -103,6 +104,25 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
                 spring.map(|s| &s.stiffness).into_iter().collect(),
             ),
             ("spring_rest", spring.map(|s| &s.rest).into_iter().collect()),
+            (
+                "friction_viscous",
+                friction.map(|f| &f.viscous).into_iter().collect(),
+            ),
+            (
+                "friction_coulomb",
+                friction.map(|f| &f.coulomb).into_iter().collect(),
+            ),
+            (
+                "friction_offset",
+                friction.map(|f| &f.offset).into_iter().collect(),
+            ),
+            (
+                "friction_smoothing",
+                friction
+                    .and_then(|f| f.smoothing.as_ref())
+                    .into_iter()
+                    .collect(),
+            ),
         ];
         if let Some((key, _)) = keys.iter().find(|(_, vs)| vs.iter().any(|v| names(v))) {
             return (Some(i), key);

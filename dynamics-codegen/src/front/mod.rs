@@ -30,6 +30,7 @@ mod attr_value;
 mod errors;
 mod fields;
 mod file;
+mod friction_attr;
 mod from_attrs;
 mod from_file;
 mod symbol;

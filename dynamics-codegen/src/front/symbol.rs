@@ -47,9 +47,19 @@ keys! {
 keys! {
     /// A key of `link(...)`: `mass = m`, `com = [x, y, z]`,
     /// `inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`, `actuator_inertia = I`,
-    /// `spring = (stiffness, rest_position)`, `check_inertia = false`.
+    /// `spring = (stiffness, rest_position)`, `check_inertia = false`,
+    /// `friction = (viscous = .., ...)`, `rotor_inertia = I`, `gear_ratio = N`.
     LinkKey {
         Mass = "mass", Com = "com", Inertia = "inertia",
         ActuatorInertia = "actuator_inertia", Spring = "spring", CheckInertia = "check_inertia",
+        Friction = "friction", RotorInertia = "rotor_inertia", GearRatio = "gear_ratio",
+    }
+}
+
+keys! {
+    /// A key of `friction = (...)`: `f_v q̇ + f_c sign(q̇) + f_0`, `sign` as `tanh(q̇ / ε)` with
+    /// a smoothing velocity ε.
+    FrictionKey {
+        Viscous = "viscous", Coulomb = "coulomb", Offset = "offset", Smoothing = "smoothing",
     }
 }

@@ -84,6 +84,7 @@ impl<'a> Expander<'a> {
                 a.mul(&b)
             }
             Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
+            Node::Sign(_) | Node::Tanh(_) => Poly::sym(Sym::of_friction(&self.eq.graph, node)?),
             Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
         };
         (p.len() <= self.limits.max_terms).then_some(p)

@@ -14,6 +14,8 @@ pub(super) enum Quantity {
     Coriolis,
     /// The gravity torque `D_i` (eq. 6.45).
     Gravity,
+    /// The joint friction torque `F_i`, part of `T_i`.
+    Friction,
     /// The joint torque or force `T_i` (eq. 6.46).
     Torque,
 }
@@ -24,6 +26,7 @@ impl Quantity {
         match self {
             Quantity::Inertia | Quantity::Christoffel | Quantity::Gravity => 'D',
             Quantity::Coriolis => 'C',
+            Quantity::Friction => 'F',
             Quantity::Torque => 'T',
         }
     }
@@ -35,6 +38,7 @@ impl Quantity {
             Quantity::Christoffel => "Centripetal and Coriolis coefficients D_ijk (eq. 6.44; D_ijk = D_ikj)",
             Quantity::Coriolis => "Coriolis matrix C_ij = Σ_k D_ijk θ_k'",
             Quantity::Gravity => "Gravity D_i (eq. 6.45), with joint springs",
+            Quantity::Friction => "Joint friction F_i, in T_i: viscous θi', Coulomb sgn(θi') (0 at rest) or tanh(θi'/εi) (εi: joint i's smoothing velocity), offset",
             Quantity::Torque => "Joint torques and forces T_i (eq. 6.46)",
         }
     }

@@ -179,6 +179,7 @@ impl Poly {
                 Node::Add(a, b) => get(a)?.add(&get(b)?),
                 Node::Mul(a, b) => get(a)?.mul(&get(b)?),
                 Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
+                Node::Sign(_) | Node::Tanh(_) => Poly::sym(Sym::of_friction(graph, node)?),
                 Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
             };
             if p.len() > max_terms {
@@ -199,6 +200,7 @@ enum SummationKey<'a> {
     Q(u16),
     Qd(u16),
     Qdd(u16),
+    Friction(&'a Sym),
 }
 
 impl SummationKey<'_> {
@@ -210,6 +212,7 @@ impl SummationKey<'_> {
             Sym::Q(i) => SummationKey::Q(*i),
             Sym::Qd(i) => SummationKey::Qd(*i),
             Sym::Qdd(i) => SummationKey::Qdd(*i),
+            Sym::Sign(_) | Sym::Tanh(_) => SummationKey::Friction(s),
         }
     }
 }

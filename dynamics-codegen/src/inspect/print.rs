@@ -91,6 +91,15 @@ impl Printer<'_> {
                     (true, false) => format!("{letter}{}''", index(i)),
                 }
             }
+            Sym::Sign(i) | Sym::Tanh(i) => {
+                let velocity = self.symbol(&Sym::Qd(*i));
+                match (matches!(s, Sym::Sign(_)), self.latex()) {
+                    (true, true) => format!("\\operatorname{{sgn}}({velocity})"),
+                    (true, false) => format!("sgn({velocity})"),
+                    (false, true) => format!("\\tanh({velocity}/\\varepsilon{})", index(i)),
+                    (false, false) => format!("tanh({velocity}/ε{})", index(i)),
+                }
+            }
         }
     }
 

@@ -51,6 +51,17 @@ pub(super) fn sections(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> V
             coriolis.push(entry(x, labels, eq.coriolis[i][j]));
         }
     }
+    // Only for a robot with friction, whose T_i has it.
+    let friction = (0..n)
+        .filter(|_| eq.friction.iter().any(|&f| !eq.graph.is_zero(f)))
+        .map(|i| {
+            entry(
+                x,
+                vec![Label::new(Quantity::Friction, &[i])],
+                eq.friction[i],
+            )
+        })
+        .collect();
     let torque = (0..n)
         .map(|i| entry(x, vec![Label::new(Quantity::Torque, &[i])], eq.tau[i]))
         .collect();
@@ -59,9 +70,13 @@ pub(super) fn sections(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> V
         (Quantity::Christoffel, christoffel),
         (Quantity::Coriolis, coriolis),
         (Quantity::Gravity, gravity),
+        (Quantity::Friction, friction),
         (Quantity::Torque, torque),
     ]
     .into_iter()
+    .filter(|(quantity, entries): &(Quantity, Vec<Entry>)| {
+        *quantity != Quantity::Friction || !entries.is_empty()
+    })
     .map(|(quantity, entries)| Section { quantity, entries })
     .collect()
 }

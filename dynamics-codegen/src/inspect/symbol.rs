@@ -5,7 +5,7 @@
 //! ([`Var`]) map onto these, and folding turns products of single-joint sines and cosines into
 //! ones of sums. The order of the variants is the order of printing.
 
-use crate::symbolic::Var;
+use crate::symbolic::{Graph, Node, NodeId, Var};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -85,6 +85,10 @@ pub enum Sym {
     Qdd(u16),
     /// The velocity `q̇_i`.
     Qd(u16),
+    /// `sign q̇_i` of Coulomb friction.
+    Sign(u16),
+    /// `tanh(q̇_i / ε_i)` of smooth Coulomb friction, ε_i joint i's smoothing velocity.
+    Tanh(u16),
 }
 
 impl Sym {
@@ -122,10 +126,31 @@ impl Sym {
         }
     }
 
-    /// Whether it is a velocity or an acceleration.
+    /// Whether it is a velocity or an acceleration, or friction's function of a velocity.
     #[must_use]
     pub fn is_motion(&self) -> bool {
-        matches!(self, Sym::Qd(_) | Sym::Qdd(_))
+        matches!(self, Sym::Qd(_) | Sym::Qdd(_) | Sym::Sign(_) | Sym::Tanh(_))
+    }
+
+    /// The symbol of friction's `sign` or `tanh` node of `graph` over the velocity of joint
+    /// i (`tanh` of `q̇_i` times `1/ε_i`), if `node` is one.
+    #[must_use]
+    pub fn of_friction(graph: &Graph, node: Node) -> Option<Sym> {
+        let velocity = |id: NodeId| match graph.node(id) {
+            Node::Var(Var::Qd(i)) => Some(i),
+            _ => None,
+        };
+        match node {
+            Node::Sign(a) => Some(Sym::Sign(velocity(a)?)),
+            Node::Tanh(a) => {
+                let joint = match graph.node(a) {
+                    Node::Mul(x, y) => velocity(x).or_else(|| velocity(y)),
+                    _ => velocity(a),
+                };
+                Some(Sym::Tanh(joint?))
+            }
+            _ => None,
+        }
     }
 
     /// Whether it is a sine or a cosine.
@@ -154,6 +179,8 @@ impl fmt::Display for Sym {
             }
             Sym::Qdd(i) => write!(f, "qdd{}", i + 1),
             Sym::Qd(i) => write!(f, "qd{}", i + 1),
+            Sym::Sign(i) => write!(f, "sgn(qd{})", i + 1),
+            Sym::Tanh(i) => write!(f, "tanh(qd{}/eps{})", i + 1, i + 1),
         }
     }
 }

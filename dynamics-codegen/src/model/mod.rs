@@ -45,7 +45,9 @@ pub struct Spring {
 }
 
 /// Joint friction: `τ_f = viscous · q̇ + coulomb · sign(q̇) + offset`, with `sign(q̇)` replaced
-/// by `tanh(q̇ / smoothing)` where a smoothing velocity is given.
+/// by `tanh(q̇ / smoothing)` where a smoothing velocity is given; `sign(0) = 0`. The torque
+/// opposes the motion for non-negative coefficients (the checks refuse negative literals).
+/// URDF's `<dynamics damping="…" friction="…"/>` gives `viscous` and `coulomb`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Friction {
     /// Viscous coefficient f_v.
@@ -56,6 +58,15 @@ pub struct Friction {
     pub offset: Value,
     /// Velocity scale ε of the smooth Coulomb term, if any.
     pub smoothing: Option<Value>,
+}
+
+impl Friction {
+    /// Its values: viscous, Coulomb, offset, then the smoothing velocity if given.
+    pub fn values(&self) -> impl Iterator<Item = &Value> {
+        [&self.viscous, &self.coulomb, &self.offset]
+            .into_iter()
+            .chain(self.smoothing.as_ref())
+    }
 }
 
 /// Joint i and link i.
@@ -122,6 +133,7 @@ impl Robot {
                 .chain(j.com.iter())
                 .chain(j.inertia.iter())
                 .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
+                .chain(j.friction.iter().flat_map(Friction::values))
         }))
     }
 

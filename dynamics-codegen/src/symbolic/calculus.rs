@@ -19,6 +19,15 @@ impl Graph {
                 Node::Recip(a) => 1.0 / values[a.index()],
                 Node::Sin(a) => values[a.index()].sin(),
                 Node::Cos(a) => values[a.index()].cos(),
+                Node::Sign(a) => {
+                    let x = values[a.index()];
+                    if x == 0.0 {
+                        0.0
+                    } else {
+                        x.signum()
+                    }
+                }
+                Node::Tanh(a) => values[a.index()].tanh(),
             };
             values.push(v);
         }
@@ -39,7 +48,12 @@ impl Graph {
                     stack.push(a);
                     stack.push(b);
                 }
-                Node::Neg(a) | Node::Recip(a) | Node::Sin(a) | Node::Cos(a) => stack.push(a),
+                Node::Neg(a)
+                | Node::Recip(a)
+                | Node::Sin(a)
+                | Node::Cos(a)
+                | Node::Sign(a)
+                | Node::Tanh(a) => stack.push(a),
                 Node::Const(_) | Node::Var(_) => {}
             }
         }
@@ -92,6 +106,15 @@ impl Graph {
                     let s = self.sin(a);
                     let t = self.mul(s, d[a.index()]);
                     self.neg(t)
+                }
+                // Flat away from 0, where friction's sign is not differentiated.
+                Node::Sign(_) => zero,
+                Node::Tanh(a) => {
+                    // d tanh a = (1 − tanh² a) da
+                    let square = self.mul(id, id);
+                    let minus = self.neg(square);
+                    let slope = self.add(one, minus);
+                    self.mul(slope, d[a.index()])
                 }
             };
         }

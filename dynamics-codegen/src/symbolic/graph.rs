@@ -277,6 +277,25 @@ impl Graph {
         }
     }
 
+    /// `sign a`, with `sign 0 = 0`; exact for a constant.
+    pub fn sign(&mut self, a: NodeId) -> NodeId {
+        match self.node(a) {
+            Node::Const(c) if c.is_zero() => a,
+            Node::Const(c) if c.is_negative() => self.num(Number::MINUS_ONE),
+            Node::Const(_) => self.num(Number::ONE),
+            _ => self.intern(Node::Sign(a)),
+        }
+    }
+
+    /// `tanh a`.
+    pub fn tanh(&mut self, a: NodeId) -> NodeId {
+        match self.node(a) {
+            Node::Const(c) if c.is_zero() => a,
+            Node::Const(c) => self.num(Number::from_float(c.to_f64().tanh())),
+            _ => self.intern(Node::Tanh(a)),
+        }
+    }
+
     /// `cos a`.
     pub fn cos(&mut self, a: NodeId) -> NodeId {
         match self.node(a) {

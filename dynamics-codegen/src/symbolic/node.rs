@@ -57,4 +57,8 @@ pub enum Node {
     Sin(NodeId),
     /// `cos a`.
     Cos(NodeId),
+    /// `sign a`: −1, 0 or 1, 0 at 0 (Coulomb friction, `Real::sign`).
+    Sign(NodeId),
+    /// `tanh a` (smooth Coulomb friction).
+    Tanh(NodeId),
 }

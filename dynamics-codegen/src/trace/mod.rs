@@ -8,6 +8,7 @@
 //! * `τ = M q̈ + C q̇ + g`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia
 //!   and springs (`newton_euler`);
 //! * the kinetic and potential energy (`energy`);
+//! * joint friction `f_v q̇ + f_c sign(q̇) + f_0`, added to `τ` (`friction`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
 //!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
 //!
@@ -18,6 +19,7 @@
 mod coriolis;
 mod cost;
 mod energy;
+mod friction;
 mod gravity;
 mod joints;
 mod mass;
@@ -58,8 +60,10 @@ pub struct Equations {
     pub gravity: Vec<NodeId>,
     /// `C q̇ + g`.
     pub bias: Vec<NodeId>,
-    /// `τ = M q̈ + C q̇ + g`.
+    /// `τ = M q̈ + C q̇ + g`, plus friction.
     pub tau: Vec<NodeId>,
+    /// Joint friction torques (zeros for a robot without friction).
+    pub friction: Vec<NodeId>,
     /// Kinetic energy.
     pub kinetic_energy: NodeId,
     /// Potential energy.
@@ -85,6 +89,13 @@ pub fn derive(robot: &Robot) -> Equations {
     let (kinetic_energy, potential_energy) = energy::energies(&chain, gravity, &joints, half);
     let (christoffel, coriolis) = coriolis::coriolis(&graph, &chain, &mass, &joints.qd, half.id());
     let angle_offsets = tracer.angle_offsets();
+    // Last, so that the nodes of a robot without friction are those it always had.
+    let friction = friction::friction_torques(&tracer, robot, &joints);
+    let tau = {
+        let mut g = graph.borrow_mut();
+        let tau = newton_euler.tau.iter().zip(&friction);
+        tau.map(|(&t, &f)| g.add(t, f)).collect()
+    };
     Equations {
         graph: graph.into_inner(),
         dof: robot.dof(),
@@ -97,7 +108,8 @@ pub fn derive(robot: &Robot) -> Equations {
         coriolis_torques: newton_euler.coriolis_torques,
         gravity: gravity_torques,
         bias: newton_euler.bias,
-        tau: newton_euler.tau,
+        tau,
+        friction,
         kinetic_energy,
         potential_energy,
     }

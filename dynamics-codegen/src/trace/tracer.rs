@@ -51,6 +51,24 @@ impl<'g> Tracer<'g> {
         self.expr(id)
     }
 
+    /// `sign x`, 0 at 0.
+    pub(super) fn sign(&self, x: Expr<'g>) -> Expr<'g> {
+        let id = self.graph.borrow_mut().sign(x.id());
+        self.expr(id)
+    }
+
+    /// `tanh x`.
+    pub(super) fn tanh(&self, x: Expr<'g>) -> Expr<'g> {
+        let id = self.graph.borrow_mut().tanh(x.id());
+        self.expr(id)
+    }
+
+    /// `1 / x`; zero for a literal zero, which the front end rejects.
+    pub(super) fn reciprocal(&self, x: &Expr<'g>) -> Expr<'g> {
+        let r = self.graph.borrow_mut().recip(x.id());
+        r.map_or_else(|| self.num(Number::ZERO), |id| self.expr(id))
+    }
+
     /// The variables of every joint: `q`, `q̇` or `q̈` as `kind` says.
     pub(super) fn joint_vars(&self, n: usize, kind: fn(u16) -> Var) -> Vec<Expr<'g>> {
         (0..n).map(|i| self.var(kind(joint_index(i)))).collect()

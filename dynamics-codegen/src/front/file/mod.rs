@@ -54,6 +54,12 @@ impl Loaded {
                     LinkParameter::ActuatorInertia => "actuator_inertia",
                     LinkParameter::SpringStiffness => "spring_stiffness",
                     LinkParameter::SpringRest => "spring_rest",
+                    LinkParameter::FrictionViscous => "friction_viscous",
+                    LinkParameter::FrictionCoulomb => "friction_coulomb",
+                    LinkParameter::FrictionOffset => "friction_offset",
+                    LinkParameter::FrictionSmoothing => "friction_smoothing",
+                    LinkParameter::RotorInertia => "rotor_inertia",
+                    LinkParameter::GearRatio => "gear_ratio",
                 },
             ),
         };

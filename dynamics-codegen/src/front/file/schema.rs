@@ -2,9 +2,10 @@
 //! [`Robot`]. Absent D-H entries, offsets and spring values are zero.
 
 use super::{FileError, Loaded};
+use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
-use crate::model::{Convention, Joint, JointKind, Pose, Robot, Spring, Value};
+use crate::model::{Convention, Friction, Joint, JointKind, Pose, Robot, Spring, Value};
 use crate::symbolic::Number;
 use serde::Deserialize;
 
@@ -137,6 +138,67 @@ struct FileJoint {
     /// `false` keeps an inertia tensor that fails the physical checks.
     #[serde(default)]
     check_inertia: Option<bool>,
+    /// Friction `f_v q̇ + f_c sign(q̇) + f_0` (`tanh(q̇ / ε)` with a smoothing velocity ε): the
+    /// keys of the attribute's `friction = (viscous = .., ...)`, prefixed as `spring_*` are.
+    #[serde(default)]
+    friction_viscous: Option<FileValue>,
+    #[serde(default)]
+    friction_coulomb: Option<FileValue>,
+    #[serde(default)]
+    friction_offset: Option<FileValue>,
+    #[serde(default)]
+    friction_smoothing: Option<FileValue>,
+    /// A geared drive: the actuator inertia is `gear_ratio² · rotor_inertia`.
+    #[serde(default)]
+    rotor_inertia: Option<FileValue>,
+    #[serde(default)]
+    gear_ratio: Option<FileValue>,
+}
+
+impl FileJoint {
+    /// Its friction, if it gives any friction key.
+    fn friction(&self) -> Option<Friction> {
+        let keys = [
+            &self.friction_viscous,
+            &self.friction_coulomb,
+            &self.friction_offset,
+        ];
+        let given = keys.iter().any(|k| k.is_some()) || self.friction_smoothing.is_some();
+        given.then(|| Friction {
+            viscous: value(self.friction_viscous.as_ref()),
+            coulomb: value(self.friction_coulomb.as_ref()),
+            offset: value(self.friction_offset.as_ref()),
+            smoothing: self.friction_smoothing.as_ref().map(|v| v.0.clone()),
+        })
+    }
+
+    /// Its actuator inertia: `actuator_inertia`, or `gear_ratio² · rotor_inertia` (ratio 1
+    /// without `gear_ratio`), whose problems go to `deferred` as joint `joint`'s.
+    fn actuator_inertia(&self, joint: usize, deferred: &mut Vec<Deferred>) -> Value {
+        if self.rotor_inertia.is_none() && self.gear_ratio.is_none() {
+            return value(self.actuator_inertia.as_ref());
+        }
+        if self.actuator_inertia.is_some() {
+            deferred.push((joint, "actuator_inertia", "give either `actuator_inertia` or `rotor_inertia` and `gear_ratio` (its N² I_rotor), not both".into()));
+        }
+        let Some(rotor) = &self.rotor_inertia else {
+            deferred.push((joint, "gear_ratio", "`gear_ratio` without `rotor_inertia`: the actuator inertia is gear_ratio² × rotor_inertia".into()));
+            return Value::zero();
+        };
+        let ratio = self
+            .gear_ratio
+            .as_ref()
+            .map_or(Value::Num(Number::ONE), |g| g.0.clone());
+        for p in check::gear(&rotor.0, &ratio) {
+            let key = if p.parameter == LinkParameter::GearRatio {
+                "gear_ratio"
+            } else {
+                "rotor_inertia"
+            };
+            deferred.push((joint, key, p.message));
+        }
+        check::geared_inertia(&rotor.0, &ratio)
+    }
 }
 
 fn value(v: Option<&FileValue>) -> Value {
@@ -181,6 +243,8 @@ pub(super) fn convert(
             rest: value(j.spring_rest.as_ref()),
         });
         check_inertia.push(j.check_inertia.unwrap_or(true));
+        let actuator_inertia = j.actuator_inertia(i, &mut deferred);
+        let friction = j.friction();
         joints.push(Joint {
             kind,
             theta: value(j.theta.as_ref()),
@@ -190,9 +254,9 @@ pub(super) fn convert(
             mass: j.mass.0,
             com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
             inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
-            actuator_inertia: value(j.actuator_inertia.as_ref()),
+            actuator_inertia,
             spring,
-            friction: None,
+            friction,
             frame: None,
             link_pose: Pose::identity(),
         });
