@@ -26,12 +26,14 @@
 
 mod angle;
 mod attr;
+mod attr_joints;
 mod attr_value;
 mod errors;
 mod fields;
 mod file;
 mod from_attrs;
 mod from_file;
+mod from_joints;
 mod symbol;
 mod value;
 
@@ -131,6 +133,7 @@ fn robot(
         for (present, what) in [
             (attrs.gravity.is_some(), "gravity"),
             (attrs.dh.is_some(), "dh"),
+            (attrs.joints.is_some(), "joints"),
             (!attrs.links.is_empty(), "link"),
             (attrs.convention.is_some(), "convention"),
         ] {
@@ -171,6 +174,7 @@ fn finish(
             dof: robot
                 .map(|r| r.dof())
                 .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
+                .or_else(|| attrs.joints.as_ref().map(|(joints, _)| joints.len()))
                 .filter(|n| *n > 0),
             krate: attrs.krate,
         }),

@@ -48,6 +48,15 @@ pub struct FrameProblem {
     pub message: String,
 }
 
+impl FrameProblem {
+    /// Whether the problem is with the joint's axis (rather than its placement), for the
+    /// front ends, which point at the value concerned.
+    #[must_use]
+    pub fn concerns_axis(&self) -> bool {
+        self.message.starts_with("the axis")
+    }
+}
+
 /// A D-H frame at q = 0, in base coordinates.
 #[derive(Clone, Debug)]
 struct DhFrame {
