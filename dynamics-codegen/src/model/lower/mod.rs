@@ -14,8 +14,11 @@
 //!   (θ_n offset 0).
 //!
 //! The sign of `x_i` is the one with `x_{i−1} · x_i ≥ 0`, keeping θ offsets in (−90°, 90°].
-//! D-H frame 0 is D-H frame 1 at q = 0 (`α_0 = a_0 = θ_1 = d_1 = 0`); `Robot::base` is its pose
-//! in the base frame, and gravity is rewritten into its axes. Then `α_{i−1} = ∠(z_{i−1}, z_i)`
+//! D-H frame 0 has `z_0 = z_1` (`α_0 = 0`) and its origin at the base frame's, so that the
+//! potential energy `−Σ m_i g·c_i` is the same in both frames: `d_1 = o_1·z_1`, and `x_0` along
+//! what remains of `o_1` (`a_0` its length; `x_0 = x_1`, `a_0 = 0` where `o_1` lies on the line
+//! through the base origin along `z_1`, as for most arms). `Robot::base` is its pose in the base
+//! frame (a rotation), and gravity is rewritten into its axes. Then `α_{i−1} = ∠(z_{i−1}, z_i)`
 //! about `x_{i−1}`, `a_{i−1} = (o_i − o_{i−1})·x_{i−1}`, `θ_i = ∠(x_{i−1}, x_i)` about `z_i`,
 //! `d_i = (o_i − o_{i−1})·z_i`; each link's com and inertia are re-expressed in D-H frame i
 //! through `link_pose_i = D_i⁻¹ L_i`.
@@ -96,23 +99,17 @@ pub fn lower_frames(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
         return Ok(());
     }
     let axes = axes(robot)?;
-    let frames = dh_frames(&axes)?;
+    let mut frames = dh_frames(&axes)?;
+    frames.insert(0, frame_zero(&frames[0])?);
     let base = frames[0].pose();
     for (i, joint) in robot.joints.iter_mut().enumerate() {
-        if i == 0 {
-            joint.alpha = Value::zero();
-            joint.a = Value::zero();
-            joint.theta = Value::zero();
-            joint.d = Value::zero();
-        } else {
-            let (before, frame) = (&frames[i - 1], &frames[i]);
-            let step = sub(&frame.origin, &before.origin);
-            joint.alpha = angle(&before.z, &frame.z, &before.x);
-            joint.a = dot(&step, &before.x);
-            joint.theta = angle(&before.x, &frame.x, &frame.z);
-            joint.d = dot(&step, &frame.z);
-        }
-        let link_pose = frame_pose_inverse(&frames[i]).then(&axes[i].link);
+        let (before, frame) = (&frames[i], &frames[i + 1]);
+        let step = sub(&frame.origin, &before.origin);
+        joint.alpha = angle(&before.z, &frame.z, &before.x);
+        joint.a = dot(&step, &before.x);
+        joint.theta = angle(&before.x, &frame.x, &frame.z);
+        joint.d = dot(&step, &frame.z);
+        let link_pose = frame_pose_inverse(&frames[i + 1]).then(&axes[i].link);
         joint.com = clean3(link_pose.apply(&joint.com));
         joint.inertia = rotate_inertia(&link_pose.rotation, &joint.inertia).map(clean);
         joint.link_pose = clean_pose(link_pose);
@@ -122,6 +119,42 @@ pub fn lower_frames(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
     robot.base = clean_pose(base);
     robot.convention = Convention::Modified;
     Ok(())
+}
+
+/// D-H frame 0: at the base frame's origin, so that the base pose is a rotation and the
+/// potential energy keeps its zero, with `z_0 = z_1`; `x_0` along the offset of D-H frame 1's
+/// origin from joint 1's axis direction through the base origin (`x_0 = x_1` where there is
+/// none, or where it lies along `x_1`).
+fn frame_zero(first: &DhFrame) -> Result<DhFrame, Vec<FrameProblem>> {
+    let along = dot(&first.origin, &first.z);
+    let off_axis = sub(&first.origin, &scale(&along, &first.z));
+    let x = if geometry::is_zero(&off_axis) || geometry::is_zero(&cross(&off_axis, &first.x)) {
+        first.x.clone()
+    } else {
+        let x = direction(&off_axis).ok_or_else(|| {
+            vec![FrameProblem {
+                joint: 0,
+                message: format!(
+                    "its origin's offset from the line through the base origin along its axis, \
+                     [{}, {}, {}] in base axes, names struct fields in more than one direction: \
+                     write the origin's xyz as numbers, or with the fields along one coordinate \
+                     axis",
+                    off_axis[0], off_axis[1], off_axis[2]
+                ),
+            }]
+        })?;
+        let keeps_x1 = number(&dot(&x, &first.x)).map_or(true, |c| c >= 0.0);
+        if keeps_x1 {
+            x
+        } else {
+            negate(&x)
+        }
+    };
+    Ok(DhFrame {
+        origin: Default::default(),
+        x,
+        z: first.z.clone(),
+    })
 }
 
 fn frame_pose_inverse(frame: &DhFrame) -> Pose {

@@ -243,6 +243,8 @@ fn random_frames_lower_to_the_same_kinematics_and_inertias() {
         let user = random_robot(&mut rng);
         let mut lowered = user.clone();
         lower_frames(&mut lowered).unwrap_or_else(|p| panic!("case {case}: {p:?}"));
+        // D-H frame 0 at the base origin: potential energies agree.
+        assert!(lowered.base.translation.iter().all(Value::is_zero));
         let base = pose_matrix(&lowered.base);
         let gravity = lowered.gravity.clone().map(|v| num(&v));
         for (k, want) in [0.3, -1.2, -9.81].into_iter().enumerate() {
@@ -322,7 +324,7 @@ fn ur5_lowers_to_an_exact_table_with_its_parallel_offsets_in_d4() {
     assert_eq!(column(|j| &j.theta), ["0"; 6]);
     assert_eq!(
         column(|j| &j.d),
-        ["0", "0", "0", "2183/20000", "1893/20000", "0"]
+        ["89159/1000000", "0", "0", "2183/20000", "1893/20000", "0"]
     );
     let all_exact = robot.joints.iter().all(|j| {
         [&j.alpha, &j.a, &j.theta, &j.d]
@@ -330,6 +332,6 @@ fn ur5_lowers_to_an_exact_table_with_its_parallel_offsets_in_d4() {
             .all(|v| v.pi_multiple().is_some() || v.exact().is_some_and(Number::is_exact))
     });
     assert!(all_exact);
-    // D-H frame 0 sits on the shoulder pan axis, 0.089159 above the base.
-    assert_eq!(robot.base.translation[2], Value::from_f64(0.089159));
+    // D-H frame 0 is the base frame.
+    assert_eq!(robot.base, Pose::identity());
 }
