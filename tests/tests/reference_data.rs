@@ -1,6 +1,7 @@
 //! The generated code against the reference data of `data/reference/` (Pinocchio 4.1.0,
 //! cross-checked with the Robotics Toolbox) and of `data/panda/` (a 7-joint arm, Pinocchio
-//! 4.1.0, checked against the URDF its parameters come from): for every sample, τ, M, C,
+//! 4.1.0, checked against the URDF its parameters come from) and of `data/frames/` (joints given
+//! by placements and axes, Pinocchio 4.1.0 models built from them): for every sample, τ, M, C,
 //! C·qd + g, g and both energies match to 1e-10, scaled as max|a − b| / max(1, max|b|).
 
 use dynamics_runtime::Dynamics;
@@ -35,6 +36,10 @@ reference_robot!(Random1, "data/reference/robots/random1.json", 2);
 reference_robot!(Random2, "data/reference/robots/random2.json", 3);
 reference_robot!(Random5, "data/reference/robots/random5.json", 6);
 reference_robot!(Panda, "data/panda/robot.json", 7);
+// Joints given by placements and axes (`data/frames/make.py`), lowered to D-H tables.
+reference_robot!(Ur5Urdf, "data/frames/ur5_urdf.toml", 6);
+reference_robot!(Tilted, "data/frames/tilted.toml", 3);
+reference_robot!(General, "data/frames/general.toml", 6);
 
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
     reference::check(robot, file, Friction::None)
@@ -85,4 +90,22 @@ fn panda_seven_joints() {
 #[test]
 fn random2_modified_convention() {
     check(&Random2, "reference/data/random2.json");
+}
+
+/// UR5's joints as its URDF places them, quarter turns written 1.5708 and 3.14159.
+#[test]
+fn ur5_urdf_style_frames() {
+    check(&Ur5Urdf, "frames/ur5_urdf.json");
+}
+
+/// Quarter turns written as floats, a prismatic joint along −y, gravity off the axes.
+#[test]
+fn tilted_frames() {
+    check(&Tilted, "frames/tilted.json");
+}
+
+/// Generic placements and axes, prismatic joints.
+#[test]
+fn general_frames() {
+    check(&General, "frames/general.json");
 }

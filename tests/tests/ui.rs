@@ -2,8 +2,9 @@
 //! holds the error the derive must give, on the offending token. The categories are
 //! `attributes` (keys of `#[dynamics(...)]`), `values` (the D-H table and its values),
 //! `fields` (struct fields named by values), `physics` (mass, inertia, actuator inertia,
-//! springs), `friction` (joint friction and geared drives, in attributes and files) and `files`
-//! (description files, which live next to their tests). Refresh with
+//! springs), `friction` (joint friction and geared drives, in attributes and files), `files`
+//! (description files, which live next to their tests) and `frames` (joints given by placements
+//! and axes, in the attribute and in files). Refresh with
 //! `TRYBUILD=overwrite`, then read every changed `.stderr`.
 
 #[test]

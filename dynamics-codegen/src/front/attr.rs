@@ -2,6 +2,7 @@
 //! into [`Attrs`], still as tokens with their spans. An unknown or repeated key is an error
 //! and parsing goes on with the next key, so that one build reports every mistake.
 
+use super::attr_joints::{parse_joints, JointAttr};
 use super::attr_value::{boolean, parse_convention, parse_dh, parse_spring, string, values};
 use super::errors::{unknown_key, Errors};
 use super::friction_attr::{parse_friction, FrictionAttr};
@@ -43,6 +44,8 @@ pub(super) struct Attrs {
     pub gravity: Option<[Spanned; 3]>,
     /// The rows and the span of the table's brackets.
     pub dh: Option<(Vec<DhRowAttr>, Span)>,
+    /// The joints given by placements and axes, and the span of the list's brackets.
+    pub joints: Option<(Vec<JointAttr>, Span)>,
     pub links: Vec<LinkAttr>,
     pub name: Option<LitStr>,
     /// `check_inertia = false` for every link (or every joint of the file).
@@ -51,22 +54,26 @@ pub(super) struct Attrs {
 
 /// What the keys of `#[dynamics(...)]` are called in messages.
 const ATTRIBUTE: &str = "dynamics attribute";
+/// The error for `dh` and `joints` both given, on the second.
+const BOTH_TABLES: &str = "`dh` and `joints` cannot be combined: give the joints either as a \
+                           D-H table (`dh = [[θ, d, a, α], ...]`) or by placements and axes \
+                           (`joints = [revolute(xyz = [..], rpy = [..], axis = [..]), ...]`)";
 /// What the keys of `link(...)` are called in messages.
 const LINK_ATTRIBUTE: &str = "link attribute";
 
 /// One `key = value` entry of an attribute list, where a repeated key is reported.
-struct Entry<'a> {
+pub(super) struct Entry<'a> {
     /// The key as written.
-    ident: &'a Ident,
+    pub ident: &'a Ident,
     /// What the keys of the list are called in messages.
-    what: &'static str,
-    errors: &'a mut Errors,
+    pub what: &'static str,
+    pub errors: &'a mut Errors,
 }
 
 impl Entry<'_> {
     /// Stores the first value given for the key; a repeated key is an error on its second
     /// occurrence, and parsing goes on.
-    fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
+    pub(super) fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
         if slot.is_some() {
             let (key, what) = (self.ident, self.what);
             self.errors.push(
@@ -81,7 +88,7 @@ impl Entry<'_> {
 
 /// Skips what follows an unknown key, up to the next `,` at this level, so that the keys
 /// after it are still checked.
-fn skip_entry(input: ParseStream) -> syn::Result<()> {
+pub(super) fn skip_entry(input: ParseStream) -> syn::Result<()> {
     while !input.is_empty() && !input.peek(Token![,]) {
         input.parse::<proc_macro2::TokenTree>()?;
     }
@@ -156,7 +163,22 @@ fn parse_attr(
             entry.keep_first(&mut attrs.gravity, gravity);
         }
         Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input)?),
-        Key::Dh => entry.keep_first(&mut attrs.dh, parse_dh(input)?),
+        Key::Dh => {
+            let dh = parse_dh(input)?;
+            if attrs.joints.is_some() {
+                entry.errors.push(ident.span(), BOTH_TABLES);
+            } else {
+                entry.keep_first(&mut attrs.dh, dh);
+            }
+        }
+        Key::Joints => {
+            let joints = parse_joints(input, entry.errors)?;
+            if attrs.dh.is_some() {
+                entry.errors.push(ident.span(), BOTH_TABLES);
+            } else {
+                entry.keep_first(&mut attrs.joints, joints);
+            }
+        }
         // Read above: a `link(...)` has no `=`.
         Key::Link => {}
     }

@@ -26,6 +26,11 @@ impl Errors {
         self.0.push(syn::Error::new_spanned(tokens, message));
     }
 
+    /// Whether no error has been found.
+    pub(super) fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
     /// Adds an error that already has its span (a syntax error).
     pub(super) fn push_error(&mut self, error: syn::Error) {
         self.0.push(error);

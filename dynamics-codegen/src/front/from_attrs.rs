@@ -7,6 +7,7 @@ use super::attr::{Attrs, DhRowAttr, LinkAttr};
 use super::errors::Errors;
 use super::fields::{check_names, Field};
 use super::friction_attr::FrictionAttr;
+use super::from_joints;
 use super::value::Spanned;
 use crate::check;
 use crate::model::{Convention, Friction, Joint, JointKind, Pose, Robot, Spring, Value};
@@ -28,15 +29,19 @@ pub(super) fn robot_from_attrs(
             Default::default()
         }
     };
-    let joints = match &attrs.dh {
-        None => {
+    let joints = match (&attrs.dh, &attrs.joints) {
+        (None, Some(joints)) => {
+            return from_joints::robot(attrs, joints, input, gravity, &mut reader)
+        }
+        (None, None) => {
             reader.errors.push(
                 span,
-                "missing `dh = [[θ, d, a, α], ...]`: the D-H table, one row per joint",
+                "missing `dh = [[θ, d, a, α], ...]`: the D-H table, one row per joint (or \
+                 `joints = [revolute(xyz = [..], rpy = [..], axis = [..]), ...]`)",
             );
             Vec::new()
         }
-        Some((rows, table_span)) => {
+        (Some((rows, table_span)), _) => {
             check_table_size(rows, *table_span, &attrs.links, reader.errors);
             rows.iter()
                 .enumerate()
@@ -90,24 +95,24 @@ fn check_table_size(rows: &[DhRowAttr], table_span: Span, links: &[LinkAttr], er
 }
 
 /// The values of a `link(...)`, zero where it does not give them.
-struct LinkValues {
-    mass: Value,
-    com: [Value; 3],
-    inertia: [Value; 6],
-    actuator_inertia: Value,
-    spring: Option<Spring>,
-    friction: Option<Friction>,
+pub(super) struct LinkValues {
+    pub mass: Value,
+    pub com: [Value; 3],
+    pub inertia: [Value; 6],
+    pub actuator_inertia: Value,
+    pub spring: Option<Spring>,
+    pub friction: Option<Friction>,
 }
 
 /// Turns attribute values into model values, reporting the errors of each.
-struct Reader<'a> {
+pub(super) struct Reader<'a> {
     fields: &'a [Field],
-    errors: &'a mut Errors,
+    pub errors: &'a mut Errors,
 }
 
 impl Reader<'_> {
     /// A constant value (not a D-H cell that holds `q`), or zero where none is given.
-    fn value(&mut self, s: Option<&Spanned>) -> Value {
+    pub(super) fn value(&mut self, s: Option<&Spanned>) -> Value {
         let Some(s) = s else {
             return Value::zero();
         };
@@ -123,7 +128,7 @@ impl Reader<'_> {
     }
 
     /// Constant values, in order.
-    fn values<const N: usize>(&mut self, s: &[Spanned; N]) -> [Value; N] {
+    pub(super) fn values<const N: usize>(&mut self, s: &[Spanned; N]) -> [Value; N] {
         s.each_ref().map(|s| self.value(Some(s)))
     }
 
@@ -234,7 +239,7 @@ impl Reader<'_> {
 
     /// The values of link `n`'s `link(...)`, checked; `check_all` is the derive's
     /// `check_inertia`, which the link's own overrides.
-    fn link(
+    pub(super) fn link(
         &mut self,
         n: usize,
         link: Option<&LinkAttr>,

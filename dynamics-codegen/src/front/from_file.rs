@@ -90,7 +90,9 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
     for (i, j) in robot.joints.iter().enumerate() {
         let spring = j.spring.as_ref();
         let friction = j.friction.as_ref();
-        let keys: [(&'static str, Vec<&Value>); 14] = [
+        let origin = j.frame.iter().flat_map(|f| &f.origin.xyz).collect();
+        let keys: [(&'static str, Vec<&Value>); 15] = [
+            ("origin", origin),
             ("theta", vec![&j.theta]),
             ("d", vec![&j.d]),
             ("a", vec![&j.a]),

@@ -26,6 +26,7 @@
 
 mod angle;
 mod attr;
+mod attr_joints;
 mod attr_value;
 mod errors;
 mod fields;
@@ -33,6 +34,7 @@ mod file;
 mod friction_attr;
 mod from_attrs;
 mod from_file;
+mod from_joints;
 mod symbol;
 mod value;
 
@@ -132,6 +134,7 @@ fn robot(
         for (present, what) in [
             (attrs.gravity.is_some(), "gravity"),
             (attrs.dh.is_some(), "dh"),
+            (attrs.joints.is_some(), "joints"),
             (!attrs.links.is_empty(), "link"),
             (attrs.convention.is_some(), "convention"),
         ] {
@@ -172,6 +175,7 @@ fn finish(
             dof: robot
                 .map(|r| r.dof())
                 .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
+                .or_else(|| attrs.joints.as_ref().map(|(joints, _)| joints.len()))
                 .filter(|n| *n > 0),
             krate: attrs.krate,
         }),

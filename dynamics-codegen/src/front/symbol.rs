@@ -37,10 +37,28 @@ macro_rules! keys {
 keys! {
     /// A key of `#[dynamics(...)]`: `gravity = [gx, gy, gz]`, `dh = [[θ, d, a, α], ...]`,
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
-    /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`.
+    /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
+    /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes).
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
+        Joints = "joints",
+    }
+}
+
+keys! {
+    /// An entry of `joints = [...]`: `revolute(..)` or `prismatic(..)`.
+    JointType {
+        Revolute = "revolute", Prismatic = "prismatic",
+    }
+}
+
+keys! {
+    /// A key of `revolute(...)` and `prismatic(...)`: `xyz = [x, y, z]` and
+    /// `rpy = [roll, pitch, yaw]` place the joint frame in the previous link's frame (as URDF's
+    /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame.
+    JointKey {
+        Xyz = "xyz", Rpy = "rpy", Axis = "axis",
     }
 }
 

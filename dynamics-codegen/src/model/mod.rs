@@ -8,11 +8,15 @@
 
 mod arith;
 mod frame;
+mod lower;
 mod value;
 
 pub use frame::{
     mat_mul, mat_vec, rotate_inertia, sin_cos, snap_angle, transpose, AxisFrame, Matrix, Placement,
     Pose, QUARTER_TURN_TOLERANCE,
+};
+pub use lower::{
+    lower_frames, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE, NOISE_TOLERANCE,
 };
 pub use value::Value;
 

@@ -3,6 +3,7 @@
 //! `"m2 * l2^2 / 12"`), read by the attribute's value grammar, which TOML makes pleasant to
 //! write by hand. Errors carry the file's line and column.
 
+mod frames;
 mod json;
 mod positions;
 mod schema;
@@ -87,7 +88,8 @@ impl std::fmt::Display for FileError {
     }
 }
 
-/// The loaded robot, or the first of the errors found after parsing, at its position.
+/// The loaded robot, or the first of the errors found after parsing, at its position (that of
+/// the joint's `type` where the file does not write the key).
 fn first_error(loaded: Loaded, deferred: &[schema::Deferred]) -> Result<Loaded, FileError> {
     let Some((joint, key, message)) = deferred.first() else {
         return Ok(loaded);
@@ -95,7 +97,7 @@ fn first_error(loaded: Loaded, deferred: &[schema::Deferred]) -> Result<Loaded, 
     let (line, column) = loaded
         .positions
         .get(*joint)
-        .and_then(|p| p.get(*key))
+        .and_then(|p| p.get(*key).or_else(|| p.get("type")))
         .map_or((None, None), |(l, c)| (Some(*l), Some(*c)));
     Err(FileError {
         message: format!("joint {}: {message}", joint + 1),

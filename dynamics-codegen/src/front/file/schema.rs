@@ -1,7 +1,7 @@
 //! The schema of a description file, as serde reads it, and its conversion to a
 //! [`Robot`]. Absent D-H entries, offsets and spring values are zero.
 
-use super::{FileError, Loaded};
+use super::{frames, FileError, Loaded};
 use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
@@ -13,7 +13,7 @@ use serde::Deserialize;
 /// read and checked while the file is parsed, so that its errors carry a line and column.
 /// The second field is what is wrong with it as an angle: a plain number above 2π (a number,
 /// or a term of a string without a unit).
-struct FileValue(Value, Option<String>);
+pub(super) struct FileValue(pub Value, pub Option<String>);
 
 /// An error in joint `.0`'s value of key `.1`, found after parsing: it gets its position
 /// from [`Loaded::positions`].
@@ -113,17 +113,23 @@ pub(super) struct FileRobot {
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct FileJoint {
+pub(super) struct FileJoint {
     #[serde(rename = "type")]
     kind: FileKind,
     #[serde(default)]
-    theta: Option<FileValue>,
+    pub(super) theta: Option<FileValue>,
     #[serde(default)]
-    d: Option<FileValue>,
+    pub(super) d: Option<FileValue>,
     #[serde(default)]
-    a: Option<FileValue>,
+    pub(super) a: Option<FileValue>,
     #[serde(default)]
-    alpha: Option<FileValue>,
+    pub(super) alpha: Option<FileValue>,
+    /// The joint frame's placement, URDF style, instead of `theta`, `d`, `a`, `alpha`.
+    #[serde(default)]
+    pub(super) origin: Option<FileOrigin>,
+    /// The unit axis in the joint frame (default `[0, 0, 1]`), with `origin`.
+    #[serde(default)]
+    pub(super) axis: Option<[FileValue; 3]>,
     mass: FileValue,
     #[serde(default)]
     com: Option<[FileValue; 3]>,
@@ -201,15 +207,27 @@ impl FileJoint {
     }
 }
 
+/// `origin = { xyz = [..], rpy = [..] }`: translation, and roll, pitch, yaw in radians.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileOrigin {
+    #[serde(default)]
+    pub(super) xyz: Option<[FileValue; 3]>,
+    #[serde(default)]
+    pub(super) rpy: Option<[FileValue; 3]>,
+}
+
 fn value(v: Option<&FileValue>) -> Value {
     v.map_or_else(Value::zero, |v| v.0.clone())
 }
 
-/// The angles (θ and α) of joint `joint` written as plain numbers above 2π.
+/// The angles (θ, α and the origin's rpy) of joint `joint` written as plain numbers above 2π.
 fn angle_problems(joint: usize, j: &FileJoint) -> impl Iterator<Item = Deferred> + '_ {
+    let rpy = j.origin.iter().flat_map(|o| o.rpy.iter().flatten());
     [("theta", &j.theta), ("alpha", &j.alpha)]
         .into_iter()
         .filter_map(move |(key, v)| Some((joint, key, v.as_ref()?.1.clone()?)))
+        .chain(rpy.filter_map(move |v| Some((joint, "origin", v.1.clone()?))))
 }
 
 /// The robot the file describes, with its per-joint check flags (positions are filled in by
@@ -228,6 +246,14 @@ pub(super) fn convert(
         ));
     }
     let gravity = file.gravity.map(|g| g.0);
+    let frames_given = file.joints.iter().any(FileJoint::has_frame);
+    if frames_given && file.convention.is_some() {
+        return Err(super::plain(
+            "`convention` applies to D-H rows: joints given by `origin` and `axis` are lowered \
+             to their own modified D-H table; remove `convention`"
+                .to_string(),
+        ));
+    }
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
@@ -245,6 +271,7 @@ pub(super) fn convert(
         check_inertia.push(j.check_inertia.unwrap_or(true));
         let actuator_inertia = j.actuator_inertia(i, &mut deferred);
         let friction = j.friction();
+        let frame = frames::frame(i, &j, frames_given, &mut deferred);
         joints.push(Joint {
             kind,
             theta: value(j.theta.as_ref()),
@@ -257,11 +284,11 @@ pub(super) fn convert(
             actuator_inertia,
             spring,
             friction,
-            frame: None,
+            frame,
             link_pose: Pose::identity(),
         });
     }
-    let loaded = Loaded {
+    let mut loaded = Loaded {
         robot: Robot {
             name: file.name.unwrap_or_else(|| default_name.to_string()),
             convention,
@@ -273,5 +300,8 @@ pub(super) fn convert(
         positions: Vec::new(),
         gravity: None,
     };
+    if frames_given && deferred.is_empty() {
+        frames::lower(&mut loaded.robot, &mut deferred);
+    }
     Ok((loaded, deferred))
 }

@@ -1,0 +1,135 @@
+//! The robot built from `joints = [...]`: one joint per `revolute(..)` or `prismatic(..)` with
+//! its `link(...)` (inertial parameters in link frame i, the joint frame), then lowered to the
+//! robot's own modified D-H table by [`lower_frames`], whose problems go on the joint's tokens.
+
+use super::angle::unitless_angle;
+use super::attr::{Attrs, LinkAttr};
+use super::attr_joints::JointAttr;
+use super::errors::Errors;
+use super::from_attrs::Reader;
+use crate::check;
+use crate::model::{lower_frames, AxisFrame, Convention, Joint, Placement, Pose, Robot, Value};
+use proc_macro2::Span;
+
+/// The robot of `joints = [...]` (the list and the span of its brackets), lowered where every
+/// value was read without error.
+pub(super) fn robot(
+    attrs: &Attrs,
+    (joints, list_span): &(Vec<JointAttr>, Span),
+    input: &syn::DeriveInput,
+    gravity: [Value; 3],
+    reader: &mut Reader,
+) -> Robot {
+    let span = input.ident.span();
+    check_count(joints, *list_span, &attrs.links, reader.errors);
+    if let Some((_, at)) = attrs.convention {
+        reader.errors.push(
+            at,
+            "`convention` applies to a D-H table: joints given by `joints = [..]` are lowered \
+             to their own modified D-H table; remove `convention`",
+        );
+    }
+    let built = joints
+        .iter()
+        .enumerate()
+        .map(|(i, j)| joint(reader, i + 1, j, attrs, span))
+        .collect();
+    let mut robot = Robot {
+        name: input.ident.to_string(),
+        convention: Convention::Standard,
+        gravity,
+        joints: built,
+        base: Pose::identity(),
+    };
+    if reader.errors.is_empty() {
+        if let Err(problems) = lower_frames(&mut robot) {
+            for problem in problems {
+                let j = &joints[problem.joint];
+                let (start, end) = match (&j.axis, problem.concerns_axis()) {
+                    (Some((_, brackets)), true) => (*brackets, *brackets),
+                    _ => (j.span, j.end),
+                };
+                let message = format!("joint {}: {}", problem.joint + 1, problem.message);
+                reader.errors.push_range(start, end, message);
+            }
+        }
+    }
+    robot
+}
+
+/// Joint `n` (1-based) as its entry gives it, with its `link(...)`.
+fn joint(reader: &mut Reader, n: usize, j: &JointAttr, attrs: &Attrs, span: Span) -> Joint {
+    let xyz = j
+        .xyz
+        .as_ref()
+        .map_or_else(Default::default, |v| reader.values(v));
+    let rpy = match &j.rpy {
+        Some(angles) => {
+            for angle in angles {
+                if let Some((term, message)) = unitless_angle(&angle.unitless, false) {
+                    reader.errors.push_range(term.span, term.end, message);
+                }
+            }
+            reader.values(angles)
+        }
+        None => Default::default(),
+    };
+    let axis = match &j.axis {
+        Some((v, _)) => reader.values(v),
+        None => [Value::zero(), Value::zero(), Value::one()],
+    };
+    let link = reader.link(n, attrs.links.get(n - 1), attrs.check_inertia, span);
+    Joint {
+        kind: j.kind,
+        theta: Value::zero(),
+        d: Value::zero(),
+        a: Value::zero(),
+        alpha: Value::zero(),
+        mass: link.mass,
+        com: link.com,
+        inertia: link.inertia,
+        actuator_inertia: link.actuator_inertia,
+        spring: link.spring,
+        friction: link.friction,
+        frame: Some(AxisFrame {
+            origin: Placement { xyz, rpy },
+            axis,
+        }),
+        link_pose: Pose::identity(),
+    }
+}
+
+/// Errors for an empty list, one with too many joints, and a number of `link(...)` entries
+/// that is not the number of joints.
+fn check_count(joints: &[JointAttr], list_span: Span, links: &[LinkAttr], errors: &mut Errors) {
+    if joints.is_empty() {
+        errors.push(
+            list_span,
+            "`joints` is empty: give one `revolute(..)` or `prismatic(..)` per joint",
+        );
+    }
+    if let Some(j) = joints.get(check::MAX_JOINTS) {
+        errors.push(
+            j.span,
+            format!(
+                "{} joints are given; at most {} are supported (the generated code grows as n³)",
+                joints.len(),
+                check::MAX_JOINTS
+            ),
+        );
+    }
+    if !joints.is_empty() && joints.len() != links.len() {
+        let at = links
+            .get(joints.len())
+            .and_then(|l| l.span)
+            .unwrap_or(list_span);
+        errors.push(
+            at,
+            format!(
+                "{} joints are given but {} `link(...)` entries: give one per joint",
+                joints.len(),
+                links.len()
+            ),
+        );
+    }
+}

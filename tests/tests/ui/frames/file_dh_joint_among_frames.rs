@@ -1,0 +1,8 @@
+use dynamics_runtime::Dynamics;
+
+// The path is relative to the crate's Cargo.toml, which for trybuild is target/tests/trybuild/<crate>.
+#[derive(Dynamics)]
+#[dynamics(file = "../../../../tests/tests/ui/frames/file_dh_joint_among_frames.toml")]
+struct Arm;
+
+fn main() {}
