@@ -233,7 +233,7 @@ fn unit_axis(joint: &UrdfJoint) -> Result<[Value; 3], FileError> {
     let written = joint
         .axis
         .iter()
-        .map(ToString::to_string)
+        .map(|a| a.eval(&|_| None).unwrap_or_default().to_string())
         .collect::<Vec<_>>()
         .join(" ");
     let name = &joint.name;
@@ -261,7 +261,7 @@ fn friction(joint: &UrdfJoint) -> Result<Option<Friction>, Vec<FileError>> {
             .exact()
             .is_some_and(crate::symbolic::Number::is_negative)
         {
-            errors.push(error(at, format!("joint `{}`: `<dynamics {key}=\"{value}\">` is negative: a friction coefficient is 0 or more", joint.name)));
+            errors.push(error(at, format!("joint `{}`: `<dynamics {key}=\"{}\">` is negative: a friction coefficient is 0 or more", joint.name, value.eval(&|_| None).unwrap_or_default())));
         }
         value
     };

@@ -77,9 +77,14 @@ pub(super) struct Description {
 pub(super) fn read(text: &str) -> Result<Description, Vec<FileError>> {
     let doc = roxmltree::Document::parse(text).map_err(|e| {
         let pos = e.pos();
+        let message = e.to_string();
+        // roxmltree ends its messages with the position, which the error carries already.
+        let message = message
+            .strip_suffix(&format!(" at {pos}"))
+            .unwrap_or(&message);
         vec![error(
             (pos.row as usize, pos.col as usize),
-            format!("malformed XML: {e}"),
+            format!("malformed XML: {message}"),
         )]
     })?;
     let root = doc.root_element();
