@@ -158,7 +158,9 @@ fn link_problems<'a>(
                     check::LinkParameter::Mass => inertial.mass_at,
                     _ => inertial.inertia_at,
                 };
-                error(at, format!("link `{}`: {}", link.name, p.message))
+                // A URDF link has no `check_inertia` of its own: the derive's covers them all.
+                let message = p.message.replace("to this link", "to the derive");
+                error(at, format!("link `{}`: {message}", link.name))
             })
         })
     })
