@@ -17,6 +17,9 @@ use std::collections::BTreeMap;
 /// an axis is divided by its length, as Pinocchio does.
 pub const AXIS_LENGTH_TOLERANCE: f64 = 1e-6;
 
+/// Where one joint's values are written, by key (`type`, `axis`, `mass`, `inertia`).
+type JointPositions = BTreeMap<String, (usize, usize)>;
+
 /// A moving joint with the links it carries, each with its pose in the joint's child frame.
 struct Segment {
     joint: usize,
@@ -167,10 +170,7 @@ fn link_problems<'a>(
 }
 
 /// The model's joint for `segment`, with where its values are written.
-fn joint(
-    tree: &Tree,
-    segment: Segment,
-) -> Result<(Joint, BTreeMap<String, (usize, usize)>), Vec<FileError>> {
+fn joint(tree: &Tree, segment: Segment) -> Result<(Joint, JointPositions), Vec<FileError>> {
     let urdf = &tree.doc.joints[segment.joint];
     let (axis, friction) = (unit_axis(urdf), friction(urdf));
     let (axis, friction) = match (axis, friction) {
@@ -191,7 +191,7 @@ fn joint(
     let body = Body::combine(&parts);
     let child = &tree.doc.links[tree.child(segment.joint)];
     let inertial = child.inertial.as_ref();
-    let at: BTreeMap<String, (usize, usize)> = [
+    let at: JointPositions = [
         ("type", urdf.at),
         ("axis", urdf.axis_at),
         ("mass", inertial.map_or(child.at, |i| i.mass_at)),

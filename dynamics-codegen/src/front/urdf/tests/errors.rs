@@ -49,9 +49,12 @@ fn a_good_file_loads() {
     assert_eq!(loaded.positions[1]["type"], (4, 1));
 }
 
+/// A file, its tip, where the error is and what it says.
+type Case<'a> = (String, Option<&'a str>, (usize, usize), &'a str);
+
 #[test]
 fn each_mistake_at_its_place() {
-    let cases: [(String, Option<&str>, (usize, usize), &str); 10] = [
+    let cases: [Case; 10] = [
         (
             "<robot><link name=\"a\">\n</robot>".into(),
             None,
