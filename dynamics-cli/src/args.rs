@@ -12,7 +12,8 @@ use std::str::FromStr;
     arg_required_else_help = true
 )]
 #[command(after_help = "ROBOT is a description file (.json or .toml), as \
-                        `#[dynamics(file = \"...\")]` reads it.")]
+                        `#[dynamics(file = \"...\")]` reads it, or a URDF file (.urdf), as \
+                        `#[dynamics(urdf = \"...\")]` reads it, with --base and --tip.")]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -32,9 +33,15 @@ pub enum Command {
 
 #[derive(Args, Debug)]
 pub struct RobotFile {
-    /// The robot's description file (.json or .toml)
+    /// The robot's description file (.json, .toml or .urdf)
     #[arg(value_name = "ROBOT")]
     pub path: String,
+    /// URDF only: the link the chain starts at, fixed to the ground [default: the root link]
+    #[arg(long, value_name = "LINK")]
+    pub base: Option<String>,
+    /// URDF only: the link the chain ends at [default: the last link the moving joints reach]
+    #[arg(long, value_name = "LINK")]
+    pub tip: Option<String>,
 }
 
 #[derive(Args, Debug)]

@@ -1,5 +1,6 @@
 //! `dynamics`: the generator on the command line, for a robot description file (JSON or TOML,
-//! as `#[dynamics(file = "...")]` reads).
+//! as `#[dynamics(file = "...")]` reads) or a URDF file (`ROBOT.urdf [--base LINK] [--tip
+//! LINK]`, as `#[dynamics(urdf = "...", base = "..", tip = "..")]` reads).
 //!
 //! * `inspect ROBOT [--latex]`: the equations of motion in the book's notation;
 //! * `emit ROBOT`: a standalone Rust module with the code the derive generates;

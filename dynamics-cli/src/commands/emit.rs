@@ -1,11 +1,13 @@
 //! `dynamics emit ROBOT`: a standalone Rust module with the code the derive generates.
 
 use super::{field_idents, load, self_fields, type_name, Failure};
+use crate::args::RobotFile;
 use dynamics_codegen::{derive, generate};
 use quote::quote;
 
-pub fn run(path: &str) -> Result<String, Failure> {
-    let robot = load(path)?;
+pub fn run(args: &RobotFile) -> Result<String, Failure> {
+    let robot = load(args)?;
+    let path = &args.path;
     let eq = derive(&robot);
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);

@@ -10,7 +10,7 @@ use dynamics_codegen::symbolic::{NodeId, Var};
 use dynamics_codegen::{derive, Equations};
 
 pub fn run(args: &Eval) -> Result<String, Failure> {
-    let robot = load(&args.robot.path)?;
+    let robot = load(&args.robot)?;
     let eq = derive(&robot);
     let n = eq.dof;
     let q = joints("--q", Some(&args.q), n)?;

@@ -6,7 +6,7 @@ use dynamics_codegen::derive;
 use dynamics_codegen::inspect::{inspect, Format, Limits};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
-    let robot = load(&args.robot.path)?;
+    let robot = load(&args.robot)?;
     let eq = derive(&robot);
     let format = if args.latex {
         Format::Latex

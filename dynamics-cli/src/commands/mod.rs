@@ -6,7 +6,9 @@ mod eval;
 mod inspect;
 mod stats;
 
-use crate::args::Command;
+use crate::args::{Cli, Command, RobotFile};
+use clap::error::ErrorKind;
+use clap::CommandFactory;
 use dynamics_codegen::check;
 use dynamics_codegen::front;
 use dynamics_codegen::model::Robot;
@@ -28,25 +30,45 @@ pub enum Failure {
 pub fn run(command: &Command) -> Result<String, Failure> {
     match command {
         Command::Inspect(args) => inspect::run(args),
-        Command::Emit(args) => emit::run(&args.path),
-        Command::Stats(args) => stats::run(&args.path),
+        Command::Emit(args) => emit::run(args),
+        Command::Stats(args) => stats::run(args),
         Command::Eval(args) => eval::run(args),
     }
 }
 
 /// Reads and checks a description file as the derive does (values, then the physical checks
-/// of each link and the joint count); errors carry `file:line:col`.
-fn load(path: &str) -> Result<Robot, Failure> {
+/// of each link and the joint count); errors carry `file:line:col`. A `.urdf` file is read
+/// with its `--base` and `--tip`.
+fn load(robot: &RobotFile) -> Result<Robot, Failure> {
+    let path = robot.path.as_str();
     let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    let loaded = front::load(path, &text).map_err(|e| {
-        // `file:line:col: message`, or `file: message` when the error has no place.
+    // `file:line:col: message`, or `file: message` when the error has no place.
+    let at = |e: &front::FileError| {
         let sep = if e.line.is_some() && e.column.is_some() {
             ":"
         } else {
             ": "
         };
-        Failure::File(format!("{path}{sep}{e}"))
-    })?;
+        format!("{path}{sep}{e}")
+    };
+    let loaded = if path.ends_with(".urdf") {
+        let chain = front::Chain {
+            base: robot.base.as_deref(),
+            tip: robot.tip.as_deref(),
+        };
+        front::load_urdf(path, &text, chain, true).map_err(|errors| {
+            let lines: Vec<String> = errors.iter().map(at).collect();
+            Failure::File(lines.join("\ndynamics: "))
+        })?
+    } else if robot.base.is_some() || robot.tip.is_some() {
+        let message =
+            format!("--base and --tip name links of a URDF file; `{path}` is not one (*.urdf)");
+        return Err(Failure::Usage(
+            Cli::command().error(ErrorKind::ArgumentConflict, message),
+        ));
+    } else {
+        front::load(path, &text).map_err(|e| Failure::File(at(&e)))?
+    };
     let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
         .iter()
         .map(|problem| loaded.describe(path, problem))

@@ -2,6 +2,7 @@
 //! code size per method, and the cost of the readable equations the derive adds.
 
 use super::{field_idents, load, self_fields, type_name, Failure};
+use crate::args::RobotFile;
 use dynamics_codegen::inspect::{inspect, Format, Limits};
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::{derive, generate, Equations, Generated};
@@ -9,8 +10,8 @@ use quote::quote;
 use std::fmt::Write;
 use std::time::Instant;
 
-pub fn run(path: &str) -> Result<String, Failure> {
-    let robot = load(path)?;
+pub fn run(args: &RobotFile) -> Result<String, Failure> {
+    let robot = load(args)?;
     let start = Instant::now();
     let eq = derive(&robot);
     let generated = generate(&eq, self_fields(&field_idents(&eq)));

@@ -50,6 +50,10 @@ pub(super) struct Attrs {
     pub name: Option<LitStr>,
     /// `check_inertia = false` for every link (or every joint of the file).
     pub check_inertia: Option<bool>,
+    /// `urdf = "..."`, and the links of the chain it takes: `base = ".."`, `tip = ".."`.
+    pub urdf: Option<LitStr>,
+    pub base: Option<LitStr>,
+    pub tip: Option<LitStr>,
 }
 
 /// What the keys of `#[dynamics(...)]` are called in messages.
@@ -152,6 +156,12 @@ fn parse_attr(
             &mut attrs.file,
             string(input, "`file = \"robots/arm.toml\"`")?,
         ),
+        Key::Urdf => entry.keep_first(
+            &mut attrs.urdf,
+            string(input, "`urdf = \"robots/arm.urdf\"`")?,
+        ),
+        Key::Base => entry.keep_first(&mut attrs.base, string(input, "`base = \"base_link\"`")?),
+        Key::Tip => entry.keep_first(&mut attrs.tip, string(input, "`tip = \"tool0\"`")?),
         Key::Name => entry.keep_first(&mut attrs.name, string(input, "`name = \"arm\"`")?),
         Key::Crate => {
             let path = string(input, "`crate = \"path::to::dynamics_runtime\"`")?.parse()?;

@@ -19,20 +19,7 @@ pub(super) fn robot_from_file(
     errors: &mut Errors,
     tracked: &mut Option<String>,
 ) -> Option<Robot> {
-    let relative = file.value();
-    let base = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".to_string());
-    let path = std::path::Path::new(&base).join(&relative);
-    let text = match std::fs::read_to_string(&path) {
-        Ok(t) => t,
-        Err(e) => {
-            errors.push(
-                file.span(),
-                format!("cannot read `{relative}` (relative to the crate's Cargo.toml): {e}"),
-            );
-            return None;
-        }
-    };
-    *tracked = Some(path.display().to_string());
+    let (relative, text) = read_relative(file, errors, tracked)?;
     let loaded = match file::load(&relative, &text) {
         Ok(loaded) => loaded,
         Err(e) => {
@@ -47,8 +34,37 @@ pub(super) fn robot_from_file(
     Some(loaded.robot)
 }
 
+/// The text of the file `file` names (relative to the crate's `Cargo.toml`), with its path
+/// as written; `tracked` is set to its absolute path, for rebuilds.
+pub(super) fn read_relative(
+    file: &LitStr,
+    errors: &mut Errors,
+    tracked: &mut Option<String>,
+) -> Option<(String, String)> {
+    let relative = file.value();
+    let base = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".to_string());
+    let path = std::path::Path::new(&base).join(&relative);
+    let text = match std::fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) => {
+            errors.push(
+                file.span(),
+                format!("cannot read `{relative}` (relative to the crate's Cargo.toml): {e}"),
+            );
+            return None;
+        }
+    };
+    *tracked = Some(path.display().to_string());
+    Some((relative, text))
+}
+
 /// Every problem of the loaded file `relative`, as messages that point into it.
-fn problems(loaded: &Loaded, relative: &str, check_inertia: bool, fields: &[Field]) -> Vec<String> {
+pub(super) fn problems(
+    loaded: &Loaded,
+    relative: &str,
+    check_inertia: bool,
+    fields: &[Field],
+) -> Vec<String> {
     let robot = &loaded.robot;
     let mut messages = Vec::new();
     for name in robot.fields() {

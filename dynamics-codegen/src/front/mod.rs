@@ -35,12 +35,15 @@ mod friction_attr;
 mod from_attrs;
 mod from_file;
 mod from_joints;
+mod from_urdf;
 mod symbol;
+mod urdf;
 mod value;
 
 pub use errors::Errors;
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load, FileError, Loaded, Positions};
+pub use urdf::{load_urdf, Chain, AXIS_LENGTH_TOLERANCE};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::model::Robot;
@@ -95,7 +98,7 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
         errors.push(
             input.ident.span(),
             "missing `#[dynamics(...)]`: give the D-H table with `gravity = [..]`, `dh = [..]` and \
-             one `link(..)` per joint, or `file = \"robot.json\"`",
+             one `link(..)` per joint, `file = \"robot.json\"` or `urdf = \"robot.urdf\"`",
         );
     }
     let mut tracked_file = None;
@@ -130,6 +133,10 @@ fn robot(
     tracked_file: &mut Option<String>,
 ) -> Option<Robot> {
     let attrs = &read.attrs;
+    if let Some(urdf) = &attrs.urdf {
+        return from_urdf::robot_from_urdf(urdf, attrs, fields, errors, tracked_file);
+    }
+    from_urdf::chain_without_urdf(attrs, errors);
     if let Some(file) = &attrs.file {
         for (present, what) in [
             (attrs.gravity.is_some(), "gravity"),

@@ -38,11 +38,12 @@ keys! {
     /// A key of `#[dynamics(...)]`: `gravity = [gx, gy, gz]`, `dh = [[θ, d, a, α], ...]`,
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
-    /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes).
+    /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
+    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
-        Joints = "joints",
+        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip",
     }
 }
 

@@ -1,0 +1,80 @@
+//! The `dynamics` command on URDF files: `--base` and `--tip` choose the chain, errors name
+//! `file:line:col`, and the two options are refused for other description files.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn dynamics(args: &[&str]) -> Output {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("root");
+    Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(args)
+        .current_dir(root)
+        .output()
+        .expect("run dynamics")
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+#[test]
+fn a_urdf_chain_from_base_to_tip() {
+    let out = dynamics(&[
+        "stats",
+        "robots/urdf/ur10.urdf",
+        "--base",
+        "base_link",
+        "--tip",
+        "tool0",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.starts_with("ur10: 6 joints"), "{text}");
+    let out = dynamics(&["stats", "robots/urdf/panda.urdf", "--tip", "panda_link8"]);
+    assert!(
+        String::from_utf8_lossy(&out.stdout).starts_with("panda: 7 joints"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn urdf_errors_name_the_file_line_and_column() {
+    // The Panda's hand has two fingers: without a tip, the chain is not known.
+    let out = dynamics(&["inspect", "robots/urdf/panda.urdf"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains("robots/urdf/panda.urdf:"),
+        "{}",
+        stderr(&out)
+    );
+    assert!(
+        stderr(&out).contains("the robot branches at link `panda_hand`"),
+        "{}",
+        stderr(&out)
+    );
+    let file = "tests/tests/ui/urdf/negative_mass.urdf";
+    let out = dynamics(&["inspect", file]);
+    assert_eq!(out.status.code(), Some(1));
+    let want = format!("dynamics: {file}:15:20: link `fore`: the mass is negative (-1.5)");
+    assert!(stderr(&out).starts_with(&want), "{}", stderr(&out));
+    let out = dynamics(&["inspect", "robots/urdf/ur5.urdf", "--tip", "hand"]);
+    assert!(
+        stderr(&out).contains("no link `hand` for `tip`"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn base_and_tip_are_for_urdf_files() {
+    let out = dynamics(&["inspect", "robots/ur5.toml", "--tip", "tool0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("--base and --tip name links of a URDF file"),
+        "{}",
+        stderr(&out)
+    );
+}

@@ -1,0 +1,78 @@
+//! The derive's `urdf = "..."` (with `base = ".."`, `tip = ".."`): the chain of a URDF file
+//! (relative to the crate's `Cargo.toml`, tracked for rebuilds) read into a robot by
+//! [`super::load_urdf`], then checked as a description file is. Every error goes on the
+//! `urdf = "..."` string, with the file's name, line and column in the message.
+
+use super::attr::Attrs;
+use super::errors::Errors;
+use super::fields::{check_names, Field};
+use super::from_file::{problems, read_relative};
+use super::urdf::{load_urdf, Chain};
+use crate::model::Robot;
+use syn::LitStr;
+
+/// The robot of the URDF file `urdf = "..."` names; `gravity = [..]` replaces its default
+/// `[0, 0, −9.81]` (in the base link's frame).
+pub(super) fn robot_from_urdf(
+    urdf: &LitStr,
+    attrs: &Attrs,
+    fields: &[Field],
+    errors: &mut Errors,
+    tracked: &mut Option<String>,
+) -> Option<Robot> {
+    for (present, what) in [
+        (attrs.file.is_some(), "file"),
+        (attrs.dh.is_some(), "dh"),
+        (!attrs.links.is_empty(), "link"),
+        (attrs.convention.is_some(), "convention"),
+    ] {
+        if present {
+            errors.push(
+                urdf.span(),
+                format!("`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot"),
+            );
+        }
+    }
+    let (relative, text) = read_relative(urdf, errors, tracked)?;
+    let (base, tip) = (
+        attrs.base.as_ref().map(LitStr::value),
+        attrs.tip.as_ref().map(LitStr::value),
+    );
+    let chain = Chain {
+        base: base.as_deref(),
+        tip: tip.as_deref(),
+    };
+    let check_inertia = attrs.check_inertia.unwrap_or(true);
+    let mut loaded = match load_urdf(&relative, &text, chain, check_inertia) {
+        Ok(loaded) => loaded,
+        Err(found) => {
+            for e in found {
+                let sep = if e.line.is_some() { "" } else { " " };
+                errors.push(urdf.span(), format!("{relative}:{sep}{e}"));
+            }
+            return None;
+        }
+    };
+    for message in problems(&loaded, &relative, check_inertia, fields) {
+        errors.push(urdf.span(), message);
+    }
+    if let Some(gravity) = &attrs.gravity {
+        for g in gravity {
+            check_names(g, fields, errors);
+        }
+        loaded.robot.gravity = std::array::from_fn(|i| gravity[i].value.clone());
+    }
+    Some(loaded.robot)
+}
+
+/// `base = ".."` and `tip = ".."` name links of a URDF file: an error on each without `urdf`.
+pub(super) fn chain_without_urdf(attrs: &Attrs, errors: &mut Errors) {
+    for (key, given) in [("base", &attrs.base), ("tip", &attrs.tip)] {
+        if let Some(literal) = given {
+            errors.push(
+                literal.span(),
+                format!("`{key}` names a link of a URDF file: give the file with `urdf = \"robots/arm.urdf\"`"),
+            );
+        }
+    }
+}

@@ -1,0 +1,100 @@
+//! URDF input: `#[dynamics(urdf = "robots/ur10.urdf", base = "base_link", tip = "tool0")]`
+//! and the command line's `ROBOT.urdf --base .. --tip ..`.
+//!
+//! The file is read with `roxmltree`, which keeps every element's position, so that each
+//! error names `file:line:col` (`xml`). The serial chain from the base link to the tip link is
+//! found in the joint tree (`tree`); each moving joint becomes a joint of the robot given by
+//! its frame `P_i · Rot(u_i, q_i)` (`P_i` its `<origin>` after the fixed joints before it,
+//! `u_i` its unit `<axis>`), its link the rigid body of its child link and every link fixed to
+//! it, combined exactly (`inertial`), and its `<dynamics damping friction>` its viscous and
+//! Coulomb friction (`robot`). The robot is then lowered to its own modified D-H table, as
+//! every robot given by joint frames is.
+
+mod inertial;
+mod robot;
+mod tree;
+mod xml;
+
+#[cfg(test)]
+mod tests;
+
+use super::file::Loaded;
+use super::FileError;
+use crate::model::{FrameProblem, Robot};
+
+pub use robot::AXIS_LENGTH_TOLERANCE;
+
+/// A 1-based line and column in the file.
+type At = (usize, usize);
+
+/// Which chain of the URDF to take: the links it starts and ends at, by name.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Chain<'a> {
+    /// The link fixed to the ground; default: the root link.
+    pub base: Option<&'a str>,
+    /// The last link; default: where the moving joints below the base end, if they form one
+    /// chain.
+    pub tip: Option<&'a str>,
+}
+
+/// Reads the chain `chain` of the URDF text of the file `path` as a robot lowered to its D-H
+/// table, with where each joint's values are written. `check_inertia = false` skips the
+/// inertia checks of the links.
+///
+/// # Errors
+/// Every problem found, each at its line and column: malformed XML, an unknown link, a chain
+/// that is not serial, a zero or non-unit axis, a negative mass or friction coefficient, an
+/// inertia a rigid body cannot have.
+pub fn load_urdf(
+    path: &str,
+    text: &str,
+    chain: Chain,
+    check_inertia: bool,
+) -> Result<Loaded, Vec<FileError>> {
+    let doc = xml::read(text)?;
+    let tree = tree::tree(&doc)?;
+    let path_joints = tree.chain(chain.base, chain.tip)?;
+    let stem = std::path::Path::new(path)
+        .file_stem()
+        .and_then(|s| s.to_str());
+    let name = doc
+        .name
+        .clone()
+        .or(stem.map(str::to_string))
+        .unwrap_or_else(|| "robot".into());
+    let (mut robot, positions) = robot::build(&tree, &path_joints, name, check_inertia)?;
+    if robot.joints.is_empty() {
+        let message =
+            "no joint moves between the base and the tip: choose a `tip` further from the base";
+        return Err(vec![xml::error(doc.at, message)]);
+    }
+    lower(&mut robot).map_err(|problems| {
+        problems
+            .into_iter()
+            .map(|p| {
+                let at = positions
+                    .get(p.joint)
+                    .and_then(|keys| keys.get("type"))
+                    .copied();
+                FileError {
+                    message: format!("joint {}: {}", p.joint + 1, p.message),
+                    line: at.map(|a| a.0),
+                    column: at.map(|a| a.1),
+                }
+            })
+            .collect::<Vec<_>>()
+    })?;
+    let dof = robot.dof();
+    Ok(Loaded {
+        robot,
+        check_inertia: vec![check_inertia; dof],
+        positions,
+        gravity: None,
+    })
+}
+
+/// A problem the lowering to D-H found with joint `joint` (0-based).
+/// The robot lowered to its own modified D-H table.
+fn lower(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
+    crate::model::lower_frames(robot)
+}

@@ -1,0 +1,283 @@
+//! The chain as the generator's [`Robot`]: one joint per moving URDF joint, given by its frame
+//! (placement and axis, in the frame of the link before it), its link the rigid body of the
+//! joint's child link and every link fixed to it (`inertial`), and its `<dynamics>` as
+//! friction. Fixed joints before a moving joint fold into its placement.
+
+use super::inertial::Body;
+use super::tree::{Chain, Tree};
+use super::xml::{error, Joint as UrdfJoint, Kind};
+use crate::check;
+use crate::front::{FileError, Positions};
+use crate::model::{
+    AxisFrame, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Value,
+};
+use std::collections::BTreeMap;
+
+/// How far from 1 the length of an axis may be: URDF files write `0.7071068` for 1/√2. Such
+/// an axis is divided by its length, as Pinocchio does.
+pub const AXIS_LENGTH_TOLERANCE: f64 = 1e-6;
+
+/// Where one joint's values are written, by key (`type`, `axis`, `mass`, `inertia`).
+type JointPositions = BTreeMap<String, (usize, usize)>;
+
+/// A moving joint with the links it carries, each with its pose in the joint's child frame.
+struct Segment {
+    joint: usize,
+    placement: Placement,
+    parts: Vec<(usize, Pose)>,
+}
+
+/// The robot of `chain`, gravity `[0, 0, −9.81]`, with where each joint's values are written.
+pub(super) fn build(
+    tree: &Tree,
+    chain: &Chain,
+    name: String,
+    check_inertia: bool,
+) -> Result<(Robot, Positions), Vec<FileError>> {
+    let mut errors = Vec::new();
+    let mut joints = Vec::new();
+    let mut positions = Positions::new();
+    for segment in segments(tree, chain) {
+        errors.extend(link_problems(tree, &segment, check_inertia));
+        match joint(tree, segment) {
+            Ok((joint, at)) => {
+                joints.push(joint);
+                positions.push(at);
+            }
+            Err(e) => errors.extend(e),
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let number =
+        |text| crate::symbolic::Number::parse_decimal(text).map_or_else(Value::zero, Value::num);
+    let robot = Robot {
+        name,
+        convention: Convention::Modified,
+        gravity: [number("0"), number("0"), number("-9.81")],
+        joints,
+        base: Pose::identity(),
+    };
+    Ok((robot, positions))
+}
+
+/// The moving joints of the chain, each with the links fixed to its child link.
+fn segments(tree: &Tree, chain: &Chain) -> Vec<Segment> {
+    let mut segments: Vec<Segment> = Vec::new();
+    // The current path link in the frame of the last moving joint's child (or of the base).
+    let mut pose = Pose::identity();
+    for (k, &j) in chain.joints.iter().enumerate() {
+        let joint = &tree.doc.joints[j];
+        if joint.kind.moves() {
+            segments.push(Segment {
+                joint: j,
+                placement: compose(&pose, &joint.origin),
+                parts: Vec::new(),
+            });
+            pose = Pose::identity();
+        } else {
+            pose = pose.then(&placement_pose(&joint.origin));
+        }
+        if let Some(segment) = segments.last_mut() {
+            let next = chain.joints.get(k + 1).copied();
+            attach(tree, tree.child(j), pose.clone(), next, &mut segment.parts);
+        }
+    }
+    segments
+}
+
+/// Adds `link` at `pose` and every link fixed to it, except through `path_next` (the chain's
+/// next joint) and joints that move or carry a moving joint (past the tip: cut off).
+fn attach(
+    tree: &Tree,
+    link: usize,
+    pose: Pose,
+    path_next: Option<usize>,
+    parts: &mut Vec<(usize, Pose)>,
+) {
+    let mut stack = vec![(link, pose)];
+    while let Some((link, pose)) = stack.pop() {
+        for &j in tree.children(link) {
+            if Some(j) != path_next && !tree.moves(j) {
+                let origin = placement_pose(&tree.doc.joints[j].origin);
+                stack.push((tree.child(j), pose.then(&origin)));
+            }
+        }
+        parts.push((link, pose));
+    }
+}
+
+/// A placement's pose; URDF angles are numbers, so it always has one.
+fn placement_pose(placement: &Placement) -> Pose {
+    placement.pose().unwrap_or_default()
+}
+
+/// `origin` after `pose`, as one placement: exact where `pose` does not turn (the fixed joints
+/// of the test robots), its angles recovered in floating point otherwise.
+fn compose(pose: &Pose, origin: &Placement) -> Placement {
+    let identity = Pose::identity();
+    if pose.rotation == identity.rotation {
+        let xyz = std::array::from_fn(|i| pose.translation[i].clone() + origin.xyz[i].clone());
+        return Placement {
+            xyz,
+            rpy: origin.rpy.clone(),
+        };
+    }
+    let total = pose.then(&placement_pose(origin));
+    Placement {
+        xyz: total.translation.clone(),
+        rpy: rpy_of(&total.rotation),
+    }
+}
+
+/// `[roll, pitch, yaw]` of `R = Rz(yaw) Ry(pitch) Rx(roll)`; roll 0 at pitch ±π/2.
+fn rpy_of(rotation: &[[Value; 3]; 3]) -> [Value; 3] {
+    let r = |i: usize, j: usize| rotation[i][j].eval(&|_| None).unwrap_or_default();
+    let pitch = (-r(2, 0)).atan2(r(0, 0).hypot(r(1, 0)));
+    let (roll, yaw) = if r(0, 0).hypot(r(1, 0)) < 1e-12 {
+        (0.0, (-r(0, 1)).atan2(r(1, 1)))
+    } else {
+        (r(2, 1).atan2(r(2, 2)), r(1, 0).atan2(r(0, 0)))
+    };
+    [roll, pitch, yaw].map(Value::from_f64)
+}
+
+/// The physical problems of every link of `segment`, at the link's `<mass>` or `<inertia>`.
+fn link_problems<'a>(
+    tree: &'a Tree,
+    segment: &'a Segment,
+    check_inertia: bool,
+) -> impl Iterator<Item = FileError> + 'a {
+    segment.parts.iter().flat_map(move |(link, _)| {
+        let link = &tree.doc.links[*link];
+        let problems = link
+            .inertial
+            .as_ref()
+            .map(|i| (i, check::link(&i.mass, &i.inertia, check_inertia)));
+        problems.into_iter().flat_map(move |(inertial, problems)| {
+            problems.into_iter().map(move |p| {
+                let at = match p.parameter {
+                    check::LinkParameter::Mass => inertial.mass_at,
+                    _ => inertial.inertia_at,
+                };
+                // A URDF link has no `check_inertia` of its own: the derive's covers them all.
+                let message = p.message.replace("to this link", "to the derive");
+                error(at, format!("link `{}`: {message}", link.name))
+            })
+        })
+    })
+}
+
+/// The model's joint for `segment`, with where its values are written.
+fn joint(tree: &Tree, segment: Segment) -> Result<(Joint, JointPositions), Vec<FileError>> {
+    let urdf = &tree.doc.joints[segment.joint];
+    let (axis, friction) = (unit_axis(urdf), friction(urdf));
+    let (axis, friction) = match (axis, friction) {
+        (Ok(a), Ok(f)) => (a, f),
+        (a, f) => {
+            return Err(a
+                .err()
+                .into_iter()
+                .chain(f.err().into_iter().flatten())
+                .collect())
+        }
+    };
+    let parts: Vec<Body> = segment
+        .parts
+        .iter()
+        .map(|(link, pose)| Body::part(tree.doc.links[*link].inertial.as_ref(), pose))
+        .collect();
+    let body = Body::combine(&parts);
+    let child = &tree.doc.links[tree.child(segment.joint)];
+    let inertial = child.inertial.as_ref();
+    let at: JointPositions = [
+        ("type", urdf.at),
+        ("axis", urdf.axis_at),
+        ("mass", inertial.map_or(child.at, |i| i.mass_at)),
+        ("inertia", inertial.map_or(child.at, |i| i.inertia_at)),
+    ]
+    .into_iter()
+    .map(|(k, v)| (k.to_string(), v))
+    .collect();
+    let joint = Joint {
+        kind: if urdf.kind == Kind::Prismatic {
+            JointKind::Prismatic
+        } else {
+            JointKind::Revolute
+        },
+        theta: Value::zero(),
+        d: Value::zero(),
+        a: Value::zero(),
+        alpha: Value::zero(),
+        mass: body.mass,
+        com: body.com,
+        inertia: body.inertia,
+        actuator_inertia: Value::zero(),
+        spring: None,
+        friction,
+        frame: Some(AxisFrame {
+            origin: segment.placement,
+            axis,
+        }),
+        link_pose: Pose::identity(),
+    };
+    Ok((joint, at))
+}
+
+/// The joint's axis, a unit vector: a zero axis or one whose length is off 1 is an error.
+fn unit_axis(joint: &UrdfJoint) -> Result<[Value; 3], FileError> {
+    let squares = joint
+        .axis
+        .iter()
+        .fold(Value::zero(), |acc, a| acc + a.clone() * a.clone());
+    let length = squares.eval(&|_| None).unwrap_or_default().sqrt();
+    let written = joint
+        .axis
+        .iter()
+        .map(|a| a.eval(&|_| None).unwrap_or_default().to_string())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let name = &joint.name;
+    if length == 0.0 {
+        return Err(error(joint.axis_at, format!("joint `{name}`: the axis `{written}` is zero: give the direction the joint turns about or slides along, e.g. `0 0 1`")));
+    }
+    if (length - 1.0).abs() > AXIS_LENGTH_TOLERANCE {
+        return Err(error(joint.axis_at, format!("joint `{name}`: the axis `{written}` has length {length}, not 1: write a unit vector")));
+    }
+    if squares.exact().is_some_and(crate::symbolic::Number::is_one) {
+        return Ok(joint.axis.clone());
+    }
+    Ok(std::array::from_fn(|i| {
+        Value::from_f64(joint.axis[i].eval(&|_| None).unwrap_or_default() / length)
+    }))
+}
+
+/// `<dynamics damping friction>` as viscous and Coulomb friction; none when both are zero or
+/// absent. A negative coefficient is an error.
+fn friction(joint: &UrdfJoint) -> Result<Option<Friction>, Vec<FileError>> {
+    let mut errors = Vec::new();
+    let mut coefficient = |entry: &Option<(Value, (usize, usize))>, key: &str| {
+        let (value, at) = entry.clone().unwrap_or_default();
+        if value
+            .exact()
+            .is_some_and(crate::symbolic::Number::is_negative)
+        {
+            errors.push(error(at, format!("joint `{}`: `<dynamics {key}=\"{}\">` is negative: a friction coefficient is 0 or more", joint.name, value.eval(&|_| None).unwrap_or_default())));
+        }
+        value
+    };
+    let viscous = coefficient(&joint.damping, "damping");
+    let coulomb = coefficient(&joint.friction, "friction");
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    Ok(
+        (!viscous.is_zero() || !coulomb.is_zero()).then(|| Friction {
+            viscous,
+            coulomb,
+            offset: Value::zero(),
+            smoothing: None,
+        }),
+    )
+}

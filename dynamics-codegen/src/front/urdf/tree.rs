@@ -1,0 +1,285 @@
+//! The kinematic tree of a URDF and the serial chain in it from the base link to the tip link.
+//!
+//! The chain is the path of joints from `base` (default: the root link) to `tip` (default:
+//! where the moving joints below the base end, if they form one chain). A joint that moves
+//! but is not on the path, hanging off a link from the base up to the link before the tip, is
+//! a branch and refused; so are floating, planar and mimic joints on the path. Below the tip,
+//! what hangs off by fixed joints only is part of the tip's link, and what moves is cut off.
+
+use super::xml::{error, Description, Kind};
+use super::At;
+use crate::front::FileError;
+use std::collections::BTreeMap;
+
+/// The links and joints of a URDF as a tree.
+pub(super) struct Tree<'a> {
+    pub doc: &'a Description,
+    /// Each link's index by name.
+    index: BTreeMap<&'a str, usize>,
+    /// Per link, the joint that has it as child.
+    parent: Vec<Option<usize>>,
+    /// Per link, the joints that have it as parent, in the file's order.
+    children: Vec<Vec<usize>>,
+}
+
+/// The serial chain from base to tip.
+pub(super) struct Chain {
+    /// The base link.
+    pub base: usize,
+    /// The joints from base to tip, fixed ones included.
+    pub joints: Vec<usize>,
+}
+
+/// The tree of `doc`; every link named twice, joint naming an unknown link, or link with two
+/// parents is an error.
+pub(super) fn tree(doc: &Description) -> Result<Tree<'_>, Vec<FileError>> {
+    let mut errors = Vec::new();
+    let mut index = BTreeMap::new();
+    for (i, link) in doc.links.iter().enumerate() {
+        if index.insert(link.name.as_str(), i).is_some() {
+            errors.push(error(
+                link.at,
+                format!("a second link named `{}`", link.name),
+            ));
+        }
+    }
+    let mut parent = vec![None; doc.links.len()];
+    let mut children = vec![Vec::new(); doc.links.len()];
+    for (j, joint) in doc.joints.iter().enumerate() {
+        let (Some(&p), Some(&c)) = (
+            index.get(joint.parent.as_str()),
+            index.get(joint.child.as_str()),
+        ) else {
+            let unknown = [&joint.parent, &joint.child]
+                .into_iter()
+                .find(|l| !index.contains_key(l.as_str()));
+            let unknown = unknown.map_or("", |l| l.as_str());
+            errors.push(error(
+                joint.at,
+                format!(
+                    "joint `{}` names the link `{unknown}`, which the file does not define",
+                    joint.name
+                ),
+            ));
+            continue;
+        };
+        if let Some(first) = parent[c].replace(j) {
+            let first: &str = &doc.joints[first].name;
+            errors.push(error(
+                joint.at,
+                format!(
+                    "link `{}` is the child of joints `{first}` and `{}`: a URDF is a tree",
+                    joint.child, joint.name
+                ),
+            ));
+        }
+        children[p].push(j);
+    }
+    let tree = Tree {
+        doc,
+        index,
+        parent,
+        children,
+    };
+    for link in 0..doc.links.len() {
+        if tree.ancestors(link).is_none() {
+            let at = doc.links[link].at;
+            errors.push(error(
+                at,
+                format!(
+                    "link `{}` is its own ancestor: the joints make a loop, not a tree",
+                    doc.links[link].name
+                ),
+            ));
+            break;
+        }
+    }
+    if errors.is_empty() {
+        Ok(tree)
+    } else {
+        Err(errors)
+    }
+}
+
+impl Tree<'_> {
+    /// The link named `name` (said as `role`, `base` or `tip`).
+    fn find(&self, name: &str, role: &str) -> Result<usize, FileError> {
+        self.index.get(name).copied().ok_or_else(|| {
+            let names: Vec<String> = self
+                .doc
+                .links
+                .iter()
+                .map(|l| format!("`{}`", l.name))
+                .collect();
+            error(
+                self.doc.at,
+                format!(
+                    "no link `{name}` for `{role}`: the links are {}",
+                    names.join(", ")
+                ),
+            )
+        })
+    }
+
+    /// The joints from the root down to `link`, or `None` on a loop.
+    fn ancestors(&self, link: usize) -> Option<Vec<usize>> {
+        let mut joints = Vec::new();
+        let mut at = link;
+        while let Some(j) = self.parent[at] {
+            if joints.len() > self.doc.joints.len() {
+                return None;
+            }
+            joints.push(j);
+            at = self.index[self.doc.joints[j].parent.as_str()];
+        }
+        joints.reverse();
+        Some(joints)
+    }
+
+    /// The child link of joint `joint`.
+    pub fn child(&self, joint: usize) -> usize {
+        self.index[self.doc.joints[joint].child.as_str()]
+    }
+
+    /// The joints that have `link` as parent.
+    pub fn children(&self, link: usize) -> &[usize] {
+        &self.children[link]
+    }
+
+    /// Whether joint `joint` or one below it moves.
+    pub fn moves(&self, joint: usize) -> bool {
+        let mut stack = vec![joint];
+        while let Some(j) = stack.pop() {
+            if self.doc.joints[j].kind.moves() {
+                return true;
+            }
+            stack.extend(&self.children[self.child(j)]);
+        }
+        false
+    }
+
+    /// The chain from `base` (default: the root link) to `tip` (default: the end of the moving
+    /// joints below the base, if they form one chain).
+    pub fn chain(&self, base: Option<&str>, tip: Option<&str>) -> Result<Chain, Vec<FileError>> {
+        let base = match base {
+            Some(name) => self.find(name, "base").map_err(|e| vec![e])?,
+            None => self.root().map_err(|e| vec![e])?,
+        };
+        let tip = match tip {
+            Some(name) => self.find(name, "tip").map_err(|e| vec![e])?,
+            None => self.last_moving(base).map_err(|e| vec![e])?,
+        };
+        let from_root = self.ancestors(tip).unwrap_or_default();
+        let start = from_root
+            .iter()
+            .position(|j| self.doc.joints[*j].parent == self.doc.links[base].name);
+        let joints = match start {
+            Some(start) => from_root[start..].to_vec(),
+            None if base == tip => Vec::new(),
+            None => {
+                let (b, t) = (&self.doc.links[base].name, &self.doc.links[tip].name);
+                return Err(vec![error(
+                    self.doc.links[tip].at,
+                    format!("the tip link `{t}` is not below the base link `{b}`"),
+                )]);
+            }
+        };
+        let chain = Chain { base, joints };
+        let errors: Vec<FileError> = self
+            .path_problems(&chain)
+            .chain(self.branches(&chain))
+            .collect();
+        if errors.is_empty() {
+            Ok(chain)
+        } else {
+            Err(errors)
+        }
+    }
+
+    /// The only link without a parent joint.
+    fn root(&self) -> Result<usize, FileError> {
+        let roots: Vec<usize> = (0..self.doc.links.len())
+            .filter(|l| self.parent[*l].is_none())
+            .collect();
+        match roots[..] {
+            [root] => Ok(root),
+            _ => {
+                let names: Vec<String> = roots
+                    .iter()
+                    .map(|l| format!("`{}`", self.doc.links[*l].name))
+                    .collect();
+                Err(error(
+                    self.doc.at,
+                    format!(
+                        "the robot has {} root links ({}): name the base with `base = \"..\"`",
+                        roots.len(),
+                        names.join(", ")
+                    ),
+                ))
+            }
+        }
+    }
+
+    /// Below `base`, the link where the moving joints end, following the one child that leads
+    /// to a moving joint; an error where two do.
+    fn last_moving(&self, base: usize) -> Result<usize, FileError> {
+        let mut link = base;
+        loop {
+            let moving: Vec<usize> = self.children[link]
+                .iter()
+                .copied()
+                .filter(|j| self.moves(*j))
+                .collect();
+            match moving[..] {
+                [] => return Ok(link),
+                [next] => link = self.child(next),
+                _ => {
+                    let l = &self.doc.links[link];
+                    let names: Vec<String> = moving
+                        .iter()
+                        .map(|j| format!("`{}`", self.doc.joints[*j].name))
+                        .collect();
+                    return Err(error(l.at, format!("the robot branches at link `{}` (joints {}): name the end of the chain with `tip = \"..\"`", l.name, names.join(" and "))));
+                }
+            }
+        }
+    }
+
+    /// The joints on the path that cannot be part of a serial chain.
+    fn path_problems<'c>(&'c self, chain: &'c Chain) -> impl Iterator<Item = FileError> + 'c {
+        chain.joints.iter().filter_map(move |&j| {
+            let joint = &self.doc.joints[j];
+            let name = &joint.name;
+            match (joint.kind, joint.mimic) {
+                (Kind::Floating | Kind::Planar, _) => {
+                    let kind = if joint.kind == Kind::Floating { "floating" } else { "planar" };
+                    Some(error(joint.at, format!("`<joint name=\"{name}\" type=\"{kind}\">`: a {kind} joint moves in more than one direction; a serial chain has revolute, continuous, prismatic and fixed joints")))
+                }
+                (kind, Some(at)) if kind.moves() => Some(mimic_error(at, name)),
+                _ => None,
+            }
+        })
+    }
+
+    /// Joints that move off the path, hanging from the base up to the link before the tip.
+    fn branches<'c>(&'c self, chain: &'c Chain) -> impl Iterator<Item = FileError> + 'c {
+        let path_links =
+            std::iter::once(chain.base).chain(chain.joints.iter().map(|j| self.child(*j)));
+        let before_tip = path_links.take(chain.joints.len());
+        before_tip.flat_map(move |link| {
+            self.children[link].iter().filter_map(move |&j| {
+                if chain.joints.contains(&j) || !self.moves(j) {
+                    return None;
+                }
+                let joint = &self.doc.joints[j];
+                let link = &self.doc.links[link].name;
+                Some(error(joint.at, format!("`<joint name=\"{}\">` branches off the chain at link `{link}` and it, or a joint below it, moves: the chain from base to tip must be serial (choose another `tip`, or make the joint fixed)", joint.name)))
+            })
+        })
+    }
+}
+
+/// The error for a mimic joint at `at`.
+fn mimic_error(at: At, joint: &str) -> FileError {
+    error(at, format!("joint `{joint}` has `<mimic>`: a joint that follows another is not supported; make it fixed or choose a tip before it"))
+}

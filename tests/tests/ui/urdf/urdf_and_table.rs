@@ -1,0 +1,10 @@
+use dynamics_runtime::Dynamics;
+
+#[derive(Dynamics)]
+#[dynamics(
+    urdf = "../../../../tests/tests/ui/urdf/arm.urdf",
+    dh = [[q, 0, 1, 0]],
+)]
+struct Arm;
+
+fn main() {}
