@@ -25,5 +25,5 @@ fn ur5_twin_matches_pinocchio_on_the_urdf() {
 
 #[test]
 fn panda_twin_matches_pinocchio_on_the_urdf() {
-    check(&PandaTwin, "urdf/panda.json", Friction::None);
+    check(&PandaTwin, "urdf/panda.json", Friction::Added);
 }

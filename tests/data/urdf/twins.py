@@ -133,7 +133,8 @@ HEADERS = {
 }
 
 
-def toml(name, desc, worst):
+def toml(name, desc, worst, friction):
+    """The twin as a description file; `friction` is the URDF's (damping, friction) per joint."""
     robot, frames, note = HEADERS[name]
     lines = [
         f"# {robot} from its URDF (robots/urdf/{name}.urdf, example-robot-data 6.0.0), written as a D-H",
@@ -155,19 +156,23 @@ def toml(name, desc, worst):
         lines.append(f"mass = {j['mass']!r}")
         lines.append(f"com = [{', '.join(repr(c) for c in j['com'])}]")
         lines.append(f"inertia = [{', '.join(repr(c) for c in j['inertia'])}]")
+        viscous, coulomb = friction[i]
+        lines += [f"friction_{k} = {v!r}" for k, v in (("viscous", viscous), ("coulomb", coulomb)) if v]
     return "\n".join(lines) + "\n"
 
 
 def main():
     for name, table in (("ur5", UR5_DH), ("panda", panda.DH)):
-        desc = re_expressed(urdf_model(name), table)
+        urdf = urdf_model(name)
+        desc = re_expressed(urdf, table)
+        friction = [(float(v), float(c)) for v, c in zip(urdf.damping, urdf.friction)]
         desc = {"name": f"{name}_urdf_dh",
                 "description": f"{name}.urdf of example-robot-data 6.0.0 as a modified D-H table, link "
                 "inertials re-expressed in the D-H frames (tests/data/urdf/twins.py)",
                 "convention": "modified", **desc}
         worst, samples = compare(name, desc)
         with open(os.path.join(ROOT, "robots", f"{name}_urdf_dh.toml"), "w") as f:
-            f.write(toml(name, desc, worst))
+            f.write(toml(name, desc, worst, friction))
         data = {
             "robot": f"{name}_dh",
             "generator": f"tests/data/urdf/twins.py with pinocchio {pin.__version__}",

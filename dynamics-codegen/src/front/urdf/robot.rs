@@ -88,7 +88,8 @@ fn segments(tree: &Tree, chain: &Chain) -> Vec<Segment> {
 }
 
 /// Adds `link` at `pose` and every link fixed to it, except through `path_next` (the chain's
-/// next joint) and joints that move or carry a moving joint (past the tip: cut off).
+/// next joint) and moving joints: past the tip, a part fixed to the tip link (a hand) is merged
+/// into it and what moves (its fingers) is cut off, as a tool is mounted on a flange.
 fn attach(
     tree: &Tree,
     link: usize,
@@ -99,7 +100,7 @@ fn attach(
     let mut stack = vec![(link, pose)];
     while let Some((link, pose)) = stack.pop() {
         for &j in tree.children(link) {
-            if Some(j) != path_next && !tree.moves(j) {
+            if Some(j) != path_next && !tree.doc.joints[j].kind.moves() {
                 let origin = placement_pose(&tree.doc.joints[j].origin);
                 stack.push((tree.child(j), pose.then(&origin)));
             }

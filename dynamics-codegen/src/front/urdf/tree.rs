@@ -4,7 +4,7 @@
 //! where the moving joints below the base end, if they form one chain). A joint that moves
 //! but is not on the path, hanging off a link from the base up to the link before the tip, is
 //! a branch and refused; so are floating, planar and mimic joints on the path. Below the tip,
-//! what hangs off by fixed joints only is part of the tip's link, and what moves is cut off.
+//! a part fixed to the tip link is merged into it and what moves below it is cut off.
 
 use super::xml::{error, Description, Kind};
 use super::At;

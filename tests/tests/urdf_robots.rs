@@ -77,8 +77,8 @@ fn so101_matches_pinocchio() {
     check(&So101, "urdf/so101.json", Friction::Added);
 }
 
-/// The URDF robot and its twin side by side on the data's states: equal but for friction,
-/// which the twin does not declare.
+/// The URDF robot and its twin (which declares the URDF's friction too) side by side on the
+/// data's states.
 fn matches_twin<R: Dynamics<N>, T: Dynamics<N>, const N: usize>(urdf: &R, twin: &T, file: &str) {
     for (k, s) in samples(file).iter().enumerate() {
         let (q, qd, qdd) = (
@@ -86,13 +86,16 @@ fn matches_twin<R: Dynamics<N>, T: Dynamics<N>, const N: usize>(urdf: &R, twin: 
             vector::<N>(&s["qd"]),
             vector::<N>(&s["qdd"]),
         );
-        let friction = vector::<N>(&s["friction"]);
-        let tau = urdf.inverse_dynamics(&q, &qd, &qdd);
         let pairs = [
             (
-                "tau - friction",
-                (0..N).map(|i| tau[i] - friction[i]).collect(),
+                "tau",
+                urdf.inverse_dynamics(&q, &qd, &qdd).to_vec(),
                 twin.inverse_dynamics(&q, &qd, &qdd).to_vec(),
+            ),
+            (
+                "friction",
+                urdf.friction_torques(&qd).to_vec(),
+                twin.friction_torques(&qd).to_vec(),
             ),
             ("M", flat(urdf.mass_matrix(&q)), flat(twin.mass_matrix(&q))),
             (
