@@ -55,6 +55,7 @@ mod dynamics;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
 mod real;
+pub mod statics;
 mod trig;
 
 pub use crate::dynamics::Dynamics;
