@@ -49,6 +49,7 @@ pub(super) fn robot_from_attrs(
         gravity,
         joints,
         base: Pose::identity(),
+        tool: None,
     }
 }
 

@@ -101,6 +101,8 @@ pub struct Robot {
     pub joints: Vec<Joint>,
     /// D-H frame 0 in the user's base frame (the identity for a robot given by its D-H table).
     pub base: Pose,
+    /// The tool (hand) frame in the user's link frame n, if one is declared.
+    pub tool: Option<Placement>,
 }
 
 impl Robot {

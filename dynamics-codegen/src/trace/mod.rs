@@ -8,6 +8,8 @@
 //! * `τ = M q̈ + C q̇ + g`, `C q̇` and `C q̇ + g` by recursive Newton-Euler, plus actuator inertia
 //!   and springs (`newton_euler`);
 //! * the kinetic and potential energy (`energy`);
+//! * the poses of the link frames and the hand, the hand's Jacobians, `J̇ q̇` and `Jᵀ F`
+//!   (`kinematics`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
 //!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
 //!
@@ -20,6 +22,7 @@ mod cost;
 mod energy;
 mod gravity;
 mod joints;
+mod kinematics;
 mod mass;
 mod newton_euler;
 mod tracer;
@@ -29,6 +32,7 @@ use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
 use cost::matrix_ids;
 use joints::JointTerms;
+pub use kinematics::KinematicEquations;
 use std::cell::RefCell;
 use tracer::Tracer;
 
@@ -64,6 +68,8 @@ pub struct Equations {
     pub kinetic_energy: NodeId,
     /// Potential energy.
     pub potential_energy: NodeId,
+    /// Forward kinematics, Jacobians and statics.
+    pub kinematics: KinematicEquations,
 }
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
@@ -84,6 +90,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let newton_euler = newton_euler::newton_euler(&graph, &chain, gravity, &joints);
     let (kinetic_energy, potential_energy) = energy::energies(&chain, gravity, &joints, half);
     let (christoffel, coriolis) = coriolis::coriolis(&graph, &chain, &mass, &joints.qd, half.id());
+    let kinematics = kinematics::kinematics(&mut tracer, robot, &joints.qd);
     let angle_offsets = tracer.angle_offsets();
     Equations {
         graph: graph.into_inner(),
@@ -100,5 +107,6 @@ pub fn derive(robot: &Robot) -> Equations {
         tau: newton_euler.tau,
         kinetic_energy,
         potential_energy,
+        kinematics,
     }
 }

@@ -204,6 +204,7 @@ pub(super) fn convert(
             gravity,
             joints,
             base: Pose::identity(),
+            tool: None,
         },
         check_inertia,
         positions: Vec::new(),
