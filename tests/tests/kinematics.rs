@@ -161,3 +161,55 @@ fn random_robots() {
 fn panda_in_the_modified_convention() {
     check(&Panda, "panda/robot.json");
 }
+
+/// A 3-joint arm without a tool and the same with `tool = [..]`.
+macro_rules! arm {
+    ($name:ident $(, $tool:tt)?) => {
+        #[derive(Dynamics)]
+        #[dynamics(
+            gravity = [0, 0, -9.81],
+            dh = [[q, 0.3, 0.05, 90 deg], [q + 10 deg, 0, 0.4, 0], [q, 0.1, 0.02, -30 deg]],
+            link(mass = 2), link(mass = 1.5), link(mass = 1),
+            $(tool = $tool)?
+        )]
+        struct $name;
+    };
+}
+
+arm!(Plain);
+arm!(WithTool, [0.1, -0.05, 0.2, 30 deg, -90 deg, 45 deg]);
+
+/// The tool frame is the hand frame followed by `Trans(xyz) Rz(yaw) Ry(pitch) Rx(roll)`
+/// (built here with nalgebra's Euler angles), and its Jacobians those of that point.
+#[test]
+fn a_tool_transform_moves_the_hand_frame() {
+    use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
+    let deg = std::f64::consts::PI / 180.0;
+    let tool = Isometry3::from_parts(
+        Translation3::new(0.1, -0.05, 0.2),
+        UnitQuaternion::from_euler_angles(30.0 * deg, -90.0 * deg, 45.0 * deg),
+    )
+    .to_homogeneous();
+    let mut rng = Rng::new(3);
+    for _ in 0..10 {
+        let q: [f64; 3] = core::array::from_fn(|_| rng.range(-3.0, 3.0));
+        let plain = Matrix4::from_fn(|i, j| Plain.hand_pose(&q).homogeneous()[i][j]);
+        let want = plain * tool;
+        let got = WithTool.hand_pose(&q).homogeneous();
+        assert_close("tool pose", &got.concat(), &entries(&want), TOLERANCE);
+        // The tool's origin moves with v + ω × r, r from the hand's origin to the tool's.
+        let offset = (want - plain).fixed_view::<3, 1>(0, 3).into_owned();
+        let j = Plain.hand_jacobian_in_base(&q);
+        let mut shifted = DMatrix::from_fn(6, 3, |i, c| j[i][c]);
+        for c in 0..3 {
+            let w = Vector3::new(j[3][c], j[4][c], j[5][c]);
+            let v = Vector3::new(j[0][c], j[1][c], j[2][c]) + w.cross(&offset);
+            shifted.fixed_view_mut::<3, 1>(0, c).copy_from(&v);
+        }
+        let got = WithTool.hand_jacobian_in_base(&q);
+        assert_close("tool J", &rows(&got), &reference_rows(&shifted), TOLERANCE);
+        let got = WithTool.hand_jacobian_in_hand(&q);
+        let want = reference_rows(&in_hand(&want, &shifted));
+        assert_close("tool ᴴJ", &rows(&got), &want, TOLERANCE);
+    }
+}

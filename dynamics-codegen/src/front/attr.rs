@@ -43,6 +43,8 @@ pub(super) struct Attrs {
     pub name: Option<LitStr>,
     /// `check_inertia = false` for every link (or every joint of the file).
     pub check_inertia: Option<bool>,
+    /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
+    pub tool: Option<[Spanned; 6]>,
 }
 
 /// What the keys of `#[dynamics(...)]` are called in messages.
@@ -152,6 +154,10 @@ fn parse_attr(
             entry.keep_first(&mut attrs.gravity, gravity);
         }
         Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input)?),
+        Key::Tool => {
+            let (tool, _) = values::<6>(input, "`tool = [x, y, z, roll, pitch, yaw]`")?;
+            entry.keep_first(&mut attrs.tool, tool);
+        }
         Key::Dh => entry.keep_first(&mut attrs.dh, parse_dh(input)?),
         // Read above: a `link(...)` has no `=`.
         Key::Link => {}

@@ -8,7 +8,7 @@ use super::errors::Errors;
 use super::fields::{check_names, Field};
 use super::value::Spanned;
 use crate::check;
-use crate::model::{Convention, Joint, JointKind, Pose, Robot, Spring, Value};
+use crate::model::{Convention, Joint, JointKind, Placement, Pose, Robot, Spring, Value};
 use proc_macro2::Span;
 
 /// The robot the attributes describe; its errors go to `errors`.
@@ -43,13 +43,20 @@ pub(super) fn robot_from_attrs(
                 .collect()
         }
     };
+    let tool = attrs.tool.as_ref().map(|t| {
+        let [x, y, z, roll, pitch, yaw] = reader.values(t);
+        Placement {
+            xyz: [x, y, z],
+            rpy: [roll, pitch, yaw],
+        }
+    });
     Robot {
         name: input.ident.to_string(),
         convention: attrs.convention.map_or(Convention::Standard, |c| c.0),
         gravity,
         joints,
         base: Pose::identity(),
-        tool: None,
+        tool,
     }
 }
 

@@ -37,10 +37,12 @@ macro_rules! keys {
 keys! {
     /// A key of `#[dynamics(...)]`: `gravity = [gx, gy, gz]`, `dh = [[θ, d, a, α], ...]`,
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
-    /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`.
+    /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
+    /// `tool = [x, y, z, roll, pitch, yaw]`.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
+        Tool = "tool",
     }
 }
 

@@ -114,13 +114,20 @@ impl Robot {
 
     /// Every value of the robot, in a fixed order.
     pub fn values(&self) -> impl Iterator<Item = &Value> {
-        self.gravity.iter().chain(self.joints.iter().flat_map(|j| {
-            [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
-                .into_iter()
-                .chain(j.com.iter())
-                .chain(j.inertia.iter())
-                .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
-        }))
+        self.gravity
+            .iter()
+            .chain(self.joints.iter().flat_map(|j| {
+                [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
+                    .into_iter()
+                    .chain(j.com.iter())
+                    .chain(j.inertia.iter())
+                    .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
+            }))
+            .chain(
+                self.tool
+                    .iter()
+                    .flat_map(|t| t.xyz.iter().chain(t.rpy.iter())),
+            )
     }
 
     /// The struct fields that the robot's values name, sorted and without repetition.
