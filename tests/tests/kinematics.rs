@@ -30,6 +30,8 @@ reference_robot!(
 );
 reference_robot!(Ur5, "data/reference/robots/ur5.json");
 reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json");
+reference_robot!(NikuTwoLink, "data/reference/robots/niku_2link.json");
+reference_robot!(Random1, "data/reference/robots/random1.json");
 reference_robot!(Random2, "data/reference/robots/random2.json");
 reference_robot!(Random5, "data/reference/robots/random5.json");
 reference_robot!(Panda, "data/panda/robot.json");
@@ -129,6 +131,74 @@ fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
         let j32 = robot.hand_jacobian_in_base(&q32).map(|r| r.map(f64::from));
         assert_close("J in base, f32", &rows(&j32), &reference_rows(&j), 1e-4);
     }
+}
+
+/// Against Pinocchio 4.1.0 (`data/kinematics/`, made by its `make.py`): the hand's placement,
+/// its Jacobian in `LOCAL_WORLD_ALIGNED` and `LOCAL`, and its classical acceleration at
+/// `q̈ = 0` in both, to 1e-10.
+fn pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) {
+    let path = format!("{}/data/kinematics/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let data: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("data file")).expect("json");
+    let numbers = |v: &serde_json::Value| -> Vec<f64> {
+        let flat = |x: &serde_json::Value| match x.as_array() {
+            Some(row) => row.iter().map(|y| y.as_f64().expect("number")).collect(),
+            None => vec![x.as_f64().expect("number")],
+        };
+        v.as_array().expect("array").iter().flat_map(flat).collect()
+    };
+    let mut worst = 0.0f64;
+    for s in data["samples"].as_array().expect("samples") {
+        let q: [f64; N] = numbers(&s["q"]).try_into().expect("q");
+        let qd: [f64; N] = numbers(&s["qd"]).try_into().expect("qd");
+        let pose = robot.hand_pose(&q);
+        let checks = [
+            ("rotation", pose.rotation.concat(), numbers(&s["rotation"])),
+            (
+                "position",
+                pose.position.to_vec(),
+                numbers(&s["translation"]),
+            ),
+            (
+                "J",
+                rows(&robot.hand_jacobian_in_base(&q)),
+                numbers(&s["jacobian_world_aligned"]),
+            ),
+            (
+                "ᴴJ",
+                rows(&robot.hand_jacobian_in_hand(&q)),
+                numbers(&s["jacobian_local"]),
+            ),
+            (
+                "J̇ q̇",
+                robot.hand_acceleration_bias_in_base(&q, &qd).to_vec(),
+                numbers(&s["bias_world_aligned"]),
+            ),
+            (
+                "J̇ q̇ in hand axes",
+                robot.hand_acceleration_bias_in_hand(&q, &qd).to_vec(),
+                numbers(&s["bias_local"]),
+            ),
+        ];
+        for (what, got, want) in checks {
+            assert_close(&format!("{name}: {what}"), &got, &want, 1e-10);
+            worst = worst.max(scaled_error(&got, &want));
+        }
+    }
+    eprintln!("{name}: worst scaled error against Pinocchio {worst:.1e}");
+}
+
+#[test]
+fn every_reference_robot_matches_pinocchio() {
+    pinocchio(&Puma560, "puma560");
+    pinocchio(&Stanford, "stanford");
+    pinocchio(&Ur5, "ur5");
+    pinocchio(&NikuTwoLink, "niku_2link");
+    pinocchio(&NikuPolar, "niku_polar");
+    pinocchio(&Random1, "random1");
+    pinocchio(&Random2, "random2");
+    pinocchio(&Random5, "random5");
+    pinocchio(&Panda, "panda");
 }
 
 #[test]
