@@ -126,6 +126,25 @@ fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
         let want: Vec<f64> = linear.iter().chain(angular.iter()).copied().collect();
         let got = robot.hand_acceleration_bias_in_hand(&q, &qd);
         assert_close("J̇ q̇ in hand axes", &got, &want, 1e-7);
+        // The linear rows: central differences of the generated hand position; virtual work:
+        // the torques of a wrench do on δq the work the wrench does on J δq.
+        for c in 0..N {
+            let position = |s: f64| {
+                let mut moved = q;
+                moved[c] += s;
+                robot.hand_pose(&moved).position
+            };
+            let (up, down) = (position(h), position(-h));
+            let column: Vec<f64> = (0..3).map(|i| (up[i] - down[i]) / (2.0 * h)).collect();
+            let want: Vec<f64> = (0..3).map(|i| in_base[i][c]).collect();
+            assert_close("J by differences", &column, &want, 1e-8);
+        }
+        let dq: [f64; N] = core::array::from_fn(|_| rng.range(-1.0, 1.0));
+        let joint_work: f64 = (0..N).map(|i| torques[i] * dq[i]).sum();
+        let hand_work: f64 = (0..6)
+            .map(|r| wrench[r] * (0..N).map(|c| in_base[r][c] * dq[c]).sum::<f64>())
+            .sum();
+        assert!((joint_work - hand_work).abs() < 1e-10 * (1.0 + hand_work.abs()));
         // f32: the same code in single precision.
         let q32 = q.map(|x| x as f32);
         let j32 = robot.hand_jacobian_in_base(&q32).map(|r| r.map(f64::from));
