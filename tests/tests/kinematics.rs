@@ -290,10 +290,10 @@ fn a_tool_transform_moves_the_hand_frame() {
         let offset = (want - plain).fixed_view::<3, 1>(0, 3).into_owned();
         let j = Plain.hand_jacobian_in_base(&q);
         let mut shifted = DMatrix::from_fn(6, 3, |i, c| j[i][c]);
-        for c in 0..3 {
-            let w = Vector3::new(j[3][c], j[4][c], j[5][c]);
-            let v = Vector3::new(j[0][c], j[1][c], j[2][c]) + w.cross(&offset);
-            shifted.fixed_view_mut::<3, 1>(0, c).copy_from(&v);
+        for mut column in shifted.column_iter_mut() {
+            let w = Vector3::new(column[3], column[4], column[5]);
+            let v = Vector3::new(column[0], column[1], column[2]) + w.cross(&offset);
+            column.fixed_rows_mut::<3>(0).copy_from(&v);
         }
         let got = WithTool.hand_jacobian_in_base(&q);
         assert_close("tool J", &rows(&got), &reference_rows(&shifted), TOLERANCE);
