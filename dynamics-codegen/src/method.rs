@@ -214,16 +214,16 @@ impl Method {
     /// generated code keeps apart from the dynamics so that neither pays for the other.
     #[must_use]
     pub fn is_kinematic(self) -> bool {
-        !matches!(
+        matches!(
             self,
-            Method::MassMatrix
-                | Method::CoriolisMatrix
-                | Method::CoriolisTorques
-                | Method::GravityTorques
-                | Method::BiasTorques
-                | Method::InverseDynamics
-                | Method::KineticEnergy
-                | Method::PotentialEnergy
+            Method::HandPose
+                | Method::LinkPoses
+                | Method::HandJacobianInBase
+                | Method::HandJacobianInHand
+                | Method::HandAccelerationBiasInBase
+                | Method::HandAccelerationBiasInHand
+                | Method::JointTorquesForHandWrench
+                | Method::JointTorquesForBaseWrench
         )
     }
 
