@@ -1745,6 +1745,887 @@ mod __dynamics {
         p
     }
 }
+/// The generated functions, out of reach of the names around the derive.
+#[allow(
+    non_snake_case,
+    non_camel_case_types,
+    unused_variables,
+    unused_doc_comments,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+mod __kinematics {
+    /// What the dynamics need from the parameters and `q` alone, computed once.
+    pub(super) struct Configuration<T> {
+        s1: T,
+        c1: T,
+        k1: T,
+        s2: T,
+        c2: T,
+        k2: T,
+        c5: T,
+        s6: T,
+        c6: T,
+        jh6_2: T,
+        link3_3_1: T,
+        link3_3_3: T,
+        link4_3_1: T,
+        link4_3_3: T,
+        link5_3_1: T,
+        hand3_3: T,
+        hand3_1: T,
+        link3_1_2: T,
+        link1_2_3: T,
+        jh4_5: T,
+        link2_1_1: T,
+        link2_1_2: T,
+        link2_2_1: T,
+        link2_2_2: T,
+        link2_1_4: T,
+        link2_2_4: T,
+        link2_3_4: T,
+        link3_1_1: T,
+        link3_1_3: T,
+        link3_2_1: T,
+        link3_2_3: T,
+        link3_1_4: T,
+        link3_2_4: T,
+        link3_3_4: T,
+        link4_1_1: T,
+        link4_1_3: T,
+        link4_2_1: T,
+        link4_2_3: T,
+        hand1_4: T,
+        hand2_4: T,
+        hand3_4: T,
+        link5_1_1: T,
+        link5_1_2: T,
+        hand1_3: T,
+        link5_2_1: T,
+        link5_2_2: T,
+        hand2_3: T,
+        link5_3_2: T,
+        hand1_1: T,
+        hand1_2: T,
+        hand2_1: T,
+        hand2_2: T,
+        hand3_2: T,
+        jh4_4: T,
+        u11: T,
+        jh5_4: T,
+        jh5_5: T,
+        u14: T,
+        u15: T,
+        jh4_2: T,
+        jh5_2: T,
+        jh4_1: T,
+        jh5_1: T,
+        jh6_1: T,
+        jb1_1: T,
+        u29: T,
+        u30: T,
+        jb1_2: T,
+        u31: T,
+        jb2_2: T,
+        jb3_2: T,
+        u32: T,
+        u33: T,
+        u34: T,
+        u35: T,
+        jb1_3: T,
+        u36: T,
+        jb2_3: T,
+        jb3_3: T,
+        jh1_1: T,
+        jh2_1: T,
+        jh3_1: T,
+        jh1_2: T,
+        jh2_2: T,
+        jh3_2: T,
+        jh1_3: T,
+        jh2_3: T,
+        jh3_3: T,
+    }
+    #[inline(always)]
+    pub(super) fn configuration<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> Configuration<T> {
+        let k1: T = T::from_f64(0.67183);
+        let k2: T = T::from_f64(0.4318);
+        let k3: T = T::from_f64(0.15005);
+        let k4: T = T::from_f64(0.0203);
+        let k5: T = T::from_f64(-0.4318);
+        let k6: T = T::from_f64(-0.15005);
+        let k7: T = T::from_f64(-0.67183);
+        let ([s1, s2, s3, s4], [c1, c2, c3, c4]) = T::sin_cos_4([
+            q_[0],
+            q_[1],
+            q_[2],
+            q_[3],
+        ]);
+        let ([s5, s6, _, _], [c5, c6, _, _]) = T::sin_cos_4([
+            q_[4],
+            q_[5],
+            T::ONE,
+            T::ONE,
+        ]);
+        let u1 = c4 * s5;
+        /// HJ62, hand frame (rows dx dy dz rx ry rz)
+        let jh6_2 = s4 * s5;
+        /// link 3 pose [R | p], row 3 column 1
+        let link3_3_1 = c2.mul_add(s3, s2 * c3);
+        /// link 3 pose [R | p], row 3 column 3
+        let link3_3_3 = (-s2).mul_add(s3, c2 * c3);
+        /// link 4 pose [R | p], row 3 column 1
+        let link4_3_1 = c4 * link3_3_1;
+        /// link 4 pose [R | p], row 3 column 3
+        let link4_3_3 = s4 * link3_3_1;
+        /// link 5 pose [R | p], row 3 column 1
+        let link5_3_1 = c5.mul_add(link4_3_1, s5 * link3_3_3);
+        /// hand pose [R | p], row 3 column 3
+        let hand3_3 = (-s5).mul_add(link4_3_1, c5 * link3_3_3);
+        /// hand pose [R | p], row 3 column 1
+        let hand3_1 = (-s6).mul_add(link4_3_3, c6 * link5_3_1);
+        let u2 = -c3.mul_add(u1, s3 * c5);
+        let u3 = (-s3).mul_add(u1, c3 * c5);
+        /// link 3 pose [R | p], row 1 column 2
+        let link3_1_2 = -s1;
+        /// link 1 pose [R | p], row 2 column 3
+        let link1_2_3 = -c1;
+        let u4 = k2 * s2;
+        /// HJ45, hand frame (rows dx dy dz rx ry rz)
+        let jh4_5 = -s6;
+        /// link 2 pose [R | p], row 1 column 1
+        let link2_1_1 = c1 * c2;
+        let u5 = c1 * s2;
+        /// link 2 pose [R | p], row 1 column 2
+        let link2_1_2 = -u5;
+        /// link 2 pose [R | p], row 2 column 1
+        let link2_2_1 = s1 * c2;
+        let u6 = s1 * s2;
+        /// link 2 pose [R | p], row 2 column 2
+        let link2_2_2 = -u6;
+        /// link 2 pose [R | p], row 1 column 4
+        let link2_1_4 = k2 * link2_1_1;
+        /// link 2 pose [R | p], row 2 column 4
+        let link2_2_4 = k2 * link2_2_1;
+        /// link 2 pose [R | p], row 3 column 4
+        let link2_3_4 = k1 + u4;
+        /// link 3 pose [R | p], row 1 column 1
+        let link3_1_1 = (-s3).mul_add(u5, c3 * link2_1_1);
+        /// link 3 pose [R | p], row 1 column 3
+        let link3_1_3 = -c3.mul_add(u5, s3 * link2_1_1);
+        /// link 3 pose [R | p], row 2 column 1
+        let link3_2_1 = (-s3).mul_add(u6, c3 * link2_2_1);
+        /// link 3 pose [R | p], row 2 column 3
+        let link3_2_3 = -c3.mul_add(u6, s3 * link2_2_1);
+        let u7 = k3 * s1;
+        let u8 = k6 * c1;
+        /// link 3 pose [R | p], row 1 column 4
+        let link3_1_4 = k4.mul_add(link3_1_1, u7 + link2_1_4);
+        /// link 3 pose [R | p], row 2 column 4
+        let link3_2_4 = k4.mul_add(link3_2_1, u8 + link2_2_4);
+        /// link 3 pose [R | p], row 3 column 4
+        let link3_3_4 = k4.mul_add(link3_3_1, link2_3_4);
+        /// link 4 pose [R | p], row 1 column 1
+        let link4_1_1 = (-s1).mul_add(s4, c4 * link3_1_1);
+        /// link 4 pose [R | p], row 1 column 3
+        let link4_1_3 = s4.mul_add(link3_1_1, s1 * c4);
+        /// link 4 pose [R | p], row 2 column 1
+        let link4_2_1 = c4.mul_add(link3_2_1, c1 * s4);
+        /// link 4 pose [R | p], row 2 column 3
+        let link4_2_3 = (-c1).mul_add(c4, s4 * link3_2_1);
+        /// hand pose [R | p], row 1 column 4
+        let hand1_4 = k2.mul_add(link3_1_3, link3_1_4);
+        /// hand pose [R | p], row 2 column 4
+        let hand2_4 = k2.mul_add(link3_2_3, link3_2_4);
+        /// hand pose [R | p], row 3 column 4
+        let hand3_4 = k2.mul_add(link3_3_3, link3_3_4);
+        /// link 5 pose [R | p], row 1 column 1
+        let link5_1_1 = c5.mul_add(link4_1_1, s5 * link3_1_3);
+        /// link 5 pose [R | p], row 1 column 2
+        let link5_1_2 = -link4_1_3;
+        /// hand pose [R | p], row 1 column 3
+        let hand1_3 = (-s5).mul_add(link4_1_1, c5 * link3_1_3);
+        /// link 5 pose [R | p], row 2 column 1
+        let link5_2_1 = c5.mul_add(link4_2_1, s5 * link3_2_3);
+        /// link 5 pose [R | p], row 2 column 2
+        let link5_2_2 = -link4_2_3;
+        /// hand pose [R | p], row 2 column 3
+        let hand2_3 = (-s5).mul_add(link4_2_1, c5 * link3_2_3);
+        /// link 5 pose [R | p], row 3 column 2
+        let link5_3_2 = -link4_3_3;
+        /// hand pose [R | p], row 1 column 1
+        let hand1_1 = (-s6).mul_add(link4_1_3, c6 * link5_1_1);
+        /// hand pose [R | p], row 1 column 2
+        let hand1_2 = -s6.mul_add(link5_1_1, c6 * link4_1_3);
+        /// hand pose [R | p], row 2 column 1
+        let hand2_1 = (-s6).mul_add(link4_2_3, c6 * link5_2_1);
+        /// hand pose [R | p], row 2 column 2
+        let hand2_2 = -s6.mul_add(link5_2_1, c6 * link4_2_3);
+        /// hand pose [R | p], row 3 column 2
+        let hand3_2 = -s6.mul_add(link5_3_1, c6 * link4_3_3);
+        let u9 = c5 * c6;
+        let u10 = c5 * s6;
+        /// HJ44, hand frame (rows dx dy dz rx ry rz)
+        let jh4_4 = s5 * c6;
+        let u11 = s5 * s6;
+        /// HJ54, hand frame (rows dx dy dz rx ry rz)
+        let jh5_4 = -u11;
+        /// HJ55, hand frame (rows dx dy dz rx ry rz)
+        let jh5_5 = -c6;
+        let u12 = (-s4).mul_add(s6, c4 * u9);
+        let u13 = -c4.mul_add(u10, s4 * c6);
+        let u14 = s4.mul_add(u9, c4 * s6);
+        let u15 = (-s4).mul_add(u10, c4 * c6);
+        let u16 = (-s3).mul_add(jh4_4, c3 * u12);
+        let u17 = c3.mul_add(u13, s3 * u11);
+        let u18 = s3.mul_add(u12, c3 * jh4_4);
+        let u19 = (-c3).mul_add(u11, s3 * u13);
+        /// HJ42, hand frame (rows dx dy dz rx ry rz)
+        let jh4_2 = -u14;
+        /// HJ52, hand frame (rows dx dy dz rx ry rz)
+        let jh5_2 = -u15;
+        let u20 = k5.mul_add(s3, k4 * c3);
+        let u21 = k2.mul_add(c3, k4 * s3);
+        let u22 = (-s2).mul_add(u18, c2 * u16);
+        let u23 = (-s2).mul_add(u19, c2 * u17);
+        let u24 = (-s2).mul_add(u3, c2 * u2);
+        /// HJ41, hand frame (rows dx dy dz rx ry rz)
+        let jh4_1 = c2.mul_add(u18, s2 * u16);
+        /// HJ51, hand frame (rows dx dy dz rx ry rz)
+        let jh5_1 = c2.mul_add(u19, s2 * u17);
+        /// HJ61, hand frame (rows dx dy dz rx ry rz)
+        let jh6_1 = c2.mul_add(u3, s2 * u2);
+        let u25 = (-s2).mul_add(u21, c2.mul_add(u20, k2 * c2));
+        let u26 = c2.mul_add(u21, s2.mul_add(u20, u4));
+        let u27 = c1.mul_add(u25, u7);
+        let u28 = s1.mul_add(u25, u8);
+        /// J11, base frame (rows dx dy dz rx ry rz)
+        let jb1_1 = -hand2_4;
+        let u29 = k7 + hand3_4;
+        let u30 = c1 * u29;
+        /// J12, base frame (rows dx dy dz rx ry rz)
+        let jb1_2 = -u30;
+        let u31 = s1 * u29;
+        /// J22, base frame (rows dx dy dz rx ry rz)
+        let jb2_2 = -u31;
+        /// J32, base frame (rows dx dy dz rx ry rz)
+        let jb3_2 = c1.mul_add(hand1_4, s1 * hand2_4);
+        let u32 = k5.mul_add(link2_1_1, hand1_4);
+        let u33 = k5.mul_add(link2_2_1, hand2_4);
+        let u34 = hand3_4 - link2_3_4;
+        let u35 = c1 * u34;
+        /// J13, base frame (rows dx dy dz rx ry rz)
+        let jb1_3 = -u35;
+        let u36 = s1 * u34;
+        /// J23, base frame (rows dx dy dz rx ry rz)
+        let jb2_3 = -u36;
+        /// J33, base frame (rows dx dy dz rx ry rz)
+        let jb3_3 = c1.mul_add(u32, s1 * u33);
+        /// HJ11, hand frame (rows dx dy dz rx ry rz)
+        let jh1_1 = (-(-s1).mul_add(u14, c1 * u22))
+            .mul_add(u28, s1.mul_add(u22, c1 * u14) * u27);
+        /// HJ21, hand frame (rows dx dy dz rx ry rz)
+        let jh2_1 = (-(-s1).mul_add(u15, c1 * u23))
+            .mul_add(u28, s1.mul_add(u23, c1 * u15) * u27);
+        /// HJ31, hand frame (rows dx dy dz rx ry rz)
+        let jh3_1 = (-c1.mul_add(u24, s1 * jh6_2))
+            .mul_add(u28, (-c1).mul_add(jh6_2, s1 * u24) * u27);
+        /// HJ12, hand frame (rows dx dy dz rx ry rz)
+        let jh1_2 = (-u22).mul_add(u26, jh4_1 * u25);
+        /// HJ22, hand frame (rows dx dy dz rx ry rz)
+        let jh2_2 = (-u23).mul_add(u26, jh5_1 * u25);
+        /// HJ32, hand frame (rows dx dy dz rx ry rz)
+        let jh3_2 = (-u24).mul_add(u26, jh6_1 * u25);
+        /// HJ13, hand frame (rows dx dy dz rx ry rz)
+        let jh1_3 = (-u16).mul_add(u21, u18 * u20);
+        /// HJ23, hand frame (rows dx dy dz rx ry rz)
+        let jh2_3 = (-u17).mul_add(u21, u19 * u20);
+        /// HJ33, hand frame (rows dx dy dz rx ry rz)
+        let jh3_3 = (-u2).mul_add(u21, u3 * u20);
+        Configuration {
+            s1,
+            c1,
+            k1,
+            s2,
+            c2,
+            k2,
+            c5,
+            s6,
+            c6,
+            jh6_2,
+            link3_3_1,
+            link3_3_3,
+            link4_3_1,
+            link4_3_3,
+            link5_3_1,
+            hand3_3,
+            hand3_1,
+            link3_1_2,
+            link1_2_3,
+            jh4_5,
+            link2_1_1,
+            link2_1_2,
+            link2_2_1,
+            link2_2_2,
+            link2_1_4,
+            link2_2_4,
+            link2_3_4,
+            link3_1_1,
+            link3_1_3,
+            link3_2_1,
+            link3_2_3,
+            link3_1_4,
+            link3_2_4,
+            link3_3_4,
+            link4_1_1,
+            link4_1_3,
+            link4_2_1,
+            link4_2_3,
+            hand1_4,
+            hand2_4,
+            hand3_4,
+            link5_1_1,
+            link5_1_2,
+            hand1_3,
+            link5_2_1,
+            link5_2_2,
+            hand2_3,
+            link5_3_2,
+            hand1_1,
+            hand1_2,
+            hand2_1,
+            hand2_2,
+            hand3_2,
+            jh4_4,
+            u11,
+            jh5_4,
+            jh5_5,
+            u14,
+            u15,
+            jh4_2,
+            jh5_2,
+            jh4_1,
+            jh5_1,
+            jh6_1,
+            jb1_1,
+            u29,
+            u30,
+            jb1_2,
+            u31,
+            jb2_2,
+            jb3_2,
+            u32,
+            u33,
+            u34,
+            u35,
+            jb1_3,
+            u36,
+            jb2_3,
+            jb3_3,
+            jh1_1,
+            jh2_1,
+            jh3_1,
+            jh1_2,
+            jh2_2,
+            jh3_2,
+            jh1_3,
+            jh2_3,
+            jh3_3,
+        }
+    }
+    /// What several methods compute from `q̇` too, computed once.
+    pub(super) struct Motion<T> {
+        v24: T,
+        v25: T,
+        v26: T,
+        v33: T,
+        v34: T,
+        v35: T,
+    }
+    #[inline(always)]
+    pub(super) fn motion<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> (Configuration<T>, Motion<T>) {
+        let c_ = configuration(p_, q_);
+        let Configuration {
+            s1,
+            c1,
+            k2,
+            link3_3_3,
+            link4_3_3,
+            hand3_3,
+            link3_1_3,
+            link3_2_3,
+            link4_1_3,
+            link4_2_3,
+            hand1_4,
+            hand2_4,
+            hand1_3,
+            hand2_3,
+            u29,
+            u30,
+            u31,
+            jb3_2,
+            u32,
+            u33,
+            u34,
+            u35,
+            u36,
+            jb3_3,
+            ..
+        } = c_;
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let v1 = qd3 * u35;
+        let v2 = qd3 * u36;
+        let v3 = qd3 * jb3_3;
+        let v4 = qd2.mul_add(jb3_2, v3);
+        let v5 = -qd2.mul_add(u30, qd1.mul_add(hand2_4, v1));
+        let v6 = (-qd2).mul_add(u31, qd1.mul_add(hand1_4, -v2));
+        let v7 = c1 * qd1;
+        let v8 = s1 * qd1;
+        let v9 = s1 * qd2;
+        let v10 = c1 * qd2;
+        let v11 = (-c1).mul_add(v9, s1 * v10);
+        let v12 = u32.mul_add(v10, u33 * v9) + v3;
+        let v13 = s1.mul_add(qd3, v9);
+        let v14 = -c1.mul_add(qd3, v10);
+        let v15 = (-qd1).mul_add(link3_2_3, link3_3_3 * v14);
+        let v16 = (-link3_3_3).mul_add(v13, qd1 * link3_1_3);
+        let v17 = (-link3_1_3).mul_add(v14, link3_2_3 * v13);
+        let v18 = link3_3_3 * v16;
+        let v19 = link3_2_3 * v17;
+        let v20 = link3_1_3 * v17;
+        let v21 = link3_3_3 * v15;
+        let v22 = link3_2_3 * v15;
+        let v23 = link3_1_3 * v16;
+        let v24 = qd3
+            .mul_add(
+                (-c1).mul_add(v12, (-u33).mul_add(v11, u34 * v8)),
+                qd2
+                    .mul_add(
+                        (-c1).mul_add(v4, u29 * v8),
+                        (-qd1).mul_add(v6, k2 * (qd4 * (v18 - v19 + (v19 - v18)))),
+                    ),
+            );
+        let v25 = qd3
+            .mul_add(
+                (-s1).mul_add(v12, (-u34).mul_add(v7, u32 * v11)),
+                qd2
+                    .mul_add(
+                        -s1.mul_add(v4, u29 * v7),
+                        qd1.mul_add(v5, k2 * (qd4 * (v20 - v21 + (v21 - v20)))),
+                    ),
+            );
+        let v26 = qd3
+            .mul_add(
+                c1
+                    .mul_add(
+                        -(v1 + qd1.mul_add(u33, u34 * v10)),
+                        s1
+                            .mul_add(
+                                (-u34).mul_add(v9, qd1 * u32) - v2,
+                                (-u32).mul_add(v8, u33 * v7),
+                            ),
+                    ),
+                qd2
+                    .mul_add(
+                        c1
+                            .mul_add(
+                                v5,
+                                s1.mul_add(v6, (-hand1_4).mul_add(v8, hand2_4 * v7)),
+                            ),
+                        k2 * (qd4 * (v22 - v23 + (v23 - v22))),
+                    ),
+            );
+        let v27 = qd4.mul_add(link3_1_3, v13);
+        let v28 = qd4.mul_add(link3_2_3, v14);
+        let v29 = link3_3_3.mul_add(qd4, qd1);
+        let v30 = qd5.mul_add(link4_1_3, v27);
+        let v31 = qd5.mul_add(link4_2_3, v28);
+        let v32 = qd5.mul_add(link4_3_3, v29);
+        let v33 = qd6
+            .mul_add(
+                (-hand2_3).mul_add(v32, hand3_3 * v31),
+                qd5
+                    .mul_add(
+                        (-link4_2_3).mul_add(v29, link4_3_3 * v28),
+                        qd4.mul_add(v15, qd3.mul_add(v7, qd2 * v7)),
+                    ),
+            );
+        let v34 = qd6
+            .mul_add(
+                (-hand3_3).mul_add(v30, hand1_3 * v32),
+                qd5
+                    .mul_add(
+                        (-link4_3_3).mul_add(v27, link4_1_3 * v29),
+                        qd4.mul_add(v16, qd3.mul_add(v8, qd2 * v8)),
+                    ),
+            );
+        let v35 = qd6
+            .mul_add(
+                (-hand1_3).mul_add(v31, hand2_3 * v30),
+                qd5
+                    .mul_add(
+                        (-link4_1_3).mul_add(v28, link4_2_3 * v27),
+                        qd4.mul_add(v17, qd3 * v11),
+                    ),
+            );
+        (
+            c_,
+            Motion {
+                v24,
+                v25,
+                v26,
+                v33,
+                v34,
+                v35,
+            },
+        )
+    }
+    #[inline(always)]
+    pub(super) fn hand_pose<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> [[T; 4]; 3] {
+        let Configuration {
+            hand3_3,
+            hand3_1,
+            hand1_4,
+            hand2_4,
+            hand3_4,
+            hand1_3,
+            hand2_3,
+            hand1_1,
+            hand1_2,
+            hand2_1,
+            hand2_2,
+            hand3_2,
+            ..
+        } = configuration(p_, q_);
+        [
+            [hand1_1, hand1_2, hand1_3, hand1_4],
+            [hand2_1, hand2_2, hand2_3, hand2_4],
+            [hand3_1, hand3_2, hand3_3, hand3_4],
+        ]
+    }
+    #[inline(always)]
+    pub(super) fn link_poses<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> [[[T; 4]; 3]; 6usize] {
+        let Configuration {
+            s1,
+            c1,
+            k1,
+            s2,
+            c2,
+            link3_3_1,
+            link3_3_3,
+            link4_3_1,
+            link4_3_3,
+            link5_3_1,
+            hand3_3,
+            hand3_1,
+            link3_1_2,
+            link1_2_3,
+            link2_1_1,
+            link2_1_2,
+            link2_2_1,
+            link2_2_2,
+            link2_1_4,
+            link2_2_4,
+            link2_3_4,
+            link3_1_1,
+            link3_1_3,
+            link3_2_1,
+            link3_2_3,
+            link3_1_4,
+            link3_2_4,
+            link3_3_4,
+            link4_1_1,
+            link4_1_3,
+            link4_2_1,
+            link4_2_3,
+            hand1_4,
+            hand2_4,
+            hand3_4,
+            link5_1_1,
+            link5_1_2,
+            hand1_3,
+            link5_2_1,
+            link5_2_2,
+            hand2_3,
+            link5_3_2,
+            hand1_1,
+            hand1_2,
+            hand2_1,
+            hand2_2,
+            hand3_2,
+            ..
+        } = configuration(p_, q_);
+        [
+            [
+                [c1, T::ZERO, s1, T::ZERO],
+                [s1, T::ZERO, link1_2_3, T::ZERO],
+                [T::ZERO, T::ONE, T::ZERO, k1],
+            ],
+            [
+                [link2_1_1, link2_1_2, s1, link2_1_4],
+                [link2_2_1, link2_2_2, link1_2_3, link2_2_4],
+                [s2, c2, T::ZERO, link2_3_4],
+            ],
+            [
+                [link3_1_1, link3_1_2, link3_1_3, link3_1_4],
+                [link3_2_1, c1, link3_2_3, link3_2_4],
+                [link3_3_1, T::ZERO, link3_3_3, link3_3_4],
+            ],
+            [
+                [link4_1_1, link3_1_3, link4_1_3, hand1_4],
+                [link4_2_1, link3_2_3, link4_2_3, hand2_4],
+                [link4_3_1, link3_3_3, link4_3_3, hand3_4],
+            ],
+            [
+                [link5_1_1, link5_1_2, hand1_3, hand1_4],
+                [link5_2_1, link5_2_2, hand2_3, hand2_4],
+                [link5_3_1, link5_3_2, hand3_3, hand3_4],
+            ],
+            [
+                [hand1_1, hand1_2, hand1_3, hand1_4],
+                [hand2_1, hand2_2, hand2_3, hand2_4],
+                [hand3_1, hand3_2, hand3_3, hand3_4],
+            ],
+        ]
+    }
+    #[inline(always)]
+    pub(super) fn hand_jacobian_in_base<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6] {
+        let Configuration {
+            s1,
+            link3_3_3,
+            link4_3_3,
+            hand3_3,
+            link1_2_3,
+            link3_1_3,
+            link3_2_3,
+            link4_1_3,
+            link4_2_3,
+            hand1_4,
+            hand1_3,
+            hand2_3,
+            jb1_1,
+            jb1_2,
+            jb2_2,
+            jb3_2,
+            jb1_3,
+            jb2_3,
+            jb3_3,
+            ..
+        } = configuration(p_, q_);
+        [
+            [jb1_1, jb1_2, jb1_3, T::ZERO, T::ZERO, T::ZERO],
+            [hand1_4, jb2_2, jb2_3, T::ZERO, T::ZERO, T::ZERO],
+            [T::ZERO, jb3_2, jb3_3, T::ZERO, T::ZERO, T::ZERO],
+            [T::ZERO, s1, s1, link3_1_3, link4_1_3, hand1_3],
+            [T::ZERO, link1_2_3, link1_2_3, link3_2_3, link4_2_3, hand2_3],
+            [T::ONE, T::ZERO, T::ZERO, link3_3_3, link4_3_3, hand3_3],
+        ]
+    }
+    #[inline(always)]
+    pub(super) fn hand_jacobian_in_hand<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6] {
+        let Configuration {
+            c5,
+            jh6_2,
+            jh4_5,
+            jh4_4,
+            jh5_4,
+            jh5_5,
+            jh4_2,
+            jh5_2,
+            jh4_1,
+            jh5_1,
+            jh6_1,
+            jh1_1,
+            jh2_1,
+            jh3_1,
+            jh1_2,
+            jh2_2,
+            jh3_2,
+            jh1_3,
+            jh2_3,
+            jh3_3,
+            ..
+        } = configuration(p_, q_);
+        [
+            [jh1_1, jh1_2, jh1_3, T::ZERO, T::ZERO, T::ZERO],
+            [jh2_1, jh2_2, jh2_3, T::ZERO, T::ZERO, T::ZERO],
+            [jh3_1, jh3_2, jh3_3, T::ZERO, T::ZERO, T::ZERO],
+            [jh4_1, jh4_2, jh4_2, jh4_4, jh4_5, T::ZERO],
+            [jh5_1, jh5_2, jh5_2, jh5_4, jh5_5, T::ZERO],
+            [jh6_1, jh6_2, jh6_2, c5, T::ZERO, T::ONE],
+        ]
+    }
+    #[inline(always)]
+    pub(super) fn hand_acceleration_bias_in_base<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6] {
+        let (Configuration { .. }, Motion { v24, v25, v26, v33, v34, v35, .. }) = motion(
+            p_,
+            q_,
+            qd_,
+        );
+        [v24, v25, v26, v33, v34, v35]
+    }
+    #[inline(always)]
+    pub(super) fn hand_acceleration_bias_in_hand<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6] {
+        let (
+            Configuration {
+                hand3_3,
+                hand3_1,
+                hand1_3,
+                hand2_3,
+                hand1_1,
+                hand1_2,
+                hand2_1,
+                hand2_2,
+                hand3_2,
+                ..
+            },
+            Motion { v24, v25, v26, v33, v34, v35, .. },
+        ) = motion(p_, q_, qd_);
+        /// row 1 of J qd' in the hand frame
+        let ah1 = hand3_1.mul_add(v26, hand2_1.mul_add(v25, hand1_1 * v24));
+        /// row 2 of J qd' in the hand frame
+        let ah2 = hand3_2.mul_add(v26, hand2_2.mul_add(v25, hand1_2 * v24));
+        /// row 3 of J qd' in the hand frame
+        let ah3 = hand3_3.mul_add(v26, hand2_3.mul_add(v25, hand1_3 * v24));
+        /// row 4 of J qd' in the hand frame
+        let ah4 = hand3_1.mul_add(v35, hand2_1.mul_add(v34, hand1_1 * v33));
+        /// row 5 of J qd' in the hand frame
+        let ah5 = hand3_2.mul_add(v35, hand2_2.mul_add(v34, hand1_2 * v33));
+        /// row 6 of J qd' in the hand frame
+        let ah6 = hand3_3.mul_add(v35, hand2_3.mul_add(v34, hand1_3 * v33));
+        [ah1, ah2, ah3, ah4, ah5, ah6]
+    }
+    #[inline(always)]
+    pub(super) fn joint_torques_for_hand_wrench<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        wrench_: &[T; 6],
+    ) -> [T; 6usize] {
+        let Configuration {
+            c5,
+            s6,
+            c6,
+            jh6_2,
+            jh4_4,
+            u11,
+            u14,
+            u15,
+            jh4_1,
+            jh5_1,
+            jh6_1,
+            jh1_1,
+            jh2_1,
+            jh3_1,
+            jh1_2,
+            jh2_2,
+            jh3_2,
+            jh1_3,
+            jh2_3,
+            jh3_3,
+            ..
+        } = configuration(p_, q_);
+        let [fx, fy, fz, mx, my, mz] = *wrench_;
+        /// T1 (6.64)
+        let tf1 = jh2_1
+            .mul_add(
+                fy,
+                jh1_1
+                    .mul_add(
+                        fx,
+                        jh3_1
+                            .mul_add(
+                                fz,
+                                jh5_1.mul_add(my, jh4_1.mul_add(mx, jh6_1 * mz)),
+                            ),
+                    ),
+            );
+        let t1 = u14 * mx;
+        let t2 = u15 * my;
+        let t3 = jh6_2 * mz;
+        /// T2 (6.64)
+        let tf2 = jh2_2.mul_add(fy, jh1_2.mul_add(fx, jh3_2.mul_add(fz, t3 - t1 - t2)));
+        /// T3 (6.64)
+        let tf3 = jh2_3.mul_add(fy, jh1_3.mul_add(fx, jh3_3.mul_add(fz, t3 - t1 - t2)));
+        /// T4 (6.64)
+        let tf4 = (-u11).mul_add(my, jh4_4.mul_add(mx, c5 * mz));
+        /// T5 (6.64)
+        let tf5 = -c6.mul_add(my, s6 * mx);
+        [tf1, tf2, tf3, tf4, tf5, mz]
+    }
+    #[inline(always)]
+    pub(super) fn joint_torques_for_base_wrench<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        wrench_: &[T; 6],
+    ) -> [T; 6usize] {
+        let Configuration {
+            s1,
+            c1,
+            link3_3_3,
+            link4_3_3,
+            hand3_3,
+            link3_1_3,
+            link3_2_3,
+            link4_1_3,
+            link4_2_3,
+            hand1_4,
+            hand2_4,
+            hand1_3,
+            hand2_3,
+            u30,
+            u31,
+            jb3_2,
+            u35,
+            u36,
+            jb3_3,
+            ..
+        } = configuration(p_, q_);
+        let [fx, fy, fz, mx, my, mz] = *wrench_;
+        /// T1 (6.64), wrench in base axes
+        let tb1 = (-hand2_4).mul_add(fx, hand1_4.mul_add(fy, mz));
+        let t1 = s1 * mx;
+        let t2 = c1 * my;
+        /// T2 (6.64), wrench in base axes
+        let tb2 = jb3_2.mul_add(fz, (-u31).mul_add(fy, (-u30).mul_add(fx, t1 - t2)));
+        /// T3 (6.64), wrench in base axes
+        let tb3 = jb3_3.mul_add(fz, (-u36).mul_add(fy, (-u35).mul_add(fx, t1 - t2)));
+        /// T4 (6.64), wrench in base axes
+        let tb4 = link3_2_3.mul_add(my, link3_1_3.mul_add(mx, link3_3_3 * mz));
+        /// T5 (6.64), wrench in base axes
+        let tb5 = link4_2_3.mul_add(my, link4_1_3.mul_add(mx, link4_3_3 * mz));
+        /// T6 (6.64), wrench in base axes
+        let tb6 = hand2_3.mul_add(my, hand1_3.mul_add(mx, hand3_3 * mz));
+        [tb1, tb2, tb3, tb4, tb5, tb6]
+    }
+}
 impl Puma560 {
     /// The parameters the equations read, in the order of the description.
     #[doc(hidden)]
@@ -1822,5 +2703,92 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
     #[inline]
     fn potential_energy<T: ::dynamics_runtime::Real>(&self, q_: &[T; 6usize]) -> T {
         __dynamics::potential_energy(&self.__dynamics_parameters(), q_)
+    }
+    /// The hand frame's pose, A1 ⋯ An (and the tool).
+    #[inline]
+    fn hand_pose<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> ::dynamics_runtime::Pose<T> {
+        ::dynamics_runtime::Pose::from_rows(
+            __kinematics::hand_pose(&self.__dynamics_parameters(), q_),
+        )
+    }
+    /// The pose of every link frame, A1 ⋯ Ai.
+    #[inline]
+    fn link_poses<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> [::dynamics_runtime::Pose<T>; 6usize] {
+        __kinematics::link_poses(&self.__dynamics_parameters(), q_)
+            .map(::dynamics_runtime::Pose::from_rows)
+    }
+    /// The hand's Jacobian in the base frame.
+    #[inline]
+    fn hand_jacobian_in_base<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6] {
+        __kinematics::hand_jacobian_in_base(&self.__dynamics_parameters(), q_)
+    }
+    /// The book's ᴴJ, the hand's Jacobian in the hand frame.
+    #[inline]
+    fn hand_jacobian_in_hand<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> [[T; 6usize]; 6] {
+        __kinematics::hand_jacobian_in_hand(&self.__dynamics_parameters(), q_)
+    }
+    /// J̇ q̇ of the hand, in the base frame.
+    #[inline]
+    fn hand_acceleration_bias_in_base<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6] {
+        __kinematics::hand_acceleration_bias_in_base(
+            &self.__dynamics_parameters(),
+            q_,
+            qd_,
+        )
+    }
+    /// J̇ q̇ of the hand, in the hand's axes.
+    #[inline]
+    fn hand_acceleration_bias_in_hand<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+    ) -> [T; 6] {
+        __kinematics::hand_acceleration_bias_in_hand(
+            &self.__dynamics_parameters(),
+            q_,
+            qd_,
+        )
+    }
+    /// T = ᴴJᵀ ᴴF for a wrench in the hand frame.
+    #[inline]
+    fn joint_torques_for_hand_wrench<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        wrench_: &[T; 6],
+    ) -> [T; 6usize] {
+        __kinematics::joint_torques_for_hand_wrench(
+            &self.__dynamics_parameters(),
+            q_,
+            wrench_,
+        )
+    }
+    /// T = Jᵀ F for a wrench in base axes.
+    #[inline]
+    fn joint_torques_for_base_wrench<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        wrench_: &[T; 6],
+    ) -> [T; 6usize] {
+        __kinematics::joint_torques_for_base_wrench(
+            &self.__dynamics_parameters(),
+            q_,
+            wrench_,
+        )
     }
 }

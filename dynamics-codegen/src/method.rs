@@ -11,7 +11,8 @@ use crate::trace::Equations;
 
 include!("methods.rs");
 
-/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]`.
+/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]`, or a wrench
+/// `&[T; 6]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Argument {
     /// Joint positions.
@@ -20,6 +21,8 @@ pub enum Argument {
     Qd,
     /// Joint accelerations.
     Qdd,
+    /// A wrench `[fx, fy, fz, mx, my, mz]`.
+    Wrench,
 }
 
 impl Argument {
@@ -30,6 +33,7 @@ impl Argument {
             Argument::Q => "q",
             Argument::Qd => "qd",
             Argument::Qdd => "qdd",
+            Argument::Wrench => "wrench",
         }
     }
 }
@@ -43,6 +47,14 @@ pub enum Returns {
     Vector,
     /// `T`.
     Scalar,
+    /// `Pose<T>`: a rotation and a position.
+    Pose,
+    /// `[Pose<T>; N]`.
+    Poses,
+    /// `[[T; N]; 6]`: rows `[dx, dy, dz, δx, δy, δz]`, a column per joint.
+    Jacobian,
+    /// `[T; 6]`: a linear and an angular part.
+    Spatial,
 }
 
 /// The `Argument` of a row's argument name.
@@ -56,6 +68,9 @@ macro_rules! argument {
     (qdd) => {
         Argument::Qdd
     };
+    (wrench) => {
+        Argument::Wrench
+    };
 }
 
 /// The `Returns` of a row's result shape.
@@ -68,6 +83,18 @@ macro_rules! returns {
     };
     (scalar) => {
         Returns::Scalar
+    };
+    (pose) => {
+        Returns::Pose
+    };
+    (poses) => {
+        Returns::Poses
+    };
+    (jacobian) => {
+        Returns::Jacobian
+    };
+    (spatial) => {
+        Returns::Spatial
     };
 }
 
@@ -179,6 +206,18 @@ impl Method {
             Method::FrictionTorques => Shape::Vector(&eq.friction),
             Method::KineticEnergy => Shape::Scalar(eq.kinetic_energy),
             Method::PotentialEnergy => Shape::Scalar(eq.potential_energy),
+            Method::HandPose => Shape::Matrix(&eq.kinematics.hand_pose),
+            Method::LinkPoses => Shape::Stack(&eq.kinematics.link_poses),
+            Method::HandJacobianInBase => Shape::Matrix(&eq.kinematics.jacobian_in_base),
+            Method::HandJacobianInHand => Shape::Matrix(&eq.kinematics.jacobian_in_hand),
+            Method::HandAccelerationBiasInBase => Shape::Vector(&eq.kinematics.bias_in_base),
+            Method::HandAccelerationBiasInHand => Shape::Vector(&eq.kinematics.bias_in_hand),
+            Method::JointTorquesForHandWrench => {
+                Shape::Vector(&eq.kinematics.torques_for_hand_wrench)
+            }
+            Method::JointTorquesForBaseWrench => {
+                Shape::Vector(&eq.kinematics.torques_for_base_wrench)
+            }
         }
     }
 
@@ -194,6 +233,23 @@ impl Method {
                 .any(|&id| !eq.graph.is_zero(id))
     }
 
+    /// Whether it is one of the kinematic methods (poses, Jacobians, statics), which the
+    /// generated code keeps apart from the dynamics so that neither pays for the other.
+    #[must_use]
+    pub fn is_kinematic(self) -> bool {
+        matches!(
+            self,
+            Method::HandPose
+                | Method::LinkPoses
+                | Method::HandJacobianInBase
+                | Method::HandJacobianInHand
+                | Method::HandAccelerationBiasInBase
+                | Method::HandAccelerationBiasInHand
+                | Method::JointTorquesForHandWrench
+                | Method::JointTorquesForBaseWrench
+        )
+    }
+
     /// The method called `name`.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Method> {
@@ -205,8 +261,16 @@ impl Method {
     /// text is escaped in tokens.
     #[must_use]
     pub fn describe(self, i: usize, j: usize) -> String {
+        self.describe_in(0, i, j)
+    }
+
+    /// [`Method::describe`] of element `(i, j)` of the `k`-th matrix (from 0) of a stack of
+    /// them (`link_poses`).
+    #[must_use]
+    pub fn describe_in(self, k: usize, i: usize, j: usize) -> String {
         let diagonal = self.returns() == Returns::Matrix && i == j;
         self.element_template(diagonal)
+            .replace("{k}", &(k + 1).to_string())
             .replace("{i}", &(i + 1).to_string())
             .replace("{j}", &(j + 1).to_string())
             .replace("{equation}", self.equation().unwrap_or_default())

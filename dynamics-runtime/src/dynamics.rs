@@ -1,7 +1,7 @@
 //! The trait that `#[derive(Dynamics)]` implements, declared from the method table
 //! (`methods.rs`): `τ = M(q) q̈ + C(q, q̇) q̇ + g(q)` (Niku eq. 6.46) and its parts.
 
-use crate::Real;
+use crate::{Pose, Real};
 
 /// The trait from the method table's rows: one method per row, its arguments `&[T; N]`.
 macro_rules! declare_dynamics {
@@ -29,7 +29,7 @@ macro_rules! declare_dynamics {
             $(
                 trait_method!(
                     $(#[doc = $doc])*
-                    fn $name<T: Real>(&self, $($argument: &[T; N]),*) -> array_result!($result, T, N);
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result, T, N);
                     $($default)?
                 );
             )*
@@ -54,8 +54,32 @@ macro_rules! trait_method {
     };
 }
 
-/// The array type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`.
+/// The type of a method's argument: `&[T; N]` for the joint variables, `&[T; 6]` for a wrench
+/// `[fx, fy, fz, mx, my, mz]`.
+macro_rules! argument_type {
+    (wrench, $t:ty, $n:ident) => {
+        &[$t; 6]
+    };
+    ($joint:ident, $t:ty, $n:ident) => {
+        &[$t; $n]
+    };
+}
+
+/// The type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`; a [`Pose`], one per link,
+/// a Jacobian's six rows `[[T; N]; 6]` or a spatial 6-vector `[T; 6]`.
 macro_rules! array_result {
+    (pose, $t:ty, $n:ident) => {
+        Pose<$t>
+    };
+    (poses, $t:ty, $n:ident) => {
+        [Pose<$t>; $n]
+    };
+    (jacobian, $t:ty, $n:ident) => {
+        [[$t; $n]; 6]
+    };
+    (spatial, $t:ty, $n:ident) => {
+        [$t; 6]
+    };
     (matrix, $t:ty, $n:ident) => {
         [[$t; $n]; $n]
     };

@@ -54,10 +54,13 @@ mod methods;
 mod dynamics;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
+mod pose;
 mod real;
+pub mod statics;
 mod trig;
 
 pub use crate::dynamics::Dynamics;
+pub use crate::pose::Pose;
 pub use crate::real::Real;
 
 #[cfg(feature = "derive")]

@@ -5,8 +5,9 @@
 // (`dynamics.rs`) and its nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads the same
 // file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
 //
-// A row: the method's arguments (among `q`, `qd`, `qdd`), its result (`matrix`, `vector` or
-// `scalar`) and the name of its nalgebra wrapper, then
+// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`), its result (`matrix`,
+// `vector`, `scalar`, `pose`, `poses`, `jacobian` or `spatial`) and the name of its nalgebra
+// wrapper, then
 //
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
@@ -108,6 +109,81 @@ macro_rules! for_each_method {
                 prefix: "p",
                 summary: "The potential energy.",
                 element: "potential energy",
+            }
+            /// The hand frame in the base frame, the book's `A_1 ⋯ A_n` followed by the tool
+            /// transform if the robot declares one: rotation and position
+            /// ([`Pose::homogeneous`](crate::Pose::homogeneous) gives the 4×4 form).
+            fn hand_pose(q) -> pose, nalgebra hand_pose_na {
+                variant: HandPose,
+                equation: None,
+                prefix: "hand",
+                summary: "The hand frame's pose, A1 ⋯ An (and the tool).",
+                element: "hand pose [R | p], row {i} column {j}",
+            }
+            /// The pose of every link frame in the base frame: link i at `A_1 ⋯ A_i`.
+            fn link_poses(q) -> poses, nalgebra link_poses_na {
+                variant: LinkPoses,
+                equation: None,
+                prefix: "link",
+                summary: "The pose of every link frame, A1 ⋯ Ai.",
+                element: "link {k} pose [R | p], row {i} column {j}",
+            }
+            /// The hand's geometric Jacobian in the base frame: rows `[dx, dy, dz, δx, δy, δz]`, the
+            /// velocity of the hand's origin and the hand's angular velocity per joint velocity,
+            /// in base axes.
+            fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na {
+                variant: HandJacobianInBase,
+                equation: None,
+                prefix: "jb",
+                summary: "The hand's Jacobian in the base frame.",
+                element: "J{i}{j}, base frame (rows dx dy dz rx ry rz)",
+            }
+            /// The hand's Jacobian in the hand frame, the book's ᴴJ: rows `[dx, dy, dz, δx, δy, δz]`
+            /// along and about the hand frame's axes.
+            fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na {
+                variant: HandJacobianInHand,
+                equation: None,
+                prefix: "jh",
+                summary: "The book's ᴴJ, the hand's Jacobian in the hand frame.",
+                element: "HJ{i}{j}, hand frame (rows dx dy dz rx ry rz)",
+            }
+            /// `J̇ q̇` of [`hand_jacobian_in_base`](Self::hand_jacobian_in_base): the hand's
+            /// linear and angular acceleration at `qdd = 0`, in base axes.
+            fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
+                variant: HandAccelerationBiasInBase,
+                equation: None,
+                prefix: "ab",
+                summary: "J̇ q̇ of the hand, in the base frame.",
+                element: "row {i} of J qd' in the base frame",
+            }
+            /// The same acceleration as
+            /// [`hand_acceleration_bias_in_base`](Self::hand_acceleration_bias_in_base) in the hand's
+            /// axes (Pinocchio's classical acceleration in `LOCAL`; not `d(ᴴJ)/dt q̇`, which also
+            /// has the terms of the hand frame's own turning).
+            fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {
+                variant: HandAccelerationBiasInHand,
+                equation: None,
+                prefix: "ah",
+                summary: "J̇ q̇ of the hand, in the hand's axes.",
+                element: "row {i} of J qd' in the hand frame",
+            }
+            /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]` given in the
+            /// hand frame, `T = ᴴJᵀ ᴴF` (eq. 6.64).
+            fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na {
+                variant: JointTorquesForHandWrench,
+                equation: Some("6.64"),
+                prefix: "tf",
+                summary: "T = ᴴJᵀ ᴴF for a wrench in the hand frame.",
+                element: "T{i} ({equation})",
+            }
+            /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]` given in base
+            /// axes, its moment about the hand's origin: `T = Jᵀ F` with the base-frame Jacobian.
+            fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na {
+                variant: JointTorquesForBaseWrench,
+                equation: Some("6.64"),
+                prefix: "tb",
+                summary: "T = Jᵀ F for a wrench in base axes.",
+                element: "T{i} ({equation}), wrench in base axes",
             }
         }
     };

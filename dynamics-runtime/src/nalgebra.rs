@@ -2,10 +2,13 @@
 //!
 //! The [`Dynamics`] methods take and return plain arrays; [`DynamicsNalgebra`] wraps each of
 //! them (from the method table, `methods.rs`) for `SVector` and `SMatrix`, at no cost beyond a
-//! copy. A scalar result stays `T`.
+//! copy. A scalar result stays `T`; a pose becomes an `Isometry3`, a Jacobian an
+//! `SMatrix<T, 6, N>`.
 
-use crate::{Dynamics, Real};
-use nalgebra::{SMatrix, SVector, Scalar};
+use crate::{Dynamics, Pose, Real};
+use nalgebra::{
+    Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
+};
 
 /// The trait from the method table's rows: one `_na` wrapper per method.
 macro_rules! declare_nalgebra {
@@ -17,9 +20,9 @@ macro_rules! declare_nalgebra {
         pub trait DynamicsNalgebra<const N: usize>: Dynamics<N> {
             $(
                 #[doc = concat!("[`Dynamics::", stringify!($name), "`] with nalgebra types.")]
-                fn $wrapper<T: Real + Scalar>(
+                fn $wrapper<T: Real + RealField>(
                     &self,
-                    $($argument: &SVector<T, N>),*
+                    $($argument: nalgebra_argument!($argument, T, N)),*
                 ) -> nalgebra_result!($result, T, N) {
                     nalgebra_result!($result, self.$name($(&array($argument)),*))
                 }
@@ -28,33 +31,58 @@ macro_rules! declare_nalgebra {
     };
 }
 
+/// A method's argument as nalgebra gives it: a wrench is an `SVector<T, 6>`, the joint
+/// variables an `SVector<T, N>`.
+macro_rules! nalgebra_argument {
+    (wrench, $t:ty, $n:ident) => { &SVector<$t, 6> };
+    ($joint:ident, $t:ty, $n:ident) => { &SVector<$t, $n> };
+}
+
 /// A method's result as nalgebra returns it: its type (`$result, T, N`), or the conversion of
 /// an array result (`$result, value`).
 macro_rules! nalgebra_result {
     (matrix, $t:ty, $n:ident) => { SMatrix<$t, $n, $n> };
     (vector, $t:ty, $n:ident) => { SVector<$t, $n> };
     (scalar, $t:ty, $n:ident) => { $t };
+    (pose, $t:ty, $n:ident) => { Isometry3<$t> };
+    (poses, $t:ty, $n:ident) => { [Isometry3<$t>; $n] };
+    (jacobian, $t:ty, $n:ident) => { SMatrix<$t, 6, $n> };
+    (spatial, $t:ty, $n:ident) => { SVector<$t, 6> };
     (matrix, $value:expr) => { matrix(&$value) };
     (vector, $value:expr) => { SVector::from($value) };
     (scalar, $value:expr) => { $value };
+    (pose, $value:expr) => { isometry(&$value) };
+    (poses, $value:expr) => { $value.map(|p| isometry(&p)) };
+    (jacobian, $value:expr) => { SMatrix::from_fn(|i, j| $value[i][j]) };
+    (spatial, $value:expr) => { SVector::from($value) };
 }
 
 for_each_method!(declare_nalgebra);
 
 impl<R: Dynamics<N> + ?Sized, const N: usize> DynamicsNalgebra<N> for R {}
 
-fn array<T: Real + Scalar, const N: usize>(v: &SVector<T, N>) -> [T; N] {
+fn array<T: Real + RealField, const N: usize>(v: &SVector<T, N>) -> [T; N] {
     core::array::from_fn(|i| v[i])
 }
 
-fn matrix<T: Real + Scalar, const N: usize>(m: &[[T; N]; N]) -> SMatrix<T, N, N> {
+fn matrix<T: Real + RealField, const N: usize>(m: &[[T; N]; N]) -> SMatrix<T, N, N> {
     SMatrix::from_fn(|i, j| m[i][j])
+}
+
+/// A pose as an isometry; the rotation matrix is taken as orthonormal.
+fn isometry<T: Real + RealField>(pose: &Pose<T>) -> Isometry3<T> {
+    let [x, y, z] = pose.position;
+    let r = Rotation3::from_matrix_unchecked(Matrix3::from_fn(|i, j| pose.rotation[i][j]));
+    Isometry3::from_parts(
+        Translation3::new(x, y, z),
+        UnitQuaternion::from_rotation_matrix(&r),
+    )
 }
 
 #[cfg(test)]
 mod tests {
     use super::DynamicsNalgebra;
-    use crate::{Dynamics, Real};
+    use crate::{Dynamics, Pose, Real};
     use nalgebra::{SMatrix, SVector};
 
     /// A "robot" whose every method returns its first argument's sum, in every element.
@@ -89,6 +117,39 @@ mod tests {
         fn potential_energy<T: Real>(&self, q: &[T; 2]) -> T {
             sum(q)
         }
+        fn hand_pose<T: Real>(&self, q: &[T; 2]) -> Pose<T> {
+            turn(sum(q))
+        }
+        fn link_poses<T: Real>(&self, q: &[T; 2]) -> [Pose<T>; 2] {
+            [turn(sum(q)); 2]
+        }
+        fn hand_jacobian_in_base<T: Real>(&self, q: &[T; 2]) -> [[T; 2]; 6] {
+            [[sum(q); 2]; 6]
+        }
+        fn hand_jacobian_in_hand<T: Real>(&self, q: &[T; 2]) -> [[T; 2]; 6] {
+            [[sum(q); 2]; 6]
+        }
+        fn hand_acceleration_bias_in_base<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> [T; 6] {
+            [sum(q); 6]
+        }
+        fn hand_acceleration_bias_in_hand<T: Real>(&self, q: &[T; 2], _: &[T; 2]) -> [T; 6] {
+            [sum(q); 6]
+        }
+        fn joint_torques_for_hand_wrench<T: Real>(&self, q: &[T; 2], _: &[T; 6]) -> [T; 2] {
+            [sum(q); 2]
+        }
+        fn joint_torques_for_base_wrench<T: Real>(&self, q: &[T; 2], _: &[T; 6]) -> [T; 2] {
+            [sum(q); 2]
+        }
+    }
+
+    /// A quarter turn about z, placed at `(x, 0, 0)`.
+    fn turn<T: Real>(x: T) -> Pose<T> {
+        let (o, l) = (T::ZERO, T::ONE);
+        Pose {
+            rotation: [[o, -l, o], [l, o, o], [o, o, l]],
+            position: [x, o, o],
+        }
     }
 
     #[test]
@@ -106,5 +167,22 @@ mod tests {
         assert_eq!(Sums.inverse_dynamics_na(&q, &z, &z), v);
         assert_eq!(Sums.kinetic_energy_na(&q, &z), 3.0);
         assert_eq!(Sums.potential_energy_na(&q), 3.0);
+        let w = SVector::<f64, 6>::zeros();
+        let (j, s) = (
+            SMatrix::<f64, 6, 2>::repeat(3.0),
+            SVector::<f64, 6>::repeat(3.0),
+        );
+        assert_eq!(Sums.hand_jacobian_in_base_na(&q), j);
+        assert_eq!(Sums.hand_jacobian_in_hand_na(&q), j);
+        assert_eq!(Sums.hand_acceleration_bias_in_base_na(&q, &z), s);
+        assert_eq!(Sums.hand_acceleration_bias_in_hand_na(&q, &z), s);
+        assert_eq!(Sums.joint_torques_for_hand_wrench_na(&q, &w), v);
+        assert_eq!(Sums.joint_torques_for_base_wrench_na(&q, &w), v);
+        let point = nalgebra::Point3::new(1.0, 0.0, 0.0);
+        let moved = nalgebra::Point3::new(3.0, 1.0, 0.0);
+        assert!((Sums.hand_pose_na(&q) * point - moved).norm() < 1e-15);
+        for pose in Sums.link_poses_na(&q) {
+            assert!((pose * point - moved).norm() < 1e-15);
+        }
     }
 }

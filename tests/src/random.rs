@@ -104,6 +104,7 @@ impl RobotSpec {
                 })
                 .collect(),
             base: model::Pose::identity(),
+            tool: None,
         }
     }
 

@@ -8,7 +8,8 @@
 //!
 //! The UR5 and the Panda also match their D-H twins (`robots/<robot>_urdf_dh.toml`, by
 //! `twins.py`, checked against the same data by `urdf_twins.rs`) sample by sample, and each
-//! generated method of the URDF robot takes at most 5 % more operations than the twin's.
+//! generated dynamics method of the URDF robot takes at most 5 % more operations than the
+//! twin's. The hand frame (the tip link) and its Jacobian match Pinocchio's too.
 
 use dynamics_codegen::{derive, front, generate};
 use dynamics_reference::scaled_error;
@@ -144,7 +145,9 @@ fn panda_matches_its_dh_twin() {
     matches_twin(&Panda, &PandaTwin, "urdf/panda.json");
 }
 
-/// Operations per generated method (`dynamics stats`' flops) of the robot of `attribute`.
+/// Operations per generated dynamics method (`dynamics stats`' flops) of the robot of
+/// `attribute`. The kinematic methods are left out: the URDF robot's hand is its tip link
+/// (`tool0`, `panda_link8`), a tool transform after the D-H twin's last frame.
 fn flops(attribute: &str, name: &str) -> Vec<(&'static str, usize)> {
     let source = format!("#[dynamics({attribute})] struct {name};");
     let input = front::parse_str(&source).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -152,6 +155,7 @@ fn flops(attribute: &str, name: &str) -> Vec<(&'static str, usize)> {
     generated
         .methods
         .iter()
+        .filter(|m| !m.method.is_kinematic())
         .map(|m| (m.name, m.ops.flops()))
         .collect()
 }
@@ -187,4 +191,40 @@ fn panda_costs_what_its_twin_costs() {
         r#"urdf = "../robots/urdf/panda.urdf", base = "panda_link0", tip = "panda_link8""#,
         r#"file = "../robots/panda_urdf_dh.toml""#,
     );
+}
+
+/// The hand frame of a URDF robot is its tip link (`tool0` on the UR robots, a fixed frame
+/// after the last joint): its pose and its Jacobian in base axes against Pinocchio's
+/// (`ee_pose`, `jacobian` rows `[v; ω]` of the data) on every sample.
+fn hand_matches_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
+    for (k, s) in samples(file).iter().enumerate() {
+        let q = vector::<N>(&s["q"]);
+        let pose = robot.hand_pose(&q).homogeneous();
+        let want_pose: Vec<f64> = (0..4)
+            .flat_map(|i| (0..4).map(move |j| (i, j)))
+            .map(|(i, j)| s["ee_pose"][i][j].as_f64().unwrap())
+            .collect();
+        let e = scaled_error(&flat(pose), &want_pose);
+        assert!(e < TOLERANCE, "{file} sample {k}: hand pose off by {e:e}");
+        let jacobian = robot.hand_jacobian_in_base(&q);
+        let want: Vec<f64> = (0..6)
+            .flat_map(|i| (0..N).map(move |j| (i, j)))
+            .map(|(i, j)| s["jacobian"][i][j].as_f64().unwrap())
+            .collect();
+        let got: Vec<f64> = jacobian.iter().flatten().copied().collect();
+        let e = scaled_error(&got, &want);
+        assert!(
+            e < TOLERANCE,
+            "{file} sample {k}: hand Jacobian off by {e:e}"
+        );
+    }
+}
+
+#[test]
+fn hands_match_pinocchio() {
+    hand_matches_pinocchio(&Ur5, "urdf/ur5.json");
+    hand_matches_pinocchio(&Ur10, "urdf/ur10.json");
+    hand_matches_pinocchio(&Panda, "urdf/panda.json");
+    hand_matches_pinocchio(&Z1, "urdf/z1.json");
+    hand_matches_pinocchio(&So101, "urdf/so101.json");
 }

@@ -91,6 +91,8 @@ fn evaluate(eq: &Equations, params: &[f64], q: &[f64], qd: &[f64], qdd: &[f64]) 
             Var::Qd(i) => qd[usize::from(i)],
             Var::Qdd(i) => qdd[usize::from(i)],
             Var::Param(k) => params[usize::from(k)],
+            // No wrench is given: the statics print the torques of a zero wrench.
+            Var::Wrench(_) => 0.0,
         }
     };
     // The angle offsets depend on parameters only: a first pass finds them.

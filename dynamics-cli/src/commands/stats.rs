@@ -40,20 +40,22 @@ pub fn run(args: &RobotFile) -> Result<String, Failure> {
 /// The table: per method its operations, depth and bytes; the shared code's bytes; the total.
 fn methods(generated: &Generated) -> String {
     let mut out = format!(
-        "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}\n",
+        "{:<30} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}\n",
         "method", "mul", "add", "neg", "div", "trig", "flops", "depth", "bytes"
     );
     let mut total = 0;
     for (name, shared) in [
         ("(configuration)", &generated.configuration),
         ("(motion)", &generated.motion),
+        ("(kinematic configuration)", &generated.kinematic.0),
+        ("(kinematic motion)", &generated.kinematic.1),
     ] {
         if let Some(c) = shared {
             let bytes = c.tokens.to_string().len();
             total += bytes;
             let _ = writeln!(
                 out,
-                "{:<18} {:>49} {:>9}",
+                "{:<30} {:>49} {:>9}",
                 name, "computed once, counted below", bytes
             );
         }
@@ -64,7 +66,7 @@ fn methods(generated: &Generated) -> String {
         let o = m.ops;
         let _ = writeln!(
             out,
-            "{:<18} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}",
+            "{:<30} {:>6} {:>6} {:>5} {:>5} {:>5} {:>7} {:>6} {:>9}",
             m.name,
             o.mul,
             o.add,

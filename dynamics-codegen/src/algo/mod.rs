@@ -11,6 +11,7 @@ mod coriolis;
 mod crba;
 mod energy;
 mod gravity;
+mod kinematics;
 mod regroup;
 mod rnea;
 mod robot;
@@ -24,6 +25,10 @@ pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
 pub use gravity::gravity_torques;
+pub use kinematics::{
+    acceleration_bias_in_base, in_hand_axes, jacobian_in_base, jacobian_in_hand, joint_torques,
+    kinematics, Frame, Jacobian, Kinematics,
+};
 pub use rnea::rnea;
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;

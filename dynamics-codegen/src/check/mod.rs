@@ -98,6 +98,7 @@ mod tests {
             gravity: Default::default(),
             joints: masses.iter().map(|m| joint(*m)).collect(),
             base: Pose::identity(),
+            tool: None,
         }
     }
 

@@ -70,22 +70,29 @@ impl Emitter<'_> {
                     v.iter().map(|&id| self.expr(id, Place::Top)).collect();
                 quote!([#(#items),*])
             }
-            Shape::Matrix(m) => {
-                let rows: Vec<TokenStream> = m
-                    .iter()
-                    .map(|r| {
-                        let items: Vec<TokenStream> =
-                            r.iter().map(|&id| self.expr(id, Place::Top)).collect();
-                        quote!([#(#items),*])
-                    })
-                    .collect();
-                quote!([#(#rows),*])
+            Shape::Matrix(m) => self.matrix(m),
+            Shape::Stack(s) => {
+                let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
+                quote!([#(#matrices),*])
             }
         };
         Body {
             tokens: quote!(#(#statements)* #result),
             ops: count(self.eq, &outputs),
         }
+    }
+
+    /// The array of arrays of matrix `m`'s rows.
+    fn matrix(&mut self, m: &[Vec<NodeId>]) -> TokenStream {
+        let rows: Vec<TokenStream> = m
+            .iter()
+            .map(|r| {
+                let items: Vec<TokenStream> =
+                    r.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                quote!([#(#items),*])
+            })
+            .collect();
+        quote!([#(#rows),*])
     }
 
     /// A new temporary, `t3` (`u3`, `v3` in the shared functions).

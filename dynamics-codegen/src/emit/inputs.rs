@@ -4,16 +4,22 @@
 use super::emitter::Emitter;
 use super::expr::Place;
 use super::local;
-use crate::symbolic::{Node, Var};
+use crate::symbolic::{Node, Var, WRENCH};
 use proc_macro2::TokenStream;
 use quote::quote;
 
 impl Emitter<'_> {
     /// `let [qd1, _, qd3] = *qd_;`: the joint positions, velocities and accelerations the
-    /// marked nodes read, named as the book numbers them.
+    /// marked nodes read, named as the book numbers them, and the wrench's components
+    /// (`let [_, _, fz, ..] = *wrench_;`).
     pub(super) fn joint_variables(&self) -> Vec<TokenStream> {
         let n = self.eq.dof;
-        let mut used = [vec![false; n], vec![false; n], vec![false; n]];
+        let mut used = [
+            vec![false; n],
+            vec![false; n],
+            vec![false; n],
+            vec![false; 6],
+        ];
         for (id, node) in self.graph.nodes() {
             if !self.needed[id.index()] {
                 continue;
@@ -22,18 +28,22 @@ impl Emitter<'_> {
                 Node::Var(Var::Q(i)) => used[0][usize::from(i)] = true,
                 Node::Var(Var::Qd(i)) => used[1][usize::from(i)] = true,
                 Node::Var(Var::Qdd(i)) => used[2][usize::from(i)] = true,
+                Node::Var(Var::Wrench(k)) => used[3][usize::from(k)] = true,
                 _ => {}
             }
         }
-        ["q", "qd", "qdd"]
+        ["q", "qd", "qdd", "wrench"]
             .iter()
             .zip(used)
             .filter(|(_, used)| used.contains(&true))
-            .map(|(name, used)| {
+            .map(|(&name, used)| {
                 let array = local(&format!("{name}_"));
                 let names = used.iter().enumerate().map(|(i, &u)| {
                     if u {
-                        let v = local(&format!("{name}{}", i + 1));
+                        let v = local(&match name {
+                            "wrench" => WRENCH[i].to_owned(),
+                            _ => format!("{name}{}", i + 1),
+                        });
                         quote!(#v)
                     } else {
                         quote!(_)

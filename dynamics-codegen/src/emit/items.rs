@@ -27,16 +27,22 @@ pub struct Generated {
     pub dof: usize,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
-    /// The configuration function's struct fields and body, if any method reads it.
+    /// The dynamics' configuration function's struct fields and body, if any method reads it.
     pub configuration: Option<Shared>,
-    /// The motion function's struct fields and body, if two methods share terms in `q̇`.
+    /// The dynamics' motion function's struct fields and body, if two methods share terms in
+    /// `q̇`.
     pub motion: Option<Shared>,
+    /// The shared functions of the kinematic methods ([`Method::is_kinematic`]), emitted
+    /// apart: code that calls only the dynamics does not inline the kinematics, nor the reverse.
+    pub kinematic: (Option<Shared>, Option<Shared>),
     /// The methods, in the trait's order.
     pub methods: Vec<MethodCode>,
 }
 
-/// Name of the module holding the generated functions.
+/// Name of the module holding the generated functions of the dynamics.
 const MODULE: &str = "__dynamics";
+/// Name of the module holding those of the kinematic methods.
+const KINEMATIC_MODULE: &str = "__kinematics";
 /// Name of the hidden inherent method reading the robot's parameters.
 const PARAMETERS_FN: &str = "__dynamics_parameters";
 
@@ -47,36 +53,41 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     let ctx = Context {
         parameters: local(PARAMETERS),
     };
-    // A method the trait gives a body of zeros (friction) only where the robot has the term,
-    // so that the code of a robot without it is what it always was.
-    let methods: Vec<Method> = Method::ALL
-        .iter()
-        .copied()
-        .filter(|m| m.is_generated(eq))
-        .collect();
-    let outputs: Vec<Output> = methods
-        .iter()
-        .map(|&method| Output {
-            method,
-            shape: method.shape(eq),
-        })
-        .collect();
-    let emission = emit(eq, &outputs, &ctx);
-    let methods = methods
-        .iter()
-        .zip(emission.bodies)
+    let group = |kinematic: bool| {
+        // A method the trait gives a body of zeros (friction) only where the robot has the
+        // term, so that the code of a robot without it is what it always was.
+        let methods: Vec<Method> = Method::ALL
+            .iter()
+            .copied()
+            .filter(|m| m.is_kinematic() == kinematic && m.is_generated(eq))
+            .collect();
+        let outputs: Vec<Output> = methods
+            .iter()
+            .map(|&method| Output {
+                method,
+                shape: method.shape(eq),
+            })
+            .collect();
+        (methods, emit(eq, &outputs, &ctx))
+    };
+    let (dynamics, kinematics) = (group(false), group(true));
+    let mut methods: Vec<MethodCode> = [&dynamics, &kinematics]
+        .into_iter()
+        .flat_map(|(methods, emission)| methods.iter().zip(&emission.bodies))
         .map(|(&method, b)| MethodCode {
             method,
             name: method.name(),
-            body: b.tokens,
+            body: b.tokens.clone(),
             ops: b.ops,
         })
         .collect();
+    methods.sort_by_key(|m| m.method);
     Generated {
         dof: eq.dof,
         fields,
-        configuration: emission.configuration,
-        motion: emission.motion,
+        configuration: dynamics.1.configuration,
+        motion: dynamics.1.motion,
+        kinematic: (kinematics.1.configuration, kinematics.1.motion),
         methods,
     }
 }
@@ -88,6 +99,7 @@ impl Generated {
     ///   per method, which take the parameters as an array `p_: &[T; K]`. A module sees none of
     ///   the items around it, so no user constant can collide with a generated local (`let`
     ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
+    ///   a module `__kinematics`, the same for the kinematic methods;
     /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
     ///   array (every field the description names, so none is left unread);
     /// * the `Dynamics` impl, each method one call into the module.
@@ -105,30 +117,20 @@ impl Generated {
         let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
-        let module = Ident::new(MODULE, Span::call_site());
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
-        let configuration = self.configuration_item(krate);
-        let motion = self.motion_item(krate);
-        let p = local(PARAMETERS);
-        let bodies = self.methods.iter().map(|m| {
-            let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n, &Ident::new("T", Span::call_site()));
-            let body = &m.body;
-            quote! {
-                #[inline(always)]
-                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
-                    #body
-                }
-            }
-        });
+        let dynamics = self.module(krate, false);
+        let kinematics = self.module(krate, true);
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n, &t);
+            let (args, ret) = signature(m.method, n, &t, krate, false);
             let pass = call_arguments(m.method);
+            let module = module_name(m.method.is_kinematic());
+            let call = quote!(#module::#name(&self.#parameters(), #pass));
+            let call = forward(m.method, call, krate);
             let f = quote! {
                 #[inline]
                 fn #name<#t: #krate::Real>(&self, #args) -> #ret {
-                    #module::#name(&self.#parameters(), #pass)
+                    #call
                 }
             };
             match docs(m.method) {
@@ -139,13 +141,8 @@ impl Generated {
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         quote! {
-            /// The generated functions, out of reach of the names around the derive.
-            #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-            mod #module {
-                #configuration
-                #motion
-                #(#bodies)*
-            }
+            #dynamics
+            #kinematics
             impl #impl_generics #ident #ty_generics #where_clause {
                 /// The parameters the equations read, in the order of the description.
                 #[doc(hidden)]
@@ -163,8 +160,52 @@ impl Generated {
         }
     }
 
+    /// The module of the dynamics' functions (`kinematic` false) or the kinematic ones': the
+    /// shared functions and one function per method.
+    fn module(&self, krate: &TokenStream, kinematic: bool) -> TokenStream {
+        let (n, k) = (self.dof, self.fields.len());
+        let p = local(PARAMETERS);
+        let (configuration, motion) = if kinematic {
+            (self.kinematic.0.as_ref(), self.kinematic.1.as_ref())
+        } else {
+            (self.configuration.as_ref(), self.motion.as_ref())
+        };
+        let configuration_item = self.configuration_item(configuration, krate);
+        let motion_item = self.motion_item(motion, configuration.is_some(), krate);
+        let bodies = self
+            .methods
+            .iter()
+            .filter(|m| m.method.is_kinematic() == kinematic);
+        let bodies = bodies.map(|m| {
+            let name = Ident::new(m.name, Span::call_site());
+            let scalar = Ident::new("T", Span::call_site());
+            let (args, ret) = signature(m.method, n, &scalar, krate, true);
+            let body = &m.body;
+            quote! {
+                #[inline(always)]
+                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
+                    #body
+                }
+            }
+        });
+        let module = module_name(kinematic);
+        quote! {
+            /// The generated functions, out of reach of the names around the derive.
+            #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+            mod #module {
+                #configuration_item
+                #motion_item
+                #(#bodies)*
+            }
+        }
+    }
+
     /// The configuration struct and function, if any method reads them.
-    fn configuration_item(&self, krate: &TokenStream) -> Option<TokenStream> {
+    fn configuration_item(
+        &self,
+        configuration: Option<&Shared>,
+        krate: &TokenStream,
+    ) -> Option<TokenStream> {
         let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
         let function = SharedFunction {
             doc: quote!(
@@ -175,17 +216,23 @@ impl Generated {
             name: CONFIGURATION_FN,
             arguments: &[Argument::Q],
         };
-        Some(self.shared_item(self.configuration.as_ref()?, krate, function))
+        Some(self.shared_item(configuration?, krate, function))
     }
 
     /// The motion struct and function, if two methods share terms in `q̇`; with a
     /// configuration, the motion function computes it too and hands both over.
-    fn motion_item(&self, krate: &TokenStream) -> Option<TokenStream> {
+    fn motion_item(
+        &self,
+        motion: Option<&Shared>,
+        with_configuration: bool,
+        krate: &TokenStream,
+    ) -> Option<TokenStream> {
         let ty = Ident::new(MOTION_STRUCT, Span::call_site());
         let configuration = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
-        let result = match &self.configuration {
-            Some(_) => quote!((#configuration<T>, #ty<T>)),
-            None => quote!(#ty<T>),
+        let result = if with_configuration {
+            quote!((#configuration<T>, #ty<T>))
+        } else {
+            quote!(#ty<T>)
         };
         let function = SharedFunction {
             doc: quote!(
@@ -196,7 +243,7 @@ impl Generated {
             name: MOTION_FN,
             arguments: &[Argument::Q, Argument::Qd],
         };
-        Some(self.shared_item(self.motion.as_ref()?, krate, function))
+        Some(self.shared_item(motion?, krate, function))
     }
 
     /// A shared function's struct and the inlined function computing it.
@@ -274,7 +321,7 @@ pub fn method(
     scalar: &Ident,
     body: &TokenStream,
 ) -> TokenStream {
-    let (args, ret) = signature(method, n, scalar);
+    let (args, ret) = signature(method, n, scalar, krate, false);
     let name = Ident::new(method.name(), Span::call_site());
     quote! {
         #[inline]
@@ -285,23 +332,55 @@ pub fn method(
     }
 }
 
+/// The module of the dynamics' or the kinematic methods' functions.
+fn module_name(kinematic: bool) -> Ident {
+    let name = if kinematic { KINEMATIC_MODULE } else { MODULE };
+    Ident::new(name, Span::call_site())
+}
+
 /// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
 fn argument_local(argument: Argument) -> Ident {
     local(&format!("{}_", argument.name()))
 }
 
-/// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`.
-fn signature(method: Method, n: usize, t: &Ident) -> (TokenStream, TokenStream) {
+/// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`;
+/// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`).
+fn signature(
+    method: Method,
+    n: usize,
+    t: &Ident,
+    krate: &TokenStream,
+    rows: bool,
+) -> (TokenStream, TokenStream) {
     let arguments = method.arguments().iter().map(|&a| {
         let name = argument_local(a);
-        quote!(#name: &[#t; #n])
+        match a {
+            Argument::Wrench => quote!(#name: &[#t; 6]),
+            Argument::Q | Argument::Qd | Argument::Qdd => quote!(#name: &[#t; #n]),
+        }
     });
     let result = match method.returns() {
         Returns::Matrix => quote!([[#t; #n]; #n]),
         Returns::Vector => quote!([#t; #n]),
         Returns::Scalar => quote!(#t),
+        Returns::Pose if rows => quote!([[#t; 4]; 3]),
+        Returns::Pose => quote!(#krate::Pose<#t>),
+        Returns::Poses if rows => quote!([[[#t; 4]; 3]; #n]),
+        Returns::Poses => quote!([#krate::Pose<#t>; #n]),
+        Returns::Jacobian => quote!([[#t; #n]; 6]),
+        Returns::Spatial => quote!([#t; 6]),
     };
     (quote!(#(#arguments),*), result)
+}
+
+/// The call of a method's function in the generated module, `module::name(p_, q_)`, turned
+/// into the trait's result (poses from their rows).
+fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStream {
+    match method.returns() {
+        Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
+        Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
+        _ => call,
+    }
 }
 
 /// The arguments a method passes on, as in [`signature`].

@@ -81,6 +81,8 @@ pub enum Shape<'a> {
     Vector(&'a [NodeId]),
     /// A matrix, rows first.
     Matrix(&'a [Vec<NodeId>]),
+    /// Matrices, one after the other.
+    Stack(&'a [Vec<Vec<NodeId>>]),
 }
 
 impl Shape<'_> {
@@ -90,6 +92,7 @@ impl Shape<'_> {
             Shape::Scalar(id) => vec![*id],
             Shape::Vector(v) => v.to_vec(),
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
+            Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
         }
     }
 }

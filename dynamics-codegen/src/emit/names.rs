@@ -20,6 +20,7 @@ enum Index {
     Scalar,
     Vector(usize),
     Matrix(usize, usize),
+    Stack(usize, usize, usize),
 }
 
 impl Element {
@@ -30,17 +31,19 @@ impl Element {
             Index::Scalar => prefix.to_owned(),
             Index::Vector(i) => format!("{prefix}{}", i + 1),
             Index::Matrix(i, j) => format!("{prefix}{}_{}", i + 1, j + 1),
+            Index::Stack(k, i, j) => format!("{prefix}{}_{}_{}", k + 1, i + 1, j + 1),
         })
     }
 
     /// What it is, in the book's terms ([`Method::describe`]).
     pub(super) fn describe(self) -> String {
-        let (i, j) = match self.index {
-            Index::Scalar => (0, 0),
-            Index::Vector(i) => (i, 0),
-            Index::Matrix(i, j) => (i, j),
+        let (k, i, j) = match self.index {
+            Index::Scalar => (0, 0, 0),
+            Index::Vector(i) => (0, i, 0),
+            Index::Matrix(i, j) => (0, i, j),
+            Index::Stack(k, i, j) => (k, i, j),
         };
-        self.method.describe(i, j)
+        self.method.describe_in(k, i, j)
     }
 }
 
@@ -65,6 +68,15 @@ impl Emitter<'_> {
                 for (i, row) in m.iter().enumerate() {
                     for (j, &id) in row.iter().enumerate() {
                         add(id, Index::Matrix(i, j));
+                    }
+                }
+            }
+            Shape::Stack(s) => {
+                for (k, m) in s.iter().enumerate() {
+                    for (i, row) in m.iter().enumerate() {
+                        for (j, &id) in row.iter().enumerate() {
+                            add(id, Index::Stack(k, i, j));
+                        }
                     }
                 }
             }

@@ -54,6 +54,8 @@ pub(super) struct Attrs {
     pub urdf: Option<LitStr>,
     pub base: Option<LitStr>,
     pub tip: Option<LitStr>,
+    /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
+    pub tool: Option<[Spanned; 6]>,
 }
 
 /// What the keys of `#[dynamics(...)]` are called in messages.
@@ -188,6 +190,10 @@ fn parse_attr(
             } else {
                 entry.keep_first(&mut attrs.joints, joints);
             }
+        }
+        Key::Tool => {
+            let (tool, _) = values::<6>(input, "`tool = [x, y, z, roll, pitch, yaw]`")?;
+            entry.keep_first(&mut attrs.tool, tool);
         }
         // Read above: a `link(...)` has no `=`.
         Key::Link => {}

@@ -10,7 +10,7 @@ use super::friction_attr::FrictionAttr;
 use super::from_joints;
 use super::value::Spanned;
 use crate::check;
-use crate::model::{Convention, Friction, Joint, JointKind, Pose, Robot, Spring, Value};
+use crate::model::{Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value};
 use proc_macro2::Span;
 
 /// The robot the attributes describe; its errors go to `errors`.
@@ -49,13 +49,26 @@ pub(super) fn robot_from_attrs(
                 .collect()
         }
     };
+    let tool = tool(&mut reader, attrs);
     Robot {
         name: input.ident.to_string(),
         convention: attrs.convention.map_or(Convention::Standard, |c| c.0),
         gravity,
         joints,
         base: Pose::identity(),
+        tool,
     }
+}
+
+/// The tool frame in the hand frame, `tool = [x, y, z, roll, pitch, yaw]`.
+pub(super) fn tool(reader: &mut Reader, attrs: &Attrs) -> Option<Placement> {
+    attrs.tool.as_ref().map(|t| {
+        let [x, y, z, roll, pitch, yaw] = reader.values(t);
+        Placement {
+            xyz: [x, y, z],
+            rpy: [roll, pitch, yaw],
+        }
+    })
 }
 
 /// Errors for an empty table, one with too many rows, and a number of `link(...)` entries

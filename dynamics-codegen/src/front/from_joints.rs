@@ -40,6 +40,7 @@ pub(super) fn robot(
         gravity,
         joints: built,
         base: Pose::identity(),
+        tool: super::from_attrs::tool(reader, attrs),
     };
     if reader.errors.is_empty() {
         if let Err(problems) = lower_frames(&mut robot) {

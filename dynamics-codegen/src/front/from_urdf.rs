@@ -8,7 +8,7 @@ use super::errors::Errors;
 use super::fields::{check_names, Field};
 use super::from_file::{problems, read_relative};
 use super::urdf::{load_urdf, Chain};
-use crate::model::Robot;
+use crate::model::{mat_vec, transpose, Robot, Value};
 use syn::LitStr;
 
 /// The robot of the URDF file `urdf = "..."` names; `gravity = [..]` replaces its default
@@ -25,11 +25,12 @@ pub(super) fn robot_from_urdf(
         (attrs.dh.is_some(), "dh"),
         (!attrs.links.is_empty(), "link"),
         (attrs.convention.is_some(), "convention"),
+        (attrs.tool.is_some(), "tool"),
     ] {
         if present {
             errors.push(
                 urdf.span(),
-                format!("`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot"),
+                format!("`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot (its `tip` link is the hand frame)"),
             );
         }
     }
@@ -60,7 +61,9 @@ pub(super) fn robot_from_urdf(
         for g in gravity {
             check_names(g, fields, errors);
         }
-        loaded.robot.gravity = std::array::from_fn(|i| gravity[i].value.clone());
+        // Given in the base link's frame; the lowered robot's gravity is in D-H frame 0.
+        let given: [Value; 3] = std::array::from_fn(|i| gravity[i].value.clone());
+        loaded.robot.gravity = mat_vec(&transpose(&loaded.robot.base.rotation), &given);
     }
     Some(loaded.robot)
 }

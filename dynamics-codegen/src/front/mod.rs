@@ -144,6 +144,7 @@ fn robot(
             (attrs.joints.is_some(), "joints"),
             (!attrs.links.is_empty(), "link"),
             (attrs.convention.is_some(), "convention"),
+            (attrs.tool.is_some(), "tool"),
         ] {
             if present {
                 errors.push(file.span(), format!("`{what}` cannot be combined with `file`: the file describes the whole robot"));

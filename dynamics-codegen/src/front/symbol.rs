@@ -39,11 +39,12 @@ keys! {
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
-    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`.
+    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`,
+    /// `tool = [x, y, z, roll, pitch, yaw]`.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
-        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip",
+        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tool = "tool",
     }
 }
 

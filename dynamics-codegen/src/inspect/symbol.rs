@@ -91,6 +91,8 @@ pub enum Sym {
     Tanh(u16),
 }
 
+use crate::symbolic::WRENCH;
+
 impl Sym {
     /// The symbol of a graph input; `fields` names the parameters (`None` for an unknown
     /// one).
@@ -103,6 +105,8 @@ impl Sym {
             Var::Qd(i) => Sym::Qd(i),
             Var::Qdd(i) => Sym::Qdd(i),
             Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
+            // Printed as the book names the wrench's components.
+            Var::Wrench(k) => Sym::Param((*WRENCH.get(usize::from(k))?).to_owned()),
         })
     }
 

@@ -120,6 +120,8 @@ pub struct Robot {
     pub joints: Vec<Joint>,
     /// D-H frame 0 in the user's base frame (the identity for a robot given by its D-H table).
     pub base: Pose,
+    /// The tool (hand) frame in the user's link frame n, if one is declared.
+    pub tool: Option<Placement>,
 }
 
 impl Robot {
@@ -131,14 +133,21 @@ impl Robot {
 
     /// Every value of the robot, in a fixed order.
     pub fn values(&self) -> impl Iterator<Item = &Value> {
-        self.gravity.iter().chain(self.joints.iter().flat_map(|j| {
-            [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
-                .into_iter()
-                .chain(j.com.iter())
-                .chain(j.inertia.iter())
-                .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
-                .chain(j.friction.iter().flat_map(Friction::values))
-        }))
+        self.gravity
+            .iter()
+            .chain(self.joints.iter().flat_map(|j| {
+                [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
+                    .into_iter()
+                    .chain(j.com.iter())
+                    .chain(j.inertia.iter())
+                    .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
+                    .chain(j.friction.iter().flat_map(Friction::values))
+            }))
+            .chain(
+                self.tool
+                    .iter()
+                    .flat_map(|t| t.xyz.iter().chain(t.rpy.iter())),
+            )
     }
 
     /// The struct fields that the robot's values name, sorted and without repetition.

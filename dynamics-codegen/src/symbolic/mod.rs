@@ -9,5 +9,5 @@ mod number;
 
 pub use expr::Expr;
 pub use graph::{Graph, Stats};
-pub use node::{Node, NodeId, Var};
+pub use node::{Node, NodeId, Var, WRENCH};
 pub use number::Number;

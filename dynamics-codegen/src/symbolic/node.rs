@@ -36,7 +36,12 @@ pub enum Var {
     Qdd(u16),
     /// Robot parameter `k` (a struct field).
     Param(u16),
+    /// Component `k` of a wrench `[fx, fy, fz, mx, my, mz]` (an argument of the statics).
+    Wrench(u16),
 }
+
+/// The names of a wrench's components, [`Var::Wrench`]`(k)` for `k` from 0.
+pub const WRENCH: [&str; 6] = ["fx", "fy", "fz", "mx", "my", "mz"];
 
 /// A node of the graph.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -9,6 +9,8 @@
 //!   and springs (`newton_euler`);
 //! * the kinetic and potential energy (`energy`);
 //! * joint friction `f_v q̇ + f_c sign(q̇) + f_0`, added to `τ` (`friction`);
+//! * the poses of the link frames and the hand, the hand's Jacobians, `J̇ q̇` and `Jᵀ F`
+//!   (`kinematics`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
 //!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
 //!
@@ -22,6 +24,7 @@ mod energy;
 mod friction;
 mod gravity;
 mod joints;
+mod kinematics;
 mod mass;
 mod newton_euler;
 mod tracer;
@@ -31,6 +34,7 @@ use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
 use cost::matrix_ids;
 use joints::JointTerms;
+pub use kinematics::KinematicEquations;
 use std::cell::RefCell;
 use tracer::Tracer;
 
@@ -68,6 +72,8 @@ pub struct Equations {
     pub kinetic_energy: NodeId,
     /// Potential energy.
     pub potential_energy: NodeId,
+    /// Forward kinematics, Jacobians and statics.
+    pub kinematics: KinematicEquations,
 }
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
@@ -88,6 +94,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let newton_euler = newton_euler::newton_euler(&graph, &chain, gravity, &joints);
     let (kinetic_energy, potential_energy) = energy::energies(&chain, gravity, &joints, half);
     let (christoffel, coriolis) = coriolis::coriolis(&graph, &chain, &mass, &joints.qd, half.id());
+    let kinematics = kinematics::kinematics(&mut tracer, robot, &joints.qd);
     let angle_offsets = tracer.angle_offsets();
     // Last, so that the nodes of a robot without friction are those it always had.
     let friction = friction::friction_torques(&tracer, robot, &joints);
@@ -112,5 +119,6 @@ pub fn derive(robot: &Robot) -> Equations {
         friction,
         kinetic_energy,
         potential_energy,
+        kinematics,
     }
 }

@@ -5,7 +5,7 @@ use super::{frames, FileError, Loaded};
 use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
-use crate::model::{Convention, Friction, Joint, JointKind, Pose, Robot, Spring, Value};
+use crate::model::{Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value};
 use crate::symbolic::Number;
 use serde::Deserialize;
 
@@ -109,6 +109,9 @@ pub(super) struct FileRobot {
     convention: Option<FileConvention>,
     gravity: [FileValue; 3],
     joints: Vec<FileJoint>,
+    /// The tool frame in link frame n, `[x, y, z, roll, pitch, yaw]`.
+    #[serde(default)]
+    tool: Option<[FileValue; 6]>,
 }
 
 #[derive(Deserialize)]
@@ -254,6 +257,13 @@ pub(super) fn convert(
                 .to_string(),
         ));
     }
+    let tool = file.tool.map(|t| {
+        let [x, y, z, roll, pitch, yaw] = t.map(|v| v.0);
+        Placement {
+            xyz: [x, y, z],
+            rpy: [roll, pitch, yaw],
+        }
+    });
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
@@ -295,6 +305,7 @@ pub(super) fn convert(
             gravity,
             joints,
             base: Pose::identity(),
+            tool,
         },
         check_inertia,
         positions: Vec::new(),

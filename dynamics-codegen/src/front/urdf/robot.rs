@@ -37,7 +37,8 @@ pub(super) fn build(
     let mut errors = Vec::new();
     let mut joints = Vec::new();
     let mut positions = Positions::new();
-    for segment in segments(tree, chain) {
+    let (segments, tip) = segments(tree, chain);
+    for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
         match joint(tree, segment) {
             Ok((joint, at)) => {
@@ -58,12 +59,17 @@ pub(super) fn build(
         gravity: [number("0"), number("0"), number("-9.81")],
         joints,
         base: Pose::identity(),
+        tool: (tip != Pose::identity()).then(|| Placement {
+            xyz: tip.translation.clone(),
+            rpy: rpy_of(&tip.rotation),
+        }),
     };
     Ok((robot, positions))
 }
 
-/// The moving joints of the chain, each with the links fixed to its child link.
-fn segments(tree: &Tree, chain: &Chain) -> Vec<Segment> {
+/// The moving joints of the chain, each with the links fixed to its child link, and the tip
+/// link's pose in the last moving joint's child frame (the hand's tool transform).
+fn segments(tree: &Tree, chain: &Chain) -> (Vec<Segment>, Pose) {
     let mut segments: Vec<Segment> = Vec::new();
     // The current path link in the frame of the last moving joint's child (or of the base).
     let mut pose = Pose::identity();
@@ -84,7 +90,7 @@ fn segments(tree: &Tree, chain: &Chain) -> Vec<Segment> {
             attach(tree, tree.child(j), pose.clone(), next, &mut segment.parts);
         }
     }
-    segments
+    (segments, pose)
 }
 
 /// Adds `link` at `pose` and every link fixed to it, except through `path_next` (the chain's

@@ -160,6 +160,7 @@ fn random_robot(rng: &mut Rng) -> Robot {
         gravity: [0.3, -1.2, -9.81].map(Value::from_f64),
         joints: (0..=rng.below(7)).map(|_| random_joint(rng)).collect(),
         base: Pose::identity(),
+        tool: None,
     }
 }
 
@@ -304,6 +305,7 @@ fn ur5() -> Robot {
             })
             .collect(),
         base: Pose::identity(),
+        tool: None,
     }
 }
 
