@@ -4,7 +4,8 @@
 //!   `#[derive(Dynamics)]` from its JSON description: [`Puma560`], [`Stanford`], [`Ur5`] and
 //!   [`Random5`]; the 7-joint [`Panda`] of `tests/data/panda/`; and [`Ur5Dh`], the UR5 of
 //!   `robots/urdf/ur5.urdf` written as a D-H table (`robots/ur5_urdf_dh.toml`, data in
-//!   `tests/data/urdf/`), the twin the URDF robot is compared with.
+//!   `tests/data/urdf/`), the twin the URDF robot is compared with, beside [`Ur5Urdf`],
+//!   derived from the URDF itself.
 //! * Their 20 reference samples (`q`, `qd`, `qdd` and the expected `tau`, computed with
 //!   Pinocchio 4.1.0), read at run time by [`samples`].
 //! * The two other implementations the generated code is compared with, built from the same
@@ -23,9 +24,12 @@ pub const DOF: usize = 6;
 
 /// Names of the benchmarked robots, in output order: the four 6-joint reference robots, whose
 /// description and data are `tests/data/reference/{robots,data}/<name>.json`, `panda`, whose
-/// are `tests/data/panda/{robot,data}.json`, and `ur5_dh`, whose data file
-/// `tests/data/urdf/ur5_dh.json` holds its description.
-pub const ROBOTS: [&str; 6] = ["puma560", "stanford", "ur5", "random5", "panda", "ur5_dh"];
+/// are `tests/data/panda/{robot,data}.json`, `ur5_dh`, whose data file
+/// `tests/data/urdf/ur5_dh.json` holds its description, and `ur5_urdf`, the same robot from its
+/// URDF, whose data are `tests/data/urdf/ur5.json`.
+pub const ROBOTS: [&str; 7] = [
+    "puma560", "stanford", "ur5", "random5", "panda", "ur5_dh", "ur5_urdf",
+];
 
 /// The PUMA 560 (Corke's Robotics Toolbox parameters, motor inertia and friction dropped): RRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
@@ -66,6 +70,12 @@ pub struct Panda;
 #[dynamics(file = "../robots/ur5_urdf_dh.toml")]
 pub struct Ur5Dh;
 
+/// The UR5 derived from its URDF (`robots/urdf/ur5.urdf`, base_link to tool0): the robot of
+/// [`Ur5Dh`], lowered to its own D-H table by the URDF front end.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(urdf = "../robots/urdf/ur5.urdf", base = "base_link", tip = "tool0")]
+pub struct Ur5Urdf;
+
 /// One reference sample of an `N`-joint robot: a state and the torques Pinocchio computed for it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sample<const N: usize = DOF> {
@@ -92,6 +102,7 @@ fn data_file(robot: &str) -> String {
     match robot {
         "panda" => "panda/data.json".into(),
         "ur5_dh" => "urdf/ur5_dh.json".into(),
+        "ur5_urdf" => "urdf/ur5.json".into(),
         _ => format!("reference/data/{robot}.json"),
     }
 }
@@ -130,7 +141,7 @@ pub fn samples<const N: usize>(robot: &str) -> Vec<Sample<N>> {
 }
 
 /// The JSON description of `robot`: the file its struct is derived from, or for the UR5's twin
-/// the same robot as its data file describes it.
+/// (and the URDF UR5, the same robot) as the twin's data file describes it.
 ///
 /// # Panics
 /// If the file is missing.
@@ -138,7 +149,7 @@ pub fn samples<const N: usize>(robot: &str) -> Vec<Sample<N>> {
 pub fn description(robot: &str) -> String {
     match robot {
         "panda" => read("panda/robot.json"),
-        "ur5_dh" => {
+        "ur5_dh" | "ur5_urdf" => {
             let data: serde_json::Value = serde_json::from_str(&read(&data_file("ur5_dh")))
                 .unwrap_or_else(|e| panic!("data of ur5_dh: {e}"));
             data["description"].to_string()

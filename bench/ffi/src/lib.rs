@@ -8,7 +8,7 @@
 //! joints.
 
 use core::ffi::{c_char, CStr};
-use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh};
+use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
 use dynamics_runtime::Dynamics;
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
@@ -98,7 +98,7 @@ fn entry<R: Dynamics<N> + Default, const N: usize>() -> Robot {
     (N, Functions::<R, N>::get)
 }
 
-/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda` or `ur5_dh`).
+/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`).
 ///
 /// # Safety
 /// `name` is null or a NUL-terminated string.
@@ -114,12 +114,13 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"random5" => entry::<Random5, 6>(),
         b"panda" => entry::<Panda, 7>(),
         b"ur5_dh" => entry::<Ur5Dh, 6>(),
+        b"ur5_urdf" => entry::<Ur5Urdf, 6>(),
         _ => return None,
     })
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`) of `robot`
-/// (`puma560`, `stanford`, `ur5`, `random5`, `panda` or `ur5_dh`), or null for an unknown name.
+/// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
 /// Both arguments are null or NUL-terminated strings.
@@ -226,6 +227,7 @@ mod tests {
                 "random5" => check(&Random5, robot),
                 "panda" => check(&Panda, robot),
                 "ur5_dh" => check(&Ur5Dh, robot),
+                "ur5_urdf" => check(&Ur5Urdf, robot),
                 _ => panic!("{robot} has no test"),
             }
         }

@@ -13,7 +13,8 @@
 //! For each robot (`puma560`, `stanford`, `ur5`, `random5`, each derived with
 //! `#[derive(Dynamics)]` from `tests/data/reference/robots/<robot>.json`, `panda`, from
 //! `tests/data/panda/robot.json`, and `ur5_dh`, the D-H twin of `robots/urdf/ur5.urdf`, from
-//! `robots/ur5_urdf_dh.toml`), the generated `f64` methods:
+//! `robots/ur5_urdf_dh.toml`, and `ur5_urdf`, from the URDF itself), the generated `f64`
+//! methods:
 //!
 //! | function | method |
 //! |---|---|
@@ -78,7 +79,7 @@ use std::hint::black_box;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, ROBOTS};
+use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, Ur5Urdf, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
 use dynamics_runtime::Dynamics;
 
@@ -315,7 +316,7 @@ usage: timings [--all] [--fastest] [--robot ROBOT] [--function FUNCTION]
 
   --all          also time tau_reference, tau_rnea and M_crba
   --fastest      the fastest of 300 batches of 2,000 calls, not the median of 31 of 20,000
-  --robot R      only robot R: puma560, stanford, ur5, random5, panda, ur5_dh
+  --robot R      only robot R: puma560, stanford, ur5, random5, panda, ur5_dh, ur5_urdf
   --function F   only function F: tau, M, g, C, h, tau_reference, tau_rnea, M_crba
   --calls N      make exactly N calls of one function, print nothing (for callgrind)";
 
@@ -380,6 +381,7 @@ fn main() -> ExitCode {
             "random5" => run(&Random5, name, &functions, &args),
             "panda" => run(&Panda, name, &functions, &args),
             "ur5_dh" => run(&Ur5Dh, name, &functions, &args),
+            "ur5_urdf" => run(&Ur5Urdf, name, &functions, &args),
             _ => unreachable!("every robot of ROBOTS has a struct"),
         };
         if !ok {

@@ -23,6 +23,7 @@ pub(super) fn robot_from_urdf(
     for (present, what) in [
         (attrs.file.is_some(), "file"),
         (attrs.dh.is_some(), "dh"),
+        (attrs.joints.is_some(), "joints"),
         (!attrs.links.is_empty(), "link"),
         (attrs.convention.is_some(), "convention"),
         (attrs.tool.is_some(), "tool"),
@@ -30,7 +31,10 @@ pub(super) fn robot_from_urdf(
         if present {
             errors.push(
                 urdf.span(),
-                format!("`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot (its `tip` link is the hand frame)"),
+                format!(
+                    "`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot{}",
+                    if what == "tool" { " (its `tip` link is the hand frame: choose the tip)" } else { "" }
+                ),
             );
         }
     }
