@@ -43,7 +43,7 @@ mod value;
 pub use errors::Errors;
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load, FileError, Loaded, Positions};
-pub use urdf::{load_urdf, Chain, AXIS_LENGTH_TOLERANCE};
+pub use urdf::{load_urdf, Chain};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::model::Robot;

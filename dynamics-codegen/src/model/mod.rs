@@ -16,7 +16,8 @@ pub use frame::{
     Pose, QUARTER_TURN_TOLERANCE,
 };
 pub use lower::{
-    lower_frames, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE, NOISE_TOLERANCE,
+    lower_frames, FramePart, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE,
+    NOISE_TOLERANCE,
 };
 pub use value::Value;
 

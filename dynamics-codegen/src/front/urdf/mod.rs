@@ -22,8 +22,6 @@ use super::file::Loaded;
 use super::FileError;
 use crate::model::{FrameProblem, Robot};
 
-pub use robot::AXIS_LENGTH_TOLERANCE;
-
 /// A 1-based line and column in the file.
 type At = (usize, usize);
 

@@ -10,12 +10,9 @@ use crate::check;
 use crate::front::{FileError, Positions};
 use crate::model::{
     AxisFrame, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Value,
+    AXIS_LENGTH_TOLERANCE,
 };
 use std::collections::BTreeMap;
-
-/// How far from 1 the length of an axis may be: URDF files write `0.7071068` for 1/√2. Such
-/// an axis is divided by its length, as Pinocchio does.
-pub const AXIS_LENGTH_TOLERANCE: f64 = 1e-6;
 
 /// Where one joint's values are written, by key (`type`, `axis`, `mass`, `inertia`).
 type JointPositions = BTreeMap<String, (usize, usize)>;
@@ -249,6 +246,8 @@ fn unit_axis(joint: &UrdfJoint) -> Result<[Value; 3], FileError> {
     if length == 0.0 {
         return Err(error(joint.axis_at, format!("joint `{name}`: the axis `{written}` is zero: give the direction the joint turns about or slides along, e.g. `0 0 1`")));
     }
+    // One tolerance for every front end (the lowering's): URDF files write `0.7071068` for
+    // 1/√2; such an axis is divided by its length, as Pinocchio does.
     if (length - 1.0).abs() > AXIS_LENGTH_TOLERANCE {
         return Err(error(joint.axis_at, format!("joint `{name}`: the axis `{written}` has length {length}, not 1: write a unit vector")));
     }

@@ -47,16 +47,26 @@ pub const AXIS_COMPONENT_TOLERANCE: f64 = super::QUARTER_TURN_TOLERANCE;
 pub struct FrameProblem {
     /// The joint, 0-based.
     pub joint: usize,
+    /// The value concerned, for the front ends, which point at it.
+    pub part: FramePart,
     /// What is wrong, and what to write instead.
     pub message: String,
 }
 
+/// The part of a joint's frame a [`FrameProblem`] is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FramePart {
+    /// Its placement (`xyz`, `rpy`), or the joint as a whole.
+    Origin,
+    /// Its axis.
+    Axis,
+}
+
 impl FrameProblem {
-    /// Whether the problem is with the joint's axis (rather than its placement), for the
-    /// front ends, which point at the value concerned.
+    /// Whether the problem is with the joint's axis (rather than its placement).
     #[must_use]
     pub fn concerns_axis(&self) -> bool {
-        self.message.starts_with("the axis")
+        self.part == FramePart::Axis
     }
 }
 
@@ -134,6 +144,7 @@ fn frame_zero(first: &DhFrame) -> Result<DhFrame, Vec<FrameProblem>> {
         let x = direction(&off_axis).ok_or_else(|| {
             vec![FrameProblem {
                 joint: 0,
+                part: FramePart::Origin,
                 message: format!(
                     "its origin's offset from the line through the base origin along its axis, \
                      [{}, {}, {}] in base axes, names struct fields in more than one direction: \
@@ -174,9 +185,16 @@ fn axes(robot: &Robot) -> Result<Vec<Axis>, Vec<FrameProblem>> {
     let mut link = Pose::identity();
     let mut axes = Vec::new();
     for (joint, j) in robot.joints.iter().enumerate() {
-        let mut problem = |message: String| problems.push(FrameProblem { joint, message });
+        let mut problem = |part, message: String| {
+            problems.push(FrameProblem {
+                joint,
+                part,
+                message,
+            });
+        };
         let Some(frame) = &j.frame else {
             problem(
+                FramePart::Origin,
                 "a joint given as a D-H row in a robot whose other joints are given by \
                  placements and axes: give every joint the same way"
                     .into(),
@@ -187,11 +205,14 @@ fn axes(robot: &Robot) -> Result<Vec<Axis>, Vec<FrameProblem>> {
             Ok(p) => p,
             Err(k) => {
                 let name = ["roll", "pitch", "yaw"][k];
-                problem(format!(
-                    "the {name} angle `{}` names a struct field: the D-H table needs its \
+                problem(
+                    FramePart::Origin,
+                    format!(
+                        "the {name} angle `{}` names a struct field: the D-H table needs its \
                      value; write it as a number (e.g. `90 deg` or `1.5708`)",
-                    frame.origin.rpy[k]
-                ));
+                        frame.origin.rpy[k]
+                    ),
+                );
                 continue;
             }
         };
@@ -202,7 +223,7 @@ fn axes(robot: &Robot) -> Result<Vec<Axis>, Vec<FrameProblem>> {
                 direction: clean3(super::mat_vec(&link.rotation, &local)),
                 link: link.clone(),
             }),
-            Err(message) => problem(message),
+            Err(message) => problem(FramePart::Axis, message),
         }
     }
     if problems.is_empty() {
@@ -265,6 +286,7 @@ fn dh_frames(axes: &[Axis]) -> Result<Vec<DhFrame>, Vec<FrameProblem>> {
                 Err(message) => {
                     problems.push(FrameProblem {
                         joint: i + 1,
+                        part: FramePart::Origin,
                         message,
                     });
                     return Err(problems);

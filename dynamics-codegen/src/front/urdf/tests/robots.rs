@@ -112,8 +112,9 @@ fn panda_to_its_flange() {
         .iter()
         .map(|b| b.iter().map(String::as_str).collect())
         .collect();
-    // panda_joint8 is fixed: link 8 is part of link 7; the hand below it moves, and is cut off.
-    bodies[6].push("panda_link8");
+    // panda_joint8 and panda_hand_joint are fixed: link 8 and the hand are part of link 7; the
+    // fingers below the hand move, and are cut off.
+    bodies[6].extend(["panda_link8", "panda_hand"]);
     let bodies: Vec<&[&str]> = bodies.iter().map(Vec::as_slice).collect();
     check_chain(&panda, 7, &[Z; 7], &bodies, PANDA);
     // `<dynamics damping="0.003" friction="0.0"/>`: viscous friction only.
