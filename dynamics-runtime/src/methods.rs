@@ -112,7 +112,7 @@ macro_rules! for_each_method {
             }
             /// The hand frame in the base frame, the book's `A_1 ⋯ A_n` followed by the tool
             /// transform if the robot declares one: rotation and position
-            /// ([`Pose::homogeneous`](crate::Pose::homogeneous) gives the 4×4 form).
+            /// (`Pose::homogeneous` gives the 4×4 form).
             fn hand_pose(q) -> pose, nalgebra hand_pose_na {
                 variant: HandPose,
                 equation: None,
@@ -147,7 +147,7 @@ macro_rules! for_each_method {
                 summary: "The book's ᴴJ, the hand's Jacobian in the hand frame.",
                 element: "HJ{i}{j}, hand frame (rows dx dy dz rx ry rz)",
             }
-            /// `J̇ q̇` of [`hand_jacobian_in_base`](Self::hand_jacobian_in_base): the hand's
+            /// `J̇ q̇` of `hand_jacobian_in_base`: the hand's
             /// linear and angular acceleration at `qdd = 0`, in base axes.
             fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
                 variant: HandAccelerationBiasInBase,
@@ -157,7 +157,7 @@ macro_rules! for_each_method {
                 element: "row {i} of J qd' in the base frame",
             }
             /// The same acceleration as
-            /// [`hand_acceleration_bias_in_base`](Self::hand_acceleration_bias_in_base) in the hand's
+            /// `hand_acceleration_bias_in_base` in the hand's
             /// axes (Pinocchio's classical acceleration in `LOCAL`; not `d(ᴴJ)/dt q̇`, which also
             /// has the terms of the hand frame's own turning).
             fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {

@@ -1,7 +1,7 @@
 //! Integration tests of the workspace (see `tests/`), and the helpers they share:
 //! [`random`], proptest strategies for random robots and states; [`book`], the harness that
 //! checks the generated code against the book's worked examples; [`printed`], the book's
-//! printed equations parsed into exact polynomials; [`reference`], the comparison with a
+//! printed equations parsed into exact polynomials; [`mod@reference`], the comparison with a
 //! reference data file of `tests/data/`. The helpers that the generator's and the
 //! runtime's own tests need too (a seeded generator, the error measures) are in
 //! `dynamics-test-support` (`tests/support`), re-exported here, because those crates cannot
