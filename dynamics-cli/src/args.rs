@@ -51,6 +51,9 @@ pub struct Inspect {
     /// LaTeX instead of plain text
     #[arg(long)]
     pub latex: bool,
+    /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
+    #[arg(long)]
+    pub kinematics: bool,
 }
 
 #[derive(Args, Debug)]
