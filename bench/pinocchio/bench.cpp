@@ -11,10 +11,16 @@
 //      Pinocchio's URDF loader built (tests/data/urdf/make.py), joint type by joint type,
 //   2. checks rnea, crba, computeGeneralizedGravity, computeCoriolisMatrix and nonLinearEffects
 //      against the file's sample CHECK_SAMPLE (relative tolerance 1e-9) and aborts on a mismatch,
-//      so that the timed model is the right robot,
+//      so that the timed model is the right robot; likewise the hand frame's placement and its
+//      Jacobian in LOCAL_WORLD_ALIGNED where the file has them ("ee_pose", "jacobian"). The hand
+//      frame is an operational frame on the last joint: the D-H table's last post transform, or
+//      for a URDF robot the placement that sample 0's "ee_pose" gives (checked on CHECK_SAMPLE),
 //   3. times each function with the shared protocol: the 20 samples' (q, qd, qdd) used
 //      cyclically, WARMUP calls, then BATCHES batches of CALLS calls, ns per call of a batch =
-//      elapsed / CALLS (std::chrono::steady_clock), report the median over the batches.
+//      elapsed / CALLS (std::chrono::steady_clock), report the median over the batches. Beside
+//      the dynamics: the hand pose (`fk`: forwardKinematics + updateFramePlacement), the hand's
+//      Jacobian (`J`: computeFrameJacobian, LOCAL_WORLD_ALIGNED) and the statics (`JtF`: that
+//      Jacobian, then Jᵀ F for a wrench F in base axes, the sample's first six qdd).
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -24,7 +30,8 @@
 // a C ABI), the program also loads the generated functions, checks each against the reference
 // data on every sample (the same tolerance), and times the two sides in turn, batch by batch
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
-// of this shared machine. Each line then reads
+// of this shared machine. The kinematics (fk, J, JtF) are checked against Pinocchio's on every
+// sample, with JtF's wrench the first six values of qdd. Each line then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
 
@@ -47,6 +54,8 @@
 
 #include "pinocchio/multibody.hpp"
 #include "pinocchio/algorithm/crba.hpp"
+#include "pinocchio/algorithm/frames.hpp"
+#include "pinocchio/algorithm/kinematics.hpp"
 #include "pinocchio/algorithm/rnea.hpp"
 
 // ---------------------------------------------------------------------------------------------
@@ -346,8 +355,9 @@ static Eigen::Vector3d vec3(const json::Value & v)
   return Eigen::Vector3d(v[0].number(), v[1].number(), v[2].number());
 }
 
-// One Pinocchio joint per D-H joint, as in "How the reference models were built".
-static Model build_model(const json::Value & desc)
+// One Pinocchio joint per D-H joint, as in "How the reference models were built". `hand` gets
+// the hand frame's placement on the last joint.
+static Model build_model(const json::Value & desc, SE3 & hand)
 {
   Model model;
   const std::string convention = desc.has("convention") ? desc["convention"].string() : "standard";
@@ -411,6 +421,7 @@ static Model build_model(const json::Value & desc)
   }
   for (std::size_t i = 0; i < n; ++i)
     model.armature[static_cast<Eigen::Index>(i)] = armature[i];
+  hand = post_prev;
   return model;
 }
 
@@ -458,6 +469,13 @@ static Model build_model_from_pinocchio(const json::Value & record)
     model.appendBodyToJoint(jid, Inertia(j["mass"].number(), vec3(j["lever"]), I), SE3::Identity());
   }
   return model;
+}
+
+// The hand frame, an operational frame on the last joint.
+static pinocchio::FrameIndex add_hand_frame(Model & model, const SE3 & placement)
+{
+  const auto last = static_cast<pinocchio::JointIndex>(model.njoints - 1);
+  return model.addFrame(pinocchio::Frame("hand", last, placement, pinocchio::OP_FRAME));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -508,7 +526,35 @@ static void check(
   }
 }
 
-static void check_model(const std::string & robot, const Model & model, const json::Value & sample)
+// The 3 × 4 rows [R | p] of a placement.
+static Eigen::MatrixXd rows_of(const SE3 & m)
+{
+  Eigen::MatrixXd out(3, 4);
+  out << m.rotation(), m.translation();
+  return out;
+}
+
+// The hand's placement, its Jacobian in base axes (LOCAL_WORLD_ALIGNED) and Jᵀ F.
+struct Hand
+{
+  Eigen::MatrixXd pose, J;
+  Eigen::VectorXd JtF;
+};
+
+static Hand hand_of(const Model & model, pinocchio::FrameIndex hand, const Eigen::VectorXd & q, const Eigen::VectorXd & F)
+{
+  Data data(model);
+  Hand out;
+  pinocchio::forwardKinematics(model, data, q);
+  out.pose = rows_of(pinocchio::updateFramePlacement(model, data, hand));
+  out.J = Eigen::MatrixXd::Zero(6, model.nv);
+  pinocchio::computeFrameJacobian(model, data, q, hand, pinocchio::LOCAL_WORLD_ALIGNED, out.J);
+  out.JtF = out.J.transpose() * F;
+  return out;
+}
+
+static void check_model(
+  const std::string & robot, const Model & model, pinocchio::FrameIndex hand, const json::Value & sample)
 {
   Data data(model);
   const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
@@ -519,6 +565,12 @@ static void check_model(const std::string & robot, const Model & model, const js
   check(robot, "g (computeGeneralizedGravity)", pinocchio::computeGeneralizedGravity(model, data, q), vecn(sample["g"]));
   check(robot, "C (computeCoriolisMatrix)", pinocchio::computeCoriolisMatrix(model, data, q, v), matn(sample["C"]));
   check(robot, "h (nonLinearEffects)", pinocchio::nonLinearEffects(model, data, q, v), vecn(sample["h"]));
+  if (sample.has("ee_pose") && sample.has("jacobian"))
+  {
+    const Hand got = hand_of(model, hand, q, a.head<6>());
+    check(robot, "hand pose (updateFramePlacement)", got.pose, matn(sample["ee_pose"]).topRows(3));
+    check(robot, "hand Jacobian (computeFrameJacobian)", got.J, matn(sample["jacobian"]));
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -626,11 +678,24 @@ struct Generated
   }
 };
 
-// Every generated function against the reference data, on every sample.
-static void check_generated(const std::string & robot, const Generated & gen, const json::Value & samples)
+// Every generated function against the reference data, on every sample; the kinematics against
+// Pinocchio's.
+static void check_generated(
+  const std::string & robot,
+  const Generated & gen,
+  const json::Value & samples,
+  const Model & model,
+  pinocchio::FrameIndex hand)
 {
   const std::size_t n = gen.dof(robot.c_str());
-  std::vector<double> out(n * n);
+  std::vector<double> out(std::max(n * n, std::size_t(12)));
+  auto rows = [&](std::size_t r, std::size_t c) {
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
+    for (std::size_t i = 0; i < r; ++i)
+      for (std::size_t j = 0; j < c; ++j)
+        m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = out[i * c + j];
+    return m;
+  };
   auto vector = [&](std::size_t len) {
     Eigen::MatrixXd v(static_cast<Eigen::Index>(len), 1);
     for (std::size_t i = 0; i < len; ++i)
@@ -661,6 +726,13 @@ static void check_generated(const std::string & robot, const Generated & gen, co
     check(robot, "C" + at, matrix(), matn(sample["C"]), s);
     gen.get(robot, "h")(q.data(), v.data(), a.data(), out.data());
     check(robot, "h" + at, vector(n), vecn(sample["h"]), s);
+    const Hand want = hand_of(model, hand, q, a.head<6>());
+    gen.get(robot, "fk")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "fk" + at + " against Pinocchio", rows(3, 4), want.pose, s);
+    gen.get(robot, "J")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
+    gen.get(robot, "JtF")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
   }
 }
 
@@ -693,12 +765,25 @@ int main(int argc, char ** argv)
     std::string robot;
     json::Value file;
     Model model;
+    pinocchio::FrameIndex hand;
     try
     {
       file = json::parse_file(path);
       robot = file["robot"].string();
-      model = file.has("pinocchio_model") ? build_model_from_pinocchio(file["pinocchio_model"])
-                                          : build_model(file["description"]);
+      SE3 placement;
+      if (file.has("pinocchio_model"))
+      {
+        // The tip link's placement on the last joint, from sample 0's pose (oMi⁻¹ · oMtip).
+        model = build_model_from_pinocchio(file["pinocchio_model"]);
+        Data data(model);
+        pinocchio::forwardKinematics(model, data, vecn(file["samples"][0]["q"]));
+        const Eigen::MatrixXd tip = matn(file["samples"][0]["ee_pose"]);
+        placement = data.oMi[static_cast<std::size_t>(model.njoints - 1)].inverse()
+                    * SE3(Eigen::Matrix3d(tip.topLeftCorner(3, 3)), Eigen::Vector3d(tip.topRightCorner(3, 1)));
+      }
+      else
+        model = build_model(file["description"], placement);
+      hand = add_hand_frame(model, placement);
     }
     catch (const std::exception & e)
     {
@@ -706,7 +791,7 @@ int main(int argc, char ** argv)
       return 1;
     }
     const json::Value & samples = file["samples"];
-    check_model(robot, model, samples[CHECK_SAMPLE]);
+    check_model(robot, model, hand, samples[CHECK_SAMPLE]);
     // A robot the library does not have (dof 0) gets Pinocchio's column alone.
     const bool with_generated = generated && generated->dof(robot.c_str()) != 0;
     if (generated && !with_generated)
@@ -715,7 +800,7 @@ int main(int argc, char ** argv)
     {
       try
       {
-        check_generated(robot, *generated, samples);
+        check_generated(robot, *generated, samples, model, hand);
       }
       catch (const std::exception & e)
       {
@@ -734,7 +819,10 @@ int main(int argc, char ** argv)
     const std::size_t ns = qs.size();
     Data data(model);
 
-    std::vector<double> out(qs[0].size() * qs[0].size());
+    const auto n = static_cast<std::size_t>(qs[0].size());
+    std::vector<double> out(std::max(n * n, std::size_t(12)));
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, model.nv);
+    Eigen::VectorXd JtF(model.nv);
     // Pinocchio's `function`, and the generated one in turn with it when it is loaded.
     auto time = [&](const char * function, auto && pin) {
       if (!with_generated)
@@ -767,6 +855,19 @@ int main(int argc, char ** argv)
     });
     time("h", [&](std::size_t k) {
       return pinocchio::nonLinearEffects(model, data, qs[k], vs[k])[0];
+    });
+    time("fk", [&](std::size_t k) {
+      pinocchio::forwardKinematics(model, data, qs[k]);
+      return pinocchio::updateFramePlacement(model, data, hand).translation()[0];
+    });
+    time("J", [&](std::size_t k) {
+      pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
+      return J(0, 0);
+    });
+    time("JtF", [&](std::size_t k) {
+      pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
+      JtF.noalias() = J.transpose() * as[k].head<6>();
+      return JtF[0];
     });
   }
   std::fprintf(stderr, "checksum %.17g\n", checksum);

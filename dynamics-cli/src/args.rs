@@ -42,6 +42,26 @@ pub struct RobotFile {
     /// URDF only: the link the chain ends at [default: the last link the moving joints reach]
     #[arg(long, value_name = "LINK")]
     pub tip: Option<String>,
+    /// A tool frame on the hand, as a description file's `tool` (m, rad): the kinematic
+    /// methods then give the tool's pose, Jacobians and statics
+    #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", allow_hyphen_values = true)]
+    pub tool: Option<Tool>,
+}
+
+/// `--tool x,y,z,roll,pitch,yaw`: six finite numbers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tool(pub [f64; 6]);
+
+impl FromStr for Tool {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        let Numbers(values) = text.parse()?;
+        let count = values.len();
+        values.try_into().map(Tool).map_err(|_| {
+            format!("a tool takes 6 numbers, x,y,z,roll,pitch,yaw; `{text}` has {count}")
+        })
+    }
 }
 
 #[derive(Args, Debug)]
@@ -51,6 +71,9 @@ pub struct Inspect {
     /// LaTeX instead of plain text
     #[arg(long)]
     pub latex: bool,
+    /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
+    #[arg(long)]
+    pub kinematics: bool,
 }
 
 #[derive(Args, Debug)]

@@ -3,6 +3,9 @@
 //!
 //! * `tests/golden/NAME.txt` and `NAME.tex`: `dynamics inspect` (and `--latex`) for every book
 //!   example `robots/niku_example_*.toml` and for `robots/puma560.toml`;
+//! * `tests/golden/NAME.kinematics.txt` and `.tex`: `dynamics inspect --kinematics` (the hand
+//!   pose and Jacobians) for the book's 2-link arm (`niku_example_6_4`) and a 3R articulated
+//!   arm (`robots/articulated_3r.toml`);
 //! * `examples/emitted_puma560.rs`: `dynamics emit robots/puma560.toml`, which cargo also
 //!   compiles and runs as part of the `emitted_puma560` example, so the emitted module is
 //!   known to build.
@@ -53,6 +56,18 @@ fn cases() -> Vec<Case> {
             args: vec!["inspect".into(), path, "--latex".into()],
             file: format!("dynamics-cli/tests/golden/{stem}.tex"),
         });
+    }
+    // The hand pose and Jacobians: the book's 2-link arm and a 3R articulated arm.
+    for stem in ["niku_example_6_4", "articulated_3r"] {
+        for (format, ext) in [(None, "txt"), (Some("--latex"), "tex")] {
+            let mut args = vec!["inspect".into(), format!("robots/{stem}.toml")];
+            args.push("--kinematics".into());
+            args.extend(format.map(String::from));
+            cases.push(Case {
+                args,
+                file: format!("dynamics-cli/tests/golden/{stem}.kinematics.{ext}"),
+            });
+        }
     }
     cases.push(Case {
         args: vec!["emit".into(), "robots/puma560.toml".into()],
@@ -198,4 +213,42 @@ fn stale_file_is_reported_with_a_diff() {
 fn diff_shows_only_changed_lines() {
     let d = diff("a\nb\nc\nd\n", "a\nx\nc\nd\ne\n", 10);
     assert_eq!(d, "-    2 | b\n+    2 | x\n+    5 | e");
+}
+
+/// Entries of the kinematics goldens derived by hand, so that blessing cannot hide an error.
+///
+/// The 3R arm (standard D-H: α1 = 90°, a2, a3): `A1 A2 A3` has the last column
+/// `p = (C1 (a2 C2 + a3 C23), S1 (a2 C2 + a3 C23), a2 S2 + a3 S23)`, and `n`, the x axis of
+/// frame 3, is `(C1 C23, S1 C23, S23)`. ᴴJ's column 2: joint 2 turns about z1 = z3 the hand at
+/// `a2 x2 + a3 x3` from its axis; in the hand's axes `x2 = (C3, −S3, 0)` and `x3 = (1, 0, 0)`, so
+/// `z × r = a2 (S3, C3, 0) + a3 (0, 1, 0)`: `ᴴJ12 = a2 S3`, `ᴴJ22 = a3 + a2 C3`, `ᴴJ32 = 0`.
+/// The book's 2-link arm (Example 6.4): `px = l1 C1 + l2 C12`, and joint 2 moves the hand at
+/// `l2 (−S12, C12)`.
+#[test]
+fn kinematics_entries_match_a_hand_derivation() {
+    let three = run(&[
+        "inspect".into(),
+        "robots/articulated_3r.toml".into(),
+        "--kinematics".into(),
+    ]);
+    for line in [
+        "  nx = C1 C23",
+        "  ny = S1 C23",
+        "  nz = S23",
+        "  px = a2 C1 C2 + a3 C1 C23",
+        "  pz = a2 S2 + a3 S23",
+        "  ᴴJ12 = a2 S3",
+        "  ᴴJ22 = a3 + a2 C3",
+        "  ᴴJ32 = 0",
+    ] {
+        assert!(three.lines().any(|l| l == line), "{line} in\n{three}");
+    }
+    let two = run(&[
+        "inspect".into(),
+        "robots/niku_example_6_4.toml".into(),
+        "--kinematics".into(),
+    ]);
+    for line in ["  px = l1 C1 + l2 C12", "  J12 = -l2 S12", "  J22 = l2 C12"] {
+        assert!(two.lines().any(|l| l == line), "{line} in\n{two}");
+    }
 }

@@ -5,14 +5,18 @@
 //!
 //! One entry point, [`dynamics_bench_function`], looks up a function by robot and name; every
 //! function has the signature [`Function`]; [`dynamics_bench_dof`] gives a robot's number of
-//! joints.
+//! joints. Beside the dynamics (`tau`, `M`, `g`, `C`, `h`), the kinematics: `fk` (the hand
+//! pose), `J` (the hand's Jacobian in base axes) and `JtF` (the joint torques for a wrench in
+//! base axes, `T = Jᵀ F`).
 
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
 use dynamics_runtime::Dynamics;
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
-/// and writes its output to `out`, row-major: n × n values for `M` and `C`, n for the others.
+/// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
+/// `[R | p]` for `fk`, 6 × n for `J`, n for the others. `JtF` reads the wrench
+/// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// Reads `N` values.
@@ -68,6 +72,29 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
         unsafe { output(out, R::default().bias_torques(&input(q), &input(qd))) }
     }
 
+    unsafe extern "C" fn hand_pose(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        let pose = R::default().hand_pose(&input(q));
+        let rows = core::array::from_fn(|i| {
+            let r = pose.rotation[i];
+            [r[0], r[1], r[2], pose.position[i]]
+        });
+        // SAFETY: the contract of `Function`.
+        unsafe { output_rows::<4, 3>(out, rows) }
+    }
+
+    unsafe extern "C" fn jacobian(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function`.
+        unsafe { output_rows(out, R::default().hand_jacobian_in_base(&input(q))) }
+    }
+
+    unsafe extern "C" fn statics(q: *const f64, _: *const f64, wrench: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (six values at `wrench`).
+        unsafe {
+            let tau = R::default().joint_torques_for_base_wrench(&input(q), &input(wrench));
+            output(out, tau);
+        }
+    }
+
     fn get(function: &[u8]) -> Option<Function> {
         Some(match function {
             b"tau" => Self::tau,
@@ -75,6 +102,9 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
             b"g" => Self::gravity,
             b"C" => Self::coriolis,
             b"h" => Self::bias,
+            b"fk" => Self::hand_pose,
+            b"J" => Self::jacobian,
+            b"JtF" => Self::statics,
             _ => return None,
         })
     }
@@ -85,9 +115,21 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
 /// # Safety
 /// `out` points to room for `N × N` `f64`s.
 unsafe fn output_matrix<const N: usize>(out: *mut f64, m: [[f64; N]; N]) {
+    // SAFETY: the caller's contract.
+    unsafe { output_rows(out, m) }
+}
+
+/// Writes the `ROWS` rows of `COLUMNS` values one after the other.
+///
+/// # Safety
+/// `out` points to room for `ROWS × COLUMNS` `f64`s.
+unsafe fn output_rows<const COLUMNS: usize, const ROWS: usize>(
+    out: *mut f64,
+    m: [[f64; COLUMNS]; ROWS],
+) {
     for (i, row) in m.into_iter().enumerate() {
-        // SAFETY: row i goes to out[i N .. (i + 1) N], within the caller's room.
-        unsafe { output(out.add(i * N), row) }
+        // SAFETY: row i goes to out[i COLUMNS .. (i + 1) COLUMNS], within the caller's room.
+        unsafe { output(out.add(i * COLUMNS), row) }
     }
 }
 
@@ -119,7 +161,8 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
     })
 }
 
-/// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`) of `robot`
+/// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`, or `fk`, `J`,
+/// `JtF`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
@@ -154,7 +197,7 @@ mod tests {
     use super::*;
     use dynamics_bench::{samples, Sample, ROBOTS};
 
-    const FUNCTIONS: [&str; 5] = ["tau", "M", "g", "C", "h"];
+    const FUNCTIONS: [&str; 8] = ["tau", "M", "g", "C", "h", "fk", "J", "JtF"];
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -194,6 +237,17 @@ mod tests {
             "g" => r.gravity_torques(&s.q).to_vec(),
             "C" => rows(r.coriolis_matrix(&s.q, &s.qd)),
             "h" => r.bias_torques(&s.q, &s.qd).to_vec(),
+            "fk" => {
+                let pose = r.hand_pose(&s.q);
+                (0..3)
+                    .flat_map(|i| [pose.rotation[i].as_slice(), &[pose.position[i]]].concat())
+                    .collect()
+            }
+            "J" => r.hand_jacobian_in_base(&s.q).concat(),
+            "JtF" => {
+                let wrench = core::array::from_fn(|i| s.qdd[i]);
+                r.joint_torques_for_base_wrench(&s.q, &wrench).to_vec()
+            }
             _ => unreachable!(),
         }
     }

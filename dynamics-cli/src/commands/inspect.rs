@@ -1,9 +1,10 @@
-//! `dynamics inspect ROBOT [--latex]`: the equations of motion in the book's notation.
+//! `dynamics inspect ROBOT [--latex] [--kinematics]`: the equations of motion, or the hand pose
+//! and Jacobians, in the book's notation.
 
 use super::{load, Failure};
 use crate::args::Inspect;
 use dynamics_codegen::derive;
-use dynamics_codegen::inspect::{inspect, Format, Limits};
+use dynamics_codegen::inspect::{inspect, inspect_kinematics, Format, Limits};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
@@ -13,5 +14,10 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
     } else {
         Format::Text
     };
-    Ok(inspect(&eq, &robot, Limits::UNBOUNDED).render(format))
+    let inspection = if args.kinematics {
+        inspect_kinematics(&eq, &robot, Limits::UNBOUNDED)
+    } else {
+        inspect(&eq, &robot, Limits::UNBOUNDED)
+    };
+    Ok(inspection.render(format))
 }

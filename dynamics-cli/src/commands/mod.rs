@@ -6,12 +6,12 @@ mod eval;
 mod inspect;
 mod stats;
 
-use crate::args::{Cli, Command, RobotFile};
+use crate::args::{Cli, Command, RobotFile, Tool};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
 use dynamics_codegen::check;
 use dynamics_codegen::front;
-use dynamics_codegen::model::Robot;
+use dynamics_codegen::model::{Placement, Robot, Value};
 use dynamics_codegen::Equations;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
@@ -69,6 +69,10 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
     } else {
         front::load(path, &text).map_err(|e| Failure::File(at(&e)))?
     };
+    let mut loaded = loaded;
+    if let Some(tool) = &robot.tool {
+        loaded.robot.tool = Some(tool_placement(path, tool, loaded.robot.tool.is_some())?);
+    }
     let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
         .iter()
         .map(|problem| loaded.describe(path, problem))
@@ -78,6 +82,26 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
     } else {
         Err(Failure::File(problems.join("\ndynamics: ")))
     }
+}
+
+/// `--tool x,y,z,roll,pitch,yaw` as the robot's tool, refused where the file has one: a URDF's
+/// hand frame is its tip link (choose it with `--tip`), and a description's own `tool` would be
+/// overridden unseen.
+fn tool_placement(path: &str, tool: &Tool, declared: bool) -> Result<Placement, Failure> {
+    let message = if path.ends_with(".urdf") {
+        format!("--tool: the hand frame of `{path}` is its tip link; choose it with --tip")
+    } else if declared {
+        format!("--tool: `{path}` declares a `tool` already")
+    } else {
+        let [x, y, z, roll, pitch, yaw] = tool.0.map(Value::from_f64);
+        return Ok(Placement {
+            xyz: [x, y, z],
+            rpy: [roll, pitch, yaw],
+        });
+    };
+    Err(Failure::Usage(
+        Cli::command().error(ErrorKind::ArgumentConflict, message),
+    ))
 }
 
 /// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for.

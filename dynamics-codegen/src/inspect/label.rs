@@ -18,16 +18,26 @@ pub(super) enum Quantity {
     Friction,
     /// The joint torque or force `T_i` (eq. 6.46).
     Torque,
+    /// An entry of the hand pose `[n o a p]` (`nx`, …, `pz`; joints = [row, column]).
+    HandPose,
+    /// The hand's Jacobian in the base frame, `J_ij` (row i of dx … δz, joint j).
+    JacobianInBase,
+    /// The book's ᴴJ, the hand's Jacobian in the hand frame (eq. 6.64).
+    JacobianInHand,
 }
 
 impl Quantity {
     /// The letter of its name in the book.
-    fn letter(self) -> char {
+    fn letter(self, latex: bool) -> &'static str {
         match self {
-            Quantity::Inertia | Quantity::Christoffel | Quantity::Gravity => 'D',
-            Quantity::Coriolis => 'C',
-            Quantity::Friction => 'F',
-            Quantity::Torque => 'T',
+            Quantity::Inertia | Quantity::Christoffel | Quantity::Gravity => "D",
+            Quantity::Coriolis => "C",
+            Quantity::Friction => "F",
+            Quantity::Torque => "T",
+            Quantity::HandPose => "", // named per entry (`nx`) by `Label::render`
+            Quantity::JacobianInBase => "J",
+            Quantity::JacobianInHand if latex => "{}^{H}J",
+            Quantity::JacobianInHand => "ᴴJ",
         }
     }
 
@@ -40,6 +50,9 @@ impl Quantity {
             Quantity::Gravity => "Gravity D_i (eq. 6.45), with joint springs",
             Quantity::Friction => "Joint friction F_i, in T_i: viscous θi', Coulomb sgn(θi') (0 at rest) or tanh(θi'/εi) (εi: joint i's smoothing velocity), offset",
             Quantity::Torque => "Joint torques and forces T_i (eq. 6.46)",
+            Quantity::HandPose => "Hand pose, the base frame's T_H = A1 ⋯ An (and the tool) = [n o a p]: rotation columns n, o, a and position p",
+            Quantity::JacobianInBase => "Hand Jacobian J_ij in the base frame: rows i = dx, dy, dz, δx, δy, δz (the hand's velocity and angular velocity), column j = joint j",
+            Quantity::JacobianInHand => "Hand Jacobian ᴴJ_ij in the hand frame (eq. 6.64): rows i = dx, dy, dz, δx, δy, δz in the hand's axes, column j = joint j",
         }
     }
 }
@@ -73,9 +86,16 @@ impl Label {
 
     /// The name as `printer` writes it.
     pub(super) fn render(&self, printer: &Printer<'_>) -> String {
+        if self.quantity == Quantity::HandPose {
+            // The book's `n_x` … `p_z`: column letter, row axis.
+            let column = ["n", "o", "a", "p"][self.joints[1]];
+            let row = ["x", "y", "z"][self.joints[0]];
+            let sep = if printer.latex() { "_" } else { "" };
+            return format!("{column}{sep}{row}");
+        }
         let name = format!(
             "{}{}",
-            self.quantity.letter(),
+            self.quantity.letter(printer.latex()),
             printer.indices(&self.joints)
         );
         if !self.actuator_inertia {
@@ -113,6 +133,14 @@ mod tests {
         let christoffel = Label::new(Quantity::Christoffel, &[0, 1, 0]);
         assert_eq!(christoffel.render(&text), "D121");
         assert_eq!(Label::new(Quantity::Torque, &[0]).render(&text), "T1");
+        assert_eq!(Label::new(Quantity::HandPose, &[2, 1]).render(&text), "oz");
+        assert_eq!(
+            Label::new(Quantity::HandPose, &[0, 3]).render(&latex),
+            "p_x"
+        );
+        let hand = Label::new(Quantity::JacobianInHand, &[5, 1]);
+        assert_eq!(hand.render(&text), "ᴴJ62");
+        assert_eq!(hand.render(&latex), "{}^{H}J_{62}");
         let ten = [JointKind::Revolute; 10];
         let wide = Printer {
             format: Format::Text,

@@ -45,9 +45,11 @@ use crate::trace::Equations;
 use expand::Expander;
 use sections::Section;
 
-/// The equations of motion of a robot, ready to print.
+/// The equations of motion of a robot, or its kinematics, ready to print.
 pub struct Inspection {
     name: String,
+    /// Whether these are the kinematics ([`inspect_kinematics`]).
+    kinematics: bool,
     kinds: Vec<JointKind>,
     offsets: bool,
     sections: Vec<Section>,
@@ -60,9 +62,26 @@ pub fn inspect(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
     let mut expander = Expander::new(eq, limits);
     Inspection {
         name: robot.name.clone(),
+        kinematics: false,
         kinds: eq.kinds.clone(),
         offsets: eq.angle_offsets.iter().any(Option::is_some),
         sections: sections::sections(&mut expander, eq, robot),
+        limits,
+    }
+}
+
+/// The hand pose `[n o a p]` and the hand's Jacobians (in the base frame and ᴴJ), expanded and
+/// arranged as [`inspect`] does the equations of motion: the book's chapter 3 forms
+/// (`nx = C1 C23 …`). For the command-line tool only, so that the derive does not expand them.
+#[must_use]
+pub fn inspect_kinematics(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
+    let mut expander = Expander::new(eq, limits);
+    Inspection {
+        name: robot.name.clone(),
+        kinematics: true,
+        kinds: eq.kinds.clone(),
+        offsets: eq.angle_offsets.iter().any(Option::is_some),
+        sections: sections::kinematic_sections(&mut expander, eq),
         limits,
     }
 }

@@ -32,13 +32,18 @@ impl Inspection {
             names.join(", ")
         };
         let mut out = String::new();
+        let what = if self.kinematics {
+            "hand pose and Jacobians"
+        } else {
+            "equations of motion"
+        };
         let _ = writeln!(
             out,
-            "{comment}{}: equations of motion in the notation of Niku, Introduction to Robotics, ch. 6",
+            "{comment}{}: {what} in the notation of Niku, Introduction to Robotics, ch. 6",
             self.name
         );
         let mut variables = joints("");
-        if !p.latex() {
+        if !p.latex() && !self.kinematics {
             // Primes, not the book's dots (see `print`): named here, as the book never does.
             let _ = write!(
                 variables,

@@ -101,3 +101,38 @@ fn inertia(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Entry> {
     }
     entries
 }
+
+/// The hand pose `[n o a p]` column by column (`nx`, `ny`, `nz`, `ox`, …), and the hand's
+/// Jacobian in the base frame and in the hand frame (ᴴJ), row by row.
+pub(super) fn kinematic_sections(x: &mut Expander<'_>, eq: &Equations) -> Vec<Section> {
+    let k = &eq.kinematics;
+    let pose = (0..4)
+        .flat_map(|column| (0..3).map(move |row| (row, column)))
+        .map(|(row, column)| Entry {
+            labels: vec![Label::new(Quantity::HandPose, &[row, column])],
+            value: x.terms(k.hand_pose[row][column]),
+        })
+        .collect();
+    let mut jacobian = |quantity, rows: &[Vec<_>]| {
+        let mut entries = Vec::new();
+        for (i, row) in rows.iter().enumerate() {
+            for (j, &id) in row.iter().enumerate() {
+                entries.push(Entry {
+                    labels: vec![Label::new(quantity, &[i, j])],
+                    value: x.terms(id),
+                });
+            }
+        }
+        Section { quantity, entries }
+    };
+    let in_base = jacobian(Quantity::JacobianInBase, &k.jacobian_in_base);
+    let in_hand = jacobian(Quantity::JacobianInHand, &k.jacobian_in_hand);
+    vec![
+        Section {
+            quantity: Quantity::HandPose,
+            entries: pose,
+        },
+        in_base,
+        in_hand,
+    ]
+}
