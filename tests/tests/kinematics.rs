@@ -154,7 +154,8 @@ fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
 
 /// Against Pinocchio 4.1.0 (`data/kinematics/`, made by its `make.py`): the hand's placement,
 /// its Jacobian in `LOCAL_WORLD_ALIGNED` and `LOCAL`, and its classical acceleration at
-/// `q̈ = 0` in both, to 1e-10.
+/// `q̈ = 0` in both, to 1e-10; and the statics against the torques that hold a wrench applied as
+/// an external load, `rnea(q, q̇, q̈) − rnea(q, q̇, q̈, fext)` (field `tau_external`).
 fn pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) {
     let path = format!("{}/data/kinematics/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let data: serde_json::Value =
@@ -166,7 +167,7 @@ fn pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) {
         };
         v.as_array().expect("array").iter().flat_map(flat).collect()
     };
-    let mut worst = 0.0f64;
+    let (mut worst, mut worst_load) = (0.0f64, 0.0f64);
     for s in data["samples"].as_array().expect("samples") {
         let q: [f64; N] = numbers(&s["q"]).try_into().expect("q");
         let qd: [f64; N] = numbers(&s["qd"]).try_into().expect("qd");
@@ -199,12 +200,53 @@ fn pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) {
                 numbers(&s["bias_local"]),
             ),
         ];
-        for (what, got, want) in checks {
+        let loads = external_loads(robot, &q, s, &numbers);
+        for (what, got, want) in checks.into_iter().chain(loads) {
             assert_close(&format!("{name}: {what}"), &got, &want, 1e-10);
-            worst = worst.max(scaled_error(&got, &want));
+            let e = scaled_error(&got, &want);
+            worst = worst.max(e);
+            if what.contains("load") {
+                worst_load = worst_load.max(e);
+            }
         }
     }
-    eprintln!("{name}: worst scaled error against Pinocchio {worst:.1e}");
+    eprintln!(
+        "{name}: worst scaled error against Pinocchio {worst:.1e} (external load {worst_load:.1e})"
+    );
+}
+
+type Check = (&'static str, Vec<f64>, Vec<f64>);
+
+/// `T = ᴴJᵀ ᴴF` for the sample's hand-frame wrench, and `T = Jᵀ F` for the same wrench turned
+/// into base axes, `[R f; R m]` with Pinocchio's hand rotation `R` (the moment stays about the
+/// hand's origin), both against Pinocchio's `tau_external`.
+fn external_loads<R: Dynamics<N>, const N: usize>(
+    robot: &R,
+    q: &[f64; N],
+    sample: &serde_json::Value,
+    numbers: &dyn Fn(&serde_json::Value) -> Vec<f64>,
+) -> [Check; 2] {
+    let wrench: [f64; 6] = numbers(&sample["wrench"]).try_into().expect("wrench");
+    let rotation = numbers(&sample["rotation"]);
+    let in_base: [f64; 6] = core::array::from_fn(|i| {
+        let (half, row) = (i / 3 * 3, i % 3);
+        (0..3)
+            .map(|k| rotation[3 * row + k] * wrench[half + k])
+            .sum()
+    });
+    let want = numbers(&sample["tau_external"]);
+    [
+        (
+            "ᴴJᵀ F = τ of the load",
+            robot.joint_torques_for_hand_wrench(q, &wrench).to_vec(),
+            want.clone(),
+        ),
+        (
+            "Jᵀ F in base = τ of the load",
+            robot.joint_torques_for_base_wrench(q, &in_base).to_vec(),
+            want,
+        ),
+    ]
 }
 
 #[test]

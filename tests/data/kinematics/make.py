@@ -10,7 +10,16 @@ Transz(d), with the last row's Transx(a) Rotx(alpha) as the placement of the han
 OP_FRAME, "hand"). At 10 seeded samples of (q, qd) it records the hand's placement
 (framesForwardKinematics), its Jacobian (computeJointJacobians, getFrameJacobian) in LOCAL and
 LOCAL_WORLD_ALIGNED, and its classical acceleration at qdd = 0
-(getFrameClassicalAcceleration, LOCAL and LOCAL_WORLD_ALIGNED): J̇ q̇. Writes <robot>.json here.
+(getFrameClassicalAcceleration, LOCAL and LOCAL_WORLD_ALIGNED): J̇ q̇.
+
+External load: each sample also has a wrench F = [fx, fy, fz, mx, my, mz] ("wrench", in the hand
+frame's axes, moment about its origin; from a second seeded generator, so that q and qd are those
+drawn without it) and qdd, and records tau_external = rnea(q, qd, qdd) - rnea(q, qd, qdd, fext),
+fext applying F (expressed in the last joint's frame, frame.placement.act) to the last joint:
+Pinocchio's fext are what the environment applies on the robot, so the difference is the torque
+that holds F. The bodies get seeded random inertias (the D-H model has none), which cancel in the
+difference. The script asserts tau_external = Jᵀ F with getFrameJacobian(LOCAL) to 1e-12.
+Writes <robot>.json here.
 """
 
 import json
@@ -70,17 +79,49 @@ def sample(model, data, fid, q, qd):
     return out
 
 
+def give_inertias(model, rng):
+    """Seeded random bodies: RNEA then has real work to do; they cancel in tau_external."""
+    for i in range(1, model.njoints):
+        root = rng.uniform(-1, 1, (3, 3))
+        rotational = root @ root.T + 0.1 * np.eye(3)
+        model.inertias[i] = pin.Inertia(rng.uniform(0.5, 5), rng.uniform(-0.2, 0.2, 3), rotational)
+
+
+def external_load(model, data, fid, q, qd, rng):
+    """The wrench F in the hand frame and the joint torques that hold it, by RNEA with fext."""
+    wrench = rng.uniform(-5, 5, 6)
+    qdd = rng.uniform(-2, 2, model.nv)
+    frame = model.frames[fid]
+    fext = [pin.Force.Zero() for _ in range(model.njoints)]
+    fext[frame.parentJoint] = frame.placement.act(pin.Force(wrench))
+    free = pin.rnea(model, data, q, qd, qdd).copy()
+    loaded = pin.rnea(model, data, q, qd, qdd, fext).copy()
+    tau_external = free - loaded
+    pin.computeJointJacobians(model, data, q)
+    pin.updateFramePlacements(model, data)
+    by_jacobian = pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL).T @ wrench
+    gap = np.max(np.abs(tau_external - by_jacobian))
+    assert gap <= 1e-12 * max(1.0, np.max(np.abs(by_jacobian))), gap
+    fields = {"wrench": wrench.tolist(), "qdd": qdd.tolist(), "tau_external": tau_external.tolist()}
+    return fields, gap
+
+
 def main():
     rng = np.random.default_rng(17)
+    load_rng = np.random.default_rng(1717)
     for path in ROBOTS:
         desc = json.loads(path.read_text())
         model = model_from_dh(desc)
+        give_inertias(model, load_rng)
         data = model.createData()
         fid = model.getFrameId("hand")
-        samples = [
-            sample(model, data, fid, rng.uniform(-3, 3, model.nq), rng.uniform(-2, 2, model.nv))
-            for _ in range(10)
-        ]
+        samples, worst_gap = [], 0.0
+        for _ in range(10):
+            q, qd = rng.uniform(-3, 3, model.nq), rng.uniform(-2, 2, model.nv)
+            samples.append(sample(model, data, fid, q, qd))
+            fields, gap = external_load(model, data, fid, q, qd, load_rng)
+            samples[-1].update(fields)
+            worst_gap = max(worst_gap, gap)
         name = path.stem if path.parent.name == "robots" else path.parent.name
         out = {
             "robot": str(path.relative_to(DATA)),
@@ -88,7 +129,7 @@ def main():
             "samples": samples,
         }
         (HERE / f"{name}.json").write_text(json.dumps(out, indent=1) + "\n")
-        print(name, len(samples))
+        print(name, len(samples), f"samples; worst |tau_external - J^T F| {worst_gap:.1e}")
 
 
 if __name__ == "__main__":
