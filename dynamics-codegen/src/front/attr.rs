@@ -58,6 +58,58 @@ pub(super) struct Attrs {
     pub tool: Option<[Spanned; 6]>,
 }
 
+impl Attrs {
+    /// Whether the attribute gives `key`, one of the keys a description file or a URDF
+    /// replaces.
+    fn gives(&self, key: &str) -> bool {
+        match key {
+            "file" => self.file.is_some(),
+            "gravity" => self.gravity.is_some(),
+            "dh" => self.dh.is_some(),
+            "joints" => self.joints.is_some(),
+            "link" => !self.links.is_empty(),
+            "convention" => self.convention.is_some(),
+            "tool" => self.tool.is_some(),
+            _ => unreachable!("not a key of the robot's description: {key}"),
+        }
+    }
+
+    /// An error on the `source` string for each of `keys` the attribute also gives, since
+    /// the source describes the whole robot; `hint` adds to a key's message.
+    pub(super) fn refuse_beside(
+        &self,
+        source: &Source,
+        keys: &[&str],
+        hint: fn(&str) -> &'static str,
+        errors: &mut Errors,
+    ) {
+        let Source {
+            key: name,
+            at,
+            called,
+        } = source;
+        for key in keys.iter().filter(|key| self.gives(key)) {
+            errors.push(
+                at.span(),
+                format!(
+                    "`{key}` cannot be combined with `{name}`: {called} describes the whole robot{}",
+                    hint(key)
+                ),
+            );
+        }
+    }
+}
+
+/// A description of the whole robot named in the attribute: `file = ".."` or `urdf = ".."`.
+pub(super) struct Source<'a> {
+    /// Its key, `file` or `urdf`.
+    pub key: &'static str,
+    /// The string naming it.
+    pub at: &'a LitStr,
+    /// What messages call it, `the file`.
+    pub called: &'static str,
+}
+
 /// What the keys of `#[dynamics(...)]` are called in messages.
 const ATTRIBUTE: &str = "dynamics attribute";
 /// The error for `dh` and `joints` both given, on the second.

@@ -42,7 +42,14 @@ pub(super) fn robot_from_attrs(
             Vec::new()
         }
         (Some((rows, table_span)), _) => {
-            check_table_size(rows, *table_span, &attrs.links, reader.errors);
+            let spans: Vec<Span> = rows.iter().map(|(at, _)| *at).collect();
+            let list = JointList {
+                spans: &spans,
+                span: *table_span,
+                empty: "the D-H table is empty: give one row `[θ, d, a, α]` per joint",
+                counted: |n| format!("the D-H table has {n} rows"),
+            };
+            check_joint_count(&list, &attrs.links, reader.errors);
             rows.iter()
                 .enumerate()
                 .map(|(i, row)| reader.joint(i + 1, row, attrs, span))
@@ -71,36 +78,43 @@ pub(super) fn tool(reader: &mut Reader, attrs: &Attrs) -> Option<Placement> {
     })
 }
 
-/// Errors for an empty table, one with too many rows, and a number of `link(...)` entries
-/// that is not the number of rows.
-fn check_table_size(rows: &[DhRowAttr], table_span: Span, links: &[LinkAttr], errors: &mut Errors) {
-    if rows.is_empty() {
-        errors.push(
-            table_span,
-            "the D-H table is empty: give one row `[θ, d, a, α]` per joint",
-        );
+/// A list of joints in the attribute, as the count errors name it: a D-H table's rows or a
+/// `joints = [..]` list.
+pub(super) struct JointList<'a> {
+    /// Each joint's tokens.
+    pub spans: &'a [Span],
+    /// The list's brackets.
+    pub span: Span,
+    /// The error for an empty list.
+    pub empty: &'static str,
+    /// How the count is said: `the D-H table has 3 rows`, `3 joints are given`.
+    pub counted: fn(usize) -> String,
+}
+
+/// Errors for an empty list of joints, one with too many, and a number of `link(...)` entries
+/// that is not the number of joints.
+pub(super) fn check_joint_count(list: &JointList, links: &[LinkAttr], errors: &mut Errors) {
+    let n = list.spans.len();
+    if n == 0 {
+        errors.push(list.span, list.empty);
     }
-    if let Some((row_span, _)) = rows.get(check::MAX_JOINTS) {
+    if let Some(at) = list.spans.get(check::MAX_JOINTS) {
         errors.push(
-            *row_span,
+            *at,
             format!(
-                "the D-H table has {} rows; at most {} joints are supported (the generated code \
-                 grows as n³)",
-                rows.len(),
+                "{}; at most {} joints are supported (the generated code grows as n³)",
+                (list.counted)(n),
                 check::MAX_JOINTS
             ),
         );
     }
-    if !rows.is_empty() && rows.len() != links.len() {
-        let at = links
-            .get(rows.len())
-            .and_then(|l| l.span)
-            .unwrap_or(table_span);
+    if n != 0 && n != links.len() {
+        let at = links.get(n).and_then(|l| l.span).unwrap_or(list.span);
         errors.push(
             at,
             format!(
-                "the D-H table has {} rows but {} `link(...)` entries are given: give one per joint",
-                rows.len(),
+                "{} but {} `link(...)` entries are given: give one per joint",
+                (list.counted)(n),
                 links.len()
             ),
         );

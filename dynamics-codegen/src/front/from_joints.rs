@@ -3,11 +3,9 @@
 //! robot's own modified D-H table by [`lower_frames`], whose problems go on the joint's tokens.
 
 use super::angle::unitless_angle;
-use super::attr::{Attrs, LinkAttr};
+use super::attr::Attrs;
 use super::attr_joints::JointAttr;
-use super::errors::Errors;
-use super::from_attrs::Reader;
-use crate::check;
+use super::from_attrs::{check_joint_count, JointList, Reader};
 use crate::model::{lower_frames, AxisFrame, Convention, Joint, Placement, Pose, Robot, Value};
 use proc_macro2::Span;
 
@@ -21,7 +19,14 @@ pub(super) fn robot(
     reader: &mut Reader,
 ) -> Robot {
     let span = input.ident.span();
-    check_count(joints, *list_span, &attrs.links, reader.errors);
+    let spans: Vec<Span> = joints.iter().map(|j| j.span).collect();
+    let list = JointList {
+        spans: &spans,
+        span: *list_span,
+        empty: "`joints` is empty: give one `revolute(..)` or `prismatic(..)` per joint",
+        counted: |n| format!("{n} joints are given"),
+    };
+    check_joint_count(&list, &attrs.links, reader.errors);
     if let Some((_, at)) = attrs.convention {
         reader.errors.push(
             at,
@@ -97,40 +102,5 @@ fn joint(reader: &mut Reader, n: usize, j: &JointAttr, attrs: &Attrs, span: Span
             axis,
         }),
         link_pose: Pose::identity(),
-    }
-}
-
-/// Errors for an empty list, one with too many joints, and a number of `link(...)` entries
-/// that is not the number of joints.
-fn check_count(joints: &[JointAttr], list_span: Span, links: &[LinkAttr], errors: &mut Errors) {
-    if joints.is_empty() {
-        errors.push(
-            list_span,
-            "`joints` is empty: give one `revolute(..)` or `prismatic(..)` per joint",
-        );
-    }
-    if let Some(j) = joints.get(check::MAX_JOINTS) {
-        errors.push(
-            j.span,
-            format!(
-                "{} joints are given; at most {} are supported (the generated code grows as n³)",
-                joints.len(),
-                check::MAX_JOINTS
-            ),
-        );
-    }
-    if !joints.is_empty() && joints.len() != links.len() {
-        let at = links
-            .get(joints.len())
-            .and_then(|l| l.span)
-            .unwrap_or(list_span);
-        errors.push(
-            at,
-            format!(
-                "{} joints are given but {} `link(...)` entries: give one per joint",
-                joints.len(),
-                links.len()
-            ),
-        );
     }
 }

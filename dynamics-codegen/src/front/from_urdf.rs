@@ -3,13 +3,22 @@
 //! [`super::load_urdf`], then checked as a description file is. Every error goes on the
 //! `urdf = "..."` string, with the file's name, line and column in the message.
 
-use super::attr::Attrs;
+use super::attr::{Attrs, Source};
 use super::errors::Errors;
 use super::fields::{check_names, Field};
 use super::from_file::{problems, read_relative};
 use super::urdf::{load_urdf, Chain};
 use crate::model::{mat_vec, transpose, Robot, Value};
 use syn::LitStr;
+
+/// Why `tool` is refused beside a URDF.
+fn tool_hint(key: &str) -> &'static str {
+    if key == "tool" {
+        " (its `tip` link is the hand frame: choose the tip)"
+    } else {
+        ""
+    }
+}
 
 /// The robot of the URDF file `urdf = "..."` names; `gravity = [..]` replaces its default
 /// `[0, 0, −9.81]` (in the base link's frame).
@@ -20,24 +29,13 @@ pub(super) fn robot_from_urdf(
     errors: &mut Errors,
     tracked: &mut Option<String>,
 ) -> Option<Robot> {
-    for (present, what) in [
-        (attrs.file.is_some(), "file"),
-        (attrs.dh.is_some(), "dh"),
-        (attrs.joints.is_some(), "joints"),
-        (!attrs.links.is_empty(), "link"),
-        (attrs.convention.is_some(), "convention"),
-        (attrs.tool.is_some(), "tool"),
-    ] {
-        if present {
-            errors.push(
-                urdf.span(),
-                format!(
-                    "`{what}` cannot be combined with `urdf`: the URDF file describes the whole robot{}",
-                    if what == "tool" { " (its `tip` link is the hand frame: choose the tip)" } else { "" }
-                ),
-            );
-        }
-    }
+    let source = Source {
+        key: "urdf",
+        at: urdf,
+        called: "the URDF file",
+    };
+    let keys = ["file", "dh", "joints", "link", "convention", "tool"];
+    attrs.refuse_beside(&source, &keys, tool_hint, errors);
     let (relative, text) = read_relative(urdf, errors, tracked)?;
     let (base, tip) = (
         attrs.base.as_ref().map(LitStr::value),

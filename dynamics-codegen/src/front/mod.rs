@@ -138,18 +138,13 @@ fn robot(
     }
     from_urdf::chain_without_urdf(attrs, errors);
     if let Some(file) = &attrs.file {
-        for (present, what) in [
-            (attrs.gravity.is_some(), "gravity"),
-            (attrs.dh.is_some(), "dh"),
-            (attrs.joints.is_some(), "joints"),
-            (!attrs.links.is_empty(), "link"),
-            (attrs.convention.is_some(), "convention"),
-            (attrs.tool.is_some(), "tool"),
-        ] {
-            if present {
-                errors.push(file.span(), format!("`{what}` cannot be combined with `file`: the file describes the whole robot"));
-            }
-        }
+        let source = attr::Source {
+            key: "file",
+            at: file,
+            called: "the file",
+        };
+        let keys = ["gravity", "dh", "joints", "link", "convention", "tool"];
+        attrs.refuse_beside(&source, &keys, |_| "", errors);
         let checked = attrs.check_inertia.unwrap_or(true);
         from_file::robot_from_file(file, checked, fields, errors, tracked_file)
     } else if read.parse_failed || !read.seen {
