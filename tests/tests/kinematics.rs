@@ -9,32 +9,9 @@ use dynamics_reference::nalgebra::{self, DMatrix, Matrix4};
 use dynamics_reference::{scaled_error, statics::joint_forces, Robot as Reference};
 use dynamics_runtime::{Dynamics, Pose};
 use dynamics_test_support::Rng;
-
-macro_rules! reference_robot {
-    ($name:ident, $file:literal $(, $key:ident = $value:tt)?) => {
-        #[derive(Dynamics)]
-        #[dynamics(file = $file $(, $key = $value)?)]
-        struct $name;
-    };
-}
-
-reference_robot!(
-    Puma560,
-    "data/reference/robots/puma560.json",
-    check_inertia = false
-);
-reference_robot!(
-    Stanford,
-    "data/reference/robots/stanford.json",
-    check_inertia = false
-);
-reference_robot!(Ur5, "data/reference/robots/ur5.json");
-reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json");
-reference_robot!(NikuTwoLink, "data/reference/robots/niku_2link.json");
-reference_robot!(Random1, "data/reference/robots/random1.json");
-reference_robot!(Random2, "data/reference/robots/random2.json");
-reference_robot!(Random5, "data/reference/robots/random5.json");
-reference_robot!(Panda, "data/panda/robot.json");
+use dynamics_tests::robots::{
+    NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford, Ur5,
+};
 
 const TOLERANCE: f64 = 1e-12;
 

@@ -6,40 +6,10 @@
 
 use dynamics_runtime::Dynamics;
 use dynamics_tests::reference::{self, Friction};
-
-macro_rules! reference_robot {
-    ($name:ident, $file:literal, $n:literal $(, $key:ident = $value:tt)?) => {
-        #[derive(Dynamics)]
-        #[dynamics(file = $file $(, $key = $value)?)]
-        struct $name;
-    };
-}
-
-// PUMA 560 links 1 and 3 and Stanford link 5, as published, break the triangle inequality of
-// principal moments of inertia; the reference data keep them.
-reference_robot!(
-    Puma560,
-    "data/reference/robots/puma560.json",
-    6,
-    check_inertia = false
-);
-reference_robot!(
-    Stanford,
-    "data/reference/robots/stanford.json",
-    6,
-    check_inertia = false
-);
-reference_robot!(Ur5, "data/reference/robots/ur5.json", 6);
-reference_robot!(NikuTwoLink, "data/reference/robots/niku_2link.json", 2);
-reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json", 2);
-reference_robot!(Random1, "data/reference/robots/random1.json", 2);
-reference_robot!(Random2, "data/reference/robots/random2.json", 3);
-reference_robot!(Random5, "data/reference/robots/random5.json", 6);
-reference_robot!(Panda, "data/panda/robot.json", 7);
-// Joints given by placements and axes (`data/frames/make.py`), lowered to D-H tables.
-reference_robot!(Ur5Urdf, "data/frames/ur5_urdf.toml", 6);
-reference_robot!(Tilted, "data/frames/tilted.toml", 3);
-reference_robot!(General, "data/frames/general.toml", 6);
+use dynamics_tests::robots::{
+    General, NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford, Tilted,
+    Ur5, Ur5Urdf,
+};
 
 fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) -> f64 {
     reference::check(robot, file, Friction::None)

@@ -16,6 +16,7 @@ use dynamics_codegen::{derive, front, generate};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
 use dynamics_tests::reference::{check, flat, samples, vector, Friction, TOLERANCE};
+use dynamics_tests::robots::{PandaTwin, Ur5Twin};
 
 macro_rules! urdf_robot {
     ($name:ident, $file:literal, $base:literal, $tip:literal) => {
@@ -40,16 +41,6 @@ urdf_robot!(
     "base_link",
     "gripper_link"
 );
-
-/// The UR5 as a modified D-H table (`twins.py`).
-#[derive(Dynamics)]
-#[dynamics(file = "../robots/ur5_urdf_dh.toml")]
-struct Ur5Twin;
-
-/// The Panda, hand included, as Franka's modified D-H table (`twins.py`).
-#[derive(Dynamics)]
-#[dynamics(file = "../robots/panda_urdf_dh.toml")]
-struct PandaTwin;
 
 #[test]
 fn ur5_matches_pinocchio() {

@@ -4,19 +4,8 @@
 //! sample, τ, M, C, C·q̇ + g, g and both energies match to 1e-10 (scaled). The twins declare no
 //! friction, so τ is Pinocchio's. The URDF robots' own test is `urdf_robots.rs`.
 
-use dynamics_runtime::Dynamics;
 use dynamics_tests::reference::{check, Friction};
-
-/// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table.
-#[derive(Dynamics)]
-#[dynamics(file = "../robots/ur5_urdf_dh.toml")]
-struct Ur5Twin;
-
-/// The Panda of `robots/urdf/panda.urdf` (to panda_link8, the hand fixed to it) as Franka's
-/// modified D-H table.
-#[derive(Dynamics)]
-#[dynamics(file = "../robots/panda_urdf_dh.toml")]
-struct PandaTwin;
+use dynamics_tests::robots::{PandaTwin, Ur5Twin};
 
 #[test]
 fn ur5_twin_matches_pinocchio_on_the_urdf() {

@@ -1,0 +1,92 @@
+//! The robots of the reference data (`data/reference/`, `data/panda/`, `data/frames/`) and
+//! the D-H twins of two URDF robots (`robots/*_urdf_dh.toml`, made by `data/urdf/twins.py`),
+//! derived once for every test that compares them with the data. Paths are relative to this
+//! crate's `Cargo.toml`.
+
+use dynamics_runtime::Dynamics;
+
+/// A unit struct deriving the robot of a description file.
+macro_rules! robot {
+    ($(#[doc = $doc:literal])* $name:ident, $file:literal $(, $key:ident = $value:tt)?) => {
+        $(#[doc = $doc])*
+        #[derive(Dynamics)]
+        #[dynamics(file = $file $(, $key = $value)?)]
+        pub struct $name;
+    };
+}
+
+// PUMA 560 links 1 and 3 and Stanford link 5, as published, break the triangle inequality of
+// principal moments of inertia; the reference data keep them.
+robot!(
+    /// PUMA 560 (6 joints).
+    Puma560,
+    "data/reference/robots/puma560.json",
+    check_inertia = false
+);
+robot!(
+    /// The Stanford arm (6 joints, one prismatic).
+    Stanford,
+    "data/reference/robots/stanford.json",
+    check_inertia = false
+);
+robot!(
+    /// The Robotics Toolbox's UR5 (point masses).
+    Ur5,
+    "data/reference/robots/ur5.json"
+);
+robot!(
+    /// The book's two-link arm.
+    NikuTwoLink,
+    "data/reference/robots/niku_2link.json"
+);
+robot!(
+    /// The book's polar arm (revolute, prismatic).
+    NikuPolar,
+    "data/reference/robots/niku_polar.json"
+);
+robot!(
+    /// A random 2-joint robot.
+    Random1,
+    "data/reference/robots/random1.json"
+);
+robot!(
+    /// A random 3-joint robot.
+    Random2,
+    "data/reference/robots/random2.json"
+);
+robot!(
+    /// A random 6-joint robot.
+    Random5,
+    "data/reference/robots/random5.json"
+);
+robot!(
+    /// The Franka Emika Panda (7 joints).
+    Panda,
+    "data/panda/robot.json"
+);
+robot!(
+    /// A UR5 transcribed from its URDF as placements and axes.
+    Ur5Urdf,
+    "data/frames/ur5_urdf.toml"
+);
+robot!(
+    /// Three joints with tilted axes.
+    Tilted,
+    "data/frames/tilted.toml"
+);
+robot!(
+    /// Six joints with generic placements and axes.
+    General,
+    "data/frames/general.toml"
+);
+robot!(
+    /// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table.
+    Ur5Twin,
+    "../robots/ur5_urdf_dh.toml"
+);
+robot!(
+    /// The Panda of `robots/urdf/panda.urdf` (to panda_link8, the hand fixed to it) as Franka's
+    /// modified D-H table.
+    PandaTwin,
+    "../robots/panda_urdf_dh.toml"
+);
