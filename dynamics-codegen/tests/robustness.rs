@@ -1,38 +1,27 @@
 //! The derive never panics and never hangs: random token streams (mutations of valid inputs),
 //! random robot tables, random description files and hand-made adversarial inputs go through
 //! the front end and the generator (the library functions, not rustc). Each expansion runs on
-//! its own thread under `catch_unwind` and must finish within [`BOUND`]. The generator is
+//! its own thread under `catch_unwind` and must finish within `fuzz::BOUND`. The generator is
 //! deterministic (a fixed-seed generator), so a failure is reproducible; the case is printed.
+
+// Each test binary uses part of the shared module.
+#[allow(dead_code)]
+mod fuzz;
 
 use dynamics_codegen::{derive_dynamics, front};
 use dynamics_test_support::Rng;
-use std::sync::mpsc;
+use std::sync::LazyLock;
 use std::time::{Duration, Instant};
 
-/// Time allowed for one expansion. The largest inputs here (6 joints) expand in well under
-/// 0.1 s; the bound leaves room for a loaded 2-core machine.
-const BOUND: Duration = Duration::from_secs(10);
-
-/// Runs `f` on a thread: `Err` if it panicked or took longer than [`BOUND`].
+/// Runs `f` under `fuzz::bounded` (its own thread, a time bound): `Err` if it panicked; with
+/// the time it took.
 fn bounded<T: Send + 'static>(
     what: &str,
     f: impl FnOnce() -> T + Send + 'static,
 ) -> Result<(T, Duration), String> {
-    let (tx, rx) = mpsc::channel();
     let start = Instant::now();
-    // rustc runs proc macros on a thread with an 8 MiB stack; so does this test.
-    std::thread::Builder::new()
-        .stack_size(8 << 20)
-        .spawn(move || {
-            let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
-            let _ = tx.send(result);
-        })
-        .expect("thread");
-    match rx.recv_timeout(BOUND) {
-        Ok(Ok(value)) => Ok((value, start.elapsed())),
-        Ok(Err(_)) => Err(format!("panicked on:\n{what}")),
-        Err(_) => Err(format!("took more than {BOUND:?} on:\n{what}")),
-    }
+    let value = fuzz::bounded(what, f)?;
+    Ok((value, start.elapsed()))
 }
 
 /// Expands `source` (if it lexes) and checks that the result is code or a compile error.
@@ -69,20 +58,11 @@ const VALID: [&str; 3] = [
      struct One<T> where T: Copy { t: T }",
 ];
 
-const VOCABULARY: [&str; 52] = [
-    "gravity",
-    "dh",
-    "link",
-    "mass",
-    "com",
-    "inertia",
-    "actuator_inertia",
-    "spring",
-    "file",
-    "name",
-    "crate",
-    "convention",
-    "check_inertia",
+/// Every word a mutation puts in.
+static VOCABULARY: LazyLock<Vec<&str>> = LazyLock::new(|| fuzz::words(&OTHER_WORDS));
+
+/// Words a mutation puts in besides the attribute's keys (`fuzz::words`).
+const OTHER_WORDS: [&str; 39] = [
     "modified",
     "true",
     "false",

@@ -43,6 +43,7 @@ mod value;
 pub use errors::Errors;
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load, FileError, Loaded, Positions};
+pub use symbol::attribute_words;
 pub use urdf::{load_urdf, Chain};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 

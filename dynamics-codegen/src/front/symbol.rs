@@ -83,3 +83,18 @@ keys! {
         Viscous = "viscous", Coulomb = "coulomb", Offset = "offset", Smoothing = "smoothing",
     }
 }
+
+/// Every word the attribute's keys are written with, table after table: what a fuzzer
+/// mutating attributes should draw from, so that a new key is fuzzed as soon as it exists.
+pub fn attribute_words() -> impl Iterator<Item = &'static str> {
+    [
+        Key::NAMES,
+        JointType::NAMES,
+        JointKey::NAMES,
+        LinkKey::NAMES,
+        FrictionKey::NAMES,
+    ]
+    .into_iter()
+    .flatten()
+    .copied()
+}

@@ -2,6 +2,7 @@
 //! raise (`DYNAMICS_FUZZ_CASES`), each case on its own thread under a time bound, and the
 //! `compile_error!`s of an expansion with the position of their span.
 
+use dynamics_codegen::front;
 use proc_macro2::{TokenStream, TokenTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -11,6 +12,14 @@ use std::time::{Duration, Instant};
 /// Time allowed for one case. Cases run in milliseconds; the bound leaves room for a loaded
 /// 2-core machine, and is far below what a hang takes.
 pub const BOUND: Duration = Duration::from_secs(10);
+
+/// Words a mutation puts in: every word the attribute's keys are written with (so that a new
+/// key is fuzzed as soon as it exists), then `others`.
+pub fn words(others: &[&'static str]) -> Vec<&'static str> {
+    front::attribute_words()
+        .chain(others.iter().copied())
+        .collect()
+}
 
 /// A runner with a fixed seed (so that a failure is reproducible) and `default` cases, or the
 /// number in `DYNAMICS_FUZZ_CASES` for a long run.
@@ -33,8 +42,9 @@ pub fn runner(seed: u8, default: u32) -> TestRunner {
 
 static CASES: AtomicUsize = AtomicUsize::new(0);
 
-/// Runs `f` on a thread with rustc's 8 MiB proc-macro stack: `Err` if it panicked. A case that
-/// takes longer than [`BOUND`] fails the test at once (a hang is not worth shrinking).
+/// Runs `f` on a thread with rustc's 8 MiB proc-macro stack (rustc runs proc macros on such a
+/// thread): `Err` if it panicked. A case that takes longer than [`BOUND`] fails the test at
+/// once (a hang is not worth shrinking).
 pub fn bounded<T: Send + 'static>(
     what: &str,
     f: impl FnOnce() -> T + Send + 'static,
