@@ -29,6 +29,9 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pinocchio as pin
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from pinocchio_data import TOLERANCE, identities, quantities, rounded, samples, scaled_error  # noqa: E402
+
 SEED = 20261124
 N = 7
 GRAVITY = [0.0, 0.0, -9.81]
@@ -43,12 +46,6 @@ DH = [
     (0.0, math.pi / 2, 0.0),
     (0.088, math.pi / 2, 0.0),
 ]
-TOLERANCE = 1e-12
-
-
-def scaled_error(a, b):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
 
 
 def links_from_urdf(path):
@@ -121,51 +118,8 @@ def model_from_urdf(path):
     return model
 
 
-def samples(model, seed=SEED):
-    """20 states of `model`: all zero, q only, q and qd, then 17 random ones."""
-    n = model.nv
-    rng = np.random.default_rng(seed)
-    out = []
-    for k in range(20):
-        q = rng.uniform(-math.pi, math.pi, n)
-        qd = rng.uniform(-2.0, 2.0, n)
-        qdd = rng.uniform(-5.0, 5.0, n)
-        if k == 0:
-            q, qd, qdd = np.zeros(n), np.zeros(n), np.zeros(n)
-        elif k == 1:
-            qd, qdd = np.zeros(n), np.zeros(n)
-        elif k == 2:
-            qdd = np.zeros(n)
-        out.append((q, qd, qdd))
-    return out
-
-
-def quantities(model, q, qd, qdd):
-    data = model.createData()
-    tau = pin.rnea(model, data, q, qd, qdd).copy()
-    M = pin.crba(model, data, q)
-    M = np.triu(M) + np.triu(M, 1).T
-    h = pin.nonLinearEffects(model, data, q, qd).copy()
-    g = pin.computeGeneralizedGravity(model, data, q).copy()
-    C = pin.computeCoriolisMatrix(model, data, q, qd).copy()
-    ke = pin.computeKineticEnergy(model, data, q, qd)
-    pe = pin.computePotentialEnergy(model, data, q)
-    pin.forwardKinematics(model, data, q)
-    pin.updateFramePlacements(model, data)
-    pin.computeJointJacobians(model, data, q)
-    fid = model.getFrameId(f"link_{N}")
-    pose = data.oMf[fid].homogeneous.copy()
-    jac = pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).copy()
-    return dict(tau=tau, M=M, h=h, g=g, C=C, kinetic_energy=ke, potential_energy=pe,
-                ee_pose=pose, jacobian=jac)
-
-
 def check_identities(model, q, qd, qdd, x):
-    worst = 0.0
-    worst = max(worst, scaled_error(x["M"] @ qdd + x["h"], x["tau"]))
-    worst = max(worst, scaled_error(x["C"] @ qd + x["g"], x["h"]))
-    worst = max(worst, scaled_error(0.5 * qd @ x["M"] @ qd, x["kinetic_energy"]))
-    assert worst < TOLERANCE, f"identities: {worst:e}"
+    worst = identities(x, qd, qdd)
     # Central differences: Mdot = C + C^T, g = dP/dq.
     eps = 1e-6
     data = model.createData()
@@ -180,14 +134,6 @@ def check_identities(model, q, qd, qdd, x):
     return worst, fd
 
 
-def rounded(x):
-    if isinstance(x, np.ndarray):
-        return rounded(x.tolist())
-    if isinstance(x, list):
-        return [rounded(v) for v in x]
-    return float(f"{float(x):.15g}")
-
-
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -198,8 +144,8 @@ def main():
     urdf_data = urdf_model.createData()
     urdf_frame = urdf_model.getFrameId("panda_link7")
     out, worst_urdf, worst_id, worst_fd = [], 0.0, 0.0, 0.0
-    for q, qd, qdd in samples(model):
-        x = quantities(model, q, qd, qdd)
+    for q, qd, qdd in samples(N, np.random.default_rng(SEED)):
+        x = quantities(model, f"link_{N}", q, qd, qdd)
         # The same robot read from the URDF.
         worst_urdf = max(worst_urdf, scaled_error(pin.rnea(urdf_model, urdf_data, q, qd, qdd), x["tau"]))
         M = pin.crba(urdf_model, urdf_data, q)

@@ -68,10 +68,11 @@ def module(path, name):
     return m
 
 
-# The D-H Panda's script: its error measure, samples, identity checks and rounding serve here too.
+# The D-H Panda's script: its identity checks (with finite differences) serve here too.
 panda = module(os.path.join(ROOT, "tests", "data", "panda", "make.py"), "panda_make")
-scaled_error, check_identities, rounded = panda.scaled_error, panda.check_identities, panda.rounded
-samples = panda.samples
+check_identities = panda.check_identities
+sys.path.insert(0, os.path.join(ROOT, "tests", "data"))
+from pinocchio_data import quantities, rounded, samples, scaled_error, symmetric  # noqa: E402
 
 
 def write_json(path, value):
@@ -160,29 +161,6 @@ def load(root):
     return model
 
 
-def symmetric(M):
-    return np.triu(M) + np.triu(M, 1).T
-
-
-def quantities(model, tip, q, qd, qdd):
-    data = model.createData()
-    x = dict(
-        tau=pin.rnea(model, data, q, qd, qdd).copy(),
-        M=symmetric(pin.crba(model, data, q)),
-        h=pin.nonLinearEffects(model, data, q, qd).copy(),
-        g=pin.computeGeneralizedGravity(model, data, q).copy(),
-        C=pin.computeCoriolisMatrix(model, data, q, qd).copy(),
-        kinetic_energy=pin.computeKineticEnergy(model, data, q, qd),
-        potential_energy=pin.computePotentialEnergy(model, data, q),
-    )
-    pin.computeJointJacobians(model, data, q)
-    pin.updateFramePlacements(model, data)
-    fid = model.getFrameId(tip)
-    x["ee_pose"] = data.oMf[fid].homogeneous.copy()
-    x["jacobian"] = pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).copy()
-    return x
-
-
 def friction_torque(model, qd):
     """Viscous damping qd plus Coulomb friction sign(qd), sign(0) = 0."""
     return np.asarray(model.damping) * qd + np.asarray(model.friction) * np.sign(qd)
@@ -240,7 +218,7 @@ def make(name, file, base, tip):
     worst_id = worst_fd = worst_rebuild = 0.0
     change = {k: 0.0 for k in ("tau", "M", "C", "g", "kinetic_energy", "potential_energy")}
     out = []
-    for q, qd, qdd in samples(model, SEED):
+    for q, qd, qdd in samples(model.nv, np.random.default_rng(SEED)):
         x = quantities(model, tip, q, qd, qdd)
         ident, fd = check_identities(model, q, qd, qdd, x)
         worst_id, worst_fd = max(worst_id, ident), max(worst_fd, fd)
