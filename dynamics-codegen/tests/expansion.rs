@@ -28,6 +28,30 @@ fn expanding_twice_gives_identical_code() {
     }
 }
 
+/// Angles written as numbers within `model::QUARTER_TURN_TOLERANCE` of a quarter turn (1.5708,
+/// −3.14159, 1e-15) are those quarter turns, in a D-H table and a tool as in a URDF.
+#[test]
+fn dh_angles_near_quarter_turns_are_quarter_turns() {
+    let arm = |alpha1: &str, theta2: &str, alpha3: &str| {
+        expand(&format!(
+            "#[dynamics(
+                gravity = [0, 0, -9.81],
+                dh = [[q, 0.4, 0.1, {alpha1}], [q + {theta2}, 0, 0.5, 0], [0, q, 0, {alpha3}]],
+                tool = [0, 0, 0.1, {alpha3}, {theta2}, {alpha1}],
+                link(mass = 2, com = [0, 0.1, 0], inertia = [0.1, 0.2, 0.3, 0, 0, 0]),
+                link(mass = 1, com = [0.2, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]),
+                link(mass = 0.5, com = [0, 0, 0.1], inertia = [0.01, 0.01, 0.01, 0, 0, 0]),
+            )]
+            struct Arm;"
+        ))
+    };
+    let exact = arm("90 deg", "-pi", "0");
+    assert!(exact.contains("impl"), "{exact}");
+    assert_eq!(arm("1.5708", "-3.14159", "1e-15"), exact);
+    // 1e-4 rad is a turn meant: kept.
+    assert_ne!(arm("1.5709", "-3.14159", "1e-15"), exact);
+}
+
 #[test]
 fn errors_are_compile_errors_not_panics() {
     for source in [

@@ -10,7 +10,9 @@ use super::friction_attr::FrictionAttr;
 use super::from_joints;
 use super::value::Spanned;
 use crate::check;
-use crate::model::{Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value};
+use crate::model::{
+    snap_angle, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value,
+};
 use proc_macro2::Span;
 
 /// The robot the attributes describe; its errors go to `errors`.
@@ -71,10 +73,7 @@ pub(super) fn robot_from_attrs(
 pub(super) fn tool(reader: &mut Reader, attrs: &Attrs) -> Option<Placement> {
     attrs.tool.as_ref().map(|t| {
         let [x, y, z, roll, pitch, yaw] = reader.values(t);
-        Placement {
-            xyz: [x, y, z],
-            rpy: [roll, pitch, yaw],
-        }
+        Placement::written([x, y, z], [roll, pitch, yaw])
     })
 }
 
@@ -173,10 +172,11 @@ impl Reader<'_> {
             }
         }
         let kind = self.kind(n, *row_span, theta, d);
-        let theta = self.offset(theta);
+        // Angles near quarter turns (1.5708) are those quarter turns, as in frames and URDFs.
+        let theta = snap_angle(&self.offset(theta));
         let d = self.offset(d);
         let a = self.value(Some(a));
-        let alpha = self.value(Some(alpha));
+        let alpha = snap_angle(&self.value(Some(alpha)));
         let link = self.link(n, attrs.links.get(n - 1), attrs.check_inertia, span);
         Joint {
             kind,

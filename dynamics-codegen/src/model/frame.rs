@@ -149,6 +149,16 @@ fn axis_rotation(axis: usize, (s, c): (Value, Value)) -> Matrix {
 }
 
 impl Placement {
+    /// A placement as a user writes it: each angle within [`QUARTER_TURN_TOLERANCE`] of a
+    /// quarter turn taken as that quarter turn ([`snap_angle`]).
+    #[must_use]
+    pub fn written(xyz: [Value; 3], rpy: [Value; 3]) -> Self {
+        Placement {
+            xyz,
+            rpy: rpy.map(|angle| snap_angle(&angle)),
+        }
+    }
+
     /// The placement as a pose, `Trans(xyz) · Rz(yaw) Ry(pitch) Rx(roll)`, angles snapped with
     /// [`snap_angle`]; `Err(i)` if angle `i` (0 roll, 1 pitch, 2 yaw) names a struct field.
     pub fn pose(&self) -> Result<Pose, usize> {

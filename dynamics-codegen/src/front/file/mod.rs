@@ -164,6 +164,7 @@ pub fn load(path: &str, text: &str) -> Result<Loaded, FileError> {
 mod tests {
     use super::{from_json, from_toml, load};
     use crate::model::{Convention, JointKind};
+    use crate::symbolic::Number;
 
     #[test]
     fn json_and_toml_agree() {
@@ -191,6 +192,22 @@ mod tests {
         );
         assert_eq!(a.joints[0].mass, b.joints[0].mass);
         assert_eq!(a.joints[0].com, b.joints[0].com);
+    }
+
+    /// As in frames and URDFs, 1.5708 and −3.14159 are quarter turns; 1.5709 is not.
+    #[test]
+    fn dh_angles_near_quarter_turns_snap() {
+        let alpha = |written: &str| {
+            let toml = format!(
+                "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"prismatic\"\ntheta = -3.14159\n\
+                 alpha = {written}\nmass = 1\n"
+            );
+            let robot = from_toml(&toml, "x").unwrap();
+            assert_eq!(robot.joints[0].theta.pi_multiple(), Some(Number::int(-1)));
+            robot.joints[0].alpha.pi_multiple()
+        };
+        assert_eq!(alpha("1.5708"), Some(Number::ratio(1, 2).unwrap()));
+        assert_eq!(alpha("1.5709"), None);
     }
 
     #[test]

@@ -5,7 +5,9 @@ use super::{frames, FileError, Loaded};
 use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
-use crate::model::{Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value};
+use crate::model::{
+    snap_angle, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value,
+};
 use crate::symbolic::Number;
 use serde::Deserialize;
 
@@ -259,10 +261,7 @@ pub(super) fn convert(
     }
     let tool = file.tool.map(|t| {
         let [x, y, z, roll, pitch, yaw] = t.map(|v| v.0);
-        Placement {
-            xyz: [x, y, z],
-            rpy: [roll, pitch, yaw],
-        }
+        Placement::written([x, y, z], [roll, pitch, yaw])
     });
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
@@ -284,10 +283,11 @@ pub(super) fn convert(
         let frame = frames::frame(i, &j, frames_given, &mut deferred);
         joints.push(Joint {
             kind,
-            theta: value(j.theta.as_ref()),
+            // Angles near quarter turns (1.5708) are those quarter turns, as in frames and URDFs.
+            theta: snap_angle(&value(j.theta.as_ref())),
             d: value(j.d.as_ref()),
             a: value(j.a.as_ref()),
-            alpha: value(j.alpha.as_ref()),
+            alpha: snap_angle(&value(j.alpha.as_ref())),
             mass: j.mass.0,
             com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
             inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
