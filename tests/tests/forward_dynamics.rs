@@ -3,6 +3,8 @@
 //! * on the reference robots, compiled, in `f64` and `f32`: `forward_dynamics` of Pinocchio's
 //!   τ (the data files' `tau` = `rnea(q, q̇, q̈)`) is the sample's q̈; the round trip
 //!   `forward_dynamics(q, q̇, inverse_dynamics(q, q̇, q̈)) = q̈`; `M · M⁻¹ = I`;
+//! * against Pinocchio's `aba` and `computeMinverse` (`data/forward/`, made by its `make.py`)
+//!   at 1e-10, f64;
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
 //!   the round trip, and `M⁻¹` equal to nalgebra's inverse of the reference's M;
 //! * with friction: the round trip, and q̈ = M⁻¹(τ − C q̇ − g − f) with f by hand;
@@ -114,6 +116,45 @@ fn reference_robots() {
     check(&Random5, "reference/data/random5.json");
     check(&Panda, "panda/data.json");
     check(&General, "frames/general.json");
+}
+
+/// `forward_dynamics` and `mass_matrix_inverse` against `data/forward/<name>.json`; returns
+/// the worst scaled error.
+fn against_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) -> f64 {
+    let path = format!("{}/data/forward/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let samples = data["samples"].as_array().expect("samples");
+    assert_eq!(samples.len(), 10, "{name}");
+    let mut worst = 0.0f64;
+    for s in samples {
+        let (q, qd, tau) = (
+            vector::<N>(&s["q"]),
+            vector::<N>(&s["qd"]),
+            vector::<N>(&s["tau"]),
+        );
+        let qdd = robot.forward_dynamics(&q, &qd, &tau).expect("M ≻ 0");
+        let inverse = robot.mass_matrix_inverse(&q).expect("M ≻ 0");
+        let flat = |m: [[f64; N]; N]| m.iter().flatten().copied().collect::<Vec<f64>>();
+        worst = worst
+            .max(scaled_error(&qdd, &vector::<N>(&s["qdd"])))
+            .max(scaled_error(&flat(inverse), &flat(matrix::<N>(&s["Minv"]))));
+    }
+    println!("forward/{name}: {worst:.1e}");
+    assert!(worst < 1e-10, "{name}: {worst:e}");
+    worst
+}
+
+#[test]
+fn pinocchio_aba_and_minverse() {
+    against_pinocchio(&Puma560, "puma560");
+    against_pinocchio(&Stanford, "stanford");
+    against_pinocchio(&NikuTwoLink, "niku_2link");
+    against_pinocchio(&NikuPolar, "niku_polar");
+    against_pinocchio(&Random1, "random1");
+    against_pinocchio(&Random2, "random2");
+    against_pinocchio(&Random5, "random5");
+    against_pinocchio(&Panda, "panda");
 }
 
 #[test]
