@@ -64,6 +64,40 @@ pub enum Returns {
     Solution,
 }
 
+/// A family of methods, emitted in a module of its own with its own shared configuration and
+/// motion functions, so that code calling one family's methods never inlines another's: a
+/// controller that calls only `inverse_dynamics` compiles none of the kinematics.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Family {
+    /// M, C, g, τ, friction, energies.
+    Dynamics,
+    /// Poses, Jacobians, acceleration bias, statics.
+    Kinematics,
+}
+
+impl Family {
+    /// Every family, in the order the derive emits their modules.
+    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics];
+
+    /// The name of the module holding its generated functions.
+    #[must_use]
+    pub fn module(self) -> &'static str {
+        match self {
+            Family::Dynamics => "__dynamics",
+            Family::Kinematics => "__kinematics",
+        }
+    }
+
+    /// How `dynamics stats` names its shared functions: `(kinematic configuration)`.
+    #[must_use]
+    pub fn adjective(self) -> &'static str {
+        match self {
+            Family::Dynamics => "",
+            Family::Kinematics => "kinematic ",
+        }
+    }
+}
+
 /// The `Argument` of a row's argument name.
 macro_rules! argument {
     (q) => {
@@ -114,12 +148,23 @@ macro_rules! returns {
     };
 }
 
+/// The `Family` of a row's family name.
+macro_rules! family {
+    (dynamics) => {
+        Family::Dynamics
+    };
+    (kinematics) => {
+        Family::Kinematics
+    };
+}
+
 /// `enum Method` and its accessors from the table's rows.
 macro_rules! declare_method {
     ($(
         $(#[doc = $doc:literal])*
         fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
             variant: $variant:ident,
+            family: $family:ident,
             equation: $equation:expr,
             prefix: $prefix:literal,
             summary: $summary:literal,
@@ -142,6 +187,12 @@ macro_rules! declare_method {
             #[must_use]
             pub fn name(self) -> &'static str {
                 match self { $(Method::$variant => stringify!($name),)* }
+            }
+
+            /// The generated module it goes to.
+            #[must_use]
+            pub fn family(self) -> Family {
+                match self { $(Method::$variant => family!($family),)* }
             }
 
             /// Its arguments, in order.
@@ -255,23 +306,6 @@ impl Method {
                 .outputs()
                 .iter()
                 .any(|&id| !eq.graph.is_zero(id))
-    }
-
-    /// Whether it is one of the kinematic methods (poses, Jacobians, statics), which the
-    /// generated code keeps apart from the dynamics so that neither pays for the other.
-    #[must_use]
-    pub fn is_kinematic(self) -> bool {
-        matches!(
-            self,
-            Method::HandPose
-                | Method::LinkPoses
-                | Method::HandJacobianInBase
-                | Method::HandJacobianInHand
-                | Method::HandAccelerationBiasInBase
-                | Method::HandAccelerationBiasInHand
-                | Method::JointTorquesForHandWrench
-                | Method::JointTorquesForBaseWrench
-        )
     }
 
     /// The method called `name`.

@@ -9,6 +9,7 @@ macro_rules! declare_dynamics {
         $(#[doc = $doc:literal])*
         fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
             variant: $_variant:ident,
+            family: $_family:ident,
             equation: $_equation:expr,
             prefix: $_prefix:literal,
             summary: $_summary:literal,

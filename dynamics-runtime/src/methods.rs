@@ -12,6 +12,8 @@
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
 //         variant: Name,                 // the codegen enum's variant
+//         family: dynamics,              // the generated module it goes to (`Family`):
+//                                        // dynamics, kinematics
 //         equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if it has one
 //         prefix: "tau",                 // generated element names: tau3, m1_2, p
 //         summary: "…",                  // one-line doc of `dynamics emit`
@@ -33,6 +35,7 @@ macro_rules! for_each_method {
             /// diagonal. Symmetric positive definite.
             fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na {
                 variant: MassMatrix,
+                family: dynamics,
                 equation: Some("6.43"),
                 prefix: "m",
                 summary: "M(q), with the actuator inertia on the diagonal.",
@@ -43,6 +46,7 @@ macro_rules! for_each_method {
             /// are the Christoffel symbols of `M`. `Ṁ − 2C` is skew-symmetric.
             fn coriolis_matrix(q, qd) -> matrix, nalgebra coriolis_matrix_na {
                 variant: CoriolisMatrix,
+                family: dynamics,
                 equation: Some("6.44"),
                 prefix: "cor",
                 summary: "C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.",
@@ -51,6 +55,7 @@ macro_rules! for_each_method {
             /// Coriolis and centripetal torques `C(q, qd) qd = Σ_j Σ_k D_ijk qd_j qd_k`.
             fn coriolis_torques(q, qd) -> vector, nalgebra coriolis_torques_na {
                 variant: CoriolisTorques,
+                family: dynamics,
                 equation: None,
                 prefix: "cqd",
                 summary: "C(q, q̇) q̇.",
@@ -60,6 +65,7 @@ macro_rules! for_each_method {
             /// `k_i (q_i − q0_i)`.
             fn gravity_torques(q) -> vector, nalgebra gravity_torques_na {
                 variant: GravityTorques,
+                family: dynamics,
                 equation: Some("6.45"),
                 prefix: "g",
                 summary: "g(q), with joint springs.",
@@ -68,6 +74,7 @@ macro_rules! for_each_method {
             /// Bias torques `C(q, qd) qd + g(q)` (Pinocchio's "non-linear effects").
             fn bias_torques(q, qd) -> vector, nalgebra bias_torques_na {
                 variant: BiasTorques,
+                family: dynamics,
                 equation: None,
                 prefix: "h",
                 summary: "C(q, q̇) q̇ + g(q).",
@@ -77,6 +84,7 @@ macro_rules! for_each_method {
             /// springs included, and joint friction where the robot declares it.
             fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na {
                 variant: InverseDynamics,
+                family: dynamics,
                 equation: Some("6.46"),
                 prefix: "tau",
                 summary: "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
@@ -87,6 +95,7 @@ macro_rules! for_each_method {
             /// without friction; `inverse_dynamics` includes them.
             fn friction_torques(qd) -> vector, nalgebra friction_torques_na {
                 variant: FrictionTorques,
+                family: dynamics,
                 equation: None,
                 prefix: "f",
                 summary: "Joint friction: f_v q̇ + f_c sign(q̇) + f_0.",
@@ -96,6 +105,7 @@ macro_rules! for_each_method {
             /// Kinetic energy `½ qdᵀ M(q) qd` (eq. 6.39), actuators included.
             fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na {
                 variant: KineticEnergy,
+                family: dynamics,
                 equation: Some("6.39"),
                 prefix: "k",
                 summary: "The kinetic energy.",
@@ -105,6 +115,7 @@ macro_rules! for_each_method {
             /// at the base origin and every spring at rest.
             fn potential_energy(q) -> scalar, nalgebra potential_energy_na {
                 variant: PotentialEnergy,
+                family: dynamics,
                 equation: None,
                 prefix: "p",
                 summary: "The potential energy.",
@@ -115,6 +126,7 @@ macro_rules! for_each_method {
             /// (`Pose::homogeneous` gives the 4×4 form).
             fn hand_pose(q) -> pose, nalgebra hand_pose_na {
                 variant: HandPose,
+                family: kinematics,
                 equation: None,
                 prefix: "hand",
                 summary: "The hand frame's pose, A1 ⋯ An (and the tool).",
@@ -123,6 +135,7 @@ macro_rules! for_each_method {
             /// The pose of every link frame in the base frame: link i at `A_1 ⋯ A_i`.
             fn link_poses(q) -> poses, nalgebra link_poses_na {
                 variant: LinkPoses,
+                family: kinematics,
                 equation: None,
                 prefix: "link",
                 summary: "The pose of every link frame, A1 ⋯ Ai.",
@@ -133,6 +146,7 @@ macro_rules! for_each_method {
             /// in base axes.
             fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na {
                 variant: HandJacobianInBase,
+                family: kinematics,
                 equation: None,
                 prefix: "jb",
                 summary: "The hand's Jacobian in the base frame.",
@@ -142,6 +156,7 @@ macro_rules! for_each_method {
             /// along and about the hand frame's axes.
             fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na {
                 variant: HandJacobianInHand,
+                family: kinematics,
                 equation: None,
                 prefix: "jh",
                 summary: "The book's ᴴJ, the hand's Jacobian in the hand frame.",
@@ -151,6 +166,7 @@ macro_rules! for_each_method {
             /// linear and angular acceleration at `qdd = 0`, in base axes.
             fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
                 variant: HandAccelerationBiasInBase,
+                family: kinematics,
                 equation: None,
                 prefix: "ab",
                 summary: "J̇ q̇ of the hand, in the base frame.",
@@ -162,6 +178,7 @@ macro_rules! for_each_method {
             /// has the terms of the hand frame's own turning).
             fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {
                 variant: HandAccelerationBiasInHand,
+                family: kinematics,
                 equation: None,
                 prefix: "ah",
                 summary: "J̇ q̇ of the hand, in the hand's axes.",
@@ -171,6 +188,7 @@ macro_rules! for_each_method {
             /// hand frame, `T = ᴴJᵀ ᴴF` (eq. 6.64).
             fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na {
                 variant: JointTorquesForHandWrench,
+                family: kinematics,
                 equation: Some("6.64"),
                 prefix: "tf",
                 summary: "T = ᴴJᵀ ᴴF for a wrench in the hand frame.",
@@ -180,6 +198,7 @@ macro_rules! for_each_method {
             /// axes, its moment about the hand's origin: `T = Jᵀ F` with the base-frame Jacobian.
             fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na {
                 variant: JointTorquesForBaseWrench,
+                family: kinematics,
                 equation: Some("6.64"),
                 prefix: "tb",
                 summary: "T = Jᵀ F for a wrench in base axes.",
@@ -190,6 +209,7 @@ macro_rules! for_each_method {
             /// robot whose parameters leave a joint without inertia).
             fn mass_matrix_inverse(q) -> inverse, nalgebra mass_matrix_inverse_na {
                 variant: MassMatrixInverse,
+                family: dynamics,
                 equation: None,
                 prefix: "mi",
                 summary: "M(q)⁻¹, through the LDLᵀ of M.",
@@ -200,6 +220,7 @@ macro_rules! for_each_method {
             /// `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot is not positive.
             fn forward_dynamics(q, qd, tau) -> solution, nalgebra forward_dynamics_na {
                 variant: ForwardDynamics,
+                family: dynamics,
                 equation: None,
                 prefix: "qdd",
                 summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",

@@ -104,6 +104,29 @@ fn tilted_frames() {
     check(&Tilted, "frames/tilted.json");
 }
 
+/// The tilted robot of `data/frames/tilted.toml` written in the attribute instead, with the
+/// angles in degrees and a struct field for a length.
+#[derive(Dynamics)]
+#[dynamics(
+    gravity = [0, -6, -7.5],
+    joints = [
+        revolute(xyz = [0.1, 0, 0.2], rpy = [180 deg, 0, 0], axis = [1, 0, 0]),
+        prismatic(xyz = [0, l2, 0], rpy = [0, -90 deg, 0], axis = [0, -1, 0]),
+        revolute(xyz = [0.05, 0, -0.15], rpy = [0, 0, 90 deg]),
+    ],
+    link(mass = 1.5, com = [0.05, 0.01, -0.02], inertia = [0.02, 0.03, 0.025, 0.001, 0, -0.002]),
+    link(mass = 0.8, com = [0, -0.1, 0.03], inertia = [0.01, 0.004, 0.011, 0, 0.0005, 0]),
+    link(mass = 0.6, com = [0.02, 0, 0.01], inertia = [0.003, 0.004, 0.005, 0, 0, 0.0002]),
+)]
+struct TiltedInTheAttribute {
+    l2: f64,
+}
+
+#[test]
+fn tilted_frames_in_the_attribute() {
+    check(&TiltedInTheAttribute { l2: 0.3 }, "frames/tilted.json");
+}
+
 /// Generic placements and axes, prismatic joints.
 #[test]
 fn general_frames() {

@@ -44,20 +44,22 @@ fn methods(generated: &Generated) -> String {
         "method", "mul", "add", "neg", "div", "trig", "flops", "depth", "bytes"
     );
     let mut total = 0;
-    for (name, shared) in [
-        ("(configuration)", &generated.configuration),
-        ("(motion)", &generated.motion),
-        ("(kinematic configuration)", &generated.kinematic.0),
-        ("(kinematic motion)", &generated.kinematic.1),
-    ] {
-        if let Some(c) = shared {
-            let bytes = c.tokens.to_string().len();
-            total += bytes;
-            let _ = writeln!(
-                out,
-                "{:<30} {:>49} {:>9}",
-                name, "computed once, counted below", bytes
-            );
+    for module in &generated.modules {
+        let adjective = module.family.adjective();
+        for (function, shared) in [
+            ("configuration", &module.configuration),
+            ("motion", &module.motion),
+        ] {
+            if let Some(c) = shared {
+                let bytes = c.tokens.to_string().len();
+                total += bytes;
+                let name = format!("({adjective}{function})");
+                let _ = writeln!(
+                    out,
+                    "{:<30} {:>49} {:>9}",
+                    name, "computed once, counted below", bytes
+                );
+            }
         }
     }
     for m in &generated.methods {

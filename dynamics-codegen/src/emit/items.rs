@@ -3,7 +3,7 @@
 
 use super::{emit, local, Context, OpCount, Output, Shared};
 use super::{CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT, PARAMETERS};
-use crate::method::{Argument, Method, Returns};
+use crate::method::{Argument, Family, Method, Returns};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{quote, ToTokens};
@@ -27,22 +27,23 @@ pub struct Generated {
     pub dof: usize,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
-    /// The dynamics' configuration function's struct fields and body, if any method reads it.
-    pub configuration: Option<Shared>,
-    /// The dynamics' motion function's struct fields and body, if two methods share terms in
-    /// `q̇`.
-    pub motion: Option<Shared>,
-    /// The shared functions of the kinematic methods ([`Method::is_kinematic`]), emitted
-    /// apart: code that calls only the dynamics does not inline the kinematics, nor the reverse.
-    pub kinematic: (Option<Shared>, Option<Shared>),
+    /// The shared functions of each [`Family`] of methods, in the order of [`Family::ALL`]:
+    /// each family is emitted apart, so code that calls only the dynamics does not inline the
+    /// kinematics, nor the reverse.
+    pub modules: Vec<Module>,
     /// The methods, in the trait's order.
     pub methods: Vec<MethodCode>,
 }
 
-/// Name of the module holding the generated functions of the dynamics.
-const MODULE: &str = "__dynamics";
-/// Name of the module holding those of the kinematic methods.
-const KINEMATIC_MODULE: &str = "__kinematics";
+/// The shared functions of one family's module.
+pub struct Module {
+    /// The family.
+    pub family: Family,
+    /// The configuration function's struct fields and body, if any method reads it.
+    pub configuration: Option<Shared>,
+    /// The motion function's struct fields and body, if two methods share terms in `q̇`.
+    pub motion: Option<Shared>,
+}
 /// Name of the hidden inherent method reading the robot's parameters.
 const PARAMETERS_FN: &str = "__dynamics_parameters";
 
@@ -53,41 +54,46 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     let ctx = Context {
         parameters: local(PARAMETERS),
     };
-    let group = |kinematic: bool| {
+    let mut modules = Vec::new();
+    let mut methods = Vec::new();
+    for &family in Family::ALL {
         // A method the trait gives a body of zeros (friction) only where the robot has the
         // term, so that the code of a robot without it is what it always was.
-        let methods: Vec<Method> = Method::ALL
+        let members: Vec<Method> = Method::ALL
             .iter()
             .copied()
-            .filter(|m| m.is_kinematic() == kinematic && m.is_generated(eq))
+            .filter(|m| m.family() == family && m.is_generated(eq))
             .collect();
-        let outputs: Vec<Output> = methods
+        let outputs: Vec<Output> = members
             .iter()
             .map(|&method| Output {
                 method,
                 shape: method.shape(eq),
             })
             .collect();
-        (methods, emit(eq, &outputs, &ctx))
-    };
-    let (dynamics, kinematics) = (group(false), group(true));
-    let mut methods: Vec<MethodCode> = [&dynamics, &kinematics]
-        .into_iter()
-        .flat_map(|(methods, emission)| methods.iter().zip(&emission.bodies))
-        .map(|(&method, b)| MethodCode {
-            method,
-            name: method.name(),
-            body: b.tokens.clone(),
-            ops: b.ops,
-        })
-        .collect();
+        let emission = emit(eq, &outputs, &ctx);
+        methods.extend(
+            members
+                .iter()
+                .zip(&emission.bodies)
+                .map(|(&method, b)| MethodCode {
+                    method,
+                    name: method.name(),
+                    body: b.tokens.clone(),
+                    ops: b.ops,
+                }),
+        );
+        modules.push(Module {
+            family,
+            configuration: emission.configuration,
+            motion: emission.motion,
+        });
+    }
     methods.sort_by_key(|m| m.method);
     Generated {
         dof: eq.dof,
         fields,
-        configuration: dynamics.1.configuration,
-        motion: dynamics.1.motion,
-        kinematic: (kinematics.1.configuration, kinematics.1.motion),
+        modules,
         methods,
     }
 }
@@ -99,7 +105,7 @@ impl Generated {
     ///   per method, which take the parameters as an array `p_: &[T; K]`. A module sees none of
     ///   the items around it, so no user constant can collide with a generated local (`let`
     ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
-    ///   a module `__kinematics`, the same for the kinematic methods;
+    ///   a module per other [`Family`] (`__kinematics`), the same for its methods;
     /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
     ///   array (every field the description names, so none is left unread);
     /// * the `Dynamics` impl, each method one call into the module.
@@ -118,13 +124,12 @@ impl Generated {
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
-        let dynamics = self.module(krate, false);
-        let kinematics = self.module(krate, true);
+        let modules = self.modules.iter().map(|module| self.module(module, krate));
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
             let (args, ret) = signature(m.method, n, &t, krate, false);
             let pass = call_arguments(m.method);
-            let module = module_name(m.method.is_kinematic());
+            let module = Ident::new(m.method.family().module(), Span::call_site());
             let call = quote!(#module::#name(&self.#parameters(), #pass));
             let call = forward(m.method, call, krate);
             let f = quote! {
@@ -141,8 +146,7 @@ impl Generated {
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         quote! {
-            #dynamics
-            #kinematics
+            #(#modules)*
             impl #impl_generics #ident #ty_generics #where_clause {
                 /// The parameters the equations read, in the order of the description.
                 #[doc(hidden)]
@@ -160,22 +164,18 @@ impl Generated {
         }
     }
 
-    /// The module of the dynamics' functions (`kinematic` false) or the kinematic ones': the
-    /// shared functions and one function per method.
-    fn module(&self, krate: &TokenStream, kinematic: bool) -> TokenStream {
+    /// The module of one family's functions: the shared functions and one function per
+    /// method.
+    fn module(&self, module: &Module, krate: &TokenStream) -> TokenStream {
         let (n, k) = (self.dof, self.fields.len());
         let p = local(PARAMETERS);
-        let (configuration, motion) = if kinematic {
-            (self.kinematic.0.as_ref(), self.kinematic.1.as_ref())
-        } else {
-            (self.configuration.as_ref(), self.motion.as_ref())
-        };
+        let (configuration, motion) = (module.configuration.as_ref(), module.motion.as_ref());
         let configuration_item = self.configuration_item(configuration, krate);
         let motion_item = self.motion_item(motion, configuration.is_some(), krate);
         let bodies = self
             .methods
             .iter()
-            .filter(|m| m.method.is_kinematic() == kinematic);
+            .filter(|m| m.method.family() == module.family);
         let bodies = bodies.map(|m| {
             let name = Ident::new(m.name, Span::call_site());
             let scalar = Ident::new("T", Span::call_site());
@@ -188,11 +188,11 @@ impl Generated {
                 }
             }
         });
-        let module = module_name(kinematic);
+        let name = Ident::new(module.family.module(), Span::call_site());
         quote! {
             /// The generated functions, out of reach of the names around the derive.
             #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-            mod #module {
+            mod #name {
                 #configuration_item
                 #motion_item
                 #(#bodies)*
@@ -330,12 +330,6 @@ pub fn method(
             #body
         }
     }
-}
-
-/// The module of the dynamics' or the kinematic methods' functions.
-fn module_name(kinematic: bool) -> Ident {
-    let name = if kinematic { KINEMATIC_MODULE } else { MODULE };
-    Ident::new(name, Span::call_site())
 }
 
 /// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.

@@ -54,7 +54,7 @@ pub use count::{count, OpCount};
 pub(crate) use equations::equations;
 pub(crate) use fallback::fallback;
 pub(crate) use items::runtime_path;
-pub use items::{generate, method, Generated, MethodCode};
+pub use items::{generate, method, Generated, MethodCode, Module};
 
 use crate::method::{Argument, Method};
 use crate::symbolic::NodeId;
