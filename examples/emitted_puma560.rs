@@ -98,11 +98,11 @@ mod __dynamics {
         g3: T,
         g4: T,
         g5: T,
+        u94: T,
         u95: T,
-        u96: T,
         k53: T,
         k54: T,
-        u97: T,
+        u96: T,
         k57: T,
         k58: T,
         k60: T,
@@ -121,91 +121,45 @@ mod __dynamics {
         k73: T,
         k74: T,
         p: T,
+        u102: T,
         u103: T,
-        u104: T,
+        u110: T,
         u111: T,
         u112: T,
         u113: T,
-        u114: T,
-        u116: T,
-        u118: T,
+        u115: T,
+        u117: T,
         k81: T,
-        u125: T,
+        u124: T,
+        u129: T,
         u130: T,
         u131: T,
-        u132: T,
         k83: T,
         k84: T,
         k85: T,
-        u135: T,
-        u137: T,
+        u134: T,
+        u136: T,
+        u138: T,
         u139: T,
-        u140: T,
+        u141: T,
         u142: T,
         u143: T,
-        u144: T,
+        u145: T,
         u146: T,
-        u147: T,
+        u148: T,
         u149: T,
-        u150: T,
-        u152: T,
+        u151: T,
+        u153: T,
         u154: T,
-        u155: T,
-        u158: T,
+        u157: T,
+        u161: T,
         u162: T,
         u163: T,
-        u164: T,
+        u165: T,
         u166: T,
         u167: T,
         u168: T,
         u169: T,
-        u170: T,
-        u171: T,
-        u172: T,
-        u173: T,
-        u174: T,
-        u175: T,
-        u176: T,
-        u177: T,
-        u178: T,
-        u180: T,
-        u182: T,
-        u184: T,
-        u186: T,
-        u187: T,
-        u188: T,
-        u190: T,
-        u192: T,
-        u194: T,
-        u195: T,
-        u196: T,
-        u198: T,
-        u200: T,
-        u201: T,
-        u202: T,
-        u204: T,
-        u205: T,
-        mi6_6: T,
-        mi1_6: T,
-        mi1_1: T,
-        mi2_6: T,
-        mi1_2: T,
-        mi3_6: T,
-        mi1_3: T,
-        mi4_6: T,
-        mi1_4: T,
-        mi5_6: T,
-        mi1_5: T,
-        mi2_2: T,
-        mi2_3: T,
-        mi2_4: T,
-        mi2_5: T,
-        mi3_3: T,
-        mi3_4: T,
-        mi3_5: T,
-        mi4_4: T,
-        mi4_5: T,
-        mi5_5: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -297,8 +251,6 @@ mod __dynamics {
         let k83: T = T::from_f64(-0.5);
         let k84: T = T::from_f64(0.00002);
         let k85: T = T::from_f64(-0.00002);
-        let k86: T = T::from_f64(0.0000000016);
-        let k87: T = T::from_f64(-0.0000000016);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -428,286 +380,141 @@ mod __dynamics {
         let m1_5 = c2
             .mul_add(u82, k46.mul_add(s2 * u79, k41.mul_add(u68 * u90, u74 * u89)));
         let u91 = c5 * u90;
-        let u92 = u6.mul_add(u89, -u91);
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * u92;
+        let m1_6 = k36 * u6.mul_add(u89, -u91);
         /// D2 (6.45), gravity and spring
         let g2 = k49 * (-c2).mul_add(k30 + u31, s2 * (k8 + u34));
         /// D3 (6.45), gravity and spring
         let g3 = k49 * (-u24).mul_add(u90, u25 * u89);
-        let u93 = c4 * u89;
+        let u92 = c4 * u89;
         /// D4 (6.45), gravity and spring
         let g4 = k52 * (s5 * (s4 * u89));
-        let u94 = s5 * u90;
+        let u93 = s5 * u90;
         /// D5 (6.45), gravity and spring
-        let g5 = k51 * c5.mul_add(u93, u94);
-        let u95 = k50 * s2;
-        let u96 = k50 * c2;
-        let u97 = k56.mul_add(s2, k55 * c2);
+        let g5 = k51 * c5.mul_add(u92, u93);
+        let u94 = k50 * s2;
+        let u95 = k50 * c2;
+        let u96 = k56.mul_add(s2, k55 * c2);
         /// potential energy
         let p = -k51
             .mul_add(
-                (-s5).mul_add(u93, u91),
+                (-s5).mul_add(u92, u91),
                 k59.mul_add(u90, k77.mul_add(u89, k56.mul_add(c2, k76.mul_add(s2, k75)))),
             );
-        let u98 = k45 * u41;
-        let u99 = k2 * u58;
-        let u100 = k42 * u62;
-        let u101 = k44 * u76;
-        let u102 = k45 * u12;
-        let u103 = k35.mul_add(u12, u21 + u21);
-        let u104 = k38.mul_add(u13, u20);
-        let u105 = k80.mul_add(u7, u102);
-        let u106 = (-u35).mul_add(u105, k45.mul_add(m3_4 * u36, u102));
-        let u107 = k46 * u6;
-        let u108 = u107 + u107 + u106;
-        let u109 = u107 + u100;
-        let u110 = u109 + k79.mul_add(u7, u109) + u102 - u106;
-        let u111 = u100 + u103;
-        let u112 = u100 + u111;
-        let u113 = u53
+        let u97 = k45 * u41;
+        let u98 = k2 * u58;
+        let u99 = k42 * u62;
+        let u100 = k44 * u76;
+        let u101 = k45 * u12;
+        let u102 = k35.mul_add(u12, u21 + u21);
+        let u103 = k38.mul_add(u13, u20);
+        let u104 = k80.mul_add(u7, u101);
+        let u105 = (-u35).mul_add(u104, k45.mul_add(m3_4 * u36, u101));
+        let u106 = k46 * u6;
+        let u107 = u106 + u106 + u105;
+        let u108 = u106 + u99;
+        let u109 = u108 + k79.mul_add(u7, u108) + u101 - u105;
+        let u110 = u99 + u102;
+        let u111 = u99 + u110;
+        let u112 = u53
             .mul_add(
-                u108 - u110,
-                u108 + u110
+                u107 - u109,
+                u107 + u109
                     - k45
                         .mul_add(
-                            u54 * u36.mul_add(u105, m3_4.mul_add(u40, k44 * u63)),
-                            u108,
+                            u54 * u36.mul_add(u104, m3_4.mul_add(u40, k44 * u63)),
+                            u107,
                         ),
             );
-        let u114 = k42.mul_add(u86, u104);
-        let u115 = k41 * u67;
-        let u116 = k40.mul_add(s4, u81);
-        let u117 = k42 * u75;
-        let u118 = u116 + u117;
-        let u119 = u2 * u8;
-        let u120 = k44 * s5;
-        let u121 = k82.mul_add(u2 - u119, u120 + u120);
-        let u122 = k81.mul_add(u2, u115);
-        let u123 = u115 + u122;
-        let u124 = u120 + u115;
-        let u125 = u124 + k82.mul_add(u119, u124);
-        let u126 = k81.mul_add(u2 * u9, k41 * u68);
-        let u127 = u121 - u123;
-        let u128 = k46 * u68;
-        let u129 = u128 + u101;
-        let u130 = u101 + u125;
-        let u131 = u101 + u130;
-        let u132 = k41.mul_add(c5, u20);
-        let u133 = -(u87 + u88);
-        let u134 = u22.mul_add(u90, u28 * u133);
-        let u135 = k47.mul_add(c2.mul_add(u31, u59), u134);
-        let u136 = u17.mul_add(u133, u61 * u90);
-        let u137 = (-s2).mul_add(u65, k48 * u66) + u136;
-        let u138 = k41.mul_add(u68 * u133, u74 * u90);
-        let u139 = (-s2).mul_add(u82, k46.mul_add(u84, u138));
-        let u140 = (-c5).mul_add(u133, u6 * u90);
-        let u141 = k35.mul_add(u41, u99 + u99);
-        let u142 = u53
+        let u113 = k42.mul_add(u86, u103);
+        let u114 = k41 * u67;
+        let u115 = k40.mul_add(s4, u81);
+        let u116 = k42 * u75;
+        let u117 = u115 + u116;
+        let u118 = u2 * u8;
+        let u119 = k44 * s5;
+        let u120 = k82.mul_add(u2 - u118, u119 + u119);
+        let u121 = k81.mul_add(u2, u114);
+        let u122 = u114 + u121;
+        let u123 = u119 + u114;
+        let u124 = u123 + k82.mul_add(u118, u123);
+        let u125 = k81.mul_add(u2 * u9, k41 * u68);
+        let u126 = u120 - u122;
+        let u127 = k46 * u68;
+        let u128 = u127 + u100;
+        let u129 = u100 + u124;
+        let u130 = u100 + u129;
+        let u131 = k41.mul_add(c5, u20);
+        let u132 = -(u87 + u88);
+        let u133 = u22.mul_add(u90, u28 * u132);
+        let u134 = k47.mul_add(c2.mul_add(u31, u59), u133);
+        let u135 = u17.mul_add(u132, u61 * u90);
+        let u136 = (-s2).mul_add(u65, k48 * u66) + u135;
+        let u137 = k41.mul_add(u68 * u132, u74 * u90);
+        let u138 = (-s2).mul_add(u82, k46.mul_add(u84, u137));
+        let u139 = (-c5).mul_add(u132, u6 * u90);
+        let u140 = k35.mul_add(u41, u98 + u98);
+        let u141 = u53
             .mul_add(
-                u98 - u141,
-                u98 - u98
+                u97 - u140,
+                u97 - u97
                     + (-k45)
                         .mul_add(
                             u54 * u37.mul_add(u40, k78.mul_add(u38, k23 * u31)),
-                            u141,
+                            u140,
                         ),
             );
-        let u143 = c2
+        let u142 = c2
             .mul_add(k47.mul_add(u31, u42), s2 * (k47.mul_add(u58, -u44) - u43));
-        let u144 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u134);
-        let u145 = k48 * s2.mul_add(u62, u66);
-        let u146 = u145 + u136;
-        let u147 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u138);
-        let u148 = (-u10).mul_add(c4.mul_add(c4, -u8), u15);
-        let u149 = c2
+        let u143 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u133);
+        let u144 = k48 * s2.mul_add(u62, u66);
+        let u145 = u144 + u135;
+        let u146 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u137);
+        let u147 = (-u10).mul_add(c4.mul_add(c4, -u8), u15);
+        let u148 = c2
             .mul_add(
-                s3.mul_add(u148, c3.mul_add(u104, k48 * u63)),
-                s2 * c3.mul_add(u148, -s3.mul_add(u104, u60 + u64)),
+                s3.mul_add(u147, c3.mul_add(u103, k48 * u63)),
+                s2 * c3.mul_add(u147, -s3.mul_add(u103, u60 + u64)),
             );
-        let u150 = u89.mul_add(u148, u90.mul_add(u104, u145));
-        let u151 = k43 * (u7 * u90);
-        let u152 = k48.mul_add(s2 * u86, u151)
+        let u149 = u89.mul_add(u147, u90.mul_add(u103, u144));
+        let u150 = k43 * (u7 * u90);
+        let u151 = k48.mul_add(s2 * u86, u150)
             + m3_4.mul_add(u89, c2 * k46.mul_add(u85, u23));
-        let u153 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
-        let u154 = k41.mul_add(u67 * u90, u89 * (u69 + u73)) + u153;
-        let u155 = u7 * u89;
-        let u156 = k37 * (c4 * u4);
-        let u157 = u156 - (u71 + u72);
-        let u158 = k38.mul_add(s4 * u4, u81);
-        let u159 = k45.mul_add(u36 * u157, (-u35).mul_add(u127, u121));
-        let u160 = u128 + u128 + u159;
-        let u161 = u123 + u129 + (u129 + u121) - u159;
-        let u162 = u53
+        let u152 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
+        let u153 = k41.mul_add(u67 * u90, u89 * (u69 + u73)) + u152;
+        let u154 = u7 * u89;
+        let u155 = k37 * (c4 * u4);
+        let u156 = u155 - (u71 + u72);
+        let u157 = k38.mul_add(s4 * u4, u81);
+        let u158 = k45.mul_add(u36 * u156, (-u35).mul_add(u126, u120));
+        let u159 = u127 + u127 + u158;
+        let u160 = u122 + u128 + (u128 + u120) - u158;
+        let u161 = u53
             .mul_add(
-                u160 - u161,
-                u160 + u161
+                u159 - u160,
+                u159 + u160
                     - k45
                         .mul_add(
-                            u54 * u36.mul_add(u127, u40.mul_add(u157, k42 * u79)),
-                            u160,
+                            u54 * u36.mul_add(u126, u40.mul_add(u156, k42 * u79)),
+                            u159,
                         ),
             );
-        let u163 = c2
+        let u162 = c2
             .mul_add(
-                c3.mul_add(u158, s3.mul_add(u126, k46 * u79)),
-                s2 * (-s3).mul_add(u158, c3.mul_add(u126, -(u70 + u80))),
+                c3.mul_add(u157, s3.mul_add(u125, k46 * u79)),
+                s2 * (-s3).mul_add(u157, c3.mul_add(u125, -(u70 + u80))),
             );
-        let u164 = u117 + u158;
-        let u165 = c3.mul_add(c5, -u86);
-        let u166 = k44.mul_add(u165, u132);
-        let u167 = u90.mul_add(u158, k46.mul_add(u83 + u84, u89 * u126));
-        let u168 = u89.mul_add(u73 + u156, u90.mul_add(u122, u153));
-        let u169 = c2
+        let u163 = u116 + u157;
+        let u164 = c3.mul_add(c5, -u86);
+        let u165 = k44.mul_add(u164, u131);
+        let u166 = u90.mul_add(u157, k46.mul_add(u83 + u84, u89 * u125));
+        let u167 = u89.mul_add(u73 + u155, u90.mul_add(u121, u152));
+        let u168 = c2
             .mul_add(
                 k48.mul_add(-s3.mul_add(c5, u85), u23),
-                k46.mul_add(s2 * u165, k44.mul_add(u155, u151)),
+                k46.mul_add(s2 * u164, k44.mul_add(u154, u150)),
             );
-        let u170 = u67.mul_add(u89, u94);
-        let u171 = T::ONE / m1_1;
-        let u172 = m1_2 * u171;
-        let u173 = m1_3 * u171;
-        let u174 = m1_4 * u171;
-        let u175 = m1_5 * u171;
-        let u176 = u92 * u171;
-        let u177 = (-m1_2).mul_add(u172, m2_2);
-        let u178 = T::ONE / u177;
-        let u179 = (-m1_3).mul_add(u172, m2_3);
-        let u180 = u178 * u179;
-        let u181 = (-m1_4).mul_add(u172, m2_4);
-        let u182 = u178 * u181;
-        let u183 = (-m1_5).mul_add(u172, m2_5);
-        let u184 = u178 * u183;
-        let u185 = u92.mul_add(u172, u7);
-        let u186 = u178 * u185;
-        let u187 = (-u179).mul_add(u180, (-m1_3).mul_add(u173, m3_3));
-        let u188 = T::ONE / u187;
-        let u189 = (-u180).mul_add(u181, (-m1_4).mul_add(u173, m3_4));
-        let u190 = u188 * u189;
-        let u191 = (-u180).mul_add(u183, (-m1_5).mul_add(u173, m3_5));
-        let u192 = u188 * u191;
-        let u193 = (-u180).mul_add(u185, u92.mul_add(u173, u7));
-        let u194 = u188 * u193;
-        let u195 = (-u189)
-            .mul_add(u190, (-u181).mul_add(u182, (-m1_4).mul_add(u174, m4_4)));
-        let u196 = T::ONE / u195;
-        let u197 = -u190.mul_add(u191, u182.mul_add(u183, m1_5 * u174));
-        let u198 = u196 * u197;
-        let u199 = (-u190).mul_add(u193, (-u182).mul_add(u185, u92.mul_add(u174, c5)));
-        let u200 = u196 * u199;
-        let u201 = (-u197)
-            .mul_add(
-                u198,
-                (-u191).mul_add(u192, (-u183).mul_add(u184, (-m1_5).mul_add(u175, k20))),
-            );
-        let u202 = T::ONE / u201;
-        let u203 = (-u198)
-            .mul_add(u199, (-u192).mul_add(u193, (-u184).mul_add(u185, u92 * u175)));
-        let u204 = u202 * u203;
-        let u205 = k87
-            .mul_add(
-                u203 * u204,
-                k87
-                    .mul_add(
-                        u199 * u200,
-                        k87
-                            .mul_add(
-                                u193 * u194,
-                                k87.mul_add(u185 * u186, k87.mul_add(u92 * u176, k7)),
-                            ),
-                    ),
-            );
-        /// (M^-1)66
-        let mi6_6 = T::ONE / u205;
-        let u206 = u172.mul_add(u180, -u173);
-        let u207 = (-u190).mul_add(u206, u172.mul_add(u182, -u174));
-        let u208 = (-u198)
-            .mul_add(u207, (-u192).mul_add(u206, u172.mul_add(u184, -u175)));
-        let u209 = (-u204)
-            .mul_add(
-                u208,
-                (-u200).mul_add(u207, (-u194).mul_add(u206, u172.mul_add(u186, u176))),
-            );
-        let u210 = u180.mul_add(u190, -u182);
-        let u211 = (-u198).mul_add(u210, u180.mul_add(u192, -u184));
-        let u212 = u204.mul_add(u211, u200.mul_add(u210, (-u180).mul_add(u194, u186)));
-        let u213 = u190.mul_add(u198, -u192);
-        let u214 = u204.mul_add(u213, (-u190).mul_add(u200, u194));
-        let u215 = (-u198).mul_add(u204, u200);
-        let u216 = mi6_6 * u209;
-        /// (M^-1)16
-        let mi1_6 = k7 * u216;
-        let u217 = u202 * u208;
-        let u218 = u196 * u207;
-        let u219 = u188 * u206;
-        let u220 = u172 * u178;
-        /// (M^-1)11
-        let mi1_1 = k86
-            .mul_add(
-                u209 * u216,
-                u208
-                    .mul_add(
-                        u217,
-                        u207.mul_add(u218, u206.mul_add(u219, u172.mul_add(u220, u171))),
-                    ),
-            );
-        let u221 = mi6_6 * u212;
-        /// (M^-1)26
-        let mi2_6 = k36 * u221;
-        let u222 = u202 * u211;
-        let u223 = u196 * u210;
-        let u224 = u180 * u188;
-        /// (M^-1)12
-        let mi1_2 = k87
-            .mul_add(
-                u209 * u221,
-                u208.mul_add(u222, u207.mul_add(u223, -u206.mul_add(u224, u220))),
-            );
-        let u225 = mi6_6 * u214;
-        /// (M^-1)36
-        let mi3_6 = k36 * u225;
-        let u226 = u202 * u213;
-        let u227 = u190 * u196;
-        /// (M^-1)13
-        let mi1_3 = k87
-            .mul_add(u209 * u225, u208.mul_add(u226, (-u207).mul_add(u227, u219)));
-        let u228 = mi6_6 * u215;
-        /// (M^-1)46
-        let mi4_6 = k36 * u228;
-        let u229 = u198 * u202;
-        /// (M^-1)14
-        let mi1_4 = k87.mul_add(u209 * u228, (-u208).mul_add(u229, u218));
-        let u230 = u204 * mi6_6;
-        /// (M^-1)56
-        let mi5_6 = k36 * u230;
-        /// (M^-1)15
-        let mi1_5 = k87.mul_add(u209 * u230, u217);
-        /// (M^-1)22
-        let mi2_2 = k86
-            .mul_add(
-                u212 * u221,
-                u211.mul_add(u222, u210.mul_add(u223, u180.mul_add(u224, u178))),
-            );
-        /// (M^-1)23
-        let mi2_3 = k86
-            .mul_add(u212 * u225, u211.mul_add(u226, -u210.mul_add(u227, u224)));
-        /// (M^-1)24
-        let mi2_4 = k86.mul_add(u212 * u228, (-u211).mul_add(u229, u223));
-        /// (M^-1)25
-        let mi2_5 = k86.mul_add(u212 * u230, u222);
-        /// (M^-1)33
-        let mi3_3 = k86
-            .mul_add(u214 * u225, u213.mul_add(u226, u190.mul_add(u227, u188)));
-        /// (M^-1)34
-        let mi3_4 = k86.mul_add(u214 * u228, -u213.mul_add(u229, u227));
-        /// (M^-1)35
-        let mi3_5 = k86.mul_add(u214 * u230, u226);
-        /// (M^-1)44
-        let mi4_4 = k86.mul_add(u215 * u228, u198.mul_add(u229, u196));
-        /// (M^-1)45
-        let mi4_5 = k86.mul_add(u215 * u230, -u229);
-        /// (M^-1)55
-        let mi5_5 = k86.mul_add(u204 * u230, u202);
+        let u169 = u67.mul_add(u89, u93);
         Configuration {
             k1,
             s2,
@@ -787,11 +594,11 @@ mod __dynamics {
             g3,
             g4,
             g5,
+            u94,
             u95,
-            u96,
             k53,
             k54,
-            u97,
+            u96,
             k57,
             k58,
             k60,
@@ -810,91 +617,45 @@ mod __dynamics {
             k73,
             k74,
             p,
+            u102,
             u103,
-            u104,
+            u110,
             u111,
             u112,
             u113,
-            u114,
-            u116,
-            u118,
+            u115,
+            u117,
             k81,
-            u125,
+            u124,
+            u129,
             u130,
             u131,
-            u132,
             k83,
             k84,
             k85,
-            u135,
-            u137,
+            u134,
+            u136,
+            u138,
             u139,
-            u140,
+            u141,
             u142,
             u143,
-            u144,
+            u145,
             u146,
-            u147,
+            u148,
             u149,
-            u150,
-            u152,
+            u151,
+            u153,
             u154,
-            u155,
-            u158,
+            u157,
+            u161,
             u162,
             u163,
-            u164,
+            u165,
             u166,
             u167,
             u168,
             u169,
-            u170,
-            u171,
-            u172,
-            u173,
-            u174,
-            u175,
-            u176,
-            u177,
-            u178,
-            u180,
-            u182,
-            u184,
-            u186,
-            u187,
-            u188,
-            u190,
-            u192,
-            u194,
-            u195,
-            u196,
-            u198,
-            u200,
-            u201,
-            u202,
-            u204,
-            u205,
-            mi6_6,
-            mi1_6,
-            mi1_1,
-            mi2_6,
-            mi1_2,
-            mi3_6,
-            mi1_3,
-            mi4_6,
-            mi1_4,
-            mi5_6,
-            mi1_5,
-            mi2_2,
-            mi2_3,
-            mi2_4,
-            mi2_5,
-            mi3_3,
-            mi3_4,
-            mi3_5,
-            mi4_4,
-            mi4_5,
-            mi5_5,
         }
     }
     /// What several methods compute from `q̇` too, computed once.
@@ -936,11 +697,6 @@ mod __dynamics {
         v62: T,
         v65: T,
         v66: T,
-        v73: T,
-        v76: T,
-        v77: T,
-        v78: T,
-        v79: T,
     }
     #[inline(always)]
     pub(super) fn motion<T: ::dynamics_runtime::Real>(
@@ -986,22 +742,17 @@ mod __dynamics {
             k31,
             k32,
             k33,
-            k36,
             k40,
             k43,
             k44,
             k47,
             u89,
             u90,
-            u95,
-            u96,
             k53,
             k54,
-            u97,
             k57,
             k58,
             k60,
-            k61,
             k62,
             k63,
             k64,
@@ -1100,28 +851,6 @@ mod __dynamics {
                                 + k12.mul_add(v11, k63.mul_add(v4, k33 * v3)),
                         ),
             );
-        let v67 = k23.mul_add(v9, u95);
-        let v68 = k2.mul_add(v8, u96);
-        let v69 = c3.mul_add(v67, s3 * v68);
-        let v70 = (-s3).mul_add(v67, c3 * v68);
-        let v71 = v33 + v69;
-        let v72 = k19.mul_add((-s4).mul_add(v71, v36), k36 * (v46 * v56)) + v54;
-        let v73 = k19
-            .mul_add(
-                c5.mul_add((-s4).mul_add(v35, c4 * v71), s5 * (v34 + v70)),
-                k7.mul_add(v44 * v56, v55),
-            );
-        let v74 = c5.mul_add(v72, (-s5).mul_add(v57, v42));
-        let v75 = k61.mul_add(v37 * v39, -v73);
-        let v76 = s5.mul_add(v72, c5.mul_add(v57, v43));
-        let v77 = k66.mul_add(v69, k24.mul_add(v70, v30)) + v62
-            - c4.mul_add(v75, s4 * v74);
-        let v78 = v77 + k2.mul_add(v65, u97 + v14);
-        let v79 = u89
-            .mul_add(
-                (-s4).mul_add(v75, c4.mul_add(v74, k44.mul_add(v61, v31))),
-                u90 * (k43.mul_add(v61, v32) + v76),
-            ) + v66;
         (
             c_,
             Motion {
@@ -1162,11 +891,6 @@ mod __dynamics {
                 v62,
                 v65,
                 v66,
-                v73,
-                v76,
-                v77,
-                v78,
-                v79,
             },
         )
     }
@@ -1230,121 +954,121 @@ mod __dynamics {
             u68,
             u76,
             k64,
+            u102,
             u103,
-            u104,
+            u110,
             u111,
             u112,
             u113,
-            u114,
-            u116,
-            u118,
+            u115,
+            u117,
             k81,
-            u125,
+            u124,
+            u129,
             u130,
             u131,
-            u132,
             k83,
             k84,
             k85,
-            u135,
-            u137,
+            u134,
+            u136,
+            u138,
             u139,
-            u140,
+            u141,
             u142,
             u143,
-            u144,
+            u145,
             u146,
-            u147,
+            u148,
             u149,
-            u150,
-            u152,
+            u151,
+            u153,
             u154,
-            u155,
-            u158,
+            u157,
+            u161,
             u162,
             u163,
-            u164,
+            u165,
             u166,
             u167,
             u168,
             u169,
-            u170,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
         let t1 = s5 * qd5;
-        let t2 = qd4 * u104;
+        let t2 = qd4 * u103;
         let t3 = u57 * qd2;
-        let t4 = qd3 * u144;
-        let t5 = qd4 * u152;
-        let t6 = qd5 * u169;
+        let t4 = qd3 * u143;
+        let t5 = qd4 * u151;
+        let t6 = qd5 * u168;
         /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = k85
-            * ((-qd4).mul_add(u155, qd2 * u140) + qd5.mul_add(u170, qd3 * u140));
+            * ((-qd4).mul_add(u154, qd2 * u139) + qd5.mul_add(u169, qd3 * u139));
         let t7 = u58 * qd3;
         let t8 = k2 * t7;
-        let t9 = qd4 * u114;
-        let t10 = qd5 * u166;
-        let t11 = qd1 * u140;
+        let t9 = qd4 * u113;
+        let t10 = qd5 * u165;
+        let t11 = qd1 * u139;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd4.mul_add(u103, qd5 * u125);
-        let t12 = qd5 * u132;
+        let cor3_3 = k1 * qd4.mul_add(u102, qd5 * u124);
+        let t12 = qd5 * u131;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = k37 * (u2 * qd5);
-        let t13 = qd1.mul_add(u155, u6.mul_add(qd3, u6 * qd2));
+        let t13 = qd1.mul_add(u154, u6.mul_add(qd3, u6 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = k85 * (t1 + t13);
-        let t14 = qd1.mul_add(u170, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
+        let t14 = qd1.mul_add(u169, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k84 * t14;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = k85 * t14;
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * (qd4.mul_add(u113, qd5 * u162) + qd3.mul_add(u142, k35 * (u56 * qd2)));
-        let t15 = qd5.mul_add(u163, qd4 * u149) + qd3.mul_add(u143, t3);
-        let t16 = k36 * (qd6 * u140);
+            * (qd4.mul_add(u112, qd5 * u161) + qd3.mul_add(u141, k35 * (u56 * qd2)));
+        let t15 = qd5.mul_add(u162, qd4 * u148) + qd3.mul_add(u142, t3);
+        let t16 = k36 * (qd6 * u139);
         let t17 = k35
             .mul_add(
                 u56 * qd1,
-                t3 + qd3.mul_add(u135, qd5.mul_add(u139, qd4.mul_add(u137, t16))),
+                t3 + qd3.mul_add(u134, qd5.mul_add(u138, qd4.mul_add(u136, t16))),
             );
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t15 + t17);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t15 - t17);
-        let t18 = qd2.mul_add(u135, qd5.mul_add(u167, qd4 * u150) + t4);
+        let t18 = qd2.mul_add(u134, qd5.mul_add(u166, qd4 * u149) + t4);
         let t19 = qd1
             .mul_add(
-                u142,
-                qd2.mul_add(u143, qd5.mul_add(u147, qd4.mul_add(u146, t16)) + t4),
+                u141,
+                qd2.mul_add(u142, qd5.mul_add(u146, qd4.mul_add(u145, t16)) + t4),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t18 + t19);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t18 - t19);
-        let t20 = qd2.mul_add(u137, t5) + qd5.mul_add(u168, qd3 * u146);
+        let t20 = qd2.mul_add(u136, t5) + qd5.mul_add(u167, qd3 * u145);
         let t21 = qd1
             .mul_add(
-                u113,
+                u112,
                 qd2
                     .mul_add(
-                        u149,
-                        k7.mul_add(qd6 * u155, t5) + qd5.mul_add(u154, qd3 * u150),
+                        u148,
+                        k7.mul_add(qd6 * u154, t5) + qd5.mul_add(u153, qd3 * u149),
                     ),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t20 + t21);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t20 - t21);
-        let t22 = qd2.mul_add(u139, t6) + qd4.mul_add(u154, qd3 * u147);
+        let t22 = qd2.mul_add(u138, t6) + qd4.mul_add(u153, qd3 * u146);
         let t23 = qd1
             .mul_add(
-                u162,
+                u161,
                 qd2
                     .mul_add(
-                        u163,
-                        k36.mul_add(qd6 * u170, t6) + qd3.mul_add(u167, qd4 * u168),
+                        u162,
+                        k36.mul_add(qd6 * u169, t6) + qd3.mul_add(u166, qd4 * u167),
                     ),
             );
         /// C15 = sum of D15k qd_k (6.44)
@@ -1352,14 +1076,14 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t22 - t23);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd4.mul_add(u112, qd5.mul_add(u131, k64 * t7));
-        let t24 = qd4.mul_add(u111, qd5.mul_add(u130, t8));
+        let cor2_2 = k1 * qd4.mul_add(u111, qd5.mul_add(u130, k64 * t7));
+        let t24 = qd4.mul_add(u110, qd5.mul_add(u129, t8));
         let t25 = qd1
             .mul_add(
-                u143,
+                u142,
                 (-qd1)
                     .mul_add(
-                        u135,
+                        u134,
                         k64
                             .mul_add(
                                 u58 * qd2,
@@ -1371,18 +1095,18 @@ mod __dynamics {
         let cor2_3 = k1 * (t24 + t25);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t24 - t25);
-        let t26 = qd5.mul_add(u164, k42.mul_add(u62 * qd3, t9));
+        let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t9));
         let t27 = k7 * (u6 * qd6);
         let t28 = qd1
             .mul_add(
-                u149,
+                u148,
                 qd2
                     .mul_add(
-                        u112,
+                        u111,
                         (-qd1)
                             .mul_add(
-                                u137,
-                                qd3.mul_add(u111, qd5.mul_add(u118, t27) + t9),
+                                u136,
+                                qd3.mul_add(u110, qd5.mul_add(u117, t27) + t9),
                             ),
                     ),
             );
@@ -1390,13 +1114,13 @@ mod __dynamics {
         let cor2_4 = k1 * (t26 + t28);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t26 - t28);
-        let t29 = t10 + qd4.mul_add(u118, k44 * (u76 * qd3));
+        let t29 = t10 + qd4.mul_add(u117, k44 * (u76 * qd3));
         let t30 = k7 * (u68 * qd6);
         let t31 = qd1
             .mul_add(
-                u163,
-                qd2.mul_add(u131, t30 + t10)
-                    + (-qd1).mul_add(u139, qd4.mul_add(u164, qd3 * u130)),
+                u162,
+                qd2.mul_add(u130, t30 + t10)
+                    + (-qd1).mul_add(u138, qd4.mul_add(u163, qd3 * u129)),
             );
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t29 + t31);
@@ -1407,30 +1131,30 @@ mod __dynamics {
         let cor2_6 = k84 * (t32 + t11);
         /// C62 = sum of D62k qd_k (6.44)
         let cor6_2 = k84 * (t32 - t11);
-        let t33 = qd5.mul_add(u158, t2);
-        let t34 = qd2.mul_add(u111, qd1 * u150)
+        let t33 = qd5.mul_add(u157, t2);
+        let t34 = qd2.mul_add(u110, qd1 * u149)
             + (-qd1)
                 .mul_add(
-                    u146,
+                    u145,
                     qd3
                         .mul_add(
-                            u103,
-                            t2 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u116, t27)),
+                            u102,
+                            t2 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u115, t27)),
                         ),
                 );
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
-        let t35 = qd4.mul_add(u116, t12);
+        let t35 = qd4.mul_add(u115, t12);
         let t36 = qd1
             .mul_add(
-                u167,
+                u166,
                 (-qd1)
                     .mul_add(
-                        u147,
-                        qd4.mul_add(u158, qd3 * u125)
-                            + qd2.mul_add(u130, (-k44).mul_add(u76 * qd2, t30 + t12)),
+                        u146,
+                        qd4.mul_add(u157, qd3 * u124)
+                            + qd2.mul_add(u129, (-k44).mul_add(u76 * qd2, t30 + t12)),
                     ),
             );
         /// C35 = sum of D35k qd_k (6.44)
@@ -1439,18 +1163,18 @@ mod __dynamics {
         let cor5_3 = k1 * (t35 - t36);
         let t37 = qd2
             .mul_add(
-                u164,
+                u163,
                 qd3
                     .mul_add(
-                        u158,
+                        u157,
                         (-qd2)
                             .mul_add(
-                                u118,
+                                u117,
                                 (-qd3)
-                                    .mul_add(u116, k81.mul_add(u2 * qd4, k36 * (s5 * qd6))),
+                                    .mul_add(u115, k81.mul_add(u2 * qd4, k36 * (s5 * qd6))),
                             ),
                     ),
-            ) + (-qd1).mul_add(u154, qd1 * u168);
+            ) + (-qd1).mul_add(u153, qd1 * u167);
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t37;
         /// C54 = sum of D54k qd_k (6.44)
@@ -1568,14 +1292,91 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let (Configuration { k7, .. }, Motion { v48, v73, v76, v77, v78, v79, .. }) = motion(
-            p_,
-            q_,
-            qd_,
-        );
+        let (
+            Configuration {
+                s2,
+                c2,
+                k2,
+                s3,
+                c3,
+                s4,
+                c4,
+                s5,
+                c5,
+                k7,
+                k19,
+                k23,
+                k24,
+                k36,
+                k43,
+                k44,
+                u89,
+                u90,
+                u94,
+                u95,
+                u96,
+                k61,
+                k66,
+                ..
+            },
+            Motion {
+                v9,
+                v14,
+                v30,
+                v31,
+                v32,
+                v33,
+                v34,
+                v35,
+                v36,
+                v37,
+                v39,
+                v42,
+                v43,
+                v44,
+                v46,
+                v48,
+                v54,
+                v55,
+                v56,
+                v57,
+                v61,
+                v62,
+                v65,
+                v66,
+                ..
+            },
+        ) = motion(p_, q_, qd_);
+        let [qd1, _, _, _, _, _] = *qd_;
         /// centripetal, Coriolis and gravity torque 6
         let h6 = k7 * v48;
-        [v79, v78, v77, v76, v73, h6]
+        let t1 = k23.mul_add(v9, u94);
+        let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u95);
+        let t3 = c3.mul_add(t1, s3 * t2);
+        let t4 = (-s3).mul_add(t1, c3 * t2);
+        let t5 = v33 + t3;
+        let t6 = k19.mul_add((-s4).mul_add(t5, v36), k36 * (v46 * v56)) + v54;
+        /// centripetal, Coriolis and gravity torque 5
+        let h5 = k19
+            .mul_add(
+                c5.mul_add((-s4).mul_add(v35, c4 * t5), s5 * (v34 + t4)),
+                k7.mul_add(v44 * v56, v55),
+            );
+        let t7 = c5.mul_add(t6, (-s5).mul_add(v57, v42));
+        let t8 = k61.mul_add(v37 * v39, -h5);
+        /// centripetal, Coriolis and gravity torque 4
+        let h4 = s5.mul_add(t6, c5.mul_add(v57, v43));
+        /// centripetal, Coriolis and gravity torque 3
+        let h3 = k66.mul_add(t3, k24.mul_add(t4, v30)) + v62 - c4.mul_add(t8, s4 * t7);
+        /// centripetal, Coriolis and gravity torque 2
+        let h2 = h3 + k2.mul_add(v65, u96 + v14);
+        /// centripetal, Coriolis and gravity torque 1
+        let h1 = u89
+            .mul_add(
+                (-s4).mul_add(t8, c4.mul_add(t7, k44.mul_add(v61, v31))),
+                u90 * (k43.mul_add(v61, v32) + h4),
+            ) + v66;
+        [h1, h2, h3, h4, h5, h6]
     }
     #[inline(always)]
     pub(super) fn inverse_dynamics<T: ::dynamics_runtime::Real>(
@@ -1630,11 +1431,11 @@ mod __dynamics {
                 k47,
                 u89,
                 u90,
+                u94,
                 u95,
-                u96,
                 k53,
                 k54,
-                u97,
+                u96,
                 k57,
                 k58,
                 k61,
@@ -1685,8 +1486,8 @@ mod __dynamics {
         let t16 = qdd2 + t5;
         let t17 = t4 + (t4 - t14);
         let t18 = k2.mul_add(t17, k47 * v10);
-        let t19 = k23.mul_add(v9, k3.mul_add(t14, u95));
-        let t20 = k2.mul_add(t16, k47.mul_add(t13, u96));
+        let t19 = k23.mul_add(v9, k3.mul_add(t14, u94));
+        let t20 = k2.mul_add(t16, k47.mul_add(t13, u95));
         let t21 = s3.mul_add(t20, c3 * t19);
         let t22 = (-s3).mul_add(t19, c3 * t20);
         let t23 = qdd2 + qdd3;
@@ -1766,7 +1567,7 @@ mod __dynamics {
         let tau2 = k2
             .mul_add(
                 t49,
-                k54.mul_add(t5, k31.mul_add(qdd2, u97))
+                k54.mul_add(t5, k31.mul_add(qdd2, u96))
                     + k10.mul_add(v13, k12.mul_add(t14, k32 * t13)) + tau3,
             );
         /// T1 (6.46)
@@ -1942,167 +1743,6 @@ mod __dynamics {
     ) -> T {
         let Configuration { p, .. } = configuration(p_, q_);
         p
-    }
-    #[inline(always)]
-    pub(super) fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
-        p_: &[T; 0usize],
-        q_: &[T; 6usize],
-    ) -> ::core::option::Option<[[T; 6usize]; 6usize]> {
-        let Configuration {
-            m1_1,
-            u177,
-            u187,
-            u195,
-            u201,
-            u205,
-            mi6_6,
-            mi1_6,
-            mi1_1,
-            mi2_6,
-            mi1_2,
-            mi3_6,
-            mi1_3,
-            mi4_6,
-            mi1_4,
-            mi5_6,
-            mi1_5,
-            mi2_2,
-            mi2_3,
-            mi2_4,
-            mi2_5,
-            mi3_3,
-            mi3_4,
-            mi3_5,
-            mi4_4,
-            mi4_5,
-            mi5_5,
-            ..
-        } = configuration(p_, q_);
-        if m1_1 > T::ZERO && u177 > T::ZERO && u187 > T::ZERO && u195 > T::ZERO
-            && u201 > T::ZERO && u205 > T::ZERO
-        {
-            ::core::option::Option::Some([
-                [mi1_1, mi1_2, mi1_3, mi1_4, mi1_5, mi1_6],
-                [mi1_2, mi2_2, mi2_3, mi2_4, mi2_5, mi2_6],
-                [mi1_3, mi2_3, mi3_3, mi3_4, mi3_5, mi3_6],
-                [mi1_4, mi2_4, mi3_4, mi4_4, mi4_5, mi4_6],
-                [mi1_5, mi2_5, mi3_5, mi4_5, mi5_5, mi5_6],
-                [mi1_6, mi2_6, mi3_6, mi4_6, mi5_6, mi6_6],
-            ])
-        } else {
-            ::core::option::Option::None
-        }
-    }
-    #[inline(always)]
-    pub(super) fn forward_dynamics<T: ::dynamics_runtime::Real>(
-        p_: &[T; 0usize],
-        q_: &[T; 6usize],
-        qd_: &[T; 6usize],
-        tau_: &[T; 6usize],
-    ) -> ::core::option::Option<[T; 6usize]> {
-        let (
-            Configuration {
-                k7,
-                k36,
-                m1_1,
-                u171,
-                u172,
-                u173,
-                u174,
-                u175,
-                u176,
-                u177,
-                u178,
-                u180,
-                u182,
-                u184,
-                u186,
-                u187,
-                u188,
-                u190,
-                u192,
-                u194,
-                u195,
-                u196,
-                u198,
-                u200,
-                u201,
-                u202,
-                u204,
-                u205,
-                mi6_6,
-                ..
-            },
-            Motion { v48, v73, v76, v77, v78, v79, .. },
-        ) = motion(p_, q_, qd_);
-        let [tau1, tau2, tau3, tau4, tau5, tau6] = *tau_;
-        let t1 = tau1 - v79;
-        let t2 = (-u172).mul_add(t1, tau2 - v78);
-        let t3 = (-u180).mul_add(t2, (-u173).mul_add(t1, tau3 - v77));
-        let t4 = (-u190)
-            .mul_add(t3, (-u182).mul_add(t2, (-u174).mul_add(t1, tau4 - v76)));
-        let t5 = (-u198)
-            .mul_add(
-                t4,
-                (-u192).mul_add(t3, (-u184).mul_add(t2, (-u175).mul_add(t1, tau5 - v73))),
-            );
-        /// joint acceleration 6
-        let qdd6 = mi6_6
-            * k36
-                .mul_add(
-                    u204 * t5,
-                    k36
-                        .mul_add(
-                            u200 * t4,
-                            k36
-                                .mul_add(
-                                    u194 * t3,
-                                    k36
-                                        .mul_add(
-                                            u186 * t2,
-                                            k7.mul_add(u176 * t1, k36.mul_add(v48, tau6)),
-                                        ),
-                                ),
-                        ),
-                );
-        /// joint acceleration 5
-        let qdd5 = k36.mul_add(u204 * qdd6, u202 * t5);
-        /// joint acceleration 4
-        let qdd4 = (-u198).mul_add(qdd5, k36.mul_add(u200 * qdd6, u196 * t4));
-        /// joint acceleration 3
-        let qdd3 = (-u190)
-            .mul_add(qdd4, (-u192).mul_add(qdd5, k36.mul_add(u194 * qdd6, u188 * t3)));
-        /// joint acceleration 2
-        let qdd2 = (-u180)
-            .mul_add(
-                qdd3,
-                (-u182)
-                    .mul_add(
-                        qdd4,
-                        (-u184).mul_add(qdd5, k36.mul_add(u186 * qdd6, u178 * t2)),
-                    ),
-            );
-        /// joint acceleration 1
-        let qdd1 = (-u172)
-            .mul_add(
-                qdd2,
-                (-u173)
-                    .mul_add(
-                        qdd3,
-                        (-u174)
-                            .mul_add(
-                                qdd4,
-                                (-u175).mul_add(qdd5, k7.mul_add(u176 * qdd6, u171 * t1)),
-                            ),
-                    ),
-            );
-        if m1_1 > T::ZERO && u177 > T::ZERO && u187 > T::ZERO && u195 > T::ZERO
-            && u201 > T::ZERO && u205 > T::ZERO
-        {
-            ::core::option::Option::Some([qdd1, qdd2, qdd3, qdd4, qdd5, qdd6])
-        } else {
-            ::core::option::Option::None
-        }
     }
 }
 /// The generated functions, out of reach of the names around the derive.
@@ -2986,6 +2626,902 @@ mod __kinematics {
         [tb1, tb2, tb3, tb4, tb5, tb6]
     }
 }
+/// The generated functions, out of reach of the names around the derive.
+#[allow(
+    non_snake_case,
+    non_camel_case_types,
+    unused_variables,
+    unused_doc_comments,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+mod __forward {
+    /// What the dynamics need from the parameters and `q` alone, computed once.
+    pub(super) struct Configuration<T> {
+        s2: T,
+        c2: T,
+        k1: T,
+        s3: T,
+        c3: T,
+        k2: T,
+        k3: T,
+        k4: T,
+        s4: T,
+        c4: T,
+        s5: T,
+        c5: T,
+        k5: T,
+        k6: T,
+        k7: T,
+        k8: T,
+        k9: T,
+        k10: T,
+        k11: T,
+        k12: T,
+        k13: T,
+        k14: T,
+        k15: T,
+        k16: T,
+        k17: T,
+        k18: T,
+        k19: T,
+        k20: T,
+        k21: T,
+        k22: T,
+        k23: T,
+        k24: T,
+        k25: T,
+        k26: T,
+        k27: T,
+        k28: T,
+        k30: T,
+        k34: T,
+        k37: T,
+        k38: T,
+        k41: T,
+        u39: T,
+        u45: T,
+        u46: T,
+        u51: T,
+        u52: T,
+        k44: T,
+        k45: T,
+        u53: T,
+        k48: T,
+        k49: T,
+        k50: T,
+        k51: T,
+        k52: T,
+        k53: T,
+        k54: T,
+        k55: T,
+        k56: T,
+        k57: T,
+        k58: T,
+        k59: T,
+        k60: T,
+        k61: T,
+        u54: T,
+        u55: T,
+        u56: T,
+        u57: T,
+        u58: T,
+        u59: T,
+        u60: T,
+        u61: T,
+        u63: T,
+        u65: T,
+        u67: T,
+        u69: T,
+        u70: T,
+        u71: T,
+        u73: T,
+        u75: T,
+        u77: T,
+        u78: T,
+        u79: T,
+        u81: T,
+        u83: T,
+        u84: T,
+        u85: T,
+        u87: T,
+        u88: T,
+        mi6_6: T,
+        mi1_6: T,
+        mi1_1: T,
+        mi2_6: T,
+        mi1_2: T,
+        mi3_6: T,
+        mi1_3: T,
+        mi4_6: T,
+        mi1_4: T,
+        mi5_6: T,
+        mi1_5: T,
+        mi2_2: T,
+        mi2_3: T,
+        mi2_4: T,
+        mi2_5: T,
+        mi3_3: T,
+        mi3_4: T,
+        mi3_5: T,
+        mi4_4: T,
+        mi4_5: T,
+        mi5_5: T,
+    }
+    #[inline(always)]
+    pub(super) fn configuration<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> Configuration<T> {
+        let k1: T = T::from_f64(0.4318);
+        let k2: T = T::from_f64(0.15005);
+        let k3: T = T::from_f64(0.0203);
+        let k4: T = T::from_f64(-0.0203);
+        let k5: T = T::from_f64(0.0003);
+        let k6: T = T::from_f64(0.00004);
+        let k7: T = T::from_f64(-0.0070992);
+        let k8: T = T::from_f64(0.023751);
+        let k9: T = T::from_f64(-0.023751);
+        let k10: T = T::from_f64(0.0047376);
+        let k11: T = T::from_f64(-0.0047376);
+        let k12: T = T::from_f64(-0.0004);
+        let k13: T = T::from_f64(0.00288);
+        let k14: T = T::from_f64(0.00024216);
+        let k15: T = T::from_f64(-0.00024216);
+        let k16: T = T::from_f64(-0.00288);
+        let k17: T = T::from_f64(0.00064216);
+        let k18: T = T::from_f64(-0.0003);
+        let k19: T = T::from_f64(0.0016);
+        let k20: T = T::from_f64(-0.4318);
+        let k21: T = T::from_f64(0.025375);
+        let k22: T = T::from_f64(-0.011273199);
+        let k23: T = T::from_f64(0.89133);
+        let k24: T = T::from_f64(0.3586500705);
+        let k25: T = T::from_f64(0.3251198455);
+        let k26: T = T::from_f64(1.748114002);
+        let k27: T = T::from_f64(-0.6903913435);
+        let k28: T = T::from_f64(-1.601861202);
+        let k29: T = T::from_f64(3.153542285625);
+        let k30: T = T::from_f64(-0.00004);
+        let k31: T = T::from_f64(0.00020216);
+        let k32: T = T::from_f64(-0.00020216);
+        let k33: T = T::from_f64(0.00028216);
+        let k34: T = T::from_f64(-0.00064216);
+        let k35: T = T::from_f64(-0.000058464);
+        let k36: T = T::from_f64(0.001243584);
+        let k37: T = T::from_f64(0.000058464);
+        let k38: T = T::from_f64(-0.001243584);
+        let k39: T = T::from_f64(-2.0);
+        let k40: T = T::from_f64(0.000432144);
+        let k41: T = T::from_f64(-0.15005);
+        let k42: T = T::from_f64(-0.000432144);
+        let k43: T = T::from_f64(9.81);
+        let k44: T = T::from_f64(-3.349975204);
+        let k45: T = T::from_f64(1.601861202);
+        let k46: T = T::from_f64(37.2347379);
+        let k47: T = T::from_f64(-1.024164);
+        let k48: T = T::from_f64(-0.033530225);
+        let k49: T = T::from_f64(-0.3251198455);
+        let k50: T = T::from_f64(-0.0016);
+        let k51: T = T::from_f64(-0.0013);
+        let k52: T = T::from_f64(-0.0141984);
+        let k53: T = T::from_f64(0.0141984);
+        let k54: T = T::from_f64(0.8636);
+        let k55: T = T::from_f64(-0.025375);
+        let k56: T = T::from_f64(-0.89133);
+        let k57: T = T::from_f64(0.05075);
+        let k58: T = T::from_f64(1.78266);
+        let k59: T = T::from_f64(-0.022546398);
+        let k60: T = T::from_f64(0.022546398);
+        let k61: T = T::from_f64(0.0406);
+        let k62: T = T::from_f64(0.0000000016);
+        let k63: T = T::from_f64(-0.0000000016);
+        let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
+            q_[1],
+            q_[2],
+            q_[3],
+            q_[4],
+        ]);
+        let u1 = s5 * c5;
+        let u2 = k32.mul_add(s5 * s5, k14);
+        let u3 = k5 + u2;
+        let u4 = k19 + k33 - u2;
+        let u5 = c4 * s5;
+        let u6 = s4 * s5;
+        let u7 = k34 + u3;
+        let u8 = (-(s4 * s4)).mul_add(u7, u3);
+        let u9 = k31 * (c4 * u1);
+        let u10 = k35 * u5;
+        let u11 = k36 * c5;
+        let u12 = u10 + u4;
+        let u13 = u10 + u12;
+        let u14 = u11 + u10;
+        let u15 = k38 * u5;
+        let u16 = (-(s4 * c4)).mul_add(u7, k35 * u6);
+        let u17 = k32.mul_add(s4 * u1, k38 * u6);
+        let u18 = k16.mul_add(u5, k21);
+        let u19 = k13.mul_add(c5, k23);
+        let u20 = u11 + (k25 + u11) + u8;
+        let u21 = k24 + k17 + u14 + (u14 + u3) - u8;
+        let u22 = u9 + ((-k37).mul_add(c5, k22) - u15);
+        let u23 = k11 + u17;
+        let u24 = (-s3).mul_add(u19, c3 * u18);
+        let u25 = s3 * u18;
+        let u26 = c3 * u19;
+        let u27 = u26 + u25;
+        let u28 = s3 * s3;
+        let u29 = s3 * c3;
+        let u30 = u20 - u13;
+        let u31 = (-u28).mul_add(u30, k39.mul_add(u22 * u29, u20));
+        let u32 = k1 * u24;
+        let u33 = k40 * u6;
+        let u34 = u33 + u32;
+        let u35 = u13 + u34 + (u34 + u20) - u31;
+        let u36 = u32 + u21;
+        let u37 = u33 + (k28 + u33) + u31;
+        let u38 = c2
+            .mul_add(
+                s3.mul_add(u16, k41.mul_add(u27, c3.mul_add(u23, k9))),
+                s2
+                    * c3
+                        .mul_add(
+                            u16,
+                            (-k2)
+                                .mul_add(u24, (-s3).mul_add(u23, (-k36).mul_add(u6, k27))),
+                        ),
+            );
+        let u39 = (-k39)
+            .mul_add(
+                u29.mul_add(u30, k20.mul_add(u27, u22.mul_add(c3.mul_add(c3, -u28), k7)))
+                    * (s2 * c2),
+                k29 + u35,
+            ) + (s2 * s2).mul_add(u37 - u35, u37 - u37);
+        let u40 = s3 * u6;
+        let u41 = c4 * c5;
+        let u42 = s4 * c5;
+        let u43 = k36.mul_add(u41, k35.mul_add(s5, k17 * c4));
+        let u44 = s3.mul_add(u41, c3 * s5);
+        let u45 = c2.mul_add(s3, s2 * c3);
+        let u46 = (-s2).mul_add(s3, c2 * c3);
+        let u47 = u16
+            .mul_add(u45, k41.mul_add((-c2).mul_add(-(u26 + u25), s2 * u24), u23 * u46));
+        let u48 = u12
+            .mul_add(
+                u46,
+                k36
+                    .mul_add(u5, u9)
+                    .mul_add(
+                        u45,
+                        c2.mul_add(k40.mul_add(c3 * u6, u15), k42 * (s2 * u40)),
+                    ),
+            );
+        let u49 = c2
+            .mul_add(
+                k42.mul_add((-s3).mul_add(s5, c3 * u41), k38 * u42),
+                k40
+                    .mul_add(
+                        s2 * u44,
+                        k35.mul_add(u42 * u46, k36.mul_add(u42, k17 * s4) * u45),
+                    ),
+            );
+        let u50 = (-c5).mul_add(u46, u5 * u45);
+        let u51 = k43 * s2;
+        let u52 = k43 * c2;
+        let u53 = k47.mul_add(s2, k46 * c2);
+        let u54 = T::ONE / u39;
+        let u55 = u38 * u54;
+        let u56 = u47 * u54;
+        let u57 = u48 * u54;
+        let u58 = u49 * u54;
+        let u59 = u50 * u54;
+        let u60 = (-u38).mul_add(u55, k26 + u32 + u36);
+        let u61 = T::ONE / u60;
+        let u62 = (-u47).mul_add(u55, u36);
+        let u63 = u61 * u62;
+        let u64 = (-u48).mul_add(u55, k36.mul_add(u40, u17));
+        let u65 = u61 * u64;
+        let u66 = (-u49).mul_add(u55, k38.mul_add(u44, u43));
+        let u67 = u61 * u66;
+        let u68 = u50.mul_add(u55, u6);
+        let u69 = u61 * u68;
+        let u70 = (-u62).mul_add(u63, (-u47).mul_add(u56, u21));
+        let u71 = T::ONE / u70;
+        let u72 = (-u63).mul_add(u64, (-u48).mul_add(u56, u17));
+        let u73 = u71 * u72;
+        let u74 = (-u63).mul_add(u66, (-u49).mul_add(u56, u43));
+        let u75 = u71 * u74;
+        let u76 = (-u63).mul_add(u68, u50.mul_add(u56, u6));
+        let u77 = u71 * u76;
+        let u78 = (-u72).mul_add(u73, (-u64).mul_add(u65, (-u48).mul_add(u57, u4)));
+        let u79 = T::ONE / u78;
+        let u80 = -u73.mul_add(u74, u65.mul_add(u66, u49 * u57));
+        let u81 = u79 * u80;
+        let u82 = (-u73).mul_add(u76, (-u65).mul_add(u68, u50.mul_add(u57, c5)));
+        let u83 = u79 * u82;
+        let u84 = (-u80)
+            .mul_add(
+                u81,
+                (-u74).mul_add(u75, (-u66).mul_add(u67, (-u49).mul_add(u58, k17))),
+            );
+        let u85 = T::ONE / u84;
+        let u86 = (-u81)
+            .mul_add(u82, (-u75).mul_add(u76, (-u67).mul_add(u68, u50 * u58)));
+        let u87 = u85 * u86;
+        let u88 = k63
+            .mul_add(
+                u86 * u87,
+                k63
+                    .mul_add(
+                        u82 * u83,
+                        k63
+                            .mul_add(
+                                u76 * u77,
+                                k63.mul_add(u68 * u69, k63.mul_add(u50 * u59, k6)),
+                            ),
+                    ),
+            );
+        /// (M^-1)66
+        let mi6_6 = T::ONE / u88;
+        let u89 = u55.mul_add(u63, -u56);
+        let u90 = (-u73).mul_add(u89, u55.mul_add(u65, -u57));
+        let u91 = (-u81).mul_add(u90, (-u75).mul_add(u89, u55.mul_add(u67, -u58)));
+        let u92 = (-u87)
+            .mul_add(
+                u91,
+                (-u83).mul_add(u90, (-u77).mul_add(u89, u55.mul_add(u69, u59))),
+            );
+        let u93 = u63.mul_add(u73, -u65);
+        let u94 = (-u81).mul_add(u93, u63.mul_add(u75, -u67));
+        let u95 = u87.mul_add(u94, u83.mul_add(u93, (-u63).mul_add(u77, u69)));
+        let u96 = u73.mul_add(u81, -u75);
+        let u97 = u87.mul_add(u96, (-u73).mul_add(u83, u77));
+        let u98 = (-u81).mul_add(u87, u83);
+        let u99 = mi6_6 * u92;
+        /// (M^-1)16
+        let mi1_6 = k6 * u99;
+        let u100 = u85 * u91;
+        let u101 = u79 * u90;
+        let u102 = u71 * u89;
+        let u103 = u55 * u61;
+        /// (M^-1)11
+        let mi1_1 = k62
+            .mul_add(
+                u92 * u99,
+                u91
+                    .mul_add(
+                        u100,
+                        u90.mul_add(u101, u89.mul_add(u102, u55.mul_add(u103, u54))),
+                    ),
+            );
+        let u104 = mi6_6 * u95;
+        /// (M^-1)26
+        let mi2_6 = k30 * u104;
+        let u105 = u85 * u94;
+        let u106 = u79 * u93;
+        let u107 = u63 * u71;
+        /// (M^-1)12
+        let mi1_2 = k63
+            .mul_add(
+                u92 * u104,
+                u91.mul_add(u105, u90.mul_add(u106, -u89.mul_add(u107, u103))),
+            );
+        let u108 = mi6_6 * u97;
+        /// (M^-1)36
+        let mi3_6 = k30 * u108;
+        let u109 = u85 * u96;
+        let u110 = u73 * u79;
+        /// (M^-1)13
+        let mi1_3 = k63
+            .mul_add(u92 * u108, u91.mul_add(u109, (-u90).mul_add(u110, u102)));
+        let u111 = mi6_6 * u98;
+        /// (M^-1)46
+        let mi4_6 = k30 * u111;
+        let u112 = u81 * u85;
+        /// (M^-1)14
+        let mi1_4 = k63.mul_add(u92 * u111, (-u91).mul_add(u112, u101));
+        let u113 = u87 * mi6_6;
+        /// (M^-1)56
+        let mi5_6 = k30 * u113;
+        /// (M^-1)15
+        let mi1_5 = k63.mul_add(u92 * u113, u100);
+        /// (M^-1)22
+        let mi2_2 = k62
+            .mul_add(
+                u95 * u104,
+                u94.mul_add(u105, u93.mul_add(u106, u63.mul_add(u107, u61))),
+            );
+        /// (M^-1)23
+        let mi2_3 = k62.mul_add(u95 * u108, u94.mul_add(u109, -u93.mul_add(u110, u107)));
+        /// (M^-1)24
+        let mi2_4 = k62.mul_add(u95 * u111, (-u94).mul_add(u112, u106));
+        /// (M^-1)25
+        let mi2_5 = k62.mul_add(u95 * u113, u105);
+        /// (M^-1)33
+        let mi3_3 = k62.mul_add(u97 * u108, u96.mul_add(u109, u73.mul_add(u110, u71)));
+        /// (M^-1)34
+        let mi3_4 = k62.mul_add(u97 * u111, -u96.mul_add(u112, u110));
+        /// (M^-1)35
+        let mi3_5 = k62.mul_add(u97 * u113, u109);
+        /// (M^-1)44
+        let mi4_4 = k62.mul_add(u98 * u111, u81.mul_add(u112, u79));
+        /// (M^-1)45
+        let mi4_5 = k62.mul_add(u98 * u113, -u112);
+        /// (M^-1)55
+        let mi5_5 = k62.mul_add(u87 * u113, u85);
+        Configuration {
+            s2,
+            c2,
+            k1,
+            s3,
+            c3,
+            k2,
+            k3,
+            k4,
+            s4,
+            c4,
+            s5,
+            c5,
+            k5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k30,
+            k34,
+            k37,
+            k38,
+            k41,
+            u39,
+            u45,
+            u46,
+            u51,
+            u52,
+            k44,
+            k45,
+            u53,
+            k48,
+            k49,
+            k50,
+            k51,
+            k52,
+            k53,
+            k54,
+            k55,
+            k56,
+            k57,
+            k58,
+            k59,
+            k60,
+            k61,
+            u54,
+            u55,
+            u56,
+            u57,
+            u58,
+            u59,
+            u60,
+            u61,
+            u63,
+            u65,
+            u67,
+            u69,
+            u70,
+            u71,
+            u73,
+            u75,
+            u77,
+            u78,
+            u79,
+            u81,
+            u83,
+            u84,
+            u85,
+            u87,
+            u88,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
+        }
+    }
+    #[inline(always)]
+    pub(super) fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> ::core::option::Option<[[T; 6usize]; 6usize]> {
+        let Configuration {
+            u39,
+            u60,
+            u70,
+            u78,
+            u84,
+            u88,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
+            ..
+        } = configuration(p_, q_);
+        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
+            && u84 > T::ZERO && u88 > T::ZERO
+        {
+            ::core::option::Option::Some([
+                [mi1_1, mi1_2, mi1_3, mi1_4, mi1_5, mi1_6],
+                [mi1_2, mi2_2, mi2_3, mi2_4, mi2_5, mi2_6],
+                [mi1_3, mi2_3, mi3_3, mi3_4, mi3_5, mi3_6],
+                [mi1_4, mi2_4, mi3_4, mi4_4, mi4_5, mi4_6],
+                [mi1_5, mi2_5, mi3_5, mi4_5, mi5_5, mi5_6],
+                [mi1_6, mi2_6, mi3_6, mi4_6, mi5_6, mi6_6],
+            ])
+        } else {
+            ::core::option::Option::None
+        }
+    }
+    #[inline(always)]
+    pub(super) fn forward_dynamics<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        tau_: &[T; 6usize],
+    ) -> ::core::option::Option<[T; 6usize]> {
+        let Configuration {
+            s2,
+            c2,
+            k1,
+            s3,
+            c3,
+            k2,
+            k3,
+            k4,
+            s4,
+            c4,
+            s5,
+            c5,
+            k5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k30,
+            k34,
+            k37,
+            k38,
+            k41,
+            u39,
+            u45,
+            u46,
+            u51,
+            u52,
+            k44,
+            k45,
+            u53,
+            k48,
+            k49,
+            k50,
+            k51,
+            k52,
+            k53,
+            k54,
+            k55,
+            k56,
+            k57,
+            k58,
+            k59,
+            k60,
+            k61,
+            u54,
+            u55,
+            u56,
+            u57,
+            u58,
+            u59,
+            u60,
+            u61,
+            u63,
+            u65,
+            u67,
+            u69,
+            u70,
+            u71,
+            u73,
+            u75,
+            u77,
+            u78,
+            u79,
+            u81,
+            u83,
+            u84,
+            u85,
+            u87,
+            u88,
+            mi6_6,
+            ..
+        } = configuration(p_, q_);
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let [tau1, tau2, tau3, tau4, tau5, tau6] = *tau_;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
+        let t3 = qd2 * t2;
+        let t4 = qd2 * t1;
+        let t5 = t1 * t1;
+        let t6 = t2 * t2;
+        let t7 = qd2 * qd2;
+        let t8 = t1 * t2;
+        let t9 = k41.mul_add(t5 + t6, k54 * t4);
+        let t10 = qd2 + qd3;
+        let t11 = t10 * t10;
+        let t12 = u45 * qd1;
+        let t13 = u46 * qd1;
+        let t14 = t10 * t13;
+        let t15 = t10 * t12;
+        let t16 = t12 * t12;
+        let t17 = t13 * t13;
+        let t18 = t12 * t13;
+        let t19 = t11 + t17;
+        let t20 = t11 + t16;
+        let t21 = k54.mul_add(t14, k61.mul_add(t15, t9));
+        let t22 = (-s4).mul_add(t10, c4 * t12);
+        let t23 = -s4.mul_add(t12, c4 * t10);
+        let t24 = qd4 + t13;
+        let t25 = qd4.mul_add(t23, c4 * t14);
+        let t26 = -qd4.mul_add(t22, s4 * t14);
+        let t27 = c5.mul_add(t22, s5 * t24);
+        let t28 = (-s5).mul_add(t22, c5 * t24);
+        let t29 = qd5 - t23;
+        let t30 = qd5.mul_add(t28, (-s5).mul_add(t15, c5 * t25));
+        let t31 = -qd5.mul_add(t27, s5.mul_add(t25, c5 * t15));
+        let t32 = t27 * t28;
+        let t33 = t28 * t29;
+        let t34 = t26 + t32;
+        let t35 = t27.mul_add(t27, t29 * t29);
+        let t36 = t33 + t30;
+        let t37 = qd6 + t28;
+        let t38 = k6.mul_add(t31, k12 * (t27 * t29));
+        let t39 = s5.mul_add(t35, c5 * t34);
+        let t40 = (-c5).mul_add(t35, s5 * t34);
+        let t41 = s4.mul_add(t36, c4 * t39);
+        let t42 = (-c4).mul_add(t36, s4 * t39);
+        let t43 = k13.mul_add(t41, k55.mul_add(t19, k23 * t18));
+        let t44 = k13.mul_add(t40, k56.mul_add(t20, k21 * t18));
+        let t45 = s3.mul_add(t43, c3 * t44);
+        let t46 = k20.mul_add(t7 + t6, u51);
+        let t47 = k1.mul_add(t8, u52);
+        let t48 = c3.mul_add(t46, s3 * t47);
+        let t49 = (-s3).mul_add(t46, c3 * t47);
+        let t50 = k4.mul_add(t19, k1 * t18) + t48;
+        let t51 = k16
+            .mul_add(
+                -s4.mul_add(t50, c4 * t21),
+                k14.mul_add(t30, k30.mul_add(t29 * t37, k17 * t33)),
+            );
+        let t52 = k16
+            .mul_add(
+                c5
+                    .mul_add(
+                        (-s4).mul_add(t21, c4 * t50),
+                        s5 * (k20.mul_add(t20, k3 * t18) + t49),
+                    ),
+                k6.mul_add(t27 * t37, k15.mul_add(t32, k34 * t26)),
+            );
+        let t53 = c5
+            .mul_add(t51, (-s5).mul_add(t38, k5.mul_add(t25, k19 * (t23 * t24))));
+        let t54 = k51.mul_add(t22 * t24, -t52);
+        let t55 = s5.mul_add(t51, c5.mul_add(t38, k18.mul_add(t22 * t23, k50 * t15)));
+        let t56 = (-c4)
+            .mul_add(
+                t54,
+                (-s4)
+                    .mul_add(
+                        t53,
+                        k38
+                            .mul_add(
+                                t41,
+                                k37
+                                    .mul_add(
+                                        t40,
+                                        k56
+                                            .mul_add(
+                                                t48,
+                                                k21.mul_add(t49, k22.mul_add(t16 - t17, k49 * t18)),
+                                            ),
+                                    ),
+                            ),
+                    ),
+            );
+        let t57 = (-c2)
+            .mul_add(
+                k2
+                    .mul_add(
+                        (-s3).mul_add(t44, c3 * t43),
+                        k20
+                            .mul_add(
+                                k16.mul_add(t42, k58.mul_add(t14, k57 * t15)),
+                                k8.mul_add(t8, k52 * t3) + k27.mul_add(t7 - t5, k44 * t4),
+                            ),
+                    ),
+                (-s2)
+                    .mul_add(
+                        k41
+                            .mul_add(
+                                t45,
+                                k26.mul_add(t3, k27 * t8)
+                                    + k9.mul_add(t6 - t7, k53.mul_add(t4, k28 * t3)),
+                            ),
+                        (-u45)
+                            .mul_add(
+                                (-s4)
+                                    .mul_add(
+                                        t54,
+                                        c4
+                                            .mul_add(
+                                                t53,
+                                                k38
+                                                    .mul_add(
+                                                        t42,
+                                                        k23.mul_add(t9, k24 * t14)
+                                                            + k11.mul_add(t17 - t11, k60.mul_add(t15, k25 * t14)),
+                                                    ),
+                                            ),
+                                    ),
+                                (-u46)
+                                    .mul_add(
+                                        k37
+                                            .mul_add(
+                                                t42,
+                                                k10.mul_add(t18, k59 * t14) + k55.mul_add(t9, k48 * t15),
+                                            ) + t55,
+                                        tau1,
+                                    ),
+                            ),
+                    ),
+            );
+        let t58 = (-u55)
+            .mul_add(
+                t57,
+                (-k1)
+                    .mul_add(t45, (-k7).mul_add(t5 - t6, (-k45).mul_add(t8, tau2 - u53)))
+                    - t56,
+            );
+        let t59 = (-u63).mul_add(t58, (-u56).mul_add(t57, tau3 - t56));
+        let t60 = (-u73)
+            .mul_add(t59, (-u65).mul_add(t58, (-u57).mul_add(t57, tau4 - t55)));
+        let t61 = (-u81)
+            .mul_add(
+                t60,
+                (-u75).mul_add(t59, (-u67).mul_add(t58, (-u58).mul_add(t57, tau5 - t52))),
+            );
+        /// joint acceleration 6
+        let qdd6 = mi6_6
+            * k30
+                .mul_add(
+                    u87 * t61,
+                    k30
+                        .mul_add(
+                            u83 * t60,
+                            k30
+                                .mul_add(
+                                    u77 * t59,
+                                    k30
+                                        .mul_add(
+                                            u69 * t58,
+                                            k6.mul_add(u59 * t57, k30.mul_add(t31, tau6)),
+                                        ),
+                                ),
+                        ),
+                );
+        /// joint acceleration 5
+        let qdd5 = k30.mul_add(u87 * qdd6, u85 * t61);
+        /// joint acceleration 4
+        let qdd4 = (-u81).mul_add(qdd5, k30.mul_add(u83 * qdd6, u79 * t60));
+        /// joint acceleration 3
+        let qdd3 = (-u73)
+            .mul_add(qdd4, (-u75).mul_add(qdd5, k30.mul_add(u77 * qdd6, u71 * t59)));
+        /// joint acceleration 2
+        let qdd2 = (-u63)
+            .mul_add(
+                qdd3,
+                (-u65)
+                    .mul_add(
+                        qdd4,
+                        (-u67).mul_add(qdd5, k30.mul_add(u69 * qdd6, u61 * t58)),
+                    ),
+            );
+        /// joint acceleration 1
+        let qdd1 = (-u55)
+            .mul_add(
+                qdd2,
+                (-u56)
+                    .mul_add(
+                        qdd3,
+                        (-u57)
+                            .mul_add(
+                                qdd4,
+                                (-u58).mul_add(qdd5, k6.mul_add(u59 * qdd6, u54 * t57)),
+                            ),
+                    ),
+            );
+        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
+            && u84 > T::ZERO && u88 > T::ZERO
+        {
+            ::core::option::Option::Some([qdd1, qdd2, qdd3, qdd4, qdd5, qdd6])
+        } else {
+            ::core::option::Option::None
+        }
+    }
+}
 impl Puma560 {
     /// The parameters the equations read, in the order of the description.
     #[doc(hidden)]
@@ -3160,7 +3696,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         [[T; 6usize]; 6usize],
         ::dynamics_runtime::NotPositiveDefinite,
     > {
-        __dynamics::mass_matrix_inverse(&self.__dynamics_parameters(), q_)
+        __forward::mass_matrix_inverse(&self.__dynamics_parameters(), q_)
             .ok_or(::dynamics_runtime::NotPositiveDefinite)
     }
     /// q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).
@@ -3171,7 +3707,7 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
         qd_: &[T; 6usize],
         tau_: &[T; 6usize],
     ) -> ::core::result::Result<[T; 6usize], ::dynamics_runtime::NotPositiveDefinite> {
-        __dynamics::forward_dynamics(&self.__dynamics_parameters(), q_, qd_, tau_)
+        __forward::forward_dynamics(&self.__dynamics_parameters(), q_, qd_, tau_)
             .ok_or(::dynamics_runtime::NotPositiveDefinite)
     }
 }

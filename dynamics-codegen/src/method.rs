@@ -58,10 +58,10 @@ pub enum Returns {
     Jacobian,
     /// `[T; 6]`: a linear and an angular part.
     Spatial,
-    /// `Result<[[T; N]; N], NotPositiveDefinite>`: a matrix through the LDLᵀ of M.
-    Inverse,
-    /// `Result<[T; N], NotPositiveDefinite>`: a vector through the LDLᵀ of M.
-    Solution,
+    /// `Result<[[T; N]; N], NotPositiveDefinite>`: a matrix solved with the LDLᵀ of M.
+    SolvedMatrix,
+    /// `Result<[T; N], NotPositiveDefinite>`: a vector solved with the LDLᵀ of M.
+    SolvedVector,
 }
 
 /// A family of methods, emitted in a module of its own with its own shared configuration and
@@ -73,11 +73,13 @@ pub enum Family {
     Dynamics,
     /// Poses, Jacobians, acceleration bias, statics.
     Kinematics,
+    /// What solves with M through its LDLᵀ: forward dynamics, `M⁻¹`.
+    Forward,
 }
 
 impl Family {
     /// Every family, in the order the derive emits their modules.
-    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics];
+    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics, Family::Forward];
 
     /// The name of the module holding its generated functions.
     #[must_use]
@@ -85,6 +87,7 @@ impl Family {
         match self {
             Family::Dynamics => "__dynamics",
             Family::Kinematics => "__kinematics",
+            Family::Forward => "__forward",
         }
     }
 
@@ -94,6 +97,7 @@ impl Family {
         match self {
             Family::Dynamics => "",
             Family::Kinematics => "kinematic ",
+            Family::Forward => "forward ",
         }
     }
 }
@@ -140,11 +144,11 @@ macro_rules! returns {
     (spatial) => {
         Returns::Spatial
     };
-    (inverse) => {
-        Returns::Inverse
+    (solved_matrix) => {
+        Returns::SolvedMatrix
     };
-    (solution) => {
-        Returns::Solution
+    (solved_vector) => {
+        Returns::SolvedVector
     };
 }
 
@@ -155,6 +159,9 @@ macro_rules! family {
     };
     (kinematics) => {
         Family::Kinematics
+    };
+    (forward) => {
+        Family::Forward
     };
 }
 
@@ -285,12 +292,12 @@ impl Method {
             Method::JointTorquesForBaseWrench => {
                 Shape::Vector(&eq.kinematics.torques_for_base_wrench)
             }
-            Method::MassMatrixInverse => Shape::Inverse {
-                pivots: &eq.forward.pivots,
+            Method::MassMatrixInverse => Shape::SolvedMatrix {
+                pivots: &eq.forward.factors.pivots,
                 matrix: &eq.forward.mass_inverse,
             },
-            Method::ForwardDynamics => Shape::Solution {
-                pivots: &eq.forward.pivots,
+            Method::ForwardDynamics => Shape::SolvedVector {
+                pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },
         }

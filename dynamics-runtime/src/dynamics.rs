@@ -91,10 +91,10 @@ macro_rules! array_result {
     (scalar, $t:ty, $n:ident) => {
         $t
     };
-    (inverse, $t:ty, $n:ident) => {
+    (solved_matrix, $t:ty, $n:ident) => {
         Result<[[$t; $n]; $n], NotPositiveDefinite>
     };
-    (solution, $t:ty, $n:ident) => {
+    (solved_vector, $t:ty, $n:ident) => {
         Result<[$t; $n], NotPositiveDefinite>
     };
 }

@@ -6,14 +6,15 @@
 // file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
 //
 // A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`, `tau`), its result (`matrix`,
-// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, or `inverse` and `solution`: a
-// matrix or vector, or `NotPositiveDefinite`) and the name of its nalgebra wrapper, then
+// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, or `solved_matrix` and
+// `solved_vector`: a matrix or vector solved with M, or `NotPositiveDefinite`) and the name of
+// its nalgebra wrapper, then
 //
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
 //         variant: Name,                 // the codegen enum's variant
 //         family: dynamics,              // the generated module it goes to (`Family`):
-//                                        // dynamics, kinematics
+//                                        // dynamics, kinematics, forward
 //         equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if it has one
 //         prefix: "tau",                 // generated element names: tau3, m1_2, p
 //         summary: "…",                  // one-line doc of `dynamics emit`
@@ -207,9 +208,9 @@ macro_rules! for_each_method {
             /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of `M`;
             /// `Err(NotPositiveDefinite)` where a pivot of the factorization is not positive (a
             /// robot whose parameters leave a joint without inertia).
-            fn mass_matrix_inverse(q) -> inverse, nalgebra mass_matrix_inverse_na {
+            fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na {
                 variant: MassMatrixInverse,
-                family: dynamics,
+                family: forward,
                 equation: None,
                 prefix: "mi",
                 summary: "M(q)⁻¹, through the LDLᵀ of M.",
@@ -218,9 +219,9 @@ macro_rules! for_each_method {
             /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint friction where
             /// the robot declares it, through the LDLᵀ factorization of `M`: the inverse of
             /// `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot is not positive.
-            fn forward_dynamics(q, qd, tau) -> solution, nalgebra forward_dynamics_na {
+            fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na {
                 variant: ForwardDynamics,
-                family: dynamics,
+                family: forward,
                 equation: None,
                 prefix: "qdd",
                 summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",

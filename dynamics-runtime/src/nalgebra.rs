@@ -48,8 +48,8 @@ macro_rules! nalgebra_result {
     (poses, $t:ty, $n:ident) => { [Isometry3<$t>; $n] };
     (jacobian, $t:ty, $n:ident) => { SMatrix<$t, 6, $n> };
     (spatial, $t:ty, $n:ident) => { SVector<$t, 6> };
-    (inverse, $t:ty, $n:ident) => { Result<SMatrix<$t, $n, $n>, NotPositiveDefinite> };
-    (solution, $t:ty, $n:ident) => { Result<SVector<$t, $n>, NotPositiveDefinite> };
+    (solved_matrix, $t:ty, $n:ident) => { Result<SMatrix<$t, $n, $n>, NotPositiveDefinite> };
+    (solved_vector, $t:ty, $n:ident) => { Result<SVector<$t, $n>, NotPositiveDefinite> };
     (matrix, $value:expr) => { matrix(&$value) };
     (vector, $value:expr) => { SVector::from($value) };
     (scalar, $value:expr) => { $value };
@@ -57,8 +57,8 @@ macro_rules! nalgebra_result {
     (poses, $value:expr) => { $value.map(|p| isometry(&p)) };
     (jacobian, $value:expr) => { SMatrix::from_fn(|i, j| $value[i][j]) };
     (spatial, $value:expr) => { SVector::from($value) };
-    (inverse, $value:expr) => { $value.map(|m| matrix(&m)) };
-    (solution, $value:expr) => { $value.map(SVector::from) };
+    (solved_matrix, $value:expr) => { $value.map(|m| matrix(&m)) };
+    (solved_vector, $value:expr) => { $value.map(SVector::from) };
 }
 
 for_each_method!(declare_nalgebra);

@@ -313,7 +313,12 @@ fn random_robots() {
         let values = at(&vec![0.0; n]);
         let tau: Vec<f64> = eq.tau.iter().map(|id| values[id.index()]).collect();
         let values = at(&tau);
-        let pivots_positive = eq.forward.pivots.iter().all(|id| values[id.index()] > 0.0);
+        let pivots_positive = eq
+            .forward
+            .factors
+            .pivots
+            .iter()
+            .all(|id| values[id.index()] > 0.0);
         proptest::prop_assert!(pivots_positive);
         let qdd: Vec<f64> = eq.forward.qdd.iter().map(|id| values[id.index()]).collect();
         let reference = c.robot.reference();

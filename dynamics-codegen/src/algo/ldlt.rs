@@ -8,43 +8,61 @@
 
 use super::Scalar;
 
-/// `M = L D Lᵀ`.
+/// `M = L D Lᵀ`, factored once ([`Ldlt::new`]), then solved for one right-hand side
+/// ([`Ldlt::solve`]), for several ([`Ldlt::solve_columns`]), or inverted ([`Ldlt::inverse`]).
 #[derive(Clone, Debug)]
 pub struct Ldlt<S> {
     /// `L_ij` for `j < i` (row i holds i entries; the unit diagonal is not stored).
     pub lower: Vec<Vec<S>>,
-    /// The pivots `d_j`.
+    /// The pivots `d_j`: M is positive definite exactly when all are positive.
     pub pivots: Vec<S>,
     /// `1 / d_j`.
     pub inverse_pivots: Vec<S>,
 }
 
-/// The LDLᵀ factors of the symmetric `m`; `recip` is `1 / x` in the scalar.
-pub fn ldlt<S: Scalar>(m: &[Vec<S>], recip: impl Fn(S) -> S) -> Ldlt<S> {
-    let n = m.len();
-    // w[i][k] = L_ik d_k, k < i.
-    let mut w: Vec<Vec<S>> = vec![Vec::new(); n];
-    let mut lower: Vec<Vec<S>> = vec![Vec::new(); n];
-    let (mut pivots, mut inverse_pivots) = (Vec::new(), Vec::new());
-    for j in 0..n {
-        let d = (0..j).fold(m[j][j], |acc, k| acc - w[j][k] * lower[j][k]);
-        let r = recip(d);
-        for i in j + 1..n {
-            let wij = (0..j).fold(m[i][j], |acc, k| acc - w[i][k] * lower[j][k]);
-            w[i].push(wij);
-            lower[i].push(wij * r);
+impl<S: Copy> Ldlt<S> {
+    /// The same factors, each entry through `f` (a symbolic factor to its node ids and back).
+    #[must_use]
+    pub fn map<U>(&self, f: impl Fn(S) -> U) -> Ldlt<U> {
+        Ldlt {
+            lower: self
+                .lower
+                .iter()
+                .map(|row| row.iter().map(|&x| f(x)).collect())
+                .collect(),
+            pivots: self.pivots.iter().map(|&x| f(x)).collect(),
+            inverse_pivots: self.inverse_pivots.iter().map(|&x| f(x)).collect(),
         }
-        pivots.push(d);
-        inverse_pivots.push(r);
-    }
-    Ldlt {
-        lower,
-        pivots,
-        inverse_pivots,
     }
 }
 
 impl<S: Scalar> Ldlt<S> {
+    /// The factors of the symmetric `m` (its lower triangle is read), n × n.
+    #[must_use]
+    pub fn new(m: &[Vec<S>]) -> Ldlt<S> {
+        let n = m.len();
+        // w[i][k] = L_ik d_k, k < i.
+        let mut w: Vec<Vec<S>> = vec![Vec::new(); n];
+        let mut lower: Vec<Vec<S>> = vec![Vec::new(); n];
+        let (mut pivots, mut inverse_pivots) = (Vec::new(), Vec::new());
+        for j in 0..n {
+            let d = (0..j).fold(m[j][j], |acc, k| acc - w[j][k] * lower[j][k]);
+            let r = d.recip();
+            for i in j + 1..n {
+                let wij = (0..j).fold(m[i][j], |acc, k| acc - w[i][k] * lower[j][k]);
+                w[i].push(wij);
+                lower[i].push(wij * r);
+            }
+            pivots.push(d);
+            inverse_pivots.push(r);
+        }
+        Ldlt {
+            lower,
+            pivots,
+            inverse_pivots,
+        }
+    }
+
     /// `x = M⁻¹ b`.
     #[must_use]
     pub fn solve(&self, b: &[S]) -> Vec<S> {
@@ -65,6 +83,19 @@ impl<S: Scalar> Ldlt<S> {
             x[i] = (i + 1..n).fold(x[i], |acc, k| acc - self.lower[k][i] * x[k]);
         }
         x
+    }
+
+    /// `X = M⁻¹ B` for `B` given by its rows (n × k, any k): each column solved with the same
+    /// factors.
+    #[must_use]
+    pub fn solve_columns(&self, b: &[Vec<S>]) -> Vec<Vec<S>> {
+        let k = b.first().map_or(0, Vec::len);
+        let columns: Vec<Vec<S>> = (0..k)
+            .map(|j| self.solve(&b.iter().map(|row| row[j]).collect::<Vec<S>>()))
+            .collect();
+        (0..b.len())
+            .map(|i| columns.iter().map(|column| column[i]).collect())
+            .collect()
     }
 
     /// `M⁻¹ = L⁻ᵀ D⁻¹ L⁻¹`, symmetric: `(M⁻¹)_ij = Σ_{k ≥ max(i, j)} X_ki X_kj / d_k` with
@@ -104,10 +135,10 @@ impl<S: Scalar> Ldlt<S> {
 
 #[cfg(test)]
 mod tests {
-    use super::ldlt;
+    use super::Ldlt;
 
-    /// An independent check: the factors multiply back to M, the solution satisfies M x = b
-    /// and M M⁻¹ = I, on a symmetric positive definite 5 × 5 matrix (AᵀA + I).
+    /// An independent check: the factors multiply back to M, the solutions satisfy M x = b and
+    /// M X = B, and M M⁻¹ = I, on a symmetric positive definite 5 × 5 matrix (AᵀA + I).
     #[test]
     fn factors_solve_and_invert() {
         let n = 5;
@@ -125,7 +156,7 @@ mod tests {
                     .collect()
             })
             .collect();
-        let f = ldlt(&m, |x| 1.0 / x);
+        let f = Ldlt::new(&m);
         let l = |i: usize, k: usize| match i.cmp(&k) {
             std::cmp::Ordering::Greater => f.lower[i][k],
             std::cmp::Ordering::Equal => 1.0,
@@ -142,6 +173,21 @@ mod tests {
                 assert!((ldl - m[i][j]).abs() < 1e-12);
                 let identity: f64 = (0..n).map(|k| m[i][k] * inverse[k][j]).sum();
                 assert!((identity - f64::from(i == j)).abs() < 1e-12);
+            }
+        }
+        let columns = [
+            [0.3, 1.0],
+            [-1.2, 0.0],
+            [0.7, -2.5],
+            [2.0, 0.4],
+            [-0.1, 0.9],
+        ];
+        let rows: Vec<Vec<f64>> = columns.iter().map(|r| r.to_vec()).collect();
+        let solved = f.solve_columns(&rows);
+        for i in 0..n {
+            for c in 0..2 {
+                let mx: f64 = (0..n).map(|j| m[i][j] * solved[j][c]).sum();
+                assert!((mx - columns[i][c]).abs() < 1e-12, "({i}, {c}): {mx}");
             }
         }
         assert!(f.pivots.iter().all(|&d| d > 0.0));

@@ -75,12 +75,12 @@ impl Emitter<'_> {
                 let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
                 quote!([#(#matrices),*])
             }
-            Shape::Solution { pivots, vector } => {
+            Shape::SolvedVector { pivots, vector } => {
                 let items: Vec<TokenStream> =
                     vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
                 self.checked(pivots, &quote!([#(#items),*]))
             }
-            Shape::Inverse { pivots, matrix } => {
+            Shape::SolvedMatrix { pivots, matrix } => {
                 let value = self.matrix(matrix);
                 self.checked(pivots, &value)
             }

@@ -364,12 +364,14 @@ fn signature(
         Returns::Poses => quote!([#krate::Pose<#t>; #n]),
         Returns::Jacobian => quote!([[#t; #n]; 6]),
         Returns::Spatial => quote!([#t; 6]),
-        Returns::Inverse if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
-        Returns::Inverse => {
+        Returns::SolvedMatrix if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
+        Returns::SolvedMatrix => {
             quote!(::core::result::Result<[[#t; #n]; #n], #krate::NotPositiveDefinite>)
         }
-        Returns::Solution if rows => quote!(::core::option::Option<[#t; #n]>),
-        Returns::Solution => quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>),
+        Returns::SolvedVector if rows => quote!(::core::option::Option<[#t; #n]>),
+        Returns::SolvedVector => {
+            quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>)
+        }
     };
     (quote!(#(#arguments),*), result)
 }
@@ -380,7 +382,7 @@ fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStrea
     match method.returns() {
         Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
         Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
-        Returns::Inverse | Returns::Solution => {
+        Returns::SolvedMatrix | Returns::SolvedVector => {
             quote!(#call.ok_or(#krate::NotPositiveDefinite))
         }
         _ => call,

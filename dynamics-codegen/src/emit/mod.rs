@@ -84,14 +84,14 @@ pub enum Shape<'a> {
     /// Matrices, one after the other.
     Stack(&'a [Vec<Vec<NodeId>>]),
     /// A vector through the LDLᵀ of M, `Some` where every pivot is positive.
-    Solution {
+    SolvedVector {
         /// The pivots.
         pivots: &'a [NodeId],
         /// The vector.
         vector: &'a [NodeId],
     },
     /// A matrix through the LDLᵀ of M, `Some` where every pivot is positive.
-    Inverse {
+    SolvedMatrix {
         /// The pivots.
         pivots: &'a [NodeId],
         /// The matrix, rows first.
@@ -107,8 +107,10 @@ impl Shape<'_> {
             Shape::Vector(v) => v.to_vec(),
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
             Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
-            Shape::Solution { pivots, vector } => pivots.iter().chain(*vector).copied().collect(),
-            Shape::Inverse { pivots, matrix } => {
+            Shape::SolvedVector { pivots, vector } => {
+                pivots.iter().chain(*vector).copied().collect()
+            }
+            Shape::SolvedMatrix { pivots, matrix } => {
                 let elements = matrix.iter().flatten();
                 pivots.iter().chain(elements).copied().collect()
             }
