@@ -2626,6 +2626,902 @@ mod __kinematics {
         [tb1, tb2, tb3, tb4, tb5, tb6]
     }
 }
+/// The generated functions, out of reach of the names around the derive.
+#[allow(
+    non_snake_case,
+    non_camel_case_types,
+    unused_variables,
+    unused_doc_comments,
+    clippy::all,
+    clippy::pedantic,
+    clippy::nursery
+)]
+mod __forward {
+    /// What the dynamics need from the parameters and `q` alone, computed once.
+    pub(super) struct Configuration<T> {
+        s2: T,
+        c2: T,
+        k1: T,
+        s3: T,
+        c3: T,
+        k2: T,
+        k3: T,
+        k4: T,
+        s4: T,
+        c4: T,
+        s5: T,
+        c5: T,
+        k5: T,
+        k6: T,
+        k7: T,
+        k8: T,
+        k9: T,
+        k10: T,
+        k11: T,
+        k12: T,
+        k13: T,
+        k14: T,
+        k15: T,
+        k16: T,
+        k17: T,
+        k18: T,
+        k19: T,
+        k20: T,
+        k21: T,
+        k22: T,
+        k23: T,
+        k24: T,
+        k25: T,
+        k26: T,
+        k27: T,
+        k28: T,
+        k30: T,
+        k34: T,
+        k37: T,
+        k38: T,
+        k41: T,
+        u39: T,
+        u45: T,
+        u46: T,
+        u51: T,
+        u52: T,
+        k44: T,
+        k45: T,
+        u53: T,
+        k48: T,
+        k49: T,
+        k50: T,
+        k51: T,
+        k52: T,
+        k53: T,
+        k54: T,
+        k55: T,
+        k56: T,
+        k57: T,
+        k58: T,
+        k59: T,
+        k60: T,
+        k61: T,
+        u54: T,
+        u55: T,
+        u56: T,
+        u57: T,
+        u58: T,
+        u59: T,
+        u60: T,
+        u61: T,
+        u63: T,
+        u65: T,
+        u67: T,
+        u69: T,
+        u70: T,
+        u71: T,
+        u73: T,
+        u75: T,
+        u77: T,
+        u78: T,
+        u79: T,
+        u81: T,
+        u83: T,
+        u84: T,
+        u85: T,
+        u87: T,
+        u88: T,
+        mi6_6: T,
+        mi1_6: T,
+        mi1_1: T,
+        mi2_6: T,
+        mi1_2: T,
+        mi3_6: T,
+        mi1_3: T,
+        mi4_6: T,
+        mi1_4: T,
+        mi5_6: T,
+        mi1_5: T,
+        mi2_2: T,
+        mi2_3: T,
+        mi2_4: T,
+        mi2_5: T,
+        mi3_3: T,
+        mi3_4: T,
+        mi3_5: T,
+        mi4_4: T,
+        mi4_5: T,
+        mi5_5: T,
+    }
+    #[inline(always)]
+    pub(super) fn configuration<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> Configuration<T> {
+        let k1: T = T::from_f64(0.4318);
+        let k2: T = T::from_f64(0.15005);
+        let k3: T = T::from_f64(0.0203);
+        let k4: T = T::from_f64(-0.0203);
+        let k5: T = T::from_f64(0.0003);
+        let k6: T = T::from_f64(0.00004);
+        let k7: T = T::from_f64(-0.0070992);
+        let k8: T = T::from_f64(0.023751);
+        let k9: T = T::from_f64(-0.023751);
+        let k10: T = T::from_f64(0.0047376);
+        let k11: T = T::from_f64(-0.0047376);
+        let k12: T = T::from_f64(-0.0004);
+        let k13: T = T::from_f64(0.00288);
+        let k14: T = T::from_f64(0.00024216);
+        let k15: T = T::from_f64(-0.00024216);
+        let k16: T = T::from_f64(-0.00288);
+        let k17: T = T::from_f64(0.00064216);
+        let k18: T = T::from_f64(-0.0003);
+        let k19: T = T::from_f64(0.0016);
+        let k20: T = T::from_f64(-0.4318);
+        let k21: T = T::from_f64(0.025375);
+        let k22: T = T::from_f64(-0.011273199);
+        let k23: T = T::from_f64(0.89133);
+        let k24: T = T::from_f64(0.3586500705);
+        let k25: T = T::from_f64(0.3251198455);
+        let k26: T = T::from_f64(1.748114002);
+        let k27: T = T::from_f64(-0.6903913435);
+        let k28: T = T::from_f64(-1.601861202);
+        let k29: T = T::from_f64(3.153542285625);
+        let k30: T = T::from_f64(-0.00004);
+        let k31: T = T::from_f64(0.00020216);
+        let k32: T = T::from_f64(-0.00020216);
+        let k33: T = T::from_f64(0.00028216);
+        let k34: T = T::from_f64(-0.00064216);
+        let k35: T = T::from_f64(-0.000058464);
+        let k36: T = T::from_f64(0.001243584);
+        let k37: T = T::from_f64(0.000058464);
+        let k38: T = T::from_f64(-0.001243584);
+        let k39: T = T::from_f64(-2.0);
+        let k40: T = T::from_f64(0.000432144);
+        let k41: T = T::from_f64(-0.15005);
+        let k42: T = T::from_f64(-0.000432144);
+        let k43: T = T::from_f64(9.81);
+        let k44: T = T::from_f64(-3.349975204);
+        let k45: T = T::from_f64(1.601861202);
+        let k46: T = T::from_f64(37.2347379);
+        let k47: T = T::from_f64(-1.024164);
+        let k48: T = T::from_f64(-0.033530225);
+        let k49: T = T::from_f64(-0.3251198455);
+        let k50: T = T::from_f64(-0.0016);
+        let k51: T = T::from_f64(-0.0013);
+        let k52: T = T::from_f64(-0.0141984);
+        let k53: T = T::from_f64(0.0141984);
+        let k54: T = T::from_f64(0.8636);
+        let k55: T = T::from_f64(-0.025375);
+        let k56: T = T::from_f64(-0.89133);
+        let k57: T = T::from_f64(0.05075);
+        let k58: T = T::from_f64(1.78266);
+        let k59: T = T::from_f64(-0.022546398);
+        let k60: T = T::from_f64(0.022546398);
+        let k61: T = T::from_f64(0.0406);
+        let k62: T = T::from_f64(0.0000000016);
+        let k63: T = T::from_f64(-0.0000000016);
+        let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
+            q_[1],
+            q_[2],
+            q_[3],
+            q_[4],
+        ]);
+        let u1 = s5 * c5;
+        let u2 = k32.mul_add(s5 * s5, k14);
+        let u3 = k5 + u2;
+        let u4 = k19 + k33 - u2;
+        let u5 = c4 * s5;
+        let u6 = s4 * s5;
+        let u7 = k34 + u3;
+        let u8 = (-(s4 * s4)).mul_add(u7, u3);
+        let u9 = k31 * (c4 * u1);
+        let u10 = k35 * u5;
+        let u11 = k36 * c5;
+        let u12 = u10 + u4;
+        let u13 = u10 + u12;
+        let u14 = u11 + u10;
+        let u15 = k38 * u5;
+        let u16 = (-(s4 * c4)).mul_add(u7, k35 * u6);
+        let u17 = k32.mul_add(s4 * u1, k38 * u6);
+        let u18 = k16.mul_add(u5, k21);
+        let u19 = k13.mul_add(c5, k23);
+        let u20 = u11 + (k25 + u11) + u8;
+        let u21 = k24 + k17 + u14 + (u14 + u3) - u8;
+        let u22 = u9 + ((-k37).mul_add(c5, k22) - u15);
+        let u23 = k11 + u17;
+        let u24 = (-s3).mul_add(u19, c3 * u18);
+        let u25 = s3 * u18;
+        let u26 = c3 * u19;
+        let u27 = u26 + u25;
+        let u28 = s3 * s3;
+        let u29 = s3 * c3;
+        let u30 = u20 - u13;
+        let u31 = (-u28).mul_add(u30, k39.mul_add(u22 * u29, u20));
+        let u32 = k1 * u24;
+        let u33 = k40 * u6;
+        let u34 = u33 + u32;
+        let u35 = u13 + u34 + (u34 + u20) - u31;
+        let u36 = u32 + u21;
+        let u37 = u33 + (k28 + u33) + u31;
+        let u38 = c2
+            .mul_add(
+                s3.mul_add(u16, k41.mul_add(u27, c3.mul_add(u23, k9))),
+                s2
+                    * c3
+                        .mul_add(
+                            u16,
+                            (-k2)
+                                .mul_add(u24, (-s3).mul_add(u23, (-k36).mul_add(u6, k27))),
+                        ),
+            );
+        let u39 = (-k39)
+            .mul_add(
+                u29.mul_add(u30, k20.mul_add(u27, u22.mul_add(c3.mul_add(c3, -u28), k7)))
+                    * (s2 * c2),
+                k29 + u35,
+            ) + (s2 * s2).mul_add(u37 - u35, u37 - u37);
+        let u40 = s3 * u6;
+        let u41 = c4 * c5;
+        let u42 = s4 * c5;
+        let u43 = k36.mul_add(u41, k35.mul_add(s5, k17 * c4));
+        let u44 = s3.mul_add(u41, c3 * s5);
+        let u45 = c2.mul_add(s3, s2 * c3);
+        let u46 = (-s2).mul_add(s3, c2 * c3);
+        let u47 = u16
+            .mul_add(u45, k41.mul_add((-c2).mul_add(-(u26 + u25), s2 * u24), u23 * u46));
+        let u48 = u12
+            .mul_add(
+                u46,
+                k36
+                    .mul_add(u5, u9)
+                    .mul_add(
+                        u45,
+                        c2.mul_add(k40.mul_add(c3 * u6, u15), k42 * (s2 * u40)),
+                    ),
+            );
+        let u49 = c2
+            .mul_add(
+                k42.mul_add((-s3).mul_add(s5, c3 * u41), k38 * u42),
+                k40
+                    .mul_add(
+                        s2 * u44,
+                        k35.mul_add(u42 * u46, k36.mul_add(u42, k17 * s4) * u45),
+                    ),
+            );
+        let u50 = (-c5).mul_add(u46, u5 * u45);
+        let u51 = k43 * s2;
+        let u52 = k43 * c2;
+        let u53 = k47.mul_add(s2, k46 * c2);
+        let u54 = T::ONE / u39;
+        let u55 = u38 * u54;
+        let u56 = u47 * u54;
+        let u57 = u48 * u54;
+        let u58 = u49 * u54;
+        let u59 = u50 * u54;
+        let u60 = (-u38).mul_add(u55, k26 + u32 + u36);
+        let u61 = T::ONE / u60;
+        let u62 = (-u47).mul_add(u55, u36);
+        let u63 = u61 * u62;
+        let u64 = (-u48).mul_add(u55, k36.mul_add(u40, u17));
+        let u65 = u61 * u64;
+        let u66 = (-u49).mul_add(u55, k38.mul_add(u44, u43));
+        let u67 = u61 * u66;
+        let u68 = u50.mul_add(u55, u6);
+        let u69 = u61 * u68;
+        let u70 = (-u62).mul_add(u63, (-u47).mul_add(u56, u21));
+        let u71 = T::ONE / u70;
+        let u72 = (-u63).mul_add(u64, (-u48).mul_add(u56, u17));
+        let u73 = u71 * u72;
+        let u74 = (-u63).mul_add(u66, (-u49).mul_add(u56, u43));
+        let u75 = u71 * u74;
+        let u76 = (-u63).mul_add(u68, u50.mul_add(u56, u6));
+        let u77 = u71 * u76;
+        let u78 = (-u72).mul_add(u73, (-u64).mul_add(u65, (-u48).mul_add(u57, u4)));
+        let u79 = T::ONE / u78;
+        let u80 = -u73.mul_add(u74, u65.mul_add(u66, u49 * u57));
+        let u81 = u79 * u80;
+        let u82 = (-u73).mul_add(u76, (-u65).mul_add(u68, u50.mul_add(u57, c5)));
+        let u83 = u79 * u82;
+        let u84 = (-u80)
+            .mul_add(
+                u81,
+                (-u74).mul_add(u75, (-u66).mul_add(u67, (-u49).mul_add(u58, k17))),
+            );
+        let u85 = T::ONE / u84;
+        let u86 = (-u81)
+            .mul_add(u82, (-u75).mul_add(u76, (-u67).mul_add(u68, u50 * u58)));
+        let u87 = u85 * u86;
+        let u88 = k63
+            .mul_add(
+                u86 * u87,
+                k63
+                    .mul_add(
+                        u82 * u83,
+                        k63
+                            .mul_add(
+                                u76 * u77,
+                                k63.mul_add(u68 * u69, k63.mul_add(u50 * u59, k6)),
+                            ),
+                    ),
+            );
+        /// (M^-1)66
+        let mi6_6 = T::ONE / u88;
+        let u89 = u55.mul_add(u63, -u56);
+        let u90 = (-u73).mul_add(u89, u55.mul_add(u65, -u57));
+        let u91 = (-u81).mul_add(u90, (-u75).mul_add(u89, u55.mul_add(u67, -u58)));
+        let u92 = (-u87)
+            .mul_add(
+                u91,
+                (-u83).mul_add(u90, (-u77).mul_add(u89, u55.mul_add(u69, u59))),
+            );
+        let u93 = u63.mul_add(u73, -u65);
+        let u94 = (-u81).mul_add(u93, u63.mul_add(u75, -u67));
+        let u95 = u87.mul_add(u94, u83.mul_add(u93, (-u63).mul_add(u77, u69)));
+        let u96 = u73.mul_add(u81, -u75);
+        let u97 = u87.mul_add(u96, (-u73).mul_add(u83, u77));
+        let u98 = (-u81).mul_add(u87, u83);
+        let u99 = mi6_6 * u92;
+        /// (M^-1)16
+        let mi1_6 = k6 * u99;
+        let u100 = u85 * u91;
+        let u101 = u79 * u90;
+        let u102 = u71 * u89;
+        let u103 = u55 * u61;
+        /// (M^-1)11
+        let mi1_1 = k62
+            .mul_add(
+                u92 * u99,
+                u91
+                    .mul_add(
+                        u100,
+                        u90.mul_add(u101, u89.mul_add(u102, u55.mul_add(u103, u54))),
+                    ),
+            );
+        let u104 = mi6_6 * u95;
+        /// (M^-1)26
+        let mi2_6 = k30 * u104;
+        let u105 = u85 * u94;
+        let u106 = u79 * u93;
+        let u107 = u63 * u71;
+        /// (M^-1)12
+        let mi1_2 = k63
+            .mul_add(
+                u92 * u104,
+                u91.mul_add(u105, u90.mul_add(u106, -u89.mul_add(u107, u103))),
+            );
+        let u108 = mi6_6 * u97;
+        /// (M^-1)36
+        let mi3_6 = k30 * u108;
+        let u109 = u85 * u96;
+        let u110 = u73 * u79;
+        /// (M^-1)13
+        let mi1_3 = k63
+            .mul_add(u92 * u108, u91.mul_add(u109, (-u90).mul_add(u110, u102)));
+        let u111 = mi6_6 * u98;
+        /// (M^-1)46
+        let mi4_6 = k30 * u111;
+        let u112 = u81 * u85;
+        /// (M^-1)14
+        let mi1_4 = k63.mul_add(u92 * u111, (-u91).mul_add(u112, u101));
+        let u113 = u87 * mi6_6;
+        /// (M^-1)56
+        let mi5_6 = k30 * u113;
+        /// (M^-1)15
+        let mi1_5 = k63.mul_add(u92 * u113, u100);
+        /// (M^-1)22
+        let mi2_2 = k62
+            .mul_add(
+                u95 * u104,
+                u94.mul_add(u105, u93.mul_add(u106, u63.mul_add(u107, u61))),
+            );
+        /// (M^-1)23
+        let mi2_3 = k62.mul_add(u95 * u108, u94.mul_add(u109, -u93.mul_add(u110, u107)));
+        /// (M^-1)24
+        let mi2_4 = k62.mul_add(u95 * u111, (-u94).mul_add(u112, u106));
+        /// (M^-1)25
+        let mi2_5 = k62.mul_add(u95 * u113, u105);
+        /// (M^-1)33
+        let mi3_3 = k62.mul_add(u97 * u108, u96.mul_add(u109, u73.mul_add(u110, u71)));
+        /// (M^-1)34
+        let mi3_4 = k62.mul_add(u97 * u111, -u96.mul_add(u112, u110));
+        /// (M^-1)35
+        let mi3_5 = k62.mul_add(u97 * u113, u109);
+        /// (M^-1)44
+        let mi4_4 = k62.mul_add(u98 * u111, u81.mul_add(u112, u79));
+        /// (M^-1)45
+        let mi4_5 = k62.mul_add(u98 * u113, -u112);
+        /// (M^-1)55
+        let mi5_5 = k62.mul_add(u87 * u113, u85);
+        Configuration {
+            s2,
+            c2,
+            k1,
+            s3,
+            c3,
+            k2,
+            k3,
+            k4,
+            s4,
+            c4,
+            s5,
+            c5,
+            k5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k30,
+            k34,
+            k37,
+            k38,
+            k41,
+            u39,
+            u45,
+            u46,
+            u51,
+            u52,
+            k44,
+            k45,
+            u53,
+            k48,
+            k49,
+            k50,
+            k51,
+            k52,
+            k53,
+            k54,
+            k55,
+            k56,
+            k57,
+            k58,
+            k59,
+            k60,
+            k61,
+            u54,
+            u55,
+            u56,
+            u57,
+            u58,
+            u59,
+            u60,
+            u61,
+            u63,
+            u65,
+            u67,
+            u69,
+            u70,
+            u71,
+            u73,
+            u75,
+            u77,
+            u78,
+            u79,
+            u81,
+            u83,
+            u84,
+            u85,
+            u87,
+            u88,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
+        }
+    }
+    #[inline(always)]
+    pub(super) fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> ::core::option::Option<[[T; 6usize]; 6usize]> {
+        let Configuration {
+            u39,
+            u60,
+            u70,
+            u78,
+            u84,
+            u88,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
+            ..
+        } = configuration(p_, q_);
+        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
+            && u84 > T::ZERO && u88 > T::ZERO
+        {
+            ::core::option::Option::Some([
+                [mi1_1, mi1_2, mi1_3, mi1_4, mi1_5, mi1_6],
+                [mi1_2, mi2_2, mi2_3, mi2_4, mi2_5, mi2_6],
+                [mi1_3, mi2_3, mi3_3, mi3_4, mi3_5, mi3_6],
+                [mi1_4, mi2_4, mi3_4, mi4_4, mi4_5, mi4_6],
+                [mi1_5, mi2_5, mi3_5, mi4_5, mi5_5, mi5_6],
+                [mi1_6, mi2_6, mi3_6, mi4_6, mi5_6, mi6_6],
+            ])
+        } else {
+            ::core::option::Option::None
+        }
+    }
+    #[inline(always)]
+    pub(super) fn forward_dynamics<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        tau_: &[T; 6usize],
+    ) -> ::core::option::Option<[T; 6usize]> {
+        let Configuration {
+            s2,
+            c2,
+            k1,
+            s3,
+            c3,
+            k2,
+            k3,
+            k4,
+            s4,
+            c4,
+            s5,
+            c5,
+            k5,
+            k6,
+            k7,
+            k8,
+            k9,
+            k10,
+            k11,
+            k12,
+            k13,
+            k14,
+            k15,
+            k16,
+            k17,
+            k18,
+            k19,
+            k20,
+            k21,
+            k22,
+            k23,
+            k24,
+            k25,
+            k26,
+            k27,
+            k28,
+            k30,
+            k34,
+            k37,
+            k38,
+            k41,
+            u39,
+            u45,
+            u46,
+            u51,
+            u52,
+            k44,
+            k45,
+            u53,
+            k48,
+            k49,
+            k50,
+            k51,
+            k52,
+            k53,
+            k54,
+            k55,
+            k56,
+            k57,
+            k58,
+            k59,
+            k60,
+            k61,
+            u54,
+            u55,
+            u56,
+            u57,
+            u58,
+            u59,
+            u60,
+            u61,
+            u63,
+            u65,
+            u67,
+            u69,
+            u70,
+            u71,
+            u73,
+            u75,
+            u77,
+            u78,
+            u79,
+            u81,
+            u83,
+            u84,
+            u85,
+            u87,
+            u88,
+            mi6_6,
+            ..
+        } = configuration(p_, q_);
+        let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
+        let [tau1, tau2, tau3, tau4, tau5, tau6] = *tau_;
+        let t1 = s2 * qd1;
+        let t2 = c2 * qd1;
+        let t3 = qd2 * t2;
+        let t4 = qd2 * t1;
+        let t5 = t1 * t1;
+        let t6 = t2 * t2;
+        let t7 = qd2 * qd2;
+        let t8 = t1 * t2;
+        let t9 = k41.mul_add(t5 + t6, k54 * t4);
+        let t10 = qd2 + qd3;
+        let t11 = t10 * t10;
+        let t12 = u45 * qd1;
+        let t13 = u46 * qd1;
+        let t14 = t10 * t13;
+        let t15 = t10 * t12;
+        let t16 = t12 * t12;
+        let t17 = t13 * t13;
+        let t18 = t12 * t13;
+        let t19 = t11 + t17;
+        let t20 = t11 + t16;
+        let t21 = k54.mul_add(t14, k61.mul_add(t15, t9));
+        let t22 = (-s4).mul_add(t10, c4 * t12);
+        let t23 = -s4.mul_add(t12, c4 * t10);
+        let t24 = qd4 + t13;
+        let t25 = qd4.mul_add(t23, c4 * t14);
+        let t26 = -qd4.mul_add(t22, s4 * t14);
+        let t27 = c5.mul_add(t22, s5 * t24);
+        let t28 = (-s5).mul_add(t22, c5 * t24);
+        let t29 = qd5 - t23;
+        let t30 = qd5.mul_add(t28, (-s5).mul_add(t15, c5 * t25));
+        let t31 = -qd5.mul_add(t27, s5.mul_add(t25, c5 * t15));
+        let t32 = t27 * t28;
+        let t33 = t28 * t29;
+        let t34 = t26 + t32;
+        let t35 = t27.mul_add(t27, t29 * t29);
+        let t36 = t33 + t30;
+        let t37 = qd6 + t28;
+        let t38 = k6.mul_add(t31, k12 * (t27 * t29));
+        let t39 = s5.mul_add(t35, c5 * t34);
+        let t40 = (-c5).mul_add(t35, s5 * t34);
+        let t41 = s4.mul_add(t36, c4 * t39);
+        let t42 = (-c4).mul_add(t36, s4 * t39);
+        let t43 = k13.mul_add(t41, k55.mul_add(t19, k23 * t18));
+        let t44 = k13.mul_add(t40, k56.mul_add(t20, k21 * t18));
+        let t45 = s3.mul_add(t43, c3 * t44);
+        let t46 = k20.mul_add(t7 + t6, u51);
+        let t47 = k1.mul_add(t8, u52);
+        let t48 = c3.mul_add(t46, s3 * t47);
+        let t49 = (-s3).mul_add(t46, c3 * t47);
+        let t50 = k4.mul_add(t19, k1 * t18) + t48;
+        let t51 = k16
+            .mul_add(
+                -s4.mul_add(t50, c4 * t21),
+                k14.mul_add(t30, k30.mul_add(t29 * t37, k17 * t33)),
+            );
+        let t52 = k16
+            .mul_add(
+                c5
+                    .mul_add(
+                        (-s4).mul_add(t21, c4 * t50),
+                        s5 * (k20.mul_add(t20, k3 * t18) + t49),
+                    ),
+                k6.mul_add(t27 * t37, k15.mul_add(t32, k34 * t26)),
+            );
+        let t53 = c5
+            .mul_add(t51, (-s5).mul_add(t38, k5.mul_add(t25, k19 * (t23 * t24))));
+        let t54 = k51.mul_add(t22 * t24, -t52);
+        let t55 = s5.mul_add(t51, c5.mul_add(t38, k18.mul_add(t22 * t23, k50 * t15)));
+        let t56 = (-c4)
+            .mul_add(
+                t54,
+                (-s4)
+                    .mul_add(
+                        t53,
+                        k38
+                            .mul_add(
+                                t41,
+                                k37
+                                    .mul_add(
+                                        t40,
+                                        k56
+                                            .mul_add(
+                                                t48,
+                                                k21.mul_add(t49, k22.mul_add(t16 - t17, k49 * t18)),
+                                            ),
+                                    ),
+                            ),
+                    ),
+            );
+        let t57 = (-c2)
+            .mul_add(
+                k2
+                    .mul_add(
+                        (-s3).mul_add(t44, c3 * t43),
+                        k20
+                            .mul_add(
+                                k16.mul_add(t42, k58.mul_add(t14, k57 * t15)),
+                                k8.mul_add(t8, k52 * t3) + k27.mul_add(t7 - t5, k44 * t4),
+                            ),
+                    ),
+                (-s2)
+                    .mul_add(
+                        k41
+                            .mul_add(
+                                t45,
+                                k26.mul_add(t3, k27 * t8)
+                                    + k9.mul_add(t6 - t7, k53.mul_add(t4, k28 * t3)),
+                            ),
+                        (-u45)
+                            .mul_add(
+                                (-s4)
+                                    .mul_add(
+                                        t54,
+                                        c4
+                                            .mul_add(
+                                                t53,
+                                                k38
+                                                    .mul_add(
+                                                        t42,
+                                                        k23.mul_add(t9, k24 * t14)
+                                                            + k11.mul_add(t17 - t11, k60.mul_add(t15, k25 * t14)),
+                                                    ),
+                                            ),
+                                    ),
+                                (-u46)
+                                    .mul_add(
+                                        k37
+                                            .mul_add(
+                                                t42,
+                                                k10.mul_add(t18, k59 * t14) + k55.mul_add(t9, k48 * t15),
+                                            ) + t55,
+                                        tau1,
+                                    ),
+                            ),
+                    ),
+            );
+        let t58 = (-u55)
+            .mul_add(
+                t57,
+                (-k1)
+                    .mul_add(t45, (-k7).mul_add(t5 - t6, (-k45).mul_add(t8, tau2 - u53)))
+                    - t56,
+            );
+        let t59 = (-u63).mul_add(t58, (-u56).mul_add(t57, tau3 - t56));
+        let t60 = (-u73)
+            .mul_add(t59, (-u65).mul_add(t58, (-u57).mul_add(t57, tau4 - t55)));
+        let t61 = (-u81)
+            .mul_add(
+                t60,
+                (-u75).mul_add(t59, (-u67).mul_add(t58, (-u58).mul_add(t57, tau5 - t52))),
+            );
+        /// joint acceleration 6
+        let qdd6 = mi6_6
+            * k30
+                .mul_add(
+                    u87 * t61,
+                    k30
+                        .mul_add(
+                            u83 * t60,
+                            k30
+                                .mul_add(
+                                    u77 * t59,
+                                    k30
+                                        .mul_add(
+                                            u69 * t58,
+                                            k6.mul_add(u59 * t57, k30.mul_add(t31, tau6)),
+                                        ),
+                                ),
+                        ),
+                );
+        /// joint acceleration 5
+        let qdd5 = k30.mul_add(u87 * qdd6, u85 * t61);
+        /// joint acceleration 4
+        let qdd4 = (-u81).mul_add(qdd5, k30.mul_add(u83 * qdd6, u79 * t60));
+        /// joint acceleration 3
+        let qdd3 = (-u73)
+            .mul_add(qdd4, (-u75).mul_add(qdd5, k30.mul_add(u77 * qdd6, u71 * t59)));
+        /// joint acceleration 2
+        let qdd2 = (-u63)
+            .mul_add(
+                qdd3,
+                (-u65)
+                    .mul_add(
+                        qdd4,
+                        (-u67).mul_add(qdd5, k30.mul_add(u69 * qdd6, u61 * t58)),
+                    ),
+            );
+        /// joint acceleration 1
+        let qdd1 = (-u55)
+            .mul_add(
+                qdd2,
+                (-u56)
+                    .mul_add(
+                        qdd3,
+                        (-u57)
+                            .mul_add(
+                                qdd4,
+                                (-u58).mul_add(qdd5, k6.mul_add(u59 * qdd6, u54 * t57)),
+                            ),
+                    ),
+            );
+        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
+            && u84 > T::ZERO && u88 > T::ZERO
+        {
+            ::core::option::Option::Some([qdd1, qdd2, qdd3, qdd4, qdd5, qdd6])
+        } else {
+            ::core::option::Option::None
+        }
+    }
+}
 impl Puma560 {
     /// The parameters the equations read, in the order of the description.
     #[doc(hidden)]
@@ -2790,5 +3686,28 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             q_,
             wrench_,
         )
+    }
+    /// M(q)⁻¹, through the LDLᵀ of M.
+    #[inline]
+    fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> ::core::result::Result<
+        [[T; 6usize]; 6usize],
+        ::dynamics_runtime::NotPositiveDefinite,
+    > {
+        __forward::mass_matrix_inverse(&self.__dynamics_parameters(), q_)
+            .ok_or(::dynamics_runtime::NotPositiveDefinite)
+    }
+    /// q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).
+    #[inline]
+    fn forward_dynamics<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        tau_: &[T; 6usize],
+    ) -> ::core::result::Result<[T; 6usize], ::dynamics_runtime::NotPositiveDefinite> {
+        __forward::forward_dynamics(&self.__dynamics_parameters(), q_, qd_, tau_)
+            .ok_or(::dynamics_runtime::NotPositiveDefinite)
     }
 }

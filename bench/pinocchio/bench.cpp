@@ -20,7 +20,11 @@
 //      elapsed / CALLS (std::chrono::steady_clock), report the median over the batches. Beside
 //      the dynamics: the hand pose (`fk`: forwardKinematics + updateFramePlacement), the hand's
 //      Jacobian (`J`: computeFrameJacobian, LOCAL_WORLD_ALIGNED) and the statics (`JtF`: that
-//      Jacobian, then Jᵀ F for a wrench F in base axes, the sample's first six qdd).
+//      Jacobian, then Jᵀ F for a wrench F in base axes, the sample's first six qdd); the forward
+//      dynamics (`fd`: aba at the sample's (q, qd, tau)) and M⁻¹ (`Minv`: computeMinverse, which
+//      fills the upper triangle only, as crba does for `M`), where the file's M is positive
+//      definite at every sample (not the reference UR5, whose M66 is 0): checked first, aba
+//      against the sample's qdd and Minv (mirrored) by Minv M = I, on every sample.
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -31,7 +35,8 @@
 // data on every sample (the same tolerance), and times the two sides in turn, batch by batch
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
 // of this shared machine. The kinematics (fk, J, JtF) are checked against Pinocchio's on every
-// sample, with JtF's wrench the first six values of qdd. Each line then reads
+// sample, with JtF's wrench the first six values of qdd; fd and Minv as Pinocchio's are (fd's
+// third input is the sample's tau). Each line then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
 
@@ -53,6 +58,7 @@
 #include <dlfcn.h>
 
 #include "pinocchio/multibody.hpp"
+#include "pinocchio/algorithm/aba.hpp"
 #include "pinocchio/algorithm/crba.hpp"
 #include "pinocchio/algorithm/frames.hpp"
 #include "pinocchio/algorithm/kinematics.hpp"
@@ -573,6 +579,38 @@ static void check_model(
   }
 }
 
+// Whether the file's M is positive definite at every sample: the forward dynamics and M⁻¹ are
+// only timed there.
+static bool invertible(const json::Value & samples)
+{
+  for (std::size_t s = 0; s < samples.size(); ++s)
+    if (Eigen::LLT<Eigen::MatrixXd>(matn(samples[s]["M"])).info() != Eigen::Success)
+      return false;
+  return true;
+}
+
+// The n × n Minv, its lower triangle mirrored from the upper one that computeMinverse fills.
+static Eigen::MatrixXd symmetric(Eigen::MatrixXd m)
+{
+  m.triangularView<Eigen::StrictlyLower>() = m.transpose().triangularView<Eigen::StrictlyLower>();
+  return m;
+}
+
+// Pinocchio's aba and computeMinverse on every sample: aba(q, qd, tau) = qdd and Minv M = I.
+static void check_forward(const std::string & robot, const Model & model, const json::Value & samples)
+{
+  Data data(model);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const json::Value & sample = samples[s];
+    const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), tau = vecn(sample["tau"]);
+    check(robot, "qdd (aba)", pinocchio::aba(model, data, q, v, tau), vecn(sample["qdd"]), s);
+    const Eigen::MatrixXd M = matn(sample["M"]);
+    const Eigen::MatrixXd Minv = symmetric(pinocchio::computeMinverse(model, data, q));
+    check(robot, "Minv M (computeMinverse)", Minv * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Timing protocol (the same as the Rust side's `timings`)
 // ---------------------------------------------------------------------------------------------
@@ -679,13 +717,14 @@ struct Generated
 };
 
 // Every generated function against the reference data, on every sample; the kinematics against
-// Pinocchio's.
+// Pinocchio's; fd and Minv (`forward`) as check_forward checks Pinocchio's.
 static void check_generated(
   const std::string & robot,
   const Generated & gen,
   const json::Value & samples,
   const Model & model,
-  pinocchio::FrameIndex hand)
+  pinocchio::FrameIndex hand,
+  bool forward)
 {
   const std::size_t n = gen.dof(robot.c_str());
   std::vector<double> out(std::max(n * n, std::size_t(12)));
@@ -733,6 +772,14 @@ static void check_generated(
     check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
     gen.get(robot, "JtF")(q.data(), v.data(), a.data(), out.data());
     check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
+    if (!forward)
+      continue;
+    const Eigen::VectorXd tau = vecn(sample["tau"]);
+    gen.get(robot, "fd")(q.data(), v.data(), tau.data(), out.data());
+    check(robot, "fd" + at, vector(n), a, s);
+    gen.get(robot, "Minv")(q.data(), v.data(), a.data(), out.data());
+    const Eigen::MatrixXd M = matn(sample["M"]);
+    check(robot, "Minv M" + at, matrix() * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
   }
 }
 
@@ -792,6 +839,11 @@ int main(int argc, char ** argv)
     }
     const json::Value & samples = file["samples"];
     check_model(robot, model, hand, samples[CHECK_SAMPLE]);
+    const bool forward = invertible(samples);
+    if (forward)
+      check_forward(robot, model, samples);
+    else
+      std::fprintf(stderr, "%s: M is not positive definite at every sample: no fd, no Minv\n", robot.c_str());
     // A robot the library does not have (dof 0) gets Pinocchio's column alone.
     const bool with_generated = generated && generated->dof(robot.c_str()) != 0;
     if (generated && !with_generated)
@@ -800,7 +852,7 @@ int main(int argc, char ** argv)
     {
       try
       {
-        check_generated(robot, *generated, samples, model, hand);
+        check_generated(robot, *generated, samples, model, hand, forward);
       }
       catch (const std::exception & e)
       {
@@ -809,12 +861,13 @@ int main(int argc, char ** argv)
       }
     }
 
-    std::vector<Eigen::VectorXd> qs, vs, as;
+    std::vector<Eigen::VectorXd> qs, vs, as, taus;
     for (std::size_t s = 0; s < samples.size(); ++s)
     {
       qs.push_back(vecn(samples[s]["q"]));
       vs.push_back(vecn(samples[s]["qd"]));
       as.push_back(vecn(samples[s]["qdd"]));
+      taus.push_back(vecn(samples[s]["tau"]));
     }
     const std::size_t ns = qs.size();
     Data data(model);
@@ -823,8 +876,9 @@ int main(int argc, char ** argv)
     std::vector<double> out(std::max(n * n, std::size_t(12)));
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, model.nv);
     Eigen::VectorXd JtF(model.nv);
-    // Pinocchio's `function`, and the generated one in turn with it when it is loaded.
-    auto time = [&](const char * function, auto && pin) {
+    // Pinocchio's `function`, and the generated one in turn with it when it is loaded, the
+    // generated one given `third` as its third input.
+    auto time_with = [&](const char * function, const std::vector<Eigen::VectorXd> & third, auto && pin) {
       if (!with_generated)
       {
         std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin, checksum));
@@ -833,7 +887,7 @@ int main(int argc, char ** argv)
       {
         const GeneratedFunction f = generated->get(robot, function);
         auto gen = [&](std::size_t k) {
-          f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+          f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
           return out[0];
         };
         const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
@@ -841,6 +895,7 @@ int main(int argc, char ** argv)
       }
       std::fflush(stdout);
     };
+    auto time = [&](const char * function, auto && pin) { time_with(function, as, pin); };
     time("tau", [&](std::size_t k) {
       return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0];
     });
@@ -869,6 +924,15 @@ int main(int argc, char ** argv)
       JtF.noalias() = J.transpose() * as[k].head<6>();
       return JtF[0];
     });
+    if (forward)
+    {
+      time_with("fd", taus, [&](std::size_t k) {
+        return pinocchio::aba(model, data, qs[k], vs[k], taus[k])[0];
+      });
+      time("Minv", [&](std::size_t k) {
+        return pinocchio::computeMinverse(model, data, qs[k])(0, 0);
+      });
+    }
   }
   std::fprintf(stderr, "checksum %.17g\n", checksum);
   return 0;

@@ -23,6 +23,8 @@ pub enum Argument {
     Qdd,
     /// A wrench `[fx, fy, fz, mx, my, mz]`.
     Wrench,
+    /// Joint torques and forces.
+    Tau,
 }
 
 impl Argument {
@@ -34,6 +36,7 @@ impl Argument {
             Argument::Qd => "qd",
             Argument::Qdd => "qdd",
             Argument::Wrench => "wrench",
+            Argument::Tau => "tau",
         }
     }
 }
@@ -55,6 +58,10 @@ pub enum Returns {
     Jacobian,
     /// `[T; 6]`: a linear and an angular part.
     Spatial,
+    /// `Result<[[T; N]; N], NotPositiveDefinite>`: a matrix solved with the LDLᵀ of M.
+    SolvedMatrix,
+    /// `Result<[T; N], NotPositiveDefinite>`: a vector solved with the LDLᵀ of M.
+    SolvedVector,
 }
 
 /// A family of methods, emitted in a module of its own with its own shared configuration and
@@ -66,11 +73,13 @@ pub enum Family {
     Dynamics,
     /// Poses, Jacobians, acceleration bias, statics.
     Kinematics,
+    /// What solves with M through its LDLᵀ: forward dynamics, `M⁻¹`.
+    Forward,
 }
 
 impl Family {
     /// Every family, in the order the derive emits their modules.
-    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics];
+    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics, Family::Forward];
 
     /// The name of the module holding its generated functions.
     #[must_use]
@@ -78,6 +87,7 @@ impl Family {
         match self {
             Family::Dynamics => "__dynamics",
             Family::Kinematics => "__kinematics",
+            Family::Forward => "__forward",
         }
     }
 
@@ -87,6 +97,7 @@ impl Family {
         match self {
             Family::Dynamics => "",
             Family::Kinematics => "kinematic ",
+            Family::Forward => "forward ",
         }
     }
 }
@@ -104,6 +115,9 @@ macro_rules! argument {
     };
     (wrench) => {
         Argument::Wrench
+    };
+    (tau) => {
+        Argument::Tau
     };
 }
 
@@ -130,6 +144,12 @@ macro_rules! returns {
     (spatial) => {
         Returns::Spatial
     };
+    (solved_matrix) => {
+        Returns::SolvedMatrix
+    };
+    (solved_vector) => {
+        Returns::SolvedVector
+    };
 }
 
 /// The `Family` of a row's family name.
@@ -139,6 +159,9 @@ macro_rules! family {
     };
     (kinematics) => {
         Family::Kinematics
+    };
+    (forward) => {
+        Family::Forward
     };
 }
 
@@ -269,6 +292,14 @@ impl Method {
             Method::JointTorquesForBaseWrench => {
                 Shape::Vector(&eq.kinematics.torques_for_base_wrench)
             }
+            Method::MassMatrixInverse => Shape::SolvedMatrix {
+                pivots: &eq.forward.factors.pivots,
+                matrix: &eq.forward.mass_inverse,
+            },
+            Method::ForwardDynamics => Shape::SolvedVector {
+                pivots: &eq.forward.factors.pivots,
+                vector: &eq.forward.qdd,
+            },
         }
     }
 

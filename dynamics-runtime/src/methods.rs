@@ -5,15 +5,16 @@
 // (`dynamics.rs`) and its nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads the same
 // file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
 //
-// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`), its result (`matrix`,
-// `vector`, `scalar`, `pose`, `poses`, `jacobian` or `spatial`) and the name of its nalgebra
-// wrapper, then
+// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`, `tau`), its result (`matrix`,
+// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, or `solved_matrix` and
+// `solved_vector`: a matrix or vector solved with M, or `NotPositiveDefinite`) and the name of
+// its nalgebra wrapper, then
 //
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
 //         variant: Name,                 // the codegen enum's variant
 //         family: dynamics,              // the generated module it goes to (`Family`):
-//                                        // dynamics, kinematics
+//                                        // dynamics, kinematics, forward
 //         equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if it has one
 //         prefix: "tau",                 // generated element names: tau3, m1_2, p
 //         summary: "…",                  // one-line doc of `dynamics emit`
@@ -203,6 +204,28 @@ macro_rules! for_each_method {
                 prefix: "tb",
                 summary: "T = Jᵀ F for a wrench in base axes.",
                 element: "T{i} ({equation}), wrench in base axes",
+            }
+            /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of `M`;
+            /// `Err(NotPositiveDefinite)` where a pivot of the factorization is not positive (a
+            /// robot whose parameters leave a joint without inertia).
+            fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na {
+                variant: MassMatrixInverse,
+                family: forward,
+                equation: None,
+                prefix: "mi",
+                summary: "M(q)⁻¹, through the LDLᵀ of M.",
+                element: "(M^-1){i}{j}",
+            }
+            /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint friction where
+            /// the robot declares it, through the LDLᵀ factorization of `M`: the inverse of
+            /// `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot is not positive.
+            fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na {
+                variant: ForwardDynamics,
+                family: forward,
+                equation: None,
+                prefix: "qdd",
+                summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",
+                element: "joint acceleration {i}",
             }
         }
     };

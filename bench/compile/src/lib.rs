@@ -167,6 +167,12 @@ fn all<R: Dynamics<7>, T: Real>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: &[T; 7]) ->
     for i in 0..7 {
         sum += tau[i] + m[i][i] + c[i][0] + g[i] + h[i] + cqd[i];
     }
+    let forward = (r.forward_dynamics(q, qd, &tau), r.mass_matrix_inverse(q));
+    if let (Ok(qdd), Ok(inverse)) = forward {
+        for i in 0..7 {
+            sum += qdd[i] + inverse[i][i];
+        }
+    }
     sum
 }
 

@@ -7,7 +7,8 @@
 //! function has the signature [`Function`]; [`dynamics_bench_dof`] gives a robot's number of
 //! joints. Beside the dynamics (`tau`, `M`, `g`, `C`, `h`), the kinematics: `fk` (the hand
 //! pose), `J` (the hand's Jacobian in base axes) and `JtF` (the joint torques for a wrench in
-//! base axes, `T = Jᵀ F`).
+//! base axes, `T = Jᵀ F`); the forward dynamics `fd` and `Minv` (M⁻¹), NaN where M is not
+//! positive definite.
 
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
@@ -16,7 +17,8 @@ use dynamics_runtime::Dynamics;
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
 /// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
 /// `[R | p]` for `fk`, 6 × n for `J`, n for the others. `JtF` reads the wrench
-/// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`.
+/// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` the
+/// joint torques `tau`.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// Reads `N` values.
@@ -37,7 +39,7 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
     unsafe { out.cast::<[f64; N]>().write_unaligned(values) }
 }
 
-/// The five timed functions of one `N`-joint robot type, as C functions.
+/// The timed functions of one `N`-joint robot type, as C functions.
 struct Functions<R, const N: usize>(core::marker::PhantomData<R>);
 
 impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
@@ -95,6 +97,22 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
         }
     }
 
+    unsafe extern "C" fn forward(q: *const f64, qd: *const f64, tau: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (n torques at `tau`).
+        unsafe {
+            let qdd = R::default().forward_dynamics(&input(q), &input(qd), &input(tau));
+            output(out, qdd.unwrap_or([f64::NAN; N]));
+        }
+    }
+
+    unsafe extern "C" fn mass_inverse(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function`.
+        unsafe {
+            let inverse = R::default().mass_matrix_inverse(&input(q));
+            output_matrix(out, inverse.unwrap_or([[f64::NAN; N]; N]));
+        }
+    }
+
     fn get(function: &[u8]) -> Option<Function> {
         Some(match function {
             b"tau" => Self::tau,
@@ -105,6 +123,8 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
             b"fk" => Self::hand_pose,
             b"J" => Self::jacobian,
             b"JtF" => Self::statics,
+            b"fd" => Self::forward,
+            b"Minv" => Self::mass_inverse,
             _ => return None,
         })
     }

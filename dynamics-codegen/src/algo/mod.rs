@@ -12,6 +12,7 @@ mod crba;
 mod energy;
 mod gravity;
 mod kinematics;
+mod ldlt;
 mod regroup;
 mod rnea;
 mod robot;
@@ -29,6 +30,7 @@ pub use kinematics::{
     acceleration_bias_in_base, in_hand_axes, jacobian_in_base, jacobian_in_hand, joint_torques,
     kinematics, Frame, Jacobian, Kinematics,
 };
+pub use ldlt::Ldlt;
 pub use rnea::rnea;
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;
@@ -63,6 +65,11 @@ pub trait Scalar:
     fn one(self) -> Self {
         self.constant(Number::ONE)
     }
+
+    /// `1 / self`. A symbolic constant zero has none: zero stands in, so a caller dividing by
+    /// a value that may be zero checks it (as the LDLᵀ's pivots are).
+    #[must_use]
+    fn recip(self) -> Self;
 }
 
 impl Scalar for f64 {
@@ -76,6 +83,10 @@ impl Scalar for f64 {
 
     fn is_zero(self) -> bool {
         self == 0.0
+    }
+
+    fn recip(self) -> f64 {
+        1.0 / self
     }
 }
 

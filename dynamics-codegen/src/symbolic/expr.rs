@@ -81,4 +81,9 @@ impl Scalar for Expr<'_> {
     fn is_zero(self) -> bool {
         self.graph.borrow().is_zero(self.id)
     }
+
+    fn recip(self) -> Self {
+        let r = self.graph.borrow_mut().recip(self.id);
+        r.map_or_else(|| self.zero(), |id| Expr::new(self.graph, id))
+    }
 }

@@ -51,6 +51,11 @@ pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
     let g = robot.gravity_torques(q);
     let h = robot.bias_torques(q, qd);
     let tau = robot.inverse_dynamics(q, qd, qdd);
+    // The error (a singular M) as NaN.
+    let qdd_back = robot
+        .forward_dynamics(q, qd, &tau)
+        .map_or(f32::NAN, |a| a[0]);
+    let inverse = robot.mass_matrix_inverse(q).map_or(f32::NAN, |m| m[0][0]);
     m[0][0]
         + c[N - 1][0]
         + cqd[0]
@@ -59,6 +64,8 @@ pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
         + tau[N - 1]
         + robot.kinetic_energy(q, qd)
         + robot.potential_energy(q)
+        + qdd_back
+        + inverse
 }
 
 /// Inverse dynamics of both robots in double precision.
