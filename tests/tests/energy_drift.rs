@@ -10,14 +10,7 @@
 //! not shrink with the step; a right one makes the drift fall 16-fold when h is halved.
 
 use dynamics_runtime::Dynamics;
-
-#[derive(Dynamics)]
-#[dynamics(file = "data/reference/robots/puma560.json", check_inertia = false)]
-struct Puma560;
-
-#[derive(Dynamics)]
-#[dynamics(file = "data/panda/robot.json")]
-struct Panda;
+use dynamics_tests::robots::{Panda, Puma560};
 
 /// The state's derivative `(q̇, q̈)` at zero torque.
 fn derivative<R: Dynamics<N>, const N: usize>(

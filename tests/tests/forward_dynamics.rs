@@ -19,36 +19,11 @@ use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{matrix, samples, vector};
+use dynamics_tests::robots::{
+    General, NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford, Tilted,
+    Ur5, Ur5Urdf,
+};
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
-
-macro_rules! reference_robot {
-    ($name:ident, $file:literal $(, $key:ident = $value:tt)?) => {
-        #[derive(Dynamics)]
-        #[dynamics(file = $file $(, $key = $value)?)]
-        struct $name;
-    };
-}
-
-reference_robot!(
-    Puma560,
-    "data/reference/robots/puma560.json",
-    check_inertia = false
-);
-reference_robot!(
-    Stanford,
-    "data/reference/robots/stanford.json",
-    check_inertia = false
-);
-reference_robot!(Ur5, "data/reference/robots/ur5.json");
-reference_robot!(Ur5Urdf, "data/frames/ur5_urdf.toml");
-reference_robot!(Tilted, "data/frames/tilted.toml");
-reference_robot!(NikuTwoLink, "data/reference/robots/niku_2link.json");
-reference_robot!(NikuPolar, "data/reference/robots/niku_polar.json");
-reference_robot!(Random1, "data/reference/robots/random1.json");
-reference_robot!(Random2, "data/reference/robots/random2.json");
-reference_robot!(Random5, "data/reference/robots/random5.json");
-reference_robot!(Panda, "data/panda/robot.json");
-reference_robot!(General, "data/frames/general.toml");
 
 /// Scaled tolerance in `f64`: the solves lose what M's condition number says.
 const F64: f64 = 1e-10;
