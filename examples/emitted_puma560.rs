@@ -98,11 +98,11 @@ mod __dynamics {
         g3: T,
         g4: T,
         g5: T,
-        u94: T,
         u95: T,
+        u96: T,
         k53: T,
         k54: T,
-        u96: T,
+        u97: T,
         k57: T,
         k58: T,
         k60: T,
@@ -121,45 +121,91 @@ mod __dynamics {
         k73: T,
         k74: T,
         p: T,
-        u102: T,
         u103: T,
-        u110: T,
+        u104: T,
         u111: T,
         u112: T,
         u113: T,
-        u115: T,
-        u117: T,
+        u114: T,
+        u116: T,
+        u118: T,
         k81: T,
-        u124: T,
-        u129: T,
+        u125: T,
         u130: T,
         u131: T,
+        u132: T,
         k83: T,
         k84: T,
         k85: T,
-        u134: T,
-        u136: T,
-        u138: T,
+        u135: T,
+        u137: T,
         u139: T,
-        u141: T,
+        u140: T,
         u142: T,
         u143: T,
-        u145: T,
+        u144: T,
         u146: T,
-        u148: T,
+        u147: T,
         u149: T,
-        u151: T,
-        u153: T,
+        u150: T,
+        u152: T,
         u154: T,
-        u157: T,
-        u161: T,
+        u155: T,
+        u158: T,
         u162: T,
         u163: T,
-        u165: T,
+        u164: T,
         u166: T,
         u167: T,
         u168: T,
         u169: T,
+        u170: T,
+        u171: T,
+        u172: T,
+        u173: T,
+        u174: T,
+        u175: T,
+        u176: T,
+        u177: T,
+        u178: T,
+        u180: T,
+        u182: T,
+        u184: T,
+        u186: T,
+        u187: T,
+        u188: T,
+        u190: T,
+        u192: T,
+        u194: T,
+        u195: T,
+        u196: T,
+        u198: T,
+        u200: T,
+        u201: T,
+        u202: T,
+        u204: T,
+        u205: T,
+        mi6_6: T,
+        mi1_6: T,
+        mi1_1: T,
+        mi2_6: T,
+        mi1_2: T,
+        mi3_6: T,
+        mi1_3: T,
+        mi4_6: T,
+        mi1_4: T,
+        mi5_6: T,
+        mi1_5: T,
+        mi2_2: T,
+        mi2_3: T,
+        mi2_4: T,
+        mi2_5: T,
+        mi3_3: T,
+        mi3_4: T,
+        mi3_5: T,
+        mi4_4: T,
+        mi4_5: T,
+        mi5_5: T,
     }
     #[inline(always)]
     pub(super) fn configuration<T: ::dynamics_runtime::Real>(
@@ -251,6 +297,8 @@ mod __dynamics {
         let k83: T = T::from_f64(-0.5);
         let k84: T = T::from_f64(0.00002);
         let k85: T = T::from_f64(-0.00002);
+        let k86: T = T::from_f64(0.0000000016);
+        let k87: T = T::from_f64(-0.0000000016);
         let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([
             q_[1],
             q_[2],
@@ -380,141 +428,286 @@ mod __dynamics {
         let m1_5 = c2
             .mul_add(u82, k46.mul_add(s2 * u79, k41.mul_add(u68 * u90, u74 * u89)));
         let u91 = c5 * u90;
+        let u92 = u6.mul_add(u89, -u91);
         /// D16 = D61 (6.43)
-        let m1_6 = k36 * u6.mul_add(u89, -u91);
+        let m1_6 = k36 * u92;
         /// D2 (6.45), gravity and spring
         let g2 = k49 * (-c2).mul_add(k30 + u31, s2 * (k8 + u34));
         /// D3 (6.45), gravity and spring
         let g3 = k49 * (-u24).mul_add(u90, u25 * u89);
-        let u92 = c4 * u89;
+        let u93 = c4 * u89;
         /// D4 (6.45), gravity and spring
         let g4 = k52 * (s5 * (s4 * u89));
-        let u93 = s5 * u90;
+        let u94 = s5 * u90;
         /// D5 (6.45), gravity and spring
-        let g5 = k51 * c5.mul_add(u92, u93);
-        let u94 = k50 * s2;
-        let u95 = k50 * c2;
-        let u96 = k56.mul_add(s2, k55 * c2);
+        let g5 = k51 * c5.mul_add(u93, u94);
+        let u95 = k50 * s2;
+        let u96 = k50 * c2;
+        let u97 = k56.mul_add(s2, k55 * c2);
         /// potential energy
         let p = -k51
             .mul_add(
-                (-s5).mul_add(u92, u91),
+                (-s5).mul_add(u93, u91),
                 k59.mul_add(u90, k77.mul_add(u89, k56.mul_add(c2, k76.mul_add(s2, k75)))),
             );
-        let u97 = k45 * u41;
-        let u98 = k2 * u58;
-        let u99 = k42 * u62;
-        let u100 = k44 * u76;
-        let u101 = k45 * u12;
-        let u102 = k35.mul_add(u12, u21 + u21);
-        let u103 = k38.mul_add(u13, u20);
-        let u104 = k80.mul_add(u7, u101);
-        let u105 = (-u35).mul_add(u104, k45.mul_add(m3_4 * u36, u101));
-        let u106 = k46 * u6;
-        let u107 = u106 + u106 + u105;
-        let u108 = u106 + u99;
-        let u109 = u108 + k79.mul_add(u7, u108) + u101 - u105;
-        let u110 = u99 + u102;
-        let u111 = u99 + u110;
-        let u112 = u53
+        let u98 = k45 * u41;
+        let u99 = k2 * u58;
+        let u100 = k42 * u62;
+        let u101 = k44 * u76;
+        let u102 = k45 * u12;
+        let u103 = k35.mul_add(u12, u21 + u21);
+        let u104 = k38.mul_add(u13, u20);
+        let u105 = k80.mul_add(u7, u102);
+        let u106 = (-u35).mul_add(u105, k45.mul_add(m3_4 * u36, u102));
+        let u107 = k46 * u6;
+        let u108 = u107 + u107 + u106;
+        let u109 = u107 + u100;
+        let u110 = u109 + k79.mul_add(u7, u109) + u102 - u106;
+        let u111 = u100 + u103;
+        let u112 = u100 + u111;
+        let u113 = u53
             .mul_add(
-                u107 - u109,
-                u107 + u109
+                u108 - u110,
+                u108 + u110
                     - k45
                         .mul_add(
-                            u54 * u36.mul_add(u104, m3_4.mul_add(u40, k44 * u63)),
-                            u107,
+                            u54 * u36.mul_add(u105, m3_4.mul_add(u40, k44 * u63)),
+                            u108,
                         ),
             );
-        let u113 = k42.mul_add(u86, u103);
-        let u114 = k41 * u67;
-        let u115 = k40.mul_add(s4, u81);
-        let u116 = k42 * u75;
-        let u117 = u115 + u116;
-        let u118 = u2 * u8;
-        let u119 = k44 * s5;
-        let u120 = k82.mul_add(u2 - u118, u119 + u119);
-        let u121 = k81.mul_add(u2, u114);
-        let u122 = u114 + u121;
-        let u123 = u119 + u114;
-        let u124 = u123 + k82.mul_add(u118, u123);
-        let u125 = k81.mul_add(u2 * u9, k41 * u68);
-        let u126 = u120 - u122;
-        let u127 = k46 * u68;
-        let u128 = u127 + u100;
-        let u129 = u100 + u124;
-        let u130 = u100 + u129;
-        let u131 = k41.mul_add(c5, u20);
-        let u132 = -(u87 + u88);
-        let u133 = u22.mul_add(u90, u28 * u132);
-        let u134 = k47.mul_add(c2.mul_add(u31, u59), u133);
-        let u135 = u17.mul_add(u132, u61 * u90);
-        let u136 = (-s2).mul_add(u65, k48 * u66) + u135;
-        let u137 = k41.mul_add(u68 * u132, u74 * u90);
-        let u138 = (-s2).mul_add(u82, k46.mul_add(u84, u137));
-        let u139 = (-c5).mul_add(u132, u6 * u90);
-        let u140 = k35.mul_add(u41, u98 + u98);
-        let u141 = u53
+        let u114 = k42.mul_add(u86, u104);
+        let u115 = k41 * u67;
+        let u116 = k40.mul_add(s4, u81);
+        let u117 = k42 * u75;
+        let u118 = u116 + u117;
+        let u119 = u2 * u8;
+        let u120 = k44 * s5;
+        let u121 = k82.mul_add(u2 - u119, u120 + u120);
+        let u122 = k81.mul_add(u2, u115);
+        let u123 = u115 + u122;
+        let u124 = u120 + u115;
+        let u125 = u124 + k82.mul_add(u119, u124);
+        let u126 = k81.mul_add(u2 * u9, k41 * u68);
+        let u127 = u121 - u123;
+        let u128 = k46 * u68;
+        let u129 = u128 + u101;
+        let u130 = u101 + u125;
+        let u131 = u101 + u130;
+        let u132 = k41.mul_add(c5, u20);
+        let u133 = -(u87 + u88);
+        let u134 = u22.mul_add(u90, u28 * u133);
+        let u135 = k47.mul_add(c2.mul_add(u31, u59), u134);
+        let u136 = u17.mul_add(u133, u61 * u90);
+        let u137 = (-s2).mul_add(u65, k48 * u66) + u136;
+        let u138 = k41.mul_add(u68 * u133, u74 * u90);
+        let u139 = (-s2).mul_add(u82, k46.mul_add(u84, u138));
+        let u140 = (-c5).mul_add(u133, u6 * u90);
+        let u141 = k35.mul_add(u41, u99 + u99);
+        let u142 = u53
             .mul_add(
-                u97 - u140,
-                u97 - u97
+                u98 - u141,
+                u98 - u98
                     + (-k45)
                         .mul_add(
                             u54 * u37.mul_add(u40, k78.mul_add(u38, k23 * u31)),
-                            u140,
+                            u141,
                         ),
             );
-        let u142 = c2
+        let u143 = c2
             .mul_add(k47.mul_add(u31, u42), s2 * (k47.mul_add(u58, -u44) - u43));
-        let u143 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u133);
-        let u144 = k48 * s2.mul_add(u62, u66);
-        let u145 = u144 + u135;
-        let u146 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u137);
-        let u147 = (-u10).mul_add(c4.mul_add(c4, -u8), u15);
-        let u148 = c2
+        let u144 = k47.mul_add((-c2).mul_add(u30 - u29, u59), u134);
+        let u145 = k48 * s2.mul_add(u62, u66);
+        let u146 = u145 + u136;
+        let u147 = k46.mul_add((-c2).mul_add(-(u78 + u77), u83), u138);
+        let u148 = (-u10).mul_add(c4.mul_add(c4, -u8), u15);
+        let u149 = c2
             .mul_add(
-                s3.mul_add(u147, c3.mul_add(u103, k48 * u63)),
-                s2 * c3.mul_add(u147, -s3.mul_add(u103, u60 + u64)),
+                s3.mul_add(u148, c3.mul_add(u104, k48 * u63)),
+                s2 * c3.mul_add(u148, -s3.mul_add(u104, u60 + u64)),
             );
-        let u149 = u89.mul_add(u147, u90.mul_add(u103, u144));
-        let u150 = k43 * (u7 * u90);
-        let u151 = k48.mul_add(s2 * u86, u150)
+        let u150 = u89.mul_add(u148, u90.mul_add(u104, u145));
+        let u151 = k43 * (u7 * u90);
+        let u152 = k48.mul_add(s2 * u86, u151)
             + m3_4.mul_add(u89, c2 * k46.mul_add(u85, u23));
-        let u152 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
-        let u153 = k41.mul_add(u67 * u90, u89 * (u69 + u73)) + u152;
-        let u154 = u7 * u89;
-        let u155 = k37 * (c4 * u4);
-        let u156 = u155 - (u71 + u72);
-        let u157 = k38.mul_add(s4 * u4, u81);
-        let u158 = k45.mul_add(u36 * u156, (-u35).mul_add(u126, u120));
-        let u159 = u127 + u127 + u158;
-        let u160 = u122 + u128 + (u128 + u120) - u158;
-        let u161 = u53
+        let u153 = c2.mul_add(k46.mul_add(c3 * u68, u72), k48 * (s2 * u75));
+        let u154 = k41.mul_add(u67 * u90, u89 * (u69 + u73)) + u153;
+        let u155 = u7 * u89;
+        let u156 = k37 * (c4 * u4);
+        let u157 = u156 - (u71 + u72);
+        let u158 = k38.mul_add(s4 * u4, u81);
+        let u159 = k45.mul_add(u36 * u157, (-u35).mul_add(u127, u121));
+        let u160 = u128 + u128 + u159;
+        let u161 = u123 + u129 + (u129 + u121) - u159;
+        let u162 = u53
             .mul_add(
-                u159 - u160,
-                u159 + u160
+                u160 - u161,
+                u160 + u161
                     - k45
                         .mul_add(
-                            u54 * u36.mul_add(u126, u40.mul_add(u156, k42 * u79)),
-                            u159,
+                            u54 * u36.mul_add(u127, u40.mul_add(u157, k42 * u79)),
+                            u160,
                         ),
             );
-        let u162 = c2
+        let u163 = c2
             .mul_add(
-                c3.mul_add(u157, s3.mul_add(u125, k46 * u79)),
-                s2 * (-s3).mul_add(u157, c3.mul_add(u125, -(u70 + u80))),
+                c3.mul_add(u158, s3.mul_add(u126, k46 * u79)),
+                s2 * (-s3).mul_add(u158, c3.mul_add(u126, -(u70 + u80))),
             );
-        let u163 = u116 + u157;
-        let u164 = c3.mul_add(c5, -u86);
-        let u165 = k44.mul_add(u164, u131);
-        let u166 = u90.mul_add(u157, k46.mul_add(u83 + u84, u89 * u125));
-        let u167 = u89.mul_add(u73 + u155, u90.mul_add(u121, u152));
-        let u168 = c2
+        let u164 = u117 + u158;
+        let u165 = c3.mul_add(c5, -u86);
+        let u166 = k44.mul_add(u165, u132);
+        let u167 = u90.mul_add(u158, k46.mul_add(u83 + u84, u89 * u126));
+        let u168 = u89.mul_add(u73 + u156, u90.mul_add(u122, u153));
+        let u169 = c2
             .mul_add(
                 k48.mul_add(-s3.mul_add(c5, u85), u23),
-                k46.mul_add(s2 * u164, k44.mul_add(u154, u150)),
+                k46.mul_add(s2 * u165, k44.mul_add(u155, u151)),
             );
-        let u169 = u67.mul_add(u89, u93);
+        let u170 = u67.mul_add(u89, u94);
+        let u171 = T::ONE / m1_1;
+        let u172 = m1_2 * u171;
+        let u173 = m1_3 * u171;
+        let u174 = m1_4 * u171;
+        let u175 = m1_5 * u171;
+        let u176 = u92 * u171;
+        let u177 = (-m1_2).mul_add(u172, m2_2);
+        let u178 = T::ONE / u177;
+        let u179 = (-m1_3).mul_add(u172, m2_3);
+        let u180 = u178 * u179;
+        let u181 = (-m1_4).mul_add(u172, m2_4);
+        let u182 = u178 * u181;
+        let u183 = (-m1_5).mul_add(u172, m2_5);
+        let u184 = u178 * u183;
+        let u185 = u92.mul_add(u172, u7);
+        let u186 = u178 * u185;
+        let u187 = (-u179).mul_add(u180, (-m1_3).mul_add(u173, m3_3));
+        let u188 = T::ONE / u187;
+        let u189 = (-u180).mul_add(u181, (-m1_4).mul_add(u173, m3_4));
+        let u190 = u188 * u189;
+        let u191 = (-u180).mul_add(u183, (-m1_5).mul_add(u173, m3_5));
+        let u192 = u188 * u191;
+        let u193 = (-u180).mul_add(u185, u92.mul_add(u173, u7));
+        let u194 = u188 * u193;
+        let u195 = (-u189)
+            .mul_add(u190, (-u181).mul_add(u182, (-m1_4).mul_add(u174, m4_4)));
+        let u196 = T::ONE / u195;
+        let u197 = -u190.mul_add(u191, u182.mul_add(u183, m1_5 * u174));
+        let u198 = u196 * u197;
+        let u199 = (-u190).mul_add(u193, (-u182).mul_add(u185, u92.mul_add(u174, c5)));
+        let u200 = u196 * u199;
+        let u201 = (-u197)
+            .mul_add(
+                u198,
+                (-u191).mul_add(u192, (-u183).mul_add(u184, (-m1_5).mul_add(u175, k20))),
+            );
+        let u202 = T::ONE / u201;
+        let u203 = (-u198)
+            .mul_add(u199, (-u192).mul_add(u193, (-u184).mul_add(u185, u92 * u175)));
+        let u204 = u202 * u203;
+        let u205 = k87
+            .mul_add(
+                u203 * u204,
+                k87
+                    .mul_add(
+                        u199 * u200,
+                        k87
+                            .mul_add(
+                                u193 * u194,
+                                k87.mul_add(u185 * u186, k87.mul_add(u92 * u176, k7)),
+                            ),
+                    ),
+            );
+        /// (M^-1)66
+        let mi6_6 = T::ONE / u205;
+        let u206 = u172.mul_add(u180, -u173);
+        let u207 = (-u190).mul_add(u206, u172.mul_add(u182, -u174));
+        let u208 = (-u198)
+            .mul_add(u207, (-u192).mul_add(u206, u172.mul_add(u184, -u175)));
+        let u209 = (-u204)
+            .mul_add(
+                u208,
+                (-u200).mul_add(u207, (-u194).mul_add(u206, u172.mul_add(u186, u176))),
+            );
+        let u210 = u180.mul_add(u190, -u182);
+        let u211 = (-u198).mul_add(u210, u180.mul_add(u192, -u184));
+        let u212 = u204.mul_add(u211, u200.mul_add(u210, (-u180).mul_add(u194, u186)));
+        let u213 = u190.mul_add(u198, -u192);
+        let u214 = u204.mul_add(u213, (-u190).mul_add(u200, u194));
+        let u215 = (-u198).mul_add(u204, u200);
+        let u216 = mi6_6 * u209;
+        /// (M^-1)16
+        let mi1_6 = k7 * u216;
+        let u217 = u202 * u208;
+        let u218 = u196 * u207;
+        let u219 = u188 * u206;
+        let u220 = u172 * u178;
+        /// (M^-1)11
+        let mi1_1 = k86
+            .mul_add(
+                u209 * u216,
+                u208
+                    .mul_add(
+                        u217,
+                        u207.mul_add(u218, u206.mul_add(u219, u172.mul_add(u220, u171))),
+                    ),
+            );
+        let u221 = mi6_6 * u212;
+        /// (M^-1)26
+        let mi2_6 = k36 * u221;
+        let u222 = u202 * u211;
+        let u223 = u196 * u210;
+        let u224 = u180 * u188;
+        /// (M^-1)12
+        let mi1_2 = k87
+            .mul_add(
+                u209 * u221,
+                u208.mul_add(u222, u207.mul_add(u223, -u206.mul_add(u224, u220))),
+            );
+        let u225 = mi6_6 * u214;
+        /// (M^-1)36
+        let mi3_6 = k36 * u225;
+        let u226 = u202 * u213;
+        let u227 = u190 * u196;
+        /// (M^-1)13
+        let mi1_3 = k87
+            .mul_add(u209 * u225, u208.mul_add(u226, (-u207).mul_add(u227, u219)));
+        let u228 = mi6_6 * u215;
+        /// (M^-1)46
+        let mi4_6 = k36 * u228;
+        let u229 = u198 * u202;
+        /// (M^-1)14
+        let mi1_4 = k87.mul_add(u209 * u228, (-u208).mul_add(u229, u218));
+        let u230 = u204 * mi6_6;
+        /// (M^-1)56
+        let mi5_6 = k36 * u230;
+        /// (M^-1)15
+        let mi1_5 = k87.mul_add(u209 * u230, u217);
+        /// (M^-1)22
+        let mi2_2 = k86
+            .mul_add(
+                u212 * u221,
+                u211.mul_add(u222, u210.mul_add(u223, u180.mul_add(u224, u178))),
+            );
+        /// (M^-1)23
+        let mi2_3 = k86
+            .mul_add(u212 * u225, u211.mul_add(u226, -u210.mul_add(u227, u224)));
+        /// (M^-1)24
+        let mi2_4 = k86.mul_add(u212 * u228, (-u211).mul_add(u229, u223));
+        /// (M^-1)25
+        let mi2_5 = k86.mul_add(u212 * u230, u222);
+        /// (M^-1)33
+        let mi3_3 = k86
+            .mul_add(u214 * u225, u213.mul_add(u226, u190.mul_add(u227, u188)));
+        /// (M^-1)34
+        let mi3_4 = k86.mul_add(u214 * u228, -u213.mul_add(u229, u227));
+        /// (M^-1)35
+        let mi3_5 = k86.mul_add(u214 * u230, u226);
+        /// (M^-1)44
+        let mi4_4 = k86.mul_add(u215 * u228, u198.mul_add(u229, u196));
+        /// (M^-1)45
+        let mi4_5 = k86.mul_add(u215 * u230, -u229);
+        /// (M^-1)55
+        let mi5_5 = k86.mul_add(u204 * u230, u202);
         Configuration {
             k1,
             s2,
@@ -594,11 +787,11 @@ mod __dynamics {
             g3,
             g4,
             g5,
-            u94,
             u95,
+            u96,
             k53,
             k54,
-            u96,
+            u97,
             k57,
             k58,
             k60,
@@ -617,45 +810,91 @@ mod __dynamics {
             k73,
             k74,
             p,
-            u102,
             u103,
-            u110,
+            u104,
             u111,
             u112,
             u113,
-            u115,
-            u117,
+            u114,
+            u116,
+            u118,
             k81,
-            u124,
-            u129,
+            u125,
             u130,
             u131,
+            u132,
             k83,
             k84,
             k85,
-            u134,
-            u136,
-            u138,
+            u135,
+            u137,
             u139,
-            u141,
+            u140,
             u142,
             u143,
-            u145,
+            u144,
             u146,
-            u148,
+            u147,
             u149,
-            u151,
-            u153,
+            u150,
+            u152,
             u154,
-            u157,
-            u161,
+            u155,
+            u158,
             u162,
             u163,
-            u165,
+            u164,
             u166,
             u167,
             u168,
             u169,
+            u170,
+            u171,
+            u172,
+            u173,
+            u174,
+            u175,
+            u176,
+            u177,
+            u178,
+            u180,
+            u182,
+            u184,
+            u186,
+            u187,
+            u188,
+            u190,
+            u192,
+            u194,
+            u195,
+            u196,
+            u198,
+            u200,
+            u201,
+            u202,
+            u204,
+            u205,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
         }
     }
     /// What several methods compute from `q̇` too, computed once.
@@ -697,6 +936,11 @@ mod __dynamics {
         v62: T,
         v65: T,
         v66: T,
+        v73: T,
+        v76: T,
+        v77: T,
+        v78: T,
+        v79: T,
     }
     #[inline(always)]
     pub(super) fn motion<T: ::dynamics_runtime::Real>(
@@ -742,17 +986,22 @@ mod __dynamics {
             k31,
             k32,
             k33,
+            k36,
             k40,
             k43,
             k44,
             k47,
             u89,
             u90,
+            u95,
+            u96,
             k53,
             k54,
+            u97,
             k57,
             k58,
             k60,
+            k61,
             k62,
             k63,
             k64,
@@ -851,6 +1100,28 @@ mod __dynamics {
                                 + k12.mul_add(v11, k63.mul_add(v4, k33 * v3)),
                         ),
             );
+        let v67 = k23.mul_add(v9, u95);
+        let v68 = k2.mul_add(v8, u96);
+        let v69 = c3.mul_add(v67, s3 * v68);
+        let v70 = (-s3).mul_add(v67, c3 * v68);
+        let v71 = v33 + v69;
+        let v72 = k19.mul_add((-s4).mul_add(v71, v36), k36 * (v46 * v56)) + v54;
+        let v73 = k19
+            .mul_add(
+                c5.mul_add((-s4).mul_add(v35, c4 * v71), s5 * (v34 + v70)),
+                k7.mul_add(v44 * v56, v55),
+            );
+        let v74 = c5.mul_add(v72, (-s5).mul_add(v57, v42));
+        let v75 = k61.mul_add(v37 * v39, -v73);
+        let v76 = s5.mul_add(v72, c5.mul_add(v57, v43));
+        let v77 = k66.mul_add(v69, k24.mul_add(v70, v30)) + v62
+            - c4.mul_add(v75, s4 * v74);
+        let v78 = v77 + k2.mul_add(v65, u97 + v14);
+        let v79 = u89
+            .mul_add(
+                (-s4).mul_add(v75, c4.mul_add(v74, k44.mul_add(v61, v31))),
+                u90 * (k43.mul_add(v61, v32) + v76),
+            ) + v66;
         (
             c_,
             Motion {
@@ -891,6 +1162,11 @@ mod __dynamics {
                 v62,
                 v65,
                 v66,
+                v73,
+                v76,
+                v77,
+                v78,
+                v79,
             },
         )
     }
@@ -954,121 +1230,121 @@ mod __dynamics {
             u68,
             u76,
             k64,
-            u102,
             u103,
-            u110,
+            u104,
             u111,
             u112,
             u113,
-            u115,
-            u117,
+            u114,
+            u116,
+            u118,
             k81,
-            u124,
-            u129,
+            u125,
             u130,
             u131,
+            u132,
             k83,
             k84,
             k85,
-            u134,
-            u136,
-            u138,
+            u135,
+            u137,
             u139,
-            u141,
+            u140,
             u142,
             u143,
-            u145,
+            u144,
             u146,
-            u148,
+            u147,
             u149,
-            u151,
-            u153,
+            u150,
+            u152,
             u154,
-            u157,
-            u161,
+            u155,
+            u158,
             u162,
             u163,
-            u165,
+            u164,
             u166,
             u167,
             u168,
             u169,
+            u170,
             ..
         } = configuration(p_, q_);
         let [qd1, qd2, qd3, qd4, qd5, qd6] = *qd_;
         let t1 = s5 * qd5;
-        let t2 = qd4 * u103;
+        let t2 = qd4 * u104;
         let t3 = u57 * qd2;
-        let t4 = qd3 * u143;
-        let t5 = qd4 * u151;
-        let t6 = qd5 * u168;
+        let t4 = qd3 * u144;
+        let t5 = qd4 * u152;
+        let t6 = qd5 * u169;
         /// C16 = sum of D16k qd_k (6.44)
         let cor1_6 = k85
-            * ((-qd4).mul_add(u154, qd2 * u139) + qd5.mul_add(u169, qd3 * u139));
+            * ((-qd4).mul_add(u155, qd2 * u140) + qd5.mul_add(u170, qd3 * u140));
         let t7 = u58 * qd3;
         let t8 = k2 * t7;
-        let t9 = qd4 * u113;
-        let t10 = qd5 * u165;
-        let t11 = qd1 * u139;
+        let t9 = qd4 * u114;
+        let t10 = qd5 * u166;
+        let t11 = qd1 * u140;
         /// C33 = sum of D33k qd_k (6.44)
-        let cor3_3 = k1 * qd4.mul_add(u102, qd5 * u124);
-        let t12 = qd5 * u131;
+        let cor3_3 = k1 * qd4.mul_add(u103, qd5 * u125);
+        let t12 = qd5 * u132;
         /// C44 = sum of D44k qd_k (6.44)
         let cor4_4 = k37 * (u2 * qd5);
-        let t13 = qd1.mul_add(u154, u6.mul_add(qd3, u6 * qd2));
+        let t13 = qd1.mul_add(u155, u6.mul_add(qd3, u6 * qd2));
         /// C46 = sum of D46k qd_k (6.44)
         let cor4_6 = k85 * (t1 + t13);
-        let t14 = qd1.mul_add(u169, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
+        let t14 = qd1.mul_add(u170, (-u68).mul_add(qd3, (-u68).mul_add(qd2, s5 * qd4)));
         /// C56 = sum of D56k qd_k (6.44)
         let cor5_6 = k84 * t14;
         /// C65 = sum of D65k qd_k (6.44)
         let cor6_5 = k85 * t14;
         /// C11 = sum of D11k qd_k (6.44)
         let cor1_1 = k1
-            * (qd4.mul_add(u112, qd5 * u161) + qd3.mul_add(u141, k35 * (u56 * qd2)));
-        let t15 = qd5.mul_add(u162, qd4 * u148) + qd3.mul_add(u142, t3);
-        let t16 = k36 * (qd6 * u139);
+            * (qd4.mul_add(u113, qd5 * u162) + qd3.mul_add(u142, k35 * (u56 * qd2)));
+        let t15 = qd5.mul_add(u163, qd4 * u149) + qd3.mul_add(u143, t3);
+        let t16 = k36 * (qd6 * u140);
         let t17 = k35
             .mul_add(
                 u56 * qd1,
-                t3 + qd3.mul_add(u134, qd5.mul_add(u138, qd4.mul_add(u136, t16))),
+                t3 + qd3.mul_add(u135, qd5.mul_add(u139, qd4.mul_add(u137, t16))),
             );
         /// C12 = sum of D12k qd_k (6.44)
         let cor1_2 = k1 * (t15 + t17);
         /// C21 = sum of D21k qd_k (6.44)
         let cor2_1 = k1 * (t15 - t17);
-        let t18 = qd2.mul_add(u134, qd5.mul_add(u166, qd4 * u149) + t4);
+        let t18 = qd2.mul_add(u135, qd5.mul_add(u167, qd4 * u150) + t4);
         let t19 = qd1
             .mul_add(
-                u141,
-                qd2.mul_add(u142, qd5.mul_add(u146, qd4.mul_add(u145, t16)) + t4),
+                u142,
+                qd2.mul_add(u143, qd5.mul_add(u147, qd4.mul_add(u146, t16)) + t4),
             );
         /// C13 = sum of D13k qd_k (6.44)
         let cor1_3 = k1 * (t18 + t19);
         /// C31 = sum of D31k qd_k (6.44)
         let cor3_1 = k1 * (t18 - t19);
-        let t20 = qd2.mul_add(u136, t5) + qd5.mul_add(u167, qd3 * u145);
+        let t20 = qd2.mul_add(u137, t5) + qd5.mul_add(u168, qd3 * u146);
         let t21 = qd1
             .mul_add(
-                u112,
+                u113,
                 qd2
                     .mul_add(
-                        u148,
-                        k7.mul_add(qd6 * u154, t5) + qd5.mul_add(u153, qd3 * u149),
+                        u149,
+                        k7.mul_add(qd6 * u155, t5) + qd5.mul_add(u154, qd3 * u150),
                     ),
             );
         /// C14 = sum of D14k qd_k (6.44)
         let cor1_4 = k1 * (t20 + t21);
         /// C41 = sum of D41k qd_k (6.44)
         let cor4_1 = k1 * (t20 - t21);
-        let t22 = qd2.mul_add(u138, t6) + qd4.mul_add(u153, qd3 * u146);
+        let t22 = qd2.mul_add(u139, t6) + qd4.mul_add(u154, qd3 * u147);
         let t23 = qd1
             .mul_add(
-                u161,
+                u162,
                 qd2
                     .mul_add(
-                        u162,
-                        k36.mul_add(qd6 * u169, t6) + qd3.mul_add(u166, qd4 * u167),
+                        u163,
+                        k36.mul_add(qd6 * u170, t6) + qd3.mul_add(u167, qd4 * u168),
                     ),
             );
         /// C15 = sum of D15k qd_k (6.44)
@@ -1076,14 +1352,14 @@ mod __dynamics {
         /// C51 = sum of D51k qd_k (6.44)
         let cor5_1 = k1 * (t22 - t23);
         /// C22 = sum of D22k qd_k (6.44)
-        let cor2_2 = k1 * qd4.mul_add(u111, qd5.mul_add(u130, k64 * t7));
-        let t24 = qd4.mul_add(u110, qd5.mul_add(u129, t8));
+        let cor2_2 = k1 * qd4.mul_add(u112, qd5.mul_add(u131, k64 * t7));
+        let t24 = qd4.mul_add(u111, qd5.mul_add(u130, t8));
         let t25 = qd1
             .mul_add(
-                u142,
+                u143,
                 (-qd1)
                     .mul_add(
-                        u134,
+                        u135,
                         k64
                             .mul_add(
                                 u58 * qd2,
@@ -1095,18 +1371,18 @@ mod __dynamics {
         let cor2_3 = k1 * (t24 + t25);
         /// C32 = sum of D32k qd_k (6.44)
         let cor3_2 = k1 * (t24 - t25);
-        let t26 = qd5.mul_add(u163, k42.mul_add(u62 * qd3, t9));
+        let t26 = qd5.mul_add(u164, k42.mul_add(u62 * qd3, t9));
         let t27 = k7 * (u6 * qd6);
         let t28 = qd1
             .mul_add(
-                u148,
+                u149,
                 qd2
                     .mul_add(
-                        u111,
+                        u112,
                         (-qd1)
                             .mul_add(
-                                u136,
-                                qd3.mul_add(u110, qd5.mul_add(u117, t27) + t9),
+                                u137,
+                                qd3.mul_add(u111, qd5.mul_add(u118, t27) + t9),
                             ),
                     ),
             );
@@ -1114,13 +1390,13 @@ mod __dynamics {
         let cor2_4 = k1 * (t26 + t28);
         /// C42 = sum of D42k qd_k (6.44)
         let cor4_2 = k1 * (t26 - t28);
-        let t29 = t10 + qd4.mul_add(u117, k44 * (u76 * qd3));
+        let t29 = t10 + qd4.mul_add(u118, k44 * (u76 * qd3));
         let t30 = k7 * (u68 * qd6);
         let t31 = qd1
             .mul_add(
-                u162,
-                qd2.mul_add(u130, t30 + t10)
-                    + (-qd1).mul_add(u138, qd4.mul_add(u163, qd3 * u129)),
+                u163,
+                qd2.mul_add(u131, t30 + t10)
+                    + (-qd1).mul_add(u139, qd4.mul_add(u164, qd3 * u130)),
             );
         /// C25 = sum of D25k qd_k (6.44)
         let cor2_5 = k1 * (t29 + t31);
@@ -1131,30 +1407,30 @@ mod __dynamics {
         let cor2_6 = k84 * (t32 + t11);
         /// C62 = sum of D62k qd_k (6.44)
         let cor6_2 = k84 * (t32 - t11);
-        let t33 = qd5.mul_add(u157, t2);
-        let t34 = qd2.mul_add(u110, qd1 * u149)
+        let t33 = qd5.mul_add(u158, t2);
+        let t34 = qd2.mul_add(u111, qd1 * u150)
             + (-qd1)
                 .mul_add(
-                    u145,
+                    u146,
                     qd3
                         .mul_add(
-                            u102,
-                            t2 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u115, t27)),
+                            u103,
+                            t2 + (-k42).mul_add(u62 * qd2, qd5.mul_add(u116, t27)),
                         ),
                 );
         /// C34 = sum of D34k qd_k (6.44)
         let cor3_4 = k1 * (t33 + t34);
         /// C43 = sum of D43k qd_k (6.44)
         let cor4_3 = k1 * (t33 - t34);
-        let t35 = qd4.mul_add(u115, t12);
+        let t35 = qd4.mul_add(u116, t12);
         let t36 = qd1
             .mul_add(
-                u166,
+                u167,
                 (-qd1)
                     .mul_add(
-                        u146,
-                        qd4.mul_add(u157, qd3 * u124)
-                            + qd2.mul_add(u129, (-k44).mul_add(u76 * qd2, t30 + t12)),
+                        u147,
+                        qd4.mul_add(u158, qd3 * u125)
+                            + qd2.mul_add(u130, (-k44).mul_add(u76 * qd2, t30 + t12)),
                     ),
             );
         /// C35 = sum of D35k qd_k (6.44)
@@ -1163,18 +1439,18 @@ mod __dynamics {
         let cor5_3 = k1 * (t35 - t36);
         let t37 = qd2
             .mul_add(
-                u163,
+                u164,
                 qd3
                     .mul_add(
-                        u157,
+                        u158,
                         (-qd2)
                             .mul_add(
-                                u117,
+                                u118,
                                 (-qd3)
-                                    .mul_add(u115, k81.mul_add(u2 * qd4, k36 * (s5 * qd6))),
+                                    .mul_add(u116, k81.mul_add(u2 * qd4, k36 * (s5 * qd6))),
                             ),
                     ),
-            ) + (-qd1).mul_add(u153, qd1 * u167);
+            ) + (-qd1).mul_add(u154, qd1 * u168);
         /// C45 = sum of D45k qd_k (6.44)
         let cor4_5 = k1 * t37;
         /// C54 = sum of D54k qd_k (6.44)
@@ -1292,91 +1568,14 @@ mod __dynamics {
         q_: &[T; 6usize],
         qd_: &[T; 6usize],
     ) -> [T; 6usize] {
-        let (
-            Configuration {
-                s2,
-                c2,
-                k2,
-                s3,
-                c3,
-                s4,
-                c4,
-                s5,
-                c5,
-                k7,
-                k19,
-                k23,
-                k24,
-                k36,
-                k43,
-                k44,
-                u89,
-                u90,
-                u94,
-                u95,
-                u96,
-                k61,
-                k66,
-                ..
-            },
-            Motion {
-                v9,
-                v14,
-                v30,
-                v31,
-                v32,
-                v33,
-                v34,
-                v35,
-                v36,
-                v37,
-                v39,
-                v42,
-                v43,
-                v44,
-                v46,
-                v48,
-                v54,
-                v55,
-                v56,
-                v57,
-                v61,
-                v62,
-                v65,
-                v66,
-                ..
-            },
-        ) = motion(p_, q_, qd_);
-        let [qd1, _, _, _, _, _] = *qd_;
+        let (Configuration { k7, .. }, Motion { v48, v73, v76, v77, v78, v79, .. }) = motion(
+            p_,
+            q_,
+            qd_,
+        );
         /// centripetal, Coriolis and gravity torque 6
         let h6 = k7 * v48;
-        let t1 = k23.mul_add(v9, u94);
-        let t2 = k2.mul_add(s2 * qd1 * (c2 * qd1), u95);
-        let t3 = c3.mul_add(t1, s3 * t2);
-        let t4 = (-s3).mul_add(t1, c3 * t2);
-        let t5 = v33 + t3;
-        let t6 = k19.mul_add((-s4).mul_add(t5, v36), k36 * (v46 * v56)) + v54;
-        /// centripetal, Coriolis and gravity torque 5
-        let h5 = k19
-            .mul_add(
-                c5.mul_add((-s4).mul_add(v35, c4 * t5), s5 * (v34 + t4)),
-                k7.mul_add(v44 * v56, v55),
-            );
-        let t7 = c5.mul_add(t6, (-s5).mul_add(v57, v42));
-        let t8 = k61.mul_add(v37 * v39, -h5);
-        /// centripetal, Coriolis and gravity torque 4
-        let h4 = s5.mul_add(t6, c5.mul_add(v57, v43));
-        /// centripetal, Coriolis and gravity torque 3
-        let h3 = k66.mul_add(t3, k24.mul_add(t4, v30)) + v62 - c4.mul_add(t8, s4 * t7);
-        /// centripetal, Coriolis and gravity torque 2
-        let h2 = h3 + k2.mul_add(v65, u96 + v14);
-        /// centripetal, Coriolis and gravity torque 1
-        let h1 = u89
-            .mul_add(
-                (-s4).mul_add(t8, c4.mul_add(t7, k44.mul_add(v61, v31))),
-                u90 * (k43.mul_add(v61, v32) + h4),
-            ) + v66;
-        [h1, h2, h3, h4, h5, h6]
+        [v79, v78, v77, v76, v73, h6]
     }
     #[inline(always)]
     pub(super) fn inverse_dynamics<T: ::dynamics_runtime::Real>(
@@ -1431,11 +1630,11 @@ mod __dynamics {
                 k47,
                 u89,
                 u90,
-                u94,
                 u95,
+                u96,
                 k53,
                 k54,
-                u96,
+                u97,
                 k57,
                 k58,
                 k61,
@@ -1486,8 +1685,8 @@ mod __dynamics {
         let t16 = qdd2 + t5;
         let t17 = t4 + (t4 - t14);
         let t18 = k2.mul_add(t17, k47 * v10);
-        let t19 = k23.mul_add(v9, k3.mul_add(t14, u94));
-        let t20 = k2.mul_add(t16, k47.mul_add(t13, u95));
+        let t19 = k23.mul_add(v9, k3.mul_add(t14, u95));
+        let t20 = k2.mul_add(t16, k47.mul_add(t13, u96));
         let t21 = s3.mul_add(t20, c3 * t19);
         let t22 = (-s3).mul_add(t19, c3 * t20);
         let t23 = qdd2 + qdd3;
@@ -1567,7 +1766,7 @@ mod __dynamics {
         let tau2 = k2
             .mul_add(
                 t49,
-                k54.mul_add(t5, k31.mul_add(qdd2, u96))
+                k54.mul_add(t5, k31.mul_add(qdd2, u97))
                     + k10.mul_add(v13, k12.mul_add(t14, k32 * t13)) + tau3,
             );
         /// T1 (6.46)
@@ -1743,6 +1942,167 @@ mod __dynamics {
     ) -> T {
         let Configuration { p, .. } = configuration(p_, q_);
         p
+    }
+    #[inline(always)]
+    pub(super) fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+    ) -> ::core::option::Option<[[T; 6usize]; 6usize]> {
+        let Configuration {
+            m1_1,
+            u177,
+            u187,
+            u195,
+            u201,
+            u205,
+            mi6_6,
+            mi1_6,
+            mi1_1,
+            mi2_6,
+            mi1_2,
+            mi3_6,
+            mi1_3,
+            mi4_6,
+            mi1_4,
+            mi5_6,
+            mi1_5,
+            mi2_2,
+            mi2_3,
+            mi2_4,
+            mi2_5,
+            mi3_3,
+            mi3_4,
+            mi3_5,
+            mi4_4,
+            mi4_5,
+            mi5_5,
+            ..
+        } = configuration(p_, q_);
+        if m1_1 > T::ZERO && u177 > T::ZERO && u187 > T::ZERO && u195 > T::ZERO
+            && u201 > T::ZERO && u205 > T::ZERO
+        {
+            ::core::option::Option::Some([
+                [mi1_1, mi1_2, mi1_3, mi1_4, mi1_5, mi1_6],
+                [mi1_2, mi2_2, mi2_3, mi2_4, mi2_5, mi2_6],
+                [mi1_3, mi2_3, mi3_3, mi3_4, mi3_5, mi3_6],
+                [mi1_4, mi2_4, mi3_4, mi4_4, mi4_5, mi4_6],
+                [mi1_5, mi2_5, mi3_5, mi4_5, mi5_5, mi5_6],
+                [mi1_6, mi2_6, mi3_6, mi4_6, mi5_6, mi6_6],
+            ])
+        } else {
+            ::core::option::Option::None
+        }
+    }
+    #[inline(always)]
+    pub(super) fn forward_dynamics<T: ::dynamics_runtime::Real>(
+        p_: &[T; 0usize],
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        tau_: &[T; 6usize],
+    ) -> ::core::option::Option<[T; 6usize]> {
+        let (
+            Configuration {
+                k7,
+                k36,
+                m1_1,
+                u171,
+                u172,
+                u173,
+                u174,
+                u175,
+                u176,
+                u177,
+                u178,
+                u180,
+                u182,
+                u184,
+                u186,
+                u187,
+                u188,
+                u190,
+                u192,
+                u194,
+                u195,
+                u196,
+                u198,
+                u200,
+                u201,
+                u202,
+                u204,
+                u205,
+                mi6_6,
+                ..
+            },
+            Motion { v48, v73, v76, v77, v78, v79, .. },
+        ) = motion(p_, q_, qd_);
+        let [tau1, tau2, tau3, tau4, tau5, tau6] = *tau_;
+        let t1 = tau1 - v79;
+        let t2 = (-u172).mul_add(t1, tau2 - v78);
+        let t3 = (-u180).mul_add(t2, (-u173).mul_add(t1, tau3 - v77));
+        let t4 = (-u190)
+            .mul_add(t3, (-u182).mul_add(t2, (-u174).mul_add(t1, tau4 - v76)));
+        let t5 = (-u198)
+            .mul_add(
+                t4,
+                (-u192).mul_add(t3, (-u184).mul_add(t2, (-u175).mul_add(t1, tau5 - v73))),
+            );
+        /// joint acceleration 6
+        let qdd6 = mi6_6
+            * k36
+                .mul_add(
+                    u204 * t5,
+                    k36
+                        .mul_add(
+                            u200 * t4,
+                            k36
+                                .mul_add(
+                                    u194 * t3,
+                                    k36
+                                        .mul_add(
+                                            u186 * t2,
+                                            k7.mul_add(u176 * t1, k36.mul_add(v48, tau6)),
+                                        ),
+                                ),
+                        ),
+                );
+        /// joint acceleration 5
+        let qdd5 = k36.mul_add(u204 * qdd6, u202 * t5);
+        /// joint acceleration 4
+        let qdd4 = (-u198).mul_add(qdd5, k36.mul_add(u200 * qdd6, u196 * t4));
+        /// joint acceleration 3
+        let qdd3 = (-u190)
+            .mul_add(qdd4, (-u192).mul_add(qdd5, k36.mul_add(u194 * qdd6, u188 * t3)));
+        /// joint acceleration 2
+        let qdd2 = (-u180)
+            .mul_add(
+                qdd3,
+                (-u182)
+                    .mul_add(
+                        qdd4,
+                        (-u184).mul_add(qdd5, k36.mul_add(u186 * qdd6, u178 * t2)),
+                    ),
+            );
+        /// joint acceleration 1
+        let qdd1 = (-u172)
+            .mul_add(
+                qdd2,
+                (-u173)
+                    .mul_add(
+                        qdd3,
+                        (-u174)
+                            .mul_add(
+                                qdd4,
+                                (-u175).mul_add(qdd5, k7.mul_add(u176 * qdd6, u171 * t1)),
+                            ),
+                    ),
+            );
+        if m1_1 > T::ZERO && u177 > T::ZERO && u187 > T::ZERO && u195 > T::ZERO
+            && u201 > T::ZERO && u205 > T::ZERO
+        {
+            ::core::option::Option::Some([qdd1, qdd2, qdd3, qdd4, qdd5, qdd6])
+        } else {
+            ::core::option::Option::None
+        }
     }
 }
 /// The generated functions, out of reach of the names around the derive.
@@ -2790,5 +3150,28 @@ impl ::dynamics_runtime::Dynamics<6usize> for Puma560 {
             q_,
             wrench_,
         )
+    }
+    /// M(q)⁻¹, through the LDLᵀ of M.
+    #[inline]
+    fn mass_matrix_inverse<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+    ) -> ::core::result::Result<
+        [[T; 6usize]; 6usize],
+        ::dynamics_runtime::NotPositiveDefinite,
+    > {
+        __dynamics::mass_matrix_inverse(&self.__dynamics_parameters(), q_)
+            .ok_or(::dynamics_runtime::NotPositiveDefinite)
+    }
+    /// q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).
+    #[inline]
+    fn forward_dynamics<T: ::dynamics_runtime::Real>(
+        &self,
+        q_: &[T; 6usize],
+        qd_: &[T; 6usize],
+        tau_: &[T; 6usize],
+    ) -> ::core::result::Result<[T; 6usize], ::dynamics_runtime::NotPositiveDefinite> {
+        __dynamics::forward_dynamics(&self.__dynamics_parameters(), q_, qd_, tau_)
+            .ok_or(::dynamics_runtime::NotPositiveDefinite)
     }
 }

@@ -473,7 +473,9 @@ fn stats_per_method() {
             "hand_acceleration_bias_in_base",
             "hand_acceleration_bias_in_hand",
             "joint_torques_for_hand_wrench",
-            "joint_torques_for_base_wrench"
+            "joint_torques_for_base_wrench",
+            "mass_matrix_inverse",
+            "forward_dynamics"
         ]
     );
 }

@@ -23,6 +23,8 @@ pub enum Argument {
     Qdd,
     /// A wrench `[fx, fy, fz, mx, my, mz]`.
     Wrench,
+    /// Joint torques and forces.
+    Tau,
 }
 
 impl Argument {
@@ -34,6 +36,7 @@ impl Argument {
             Argument::Qd => "qd",
             Argument::Qdd => "qdd",
             Argument::Wrench => "wrench",
+            Argument::Tau => "tau",
         }
     }
 }
@@ -55,6 +58,10 @@ pub enum Returns {
     Jacobian,
     /// `[T; 6]`: a linear and an angular part.
     Spatial,
+    /// `Result<[[T; N]; N], NotPositiveDefinite>`: a matrix through the LDLᵀ of M.
+    Inverse,
+    /// `Result<[T; N], NotPositiveDefinite>`: a vector through the LDLᵀ of M.
+    Solution,
 }
 
 /// A family of methods, emitted in a module of its own with its own shared configuration and
@@ -105,6 +112,9 @@ macro_rules! argument {
     (wrench) => {
         Argument::Wrench
     };
+    (tau) => {
+        Argument::Tau
+    };
 }
 
 /// The `Returns` of a row's result shape.
@@ -129,6 +139,12 @@ macro_rules! returns {
     };
     (spatial) => {
         Returns::Spatial
+    };
+    (inverse) => {
+        Returns::Inverse
+    };
+    (solution) => {
+        Returns::Solution
     };
 }
 
@@ -269,6 +285,14 @@ impl Method {
             Method::JointTorquesForBaseWrench => {
                 Shape::Vector(&eq.kinematics.torques_for_base_wrench)
             }
+            Method::MassMatrixInverse => Shape::Inverse {
+                pivots: &eq.forward.pivots,
+                matrix: &eq.forward.mass_inverse,
+            },
+            Method::ForwardDynamics => Shape::Solution {
+                pivots: &eq.forward.pivots,
+                vector: &eq.forward.qdd,
+            },
         }
     }
 

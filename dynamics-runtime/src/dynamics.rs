@@ -1,7 +1,7 @@
 //! The trait that `#[derive(Dynamics)]` implements, declared from the method table
 //! (`methods.rs`): `τ = M(q) q̈ + C(q, q̇) q̇ + g(q)` (Niku eq. 6.46) and its parts.
 
-use crate::{Pose, Real};
+use crate::{NotPositiveDefinite, Pose, Real};
 
 /// The trait from the method table's rows: one method per row, its arguments `&[T; N]`.
 macro_rules! declare_dynamics {
@@ -67,7 +67,8 @@ macro_rules! argument_type {
 }
 
 /// The type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`; a [`Pose`], one per link,
-/// a Jacobian's six rows `[[T; N]; 6]` or a spatial 6-vector `[T; 6]`.
+/// a Jacobian's six rows `[[T; N]; 6]` or a spatial 6-vector `[T; 6]`; a matrix or vector
+/// solved with `M`, or [`NotPositiveDefinite`].
 macro_rules! array_result {
     (pose, $t:ty, $n:ident) => {
         Pose<$t>
@@ -89,6 +90,12 @@ macro_rules! array_result {
     };
     (scalar, $t:ty, $n:ident) => {
         $t
+    };
+    (inverse, $t:ty, $n:ident) => {
+        Result<[[$t; $n]; $n], NotPositiveDefinite>
+    };
+    (solution, $t:ty, $n:ident) => {
+        Result<[$t; $n], NotPositiveDefinite>
     };
 }
 

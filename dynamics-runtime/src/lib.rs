@@ -52,6 +52,7 @@
 mod methods;
 
 mod dynamics;
+mod factor;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
 mod pose;
@@ -60,6 +61,7 @@ pub mod statics;
 mod trig;
 
 pub use crate::dynamics::Dynamics;
+pub use crate::factor::NotPositiveDefinite;
 pub use crate::pose::Pose;
 pub use crate::real::Real;
 

@@ -5,9 +5,9 @@
 // (`dynamics.rs`) and its nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads the same
 // file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
 //
-// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`), its result (`matrix`,
-// `vector`, `scalar`, `pose`, `poses`, `jacobian` or `spatial`) and the name of its nalgebra
-// wrapper, then
+// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`, `tau`), its result (`matrix`,
+// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, or `inverse` and `solution`: a
+// matrix or vector, or `NotPositiveDefinite`) and the name of its nalgebra wrapper, then
 //
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
@@ -203,6 +203,28 @@ macro_rules! for_each_method {
                 prefix: "tb",
                 summary: "T = Jᵀ F for a wrench in base axes.",
                 element: "T{i} ({equation}), wrench in base axes",
+            }
+            /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of `M`;
+            /// `Err(NotPositiveDefinite)` where a pivot of the factorization is not positive (a
+            /// robot whose parameters leave a joint without inertia).
+            fn mass_matrix_inverse(q) -> inverse, nalgebra mass_matrix_inverse_na {
+                variant: MassMatrixInverse,
+                family: dynamics,
+                equation: None,
+                prefix: "mi",
+                summary: "M(q)⁻¹, through the LDLᵀ of M.",
+                element: "(M^-1){i}{j}",
+            }
+            /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint friction where
+            /// the robot declares it, through the LDLᵀ factorization of `M`: the inverse of
+            /// `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot is not positive.
+            fn forward_dynamics(q, qd, tau) -> solution, nalgebra forward_dynamics_na {
+                variant: ForwardDynamics,
+                family: dynamics,
+                equation: None,
+                prefix: "qdd",
+                summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",
+                element: "joint acceleration {i}",
             }
         }
     };

@@ -5,7 +5,7 @@
 //! copy. A scalar result stays `T`; a pose becomes an `Isometry3`, a Jacobian an
 //! `SMatrix<T, 6, N>`.
 
-use crate::{Dynamics, Pose, Real};
+use crate::{Dynamics, NotPositiveDefinite, Pose, Real};
 use nalgebra::{
     Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
 };
@@ -48,6 +48,8 @@ macro_rules! nalgebra_result {
     (poses, $t:ty, $n:ident) => { [Isometry3<$t>; $n] };
     (jacobian, $t:ty, $n:ident) => { SMatrix<$t, 6, $n> };
     (spatial, $t:ty, $n:ident) => { SVector<$t, 6> };
+    (inverse, $t:ty, $n:ident) => { Result<SMatrix<$t, $n, $n>, NotPositiveDefinite> };
+    (solution, $t:ty, $n:ident) => { Result<SVector<$t, $n>, NotPositiveDefinite> };
     (matrix, $value:expr) => { matrix(&$value) };
     (vector, $value:expr) => { SVector::from($value) };
     (scalar, $value:expr) => { $value };
@@ -55,6 +57,8 @@ macro_rules! nalgebra_result {
     (poses, $value:expr) => { $value.map(|p| isometry(&p)) };
     (jacobian, $value:expr) => { SMatrix::from_fn(|i, j| $value[i][j]) };
     (spatial, $value:expr) => { SVector::from($value) };
+    (inverse, $value:expr) => { $value.map(|m| matrix(&m)) };
+    (solution, $value:expr) => { $value.map(SVector::from) };
 }
 
 for_each_method!(declare_nalgebra);
@@ -82,7 +86,7 @@ fn isometry<T: Real + RealField>(pose: &Pose<T>) -> Isometry3<T> {
 #[cfg(test)]
 mod tests {
     use super::DynamicsNalgebra;
-    use crate::{Dynamics, Pose, Real};
+    use crate::{Dynamics, NotPositiveDefinite, Pose, Real};
     use nalgebra::{SMatrix, SVector};
 
     /// A "robot" whose every method returns its first argument's sum, in every element.
@@ -141,6 +145,24 @@ mod tests {
         fn joint_torques_for_base_wrench<T: Real>(&self, q: &[T; 2], _: &[T; 6]) -> [T; 2] {
             [sum(q); 2]
         }
+        fn mass_matrix_inverse<T: Real>(
+            &self,
+            q: &[T; 2],
+        ) -> Result<[[T; 2]; 2], NotPositiveDefinite> {
+            Ok([[sum(q); 2]; 2])
+        }
+        fn forward_dynamics<T: Real>(
+            &self,
+            q: &[T; 2],
+            _: &[T; 2],
+            _: &[T; 2],
+        ) -> Result<[T; 2], NotPositiveDefinite> {
+            if sum(q) > T::ZERO {
+                Ok([sum(q); 2])
+            } else {
+                Err(NotPositiveDefinite)
+            }
+        }
     }
 
     /// A quarter turn about z, placed at `(x, 0, 0)`.
@@ -178,6 +200,12 @@ mod tests {
         assert_eq!(Sums.hand_acceleration_bias_in_hand_na(&q, &z), s);
         assert_eq!(Sums.joint_torques_for_hand_wrench_na(&q, &w), v);
         assert_eq!(Sums.joint_torques_for_base_wrench_na(&q, &w), v);
+        assert_eq!(Sums.mass_matrix_inverse_na(&q), Ok(m));
+        assert_eq!(Sums.forward_dynamics_na(&q, &z, &z), Ok(v));
+        assert_eq!(
+            Sums.forward_dynamics_na(&-q, &z, &z),
+            Err(NotPositiveDefinite)
+        );
         let point = nalgebra::Point3::new(1.0, 0.0, 0.0);
         let moved = nalgebra::Point3::new(3.0, 1.0, 0.0);
         assert!((Sums.hand_pose_na(&q) * point - moved).norm() < 1e-15);

@@ -108,6 +108,8 @@ fn evaluate(eq: &Equations, params: &[f64], q: &[f64], qd: &[f64], qdd: &[f64]) 
             Var::Param(k) => params[usize::from(k)],
             // No wrench is given: the statics print the torques of a zero wrench.
             Var::Wrench(_) => 0.0,
+            // Nor torques: the forward dynamics print the motion with no torque applied.
+            Var::Tau(_) => 0.0,
         }
     };
     // The angle offsets depend on parameters only: a first pass finds them.

@@ -12,6 +12,7 @@ mod crba;
 mod energy;
 mod gravity;
 mod kinematics;
+mod ldlt;
 mod regroup;
 mod rnea;
 mod robot;
@@ -29,6 +30,7 @@ pub use kinematics::{
     acceleration_bias_in_base, in_hand_axes, jacobian_in_base, jacobian_in_hand, joint_torques,
     kinematics, Frame, Jacobian, Kinematics,
 };
+pub use ldlt::{ldlt, Ldlt};
 pub use rnea::rnea;
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;

@@ -7,7 +7,7 @@ use super::expr::Place;
 use super::names::Element;
 use super::{local, Body, Shape};
 use crate::method::{Argument, Method};
-use crate::symbolic::NodeId;
+use crate::symbolic::{Node, NodeId};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
@@ -75,11 +75,44 @@ impl Emitter<'_> {
                 let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
                 quote!([#(#matrices),*])
             }
+            Shape::Solution { pivots, vector } => {
+                let items: Vec<TokenStream> =
+                    vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                self.checked(pivots, &quote!([#(#items),*]))
+            }
+            Shape::Inverse { pivots, matrix } => {
+                let value = self.matrix(matrix);
+                self.checked(pivots, &value)
+            }
         };
         Body {
             tokens: quote!(#(#statements)* #result),
             ops: count(self.eq, &outputs),
         }
+    }
+
+    /// `Some(value)` where every pivot is positive (false for NaN), else `None`; the value is
+    /// computed either way, since floating-point division by zero does not trap. A constant
+    /// positive pivot needs no test.
+    fn checked(&mut self, pivots: &[NodeId], value: &TokenStream) -> TokenStream {
+        let graph = self.graph;
+        let positive = |id: NodeId| matches!(graph.node(id), Node::Const(c) if c.to_f64() > 0.0);
+        let tests: Vec<TokenStream> = pivots
+            .iter()
+            .filter(|&&id| !positive(id))
+            .map(|&id| {
+                let d = self.expr(id, Place::Top);
+                quote!(#d > T::ZERO)
+            })
+            .collect();
+        if tests.is_empty() {
+            return quote!(::core::option::Option::Some(#value));
+        }
+        quote!(if #(#tests)&&* {
+            ::core::option::Option::Some(#value)
+        } else {
+            ::core::option::Option::None
+        })
     }
 
     /// The array of arrays of matrix `m`'s rows.

@@ -30,8 +30,8 @@ pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
             Node::Var(Var::Param(_)) | Node::Const(_) => Depends::Constants,
             Node::Var(Var::Q(_)) => Depends::Configuration,
             Node::Var(Var::Qd(_)) => Depends::Velocity,
-            // A wrench is read by its method alone, as late as q̈.
-            Node::Var(Var::Qdd(_) | Var::Wrench(_)) => Depends::Acceleration,
+            // A wrench or τ is read by its method alone, as late as q̈.
+            Node::Var(Var::Qdd(_) | Var::Wrench(_) | Var::Tau(_)) => Depends::Acceleration,
             // A sine or cosine of `q_i`, or an operation: as late as its operands (a joint
             // angle's offset), `q` at least for the former.
             _ => {

@@ -148,6 +148,7 @@ impl<'a> Emitter<'a> {
             Var::CosQ(i) => format!("c{}", i + 1),
             Var::Param(k) => format!("p_{}", self.eq.fields[usize::from(k)]),
             Var::Wrench(k) => crate::symbolic::WRENCH[usize::from(k)].to_owned(),
+            Var::Tau(i) => format!("tau{}", i + 1),
         }))
     }
 

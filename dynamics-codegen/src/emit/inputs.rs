@@ -11,7 +11,7 @@ use quote::quote;
 impl Emitter<'_> {
     /// `let [qd1, _, qd3] = *qd_;`: the joint positions, velocities and accelerations the
     /// marked nodes read, named as the book numbers them, and the wrench's components
-    /// (`let [_, _, fz, ..] = *wrench_;`).
+    /// (`let [_, _, fz, ..] = *wrench_;`) and torques (`let [tau1, tau2] = *tau_;`).
     pub(super) fn joint_variables(&self) -> Vec<TokenStream> {
         let n = self.eq.dof;
         let mut used = [
@@ -19,6 +19,7 @@ impl Emitter<'_> {
             vec![false; n],
             vec![false; n],
             vec![false; 6],
+            vec![false; n],
         ];
         for (id, node) in self.graph.nodes() {
             if !self.needed[id.index()] {
@@ -29,10 +30,11 @@ impl Emitter<'_> {
                 Node::Var(Var::Qd(i)) => used[1][usize::from(i)] = true,
                 Node::Var(Var::Qdd(i)) => used[2][usize::from(i)] = true,
                 Node::Var(Var::Wrench(k)) => used[3][usize::from(k)] = true,
+                Node::Var(Var::Tau(i)) => used[4][usize::from(i)] = true,
                 _ => {}
             }
         }
-        ["q", "qd", "qdd", "wrench"]
+        ["q", "qd", "qdd", "wrench", "tau"]
             .iter()
             .zip(used)
             .filter(|(_, used)| used.contains(&true))

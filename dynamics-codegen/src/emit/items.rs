@@ -338,7 +338,8 @@ fn argument_local(argument: Argument) -> Ident {
 }
 
 /// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`;
-/// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`).
+/// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`,
+/// a result through the LDLᵀ of M as an `Option`).
 fn signature(
     method: Method,
     n: usize,
@@ -350,7 +351,7 @@ fn signature(
         let name = argument_local(a);
         match a {
             Argument::Wrench => quote!(#name: &[#t; 6]),
-            Argument::Q | Argument::Qd | Argument::Qdd => quote!(#name: &[#t; #n]),
+            Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => quote!(#name: &[#t; #n]),
         }
     });
     let result = match method.returns() {
@@ -363,6 +364,12 @@ fn signature(
         Returns::Poses => quote!([#krate::Pose<#t>; #n]),
         Returns::Jacobian => quote!([[#t; #n]; 6]),
         Returns::Spatial => quote!([#t; 6]),
+        Returns::Inverse if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
+        Returns::Inverse => {
+            quote!(::core::result::Result<[[#t; #n]; #n], #krate::NotPositiveDefinite>)
+        }
+        Returns::Solution if rows => quote!(::core::option::Option<[#t; #n]>),
+        Returns::Solution => quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>),
     };
     (quote!(#(#arguments),*), result)
 }
@@ -373,6 +380,9 @@ fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStrea
     match method.returns() {
         Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
         Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
+        Returns::Inverse | Returns::Solution => {
+            quote!(#call.ok_or(#krate::NotPositiveDefinite))
+        }
         _ => call,
     }
 }

@@ -83,6 +83,20 @@ pub enum Shape<'a> {
     Matrix(&'a [Vec<NodeId>]),
     /// Matrices, one after the other.
     Stack(&'a [Vec<Vec<NodeId>>]),
+    /// A vector through the LDLᵀ of M, `Some` where every pivot is positive.
+    Solution {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The vector.
+        vector: &'a [NodeId],
+    },
+    /// A matrix through the LDLᵀ of M, `Some` where every pivot is positive.
+    Inverse {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The matrix, rows first.
+        matrix: &'a [Vec<NodeId>],
+    },
 }
 
 impl Shape<'_> {
@@ -93,6 +107,11 @@ impl Shape<'_> {
             Shape::Vector(v) => v.to_vec(),
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
             Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
+            Shape::Solution { pivots, vector } => pivots.iter().chain(*vector).copied().collect(),
+            Shape::Inverse { pivots, matrix } => {
+                let elements = matrix.iter().flatten();
+                pivots.iter().chain(elements).copied().collect()
+            }
         }
     }
 }

@@ -59,12 +59,12 @@ impl Emitter<'_> {
         };
         match shape {
             Shape::Scalar(id) => add(*id, Index::Scalar),
-            Shape::Vector(v) => {
+            Shape::Vector(v) | Shape::Solution { vector: v, .. } => {
                 for (i, &id) in v.iter().enumerate() {
                     add(id, Index::Vector(i));
                 }
             }
-            Shape::Matrix(m) => {
+            Shape::Matrix(m) | Shape::Inverse { matrix: m, .. } => {
                 for (i, row) in m.iter().enumerate() {
                     for (j, &id) in row.iter().enumerate() {
                         add(id, Index::Matrix(i, j));

@@ -107,6 +107,7 @@ impl Sym {
             Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
             // Printed as the book names the wrench's components.
             Var::Wrench(k) => Sym::Param((*WRENCH.get(usize::from(k))?).to_owned()),
+            Var::Tau(i) => Sym::Param(format!("T{}", i + 1)),
         })
     }
 

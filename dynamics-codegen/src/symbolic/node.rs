@@ -38,6 +38,8 @@ pub enum Var {
     Param(u16),
     /// Component `k` of a wrench `[fx, fy, fz, mx, my, mz]` (an argument of the statics).
     Wrench(u16),
+    /// Joint torque or force `τ_i` (an argument of the forward dynamics).
+    Tau(u16),
 }
 
 /// The names of a wrench's components, [`Var::Wrench`]`(k)` for `k` from 0.

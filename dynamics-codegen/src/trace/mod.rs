@@ -12,7 +12,8 @@
 //! * the poses of the link frames and the hand, the hand's Jacobians, `J̇ q̇` and `Jᵀ F`
 //!   (`kinematics`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
-//!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`).
+//!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`);
+//! * the LDLᵀ of M, `M⁻¹` and `q̈ = M⁻¹(τ − C q̇ − g − f(q̇))` (`forward`).
 //!
 //! Where an output has several routes to the same value, each is traced and the one that
 //! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
@@ -21,6 +22,7 @@
 mod coriolis;
 mod cost;
 mod energy;
+mod forward;
 mod friction;
 mod gravity;
 mod joints;
@@ -33,6 +35,7 @@ use crate::algo::{JointKind, RobotScalars};
 use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
 use cost::matrix_ids;
+pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
 use std::cell::RefCell;
@@ -74,6 +77,8 @@ pub struct Equations {
     pub potential_energy: NodeId,
     /// Forward kinematics, Jacobians and statics.
     pub kinematics: KinematicEquations,
+    /// The LDLᵀ of M, `M⁻¹` and the forward dynamics.
+    pub forward: ForwardEquations,
 }
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
@@ -103,6 +108,8 @@ pub fn derive(robot: &Robot) -> Equations {
         let tau = newton_euler.tau.iter().zip(&friction);
         tau.map(|(&t, &f)| g.add(t, f)).collect()
     };
+    // After τ, so that the nodes of the other outputs are those they always had.
+    let forward = forward::forward(&graph, &mass, &newton_euler.bias, &friction);
     Equations {
         graph: graph.into_inner(),
         dof: robot.dof(),
@@ -120,5 +127,6 @@ pub fn derive(robot: &Robot) -> Equations {
         kinetic_energy,
         potential_energy,
         kinematics,
+        forward,
     }
 }
