@@ -114,10 +114,20 @@ pub struct Size {
     #[arg(long, value_name = "FILE", conflicts_with_all = ["from", "to"])]
     pub csv: Option<String>,
     /// The start pose of a quintic rest-to-rest move (with --to and --duration)
-    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true, requires = "to")]
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "to"
+    )]
     pub from: Option<Numbers>,
     /// The end pose of the move
-    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true, requires = "from")]
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "from"
+    )]
     pub to: Option<Numbers>,
     /// The duration of the move, s
     #[arg(long, value_name = "SECONDS", default_value = "2", value_parser = positive)]

@@ -98,7 +98,7 @@ impl Envelope {
     }
 
     /// The range of series `k` over every bucket.
-    fn range(&self, k: usize) -> (f64, f64) {
+    pub fn range(&self, k: usize) -> (f64, f64) {
         (0..self.columns())
             .map(|c| self.buckets[c * self.series + k])
             .filter(|b| b[0] <= b[1])
@@ -268,14 +268,20 @@ fn number(v: f64) -> String {
     if v != 0.0 && (v.abs() >= 1e5 || v.abs() < 1e-3) {
         format!("{v:.2e}")
     } else {
-        let magnitude = if v == 0.0 { 0 } else { v.abs().log10().floor() as i32 };
+        let magnitude = if v == 0.0 {
+            0
+        } else {
+            v.abs().log10().floor() as i32
+        };
         let digits = (3 - magnitude).clamp(0, 4);
         format!("{v:.*}", digits as usize)
     }
 }
 
 fn escape(text: &str) -> String {
-    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
 }
 
 #[cfg(test)]

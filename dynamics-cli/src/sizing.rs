@@ -221,11 +221,21 @@ mod tests {
         )
         .unwrap();
         let v = |x: &Value| -> Vec<f64> {
-            x.as_array().unwrap().iter().map(|y| y.as_f64().unwrap()).collect()
+            x.as_array()
+                .unwrap()
+                .iter()
+                .map(|y| y.as_f64().unwrap())
+                .collect()
         };
         let samples = data["samples"].as_array().unwrap();
         for s in samples {
-            let (q, qd, qdd, tau, g) = (v(&s["q"]), v(&s["qd"]), v(&s["qdd"]), v(&s["tau"]), v(&s["g"]));
+            let (q, qd, qdd, tau, g) = (
+                v(&s["q"]),
+                v(&s["qd"]),
+                v(&s["qdd"]),
+                v(&s["tau"]),
+                v(&s["g"]),
+            );
             let m: Vec<Vec<f64>> = s["M"].as_array().unwrap().iter().map(v).collect();
             let terms = numeric.inverse_dynamics_terms(&q, &qd, &qdd);
             for i in 0..6 {

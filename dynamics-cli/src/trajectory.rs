@@ -39,7 +39,11 @@ pub struct CsvError {
 impl std::fmt::Display for CsvError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match &self.column {
-            Some((c, name)) => write!(f, "line {}, column {c} ({name}): {}", self.line, self.message),
+            Some((c, name)) => write!(
+                f,
+                "line {}, column {c} ({name}): {}",
+                self.line, self.message
+            ),
             None => write!(f, "line {}: {}", self.line, self.message),
         }
     }
@@ -139,10 +143,7 @@ fn parse_row(
         return Err(CsvError {
             line,
             column: Some((1, "t".into())),
-            message: format!(
-                "time does not increase: {} after {before}",
-                row[0]
-            ),
+            message: format!("time does not increase: {} after {before}", row[0]),
         });
     }
     Ok(row)
@@ -283,7 +284,11 @@ impl Window {
         s.t = t[k];
         s.q.copy_from_slice(&self.rows[k][1..=n]);
         for j in 0..n {
-            let x = [self.rows[0][1 + j], self.rows[1][1 + j], self.rows[2][1 + j]];
+            let x = [
+                self.rows[0][1 + j],
+                self.rows[1][1 + j],
+                self.rows[2][1 + j],
+            ];
             match self.given {
                 Given::Positions => {
                     s.qd[j] = dot(first, x);
@@ -324,7 +329,13 @@ pub fn lagrange_derivatives(t: [f64; 3], x: f64) -> ([f64; 3], [f64; 3]) {
 
 /// The quintic rest-to-rest move from `from` to `to` in `duration` seconds, `samples` samples
 /// evenly spaced (both ends included), each passed to `each`.
-pub fn quintic(from: &[f64], to: &[f64], duration: f64, samples: usize, mut each: impl FnMut(&Sample)) {
+pub fn quintic(
+    from: &[f64],
+    to: &[f64],
+    duration: f64,
+    samples: usize,
+    mut each: impl FnMut(&Sample),
+) {
     let n = from.len();
     let mut s = Sample {
         t: 0.0,
@@ -390,10 +401,25 @@ mod tests {
     #[test]
     fn errors_name_the_line_and_column() {
         let cases = [
-            ("t,q1\n0,1\n1,2,3\n", 3, None, "3 values; the header has 2 columns"),
+            (
+                "t,q1\n0,1\n1,2,3\n",
+                3,
+                None,
+                "3 values; the header has 2 columns",
+            ),
             ("t,q1\n0,1\n1,x\n", 3, Some(2), "`x` is not a number"),
-            ("t,q1\n0,1\n1,NaN\n", 3, Some(2), "`NaN` is not a finite number"),
-            ("t,q1\n0,1\n0,2\n", 3, Some(1), "time does not increase: 0 after 0"),
+            (
+                "t,q1\n0,1\n1,NaN\n",
+                3,
+                Some(2),
+                "`NaN` is not a finite number",
+            ),
+            (
+                "t,q1\n0,1\n0,2\n",
+                3,
+                Some(1),
+                "time does not increase: 0 after 0",
+            ),
             ("t,q1,q2\n", 1, None, "the header has 3 columns"),
             ("t,x1\n", 1, Some(2), "expected the header name `q1`"),
             ("t,q1\n0,1\n1,2\n", 3, None, "2 samples"),
@@ -411,7 +437,10 @@ mod tests {
         let mut out = Vec::new();
         quintic(&[0.0, 1.0], &[1.0, -1.0], 2.0, 101, |s| out.push(s.clone()));
         let (first, last) = (&out[0], &out[100]);
-        assert_eq!((first.q.clone(), last.q.clone()), (vec![0.0, 1.0], vec![1.0, -1.0]));
+        assert_eq!(
+            (first.q.clone(), last.q.clone()),
+            (vec![0.0, 1.0], vec![1.0, -1.0])
+        );
         assert_eq!(last.t, 2.0);
         for s in [first, last] {
             assert!(s.qd.iter().chain(&s.qdd).all(|x| x.abs() < 1e-12));

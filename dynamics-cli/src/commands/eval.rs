@@ -58,9 +58,10 @@ pub(super) fn joints(
         Some(Numbers(v)) => Err(usage(
             command,
             &format!(
-            "{option}: {} values given, the robot has {n} joints",
-            v.len()
-        ))),
+                "{option}: {} values given, the robot has {n} joints",
+                v.len()
+            ),
+        )),
     }
 }
 
@@ -74,10 +75,8 @@ pub(super) fn parameters(
     if let Some(s) = sets.iter().find(|s| !fields.contains(&s.name)) {
         return Err(usage(
             command,
-            &format!(
-            "--set: the robot has no parameter `{}`",
-            s.name
-        )));
+            &format!("--set: the robot has no parameter `{}`", s.name),
+        ));
     }
     fields
         .iter()
@@ -86,10 +85,12 @@ pub(super) fn parameters(
                 [s] => Ok(s.value),
                 [] => Err(usage(
                     command,
-                    &format!(
-                    "the robot has a parameter `{f}`: give --set {f}=VALUE"
-                ))),
-                _ => Err(usage(command, &format!("--set: `{f}` given more than once"))),
+                    &format!("the robot has a parameter `{f}`: give --set {f}=VALUE"),
+                )),
+                _ => Err(usage(
+                    command,
+                    &format!("--set: `{f}` given more than once"),
+                )),
             },
         )
         .collect()

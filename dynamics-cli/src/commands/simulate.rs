@@ -56,7 +56,12 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
         values.extend([kinetic + potential, kinetic, potential]);
         envelope.push(t, &values);
         energies.push(kinetic + potential);
-        let row: Vec<String> = q.iter().chain(&qd).chain(&qdd).map(f64::to_string).collect();
+        let row: Vec<String> = q
+            .iter()
+            .chain(&qd)
+            .chain(&qdd)
+            .map(f64::to_string)
+            .collect();
         let _ = writeln!(csv, "{t},{}", row.join(","));
         if step < steps {
             (q, qd) = rk4(&numeric, &q, &qd, &tau, h).map_err(|e| at_time(t, &e))?;
@@ -142,7 +147,11 @@ fn figure<'e>(name: &str, n: usize, envelope: &'e Envelope) -> Figure<'e> {
             series: j,
         })
         .collect();
-    let energy = [("total", "#000000"), ("kinetic", "#d62728"), ("potential", "#2ca02c")];
+    let energy = [
+        ("total", "#000000"),
+        ("kinetic", "#d62728"),
+        ("potential", "#2ca02c"),
+    ];
     let mut legend: Vec<(String, &'static str)> =
         (0..n).map(|j| (format!("q{}", j + 1), color(j))).collect();
     legend.extend(energy.iter().map(|(l, c)| (format!("{l} energy"), *c)));

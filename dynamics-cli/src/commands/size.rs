@@ -99,9 +99,7 @@ fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> St
     let _ = writeln!(
         out,
         "{name}: {} samples, t = {} to {} s ({source})",
-        sizer.samples,
-        sizer.start,
-        sizer.end
+        sizer.samples, sizer.start, sizer.end
     );
     let _ = writeln!(
         out,
@@ -119,7 +117,7 @@ fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> St
         let shares: Vec<String> = r
             .terms_at_peak
             .iter()
-            .map(|x| format!("{:>9}", share(*x, r.peak)))
+            .map(|x| format!("{:>9}", share(*x, &r.terms_at_peak)))
             .collect();
         let _ = writeln!(
             out,
@@ -136,8 +134,11 @@ fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> St
     out
 }
 
-fn share(term: f64, total: f64) -> String {
-    if total == 0.0 {
+/// `term` as a percentage of the sum of `terms`, unless that sum is only round-off.
+fn share(term: f64, terms: &[f64; 5]) -> String {
+    let total: f64 = terms.iter().sum();
+    let scale: f64 = terms.iter().map(|x| x.abs()).sum();
+    if total.abs() <= 1e-9 * scale || total == 0.0 {
         "-".into()
     } else {
         format!("{:.1} %", unsigned_zero(100.0 * term / total))
