@@ -17,8 +17,8 @@ pub struct Envelope {
     start: f64,
     end: f64,
     width: f64,
-    /// `[min, max]` per series, bucket after bucket.
-    buckets: Vec<[f64; 2]>,
+    /// `[min, max, first, last]` per series, bucket after bucket.
+    buckets: Vec<[f64; 4]>,
 }
 
 impl Envelope {
@@ -48,12 +48,16 @@ impl Envelope {
         }
         let first = index * self.series;
         if self.buckets.len() < first + self.series {
-            self.buckets
-                .resize(first + self.series, [f64::INFINITY, f64::NEG_INFINITY]);
+            self.buckets.resize(
+                first + self.series,
+                [f64::INFINITY, f64::NEG_INFINITY, f64::NAN, f64::NAN],
+            );
         }
         for (b, &v) in self.buckets[first..].iter_mut().zip(values) {
-            b[0] = b[0].min(v);
-            b[1] = b[1].max(v);
+            if b[2].is_nan() {
+                b[2] = v;
+            }
+            *b = [b[0].min(v), b[1].max(v), b[2], v];
         }
     }
 
@@ -78,7 +82,13 @@ impl Envelope {
                     .get((2 * pair + 1) * s + k)
                     .copied()
                     .unwrap_or(a);
-                merged.push([a[0].min(b[0]), a[1].max(b[1])]);
+                merged.push(if b[2].is_nan() {
+                    a
+                } else if a[2].is_nan() {
+                    b
+                } else {
+                    [a[0].min(b[0]), a[1].max(b[1]), a[2], b[3]]
+                });
             }
         }
         self.buckets = merged;
@@ -113,6 +123,7 @@ pub struct Line {
     pub label: String,
     pub color: &'static str,
     pub series: usize,
+    pub bold: bool,
 }
 
 /// One plot: a title (with the unit) and its lines.
@@ -234,27 +245,39 @@ fn draw_panel(
                 "<text x=\"{:.1}\" y=\"{}\" text-anchor=\"middle\">{} s</text>",
                 px(t),
                 y + h + 14.0,
-                number(t)
+                short(&number(t))
             )?;
         }
     }
     for line in &panel.lines {
         let mut points = String::new();
         for c in 0..env.columns() {
-            let [min, max] = env.buckets[c * env.series + line.series];
+            let [min, max, first, last] = env.buckets[c * env.series + line.series];
             if min > max {
                 continue;
             }
             let x = px(env.time(c));
-            let _ = write!(points, "{x:.1},{:.1} ", py(min));
-            if py(min) - py(max) >= 0.5 {
-                let _ = write!(points, "{x:.1},{:.1} ", py(max));
+            // The extremes in the order the series passes them, so a monotonic stretch draws
+            // no zigzag; points of a column less than half a pixel apart are one.
+            let extremes = if first <= last {
+                [min, max]
+            } else {
+                [max, min]
+            };
+            let mut previous = f64::NAN;
+            for v in [first, extremes[0], extremes[1], last] {
+                let y = py(v);
+                if (y - previous).abs() >= 0.5 || previous.is_nan() {
+                    let _ = write!(points, "{x:.1},{y:.1} ");
+                    previous = y;
+                }
             }
         }
         writeln!(
             out,
-            "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.3\" points=\"{}\"><title>{}</title></polyline>",
+            "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" points=\"{}\"><title>{}</title></polyline>",
             line.color,
+            if line.bold { 1.8 } else { 1.2 },
             points.trim_end(),
             escape(&line.label)
         )?;
@@ -275,6 +298,15 @@ fn number(v: f64) -> String {
         };
         let digits = (3 - magnitude).clamp(0, 4);
         format!("{v:.*}", digits as usize)
+    }
+}
+
+/// `0.7500` as `0.75`.
+fn short(number: &str) -> &str {
+    if number.contains('.') && !number.contains('e') {
+        number.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        number
     }
 }
 
@@ -312,6 +344,7 @@ mod tests {
                     label: "a".into(),
                     color: "red",
                     series: 0,
+                    bold: false,
                 }],
             }]],
             widths: vec![400.0],
@@ -327,5 +360,9 @@ mod tests {
         assert_eq!(number(-0.5), "-0.5000");
         assert_eq!(number(0.0), "0.000");
         assert_eq!(number(2.5e6), "2.50e6");
+        assert_eq!(
+            [short("0.7500"), short("1000"), short("0.000")],
+            ["0.75", "1000", "0"]
+        );
     }
 }

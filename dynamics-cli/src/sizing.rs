@@ -156,12 +156,14 @@ pub fn figure<'e>(title: String, kinds: &[JointKind], envelope: &'e Envelope) ->
                     label: (*name).to_string(),
                     color,
                     series: base + 1 + k,
+                    bold: false,
                 })
                 .collect();
             lines.push(Line {
                 label: "τ".into(),
                 color: "#000000",
                 series: base,
+                bold: true,
             });
             vec![
                 Panel {
@@ -174,6 +176,7 @@ pub fn figure<'e>(title: String, kinds: &[JointKind], envelope: &'e Envelope) ->
                         label: "power".into(),
                         color: "#17becf",
                         series: base + 6,
+                        bold: false,
                     }],
                 },
             ]

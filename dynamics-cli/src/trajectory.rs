@@ -420,14 +420,14 @@ mod tests {
                 Some(1),
                 "time does not increase: 0 after 0",
             ),
-            ("t,q1,q2\n", 1, None, "the header has 3 columns"),
+            ("t,q1,q2,q3,q4\n", 1, None, "the header has 5 columns"),
             ("t,x1\n", 1, Some(2), "expected the header name `q1`"),
             ("t,q1\n0,1\n1,2\n", 3, None, "2 samples"),
         ];
         for (text, line, column, message) in cases {
             let e = read(text, 1).unwrap_err();
             assert_eq!(e.line, line, "{text}");
-            assert_eq!(e.column.map(|c| c.0), column, "{text}");
+            assert_eq!(e.column.as_ref().map(|c| c.0), column, "{text}");
             assert!(e.message.starts_with(message), "{text}: {e}");
         }
     }

@@ -145,6 +145,7 @@ fn figure<'e>(name: &str, n: usize, envelope: &'e Envelope) -> Figure<'e> {
             label: format!("q{}", j + 1),
             color: color(j),
             series: j,
+            bold: false,
         })
         .collect();
     let energy = [
@@ -172,6 +173,7 @@ fn figure<'e>(name: &str, n: usize, envelope: &'e Envelope) -> Figure<'e> {
                         label: (*label).to_string(),
                         color,
                         series: n + k,
+                        bold: k == 0,
                     })
                     .collect(),
             }],
