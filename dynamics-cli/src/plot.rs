@@ -286,7 +286,7 @@ fn draw_panel(
 }
 
 /// Four significant digits, without exponent for everyday magnitudes.
-fn number(v: f64) -> String {
+pub fn number(v: f64) -> String {
     let v = if v.abs() < 1e-12 { 0.0 } else { v };
     if v != 0.0 && (v.abs() >= 1e5 || v.abs() < 1e-3) {
         format!("{v:.2e}")

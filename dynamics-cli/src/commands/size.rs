@@ -121,13 +121,13 @@ fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> St
             .collect();
         let _ = writeln!(
             out,
-            "{:>5} {:>9.3} {unit:<3} {:>9.4} {:>9.3} {unit:<3} {:>10.3} W {:>9.4} | {}",
+            "{:>5} {:>9} {unit:<3} {:>9} {:>9} {unit:<3} {:>10} W {:>9} | {}",
             j + 1,
-            unsigned_zero(r.peak),
-            r.peak_time,
-            r.rms,
-            unsigned_zero(r.peak_power),
-            r.peak_power_time,
+            plot::number(r.peak),
+            plot::number(r.peak_time),
+            plot::number(r.rms),
+            plot::number(r.peak_power),
+            plot::number(r.peak_power_time),
             shares.join(" ")
         );
     }
