@@ -94,7 +94,11 @@ fn acceleration(numeric: &Numeric, q: &[f64], qd: &[f64], tau: &[f64]) -> Result
     let bias = numeric.inverse_dynamics(q, qd, &zeros);
     let rhs: Vec<f64> = tau.iter().zip(&bias).map(|(t, b)| t - b).collect();
     let factors = ldlt(&numeric.mass_matrix(q), |x| 1.0 / x);
-    if let Some(k) = factors.pivots.iter().position(|&d| !(d > 0.0)) {
+    if let Some(k) = factors
+        .pivots
+        .iter()
+        .position(|d| d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater))
+    {
         return Err(format!(
             "M(q) is not positive definite (pivot {} of its LDLᵀ is {}) at q = {q:?}",
             k + 1,
