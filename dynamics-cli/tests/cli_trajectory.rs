@@ -20,12 +20,9 @@ fn scratch(name: &str) -> PathBuf {
     dir.join(name)
 }
 
-fn pendulum(friction: bool) -> String {
-    let path = scratch(if friction {
-        "pendulum_b.toml"
-    } else {
-        "pendulum.toml"
-    });
+/// The pendulum's description, in a file of the calling test's own (tests run in parallel).
+fn pendulum(test: &str, friction: bool) -> String {
+    let path = scratch(&format!("{test}.toml"));
     let extra = if friction {
         format!("actuator_inertia = {IA}\nfriction_viscous = {B}\n")
     } else {
@@ -65,7 +62,7 @@ fn a_pendulum_held_horizontal_needs_m_g_l() {
     std::fs::write(&csv, "t,q1,qd1,qdd1\n0,0,0,0\n1,0,0,0\n").unwrap();
     let report = json(&dynamics(&[
         "size",
-        &pendulum(false),
+        &pendulum("static", false),
         "--csv",
         csv.to_str().unwrap(),
         "--json",
@@ -117,7 +114,7 @@ fn expected(to: f64, duration: f64, samples: usize) -> (f64, f64, f64, [f64; 4])
 fn the_quintic_move_of_a_pendulum_with_friction_and_actuator_inertia() {
     let out = dynamics(&[
         "size",
-        &pendulum(true),
+        &pendulum("quintic", true),
         "--from",
         "0",
         "--to",
@@ -164,7 +161,7 @@ fn positions_only_are_differentiated_and_long_files_report_progress() {
     std::fs::write(&csv, text).unwrap();
     let out = dynamics(&[
         "size",
-        &pendulum(true),
+        &pendulum("positions", true),
         "--csv",
         csv.to_str().unwrap(),
         "--json",
@@ -188,7 +185,7 @@ fn the_svg_is_written_and_small() {
     let svg = scratch("pendulum.svg");
     let out = dynamics(&[
         "size",
-        &pendulum(true),
+        &pendulum("svg", true),
         "--from",
         "0",
         "--to",
@@ -218,7 +215,7 @@ fn the_svg_is_written_and_small() {
 
 #[test]
 fn csv_errors_name_the_line_and_column() {
-    let robot = pendulum(false);
+    let robot = pendulum("errors", false);
     let cases = [
         (
             "t,q1\n0,0\n1,0,2\n",
@@ -262,7 +259,7 @@ fn csv_errors_name_the_line_and_column() {
 
 #[test]
 fn usage_errors() {
-    let robot = pendulum(false);
+    let robot = pendulum("usage", false);
     for args in [
         vec!["size", &robot],
         vec!["size", &robot, "--from", "0,1", "--to", "1,1"],
@@ -301,7 +298,7 @@ fn a_simulated_pendulum_keeps_its_energy_and_swings_with_its_period() {
     let csv = scratch("swing.csv");
     let out = dynamics(&[
         "simulate",
-        &pendulum(false),
+        &pendulum("swing", false),
         "--q0",
         &q0.to_string(),
         "--duration",
