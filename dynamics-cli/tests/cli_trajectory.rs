@@ -341,3 +341,52 @@ fn a_simulated_pendulum_keeps_its_energy_and_swings_with_its_period() {
         );
     }
 }
+
+#[test]
+fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
+    // E(0) − E(T) = ∫ b q̇² dt (actuator inertia in the kinetic energy, no torque applied).
+    let csv = scratch("damped.csv");
+    let out = dynamics(&[
+        "simulate",
+        &pendulum("damped", true),
+        "--q0",
+        "0.3",
+        "--duration",
+        "1.5",
+        "--dt",
+        "0.0005",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary = String::from_utf8(out.stdout).unwrap();
+    let energy = |after: &str| -> f64 {
+        let rest = summary.split(after).nth(1).expect(&summary);
+        rest.trim_start()
+            .split(' ')
+            .next()
+            .unwrap()
+            .parse()
+            .expect(&summary)
+    };
+    let (start, end) = (energy("total energy"), energy("J at the start,"));
+    let rows: Vec<Vec<f64>> = std::fs::read_to_string(&csv)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let dissipated: f64 = rows
+        .windows(2)
+        .map(|w| 0.5 * B * (w[0][2] * w[0][2] + w[1][2] * w[1][2]) * (w[1][0] - w[0][0]))
+        .sum();
+    assert!(dissipated > 0.1, "{dissipated}");
+    assert!(
+        (start - end - dissipated).abs() < 1e-5,
+        "{summary}: {start} − {end} vs {dissipated}"
+    );
+}
