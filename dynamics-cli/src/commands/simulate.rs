@@ -15,7 +15,7 @@ use crate::args::Simulate;
 use crate::plot::{Envelope, Figure, Line, Panel};
 use dynamics_codegen::algo::ldlt;
 use dynamics_codegen::numeric::Numeric;
-use std::fmt::Write as _;
+use std::io::{BufWriter, Write};
 
 /// The most steps a simulation takes.
 const MAX_STEPS: f64 = 1e7;
@@ -40,14 +40,22 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
         ));
     }
     let (steps, h) = (steps as usize, args.duration / steps);
-    let mut csv = String::new();
+    let failed = |e: std::io::Error| {
+        Failure::File(format!("{}: {e}", args.csv.as_deref().unwrap_or("stdout")))
+    };
+    // Rows are written as they are computed: nothing grows with the duration but the plot's
+    // bounded envelope.
+    let mut out: Box<dyn Write> = match &args.csv {
+        Some(path) => Box::new(BufWriter::new(std::fs::File::create(path).map_err(failed)?)),
+        None => Box::new(BufWriter::new(std::io::stdout().lock())),
+    };
     let header: Vec<String> = ["q", "qd", "qdd"]
         .iter()
         .flat_map(|g| (1..=n).map(move |i| format!("{g}{i}")))
         .collect();
-    let _ = writeln!(csv, "t,{}", header.join(","));
+    writeln!(out, "t,{}", header.join(",")).map_err(failed)?;
     let mut envelope = Envelope::new(n + 3);
-    let mut energies = Vec::new();
+    let mut energy = (0.0, 0.0);
     for step in 0..=steps {
         let t = step as f64 * h;
         let qdd = acceleration(&numeric, &q, &qd, &tau).map_err(|e| at_time(t, &e))?;
@@ -55,26 +63,29 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
         let mut values = q.clone();
         values.extend([kinetic + potential, kinetic, potential]);
         envelope.push(t, &values);
-        energies.push(kinetic + potential);
+        if step == 0 {
+            energy.0 = kinetic + potential;
+        }
+        energy.1 = kinetic + potential;
         let row: Vec<String> = q
             .iter()
             .chain(&qd)
             .chain(&qdd)
             .map(f64::to_string)
             .collect();
-        let _ = writeln!(csv, "{t},{}", row.join(","));
+        writeln!(out, "{t},{}", row.join(",")).map_err(failed)?;
         if step < steps {
             (q, qd) = rk4(&numeric, &q, &qd, &tau, h).map_err(|e| at_time(t, &e))?;
         }
     }
+    out.flush().map_err(failed)?;
     if let Some(path) = &args.svg {
         write_svg(path, &figure(&robot.name, n, &envelope))?;
     }
-    let Some(path) = &args.csv else {
-        return Ok(csv);
-    };
-    std::fs::write(path, csv).map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    let (first, last) = (energies[0], energies[energies.len() - 1]);
+    if args.csv.is_none() {
+        return Ok(String::new());
+    }
+    let (first, last) = energy;
     Ok(format!(
         "{}: {steps} RK4 steps of {h} s to t = {} s; total energy {first:.6} J at the start, \
          {last:.6} J at the end (change {:.3e} J)\n",
