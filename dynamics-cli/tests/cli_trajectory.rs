@@ -289,72 +289,25 @@ fn elliptic_k(k: f64) -> f64 {
     std::f64::consts::PI / (2.0 * a)
 }
 
-#[test]
-fn a_simulated_pendulum_keeps_its_energy_and_swings_with_its_period() {
-    // Released at rest 1 rad from hanging (q = −π/2): the period is 4 √(l/g) K(sin ½).
-    let amplitude: f64 = 1.0;
-    let period = 4.0 * (L / G).sqrt() * elliptic_k((amplitude / 2.0).sin());
-    let q0 = -std::f64::consts::FRAC_PI_2 + amplitude;
-    let csv = scratch("swing.csv");
+/// `simulate` on the pendulum from rest at `q0`: the summary's energy at the start, at the end
+/// and its change, and the CSV rows (t, q, q̇, q̈).
+fn simulate(
+    test: &str,
+    friction: bool,
+    q0: f64,
+    duration: &str,
+    dt: &str,
+) -> ([f64; 3], Vec<Vec<f64>>) {
+    let csv = scratch(&format!("{test}.csv"));
     let out = dynamics(&[
         "simulate",
-        &pendulum("swing", false),
+        &pendulum(test, friction),
         "--q0",
         &q0.to_string(),
         "--duration",
-        "3",
+        duration,
         "--dt",
-        "0.001",
-        "--csv",
-        csv.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let summary = String::from_utf8(out.stdout).unwrap();
-    let change: f64 = summary
-        .rsplit("(change ")
-        .next()
-        .and_then(|s| s.split(' ').next())
-        .and_then(|s| s.parse().ok())
-        .expect(&summary);
-    assert!(change.abs() < 1e-8, "{summary}");
-    // Turning points: q̇ changes sign; interpolated linearly between the samples.
-    let rows: Vec<Vec<f64>> = std::fs::read_to_string(&csv)
-        .unwrap()
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-        .collect();
-    let turns: Vec<f64> = rows
-        .windows(2)
-        .filter(|w| w[0][2] * w[1][2] < 0.0)
-        .map(|w| w[0][0] + (w[1][0] - w[0][0]) * w[0][2] / (w[0][2] - w[1][2]))
-        .collect();
-    assert!(turns.len() >= 3, "{turns:?}");
-    for pair in turns.windows(2) {
-        assert!(
-            close(pair[1] - pair[0], period / 2.0, 1e-5),
-            "{turns:?} vs {period}"
-        );
-    }
-}
-
-#[test]
-fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
-    // E(0) − E(T) = ∫ b q̇² dt (actuator inertia in the kinetic energy, no torque applied).
-    let csv = scratch("damped.csv");
-    let out = dynamics(&[
-        "simulate",
-        &pendulum("damped", true),
-        "--q0",
-        "0.3",
-        "--duration",
-        "1.5",
-        "--dt",
-        "0.0005",
+        dt,
         "--csv",
         csv.to_str().unwrap(),
     ]);
@@ -373,13 +326,46 @@ fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
             .parse()
             .expect(&summary)
     };
-    let (start, end) = (energy("total energy"), energy("J at the start,"));
-    let rows: Vec<Vec<f64>> = std::fs::read_to_string(&csv)
+    let rows = std::fs::read_to_string(&csv)
         .unwrap()
         .lines()
         .skip(1)
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
+    let change = energy("(change");
+    (
+        [energy("total energy"), energy("J at the start,"), change],
+        rows,
+    )
+}
+
+#[test]
+fn a_simulated_pendulum_keeps_its_energy_and_swings_with_its_period() {
+    // Released at rest 1 rad from hanging (q = −π/2): the period is 4 √(l/g) K(sin ½).
+    let amplitude: f64 = 1.0;
+    let period = 4.0 * (L / G).sqrt() * elliptic_k((amplitude / 2.0).sin());
+    let q0 = -std::f64::consts::FRAC_PI_2 + amplitude;
+    let ([.., change], rows) = simulate("swing", false, q0, "3", "0.001");
+    assert!(change.abs() < 1e-8, "{change}");
+    // Turning points: q̇ changes sign; interpolated linearly between the samples.
+    let turns: Vec<f64> = rows
+        .windows(2)
+        .filter(|w| w[0][2] * w[1][2] < 0.0)
+        .map(|w| w[0][0] + (w[1][0] - w[0][0]) * w[0][2] / (w[0][2] - w[1][2]))
+        .collect();
+    assert!(turns.len() >= 3, "{turns:?}");
+    for pair in turns.windows(2) {
+        assert!(
+            close(pair[1] - pair[0], period / 2.0, 1e-5),
+            "{turns:?} vs {period}"
+        );
+    }
+}
+
+#[test]
+fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
+    // E(0) − E(T) = ∫ b q̇² dt (actuator inertia in the kinetic energy, no torque applied).
+    let ([start, end, _], rows) = simulate("damped", true, 0.3, "1.5", "0.0005");
     let dissipated: f64 = rows
         .windows(2)
         .map(|w| 0.5 * B * (w[0][2] * w[0][2] + w[1][2] * w[1][2]) * (w[1][0] - w[0][0]))
@@ -387,6 +373,6 @@ fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
     assert!(dissipated > 0.1, "{dissipated}");
     assert!(
         (start - end - dissipated).abs() < 1e-5,
-        "{summary}: {start} − {end} vs {dissipated}"
+        "{start} − {end} vs {dissipated}"
     );
 }
