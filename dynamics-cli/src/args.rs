@@ -29,6 +29,11 @@ pub enum Command {
     Stats(RobotFile),
     /// Print τ, M, C and g at one state
     Eval(Eval),
+    /// Size the actuators along a trajectory: peak and RMS torque, peak power, and the terms of
+    /// the torque at its peak, per joint
+    Size(Size),
+    /// Integrate the forward dynamics (RK4) from an initial state, under constant torques
+    Simulate(Simulate),
 }
 
 #[derive(Args, Debug)]
@@ -96,6 +101,89 @@ pub struct Eval {
     /// Print JSON: {"tau": [..], "M": [[..]..], "C": [[..]..], "g": [..]}
     #[arg(long)]
     pub json: bool,
+}
+
+#[derive(Args, Debug)]
+#[command(group(clap::ArgGroup::new("trajectory").required(true).args(["csv", "from"])))]
+pub struct Size {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// The trajectory: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
+    /// `qdd1,..,qddn`), then one sample per line, t strictly increasing (s; rad or m). Missing
+    /// q̇ and q̈ come from central differences on the (uneven) time steps
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["from", "to"])]
+    pub csv: Option<String>,
+    /// The start pose of a quintic rest-to-rest move (with --to and --duration)
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "to"
+    )]
+    pub from: Option<Numbers>,
+    /// The end pose of the move
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "from"
+    )]
+    pub to: Option<Numbers>,
+    /// The duration of the move, s
+    #[arg(long, value_name = "SECONDS", default_value = "2", value_parser = positive)]
+    pub duration: f64,
+    /// The samples of the move, both ends included
+    #[arg(long, value_name = "N", default_value = "1001", value_parser = clap::value_parser!(u32).range(2..))]
+    pub samples: u32,
+    /// The value of a parameter of the robot; once for each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write a plot of τ per joint, split into its terms, and of the power, as SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<String>,
+    /// Print JSON instead of a table
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct Simulate {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// Initial joint positions [default: 0]
+    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
+    pub q0: Option<Numbers>,
+    /// Initial joint velocities [default: 0]
+    #[arg(long, value_name = "QD1,QD2,..", allow_hyphen_values = true)]
+    pub qd0: Option<Numbers>,
+    /// Constant joint torques (N m) or forces (N) [default: 0]
+    #[arg(long, value_name = "TAU1,TAU2,..", allow_hyphen_values = true)]
+    pub tau: Option<Numbers>,
+    /// The simulated time, s
+    #[arg(long, value_name = "SECONDS", default_value = "2", value_parser = positive)]
+    pub duration: f64,
+    /// The RK4 step, s
+    #[arg(long, value_name = "SECONDS", default_value = "0.001", value_parser = positive)]
+    pub dt: f64,
+    /// The value of a parameter of the robot; once for each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write the trajectory (t,q..,qd..,qdd.., a valid `size --csv` input) to FILE and print
+    /// a summary [default: the trajectory on stdout]
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<String>,
+    /// Write a plot of the joint positions and of the energy, as SVG
+    #[arg(long, value_name = "FILE")]
+    pub svg: Option<String>,
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    let x = finite(text)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("`{text}` is not a positive number"))
+    }
 }
 
 /// A comma-separated list of finite numbers: `1,2.5,-3`.

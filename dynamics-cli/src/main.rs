@@ -6,7 +6,11 @@
 //! * `emit ROBOT`: a standalone Rust module with the code the derive generates;
 //! * `stats ROBOT`: expansion time, operation counts, longest chain of operations and code
 //!   size per method, and the cost of the readable equations the derive adds;
-//! * `eval ROBOT --q .. [--qd ..] [--qdd ..] [--set NAME=VALUE].. [--json]`: τ, M, C and g.
+//! * `eval ROBOT --q .. [--qd ..] [--qdd ..] [--set NAME=VALUE].. [--json]`: τ, M, C and g;
+//! * `size ROBOT (--csv FILE | --from .. --to ..) [--svg FILE] [--json]`: actuator sizing
+//!   along a trajectory: peak and RMS torque, peak power, the terms of τ at its peak;
+//! * `simulate ROBOT [--q0 ..] [--qd0 ..] [--tau ..] [--csv FILE] [--svg FILE]`: the forward
+//!   dynamics integrated by RK4.
 //!
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors are
 //! clap's (exit code 2). `dynamics help COMMAND` or `dynamics COMMAND --help` for the options.
@@ -14,6 +18,9 @@
 mod args;
 mod commands;
 mod format;
+mod plot;
+mod sizing;
+mod trajectory;
 
 use clap::Parser;
 use commands::Failure;

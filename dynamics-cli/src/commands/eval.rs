@@ -13,10 +13,10 @@ pub fn run(args: &Eval) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let eq = derive(&robot);
     let n = eq.dof;
-    let q = joints("--q", Some(&args.q), n)?;
-    let qd = joints("--qd", args.qd.as_ref(), n)?;
-    let qdd = joints("--qdd", args.qdd.as_ref(), n)?;
-    let params = parameters(&eq, &args.set)?;
+    let q = joints("eval", "--q", Some(&args.q), n)?;
+    let qd = joints("eval", "--qd", args.qd.as_ref(), n)?;
+    let qdd = joints("eval", "--qdd", args.qdd.as_ref(), n)?;
+    let params = parameters("eval", &eq.fields, &args.set)?;
     let values = evaluate(&eq, &params, &q, &qd, &qdd);
     let vector = |ids: &[NodeId]| -> Vec<f64> { ids.iter().map(|id| values[id.index()]).collect() };
     let matrix =
@@ -34,11 +34,11 @@ pub fn run(args: &Eval) -> Result<String, Failure> {
     })
 }
 
-/// A usage error found once the robot is known, reported as clap reports its own.
-fn usage(message: &str) -> Failure {
+/// A usage error of `command` found once the robot is known, reported as clap reports its own.
+pub(super) fn usage(command: &str, message: &str) -> Failure {
     let mut cli = Cli::command();
     cli.build();
-    let error = match cli.find_subcommand_mut("eval") {
+    let error = match cli.find_subcommand_mut(command) {
         Some(eval) => eval.error(ErrorKind::ValueValidation, message),
         None => cli.error(ErrorKind::ValueValidation, message),
     };
@@ -46,35 +46,51 @@ fn usage(message: &str) -> Failure {
 }
 
 /// One value per joint, zeros when the option is not given.
-fn joints(option: &str, given: Option<&Numbers>, n: usize) -> Result<Vec<f64>, Failure> {
+pub(super) fn joints(
+    command: &str,
+    option: &str,
+    given: Option<&Numbers>,
+    n: usize,
+) -> Result<Vec<f64>, Failure> {
     match given {
         None => Ok(vec![0.0; n]),
         Some(Numbers(v)) if v.len() == n => Ok(v.clone()),
-        Some(Numbers(v)) => Err(usage(&format!(
-            "{option}: {} values given, the robot has {n} joints",
-            v.len()
-        ))),
+        Some(Numbers(v)) => Err(usage(
+            command,
+            &format!(
+                "{option}: {} values given, the robot has {n} joints",
+                v.len()
+            ),
+        )),
     }
 }
 
 /// The value of each of the robot's parameters, in the order of its fields: each set exactly
 /// once, none unknown.
-fn parameters(eq: &Equations, sets: &[Setting]) -> Result<Vec<f64>, Failure> {
-    if let Some(s) = sets.iter().find(|s| !eq.fields.contains(&s.name)) {
-        return Err(usage(&format!(
-            "--set: the robot has no parameter `{}`",
-            s.name
-        )));
+pub(super) fn parameters(
+    command: &str,
+    fields: &[String],
+    sets: &[Setting],
+) -> Result<Vec<f64>, Failure> {
+    if let Some(s) = sets.iter().find(|s| !fields.contains(&s.name)) {
+        return Err(usage(
+            command,
+            &format!("--set: the robot has no parameter `{}`", s.name),
+        ));
     }
-    eq.fields
+    fields
         .iter()
         .map(
             |f| match sets.iter().filter(|s| &s.name == f).collect::<Vec<_>>()[..] {
                 [s] => Ok(s.value),
-                [] => Err(usage(&format!(
-                    "the robot has a parameter `{f}`: give --set {f}=VALUE"
-                ))),
-                _ => Err(usage(&format!("--set: `{f}` given more than once"))),
+                [] => Err(usage(
+                    command,
+                    &format!("the robot has a parameter `{f}`: give --set {f}=VALUE"),
+                )),
+                _ => Err(usage(
+                    command,
+                    &format!("--set: `{f}` given more than once"),
+                )),
             },
         )
         .collect()

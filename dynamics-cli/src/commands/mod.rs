@@ -4,6 +4,8 @@
 mod emit;
 mod eval;
 mod inspect;
+mod simulate;
+mod size;
 mod stats;
 
 use crate::args::{Cli, Command, RobotFile, Tool};
@@ -33,6 +35,8 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Emit(args) => emit::run(args),
         Command::Stats(args) => stats::run(args),
         Command::Eval(args) => eval::run(args),
+        Command::Size(args) => size::run(args),
+        Command::Simulate(args) => simulate::run(args),
     }
 }
 

@@ -119,7 +119,11 @@ impl Number {
     #[allow(clippy::cast_precision_loss)]
     pub fn to_f64(self) -> f64 {
         match self {
-            Number::Rational(n, d) => n as f64 / d as f64,
+            // The same rounding as from i128, without its slow software conversion.
+            Number::Rational(n, d) => match (i64::try_from(n), i64::try_from(d)) {
+                (Ok(n), Ok(d)) => n as f64 / d as f64,
+                _ => n as f64 / d as f64,
+            },
             Number::Float(x) => x,
         }
     }

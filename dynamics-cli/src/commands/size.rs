@@ -1,0 +1,179 @@
+//! `dynamics size ROBOT (--csv FILE | --from Q --to Q [--duration T] [--samples N])
+//! [--set NAME=VALUE].. [--svg FILE] [--json]`: actuator sizing along a trajectory
+//! ([`crate::sizing`]), read as a stream ([`crate::trajectory`]).
+
+use super::eval::{joints, parameters};
+use super::{load, Failure};
+use crate::args::Size;
+use crate::format::unsigned_zero;
+use crate::plot;
+use crate::sizing::{self, Sizer, TERMS};
+use crate::trajectory;
+use dynamics_codegen::model::{JointKind, Robot};
+use dynamics_codegen::numeric::Numeric;
+use serde_json::json;
+use std::fmt::Write as _;
+use std::io::{BufReader, BufWriter};
+
+/// Files from this size on report their progress on stderr.
+const LONG_INPUT: u64 = 1 << 20;
+
+pub fn run(args: &Size) -> Result<String, Failure> {
+    let robot = load(&args.robot)?;
+    let numeric = numeric(&robot, "size", &args.set)?;
+    let n = robot.joints.len();
+    let kinds: Vec<JointKind> = robot.joints.iter().map(|j| j.kind).collect();
+    let mut sizer = Sizer::new(&numeric, n, args.svg.is_some());
+    let source = if let Some(path) = &args.csv {
+        let method = read(path, n, &mut sizer)?;
+        format!("{path}, {method}")
+    } else {
+        let from = joints("size", "--from", args.from.as_ref(), n)?;
+        let to = joints("size", "--to", args.to.as_ref(), n)?;
+        let samples = args.samples as usize;
+        trajectory::quintic(&from, &to, args.duration, samples, |s| {
+            sizer.push(s.t, &s.q, &s.qd, &s.qdd);
+        });
+        "quintic move, exact q̇ and q̈".to_string()
+    };
+    if let (Some(path), Some(envelope)) = (&args.svg, &sizer.envelope) {
+        let title = format!("{}: joint torques and power ({source})", robot.name);
+        let figure = sizing::figure(title, &kinds, envelope);
+        write_svg(path, &figure)?;
+    }
+    Ok(if args.json {
+        json_report(&robot.name, &source, &kinds, &sizer)
+    } else {
+        table(&robot.name, &source, &kinds, &sizer)
+    })
+}
+
+/// The robot evaluated numerically, its parameters set by `--set`.
+pub(super) fn numeric(
+    robot: &Robot,
+    command: &str,
+    sets: &[crate::args::Setting],
+) -> Result<Numeric, Failure> {
+    let fields = robot.fields();
+    let values = parameters(command, &fields, sets)?;
+    let named: Vec<(&str, f64)> = fields.iter().map(String::as_str).zip(values).collect();
+    // Every field has a value: `parameters` checked.
+    Numeric::new(robot, &named).map_err(|e| Failure::File(format!("no value for `{}`", e.0)))
+}
+
+/// Streams the CSV file at `path` into `sizer`, with progress on stderr for a long file.
+/// How q̇ and q̈ were had.
+fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Failure> {
+    let file = std::fs::File::open(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
+    let total = file.metadata().map(|m| m.len()).unwrap_or(0);
+    let mut reported = 0;
+    let progress = |bytes: u64| {
+        let percent = bytes * 100 / total.max(1);
+        if total >= LONG_INPUT && percent >= reported + 10 {
+            reported = percent / 10 * 10;
+            eprintln!("dynamics size: {path}: {reported}%");
+        }
+    };
+    trajectory::read_csv(
+        BufReader::new(file),
+        n,
+        |s| sizer.push(s.t, &s.q, &s.qd, &s.qdd),
+        progress,
+    )
+    .map(|(_, method)| method)
+    .map_err(|e| Failure::File(format!("{path}: {e}")))
+}
+
+pub(super) fn write_svg(path: &str, figure: &plot::Figure<'_>) -> Result<(), Failure> {
+    let failed = |e: std::io::Error| Failure::File(format!("{path}: {e}"));
+    let file = std::fs::File::create(path).map_err(failed)?;
+    let mut out = BufWriter::new(file);
+    plot::write_svg(&mut out, figure).map_err(failed)?;
+    std::io::Write::flush(&mut out).map_err(failed)
+}
+
+/// The report as aligned columns; the terms as shares of τ at its peak (signed, summing to
+/// 100 %).
+fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{name}: {} samples, t = {} to {} s ({source})",
+        sizer.samples, sizer.start, sizer.end
+    );
+    let _ = writeln!(
+        out,
+        "{:>5} {:>13} {:>9} {:>13} {:>12} {:>9} | share of τ at its peak: {}",
+        "joint",
+        "peak τ",
+        "at t (s)",
+        "RMS τ",
+        "peak power",
+        "at t (s)",
+        TERMS.map(|t| t.0).join(", ")
+    );
+    for (j, (r, &kind)) in sizer.joints.iter().zip(kinds).enumerate() {
+        let unit = sizing::unit(kind);
+        let shares: Vec<String> = r
+            .terms_at_peak
+            .iter()
+            .map(|x| format!("{:>9}", share(*x, &r.terms_at_peak)))
+            .collect();
+        let _ = writeln!(
+            out,
+            "{:>5} {:>9} {unit:<3} {:>9} {:>9} {unit:<3} {:>10} W {:>9} | {}",
+            j + 1,
+            plot::number(r.peak),
+            plot::number(r.peak_time),
+            plot::number(r.rms),
+            plot::number(r.peak_power),
+            plot::number(r.peak_power_time),
+            shares.join(" ")
+        );
+    }
+    out
+}
+
+/// `term` as a percentage of the sum of `terms`, unless that sum is only round-off.
+fn share(term: f64, terms: &[f64; 5]) -> String {
+    let total: f64 = terms.iter().sum();
+    let scale: f64 = terms.iter().map(|x| x.abs()).sum();
+    if total.abs() <= 1e-9 * scale || total == 0.0 {
+        "-".into()
+    } else {
+        format!("{:.1} %", unsigned_zero(100.0 * term / total))
+    }
+}
+
+fn json_report(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> String {
+    let joints: Vec<serde_json::Value> = sizer
+        .joints
+        .iter()
+        .zip(kinds)
+        .map(|(r, &kind)| {
+            let terms: serde_json::Map<String, serde_json::Value> = TERMS
+                .iter()
+                .zip(r.terms_at_peak)
+                .map(|((name, _), x)| ((*name).to_string(), json!(unsigned_zero(x))))
+                .collect();
+            json!({
+                "unit": sizing::unit(kind),
+                "peak": unsigned_zero(r.peak),
+                "peak_time": r.peak_time,
+                "rms": r.rms,
+                "peak_power": unsigned_zero(r.peak_power),
+                "peak_power_time": r.peak_power_time,
+                "terms_at_peak": terms,
+            })
+        })
+        .collect();
+    let report = json!({
+        "robot": name,
+        "source": source,
+        "samples": sizer.samples,
+        "start": sizer.start,
+        "end": sizer.end,
+        "joints": joints,
+    });
+    format!("{report:#}\n")
+}

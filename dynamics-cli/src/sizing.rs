@@ -1,0 +1,266 @@
+//! Actuator sizing along a trajectory: per joint, the peak and RMS of
+//! `τ = M_links q̈ + C q̇ + g + I_a q̈ + τ_f` (torque, or force for a prismatic joint), the peak
+//! mechanical power `τ q̇`, and the five terms at the peak.
+//!
+//! The RMS is over time, by the trapezoidal rule on `τ²` (samples need not be evenly spaced);
+//! each peak is the sample of largest magnitude. Samples are consumed one at a time.
+
+use crate::plot::{Envelope, Figure, Line, Panel};
+use dynamics_codegen::model::JointKind;
+use dynamics_codegen::numeric::{Numeric, Terms};
+
+/// The terms of τ, in the order [`Terms`] lists them.
+pub const TERMS: [(&str, &str); 5] = [
+    ("inertial", "#1f77b4"),
+    ("coriolis", "#ff7f0e"),
+    ("gravity", "#2ca02c"),
+    ("actuator", "#9467bd"),
+    ("friction", "#d62728"),
+];
+
+/// Series per joint in the envelope: τ, its five terms, the power.
+const SERIES: usize = 7;
+
+/// What one joint needs.
+#[derive(Clone, Debug, Default)]
+pub struct JointReport {
+    /// τ at its largest magnitude, and when.
+    pub peak: f64,
+    pub peak_time: f64,
+    /// The five terms at that sample, in the order of [`TERMS`].
+    pub terms_at_peak: [f64; 5],
+    pub rms: f64,
+    /// `τ q̇` at its largest magnitude, and when.
+    pub peak_power: f64,
+    pub peak_power_time: f64,
+    /// `∫ τ² dt` so far, and the previous sample's `(t, τ²)`.
+    integral: f64,
+    previous: Option<(f64, f64)>,
+}
+
+/// The sizing of a robot as samples arrive.
+pub struct Sizer<'a> {
+    numeric: &'a Numeric,
+    pub joints: Vec<JointReport>,
+    pub samples: usize,
+    pub start: f64,
+    pub end: f64,
+    pub envelope: Option<Envelope>,
+    values: Vec<f64>,
+}
+
+impl<'a> Sizer<'a> {
+    /// A sizing of `n` joints; with `plot`, the series are decimated for a figure.
+    #[must_use]
+    pub fn new(numeric: &'a Numeric, n: usize, plot: bool) -> Sizer<'a> {
+        Sizer {
+            numeric,
+            joints: vec![JointReport::default(); n],
+            samples: 0,
+            start: 0.0,
+            end: 0.0,
+            envelope: plot.then(|| Envelope::new(SERIES * n)),
+            values: vec![0.0; SERIES * n],
+        }
+    }
+
+    /// Adds one sample.
+    pub fn push(&mut self, t: f64, q: &[f64], qd: &[f64], qdd: &[f64]) {
+        let terms = self.numeric.inverse_dynamics_terms(q, qd, qdd);
+        self.add(t, qd, &terms);
+    }
+
+    /// Adds one sample whose terms are known.
+    pub fn add(&mut self, t: f64, qd: &[f64], terms: &Terms) {
+        if self.samples == 0 {
+            self.start = t;
+        }
+        self.samples += 1;
+        self.end = t;
+        let all = [
+            &terms.inertial,
+            &terms.coriolis,
+            &terms.gravity,
+            &terms.actuator,
+            &terms.friction,
+        ];
+        for (j, report) in self.joints.iter_mut().enumerate() {
+            let parts: [f64; 5] = core::array::from_fn(|k| all[k][j]);
+            let tau: f64 = parts.iter().sum();
+            let power = tau * qd[j];
+            if self.samples == 1 || tau.abs() > report.peak.abs() {
+                report.peak = tau;
+                report.peak_time = t;
+                report.terms_at_peak = parts;
+            }
+            if self.samples == 1 || power.abs() > report.peak_power.abs() {
+                report.peak_power = power;
+                report.peak_power_time = t;
+            }
+            let square = tau * tau;
+            match report.previous {
+                Some((t0, s0)) => {
+                    report.integral += 0.5 * (s0 + square) * (t - t0);
+                    report.rms = (report.integral / (t - self.start)).sqrt();
+                }
+                None => report.rms = tau.abs(),
+            }
+            report.previous = Some((t, square));
+            let v = &mut self.values[SERIES * j..SERIES * (j + 1)];
+            v[0] = tau;
+            v[1..6].copy_from_slice(&parts);
+            v[6] = power;
+        }
+        if let Some(envelope) = &mut self.envelope {
+            envelope.push(t, &self.values);
+        }
+    }
+}
+
+/// `N m` or `N`.
+#[must_use]
+pub fn unit(kind: JointKind) -> &'static str {
+    match kind {
+        JointKind::Revolute => "N m",
+        JointKind::Prismatic => "N",
+    }
+}
+
+/// The figure of a sizing: per joint, τ and its terms (left) and the power (right). Terms that
+/// are zero all along are left out.
+#[must_use]
+pub fn figure<'e>(title: String, kinds: &[JointKind], envelope: &'e Envelope) -> Figure<'e> {
+    let zero = |series: usize| envelope_is_zero(envelope, series);
+    let present: Vec<bool> = (0..5)
+        .map(|k| (0..kinds.len()).any(|j| !zero(SERIES * j + 1 + k)))
+        .collect();
+    let mut legend = vec![("τ".to_string(), "#000000")];
+    legend.extend(
+        TERMS
+            .iter()
+            .zip(&present)
+            .filter(|(_, &p)| p)
+            .map(|((name, color), _)| ((*name).to_string(), *color)),
+    );
+    legend.push(("power τ q̇".to_string(), "#17becf"));
+    let rows = kinds
+        .iter()
+        .enumerate()
+        .map(|(j, &kind)| {
+            let base = SERIES * j;
+            let mut lines: Vec<Line> = TERMS
+                .iter()
+                .enumerate()
+                .filter(|&(k, _)| present[k] && !zero(base + 1 + k))
+                .map(|(k, (name, color))| Line {
+                    label: (*name).to_string(),
+                    color,
+                    series: base + 1 + k,
+                    bold: false,
+                })
+                .collect();
+            lines.push(Line {
+                label: "τ".into(),
+                color: "#000000",
+                series: base,
+                bold: true,
+            });
+            vec![
+                Panel {
+                    title: format!("joint {}: τ{} ({})", j + 1, j + 1, unit(kind)),
+                    lines,
+                },
+                Panel {
+                    title: format!("joint {}: power (W)", j + 1),
+                    lines: vec![Line {
+                        label: "power".into(),
+                        color: "#17becf",
+                        series: base + 6,
+                        bold: false,
+                    }],
+                },
+            ]
+        })
+        .collect();
+    Figure {
+        title,
+        legend,
+        rows,
+        widths: vec![560.0, 300.0],
+        envelope,
+    }
+}
+
+fn envelope_is_zero(envelope: &Envelope, series: usize) -> bool {
+    envelope.range(series) == (0.0, 0.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Sizer;
+    use dynamics_codegen::front;
+    use dynamics_codegen::numeric::Numeric;
+    use serde_json::Value;
+
+    fn root() -> std::path::PathBuf {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .parent()
+            .unwrap()
+            .to_path_buf()
+    }
+
+    /// The terms against Pinocchio's reference data of the PUMA 560: `M q̈` (no actuator inertia
+    /// in this model), `g`, and `C q̇ = τ − M q̈ − g`.
+    #[test]
+    fn terms_equal_pinocchio() {
+        let path = root().join("robots/puma560.toml");
+        let robot = front::load("puma560.toml", &std::fs::read_to_string(path).unwrap())
+            .unwrap()
+            .robot;
+        let numeric = Numeric::new(&robot, &[]).unwrap();
+        let data: Value = serde_json::from_str(
+            &std::fs::read_to_string(root().join("tests/data/reference/data/puma560.json"))
+                .unwrap(),
+        )
+        .unwrap();
+        let v = |x: &Value| -> Vec<f64> {
+            x.as_array()
+                .unwrap()
+                .iter()
+                .map(|y| y.as_f64().unwrap())
+                .collect()
+        };
+        let samples = data["samples"].as_array().unwrap();
+        for s in samples {
+            let (q, qd, qdd, tau, g) = (
+                v(&s["q"]),
+                v(&s["qd"]),
+                v(&s["qdd"]),
+                v(&s["tau"]),
+                v(&s["g"]),
+            );
+            let m: Vec<Vec<f64>> = s["M"].as_array().unwrap().iter().map(v).collect();
+            let terms = numeric.inverse_dynamics_terms(&q, &qd, &qdd);
+            for i in 0..6 {
+                let inertial: f64 = (0..6).map(|k| m[i][k] * qdd[k]).sum();
+                let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * (1.0 + b.abs());
+                assert!(close(terms.inertial[i], inertial));
+                assert!(close(terms.gravity[i], g[i]));
+                assert!(close(terms.coriolis[i], tau[i] - inertial - g[i]));
+                assert_eq!((terms.actuator[i], terms.friction[i]), (0.0, 0.0));
+            }
+        }
+        // The sizing's peak is the largest |τ| over the samples.
+        let mut sizer = Sizer::new(&numeric, 6, false);
+        for (k, s) in samples.iter().enumerate() {
+            sizer.push(k as f64, &v(&s["q"]), &v(&s["qd"]), &v(&s["qdd"]));
+        }
+        for i in 0..6 {
+            let peak = samples
+                .iter()
+                .map(|s| v(&s["tau"])[i])
+                .fold(0.0f64, |a, b| if b.abs() > a.abs() { b } else { a });
+            assert!((sizer.joints[i].peak - peak).abs() < 1e-9 * (1.0 + peak.abs()));
+        }
+    }
+}
