@@ -3,7 +3,7 @@
 //!
 //! The state `x = (q, q̇)` follows `ẋ = (q̇, q̈)` with `M(q) q̈ = τ − C(q, q̇) q̇ − g(q) − τ_f(q̇)`
 //! (springs in g, actuator inertia in M, friction as declared), solved through the LDLᵀ of M
-//! ([`dynamics_codegen::algo::ldlt`], run in f64), and is integrated by the classical fourth-order
+//! ([`dynamics_codegen::algo::Ldlt`], run in f64), and is integrated by the classical fourth-order
 //! Runge-Kutta method with a fixed step h:
 //! `x' = x + h/6 (k₁ + 2k₂ + 2k₃ + k₄)`, `k₁ = f(x)`, `k₂ = f(x + h/2 k₁)`, `k₃ = f(x + h/2 k₂)`,
 //! `k₄ = f(x + h k₃)`.
@@ -13,7 +13,7 @@ use super::size::{numeric, write_svg};
 use super::{load, Failure};
 use crate::args::Simulate;
 use crate::plot::{Envelope, Figure, Line, Panel};
-use dynamics_codegen::algo::ldlt;
+use dynamics_codegen::algo::Ldlt;
 use dynamics_codegen::numeric::Numeric;
 use std::io::{BufWriter, Write};
 
@@ -104,7 +104,7 @@ fn acceleration(numeric: &Numeric, q: &[f64], qd: &[f64], tau: &[f64]) -> Result
     let zeros = vec![0.0; q.len()];
     let bias = numeric.inverse_dynamics(q, qd, &zeros);
     let rhs: Vec<f64> = tau.iter().zip(&bias).map(|(t, b)| t - b).collect();
-    let factors = ldlt(&numeric.mass_matrix(q), |x| 1.0 / x);
+    let factors = Ldlt::new(&numeric.mass_matrix(q));
     if let Some(k) = factors
         .pivots
         .iter()
