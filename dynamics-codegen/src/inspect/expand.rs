@@ -2,9 +2,9 @@
 //! expanded polynomials grow fast with the number of joints (the code is emitted from the
 //! shared graph, never from these), so what does not fit is reported as too large.
 
-use super::arrange::{arrange, Term};
+use super::arrange::{arrange, arrange_factored, Term};
 use super::fold::fold_trig;
-use super::{Poly, Sym};
+use super::{Monomial, Poly, Sym};
 use crate::symbolic::{Node, NodeId, Number};
 use crate::trace::Equations;
 
@@ -126,6 +126,20 @@ impl<'a> Expander<'a> {
     /// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
     /// arranged; `None` when it does not fit the limits.
     pub(super) fn terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
+        self.arranged(id, arrange)
+    }
+
+    /// The readable form of node `id` as [`Expander::terms`] gives it, its common sines and
+    /// cosines taken out (the kinematics).
+    pub(super) fn factored_terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
+        self.arranged(id, arrange_factored)
+    }
+
+    fn arranged(
+        &mut self,
+        id: NodeId,
+        arrange: fn(Vec<(Monomial, Number)>) -> Vec<Term>,
+    ) -> Option<Vec<Term>> {
         let mut terms = self.poly(id)?.into_terms();
         // Each search for a pair to fold reads every term.
         fold_trig(&mut terms, &mut |n| self.charge(n as u64))?;

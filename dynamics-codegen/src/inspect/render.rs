@@ -15,6 +15,7 @@ impl Inspection {
         let p = Printer {
             format,
             kinds: &self.kinds,
+            factors_first: self.kinematics,
         };
         let mut out = self.header(&p);
         for section in &self.sections {
@@ -36,6 +37,7 @@ impl Inspection {
         let p = Printer {
             format,
             kinds: &self.kinds,
+            factors_first: self.kinematics,
         };
         let mut out = self.header(&p);
         self.render_section(&p, section, &mut out);
