@@ -7,27 +7,36 @@ use dynamics_codegen::{derive_dynamics, front};
 use quote::{format_ident, quote, ToTokens};
 use std::time::Instant;
 
+/// The impls in the derive's `const _: () = { … };` block.
+fn impls(out: &syn::File) -> impl Iterator<Item = &syn::ItemImpl> {
+    out.items
+        .iter()
+        .filter_map(|item| match item {
+            syn::Item::Const(c) => match c.expr.as_ref() {
+                syn::Expr::Block(b) => Some(&b.block.stmts),
+                _ => None,
+            },
+            _ => None,
+        })
+        .flatten()
+        .filter_map(|stmt| match stmt {
+            syn::Stmt::Item(syn::Item::Impl(imp)) => Some(imp),
+            _ => None,
+        })
+}
+
 /// The `&'static str` literal assigned to `name` in the derive's output.
 fn constant(out: &syn::File, name: &str) -> String {
-    for item in &out.items {
-        let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = c.expr.as_ref() else {
-            continue;
-        };
-        for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
-                continue;
-            };
-            for it in &imp.items {
-                if let syn::ImplItem::Const(k) = it {
-                    if k.ident == name {
-                        if let syn::Expr::Lit(syn::ExprLit {
-                            lit: syn::Lit::Str(s),
-                            ..
-                        }) = &k.expr
-                        {
-                            return s.value();
-                        }
+    for imp in impls(out) {
+        for it in &imp.items {
+            if let syn::ImplItem::Const(k) = it {
+                if k.ident == name {
+                    if let syn::Expr::Lit(syn::ExprLit {
+                        lit: syn::Lit::Str(s),
+                        ..
+                    }) = &k.expr
+                    {
+                        return s.value();
                     }
                 }
             }
@@ -38,25 +47,15 @@ fn constant(out: &syn::File, name: &str) -> String {
 
 /// The inherent impl that holds `EQUATIONS`.
 fn equations_impl(out: &syn::File) -> &syn::ItemImpl {
-    for item in &out.items {
-        let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = c.expr.as_ref() else {
-            continue;
-        };
-        for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
-                continue;
-            };
-            let holds_equations = imp
-                .items
-                .iter()
-                .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"));
-            if imp.trait_.is_none() && holds_equations {
-                return imp;
-            }
-        }
-    }
-    panic!("no inherent impl");
+    impls(out)
+        .find(|imp| {
+            imp.trait_.is_none()
+                && imp
+                    .items
+                    .iter()
+                    .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"))
+        })
+        .expect("no inherent impl")
 }
 
 /// The text of the `#[doc = "…"]` attributes, and whether one is `#[doc(hidden)]`.
@@ -208,29 +207,14 @@ fn large_robot_is_capped_and_fast() {
 
 /// The doc of the method `name` in the derive's `Dynamics` impl, if it has one.
 fn method_doc(out: &syn::File, name: &str) -> Option<String> {
-    for item in &out.items {
-        let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = c.expr.as_ref() else {
-            continue;
-        };
-        for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
-                continue;
-            };
-            if imp.trait_.is_none() {
-                continue;
-            }
-            for it in &imp.items {
-                if let syn::ImplItem::Fn(f) = it {
-                    if f.sig.ident == name {
-                        let (doc, _) = doc_of(&f.attrs);
-                        return (!doc.is_empty()).then_some(doc);
-                    }
-                }
-            }
+    let imp = impls(out).find(|imp| imp.trait_.is_some())?;
+    imp.items.iter().find_map(|it| match it {
+        syn::ImplItem::Fn(f) if f.sig.ident == name => {
+            let (doc, _) = doc_of(&f.attrs);
+            (!doc.is_empty()).then_some(doc)
         }
-    }
-    None
+        _ => None,
+    })
 }
 
 /// The hand pose and both Jacobians print in the rustdoc of their methods, in the book's

@@ -54,10 +54,6 @@ impl<'a> Expander<'a> {
         }
     }
 
-    pub(super) fn limits(&self) -> Limits {
-        self.limits
-    }
-
     /// A new budget of work for further outputs, keeping the polynomials found so far: the
     /// nodes that did not fit the old budget are tried again.
     pub(super) fn renew_budget(&mut self) {

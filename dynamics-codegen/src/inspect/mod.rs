@@ -60,14 +60,8 @@ pub struct Inspection {
 #[must_use]
 pub fn inspect(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
     let mut expander = Expander::new(eq, limits);
-    Inspection {
-        name: robot.name.clone(),
-        kinematics: false,
-        kinds: eq.kinds.clone(),
-        offsets: eq.angle_offsets.iter().any(Option::is_some),
-        sections: sections::sections(&mut expander, eq, robot),
-        limits,
-    }
+    let sections = sections::sections(&mut expander, eq, robot);
+    Inspection::new(eq, robot, false, sections, limits)
 }
 
 /// The hand pose `[n o a p]` and the hand's Jacobians (in the base frame and ᴴJ), expanded and
@@ -75,7 +69,8 @@ pub fn inspect(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
 /// (`nx = C1 C23 …`).
 #[must_use]
 pub fn inspect_kinematics(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
-    kinematics(&mut Expander::new(eq, limits), eq, robot)
+    let sections = sections::kinematic_sections(&mut Expander::new(eq, limits), eq);
+    Inspection::new(eq, robot, true, sections, limits)
 }
 
 /// [`inspect`] and [`inspect_kinematics`] with one expansion, as the derive prints both: the
@@ -89,27 +84,13 @@ pub fn inspect_with_kinematics(
     limits: Limits,
 ) -> (Inspection, Inspection) {
     let mut expander = Expander::new(eq, limits);
-    let dynamics = Inspection {
-        name: robot.name.clone(),
-        kinematics: false,
-        kinds: eq.kinds.clone(),
-        offsets: eq.angle_offsets.iter().any(Option::is_some),
-        sections: sections::sections(&mut expander, eq, robot),
-        limits,
-    };
+    let dynamics = sections::sections(&mut expander, eq, robot);
     expander.renew_budget();
-    (dynamics, kinematics(&mut expander, eq, robot))
-}
-
-fn kinematics(expander: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Inspection {
-    Inspection {
-        name: robot.name.clone(),
-        kinematics: true,
-        kinds: eq.kinds.clone(),
-        offsets: eq.angle_offsets.iter().any(Option::is_some),
-        sections: sections::kinematic_sections(expander, eq),
-        limits: expander.limits(),
-    }
+    let kinematics = sections::kinematic_sections(&mut expander, eq);
+    (
+        Inspection::new(eq, robot, false, dynamics, limits),
+        Inspection::new(eq, robot, true, kinematics, limits),
+    )
 }
 
 /// A part of the kinematics that prints on its own (in the rustdoc of its method).
@@ -124,6 +105,23 @@ pub enum KinematicPart {
 }
 
 impl Inspection {
+    fn new(
+        eq: &Equations,
+        robot: &Robot,
+        kinematics: bool,
+        sections: Vec<Section>,
+        limits: Limits,
+    ) -> Inspection {
+        Inspection {
+            name: robot.name.clone(),
+            kinematics,
+            kinds: eq.kinds.clone(),
+            offsets: eq.angle_offsets.iter().any(Option::is_some),
+            sections,
+            limits,
+        }
+    }
+
     /// Whether every equation fitted the limits.
     #[must_use]
     pub fn complete(&self) -> bool {
