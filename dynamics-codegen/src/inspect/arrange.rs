@@ -85,10 +85,15 @@ fn arrange_configuration(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
 /// Terms without velocities, the sine or cosine that most terms have taken out of them (of the
 /// lowest joints where several tie), then again inside and in the rest, until no two terms
 /// share one: `a2 C1 C2 + a3 C1 C23 + d3 S1` → `C1(a2 C2 + a3 C23) + d3 S1`. A sum starts with
-/// a positive term where it has one (`C4 C5 C6 - S4 S6`).
+/// its positive terms (`C4 C5 C6 - S4 S6`), each sign's in the order of their lowest joints.
 pub(super) fn arrange_factored(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
     let mut out = factor_out(terms);
-    out.sort_by_key(|t| t.coef.is_negative());
+    // The lowest joints' sines and cosines first, as `l1 C1 + l2 C12`.
+    let first_angle = |t: &Term| {
+        let angles = t.factors.factors().iter();
+        angles.filter_map(|(s, _)| s.as_trig()).map(|(_, a)| a).min()
+    };
+    out.sort_by_key(|t| (t.coef.is_negative(), first_angle(t)));
     out
 }
 

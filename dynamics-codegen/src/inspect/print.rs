@@ -24,8 +24,9 @@ pub enum Format {
 pub(super) struct Printer<'a> {
     pub(super) format: Format,
     pub(super) kinds: &'a [JointKind],
-    /// Whether a group's factors go before it, `C1(a2 C2 + a3 C23)` as chapter 3 writes the
-    /// kinematics, rather than after, `(1/2 m1 + m2) g l1 C1` as chapter 6 the dynamics.
+    /// Whether a group of sines and cosines has its factors before it, `C1(a2 C2 + a3 C23)`
+    /// as chapter 3 writes the kinematics, rather than after, as chapter 6 writes the dynamics
+    /// and any group of parameters alone: `(1/2 m1 + m2) g l1 C1`, `(l2 + 0.1) C12`.
     pub(super) factors_first: bool,
 }
 
@@ -151,7 +152,7 @@ impl Printer<'_> {
             .map(|(s, e)| self.power(self.symbol(s), *e))
             .collect();
         match group {
-            Some(group) if self.factors_first && !factors.is_empty() => {
+            Some(group) if self.factors_first && !factors.is_empty() && has_trig(&t.group) => {
                 parts.extend(factors);
                 let last = parts.pop().unwrap_or_default();
                 parts.push(format!("{last}{group}"));
@@ -201,6 +202,13 @@ impl Printer<'_> {
         }
         s
     }
+}
+
+/// Whether a sine or cosine appears in `terms`.
+fn has_trig(terms: &[Term]) -> bool {
+    terms
+        .iter()
+        .any(|t| t.factors.factors().iter().any(|(s, _)| s.is_trig()) || has_trig(&t.group))
 }
 
 /// Masses first, then gravity, then the rest in symbol order, as the book writes

@@ -96,8 +96,8 @@ fn kinematics_take_out_common_sines_and_cosines() {
         ("C1*C2*C4 - C1*S3*S4 - S1*S4", "C1(C2 C4 - S3 S4) - S1 S4"),
         // nothing shared: as the dynamics print
         ("a*S1 + b*C2", "a S1 + b C2"),
-        // the factor before its group, as chapter 3 writes it (the dynamics: `(a + b) C1`)
-        ("a*C1 + b*C1", "C1(a + b)"),
+        // a factor before a group of sines and cosines only: parameters alone go first
+        ("a*C1 + b*C1", "(a + b) C1"),
         ("a*C1*C2 + a*C1*S2", "C1(a S2 + a C2)"),
         ("2*C1*C2*C3 + 2*C1*S2*S3", "C1(2 S2 S3 + 2 C2 C3)"),
     ] {
