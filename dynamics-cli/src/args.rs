@@ -26,7 +26,7 @@ pub enum Command {
     /// Print a standalone Rust module with the code `#[derive(Dynamics)]` generates
     Emit(RobotFile),
     /// Print expansion time, operation counts, depth and code size per method
-    Stats(RobotFile),
+    Stats(Stats),
     /// Print τ, M, C and g at one state
     Eval(Eval),
     /// Size the actuators along a trajectory: peak and RMS torque, peak power, and the terms of
@@ -67,6 +67,16 @@ impl FromStr for Tool {
             format!("a tool takes 6 numbers, x,y,z,roll,pitch,yaw; `{text}` has {count}")
         })
     }
+}
+
+#[derive(Args, Debug)]
+pub struct Stats {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// Times the whole derive this many times and prints the fastest run, the one least slowed
+    /// by the machine's other work
+    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    pub runs: u32,
 }
 
 #[derive(Args, Debug)]

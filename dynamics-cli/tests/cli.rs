@@ -318,7 +318,7 @@ fn help_of_each_command() {
             &["<ROBOT>", "--latex"][..],
         ),
         ("emit", "a standalone Rust module", &["<ROBOT>"][..]),
-        ("stats", "operation counts", &["<ROBOT>"][..]),
+        ("stats", "operation counts", &["<ROBOT>", "--runs <N>"][..]),
         (
             "eval",
             "τ, M, C and g at one state",

@@ -44,15 +44,15 @@ fn entry(args: &[&str], name: &str) -> String {
 #[test]
 fn a_tool_moves_the_hand_frame() {
     let arm = "robots/articulated_3r.toml";
-    assert_eq!(entry(&[arm], "px"), "a2 C1 C2 + a3 C1 C23");
+    assert_eq!(entry(&[arm], "px"), "C1(a2 C2 + a3 C23)");
     let tool = ["--tool", "0,0,0.5,0,0,0"];
     assert_eq!(
         entry(&[arm, tool[0], tool[1]], "px"),
-        "1/2 S1 + a2 C1 C2 + a3 C1 C23"
+        "C1(a2 C2 + a3 C23) + 1/2 S1"
     );
     assert_eq!(
         entry(&[arm, tool[0], tool[1]], "py"),
-        "a2 S1 C2 + a3 S1 C23 - 1/2 C1"
+        "S1(a2 C2 + a3 C23) - 1/2 C1"
     );
     assert_eq!(entry(&[arm, tool[0], tool[1]], "nx"), "C1 C23");
     let two = "robots/niku_example_6_4.toml";
@@ -106,6 +106,6 @@ fn a_tool_is_refused_where_the_file_has_one() {
         assert!(stderr.contains(message), "{args:?}: {stderr}");
     }
     // Without --tool the file's own tool is taken.
-    assert_eq!(entry(&[file], "px"), "S1 + a2 C1 C2 + a3 C1 C23");
+    assert_eq!(entry(&[file], "px"), "C1(a2 C2 + a3 C23) + S1");
     std::fs::remove_file(file).expect("remove");
 }

@@ -7,27 +7,36 @@ use dynamics_codegen::{derive_dynamics, front};
 use quote::{format_ident, quote, ToTokens};
 use std::time::Instant;
 
+/// The impls in the derive's `const _: () = { … };` block.
+fn impls(out: &syn::File) -> impl Iterator<Item = &syn::ItemImpl> {
+    out.items
+        .iter()
+        .filter_map(|item| match item {
+            syn::Item::Const(c) => match c.expr.as_ref() {
+                syn::Expr::Block(b) => Some(&b.block.stmts),
+                _ => None,
+            },
+            _ => None,
+        })
+        .flatten()
+        .filter_map(|stmt| match stmt {
+            syn::Stmt::Item(syn::Item::Impl(imp)) => Some(imp),
+            _ => None,
+        })
+}
+
 /// The `&'static str` literal assigned to `name` in the derive's output.
 fn constant(out: &syn::File, name: &str) -> String {
-    for item in &out.items {
-        let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = c.expr.as_ref() else {
-            continue;
-        };
-        for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
-                continue;
-            };
-            for it in &imp.items {
-                if let syn::ImplItem::Const(k) = it {
-                    if k.ident == name {
-                        if let syn::Expr::Lit(syn::ExprLit {
-                            lit: syn::Lit::Str(s),
-                            ..
-                        }) = &k.expr
-                        {
-                            return s.value();
-                        }
+    for imp in impls(out) {
+        for it in &imp.items {
+            if let syn::ImplItem::Const(k) = it {
+                if k.ident == name {
+                    if let syn::Expr::Lit(syn::ExprLit {
+                        lit: syn::Lit::Str(s),
+                        ..
+                    }) = &k.expr
+                    {
+                        return s.value();
                     }
                 }
             }
@@ -38,25 +47,15 @@ fn constant(out: &syn::File, name: &str) -> String {
 
 /// The inherent impl that holds `EQUATIONS`.
 fn equations_impl(out: &syn::File) -> &syn::ItemImpl {
-    for item in &out.items {
-        let syn::Item::Const(c) = item else { continue };
-        let syn::Expr::Block(b) = c.expr.as_ref() else {
-            continue;
-        };
-        for stmt in &b.block.stmts {
-            let syn::Stmt::Item(syn::Item::Impl(imp)) = stmt else {
-                continue;
-            };
-            let holds_equations = imp
-                .items
-                .iter()
-                .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"));
-            if imp.trait_.is_none() && holds_equations {
-                return imp;
-            }
-        }
-    }
-    panic!("no inherent impl");
+    impls(out)
+        .find(|imp| {
+            imp.trait_.is_none()
+                && imp
+                    .items
+                    .iter()
+                    .any(|it| matches!(it, syn::ImplItem::Const(k) if k.ident == "EQUATIONS"))
+        })
+        .expect("no inherent impl")
 }
 
 /// The text of the `#[doc = "…"]` attributes, and whether one is `#[doc(hidden)]`.
@@ -162,7 +161,7 @@ fn constants_hidden_behind_documented_functions() {
 }
 
 /// The 7-joint arm with its 70 inertial parameters as fields: the expansion of the readable
-/// equations is capped, the sections beyond the cap say so and point to `dynamics inspect`,
+/// equations and kinematics is capped, the sections beyond the cap say so and point to `dynamics inspect`,
 /// and the whole derive stays well under a second.
 #[test]
 fn large_robot_is_capped_and_fast() {
@@ -195,5 +194,61 @@ fn large_robot_is_capped_and_fast() {
     assert!(text.contains("`dynamics inspect`"), "{text}");
     // what fits is printed: the gravity terms
     assert!(text.contains("  D2 = "), "{text}");
+    // the kinematics too, each part on its own budget
+    let in_hand = method_doc(&out, "hand_jacobian_in_hand").expect("a doc");
+    assert!(
+        in_hand.contains("`dynamics inspect --kinematics` command prints it"),
+        "{in_hand}"
+    );
+    let pose = method_doc(&out, "hand_pose").expect("a doc");
+    assert!(pose.contains("  nz = "), "{pose}");
     assert!(elapsed.as_secs_f64() < 1.0, "derive took {elapsed:?}");
+}
+
+/// The doc of the method `name` in the derive's `Dynamics` impl, if it has one.
+fn method_doc(out: &syn::File, name: &str) -> Option<String> {
+    let imp = impls(out).find(|imp| imp.trait_.is_some())?;
+    imp.items.iter().find_map(|it| match it {
+        syn::ImplItem::Fn(f) if f.sig.ident == name => {
+            let (doc, _) = doc_of(&f.attrs);
+            (!doc.is_empty()).then_some(doc)
+        }
+        _ => None,
+    })
+}
+
+/// The hand pose and both Jacobians print in the rustdoc of their methods, in the book's
+/// notation (the 3R arm of Niku's chapter 3 worked by hand: n = (C1 C23, S1 C23, S23),
+/// px = C1 (a2 C2 + a3 C23), ᴴJ22 = a3 + a2 C3); the other methods keep the trait's docs.
+#[test]
+fn kinematics_in_the_rustdoc_of_their_methods() {
+    let out = expand(quote! {
+        #[dynamics(
+            gravity = [0, 0, -g],
+            dh = [[q, 0, 0, 90 deg], [q, 0, a2, 0], [q, 0, a3, 0]],
+            link(mass = m1), link(mass = m2), link(mass = m3),
+        )]
+        struct Arm { m1: f64, m2: f64, m3: f64, a2: f64, a3: f64, g: f64 }
+    });
+    let pose = method_doc(&out, "hand_pose").expect("hand_pose has a doc");
+    for line in [
+        "  nx = C1 C23\n",
+        "  ny = S1 C23\n",
+        "  nz = S23\n",
+        "  az = 0\n",
+    ] {
+        assert!(pose.contains(line), "{line} not in {pose}");
+    }
+    assert!(pose.contains("  px = C1(a2 C2 + a3 C23)\n"), "{pose}");
+    assert!(pose.contains("```text\n"), "{pose}");
+    assert!(!pose.contains("J11"), "{pose}");
+    let in_base = method_doc(&out, "hand_jacobian_in_base").expect("a doc");
+    assert!(in_base.contains("  J61 = 1\n"), "{in_base}");
+    assert!(in_base.contains("  J33 = a3 C23\n"), "{in_base}");
+    let in_hand = method_doc(&out, "hand_jacobian_in_hand").expect("a doc");
+    assert!(in_hand.contains("  ᴴJ22 = a3 + a2 C3\n"), "{in_hand}");
+    assert!(in_hand.contains("  ᴴJ41 = S23\n"), "{in_hand}");
+    for other in ["mass_matrix", "link_poses", "joint_torques_for_hand_wrench"] {
+        assert_eq!(method_doc(&out, other), None, "{other}");
+    }
 }

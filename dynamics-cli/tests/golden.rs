@@ -218,7 +218,7 @@ fn diff_shows_only_changed_lines() {
 /// Entries of the kinematics goldens derived by hand, so that blessing cannot hide an error.
 ///
 /// The 3R arm (standard D-H: α1 = 90°, a2, a3): `A1 A2 A3` has the last column
-/// `p = (C1 (a2 C2 + a3 C23), S1 (a2 C2 + a3 C23), a2 S2 + a3 S23)`, and `n`, the x axis of
+/// `p = (C1(a2 C2 + a3 C23), S1(a2 C2 + a3 C23), a2 S2 + a3 S23)`, and `n`, the x axis of
 /// frame 3, is `(C1 C23, S1 C23, S23)`. ᴴJ's column 2: joint 2 turns about z1 = z3 the hand at
 /// `a2 x2 + a3 x3` from its axis; in the hand's axes `x2 = (C3, −S3, 0)` and `x3 = (1, 0, 0)`, so
 /// `z × r = a2 (S3, C3, 0) + a3 (0, 1, 0)`: `ᴴJ12 = a2 S3`, `ᴴJ22 = a3 + a2 C3`, `ᴴJ32 = 0`.
@@ -235,7 +235,8 @@ fn kinematics_entries_match_a_hand_derivation() {
         "  nx = C1 C23",
         "  ny = S1 C23",
         "  nz = S23",
-        "  px = a2 C1 C2 + a3 C1 C23",
+        "  px = C1(a2 C2 + a3 C23)",
+        "  py = S1(a2 C2 + a3 C23)",
         "  pz = a2 S2 + a3 S23",
         "  ᴴJ12 = a2 S3",
         "  ᴴJ22 = a3 + a2 C3",

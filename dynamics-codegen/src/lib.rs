@@ -44,6 +44,18 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
     }
 }
 
+/// What `#[derive(Dynamics)]` expands to for `robot` on the type `input`, once the derive
+/// input is parsed: for tools that time the derive (`dynamics stats`) on a robot they loaded.
+#[must_use]
+pub fn expand_robot(input: &syn::DeriveInput, robot: &model::Robot) -> TokenStream {
+    let parsed = front::Input {
+        robot: robot.clone(),
+        krate: None,
+        tracked_file: None,
+    };
+    expand(input, &parsed)
+}
+
 /// The expansion of a parsed derive: the generated items and the readable equations, in a
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
@@ -58,8 +70,11 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         })
         .collect();
     let generated = generate(&eq, fields);
-    let items = generated.items(&krate, &input.ident, &input.generics, &|_| None);
-    let equations = emit::equations(input, &eq, &parsed.robot);
+    let readable = emit::readable(input, &eq, &parsed.robot);
+    let items = generated.items(&krate, &input.ident, &input.generics, &|method| {
+        readable.doc(method)
+    });
+    let equations = readable.equations;
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
             const _: &[u8] = ::core::include_bytes!(#path);

@@ -23,6 +23,9 @@
 //! | `g` | `gravity_torques(&q)` |
 //! | `C` | `coriolis_matrix(&q, &qd)` |
 //! | `h` | `bias_torques(&q, &qd)` (`C qd + g`, Pinocchio's non-linear effects) |
+//! | `fk` | `hand_pose(&q)` |
+//! | `J` | `hand_jacobian_in_base(&q)` |
+//! | `JtF` | `joint_torques_for_base_wrench(&q, &wrench)`, a wrench fixed per sample |
 //!
 //! With `--all`, three more for context, computed from the same description:
 //!
@@ -84,7 +87,7 @@ use dynamics_codegen::numeric::Numeric;
 use dynamics_runtime::Dynamics;
 
 /// The generated methods, timed by default.
-const GENERATED: [&str; 5] = ["tau", "M", "g", "C", "h"];
+const GENERATED: [&str; 8] = ["tau", "M", "g", "C", "h", "fk", "J", "JtF"];
 /// The other implementations, timed with `--all`.
 const EXTRA: [&str; 3] = ["tau_reference", "tau_rnea", "M_crba"];
 
@@ -214,6 +217,13 @@ fn measure<R: Dynamics<N>, const N: usize>(
         "g" => drive(s, p, mode, |x| robot.gravity_torques(&x.q)),
         "C" => drive(s, p, mode, |x| robot.coriolis_matrix(&x.q, &x.qd)),
         "h" => drive(s, p, mode, |x| robot.bias_torques(&x.q, &x.qd)),
+        "fk" => drive(s, p, mode, |x| robot.hand_pose(&x.q)),
+        "J" => drive(s, p, mode, |x| robot.hand_jacobian_in_base(&x.q)),
+        "JtF" => drive(s, p, mode, |x| {
+            // a wrench from the sample, so that it is not a constant of the loop
+            let wrench = [x.qd[0], x.qd[1], x.qd[2], x.qdd[0], x.qdd[1], x.qdd[2]];
+            robot.joint_torques_for_base_wrench(&x.q, &wrench)
+        }),
         "tau_reference" => drive(s, SLOW_PROTOCOL, mode, |x| {
             others.book.inverse_dynamics(&x.q, &x.qd, &x.qdd)
         }),
@@ -317,7 +327,7 @@ usage: timings [--all] [--fastest] [--robot ROBOT] [--function FUNCTION]
   --all          also time tau_reference, tau_rnea and M_crba
   --fastest      the fastest of 300 batches of 2,000 calls, not the median of 31 of 20,000
   --robot R      only robot R: puma560, stanford, ur5, random5, panda, ur5_dh, ur5_urdf
-  --function F   only function F: tau, M, g, C, h, tau_reference, tau_rnea, M_crba
+  --function F   only function F: tau, M, g, C, h, fk, J, JtF, tau_reference, tau_rnea, M_crba
   --calls N      make exactly N calls of one function, print nothing (for callgrind)";
 
 fn parse_args() -> Result<Args, String> {

@@ -1,20 +1,57 @@
 //! `equations()` and `equations_latex()` on the derived type (and the hidden constants
 //! `EQUATIONS`, `EQUATIONS_LATEX` they return): its equations of motion in the book's
-//! notation ([`inspect`]), the text also shown in the rustdoc of that impl.
+//! notation ([`inspect`]), the text also shown in the rustdoc of that impl; and the hand pose
+//! and Jacobians in the same notation, in the rustdoc of their methods.
 
+use crate::inspect::{Format, KinematicPart};
+use crate::method::Method;
 use crate::trace::Equations;
 use crate::{inspect, model};
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The impl holding the equations. Expanded within [`inspect::Limits::DERIVE`], which keeps
-/// the derive fast: a section that does not fit says so and points to `dynamics inspect`.
-pub(crate) fn equations(
-    input: &syn::DeriveInput,
-    eq: &Equations,
-    robot: &model::Robot,
-) -> TokenStream {
-    let inspection = inspect::inspect(eq, robot, inspect::Limits::DERIVE);
+/// What the derive prints for reading.
+pub(crate) struct Readable {
+    /// The impl holding the equations of motion.
+    pub(crate) equations: TokenStream,
+    /// The rustdoc of the kinematic methods that print in the book's notation.
+    pub(crate) docs: Vec<(Method, String)>,
+}
+
+impl Readable {
+    /// The rustdoc of `method`, if it has its own.
+    pub(crate) fn doc(&self, method: Method) -> Option<String> {
+        let (_, doc) = self.docs.iter().find(|(m, _)| *m == method)?;
+        Some(doc.clone())
+    }
+}
+
+/// The equations of motion and the kinematics in the book's notation, expanded together within
+/// [`inspect::Limits::DERIVE`], which keeps the derive fast: a section that does not fit says
+/// so and points to `dynamics inspect`.
+pub(crate) fn readable(input: &syn::DeriveInput, eq: &Equations, robot: &model::Robot) -> Readable {
+    let (dynamics, kinematics) =
+        inspect::inspect_with_kinematics(eq, robot, inspect::Limits::DERIVE);
+    let docs = [
+        (Method::HandPose, KinematicPart::HandPose),
+        (Method::HandJacobianInBase, KinematicPart::JacobianInBase),
+        (Method::HandJacobianInHand, KinematicPart::JacobianInHand),
+    ]
+    .into_iter()
+    .filter_map(|(method, part)| {
+        let text = kinematics.render_part(part, Format::Text)?;
+        let doc = format!(" {}\n\n```text\n{text}```", method.summary());
+        Some((method, doc))
+    })
+    .collect();
+    Readable {
+        equations: equations(input, &dynamics),
+        docs,
+    }
+}
+
+/// The impl holding the equations of motion.
+fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> TokenStream {
     let text = inspection.render(inspect::Format::Text);
     let latex = inspection.render(inspect::Format::Latex);
     let doc = format!(

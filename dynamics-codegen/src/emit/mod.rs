@@ -51,7 +51,7 @@ mod shared;
 mod sum_order;
 
 pub use count::{count, OpCount};
-pub(crate) use equations::equations;
+pub(crate) use equations::readable;
 pub(crate) use fallback::fallback;
 pub(crate) use items::runtime_path;
 pub use items::{generate, method, Generated, MethodCode, Module};

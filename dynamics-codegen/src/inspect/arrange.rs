@@ -1,8 +1,10 @@
 //! Arranging a polynomial's terms for reading: grouped by their accelerations and velocities
 //! (`(…) θ1''`, `… θ1' θ2'`), then by their sines and cosines with the common parameters taken
-//! out (`(1/2 m1 + m2) g l1 C1`).
+//! out (`(1/2 m1 + m2) g l1 C1`). The kinematics, which have no velocities, take the sines and
+//! cosines that several terms share out of them instead, as chapter 3 writes the hand pose:
+//! `px = C1(a2 C2 + a3 C23)`.
 
-use super::{Monomial, Sym};
+use super::{AngleSum, Monomial, Sym};
 use crate::symbolic::Number;
 use std::collections::BTreeMap;
 
@@ -77,6 +79,57 @@ fn arrange_configuration(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
             .collect();
         out.extend(wrap(inner, common.times(&config)));
     }
+    out
+}
+
+/// Terms without velocities, the sine or cosine that most terms have taken out of them (of the
+/// lowest joints where several tie), then again inside and in the rest, until no two terms
+/// share one: `a2 C1 C2 + a3 C1 C23 + d3 S1` → `C1(a2 C2 + a3 C23) + d3 S1`. A sum starts with
+/// its positive terms (`C4 C5 C6 - S4 S6`), each sign's in the order of their lowest joints.
+pub(super) fn arrange_factored(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+    let mut out = factor_out(terms);
+    // The lowest joints' sines and cosines first, as `l1 C1 + l2 C12`.
+    let first_angle = |t: &Term| {
+        let angles = t.factors.factors().iter();
+        angles.filter_map(|(s, _)| s.as_trig()).map(|(_, a)| a).min()
+    };
+    out.sort_by_key(|t| (t.coef.is_negative(), first_angle(t)));
+    out
+}
+
+fn factor_out(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+    let mut shared: BTreeMap<(AngleSum, bool), usize> = BTreeMap::new();
+    for (m, _) in &terms {
+        for (s, _) in m.factors() {
+            if let Some((cos, angle)) = s.as_trig() {
+                *shared.entry((angle, cos)).or_default() += 1;
+            }
+        }
+    }
+    // The first of the most shared: BTreeMap order is the lowest joints first, sine first.
+    let best = shared.into_iter().fold(
+        None,
+        |best: Option<((AngleSum, bool), usize)>, (key, n)| match best {
+            Some((_, m)) if m >= n => best,
+            _ => Some((key, n)),
+        },
+    );
+    let Some(((angle, cos), 2..)) = best else {
+        return arrange_configuration(terms);
+    };
+    let factor = if cos {
+        Sym::Cos(angle)
+    } else {
+        Sym::Sin(angle)
+    };
+    let (mut with, without): (Vec<_>, Vec<_>) = terms
+        .into_iter()
+        .partition(|(m, _)| m.exponent(&factor) > 0);
+    for (m, _) in &mut with {
+        m.divide_once(&factor);
+    }
+    let mut out = wrap(arrange_factored(with), Monomial::of(factor));
+    out.extend(arrange_factored(without));
     out
 }
 

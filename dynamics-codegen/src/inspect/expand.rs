@@ -2,9 +2,9 @@
 //! expanded polynomials grow fast with the number of joints (the code is emitted from the
 //! shared graph, never from these), so what does not fit is reported as too large.
 
-use super::arrange::{arrange, Term};
+use super::arrange::{arrange, arrange_factored, Term};
 use super::fold::fold_trig;
-use super::{Poly, Sym};
+use super::{Monomial, Poly, Sym};
 use crate::symbolic::{Node, NodeId, Number};
 use crate::trace::Equations;
 
@@ -37,6 +37,8 @@ impl Limits {
 pub(super) struct Expander<'a> {
     eq: &'a Equations,
     memo: Vec<Option<Option<Poly>>>,
+    /// Marks of the search in [`Expander::poly`], all false between searches.
+    seen: Vec<bool>,
     limits: Limits,
     work: u64,
 }
@@ -46,8 +48,20 @@ impl<'a> Expander<'a> {
         Expander {
             eq,
             memo: vec![None; eq.graph.len()],
+            seen: vec![false; eq.graph.len()],
             limits,
             work: 0,
+        }
+    }
+
+    /// A new budget of work for further outputs, keeping the polynomials found so far: the
+    /// nodes that did not fit the old budget are tried again.
+    pub(super) fn renew_budget(&mut self) {
+        self.work = 0;
+        for p in &mut self.memo {
+            if matches!(p, Some(None)) {
+                *p = None;
+            }
         }
     }
 
@@ -57,12 +71,22 @@ impl<'a> Expander<'a> {
         if let Some(p) = &self.memo[id.index()] {
             return p.clone();
         }
-        let live = self.eq.graph.live(&[id]);
-        for (n, node) in self.eq.graph.nodes().take(id.index() + 1) {
-            if !live[n.index()] || self.memo[n.index()].is_some() {
+        // The nodes it reads that are not expanded yet, children first (the arena's order):
+        // a search that stops at expanded nodes, so each output costs what is new in it.
+        let mut todo = Vec::new();
+        let mut stack = vec![id];
+        while let Some(n) = stack.pop() {
+            if self.memo[n.index()].is_some() || std::mem::replace(&mut self.seen[n.index()], true)
+            {
                 continue;
             }
-            let p = self.node(node);
+            todo.push(n);
+            stack.extend(self.eq.graph.node(n).operands());
+        }
+        todo.sort_unstable();
+        for n in todo {
+            self.seen[n.index()] = false;
+            let p = self.node(self.eq.graph.node(n));
             self.memo[n.index()] = Some(p);
         }
         self.memo[id.index()].clone().flatten()
@@ -98,6 +122,20 @@ impl<'a> Expander<'a> {
     /// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
     /// arranged; `None` when it does not fit the limits.
     pub(super) fn terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
+        self.arranged(id, arrange)
+    }
+
+    /// The readable form of node `id` as [`Expander::terms`] gives it, its common sines and
+    /// cosines taken out (the kinematics).
+    pub(super) fn factored_terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
+        self.arranged(id, arrange_factored)
+    }
+
+    fn arranged(
+        &mut self,
+        id: NodeId,
+        arrange: fn(Vec<(Monomial, Number)>) -> Vec<Term>,
+    ) -> Option<Vec<Term>> {
         let mut terms = self.poly(id)?.into_terms();
         // Each search for a pair to fold reads every term.
         fold_trig(&mut terms, &mut |n| self.charge(n as u64))?;

@@ -122,10 +122,12 @@ mod tests {
         let text = Printer {
             format: Format::Text,
             kinds: &kinds,
+            factors_first: false,
         };
         let latex = Printer {
             format: Format::Latex,
             kinds: &kinds,
+            factors_first: false,
         };
         let diagonal = Label::new(Quantity::Inertia, &[1, 1]).with_actuator_inertia();
         assert_eq!(diagonal.render(&text), "D22 + I2(act)");
@@ -145,6 +147,7 @@ mod tests {
         let wide = Printer {
             format: Format::Text,
             kinds: &ten,
+            factors_first: false,
         };
         assert_eq!(
             Label::new(Quantity::Coriolis, &[0, 9]).render(&wide),

@@ -60,33 +60,68 @@ pub struct Inspection {
 #[must_use]
 pub fn inspect(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
     let mut expander = Expander::new(eq, limits);
-    Inspection {
-        name: robot.name.clone(),
-        kinematics: false,
-        kinds: eq.kinds.clone(),
-        offsets: eq.angle_offsets.iter().any(Option::is_some),
-        sections: sections::sections(&mut expander, eq, robot),
-        limits,
-    }
+    let sections = sections::sections(&mut expander, eq, robot);
+    Inspection::new(eq, robot, false, sections, limits)
 }
 
 /// The hand pose `[n o a p]` and the hand's Jacobians (in the base frame and ᴴJ), expanded and
 /// arranged as [`inspect`] does the equations of motion: the book's chapter 3 forms
-/// (`nx = C1 C23 …`). For the command-line tool only, so that the derive does not expand them.
+/// (`nx = C1 C23 …`).
 #[must_use]
 pub fn inspect_kinematics(eq: &Equations, robot: &Robot, limits: Limits) -> Inspection {
+    let sections = sections::kinematic_sections(&mut Expander::new(eq, limits), eq);
+    Inspection::new(eq, robot, true, sections, limits)
+}
+
+/// [`inspect`] and [`inspect_kinematics`] with one expansion, as the derive prints both: the
+/// kinematics reuse the polynomials the equations of motion expanded (the joints' rotations
+/// and positions), and each has a budget of `limits`, so the equations print as [`inspect`]
+/// prints them.
+#[must_use]
+pub fn inspect_with_kinematics(
+    eq: &Equations,
+    robot: &Robot,
+    limits: Limits,
+) -> (Inspection, Inspection) {
     let mut expander = Expander::new(eq, limits);
-    Inspection {
-        name: robot.name.clone(),
-        kinematics: true,
-        kinds: eq.kinds.clone(),
-        offsets: eq.angle_offsets.iter().any(Option::is_some),
-        sections: sections::kinematic_sections(&mut expander, eq),
-        limits,
-    }
+    let dynamics = sections::sections(&mut expander, eq, robot);
+    expander.renew_budget();
+    let kinematics = sections::kinematic_sections(&mut expander, eq);
+    (
+        Inspection::new(eq, robot, false, dynamics, limits),
+        Inspection::new(eq, robot, true, kinematics, limits),
+    )
+}
+
+/// A part of the kinematics that prints on its own (in the rustdoc of its method).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum KinematicPart {
+    /// The hand pose `[n o a p]`.
+    HandPose,
+    /// The hand's Jacobian in the base frame.
+    JacobianInBase,
+    /// The hand's Jacobian in the hand frame, ᴴJ.
+    JacobianInHand,
 }
 
 impl Inspection {
+    fn new(
+        eq: &Equations,
+        robot: &Robot,
+        kinematics: bool,
+        sections: Vec<Section>,
+        limits: Limits,
+    ) -> Inspection {
+        Inspection {
+            name: robot.name.clone(),
+            kinematics,
+            kinds: eq.kinds.clone(),
+            offsets: eq.angle_offsets.iter().any(Option::is_some),
+            sections,
+            limits,
+        }
+    }
+
     /// Whether every equation fitted the limits.
     #[must_use]
     pub fn complete(&self) -> bool {

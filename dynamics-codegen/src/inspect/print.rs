@@ -24,6 +24,10 @@ pub enum Format {
 pub(super) struct Printer<'a> {
     pub(super) format: Format,
     pub(super) kinds: &'a [JointKind],
+    /// Whether a group of sines and cosines has its factors before it, `C1(a2 C2 + a3 C23)`
+    /// as chapter 3 writes the kinematics, rather than after, as chapter 6 writes the dynamics
+    /// and any group of parameters alone: `(1/2 m1 + m2) g l1 C1`, `(l2 + 0.1) C12`.
+    pub(super) factors_first: bool,
 }
 
 const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
@@ -133,18 +137,31 @@ impl Printer<'_> {
         if !abs.is_one() || (t.group.is_empty() && t.factors.is_one()) {
             parts.push(self.number(abs));
         }
-        if !t.group.is_empty() {
+        let group = (!t.group.is_empty()).then(|| {
             let inner = self.sum(&t.group);
-            parts.push(if self.latex() {
+            if self.latex() {
                 format!("\\left({inner}\\right)")
             } else {
                 format!("({inner})")
-            });
-        }
+            }
+        });
         let mut factors: Vec<&(Sym, u32)> = t.factors.factors().iter().collect();
         factors.sort_by_key(|(s, _)| person_order(s));
-        for (s, e) in factors {
-            parts.push(self.power(self.symbol(s), *e));
+        let factors: Vec<String> = factors
+            .into_iter()
+            .map(|(s, e)| self.power(self.symbol(s), *e))
+            .collect();
+        match group {
+            Some(group) if self.factors_first && !factors.is_empty() && has_trig(&t.group) => {
+                parts.extend(factors);
+                let last = parts.pop().unwrap_or_default();
+                parts.push(format!("{last}{group}"));
+            }
+            Some(group) => {
+                parts.push(group);
+                parts.extend(factors);
+            }
+            None => parts.extend(factors),
         }
         parts.join(" ")
     }
@@ -185,6 +202,13 @@ impl Printer<'_> {
         }
         s
     }
+}
+
+/// Whether a sine or cosine appears in `terms`.
+fn has_trig(terms: &[Term]) -> bool {
+    terms
+        .iter()
+        .any(|t| t.factors.factors().iter().any(|(s, _)| s.is_trig()) || has_trig(&t.group))
 }
 
 /// Masses first, then gravity, then the rest in symbol order, as the book writes

@@ -2,9 +2,10 @@
 //! with its equations (LaTeX in `align*` environments), or a note where a section did not
 //! fit the limits.
 
+use super::label::Quantity;
 use super::print::{Format, Printer};
 use super::sections::{Entry, Section};
-use super::Inspection;
+use super::{Inspection, KinematicPart};
 use std::fmt::Write;
 
 impl Inspection {
@@ -14,12 +15,33 @@ impl Inspection {
         let p = Printer {
             format,
             kinds: &self.kinds,
+            factors_first: self.kinematics,
         };
         let mut out = self.header(&p);
         for section in &self.sections {
             self.render_section(&p, section, &mut out);
         }
         out
+    }
+
+    /// One part of the kinematics ([`inspect_kinematics`](super::inspect_kinematics)): the
+    /// notation, then its section; `None` for the equations of motion.
+    #[must_use]
+    pub fn render_part(&self, part: KinematicPart, format: Format) -> Option<String> {
+        let quantity = match part {
+            KinematicPart::HandPose => Quantity::HandPose,
+            KinematicPart::JacobianInBase => Quantity::JacobianInBase,
+            KinematicPart::JacobianInHand => Quantity::JacobianInHand,
+        };
+        let section = self.sections.iter().find(|s| s.quantity == quantity)?;
+        let p = Printer {
+            format,
+            kinds: &self.kinds,
+            factors_first: self.kinematics,
+        };
+        let mut out = self.header(&p);
+        self.render_section(&p, section, &mut out);
+        Some(out)
     }
 
     /// The robot's name, its joint variables and the notation.
@@ -75,8 +97,13 @@ impl Inspection {
             let _ = writeln!(out, "{title}:");
         }
         if section.entries.iter().any(|e| e.value.is_none()) {
+            let command = if self.kinematics {
+                "dynamics inspect --kinematics"
+            } else {
+                "dynamics inspect"
+            };
             let msg = format!(
-                "too large to print here (over {} terms or {} term operations): the `dynamics inspect` command prints it",
+                "too large to print here (over {} terms or {} term operations): the `{command}` command prints it",
                 self.limits.max_terms, self.limits.max_work
             );
             if p.latex() {

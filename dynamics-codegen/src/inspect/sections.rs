@@ -110,7 +110,7 @@ pub(super) fn kinematic_sections(x: &mut Expander<'_>, eq: &Equations) -> Vec<Se
         .flat_map(|column| (0..3).map(move |row| (row, column)))
         .map(|(row, column)| Entry {
             labels: vec![Label::new(Quantity::HandPose, &[row, column])],
-            value: x.terms(k.hand_pose[row][column]),
+            value: x.factored_terms(k.hand_pose[row][column]),
         })
         .collect();
     let mut jacobian = |quantity, rows: &[Vec<_>]| {
@@ -119,7 +119,7 @@ pub(super) fn kinematic_sections(x: &mut Expander<'_>, eq: &Equations) -> Vec<Se
             for (j, &id) in row.iter().enumerate() {
                 entries.push(Entry {
                     labels: vec![Label::new(quantity, &[i, j])],
-                    value: x.terms(id),
+                    value: x.factored_terms(id),
                 });
             }
         }

@@ -1,6 +1,6 @@
 //! Folding, arranging and printing of polynomials typed in [`Poly::parse`] syntax.
 
-use super::arrange::arrange;
+use super::arrange::{arrange, arrange_factored};
 use super::fold::fold_trig;
 use super::print::{Format, Printer};
 use super::Poly;
@@ -8,6 +8,15 @@ use crate::algo::JointKind;
 
 /// The readable text of a polynomial written in `Poly::parse` syntax.
 fn readable(text: &str, format: Format) -> String {
+    print(text, format, false)
+}
+
+/// As the kinematics print: common sines and cosines taken out, written before their group.
+fn factored(text: &str) -> String {
+    print(text, Format::Text, true)
+}
+
+fn print(text: &str, format: Format, kinematics: bool) -> String {
     let mut terms = Poly::parse(text).unwrap().into_terms();
     fold_trig(&mut terms, &mut |_| Some(())).unwrap();
     let kinds = [
@@ -18,8 +27,14 @@ fn readable(text: &str, format: Format) -> String {
     let p = Printer {
         format,
         kinds: &kinds,
+        factors_first: kinematics,
     };
-    p.sum(&arrange(terms.into_iter().collect()))
+    let terms = terms.into_iter().collect();
+    p.sum(&if kinematics {
+        arrange_factored(terms)
+    } else {
+        arrange(terms)
+    })
 }
 
 macro_rules! reads {
@@ -67,4 +82,25 @@ fn latex() {
         readable("-1/2*m2*l1*l2*S3*qd1^2 + I1act*qdd1 + payload*C12", Format::Latex),
         "I_{1act} \\ddot{\\theta}_{1} - \\frac{1}{2} m_{2} l_{1} l_{2} S_{3} \\dot{\\theta}_{1}^{2} + \\mathit{payload} C_{12}"
     );
+}
+
+/// The hand pose as chapter 3 writes it: the sines and cosines shared by most terms taken
+/// out (the lowest joint's where several tie), again inside, positive terms first.
+#[test]
+fn kinematics_take_out_common_sines_and_cosines() {
+    for (polynomial, printed) in [
+        ("a*C1*C2 + b*C1*C3", "C1(a C2 + b C3)"),
+        ("a*C1*C2 + b*C1*C3 + d*S1", "C1(a C2 + b C3) + d S1"),
+        ("-a*S1*C2 - b*S1*C3", "-S1(a C2 + b C3)"),
+        // C1 and S4 both in two terms: C1 first; inside, the positive term first
+        ("C1*C2*C4 - C1*S3*S4 - S1*S4", "C1(C2 C4 - S3 S4) - S1 S4"),
+        // nothing shared: as the dynamics print
+        ("a*S1 + b*C2", "a S1 + b C2"),
+        // a factor before a group of sines and cosines only: parameters alone go first
+        ("a*C1 + b*C1", "(a + b) C1"),
+        ("a*C1*C2 + a*C1*S2", "C1(a S2 + a C2)"),
+        ("2*C1*C2*C3 + 2*C1*S2*S3", "C1(2 S2 S3 + 2 C2 C3)"),
+    ] {
+        assert_eq!(factored(polynomial), printed, "{polynomial}");
+    }
 }

@@ -43,19 +43,7 @@ impl Graph {
             if std::mem::replace(&mut live[id.index()], true) {
                 continue;
             }
-            match self.node(id) {
-                Node::Add(a, b) | Node::Mul(a, b) => {
-                    stack.push(a);
-                    stack.push(b);
-                }
-                Node::Neg(a)
-                | Node::Recip(a)
-                | Node::Sin(a)
-                | Node::Cos(a)
-                | Node::Sign(a)
-                | Node::Tanh(a) => stack.push(a),
-                Node::Const(_) | Node::Var(_) => {}
-            }
+            stack.extend(self.node(id).operands());
         }
         live
     }

@@ -69,3 +69,20 @@ pub enum Node {
     /// `tanh a` (smooth Coulomb friction).
     Tanh(NodeId),
 }
+
+impl Node {
+    /// Its operands, none for a leaf.
+    pub fn operands(self) -> impl Iterator<Item = NodeId> {
+        let (a, b) = match self {
+            Node::Add(a, b) | Node::Mul(a, b) => (Some(a), Some(b)),
+            Node::Neg(a)
+            | Node::Recip(a)
+            | Node::Sin(a)
+            | Node::Cos(a)
+            | Node::Sign(a)
+            | Node::Tanh(a) => (Some(a), None),
+            Node::Const(_) | Node::Var(_) => (None, None),
+        };
+        a.into_iter().chain(b)
+    }
+}
