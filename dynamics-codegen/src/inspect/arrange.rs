@@ -91,7 +91,10 @@ pub(super) fn arrange_factored(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
     // The lowest joints' sines and cosines first, as `l1 C1 + l2 C12`.
     let first_angle = |t: &Term| {
         let angles = t.factors.factors().iter();
-        angles.filter_map(|(s, _)| s.as_trig()).map(|(_, a)| a).min()
+        angles
+            .filter_map(|(s, _)| s.as_trig())
+            .map(|(_, a)| a)
+            .min()
     };
     out.sort_by_key(|t| (t.coef.is_negative(), first_angle(t)));
     out
