@@ -67,8 +67,13 @@ impl Default for Pose {
 /// is kept.
 pub const QUARTER_TURN_TOLERANCE: f64 = 1e-5;
 
+/// The most quarter turns (either way) an angle snaps to: four turns. Larger angles are kept as
+/// written (the front ends reject plain numbers above 2π anyway).
+pub const MAX_SNAPPED_QUARTER_TURNS: f64 = 16.0;
+
 /// `angle` as an exact multiple of π/2 (`k/2 · π`) if it is a number within
-/// [`QUARTER_TURN_TOLERANCE`] of one; otherwise unchanged.
+/// [`QUARTER_TURN_TOLERANCE`] of one, at most [`MAX_SNAPPED_QUARTER_TURNS`] quarter turns;
+/// otherwise unchanged.
 #[must_use]
 pub fn snap_angle(angle: &Value) -> Value {
     if angle.pi_multiple().is_some() {
@@ -79,7 +84,8 @@ pub fn snap_angle(angle: &Value) -> Value {
     };
     let quarter = std::f64::consts::FRAC_PI_2;
     let k = (x / quarter).round();
-    if (x - k * quarter).abs() > QUARTER_TURN_TOLERANCE {
+    // Far out, a float's spacing exceeds the tolerance and every number would "snap".
+    if k.abs() > MAX_SNAPPED_QUARTER_TURNS || (x - k * quarter).abs() > QUARTER_TURN_TOLERANCE {
         return angle.clone();
     }
     #[allow(clippy::cast_possible_truncation)]
@@ -285,6 +291,10 @@ mod tests {
             snap_angle(&Value::from_f64(0.0001)),
             Value::from_f64(0.0001)
         );
+        // Beyond four turns, and where floats are coarser than the tolerance, kept as written.
+        for far in [-1e308, 1e30, 17.0 * std::f64::consts::FRAC_PI_2] {
+            assert_eq!(snap_angle(&Value::from_f64(far)), Value::from_f64(far));
+        }
         assert_eq!(
             snap_angle(&Value::from_f64(-1.57079))
                 .pi_multiple()
