@@ -13,7 +13,7 @@ mod value;
 
 pub use frame::{
     mat_mul, mat_vec, rotate_inertia, sin_cos, snap_angle, transpose, AxisFrame, Matrix, Placement,
-    Pose, QUARTER_TURN_TOLERANCE,
+    Pose, MAX_SNAPPED_QUARTER_TURNS, QUARTER_TURN_TOLERANCE,
 };
 pub use lower::{
     lower_frames, FramePart, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE,
