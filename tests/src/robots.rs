@@ -1,7 +1,7 @@
-//! The robots of the reference data (`data/reference/`, `data/panda/`, `data/frames/`) and
-//! the D-H twins of two URDF robots (`robots/*_urdf_dh.toml`, made by `data/urdf/twins.py`),
-//! derived once for every test that compares them with the data. Paths are relative to this
-//! crate's `Cargo.toml`.
+//! The robots of the reference data (`data/reference/`, `data/panda/`, `data/frames/`), the
+//! D-H twins of two URDF robots (`robots/*_urdf_dh.toml`, made by `data/urdf/twins.py`) and a
+//! two-link arm with friction, derived once for the tests that use them. Paths are relative to
+//! this crate's `Cargo.toml`.
 
 use dynamics_runtime::Dynamics;
 
@@ -90,3 +90,21 @@ robot!(
     PandaTwin,
     "../robots/panda_urdf_dh.toml"
 );
+
+/// A planar two-link arm (Niku Example 6.4's shape) with friction on both joints; joint 2's
+/// Coulomb term smoothed with a run-time ε.
+#[derive(Dynamics)]
+#[dynamics(
+    gravity = [0, -9.81, 0],
+    dh = [[q, 0, 0.7, 0], [q, 0, 0.5, 0]],
+    link(mass = 2, com = [-0.35, 0, 0], inertia = [0, 0.08, 0.08, 0, 0, 0],
+         friction = (viscous = 0.3, coulomb = 1.5, offset = -0.2)),
+    link(mass = 1, com = [-0.25, 0, 0], inertia = [0, 0.02, 0.02, 0, 0, 0],
+         friction = (viscous = fv2, coulomb = 0.8, smoothing = eps)),
+)]
+pub struct Rubbing {
+    /// Joint 2's viscous coefficient.
+    pub fv2: f64,
+    /// Joint 2's smoothing velocity.
+    pub eps: f64,
+}

@@ -20,8 +20,8 @@ use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{matrix, samples, vector};
 use dynamics_tests::robots::{
-    General, NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford, Tilted,
-    Ur5, Ur5Urdf,
+    General, NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Rubbing, Stanford,
+    Tilted, Ur5, Ur5Urdf,
 };
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 
@@ -204,21 +204,6 @@ fn not_positive_definite_is_an_error() {
         NotPositiveDefinite.to_string(),
         "the mass matrix is not positive definite at this configuration"
     );
-}
-
-/// As in `friction.rs`: viscous, Coulomb and offset on joint 1, smoothed Coulomb on joint 2.
-#[derive(Dynamics)]
-#[dynamics(
-    gravity = [0, -9.81, 0],
-    dh = [[q, 0, 0.7, 0], [q, 0, 0.5, 0]],
-    link(mass = 2, com = [-0.35, 0, 0], inertia = [0, 0.08, 0.08, 0, 0, 0],
-         friction = (viscous = 0.3, coulomb = 1.5, offset = -0.2)),
-    link(mass = 1, com = [-0.25, 0, 0], inertia = [0, 0.02, 0.02, 0, 0, 0],
-         friction = (viscous = fv2, coulomb = 0.8, smoothing = eps)),
-)]
-struct Rubbing {
-    fv2: f64,
-    eps: f64,
 }
 
 #[test]

@@ -6,22 +6,7 @@
 
 use dynamics_runtime::Dynamics;
 use dynamics_test_support::Rng;
-
-/// A planar two-link arm (Niku Example 6.4's shape) with friction on both joints; joint 2's
-/// Coulomb term smoothed with a run-time ε.
-#[derive(Dynamics)]
-#[dynamics(
-    gravity = [0, -9.81, 0],
-    dh = [[q, 0, 0.7, 0], [q, 0, 0.5, 0]],
-    link(mass = 2, com = [-0.35, 0, 0], inertia = [0, 0.08, 0.08, 0, 0, 0],
-         friction = (viscous = 0.3, coulomb = 1.5, offset = -0.2)),
-    link(mass = 1, com = [-0.25, 0, 0], inertia = [0, 0.02, 0.02, 0, 0, 0],
-         friction = (viscous = fv2, coulomb = 0.8, smoothing = eps)),
-)]
-struct Rubbing {
-    fv2: f64,
-    eps: f64,
-}
+use dynamics_tests::robots::Rubbing;
 
 /// The same arm without friction.
 #[derive(Dynamics)]
