@@ -24,7 +24,10 @@
 //      dynamics (`fd`: aba at the sample's (q, qd, tau)) and M⁻¹ (`Minv`: computeMinverse, which
 //      fills the upper triangle only, as crba does for `M`), where the file's M is positive
 //      definite at every sample (not the reference UR5, whose M66 is 0): checked first, aba
-//      against the sample's qdd and Minv (mirrored) by Minv M = I, on every sample.
+//      against the sample's qdd and Minv (mirrored) by Minv M = I, on every sample. The
+//      derivatives: `dtau` (computeRNEADerivatives at (q, qd, qdd), which also fills M) and,
+//      where M is positive definite, `dqdd` (computeABADerivatives at (q, qd, tau), which also
+//      gives qdd and Minv).
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -36,7 +39,8 @@
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
 // of this shared machine. The kinematics (fk, J, JtF) are checked against Pinocchio's on every
 // sample, with JtF's wrench the first six values of qdd; fd and Minv as Pinocchio's are (fd's
-// third input is the sample's tau). Each line then reads
+// third input is the sample's tau); dtau and dqdd against Pinocchio's derivatives. Each line
+// then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
 
@@ -59,10 +63,12 @@
 
 #include "pinocchio/multibody.hpp"
 #include "pinocchio/algorithm/aba.hpp"
+#include "pinocchio/algorithm/aba-derivatives.hpp"
 #include "pinocchio/algorithm/crba.hpp"
 #include "pinocchio/algorithm/frames.hpp"
 #include "pinocchio/algorithm/kinematics.hpp"
 #include "pinocchio/algorithm/rnea.hpp"
+#include "pinocchio/algorithm/rnea-derivatives.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // Minimal JSON reader: null, booleans, numbers, strings, arrays, objects. Enough for the
@@ -727,7 +733,8 @@ static void check_generated(
   bool forward)
 {
   const std::size_t n = gen.dof(robot.c_str());
-  std::vector<double> out(std::max(n * n, std::size_t(12)));
+  Data data(model);
+  std::vector<double> out(std::max(3 * n * n, std::size_t(12)));
   auto rows = [&](std::size_t r, std::size_t c) {
     Eigen::MatrixXd m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
     for (std::size_t i = 0; i < r; ++i)
@@ -741,13 +748,15 @@ static void check_generated(
       v(static_cast<Eigen::Index>(i), 0) = out[i];
     return v;
   };
-  auto matrix = [&]() {
+  // The k-th n × n matrix of the output (the derivatives write two or three in a row).
+  auto block = [&](std::size_t k) {
     Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
     for (std::size_t r = 0; r < n; ++r)
       for (std::size_t c = 0; c < n; ++c)
-        m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = out[r * n + c];
+        m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = out[k * n * n + r * n + c];
     return m;
   };
+  auto matrix = [&]() { return block(0); };
   for (std::size_t s = 0; s < samples.size(); ++s)
   {
     const json::Value & sample = samples[s];
@@ -772,9 +781,18 @@ static void check_generated(
     check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
     gen.get(robot, "JtF")(q.data(), v.data(), a.data(), out.data());
     check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
+    pinocchio::computeRNEADerivatives(model, data, q, v, a);
+    gen.get(robot, "dtau")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "dtau/dq" + at + " against Pinocchio", block(0), data.dtau_dq, s);
+    check(robot, "dtau/dqd" + at + " against Pinocchio", block(1), data.dtau_dv, s);
     if (!forward)
       continue;
     const Eigen::VectorXd tau = vecn(sample["tau"]);
+    pinocchio::computeABADerivatives(model, data, q, v, tau);
+    gen.get(robot, "dqdd")(q.data(), v.data(), tau.data(), out.data());
+    check(robot, "dqdd/dq" + at + " against Pinocchio", block(0), data.ddq_dq, s);
+    check(robot, "dqdd/dqd" + at + " against Pinocchio", block(1), data.ddq_dv, s);
+    check(robot, "dqdd/dtau" + at + " against Pinocchio", block(2), symmetric(data.Minv), s);
     gen.get(robot, "fd")(q.data(), v.data(), tau.data(), out.data());
     check(robot, "fd" + at, vector(n), a, s);
     gen.get(robot, "Minv")(q.data(), v.data(), a.data(), out.data());
@@ -873,7 +891,7 @@ int main(int argc, char ** argv)
     Data data(model);
 
     const auto n = static_cast<std::size_t>(qs[0].size());
-    std::vector<double> out(std::max(n * n, std::size_t(12)));
+    std::vector<double> out(std::max(3 * n * n, std::size_t(12)));
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, model.nv);
     Eigen::VectorXd JtF(model.nv);
     // Pinocchio's `function`, and the generated one in turn with it when it is loaded, the
@@ -924,8 +942,16 @@ int main(int argc, char ** argv)
       JtF.noalias() = J.transpose() * as[k].head<6>();
       return JtF[0];
     });
+    time("dtau", [&](std::size_t k) {
+      pinocchio::computeRNEADerivatives(model, data, qs[k], vs[k], as[k]);
+      return data.dtau_dq(0, 0);
+    });
     if (forward)
     {
+      time_with("dqdd", taus, [&](std::size_t k) {
+        pinocchio::computeABADerivatives(model, data, qs[k], vs[k], taus[k]);
+        return data.ddq_dq(0, 0);
+      });
       time_with("fd", taus, [&](std::size_t k) {
         return pinocchio::aba(model, data, qs[k], vs[k], taus[k])[0];
       });

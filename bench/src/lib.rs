@@ -36,7 +36,8 @@ pub const ROBOTS: [&str; 7] = [
 // Links 1 and 3 as published break the triangle inequality of principal moments.
 #[dynamics(
     file = "../tests/data/reference/robots/puma560.json",
-    check_inertia = false
+    check_inertia = false,
+    derivatives = true
 )]
 pub struct Puma560;
 
@@ -45,35 +46,44 @@ pub struct Puma560;
 // Link 5 as published breaks the triangle inequality of principal moments.
 #[dynamics(
     file = "../tests/data/reference/robots/stanford.json",
-    check_inertia = false
+    check_inertia = false,
+    derivatives = true
 )]
 pub struct Stanford;
 
 /// The UR5 (Robotics Toolbox parameters, point masses): RRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../tests/data/reference/robots/ur5.json")]
+#[dynamics(file = "../tests/data/reference/robots/ur5.json", derivatives = true)]
 pub struct Ur5;
 
 /// A seeded random robot with general inertial parameters: PRPRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../tests/data/reference/robots/random5.json")]
+#[dynamics(
+    file = "../tests/data/reference/robots/random5.json",
+    derivatives = true
+)]
 pub struct Random5;
 
 /// The Franka Emika Panda arm (modified D-H, inertias from its URDF): RRRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../tests/data/panda/robot.json")]
+#[dynamics(file = "../tests/data/panda/robot.json", derivatives = true)]
 pub struct Panda;
 
 /// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table, its link inertials re-expressed in
 /// the D-H frames (`tests/data/urdf/twins.py`): RRRRRR. Not the Robotics Toolbox's [`Ur5`].
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../robots/ur5_urdf_dh.toml")]
+#[dynamics(file = "../robots/ur5_urdf_dh.toml", derivatives = true)]
 pub struct Ur5Dh;
 
 /// The UR5 derived from its URDF (`robots/urdf/ur5.urdf`, base_link to tool0): the robot of
 /// [`Ur5Dh`], lowered to its own D-H table by the URDF front end.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(urdf = "../robots/urdf/ur5.urdf", base = "base_link", tip = "tool0")]
+#[dynamics(
+    urdf = "../robots/urdf/ur5.urdf",
+    base = "base_link",
+    tip = "tool0",
+    derivatives = true
+)]
 pub struct Ur5Urdf;
 
 /// One reference sample of an `N`-joint robot: a state and the torques Pinocchio computed for it.

@@ -24,7 +24,7 @@ pub enum Command {
     /// Print the equations of motion in the book's notation (Niku, chapter 6)
     Inspect(Inspect),
     /// Print a standalone Rust module with the code `#[derive(Dynamics)]` generates
-    Emit(RobotFile),
+    Emit(Emit),
     /// Print expansion time, operation counts, depth and code size per method
     Stats(Stats),
     /// Print τ, M, C and g at one state
@@ -70,9 +70,21 @@ impl FromStr for Tool {
 }
 
 #[derive(Args, Debug)]
+pub struct Emit {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// Also the `DynamicsDerivatives` impl, as `#[dynamics(..., derivatives = true)]` asks
+    #[arg(long)]
+    pub derivatives: bool,
+}
+
+#[derive(Args, Debug)]
 pub struct Stats {
     #[command(flatten)]
     pub robot: RobotFile,
+    /// With the derivatives' methods, as `#[dynamics(..., derivatives = true)]` asks
+    #[arg(long)]
+    pub derivatives: bool,
     /// Times the whole derive this many times and prints the fastest run, the one least slowed
     /// by the machine's other work
     #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]

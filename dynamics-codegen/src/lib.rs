@@ -45,13 +45,19 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
 }
 
 /// What `#[derive(Dynamics)]` expands to for `robot` on the type `input`, once the derive
-/// input is parsed: for tools that time the derive (`dynamics stats`) on a robot they loaded.
+/// input is parsed, with `DynamicsDerivatives` if `derivatives`: for tools that time the
+/// derive (`dynamics stats`) on a robot they loaded.
 #[must_use]
-pub fn expand_robot(input: &syn::DeriveInput, robot: &model::Robot) -> TokenStream {
+pub fn expand_robot(
+    input: &syn::DeriveInput,
+    robot: &model::Robot,
+    derivatives: bool,
+) -> TokenStream {
     let parsed = front::Input {
         robot: robot.clone(),
         krate: None,
         tracked_file: None,
+        derivatives,
     };
     expand(input, &parsed)
 }
@@ -59,7 +65,10 @@ pub fn expand_robot(input: &syn::DeriveInput, robot: &model::Robot) -> TokenStre
 /// The expansion of a parsed derive: the generated items and the readable equations, in a
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
-    let eq = trace::derive(&parsed.robot);
+    let mut eq = trace::derive(&parsed.robot);
+    if parsed.derivatives {
+        eq.add_derivatives();
+    }
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields

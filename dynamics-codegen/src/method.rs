@@ -62,6 +62,11 @@ pub enum Returns {
     SolvedMatrix,
     /// `Result<[T; N], NotPositiveDefinite>`: a vector solved with the LDLᵀ of M.
     SolvedVector,
+    /// `InverseDynamicsDerivatives<[[T; N]; N]>`: `∂τ/∂q`, `∂τ/∂q̇`.
+    InverseDerivatives,
+    /// `Result<ForwardDynamicsDerivatives<[T; N], [[T; N]; N]>, NotPositiveDefinite>`: `q̈` and
+    /// `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ`.
+    ForwardDerivatives,
 }
 
 /// A family of methods, emitted in a module of its own with its own shared configuration and
@@ -75,11 +80,35 @@ pub enum Family {
     Kinematics,
     /// What solves with M through its LDLᵀ: forward dynamics, `M⁻¹`.
     Forward,
+    /// The derivatives of inverse and forward dynamics: the opt-in trait
+    /// `DynamicsDerivatives`, generated only for a robot that asks for it.
+    Derivatives,
 }
 
 impl Family {
     /// Every family, in the order the derive emits their modules.
-    pub const ALL: &'static [Family] = &[Family::Dynamics, Family::Kinematics, Family::Forward];
+    pub const ALL: &'static [Family] = &[
+        Family::Dynamics,
+        Family::Kinematics,
+        Family::Forward,
+        Family::Derivatives,
+    ];
+
+    /// The runtime trait its methods belong to.
+    #[must_use]
+    pub fn trait_name(self) -> &'static str {
+        match self {
+            Family::Derivatives => "DynamicsDerivatives",
+            Family::Dynamics | Family::Kinematics | Family::Forward => "Dynamics",
+        }
+    }
+
+    /// Whether the derive writes it only for a robot that asks for it
+    /// (`derivatives = true`).
+    #[must_use]
+    pub fn is_opt_in(self) -> bool {
+        self == Family::Derivatives
+    }
 
     /// The name of the module holding its generated functions.
     #[must_use]
@@ -88,6 +117,7 @@ impl Family {
             Family::Dynamics => "__dynamics",
             Family::Kinematics => "__kinematics",
             Family::Forward => "__forward",
+            Family::Derivatives => "__derivatives",
         }
     }
 
@@ -98,6 +128,7 @@ impl Family {
             Family::Dynamics => "",
             Family::Kinematics => "kinematic ",
             Family::Forward => "forward ",
+            Family::Derivatives => "derivatives' ",
         }
     }
 }
@@ -150,6 +181,12 @@ macro_rules! returns {
     (solved_vector) => {
         Returns::SolvedVector
     };
+    (inverse_derivatives) => {
+        Returns::InverseDerivatives
+    };
+    (forward_derivatives) => {
+        Returns::ForwardDerivatives
+    };
 }
 
 /// The `Family` of a row's family name.
@@ -162,6 +199,9 @@ macro_rules! family {
     };
     (forward) => {
         Family::Forward
+    };
+    (derivatives) => {
+        Family::Derivatives
     };
 }
 
@@ -300,13 +340,25 @@ impl Method {
                 pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },
+            Method::InverseDynamicsDerivatives => {
+                Shape::Stack(eq.derivatives.as_ref().map_or(&[], |d| &d.inverse))
+            }
+            Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
+                pivots: &eq.forward.factors.pivots,
+                vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
+                stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
+            },
         }
     }
 
     /// Whether the derive writes it for these equations: a method the trait gives a body
-    /// of zeros (friction) only where its result is not zero.
+    /// of zeros (friction) only where its result is not zero, an opt-in family's only where
+    /// the robot asked for it.
     #[must_use]
     pub fn is_generated(self, eq: &Equations) -> bool {
+        if self.family().is_opt_in() && eq.derivatives.is_none() {
+            return false;
+        }
         !self.has_default()
             || self
                 .shape(eq)
@@ -338,6 +390,7 @@ impl Method {
             .replace("{k}", &(k + 1).to_string())
             .replace("{i}", &(i + 1).to_string())
             .replace("{j}", &(j + 1).to_string())
+            .replace("{x}", self.arguments().get(k).map_or("", |a| a.name()))
             .replace("{equation}", self.equation().unwrap_or_default())
     }
 }

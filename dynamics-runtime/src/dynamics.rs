@@ -1,7 +1,11 @@
-//! The trait that `#[derive(Dynamics)]` implements, declared from the method table
-//! (`methods.rs`): `τ = M(q) q̈ + C(q, q̇) q̇ + g(q)` (Niku eq. 6.46) and its parts.
+//! The traits that `#[derive(Dynamics)]` implements, declared from the method table
+//! (`methods.rs`): `τ = M(q) q̈ + C(q, q̇) q̇ + g(q)` (Niku eq. 6.46) and its parts in
+//! [`Dynamics`], and, for a robot that asks for them, their derivatives in
+//! [`DynamicsDerivatives`].
 
-use crate::{NotPositiveDefinite, Pose, Real};
+use crate::{
+    ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose, Real,
+};
 
 /// The trait from the method table's rows: one method per row, its arguments `&[T; N]`.
 macro_rules! declare_dynamics {
@@ -9,7 +13,7 @@ macro_rules! declare_dynamics {
         $(#[doc = $doc:literal])*
         fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
             variant: $_variant:ident,
-            family: $_family:ident,
+            family: $family:ident,
             equation: $_equation:expr,
             prefix: $_prefix:literal,
             summary: $_summary:literal,
@@ -28,14 +32,42 @@ macro_rules! declare_dynamics {
             /// Number of joints.
             const DOF: usize = N;
             $(
-                trait_method!(
+                in_trait!(Dynamics, $family, trait_method!(
                     $(#[doc = $doc])*
                     fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result, T, N);
                     $($default)?
-                );
+                ););
+            )*
+        }
+
+        /// The derivatives of the equations of motion, for model-predictive and optimal
+        /// control: implemented by `#[derive(Dynamics)]` for a robot that asks for them with
+        /// `#[dynamics(..., derivatives = true)]`, since their code is several times the size
+        /// of the rest, and a robot that does not call them should not compile them.
+        ///
+        /// Straight-line code from the same expression graph as [`Dynamics`]: the derivatives
+        /// of its traced `τ` (forward differentiation at compile time, no finite differences,
+        /// no automatic differentiation at run time), and `∂q̈/∂x = −M⁻¹ ∂τ/∂x` solved with the
+        /// LDLᵀ of `M` (Carpentier and Mansard, RSS 2018).
+        pub trait DynamicsDerivatives<const N: usize>: Dynamics<N> {
+            $(
+                in_trait!(DynamicsDerivatives, $family, trait_method!(
+                    $(#[doc = $doc])*
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result, T, N);
+                    $($default)?
+                ););
             )*
         }
     };
+}
+
+/// A row's items, kept in the trait of its family: the `derivatives` family's methods are
+/// [`DynamicsDerivatives`]'s, every other family's [`Dynamics`]'s.
+macro_rules! in_trait {
+    (Dynamics, derivatives, $($item:tt)*) => {};
+    (Dynamics, $family:ident, $($item:tt)*) => { $($item)* };
+    (DynamicsDerivatives, derivatives, $($item:tt)*) => { $($item)* };
+    (DynamicsDerivatives, $family:ident, $($item:tt)*) => {};
 }
 
 /// A trait method's declaration, with a body where the row gives a default (`zeros`: the
@@ -68,7 +100,7 @@ macro_rules! argument_type {
 
 /// The type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`; a [`Pose`], one per link,
 /// a Jacobian's six rows `[[T; N]; 6]` or a spatial 6-vector `[T; 6]`; a matrix or vector
-/// solved with `M`, or [`NotPositiveDefinite`].
+/// solved with `M`, or [`NotPositiveDefinite`]; the derivatives' structs.
 macro_rules! array_result {
     (pose, $t:ty, $n:ident) => {
         Pose<$t>
@@ -96,6 +128,12 @@ macro_rules! array_result {
     };
     (solved_vector, $t:ty, $n:ident) => {
         Result<[$t; $n], NotPositiveDefinite>
+    };
+    (inverse_derivatives, $t:ty, $n:ident) => {
+        InverseDynamicsDerivatives<[[$t; $n]; $n]>
+    };
+    (forward_derivatives, $t:ty, $n:ident) => {
+        Result<ForwardDynamicsDerivatives<[$t; $n], [[$t; $n]; $n]>, NotPositiveDefinite>
     };
 }
 

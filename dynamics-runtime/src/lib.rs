@@ -51,6 +51,9 @@
 #[macro_use]
 mod methods;
 
+mod derivatives;
+// Before `nalgebra`, which reads its `in_trait!`.
+#[macro_use]
 mod dynamics;
 mod factor;
 #[cfg(feature = "nalgebra")]
@@ -60,7 +63,8 @@ mod real;
 pub mod statics;
 mod trig;
 
-pub use crate::dynamics::Dynamics;
+pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
+pub use crate::dynamics::{Dynamics, DynamicsDerivatives};
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::pose::Pose;
 pub use crate::real::Real;

@@ -6,19 +6,22 @@
 // file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
 //
 // A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`, `tau`), its result (`matrix`,
-// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, or `solved_matrix` and
-// `solved_vector`: a matrix or vector solved with M, or `NotPositiveDefinite`) and the name of
-// its nalgebra wrapper, then
+// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, `solved_matrix` and
+// `solved_vector`: a matrix or vector solved with M, or `NotPositiveDefinite`;
+// `inverse_derivatives`, `forward_derivatives`: the derivatives' structs) and the name of its
+// nalgebra wrapper, then
 //
 //     /// Rustdoc of the trait method.
 //     fn name(q, qd) -> vector, nalgebra name_na {
 //         variant: Name,                 // the codegen enum's variant
 //         family: dynamics,              // the generated module it goes to (`Family`):
-//                                        // dynamics, kinematics, forward
+//                                        // dynamics, kinematics, forward, or derivatives:
+//                                        // the opt-in trait `DynamicsDerivatives`
 //         equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if it has one
 //         prefix: "tau",                 // generated element names: tau3, m1_2, p
 //         summary: "…",                  // one-line doc of `dynamics emit`
-//         element: "T{i} ({equation})",  // doc of a generated element; {i}, {j} from 1
+//         element: "T{i} ({equation})",  // doc of a generated element; {i}, {j} from 1, {x}
+//                                        // the argument a derivative is taken by
 //         diagonal: "…",                 // optional: a matrix's diagonal elements, if different
 //         default: zeros,                // optional: the trait's body for robots whose
 //                                        // description gives no such term (friction)
@@ -226,6 +229,29 @@ macro_rules! for_each_method {
                 prefix: "qdd",
                 summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",
                 element: "joint acceleration {i}",
+            }
+            /// The derivatives of inverse dynamics at `(q, qd, qdd)`: `∂τ/∂q` and `∂τ/∂q̇`, each
+            /// `[[T; N]; N]` with row i the derivatives of `τ_i` (`∂τ/∂q̈` is `mass_matrix(q)`).
+            /// Friction's Coulomb term is taken as flat (`∂ sign(q̇)/∂q̇ = 0`), its smooth form
+            /// differentiated.
+            fn inverse_dynamics_derivatives(q, qd, qdd) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na {
+                variant: InverseDynamicsDerivatives,
+                family: derivatives,
+                equation: None,
+                prefix: "dtau",
+                summary: "∂τ/∂q and ∂τ/∂q̇ at (q, q̇, q̈).",
+                element: "d tau{i} / d {x}{j}",
+            }
+            /// Forward dynamics and its derivatives at `(q, qd, tau)`: `q̈`, `∂q̈/∂q`, `∂q̈/∂q̇` and
+            /// `∂q̈/∂τ = M⁻¹`, the first two as `−M⁻¹ ∂τ/∂x` at that `q̈`, solved with the LDLᵀ of
+            /// `M`. `Err(NotPositiveDefinite)` where a pivot is not positive.
+            fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na {
+                variant: ForwardDynamicsDerivatives,
+                family: derivatives,
+                equation: None,
+                prefix: "dqdd",
+                summary: "q̈, ∂q̈/∂q, ∂q̈/∂q̇ and ∂q̈/∂τ = M⁻¹ at (q, q̇, τ).",
+                element: "d qdd{i} / d {x}{j}",
             }
         }
     };

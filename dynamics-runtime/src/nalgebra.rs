@@ -2,31 +2,58 @@
 //!
 //! The [`Dynamics`] methods take and return plain arrays; [`DynamicsNalgebra`] wraps each of
 //! them (from the method table, `methods.rs`) for `SVector` and `SMatrix`, at no cost beyond a
-//! copy. A scalar result stays `T`; a pose becomes an `Isometry3`, a Jacobian an
+//! copy, and [`DynamicsDerivativesNalgebra`] those of [`DynamicsDerivatives`]. A scalar result stays `T`; a pose becomes an `Isometry3`, a Jacobian an
 //! `SMatrix<T, 6, N>`.
 
-use crate::{Dynamics, NotPositiveDefinite, Pose, Real};
+use crate::{
+    Dynamics, DynamicsDerivatives, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
+    NotPositiveDefinite, Pose, Real,
+};
 use nalgebra::{
     Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
 };
 
-/// The trait from the method table's rows: one `_na` wrapper per method.
+/// The traits from the method table's rows: one `_na` wrapper per method, each in the trait
+/// of its method's trait.
 macro_rules! declare_nalgebra {
     ($(
         $(#[$_doc:meta])*
-        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident { $($_info:tt)* }
+        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident {
+            variant: $_variant:ident,
+            family: $family:ident,
+            $($_info:tt)*
+        }
     )*) => {
         /// nalgebra versions of the [`Dynamics`] methods, implemented for every robot.
         pub trait DynamicsNalgebra<const N: usize>: Dynamics<N> {
             $(
-                #[doc = concat!("[`Dynamics::", stringify!($name), "`] with nalgebra types.")]
-                fn $wrapper<T: Real + RealField>(
-                    &self,
-                    $($argument: nalgebra_argument!($argument, T, N)),*
-                ) -> nalgebra_result!($result, T, N) {
-                    nalgebra_result!($result, self.$name($(&array($argument)),*))
-                }
+                in_trait!(Dynamics, $family, nalgebra_wrapper!(
+                    Dynamics fn $name, $wrapper($($argument),*) -> $result
+                ););
             )*
+        }
+
+        /// nalgebra versions of the [`DynamicsDerivatives`] methods, implemented for every
+        /// robot that has them.
+        pub trait DynamicsDerivativesNalgebra<const N: usize>: DynamicsDerivatives<N> {
+            $(
+                in_trait!(DynamicsDerivatives, $family, nalgebra_wrapper!(
+                    DynamicsDerivatives fn $name, $wrapper($($argument),*) -> $result
+                ););
+            )*
+        }
+    };
+}
+
+/// The `_na` wrapper of one method: the arguments from nalgebra's types, the result to them.
+macro_rules! nalgebra_wrapper {
+    ($trait:ident fn $name:ident, $wrapper:ident($($argument:ident),*) -> $result:ident) => {
+        #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`] with nalgebra types.")]
+        fn $wrapper<T: Real + RealField>(
+            &self,
+            $($argument: nalgebra_argument!($argument, T, N)),*
+        ) -> nalgebra_result!($result, T, N) {
+            nalgebra_result!($result, self.$name($(&array($argument)),*))
         }
     };
 }
@@ -50,6 +77,10 @@ macro_rules! nalgebra_result {
     (spatial, $t:ty, $n:ident) => { SVector<$t, 6> };
     (solved_matrix, $t:ty, $n:ident) => { Result<SMatrix<$t, $n, $n>, NotPositiveDefinite> };
     (solved_vector, $t:ty, $n:ident) => { Result<SVector<$t, $n>, NotPositiveDefinite> };
+    (inverse_derivatives, $t:ty, $n:ident) => { InverseDynamicsDerivatives<SMatrix<$t, $n, $n>> };
+    (forward_derivatives, $t:ty, $n:ident) => {
+        Result<ForwardDynamicsDerivatives<SVector<$t, $n>, SMatrix<$t, $n, $n>>, NotPositiveDefinite>
+    };
     (matrix, $value:expr) => { matrix(&$value) };
     (vector, $value:expr) => { SVector::from($value) };
     (scalar, $value:expr) => { $value };
@@ -59,11 +90,15 @@ macro_rules! nalgebra_result {
     (spatial, $value:expr) => { SVector::from($value) };
     (solved_matrix, $value:expr) => { $value.map(|m| matrix(&m)) };
     (solved_vector, $value:expr) => { $value.map(SVector::from) };
+    (inverse_derivatives, $value:expr) => { $value.map(|m| matrix(&m)) };
+    (forward_derivatives, $value:expr) => { $value.map(|d| d.map(SVector::from, |m| matrix(&m))) };
 }
 
 for_each_method!(declare_nalgebra);
 
 impl<R: Dynamics<N> + ?Sized, const N: usize> DynamicsNalgebra<N> for R {}
+
+impl<R: DynamicsDerivatives<N> + ?Sized, const N: usize> DynamicsDerivativesNalgebra<N> for R {}
 
 fn array<T: Real + RealField, const N: usize>(v: &SVector<T, N>) -> [T; N] {
     core::array::from_fn(|i| v[i])
@@ -85,8 +120,11 @@ fn isometry<T: Real + RealField>(pose: &Pose<T>) -> Isometry3<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::DynamicsNalgebra;
-    use crate::{Dynamics, NotPositiveDefinite, Pose, Real};
+    use super::{DynamicsDerivativesNalgebra, DynamicsNalgebra};
+    use crate::{
+        Dynamics, DynamicsDerivatives, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
+        NotPositiveDefinite, Pose, Real,
+    };
     use nalgebra::{SMatrix, SVector};
 
     /// A "robot" whose every method returns its first argument's sum, in every element.
@@ -163,6 +201,46 @@ mod tests {
                 Err(NotPositiveDefinite)
             }
         }
+    }
+
+    impl DynamicsDerivatives<2> for Sums {
+        fn inverse_dynamics_derivatives<T: Real>(
+            &self,
+            q: &[T; 2],
+            _: &[T; 2],
+            _: &[T; 2],
+        ) -> InverseDynamicsDerivatives<[[T; 2]; 2]> {
+            InverseDynamicsDerivatives::from_blocks([[[sum(q); 2]; 2], [[-sum(q); 2]; 2]])
+        }
+        fn forward_dynamics_derivatives<T: Real>(
+            &self,
+            q: &[T; 2],
+            _: &[T; 2],
+            _: &[T; 2],
+        ) -> Result<ForwardDynamicsDerivatives<[T; 2], [[T; 2]; 2]>, NotPositiveDefinite> {
+            let m = |k: T| [[k * sum(q); 2]; 2];
+            let blocks = [m(T::ONE), m(T::ONE + T::ONE), m(T::ONE + T::ONE + T::ONE)];
+            Ok(ForwardDynamicsDerivatives::from_parts((
+                [sum(q); 2],
+                blocks,
+            )))
+        }
+    }
+
+    #[test]
+    fn the_derivatives_have_wrappers_that_forward_them() {
+        let (q, z) = (SVector::from([1.0, 2.0]), SVector::<f64, 2>::zeros());
+        let m = |k: f64| SMatrix::<f64, 2, 2>::repeat(3.0 * k);
+        let inverse = Sums.inverse_dynamics_derivatives_na(&q, &z, &z);
+        assert_eq!((inverse.dtau_dq, inverse.dtau_dqd), (m(1.0), m(-1.0)));
+        let forward = Sums
+            .forward_dynamics_derivatives_na(&q, &z, &z)
+            .expect("Ok");
+        assert_eq!(forward.qdd, SVector::<f64, 2>::repeat(3.0));
+        assert_eq!(
+            (forward.dqdd_dq, forward.dqdd_dqd, forward.dqdd_dtau),
+            (m(1.0), m(2.0), m(3.0))
+        );
     }
 
     /// A quarter turn about z, placed at `(x, 0, 0)`.

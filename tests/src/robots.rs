@@ -1,16 +1,17 @@
 //! The robots of the reference data (`data/reference/`, `data/panda/`, `data/frames/`), the
 //! D-H twins of two URDF robots (`robots/*_urdf_dh.toml`, made by `data/urdf/twins.py`) and a
-//! two-link arm with friction, derived once for the tests that use them. Paths are relative to
-//! this crate's `Cargo.toml`.
+//! two-link arm with friction, derived once for the tests that use them; those with derivatives'
+//! reference data (`data/derivatives/`) and the friction arm implement `DynamicsDerivatives`.
+//! Paths are relative to this crate's `Cargo.toml`.
 
 use dynamics_runtime::Dynamics;
 
 /// A unit struct deriving the robot of a description file.
 macro_rules! robot {
-    ($(#[doc = $doc:literal])* $name:ident, $file:literal $(, $key:ident = $value:tt)?) => {
+    ($(#[doc = $doc:literal])* $name:ident, $file:literal $(, $key:ident = $value:tt)*) => {
         $(#[doc = $doc])*
         #[derive(Dynamics)]
-        #[dynamics(file = $file $(, $key = $value)?)]
+        #[dynamics(file = $file $(, $key = $value)*)]
         pub struct $name;
     };
 }
@@ -21,13 +22,15 @@ robot!(
     /// PUMA 560 (6 joints).
     Puma560,
     "data/reference/robots/puma560.json",
-    check_inertia = false
+    check_inertia = false,
+    derivatives = true
 );
 robot!(
     /// The Stanford arm (6 joints, one prismatic).
     Stanford,
     "data/reference/robots/stanford.json",
-    check_inertia = false
+    check_inertia = false,
+    derivatives = true
 );
 robot!(
     /// The Robotics Toolbox's UR5 (point masses).
@@ -37,32 +40,38 @@ robot!(
 robot!(
     /// The book's two-link arm.
     NikuTwoLink,
-    "data/reference/robots/niku_2link.json"
+    "data/reference/robots/niku_2link.json",
+    derivatives = true
 );
 robot!(
     /// The book's polar arm (revolute, prismatic).
     NikuPolar,
-    "data/reference/robots/niku_polar.json"
+    "data/reference/robots/niku_polar.json",
+    derivatives = true
 );
 robot!(
     /// A random 2-joint robot.
     Random1,
-    "data/reference/robots/random1.json"
+    "data/reference/robots/random1.json",
+    derivatives = true
 );
 robot!(
     /// A random 3-joint robot.
     Random2,
-    "data/reference/robots/random2.json"
+    "data/reference/robots/random2.json",
+    derivatives = true
 );
 robot!(
     /// A random 6-joint robot.
     Random5,
-    "data/reference/robots/random5.json"
+    "data/reference/robots/random5.json",
+    derivatives = true
 );
 robot!(
     /// The Franka Emika Panda (7 joints).
     Panda,
-    "data/panda/robot.json"
+    "data/panda/robot.json",
+    derivatives = true
 );
 robot!(
     /// A UR5 transcribed from its URDF as placements and axes.
@@ -95,6 +104,7 @@ robot!(
 /// Coulomb term smoothed with a run-time ε.
 #[derive(Dynamics)]
 #[dynamics(
+    derivatives = true,
     gravity = [0, -9.81, 0],
     dh = [[q, 0, 0.7, 0], [q, 0, 0.5, 0]],
     link(mass = 2, com = [-0.35, 0, 0], inertia = [0, 0.08, 0.08, 0, 0, 0],

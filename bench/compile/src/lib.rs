@@ -1,11 +1,11 @@
 //! Two 7-joint robots whose 70 inertial parameters are all struct fields, every generated
-//! method instantiated in `f64` and `f32`: the compile-time case of issue 3, timed by
-//! `bench/compile-time`.
-use dynamics_runtime::{Dynamics, Real};
+//! method of the dynamics, forward dynamics and derivatives instantiated in `f64` and `f32`:
+//! the compile-time case of issues 3 and 18, timed by `bench/compile-time`.
+use dynamics_runtime::{Dynamics, DynamicsDerivatives, Real};
 
 /// KUKA iiwa 14 kinematics, parameters as fields.
 #[derive(Dynamics)]
-#[dynamics(file = "../robots/iiwa14_fields.toml")]
+#[dynamics(file = "../robots/iiwa14_fields.toml", derivatives = true)]
 pub struct A {
     pub m1: f64,
     pub cx1: f64,
@@ -81,7 +81,7 @@ pub struct A {
 
 /// The same arm with another link length.
 #[derive(Dynamics)]
-#[dynamics(file = "iiwa14_fields_b.toml")]
+#[dynamics(file = "iiwa14_fields_b.toml", derivatives = true)]
 pub struct B {
     pub m1: f64,
     pub cx1: f64,
@@ -156,7 +156,7 @@ pub struct B {
 }
 
 /// Every method of `r` at one state, summed so that none is optimized away.
-fn all<R: Dynamics<7>, T: Real>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: &[T; 7]) -> T {
+fn all<R: DynamicsDerivatives<7>, T: Real>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: &[T; 7]) -> T {
     let tau = r.inverse_dynamics(q, qd, qdd);
     let m = r.mass_matrix(q);
     let c = r.coriolis_matrix(q, qd);
@@ -171,6 +171,15 @@ fn all<R: Dynamics<7>, T: Real>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: &[T; 7]) ->
     if let (Ok(qdd), Ok(inverse)) = forward {
         for i in 0..7 {
             sum += qdd[i] + inverse[i][i];
+        }
+    }
+    let inverse = r.inverse_dynamics_derivatives(q, qd, qdd);
+    for i in 0..7 {
+        sum += inverse.dtau_dq[i][0] + inverse.dtau_dqd[i][0];
+    }
+    if let Ok(forward) = r.forward_dynamics_derivatives(q, qd, &tau) {
+        for i in 0..7 {
+            sum += forward.dqdd_dq[i][0] + forward.dqdd_dqd[i][0] + forward.dqdd_dtau[i][0];
         }
     }
     sum

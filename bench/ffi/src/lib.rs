@@ -8,17 +8,19 @@
 //! joints. Beside the dynamics (`tau`, `M`, `g`, `C`, `h`), the kinematics: `fk` (the hand
 //! pose), `J` (the hand's Jacobian in base axes) and `JtF` (the joint torques for a wrench in
 //! base axes, `T = Jᵀ F`); the forward dynamics `fd` and `Minv` (M⁻¹), NaN where M is not
-//! positive definite.
+//! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
+//! dynamics, NaN where M is not positive definite).
 
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
-use dynamics_runtime::Dynamics;
+use dynamics_runtime::DynamicsDerivatives;
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
 /// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
-/// `[R | p]` for `fk`, 6 × n for `J`, n for the others. `JtF` reads the wrench
-/// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` the
-/// joint torques `tau`.
+/// `[R | p]` for `fk`, 6 × n for `J`, `∂τ/∂q` then `∂τ/∂q̇` for `dtau` (2 n × n), `∂q̈/∂q`,
+/// `∂q̈/∂q̇`, `∂q̈/∂τ` for `dqdd` (3 n × n), n for the others. `JtF` reads the wrench
+/// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
+/// `dqdd` the joint torques `tau`.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// Reads `N` values.
@@ -42,7 +44,7 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
 /// The timed functions of one `N`-joint robot type, as C functions.
 struct Functions<R, const N: usize>(core::marker::PhantomData<R>);
 
-impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
+impl<R: DynamicsDerivatives<N> + Default, const N: usize> Functions<R, N> {
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
@@ -113,6 +115,38 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
         }
     }
 
+    unsafe extern "C" fn inverse_derivatives(
+        q: *const f64,
+        qd: *const f64,
+        qdd: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (room for 2 n × n values at `out`).
+        unsafe {
+            let d = R::default().inverse_dynamics_derivatives(&input(q), &input(qd), &input(qdd));
+            output_matrix(out, d.dtau_dq);
+            output_matrix(out.add(N * N), d.dtau_dqd);
+        }
+    }
+
+    unsafe extern "C" fn forward_derivatives(
+        q: *const f64,
+        qd: *const f64,
+        tau: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (n torques at `tau`, room for 3 n × n values at
+        // `out`).
+        unsafe {
+            let d = R::default().forward_dynamics_derivatives(&input(q), &input(qd), &input(tau));
+            let nan = [[f64::NAN; N]; N];
+            let blocks = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+            for (k, block) in blocks.into_iter().enumerate() {
+                output_matrix(out.add(k * N * N), block);
+            }
+        }
+    }
+
     fn get(function: &[u8]) -> Option<Function> {
         Some(match function {
             b"tau" => Self::tau,
@@ -125,6 +159,8 @@ impl<R: Dynamics<N> + Default, const N: usize> Functions<R, N> {
             b"JtF" => Self::statics,
             b"fd" => Self::forward,
             b"Minv" => Self::mass_inverse,
+            b"dtau" => Self::inverse_derivatives,
+            b"dqdd" => Self::forward_derivatives,
             _ => return None,
         })
     }
@@ -156,7 +192,7 @@ unsafe fn output_rows<const COLUMNS: usize, const ROWS: usize>(
 /// A robot's number of joints and its function lookup.
 type Robot = (usize, fn(&[u8]) -> Option<Function>);
 
-fn entry<R: Dynamics<N> + Default, const N: usize>() -> Robot {
+fn entry<R: DynamicsDerivatives<N> + Default, const N: usize>() -> Robot {
     (N, Functions::<R, N>::get)
 }
 
@@ -182,7 +218,7 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`, or `fk`, `J`,
-/// `JtF`) of `robot`
+/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
@@ -217,7 +253,11 @@ mod tests {
     use super::*;
     use dynamics_bench::{samples, Sample, ROBOTS};
 
-    const FUNCTIONS: [&str; 8] = ["tau", "M", "g", "C", "h", "fk", "J", "JtF"];
+    const FUNCTIONS: [&str; 12] = [
+        "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd",
+    ];
+    /// Room for the largest output, `dqdd`'s 3 × 7 × 7 values.
+    const ROOM: usize = 160;
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -232,12 +272,12 @@ mod tests {
         unsafe { dynamics_bench_dof(robot.as_ptr()) }
     }
 
-    /// `function` of `robot` called through the C ABI on a sample, with room for 64 outputs
-    /// (NaN where nothing was written).
-    fn call<const N: usize>(robot: &str, function: &str, s: &Sample<N>) -> [f64; 64] {
+    /// `function` of `robot` called through the C ABI on a sample, with room for [`ROOM`]
+    /// outputs (NaN where nothing was written).
+    fn call<const N: usize>(robot: &str, function: &str, s: &Sample<N>) -> [f64; ROOM] {
         let f = lookup(robot, function).expect("a known function");
-        let mut out = [f64::NAN; 64];
-        // SAFETY: N inputs each, room for N × N ≤ 64 outputs.
+        let mut out = [f64::NAN; ROOM];
+        // SAFETY: N inputs each, room for 3 N × N ≤ ROOM outputs.
         unsafe {
             f(
                 s.q.as_ptr(),
@@ -249,7 +289,11 @@ mod tests {
         out
     }
 
-    fn direct<R: Dynamics<N>, const N: usize>(r: &R, function: &str, s: &Sample<N>) -> Vec<f64> {
+    fn direct<R: DynamicsDerivatives<N>, const N: usize>(
+        r: &R,
+        function: &str,
+        s: &Sample<N>,
+    ) -> Vec<f64> {
         let rows = |m: [[f64; N]; N]| m.iter().flatten().copied().collect();
         match function {
             "tau" => r.inverse_dynamics(&s.q, &s.qd, &s.qdd).to_vec(),
@@ -268,19 +312,35 @@ mod tests {
                 let wrench = core::array::from_fn(|i| s.qdd[i]);
                 r.joint_torques_for_base_wrench(&s.q, &wrench).to_vec()
             }
+            // The third input as torques.
+            "fd" => (r.forward_dynamics(&s.q, &s.qd, &s.qdd))
+                .map_or(vec![f64::NAN; N], |qdd| qdd.to_vec()),
+            "Minv" => r
+                .mass_matrix_inverse(&s.q)
+                .map_or(vec![f64::NAN; N * N], rows),
+            "dtau" => {
+                let d = r.inverse_dynamics_derivatives(&s.q, &s.qd, &s.qdd);
+                [rows(d.dtau_dq), rows(d.dtau_dqd)].concat()
+            }
+            "dqdd" => r.forward_dynamics_derivatives(&s.q, &s.qd, &s.qdd).map_or(
+                vec![f64::NAN; 3 * N * N],
+                |d| [rows(d.dqdd_dq), rows(d.dqdd_dqd), rows(d.dqdd_dtau)].concat(),
+            ),
             _ => unreachable!(),
         }
     }
 
     /// Every function of `robot` through the C ABI equals the trait method, writes nothing past
     /// its output, and its `tau` matches the reference data.
-    fn check<R: Dynamics<N>, const N: usize>(r: &R, robot: &str) {
+    fn check<R: DynamicsDerivatives<N>, const N: usize>(r: &R, robot: &str) {
         assert_eq!(dof(robot), N, "{robot}");
         for s in samples::<N>(robot) {
             for function in FUNCTIONS {
                 let want = direct(r, function, &s);
                 let got = call(robot, function, &s);
-                assert_eq!(&got[..want.len()], &want[..], "{robot} {function}");
+                // Bit for bit, NaN (M not positive definite) included.
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+                assert_eq!(bits(&got[..want.len()]), bits(&want), "{robot} {function}");
                 assert!(
                     got[want.len()..].iter().all(|x| x.is_nan()),
                     "{robot} {function}"

@@ -26,6 +26,10 @@
 //! | `fk` | `hand_pose(&q)` |
 //! | `J` | `hand_jacobian_in_base(&q)` |
 //! | `JtF` | `joint_torques_for_base_wrench(&q, &wrench)`, a wrench fixed per sample |
+//! | `fd` | `forward_dynamics(&q, &qd, &qdd)` (the sample's q̈ as torques) |
+//! | `Minv` | `mass_matrix_inverse(&q)` |
+//! | `dtau` | `inverse_dynamics_derivatives(&q, &qd, &qdd)` |
+//! | `dqdd` | `forward_dynamics_derivatives(&q, &qd, &qdd)` (the sample's q̈ as torques) |
 //!
 //! With `--all`, three more for context, computed from the same description:
 //!
@@ -84,10 +88,12 @@ use std::time::Instant;
 
 use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, Ur5Urdf, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
-use dynamics_runtime::Dynamics;
+use dynamics_runtime::{Dynamics, DynamicsDerivatives};
 
 /// The generated methods, timed by default.
-const GENERATED: [&str; 8] = ["tau", "M", "g", "C", "h", "fk", "J", "JtF"];
+const GENERATED: [&str; 12] = [
+    "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd",
+];
 /// The other implementations, timed with `--all`.
 const EXTRA: [&str; 3] = ["tau_reference", "tau_rnea", "M_crba"];
 
@@ -202,7 +208,7 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 /// Times (or calls, in [`Mode::Calls`]) `function` of `robot`.
-fn measure<R: Dynamics<N>, const N: usize>(
+fn measure<R: DynamicsDerivatives<N>, const N: usize>(
     robot: &R,
     others: &Others,
     samples: &[Sample<N>],
@@ -223,6 +229,16 @@ fn measure<R: Dynamics<N>, const N: usize>(
             // a wrench from the sample, so that it is not a constant of the loop
             let wrench = [x.qd[0], x.qd[1], x.qd[2], x.qdd[0], x.qdd[1], x.qdd[2]];
             robot.joint_torques_for_base_wrench(&x.q, &wrench)
+        }),
+        // the samples' qdd as torques: the robots' M is not positive definite everywhere (the
+        // reference UR5), where the result is then an error, as cheap to make
+        "fd" => drive(s, p, mode, |x| robot.forward_dynamics(&x.q, &x.qd, &x.qdd)),
+        "Minv" => drive(s, p, mode, |x| robot.mass_matrix_inverse(&x.q)),
+        "dtau" => drive(s, p, mode, |x| {
+            robot.inverse_dynamics_derivatives(&x.q, &x.qd, &x.qdd)
+        }),
+        "dqdd" => drive(s, p, mode, |x| {
+            robot.forward_dynamics_derivatives(&x.q, &x.qd, &x.qdd)
         }),
         "tau_reference" => drive(s, SLOW_PROTOCOL, mode, |x| {
             others.book.inverse_dynamics(&x.q, &x.qd, &x.qdd)
@@ -278,7 +294,7 @@ fn sanity<R: Dynamics<N>, const N: usize>(
 }
 
 /// Runs the selected functions of one robot; `false` if its sanity check failed.
-fn run<R: Dynamics<N>, const N: usize>(
+fn run<R: DynamicsDerivatives<N>, const N: usize>(
     robot: &R,
     name: &str,
     functions: &[&str],

@@ -1,14 +1,17 @@
 //! `dynamics emit ROBOT`: a standalone Rust module with the code the derive generates.
 
 use super::{field_idents, load, self_fields, type_name, Failure};
-use crate::args::RobotFile;
+use crate::args::Emit;
 use dynamics_codegen::{derive, generate};
 use quote::quote;
 
-pub fn run(args: &RobotFile) -> Result<String, Failure> {
-    let robot = load(args)?;
-    let path = &args.path;
-    let eq = derive(&robot);
+pub fn run(args: &Emit) -> Result<String, Failure> {
+    let robot = load(&args.robot)?;
+    let path = &args.robot.path;
+    let mut eq = derive(&robot);
+    if args.derivatives {
+        eq.add_derivatives();
+    }
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;

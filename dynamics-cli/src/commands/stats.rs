@@ -15,7 +15,10 @@ use std::time::{Duration, Instant};
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let start = Instant::now();
-    let eq = derive(&robot);
+    let mut eq = derive(&robot);
+    if args.derivatives {
+        eq.add_derivatives();
+    }
     let generated = generate(&eq, self_fields(&field_idents(&eq)));
     let elapsed = start.elapsed();
     let mut out = format!(
@@ -36,7 +39,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         items.to_string().len()
     );
     out += &readable(&eq, &robot);
-    out += &whole_derive(&robot, &ty, &field_idents(&eq), args.runs);
+    out += &whole_derive(&robot, &ty, &field_idents(&eq), args);
     Ok(out)
 }
 
@@ -129,13 +132,14 @@ fn readable(eq: &Equations, robot: &Robot) -> String {
 /// emission, readable equations and docs), the fastest of `runs`, in wall-clock time and in the
 /// thread's CPU time: the others' work on a shared machine only ever adds to the first, and
 /// leaves out of the second the time the thread waits for a core.
-fn whole_derive(robot: &Robot, ty: &syn::Ident, fields: &[syn::Ident], runs: u32) -> String {
+fn whole_derive(robot: &Robot, ty: &syn::Ident, fields: &[syn::Ident], args: &Stats) -> String {
+    let runs = args.runs;
     let input: syn::DeriveInput = syn::parse_quote!(struct #ty { #(#fields: f64,)* });
     let mut wall = Duration::MAX;
     let mut cpu: Option<Duration> = None;
     for _ in 0..runs {
         let (start, start_cpu) = (Instant::now(), thread_cpu_time());
-        let tokens = expand_robot(&input, robot);
+        let tokens = expand_robot(&input, robot, args.derivatives);
         let (elapsed, end_cpu) = (start.elapsed(), thread_cpu_time());
         drop(tokens);
         wall = wall.min(elapsed);

@@ -71,10 +71,7 @@ impl Emitter<'_> {
                 quote!([#(#items),*])
             }
             Shape::Matrix(m) => self.matrix(m),
-            Shape::Stack(s) => {
-                let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
-                quote!([#(#matrices),*])
-            }
+            Shape::Stack(s) => self.stack(s),
             Shape::SolvedVector { pivots, vector } => {
                 let items: Vec<TokenStream> =
                     vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
@@ -83,6 +80,16 @@ impl Emitter<'_> {
             Shape::SolvedMatrix { pivots, matrix } => {
                 let value = self.matrix(matrix);
                 self.checked(pivots, &value)
+            }
+            Shape::SolvedStack {
+                pivots,
+                vector,
+                stack,
+            } => {
+                let items: Vec<TokenStream> =
+                    vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                let matrices = self.stack(stack);
+                self.checked(pivots, &quote!(([#(#items),*], #matrices)))
             }
         };
         Body {
@@ -126,6 +133,12 @@ impl Emitter<'_> {
             })
             .collect();
         quote!([#(#rows),*])
+    }
+
+    /// The array of matrices `s`.
+    fn stack(&mut self, s: &[Vec<Vec<NodeId>>]) -> TokenStream {
+        let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
+        quote!([#(#matrices),*])
     }
 
     /// A new temporary, `t3` (`u3`, `v3` in the shared functions).

@@ -7,7 +7,8 @@ use crate::method::Method;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The errors, and where the joint count is known an impl of every [`Method`], unreachable.
+/// The errors, and where the joint count is known an impl of every [`Method`] (of
+/// `DynamicsDerivatives` too if the robot asked for it), unreachable.
 pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let errors = failure.error.to_compile_error();
     let Some(n) = failure.dof else {
@@ -18,14 +19,29 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
     let t = scalar_name(&input.generics);
-    let fns = Method::ALL.iter().map(|&m| method(m, n, &krate, &t, &body));
+    let fns = |family_trait: &str| -> Vec<TokenStream> {
+        let methods = Method::ALL.iter().copied();
+        let in_trait = methods.filter(|m| m.family().trait_name() == family_trait);
+        in_trait.map(|m| method(m, n, &krate, &t, &body)).collect()
+    };
+    let dynamics = fns("Dynamics");
+    let derivatives = fns("DynamicsDerivatives");
+    let derivatives = failure.derivatives.then(|| {
+        quote! {
+            #[automatically_derived]
+            impl #impl_generics #krate::DynamicsDerivatives<#n> for #ident #ty_generics #where_clause {
+                #(#derivatives)*
+            }
+        }
+    });
     quote! {
         #errors
         const _: () = {
             #[automatically_derived]
             impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
-                #(#fns)*
+                #(#dynamics)*
             }
+            #derivatives
         };
     }
 }

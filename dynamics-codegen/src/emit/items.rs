@@ -64,6 +64,10 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
             .copied()
             .filter(|m| m.family() == family && m.is_generated(eq))
             .collect();
+        // No module for a family with nothing to generate (derivatives not asked for).
+        if members.is_empty() {
+            continue;
+        }
         let outputs: Vec<Output> = members
             .iter()
             .map(|&method| Output {
@@ -125,22 +129,37 @@ impl Generated {
         let t = scalar_name(generics);
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
         let modules = self.modules.iter().map(|module| self.module(module, krate));
-        let fns = self.methods.iter().map(|m| {
-            let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n, &t, krate, false);
-            let pass = call_arguments(m.method);
-            let module = Ident::new(m.method.family().module(), Span::call_site());
-            let call = quote!(#module::#name(&self.#parameters(), #pass));
-            let call = forward(m.method, call, krate);
-            let f = quote! {
-                #[inline]
-                fn #name<#t: #krate::Real>(&self, #args) -> #ret {
-                    #call
-                }
-            };
-            match docs(m.method) {
-                Some(doc) => quote!(#[doc = #doc] #f),
-                None => f,
+        let fns = |family_trait: &str| {
+            self.methods
+                .iter()
+                .filter(move |m| m.method.family().trait_name() == family_trait)
+                .map(|m| {
+                    let name = Ident::new(m.name, Span::call_site());
+                    let (args, ret) = signature(m.method, n, &t, krate, false);
+                    let pass = call_arguments(m.method);
+                    let module = Ident::new(m.method.family().module(), Span::call_site());
+                    let call = quote!(#module::#name(&self.#parameters(), #pass));
+                    let call = forward(m.method, call, krate);
+                    let f = quote! {
+                        #[inline]
+                        fn #name<#t: #krate::Real>(&self, #args) -> #ret {
+                            #call
+                        }
+                    };
+                    match docs(m.method) {
+                        Some(doc) => quote!(#[doc = #doc] #f),
+                        None => f,
+                    }
+                })
+                .collect::<Vec<TokenStream>>()
+        };
+        let dynamics = fns("Dynamics");
+        // The opt-in trait, only for a robot that asked for it.
+        let derivatives = fns("DynamicsDerivatives");
+        let derivatives = (!derivatives.is_empty()).then(|| quote! {
+            #[automatically_derived]
+            impl #impl_generics #krate::DynamicsDerivatives<#n> for #ident #ty_generics #where_clause {
+                #(#derivatives)*
             }
         });
         let fields = &self.fields;
@@ -159,8 +178,9 @@ impl Generated {
             }
             #[automatically_derived]
             impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
-                #(#fns)*
+                #(#dynamics)*
             }
+            #derivatives
         }
     }
 
@@ -339,7 +359,7 @@ fn argument_local(argument: Argument) -> Ident {
 
 /// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`;
 /// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`,
-/// a result through the LDLᵀ of M as an `Option`).
+/// a result through the LDLᵀ of M as an `Option`, the derivatives' structs as arrays).
 fn signature(
     method: Method,
     n: usize,
@@ -372,12 +392,22 @@ fn signature(
         Returns::SolvedVector => {
             quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>)
         }
+        Returns::InverseDerivatives if rows => quote!([[[#t; #n]; #n]; 2]),
+        Returns::InverseDerivatives => quote!(#krate::InverseDynamicsDerivatives<[[#t; #n]; #n]>),
+        Returns::ForwardDerivatives if rows => {
+            quote!(::core::option::Option<([#t; #n], [[[#t; #n]; #n]; 3])>)
+        }
+        Returns::ForwardDerivatives => quote!(::core::result::Result<
+            #krate::ForwardDynamicsDerivatives<[#t; #n], [[#t; #n]; #n]>,
+            #krate::NotPositiveDefinite,
+        >),
     };
     (quote!(#(#arguments),*), result)
 }
 
 /// The call of a method's function in the generated module, `module::name(p_, q_)`, turned
-/// into the trait's result (poses from their rows).
+/// into the trait's result (poses from their rows, the derivatives' structs from their
+/// blocks).
 fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStream {
     match method.returns() {
         Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
@@ -385,6 +415,12 @@ fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStrea
         Returns::SolvedMatrix | Returns::SolvedVector => {
             quote!(#call.ok_or(#krate::NotPositiveDefinite))
         }
+        Returns::InverseDerivatives => {
+            quote!(#krate::InverseDynamicsDerivatives::from_blocks(#call))
+        }
+        Returns::ForwardDerivatives => quote!(#call
+            .map(#krate::ForwardDynamicsDerivatives::from_parts)
+            .ok_or(#krate::NotPositiveDefinite)),
         _ => call,
     }
 }

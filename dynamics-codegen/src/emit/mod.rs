@@ -97,6 +97,16 @@ pub enum Shape<'a> {
         /// The matrix, rows first.
         matrix: &'a [Vec<NodeId>],
     },
+    /// A vector and matrices through the LDLᵀ of M, `Some((vector, [matrices]))` where every
+    /// pivot is positive.
+    SolvedStack {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The vector.
+        vector: &'a [NodeId],
+        /// The matrices, rows first.
+        stack: &'a [Vec<Vec<NodeId>>],
+    },
 }
 
 impl Shape<'_> {
@@ -113,6 +123,15 @@ impl Shape<'_> {
             Shape::SolvedMatrix { pivots, matrix } => {
                 let elements = matrix.iter().flatten();
                 pivots.iter().chain(elements).copied().collect()
+            }
+            Shape::SolvedStack {
+                pivots,
+                vector,
+                stack,
+            } => {
+                let elements = stack.iter().flatten().flatten();
+                let values = vector.iter().chain(elements);
+                pivots.iter().chain(values).copied().collect()
             }
         }
     }

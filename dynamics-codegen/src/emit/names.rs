@@ -71,7 +71,9 @@ impl Emitter<'_> {
                     }
                 }
             }
-            Shape::Stack(s) => {
+            // The vector of a solved stack (`q̈` beside its derivatives) keeps temporaries'
+            // names: the element names say what a block's entries are.
+            Shape::Stack(s) | Shape::SolvedStack { stack: s, .. } => {
                 for (k, m) in s.iter().enumerate() {
                     for (i, row) in m.iter().enumerate() {
                         for (j, &id) in row.iter().enumerate() {

@@ -56,6 +56,8 @@ pub(super) struct Attrs {
     pub tip: Option<LitStr>,
     /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
     pub tool: Option<[Spanned; 6]>,
+    /// `derivatives = true`: implement `DynamicsDerivatives` too.
+    pub derivatives: Option<bool>,
 }
 
 impl Attrs {
@@ -118,6 +120,10 @@ const BOTH_TABLES: &str = "`dh` and `joints` cannot be combined: give the joints
                            (`joints = [revolute(xyz = [..], rpy = [..], axis = [..]), ...]`)";
 /// What the keys of `link(...)` are called in messages.
 const LINK_ATTRIBUTE: &str = "link attribute";
+/// What `check_inertia` does, for an error in its value.
+const KEEP: &str = "`check_inertia = false` keeps an inertia tensor that fails the physical checks";
+/// What `derivatives` does, for an error in its value.
+const DERIVE: &str = "`derivatives = true` also implements `DynamicsDerivatives`";
 
 /// One `key = value` entry of an attribute list, where a repeated key is reported.
 pub(super) struct Entry<'a> {
@@ -226,7 +232,8 @@ fn parse_attr(
             let (gravity, _) = values::<3>(input, "`gravity = [gx, gy, gz]`")?;
             entry.keep_first(&mut attrs.gravity, gravity);
         }
-        Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input)?),
+        Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input, KEEP)?),
+        Key::Derivatives => entry.keep_first(&mut attrs.derivatives, boolean(input, DERIVE)?),
         Key::Dh => {
             let dh = parse_dh(input)?;
             if attrs.joints.is_some() {
@@ -302,7 +309,7 @@ fn parse_link_attr(
         }
         LinkKey::ActuatorInertia => entry.keep_first(&mut link.actuator_inertia, input.parse()?),
         LinkKey::Spring => entry.keep_first(&mut link.spring, parse_spring(input)?),
-        LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input)?),
+        LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input, KEEP)?),
         LinkKey::Friction => {
             let friction = parse_friction(input, entry.errors)?;
             entry.keep_first(&mut link.friction, friction);

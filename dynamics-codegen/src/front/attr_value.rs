@@ -91,14 +91,12 @@ pub(super) fn parse_dh(input: ParseStream) -> syn::Result<(Vec<DhRowAttr>, Span)
     Ok((rows, bracket.span.join()))
 }
 
-pub(super) fn boolean(input: ParseStream) -> syn::Result<bool> {
+/// `true` or `false`; `usage` says what the key does, for the error.
+pub(super) fn boolean(input: ParseStream, usage: &str) -> syn::Result<bool> {
     if input.peek(syn::LitBool) {
         Ok(input.parse::<syn::LitBool>()?.value)
     } else {
-        Err(input.error(
-            "expected `true` or `false`: `check_inertia = false` keeps an inertia tensor that \
-             fails the physical checks",
-        ))
+        Err(input.error(format!("expected `true` or `false`: {usage}")))
     }
 }
 

@@ -59,6 +59,8 @@ pub struct Input {
     pub krate: Option<syn::Path>,
     /// A description file to track for rebuilds (absolute path).
     pub tracked_file: Option<String>,
+    /// Whether to implement `DynamicsDerivatives` too (`derivatives = true`).
+    pub derivatives: bool,
 }
 
 /// Why the derive input gave no robot.
@@ -70,6 +72,9 @@ pub struct Failure {
     pub dof: Option<usize>,
     /// The runtime crate's path, if `crate = "..."` was read.
     pub krate: Option<syn::Path>,
+    /// Whether `derivatives = true` was read: the fallback then implements
+    /// `DynamicsDerivatives` too.
+    pub derivatives: bool,
 }
 
 /// The `#[dynamics(...)]` attributes of the input.
@@ -172,6 +177,7 @@ fn finish(
                 robot,
                 krate: attrs.krate,
                 tracked_file,
+                derivatives: attrs.derivatives.unwrap_or(false),
             })
         }
         (Some(error), robot) => Err(Failure {
@@ -181,11 +187,13 @@ fn finish(
                 .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
                 .or_else(|| attrs.joints.as_ref().map(|(joints, _)| joints.len()))
                 .filter(|n| *n > 0),
+            derivatives: attrs.derivatives.unwrap_or(false),
             krate: attrs.krate,
         }),
         (None, None) => Err(Failure {
             error: syn::Error::new(input.ident.span(), "no robot description"),
             dof: None,
+            derivatives: attrs.derivatives.unwrap_or(false),
             krate: attrs.krate,
         }),
     }

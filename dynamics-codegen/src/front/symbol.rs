@@ -40,11 +40,13 @@ keys! {
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
     /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`,
-    /// `tool = [x, y, z, roll, pitch, yaw]`.
+    /// `tool = [x, y, z, roll, pitch, yaw]`, `derivatives = true` (implement
+    /// `DynamicsDerivatives` too).
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
         Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tool = "tool",
+        Derivatives = "derivatives",
     }
 }
 

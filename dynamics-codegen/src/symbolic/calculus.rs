@@ -1,5 +1,6 @@
-//! Reading the graph: numeric evaluation, the live set of a set of outputs, and forward-mode
-//! partial derivatives with respect to a joint position (`∂ sin q_j/∂q_j = cos q_j`).
+//! Reading the graph: numeric evaluation, the live set of a set of outputs, forward-mode
+//! partial derivatives with respect to a joint position (`∂ sin q_j/∂q_j = cos q_j`) or
+//! velocity, and the substitution of leaves by other nodes.
 
 use super::graph::Graph;
 use super::node::{Node, NodeId, Var};
@@ -52,6 +53,12 @@ impl Graph {
     /// differentiation of the graph: `∂ sin(q_j)/∂q_j = cos(q_j)`, `∂ cos(q_j)/∂q_j = −sin(q_j)`,
     /// `∂q_j/∂q_j = 1`. Returns one node per output (a constant zero where independent).
     pub fn derivative(&mut self, outputs: &[NodeId], joint: u16) -> Vec<NodeId> {
+        self.derivative_by(outputs, Wrt::Position(joint))
+    }
+
+    /// Partial derivatives of `outputs` with respect to the joint variable `wrt`, one node
+    /// per output, by forward differentiation of the graph.
+    pub fn derivative_by(&mut self, outputs: &[NodeId], wrt: Wrt) -> Vec<NodeId> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
         let live = self.live(outputs);
         let zero = self.num(Number::ZERO);
@@ -64,10 +71,10 @@ impl Graph {
             let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
             d[i] = match self.node(id) {
                 Node::Const(_) => zero,
-                Node::Var(v) => match v {
-                    Var::Q(j) if j == joint => one,
-                    Var::SinQ(j) if j == joint => self.var(Var::CosQ(j)),
-                    Var::CosQ(j) if j == joint => {
+                Node::Var(v) => match (v, wrt) {
+                    (Var::Q(j), Wrt::Position(k)) | (Var::Qd(j), Wrt::Velocity(k)) if j == k => one,
+                    (Var::SinQ(j), Wrt::Position(k)) if j == k => self.var(Var::CosQ(j)),
+                    (Var::CosQ(j), Wrt::Position(k)) if j == k => {
                         let s = self.var(Var::SinQ(j));
                         self.neg(s)
                     }
@@ -108,6 +115,55 @@ impl Graph {
         }
         outputs.iter().map(|o| d[o.index()]).collect()
     }
+
+    /// `outputs` with each leaf `v` for which `leaf(v)` is `Some(x)` replaced by node `x`:
+    /// the nodes on the way are built anew (simplified as ever), the others kept.
+    pub fn substitute(
+        &mut self,
+        outputs: &[NodeId],
+        leaf: impl Fn(Var) -> Option<NodeId>,
+    ) -> Vec<NodeId> {
+        let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
+        let live = self.live(outputs);
+        let mut new: Vec<NodeId> = (0..end)
+            .map(|i| NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")))
+            .collect();
+        for i in 0..end {
+            if !live[i] {
+                continue;
+            }
+            let id = new[i];
+            let node = self.node(id);
+            let changed = node.operands().any(|a| new[a.index()] != a);
+            new[i] = match node {
+                Node::Var(v) => leaf(v).unwrap_or(id),
+                _ if !changed => id,
+                Node::Add(a, b) => self.add(new[a.index()], new[b.index()]),
+                Node::Mul(a, b) => self.mul(new[a.index()], new[b.index()]),
+                Node::Neg(a) => self.neg(new[a.index()]),
+                // A reciprocal of zero stays a division by zero, as before the substitution.
+                Node::Recip(a) => {
+                    let a = new[a.index()];
+                    self.recip(a).unwrap_or_else(|| self.intern_recip(a))
+                }
+                Node::Sin(a) => self.sin(new[a.index()]),
+                Node::Cos(a) => self.cos(new[a.index()]),
+                Node::Sign(a) => self.sign(new[a.index()]),
+                Node::Tanh(a) => self.tanh(new[a.index()]),
+                Node::Const(_) => id,
+            };
+        }
+        outputs.iter().map(|o| new[o.index()]).collect()
+    }
+}
+
+/// The joint variable a derivative is taken by: position `q_j` or velocity `q̇_j` (from 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wrt {
+    /// `q_j`.
+    Position(u16),
+    /// `q̇_j`.
+    Velocity(u16),
 }
 
 #[cfg(test)]

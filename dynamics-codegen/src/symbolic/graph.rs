@@ -268,6 +268,11 @@ impl Graph {
         }
     }
 
+    /// The node `1 / a` as it stands, unsimplified (a reciprocal of zero kept as written).
+    pub(super) fn intern_recip(&mut self, a: NodeId) -> NodeId {
+        self.intern(Node::Recip(a))
+    }
+
     /// `sin a`.
     pub fn sin(&mut self, a: NodeId) -> NodeId {
         match self.node(a) {

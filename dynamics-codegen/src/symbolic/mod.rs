@@ -7,6 +7,7 @@ mod graph;
 mod node;
 mod number;
 
+pub use calculus::Wrt;
 pub use expr::Expr;
 pub use graph::{Graph, Stats};
 pub use node::{Node, NodeId, Var, WRENCH};

@@ -13,7 +13,9 @@
 //!   (`kinematics`);
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
 //!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`);
-//! * the LDLᵀ of M, `M⁻¹` and `q̈ = M⁻¹(τ − C q̇ − g − f(q̇))` (`forward`).
+//! * the LDLᵀ of M, `M⁻¹` and `q̈ = M⁻¹(τ − C q̇ − g − f(q̇))` (`forward`);
+//! * for a robot that asks for them, `∂τ/∂q`, `∂τ/∂q̇` and `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ`
+//!   (`derivatives`, [`Equations::add_derivatives`]).
 //!
 //! Where an output has several routes to the same value, each is traced and the one that
 //! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
@@ -21,6 +23,7 @@
 
 mod coriolis;
 mod cost;
+mod derivatives;
 mod energy;
 mod forward;
 mod friction;
@@ -35,6 +38,7 @@ use crate::algo::{JointKind, RobotScalars};
 use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
 use cost::matrix_ids;
+pub use derivatives::DerivativeEquations;
 pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
@@ -79,6 +83,9 @@ pub struct Equations {
     pub kinematics: KinematicEquations,
     /// The LDLᵀ of M, `M⁻¹` and the forward dynamics.
     pub forward: ForwardEquations,
+    /// The derivatives of inverse and forward dynamics, where asked for
+    /// ([`Equations::add_derivatives`]).
+    pub derivatives: Option<DerivativeEquations>,
 }
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
@@ -128,5 +135,6 @@ pub fn derive(robot: &Robot) -> Equations {
         potential_energy,
         kinematics,
         forward,
+        derivatives: None,
     }
 }

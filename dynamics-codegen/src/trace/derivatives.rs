@@ -1,0 +1,119 @@
+//! The derivatives of the dynamics, for model-predictive control (opt-in: traced only for a
+//! robot that asks for them, [`Equations::add_derivatives`]).
+//!
+//! * `∂τ/∂q`: column j is the forward derivative of τ's traced graph by `q_j`
+//!   (`∂ sin q_j/∂q_j = cos q_j`), at compile time;
+//! * `∂τ/∂q̇`: the cheaper of that graph's derivative by `q̇_j` and `2 C + ∂f/∂q̇`, since with
+//!   the Christoffel symbols `∂(C q̇)_i/∂q̇_j = 2 Σ_k Γ_ijk q̇_k = 2 C_ij` (Γ_ijk = Γ_ikj);
+//! * `∂q̈/∂x = −M⁻¹ ∂τ/∂x` at the forward dynamics' `q̈` (Carpentier and Mansard, RSS 2018):
+//!   `∂τ/∂q` with each `q̈_i` replaced by that `q̈_i`, solved column by column with the LDLᵀ of
+//!   M that the forward dynamics factored; `∂q̈/∂τ = M⁻¹`.
+
+use super::cost::{cheapest, flat};
+use super::tracer::joint_index;
+use super::Equations;
+use crate::symbolic::{Expr, Graph, NodeId, Number, Var, Wrt};
+use std::cell::RefCell;
+
+/// The derivatives' outputs: node ids into [`Equations::graph`].
+#[derive(Clone, Debug)]
+pub struct DerivativeEquations {
+    /// `[∂τ/∂q, ∂τ/∂q̇]`, n × n each, row i the derivatives of `τ_i`.
+    pub inverse: Vec<Vec<Vec<NodeId>>>,
+    /// `q̈` of the forward dynamics (leaves [`Var::Tau`]).
+    pub qdd: Vec<NodeId>,
+    /// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]`, n × n each.
+    pub forward: Vec<Vec<Vec<NodeId>>>,
+}
+
+impl Equations {
+    /// Traces the derivatives ([`Equations::derivatives`]) into the graph, after every other
+    /// output, so that those keep their nodes.
+    pub fn add_derivatives(&mut self) {
+        let graph = RefCell::new(std::mem::take(&mut self.graph));
+        let inverse = inverse_derivatives(self, &graph);
+        let forward = forward_derivatives(self, &graph, &inverse);
+        self.graph = graph.into_inner();
+        self.derivatives = Some(DerivativeEquations {
+            inverse,
+            qdd: self.forward.qdd.clone(),
+            forward,
+        });
+    }
+}
+
+/// `[∂τ/∂q, ∂τ/∂q̇]` as matrices of nodes.
+fn inverse_derivatives(eq: &Equations, graph: &RefCell<Graph>) -> Vec<Vec<Vec<NodeId>>> {
+    let n = eq.dof;
+    let mut g = graph.borrow_mut();
+    let columns = |g: &mut Graph, wrt: fn(u16) -> Wrt| -> Vec<Vec<NodeId>> {
+        let columns: Vec<Vec<NodeId>> = (0..n)
+            .map(|j| g.derivative_by(&eq.tau, wrt(joint_index(j))))
+            .collect();
+        transpose(&columns)
+    };
+    let by_q = columns(&mut g, Wrt::Position);
+    let traced = columns(&mut g, Wrt::Velocity);
+    let two = g.num(Number::int(2));
+    let from_coriolis: Vec<Vec<NodeId>> = (0..n)
+        .map(|i| {
+            let slope = g.derivative_by(&[eq.friction[i]], Wrt::Velocity(joint_index(i)))[0];
+            (0..n)
+                .map(|j| {
+                    let c = g.mul(two, eq.coriolis[i][j]);
+                    if i == j {
+                        g.add(c, slope)
+                    } else {
+                        c
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    // Counted with ∂τ/∂q, which the same function computes.
+    let with_by_q = |by_qd: &Vec<Vec<NodeId>>| [flat(&by_q), flat(by_qd)].concat();
+    let by_qd = cheapest(&g, traced, [from_coriolis], with_by_q);
+    vec![by_q, by_qd]
+}
+
+/// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` at the forward dynamics' `q̈`.
+fn forward_derivatives(
+    eq: &Equations,
+    graph: &RefCell<Graph>,
+    inverse: &[Vec<Vec<NodeId>>],
+) -> Vec<Vec<Vec<NodeId>>> {
+    let qdd = &eq.forward.qdd;
+    let at_qdd = |m: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
+        let mut g = graph.borrow_mut();
+        m.iter()
+            .map(|row| {
+                g.substitute(row, |v| match v {
+                    Var::Qdd(i) => qdd.get(usize::from(i)).copied(),
+                    _ => None,
+                })
+            })
+            .collect()
+    };
+    let factors = eq.forward.factors_in(graph);
+    let solve_negated = |m: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
+        let rhs: Vec<Vec<Expr>> = m
+            .iter()
+            .map(|row| row.iter().map(|&id| -Expr::new(graph, id)).collect())
+            .collect();
+        let x = factors.solve_columns(&rhs);
+        x.iter()
+            .map(|row| row.iter().map(|e| e.id()).collect())
+            .collect()
+    };
+    let by_q = solve_negated(&at_qdd(&inverse[0]));
+    let by_qd = solve_negated(&at_qdd(&inverse[1]));
+    vec![by_q, by_qd, eq.forward.mass_inverse.clone()]
+}
+
+/// The rows of a matrix given by its columns.
+fn transpose(columns: &[Vec<NodeId>]) -> Vec<Vec<NodeId>> {
+    let rows = columns.first().map_or(0, Vec::len);
+    (0..rows)
+        .map(|i| columns.iter().map(|column| column[i]).collect())
+        .collect()
+}
