@@ -322,10 +322,11 @@ mod tests {
                 let d = r.inverse_dynamics_derivatives(&s.q, &s.qd, &s.qdd);
                 [rows(d.dtau_dq), rows(d.dtau_dqd)].concat()
             }
-            "dqdd" => r.forward_dynamics_derivatives(&s.q, &s.qd, &s.qdd).map_or(
-                vec![f64::NAN; 3 * N * N],
-                |d| [rows(d.dqdd_dq), rows(d.dqdd_dqd), rows(d.dqdd_dtau)].concat(),
-            ),
+            "dqdd" => r
+                .forward_dynamics_derivatives(&s.q, &s.qd, &s.qdd)
+                .map_or(vec![f64::NAN; 3 * N * N], |d| {
+                    [rows(d.dqdd_dq), rows(d.dqdd_dqd), rows(d.dqdd_dtau)].concat()
+                }),
             _ => unreachable!(),
         }
     }

@@ -2,16 +2,17 @@
 //! It builds only if generated code and the runtime (with `libm`) need nothing from std.
 #![no_std]
 
-use dynamics_runtime::Dynamics;
+use dynamics_runtime::{Dynamics, DynamicsDerivatives};
 
 /// A 6-joint robot with prismatic joints and products of inertia, from a description file.
 #[derive(Dynamics)]
-#[dynamics(file = "../data/reference/robots/random5.json")]
+#[dynamics(file = "../data/reference/robots/random5.json", derivatives = true)]
 pub struct Random5;
 
 /// A planar arm whose lengths, masses, spring and gravity are fields.
 #[derive(Dynamics)]
 #[dynamics(
+    derivatives = true,
     gravity = [0, -g, 0],
     dh = [
         //  θ          d   a    α
@@ -39,7 +40,7 @@ pub struct TwoLink {
 
 /// Every method, in single precision, summed so that nothing is optimized away.
 #[must_use]
-pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
+pub fn evaluate_f32<R: DynamicsDerivatives<N>, const N: usize>(
     robot: &R,
     q: &[f32; N],
     qd: &[f32; N],
@@ -56,6 +57,10 @@ pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
         .forward_dynamics(q, qd, &tau)
         .map_or(f32::NAN, |a| a[0]);
     let inverse = robot.mass_matrix_inverse(q).map_or(f32::NAN, |m| m[0][0]);
+    let derivatives = robot.inverse_dynamics_derivatives(q, qd, qdd);
+    let forward = robot
+        .forward_dynamics_derivatives(q, qd, &tau)
+        .map_or(f32::NAN, |d| d.dqdd_dq[0][0] + d.dqdd_dqd[0][0]);
     m[0][0]
         + c[N - 1][0]
         + cqd[0]
@@ -66,14 +71,18 @@ pub fn evaluate_f32<R: Dynamics<N>, const N: usize>(
         + robot.potential_energy(q)
         + qdd_back
         + inverse
+        + derivatives.dtau_dq[0][N - 1]
+        + derivatives.dtau_dqd[N - 1][0]
+        + forward
 }
 
-/// Inverse dynamics of both robots in double precision.
+/// Inverse dynamics of both robots in double precision, and the derivatives of one.
 #[must_use]
-pub fn torques_f64(arm: &TwoLink, q: &[f64; 6]) -> ([f64; 6], [f64; 2]) {
+pub fn torques_f64(arm: &TwoLink, q: &[f64; 6]) -> ([f64; 6], [f64; 2], [[f64; 6]; 6]) {
     let zero = [0.0; 6];
     (
         Random5.inverse_dynamics(q, &zero, &zero),
         arm.inverse_dynamics(&[q[0], q[1]], &[0.0; 2], &[0.0; 2]),
+        Random5.inverse_dynamics_derivatives(q, &zero, &zero).dtau_dq,
     )
 }
