@@ -1859,13 +1859,11 @@ mod __kinematics {
         let k5: T = T::from_f64(-0.4318);
         let k6: T = T::from_f64(-0.15005);
         let k7: T = T::from_f64(-0.67183);
-        let ([s1, s2, s3, s4], [c1, c2, c3, c4]) = T::sin_cos_4([
+        let ([s1, s2, s3, s4, s5, s6, _, _], [c1, c2, c3, c4, c5, c6, _, _]) = T::sin_cos_8([
             q_[0],
             q_[1],
             q_[2],
             q_[3],
-        ]);
-        let ([s5, s6, _, _], [c5, c6, _, _]) = T::sin_cos_4([
             q_[4],
             q_[5],
             T::ONE,

@@ -43,6 +43,10 @@ pub trait Real:
     /// registers on x86-64: SSE2 or AVX2 for `f64`, SSE for `f32`); each pair equals
     /// [`Real::sin_cos`] of its argument, bit for bit.
     fn sin_cos_4(x: [Self; 4]) -> ([Self; 4], [Self; 4]);
+    /// The sines and the cosines of eight arguments, as two [`Real::sin_cos_4`] side by side
+    /// behind one test of their range; each pair equals [`Real::sin_cos`] of its argument, bit
+    /// for bit.
+    fn sin_cos_8(x: [Self; 8]) -> ([Self; 8], [Self; 8]);
     /// The sign for Coulomb friction: −1, 0 or 1, with 0 at ±0 (a joint at rest gets no
     /// Coulomb torque), NaN for NaN. Not `f64::signum`, which is ±1 at ±0.
     fn sign(self) -> Self;
@@ -53,7 +57,7 @@ pub trait Real:
 }
 
 macro_rules! impl_real {
-    ($t:ty, $sin_cos:path, $sin_cos_4:path, $tanh:path) => {
+    ($t:ty, $sin_cos:path, $sin_cos_4:path, $sin_cos_8:path, $tanh:path) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -98,6 +102,10 @@ macro_rules! impl_real {
                 $sin_cos_4(x)
             }
             #[inline(always)]
+            fn sin_cos_8(x: [Self; 8]) -> ([Self; 8], [Self; 8]) {
+                $sin_cos_8(x)
+            }
+            #[inline(always)]
             fn sign(self) -> Self {
                 // Two compares and selects, no branch; NaN fails both and passes through.
                 if self > 0.0 {
@@ -120,12 +128,14 @@ impl_real!(
     f64,
     crate::trig::sin_cos_f64,
     crate::trig::sin_cos_4_f64,
+    crate::trig::sin_cos_8_f64,
     libm::tanh
 );
 impl_real!(
     f32,
     crate::trig::sin_cos_f32,
     crate::trig::sin_cos_4_f32,
+    crate::trig::sin_cos_8_f32,
     tanh_f32
 );
 

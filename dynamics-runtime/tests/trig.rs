@@ -11,6 +11,7 @@
 use dynamics_runtime::Real;
 use dynamics_test_support::Rng;
 
+mod lanes;
 mod ulp;
 use ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
 
@@ -387,89 +388,4 @@ fn f32_exhaustive_fast_range() {
         see_f32(&mut worst, -x);
     }
     worst.check("f32, every |x| <= 2^12", MAX_ULP_F32);
-}
-
-/// Asserts that `sin_cos_4` of the four arguments `$x` (of type `$t`) equals `Real::sin_cos` of
-/// each, bit for bit.
-macro_rules! assert_four_equal_one {
-    ($t:ty, $x:expr) => {{
-        let x: [$t; 4] = $x;
-        let (s4, c4) = <$t>::sin_cos_4(x);
-        for k in 0..4 {
-            let (s, c) = Real::sin_cos(x[k]);
-            assert_eq!(
-                (s4[k].to_bits(), c4[k].to_bits()),
-                (s.to_bits(), c.to_bits()),
-                "{x:?}"
-            );
-        }
-    }};
-}
-
-/// Four at once equals one at a time, bit for bit, in and out of the fast range. On x86-64 this
-/// checks the vector paths: SSE2 pairs for `f64` and SSE quads for `f32` in a default build, AVX2
-/// lanes for `f64` with `RUSTFLAGS="-C target-cpu=native"` (`.ci/run` runs it both ways).
-#[test]
-fn four_at_once_equal_one_at_a_time() {
-    let mut state = 0x2545_f491_4f6c_dd1d_u64;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    };
-    #[allow(clippy::cast_precision_loss)]
-    for round in 0..100_000 {
-        let mut x = [0.0f64; 4];
-        for v in &mut x {
-            let u = (next() >> 11) as f64 / (1u64 << 53) as f64;
-            *v = match round % 4 {
-                0 => (u - 0.5) * 20.0,
-                1 => (u - 0.5) * 2.0 * 65_536.0,
-                2 => (u - 0.5) * 1e-6,
-                _ => (u - 0.5) * 1e6,
-            };
-        }
-        assert_four_equal_one!(f64, x);
-        assert_four_equal_one!(f32, x.map(|v| v as f32));
-    }
-    // The edges of the fast range, where the four-lane test decides between the paths.
-    let tiny = 2f64.powi(-27); // `TINY_F64`
-    let edges = [
-        tiny,
-        -tiny,
-        f64::from_bits(tiny.to_bits() - 1),
-        BOUND_F64,
-        -BOUND_F64,
-        f64::from_bits(BOUND_F64.to_bits() + 1),
-        0.0,
-        -0.0,
-        f64::NAN,
-        f64::INFINITY,
-        1.0,
-        -2.5,
-    ];
-    for (i, &a) in edges.iter().enumerate() {
-        for &b in &edges[i..] {
-            assert_four_equal_one!(f64, [a, 1.0, b, -0.5]);
-        }
-    }
-    let tiny = 2f32.powi(-12); // `TINY_F32`
-    let edges = [
-        tiny,
-        -tiny,
-        f32::from_bits(tiny.to_bits() - 1),
-        BOUND_F32,
-        -BOUND_F32,
-        f32::from_bits(BOUND_F32.to_bits() + 1),
-        0.0,
-        f32::NAN,
-        f32::NEG_INFINITY,
-        1.0,
-    ];
-    for (i, &a) in edges.iter().enumerate() {
-        for &b in &edges[i..] {
-            assert_four_equal_one!(f32, [a, 1.0, b, -0.5]);
-        }
-    }
 }

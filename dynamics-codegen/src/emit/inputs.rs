@@ -56,10 +56,12 @@ impl Emitter<'_> {
             .collect()
     }
 
-    /// The sines and cosines of the joints that need them, four joints a call computed side by
-    /// side, `let ([s2, s3, s4, s5], [c2, c3, c4, c5]) = T::sin_cos_4([q_[1], …]);` (`_` for
-    /// an unused one; a last group of two or three is padded with `T::ONE`), a last single joint
-    /// on its own, `let (s6, c6) = T::sin_cos(q_[5]);`.
+    /// The sines and cosines of the joints that need them, computed side by side: up to eight
+    /// joints a call, `let ([s1, …, s6, _, _], [c1, …, c6, _, _]) = T::sin_cos_8([q_[0], …]);`
+    /// (six to eight, where one range test and two vectors in flight cost less than two
+    /// calls), `let ([s2, s3, _, _], [c2, c3, _, _]) = T::sin_cos_4([q_[1], q_[2], T::ONE,
+    /// T::ONE]);` (two to four, and five as four and one); a group is padded with `T::ONE`, `_`
+    /// names an unused value; a single joint on its own, `let (s6, c6) = T::sin_cos(q_[5]);`.
     pub(super) fn sines_and_cosines(&mut self, statements: &mut Vec<TokenStream>) {
         let mut joints = Vec::new();
         for i in 0..self.eq.dof {
@@ -92,7 +94,16 @@ impl Emitter<'_> {
             };
             joints.push((name(s, 's'), name(c, 'c'), angle, s, c));
         }
-        for group in joints.chunks(4) {
+        let mut rest = &joints[..];
+        while !rest.is_empty() {
+            // Five joints go as four and one: the second vector would cost more than one
+            // scalar pair.
+            let width = match rest.len() {
+                5 => 4,
+                n => n.min(8),
+            };
+            let (group, tail) = rest.split_at(width);
+            rest = tail;
             if let [(sn, cn, angle, s, c)] = group {
                 statements.push(match (s, c) {
                     (true, true) => quote!(let (#sn, #cn) = T::sin_cos(#angle);),
@@ -101,7 +112,12 @@ impl Emitter<'_> {
                 });
                 continue;
             }
-            let pad = 4 - group.len();
+            let (width, call) = if group.len() > 4 {
+                (8, quote!(sin_cos_8))
+            } else {
+                (4, quote!(sin_cos_4))
+            };
+            let pad = width - group.len();
             let blank = std::iter::repeat(quote!(_)).take(pad);
             let sines = group.iter().map(|j| j.0.clone()).chain(blank.clone());
             let cosines = group.iter().map(|j| j.1.clone()).chain(blank);
@@ -110,7 +126,7 @@ impl Emitter<'_> {
                 .map(|j| j.2.clone())
                 .chain(std::iter::repeat(quote!(T::ONE)).take(pad));
             statements.push(quote!(
-                let ([#(#sines),*], [#(#cosines),*]) = T::sin_cos_4([#(#angles),*]);
+                let ([#(#sines),*], [#(#cosines),*]) = T::#call([#(#angles),*]);
             ));
         }
     }

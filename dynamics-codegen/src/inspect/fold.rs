@@ -74,11 +74,15 @@ fn fold_pair(
         return None;
     }
     let both_cos = cos_a && cos_b;
-    let mut rest = m.clone();
-    rest.divide_once(&Sym::trig(cos_a, angle_a));
-    rest.divide_once(&Sym::trig(cos_b, angle_b));
+    // `m` without the two factors: built only for a fold, as most pairs have no partner.
+    let rest = || {
+        let mut rest = m.clone();
+        rest.divide_once(&Sym::trig(cos_a, angle_a));
+        rest.divide_once(&Sym::trig(cos_b, angle_b));
+        rest
+    };
     // cos-cos pairs with sin-sin of the opposite sign; sin-cos with cos-sin of the same sign.
-    let mut partner = rest.clone();
+    let mut partner = rest();
     partner.multiply(Sym::trig(!cos_a, angle_a), 1);
     partner.multiply(Sym::trig(!cos_b, angle_b), 1);
     let &pc = terms.get(&partner)?;
@@ -93,7 +97,7 @@ fn fold_pair(
     } else {
         pc
     };
-    let mut folded = rest;
+    let mut folded = rest();
     folded.multiply(Sym::trig(both_cos, angle_a.union(angle_b)), 1);
     Some(Fold {
         m: m.clone(),

@@ -46,11 +46,25 @@ unsafe fn fma(a: __m256d, b: __m256d, c: __m256d) -> __m256d {
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(super) unsafe fn in_fast_range(x: [f64; 4]) -> bool {
+    _mm256_movemask_pd(inside(x)) == 0b1111
+}
+
+/// [`in_fast_range`] of eight arguments, with one mask.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(super) unsafe fn in_fast_range_8(lo: [f64; 4], hi: [f64; 4]) -> bool {
+    _mm256_movemask_pd(_mm256_and_pd(inside(lo), inside(hi))) == 0b1111
+}
+
+/// All ones in the lanes whose `|x|` lies in `[TINY_F64, BOUND_F64]`.
+#[inline]
+#[target_feature(enable = "avx2")]
+unsafe fn inside(x: [f64; 4]) -> __m256d {
     let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
     let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
     let low = _mm256_cmp_pd::<_CMP_GE_OQ>(abs, _mm256_set1_pd(TINY_F64));
     let high = _mm256_cmp_pd::<_CMP_LE_OQ>(abs, _mm256_set1_pd(BOUND_F64));
-    _mm256_movemask_pd(_mm256_and_pd(low, high)) == 0b1111
+    _mm256_and_pd(low, high)
 }
 
 /// `(sin x, cos x)` of four arguments in the fast range: `super::scalar::fast_f64` lane by lane,

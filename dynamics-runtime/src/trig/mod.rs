@@ -41,7 +41,8 @@
 //! `f64` on random arguments and for `f32` on every argument; `tests/trig.rs` holds the bounds
 //! and the hardest cases. The measured errors and costs are in `docs/performance.md`.
 //!
-//! **Four at once** (`Real::sin_cos_4`, which generated code calls for groups of four joints):
+//! **Four at once** (`Real::sin_cos_4`, which generated code calls for groups of up to four
+//! joints, and `Real::sin_cos_8`, two such groups behind one range test, for five to eight):
 //! on x86-64 the same operations run in vector lanes, bit for bit the results of one at a time.
 //! `f64` uses the four lanes of AVX2 where the build enables it (`-C target-cpu=native`), else
 //! two SSE2 registers of two lanes, which every x86-64 build has; `f32` uses the four lanes of
@@ -71,5 +72,5 @@ mod sse2_f64;
 #[allow(unsafe_code)]
 mod sse_f32;
 
-pub(crate) use four::{sin_cos_4_f32, sin_cos_4_f64};
+pub(crate) use four::{sin_cos_4_f32, sin_cos_4_f64, sin_cos_8_f32, sin_cos_8_f64};
 pub(crate) use scalar::{sin_cos_f32, sin_cos_f64};

@@ -31,11 +31,25 @@ unsafe fn fma(a: __m128, b: __m128, c: __m128) -> __m128 {
 #[inline]
 #[target_feature(enable = "sse2")]
 pub(super) unsafe fn in_fast_range(x: [f32; 4]) -> bool {
+    _mm_movemask_ps(inside(x)) == 0b1111
+}
+
+/// [`in_fast_range`] of eight arguments, with one mask.
+#[inline]
+#[target_feature(enable = "sse2")]
+pub(super) unsafe fn in_fast_range_8(lo: [f32; 4], hi: [f32; 4]) -> bool {
+    _mm_movemask_ps(_mm_and_ps(inside(lo), inside(hi))) == 0b1111
+}
+
+/// All ones in the lanes whose `|x|` lies in `[TINY_F32, BOUND_F32]`.
+#[inline]
+#[target_feature(enable = "sse2")]
+unsafe fn inside(x: [f32; 4]) -> __m128 {
     let x = core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]);
     let abs = _mm_andnot_ps(_mm_set1_ps(-0.0), x);
     let low = _mm_cmpge_ps(abs, _mm_set1_ps(TINY_F32));
     let high = _mm_cmple_ps(abs, _mm_set1_ps(BOUND_F32));
-    _mm_movemask_ps(_mm_and_ps(low, high)) == 0b1111
+    _mm_and_ps(low, high)
 }
 
 /// `(sin x, cos x)` of four arguments in the fast range.
