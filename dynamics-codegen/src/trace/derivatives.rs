@@ -6,8 +6,8 @@
 //! * `∂τ/∂q̇`: the cheaper of that graph's derivative by `q̇_j` and `2 C + ∂f/∂q̇`, since with
 //!   the Christoffel symbols `∂(C q̇)_i/∂q̇_j = 2 Σ_k Γ_ijk q̇_k = 2 C_ij` (Γ_ijk = Γ_ikj);
 //! * `∂q̈/∂x = −M⁻¹ ∂τ/∂x` at the forward dynamics' `q̈` (Carpentier and Mansard, RSS 2018):
-//!   `∂τ/∂q` with each `q̈_i` replaced by that `q̈_i`, multiplied by the `M⁻¹` of the LDLᵀ
-//!   that the forward dynamics factored, which is `∂q̈/∂τ`.
+//!   `∂τ/∂q` with each `q̈_i` replaced by that `q̈_i`, solved column by column with the LDLᵀ of
+//!   M that the forward dynamics factored; `∂q̈/∂τ = M⁻¹`.
 
 use super::cost::{cheapest, flat};
 use super::tracer::joint_index;
@@ -94,25 +94,15 @@ fn forward_derivatives(
             })
             .collect()
     };
-    // −M⁻¹ B as products with the M⁻¹ the method returns anyway, negated once: as many
-    // operations as two triangular solves per column, but each entry an independent dot
-    // product, where the solves chain row after row.
-    let expr = |id: NodeId| Expr::new(graph, id);
-    let negated: Vec<Vec<Expr>> = (eq.forward.mass_inverse.iter())
-        .map(|row| row.iter().map(|&id| -expr(id)).collect())
-        .collect();
+    let factors = eq.forward.factors_in(graph);
     let solve_negated = |m: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
-        negated
+        let rhs: Vec<Vec<Expr>> = m
             .iter()
-            .map(|row| {
-                (0..m.len())
-                    .map(|j| {
-                        let terms = row.iter().zip(m).map(|(&a, b)| a * expr(b[j]));
-                        let sum = terms.reduce(|x, y| x + y).map(Expr::id);
-                        sum.unwrap_or_else(|| graph.borrow_mut().num(Number::ZERO))
-                    })
-                    .collect()
-            })
+            .map(|row| row.iter().map(|&id| -Expr::new(graph, id)).collect())
+            .collect();
+        let x = factors.solve_columns(&rhs);
+        x.iter()
+            .map(|row| row.iter().map(|e| e.id()).collect())
             .collect()
     };
     let by_q = solve_negated(&at_qdd(&inverse[0]));
