@@ -118,3 +118,23 @@ pub struct Rubbing {
     /// Joint 2's smoothing velocity.
     pub eps: f64,
 }
+
+/// Calls `$check(&robot, "name")` for each robot with forward-dynamics and derivatives'
+/// reference data (`data/forward/<name>.json`, `data/derivatives/<name>.json`): the reference
+/// robots whose M is positive definite, and the Panda.
+#[macro_export]
+macro_rules! for_each_robot_with_forward_data {
+    ($check:expr) => {{
+        use $crate::robots::{
+            NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford,
+        };
+        $check(&Puma560, "puma560");
+        $check(&Stanford, "stanford");
+        $check(&NikuTwoLink, "niku_2link");
+        $check(&NikuPolar, "niku_polar");
+        $check(&Random1, "random1");
+        $check(&Random2, "random2");
+        $check(&Random5, "random5");
+        $check(&Panda, "panda");
+    }};
+}

@@ -17,9 +17,7 @@ use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsDerivatives, NotPositiveDefinite};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{flat, matrix, vector};
-use dynamics_tests::robots::{
-    NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Rubbing, Stanford,
-};
+use dynamics_tests::robots::{NikuPolar, Panda, Puma560, Rubbing, Stanford};
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 
 /// The step of the central differences.
@@ -66,14 +64,7 @@ fn against_pinocchio<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name:
 
 #[test]
 fn pinocchio_rnea_and_aba_derivatives() {
-    against_pinocchio(&Puma560, "puma560");
-    against_pinocchio(&Stanford, "stanford");
-    against_pinocchio(&NikuTwoLink, "niku_2link");
-    against_pinocchio(&NikuPolar, "niku_polar");
-    against_pinocchio(&Random1, "random1");
-    against_pinocchio(&Random2, "random2");
-    against_pinocchio(&Random5, "random5");
-    against_pinocchio(&Panda, "panda");
+    dynamics_tests::for_each_robot_with_forward_data!(against_pinocchio);
 }
 
 /// Column j of `∂f/∂x` by central differences at `x`: row i is `∂f_i/∂x_j`.

@@ -122,14 +122,7 @@ fn against_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) -> f
 
 #[test]
 fn pinocchio_aba_and_minverse() {
-    against_pinocchio(&Puma560, "puma560");
-    against_pinocchio(&Stanford, "stanford");
-    against_pinocchio(&NikuTwoLink, "niku_2link");
-    against_pinocchio(&NikuPolar, "niku_polar");
-    against_pinocchio(&Random1, "random1");
-    against_pinocchio(&Random2, "random2");
-    against_pinocchio(&Random5, "random5");
-    against_pinocchio(&Panda, "panda");
+    dynamics_tests::for_each_robot_with_forward_data!(against_pinocchio);
 }
 
 #[test]
