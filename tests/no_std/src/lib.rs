@@ -83,6 +83,8 @@ pub fn torques_f64(arm: &TwoLink, q: &[f64; 6]) -> ([f64; 6], [f64; 2], [[f64; 6
     (
         Random5.inverse_dynamics(q, &zero, &zero),
         arm.inverse_dynamics(&[q[0], q[1]], &[0.0; 2], &[0.0; 2]),
-        Random5.inverse_dynamics_derivatives(q, &zero, &zero).dtau_dq,
+        Random5
+            .inverse_dynamics_derivatives(q, &zero, &zero)
+            .dtau_dq,
     )
 }
