@@ -1,7 +1,7 @@
 //! The expansion of a derive that failed: its errors, plus an impl whose methods are
 //! unreachable, so that code calling them compiles and the user sees only the real errors.
 
-use super::items::{method, runtime_path, scalar_name};
+use super::items::{method, runtime_path, scalar_name, trait_impls};
 use crate::front;
 use crate::method::Method;
 use proc_macro2::TokenStream;
@@ -15,33 +15,16 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
         return errors;
     };
     let krate = runtime_path(failure.krate.as_ref());
-    let ident = &input.ident;
-    let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
     let t = scalar_name(&input.generics);
-    let fns = |family_trait: &str| -> Vec<TokenStream> {
-        let methods = Method::ALL.iter().copied();
-        let in_trait = methods.filter(|m| m.family().trait_name() == family_trait);
-        in_trait.map(|m| method(m, n, &krate, &t, &body)).collect()
-    };
-    let dynamics = fns("Dynamics");
-    let derivatives = fns("DynamicsDerivatives");
-    let derivatives = failure.derivatives.then(|| {
-        quote! {
-            #[automatically_derived]
-            impl #impl_generics #krate::DynamicsDerivatives<#n> for #ident #ty_generics #where_clause {
-                #(#derivatives)*
-            }
-        }
-    });
+    let asked = |m: &Method| !m.family().is_opt_in() || failure.derivatives;
+    let fns = Method::ALL.iter().copied().filter(asked);
+    let fns = fns.map(|m| (m, method(m, n, &krate, &t, &body)));
+    let impls = trait_impls(&krate, n, &input.ident, &input.generics, fns);
     quote! {
         #errors
         const _: () = {
-            #[automatically_derived]
-            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
-                #(#dynamics)*
-            }
-            #derivatives
+            #impls
         };
     }
 }

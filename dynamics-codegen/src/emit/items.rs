@@ -129,39 +129,26 @@ impl Generated {
         let t = scalar_name(generics);
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
         let modules = self.modules.iter().map(|module| self.module(module, krate));
-        let fns = |family_trait: &str| {
-            self.methods
-                .iter()
-                .filter(move |m| m.method.family().trait_name() == family_trait)
-                .map(|m| {
-                    let name = Ident::new(m.name, Span::call_site());
-                    let (args, ret) = signature(m.method, n, &t, krate, false);
-                    let pass = call_arguments(m.method);
-                    let module = Ident::new(m.method.family().module(), Span::call_site());
-                    let call = quote!(#module::#name(&self.#parameters(), #pass));
-                    let call = forward(m.method, call, krate);
-                    let f = quote! {
-                        #[inline]
-                        fn #name<#t: #krate::Real>(&self, #args) -> #ret {
-                            #call
-                        }
-                    };
-                    match docs(m.method) {
-                        Some(doc) => quote!(#[doc = #doc] #f),
-                        None => f,
-                    }
-                })
-                .collect::<Vec<TokenStream>>()
-        };
-        let dynamics = fns("Dynamics");
-        // The opt-in trait, only for a robot that asked for it.
-        let derivatives = fns("DynamicsDerivatives");
-        let derivatives = (!derivatives.is_empty()).then(|| quote! {
-            #[automatically_derived]
-            impl #impl_generics #krate::DynamicsDerivatives<#n> for #ident #ty_generics #where_clause {
-                #(#derivatives)*
-            }
+        let fns = self.methods.iter().map(|m| {
+            let name = Ident::new(m.name, Span::call_site());
+            let (args, ret) = signature(m.method, n, &t, krate, false);
+            let pass = call_arguments(m.method);
+            let module = Ident::new(m.method.family().module(), Span::call_site());
+            let call = quote!(#module::#name(&self.#parameters(), #pass));
+            let call = forward(m.method, call, krate);
+            let f = quote! {
+                #[inline]
+                fn #name<#t: #krate::Real>(&self, #args) -> #ret {
+                    #call
+                }
+            };
+            let f = match docs(m.method) {
+                Some(doc) => quote!(#[doc = #doc] #f),
+                None => f,
+            };
+            (m.method, f)
         });
+        let impls = trait_impls(krate, n, ident, generics, fns);
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         quote! {
@@ -176,11 +163,7 @@ impl Generated {
                     [#(param(#fields)),*]
                 }
             }
-            #[automatically_derived]
-            impl #impl_generics #krate::Dynamics<#n> for #ident #ty_generics #where_clause {
-                #(#dynamics)*
-            }
-            #derivatives
+            #impls
         }
     }
 
@@ -350,6 +333,37 @@ pub fn method(
             #body
         }
     }
+}
+
+/// `impl Trait<N> for Type { … }` for each runtime trait that `methods` (a method and its item)
+/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods.
+pub(super) fn trait_impls(
+    krate: &TokenStream,
+    n: usize,
+    ident: &syn::Ident,
+    generics: &syn::Generics,
+    methods: impl Iterator<Item = (Method, TokenStream)>,
+) -> TokenStream {
+    let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+    let methods: Vec<(Method, TokenStream)> = methods.collect();
+    let mut traits: Vec<&str> = Family::ALL.iter().map(|f| f.trait_name()).collect();
+    traits.dedup();
+    let impls = traits.into_iter().filter_map(|name| {
+        let fns = methods
+            .iter()
+            .filter(|(m, _)| m.family().trait_name() == name);
+        let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
+        let name = Ident::new(name, Span::call_site());
+        (!fns.is_empty()).then(|| {
+            quote! {
+                #[automatically_derived]
+                impl #impl_generics #krate::#name<#n> for #ident #ty_generics #where_clause {
+                    #(#fns)*
+                }
+            }
+        })
+    });
+    quote!(#(#impls)*)
 }
 
 /// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
