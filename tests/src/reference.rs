@@ -22,17 +22,26 @@ pub enum Friction {
     Added,
 }
 
-/// The samples of `tests/data/<file>`.
+/// The 20 samples of `tests/data/<file>`.
 ///
 /// # Panics
 /// If the file is missing or malformed.
 #[must_use]
 pub fn samples(file: &str) -> Vec<Value> {
+    samples_counted(file, 20)
+}
+
+/// The `count` samples of `tests/data/<file>`.
+///
+/// # Panics
+/// If the file is missing or malformed, or has another number of samples.
+#[must_use]
+pub fn samples_counted(file: &str, count: usize) -> Vec<Value> {
     let path = format!("{}/data/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let data: Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"));
     let samples = data["samples"].as_array().expect("samples").clone();
-    assert_eq!(samples.len(), 20, "{file}");
+    assert_eq!(samples.len(), count, "{file}");
     samples
 }
 

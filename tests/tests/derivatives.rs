@@ -16,30 +16,17 @@ use dynamics_codegen::symbolic::Var;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsDerivatives, NotPositiveDefinite};
 use dynamics_tests::random::case;
-use dynamics_tests::reference::{flat, matrix, vector};
+use dynamics_tests::reference::{flat, matrix, samples_counted, vector};
 use dynamics_tests::robots::{NikuPolar, Panda, Puma560, Rubbing, Stanford};
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 
 /// The step of the central differences.
 const STEP: f64 = 1e-6;
 
-/// The samples of `data/derivatives/<name>.json`.
-fn samples(name: &str) -> Vec<serde_json::Value> {
-    let path = format!(
-        "{}/data/derivatives/{name}.json",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
-    let samples = data["samples"].as_array().expect("samples").clone();
-    assert_eq!(samples.len(), 10, "{name}");
-    samples
-}
-
 /// Every derivative against Pinocchio's at every sample; returns the worst scaled error.
 fn against_pinocchio<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name: &str) -> f64 {
     let mut worst = 0.0f64;
-    for s in samples(name) {
+    for s in samples_counted(&format!("derivatives/{name}.json"), 10) {
         let [q, qd, qdd, tau] = ["q", "qd", "qdd", "tau"].map(|key| vector::<N>(&s[key]));
         let inverse = robot.inverse_dynamics_derivatives(&q, &qd, &qdd);
         let forward = robot

@@ -18,7 +18,7 @@ use dynamics_reference::nalgebra::DMatrix;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::random::case;
-use dynamics_tests::reference::{matrix, samples, vector};
+use dynamics_tests::reference::{flat, matrix, samples, samples_counted, vector};
 use dynamics_tests::robots::{
     General, NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Rubbing, Stanford,
     Tilted, Ur5, Ur5Urdf,
@@ -96,13 +96,8 @@ fn reference_robots() {
 /// `forward_dynamics` and `mass_matrix_inverse` against `data/forward/<name>.json`; returns
 /// the worst scaled error.
 fn against_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) -> f64 {
-    let path = format!("{}/data/forward/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
-    let samples = data["samples"].as_array().expect("samples");
-    assert_eq!(samples.len(), 10, "{name}");
     let mut worst = 0.0f64;
-    for s in samples {
+    for s in samples_counted(&format!("forward/{name}.json"), 10) {
         let (q, qd, tau) = (
             vector::<N>(&s["q"]),
             vector::<N>(&s["qd"]),
@@ -110,7 +105,6 @@ fn against_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, name: &str) -> f
         );
         let qdd = robot.forward_dynamics(&q, &qd, &tau).expect("M ≻ 0");
         let inverse = robot.mass_matrix_inverse(&q).expect("M ≻ 0");
-        let flat = |m: [[f64; N]; N]| m.iter().flatten().copied().collect::<Vec<f64>>();
         worst = worst
             .max(scaled_error(&qdd, &vector::<N>(&s["qdd"])))
             .max(scaled_error(&flat(inverse), &flat(matrix::<N>(&s["Minv"]))));
