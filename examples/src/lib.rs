@@ -6,6 +6,7 @@ use dynamics_runtime::Dynamics;
 #[derive(Dynamics)]
 #[dynamics(
     gravity = [0, 0, -9.81],
+    derivatives = true,
     dh = [
         //  θ   d         a        α
         [   q,  0.67183,  0,       90 deg ],
