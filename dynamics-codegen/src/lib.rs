@@ -89,10 +89,12 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             const _: &[u8] = ::core::include_bytes!(#path);
         )
     });
+    let emit::Items { beside, within } = items;
     quote! {
+        #beside
         const _: () = {
             #track
-            #items
+            #within
             #equations
         };
     }

@@ -110,6 +110,16 @@ impl Family {
         self == Family::Derivatives
     }
 
+    /// Whether its functions are compiled once, apart from the code that calls them: each is
+    /// `#[inline(never)]`, in a module of the robot's own beside the derive's `const _` block
+    /// (a module inside that block shares the codegen unit of the code around it). Their code
+    /// is tens of kilobytes a function, microseconds against a call's nanoseconds, and
+    /// compiled in parallel with the rest.
+    #[must_use]
+    pub fn is_compiled_apart(self) -> bool {
+        self == Family::Derivatives
+    }
+
     /// The name of the module holding its generated functions.
     #[must_use]
     pub fn module(self) -> &'static str {

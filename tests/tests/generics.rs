@@ -38,3 +38,21 @@ fn generic_struct_derives_and_computes() {
     assert!(arm.gravity_torques::<f64>(&[std::f64::consts::FRAC_PI_2])[0].abs() < 1e-12);
     assert!(Pendulum::<String, u8, 2>::EQUATIONS.contains('M'));
 }
+
+/// With derivatives, their module goes beside the struct, named after it
+/// (`__derivatives_of_loop`): a struct named by a raw identifier, in a function body, works too.
+#[test]
+fn derivatives_of_a_struct_named_by_a_raw_identifier() {
+    use dynamics_runtime::DynamicsDerivatives;
+    #[allow(non_camel_case_types)]
+    #[derive(Dynamics)]
+    #[dynamics(gravity = [0, -9.81, 0], dh = [[q, 0, 2, 0]], link(mass = 3), derivatives = true)]
+    struct r#loop;
+    // τ = 12 q̈ + 58.86 cos q, so ∂τ/∂q = −58.86 sin q and ∂τ/∂q̇ = 0.
+    let d = r#loop.inverse_dynamics_derivatives::<f64>(&[0.5], &[0.3], &[0.2]);
+    assert!(
+        (d.dtau_dq[0][0] + 58.86 * 0.5f64.sin()).abs() < 1e-12,
+        "{d:?}"
+    );
+    assert!(d.dtau_dqd[0][0].abs() < 1e-12, "{d:?}");
+}

@@ -8,7 +8,7 @@ use dynamics_codegen::inspect::{
 };
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::{derive, expand_robot, generate, Equations, Generated};
-use quote::quote;
+use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
@@ -36,7 +36,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let _ = writeln!(
         out,
         "all items the derive emits: {} bytes",
-        items.to_string().len()
+        items.to_token_stream().to_string().len()
     );
     out += &readable(&eq, &robot);
     out += &whole_derive(&robot, &ty, &field_idents(&eq), args);

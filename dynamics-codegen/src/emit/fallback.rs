@@ -1,7 +1,7 @@
 //! The expansion of a derive that failed: its errors, plus an impl whose methods are
 //! unreachable, so that code calling them compiles and the user sees only the real errors.
 
-use super::items::{method, runtime_path, scalar_name, trait_impls};
+use super::impls::{method, runtime_path, scalar_name, trait_impls};
 use crate::front;
 use crate::method::Method;
 use proc_macro2::TokenStream;

@@ -1,9 +1,10 @@
 //! The generated items: the emitted bodies of every [`Method`] put together into a module of
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
+use super::impls::{argument_local, call_arguments, forward, scalar_name, signature, trait_impls};
 use super::{emit, local, Context, OpCount, Output, Shared};
 use super::{CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT, PARAMETERS};
-use crate::method::{Argument, Family, Method, Returns};
+use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{quote, ToTokens};
@@ -44,6 +45,39 @@ pub struct Module {
     /// The motion function's struct fields and body, if two methods share terms in `q̇`.
     pub motion: Option<Shared>,
 }
+/// A derive's items: those that go beside the robot's struct and those that go in the
+/// `const _: () = { … };` block, where their names are out of the user's reach.
+pub struct Items {
+    /// The modules of the families compiled apart ([`Family::is_compiled_apart`]), named
+    /// after the robot (`__derivatives_of_Puma560`).
+    pub beside: TokenStream,
+    /// The other modules, the parameters' reader and the trait impls.
+    pub within: TokenStream,
+}
+
+impl ToTokens for Items {
+    /// Both parts, one after the other, as a standalone module has them.
+    fn to_tokens(&self, tokens: &mut TokenStream) {
+        self.beside.to_tokens(tokens);
+        self.within.to_tokens(tokens);
+    }
+}
+
+/// The name of `family`'s module for the robot `ident`: the robot's name is part of it where
+/// the module goes beside the struct, so that two robots' modules differ.
+fn module_name(family: Family, ident: &syn::Ident) -> Ident {
+    if family.is_compiled_apart() {
+        // `unraw`: a struct may be named `r#type`.
+        let robot = syn::ext::IdentExt::unraw(ident);
+        Ident::new(
+            &format!("{}_of_{robot}", family.module()),
+            Span::call_site(),
+        )
+    } else {
+        Ident::new(family.module(), Span::call_site())
+    }
+}
+
 /// Name of the hidden inherent method reading the robot's parameters.
 const PARAMETERS_FN: &str = "__dynamics_parameters";
 
@@ -103,13 +137,14 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
 }
 
 impl Generated {
-    /// The items for the robot type `ident`, to go in a `const _: () = { … };` block:
+    /// The items for the robot type `ident`, most to go in a `const _: () = { … };` block:
     ///
     /// * a module `__dynamics` holding the configuration struct and function and one function
     ///   per method, which take the parameters as an array `p_: &[T; K]`. A module sees none of
     ///   the items around it, so no user constant can collide with a generated local (`let`
     ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
-    ///   a module per other [`Family`] (`__kinematics`), the same for its methods;
+    ///   a module per other [`Family`] (`__kinematics`), the same for its methods; those of
+    ///   the families compiled apart go beside the struct instead ([`Items::beside`]);
     /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
     ///   array (every field the description names, so none is left unread);
     /// * the `Dynamics` impl, each method one call into the module.
@@ -122,20 +157,29 @@ impl Generated {
         ident: &syn::Ident,
         generics: &syn::Generics,
         docs: &dyn Fn(Method) -> Option<String>,
-    ) -> TokenStream {
+    ) -> Items {
         let n = self.dof;
         let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
-        let modules = self.modules.iter().map(|module| self.module(module, krate));
+        let (apart, within): (Vec<&Module>, Vec<&Module>) = self
+            .modules
+            .iter()
+            .partition(|module| module.family.is_compiled_apart());
+        let module = |m: &&Module| self.module(m, krate, ident);
+        let (apart, modules) = (apart.iter().map(module), within.iter().map(module));
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
             let (args, ret) = signature(m.method, n, &t, krate, false);
             let pass = call_arguments(m.method);
-            let module = Ident::new(m.method.family().module(), Span::call_site());
+            let module = module_name(m.method.family(), ident);
             let call = quote!(#module::#name(&self.#parameters(), #pass));
-            let call = forward(m.method, call, krate);
+            let call = if m.method.family().is_compiled_apart() {
+                call
+            } else {
+                forward(m.method, call, krate)
+            };
             let f = quote! {
                 #[inline]
                 fn #name<#t: #krate::Real>(&self, #args) -> #ret {
@@ -151,7 +195,7 @@ impl Generated {
         let impls = trait_impls(krate, n, ident, generics, fns);
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
-        quote! {
+        let within = quote! {
             #(#modules)*
             impl #impl_generics #ident #ty_generics #where_clause {
                 /// The parameters the equations read, in the order of the description.
@@ -164,12 +208,16 @@ impl Generated {
                 }
             }
             #impls
+        };
+        Items {
+            beside: quote!(#(#apart)*),
+            within,
         }
     }
 
     /// The module of one family's functions: the shared functions and one function per
     /// method.
-    fn module(&self, module: &Module, krate: &TokenStream) -> TokenStream {
+    fn module(&self, module: &Module, krate: &TokenStream, ident: &syn::Ident) -> TokenStream {
         let (n, k) = (self.dof, self.fields.len());
         let p = local(PARAMETERS);
         let (configuration, motion) = (module.configuration.as_ref(), module.motion.as_ref());
@@ -182,18 +230,36 @@ impl Generated {
         let bodies = bodies.map(|m| {
             let name = Ident::new(m.name, Span::call_site());
             let scalar = Ident::new("T", Span::call_site());
-            let (args, ret) = signature(m.method, n, &scalar, krate, true);
             let body = &m.body;
+            // A function compiled apart returns the trait's type, built where its result is
+            // written: converted after the call, the result would be copied, and the copy's
+            // wide loads of values just stored one by one would wait for the stores.
+            let apart = module.family.is_compiled_apart();
+            let (args, ret) = signature(m.method, n, &scalar, krate, !apart);
+            let (inline, body) = if apart {
+                (
+                    quote!(#[inline(never)]),
+                    forward(m.method, quote!(({ #body })), krate),
+                )
+            } else {
+                (quote!(#[inline(always)]), quote!(#body))
+            };
             quote! {
-                #[inline(always)]
+                #inline
                 pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
                     #body
                 }
             }
         });
-        let name = Ident::new(module.family.module(), Span::call_site());
+        let name = module_name(module.family, ident);
+        // Beside the struct, the module is in the user's namespace, out of their docs.
+        let hidden = module
+            .family
+            .is_compiled_apart()
+            .then(|| quote!(#[doc(hidden)]));
         quote! {
             /// The generated functions, out of reach of the names around the derive.
+            #hidden
             #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
             mod #name {
                 #configuration_item
@@ -289,163 +355,4 @@ struct SharedFunction {
     name: &'static str,
     arguments: &'static [Argument],
     result: TokenStream,
-}
-
-/// The name of the generated methods' scalar type parameter: `T`, unless the struct has a
-/// generic parameter of that name (a method's parameter may not reuse its impl's), then the
-/// first of `S`, `R`, `F`, `T0`, `T1`, … it does not use.
-#[must_use]
-pub fn scalar_name(generics: &syn::Generics) -> Ident {
-    let taken: Vec<String> = generics
-        .params
-        .iter()
-        .filter_map(|p| match p {
-            syn::GenericParam::Type(t) => Some(t.ident.to_string()),
-            syn::GenericParam::Const(c) => Some(c.ident.to_string()),
-            syn::GenericParam::Lifetime(_) => None,
-        })
-        .collect();
-    let name = ["T", "S", "R", "F"]
-        .into_iter()
-        .map(String::from)
-        .chain((0..).map(|i| format!("T{i}")))
-        .find(|name| !taken.contains(name))
-        .unwrap_or_default();
-    Ident::new(&name, Span::call_site())
-}
-
-/// One method of the `Dynamics` impl with the given body, its scalar type parameter named
-/// `scalar` (see `scalar_name`).
-#[must_use]
-pub fn method(
-    method: Method,
-    n: usize,
-    krate: &TokenStream,
-    scalar: &Ident,
-    body: &TokenStream,
-) -> TokenStream {
-    let (args, ret) = signature(method, n, scalar, krate, false);
-    let name = Ident::new(method.name(), Span::call_site());
-    quote! {
-        #[inline]
-        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-        fn #name<#scalar: #krate::Real>(&self, #args) -> #ret {
-            #body
-        }
-    }
-}
-
-/// `impl Trait<N> for Type { … }` for each runtime trait that `methods` (a method and its item)
-/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods.
-pub(super) fn trait_impls(
-    krate: &TokenStream,
-    n: usize,
-    ident: &syn::Ident,
-    generics: &syn::Generics,
-    methods: impl Iterator<Item = (Method, TokenStream)>,
-) -> TokenStream {
-    let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
-    let methods: Vec<(Method, TokenStream)> = methods.collect();
-    let mut traits: Vec<&str> = Family::ALL.iter().map(|f| f.trait_name()).collect();
-    traits.dedup();
-    let impls = traits.into_iter().filter_map(|name| {
-        let fns = methods
-            .iter()
-            .filter(|(m, _)| m.family().trait_name() == name);
-        let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
-        let name = Ident::new(name, Span::call_site());
-        (!fns.is_empty()).then(|| {
-            quote! {
-                #[automatically_derived]
-                impl #impl_generics #krate::#name<#n> for #ident #ty_generics #where_clause {
-                    #(#fns)*
-                }
-            }
-        })
-    });
-    quote!(#(#impls)*)
-}
-
-/// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
-fn argument_local(argument: Argument) -> Ident {
-    local(&format!("{}_", argument.name()))
-}
-
-/// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`;
-/// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`,
-/// a result through the LDLᵀ of M as an `Option`, the derivatives' structs as arrays).
-fn signature(
-    method: Method,
-    n: usize,
-    t: &Ident,
-    krate: &TokenStream,
-    rows: bool,
-) -> (TokenStream, TokenStream) {
-    let arguments = method.arguments().iter().map(|&a| {
-        let name = argument_local(a);
-        match a {
-            Argument::Wrench => quote!(#name: &[#t; 6]),
-            Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => quote!(#name: &[#t; #n]),
-        }
-    });
-    let result = match method.returns() {
-        Returns::Matrix => quote!([[#t; #n]; #n]),
-        Returns::Vector => quote!([#t; #n]),
-        Returns::Scalar => quote!(#t),
-        Returns::Pose if rows => quote!([[#t; 4]; 3]),
-        Returns::Pose => quote!(#krate::Pose<#t>),
-        Returns::Poses if rows => quote!([[[#t; 4]; 3]; #n]),
-        Returns::Poses => quote!([#krate::Pose<#t>; #n]),
-        Returns::Jacobian => quote!([[#t; #n]; 6]),
-        Returns::Spatial => quote!([#t; 6]),
-        Returns::SolvedMatrix if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
-        Returns::SolvedMatrix => {
-            quote!(::core::result::Result<[[#t; #n]; #n], #krate::NotPositiveDefinite>)
-        }
-        Returns::SolvedVector if rows => quote!(::core::option::Option<[#t; #n]>),
-        Returns::SolvedVector => {
-            quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>)
-        }
-        Returns::InverseDerivatives if rows => quote!([[[#t; #n]; #n]; 2]),
-        Returns::InverseDerivatives => quote!(#krate::InverseDynamicsDerivatives<[[#t; #n]; #n]>),
-        Returns::ForwardDerivatives if rows => {
-            quote!(::core::option::Option<([#t; #n], [[[#t; #n]; #n]; 3])>)
-        }
-        Returns::ForwardDerivatives => quote!(::core::result::Result<
-            #krate::ForwardDynamicsDerivatives<[#t; #n], [[#t; #n]; #n]>,
-            #krate::NotPositiveDefinite,
-        >),
-    };
-    (quote!(#(#arguments),*), result)
-}
-
-/// The call of a method's function in the generated module, `module::name(p_, q_)`, turned
-/// into the trait's result (poses from their rows, the derivatives' structs from their
-/// blocks).
-fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStream {
-    match method.returns() {
-        Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
-        Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
-        Returns::SolvedMatrix | Returns::SolvedVector => {
-            quote!(#call.ok_or(#krate::NotPositiveDefinite))
-        }
-        Returns::InverseDerivatives => {
-            quote!(#krate::InverseDynamicsDerivatives::from_blocks(#call))
-        }
-        Returns::ForwardDerivatives => quote!(#call
-            .map(#krate::ForwardDynamicsDerivatives::from_parts)
-            .ok_or(#krate::NotPositiveDefinite)),
-        _ => call,
-    }
-}
-
-/// The arguments a method passes on, as in [`signature`].
-fn call_arguments(method: Method) -> TokenStream {
-    let arguments = method.arguments().iter().map(|&a| argument_local(a));
-    quote!(#(#arguments),*)
-}
-
-/// The runtime crate's path: `crate = "..."` if given, else `::dynamics_runtime`.
-pub(crate) fn runtime_path(krate: Option<&syn::Path>) -> TokenStream {
-    krate.map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream)
 }

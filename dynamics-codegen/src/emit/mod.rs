@@ -34,8 +34,10 @@
 //! `emitter` (one function's state), `expr` (expressions and parentheses), `sum_order` (the
 //! order of a sum's additions), `inputs` (joint variables, sines and cosines), `shared` (the
 //! configuration and motion functions), `body` (a method's body), `names` (output elements),
-//! `count` (operation counts), `items` (the derive's items), `fallback` (the expansion of a
-//! failed derive), `equations` (the readable equations' constants).
+//! `count` (operation counts), `items` (the derive's items: the families' modules, the
+//! parameters' reader), `impls` (the trait impls: signatures, calls into the modules),
+//! `fallback` (the expansion of a failed derive), `equations` (the readable equations'
+//! constants).
 
 mod body;
 mod count;
@@ -44,6 +46,7 @@ mod emitter;
 mod equations;
 mod expr;
 mod fallback;
+mod impls;
 mod inputs;
 mod items;
 mod names;
@@ -53,8 +56,9 @@ mod sum_order;
 pub use count::{count, OpCount};
 pub(crate) use equations::readable;
 pub(crate) use fallback::fallback;
-pub(crate) use items::runtime_path;
-pub use items::{generate, method, Generated, MethodCode, Module};
+pub use impls::method;
+pub(crate) use impls::runtime_path;
+pub use items::{generate, Generated, Items, MethodCode, Module};
 
 use crate::method::{Argument, Method};
 use crate::symbolic::NodeId;

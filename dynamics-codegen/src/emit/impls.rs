@@ -1,0 +1,167 @@
+//! The trait's side of a derive: each method's signature, the `impl`s of the runtime's traits,
+//! and the call of a method into its family's module, with the result turned into the trait's
+//! type.
+
+use super::local;
+use crate::method::{Argument, Family, Method, Returns};
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::{quote, ToTokens};
+
+/// The name of the generated methods' scalar type parameter: `T`, unless the struct has a
+/// generic parameter of that name (a method's parameter may not reuse its impl's), then the
+/// first of `S`, `R`, `F`, `T0`, `T1`, … it does not use.
+#[must_use]
+pub fn scalar_name(generics: &syn::Generics) -> Ident {
+    let taken: Vec<String> = generics
+        .params
+        .iter()
+        .filter_map(|p| match p {
+            syn::GenericParam::Type(t) => Some(t.ident.to_string()),
+            syn::GenericParam::Const(c) => Some(c.ident.to_string()),
+            syn::GenericParam::Lifetime(_) => None,
+        })
+        .collect();
+    let name = ["T", "S", "R", "F"]
+        .into_iter()
+        .map(String::from)
+        .chain((0..).map(|i| format!("T{i}")))
+        .find(|name| !taken.contains(name))
+        .unwrap_or_default();
+    Ident::new(&name, Span::call_site())
+}
+
+/// One method of the `Dynamics` impl with the given body, its scalar type parameter named
+/// `scalar` (see `scalar_name`).
+#[must_use]
+pub fn method(
+    method: Method,
+    n: usize,
+    krate: &TokenStream,
+    scalar: &Ident,
+    body: &TokenStream,
+) -> TokenStream {
+    let (args, ret) = signature(method, n, scalar, krate, false);
+    let name = Ident::new(method.name(), Span::call_site());
+    quote! {
+        #[inline]
+        #[allow(unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
+        fn #name<#scalar: #krate::Real>(&self, #args) -> #ret {
+            #body
+        }
+    }
+}
+
+/// `impl Trait<N> for Type { … }` for each runtime trait that `methods` (a method and its item)
+/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods.
+pub(super) fn trait_impls(
+    krate: &TokenStream,
+    n: usize,
+    ident: &syn::Ident,
+    generics: &syn::Generics,
+    methods: impl Iterator<Item = (Method, TokenStream)>,
+) -> TokenStream {
+    let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+    let methods: Vec<(Method, TokenStream)> = methods.collect();
+    let mut traits: Vec<&str> = Family::ALL.iter().map(|f| f.trait_name()).collect();
+    traits.dedup();
+    let impls = traits.into_iter().filter_map(|name| {
+        let fns = methods
+            .iter()
+            .filter(|(m, _)| m.family().trait_name() == name);
+        let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
+        let name = Ident::new(name, Span::call_site());
+        (!fns.is_empty()).then(|| {
+            quote! {
+                #[automatically_derived]
+                impl #impl_generics #krate::#name<#n> for #ident #ty_generics #where_clause {
+                    #(#fns)*
+                }
+            }
+        })
+    });
+    quote!(#(#impls)*)
+}
+
+/// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
+pub(super) fn argument_local(argument: Argument) -> Ident {
+    local(&format!("{}_", argument.name()))
+}
+
+/// The arguments and the result type of a method of the `Dynamics` trait, over scalar `t`;
+/// with `rows`, the result as the module's function returns it (a pose as its rows `[R | p]`,
+/// a result through the LDLᵀ of M as an `Option`, the derivatives' structs as arrays).
+pub(super) fn signature(
+    method: Method,
+    n: usize,
+    t: &Ident,
+    krate: &TokenStream,
+    rows: bool,
+) -> (TokenStream, TokenStream) {
+    let arguments = method.arguments().iter().map(|&a| {
+        let name = argument_local(a);
+        match a {
+            Argument::Wrench => quote!(#name: &[#t; 6]),
+            Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => quote!(#name: &[#t; #n]),
+        }
+    });
+    let result = match method.returns() {
+        Returns::Matrix => quote!([[#t; #n]; #n]),
+        Returns::Vector => quote!([#t; #n]),
+        Returns::Scalar => quote!(#t),
+        Returns::Pose if rows => quote!([[#t; 4]; 3]),
+        Returns::Pose => quote!(#krate::Pose<#t>),
+        Returns::Poses if rows => quote!([[[#t; 4]; 3]; #n]),
+        Returns::Poses => quote!([#krate::Pose<#t>; #n]),
+        Returns::Jacobian => quote!([[#t; #n]; 6]),
+        Returns::Spatial => quote!([#t; 6]),
+        Returns::SolvedMatrix if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
+        Returns::SolvedMatrix => {
+            quote!(::core::result::Result<[[#t; #n]; #n], #krate::NotPositiveDefinite>)
+        }
+        Returns::SolvedVector if rows => quote!(::core::option::Option<[#t; #n]>),
+        Returns::SolvedVector => {
+            quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>)
+        }
+        Returns::InverseDerivatives if rows => quote!([[[#t; #n]; #n]; 2]),
+        Returns::InverseDerivatives => quote!(#krate::InverseDynamicsDerivatives<[[#t; #n]; #n]>),
+        Returns::ForwardDerivatives if rows => {
+            quote!(::core::option::Option<([#t; #n], [[[#t; #n]; #n]; 3])>)
+        }
+        Returns::ForwardDerivatives => quote!(::core::result::Result<
+            #krate::ForwardDynamicsDerivatives<[#t; #n], [[#t; #n]; #n]>,
+            #krate::NotPositiveDefinite,
+        >),
+    };
+    (quote!(#(#arguments),*), result)
+}
+
+/// The call of a method's function in the generated module, `module::name(p_, q_)`, turned
+/// into the trait's result (poses from their rows, the derivatives' structs from their
+/// blocks).
+pub(super) fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStream {
+    match method.returns() {
+        Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
+        Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
+        Returns::SolvedMatrix | Returns::SolvedVector => {
+            quote!(#call.ok_or(#krate::NotPositiveDefinite))
+        }
+        Returns::InverseDerivatives => {
+            quote!(#krate::InverseDynamicsDerivatives::from_blocks(#call))
+        }
+        Returns::ForwardDerivatives => quote!(#call
+            .map(#krate::ForwardDynamicsDerivatives::from_parts)
+            .ok_or(#krate::NotPositiveDefinite)),
+        _ => call,
+    }
+}
+
+/// The arguments a method passes on, as in [`signature`].
+pub(super) fn call_arguments(method: Method) -> TokenStream {
+    let arguments = method.arguments().iter().map(|&a| argument_local(a));
+    quote!(#(#arguments),*)
+}
+
+/// The runtime crate's path: `crate = "..."` if given, else `::dynamics_runtime`.
+pub(crate) fn runtime_path(krate: Option<&syn::Path>) -> TokenStream {
+    krate.map_or_else(|| quote!(::dynamics_runtime), ToTokens::to_token_stream)
+}
