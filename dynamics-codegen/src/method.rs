@@ -110,13 +110,11 @@ impl Family {
         self == Family::Derivatives
     }
 
-    /// Whether its functions are compiled once, apart from the code that calls them: each is
-    /// `#[inline(never)]`, in a module of the robot's own beside the derive's `const _` block
-    /// (a module inside that block shares the codegen unit of the code around it). Their code
-    /// is tens of kilobytes a function, microseconds against a call's nanoseconds, and
-    /// compiled in parallel with the rest.
+    /// Whether its module goes beside the struct, named after it, rather than in the derive's
+    /// `const _` block: a module inside that block shares the codegen unit of the code around
+    /// it, and this family holds a method compiled apart ([`Method::is_compiled_apart`]).
     #[must_use]
-    pub fn is_compiled_apart(self) -> bool {
+    pub fn is_beside_the_struct(self) -> bool {
         self == Family::Derivatives
     }
 
@@ -250,6 +248,17 @@ macro_rules! declare_method {
             #[must_use]
             pub fn family(self) -> Family {
                 match self { $(Method::$variant => family!($family),)* }
+            }
+
+            /// Whether its function is compiled once, apart from the code that calls it:
+            /// `#[inline(never)]`, in its family's module beside the struct, a codegen unit
+            /// of its own, compiled in parallel with the rest. Only the largest, the forward
+            /// dynamics' derivatives (tens of kilobytes, microseconds a call): the inverse
+            /// dynamics' derivatives ran a half slower apart where the caller copied the
+            /// result at once (`docs/design.md`).
+            #[must_use]
+            pub fn is_compiled_apart(self) -> bool {
+                self == Method::ForwardDynamicsDerivatives
             }
 
             /// Its arguments, in order.

@@ -48,7 +48,7 @@ pub struct Module {
 /// A derive's items: those that go beside the robot's struct and those that go in the
 /// `const _: () = { … };` block, where their names are out of the user's reach.
 pub struct Items {
-    /// The modules of the families compiled apart ([`Family::is_compiled_apart`]), named
+    /// The modules of the families beside the struct ([`Family::is_beside_the_struct`]), named
     /// after the robot (`__derivatives_of_Puma560`).
     pub beside: TokenStream,
     /// The other modules, the parameters' reader and the trait impls.
@@ -66,7 +66,7 @@ impl ToTokens for Items {
 /// The name of `family`'s module for the robot `ident`: the robot's name is part of it where
 /// the module goes beside the struct, so that two robots' modules differ.
 fn module_name(family: Family, ident: &syn::Ident) -> Ident {
-    if family.is_compiled_apart() {
+    if family.is_beside_the_struct() {
         // `unraw`: a struct may be named `r#type`.
         let robot = syn::ext::IdentExt::unraw(ident);
         Ident::new(
@@ -166,7 +166,7 @@ impl Generated {
         let (apart, within): (Vec<&Module>, Vec<&Module>) = self
             .modules
             .iter()
-            .partition(|module| module.family.is_compiled_apart());
+            .partition(|module| module.family.is_beside_the_struct());
         let module = |m: &&Module| self.module(m, krate, ident);
         let (apart, modules) = (apart.iter().map(module), within.iter().map(module));
         let fns = self.methods.iter().map(|m| {
@@ -175,7 +175,7 @@ impl Generated {
             let pass = call_arguments(m.method);
             let module = module_name(m.method.family(), ident);
             let call = quote!(#module::#name(&self.#parameters(), #pass));
-            let call = if m.method.family().is_compiled_apart() {
+            let call = if m.method.is_compiled_apart() {
                 call
             } else {
                 forward(m.method, call, krate)
@@ -234,7 +234,7 @@ impl Generated {
             // A function compiled apart returns the trait's type, built where its result is
             // written: converted after the call, the result would be copied, and the copy's
             // wide loads of values just stored one by one would wait for the stores.
-            let apart = module.family.is_compiled_apart();
+            let apart = m.method.is_compiled_apart();
             let (args, ret) = signature(m.method, n, &scalar, krate, !apart);
             let (inline, body) = if apart {
                 (
@@ -255,7 +255,7 @@ impl Generated {
         // Beside the struct, the module is in the user's namespace, out of their docs.
         let hidden = module
             .family
-            .is_compiled_apart()
+            .is_beside_the_struct()
             .then(|| quote!(#[doc(hidden)]));
         quote! {
             /// The generated functions, out of reach of the names around the derive.
