@@ -146,17 +146,14 @@ fn main() {
                 tau.as_slice()
             );
         }
-        let h = PERIOD / SUBSTEPS as f64;
         let applied: [f64; 6] = tau.into();
-        for _ in 0..SUBSTEPS {
-            let qdd = robot
-                .forward_dynamics(&q, &qd, &applied)
-                .expect("M(q) is positive definite");
-            for i in 0..6 {
-                qd[i] += h * qdd[i];
-                q[i] += h * qd[i];
-            }
-        }
+        robot.simulate(
+            &mut q,
+            &mut qd,
+            &applied,
+            PERIOD / SUBSTEPS as f64,
+            SUBSTEPS,
+        );
     }
     println!(
         "per control period: linearization {:.2} µs (forward_dynamics_derivatives and the \

@@ -65,16 +65,13 @@ fn main() {
             );
         }
         let tau = tau.map(f64::from);
-        let h = f64::from(PERIOD) / SUBSTEPS as f64;
-        for _ in 0..SUBSTEPS {
-            let qdd = plant
-                .forward_dynamics(&q, &qd, &tau)
-                .expect("M(q) is positive definite");
-            for i in 0..6 {
-                qd[i] += h * qdd[i];
-                q[i] += h * qd[i];
-            }
-        }
+        plant.simulate(
+            &mut q,
+            &mut qd,
+            &tau,
+            f64::from(PERIOD) / SUBSTEPS as f64,
+            SUBSTEPS,
+        );
     }
     println!(
         "controller: {:.0} ns per period on average (gravity torques and the PD term, f32)",

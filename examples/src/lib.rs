@@ -30,3 +30,26 @@ pub struct Puma560 {
     /// Extra mass carried at the last link's centre of mass, kg.
     pub payload: f64,
 }
+
+impl Puma560 {
+    /// The examples' plant: `substeps` semi-implicit Euler steps of `h` seconds
+    /// (`q̇ += h q̈`, then `q += h q̇`) under the torques `tau`, by the generated forward dynamics.
+    pub fn simulate(
+        &self,
+        q: &mut [f64; 6],
+        qd: &mut [f64; 6],
+        tau: &[f64; 6],
+        h: f64,
+        substeps: usize,
+    ) {
+        for _ in 0..substeps {
+            let qdd = self
+                .forward_dynamics(q, qd, tau)
+                .expect("M(q) is positive definite");
+            for i in 0..6 {
+                qd[i] += h * qdd[i];
+                q[i] += h * qd[i];
+            }
+        }
+    }
+}
