@@ -45,6 +45,7 @@ pub struct Module {
     /// The motion function's struct fields and body, if two methods share terms in `q̇`.
     pub motion: Option<Shared>,
 }
+
 /// A derive's items: those that go beside the robot's struct and those that go in the
 /// `const _: () = { … };` block, where their names are out of the user's reach.
 pub struct Items {
@@ -144,7 +145,7 @@ impl Generated {
     ///   the items around it, so no user constant can collide with a generated local (`let`
     ///   patterns cannot shadow constants: a user's `const t1` would otherwise break the code);
     ///   a module per other [`Family`] (`__kinematics`), the same for its methods; those of
-    ///   the families compiled apart go beside the struct instead ([`Items::beside`]);
+    ///   [`Family::is_beside_the_struct`] go beside the struct instead ([`Items::beside`]);
     /// * a hidden inherent method `__dynamics_parameters` reading the struct's fields into that
     ///   array (every field the description names, so none is left unread);
     /// * the `Dynamics` impl, each method one call into the module.
@@ -163,12 +164,12 @@ impl Generated {
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
         let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
-        let (apart, within): (Vec<&Module>, Vec<&Module>) = self
+        let (beside, within): (Vec<&Module>, Vec<&Module>) = self
             .modules
             .iter()
             .partition(|module| module.family.is_beside_the_struct());
         let module = |m: &&Module| self.module(m, krate, ident);
-        let (apart, modules) = (apart.iter().map(module), within.iter().map(module));
+        let (beside, modules) = (beside.iter().map(module), within.iter().map(module));
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
             let (args, ret) = signature(m.method, n, &t, krate, false);
@@ -210,7 +211,7 @@ impl Generated {
             #impls
         };
         Items {
-            beside: quote!(#(#apart)*),
+            beside: quote!(#(#beside)*),
             within,
         }
     }
