@@ -3,8 +3,8 @@
 //! `q̈`, `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ`), discretized with the semi-implicit Euler step
 //! `q̇⁺ = q̇ + h q̈`, `q⁺ = q + h q̇⁺`, and a finite-horizon linear-quadratic regulator (the
 //! Riccati recursion over the horizon, without constraints) gives the torques of the first
-//! step, clipped to the motors' peak torques. The arm, simulated with `forward_dynamics` at a finer step, moves from rest to a
-//! target pose and holds it against gravity with a payload.
+//! step, clipped to the motors' peak torques. The arm, simulated with `forward_dynamics` at a
+//! finer step, moves from rest to a target pose and holds it against gravity with a payload.
 //!
 //! The time of the model is printed beside the solver's: the linearization is a small part of a
 //! control period, the Riccati recursion over the horizon nearly all of it.
@@ -15,6 +15,7 @@ use dynamics_examples::Puma560;
 use dynamics_runtime::nalgebra::DynamicsDerivativesNalgebra;
 use dynamics_runtime::Dynamics;
 use nalgebra::{SMatrix, SVector};
+use std::ops::AddAssign;
 use std::time::{Duration, Instant};
 
 /// The state `[q; q̇]`, the input `τ`.
@@ -41,8 +42,8 @@ struct Linear {
 }
 
 /// The semi-implicit Euler step of the arm at `(x0, tau0)` and its derivatives: with `A_q`,
-/// `A_v`, `B` the derivatives of `q̈`, `F = [I + h²A_q, hI + h²A_v; hA_q, I + hA_v]` and
-/// `G = [h²B; hB]`.
+/// `A_v`, `B` the derivatives of `q̈`, the velocity's rows are `[hA_q, I + hA_v]` and `hB`, and
+/// the position's, `q⁺ = q + h q̇⁺`, are `[I, 0]` plus `h` times those.
 fn linearize(robot: &Puma560, x0: &State, tau0: &Input) -> Linear {
     let (q, qd) = (x0.fixed_rows::<6>(0).into(), x0.fixed_rows::<6>(6).into());
     let d = robot
@@ -54,18 +55,18 @@ fn linearize(robot: &Puma560, x0: &State, tau0: &Input) -> Linear {
     let mut next = State::zeros();
     next.fixed_rows_mut::<6>(0).copy_from(&(q + qd_next * h));
     next.fixed_rows_mut::<6>(6).copy_from(&qd_next);
-    let velocity_rows = [d.dqdd_dq * h, identity + d.dqdd_dqd * h];
-    let mut f = StateMatrix::zeros();
-    f.fixed_view_mut::<6, 6>(0, 0)
-        .copy_from(&(identity + velocity_rows[0] * h));
-    f.fixed_view_mut::<6, 6>(0, 6)
-        .copy_from(&(identity * h + d.dqdd_dqd * (h * h)));
-    f.fixed_view_mut::<6, 6>(6, 0).copy_from(&velocity_rows[0]);
-    f.fixed_view_mut::<6, 6>(6, 6).copy_from(&velocity_rows[1]);
-    let mut g = InputMatrix::zeros();
-    g.fixed_view_mut::<6, 6>(0, 0)
-        .copy_from(&(d.dqdd_dtau * (h * h)));
+    let (mut f, mut g) = (StateMatrix::zeros(), InputMatrix::zeros());
+    f.fixed_view_mut::<6, 6>(6, 0).copy_from(&(d.dqdd_dq * h));
+    f.fixed_view_mut::<6, 6>(6, 6)
+        .copy_from(&(identity + d.dqdd_dqd * h));
     g.fixed_view_mut::<6, 6>(6, 0).copy_from(&(d.dqdd_dtau * h));
+    let velocity_rows = (
+        f.fixed_rows::<6>(6).into_owned(),
+        g.fixed_rows::<6>(6).into_owned(),
+    );
+    f.fixed_rows_mut::<6>(0).copy_from(&(velocity_rows.0 * h));
+    f.fixed_view_mut::<6, 6>(0, 0).add_assign(&identity);
+    g.fixed_rows_mut::<6>(0).copy_from(&(velocity_rows.1 * h));
     Linear { next, f, g }
 }
 

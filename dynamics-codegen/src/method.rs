@@ -111,11 +111,13 @@ impl Family {
     }
 
     /// Whether its module goes beside the struct, named after it, rather than in the derive's
-    /// `const _` block: a module inside that block shares the codegen unit of the code around
-    /// it, and this family holds a method compiled apart ([`Method::is_compiled_apart`]).
+    /// `const _` block: where it holds a method compiled apart ([`Method::is_compiled_apart`]),
+    /// since a module inside that block shares the codegen unit of the code around it.
     #[must_use]
     pub fn is_beside_the_struct(self) -> bool {
-        self == Family::Derivatives
+        Method::ALL
+            .iter()
+            .any(|m| m.family() == self && m.is_compiled_apart())
     }
 
     /// The name of the module holding its generated functions.

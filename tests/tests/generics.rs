@@ -55,4 +55,9 @@ fn derivatives_of_a_struct_named_by_a_raw_identifier() {
         "{d:?}"
     );
     assert!(d.dtau_dqd[0][0].abs() < 1e-12, "{d:?}");
+    // The forward derivatives are the function compiled apart, in that module: ∂q̈/∂τ = 1/12.
+    let f = r#loop
+        .forward_dynamics_derivatives::<f64>(&[0.5], &[0.3], &[1.0])
+        .expect("M = 12");
+    assert!((f.dqdd_dtau[0][0] - 1.0 / 12.0).abs() < 1e-15, "{f:?}");
 }
