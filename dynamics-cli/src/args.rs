@@ -1,6 +1,7 @@
 //! The command line, declared for clap: every subcommand, option and help text.
 
 use clap::{Args, Parser, Subcommand};
+use dynamics_codegen::{Family, FamilySet};
 use std::str::FromStr;
 
 /// The closed-form equations of motion of a serial robot, from its description file.
@@ -69,22 +70,52 @@ impl FromStr for Tool {
     }
 }
 
+/// The opt-in families of methods a command generates, as the attribute asks for them.
+#[derive(Args, Debug)]
+pub struct Families {
+    /// Also these opt-in families of methods, as `#[dynamics(..., FAMILY = true)]` asks for
+    /// them (comma-separated or repeated): derivatives
+    #[arg(long = "with", value_name = "FAMILY", value_delimiter = ',', value_parser = opt_in_family)]
+    pub with: Vec<Family>,
+    /// The same as `--with derivatives`
+    #[arg(long)]
+    pub derivatives: bool,
+}
+
+impl Families {
+    /// The families asked for, and every family that is not opt-in.
+    pub fn set(&self) -> FamilySet {
+        let with = self.with.iter().copied();
+        let shorthand = self.derivatives.then_some(Family::Derivatives);
+        with.chain(shorthand)
+            .fold(FamilySet::default(), FamilySet::with)
+    }
+}
+
+/// An opt-in family's name.
+fn opt_in_family(name: &str) -> Result<Family, String> {
+    Family::from_name(name)
+        .filter(|f| f.is_opt_in())
+        .ok_or_else(|| {
+            let names = Family::opt_in_names().join(", ");
+            format!("`{name}` is not an opt-in family of methods; the opt-in families: {names}")
+        })
+}
+
 #[derive(Args, Debug)]
 pub struct Emit {
     #[command(flatten)]
     pub robot: RobotFile,
-    /// Also the `DynamicsDerivatives` impl, as `#[dynamics(..., derivatives = true)]` asks
-    #[arg(long)]
-    pub derivatives: bool,
+    #[command(flatten)]
+    pub families: Families,
 }
 
 #[derive(Args, Debug)]
 pub struct Stats {
     #[command(flatten)]
     pub robot: RobotFile,
-    /// With the derivatives' methods, as `#[dynamics(..., derivatives = true)]` asks
-    #[arg(long)]
-    pub derivatives: bool,
+    #[command(flatten)]
+    pub families: Families,
     /// Times the whole derive this many times and prints the fastest run, the one least slowed
     /// by the machine's other work
     #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]

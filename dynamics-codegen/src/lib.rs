@@ -28,7 +28,7 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 pub use emit::{generate, Generated, MethodCode, OpCount};
-pub use method::Method;
+pub use method::{Family, FamilySet, Method};
 pub use trace::{derive, Equations};
 
 /// Entry point of `#[derive(Dynamics)]`.
@@ -45,19 +45,19 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
 }
 
 /// What `#[derive(Dynamics)]` expands to for `robot` on the type `input`, once the derive
-/// input is parsed, with `DynamicsDerivatives` if `derivatives`: for tools that time the
-/// derive (`dynamics stats`) on a robot they loaded.
+/// input is parsed, with the opt-in families of `families`: for tools that time the derive
+/// (`dynamics stats`) on a robot they loaded.
 #[must_use]
 pub fn expand_robot(
     input: &syn::DeriveInput,
     robot: &model::Robot,
-    derivatives: bool,
+    families: FamilySet,
 ) -> TokenStream {
     let parsed = front::Input {
         robot: robot.clone(),
         krate: None,
         tracked_file: None,
-        derivatives,
+        families,
     };
     expand(input, &parsed)
 }
@@ -66,9 +66,7 @@ pub fn expand_robot(
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let mut eq = trace::derive(&parsed.robot);
-    if parsed.derivatives {
-        eq.add_derivatives();
-    }
+    eq.add_families(parsed.families);
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields

@@ -3,71 +3,86 @@
 //! [`Dynamics`], and, for a robot that asks for them, their derivatives in
 //! [`DynamicsDerivatives`].
 
+// The result table's types name these.
 use crate::{
     ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose, Real,
 };
 
-/// The trait from the method table's rows: one method per row, its arguments `&[T; N]`.
-macro_rules! declare_dynamics {
-    ($(
-        $(#[doc = $doc:literal])*
-        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+/// `array_result!(keyword)`, `nalgebra_result!(keyword)` (result types) and
+/// `to_nalgebra!(keyword, value)` (the conversion) from the table's rows, for the traits'
+/// declarations.
+macro_rules! declare_result_lookups {
+    ($d:tt $(
+        $(#[doc = $_doc:literal])*
+        $keyword:ident {
             variant: $_variant:ident,
-            family: $family:ident,
-            equation: $_equation:expr,
-            prefix: $_prefix:literal,
-            summary: $_summary:literal,
-            element: $_element:literal,
-            $(diagonal: $_diagonal:literal,)?
-            $(default: $default:ident,)?
+            array: $array:ty,
+            nalgebra: $nalgebra:ty,
+            to_nalgebra: $to_nalgebra:expr,
+            rows: $_rows:ty,
+            from_rows: $_from_rows:expr,
         }
     )*) => {
-        /// Closed-form equations of motion of a serial robot with `N` joints,
-        /// `tau = M(q) qdd + C(q, qd) qd + g(q)` (Niku eq. 6.46).
-        ///
-        /// Every method is straight-line code generated from the robot's D-H table: no loops, no
-        /// heap. Each is generic over the scalar, so one robot evaluates in `f32` or `f64`; the
-        /// robot's parameters (struct fields) are converted to that scalar on each call.
-        pub trait Dynamics<const N: usize> {
-            /// Number of joints.
-            const DOF: usize = N;
-            $(
-                in_trait!(Dynamics, $family, trait_method!(
-                    $(#[doc = $doc])*
-                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result, T, N);
-                    $($default)?
-                ););
-            )*
+        /// The trait method's result type of a row's keyword.
+        macro_rules! array_result {
+            $(($keyword) => { $array };)*
         }
 
-        /// The derivatives of the equations of motion, for model-predictive and optimal
-        /// control: implemented by `#[derive(Dynamics)]` for a robot that asks for them with
-        /// `#[dynamics(..., derivatives = true)]`, since their code is several times the size
-        /// of the rest, and a robot that does not call them should not compile them.
-        ///
-        /// Straight-line code from the same expression graph as [`Dynamics`]: the derivatives
-        /// of its traced `τ` (forward differentiation at compile time, no finite differences,
-        /// no automatic differentiation at run time), and `∂q̈/∂x = −M⁻¹ ∂τ/∂x` solved with the
-        /// LDLᵀ of `M` (Carpentier and Mansard, RSS 2018).
-        pub trait DynamicsDerivatives<const N: usize>: Dynamics<N> {
-            $(
-                in_trait!(DynamicsDerivatives, $family, trait_method!(
-                    $(#[doc = $doc])*
-                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result, T, N);
-                    $($default)?
-                ););
-            )*
+        /// The `_na` wrapper's result type of a row's keyword (read with the `nalgebra` feature).
+        #[allow(unused_macros)]
+        macro_rules! nalgebra_result {
+            $(($keyword) => { $nalgebra };)*
+        }
+
+        /// An array result turned into its nalgebra form (read with the `nalgebra` feature,
+        /// whose `convert` gives the row's closure its argument's type).
+        #[allow(unused_macros)]
+        macro_rules! to_nalgebra {
+            $(($keyword, $d value:expr) => { convert($d value, $to_nalgebra) };)*
         }
     };
 }
 
-/// A row's items, kept in the trait of its family: the `derivatives` family's methods are
-/// [`DynamicsDerivatives`]'s, every other family's [`Dynamics`]'s.
-macro_rules! in_trait {
-    (Dynamics, derivatives, $($item:tt)*) => {};
-    (Dynamics, $family:ident, $($item:tt)*) => { $($item)* };
-    (DynamicsDerivatives, derivatives, $($item:tt)*) => { $($item)* };
-    (DynamicsDerivatives, $family:ident, $($item:tt)*) => {};
+for_each_result!(declare_result_lookups $);
+
+/// The traits from the method table's rows: one trait per `trait` row, one method per `fn`
+/// row of its families, its arguments `&[T; N]`.
+macro_rules! declare_traits {
+    ($(
+        $(#[doc = $trait_doc:literal])*
+        trait $trait:ident $(: $supertrait:ident)?, nalgebra $_nalgebra:ident {
+            items { $($items:tt)* }
+            $(
+                $(#[doc = $_family_doc:literal])*
+                family $_family:ident { $($_family_row:tt)* }
+                methods {$(
+                    $(#[doc = $doc:literal])*
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+                        variant: $_variant:ident,
+                        equation: $_equation:expr,
+                        prefix: $_prefix:literal,
+                        summary: $_summary:literal,
+                        element: $_element:literal,
+                        $(diagonal: $_diagonal:literal,)?
+                        $(default: $default:ident,)?
+                        $(compiled_apart: $_apart:literal,)?
+                    }
+                )*}
+            )*
+        }
+    )*) => {$(
+        $(#[doc = $trait_doc])*
+        pub trait $trait<const N: usize> $(: $supertrait<N>)? {
+            $($items)*
+            $($(
+                trait_method!(
+                    $(#[doc = $doc])*
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result);
+                    $($default)?
+                );
+            )*)*
+        }
+    )*};
 }
 
 /// A trait method's declaration, with a body where the row gives a default (`zeros`: the
@@ -98,43 +113,4 @@ macro_rules! argument_type {
     };
 }
 
-/// The type of a method's result: `[[T; N]; N]`, `[T; N]` or `T`; a [`Pose`], one per link,
-/// a Jacobian's six rows `[[T; N]; 6]` or a spatial 6-vector `[T; 6]`; a matrix or vector
-/// solved with `M`, or [`NotPositiveDefinite`]; the derivatives' structs.
-macro_rules! array_result {
-    (pose, $t:ty, $n:ident) => {
-        Pose<$t>
-    };
-    (poses, $t:ty, $n:ident) => {
-        [Pose<$t>; $n]
-    };
-    (jacobian, $t:ty, $n:ident) => {
-        [[$t; $n]; 6]
-    };
-    (spatial, $t:ty, $n:ident) => {
-        [$t; 6]
-    };
-    (matrix, $t:ty, $n:ident) => {
-        [[$t; $n]; $n]
-    };
-    (vector, $t:ty, $n:ident) => {
-        [$t; $n]
-    };
-    (scalar, $t:ty, $n:ident) => {
-        $t
-    };
-    (solved_matrix, $t:ty, $n:ident) => {
-        Result<[[$t; $n]; $n], NotPositiveDefinite>
-    };
-    (solved_vector, $t:ty, $n:ident) => {
-        Result<[$t; $n], NotPositiveDefinite>
-    };
-    (inverse_derivatives, $t:ty, $n:ident) => {
-        InverseDynamicsDerivatives<[[$t; $n]; $n]>
-    };
-    (forward_derivatives, $t:ty, $n:ident) => {
-        Result<ForwardDynamicsDerivatives<[$t; $n], [[$t; $n]; $n]>, NotPositiveDefinite>
-    };
-}
-
-for_each_method!(declare_dynamics);
+for_each_method!(declare_traits);

@@ -47,12 +47,15 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
-// First: the table of methods that `dynamics` and `nalgebra` declare their traits from.
+// First: the tables of methods and of their results that `dynamics` and `nalgebra` declare
+// their traits from.
 #[macro_use]
 mod methods;
+#[macro_use]
+mod results;
 
 mod derivatives;
-// Before `nalgebra`, which reads its `in_trait!`.
+// Before `nalgebra`, which reads its `nalgebra_result!` and `to_nalgebra!`.
 #[macro_use]
 mod dynamics;
 mod factor;

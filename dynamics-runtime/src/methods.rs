@@ -1,257 +1,316 @@
-// The table of the generated methods: the one place that lists them.
+// The table of the generated methods: the one place that lists them, by trait and family.
 //
-// `for_each_method!(callback)` calls `callback! { rows }`, one row per method of the
-// `Dynamics` trait, in the trait's order. The runtime reads it to declare the trait
-// (`dynamics.rs`) and its nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads the same
-// file (a symlink, `include!`d, hence no inner doc comment here) to build its `enum Method`.
+// `for_each_method!(callback)` calls `callback! { rows }`. The runtime reads it to declare its
+// traits (`dynamics.rs`) and their nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads
+// the same file (a symlink, `include!`d, hence no inner doc comment here) to build its
+// `enum Family` and `enum Method`. The rows nest:
 //
-// A row: the method's arguments (among `q`, `qd`, `qdd`, `wrench`, `tau`), its result (`matrix`,
-// `vector`, `scalar`, `pose`, `poses`, `jacobian`, `spatial`, `solved_matrix` and
-// `solved_vector`: a matrix or vector solved with M, or `NotPositiveDefinite`;
-// `inverse_derivatives`, `forward_derivatives`: the derivatives' structs) and the name of its
-// nalgebra wrapper, then
-//
-//     /// Rustdoc of the trait method.
-//     fn name(q, qd) -> vector, nalgebra name_na {
-//         variant: Name,                 // the codegen enum's variant
-//         family: dynamics,              // the generated module it goes to (`Family`):
-//                                        // dynamics, kinematics, forward, or derivatives:
-//                                        // the opt-in trait `DynamicsDerivatives`
-//         equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if it has one
-//         prefix: "tau",                 // generated element names: tau3, m1_2, p
-//         summary: "…",                  // one-line doc of `dynamics emit`
-//         element: "T{i} ({equation})",  // doc of a generated element; {i}, {j} from 1, {x}
-//                                        // the argument a derivative is taken by
-//         diagonal: "…",                 // optional: a matrix's diagonal elements, if different
-//         default: zeros,                // optional: the trait's body for robots whose
-//                                        // description gives no such term (friction)
+//     /// Rustdoc of the trait.
+//     trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra {
+//         items {}                         // the trait's other items (`const DOF`)
+//         /// Doc of the family.
+//         family Derivatives {             // the codegen enum's variant
+//             name: derivatives,           // its name: `derivatives = true` in the attribute,
+//                                          // `--with derivatives` on the command line
+//             module: "__derivatives",     // the generated module holding its functions
+//             opt_in: true,                // generated only for a robot that asks for it
+//             adjective: "derivatives' ",  // `dynamics stats`: (derivatives' configuration)
+//         }
+//         methods {
+//             /// Rustdoc of the trait method.
+//             fn name(q, qd) -> vector, nalgebra name_na {
+//                 variant: Name,                 // the codegen enum's variant
+//                 equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if any
+//                 prefix: "tau",                 // generated element names: tau3, m1_2, p
+//                 summary: "…",                  // one-line doc of `dynamics emit`
+//                 element: "T{i} ({equation})",  // doc of a generated element; {i}, {j} from
+//                                                // 1, {x} the argument a derivative is taken by
+//                 diagonal: "…",                 // optional: a matrix's diagonal, if different
+//                 default: zeros,                // optional: the trait's body for robots whose
+//                                                // description gives no such term (friction)
+//                 compiled_apart: true,          // optional: compiled once, apart from its
+//                                                // callers (below)
+//             }
+//         }
 //     }
 //
-// Adding a method: a row here, its `Equations` output in `dynamics-codegen/src/method.rs`,
-// the algorithm, and their tests.
+// A method's arguments are among `q`, `qd`, `qdd`, `wrench`, `tau`; its result is a keyword of
+// the result table (`results.rs`), which spells each result's types. A family is emitted in a
+// module of its own, so that code calling one family's methods never inlines another's.
+// A method `compiled_apart` is `#[inline(never)]`, in its family's module beside the struct, a
+// codegen unit of its own compiled in parallel with the rest: only the largest, the forward
+// dynamics' derivatives (tens of kilobytes, microseconds a call); the inverse dynamics'
+// derivatives ran a half slower apart, where the caller copied the result at once.
+// `docs/design.md` has the checklists for adding a method and a family.
 
 /// Calls `$callback!` with the rows of the method table (see the comment at the top of
 /// `methods.rs`).
 macro_rules! for_each_method {
     ($callback:ident) => {
         $callback! {
-            /// Mass matrix `M(q)`: the book's D_ij (eq. 6.43) plus actuator inertia I_i(act) on the
-            /// diagonal. Symmetric positive definite.
-            fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na {
-                variant: MassMatrix,
-                family: dynamics,
-                equation: Some("6.43"),
-                prefix: "m",
-                summary: "M(q), with the actuator inertia on the diagonal.",
-                element: "D{i}{j} = D{j}{i} ({equation})",
-                diagonal: "D{i}{i} ({equation}) + actuator inertia",
+            /// Closed-form equations of motion of a serial robot with `N` joints,
+            /// `tau = M(q) qdd + C(q, qd) qd + g(q)` (Niku eq. 6.46).
+            ///
+            /// Every method is straight-line code generated from the robot's D-H table: no
+            /// loops, no heap. Each is generic over the scalar, so one robot evaluates in `f32`
+            /// or `f64`; the robot's parameters (struct fields) are converted to that scalar on
+            /// each call.
+            trait Dynamics, nalgebra DynamicsNalgebra {
+                items {
+                    /// Number of joints.
+                    const DOF: usize = N;
+                }
+                /// M, C, g, τ, friction, energies.
+                family Dynamics {
+                    name: dynamics,
+                    module: "__dynamics",
+                    opt_in: false,
+                    adjective: "",
+                }
+                methods {
+                    /// Mass matrix `M(q)`: the book's D_ij (eq. 6.43) plus actuator inertia
+                    /// I_i(act) on the diagonal. Symmetric positive definite.
+                    fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na {
+                        variant: MassMatrix,
+                        equation: Some("6.43"),
+                        prefix: "m",
+                        summary: "M(q), with the actuator inertia on the diagonal.",
+                        element: "D{i}{j} = D{j}{i} ({equation})",
+                        diagonal: "D{i}{i} ({equation}) + actuator inertia",
+                    }
+                    /// Coriolis matrix `C(q, qd)` with `C_ij = Σ_k D_ijk qd_k`, where the book's
+                    /// D_ijk (eq. 6.44) are the Christoffel symbols of `M`. `Ṁ − 2C` is
+                    /// skew-symmetric.
+                    fn coriolis_matrix(q, qd) -> matrix, nalgebra coriolis_matrix_na {
+                        variant: CoriolisMatrix,
+                        equation: Some("6.44"),
+                        prefix: "cor",
+                        summary: "C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.",
+                        element: "C{i}{j} = sum of D{i}{j}k qd_k ({equation})",
+                    }
+                    /// Coriolis and centripetal torques `C(q, qd) qd = Σ_j Σ_k D_ijk qd_j qd_k`.
+                    fn coriolis_torques(q, qd) -> vector, nalgebra coriolis_torques_na {
+                        variant: CoriolisTorques,
+                        equation: None,
+                        prefix: "cqd",
+                        summary: "C(q, q̇) q̇.",
+                        element: "centripetal and Coriolis torque {i}",
+                    }
+                    /// Gravity torques `g(q)`: the book's D_i (eq. 6.45), plus joint spring torques
+                    /// `k_i (q_i − q0_i)`.
+                    fn gravity_torques(q) -> vector, nalgebra gravity_torques_na {
+                        variant: GravityTorques,
+                        equation: Some("6.45"),
+                        prefix: "g",
+                        summary: "g(q), with joint springs.",
+                        element: "D{i} ({equation}), gravity and spring",
+                    }
+                    /// Bias torques `C(q, qd) qd + g(q)` (Pinocchio's "non-linear effects").
+                    fn bias_torques(q, qd) -> vector, nalgebra bias_torques_na {
+                        variant: BiasTorques,
+                        equation: None,
+                        prefix: "h",
+                        summary: "C(q, q̇) q̇ + g(q).",
+                        element: "centripetal, Coriolis and gravity torque {i}",
+                    }
+                    /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46), actuator
+                    /// inertia and springs included, and joint friction where the robot declares
+                    /// it.
+                    fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na {
+                        variant: InverseDynamics,
+                        equation: Some("6.46"),
+                        prefix: "tau",
+                        summary: "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
+                        element: "T{i} ({equation})",
+                    }
+                    /// Joint friction torques `f_v qd + f_c sign(qd) + f_0`, per joint, with
+                    /// `sign(0) = 0` (`f_c tanh(qd / ε)` where a smoothing velocity ε is given).
+                    /// Zero for a robot without friction; `inverse_dynamics` includes them.
+                    fn friction_torques(qd) -> vector, nalgebra friction_torques_na {
+                        variant: FrictionTorques,
+                        equation: None,
+                        prefix: "f",
+                        summary: "Joint friction: f_v q̇ + f_c sign(q̇) + f_0.",
+                        element: "friction torque {i}",
+                        default: zeros,
+                    }
+                    /// Kinetic energy `½ qdᵀ M(q) qd` (eq. 6.39), actuators included.
+                    fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na {
+                        variant: KineticEnergy,
+                        equation: Some("6.39"),
+                        prefix: "k",
+                        summary: "The kinetic energy.",
+                        element: "kinetic energy",
+                    }
+                    /// Potential energy `−Σ m_i gᵀ p_i + Σ ½ k_i (q_i − q0_i)²`, zero with every
+                    /// centre of mass at the base origin and every spring at rest.
+                    fn potential_energy(q) -> scalar, nalgebra potential_energy_na {
+                        variant: PotentialEnergy,
+                        equation: None,
+                        prefix: "p",
+                        summary: "The potential energy.",
+                        element: "potential energy",
+                    }
+                }
+                /// Poses, Jacobians, acceleration bias, statics.
+                family Kinematics {
+                    name: kinematics,
+                    module: "__kinematics",
+                    opt_in: false,
+                    adjective: "kinematic ",
+                }
+                methods {
+                    /// The hand frame in the base frame, the book's `A_1 ⋯ A_n` followed by the
+                    /// tool transform if the robot declares one: rotation and position
+                    /// (`Pose::homogeneous` gives the 4×4 form).
+                    fn hand_pose(q) -> pose, nalgebra hand_pose_na {
+                        variant: HandPose,
+                        equation: None,
+                        prefix: "hand",
+                        summary: "The hand frame's pose, A1 ⋯ An (and the tool).",
+                        element: "hand pose [R | p], row {i} column {j}",
+                    }
+                    /// The pose of every link frame in the base frame: link i at `A_1 ⋯ A_i`.
+                    fn link_poses(q) -> poses, nalgebra link_poses_na {
+                        variant: LinkPoses,
+                        equation: None,
+                        prefix: "link",
+                        summary: "The pose of every link frame, A1 ⋯ Ai.",
+                        element: "link {k} pose [R | p], row {i} column {j}",
+                    }
+                    /// The hand's geometric Jacobian in the base frame: rows `[dx, dy, dz, δx, δy,
+                    /// δz]`, the velocity of the hand's origin and the hand's angular velocity per
+                    /// joint velocity, in base axes.
+                    fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na {
+                        variant: HandJacobianInBase,
+                        equation: None,
+                        prefix: "jb",
+                        summary: "The hand's Jacobian in the base frame.",
+                        element: "J{i}{j}, base frame (rows dx dy dz rx ry rz)",
+                    }
+                    /// The hand's Jacobian in the hand frame, the book's ᴴJ: rows `[dx, dy, dz, δx,
+                    /// δy, δz]` along and about the hand frame's axes.
+                    fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na {
+                        variant: HandJacobianInHand,
+                        equation: None,
+                        prefix: "jh",
+                        summary: "The book's ᴴJ, the hand's Jacobian in the hand frame.",
+                        element: "HJ{i}{j}, hand frame (rows dx dy dz rx ry rz)",
+                    }
+                    /// `J̇ q̇` of `hand_jacobian_in_base`: the hand's
+                    /// linear and angular acceleration at `qdd = 0`, in base axes.
+                    fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
+                        variant: HandAccelerationBiasInBase,
+                        equation: None,
+                        prefix: "ab",
+                        summary: "J̇ q̇ of the hand, in the base frame.",
+                        element: "row {i} of J qd' in the base frame",
+                    }
+                    /// The same acceleration as `hand_acceleration_bias_in_base` in the hand's axes
+                    /// (Pinocchio's classical acceleration in `LOCAL`; not `d(ᴴJ)/dt q̇`, which
+                    /// also has the terms of the hand frame's own turning).
+                    fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {
+                        variant: HandAccelerationBiasInHand,
+                        equation: None,
+                        prefix: "ah",
+                        summary: "J̇ q̇ of the hand, in the hand's axes.",
+                        element: "row {i} of J qd' in the hand frame",
+                    }
+                    /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]`
+                    /// given in the hand frame, `T = ᴴJᵀ ᴴF` (eq. 6.64).
+                    fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na {
+                        variant: JointTorquesForHandWrench,
+                        equation: Some("6.64"),
+                        prefix: "tf",
+                        summary: "T = ᴴJᵀ ᴴF for a wrench in the hand frame.",
+                        element: "T{i} ({equation})",
+                    }
+                    /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]`
+                    /// given in base axes, its moment about the hand's origin: `T = Jᵀ F` with the
+                    /// base-frame Jacobian.
+                    fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na {
+                        variant: JointTorquesForBaseWrench,
+                        equation: Some("6.64"),
+                        prefix: "tb",
+                        summary: "T = Jᵀ F for a wrench in base axes.",
+                        element: "T{i} ({equation}), wrench in base axes",
+                    }
+                }
+                /// What solves with M through its LDLᵀ: forward dynamics, `M⁻¹`.
+                family Forward {
+                    name: forward,
+                    module: "__forward",
+                    opt_in: false,
+                    adjective: "forward ",
+                }
+                methods {
+                    /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of
+                    /// `M`; `Err(NotPositiveDefinite)` where a pivot of the factorization is not
+                    /// positive (a robot whose parameters leave a joint without inertia).
+                    fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na {
+                        variant: MassMatrixInverse,
+                        equation: None,
+                        prefix: "mi",
+                        summary: "M(q)⁻¹, through the LDLᵀ of M.",
+                        element: "(M^-1){i}{j}",
+                    }
+                    /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint
+                    /// friction where the robot declares it, through the LDLᵀ factorization of `M`:
+                    /// the inverse of `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot
+                    /// is not positive.
+                    fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na {
+                        variant: ForwardDynamics,
+                        equation: None,
+                        prefix: "qdd",
+                        summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",
+                        element: "joint acceleration {i}",
+                    }
+                }
             }
-            /// Coriolis matrix `C(q, qd)` with `C_ij = Σ_k D_ijk qd_k`, where the book's D_ijk (eq. 6.44)
-            /// are the Christoffel symbols of `M`. `Ṁ − 2C` is skew-symmetric.
-            fn coriolis_matrix(q, qd) -> matrix, nalgebra coriolis_matrix_na {
-                variant: CoriolisMatrix,
-                family: dynamics,
-                equation: Some("6.44"),
-                prefix: "cor",
-                summary: "C(q, q̇), with C_ij = Σ_k D_ijk q̇_k.",
-                element: "C{i}{j} = sum of D{i}{j}k qd_k ({equation})",
-            }
-            /// Coriolis and centripetal torques `C(q, qd) qd = Σ_j Σ_k D_ijk qd_j qd_k`.
-            fn coriolis_torques(q, qd) -> vector, nalgebra coriolis_torques_na {
-                variant: CoriolisTorques,
-                family: dynamics,
-                equation: None,
-                prefix: "cqd",
-                summary: "C(q, q̇) q̇.",
-                element: "centripetal and Coriolis torque {i}",
-            }
-            /// Gravity torques `g(q)`: the book's D_i (eq. 6.45), plus joint spring torques
-            /// `k_i (q_i − q0_i)`.
-            fn gravity_torques(q) -> vector, nalgebra gravity_torques_na {
-                variant: GravityTorques,
-                family: dynamics,
-                equation: Some("6.45"),
-                prefix: "g",
-                summary: "g(q), with joint springs.",
-                element: "D{i} ({equation}), gravity and spring",
-            }
-            /// Bias torques `C(q, qd) qd + g(q)` (Pinocchio's "non-linear effects").
-            fn bias_torques(q, qd) -> vector, nalgebra bias_torques_na {
-                variant: BiasTorques,
-                family: dynamics,
-                equation: None,
-                prefix: "h",
-                summary: "C(q, q̇) q̇ + g(q).",
-                element: "centripetal, Coriolis and gravity torque {i}",
-            }
-            /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46), actuator inertia and
-            /// springs included, and joint friction where the robot declares it.
-            fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na {
-                variant: InverseDynamics,
-                family: dynamics,
-                equation: Some("6.46"),
-                prefix: "tau",
-                summary: "τ = M(q) q̈ + C(q, q̇) q̇ + g(q).",
-                element: "T{i} ({equation})",
-            }
-            /// Joint friction torques `f_v qd + f_c sign(qd) + f_0`, per joint, with `sign(0) = 0`
-            /// (`f_c tanh(qd / ε)` where a smoothing velocity ε is given). Zero for a robot
-            /// without friction; `inverse_dynamics` includes them.
-            fn friction_torques(qd) -> vector, nalgebra friction_torques_na {
-                variant: FrictionTorques,
-                family: dynamics,
-                equation: None,
-                prefix: "f",
-                summary: "Joint friction: f_v q̇ + f_c sign(q̇) + f_0.",
-                element: "friction torque {i}",
-                default: zeros,
-            }
-            /// Kinetic energy `½ qdᵀ M(q) qd` (eq. 6.39), actuators included.
-            fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na {
-                variant: KineticEnergy,
-                family: dynamics,
-                equation: Some("6.39"),
-                prefix: "k",
-                summary: "The kinetic energy.",
-                element: "kinetic energy",
-            }
-            /// Potential energy `−Σ m_i gᵀ p_i + Σ ½ k_i (q_i − q0_i)²`, zero with every centre of mass
-            /// at the base origin and every spring at rest.
-            fn potential_energy(q) -> scalar, nalgebra potential_energy_na {
-                variant: PotentialEnergy,
-                family: dynamics,
-                equation: None,
-                prefix: "p",
-                summary: "The potential energy.",
-                element: "potential energy",
-            }
-            /// The hand frame in the base frame, the book's `A_1 ⋯ A_n` followed by the tool
-            /// transform if the robot declares one: rotation and position
-            /// (`Pose::homogeneous` gives the 4×4 form).
-            fn hand_pose(q) -> pose, nalgebra hand_pose_na {
-                variant: HandPose,
-                family: kinematics,
-                equation: None,
-                prefix: "hand",
-                summary: "The hand frame's pose, A1 ⋯ An (and the tool).",
-                element: "hand pose [R | p], row {i} column {j}",
-            }
-            /// The pose of every link frame in the base frame: link i at `A_1 ⋯ A_i`.
-            fn link_poses(q) -> poses, nalgebra link_poses_na {
-                variant: LinkPoses,
-                family: kinematics,
-                equation: None,
-                prefix: "link",
-                summary: "The pose of every link frame, A1 ⋯ Ai.",
-                element: "link {k} pose [R | p], row {i} column {j}",
-            }
-            /// The hand's geometric Jacobian in the base frame: rows `[dx, dy, dz, δx, δy, δz]`, the
-            /// velocity of the hand's origin and the hand's angular velocity per joint velocity,
-            /// in base axes.
-            fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na {
-                variant: HandJacobianInBase,
-                family: kinematics,
-                equation: None,
-                prefix: "jb",
-                summary: "The hand's Jacobian in the base frame.",
-                element: "J{i}{j}, base frame (rows dx dy dz rx ry rz)",
-            }
-            /// The hand's Jacobian in the hand frame, the book's ᴴJ: rows `[dx, dy, dz, δx, δy, δz]`
-            /// along and about the hand frame's axes.
-            fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na {
-                variant: HandJacobianInHand,
-                family: kinematics,
-                equation: None,
-                prefix: "jh",
-                summary: "The book's ᴴJ, the hand's Jacobian in the hand frame.",
-                element: "HJ{i}{j}, hand frame (rows dx dy dz rx ry rz)",
-            }
-            /// `J̇ q̇` of `hand_jacobian_in_base`: the hand's
-            /// linear and angular acceleration at `qdd = 0`, in base axes.
-            fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
-                variant: HandAccelerationBiasInBase,
-                family: kinematics,
-                equation: None,
-                prefix: "ab",
-                summary: "J̇ q̇ of the hand, in the base frame.",
-                element: "row {i} of J qd' in the base frame",
-            }
-            /// The same acceleration as
-            /// `hand_acceleration_bias_in_base` in the hand's
-            /// axes (Pinocchio's classical acceleration in `LOCAL`; not `d(ᴴJ)/dt q̇`, which also
-            /// has the terms of the hand frame's own turning).
-            fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {
-                variant: HandAccelerationBiasInHand,
-                family: kinematics,
-                equation: None,
-                prefix: "ah",
-                summary: "J̇ q̇ of the hand, in the hand's axes.",
-                element: "row {i} of J qd' in the hand frame",
-            }
-            /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]` given in the
-            /// hand frame, `T = ᴴJᵀ ᴴF` (eq. 6.64).
-            fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na {
-                variant: JointTorquesForHandWrench,
-                family: kinematics,
-                equation: Some("6.64"),
-                prefix: "tf",
-                summary: "T = ᴴJᵀ ᴴF for a wrench in the hand frame.",
-                element: "T{i} ({equation})",
-            }
-            /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]` given in base
-            /// axes, its moment about the hand's origin: `T = Jᵀ F` with the base-frame Jacobian.
-            fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na {
-                variant: JointTorquesForBaseWrench,
-                family: kinematics,
-                equation: Some("6.64"),
-                prefix: "tb",
-                summary: "T = Jᵀ F for a wrench in base axes.",
-                element: "T{i} ({equation}), wrench in base axes",
-            }
-            /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of `M`;
-            /// `Err(NotPositiveDefinite)` where a pivot of the factorization is not positive (a
-            /// robot whose parameters leave a joint without inertia).
-            fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na {
-                variant: MassMatrixInverse,
-                family: forward,
-                equation: None,
-                prefix: "mi",
-                summary: "M(q)⁻¹, through the LDLᵀ of M.",
-                element: "(M^-1){i}{j}",
-            }
-            /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint friction where
-            /// the robot declares it, through the LDLᵀ factorization of `M`: the inverse of
-            /// `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot is not positive.
-            fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na {
-                variant: ForwardDynamics,
-                family: forward,
-                equation: None,
-                prefix: "qdd",
-                summary: "q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)).",
-                element: "joint acceleration {i}",
-            }
-            /// The derivatives of inverse dynamics at `(q, qd, qdd)`: `∂τ/∂q` and `∂τ/∂q̇`, each
-            /// `[[T; N]; N]` with row i the derivatives of `τ_i` (`∂τ/∂q̈` is `mass_matrix(q)`).
-            /// Friction's Coulomb term is taken as flat (`∂ sign(q̇)/∂q̇ = 0`), its smooth form
-            /// differentiated.
-            fn inverse_dynamics_derivatives(q, qd, qdd) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na {
-                variant: InverseDynamicsDerivatives,
-                family: derivatives,
-                equation: None,
-                prefix: "dtau",
-                summary: "∂τ/∂q and ∂τ/∂q̇ at (q, q̇, q̈).",
-                element: "d tau{i} / d {x}{j}",
-            }
-            /// Forward dynamics and its derivatives at `(q, qd, tau)`: `q̈`, `∂q̈/∂q`, `∂q̈/∂q̇` and
-            /// `∂q̈/∂τ = M⁻¹`, the first two as `−M⁻¹ ∂τ/∂x` at that `q̈`, solved with the LDLᵀ of
-            /// `M`. `Err(NotPositiveDefinite)` where a pivot is not positive.
-            fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na {
-                variant: ForwardDynamicsDerivatives,
-                family: derivatives,
-                equation: None,
-                prefix: "dqdd",
-                summary: "q̈, ∂q̈/∂q, ∂q̈/∂q̇ and ∂q̈/∂τ = M⁻¹ at (q, q̇, τ).",
-                element: "d qdd{i} / d {x}{j}",
+            /// The derivatives of the equations of motion, for model-predictive and optimal
+            /// control: implemented by `#[derive(Dynamics)]` for a robot that asks for them
+            /// with `#[dynamics(..., derivatives = true)]`, since their code is several times
+            /// the size of the rest, and a robot that does not call them should not compile
+            /// them.
+            ///
+            /// Straight-line code from the same expression graph as [`Dynamics`]: the
+            /// derivatives of its traced `τ` (forward differentiation at compile time, no finite
+            /// differences, no automatic differentiation at run time), and `∂q̈/∂x = −M⁻¹ ∂τ/∂x`
+            /// solved with the LDLᵀ of `M` (Carpentier and Mansard, RSS 2018).
+            trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra {
+                items {}
+                /// The derivatives of inverse and forward dynamics.
+                family Derivatives {
+                    name: derivatives,
+                    module: "__derivatives",
+                    opt_in: true,
+                    adjective: "derivatives' ",
+                }
+                methods {
+                    /// The derivatives of inverse dynamics at `(q, qd, qdd)`: `∂τ/∂q` and `∂τ/∂q̇`,
+                    /// each `[[T; N]; N]` with row i the derivatives of `τ_i` (`∂τ/∂q̈` is
+                    /// `mass_matrix(q)`). Friction's Coulomb term is taken as flat (`∂ sign(q̇)/∂q̇
+                    /// = 0`), its smooth form differentiated.
+                    fn inverse_dynamics_derivatives(q, qd, qdd) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na {
+                        variant: InverseDynamicsDerivatives,
+                        equation: None,
+                        prefix: "dtau",
+                        summary: "∂τ/∂q and ∂τ/∂q̇ at (q, q̇, q̈).",
+                        element: "d tau{i} / d {x}{j}",
+                    }
+                    /// Forward dynamics and its derivatives at `(q, qd, tau)`: `q̈`, `∂q̈/∂q`,
+                    /// `∂q̈/∂q̇` and `∂q̈/∂τ = M⁻¹`, the first two as `−M⁻¹ ∂τ/∂x` at that `q̈`,
+                    /// solved with the LDLᵀ of `M`. `Err(NotPositiveDefinite)` where a pivot is not
+                    /// positive.
+                    fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na {
+                        variant: ForwardDynamicsDerivatives,
+                        equation: None,
+                        prefix: "dqdd",
+                        summary: "q̈, ∂q̈/∂q, ∂q̈/∂q̇ and ∂q̈/∂τ = M⁻¹ at (q, q̇, τ).",
+                        element: "d qdd{i} / d {x}{j}",
+                        compiled_apart: true,
+                    }
+                }
             }
         }
     };

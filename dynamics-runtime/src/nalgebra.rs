@@ -13,36 +13,35 @@ use nalgebra::{
     Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
 };
 
-/// The traits from the method table's rows: one `_na` wrapper per method, each in the trait
-/// of its method's trait.
+/// The traits from the method table's rows: for each of the runtime's traits, one of `_na`
+/// wrappers, implemented for every type that implements the first.
 macro_rules! declare_nalgebra {
     ($(
-        $(#[$_doc:meta])*
-        fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident {
-            variant: $_variant:ident,
-            family: $family:ident,
-            $($_info:tt)*
-        }
-    )*) => {
-        /// nalgebra versions of the [`Dynamics`] methods, implemented for every robot.
-        pub trait DynamicsNalgebra<const N: usize>: Dynamics<N> {
+        $(#[doc = $_trait_doc:literal])*
+        trait $trait:ident $(: $_supertrait:ident)?, nalgebra $nalgebra:ident {
+            items { $($_items:tt)* }
             $(
-                in_trait!(Dynamics, $family, nalgebra_wrapper!(
-                    Dynamics fn $name, $wrapper($($argument),*) -> $result
-                ););
+                $(#[doc = $_family_doc:literal])*
+                family $_family:ident { $($_family_row:tt)* }
+                methods {$(
+                    $(#[doc = $_doc:literal])*
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident {
+                        $($_row:tt)*
+                    }
+                )*}
             )*
+        }
+    )*) => {$(
+        #[doc = concat!("nalgebra versions of the [`", stringify!($trait), "`] methods, ")]
+        #[doc = concat!("implemented for every type that implements [`", stringify!($trait), "`].")]
+        pub trait $nalgebra<const N: usize>: $trait<N> {
+            $($(
+                nalgebra_wrapper!($trait fn $name, $wrapper($($argument),*) -> $result);
+            )*)*
         }
 
-        /// nalgebra versions of the [`DynamicsDerivatives`] methods, implemented for every
-        /// robot that has them.
-        pub trait DynamicsDerivativesNalgebra<const N: usize>: DynamicsDerivatives<N> {
-            $(
-                in_trait!(DynamicsDerivatives, $family, nalgebra_wrapper!(
-                    DynamicsDerivatives fn $name, $wrapper($($argument),*) -> $result
-                ););
-            )*
-        }
-    };
+        impl<R: $trait<N> + ?Sized, const N: usize> $nalgebra<N> for R {}
+    )*};
 }
 
 /// The `_na` wrapper of one method: the arguments from nalgebra's types, the result to them.
@@ -52,8 +51,8 @@ macro_rules! nalgebra_wrapper {
         fn $wrapper<T: Real + RealField>(
             &self,
             $($argument: nalgebra_argument!($argument, T, N)),*
-        ) -> nalgebra_result!($result, T, N) {
-            nalgebra_result!($result, self.$name($(&array($argument)),*))
+        ) -> nalgebra_result!($result) {
+            to_nalgebra!($result, self.$name($(&array($argument)),*))
         }
     };
 }
@@ -65,40 +64,13 @@ macro_rules! nalgebra_argument {
     ($joint:ident, $t:ty, $n:ident) => { &SVector<$t, $n> };
 }
 
-/// A method's result as nalgebra returns it: its type (`$result, T, N`), or the conversion of
-/// an array result (`$result, value`).
-macro_rules! nalgebra_result {
-    (matrix, $t:ty, $n:ident) => { SMatrix<$t, $n, $n> };
-    (vector, $t:ty, $n:ident) => { SVector<$t, $n> };
-    (scalar, $t:ty, $n:ident) => { $t };
-    (pose, $t:ty, $n:ident) => { Isometry3<$t> };
-    (poses, $t:ty, $n:ident) => { [Isometry3<$t>; $n] };
-    (jacobian, $t:ty, $n:ident) => { SMatrix<$t, 6, $n> };
-    (spatial, $t:ty, $n:ident) => { SVector<$t, 6> };
-    (solved_matrix, $t:ty, $n:ident) => { Result<SMatrix<$t, $n, $n>, NotPositiveDefinite> };
-    (solved_vector, $t:ty, $n:ident) => { Result<SVector<$t, $n>, NotPositiveDefinite> };
-    (inverse_derivatives, $t:ty, $n:ident) => { InverseDynamicsDerivatives<SMatrix<$t, $n, $n>> };
-    (forward_derivatives, $t:ty, $n:ident) => {
-        Result<ForwardDynamicsDerivatives<SVector<$t, $n>, SMatrix<$t, $n, $n>>, NotPositiveDefinite>
-    };
-    (matrix, $value:expr) => { matrix(&$value) };
-    (vector, $value:expr) => { SVector::from($value) };
-    (scalar, $value:expr) => { $value };
-    (pose, $value:expr) => { isometry(&$value) };
-    (poses, $value:expr) => { $value.map(|p| isometry(&p)) };
-    (jacobian, $value:expr) => { SMatrix::from_fn(|i, j| $value[i][j]) };
-    (spatial, $value:expr) => { SVector::from($value) };
-    (solved_matrix, $value:expr) => { $value.map(|m| matrix(&m)) };
-    (solved_vector, $value:expr) => { $value.map(SVector::from) };
-    (inverse_derivatives, $value:expr) => { $value.map(|m| matrix(&m)) };
-    (forward_derivatives, $value:expr) => { $value.map(|d| d.map(SVector::from, |m| matrix(&m))) };
-}
-
 for_each_method!(declare_nalgebra);
 
-impl<R: Dynamics<N> + ?Sized, const N: usize> DynamicsNalgebra<N> for R {}
-
-impl<R: DynamicsDerivatives<N> + ?Sized, const N: usize> DynamicsDerivativesNalgebra<N> for R {}
+/// `into(value)`: a row's closure, typed by the value it is given.
+#[inline(always)]
+fn convert<A, B>(value: A, into: impl FnOnce(A) -> B) -> B {
+    into(value)
+}
 
 fn array<T: Real + RealField, const N: usize>(v: &SVector<T, N>) -> [T; N] {
     core::array::from_fn(|i| v[i])

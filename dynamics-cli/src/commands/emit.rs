@@ -9,9 +9,7 @@ pub fn run(args: &Emit) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let path = &args.robot.path;
     let mut eq = derive(&robot);
-    if args.derivatives {
-        eq.add_derivatives();
-    }
+    eq.add_families(args.families.set());
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;

@@ -16,9 +16,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let start = Instant::now();
     let mut eq = derive(&robot);
-    if args.derivatives {
-        eq.add_derivatives();
-    }
+    eq.add_families(args.families.set());
     let generated = generate(&eq, self_fields(&field_idents(&eq)));
     let elapsed = start.elapsed();
     let mut out = format!(
@@ -139,7 +137,7 @@ fn whole_derive(robot: &Robot, ty: &syn::Ident, fields: &[syn::Ident], args: &St
     let mut cpu: Option<Duration> = None;
     for _ in 0..runs {
         let (start, start_cpu) = (Instant::now(), thread_cpu_time());
-        let tokens = expand_robot(&input, robot, args.derivatives);
+        let tokens = expand_robot(&input, robot, args.families.set());
         let (elapsed, end_cpu) = (start.elapsed(), thread_cpu_time());
         drop(tokens);
         wall = wall.min(elapsed);

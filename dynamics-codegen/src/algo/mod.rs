@@ -1,5 +1,5 @@
 //! Rigid-body algorithms written once over a [`Scalar`]: run on `f64` they evaluate the
-//! dynamics numerically; run on [`crate::symbolic::Expr`] they trace the closed form into the
+//! dynamics numerically; run on [`crate::trace::Expr`] they trace the closed form into the
 //! expression graph, customized to one robot.
 //!
 //! All of them work on a [`Chain`]: the robot re-expressed with one frame per joint, on the
@@ -39,7 +39,7 @@ pub use vector::{Mat3, V3};
 use crate::symbolic::Number;
 use std::ops::{Add, Mul, Neg, Sub};
 
-/// What the algorithms compute with: `f64`, or the symbolic [`crate::symbolic::Expr`].
+/// What the algorithms compute with: `f64`, or the symbolic [`crate::trace::Expr`].
 pub trait Scalar:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Neg<Output = Self>
 {

@@ -4,10 +4,11 @@
 use super::count::count;
 use super::emitter::Emitter;
 use super::expr::Place;
-use super::names::Element;
-use super::{local, Body, Shape};
+use super::names::{local, output_names, Element};
+use super::parts::Body;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
+use crate::trace::Shape;
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
@@ -36,7 +37,7 @@ impl Emitter<'_> {
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
         let outputs = shape.outputs();
         self.mark(&outputs);
-        let mut output_names = self.output_names(shape, method);
+        let mut output_names = output_names(shape, method, |id| self.is_leaf(id));
         // A scalar result is returned as an expression, not bound.
         if matches!(shape, Shape::Scalar(_)) {
             output_names.clear();

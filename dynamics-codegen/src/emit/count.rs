@@ -3,38 +3,10 @@
 //! operations from the inputs to a result.
 
 use super::emitter::Emitter;
+use super::parts::OpCount;
 use super::sum_order::sum_order;
 use crate::symbolic::{Node, NodeId, Var};
 use crate::trace::Equations;
-
-/// Operation counts of an emitted function.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct OpCount {
-    /// Multiplications.
-    pub mul: usize,
-    /// Additions and subtractions.
-    pub add: usize,
-    /// Negations.
-    pub neg: usize,
-    /// Divisions.
-    pub div: usize,
-    /// Sine and cosine evaluations (a `sin_cos` pair counts 2), and the `sign` and `tanh` of
-    /// friction.
-    pub trig: usize,
-    /// The longest chain of dependent multiplications, additions and divisions from the inputs
-    /// (the joint variables, their sines and cosines, the parameters) to a result, each sum
-    /// added in the order the emitted code adds it: the operations that cannot overlap, which
-    /// bound the time of a call from below as the count bounds its throughput.
-    pub depth: usize,
-}
-
-impl OpCount {
-    /// Multiplications, additions and negations together.
-    #[must_use]
-    pub fn flops(&self) -> usize {
-        self.mul + self.add + self.neg + self.div
-    }
-}
 
 /// Operation counts of the code computing `outputs`, shared parts included: what a function
 /// costs once the compiler has inlined the configuration and dropped what it does not read.

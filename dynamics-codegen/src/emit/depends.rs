@@ -4,7 +4,7 @@
 //! motion, the rest in each method.
 
 use super::emitter::Emitter;
-use super::Output;
+use super::parts::Output;
 use crate::symbolic::{Node, NodeId, Var};
 use crate::trace::Equations;
 

@@ -1,7 +1,8 @@
 //! The emitter's state for one function: which nodes it needs and how often each is read,
 //! what each is read as, and which shared function computes it.
 
-use super::{local, Context, Shared};
+use super::names::local;
+use super::parts::{Context, Shared};
 use crate::symbolic::{Graph, Node, NodeId, Var};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};

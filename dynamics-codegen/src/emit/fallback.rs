@@ -7,8 +7,8 @@ use crate::method::Method;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-/// The errors, and where the joint count is known an impl of every [`Method`] (of
-/// `DynamicsDerivatives` too if the robot asked for it), unreachable.
+/// The errors, and where the joint count is known an impl of every [`Method`] of the families
+/// asked for, unreachable.
 pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let errors = failure.error.to_compile_error();
     let Some(n) = failure.dof else {
@@ -17,8 +17,10 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
     let krate = runtime_path(failure.krate.as_ref());
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
     let t = scalar_name(&input.generics);
-    let asked = |m: &Method| !m.family().is_opt_in() || failure.derivatives;
-    let fns = Method::ALL.iter().copied().filter(asked);
+    let fns = Method::ALL
+        .iter()
+        .copied()
+        .filter(|&m| failure.families.has(m));
     let fns = fns.map(|m| (m, method(m, n, &krate, &t, &body)));
     let impls = trait_impls(&krate, n, &input.ident, &input.generics, fns);
     quote! {

@@ -2,8 +2,8 @@
 //! and the call of a method into its family's module, with the result turned into the trait's
 //! type.
 
-use super::local;
-use crate::method::{Argument, Family, Method, Returns};
+use super::names::local;
+use crate::method::{Argument, Family, Instance, Method};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{quote, ToTokens};
 
@@ -104,33 +104,15 @@ pub(super) fn signature(
             Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => quote!(#name: &[#t; #n]),
         }
     });
-    let result = match method.returns() {
-        Returns::Matrix => quote!([[#t; #n]; #n]),
-        Returns::Vector => quote!([#t; #n]),
-        Returns::Scalar => quote!(#t),
-        Returns::Pose if rows => quote!([[#t; 4]; 3]),
-        Returns::Pose => quote!(#krate::Pose<#t>),
-        Returns::Poses if rows => quote!([[[#t; 4]; 3]; #n]),
-        Returns::Poses => quote!([#krate::Pose<#t>; #n]),
-        Returns::Jacobian => quote!([[#t; #n]; 6]),
-        Returns::Spatial => quote!([#t; 6]),
-        Returns::SolvedMatrix if rows => quote!(::core::option::Option<[[#t; #n]; #n]>),
-        Returns::SolvedMatrix => {
-            quote!(::core::result::Result<[[#t; #n]; #n], #krate::NotPositiveDefinite>)
-        }
-        Returns::SolvedVector if rows => quote!(::core::option::Option<[#t; #n]>),
-        Returns::SolvedVector => {
-            quote!(::core::result::Result<[#t; #n], #krate::NotPositiveDefinite>)
-        }
-        Returns::InverseDerivatives if rows => quote!([[[#t; #n]; #n]; 2]),
-        Returns::InverseDerivatives => quote!(#krate::InverseDynamicsDerivatives<[[#t; #n]; #n]>),
-        Returns::ForwardDerivatives if rows => {
-            quote!(::core::option::Option<([#t; #n], [[[#t; #n]; #n]; 3])>)
-        }
-        Returns::ForwardDerivatives => quote!(::core::result::Result<
-            #krate::ForwardDynamicsDerivatives<[#t; #n], [[#t; #n]; #n]>,
-            #krate::NotPositiveDefinite,
-        >),
+    let at = Instance {
+        scalar: t,
+        n,
+        krate,
+    };
+    let result = if rows {
+        method.returns().rows_type(&at)
+    } else {
+        method.returns().array_type(&at)
     };
     (quote!(#(#arguments),*), result)
 }
@@ -138,21 +120,19 @@ pub(super) fn signature(
 /// The call of a method's function in the generated module, `module::name(p_, q_)`, turned
 /// into the trait's result (poses from their rows, the derivatives' structs from their
 /// blocks).
-pub(super) fn forward(method: Method, call: TokenStream, krate: &TokenStream) -> TokenStream {
-    match method.returns() {
-        Returns::Pose => quote!(#krate::Pose::from_rows(#call)),
-        Returns::Poses => quote!(#call.map(#krate::Pose::from_rows)),
-        Returns::SolvedMatrix | Returns::SolvedVector => {
-            quote!(#call.ok_or(#krate::NotPositiveDefinite))
-        }
-        Returns::InverseDerivatives => {
-            quote!(#krate::InverseDynamicsDerivatives::from_blocks(#call))
-        }
-        Returns::ForwardDerivatives => quote!(#call
-            .map(#krate::ForwardDynamicsDerivatives::from_parts)
-            .ok_or(#krate::NotPositiveDefinite)),
-        _ => call,
-    }
+pub(super) fn forward(
+    method: Method,
+    call: TokenStream,
+    n: usize,
+    t: &Ident,
+    krate: &TokenStream,
+) -> TokenStream {
+    let at = Instance {
+        scalar: t,
+        n,
+        krate,
+    };
+    method.returns().from_rows(call, &at)
 }
 
 /// The arguments a method passes on, as in [`signature`].

@@ -2,8 +2,10 @@
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature, trait_impls};
-use super::{emit, local, Context, OpCount, Output, Shared};
-use super::{CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT, PARAMETERS};
+use super::names::PARAMETERS;
+use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
+use super::parts::{Context, OpCount, Output, Shared};
+use super::program::emit;
 use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
@@ -179,7 +181,7 @@ impl Generated {
             let call = if m.method.is_compiled_apart() {
                 call
             } else {
-                forward(m.method, call, krate)
+                forward(m.method, call, n, &t, krate)
             };
             let f = quote! {
                 #[inline]
@@ -240,7 +242,7 @@ impl Generated {
             let (inline, body) = if apart {
                 (
                     quote!(#[inline(never)]),
-                    forward(m.method, quote!(({ #body })), krate),
+                    forward(m.method, quote!(({ #body })), n, &scalar, krate),
                 )
             } else {
                 (quote!(#[inline(always)]), quote!(#body))

@@ -1,11 +1,30 @@
 //! The names of output elements (`m1_2` for M₁₂, `g3` for g₃, `tau3` for τ₃, `p`), typed: an
 //! element is its method and its index, which give both its name and its doc comment.
 
-use super::emitter::Emitter;
-use super::{local, Shape};
 use crate::method::Method;
 use crate::symbolic::NodeId;
-use proc_macro2::Ident;
+use crate::trace::Shape;
+use proc_macro2::{Ident, Span};
+
+/// Name of the configuration struct.
+pub const CONFIGURATION_STRUCT: &str = "Configuration";
+/// Name of the function computing it, `configuration(p_, q_)`.
+pub const CONFIGURATION_FN: &str = "configuration";
+/// Name of the struct of terms in `q̇` that several methods share.
+pub const MOTION_STRUCT: &str = "Motion";
+/// Name of the function computing it with the configuration, `motion(p_, q_, qd_)`.
+pub const MOTION_FN: &str = "motion";
+/// Name of the local holding the configuration in the motion function.
+pub const CONFIGURATION_LOCAL: &str = "c_";
+/// Name of the argument holding the robot's parameters, `[T; K]` in the order of
+/// `Equations::fields`.
+pub const PARAMETERS: &str = "p_";
+
+/// A name the generated code binds (see `Generated::items` for why no user item can
+/// take its place).
+pub fn local(name: &str) -> Ident {
+    Ident::new(name, Span::mixed_site())
+}
 
 /// An element of a method's result.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,42 +66,45 @@ impl Element {
     }
 }
 
-impl Emitter<'_> {
-    /// The output elements of `method`, whose result is `shape`, by node; an element equal to
-    /// an earlier one (M's lower triangle) keeps the earlier name.
-    pub(super) fn output_names(&self, shape: &Shape, method: Method) -> Vec<(NodeId, Element)> {
-        let mut named: Vec<(NodeId, Element)> = Vec::new();
-        let mut add = |id: NodeId, index: Index| {
-            if !self.is_leaf(id) && !named.iter().any(|(n, _)| *n == id) {
-                named.push((id, Element { method, index }));
+/// The output elements of `method`, whose result is `shape`, by node, leaves (which keep
+/// their own names) left out; an element equal to an earlier one (M's lower triangle) keeps
+/// the earlier name.
+pub(super) fn output_names(
+    shape: &Shape,
+    method: Method,
+    is_leaf: impl Fn(NodeId) -> bool,
+) -> Vec<(NodeId, Element)> {
+    let mut named: Vec<(NodeId, Element)> = Vec::new();
+    let mut add = |id: NodeId, index: Index| {
+        if !is_leaf(id) && !named.iter().any(|(n, _)| *n == id) {
+            named.push((id, Element { method, index }));
+        }
+    };
+    match shape {
+        Shape::Scalar(id) => add(*id, Index::Scalar),
+        Shape::Vector(v) | Shape::SolvedVector { vector: v, .. } => {
+            for (i, &id) in v.iter().enumerate() {
+                add(id, Index::Vector(i));
             }
-        };
-        match shape {
-            Shape::Scalar(id) => add(*id, Index::Scalar),
-            Shape::Vector(v) | Shape::SolvedVector { vector: v, .. } => {
-                for (i, &id) in v.iter().enumerate() {
-                    add(id, Index::Vector(i));
+        }
+        Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => {
+            for (i, row) in m.iter().enumerate() {
+                for (j, &id) in row.iter().enumerate() {
+                    add(id, Index::Matrix(i, j));
                 }
             }
-            Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => {
+        }
+        // The vector of a solved stack (`q̈` beside its derivatives) keeps temporaries'
+        // names: the element names say what a block's entries are.
+        Shape::Stack(s) | Shape::SolvedStack { stack: s, .. } => {
+            for (k, m) in s.iter().enumerate() {
                 for (i, row) in m.iter().enumerate() {
                     for (j, &id) in row.iter().enumerate() {
-                        add(id, Index::Matrix(i, j));
-                    }
-                }
-            }
-            // The vector of a solved stack (`q̈` beside its derivatives) keeps temporaries'
-            // names: the element names say what a block's entries are.
-            Shape::Stack(s) | Shape::SolvedStack { stack: s, .. } => {
-                for (k, m) in s.iter().enumerate() {
-                    for (i, row) in m.iter().enumerate() {
-                        for (j, &id) in row.iter().enumerate() {
-                            add(id, Index::Stack(k, i, j));
-                        }
+                        add(id, Index::Stack(k, i, j));
                     }
                 }
             }
         }
-        named
     }
+    named
 }

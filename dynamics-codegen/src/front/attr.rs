@@ -8,8 +8,10 @@ use super::errors::{unknown_key, Errors};
 use super::friction_attr::{parse_friction, FrictionAttr};
 use super::symbol::{Key, LinkKey};
 use super::value::Spanned;
+use crate::method::{Family, FamilySet};
 use crate::model::Convention;
 use proc_macro2::Span;
+use std::collections::BTreeMap;
 use syn::parse::ParseStream;
 use syn::{parenthesized, Ident, LitStr, Token};
 
@@ -56,11 +58,17 @@ pub(super) struct Attrs {
     pub tip: Option<LitStr>,
     /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
     pub tool: Option<[Spanned; 6]>,
-    /// `derivatives = true`: implement `DynamicsDerivatives` too.
-    pub derivatives: Option<bool>,
+    /// `derivatives = true` and the like: the opt-in families asked for, or refused.
+    pub families: BTreeMap<Family, bool>,
 }
 
 impl Attrs {
+    /// The families the robot has: the opt-in ones it asks for, and every other.
+    pub(super) fn families(&self) -> FamilySet {
+        let asked = self.families.iter().filter(|(_, &asked)| asked);
+        asked.fold(FamilySet::default(), |set, (&f, _)| set.with(f))
+    }
+
     /// Whether the attribute gives `key`, one of the keys a description file or a URDF
     /// replaces.
     fn gives(&self, key: &str) -> bool {
@@ -122,8 +130,6 @@ const BOTH_TABLES: &str = "`dh` and `joints` cannot be combined: give the joints
 const LINK_ATTRIBUTE: &str = "link attribute";
 /// What `check_inertia` does, for an error in its value.
 const KEEP: &str = "`check_inertia = false` keeps an inertia tensor that fails the physical checks";
-/// What `derivatives` does, for an error in its value.
-const DERIVE: &str = "`derivatives = true` also implements `DynamicsDerivatives`";
 
 /// One `key = value` entry of an attribute list, where a repeated key is reported.
 pub(super) struct Entry<'a> {
@@ -174,14 +180,44 @@ pub(super) fn parse_attrs(
         };
         if let Some(key) = Key::find(&ident) {
             parse_attr(input, key, &ident, attrs, errors)?;
+        } else if let Some(family) = opt_in_family(&ident) {
+            parse_family(input, family, &ident, attrs, errors)?;
         } else {
-            errors.push(ident.span(), unknown_key(&ident, ATTRIBUTE, Key::NAMES));
+            let known = Key::NAMES.iter().copied().chain(Family::opt_in_names());
+            let known: Vec<&str> = known.collect();
+            errors.push(ident.span(), unknown_key(&ident, ATTRIBUTE, &known));
             skip_entry(input)?;
         }
         if !input.is_empty() {
             input.parse::<Token![,]>()?;
         }
     }
+    Ok(())
+}
+
+/// The opt-in family `ident` names, whose key asks for it (`derivatives = true`).
+fn opt_in_family(ident: &Ident) -> Option<Family> {
+    Family::from_name(&ident.to_string()).filter(|f| f.is_opt_in())
+}
+
+/// Parses `= true` or `= false` after the name of an opt-in family.
+fn parse_family(
+    input: ParseStream,
+    family: Family,
+    ident: &Ident,
+    attrs: &mut Attrs,
+    errors: &mut Errors,
+) -> syn::Result<()> {
+    input.parse::<Token![=]>()?;
+    let usage = format!("`{ident} = true` also implements `{}`", family.trait_name());
+    let mut asked = attrs.families.get(&family).copied();
+    let mut entry = Entry {
+        ident,
+        what: ATTRIBUTE,
+        errors,
+    };
+    entry.keep_first(&mut asked, boolean(input, &usage)?);
+    attrs.families.insert(family, asked.unwrap_or_default());
     Ok(())
 }
 
@@ -233,7 +269,6 @@ fn parse_attr(
             entry.keep_first(&mut attrs.gravity, gravity);
         }
         Key::CheckInertia => entry.keep_first(&mut attrs.check_inertia, boolean(input, KEEP)?),
-        Key::Derivatives => entry.keep_first(&mut attrs.derivatives, boolean(input, DERIVE)?),
         Key::Dh => {
             let dh = parse_dh(input)?;
             if attrs.joints.is_some() {

@@ -47,6 +47,7 @@ pub use symbol::attribute_words;
 pub use urdf::{load_urdf, Chain};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
+use crate::method::FamilySet;
 use crate::model::Robot;
 use attr::{parse_attrs, Attrs};
 use syn::parse::ParseStream;
@@ -59,8 +60,9 @@ pub struct Input {
     pub krate: Option<syn::Path>,
     /// A description file to track for rebuilds (absolute path).
     pub tracked_file: Option<String>,
-    /// Whether to implement `DynamicsDerivatives` too (`derivatives = true`).
-    pub derivatives: bool,
+    /// The families to implement: the opt-in ones asked for (`derivatives = true`), and
+    /// every other.
+    pub families: FamilySet,
 }
 
 /// Why the derive input gave no robot.
@@ -72,9 +74,9 @@ pub struct Failure {
     pub dof: Option<usize>,
     /// The runtime crate's path, if `crate = "..."` was read.
     pub krate: Option<syn::Path>,
-    /// Whether `derivatives = true` was read: the fallback then implements
-    /// `DynamicsDerivatives` too.
-    pub derivatives: bool,
+    /// The families asked for, as far as read: the fallback then implements their traits
+    /// too.
+    pub families: FamilySet,
 }
 
 /// The `#[dynamics(...)]` attributes of the input.
@@ -168,6 +170,7 @@ fn finish(
     robot: Option<Robot>,
     tracked_file: Option<String>,
 ) -> Result<Input, Failure> {
+    let families = attrs.families();
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
             if let Some(name) = &attrs.name {
@@ -177,7 +180,7 @@ fn finish(
                 robot,
                 krate: attrs.krate,
                 tracked_file,
-                derivatives: attrs.derivatives.unwrap_or(false),
+                families,
             })
         }
         (Some(error), robot) => Err(Failure {
@@ -187,13 +190,13 @@ fn finish(
                 .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
                 .or_else(|| attrs.joints.as_ref().map(|(joints, _)| joints.len()))
                 .filter(|n| *n > 0),
-            derivatives: attrs.derivatives.unwrap_or(false),
+            families,
             krate: attrs.krate,
         }),
         (None, None) => Err(Failure {
             error: syn::Error::new(input.ident.span(), "no robot description"),
             dof: None,
-            derivatives: attrs.derivatives.unwrap_or(false),
+            families,
             krate: attrs.krate,
         }),
     }

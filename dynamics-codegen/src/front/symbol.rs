@@ -2,6 +2,7 @@
 //! the parser matches on the enum, and the table's names, in order, make the "expected one of"
 //! list of an unknown key's error.
 
+use crate::method::Family;
 use syn::Ident;
 
 /// An enum of keys with the name each is written as.
@@ -40,13 +41,12 @@ keys! {
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
     /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`,
-    /// `tool = [x, y, z, roll, pitch, yaw]`, `derivatives = true` (implement
-    /// `DynamicsDerivatives` too).
+    /// `tool = [x, y, z, roll, pitch, yaw]`. An opt-in family's name is a key too
+    /// (`derivatives = true`), from the method table.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
         Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tool = "tool",
-        Derivatives = "derivatives",
     }
 }
 
@@ -99,4 +99,5 @@ pub fn attribute_words() -> impl Iterator<Item = &'static str> {
     .into_iter()
     .flatten()
     .copied()
+    .chain(Family::opt_in_names())
 }

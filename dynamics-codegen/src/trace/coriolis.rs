@@ -13,9 +13,10 @@
 //!   of `M`: it wins on long chains. The symbols are then those of the cheapest of the four.
 
 use super::cost::{cheapest, flat, ids, matrix_ids};
+use super::expr::Expr;
 use super::tracer::joint_index;
 use crate::algo::{self, Chain};
-use crate::symbolic::{Expr, Graph, NodeId, Number};
+use crate::symbolic::{Graph, NodeId, Number};
 use std::cell::RefCell;
 
 /// `Γ_ijk` as `christoffel[i][j][k]`.

@@ -2,7 +2,8 @@
 //! that computing a set of outputs takes, shared subexpressions counted once. The emitted code
 //! computes exactly those nodes, so the cheaper route is the faster code.
 
-use crate::symbolic::{Expr, Graph, Node, NodeId};
+use super::expr::Expr;
+use crate::symbolic::{Graph, Node, NodeId};
 
 /// The additions, multiplications and negations that computing `outputs` takes.
 pub(super) fn operations(g: &Graph, outputs: &[NodeId]) -> usize {

@@ -10,9 +10,11 @@
 //!   M that the forward dynamics factored; `∂q̈/∂τ = M⁻¹`.
 
 use super::cost::{cheapest, flat};
+use super::expr::Expr;
 use super::tracer::joint_index;
 use super::Equations;
-use crate::symbolic::{Expr, Graph, NodeId, Number, Var, Wrt};
+use crate::method::Family;
+use crate::symbolic::{Graph, NodeId, Number, Var, Wrt};
 use std::cell::RefCell;
 
 /// The derivatives' outputs: node ids into [`Equations::graph`].
@@ -39,6 +41,7 @@ impl Equations {
             qdd: self.forward.qdd.clone(),
             forward,
         });
+        self.families = self.families.with(Family::Derivatives);
     }
 }
 

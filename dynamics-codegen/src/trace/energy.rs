@@ -2,9 +2,10 @@
 //! ([`algo::kinetic_energy`], [`algo::potential_energy`]), plus the actuators'
 //! `½ I_i(act) q̇_i²` and the springs' `½ k_i (q_i − rest_i)²`.
 
+use super::expr::Expr;
 use super::joints::JointTerms;
 use crate::algo::{self, Chain, V3};
-use crate::symbolic::{Expr, NodeId};
+use crate::symbolic::NodeId;
 
 /// The kinetic and the potential energy.
 pub(super) fn energies<'g>(

@@ -3,8 +3,9 @@
 //! parameters and `q` alone: in the forward family's module they go to its shared
 //! configuration, and each method adds only its right-hand side and the substitutions.
 
+use super::expr::Expr;
 use crate::algo;
-use crate::symbolic::{Expr, Graph, NodeId, Var};
+use crate::symbolic::{Graph, NodeId, Var};
 use std::cell::RefCell;
 
 /// The forward dynamics' outputs.

@@ -5,9 +5,10 @@
 //! composites in side by side, a shorter chain of products. On a tie the composites.
 
 use super::cost::{cheapest, ids};
+use super::expr::Expr;
 use super::joints::JointTerms;
 use crate::algo::{self, Chain, V3};
-use crate::symbolic::{Expr, Graph, NodeId};
+use crate::symbolic::{Graph, NodeId};
 use std::cell::RefCell;
 
 /// The cheapest `g(q)` of the candidates, springs included.

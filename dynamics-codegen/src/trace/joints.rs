@@ -3,10 +3,11 @@
 //! kinetic energy) and an optional spring (`k (q_i − rest)` in `g_i`, `½ k (q_i − rest)²` in
 //! the potential energy).
 
+use super::expr::Expr;
 use super::tracer::Tracer;
 use crate::algo::RobotScalars;
 use crate::model::Robot;
-use crate::symbolic::{Expr, Var};
+use crate::symbolic::Var;
 
 /// Per joint, its variables, actuator inertia and spring `(k, rest)`, traced.
 pub(super) struct JointTerms<'g> {

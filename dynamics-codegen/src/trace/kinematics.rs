@@ -6,10 +6,11 @@
 //! those of a robot without kinematics.
 
 use super::cost::{ids, matrix_ids};
+use super::expr::Expr;
 use super::tracer::Tracer;
 use crate::algo::{self, Frame, Jacobian};
 use crate::model::Robot;
-use crate::symbolic::{Expr, NodeId, Var};
+use crate::symbolic::{NodeId, Var};
 
 /// The kinematic outputs, as node ids.
 #[derive(Clone, Debug, Default)]

@@ -9,8 +9,9 @@
 //!   ([`Chain::summing_angles`]), which saves where a robot has such runs.
 
 use super::cost::{cheapest, flat, matrix_ids};
+use super::expr::Expr;
 use crate::algo::{self, Chain};
-use crate::symbolic::{Expr, Graph};
+use crate::symbolic::Graph;
 use std::cell::RefCell;
 
 /// A chain and `M` traced on it.

@@ -14,8 +14,10 @@
 //! * the Christoffel symbols `Γ_ijk = ½(∂M_ij/∂q_k + ∂M_ik/∂q_j − ∂M_jk/∂q_i)` and
 //!   `C_ij = Σ_k Γ_ijk q̇_k` (`coriolis`);
 //! * the LDLᵀ of M, `M⁻¹` and `q̈ = M⁻¹(τ − C q̇ − g − f(q̇))` (`forward`);
-//! * for a robot that asks for them, `∂τ/∂q`, `∂τ/∂q̇` and `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ`
-//!   (`derivatives`, [`Equations::add_derivatives`]).
+//! * for a robot that asks for them, the opt-in families ([`Equations::add_families`]):
+//!   `∂τ/∂q`, `∂τ/∂q̇` and `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ` (`derivatives`).
+//!
+//! `outputs` says which of these outputs each generated method returns.
 //!
 //! Where an output has several routes to the same value, each is traced and the one that
 //! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
@@ -25,6 +27,7 @@ mod coriolis;
 mod cost;
 mod derivatives;
 mod energy;
+mod expr;
 mod forward;
 mod friction;
 mod gravity;
@@ -32,16 +35,20 @@ mod joints;
 mod kinematics;
 mod mass;
 mod newton_euler;
+mod outputs;
 mod tracer;
 
 use crate::algo::{JointKind, RobotScalars};
+use crate::method::{Family, FamilySet};
 use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
 use cost::matrix_ids;
 pub use derivatives::DerivativeEquations;
+pub use expr::Expr;
 pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
+pub use outputs::Shape;
 use std::cell::RefCell;
 use tracer::Tracer;
 
@@ -83,9 +90,28 @@ pub struct Equations {
     pub kinematics: KinematicEquations,
     /// The LDLᵀ of M, `M⁻¹` and the forward dynamics.
     pub forward: ForwardEquations,
+    /// The families traced: every family but the opt-in ones, and those added
+    /// ([`Equations::add_families`]).
+    pub families: FamilySet,
     /// The derivatives of inverse and forward dynamics, where asked for
     /// ([`Equations::add_derivatives`]).
     pub derivatives: Option<DerivativeEquations>,
+}
+
+impl Equations {
+    /// Traces the opt-in families of `families` not traced yet, after every other output, in
+    /// the table's order, so that the outputs traced before keep their nodes.
+    pub fn add_families(&mut self, families: FamilySet) {
+        for family in families.opt_in() {
+            if self.families.contains(family) {
+                continue;
+            }
+            match family {
+                Family::Derivatives => self.add_derivatives(),
+                Family::Dynamics | Family::Kinematics | Family::Forward => {}
+            }
+        }
+    }
 }
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
@@ -135,6 +161,7 @@ pub fn derive(robot: &Robot) -> Equations {
         potential_energy,
         kinematics,
         forward,
+        families: FamilySet::default(),
         derivatives: None,
     }
 }

@@ -7,9 +7,10 @@
 //! trace is kept, output by output.
 
 use super::cost::{cheapest, ids};
+use super::expr::Expr;
 use super::joints::JointTerms;
 use crate::algo::{self, Chain, V3};
-use crate::symbolic::{Expr, Graph, NodeId};
+use crate::symbolic::{Graph, NodeId};
 use std::cell::RefCell;
 
 /// `C q̇`, `C q̇ + g` and `τ`.

@@ -3,9 +3,10 @@
 //! from the leaves `sin q_i`, `cos q_i` where θ is a quarter turn
 //! (`sin(q + kπ/2)`, `cos(q + kπ/2)` are `±sin q`, `±cos q`).
 
+use super::expr::Expr;
 use crate::algo::RobotScalars;
 use crate::model::{Robot, Value};
-use crate::symbolic::{Expr, Graph, NodeId, Number, Var};
+use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 use std::ops::Mul;
 

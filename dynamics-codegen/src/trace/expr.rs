@@ -1,8 +1,8 @@
 //! [`Expr`]: a node of a shared [`Graph`] with arithmetic operators, so that an algorithm
 //! written once over [`Scalar`] is traced into the graph when run on `Expr`.
 
-use super::{Graph, NodeId, Number};
 use crate::algo::Scalar;
+use crate::symbolic::{Graph, NodeId, Number};
 use std::cell::RefCell;
 use std::ops::{Add, Mul, Neg, Sub};
 

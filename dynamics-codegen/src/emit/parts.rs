@@ -1,0 +1,68 @@
+//! The pieces one emission hands between its steps: where the parameters are, the outputs
+//! to emit, the shared functions and the bodies written, with their operation counts.
+
+use crate::method::Method;
+use crate::trace::Shape;
+use proc_macro2::TokenStream;
+
+/// Operation counts of an emitted function.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpCount {
+    /// Multiplications.
+    pub mul: usize,
+    /// Additions and subtractions.
+    pub add: usize,
+    /// Negations.
+    pub neg: usize,
+    /// Divisions.
+    pub div: usize,
+    /// Sine and cosine evaluations (a `sin_cos` pair counts 2), and the `sign` and `tanh` of
+    /// friction.
+    pub trig: usize,
+    /// The longest chain of dependent multiplications, additions and divisions from the inputs
+    /// (the joint variables, their sines and cosines, the parameters) to a result, each sum
+    /// added in the order the emitted code adds it: the operations that cannot overlap, which
+    /// bound the time of a call from below as the count bounds its throughput.
+    pub depth: usize,
+}
+
+impl OpCount {
+    /// Multiplications, additions and negations together.
+    #[must_use]
+    pub fn flops(&self) -> usize {
+        self.mul + self.add + self.neg + self.div
+    }
+}
+
+/// An emitted function body.
+pub struct Body {
+    /// The statements and the result expression.
+    pub tokens: TokenStream,
+    /// Its operations, shared code included.
+    pub ops: OpCount,
+}
+
+/// Where emitted code finds the robot's parameters.
+pub struct Context {
+    /// The array `[T; N]` of the parameters, in the order of [`Equations::fields`] (`p_`).
+    pub parameters: proc_macro2::Ident,
+}
+
+/// One output of [`emit`]: the method returning it, which names its elements (`m1_2`,
+/// `tau3`), and its shape.
+pub struct Output<'a> {
+    /// The method.
+    pub method: Method,
+    /// Shape.
+    pub shape: Shape<'a>,
+}
+
+/// Code shared by several functions, computed by one inlined function and handed over as a
+/// struct: the configuration (what depends on the parameters and `q` alone) and the motion
+/// (what several methods compute from `q̇` too).
+pub struct Shared {
+    /// The struct's fields, in order.
+    pub fields: Vec<proc_macro2::Ident>,
+    /// The function's body, ending in the struct literal.
+    pub tokens: TokenStream,
+}

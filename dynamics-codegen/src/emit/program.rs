@@ -1,0 +1,96 @@
+//! One emission: the shared configuration and motion functions of a set of outputs, and each
+//! output's body reading them.
+
+use super::depends::{boundary, dependencies, shared_motion};
+use super::emitter::{Emitter, Origin};
+use super::names::{output_names, Element};
+use super::parts::{Body, Context, Output, Shared};
+use crate::method::Argument;
+use crate::symbolic::NodeId;
+use crate::trace::Equations;
+
+/// Everything [`emit`] writes.
+pub struct Emission {
+    /// The shared configuration function, if any output needs one.
+    pub configuration: Option<Shared>,
+    /// The shared motion function, if two methods compute the same terms in `q̇`.
+    pub motion: Option<Shared>,
+    /// One body per output, in order.
+    pub bodies: Vec<Body>,
+}
+
+/// Emits the functions computing `outputs` from `eq`. What depends only on the parameters and
+/// `q` (the trigonometry, the kinematics, `M`, `g`, the `Γ_ijk`) goes into one shared
+/// configuration function; each output's body calls it and adds the terms in `q̇` and `q̈`.
+/// Inlined, the compiler keeps of the shared code only what each function reads, so the run
+/// time is that of separate functions, and the code is written once.
+#[must_use]
+pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
+    let depends = dependencies(eq);
+    // The shared functions take `q`: a method without it (friction) computes all it reads.
+    let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
+    let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
+    // Per output, the parameter- and q-only nodes its own code reads.
+    let mut shared = vec![false; eq.graph.len()];
+    for o in &outputs {
+        for id in boundary(eq, &depends, &o.shape.outputs()) {
+            shared[id.index()] = true;
+        }
+    }
+    let boundary: Vec<NodeId> = eq
+        .graph
+        .nodes()
+        .filter(|(id, _)| shared[id.index()])
+        .map(|(id, _)| id)
+        .collect();
+    // Field names: outputs computed entirely in the configuration keep their names (`m1_2`,
+    // `g3`); leaves keep theirs (`s1`, `p_m2`, `k4`); the rest are numbered temporaries.
+    let mut field_names: Vec<Option<Element>> = vec![None; eq.graph.len()];
+    for o in &outputs {
+        let e = Emitter::new(eq, Some(ctx));
+        for (id, element) in output_names(&o.shape, o.method, |id| e.is_leaf(id)) {
+            if shared[id.index()] && field_names[id.index()].is_none() {
+                field_names[id.index()] = Some(element);
+            }
+        }
+    }
+    let configuration = (!boundary.is_empty()).then(|| {
+        let mut e = Emitter::new(eq, Some(ctx));
+        e.temporary_prefix = "u";
+        e.configuration(&boundary, &field_names)
+    });
+    // Terms in q̇ (without q̈) that two methods or more compute: written once, in the motion
+    // function, whose fields the methods read.
+    let motion_boundary = shared_motion(eq, &depends, &outputs);
+    let config_names = |e: &mut Emitter| {
+        e.has_configuration = configuration.is_some();
+        if let Some(c) = &configuration {
+            e.read_from(&boundary, c, Origin::Configuration);
+        }
+    };
+    let motion = (!motion_boundary.is_empty()).then(|| {
+        let mut e = Emitter::new(eq, Some(ctx));
+        e.temporary_prefix = "v";
+        config_names(&mut e);
+        e.motion(&motion_boundary, &field_names)
+    });
+    let bodies = all
+        .iter()
+        .map(|o| {
+            let mut e = Emitter::new(eq, Some(ctx));
+            if !reads_q(&o) {
+                return e.function(&o.shape, o.method);
+            }
+            config_names(&mut e);
+            if let Some(m) = &motion {
+                e.read_from(&motion_boundary, m, Origin::Motion);
+            }
+            e.function(&o.shape, o.method)
+        })
+        .collect();
+    Emission {
+        configuration,
+        motion,
+        bodies,
+    }
+}

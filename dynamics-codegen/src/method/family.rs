@@ -1,0 +1,106 @@
+//! What a family of methods decides beyond its row, and the set of opt-in families a robot
+//! asks for ([`FamilySet`]), which travels from the attribute (or the command line) to the
+//! trace and the emission in place of one flag per family.
+
+use super::{Family, Method};
+
+impl Family {
+    /// Whether its module goes beside the struct, named after it, rather than in the derive's
+    /// `const _` block: where it holds a method compiled apart ([`Method::is_compiled_apart`]),
+    /// since a module inside that block shares the codegen unit of the code around it.
+    #[must_use]
+    pub fn is_beside_the_struct(self) -> bool {
+        Method::ALL
+            .iter()
+            .any(|m| m.family() == self && m.is_compiled_apart())
+    }
+
+    /// The family named `name` (`derivatives`).
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Family> {
+        Family::ALL.iter().copied().find(|f| f.name() == name)
+    }
+
+    /// The opt-in families' names, for a message: `derivatives`.
+    #[must_use]
+    pub fn opt_in_names() -> Vec<&'static str> {
+        let opt_in = Family::ALL.iter().filter(|f| f.is_opt_in());
+        opt_in.map(|f| f.name()).collect()
+    }
+
+    fn bit(self) -> u32 {
+        1 << (self as u32)
+    }
+}
+
+/// The families a robot has: every family that is not opt-in, and the opt-in ones it asks for
+/// (`derivatives = true`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FamilySet {
+    bits: u32,
+}
+
+impl Default for FamilySet {
+    /// The families every robot has.
+    fn default() -> FamilySet {
+        let always = Family::ALL.iter().filter(|f| !f.is_opt_in());
+        FamilySet {
+            bits: always.fold(0, |bits, f| bits | f.bit()),
+        }
+    }
+}
+
+impl FamilySet {
+    /// Every family, opt-in ones included.
+    #[must_use]
+    pub fn all() -> FamilySet {
+        FamilySet {
+            bits: Family::ALL.iter().fold(0, |bits, f| bits | f.bit()),
+        }
+    }
+
+    /// This set with `family` too.
+    #[must_use]
+    pub fn with(self, family: Family) -> FamilySet {
+        FamilySet {
+            bits: self.bits | family.bit(),
+        }
+    }
+
+    /// Whether it holds `family`.
+    #[must_use]
+    pub fn contains(self, family: Family) -> bool {
+        self.bits & family.bit() != 0
+    }
+
+    /// Whether it holds `method`'s family.
+    #[must_use]
+    pub fn has(self, method: Method) -> bool {
+        self.contains(method.family())
+    }
+
+    /// The opt-in families it holds, in the table's order.
+    pub fn opt_in(self) -> impl Iterator<Item = Family> {
+        let asked = move |f: &Family| f.is_opt_in() && self.contains(*f);
+        Family::ALL.iter().copied().filter(asked)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Family, FamilySet};
+
+    #[test]
+    fn a_robot_has_every_family_but_those_it_must_ask_for() {
+        let default = FamilySet::default();
+        for &f in Family::ALL {
+            assert_eq!(default.contains(f), !f.is_opt_in(), "{f:?}");
+            assert!(default.with(f).contains(f) && FamilySet::all().contains(f));
+            assert_eq!(Family::from_name(f.name()), Some(f));
+        }
+        assert_eq!(Family::opt_in_names(), ["derivatives"]);
+        assert_eq!(default.opt_in().count(), 0);
+        let asked = default.with(Family::Derivatives);
+        assert_eq!(asked.opt_in().collect::<Vec<_>>(), [Family::Derivatives]);
+    }
+}

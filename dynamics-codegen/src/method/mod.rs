@@ -1,0 +1,326 @@
+//! The typed table of the generated methods and their families: for each method, its name,
+//! arguments, result, documentation, the book's equation and the names and docs of its output
+//! elements; for each family, its trait, module and whether a robot must ask for it.
+//!
+//! The rows live in `dynamics-runtime/src/methods.rs` and `results.rs` (symlinked here), which
+//! the runtime's traits and nalgebra wrappers are declared from, so the traits and the
+//! generator cannot disagree. The table is data: which output of the traced equations a
+//! method returns is the trace's to say (`Method::shape`).
+
+include!("methods.rs");
+include!("results.rs");
+
+mod family;
+// Before `declare_method`, which reads its `returns!`.
+#[macro_use]
+mod returns;
+
+pub use family::FamilySet;
+pub use returns::{Instance, Returns};
+
+/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]`, or a wrench
+/// `&[T; 6]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Argument {
+    /// Joint positions.
+    Q,
+    /// Joint velocities.
+    Qd,
+    /// Joint accelerations.
+    Qdd,
+    /// A wrench `[fx, fy, fz, mx, my, mz]`.
+    Wrench,
+    /// Joint torques and forces.
+    Tau,
+}
+
+impl Argument {
+    /// The name the trait gives it: `q`, `qd`, `qdd`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Argument::Q => "q",
+            Argument::Qd => "qd",
+            Argument::Qdd => "qdd",
+            Argument::Wrench => "wrench",
+            Argument::Tau => "tau",
+        }
+    }
+}
+
+/// The `Argument` of a row's argument name.
+macro_rules! argument {
+    (q) => {
+        Argument::Q
+    };
+    (qd) => {
+        Argument::Qd
+    };
+    (qdd) => {
+        Argument::Qdd
+    };
+    (wrench) => {
+        Argument::Wrench
+    };
+    (tau) => {
+        Argument::Tau
+    };
+}
+
+/// `enum Family`, `enum Method` and their accessors from the table's rows.
+macro_rules! declare_method {
+    ($(
+        $(#[doc = $_trait_doc:literal])*
+        trait $trait:ident $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident {
+            items { $($_items:tt)* }
+            $(
+                $(#[doc = $family_doc:literal])*
+                family $family:ident {
+                    name: $family_name:ident,
+                    module: $module:literal,
+                    opt_in: $opt_in:literal,
+                    adjective: $adjective:literal,
+                }
+                methods {$(
+                    $(#[doc = $doc:literal])*
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+                        variant: $variant:ident,
+                        equation: $equation:expr,
+                        prefix: $prefix:literal,
+                        summary: $summary:literal,
+                        element: $element:literal,
+                        $(diagonal: $diagonal:literal,)?
+                        $(default: $default:ident,)?
+                        $(compiled_apart: $apart:literal,)?
+                    }
+                )*}
+            )*
+        }
+    )*) => {
+        /// A family of methods, emitted in a module of its own with its own shared
+        /// configuration and motion functions, so that code calling one family's methods never
+        /// inlines another's: a controller that calls only `inverse_dynamics` compiles none of
+        /// the kinematics.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub enum Family {
+            $($($(#[doc = $family_doc])* $family,)*)*
+        }
+
+        impl Family {
+            /// Every family, in the order the derive emits their modules.
+            pub const ALL: &'static [Family] = &[$($(Family::$family),*),*];
+
+            /// Its name: the attribute's key that asks for an opt-in family
+            /// (`derivatives = true`), the command line's `--with derivatives`.
+            #[must_use]
+            pub fn name(self) -> &'static str {
+                match self { $($(Family::$family => stringify!($family_name),)*)* }
+            }
+
+            /// The runtime trait its methods belong to.
+            #[must_use]
+            pub fn trait_name(self) -> &'static str {
+                match self { $($(Family::$family => stringify!($trait),)*)* }
+            }
+
+            /// Whether the derive writes it only for a robot that asks for it.
+            #[must_use]
+            pub fn is_opt_in(self) -> bool {
+                match self { $($(Family::$family => $opt_in,)*)* }
+            }
+
+            /// The name of the module holding its generated functions.
+            #[must_use]
+            pub fn module(self) -> &'static str {
+                match self { $($(Family::$family => $module,)*)* }
+            }
+
+            /// How `dynamics stats` names its shared functions: `(kinematic configuration)`.
+            #[must_use]
+            pub fn adjective(self) -> &'static str {
+                match self { $($(Family::$family => $adjective,)*)* }
+            }
+        }
+
+        /// A method of the runtime's traits.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        pub enum Method {
+            $($($($(#[doc = $doc])* $variant,)*)*)*
+        }
+
+        impl Method {
+            /// Every method, in the traits' order.
+            pub const ALL: &'static [Method] = &[$($($(Method::$variant),*),*),*];
+
+            /// Its name, e.g. `mass_matrix`.
+            #[must_use]
+            pub fn name(self) -> &'static str {
+                match self { $($($(Method::$variant => stringify!($name),)*)*)* }
+            }
+
+            /// Its family, whose module it goes to.
+            #[must_use]
+            pub fn family(self) -> Family {
+                match self { $($($(Method::$variant => Family::$family,)*)*)* }
+            }
+
+            /// Whether its function is compiled once, apart from the code that calls it
+            /// (`compiled_apart: true` in its row): `#[inline(never)]`, in its family's module
+            /// beside the struct, a codegen unit of its own, compiled in parallel with the
+            /// rest.
+            #[must_use]
+            pub fn is_compiled_apart(self) -> bool {
+                match self { $($($(Method::$variant => false $(|| $apart)?,)*)*)* }
+            }
+
+            /// Its arguments, in order.
+            #[must_use]
+            pub fn arguments(self) -> &'static [Argument] {
+                match self { $($($(Method::$variant => &[$(argument!($argument)),*],)*)*)* }
+            }
+
+            /// The shape of its result.
+            #[must_use]
+            pub fn returns(self) -> Returns {
+                match self { $($($(Method::$variant => returns!($result),)*)*)* }
+            }
+
+            /// The trait method's documentation.
+            #[must_use]
+            pub fn doc(self) -> &'static str {
+                match self { $($($(Method::$variant => concat!($($doc, "\n"),*),)*)*)* }
+            }
+
+            /// A one-line summary, e.g. `g(q), with joint springs.`
+            #[must_use]
+            pub fn summary(self) -> &'static str {
+                match self { $($($(Method::$variant => $summary,)*)*)* }
+            }
+
+            /// The number of its equation in Niku, *Introduction to Robotics*, ch. 6.
+            #[must_use]
+            pub fn equation(self) -> Option<&'static str> {
+                match self { $($($(Method::$variant => $equation,)*)*)* }
+            }
+
+            /// The prefix of its output elements' names (`m` gives `m1_2`, `tau` gives `tau3`).
+            #[must_use]
+            pub fn prefix(self) -> &'static str {
+                match self { $($($(Method::$variant => $prefix,)*)*)* }
+            }
+
+            /// Whether the trait gives it a body (zeros), for a term a robot may not have: the
+            /// derive then writes it only for a robot that has the term.
+            #[must_use]
+            pub fn has_default(self) -> bool {
+                match self {
+                    $($($(Method::$variant => None::<&str> $(.or(Some(stringify!($default))))?.is_some(),)*)*)*
+                }
+            }
+
+            /// The doc template of an element, on the diagonal or not (`{i}`, `{j}`,
+            /// `{equation}` to fill in).
+            fn element_template(self, diagonal: bool) -> &'static str {
+                match self {
+                    $($($(Method::$variant => {
+                        let on_diagonal: Option<&'static str> = None $(.or(Some($diagonal)))?;
+                        match on_diagonal {
+                            Some(template) if diagonal => template,
+                            _ => $element,
+                        }
+                    })*)*)*
+                }
+            }
+        }
+    };
+}
+
+for_each_method!(declare_method);
+
+impl Method {
+    /// The method called `name`.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Method> {
+        Method::ALL.iter().copied().find(|m| m.name() == name)
+    }
+
+    /// What element `(i, j)` (from 0; `j` 0 for a vector, both for a scalar) is, in the
+    /// book's terms: short and ASCII, since a large robot has a hundred of them and non-ASCII
+    /// text is escaped in tokens.
+    #[must_use]
+    pub fn describe(self, i: usize, j: usize) -> String {
+        self.describe_in(0, i, j)
+    }
+
+    /// [`Method::describe`] of element `(i, j)` of the `k`-th matrix (from 0) of a stack of
+    /// them (`link_poses`).
+    #[must_use]
+    pub fn describe_in(self, k: usize, i: usize, j: usize) -> String {
+        let diagonal = self.returns() == Returns::Matrix && i == j;
+        self.element_template(diagonal)
+            .replace("{k}", &(k + 1).to_string())
+            .replace("{i}", &(i + 1).to_string())
+            .replace("{j}", &(j + 1).to_string())
+            .replace("{x}", self.arguments().get(k).map_or("", |a| a.name()))
+            .replace("{equation}", self.equation().unwrap_or_default())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Method, Returns};
+
+    #[test]
+    fn elements_are_described_in_the_books_terms() {
+        let table = [
+            (Method::MassMatrix, 0, 1, "D12 = D21 (6.43)"),
+            (Method::MassMatrix, 2, 2, "D33 (6.43) + actuator inertia"),
+            (
+                Method::CoriolisMatrix,
+                1,
+                0,
+                "C21 = sum of D21k qd_k (6.44)",
+            ),
+            (
+                Method::CoriolisTorques,
+                3,
+                0,
+                "centripetal and Coriolis torque 4",
+            ),
+            (
+                Method::GravityTorques,
+                2,
+                0,
+                "D3 (6.45), gravity and spring",
+            ),
+            (
+                Method::BiasTorques,
+                0,
+                0,
+                "centripetal, Coriolis and gravity torque 1",
+            ),
+            (Method::InverseDynamics, 2, 0, "T3 (6.46)"),
+            (Method::FrictionTorques, 1, 0, "friction torque 2"),
+            (Method::PotentialEnergy, 0, 0, "potential energy"),
+        ];
+        for (method, i, j, text) in table {
+            assert_eq!(method.describe(i, j), text);
+        }
+    }
+
+    #[test]
+    fn every_method_is_complete() {
+        for &m in Method::ALL {
+            assert_eq!(Method::from_name(m.name()), Some(m));
+            assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
+            // Every method but friction's reads q.
+            let reads_q = m.arguments().first() == Some(&super::Argument::Q);
+            assert_eq!(reads_q, m != Method::FrictionTorques, "{m:?}");
+            let template = [m.element_template(false), m.element_template(true)];
+            let cites = template.iter().any(|t| t.contains("{equation}"));
+            assert!(!cites || m.equation().is_some(), "{m:?} cites no equation");
+            let indexed = |key| template.iter().all(|t| t.contains(key));
+            assert_eq!(indexed("{i}"), m.returns() != Returns::Scalar, "{m:?}");
+        }
+    }
+}

@@ -1,1 +1,0 @@
-../../dynamics-runtime/src/methods.rs

@@ -1,0 +1,133 @@
+//! Where a method's result lies in the traced graph: its [`Shape`], which output of the
+//! [`Equations`] each method returns ([`Method::shape`]), and whether the derive writes it.
+
+use super::Equations;
+use crate::method::Method;
+use crate::symbolic::NodeId;
+
+/// The nodes of a method's result, as the graph holds them.
+#[derive(Clone, Copy)]
+pub enum Shape<'a> {
+    /// A scalar.
+    Scalar(NodeId),
+    /// A vector.
+    Vector(&'a [NodeId]),
+    /// A matrix, rows first.
+    Matrix(&'a [Vec<NodeId>]),
+    /// Matrices, one after the other.
+    Stack(&'a [Vec<Vec<NodeId>>]),
+    /// A vector through the LDLᵀ of M, `Some` where every pivot is positive.
+    SolvedVector {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The vector.
+        vector: &'a [NodeId],
+    },
+    /// A matrix through the LDLᵀ of M, `Some` where every pivot is positive.
+    SolvedMatrix {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The matrix, rows first.
+        matrix: &'a [Vec<NodeId>],
+    },
+    /// A vector and matrices through the LDLᵀ of M, `Some((vector, [matrices]))` where every
+    /// pivot is positive.
+    SolvedStack {
+        /// The pivots.
+        pivots: &'a [NodeId],
+        /// The vector.
+        vector: &'a [NodeId],
+        /// The matrices, rows first.
+        stack: &'a [Vec<Vec<NodeId>>],
+    },
+}
+
+impl Shape<'_> {
+    /// Its elements, rows first.
+    pub fn outputs(&self) -> Vec<NodeId> {
+        match self {
+            Shape::Scalar(id) => vec![*id],
+            Shape::Vector(v) => v.to_vec(),
+            Shape::Matrix(m) => m.iter().flatten().copied().collect(),
+            Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
+            Shape::SolvedVector { pivots, vector } => {
+                pivots.iter().chain(*vector).copied().collect()
+            }
+            Shape::SolvedMatrix { pivots, matrix } => {
+                let elements = matrix.iter().flatten();
+                pivots.iter().chain(elements).copied().collect()
+            }
+            Shape::SolvedStack {
+                pivots,
+                vector,
+                stack,
+            } => {
+                let elements = stack.iter().flatten().flatten();
+                let values = vector.iter().chain(elements);
+                pivots.iter().chain(values).copied().collect()
+            }
+        }
+    }
+}
+
+impl Method {
+    /// The outputs of `eq` it returns.
+    #[must_use]
+    pub fn shape(self, eq: &Equations) -> Shape<'_> {
+        match self {
+            Method::MassMatrix => Shape::Matrix(&eq.mass),
+            Method::CoriolisMatrix => Shape::Matrix(&eq.coriolis),
+            Method::CoriolisTorques => Shape::Vector(&eq.coriolis_torques),
+            Method::GravityTorques => Shape::Vector(&eq.gravity),
+            Method::BiasTorques => Shape::Vector(&eq.bias),
+            Method::InverseDynamics => Shape::Vector(&eq.tau),
+            Method::FrictionTorques => Shape::Vector(&eq.friction),
+            Method::KineticEnergy => Shape::Scalar(eq.kinetic_energy),
+            Method::PotentialEnergy => Shape::Scalar(eq.potential_energy),
+            Method::HandPose => Shape::Matrix(&eq.kinematics.hand_pose),
+            Method::LinkPoses => Shape::Stack(&eq.kinematics.link_poses),
+            Method::HandJacobianInBase => Shape::Matrix(&eq.kinematics.jacobian_in_base),
+            Method::HandJacobianInHand => Shape::Matrix(&eq.kinematics.jacobian_in_hand),
+            Method::HandAccelerationBiasInBase => Shape::Vector(&eq.kinematics.bias_in_base),
+            Method::HandAccelerationBiasInHand => Shape::Vector(&eq.kinematics.bias_in_hand),
+            Method::JointTorquesForHandWrench => {
+                Shape::Vector(&eq.kinematics.torques_for_hand_wrench)
+            }
+            Method::JointTorquesForBaseWrench => {
+                Shape::Vector(&eq.kinematics.torques_for_base_wrench)
+            }
+            Method::MassMatrixInverse => Shape::SolvedMatrix {
+                pivots: &eq.forward.factors.pivots,
+                matrix: &eq.forward.mass_inverse,
+            },
+            Method::ForwardDynamics => Shape::SolvedVector {
+                pivots: &eq.forward.factors.pivots,
+                vector: &eq.forward.qdd,
+            },
+            Method::InverseDynamicsDerivatives => {
+                Shape::Stack(eq.derivatives.as_ref().map_or(&[], |d| &d.inverse))
+            }
+            Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
+                pivots: &eq.forward.factors.pivots,
+                vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
+                stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
+            },
+        }
+    }
+
+    /// Whether the derive writes it for these equations: a method the trait gives a body
+    /// of zeros (friction) only where its result is not zero, an opt-in family's only where
+    /// the robot asked for it.
+    #[must_use]
+    pub fn is_generated(self, eq: &Equations) -> bool {
+        if !eq.families.has(self) {
+            return false;
+        }
+        !self.has_default()
+            || self
+                .shape(eq)
+                .outputs()
+                .iter()
+                .any(|&id| !eq.graph.is_zero(id))
+    }
+}

@@ -1,0 +1,140 @@
+// The table of the generated methods' result types: the one place that spells them.
+//
+// `for_each_result!(callback)` calls `callback! { rows }`, one row per result shape, which the
+// method table (`methods.rs`) names by its keyword (`-> matrix`). The runtime reads it to
+// declare the traits' result types (`dynamics.rs`) and their nalgebra forms (`nalgebra.rs`);
+// `dynamics-codegen` reads the same file (a symlink, `include!`d) for the types it writes into
+// the derive's impls and modules. `T` is the scalar and `N` the number of joints wherever a
+// row is used; a type name other than `T`, `N`, `Result` and `Option` is the runtime's.
+//
+//     /// What the result is.
+//     matrix {
+//         variant: Matrix,                         // the codegen enum's variant (`Returns`)
+//         array: [[T; N]; N],                      // the trait method's result type
+//         nalgebra: SMatrix<T, N, N>,              // the `_na` wrapper's result type
+//         to_nalgebra: |value| matrix(&value),     // the array result into it
+//         rows: [[T; N]; N],                       // what the generated module's function returns
+//         from_rows: |value| value,                // that, into the trait's result
+//     }
+//
+// `for_each_result!(callback $)` passes a `$` first, for a callback that defines macros of its
+// own from the rows (the runtime's `array_result!`, `nalgebra_result!`, `to_nalgebra!`, in
+// `dynamics.rs`; the codegen's `returns!`).
+
+/// Calls `$callback!` with the rows of the result table (see the comment at the top of
+/// `results.rs`), after the optional `$` given.
+macro_rules! for_each_result {
+    ($callback:ident $($dollar:tt)?) => {
+        $callback! {
+            $($dollar)?
+            /// `[[T; N]; N]`.
+            matrix {
+                variant: Matrix,
+                array: [[T; N]; N],
+                nalgebra: SMatrix<T, N, N>,
+                to_nalgebra: |value| matrix(&value),
+                rows: [[T; N]; N],
+                from_rows: |value| value,
+            }
+            /// `[T; N]`.
+            vector {
+                variant: Vector,
+                array: [T; N],
+                nalgebra: SVector<T, N>,
+                to_nalgebra: |value| SVector::from(value),
+                rows: [T; N],
+                from_rows: |value| value,
+            }
+            /// `T`.
+            scalar {
+                variant: Scalar,
+                array: T,
+                nalgebra: T,
+                to_nalgebra: |value| value,
+                rows: T,
+                from_rows: |value| value,
+            }
+            /// A `Pose`: a rotation and a position; in the generated module, its rows
+            /// `[R | p]`.
+            pose {
+                variant: Pose,
+                array: Pose<T>,
+                nalgebra: Isometry3<T>,
+                to_nalgebra: |value| isometry(&value),
+                rows: [[T; 4]; 3],
+                from_rows: |value| Pose::from_rows(value),
+            }
+            /// A `Pose` per link.
+            poses {
+                variant: Poses,
+                array: [Pose<T>; N],
+                nalgebra: [Isometry3<T>; N],
+                to_nalgebra: |value| value.map(|p| isometry(&p)),
+                rows: [[[T; 4]; 3]; N],
+                from_rows: |value| value.map(Pose::from_rows),
+            }
+            /// A Jacobian's six rows `[dx, dy, dz, δx, δy, δz]`, a column per joint.
+            jacobian {
+                variant: Jacobian,
+                array: [[T; N]; 6],
+                nalgebra: SMatrix<T, 6, N>,
+                to_nalgebra: |value| SMatrix::from_fn(|i, j| value[i][j]),
+                rows: [[T; N]; 6],
+                from_rows: |value| value,
+            }
+            /// A spatial 6-vector `[T; 6]`: a linear and an angular part.
+            spatial {
+                variant: Spatial,
+                array: [T; 6],
+                nalgebra: SVector<T, 6>,
+                to_nalgebra: |value| SVector::from(value),
+                rows: [T; 6],
+                from_rows: |value| value,
+            }
+            /// A matrix solved with the LDLᵀ of `M`, or `NotPositiveDefinite`; in the
+            /// generated module, `None` where a pivot is not positive.
+            solved_matrix {
+                variant: SolvedMatrix,
+                array: Result<[[T; N]; N], NotPositiveDefinite>,
+                nalgebra: Result<SMatrix<T, N, N>, NotPositiveDefinite>,
+                to_nalgebra: |value| value.map(|m| matrix(&m)),
+                rows: Option<[[T; N]; N]>,
+                from_rows: |value| value.ok_or(NotPositiveDefinite),
+            }
+            /// A vector solved with the LDLᵀ of `M`, or `NotPositiveDefinite`.
+            solved_vector {
+                variant: SolvedVector,
+                array: Result<[T; N], NotPositiveDefinite>,
+                nalgebra: Result<SVector<T, N>, NotPositiveDefinite>,
+                to_nalgebra: |value| value.map(SVector::from),
+                rows: Option<[T; N]>,
+                from_rows: |value| value.ok_or(NotPositiveDefinite),
+            }
+            /// `∂τ/∂q` and `∂τ/∂q̇`; in the generated module, the two blocks.
+            inverse_derivatives {
+                variant: InverseDerivatives,
+                array: InverseDynamicsDerivatives<[[T; N]; N]>,
+                nalgebra: InverseDynamicsDerivatives<SMatrix<T, N, N>>,
+                to_nalgebra: |value| value.map(|m| matrix(&m)),
+                rows: [[[T; N]; N]; 2],
+                from_rows: |value| InverseDynamicsDerivatives::from_blocks(value),
+            }
+            /// `q̈` and `∂q̈/∂q`, `∂q̈/∂q̇`, `∂q̈/∂τ`, or `NotPositiveDefinite`; in the
+            /// generated module, `q̈` and the three blocks, `None` where a pivot is not
+            /// positive.
+            forward_derivatives {
+                variant: ForwardDerivatives,
+                array: Result<ForwardDynamicsDerivatives<[T; N], [[T; N]; N]>, NotPositiveDefinite>,
+                nalgebra: Result<
+                    ForwardDynamicsDerivatives<SVector<T, N>, SMatrix<T, N, N>>,
+                    NotPositiveDefinite,
+                >,
+                to_nalgebra: |value| value.map(|d| d.map(SVector::from, |m| matrix(&m))),
+                rows: Option<([T; N], [[[T; N]; N]; 3])>,
+                from_rows: |value| value
+                    .map(ForwardDynamicsDerivatives::from_parts)
+                    .ok_or(NotPositiveDefinite),
+            }
+        }
+    };
+}
