@@ -12,6 +12,12 @@ use quote::{quote, ToTokens};
 /// first of `S`, `R`, `F`, `T0`, `T1`, … it does not use.
 #[must_use]
 pub fn scalar_name(generics: &syn::Generics) -> Ident {
+    unused_name(generics, &["T", "S", "R", "F"], "T")
+}
+
+/// The first of `names`, then of `prefix0`, `prefix1`, …, that no generic parameter of the
+/// struct takes.
+fn unused_name(generics: &syn::Generics, names: &[&str], prefix: &str) -> Ident {
     let taken: Vec<String> = generics
         .params
         .iter()
@@ -21,13 +27,22 @@ pub fn scalar_name(generics: &syn::Generics) -> Ident {
             syn::GenericParam::Lifetime(_) => None,
         })
         .collect();
-    let name = ["T", "S", "R", "F"]
-        .into_iter()
-        .map(String::from)
-        .chain((0..).map(|i| format!("T{i}")))
+    let name = names
+        .iter()
+        .map(|name| (*name).to_owned())
+        .chain((0..).map(|i| format!("{prefix}{i}")))
         .find(|name| !taken.contains(name))
         .unwrap_or_default();
     Ident::new(&name, Span::call_site())
+}
+
+/// The number of joints the traits are implemented for.
+pub(super) enum Joints {
+    /// The robot's.
+    Known(usize),
+    /// Any: a const parameter of the impls, where a derive failed before it could read the
+    /// number, so that calls to the trait still compile and report nothing of their own.
+    Any,
 }
 
 /// One method of the `Dynamics` impl with the given body, its scalar type parameter named
@@ -35,7 +50,7 @@ pub fn scalar_name(generics: &syn::Generics) -> Ident {
 #[must_use]
 pub fn method(
     method: Method,
-    n: usize,
+    n: &TokenStream,
     krate: &TokenStream,
     scalar: &Ident,
     body: &TokenStream,
@@ -52,15 +67,28 @@ pub fn method(
 }
 
 /// `impl Trait<N> for Type { … }` for each runtime trait that `methods` (a method and its item)
-/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods.
+/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods. With
+/// [`Joints::Any`], the impls take the number of joints as a const parameter, named by
+/// [`joint_count`], which the methods' items must use.
 pub(super) fn trait_impls(
     krate: &TokenStream,
-    n: usize,
+    joints: &Joints,
     ident: &syn::Ident,
     generics: &syn::Generics,
     methods: impl Iterator<Item = (Method, TokenStream)>,
 ) -> TokenStream {
     let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+    let n = joint_count(joints, generics);
+    let impl_generics = match joints {
+        Joints::Known(_) => impl_generics.into_token_stream(),
+        Joints::Any => {
+            // The struct's parameters as an impl writes them (no defaults), and `const N`.
+            let mut with_n: syn::Generics =
+                syn::parse2(impl_generics.into_token_stream()).unwrap_or_default();
+            with_n.params.push(syn::parse_quote!(const #n: usize));
+            with_n.into_token_stream()
+        }
+    };
     let methods: Vec<(Method, TokenStream)> = methods.collect();
     let mut traits: Vec<&str> = Family::ALL.iter().map(|f| f.trait_name()).collect();
     traits.dedup();
@@ -82,6 +110,15 @@ pub(super) fn trait_impls(
     quote!(#(#impls)*)
 }
 
+/// The number of joints as the impls write it: the robot's (`6usize`), or the const parameter
+/// of [`Joints::Any`], a name the struct's generics do not take.
+pub(super) fn joint_count(joints: &Joints, generics: &syn::Generics) -> TokenStream {
+    match joints {
+        Joints::Known(n) => quote!(#n),
+        Joints::Any => unused_name(generics, &["N", "J"], "N").into_token_stream(),
+    }
+}
+
 /// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
 pub(super) fn argument_local(argument: Argument) -> Ident {
     local(&format!("{}_", argument.name()))
@@ -92,7 +129,7 @@ pub(super) fn argument_local(argument: Argument) -> Ident {
 /// a result through the LDLᵀ of M as an `Option`, the derivatives' structs as arrays).
 pub(super) fn signature(
     method: Method,
-    n: usize,
+    n: &TokenStream,
     t: &Ident,
     krate: &TokenStream,
     rows: bool,
@@ -123,7 +160,7 @@ pub(super) fn signature(
 pub(super) fn forward(
     method: Method,
     call: TokenStream,
-    n: usize,
+    n: &TokenStream,
     t: &Ident,
     krate: &TokenStream,
 ) -> TokenStream {

@@ -1,7 +1,8 @@
 //! The generated items: the emitted bodies of every [`Method`] put together into a module of
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
-use super::impls::{argument_local, call_arguments, forward, scalar_name, signature, trait_impls};
+use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
+use super::impls::{trait_impls, Joints};
 use super::names::PARAMETERS;
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
 use super::parts::{Context, OpCount, Output, Shared};
@@ -161,7 +162,8 @@ impl Generated {
         generics: &syn::Generics,
         docs: &dyn Fn(Method) -> Option<String>,
     ) -> Items {
-        let n = self.dof;
+        let dof = self.dof;
+        let n = &quote!(#dof);
         let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
@@ -195,7 +197,7 @@ impl Generated {
             };
             (m.method, f)
         });
-        let impls = trait_impls(krate, n, ident, generics, fns);
+        let impls = trait_impls(krate, &Joints::Known(self.dof), ident, generics, fns);
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         let within = quote! {
@@ -221,7 +223,8 @@ impl Generated {
     /// The module of one family's functions: the shared functions and one function per
     /// method.
     fn module(&self, module: &Module, krate: &TokenStream, ident: &syn::Ident) -> TokenStream {
-        let (n, k) = (self.dof, self.fields.len());
+        let (dof, k) = (self.dof, self.fields.len());
+        let n = &quote!(#dof);
         let p = local(PARAMETERS);
         let (configuration, motion) = (module.configuration.as_ref(), module.motion.as_ref());
         let configuration_item = self.configuration_item(configuration, krate);

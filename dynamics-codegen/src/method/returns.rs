@@ -2,7 +2,7 @@
 //! runtime's): each row's types are written there once, with `T` and `N`, and turned here into
 //! the tokens of one derive (its scalar, its number of joints, its path to the runtime).
 
-use proc_macro2::{Group, Ident, Literal, TokenStream, TokenTree};
+use proc_macro2::{Group, Ident, TokenStream, TokenTree};
 use quote::quote;
 use std::str::FromStr;
 
@@ -55,8 +55,8 @@ for_each_result!(declare_returns $);
 pub struct Instance<'a> {
     /// The scalar type parameter (`T`, or another name where the struct takes `T`).
     pub scalar: &'a Ident,
-    /// The number of joints.
-    pub n: usize,
+    /// The number of joints: a literal (`6usize`), or a const parameter.
+    pub n: &'a TokenStream,
     /// The runtime crate's path.
     pub krate: &'a TokenStream,
 }
@@ -112,7 +112,7 @@ impl Instance<'_> {
         let krate = self.krate;
         match ident.to_string().as_str() {
             "T" => TokenTree::Ident(self.scalar.clone()).into(),
-            "N" => TokenTree::Literal(Literal::usize_suffixed(self.n)).into(),
+            "N" => self.n.clone(),
             "value" => value.cloned().unwrap_or_else(|| quote!(#ident)),
             "Result" => quote!(::core::result::Result),
             "Option" => quote!(::core::option::Option),
