@@ -169,7 +169,7 @@ pub(super) fn forward(
         n,
         krate,
     };
-    method.returns().from_rows(call, &at)
+    method.returns().convert_rows(call, &at)
 }
 
 /// The arguments a method passes on, as in [`signature`].

@@ -37,7 +37,7 @@ macro_rules! declare_returns {
             }
 
             /// The closure turning the module's result into the trait's.
-            fn from_rows_text(self) -> &'static str {
+            fn conversion_text(self) -> &'static str {
                 match self { $(Returns::$variant => stringify!($from_rows),)* }
             }
         }
@@ -79,9 +79,9 @@ impl Returns {
 
     /// `call`, the module function's result, turned into the trait's.
     #[must_use]
-    pub fn from_rows(self, call: TokenStream, at: &Instance) -> TokenStream {
+    pub fn convert_rows(self, call: TokenStream, at: &Instance) -> TokenStream {
         // The row's closure `|value| body`: its body, with `call` for `value`.
-        let body = parse(self.from_rows_text()).into_iter().skip(3).collect();
+        let body = parse(self.conversion_text()).into_iter().skip(3).collect();
         at.instantiate(body, Some(&call))
     }
 }
