@@ -44,11 +44,11 @@ pub struct Body {
 
 /// Where emitted code finds the robot's parameters.
 pub struct Context {
-    /// The array `[T; N]` of the parameters, in the order of [`Equations::fields`] (`p_`).
+    /// The array `[T; N]` of the parameters, in the order of [`crate::trace::Equations::fields`] (`p_`).
     pub parameters: proc_macro2::Ident,
 }
 
-/// One output of [`emit`]: the method returning it, which names its elements (`m1_2`,
+/// One output of [`super::emit`]: the method returning it, which names its elements (`m1_2`,
 /// `tau3`), and its shape.
 pub struct Output<'a> {
     /// The method.
