@@ -207,6 +207,16 @@ impl Reader<'_> {
         })
     }
 
+    /// Where the value of `attr` starts, after its quote: roxmltree's `range_value` counts at
+    /// most 255 spaces around the `=`, and starts the value too early past them.
+    fn value_start(&self, attr: &roxmltree::Attribute) -> usize {
+        let name_end = attr.range_qname().end;
+        self.text[name_end..]
+            .iter()
+            .position(|b| matches!(b, b'"' | b'\''))
+            .map_or(name_end, |quote| name_end + quote + 1)
+    }
+
     /// `N` numbers in attribute `name` of `node` (`default` where it is absent), and where
     /// they are written.
     fn numbers<const N: usize>(
@@ -221,7 +231,7 @@ impl Reader<'_> {
                 self.at(node),
             ));
         };
-        let at = self.offset(attr.range_value().start);
+        let at = self.offset(self.value_start(&attr));
         let words: Vec<&str> = attr.value().split_whitespace().collect();
         let parsed: Option<Vec<Value>> = words.iter().map(|w| number(w)).collect();
         match parsed.map(<[Value; N]>::try_from) {

@@ -260,3 +260,15 @@ fn a_loop_is_named_at_a_link_on_it() {
         "{looped:?}"
     );
 }
+
+/// roxmltree counts at most 255 spaces around an attribute's `=`: past them, the value was
+/// placed in the spaces.
+#[test]
+fn a_value_after_many_spaces_at_its_place() {
+    let spaces = " ".repeat(300);
+    let axis = format!("<axis xyz{spaces}=\n {spaces}\"0 0 0\"/>");
+    let text = two_links(&joint("revolute", &axis), INERTIAL);
+    let (line, column, message) = first(&text, None);
+    assert_eq!((line, column), (5, 303), "{message}");
+    assert!(message.contains("is zero"), "{message}");
+}
