@@ -75,23 +75,20 @@ pub(super) struct Description {
 
 /// Reads the robot; the XML's first syntax error, or every element that cannot be read.
 pub(super) fn read(text: &str) -> Result<Description, Vec<FileError>> {
-    let doc = roxmltree::Document::parse(text).map_err(|e| {
-        let pos = e.pos();
-        let message = e.to_string();
-        // roxmltree ends its messages with the position, which the error carries already.
-        let message = message
-            .strip_suffix(&format!(" at {pos}"))
-            .unwrap_or(&message);
-        vec![error(
-            (pos.row as usize, pos.col as usize),
-            format!("malformed XML: {message}"),
-        )]
-    })?;
+    let doc = roxmltree::Document::parse(text).map_err(|e| vec![malformed(&e)])?;
     let root = doc.root_element();
     let reader = Reader {
         text: text.as_bytes(),
         lines: Lines::new(text),
     };
+    // Before anything else: the macros of a xacro file hold its links and joints, so that
+    // every other error would be beside the point.
+    if let Some(element) = doc.descendants().find(|n| is_xacro(n)) {
+        let tag = element.tag_name();
+        let prefix = tag.namespace().and_then(|uri| element.lookup_prefix(uri));
+        let written = format!("`<{}:{}>`", prefix.unwrap_or("xacro"), tag.name());
+        return Err(vec![error(reader.at(element), unexpanded(&written))]);
+    }
     if root.tag_name().name() != "robot" {
         let found = root.tag_name().name();
         return Err(vec![error(
@@ -116,6 +113,39 @@ pub(super) fn read(text: &str) -> Result<Description, Vec<FileError>> {
         links,
         joints,
     })
+}
+
+/// The XML's syntax error as the file's error, at its place.
+fn malformed(e: &roxmltree::Error) -> FileError {
+    let pos = e.pos();
+    let at = (pos.row as usize, pos.col as usize);
+    // `xacro:` elements without the namespace declared: a xacro file all the same.
+    if let roxmltree::Error::UnknownNamespace(prefix, _) = e {
+        if prefix == "xacro" {
+            return error(at, unexpanded("a `xacro:` element"));
+        }
+    }
+    let message = e.to_string();
+    // roxmltree ends its messages with the position, which the error carries already.
+    let message = message
+        .strip_suffix(&format!(" at {pos}"))
+        .unwrap_or(&message);
+    error(at, format!("malformed XML: {message}"))
+}
+
+/// An element of the xacro namespace (`<xacro:macro>`, `<xacro:include>`, ..). An expanded
+/// file may keep the namespace's declaration on `<robot>`, but none of its elements.
+fn is_xacro(node: &Node) -> bool {
+    node.is_element()
+        && node
+            .tag_name()
+            .namespace()
+            .is_some_and(|uri| uri.trim_end_matches('/').ends_with("xacro"))
+}
+
+/// The error for a xacro file, which `written` shows to be one.
+fn unexpanded(written: &str) -> String {
+    format!("{written}: this is a xacro file, not a URDF: expand it with `xacro` first (`xacro robot.urdf.xacro > robot.urdf`) and use the URDF it writes")
 }
 
 /// A message at a place in the file.

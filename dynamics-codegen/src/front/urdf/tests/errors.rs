@@ -186,6 +186,37 @@ fn a_tip_above_the_base_is_refused() {
     );
 }
 
+#[test]
+fn a_xacro_file_is_sent_to_xacro() {
+    let xacro = "<?xml version=\"1.0\"?>\n\
+                 <robot name=\"arm\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n  \
+                 <xacro:property name=\"l\" value=\"0.5\"/>\n  \
+                 <xacro:macro name=\"arm\" params=\"n\"><link name=\"${n}\"/></xacro:macro>\n  \
+                 <xacro:arm n=\"base\"/>\n\
+                 </robot>\n";
+    let (line, column, message) = first(xacro, None);
+    assert_eq!((line, column), (3, 3), "{message}");
+    assert!(
+        message.starts_with("`<xacro:property>`: this is a xacro file, not a URDF")
+            && message.contains("`xacro robot.urdf.xacro > robot.urdf`"),
+        "{message}"
+    );
+    // Without the namespace declared, the XML itself is wrong; the advice is the same.
+    let undeclared = "<robot name=\"arm\">\n<xacro:include filename=\"arm.xacro\"/>\n</robot>";
+    let (line, _, message) = first(undeclared, None);
+    assert_eq!(line, 2, "{message}");
+    assert!(
+        message.starts_with("a `xacro:` element: this is a xacro file"),
+        "{message}"
+    );
+    // An expanded file may keep the declaration (`robots/urdf/ur5.urdf` does): it loads.
+    let expanded = two_links(&joint("revolute", ""), INERTIAL).replace(
+        "<robot name=\"r\">",
+        "<robot name=\"r\" xmlns:xacro=\"http://wiki.ros.org/xacro\">",
+    );
+    assert!(load_urdf("r.urdf", &expanded, Chain::default(), true).is_ok());
+}
+
 /// Positions found by the line index are roxmltree's, at every character of a text with
 /// multi-byte characters across the index's checkpoints, `\r\n` and tabs.
 #[test]
