@@ -22,7 +22,6 @@ mod fuzz;
 use dynamics_codegen::{check, derive_dynamics, front};
 use proptest::prelude::*;
 use proptest::sample::Index;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The valid description files the mutations start from.
 const BASES: [(&str, &str); 18] = [
@@ -208,40 +207,6 @@ fn mutation() -> impl Strategy<Value = Mutation> {
     ]
 }
 
-/// The byte ranges of the numbers in `text`.
-fn numbers(text: &[u8]) -> Vec<(usize, usize)> {
-    let mut found = Vec::new();
-    let mut i = 0;
-    while i < text.len() {
-        let starts = text[i].is_ascii_digit()
-            || (text[i] == b'-' && text.get(i + 1).is_some_and(u8::is_ascii_digit));
-        let word = i > 0 && (text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_');
-        if starts && !word {
-            let end = (i + 1..text.len())
-                .find(|&j| !(text[j].is_ascii_alphanumeric() || b".+-_".contains(&text[j])))
-                .unwrap_or(text.len());
-            found.push((i, end));
-            i = end;
-        } else {
-            i += 1;
-        }
-    }
-    found
-}
-
-/// The byte offset where line `line` starts.
-fn line_start(text: &[u8], line: Index) -> usize {
-    let starts: Vec<usize> = std::iter::once(0)
-        .chain(
-            text.iter()
-                .enumerate()
-                .filter(|(_, b)| **b == b'\n')
-                .map(|(i, _)| i + 1),
-        )
-        .collect();
-    *line.get(&starts)
-}
-
 fn apply(text: &mut Vec<u8>, m: &Mutation) {
     let at = |i: &Index, text: &Vec<u8>| i.index(text.len() + 1);
     match m {
@@ -260,16 +225,16 @@ fn apply(text: &mut Vec<u8>, m: &Mutation) {
         }
         Mutation::Splice { file, line, before } => {
             let other = file.get(&BASES).1.as_bytes();
-            let from = line_start(other, *line);
+            let from = fuzz::line_start(other, *line);
             let end = other[from..]
                 .iter()
                 .position(|b| *b == b'\n')
                 .map_or(other.len(), |e| from + e + 1);
-            let to = line_start(text, *before);
+            let to = fuzz::line_start(text, *before);
             text.splice(to..to, other[from..end].to_vec());
         }
         Mutation::Number { which, by } => {
-            let spans = numbers(text);
+            let spans = fuzz::numbers(text);
             if !spans.is_empty() {
                 let (s, e) = *which.get(&spans);
                 text.splice(s..e, by.get(&EXTREMES).bytes());
@@ -311,35 +276,15 @@ fn whole_file(message: &str) -> bool {
     message.contains("`joints` is empty") || message.contains("cannot tell the format")
 }
 
-/// Whether (line, column) is inside `text` (or just past its end).
-fn inside(text: &str, line: usize, column: usize) -> bool {
-    let lines: Vec<&str> = text.split('\n').collect();
-    line >= 1 && line <= lines.len() && column >= 1 && column <= lines[line - 1].chars().count() + 1
-}
-
-static COUNTER: AtomicUsize = AtomicUsize::new(0);
-
 /// Fields for the names the base files use, so that a valid file derives.
 const FIELDS: &str =
     "g: f64, m: f64, m1: f64, m2: f64, l: f64, l1: f64, l2: f64, k: f64, I1act: f64, I2act: f64";
-
-/// `path:line:col: ` at the start of `message` (after `path:`), inside `text`.
-fn points_inside(message: &str, path: &str, text: &str) -> bool {
-    let Some(rest) = message.split_once(&format!("{path}:")).map(|(_, r)| r) else {
-        return false;
-    };
-    let mut parts = rest.splitn(3, ':');
-    let (Some(l), Some(c)) = (parts.next(), parts.next()) else {
-        return false;
-    };
-    matches!((l.parse(), c.parse()), (Ok(l), Ok(c)) if inside(text, l, c))
-}
 
 /// Loads `text` as `path` the ways the tools do; the first broken promise, if any.
 fn check_file(path: &'static str, text: String) -> Result<(), String> {
     match front::load(path, &text) {
         Err(e) => match (e.line, e.column) {
-            (Some(l), Some(c)) if !inside(&text, l, c) => {
+            (Some(l), Some(c)) if !fuzz::Lines::of(&text).inside(l, c) => {
                 return Err(format!("error outside the text: {e}"))
             }
             (None, _) | (_, None) if !whole_file(&e.message) => {
@@ -351,7 +296,7 @@ fn check_file(path: &'static str, text: String) -> Result<(), String> {
         Ok(loaded) => {
             for problem in check::robot(&loaded.robot, &loaded.check_inertia) {
                 let message = loaded.describe(path, &problem);
-                if !points_inside(&message, path, &text) {
+                if !fuzz::Lines::of(&text).pointed_at(&message, path) {
                     return Err(format!("check without a position: {message}"));
                 }
             }
@@ -362,10 +307,7 @@ fn check_file(path: &'static str, text: String) -> Result<(), String> {
 
 /// The derive's `file = "..."` on `text`, written to a temporary file.
 fn check_derive(path: &str, text: &str) -> Result<(), String> {
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let file =
-        std::env::temp_dir().join(format!("dynamics-fuzz-{}-{n}-{path}", std::process::id()));
-    std::fs::write(&file, text).map_err(|e| e.to_string())?;
+    let file = fuzz::temp_file(path, text).map_err(|e| e.to_string())?;
     let file = file.display().to_string();
     let source = format!("#[dynamics(file = \"{file}\")] struct R {{ {FIELDS} }}");
     let out = derive_dynamics(source.parse().expect("tokens"));
@@ -374,7 +316,7 @@ fn check_derive(path: &str, text: &str) -> Result<(), String> {
         if e.at.is_none() {
             return Err(format!("derive error on the call site: {}", e.message));
         }
-        if !points_inside(&e.message, &file, text) && !whole_file(&e.message) {
+        if !fuzz::Lines::of(text).pointed_at(&e.message, &file) && !whole_file(&e.message) {
             return Err(format!("derive error without a position: {}", e.message));
         }
     }

@@ -1,10 +1,18 @@
 //! What the fuzz tests share: a seeded proptest runner whose case count the environment can
 //! raise (`DYNAMICS_FUZZ_CASES`), each case on its own thread under a time bound, and the
-//! `compile_error!`s of an expansion with the position of their span.
+//! `compile_error!`s of an expansion with the position of their span; for the file fuzzers,
+//! where the numbers and lines of a text are, whether a position is inside it, and temporary
+//! files for the derive to read (`xml`: the tags and attributes of an XML text; `urdf`: what
+//! the URDF fuzzer puts in).
+
+pub mod urdf;
+pub mod xml;
 
 use dynamics_codegen::front;
 use proc_macro2::{TokenStream, TokenTree};
+use proptest::sample::Index;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
@@ -113,4 +121,76 @@ pub fn compile_errors(tokens: TokenStream) -> Vec<CompileError> {
         }
     }
     found
+}
+
+/// The byte ranges of the numbers in `text` (not the digits of a word: `link1`).
+pub fn numbers(text: &[u8]) -> Vec<(usize, usize)> {
+    let mut found = Vec::new();
+    let mut i = 0;
+    while i < text.len() {
+        let starts = text[i].is_ascii_digit()
+            || (text[i] == b'-' && text.get(i + 1).is_some_and(u8::is_ascii_digit));
+        let word = i > 0 && (text[i - 1].is_ascii_alphanumeric() || text[i - 1] == b'_');
+        if starts && !word {
+            let end = (i + 1..text.len())
+                .find(|&j| !(text[j].is_ascii_alphanumeric() || b".+-_".contains(&text[j])))
+                .unwrap_or(text.len());
+            found.push((i, end));
+            i = end;
+        } else {
+            i += 1;
+        }
+    }
+    found
+}
+
+/// The byte offset where line `line` starts.
+pub fn line_start(text: &[u8], line: Index) -> usize {
+    let starts: Vec<usize> = std::iter::once(0)
+        .chain(
+            text.iter()
+                .enumerate()
+                .filter(|(_, b)| **b == b'\n')
+                .map(|(i, _)| i + 1),
+        )
+        .collect();
+    *line.get(&starts)
+}
+
+/// The length in characters of each line of a text (split at `\n`): where a position may be.
+pub struct Lines(Vec<usize>);
+
+impl Lines {
+    pub fn of(text: &str) -> Lines {
+        Lines(text.split('\n').map(|line| line.chars().count()).collect())
+    }
+
+    /// Whether (line, column) is inside the text (or just past its end).
+    pub fn inside(&self, line: usize, column: usize) -> bool {
+        line >= 1 && line <= self.0.len() && column >= 1 && column <= self.0[line - 1] + 1
+    }
+
+    /// `path:line:col: ` at the start of `message` (after `path:`), inside the text.
+    pub fn pointed_at(&self, message: &str, path: &str) -> bool {
+        let Some(rest) = message.split_once(&format!("{path}:")).map(|(_, r)| r) else {
+            return false;
+        };
+        let mut parts = rest.splitn(3, ':');
+        let (Some(l), Some(c)) = (parts.next(), parts.next()) else {
+            return false;
+        };
+        matches!((l.parse(), c.parse()), (Ok(l), Ok(c)) if self.inside(l, c))
+    }
+}
+
+static FILES: AtomicUsize = AtomicUsize::new(0);
+
+/// `text` written to a new file of the temporary directory, named after `name`: what the
+/// derive reads. The caller removes it.
+pub fn temp_file(name: &str, text: &str) -> std::io::Result<PathBuf> {
+    let n = FILES.fetch_add(1, Ordering::Relaxed);
+    let file =
+        std::env::temp_dir().join(format!("dynamics-fuzz-{}-{n}-{name}", std::process::id()));
+    std::fs::write(&file, text)?;
+    Ok(file)
 }

@@ -20,6 +20,7 @@ mod tests;
 
 use super::file::Loaded;
 use super::FileError;
+use crate::check::{Problem, MAX_JOINTS};
 use crate::model::{FrameProblem, Robot};
 
 /// A 1-based line and column in the file.
@@ -52,6 +53,7 @@ pub fn load_urdf(
     let doc = xml::read(text)?;
     let tree = tree::tree(&doc)?;
     let path_joints = tree.chain(chain.base, chain.tip)?;
+    too_many_joints(&doc, &path_joints.joints)?;
     let stem = std::path::Path::new(path)
         .file_stem()
         .and_then(|s| s.to_str());
@@ -91,7 +93,24 @@ pub fn load_urdf(
     })
 }
 
-/// A problem the lowering to D-H found with joint `joint` (0-based).
+/// More moving joints than a robot may have, at the first one past the limit: the error
+/// `check::robot` gives, found before thousands of joints are built and lowered for nothing.
+fn too_many_joints(doc: &xml::Description, path: &[usize]) -> Result<(), Vec<FileError>> {
+    let moving: Vec<&xml::Joint> = path
+        .iter()
+        .map(|j| &doc.joints[*j])
+        .filter(|j| j.kind.moves())
+        .collect();
+    match moving.get(MAX_JOINTS) {
+        Some(first_past) => {
+            let count = moving.len();
+            let message = Problem::TooManyJoints { count }.to_string();
+            Err(vec![xml::error(first_past.at, message)])
+        }
+        None => Ok(()),
+    }
+}
+
 /// The robot lowered to its own modified D-H table.
 fn lower(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
     crate::model::lower_frames(robot)

@@ -20,6 +20,8 @@ pub(super) struct Tree<'a> {
     parent: Vec<Option<usize>>,
     /// Per link, the joints that have it as parent, in the file's order.
     children: Vec<Vec<usize>>,
+    /// Per joint, whether it or a joint below it moves.
+    moving: Vec<bool>,
 }
 
 /// The serial chain from base to tip.
@@ -75,30 +77,28 @@ pub(super) fn tree(doc: &Description) -> Result<Tree<'_>, Vec<FileError>> {
         }
         children[p].push(j);
     }
-    let tree = Tree {
+    let mut tree = Tree {
         doc,
         index,
         parent,
         children,
+        moving: vec![false; doc.joints.len()],
     };
-    for link in 0..doc.links.len() {
-        if tree.ancestors(link).is_none() {
-            let at = doc.links[link].at;
-            errors.push(error(
-                at,
-                format!(
-                    "link `{}` is its own ancestor: the joints make a loop, not a tree",
-                    doc.links[link].name
-                ),
-            ));
-            break;
-        }
+    if let Some(link) = tree.on_a_loop() {
+        let link = &doc.links[link];
+        errors.push(error(
+            link.at,
+            format!(
+                "link `{}` is its own ancestor: the joints make a loop, not a tree",
+                link.name
+            ),
+        ));
     }
-    if errors.is_empty() {
-        Ok(tree)
-    } else {
-        Err(errors)
+    if !errors.is_empty() {
+        return Err(errors);
     }
+    tree.moving = tree.moving_below();
+    Ok(tree)
 }
 
 impl Tree<'_> {
@@ -121,19 +121,69 @@ impl Tree<'_> {
         })
     }
 
-    /// The joints from the root down to `link`, or `None` on a loop.
-    fn ancestors(&self, link: usize) -> Option<Vec<usize>> {
+    /// The parent link of joint `joint`.
+    fn parent_link(&self, joint: usize) -> usize {
+        self.index[self.doc.joints[joint].parent.as_str()]
+    }
+
+    /// A link that is its own ancestor, if the joints make a loop. Each link is walked up from
+    /// once (a walk stops at a link known to reach a root), so that a long chain is not
+    /// quadratic.
+    fn on_a_loop(&self) -> Option<usize> {
+        #[derive(Clone, Copy, PartialEq)]
+        enum Seen {
+            Not,
+            OnThisWalk,
+            ReachesARoot,
+        }
+        let mut seen = vec![Seen::Not; self.doc.links.len()];
+        for link in 0..self.doc.links.len() {
+            let mut walk = Vec::new();
+            let mut at = Some(link);
+            while let Some(l) = at {
+                match seen[l] {
+                    Seen::ReachesARoot => break,
+                    Seen::OnThisWalk => return Some(l),
+                    Seen::Not => {}
+                }
+                seen[l] = Seen::OnThisWalk;
+                walk.push(l);
+                at = self.parent[l].map(|j| self.parent_link(j));
+            }
+            for l in walk {
+                seen[l] = Seen::ReachesARoot;
+            }
+        }
+        None
+    }
+
+    /// Per joint, whether it or a joint below it moves: each moving joint marks the joints
+    /// above it, up to one marked already, so that each joint is marked once.
+    fn moving_below(&self) -> Vec<bool> {
+        let mut moving = vec![false; self.doc.joints.len()];
+        for (j, joint) in self.doc.joints.iter().enumerate() {
+            if !joint.kind.moves() {
+                continue;
+            }
+            let mut at = Some(j);
+            while let Some(j) = at.filter(|j| !moving[*j]) {
+                moving[j] = true;
+                at = self.parent[self.parent_link(j)];
+            }
+        }
+        moving
+    }
+
+    /// The joints from the root down to `link` (the tree has no loop).
+    fn ancestors(&self, link: usize) -> Vec<usize> {
         let mut joints = Vec::new();
         let mut at = link;
         while let Some(j) = self.parent[at] {
-            if joints.len() > self.doc.joints.len() {
-                return None;
-            }
             joints.push(j);
-            at = self.index[self.doc.joints[j].parent.as_str()];
+            at = self.parent_link(j);
         }
         joints.reverse();
-        Some(joints)
+        joints
     }
 
     /// The child link of joint `joint`.
@@ -148,14 +198,7 @@ impl Tree<'_> {
 
     /// Whether joint `joint` or one below it moves.
     pub fn moves(&self, joint: usize) -> bool {
-        let mut stack = vec![joint];
-        while let Some(j) = stack.pop() {
-            if self.doc.joints[j].kind.moves() {
-                return true;
-            }
-            stack.extend(&self.children[self.child(j)]);
-        }
-        false
+        self.moving[joint]
     }
 
     /// The chain from `base` (default: the root link) to `tip` (default: the end of the moving
@@ -169,7 +212,7 @@ impl Tree<'_> {
             Some(name) => self.find(name, "tip").map_err(|e| vec![e])?,
             None => self.last_moving(base).map_err(|e| vec![e])?,
         };
-        let from_root = self.ancestors(tip).unwrap_or_default();
+        let from_root = self.ancestors(tip);
         let start = from_root
             .iter()
             .position(|j| self.doc.joints[*j].parent == self.doc.links[base].name);
@@ -265,10 +308,12 @@ impl Tree<'_> {
     fn branches<'c>(&'c self, chain: &'c Chain) -> impl Iterator<Item = FileError> + 'c {
         let path_links =
             std::iter::once(chain.base).chain(chain.joints.iter().map(|j| self.child(*j)));
-        let before_tip = path_links.take(chain.joints.len());
-        before_tip.flat_map(move |link| {
+        // Paired with the joint that leaves it along the path, a link's branches are told from
+        // the chain by one comparison, not a search of the path (quadratic on a long chain).
+        let before_tip = path_links.zip(chain.joints.iter().copied());
+        before_tip.flat_map(move |(link, next)| {
             self.children[link].iter().filter_map(move |&j| {
-                if chain.joints.contains(&j) || !self.moves(j) {
+                if j == next || !self.moves(j) {
                     return None;
                 }
                 let joint = &self.doc.joints[j];

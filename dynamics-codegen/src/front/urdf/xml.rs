@@ -75,20 +75,20 @@ pub(super) struct Description {
 
 /// Reads the robot; the XML's first syntax error, or every element that cannot be read.
 pub(super) fn read(text: &str) -> Result<Description, Vec<FileError>> {
-    let doc = roxmltree::Document::parse(text).map_err(|e| {
-        let pos = e.pos();
-        let message = e.to_string();
-        // roxmltree ends its messages with the position, which the error carries already.
-        let message = message
-            .strip_suffix(&format!(" at {pos}"))
-            .unwrap_or(&message);
-        vec![error(
-            (pos.row as usize, pos.col as usize),
-            format!("malformed XML: {message}"),
-        )]
-    })?;
+    let doc = roxmltree::Document::parse(text).map_err(|e| vec![malformed(&e)])?;
     let root = doc.root_element();
-    let reader = Reader { doc: &doc };
+    let reader = Reader {
+        text: text.as_bytes(),
+        lines: Lines::new(text),
+    };
+    // Before anything else: the macros of a xacro file hold its links and joints, so that
+    // every other error would be beside the point.
+    if let Some(element) = doc.descendants().find(|n| is_xacro(n)) {
+        let tag = element.tag_name();
+        let prefix = tag.namespace().and_then(|uri| element.lookup_prefix(uri));
+        let written = format!("`<{}:{}>`", prefix.unwrap_or("xacro"), tag.name());
+        return Err(vec![error(reader.at(element), unexpanded(&written))]);
+    }
     if root.tag_name().name() != "robot" {
         let found = root.tag_name().name();
         return Err(vec![error(
@@ -115,6 +115,39 @@ pub(super) fn read(text: &str) -> Result<Description, Vec<FileError>> {
     })
 }
 
+/// The XML's syntax error as the file's error, at its place.
+fn malformed(e: &roxmltree::Error) -> FileError {
+    let pos = e.pos();
+    let at = (pos.row as usize, pos.col as usize);
+    // `xacro:` elements without the namespace declared: a xacro file all the same.
+    if let roxmltree::Error::UnknownNamespace(prefix, _) = e {
+        if prefix == "xacro" {
+            return error(at, unexpanded("a `xacro:` element"));
+        }
+    }
+    let message = e.to_string();
+    // roxmltree ends its messages with the position, which the error carries already.
+    let message = message
+        .strip_suffix(&format!(" at {pos}"))
+        .unwrap_or(&message);
+    error(at, format!("malformed XML: {message}"))
+}
+
+/// An element of the xacro namespace (`<xacro:macro>`, `<xacro:include>`, ..). An expanded
+/// file may keep the namespace's declaration on `<robot>`, but none of its elements.
+fn is_xacro(node: &Node) -> bool {
+    node.is_element()
+        && node
+            .tag_name()
+            .namespace()
+            .is_some_and(|uri| uri.trim_end_matches('/').ends_with("xacro"))
+}
+
+/// The error for a xacro file, which `written` shows to be one.
+fn unexpanded(written: &str) -> String {
+    format!("{written}: this is a xacro file, not a URDF: expand it with `xacro` first (`xacro robot.urdf.xacro > robot.urdf`) and use the URDF it writes")
+}
+
 /// A message at a place in the file.
 pub(super) fn error(at: At, message: impl Into<String>) -> FileError {
     FileError {
@@ -124,18 +157,68 @@ pub(super) fn error(at: At, message: impl Into<String>) -> FileError {
     }
 }
 
-struct Reader<'a, 'input> {
-    doc: &'a roxmltree::Document<'input>,
+/// Bytes between the checkpoints of [`Lines`]: each position counts at most this many.
+const STRIDE: usize = 64;
+
+/// The line and column of each byte offset, as roxmltree counts them (lines after `\n`,
+/// columns in characters), found in constant time: roxmltree's `text_pos_at` counts from the
+/// start of the text, which made reading a file of many elements quadratic.
+pub(super) struct Lines {
+    /// The offset where each line starts.
+    starts: Vec<usize>,
+    /// The characters before each multiple of [`STRIDE`] bytes.
+    chars: Vec<usize>,
 }
 
-impl Reader<'_, '_> {
+impl Lines {
+    pub(super) fn new(text: &str) -> Lines {
+        let bytes = text.as_bytes();
+        let starts = std::iter::once(0)
+            .chain(
+                bytes
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, b)| **b == b'\n')
+                    .map(|(i, _)| i + 1),
+            )
+            .collect();
+        let chars = std::iter::once(0)
+            .chain(bytes.chunks(STRIDE).scan(0, |n, chunk| {
+                *n += starts_char(chunk);
+                Some(*n)
+            }))
+            .collect();
+        Lines { starts, chars }
+    }
+
+    pub(super) fn at(&self, text: &[u8], offset: usize) -> At {
+        let line = self.starts.partition_point(|start| *start <= offset);
+        let start = self.starts[line - 1];
+        let chars_before = |offset: usize| {
+            let k = offset / STRIDE;
+            self.chars[k] + starts_char(&text[k * STRIDE..offset])
+        };
+        (line, chars_before(offset) - chars_before(start) + 1)
+    }
+}
+
+/// The characters that start in `bytes` (every byte but UTF-8's continuation bytes).
+fn starts_char(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|b| **b & 0xC0 != 0x80).count()
+}
+
+struct Reader<'a> {
+    text: &'a [u8],
+    lines: Lines,
+}
+
+impl Reader<'_> {
     fn at(&self, node: Node) -> At {
         self.offset(node.range().start)
     }
 
     fn offset(&self, offset: usize) -> At {
-        let pos = self.doc.text_pos_at(offset);
-        (pos.row as usize, pos.col as usize)
+        self.lines.at(self.text, offset)
     }
 
     /// The first child element `name` of `node`.
@@ -154,6 +237,16 @@ impl Reader<'_, '_> {
         })
     }
 
+    /// Where the value of `attr` starts, after its quote: roxmltree's `range_value` counts at
+    /// most 255 spaces around the `=`, and starts the value too early past them.
+    fn value_start(&self, attr: &roxmltree::Attribute) -> usize {
+        let name_end = attr.range_qname().end;
+        self.text[name_end..]
+            .iter()
+            .position(|b| matches!(b, b'"' | b'\''))
+            .map_or(name_end, |quote| name_end + quote + 1)
+    }
+
     /// `N` numbers in attribute `name` of `node` (`default` where it is absent), and where
     /// they are written.
     fn numbers<const N: usize>(
@@ -168,7 +261,7 @@ impl Reader<'_, '_> {
                 self.at(node),
             ));
         };
-        let at = self.offset(attr.range_value().start);
+        let at = self.offset(self.value_start(&attr));
         let words: Vec<&str> = attr.value().split_whitespace().collect();
         let parsed: Option<Vec<Value>> = words.iter().map(|w| number(w)).collect();
         match parsed.map(<[Value; N]>::try_from) {

@@ -1,6 +1,7 @@
 //! Bad input: each mistake an error at the line and column of the element or attribute that
 //! makes it.
 
+use super::super::xml::Lines;
 use super::super::{load_urdf, Chain};
 use crate::front::FileError;
 
@@ -183,4 +184,122 @@ fn a_tip_above_the_base_is_refused() {
         "{:?}",
         e[0]
     );
+}
+
+#[test]
+fn a_xacro_file_is_sent_to_xacro() {
+    let xacro = "<?xml version=\"1.0\"?>\n\
+                 <robot name=\"arm\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n  \
+                 <xacro:property name=\"l\" value=\"0.5\"/>\n  \
+                 <xacro:macro name=\"arm\" params=\"n\"><link name=\"${n}\"/></xacro:macro>\n  \
+                 <xacro:arm n=\"base\"/>\n\
+                 </robot>\n";
+    let (line, column, message) = first(xacro, None);
+    assert_eq!((line, column), (3, 3), "{message}");
+    assert!(
+        message.starts_with("`<xacro:property>`: this is a xacro file, not a URDF")
+            && message.contains("`xacro robot.urdf.xacro > robot.urdf`"),
+        "{message}"
+    );
+    // Without the namespace declared, the XML itself is wrong; the advice is the same.
+    let undeclared = "<robot name=\"arm\">\n<xacro:include filename=\"arm.xacro\"/>\n</robot>";
+    let (line, _, message) = first(undeclared, None);
+    assert_eq!(line, 2, "{message}");
+    assert!(
+        message.starts_with("a `xacro:` element: this is a xacro file"),
+        "{message}"
+    );
+    // An expanded file may keep the declaration (`robots/urdf/ur5.urdf` does): it loads.
+    let expanded = two_links(&joint("revolute", ""), INERTIAL).replace(
+        "<robot name=\"r\">",
+        "<robot name=\"r\" xmlns:xacro=\"http://wiki.ros.org/xacro\">",
+    );
+    assert!(load_urdf("r.urdf", &expanded, Chain::default(), true).is_ok());
+}
+
+/// Positions found by the line index are roxmltree's, at every character of a text with
+/// multi-byte characters across the index's checkpoints, `\r\n` and tabs.
+#[test]
+fn positions_are_roxmltrees() {
+    let long = "é€😀a".repeat(40);
+    let text = format!(
+        "<robot>\r\n\t<link name=\"ü\"/>\n<!-- {long} --><link name=\"{long}\"/>\n\n</robot>"
+    );
+    let doc = roxmltree::Document::parse(&text).expect("XML");
+    let lines = Lines::new(&text);
+    for (offset, _) in text.char_indices().chain([(text.len(), ' ')]) {
+        let pos = doc.text_pos_at(offset);
+        let expected = (pos.row as usize, pos.col as usize);
+        assert_eq!(
+            lines.at(text.as_bytes(), offset),
+            expected,
+            "at byte {offset}"
+        );
+    }
+}
+
+/// A robot of `n` links `l0`, `l1`, .. below `ground`, each joint of type `kind`.
+fn long_chain(n: usize, kind: &str) -> String {
+    let mut text = String::from("<robot name=\"long\">\n<link name=\"ground\"/>\n");
+    for i in 0..n {
+        let parent = if i == 0 {
+            "ground".to_string()
+        } else {
+            format!("l{}", i - 1)
+        };
+        text += &format!("<link name=\"l{i}\"/><joint name=\"j{i}\" type=\"{kind}\"><parent link=\"{parent}\"/><child link=\"l{i}\"/></joint>\n");
+    }
+    text + "</robot>\n"
+}
+
+/// Reading a file of many links was quadratic: each position was counted from the start of the
+/// text, each link walked up to the root, each joint searched below for a moving one, and every
+/// moving joint built and lowered before the count was checked. 28,000 links took more than the
+/// fuzzer's bound of 10 s; 20,000 now take a fraction of a second.
+#[test]
+fn long_chains_load_in_linear_time() {
+    let start = std::time::Instant::now();
+    let fixed = long_chain(20_000, "fixed");
+    let (line, column, message) = first(&fixed, None);
+    assert_eq!((line, column), (1, 1), "{message}");
+    assert!(message.starts_with("no joint moves"), "{message}");
+    // Past 16 moving joints the chain is refused before it is built: at the 17th joint.
+    let moving = long_chain(20_000, "revolute");
+    let (line, column, message) = first(&moving, None);
+    assert_eq!((line, column), (19, 19), "{message}");
+    assert!(message.starts_with("20000 joints; at most 16"), "{message}");
+    let elapsed = start.elapsed();
+    assert!(elapsed < std::time::Duration::from_secs(5), "{elapsed:?}");
+}
+
+#[test]
+fn a_loop_is_named_at_a_link_on_it() {
+    // `a` → `b` → `c` → `b`: `b` and `c` are on the loop; `a` is not.
+    let text = "<robot>\n<link name=\"a\"/>\n<link name=\"b\"/>\n<link name=\"c\"/>\n\
+                <joint name=\"ab\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n\
+                <joint name=\"bc\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>\n\
+                <joint name=\"cb\" type=\"fixed\"><parent link=\"c\"/><child link=\"b\"/></joint>\n\
+                </robot>";
+    let all = errors(text, None);
+    let looped = all
+        .iter()
+        .find(|e| e.message.contains("own ancestor"))
+        .expect("a loop");
+    assert_eq!(
+        (looped.line, looped.column),
+        (Some(3), Some(1)),
+        "{looped:?}"
+    );
+}
+
+/// roxmltree counts at most 255 spaces around an attribute's `=`: past them, the value was
+/// placed in the spaces.
+#[test]
+fn a_value_after_many_spaces_at_its_place() {
+    let spaces = " ".repeat(300);
+    let axis = format!("<axis xyz{spaces}=\n {spaces}\"0 0 0\"/>");
+    let text = two_links(&joint("revolute", &axis), INERTIAL);
+    let (line, column, message) = first(&text, None);
+    assert_eq!((line, column), (5, 303), "{message}");
+    assert!(message.contains("is zero"), "{message}");
 }
