@@ -4,7 +4,9 @@
 //! `fields` (struct fields named by values), `physics` (mass, inertia, actuator inertia,
 //! springs), `friction` (joint friction and geared drives, in attributes and files), `files`
 //! (description files, which live next to their tests) and `frames` (joints given by placements
-//! and axes, in the attribute and in files). Refresh with
+//! and axes, in the attribute and in files). A case names its file relative to itself: trybuild's
+//! crate, somewhere inside the target directory, has no such file, so the derive finds it beside
+//! the case, and the cases pass wherever `CARGO_TARGET_DIR` points. Refresh with
 //! `TRYBUILD=overwrite`, then read every changed `.stderr`.
 
 #[test]

@@ -1,13 +1,14 @@
 //! The derive's `file = "..."`: the description file read (relative to the crate's
-//! `Cargo.toml`) into a robot, with the fields its values name and the checks of
-//! [`crate::check::robot`]. Every error goes on the `file = "..."` string, with the file's name,
-//! line and column in the message.
+//! `Cargo.toml`, else to the source file: [`locate`]) into a robot, with the fields its values
+//! name and the checks of [`crate::check::robot`]. Every error goes on the `file = "..."` string,
+//! with the file's name, line and column in the message.
 
 use super::errors::Errors;
 use super::fields::{field_error, Field};
 use super::file::{self, Loaded};
 use crate::check::{self, Problem};
 use crate::model::{Robot, Value};
+use std::path::{Path, PathBuf};
 use syn::LitStr;
 
 /// Reads the description file `file` names; `tracked` is set to its absolute path, for
@@ -34,28 +35,56 @@ pub(super) fn robot_from_file(
     Some(loaded.robot)
 }
 
-/// The text of the file `file` names (relative to the crate's `Cargo.toml`), with its path
-/// as written; `tracked` is set to its absolute path, for rebuilds.
+/// The text of the file `file` names (found by [`locate`]), with its path as written; `tracked`
+/// is set to its absolute path, for rebuilds.
 pub(super) fn read_relative(
     file: &LitStr,
     errors: &mut Errors,
     tracked: &mut Option<String>,
 ) -> Option<(String, String)> {
     let relative = file.value();
-    let base = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".to_string());
-    let path = std::path::Path::new(&base).join(&relative);
+    let (path, looked) = locate(file);
     let text = match std::fs::read_to_string(&path) {
         Ok(t) => t,
         Err(e) => {
             errors.push(
                 file.span(),
-                format!("cannot read `{relative}` (relative to the crate's Cargo.toml): {e}"),
+                format!("cannot read `{relative}` (relative to {looked}): {e}"),
             );
             return None;
         }
     };
+    // `include_bytes!` reads a relative path from the source file's directory, not from here.
+    let path = std::path::absolute(&path).unwrap_or(path);
     *tracked = Some(path.display().to_string());
     Some((relative, text))
+}
+
+/// Where the path `file` names is, and where a relative one was looked for (for the error).
+///
+/// The crate's root (its `Cargo.toml`) comes first, so that every path that found a file before
+/// still finds the same one. Only when nothing is there is the path taken relative to the source
+/// file that names it, as `include_str!` does: that makes a file beside its source reachable
+/// wherever the crate is built from, such as the crate trybuild writes inside `target/`. The
+/// source file is known only inside a real macro expansion on Rust 1.88 or later
+/// (`Span::local_file`); the CLI and the unit tests have the crate's root alone.
+fn locate(file: &LitStr) -> (PathBuf, &'static str) {
+    let relative = file.value();
+    let root = std::env::var_os("CARGO_MANIFEST_DIR").map_or_else(|| ".".into(), PathBuf::from);
+    let from_root = root.join(&relative);
+    if from_root.exists() {
+        return (from_root, "the crate's Cargo.toml");
+    }
+    let source = file.span().local_file();
+    let Some(dir) = source.as_deref().and_then(Path::parent) else {
+        return (from_root, "the crate's Cargo.toml");
+    };
+    let beside = dir.join(&relative);
+    if beside.exists() {
+        (beside, "this source file")
+    } else {
+        (from_root, "the crate's Cargo.toml or to this source file")
+    }
 }
 
 /// Every problem of the loaded file `relative`, as messages that point into it.

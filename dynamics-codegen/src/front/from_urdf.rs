@@ -1,5 +1,5 @@
 //! The derive's `urdf = "..."` (with `base = ".."`, `tip = ".."`): the chain of a URDF file
-//! (relative to the crate's `Cargo.toml`, tracked for rebuilds) read into a robot by
+//! (found as `file = "..."` is, tracked for rebuilds) read into a robot by
 //! [`super::load_urdf`], then checked as a description file is. Every error goes on the
 //! `urdf = "..."` string, with the file's name, line and column in the message.
 

@@ -1,8 +1,8 @@
 use dynamics_runtime::Dynamics;
 
-// The path is relative to the crate's Cargo.toml, which for trybuild is target/tests/trybuild/<crate>.
+// The path is relative to this file: trybuild's crate, inside `target/`, has no such file.
 #[derive(Dynamics)]
-#[dynamics(file = "../../../../tests/tests/ui/files/unknown_joint_kind.toml")]
+#[dynamics(file = "unknown_joint_kind.toml")]
 struct Arm;
 
 fn main() {}

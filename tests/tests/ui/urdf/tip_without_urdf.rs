@@ -1,7 +1,7 @@
 use dynamics_runtime::Dynamics;
 
 #[derive(Dynamics)]
-#[dynamics(file = "../../../../tests/tests/ui/files/two_link.toml", tip = "tool0")]
+#[dynamics(file = "../files/two_link.toml", tip = "tool0")]
 struct Arm;
 
 fn main() {}

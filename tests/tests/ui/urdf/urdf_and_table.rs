@@ -2,7 +2,7 @@ use dynamics_runtime::Dynamics;
 
 #[derive(Dynamics)]
 #[dynamics(
-    urdf = "../../../../tests/tests/ui/urdf/arm.urdf",
+    urdf = "arm.urdf",
     dh = [[q, 0, 1, 0]],
 )]
 struct Arm;

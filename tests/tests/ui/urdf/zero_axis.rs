@@ -1,8 +1,8 @@
 use dynamics_runtime::Dynamics;
 
-// The path is relative to the crate's Cargo.toml, which for trybuild is target/tests/trybuild/<crate>.
+// The path is relative to this file: trybuild's crate, inside `target/`, has no such file.
 #[derive(Dynamics)]
-#[dynamics(urdf = "../../../../tests/tests/ui/urdf/zero_axis.urdf")]
+#[dynamics(urdf = "zero_axis.urdf")]
 struct Arm;
 
 fn main() {}
