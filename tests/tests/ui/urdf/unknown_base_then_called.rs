@@ -3,7 +3,7 @@ use dynamics_runtime::Dynamics;
 // A robot that cannot be read still implements the trait, for any number of joints, so the
 // calls below add no errors to the one about the base.
 #[derive(Dynamics)]
-#[dynamics(urdf = "../../../../tests/tests/ui/urdf/arm.urdf", base = "floor")]
+#[dynamics(urdf = "arm.urdf", base = "floor")]
 struct Arm;
 
 fn main() {
