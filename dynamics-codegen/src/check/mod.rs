@@ -59,10 +59,10 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
     let too_many = (count > MAX_JOINTS).then_some(Problem::TooManyJoints { count });
     let links = robot.joints.iter().enumerate().flat_map(|(joint, j)| {
         let checked = check_inertia.get(joint).copied().unwrap_or(true);
-        link(&j.mass, &j.inertia, checked)
+        link(&j.link.mass, &j.link.inertia, checked)
             .into_iter()
-            .chain(drive(&j.actuator_inertia, j.spring.as_ref()))
-            .chain(j.friction.iter().flat_map(friction))
+            .chain(drive(&j.link.actuator_inertia, j.link.spring.as_ref()))
+            .chain(j.link.friction.iter().flat_map(friction))
             .map(move |problem| Problem::Link { joint, problem })
     });
     too_many.into_iter().chain(links).collect()
@@ -71,24 +71,15 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
 #[cfg(test)]
 mod tests {
     use super::{robot, LinkParameter, Problem, MAX_JOINTS};
-    use crate::model::{Convention, Joint, JointKind, Pose, Robot, Value};
+    use crate::model::{Convention, Joint, JointKind, Link, Pose, Robot, Value};
 
     fn joint(mass: f64) -> Joint {
-        Joint {
-            kind: JointKind::Revolute,
-            theta: Value::zero(),
-            d: Value::zero(),
-            a: Value::zero(),
-            alpha: Value::zero(),
+        let link = Link {
             mass: Value::from_f64(mass),
-            com: Default::default(),
             inertia: [1.0, 1.0, 3.0, 0.0, 0.0, 0.0].map(Value::from_f64),
-            actuator_inertia: Value::zero(),
-            spring: None,
-            friction: None,
-            frame: None,
-            link_pose: Pose::identity(),
-        }
+            ..Link::default()
+        };
+        Joint::dh(JointKind::Revolute, Default::default(), link)
     }
 
     fn chain(masses: &[f64]) -> Robot {

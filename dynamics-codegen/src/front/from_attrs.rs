@@ -11,7 +11,7 @@ use super::from_joints;
 use super::value::Spanned;
 use crate::check;
 use crate::model::{
-    snap_angle, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value,
+    snap_angle, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Spring, Value,
 };
 use proc_macro2::Span;
 
@@ -120,16 +120,6 @@ pub(super) fn check_joint_count(list: &JointList, links: &[LinkAttr], errors: &m
     }
 }
 
-/// The values of a `link(...)`, zero where it does not give them.
-pub(super) struct LinkValues {
-    pub mass: Value,
-    pub com: [Value; 3],
-    pub inertia: [Value; 6],
-    pub actuator_inertia: Value,
-    pub spring: Option<Spring>,
-    pub friction: Option<Friction>,
-}
-
 /// Turns attribute values into model values, reporting the errors of each.
 pub(super) struct Reader<'a> {
     fields: &'a [Field],
@@ -178,21 +168,7 @@ impl Reader<'_> {
         let a = self.value(Some(a));
         let alpha = snap_angle(&self.value(Some(alpha)));
         let link = self.link(n, attrs.links.get(n - 1), attrs.check_inertia, span);
-        Joint {
-            kind,
-            theta,
-            d,
-            a,
-            alpha,
-            mass: link.mass,
-            com: link.com,
-            inertia: link.inertia,
-            actuator_inertia: link.actuator_inertia,
-            spring: link.spring,
-            friction: link.friction,
-            frame: None,
-            link_pose: Pose::identity(),
-        }
+        Joint::dh(kind, [theta, d, a, alpha], link)
     }
 
     /// The actuator inertia `gear_ratio² · rotor_inertia` of link `n`'s `link(...)` (ratio 1
@@ -272,7 +248,7 @@ impl Reader<'_> {
         link: Option<&LinkAttr>,
         check_all: Option<bool>,
         span: Span,
-    ) -> LinkValues {
+    ) -> Link {
         let com = match link.and_then(|l| l.com.as_ref()) {
             Some(c) => self.values(c),
             None => Default::default(),
@@ -305,7 +281,7 @@ impl Reader<'_> {
                 stiffness: self.value(Some(k)),
                 rest: self.value(Some(rest)),
             });
-        let values = LinkValues {
+        let values = Link {
             mass,
             com,
             inertia,
@@ -344,7 +320,7 @@ fn check_arithmetic(spanned: &Spanned, errors: &mut Errors) {
 }
 
 /// The physical checks of link `n` and its joint's drive, each error on the value it is about.
-fn check_link(n: usize, link: &LinkAttr, checked: bool, values: &LinkValues, errors: &mut Errors) {
+fn check_link(n: usize, link: &LinkAttr, checked: bool, values: &Link, errors: &mut Errors) {
     let finite = |v: &Value| v.exact().map_or(true, |x| x.to_f64().is_finite());
     // A non-finite literal was reported where it is written; do not report it twice.
     let known = |v: &Value| if finite(v) { v.clone() } else { Value::zero() };

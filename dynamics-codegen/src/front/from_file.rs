@@ -104,8 +104,8 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
         set.contains(name)
     };
     for (i, j) in robot.joints.iter().enumerate() {
-        let spring = j.spring.as_ref();
-        let friction = j.friction.as_ref();
+        let spring = j.link.spring.as_ref();
+        let friction = j.link.friction.as_ref();
         let origin = j.frame.iter().flat_map(|f| &f.origin.xyz).collect();
         let keys: [(&'static str, Vec<&Value>); 15] = [
             ("origin", origin),
@@ -113,10 +113,10 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
             ("d", vec![&j.d]),
             ("a", vec![&j.a]),
             ("alpha", vec![&j.alpha]),
-            ("mass", vec![&j.mass]),
-            ("com", j.com.iter().collect()),
-            ("inertia", j.inertia.iter().collect()),
-            ("actuator_inertia", vec![&j.actuator_inertia]),
+            ("mass", vec![&j.link.mass]),
+            ("com", j.link.com.iter().collect()),
+            ("inertia", j.link.inertia.iter().collect()),
+            ("actuator_inertia", vec![&j.link.actuator_inertia]),
             (
                 "spring_stiffness",
                 spring.map(|s| &s.stiffness).into_iter().collect(),

@@ -85,22 +85,9 @@ fn joint(reader: &mut Reader, n: usize, j: &JointAttr, attrs: &Attrs, span: Span
         None => [Value::zero(), Value::zero(), Value::one()],
     };
     let link = reader.link(n, attrs.links.get(n - 1), attrs.check_inertia, span);
-    Joint {
-        kind: j.kind,
-        theta: Value::zero(),
-        d: Value::zero(),
-        a: Value::zero(),
-        alpha: Value::zero(),
-        mass: link.mass,
-        com: link.com,
-        inertia: link.inertia,
-        actuator_inertia: link.actuator_inertia,
-        spring: link.spring,
-        friction: link.friction,
-        frame: Some(AxisFrame {
-            origin: Placement { xyz, rpy },
-            axis,
-        }),
-        link_pose: Pose::identity(),
-    }
+    let frame = AxisFrame {
+        origin: Placement { xyz, rpy },
+        axis,
+    };
+    Joint::framed(j.kind, frame, link)
 }

@@ -190,8 +190,8 @@ mod tests {
             a.joints[0].alpha.pi_multiple(),
             b.joints[0].alpha.pi_multiple()
         );
-        assert_eq!(a.joints[0].mass, b.joints[0].mass);
-        assert_eq!(a.joints[0].com, b.joints[0].com);
+        assert_eq!(a.joints[0].link.mass, b.joints[0].link.mass);
+        assert_eq!(a.joints[0].link.com, b.joints[0].link.com);
     }
 
     /// As in frames and URDFs, 1.5708 and −3.14159 are quarter turns; 1.5709 is not.

@@ -6,7 +6,7 @@ use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
 use crate::model::{
-    snap_angle, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value,
+    snap_angle, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Spring, Value,
 };
 use crate::symbolic::Number;
 use serde::Deserialize;
@@ -281,21 +281,24 @@ pub(super) fn convert(
         let actuator_inertia = j.actuator_inertia(i, &mut deferred);
         let friction = j.friction();
         let frame = frames::frame(i, &j, frames_given, &mut deferred);
-        joints.push(Joint {
-            kind,
-            // Angles near quarter turns (1.5708) are those quarter turns, as in frames and URDFs.
-            theta: snap_angle(&value(j.theta.as_ref())),
-            d: value(j.d.as_ref()),
-            a: value(j.a.as_ref()),
-            alpha: snap_angle(&value(j.alpha.as_ref())),
+        let link = Link {
             mass: j.mass.0,
             com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
             inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
             actuator_inertia,
             spring,
             friction,
+        };
+        // Angles near quarter turns (1.5708) are those quarter turns, as in frames and URDFs.
+        let row = [
+            snap_angle(&value(j.theta.as_ref())),
+            value(j.d.as_ref()),
+            value(j.a.as_ref()),
+            snap_angle(&value(j.alpha.as_ref())),
+        ];
+        joints.push(Joint {
             frame,
-            link_pose: Pose::identity(),
+            ..Joint::dh(kind, row, link)
         });
     }
     let mut loaded = Loaded {

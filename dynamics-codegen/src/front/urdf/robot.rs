@@ -9,7 +9,7 @@ use super::xml::{error, Joint as UrdfJoint, Kind};
 use crate::check;
 use crate::front::{FileError, Positions};
 use crate::model::{
-    AxisFrame, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Value,
+    AxisFrame, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Value,
     AXIS_LENGTH_TOLERANCE,
 };
 use std::collections::BTreeMap;
@@ -204,28 +204,23 @@ fn joint(tree: &Tree, segment: Segment) -> Result<(Joint, JointPositions), Vec<F
     .into_iter()
     .map(|(k, v)| (k.to_string(), v))
     .collect();
-    let joint = Joint {
-        kind: if urdf.kind == Kind::Prismatic {
-            JointKind::Prismatic
-        } else {
-            JointKind::Revolute
-        },
-        theta: Value::zero(),
-        d: Value::zero(),
-        a: Value::zero(),
-        alpha: Value::zero(),
+    let kind = if urdf.kind == Kind::Prismatic {
+        JointKind::Prismatic
+    } else {
+        JointKind::Revolute
+    };
+    let link = Link {
         mass: body.mass,
         com: body.com,
         inertia: body.inertia,
-        actuator_inertia: Value::zero(),
-        spring: None,
         friction,
-        frame: Some(AxisFrame {
-            origin: segment.placement,
-            axis,
-        }),
-        link_pose: Pose::identity(),
+        ..Link::default()
     };
+    let frame = AxisFrame {
+        origin: segment.placement,
+        axis,
+    };
+    let joint = Joint::framed(kind, frame, link);
     Ok((joint, at))
 }
 
