@@ -1,10 +1,12 @@
-//! The checks of a robot that need no derivation, shared by the derive and the command-line
-//! tool: the number of joints is within [`MAX_JOINTS`], each link's mass and inertia tensor
-//! are ones a rigid body can have ([`link`]), and each joint's actuator inertia and spring are
-//! not negative ([`drive`]), its friction coefficients not negative and its smoothing
-//! velocity positive ([`friction`]; [`gear`] for a rotor and gear ratio, which the front ends
-//! check before turning them into an actuator inertia). Each problem says what it concerns; the caller
-//! places it on the tokens or the description-file value it comes from.
+//! The checks of a robot that need no derivation, one pass after lowering ([`robot`]) for every
+//! input of the derive and for the command-line tool: the number of joints is within
+//! [`MAX_JOINTS`], each link's mass and inertia tensor are ones a rigid body can have
+//! ([`link`]), and each joint's actuator inertia and spring are not negative ([`drive`]), its
+//! friction coefficients not negative and its smoothing velocity positive ([`friction`];
+//! [`gear`] for a rotor and gear ratio, which the model does not keep: the front ends check
+//! them before turning them into an actuator inertia). Each problem names the value it
+//! concerns by its description-file key ([`LinkParameter::key`]); the front end's table of
+//! sources places it on the tokens or at the line and column that give that value.
 
 mod drive;
 mod eigenvalues;
