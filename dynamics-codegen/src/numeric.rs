@@ -72,7 +72,7 @@ impl Numeric {
             .iter()
             .zip(q)
             .map(|(j, qi)| {
-                j.spring.as_ref().map_or(0.0, |s| {
+                j.link.spring.as_ref().map_or(0.0, |s| {
                     self.value(&s.stiffness) * (qi - self.value(&s.rest))
                 })
             })
@@ -90,7 +90,7 @@ impl Numeric {
             .zip(&self.robot.joints)
             .enumerate()
             .map(|(i, (t, j))| {
-                t + self.value(&j.actuator_inertia) * qdd[i] + springs[i] + friction[i]
+                t + self.value(&j.link.actuator_inertia) * qdd[i] + springs[i] + friction[i]
             })
             .collect()
     }
@@ -104,7 +104,7 @@ impl Numeric {
             .iter()
             .zip(qd)
             .map(|(j, &v)| {
-                j.friction.as_ref().map_or(0.0, |f| {
+                j.link.friction.as_ref().map_or(0.0, |f| {
                     let direction = f
                         .smoothing
                         .as_ref()
@@ -135,7 +135,7 @@ impl Numeric {
             coriolis: algo::rnea(&chain, qd, &zeros, no_gravity),
             gravity,
             actuator: (self.robot.joints.iter().zip(qdd))
-                .map(|(j, a)| self.value(&j.actuator_inertia) * a)
+                .map(|(j, a)| self.value(&j.link.actuator_inertia) * a)
                 .collect(),
             friction: self.friction_torques(qd),
         }
@@ -149,8 +149,8 @@ impl Numeric {
         let mut kinetic = algo::kinetic_energy(&chain, qd, 0.0);
         let mut potential = algo::potential_energy(&chain, self.gravity());
         for ((j, qi), v) in self.robot.joints.iter().zip(q).zip(qd) {
-            kinetic += 0.5 * self.value(&j.actuator_inertia) * v * v;
-            if let Some(s) = &j.spring {
+            kinetic += 0.5 * self.value(&j.link.actuator_inertia) * v * v;
+            if let Some(s) = &j.link.spring {
                 let stretch = qi - self.value(&s.rest);
                 potential += 0.5 * self.value(&s.stiffness) * stretch * stretch;
             }
@@ -163,7 +163,7 @@ impl Numeric {
     pub fn mass_matrix(&self, q: &[f64]) -> Vec<Vec<f64>> {
         let mut m = algo::crba(&self.chain(q));
         for (i, j) in self.robot.joints.iter().enumerate() {
-            m[i][i] += self.value(&j.actuator_inertia);
+            m[i][i] += self.value(&j.link.actuator_inertia);
         }
         m
     }

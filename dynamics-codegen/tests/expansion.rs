@@ -85,9 +85,9 @@ fn json_and_toml_descriptions_agree() {
         let show = |v: &model::Value| v.to_string();
         toml += &format!(
             "[[joints]]\ntype = \"revolute\"\nd = {d}\na = {a}\nalpha = {alpha}\nmass = \"{}\"\ncom = [{}]\ninertia = [{}]\n",
-            show(&j.mass),
-            j.com.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
-            j.inertia.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
+            show(&j.link.mass),
+            j.link.com.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
+            j.link.inertia.iter().map(|v| format!("\"{v}\"")).collect::<Vec<_>>().join(", "),
         );
     }
     let toml = front::from_toml(&toml, "puma560").expect("toml");
@@ -121,7 +121,7 @@ actuator_inertia = 0.05
     let robot = front::from_toml(text, "x").expect("README sample");
     assert_eq!(robot.joints.len(), 1);
     // 2.0 * 0.7^2 / 12 = 0.98 / 12 = 49/600, exactly
-    let iyy = robot.joints[0].inertia[1].exact().expect("exact");
+    let iyy = robot.joints[0].link.inertia[1].exact().expect("exact");
     assert_eq!(iyy.to_string(), "49/600");
     assert_eq!(
         robot.joints[0].alpha.pi_multiple().map(|k| k.to_string()),
@@ -185,7 +185,7 @@ fn symmetric_last_link_needs_no_turn() {
     let mut puma = front::from_json(PUMA, "puma560").expect("json");
     assert_eq!(trig(&puma), [8, 8, 8]);
     let last = puma.joints.last_mut().expect("joints");
-    last.inertia[0] = model::Value::Num(dynamics_codegen::symbolic::Number::Float(2e-4));
+    last.link.inertia[0] = model::Value::Num(dynamics_codegen::symbolic::Number::Float(2e-4));
     assert_eq!(trig(&puma), [10, 10, 10]);
 }
 

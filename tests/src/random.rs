@@ -84,23 +84,20 @@ impl RobotSpec {
             joints: self
                 .joints
                 .iter()
-                .map(|j| model::Joint {
-                    kind: j.kind,
-                    theta: j.theta.value(),
-                    d: v(j.d),
-                    a: v(j.a),
-                    alpha: j.alpha.value(),
-                    mass: v(j.mass),
-                    com: j.com.map(v),
-                    inertia: j.inertia.map(v),
-                    actuator_inertia: v(j.actuator_inertia),
-                    spring: j.spring.map(|(k, rest)| Spring {
-                        stiffness: v(k),
-                        rest: v(rest),
-                    }),
-                    friction: None,
-                    frame: None,
-                    link_pose: model::Pose::identity(),
+                .map(|j| {
+                    let link = model::Link {
+                        mass: v(j.mass),
+                        com: j.com.map(v),
+                        inertia: j.inertia.map(v),
+                        actuator_inertia: v(j.actuator_inertia),
+                        spring: j.spring.map(|(k, rest)| Spring {
+                            stiffness: v(k),
+                            rest: v(rest),
+                        }),
+                        friction: None,
+                    };
+                    let row = [j.theta.value(), v(j.d), v(j.a), j.alpha.value()];
+                    model::Joint::dh(j.kind, row, link)
                 })
                 .collect(),
             base: model::Pose::identity(),

@@ -66,9 +66,13 @@ pub trait RobotScalars {
     fn inertial(&self, joint: &Joint) -> Inertial<Self::Scalar> {
         let v = |x: &Value| self.value(x);
         Inertial {
-            mass: v(&joint.mass),
-            com: V3::new(v(&joint.com[0]), v(&joint.com[1]), v(&joint.com[2])),
-            inertia: joint.inertia.each_ref().map(v),
+            mass: v(&joint.link.mass),
+            com: V3::new(
+                v(&joint.link.com[0]),
+                v(&joint.link.com[1]),
+                v(&joint.link.com[2]),
+            ),
+            inertia: joint.link.inertia.each_ref().map(v),
         }
     }
 

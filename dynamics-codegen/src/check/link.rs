@@ -33,6 +33,28 @@ pub enum LinkParameter {
     GearRatio,
 }
 
+impl LinkParameter {
+    /// The key that gives it in a description file (`mass`, `spring_stiffness`, ...): every
+    /// front end files where it found each value under these keys, so that a problem finds its
+    /// place through one table, whatever the input.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            LinkParameter::Mass => "mass",
+            LinkParameter::Inertia => "inertia",
+            LinkParameter::ActuatorInertia => "actuator_inertia",
+            LinkParameter::SpringStiffness => "spring_stiffness",
+            LinkParameter::SpringRest => "spring_rest",
+            LinkParameter::FrictionViscous => "friction_viscous",
+            LinkParameter::FrictionCoulomb => "friction_coulomb",
+            LinkParameter::FrictionOffset => "friction_offset",
+            LinkParameter::FrictionSmoothing => "friction_smoothing",
+            LinkParameter::RotorInertia => "rotor_inertia",
+            LinkParameter::GearRatio => "gear_ratio",
+        }
+    }
+}
+
 /// A physical problem with one link.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LinkProblem {

@@ -1,10 +1,12 @@
-//! The checks of a robot that need no derivation, shared by the derive and the command-line
-//! tool: the number of joints is within [`MAX_JOINTS`], each link's mass and inertia tensor
-//! are ones a rigid body can have ([`link`]), and each joint's actuator inertia and spring are
-//! not negative ([`drive`]), its friction coefficients not negative and its smoothing
-//! velocity positive ([`friction`]; [`gear`] for a rotor and gear ratio, which the front ends
-//! check before turning them into an actuator inertia). Each problem says what it concerns; the caller
-//! places it on the tokens or the description-file value it comes from.
+//! The checks of a robot that need no derivation, one pass after lowering ([`robot`]) for every
+//! input of the derive and for the command-line tool: the number of joints is within
+//! [`MAX_JOINTS`], each link's mass and inertia tensor are ones a rigid body can have
+//! ([`link`]), and each joint's actuator inertia and spring are not negative ([`drive`]), its
+//! friction coefficients not negative and its smoothing velocity positive ([`friction`];
+//! [`gear`] for a rotor and gear ratio, which the model does not keep: the front ends check
+//! them before turning them into an actuator inertia). Each problem names the value it
+//! concerns by its description-file key ([`LinkParameter::key`]); the front end's table of
+//! sources places it on the tokens or at the line and column that give that value.
 
 mod drive;
 mod eigenvalues;
@@ -59,10 +61,10 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
     let too_many = (count > MAX_JOINTS).then_some(Problem::TooManyJoints { count });
     let links = robot.joints.iter().enumerate().flat_map(|(joint, j)| {
         let checked = check_inertia.get(joint).copied().unwrap_or(true);
-        link(&j.mass, &j.inertia, checked)
+        link(&j.link.mass, &j.link.inertia, checked)
             .into_iter()
-            .chain(drive(&j.actuator_inertia, j.spring.as_ref()))
-            .chain(j.friction.iter().flat_map(friction))
+            .chain(drive(&j.link.actuator_inertia, j.link.spring.as_ref()))
+            .chain(j.link.friction.iter().flat_map(friction))
             .map(move |problem| Problem::Link { joint, problem })
     });
     too_many.into_iter().chain(links).collect()
@@ -71,24 +73,15 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
 #[cfg(test)]
 mod tests {
     use super::{robot, LinkParameter, Problem, MAX_JOINTS};
-    use crate::model::{Convention, Joint, JointKind, Pose, Robot, Value};
+    use crate::model::{Convention, Joint, JointKind, Link, Pose, Robot, Value};
 
     fn joint(mass: f64) -> Joint {
-        Joint {
-            kind: JointKind::Revolute,
-            theta: Value::zero(),
-            d: Value::zero(),
-            a: Value::zero(),
-            alpha: Value::zero(),
+        let link = Link {
             mass: Value::from_f64(mass),
-            com: Default::default(),
             inertia: [1.0, 1.0, 3.0, 0.0, 0.0, 0.0].map(Value::from_f64),
-            actuator_inertia: Value::zero(),
-            spring: None,
-            friction: None,
-            frame: None,
-            link_pose: Pose::identity(),
-        }
+            ..Link::default()
+        };
+        Joint::dh(JointKind::Revolute, Default::default(), link)
     }
 
     fn chain(masses: &[f64]) -> Robot {

@@ -1,5 +1,6 @@
-//! The error collector: every error of the derive input, each on the span of the token that
-//! caused it, reported together; and the message for an unknown key, with a suggestion for a
+//! The errors of the front end: the collector of every error of the derive input, each on the
+//! span of the token that caused it, reported together; an error in a description or URDF
+//! file, at its line and column; and the message for an unknown key, with a suggestion for a
 //! near miss (at most two single-character edits, the Levenshtein distance).
 
 use proc_macro2::Span;
@@ -43,6 +44,26 @@ impl Errors {
             a.combine(b);
             a
         })
+    }
+}
+
+/// An error in a description or URDF file, with the 1-based line and column where known.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FileError {
+    /// What is wrong.
+    pub message: String,
+    /// Line, 1-based.
+    pub line: Option<usize>,
+    /// Column, 1-based.
+    pub column: Option<usize>,
+}
+
+impl std::fmt::Display for FileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match (self.line, self.column) {
+            (Some(l), Some(c)) => write!(f, "{l}:{c}: {}", self.message),
+            _ => write!(f, "{}", self.message),
+        }
     }
 }
 

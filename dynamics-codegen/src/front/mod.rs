@@ -1,5 +1,6 @@
-//! The derive's front end: `#[dynamics(...)]` attributes (or the description file they name)
-//! parsed into a [`Robot`], with every error kept on the span of the token that caused it.
+//! The derive's front end: `#[dynamics(...)]` attributes, or the description file or URDF file
+//! they name, lowered to a syn-free [`Robot`], with every error on the span of the token that
+//! caused it (or at the line and column of the file, in the message on the string naming it).
 //!
 //! ```text
 //! #[dynamics(
@@ -18,39 +19,49 @@
 //! Rot(x,α)`; the joint variable `q` (or `qN` in row N) in the θ cell makes the joint revolute,
 //! in the d cell prismatic, with an optional constant offset (`q + 90 deg`).
 //!
-//! The steps, one module each: `attr` reads the attributes (by the keys of `symbol`, each
-//! value by `attr_value`) into tokens with their spans; `from_attrs` builds the syn-free
-//! [`Robot`] from them, or `from_file` from the description file they name (read by `file`,
-//! also for the command-line tool: [`load`]); values follow the grammar of `value`
-//! ([`parse_value`]), and angles written as plain numbers above 2π are refused by `angle`. Every error goes to one [`Errors`] and all are reported together.
+//! The pipeline, as [`parse`] runs it:
+//!
+//! 1. **Read**: `attrs` reads every `#[dynamics(...)]` into tokens with their spans.
+//! 2. **Lower, by input kind**, one folder each: `attrs` (the D-H table or joint list of the
+//!    attribute), `file` (a JSON or TOML description file, [`load`]) or `urdf` (a chain of a
+//!    URDF file, [`load_urdf`]), the last two reached from the derive through `named_file`.
+//!    Each gives a [`Robot`] and a table of where each of its values came from
+//!    ([`Sources`]: tokens of the attribute, or lines and columns of the file), and reports
+//!    what it alone can see: syntax, unknown keys, values (their grammar in `value`, their
+//!    angles in `angle`, the struct fields they name in `fields`), joints given by frames
+//!    that have no D-H table, and the values the model does not keep (a rotor and gear
+//!    ratio before they become an actuator inertia, each URDF link before fixed links merge).
+//! 3. **Check**: one pass of [`check::robot`] for every input, each problem placed through the
+//!    table on the value it concerns (as thiserror's `valid.rs` runs after its `ast.rs`).
+//!
+//! Every error goes to one [`Errors`] and all are reported together. The command-line tool
+//! runs steps 2 and 3 on its files, with the same table ([`Loaded::describe`]).
 
 mod angle;
-mod attr;
-mod attr_joints;
-mod attr_value;
+mod attrs;
 mod errors;
 mod fields;
 mod file;
-mod friction_attr;
-mod from_attrs;
-mod from_file;
-mod from_joints;
-mod from_urdf;
-mod symbol;
+mod named_file;
+mod sources;
 mod urdf;
 mod value;
 
-pub use errors::Errors;
+pub use attrs::attribute_words;
+pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
-pub use file::{from_json, from_text, from_toml, load, FileError, Loaded, Positions};
-pub use symbol::attribute_words;
+pub use file::{from_json, from_text, from_toml, load};
+pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
 pub use urdf::{load_urdf, Chain};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
+use crate::check::{self, Problem};
 use crate::method::FamilySet;
 use crate::model::Robot;
-use attr::{parse_attrs, Attrs};
+use attrs::{parse_attrs, Attrs, Source};
+use named_file::Named;
 use syn::parse::ParseStream;
+use syn::LitStr;
 
 /// What the derive input says.
 pub struct Input {
@@ -110,7 +121,11 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
         );
     }
     let mut tracked_file = None;
-    let robot = robot(input, &read, &fields, &mut errors, &mut tracked_file);
+    let lowered = lower(input, &read, &fields, &mut errors, &mut tracked_file);
+    let robot = lowered.map(|lowered| {
+        check(&lowered, &mut errors);
+        lowered.robot
+    });
     finish(input, read.attrs, errors, robot, tracked_file)
 }
 
@@ -132,21 +147,85 @@ fn read_attrs(input: &syn::DeriveInput, errors: &mut Errors) -> ReadAttrs {
     read
 }
 
-/// The robot the description file or the attributes describe, where they could be read.
-fn robot(
+/// How a problem of the checks is told where the input gives the value: on which tokens, in
+/// which words (the attribute says `link 2`, a file `path:line:col: joint 2`).
+type Tell<'a> = Box<dyn Fn(&Problem) -> (Tokens, String) + 'a>;
+
+/// A robot lowered from the derive input, and how the checks' problems are told there.
+struct Derived<'a> {
+    robot: Robot,
+    check_inertia: Vec<bool>,
+    tell: Tell<'a>,
+}
+
+impl<'a> Derived<'a> {
+    /// The robot of the file that the string `at` names.
+    fn named(at: &'a LitStr, named: Named) -> Derived<'a> {
+        let Named { loaded, path } = named;
+        let Lowered {
+            robot,
+            check_inertia,
+            sources,
+        } = loaded;
+        Derived {
+            robot,
+            check_inertia,
+            tell: Box::new(move |problem| named_file::tell(at, &path, &sources, problem)),
+        }
+    }
+}
+
+/// The one check pass, the same for every input: each problem of [`check::robot`] told on the
+/// value it concerns.
+fn check(lowered: &Derived, errors: &mut Errors) {
+    for problem in check::robot(&lowered.robot, &lowered.check_inertia) {
+        let ((start, end), message) = (lowered.tell)(&problem);
+        errors.push_range(start, end, message);
+    }
+}
+
+/// The robot the URDF file, the description file or the attributes describe, lowered by its
+/// kind, where they could be read.
+fn lower<'a>(
     input: &syn::DeriveInput,
-    read: &ReadAttrs,
+    read: &'a ReadAttrs,
     fields: &[Field],
     errors: &mut Errors,
     tracked_file: &mut Option<String>,
-) -> Option<Robot> {
+) -> Option<Derived<'a>> {
     let attrs = &read.attrs;
     if let Some(urdf) = &attrs.urdf {
-        return from_urdf::robot_from_urdf(urdf, attrs, fields, errors, tracked_file);
+        let source = Source {
+            key: "urdf",
+            at: urdf,
+            called: "the URDF file",
+        };
+        let keys = ["file", "dh", "joints", "link", "convention", "tool"];
+        attrs.refuse_beside(&source, &keys, tool_hint, errors);
+        let (base, tip) = (
+            attrs.base.as_ref().map(LitStr::value),
+            attrs.tip.as_ref().map(LitStr::value),
+        );
+        let chain = Chain {
+            base: base.as_deref(),
+            tip: tip.as_deref(),
+        };
+        let checked = attrs.check_inertia.unwrap_or(true);
+        let gravity = attrs.gravity.as_ref();
+        let named = named_file::robot_from_urdf(
+            urdf,
+            chain,
+            checked,
+            gravity,
+            fields,
+            errors,
+            tracked_file,
+        );
+        return named.map(|named| Derived::named(urdf, named));
     }
-    from_urdf::chain_without_urdf(attrs, errors);
+    attrs.refuse_chain_without_urdf(errors);
     if let Some(file) = &attrs.file {
-        let source = attr::Source {
+        let source = Source {
             key: "file",
             at: file,
             called: "the file",
@@ -154,11 +233,31 @@ fn robot(
         let keys = ["gravity", "dh", "joints", "link", "convention", "tool"];
         attrs.refuse_beside(&source, &keys, |_| "", errors);
         let checked = attrs.check_inertia.unwrap_or(true);
-        from_file::robot_from_file(file, checked, fields, errors, tracked_file)
+        let named = named_file::robot_from_file(file, checked, fields, errors, tracked_file);
+        named.map(|named| Derived::named(file, named))
     } else if read.parse_failed || !read.seen {
         None
     } else {
-        Some(from_attrs::robot_from_attrs(attrs, input, fields, errors))
+        let (lowered, counted) = attrs::lower(attrs, input, fields, errors);
+        let Lowered {
+            robot,
+            check_inertia,
+            sources,
+        } = lowered;
+        Some(Derived {
+            robot,
+            check_inertia,
+            tell: Box::new(move |problem| attrs::tell(&sources, counted, problem)),
+        })
+    }
+}
+
+/// Why `tool` is refused beside a URDF.
+fn tool_hint(key: &str) -> &'static str {
+    if key == "tool" {
+        " (its `tip` link is the hand frame: choose the tip)"
+    } else {
+        ""
     }
 }
 
@@ -187,8 +286,7 @@ fn finish(
             error,
             dof: robot
                 .map(|r| r.dof())
-                .or_else(|| attrs.dh.as_ref().map(|(rows, _)| rows.len()))
-                .or_else(|| attrs.joints.as_ref().map(|(joints, _)| joints.len()))
+                .or_else(|| attrs.joint_count())
                 .filter(|n| *n > 0),
             families,
             krate: attrs.krate,

@@ -90,7 +90,7 @@ fn inertia(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Entry> {
             let mut labels = vec![Label::new(Quantity::Inertia, &[i, j])];
             if j != i {
                 labels.push(Label::new(Quantity::Inertia, &[j, i]));
-            } else if !joint.actuator_inertia.is_zero() {
+            } else if !joint.link.actuator_inertia.is_zero() {
                 labels[0] = labels[0].clone().with_actuator_inertia();
             }
             entries.push(Entry {

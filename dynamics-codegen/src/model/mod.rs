@@ -74,19 +74,10 @@ impl Friction {
     }
 }
 
-/// Joint i and link i.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Joint {
-    /// Revolute (q = θ − offset) or prismatic (q = d − offset).
-    pub kind: JointKind,
-    /// θ: the offset added to q for a revolute joint, the constant angle for a prismatic one.
-    pub theta: Value,
-    /// d: the offset added to q for a prismatic joint, the constant length for a revolute one.
-    pub d: Value,
-    /// a.
-    pub a: Value,
-    /// α.
-    pub alpha: Value,
+/// Link i: its rigid body and what its joint's drive adds. Kept apart from the joint's
+/// geometry so that every front end fills it the same way, whatever gives the joint.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Link {
     /// Mass of link i.
     pub mass: Value,
     /// Centre of mass in link frame i.
@@ -100,12 +91,67 @@ pub struct Joint {
     pub spring: Option<Spring>,
     /// Optional joint friction.
     pub friction: Option<Friction>,
+}
+
+impl Link {
+    /// Its values: mass, actuator inertia, centre of mass, inertia, spring, friction.
+    pub fn values(&self) -> impl Iterator<Item = &Value> {
+        [&self.mass, &self.actuator_inertia]
+            .into_iter()
+            .chain(self.com.iter())
+            .chain(self.inertia.iter())
+            .chain(self.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
+            .chain(self.friction.iter().flat_map(Friction::values))
+    }
+}
+
+/// Joint i and link i.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    /// Revolute (q = θ − offset) or prismatic (q = d − offset).
+    pub kind: JointKind,
+    /// θ: the offset added to q for a revolute joint, the constant angle for a prismatic one.
+    pub theta: Value,
+    /// d: the offset added to q for a prismatic joint, the constant length for a revolute one.
+    pub d: Value,
+    /// a.
+    pub a: Value,
+    /// α.
+    pub alpha: Value,
+    /// Link i, which the joint moves; its inertial parameters are in D-H frame i.
+    pub link: Link,
     /// The joint as the user gave it, if not as a D-H row; the D-H columns above then hold the
     /// robot's own table derived from it.
     pub frame: Option<AxisFrame>,
     /// The user's link frame i in D-H frame i (the identity for a robot given by its D-H
     /// table); the inertial parameters above are in D-H frame i.
     pub link_pose: Pose,
+}
+
+impl Joint {
+    /// A joint given by its D-H row `[θ, d, a, α]`.
+    #[must_use]
+    pub fn dh(kind: JointKind, [theta, d, a, alpha]: [Value; 4], link: Link) -> Joint {
+        Joint {
+            kind,
+            theta,
+            d,
+            a,
+            alpha,
+            link,
+            frame: None,
+            link_pose: Pose::identity(),
+        }
+    }
+
+    /// A joint given by its frame: its D-H row is derived by [`lower_frames`].
+    #[must_use]
+    pub fn framed(kind: JointKind, frame: AxisFrame, link: Link) -> Joint {
+        Joint {
+            frame: Some(frame),
+            ..Joint::dh(kind, Default::default(), link)
+        }
+    }
 }
 
 /// A serial robot.
@@ -137,12 +183,9 @@ impl Robot {
         self.gravity
             .iter()
             .chain(self.joints.iter().flat_map(|j| {
-                [&j.theta, &j.d, &j.a, &j.alpha, &j.mass, &j.actuator_inertia]
+                [&j.theta, &j.d, &j.a, &j.alpha]
                     .into_iter()
-                    .chain(j.com.iter())
-                    .chain(j.inertia.iter())
-                    .chain(j.spring.iter().flat_map(|s| [&s.stiffness, &s.rest]))
-                    .chain(j.friction.iter().flat_map(Friction::values))
+                    .chain(j.link.values())
             }))
             .chain(
                 self.tool

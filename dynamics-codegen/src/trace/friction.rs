@@ -20,7 +20,7 @@ pub(super) fn friction_torques(
         .iter()
         .zip(&joints.qd)
         .map(|(joint, &qd)| {
-            let Some(f) = &joint.friction else {
+            let Some(f) = &joint.link.friction else {
                 return joints.zero.id();
             };
             let coulomb = t.value(&f.coulomb);

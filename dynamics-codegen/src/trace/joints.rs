@@ -31,13 +31,14 @@ impl<'g> JointTerms<'g> {
             actuator: robot
                 .joints
                 .iter()
-                .map(|j| t.value(&j.actuator_inertia))
+                .map(|j| t.value(&j.link.actuator_inertia))
                 .collect(),
             springs: robot
                 .joints
                 .iter()
                 .map(|j| {
-                    j.spring
+                    j.link
+                        .spring
                         .as_ref()
                         .map(|s| (t.value(&s.stiffness), t.value(&s.rest)))
                 })

@@ -1,7 +1,9 @@
 //! Description files in JSON, the format of the reference data.
 
-use super::positions::{line_column, positions_at, Positions};
-use super::{schema, FileError, Loaded};
+use super::positions::{line_column, positions_at};
+use super::{convert, schema};
+use crate::front::errors::FileError;
+use crate::front::sources::{Loaded, Positions};
 
 /// Reads a robot from JSON text.
 pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> {
@@ -18,9 +20,9 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
             column: Some(column),
         }
     })?;
-    let (mut loaded, deferred) = schema::convert(file, default_name)?;
-    (loaded.positions, loaded.gravity) = positions(text);
-    super::first_error(loaded, &deferred)
+    let (mut loaded, deferred) = convert::convert(file, default_name)?;
+    loaded.sources = positions(text);
+    convert::first_error(loaded, &deferred)
 }
 
 /// serde_json's line and column as 1-based characters, as TOML's are: its column counts bytes,
@@ -40,7 +42,7 @@ fn newline_at_end(text: &str, line: usize, column: usize) -> (usize, usize) {
 
 /// Where each joint's values are in JSON text: a scan of the text that the parser has already
 /// accepted (serde_json keeps no positions of values).
-fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
+fn positions(text: &str) -> Positions {
     let mut scan = JsonScan {
         bytes: text.as_bytes(),
         at: 0,
@@ -79,7 +81,10 @@ fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
         (Some(l), Some(c)) => Some((l, c)),
         _ => None,
     });
-    (positions_at(text, joints), gravity)
+    Positions {
+        joints: positions_at(text, joints),
+        gravity,
+    }
 }
 
 /// A cursor over valid JSON.

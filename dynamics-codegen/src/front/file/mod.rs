@@ -3,116 +3,16 @@
 //! `"m2 * l2^2 / 12"`), read by the attribute's value grammar, which TOML makes pleasant to
 //! write by hand. Errors carry the file's line and column.
 
+mod convert;
 mod frames;
 mod json;
 mod positions;
 mod schema;
 mod toml;
 
-use crate::check::{LinkParameter, Problem, MAX_JOINTS};
+use crate::front::errors::FileError;
+use crate::front::sources::Loaded;
 use crate::model::Robot;
-pub use positions::Positions;
-
-/// A robot read from a description file, with what the file says about checking it.
-pub struct Loaded {
-    /// The robot.
-    pub robot: Robot,
-    /// Per joint, whether its inertia tensor is checked (`"check_inertia": false` opts out).
-    pub check_inertia: Vec<bool>,
-    /// Per joint, where the value of each key is written (1-based line and column), so that
-    /// checks after loading can point into the file.
-    pub positions: Positions,
-    /// Where `gravity`'s value is written, for a field it names that the struct lacks.
-    pub gravity: Option<(usize, usize)>,
-}
-
-impl Loaded {
-    /// `path:line:col: ` where the file gives joint `joint`'s `key`, or `path: ` when it does
-    /// not say: the prefix of a message about that value.
-    #[must_use]
-    pub fn at(&self, path: &str, joint: usize, key: &str) -> String {
-        self.positions
-            .get(joint)
-            .and_then(|p| p.get(key))
-            .map_or_else(
-                || format!("{path}: "),
-                |(line, column)| format!("{path}:{line}:{column}: "),
-            )
-    }
-
-    /// A check's problem as a message that points at the value it concerns in the file
-    /// `path` (`path:line:col: joint 2: the mass is negative (-1): ...`).
-    #[must_use]
-    pub fn describe(&self, path: &str, problem: &Problem) -> String {
-        let (joint, key) = match problem {
-            // The first joint past the limit, by the key that opens its entry.
-            Problem::TooManyJoints { .. } => (MAX_JOINTS, "type"),
-            Problem::Link { joint, problem } => (
-                *joint,
-                match problem.parameter {
-                    LinkParameter::Mass => "mass",
-                    LinkParameter::Inertia => "inertia",
-                    LinkParameter::ActuatorInertia => "actuator_inertia",
-                    LinkParameter::SpringStiffness => "spring_stiffness",
-                    LinkParameter::SpringRest => "spring_rest",
-                    LinkParameter::FrictionViscous => "friction_viscous",
-                    LinkParameter::FrictionCoulomb => "friction_coulomb",
-                    LinkParameter::FrictionOffset => "friction_offset",
-                    LinkParameter::FrictionSmoothing => "friction_smoothing",
-                    LinkParameter::RotorInertia => "rotor_inertia",
-                    LinkParameter::GearRatio => "gear_ratio",
-                },
-            ),
-        };
-        format!("{}{problem}", self.at(path, joint, key))
-    }
-}
-
-/// An error in a description file, with the 1-based line and column where known.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FileError {
-    /// What is wrong.
-    pub message: String,
-    /// Line, 1-based.
-    pub line: Option<usize>,
-    /// Column, 1-based.
-    pub column: Option<usize>,
-}
-
-impl std::fmt::Display for FileError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match (self.line, self.column) {
-            (Some(l), Some(c)) => write!(f, "{l}:{c}: {}", self.message),
-            _ => write!(f, "{}", self.message),
-        }
-    }
-}
-
-/// The loaded robot, or the first of the errors found after parsing, at its position (that of
-/// the joint's `type` where the file does not write the key).
-fn first_error(loaded: Loaded, deferred: &[schema::Deferred]) -> Result<Loaded, FileError> {
-    let Some((joint, key, message)) = deferred.first() else {
-        return Ok(loaded);
-    };
-    let (line, column) = loaded
-        .positions
-        .get(*joint)
-        .and_then(|p| p.get(*key).or_else(|| p.get("type")))
-        .map_or((None, None), |(l, c)| (Some(*l), Some(*c)));
-    Err(FileError {
-        message: format!("joint {}: {message}", joint + 1),
-        line,
-        column,
-    })
-}
-
-fn plain(message: String) -> FileError {
-    FileError {
-        message,
-        line: None,
-        column: None,
-    }
-}
 
 /// Reads a robot from JSON text.
 ///
@@ -153,7 +53,7 @@ pub fn load(path: &str, text: &str) -> Result<Loaded, FileError> {
     } else if path.ends_with(".json") {
         json::read(text, stem)
     } else {
-        Err(plain(
+        Err(convert::plain(
             "cannot tell the format from the file's extension: name it *.json or *.toml"
                 .to_string(),
         ))
@@ -190,8 +90,8 @@ mod tests {
             a.joints[0].alpha.pi_multiple(),
             b.joints[0].alpha.pi_multiple()
         );
-        assert_eq!(a.joints[0].mass, b.joints[0].mass);
-        assert_eq!(a.joints[0].com, b.joints[0].com);
+        assert_eq!(a.joints[0].link.mass, b.joints[0].link.mass);
+        assert_eq!(a.joints[0].link.com, b.joints[0].link.com);
     }
 
     /// As in frames and URDFs, 1.5708 and −3.14159 are quarter turns; 1.5709 is not.
@@ -229,14 +129,15 @@ mod tests {
     fn values_have_positions_for_later_checks() {
         let json = "{\"gravity\": [0, 0, -9.81], \"name\": \"a{[\\\"\",\n \"joints\": [\n  {\"type\": \"revolute\", \"mass\": 1},\n  {\"type\": \"revolute\",\n   \"mass\": 2, \"inertia\": [1, 2, 3, 0, 0, 0]}]}";
         let loaded = load("a.json", json).expect("json");
-        assert_eq!(loaded.positions.len(), 2);
-        assert_eq!(loaded.positions[0]["mass"], (3, 32));
-        assert_eq!(loaded.positions[1]["mass"], (5, 12));
-        assert_eq!(loaded.positions[1]["inertia"], (5, 26));
+        let positions = &loaded.sources.joints;
+        assert_eq!(positions.len(), 2);
+        assert_eq!(positions[0]["mass"], (3, 32));
+        assert_eq!(positions[1]["mass"], (5, 12));
+        assert_eq!(positions[1]["inertia"], (5, 26));
         let toml = "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\n[[joints]]\ntype = \"prismatic\"\nmass = 2\ninertia = [1, 2, 3, 0, 0, 0]\n";
         let loaded = load("a.toml", toml).expect("toml");
-        assert_eq!(loaded.positions[0]["mass"], (4, 8));
-        assert_eq!(loaded.positions[1]["inertia"], (9, 11));
+        assert_eq!(loaded.sources.joints[0]["mass"], (4, 8));
+        assert_eq!(loaded.sources.joints[1]["inertia"], (9, 11));
     }
 
     #[test]

@@ -1,10 +1,8 @@
 //! Where a description file writes each joint's values: 1-based lines and columns, so that
 //! checks made after loading can point into the file.
 
+use crate::front::sources::At;
 use std::collections::BTreeMap;
-
-/// Per joint, the line and column of each key's value.
-pub type Positions = Vec<BTreeMap<String, (usize, usize)>>;
 
 /// The 1-based line and column (in characters) of a byte offset.
 pub(super) fn line_column(text: &str, offset: usize) -> (Option<usize>, Option<usize>) {
@@ -22,7 +20,7 @@ pub(super) fn line_column(text: &str, offset: usize) -> (Option<usize>, Option<u
 pub(super) fn positions_at(
     text: &str,
     joints: impl IntoIterator<Item = Vec<(String, usize)>>,
-) -> Positions {
+) -> Vec<BTreeMap<String, At>> {
     joints
         .into_iter()
         .map(|keys| {

@@ -1,13 +1,10 @@
-//! The schema of a description file, as serde reads it, and its conversion to a
-//! [`Robot`]. Absent D-H entries, offsets and spring values are zero.
+//! The schema of a description file, as serde reads it: every value read and checked as it is
+//! parsed (a number, or a string in the value grammar), so that its errors carry a line and
+//! column. `convert` turns it into a robot.
 
-use super::{frames, FileError, Loaded};
-use crate::check::{self, LinkParameter};
 use crate::front::angle::{self, unitless_angle};
 use crate::front::value::parse_spanned;
-use crate::model::{
-    snap_angle, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Spring, Value,
-};
+use crate::model::Value;
 use crate::symbolic::Number;
 use serde::Deserialize;
 
@@ -87,14 +84,14 @@ impl serde::de::Visitor<'_> for ValueVisitor {
 
 #[derive(Deserialize)]
 #[serde(rename_all = "lowercase")]
-enum FileConvention {
+pub(super) enum FileConvention {
     Standard,
     Modified,
 }
 
 #[derive(Deserialize)]
 #[serde(rename_all = "lowercase")]
-enum FileKind {
+pub(super) enum FileKind {
     Revolute,
     Prismatic,
 }
@@ -103,24 +100,24 @@ enum FileKind {
 #[serde(deny_unknown_fields)]
 pub(super) struct FileRobot {
     #[serde(default)]
-    name: Option<String>,
+    pub(super) name: Option<String>,
     #[serde(default)]
     #[allow(dead_code)]
-    description: Option<String>,
+    pub(super) description: Option<String>,
     #[serde(default)]
-    convention: Option<FileConvention>,
-    gravity: [FileValue; 3],
-    joints: Vec<FileJoint>,
+    pub(super) convention: Option<FileConvention>,
+    pub(super) gravity: [FileValue; 3],
+    pub(super) joints: Vec<FileJoint>,
     /// The tool frame in link frame n, `[x, y, z, roll, pitch, yaw]`.
     #[serde(default)]
-    tool: Option<[FileValue; 6]>,
+    pub(super) tool: Option<[FileValue; 6]>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct FileJoint {
     #[serde(rename = "type")]
-    kind: FileKind,
+    pub(super) kind: FileKind,
     #[serde(default)]
     pub(super) theta: Option<FileValue>,
     #[serde(default)]
@@ -135,81 +132,35 @@ pub(super) struct FileJoint {
     /// The unit axis in the joint frame (default `[0, 0, 1]`), with `origin`.
     #[serde(default)]
     pub(super) axis: Option<[FileValue; 3]>,
-    mass: FileValue,
+    pub(super) mass: FileValue,
     #[serde(default)]
-    com: Option<[FileValue; 3]>,
+    pub(super) com: Option<[FileValue; 3]>,
     #[serde(default)]
-    inertia: Option<[FileValue; 6]>,
+    pub(super) inertia: Option<[FileValue; 6]>,
     #[serde(default)]
-    actuator_inertia: Option<FileValue>,
+    pub(super) actuator_inertia: Option<FileValue>,
     #[serde(default)]
-    spring_stiffness: Option<FileValue>,
+    pub(super) spring_stiffness: Option<FileValue>,
     #[serde(default)]
-    spring_rest: Option<FileValue>,
+    pub(super) spring_rest: Option<FileValue>,
     /// `false` keeps an inertia tensor that fails the physical checks.
     #[serde(default)]
-    check_inertia: Option<bool>,
+    pub(super) check_inertia: Option<bool>,
     /// Friction `f_v q̇ + f_c sign(q̇) + f_0` (`tanh(q̇ / ε)` with a smoothing velocity ε): the
     /// keys of the attribute's `friction = (viscous = .., ...)`, prefixed as `spring_*` are.
     #[serde(default)]
-    friction_viscous: Option<FileValue>,
+    pub(super) friction_viscous: Option<FileValue>,
     #[serde(default)]
-    friction_coulomb: Option<FileValue>,
+    pub(super) friction_coulomb: Option<FileValue>,
     #[serde(default)]
-    friction_offset: Option<FileValue>,
+    pub(super) friction_offset: Option<FileValue>,
     #[serde(default)]
-    friction_smoothing: Option<FileValue>,
+    pub(super) friction_smoothing: Option<FileValue>,
     /// A geared drive: the actuator inertia is `gear_ratio² · rotor_inertia`.
     #[serde(default)]
-    rotor_inertia: Option<FileValue>,
+    pub(super) rotor_inertia: Option<FileValue>,
     #[serde(default)]
-    gear_ratio: Option<FileValue>,
-}
-
-impl FileJoint {
-    /// Its friction, if it gives any friction key.
-    fn friction(&self) -> Option<Friction> {
-        let keys = [
-            &self.friction_viscous,
-            &self.friction_coulomb,
-            &self.friction_offset,
-        ];
-        let given = keys.iter().any(|k| k.is_some()) || self.friction_smoothing.is_some();
-        given.then(|| Friction {
-            viscous: value(self.friction_viscous.as_ref()),
-            coulomb: value(self.friction_coulomb.as_ref()),
-            offset: value(self.friction_offset.as_ref()),
-            smoothing: self.friction_smoothing.as_ref().map(|v| v.0.clone()),
-        })
-    }
-
-    /// Its actuator inertia: `actuator_inertia`, or `gear_ratio² · rotor_inertia` (ratio 1
-    /// without `gear_ratio`), whose problems go to `deferred` as joint `joint`'s.
-    fn actuator_inertia(&self, joint: usize, deferred: &mut Vec<Deferred>) -> Value {
-        if self.rotor_inertia.is_none() && self.gear_ratio.is_none() {
-            return value(self.actuator_inertia.as_ref());
-        }
-        if self.actuator_inertia.is_some() {
-            deferred.push((joint, "actuator_inertia", "give either `actuator_inertia` or `rotor_inertia` and `gear_ratio` (its N² I_rotor), not both".into()));
-        }
-        let Some(rotor) = &self.rotor_inertia else {
-            deferred.push((joint, "gear_ratio", "`gear_ratio` without `rotor_inertia`: the actuator inertia is gear_ratio² × rotor_inertia".into()));
-            return Value::zero();
-        };
-        let ratio = self
-            .gear_ratio
-            .as_ref()
-            .map_or(Value::Num(Number::ONE), |g| g.0.clone());
-        for p in check::gear(&rotor.0, &ratio) {
-            let key = if p.parameter == LinkParameter::GearRatio {
-                "gear_ratio"
-            } else {
-                "rotor_inertia"
-            };
-            deferred.push((joint, key, p.message));
-        }
-        check::geared_inertia(&rotor.0, &ratio)
-    }
+    pub(super) gear_ratio: Option<FileValue>,
 }
 
 /// `origin = { xyz = [..], rpy = [..] }`: translation, and roll, pitch, yaw in radians.
@@ -220,99 +171,4 @@ pub(super) struct FileOrigin {
     pub(super) xyz: Option<[FileValue; 3]>,
     #[serde(default)]
     pub(super) rpy: Option<[FileValue; 3]>,
-}
-
-fn value(v: Option<&FileValue>) -> Value {
-    v.map_or_else(Value::zero, |v| v.0.clone())
-}
-
-/// The angles (θ, α and the origin's rpy) of joint `joint` written as plain numbers above 2π.
-fn angle_problems(joint: usize, j: &FileJoint) -> impl Iterator<Item = Deferred> + '_ {
-    let rpy = j.origin.iter().flat_map(|o| o.rpy.iter().flatten());
-    [("theta", &j.theta), ("alpha", &j.alpha)]
-        .into_iter()
-        .filter_map(move |(key, v)| Some((joint, key, v.as_ref()?.1.clone()?)))
-        .chain(rpy.filter_map(move |v| Some((joint, "origin", v.1.clone()?))))
-}
-
-/// The robot the file describes, with its per-joint check flags (positions are filled in by
-/// the format's reader), and the errors that need them.
-pub(super) fn convert(
-    file: FileRobot,
-    default_name: &str,
-) -> Result<(Loaded, Vec<Deferred>), FileError> {
-    let convention = match file.convention {
-        None | Some(FileConvention::Standard) => Convention::Standard,
-        Some(FileConvention::Modified) => Convention::Modified,
-    };
-    if file.joints.is_empty() {
-        return Err(super::plain(
-            "`joints` is empty: give one entry per joint, base to tip".to_string(),
-        ));
-    }
-    let gravity = file.gravity.map(|g| g.0);
-    let frames_given = file.joints.iter().any(FileJoint::has_frame);
-    if frames_given && file.convention.is_some() {
-        return Err(super::plain(
-            "`convention` applies to D-H rows: joints given by `origin` and `axis` are lowered \
-             to their own modified D-H table; remove `convention`"
-                .to_string(),
-        ));
-    }
-    let tool = file.tool.map(|t| {
-        let [x, y, z, roll, pitch, yaw] = t.map(|v| v.0);
-        Placement::written([x, y, z], [roll, pitch, yaw])
-    });
-    let mut joints = Vec::with_capacity(file.joints.len());
-    let mut check_inertia = Vec::with_capacity(file.joints.len());
-    let mut deferred = Vec::new();
-    for (i, j) in file.joints.into_iter().enumerate() {
-        deferred.extend(angle_problems(i, &j));
-        let kind = match j.kind {
-            FileKind::Revolute => JointKind::Revolute,
-            FileKind::Prismatic => JointKind::Prismatic,
-        };
-        let stiffness = value(j.spring_stiffness.as_ref());
-        let spring = (!stiffness.is_zero()).then(|| Spring {
-            stiffness,
-            rest: value(j.spring_rest.as_ref()),
-        });
-        check_inertia.push(j.check_inertia.unwrap_or(true));
-        let actuator_inertia = j.actuator_inertia(i, &mut deferred);
-        let friction = j.friction();
-        let frame = frames::frame(i, &j, frames_given, &mut deferred);
-        joints.push(Joint {
-            kind,
-            // Angles near quarter turns (1.5708) are those quarter turns, as in frames and URDFs.
-            theta: snap_angle(&value(j.theta.as_ref())),
-            d: value(j.d.as_ref()),
-            a: value(j.a.as_ref()),
-            alpha: snap_angle(&value(j.alpha.as_ref())),
-            mass: j.mass.0,
-            com: j.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
-            inertia: j.inertia.map_or_else(Default::default, |c| c.map(|v| v.0)),
-            actuator_inertia,
-            spring,
-            friction,
-            frame,
-            link_pose: Pose::identity(),
-        });
-    }
-    let mut loaded = Loaded {
-        robot: Robot {
-            name: file.name.unwrap_or_else(|| default_name.to_string()),
-            convention,
-            gravity,
-            joints,
-            base: Pose::identity(),
-            tool,
-        },
-        check_inertia,
-        positions: Vec::new(),
-        gravity: None,
-    };
-    if frames_given && deferred.is_empty() {
-        frames::lower(&mut loaded.robot, &mut deferred);
-    }
-    Ok((loaded, deferred))
 }

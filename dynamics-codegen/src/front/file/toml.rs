@@ -1,7 +1,9 @@
 //! Description files in TOML: the JSON format's content, pleasant to write by hand.
 
-use super::positions::{line_column, positions_at, Positions};
-use super::{schema, FileError, Loaded};
+use super::positions::{line_column, positions_at};
+use super::{convert, schema};
+use crate::front::errors::FileError;
+use crate::front::sources::{Loaded, Positions};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
@@ -30,13 +32,13 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
             column,
         }
     })?;
-    let (mut loaded, deferred) = schema::convert(file, default_name)?;
-    (loaded.positions, loaded.gravity) = positions(text);
-    super::first_error(loaded, &deferred)
+    let (mut loaded, deferred) = convert::convert(file, default_name)?;
+    loaded.sources = positions(text);
+    convert::first_error(loaded, &deferred)
 }
 
 /// Where each joint's values are in TOML text (read a second time, with spans).
-fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
+fn positions(text: &str) -> Positions {
     #[derive(Deserialize)]
     struct Joints {
         #[serde(default)]
@@ -44,7 +46,7 @@ fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
         gravity: Option<toml::Spanned<serde::de::IgnoredAny>>,
     }
     let Ok(file) = toml::from_str::<Joints>(text) else {
-        return (Vec::new(), None);
+        return Positions::default();
     };
     let gravity = file
         .gravity
@@ -58,5 +60,8 @@ fn positions(text: &str) -> (Positions, Option<(usize, usize)>) {
             .map(|(key, value)| (key, value.span().start))
             .collect()
     });
-    (positions_at(text, offsets), gravity)
+    Positions {
+        joints: positions_at(text, offsets),
+        gravity,
+    }
 }

@@ -18,13 +18,10 @@ mod xml;
 #[cfg(test)]
 mod tests;
 
-use super::file::Loaded;
-use super::FileError;
+use super::errors::FileError;
+use super::sources::{Loaded, Positions};
 use crate::check::{Problem, MAX_JOINTS};
 use crate::model::{FrameProblem, Robot};
-
-/// A 1-based line and column in the file.
-type At = (usize, usize);
 
 /// Which chain of the URDF to take: the links it starts and ends at, by name.
 #[derive(Clone, Copy, Debug, Default)]
@@ -88,8 +85,10 @@ pub fn load_urdf(
     Ok(Loaded {
         robot,
         check_inertia: vec![check_inertia; dof],
-        positions,
-        gravity: None,
+        sources: Positions {
+            joints: positions,
+            gravity: None,
+        },
     })
 }
 

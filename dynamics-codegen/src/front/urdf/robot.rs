@@ -7,15 +7,16 @@ use super::inertial::Body;
 use super::tree::{Chain, Tree};
 use super::xml::{error, Joint as UrdfJoint, Kind};
 use crate::check;
-use crate::front::{FileError, Positions};
+use crate::front::errors::FileError;
+use crate::front::sources::At;
 use crate::model::{
-    AxisFrame, Convention, Friction, Joint, JointKind, Placement, Pose, Robot, Value,
+    AxisFrame, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Value,
     AXIS_LENGTH_TOLERANCE,
 };
 use std::collections::BTreeMap;
 
 /// Where one joint's values are written, by key (`type`, `axis`, `mass`, `inertia`).
-type JointPositions = BTreeMap<String, (usize, usize)>;
+type JointPositions = BTreeMap<String, At>;
 
 /// A moving joint with the links it carries, each with its pose in the joint's child frame.
 struct Segment {
@@ -30,10 +31,10 @@ pub(super) fn build(
     chain: &Chain,
     name: String,
     check_inertia: bool,
-) -> Result<(Robot, Positions), Vec<FileError>> {
+) -> Result<(Robot, Vec<JointPositions>), Vec<FileError>> {
     let mut errors = Vec::new();
     let mut joints = Vec::new();
-    let mut positions = Positions::new();
+    let mut positions = Vec::new();
     let (segments, tip) = segments(tree, chain);
     for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
@@ -204,28 +205,23 @@ fn joint(tree: &Tree, segment: Segment) -> Result<(Joint, JointPositions), Vec<F
     .into_iter()
     .map(|(k, v)| (k.to_string(), v))
     .collect();
-    let joint = Joint {
-        kind: if urdf.kind == Kind::Prismatic {
-            JointKind::Prismatic
-        } else {
-            JointKind::Revolute
-        },
-        theta: Value::zero(),
-        d: Value::zero(),
-        a: Value::zero(),
-        alpha: Value::zero(),
+    let kind = if urdf.kind == Kind::Prismatic {
+        JointKind::Prismatic
+    } else {
+        JointKind::Revolute
+    };
+    let link = Link {
         mass: body.mass,
         com: body.com,
         inertia: body.inertia,
-        actuator_inertia: Value::zero(),
-        spring: None,
         friction,
-        frame: Some(AxisFrame {
-            origin: segment.placement,
-            axis,
-        }),
-        link_pose: Pose::identity(),
+        ..Link::default()
     };
+    let frame = AxisFrame {
+        origin: segment.placement,
+        axis,
+    };
+    let joint = Joint::framed(kind, frame, link);
     Ok((joint, at))
 }
 

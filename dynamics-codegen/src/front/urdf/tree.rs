@@ -7,8 +7,8 @@
 //! a part fixed to the tip link is merged into it and what moves below it is cut off.
 
 use super::xml::{error, Description, Kind};
-use super::At;
-use crate::front::FileError;
+use crate::front::errors::FileError;
+use crate::front::sources::At;
 use std::collections::BTreeMap;
 
 /// The links and joints of a URDF as a tree.

@@ -3,8 +3,8 @@
 //! file. Only what the dynamics need is read: `<inertial>` of links, and of joints their type,
 //! parent, child, `<origin>`, `<axis>`, `<dynamics>` and `<mimic>`.
 
-use super::At;
-use crate::front::FileError;
+use crate::front::errors::FileError;
+use crate::front::sources::At;
 use crate::model::{Placement, Value};
 use crate::symbolic::Number;
 use roxmltree::Node;

@@ -120,8 +120,8 @@ pub fn lower_frames(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
         joint.theta = angle(&before.x, &frame.x, &frame.z);
         joint.d = dot(&step, &frame.z);
         let link_pose = frame_pose_inverse(&frames[i + 1]).then(&axes[i].link);
-        joint.com = clean3(link_pose.apply(&joint.com));
-        joint.inertia = rotate_inertia(&link_pose.rotation, &joint.inertia).map(clean);
+        joint.link.com = clean3(link_pose.apply(&joint.link.com));
+        joint.link.inertia = rotate_inertia(&link_pose.rotation, &joint.link.inertia).map(clean);
         joint.link_pose = clean_pose(link_pose);
     }
     let to_frame_0 = base.inverse();

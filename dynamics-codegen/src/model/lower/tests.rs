@@ -5,7 +5,7 @@
 //! coordinates agree.
 
 use super::lower_frames;
-use crate::model::{AxisFrame, Convention, Joint, JointKind, Placement, Pose, Robot, Value};
+use crate::model::{AxisFrame, Convention, Joint, JointKind, Link, Placement, Pose, Robot, Value};
 use crate::symbolic::Number;
 use dynamics_test_support::Rng;
 
@@ -128,20 +128,20 @@ fn random_joint(rng: &mut Rng) -> Joint {
         d: Value::zero(),
         a: Value::zero(),
         alpha: Value::zero(),
-        mass: Value::from_f64(rng.range(0.5, 3.0)),
-        com: std::array::from_fn(|_| random_length(rng)),
-        inertia: [
-            diagonal[0],
-            diagonal[1],
-            diagonal[2],
-            off[0],
-            off[1],
-            off[2],
-        ]
-        .map(Value::from_f64),
-        actuator_inertia: Value::zero(),
-        spring: None,
-        friction: None,
+        link: Link {
+            mass: Value::from_f64(rng.range(0.5, 3.0)),
+            com: std::array::from_fn(|_| random_length(rng)),
+            inertia: [
+                diagonal[0],
+                diagonal[1],
+                diagonal[2],
+                off[0],
+                off[1],
+                off[2],
+            ]
+            .map(Value::from_f64),
+            ..Link::default()
+        },
         frame: Some(AxisFrame {
             origin: Placement {
                 xyz: std::array::from_fn(|_| random_length(rng)),
@@ -259,9 +259,9 @@ fn random_frames_lower_to_the_same_kinematics_and_inertias() {
                 let got = mul(d, &pose_matrix(&lowered.joints[i].link_pose));
                 close(&got, w, &format!("case {case}, link {}", i + 1));
                 let (uj, lj) = (&user.joints[i], &lowered.joints[i]);
-                assert_eq!(uj.mass, lj.mass);
-                let (c0, i0) = in_base(w, &uj.com, &uj.inertia);
-                let (c1, i1) = in_base(d, &lj.com, &lj.inertia);
+                assert_eq!(uj.link.mass, lj.link.mass);
+                let (c0, i0) = in_base(w, &uj.link.com, &uj.link.inertia);
+                let (c1, i1) = in_base(d, &lj.link.com, &lj.link.inertia);
                 for k in 0..3 {
                     assert!((c0[k] - c1[k]).abs() < 1e-9, "case {case} com");
                     for l in 0..3 {

@@ -47,7 +47,7 @@ fn a_good_file_loads() {
     let text = two_links(&joint("revolute", ""), INERTIAL);
     let loaded = load_urdf("r.urdf", &text, Chain::default(), true).expect("loads");
     assert_eq!(loaded.robot.dof(), 2);
-    assert_eq!(loaded.positions[1]["type"], (4, 1));
+    assert_eq!(loaded.sources.joints[1]["type"], (4, 1));
 }
 
 /// A file, its tip, where the error is and what it says.

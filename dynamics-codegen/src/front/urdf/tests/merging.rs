@@ -45,10 +45,10 @@ fn a_fixed_link_merges_by_the_parallel_axis_theorem() {
       <link name="b"><inertial><origin xyz="0 0.5 0"/><mass value="1"/>
         <inertia ixx="0.1" iyy="0.2" izz="0.3" ixy="0" ixz="0" iyz="0"/></inertial></link>"#;
     let joint = &robot(&arm(a, b)).joints[0];
-    assert_eq!(joint.mass, ratio(3, 1));
-    assert_eq!(joint.com, [ratio(1, 6), Value::zero(), Value::zero()]);
+    assert_eq!(joint.link.mass, ratio(3, 1));
+    assert_eq!(joint.link.com, [ratio(1, 6), Value::zero(), Value::zero()]);
     assert_eq!(
-        joint.inertia,
+        joint.link.inertia,
         [
             ratio(6, 5),
             ratio(34, 15),
@@ -76,12 +76,12 @@ fn inertial_axes_turn_to_the_link_s() {
         0.0,
         -s * c,
     ];
-    for (got, want) in joint.inertia.iter().zip(want) {
+    for (got, want) in joint.link.inertia.iter().zip(want) {
         let got = got.eval(&|_| None).expect("a number");
         assert!((got - want).abs() < 1e-15, "{got} vs {want}");
     }
     let exact = |t| Value::num(Number::parse_decimal(t).expect("decimal"));
-    assert_eq!(joint.com, ["0.1", "0.2", "0.3"].map(exact));
+    assert_eq!(joint.link.com, ["0.1", "0.2", "0.3"].map(exact));
     // The joint's placement is its origin as written.
     let origin = &joint.frame.as_ref().expect("a frame").origin;
     assert_eq!(origin.xyz, ["0", "0", "0.5"].map(exact));

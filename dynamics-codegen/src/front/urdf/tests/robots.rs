@@ -69,7 +69,7 @@ fn check_chain(
     assert!(robot.joints.iter().all(|j| j.kind == JointKind::Revolute));
     assert_eq!(axes(robot), axes_expected);
     for (joint, links) in robot.joints.iter().zip(bodies) {
-        assert_eq!(joint.mass, masses_in_file(text, links), "{links:?}");
+        assert_eq!(joint.link.mass, masses_in_file(text, links), "{links:?}");
     }
 }
 
@@ -101,7 +101,7 @@ fn ur5_and_ur10_are_six_revolute_joints() {
     // The gravity of a URDF robot, by default.
     assert_eq!(ur10.gravity, ["0", "0", "-9.81"].map(exact));
     // UR files declare zero damping and friction: no friction.
-    assert!(ur10.joints.iter().all(|j| j.friction.is_none()));
+    assert!(ur10.joints.iter().all(|j| j.link.friction.is_none()));
 }
 
 #[test]
@@ -118,7 +118,7 @@ fn panda_to_its_flange() {
     let bodies: Vec<&[&str]> = bodies.iter().map(Vec::as_slice).collect();
     check_chain(&panda, 7, &[Z; 7], &bodies, PANDA);
     // `<dynamics damping="0.003" friction="0.0"/>`: viscous friction only.
-    let friction = panda.joints[0].friction.as_ref().expect("friction");
+    let friction = panda.joints[0].link.friction.as_ref().expect("friction");
     assert_eq!(
         (friction.viscous.clone(), friction.coulomb.clone()),
         (exact("0.003"), Value::zero())
@@ -142,7 +142,7 @@ fn z1_with_its_gripper_and_friction() {
     // origin (0.049, 0, 0).
     let origin = &z1.joints[6].frame.as_ref().unwrap().origin;
     assert_eq!(origin.xyz, ["0.1", "0", "0"].map(exact));
-    let friction = z1.joints[1].friction.as_ref().expect("friction");
+    let friction = z1.joints[1].link.friction.as_ref().expect("friction");
     assert_eq!(
         (friction.viscous.clone(), friction.coulomb.clone()),
         (exact("2"), exact("2"))

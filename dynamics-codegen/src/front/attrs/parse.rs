@@ -2,12 +2,14 @@
 //! into [`Attrs`], still as tokens with their spans. An unknown or repeated key is an error
 //! and parsing goes on with the next key, so that one build reports every mistake.
 
-use super::attr_joints::{parse_joints, JointAttr};
-use super::attr_value::{boolean, parse_convention, parse_dh, parse_spring, string, values};
-use super::errors::{unknown_key, Errors};
-use super::friction_attr::{parse_friction, FrictionAttr};
-use super::symbol::{Key, LinkKey};
-use super::value::Spanned;
+use super::entry::{
+    boolean, parse_convention, parse_dh, parse_spring, skip_entry, string, values, DhRowAttr, Entry,
+};
+use super::friction::{parse_friction, FrictionAttr};
+use super::joints::{parse_joints, JointAttr};
+use super::keys::{Key, LinkKey};
+use crate::front::errors::{unknown_key, Errors};
+use crate::front::value::Spanned;
 use crate::method::{Family, FamilySet};
 use crate::model::Convention;
 use proc_macro2::Span;
@@ -34,21 +36,18 @@ pub(super) struct LinkAttr {
     pub unknown_key: bool,
 }
 
-/// A D-H row `[θ, d, a, α]` with the span of its first token.
-pub(super) type DhRowAttr = (Span, [Spanned; 4]);
-
 /// The keys of every `#[dynamics(...)]` of the input.
 #[derive(Default)]
-pub(super) struct Attrs {
+pub(in crate::front) struct Attrs {
     pub file: Option<LitStr>,
     pub krate: Option<syn::Path>,
     pub convention: Option<(Convention, Span)>,
     pub gravity: Option<[Spanned; 3]>,
     /// The rows and the span of the table's brackets.
-    pub dh: Option<(Vec<DhRowAttr>, Span)>,
+    pub(super) dh: Option<(Vec<DhRowAttr>, Span)>,
     /// The joints given by placements and axes, and the span of the list's brackets.
-    pub joints: Option<(Vec<JointAttr>, Span)>,
-    pub links: Vec<LinkAttr>,
+    pub(super) joints: Option<(Vec<JointAttr>, Span)>,
+    pub(super) links: Vec<LinkAttr>,
     pub name: Option<LitStr>,
     /// `check_inertia = false` for every link (or every joint of the file).
     pub check_inertia: Option<bool>,
@@ -64,9 +63,15 @@ pub(super) struct Attrs {
 
 impl Attrs {
     /// The families the robot has: the opt-in ones it asks for, and every other.
-    pub(super) fn families(&self) -> FamilySet {
+    pub(in crate::front) fn families(&self) -> FamilySet {
         let asked = self.families.iter().filter(|(_, &asked)| asked);
         asked.fold(FamilySet::default(), |set, (&f, _)| set.with(f))
+    }
+
+    /// The number of joints of the D-H table or the joint list, if one was read.
+    pub(in crate::front) fn joint_count(&self) -> Option<usize> {
+        let rows = self.dh.as_ref().map(|(rows, _)| rows.len());
+        rows.or_else(|| self.joints.as_ref().map(|(joints, _)| joints.len()))
     }
 
     /// Whether the attribute gives `key`, one of the keys a description file or a URDF
@@ -86,7 +91,7 @@ impl Attrs {
 
     /// An error on the `source` string for each of `keys` the attribute also gives, since
     /// the source describes the whole robot; `hint` adds to a key's message.
-    pub(super) fn refuse_beside(
+    pub(in crate::front) fn refuse_beside(
         &self,
         source: &Source,
         keys: &[&str],
@@ -110,8 +115,23 @@ impl Attrs {
     }
 }
 
+impl Attrs {
+    /// `base = ".."` and `tip = ".."` name links of a URDF file: an error on each without
+    /// `urdf`.
+    pub(in crate::front) fn refuse_chain_without_urdf(&self, errors: &mut Errors) {
+        for (key, given) in [("base", &self.base), ("tip", &self.tip)] {
+            if let Some(literal) = given {
+                errors.push(
+                    literal.span(),
+                    format!("`{key}` names a link of a URDF file: give the file with `urdf = \"robots/arm.urdf\"`"),
+                );
+            }
+        }
+    }
+}
+
 /// A description of the whole robot named in the attribute: `file = ".."` or `urdf = ".."`.
-pub(super) struct Source<'a> {
+pub(in crate::front) struct Source<'a> {
     /// Its key, `file` or `urdf`.
     pub key: &'static str,
     /// The string naming it.
@@ -131,42 +151,8 @@ const LINK_ATTRIBUTE: &str = "link attribute";
 /// What `check_inertia` does, for an error in its value.
 const KEEP: &str = "`check_inertia = false` keeps an inertia tensor that fails the physical checks";
 
-/// One `key = value` entry of an attribute list, where a repeated key is reported.
-pub(super) struct Entry<'a> {
-    /// The key as written.
-    pub ident: &'a Ident,
-    /// What the keys of the list are called in messages.
-    pub what: &'static str,
-    pub errors: &'a mut Errors,
-}
-
-impl Entry<'_> {
-    /// Stores the first value given for the key; a repeated key is an error on its second
-    /// occurrence, and parsing goes on.
-    pub(super) fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
-        if slot.is_some() {
-            let (key, what) = (self.ident, self.what);
-            self.errors.push(
-                key.span(),
-                format!("duplicate {what} `{key}`: it is given earlier in this list"),
-            );
-        } else {
-            *slot = Some(value);
-        }
-    }
-}
-
-/// Skips what follows an unknown key, up to the next `,` at this level, so that the keys
-/// after it are still checked.
-pub(super) fn skip_entry(input: ParseStream) -> syn::Result<()> {
-    while !input.is_empty() && !input.peek(Token![,]) {
-        input.parse::<proc_macro2::TokenTree>()?;
-    }
-    Ok(())
-}
-
 /// Parses the keys of one `#[dynamics(...)]` into `attrs`.
-pub(super) fn parse_attrs(
+pub(in crate::front) fn parse_attrs(
     input: ParseStream,
     attrs: &mut Attrs,
     errors: &mut Errors,

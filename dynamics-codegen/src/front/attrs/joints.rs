@@ -2,11 +2,10 @@
 //! `revolute(xyz = [..], rpy = [..], axis = [..])` or `prismatic(..)`, read into [`JointAttr`]s
 //! with their spans. `xyz` and `rpy` default to zero, `axis` to `[0, 0, 1]`.
 
-use super::attr::{skip_entry, Entry};
-use super::attr_value::values;
-use super::errors::{unknown_key, Errors};
-use super::symbol::{JointKey, JointType};
-use super::value::Spanned;
+use super::entry::{skip_entry, values, Entry};
+use super::keys::{JointKey, JointType};
+use crate::front::errors::{unknown_key, Errors};
+use crate::front::value::Spanned;
 use crate::model::JointKind;
 use proc_macro2::Span;
 use syn::parse::ParseStream;

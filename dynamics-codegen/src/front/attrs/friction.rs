@@ -4,9 +4,9 @@
 //! Named keys rather than a tuple like `spring`'s: four numbers in a row would be easy to
 //! misread, and most joints give only one or two of them.
 
-use super::errors::{unknown_key, Errors};
-use super::symbol::FrictionKey;
-use super::value::Spanned;
+use super::keys::FrictionKey;
+use crate::front::errors::{unknown_key, Errors};
+use crate::front::value::Spanned;
 use proc_macro2::Span;
 use syn::parse::ParseStream;
 use syn::{parenthesized, Ident, Token};

@@ -1,14 +1,52 @@
 //! Readers of the value after an attribute key: `N` values in brackets, the D-H table, a
-//! spring, a convention, a boolean, a string. Each reports a malformed value as a syntax
-//! error that says what was expected.
+//! spring, a convention, a boolean, a string, each reporting a malformed value as a syntax
+//! error that says what was expected; and the bookkeeping every key list shares: a repeated
+//! key is reported on its second occurrence, an unknown key skipped.
 
-use super::attr::DhRowAttr;
-use super::value::Spanned;
+use crate::front::errors::Errors;
+use crate::front::value::Spanned;
 use crate::model::Convention;
 use proc_macro2::Span;
 use syn::parse::ParseStream;
 use syn::punctuated::Punctuated;
 use syn::{bracketed, parenthesized, Ident, LitStr, Token};
+
+/// A D-H row `[θ, d, a, α]` with the span of its first token.
+pub(super) type DhRowAttr = (Span, [Spanned; 4]);
+
+/// One `key = value` entry of an attribute list, where a repeated key is reported.
+pub(super) struct Entry<'a> {
+    /// The key as written.
+    pub ident: &'a Ident,
+    /// What the keys of the list are called in messages.
+    pub what: &'static str,
+    pub errors: &'a mut Errors,
+}
+
+impl Entry<'_> {
+    /// Stores the first value given for the key; a repeated key is an error on its second
+    /// occurrence, and parsing goes on.
+    pub(super) fn keep_first<T>(&mut self, slot: &mut Option<T>, value: T) {
+        if slot.is_some() {
+            let (key, what) = (self.ident, self.what);
+            self.errors.push(
+                key.span(),
+                format!("duplicate {what} `{key}`: it is given earlier in this list"),
+            );
+        } else {
+            *slot = Some(value);
+        }
+    }
+}
+
+/// Skips what follows an unknown key, up to the next `,` at this level, so that the keys
+/// after it are still checked.
+pub(super) fn skip_entry(input: ParseStream) -> syn::Result<()> {
+    while !input.is_empty() && !input.peek(Token![,]) {
+        input.parse::<proc_macro2::TokenTree>()?;
+    }
+    Ok(())
+}
 
 /// `N` values in brackets, and the span of the brackets.
 pub(super) fn values<const N: usize>(

@@ -1,15 +1,26 @@
-//! The derive's `file = "..."`: the description file read (relative to the crate's
-//! `Cargo.toml`, else to the source file: [`locate`]) into a robot, with the fields its values
-//! name and the checks of [`crate::check::robot`]. Every error goes on the `file = "..."` string,
-//! with the file's name, line and column in the message.
+//! The derive's `file = "..."` and `urdf = "..."` (with `base = ".."`, `tip = ".."`): the file
+//! read (relative to the crate's `Cargo.toml`, else to the source file: `locate`; tracked for
+//! rebuilds) and lowered by
+//! [`super::file::load`] or [`super::urdf::load_urdf`], then checked against the struct: the
+//! fields its values name must be floats of it. Every error goes on the string that names the
+//! file, with the file's name, line and column in the message.
 
 use super::errors::Errors;
-use super::fields::{field_error, Field};
-use super::file::{self, Loaded};
-use crate::check::{self, Problem};
-use crate::model::{Robot, Value};
+use super::fields::{check_names, field_error, Field};
+use super::file;
+use super::sources::{Loaded, Positions, Tokens};
+use super::urdf::{load_urdf, Chain};
+use super::value::Spanned;
+use crate::check::Problem;
+use crate::model::{mat_vec, transpose, Robot, Value};
 use std::path::{Path, PathBuf};
 use syn::LitStr;
+
+/// A robot lowered from the file a string names, with the file's path as written.
+pub(super) struct Named {
+    pub loaded: Loaded,
+    pub path: String,
+}
 
 /// Reads the description file `file` names; `tracked` is set to its absolute path, for
 /// rebuilds. `check_inertia = false` on the derive turns off the inertia checks of every joint.
@@ -19,7 +30,7 @@ pub(super) fn robot_from_file(
     fields: &[Field],
     errors: &mut Errors,
     tracked: &mut Option<String>,
-) -> Option<Robot> {
+) -> Option<Named> {
     let (relative, text) = read_relative(file, errors, tracked)?;
     let loaded = match file::load(&relative, &text) {
         Ok(loaded) => loaded,
@@ -29,13 +40,79 @@ pub(super) fn robot_from_file(
             return None;
         }
     };
-    for message in problems(&loaded, &relative, check_inertia, fields) {
-        errors.push(file.span(), message);
-    }
-    Some(loaded.robot)
+    Some(named(file, loaded, relative, check_inertia, fields, errors))
 }
 
-/// The text of the file `file` names (found by [`locate`]), with its path as written; `tracked`
+/// The robot of the URDF file `urdf = "..."` names, the chain `chain` of it; `gravity = [..]`
+/// replaces its default `[0, 0, −9.81]` (in the base link's frame).
+pub(super) fn robot_from_urdf(
+    urdf: &LitStr,
+    chain: Chain,
+    check_inertia: bool,
+    gravity: Option<&[Spanned; 3]>,
+    fields: &[Field],
+    errors: &mut Errors,
+    tracked: &mut Option<String>,
+) -> Option<Named> {
+    let (relative, text) = read_relative(urdf, errors, tracked)?;
+    let loaded = match load_urdf(&relative, &text, chain, check_inertia) {
+        Ok(loaded) => loaded,
+        Err(found) => {
+            for e in found {
+                let sep = if e.line.is_some() { "" } else { " " };
+                errors.push(urdf.span(), format!("{relative}:{sep}{e}"));
+            }
+            return None;
+        }
+    };
+    let mut named = named(urdf, loaded, relative, check_inertia, fields, errors);
+    if let Some(gravity) = gravity {
+        for g in gravity {
+            check_names(g, fields, errors);
+        }
+        // Given in the base link's frame; the lowered robot's gravity is in D-H frame 0.
+        let robot = &mut named.loaded.robot;
+        let given: [Value; 3] = std::array::from_fn(|i| gravity[i].value.clone());
+        robot.gravity = mat_vec(&transpose(&robot.base.rotation), &given);
+    }
+    Some(named)
+}
+
+/// The robot `loaded` from the file `file` names (at `path`), its values checked against the
+/// struct's `fields`; the derive's `check_inertia = false` turns off every joint's inertia
+/// check.
+fn named(
+    file: &LitStr,
+    mut loaded: Loaded,
+    path: String,
+    check_inertia: bool,
+    fields: &[Field],
+    errors: &mut Errors,
+) -> Named {
+    for message in value_problems(&loaded, &path, fields) {
+        errors.push(file.span(), message);
+    }
+    for checked in &mut loaded.check_inertia {
+        *checked &= check_inertia;
+    }
+    Named { loaded, path }
+}
+
+/// Where a problem of the checks goes: on the string `file` that names the file at `path`,
+/// with the position of the value it concerns in the message.
+pub(super) fn tell(
+    file: &LitStr,
+    path: &str,
+    positions: &Positions,
+    problem: &Problem,
+) -> (Tokens, String) {
+    (
+        (file.span(), file.span()),
+        positions.describe(path, problem),
+    )
+}
+
+/// The text of the file `file` names (found by `locate`), with its path as written; `tracked`
 /// is set to its absolute path, for rebuilds.
 pub(super) fn read_relative(
     file: &LitStr,
@@ -87,41 +164,23 @@ fn locate(file: &LitStr) -> (PathBuf, &'static str) {
     }
 }
 
-/// Every problem of the loaded file `relative`, as messages that point into it.
-pub(super) fn problems(
-    loaded: &Loaded,
-    relative: &str,
-    check_inertia: bool,
-    fields: &[Field],
-) -> Vec<String> {
+/// The problems of the loaded file `relative`'s values that the derive alone sees, as messages
+/// that point into it: the fields they name that the struct lacks, divisions by zero.
+fn value_problems(loaded: &Loaded, relative: &str, fields: &[Field]) -> Vec<String> {
     let robot = &loaded.robot;
     let mut messages = Vec::new();
     for name in robot.fields() {
         if let Some(message) = field_error(&name, fields) {
             let at = match field_location(robot, &name) {
-                (Some(joint), key) => loaded.at(relative, joint, key),
-                (None, _) => loaded.gravity.map_or_else(
-                    || format!("{relative}: "),
-                    |(line, column)| format!("{relative}:{line}:{column}: "),
-                ),
+                (Some(joint), key) => loaded.sources.at(relative, joint, key),
+                (None, _) => super::sources::prefix(relative, loaded.sources.gravity.as_ref()),
             };
             messages.push(format!("{at}{message}"));
         }
     }
-    let flags: Vec<bool> = loaded
-        .check_inertia
-        .iter()
-        .map(|checked| *checked && check_inertia)
-        .collect();
-    // The joint count is reported before the values' own errors, the links' problems after.
-    let (count, links): (Vec<Problem>, Vec<Problem>) = check::robot(robot, &flags)
-        .into_iter()
-        .partition(|p| matches!(p, Problem::TooManyJoints { .. }));
-    messages.extend(count.iter().map(|p| loaded.describe(relative, p)));
     for v in robot.values().filter(|v| v.divides_by_zero()) {
         messages.push(format!("{relative}: division by zero in `{v}`"));
     }
-    messages.extend(links.iter().map(|p| loaded.describe(relative, p)));
     messages
 }
 
@@ -133,8 +192,8 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
         set.contains(name)
     };
     for (i, j) in robot.joints.iter().enumerate() {
-        let spring = j.spring.as_ref();
-        let friction = j.friction.as_ref();
+        let spring = j.link.spring.as_ref();
+        let friction = j.link.friction.as_ref();
         let origin = j.frame.iter().flat_map(|f| &f.origin.xyz).collect();
         let keys: [(&'static str, Vec<&Value>); 15] = [
             ("origin", origin),
@@ -142,10 +201,10 @@ fn field_location(robot: &Robot, name: &str) -> (Option<usize>, &'static str) {
             ("d", vec![&j.d]),
             ("a", vec![&j.a]),
             ("alpha", vec![&j.alpha]),
-            ("mass", vec![&j.mass]),
-            ("com", j.com.iter().collect()),
-            ("inertia", j.inertia.iter().collect()),
-            ("actuator_inertia", vec![&j.actuator_inertia]),
+            ("mass", vec![&j.link.mass]),
+            ("com", j.link.com.iter().collect()),
+            ("inertia", j.link.inertia.iter().collect()),
+            ("actuator_inertia", vec![&j.link.actuator_inertia]),
             (
                 "spring_stiffness",
                 spring.map(|s| &s.stiffness).into_iter().collect(),

@@ -1,0 +1,93 @@
+//! The joints of `joints = [...]`: one per `revolute(..)` or `prismatic(..)` with its
+//! `link(...)` (inertial parameters in link frame i, the joint frame), then lowered to the
+//! robot's own modified D-H table by [`lower_frames`], whose problems go on the joint's tokens.
+
+use super::joints::JointAttr;
+use super::parse::Attrs;
+use super::reader::{check_joint_count, JointList, Reader};
+use crate::front::angle::unitless_angle;
+use crate::model::{lower_frames, AxisFrame, Joint, Placement, Robot, Value};
+use proc_macro2::Span;
+
+/// What the count errors call the list's entries.
+pub(super) fn counted(n: usize) -> String {
+    format!("{n} joints are given")
+}
+
+/// The joints of `joints = [...]` (the list and the span of its brackets), before lowering;
+/// `span` is the derive's name.
+pub(super) fn joints(
+    reader: &mut Reader,
+    (joints, list_span): &(Vec<JointAttr>, Span),
+    attrs: &Attrs,
+    span: Span,
+) -> Vec<Joint> {
+    let spans: Vec<Span> = joints.iter().map(|j| j.span).collect();
+    let list = JointList {
+        spans: &spans,
+        span: *list_span,
+        empty: "`joints` is empty: give one `revolute(..)` or `prismatic(..)` per joint",
+        counted,
+    };
+    check_joint_count(&list, &attrs.links, reader.errors);
+    if let Some((_, at)) = attrs.convention {
+        reader.errors.push(
+            at,
+            "`convention` applies to a D-H table: joints given by `joints = [..]` are lowered \
+             to their own modified D-H table; remove `convention`",
+        );
+    }
+    joints
+        .iter()
+        .enumerate()
+        .map(|(i, j)| joint(reader, i + 1, j, attrs, span))
+        .collect()
+}
+
+/// Lowers `robot`, whose joints are those of `joints`, where every value was read without
+/// error; each problem goes on its joint's axis or entry.
+pub(super) fn lower(robot: &mut Robot, joints: &[JointAttr], reader: &mut Reader) {
+    if !reader.errors.is_empty() {
+        return;
+    }
+    if let Err(problems) = lower_frames(robot) {
+        for problem in problems {
+            let j = &joints[problem.joint];
+            let (start, end) = match (&j.axis, problem.concerns_axis()) {
+                (Some((_, brackets)), true) => (*brackets, *brackets),
+                _ => (j.span, j.end),
+            };
+            let message = format!("joint {}: {}", problem.joint + 1, problem.message);
+            reader.errors.push_range(start, end, message);
+        }
+    }
+}
+
+/// Joint `n` (1-based) as its entry gives it, with its `link(...)`.
+fn joint(reader: &mut Reader, n: usize, j: &JointAttr, attrs: &Attrs, span: Span) -> Joint {
+    let xyz = j
+        .xyz
+        .as_ref()
+        .map_or_else(Default::default, |v| reader.values(v));
+    let rpy = match &j.rpy {
+        Some(angles) => {
+            for angle in angles {
+                if let Some((term, message)) = unitless_angle(&angle.unitless, false) {
+                    reader.errors.push_range(term.span, term.end, message);
+                }
+            }
+            reader.values(angles)
+        }
+        None => Default::default(),
+    };
+    let axis = match &j.axis {
+        Some((v, _)) => reader.values(v),
+        None => [Value::zero(), Value::zero(), Value::one()],
+    };
+    let link = reader.link(n, j.span, attrs, span);
+    let frame = AxisFrame {
+        origin: Placement { xyz, rpy },
+        axis,
+    };
+    Joint::framed(j.kind, frame, link)
+}
