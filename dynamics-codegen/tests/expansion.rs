@@ -70,6 +70,29 @@ fn errors_are_compile_errors_not_panics() {
 }
 
 #[test]
+fn a_literal_without_a_finite_value_is_one_error() {
+    for link in [
+        "mass = 1e400",
+        "mass = 1, actuator_inertia = 1e400",
+        "mass = 1, spring = (1e400, 0)",
+        "mass = 1, friction = (viscous = 1e400)",
+        "mass = 1, friction = (coulomb = -1e400)",
+        "mass = 1, friction = (offset = 1e400)",
+        "mass = 1, friction = (smoothing = 1e400)",
+    ] {
+        let source = format!(
+            "#[dynamics(gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0]], link({link}))] struct A;"
+        );
+        let input: syn::DeriveInput = syn::parse_str(&source).expect("Rust");
+        let Err(failure) = front::parse(&input) else {
+            panic!("{link} was accepted");
+        };
+        let messages: Vec<String> = failure.error.into_iter().map(|e| e.to_string()).collect();
+        assert_eq!(messages.len(), 1, "{link}: {messages:?}");
+    }
+}
+
+#[test]
 fn json_and_toml_descriptions_agree() {
     let json = front::from_json(PUMA, "puma560").expect("json");
     let mut toml = String::from("name = \"puma560\"\ngravity = [0, 0, -9.81]\n");

@@ -123,6 +123,13 @@ impl<'a> Reader<'a> {
                 stiffness: known(s.stiffness),
                 rest: known(s.rest),
             }),
+            friction: link.friction.map(|f| Friction {
+                viscous: known(f.viscous),
+                coulomb: known(f.coulomb),
+                offset: known(f.offset),
+                // Left out rather than zero, which the checks would refuse as a smoothing.
+                smoothing: f.smoothing.filter(finite),
+            }),
             ..link
         }
     }
