@@ -1,7 +1,8 @@
 """Reference data for identification: the joint torque regressor and base-parameter counts.
 
-Run: /work/venv-pin/bin/python tests/data/regressor/make.py  (Pinocchio 4.1.0, numpy; or
-bench/.venv/bin/python, which bench/run creates with the `pin` wheel). About 10 s.
+Run: bench/.venv/bin/python tests/data/regressor/make.py  (Pinocchio 4.1.0, numpy: bench/run
+creates that environment with the `pin` wheel; any with `pip install pin==4.1.0 numpy` works
+too). About 10 s.
 
 1. Per robot, <robot>.json: 10 seeded samples of (q, qd, qdd) with Pinocchio's
    computeJointTorqueRegressor. The robots: those of tests/data/forward/make.py (imported from it,
