@@ -72,13 +72,13 @@ fn errors_are_compile_errors_not_panics() {
 #[test]
 fn a_literal_without_a_finite_value_is_one_error() {
     for link in [
-        "mass = 1e400",
-        "mass = 1, actuator_inertia = 1e400",
-        "mass = 1, spring = (1e400, 0)",
-        "mass = 1, friction = (viscous = 1e400)",
-        "mass = 1, friction = (coulomb = -1e400)",
-        "mass = 1, friction = (offset = 1e400)",
-        "mass = 1, friction = (smoothing = 1e400)",
+        "mass = 1e300 * 1e300",
+        "mass = 1, actuator_inertia = 1e300 * 1e300",
+        "mass = 1, spring = (1e300 * 1e300, 0)",
+        "mass = 1, friction = (viscous = 1e300 * 1e300)",
+        "mass = 1, friction = (coulomb = -1e300 * 1e300)",
+        "mass = 1, friction = (offset = 1e300 * 1e300)",
+        "mass = 1, friction = (smoothing = 1e300 * 1e300)",
     ] {
         let source = format!(
             "#[dynamics(gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0]], link({link}))] struct A;"
