@@ -66,7 +66,7 @@ pub fn expand_robot(
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let mut eq = trace::derive(&parsed.robot);
-    eq.add_families(parsed.families);
+    eq.add_families(&parsed.robot, parsed.families);
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields

@@ -312,6 +312,48 @@ macro_rules! for_each_method {
                     }
                 }
             }
+            /// The joint torque regressor, for identifying a robot's inertial parameters:
+            /// implemented by `#[derive(Dynamics)]` for a robot that asks for it with
+            /// `#[dynamics(..., regressor = true)]`.
+            ///
+            /// The rigid bodies' part of inverse dynamics is linear in each link's 10 standard
+            /// parameters `π_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` (Pinocchio's
+            /// `Inertia::toDynamicParameters` order), the first moment and the inertia tensor
+            /// (off-diagonal entries `−∫xy dm`) about the origin of link frame j, in its axes:
+            /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia, friction and spring torques.
+            trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra {
+                items {}
+                /// The joint torque regressor and the standard parameters.
+                family Regressor {
+                    name: regressor,
+                    module: "__regressor",
+                    opt_in: true,
+                    adjective: "regressor's ",
+                }
+                methods {
+                    /// The regressor `Y(q, q̇, q̈)`: element `[i][j][k]` is `∂τ_i/∂π_jk`, the
+                    /// derivative of joint i's torque by parameter k of link j, so that
+                    /// `Σ_j Σ_k Y[i][j][k] π_jk` is the rigid bodies' part of
+                    /// `inverse_dynamics` (without actuator inertia, friction and springs).
+                    fn regressor(q, qd, qdd) -> link_columns, nalgebra regressor_na {
+                        variant: Regressor,
+                        equation: None,
+                        prefix: "y",
+                        summary: "Y(q, q̇, q̈), with τ = Y π for the rigid bodies.",
+                        element: "d tau{k} / d pi{i}_{j}",
+                    }
+                    /// The robot's standard parameters `π_j` as its description gives them, per
+                    /// link `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` about the origin
+                    /// of link frame j (the D-H frame), in its axes.
+                    fn standard_parameters() -> link_parameters, nalgebra standard_parameters_na {
+                        variant: StandardParameters,
+                        equation: None,
+                        prefix: "pi",
+                        summary: "The standard parameters π of each link.",
+                        element: "pi{i}_{j}",
+                    }
+                }
+            }
         }
     };
 }

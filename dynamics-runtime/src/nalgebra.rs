@@ -1,13 +1,15 @@
 //! Interoperability with nalgebra's statically sized types.
 //!
-//! The [`Dynamics`] methods take and return plain arrays; [`DynamicsNalgebra`] wraps each of
-//! them (from the method table, `methods.rs`) for `SVector` and `SMatrix`, at no cost beyond a
-//! copy, and [`DynamicsDerivativesNalgebra`] those of [`DynamicsDerivatives`]. A scalar result stays `T`; a pose becomes an `Isometry3`, a Jacobian an
-//! `SMatrix<T, 6, N>`.
+//! The methods of [`Dynamics`](crate::Dynamics) take and return plain arrays; for each of the
+//! runtime's traits, a `...Nalgebra` trait (from the method table, `methods.rs`) wraps them for
+//! `SVector` and `SMatrix`, at no cost beyond a copy: [`DynamicsNalgebra`],
+//! [`DynamicsDerivativesNalgebra`], [`DynamicsRegressorNalgebra`]. A scalar result stays `T`; a
+//! pose becomes an `Isometry3`, a Jacobian an `SMatrix<T, 6, N>`, the regressor one `N × 10`
+//! block per link.
 
+// The result table's types name these.
 use crate::{
-    Dynamics, DynamicsDerivatives, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
-    NotPositiveDefinite, Pose, Real,
+    ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose, Real,
 };
 use nalgebra::{
     Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
@@ -32,22 +34,22 @@ macro_rules! declare_nalgebra {
             )*
         }
     )*) => {$(
-        #[doc = concat!("nalgebra versions of the [`", stringify!($trait), "`] methods, ")]
-        #[doc = concat!("implemented for every type that implements [`", stringify!($trait), "`].")]
-        pub trait $nalgebra<const N: usize>: $trait<N> {
+        #[doc = concat!("nalgebra versions of the [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods, ")]
+        #[doc = concat!("implemented for every type that implements it.")]
+        pub trait $nalgebra<const N: usize>: crate::$trait<N> {
             $($(
                 nalgebra_wrapper!($trait fn $name, $wrapper($($argument),*) -> $result);
             )*)*
         }
 
-        impl<R: $trait<N> + ?Sized, const N: usize> $nalgebra<N> for R {}
+        impl<R: crate::$trait<N> + ?Sized, const N: usize> $nalgebra<N> for R {}
     )*};
 }
 
 /// The `_na` wrapper of one method: the arguments from nalgebra's types, the result to them.
 macro_rules! nalgebra_wrapper {
     ($trait:ident fn $name:ident, $wrapper:ident($($argument:ident),*) -> $result:ident) => {
-        #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`] with nalgebra types.")]
+        #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`](crate::", stringify!($trait), "::", stringify!($name), ") with nalgebra types.")]
         fn $wrapper<T: Real + RealField>(
             &self,
             $($argument: nalgebra_argument!($argument, T, N)),*
@@ -92,10 +94,10 @@ fn isometry<T: Real + RealField>(pose: &Pose<T>) -> Isometry3<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::{DynamicsDerivativesNalgebra, DynamicsNalgebra};
+    use super::{DynamicsDerivativesNalgebra, DynamicsNalgebra, DynamicsRegressorNalgebra};
     use crate::{
-        Dynamics, DynamicsDerivatives, ForwardDynamicsDerivatives, InverseDynamicsDerivatives,
-        NotPositiveDefinite, Pose, Real,
+        Dynamics, DynamicsDerivatives, DynamicsRegressor, ForwardDynamicsDerivatives,
+        InverseDynamicsDerivatives, NotPositiveDefinite, Pose, Real,
     };
     use nalgebra::{SMatrix, SVector};
 
@@ -212,6 +214,36 @@ mod tests {
         assert_eq!(
             (forward.dqdd_dq, forward.dqdd_dqd, forward.dqdd_dtau),
             (m(1.0), m(2.0), m(3.0))
+        );
+    }
+
+    impl DynamicsRegressor<2> for Sums {
+        /// Element `[i][j][k]` is `100 i + 10 j + k` plus the sum of `q`.
+        fn regressor<T: Real>(&self, q: &[T; 2], _: &[T; 2], _: &[T; 2]) -> [[[T; 10]; 2]; 2] {
+            core::array::from_fn(|i| {
+                core::array::from_fn(|j| {
+                    core::array::from_fn(|k| T::from_f64((100 * i + 10 * j + k) as f64) + sum(q))
+                })
+            })
+        }
+        fn standard_parameters<T: Real>(&self) -> [[T; 10]; 2] {
+            core::array::from_fn(|j| core::array::from_fn(|k| T::from_f64((10 * j + k) as f64)))
+        }
+    }
+
+    #[test]
+    fn the_regressor_has_wrappers_with_a_block_per_link() {
+        let (q, z) = (SVector::from([1.0, 2.0]), SVector::<f64, 2>::zeros());
+        let blocks = Sums.regressor_na(&q, &z, &z);
+        for (j, block) in blocks.iter().enumerate() {
+            let expected =
+                SMatrix::<f64, 2, 10>::from_fn(|i, k| (100 * i + 10 * j + k) as f64 + 3.0);
+            assert_eq!(*block, expected);
+        }
+        let parameters = Sums.standard_parameters_na::<f64>();
+        assert_eq!(
+            parameters[1],
+            SVector::<f64, 10>::from_fn(|k, _| (10 + k) as f64)
         );
     }
 

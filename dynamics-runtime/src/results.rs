@@ -135,6 +135,27 @@ macro_rules! for_each_result {
                     .map(ForwardDynamicsDerivatives::from_parts)
                     .ok_or(NotPositiveDefinite),
             }
+            /// Per joint `i` and link `j`, the 10 columns of `∂τ_i/∂π_j`, `π_j` in the order
+            /// `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]`; as nalgebra, one `N × 10`
+            /// block per link.
+            link_columns {
+                variant: LinkColumns,
+                array: [[[T; 10]; N]; N],
+                nalgebra: [SMatrix<T, N, 10>; N],
+                to_nalgebra: |value| core::array::from_fn(|j| SMatrix::from_fn(|i, k| value[i][j][k])),
+                rows: [[[T; 10]; N]; N],
+                from_rows: |value| value,
+            }
+            /// Per link, its 10 standard parameters `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz,
+            /// Iyz, Izz]`.
+            link_parameters {
+                variant: LinkParameters,
+                array: [[T; 10]; N],
+                nalgebra: [SVector<T, 10>; N],
+                to_nalgebra: |value| value.map(SVector::from),
+                rows: [[T; 10]; N],
+                from_rows: |value| value,
+            }
         }
     };
 }

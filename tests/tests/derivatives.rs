@@ -213,7 +213,7 @@ fn random_robots_against_the_textbook_method() {
             Var::CosQ(i) => (c.q[usize::from(i)] + offset(i)).cos(),
             Var::Qd(i) => c.qd[usize::from(i)],
             Var::Qdd(i) => c.qdd[usize::from(i)],
-            Var::Param(_) | Var::Wrench(_) | Var::Tau(_) => 0.0,
+            Var::Param(_) | Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
         });
         let derivatives = eq.derivatives.as_ref().expect("traced");
         let reference = c.robot.reference();

@@ -254,7 +254,7 @@ fn random_robots() {
                 Var::Qd(i) => c.qd[usize::from(i)],
                 Var::Qdd(i) => c.qdd[usize::from(i)],
                 Var::Tau(i) => tau[usize::from(i)],
-                Var::Param(_) | Var::Wrench(_) => 0.0,
+                Var::Param(_) | Var::Wrench(_) | Var::Inertial(_) => 0.0,
             })
         };
         let values = at(&vec![0.0; n]);

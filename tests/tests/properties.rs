@@ -94,7 +94,7 @@ impl Generated {
             Var::Qd(i) => qd[usize::from(i)],
             Var::Qdd(i) => qdd[usize::from(i)],
             Var::Param(k) => panic!("the robot has no struct fields, yet parameter {k} appears"),
-            Var::Wrench(_) | Var::Tau(_) => 0.0,
+            Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
         }))
     }
 

@@ -9,7 +9,7 @@ pub fn run(args: &Emit) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let path = &args.robot.path;
     let mut eq = derive(&robot);
-    eq.add_families(args.families.set());
+    eq.add_families(&robot, args.families.set());
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;

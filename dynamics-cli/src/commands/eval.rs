@@ -111,6 +111,8 @@ fn evaluate(eq: &Equations, params: &[f64], q: &[f64], qd: &[f64], qdd: &[f64]) 
             Var::Wrench(_) => 0.0,
             // Nor torques: the forward dynamics print the motion with no torque applied.
             Var::Tau(_) => 0.0,
+            // The regressor's placeholders are never in the equations it evaluates.
+            Var::Inertial(_) => 0.0,
         }
     };
     // The angle offsets depend on parameters only: a first pass finds them.

@@ -16,7 +16,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let start = Instant::now();
     let mut eq = derive(&robot);
-    eq.add_families(args.families.set());
+    eq.add_families(&robot, args.families.set());
     let generated = generate(&eq, self_fields(&field_idents(&eq)));
     let elapsed = start.elapsed();
     let mut out = format!(

@@ -150,6 +150,7 @@ impl<'a> Emitter<'a> {
             Var::Param(k) => format!("p_{}", self.eq.fields[usize::from(k)]),
             Var::Wrench(k) => crate::symbolic::WRENCH[usize::from(k)].to_owned(),
             Var::Tau(i) => format!("tau{}", i + 1),
+            Var::Inertial(k) => format!("pi{}_{}", k / 10 + 1, k % 10 + 1),
         }))
     }
 

@@ -108,6 +108,7 @@ impl Sym {
             // Printed as the book names the wrench's components.
             Var::Wrench(k) => Sym::Param((*WRENCH.get(usize::from(k))?).to_owned()),
             Var::Tau(i) => Sym::Param(format!("T{}", i + 1)),
+            Var::Inertial(k) => Sym::Param(format!("pi{}_{}", k / 10 + 1, k % 10 + 1)),
         })
     }
 

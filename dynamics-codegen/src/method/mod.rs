@@ -313,9 +313,10 @@ mod tests {
         for &m in Method::ALL {
             assert_eq!(Method::from_name(m.name()), Some(m));
             assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
-            // Every method but friction's reads q.
+            // Every method but friction's and the standard parameters' reads q.
             let reads_q = m.arguments().first() == Some(&super::Argument::Q);
-            assert_eq!(reads_q, m != Method::FrictionTorques, "{m:?}");
+            let without_q = [Method::FrictionTorques, Method::StandardParameters];
+            assert_eq!(reads_q, !without_q.contains(&m), "{m:?}");
             let template = [m.element_template(false), m.element_template(true)];
             let cites = template.iter().any(|t| t.contains("{equation}"));
             assert!(!cites || m.equation().is_some(), "{m:?} cites no equation");

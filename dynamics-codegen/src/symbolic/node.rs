@@ -40,6 +40,9 @@ pub enum Var {
     Wrench(u16),
     /// Joint torque or force `τ_i` (an argument of the forward dynamics).
     Tau(u16),
+    /// Standard inertial parameter `k % 10` of link `k / 10`: a placeholder of the regressor's
+    /// trace, replaced by 0 or 1 for each of its columns and never emitted.
+    Inertial(u16),
 }
 
 /// The names of a wrench's components, [`Var::Wrench`]`(k)` for `k` from 0.

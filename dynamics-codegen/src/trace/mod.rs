@@ -36,6 +36,7 @@ mod kinematics;
 mod mass;
 mod newton_euler;
 mod outputs;
+mod regressor;
 mod tracer;
 
 use crate::algo::{JointKind, RobotScalars};
@@ -49,6 +50,7 @@ pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
 pub use outputs::Shape;
+pub use regressor::RegressorEquations;
 use std::cell::RefCell;
 use tracer::Tracer;
 
@@ -96,18 +98,23 @@ pub struct Equations {
     /// The derivatives of inverse and forward dynamics, where asked for
     /// ([`Equations::add_derivatives`]).
     pub derivatives: Option<DerivativeEquations>,
+    /// The joint torque regressor and the standard parameters, where asked for
+    /// ([`Equations::add_regressor`]).
+    pub regressor: Option<RegressorEquations>,
 }
 
 impl Equations {
-    /// Traces the opt-in families of `families` not traced yet, after every other output, in
-    /// the table's order, so that the outputs traced before keep their nodes.
-    pub fn add_families(&mut self, families: FamilySet) {
+    /// Traces the opt-in families of `families` not traced yet for `robot` (the robot these
+    /// equations are of), after every other output, in the table's order, so that the outputs
+    /// traced before keep their nodes.
+    pub fn add_families(&mut self, robot: &Robot, families: FamilySet) {
         for family in families.opt_in() {
             if self.families.contains(family) {
                 continue;
             }
             match family {
                 Family::Derivatives => self.add_derivatives(),
+                Family::Regressor => self.add_regressor(robot),
                 Family::Dynamics | Family::Kinematics | Family::Forward => {}
             }
         }
@@ -163,5 +170,6 @@ pub fn derive(robot: &Robot) -> Equations {
         forward,
         families: FamilySet::default(),
         derivatives: None,
+        regressor: None,
     }
 }

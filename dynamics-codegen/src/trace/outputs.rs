@@ -107,6 +107,10 @@ impl Method {
             Method::InverseDynamicsDerivatives => {
                 Shape::Stack(eq.derivatives.as_ref().map_or(&[], |d| &d.inverse))
             }
+            Method::Regressor => Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns)),
+            Method::StandardParameters => {
+                Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.parameters))
+            }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),

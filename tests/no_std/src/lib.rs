@@ -2,17 +2,22 @@
 //! It builds only if generated code and the runtime (with `libm`) need nothing from std.
 #![no_std]
 
-use dynamics_runtime::{Dynamics, DynamicsDerivatives};
+use dynamics_runtime::{Dynamics, DynamicsDerivatives, DynamicsRegressor};
 
 /// A 6-joint robot with prismatic joints and products of inertia, from a description file.
 #[derive(Dynamics)]
-#[dynamics(file = "../data/reference/robots/random5.json", derivatives = true)]
+#[dynamics(
+    file = "../data/reference/robots/random5.json",
+    derivatives = true,
+    regressor = true
+)]
 pub struct Random5;
 
 /// A planar arm whose lengths, masses, spring and gravity are fields.
 #[derive(Dynamics)]
 #[dynamics(
     derivatives = true,
+    regressor = true,
     gravity = [0, -g, 0],
     dh = [
         //  θ          d   a    α
@@ -40,7 +45,7 @@ pub struct TwoLink {
 
 /// Every method, in single precision, summed so that nothing is optimized away.
 #[must_use]
-pub fn evaluate_f32<R: DynamicsDerivatives<N>, const N: usize>(
+pub fn evaluate_f32<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
     robot: &R,
     q: &[f32; N],
     qd: &[f32; N],
@@ -61,6 +66,8 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N>, const N: usize>(
     let forward = robot
         .forward_dynamics_derivatives(q, qd, &tau)
         .map_or(f32::NAN, |d| d.dqdd_dq[0][0] + d.dqdd_dqd[0][0]);
+    let regressor = robot.regressor(q, qd, qdd)[0][N - 1][9];
+    let parameters = robot.standard_parameters::<f32>()[N - 1][0];
     m[0][0]
         + c[N - 1][0]
         + cqd[0]
@@ -74,6 +81,8 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N>, const N: usize>(
         + derivatives.dtau_dq[0][N - 1]
         + derivatives.dtau_dqd[N - 1][0]
         + forward
+        + regressor
+        + parameters
 }
 
 /// Inverse dynamics of both robots in double precision, and the derivatives of one.
