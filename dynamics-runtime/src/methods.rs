@@ -320,7 +320,8 @@ macro_rules! for_each_method {
             /// parameters `π_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` (Pinocchio's
             /// `Inertia::toDynamicParameters` order), the first moment and the inertia tensor
             /// (off-diagonal entries `−∫xy dm`) about the origin of link frame j, in its axes:
-            /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia, friction and spring torques.
+            /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia's and friction's terms, linear
+            /// in their coefficients (`joint_regressor`, `joint_parameters`), and the springs.
             trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra {
                 items {}
                 /// The joint torque regressor and the standard parameters.
@@ -341,6 +342,28 @@ macro_rules! for_each_method {
                         prefix: "y",
                         summary: "Y(q, q̇, q̈), with τ = Y π for the rigid bodies.",
                         element: "d tau{k} / d pi{i}_{j}",
+                    }
+                    /// The joints' columns: row i is `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)`
+                    /// in place of the sign where the robot smooths joint i's Coulomb friction),
+                    /// the columns of joint i's actuator inertia, viscous, Coulomb and offset
+                    /// friction (`joint_parameters`): with `regressor`, `inverse_dynamics` minus
+                    /// the spring torques.
+                    fn joint_regressor(qd, qdd) -> joint_columns, nalgebra joint_regressor_na {
+                        variant: JointRegressor,
+                        equation: None,
+                        prefix: "yj",
+                        summary: "The actuator inertia's and friction's columns, per joint.",
+                        element: "joint {i}: column {j} of [qdd, qd, sign(qd), 1]",
+                    }
+                    /// Per joint, `[I_act, f_v, f_c, f_0]`: the actuator inertia and the
+                    /// friction coefficients, as the description gives them (zeros where it gives
+                    /// none).
+                    fn joint_parameters() -> joint_columns, nalgebra joint_parameters_na {
+                        variant: JointParameters,
+                        equation: None,
+                        prefix: "pj",
+                        summary: "The actuator inertia and friction coefficients, per joint.",
+                        element: "joint {i}: [I_act, f_v, f_c, f_0] {j}",
                     }
                     /// The robot's standard parameters `π_j` as its description gives them, per
                     /// link `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` about the origin

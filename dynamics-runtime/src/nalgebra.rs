@@ -226,6 +226,14 @@ mod tests {
                 })
             })
         }
+        fn joint_regressor<T: Real>(&self, qd: &[T; 2], _: &[T; 2]) -> [[T; 4]; 2] {
+            core::array::from_fn(|i| {
+                core::array::from_fn(|k| T::from_f64((10 * i + k) as f64) + sum(qd))
+            })
+        }
+        fn joint_parameters<T: Real>(&self) -> [[T; 4]; 2] {
+            [[T::ONE; 4]; 2]
+        }
         fn standard_parameters<T: Real>(&self) -> [[T; 10]; 2] {
             core::array::from_fn(|j| core::array::from_fn(|k| T::from_f64((10 * j + k) as f64)))
         }
@@ -240,6 +248,15 @@ mod tests {
                 SMatrix::<f64, 2, 10>::from_fn(|i, k| (100 * i + 10 * j + k) as f64 + 3.0);
             assert_eq!(*block, expected);
         }
+        let joints = Sums.joint_regressor_na(&q, &z);
+        assert_eq!(
+            joints,
+            SMatrix::<f64, 2, 4>::from_fn(|i, k| (10 * i + k) as f64 + 3.0)
+        );
+        assert_eq!(
+            Sums.joint_parameters_na::<f64>(),
+            SMatrix::<f64, 2, 4>::repeat(1.0)
+        );
         let parameters = Sums.standard_parameters_na::<f64>();
         assert_eq!(
             parameters[1],

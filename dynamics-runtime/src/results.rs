@@ -146,6 +146,16 @@ macro_rules! for_each_result {
                 rows: [[[T; 10]; N]; N],
                 from_rows: |value| value,
             }
+            /// Per joint `i`, its 4 columns `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)` for a
+            /// smoothed Coulomb term), of the actuator inertia and the friction coefficients.
+            joint_columns {
+                variant: JointColumns,
+                array: [[T; 4]; N],
+                nalgebra: SMatrix<T, N, 4>,
+                to_nalgebra: |value| SMatrix::from_fn(|i, k| value[i][k]),
+                rows: [[T; 4]; N],
+                from_rows: |value| value,
+            }
             /// Per link, its 10 standard parameters `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz,
             /// Iyz, Izz]`.
             link_parameters {

@@ -65,31 +65,53 @@ fn rows<const N: usize>(y: &[[[f64; 10]; N]; N]) -> Vec<f64> {
     y.iter().flatten().flatten().copied().collect()
 }
 
-/// The worst scaled error of the regressor, of the standard parameters, and of `Y π` plus the
-/// actuator and friction columns against the sample's torque.
+/// `Σ_j Σ_k Y[i][j][k] π_jk + Σ_k Y_joint[i][k] π_joint,ik`, per joint.
+fn torque<const N: usize>(
+    y: &[[[f64; 10]; N]; N],
+    pi: &[[f64; 10]; N],
+    y_joint: &[[f64; 4]; N],
+    pi_joint: &[[f64; 4]; N],
+) -> Vec<f64> {
+    (0..N)
+        .map(|i| {
+            let links: f64 = (0..N)
+                .map(|j| (0..10).map(|k| y[i][j][k] * pi[j][k]).sum::<f64>())
+                .sum();
+            links + (0..4).map(|k| y_joint[i][k] * pi_joint[i][k]).sum::<f64>()
+        })
+        .collect()
+}
+
+/// The worst scaled error of the regressor, of the parameters, and of the torque they give
+/// against the sample's (Pinocchio's, with the actuator inertia and friction columns).
 fn against_pinocchio<R: DynamicsRegressor<N>, const N: usize>(robot: &R, name: &str) -> f64 {
     let file = data(name);
     let pi = robot.standard_parameters::<f64>();
-    let pi_flat: Vec<f64> = pi.iter().flatten().copied().collect();
-    let mut worst = scaled_error(&pi_flat, &numbers(&file["pi"]));
-    let extra = numbers(&file["pi_extra"]);
+    let pi_joint = robot.joint_parameters::<f64>();
+    let flat = |m: &[[f64; 10]; N]| m.iter().flatten().copied().collect::<Vec<f64>>();
+    let flat_joint = |m: &[[f64; 4]; N]| m.iter().flatten().copied().collect::<Vec<f64>>();
+    let mut worst = scaled_error(&flat(&pi), &numbers(&file["pi"])).max(scaled_error(
+        &flat_joint(&pi_joint),
+        &numbers(&file["pi_extra"]),
+    ));
     let samples = file["samples"].as_array().expect("samples");
     assert_eq!(samples.len(), 10, "{name}");
     for s in samples {
         let [q, qd, qdd] = ["q", "qd", "qdd"].map(|key| array::<N>(&s[key]));
         let y = robot.regressor(&q, &qd, &qdd);
-        worst = worst.max(scaled_error(&rows(&y), &numbers(&s["Y"])));
-        let y_extra = numbers(&s["Y_extra"]);
-        let tau: Vec<f64> = (0..N)
-            .map(|i| {
-                let rigid: f64 = (0..N)
-                    .map(|j| (0..10).map(|k| y[i][j][k] * pi[j][k]).sum::<f64>())
-                    .sum();
-                let row = &y_extra[i * extra.len()..(i + 1) * extra.len()];
-                rigid + row.iter().zip(&extra).map(|(a, b)| a * b).sum::<f64>()
-            })
+        let y_joint = robot.joint_regressor(&qd, &qdd);
+        // Pinocchio's joint columns are n × 4n, joint i's four in block i of row i.
+        let block_diagonal: Vec<f64> = (0..N)
+            .flat_map(|i| (0..4 * N).map(move |c| (i, c)))
+            .map(|(i, c)| if c / 4 == i { y_joint[i][c % 4] } else { 0.0 })
             .collect();
-        worst = worst.max(scaled_error(&tau, &numbers(&s["tau"])));
+        worst = worst
+            .max(scaled_error(&rows(&y), &numbers(&s["Y"])))
+            .max(scaled_error(&block_diagonal, &numbers(&s["Y_extra"])))
+            .max(scaled_error(
+                &torque(&y, &pi, &y_joint, &pi_joint),
+                &numbers(&s["tau"]),
+            ));
     }
     println!("regressor/{name}: {worst:.1e}");
     assert!(worst < TOLERANCE, "{name}: {worst:e}");
@@ -109,29 +131,64 @@ fn pinocchio_joint_torque_regressor() {
     against_pinocchio(&Panda, "panda");
 }
 
-/// `Y π` is the rigid bodies' τ: `inverse_dynamics` of PUMA 560, which has no actuator
-/// inertia, friction or springs in its reference description.
+/// A planar two-link arm with actuator inertia, a spring and friction on both joints, joint 2's
+/// Coulomb term smoothed with a run-time ε.
+#[derive(Dynamics)]
+#[dynamics(
+    regressor = true,
+    gravity = [0, -9.81, 0],
+    dh = [[q, 0, 0.7, 0], [q, 0, 0.5, 0]],
+    link(mass = 2, com = [-0.35, 0, 0], inertia = [0, 0.08, 0.08, 0, 0, 0],
+         actuator_inertia = 0.05, friction = (viscous = 0.3, coulomb = 1.5, offset = -0.2)),
+    link(mass = 1, com = [-0.25, 0, 0], inertia = [0, 0.02, 0.02, 0, 0, 0],
+         rotor_inertia = 0.001, gear_ratio = 10, spring = (4, 0.3),
+         friction = (viscous = fv2, coulomb = 0.8, smoothing = eps)),
+)]
+struct Rubbing {
+    fv2: f64,
+    eps: f64,
+}
+
+/// `Y π` plus the joints' columns is `inverse_dynamics` minus the spring torque, for PUMA 560
+/// and for an arm with every joint term, in motion and at rest.
 #[test]
 fn regressor_times_parameters_is_inverse_dynamics() {
-    let pi = Puma560.standard_parameters::<f64>();
     let (q, qd, qdd) = (
         [0.3, -1.2, 0.7, 2.0, -0.4, 1.1],
         [0.5; 6],
         [-1.0, 0.2, 0.9, -0.3, 1.5, 0.1],
     );
-    let y = Puma560.regressor(&q, &qd, &qdd);
-    let tau: Vec<f64> = (0..6)
-        .map(|i| {
-            (0..6)
-                .map(|j| (0..10).map(|k| y[i][j][k] * pi[j][k]).sum::<f64>())
-                .sum()
-        })
-        .collect();
+    let tau = torque(
+        &Puma560.regressor(&q, &qd, &qdd),
+        &Puma560.standard_parameters(),
+        &Puma560.joint_regressor(&qd, &qdd),
+        &Puma560.joint_parameters(),
+    );
     let expected = Puma560.inverse_dynamics(&q, &qd, &qdd);
     assert!(
         scaled_error(&tau, &expected) < TOLERANCE,
         "{tau:?} {expected:?}"
     );
+    let arm = Rubbing {
+        fv2: 0.4,
+        eps: 0.05,
+    };
+    assert_eq!(arm.joint_parameters::<f64>()[1], [0.1, 0.4, 0.8, 0.0]);
+    for qd in [[0.8, -0.02], [0.0, 0.0]] {
+        let (q, qdd) = ([0.4, -0.9], [0.7, 2.1]);
+        let tau = torque(
+            &arm.regressor(&q, &qd, &qdd),
+            &arm.standard_parameters(),
+            &arm.joint_regressor(&qd, &qdd),
+            &arm.joint_parameters(),
+        );
+        let mut expected = arm.inverse_dynamics(&q, &qd, &qdd);
+        expected[1] -= 4.0 * (q[1] - 0.3);
+        assert!(
+            scaled_error(&tau, &expected) < TOLERANCE,
+            "{tau:?} {expected:?}"
+        );
+    }
 }
 
 /// A two-link arm whose lengths, masses and gravity are struct fields.

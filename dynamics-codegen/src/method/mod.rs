@@ -313,9 +313,14 @@ mod tests {
         for &m in Method::ALL {
             assert_eq!(Method::from_name(m.name()), Some(m));
             assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
-            // Every method but friction's and the standard parameters' reads q.
+            // Every method reads q but friction's, the joints' regressor and the parameters.
             let reads_q = m.arguments().first() == Some(&super::Argument::Q);
-            let without_q = [Method::FrictionTorques, Method::StandardParameters];
+            let without_q = [
+                Method::FrictionTorques,
+                Method::JointRegressor,
+                Method::JointParameters,
+                Method::StandardParameters,
+            ];
             assert_eq!(reads_q, !without_q.contains(&m), "{m:?}");
             let template = [m.element_template(false), m.element_template(true)];
             let cites = template.iter().any(|t| t.contains("{equation}"));

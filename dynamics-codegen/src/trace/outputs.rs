@@ -108,6 +108,12 @@ impl Method {
                 Shape::Stack(eq.derivatives.as_ref().map_or(&[], |d| &d.inverse))
             }
             Method::Regressor => Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns)),
+            Method::JointRegressor => {
+                Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_columns))
+            }
+            Method::JointParameters => {
+                Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_parameters))
+            }
             Method::StandardParameters => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.parameters))
             }

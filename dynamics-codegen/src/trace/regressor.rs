@@ -10,7 +10,8 @@
 //! so the column of `π_jk` is that trace with `π_jk = 1` and every other placeholder 0
 //! ([`Graph::substitute`]), folded as it is rebuilt: no placeholder reaches the generated code.
 //! The standard parameters come from the description: `m`, `m c`, and the inertia about the
-//! centre of mass moved to the origin.
+//! centre of mass moved to the origin. The actuator inertia and the friction coefficients have
+//! a column each per joint, `[q̈_i, q̇_i, sign(q̇_i), 1]`, beside the links'.
 
 use super::expr::Expr;
 use super::tracer::Tracer;
@@ -31,6 +32,10 @@ pub struct RegressorEquations {
     pub columns: Vec<Vec<Vec<NodeId>>>,
     /// `parameters[j][k] = π_jk`, from the description.
     pub parameters: Vec<Vec<NodeId>>,
+    /// Row i: `[q̈_i, q̇_i, sign(q̇_i) or tanh(q̇_i / ε), 1]`.
+    pub joint_columns: Vec<Vec<NodeId>>,
+    /// Row i: `[I_act, f_v, f_c, f_0]` of joint i, from the description.
+    pub joint_parameters: Vec<Vec<NodeId>>,
 }
 
 impl Equations {
@@ -46,11 +51,14 @@ impl Equations {
             .iter()
             .map(|joint| ids(&link_parameters(&tracer.inertial(joint))))
             .collect();
+        let (joint_columns, joint_parameters) = joint_terms(&tracer, robot);
         let columns = columns(&mut graph.borrow_mut(), &tau);
         self.graph = graph.into_inner();
         self.regressor = Some(RegressorEquations {
             columns,
             parameters,
+            joint_columns,
+            joint_parameters,
         });
         self.families = self.families.with(Family::Regressor);
     }
@@ -75,6 +83,32 @@ fn placeholder_tau<'g>(tracer: &mut Tracer<'g>, robot: &Robot) -> Vec<NodeId> {
     let qdd = tracer.joint_vars(n, Var::Qdd);
     let gravity = tracer.gravity(robot);
     ids(&algo::rnea(&chain, &qd, &qdd, gravity))
+}
+
+/// Per joint, the columns `[q̈_i, q̇_i, sign(q̇_i), 1]` of its actuator inertia and friction
+/// coefficients (`tanh(q̇_i / ε)` for smoothed Coulomb friction, as `friction_torques` has it),
+/// and those coefficients.
+fn joint_terms(t: &Tracer<'_>, robot: &Robot) -> (Vec<Vec<NodeId>>, Vec<Vec<NodeId>>) {
+    let zero = t.num(Number::ZERO);
+    let one = t.num(Number::ONE);
+    let rows = robot.joints.iter().enumerate().map(|(i, joint)| {
+        let index = u16::try_from(i).unwrap_or(u16::MAX);
+        let (qd, qdd) = (t.var(Var::Qd(index)), t.var(Var::Qdd(index)));
+        let friction = joint.link.friction.as_ref();
+        let direction = match friction.and_then(|f| f.smoothing.as_ref()) {
+            None => t.sign(qd),
+            Some(eps) => t.tanh(qd * t.reciprocal(&t.value(eps))),
+        };
+        let coefficients = friction.map_or([zero; 3], |f| {
+            [t.value(&f.viscous), t.value(&f.coulomb), t.value(&f.offset)]
+        });
+        let actuator = t.value(&joint.link.actuator_inertia);
+        (
+            ids(&[qdd, qd, direction, one]),
+            ids(&[actuator, coefficients[0], coefficients[1], coefficients[2]]),
+        )
+    });
+    rows.unzip()
 }
 
 /// The placeholder of parameter `k` of link `j`.

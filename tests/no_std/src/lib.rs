@@ -68,6 +68,7 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: u
         .map_or(f32::NAN, |d| d.dqdd_dq[0][0] + d.dqdd_dqd[0][0]);
     let regressor = robot.regressor(q, qd, qdd)[0][N - 1][9];
     let parameters = robot.standard_parameters::<f32>()[N - 1][0];
+    let joints = robot.joint_regressor(qd, qdd)[0][2] + robot.joint_parameters::<f32>()[0][0];
     m[0][0]
         + c[N - 1][0]
         + cqd[0]
@@ -83,6 +84,7 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: u
         + forward
         + regressor
         + parameters
+        + joints
 }
 
 /// Inverse dynamics of both robots in double precision, and the derivatives of one.
