@@ -319,7 +319,8 @@ macro_rules! for_each_method {
             /// The rigid bodies' part of inverse dynamics is linear in each link's 10 standard
             /// parameters `π_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` (Pinocchio's
             /// `Inertia::toDynamicParameters` order), the first moment and the inertia tensor
-            /// (off-diagonal entries `−∫xy dm`) about the origin of link frame j, in its axes:
+            /// (off-diagonal entries `−∫xy dm`) about the origin of link frame j (the D-H frame,
+            /// or a URDF's link frame), in its axes:
             /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia's and friction's terms, linear
             /// in their coefficients (`joint_regressor`, `joint_parameters`), and the springs.
             trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra {
@@ -367,7 +368,8 @@ macro_rules! for_each_method {
                     }
                     /// The robot's standard parameters `π_j` as its description gives them, per
                     /// link `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` about the origin
-                    /// of link frame j (the D-H frame), in its axes.
+                    /// of link frame j (the D-H frame of a D-H table; a URDF's link frame), in its
+                    /// axes.
                     fn standard_parameters() -> link_parameters, nalgebra standard_parameters_na {
                         variant: StandardParameters,
                         equation: None,

@@ -1,8 +1,10 @@
 //! The joint torque regressor (`DynamicsRegressor`, opt-in with `regressor = true`) against
 //! Pinocchio's `computeJointTorqueRegressor` (`data/regressor/`, made by its `make.py`: the
 //! regressor in the link frames, the standard parameters from the descriptions, and the torque
-//! with the actuator inertia and friction columns): on the D-H reference robots and the Panda,
-//! at 10 samples each, in `f64`, scaled as max|a − b| / max(1, max|b|); and `f32` against `f64`.
+//! with the actuator inertia and friction columns): on the D-H reference robots, the Panda and
+//! the URDF robots, at 10 samples each, in `f64`, scaled as max|a − b| / max(1, max|b|); `Y π`
+//! against `inverse_dynamics`, with parameters and friction from struct fields; `f32` against
+//! `f64`.
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsRegressor};
@@ -36,6 +38,31 @@ robot!(Random1, "data/reference/robots/random1.json");
 robot!(Random2, "data/reference/robots/random2.json");
 robot!(Random5, "data/reference/robots/random5.json");
 robot!(Panda, "data/panda/robot.json");
+
+/// A unit struct deriving a URDF robot's chain, with its regressor.
+macro_rules! urdf_robot {
+    ($name:ident, $file:literal, $base:literal, $tip:literal) => {
+        #[derive(Dynamics)]
+        #[dynamics(urdf = $file, base = $base, tip = $tip, regressor = true)]
+        struct $name;
+    };
+}
+
+urdf_robot!(Ur5Urdf, "../robots/urdf/ur5.urdf", "base_link", "tool0");
+urdf_robot!(Ur10Urdf, "../robots/urdf/ur10.urdf", "base_link", "tool0");
+urdf_robot!(
+    PandaUrdf,
+    "../robots/urdf/panda.urdf",
+    "panda_link0",
+    "panda_link8"
+);
+urdf_robot!(Z1Urdf, "../robots/urdf/z1.urdf", "link00", "link06");
+urdf_robot!(
+    So101Urdf,
+    "../robots/urdf/so101.urdf",
+    "base_link",
+    "gripper_link"
+);
 
 /// Largest accepted scaled error.
 const TOLERANCE: f64 = 1e-10;
@@ -129,6 +156,16 @@ fn pinocchio_joint_torque_regressor() {
     against_pinocchio(&Random2, "random2");
     against_pinocchio(&Random5, "random5");
     against_pinocchio(&Panda, "panda");
+}
+
+/// The URDF robots: π about each URDF link frame's origin, in its axes, as Pinocchio's.
+#[test]
+fn pinocchio_joint_torque_regressor_of_urdf_robots() {
+    against_pinocchio(&Ur5Urdf, "ur5_urdf");
+    against_pinocchio(&Ur10Urdf, "ur10_urdf");
+    against_pinocchio(&PandaUrdf, "panda_urdf");
+    against_pinocchio(&Z1Urdf, "z1_urdf");
+    against_pinocchio(&So101Urdf, "so101_urdf");
 }
 
 /// A planar two-link arm with actuator inertia, a spring and friction on both joints, joint 2's

@@ -1,12 +1,15 @@
 //! The joint torque regressor (opt-in: traced only for a robot that asks for it,
 //! `regressor = true`): the rigid bodies' part of inverse dynamics, `τ = Σ_j Y_j(q, q̇, q̈) π_j`,
 //! with `π_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` about the origin of link
-//! frame j, in its axes (Pinocchio's `toDynamicParameters` order; off-diagonal entries `−∫xy dm`).
+//! frame j, in its axes (Pinocchio's `toDynamicParameters` order; off-diagonal entries `−∫xy dm`):
+//! the D-H frame of a robot given by its table, the file's frame of one given by joint frames or
+//! a URDF.
 //!
 //! Newton-Euler ([`algo::rnea`]) is traced once more, each link's body made of ten placeholders
-//! ([`Var::Inertial`]) and carried from link frame j to the chain's joint frame as the chain
-//! carries a described body ([`Body::from_inertial`]: turned by `Rotx(α_j)` and shifted by `a_j`
-//! in the standard convention, as it is in the modified one). τ is linear in the placeholders,
+//! ([`Var::Inertial`]) and carried from link frame j to D-H frame j (`Joint::link_pose`), then
+//! to the chain's joint frame as the chain carries a described body ([`Body::from_inertial`]:
+//! turned by `Rotx(α_j)` and shifted by `a_j` in the standard convention, as it is in the
+//! modified one). τ is linear in the placeholders,
 //! so the column of `π_jk` is that trace with `π_jk = 1` and every other placeholder 0
 //! ([`Graph::substitute`]), folded as it is rebuilt: no placeholder reaches the generated code.
 //! The standard parameters come from the description: `m`, `m c`, and the inertia about the
@@ -16,9 +19,9 @@
 use super::expr::Expr;
 use super::tracer::Tracer;
 use super::Equations;
-use crate::algo::{self, Body, Inertial, Mat3, RobotScalars, Scalar, V3};
+use crate::algo::{self, Body, Mat3, RobotScalars, Scalar, V3};
 use crate::method::Family;
-use crate::model::{Convention, Robot};
+use crate::model::{Convention, Joint, Pose, Robot};
 use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
@@ -49,7 +52,7 @@ impl Equations {
         let parameters = robot
             .joints
             .iter()
-            .map(|joint| ids(&link_parameters(&tracer.inertial(joint))))
+            .map(|joint| ids(&link_parameters(&tracer, joint)))
             .collect();
         let (joint_columns, joint_parameters) = joint_terms(&tracer, robot);
         let columns = columns(&mut graph.borrow_mut(), &tau);
@@ -71,18 +74,47 @@ fn placeholder_tau<'g>(tracer: &mut Tracer<'g>, robot: &Robot) -> Vec<NodeId> {
         let row = tracer.dh_row(j, joint);
         let pi: [Expr<'g>; PARAMETERS] =
             std::array::from_fn(|k| tracer.var(Var::Inertial(placeholder(j, k))));
+        let (rotation, origin) = link_pose(tracer, &joint.link_pose);
+        let in_dh_frame = carried(&body(&pi), &rotation, origin);
         let zero = row.a.zero();
-        let (shift, sin_alpha, cos_alpha) = match robot.convention {
-            Convention::Standard => (row.a, row.sin_alpha, row.cos_alpha),
-            Convention::Modified => (zero, zero, zero.one()),
+        chain.joints[j].body = match robot.convention {
+            Convention::Standard => carried(
+                &in_dh_frame,
+                &Mat3::rot_x(row.sin_alpha, row.cos_alpha),
+                V3::new(row.a, zero, zero),
+            ),
+            Convention::Modified => in_dh_frame,
         };
-        chain.joints[j].body = in_joint_frame(&pi, shift, sin_alpha, cos_alpha);
     }
     let n = robot.dof();
     let qd = tracer.joint_vars(n, Var::Qd);
     let qdd = tracer.joint_vars(n, Var::Qdd);
     let gravity = tracer.gravity(robot);
     ids(&algo::rnea(&chain, &qd, &qdd, gravity))
+}
+
+/// `π` of link `joint`, about the origin of its link frame, in its axes: the description's
+/// body in D-H frame i, carried back into the link frame (the same frame for a D-H table).
+fn link_parameters<'g>(tracer: &Tracer<'g>, joint: &Joint) -> [Expr<'g>; PARAMETERS] {
+    let link = tracer.inertial(joint);
+    let zero = link.mass.zero();
+    let in_dh_frame = Body::from_inertial(&link, zero, zero, zero.one());
+    let (rotation, origin) = link_pose(tracer, &joint.link_pose);
+    let back = in_dh_frame.moved_by(origin.scale(-zero.one()));
+    let turned = carried(&back, &rotation.transpose(), V3::zero(zero));
+    let [xx, yy, zz, xy, xz, yz] = turned.inertia;
+    let h = turned.h;
+    [turned.mass, h.x, h.y, h.z, xx, xy, yy, xz, yz, zz]
+}
+
+/// The link frame in D-H frame i: its axes (columns) and its origin.
+fn link_pose<'g>(tracer: &Tracer<'g>, pose: &Pose) -> (Mat3<Expr<'g>>, V3<Expr<'g>>) {
+    let v = |x| tracer.value(x);
+    let t = &pose.translation;
+    let rotation = Mat3 {
+        m: pose.rotation.each_ref().map(|row| row.each_ref().map(v)),
+    };
+    (rotation, V3::new(v(&t[0]), v(&t[1]), v(&t[2])))
 }
 
 /// Per joint, the columns `[q̈_i, q̇_i, sign(q̇_i), 1]` of its actuator inertia and friction
@@ -116,33 +148,25 @@ fn placeholder(j: usize, k: usize) -> u16 {
     u16::try_from(j * PARAMETERS + k).unwrap_or(u16::MAX)
 }
 
-/// The body of `π` (about link frame j's origin, in its axes) about the joint frame's origin:
-/// turned by `Rotx(α)`, then seen from the origin `shift` along x before it.
-fn in_joint_frame<S: Scalar>(
-    pi: &[S; PARAMETERS],
-    shift: S,
-    sin_alpha: S,
-    cos_alpha: S,
-) -> Body<S> {
+/// The body of `π`, about the origin of the frame it is given in, in its axes.
+fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
     let [m, mx, my, mz, ixx, ixy, iyy, ixz, iyz, izz] = *pi;
-    let rot = Mat3::rot_x(sin_alpha, cos_alpha);
-    let turned = Body {
+    Body {
         mass: m,
-        h: rot.mul_vec(V3::new(mx, my, mz)),
-        inertia: Mat3::symmetric([ixx, iyy, izz, ixy, ixz, iyz]).congruence(&rot),
-    };
-    let zero = shift.zero();
-    turned.moved_by(V3::new(shift, zero, zero))
+        h: V3::new(mx, my, mz),
+        inertia: [ixx, iyy, izz, ixy, ixz, iyz],
+    }
 }
 
-/// `π` of a described link: `m`, `m c`, and `I_O = I_C + m(cᵀc·1 − c cᵀ)` (the tensor's
-/// entries, off-diagonal `−∫xy dm`), in `π`'s order.
-fn link_parameters<S: Scalar>(link: &Inertial<S>) -> [S; PARAMETERS] {
-    let zero = link.mass.zero();
-    let origin = Body::from_inertial(link, zero, zero, zero.one());
-    let [xx, yy, zz, xy, xz, yz] = origin.inertia;
-    let h = origin.h;
-    [origin.mass, h.x, h.y, h.z, xx, xy, yy, xz, yz, zz]
+/// `body`, given in a frame whose axes are `rotation` and whose origin is `origin` in another
+/// frame, about that other frame's origin and in its axes.
+fn carried<S: Scalar>(body: &Body<S>, rotation: &Mat3<S>, origin: V3<S>) -> Body<S> {
+    let turned = Body {
+        mass: body.mass,
+        h: rotation.mul_vec(body.h),
+        inertia: Mat3::symmetric(body.inertia).congruence(rotation),
+    };
+    turned.moved_by(origin)
 }
 
 /// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0.
