@@ -3,11 +3,18 @@
 //! regressor in the link frames, the standard parameters from the descriptions, and the torque
 //! with the actuator inertia and friction columns): on the D-H reference robots, the Panda and
 //! the URDF robots, at 10 samples each, in `f64`, scaled as max|a − b| / max(1, max|b|); `Y π`
-//! against `inverse_dynamics`, with parameters and friction from struct fields; `f32` against
-//! `f64`.
+//! against `inverse_dynamics`, with parameters and friction from struct fields; on random
+//! robots of 1 to 7 joints ([`dynamics_tests::random::case`], the expression graph
+//! interpreted), `Y π` plus the joints' columns against the textbook's O(n⁴) method
+//! (`dynamics-reference`) minus the springs; `f32` against `f64`.
 
+use dynamics_codegen::model::Value as ModelValue;
+use dynamics_codegen::symbolic::Var;
+use dynamics_codegen::{Family, FamilySet};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsRegressor};
+use dynamics_tests::random::case;
+use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 use serde_json::Value;
 
 /// A unit struct deriving the robot of a reference description, with its regressor.
@@ -296,4 +303,73 @@ fn f32_follows_f64() {
         .map(|&x| f64::from(x))
         .collect();
     assert!(scaled_error(&narrow, &wide) < 1e-5);
+}
+
+/// A literal of the model as a number.
+fn number(v: &ModelValue) -> f64 {
+    v.exact().map_or(f64::NAN, |x| x.to_f64())
+}
+
+#[test]
+fn random_robots_against_the_textbook_method() {
+    let config = Config {
+        cases: 32,
+        failure_persistence: None,
+        rng_algorithm: RngAlgorithm::ChaCha,
+        rng_seed: RngSeed::Fixed(27),
+        ..Config::default()
+    };
+    let result = TestRunner::new(config).run(&case(), |c| {
+        let robot = c.robot.model();
+        let mut eq = dynamics_codegen::derive(&robot);
+        eq.add_families(&robot, FamilySet::default().with(Family::Regressor));
+        let constants = eq.graph.eval(|_| 0.0);
+        let offset =
+            |i: u16| eq.angle_offsets[usize::from(i)].map_or(0.0, |id| constants[id.index()]);
+        let values = eq.graph.eval(|v| match v {
+            Var::Q(i) => c.q[usize::from(i)],
+            Var::SinQ(i) => (c.q[usize::from(i)] + offset(i)).sin(),
+            Var::CosQ(i) => (c.q[usize::from(i)] + offset(i)).cos(),
+            Var::Qd(i) => c.qd[usize::from(i)],
+            Var::Qdd(i) => c.qdd[usize::from(i)],
+            Var::Param(_) | Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
+        });
+        let r = eq.regressor.as_ref().expect("traced");
+        let at = |id: &dynamics_codegen::symbolic::NodeId| values[id.index()];
+        let n = eq.dof;
+        let tau: Vec<f64> = (0..n)
+            .map(|i| {
+                let links: f64 = (0..n)
+                    .map(|j| {
+                        (0..10).map(move |k| at(&r.columns[i][j][k]) * at(&r.parameters[j][k]))
+                    })
+                    .map(Iterator::sum::<f64>)
+                    .sum();
+                let joint =
+                    (0..4).map(|k| at(&r.joint_columns[i][k]) * at(&r.joint_parameters[i][k]));
+                links + joint.sum::<f64>()
+            })
+            .collect();
+        let reference = c.robot.reference().inverse_dynamics(&c.q, &c.qd, &c.qdd);
+        let expected: Vec<f64> = robot
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(i, joint)| {
+                let spring = joint.link.spring.as_ref();
+                let spring =
+                    spring.map_or(0.0, |s| number(&s.stiffness) * (c.q[i] - number(&s.rest)));
+                reference[i] - spring
+            })
+            .collect();
+        let error = scaled_error(&tau, &expected);
+        proptest::prop_assert!(
+            error < 1e-10,
+            "error {error:e}: {tau:?} against {expected:?}"
+        );
+        Ok(())
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
 }
