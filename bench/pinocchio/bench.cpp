@@ -27,7 +27,8 @@
 //      against the sample's qdd and Minv (mirrored) by Minv M = I, on every sample. The
 //      derivatives: `dtau` (computeRNEADerivatives at (q, qd, qdd), which also fills M) and,
 //      where M is positive definite, `dqdd` (computeABADerivatives at (q, qd, tau), which also
-//      gives qdd and Minv).
+//      gives qdd and Minv). The joint torque regressor `Y` (computeJointTorqueRegressor at
+//      (q, qd, qdd), n × 10 n, each link's ten columns about Pinocchio's joint frame).
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -39,7 +40,9 @@
 // (Pinocchio then generated, then generated then Pinocchio, ...), so that both see the same load
 // of this shared machine. The kinematics (fk, J, JtF) are checked against Pinocchio's on every
 // sample, with JtF's wrench the first six values of qdd; fd and Minv as Pinocchio's are (fd's
-// third input is the sample's tau); dtau and dqdd against Pinocchio's derivatives. Each line
+// third input is the sample's tau); dtau and dqdd against Pinocchio's derivatives; Y against
+// Pinocchio's regressor where the link frames are known (a D-H model: Y_pinocchio T, T the
+// parameters of each link frame carried to its joint frame), not for a URDF model. Each line
 // then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
@@ -67,6 +70,7 @@
 #include "pinocchio/algorithm/crba.hpp"
 #include "pinocchio/algorithm/frames.hpp"
 #include "pinocchio/algorithm/kinematics.hpp"
+#include "pinocchio/algorithm/regressor.hpp"
 #include "pinocchio/algorithm/rnea.hpp"
 #include "pinocchio/algorithm/rnea-derivatives.hpp"
 
@@ -368,8 +372,9 @@ static Eigen::Vector3d vec3(const json::Value & v)
 }
 
 // One Pinocchio joint per D-H joint, as in "How the reference models were built". `hand` gets
-// the hand frame's placement on the last joint.
-static Model build_model(const json::Value & desc, SE3 & hand)
+// the hand frame's placement on the last joint, `links` each link frame's placement on its joint
+// (the D-H post transform: the identity in the modified convention).
+static Model build_model(const json::Value & desc, SE3 & hand, std::vector<SE3> & links)
 {
   Model model;
   const std::string convention = desc.has("convention") ? desc["convention"].string() : "standard";
@@ -428,6 +433,7 @@ static Model build_model(const json::Value & desc, SE3 & hand)
     model.appendBodyToJoint(jid, post.act(link), SE3::Identity());
 
     armature[i] = num_or(j, "actuator_inertia", 0.0);
+    links.push_back(post);
     post_prev = post;
     parent = jid;
   }
@@ -602,6 +608,51 @@ static Eigen::MatrixXd symmetric(Eigen::MatrixXd m)
   return m;
 }
 
+// The skew matrix of v: S(v) w = v × w.
+static Eigen::Matrix3d skew(const Eigen::Vector3d & v)
+{
+  Eigen::Matrix3d S;
+  S << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return S;
+}
+
+// T, 10 × 10: a link's parameters π = [m, hx, hy, hz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]
+// (toDynamicParameters' order: first moment h = m c, inertia about the frame's origin) about
+// its link frame, carried to its joint frame, the link frame at jMl = (R, p): m' = m,
+// h' = R h + m p, I' = R I Rᵀ − S(Rh) S(p) − S(p) S(Rh) − m S(p)². Linear, so column k is
+// the image of the k-th unit vector; Pinocchio's regressor times T is the regressor of π.
+static Eigen::Matrix<double, 10, 10> link_to_joint(const SE3 & jMl)
+{
+  const Eigen::Matrix3d R = jMl.rotation();
+  const Eigen::Matrix3d Sp = skew(jMl.translation());
+  Eigen::Matrix<double, 10, 10> T;
+  for (int k = 0; k < 10; ++k)
+  {
+    Eigen::Matrix<double, 10, 1> e = Eigen::Matrix<double, 10, 1>::Unit(k);
+    const double m = e[0];
+    const Eigen::Vector3d h(e[1], e[2], e[3]);
+    Eigen::Matrix3d I;
+    I << e[4], e[5], e[7], e[5], e[6], e[8], e[7], e[8], e[9];
+    const Eigen::Vector3d Rh = R * h;
+    const Eigen::Vector3d h2 = Rh + m * jMl.translation();
+    const Eigen::Matrix3d I2 = R * I * R.transpose() - skew(Rh) * Sp - Sp * skew(Rh) - m * Sp * Sp;
+    T.col(k) << m, h2, I2(0, 0), I2(0, 1), I2(1, 1), I2(0, 2), I2(1, 2), I2(2, 2);
+  }
+  return T;
+}
+
+// Pinocchio's regressor in link frames: each link's ten columns times its T.
+static Eigen::MatrixXd regressor_in_link_frames(const Eigen::MatrixXd & Y, const std::vector<SE3> & links)
+{
+  Eigen::MatrixXd out(Y.rows(), Y.cols());
+  for (std::size_t j = 0; j < links.size(); ++j)
+  {
+    const auto c = static_cast<Eigen::Index>(10 * j);
+    out.middleCols<10>(c) = Y.middleCols<10>(c) * link_to_joint(links[j]);
+  }
+  return out;
+}
+
 // Pinocchio's aba and computeMinverse on every sample: aba(q, qd, tau) = qdd and Minv M = I.
 static void check_forward(const std::string & robot, const Model & model, const json::Value & samples)
 {
@@ -730,11 +781,12 @@ static void check_generated(
   const json::Value & samples,
   const Model & model,
   pinocchio::FrameIndex hand,
-  bool forward)
+  bool forward,
+  const std::vector<SE3> & links)
 {
   const std::size_t n = gen.dof(robot.c_str());
   Data data(model);
-  std::vector<double> out(std::max(3 * n * n, std::size_t(12)));
+  std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
   auto rows = [&](std::size_t r, std::size_t c) {
     Eigen::MatrixXd m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
     for (std::size_t i = 0; i < r; ++i)
@@ -785,6 +837,12 @@ static void check_generated(
     gen.get(robot, "dtau")(q.data(), v.data(), a.data(), out.data());
     check(robot, "dtau/dq" + at + " against Pinocchio", block(0), data.dtau_dq, s);
     check(robot, "dtau/dqd" + at + " against Pinocchio", block(1), data.dtau_dv, s);
+    gen.get(robot, "Y")(q.data(), v.data(), a.data(), out.data());
+    if (!links.empty())
+    {
+      const Eigen::MatrixXd Y = pinocchio::computeJointTorqueRegressor(model, data, q, v, a);
+      check(robot, "Y" + at + " against Pinocchio", rows(n, 10 * n), regressor_in_link_frames(Y, links), s);
+    }
     if (!forward)
       continue;
     const Eigen::VectorXd tau = vecn(sample["tau"]);
@@ -831,6 +889,9 @@ int main(int argc, char ** argv)
     json::Value file;
     Model model;
     pinocchio::FrameIndex hand;
+    // Each link frame's placement on its joint, for a D-H model (none for a URDF model, whose
+    // link frames the generator derives: its regressor is timed, not checked).
+    std::vector<SE3> links;
     try
     {
       file = json::parse_file(path);
@@ -847,7 +908,7 @@ int main(int argc, char ** argv)
                     * SE3(Eigen::Matrix3d(tip.topLeftCorner(3, 3)), Eigen::Vector3d(tip.topRightCorner(3, 1)));
       }
       else
-        model = build_model(file["description"], placement);
+        model = build_model(file["description"], placement, links);
       hand = add_hand_frame(model, placement);
     }
     catch (const std::exception & e)
@@ -870,7 +931,9 @@ int main(int argc, char ** argv)
     {
       try
       {
-        check_generated(robot, *generated, samples, model, hand, forward);
+        check_generated(robot, *generated, samples, model, hand, forward, links);
+        if (links.empty())
+          std::fprintf(stderr, "%s: Y timed, not checked: a URDF model, its link frames not known here\n", robot.c_str());
       }
       catch (const std::exception & e)
       {
@@ -891,7 +954,7 @@ int main(int argc, char ** argv)
     Data data(model);
 
     const auto n = static_cast<std::size_t>(qs[0].size());
-    std::vector<double> out(std::max(3 * n * n, std::size_t(12)));
+    std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, model.nv);
     Eigen::VectorXd JtF(model.nv);
     // Pinocchio's `function`, and the generated one in turn with it when it is loaded, the
@@ -945,6 +1008,9 @@ int main(int argc, char ** argv)
     time("dtau", [&](std::size_t k) {
       pinocchio::computeRNEADerivatives(model, data, qs[k], vs[k], as[k]);
       return data.dtau_dq(0, 0);
+    });
+    time("Y", [&](std::size_t k) {
+      return pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k])(0, 0);
     });
     if (forward)
     {

@@ -37,7 +37,8 @@ pub const ROBOTS: [&str; 7] = [
 #[dynamics(
     file = "../tests/data/reference/robots/puma560.json",
     check_inertia = false,
-    derivatives = true
+    derivatives = true,
+    regressor = true
 )]
 pub struct Puma560;
 
@@ -47,32 +48,46 @@ pub struct Puma560;
 #[dynamics(
     file = "../tests/data/reference/robots/stanford.json",
     check_inertia = false,
-    derivatives = true
+    derivatives = true,
+    regressor = true
 )]
 pub struct Stanford;
 
 /// The UR5 (Robotics Toolbox parameters, point masses): RRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../tests/data/reference/robots/ur5.json", derivatives = true)]
+#[dynamics(
+    file = "../tests/data/reference/robots/ur5.json",
+    derivatives = true,
+    regressor = true
+)]
 pub struct Ur5;
 
 /// A seeded random robot with general inertial parameters: PRPRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
 #[dynamics(
     file = "../tests/data/reference/robots/random5.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 )]
 pub struct Random5;
 
 /// The Franka Emika Panda arm (modified D-H, inertias from its URDF): RRRRRRR.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../tests/data/panda/robot.json", derivatives = true)]
+#[dynamics(
+    file = "../tests/data/panda/robot.json",
+    derivatives = true,
+    regressor = true
+)]
 pub struct Panda;
 
 /// The UR5 of `robots/urdf/ur5.urdf` as a modified D-H table, its link inertials re-expressed in
 /// the D-H frames (`tests/data/urdf/twins.py`): RRRRRR. Not the Robotics Toolbox's [`Ur5`].
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(file = "../robots/ur5_urdf_dh.toml", derivatives = true)]
+#[dynamics(
+    file = "../robots/ur5_urdf_dh.toml",
+    derivatives = true,
+    regressor = true
+)]
 pub struct Ur5Dh;
 
 /// The UR5 derived from its URDF (`robots/urdf/ur5.urdf`, base_link to tool0): the robot of
@@ -82,7 +97,8 @@ pub struct Ur5Dh;
     urdf = "../robots/urdf/ur5.urdf",
     base = "base_link",
     tip = "tool0",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 )]
 pub struct Ur5Urdf;
 

@@ -9,16 +9,18 @@
 //! pose), `J` (the hand's Jacobian in base axes) and `JtF` (the joint torques for a wrench in
 //! base axes, `T = Jᵀ F`); the forward dynamics `fd` and `Minv` (M⁻¹), NaN where M is not
 //! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
-//! dynamics, NaN where M is not positive definite).
+//! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`.
 
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
-use dynamics_runtime::DynamicsDerivatives;
+use dynamics_runtime::{DynamicsDerivatives, DynamicsRegressor};
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
 /// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
 /// `[R | p]` for `fk`, 6 × n for `J`, `∂τ/∂q` then `∂τ/∂q̇` for `dtau` (2 n × n), `∂q̈/∂q`,
-/// `∂q̈/∂q̇`, `∂q̈/∂τ` for `dqdd` (3 n × n), n for the others. `JtF` reads the wrench
+/// `∂q̈/∂q̇`, `∂q̈/∂τ` for `dqdd` (3 n × n), the n × 10 n rows of the regressor for `Y`
+/// (row i: link 1's ten columns, then link 2's, ...: `Y[i][j][k]` at `(i n + j) 10 + k`, Pinocchio's
+/// `computeJointTorqueRegressor` layout), n for the others. `JtF` reads the wrench
 /// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
 /// `dqdd` the joint torques `tau`.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
@@ -44,7 +46,7 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
 /// The timed functions of one `N`-joint robot type, as C functions.
 struct Functions<R, const N: usize>(core::marker::PhantomData<R>);
 
-impl<R: DynamicsDerivatives<N> + Default, const N: usize> Functions<R, N> {
+impl<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize> Functions<R, N> {
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
@@ -147,6 +149,16 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize> Functions<R, N> {
         }
     }
 
+    unsafe extern "C" fn regressor(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (room for n × 10 n values at `out`).
+        unsafe {
+            let y = R::default().regressor(&input(q), &input(qd), &input(qdd));
+            for (i, row) in y.into_iter().enumerate() {
+                output_rows(out.add(i * N * 10), row);
+            }
+        }
+    }
+
     fn get(function: &[u8]) -> Option<Function> {
         Some(match function {
             b"tau" => Self::tau,
@@ -161,6 +173,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize> Functions<R, N> {
             b"Minv" => Self::mass_inverse,
             b"dtau" => Self::inverse_derivatives,
             b"dqdd" => Self::forward_derivatives,
+            b"Y" => Self::regressor,
             _ => return None,
         })
     }
@@ -192,7 +205,7 @@ unsafe fn output_rows<const COLUMNS: usize, const ROWS: usize>(
 /// A robot's number of joints and its function lookup.
 type Robot = (usize, fn(&[u8]) -> Option<Function>);
 
-fn entry<R: DynamicsDerivatives<N> + Default, const N: usize>() -> Robot {
+fn entry<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize>() -> Robot {
     (N, Functions::<R, N>::get)
 }
 
@@ -218,7 +231,7 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`, or `fk`, `J`,
-/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`) of `robot`
+/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`, `Y`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
@@ -253,11 +266,11 @@ mod tests {
     use super::*;
     use dynamics_bench::{samples, Sample, ROBOTS};
 
-    const FUNCTIONS: [&str; 12] = [
-        "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd",
+    const FUNCTIONS: [&str; 13] = [
+        "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y",
     ];
-    /// Room for the largest output, `dqdd`'s 3 × 7 × 7 values.
-    const ROOM: usize = 160;
+    /// Room for the largest output, `Y`'s 7 × 70 values.
+    const ROOM: usize = 512;
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -277,7 +290,7 @@ mod tests {
     fn call<const N: usize>(robot: &str, function: &str, s: &Sample<N>) -> [f64; ROOM] {
         let f = lookup(robot, function).expect("a known function");
         let mut out = [f64::NAN; ROOM];
-        // SAFETY: N inputs each, room for 3 N × N ≤ ROOM outputs.
+        // SAFETY: N inputs each, room for 10 N × N ≤ ROOM outputs.
         unsafe {
             f(
                 s.q.as_ptr(),
@@ -289,7 +302,7 @@ mod tests {
         out
     }
 
-    fn direct<R: DynamicsDerivatives<N>, const N: usize>(
+    fn direct<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
         r: &R,
         function: &str,
         s: &Sample<N>,
@@ -327,13 +340,17 @@ mod tests {
                 .map_or(vec![f64::NAN; 3 * N * N], |d| {
                     [rows(d.dqdd_dq), rows(d.dqdd_dqd), rows(d.dqdd_dtau)].concat()
                 }),
+            "Y" => {
+                let y = r.regressor(&s.q, &s.qd, &s.qdd);
+                y.iter().flatten().flatten().copied().collect()
+            }
             _ => unreachable!(),
         }
     }
 
     /// Every function of `robot` through the C ABI equals the trait method, writes nothing past
     /// its output, and its `tau` matches the reference data.
-    fn check<R: DynamicsDerivatives<N>, const N: usize>(r: &R, robot: &str) {
+    fn check<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(r: &R, robot: &str) {
         assert_eq!(dof(robot), N, "{robot}");
         for s in samples::<N>(robot) {
             for function in FUNCTIONS {

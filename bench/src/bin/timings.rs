@@ -30,6 +30,7 @@
 //! | `Minv` | `mass_matrix_inverse(&q)` |
 //! | `dtau` | `inverse_dynamics_derivatives(&q, &qd, &qdd)` |
 //! | `dqdd` | `forward_dynamics_derivatives(&q, &qd, &qdd)` (the sample's q̈ as torques) |
+//! | `Y` | `regressor(&q, &qd, &qdd)` (the joint torque regressor) |
 //!
 //! With `--all`, three more for context, computed from the same description:
 //!
@@ -88,11 +89,11 @@ use std::time::Instant;
 
 use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, Ur5Urdf, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
-use dynamics_runtime::{Dynamics, DynamicsDerivatives};
+use dynamics_runtime::{Dynamics, DynamicsDerivatives, DynamicsRegressor};
 
 /// The generated methods, timed by default.
-const GENERATED: [&str; 12] = [
-    "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd",
+const GENERATED: [&str; 13] = [
+    "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y",
 ];
 /// The other implementations, timed with `--all`.
 const EXTRA: [&str; 3] = ["tau_reference", "tau_rnea", "M_crba"];
@@ -208,7 +209,7 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 /// Times (or calls, in [`Mode::Calls`]) `function` of `robot`.
-fn measure<R: DynamicsDerivatives<N>, const N: usize>(
+fn measure<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
     robot: &R,
     others: &Others,
     samples: &[Sample<N>],
@@ -240,6 +241,7 @@ fn measure<R: DynamicsDerivatives<N>, const N: usize>(
         "dqdd" => drive(s, p, mode, |x| {
             robot.forward_dynamics_derivatives(&x.q, &x.qd, &x.qdd)
         }),
+        "Y" => drive(s, p, mode, |x| robot.regressor(&x.q, &x.qd, &x.qdd)),
         "tau_reference" => drive(s, SLOW_PROTOCOL, mode, |x| {
             others.book.inverse_dynamics(&x.q, &x.qd, &x.qdd)
         }),
@@ -294,7 +296,7 @@ fn sanity<R: Dynamics<N>, const N: usize>(
 }
 
 /// Runs the selected functions of one robot; `false` if its sanity check failed.
-fn run<R: DynamicsDerivatives<N>, const N: usize>(
+fn run<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
     robot: &R,
     name: &str,
     functions: &[&str],
@@ -343,7 +345,7 @@ usage: timings [--all] [--fastest] [--robot ROBOT] [--function FUNCTION]
   --all          also time tau_reference, tau_rnea and M_crba
   --fastest      the fastest of 300 batches of 2,000 calls, not the median of 31 of 20,000
   --robot R      only robot R: puma560, stanford, ur5, random5, panda, ur5_dh, ur5_urdf
-  --function F   only function F: tau, M, g, C, h, fk, J, JtF, tau_reference, tau_rnea, M_crba
+  --function F   only function F: tau, M, g, C, h, fk, J, JtF, fd, Minv, dtau, dqdd, Y, tau_reference, tau_rnea, M_crba
   --calls N      make exactly N calls of one function, print nothing (for callgrind)";
 
 fn parse_args() -> Result<Args, String> {
