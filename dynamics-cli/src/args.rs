@@ -73,9 +73,7 @@ impl FromStr for Tool {
 /// The opt-in families of methods a command generates, as the attribute asks for them.
 #[derive(Args, Debug)]
 pub struct Families {
-    /// Also these opt-in families of methods, as `#[dynamics(..., FAMILY = true)]` asks for
-    /// them (comma-separated or repeated): derivatives
-    #[arg(long = "with", value_name = "FAMILY", value_delimiter = ',', value_parser = opt_in_family)]
+    #[arg(long = "with", value_name = "FAMILY", value_delimiter = ',', value_parser = opt_in_family, help = with_help())]
     pub with: Vec<Family>,
     /// The same as `--with derivatives`
     #[arg(long)]
@@ -90,6 +88,14 @@ impl Families {
         with.chain(shorthand)
             .fold(FamilySet::default(), FamilySet::with)
     }
+}
+
+/// The help of `--with`, naming the opt-in families of the method table.
+fn with_help() -> String {
+    let names = Family::opt_in_names().join(", ");
+    format!(
+        "Also these opt-in families of methods, as `#[dynamics(..., FAMILY = true)]` asks for them (comma-separated or repeated): {names}"
+    )
 }
 
 /// An opt-in family's name.
