@@ -1,5 +1,6 @@
 //! Integration tests of the workspace (see `tests/`), and the helpers they share:
-//! [`random`], proptest strategies for random robots and states; [`book`], the harness that
+//! [`random`], proptest strategies for random robots and states; [`interpret`], their
+//! expression graph evaluated at a state; [`book`], the harness that
 //! checks the generated code against the book's worked examples; [`printed`], the book's
 //! printed equations parsed into exact polynomials; [`mod@reference`], the comparison with a
 //! reference data file of `tests/data/`; [`robots`], the robots of that data, derived once. The helpers that the generator's and the
@@ -8,6 +9,7 @@
 //! depend on this one without a cycle.
 
 pub mod book;
+pub mod interpret;
 pub mod printed;
 pub mod random;
 pub mod reference;

@@ -12,9 +12,9 @@
 //!   `∂τ/∂q` and `∂τ/∂q̇` against central differences of the textbook's O(n⁴) method
 //!   (`dynamics-reference`), an implementation that shares no code with the generator.
 
-use dynamics_codegen::symbolic::Var;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsDerivatives, NotPositiveDefinite};
+use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{flat, matrix, samples_counted, vector};
 use dynamics_tests::robots::{NikuPolar, Panda, Puma560, Rubbing, Stanford};
@@ -204,17 +204,14 @@ fn random_robots_against_the_textbook_method() {
         let mut eq = dynamics_codegen::derive(&c.robot.model());
         eq.add_derivatives();
         let n = eq.dof;
-        let constants = eq.graph.eval(|_| 0.0);
-        let offset =
-            |i: u16| eq.angle_offsets[usize::from(i)].map_or(0.0, |id| constants[id.index()]);
-        let values = eq.graph.eval(|v| match v {
-            Var::Q(i) => c.q[usize::from(i)],
-            Var::SinQ(i) => (c.q[usize::from(i)] + offset(i)).sin(),
-            Var::CosQ(i) => (c.q[usize::from(i)] + offset(i)).cos(),
-            Var::Qd(i) => c.qd[usize::from(i)],
-            Var::Qdd(i) => c.qdd[usize::from(i)],
-            Var::Param(_) | Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
-        });
+        let tau = vec![0.0; n];
+        let state = State {
+            q: &c.q,
+            qd: &c.qd,
+            qdd: &c.qdd,
+            tau: &tau,
+        };
+        let values = evaluate(&eq, state);
         let derivatives = eq.derivatives.as_ref().expect("traced");
         let reference = c.robot.reference();
         for (block, by_velocity) in derivatives.inverse.iter().zip([false, true]) {

@@ -13,10 +13,10 @@
 //!   of the reference data, whose last link has no inertia about its axis (Pinocchio's M has
 //!   `M66 = 0`), gets it at every sample.
 
-use dynamics_codegen::symbolic::Var;
 use dynamics_reference::nalgebra::DMatrix;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
+use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{flat, matrix, samples, samples_counted, vector};
 use dynamics_tests::robots::{
@@ -243,19 +243,14 @@ fn random_robots() {
     let result = TestRunner::new(config).run(&case(), |c| {
         let eq = dynamics_codegen::derive(&c.robot.model());
         let n = eq.dof;
-        let constants = eq.graph.eval(|_| 0.0);
-        let offset =
-            |i: u16| eq.angle_offsets[usize::from(i)].map_or(0.0, |id| constants[id.index()]);
         let at = |tau: &[f64]| {
-            eq.graph.eval(|v| match v {
-                Var::Q(i) => c.q[usize::from(i)],
-                Var::SinQ(i) => (c.q[usize::from(i)] + offset(i)).sin(),
-                Var::CosQ(i) => (c.q[usize::from(i)] + offset(i)).cos(),
-                Var::Qd(i) => c.qd[usize::from(i)],
-                Var::Qdd(i) => c.qdd[usize::from(i)],
-                Var::Tau(i) => tau[usize::from(i)],
-                Var::Param(_) | Var::Wrench(_) | Var::Inertial(_) => 0.0,
-            })
+            let state = State {
+                q: &c.q,
+                qd: &c.qd,
+                qdd: &c.qdd,
+                tau,
+            };
+            evaluate(&eq, state)
         };
         let values = at(&vec![0.0; n]);
         let tau: Vec<f64> = eq.tau.iter().map(|id| values[id.index()]).collect();

@@ -26,9 +26,10 @@
 use dynamics_reference::scaled_error;
 use std::cell::RefCell;
 
-use dynamics_codegen::symbolic::{NodeId, Var};
+use dynamics_codegen::symbolic::NodeId;
 use dynamics_codegen::Equations;
 use dynamics_reference::nalgebra::{DMatrix, DVector};
+use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::{case, Case, RobotSpec};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestError, TestRunner};
@@ -66,8 +67,6 @@ fn check(seed: u64, test: impl Fn(&Case) -> Result<(), TestCaseError>) {
 /// way the emitted code does.
 struct Generated {
     eq: Equations,
-    /// Angle offset of each joint's `sin`/`cos` inputs (0 where it was folded).
-    offsets: Vec<f64>,
 }
 
 /// The values of every node of the graph at one state.
@@ -75,27 +74,20 @@ struct Values(Vec<f64>);
 
 impl Generated {
     fn new(robot: &RobotSpec) -> Generated {
-        let eq = dynamics_codegen::derive(&robot.model());
-        // The offsets are constant nodes: their values do not depend on the inputs.
-        let constants = eq.graph.eval(|_| 0.0);
-        let offsets = eq
-            .angle_offsets
-            .iter()
-            .map(|o| o.map_or(0.0, |id| constants[id.index()]))
-            .collect();
-        Generated { eq, offsets }
+        Generated {
+            eq: dynamics_codegen::derive(&robot.model()),
+        }
     }
 
     fn at(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> Values {
-        Values(self.eq.graph.eval(|v| match v {
-            Var::Q(i) => q[usize::from(i)],
-            Var::SinQ(i) => (q[usize::from(i)] + self.offsets[usize::from(i)]).sin(),
-            Var::CosQ(i) => (q[usize::from(i)] + self.offsets[usize::from(i)]).cos(),
-            Var::Qd(i) => qd[usize::from(i)],
-            Var::Qdd(i) => qdd[usize::from(i)],
-            Var::Param(k) => panic!("the robot has no struct fields, yet parameter {k} appears"),
-            Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
-        }))
+        let tau = self.zeros();
+        let state = State {
+            q,
+            qd,
+            qdd,
+            tau: &tau,
+        };
+        Values(evaluate(&self.eq, state))
     }
 
     fn zeros(&self) -> Vec<f64> {

@@ -9,10 +9,10 @@
 //! (`dynamics-reference`) minus the springs; `f32` against `f64`.
 
 use dynamics_codegen::model::Value as ModelValue;
-use dynamics_codegen::symbolic::Var;
 use dynamics_codegen::{Family, FamilySet};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsRegressor};
+use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::case;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 use serde_json::Value;
@@ -323,17 +323,14 @@ fn random_robots_against_the_textbook_method() {
         let robot = c.robot.model();
         let mut eq = dynamics_codegen::derive(&robot);
         eq.add_families(&robot, FamilySet::default().with(Family::Regressor));
-        let constants = eq.graph.eval(|_| 0.0);
-        let offset =
-            |i: u16| eq.angle_offsets[usize::from(i)].map_or(0.0, |id| constants[id.index()]);
-        let values = eq.graph.eval(|v| match v {
-            Var::Q(i) => c.q[usize::from(i)],
-            Var::SinQ(i) => (c.q[usize::from(i)] + offset(i)).sin(),
-            Var::CosQ(i) => (c.q[usize::from(i)] + offset(i)).cos(),
-            Var::Qd(i) => c.qd[usize::from(i)],
-            Var::Qdd(i) => c.qdd[usize::from(i)],
-            Var::Param(_) | Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => 0.0,
-        });
+        let tau = vec![0.0; eq.dof];
+        let state = State {
+            q: &c.q,
+            qd: &c.qd,
+            qdd: &c.qdd,
+            tau: &tau,
+        };
+        let values = evaluate(&eq, state);
         let r = eq.regressor.as_ref().expect("traced");
         let at = |id: &dynamics_codegen::symbolic::NodeId| values[id.index()];
         let n = eq.dof;
