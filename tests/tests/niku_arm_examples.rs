@@ -128,7 +128,7 @@ fn example_6_4_two_link_rods() {
 // sliding link.
 // ---------------------------------------------------------------------------------------------
 
-/// As in `/work/shared/reference/README.md` ("Example 6.5 (polar arm) in D-H form"): z1 points
+/// As in the shared reference data's README ("Example 6.5 (polar arm) in D-H form"): z1 points
 /// along the arm, y1 = z0 is the rotation axis, frame 2's origin is D, q2 = r.
 #[derive(Dynamics)]
 #[dynamics(

@@ -1,6 +1,6 @@
 """Forward-dynamics reference data from Pinocchio for the reference robots.
 
-Run: /work/venv/bin/python tests/data/forward/make.py  (Pinocchio 4.1.0, numpy)
+Run: bench/.venv/bin/python tests/data/forward/make.py  (Pinocchio 4.1.0, numpy)
 
 For each robot of tests/data/reference/robots/ (but ur5, whose M is singular: its last link has
 no inertia about its axis, and the reference M has M66 = 0) and tests/data/panda/robot.json, a

@@ -15,7 +15,7 @@ the angles as written and reports the largest change snapping makes to tau, M, C
 energies, scaled as max|a - b| / max(1, max|b|). It also checks tau = M qdd + h, h = C qd + g,
 KE = qd^T M qd / 2.
 
-Usage: /work/venv/bin/python tests/data/frames/make.py
+Usage: bench/.venv/bin/python tests/data/frames/make.py
 """
 
 import json

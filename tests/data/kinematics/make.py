@@ -1,6 +1,6 @@
 """Kinematic reference data from Pinocchio for the reference robots.
 
-Run: /work/venv/bin/python tests/data/kinematics/make.py  (Pinocchio 4.1.0, numpy)
+Run: bench/.venv/bin/python tests/data/kinematics/make.py  (Pinocchio 4.1.0, numpy)
 
 For each robot of tests/data/reference/robots/ and tests/data/panda/robot.json, a Pinocchio
 model is built from its D-H table, as tests/data/panda/make.py builds the Panda: one RZ (PZ for a

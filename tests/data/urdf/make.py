@@ -29,7 +29,7 @@ For each robot of ROBOTS (file, base link, tip link) this script
 
 Usage, from the repository root (Pinocchio 4.1.0, the `pin` wheel):
 
-    /work/venv/bin/python tests/data/urdf/make.py        # or bench/.venv/bin/python
+    bench/.venv/bin/python tests/data/urdf/make.py
 """
 
 import copy

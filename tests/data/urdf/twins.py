@@ -24,7 +24,7 @@ For each twin: a Pinocchio model built joint by joint from the D-H table (as
 `tests/data/panda/make.py` builds it) must give the URDF model's tau, M, C, g and both energies
 to 1e-12 (scaled) on the 20 samples of `make.py`, with the angles snapped as make.py snaps them.
 
-Usage, from the repository root: /work/venv/bin/python tests/data/urdf/twins.py
+Usage, from the repository root: bench/.venv/bin/python tests/data/urdf/twins.py
 """
 
 import importlib.util
