@@ -164,15 +164,8 @@ const PIECES: [&str; 22] = [
 
 #[derive(Clone, Debug)]
 enum Mutation {
-    Flip(Index, u8),
-    Delete(Index, usize),
-    Duplicate(Index, usize),
-    /// A line of another base file inserted before a line of this one.
-    Splice {
-        file: Index,
-        line: Index,
-        before: Index,
-    },
+    /// A bit flipped, bytes deleted or duplicated, a line of another base file spliced in.
+    Bytes(fuzz::bytes::Bytes),
     Number {
         which: Index,
         by: Index,
@@ -193,11 +186,7 @@ enum Mutation {
 
 fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
-        1 => (any::<Index>(), 0..8u8).prop_map(|(i, b)| Mutation::Flip(i, b)),
-        1 => (any::<Index>(), 1..64usize).prop_map(|(i, n)| Mutation::Delete(i, n)),
-        1 => (any::<Index>(), 1..200usize).prop_map(|(i, n)| Mutation::Duplicate(i, n)),
-        1 => (any::<Index>(), any::<Index>(), any::<Index>())
-            .prop_map(|(file, line, before)| Mutation::Splice { file, line, before }),
+        4 => fuzz::bytes::Bytes::strategy(200).prop_map(Mutation::Bytes),
         3 => (any::<Index>(), any::<Index>()).prop_map(|(which, by)| Mutation::Number { which, by }),
         1 => (any::<Index>(), 1..4000usize, 0..4u8)
             .prop_map(|(at, depth, kind)| Mutation::Nest { at, depth, kind }),
@@ -210,29 +199,7 @@ fn mutation() -> impl Strategy<Value = Mutation> {
 fn apply(text: &mut Vec<u8>, m: &Mutation) {
     let at = |i: &Index, text: &Vec<u8>| i.index(text.len() + 1);
     match m {
-        Mutation::Flip(i, bit) if !text.is_empty() => {
-            let i = i.index(text.len());
-            text[i] ^= 1 << bit;
-        }
-        Mutation::Delete(i, n) => {
-            let i = at(i, text);
-            text.drain(i..(i + n).min(text.len()));
-        }
-        Mutation::Duplicate(i, n) => {
-            let i = at(i, text);
-            let copy = text[i..(i + n).min(text.len())].to_vec();
-            text.splice(i..i, copy);
-        }
-        Mutation::Splice { file, line, before } => {
-            let other = file.get(&BASES).1.as_bytes();
-            let from = fuzz::line_start(other, *line);
-            let end = other[from..]
-                .iter()
-                .position(|b| *b == b'\n')
-                .map_or(other.len(), |e| from + e + 1);
-            let to = fuzz::line_start(text, *before);
-            text.splice(to..to, other[from..end].to_vec());
-        }
+        Mutation::Bytes(bytes) => bytes.apply(text, &BASES.map(|(_, text)| text)),
         Mutation::Number { which, by } => {
             let spans = fuzz::numbers(text);
             if !spans.is_empty() {
@@ -267,7 +234,6 @@ fn apply(text: &mut Vec<u8>, m: &Mutation) {
             let i = at(i, text);
             text.splice(i..i, p.get(&PIECES).bytes());
         }
-        Mutation::Flip(..) => {}
     }
 }
 

@@ -2,9 +2,10 @@
 //! raise (`DYNAMICS_FUZZ_CASES`), each case on its own thread under a time bound, and the
 //! `compile_error!`s of an expansion with the position of their span; for the file fuzzers,
 //! where the numbers and lines of a text are, whether a position is inside it, and temporary
-//! files for the derive to read (`xml`: the tags and attributes of an XML text; `urdf`: what
-//! the URDF fuzzer puts in).
+//! files for the derive to read (`bytes`: the mutations that know nothing of a text's format;
+//! `xml`: the tags and attributes of an XML text; `urdf`: what the URDF fuzzer puts in).
 
+pub mod bytes;
 pub mod urdf;
 pub mod xml;
 
