@@ -13,6 +13,7 @@ mod energy;
 mod gravity;
 mod kinematics;
 mod ldlt;
+mod projection;
 mod regroup;
 mod rnea;
 mod robot;
@@ -31,6 +32,7 @@ pub use kinematics::{
     kinematics, Frame, Jacobian, Kinematics,
 };
 pub use ldlt::Ldlt;
+pub use projection::{projected_torques, LinkFrame};
 pub use rnea::rnea;
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;

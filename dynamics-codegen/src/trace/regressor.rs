@@ -5,21 +5,26 @@
 //! the D-H frame of a robot given by its table, the file's frame of one given by joint frames or
 //! a URDF.
 //!
-//! Newton-Euler ([`algo::rnea`]) is traced once more, each link's body made of ten placeholders
-//! ([`Var::Inertial`]) and carried from link frame j to D-H frame j (`Joint::link_pose`), then
-//! to the chain's joint frame as the chain carries a described body ([`Body::from_inertial`]:
-//! turned by `Rotx(α_j)` and shifted by `a_j` in the standard convention, as it is in the
-//! modified one). τ is linear in the placeholders,
-//! so the column of `π_jk` is that trace with `π_jk = 1` and every other placeholder 0
-//! ([`Graph::substitute`]), folded as it is rebuilt: no placeholder reaches the generated code.
-//! The standard parameters come from the description: `m`, `m c`, and the inertia about the
-//! centre of mass moved to the origin. The actuator inertia and the friction coefficients have
-//! a column each per joint, `[q̈_i, q̇_i, sign(q̇_i), 1]`, beside the links'.
+//! τ is traced by projection ([`algo::projected_torques`]: each joint's unit motion carried out
+//! to the links it moves, dotted with their wrenches written as linear in their parameters),
+//! each link's body made of ten placeholders ([`Var::Inertial`]). Two ways, the one whose
+//! columns take fewer operations kept: the bodies carried from link frame j to the chain's joint
+//! frame (through D-H frame j, `Joint::link_pose`, then turned by `Rotx(α_j)` and shifted by
+//! `a_j` in the standard convention, as the chain carries a described body,
+//! [`Body::from_inertial`]) and regrouped as `M` and τ are (the dense arms: PUMA 560, the
+//! Panda), or left in the link frames, the rates carried there instead, so that no column mixes
+//! the parameters of a frame turned by an arbitrary twist (random5). τ is linear in the
+//! placeholders, so the column of `π_jk` is that trace with `π_jk = 1` and every other
+//! placeholder 0 ([`Graph::substitute`]), folded as it is rebuilt: no placeholder reaches the
+//! generated code. The standard parameters come from the description: `m`, `m c`, and the
+//! inertia about the centre of mass moved to the origin. The actuator inertia and the friction
+//! coefficients have a column each per joint, `[q̈_i, q̇_i, sign(q̇_i), 1]`, beside the links'.
 
+use super::cost;
 use super::expr::Expr;
 use super::tracer::Tracer;
 use super::Equations;
-use crate::algo::{self, Body, Mat3, RobotScalars, Scalar, V3};
+use crate::algo::{self, Body, LinkFrame, Mat3, RobotScalars, Scalar, V3};
 use crate::method::Family;
 use crate::model::{Convention, Joint, Pose, Robot};
 use crate::symbolic::{Graph, NodeId, Number, Var};
@@ -48,14 +53,22 @@ impl Equations {
         let graph = RefCell::new(std::mem::take(&mut self.graph));
         let fields = self.fields.clone();
         let mut tracer = Tracer::new(&graph, &fields, robot);
-        let tau = placeholder_tau(&mut tracer, robot);
+        let candidates = placeholder_taus(&mut tracer, robot);
         let parameters = robot
             .joints
             .iter()
             .map(|joint| ids(&link_parameters(&tracer, joint)))
             .collect();
         let (joint_columns, joint_parameters) = joint_terms(&tracer, robot);
-        let columns = columns(&mut graph.borrow_mut(), &tau);
+        let columns = {
+            let mut g = graph.borrow_mut();
+            let candidates: Vec<_> = candidates.iter().map(|tau| columns(&mut g, tau)).collect();
+            let mut candidates = candidates.into_iter();
+            let first = candidates.next().unwrap_or_default();
+            cost::cheapest(&g, first, candidates, |c| {
+                c.iter().flatten().flatten().copied().collect()
+            })
+        };
         self.graph = graph.into_inner();
         self.regressor = Some(RegressorEquations {
             columns,
@@ -67,32 +80,41 @@ impl Equations {
     }
 }
 
-/// τ of the rigid bodies, each link's body made of its placeholders.
-fn placeholder_tau<'g>(tracer: &mut Tracer<'g>, robot: &Robot) -> Vec<NodeId> {
-    let mut chain = tracer.chain(robot);
+/// τ of the rigid bodies, each link's body made of its placeholders, each way the module
+/// describes.
+fn placeholder_taus(tracer: &mut Tracer<'_>, robot: &Robot) -> [Vec<NodeId>; 2] {
+    let mut in_joint_frames = tracer.chain(robot);
+    let mut in_link_frames = in_joint_frames.clone();
+    let mut frames = Vec::with_capacity(robot.dof());
     for (j, joint) in robot.joints.iter().enumerate() {
         let row = tracer.dh_row(j, joint);
-        let pi: [Expr<'g>; PARAMETERS] =
-            std::array::from_fn(|k| tracer.var(Var::Inertial(placeholder(j, k))));
+        let pi = std::array::from_fn(|k| tracer.var(Var::Inertial(placeholder(j, k))));
         let (rotation, origin) = link_pose(tracer, &joint.link_pose);
-        let in_dh_frame = carried(&body(&pi), &rotation, origin);
         let zero = row.a.zero();
-        chain.joints[j].body = match robot.convention {
-            Convention::Standard => carried(
-                &in_dh_frame,
-                &Mat3::rot_x(row.sin_alpha, row.cos_alpha),
-                V3::new(row.a, zero, zero),
-            ),
-            Convention::Modified => in_dh_frame,
+        // The link frame in the chain's joint frame: D-H frame j there, then the link pose.
+        let frame = match robot.convention {
+            Convention::Standard => {
+                let twist = Mat3::rot_x(row.sin_alpha, row.cos_alpha);
+                LinkFrame {
+                    rotation: twist.mul(&rotation),
+                    origin: V3::new(row.a, zero, zero) + twist.mul_vec(origin),
+                }
+            }
+            Convention::Modified => LinkFrame { rotation, origin },
         };
+        in_link_frames.joints[j].body = body(&pi);
+        in_joint_frames.joints[j].body = frame.carry(&body(&pi));
+        frames.push(frame);
     }
     let n = robot.dof();
     let qd = tracer.joint_vars(n, Var::Qd);
     let qdd = tracer.joint_vars(n, Var::Qdd);
     let gravity = tracer.gravity(robot);
-    // Regrouped as `M` and τ are: the same function of the placeholders in fewer operations
-    // (moving the parts before the twist, as `M` may, saved nothing on the reference robots).
-    ids(&algo::rnea(&chain.regrouped(), &qd, &qdd, gravity))
+    let tau = |chain, frames| ids(&algo::projected_torques(chain, frames, &qd, &qdd, gravity));
+    [
+        tau(&in_joint_frames.regrouped(), None),
+        tau(&in_link_frames, Some(&frames)),
+    ]
 }
 
 /// `π` of link `joint`, about the origin of its link frame, in its axes: the description's
@@ -103,7 +125,11 @@ fn link_parameters<'g>(tracer: &Tracer<'g>, joint: &Joint) -> [Expr<'g>; PARAMET
     let in_dh_frame = Body::from_inertial(&link, zero, zero, zero.one());
     let (rotation, origin) = link_pose(tracer, &joint.link_pose);
     let back = in_dh_frame.moved_by(origin.scale(-zero.one()));
-    let turned = carried(&back, &rotation.transpose(), V3::zero(zero));
+    let back_in_link_axes = LinkFrame {
+        rotation: rotation.transpose(),
+        origin: V3::zero(zero),
+    };
+    let turned = back_in_link_axes.carry(&back);
     let [xx, yy, zz, xy, xz, yz] = turned.inertia;
     let h = turned.h;
     [turned.mass, h.x, h.y, h.z, xx, xy, yy, xz, yz, zz]
@@ -158,17 +184,6 @@ fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
         h: V3::new(mx, my, mz),
         inertia: [ixx, iyy, izz, ixy, ixz, iyz],
     }
-}
-
-/// `body`, given in a frame whose axes are `rotation` and whose origin is `origin` in another
-/// frame, about that other frame's origin and in its axes.
-fn carried<S: Scalar>(body: &Body<S>, rotation: &Mat3<S>, origin: V3<S>) -> Body<S> {
-    let turned = Body {
-        mass: body.mass,
-        h: rotation.mul_vec(body.h),
-        inertia: Mat3::symmetric(body.inertia).congruence(rotation),
-    };
-    turned.moved_by(origin)
 }
 
 /// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0.

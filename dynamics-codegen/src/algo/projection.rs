@@ -1,0 +1,259 @@
+//! Joint torques by projection, the form the regressor is traced in: each link's wrench
+//! written as linear in its ten inertial parameters, and each joint's unit motion carried out
+//! to every link it moves.
+//!
+//! About the origin of a frame F fixed to link l, in F's axes, the wrench that moves the link
+//! is linear in its mass m, first moment h and inertia I (about F's origin):
+//! `f = m v̇ + U h`, `n = I ω̇ + ω × I ω + h × v̇`, with `U = [ω̇]× + [ω]×[ω]×` and `v̇` the
+//! acceleration of F's origin (gravity included). Joint i's torque is that wrench's power in
+//! joint i's unit motion `(a, b)` (angular, linear, in F's axes at F's origin), summed over the
+//! links from i on:
+//! `τ_i = Σ_{l≥i} m (b · v̇) + h · (Uᵀ b + v̇ × a) + Σ_k I_k (a · n_k)`, `n_k` the moment of the
+//! unit inertia entry k. Each term is one parameter times its coefficient, so with symbolic
+//! parameters the regressor's columns are read off one by one.
+//!
+//! Newton-Euler ([`super::rnea`]) carries each link's wrench back towards the base; with ten
+//! symbolic parameters per link that is ten wrenches per link crossing every joint below it.
+//! Here one motion (six numbers) crosses each joint per joint behind it, shared by the ten
+//! coefficients (`docs/performance.md` has the counts).
+
+use super::{Body, Chain, JointKind, Mat3, Scalar, V3};
+
+/// A frame fixed to link l, given in joint frame J_l: its axes (columns) and its origin.
+#[derive(Clone, Copy, Debug)]
+pub struct LinkFrame<S> {
+    /// The frame's axes in J_l's.
+    pub rotation: Mat3<S>,
+    /// The frame's origin in J_l.
+    pub origin: V3<S>,
+}
+
+impl<S: Scalar> LinkFrame<S> {
+    /// A body given in this frame (about its origin, in its axes), about J_l's origin in J_l's
+    /// axes.
+    pub fn carry(&self, body: &Body<S>) -> Body<S> {
+        let turned = Body {
+            mass: body.mass,
+            h: self.rotation.mul_vec(body.h),
+            inertia: Mat3::symmetric(body.inertia).congruence(&self.rotation),
+        };
+        turned.moved_by(self.origin)
+    }
+}
+
+/// Joint torques of `chain` (its bodies in J frames, or each in `frames[l]` where given) moving
+/// with velocities `qd` and accelerations `qdd` under `gravity`: [`super::rnea`]'s, in the form
+/// of the module's sum. Actuator inertia and springs are not included.
+pub fn projected_torques<S: Scalar>(
+    chain: &Chain<S>,
+    frames: Option<&[LinkFrame<S>]>,
+    qd: &[S],
+    qdd: &[S],
+    gravity: V3<S>,
+) -> Vec<S> {
+    let mut links = link_rates(chain, qd, qdd, gravity);
+    let mut motions = joint_motions(chain);
+    if let Some(frames) = frames {
+        for (rates, frame) in links.iter_mut().zip(frames) {
+            *rates = rates.in_frame(frame);
+        }
+        for along in &mut motions {
+            let skipped = frames.len() - along.len();
+            for ((a, b), frame) in along.iter_mut().zip(&frames[skipped..]) {
+                let r = &frame.rotation;
+                (*a, *b) = (r.tr_mul_vec(*a), r.tr_mul_vec(*b + a.cross(frame.origin)));
+            }
+        }
+    }
+    let zero = gravity.x.zero();
+    motions
+        .iter()
+        .enumerate()
+        .map(|(i, along)| {
+            let terms = along.iter().zip(&links[i..]).zip(&chain.joints[i..]);
+            terms.fold(zero, |sum, ((&(a, b), rates), joint)| {
+                let body = &joint.body;
+                let first_moment = tr_mul(&rates.u, b) + rates.vd.cross(a);
+                let inertia = body.inertia.iter().zip(&rates.moments);
+                let t = inertia.fold(
+                    body.mass * b.dot(rates.vd) + body.h.dot(first_moment),
+                    |t, (&i, &n)| t + i * a.dot(n),
+                );
+                sum + t
+            })
+        })
+        .collect()
+}
+
+/// A link's rates as the projection reads them: `ω`, `ω̇`, `v̇`, `U = [ω̇]× + [ω]×[ω]×` and
+/// `I ω̇ + ω × I ω` for each unit inertia entry (`[xx, yy, zz, xy, xz, yz]`).
+struct Rates<S> {
+    w: V3<S>,
+    wd: V3<S>,
+    vd: V3<S>,
+    u: [[S; 3]; 3],
+    moments: [V3<S>; 6],
+}
+
+impl<S: Scalar> Rates<S> {
+    fn new(w: V3<S>, wd: V3<S>, vd: V3<S>) -> Rates<S> {
+        let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
+        let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
+        let u = [
+            [-(yy + zz), xy - wd.z, xz + wd.y],
+            [xy + wd.z, -(xx + zz), yz - wd.x],
+            [xz - wd.y, yz + wd.x, -(xx + yy)],
+        ];
+        // `I ω̇ + ω × I ω` for I = e_x e_xᵀ is `(ω̇_x, ω_x ω_z, −ω_x ω_y)`, for
+        // I = e_x e_yᵀ + e_y e_xᵀ `(ω̇_y − ω_x ω_z, ω̇_x + ω_y ω_z, ω_x² − ω_y²)`, and so on.
+        let moments = [
+            V3::new(wd.x, xz, -xy),
+            V3::new(-yz, wd.y, xy),
+            V3::new(yz, -xz, wd.z),
+            V3::new(wd.y - xz, wd.x + yz, xx - yy),
+            V3::new(wd.z + xy, zz - xx, wd.x - yz),
+            V3::new(yy - zz, wd.z - xy, wd.y + xz),
+        ];
+        Rates {
+            w,
+            wd,
+            vd,
+            u,
+            moments,
+        }
+    }
+
+    /// The same link's rates in the axes of `frame` and at its origin.
+    fn in_frame(&self, frame: &LinkFrame<S>) -> Rates<S> {
+        let r = &frame.rotation;
+        let vd = r.tr_mul_vec(self.vd + mul(&self.u, frame.origin));
+        Rates::new(r.tr_mul_vec(self.w), r.tr_mul_vec(self.wd), vd)
+    }
+}
+
+/// `U x`.
+fn mul<S: Scalar>(u: &[[S; 3]; 3], x: V3<S>) -> V3<S> {
+    Mat3 { m: *u }.mul_vec(x)
+}
+
+/// `Uᵀ x`.
+fn tr_mul<S: Scalar>(u: &[[S; 3]; 3], x: V3<S>) -> V3<S> {
+    Mat3 { m: *u }.tr_mul_vec(x)
+}
+
+/// Each link's rates in its joint frame: Newton-Euler's forward pass.
+fn link_rates<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) -> Vec<Rates<S>> {
+    let zero = gravity.x.zero();
+    let (mut w, mut wd, mut vd) = (V3::zero(zero), V3::zero(zero), -gravity);
+    let mut links: Vec<Rates<S>> = Vec::with_capacity(chain.joints.len());
+    for (i, j) in chain.joints.iter().enumerate() {
+        if let Some(parent) = links.last() {
+            vd = vd + mul(&parent.u, j.offset());
+        }
+        vd = j.to_child(vd);
+        let (w_in, wd_in) = (j.to_child(w), j.to_child(wd));
+        match j.kind {
+            JointKind::Revolute => {
+                w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
+                let c = w_in.cross_z(qd[i]);
+                wd = V3::new(wd_in.x + c.x, wd_in.y + c.y, wd_in.z + qdd[i]);
+            }
+            JointKind::Prismatic => {
+                (w, wd) = (w_in, wd_in);
+                let c = w.cross_z(qd[i] + qd[i]);
+                vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
+            }
+        }
+        links.push(Rates::new(w, wd, vd));
+    }
+    links
+}
+
+/// `motions[i][l − i]`: joint i's unit motion (angular, linear) in J_l's axes at J_l's origin,
+/// for each link l ≥ i.
+fn joint_motions<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<(V3<S>, V3<S>)>> {
+    (0..chain.joints.len())
+        .map(|i| {
+            let zero = chain.joints[i].a.zero();
+            let z = V3::new(zero, zero, zero.one());
+            let own = match chain.joints[i].kind {
+                JointKind::Revolute => (z, V3::zero(zero)),
+                JointKind::Prismatic => (V3::zero(zero), z),
+            };
+            let mut along = vec![own];
+            for j in &chain.joints[i + 1..] {
+                let (a, b) = along.last().copied().unwrap_or(own);
+                along.push((j.to_child(a), j.to_child(b + a.cross(j.offset()))));
+            }
+            along
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{projected_torques, LinkFrame};
+    use crate::algo::{parallel_chain, rnea, test_chain, Chain, Mat3, V3};
+
+    const QD: [f64; 7] = [0.8, -0.4, 1.3, -2.1, 0.5, 0.9, -0.3];
+    const QDD: [f64; 7] = [-1.2, 0.6, 0.2, 1.7, -0.9, 0.4, 0.8];
+
+    fn assert_close(a: &[f64], b: &[f64]) {
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() < 1e-12, "{a:?} vs {b:?}");
+        }
+    }
+
+    /// The projection gives Newton-Euler's torques, revolute and prismatic joints, parallel
+    /// axes and oblique gravity.
+    #[test]
+    fn projection_is_newton_euler() {
+        let q = [0.3, -1.1, 0.25, 2.0, -0.6, 1.4, 0.15];
+        let gravity = V3::new(0.5, -1.0, -9.7);
+        let chains: [Chain<f64>; 3] = [
+            test_chain(&q),
+            parallel_chain(&q, false),
+            parallel_chain(&q, true),
+        ];
+        for chain in chains {
+            let n = chain.joints.len();
+            let expected = rnea(&chain, &QD[..n], &QDD[..n], gravity);
+            let projected = projected_torques(&chain, None, &QD[..n], &QDD[..n], gravity);
+            assert_close(&projected, &expected);
+            let regrouped = chain.regrouped();
+            let projected = projected_torques(&regrouped, None, &QD[..n], &QDD[..n], gravity);
+            assert_close(&projected, &expected);
+        }
+    }
+
+    /// Bodies given in frames of their own: the same torques as carried into the joint frames.
+    #[test]
+    fn bodies_in_frames_of_their_own() {
+        let q = [-0.7, 0.4, 0.3, -1.3, 0.9];
+        let gravity = V3::new(0.0, 0.3, -9.81);
+        let in_joint_frames = test_chain(&q);
+        let mut in_own_frames = in_joint_frames.clone();
+        let frames: Vec<LinkFrame<f64>> = (0..q.len())
+            .map(|l| {
+                let x = l as f64;
+                let (a, b) = (0.4 + 0.3 * x, -1.1 + 0.5 * x);
+                LinkFrame {
+                    rotation: Mat3::rot_z(a.sin(), a.cos()).mul(&Mat3::rot_x(b.sin(), b.cos())),
+                    origin: V3::new(0.1 * x, -0.05, 0.2 - 0.03 * x),
+                }
+            })
+            .collect();
+        let mut carried = in_joint_frames.clone();
+        for (l, frame) in frames.iter().enumerate() {
+            // Some body given in frame l: the joint frame's is the same body carried.
+            let body = in_joint_frames.joints[(l + 2) % q.len()].body;
+            in_own_frames.joints[l].body = body;
+            carried.joints[l].body = frame.carry(&body);
+        }
+        let n = q.len();
+        let expected = rnea(&carried, &QD[..n], &QDD[..n], gravity);
+        let projected =
+            projected_torques(&in_own_frames, Some(&frames), &QD[..n], &QDD[..n], gravity);
+        assert_close(&projected, &expected);
+    }
+}
