@@ -106,13 +106,15 @@ impl<S: Scalar> Rates<S> {
         ];
         // `I ω̇ + ω × I ω` for I = e_x e_xᵀ is `(ω̇_x, ω_x ω_z, −ω_x ω_y)`, for
         // I = e_x e_yᵀ + e_y e_xᵀ `(ω̇_y − ω_x ω_z, ω̇_x + ω_y ω_z, ω_x² − ω_y²)`, and so on.
+        // The off-diagonal sums are `U`'s entries, negated where the difference runs the
+        // other way (`ω̇_y − ω_x ω_z = −U_zx`): the same node, the sign taken by the product.
         let moments = [
             V3::new(wd.x, xz, -xy),
             V3::new(-yz, wd.y, xy),
             V3::new(yz, -xz, wd.z),
-            V3::new(wd.y - xz, wd.x + yz, xx - yy),
-            V3::new(wd.z + xy, zz - xx, wd.x - yz),
-            V3::new(yy - zz, wd.z - xy, wd.y + xz),
+            V3::new(-u[2][0], u[2][1], xx - yy),
+            V3::new(u[1][0], zz - xx, -u[1][2]),
+            V3::new(yy - zz, -u[0][1], u[0][2]),
         ];
         Rates {
             w,
