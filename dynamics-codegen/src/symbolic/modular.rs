@@ -11,6 +11,7 @@
 use super::graph::Graph;
 use super::node::{Node, NodeId, Var};
 use super::number::Number;
+use std::ops::{Add, Mul, Neg, Sub};
 
 /// The prime modulus.
 pub const P: u64 = (1 << 61) - 1;
@@ -49,38 +50,13 @@ impl Fp {
     }
 
     #[must_use]
-    pub fn add(self, o: Fp) -> Fp {
-        let s = self.0 + o.0;
-        Fp(if s >= P { s - P } else { s })
-    }
-
-    #[must_use]
-    pub fn neg(self) -> Fp {
-        Fp(if self.0 == 0 { 0 } else { P - self.0 })
-    }
-
-    #[must_use]
-    pub fn sub(self, o: Fp) -> Fp {
-        self.add(o.neg())
-    }
-
-    #[must_use]
-    pub fn mul(self, o: Fp) -> Fp {
-        let wide = u128::from(self.0) * u128::from(o.0);
-        // 2⁶¹ ≡ 1: fold the high bits onto the low ones.
-        let low = u64::try_from(wide & u128::from(P)).unwrap_or(0);
-        let high = u64::try_from(wide >> 61).unwrap_or(0);
-        Fp::new(low).add(Fp::new(high))
-    }
-
-    #[must_use]
     pub fn pow(self, mut e: u64) -> Fp {
         let (mut base, mut acc) = (self, Fp::ONE);
         while e > 0 {
             if e & 1 == 1 {
-                acc = acc.mul(base);
+                acc = acc * base;
             }
-            base = base.mul(base);
+            base = base * base;
             e >>= 1;
         }
         acc
@@ -96,7 +72,7 @@ impl Fp {
     #[must_use]
     pub fn from_number(n: Number) -> Option<Fp> {
         match n {
-            Number::Rational(num, den) => Fp::int(den).recip().map(|d| Fp::int(num).mul(d)),
+            Number::Rational(num, den) => Fp::int(den).recip().map(|d| Fp::int(num) * d),
             Number::Float(x) => Some(Fp::from_f64(x)),
         }
     }
@@ -118,9 +94,9 @@ impl Fp {
         let two = Fp(2);
         // 2 has order 61 modulo 2⁶¹ − 1: its powers repeat every 61.
         let power = two.pow(u64::try_from(e.rem_euclid(61)).unwrap_or(0));
-        let m = Fp::new(mantissa).mul(power);
+        let m = Fp::new(mantissa) * power;
         if x < 0.0 {
-            m.neg()
+            -m
         } else {
             m
         }
@@ -142,7 +118,40 @@ impl Fp {
             return None;
         }
         let (a, b) = if t1 < 0 { (-r1, -t1) } else { (r1, t1) };
-        (Fp::int(a) == self.mul(Fp::int(b))).then_some((a, b))
+        (Fp::int(a) == self * Fp::int(b)).then_some((a, b))
+    }
+}
+
+impl Add for Fp {
+    type Output = Fp;
+    fn add(self, o: Fp) -> Fp {
+        let s = self.0 + o.0;
+        Fp(if s >= P { s - P } else { s })
+    }
+}
+
+impl Neg for Fp {
+    type Output = Fp;
+    fn neg(self) -> Fp {
+        Fp(if self.0 == 0 { 0 } else { P - self.0 })
+    }
+}
+
+impl Sub for Fp {
+    type Output = Fp;
+    fn sub(self, o: Fp) -> Fp {
+        self + -o
+    }
+}
+
+impl Mul for Fp {
+    type Output = Fp;
+    fn mul(self, o: Fp) -> Fp {
+        let wide = u128::from(self.0) * u128::from(o.0);
+        // 2⁶¹ ≡ 1: fold the high bits onto the low ones.
+        let low = u64::try_from(wide & u128::from(P)).unwrap_or(0);
+        let high = u64::try_from(wide >> 61).unwrap_or(0);
+        Fp::new(low) + Fp::new(high)
     }
 }
 
@@ -175,9 +184,9 @@ impl Points {
     pub fn circle(&mut self) -> (Fp, Fp) {
         loop {
             let t = self.residue();
-            let t2 = t.mul(t);
-            if let Some(d) = Fp::ONE.add(t2).recip() {
-                return (t.add(t).mul(d), Fp::ONE.sub(t2).mul(d));
+            let t2 = t * t;
+            if let Some(d) = (Fp::ONE + t2).recip() {
+                return ((t + t) * d, (Fp::ONE - t2) * d);
             }
         }
     }
@@ -220,9 +229,9 @@ pub fn eval(
         values[i] = match *node {
             Node::Const(c) => Fp::from_number(c)?,
             Node::Var(x) => leaf(x),
-            Node::Add(a, b) => v(a).add(v(b)),
-            Node::Mul(a, b) => v(a).mul(v(b)),
-            Node::Neg(a) => v(a).neg(),
+            Node::Add(a, b) => v(a) + v(b),
+            Node::Mul(a, b) => v(a) * v(b),
+            Node::Neg(a) => -v(a),
             Node::Recip(a) => v(a).recip()?,
             Node::Sin(a) | Node::Cos(a) | Node::Sign(a) | Node::Tanh(a) => opaque(*node, a),
         };
@@ -238,23 +247,23 @@ mod tests {
     #[test]
     fn arithmetic() {
         let a = Fp::new(P - 1);
-        assert_eq!(a.add(Fp::ONE), Fp::ZERO);
-        assert_eq!(a.mul(a), Fp::ONE);
+        assert_eq!(a + Fp::ONE, Fp::ZERO);
+        assert_eq!(a * a, Fp::ONE);
         let x = Fp::new(123_456_789_012_345);
-        assert_eq!(x.mul(x.recip().unwrap()), Fp::ONE);
+        assert_eq!(x * x.recip().unwrap(), Fp::ONE);
         assert_eq!(Fp::ZERO.recip(), None);
     }
 
     #[test]
     fn exact_images() {
         let third = Fp::from_number(Number::ratio(1, 3).unwrap()).unwrap();
-        assert_eq!(third.mul(Fp::int(3)), Fp::ONE);
-        assert_eq!(Fp::from_f64(0.75).mul(Fp::int(4)), Fp::int(3));
-        assert_eq!(Fp::from_f64(-2.5).mul(Fp::int(2)), Fp::int(-5));
+        assert_eq!(third * Fp::int(3), Fp::ONE);
+        assert_eq!(Fp::from_f64(0.75) * Fp::int(4), Fp::int(3));
+        assert_eq!(Fp::from_f64(-2.5) * Fp::int(2), Fp::int(-5));
         // 0.1 is not 1/10 as a float, but 0.1·2⁵⁵ is an integer.
         let tenth = Fp::from_f64(0.1);
         assert_ne!(tenth, Fp::int(10).recip().unwrap());
-        assert_eq!(tenth.mul(Fp(2).pow(55)), Fp::int(3_602_879_701_896_397));
+        assert_eq!(tenth * Fp(2).pow(55), Fp::int(3_602_879_701_896_397));
     }
 
     #[test]
@@ -262,13 +271,13 @@ mod tests {
         let mut points = Points::new(7);
         for _ in 0..10 {
             let (s, c) = points.circle();
-            assert_eq!(s.mul(s).add(c.mul(c)), Fp::ONE);
+            assert_eq!(s * s + c * c, Fp::ONE);
         }
     }
 
     #[test]
     fn small_rationals() {
-        let x = Fp::int(-7).mul(Fp::int(12).recip().unwrap());
+        let x = Fp::int(-7) * Fp::int(12).recip().unwrap();
         assert_eq!(x.to_small_rational(1 << 30), Some((-7, 12)));
         assert_eq!(Fp::int(5).to_small_rational(1 << 30), Some((5, 1)));
         // 2⁵⁹ is 1/4 here (2⁶¹ ≡ 1); an arbitrary residue is no small rational.

@@ -192,10 +192,10 @@ fn rational_point(angle: f64) -> (Fp, Fp) {
     // Clamped far beyond any angle but ±π, whose sine and cosine the trace has exact.
     let t = ((angle / 2.0).tan() * scale).round().clamp(-1e27, 1e27);
     #[allow(clippy::cast_possible_truncation)]
-    let t = Fp::int(t as i128).mul(Fp::int(1 << 30).recip().unwrap_or(Fp::ONE));
-    let t2 = t.mul(t);
-    match Fp::ONE.add(t2).recip() {
-        Some(d) => (t.add(t).mul(d), Fp::ONE.sub(t2).mul(d)),
+    let t = Fp::int(t as i128) * Fp::int(1 << 30).recip().unwrap_or(Fp::ONE);
+    let t2 = t * t;
+    match (Fp::ONE + t2).recip() {
+        Some(d) => ((t + t) * d, (Fp::ONE - t2) * d),
         None => (Fp::ZERO, Fp::ONE),
     }
 }

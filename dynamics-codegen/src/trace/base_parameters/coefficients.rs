@@ -114,10 +114,10 @@ fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
             continue;
         }
         for col in j..k {
-            let dot: f64 = (j..m).map(|i| v[i - j] * a[i][col]).sum();
+            let dot: f64 = a[j..].iter().zip(&v).map(|(row, x)| x * row[col]).sum();
             let f = 2.0 * dot / vv;
-            for i in j..m {
-                a[i][col] -= f * v[i - j];
+            for (row, x) in a[j..].iter_mut().zip(&v) {
+                row[col] -= f * x;
             }
         }
         let dot: f64 = (j..m).map(|i| v[i - j] * b[i]).sum();
@@ -161,7 +161,7 @@ mod tests {
     #[test]
     fn recovers_decimals() {
         // 0.4318² = 0.18645124, exactly.
-        let residue = Fp::int(4318 * 4318).mul(Fp::int(100_000_000).recip().unwrap());
+        let residue = Fp::int(4318 * 4318) * Fp::int(100_000_000).recip().unwrap();
         assert_eq!(
             exact_or_float(residue, 0.186_451_24),
             Number::ratio(18_645_124, 100_000_000).unwrap()

@@ -139,7 +139,7 @@ impl Echelon {
             return;
         };
         for x in &mut row {
-            *x = x.mul(scale);
+            *x = *x * scale;
         }
         let at = self.rows.partition_point(|(l, _)| *l < lead);
         self.rows.insert(at, (lead, row));
@@ -171,7 +171,7 @@ impl Echelon {
 fn subtract(row: &mut [Fp], other: &[Fp], factor: Fp) {
     for (x, y) in row.iter_mut().zip(other) {
         if !y.is_zero() {
-            *x = x.sub(factor.mul(*y));
+            *x = *x - factor * *y;
         }
     }
 }
@@ -203,7 +203,7 @@ mod tests {
         assert_eq!(r.coefficients[2], vec![Fp::ONE, Fp::ONE, Fp::ZERO]);
         let half = Fp::int(2).recip().unwrap();
         // s = (2s + 3)/2 − (3/2)(s² + c²)
-        let minus_three_halves = Fp::int(-3).mul(half);
+        let minus_three_halves = Fp::int(-3) * half;
         assert_eq!(
             r.coefficients[4],
             vec![minus_three_halves, minus_three_halves, half]

@@ -131,84 +131,30 @@ impl Equations {
             self.add_regressor(robot);
         }
         let regressor = self.regressor.clone()?;
-        let n = self.dof;
+        let taken = taken(self.dof, joints);
         let zero = self.graph.num(Number::ZERO);
-        let mut parameters = Vec::new();
-        let mut columns: Vec<Vec<NodeId>> = Vec::new();
-        let mut values = Vec::new();
-        for link in 0..n {
-            for index in LINK_ORDER {
-                parameters.push(Parameter::Link { link, index });
-                columns.push((0..n).map(|i| regressor.columns[i][link][index]).collect());
-                values.push(regressor.parameters[link][index]);
-            }
-        }
-        for (joint, asked) in joints.iter().enumerate().take(n) {
-            for (index, _) in asked.included().iter().enumerate().filter(|(_, &a)| a) {
-                parameters.push(Parameter::Joint { joint, index });
-                let row = regressor.joint_columns[joint][index];
-                columns.push(
-                    (0..n)
-                        .map(|i| if i == joint { row } else { zero })
-                        .collect(),
-                );
-                values.push(regressor.joint_parameters[joint][index]);
-            }
-        }
+        let columns = column_ids(&taken, &regressor.columns, &regressor.joint_columns, zero);
         // Exactly on a trace of their own, in which the description's constants are leaves.
         let mut exact = super::regressor::exact_columns(robot);
         let exact_zero = exact.graph.num(Number::ZERO);
-        let mut exact_columns: Vec<Vec<NodeId>> = Vec::new();
-        for link in 0..n {
-            for index in LINK_ORDER {
-                exact_columns.push((0..n).map(|i| exact.columns[i][link][index]).collect());
-            }
-        }
-        for (joint, asked) in joints.iter().enumerate().take(n) {
-            for (index, _) in asked.included().iter().enumerate().filter(|(_, &a)| a) {
-                let row = exact.joint_columns[joint][index];
-                let column = (0..n).map(|i| if i == joint { row } else { exact_zero });
-                exact_columns.push(column.collect());
-            }
-        }
+        let exact_columns = column_ids(&taken, &exact.columns, &exact.joint_columns, exact_zero);
         let relations = exact::relations(&exact.graph, &exact_columns, &exact.leaves)?;
         let pivots = relations.pivots;
         let numbers =
             coefficients::numbers(&self.graph, &columns, &pivots, &relations.coefficients);
-        let mut groups: Vec<Vec<Term>> = pivots
-            .iter()
-            .map(|&c| {
-                vec![Term {
-                    parameter: parameters[c],
-                    coefficient: Number::ONE,
-                }]
-            })
-            .collect();
-        let mut no_effect = Vec::new();
-        for (c, row) in numbers.iter().enumerate() {
-            if pivots.contains(&c) {
-                continue;
-            }
-            if row.iter().all(|x| x.is_zero()) {
-                no_effect.push(parameters[c]);
-            }
-            for (group, coefficient) in groups.iter_mut().zip(row) {
-                if !coefficient.is_zero() {
-                    group.push(Term {
-                        parameter: parameters[c],
-                        coefficient: *coefficient,
-                    });
-                }
-            }
-        }
-        let base_values = groups
+        let (groups, no_effect) = groups(&taken, &pivots, &numbers);
+        let values = groups
             .iter()
             .map(|terms| {
                 let g = &mut self.graph;
                 terms.iter().fold(zero, |sum, term| {
                     let c = g.num(term.coefficient);
-                    let at = parameters.iter().position(|p| *p == term.parameter);
-                    let value = at.map_or(zero, |k| values[k]);
+                    let value = match term.parameter {
+                        Parameter::Link { link, index } => regressor.parameters[link][index],
+                        Parameter::Joint { joint, index } => {
+                            regressor.joint_parameters[joint][index]
+                        }
+                    };
                     let product = g.mul(c, value);
                     g.add(sum, product)
                 })
@@ -223,13 +169,92 @@ impl Equations {
                 })
                 .collect(),
             no_effect,
-            standard: columns.len(),
-            regressor: (0..n)
+            standard: taken.len(),
+            regressor: (0..self.dof)
                 .map(|i| pivots.iter().map(|&c| columns[c][i]).collect())
                 .collect(),
-            values: base_values,
+            values,
         })
     }
+}
+
+/// The standard parameters taken, in the order in which they are taken: link by link, then
+/// the joints' asked for.
+fn taken(n: usize, joints: &[JointColumns]) -> Vec<Parameter> {
+    let links = (0..n).flat_map(|link| LINK_ORDER.map(|index| Parameter::Link { link, index }));
+    let joints = joints
+        .iter()
+        .enumerate()
+        .take(n)
+        .flat_map(|(joint, asked)| {
+            let included = asked.included();
+            (0..JOINT_NAMES.len())
+                .filter(move |&index| included[index])
+                .map(move |index| Parameter::Joint { joint, index })
+        });
+    links.chain(joints).collect()
+}
+
+/// Per parameter, its column: `columns[i][link][index]` or joint i's `joint_columns[i][index]`
+/// in row i and `zero` in the others.
+fn column_ids(
+    taken: &[Parameter],
+    columns: &[Vec<Vec<NodeId>>],
+    joint_columns: &[Vec<NodeId>],
+    zero: NodeId,
+) -> Vec<Vec<NodeId>> {
+    let n = columns.len();
+    taken
+        .iter()
+        .map(|p| match *p {
+            Parameter::Link { link, index } => (0..n).map(|i| columns[i][link][index]).collect(),
+            Parameter::Joint { joint, index } => (0..n)
+                .map(|i| {
+                    if i == joint {
+                        joint_columns[joint][index]
+                    } else {
+                        zero
+                    }
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// Per pivot, its base parameter's terms (its own parameter first), and the parameters of the
+/// zero columns: `numbers[c][r]`, column c's coefficient on pivot r.
+fn groups(
+    taken: &[Parameter],
+    pivots: &[usize],
+    numbers: &[Vec<Number>],
+) -> (Vec<Vec<Term>>, Vec<Parameter>) {
+    let mut groups: Vec<Vec<Term>> = pivots
+        .iter()
+        .map(|&c| {
+            vec![Term {
+                parameter: taken[c],
+                coefficient: Number::ONE,
+            }]
+        })
+        .collect();
+    let mut no_effect = Vec::new();
+    for (c, row) in numbers.iter().enumerate() {
+        if pivots.contains(&c) {
+            continue;
+        }
+        if row.iter().all(|x| x.is_zero()) {
+            no_effect.push(taken[c]);
+        }
+        for (group, coefficient) in groups.iter_mut().zip(row) {
+            if !coefficient.is_zero() {
+                group.push(Term {
+                    parameter: taken[c],
+                    coefficient: *coefficient,
+                });
+            }
+        }
+    }
+    (groups, no_effect)
 }
 
 /// `ZZ1`, or `ZZR1` where other parameters are grouped into it.
