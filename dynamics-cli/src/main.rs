@@ -18,6 +18,7 @@
 mod args;
 mod commands;
 mod format;
+mod identify;
 mod plot;
 mod sizing;
 mod trajectory;
