@@ -39,12 +39,6 @@ impl Triangle {
         }
     }
 
-    /// The number of columns.
-    #[must_use]
-    pub fn width(&self) -> usize {
-        self.width
-    }
-
     /// The rows taken so far.
     #[must_use]
     pub fn rows(&self) -> usize {
