@@ -35,6 +35,9 @@ pub enum Command {
     Size(Size),
     /// Integrate the forward dynamics (RK4) from an initial state, under constant torques
     Simulate(Simulate),
+    /// Estimate the robot's inertial (and joint) parameters from measured motions and torques,
+    /// by weighted least squares, with their standard deviations
+    Identify(Identify),
 }
 
 #[derive(Args, Debug)]
@@ -234,6 +237,51 @@ pub struct Simulate {
     /// Write a plot of the joint positions and of the energy, as SVG
     #[arg(long, value_name = "FILE")]
     pub svg: Option<String>,
+}
+
+#[derive(Args, Debug)]
+pub struct Identify {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// The measurements: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
+    /// `qdd1,..,qddn`), then `tau1,..,taun`; then one sample per line, t strictly increasing
+    /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
+    #[arg(long, value_name = "FILE")]
+    pub csv: String,
+    /// Also identify each joint's actuator (rotor) inertia, the coefficient of q̈_i in τ_i
+    #[arg(long)]
+    pub rotors: bool,
+    /// Also identify joint friction of these kinds (comma-separated): viscous (f_v q̇),
+    /// coulomb (f_c sign(q̇)), offset (f_0)
+    #[arg(long, value_name = "KINDS", value_delimiter = ',')]
+    pub friction: Vec<Friction>,
+    /// Low-pass every column but t at this frequency before q̇ and q̈ are taken: a
+    /// 4th-order Butterworth filter run forward and backward (zero phase). Samples must be
+    /// evenly spaced
+    #[arg(long, value_name = "HZ", value_parser = positive)]
+    pub cutoff: Option<f64>,
+    /// A parameter whose column of the regressor is, to this fraction of its norm, a
+    /// combination of the columns before it is named as not identifiable and not estimated
+    #[arg(long, value_name = "FRACTION", default_value = "1e-6", value_parser = positive)]
+    pub tolerance: f64,
+    /// The value of a parameter of the robot (a struct field of the description); once for
+    /// each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write a plot of the measured and the predicted torque per joint, as SVG
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<String>,
+    /// Print JSON instead of a table
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// A kind of joint friction to identify.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Friction {
+    Viscous,
+    Coulomb,
+    Offset,
 }
 
 fn positive(text: &str) -> Result<f64, String> {

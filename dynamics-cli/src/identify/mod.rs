@@ -1,9 +1,22 @@
 //! System identification: the estimate of a model linear in its parameters,
-//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques.
+//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`).
+//!
+//! * [`model`]: the regressor of a robot's graph, evaluated at a sample;
+//! * [`standard`]: the model of the standard parameters and the joint terms;
+//! * [`source`]: the samples, streamed or filtered ([`filter`]);
+//! * [`measured`]: one triangular factor per joint ([`householder`]);
+//! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
+//!   standard deviations, condition number ([`singular`]);
+//! * [`report`], [`figure`]: what is printed and drawn.
 
 pub mod estimate;
+pub mod figure;
 pub mod filter;
 pub mod householder;
 pub mod measured;
+pub mod model;
 pub mod rank;
+pub mod report;
 pub mod singular;
+pub mod source;
+pub mod standard;

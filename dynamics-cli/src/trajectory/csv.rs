@@ -154,8 +154,6 @@ fn parse_row(
 #[derive(Clone, Copy, Debug)]
 pub struct Rows {
     pub given: Given,
-    /// The data lines.
-    pub count: usize,
     /// The file's last line (1-based), where an error about the whole file is placed.
     pub last_line: usize,
 }
@@ -173,7 +171,7 @@ pub fn read_rows(
     mut progress: impl FnMut(u64),
 ) -> Result<Rows, CsvError> {
     let mut header: Option<(Given, Vec<String>)> = None;
-    let (mut bytes, mut previous, mut last_line, mut count) = (0u64, None, 0, 0);
+    let (mut bytes, mut previous, mut last_line) = (0u64, None, 0);
     for (index, text) in reader.lines().enumerate() {
         let line = index + 1;
         last_line = line;
@@ -197,7 +195,6 @@ pub fn read_rows(
         };
         let row = parse_row(line, trimmed, names, previous)?;
         previous = Some(row[0]);
-        count += 1;
         each(*given, row);
     }
     let Some((given, _)) = header else {
@@ -208,9 +205,5 @@ pub fn read_rows(
             message: format!("no header: expected t,q1..qn{tail}"),
         });
     };
-    Ok(Rows {
-        given,
-        count,
-        last_line,
-    })
+    Ok(Rows { given, last_line })
 }

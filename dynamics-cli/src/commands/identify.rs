@@ -1,0 +1,188 @@
+//! `dynamics identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ]
+//! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--json]`: the robot's parameters
+//! estimated from measured motions and torques.
+//!
+//! Inverse dynamics is linear in the parameters: `τ = Y(q, q̇, q̈) π`. Each sample k of the file
+//! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
+//! are known, not identified), and the N samples of n joints stack into `τ = Y π + ρ`:
+//!
+//! * π: the links' inertial parameters and the joint terms asked for (`--rotors`: `IA_i`, the
+//!   coefficient of `q̈_i`; `--friction viscous,coulomb,offset`: `FV_i q̇_i + FC_i sign(q̇_i) +
+//!   FO_i`). By default rigid bodies only, whatever the description holds: the same command
+//!   identifies the same parameters for every description of the robot.
+//! * identifiable parameters: a rank-revealing QR of the stacked `Y`, columns scaled to unit
+//!   norm and taken in order; a column within `--tolerance` of the span of those before it is
+//!   named, with its combination, and not estimated.
+//! * two-step weighted least squares (Gautier and Poignet, 2001): the ordinary fit
+//!   `π̂ = argmin ‖Y π − τ‖²`, then per joint `σ_i² = ‖Y_i π̂ − τ_i‖² / (N − c_i)` (c_i the
+//!   identified parameters in joint i's equation) and the fit with joint i's rows divided by
+//!   σ_i: `π̂_w = argmin Σ_i ‖Y_i π − τ_i‖² / σ_i²`.
+//! * standard deviations `σ_π̂k = σ̂ √[(Y_wᵀ Y_w)⁻¹]_kk`, `σ̂² = ‖Y_w π̂_w − τ_w‖² / (nN − b)`,
+//!   and `100 σ_π̂k / |π̂_k|` %; the condition number `σ_max / σ_min` of the weighted `Y_w`.
+//!
+//! `Y` is never held: each joint's rows update a triangular factor as they are read
+//! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
+//! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
+
+use super::eval::{parameters, usage};
+use super::size::write_svg;
+use super::{load, Failure};
+use crate::args::{Friction, Identify};
+use crate::identify::estimate::{estimate, Estimate};
+use crate::identify::figure;
+use crate::identify::measured::Measured;
+use crate::identify::model::{LinearModel, Work};
+use crate::identify::report::Report;
+use crate::identify::source::Source;
+use crate::identify::standard::{self, JointTerms};
+use crate::plot::Envelope;
+use crate::sizing::unit;
+use crate::trajectory::Columns;
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::{derive, Family, FamilySet};
+
+pub fn run(args: &Identify) -> Result<String, Failure> {
+    let robot = load(&args.robot)?;
+    let fields = parameters("identify", &robot.fields(), &args.set)?;
+    let mut eq = derive(&robot);
+    eq.add_families(&robot, FamilySet::default().with(Family::Regressor));
+    let terms = joint_terms(args);
+    let entries = standard::entries(&eq, terms, &fields).map_err(Failure::File)?;
+    let model = LinearModel::new(&entries).map_err(Failure::File)?;
+    let springs = springs(&robot, &robot.fields(), &fields);
+    let columns = Columns {
+        joints: model.joints(),
+        torques: true,
+    };
+    let source = Source::open(&args.csv, columns, args.cutoff).map_err(|e| {
+        if e.starts_with("--cutoff") {
+            usage("identify", &e)
+        } else {
+            Failure::File(e)
+        }
+    })?;
+    let (mut measured, method, span) = measure(&model, &source, &springs)?;
+    let estimate = estimate(&mut measured, args.tolerance)
+        .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
+    let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
+    if let Some(path) = &args.plot {
+        let title = format!("{}: measured and predicted joint torques", robot.name);
+        let envelope = predictions(&model, &source, &springs, &estimate)?;
+        write_svg(path, &figure::figure(title, &units, &envelope))?;
+    }
+    let description = format!("rigid bodies; joint terms: {}", terms.describe());
+    let report = Report {
+        robot: &robot.name,
+        csv: &args.csv,
+        method,
+        filter: source.filter(),
+        model: &description,
+        springs: springs.iter().any(Option::is_some),
+        tolerance: args.tolerance,
+        start: span.0,
+        end: span.1,
+        units,
+        linear: &model,
+        estimate: &estimate,
+    };
+    Ok(if args.json {
+        report.json()
+    } else {
+        report.text()
+    })
+}
+
+fn joint_terms(args: &Identify) -> JointTerms {
+    let has = |kind| args.friction.contains(&kind);
+    JointTerms {
+        rotors: args.rotors,
+        viscous: has(Friction::Viscous),
+        coulomb: has(Friction::Coulomb),
+        offset: has(Friction::Offset),
+    }
+}
+
+/// Per joint, the description's spring `(k, rest)`, if any, at these fields' values.
+fn springs(robot: &Robot, names: &[String], values: &[f64]) -> Vec<Option<(f64, f64)>> {
+    let field = |f: &str| names.iter().position(|n| n == f).map(|k| values[k]);
+    robot
+        .joints
+        .iter()
+        .map(|j| {
+            let spring = j.link.spring.as_ref()?;
+            // Every field has a value (`parameters` checked), and a spring has no joint variable.
+            let value = |v: &dynamics_codegen::model::Value| v.eval(&field).unwrap_or(f64::NAN);
+            Some((value(&spring.stiffness), value(&spring.rest)))
+        })
+        .collect()
+}
+
+/// τ_i less joint i's spring torque `k (q_i − rest)`.
+fn rigid_torque(tau: f64, q: f64, spring: Option<(f64, f64)>) -> f64 {
+    spring.map_or(tau, |(k, rest)| tau - k * (q - rest))
+}
+
+/// One pass over the samples into the joints' factors; how q̇ and q̈ were had, and the time
+/// span.
+fn measure(
+    model: &LinearModel,
+    source: &Source,
+    springs: &[Option<(f64, f64)>],
+) -> Result<(Measured, &'static str, (f64, f64)), Failure> {
+    let p = model.names.len();
+    let mut measured = Measured::new(model.columns.clone(), p);
+    let mut work = Work::default();
+    let mut entries = vec![0.0; model.entries()];
+    let mut span = (f64::NAN, f64::NAN);
+    let method = source
+        .each(|s| {
+            if span.0.is_nan() {
+                span.0 = s.t;
+            }
+            span.1 = s.t;
+            model.rows(&s.q, &s.qd, &s.qdd, &mut work, &mut entries);
+            let mut start = 0;
+            for (i, columns) in model.columns.iter().enumerate() {
+                let row = &entries[start..start + columns.len()];
+                measured.push(i, row, rigid_torque(s.tau[i], s.q[i], springs[i]));
+                start += columns.len();
+            }
+        })
+        .map_err(Failure::File)?;
+    Ok((measured, method, span))
+}
+
+/// A second pass: the measured and predicted torques, decimated for the figure.
+fn predictions(
+    model: &LinearModel,
+    source: &Source,
+    springs: &[Option<(f64, f64)>],
+    estimate: &Estimate,
+) -> Result<Envelope, Failure> {
+    let n = model.joints();
+    let pi: Vec<f64> = estimate
+        .values
+        .iter()
+        .map(|v| if v.is_nan() { 0.0 } else { *v })
+        .collect();
+    let mut envelope = Envelope::new(figure::SERIES * n);
+    let mut work = Work::default();
+    let mut entries = vec![0.0; model.entries()];
+    let (mut measured, mut predicted) = (vec![0.0; n], vec![0.0; n]);
+    let mut values = vec![0.0; figure::SERIES * n];
+    source
+        .each(|s| {
+            model.rows(&s.q, &s.qd, &s.qdd, &mut work, &mut entries);
+            let mut start = 0;
+            for (i, columns) in model.columns.iter().enumerate() {
+                let row = &entries[start..start + columns.len()];
+                predicted[i] = columns.iter().zip(row).map(|(&k, y)| y * pi[k]).sum();
+                measured[i] = rigid_torque(s.tau[i], s.q[i], springs[i]);
+                start += columns.len();
+            }
+            figure::values(&measured, &predicted, &mut values);
+            envelope.push(s.t, &values);
+        })
+        .map_err(Failure::File)?;
+    Ok(envelope)
+}

@@ -1,0 +1,438 @@
+//! `dynamics identify` end to end, on data synthesised from robots with known parameters: the
+//! torques come from `Numeric::inverse_dynamics` (recursive Newton-Euler in `f64`, with the
+//! actuators, friction and springs of the description), not from the regressor under test, and
+//! the predictions the tests check are the regressor's graph evaluated by `Graph::eval`, not by
+//! the tape `identify` uses.
+
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::numeric::Numeric;
+use dynamics_codegen::{derive, Equations, Family, FamilySet};
+use serde_json::Value;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// A 4-joint arm: a vertical revolute joint, two revolute joints about parallel axes, and a
+/// prismatic wrist, with actuator inertia, viscous, Coulomb and offset friction, and a spring.
+const ARM: &str = r#"
+name = "arm4"
+gravity = [0, 0, -9.81]
+
+[[joints]]
+type = "revolute"
+d = 0.4
+alpha = "90 deg"
+mass = 3
+com = [0, -0.1, 0.02]
+inertia = [0.05, 0.04, 0.03, 0.001, 0, 0.002]
+actuator_inertia = 0.2
+friction_viscous = 0.8
+friction_coulomb = 1.2
+
+[[joints]]
+type = "revolute"
+a = 0.5
+mass = 4
+com = [-0.25, 0.01, 0.03]
+inertia = [0.02, 0.09, 0.08, 0.003, -0.002, 0.001]
+actuator_inertia = 0.15
+friction_viscous = 0.5
+friction_coulomb = 0.9
+friction_offset = 0.3
+spring_stiffness = 12
+spring_rest = 0.2
+
+[[joints]]
+type = "revolute"
+a = 0.35
+alpha = "-90 deg"
+mass = 2.5
+com = [-0.15, 0, 0.05]
+inertia = [0.01, 0.03, 0.025, 0, 0.001, 0]
+actuator_inertia = 0.08
+friction_viscous = 0.3
+friction_coulomb = 0.4
+
+[[joints]]
+type = "prismatic"
+theta = "90 deg"
+mass = 1.2
+com = [0.01, 0.02, -0.05]
+inertia = [0.004, 0.005, 0.003, 0, 0, 0]
+actuator_inertia = 0.5
+friction_viscous = 2.0
+friction_coulomb = 1.5
+"#;
+
+/// A scratch file of this test binary.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_identify");
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir.join(name)
+}
+
+fn arm_file() -> String {
+    let path = scratch("arm4.toml");
+    std::fs::write(&path, ARM).expect("write robot");
+    path.to_string_lossy().into_owned()
+}
+
+fn arm() -> Robot {
+    dynamics_codegen::front::load("arm4.toml", ARM)
+        .expect("the test robot reads")
+        .robot
+}
+
+/// A sample of a trajectory, with exact derivatives.
+struct State {
+    t: f64,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    qdd: Vec<f64>,
+}
+
+/// A finite Fourier series per joint (the excitation of Swevers et al., 1997):
+/// `q_j(t) = c_j + Σ_l a_jl sin(l ω t + φ_jl)`, with its exact derivatives; `seed` varies the
+/// phases and amplitudes. Joints in `still` keep `q_j = c_j`.
+fn fourier(n: usize, samples: usize, rate: f64, seed: f64, still: &[usize]) -> Vec<State> {
+    let omega = 2.0 * std::f64::consts::PI * 0.25;
+    (0..samples)
+        .map(|k| {
+            let t = k as f64 / rate;
+            let mut s = State {
+                t,
+                q: vec![0.0; n],
+                qd: vec![0.0; n],
+                qdd: vec![0.0; n],
+            };
+            for j in 0..n {
+                s.q[j] = 0.3 + 0.1 * j as f64;
+                if still.contains(&j) {
+                    continue;
+                }
+                for l in 1..=4 {
+                    let lw = l as f64 * omega;
+                    let a = (0.5 + 0.3 * (seed * (j * 5 + l) as f64).sin()) / l as f64 * 0.6;
+                    let phase = seed * (1.0 + j as f64) * (2.0 + l as f64);
+                    let x = lw * t + phase;
+                    s.q[j] += a * x.sin();
+                    s.qd[j] += a * lw * x.cos();
+                    s.qdd[j] -= a * lw * lw * x.sin();
+                }
+            }
+            s
+        })
+        .collect()
+}
+
+/// The measured torques: inverse dynamics of the description, plus `noise(j)` per joint.
+fn torques(robot: &Robot, states: &[State], mut noise: impl FnMut(usize) -> f64) -> Vec<Vec<f64>> {
+    let numeric = Numeric::new(robot, &[]).expect("no fields");
+    states
+        .iter()
+        .map(|s| {
+            let tau = numeric.inverse_dynamics(&s.q, &s.qd, &s.qdd);
+            tau.iter().enumerate().map(|(j, t)| t + noise(j)).collect()
+        })
+        .collect()
+}
+
+/// Writes `t, q.., [qd.., qdd..,] tau..` (with the derivatives when `derivatives`).
+fn write_csv(name: &str, states: &[State], tau: &[Vec<f64>], derivatives: bool) -> String {
+    let n = states[0].q.len();
+    let names = |p: &str| (1..=n).map(|i| format!("{p}{i}")).collect::<Vec<_>>();
+    let mut header = vec!["t".to_string()];
+    header.extend(names("q"));
+    if derivatives {
+        header.extend(names("qd"));
+        header.extend(names("qdd"));
+    }
+    header.extend(names("tau"));
+    let mut text = header.join(",") + "\n";
+    for (s, tau) in states.iter().zip(tau) {
+        let mut row = vec![s.t];
+        row.extend(&s.q);
+        if derivatives {
+            row.extend(&s.qd);
+            row.extend(&s.qdd);
+        }
+        row.extend(tau);
+        let fields: Vec<String> = row.iter().map(f64::to_string).collect();
+        let _ = writeln!(text, "{}", fields.join(","));
+    }
+    let path = scratch(name);
+    std::fs::write(&path, text).expect("write csv");
+    path.to_string_lossy().into_owned()
+}
+
+fn dynamics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(args)
+        .output()
+        .expect("run dynamics")
+}
+
+fn json(out: &Output) -> Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+const ALL_TERMS: [&str; 3] = ["--rotors", "--friction", "viscous,coulomb,offset"];
+
+/// The estimates by name.
+fn estimates(report: &Value) -> Vec<(String, f64, f64)> {
+    let parameters = report["parameters"].as_array().expect("parameters");
+    parameters
+        .iter()
+        .map(|p| {
+            let name = p["name"].as_str().expect("name").to_string();
+            (
+                name,
+                p["estimate"].as_f64().unwrap(),
+                p["std_dev"].as_f64().unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// τ predicted by the estimates at `s`: the regressor's columns of the named parameters, the
+/// graph evaluated whole.
+fn predict(eq: &Equations, estimates: &[(String, f64, f64)], s: &State) -> Vec<f64> {
+    let values = eq.graph.eval(|v| {
+        use dynamics_codegen::symbolic::Var;
+        match v {
+            Var::Q(i) => s.q[usize::from(i)],
+            Var::SinQ(i) => s.q[usize::from(i)].sin(),
+            Var::CosQ(i) => s.q[usize::from(i)].cos(),
+            Var::Qd(i) => s.qd[usize::from(i)],
+            Var::Qdd(i) => s.qdd[usize::from(i)],
+            _ => f64::NAN,
+        }
+    });
+    let regressor = eq.regressor.as_ref().expect("traced");
+    let link = ["M", "MX", "MY", "MZ", "XX", "XY", "YY", "XZ", "YZ", "ZZ"];
+    let joint = ["IA", "FV", "FC", "FO"];
+    (0..eq.dof)
+        .map(|i| {
+            let mut tau = 0.0;
+            for (name, value, _) in estimates {
+                let (kind, index) = name.split_at(name.find(|c: char| c.is_ascii_digit()).unwrap());
+                let j: usize = index.parse::<usize>().unwrap() - 1;
+                let id = if let Some(k) = link.iter().position(|&p| p == kind) {
+                    regressor.columns[i][j][k]
+                } else {
+                    let k = joint.iter().position(|&p| p == kind).expect("a known name");
+                    if i != j {
+                        continue;
+                    }
+                    regressor.joint_columns[j][k]
+                };
+                tau += values[id.index()] * value;
+            }
+            tau
+        })
+        .collect()
+}
+
+fn equations(robot: &Robot) -> Equations {
+    let mut eq = derive(robot);
+    eq.add_families(robot, FamilySet::default().with(Family::Regressor));
+    eq
+}
+
+/// The largest difference over the samples, relative to the largest torque.
+fn worst(predicted: &[Vec<f64>], measured: &[Vec<f64>]) -> f64 {
+    let scale = measured
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let diff = predicted.iter().flatten().zip(measured.iter().flatten());
+    diff.fold(0.0f64, |m, (p, t)| m.max((p - t).abs())) / scale
+}
+
+/// The spring torque of joint 2, which the measured torques hold and the regressor does not.
+fn without_spring(tau: &[f64], s: &State) -> Vec<f64> {
+    let mut out = tau.to_vec();
+    out[1] -= 12.0 * (s.q[1] - 0.2);
+    out
+}
+
+#[test]
+fn noise_free_data_are_reproduced_and_predict_another_trajectory() {
+    let robot = arm();
+    let states = fourier(4, 1500, 100.0, 0.7, &[]);
+    let tau = torques(&robot, &states, |_| 0.0);
+    let csv = write_csv("exact.csv", &states, &tau, true);
+    let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
+    args.extend(ALL_TERMS);
+    let report = json(&dynamics(&args));
+    assert_eq!(report["samples"].as_u64(), Some(1500));
+    assert_eq!(report["springs_subtracted"].as_bool(), Some(true));
+    let scale = tau.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    for joint in report["joints"].as_array().unwrap() {
+        let rms = joint["residual_rms"].as_f64().unwrap();
+        assert!(rms < 1e-9 * scale, "{joint}");
+    }
+    // Another trajectory, never seen by the fit: Y π̂ against the numeric inverse dynamics.
+    let eq = equations(&robot);
+    let found = estimates(&report);
+    let other = fourier(4, 200, 50.0, 2.3, &[]);
+    let truth: Vec<Vec<f64>> = torques(&robot, &other, |_| 0.0)
+        .iter()
+        .zip(&other)
+        .map(|(t, s)| without_spring(t, s))
+        .collect();
+    let predicted: Vec<Vec<f64>> = other.iter().map(|s| predict(&eq, &found, s)).collect();
+    let error = worst(&predicted, &truth);
+    assert!(error < 1e-9, "{error}");
+}
+
+/// The arm's description file, written once per test binary.
+fn arm_file_static() -> &'static str {
+    static PATH: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    PATH.get_or_init(arm_file)
+}
+
+/// The names of the parameters reported as not identifiable.
+fn unidentifiable(report: &Value) -> Vec<String> {
+    let list = report["unidentifiable"].as_array().expect("a list");
+    list.iter()
+        .map(|u| u["name"].as_str().expect("name").to_string())
+        .collect()
+}
+
+/// Joint 3 held still: the terms it alone excites are named, with no estimate, and the rest
+/// still reproduce the torques.
+#[test]
+fn a_joint_that_never_moves_names_what_it_leaves_unidentified() {
+    let robot = arm();
+    let states = fourier(4, 800, 100.0, 0.9, &[2]);
+    let tau = torques(&robot, &states, |_| 0.0);
+    // Positions only: the derivatives of a still joint come out exactly zero.
+    let csv = write_csv("still.csv", &states, &tau, false);
+    let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
+    args.extend(ALL_TERMS);
+    let report = json(&dynamics(&args));
+    let named = unidentifiable(&report);
+    // Columns q̈_3, q̇_3, sign(q̇_3) of joint 3's actuator and friction are zero in these data.
+    for name in ["IA3", "FV3", "FC3"] {
+        assert!(named.iter().any(|n| n == name), "{name}: {named:?}");
+        let u = &report["unidentifiable"][named.iter().position(|n| n == name).unwrap()];
+        assert_eq!(u["combination"].as_array().map(Vec::len), Some(0), "{u}");
+    }
+    let found = estimates(&report);
+    assert!(found
+        .iter()
+        .all(|(n, v, s)| v.is_finite() && s.is_finite() && n != "IA3"));
+    // Estimated from differences, so to their accuracy: (ω h)² / 12 of the acceleration.
+    let scale = tau.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    for joint in report["joints"].as_array().unwrap() {
+        assert!(
+            joint["residual_rms"].as_f64().unwrap() < 1e-3 * scale,
+            "{joint}"
+        );
+    }
+}
+
+#[test]
+fn bad_csv_lines_are_named_by_line_and_column() {
+    let robot = arm_file_static();
+    let cases = [
+        (
+            "t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n0,0,0,0,0,1,2,3,4\n# a comment\n1,0,0,x,0,1,2,3,4\n",
+            "line 4, column 4 (q3): `x` is not a number",
+        ),
+        (
+            "t,q1,q2,q3,q4\n0,0,0,0,0\n",
+            "line 1: the header has 5 columns; the robot has 4 joints",
+        ),
+        (
+            "t,q1,q2,q3,q4,tau1,tau2,tau3,tau\n",
+            "line 1, column 9 (tau): expected the header name `tau4`",
+        ),
+        (
+            "t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n0,0,0,0,0,1,2,3,4\n1,0,0,0,0,1,2,3\n",
+            "line 3: 8 values; the header has 9 columns",
+        ),
+    ];
+    for (k, (text, message)) in cases.iter().enumerate() {
+        let csv = scratch(&format!("bad{k}.csv"));
+        std::fs::write(&csv, text).unwrap();
+        let out = dynamics(&["identify", robot, "--csv", csv.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(1), "{text}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(message), "{stderr}");
+    }
+}
+
+/// The worst residual RMS over the joints of a report.
+fn residual(report: &Value) -> f64 {
+    let joints = report["joints"].as_array().expect("joints");
+    joints
+        .iter()
+        .map(|j| j["residual_rms"].as_f64().expect("a number"))
+        .fold(0.0, f64::max)
+}
+
+/// Positions with 10⁻⁴ rad (or m) of measurement noise: differenced twice at 200 Hz, the noise
+/// reaches q̈ amplified by about 200² · √6; the zero-phase low-pass at 4 Hz (the motion's
+/// highest harmonic is 1 Hz) takes it out before differentiation.
+#[test]
+fn a_low_pass_before_differentiation_tames_noisy_positions() {
+    let robot = arm();
+    let mut states = fourier(4, 3000, 200.0, 0.4, &[]);
+    let tau = torques(&robot, &states, |_| 0.0);
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    for s in &mut states {
+        for q in &mut s.q {
+            // Uniform in ±√3 · 10⁻⁴: a standard deviation of 10⁻⁴.
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            *q += 3f64.sqrt() * 1e-4 * (2.0 * (seed >> 11) as f64 / (1u64 << 53) as f64 - 1.0);
+        }
+    }
+    let csv = write_csv("noisy_q.csv", &states, &tau, false);
+    let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
+    args.extend(ALL_TERMS);
+    let raw = json(&dynamics(&args));
+    args.extend(["--cutoff", "4"]);
+    let filtered = json(&dynamics(&args));
+    assert_eq!(filtered["filter"]["cutoff_hz"].as_f64(), Some(4.0));
+    assert_eq!(
+        filtered["filter"]["rate_hz"].as_f64().map(f64::round),
+        Some(200.0)
+    );
+    assert!(raw["filter"].is_null());
+    let (before, after) = (residual(&raw), residual(&filtered));
+    assert!(after < 0.1 * before, "{after} {before}");
+    // The text says which filter ran.
+    args.retain(|a| *a != "--json");
+    let text = String::from_utf8(dynamics(&args).stdout).unwrap();
+    assert!(
+        text.contains("filter: 4th-order Butterworth low-pass at 4 Hz"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_filter_needs_even_samples() {
+    let csv = scratch("uneven.csv");
+    let mut text = String::from("t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n");
+    for t in [0.0, 0.01, 0.02, 0.035, 0.04, 0.05] {
+        let _ = writeln!(text, "{t},0,0,0,0,1,2,3,4");
+    }
+    std::fs::write(&csv, text).unwrap();
+    let csv = csv.to_str().unwrap();
+    let out = dynamics(&["identify", arm_file_static(), "--csv", csv, "--cutoff", "5"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("line 5, column 1 (t): --cutoff needs evenly spaced samples"),
+        "{stderr}"
+    );
+}
