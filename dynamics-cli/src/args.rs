@@ -1,6 +1,8 @@
 //! The command line, declared for clap: every subcommand, option and help text.
 
 use clap::{Args, Parser, Subcommand};
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{Family, FamilySet};
 use std::str::FromStr;
 
@@ -139,8 +141,46 @@ pub struct Inspect {
     #[arg(long)]
     pub latex: bool,
     /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
-    #[arg(long)]
+    #[arg(long, conflicts_with = "base_parameters")]
     pub kinematics: bool,
+    /// The base parameters instead of the equations of motion: the combinations of the
+    /// standard parameters that the joint torques determine
+    #[arg(long)]
+    pub base_parameters: bool,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+}
+
+/// Which of the joints' own parameters take part in the base parameters, beside the links'.
+#[derive(Args, Debug)]
+pub struct JointTerms {
+    /// Every joint's actuator (rotor) inertia [default: the joints whose description gives one]
+    #[arg(long)]
+    pub rotors: bool,
+    /// These friction coefficients of every joint: viscous, coulomb, offset (comma-separated)
+    /// [default: those of the joints whose description has friction]
+    #[arg(long, value_name = "TERM", value_delimiter = ',', value_parser = ["viscous", "coulomb", "offset"])]
+    pub friction: Vec<String>,
+}
+
+impl JointTerms {
+    /// Per joint, its description's parameters and those asked for.
+    pub fn columns(&self, robot: &Robot) -> Vec<JointColumns> {
+        let asked = |name: &str| self.friction.iter().any(|f| f == name);
+        robot
+            .joints
+            .iter()
+            .map(|joint| {
+                let described = JointColumns::described(joint);
+                JointColumns {
+                    actuator_inertia: described.actuator_inertia || self.rotors,
+                    viscous: described.viscous || asked("viscous"),
+                    coulomb: described.coulomb || asked("coulomb"),
+                    offset: described.offset || asked("offset"),
+                }
+            })
+            .collect()
+    }
 }
 
 #[derive(Args, Debug)]

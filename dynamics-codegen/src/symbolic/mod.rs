@@ -4,6 +4,7 @@
 
 mod calculus;
 mod graph;
+pub mod modular;
 mod node;
 mod number;
 mod tape;

@@ -23,6 +23,7 @@
 //! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
 //! graph is built, and the emitted code follows node ids: the steps run in a fixed order.
 
+pub mod base_parameters;
 mod coriolis;
 mod cost;
 mod derivatives;
