@@ -288,13 +288,8 @@ pub struct Identify {
     /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
     #[arg(long, value_name = "FILE")]
     pub csv: String,
-    /// Also identify each joint's actuator (rotor) inertia, the coefficient of q̈_i in τ_i
-    #[arg(long)]
-    pub rotors: bool,
-    /// Also identify joint friction of these kinds (comma-separated): viscous (f_v q̇),
-    /// coulomb (f_c sign(q̇)), offset (f_0)
-    #[arg(long, value_name = "KINDS", value_delimiter = ',')]
-    pub friction: Vec<Friction>,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
     /// Low-pass every column but t at this frequency before q̇ and q̈ are taken: a
     /// 4th-order Butterworth filter run forward and backward (zero phase). Samples must be
     /// evenly spaced
@@ -314,14 +309,6 @@ pub struct Identify {
     /// Print JSON instead of a table
     #[arg(long)]
     pub json: bool,
-}
-
-/// A kind of joint friction to identify.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Friction {
-    Viscous,
-    Coulomb,
-    Offset,
 }
 
 fn positive(text: &str) -> Result<f64, String> {

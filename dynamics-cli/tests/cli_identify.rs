@@ -6,7 +6,9 @@
 
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::numeric::Numeric;
-use dynamics_codegen::{derive, Equations, Family, FamilySet};
+use dynamics_codegen::symbolic::Var;
+use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
+use dynamics_codegen::{derive, Equations};
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -183,65 +185,61 @@ fn json(out: &Output) -> Value {
 
 const ALL_TERMS: [&str; 3] = ["--rotors", "--friction", "viscous,coulomb,offset"];
 
+/// One parameter's estimate, as the report gives it.
+struct Estimate {
+    name: String,
+    value: f64,
+    deviation: f64,
+}
+
 /// The estimates by name.
-fn estimates(report: &Value) -> Vec<(String, f64, f64)> {
+fn estimates(report: &Value) -> Vec<Estimate> {
     let parameters = report["parameters"].as_array().expect("parameters");
     parameters
         .iter()
-        .map(|p| {
-            let name = p["name"].as_str().expect("name").to_string();
-            (
-                name,
-                p["estimate"].as_f64().unwrap(),
-                p["std_dev"].as_f64().unwrap(),
-            )
+        .map(|p| Estimate {
+            name: p["name"].as_str().expect("name").to_string(),
+            value: p["estimate"].as_f64().expect("a number"),
+            deviation: p["std_dev"].as_f64().expect("a number"),
         })
         .collect()
 }
 
-/// τ predicted by the estimates at `s`: the regressor's columns of the named parameters, the
-/// graph evaluated whole.
-fn predict(eq: &Equations, estimates: &[(String, f64, f64)], s: &State) -> Vec<f64> {
-    let values = eq.graph.eval(|v| {
-        use dynamics_codegen::symbolic::Var;
-        match v {
-            Var::Q(i) => s.q[usize::from(i)],
-            Var::SinQ(i) => s.q[usize::from(i)].sin(),
-            Var::CosQ(i) => s.q[usize::from(i)].cos(),
-            Var::Qd(i) => s.qd[usize::from(i)],
-            Var::Qdd(i) => s.qdd[usize::from(i)],
-            _ => f64::NAN,
-        }
+/// τ predicted by the estimates at `s`: the reduced regressor's columns of the named base
+/// parameters, the graph evaluated whole.
+fn predict(eq: &Equations, base: &BaseParameters, estimates: &[Estimate], s: &State) -> Vec<f64> {
+    let values = eq.graph.eval(|v| match v {
+        Var::Q(i) => s.q[usize::from(i)],
+        Var::SinQ(i) => s.q[usize::from(i)].sin(),
+        Var::CosQ(i) => s.q[usize::from(i)].cos(),
+        Var::Qd(i) => s.qd[usize::from(i)],
+        Var::Qdd(i) => s.qdd[usize::from(i)],
+        _ => f64::NAN,
     });
-    let regressor = eq.regressor.as_ref().expect("traced");
-    let link = ["M", "MX", "MY", "MZ", "XX", "XY", "YY", "XZ", "YZ", "ZZ"];
-    let joint = ["IA", "FV", "FC", "FO"];
     (0..eq.dof)
         .map(|i| {
-            let mut tau = 0.0;
-            for (name, value, _) in estimates {
-                let (kind, index) = name.split_at(name.find(|c: char| c.is_ascii_digit()).unwrap());
-                let j: usize = index.parse::<usize>().unwrap() - 1;
-                let id = if let Some(k) = link.iter().position(|&p| p == kind) {
-                    regressor.columns[i][j][k]
-                } else {
-                    let k = joint.iter().position(|&p| p == kind).expect("a known name");
-                    if i != j {
-                        continue;
-                    }
-                    regressor.joint_columns[j][k]
-                };
-                tau += values[id.index()] * value;
-            }
-            tau
+            let terms = estimates.iter().map(|e| {
+                let b = base.parameters.iter().position(|p| p.name == e.name);
+                values[base.regressor[i][b.expect("a base parameter")].index()] * e.value
+            });
+            terms.sum()
         })
         .collect()
 }
 
-fn equations(robot: &Robot) -> Equations {
+/// The equations of the arm and its base parameters with every joint term.
+fn base_parameters(robot: &Robot) -> (Equations, BaseParameters) {
     let mut eq = derive(robot);
-    eq.add_families(robot, FamilySet::default().with(Family::Regressor));
-    eq
+    let every = JointColumns {
+        actuator_inertia: true,
+        viscous: true,
+        coulomb: true,
+        offset: true,
+    };
+    let base = eq
+        .base_parameters(robot, &[every; 4])
+        .expect("numbers only");
+    (eq, base)
 }
 
 /// The largest difference over the samples, relative to the largest torque.
@@ -278,15 +276,19 @@ fn noise_free_data_are_reproduced_and_predict_another_trajectory() {
         assert!(rms < 1e-9 * scale, "{joint}");
     }
     // Another trajectory, never seen by the fit: Y π̂ against the numeric inverse dynamics.
-    let eq = equations(&robot);
+    let (eq, base) = base_parameters(&robot);
     let found = estimates(&report);
+    assert_eq!(found.len(), base.parameters.len());
     let other = fourier(4, 200, 50.0, 2.3, &[]);
     let truth: Vec<Vec<f64>> = torques(&robot, &other, |_| 0.0)
         .iter()
         .zip(&other)
         .map(|(t, s)| without_spring(t, s))
         .collect();
-    let predicted: Vec<Vec<f64>> = other.iter().map(|s| predict(&eq, &found, s)).collect();
+    let predicted: Vec<Vec<f64>> = other
+        .iter()
+        .map(|s| predict(&eq, &base, &found, s))
+        .collect();
     let error = worst(&predicted, &truth);
     assert!(error < 1e-9, "{error}");
 }
@@ -325,9 +327,8 @@ fn a_joint_that_never_moves_names_what_it_leaves_unidentified() {
         assert_eq!(u["combination"].as_array().map(Vec::len), Some(0), "{u}");
     }
     let found = estimates(&report);
-    assert!(found
-        .iter()
-        .all(|(n, v, s)| v.is_finite() && s.is_finite() && n != "IA3"));
+    let finite = |e: &Estimate| e.value.is_finite() && e.deviation.is_finite();
+    assert!(found.iter().all(|e| finite(e) && !named.contains(&e.name)));
     // Estimated from differences, so to their accuracy: (ω h)² / 12 of the acceleration.
     let scale = tau.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     for joint in report["joints"].as_array().unwrap() {
@@ -435,4 +436,59 @@ fn a_filter_needs_even_samples() {
         stderr.contains("line 5, column 1 (t): --cutoff needs evenly spaced samples"),
         "{stderr}"
     );
+}
+
+/// Normal deviates from a fixed seed (xorshift64, Box-Muller).
+fn normal(seed: &mut u64) -> f64 {
+    let mut uniform = || {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        ((*seed >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    };
+    let (u, v) = (uniform(), uniform());
+    (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+}
+
+/// Torques with noise of a different level on each joint (exact q̇, q̈): every estimate within
+/// four of its standard deviations of the description's base parameter, and the weights
+/// found near the noise put in.
+#[test]
+fn noisy_torques_give_estimates_within_their_standard_deviations() {
+    let robot = arm();
+    let states = fourier(4, 4000, 100.0, 1.3, &[]);
+    let levels = [0.05, 0.2, 0.02, 0.1];
+    let mut seed = 0x853c_49e6_748f_ea9b_u64;
+    let tau = torques(&robot, &states, |j| levels[j] * normal(&mut seed));
+    let csv = write_csv("noisy_tau.csv", &states, &tau, true);
+    let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
+    args.extend(ALL_TERMS);
+    let report = json(&dynamics(&args));
+    assert!(unidentifiable(&report).is_empty(), "{report}");
+    let (eq, base) = base_parameters(&robot);
+    // The description's base parameters, the graph evaluated whole (no joint variables).
+    let all = eq.graph.eval(|_| f64::NAN);
+    let found = estimates(&report);
+    let mut chi2 = 0.0;
+    for e in &found {
+        let b = base.parameters.iter().position(|p| p.name == e.name);
+        let truth = all[base.values[b.expect("a base parameter")].index()];
+        let error = (e.value - truth).abs();
+        chi2 += (error / e.deviation).powi(2);
+        assert!(
+            error < 4.0 * e.deviation,
+            "{}: {} ± {} against {truth}",
+            e.name,
+            e.value,
+            e.deviation
+        );
+    }
+    // Nor are the deviations inflated: the normalised squared errors average near 1 (a χ² of
+    // 33 degrees of freedom over 33 is within 0.3 and 2.5 but once in 10⁴).
+    let mean = chi2 / found.len() as f64;
+    assert!(mean > 0.3 && mean < 2.5, "{mean}");
+    for (joint, level) in report["joints"].as_array().unwrap().iter().zip(levels) {
+        let sigma = joint["sigma"].as_f64().unwrap();
+        assert!((sigma / level - 1.0).abs() < 0.05, "{joint}: {level}");
+    }
 }

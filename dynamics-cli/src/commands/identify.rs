@@ -6,13 +6,16 @@
 //! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
 //! are known, not identified), and the N samples of n joints stack into `τ = Y π + ρ`:
 //!
-//! * π: the links' inertial parameters and the joint terms asked for (`--rotors`: `IA_i`, the
-//!   coefficient of `q̈_i`; `--friction viscous,coulomb,offset`: `FV_i q̇_i + FC_i sign(q̇_i) +
-//!   FO_i`). By default rigid bodies only, whatever the description holds: the same command
-//!   identifies the same parameters for every description of the robot.
-//! * identifiable parameters: a rank-revealing QR of the stacked `Y`, columns scaled to unit
-//!   norm and taken in order; a column within `--tolerance` of the span of those before it is
-//!   named, with its combination, and not estimated.
+//! * π: the base parameters (`dynamics_codegen::trace::base_parameters`): the combinations of
+//!   the links' standard parameters and of the joint terms that τ determines, with `Y` their
+//!   reduced regressor of full column rank. The joint terms are those the description gives
+//!   (its actuator inertias, its friction) and those asked for on every joint (`--rotors`:
+//!   `IA_i`, the coefficient of `q̈_i`; `--friction viscous,coulomb,offset`: `FV_i q̇_i +
+//!   FC_i sign(q̇_i) + FO_i`), as `dynamics inspect --base-parameters` takes them.
+//! * identifiable parameters: the base parameters are identifiable from some motion, but not
+//!   from every one (a joint that never moves, too little excitation). A rank-revealing QR of
+//!   the stacked `Y`, columns scaled to unit norm and taken in order, names each column within
+//!   `--tolerance` of the span of those before it, with its combination, and leaves it out.
 //! * two-step weighted least squares (Gautier and Poignet, 2001): the ordinary fit
 //!   `π̂ = argmin ‖Y π − τ‖²`, then per joint `σ_i² = ‖Y_i π̂ − τ_i‖² / (N − c_i)` (c_i the
 //!   identified parameters in joint i's equation) and the fit with joint i's rows divided by
@@ -27,28 +30,33 @@
 use super::eval::{parameters, usage};
 use super::size::write_svg;
 use super::{load, Failure};
-use crate::args::{Friction, Identify};
+use crate::args::Identify;
+use crate::identify::base;
 use crate::identify::estimate::{estimate, Estimate};
 use crate::identify::figure;
 use crate::identify::measured::Measured;
 use crate::identify::model::{LinearModel, Work};
 use crate::identify::report::Report;
 use crate::identify::source::Source;
-use crate::identify::standard::{self, JointTerms};
 use crate::plot::Envelope;
 use crate::sizing::unit;
 use crate::trajectory::Columns;
+use dynamics_codegen::derive;
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::{derive, Family, FamilySet};
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let fields = parameters("identify", &robot.fields(), &args.set)?;
     let mut eq = derive(&robot);
-    eq.add_families(&robot, FamilySet::default().with(Family::Regressor));
-    let terms = joint_terms(args);
-    let entries = standard::entries(&eq, terms, &fields).map_err(Failure::File)?;
-    let model = LinearModel::new(&entries).map_err(Failure::File)?;
+    let joint_columns = args.joint_terms.columns(&robot);
+    let Some(base) = eq.base_parameters(&robot, &joint_columns) else {
+        return Err(Failure::File(format!(
+            "{}: the base parameters need the robot's lengths and angles as numbers, not \
+             struct fields",
+            args.robot.path
+        )));
+    };
+    let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
     let springs = springs(&robot, &robot.fields(), &fields);
     let columns = Columns {
         joints: model.joints(),
@@ -70,7 +78,11 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         let envelope = predictions(&model, &source, &springs, &estimate)?;
         write_svg(path, &figure::figure(title, &units, &envelope))?;
     }
-    let description = format!("rigid bodies; joint terms: {}", terms.describe());
+    let description = format!(
+        "the base parameters of the links and the joint terms: {} (their groupings: \
+         `dynamics inspect --base-parameters` with the same options)",
+        base::describe(&joint_columns)
+    );
     let report = Report {
         robot: &robot.name,
         csv: &args.csv,
@@ -90,16 +102,6 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     } else {
         report.text()
     })
-}
-
-fn joint_terms(args: &Identify) -> JointTerms {
-    let has = |kind| args.friction.contains(&kind);
-    JointTerms {
-        rotors: args.rotors,
-        viscous: has(Friction::Viscous),
-        coulomb: has(Friction::Coulomb),
-        offset: has(Friction::Offset),
-    }
 }
 
 /// Per joint, the description's spring `(k, rest)`, if any, at these fields' values.

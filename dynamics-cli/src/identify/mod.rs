@@ -2,13 +2,14 @@
 //! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`).
 //!
 //! * [`model`]: the regressor of a robot's graph, evaluated at a sample;
-//! * [`standard`]: the model of the standard parameters and the joint terms;
+//! * [`base`]: that model for a robot's base parameters;
 //! * [`source`]: the samples, streamed or filtered ([`filter`]);
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
 //!   standard deviations, condition number ([`singular`]);
 //! * [`report`], [`figure`]: what is printed and drawn.
 
+pub mod base;
 pub mod estimate;
 pub mod figure;
 pub mod filter;
@@ -19,4 +20,3 @@ pub mod rank;
 pub mod report;
 pub mod singular;
 pub mod source;
-pub mod standard;
