@@ -28,17 +28,14 @@ pub fn entries<'a>(eq: &'a Equations, base: &BaseParameters, fields: &'a [f64]) 
 /// `none`.
 #[must_use]
 pub fn describe(columns: &[JointColumns]) -> String {
-    let kinds: [(&str, fn(&JointColumns) -> bool); 4] = [
-        ("actuator inertia", |c| c.actuator_inertia),
-        ("viscous", |c| c.viscous),
-        ("Coulomb", |c| c.coulomb),
-        ("offset", |c| c.offset),
-    ];
-    let parts: Vec<String> = kinds
+    let names = ["actuator inertia", "viscous", "Coulomb", "offset"];
+    let flags = |c: &JointColumns| [c.actuator_inertia, c.viscous, c.coulomb, c.offset];
+    let parts: Vec<String> = names
         .iter()
-        .filter_map(|(name, has)| {
+        .enumerate()
+        .filter_map(|(k, name)| {
             let joints: Vec<usize> = (1..=columns.len())
-                .filter(|&j| has(&columns[j - 1]))
+                .filter(|&j| flags(&columns[j - 1])[k])
                 .collect();
             (!joints.is_empty()).then(|| format!("{name} ({})", joint_list(&joints, columns.len())))
         })

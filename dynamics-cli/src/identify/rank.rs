@@ -39,7 +39,7 @@ pub fn identifiable(r: &[f64], p: usize, tolerance: f64) -> (Vec<usize>, Vec<Uni
         .collect();
     let (mut kept, mut dropped) = (Vec::new(), Vec::new());
     for k in 0..p {
-        if !(norms[k] > NO_SIGNAL * largest) {
+        if norms[k] <= NO_SIGNAL * largest {
             dropped.push(Unidentified {
                 parameter: k,
                 combination: Vec::new(),
