@@ -112,10 +112,24 @@ fn noise_free_data_are_reproduced_and_predict_another_trajectory() {
     let states = fourier(4, 1500, 100.0, 0.7, &[]);
     let tau = torques(&robot, &states, |_| 0.0);
     let csv = write_csv("exact.csv", &states, &tau, true);
+    let svg = scratch("exact.svg");
+    let svg = svg.to_str().unwrap();
+    let _ = std::fs::remove_file(svg);
     let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
     args.extend(ALL_TERMS);
+    args.extend(["--plot", svg]);
     let report = json(&dynamics(&args));
     assert_eq!(report["samples"].as_u64(), Some(1500));
+    // The figure: a panel per joint of the measured and predicted torque, one of the residual.
+    let figure = std::fs::read_to_string(svg).expect("the figure is written");
+    for text in [
+        "joint 1: τ1 (N m)",
+        "joint 4: τ4 (N)",
+        "joint 4: measured − predicted (N)",
+    ] {
+        assert!(figure.contains(text), "{text}");
+    }
+    assert_eq!(figure.matches("<polyline").count(), 4 * 3);
     assert_eq!(report["springs_subtracted"].as_bool(), Some(true));
     let scale = tau.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     for joint in report["joints"].as_array().unwrap() {

@@ -76,7 +76,8 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     if let Some(path) = &args.plot {
         let title = format!("{}: measured and predicted joint torques", robot.name);
         let envelope = predictions(&model, &source, &springs, &estimate)?;
-        write_svg(path, &figure::figure(title, &units, &envelope))?;
+        let filtered = source.filter().is_some();
+        write_svg(path, &figure::figure(title, &units, filtered, &envelope))?;
     }
     let description = format!(
         "the base parameters of the links and the joint terms: {} (their groupings: \

@@ -17,9 +17,20 @@ pub fn values(measured: &[f64], predicted: &[f64], out: &mut [f64]) {
     }
 }
 
-/// The figure of `envelope` (filled with [`values`]) for joints with these units.
+/// The figure of `envelope` (filled with [`values`]) for joints with these units; `filtered`
+/// when the measured torques were low-passed (the figure says so: it shows them filtered).
 #[must_use]
-pub fn figure<'e>(title: String, units: &[&str], envelope: &'e Envelope) -> Figure<'e> {
+pub fn figure<'e>(
+    title: String,
+    units: &[&str],
+    filtered: bool,
+    envelope: &'e Envelope,
+) -> Figure<'e> {
+    let measured = if filtered {
+        "measured τ (filtered)"
+    } else {
+        "measured τ"
+    };
     let line = |label: &str, color, series, bold| Line {
         label: label.into(),
         color,
@@ -49,7 +60,7 @@ pub fn figure<'e>(title: String, units: &[&str], envelope: &'e Envelope) -> Figu
     Figure {
         title,
         legend: vec![
-            ("measured τ".into(), MEASURED),
+            (measured.into(), MEASURED),
             ("predicted Y π̂".into(), PREDICTED),
             ("residual".into(), RESIDUAL),
         ],
