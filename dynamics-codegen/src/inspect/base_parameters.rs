@@ -25,10 +25,7 @@ pub fn render_base_parameters(name: &str, base: &BaseParameters, format: Format)
     }
     let none: Vec<String> = base.no_effect.iter().map(|p| symbol(*p, format)).collect();
     if !none.is_empty() {
-        out.push_str(&format!(
-            "No effect on the torques: {}\n",
-            none.join(", ")
-        ));
+        out.push_str(&format!("No effect on the torques: {}\n", none.join(", ")));
     }
     out
 }
@@ -67,7 +64,9 @@ fn named(name: &str, format: Format) -> String {
     match format {
         Format::Text => name.to_string(),
         Format::Latex => {
-            let digits = name.find(|c: char| c.is_ascii_digit()).unwrap_or(name.len());
+            let digits = name
+                .find(|c: char| c.is_ascii_digit())
+                .unwrap_or(name.len());
             format!("\\mathrm{{{}}}_{{{}}}", &name[..digits], &name[digits..])
         }
     }

@@ -22,6 +22,7 @@ use super::Equations;
 use crate::algo::{self, Body, Mat3, RobotScalars, Scalar, V3};
 use crate::method::Family;
 use crate::model::{Convention, Joint, Pose, Robot};
+use crate::symbolic::modular::Fp;
 use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
@@ -65,6 +66,35 @@ impl Equations {
         });
         self.families = self.families.with(Family::Regressor);
     }
+}
+
+/// The regressor's columns and joint columns alone, traced into a graph of their own with the
+/// description's constants as leaves ([`Tracer::with_exact_leaves`]), and those leaves' values.
+pub(super) fn exact_columns(robot: &Robot) -> ExactColumns {
+    let graph = RefCell::new(Graph::new());
+    let fields = robot.fields();
+    let mut tracer = Tracer::new(&graph, &fields, robot).with_exact_leaves();
+    let tau = placeholder_tau(&mut tracer, robot);
+    let (joint_columns, _) = joint_terms(&tracer, robot);
+    let leaves = tracer.exact_leaf_values();
+    let columns = columns(&mut graph.borrow_mut(), &tau);
+    ExactColumns {
+        graph: graph.into_inner(),
+        columns,
+        joint_columns,
+        leaves,
+    }
+}
+
+/// What [`exact_columns`] traces.
+pub(super) struct ExactColumns {
+    pub graph: Graph,
+    /// As [`RegressorEquations::columns`].
+    pub columns: Vec<Vec<Vec<NodeId>>>,
+    /// As [`RegressorEquations::joint_columns`].
+    pub joint_columns: Vec<Vec<NodeId>>,
+    /// The value of leaf [`Var::Exact`]`(k)`.
+    pub leaves: Vec<Fp>,
 }
 
 /// τ of the rigid bodies, each link's body made of its placeholders.

@@ -19,7 +19,12 @@ pub(super) struct Relations {
 
 /// The relations between `columns[c][i]` (column c, row i), in the columns' order, or `None`
 /// where the columns depend on a leaf that is not a joint variable (a struct field).
-pub(super) fn relations(graph: &Graph, columns: &[Vec<NodeId>]) -> Option<Relations> {
+/// The leaf [`Var::Exact`]`(k)` is `leaves[k]`.
+pub(super) fn relations(
+    graph: &Graph,
+    columns: &[Vec<NodeId>],
+    leaves: &[Fp],
+) -> Option<Relations> {
     let outputs: Vec<NodeId> = columns.iter().flatten().copied().collect();
     let mask = modular::needed(graph, &outputs);
     let only_joint_variables = graph.nodes().all(|(id, node)| {
@@ -40,7 +45,7 @@ pub(super) fn relations(graph: &Graph, columns: &[Vec<NodeId>]) -> Option<Relati
     // A random point adds rank unless the rows so far already have it, save for a chance of
     // about 10⁻¹⁷: two points in a row that add none leave a wide margin.
     while unchanged < 2 && basis.rank() < width {
-        let Some(values) = sample(graph, &mask, &mut points) else {
+        let Some(values) = sample(graph, &mask, leaves, &mut points) else {
             // A reciprocal's operand vanished at this point: rare, unless it always does.
             failures += 1;
             if failures > 8 {
@@ -63,7 +68,7 @@ pub(super) fn relations(graph: &Graph, columns: &[Vec<NodeId>]) -> Option<Relati
 
 /// The graph at one random point: each revolute joint's sine and cosine on the unit circle,
 /// the other joint variables random; a sign or tanh (friction's) a random value of its own.
-fn sample(graph: &Graph, mask: &[bool], points: &mut Points) -> Option<Vec<Fp>> {
+fn sample(graph: &Graph, mask: &[bool], constants: &[Fp], points: &mut Points) -> Option<Vec<Fp>> {
     let mut leaves: HashMap<Var, Fp> = HashMap::new();
     let mut circles: HashMap<u16, (Fp, Fp)> = HashMap::new();
     let mut opaque: HashMap<Node, Fp> = HashMap::new();
@@ -76,11 +81,22 @@ fn sample(graph: &Graph, mask: &[bool], points: &mut Points) -> Option<Vec<Fp>> 
         |v| match v {
             Var::SinQ(i) => circles.entry(i).or_insert_with(|| for_leaves.circle()).0,
             Var::CosQ(i) => circles.entry(i).or_insert_with(|| for_leaves.circle()).1,
+            Var::Exact(k) => constants[usize::from(k)],
             _ => *leaves.entry(v).or_insert_with(|| for_leaves.residue()),
         },
         |node, operand| match node {
-            Node::Sin(_) => angles.entry(operand).or_insert_with(|| for_opaque.circle()).0,
-            Node::Cos(_) => angles.entry(operand).or_insert_with(|| for_opaque.circle()).1,
+            Node::Sin(_) => {
+                angles
+                    .entry(operand)
+                    .or_insert_with(|| for_opaque.circle())
+                    .0
+            }
+            Node::Cos(_) => {
+                angles
+                    .entry(operand)
+                    .or_insert_with(|| for_opaque.circle())
+                    .1
+            }
             _ => *opaque.entry(node).or_insert_with(|| for_opaque.residue()),
         },
     )
@@ -172,13 +188,17 @@ mod tests {
         // combination of the fourth and the third.
         let mut g = Graph::new();
         let (s, c) = (g.var(Var::SinQ(0)), g.var(Var::CosQ(0)));
-        let (one, two, three) = (g.num(Number::ONE), g.num(Number::int(2)), g.num(Number::int(3)));
+        let (one, two, three) = (
+            g.num(Number::ONE),
+            g.num(Number::int(2)),
+            g.num(Number::int(3)),
+        );
         let s2 = g.mul(s, s);
         let c2 = g.mul(c, c);
         let two_s = g.mul(two, s);
         let affine = g.add(two_s, three);
         let columns: Vec<Vec<_>> = [s2, c2, one, affine, s].iter().map(|&x| vec![x]).collect();
-        let r = relations(&g, &columns).unwrap();
+        let r = relations(&g, &columns, &[]).unwrap();
         assert_eq!(r.pivots, vec![0, 1, 3]);
         assert_eq!(r.coefficients[2], vec![Fp::ONE, Fp::ONE, Fp::ZERO]);
         let half = Fp::int(2).recip().unwrap();
@@ -196,6 +216,6 @@ mod tests {
         let p = g.var(Var::Param(0));
         let s = g.var(Var::SinQ(0));
         let x = g.mul(p, s);
-        assert!(relations(&g, &[vec![x]]).is_none());
+        assert!(relations(&g, &[vec![x]], &[]).is_none());
     }
 }

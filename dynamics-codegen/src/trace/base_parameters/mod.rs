@@ -77,7 +77,12 @@ impl JointColumns {
     }
 
     fn included(self) -> [bool; 4] {
-        [self.actuator_inertia, self.viscous, self.coulomb, self.offset]
+        [
+            self.actuator_inertia,
+            self.viscous,
+            self.coulomb,
+            self.offset,
+        ]
     }
 }
 
@@ -142,11 +147,31 @@ impl Equations {
             for (index, _) in asked.included().iter().enumerate().filter(|(_, &a)| a) {
                 parameters.push(Parameter::Joint { joint, index });
                 let row = regressor.joint_columns[joint][index];
-                columns.push((0..n).map(|i| if i == joint { row } else { zero }).collect());
+                columns.push(
+                    (0..n)
+                        .map(|i| if i == joint { row } else { zero })
+                        .collect(),
+                );
                 values.push(regressor.joint_parameters[joint][index]);
             }
         }
-        let relations = exact::relations(&self.graph, &columns)?;
+        // Exactly on a trace of their own, in which the description's constants are leaves.
+        let mut exact = super::regressor::exact_columns(robot);
+        let exact_zero = exact.graph.num(Number::ZERO);
+        let mut exact_columns: Vec<Vec<NodeId>> = Vec::new();
+        for link in 0..n {
+            for index in LINK_ORDER {
+                exact_columns.push((0..n).map(|i| exact.columns[i][link][index]).collect());
+            }
+        }
+        for (joint, asked) in joints.iter().enumerate().take(n) {
+            for (index, _) in asked.included().iter().enumerate().filter(|(_, &a)| a) {
+                let row = exact.joint_columns[joint][index];
+                let column = (0..n).map(|i| if i == joint { row } else { exact_zero });
+                exact_columns.push(column.collect());
+            }
+        }
+        let relations = exact::relations(&exact.graph, &exact_columns, &exact.leaves)?;
         let pivots = relations.pivots;
         let numbers =
             coefficients::numbers(&self.graph, &columns, &pivots, &relations.coefficients);
@@ -213,6 +238,8 @@ fn base_name(terms: &[Term]) -> String {
     if terms.len() == 1 {
         return name;
     }
-    let digits = name.find(|c: char| c.is_ascii_digit()).unwrap_or(name.len());
+    let digits = name
+        .find(|c: char| c.is_ascii_digit())
+        .unwrap_or(name.len());
     format!("{}R{}", &name[..digits], &name[digits..])
 }
