@@ -135,7 +135,7 @@ fn leaf(v: Var, offsets: &[f64], fields: &[f64]) -> Result<Leaf, String> {
         Var::Qd(i) => Leaf::Qd(i.into()),
         Var::Qdd(i) => Leaf::Qdd(i.into()),
         Var::Param(k) => Leaf::Constant(fields[usize::from(k)]),
-        Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) => {
+        Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) | Var::Exact(_) => {
             return Err(format!(
                 "the regressor depends on {v:?}, which a measured sample does not give"
             ))
