@@ -147,7 +147,8 @@ impl Report<'_> {
             .collect();
         let filter = self.filter.map(|f| {
             json!({ "kind": "butterworth", "order": super::filter::ORDER, "cutoff_hz": f.cutoff,
-                    "rate_hz": f.rate, "zero_phase": true })
+                    "rate_hz": f.rate, "zero_phase": true, "decimation": f.decimation,
+                    "samples_read": f.read })
         });
         let report = json!({
             "robot": self.robot,

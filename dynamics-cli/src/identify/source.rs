@@ -1,6 +1,14 @@
 //! The measured samples, replayable: streamed from the CSV file each time (nothing held), or,
 //! with a low-pass filter, held once in memory (a zero-phase filter needs the whole signal) and
 //! filtered column by column before the derivatives are taken.
+//!
+//! Filtered samples are then decimated (Gautier's parallel filtering and decimation): one in
+//! `d = ⌊0.4 f_s / f_c⌋` is kept, so that the cutoff is 0.8 of the kept samples' Nyquist
+//! frequency. The filtered signal has nothing above the cutoff to lose, while the samples in
+//! between would make the residuals correlated (the noise left is band-limited to `f_c`) and the
+//! least-squares standard deviations, which take the residuals as independent, about
+//! `√(f_s / 2f_c)` times too small. The derivatives are taken before decimation, at the full
+//! rate.
 
 use super::filter::{LowPass, ORDER};
 use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
@@ -31,6 +39,10 @@ pub enum Source {
 pub struct Filter {
     pub cutoff: f64,
     pub rate: f64,
+    /// One sample in this many is kept.
+    pub decimation: usize,
+    /// The samples of the file.
+    pub read: usize,
 }
 
 impl Filter {
@@ -40,9 +52,12 @@ impl Filter {
         format!(
             "{ORDER}th-order Butterworth low-pass at {} Hz (samples at {} Hz), forward and \
              backward (zero phase, −6 dB at the cutoff), on every column but t, before \
-             differentiation",
+             differentiation; then one sample in {} kept, of {} (the cutoff at 0.8 of their \
+             Nyquist frequency, so that the residuals are not correlated)",
             self.cutoff,
-            crate::plot::number(self.rate)
+            crate::plot::number(self.rate),
+            self.decimation,
+            self.read
         )
     }
 }
@@ -89,13 +104,21 @@ impl Source {
         for column in data.iter_mut().skip(1) {
             low_pass.filtfilt(column);
         }
+        // At least 1: a cutoff above 0.4 f_s keeps every sample.
+        let decimation = ((0.4 * rate / cutoff).floor() as usize).max(1);
+        let read = data[0].len();
         Ok(Source::Filtered {
             path: path.to_string(),
             columns,
             given: rows.given,
             data,
             last_line: rows.last_line,
-            filter: Filter { cutoff, rate },
+            filter: Filter {
+                cutoff,
+                rate,
+                decimation,
+                read,
+            },
         })
     }
 
@@ -127,15 +150,22 @@ impl Source {
                 given,
                 data,
                 last_line,
-                ..
+                filter,
             } => {
                 let mut differences = Differences::new(columns.joints, columns.torques);
+                let mut index = 0;
+                let mut kept = |s: &Sample| {
+                    if index % filter.decimation == 0 {
+                        each(s);
+                    }
+                    index += 1;
+                };
                 for k in 0..data[0].len() {
                     let row = data.iter().map(|column| column[k]).collect();
-                    differences.push(*given, row, &mut each);
+                    differences.push(*given, row, &mut kept);
                 }
                 differences
-                    .finish(&mut each)
+                    .finish(&mut kept)
                     .map_err(|message| format!("{path}: line {last_line}: {message}"))?;
                 Ok(differences.method())
             }
