@@ -290,9 +290,9 @@ pub struct Identify {
     pub csv: String,
     #[command(flatten)]
     pub joint_terms: JointTerms,
-    /// Low-pass every column but t at this frequency before q̇ and q̈ are taken: a
-    /// 4th-order Butterworth filter run forward and backward (zero phase). Samples must be
-    /// evenly spaced
+    /// Low-pass q at this frequency before q̇ and q̈ are taken (a 4th-order Butterworth filter
+    /// run forward and backward: zero phase), then τ and the regressor's columns alike, keeping
+    /// one sample in ⌊0.4 f_s / HZ⌋. Samples must be evenly spaced
     #[arg(long, value_name = "HZ", value_parser = positive)]
     pub cutoff: Option<f64>,
     /// A parameter whose column of the regressor is, to this fraction of its norm, a

@@ -23,6 +23,9 @@
 //! * standard deviations `σ_π̂k = σ̂ √[(Y_wᵀ Y_w)⁻¹]_kk`, `σ̂² = ‖Y_w π̂_w − τ_w‖² / (nN − b)`,
 //!   and `100 σ_π̂k / |π̂_k|` %; the condition number `σ_max / σ_min` of the weighted `Y_w`.
 //!
+//! With `--cutoff`, q is low-passed before differentiation, and τ and the regressor's columns
+//! alike before they are used, one sample in d kept (`identify::source`, `identify::decimate`).
+//!
 //! `Y` is never held: each joint's rows update a triangular factor as they are read
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
@@ -35,8 +38,9 @@ use crate::identify::base;
 use crate::identify::estimate::{estimate, Estimate};
 use crate::identify::figure;
 use crate::identify::measured::Measured;
-use crate::identify::model::{LinearModel, Work};
+use crate::identify::model::LinearModel;
 use crate::identify::report::Report;
+use crate::identify::rows::{each_row, Springs};
 use crate::identify::source::Source;
 use crate::plot::Envelope;
 use crate::sizing::unit;
@@ -120,38 +124,27 @@ fn springs(robot: &Robot, names: &[String], values: &[f64]) -> Vec<Option<(f64, 
         .collect()
 }
 
-/// τ_i less joint i's spring torque `k (q_i − rest)`.
-fn rigid_torque(tau: f64, q: f64, spring: Option<(f64, f64)>) -> f64 {
-    spring.map_or(tau, |(k, rest)| tau - k * (q - rest))
-}
-
 /// One pass over the samples into the joints' factors; how q̇ and q̈ were had, and the time
 /// span.
 fn measure(
     model: &LinearModel,
     source: &Source,
-    springs: &[Option<(f64, f64)>],
+    springs: &Springs,
 ) -> Result<(Measured, &'static str, (f64, f64)), Failure> {
-    let p = model.names.len();
-    let mut measured = Measured::new(model.columns.clone(), p);
-    let mut work = Work::default();
-    let mut entries = vec![0.0; model.entries()];
+    let mut measured = Measured::new(model.columns.clone(), model.names.len());
     let mut span = (f64::NAN, f64::NAN);
-    let method = source
-        .each(|s| {
-            if span.0.is_nan() {
-                span.0 = s.t;
-            }
-            span.1 = s.t;
-            model.rows(&s.q, &s.qd, &s.qdd, &mut work, &mut entries);
-            let mut start = 0;
-            for (i, columns) in model.columns.iter().enumerate() {
-                let row = &entries[start..start + columns.len()];
-                measured.push(i, row, rigid_torque(s.tau[i], s.q[i], springs[i]));
-                start += columns.len();
-            }
-        })
-        .map_err(Failure::File)?;
+    let method = each_row(model, source, springs, |t, entries, torques| {
+        if span.0.is_nan() {
+            span.0 = t;
+        }
+        span.1 = t;
+        let mut start = 0;
+        for (i, columns) in model.columns.iter().enumerate() {
+            measured.push(i, &entries[start..start + columns.len()], torques[i]);
+            start += columns.len();
+        }
+    })
+    .map_err(Failure::File)?;
     Ok((measured, method, span))
 }
 
@@ -159,7 +152,7 @@ fn measure(
 fn predictions(
     model: &LinearModel,
     source: &Source,
-    springs: &[Option<(f64, f64)>],
+    springs: &Springs,
     estimate: &Estimate,
 ) -> Result<Envelope, Failure> {
     let n = model.joints();
@@ -169,23 +162,18 @@ fn predictions(
         .map(|v| if v.is_nan() { 0.0 } else { *v })
         .collect();
     let mut envelope = Envelope::new(figure::SERIES * n);
-    let mut work = Work::default();
-    let mut entries = vec![0.0; model.entries()];
-    let (mut measured, mut predicted) = (vec![0.0; n], vec![0.0; n]);
+    let mut predicted = vec![0.0; n];
     let mut values = vec![0.0; figure::SERIES * n];
-    source
-        .each(|s| {
-            model.rows(&s.q, &s.qd, &s.qdd, &mut work, &mut entries);
-            let mut start = 0;
-            for (i, columns) in model.columns.iter().enumerate() {
-                let row = &entries[start..start + columns.len()];
-                predicted[i] = columns.iter().zip(row).map(|(&k, y)| y * pi[k]).sum();
-                measured[i] = rigid_torque(s.tau[i], s.q[i], springs[i]);
-                start += columns.len();
-            }
-            figure::values(&measured, &predicted, &mut values);
-            envelope.push(s.t, &values);
-        })
-        .map_err(Failure::File)?;
+    each_row(model, source, springs, |t, entries, torques| {
+        let mut start = 0;
+        for (i, columns) in model.columns.iter().enumerate() {
+            let row = &entries[start..start + columns.len()];
+            predicted[i] = columns.iter().zip(row).map(|(&k, y)| y * pi[k]).sum();
+            start += columns.len();
+        }
+        figure::values(torques, &predicted, &mut values);
+        envelope.push(t, &values);
+    })
+    .map_err(Failure::File)?;
     Ok(envelope)
 }

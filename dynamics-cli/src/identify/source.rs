@@ -1,14 +1,8 @@
 //! The measured samples, replayable: streamed from the CSV file each time (nothing held), or,
-//! with a low-pass filter, held once in memory (a zero-phase filter needs the whole signal) and
-//! filtered column by column before the derivatives are taken.
-//!
-//! Filtered samples are then decimated (Gautier's parallel filtering and decimation): one in
-//! `d = ⌊0.4 f_s / f_c⌋` is kept, so that the cutoff is 0.8 of the kept samples' Nyquist
-//! frequency. The filtered signal has nothing above the cutoff to lose, while the samples in
-//! between would make the residuals correlated (the noise left is band-limited to `f_c`) and the
-//! least-squares standard deviations, which take the residuals as independent, about
-//! `√(f_s / 2f_c)` times too small. The derivatives are taken before decimation, at the full
-//! rate.
+//! with a low-pass filter, held once in memory (a zero-phase filter needs the whole signal), the
+//! positions (and any given velocities and accelerations) filtered before the derivatives are
+//! taken. The torques are left as measured here: they are filtered alike with the regressor's
+//! columns, and decimated ([`super::decimate`]).
 
 use super::filter::{LowPass, ORDER};
 use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
@@ -50,15 +44,30 @@ impl Filter {
     #[must_use]
     pub fn describe(&self) -> String {
         format!(
-            "{ORDER}th-order Butterworth low-pass at {} Hz (samples at {} Hz), forward and \
-             backward (zero phase, −6 dB at the cutoff), on every column but t, before \
-             differentiation; then one sample in {} kept, of {} (the cutoff at 0.8 of their \
-             Nyquist frequency, so that the residuals are not correlated)",
+            "q (and any q̇, q̈ given): {ORDER}th-order Butterworth low-pass at {} Hz (samples \
+             at {} Hz), forward and backward (zero phase, −6 dB at the cutoff), before \
+             differentiation; τ and every column of the regressor alike: a zero-phase FIR \
+             low-pass ({} taps) at {} Hz, then one sample in {} kept, {} of {} (parallel \
+             filtering and decimation)",
             self.cutoff,
             crate::plot::number(self.rate),
+            16 * self.decimation + 1,
+            crate::plot::number(self.rate / (2.0 * self.decimation as f64)),
             self.decimation,
+            self.kept(),
             self.read
         )
+    }
+
+    /// The samples the decimation keeps: one in `d` once a window of `16d + 1` is full.
+    #[must_use]
+    pub fn kept(&self) -> usize {
+        let window = 16 * self.decimation + 1;
+        if self.read < window {
+            0
+        } else {
+            (self.read - window) / self.decimation + 1
+        }
     }
 }
 
@@ -101,10 +110,13 @@ impl Source {
             format!("{path}: {e}")
         })?;
         let low_pass = LowPass::butterworth(cutoff, rate).map_err(|e| format!("--cutoff: {e}"))?;
-        for column in data.iter_mut().skip(1) {
+        // Not t, nor the torques at the end.
+        let torques = data.len() - columns.joints;
+        for column in &mut data[1..torques] {
             low_pass.filtfilt(column);
         }
-        // At least 1: a cutoff above 0.4 f_s keeps every sample.
+        // The cutoff at 0.8 of the kept samples' Nyquist frequency; at least 1: a cutoff above
+        // 0.4 f_s keeps every sample.
         let decimation = ((0.4 * rate / cutoff).floor() as usize).max(1);
         let read = data[0].len();
         Ok(Source::Filtered {
@@ -150,22 +162,15 @@ impl Source {
                 given,
                 data,
                 last_line,
-                filter,
+                ..
             } => {
                 let mut differences = Differences::new(columns.joints, columns.torques);
-                let mut index = 0;
-                let mut kept = |s: &Sample| {
-                    if index % filter.decimation == 0 {
-                        each(s);
-                    }
-                    index += 1;
-                };
                 for k in 0..data[0].len() {
                     let row = data.iter().map(|column| column[k]).collect();
-                    differences.push(*given, row, &mut kept);
+                    differences.push(*given, row, &mut each);
                 }
                 differences
-                    .finish(&mut kept)
+                    .finish(&mut each)
                     .map_err(|message| format!("{path}: line {last_line}: {message}"))?;
                 Ok(differences.method())
             }
