@@ -297,7 +297,8 @@ pub struct Identify {
     pub cutoff: Option<f64>,
     /// A parameter whose column of the regressor is, to this fraction of its norm, a
     /// combination of the columns before it is named as not identifiable and not estimated
-    #[arg(long, value_name = "FRACTION", default_value = "1e-6", value_parser = positive)]
+    /// (estimated, noise in its estimate would be amplified about 1/FRACTION times)
+    #[arg(long, value_name = "FRACTION", default_value = "1e-4", value_parser = positive)]
     pub tolerance: f64,
     /// The value of a parameter of the robot (a struct field of the description); once for
     /// each of them

@@ -348,3 +348,26 @@ fn noisy_torques_give_estimates_within_their_standard_deviations() {
         assert!((sigma / level - 1.0).abs() < 0.05, "{joint}: {level}");
     }
 }
+
+/// 0.4 s of motion, too short to excite everything: joint 1 turns one way only, so its Coulomb
+/// column `sign(q̇_1)` is the constant −1 and its offset column 1 is minus it; such parameters
+/// are named with their combination, and the others still fit the torques.
+#[test]
+fn too_little_excitation_names_what_it_cannot_separate() {
+    let robot = arm();
+    let states = fourier(4, 40, 100.0, 0.7, &[]);
+    assert!(states.iter().all(|s| s.qd[0] < 0.0));
+    let tau = torques(&robot, &states, |_| 0.0);
+    let csv = write_csv("short.csv", &states, &tau, true);
+    let mut args = vec!["identify", arm_file_static(), "--csv", &csv, "--json"];
+    args.extend(ALL_TERMS);
+    let report = json(&dynamics(&args));
+    let named = unidentifiable(&report);
+    let at = named.iter().position(|n| n == "FO1").expect("FO1 named");
+    let combination = &report["unidentifiable"][at]["combination"];
+    assert_eq!(combination[0]["name"], "FC1", "{combination}");
+    assert!((combination[0]["coefficient"].as_f64().unwrap() + 1.0).abs() < 1e-9);
+    assert!(estimates(&report).iter().all(|e| !named.contains(&e.name)));
+    let scale = tau.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    assert!(residual(&report) < 1e-4 * scale, "{report}");
+}

@@ -5,8 +5,9 @@
 //! different units. Column k is then reflected against the columns kept before it; the norm of
 //! what is left below the kept rows is the sine of its angle to their span. Below `tolerance`,
 //! the column is, to that accuracy, the combination `Y_k ≈ Σ_j c_j Y_j` of the kept columns, and
-//! its parameter cannot be told apart from theirs: it is not estimated, and each kept
-//! parameter's estimate stands for `π_j + c_j π_k`. A column with no signal at all (a norm
+//! its parameter cannot be told apart from theirs: it is not estimated (its estimate's noise
+//! would be amplified about `1 / tolerance` times), and each kept parameter's estimate stands
+//! for `π_j + c_j π_k`. A column with no signal at all (a norm
 //! below 10⁻¹² of the largest: a joint that never moves, an effect the motion never excites) is
 //! left out first. Columns are taken in the model's order, so that of a dependent group the
 //! later ones are named.
