@@ -21,10 +21,17 @@
 //! `3.3 / (16d + 1)` cycles per sample wide). The first and last `8d` samples, where the window
 //! is incomplete, give no output.
 
-/// Taps of the decimating low-pass for a decimation `d`: `16d + 1` of them, symmetric.
+/// The number of taps of the decimating low-pass for a decimation `d`: `16d + 1`, a window of
+/// eight kept samples on either side of the middle one.
+#[must_use]
+pub fn length(d: usize) -> usize {
+    16 * d + 1
+}
+
+/// Taps of the decimating low-pass for a decimation `d`: [`length`]`(d)` of them, symmetric.
 #[must_use]
 pub fn taps(d: usize) -> Vec<f64> {
-    let half = 8 * d;
+    let half = length(d) / 2;
     let (dd, m) = (d as f64, half as f64);
     let raw: Vec<f64> = (0..=2 * half)
         .map(|i| {

@@ -149,7 +149,7 @@ impl Report<'_> {
             // The positions' filter, then the torques' and regressor's (parallel) one.
             json!({ "kind": "butterworth", "order": super::filter::ORDER, "cutoff_hz": f.cutoff,
                     "rate_hz": f.rate, "zero_phase": true, "decimation": f.decimation,
-                    "parallel_fir_taps": 16 * f.decimation + 1, "samples_read": f.read })
+                    "parallel_fir_taps": super::decimate::length(f.decimation), "samples_read": f.read })
         });
         let report = json!({
             "robot": self.robot,

@@ -4,6 +4,7 @@
 //! taken. The torques are left as measured here: they are filtered alike with the regressor's
 //! columns, and decimated ([`super::decimate`]).
 
+use super::decimate;
 use super::filter::{LowPass, ORDER};
 use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
 use std::io::BufReader;
@@ -51,7 +52,7 @@ impl Filter {
              filtering and decimation)",
             self.cutoff,
             crate::plot::number(self.rate),
-            16 * self.decimation + 1,
+            decimate::length(self.decimation),
             crate::plot::number(self.rate / (2.0 * self.decimation as f64)),
             self.decimation,
             self.kept(),
@@ -62,7 +63,7 @@ impl Filter {
     /// The samples the decimation keeps: one in `d` once a window of `16d + 1` is full.
     #[must_use]
     pub fn kept(&self) -> usize {
-        let window = 16 * self.decimation + 1;
+        let window = decimate::length(self.decimation);
         if self.read < window {
             0
         } else {
