@@ -37,6 +37,9 @@ pub enum Command {
     Size(Size),
     /// Integrate the forward dynamics (RK4) from an initial state, under constant torques
     Simulate(Simulate),
+    /// Estimate the robot's inertial (and joint) parameters from measured motions and torques,
+    /// by weighted least squares, with their standard deviations
+    Identify(Identify),
 }
 
 #[derive(Args, Debug)]
@@ -274,6 +277,39 @@ pub struct Simulate {
     /// Write a plot of the joint positions and of the energy, as SVG
     #[arg(long, value_name = "FILE")]
     pub svg: Option<String>,
+}
+
+#[derive(Args, Debug)]
+pub struct Identify {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// The measurements: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
+    /// `qdd1,..,qddn`), then `tau1,..,taun`; then one sample per line, t strictly increasing
+    /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
+    #[arg(long, value_name = "FILE")]
+    pub csv: String,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+    /// Low-pass q at this frequency before q̇ and q̈ are taken (a 4th-order Butterworth filter
+    /// run forward and backward: zero phase), then τ and the regressor's columns alike, keeping
+    /// one sample in ⌊0.4 f_s / HZ⌋. Samples must be evenly spaced
+    #[arg(long, value_name = "HZ", value_parser = positive)]
+    pub cutoff: Option<f64>,
+    /// A parameter whose column of the regressor is, to this fraction of its norm, a
+    /// combination of the columns before it is named as not identifiable and not estimated
+    /// (estimated, noise in its estimate would be amplified about 1/FRACTION times)
+    #[arg(long, value_name = "FRACTION", default_value = "1e-4", value_parser = positive)]
+    pub tolerance: f64,
+    /// The value of a parameter of the robot (a struct field of the description); once for
+    /// each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write a plot of the measured and the predicted torque per joint, as SVG
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<String>,
+    /// Print JSON instead of a table
+    #[arg(long)]
+    pub json: bool,
 }
 
 fn positive(text: &str) -> Result<f64, String> {

@@ -10,7 +10,9 @@
 //! * `size ROBOT (--csv FILE | --from .. --to ..) [--svg FILE] [--json]`: actuator sizing
 //!   along a trajectory: peak and RMS torque, peak power, the terms of τ at its peak;
 //! * `simulate ROBOT [--q0 ..] [--qd0 ..] [--tau ..] [--csv FILE] [--svg FILE]`: the forward
-//!   dynamics integrated by RK4.
+//!   dynamics integrated by RK4;
+//! * `identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ] [--plot FILE]
+//!   [--json]`: the parameters estimated from measured motions and torques.
 //!
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors are
 //! clap's (exit code 2). `dynamics help COMMAND` or `dynamics COMMAND --help` for the options.
@@ -18,6 +20,7 @@
 mod args;
 mod commands;
 mod format;
+mod identify;
 mod plot;
 mod sizing;
 mod trajectory;

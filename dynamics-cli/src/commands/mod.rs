@@ -3,6 +3,7 @@
 
 mod emit;
 mod eval;
+mod identify;
 mod inspect;
 mod simulate;
 mod size;
@@ -37,6 +38,7 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Eval(args) => eval::run(args),
         Command::Size(args) => size::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Identify(args) => identify::run(args),
     }
 }
 

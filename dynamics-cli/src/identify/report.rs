@@ -1,0 +1,187 @@
+//! What `dynamics identify` prints: a table, or the same as JSON.
+
+use super::estimate::Estimate;
+use super::model::LinearModel;
+use super::rank::Unidentified;
+use super::source::Filter;
+use crate::format::unsigned_zero;
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+
+/// Everything the report states.
+pub struct Report<'a> {
+    pub robot: &'a str,
+    pub csv: &'a str,
+    /// How q̇ and q̈ were had.
+    pub method: &'a str,
+    pub filter: Option<Filter>,
+    /// The parameters identified, in words.
+    pub model: &'a str,
+    pub springs: bool,
+    pub tolerance: f64,
+    pub start: f64,
+    pub end: f64,
+    /// Per joint: `N m` or `N`.
+    pub units: Vec<&'static str>,
+    pub linear: &'a LinearModel,
+    pub estimate: &'a Estimate,
+}
+
+const METHOD: &str = "two-step weighted least squares (Gautier): an ordinary fit, then each \
+                      joint's rows weighted by 1/σ_i, σ_i its residual's standard deviation";
+
+impl Report<'_> {
+    /// The table.
+    #[must_use]
+    pub fn text(&self) -> String {
+        let e = self.estimate;
+        let mut out = String::new();
+        let _ = writeln!(
+            out,
+            "{}: {} samples, t = {} to {} s ({}, {})",
+            self.robot, e.samples, self.start, self.end, self.csv, self.method
+        );
+        let filter = self.filter.map_or("none".into(), |f| f.describe());
+        let _ = writeln!(out, "filter: {filter}");
+        let _ = writeln!(out, "model: {}", self.model);
+        if self.springs {
+            let _ = writeln!(out, "springs: the description's, subtracted from τ");
+        }
+        let method = if e.weighted {
+            METHOD
+        } else {
+            "ordinary least squares (every joint fitted exactly: no weights)"
+        };
+        let _ = writeln!(out, "method: {method}");
+        let _ = writeln!(
+            out,
+            "condition number of the weighted stacked regressor: {}\n",
+            short(e.condition)
+        );
+        let _ = writeln!(
+            out,
+            "{:<10} {:>14} {:>12} {:>9}  {:>14}",
+            "parameter", "estimate", "std dev", "rel std", "described"
+        );
+        for k in (0..self.linear.names.len()).filter(|&k| !e.values[k].is_nan()) {
+            let _ = writeln!(
+                out,
+                "{:<10} {:>14.6e} {:>12.3e} {:>9}  {:>14.6e}",
+                self.linear.names[k],
+                unsigned_zero(e.values[k]),
+                e.deviations[k],
+                relative(e.values[k], e.deviations[k]).map_or("-".into(), |r| format!("{r:.2} %")),
+                unsigned_zero(self.linear.described[k])
+            );
+        }
+        if !e.unidentified.is_empty() {
+            let _ = writeln!(
+                out,
+                "\nnot identifiable from these data (tolerance {:e}), not estimated:",
+                self.tolerance
+            );
+            for u in &e.unidentified {
+                let _ = writeln!(out, "  {}", self.unidentified(u));
+            }
+        }
+        let _ = writeln!(out, "\n{:>5} {:>14} {:>14}", "joint", "σ_i", "residual RMS");
+        for (i, (s, r)) in e.sigma.iter().zip(&e.rms).enumerate() {
+            let unit = self.units[i];
+            let _ = writeln!(out, "{:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}", i + 1);
+        }
+        out
+    }
+
+    /// Why parameter `u` is not identified.
+    fn unidentified(&self, u: &Unidentified) -> String {
+        let name = &self.linear.names[u.parameter];
+        if u.combination.is_empty() {
+            return format!("{name}: its column is zero (the motion does not excite it)");
+        }
+        let terms: Vec<String> = u
+            .combination
+            .iter()
+            .take(4)
+            .map(|&(j, c)| format!("{:+.4e} {}", c, self.linear.names[j]))
+            .collect();
+        let more = if u.combination.len() > 4 { " …" } else { "" };
+        format!(
+            "{name}: its column is {}{more} (their estimates include it)",
+            terms.join(" ")
+        )
+    }
+
+    /// The same as JSON.
+    #[must_use]
+    pub fn json(&self) -> String {
+        let e = self.estimate;
+        let names = &self.linear.names;
+        let parameters: Vec<Value> = (0..names.len())
+            .filter(|&k| !e.values[k].is_nan())
+            .map(|k| {
+                json!({
+                    "name": names[k],
+                    "estimate": unsigned_zero(e.values[k]),
+                    "std_dev": e.deviations[k],
+                    "relative_std_percent": relative(e.values[k], e.deviations[k]),
+                    "described": unsigned_zero(self.linear.described[k]),
+                })
+            })
+            .collect();
+        let unidentifiable: Vec<Value> = e
+            .unidentified
+            .iter()
+            .map(|u| {
+                let combination: Vec<Value> = u
+                    .combination
+                    .iter()
+                    .map(|&(j, c)| json!({ "name": names[j], "coefficient": c }))
+                    .collect();
+                json!({ "name": names[u.parameter], "combination": combination })
+            })
+            .collect();
+        let joints: Vec<Value> = (0..e.rms.len())
+            .map(
+                |i| json!({ "unit": self.units[i], "sigma": e.sigma[i], "residual_rms": e.rms[i] }),
+            )
+            .collect();
+        let filter = self.filter.map(|f| {
+            // The positions' filter, then the torques' and regressor's (parallel) one.
+            json!({ "kind": "butterworth", "order": super::filter::ORDER, "cutoff_hz": f.cutoff,
+                    "rate_hz": f.rate, "zero_phase": true, "decimation": f.decimation,
+                    "parallel_fir_taps": super::decimate::length(f.decimation), "samples_read": f.read })
+        });
+        let report = json!({
+            "robot": self.robot,
+            "csv": self.csv,
+            "derivatives": self.method,
+            "samples": e.samples,
+            "start": self.start,
+            "end": self.end,
+            "filter": filter,
+            "model": self.model,
+            "springs_subtracted": self.springs,
+            "method": if e.weighted { "weighted least squares" } else { "ordinary least squares" },
+            "condition_number": e.condition,
+            "tolerance": self.tolerance,
+            "parameters": parameters,
+            "unidentifiable": unidentifiable,
+            "joints": joints,
+        });
+        format!("{report:#}\n")
+    }
+}
+
+/// `100 σ / |x|` %, where x is not zero.
+fn relative(x: f64, deviation: f64) -> Option<f64> {
+    (x != 0.0).then(|| 100.0 * deviation / x.abs())
+}
+
+/// Four significant digits.
+fn short(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:.4e}")
+    } else {
+        "infinite".into()
+    }
+}
