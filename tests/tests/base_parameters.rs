@@ -9,12 +9,15 @@
 //! * on random robots of 2 to 7 revolute and prismatic joints, against the numerical rank of the
 //!   textbook method's torques (`dynamics-reference`): τ is linear in the parameters, so the
 //!   torques at a set of states of robots that differ only in their inertial parameters span,
-//!   in their differences, the stacked regressor's column space.
+//!   in their differences, the stacked regressor's column space;
+//! * the generated `DynamicsBaseParameters` (`base_parameters = true`): `Y_B π_B` against
+//!   `inverse_dynamics`, in `f64` and `f32`.
 
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{derive, front};
 use dynamics_reference::scaled_error;
+use dynamics_runtime::{Dynamics, DynamicsBaseParameters};
 use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::robot_of;
 use nalgebra::DMatrix;
@@ -303,4 +306,84 @@ fn random_robots_against_the_rank_of_the_textbook_methods_torques() {
         seen[2..].iter().all(|&k| k > 0),
         "robots of every size: {seen:?}"
     );
+}
+
+// Both publish link inertias that break the triangle inequality; the reference data keep them.
+#[derive(Dynamics)]
+#[dynamics(
+    file = "data/reference/robots/puma560.json",
+    base_parameters = true,
+    check_inertia = false
+)]
+struct Puma560;
+
+#[derive(Dynamics)]
+#[dynamics(file = "data/panda/robot.json", base_parameters = true)]
+struct Panda;
+
+/// `Y_B π_B` of a robot at a state.
+fn predicted<R, const N: usize, const B: usize>(
+    robot: &R,
+    q: &[f64; N],
+    qd: &[f64; N],
+    qdd: &[f64; N],
+) -> Vec<f64>
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let y = robot.base_regressor(q, qd, qdd);
+    let pi = robot.base_parameters::<f64>();
+    y.iter()
+        .map(|row| row.iter().zip(&pi).map(|(a, b)| a * b).sum())
+        .collect()
+}
+
+fn generated_against_inverse_dynamics<R, const N: usize, const B: usize>(robot: &R, name: &str)
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1_u64 << 53) as f64 * 2.0 - 1.0
+    };
+    for _ in 0..20 {
+        let q: [f64; N] = std::array::from_fn(|_| 3.0 * uniform());
+        let qd: [f64; N] = std::array::from_fn(|_| 2.0 * uniform());
+        let qdd: [f64; N] = std::array::from_fn(|_| 5.0 * uniform());
+        let tau = robot.inverse_dynamics(&q, &qd, &qdd);
+        let error = scaled_error(&predicted(robot, &q, &qd, &qdd), &tau);
+        assert!(error < 1e-12, "{name}: error {error:e}");
+    }
+}
+
+#[test]
+fn generated_base_regressor_times_base_parameters_is_inverse_dynamics() {
+    // Neither description gives actuator inertia or friction: the links' alone, as counted.
+    generated_against_inverse_dynamics::<_, 6, 36>(&Puma560, "puma560");
+    generated_against_inverse_dynamics::<_, 7, 43>(&Panda, "panda");
+    // As many as the exact analysis finds.
+    let robot = robot("panda");
+    let mut eq = derive(&robot);
+    let described: Vec<JointColumns> = robot.joints.iter().map(JointColumns::described).collect();
+    assert_eq!(
+        eq.base_parameters(&robot, &described)
+            .unwrap()
+            .parameters
+            .len(),
+        43
+    );
+}
+
+#[test]
+fn generated_base_regressor_in_f32() {
+    let q = [0.3_f32, -0.7, 1.1, 0.2, -0.4, 0.9];
+    let (qd, qdd) = ([0.5_f32; 6], [-1.0_f32; 6]);
+    let narrow = Puma560.base_regressor(&q, &qd, &qdd);
+    let wide = Puma560.base_regressor(&q.map(f64::from), &qd.map(f64::from), &qdd.map(f64::from));
+    let narrow: Vec<f64> = narrow.iter().flatten().map(|&x| f64::from(x)).collect();
+    let wide: Vec<f64> = wide.iter().flatten().copied().collect();
+    assert!(scaled_error(&narrow, &wide) < 1e-5);
 }

@@ -1,7 +1,7 @@
 //! The expansion of a derive that failed: its errors, plus an impl whose methods are
 //! unreachable, so that code calling them compiles and the user sees only the real errors.
 
-use super::impls::{joint_count, method, runtime_path, scalar_name, trait_impls, Joints};
+use super::impls::{method, runtime_path, scalar_name, trait_impls, Sizes};
 use crate::front;
 use crate::method::Method;
 use proc_macro2::TokenStream;
@@ -13,8 +13,11 @@ use quote::quote;
 /// URDF does not have).
 pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let errors = failure.error.to_compile_error();
-    let joints = failure.dof.map_or(Joints::Any, Joints::Known);
-    let n = &joint_count(&joints, &input.generics);
+    let sizes = Sizes {
+        joints: failure.dof,
+        base: None,
+    };
+    let counts = &sizes.counts(&input.generics);
     let krate = runtime_path(failure.krate.as_ref());
     let body = quote!(::core::unreachable!("the Dynamics derive failed"));
     let t = scalar_name(&input.generics);
@@ -22,8 +25,8 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
         .iter()
         .copied()
         .filter(|&m| failure.families.has(m));
-    let fns = fns.map(|m| (m, method(m, n, &krate, &t, &body)));
-    let impls = trait_impls(&krate, &joints, &input.ident, &input.generics, fns);
+    let fns = fns.map(|m| (m, method(m, counts, &krate, &t, &body)));
+    let impls = trait_impls(&krate, &sizes, &input.ident, &input.generics, fns);
     quote! {
         #errors
         const _: () = {

@@ -117,6 +117,12 @@ impl Method {
             Method::StandardParameters => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.parameters))
             }
+            Method::BaseRegressor => {
+                Shape::Matrix(eq.base_parameters.as_ref().map_or(&[], |b| &b.regressor))
+            }
+            Method::BaseParameters => {
+                Shape::Vector(eq.base_parameters.as_ref().map_or(&[], |b| &b.values))
+            }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
