@@ -88,7 +88,17 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         )
     });
     let emit::Items { beside, within } = items;
+    let unanalysable =
+        parsed.families.contains(Family::BaseParameters) && eq.base_parameters.is_none();
+    let error = unanalysable.then(|| {
+        let message = "`base_parameters = true` needs the robot's lengths and angles as \
+                       numbers: the base parameters group the links' parameters by them, and \
+                       this robot takes some from struct fields (masses and inertias may be \
+                       fields)";
+        syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error()
+    });
     quote! {
+        #error
         #beside
         const _: () = {
             #track

@@ -387,3 +387,28 @@ fn generated_base_regressor_in_f32() {
     let wide: Vec<f64> = wide.iter().flatten().copied().collect();
     assert!(scaled_error(&narrow, &wide) < 1e-5);
 }
+
+/// Masses and inertias may be struct fields: the grouping depends on the geometry alone.
+#[derive(Dynamics)]
+#[dynamics(
+    gravity = [0, -9.81, 0],
+    dh = [[q, 0, 1, 0], [q, 0, 0.5, 0]],
+    link(mass = 1),
+    link(mass = mass, inertia = [0, 0, inertia, 0, 0, 0]),
+    base_parameters = true
+)]
+struct Planar {
+    mass: f64,
+    inertia: f64,
+}
+
+#[test]
+fn base_parameters_of_field_masses() {
+    for (mass, inertia) in [(2.0, 0.1), (3.5, 0.02)] {
+        let arm = Planar { mass, inertia };
+        let (q, qd, qdd) = ([0.3, -1.2], [0.7, 0.4], [-2.0, 1.5]);
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let error = scaled_error(&predicted(&arm, &q, &qd, &qdd), &tau);
+        assert!(error < 1e-12, "error {error:e}");
+    }
+}
