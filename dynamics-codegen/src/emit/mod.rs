@@ -57,7 +57,7 @@ mod sum_order;
 
 pub use count::count;
 pub(crate) use equations::readable;
-pub(crate) use fallback::fallback;
+pub(crate) use fallback::{fallback, unreachable_family};
 pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};
 pub use items::{generate, Generated, Items, MethodCode, Module};

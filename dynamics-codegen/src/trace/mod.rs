@@ -123,10 +123,14 @@ impl Equations {
                 Family::BaseParameters => {
                     let joints: Vec<JointColumns> =
                         robot.joints.iter().map(JointColumns::described).collect();
-                    // The regressor it traces is not emitted unless it was asked for too.
+                    // The regressor it traces is not emitted unless it was asked for too; the
+                    // family is traced only where the geometry is numbers.
                     let asked = self.families;
                     self.base_parameters = self.base_parameters(robot, &joints);
-                    self.families = asked.with(Family::BaseParameters);
+                    self.families = match self.base_parameters {
+                        Some(_) => asked.with(Family::BaseParameters),
+                        None => asked,
+                    };
                 }
                 Family::Dynamics | Family::Kinematics | Family::Forward => {}
             }

@@ -18,5 +18,5 @@ struct Arm {
 fn main() {
     let arm = Arm { length: 1.0, mass: 2.0 };
     let _ = arm.regressor(&[0.0; 2], &[0.0; 2], &[0.0; 2]);
-    let _ = arm.base_parameters::<f64>();
+    let _: [f64; 3] = arm.base_parameters();
 }
