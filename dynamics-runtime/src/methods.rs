@@ -414,6 +414,27 @@ macro_rules! for_each_method {
                         summary: "The base parameters π_B of the description.",
                         element: "base parameter {i}",
                     }
+                    /// The map from the links' standard parameters to the base parameters:
+                    /// `π_B[b] = Σ_j Σ_k P[b][j][k] π_jk + Σ_i Σ_k P_J[b][i][k] p_ik`, with `π`
+                    /// in `standard_parameters`' layout and `P_J` from `base_from_joints` on the
+                    /// joints' parameters in `joint_parameters`' layout: for identified or
+                    /// edited standard parameters. Constants, Khalil's grouping.
+                    fn base_from_standard() -> base_link_map, nalgebra base_from_standard_na {
+                        variant: BaseFromStandard,
+                        equation: None,
+                        prefix: "pbs",
+                        summary: "The map P from the links' standard parameters π to π_B.",
+                        element: "base parameter {i}: coefficient of pi{j}",
+                    }
+                    /// The map from the joints' parameters (`joint_parameters`' layout) to the
+                    /// base parameters: `P_J` of `base_from_standard`.
+                    fn base_from_joints() -> base_joint_map, nalgebra base_from_joints_na {
+                        variant: BaseFromJoints,
+                        equation: None,
+                        prefix: "pbj",
+                        summary: "The map P_J from the joints' parameters to π_B.",
+                        element: "base parameter {i}: coefficient of joint parameter {j}",
+                    }
                 }
             }
         }

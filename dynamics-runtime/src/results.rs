@@ -176,6 +176,24 @@ macro_rules! for_each_result {
                 rows: [[T; B]; N],
                 from_rows: |value| value,
             }
+            /// Per base parameter, its coefficients on the links' standard parameters.
+            base_link_map {
+                variant: BaseLinkMap,
+                array: [[[T; 10]; N]; B],
+                nalgebra: [SMatrix<T, N, 10>; B],
+                to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
+                rows: [[[T; 10]; N]; B],
+                from_rows: |value| value,
+            }
+            /// Per base parameter, its coefficients on the joints' parameters.
+            base_joint_map {
+                variant: BaseJointMap,
+                array: [[[T; 4]; N]; B],
+                nalgebra: [SMatrix<T, N, 4>; B],
+                to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
+                rows: [[[T; 4]; N]; B],
+                from_rows: |value| value,
+            }
             /// The `B` base parameters.
             base_vector {
                 variant: BaseVector,

@@ -17,7 +17,7 @@ use dynamics_codegen::model::Robot;
 use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{derive, front};
 use dynamics_reference::scaled_error;
-use dynamics_runtime::{Dynamics, DynamicsBaseParameters};
+use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsRegressor};
 use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::robot_of;
 use nalgebra::DMatrix;
@@ -313,6 +313,7 @@ fn random_robots_against_the_rank_of_the_textbook_methods_torques() {
 #[dynamics(
     file = "data/reference/robots/puma560.json",
     base_parameters = true,
+    regressor = true,
     check_inertia = false
 )]
 struct Puma560;
@@ -411,4 +412,58 @@ fn base_parameters_of_field_masses() {
         let error = scaled_error(&predicted(&arm, &q, &qd, &qdd), &tau);
         assert!(error < 1e-12, "error {error:e}");
     }
+}
+
+/// `P π + P_J p` with the maps of `base_from_standard` and `base_from_joints`.
+fn mapped<R, const N: usize, const B: usize>(
+    robot: &R,
+    pi: &[[f64; 10]; N],
+    joints: &[[f64; 4]; N],
+) -> [f64; B]
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let (p, pj) = (
+        robot.base_from_standard::<f64>(),
+        robot.base_from_joints::<f64>(),
+    );
+    std::array::from_fn(|b| {
+        let links: f64 = (0..N)
+            .map(|j| (0..10).map(|k| p[b][j][k] * pi[j][k]).sum::<f64>())
+            .sum();
+        let own: f64 = (0..N)
+            .map(|i| (0..4).map(|k| pj[b][i][k] * joints[i][k]).sum::<f64>())
+            .sum();
+        links + own
+    })
+}
+
+#[test]
+fn the_map_from_standard_parameters() {
+    let robot = Puma560;
+    let (pi, joints) = (
+        robot.standard_parameters::<f64>(),
+        robot.joint_parameters::<f64>(),
+    );
+    let base: [f64; 36] = robot.base_parameters();
+    assert!(scaled_error(&mapped(&robot, &pi, &joints), &base) < 1e-14);
+    // Other standard parameters, not physical ones: Y_B (P π') is still Y π'.
+    let other: [[f64; 10]; 6] =
+        std::array::from_fn(|j| std::array::from_fn(|k| ((7 * j + 3 * k) % 11) as f64 - 5.0));
+    let mapped: [f64; 36] = mapped(&robot, &other, &joints);
+    let (q, qd, qdd) = ([0.4, -0.9, 1.3, 0.1, 0.8, -0.5], [0.6; 6], [-1.2; 6]);
+    let y = robot.regressor(&q, &qd, &qdd);
+    let yb = robot.base_regressor(&q, &qd, &qdd);
+    let full: Vec<f64> = (0..6)
+        .map(|i| {
+            (0..6)
+                .map(|j| (0..10).map(|k| y[i][j][k] * other[j][k]).sum::<f64>())
+                .sum()
+        })
+        .collect();
+    let reduced: Vec<f64> = yb
+        .iter()
+        .map(|row| row.iter().zip(&mapped).map(|(a, b)| a * b).sum())
+        .collect();
+    assert!(scaled_error(&reduced, &full) < 1e-12);
 }

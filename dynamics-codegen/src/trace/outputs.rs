@@ -123,6 +123,12 @@ impl Method {
             Method::BaseParameters => {
                 Shape::Vector(eq.base_parameters.as_ref().map_or(&[], |b| &b.values))
             }
+            Method::BaseFromStandard => {
+                Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.link_map))
+            }
+            Method::BaseFromJoints => {
+                Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
+            }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
