@@ -117,9 +117,9 @@ pub struct BaseParameters {
     pub values: Vec<NodeId>,
     /// `P[b][j][k]`: base parameter b's coefficient on link j's standard parameter k, constant
     /// nodes.
-    pub link_map: Vec<Vec<Vec<NodeId>>>,
+    pub link_map: Blocks,
     /// `P_J[b][i][k]`: its coefficient on joint i's parameter k.
-    pub joint_map: Vec<Vec<Vec<NodeId>>>,
+    pub joint_map: Blocks,
 }
 
 impl Equations {
@@ -265,12 +265,15 @@ fn groups(
     (groups, no_effect)
 }
 
+/// Matrices of nodes, one after the other.
+type Blocks = Vec<Vec<Vec<NodeId>>>;
+
 /// The groups as maps from the links' and the joints' parameters, constant nodes.
 fn maps(
     graph: &mut Graph,
     n: usize,
     groups: &[Vec<Term>],
-) -> (Vec<Vec<Vec<NodeId>>>, Vec<Vec<Vec<NodeId>>>) {
+) -> (Blocks, Blocks) {
     let zero = graph.num(Number::ZERO);
     let mut links = vec![vec![vec![zero; LINK_NAMES.len()]; n]; groups.len()];
     let mut joints = vec![vec![vec![zero; JOINT_NAMES.len()]; n]; groups.len()];
