@@ -7,7 +7,7 @@
 //! `π_B = π_b + Σ_c β_cb π_c` (Khalil and Gautier's grouping; `ZZR1 = ZZ1 + YY2 + …` in their
 //! notation) give the same torques, and only `π_B` can be identified from them.
 //!
-//! The relations are decided exactly ([`exact`]), not from a numerical rank: the columns, as
+//! The relations are decided exactly (`exact.rs`), not from a numerical rank: the columns, as
 //! the trace has them, evaluated in `ℤ/p` at random points. The columns are taken link by
 //! link from the base, each link's `XX, XY, XZ, YZ, ZZ, MX, MY, YY, MZ, M`, then the joints'
 //! `IA, FV, FC, FO` asked for; a column is a base column when it is independent of the columns
@@ -269,11 +269,7 @@ fn groups(
 type Blocks = Vec<Vec<Vec<NodeId>>>;
 
 /// The groups as maps from the links' and the joints' parameters, constant nodes.
-fn maps(
-    graph: &mut Graph,
-    n: usize,
-    groups: &[Vec<Term>],
-) -> (Blocks, Blocks) {
+fn maps(graph: &mut Graph, n: usize, groups: &[Vec<Term>]) -> (Blocks, Blocks) {
     let zero = graph.num(Number::ZERO);
     let mut links = vec![vec![vec![zero; LINK_NAMES.len()]; n]; groups.len()];
     let mut joints = vec![vec![vec![zero; JOINT_NAMES.len()]; n]; groups.len()];
