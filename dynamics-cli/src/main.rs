@@ -12,13 +12,17 @@
 //! * `simulate ROBOT [--q0 ..] [--qd0 ..] [--tau ..] [--csv FILE] [--svg FILE]`: the forward
 //!   dynamics integrated by RK4;
 //! * `identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ] [--plot FILE]
-//!   [--json]`: the parameters estimated from measured motions and torques.
+//!   [--json]`: the parameters estimated from measured motions and torques;
+//! * `excite ROBOT [--rotors] [--friction KINDS] [--q-min ..] [--q-max ..] [--qd-max ..]
+//!   [--qdd-max ..] [--seed S] [--csv FILE]`: a periodic motion within the joints' limits that
+//!   excites the base parameters, for `identify`.
 //!
 //! Errors in the file are reported as `file:line:col: message` (exit code 1); usage errors are
 //! clap's (exit code 2). `dynamics help COMMAND` or `dynamics COMMAND --help` for the options.
 
 mod args;
 mod commands;
+mod excite;
 mod format;
 mod identify;
 mod plot;
