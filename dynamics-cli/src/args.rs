@@ -310,6 +310,13 @@ pub struct Identify {
     /// Write a plot of the measured and the predicted torque per joint, as SVG
     #[arg(long, value_name = "FILE")]
     pub plot: Option<String>,
+    /// Other measurements, as --csv, not used in the fit: their torques are predicted by the
+    /// estimate, and the error's RMS per joint printed (a validation)
+    #[arg(long, value_name = "FILE")]
+    pub validate: Option<String>,
+    /// Write a plot of the measured and the predicted torque of the --validate file, as SVG
+    #[arg(long, value_name = "FILE", requires = "validate")]
+    pub validate_plot: Option<String>,
     /// Print JSON instead of a table
     #[arg(long)]
     pub json: bool,
