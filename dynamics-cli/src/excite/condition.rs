@@ -4,7 +4,7 @@
 //! can grow in the least-squares estimate of the base parameters: the lower, the better the
 //! motion excites them (Gautier and Khalil, 1992; Swevers et al., 1997).
 //!
-//! * [`Gram`], for the search: `G = Y_Bᵀ Y_B = Σ_k Σ_i y_ikᵀ y_ik` accumulated over the samples
+//! * [`Gram`], for the search: `G = Y_Bᵀ Y_B = Σ_i Σ_k y_ikᵀ y_ik` accumulated over the samples
 //!   (joint i's row only over the parameters in its equation), then
 //!   `cond = √(λ_max(G) / λ_min(G))` ([`symmetric_eigenvalues`]): cheap, and accurate to a
 //!   relative `ε cond²`, which is plenty to rank candidates.
@@ -24,48 +24,54 @@ pub struct Sample<'a> {
     pub qdd: &'a [f64],
 }
 
-/// The Gram matrix of the stacked regressor, accumulated sample by sample.
+/// The Gram matrix of the stacked regressor, accumulated sample by sample: per joint over the
+/// parameters of its equation (a dense lower triangle, whose update is a contiguous loop), the
+/// joints' summed into `YᵀY` when the condition number is asked for.
 pub struct Gram<'m> {
     model: &'m LinearModel,
     work: Work,
     entries: Vec<f64>,
-    /// Lower triangle, row-major, `b × b`.
-    gram: Vec<f64>,
+    /// Per joint i, `Σ_k y_ikᵀ y_ik` over its columns: lower triangle, row-major, `c_i × c_i`.
+    joints: Vec<Vec<f64>>,
 }
 
 impl<'m> Gram<'m> {
     #[must_use]
     pub fn new(model: &'m LinearModel) -> Gram<'m> {
-        let b = model.names.len();
         Gram {
             model,
             work: Work::default(),
             entries: vec![0.0; model.entries()],
-            gram: vec![0.0; b * b],
+            joints: model
+                .columns
+                .iter()
+                .map(|c| vec![0.0; c.len() * c.len()])
+                .collect(),
         }
     }
 
     /// Starts again with no samples.
     pub fn clear(&mut self) {
-        self.gram.fill(0.0);
+        for joint in &mut self.joints {
+            joint.fill(0.0);
+        }
     }
 
     /// Adds one sample's rows.
     pub fn push(&mut self, s: &Sample) {
-        let b = self.model.names.len();
         self.model
             .rows(s.q, s.qd, s.qdd, &mut self.work, &mut self.entries);
         let mut start = 0;
-        for columns in &self.model.columns {
-            let row = &self.entries[start..start + columns.len()];
-            // The columns are in increasing order: (x, y ≤ x) is in the lower triangle.
-            for (x, &cx) in columns.iter().enumerate() {
-                let gram_row = &mut self.gram[cx * b..];
-                for (y, &cy) in columns[..=x].iter().enumerate() {
-                    gram_row[cy] += row[x] * row[y];
+        for (joint, columns) in self.joints.iter_mut().zip(&self.model.columns) {
+            let c = columns.len();
+            let row = &self.entries[start..start + c];
+            for (x, &rx) in row.iter().enumerate() {
+                let lower = &mut joint[x * c..=x * c + x];
+                for (g, &ry) in lower.iter_mut().zip(row) {
+                    *g += rx * ry;
                 }
             }
-            start += columns.len();
+            start += c;
         }
     }
 
@@ -73,7 +79,16 @@ impl<'m> Gram<'m> {
     /// deficient.
     pub fn condition(&self) -> f64 {
         let b = self.model.names.len();
-        let mut gram = self.gram.clone();
+        let mut gram = vec![0.0; b * b];
+        // The columns are in increasing order: (x, y ≤ x) lands in the lower triangle.
+        for (joint, columns) in self.joints.iter().zip(&self.model.columns) {
+            let c = columns.len();
+            for (x, &cx) in columns.iter().enumerate() {
+                for (y, &cy) in columns[..=x].iter().enumerate() {
+                    gram[cx * b + cy] += joint[x * c + y];
+                }
+            }
+        }
         let eigen = symmetric_eigenvalues(&mut gram, b);
         let (smallest, largest) = (eigen[0], eigen[b - 1]);
         if smallest > 0.0 {

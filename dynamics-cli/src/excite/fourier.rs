@@ -62,8 +62,16 @@ pub struct State {
 
 impl Grid {
     /// `samples` samples per period of `period` s, L = `harmonics`.
+    ///
+    /// # Panics
+    /// Fewer samples than harmonics: a period must hold more samples than the highest
+    /// harmonic's cycles.
     #[must_use]
     pub fn new(period: f64, harmonics: usize, samples: usize) -> Grid {
+        assert!(
+            samples > harmonics,
+            "{samples} samples for {harmonics} harmonics"
+        );
         let step = std::f64::consts::TAU / samples as f64;
         let table = (0..samples).map(|j| (j as f64 * step).sin_cos()).collect();
         Grid {
@@ -113,11 +121,16 @@ impl Grid {
     #[must_use]
     pub fn state(&self, series: &Series, k: usize) -> State {
         let m = self.samples();
+        self.evaluate(series, |l| (l % m) * (k % m) % m)
+    }
+
+    /// The state of `series` where harmonic l has the phase of table entry `phase(l)`.
+    fn evaluate(&self, series: &Series, phase: impl Fn(usize) -> usize) -> State {
         let (mut q, mut qd, mut qdd) = (0.0, 0.0, 0.0);
         let harmonics = series.a.len();
         for l in (2..=harmonics).chain([1]) {
             let (a, b) = (series.a[l - 1], series.b[l - 1]);
-            let (sin, cos) = self.table[(l % m) * (k % m) % m];
+            let (sin, cos) = self.table[phase(l)];
             let l = l as f64;
             q += (a * sin - b * cos) / l;
             qd += a * cos + b * sin;
@@ -138,8 +151,19 @@ impl Grid {
     pub fn fit(&self, free: &[f64], limits: &Limits, placement: f64) -> Option<Series> {
         let shape = self.at_rest(free);
         let (mut low, mut high, mut speed, mut acceleration) = (f64::MAX, f64::MIN, 0.0, 0.0);
-        for k in 0..self.samples() {
-            let s = self.state(&shape, k);
+        // The phases of sample k, (l k) mod M, advanced by l per sample: the states are
+        // those `state` gives, without its divisions.
+        let m = self.samples();
+        let mut phases = vec![0; self.harmonics + 1];
+        for _ in 0..m {
+            let s = self.evaluate(&shape, |l| phases[l]);
+            for (l, phase) in phases.iter_mut().enumerate() {
+                // l < M (eight samples per period of the highest harmonic at least).
+                *phase += l;
+                if *phase >= m {
+                    *phase -= m;
+                }
+            }
             low = low.min(s.q);
             high = high.max(s.q);
             speed = f64::max(speed, s.qd.abs());
