@@ -26,10 +26,10 @@ pub const NOISE: f64 = 0.01;
 
 /// The largest prediction error the example accepts, as a fraction of a joint's RMS torque. The
 /// noise is 1 %, and so is the error on the joints whose torque is large; on a joint with
-/// little torque (the PUMA 560's last: 4·10⁻⁵ N m RMS) `identify`'s two-step weights leave a
+/// little torque (the PUMA 560's last: 5·10⁻⁵ N m RMS) `identify`'s two-step weights leave a
 /// few % more: σ_i comes from the ordinary fit, whose residual there is the other joints'
-/// noise seen through the shared parameters, not the joint's own noise, so its equations are
-/// weighted hundreds of times too little.
+/// noise seen through the shared parameters, not the joint's own noise, so its rows are
+/// weighted thousands of times too little (`docs/excitation.md`).
 pub const PREDICTION: f64 = 0.05;
 
 /// Runs a `dynamics` command; what it prints. A failure is the example's failure.
