@@ -9,12 +9,15 @@
 //! * on random robots of 2 to 7 revolute and prismatic joints, against the numerical rank of the
 //!   textbook method's torques (`dynamics-reference`): τ is linear in the parameters, so the
 //!   torques at a set of states of robots that differ only in their inertial parameters span,
-//!   in their differences, the stacked regressor's column space.
+//!   in their differences, the stacked regressor's column space;
+//! * the generated `DynamicsBaseParameters` (`base_parameters = true`): `Y_B π_B` against
+//!   `inverse_dynamics`, in `f64` and `f32`.
 
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{derive, front};
 use dynamics_reference::scaled_error;
+use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsRegressor};
 use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::robot_of;
 use nalgebra::DMatrix;
@@ -303,4 +306,164 @@ fn random_robots_against_the_rank_of_the_textbook_methods_torques() {
         seen[2..].iter().all(|&k| k > 0),
         "robots of every size: {seen:?}"
     );
+}
+
+// Both publish link inertias that break the triangle inequality; the reference data keep them.
+#[derive(Dynamics)]
+#[dynamics(
+    file = "data/reference/robots/puma560.json",
+    base_parameters = true,
+    regressor = true,
+    check_inertia = false
+)]
+struct Puma560;
+
+#[derive(Dynamics)]
+#[dynamics(file = "data/panda/robot.json", base_parameters = true)]
+struct Panda;
+
+/// `Y_B π_B` of a robot at a state.
+fn predicted<R, const N: usize, const B: usize>(
+    robot: &R,
+    q: &[f64; N],
+    qd: &[f64; N],
+    qdd: &[f64; N],
+) -> Vec<f64>
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let y = robot.base_regressor(q, qd, qdd);
+    let pi = robot.base_parameters::<f64>();
+    y.iter()
+        .map(|row| row.iter().zip(&pi).map(|(a, b)| a * b).sum())
+        .collect()
+}
+
+fn generated_against_inverse_dynamics<R, const N: usize, const B: usize>(robot: &R, name: &str)
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut uniform = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1_u64 << 53) as f64 * 2.0 - 1.0
+    };
+    for _ in 0..20 {
+        let q: [f64; N] = std::array::from_fn(|_| 3.0 * uniform());
+        let qd: [f64; N] = std::array::from_fn(|_| 2.0 * uniform());
+        let qdd: [f64; N] = std::array::from_fn(|_| 5.0 * uniform());
+        let tau = robot.inverse_dynamics(&q, &qd, &qdd);
+        let error = scaled_error(&predicted(robot, &q, &qd, &qdd), &tau);
+        assert!(error < 1e-12, "{name}: error {error:e}");
+    }
+}
+
+#[test]
+fn generated_base_regressor_times_base_parameters_is_inverse_dynamics() {
+    // Neither description gives actuator inertia or friction: the links' alone, as counted.
+    generated_against_inverse_dynamics::<_, 6, 36>(&Puma560, "puma560");
+    generated_against_inverse_dynamics::<_, 7, 43>(&Panda, "panda");
+    // As many as the exact analysis finds.
+    let robot = robot("panda");
+    let mut eq = derive(&robot);
+    let described: Vec<JointColumns> = robot.joints.iter().map(JointColumns::described).collect();
+    assert_eq!(
+        eq.base_parameters(&robot, &described)
+            .unwrap()
+            .parameters
+            .len(),
+        43
+    );
+}
+
+#[test]
+fn generated_base_regressor_in_f32() {
+    let q = [0.3_f32, -0.7, 1.1, 0.2, -0.4, 0.9];
+    let (qd, qdd) = ([0.5_f32; 6], [-1.0_f32; 6]);
+    let narrow = Puma560.base_regressor(&q, &qd, &qdd);
+    let wide = Puma560.base_regressor(&q.map(f64::from), &qd.map(f64::from), &qdd.map(f64::from));
+    let narrow: Vec<f64> = narrow.iter().flatten().map(|&x| f64::from(x)).collect();
+    let wide: Vec<f64> = wide.iter().flatten().copied().collect();
+    assert!(scaled_error(&narrow, &wide) < 1e-5);
+}
+
+/// Masses and inertias may be struct fields: the grouping depends on the geometry alone.
+#[derive(Dynamics)]
+#[dynamics(
+    gravity = [0, -9.81, 0],
+    dh = [[q, 0, 1, 0], [q, 0, 0.5, 0]],
+    link(mass = 1),
+    link(mass = mass, inertia = [0, 0, inertia, 0, 0, 0]),
+    base_parameters = true
+)]
+struct Planar {
+    mass: f64,
+    inertia: f64,
+}
+
+#[test]
+fn base_parameters_of_field_masses() {
+    for (mass, inertia) in [(2.0, 0.1), (3.5, 0.02)] {
+        let arm = Planar { mass, inertia };
+        let (q, qd, qdd) = ([0.3, -1.2], [0.7, 0.4], [-2.0, 1.5]);
+        let tau = arm.inverse_dynamics(&q, &qd, &qdd);
+        let error = scaled_error(&predicted(&arm, &q, &qd, &qdd), &tau);
+        assert!(error < 1e-12, "error {error:e}");
+    }
+}
+
+/// `P π + P_J p` with the maps of `base_from_standard` and `base_from_joints`.
+fn mapped<R, const N: usize, const B: usize>(
+    robot: &R,
+    pi: &[[f64; 10]; N],
+    joints: &[[f64; 4]; N],
+) -> [f64; B]
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let (p, pj) = (
+        robot.base_from_standard::<f64>(),
+        robot.base_from_joints::<f64>(),
+    );
+    std::array::from_fn(|b| {
+        let links: f64 = (0..N)
+            .map(|j| (0..10).map(|k| p[b][j][k] * pi[j][k]).sum::<f64>())
+            .sum();
+        let own: f64 = (0..N)
+            .map(|i| (0..4).map(|k| pj[b][i][k] * joints[i][k]).sum::<f64>())
+            .sum();
+        links + own
+    })
+}
+
+#[test]
+fn the_map_from_standard_parameters() {
+    let robot = Puma560;
+    let (pi, joints) = (
+        robot.standard_parameters::<f64>(),
+        robot.joint_parameters::<f64>(),
+    );
+    let base: [f64; 36] = robot.base_parameters();
+    assert!(scaled_error(&mapped(&robot, &pi, &joints), &base) < 1e-14);
+    // Other standard parameters, not physical ones: Y_B (P π') is still Y π'.
+    let other: [[f64; 10]; 6] =
+        std::array::from_fn(|j| std::array::from_fn(|k| ((7 * j + 3 * k) % 11) as f64 - 5.0));
+    let mapped: [f64; 36] = mapped(&robot, &other, &joints);
+    let (q, qd, qdd) = ([0.4, -0.9, 1.3, 0.1, 0.8, -0.5], [0.6; 6], [-1.2; 6]);
+    let y = robot.regressor(&q, &qd, &qdd);
+    let yb = robot.base_regressor(&q, &qd, &qdd);
+    let full: Vec<f64> = (0..6)
+        .map(|i| {
+            (0..6)
+                .map(|j| (0..10).map(|k| y[i][j][k] * other[j][k]).sum::<f64>())
+                .sum()
+        })
+        .collect();
+    let reduced: Vec<f64> = yb
+        .iter()
+        .map(|row| row.iter().zip(&mapped).map(|(a, b)| a * b).sum())
+        .collect();
+    assert!(scaled_error(&reduced, &full) < 1e-12);
 }

@@ -19,7 +19,7 @@ mod exact;
 
 use super::Equations;
 use crate::model::{Joint, Robot, Value};
-use crate::symbolic::{NodeId, Number};
+use crate::symbolic::{Graph, NodeId, Number};
 
 /// The standard parameters of a link, in `π`'s order (`[m, m cx, m cy, m cz, Ixx, Ixy, Iyy,
 /// Ixz, Iyz, Izz]`), in Khalil's notation.
@@ -115,6 +115,11 @@ pub struct BaseParameters {
     pub regressor: Vec<Vec<NodeId>>,
     /// `π_B` of the description, node ids.
     pub values: Vec<NodeId>,
+    /// `P[b][j][k]`: base parameter b's coefficient on link j's standard parameter k, constant
+    /// nodes.
+    pub link_map: Blocks,
+    /// `P_J[b][i][k]`: its coefficient on joint i's parameter k.
+    pub joint_map: Blocks,
 }
 
 impl Equations {
@@ -160,7 +165,10 @@ impl Equations {
                 })
             })
             .collect();
+        let (link_map, joint_map) = maps(&mut self.graph, self.dof, &groups);
         Some(BaseParameters {
+            link_map,
+            joint_map,
             parameters: groups
                 .into_iter()
                 .map(|terms| BaseParameter {
@@ -255,6 +263,30 @@ fn groups(
         }
     }
     (groups, no_effect)
+}
+
+/// Matrices of nodes, one after the other.
+type Blocks = Vec<Vec<Vec<NodeId>>>;
+
+/// The groups as maps from the links' and the joints' parameters, constant nodes.
+fn maps(
+    graph: &mut Graph,
+    n: usize,
+    groups: &[Vec<Term>],
+) -> (Blocks, Blocks) {
+    let zero = graph.num(Number::ZERO);
+    let mut links = vec![vec![vec![zero; LINK_NAMES.len()]; n]; groups.len()];
+    let mut joints = vec![vec![vec![zero; JOINT_NAMES.len()]; n]; groups.len()];
+    for (b, terms) in groups.iter().enumerate() {
+        for term in terms {
+            let c = graph.num(term.coefficient);
+            match term.parameter {
+                Parameter::Link { link, index } => links[b][link][index] = c,
+                Parameter::Joint { joint, index } => joints[b][joint][index] = c,
+            }
+        }
+    }
+    (links, joints)
 }
 
 /// `ZZ1`, or `ZZR1` where other parameters are grouped into it.
