@@ -12,11 +12,15 @@
 //! 4. **Validate** (`dynamics identify --validate`): the torques of another motion (another
 //!    seed's, not optimised), measured likewise, predicted by the estimates; the RMS of the
 //!    prediction error is printed per joint, and plotted.
+//! 5. **Use**: the estimates loaded into the generated code (`base_parameters = true`): the
+//!    other motion's torques predicted again, `τ̂ = Y_B(q, q̇, q̈) π̂_B` by `base_regressor`,
+//!    as a controller would compute them; their errors are the validation's, to rounding (two
+//!    implementations of `Y_B`: the generated code and the command's tape).
 //!
 //! The commands run in this process through `dynamics_cli::run`, the same code as the
 //! `dynamics` binary. Files go to a directory of the system's temporary directory.
 
-use dynamics_runtime::Dynamics;
+use dynamics_runtime::DynamicsBaseParameters;
 use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -44,7 +48,12 @@ pub struct Normal(u64);
 impl Normal {
     #[must_use]
     pub fn new(seed: u64) -> Normal {
-        Normal(seed.max(1))
+        // SplitMix64 of the seed: a small seed as xorshift's state would give small states,
+        // hence uniform deviates near 0 and Box-Muller outliers, for its first draws.
+        let mut z = seed.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        Normal((z ^ (z >> 31)).max(1))
     }
 
     pub fn sample(&mut self) -> f64 {
@@ -66,7 +75,7 @@ impl Normal {
 /// # Panics
 /// A trajectory that is not `excite`'s, or a file that cannot be written.
 pub fn measure<const N: usize>(
-    robot: &impl Dynamics<N>,
+    robot: &impl dynamics_runtime::Dynamics<N>,
     path: &Path,
     out: &Path,
     seed: u64,
@@ -110,36 +119,29 @@ fn directory(name: &str) -> PathBuf {
 
 /// The example end to end on `robot`, described to the commands by `robot_words` (the file and
 /// its options); `name` names its files. Panics if an estimate is more than five standard
-/// deviations from the truth, or a joint's prediction error on the other motion more than
-/// [`PREDICTION`] of its RMS torque.
-pub fn example<const N: usize>(robot: &impl Dynamics<N>, robot_words: &[&str], name: &str) {
+/// deviations from the truth, a joint's prediction error on the other motion more than
+/// [`PREDICTION`] of its RMS torque, or the generated code's predictions are not the command's.
+pub fn example<R, const N: usize, const B: usize>(robot: &R, robot_words: &[&str], name: &str)
+where
+    R: DynamicsBaseParameters<N, B>,
+{
     let dir = directory(name);
     let file = |f: &str| dir.join(f).to_string_lossy().into_owned();
-    let with_robot = |words: &[&str]| -> Vec<String> {
-        let mut all = vec![words[0].to_string()];
-        all.extend(robot_words.iter().map(ToString::to_string));
-        all.extend(words[1..].iter().map(ToString::to_string));
-        all
-    };
     let run = |words: &[&str]| {
-        let all = with_robot(words);
-        dynamics(&all.iter().map(String::as_str).collect::<Vec<_>>())
+        let mut all = vec![words[0]];
+        all.extend(robot_words);
+        all.extend(&words[1..]);
+        dynamics(&all)
     };
     let (motion, other) = (file("excite.csv"), file("other.csv"));
-    let excite = run(&["excite", "--periods", "3", "--csv", &motion, "--json"]);
-    let excite: Value = serde_json::from_str(&excite).expect("JSON");
-    println!(
-        "1. excite: {} base parameters; a motion of {} periods of {} s within the joints' \
-         limits; condition number {:.1} (the first guess's {:.1}), in {:.1} s",
-        excite["base_parameters"],
-        excite["periods"],
-        excite["period"],
-        excite["condition_number"].as_f64().unwrap_or(f64::NAN),
-        excite["initial_condition_number"]
-            .as_f64()
-            .unwrap_or(f64::NAN),
-        excite["seconds"].as_f64().unwrap_or(f64::NAN),
-    );
+    excite_step(&run(&[
+        "excite",
+        "--periods",
+        "3",
+        "--csv",
+        &motion,
+        "--json",
+    ]));
     // Another motion for the validation: another seed's first random guess.
     run(&[
         "excite",
@@ -174,6 +176,7 @@ pub fn example<const N: usize>(robot: &impl Dynamics<N>, robot_words: &[&str], n
     let worst = estimates(&report);
     let relative = validation(&report);
     println!("   measured against predicted torques of the other motion: {svg}");
+    use_step(robot, &report, Path::new(&measured_other));
     assert!(
         worst < 5.0,
         "an estimate {worst:.1} standard deviations off"
@@ -182,6 +185,83 @@ pub fn example<const N: usize>(robot: &impl Dynamics<N>, robot_words: &[&str], n
         relative < 100.0 * PREDICTION,
         "a prediction error of {relative:.2} %"
     );
+}
+
+/// Step 1: prints what `excite` reported (`json`).
+fn excite_step(json: &str) {
+    let excite: Value = serde_json::from_str(json).expect("JSON");
+    let number = |key: &str| excite[key].as_f64().unwrap_or(f64::NAN);
+    println!(
+        "1. excite: {} base parameters; a motion of {} periods of {} s within the joints' \
+         limits; condition number {:.1} (the first guess's {:.1}), in {:.1} s",
+        excite["base_parameters"],
+        excite["periods"],
+        excite["period"],
+        number("condition_number"),
+        number("initial_condition_number"),
+        number("seconds"),
+    );
+}
+
+/// Step 5: prints the generated code's prediction errors with the estimates on the file at
+/// `path`; panics where they are not the command's validation's.
+fn use_step<R, const N: usize, const B: usize>(robot: &R, report: &Value, path: &Path)
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let generated = use_estimates(robot, report, path);
+    println!(
+        "5. use: the estimates in the generated base_regressor, on the other motion: RMS error \
+         per joint {}",
+        list(&generated)
+    );
+    let commands = &report["validation"]["joints"];
+    for (j, error) in generated.iter().enumerate() {
+        let validated = commands[j]["error_rms"].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            (error - validated).abs() <= 1e-9 * validated,
+            "joint {}: {error} from the generated code, {validated} from identify",
+            j + 1
+        );
+    }
+}
+
+/// The estimates of `report` as the generated code's `π̂_B`, and per joint the RMS error of
+/// `Y_B π̂_B` against the torques measured in the file at `path` (`t,q..,qd..,qdd..,tau..`).
+fn use_estimates<R, const N: usize, const B: usize>(
+    robot: &R,
+    report: &Value,
+    path: &Path,
+) -> [f64; N]
+where
+    R: DynamicsBaseParameters<N, B>,
+{
+    let parameters = report["parameters"].as_array().expect("parameters");
+    assert_eq!(parameters.len(), B, "every base parameter identified");
+    // The command's order is the generated code's: the description's values agree.
+    let described = robot.base_parameters::<f64>();
+    let number = |p: &Value, key: &str| p[key].as_f64().unwrap_or(f64::NAN);
+    let largest = described.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for (p, d) in parameters.iter().zip(described) {
+        assert!((number(p, "described") - d).abs() <= 1e-12 * largest, "{p}");
+    }
+    let estimates: [f64; B] = core::array::from_fn(|b| number(&parameters[b], "estimate"));
+    let text = std::fs::read_to_string(path).expect("the measurements");
+    let (mut squares, mut samples) = ([0.0; N], 0.0);
+    for line in text.lines().skip(1) {
+        let row: Vec<f64> = line
+            .split(',')
+            .map(|x| x.parse().expect("a number"))
+            .collect();
+        let joint = |group: usize| -> [f64; N] { core::array::from_fn(|j| row[1 + group * N + j]) };
+        let y = robot.base_regressor(&joint(0), &joint(1), &joint(2));
+        for (j, (y_j, tau)) in y.iter().zip(joint(3)).enumerate() {
+            let predicted: f64 = y_j.iter().zip(&estimates).map(|(a, b)| a * b).sum();
+            squares[j] += (tau - predicted).powi(2);
+        }
+        samples += 1.0;
+    }
+    squares.map(|s| (s / samples).sqrt())
 }
 
 /// Prints the estimates beside the truth; the largest error in standard deviations.
@@ -241,6 +321,6 @@ fn validation(report: &Value) -> f64 {
 }
 
 fn list(values: &[f64]) -> String {
-    let parts: Vec<String> = values.iter().map(|v| format!("{v:.3}")).collect();
+    let parts: Vec<String> = values.iter().map(|v| format!("{v:.3e}")).collect();
     format!("[{}]", parts.join(", "))
 }
