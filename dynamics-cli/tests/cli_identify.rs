@@ -152,6 +152,28 @@ fn noise_free_data_are_reproduced_and_predict_another_trajectory() {
         .collect();
     let error = worst(&predicted, &truth);
     assert!(error < 1e-9, "{error}");
+    // The same from the command: --validate on that trajectory's file (springs included; the
+    // command subtracts them, as in the fit).
+    let other_tau = torques(&robot, &other, |_| 0.0);
+    let other_csv = write_csv("other.csv", &other, &other_tau, true);
+    let validation_svg = scratch("other.svg");
+    let validation_svg = validation_svg.to_str().unwrap();
+    let mut validate = args.clone();
+    validate.extend(["--validate", &other_csv, "--validate-plot", validation_svg]);
+    let validated = json(&dynamics(&validate));
+    let v = &validated["validation"];
+    assert_eq!(v["samples"].as_u64(), Some(200));
+    for (i, joint) in v["joints"].as_array().expect("joints").iter().enumerate() {
+        let rms = (truth.iter().map(|t| t[i] * t[i]).sum::<f64>() / 200.0).sqrt();
+        let reported = joint["rms"].as_f64().unwrap();
+        assert!((reported - rms).abs() < 1e-12 * rms, "{joint}: {rms}");
+        assert!(
+            joint["error_rms"].as_f64().unwrap() < 1e-9 * scale,
+            "{joint}"
+        );
+    }
+    let figure = std::fs::read_to_string(validation_svg).expect("the figure is written");
+    assert!(figure.contains("predicted") && figure.contains("joint 4: τ4 (N)"));
     // Through the filters, τ and the regressor's columns are smoothed alike, Coulomb friction's
     // steps included: what is left is the low-pass's effect on q (and near the ends).
     args.extend(["--cutoff", "10"]);

@@ -1,6 +1,6 @@
 //! `dynamics identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ]
-//! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--json]`: the robot's parameters
-//! estimated from measured motions and torques.
+//! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--validate FILE [--validate-plot FILE]]
+//! [--json]`: the robot's parameters estimated from measured motions and torques.
 //!
 //! Inverse dynamics is linear in the parameters: `τ = Y(q, q̇, q̈) π`. Each sample k of the file
 //! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
@@ -26,6 +26,10 @@
 //! With `--cutoff`, q is low-passed before differentiation, and τ and the regressor's columns
 //! alike before they are used, one sample in d kept (`identify::source`, `identify::decimate`).
 //!
+//! `--validate FILE`: the torques of other measurements (read, filtered and with springs
+//! subtracted as the fit's) predicted by the estimate, `τ̂ = Y π̂`, and the RMS of
+//! `τ − τ̂` per joint reported beside the RMS of τ (`identify::predict`).
+//!
 //! `Y` is never held: each joint's rows update a triangular factor as they are read
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
@@ -35,10 +39,11 @@ use super::size::write_svg;
 use super::{load, Failure};
 use crate::args::Identify;
 use crate::identify::base;
-use crate::identify::estimate::{estimate, Estimate};
+use crate::identify::estimate::estimate;
 use crate::identify::figure;
 use crate::identify::measured::Measured;
 use crate::identify::model::LinearModel;
+use crate::identify::predict::{predict, Prediction};
 use crate::identify::report::Report;
 use crate::identify::rows::{each_row, Springs};
 use crate::identify::source::Source;
@@ -66,23 +71,36 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         joints: model.joints(),
         torques: true,
     };
-    let source = Source::open(&args.csv, columns, args.cutoff).map_err(|e| {
-        if e.starts_with("--cutoff") {
-            usage("identify", &e)
-        } else {
-            Failure::File(e)
-        }
-    })?;
+    let source = open(&args.csv, columns, args.cutoff)?;
     let (mut measured, method, span) = measure(&model, &source, &springs)?;
     let estimate = estimate(&mut measured, args.tolerance)
         .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
     let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
-    if let Some(path) = &args.plot {
-        let title = format!("{}: measured and predicted joint torques", robot.name);
-        let envelope = predictions(&model, &source, &springs, &estimate)?;
+    let figure_of = |path: &str, what: &str, source: &Source| -> Result<Prediction, Failure> {
+        let mut envelope = Envelope::new(figure::SERIES * model.joints());
+        let prediction = predict(&model, source, &springs, &estimate, Some(&mut envelope))
+            .map_err(Failure::File)?;
+        let title = format!("{}: {what}", robot.name);
         let filtered = source.filter().is_some();
         write_svg(path, &figure::figure(title, &units, filtered, &envelope))?;
+        Ok(prediction)
+    };
+    if let Some(path) = &args.plot {
+        figure_of(path, "measured and predicted joint torques", &source)?;
     }
+    let validation = match &args.validate {
+        None => None,
+        Some(csv) => {
+            let other = open(csv, columns, args.cutoff)?;
+            let prediction = match &args.validate_plot {
+                Some(path) => figure_of(path, &format!("torques of {csv} predicted"), &other)?,
+                None => {
+                    predict(&model, &other, &springs, &estimate, None).map_err(Failure::File)?
+                }
+            };
+            Some((csv.as_str(), prediction))
+        }
+    };
     let description = format!(
         "the base parameters of the links and the joint terms: {} (their groupings: \
          `dynamics inspect --base-parameters` with the same options)",
@@ -101,6 +119,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         units,
         linear: &model,
         estimate: &estimate,
+        validation,
     };
     Ok(if args.json {
         report.json()
@@ -148,32 +167,13 @@ fn measure(
     Ok((measured, method, span))
 }
 
-/// A second pass: the measured and predicted torques, decimated for the figure.
-fn predictions(
-    model: &LinearModel,
-    source: &Source,
-    springs: &Springs,
-    estimate: &Estimate,
-) -> Result<Envelope, Failure> {
-    let n = model.joints();
-    let pi: Vec<f64> = estimate
-        .values
-        .iter()
-        .map(|v| if v.is_nan() { 0.0 } else { *v })
-        .collect();
-    let mut envelope = Envelope::new(figure::SERIES * n);
-    let mut predicted = vec![0.0; n];
-    let mut values = vec![0.0; figure::SERIES * n];
-    each_row(model, source, springs, |t, entries, torques| {
-        let mut start = 0;
-        for (i, columns) in model.columns.iter().enumerate() {
-            let row = &entries[start..start + columns.len()];
-            predicted[i] = columns.iter().zip(row).map(|(&k, y)| y * pi[k]).sum();
-            start += columns.len();
+/// The samples of `path`, filtered at `cutoff` if given.
+fn open(path: &str, columns: Columns, cutoff: Option<f64>) -> Result<Source, Failure> {
+    Source::open(path, columns, cutoff).map_err(|e| {
+        if e.starts_with("--cutoff") {
+            usage("identify", &e)
+        } else {
+            Failure::File(e)
         }
-        figure::values(torques, &predicted, &mut values);
-        envelope.push(t, &values);
     })
-    .map_err(Failure::File)?;
-    Ok(envelope)
 }

@@ -3,6 +3,7 @@
 
 mod emit;
 mod eval;
+mod excite;
 mod identify;
 mod inspect;
 mod simulate;
@@ -39,6 +40,7 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Size(args) => size::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Identify(args) => identify::run(args),
+        Command::Excite(args) => excite::run(args),
     }
 }
 

@@ -9,6 +9,7 @@
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
 //!   standard deviations, condition number ([`singular`]);
+//! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others;
 //! * [`report`], [`figure`]: what is printed and drawn.
 
 pub mod base;
@@ -19,6 +20,7 @@ pub mod filter;
 pub mod householder;
 pub mod measured;
 pub mod model;
+pub mod predict;
 pub mod rank;
 pub mod report;
 pub mod rows;

@@ -2,6 +2,7 @@
 
 use super::estimate::Estimate;
 use super::model::LinearModel;
+use super::predict::Prediction;
 use super::rank::Unidentified;
 use super::source::Filter;
 use crate::format::unsigned_zero;
@@ -25,6 +26,8 @@ pub struct Report<'a> {
     pub units: Vec<&'static str>,
     pub linear: &'a LinearModel,
     pub estimate: &'a Estimate,
+    /// Other measurements' file and their torques predicted, if asked for.
+    pub validation: Option<(&'a str, Prediction)>,
 }
 
 const METHOD: &str = "two-step weighted least squares (Gautier): an ordinary fit, then each \
@@ -88,6 +91,23 @@ impl Report<'_> {
         for (i, (s, r)) in e.sigma.iter().zip(&e.rms).enumerate() {
             let unit = self.units[i];
             let _ = writeln!(out, "{:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}", i + 1);
+        }
+        if let Some((csv, p)) = &self.validation {
+            let _ = writeln!(
+                out,
+                "\nvalidation: the torques of {csv} ({} samples, not in the fit) predicted by \
+                 the estimate\n{:>5} {:>14} {:>14} {:>9}",
+                p.samples, "joint", "RMS of τ", "RMS error", "relative"
+            );
+            for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
+                let unit = self.units[i];
+                let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
+                let _ = writeln!(
+                    out,
+                    "{:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}",
+                    i + 1
+                );
+            }
         }
         out
     }
@@ -167,6 +187,13 @@ impl Report<'_> {
             "parameters": parameters,
             "unidentifiable": unidentifiable,
             "joints": joints,
+            "validation": self.validation.as_ref().map(|(csv, p)| json!({
+                "csv": csv,
+                "samples": p.samples,
+                "joints": p.measured_rms.iter().zip(&p.error_rms)
+                    .map(|(m, e)| json!({ "rms": m, "error_rms": e }))
+                    .collect::<Vec<Value>>(),
+            })),
         });
         format!("{report:#}\n")
     }
