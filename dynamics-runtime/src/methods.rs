@@ -424,7 +424,7 @@ macro_rules! for_each_method {
                         equation: None,
                         prefix: "pbs",
                         summary: "The map P from the links' standard parameters π to π_B.",
-                        element: "base parameter {i}: coefficient of pi{j}",
+                        element: "base parameter {k}: coefficient of pi{i}_{j}",
                     }
                     /// The map from the joints' parameters (`joint_parameters`' layout) to the
                     /// base parameters: `P_J` of `base_from_standard`.
@@ -433,7 +433,7 @@ macro_rules! for_each_method {
                         equation: None,
                         prefix: "pbj",
                         summary: "The map P_J from the joints' parameters to π_B.",
-                        element: "base parameter {i}: coefficient of joint parameter {j}",
+                        element: "base parameter {k}: coefficient of joint {i} parameter {j}",
                     }
                 }
             }

@@ -330,6 +330,9 @@ mod tests {
                 Method::JointRegressor,
                 Method::JointParameters,
                 Method::StandardParameters,
+                Method::BaseParameters,
+                Method::BaseFromStandard,
+                Method::BaseFromJoints,
             ];
             assert_eq!(reads_q, !without_q.contains(&m), "{m:?}");
             let template = [m.element_template(false), m.element_template(true)];
