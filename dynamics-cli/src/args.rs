@@ -317,6 +317,11 @@ pub struct Identify {
     /// Write a plot of the measured and the predicted torque of the --validate file, as SVG
     #[arg(long, value_name = "FILE", requires = "validate")]
     pub validate_plot: Option<String>,
+    /// Also estimate physically consistent parameters: every link's pseudo-inertia positive
+    /// semidefinite (a mass distribution could have them), actuator inertia, viscous and Coulomb
+    /// friction nonnegative, fitting the measurements as well as such parameters can
+    #[arg(long)]
+    pub consistent: bool,
     /// Print JSON instead of a table
     #[arg(long)]
     pub json: bool,

@@ -41,6 +41,8 @@ pub struct Estimate {
     pub sigma: Vec<f64>,
     /// Whether the rows were weighted (every σ_i zero: not).
     pub weighted: bool,
+    /// Per joint: the weight its rows had in the fit (1 when not weighted).
+    pub weights: Vec<f64>,
     /// Per joint: the residual's root mean square with the weighted estimate.
     pub rms: Vec<f64>,
     /// Of the weighted stacked regressor of the identified parameters.
@@ -107,6 +109,7 @@ pub fn estimate(measured: &mut Measured, tolerance: f64) -> Result<Estimate, Str
         unidentified,
         sigma: if weighted { sigma } else { vec![0.0; n] },
         weighted,
+        weights,
         rms,
         condition: singular[0] / singular[b - 1],
         samples,
