@@ -322,6 +322,10 @@ pub struct Identify {
     /// friction nonnegative, fitting the measurements as well as such parameters can
     #[arg(long)]
     pub consistent: bool,
+    /// With --consistent and a TOML ROBOT: write the description with the consistent estimate's
+    /// masses, centres of mass, inertias and joint terms in place of its own, as TOML
+    #[arg(long, value_name = "FILE", requires = "consistent")]
+    pub description_out: Option<String>,
     /// Print JSON instead of a table
     #[arg(long)]
     pub json: bool,

@@ -36,7 +36,8 @@
 //! gets that eigenvalue's eigenvector as a new cut, and the program is solved again, until no
 //! J_i has one. Each cut holds for every feasible π, so the feasible set is never cut into: the
 //! solutions approach the constrained minimiser from outside, and the last is feasible to that
-//! tolerance.
+//! tolerance; its remaining negative eigenvalues are then set to zero (`J ← V max(Λ, 0) Vᵀ`,
+//! a change of π below the tolerance).
 
 use super::estimate::Estimate;
 use super::measured::Measured;
@@ -151,6 +152,7 @@ pub fn consistent(
             }
         }
         if !added {
+            let x = clipped(x, problem.links);
             return Ok(finish(measured, estimate, problem, x, round));
         }
     }
@@ -306,6 +308,40 @@ pub fn eigen(mut a: [[f64; 4]; 4]) -> ([f64; 4], [[f64; 4]; 4]) {
     let values = [a[0][0], a[1][1], a[2][2], a[3][3]];
     let vectors = [0, 1, 2, 3].map(|k| [v[0][k], v[1][k], v[2][k], v[3][k]]);
     (values, vectors)
+}
+
+/// `x` with each link's J replaced by its nearest positive semidefinite matrix (negative
+/// eigenvalues, above the cuts' tolerance, set to zero), so that the parameters written to a
+/// description pass its checks (a mass not below zero, the triangle inequality to 10⁻⁹).
+fn clipped(mut x: Vec<f64>, links: usize) -> Vec<f64> {
+    for l in 0..links {
+        let pi = &mut x[10 * l..10 * l + 10];
+        let (values, vectors) = eigen(pseudo_inertia(pi));
+        if values.iter().all(|&v| v >= 0.0) {
+            continue;
+        }
+        let j: [[f64; 4]; 4] = std::array::from_fn(|a| {
+            std::array::from_fn(|b| {
+                let terms = values.iter().zip(&vectors);
+                terms.map(|(v, e)| v.max(0.0) * e[a] * e[b]).sum()
+            })
+        });
+        // J's entries back to π: m, h, and I = tr(Σ) 1 − Σ.
+        let trace = j[0][0] + j[1][1] + j[2][2];
+        pi.copy_from_slice(&[
+            j[3][3],
+            j[0][3],
+            j[1][3],
+            j[2][3],
+            trace - j[0][0],
+            -j[0][1],
+            trace - j[1][1],
+            -j[0][2],
+            -j[1][2],
+            trace - j[2][2],
+        ]);
+    }
+    x
 }
 
 /// The smallest eigenvalue of a link's pseudo-inertia.
