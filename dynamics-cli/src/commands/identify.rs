@@ -1,6 +1,6 @@
 //! `dynamics identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ]
 //! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--validate FILE [--validate-plot FILE]]
-//! [--consistent [--description-out FILE]] [--json]`: the robot's parameters estimated from measured motions and torques.
+//! [--iterate-weights] [--consistent [--description-out FILE]] [--json]`: the robot's parameters estimated from measured motions and torques.
 //!
 //! Inverse dynamics is linear in the parameters: `τ = Y(q, q̇, q̈) π`. Each sample k of the file
 //! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
@@ -80,7 +80,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     };
     let source = open(&args.csv, columns, args.cutoff)?;
     let (mut measured, method, span) = measure(&model, &source, &springs)?;
-    let estimate = estimate(&mut measured, args.tolerance)
+    let estimate = estimate(&mut measured, args.tolerance, args.weight_iterations())
         .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
     let consistent = args
         .consistent

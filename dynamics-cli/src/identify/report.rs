@@ -58,7 +58,7 @@ impl Report<'_> {
         } else {
             "ordinary least squares (every joint fitted exactly: no weights)"
         };
-        let _ = writeln!(out, "method: {method}");
+        let _ = writeln!(out, "method: {method}{}", reweighted(e.reweighted));
         let _ = writeln!(
             out,
             "condition number of the weighted stacked regressor: {}\n",
@@ -255,6 +255,7 @@ impl Report<'_> {
             "model": self.model,
             "springs_subtracted": self.springs,
             "method": if e.weighted { "weighted least squares" } else { "ordinary least squares" },
+            "weights_reestimated": e.reweighted,
             "condition_number": e.condition,
             "tolerance": self.tolerance,
             "parameters": parameters,
@@ -312,6 +313,15 @@ fn consistent_json(c: &Consistent, standard: &[String], base: &[String]) -> Valu
         "links": links,
         "residual_rms": c.rms,
     })
+}
+
+/// `; σ_i re-estimated k times …` when the weights were iterated.
+fn reweighted(times: usize) -> String {
+    if times == 0 {
+        String::new()
+    } else {
+        format!("; σ_i re-estimated {times} times from the weighted fit's residuals")
+    }
 }
 
 /// `100 σ / |x|` %, where x is not zero.
