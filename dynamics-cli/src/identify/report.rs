@@ -317,10 +317,10 @@ fn consistent_json(c: &Consistent, standard: &[String], base: &[String]) -> Valu
 
 /// `; σ_i re-estimated k times …` when the weights were iterated.
 fn reweighted(times: usize) -> String {
-    if times == 0 {
-        String::new()
-    } else {
-        format!("; σ_i re-estimated {times} times from the weighted fit's residuals")
+    match times {
+        0 => String::new(),
+        1 => "; σ_i re-estimated once from the weighted fit's residuals".into(),
+        _ => format!("; σ_i re-estimated {times} times from the weighted fit's residuals"),
     }
 }
 
