@@ -317,9 +317,30 @@ pub struct Identify {
     /// Write a plot of the measured and the predicted torque of the --validate file, as SVG
     #[arg(long, value_name = "FILE", requires = "validate")]
     pub validate_plot: Option<String>,
+    /// Re-estimate each joint's σ_i from the weighted fit's residuals and fit again, until no
+    /// σ_i changes by 1 % (at most 10 times), instead of taking σ_i from the ordinary fit only
+    #[arg(long)]
+    pub iterate_weights: bool,
+    /// Also estimate physically consistent parameters: every link's pseudo-inertia positive
+    /// semidefinite (a mass distribution could have them), actuator inertia, viscous and Coulomb
+    /// friction nonnegative, fitting the measurements as well as such parameters can
+    #[arg(long)]
+    pub consistent: bool,
+    /// With --consistent and a TOML ROBOT: write the description with the consistent estimate's
+    /// masses, centres of mass, inertias and joint terms in place of its own, as TOML
+    #[arg(long, value_name = "FILE", requires = "consistent")]
+    pub description_out: Option<String>,
     /// Print JSON instead of a table
     #[arg(long)]
     pub json: bool,
+}
+
+impl Identify {
+    /// How many times the weights may be re-estimated (`--iterate-weights`).
+    #[must_use]
+    pub fn weight_iterations(&self) -> usize {
+        crate::identify::estimate::ITERATIONS * usize::from(self.iterate_weights)
+    }
 }
 
 #[derive(Args, Debug)]

@@ -3,6 +3,8 @@
 //! the predictions the tests check are the reduced regressor's graph evaluated by `Graph::eval`,
 //! not by the tape `identify` uses.
 
+// Each test binary uses part of the synthetic data's helpers.
+#[allow(dead_code)]
 mod synthetic;
 
 use dynamics_codegen::model::Robot;

@@ -1,6 +1,6 @@
 //! `dynamics identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ]
 //! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--validate FILE [--validate-plot FILE]]
-//! [--json]`: the robot's parameters estimated from measured motions and torques.
+//! [--iterate-weights] [--consistent [--description-out FILE]] [--json]`: the robot's parameters estimated from measured motions and torques.
 //!
 //! Inverse dynamics is linear in the parameters: `τ = Y(q, q̇, q̈) π`. Each sample k of the file
 //! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
@@ -30,6 +30,10 @@
 //! subtracted as the fit's) predicted by the estimate, `τ̂ = Y π̂`, and the RMS of
 //! `τ − τ̂` per joint reported beside the RMS of τ (`identify::predict`).
 //!
+//! `--consistent`: beside the plain estimate, standard parameters π with every link's
+//! pseudo-inertia `J_i ⪰ 0` minimising `‖R_w (P π) − z_w‖²` (`identify::consistent`), and
+//! with `--description-out` the TOML description rewritten with them (`identify::description`).
+//!
 //! `Y` is never held: each joint's rows update a triangular factor as they are read
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
@@ -39,6 +43,8 @@ use super::size::write_svg;
 use super::{load, Failure};
 use crate::args::Identify;
 use crate::identify::base;
+use crate::identify::consistent::{consistent, Consistent, Problem};
+use crate::identify::description;
 use crate::identify::estimate::estimate;
 use crate::identify::figure;
 use crate::identify::measured::Measured;
@@ -52,6 +58,7 @@ use crate::sizing::unit;
 use crate::trajectory::Columns;
 use dynamics_codegen::derive;
 use dynamics_codegen::model::Robot;
+use dynamics_codegen::trace::base_parameters::Parameter;
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
@@ -73,8 +80,15 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     };
     let source = open(&args.csv, columns, args.cutoff)?;
     let (mut measured, method, span) = measure(&model, &source, &springs)?;
-    let estimate = estimate(&mut measured, args.tolerance)
+    let estimate = estimate(&mut measured, args.tolerance, args.weight_iterations())
         .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
+    let consistent = args
+        .consistent
+        .then(|| {
+            let standard = base::standard(&eq, &base, &joint_columns, &fields);
+            consistent_estimate(args, &mut measured, &estimate, &standard)
+        })
+        .transpose()?;
     let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
     let figure_of = |path: &str, what: &str, source: &Source| -> Result<Prediction, Failure> {
         let mut envelope = Envelope::new(figure::SERIES * model.joints());
@@ -119,6 +133,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         units,
         linear: &model,
         estimate: &estimate,
+        consistent: consistent.as_ref(),
         validation,
     };
     Ok(if args.json {
@@ -126,6 +141,59 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     } else {
         report.text()
     })
+}
+
+/// The consistent estimate, with the standard parameters' names; the description rewritten
+/// with it if asked for.
+fn consistent_estimate(
+    args: &Identify,
+    measured: &mut Measured,
+    estimate: &crate::identify::estimate::Estimate,
+    standard: &base::Standard,
+) -> Result<(Consistent, Vec<String>), Failure> {
+    let links = measured.joints.len();
+    // Offset friction may have either sign; the other joint terms dissipate or add inertia.
+    let joint_terms: Vec<bool> = standard.parameters[10 * links..]
+        .iter()
+        .map(|p| !matches!(p, Parameter::Joint { index: 3, .. }))
+        .collect();
+    let problem = Problem {
+        links,
+        joint_terms: &joint_terms,
+        map: &standard.map,
+        described: &standard.described,
+    };
+    let names = standard.parameters.iter().map(|p| p.name()).collect();
+    let found = consistent(measured, estimate, &problem)
+        .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
+    if let Some(path) = &args.description_out {
+        write_description(
+            &args.robot.path,
+            path,
+            &standard.parameters,
+            &found.standard,
+        )?;
+    }
+    Ok((found, names))
+}
+
+/// The description `robot` (TOML) rewritten with the standard parameters `values`, to `path`.
+fn write_description(
+    robot: &str,
+    path: &str,
+    parameters: &[Parameter],
+    values: &[f64],
+) -> Result<(), Failure> {
+    if !robot.ends_with(".toml") {
+        let message =
+            format!("--description-out rewrites a TOML description; `{robot}` is not one");
+        return Err(usage("identify", &message));
+    }
+    let text =
+        std::fs::read_to_string(robot).map_err(|e| Failure::File(format!("{robot}: {e}")))?;
+    let out = description::rewrite(&text, parameters, values)
+        .map_err(|e| Failure::File(format!("{robot}: {e}")))?;
+    std::fs::write(path, out).map_err(|e| Failure::File(format!("{path}: {e}")))
 }
 
 /// Per joint, the description's spring `(k, rest)`, if any, at these fields' values.

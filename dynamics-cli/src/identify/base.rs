@@ -3,9 +3,71 @@
 //! standard parameters that the torques determine, as `dynamics inspect --base-parameters`
 //! prints them), for the links and the joint terms asked for.
 
-use super::model::Entries;
-use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
+use super::model::{constant_values, Entries};
+use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 use dynamics_codegen::Equations;
+
+/// The standard parameters behind the base parameters, for the consistent estimate: the links'
+/// ten each, then the joint terms taken, joint by joint in `IA, FV, FC, FO` order.
+pub struct Standard {
+    pub parameters: Vec<Parameter>,
+    /// The description's values.
+    pub described: Vec<f64>,
+    /// `map[b][k]`: base parameter b's coefficient on standard parameter k.
+    pub map: Vec<Vec<f64>>,
+}
+
+/// The standard parameters of `base`, with joint i's terms `columns[i]`. `eq` has its regressor
+/// (`base_parameters` traced it).
+#[must_use]
+pub fn standard(
+    eq: &Equations,
+    base: &BaseParameters,
+    columns: &[JointColumns],
+    fields: &[f64],
+) -> Standard {
+    let Some(regressor) = eq.regressor.as_ref() else {
+        unreachable!("base parameters are found from the traced regressor")
+    };
+    let n = regressor.parameters.len();
+    let mut parameters: Vec<Parameter> = (0..n)
+        .flat_map(|link| (0..10).map(move |index| Parameter::Link { link, index }))
+        .collect();
+    for (joint, c) in columns.iter().enumerate().take(n) {
+        let flags = [c.actuator_inertia, c.viscous, c.coulomb, c.offset];
+        parameters.extend(
+            (0..4)
+                .filter(|&k| flags[k])
+                .map(|index| Parameter::Joint { joint, index }),
+        );
+    }
+    let ids: Vec<_> = parameters
+        .iter()
+        .map(|p| match *p {
+            Parameter::Link { link, index } => regressor.parameters[link][index],
+            Parameter::Joint { joint, index } => regressor.joint_parameters[joint][index],
+        })
+        .collect();
+    let described = constant_values(&eq.graph, &ids, fields);
+    let map = base
+        .parameters
+        .iter()
+        .map(|b| {
+            let mut row = vec![0.0; parameters.len()];
+            for term in &b.terms {
+                if let Some(k) = parameters.iter().position(|p| *p == term.parameter) {
+                    row[k] += term.coefficient.to_f64();
+                }
+            }
+            row
+        })
+        .collect();
+    Standard {
+        parameters,
+        described,
+        map,
+    }
+}
 
 /// The entries of the base parameters' model `base` of `eq`.
 #[must_use]

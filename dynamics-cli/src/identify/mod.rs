@@ -9,11 +9,15 @@
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
 //!   standard deviations, condition number ([`singular`]);
+//! * [`consistent`]: the physically consistent estimate beside it, and [`description`]: the
+//!   description file rewritten with it;
 //! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others;
 //! * [`report`], [`figure`]: what is printed and drawn.
 
 pub mod base;
+pub mod consistent;
 pub mod decimate;
+pub mod description;
 pub mod estimate;
 pub mod figure;
 pub mod filter;

@@ -144,7 +144,7 @@ fn leaf(v: Var, offsets: &[f64], fields: &[f64]) -> Result<Leaf, String> {
 }
 
 /// The values of nodes that depend on the robot's fields only.
-fn constant_values(graph: &Graph, ids: &[NodeId], fields: &[f64]) -> Vec<f64> {
+pub fn constant_values(graph: &Graph, ids: &[NodeId], fields: &[f64]) -> Vec<f64> {
     let tape = Tape::new(graph, ids);
     let leaves: Vec<f64> = tape
         .leaves()

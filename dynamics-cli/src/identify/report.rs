@@ -1,5 +1,6 @@
 //! What `dynamics identify` prints: a table, or the same as JSON.
 
+use super::consistent::Consistent;
 use super::estimate::Estimate;
 use super::model::LinearModel;
 use super::predict::Prediction;
@@ -26,6 +27,8 @@ pub struct Report<'a> {
     pub units: Vec<&'static str>,
     pub linear: &'a LinearModel,
     pub estimate: &'a Estimate,
+    /// The consistent estimate and its standard parameters' names, if asked for.
+    pub consistent: Option<&'a (Consistent, Vec<String>)>,
     /// Other measurements' file and their torques predicted, if asked for.
     pub validation: Option<(&'a str, Prediction)>,
 }
@@ -55,7 +58,7 @@ impl Report<'_> {
         } else {
             "ordinary least squares (every joint fitted exactly: no weights)"
         };
-        let _ = writeln!(out, "method: {method}");
+        let _ = writeln!(out, "method: {method}{}", reweighted(e.reweighted));
         let _ = writeln!(
             out,
             "condition number of the weighted stacked regressor: {}\n",
@@ -92,6 +95,9 @@ impl Report<'_> {
             let unit = self.units[i];
             let _ = writeln!(out, "{:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}", i + 1);
         }
+        if let Some((c, names)) = self.consistent {
+            self.consistent_text(&mut out, c, names);
+        }
         if let Some((csv, p)) = &self.validation {
             let _ = writeln!(
                 out,
@@ -110,6 +116,73 @@ impl Report<'_> {
             }
         }
         out
+    }
+
+    /// The consistent estimate beside the plain one.
+    fn consistent_text(&self, out: &mut String, c: &Consistent, names: &[String]) {
+        let e = self.estimate;
+        let _ = writeln!(
+            out,
+            "\nphysically consistent estimate: {CONSISTENT} ({} rounds of cuts)",
+            c.rounds
+        );
+        let verdict = if c.plain_is_consistent { "yes" } else { "no" };
+        let _ = writeln!(
+            out,
+            "the plain estimate is consistent: {verdict} (weighted squared residual: plain {:.6e}, \
+             consistent {:.6e})",
+            c.plain_residual, c.residual
+        );
+        let _ = writeln!(
+            out,
+            "{:<10} {:>14} {:>14}",
+            "parameter", "consistent", "plain"
+        );
+        for (k, name) in self.linear.names.iter().enumerate() {
+            let plain = if e.values[k].is_nan() {
+                0.0
+            } else {
+                e.values[k]
+            };
+            let _ = writeln!(
+                out,
+                "{name:<10} {:>14.6e} {:>14.6e}",
+                unsigned_zero(c.base[k]),
+                unsigned_zero(plain)
+            );
+        }
+        let _ = writeln!(
+            out,
+            "\n{:>5} {:>12} {:>32} {:>14}",
+            "link", "mass", "centre of mass", "smallest eig J"
+        );
+        for (l, link) in c.links.iter().enumerate() {
+            let com: Vec<String> = link.com.iter().map(|x| format!("{x:+.4e}")).collect();
+            let _ = writeln!(
+                out,
+                "{:>5} {:>12.6e} {:>32} {:>14.3e}",
+                l + 1,
+                unsigned_zero(link.mass),
+                com.join(" "),
+                link.smallest_eigenvalue
+            );
+        }
+        let _ = writeln!(
+            out,
+            "\nstandard parameters (the links' about their frame's origin):"
+        );
+        for (name, value) in names.iter().zip(&c.standard) {
+            let _ = writeln!(out, "  {name:<6} {:>14.6e}", unsigned_zero(*value));
+        }
+        let _ = writeln!(
+            out,
+            "\n{:>5} {:>18} {:>18}",
+            "joint", "residual RMS plain", "consistent"
+        );
+        for (i, (p, r)) in e.rms.iter().zip(&c.rms).enumerate() {
+            let unit = self.units[i];
+            let _ = writeln!(out, "{:>5} {p:>14.3e} {unit:<3} {r:>14.3e} {unit}", i + 1);
+        }
     }
 
     /// Why parameter `u` is not identified.
@@ -182,11 +255,13 @@ impl Report<'_> {
             "model": self.model,
             "springs_subtracted": self.springs,
             "method": if e.weighted { "weighted least squares" } else { "ordinary least squares" },
+            "weights_reestimated": e.reweighted,
             "condition_number": e.condition,
             "tolerance": self.tolerance,
             "parameters": parameters,
             "unidentifiable": unidentifiable,
             "joints": joints,
+            "consistent": self.consistent.map(|(c, names)| consistent_json(c, names, names_of(self.linear))),
             "validation": self.validation.as_ref().map(|(csv, p)| json!({
                 "csv": csv,
                 "samples": p.samples,
@@ -196,6 +271,56 @@ impl Report<'_> {
             })),
         });
         format!("{report:#}\n")
+    }
+}
+
+/// What the consistent estimate is.
+const CONSISTENT: &str = "every link's pseudo-inertia J = [[½ tr(I) 1 − I, m c], [m cᵀ, m]] \
+                          positive semidefinite, actuator inertia, viscous and Coulomb friction \
+                          nonnegative, minimising the weighted residual plus 10⁻⁸ (relative) \
+                          times the squared distance to the description's standard parameters";
+
+fn names_of(linear: &LinearModel) -> &[String] {
+    &linear.names
+}
+
+/// The consistent estimate as JSON.
+fn consistent_json(c: &Consistent, standard: &[String], base: &[String]) -> Value {
+    let links: Vec<Value> = c
+        .links
+        .iter()
+        .map(|l| {
+            let com = l
+                .com
+                .iter()
+                .map(|x| x.is_finite().then_some(*x))
+                .collect::<Vec<_>>();
+            json!({ "mass": l.mass, "com": com, "smallest_eigenvalue": l.smallest_eigenvalue })
+        })
+        .collect();
+    json!({
+        "method": CONSISTENT,
+        "rounds": c.rounds,
+        "plain_is_consistent": c.plain_is_consistent,
+        "plain_weighted_residual": c.plain_residual,
+        "weighted_residual": c.residual,
+        "parameters": base.iter().zip(&c.base)
+            .map(|(n, v)| json!({ "name": n, "estimate": unsigned_zero(*v) }))
+            .collect::<Vec<Value>>(),
+        "standard": standard.iter().zip(&c.standard)
+            .map(|(n, v)| json!({ "name": n, "value": unsigned_zero(*v) }))
+            .collect::<Vec<Value>>(),
+        "links": links,
+        "residual_rms": c.rms,
+    })
+}
+
+/// `; σ_i re-estimated k times …` when the weights were iterated.
+fn reweighted(times: usize) -> String {
+    match times {
+        0 => String::new(),
+        1 => "; σ_i re-estimated once from the weighted fit's residuals".into(),
+        _ => format!("; σ_i re-estimated {times} times from the weighted fit's residuals"),
     }
 }
 

@@ -73,6 +73,11 @@ fn arm_file() -> String {
     path.to_string_lossy().into_owned()
 }
 
+/// The arm's description, as text.
+pub fn arm_text() -> &'static str {
+    ARM
+}
+
 pub fn arm() -> Robot {
     dynamics_codegen::front::load("arm4.toml", ARM)
         .expect("the test robot reads")
