@@ -1,6 +1,8 @@
 //! The command line, declared for clap: every subcommand, option and help text.
 
 use clap::{Args, Parser, Subcommand};
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{Family, FamilySet};
 use std::str::FromStr;
 
@@ -35,6 +37,12 @@ pub enum Command {
     Size(Size),
     /// Integrate the forward dynamics (RK4) from an initial state, under constant torques
     Simulate(Simulate),
+    /// Estimate the robot's inertial (and joint) parameters from measured motions and torques,
+    /// by weighted least squares, with their standard deviations
+    Identify(Identify),
+    /// Write a periodic exciting trajectory (a Fourier series per joint, within the joints'
+    /// limits) that keeps the condition number of the base parameters' regressor low
+    Excite(Excite),
 }
 
 #[derive(Args, Debug)]
@@ -136,8 +144,46 @@ pub struct Inspect {
     #[arg(long)]
     pub latex: bool,
     /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
-    #[arg(long)]
+    #[arg(long, conflicts_with = "base_parameters")]
     pub kinematics: bool,
+    /// The base parameters instead of the equations of motion: the combinations of the
+    /// standard parameters that the joint torques determine
+    #[arg(long)]
+    pub base_parameters: bool,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+}
+
+/// Which of the joints' own parameters take part in the base parameters, beside the links'.
+#[derive(Args, Debug)]
+pub struct JointTerms {
+    /// Every joint's actuator (rotor) inertia [default: the joints whose description gives one]
+    #[arg(long)]
+    pub rotors: bool,
+    /// These friction coefficients of every joint: viscous, coulomb, offset (comma-separated)
+    /// [default: those of the joints whose description has friction]
+    #[arg(long, value_name = "TERM", value_delimiter = ',', value_parser = ["viscous", "coulomb", "offset"])]
+    pub friction: Vec<String>,
+}
+
+impl JointTerms {
+    /// Per joint, its description's parameters and those asked for.
+    pub fn columns(&self, robot: &Robot) -> Vec<JointColumns> {
+        let asked = |name: &str| self.friction.iter().any(|f| f == name);
+        robot
+            .joints
+            .iter()
+            .map(|joint| {
+                let described = JointColumns::described(joint);
+                JointColumns {
+                    actuator_inertia: described.actuator_inertia || self.rotors,
+                    viscous: described.viscous || asked("viscous"),
+                    coulomb: described.coulomb || asked("coulomb"),
+                    offset: described.offset || asked("offset"),
+                }
+            })
+            .collect()
+    }
 }
 
 #[derive(Args, Debug)]
@@ -234,6 +280,120 @@ pub struct Simulate {
     /// Write a plot of the joint positions and of the energy, as SVG
     #[arg(long, value_name = "FILE")]
     pub svg: Option<String>,
+}
+
+#[derive(Args, Debug)]
+pub struct Identify {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// The measurements: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
+    /// `qdd1,..,qddn`), then `tau1,..,taun`; then one sample per line, t strictly increasing
+    /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
+    #[arg(long, value_name = "FILE")]
+    pub csv: String,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+    /// Low-pass q at this frequency before q̇ and q̈ are taken (a 4th-order Butterworth filter
+    /// run forward and backward: zero phase), then τ and the regressor's columns alike, keeping
+    /// one sample in ⌊0.4 f_s / HZ⌋. Samples must be evenly spaced
+    #[arg(long, value_name = "HZ", value_parser = positive)]
+    pub cutoff: Option<f64>,
+    /// A parameter whose column of the regressor is, to this fraction of its norm, a
+    /// combination of the columns before it is named as not identifiable and not estimated
+    /// (estimated, noise in its estimate would be amplified about 1/FRACTION times)
+    #[arg(long, value_name = "FRACTION", default_value = "1e-4", value_parser = positive)]
+    pub tolerance: f64,
+    /// The value of a parameter of the robot (a struct field of the description); once for
+    /// each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write a plot of the measured and the predicted torque per joint, as SVG
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<String>,
+    /// Other measurements, as --csv, not used in the fit: their torques are predicted by the
+    /// estimate, and the error's RMS per joint printed (a validation)
+    #[arg(long, value_name = "FILE")]
+    pub validate: Option<String>,
+    /// Write a plot of the measured and the predicted torque of the --validate file, as SVG
+    #[arg(long, value_name = "FILE", requires = "validate")]
+    pub validate_plot: Option<String>,
+    /// Re-estimate each joint's σ_i from the weighted fit's residuals and fit again, until no
+    /// σ_i changes by 1 % (at most 10 times), instead of taking σ_i from the ordinary fit only
+    #[arg(long)]
+    pub iterate_weights: bool,
+    /// Also estimate physically consistent parameters: every link's pseudo-inertia positive
+    /// semidefinite (a mass distribution could have them), actuator inertia, viscous and Coulomb
+    /// friction nonnegative, fitting the measurements as well as such parameters can
+    #[arg(long)]
+    pub consistent: bool,
+    /// With --consistent and a TOML ROBOT: write the description with the consistent estimate's
+    /// masses, centres of mass, inertias and joint terms in place of its own, as TOML
+    #[arg(long, value_name = "FILE", requires = "consistent")]
+    pub description_out: Option<String>,
+    /// Print JSON instead of a table
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl Identify {
+    /// How many times the weights may be re-estimated (`--iterate-weights`).
+    #[must_use]
+    pub fn weight_iterations(&self) -> usize {
+        crate::identify::estimate::ITERATIONS * usize::from(self.iterate_weights)
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct Excite {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// The joint terms whose base parameters the motion is to excite, as `identify` takes them
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+    /// The period T of the motion, s (its base frequency is 1/T)
+    #[arg(long, value_name = "SECONDS", default_value = "10", value_parser = positive)]
+    pub period: f64,
+    /// The harmonics L of each joint's Fourier series (at least 2: the motion starts at rest)
+    #[arg(long, value_name = "L", default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=50))]
+    pub harmonics: u32,
+    /// The periods written
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub periods: u32,
+    /// Samples per second written, rounded to a whole number of samples per period
+    #[arg(long, value_name = "HZ", default_value = "100", value_parser = positive)]
+    pub rate: f64,
+    /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
+    /// a URDF's <limit lower>, else -π/2 rad or -0.1 m]
+    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
+    pub q_min: Option<Numbers>,
+    /// The joints' upper limits [default: a URDF's <limit upper>, else π/2 rad or 0.1 m]
+    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
+    pub q_max: Option<Numbers>,
+    /// The joints' speed limits (rad/s or m/s) [default: a URDF's <limit velocity>, else 1
+    /// rad/s or 0.2 m/s]
+    #[arg(long, value_name = "V1,V2,..")]
+    pub qd_max: Option<Numbers>,
+    /// The joints' acceleration limits (rad/s² or m/s²) [default: 5 rad/s² or 1 m/s²]
+    #[arg(long, value_name = "A1,A2,..")]
+    pub qdd_max: Option<Numbers>,
+    /// The seed of the search's random restarts: the same seed, the same trajectory
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// The condition numbers the search evaluates: a quarter on random restarts, the rest on
+    /// a compass search from the best
+    #[arg(long, value_name = "N", default_value_t = 3000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+    pub evaluations: u64,
+    /// The value of a parameter of the robot (a struct field of the description); once for
+    /// each of them
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<Setting>,
+    /// Write the trajectory (t,q..,qd..,qdd..) to FILE and print the report [default: the
+    /// trajectory on stdout, the report on stderr]
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<String>,
+    /// The report as JSON
+    #[arg(long)]
+    pub json: bool,
 }
 
 fn positive(text: &str) -> Result<f64, String> {

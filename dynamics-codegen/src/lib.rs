@@ -88,7 +88,20 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         )
     });
     let emit::Items { beside, within } = items;
+    // A family asked for that could not be traced: its error, and its methods unreachable.
+    let untraced = parsed.families.contains(Family::BaseParameters)
+        && !eq.families.contains(Family::BaseParameters);
+    let error = untraced.then(|| {
+        let message = "`base_parameters = true` needs the robot's lengths and angles as \
+                       numbers: the base parameters group the links' parameters by them, and \
+                       this robot takes some from struct fields (masses and inertias may be \
+                       fields)";
+        let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
+        let impls = emit::unreachable_family(input, eq.dof, &krate, Family::BaseParameters);
+        quote!(#error const _: () = { #impls };)
+    });
     quote! {
+        #error
         #beside
         const _: () = {
             #track

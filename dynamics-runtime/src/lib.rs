@@ -67,7 +67,9 @@ pub mod statics;
 mod trig;
 
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
-pub use crate::dynamics::{Dynamics, DynamicsDerivatives, DynamicsRegressor};
+pub use crate::dynamics::{
+    Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor,
+};
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::pose::Pose;
 pub use crate::real::Real;

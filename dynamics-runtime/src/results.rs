@@ -5,7 +5,8 @@
 // declare the traits' result types (`dynamics.rs`) and their nalgebra forms (`nalgebra.rs`);
 // `dynamics-codegen` reads the same file (a symlink, `include!`d) for the types it writes into
 // the derive's impls and modules. `T` is the scalar and `N` the number of joints wherever a
-// row is used; a type name other than `T`, `N`, `Result` and `Option` is the runtime's.
+// row is used, `B` the number of base parameters (in `DynamicsBaseParameters` only); a type name
+// other than `T`, `N`, `B`, `Result` and `Option` is the runtime's.
 //
 //     /// What the result is.
 //     matrix {
@@ -164,6 +165,42 @@ macro_rules! for_each_result {
                 nalgebra: [SVector<T, 10>; N],
                 to_nalgebra: |value| value.map(SVector::from),
                 rows: [[T; 10]; N],
+                from_rows: |value| value,
+            }
+            /// Per joint `i`, the columns of the base parameters, `B` of them.
+            base_columns {
+                variant: BaseColumns,
+                array: [[T; B]; N],
+                nalgebra: SMatrix<T, N, B>,
+                to_nalgebra: |value| SMatrix::from_fn(|i, j| value[i][j]),
+                rows: [[T; B]; N],
+                from_rows: |value| value,
+            }
+            /// Per base parameter, its coefficients on the links' standard parameters.
+            base_link_map {
+                variant: BaseLinkMap,
+                array: [[[T; 10]; N]; B],
+                nalgebra: [SMatrix<T, N, 10>; B],
+                to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
+                rows: [[[T; 10]; N]; B],
+                from_rows: |value| value,
+            }
+            /// Per base parameter, its coefficients on the joints' parameters.
+            base_joint_map {
+                variant: BaseJointMap,
+                array: [[[T; 4]; N]; B],
+                nalgebra: [SMatrix<T, N, 4>; B],
+                to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
+                rows: [[[T; 4]; N]; B],
+                from_rows: |value| value,
+            }
+            /// The `B` base parameters.
+            base_vector {
+                variant: BaseVector,
+                array: [T; B],
+                nalgebra: SVector<T, B>,
+                to_nalgebra: |value| SVector::from(value),
+                rows: [T; B],
                 from_rows: |value| value,
             }
         }

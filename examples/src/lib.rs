@@ -1,4 +1,7 @@
-//! Examples of dynamics-runtime; see the `[[example]]` targets. The robot they share:
+//! Examples of dynamics-runtime; see the `[[example]]` targets. The robot they share, and
+//! the identification examples' steps ([`identification`]):
+
+pub mod identification;
 
 use dynamics_runtime::Dynamics;
 

@@ -105,6 +105,22 @@ impl RobotSpec {
         }
     }
 
+    /// The same robot with other physically consistent inertial parameters and actuator
+    /// inertias, drawn from `uniform` (numbers in [0, 1)).
+    #[must_use]
+    pub fn with_inertials(&self, mut uniform: impl FnMut() -> f64) -> RobotSpec {
+        let mut robot = self.clone();
+        for j in &mut robot.joints {
+            j.mass = 0.1 + 5.0 * uniform();
+            j.com = [0; 3].map(|_| uniform() - 0.5);
+            let [a, b, c] = [0; 3].map(|_| 0.001 + 0.2 * uniform());
+            let quaternion = [0; 4].map(|_| 2.0 * uniform() - 1.0);
+            j.inertia = rotated_inertia([b + c, a + c, a + b], quaternion);
+            j.actuator_inertia = 0.5 * uniform();
+        }
+        robot
+    }
+
     pub fn reference(&self) -> dynamics_reference::Robot {
         use dynamics_reference as r;
         r::Robot {
@@ -255,16 +271,23 @@ pub fn joint() -> impl Strategy<Value = JointSpec> {
 }
 
 pub fn robot() -> impl Strategy<Value = RobotSpec> {
+    robot_of(1..=6)
+}
+
+/// A robot of `joints` joints.
+pub fn robot_of(joints: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = RobotSpec> {
     let convention = prop_oneof![Just(Convention::Standard), Just(Convention::Modified)];
     let gravity = prop_oneof![
         1 => Just([0.0, 0.0, -9.81]),
         1 => Just([0.0, -9.81, 0.0]),
         2 => proptest::array::uniform3(-10.0..10.0),
     ];
-    (convention, gravity, vec(joint(), 1..=6)).prop_map(|(convention, gravity, joints)| RobotSpec {
-        convention,
-        gravity,
-        joints,
+    (convention, gravity, vec(joint(), joints)).prop_map(|(convention, gravity, joints)| {
+        RobotSpec {
+            convention,
+            gravity,
+            joints,
+        }
     })
 }
 

@@ -112,7 +112,7 @@ fn evaluate(eq: &Equations, params: &[f64], q: &[f64], qd: &[f64], qdd: &[f64]) 
             // Nor torques: the forward dynamics print the motion with no torque applied.
             Var::Tau(_) => 0.0,
             // The regressor's placeholders are never in the equations it evaluates.
-            Var::Inertial(_) => 0.0,
+            Var::Inertial(_) | Var::Exact(_) => 0.0,
         }
     };
     // The angle offsets depend on parameters only: a first pass finds them.

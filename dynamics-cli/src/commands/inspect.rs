@@ -1,19 +1,33 @@
-//! `dynamics inspect ROBOT [--latex] [--kinematics]`: the equations of motion, or the hand pose
-//! and Jacobians, in the book's notation.
+//! `dynamics inspect ROBOT [--latex] [--kinematics | --base-parameters [--rotors]
+//! [--friction ..]]`: the equations of motion, the hand pose and Jacobians, or the base
+//! parameters, in the book's notation.
 
 use super::{load, Failure};
 use crate::args::Inspect;
 use dynamics_codegen::derive;
-use dynamics_codegen::inspect::{inspect, inspect_kinematics, Format, Limits};
+use dynamics_codegen::inspect::{
+    inspect, inspect_kinematics, render_base_parameters, Format, Limits,
+};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
-    let eq = derive(&robot);
+    let mut eq = derive(&robot);
     let format = if args.latex {
         Format::Latex
     } else {
         Format::Text
     };
+    if args.base_parameters {
+        let columns = args.joint_terms.columns(&robot);
+        let Some(base) = eq.base_parameters(&robot, &columns) else {
+            return Err(Failure::File(format!(
+                "{}: the base parameters need the robot's lengths and angles as numbers, not \
+                 struct fields",
+                args.robot.path
+            )));
+        };
+        return Ok(render_base_parameters(&robot.name, &base, format));
+    }
     let inspection = if args.kinematics {
         inspect_kinematics(&eq, &robot, Limits::UNBOUNDED)
     } else {

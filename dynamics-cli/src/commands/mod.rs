@@ -3,6 +3,8 @@
 
 mod emit;
 mod eval;
+mod excite;
+mod identify;
 mod inspect;
 mod simulate;
 mod size;
@@ -37,6 +39,8 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Eval(args) => eval::run(args),
         Command::Size(args) => size::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Identify(args) => identify::run(args),
+        Command::Excite(args) => excite::run(args),
     }
 }
 

@@ -74,9 +74,13 @@ fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Fai
             eprintln!("dynamics size: {path}: {reported}%");
         }
     };
+    let columns = trajectory::Columns {
+        joints: n,
+        torques: false,
+    };
     trajectory::read_csv(
         BufReader::new(file),
-        n,
+        columns,
         |s| sizer.push(s.t, &s.q, &s.qd, &s.qdd),
         progress,
     )

@@ -27,7 +27,9 @@ pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
     let mut depends = vec![Depends::Constants; eq.graph.len()];
     for (id, node) in eq.graph.nodes() {
         depends[id.index()] = match node {
-            Node::Var(Var::Param(_) | Var::Inertial(_)) | Node::Const(_) => Depends::Constants,
+            Node::Var(Var::Param(_) | Var::Inertial(_) | Var::Exact(_)) | Node::Const(_) => {
+                Depends::Constants
+            }
             Node::Var(Var::Q(_)) => Depends::Configuration,
             Node::Var(Var::Qd(_)) => Depends::Velocity,
             // A wrench or τ is read by its method alone, as late as q̈.

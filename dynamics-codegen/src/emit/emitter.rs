@@ -151,6 +151,7 @@ impl<'a> Emitter<'a> {
             Var::Wrench(k) => crate::symbolic::WRENCH[usize::from(k)].to_owned(),
             Var::Tau(i) => format!("tau{}", i + 1),
             Var::Inertial(k) => format!("pi{}_{}", k / 10 + 1, k % 10 + 1),
+            Var::Exact(k) => format!("constant{k}"),
         }))
     }
 

@@ -1,9 +1,9 @@
 //! The expansion of a derive that failed: its errors, plus an impl whose methods are
 //! unreachable, so that code calling them compiles and the user sees only the real errors.
 
-use super::impls::{joint_count, method, runtime_path, scalar_name, trait_impls, Joints};
+use super::impls::{method, runtime_path, scalar_name, trait_impls, Sizes};
 use crate::front;
-use crate::method::Method;
+use crate::method::{Family, Method};
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -13,21 +13,46 @@ use quote::quote;
 /// URDF does not have).
 pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let errors = failure.error.to_compile_error();
-    let joints = failure.dof.map_or(Joints::Any, Joints::Known);
-    let n = &joint_count(&joints, &input.generics);
+    let sizes = Sizes {
+        joints: failure.dof,
+        base: None,
+    };
     let krate = runtime_path(failure.krate.as_ref());
-    let body = quote!(::core::unreachable!("the Dynamics derive failed"));
-    let t = scalar_name(&input.generics);
-    let fns = Method::ALL
-        .iter()
-        .copied()
-        .filter(|&m| failure.families.has(m));
-    let fns = fns.map(|m| (m, method(m, n, &krate, &t, &body)));
-    let impls = trait_impls(&krate, &joints, &input.ident, &input.generics, fns);
+    let impls = unreachable_impls(input, &sizes, &krate, |m| failure.families.has(m));
     quote! {
         #errors
         const _: () = {
             #impls
         };
     }
+}
+
+/// The impls of `family`'s methods for a robot of `joints` joints, unreachable: beside the error
+/// of a family the derive could not trace.
+pub(crate) fn unreachable_family(
+    input: &syn::DeriveInput,
+    joints: usize,
+    krate: &TokenStream,
+    family: Family,
+) -> TokenStream {
+    let sizes = Sizes {
+        joints: Some(joints),
+        base: None,
+    };
+    unreachable_impls(input, &sizes, krate, |m| m.family() == family)
+}
+
+/// The impls of the methods `wanted`, unreachable.
+fn unreachable_impls(
+    input: &syn::DeriveInput,
+    sizes: &Sizes,
+    krate: &TokenStream,
+    wanted: impl Fn(Method) -> bool,
+) -> TokenStream {
+    let counts = &sizes.counts(&input.generics);
+    let body = quote!(::core::unreachable!("the Dynamics derive failed"));
+    let t = scalar_name(&input.generics);
+    let fns = Method::ALL.iter().copied().filter(|&m| wanted(m));
+    let fns = fns.map(|m| (m, method(m, counts, krate, &t, &body)));
+    trait_impls(krate, sizes, &input.ident, &input.generics, fns)
 }

@@ -36,13 +36,36 @@ fn unused_name(generics: &syn::Generics, names: &[&str], prefix: &str) -> Ident 
     Ident::new(&name, Span::call_site())
 }
 
-/// The number of joints the traits are implemented for.
-pub(super) enum Joints {
-    /// The robot's.
-    Known(usize),
-    /// Any: a const parameter of the impls, where a derive failed before it could read the
-    /// number, so that calls to the trait still compile and report nothing of their own.
-    Any,
+/// The counts a derive's types are written with: the number of joints (`N`) and of base
+/// parameters (`B`), each a literal or a const parameter of the impls.
+pub struct Counts {
+    pub joints: TokenStream,
+    pub base: TokenStream,
+}
+
+/// The counts the traits are implemented for: the robot's, or, where a derive failed before it
+/// could read one (the number of joints of a missing file; the base parameters, always), any:
+/// a const parameter of the impls, so that calls to the traits still compile and report
+/// nothing of their own.
+pub(super) struct Sizes {
+    pub joints: Option<usize>,
+    pub base: Option<usize>,
+}
+
+impl Sizes {
+    /// The counts as the impls write them: literals (`6usize`), or the names of the const
+    /// parameters, which the struct's generics do not take.
+    pub(super) fn counts(&self, generics: &syn::Generics) -> Counts {
+        let joints = match self.joints {
+            Some(n) => quote!(#n),
+            None => unused_name(generics, &["N", "J"], "N").into_token_stream(),
+        };
+        let base = match self.base {
+            Some(b) => quote!(#b),
+            None => unused_name(generics, &["B", "K"], "B").into_token_stream(),
+        };
+        Counts { joints, base }
+    }
 }
 
 /// One method of the `Dynamics` impl with the given body, its scalar type parameter named
@@ -50,12 +73,12 @@ pub(super) enum Joints {
 #[must_use]
 pub fn method(
     method: Method,
-    n: &TokenStream,
+    counts: &Counts,
     krate: &TokenStream,
     scalar: &Ident,
     body: &TokenStream,
 ) -> TokenStream {
-    let (args, ret) = signature(method, n, scalar, krate, false);
+    let (args, ret) = signature(method, counts, scalar, krate, false);
     let name = Ident::new(method.name(), Span::call_site());
     quote! {
         #[inline]
@@ -67,56 +90,54 @@ pub fn method(
 }
 
 /// `impl Trait<N> for Type { … }` for each runtime trait that `methods` (a method and its item)
-/// implement: `Dynamics`, then `DynamicsDerivatives` where the robot has its methods. With
-/// [`Joints::Any`], the impls take the number of joints as a const parameter, named by
-/// [`joint_count`], which the methods' items must use.
+/// implement: `Dynamics`, then each opt-in family's trait where the robot has its methods
+/// (`Trait<N, B>` for a trait with a count of its own). A count that [`Sizes`] does not know is
+/// a const parameter of the impls, named as [`Sizes::counts`] names it, which the methods' items
+/// must use.
 pub(super) fn trait_impls(
     krate: &TokenStream,
-    joints: &Joints,
+    sizes: &Sizes,
     ident: &syn::Ident,
     generics: &syn::Generics,
     methods: impl Iterator<Item = (Method, TokenStream)>,
 ) -> TokenStream {
     let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
-    let n = joint_count(joints, generics);
-    let impl_generics = match joints {
-        Joints::Known(_) => impl_generics.into_token_stream(),
-        Joints::Any => {
-            // The struct's parameters as an impl writes them (no defaults), and `const N`.
-            let mut with_n: syn::Generics =
-                syn::parse2(impl_generics.into_token_stream()).unwrap_or_default();
-            with_n.params.push(syn::parse_quote!(const #n: usize));
-            with_n.into_token_stream()
-        }
-    };
+    let Counts { joints: n, base } = sizes.counts(generics);
     let methods: Vec<(Method, TokenStream)> = methods.collect();
-    let mut traits: Vec<&str> = Family::ALL.iter().map(|f| f.trait_name()).collect();
-    traits.dedup();
-    let impls = traits.into_iter().filter_map(|name| {
+    let mut families: Vec<Family> = Family::ALL.to_vec();
+    families.dedup_by_key(|f| f.trait_name());
+    let impls = families.into_iter().filter_map(|family| {
+        let name = family.trait_name();
         let fns = methods
             .iter()
             .filter(|(m, _)| m.family().trait_name() == name);
         let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
+        let has_count = family.count_parameter().is_some();
+        // The struct's parameters as an impl writes them (no defaults), and the counts not known.
+        let mut params: syn::Generics =
+            syn::parse2(impl_generics.to_token_stream()).unwrap_or_default();
+        if sizes.joints.is_none() {
+            params.params.push(syn::parse_quote!(const #n: usize));
+        }
+        if has_count && sizes.base.is_none() {
+            params.params.push(syn::parse_quote!(const #base: usize));
+        }
+        let counts = if has_count {
+            quote!(#n, #base)
+        } else {
+            quote!(#n)
+        };
         let name = Ident::new(name, Span::call_site());
         (!fns.is_empty()).then(|| {
             quote! {
                 #[automatically_derived]
-                impl #impl_generics #krate::#name<#n> for #ident #ty_generics #where_clause {
+                impl #params #krate::#name<#counts> for #ident #ty_generics #where_clause {
                     #(#fns)*
                 }
             }
         })
     });
     quote!(#(#impls)*)
-}
-
-/// The number of joints as the impls write it: the robot's (`6usize`), or the const parameter
-/// of [`Joints::Any`], a name the struct's generics do not take.
-pub(super) fn joint_count(joints: &Joints, generics: &syn::Generics) -> TokenStream {
-    match joints {
-        Joints::Known(n) => quote!(#n),
-        Joints::Any => unused_name(generics, &["N", "J"], "N").into_token_stream(),
-    }
 }
 
 /// The local an argument is bound to in generated code: `q_`, `qd_`, `qdd_`.
@@ -129,11 +150,12 @@ pub(super) fn argument_local(argument: Argument) -> Ident {
 /// a result through the LDLᵀ of M as an `Option`, the derivatives' structs as arrays).
 pub(super) fn signature(
     method: Method,
-    n: &TokenStream,
+    counts: &Counts,
     t: &Ident,
     krate: &TokenStream,
     rows: bool,
 ) -> (TokenStream, TokenStream) {
+    let n = &counts.joints;
     let arguments = method.arguments().iter().map(|&a| {
         let name = argument_local(a);
         match a {
@@ -144,6 +166,7 @@ pub(super) fn signature(
     let at = Instance {
         scalar: t,
         n,
+        base: &counts.base,
         krate,
     };
     let result = if rows {
@@ -160,13 +183,14 @@ pub(super) fn signature(
 pub(super) fn forward(
     method: Method,
     call: TokenStream,
-    n: &TokenStream,
+    counts: &Counts,
     t: &Ident,
     krate: &TokenStream,
 ) -> TokenStream {
     let at = Instance {
         scalar: t,
-        n,
+        n: &counts.joints,
+        base: &counts.base,
         krate,
     };
     method.returns().convert_rows(call, &at)

@@ -2,7 +2,7 @@
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
-use super::impls::{trait_impls, Joints};
+use super::impls::{trait_impls, Counts, Sizes};
 use super::names::PARAMETERS;
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
 use super::parts::{Context, OpCount, Output, Shared};
@@ -29,6 +29,8 @@ pub struct MethodCode {
 pub struct Generated {
     /// Number of joints.
     pub dof: usize,
+    /// Number of base parameters (zero unless the robot asked for them).
+    pub base_count: usize,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
     /// The shared functions of each [`Family`] of methods, in the order of [`Family::ALL`]:
@@ -134,6 +136,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     methods.sort_by_key(|m| m.method);
     Generated {
         dof: eq.dof,
+        base_count: eq.base_parameters.as_ref().map_or(0, |b| b.values.len()),
         fields,
         modules,
         methods,
@@ -141,6 +144,15 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
 }
 
 impl Generated {
+    /// The counts its types are written with.
+    fn counts(&self) -> Counts {
+        let (dof, base) = (self.dof, self.base_count);
+        Counts {
+            joints: quote!(#dof),
+            base: quote!(#base),
+        }
+    }
+
     /// The items for the robot type `ident`, most to go in a `const _: () = { … };` block:
     ///
     /// * a module `__dynamics` holding the configuration struct and function and one function
@@ -162,8 +174,7 @@ impl Generated {
         generics: &syn::Generics,
         docs: &dyn Fn(Method) -> Option<String>,
     ) -> Items {
-        let dof = self.dof;
-        let n = &quote!(#dof);
+        let counts = &self.counts();
         let k = self.fields.len();
         let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
         let t = scalar_name(generics);
@@ -176,14 +187,14 @@ impl Generated {
         let (beside, modules) = (beside.iter().map(module), within.iter().map(module));
         let fns = self.methods.iter().map(|m| {
             let name = Ident::new(m.name, Span::call_site());
-            let (args, ret) = signature(m.method, n, &t, krate, false);
+            let (args, ret) = signature(m.method, counts, &t, krate, false);
             let pass = call_arguments(m.method);
             let module = module_name(m.method.family(), ident);
             let call = quote!(#module::#name(&self.#parameters(), #pass));
             let call = if m.method.is_compiled_apart() {
                 call
             } else {
-                forward(m.method, call, n, &t, krate)
+                forward(m.method, call, counts, &t, krate)
             };
             let f = quote! {
                 #[inline]
@@ -197,7 +208,11 @@ impl Generated {
             };
             (m.method, f)
         });
-        let impls = trait_impls(krate, &Joints::Known(self.dof), ident, generics, fns);
+        let known = Sizes {
+            joints: Some(self.dof),
+            base: Some(self.base_count),
+        };
+        let impls = trait_impls(krate, &known, ident, generics, fns);
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
         let within = quote! {
@@ -223,8 +238,8 @@ impl Generated {
     /// The module of one family's functions: the shared functions and one function per
     /// method.
     fn module(&self, module: &Module, krate: &TokenStream, ident: &syn::Ident) -> TokenStream {
-        let (dof, k) = (self.dof, self.fields.len());
-        let n = &quote!(#dof);
+        let k = self.fields.len();
+        let counts = &self.counts();
         let p = local(PARAMETERS);
         let (configuration, motion) = (module.configuration.as_ref(), module.motion.as_ref());
         let configuration_item = self.configuration_item(configuration, krate);
@@ -241,11 +256,11 @@ impl Generated {
             // written: converted after the call, the result would be copied, and the copy's
             // wide loads of values just stored one by one would wait for the stores.
             let apart = m.method.is_compiled_apart();
-            let (args, ret) = signature(m.method, n, &scalar, krate, !apart);
+            let (args, ret) = signature(m.method, counts, &scalar, krate, !apart);
             let (inline, body) = if apart {
                 (
                     quote!(#[inline(never)]),
-                    forward(m.method, quote!(({ #body })), n, &scalar, krate),
+                    forward(m.method, quote!(({ #body })), counts, &scalar, krate),
                 )
             } else {
                 (quote!(#[inline(always)]), quote!(#body))

@@ -57,9 +57,9 @@ mod sum_order;
 
 pub use count::count;
 pub(crate) use equations::readable;
-pub(crate) use fallback::fallback;
-pub use impls::method;
+pub(crate) use fallback::{fallback, unreachable_family};
 pub(crate) use impls::runtime_path;
+pub use impls::{method, Counts};
 pub use items::{generate, Generated, Items, MethodCode, Module};
 pub use names::{
     local, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT,

@@ -19,6 +19,7 @@
 //! them.
 
 mod arrange;
+mod base_parameters;
 mod expand;
 mod fold;
 mod label;
@@ -33,6 +34,7 @@ mod symbol;
 #[cfg(test)]
 mod tests;
 
+pub use base_parameters::render_base_parameters;
 pub use expand::Limits;
 pub use monomial::Monomial;
 pub use poly::Poly;

@@ -109,6 +109,7 @@ impl Sym {
             Var::Wrench(k) => Sym::Param((*WRENCH.get(usize::from(k))?).to_owned()),
             Var::Tau(i) => Sym::Param(format!("T{}", i + 1)),
             Var::Inertial(k) => Sym::Param(format!("pi{}_{}", k / 10 + 1, k % 10 + 1)),
+            Var::Exact(k) => Sym::Param(format!("constant{k}")),
         })
     }
 

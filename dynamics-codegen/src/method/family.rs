@@ -90,7 +90,10 @@ mod tests {
             assert!(default.with(f).contains(f));
             assert_eq!(Family::from_name(f.name()), Some(f));
         }
-        assert_eq!(Family::opt_in_names(), ["derivatives", "regressor"]);
+        assert_eq!(
+            Family::opt_in_names(),
+            ["derivatives", "regressor", "base_parameters"]
+        );
         assert_eq!(default.opt_in().count(), 0);
         let asked = default.with(Family::Derivatives);
         assert_eq!(asked.opt_in().collect::<Vec<_>>(), [Family::Derivatives]);

@@ -71,7 +71,7 @@ macro_rules! argument {
 macro_rules! declare_method {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident {
+        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $family_doc:literal])*
@@ -124,6 +124,16 @@ macro_rules! declare_method {
             }
 
             /// Whether the derive writes it only for a robot that asks for it.
+            /// The name of its trait's second const parameter, a count of its own (the base
+            /// parameters' `B`), if it has one.
+            #[must_use]
+            pub fn count_parameter(self) -> Option<&'static str> {
+                match self.trait_name() {
+                    $(name if name == stringify!($trait) => None $(.or(Some(stringify!($count))))?,)*
+                    _ => None,
+                }
+            }
+
             #[must_use]
             pub fn is_opt_in(self) -> bool {
                 match self { $($(Family::$family => $opt_in,)*)* }
@@ -320,6 +330,9 @@ mod tests {
                 Method::JointRegressor,
                 Method::JointParameters,
                 Method::StandardParameters,
+                Method::BaseParameters,
+                Method::BaseFromStandard,
+                Method::BaseFromJoints,
             ];
             assert_eq!(reads_q, !without_q.contains(&m), "{m:?}");
             let template = [m.element_template(false), m.element_template(true)];

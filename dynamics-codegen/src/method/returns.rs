@@ -57,6 +57,8 @@ pub struct Instance<'a> {
     pub scalar: &'a Ident,
     /// The number of joints: a literal (`6usize`), or a const parameter.
     pub n: &'a TokenStream,
+    /// The number of base parameters, likewise (read by `DynamicsBaseParameters` only).
+    pub base: &'a TokenStream,
     /// The runtime crate's path.
     pub krate: &'a TokenStream,
 }
@@ -87,7 +89,8 @@ impl Returns {
 }
 
 impl Instance<'_> {
-    /// `tokens` with `T` the scalar, `N` the number of joints, `value` the given tokens,
+    /// `tokens` with `T` the scalar, `N` the number of joints, `B` the number of base
+    /// parameters, `value` the given tokens,
     /// `Result` and `Option` core's, and every other type name the runtime's.
     fn instantiate(&self, tokens: TokenStream, value: Option<&TokenStream>) -> TokenStream {
         let mut out = TokenStream::new();
@@ -113,6 +116,7 @@ impl Instance<'_> {
         match ident.to_string().as_str() {
             "T" => TokenTree::Ident(self.scalar.clone()).into(),
             "N" => self.n.clone(),
+            "B" => self.base.clone(),
             "value" => value.cloned().unwrap_or_else(|| quote!(#ident)),
             "Result" => quote!(::core::result::Result),
             "Option" => quote!(::core::option::Option),

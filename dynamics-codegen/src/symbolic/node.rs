@@ -43,6 +43,10 @@ pub enum Var {
     /// Standard inertial parameter `k % 10` of link `k / 10`: a placeholder of the regressor's
     /// trace, replaced by 0 or 1 for each of its columns and never emitted.
     Inertial(u16),
+    /// Constant `k` of the description (a number, or the sine or cosine of an angle), as a
+    /// leaf: in the base parameters' exact analysis only, which has its value in `ℤ/p`, so that
+    /// no product of constants is folded into a float. Never emitted.
+    Exact(u16),
 }
 
 /// The names of a wrench's components, [`Var::Wrench`]`(k)` for `k` from 0.

@@ -23,6 +23,7 @@
 //! takes the fewest operations is kept (`cost`). Node ids follow the order in which the
 //! graph is built, and the emitted code follows node ids: the steps run in a fixed order.
 
+pub mod base_parameters;
 mod coriolis;
 mod cost;
 mod derivatives;
@@ -43,6 +44,7 @@ use crate::algo::{JointKind, RobotScalars};
 use crate::method::{Family, FamilySet};
 use crate::model::Robot;
 use crate::symbolic::{Graph, NodeId, Number};
+use base_parameters::{BaseParameters, JointColumns};
 use cost::matrix_ids;
 pub use derivatives::DerivativeEquations;
 pub use expr::Expr;
@@ -101,6 +103,9 @@ pub struct Equations {
     /// The joint torque regressor and the standard parameters, where asked for
     /// ([`Equations::add_regressor`]).
     pub regressor: Option<RegressorEquations>,
+    /// The base parameters of the joint parameters the description gives, where asked for
+    /// and the geometry is numbers ([`Equations::base_parameters`]).
+    pub base_parameters: Option<BaseParameters>,
 }
 
 impl Equations {
@@ -115,6 +120,18 @@ impl Equations {
             match family {
                 Family::Derivatives => self.add_derivatives(),
                 Family::Regressor => self.add_regressor(robot),
+                Family::BaseParameters => {
+                    let joints: Vec<JointColumns> =
+                        robot.joints.iter().map(JointColumns::described).collect();
+                    // The regressor it traces is not emitted unless it was asked for too; the
+                    // family is traced only where the geometry is numbers.
+                    let asked = self.families;
+                    self.base_parameters = self.base_parameters(robot, &joints);
+                    self.families = match self.base_parameters {
+                        Some(_) => asked.with(Family::BaseParameters),
+                        None => asked,
+                    };
+                }
                 Family::Dynamics | Family::Kinematics | Family::Forward => {}
             }
         }
@@ -171,5 +188,6 @@ pub fn derive(robot: &Robot) -> Equations {
         families: FamilySet::default(),
         derivatives: None,
         regressor: None,
+        base_parameters: None,
     }
 }

@@ -117,6 +117,18 @@ impl Method {
             Method::StandardParameters => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.parameters))
             }
+            Method::BaseRegressor => {
+                Shape::Matrix(eq.base_parameters.as_ref().map_or(&[], |b| &b.regressor))
+            }
+            Method::BaseParameters => {
+                Shape::Vector(eq.base_parameters.as_ref().map_or(&[], |b| &b.values))
+            }
+            Method::BaseFromStandard => {
+                Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.link_map))
+            }
+            Method::BaseFromJoints => {
+                Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
+            }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),

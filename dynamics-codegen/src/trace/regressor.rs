@@ -27,6 +27,7 @@ use super::Equations;
 use crate::algo::{self, Body, LinkFrame, Mat3, RobotScalars, Scalar, V3};
 use crate::method::Family;
 use crate::model::{Convention, Joint, Pose, Robot};
+use crate::symbolic::modular::Fp;
 use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
@@ -53,22 +54,14 @@ impl Equations {
         let graph = RefCell::new(std::mem::take(&mut self.graph));
         let fields = self.fields.clone();
         let mut tracer = Tracer::new(&graph, &fields, robot);
-        let candidates = placeholder_taus(&mut tracer, robot);
+        let candidates = placeholder_taus(&mut tracer, robot, true);
         let parameters = robot
             .joints
             .iter()
             .map(|joint| ids(&link_parameters(&tracer, joint)))
             .collect();
         let (joint_columns, joint_parameters) = joint_terms(&tracer, robot);
-        let columns = {
-            let mut g = graph.borrow_mut();
-            let candidates: Vec<_> = candidates.iter().map(|tau| columns(&mut g, tau)).collect();
-            let mut candidates = candidates.into_iter();
-            let first = candidates.next().unwrap_or_default();
-            cost::cheapest(&g, first, candidates, |c| {
-                c.iter().flatten().flatten().copied().collect()
-            })
-        };
+        let columns = cheapest_columns(&mut graph.borrow_mut(), &candidates);
         self.graph = graph.into_inner();
         self.regressor = Some(RegressorEquations {
             columns,
@@ -80,9 +73,45 @@ impl Equations {
     }
 }
 
-/// τ of the rigid bodies, each link's body made of its placeholders, each way the module
-/// describes.
-fn placeholder_taus(tracer: &mut Tracer<'_>, robot: &Robot) -> [Vec<NodeId>; 2] {
+/// The regressor's columns and joint columns alone, traced into a graph of their own with the
+/// description's constants as leaves ([`Tracer::with_exact_leaves`]), and those leaves' values.
+pub(super) fn exact_columns(robot: &Robot) -> ExactColumns {
+    let graph = RefCell::new(Graph::new());
+    let fields = robot.fields();
+    let mut tracer = Tracer::new(&graph, &fields, robot).with_exact_leaves();
+    // The bodies carried into the joint frames only: carrying a body changes π's coordinates,
+    // which keeps the columns' relations, where the rates carried into the link frames would
+    // need a link pose's turn to be exactly orthogonal, as its entries as leaves are not.
+    let tau = placeholder_taus(&mut tracer, robot, false).swap_remove(0);
+    let (joint_columns, _) = joint_terms(&tracer, robot);
+    let leaves = tracer.exact_leaf_values();
+    let columns = columns(&mut graph.borrow_mut(), &tau);
+    ExactColumns {
+        graph: graph.into_inner(),
+        columns,
+        joint_columns,
+        leaves,
+    }
+}
+
+/// What [`exact_columns`] traces.
+pub(super) struct ExactColumns {
+    pub graph: Graph,
+    /// As [`RegressorEquations::columns`].
+    pub columns: Vec<Vec<Vec<NodeId>>>,
+    /// As [`RegressorEquations::joint_columns`].
+    pub joint_columns: Vec<Vec<NodeId>>,
+    /// The value of leaf [`Var::Exact`]`(k)`.
+    pub leaves: Vec<Fp>,
+}
+
+/// τ of the rigid bodies, each link's body made of its placeholders: the bodies carried into
+/// the joint frames and regrouped, then, `with_link_frames`, the bodies left in the link frames.
+fn placeholder_taus(
+    tracer: &mut Tracer<'_>,
+    robot: &Robot,
+    with_link_frames: bool,
+) -> Vec<Vec<NodeId>> {
     let mut in_joint_frames = tracer.chain(robot);
     let mut in_link_frames = in_joint_frames.clone();
     let mut frames = Vec::with_capacity(robot.dof());
@@ -110,11 +139,13 @@ fn placeholder_taus(tracer: &mut Tracer<'_>, robot: &Robot) -> [Vec<NodeId>; 2] 
     let qd = tracer.joint_vars(n, Var::Qd);
     let qdd = tracer.joint_vars(n, Var::Qdd);
     let gravity = tracer.gravity(robot);
+    let regrouped = in_joint_frames.regrouped();
     let tau = |chain, frames| ids(&algo::projected_torques(chain, frames, &qd, &qdd, gravity));
-    [
-        tau(&in_joint_frames.regrouped(), None),
-        tau(&in_link_frames, Some(&frames)),
-    ]
+    let mut taus = vec![tau(&regrouped, None)];
+    if with_link_frames {
+        taus.push(tau(&in_link_frames, Some(&frames)));
+    }
+    taus
 }
 
 /// `π` of link `joint`, about the origin of its link frame, in its axes: the description's
@@ -184,6 +215,17 @@ fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
         h: V3::new(mx, my, mz),
         inertia: [ixx, iyy, izz, ixy, ixz, iyz],
     }
+}
+
+/// Of the columns of each way of tracing τ ([`placeholder_taus`]), those that take the fewest
+/// operations.
+fn cheapest_columns(g: &mut Graph, candidates: &[Vec<NodeId>]) -> Vec<Vec<Vec<NodeId>>> {
+    let candidates: Vec<_> = candidates.iter().map(|tau| columns(g, tau)).collect();
+    let mut candidates = candidates.into_iter();
+    let first = candidates.next().unwrap_or_default();
+    cost::cheapest(g, first, candidates, |c| {
+        c.iter().flatten().flatten().copied().collect()
+    })
 }
 
 /// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0.

@@ -6,6 +6,7 @@
 use super::expr::Expr;
 use crate::algo::RobotScalars;
 use crate::model::{Robot, Value};
+use crate::symbolic::modular::Fp;
 use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 use std::ops::Mul;
@@ -16,6 +17,9 @@ pub(super) struct Tracer<'g> {
     fields: &'g [String],
     /// Per revolute joint whose θ offset is not a quarter turn: the offset's node.
     angle_offsets: Vec<Option<NodeId>>,
+    /// Where the description's constants are traced as leaves [`Var::Exact`] (for the base
+    /// parameters' exact analysis): their values in `ℤ/p`, by leaf index.
+    exact_leaves: Option<RefCell<Vec<Fp>>>,
 }
 
 /// The index of joint `i` in a [`Var`].
@@ -30,7 +34,33 @@ impl<'g> Tracer<'g> {
             graph,
             fields,
             angle_offsets: vec![None; robot.dof()],
+            exact_leaves: None,
         }
+    }
+
+    /// The same tracer, tracing the description's numbers other than 0 and ±1, and the sines
+    /// and cosines of its angles other than quarter turns, as leaves [`Var::Exact`]: exact in
+    /// `ℤ/p`, where the graph would fold their products into floats once the rationals
+    /// overflow, and where a float sine and cosine do not make `s² + c² = 1`.
+    pub(super) fn with_exact_leaves(mut self) -> Self {
+        self.exact_leaves = Some(RefCell::new(Vec::new()));
+        self
+    }
+
+    /// The values of the leaves, by index.
+    pub(super) fn exact_leaf_values(&self) -> Vec<Fp> {
+        self.exact_leaves
+            .as_ref()
+            .map_or_else(Vec::new, |a| a.borrow().clone())
+    }
+
+    /// A leaf of value `x`, where the tracer has them.
+    fn exact_leaf(&self, x: Fp) -> Option<Expr<'g>> {
+        let mut leaves = self.exact_leaves.as_ref()?.borrow_mut();
+        let k = u16::try_from(leaves.len()).ok()?;
+        leaves.push(x);
+        drop(leaves);
+        Some(self.var(Var::Exact(k)))
     }
 
     /// The θ offsets recorded while tracing the chain (see [`super::Equations::angle_offsets`]).
@@ -86,7 +116,10 @@ impl<'g> RobotScalars for Tracer<'g> {
 
     fn value(&self, v: &Value) -> Expr<'g> {
         match v {
-            Value::Num(n) => self.num(*n),
+            Value::Num(n) if n.is_zero() || n.is_one() || n.is_minus_one() => self.num(*n),
+            Value::Num(n) => Fp::from_number(*n)
+                .and_then(|x| self.exact_leaf(x))
+                .unwrap_or_else(|| self.num(*n)),
             Value::Pi => self.num(Number::Float(std::f64::consts::PI)),
             Value::Field(f) => self.field(f),
             // The joint variable was split off by the front end; it never reaches here.
@@ -109,6 +142,14 @@ impl<'g> RobotScalars for Tracer<'g> {
     fn sin_cos(&self, v: &Value) -> (Expr<'g>, Expr<'g>) {
         if let Some((s, c)) = v.pi_multiple().and_then(exact_sin_cos) {
             return (self.num(s), self.num(c));
+        }
+        if self.exact_leaves.is_some() {
+            if let Some(angle) = v.eval(&|_| None) {
+                let (s, c) = rational_point(angle);
+                if let (Some(s), Some(c)) = (self.exact_leaf(s), self.exact_leaf(c)) {
+                    return (s, c);
+                }
+            }
         }
         let x = self.value(v);
         let mut g = self.graph.borrow_mut();
@@ -141,6 +182,21 @@ impl<'g> RobotScalars for Tracer<'g> {
                 (s, c)
             }
         }
+    }
+}
+
+/// `(sin θ', cos θ')` in `ℤ/p` of the angle θ' nearest θ whose `t = tan(θ'/2)` is a multiple
+/// of 2⁻³⁰: `(2t/(1+t²), (1−t²)/(1+t²))`, exactly on the unit circle.
+fn rational_point(angle: f64) -> (Fp, Fp) {
+    let scale = f64::from(1 << 30);
+    // Clamped far beyond any angle but ±π, whose sine and cosine the trace has exact.
+    let t = ((angle / 2.0).tan() * scale).round().clamp(-1e27, 1e27);
+    #[allow(clippy::cast_possible_truncation)]
+    let t = Fp::int(t as i128) * Fp::int(1 << 30).recip().unwrap_or(Fp::ONE);
+    let t2 = t * t;
+    match (Fp::ONE + t2).recip() {
+        Some(d) => ((t + t) * d, (Fp::ONE - t2) * d),
+        None => (Fp::ZERO, Fp::ONE),
     }
 }
 

@@ -2,14 +2,15 @@
 //! It builds only if generated code and the runtime (with `libm`) need nothing from std.
 #![no_std]
 
-use dynamics_runtime::{Dynamics, DynamicsDerivatives, DynamicsRegressor};
+use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
 
 /// A 6-joint robot with prismatic joints and products of inertia, from a description file.
 #[derive(Dynamics)]
 #[dynamics(
     file = "../data/reference/robots/random5.json",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Random5;
 
@@ -85,6 +86,25 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: u
         + regressor
         + parameters
         + joints
+}
+
+/// `Y_B π_B`'s first row, in single precision.
+#[must_use]
+pub fn base_torque_f32<R: DynamicsBaseParameters<N, B>, const N: usize, const B: usize>(
+    robot: &R,
+    q: &[f32; N],
+    qd: &[f32; N],
+    qdd: &[f32; N],
+) -> f32 {
+    let y = robot.base_regressor(q, qd, qdd);
+    let pi = robot.base_parameters::<f32>();
+    y[0].iter().zip(&pi).map(|(a, b)| a * b).sum()
+}
+
+/// Random5's, as the generic function runs it.
+#[must_use]
+pub fn base_torque_random5(q: &[f32; 6]) -> f32 {
+    base_torque_f32(&Random5, q, q, q)
 }
 
 /// Inverse dynamics of both robots in double precision, and the derivatives of one.

@@ -8,9 +8,11 @@
 //! `u_i` its unit `<axis>`), its link the rigid body of its child link and every link fixed to
 //! it, combined exactly (`inertial`), and its `<dynamics damping friction>` its viscous and
 //! Coulomb friction (`robot`). The robot is then lowered to its own modified D-H table, as
-//! every robot given by joint frames is.
+//! every robot given by joint frames is. The joints' `<limit>`s are read apart, for tools that
+//! plan motions (`limits`).
 
 mod inertial;
+mod limits;
 mod robot;
 mod tree;
 mod xml;
@@ -22,6 +24,8 @@ use super::errors::FileError;
 use super::sources::{Loaded, Positions};
 use crate::check::{Problem, MAX_JOINTS};
 use crate::model::{FrameProblem, Robot};
+pub use limits::joint_limits;
+pub use xml::Limit;
 
 /// Which chain of the URDF to take: the links it starts and ends at, by name.
 #[derive(Clone, Copy, Debug, Default)]

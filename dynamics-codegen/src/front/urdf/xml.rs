@@ -1,7 +1,8 @@
 //! The URDF document read into links and joints, every value exact (`0.4318` is 4318/10000)
 //! and every element with its 1-based line and column, so that later steps can point into the
 //! file. Only what the dynamics need is read: `<inertial>` of links, and of joints their type,
-//! parent, child, `<origin>`, `<axis>`, `<dynamics>` and `<mimic>`.
+//! parent, child, `<origin>`, `<axis>`, `<dynamics>` and `<mimic>`; and `<limit>`, for the
+//! trajectories a command line tool plans ([`super::joint_limits`]).
 
 use crate::front::errors::FileError;
 use crate::front::sources::At;
@@ -63,6 +64,18 @@ pub(super) struct Joint {
     pub friction: Option<(Value, At)>,
     /// Where `<mimic>` is, if the joint has one.
     pub mimic: Option<At>,
+    /// `<limit lower upper velocity>`, each where it is written.
+    pub limit: Limit,
+}
+
+/// A joint's `<limit>`: the attributes the file writes (`effort` is not read).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Limit {
+    /// The range of the joint variable (rad or m).
+    pub lower: Option<f64>,
+    pub upper: Option<f64>,
+    /// The largest speed (rad/s or m/s).
+    pub velocity: Option<f64>,
 }
 
 /// The `<robot>`: its name, links and joints in the file's order.
@@ -360,6 +373,7 @@ impl Reader<'_> {
             }
         };
         Ok(Joint {
+            limit: self.limit(node)?,
             origin: self.origin(node)?,
             damping: coefficient("damping")?,
             friction: coefficient("friction")?,
@@ -371,6 +385,25 @@ impl Reader<'_> {
             child,
             axis,
             axis_at,
+        })
+    }
+
+    /// The `<limit>` child of a joint, if any; a value that is not a number is an error at it.
+    fn limit(&self, node: Node) -> Result<Limit, FileError> {
+        let Some(limit) = Self::child(node, "limit") else {
+            return Ok(Limit::default());
+        };
+        let value = |key: &str| -> Result<Option<f64>, FileError> {
+            if !limit.has_attribute(key) {
+                return Ok(None);
+            }
+            let ([v], _) = self.numbers(limit, key, ["0"])?;
+            Ok(v.eval(&|_| None))
+        };
+        Ok(Limit {
+            lower: value("lower")?,
+            upper: value("upper")?,
+            velocity: value("velocity")?,
         })
     }
 }

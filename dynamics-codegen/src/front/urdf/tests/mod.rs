@@ -3,5 +3,6 @@
 
 mod derive;
 mod errors;
+mod limits;
 mod merging;
 mod robots;

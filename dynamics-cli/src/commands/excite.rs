@@ -1,0 +1,159 @@
+//! `dynamics excite ROBOT [--rotors] [--friction KINDS] [--period T] [--harmonics L]
+//! [--periods N] [--rate HZ] [--q-min ..] [--q-max ..] [--qd-max ..] [--qdd-max ..] [--seed S]
+//! [--evaluations N] [--set NAME=VALUE].. [--csv FILE] [--json]`: a periodic motion that excites
+//! the robot's base parameters, for `dynamics identify`.
+//!
+//! Per joint, a finite Fourier series at rest at t = 0 (`excite::fourier`), scaled to the
+//! largest motion within the joint's range, speed and acceleration limits; the coefficients
+//! searched (random restarts, then a compass search: `excite::search`) to minimise the
+//! condition number of the stacked base regressor `Y_B` over the period (`excite::condition`),
+//! with the same base parameters and joint terms as `identify` (`--rotors`, `--friction`).
+//!
+//! The trajectory is written as `t,q1..qn,qd1..qdn,qdd1..qddn`, the derivatives exact (the
+//! series' own), the file a controller replays and `identify` reads once the measured torques
+//! are appended; the report gives the condition number reached, the limits and the method.
+
+use super::eval::{parameters, usage};
+use super::{load, Failure};
+use crate::args::{Excite, Numbers};
+use crate::excite::design::Problem;
+use crate::excite::fourier::{Grid, Series};
+use crate::excite::limits::{joint_limits, Asked};
+use crate::excite::report::Report;
+use crate::identify::base;
+use crate::identify::model::LinearModel;
+use dynamics_codegen::derive;
+use dynamics_codegen::front::{self, Limit};
+use dynamics_codegen::model::JointKind;
+use std::io::{BufWriter, Write};
+use std::time::Instant;
+
+/// The fewest samples per period: eight per period of the highest harmonic.
+const SAMPLES_PER_HARMONIC: f64 = 8.0;
+
+pub fn run(args: &Excite) -> Result<String, Failure> {
+    let started = Instant::now();
+    let robot = load(&args.robot)?;
+    let fields = parameters("excite", &robot.fields(), &args.set)?;
+    let mut eq = derive(&robot);
+    let joint_columns = args.joint_terms.columns(&robot);
+    let Some(base) = eq.base_parameters(&robot, &joint_columns) else {
+        return Err(Failure::File(format!(
+            "{}: the base parameters need the robot's lengths and angles as numbers, not \
+             struct fields",
+            args.robot.path
+        )));
+    };
+    let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
+    let urdf = urdf_limits(args)?;
+    let list = |o: &Option<Numbers>| o.as_ref().map(|Numbers(v)| v.clone());
+    let lists = [&args.q_min, &args.q_max, &args.qd_max, &args.qdd_max].map(list);
+    let asked: Asked = [0, 1, 2, 3].map(|k| lists[k].as_deref());
+    let limits = joint_limits(&robot, urdf.as_deref(), asked).map_err(|e| usage("excite", &e))?;
+    let harmonics = args.harmonics as usize;
+    let samples = (args.period * args.rate).round();
+    let fewest = SAMPLES_PER_HARMONIC * harmonics as f64;
+    if samples < fewest || samples > 1e7 {
+        return Err(usage(
+            "excite",
+            &format!(
+                "--period × --rate: {samples} samples per period; between {fewest} (eight per \
+                 period of the highest harmonic) and 10⁷"
+            ),
+        ));
+    }
+    let problem = Problem {
+        model: &model,
+        grid: Grid::new(args.period, harmonics, samples as usize),
+        limits: limits.iter().map(|l| l.limits).collect(),
+    };
+    let design = problem.design(args.seed, args.evaluations as usize);
+    if design.series.is_empty() {
+        return Err(Failure::File("the search found no motion".into()));
+    }
+    write_trajectory(args.csv.as_deref(), &problem, &design.series, args.periods)?;
+    let units = robot
+        .joints
+        .iter()
+        .map(|j| match j.kind {
+            JointKind::Revolute => "rad",
+            JointKind::Prismatic => "m",
+        })
+        .collect();
+    let report = Report {
+        robot: &robot.name,
+        model: &base::describe(&joint_columns),
+        problem: &problem,
+        limits: &limits,
+        design: &design,
+        periods: args.periods,
+        seed: args.seed,
+        units,
+        seconds: started.elapsed().as_secs_f64(),
+    };
+    let text = if args.json {
+        report.json()
+    } else {
+        report.text()
+    };
+    if args.csv.is_some() {
+        Ok(text)
+    } else {
+        // The trajectory took stdout.
+        eprint!("{text}");
+        Ok(String::new())
+    }
+}
+
+/// A URDF's `<limit>`s, per joint of the chain; `None` for a description file.
+fn urdf_limits(args: &Excite) -> Result<Option<Vec<Limit>>, Failure> {
+    let path = &args.robot.path;
+    if !path.ends_with(".urdf") {
+        return Ok(None);
+    }
+    // `load` read the same file without error.
+    let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
+    let chain = front::Chain {
+        base: args.robot.base.as_deref(),
+        tip: args.robot.tip.as_deref(),
+    };
+    front::joint_limits(&text, chain)
+        .map(Some)
+        .map_err(|errors| {
+            let lines: Vec<String> = errors.iter().map(|e| format!("{path}: {e}")).collect();
+            Failure::File(lines.join("\ndynamics: "))
+        })
+}
+
+/// Writes `periods` periods of the motion, and the first sample of the next (at rest, where
+/// the motion started), as `t,q..,qd..,qdd..` to `path`, or to stdout.
+fn write_trajectory(
+    path: Option<&str>,
+    problem: &Problem,
+    series: &[Series],
+    periods: u32,
+) -> Result<(), Failure> {
+    let failed = |e: std::io::Error| Failure::File(format!("{}: {e}", path.unwrap_or("stdout")));
+    let mut out: Box<dyn Write> = match path {
+        Some(path) => Box::new(BufWriter::new(std::fs::File::create(path).map_err(failed)?)),
+        None => Box::new(BufWriter::new(std::io::stdout().lock())),
+    };
+    let n = series.len();
+    let header: Vec<String> = ["q", "qd", "qdd"]
+        .iter()
+        .flat_map(|g| (1..=n).map(move |i| format!("{g}{i}")))
+        .collect();
+    writeln!(out, "t,{}", header.join(",")).map_err(failed)?;
+    let (m, period) = (problem.grid.samples(), problem.grid.period);
+    let mut row = vec![0.0; 3 * n];
+    for k in 0..=periods as usize * m {
+        // Whole periods exactly, then the steps within one: no drift over many periods.
+        let t = (k / m) as f64 * period + (k % m) as f64 * period / m as f64;
+        for (j, s) in problem.states(series, k).into_iter().enumerate() {
+            (row[j], row[n + j], row[2 * n + j]) = (s.q, s.qd, s.qdd);
+        }
+        let values: Vec<String> = row.iter().map(f64::to_string).collect();
+        writeln!(out, "{t},{}", values.join(",")).map_err(failed)?;
+    }
+    out.flush().map_err(failed)
+}

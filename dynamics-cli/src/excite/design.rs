@@ -1,0 +1,172 @@
+//! The exciting motion of a robot: the search's variables decoded into every joint's series,
+//! and the condition number of the base regressor over a period as the cost.
+//!
+//! For n joints and L harmonics the search has `n (2(L − 1) + 1)` variables in `[−1, 1]`: per
+//! joint the coefficients `a_2..a_L, b_2..b_L` of a series at rest at t = 0, and its placement in
+//! the joint's range ([`Grid::fit`] scales the series to the joint's limits, so that any point
+//! of the box is a motion within them). The cost is `cond(Y_B)` over [`SEARCH_SAMPLES`] samples
+//! of the period, evenly spread among those written ([`Gram`]); the result is judged over all
+//! of the period's samples ([`accurate`]).
+
+use super::condition::{accurate, Gram, Sample};
+use super::fourier::{Grid, Limits, Series, State};
+use super::search::{minimise, Outcome};
+use crate::identify::model::LinearModel;
+
+/// The samples of a period over which the search evaluates the condition number: enough rows
+/// (n per sample) for any robot's base parameters many times over, few enough to be cheap.
+pub const SEARCH_SAMPLES: usize = 100;
+
+/// What the search is given.
+pub struct Problem<'a> {
+    pub model: &'a LinearModel,
+    pub grid: Grid,
+    pub limits: Vec<Limits>,
+}
+
+/// The motion found, and how it compares with the first one tried.
+pub struct Design {
+    pub series: Vec<Series>,
+    /// `cond(Y_B)` over every sample of the period, of each.
+    pub condition: f64,
+    pub initial_condition: f64,
+    pub outcome: Outcome,
+}
+
+impl Problem<'_> {
+    /// The search's variables per joint.
+    fn per_joint(&self) -> usize {
+        self.grid.free() + 1
+    }
+
+    /// Every joint's series for the point `x` of the box; `None` if a joint would not move.
+    #[must_use]
+    pub fn decode(&self, x: &[f64]) -> Option<Vec<Series>> {
+        let width = self.per_joint();
+        x.chunks(width)
+            .zip(&self.limits)
+            .map(|(v, limits)| {
+                let (free, placement) = v.split_at(width - 1);
+                self.grid.fit(free, limits, placement[0])
+            })
+            .collect()
+    }
+
+    /// The states of every joint at sample k.
+    #[must_use]
+    pub fn states(&self, series: &[Series], k: usize) -> Vec<State> {
+        series.iter().map(|s| self.grid.state(s, k)).collect()
+    }
+
+    /// `cond(Y_B)` over the samples `ks`, by the Gram matrix.
+    fn condition(&self, gram: &mut Gram, series: &[Series], ks: &[usize]) -> f64 {
+        gram.clear();
+        let n = series.len();
+        let (mut q, mut qd, mut qdd) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        for &k in ks {
+            for (j, s) in self.states(series, k).into_iter().enumerate() {
+                (q[j], qd[j], qdd[j]) = (s.q, s.qd, s.qdd);
+            }
+            gram.push(&Sample {
+                q: &q,
+                qd: &qd,
+                qdd: &qdd,
+            });
+        }
+        gram.condition()
+    }
+
+    /// `cond(Y_B)` over every sample of the period, from the regressor's factor.
+    #[must_use]
+    pub fn accurate_condition(&self, series: &[Series]) -> f64 {
+        let rows: Vec<[Vec<f64>; 3]> = (0..self.grid.samples())
+            .map(|k| {
+                let states = self.states(series, k);
+                [
+                    states.iter().map(|s| s.q).collect(),
+                    states.iter().map(|s| s.qd).collect(),
+                    states.iter().map(|s| s.qdd).collect(),
+                ]
+            })
+            .collect();
+        accurate(
+            self.model,
+            rows.iter().map(|[q, qd, qdd]| Sample { q, qd, qdd }),
+        )
+    }
+
+    /// The search for the motion of lowest condition number, from `seed`, with at most
+    /// `evaluations` evaluations.
+    #[must_use]
+    pub fn design(&self, seed: u64, evaluations: usize) -> Design {
+        let m = self.grid.samples();
+        let count = SEARCH_SAMPLES.min(m);
+        let ks: Vec<usize> = (0..count).map(|j| j * m / count).collect();
+        let mut gram = Gram::new(self.model);
+        let dimension = self.per_joint() * self.limits.len();
+        let outcome = minimise(dimension, seed, evaluations, |x| match self.decode(x) {
+            Some(series) => self.condition(&mut gram, &series, &ks),
+            None => f64::INFINITY,
+        });
+        // Every point of the box decodes but a measure-zero set; these were evaluated.
+        let decode = |x: &[f64]| self.decode(x).unwrap_or_default();
+        let (series, initial) = (decode(&outcome.best.0), decode(&outcome.initial.0));
+        let judge = |s: &[Series]| {
+            if s.is_empty() {
+                f64::INFINITY
+            } else {
+                self.accurate_condition(s)
+            }
+        };
+        Design {
+            condition: judge(&series),
+            initial_condition: judge(&initial),
+            series,
+            outcome,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::identify::base;
+    use dynamics_codegen::trace::base_parameters::JointColumns;
+
+    /// The search's cost, by the Gram matrix's eigenvalues, against the condition number the
+    /// report gives, by the regressor's factor and its singular values, over the same samples.
+    #[test]
+    fn the_search_s_cost_is_the_condition_number_reported() {
+        let text = include_str!("../../../robots/puma560.toml");
+        let robot = dynamics_codegen::front::load("puma560.toml", text)
+            .expect("reads")
+            .robot;
+        let mut eq = dynamics_codegen::derive(&robot);
+        let base = eq
+            .base_parameters(&robot, &[JointColumns::default(); 6])
+            .expect("numbers only");
+        let model = LinearModel::new(&base::entries(&eq, &base, &[])).expect("a model");
+        let limits = Limits {
+            lower: -1.0,
+            upper: 1.0,
+            velocity: 1.0,
+            acceleration: 4.0,
+        };
+        let problem = Problem {
+            model: &model,
+            grid: Grid::new(8.0, 4, 400),
+            limits: vec![limits; 6],
+        };
+        let mut random = crate::excite::search::Random::new(3);
+        let x: Vec<f64> = (0..6 * 7).map(|_| random.symmetric()).collect();
+        let series = problem.decode(&x).expect("it moves");
+        let all: Vec<usize> = (0..400).collect();
+        let cost = problem.condition(&mut Gram::new(&model), &series, &all);
+        let reported = problem.accurate_condition(&series);
+        assert!(
+            (cost - reported).abs() < 1e-9 * reported,
+            "{cost} {reported}"
+        );
+        assert!(reported > 1.0 && reported.is_finite());
+    }
+}

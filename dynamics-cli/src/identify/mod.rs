@@ -1,0 +1,32 @@
+//! System identification: the estimate of a model linear in its parameters,
+//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`).
+//!
+//! * [`model`]: the regressor of a robot's graph, evaluated at a sample;
+//! * [`base`]: that model for a robot's base parameters;
+//! * [`source`]: the samples, streamed or filtered ([`filter`]);
+//! * [`rows`]: each sample's equations, filtered and decimated alike ([`decimate`]) from a
+//!   filtered source;
+//! * [`measured`]: one triangular factor per joint ([`householder`]);
+//! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
+//!   standard deviations, condition number ([`singular`]);
+//! * [`consistent`]: the physically consistent estimate beside it, and [`description`]: the
+//!   description file rewritten with it;
+//! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others;
+//! * [`report`], [`figure`]: what is printed and drawn.
+
+pub mod base;
+pub mod consistent;
+pub mod decimate;
+pub mod description;
+pub mod estimate;
+pub mod figure;
+pub mod filter;
+pub mod householder;
+pub mod measured;
+pub mod model;
+pub mod predict;
+pub mod rank;
+pub mod report;
+pub mod rows;
+pub mod singular;
+pub mod source;

@@ -1,0 +1,155 @@
+//! Which parameters the data can identify: a rank-revealing QR of the stacked regressor's
+//! factor `R`, its columns taken in order (Gautier, 1990, as for numerical base parameters).
+//!
+//! Each column is first scaled to unit norm (`‖Y_k‖ = ‖R_k‖`), since the parameters have
+//! different units. Column k is then reflected against the columns kept before it; the norm of
+//! what is left below the kept rows is the sine of its angle to their span. Below `tolerance`,
+//! the column is, to that accuracy, the combination `Y_k ≈ Σ_j c_j Y_j` of the kept columns, and
+//! its parameter cannot be told apart from theirs: it is not estimated (its estimate's noise
+//! would be amplified about `1 / tolerance` times), and each kept parameter's estimate stands
+//! for `π_j + c_j π_k`. A column with no signal at all (a norm
+//! below 10⁻¹² of the largest: a joint that never moves, an effect the motion never excites) is
+//! left out first. Columns are taken in the model's order, so that of a dependent group the
+//! later ones are named.
+
+use super::householder::back_substitute;
+
+/// A parameter the data cannot identify.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unidentified {
+    pub parameter: usize,
+    /// `(j, c_j)`: its column is `Σ c_j Y_j` of identified parameters' columns (empty when the
+    /// column is zero), largest contributions first.
+    pub combination: Vec<(usize, f64)>,
+}
+
+/// Columns whose norm is below this fraction of the largest have no signal.
+const NO_SIGNAL: f64 = 1e-12;
+
+/// The parameters that the `p × p` factor `r` (row-major) identifies, in order, and those it
+/// does not.
+#[must_use]
+pub fn identifiable(r: &[f64], p: usize, tolerance: f64) -> (Vec<usize>, Vec<Unidentified>) {
+    let norms: Vec<f64> = (0..p)
+        .map(|k| (0..=k).map(|i| r[i * p + k].powi(2)).sum::<f64>().sqrt())
+        .collect();
+    let largest = norms.iter().copied().fold(0.0, f64::max);
+    // Column-major, each column scaled to unit norm.
+    let mut a: Vec<Vec<f64>> = (0..p)
+        .map(|k| (0..p).map(|i| r[i * p + k] / norms[k]).collect())
+        .collect();
+    let (mut kept, mut dropped) = (Vec::new(), Vec::new());
+    for k in 0..p {
+        if norms[k] <= NO_SIGNAL * largest {
+            dropped.push(Unidentified {
+                parameter: k,
+                combination: Vec::new(),
+            });
+            continue;
+        }
+        let row = kept.len();
+        let rest: f64 = a[k][row..].iter().map(|x| x * x).sum::<f64>().sqrt();
+        if rest <= tolerance {
+            let combination = combination(&a, &kept, k, &norms);
+            dropped.push(Unidentified {
+                parameter: k,
+                combination,
+            });
+            continue;
+        }
+        reflect(&mut a, row, k, rest);
+        kept.push(k);
+    }
+    (kept, dropped)
+}
+
+/// Reflects rows `row..` so that column `k` is zero below `row`, and the columns after it the
+/// same way.
+fn reflect(a: &mut [Vec<f64>], row: usize, k: usize, norm: f64) {
+    let x0 = a[k][row];
+    let alpha = if x0 >= 0.0 { -norm } else { norm };
+    let mut v: Vec<f64> = a[k][row..].to_vec();
+    v[0] -= alpha;
+    let vtv: f64 = v.iter().map(|x| x * x).sum();
+    if vtv == 0.0 {
+        return;
+    }
+    for column in a.iter_mut().skip(k) {
+        let s: f64 = column[row..].iter().zip(&v).map(|(c, x)| c * x).sum();
+        let f = 2.0 * s / vtv;
+        for (c, x) in column[row..].iter_mut().zip(&v) {
+            *c -= f * x;
+        }
+    }
+}
+
+/// The coefficients of dropped column `k` on the kept columns, unscaled, largest
+/// contribution first.
+fn combination(a: &[Vec<f64>], kept: &[usize], k: usize, norms: &[f64]) -> Vec<(usize, f64)> {
+    let m = kept.len();
+    // The kept columns' triangle (rows 0..m) and column k's entries in those rows.
+    let triangle: Vec<f64> = (0..m)
+        .flat_map(|i| kept.iter().map(move |&j| a[j][i]))
+        .collect();
+    let scaled = back_substitute(&triangle, m, &a[k][..m]);
+    let mut terms: Vec<(usize, f64, f64)> = kept
+        .iter()
+        .zip(scaled)
+        .filter(|(_, c)| c.abs() > 1e-9)
+        .map(|(&j, c)| (j, c * norms[k] / norms[j], c.abs()))
+        .collect();
+    terms.sort_by(|x, y| y.2.total_cmp(&x.2));
+    terms.into_iter().map(|(j, c, _)| (j, c)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::identify::householder::Triangle;
+
+    /// Columns: x, 0, 2x + 3·1 (a combination), 1, x², and a column of 10⁻⁹ x³ (small but
+    /// independent: scaling keeps it).
+    fn factor() -> Vec<f64> {
+        let mut t = Triangle::new(6, 8);
+        for i in 0..20 {
+            let x = f64::from(i) / 7.0 - 1.0;
+            t.push(&[x, 0.0, 2.0 * x + 3.0, 1.0, x * x, 1e-9 * x * x * x]);
+        }
+        t.factor().to_vec()
+    }
+
+    #[test]
+    fn zero_and_dependent_columns_are_named_with_their_combination() {
+        let (kept, dropped) = identifiable(&factor(), 6, 1e-8);
+        assert_eq!(kept, [0, 2, 4, 5]);
+        assert_eq!(
+            dropped[0],
+            Unidentified {
+                parameter: 1,
+                combination: vec![],
+            }
+        );
+        // The constant column comes after 2x + 3, so it is the one named: 1 = (2x + 3)/3 − 2x/3.
+        let d = &dropped[1];
+        assert_eq!((dropped.len(), d.parameter), (2, 3), "{dropped:?}");
+        let mut terms = d.combination.clone();
+        terms.sort_by_key(|t| t.0);
+        assert_eq!(terms.len(), 2, "{terms:?}");
+        assert_eq!((terms[0].0, terms[1].0), (0, 2));
+        assert!((terms[0].1 + 2.0 / 3.0).abs() < 1e-12, "{terms:?}");
+        assert!((terms[1].1 - 1.0 / 3.0).abs() < 1e-12, "{terms:?}");
+    }
+
+    #[test]
+    fn a_near_dependence_is_named_only_below_the_tolerance() {
+        let mut t = Triangle::new(2, 8);
+        for i in 0..10 {
+            let x = f64::from(i);
+            // The second column leaves the first's direction by about 10⁻⁵.
+            t.push(&[x, x + 1e-5 * x * x]);
+        }
+        let r = t.factor().to_vec();
+        assert_eq!(identifiable(&r, 2, 1e-6).0, [0, 1]);
+        assert_eq!(identifiable(&r, 2, 1e-4).0, [0]);
+    }
+}

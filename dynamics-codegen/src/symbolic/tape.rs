@@ -1,0 +1,238 @@
+//! A tape: the nodes that some outputs of a [`Graph`] need, in the graph's order (children
+//! before parents), as a flat list of instructions over numbered slots, evaluated in `f64`
+//! into a buffer that the caller keeps and reuses.
+//!
+//! [`Graph::eval`] computes every node of the graph; a robot's graph holds every output ever
+//! traced (M, C, the kinematics, the forward dynamics, …), so evaluating one family at many
+//! states (the regressor at every sample of a measured trajectory) would pay for all of them.
+//! The tape keeps only the nodes reachable from its outputs ([`Graph::live`]).
+//!
+//! Slots: the leaves first (one per distinct [`Var`] the outputs reach, whose values the caller
+//! gives in the order of [`Tape::leaves`]), then the constants, then one slot per operation.
+//! The arithmetic is [`Graph::eval`]'s, operation for operation, so both give the same bits.
+
+use super::graph::Graph;
+use super::node::{Node, NodeId, Var};
+
+/// One operation on earlier slots.
+#[derive(Clone, Copy, Debug)]
+enum Op {
+    Add(u32, u32),
+    Mul(u32, u32),
+    Neg(u32),
+    Recip(u32),
+    Sin(u32),
+    Cos(u32),
+    Sign(u32),
+    Tanh(u32),
+}
+
+/// The straight-line evaluation of some outputs of a graph.
+#[derive(Clone, Debug)]
+pub struct Tape {
+    leaves: Vec<Var>,
+    constants: Vec<f64>,
+    ops: Vec<Op>,
+    outputs: Vec<u32>,
+}
+
+impl Tape {
+    /// The tape of `outputs` (node ids into `graph`).
+    #[must_use]
+    pub fn new(graph: &Graph, outputs: &[NodeId]) -> Tape {
+        let live = graph.live(outputs);
+        let mut leaves = Vec::new();
+        let mut constants = Vec::new();
+        let mut operations: Vec<(NodeId, Node)> = Vec::new();
+        // The slot of each live node, by kind first: the final slot is known once the counts
+        // of leaves and constants are.
+        let mut place: Vec<Slot> = vec![Slot::Dead; graph.len()];
+        for (id, node) in graph.nodes().filter(|(id, _)| live[id.index()]) {
+            place[id.index()] = match node {
+                Node::Var(v) => {
+                    leaves.push(v);
+                    Slot::Leaf(leaves.len() - 1)
+                }
+                Node::Const(c) => {
+                    constants.push(c.to_f64());
+                    Slot::Constant(constants.len() - 1)
+                }
+                _ => {
+                    operations.push((id, node));
+                    Slot::Op(operations.len() - 1)
+                }
+            };
+        }
+        let (l, c) = (leaves.len(), constants.len());
+        let slot = |id: NodeId| -> u32 {
+            let index = match place[id.index()] {
+                Slot::Leaf(k) => k,
+                Slot::Constant(k) => l + k,
+                Slot::Op(k) => l + c + k,
+                Slot::Dead => unreachable!("an operand of a live node is live"),
+            };
+            u32::try_from(index).expect("a tape exceeds u32 slots")
+        };
+        let ops = operations
+            .iter()
+            .map(|&(_, node)| op(node, &slot))
+            .collect();
+        Tape {
+            outputs: outputs.iter().map(|&id| slot(id)).collect(),
+            leaves,
+            constants,
+            ops,
+        }
+    }
+
+    /// The inputs the outputs depend on, in the order [`Tape::eval`] takes their values.
+    #[must_use]
+    pub fn leaves(&self) -> &[Var] {
+        &self.leaves
+    }
+
+    /// The number of operations evaluated per call.
+    #[must_use]
+    pub fn operations(&self) -> usize {
+        self.ops.len()
+    }
+
+    /// Evaluates the outputs, `leaves[k]` being the value of `self.leaves()[k]`, into `outputs`
+    /// (one per output node), with `work` as scratch (kept between calls to save allocations).
+    ///
+    /// # Panics
+    /// If `leaves` or `outputs` is shorter than the tape's.
+    pub fn eval(&self, leaves: &[f64], work: &mut Vec<f64>, outputs: &mut [f64]) {
+        let (l, c) = (self.leaves.len(), self.constants.len());
+        work.clear();
+        work.extend_from_slice(&leaves[..l]);
+        work.extend_from_slice(&self.constants);
+        work.reserve(self.ops.len());
+        debug_assert_eq!(work.len(), l + c);
+        for op in &self.ops {
+            let at = |k: u32| work[k as usize];
+            let v = match *op {
+                Op::Add(a, b) => at(a) + at(b),
+                Op::Mul(a, b) => at(a) * at(b),
+                Op::Neg(a) => -at(a),
+                Op::Recip(a) => 1.0 / at(a),
+                Op::Sin(a) => at(a).sin(),
+                Op::Cos(a) => at(a).cos(),
+                Op::Sign(a) => {
+                    let x = at(a);
+                    if x == 0.0 {
+                        0.0
+                    } else {
+                        x.signum()
+                    }
+                }
+                Op::Tanh(a) => at(a).tanh(),
+            };
+            work.push(v);
+        }
+        for (out, &k) in outputs.iter_mut().zip(&self.outputs) {
+            *out = work[k as usize];
+        }
+    }
+}
+
+/// Where a node of the graph goes on the tape, by kind.
+#[derive(Clone, Copy)]
+enum Slot {
+    Dead,
+    Leaf(usize),
+    Constant(usize),
+    Op(usize),
+}
+
+/// The operation of `node`, its operands given by their slots.
+fn op(node: Node, slot: &impl Fn(NodeId) -> u32) -> Op {
+    match node {
+        Node::Add(a, b) => Op::Add(slot(a), slot(b)),
+        Node::Mul(a, b) => Op::Mul(slot(a), slot(b)),
+        Node::Neg(a) => Op::Neg(slot(a)),
+        Node::Recip(a) => Op::Recip(slot(a)),
+        Node::Sin(a) => Op::Sin(slot(a)),
+        Node::Cos(a) => Op::Cos(slot(a)),
+        Node::Sign(a) => Op::Sign(slot(a)),
+        Node::Tanh(a) => Op::Tanh(slot(a)),
+        Node::Const(_) | Node::Var(_) => {
+            unreachable!("leaves and constants have slots of their own")
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::symbolic::Number;
+
+    /// `x·y + sin(x)`, `1/(y − 2)`, `sign(−x)`, `tanh(y)`, `cos(3)`, and a node no output needs.
+    fn graph() -> (Graph, Vec<NodeId>, NodeId) {
+        let mut g = Graph::new();
+        let x = g.var(Var::Qd(0));
+        let unused_leaf = g.var(Var::Q(5));
+        let y = g.var(Var::Param(1));
+        let unused = g.mul(unused_leaf, x);
+        let xy = g.mul(x, y);
+        let s = g.sin(x);
+        let first = g.add(xy, s);
+        let two = g.num(Number::int(2));
+        let y2 = g.sub(y, two);
+        let second = g.recip(y2).expect("not a constant zero");
+        let minus_x = g.neg(x);
+        let third = g.sign(minus_x);
+        let fourth = g.tanh(y);
+        let three = g.num(Number::int(3));
+        let three_plus_x = g.add(three, x);
+        let fifth = g.cos(three_plus_x);
+        (g, vec![first, second, third, fourth, fifth, x], unused)
+    }
+
+    #[test]
+    fn the_tape_gives_the_values_of_the_graph() {
+        let (g, outputs, _) = graph();
+        let tape = Tape::new(&g, &outputs);
+        assert_eq!(tape.leaves(), &[Var::Qd(0), Var::Param(1)]);
+        let (x, y) = (0.7, -1.3);
+        let mut work = Vec::new();
+        let mut out = vec![0.0; outputs.len()];
+        tape.eval(&[x, y], &mut work, &mut out);
+        // By hand, not through the graph.
+        let expected = [
+            x * y + x.sin(),
+            1.0 / (y - 2.0),
+            -1.0,
+            y.tanh(),
+            (3.0 + x).cos(),
+            x,
+        ];
+        assert_eq!(out, expected);
+        // The same bits as the whole graph's evaluation.
+        let all = g.eval(|v| match v {
+            Var::Qd(0) => x,
+            Var::Param(1) => y,
+            _ => f64::NAN,
+        });
+        let from_graph: Vec<f64> = outputs.iter().map(|id| all[id.index()]).collect();
+        assert_eq!(out, from_graph);
+    }
+
+    #[test]
+    fn only_what_the_outputs_need_is_evaluated() {
+        let (g, outputs, unused) = graph();
+        let tape = Tape::new(&g, &outputs);
+        let mut with_unused = outputs.clone();
+        with_unused.push(unused);
+        let bigger = Tape::new(&g, &with_unused);
+        assert_eq!(bigger.operations(), tape.operations() + 1);
+        assert_eq!(bigger.leaves().len(), 3);
+        // Sign of zero is zero, as `Real::sign` has it; a second call reuses the scratch.
+        let mut work = Vec::new();
+        let mut out = vec![f64::NAN; outputs.len()];
+        tape.eval(&[1.0, 5.0], &mut work, &mut out);
+        tape.eval(&[0.0, 5.0], &mut work, &mut out);
+        assert_eq!(out[2], 0.0);
+        assert_eq!(out[0], 0.0);
+    }
+}

@@ -1,0 +1,172 @@
+//! The coefficients of the relations as numbers. `ℤ/p` says exactly which coefficients are
+//! zero and gives each one's residue; a coefficient that is a rational of moderate height (an
+//! integer, a product of the description's decimals) is recovered from its residue exactly.
+//! The others are the least-squares solution of `A_S β = a_c` in doubles, over the columns'
+//! values at random states (`S`: the pivots with a nonzero coefficient), which agrees with the
+//! exact relation to rounding; the residue then confirms a rational found.
+
+use crate::symbolic::modular::{Fp, Points};
+use crate::symbolic::{Graph, NodeId, Number, Var};
+use std::f64::consts::PI;
+
+/// Numerators and denominators up to this are recovered exactly (`2·bound² < p`).
+const HEIGHT: i128 = 1_000_000_000;
+
+/// Per column, its coefficient on each pivot (`exact[c][r]`: on pivot r).
+pub(super) fn numbers(
+    graph: &Graph,
+    columns: &[Vec<NodeId>],
+    pivots: &[usize],
+    exact: &[Vec<Fp>],
+) -> Vec<Vec<Number>> {
+    let values = samples(graph, columns, pivots.len());
+    exact
+        .iter()
+        .enumerate()
+        .map(|(c, residues)| {
+            let support: Vec<usize> = (0..pivots.len())
+                .filter(|&r| !residues[r].is_zero())
+                .collect();
+            let mut numbers = vec![Number::ZERO; pivots.len()];
+            if support.is_empty() {
+                return numbers;
+            }
+            let a: Vec<Vec<f64>> = values
+                .iter()
+                .map(|row| support.iter().map(|&r| row[pivots[r]]).collect())
+                .collect();
+            let b: Vec<f64> = values.iter().map(|row| row[c]).collect();
+            let beta = least_squares(a, b);
+            for (&r, &x) in support.iter().zip(&beta) {
+                numbers[r] = exact_or_float(residues[r], x);
+            }
+            numbers
+        })
+        .collect()
+}
+
+/// The rational whose residue is `residue`, where it is `x` to rounding; else `x`.
+fn exact_or_float(residue: Fp, x: f64) -> Number {
+    let rational = residue
+        .to_small_rational(HEIGHT)
+        .and_then(|(a, b)| Number::ratio(a, b));
+    match rational {
+        Some(r) if (r.to_f64() - x).abs() <= 1e-9 * x.abs().max(1.0) => r,
+        _ => Number::Float(x),
+    }
+}
+
+/// The columns' rows at random states: enough rows for the widest support, and more.
+fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64>> {
+    let n = columns.first().map_or(1, Vec::len).max(1);
+    let count = pivots / n + 12;
+    let mut points = Points::new(0xc0ef_f1c1);
+    let mut uniform = move || (points.bits() >> 11) as f64 / (1_u64 << 53) as f64 * 2.0 - 1.0;
+    let mut rows = Vec::with_capacity(count * n);
+    for _ in 0..count {
+        let angles: Vec<f64> = (0..n).map(|_| PI * uniform()).collect();
+        let others: Vec<[f64; 3]> = (0..n).map(|_| [uniform(), uniform(), uniform()]).collect();
+        let values = graph.eval(|v| match v {
+            Var::SinQ(i) => angles[usize::from(i)].sin(),
+            Var::CosQ(i) => angles[usize::from(i)].cos(),
+            Var::Q(i) => others[usize::from(i)][0],
+            Var::Qd(i) => others[usize::from(i)][1],
+            Var::Qdd(i) => others[usize::from(i)][2],
+            // The columns depend on the joint variables alone (`exact::relations`).
+            _ => 0.0,
+        });
+        for i in 0..n {
+            rows.push(columns.iter().map(|c| values[c[i].index()]).collect());
+        }
+    }
+    rows
+}
+
+/// `argmin ‖A x − b‖` for `A` of full column rank (rows given), by Householder QR on columns
+/// scaled to unit norm.
+fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
+    let (m, k) = (a.len(), a.first().map_or(0, Vec::len));
+    let scale: Vec<f64> = (0..k)
+        .map(|j| {
+            let norm = a.iter().map(|r| r[j] * r[j]).sum::<f64>().sqrt();
+            if norm > 0.0 {
+                norm
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    for row in &mut a {
+        for (x, s) in row.iter_mut().zip(&scale) {
+            *x /= s;
+        }
+    }
+    for j in 0..k {
+        let norm = (j..m).map(|i| a[i][j] * a[i][j]).sum::<f64>().sqrt();
+        if norm == 0.0 {
+            continue;
+        }
+        let alpha = if a[j][j] > 0.0 { -norm } else { norm };
+        let mut v: Vec<f64> = (j..m).map(|i| a[i][j]).collect();
+        v[0] -= alpha;
+        let vv: f64 = v.iter().map(|x| x * x).sum();
+        if vv == 0.0 {
+            continue;
+        }
+        for col in j..k {
+            let dot: f64 = a[j..].iter().zip(&v).map(|(row, x)| x * row[col]).sum();
+            let f = 2.0 * dot / vv;
+            for (row, x) in a[j..].iter_mut().zip(&v) {
+                row[col] -= f * x;
+            }
+        }
+        let dot: f64 = (j..m).map(|i| v[i - j] * b[i]).sum();
+        let f = 2.0 * dot / vv;
+        for i in j..m {
+            b[i] -= f * v[i - j];
+        }
+    }
+    let mut x = vec![0.0; k];
+    for j in (0..k).rev() {
+        let s: f64 = (j + 1..k).map(|c| a[j][c] * x[c]).sum();
+        x[j] = if a[j][j] == 0.0 {
+            0.0
+        } else {
+            (b[j] - s) / a[j][j]
+        };
+    }
+    x.iter().zip(&scale).map(|(x, s)| x / s).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{exact_or_float, least_squares};
+    use crate::symbolic::modular::Fp;
+    use crate::symbolic::Number;
+
+    #[test]
+    fn solves_an_overdetermined_system() {
+        // Rows of x + 2y = b with b exact for x = 3, y = −1.
+        let a = vec![
+            vec![1.0, 0.0],
+            vec![0.0, 1.0],
+            vec![1.0, 1.0],
+            vec![2.0, 1.0],
+        ];
+        let b = vec![3.0, -1.0, 2.0, 5.0];
+        let x = least_squares(a, b);
+        assert!((x[0] - 3.0).abs() < 1e-14 && (x[1] + 1.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn recovers_decimals() {
+        // 0.4318² = 0.18645124, exactly.
+        let residue = Fp::int(4318 * 4318) * Fp::int(100_000_000).recip().unwrap();
+        assert_eq!(
+            exact_or_float(residue, 0.186_451_24),
+            Number::ratio(18_645_124, 100_000_000).unwrap()
+        );
+        // A residue that disagrees with the float keeps the float.
+        assert_eq!(exact_or_float(Fp::int(3), 0.5), Number::Float(0.5));
+    }
+}
