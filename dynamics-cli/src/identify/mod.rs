@@ -9,8 +9,9 @@
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
 //!   standard deviations, condition number ([`singular`]);
-//! * [`consistent`]: the physically consistent estimate beside it, and [`description`]: the
-//!   description file rewritten with it;
+//! * [`consistent`]: the physically consistent estimate beside it (each link's
+//!   [`pseudo_inertia`] positive semidefinite), and [`description`]: the description file
+//!   rewritten with it;
 //! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others;
 //! * [`report`], [`figure`]: what is printed and drawn.
 
@@ -25,6 +26,7 @@ pub mod householder;
 pub mod measured;
 pub mod model;
 pub mod predict;
+pub mod pseudo_inertia;
 pub mod rank;
 pub mod report;
 pub mod rows;
