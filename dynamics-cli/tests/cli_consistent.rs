@@ -12,24 +12,9 @@ use dynamics_codegen::numeric::Numeric;
 use dynamics_codegen::symbolic::Var;
 use dynamics_codegen::trace::base_parameters::JointColumns;
 use serde_json::Value;
-use std::process::{Command, Output};
-use synthetic::{arm, arm_file_static, arm_text, fourier, normal, scratch, torques, write_csv};
-
-fn dynamics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .output()
-        .expect("run dynamics")
-}
-
-fn json(out: &Output) -> Value {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON")
-}
+use synthetic::{
+    arm, arm_file_static, arm_text, dynamics, fourier, json, normal, scratch, torques, write_csv,
+};
 
 fn numbers(v: &Value, key: &str) -> Vec<f64> {
     v.as_array()

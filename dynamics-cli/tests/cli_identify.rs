@@ -13,24 +13,9 @@ use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::{derive, Equations};
 use serde_json::Value;
 use std::fmt::Write as _;
-use std::process::{Command, Output};
-use synthetic::{arm, arm_file_static, fourier, normal, scratch, torques, write_csv, State};
-
-fn dynamics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .output()
-        .expect("run dynamics")
-}
-
-fn json(out: &Output) -> Value {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON")
-}
+use synthetic::{
+    arm, arm_file_static, dynamics, fourier, json, normal, scratch, torques, write_csv, State,
+};
 
 const ALL_TERMS: [&str; 3] = ["--rotors", "--friction", "viscous,coulomb,offset"];
 

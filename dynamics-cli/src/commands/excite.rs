@@ -14,7 +14,7 @@
 //! are appended; the report gives the condition number reached, the limits and the method.
 
 use super::eval::{parameters, usage};
-use super::{load, Failure};
+use super::{base_parameters, load, Failure};
 use crate::args::{Excite, Numbers};
 use crate::excite::design::Problem;
 use crate::excite::fourier::{Grid, Series};
@@ -37,13 +37,7 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     let fields = parameters("excite", &robot.fields(), &args.set)?;
     let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
-    let Some(base) = eq.base_parameters(&robot, &joint_columns) else {
-        return Err(Failure::File(format!(
-            "{}: the base parameters need the robot's lengths and angles as numbers, not \
-             struct fields",
-            args.robot.path
-        )));
-    };
+    let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;
     let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
     let urdf = urdf_limits(args)?;
     let list = |o: &Option<Numbers>| o.as_ref().map(|Numbers(v)| v.clone());

@@ -40,7 +40,7 @@
 
 use super::eval::{parameters, usage};
 use super::size::write_svg;
-use super::{load, Failure};
+use super::{base_parameters, load, Failure};
 use crate::args::Identify;
 use crate::identify::base;
 use crate::identify::consistent::{consistent, Consistent, Problem};
@@ -65,13 +65,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     let fields = parameters("identify", &robot.fields(), &args.set)?;
     let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
-    let Some(base) = eq.base_parameters(&robot, &joint_columns) else {
-        return Err(Failure::File(format!(
-            "{}: the base parameters need the robot's lengths and angles as numbers, not \
-             struct fields",
-            args.robot.path
-        )));
-    };
+    let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;
     let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
     let springs = springs(&robot, &robot.fields(), &fields);
     let columns = Columns {

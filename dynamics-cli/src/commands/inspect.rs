@@ -2,7 +2,7 @@
 //! [--friction ..]]`: the equations of motion, the hand pose and Jacobians, or the base
 //! parameters, in the book's notation.
 
-use super::{load, Failure};
+use super::{base_parameters, load, Failure};
 use crate::args::Inspect;
 use dynamics_codegen::derive;
 use dynamics_codegen::inspect::{
@@ -19,13 +19,7 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
     };
     if args.base_parameters {
         let columns = args.joint_terms.columns(&robot);
-        let Some(base) = eq.base_parameters(&robot, &columns) else {
-            return Err(Failure::File(format!(
-                "{}: the base parameters need the robot's lengths and angles as numbers, not \
-                 struct fields",
-                args.robot.path
-            )));
-        };
+        let base = base_parameters(&mut eq, &robot, &args.robot, &columns)?;
         return Ok(render_base_parameters(&robot.name, &base, format));
     }
     let inspection = if args.kinematics {

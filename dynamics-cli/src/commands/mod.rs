@@ -16,6 +16,7 @@ use clap::CommandFactory;
 use dynamics_codegen::check;
 use dynamics_codegen::front;
 use dynamics_codegen::model::{Placement, Robot, Value};
+use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::Equations;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
@@ -42,6 +43,20 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Identify(args) => identify::run(args),
         Command::Excite(args) => excite::run(args),
     }
+}
+
+/// The base parameters of `robot` with the joint columns asked for (tracing its regressor into
+/// `eq`), or the error of a robot whose lengths or angles are struct fields.
+fn base_parameters(
+    eq: &mut Equations,
+    robot: &Robot,
+    file: &RobotFile,
+    joint_columns: &[JointColumns],
+) -> Result<BaseParameters, Failure> {
+    let message = "the base parameters need the robot's lengths and angles as numbers, not \
+                   struct fields";
+    eq.base_parameters(robot, joint_columns)
+        .ok_or_else(|| Failure::File(format!("{}: {message}", file.path)))
 }
 
 /// Reads and checks a description file as the derive does (values, then the physical checks

@@ -5,8 +5,10 @@
 
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::numeric::Numeric;
+use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::PathBuf;
+use std::process::{Command, Output};
 
 /// A 4-joint arm: a vertical revolute joint, two revolute joints about parallel axes, and a
 /// prismatic wrist, with actuator inertia, viscous, Coulomb and offset friction, and a spring.
@@ -186,4 +188,22 @@ pub fn normal(seed: &mut u64) -> f64 {
     };
     let (u, v) = (uniform(), uniform());
     (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+}
+
+/// Runs the `dynamics` binary of this package.
+pub fn dynamics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(args)
+        .output()
+        .expect("run dynamics")
+}
+
+/// A successful run's JSON.
+pub fn json(out: &Output) -> Value {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
 }
