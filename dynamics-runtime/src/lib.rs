@@ -43,7 +43,8 @@
 //! * `nalgebra`: the `nalgebra` module, conversions to and from nalgebra's types
 //!   (`DynamicsNalgebra`: an `_na` version of every method).
 #![cfg_attr(not(feature = "std"), no_std)]
-// `unsafe` only to call the vector sines and cosines (`#[target_feature]` functions) on x86-64.
+// `unsafe` only to call the vector sines and cosines (`#[target_feature]` functions) and the
+// lane types' intrinsics on x86-64.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -59,6 +60,7 @@ mod derivatives;
 #[macro_use]
 mod dynamics;
 mod factor;
+pub mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
 mod pose;
@@ -72,7 +74,8 @@ pub use crate::dynamics::{
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::pose::Pose;
-pub use crate::real::Real;
+pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
+pub use crate::real::{Real, RealScalar};
 
 #[cfg(feature = "derive")]
 pub use dynamics_macros::Dynamics;
@@ -80,7 +83,8 @@ pub use dynamics_macros::Dynamics;
 /// Items that generated code names. Not public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::real::Real;
+    pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
+pub use crate::real::{Real, RealScalar};
     pub use core;
 
     /// Converts a robot parameter (a struct field of type `f32` or `f64`) to the scalar type

@@ -170,7 +170,7 @@ mod tests {
             _: &[T; 2],
             _: &[T; 2],
         ) -> Result<[T; 2], NotPositiveDefinite> {
-            if sum(q) > T::ZERO {
+            if sum(q).all_positive() {
                 Ok([sum(q); 2])
             } else {
                 Err(NotPositiveDefinite)

@@ -2,14 +2,20 @@
 
 use core::ops::{Add, AddAssign, Div, Mul, MulAssign, Neg, Sub, SubAssign};
 
-/// A floating-point scalar: `f32` (for single-precision FPUs) or `f64`.
+/// What generated code computes with: a floating-point scalar (`f32`, for single-precision
+/// FPUs, or `f64`: [`RealScalar`]), or several of them in vector lanes ([`crate::lanes`]:
+/// `F64x4`, `F32x8`, …), one state per lane.
 ///
 /// Sine and cosine come from this crate's own shared `sin_cos` (one range reduction for both,
 /// within 1 ulp of std's in the common range; `libm` for arguments beyond 2^16 rad for `f64`
 /// and 2^12 rad for `f32`), with or without the `std` feature.
+///
+/// Not ordered: a lane type has no order. Generated code's one comparison, the pivot test of
+/// the methods that solve with the mass matrix, is [`Real::all_positive`]. `==` is true where
+/// every lane is equal.
 pub trait Real:
     Copy
-    + PartialOrd
+    + PartialEq
     + core::fmt::Debug
     + Default
     + Add<Output = Self>
@@ -25,10 +31,8 @@ pub trait Real:
     const ZERO: Self;
     /// One.
     const ONE: Self;
-    /// The nearest value to an `f64` constant.
+    /// The nearest value to an `f64` constant (in every lane).
     fn from_f64(value: f64) -> Self;
-    /// The value as `f64`.
-    fn to_f64(self) -> f64;
     /// Sine and cosine, in this order.
     fn sin_cos(self) -> (Self, Self);
     /// Sine.
@@ -54,6 +58,18 @@ pub trait Real:
     /// without the `std` feature (`f32` through `f64`); within 2 ulp of std's in `f64`, 1 ulp
     /// of the exact value in `f32`.
     fn tanh(self) -> Self;
+    /// Whether the value is positive (`> 0`, false for NaN), in every lane: the pivot test of
+    /// the LDLᵀ factorization in the methods that solve with the mass matrix. On lanes, `false`
+    /// where at least one lane is not positive, so that such a method's `Err` (or `None`) means
+    /// that at least one lane's state failed, and says nothing of the others.
+    fn all_positive(self) -> bool;
+}
+
+/// One number, `f32` or `f64`: a [`Real`] that is ordered and converts to `f64`, and the
+/// element of the lane types.
+pub trait RealScalar: Real + PartialOrd {
+    /// The value as `f64`.
+    fn to_f64(self) -> f64;
 }
 
 macro_rules! impl_real {
@@ -65,10 +81,6 @@ macro_rules! impl_real {
             #[allow(clippy::cast_possible_truncation)]
             fn from_f64(value: f64) -> Self {
                 value as $t
-            }
-            #[inline(always)]
-            fn to_f64(self) -> f64 {
-                f64::from(self)
             }
             #[inline(always)]
             fn sin_cos(self) -> (Self, Self) {
@@ -120,6 +132,17 @@ macro_rules! impl_real {
             fn tanh(self) -> Self {
                 $tanh(self)
             }
+            #[inline(always)]
+            fn all_positive(self) -> bool {
+                self > 0.0
+            }
+        }
+
+        impl RealScalar for $t {
+            #[inline(always)]
+            fn to_f64(self) -> f64 {
+                f64::from(self)
+            }
         }
     };
 }
@@ -148,7 +171,7 @@ fn tanh_f32(x: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::Real;
+    use super::{Real, RealScalar};
 
     #[test]
     fn sin_cos_agree_with_sin_and_cos() {
@@ -167,7 +190,9 @@ mod tests {
     #[test]
     fn conversions() {
         assert_eq!(<f32 as Real>::from_f64(0.5), 0.5f32);
-        assert_eq!(Real::to_f64(0.25f32), 0.25);
+        assert_eq!(RealScalar::to_f64(0.25f32), 0.25);
+        assert!(Real::all_positive(f64::MIN_POSITIVE));
+        assert!(!Real::all_positive(0.0f32) && !Real::all_positive(f64::NAN));
         assert_eq!(<f64 as Real>::ZERO + <f64 as Real>::ONE, 1.0);
     }
 }

@@ -101,7 +101,9 @@ impl Emitter<'_> {
 
     /// `Some(value)` where every pivot is positive (false for NaN), else `None`; the value is
     /// computed either way, since floating-point division by zero does not trap. A constant
-    /// positive pivot needs no test.
+    /// positive pivot needs no test. The test is `Real::all_positive`, not `>`: on the lane
+    /// types (which have no order) it is true where every lane is positive, so a `None` there
+    /// means that at least one lane failed.
     fn checked(&mut self, pivots: &[NodeId], value: &TokenStream) -> TokenStream {
         let graph = self.graph;
         let positive = |id: NodeId| matches!(graph.node(id), Node::Const(c) if c.to_f64() > 0.0);
@@ -110,7 +112,7 @@ impl Emitter<'_> {
             .filter(|&&id| !positive(id))
             .map(|&id| {
                 let d = self.expr(id, Place::Top);
-                quote!(#d > T::ZERO)
+                quote!(T::all_positive(#d))
             })
             .collect();
         if tests.is_empty() {

@@ -62,15 +62,18 @@ mod four;
 mod reduction;
 mod scalar;
 
+// `pub(crate)`: the lane types (`crate::lanes`) call their register forms.
 #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
 #[allow(unsafe_code)]
-mod avx2_f64;
-#[cfg(all(target_arch = "x86_64", not(target_feature = "avx2")))]
-#[allow(unsafe_code)]
-mod sse2_f64;
+pub(crate) mod avx2_f64;
+// In every x86-64 build: `F64x2` uses it with AVX2 too, where `sin_cos_4` does not.
 #[cfg(target_arch = "x86_64")]
 #[allow(unsafe_code)]
-mod sse_f32;
+#[cfg_attr(target_feature = "avx2", allow(dead_code))]
+pub(crate) mod sse2_f64;
+#[cfg(target_arch = "x86_64")]
+#[allow(unsafe_code)]
+pub(crate) mod sse_f32;
 
 pub(crate) use four::{sin_cos_4_f32, sin_cos_4_f64, sin_cos_8_f32, sin_cos_8_f64};
 pub(crate) use scalar::{sin_cos_f32, sin_cos_f64};

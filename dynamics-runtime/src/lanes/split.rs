@@ -1,0 +1,88 @@
+//! From states to lanes and back: [`gather`] puts `L` states side by side, [`SplitLanes`]
+//! takes a result of lanes apart into `L` results.
+
+use super::{F32x4, F32x8, F64x2, F64x4, Lanes};
+use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Pose};
+
+/// `L` states of `N` joint values (`states[l]` is lane `l`'s) as `N` lane values, the
+/// argument of a generated method: lane `l` of element `j` is `states[l][j]`.
+///
+/// ```
+/// use dynamics_runtime::lanes::{gather, F64x4, SplitLanes};
+/// let q: [F64x4; 2] = gather(&[[0.0, 1.0], [0.1, 1.1], [0.2, 1.2], [0.3, 1.3]]);
+/// assert_eq!(q[1].to_array(), [1.0, 1.1, 1.2, 1.3]);
+/// assert_eq!(q.split_lanes()[2], [0.2, 1.2]);
+/// ```
+#[must_use]
+#[inline(always)]
+pub fn gather<V: Lanes<L>, const L: usize, const N: usize>(
+    states: &[[V::Scalar; N]; L],
+) -> [V; N] {
+    core::array::from_fn(|j| V::from_array(core::array::from_fn(|l| states[l][j])))
+}
+
+/// A value of lanes (a lane type, or arrays, poses or derivatives of them) taken apart into
+/// one value per lane, of the same shape in the lanes' scalar.
+pub trait SplitLanes<const L: usize> {
+    /// The value of one lane: `f64` for `F64x4`, `[[f64; N]; N]` for `[[F64x4; N]; N]`, ….
+    type Single: Copy;
+    /// The value of each lane, first to last.
+    fn split_lanes(self) -> [Self::Single; L];
+}
+
+/// [`SplitLanes`] of a lane type: its array.
+macro_rules! split_lane_type {
+    ($($name:ident: $e:ident x $lanes:literal),*) => {$(
+        impl SplitLanes<$lanes> for $name {
+            type Single = $e;
+            #[inline(always)]
+            fn split_lanes(self) -> [$e; $lanes] {
+                self.to_array()
+            }
+        }
+    )*};
+}
+
+split_lane_type!(F64x4: f64 x 4, F64x2: f64 x 2, F32x8: f32 x 8, F32x4: f32 x 4);
+
+impl<X: SplitLanes<L>, const L: usize, const N: usize> SplitLanes<L> for [X; N] {
+    type Single = [X::Single; N];
+    #[inline(always)]
+    fn split_lanes(self) -> [[X::Single; N]; L] {
+        let parts = self.map(X::split_lanes);
+        core::array::from_fn(|l| core::array::from_fn(|j| parts[j][l]))
+    }
+}
+
+impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for Pose<X> {
+    type Single = Pose<X::Single>;
+    #[inline(always)]
+    fn split_lanes(self) -> [Pose<X::Single>; L] {
+        let (rotation, position) = (self.rotation.split_lanes(), self.position.split_lanes());
+        core::array::from_fn(|l| Pose {
+            rotation: rotation[l],
+            position: position[l],
+        })
+    }
+}
+
+impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for InverseDynamicsDerivatives<X> {
+    type Single = InverseDynamicsDerivatives<X::Single>;
+    #[inline(always)]
+    fn split_lanes(self) -> [Self::Single; L] {
+        let blocks = [self.dtau_dq, self.dtau_dqd].split_lanes();
+        blocks.map(InverseDynamicsDerivatives::from_blocks)
+    }
+}
+
+impl<Y: SplitLanes<L>, X: SplitLanes<L>, const L: usize> SplitLanes<L>
+    for ForwardDynamicsDerivatives<Y, X>
+{
+    type Single = ForwardDynamicsDerivatives<Y::Single, X::Single>;
+    #[inline(always)]
+    fn split_lanes(self) -> [Self::Single; L] {
+        let qdd = self.qdd.split_lanes();
+        let blocks = [self.dqdd_dq, self.dqdd_dqd, self.dqdd_dtau].split_lanes();
+        core::array::from_fn(|l| ForwardDynamicsDerivatives::from_parts((qdd[l], blocks[l])))
+    }
+}

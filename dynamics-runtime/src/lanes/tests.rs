@@ -1,0 +1,83 @@
+//! Each lane against the scalar, bit for bit, operation by operation.
+
+use super::{gather, F32x4, F32x8, F64x2, F64x4, Lanes, SplitLanes};
+use crate::Real;
+
+/// Arguments that take every path: ordinary, tiny, huge, signed zeros, infinities, NaN.
+const SPECIAL: [f64; 12] = [
+    0.7,
+    -2.5,
+    1e-30,
+    -0.0,
+    0.0,
+    1e6,
+    -3e5,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NAN,
+    123.456,
+    -1.0,
+];
+
+/// Every unary and binary operation of `V` on lanes of `xs`, against `E` lane by lane.
+fn check<V: Lanes<L>, const L: usize>(xs: &[V::Scalar], bits: impl Fn(V::Scalar) -> u64) {
+    let same = |v: V, f: &dyn Fn(usize) -> V::Scalar, what: &str| {
+        for (l, x) in v.to_array().into_iter().enumerate() {
+            assert_eq!(bits(x), bits(f(l)), "{what}, lane {l}");
+        }
+    };
+    for start in 0..xs.len() {
+        let lane = |k: usize| core::array::from_fn(|l| xs[(start + l * 5 + k) % xs.len()]);
+        let (a, b, c) = (lane(0), lane(1), lane(2));
+        let (va, vb, vc) = (V::from_array(a), V::from_array(b), V::from_array(c));
+        same(va + vb, &|l| a[l] + b[l], "+");
+        same(va - vb, &|l| a[l] - b[l], "-");
+        same(va * vb, &|l| a[l] * b[l], "*");
+        same(va / vb, &|l| a[l] / b[l], "/");
+        same(-va, &|l| -a[l], "neg");
+        same(va.mul_add(vb, vc), &|l| a[l].mul_add(b[l], c[l]), "mul_add");
+        same(va.sign(), &|l| a[l].sign(), "sign");
+        same(va.tanh(), &|l| a[l].tanh(), "tanh");
+        same(va.sin(), &|l| a[l].sin(), "sin");
+        same(va.cos(), &|l| a[l].cos(), "cos");
+        let (s4, _) = V::sin_cos_4([va, vb, vc, va]);
+        same(s4[1], &|l| b[l].sin(), "sin_cos_4");
+        let (_, c8) = V::sin_cos_8([va, vb, vc, va, vb, vc, va, vb]);
+        same(c8[5], &|l| c[l].cos(), "sin_cos_8");
+        assert_eq!(va.all_positive(), a.iter().all(|&x| x.all_positive()));
+        let copy = va;
+        assert_eq!(va == copy, a.iter().zip(&a).all(|(x, y)| x == y));
+    }
+    same(V::from_f64(0.1), &|_| V::Scalar::from_f64(0.1), "from_f64");
+    same(V::ZERO + V::ONE, &|_| V::Scalar::ONE, "constants");
+    same(V::default(), &|_| V::Scalar::ZERO, "default");
+}
+
+#[test]
+#[allow(clippy::cast_possible_truncation)]
+fn every_operation_is_the_scalars_lane_by_lane() {
+    let f32s: Vec<f32> = SPECIAL.iter().map(|&x| x as f32).collect();
+    check::<F64x4, 4>(&SPECIAL, f64::to_bits);
+    check::<F64x2, 2>(&SPECIAL, f64::to_bits);
+    check::<F32x8, 8>(&f32s, |x| u64::from(x.to_bits()));
+    check::<F32x4, 4>(&f32s, |x| u64::from(x.to_bits()));
+}
+
+#[test]
+fn one_failing_lane_fails_the_pivot_test() {
+    assert!(F64x4::from_array([1.0, 2.0, 1e-300, 3.0]).all_positive());
+    assert!(!F64x4::from_array([1.0, 2.0, 0.0, 3.0]).all_positive());
+    assert!(!F32x8::from_array([1.0, 2.0, 1.0, 3.0, 1.0, -1.0, 1.0, 1.0]).all_positive());
+    assert!(!F64x2::from_array([f64::NAN, 1.0]).all_positive());
+}
+
+#[test]
+fn gather_and_split_are_inverse() {
+    let states = [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]];
+    let v: [F64x2; 3] = gather(&states);
+    assert_eq!(v[2].to_array(), [3.0, 6.0]);
+    assert_eq!(v.split_lanes(), states);
+    let m = [v, v].split_lanes();
+    assert_eq!(m[1], [[4.0, 5.0, 6.0]; 2]);
+    assert_eq!(format!("{:?}", v[0]), "F64x2([1.0, 4.0])");
+}

@@ -1,0 +1,228 @@
+//! The x86-64 backends: one SSE2 register (`F64x2`, `F32x4`, in every x86-64 build) or one AVX
+//! register (`F64x4`, `F32x8`, where the build enables AVX2), each operation one instruction
+//! on all lanes, the same IEEE operation as the scalar's on each.
+//!
+//! SAFETY (every `unsafe` block of this file): the intrinsics require the target features of
+//! their module (SSE2, or AVX and AVX2), which the build enables wherever the module is
+//! compiled (the `cfg`s on the modules: SSE2 is part of every x86-64 target). Loads and stores
+//! go through arrays of exactly the register's size. Newer compilers treat the intrinsics as
+//! safe where the build enables their feature: hence `unused_unsafe` allowed.
+#![allow(unused_unsafe)]
+
+/// A backend module `$m`: the register `$v` of `$lanes` × `$e`, and its operations by the
+/// intrinsics given.
+macro_rules! x86_backend {
+    (
+        $m:ident, $e:ident, $lanes:literal, $v:ident,
+        set1: $set1:ident, loadu: $loadu:ident, storeu: $storeu:ident,
+        add: $add:ident, sub: $sub:ident, mul: $mul:ident, div: $div:ident,
+        and: $and:ident, or: $or:ident, andnot: $andnot:ident, xor: $xor:ident,
+        fmadd: $fmadd:ident, movemask: $movemask:ident,
+        gt: $gt:expr, lt: $lt:expr, eq: $eq:expr,
+        sin_cos: $sin_cos:path $(,)?
+    ) => {
+        pub(in crate::lanes) mod $m {
+            #[allow(clippy::wildcard_imports)]
+            use core::arch::x86_64::*;
+
+            pub(in crate::lanes) type V = $v;
+
+            /// All lanes set in a comparison's mask.
+            const ALL: i32 = (1 << $lanes) - 1;
+
+            #[inline(always)]
+            pub(in crate::lanes) const fn constant(lanes: [$e; $lanes]) -> V {
+                // SAFETY: the register and the array have the same size, and every bit pattern
+                // is a valid register.
+                unsafe { core::mem::transmute::<[$e; $lanes], V>(lanes) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn splat(x: $e) -> V {
+                unsafe { $set1(x) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn from_array(lanes: [$e; $lanes]) -> V {
+                unsafe { $loadu(lanes.as_ptr()) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn to_array(v: V) -> [$e; $lanes] {
+                let mut out = [0.0; $lanes];
+                unsafe { $storeu(out.as_mut_ptr(), v) };
+                out
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn add(a: V, b: V) -> V {
+                unsafe { $add(a, b) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn sub(a: V, b: V) -> V {
+                unsafe { $sub(a, b) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn mul(a: V, b: V) -> V {
+                unsafe { $mul(a, b) }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn div(a: V, b: V) -> V {
+                unsafe { $div(a, b) }
+            }
+            /// The sign bit flipped, as the scalar's `-x`.
+            #[inline(always)]
+            pub(in crate::lanes) fn neg(a: V) -> V {
+                unsafe { $xor(a, $set1(-0.0)) }
+            }
+            /// Fused exactly where the scalar `Real::mul_add` is (std and FMA; x86-64 is not
+            /// aarch64), else a product and a sum, two roundings as there.
+            #[inline(always)]
+            pub(in crate::lanes) fn mul_add(a: V, b: V, c: V) -> V {
+                #[cfg(all(feature = "std", target_feature = "fma"))]
+                return unsafe { $fmadd(a, b, c) };
+                #[cfg(not(all(feature = "std", target_feature = "fma")))]
+                return unsafe { $add($mul(a, b), c) };
+            }
+            /// 1 where `a > 0`, −1 where `a < 0`, else `a·0` (±0, or the NaN), as the scalar.
+            #[inline(always)]
+            pub(in crate::lanes) fn sign(a: V) -> V {
+                unsafe {
+                    let zero = $set1(0.0);
+                    let (gt, lt) = (($gt)(a, zero), ($lt)(a, zero));
+                    let ones = $or($and(gt, $set1(1.0)), $and(lt, $set1(-1.0)));
+                    $or(ones, $andnot($or(gt, lt), $mul(a, zero)))
+                }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn all_positive(a: V) -> bool {
+                unsafe { $movemask(($gt)(a, $set1(0.0))) == ALL }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn all_eq(a: V, b: V) -> bool {
+                unsafe { $movemask(($eq)(a, b)) == ALL }
+            }
+            #[inline(always)]
+            pub(in crate::lanes) fn sin_cos(a: V) -> (V, V) {
+                $sin_cos(a)
+            }
+        }
+    };
+}
+
+x86_backend!(
+    f64x2, f64, 2, __m128d,
+    set1: _mm_set1_pd, loadu: _mm_loadu_pd, storeu: _mm_storeu_pd,
+    add: _mm_add_pd, sub: _mm_sub_pd, mul: _mm_mul_pd, div: _mm_div_pd,
+    and: _mm_and_pd, or: _mm_or_pd, andnot: _mm_andnot_pd, xor: _mm_xor_pd,
+    fmadd: _mm_fmadd_pd, movemask: _mm_movemask_pd,
+    gt: |a, b| _mm_cmpgt_pd(a, b), lt: |a, b| _mm_cmplt_pd(a, b), eq: |a, b| _mm_cmpeq_pd(a, b),
+    sin_cos: super::sin_cos_f64x2,
+);
+
+x86_backend!(
+    f32x4, f32, 4, __m128,
+    set1: _mm_set1_ps, loadu: _mm_loadu_ps, storeu: _mm_storeu_ps,
+    add: _mm_add_ps, sub: _mm_sub_ps, mul: _mm_mul_ps, div: _mm_div_ps,
+    and: _mm_and_ps, or: _mm_or_ps, andnot: _mm_andnot_ps, xor: _mm_xor_ps,
+    fmadd: _mm_fmadd_ps, movemask: _mm_movemask_ps,
+    gt: |a, b| _mm_cmpgt_ps(a, b), lt: |a, b| _mm_cmplt_ps(a, b), eq: |a, b| _mm_cmpeq_ps(a, b),
+    sin_cos: super::sin_cos_f32x4,
+);
+
+#[cfg(target_feature = "avx2")]
+x86_backend!(
+    f64x4, f64, 4, __m256d,
+    set1: _mm256_set1_pd, loadu: _mm256_loadu_pd, storeu: _mm256_storeu_pd,
+    add: _mm256_add_pd, sub: _mm256_sub_pd, mul: _mm256_mul_pd, div: _mm256_div_pd,
+    and: _mm256_and_pd, or: _mm256_or_pd, andnot: _mm256_andnot_pd, xor: _mm256_xor_pd,
+    fmadd: _mm256_fmadd_pd, movemask: _mm256_movemask_pd,
+    gt: |a, b| _mm256_cmp_pd::<_CMP_GT_OQ>(a, b),
+    lt: |a, b| _mm256_cmp_pd::<_CMP_LT_OQ>(a, b),
+    eq: |a, b| _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
+    sin_cos: super::sin_cos_f64x4,
+);
+
+#[cfg(target_feature = "avx2")]
+x86_backend!(
+    f32x8, f32, 8, __m256,
+    set1: _mm256_set1_ps, loadu: _mm256_loadu_ps, storeu: _mm256_storeu_ps,
+    add: _mm256_add_ps, sub: _mm256_sub_ps, mul: _mm256_mul_ps, div: _mm256_div_ps,
+    and: _mm256_and_ps, or: _mm256_or_ps, andnot: _mm256_andnot_ps, xor: _mm256_xor_ps,
+    fmadd: _mm256_fmadd_ps, movemask: _mm256_movemask_ps,
+    gt: |a, b| _mm256_cmp_ps::<_CMP_GT_OQ>(a, b),
+    lt: |a, b| _mm256_cmp_ps::<_CMP_LT_OQ>(a, b),
+    eq: |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
+    sin_cos: super::sin_cos_f32x8,
+);
+
+use crate::trig::{sin_cos_f32, sin_cos_f64, sse2_f64, sse_f32};
+use core::arch::x86_64::{__m128, __m128d};
+#[cfg(target_feature = "avx2")]
+use {
+    crate::trig::avx2_f64,
+    core::arch::x86_64::{
+        __m256, __m256d, _mm256_castps256_ps128, _mm256_extractf128_ps, _mm256_set_m128,
+    },
+};
+
+/// Lanes outside the kernels' fast range (tiny, huge, infinite or NaN): each by the scalar
+/// `sin_cos`, which takes the same path for an argument in the range and its own for the
+/// others, so every lane is the scalar's.
+#[cold]
+#[inline(never)]
+fn one_by_one<E: Copy, const L: usize>(
+    x: [E; L],
+    sin_cos: impl Fn(E) -> (E, E),
+) -> ([E; L], [E; L]) {
+    let both = x.map(sin_cos);
+    (both.map(|p| p.0), both.map(|p| p.1))
+}
+
+/// Sines and cosines of two `f64` lanes: the SSE2 kernels of `sin_cos_4` on one register.
+#[inline(always)]
+fn sin_cos_f64x2(x: __m128d) -> (__m128d, __m128d) {
+    unsafe {
+        if sse2_f64::in_fast_range_v(x) {
+            return sse2_f64::fast_2_v(x);
+        }
+    }
+    let (s, c) = one_by_one(f64x2::to_array(x), sin_cos_f64);
+    (f64x2::from_array(s), f64x2::from_array(c))
+}
+
+/// Sines and cosines of four `f32` lanes: the SSE kernels of `sin_cos_4`.
+#[inline(always)]
+fn sin_cos_f32x4(x: __m128) -> (__m128, __m128) {
+    unsafe {
+        if sse_f32::in_fast_range_v(x) {
+            return sse_f32::fast_4_v(x);
+        }
+    }
+    let (s, c) = one_by_one(f32x4::to_array(x), sin_cos_f32);
+    (f32x4::from_array(s), f32x4::from_array(c))
+}
+
+/// Sines and cosines of four `f64` lanes: the AVX2 kernels of `sin_cos_4`.
+#[cfg(target_feature = "avx2")]
+#[inline(always)]
+fn sin_cos_f64x4(x: __m256d) -> (__m256d, __m256d) {
+    unsafe {
+        if avx2_f64::in_fast_range_v(x) {
+            return avx2_f64::fast_4_v(x);
+        }
+    }
+    let (s, c) = one_by_one(f64x4::to_array(x), sin_cos_f64);
+    (f64x4::from_array(s), f64x4::from_array(c))
+}
+
+/// Sines and cosines of eight `f32` lanes: the SSE kernels on each half.
+#[cfg(target_feature = "avx2")]
+#[inline(always)]
+fn sin_cos_f32x8(x: __m256) -> (__m256, __m256) {
+    unsafe {
+        let (lo, hi) = (_mm256_castps256_ps128(x), _mm256_extractf128_ps::<1>(x));
+        if sse_f32::in_fast_range_v(lo) && sse_f32::in_fast_range_v(hi) {
+            let ((s0, c0), (s1, c1)) = (sse_f32::fast_4_v(lo), sse_f32::fast_4_v(hi));
+            return (_mm256_set_m128(s1, s0), _mm256_set_m128(c1, c0));
+        }
+    }
+    let (s, c) = one_by_one(f32x8::to_array(x), sin_cos_f32);
+    (f32x8::from_array(s), f32x8::from_array(c))
+}
