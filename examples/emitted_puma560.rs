@@ -3194,8 +3194,8 @@ mod __forward {
             mi5_5,
             ..
         } = configuration(p_, q_);
-        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
-            && u84 > T::ZERO && u88 > T::ZERO
+        if T::all_positive(&u39) && T::all_positive(&u60) && T::all_positive(&u70)
+            && T::all_positive(&u78) && T::all_positive(&u84) && T::all_positive(&u88)
         {
             ::core::option::Option::Some([
                 [mi1_1, mi1_2, mi1_3, mi1_4, mi1_5, mi1_6],
@@ -3511,8 +3511,8 @@ mod __forward {
                             ),
                     ),
             );
-        if u39 > T::ZERO && u60 > T::ZERO && u70 > T::ZERO && u78 > T::ZERO
-            && u84 > T::ZERO && u88 > T::ZERO
+        if T::all_positive(&u39) && T::all_positive(&u60) && T::all_positive(&u70)
+            && T::all_positive(&u78) && T::all_positive(&u84) && T::all_positive(&u88)
         {
             ::core::option::Option::Some([qdd1, qdd2, qdd3, qdd4, qdd5, qdd6])
         } else {

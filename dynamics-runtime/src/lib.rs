@@ -73,8 +73,8 @@ pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor,
 };
 pub use crate::factor::NotPositiveDefinite;
-pub use crate::pose::Pose;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
+pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};
 
 #[cfg(feature = "derive")]
@@ -84,7 +84,7 @@ pub use dynamics_macros::Dynamics;
 #[doc(hidden)]
 pub mod __private {
     pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
-pub use crate::real::{Real, RealScalar};
+    pub use crate::real::{Real, RealScalar};
     pub use core;
 
     /// Converts a robot parameter (a struct field of type `f32` or `f64`) to the scalar type

@@ -62,7 +62,11 @@ pub trait Real:
     /// the LDLᵀ factorization in the methods that solve with the mass matrix. On lanes, `false`
     /// where at least one lane is not positive, so that such a method's `Err` (or `None`) means
     /// that at least one lane's state failed, and says nothing of the others.
-    fn all_positive(self) -> bool;
+    ///
+    /// By reference, as `>` takes its operands: generated code written `T::all_positive(&d)`
+    /// compiles for `f32` and `f64` to the machine code of `d > T::ZERO`, instruction for
+    /// instruction (by value, the compiler orders some operations differently).
+    fn all_positive(&self) -> bool;
 }
 
 /// One number, `f32` or `f64`: a [`Real`] that is ordered and converts to `f64`, and the
@@ -133,8 +137,8 @@ macro_rules! impl_real {
                 $tanh(self)
             }
             #[inline(always)]
-            fn all_positive(self) -> bool {
-                self > 0.0
+            fn all_positive(&self) -> bool {
+                *self > 0.0
             }
         }
 
@@ -191,8 +195,8 @@ mod tests {
     fn conversions() {
         assert_eq!(<f32 as Real>::from_f64(0.5), 0.5f32);
         assert_eq!(RealScalar::to_f64(0.25f32), 0.25);
-        assert!(Real::all_positive(f64::MIN_POSITIVE));
-        assert!(!Real::all_positive(0.0f32) && !Real::all_positive(f64::NAN));
+        assert!(Real::all_positive(&f64::MIN_POSITIVE));
+        assert!(!Real::all_positive(&0.0f32) && !Real::all_positive(&f64::NAN));
         assert_eq!(<f64 as Real>::ZERO + <f64 as Real>::ONE, 1.0);
     }
 }

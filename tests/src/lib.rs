@@ -10,6 +10,7 @@
 
 pub mod book;
 pub mod interpret;
+pub mod lanes;
 pub mod printed;
 pub mod random;
 pub mod reference;

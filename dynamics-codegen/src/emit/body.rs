@@ -103,7 +103,8 @@ impl Emitter<'_> {
     /// computed either way, since floating-point division by zero does not trap. A constant
     /// positive pivot needs no test. The test is `Real::all_positive`, not `>`: on the lane
     /// types (which have no order) it is true where every lane is positive, so a `None` there
-    /// means that at least one lane failed.
+    /// means that at least one lane failed. By reference, as `>` takes its operands: the same
+    /// machine code as `d > T::ZERO` for `f64` and `f32`.
     fn checked(&mut self, pivots: &[NodeId], value: &TokenStream) -> TokenStream {
         let graph = self.graph;
         let positive = |id: NodeId| matches!(graph.node(id), Node::Const(c) if c.to_f64() > 0.0);
@@ -112,7 +113,7 @@ impl Emitter<'_> {
             .filter(|&&id| !positive(id))
             .map(|&id| {
                 let d = self.expr(id, Place::Top);
-                quote!(T::all_positive(#d))
+                quote!(T::all_positive(&#d))
             })
             .collect();
         if tests.is_empty() {

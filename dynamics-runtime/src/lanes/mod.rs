@@ -34,6 +34,7 @@
 //! (a number, arrays of them, a [`Pose`](crate::Pose), the derivatives' structs) apart into one
 //! result per state.
 
+#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
 mod portable;
 mod split;
 #[cfg(target_arch = "x86_64")]
@@ -182,7 +183,7 @@ macro_rules! lane_type {
                 Self::from_array(self.to_array().map(<$e as Real>::tanh))
             }
             #[inline(always)]
-            fn all_positive(self) -> bool {
+            fn all_positive(&self) -> bool {
                 $b::all_positive(self.0)
             }
         }
@@ -238,10 +239,10 @@ mod f64x4 {
         4,
         backend
     );
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
-    use super::x86::f64x4 as backend;
     #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
     use super::portable::f64x4 as backend;
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    use super::x86::f64x4 as backend;
 }
 
 mod f64x2 {

@@ -15,9 +15,7 @@ use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Pose};
 /// ```
 #[must_use]
 #[inline(always)]
-pub fn gather<V: Lanes<L>, const L: usize, const N: usize>(
-    states: &[[V::Scalar; N]; L],
-) -> [V; N] {
+pub fn gather<V: Lanes<L>, const L: usize, const N: usize>(states: &[[V::Scalar; N]; L]) -> [V; N] {
     core::array::from_fn(|j| V::from_array(core::array::from_fn(|l| states[l][j])))
 }
 

@@ -44,7 +44,7 @@ fn check<V: Lanes<L>, const L: usize>(xs: &[V::Scalar], bits: impl Fn(V::Scalar)
         same(s4[1], &|l| b[l].sin(), "sin_cos_4");
         let (_, c8) = V::sin_cos_8([va, vb, vc, va, vb, vc, va, vb]);
         same(c8[5], &|l| c[l].cos(), "sin_cos_8");
-        assert_eq!(va.all_positive(), a.iter().all(|&x| x.all_positive()));
+        assert_eq!(va.all_positive(), a.iter().all(Real::all_positive));
         let copy = va;
         assert_eq!(va == copy, a.iter().zip(&a).all(|(x, y)| x == y));
     }

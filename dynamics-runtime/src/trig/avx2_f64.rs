@@ -60,20 +60,7 @@ pub(super) unsafe fn in_fast_range_8(lo: [f64; 4], hi: [f64; 4]) -> bool {
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn inside(x: [f64; 4]) -> __m256d {
-    inside_v(_mm256_set_pd(x[3], x[2], x[1], x[0]))
-}
-
-/// Whether every lane of `x` is in the fast range, for the lane types.
-#[inline]
-#[target_feature(enable = "avx2")]
-pub(crate) unsafe fn in_fast_range_v(x: __m256d) -> bool {
-    _mm256_movemask_pd(inside_v(x)) == 0b1111
-}
-
-/// [`inside`] of a register.
-#[inline]
-#[target_feature(enable = "avx2")]
-unsafe fn inside_v(x: __m256d) -> __m256d {
+    let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
     let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
     let low = _mm256_cmp_pd::<_CMP_GE_OQ>(abs, _mm256_set1_pd(TINY_F64));
     let high = _mm256_cmp_pd::<_CMP_LE_OQ>(abs, _mm256_set1_pd(BOUND_F64));
@@ -85,14 +72,7 @@ unsafe fn inside_v(x: __m256d) -> __m256d {
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(super) unsafe fn fast_4(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
-    let (sin, cos) = fast_4_v(_mm256_set_pd(x[3], x[2], x[1], x[0]));
-    (lanes(sin), lanes(cos))
-}
-
-/// [`fast_4`] on a register, for the lane types (`crate::lanes`).
-#[inline]
-#[target_feature(enable = "avx2")]
-pub(crate) unsafe fn fast_4_v(x: __m256d) -> (__m256d, __m256d) {
+    let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
         x,
         |c: f64| _mm256_set1_pd(c),
@@ -112,7 +92,24 @@ pub(crate) unsafe fn fast_4_v(x: __m256d) -> (__m256d, __m256d) {
     let sin_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(bits, two));
     let cos_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(_mm256_add_epi64(bits, one), two));
     (
-        _mm256_xor_pd(sin_k, _mm256_castsi256_pd(sin_sign)),
-        _mm256_xor_pd(cos_k, _mm256_castsi256_pd(cos_sign)),
+        lanes(_mm256_xor_pd(sin_k, _mm256_castsi256_pd(sin_sign))),
+        lanes(_mm256_xor_pd(cos_k, _mm256_castsi256_pd(cos_sign))),
     )
+}
+
+/// [`in_fast_range`] of a register, for the lane types (`crate::lanes`). Through the array
+/// form, which the compiler folds away, so that the scalar path's code stays as it was.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(crate) unsafe fn in_fast_range_v(x: __m256d) -> bool {
+    in_fast_range(lanes(x))
+}
+
+/// [`fast_4`] of a register, for the lane types.
+#[inline]
+#[target_feature(enable = "avx2")]
+pub(crate) unsafe fn fast_4_v(x: __m256d) -> (__m256d, __m256d) {
+    let (sin, cos) = fast_4(lanes(x));
+    let load = |v: [f64; 4]| _mm256_set_pd(v[3], v[2], v[1], v[0]);
+    (load(sin), load(cos))
 }

@@ -48,24 +48,7 @@ pub(super) unsafe fn in_fast_range(x: [f64; 4]) -> bool {
 #[inline]
 #[target_feature(enable = "sse2")]
 pub(super) unsafe fn fast_2(x: [f64; 2]) -> ([f64; 2], [f64; 2]) {
-    let (sin, cos) = fast_2_v(_mm_set_pd(x[1], x[0]));
-    (lanes(sin), lanes(cos))
-}
-
-/// Whether both lanes of `x` are in the fast range, for the lane types (`crate::lanes`).
-#[inline]
-#[target_feature(enable = "sse2")]
-pub(crate) unsafe fn in_fast_range_v(x: __m128d) -> bool {
-    let abs = _mm_andnot_pd(_mm_set1_pd(-0.0), x);
-    let low = _mm_cmpge_pd(abs, _mm_set1_pd(TINY_F64));
-    let high = _mm_cmple_pd(abs, _mm_set1_pd(BOUND_F64));
-    _mm_movemask_pd(_mm_and_pd(low, high)) == 0b11
-}
-
-/// [`fast_2`] on a register, for the lane types.
-#[inline]
-#[target_feature(enable = "sse2")]
-pub(crate) unsafe fn fast_2_v(x: __m128d) -> (__m128d, __m128d) {
+    let x = _mm_set_pd(x[1], x[0]);
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
         x,
         |c: f64| _mm_set1_pd(c),
@@ -89,7 +72,25 @@ pub(crate) unsafe fn fast_2_v(x: __m128d) -> (__m128d, __m128d) {
     let sin_sign = _mm_slli_epi64::<62>(_mm_and_si128(bits, two));
     let cos_sign = _mm_slli_epi64::<62>(_mm_and_si128(_mm_add_epi64(bits, one), two));
     (
-        _mm_xor_pd(sin_k, _mm_castsi128_pd(sin_sign)),
-        _mm_xor_pd(cos_k, _mm_castsi128_pd(cos_sign)),
+        lanes(_mm_xor_pd(sin_k, _mm_castsi128_pd(sin_sign))),
+        lanes(_mm_xor_pd(cos_k, _mm_castsi128_pd(cos_sign))),
     )
+}
+
+/// Whether both lanes of a register are in the fast range, for the lane types
+/// (`crate::lanes`).
+#[inline]
+#[target_feature(enable = "sse2")]
+pub(crate) unsafe fn in_fast_range_v(x: __m128d) -> bool {
+    let [a, b] = lanes(x);
+    in_fast_range([a, b, a, b])
+}
+
+/// [`fast_2`] of a register, for the lane types. Through the array form, which the compiler
+/// folds away, so that the scalar path's code stays as it was.
+#[inline]
+#[target_feature(enable = "sse2")]
+pub(crate) unsafe fn fast_2_v(x: __m128d) -> (__m128d, __m128d) {
+    let (sin, cos) = fast_2(lanes(x));
+    (_mm_set_pd(sin[1], sin[0]), _mm_set_pd(cos[1], cos[0]))
 }

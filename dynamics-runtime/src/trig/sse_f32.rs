@@ -45,20 +45,7 @@ pub(super) unsafe fn in_fast_range_8(lo: [f32; 4], hi: [f32; 4]) -> bool {
 #[inline]
 #[target_feature(enable = "sse2")]
 unsafe fn inside(x: [f32; 4]) -> __m128 {
-    inside_v(core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]))
-}
-
-/// Whether every lane of `x` is in the fast range, for the lane types.
-#[inline]
-#[target_feature(enable = "sse2")]
-pub(crate) unsafe fn in_fast_range_v(x: __m128) -> bool {
-    _mm_movemask_ps(inside_v(x)) == 0b1111
-}
-
-/// [`inside`] of a register.
-#[inline]
-#[target_feature(enable = "sse2")]
-unsafe fn inside_v(x: __m128) -> __m128 {
+    let x = core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]);
     let abs = _mm_andnot_ps(_mm_set1_ps(-0.0), x);
     let low = _mm_cmpge_ps(abs, _mm_set1_ps(TINY_F32));
     let high = _mm_cmple_ps(abs, _mm_set1_ps(BOUND_F32));
@@ -69,14 +56,7 @@ unsafe fn inside_v(x: __m128) -> __m128 {
 #[inline]
 #[target_feature(enable = "sse2")]
 pub(super) unsafe fn fast_4(x: [f32; 4]) -> ([f32; 4], [f32; 4]) {
-    let (sin, cos) = fast_4_v(core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]));
-    (lanes(sin), lanes(cos))
-}
-
-/// [`fast_4`] on a register, for the lane types (`crate::lanes`).
-#[inline]
-#[target_feature(enable = "sse2")]
-pub(crate) unsafe fn fast_4_v(x: __m128) -> (__m128, __m128) {
+    let x = core::arch::x86_64::_mm_set_ps(x[3], x[2], x[1], x[0]);
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f32!(
         x,
         |c: f32| _mm_set1_ps(c),
@@ -98,7 +78,24 @@ pub(crate) unsafe fn fast_4_v(x: __m128) -> (__m128, __m128) {
     let sin_sign = _mm_slli_epi32::<30>(_mm_and_si128(bits, two));
     let cos_sign = _mm_slli_epi32::<30>(_mm_and_si128(_mm_add_epi32(bits, one), two));
     (
-        _mm_xor_ps(sin_k, _mm_castsi128_ps(sin_sign)),
-        _mm_xor_ps(cos_k, _mm_castsi128_ps(cos_sign)),
+        lanes(_mm_xor_ps(sin_k, _mm_castsi128_ps(sin_sign))),
+        lanes(_mm_xor_ps(cos_k, _mm_castsi128_ps(cos_sign))),
     )
+}
+
+/// [`in_fast_range`] of a register, for the lane types (`crate::lanes`). Through the array
+/// form, which the compiler folds away, so that the scalar path's code stays as it was.
+#[inline]
+#[target_feature(enable = "sse2")]
+pub(crate) unsafe fn in_fast_range_v(x: __m128) -> bool {
+    in_fast_range(lanes(x))
+}
+
+/// [`fast_4`] of a register, for the lane types.
+#[inline]
+#[target_feature(enable = "sse2")]
+pub(crate) unsafe fn fast_4_v(x: __m128) -> (__m128, __m128) {
+    let (sin, cos) = fast_4(lanes(x));
+    let load = |v: [f32; 4]| core::arch::x86_64::_mm_set_ps(v[3], v[2], v[1], v[0]);
+    (load(sin), load(cos))
 }

@@ -119,3 +119,23 @@ pub fn torques_f64(arm: &TwoLink, q: &[f64; 6]) -> ([f64; 6], [f64; 2], [[f64; 6
             .dtau_dq,
     )
 }
+
+/// Random5's forward dynamics (at its inverse dynamics' torques) on four states at once in
+/// `f64` lanes (AVX2 registers where the build has AVX2, else arrays), the arm's inverse
+/// dynamics on eight in `f32` lanes: the lane types need nothing from std either.
+#[must_use]
+pub fn accelerations_lanes(arm: &TwoLink, q: &[[f64; 6]; 4]) -> ([[f64; 6]; 4], [[f32; 2]; 8]) {
+    use dynamics_runtime::lanes::{gather, SplitLanes};
+    use dynamics_runtime::{F32x8, F64x4};
+    let q: [F64x4; 6] = gather(q);
+    let zero = [F64x4::splat(0.0); 6];
+    let qf = [F32x8::splat(0.5), F32x8::splat(-0.25)];
+    let zf = [F32x8::splat(0.0); 2];
+    let tau = Random5.inverse_dynamics(&q, &zero, &zero);
+    // `Err` where at least one lane's mass matrix is not positive definite.
+    let qdd = Random5.forward_dynamics(&q, &zero, &tau).unwrap_or(zero);
+    (
+        qdd.split_lanes(),
+        arm.inverse_dynamics(&qf, &zf, &zf).split_lanes(),
+    )
+}

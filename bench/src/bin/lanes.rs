@@ -1,0 +1,122 @@
+//! Throughput of the lane types: PUMA 560's generated methods per state, one state at a time
+//! (`f64`, `f32`) against four or eight states a call (`F64x4`, `F32x8`: one AVX register each
+//! where the build enables AVX2, arrays otherwise), in Rust alone.
+//!
+//! ```text
+//! RUSTFLAGS="-C target-cpu=native" cargo run --release -p dynamics-bench --bin lanes
+//! ```
+//!
+//! 64 states (q, q̇, q̈ uniform in ±1.5, drawn by a fixed generator), gathered four or eight at a
+//! time into lanes beforehand. A round times each variant on all 64 states, 200 times over, the
+//! variants interleaved; the figure is the median over 31 rounds of the time per state. Results
+//! go through `std::hint::black_box`. No timing asserts: a measurement, not a test.
+
+use dynamics_bench::Puma560;
+use dynamics_runtime::lanes::{gather, Lanes};
+use dynamics_runtime::{Dynamics, DynamicsDerivatives, F32x8, F64x4, Real, RealScalar};
+use std::hint::black_box;
+use std::time::Instant;
+
+const STATES: usize = 64;
+const REPEATS: usize = 200;
+const ROUNDS: usize = 31;
+
+/// `q`, `q̇`, `q̈` of one state.
+type State<E> = [[E; 6]; 3];
+
+/// The states, drawn by SplitMix64.
+fn states<E: RealScalar>() -> Vec<State<E>> {
+    let mut s = 0x5eed_u64;
+    let mut draw = move || {
+        s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = s;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        #[allow(clippy::cast_precision_loss)]
+        let unit = ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64;
+        E::from_f64(3.0 * unit - 1.5)
+    };
+    (0..STATES)
+        .map(|_| core::array::from_fn(|_| core::array::from_fn(|_| draw())))
+        .collect()
+}
+
+/// The states `L` at a time in lanes.
+fn lanes<V: Lanes<L>, const L: usize>(states: &[State<V::Scalar>]) -> Vec<State<V>> {
+    states
+        .chunks_exact(L)
+        .map(|c| core::array::from_fn(|k| gather(&core::array::from_fn(|l| c[l][k]))))
+        .collect()
+}
+
+/// One method of the robot, on one call's inputs.
+type Method<T> = fn(&State<T>) -> T;
+
+/// A sum of the results, so that nothing is left out.
+fn methods<T: Real>() -> [(&'static str, Method<T>); 4] {
+    [
+        ("inverse_dynamics", |s| {
+            Puma560.inverse_dynamics(&s[0], &s[1], &s[2])[5]
+        }),
+        ("mass_matrix", |s| Puma560.mass_matrix(&s[0])[2][4]),
+        ("forward_dynamics", |s| {
+            Puma560
+                .forward_dynamics(&s[0], &s[1], &s[2])
+                .map_or(T::ZERO, |a| a[5])
+        }),
+        ("inverse_dynamics_derivatives", |s| {
+            Puma560
+                .inverse_dynamics_derivatives(&s[0], &s[1], &s[2])
+                .dtau_dq[1][4]
+        }),
+    ]
+}
+
+/// Nanoseconds per state of `f` over `calls` (each of `per_call` states).
+fn time<T: Real>(f: Method<T>, calls: &[State<T>], per_call: usize) -> f64 {
+    let start = Instant::now();
+    for _ in 0..REPEATS {
+        for c in calls {
+            black_box(f(black_box(c)));
+        }
+    }
+    #[allow(clippy::cast_precision_loss)]
+    let states = (REPEATS * calls.len() * per_call) as f64;
+    start.elapsed().as_secs_f64() * 1e9 / states
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// The medians of one precision: one state a call (`T`) against lanes (`V`).
+fn compare<T: RealScalar, V: Lanes<L, Scalar = T>, const L: usize>(precision: &str) {
+    let singles = states::<T>();
+    let wide = lanes::<V, L>(&singles);
+    for ((name, one), (_, many)) in methods::<T>().into_iter().zip(methods::<V>()) {
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for _ in 0..ROUNDS {
+            a.push(time(one, &singles, 1));
+            b.push(time(many, &wide, L));
+        }
+        let (a, b) = (median(a), median(b));
+        println!(
+            "{name:<30} {precision}: {a:7.1} ns/state one at a time, {b:7.1} ns/state in {L} lanes ({:.2}×)",
+            a / b
+        );
+    }
+}
+
+fn main() {
+    println!(
+        "PUMA 560, {} build",
+        if cfg!(target_feature = "avx2") {
+            "AVX2"
+        } else {
+            "baseline (no AVX2)"
+        }
+    );
+    compare::<f64, F64x4, 4>("f64");
+    compare::<f32, F32x8, 8>("f32");
+}
