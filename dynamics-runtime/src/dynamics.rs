@@ -50,14 +50,14 @@ for_each_result!(declare_result_lookups $);
 macro_rules! declare_traits {
     ($(
         $(#[doc = $trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $supertrait:ident)?, nalgebra $_nalgebra:ident {
+        trait $trait:ident $(<$count:ident>)? $(: $supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
                 family $_family:ident { $($_family_row:tt)* }
                 methods {$(
                     $(#[doc = $doc:literal])*
-                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident $(, batch $_batch_fn:ident)? {
                         variant: $_variant:ident,
                         equation: $_equation:expr,
                         prefix: $_prefix:literal,

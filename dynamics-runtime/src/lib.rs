@@ -59,6 +59,8 @@ mod derivatives;
 // Before `nalgebra`, which reads its `nalgebra_result!` and `to_nalgebra!`.
 #[macro_use]
 mod dynamics;
+// After `dynamics`, whose `array_result!` it reads.
+pub mod batch;
 mod factor;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
@@ -68,6 +70,10 @@ mod real;
 pub mod statics;
 mod trig;
 
+pub use crate::batch::{
+    BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
+    DynamicsRegressorBatch,
+};
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor,

@@ -55,7 +55,7 @@ macro_rules! for_each_method {
             /// loops, no heap. Each is generic over the scalar, so one robot evaluates in `f32`
             /// or `f64`; the robot's parameters (struct fields) are converted to that scalar on
             /// each call.
-            trait Dynamics, nalgebra DynamicsNalgebra {
+            trait Dynamics, nalgebra DynamicsNalgebra, batch DynamicsBatch {
                 items {
                     /// Number of joints.
                     const DOF: usize = N;
@@ -70,7 +70,7 @@ macro_rules! for_each_method {
                 methods {
                     /// Mass matrix `M(q)`: the book's D_ij (eq. 6.43) plus actuator inertia
                     /// I_i(act) on the diagonal. Symmetric positive definite.
-                    fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na {
+                    fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na, batch mass_matrix_batch {
                         variant: MassMatrix,
                         equation: Some("6.43"),
                         prefix: "m",
@@ -81,7 +81,7 @@ macro_rules! for_each_method {
                     /// Coriolis matrix `C(q, qd)` with `C_ij = Σ_k D_ijk qd_k`, where the book's
                     /// D_ijk (eq. 6.44) are the Christoffel symbols of `M`. `Ṁ − 2C` is
                     /// skew-symmetric.
-                    fn coriolis_matrix(q, qd) -> matrix, nalgebra coriolis_matrix_na {
+                    fn coriolis_matrix(q, qd) -> matrix, nalgebra coriolis_matrix_na, batch coriolis_matrix_batch {
                         variant: CoriolisMatrix,
                         equation: Some("6.44"),
                         prefix: "cor",
@@ -89,7 +89,7 @@ macro_rules! for_each_method {
                         element: "C{i}{j} = sum of D{i}{j}k qd_k ({equation})",
                     }
                     /// Coriolis and centripetal torques `C(q, qd) qd = Σ_j Σ_k D_ijk qd_j qd_k`.
-                    fn coriolis_torques(q, qd) -> vector, nalgebra coriolis_torques_na {
+                    fn coriolis_torques(q, qd) -> vector, nalgebra coriolis_torques_na, batch coriolis_torques_batch {
                         variant: CoriolisTorques,
                         equation: None,
                         prefix: "cqd",
@@ -98,7 +98,7 @@ macro_rules! for_each_method {
                     }
                     /// Gravity torques `g(q)`: the book's D_i (eq. 6.45), plus joint spring torques
                     /// `k_i (q_i − q0_i)`.
-                    fn gravity_torques(q) -> vector, nalgebra gravity_torques_na {
+                    fn gravity_torques(q) -> vector, nalgebra gravity_torques_na, batch gravity_torques_batch {
                         variant: GravityTorques,
                         equation: Some("6.45"),
                         prefix: "g",
@@ -106,7 +106,7 @@ macro_rules! for_each_method {
                         element: "D{i} ({equation}), gravity and spring",
                     }
                     /// Bias torques `C(q, qd) qd + g(q)` (Pinocchio's "non-linear effects").
-                    fn bias_torques(q, qd) -> vector, nalgebra bias_torques_na {
+                    fn bias_torques(q, qd) -> vector, nalgebra bias_torques_na, batch bias_torques_batch {
                         variant: BiasTorques,
                         equation: None,
                         prefix: "h",
@@ -116,7 +116,7 @@ macro_rules! for_each_method {
                     /// Inverse dynamics `tau = M(q) qdd + C(q, qd) qd + g(q)` (eq. 6.46), actuator
                     /// inertia and springs included, and joint friction where the robot declares
                     /// it.
-                    fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na {
+                    fn inverse_dynamics(q, qd, qdd) -> vector, nalgebra inverse_dynamics_na, batch inverse_dynamics_batch {
                         variant: InverseDynamics,
                         equation: Some("6.46"),
                         prefix: "tau",
@@ -126,7 +126,7 @@ macro_rules! for_each_method {
                     /// Joint friction torques `f_v qd + f_c sign(qd) + f_0`, per joint, with
                     /// `sign(0) = 0` (`f_c tanh(qd / ε)` where a smoothing velocity ε is given).
                     /// Zero for a robot without friction; `inverse_dynamics` includes them.
-                    fn friction_torques(qd) -> vector, nalgebra friction_torques_na {
+                    fn friction_torques(qd) -> vector, nalgebra friction_torques_na, batch friction_torques_batch {
                         variant: FrictionTorques,
                         equation: None,
                         prefix: "f",
@@ -135,7 +135,7 @@ macro_rules! for_each_method {
                         default: zeros,
                     }
                     /// Kinetic energy `½ qdᵀ M(q) qd` (eq. 6.39), actuators included.
-                    fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na {
+                    fn kinetic_energy(q, qd) -> scalar, nalgebra kinetic_energy_na, batch kinetic_energy_batch {
                         variant: KineticEnergy,
                         equation: Some("6.39"),
                         prefix: "k",
@@ -144,7 +144,7 @@ macro_rules! for_each_method {
                     }
                     /// Potential energy `−Σ m_i gᵀ p_i + Σ ½ k_i (q_i − q0_i)²`, zero with every
                     /// centre of mass at the base origin and every spring at rest.
-                    fn potential_energy(q) -> scalar, nalgebra potential_energy_na {
+                    fn potential_energy(q) -> scalar, nalgebra potential_energy_na, batch potential_energy_batch {
                         variant: PotentialEnergy,
                         equation: None,
                         prefix: "p",
@@ -163,7 +163,7 @@ macro_rules! for_each_method {
                     /// The hand frame in the base frame, the book's `A_1 ⋯ A_n` followed by the
                     /// tool transform if the robot declares one: rotation and position
                     /// (`Pose::homogeneous` gives the 4×4 form).
-                    fn hand_pose(q) -> pose, nalgebra hand_pose_na {
+                    fn hand_pose(q) -> pose, nalgebra hand_pose_na, batch hand_pose_batch {
                         variant: HandPose,
                         equation: None,
                         prefix: "hand",
@@ -171,7 +171,7 @@ macro_rules! for_each_method {
                         element: "hand pose [R | p], row {i} column {j}",
                     }
                     /// The pose of every link frame in the base frame: link i at `A_1 ⋯ A_i`.
-                    fn link_poses(q) -> poses, nalgebra link_poses_na {
+                    fn link_poses(q) -> poses, nalgebra link_poses_na, batch link_poses_batch {
                         variant: LinkPoses,
                         equation: None,
                         prefix: "link",
@@ -181,7 +181,7 @@ macro_rules! for_each_method {
                     /// The hand's geometric Jacobian in the base frame: rows `[dx, dy, dz, δx, δy,
                     /// δz]`, the velocity of the hand's origin and the hand's angular velocity per
                     /// joint velocity, in base axes.
-                    fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na {
+                    fn hand_jacobian_in_base(q) -> jacobian, nalgebra hand_jacobian_in_base_na, batch hand_jacobian_in_base_batch {
                         variant: HandJacobianInBase,
                         equation: None,
                         prefix: "jb",
@@ -190,7 +190,7 @@ macro_rules! for_each_method {
                     }
                     /// The hand's Jacobian in the hand frame, the book's ᴴJ: rows `[dx, dy, dz, δx,
                     /// δy, δz]` along and about the hand frame's axes.
-                    fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na {
+                    fn hand_jacobian_in_hand(q) -> jacobian, nalgebra hand_jacobian_in_hand_na, batch hand_jacobian_in_hand_batch {
                         variant: HandJacobianInHand,
                         equation: None,
                         prefix: "jh",
@@ -199,7 +199,7 @@ macro_rules! for_each_method {
                     }
                     /// `J̇ q̇` of `hand_jacobian_in_base`: the hand's
                     /// linear and angular acceleration at `qdd = 0`, in base axes.
-                    fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na {
+                    fn hand_acceleration_bias_in_base(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_base_na, batch hand_acceleration_bias_in_base_batch {
                         variant: HandAccelerationBiasInBase,
                         equation: None,
                         prefix: "ab",
@@ -209,7 +209,7 @@ macro_rules! for_each_method {
                     /// The same acceleration as `hand_acceleration_bias_in_base` in the hand's axes
                     /// (Pinocchio's classical acceleration in `LOCAL`; not `d(ᴴJ)/dt q̇`, which
                     /// also has the terms of the hand frame's own turning).
-                    fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na {
+                    fn hand_acceleration_bias_in_hand(q, qd) -> spatial, nalgebra hand_acceleration_bias_in_hand_na, batch hand_acceleration_bias_in_hand_batch {
                         variant: HandAccelerationBiasInHand,
                         equation: None,
                         prefix: "ah",
@@ -218,7 +218,7 @@ macro_rules! for_each_method {
                     }
                     /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]`
                     /// given in the hand frame, `T = ᴴJᵀ ᴴF` (eq. 6.64).
-                    fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na {
+                    fn joint_torques_for_hand_wrench(q, wrench) -> vector, nalgebra joint_torques_for_hand_wrench_na, batch joint_torques_for_hand_wrench_batch {
                         variant: JointTorquesForHandWrench,
                         equation: Some("6.64"),
                         prefix: "tf",
@@ -228,7 +228,7 @@ macro_rules! for_each_method {
                     /// The joint torques and forces that hold a wrench `[fx, fy, fz, mx, my, mz]`
                     /// given in base axes, its moment about the hand's origin: `T = Jᵀ F` with the
                     /// base-frame Jacobian.
-                    fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na {
+                    fn joint_torques_for_base_wrench(q, wrench) -> vector, nalgebra joint_torques_for_base_wrench_na, batch joint_torques_for_base_wrench_batch {
                         variant: JointTorquesForBaseWrench,
                         equation: Some("6.64"),
                         prefix: "tb",
@@ -247,7 +247,7 @@ macro_rules! for_each_method {
                     /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of
                     /// `M`; `Err(NotPositiveDefinite)` where a pivot of the factorization is not
                     /// positive (a robot whose parameters leave a joint without inertia).
-                    fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na {
+                    fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na, batch mass_matrix_inverse_batch {
                         variant: MassMatrixInverse,
                         equation: None,
                         prefix: "mi",
@@ -258,7 +258,7 @@ macro_rules! for_each_method {
                     /// friction where the robot declares it, through the LDLᵀ factorization of `M`:
                     /// the inverse of `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot
                     /// is not positive.
-                    fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na {
+                    fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na, batch forward_dynamics_batch {
                         variant: ForwardDynamics,
                         equation: None,
                         prefix: "qdd",
@@ -277,7 +277,7 @@ macro_rules! for_each_method {
             /// derivatives of its traced `τ` (forward differentiation at compile time, no finite
             /// differences, no automatic differentiation at run time), and `∂q̈/∂x = −M⁻¹ ∂τ/∂x`
             /// solved with the LDLᵀ of `M` (Carpentier and Mansard, RSS 2018).
-            trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra {
+            trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra, batch DynamicsDerivativesBatch {
                 items {}
                 /// The derivatives of inverse and forward dynamics.
                 family Derivatives {
@@ -291,7 +291,7 @@ macro_rules! for_each_method {
                     /// each `[[T; N]; N]` with row i the derivatives of `τ_i` (`∂τ/∂q̈` is
                     /// `mass_matrix(q)`). Friction's Coulomb term is taken as flat (`∂ sign(q̇)/∂q̇
                     /// = 0`), its smooth form differentiated.
-                    fn inverse_dynamics_derivatives(q, qd, qdd) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na {
+                    fn inverse_dynamics_derivatives(q, qd, qdd) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na, batch inverse_dynamics_derivatives_batch {
                         variant: InverseDynamicsDerivatives,
                         equation: None,
                         prefix: "dtau",
@@ -302,7 +302,7 @@ macro_rules! for_each_method {
                     /// `∂q̈/∂q̇` and `∂q̈/∂τ = M⁻¹`, the first two as `−M⁻¹ ∂τ/∂x` at that `q̈`,
                     /// solved with the LDLᵀ of `M`. `Err(NotPositiveDefinite)` where a pivot is not
                     /// positive.
-                    fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na {
+                    fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na, batch forward_dynamics_derivatives_batch {
                         variant: ForwardDynamicsDerivatives,
                         equation: None,
                         prefix: "dqdd",
@@ -323,7 +323,7 @@ macro_rules! for_each_method {
             /// or a URDF's link frame), in its axes:
             /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia's and friction's terms, linear
             /// in their coefficients (`joint_regressor`, `joint_parameters`), and the springs.
-            trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra {
+            trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
                 items {}
                 /// The joint torque regressor and the standard parameters.
                 family Regressor {
@@ -337,7 +337,7 @@ macro_rules! for_each_method {
                     /// derivative of joint i's torque by parameter k of link j, so that
                     /// `Σ_j Σ_k Y[i][j][k] π_jk` is the rigid bodies' part of
                     /// `inverse_dynamics` (without actuator inertia, friction and springs).
-                    fn regressor(q, qd, qdd) -> link_columns, nalgebra regressor_na {
+                    fn regressor(q, qd, qdd) -> link_columns, nalgebra regressor_na, batch regressor_batch {
                         variant: Regressor,
                         equation: None,
                         prefix: "y",
@@ -349,7 +349,7 @@ macro_rules! for_each_method {
                     /// the columns of joint i's actuator inertia, viscous, Coulomb and offset
                     /// friction (`joint_parameters`): with `regressor`, `inverse_dynamics` minus
                     /// the spring torques.
-                    fn joint_regressor(qd, qdd) -> joint_columns, nalgebra joint_regressor_na {
+                    fn joint_regressor(qd, qdd) -> joint_columns, nalgebra joint_regressor_na, batch joint_regressor_batch {
                         variant: JointRegressor,
                         equation: None,
                         prefix: "yj",
@@ -386,7 +386,7 @@ macro_rules! for_each_method {
             /// their number. Found exactly from the closed form; `dynamics inspect ROBOT
             /// --base-parameters` prints each as its grouping of standard parameters
             /// (`ZZR1 = ZZ1 + YY2 + …`).
-            trait DynamicsBaseParameters<B>: Dynamics, nalgebra DynamicsBaseParametersNalgebra {
+            trait DynamicsBaseParameters<B>: Dynamics, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
                 items {}
                 /// The base parameters and their reduced regressor.
                 family BaseParameters {
@@ -399,7 +399,7 @@ macro_rules! for_each_method {
                     /// The reduced regressor `Y_B(q, q̇, q̈)`: element `[i][b]` is the derivative
                     /// of joint i's torque by base parameter b, in the order of
                     /// `base_parameters` (and of `dynamics inspect --base-parameters`).
-                    fn base_regressor(q, qd, qdd) -> base_columns, nalgebra base_regressor_na {
+                    fn base_regressor(q, qd, qdd) -> base_columns, nalgebra base_regressor_na, batch base_regressor_batch {
                         variant: BaseRegressor,
                         equation: None,
                         prefix: "yb",

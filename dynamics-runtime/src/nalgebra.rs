@@ -20,14 +20,14 @@ use nalgebra::{
 macro_rules! declare_nalgebra {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $nalgebra:ident {
+        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
                 family $_family:ident { $($_family_row:tt)* }
                 methods {$(
                     $(#[doc = $_doc:literal])*
-                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident {
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $wrapper:ident $(, batch $_batch_fn:ident)? {
                         $($_row:tt)*
                     }
                 )*}

@@ -71,7 +71,7 @@ macro_rules! argument {
 macro_rules! declare_method {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident {
+        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $family_doc:literal])*
@@ -83,7 +83,7 @@ macro_rules! declare_method {
                 }
                 methods {$(
                     $(#[doc = $doc:literal])*
-                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident {
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident $(, batch $_batch_fn:ident)? {
                         variant: $variant:ident,
                         equation: $equation:expr,
                         prefix: $prefix:literal,

@@ -26,6 +26,29 @@ pub trait SplitLanes<const L: usize> {
     type Single: Copy;
     /// The value of each lane, first to last.
     fn split_lanes(self) -> [Self::Single; L];
+    /// Whether it holds a value for every lane: false for an `Err` (a solve whose pivot test
+    /// failed in at least one lane, which then holds no value for any).
+    #[inline(always)]
+    fn is_complete(&self) -> bool {
+        true
+    }
+}
+
+/// A solve's result: `Ok` split lane by lane; `Err` (at least one lane's pivot not positive)
+/// the same error for every lane ([`SplitLanes::is_complete`] tells it apart).
+impl<X: SplitLanes<L>, E: Copy, const L: usize> SplitLanes<L> for Result<X, E> {
+    type Single = Result<X::Single, E>;
+    #[inline(always)]
+    fn split_lanes(self) -> [Self::Single; L] {
+        match self {
+            Ok(x) => x.split_lanes().map(Ok),
+            Err(e) => [Err(e); L],
+        }
+    }
+    #[inline(always)]
+    fn is_complete(&self) -> bool {
+        self.is_ok()
+    }
 }
 
 /// [`SplitLanes`] of a lane type: its array.

@@ -1,0 +1,104 @@
+//! Where a batch's states and results are: one after the other (array of structs), or one slice
+//! per joint (structure of arrays).
+
+/// States of `M` values each, read by index: `&[[T; M]]` (state k is `states[k]`) or
+/// `[&[T]; M]` (value j of state k is `states[j][k]`, every slice as long).
+pub trait States<T, const M: usize> {
+    /// The number of states.
+    fn count(&self) -> usize;
+    /// Value `j` of state `k`.
+    fn value(&self, k: usize, j: usize) -> T;
+    /// State `k`.
+    #[inline(always)]
+    fn state(&self, k: usize) -> [T; M] {
+        core::array::from_fn(|j| self.value(k, j))
+    }
+}
+
+impl<T: Copy, const M: usize> States<T, M> for [[T; M]] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline(always)]
+    fn value(&self, k: usize, j: usize) -> T {
+        self[k][j]
+    }
+    #[inline(always)]
+    fn state(&self, k: usize) -> [T; M] {
+        self[k]
+    }
+}
+
+impl<T: Copy, const M: usize, const K: usize> States<T, M> for [[T; M]; K] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        K
+    }
+    #[inline(always)]
+    fn value(&self, k: usize, j: usize) -> T {
+        self[k][j]
+    }
+    #[inline(always)]
+    fn state(&self, k: usize) -> [T; M] {
+        self[k]
+    }
+}
+
+/// One slice per value. The number of states is the first slice's length (0 for `M = 0`); a
+/// shorter slice panics when read past its end.
+impl<T: Copy, const M: usize> States<T, M> for [&[T]; M] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.first().map_or(0, |column| column.len())
+    }
+    #[inline(always)]
+    fn value(&self, k: usize, j: usize) -> T {
+        self[j][k]
+    }
+}
+
+/// Results written by index: `&mut [O]`, or one slice per joint for results of one value per
+/// joint (`[&mut [T]; N]`, value j of result k at `[j][k]`).
+pub trait StatesMut<O> {
+    /// The number of results.
+    fn count(&self) -> usize;
+    /// Writes result `k`.
+    fn set(&mut self, k: usize, value: O);
+}
+
+impl<O> StatesMut<O> for [O] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline(always)]
+    fn set(&mut self, k: usize, value: O) {
+        self[k] = value;
+    }
+}
+
+impl<O, const K: usize> StatesMut<O> for [O; K] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        K
+    }
+    #[inline(always)]
+    fn set(&mut self, k: usize, value: O) {
+        self[k] = value;
+    }
+}
+
+/// One slice per value; the number of results is the first slice's length.
+impl<T, const M: usize> StatesMut<[T; M]> for [&mut [T]; M] {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.first().map_or(0, |column| column.len())
+    }
+    #[inline(always)]
+    fn set(&mut self, k: usize, value: [T; M]) {
+        for (column, x) in self.iter_mut().zip(value) {
+            column[k] = x;
+        }
+    }
+}

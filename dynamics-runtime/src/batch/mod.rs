@@ -1,0 +1,105 @@
+//! Many states in one call, for callers who do not want to think in lanes: every method of the
+//! runtime's traits that takes joint values has a `_batch` form over slices of states
+//! (`inverse_dynamics_batch(&q, &qd, &qdd, &mut tau)`), declared from the method table
+//! (`methods.rs`) in one trait per trait: [`DynamicsBatch`], [`DynamicsDerivativesBatch`],
+//! [`DynamicsRegressorBatch`], [`DynamicsBaseParametersBatch`], implemented for every robot.
+//!
+//! The states are taken [`lanes`](crate::lanes) at a time — four for `f64` ([`F64x4`]), eight
+//! for `f32` ([`F32x8`]): one call of the generated code on the lane type per group, each lane
+//! giving bit for bit what one call gives for its state. A last, partial group repeats its last
+//! state in the lanes it does not fill, and only the filled lanes are written. No heap.
+//!
+//! **Layouts.** Inputs are [`States`]: a slice of states (`&[[f64; N]]`, array of structs), or
+//! one slice per joint (`[&[f64]; N]`, structure of arrays: `q[j][k]` is joint j of state k).
+//! Outputs are [`StatesMut`]: a slice of results (`&mut [[f64; N]]`, `&mut [[[f64; N]; N]]`,
+//! ...), or, for a result that is one value per joint, one slice per joint.
+//!
+//! **Failures.** A method that solves with the mass matrix writes `Err(NotPositiveDefinite)`
+//! for exactly the states whose mass matrix is not positive definite: a group in which one lane
+//! fails is evaluated again one state at a time.
+//!
+//! # Panics
+//!
+//! If an input does not hold as many states as the output.
+//!
+//! [`F64x4`]: crate::F64x4
+//! [`F32x8`]: crate::F32x8
+
+mod layout;
+mod traits;
+
+pub use layout::{States, StatesMut};
+pub use traits::{
+    DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
+};
+
+use crate::lanes::{Lanes, SplitLanes};
+use crate::real::RealScalar;
+
+/// A scalar with the lane type its batches are evaluated in: `L` lanes of it.
+pub trait BatchScalar<const L: usize>: RealScalar {
+    /// `L` of these side by side, a [`Real`](crate::Real) of its own.
+    type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
+}
+
+impl BatchScalar<4> for f64 {
+    type Lanes = crate::F64x4;
+}
+
+impl BatchScalar<8> for f32 {
+    type Lanes = crate::F32x8;
+}
+
+/// The `M` values of states `k` to `k + L − 1` of `states` as lanes, the last state repeated
+/// past the end.
+#[doc(hidden)]
+#[inline(always)]
+pub fn lanes<T, S, const L: usize, const M: usize>(states: &S, k: usize) -> [T::Lanes; M]
+where
+    T: BatchScalar<L>,
+    S: States<T, M> + ?Sized,
+{
+    let last = states.count() - 1;
+    let index: [usize; L] = core::array::from_fn(|l| (k + l).min(last));
+    core::array::from_fn(|j| <T::Lanes as Lanes<L>>::from_array(index.map(|i| states.value(i, j))))
+}
+
+/// Writes the `len` results into `out`, `L` states a call of `group` (given the first state's
+/// index), or one state a call of `one` for a group whose result is incomplete (a failed solve).
+#[doc(hidden)]
+#[inline(always)]
+pub fn drive<X, O, const L: usize>(
+    len: usize,
+    out: &mut (impl StatesMut<O> + ?Sized),
+    mut group: impl FnMut(usize) -> X,
+    mut one: impl FnMut(usize) -> O,
+) where
+    X: SplitLanes<L, Single = O>,
+{
+    let mut k = 0;
+    while k < len {
+        let filled = (len - k).min(L);
+        let x = group(k);
+        if x.is_complete() {
+            for (l, value) in x.split_lanes().into_iter().take(filled).enumerate() {
+                out.set(k + l, value);
+            }
+        } else {
+            for i in k..k + filled {
+                out.set(i, one(i));
+            }
+        }
+        k += L;
+    }
+}
+
+/// Panics unless `input` holds `len` states.
+#[doc(hidden)]
+#[inline(always)]
+#[track_caller]
+pub fn check_count(name: &str, count: usize, len: usize) {
+    assert!(
+        count == len,
+        "`{name}` holds {count} states, the output {len}"
+    );
+}

@@ -1,0 +1,74 @@
+//! The batch traits, from the method table's rows (`methods.rs`): for each of the runtime's
+//! traits, one of `_batch` methods, implemented for every type that implements the first.
+
+use super::{check_count, drive, lanes, BatchScalar, States, StatesMut};
+// The result table's types name these.
+use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose};
+
+/// The traits from the table's rows: a method with a `batch` name gets its `_batch` form.
+macro_rules! declare_batch {
+    ($(
+        $(#[doc = $_trait_doc:literal])*
+        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $batch:ident {
+            items { $($_items:tt)* }
+            $(
+                $(#[doc = $_family_doc:literal])*
+                family $_family:ident { $($_family_row:tt)* }
+                methods {$(
+                    $(#[doc = $_doc:literal])*
+                    fn $name:ident($($argument:ident),*) -> $result:ident, nalgebra $_wrapper:ident $(, batch $batch_fn:ident)? {
+                        $($_row:tt)*
+                    }
+                )*}
+            )*
+        }
+    )*) => {$(
+        #[doc = concat!("The [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods over many states ")]
+        #[doc = "([`batch`](crate::batch)), implemented for every type that implements it."]
+        pub trait $batch<const N: usize $(, const $count: usize)?>: crate::$trait<N $(, $count)?> {
+            $($(
+                batch_method!($trait fn $name($($argument),*) -> $result; $($batch_fn)?);
+            )*)*
+        }
+
+        impl<R: crate::$trait<N $(, $count)?> + ?Sized, const N: usize $(, const $count: usize)?>
+            $batch<N $(, $count)?> for R {}
+    )*};
+}
+
+/// The `_batch` form of one method, if its row names one.
+macro_rules! batch_method {
+    ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident;) => {};
+    ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+        #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`](crate::", stringify!($trait), "::", stringify!($name), ") of every state, into `out`: ")]
+        #[doc = "[`batch`](crate::batch) has the layouts and what a failed solve writes."]
+        ///
+        /// # Panics
+        ///
+        /// If an input does not hold as many states as `out`.
+        #[inline]
+        #[track_caller]
+        fn $batch<T: BatchScalar<L>, const L: usize>(
+            &self,
+            $($argument: &batch_input!($argument, T),)*
+            out: &mut (impl StatesMut<array_result!($result)> + ?Sized),
+        ) {
+            let len = out.count();
+            $(check_count(stringify!($argument), $argument.count(), len);)*
+            drive::<_, _, L>(
+                len,
+                out,
+                |k| self.$name::<T::Lanes>($(&lanes::<T, _, L, _>($argument, k)),*),
+                |k| self.$name::<T>($(&$argument.state(k)),*),
+            );
+        }
+    };
+}
+
+/// The type of a method's input states: a wrench has six values, the joint variables `N`.
+macro_rules! batch_input {
+    (wrench, $t:ident) => { (impl States<$t, 6> + ?Sized) };
+    ($joint:ident, $t:ident) => { (impl States<$t, N> + ?Sized) };
+}
+
+for_each_method!(declare_batch);
