@@ -28,7 +28,9 @@
 //      derivatives: `dtau` (computeRNEADerivatives at (q, qd, qdd), which also fills M) and,
 //      where M is positive definite, `dqdd` (computeABADerivatives at (q, qd, tau), which also
 //      gives qdd and Minv). The joint torque regressor `Y` (computeJointTorqueRegressor at
-//      (q, qd, qdd), n × 10 n, each link's ten columns about Pinocchio's joint frame).
+//      (q, qd, qdd), n × 10 n, each link's ten columns about Pinocchio's joint frame), and `YB`:
+//      the same, then its base columns gathered (Pinocchio has no base regressor; the columns a
+//      QR with column pivoting of Y stacked over the samples finds independent, found once).
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -42,7 +44,8 @@
 // sample, with JtF's wrench the first six values of qdd; fd and Minv as Pinocchio's are (fd's
 // third input is the sample's tau); dtau and dqdd against Pinocchio's derivatives; Y against
 // Pinocchio's regressor where the link frames are known (a D-H model: Y_pinocchio T, T the
-// parameters of each link frame carried to its joint frame), not for a URDF model. Each line
+// parameters of each link frame carried to its joint frame), not for a URDF model; YB times piB
+// (the base parameters) against the data's tau. Each line
 // then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
@@ -63,6 +66,8 @@
 #include <vector>
 
 #include <dlfcn.h>
+
+#include <Eigen/QR>
 
 #include "pinocchio/multibody.hpp"
 #include "pinocchio/algorithm/aba.hpp"
@@ -752,6 +757,7 @@ struct Generated
 {
   Lookup lookup = nullptr;
   std::size_t (*dof)(const char *) = nullptr;
+  std::size_t (*base_count)(const char *) = nullptr;
 
   explicit Generated(const std::string & path)
   {
@@ -760,8 +766,9 @@ struct Generated
       throw std::runtime_error(std::string("cannot load ") + path + ": " + dlerror());
     lookup = reinterpret_cast<Lookup>(dlsym(lib, "dynamics_bench_function"));
     dof = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_dof"));
-    if (!lookup || !dof)
-      throw std::runtime_error(path + " does not export dynamics_bench_function and dynamics_bench_dof");
+    base_count = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_base_count"));
+    if (!lookup || !dof || !base_count)
+      throw std::runtime_error(path + " does not export dynamics_bench_function, dynamics_bench_dof and dynamics_bench_base_count");
   }
 
   GeneratedFunction get(const std::string & robot, const char * function) const
@@ -843,6 +850,13 @@ static void check_generated(
       const Eigen::MatrixXd Y = pinocchio::computeJointTorqueRegressor(model, data, q, v, a);
       check(robot, "Y" + at + " against Pinocchio", rows(n, 10 * n), regressor_in_link_frames(Y, links), s);
     }
+    // The base regressor times the base parameters: the torques (the reference robots have no
+    // springs), the rotors' inertia included.
+    const std::size_t b = gen.base_count(robot.c_str());
+    gen.get(robot, "piB")(q.data(), v.data(), a.data(), out.data());
+    const Eigen::MatrixXd base_parameters = vector(b);
+    gen.get(robot, "YB")(q.data(), v.data(), a.data(), out.data());
+    check(robot, "YB piB" + at, rows(n, b) * base_parameters, vecn(sample["tau"]), s);
     if (!forward)
       continue;
     const Eigen::VectorXd tau = vecn(sample["tau"]);
@@ -857,6 +871,28 @@ static void check_generated(
     const Eigen::MatrixXd M = matn(sample["M"]);
     check(robot, "Minv M" + at, matrix() * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
   }
+}
+
+// The columns of Pinocchio's regressor that a QR with column pivoting of it, stacked over the
+// samples, finds independent: the numerical way to a base regressor.
+static std::vector<Eigen::Index> base_columns(
+  const Model & model,
+  const std::vector<Eigen::VectorXd> & qs,
+  const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & as)
+{
+  Data data(model);
+  const Eigen::Index n = model.nv;
+  Eigen::MatrixXd stacked(n * static_cast<Eigen::Index>(qs.size()), 10 * n);
+  for (std::size_t k = 0; k < qs.size(); ++k)
+    stacked.middleRows(n * static_cast<Eigen::Index>(k), n) =
+      pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k]);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(stacked);
+  qr.setThreshold(1e-9);
+  std::vector<Eigen::Index> columns;
+  for (Eigen::Index c = 0; c < qr.rank(); ++c)
+    columns.push_back(qr.colsPermutation().indices()[c]);
+  return columns;
 }
 
 int main(int argc, char ** argv)
@@ -1010,6 +1046,16 @@ int main(int argc, char ** argv)
     });
     time("Y", [&](std::size_t k) {
       return pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k])(0, 0);
+    });
+    // Pinocchio has no base regressor: its user computes Y and keeps the independent columns
+    // (found once, by a QR with column pivoting of Y stacked over the samples).
+    const std::vector<Eigen::Index> base = base_columns(model, qs, vs, as);
+    Eigen::MatrixXd Yb(model.nv, static_cast<Eigen::Index>(base.size()));
+    time("YB", [&](std::size_t k) {
+      const Eigen::MatrixXd & Y = pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k]);
+      for (std::size_t c = 0; c < base.size(); ++c)
+        Yb.col(static_cast<Eigen::Index>(c)) = Y.col(base[c]);
+      return Yb(0, 0);
     });
     if (forward)
     {

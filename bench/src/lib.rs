@@ -38,7 +38,8 @@ pub const ROBOTS: [&str; 7] = [
     file = "../tests/data/reference/robots/puma560.json",
     check_inertia = false,
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Puma560;
 
@@ -49,7 +50,8 @@ pub struct Puma560;
     file = "../tests/data/reference/robots/stanford.json",
     check_inertia = false,
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Stanford;
 
@@ -58,7 +60,8 @@ pub struct Stanford;
 #[dynamics(
     file = "../tests/data/reference/robots/ur5.json",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Ur5;
 
@@ -67,7 +70,8 @@ pub struct Ur5;
 #[dynamics(
     file = "../tests/data/reference/robots/random5.json",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Random5;
 
@@ -76,7 +80,8 @@ pub struct Random5;
 #[dynamics(
     file = "../tests/data/panda/robot.json",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Panda;
 
@@ -86,7 +91,8 @@ pub struct Panda;
 #[dynamics(
     file = "../robots/ur5_urdf_dh.toml",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Ur5Dh;
 
@@ -98,7 +104,8 @@ pub struct Ur5Dh;
     base = "base_link",
     tip = "tool0",
     derivatives = true,
-    regressor = true
+    regressor = true,
+    base_parameters = true
 )]
 pub struct Ur5Urdf;
 

@@ -66,6 +66,7 @@ macro_rules! declare_traits {
                         $(diagonal: $_diagonal:literal,)?
                         $(default: $default:ident,)?
                         $(compiled_apart: $_apart:literal,)?
+                        $(into: $into:ident,)?
                     }
                 )*}
             )*
@@ -79,6 +80,10 @@ macro_rules! declare_traits {
                     $(#[doc = $doc])*
                     fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result);
                     $($default)?
+                );
+                into_method!(
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result);
+                    $($into)?
                 );
             )*)*
         }
@@ -98,6 +103,24 @@ macro_rules! trait_method {
         fn $name<T: Real>(&self, $($argument: $ty),*) -> $ret {
             $(let _ = $argument;)*
             [T::ZERO; N]
+        }
+    };
+}
+
+/// For a row with `into`, the method writing `$name`'s result into `out`, provided as a call of
+/// `$name` (the derive implements it: each element stored where it is computed, for the results too large to be
+/// returned through registers).
+macro_rules! into_method {
+    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty;) => {};
+    (fn $name:ident<T: Real>(&self, $($argument:ident: $ty:ty),*) -> $ret:ty; $into:ident) => {
+        #[doc = concat!("[`", stringify!($name), "`](Self::", stringify!($name), ") written into `out`:")]
+        /// the same values, each stored where it is computed rather than returned together (the
+        /// faster of the two: hundreds of values do not fit in the registers and would wait on
+        /// the stack for the copy). For stacking samples into the rows of an identification
+        /// problem without a copy.
+        #[inline]
+        fn $into<T: Real>(&self, $($argument: $ty,)* out: &mut $ret) {
+            *out = self.$name($($argument),*);
         }
     };
 }

@@ -30,6 +30,8 @@
 //                                                // description gives no such term (friction)
 //                 compiled_apart: true,          // optional: compiled once, apart from its
 //                                                // callers (below)
+//                 into: name_into,               // optional: also a method writing the
+//                                                // result into the caller's `&mut` (below)
 //             }
 //         }
 //     }
@@ -41,6 +43,10 @@
 // codegen unit of its own compiled in parallel with the rest: only the largest, the forward
 // dynamics' derivatives (tens of kilobytes, microseconds a call); the inverse dynamics'
 // derivatives ran a half slower apart, where the caller copied the result at once.
+// A method with `into` gets a second trait method, `name_into(args, out: &mut result)`, which
+// stores each element where it is computed; the derive's `name` calls it on zeros. Only for the
+// regressors: their hundreds of values outnumber the registers, and returned whole they wait on
+// the stack for the copy at the end. Its result's `rows` must be its `array` (no conversion).
 // `docs/design.md` has the checklists for adding a method and a family.
 
 /// Calls `$callback!` with the rows of the method table (see the comment at the top of
@@ -343,6 +349,7 @@ macro_rules! for_each_method {
                         prefix: "y",
                         summary: "Y(q, q̇, q̈), with τ = Y π for the rigid bodies.",
                         element: "d tau{k} / d pi{i}_{j}",
+                        into: regressor_into,
                     }
                     /// The joints' columns: row i is `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)`
                     /// in place of the sign where the robot smooths joint i's Coulomb friction),
@@ -405,6 +412,7 @@ macro_rules! for_each_method {
                         prefix: "yb",
                         summary: "Y_B(q, q̇, q̈), with τ = Y_B π_B.",
                         element: "d tau{i} / d base parameter {j}",
+                        into: base_regressor_into,
                     }
                     /// The base parameters `π_B` of the description.
                     fn base_parameters() -> base_vector, nalgebra base_parameters_na {

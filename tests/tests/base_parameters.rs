@@ -333,6 +333,11 @@ where
     R: DynamicsBaseParameters<N, B>,
 {
     let y = robot.base_regressor(q, qd, qdd);
+    // Written in place, every element of a buffer that held something else, bit for bit.
+    let mut into = [[f64::NAN; B]; N];
+    robot.base_regressor_into(q, qd, qdd, &mut into);
+    let bits = |y: &[[f64; B]; N]| y.iter().flatten().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&into), bits(&y));
     let pi = robot.base_parameters::<f64>();
     y.iter()
         .map(|row| row.iter().zip(&pi).map(|(a, b)| a * b).sum())

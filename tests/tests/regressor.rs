@@ -133,6 +133,12 @@ fn against_pinocchio<R: DynamicsRegressor<N>, const N: usize>(robot: &R, name: &
     for s in samples {
         let [q, qd, qdd] = ["q", "qd", "qdd"].map(|key| array::<N>(&s[key]));
         let y = robot.regressor(&q, &qd, &qdd);
+        // Written in place, every element of a buffer that held something else, bit for bit.
+        let mut into = [[[f64::NAN; 10]; N]; N];
+        robot.regressor_into(&q, &qd, &qdd, &mut into);
+        let bits =
+            |y: &[[[f64; 10]; N]; N]| rows(y).iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&into), bits(&y), "{name}");
         let y_joint = robot.joint_regressor(&qd, &qdd);
         // Pinocchio's joint columns are n × 4n, joint i's four in block i of row i.
         let block_diagonal: Vec<f64> = (0..N)

@@ -9,18 +9,31 @@
 //! pose), `J` (the hand's Jacobian in base axes) and `JtF` (the joint torques for a wrench in
 //! base axes, `T = Jᵀ F`); the forward dynamics `fd` and `Minv` (M⁻¹), NaN where M is not
 //! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
-//! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`.
+//! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`, the base
+//! regressor `YB` and the base parameters `piB` ([`dynamics_bench_base_count`] of them).
 
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
-use dynamics_runtime::{DynamicsDerivatives, DynamicsRegressor};
+use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
+
+/// The generated traits a benchmark robot implements, with `N` joints and `B` base parameters.
+pub trait Timed<const N: usize, const B: usize>:
+    DynamicsDerivatives<N> + DynamicsRegressor<N> + DynamicsBaseParameters<N, B> + Default
+{
+}
+
+impl<R, const N: usize, const B: usize> Timed<N, B> for R where
+    R: DynamicsDerivatives<N> + DynamicsRegressor<N> + DynamicsBaseParameters<N, B> + Default
+{
+}
 
 /// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
 /// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
 /// `[R | p]` for `fk`, 6 × n for `J`, `∂τ/∂q` then `∂τ/∂q̇` for `dtau` (2 n × n), `∂q̈/∂q`,
 /// `∂q̈/∂q̇`, `∂q̈/∂τ` for `dqdd` (3 n × n), the n × 10 n rows of the regressor for `Y`
 /// (row i: link 1's ten columns, then link 2's, ...: `Y[i][j][k]` at `(i n + j) 10 + k`, Pinocchio's
-/// `computeJointTorqueRegressor` layout), n for the others. `JtF` reads the wrench
+/// `computeJointTorqueRegressor` layout), the n × B rows of the base regressor for `YB`, the B
+/// base parameters for `piB` (no input read), n for the others. `JtF` reads the wrench
 /// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
 /// `dqdd` the joint torques `tau`.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
@@ -44,9 +57,9 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
 }
 
 /// The timed functions of one `N`-joint robot type, as C functions.
-struct Functions<R, const N: usize>(core::marker::PhantomData<R>);
+struct Functions<R, const N: usize, const B: usize>(core::marker::PhantomData<R>);
 
-impl<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize> Functions<R, N> {
+impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
@@ -152,11 +165,35 @@ impl<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize>
     unsafe extern "C" fn regressor(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function` (room for n × 10 n values at `out`).
         unsafe {
-            let y = R::default().regressor(&input(q), &input(qd), &input(qdd));
-            // In one write: `[i][j][k]` is already at `(i n + j) 10 + k`. Taken apart row by row
-            // (`into_iter`), the 2.9 kB array was copied once more before the rows were written.
-            out.cast::<[[[f64; 10]; N]; N]>().write_unaligned(y);
+            // Written in place (`[i][j][k]` is at `(i n + j) 10 + k`), as Pinocchio writes its
+            // `data.jointTorqueRegressor`. `out` holds `f64`s, so it is aligned for them.
+            let y = &mut *out.cast::<[[[f64; 10]; N]; N]>();
+            R::default().regressor_into(&input(q), &input(qd), &input(qdd), y);
         }
+    }
+
+    unsafe extern "C" fn base_regressor(
+        q: *const f64,
+        qd: *const f64,
+        qdd: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (room for n × B values at `out`, aligned for
+        // `f64`s).
+        unsafe {
+            let y = &mut *out.cast::<[[f64; B]; N]>();
+            R::default().base_regressor_into(&input(q), &input(qd), &input(qdd), y);
+        }
+    }
+
+    unsafe extern "C" fn base_parameters(
+        _: *const f64,
+        _: *const f64,
+        _: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (room for B values at `out`).
+        unsafe { output(out, R::default().base_parameters::<f64>()) }
     }
 
     fn get(function: &[u8]) -> Option<Function> {
@@ -174,6 +211,8 @@ impl<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize>
             b"dtau" => Self::inverse_derivatives,
             b"dqdd" => Self::forward_derivatives,
             b"Y" => Self::regressor,
+            b"YB" => Self::base_regressor,
+            b"piB" => Self::base_parameters,
             _ => return None,
         })
     }
@@ -202,11 +241,12 @@ unsafe fn output_rows<const COLUMNS: usize, const ROWS: usize>(
     }
 }
 
-/// A robot's number of joints and its function lookup.
-type Robot = (usize, fn(&[u8]) -> Option<Function>);
+/// A robot's number of joints, its number of base parameters and its function lookup.
+type Robot = (usize, usize, fn(&[u8]) -> Option<Function>);
 
-fn entry<R: DynamicsDerivatives<N> + DynamicsRegressor<N> + Default, const N: usize>() -> Robot {
-    (N, Functions::<R, N>::get)
+/// The entry of `R`, its counts those of its trait impls.
+fn entry<R: Timed<N, B>, const N: usize, const B: usize>(_: &R) -> Robot {
+    (N, B, Functions::<R, N, B>::get)
 }
 
 /// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`).
@@ -219,19 +259,19 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
     }
     // SAFETY: the caller's contract.
     Some(match unsafe { CStr::from_ptr(name) }.to_bytes() {
-        b"puma560" => entry::<Puma560, 6>(),
-        b"stanford" => entry::<Stanford, 6>(),
-        b"ur5" => entry::<Ur5, 6>(),
-        b"random5" => entry::<Random5, 6>(),
-        b"panda" => entry::<Panda, 7>(),
-        b"ur5_dh" => entry::<Ur5Dh, 6>(),
-        b"ur5_urdf" => entry::<Ur5Urdf, 6>(),
+        b"puma560" => entry(&Puma560),
+        b"stanford" => entry(&Stanford),
+        b"ur5" => entry(&Ur5),
+        b"random5" => entry(&Random5),
+        b"panda" => entry(&Panda),
+        b"ur5_dh" => entry(&Ur5Dh),
+        b"ur5_urdf" => entry(&Ur5Urdf),
         _ => return None,
     })
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`, or `fk`, `J`,
-/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`, `Y`) of `robot`
+/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`, `Y`, `YB`, `piB`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
@@ -242,7 +282,7 @@ pub unsafe extern "C" fn dynamics_bench_function(
     function: *const c_char,
 ) -> Option<Function> {
     // SAFETY: the caller's contract.
-    let (_, get) = unsafe { self::robot(robot) }?;
+    let (_, _, get) = unsafe { self::robot(robot) }?;
     if function.is_null() {
         return None;
     }
@@ -258,7 +298,18 @@ pub unsafe extern "C" fn dynamics_bench_function(
 #[no_mangle]
 pub unsafe extern "C" fn dynamics_bench_dof(robot: *const c_char) -> usize {
     // SAFETY: the caller's contract.
-    unsafe { self::robot(robot) }.map_or(0, |(n, _)| n)
+    unsafe { self::robot(robot) }.map_or(0, |(n, _, _)| n)
+}
+
+/// The number of base parameters of `robot` (the length of `piB`, the columns of `YB`), 0 for
+/// an unknown name.
+///
+/// # Safety
+/// `robot` is null or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn dynamics_bench_base_count(robot: *const c_char) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { self::robot(robot) }.map_or(0, |(_, b, _)| b)
 }
 
 #[cfg(test)]
@@ -266,8 +317,8 @@ mod tests {
     use super::*;
     use dynamics_bench::{samples, Sample, ROBOTS};
 
-    const FUNCTIONS: [&str; 13] = [
-        "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y",
+    const FUNCTIONS: [&str; 15] = [
+        "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y", "YB", "piB",
     ];
     /// Room for the largest output, `Y`'s 7 × 70 values.
     const ROOM: usize = 512;
@@ -302,7 +353,7 @@ mod tests {
         out
     }
 
-    fn direct<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
+    fn direct<R: Timed<N, B>, const N: usize, const B: usize>(
         r: &R,
         function: &str,
         s: &Sample<N>,
@@ -344,14 +395,19 @@ mod tests {
                 let y = r.regressor(&s.q, &s.qd, &s.qdd);
                 y.iter().flatten().flatten().copied().collect()
             }
+            "YB" => r.base_regressor(&s.q, &s.qd, &s.qdd).concat(),
+            "piB" => r.base_parameters::<f64>().to_vec(),
             _ => unreachable!(),
         }
     }
 
     /// Every function of `robot` through the C ABI equals the trait method, writes nothing past
     /// its output, and its `tau` matches the reference data.
-    fn check<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(r: &R, robot: &str) {
+    fn check<R: Timed<N, B>, const N: usize, const B: usize>(r: &R, robot: &str) {
         assert_eq!(dof(robot), N, "{robot}");
+        let robot_name = std::ffi::CString::new(robot).unwrap();
+        // SAFETY: a NUL-terminated string.
+        assert_eq!(unsafe { dynamics_bench_base_count(robot_name.as_ptr()) }, B);
         for s in samples::<N>(robot) {
             for function in FUNCTIONS {
                 let want = direct(r, function, &s);

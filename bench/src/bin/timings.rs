@@ -30,7 +30,8 @@
 //! | `Minv` | `mass_matrix_inverse(&q)` |
 //! | `dtau` | `inverse_dynamics_derivatives(&q, &qd, &qdd)` |
 //! | `dqdd` | `forward_dynamics_derivatives(&q, &qd, &qdd)` (the sample's q̈ as torques) |
-//! | `Y` | `regressor(&q, &qd, &qdd)` (the joint torque regressor) |
+//! | `Y` | `regressor_into(&q, &qd, &qdd, &mut y)` (the joint torque regressor, into one buffer) |
+//! | `YB` | `base_regressor_into(&q, &qd, &qdd, &mut y)` (the base regressor, into one buffer) |
 //!
 //! With `--all`, three more for context, computed from the same description:
 //!
@@ -89,11 +90,11 @@ use std::time::Instant;
 
 use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, Ur5Urdf, ROBOTS};
 use dynamics_codegen::numeric::Numeric;
-use dynamics_runtime::{Dynamics, DynamicsDerivatives, DynamicsRegressor};
+use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
 
 /// The generated methods, timed by default.
-const GENERATED: [&str; 13] = [
-    "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y",
+const GENERATED: [&str; 14] = [
+    "tau", "M", "g", "C", "h", "fk", "J", "JtF", "fd", "Minv", "dtau", "dqdd", "Y", "YB",
 ];
 /// The other implementations, timed with `--all`.
 const EXTRA: [&str; 3] = ["tau_reference", "tau_rnea", "M_crba"];
@@ -209,7 +210,11 @@ fn median(values: &mut [f64]) -> f64 {
 }
 
 /// Times (or calls, in [`Mode::Calls`]) `function` of `robot`.
-fn measure<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
+fn measure<
+    R: DynamicsDerivatives<N> + DynamicsRegressor<N> + DynamicsBaseParameters<N, B>,
+    const N: usize,
+    const B: usize,
+>(
     robot: &R,
     others: &Others,
     samples: &[Sample<N>],
@@ -241,7 +246,19 @@ fn measure<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
         "dqdd" => drive(s, p, mode, |x| {
             robot.forward_dynamics_derivatives(&x.q, &x.qd, &x.qdd)
         }),
-        "Y" => drive(s, p, mode, |x| robot.regressor(&x.q, &x.qd, &x.qdd)),
+        "Y" => {
+            // Into one buffer, as bench/ffi writes the caller's.
+            let mut y = [[[0.0; 10]; N]; N];
+            drive(s, p, mode, |x| {
+                robot.regressor_into(&x.q, &x.qd, &x.qdd, black_box(&mut y));
+            })
+        }
+        "YB" => {
+            let mut y = [[0.0; B]; N];
+            drive(s, p, mode, |x| {
+                robot.base_regressor_into(&x.q, &x.qd, &x.qdd, black_box(&mut y));
+            })
+        }
         "tau_reference" => drive(s, SLOW_PROTOCOL, mode, |x| {
             others.book.inverse_dynamics(&x.q, &x.qd, &x.qdd)
         }),
@@ -296,7 +313,11 @@ fn sanity<R: Dynamics<N>, const N: usize>(
 }
 
 /// Runs the selected functions of one robot; `false` if its sanity check failed.
-fn run<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: usize>(
+fn run<
+    R: DynamicsDerivatives<N> + DynamicsRegressor<N> + DynamicsBaseParameters<N, B>,
+    const N: usize,
+    const B: usize,
+>(
     robot: &R,
     name: &str,
     functions: &[&str],

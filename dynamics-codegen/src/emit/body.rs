@@ -33,7 +33,8 @@ impl Emitter<'_> {
     }
 
     /// A function's body computing `shape`: the configuration's fields it reads, then
-    /// the terms in `q̇` and `q̈`, then the result.
+    /// the terms in `q̇` and `q̈`, then the result, returned or, for a method with an `into`
+    /// form, written into `y_` (`in_place`).
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
         let outputs = shape.outputs();
         self.mark(&outputs);
@@ -51,6 +52,16 @@ impl Emitter<'_> {
         // The shared fields this function reads, bound under their names.
         statements.extend(self.bind_shared(true));
         statements.extend(self.joint_variables());
+        if method.in_place_name().is_some() {
+            if let Some((stores, zeros)) = self.write_in_place(shape, &output_names) {
+                statements.extend(stores);
+                return Body {
+                    tokens: quote!(#(#statements)*),
+                    ops: count(self.eq, &outputs),
+                    zeros: Some(zeros),
+                };
+            }
+        }
         for (id, _) in self.graph.nodes() {
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
@@ -96,6 +107,7 @@ impl Emitter<'_> {
         Body {
             tokens: quote!(#(#statements)* #result),
             ops: count(self.eq, &outputs),
+            zeros: None,
         }
     }
 

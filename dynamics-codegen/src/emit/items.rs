@@ -3,8 +3,8 @@
 
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
 use super::impls::{trait_impls, Counts, Sizes};
-use super::names::PARAMETERS;
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
+use super::names::{OUTPUT, PARAMETERS};
 use super::parts::{Context, OpCount, Output, Shared};
 use super::program::emit;
 use crate::method::{Argument, Family, Method};
@@ -22,6 +22,9 @@ pub struct MethodCode {
     pub body: TokenStream,
     /// Its operations, the shared configuration's included.
     pub ops: OpCount,
+    /// For a method with an `into` form, whose body writes its result into `y_`, the
+    /// result's value of zeros (`Body::zeros`).
+    pub zeros: Option<TokenStream>,
 }
 
 /// The generated code of a robot: the shared configuration (see [`emit`]) and the methods of
@@ -125,6 +128,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
                     name: method.name(),
                     body: b.tokens.clone(),
                     ops: b.ops,
+                    zeros: b.zeros.clone(),
                 }),
         );
         modules.push(Module {
@@ -206,7 +210,16 @@ impl Generated {
                 Some(doc) => quote!(#[doc = #doc] #f),
                 None => f,
             };
-            (m.method, f)
+            let into = m.zeros.as_ref().and(m.method.in_place_name()).map(|into| {
+                let (into, y) = (Ident::new(into, Span::call_site()), local(OUTPUT));
+                quote! {
+                    #[inline]
+                    fn #into<#t: #krate::Real>(&self, #args, #y: &mut #ret) {
+                        #module::#into(&self.#parameters(), #pass, #y)
+                    }
+                }
+            });
+            (m.method, quote!(#f #into))
         });
         let known = Sizes {
             joints: Some(self.dof),
@@ -252,6 +265,9 @@ impl Generated {
             let name = Ident::new(m.name, Span::call_site());
             let scalar = Ident::new("T", Span::call_site());
             let body = &m.body;
+            if let (Some(zeros), Some(into)) = (&m.zeros, m.method.in_place_name()) {
+                return self.in_place_functions(m, zeros, into, krate);
+            }
             // A function compiled apart returns the trait's type, built where its result is
             // written: converted after the call, the result would be copied, and the copy's
             // wide loads of values just stored one by one would wait for the stores.
@@ -286,6 +302,38 @@ impl Generated {
                 #configuration_item
                 #motion_item
                 #(#bodies)*
+            }
+        }
+    }
+
+    /// The two functions of a method written in place: `name_into`, its body storing into
+    /// `y_`, and `name`, calling it on zeros (which the stores overwrite: the optimiser drops
+    /// them).
+    fn in_place_functions(
+        &self,
+        m: &MethodCode,
+        zeros: &TokenStream,
+        into: &str,
+        krate: &TokenStream,
+    ) -> TokenStream {
+        let (name, into) = (
+            Ident::new(m.name, Span::call_site()),
+            Ident::new(into, Span::call_site()),
+        );
+        let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
+        let scalar = Ident::new("T", Span::call_site());
+        let (args, ret) = signature(m.method, &self.counts(), &scalar, krate, true);
+        let (pass, body) = (call_arguments(m.method), &m.body);
+        quote! {
+            #[inline(always)]
+            pub(super) fn #into<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret) {
+                #body
+            }
+            #[inline(always)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
+                let mut #y = #zeros;
+                #into(#p, #pass, &mut #y);
+                #y
             }
         }
     }

@@ -47,6 +47,7 @@ mod equations;
 mod expr;
 mod fallback;
 mod impls;
+mod in_place;
 mod inputs;
 mod items;
 mod names;

@@ -16,6 +16,8 @@ pub const MOTION_STRUCT: &str = "Motion";
 pub const MOTION_FN: &str = "motion";
 /// Name of the local holding the configuration in the motion function.
 pub const CONFIGURATION_LOCAL: &str = "c_";
+/// Name of the argument a result written in place goes to (`&mut`, the result's type).
+pub const OUTPUT: &str = "y_";
 /// Name of the argument holding the robot's parameters, `[T; K]` in the order of
 /// `Equations::fields`.
 pub const PARAMETERS: &str = "p_";

@@ -40,6 +40,9 @@ pub struct Body {
     pub tokens: TokenStream,
     /// Its operations, shared code included.
     pub ops: OpCount,
+    /// For a body that writes its result into `y_` rather than returning it, the result's
+    /// value of zeros, which the function returning the result fills with it.
+    pub zeros: Option<TokenStream>,
 }
 
 /// Where emitted code finds the robot's parameters.

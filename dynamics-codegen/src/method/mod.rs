@@ -92,6 +92,7 @@ macro_rules! declare_method {
                         $(diagonal: $diagonal:literal,)?
                         $(default: $default:ident,)?
                         $(compiled_apart: $apart:literal,)?
+                        $(into: $into:ident,)?
                     }
                 )*}
             )*
@@ -181,6 +182,13 @@ macro_rules! declare_method {
             #[must_use]
             pub fn is_compiled_apart(self) -> bool {
                 match self { $($($(Method::$variant => false $(|| $apart)?,)*)*)* }
+            }
+
+            /// The name of its method writing the result into the caller's `&mut`
+            /// (`into: regressor_into` in its row), if it has one.
+            #[must_use]
+            pub fn in_place_name(self) -> Option<&'static str> {
+                match self { $($($(Method::$variant => None $(.or(Some(stringify!($into))))?,)*)*)* }
             }
 
             /// Its arguments, in order.

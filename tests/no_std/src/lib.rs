@@ -67,7 +67,9 @@ pub fn evaluate_f32<R: DynamicsDerivatives<N> + DynamicsRegressor<N>, const N: u
     let forward = robot
         .forward_dynamics_derivatives(q, qd, &tau)
         .map_or(f32::NAN, |d| d.dqdd_dq[0][0] + d.dqdd_dqd[0][0]);
-    let regressor = robot.regressor(q, qd, qdd)[0][N - 1][9];
+    let mut written = [[[0.0; 10]; N]; N];
+    robot.regressor_into(q, qd, qdd, &mut written);
+    let regressor = robot.regressor(q, qd, qdd)[0][N - 1][9] + written[0][N - 1][9];
     let parameters = robot.standard_parameters::<f32>()[N - 1][0];
     let joints = robot.joint_regressor(qd, qdd)[0][2] + robot.joint_parameters::<f32>()[0][0];
     m[0][0]
@@ -96,9 +98,10 @@ pub fn base_torque_f32<R: DynamicsBaseParameters<N, B>, const N: usize, const B:
     qd: &[f32; N],
     qdd: &[f32; N],
 ) -> f32 {
-    let y = robot.base_regressor(q, qd, qdd);
+    let mut y = [[0.0; B]; N];
+    robot.base_regressor_into(q, qd, qdd, &mut y);
     let pi = robot.base_parameters::<f32>();
-    y[0].iter().zip(&pi).map(|(a, b)| a * b).sum()
+    y[0].iter().zip(&pi).map(|(a, b)| a * b).sum::<f32>() + robot.base_regressor(q, qd, qdd)[0][0]
 }
 
 /// Random5's, as the generic function runs it.
