@@ -1,12 +1,15 @@
 // The table of the generated methods: the one place that lists them, by trait and family.
 //
 // `for_each_method!(callback)` calls `callback! { rows }`. The runtime reads it to declare its
-// traits (`dynamics.rs`) and their nalgebra wrappers (`nalgebra.rs`); `dynamics-codegen` reads
+// traits (`dynamics.rs`), their nalgebra wrappers (`nalgebra.rs`) and their forms over many
+// states (`batch/traits.rs`: a trait row's `batch` trait, a method row's `_batch` method, for the
+// methods with joint inputs); `dynamics-codegen` reads
 // the same file (a symlink, `include!`d, hence no inner doc comment here) to build its
 // `enum Family` and `enum Method`. The rows nest:
 //
 //     /// Rustdoc of the trait.
-//     trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra {
+//     trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra,
+//             batch DynamicsDerivativesBatch {
 //         items {}                         // the trait's other items (`const DOF`)
 //         /// Doc of the family.
 //         family Derivatives {             // the codegen enum's variant
@@ -18,7 +21,7 @@
 //         }
 //         methods {
 //             /// Rustdoc of the trait method.
-//             fn name(q, qd) -> vector, nalgebra name_na {
+//             fn name(q, qd) -> vector, nalgebra name_na, batch name_batch {
 //                 variant: Name,                 // the codegen enum's variant
 //                 equation: Some("6.46"),        // the book's equation (Niku, ch. 6), if any
 //                 prefix: "tau",                 // generated element names: tau3, m1_2, p
