@@ -72,6 +72,8 @@
 #include "pinocchio/multibody.hpp"
 #include "pinocchio/algorithm/aba.hpp"
 #include "pinocchio/algorithm/aba-derivatives.hpp"
+#include "pinocchio/algorithm/parallel/aba.hpp"
+#include "pinocchio/algorithm/parallel/rnea.hpp"
 #include "pinocchio/algorithm/crba.hpp"
 #include "pinocchio/algorithm/frames.hpp"
 #include "pinocchio/algorithm/kinematics.hpp"
@@ -721,24 +723,25 @@ static double median_ns(std::size_t nsamples, F && f, double & checksum)
 // The same protocol for two functions timed in turn: warm-up calls of each, then BATCHES pairs
 // of batches, the order within a pair alternating. Returns the two medians.
 template<typename F, typename G>
-static std::pair<double, double> median_ns_in_turn(std::size_t nsamples, F && f, G && g, double & checksum)
+static std::pair<double, double> median_ns_in_turn(
+  std::size_t nsamples, F && f, G && g, double & checksum, int warmup = WARMUP, int calls = CALLS)
 {
   std::size_t k = 0;
   double sum = 0.0;
-  batch_ns(f, WARMUP, nsamples, k, sum);
-  batch_ns(g, WARMUP, nsamples, k, sum);
+  batch_ns(f, warmup, nsamples, k, sum);
+  batch_ns(g, warmup, nsamples, k, sum);
   std::vector<double> ns_f(BATCHES), ns_g(BATCHES);
   for (std::size_t b = 0; b < ns_f.size(); ++b)
   {
     if (b % 2 == 0)
     {
-      ns_f[b] = batch_ns(f, CALLS, nsamples, k, sum);
-      ns_g[b] = batch_ns(g, CALLS, nsamples, k, sum);
+      ns_f[b] = batch_ns(f, calls, nsamples, k, sum);
+      ns_g[b] = batch_ns(g, calls, nsamples, k, sum);
     }
     else
     {
-      ns_g[b] = batch_ns(g, CALLS, nsamples, k, sum);
-      ns_f[b] = batch_ns(f, CALLS, nsamples, k, sum);
+      ns_g[b] = batch_ns(g, calls, nsamples, k, sum);
+      ns_f[b] = batch_ns(f, calls, nsamples, k, sum);
     }
   }
   checksum += sum;
@@ -758,6 +761,7 @@ struct Generated
   Lookup lookup = nullptr;
   std::size_t (*dof)(const char *) = nullptr;
   std::size_t (*base_count)(const char *) = nullptr;
+  std::size_t (*horizon)() = nullptr;
 
   explicit Generated(const std::string & path)
   {
@@ -767,8 +771,9 @@ struct Generated
     lookup = reinterpret_cast<Lookup>(dlsym(lib, "dynamics_bench_function"));
     dof = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_dof"));
     base_count = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_base_count"));
-    if (!lookup || !dof || !base_count)
-      throw std::runtime_error(path + " does not export dynamics_bench_function, dynamics_bench_dof and dynamics_bench_base_count");
+    horizon = reinterpret_cast<std::size_t (*)()>(dlsym(lib, "dynamics_bench_horizon"));
+    if (!lookup || !dof || !base_count || !horizon)
+      throw std::runtime_error(path + " does not export dynamics_bench_function, dynamics_bench_dof, dynamics_bench_base_count and dynamics_bench_horizon");
   }
 
   GeneratedFunction get(const std::string & robot, const char * function) const
@@ -871,6 +876,85 @@ static void check_generated(
     const Eigen::MatrixXd M = matn(sample["M"]);
     check(robot, "Minv M" + at, matrix() * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
   }
+}
+
+// The batch rows, per state: a horizon of `gen.horizon()` states (the samples in turn) in one
+// call of the generated `_batch` functions, beside Pinocchio's own batch (rneaInParallel and
+// abaInParallel on one thread of a ModelPool) or, where it has none (crba,
+// computeRNEADerivatives), a loop. The generated results are checked first against the
+// generated single-state functions, state by state.
+static void time_batches(
+  const std::string & robot,
+  const Generated & gen,
+  const Model & model,
+  const std::vector<Eigen::VectorXd> & qs,
+  const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & as,
+  const std::vector<Eigen::VectorXd> & taus,
+  bool forward,
+  double & checksum)
+{
+  const Eigen::Index n = model.nv, h = static_cast<Eigen::Index>(gen.horizon());
+  Eigen::MatrixXd Q(n, h), V(n, h), A(n, h), TAU(n, h), OUT(n, h);
+  for (Eigen::Index k = 0; k < h; ++k)
+  {
+    const std::size_t s = static_cast<std::size_t>(k) % qs.size();
+    Q.col(k) = qs[s], V.col(k) = vs[s], A.col(k) = as[s], TAU.col(k) = taus[s];
+  }
+  std::vector<double> out(static_cast<std::size_t>(2 * n * n * h)), one(static_cast<std::size_t>(2 * n * n));
+  // Each state's output of `batch` against the single-state `single`'s, `size` values each.
+  auto check_batch = [&](const char * batch, const char * single, const Eigen::MatrixXd & third, Eigen::Index size) {
+    gen.get(robot, batch)(Q.data(), V.data(), third.data(), out.data());
+    for (Eigen::Index k = 0; k < h; ++k)
+    {
+      gen.get(robot, single)(Q.col(k).data(), V.col(k).data(), third.col(k).data(), one.data());
+      const Eigen::Map<const Eigen::VectorXd> got(out.data() + k * size, size), want(one.data(), size);
+      check(robot, std::string(batch) + " state " + std::to_string(k), got, want, static_cast<std::size_t>(k));
+    }
+  };
+  check_batch("tau_batch", "tau", A, n);
+  check_batch("M_batch", "M", A, n * n);
+  check_batch("dtau_batch", "dtau", A, 2 * n * n);
+  if (forward)
+    check_batch("fd_batch", "fd", TAU, n);
+  pinocchio::ModelPool pool(model, 1);
+  Data data(model);
+  const int warmup = 100, calls = 200;
+  auto row = [&](const char * function, const Eigen::MatrixXd & third, auto && pin) {
+    const GeneratedFunction f = gen.get(robot, function);
+    auto g = [&](std::size_t) {
+      f(Q.data(), V.data(), third.data(), out.data());
+      return out[0];
+    };
+    auto p = [&](std::size_t) { return pin(); };
+    const auto [pin_ns, gen_ns] = median_ns_in_turn(1, p, g, checksum, warmup, calls);
+    std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns / double(h), gen_ns / double(h));
+    std::fflush(stdout);
+  };
+  row("tau_batch", A, [&] {
+    pinocchio::rneaInParallel(1, pool, Q, V, A, OUT);
+    return OUT(0, 0);
+  });
+  row("M_batch", A, [&] {
+    double sum = 0.0;
+    for (Eigen::Index k = 0; k < h; ++k)
+      sum += pinocchio::crba(model, data, Q.col(k))(0, 0);
+    return sum;
+  });
+  row("dtau_batch", A, [&] {
+    double sum = 0.0;
+    for (Eigen::Index k = 0; k < h; ++k)
+    {
+      pinocchio::computeRNEADerivatives(model, data, Q.col(k), V.col(k), A.col(k));
+      sum += data.dtau_dq(0, 0);
+    }
+    return sum;
+  });
+  if (forward)
+    row("fd_batch", TAU, [&] {
+      pinocchio::abaInParallel(1, pool, Q, V, TAU, OUT);
+      return OUT(0, 0);
+    });
 }
 
 // The columns of Pinocchio's regressor that a QR with column pivoting of it, stacked over the
@@ -1070,6 +1154,9 @@ int main(int argc, char ** argv)
         return pinocchio::computeMinverse(model, data, qs[k])(0, 0);
       });
     }
+    // The batches, for the two robots of the throughput targets.
+    if (with_generated && (robot == "puma560" || robot == "panda"))
+      time_batches(robot, *generated, model, qs, vs, as, taus, forward, checksum);
   }
   std::fprintf(stderr, "checksum %.17g\n", checksum);
   return 0;

@@ -10,8 +10,12 @@
 //! base axes, `T = Jᵀ F`); the forward dynamics `fd` and `Minv` (M⁻¹), NaN where M is not
 //! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
 //! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`, the base
-//! regressor `YB` and the base parameters `piB` ([`dynamics_bench_base_count`] of them).
+//! regressor `YB` and the base parameters `piB` ([`dynamics_bench_base_count`] of them); and
+//! `tau_batch`, `M_batch`, `fd_batch`, `dtau_batch`: [`HORIZON`] states a call (`batch`).
 
+mod batch;
+
+pub use batch::{dynamics_bench_horizon, HORIZON};
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
 use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
@@ -213,7 +217,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
             b"Y" => Self::regressor,
             b"YB" => Self::base_regressor,
             b"piB" => Self::base_parameters,
-            _ => return None,
+            _ => return Self::get_batch(function),
         })
     }
 }

@@ -80,9 +80,14 @@ pub fn drive<X, O, const L: usize>(
     while k < len {
         let filled = (len - k).min(L);
         let x = group(k);
-        if x.is_complete() {
-            for (l, value) in x.split_lanes().into_iter().take(filled).enumerate() {
-                out.set(k + l, value);
+        if x.is_complete() && filled == L {
+            // A whole group: `l` a constant of the unrolled loop, each lane read in place.
+            for l in 0..L {
+                out.set(k + l, x.lane(l));
+            }
+        } else if x.is_complete() {
+            for l in 0..filled {
+                out.set(k + l, x.lane(l));
             }
         } else {
             for i in k..k + filled {

@@ -24,8 +24,16 @@ pub fn gather<V: Lanes<L>, const L: usize, const N: usize>(states: &[[V::Scalar;
 pub trait SplitLanes<const L: usize> {
     /// The value of one lane: `f64` for `F64x4`, `[[f64; N]; N]` for `[[F64x4; N]; N]`, ….
     type Single: Copy;
+    /// The value of lane `l` (`l < L`).
+    fn lane(&self, l: usize) -> Self::Single;
     /// The value of each lane, first to last.
-    fn split_lanes(self) -> [Self::Single; L];
+    #[inline(always)]
+    fn split_lanes(self) -> [Self::Single; L]
+    where
+        Self: Sized,
+    {
+        core::array::from_fn(|l| self.lane(l))
+    }
     /// Whether it holds a value for every lane: false for an `Err` (a solve whose pivot test
     /// failed in at least one lane, which then holds no value for any).
     #[inline(always)]
@@ -39,10 +47,10 @@ pub trait SplitLanes<const L: usize> {
 impl<X: SplitLanes<L>, E: Copy, const L: usize> SplitLanes<L> for Result<X, E> {
     type Single = Result<X::Single, E>;
     #[inline(always)]
-    fn split_lanes(self) -> [Self::Single; L] {
+    fn lane(&self, l: usize) -> Self::Single {
         match self {
-            Ok(x) => x.split_lanes().map(Ok),
-            Err(e) => [Err(e); L],
+            Ok(x) => Ok(x.lane(l)),
+            Err(e) => Err(*e),
         }
     }
     #[inline(always)]
@@ -57,6 +65,10 @@ macro_rules! split_lane_type {
         impl SplitLanes<$lanes> for $name {
             type Single = $e;
             #[inline(always)]
+            fn lane(&self, l: usize) -> $e {
+                self.to_array()[l]
+            }
+            #[inline(always)]
             fn split_lanes(self) -> [$e; $lanes] {
                 self.to_array()
             }
@@ -69,30 +81,27 @@ split_lane_type!(F64x4: f64 x 4, F64x2: f64 x 2, F32x8: f32 x 8, F32x4: f32 x 4)
 impl<X: SplitLanes<L>, const L: usize, const N: usize> SplitLanes<L> for [X; N] {
     type Single = [X::Single; N];
     #[inline(always)]
-    fn split_lanes(self) -> [[X::Single; N]; L] {
-        let parts = self.map(X::split_lanes);
-        core::array::from_fn(|l| core::array::from_fn(|j| parts[j][l]))
+    fn lane(&self, l: usize) -> [X::Single; N] {
+        core::array::from_fn(|j| self[j].lane(l))
     }
 }
 
 impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for Pose<X> {
     type Single = Pose<X::Single>;
     #[inline(always)]
-    fn split_lanes(self) -> [Pose<X::Single>; L] {
-        let (rotation, position) = (self.rotation.split_lanes(), self.position.split_lanes());
-        core::array::from_fn(|l| Pose {
-            rotation: rotation[l],
-            position: position[l],
-        })
+    fn lane(&self, l: usize) -> Pose<X::Single> {
+        Pose {
+            rotation: self.rotation.lane(l),
+            position: self.position.lane(l),
+        }
     }
 }
 
 impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for InverseDynamicsDerivatives<X> {
     type Single = InverseDynamicsDerivatives<X::Single>;
     #[inline(always)]
-    fn split_lanes(self) -> [Self::Single; L] {
-        let blocks = [self.dtau_dq, self.dtau_dqd].split_lanes();
-        blocks.map(InverseDynamicsDerivatives::from_blocks)
+    fn lane(&self, l: usize) -> Self::Single {
+        InverseDynamicsDerivatives::from_blocks([self.dtau_dq.lane(l), self.dtau_dqd.lane(l)])
     }
 }
 
@@ -101,9 +110,12 @@ impl<Y: SplitLanes<L>, X: SplitLanes<L>, const L: usize> SplitLanes<L>
 {
     type Single = ForwardDynamicsDerivatives<Y::Single, X::Single>;
     #[inline(always)]
-    fn split_lanes(self) -> [Self::Single; L] {
-        let qdd = self.qdd.split_lanes();
-        let blocks = [self.dqdd_dq, self.dqdd_dqd, self.dqdd_dtau].split_lanes();
-        core::array::from_fn(|l| ForwardDynamicsDerivatives::from_parts((qdd[l], blocks[l])))
+    fn lane(&self, l: usize) -> Self::Single {
+        let blocks = [
+            self.dqdd_dq.lane(l),
+            self.dqdd_dqd.lane(l),
+            self.dqdd_dtau.lane(l),
+        ];
+        ForwardDynamicsDerivatives::from_parts((self.qdd.lane(l), blocks))
     }
 }
