@@ -7,7 +7,7 @@
 //!
 //! | type | lanes | x86-64 with AVX2 | x86-64 without | elsewhere |
 //! |---|---|---|---|---|
-//! | [`F64x4`] | 4 × `f64` | one AVX register | four `f64` (the compiler pairs them in SSE2) | four `f64` |
+//! | [`F64x4`] | 4 × `f64` | one AVX register | four `f64` | four `f64` |
 //! | [`F64x2`] | 2 × `f64` | one SSE2 register | one SSE2 register | two `f64` |
 //! | [`F32x8`] | 8 × `f32` | one AVX register | eight `f32` | eight `f32` |
 //! | [`F32x4`] | 4 × `f32` | one SSE register | one SSE register | four `f32` |

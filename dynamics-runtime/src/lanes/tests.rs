@@ -1,5 +1,9 @@
 //! Each lane against the scalar, bit for bit, operation by operation.
 
+// std for the tests alone, with or without the crate's `std` feature.
+extern crate std;
+use std::{format, vec::Vec};
+
 use super::{gather, F32x4, F32x8, F64x2, F64x4, Lanes, SplitLanes};
 use crate::Real;
 
