@@ -34,7 +34,7 @@
 //! (a number, arrays of them, a [`Pose`](crate::Pose), the derivatives' structs) apart into one
 //! result per state.
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+#[cfg(any(test, not(all(target_arch = "x86_64", target_feature = "avx2"))))]
 mod portable;
 mod split;
 #[cfg(target_arch = "x86_64")]
