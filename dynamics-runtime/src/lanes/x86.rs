@@ -157,6 +157,7 @@ x86_backend!(
 /// `#[inline]`, not `always`: optimized builds inline them all the same, and unoptimized ones
 /// keep each operation's temporaries in its own frame rather than in the generated function's
 /// (whose frame would otherwise outgrow a test thread's stack on the larger robots).
+#[cfg(not(target_feature = "avx2"))]
 macro_rules! pair_backend {
     ($m:ident, $e:ident, $lanes:literal, $half:ident, $half_lanes:literal) => {
         pub(in crate::lanes) mod $m {
