@@ -14,8 +14,8 @@
 //!
 //! "AVX2" is the build's (`-C target-cpu=native` on most machines, or `-C target-feature=+avx2`):
 //! the choice is made when the crate is compiled, not at run time. The portable form (plain
-//! arrays, lane by lane) is what other targets get; compilers vectorize much of it (NEON on
-//! aarch64).
+//! arrays, lane by lane) is what other targets get, for the compiler to vectorize where it can
+//! (NEON on aarch64: not written by hand, nor measured).
 //!
 //! **Bit for bit.** Each lane gives exactly what the same method gives in `f64` (or `f32`) for
 //! that lane's state: the operations are the same IEEE operations in the same order.
