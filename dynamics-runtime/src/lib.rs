@@ -25,6 +25,13 @@
 //! `θi'`, `θi''` (`di'`, `di''` for a prismatic joint): a combining dot does not show in
 //! rustdoc's code font.
 //!
+//! # Many states at once
+//!
+//! The lane types of [`lanes`] ([`F64x4`], [`F32x8`], …) are [`Real`] too: with `q: [F64x4;
+//! N]`, every method evaluates four states in one call, each lane bit for bit the `f64`
+//! result of its state (AVX2 or SSE2 registers on x86-64). `Real` is therefore not ordered;
+//! [`RealScalar`] is the one-number `f32` and `f64`.
+//!
 //! # Example
 //!
 //! ```

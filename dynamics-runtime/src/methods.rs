@@ -255,7 +255,8 @@ macro_rules! for_each_method {
                 methods {
                     /// The inverse of the mass matrix, `M(q)⁻¹`, through the LDLᵀ factorization of
                     /// `M`; `Err(NotPositiveDefinite)` where a pivot of the factorization is not
-                    /// positive (a robot whose parameters leave a joint without inertia).
+                    /// positive (a robot whose parameters leave a joint without inertia); on lane
+                    /// types, where at least one lane's is not.
                     fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na, batch mass_matrix_inverse_batch {
                         variant: MassMatrixInverse,
                         equation: None,
@@ -266,7 +267,7 @@ macro_rules! for_each_method {
                     /// Forward dynamics `qdd = M(q)⁻¹ (tau − C(q, qd) qd − g(q))`, minus joint
                     /// friction where the robot declares it, through the LDLᵀ factorization of `M`:
                     /// the inverse of `inverse_dynamics`. `Err(NotPositiveDefinite)` where a pivot
-                    /// is not positive.
+                    /// is not positive (on lane types, where at least one lane's is not).
                     fn forward_dynamics(q, qd, tau) -> solved_vector, nalgebra forward_dynamics_na, batch forward_dynamics_batch {
                         variant: ForwardDynamics,
                         equation: None,
@@ -310,7 +311,7 @@ macro_rules! for_each_method {
                     /// Forward dynamics and its derivatives at `(q, qd, tau)`: `q̈`, `∂q̈/∂q`,
                     /// `∂q̈/∂q̇` and `∂q̈/∂τ = M⁻¹`, the first two as `−M⁻¹ ∂τ/∂x` at that `q̈`,
                     /// solved with the LDLᵀ of `M`. `Err(NotPositiveDefinite)` where a pivot is not
-                    /// positive.
+                    /// positive (on lane types, where at least one lane's is not).
                     fn forward_dynamics_derivatives(q, qd, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na, batch forward_dynamics_derivatives_batch {
                         variant: ForwardDynamicsDerivatives,
                         equation: None,

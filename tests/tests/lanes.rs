@@ -4,13 +4,16 @@
 //! one with the regressor; `F32x8` against `f32`; `F64x2` and `F32x4` on two robots. Each state
 //! set has a lane whose sines and cosines leave the fast range. `forward_dynamics` with one lane
 //! whose mass matrix fails (a NaN): `Err` for the lanes, `Ok` for the others one at a time.
+//! And the reference data's samples four at a time against Pinocchio's τ, M and g directly.
 //!
 //! Run in the default build (SSE2, no FMA) and, by `.ci/run`, in a build for this CPU (AVX2
 //! registers and fused multiply-adds).
 
-use dynamics_runtime::lanes::{F32x4, F32x8, F64x2, F64x4, SplitLanes};
+use dynamics_reference::scaled_error;
+use dynamics_runtime::lanes::{gather, F32x4, F32x8, F64x2, F64x4, SplitLanes};
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::lanes::{derivatives, dynamics, regressor, Motion, States};
+use dynamics_tests::reference::{flat, matrix, samples, vector, TOLERANCE};
 use dynamics_tests::robots::{
     General, NikuPolar, NikuTwoLink, Panda, PandaTwin, Puma560, Random1, Random2, Random5, Rubbing,
     Stanford, Tilted, Ur5, Ur5Twin, Ur5Urdf,
@@ -120,4 +123,40 @@ fn one_failing_lane_makes_the_lanes_err() {
             "lane {l}"
         );
     }
+}
+
+/// The 20 samples of a reference data file, four at a time in `F64x4`: τ, M and g against
+/// Pinocchio's to the reference tests' tolerance.
+fn against_pinocchio<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
+    let samples = samples(file);
+    for (k, group) in samples.chunks_exact(4).enumerate() {
+        let state = |key: &str| -> [F64x4; N] {
+            gather(&core::array::from_fn(|l| vector::<N>(&group[l][key])))
+        };
+        let (q, qd, qdd) = (state("q"), state("qd"), state("qdd"));
+        let tau = robot.inverse_dynamics(&q, &qd, &qdd).split_lanes();
+        let m = robot.mass_matrix(&q).split_lanes();
+        let g = robot.gravity_torques(&q).split_lanes();
+        for (l, s) in group.iter().enumerate() {
+            let errors = [
+                scaled_error(&tau[l], &vector::<N>(&s["tau"])),
+                scaled_error(&flat(m[l]), &flat(matrix::<N>(&s["M"]))),
+                scaled_error(&g[l], &vector::<N>(&s["g"])),
+            ];
+            let worst = errors.iter().fold(0.0f64, |a, &b| a.max(b));
+            assert!(
+                worst < TOLERANCE,
+                "{file}, sample {}: {errors:?}",
+                4 * k + l
+            );
+        }
+    }
+}
+
+#[test]
+fn lanes_against_pinocchio_data() {
+    against_pinocchio(&Puma560, "reference/data/puma560.json");
+    against_pinocchio(&Stanford, "reference/data/stanford.json");
+    against_pinocchio(&Random5, "reference/data/random5.json");
+    against_pinocchio(&Panda, "panda/data.json");
 }

@@ -7,15 +7,15 @@
 //!
 //! | type | lanes | x86-64 with AVX2 | x86-64 without | elsewhere |
 //! |---|---|---|---|---|
-//! | [`F64x4`] | 4 × `f64` | one AVX register | four `f64` (the compiler pairs them in SSE2) | four `f64` |
+//! | [`F64x4`] | 4 × `f64` | one AVX register | two SSE2 registers | four `f64` |
 //! | [`F64x2`] | 2 × `f64` | one SSE2 register | one SSE2 register | two `f64` |
-//! | [`F32x8`] | 8 × `f32` | one AVX register | eight `f32` | eight `f32` |
+//! | [`F32x8`] | 8 × `f32` | one AVX register | two SSE registers | eight `f32` |
 //! | [`F32x4`] | 4 × `f32` | one SSE register | one SSE register | four `f32` |
 //!
 //! "AVX2" is the build's (`-C target-cpu=native` on most machines, or `-C target-feature=+avx2`):
 //! the choice is made when the crate is compiled, not at run time. The portable form (plain
-//! arrays, lane by lane) is what other targets get; compilers vectorize much of it (NEON on
-//! aarch64).
+//! arrays, lane by lane) is what other targets get, for the compiler to vectorize where it can
+//! (NEON on aarch64: not written by hand, nor measured).
 //!
 //! **Bit for bit.** Each lane gives exactly what the same method gives in `f64` (or `f32`) for
 //! that lane's state: the operations are the same IEEE operations in the same order.
@@ -34,7 +34,7 @@
 //! (a number, arrays of them, a [`Pose`](crate::Pose), the derivatives' structs) apart into one
 //! result per state.
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+#[cfg(any(test, not(target_arch = "x86_64")))]
 mod portable;
 mod split;
 #[cfg(target_arch = "x86_64")]
@@ -232,16 +232,17 @@ macro_rules! lane_operators {
 mod f64x4 {
     use super::{Lanes, Real};
     lane_type!(
-        /// Four `f64` lanes: one AVX register where the build has AVX2, else four `f64`.
+        /// Four `f64` lanes: one AVX register where the build has AVX2, else two SSE2
+        /// registers on x86-64, four `f64` elsewhere.
         /// See [the module](crate::lanes).
         F64x4,
         f64,
         4,
         backend
     );
-    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+    #[cfg(not(target_arch = "x86_64"))]
     use super::portable::f64x4 as backend;
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    #[cfg(target_arch = "x86_64")]
     use super::x86::f64x4 as backend;
 }
 
@@ -264,16 +265,17 @@ mod f64x2 {
 mod f32x8 {
     use super::{Lanes, Real};
     lane_type!(
-        /// Eight `f32` lanes: one AVX register where the build has AVX2, else eight `f32`.
+        /// Eight `f32` lanes: one AVX register where the build has AVX2, else two SSE
+        /// registers on x86-64, eight `f32` elsewhere.
         /// See [the module](crate::lanes).
         F32x8,
         f32,
         8,
         backend
     );
-    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+    #[cfg(not(target_arch = "x86_64"))]
     use super::portable::f32x8 as backend;
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    #[cfg(target_arch = "x86_64")]
     use super::x86::f32x8 as backend;
 }
 

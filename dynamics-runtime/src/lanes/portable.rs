@@ -75,13 +75,14 @@ macro_rules! portable_backend {
     };
 }
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+// Each also in test builds, where `tests.rs` checks it on every target.
+#[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f64x4, f64, 4, <f64 as Real>::sin_cos_4);
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+#[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f32x8, f32, 8, <f32 as Real>::sin_cos_8);
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f32x4, f32, 4, <f32 as Real>::sin_cos_4);
-#[cfg(not(target_arch = "x86_64"))]
+#[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f64x2, f64, 2, |a: [f64; 2]| {
     let (s0, c0) = Real::sin_cos(a[0]);
     let (s1, c1) = Real::sin_cos(a[1]);

@@ -1,5 +1,9 @@
 //! Each lane against the scalar, bit for bit, operation by operation.
 
+// std for the tests alone, with or without the crate's `std` feature.
+extern crate std;
+use std::{format, vec::Vec};
+
 use super::{gather, F32x4, F32x8, F64x2, F64x4, Lanes, SplitLanes};
 use crate::Real;
 
@@ -61,6 +65,40 @@ fn every_operation_is_the_scalars_lane_by_lane() {
     check::<F64x2, 2>(&SPECIAL, f64::to_bits);
     check::<F32x8, 8>(&f32s, |x| u64::from(x.to_bits()));
     check::<F32x4, 4>(&f32s, |x| u64::from(x.to_bits()));
+}
+
+/// The portable backends as lane types of their own, to check them on every target (on
+/// x86-64 the real types use registers).
+mod portable {
+    use super::super::{portable, Lanes, Real};
+    mod p64x4 {
+        use super::{portable::f64x4 as backend, Lanes, Real};
+        lane_type!(P64x4, f64, 4, backend);
+    }
+    mod p64x2 {
+        use super::{portable::f64x2 as backend, Lanes, Real};
+        lane_type!(P64x2, f64, 2, backend);
+    }
+    mod p32x8 {
+        use super::{portable::f32x8 as backend, Lanes, Real};
+        lane_type!(P32x8, f32, 8, backend);
+    }
+    mod p32x4 {
+        use super::{portable::f32x4 as backend, Lanes, Real};
+        lane_type!(P32x4, f32, 4, backend);
+    }
+    pub(super) use {p32x4::P32x4, p32x8::P32x8, p64x2::P64x2, p64x4::P64x4};
+}
+
+#[test]
+#[allow(clippy::cast_possible_truncation)]
+fn the_portable_backends_too() {
+    use portable::{P32x4, P32x8, P64x2, P64x4};
+    let f32s: Vec<f32> = SPECIAL.iter().map(|&x| x as f32).collect();
+    check::<P64x4, 4>(&SPECIAL, f64::to_bits);
+    check::<P64x2, 2>(&SPECIAL, f64::to_bits);
+    check::<P32x8, 8>(&f32s, |x| u64::from(x.to_bits()));
+    check::<P32x4, 4>(&f32s, |x| u64::from(x.to_bits()));
 }
 
 #[test]

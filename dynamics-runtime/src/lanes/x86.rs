@@ -1,6 +1,6 @@
 //! The x86-64 backends: one SSE2 register (`F64x2`, `F32x4`, in every x86-64 build) or one AVX
-//! register (`F64x4`, `F32x8`, where the build enables AVX2), each operation one instruction
-//! on all lanes, the same IEEE operation as the scalar's on each.
+//! register (`F64x4`, `F32x8`, where the build enables AVX2; two SSE2 registers without), each
+//! operation one instruction on all lanes, the same IEEE operation as the scalar's on each.
 //!
 //! SAFETY (every `unsafe` block of this file): the intrinsics require the target features of
 //! their module (SSE2, or AVX and AVX2), which the build enables wherever the module is
@@ -151,6 +151,82 @@ x86_backend!(
     eq: |a, b| _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
     sin_cos: super::sin_cos_f32x8,
 );
+
+/// A backend module `$m` of `2 × $half_lanes` lanes of `$e` as two registers of the backend
+/// `$half`, for builds without AVX2: each operation on both halves, which run side by side.
+/// `#[inline]`, not `always`: optimized builds inline them all the same, and unoptimized ones
+/// keep each operation's temporaries in its own frame rather than in the generated function's
+/// (whose frame would otherwise outgrow a test thread's stack on the larger robots).
+#[cfg(not(target_feature = "avx2"))]
+macro_rules! pair_backend {
+    ($m:ident, $e:ident, $lanes:literal, $half:ident, $half_lanes:literal) => {
+        pub(in crate::lanes) mod $m {
+            use super::$half as h;
+
+            /// Lanes `0..$half_lanes` in the first register.
+            pub(in crate::lanes) type V = [h::V; 2];
+
+            #[inline]
+            pub(in crate::lanes) const fn constant(lanes: [$e; $lanes]) -> V {
+                // SAFETY: the two registers and the array have the same size and layout (the
+                // first register holds the first half), and every bit pattern is valid.
+                unsafe { core::mem::transmute::<[$e; $lanes], V>(lanes) }
+            }
+            #[inline]
+            pub(in crate::lanes) fn splat(x: $e) -> V {
+                [h::splat(x); 2]
+            }
+            #[inline]
+            pub(in crate::lanes) fn from_array(lanes: [$e; $lanes]) -> V {
+                let half = |k: usize| core::array::from_fn(|l| lanes[k * $half_lanes + l]);
+                [h::from_array(half(0)), h::from_array(half(1))]
+            }
+            #[inline]
+            pub(in crate::lanes) fn to_array(v: V) -> [$e; $lanes] {
+                let halves = [h::to_array(v[0]), h::to_array(v[1])];
+                core::array::from_fn(|l| halves[l / $half_lanes][l % $half_lanes])
+            }
+            pair_backend!(@binary add sub mul div all_eq);
+            #[inline]
+            pub(in crate::lanes) fn neg(a: V) -> V {
+                [h::neg(a[0]), h::neg(a[1])]
+            }
+            #[inline]
+            pub(in crate::lanes) fn mul_add(a: V, b: V, c: V) -> V {
+                [h::mul_add(a[0], b[0], c[0]), h::mul_add(a[1], b[1], c[1])]
+            }
+            #[inline]
+            pub(in crate::lanes) fn sign(a: V) -> V {
+                [h::sign(a[0]), h::sign(a[1])]
+            }
+            /// Both halves tested, with no early exit.
+            #[inline]
+            pub(in crate::lanes) fn all_positive(a: V) -> bool {
+                h::all_positive(a[0]) & h::all_positive(a[1])
+            }
+            #[inline]
+            pub(in crate::lanes) fn sin_cos(a: V) -> (V, V) {
+                let ((s0, c0), (s1, c1)) = (h::sin_cos(a[0]), h::sin_cos(a[1]));
+                ([s0, s1], [c0, c1])
+            }
+        }
+    };
+    (@binary $($f:ident)*) => {$(
+        #[inline]
+        pub(in crate::lanes) fn $f(a: V, b: V) -> pair_backend!(@output $f) {
+            pair_backend!(@combine $f, h::$f(a[0], b[0]), h::$f(a[1], b[1]))
+        }
+    )*};
+    (@output all_eq) => { bool };
+    (@output $f:ident) => { V };
+    (@combine all_eq, $x:expr, $y:expr) => { $x & $y };
+    (@combine $f:ident, $x:expr, $y:expr) => { [$x, $y] };
+}
+
+#[cfg(not(target_feature = "avx2"))]
+pair_backend!(f64x4, f64, 4, f64x2, 2);
+#[cfg(not(target_feature = "avx2"))]
+pair_backend!(f32x8, f32, 8, f32x4, 4);
 
 use crate::trig::{sin_cos_f32, sin_cos_f64, sse2_f64, sse_f32};
 use core::arch::x86_64::{__m128, __m128d};
