@@ -10,7 +10,7 @@
 //! It fails if a knot's batch result differs from its own call's by one bit. The times it
 //! prints are one run's (the median of 51 repeats), not a benchmark (`bench/run` has those).
 
-use dynamics_runtime::{Dynamics, DynamicsDerivatives, DynamicsDerivativesBatch};
+use dynamics_runtime::{Dynamics, DynamicsBatch, DynamicsDerivatives, DynamicsDerivativesBatch};
 use std::hint::black_box;
 use std::time::Instant;
 

@@ -230,6 +230,6 @@ fn regressors_in_batches() {
 #[should_panic(expected = "`qd` holds 3 states, the output 4")]
 fn inputs_of_another_length_panic() {
     let (q, qd) = (states::<6>(4, 1), states::<6>(3, 2));
-    let mut tau = vec![[0.0; 6]; 4];
+    let mut tau = [[0.0; 6]; 4];
     Puma560.coriolis_torques_batch(&q[..], &qd[..], &mut tau[..]);
 }
