@@ -65,6 +65,13 @@ pub trait StatesMut<O> {
     fn count(&self) -> usize;
     /// Writes result `k`.
     fn set(&mut self, k: usize, value: O);
+    /// Results `k` to `k + L − 1` side by side, where they are (a slice of results), for
+    /// writing a group's lanes in place.
+    #[inline(always)]
+    fn group<const L: usize>(&mut self, k: usize) -> Option<&mut [O; L]> {
+        let _ = k;
+        None
+    }
 }
 
 impl<O> StatesMut<O> for [O] {
@@ -76,6 +83,10 @@ impl<O> StatesMut<O> for [O] {
     fn set(&mut self, k: usize, value: O) {
         self[k] = value;
     }
+    #[inline(always)]
+    fn group<const L: usize>(&mut self, k: usize) -> Option<&mut [O; L]> {
+        self.get_mut(k..k + L)?.try_into().ok()
+    }
 }
 
 impl<O, const K: usize> StatesMut<O> for [O; K] {
@@ -86,6 +97,10 @@ impl<O, const K: usize> StatesMut<O> for [O; K] {
     #[inline(always)]
     fn set(&mut self, k: usize, value: O) {
         self[k] = value;
+    }
+    #[inline(always)]
+    fn group<const L: usize>(&mut self, k: usize) -> Option<&mut [O; L]> {
+        self.as_mut_slice().group(k)
     }
 }
 

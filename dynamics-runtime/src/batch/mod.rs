@@ -60,8 +60,9 @@ where
     S: States<T, M> + ?Sized,
 {
     let last = states.count() - 1;
-    let index: [usize; L] = core::array::from_fn(|l| (k + l).min(last));
-    core::array::from_fn(|j| <T::Lanes as Lanes<L>>::from_array(index.map(|i| states.value(i, j))))
+    // Whole states first (one copy each from a slice of states), then transposed.
+    let rows: [[T; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
+    crate::lanes::gather(&rows)
 }
 
 /// Writes the `len` results into `out`, `L` states a call of `group` (given the first state's
@@ -80,18 +81,16 @@ pub fn drive<X, O, const L: usize>(
     while k < len {
         let filled = (len - k).min(L);
         let x = group(k);
-        if x.is_complete() && filled == L {
-            // A whole group: `l` a constant of the unrolled loop, each lane read in place.
-            for l in 0..L {
-                out.set(k + l, x.lane(l));
-            }
-        } else if x.is_complete() {
-            for l in 0..filled {
-                out.set(k + l, x.lane(l));
-            }
-        } else {
+        if !x.is_complete() {
             for i in k..k + filled {
                 out.set(i, one(i));
+            }
+        } else if let Some(results) = out.group::<L>(k) {
+            // A whole group of results side by side: the lanes written into them in place.
+            x.write_lanes(results.each_mut());
+        } else {
+            for l in 0..filled {
+                out.set(k + l, x.lane(l));
             }
         }
         k += L;

@@ -34,6 +34,24 @@ pub trait SplitLanes<const L: usize> {
     {
         core::array::from_fn(|l| self.lane(l))
     }
+    /// Writes lane `l` into `outs[l]`, for every lane.
+    #[inline(always)]
+    fn write_lanes(&self, outs: [&mut Self::Single; L]) {
+        for (l, out) in outs.into_iter().enumerate() {
+            *out = self.lane(l);
+        }
+    }
+    /// Writes lane `l` of `items[j]` into `outs[l][j]`: an array of these, each lane's part
+    /// gathered into its own array (a lane type overrides it with whole rows at a time).
+    #[inline(always)]
+    fn write_array<const N: usize>(items: &[Self; N], mut outs: [&mut [Self::Single; N]; L])
+    where
+        Self: Sized,
+    {
+        for (j, item) in items.iter().enumerate() {
+            item.write_lanes(outs.each_mut().map(|out| &mut out[j]));
+        }
+    }
     /// Whether it holds a value for every lane: false for an `Err` (a solve whose pivot test
     /// failed in at least one lane, which then holds no value for any).
     #[inline(always)]
@@ -72,6 +90,26 @@ macro_rules! split_lane_type {
             fn split_lanes(self) -> [$e; $lanes] {
                 self.to_array()
             }
+            #[inline(always)]
+            fn write_array<const N: usize>(items: &[Self; N], mut outs: [&mut [$e; N]; $lanes]) {
+                // Blocks of as many elements as lanes, transposed whole (a compiler turns the
+                // transpose into shuffles, and each row into one store), then the rest.
+                let whole = N / $lanes * $lanes;
+                for j in (0..whole).step_by($lanes) {
+                    let block: [[$e; $lanes]; $lanes] =
+                        core::array::from_fn(|i| items[j + i].to_array());
+                    for (l, out) in outs.iter_mut().enumerate() {
+                        let row: [$e; $lanes] = core::array::from_fn(|i| block[i][l]);
+                        out[j..j + $lanes].copy_from_slice(&row);
+                    }
+                }
+                for j in whole..N {
+                    let values = items[j].to_array();
+                    for (l, out) in outs.iter_mut().enumerate() {
+                        out[j] = values[l];
+                    }
+                }
+            }
         }
     )*};
 }
@@ -84,6 +122,10 @@ impl<X: SplitLanes<L>, const L: usize, const N: usize> SplitLanes<L> for [X; N] 
     fn lane(&self, l: usize) -> [X::Single; N] {
         core::array::from_fn(|j| self[j].lane(l))
     }
+    #[inline(always)]
+    fn write_lanes(&self, outs: [&mut [X::Single; N]; L]) {
+        X::write_array(self, outs);
+    }
 }
 
 impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for Pose<X> {
@@ -95,6 +137,12 @@ impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for Pose<X> {
             position: self.position.lane(l),
         }
     }
+    #[inline(always)]
+    fn write_lanes(&self, mut outs: [&mut Self::Single; L]) {
+        self.rotation
+            .write_lanes(outs.each_mut().map(|out| &mut out.rotation));
+        self.position.write_lanes(outs.map(|out| &mut out.position));
+    }
 }
 
 impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for InverseDynamicsDerivatives<X> {
@@ -102,6 +150,12 @@ impl<X: SplitLanes<L>, const L: usize> SplitLanes<L> for InverseDynamicsDerivati
     #[inline(always)]
     fn lane(&self, l: usize) -> Self::Single {
         InverseDynamicsDerivatives::from_blocks([self.dtau_dq.lane(l), self.dtau_dqd.lane(l)])
+    }
+    #[inline(always)]
+    fn write_lanes(&self, mut outs: [&mut Self::Single; L]) {
+        self.dtau_dq
+            .write_lanes(outs.each_mut().map(|out| &mut out.dtau_dq));
+        self.dtau_dqd.write_lanes(outs.map(|out| &mut out.dtau_dqd));
     }
 }
 
