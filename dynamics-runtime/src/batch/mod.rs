@@ -60,9 +60,21 @@ where
     S: States<T, M> + ?Sized,
 {
     let last = states.count() - 1;
-    // Whole states first (one copy each from a slice of states), then transposed.
+    // Whole states first (one copy each from a slice of states), then transposed by blocks of
+    // as many values as lanes, the rest value by value.
     let rows: [[T; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
-    crate::lanes::gather(&rows)
+    let mut values = [<T::Lanes as crate::Real>::ZERO; M];
+    let whole = M / L * L;
+    for j in (0..whole).step_by(L) {
+        let block = core::array::from_fn(|l| {
+            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| rows[l][j + i]))
+        });
+        values[j..j + L].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block));
+    }
+    for (j, value) in values.iter_mut().enumerate().skip(whole) {
+        *value = <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|l| rows[l][j]));
+    }
+    values
 }
 
 /// Writes the `len` results into `out`, `L` states a call of `group` (given the first state's

@@ -55,12 +55,23 @@ pub trait Lanes<const L: usize>: Real {
     fn from_array(lanes: [Self::Scalar; L]) -> Self;
     /// The lanes as an array.
     fn to_array(self) -> [Self::Scalar; L];
+    /// `L` values transposed: lane `l` of value `j` of the result is lane `j` of value `l` (the
+    /// rows of `L` states into the lanes of `L` values, and back). In registers where the
+    /// backend has the shuffles (`F64x4` with AVX2), else through arrays.
+    #[inline(always)]
+    fn transpose(values: [Self; L]) -> [Self; L] {
+        let rows = values.map(Self::to_array);
+        core::array::from_fn(|j| Self::from_array(core::array::from_fn(|l| rows[l][j])))
+    }
 }
 
 /// The lane type `$name` of `$lanes` × `$e` on the backend module `$b`, which gives its
 /// register type `V` and its operations.
 macro_rules! lane_type {
-    ($(#[doc = $doc:literal])* $name:ident, $e:ident, $lanes:literal, $b:ident) => {
+    (
+        $(#[doc = $doc:literal])* $name:ident, $e:ident, $lanes:literal, $b:ident
+        $(, transpose: $transpose:path)?
+    ) => {
         $(#[doc = $doc])*
         #[derive(Clone, Copy)]
         #[repr(transparent)]
@@ -101,6 +112,12 @@ macro_rules! lane_type {
             fn to_array(self) -> [$e; $lanes] {
                 self.to_array()
             }
+            $(
+                #[inline(always)]
+                fn transpose(values: [Self; $lanes]) -> [Self; $lanes] {
+                    $transpose(values.map(|v| v.0)).map(Self)
+                }
+            )?
         }
 
         impl From<[$e; $lanes]> for $name {
@@ -238,8 +255,19 @@ mod f64x4 {
         F64x4,
         f64,
         4,
-        backend
+        backend,
+        transpose: transpose
     );
+    /// Four registers transposed by AVX's shuffles.
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    use super::x86::transpose_f64x4 as transpose;
+    /// Four registers transposed through arrays.
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+    #[inline(always)]
+    fn transpose(values: [backend::V; 4]) -> [backend::V; 4] {
+        let rows = values.map(backend::to_array);
+        core::array::from_fn(|j| backend::from_array(core::array::from_fn(|l| rows[l][j])))
+    }
     #[cfg(not(target_arch = "x86_64"))]
     use super::portable::f64x4 as backend;
     #[cfg(target_arch = "x86_64")]

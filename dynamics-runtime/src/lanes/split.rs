@@ -92,15 +92,14 @@ macro_rules! split_lane_type {
             }
             #[inline(always)]
             fn write_array<const N: usize>(items: &[Self; N], mut outs: [&mut [$e; N]; $lanes]) {
-                // Blocks of as many elements as lanes, transposed whole (a compiler turns the
-                // transpose into shuffles, and each row into one store), then the rest.
+                // Blocks of as many elements as lanes, transposed whole (`Lanes::transpose`),
+                // each lane's row then one store, and the rest element by element.
                 let whole = N / $lanes * $lanes;
                 for j in (0..whole).step_by($lanes) {
-                    let block: [[$e; $lanes]; $lanes] =
-                        core::array::from_fn(|i| items[j + i].to_array());
-                    for (l, out) in outs.iter_mut().enumerate() {
-                        let row: [$e; $lanes] = core::array::from_fn(|i| block[i][l]);
-                        out[j..j + $lanes].copy_from_slice(&row);
+                    let block = core::array::from_fn(|i| items[j + i]);
+                    let rows = <Self as Lanes<$lanes>>::transpose(block);
+                    for (out, row) in outs.iter_mut().zip(rows) {
+                        out[j..j + $lanes].copy_from_slice(&row.to_array());
                     }
                 }
                 for j in whole..N {

@@ -119,3 +119,31 @@ fn gather_and_split_are_inverse() {
     assert_eq!(m[1], [[4.0, 5.0, 6.0]; 2]);
     assert_eq!(format!("{:?}", v[0]), "F64x2([1.0, 4.0])");
 }
+
+/// `transpose` exchanges lanes and values, whatever the backend (AVX2's shuffles for `F64x4`
+/// in a build for this CPU), and twice is the identity.
+#[test]
+fn transpose_exchanges_lanes_and_values() {
+    fn check<V: Lanes<L>, const L: usize>()
+    where
+        V::Scalar: PartialEq + core::fmt::Debug,
+    {
+        let values: [V; L] = core::array::from_fn(|j| {
+            V::from_array(core::array::from_fn(|l| {
+                <V::Scalar as Real>::from_f64((10 * j + l) as f64)
+            }))
+        });
+        let t = V::transpose(values);
+        for (j, value) in t.iter().enumerate() {
+            for (l, x) in value.to_array().into_iter().enumerate() {
+                assert_eq!(x, values[l].to_array()[j]);
+            }
+        }
+        let back = V::transpose(t).map(V::to_array);
+        assert_eq!(back, values.map(V::to_array));
+    }
+    check::<F64x4, 4>();
+    check::<F64x2, 2>();
+    check::<F32x8, 8>();
+    check::<F32x4, 4>();
+}

@@ -139,6 +139,31 @@ x86_backend!(
     sin_cos: super::sin_cos_f64x4,
 );
 
+/// Four registers of four `f64` transposed: lane `l` of result `j` is lane `j` of `rows[l]`
+/// (unpacks within the 128-bit halves, then the halves exchanged).
+#[cfg(target_feature = "avx2")]
+#[inline(always)]
+pub(in crate::lanes) fn transpose_f64x4(rows: [__m256d; 4]) -> [__m256d; 4] {
+    use core::arch::x86_64::{_mm256_permute2f128_pd, _mm256_unpackhi_pd, _mm256_unpacklo_pd};
+    unsafe {
+        // [r0₀ r1₀ r0₂ r1₂], [r0₁ r1₁ r0₃ r1₃], and the same of rows 2 and 3.
+        let (a, b) = (
+            _mm256_unpacklo_pd(rows[0], rows[1]),
+            _mm256_unpackhi_pd(rows[0], rows[1]),
+        );
+        let (c, d) = (
+            _mm256_unpacklo_pd(rows[2], rows[3]),
+            _mm256_unpackhi_pd(rows[2], rows[3]),
+        );
+        [
+            _mm256_permute2f128_pd::<0x20>(a, c),
+            _mm256_permute2f128_pd::<0x20>(b, d),
+            _mm256_permute2f128_pd::<0x31>(a, c),
+            _mm256_permute2f128_pd::<0x31>(b, d),
+        ]
+    }
+}
+
 #[cfg(target_feature = "avx2")]
 x86_backend!(
     f32x8, f32, 8, __m256,
