@@ -5,7 +5,9 @@
 //! other (NaN for a failed solve).
 
 use super::{Function, Functions, Timed};
-use dynamics_runtime::{DynamicsBatch, DynamicsDerivativesBatch, NotPositiveDefinite};
+use dynamics_runtime::{
+    DynamicsBatch, DynamicsDerivativesBatch, InverseDynamicsDerivatives, NotPositiveDefinite,
+};
 
 /// The number of states of a batch call.
 pub const HORIZON: usize = 100;
@@ -65,7 +67,10 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         qdd: *const f64,
         out: *mut f64,
     ) {
-        let zero = R::default().inverse_dynamics_derivatives(&[0.0; N], &[0.0; N], &[0.0; N]);
+        let zero = InverseDynamicsDerivatives {
+            dtau_dq: [[0.0; N]; N],
+            dtau_dqd: [[0.0; N]; N],
+        };
         let mut d = [zero; HORIZON];
         // SAFETY: the contract of `Function`, `HORIZON` times over.
         unsafe {

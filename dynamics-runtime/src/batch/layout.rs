@@ -30,6 +30,7 @@ impl<T: Copy, const M: usize> States<T, M> for [[T; M]] {
     }
 }
 
+/// As the slice of its states.
 impl<T: Copy, const M: usize, const K: usize> States<T, M> for [[T; M]; K] {
     #[inline(always)]
     fn count(&self) -> usize {
@@ -37,11 +38,11 @@ impl<T: Copy, const M: usize, const K: usize> States<T, M> for [[T; M]; K] {
     }
     #[inline(always)]
     fn value(&self, k: usize, j: usize) -> T {
-        self[k][j]
+        self.as_slice().value(k, j)
     }
     #[inline(always)]
     fn state(&self, k: usize) -> [T; M] {
-        self[k]
+        self.as_slice().state(k)
     }
 }
 
@@ -89,6 +90,7 @@ impl<O> StatesMut<O> for [O] {
     }
 }
 
+/// As the slice of its results.
 impl<O, const K: usize> StatesMut<O> for [O; K] {
     #[inline(always)]
     fn count(&self) -> usize {
@@ -96,7 +98,7 @@ impl<O, const K: usize> StatesMut<O> for [O; K] {
     }
     #[inline(always)]
     fn set(&mut self, k: usize, value: O) {
-        self[k] = value;
+        self.as_mut_slice().set(k, value);
     }
     #[inline(always)]
     fn group<const L: usize>(&mut self, k: usize) -> Option<&mut [O; L]> {
