@@ -67,6 +67,39 @@ pub trait Real:
     /// compiles for `f32` and `f64` to the machine code of `d > T::ZERO`, instruction for
     /// instruction (by value, the compiler orders some operations differently).
     fn all_positive(&self) -> bool;
+
+    /// `c x + acc` on eight values, lane by lane as [`Real::mul_add`]: the step of the
+    /// tangents that generated derivatives compute in lanes ([`crate::__private::Tangent`]),
+    /// in vector registers for `f64` and `f32`, a loop otherwise.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn oct_mul_add(x: [Self; 8], c: Self, acc: [Self; 8]) -> [Self; 8] {
+        core::array::from_fn(|l| x[l].mul_add(c, acc[l]))
+    }
+    /// `c x` on eight values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn oct_scale(x: [Self; 8], c: Self) -> [Self; 8] {
+        x.map(|x| x * c)
+    }
+    /// `a + b` on eight values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn oct_add(a: [Self; 8], b: [Self; 8]) -> [Self; 8] {
+        core::array::from_fn(|l| a[l] + b[l])
+    }
+    /// `a − b` on eight values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn oct_sub(a: [Self; 8], b: [Self; 8]) -> [Self; 8] {
+        core::array::from_fn(|l| a[l] - b[l])
+    }
+    /// `−x` on eight values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn oct_neg(x: [Self; 8]) -> [Self; 8] {
+        x.map(|x| -x)
+    }
 }
 
 /// One number, `f32` or `f64`: a [`Real`] that is ordered and converts to `f64`, and the
@@ -77,8 +110,9 @@ pub trait RealScalar: Real + PartialOrd {
 }
 
 macro_rules! impl_real {
-    ($t:ty, $sin_cos:path, $sin_cos_4:path, $sin_cos_8:path, $tanh:path) => {
+    ($t:ty, { $($oct:tt)* }, $sin_cos:path, $sin_cos_4:path, $sin_cos_8:path, $tanh:path) => {
         impl Real for $t {
+            $($oct)*
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
             #[inline(always)]
@@ -153,6 +187,29 @@ macro_rules! impl_real {
 
 impl_real!(
     f64,
+    {
+        // The tangents' steps in eight lanes: one AVX-512 register, or two AVX.
+        #[inline(always)]
+        fn oct_mul_add(x: [f64; 8], c: f64, acc: [f64; 8]) -> [Self; 8] {
+            crate::lanes::oct::mul_add(x, c, acc)
+        }
+        #[inline(always)]
+        fn oct_scale(x: [f64; 8], c: f64) -> [Self; 8] {
+            crate::lanes::oct::scale(x, c)
+        }
+        #[inline(always)]
+        fn oct_add(a: [f64; 8], b: [f64; 8]) -> [Self; 8] {
+            crate::lanes::oct::add(a, b)
+        }
+        #[inline(always)]
+        fn oct_sub(a: [f64; 8], b: [f64; 8]) -> [Self; 8] {
+            crate::lanes::oct::sub(a, b)
+        }
+        #[inline(always)]
+        fn oct_neg(x: [f64; 8]) -> [Self; 8] {
+            crate::lanes::oct::neg(x)
+        }
+    },
     crate::trig::sin_cos_f64,
     crate::trig::sin_cos_4_f64,
     crate::trig::sin_cos_8_f64,
@@ -160,6 +217,34 @@ impl_real!(
 );
 impl_real!(
     f32,
+    {
+        // The tangents' steps in eight lanes: one AVX register.
+        #[inline(always)]
+        fn oct_mul_add(x: [f32; 8], c: f32, acc: [f32; 8]) -> [Self; 8] {
+            crate::lanes::F32x8::from_array(x)
+                .mul_add(
+                    crate::lanes::F32x8::splat(c),
+                    crate::lanes::F32x8::from_array(acc),
+                )
+                .to_array()
+        }
+        #[inline(always)]
+        fn oct_scale(x: [f32; 8], c: f32) -> [Self; 8] {
+            (crate::lanes::F32x8::from_array(x) * crate::lanes::F32x8::splat(c)).to_array()
+        }
+        #[inline(always)]
+        fn oct_add(a: [f32; 8], b: [f32; 8]) -> [Self; 8] {
+            (crate::lanes::F32x8::from_array(a) + crate::lanes::F32x8::from_array(b)).to_array()
+        }
+        #[inline(always)]
+        fn oct_sub(a: [f32; 8], b: [f32; 8]) -> [Self; 8] {
+            (crate::lanes::F32x8::from_array(a) - crate::lanes::F32x8::from_array(b)).to_array()
+        }
+        #[inline(always)]
+        fn oct_neg(x: [f32; 8]) -> [Self; 8] {
+            (-crate::lanes::F32x8::from_array(x)).to_array()
+        }
+    },
     crate::trig::sin_cos_f32,
     crate::trig::sin_cos_4_f32,
     crate::trig::sin_cos_8_f32,

@@ -4,6 +4,7 @@
 use super::count::count;
 use super::emitter::Emitter;
 use super::expr::Place;
+use super::lanes::Queue;
 use super::names::{local, output_names, Element};
 use super::parts::Body;
 use crate::method::{Argument, Method};
@@ -38,6 +39,8 @@ impl Emitter<'_> {
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
         let outputs = shape.outputs();
         self.mark(&outputs);
+        self.bind_factors(shape);
+        let mut lanes = Queue::new(shape);
         let mut output_names = output_names(shape, method, |id| self.is_leaf(id));
         // A scalar result is returned as an expression, not bound.
         if matches!(shape, Shape::Scalar(_)) {
@@ -59,10 +62,12 @@ impl Emitter<'_> {
                     tokens: quote!(#(#statements)*),
                     ops: count(self.eq, &outputs),
                     zeros: Some(zeros),
+                    lanes: false,
                 };
             }
         }
         for (id, _) in self.graph.nodes() {
+            self.lanes_due(&mut lanes, Some(id), &mut statements);
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
                 continue;
@@ -75,8 +80,10 @@ impl Emitter<'_> {
             let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
             statements.push(self.bind(id, element));
         }
+        self.lanes_due(&mut lanes, None, &mut statements);
         let result = match shape {
             Shape::Scalar(id) => self.expr(*id, Place::Top),
+            Shape::Lanes { stack, lanes } => self.lane_stack(stack, lanes),
             Shape::Vector(v) => {
                 let items: Vec<TokenStream> =
                     v.iter().map(|&id| self.expr(id, Place::Top)).collect();
@@ -108,6 +115,7 @@ impl Emitter<'_> {
             tokens: quote!(#(#statements)* #result),
             ops: count(self.eq, &outputs),
             zeros: None,
+            lanes: matches!(shape, Shape::Lanes { .. }),
         }
     }
 
@@ -139,7 +147,7 @@ impl Emitter<'_> {
     }
 
     /// The array of arrays of matrix `m`'s rows.
-    fn matrix(&mut self, m: &[Vec<NodeId>]) -> TokenStream {
+    pub(super) fn matrix(&mut self, m: &[Vec<NodeId>]) -> TokenStream {
         let rows: Vec<TokenStream> = m
             .iter()
             .map(|r| {

@@ -25,6 +25,8 @@ pub struct MethodCode {
     /// For a method with an `into` form, whose body writes its result into `y_`, the
     /// result's value of zeros (`Body::zeros`).
     pub zeros: Option<TokenStream>,
+    /// Whether its body computes in lanes of tangents (`Body::lanes`).
+    pub lanes: bool,
 }
 
 /// The generated code of a robot: the shared configuration (see [`emit`]) and the methods of
@@ -129,6 +131,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
                     body: b.tokens.clone(),
                     ops: b.ops,
                     zeros: b.zeros.clone(),
+                    lanes: b.lanes,
                 }),
         );
         modules.push(Module {
@@ -289,6 +292,11 @@ impl Generated {
             }
         });
         let name = module_name(module.family, ident);
+        let tangent = self
+            .methods
+            .iter()
+            .any(|m| m.method.family() == module.family && m.lanes)
+            .then(|| quote!(use #krate::__private::Tangent;));
         // Beside the struct, the module is in the user's namespace, out of their docs.
         let hidden = module
             .family
@@ -299,6 +307,7 @@ impl Generated {
             #hidden
             #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
             mod #name {
+                #tangent
                 #configuration_item
                 #motion_item
                 #(#bodies)*

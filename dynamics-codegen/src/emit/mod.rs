@@ -50,6 +50,7 @@ mod impls;
 mod in_place;
 mod inputs;
 mod items;
+mod lanes;
 mod names;
 mod parts;
 mod program;

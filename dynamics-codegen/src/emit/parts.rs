@@ -43,6 +43,8 @@ pub struct Body {
     /// For a body that writes its result into `y_` rather than returning it, the result's
     /// value of zeros, which the function returning the result fills with it.
     pub zeros: Option<TokenStream>,
+    /// Whether it computes in lanes of tangents (`Tangent`, which its module imports).
+    pub lanes: bool,
 }
 
 /// Where emitted code finds the robot's parameters.

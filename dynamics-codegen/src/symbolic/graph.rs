@@ -73,6 +73,12 @@ impl Graph {
         })
     }
 
+    /// The node's id, if the graph has it.
+    #[must_use]
+    pub fn lookup(&self, node: Node) -> Option<NodeId> {
+        self.memo.get(&node).copied()
+    }
+
     fn intern(&mut self, node: Node) -> NodeId {
         if let Some(&id) = self.memo.get(&node) {
             self.stats.shared += 1;

@@ -7,10 +7,12 @@ mod graph;
 pub mod modular;
 mod node;
 mod number;
+mod tangent;
 mod tape;
 
 pub use calculus::Wrt;
 pub use graph::{Graph, Stats};
 pub use node::{Node, NodeId, Var, WRENCH};
 pub use number::Number;
+pub use tangent::{Lane, Of, Tangents, Term};
 pub use tape::Tape;

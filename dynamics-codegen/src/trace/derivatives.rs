@@ -14,7 +14,7 @@ use super::expr::Expr;
 use super::tracer::joint_index;
 use super::Equations;
 use crate::method::Family;
-use crate::symbolic::{Graph, NodeId, Number, Var, Wrt};
+use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt};
 use std::cell::RefCell;
 
 /// The derivatives' outputs: node ids into [`Equations::graph`].
@@ -22,6 +22,8 @@ use std::cell::RefCell;
 pub struct DerivativeEquations {
     /// `[∂τ/∂q, ∂τ/∂q̇]`, n × n each, row i the derivatives of `τ_i`.
     pub inverse: Vec<Vec<Vec<NodeId>>>,
+    /// Per matrix of `inverse`, the plan that computes it in lanes instead, where taken.
+    pub inverse_lanes: Vec<Option<Tangents>>,
     /// `q̈` of the forward dynamics (leaves [`Var::Tau`]).
     pub qdd: Vec<NodeId>,
     /// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]`, n × n each.
@@ -36,8 +38,10 @@ impl Equations {
         let inverse = inverse_derivatives(self, &graph);
         let forward = forward_derivatives(self, &graph, &inverse);
         self.graph = graph.into_inner();
+        let inverse_lanes = inverse_lanes(self);
         self.derivatives = Some(DerivativeEquations {
             inverse,
+            inverse_lanes,
             qdd: self.forward.qdd.clone(),
             forward,
         });
@@ -77,6 +81,20 @@ fn inverse_derivatives(eq: &Equations, graph: &RefCell<Graph>) -> Vec<Vec<Vec<No
     let with_by_q = |by_qd: &Vec<Vec<NodeId>>| [flat(&by_q), flat(by_qd)].concat();
     let by_qd = cheapest(&g, traced, [from_coriolis], with_by_q);
     vec![by_q, by_qd]
+}
+
+/// The plans of `[∂τ/∂q, ∂τ/∂q̇]` in lanes, where taken.
+fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
+    let n = eq.dof;
+    let choice = std::env::var("DYNAMICS_LANES").unwrap_or_else(|_| "both".into());
+    let q = matches!(choice.as_str(), "q" | "both");
+    let qd = matches!(choice.as_str(), "qd" | "both");
+    vec![
+        q.then(|| eq.graph.tangents(&eq.tau, Wrt::Position(0), n))
+            .flatten(),
+        qd.then(|| eq.graph.tangents(&eq.tau, Wrt::Velocity(0), n))
+            .flatten(),
+    ]
 }
 
 /// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` at the forward dynamics' `q̈`.

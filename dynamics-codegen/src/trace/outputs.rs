@@ -3,7 +3,7 @@
 
 use super::Equations;
 use crate::method::Method;
-use crate::symbolic::NodeId;
+use crate::symbolic::{NodeId, Tangents};
 
 /// The nodes of a method's result, as the graph holds them.
 #[derive(Clone, Copy)]
@@ -16,6 +16,14 @@ pub enum Shape<'a> {
     Matrix(&'a [Vec<NodeId>]),
     /// Matrices, one after the other.
     Stack(&'a [Vec<Vec<NodeId>>]),
+    /// Matrices, one after the other, each from its nodes or, where `lanes` has a plan, from
+    /// the plan's lanes (row i the tangent of output i).
+    Lanes {
+        /// The matrices as nodes, rows first.
+        stack: &'a [Vec<Vec<NodeId>>],
+        /// Per matrix, the plan computing it in lanes, if any.
+        lanes: &'a [Option<Tangents>],
+    },
     /// A vector through the LDLᵀ of M, `Some` where every pivot is positive.
     SolvedVector {
         /// The pivots.
@@ -50,6 +58,15 @@ impl Shape<'_> {
             Shape::Vector(v) => v.to_vec(),
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
             Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
+            // The plans' scalar factors, which their lanes read.
+            Shape::Lanes { stack, lanes } => stack
+                .iter()
+                .zip(*lanes)
+                .flat_map(|(m, plan)| match plan {
+                    Some(plan) => plan.factors(),
+                    None => m.iter().flatten().copied().collect(),
+                })
+                .collect(),
             Shape::SolvedVector { pivots, vector } => {
                 pivots.iter().chain(*vector).copied().collect()
             }
@@ -104,9 +121,13 @@ impl Method {
                 pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },
-            Method::InverseDynamicsDerivatives => {
-                Shape::Stack(eq.derivatives.as_ref().map_or(&[], |d| &d.inverse))
-            }
+            Method::InverseDynamicsDerivatives => match &eq.derivatives {
+                Some(d) if d.inverse_lanes.iter().any(Option::is_some) => Shape::Lanes {
+                    stack: &d.inverse,
+                    lanes: &d.inverse_lanes,
+                },
+                d => Shape::Stack(d.as_ref().map_or(&[], |d| &d.inverse)),
+            },
             Method::Regressor => Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns)),
             Method::JointRegressor => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_columns))

@@ -34,6 +34,8 @@
 //! (a number, arrays of them, a [`Pose`](crate::Pose), the derivatives' structs) apart into one
 //! result per state.
 
+#[allow(unsafe_code)]
+pub(crate) mod oct;
 #[cfg(any(test, not(target_arch = "x86_64")))]
 mod portable;
 mod split;

@@ -1,0 +1,211 @@
+//! Tangents in lanes ([`crate::symbolic::Tangents`]): each planned lane written as a
+//! `Tangent<T, K>` right after the node it is the tangent of, so that it is computed while the
+//! scalar values it reads are fresh, and the rows of a Jacobian read off the output lanes.
+//!
+//! `K` is n rounded up to a multiple of eight, whole AVX-512 registers of `f64` (the lanes past n
+//! stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
+//! the unit vectors of a tangent one array literal, `Tangent([T::ZERO, c2, …])`.
+
+use super::emitter::Emitter;
+use super::expr::Place;
+use super::names::local;
+use crate::symbolic::{NodeId, Of, Tangents, Term};
+use crate::trace::Shape;
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+/// The lanes still to write, in the order they are written.
+pub(super) struct Queue<'a> {
+    /// `(after, plan, lane)`, sorted by `after`, the plan's order kept within.
+    pending: Vec<(NodeId, usize, usize)>,
+    plans: Vec<Option<&'a Tangents>>,
+    next: usize,
+}
+
+/// The lanes' names: `dq3` for the tangents by `q`, `dqd3` by `q̇` (plan 0 and 1).
+fn lane_name(plan: usize, lane: usize) -> Ident {
+    let prefix = ["dq", "dqd"].get(plan).copied().unwrap_or("dx");
+    local(&format!("{prefix}{}", lane + 1))
+}
+
+/// The number of lanes of a plan of `n` directions.
+fn width(n: usize) -> usize {
+    n.div_ceil(8) * 8
+}
+
+impl<'a> Queue<'a> {
+    /// The lanes of `shape`'s plans (none for another shape).
+    pub(super) fn new(shape: &Shape<'a>) -> Queue<'a> {
+        let plans: Vec<Option<&Tangents>> = match shape {
+            Shape::Lanes { lanes, .. } => lanes.iter().map(Option::as_ref).collect(),
+            _ => Vec::new(),
+        };
+        let mut pending: Vec<(NodeId, usize, usize)> = plans
+            .iter()
+            .enumerate()
+            .filter_map(|(p, plan)| plan.map(|plan| (p, plan)))
+            .flat_map(|(p, plan)| (0..plan.lanes.len()).map(move |k| (plan.lanes[k].after, p, k)))
+            .collect();
+        // Stable: a lane reads only lanes of its plan written before it, after nodes before.
+        pending.sort_by_key(|&(after, p, _)| (after, p));
+        Queue {
+            pending,
+            plans,
+            next: 0,
+        }
+    }
+}
+
+impl Emitter<'_> {
+    /// Makes every factor of `shape`'s plans a bound value, read by name.
+    pub(super) fn bind_factors(&mut self, shape: &Shape) {
+        let Shape::Lanes { lanes, .. } = shape else {
+            return;
+        };
+        for plan in lanes.iter().flatten() {
+            for f in plan.factors() {
+                let i = f.index();
+                self.uses[i] = self.uses[i].max(2);
+            }
+        }
+    }
+
+    /// The statements of the lanes due before node `before` (all of them for `None`).
+    pub(super) fn lanes_due(
+        &mut self,
+        queue: &mut Queue,
+        before: Option<NodeId>,
+        statements: &mut Vec<TokenStream>,
+    ) {
+        while let Some(&(after, p, k)) = queue.pending.get(queue.next) {
+            if before.is_some_and(|b| after >= b) {
+                return;
+            }
+            queue.next += 1;
+            let Some(plan) = queue.plans[p] else {
+                continue;
+            };
+            let name = lane_name(p, k);
+            let value = self.lane(p, plan, &plan.lanes[k].terms);
+            statements.push(quote!(let #name = #value;));
+        }
+    }
+
+    /// The sum of a lane's terms.
+    fn lane(&mut self, p: usize, plan: &Tangents, terms: &[Term]) -> TokenStream {
+        let k = width(plan.directions);
+        let (units, lanes): (Vec<&Term>, Vec<&Term>) =
+            terms.iter().partition(|t| matches!(t.of, Of::Unit(_)));
+        let mut acc: Option<TokenStream> = None;
+        if !units.is_empty() {
+            let elements: Vec<TokenStream> = (0..k)
+                .map(|j| {
+                    let at: Vec<&&Term> = units
+                        .iter()
+                        .filter(|t| t.of == Of::Unit(u16::try_from(j).unwrap_or(u16::MAX)))
+                        .collect();
+                    self.unit_sum(&at)
+                })
+                .collect();
+            let quads = elements.chunks(8).map(|q| quote!([#(#q),*]));
+            acc = Some(quote!(Tangent([#(#quads),*])));
+        }
+        // A term twice (the tangent of a square, `2 a ∂a`) is taken once, its factor doubled.
+        let mut counted: Vec<(&Term, usize)> = Vec::new();
+        for t in lanes {
+            match counted.iter_mut().find(|(u, _)| *u == t) {
+                Some((_, n)) => *n += 1,
+                None => counted.push((t, 1)),
+            }
+        }
+        for (t, n) in counted {
+            let Of::Lane(l) = t.of else { continue };
+            let x = lane_name(p, l);
+            let factor = match self.product(&t.factors, t.negative) {
+                Some(f) if n > 1 => {
+                    let n = proc_macro2::Literal::f64_unsuffixed(n as f64);
+                    Some(quote!((#f * T::from_f64(#n))))
+                }
+                None if n > 1 => {
+                    let n = proc_macro2::Literal::f64_unsuffixed(n as f64);
+                    Some(quote!(T::from_f64(#n)))
+                }
+                f => f,
+            };
+            acc = Some(match (acc, factor) {
+                (None, None) if t.negative => quote!(-#x),
+                (None, None) => quote!(#x),
+                (None, Some(f)) => quote!(#x.scale(#f)),
+                (Some(a), None) if t.negative => quote!(#a - #x),
+                (Some(a), None) => quote!(#a + #x),
+                (Some(a), Some(f)) => quote!(#x.mul_add(#f, #a)),
+            });
+        }
+        let quads = k / 8;
+        acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; 8]; #quads])))
+    }
+
+    /// One lane's value in a sum of unit vectors: the sum of the terms' signed products.
+    fn unit_sum(&mut self, terms: &[&&Term]) -> TokenStream {
+        let mut sum: Option<TokenStream> = None;
+        for t in terms {
+            let value = self
+                .product(&t.factors, false)
+                .unwrap_or_else(|| quote!(T::ONE));
+            sum = Some(match (sum, t.negative) {
+                (None, false) => value,
+                (None, true) => quote!(-#value),
+                (Some(s), false) => quote!(#s + #value),
+                (Some(s), true) => quote!(#s - #value),
+            });
+        }
+        sum.unwrap_or_else(|| quote!(T::ZERO))
+    }
+
+    /// `f₁ * f₂ ⋯`, negated if `negative`, or `None` for no factor and positive.
+    fn product(&mut self, factors: &[NodeId], negative: bool) -> Option<TokenStream> {
+        let mut product: Option<TokenStream> = None;
+        for &f in factors {
+            let e = self.expr(f, Place::MulRight);
+            product = Some(match product {
+                None => e,
+                Some(p) => quote!(#p * #e),
+            });
+        }
+        match (product, negative) {
+            (None, false) => None,
+            (None, true) => Some(quote!(-T::ONE)),
+            (Some(p), false) => Some(p),
+            (Some(p), true) => Some(quote!((-(#p)))),
+        }
+    }
+
+    /// The matrices of a stack with plans: a plan's rows read off its output lanes
+    /// (`dq7.row()`, zeros where a row is zero), the other matrices from their nodes.
+    pub(super) fn lane_stack(
+        &mut self,
+        stack: &[Vec<Vec<NodeId>>],
+        plans: &[Option<Tangents>],
+    ) -> TokenStream {
+        let matrices: Vec<TokenStream> = stack
+            .iter()
+            .zip(plans)
+            .enumerate()
+            .map(|(p, (m, plan))| match plan {
+                None => self.matrix(m),
+                Some(plan) => {
+                    let n = plan.directions;
+                    let rows = plan.outputs.iter().map(|lane| match lane {
+                        Some(l) => {
+                            let x = lane_name(p, *l);
+                            quote!(#x.row())
+                        }
+                        None => quote!([T::ZERO; #n]),
+                    });
+                    quote!([#(#rows),*])
+                }
+            })
+            .collect();
+        quote!([#(#matrices),*])
+    }
+}
