@@ -84,6 +84,13 @@ fn methods(generated: &Generated) -> String {
             bytes
         );
     }
+    for m in generated.methods.iter().filter(|m| m.ops.lanes > 0) {
+        let _ = writeln!(
+            out,
+            "{}: plus {} operations on lanes of tangents (one vector each)",
+            m.name, m.ops.lanes
+        );
+    }
     let _ = writeln!(out, "total generated code: {total} bytes");
     out
 }

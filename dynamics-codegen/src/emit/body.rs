@@ -4,9 +4,10 @@
 use super::count::count;
 use super::emitter::Emitter;
 use super::expr::Place;
-use super::lanes::Queue;
+use super::lanes::{lane_operations, Queue};
 use super::names::{local, output_names, Element};
 use super::parts::Body;
+use super::parts::OpCount;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
 use crate::trace::Shape;
@@ -37,7 +38,7 @@ impl Emitter<'_> {
     /// the terms in `q̇` and `q̈`, then the result, returned or, for a method with an `into`
     /// form, written into `y_` (`in_place`).
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
-        let outputs = shape.outputs();
+        let outputs = shape.lane_outputs();
         self.mark(&outputs);
         self.bind_factors(shape);
         let mut lanes = Queue::new(shape);
@@ -113,7 +114,10 @@ impl Emitter<'_> {
         };
         Body {
             tokens: quote!(#(#statements)* #result),
-            ops: count(self.eq, &outputs),
+            ops: OpCount {
+                lanes: lane_operations(shape),
+                ..count(self.eq, &outputs)
+            },
             zeros: None,
             lanes: matches!(shape, Shape::Lanes { .. }),
         }

@@ -33,6 +33,23 @@ fn width(n: usize) -> usize {
     n.div_ceil(8) * 8
 }
 
+/// The operations on lanes of `shape`'s plans: one per term of each lane written, the unit
+/// vectors of a lane one together.
+pub(super) fn lane_operations(shape: &Shape) -> usize {
+    let Shape::Lanes { lanes, .. } = shape else {
+        return 0;
+    };
+    lanes
+        .iter()
+        .flatten()
+        .flat_map(|plan| &plan.lanes)
+        .map(|lane| {
+            let vectors = lane.terms.iter().filter(|t| matches!(t.of, Of::Lane(_)));
+            vectors.count() + usize::from(lane.terms.iter().any(|t| matches!(t.of, Of::Unit(_))))
+        })
+        .sum()
+}
+
 impl<'a> Queue<'a> {
     /// The lanes of `shape`'s plans (none for another shape).
     pub(super) fn new(shape: &Shape<'a>) -> Queue<'a> {
@@ -121,7 +138,9 @@ impl Emitter<'_> {
         for (t, n) in counted {
             let Of::Lane(l) = t.of else { continue };
             let x = lane_name(p, l);
-            let factor = match self.product(&t.factors, t.negative) {
+            // Without factors, a negative term is subtracted (or negated, first).
+            let signed = t.negative && (!t.factors.is_empty() || n > 1);
+            let factor = match self.product(&t.factors, signed) {
                 Some(f) if n > 1 => {
                     let n = proc_macro2::Literal::f64_unsuffixed(n as f64);
                     Some(quote!((#f * T::from_f64(#n))))

@@ -98,19 +98,7 @@ pub(super) fn output_names(
         }
         // The vector of a solved stack (`q̈` beside its derivatives) keeps temporaries'
         // names: the element names say what a block's entries are.
-        Shape::Lanes { stack, lanes } => {
-            for (k, (m, plan)) in stack.iter().zip(*lanes).enumerate() {
-                if plan.is_some() {
-                    continue;
-                }
-                for (i, row) in m.iter().enumerate() {
-                    for (j, &id) in row.iter().enumerate() {
-                        add(id, Index::Stack(k, i, j));
-                    }
-                }
-            }
-        }
-        Shape::Stack(s) | Shape::SolvedStack { stack: s, .. } => {
+        Shape::Stack(s) | Shape::SolvedStack { stack: s, .. } | Shape::Lanes { stack: s, .. } => {
             for (k, m) in s.iter().enumerate() {
                 for (i, row) in m.iter().enumerate() {
                     for (j, &id) in row.iter().enumerate() {

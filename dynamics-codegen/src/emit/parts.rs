@@ -24,6 +24,10 @@ pub struct OpCount {
     /// added in the order the emitted code adds it: the operations that cannot overlap, which
     /// bound the time of a call from below as the count bounds its throughput.
     pub depth: usize,
+    /// Operations on lanes of tangents ([`crate::symbolic::Tangents`]), one per term of each
+    /// lane written: each one vector instruction (or two, three-eighths of it wasted, on
+    /// four-lane registers) on top of the scalar counts.
+    pub lanes: usize,
 }
 
 impl OpCount {

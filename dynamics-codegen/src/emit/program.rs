@@ -7,7 +7,8 @@ use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
 use crate::method::Argument;
 use crate::symbolic::NodeId;
-use crate::trace::Equations;
+use crate::trace::{Equations, Shape};
+use quote::quote;
 
 /// Everything [`emit`] writes.
 pub struct Emission {
@@ -74,18 +75,32 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
         config_names(&mut e);
         e.motion(&motion_boundary, &field_names)
     });
+    let body = |o: &Output, shape: &Shape| {
+        let mut e = Emitter::new(eq, Some(ctx));
+        if !reads_q(&o) {
+            return e.function(shape, o.method);
+        }
+        config_names(&mut e);
+        if let Some(m) = &motion {
+            e.read_from(&motion_boundary, m, Origin::Motion);
+        }
+        e.function(shape, o.method)
+    };
     let bodies = all
         .iter()
-        .map(|o| {
-            let mut e = Emitter::new(eq, Some(ctx));
-            if !reads_q(&o) {
-                return e.function(&o.shape, o.method);
+        .map(|o| match o.shape {
+            // Tangents in lanes where the scalar type computes them there (`f64`, `f32`),
+            // else the columns one by one: on lanes of states each tangent would take eight
+            // of their registers. The test is a constant: the compiler keeps one branch.
+            Shape::Lanes { .. } => {
+                let (lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
+                let (a, b) = (&lanes.tokens, &scalar.tokens);
+                Body {
+                    tokens: quote!(if T::TANGENTS_IN_LANES { #a } else { #b }),
+                    ..lanes
+                }
             }
-            config_names(&mut e);
-            if let Some(m) = &motion {
-                e.read_from(&motion_boundary, m, Origin::Motion);
-            }
-            e.function(&o.shape, o.method)
+            _ => body(o, &o.shape),
         })
         .collect();
     Emission {

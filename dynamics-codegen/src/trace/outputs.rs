@@ -16,8 +16,9 @@ pub enum Shape<'a> {
     Matrix(&'a [Vec<NodeId>]),
     /// Matrices, one after the other.
     Stack(&'a [Vec<Vec<NodeId>>]),
-    /// Matrices, one after the other, each from its nodes or, where `lanes` has a plan, from
-    /// the plan's lanes (row i the tangent of output i).
+    /// Matrices, one after the other, each from its nodes or, where `lanes`
+    /// has a plan and the scalar type computes tangents in lanes, from the plan's lanes (row i
+    /// the tangent of output i).
     Lanes {
         /// The matrices as nodes, rows first.
         stack: &'a [Vec<Vec<NodeId>>],
@@ -51,6 +52,27 @@ pub enum Shape<'a> {
 }
 
 impl Shape<'_> {
+    /// The nodes a function computing it in lanes reads: the plans' factors and the matrices
+    /// without a plan (the other shapes' elements).
+    pub fn lane_outputs(&self) -> Vec<NodeId> {
+        let Shape::Lanes { stack, lanes, .. } = self else {
+            return self.outputs();
+        };
+        let factors = lanes.iter().flatten().flat_map(Tangents::factors);
+        let unplanned = stack.iter().zip(*lanes).filter(|(_, plan)| plan.is_none());
+        let nodes = unplanned.flat_map(|(m, _)| m.iter().flatten().copied());
+        nodes.chain(factors).collect()
+    }
+
+    /// The same result computed from its nodes alone (itself for the other shapes).
+    #[must_use]
+    pub fn scalar(&self) -> Self {
+        match *self {
+            Shape::Lanes { stack, .. } => Shape::Stack(stack),
+            shape => shape,
+        }
+    }
+
     /// Its elements, rows first.
     pub fn outputs(&self) -> Vec<NodeId> {
         match self {
@@ -58,15 +80,12 @@ impl Shape<'_> {
             Shape::Vector(v) => v.to_vec(),
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
             Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
-            // The plans' scalar factors, which their lanes read.
-            Shape::Lanes { stack, lanes } => stack
-                .iter()
-                .zip(*lanes)
-                .flat_map(|(m, plan)| match plan {
-                    Some(plan) => plan.factors(),
-                    None => m.iter().flatten().copied().collect(),
-                })
-                .collect(),
+            // Both routes' nodes: the code chooses by the scalar type (`Real::TANGENTS_IN_LANES`).
+            Shape::Lanes { stack, lanes, .. } => {
+                let factors = lanes.iter().flatten().flat_map(Tangents::factors);
+                let nodes = stack.iter().flatten().flatten().copied();
+                nodes.chain(factors).collect()
+            }
             Shape::SolvedVector { pivots, vector } => {
                 pivots.iter().chain(*vector).copied().collect()
             }
