@@ -69,12 +69,14 @@ pub trait Real:
     fn all_positive(&self) -> bool;
 
     /// Whether generated derivatives compute their tangents in lanes, across directions
-    /// ([`crate::__private::Tangent`]), rather than column by column: for `f64` and `f32` where
-    /// the build has AVX-512 (eight directions in one of 32 registers; with AVX2 alone, two of
-    /// 16, the Panda's ∂τ took 20 % fewer instructions, the 6-joint arms' up to 8 % more); not
-    /// on lanes of states, where each tangent would take eight of their registers.
+    /// ([`crate::__private::Tangent`]), rather than column by column: where the build has
+    /// AVX-512 (eight `f64` directions in one of 32 registers; with AVX2 alone, two of 16, the
+    /// Panda's ∂τ took 20 % fewer instructions, the 6-joint arms' up to 8 % more). The same for
+    /// every scalar type of a build, so that each lane of the lane types stays bit for bit its
+    /// state's result: they run the same operations (on lanes of states, each tangent takes
+    /// eight of their registers).
     #[doc(hidden)]
-    const TANGENTS_IN_LANES: bool = false;
+    const TANGENTS_IN_LANES: bool = cfg!(target_feature = "avx512f");
 
     /// `c x + acc` on eight values, lane by lane as [`Real::mul_add`]: the step of the
     /// tangents that generated derivatives compute in lanes ([`crate::__private::Tangent`]),
@@ -197,7 +199,6 @@ impl_real!(
     f64,
     {
         // The tangents' steps in eight lanes: one AVX-512 register, or two AVX.
-        const TANGENTS_IN_LANES: bool = cfg!(target_feature = "avx512f");
         #[inline(always)]
         fn oct_mul_add(x: [f64; 8], c: f64, acc: [f64; 8]) -> [Self; 8] {
             crate::lanes::oct::mul_add(x, c, acc)
@@ -228,7 +229,6 @@ impl_real!(
     f32,
     {
         // The tangents' steps in eight lanes: one AVX register.
-        const TANGENTS_IN_LANES: bool = cfg!(target_feature = "avx512f");
         #[inline(always)]
         fn oct_mul_add(x: [f32; 8], c: f32, acc: [f32; 8]) -> [Self; 8] {
             crate::lanes::F32x8::from_array(x)

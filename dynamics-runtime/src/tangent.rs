@@ -65,3 +65,36 @@ impl<T: Real, const Q: usize> Neg for Tangent<T, Q> {
         Tangent(self.0.map(T::oct_neg))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Tangent;
+    use crate::real::Real;
+
+    /// Eight lanes of arbitrary values, shifted by `k`.
+    fn lanes<T: Real>(k: f64) -> [T; 8] {
+        core::array::from_fn(|l| T::from_f64((l as f64 + k) * 0.37 - 1.1))
+    }
+
+    /// Each lane of every step is the scalar operation on that lane, bit for bit.
+    fn agrees<T: Real>() {
+        let (x, y, c) = (lanes::<T>(0.0), lanes::<T>(3.5), T::from_f64(-0.713));
+        let (a, b) = (Tangent([x]), Tangent([y]));
+        for l in 0..8 {
+            assert_eq!(a.mul_add(c, b).0[0][l], x[l].mul_add(c, y[l]));
+            assert_eq!(a.scale(c).0[0][l], x[l] * c);
+            assert_eq!((a + b).0[0][l], x[l] + y[l]);
+            assert_eq!((a - b).0[0][l], x[l] - y[l]);
+            assert_eq!((-a).0[0][l], -x[l]);
+        }
+        let row: [T; 7] = a.row();
+        assert_eq!(row[..], x[..7]);
+    }
+
+    #[test]
+    fn steps_are_the_scalar_operations_lane_by_lane() {
+        agrees::<f64>();
+        agrees::<f32>();
+        agrees::<crate::lanes::F64x4>();
+    }
+}

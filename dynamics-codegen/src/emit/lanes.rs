@@ -124,10 +124,10 @@ impl Emitter<'_> {
                     self.unit_sum(&at)
                 })
                 .collect();
-            let quads = elements.chunks(8).map(|q| quote!([#(#q),*]));
-            acc = Some(quote!(Tangent([#(#quads),*])));
+            let groups = elements.chunks(8).map(|g| quote!([#(#g),*]));
+            acc = Some(quote!(Tangent([#(#groups),*])));
         }
-        // A term twice (the tangent of a square, `2 a ∂a`) is taken once, its factor doubled.
+        // A term twice (the tangent of a square, `2 a ∂a`) is taken once, its factor times the count.
         let mut counted: Vec<(&Term, usize)> = Vec::new();
         for t in lanes {
             match counted.iter_mut().find(|(u, _)| *u == t) {
@@ -160,8 +160,8 @@ impl Emitter<'_> {
                 (Some(a), Some(f)) => quote!(#x.mul_add(#f, #a)),
             });
         }
-        let quads = k / 8;
-        acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; 8]; #quads])))
+        let groups = k / 8;
+        acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; 8]; #groups])))
     }
 
     /// One lane's value in a sum of unit vectors: the sum of the terms' signed products.

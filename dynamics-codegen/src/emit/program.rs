@@ -89,9 +89,8 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     let bodies = all
         .iter()
         .map(|o| match o.shape {
-            // Tangents in lanes where the scalar type computes them there (`f64`, `f32`),
-            // else the columns one by one: on lanes of states each tangent would take eight
-            // of their registers. The test is a constant: the compiler keeps one branch.
+            // Tangents in lanes where the build computes them there (AVX-512), else the columns
+            // one by one. The test is a constant: the compiler keeps one branch.
             Shape::Lanes { .. } => {
                 let (lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
                 let (a, b) = (&lanes.tokens, &scalar.tokens);

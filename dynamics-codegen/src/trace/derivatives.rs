@@ -5,7 +5,7 @@
 //!   (`∂ sin q_j/∂q_j = cos q_j`), at compile time;
 //! * `∂τ/∂q̇`: the cheaper of that graph's derivative by `q̇_j` and `2 C + ∂f/∂q̇`, since with
 //!   the Christoffel symbols `∂(C q̇)_i/∂q̇_j = 2 Σ_k Γ_ijk q̇_k = 2 C_ij` (Γ_ijk = Γ_ikj);
-//! * where the scalar type computes tangents in lanes (`f64` and `f32` with AVX-512), both
+//! * where the build computes tangents in lanes (`Real::TANGENTS_IN_LANES`: AVX-512), both
 //!   `∂τ/∂q` and `∂τ/∂q̇` from one vector of tangents per node of τ's graph, all n directions
 //!   at once ([`Graph::tangents`]), instead of the two above;
 //! * `∂q̈/∂x = −M⁻¹ ∂τ/∂x` at the forward dynamics' `q̈` (Carpentier and Mansard, RSS 2018):
@@ -87,7 +87,7 @@ fn inverse_derivatives(eq: &Equations, graph: &RefCell<Graph>) -> Vec<Vec<Vec<No
 }
 
 /// The plans of `[∂τ/∂q, ∂τ/∂q̇]` in lanes ([`Graph::tangents`]), which the code takes where
-/// the scalar type computes tangents in lanes; `None` where a tangent needs a node the graph
+/// the build computes tangents in lanes; `None` where a tangent needs a node the graph
 /// lacks (`∂q̇` of smoothed friction's `tanh`), which is then computed as above.
 fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
     let n = eq.dof;

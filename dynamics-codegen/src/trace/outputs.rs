@@ -17,7 +17,7 @@ pub enum Shape<'a> {
     /// Matrices, one after the other.
     Stack(&'a [Vec<Vec<NodeId>>]),
     /// Matrices, one after the other, each from its nodes or, where `lanes`
-    /// has a plan and the scalar type computes tangents in lanes, from the plan's lanes (row i
+    /// has a plan and the build computes tangents in lanes, from the plan's lanes (row i
     /// the tangent of output i).
     Lanes {
         /// The matrices as nodes, rows first.

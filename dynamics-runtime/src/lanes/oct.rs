@@ -45,10 +45,11 @@ mod backend {
     pub(crate) fn sub(a: [f64; 8], b: [f64; 8]) -> [f64; 8] {
         store(unsafe { _mm512_sub_pd(load(a), load(b)) })
     }
-    /// The sign bit flipped, as the scalar's `-x` (by a multiplication by −1, exact).
+    /// The sign bit flipped, as the scalar's `-x` (an integer xor: AVX-512F has no `f64` one).
     #[inline(always)]
     pub(crate) fn neg(x: [f64; 8]) -> [f64; 8] {
-        store(unsafe { _mm512_mul_pd(load(x), _mm512_set1_pd(-1.0)) })
+        let sign = unsafe { _mm512_set1_epi64(i64::MIN) };
+        store(unsafe { _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(load(x)), sign)) })
     }
 }
 
