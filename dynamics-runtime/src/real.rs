@@ -69,12 +69,12 @@ pub trait Real:
     fn all_positive(&self) -> bool;
 
     /// Whether generated derivatives compute their tangents in lanes, across directions
-    /// ([`crate::__private::Tangent`]), rather than column by column: where the build has
-    /// AVX-512 (eight `f64` directions in one of 32 registers; with AVX2 alone, two of 16, the
-    /// Panda's ∂τ took 20 % fewer instructions, the 6-joint arms' up to 8 % more). The same for
-    /// every scalar type of a build, so that each lane of the lane types stays bit for bit its
-    /// state's result: they run the same operations (on lanes of states, each tangent takes
-    /// eight of their registers).
+    /// ([`crate::__private::Tangent`]), rather than column by column: for `f64` and `f32` where
+    /// the build has AVX-512 (eight `f64` directions in one of 32 registers; with AVX2 alone,
+    /// two of 16, the Panda's ∂τ took 20 % fewer instructions, the 6-joint arms' up to 8 %
+    /// more); not on the lane types, where each tangent would take eight of their registers.
+    /// Where the two differ, `inverse_dynamics_derivatives` on lanes agrees with one state's to
+    /// rounding, not bit for bit (the same sums in another order).
     #[doc(hidden)]
     const TANGENTS_IN_LANES: bool = cfg!(target_feature = "avx512f");
 

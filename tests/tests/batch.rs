@@ -3,11 +3,12 @@
 //! the solves with failing states among good ones, the wrench's six values, the regressors.
 
 use dynamics_runtime::batch::{States, StatesMut};
+use dynamics_runtime::F64x4;
 use dynamics_runtime::{
     Dynamics, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivatives,
     DynamicsDerivativesBatch, DynamicsRegressorBatch, NotPositiveDefinite,
 };
-use dynamics_tests::lanes::Bits;
+use dynamics_tests::lanes::{close_values, routes_differ, Bits};
 use dynamics_tests::robots::{Panda, Puma560, Stanford};
 
 /// PUMA 560 with the regressors.
@@ -99,9 +100,16 @@ fn dynamics_methods<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name: 
         });
         let mut d = vec![robot.inverse_dynamics_derivatives(&[0.0; N], &[0.0; N], &[0.0; N]); len];
         robot.inverse_dynamics_derivatives_batch(&q[..], &qd[..], &qdd[..], &mut d[..]);
-        same(name, &d, |k| {
-            robot.inverse_dynamics_derivatives(&q[k], &qd[k], &qdd[k])
-        });
+        if routes_differ::<F64x4, 4>() {
+            for (k, d) in d.iter().enumerate() {
+                let single = robot.inverse_dynamics_derivatives(&q[k], &qd[k], &qdd[k]);
+                close_values(&format!("{name}, state {k}"), d, &single, 1e-12);
+            }
+        } else {
+            same(name, &d, |k| {
+                robot.inverse_dynamics_derivatives(&q[k], &qd[k], &qdd[k])
+            });
+        }
     }
 }
 
