@@ -77,6 +77,8 @@ mod real;
 pub mod statics;
 mod trig;
 
+#[cfg(feature = "rayon")]
+pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
     DynamicsRegressorBatch,

@@ -18,6 +18,10 @@
 //! for exactly the states whose mass matrix is not positive definite: a group in which one lane
 //! fails is evaluated again one state at a time.
 //!
+//! **Threads.** With the `rayon` feature, [`InParallel`]`(&robot)` has the same `_batch`
+//! methods, which cut the states into chunks of whole groups on rayon's thread pool: the same
+//! bits as on one thread.
+//!
 //! # Panics
 //!
 //! If an input does not hold as many states as the output.
@@ -26,9 +30,13 @@
 //! [`F32x8`]: crate::F32x8
 
 mod layout;
+#[cfg(feature = "rayon")]
+mod parallel;
 mod traits;
 
 pub use layout::{States, StatesMut};
+#[cfg(feature = "rayon")]
+pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
 };
