@@ -50,6 +50,9 @@ pub trait BatchScalar<const L: usize>: RealScalar {
     type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
 }
 
+// Not `F64x8` where the build has AVX-512: on the Xeon measured, whose 512-bit operations issue
+// at half the rate of 256-bit ones, τ and M in batches ran slower in eight lanes than in four
+// (see bench/README.md).
 impl BatchScalar<4> for f64 {
     type Lanes = crate::F64x4;
 }
@@ -69,18 +72,20 @@ where
 {
     let last = states.count() - 1;
     // Whole states first (one copy each from a slice of states), then transposed by blocks of
-    // as many values as lanes, the rest value by value.
+    // as many values as lanes, the last block padded with zeros.
     let rows: [[T; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
     let mut values = [<T::Lanes as crate::Real>::ZERO; M];
-    let whole = M / L * L;
-    for j in (0..whole).step_by(L) {
+    for j in (0..M).step_by(L) {
         let block = core::array::from_fn(|l| {
-            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| rows[l][j + i]))
+            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| {
+                rows[l]
+                    .get(j + i)
+                    .copied()
+                    .unwrap_or(<T as crate::Real>::ZERO)
+            }))
         });
-        values[j..j + L].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block));
-    }
-    for (j, value) in values.iter_mut().enumerate().skip(whole) {
-        *value = <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|l| rows[l][j]));
+        let end = (j + L).min(M);
+        values[j..end].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block)[..end - j]);
     }
     values
 }
