@@ -29,6 +29,7 @@ mod commands;
 mod excite;
 mod format;
 mod identify;
+mod lanes;
 mod plot;
 mod sizing;
 mod trajectory;

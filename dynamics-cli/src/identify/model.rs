@@ -5,7 +5,8 @@
 //! Entries that are the constant zero are not evaluated: joint i's equation keeps the
 //! parameters whose column is not identically zero in its row ([`LinearModel::columns`]).
 
-use dynamics_codegen::symbolic::{Graph, NodeId, Tape, Var};
+use crate::lanes::{Four, LANES};
+use dynamics_codegen::symbolic::{Graph, NodeId, Tape, TapeScalar, Var};
 
 /// How a leaf of the regressor gets its value at a sample.
 #[derive(Clone, Copy, Debug)]
@@ -47,8 +48,17 @@ pub struct Entries<'a> {
 /// Scratch space for [`LinearModel::rows`].
 #[derive(Default)]
 pub struct Work {
-    leaves: Vec<f64>,
-    tape: Vec<f64>,
+    leaves: Vec<Four>,
+    tape: Vec<Four>,
+    entries: Vec<Four>,
+}
+
+/// One sample's state: positions, velocities and accelerations of every joint.
+#[derive(Clone, Copy)]
+pub struct JointValues<'a> {
+    pub q: &'a [f64],
+    pub qd: &'a [f64],
+    pub qdd: &'a [f64],
 }
 
 impl LinearModel {
@@ -103,20 +113,36 @@ impl LinearModel {
         self.columns.len()
     }
 
-    /// The regressor's entries at one state, joint after joint, each joint's in the order of
-    /// its [`LinearModel::columns`]; `out` has room for all of them.
-    pub fn rows(&self, q: &[f64], qd: &[f64], qdd: &[f64], work: &mut Work, out: &mut [f64]) {
+    /// The regressor's entries at up to [`LANES`] states, evaluated together (one state per
+    /// lane): state `s`'s entries, joint after joint, each joint's in the order of its
+    /// [`LinearModel::columns`], at `out[s * entries..(s + 1) * entries]`.
+    ///
+    /// # Panics
+    /// With no state or more than [`LANES`], or `out` shorter than theirs.
+    pub fn rows(&self, states: &[JointValues<'_>], work: &mut Work, out: &mut [f64]) {
+        assert!((1..=LANES).contains(&states.len()), "1 to {LANES} states");
+        // Lanes past the states repeat the last one.
+        let state = |l: usize| states[l.min(states.len() - 1)];
+        let lanes = |x: &dyn Fn(JointValues<'_>) -> f64| Four::from_fn(|l| x(state(l)));
         work.leaves.clear();
         work.leaves
             .extend(self.leaves.iter().map(|leaf| match *leaf {
-                Leaf::Q(i) => q[i],
-                Leaf::Sin(i, offset) => (q[i] + offset).sin(),
-                Leaf::Cos(i, offset) => (q[i] + offset).cos(),
-                Leaf::Qd(i) => qd[i],
-                Leaf::Qdd(i) => qdd[i],
-                Leaf::Constant(x) => x,
+                Leaf::Q(i) => lanes(&|s| s.q[i]),
+                Leaf::Sin(i, offset) => (lanes(&|s| s.q[i]) + Four::splat(offset)).sin(),
+                Leaf::Cos(i, offset) => (lanes(&|s| s.q[i]) + Four::splat(offset)).cos(),
+                Leaf::Qd(i) => lanes(&|s| s.qd[i]),
+                Leaf::Qdd(i) => lanes(&|s| s.qdd[i]),
+                Leaf::Constant(x) => Four::splat(x),
             }));
-        self.tape.eval(&work.leaves, &mut work.tape, out);
+        let entries = self.entries();
+        work.entries.resize(entries, Four::splat(0.0));
+        self.tape
+            .eval_in(&work.leaves, &mut work.tape, &mut work.entries);
+        for (e, value) in work.entries.iter().enumerate() {
+            for (s, x) in value.lanes().into_iter().take(states.len()).enumerate() {
+                out[s * entries + e] = x;
+            }
+        }
     }
 
     /// The number of entries [`LinearModel::rows`] gives.
@@ -158,4 +184,68 @@ pub fn constant_values(graph: &Graph, ids: &[NodeId], fields: &[f64]) -> Vec<f64
     let mut out = vec![0.0; ids.len()];
     tape.eval(&leaves, &mut Vec::new(), &mut out);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{JointValues, LinearModel, Work, LANES};
+    use crate::identify::base;
+    use dynamics_codegen::numeric::Numeric;
+    use dynamics_codegen::trace::base_parameters::JointColumns;
+
+    /// PUMA 560's base regressor in four lanes: each state's entries the same bits alone as in
+    /// a group (a partial one too), and `Y_B π_B` the torques of the numeric Newton-Euler.
+    #[test]
+    fn four_states_at_once_as_one_at_a_time() {
+        let text = include_str!("../../../robots/puma560.toml");
+        let robot = dynamics_codegen::front::load("puma560.toml", text)
+            .expect("reads")
+            .robot;
+        let mut eq = dynamics_codegen::derive(&robot);
+        let base = eq
+            .base_parameters(&robot, &[JointColumns::default(); 6])
+            .expect("numbers only");
+        let model = LinearModel::new(&base::entries(&eq, &base, &[])).expect("a model");
+        let values: Vec<[Vec<f64>; 3]> = (0..5)
+            .map(|k| {
+                let x = |i: usize, scale: f64| (0.37 * (k * 6 + i) as f64).sin() * scale;
+                [
+                    (0..6).map(|i| x(i, 2.0)).collect(),
+                    (0..6).map(|i| x(i + 40, 1.5)).collect(),
+                    (0..6).map(|i| x(i + 80, 3.0)).collect(),
+                ]
+            })
+            .collect();
+        let states: Vec<JointValues> = values
+            .iter()
+            .map(|[q, qd, qdd]| JointValues { q, qd, qdd })
+            .collect();
+        let entries = model.entries();
+        let mut work = Work::default();
+        let mut together = vec![0.0; 2 * LANES * entries];
+        model.rows(&states[..4], &mut work, &mut together);
+        model.rows(&states[4..], &mut work, &mut together[4 * entries..]);
+        let numeric = Numeric::new(&robot, &[]).expect("no fields");
+        for (k, s) in states.iter().enumerate() {
+            let mut alone = vec![0.0; LANES * entries];
+            model.rows(&[*s], &mut work, &mut alone);
+            let ours = &together[k * entries..(k + 1) * entries];
+            assert_eq!(ours, &alone[..entries], "state {k}");
+            let tau = numeric.inverse_dynamics(s.q, s.qd, s.qdd);
+            let mut start = 0;
+            for (i, columns) in model.columns.iter().enumerate() {
+                let row = &ours[start..start + columns.len()];
+                let y_pi: f64 = row
+                    .iter()
+                    .zip(columns)
+                    .map(|(y, &c)| y * model.described[c])
+                    .sum();
+                assert!(
+                    (y_pi - tau[i]).abs() < 1e-10 * (1.0 + tau[i].abs()),
+                    "state {k}, joint {i}"
+                );
+                start += columns.len();
+            }
+        }
+    }
 }

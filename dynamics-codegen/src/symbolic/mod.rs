@@ -13,4 +13,4 @@ pub use calculus::Wrt;
 pub use graph::{Graph, Stats};
 pub use node::{Node, NodeId, Var, WRENCH};
 pub use number::Number;
-pub use tape::Tape;
+pub use tape::{Tape, TapeScalar};
