@@ -29,6 +29,7 @@ mod commands;
 mod excite;
 mod format;
 mod identify;
+mod joint_tape;
 mod lanes;
 mod plot;
 mod sizing;

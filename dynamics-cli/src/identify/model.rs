@@ -1,23 +1,13 @@
 //! A model linear in its parameters, `τ_i = Σ_k Y_ik(q, q̇, q̈) π_k`, whose regressor entries are
-//! nodes of a robot's expression graph, evaluated at each sample by a [`Tape`] of only the nodes
-//! they need.
+//! nodes of a robot's expression graph, evaluated four samples at a time by a [`JointTape`] of
+//! only the nodes they need.
 //!
 //! Entries that are the constant zero are not evaluated: joint i's equation keeps the
 //! parameters whose column is not identically zero in its row ([`LinearModel::columns`]).
 
+use crate::joint_tape::{constant_values, gather, JointTape};
 use crate::lanes::{Four, LANES};
-use dynamics_codegen::symbolic::{Graph, NodeId, Tape, TapeScalar, Var};
-
-/// How a leaf of the regressor gets its value at a sample.
-#[derive(Clone, Copy, Debug)]
-enum Leaf {
-    Q(usize),
-    Sin(usize, f64),
-    Cos(usize, f64),
-    Qd(usize),
-    Qdd(usize),
-    Constant(f64),
-}
+use dynamics_codegen::symbolic::{Graph, NodeId, TapeScalar};
 
 /// The regressor of a linear model, ready to evaluate.
 #[derive(Clone, Debug)]
@@ -29,8 +19,7 @@ pub struct LinearModel {
     /// Per joint: the parameters whose column is not identically zero in its equation, in the
     /// order [`LinearModel::rows`] gives their entries.
     pub columns: Vec<Vec<usize>>,
-    tape: Tape,
-    leaves: Vec<Leaf>,
+    tape: JointTape,
 }
 
 /// What a robot's graph gives a model: its entries `rows[i][k]` (joint i, parameter k; `None`
@@ -48,8 +37,7 @@ pub struct Entries<'a> {
 /// Scratch space for [`LinearModel::rows`].
 #[derive(Default)]
 pub struct Work {
-    leaves: Vec<Four>,
-    tape: Vec<Four>,
+    tape: crate::joint_tape::Work,
     entries: Vec<Four>,
 }
 
@@ -68,15 +56,6 @@ impl LinearModel {
     /// An entry that depends on something a sample does not give (a wrench, a torque).
     pub fn new(entries: &Entries<'_>) -> Result<LinearModel, String> {
         let graph = entries.graph;
-        let constants = |ids: &[NodeId]| constant_values(graph, ids, entries.fields);
-        let offsets: Vec<f64> = {
-            let ids: Vec<NodeId> = entries.angle_offsets.iter().flatten().copied().collect();
-            let mut values = constants(&ids).into_iter();
-            let offsets = entries.angle_offsets.iter();
-            offsets
-                .map(|o| o.and_then(|_| values.next()).unwrap_or(0.0))
-                .collect()
-        };
         let nonzero = |entry: &Option<NodeId>| entry.filter(|&id| !graph.is_zero(id));
         let columns: Vec<Vec<usize>> = entries
             .rows
@@ -92,18 +71,13 @@ impl LinearModel {
             .iter()
             .flat_map(|row| row.iter().filter_map(nonzero))
             .collect();
-        let tape = Tape::new(graph, &outputs);
-        let leaves = tape
-            .leaves()
-            .iter()
-            .map(|&v| leaf(v, &offsets, entries.fields))
-            .collect::<Result<_, _>>()?;
+        let tape = JointTape::new(graph, &outputs, entries.angle_offsets, entries.fields, None)
+            .map_err(|e| format!("the regressor: {e}"))?;
         Ok(LinearModel {
             names: entries.names.clone(),
-            described: constants(&entries.described),
+            described: constant_values(graph, &entries.described, entries.fields),
             columns,
             tape,
-            leaves,
         })
     }
 
@@ -121,23 +95,16 @@ impl LinearModel {
     /// With no state or more than [`LANES`], or `out` shorter than theirs.
     pub fn rows(&self, states: &[JointValues<'_>], work: &mut Work, out: &mut [f64]) {
         assert!((1..=LANES).contains(&states.len()), "1 to {LANES} states");
-        // Lanes past the states repeat the last one.
-        let state = |l: usize| states[l.min(states.len() - 1)];
-        let lanes = |x: &dyn Fn(JointValues<'_>) -> f64| Four::from_fn(|l| x(state(l)));
-        work.leaves.clear();
-        work.leaves
-            .extend(self.leaves.iter().map(|leaf| match *leaf {
-                Leaf::Q(i) => lanes(&|s| s.q[i]),
-                Leaf::Sin(i, offset) => (lanes(&|s| s.q[i]) + Four::splat(offset)).sin(),
-                Leaf::Cos(i, offset) => (lanes(&|s| s.q[i]) + Four::splat(offset)).cos(),
-                Leaf::Qd(i) => lanes(&|s| s.qd[i]),
-                Leaf::Qdd(i) => lanes(&|s| s.qdd[i]),
-                Leaf::Constant(x) => Four::splat(x),
-            }));
+        let lanes = |values: Vec<&[f64]>| -> Vec<Four> {
+            (0..self.joints()).map(|j| gather(&values, j)).collect()
+        };
+        let q = lanes(states.iter().map(|s| s.q).collect());
+        let qd = lanes(states.iter().map(|s| s.qd).collect());
+        let qdd = lanes(states.iter().map(|s| s.qdd).collect());
         let entries = self.entries();
         work.entries.resize(entries, Four::splat(0.0));
         self.tape
-            .eval_in(&work.leaves, &mut work.tape, &mut work.entries);
+            .eval(&q, &qd, &qdd, &mut work.tape, &mut work.entries);
         for (e, value) in work.entries.iter().enumerate() {
             for (s, x) in value.lanes().into_iter().take(states.len()).enumerate() {
                 out[s * entries + e] = x;
@@ -150,40 +117,6 @@ impl LinearModel {
     pub fn entries(&self) -> usize {
         self.columns.iter().map(Vec::len).sum()
     }
-}
-
-/// How leaf `v` gets its value.
-fn leaf(v: Var, offsets: &[f64], fields: &[f64]) -> Result<Leaf, String> {
-    Ok(match v {
-        Var::Q(i) => Leaf::Q(i.into()),
-        Var::SinQ(i) => Leaf::Sin(i.into(), offsets[usize::from(i)]),
-        Var::CosQ(i) => Leaf::Cos(i.into(), offsets[usize::from(i)]),
-        Var::Qd(i) => Leaf::Qd(i.into()),
-        Var::Qdd(i) => Leaf::Qdd(i.into()),
-        Var::Param(k) => Leaf::Constant(fields[usize::from(k)]),
-        Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) | Var::Exact(_) => {
-            return Err(format!(
-                "the regressor depends on {v:?}, which a measured sample does not give"
-            ))
-        }
-    })
-}
-
-/// The values of nodes that depend on the robot's fields only.
-pub fn constant_values(graph: &Graph, ids: &[NodeId], fields: &[f64]) -> Vec<f64> {
-    let tape = Tape::new(graph, ids);
-    let leaves: Vec<f64> = tape
-        .leaves()
-        .iter()
-        .map(|v| match v {
-            Var::Param(k) => fields[usize::from(*k)],
-            // A value of the description depends on no joint variable.
-            _ => f64::NAN,
-        })
-        .collect();
-    let mut out = vec![0.0; ids.len()];
-    tape.eval(&leaves, &mut Vec::new(), &mut out);
-    out
 }
 
 #[cfg(test)]
