@@ -33,6 +33,7 @@ mod joint_tape;
 mod lanes;
 mod plot;
 mod sizing;
+mod terms;
 mod trajectory;
 
 use clap::Parser;
