@@ -7,10 +7,9 @@
 
 use crate::lanes::LANES;
 use crate::plot::{Envelope, Figure, Line, Panel};
-use crate::terms::{At, TermsTape};
+use crate::terms::{At, Terms, TermsTape};
 use crate::trajectory::Sample;
 use dynamics_codegen::model::JointKind;
-use dynamics_codegen::numeric::Terms;
 
 /// The terms of τ, in the order [`Terms`] lists them.
 pub const TERMS: [(&str, &str); 5] = [

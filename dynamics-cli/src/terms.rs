@@ -6,9 +6,23 @@
 use crate::joint_tape::{gather, JointTape, Work};
 use crate::lanes::{Four, LANES};
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::numeric::Terms;
 use dynamics_codegen::symbolic::TapeScalar;
 use dynamics_codegen::trace::Equations;
+
+/// The terms of the inverse dynamics apart, per joint.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Terms {
+    /// `M_links(q) q̈`.
+    pub inertial: Vec<f64>,
+    /// `C(q, q̇) q̇`.
+    pub coriolis: Vec<f64>,
+    /// `g(q)` with springs.
+    pub gravity: Vec<f64>,
+    /// The actuators' inertia, `I_a q̈`.
+    pub actuator: Vec<f64>,
+    /// Joint friction.
+    pub friction: Vec<f64>,
+}
 
 /// One robot's terms of τ, ready to evaluate.
 pub struct TermsTape {
