@@ -50,9 +50,9 @@ pub trait BatchScalar<const L: usize>: RealScalar {
     type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
 }
 
-// Not `F64x8` where the build has AVX-512: on the Xeon measured, whose 512-bit operations issue
-// at half the rate of 256-bit ones, τ and M in batches ran slower in eight lanes than in four
-// (see bench/README.md).
+// Not `F64x8` where the build has AVX-512: on the Xeon measured, τ and M in batches ran no
+// faster in eight lanes than in four (bench/README.md), and the eight-lane gathers and
+// transposes cost more for 6 or 7 joints.
 impl BatchScalar<4> for f64 {
     type Lanes = crate::F64x4;
 }
