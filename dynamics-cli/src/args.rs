@@ -258,6 +258,11 @@ pub struct Simulate {
     /// Initial joint positions [default: 0]
     #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
     pub q0: Option<Numbers>,
+    /// Many initial states: every line (q, and q̇ or 0) of a trajectory file in the format
+    /// `size --csv` reads; prints each state's end (t0,q..,qd..,energy_start,energy_end), four
+    /// states at a time in vector lanes
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["q0", "qd0", "svg"])]
+    pub batch: Option<String>,
     /// Initial joint velocities [default: 0]
     #[arg(long, value_name = "QD1,QD2,..", allow_hyphen_values = true)]
     pub qd0: Option<Numbers>,

@@ -29,8 +29,11 @@ mod commands;
 mod excite;
 mod format;
 mod identify;
+mod joint_tape;
+mod lanes;
 mod plot;
 mod sizing;
+mod terms;
 mod trajectory;
 
 use clap::Parser;

@@ -5,9 +5,11 @@
 //! The RMS is over time, by the trapezoidal rule on `τ²` (samples need not be evenly spaced);
 //! each peak is the sample of largest magnitude. Samples are consumed one at a time.
 
+use crate::lanes::LANES;
 use crate::plot::{Envelope, Figure, Line, Panel};
+use crate::terms::{At, Terms, TermsTape};
+use crate::trajectory::Sample;
 use dynamics_codegen::model::JointKind;
-use dynamics_codegen::numeric::{Numeric, Terms};
 
 /// The terms of τ, in the order [`Terms`] lists them.
 pub const TERMS: [(&str, &str); 5] = [
@@ -38,9 +40,13 @@ pub struct JointReport {
     previous: Option<(f64, f64)>,
 }
 
-/// The sizing of a robot as samples arrive.
+/// The sizing of a robot as samples arrive (their terms evaluated [`LANES`] at a time: call
+/// [`Sizer::finish`] after the last).
 pub struct Sizer<'a> {
-    numeric: &'a Numeric,
+    terms: &'a mut TermsTape,
+    /// The samples waiting for a group of [`LANES`], and how many.
+    waiting: Vec<Sample>,
+    filled: usize,
     pub joints: Vec<JointReport>,
     pub samples: usize,
     pub start: f64,
@@ -52,9 +58,11 @@ pub struct Sizer<'a> {
 impl<'a> Sizer<'a> {
     /// A sizing of `n` joints; with `plot`, the series are decimated for a figure.
     #[must_use]
-    pub fn new(numeric: &'a Numeric, n: usize, plot: bool) -> Sizer<'a> {
+    pub fn new(terms: &'a mut TermsTape, n: usize, plot: bool) -> Sizer<'a> {
         Sizer {
-            numeric,
+            terms,
+            waiting: Vec::with_capacity(LANES),
+            filled: 0,
             joints: vec![JointReport::default(); n],
             samples: 0,
             start: 0.0,
@@ -65,9 +73,35 @@ impl<'a> Sizer<'a> {
     }
 
     /// Adds one sample.
-    pub fn push(&mut self, t: f64, q: &[f64], qd: &[f64], qdd: &[f64]) {
-        let terms = self.numeric.inverse_dynamics_terms(q, qd, qdd);
-        self.add(t, qd, &terms);
+    pub fn push(&mut self, sample: &Sample) {
+        match self.waiting.get_mut(self.filled) {
+            Some(waiting) => waiting.clone_from(sample),
+            None => self.waiting.push(sample.clone()),
+        }
+        self.filled += 1;
+        if self.filled == LANES {
+            self.finish();
+        }
+    }
+
+    /// Adds the samples still waiting.
+    pub fn finish(&mut self) {
+        if self.filled == 0 {
+            return;
+        }
+        let waiting = std::mem::take(&mut self.waiting);
+        let at: Vec<At> = waiting[..self.filled]
+            .iter()
+            .map(|s| At {
+                q: &s.q,
+                qd: &s.qd,
+                qdd: &s.qdd,
+            })
+            .collect();
+        for (s, terms) in waiting.iter().zip(self.terms.terms(&at)) {
+            self.add(s.t, &s.qd, &terms);
+        }
+        (self.waiting, self.filled) = (waiting, 0);
     }
 
     /// Adds one sample whose terms are known.
@@ -198,8 +232,9 @@ fn envelope_is_zero(envelope: &Envelope, series: usize) -> bool {
 #[cfg(test)]
 mod tests {
     use super::Sizer;
+    use crate::terms::{At, TermsTape};
+    use crate::trajectory::Sample;
     use dynamics_codegen::front;
-    use dynamics_codegen::numeric::Numeric;
     use serde_json::Value;
 
     fn root() -> std::path::PathBuf {
@@ -210,14 +245,15 @@ mod tests {
     }
 
     /// The terms against Pinocchio's reference data of the PUMA 560: `M q̈` (no actuator inertia
-    /// in this model), `g`, and `C q̇ = τ − M q̈ − g`.
+    /// in this model), `g`, and `C q̇ = τ − M q̈ − g`; the sizing's peaks, four samples at a time.
     #[test]
     fn terms_equal_pinocchio() {
         let path = root().join("robots/puma560.toml");
         let robot = front::load("puma560.toml", &std::fs::read_to_string(path).unwrap())
             .unwrap()
             .robot;
-        let numeric = Numeric::new(&robot, &[]).unwrap();
+        let eq = dynamics_codegen::derive(&robot);
+        let mut tape = TermsTape::new(&robot, &eq, &[]).unwrap();
         let data: Value = serde_json::from_str(
             &std::fs::read_to_string(root().join("tests/data/reference/data/puma560.json"))
                 .unwrap(),
@@ -230,37 +266,50 @@ mod tests {
                 .map(|y| y.as_f64().unwrap())
                 .collect()
         };
-        let samples = data["samples"].as_array().unwrap();
-        for s in samples {
-            let (q, qd, qdd, tau, g) = (
-                v(&s["q"]),
-                v(&s["qd"]),
-                v(&s["qdd"]),
-                v(&s["tau"]),
-                v(&s["g"]),
-            );
-            let m: Vec<Vec<f64>> = s["M"].as_array().unwrap().iter().map(v).collect();
-            let terms = numeric.inverse_dynamics_terms(&q, &qd, &qdd);
+        let samples: Vec<Sample> = data["samples"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .enumerate()
+            .map(|(k, s)| Sample {
+                t: k as f64,
+                q: v(&s["q"]),
+                qd: v(&s["qd"]),
+                qdd: v(&s["qdd"]),
+                tau: v(&s["tau"]),
+            })
+            .collect();
+        for (s, data) in samples.iter().zip(data["samples"].as_array().unwrap()) {
+            let m: Vec<Vec<f64>> = data["M"].as_array().unwrap().iter().map(v).collect();
+            let g = v(&data["g"]);
+            let at = At {
+                q: &s.q,
+                qd: &s.qd,
+                qdd: &s.qdd,
+            };
+            let terms = &tape.terms(&[at])[0];
             for i in 0..6 {
-                let inertial: f64 = (0..6).map(|k| m[i][k] * qdd[k]).sum();
+                let inertial: f64 = (0..6).map(|k| m[i][k] * s.qdd[k]).sum();
                 let close = |a: f64, b: f64| (a - b).abs() < 1e-9 * (1.0 + b.abs());
                 assert!(close(terms.inertial[i], inertial));
                 assert!(close(terms.gravity[i], g[i]));
-                assert!(close(terms.coriolis[i], tau[i] - inertial - g[i]));
+                assert!(close(terms.coriolis[i], s.tau[i] - inertial - g[i]));
                 assert_eq!((terms.actuator[i], terms.friction[i]), (0.0, 0.0));
             }
         }
-        // The sizing's peak is the largest |τ| over the samples.
-        let mut sizer = Sizer::new(&numeric, 6, false);
-        for (k, s) in samples.iter().enumerate() {
-            sizer.push(k as f64, &v(&s["q"]), &v(&s["qd"]), &v(&s["qdd"]));
+        // The sizing's peak is the largest |τ| over the samples (not a whole number of groups).
+        let mut sizer = Sizer::new(&mut tape, 6, false);
+        for s in &samples[..samples.len() - 1] {
+            sizer.push(s);
         }
+        sizer.finish();
         for i in 0..6 {
-            let peak = samples
+            let peak = samples[..samples.len() - 1]
                 .iter()
-                .map(|s| v(&s["tau"])[i])
+                .map(|s| s.tau[i])
                 .fold(0.0f64, |a, b| if b.abs() > a.abs() { b } else { a });
             assert!((sizer.joints[i].peak - peak).abs() < 1e-9 * (1.0 + peak.abs()));
         }
+        assert_eq!(sizer.samples, samples.len() - 1);
     }
 }

@@ -376,3 +376,100 @@ fn viscous_friction_dissipates_the_energy_lost_in_a_simulation() {
         "{start} − {end} vs {dissipated}"
     );
 }
+
+/// The last row (t, q, q̇, q̈) of `simulate` from `(q0, qd0)` alone, over 0.5 s.
+fn last_row_alone(robot: &str, k: usize, q0: f64, qd0: f64) -> Vec<f64> {
+    let csv = scratch(&format!("batch_alone_{k}.csv"));
+    let alone = dynamics(&[
+        "simulate",
+        robot,
+        "--q0",
+        &q0.to_string(),
+        "--qd0",
+        &qd0.to_string(),
+        "--duration",
+        "0.5",
+        "--dt",
+        "0.001",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(alone.status.success());
+    std::fs::read_to_string(&csv)
+        .unwrap()
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect()
+}
+
+#[test]
+fn a_batch_of_initial_states_ends_where_each_alone_ends() {
+    // Five states (a partial group of lanes), q̇ given, friction and actuator inertia on.
+    let states: [(f64, f64); 5] = [
+        (0.3, 0.0),
+        (-1.2, 0.5),
+        (0.9, -2.0),
+        (2.5, 1.0),
+        (-0.4, 3.0),
+    ];
+    let file = scratch("batch_states.csv");
+    let lines: Vec<String> = states
+        .iter()
+        .enumerate()
+        .map(|(k, (q, qd))| format!("{k},{q},{qd}"))
+        .collect();
+    std::fs::write(&file, format!("t,q1,qd1\n{}\n", lines.join("\n"))).unwrap();
+    let robot = pendulum("batch", true);
+    let out = dynamics(&[
+        "simulate",
+        &robot,
+        "--batch",
+        file.to_str().unwrap(),
+        "--duration",
+        "0.5",
+        "--dt",
+        "0.001",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(
+        text.lines().next(),
+        Some("t0,q1,qd1,energy_start,energy_end")
+    );
+    assert_eq!(rows.len(), states.len());
+    for (k, (q0, qd0)) in states.iter().enumerate() {
+        let last = last_row_alone(&robot, k, *q0, *qd0);
+        // t, q, q̇, q̈ of the last step against t0, q, q̇, energies.
+        assert_eq!(rows[k][0], k as f64);
+        assert!(
+            close(rows[k][1], last[1], 1e-9),
+            "state {k}: {:?} vs {last:?}",
+            rows[k]
+        );
+        assert!(
+            close(rows[k][2], last[2], 1e-9),
+            "state {k}: {:?} vs {last:?}",
+            rows[k]
+        );
+        // The energy at the start by hand; friction only takes energy away.
+        let by_hand = 0.5 * (M * L * L + IA) * qd0 * qd0 + M * G * L * q0.sin();
+        assert!(
+            close(rows[k][3], by_hand, 1e-12),
+            "state {k}: {:?}",
+            rows[k]
+        );
+        assert!(rows[k][4] < rows[k][3], "state {k}: {:?}", rows[k]);
+    }
+}

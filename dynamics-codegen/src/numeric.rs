@@ -117,30 +117,6 @@ impl Numeric {
             .collect()
     }
 
-    /// The terms of [`Numeric::inverse_dynamics`] apart, per joint: `τ = inertial + coriolis +
-    /// gravity + actuator + friction` with `inertial = M_links(q) q̈` (the links' M, without the
-    /// actuators), `coriolis = C(q, q̇) q̇`, `gravity = g(q)` with springs, `actuator = I_a q̈`.
-    /// Each is one recursive Newton-Euler pass on the chain (RNEA is linear in q̈ and g).
-    #[must_use]
-    pub fn inverse_dynamics_terms(&self, q: &[f64], qd: &[f64], qdd: &[f64]) -> Terms {
-        let chain = self.chain(q);
-        let zeros = vec![0.0; q.len()];
-        let no_gravity = V3::zero(0.0);
-        let mut gravity = algo::rnea(&chain, &zeros, &zeros, self.gravity());
-        for (g, s) in gravity.iter_mut().zip(self.springs(q)) {
-            *g += s;
-        }
-        Terms {
-            inertial: algo::rnea(&chain, &zeros, qdd, no_gravity),
-            coriolis: algo::rnea(&chain, qd, &zeros, no_gravity),
-            gravity,
-            actuator: (self.robot.joints.iter().zip(qdd))
-                .map(|(j, a)| self.value(&j.link.actuator_inertia) * a)
-                .collect(),
-            friction: self.friction_torques(qd),
-        }
-    }
-
     /// Kinetic energy `½ q̇ᵀ M q̇` (links and actuators) and potential energy (gravity, zero
     /// with every centre of mass at the base origin, and springs `½ k (q − q_rest)²`).
     #[must_use]
@@ -175,21 +151,6 @@ impl Numeric {
         let g = algo::rnea(&self.chain(q), &zeros, &zeros, self.gravity());
         g.iter().zip(self.springs(q)).map(|(a, b)| a + b).collect()
     }
-}
-
-/// The terms of the inverse dynamics apart, per joint (see [`Numeric::inverse_dynamics_terms`]).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Terms {
-    /// `M_links(q) q̈`.
-    pub inertial: Vec<f64>,
-    /// `C(q, q̇) q̇`.
-    pub coriolis: Vec<f64>,
-    /// `g(q)` with springs.
-    pub gravity: Vec<f64>,
-    /// The actuators' inertia, `I_a q̈`.
-    pub actuator: Vec<f64>,
-    /// Joint friction.
-    pub friction: Vec<f64>,
 }
 
 /// The robot's values evaluated, at joint position `q`.

@@ -7,7 +7,9 @@
 
 /// `∂τ/∂q` and `∂τ/∂q̇` at `(q, q̇, q̈)`: row `i`, column `j` is `∂τ_i/∂q_j` (Pinocchio's
 /// `computeRNEADerivatives`). `∂τ/∂q̈` is `M(q)`, [`Dynamics::mass_matrix`](crate::Dynamics).
+/// In memory (`repr(C)`): `dtau_dq`, then `dtau_dqd`, as a C caller's `double[2][N][N]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
 pub struct InverseDynamicsDerivatives<Mat> {
     /// `∂τ/∂q`.
     pub dtau_dq: Mat,

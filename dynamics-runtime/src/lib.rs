@@ -78,6 +78,8 @@ pub mod statics;
 mod tangent;
 mod trig;
 
+#[cfg(feature = "rayon")]
+pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
     DynamicsRegressorBatch,
@@ -87,7 +89,7 @@ pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor,
 };
 pub use crate::factor::NotPositiveDefinite;
-pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
+pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};
 
@@ -97,7 +99,7 @@ pub use dynamics_macros::Dynamics;
 /// Items that generated code names. Not public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4};
+    pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
     pub use crate::real::{Real, RealScalar};
     pub use crate::tangent::Tangent;
     pub use core;

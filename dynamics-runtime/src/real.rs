@@ -70,13 +70,13 @@ pub trait Real:
 
     /// Whether generated derivatives compute their tangents in lanes, across directions
     /// ([`crate::__private::Tangent`]), rather than column by column: for `f64` and `f32` where
-    /// the build has AVX-512 (eight `f64` directions in one of 32 registers; with AVX2 alone,
+    /// the build has AVX-512 and the `avx512` feature is on (eight `f64` directions in one of 32 registers; with AVX2 alone,
     /// two of 16, the Panda's ∂τ took 20 % fewer instructions, the 6-joint arms' up to 8 %
     /// more); not on the lane types, where each tangent would take eight of their registers.
     /// Where the two differ, `inverse_dynamics_derivatives` on lanes agrees with one state's to
     /// rounding, not bit for bit (the same sums in another order).
     #[doc(hidden)]
-    const TANGENTS_IN_LANES: bool = cfg!(target_feature = "avx512f");
+    const TANGENTS_IN_LANES: bool = cfg!(all(target_feature = "avx512f", feature = "avx512"));
 
     /// `c x + acc` on eight values, lane by lane as [`Real::mul_add`]: the step of the
     /// tangents that generated derivatives compute in lanes ([`crate::__private::Tangent`]),

@@ -241,3 +241,55 @@ fn inputs_of_another_length_panic() {
     let mut tau = [[0.0; 6]; 4];
     Puma560.coriolis_torques_batch(&q[..], &qd[..], &mut tau[..]);
 }
+
+/// Large enough to be cut into chunks on the threads (a partial last group too), below the
+/// threshold where it runs on the caller's thread, and through joint columns.
+#[test]
+fn threads_give_the_same_bits() {
+    use dynamics_runtime::InParallel;
+    for len in [0, 5, 1_003, 4_100] {
+        let (q, qd, qdd) = (
+            states::<7>(len, 17),
+            states::<7>(len, 18),
+            states::<7>(len, 19),
+        );
+        let mut tau = vec![[0.0; 7]; len];
+        InParallel(&Panda).inverse_dynamics_batch(&q[..], &qd[..], &qdd[..], &mut tau[..]);
+        same("parallel τ", &tau, |k| {
+            Panda.inverse_dynamics(&q[k], &qd[k], &qdd[k])
+        });
+        // Against one thread's batch: in AVX-512 builds the single state's derivatives take
+        // another route (tangents in lanes), the lanes' agree with it to rounding only.
+        let zero = Panda.inverse_dynamics_derivatives(&[0.0; 7], &[0.0; 7], &[0.0; 7]);
+        let (mut d, mut one_thread) = (vec![zero; len], vec![zero; len]);
+        InParallel(&Panda).inverse_dynamics_derivatives_batch(
+            &q[..],
+            &qd[..],
+            &qdd[..],
+            &mut d[..],
+        );
+        Panda.inverse_dynamics_derivatives_batch(&q[..], &qd[..], &qdd[..], &mut one_thread[..]);
+        same("parallel ∂τ", &d, |k| one_thread[k]);
+        let mut solved = vec![Ok([0.0; 7]); len];
+        InParallel(&Panda).forward_dynamics_batch(&q[..], &qd[..], &qdd[..], &mut solved[..]);
+        same_solved("parallel q̈", &solved, |k| {
+            Panda.forward_dynamics(&q[k], &qd[k], &qdd[k])
+        });
+        let mut columns = vec![vec![0.0; len]; 7];
+        let mut out: [&mut [f64]; 7] = {
+            let mut it = columns.iter_mut();
+            core::array::from_fn(|_| it.next().unwrap().as_mut_slice())
+        };
+        InParallel(&Panda).gravity_torques_batch(&q[..], &mut out);
+        for (k, state) in q.iter().enumerate() {
+            let g = Panda.gravity_torques(state);
+            for j in 0..7 {
+                assert_eq!(
+                    columns[j][k].to_bits(),
+                    g[j].to_bits(),
+                    "joint {j}, state {k}"
+                );
+            }
+        }
+    }
+}

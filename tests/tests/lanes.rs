@@ -1,16 +1,17 @@
 //! Every generated method on lane types against the single-state path, bit for bit
 //! (`dynamics_tests::lanes`): `F64x4` on the reference robots, the URDF robots and their D-H
 //! twins, a robot with friction (both signs of zero velocity, smoothed Coulomb friction) and
-//! one with the regressor; `F32x8` against `f32`; `F64x2` and `F32x4` on two robots. Each state
-//! set has a lane whose sines and cosines leave the fast range. `forward_dynamics` with one lane
-//! whose mass matrix fails (a NaN): `Err` for the lanes, `Ok` for the others one at a time.
+//! one with the regressor; `F32x8` against `f32`; `F64x2`, `F32x4` and `F64x8` on a few
+//! robots. Each state set has a lane whose sines and cosines leave the fast range.
+//! `forward_dynamics` with one lane whose mass matrix fails (a NaN): `Err` for the lanes, `Ok`
+//! for the others one at a time.
 //! And the reference data's samples four at a time against Pinocchio's τ, M and g directly.
 //!
 //! Run in the default build (SSE2, no FMA) and, by `.ci/run`, in a build for this CPU (AVX2
 //! registers and fused multiply-adds).
 
 use dynamics_reference::scaled_error;
-use dynamics_runtime::lanes::{gather, F32x4, F32x8, F64x2, F64x4, SplitLanes};
+use dynamics_runtime::lanes::{gather, F32x4, F32x8, F64x2, F64x4, F64x8, SplitLanes};
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::lanes::{derivatives, dynamics, regressor, Motion, States};
 use dynamics_tests::reference::{flat, matrix, samples, vector, TOLERANCE};
@@ -92,6 +93,22 @@ fn two_and_four_lanes_f64x2_f32x4() {
     };
     derivatives(&rubbing, &Motion::<F64x2, 2, 2>::new(15));
     derivatives(&rubbing, &Motion::<F32x4, 4, 2>::new(16));
+}
+
+/// Eight `f64` lanes: one AVX-512 register in a build for a CPU that has it. On a thread of its
+/// own: the Panda's derivatives on 64-byte values outgrow a test thread's stack unoptimized.
+#[test]
+fn eight_lanes_f64x8() {
+    std::thread::Builder::new()
+        .stack_size(256 << 20)
+        .spawn(|| {
+            dynamics(&Puma560, &Motion::<F64x8, 8, 6>::new(20));
+            derivatives(&Panda, &Motion::<F64x8, 8, 7>::new(21));
+            regressor(&Random5All, &Motion::<F64x8, 8, 6>::new(22));
+        })
+        .expect("a thread")
+        .join()
+        .expect("every lane the scalar's");
 }
 
 /// A NaN in lane 2 fails that lane's pivot test: the lanes' `forward_dynamics` is `Err` (at

@@ -67,23 +67,16 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         qdd: *const f64,
         out: *mut f64,
     ) {
-        let zero = InverseDynamicsDerivatives {
-            dtau_dq: [[0.0; N]; N],
-            dtau_dqd: [[0.0; N]; N],
-        };
-        let mut d = [zero; HORIZON];
-        // SAFETY: the contract of `Function`, `HORIZON` times over.
+        // SAFETY: the contract of `Function`, `HORIZON` times over; the derivatives are
+        // `repr(C)`, `[dtau_dq, dtau_dqd]` as the output's `2 × N × N` values of a state.
         unsafe {
+            let out = results::<InverseDynamicsDerivatives<[[f64; N]; N]>>(out);
             R::default().inverse_dynamics_derivatives_batch(
                 states(q),
                 states(qd),
                 states(qdd),
-                &mut d,
+                out,
             );
-            let out = results::<[[[f64; N]; N]; 2]>(out);
-            for (o, d) in out.iter_mut().zip(d) {
-                *o = [d.dtau_dq, d.dtau_dqd];
-            }
         }
     }
 

@@ -14,7 +14,7 @@
 
 use dynamics_bench::{Panda, Puma560};
 use dynamics_runtime::lanes::{gather, Lanes};
-use dynamics_runtime::{DynamicsDerivatives, F32x8, F64x4, Real, RealScalar};
+use dynamics_runtime::{DynamicsDerivatives, F32x8, F64x4, F64x8, Real, RealScalar};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -138,7 +138,9 @@ fn main() {
         }
     );
     compare::<Puma560, f64, F64x4, 4, 6>("puma560", "f64");
+    compare::<Puma560, f64, F64x8, 8, 6>("puma560", "f64");
     compare::<Puma560, f32, F32x8, 8, 6>("puma560", "f32");
     compare::<Panda, f64, F64x4, 4, 7>("panda", "f64");
+    compare::<Panda, f64, F64x8, 8, 7>("panda", "f64");
     compare::<Panda, f32, F32x8, 8, 7>("panda", "f32");
 }

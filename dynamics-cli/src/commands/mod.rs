@@ -7,6 +7,7 @@ mod excite;
 mod identify;
 mod inspect;
 mod simulate;
+mod simulate_batch;
 mod size;
 mod stats;
 

@@ -1,5 +1,6 @@
 //! `dynamics simulate ROBOT [--q0 ..] [--qd0 ..] [--tau ..] [--duration T] [--dt H]
-//! [--set NAME=VALUE].. [--csv FILE] [--svg FILE]`: the motion under constant torques.
+//! [--set NAME=VALUE].. [--csv FILE] [--svg FILE]`: the motion under constant torques (from
+//! many initial states with `--batch FILE`: [`super::simulate_batch`]).
 //!
 //! The state `x = (q, q̇)` follows `ẋ = (q̇, q̈)` with `M(q) q̈ = τ − C(q, q̇) q̇ − g(q) − τ_f(q̇)`
 //! (springs in g, actuator inertia in M, friction as declared), solved through the LDLᵀ of M
@@ -26,6 +27,9 @@ const COLORS: [&str; 8] = [
 ];
 
 pub fn run(args: &Simulate) -> Result<String, Failure> {
+    if let Some(path) = &args.batch {
+        return super::simulate_batch::run(args, path);
+    }
     let robot = load(&args.robot)?;
     let numeric = numeric(&robot, "simulate", &args.set)?;
     let n = robot.joints.len();

@@ -8,6 +8,7 @@ use crate::args::Size;
 use crate::format::unsigned_zero;
 use crate::plot;
 use crate::sizing::{self, Sizer, TERMS};
+use crate::terms::TermsTape;
 use crate::trajectory;
 use dynamics_codegen::model::{JointKind, Robot};
 use dynamics_codegen::numeric::Numeric;
@@ -20,10 +21,12 @@ const LONG_INPUT: u64 = 1 << 20;
 
 pub fn run(args: &Size) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
-    let numeric = numeric(&robot, "size", &args.set)?;
+    let eq = dynamics_codegen::derive(&robot);
+    let fields = parameters("size", &eq.fields, &args.set)?;
+    let mut terms = TermsTape::new(&robot, &eq, &fields).map_err(Failure::File)?;
     let n = robot.joints.len();
     let kinds: Vec<JointKind> = robot.joints.iter().map(|j| j.kind).collect();
-    let mut sizer = Sizer::new(&numeric, n, args.svg.is_some());
+    let mut sizer = Sizer::new(&mut terms, n, args.svg.is_some());
     let source = if let Some(path) = &args.csv {
         let method = read(path, n, &mut sizer)?;
         format!("{path}, {method}")
@@ -31,11 +34,10 @@ pub fn run(args: &Size) -> Result<String, Failure> {
         let from = joints("size", "--from", args.from.as_ref(), n)?;
         let to = joints("size", "--to", args.to.as_ref(), n)?;
         let samples = args.samples as usize;
-        trajectory::quintic(&from, &to, args.duration, samples, |s| {
-            sizer.push(s.t, &s.q, &s.qd, &s.qdd);
-        });
+        trajectory::quintic(&from, &to, args.duration, samples, |s| sizer.push(s));
         "quintic move, exact q̇ and q̈".to_string()
     };
+    sizer.finish();
     if let (Some(path), Some(envelope)) = (&args.svg, &sizer.envelope) {
         let title = format!("{}: joint torques and power ({source})", robot.name);
         let figure = sizing::figure(title, &kinds, envelope);
@@ -78,14 +80,9 @@ fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Fai
         joints: n,
         torques: false,
     };
-    trajectory::read_csv(
-        BufReader::new(file),
-        columns,
-        |s| sizer.push(s.t, &s.q, &s.qd, &s.qdd),
-        progress,
-    )
-    .map(|(_, method)| method)
-    .map_err(|e| Failure::File(format!("{path}: {e}")))
+    trajectory::read_csv(BufReader::new(file), columns, |s| sizer.push(s), progress)
+        .map(|(_, method)| method)
+        .map_err(|e| Failure::File(format!("{path}: {e}")))
 }
 
 pub(super) fn write_svg(path: &str, figure: &plot::Figure<'_>) -> Result<(), Failure> {

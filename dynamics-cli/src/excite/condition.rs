@@ -14,15 +14,9 @@
 
 use super::eigen::symmetric_eigenvalues;
 use crate::identify::measured::Measured;
-use crate::identify::model::{LinearModel, Work};
+use crate::identify::model::{JointValues, LinearModel, Work};
 use crate::identify::singular::singular_values;
-
-/// One sample's state: positions, velocities and accelerations of every joint.
-pub struct Sample<'a> {
-    pub q: &'a [f64],
-    pub qd: &'a [f64],
-    pub qdd: &'a [f64],
-}
+use crate::lanes::LANES;
 
 /// The Gram matrix of the stacked regressor, accumulated sample by sample: per joint over the
 /// parameters of its equation (a dense lower triangle, whose update is a contiguous loop), the
@@ -41,7 +35,7 @@ impl<'m> Gram<'m> {
         Gram {
             model,
             work: Work::default(),
-            entries: vec![0.0; model.entries()],
+            entries: vec![0.0; LANES * model.entries()],
             joints: model
                 .columns
                 .iter()
@@ -57,21 +51,15 @@ impl<'m> Gram<'m> {
         }
     }
 
-    /// Adds one sample's rows.
-    pub fn push(&mut self, s: &Sample) {
-        self.model
-            .rows(s.q, s.qd, s.qdd, &mut self.work, &mut self.entries);
-        let mut start = 0;
-        for (joint, columns) in self.joints.iter_mut().zip(&self.model.columns) {
-            let c = columns.len();
-            let row = &self.entries[start..start + c];
-            for (x, &rx) in row.iter().enumerate() {
-                let lower = &mut joint[x * c..=x * c + x];
-                for (g, &ry) in lower.iter_mut().zip(row) {
-                    *g += rx * ry;
-                }
+    /// Adds the rows of the samples, [`LANES`] at a time.
+    pub fn push(&mut self, states: &[JointValues<'_>]) {
+        let entries = self.model.entries();
+        for group in states.chunks(LANES) {
+            self.model.rows(group, &mut self.work, &mut self.entries);
+            for k in 0..group.len() {
+                let sample = &self.entries[k * entries..(k + 1) * entries];
+                add(&mut self.joints, &self.model.columns, sample);
             }
-            start += c;
         }
     }
 
@@ -99,17 +87,37 @@ impl<'m> Gram<'m> {
     }
 }
 
-/// `σ_max / σ_min` of the stacked regressor of `samples`, from its Householder factor.
-pub fn accurate<'s>(model: &LinearModel, samples: impl IntoIterator<Item = Sample<'s>>) -> f64 {
+/// Adds one sample's entries to each joint's lower triangle.
+fn add(joints: &mut [Vec<f64>], columns: &[Vec<usize>], entries: &[f64]) {
+    let mut start = 0;
+    for (joint, columns) in joints.iter_mut().zip(columns) {
+        let c = columns.len();
+        let row = &entries[start..start + c];
+        for (x, &rx) in row.iter().enumerate() {
+            let lower = &mut joint[x * c..=x * c + x];
+            for (g, &ry) in lower.iter_mut().zip(row) {
+                *g += rx * ry;
+            }
+        }
+        start += c;
+    }
+}
+
+/// `σ_max / σ_min` of the stacked regressor of `states`, from its Householder factor.
+pub fn accurate(model: &LinearModel, states: &[JointValues<'_>]) -> f64 {
     let b = model.names.len();
     let mut measured = Measured::new(model.columns.clone(), b);
-    let (mut work, mut entries) = (Work::default(), vec![0.0; model.entries()]);
-    for s in samples {
-        model.rows(s.q, s.qd, s.qdd, &mut work, &mut entries);
-        let mut start = 0;
-        for (i, columns) in model.columns.iter().enumerate() {
-            measured.push(i, &entries[start..start + columns.len()], 0.0);
-            start += columns.len();
+    let entries = model.entries();
+    let (mut work, mut rows) = (Work::default(), vec![0.0; LANES * entries]);
+    for group in states.chunks(LANES) {
+        model.rows(group, &mut work, &mut rows);
+        for k in 0..group.len() {
+            let sample = &rows[k * entries..(k + 1) * entries];
+            let mut start = 0;
+            for (i, columns) in model.columns.iter().enumerate() {
+                measured.push(i, &sample[start..start + columns.len()], 0.0);
+                start += columns.len();
+            }
         }
     }
     let all: Vec<usize> = (0..b).collect();

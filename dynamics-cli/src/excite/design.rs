@@ -8,9 +8,10 @@
 //! of the period, evenly spread among those written ([`Gram`]); the result is judged over all
 //! of the period's samples ([`accurate`]).
 
-use super::condition::{accurate, Gram, Sample};
+use super::condition::{accurate, Gram};
 use super::fourier::{Grid, Limits, Series, State};
 use super::search::{minimise, Outcome};
+use crate::identify::model::JointValues;
 use crate::identify::model::LinearModel;
 
 /// The samples of a period over which the search evaluates the condition number: enough rows
@@ -61,38 +62,29 @@ impl Problem<'_> {
     /// `cond(Y_B)` over the samples `ks`, by the Gram matrix.
     fn condition(&self, gram: &mut Gram, series: &[Series], ks: &[usize]) -> f64 {
         gram.clear();
-        let n = series.len();
-        let (mut q, mut qd, mut qdd) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-        for &k in ks {
-            for (j, s) in self.states(series, k).into_iter().enumerate() {
-                (q[j], qd[j], qdd[j]) = (s.q, s.qd, s.qdd);
-            }
-            gram.push(&Sample {
-                q: &q,
-                qd: &qd,
-                qdd: &qdd,
-            });
-        }
+        let rows = self.rows(series, ks.iter().copied());
+        gram.push(&states(&rows));
         gram.condition()
     }
 
     /// `cond(Y_B)` over every sample of the period, from the regressor's factor.
     #[must_use]
     pub fn accurate_condition(&self, series: &[Series]) -> f64 {
-        let rows: Vec<[Vec<f64>; 3]> = (0..self.grid.samples())
-            .map(|k| {
-                let states = self.states(series, k);
-                [
-                    states.iter().map(|s| s.q).collect(),
-                    states.iter().map(|s| s.qd).collect(),
-                    states.iter().map(|s| s.qdd).collect(),
-                ]
-            })
-            .collect();
-        accurate(
-            self.model,
-            rows.iter().map(|[q, qd, qdd]| Sample { q, qd, qdd }),
-        )
+        let rows = self.rows(series, 0..self.grid.samples());
+        accurate(self.model, &states(&rows))
+    }
+
+    /// Positions, velocities and accelerations of every joint at the samples `ks`.
+    fn rows(&self, series: &[Series], ks: impl Iterator<Item = usize>) -> Vec<[Vec<f64>; 3]> {
+        ks.map(|k| {
+            let states = self.states(series, k);
+            [
+                states.iter().map(|s| s.q).collect(),
+                states.iter().map(|s| s.qd).collect(),
+                states.iter().map(|s| s.qdd).collect(),
+            ]
+        })
+        .collect()
     }
 
     /// The search for the motion of lowest condition number, from `seed`, with at most
@@ -125,6 +117,13 @@ impl Problem<'_> {
             outcome,
         }
     }
+}
+
+/// The states of `rows`, borrowed.
+fn states(rows: &[[Vec<f64>; 3]]) -> Vec<JointValues<'_>> {
+    rows.iter()
+        .map(|[q, qd, qdd]| JointValues { q, qd, qdd })
+        .collect()
 }
 
 #[cfg(test)]

@@ -3,7 +3,8 @@
 //! standard parameters that the torques determine, as `dynamics inspect --base-parameters`
 //! prints them), for the links and the joint terms asked for.
 
-use super::model::{constant_values, Entries};
+use super::model::Entries;
+use crate::joint_tape::constant_values;
 use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 use dynamics_codegen::Equations;
 

@@ -4,8 +4,10 @@
 //! ([`super::decimate`]) before they are used.
 
 use super::decimate::Decimator;
-use super::model::{LinearModel, Work};
+use super::model::{JointValues, LinearModel, Work};
 use super::source::Source;
+use crate::lanes::LANES;
+use crate::trajectory::Sample;
 
 /// Per joint, its spring `(k, rest)`, if any.
 pub type Springs = [Option<(f64, f64)>];
@@ -23,22 +25,53 @@ pub fn each_row(
 ) -> Result<&'static str, String> {
     let (entries, n) = (model.entries(), model.joints());
     let mut work = Work::default();
+    let mut rows = vec![0.0; LANES * entries];
     let mut row = vec![0.0; entries + n];
     let mut decimator = source
         .filter()
         .map(|f| Decimator::new(f.decimation, entries + n));
-    source.each(|s| {
-        model.rows(&s.q, &s.qd, &s.qdd, &mut work, &mut row[..entries]);
-        for (i, tau) in row[entries..].iter_mut().enumerate() {
-            *tau = springs[i].map_or(s.tau[i], |(k, rest)| s.tau[i] - k * (s.q[i] - rest));
-        }
-        match &mut decimator {
-            None => each(s.t, &row[..entries], &row[entries..]),
-            Some(d) => {
-                if let Some((t, filtered)) = d.push(s.t, &row) {
-                    each(t, &filtered[..entries], &filtered[entries..]);
+    // The samples wait in groups of `LANES`, whose regressor is evaluated at once (the group's
+    // buffers reused from one group to the next).
+    let mut group: Vec<Sample> = Vec::with_capacity(LANES);
+    let mut filled = 0;
+    let mut flush = |group: &[Sample]| {
+        let states: Vec<JointValues> = group
+            .iter()
+            .map(|s| JointValues {
+                q: &s.q,
+                qd: &s.qd,
+                qdd: &s.qdd,
+            })
+            .collect();
+        model.rows(&states, &mut work, &mut rows);
+        for (k, s) in group.iter().enumerate() {
+            row[..entries].copy_from_slice(&rows[k * entries..(k + 1) * entries]);
+            for (i, tau) in row[entries..].iter_mut().enumerate() {
+                *tau = springs[i].map_or(s.tau[i], |(k, rest)| s.tau[i] - k * (s.q[i] - rest));
+            }
+            match &mut decimator {
+                None => each(s.t, &row[..entries], &row[entries..]),
+                Some(d) => {
+                    if let Some((t, filtered)) = d.push(s.t, &row) {
+                        each(t, &filtered[..entries], &filtered[entries..]);
+                    }
                 }
             }
         }
-    })
+    };
+    let how = source.each(|s| {
+        match group.get_mut(filled) {
+            Some(waiting) => waiting.clone_from(s),
+            None => group.push(s.clone()),
+        }
+        filled += 1;
+        if filled == LANES {
+            flush(&group);
+            filled = 0;
+        }
+    })?;
+    if filled > 0 {
+        flush(&group[..filled]);
+    }
+    Ok(how)
 }

@@ -92,6 +92,13 @@ impl<S: Scalar> ChainJoint<S> {
         V3::new(ct * w.x + st * w.y, ct * w.y - st * w.x, w.z)
     }
 
+    /// `Rotz(θ)ᵀ v`: the second step of [`ChainJoint::to_child`], from the axes of
+    /// [`ChainJoint::untwist`].
+    pub fn unturn(&self, v: V3<S>) -> V3<S> {
+        let (st, ct) = (self.sin_theta, self.cos_theta);
+        V3::new(ct * v.x + st * v.y, ct * v.y - st * v.x, v.z)
+    }
+
     /// `Rotx(α)ᵀ v`: a vector in J_{i−1} axes expressed in the axes of J_i before its turn by
     /// θ, which differ from J_i's by a rotation about z.
     pub fn untwist(&self, v: V3<S>) -> V3<S> {

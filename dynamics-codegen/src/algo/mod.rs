@@ -32,7 +32,7 @@ pub use kinematics::{
     kinematics, Frame, Jacobian, Kinematics,
 };
 pub use ldlt::Ldlt;
-pub use projection::{projected_torques, LinkFrame};
+pub use projection::{projected_torques, LinkFrame, LinkFrames, Twist};
 pub use rnea::rnea;
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;

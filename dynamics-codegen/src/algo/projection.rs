@@ -41,19 +41,80 @@ impl<S: Scalar> LinkFrame<S> {
     }
 }
 
-/// Joint torques of `chain` (its bodies in J frames, or each in `frames[l]` where given) moving
+/// Where the bodies of [`projected_torques`] are given, when not in the joint frames.
+#[derive(Clone, Copy, Debug)]
+pub struct LinkFrames<'a, S> {
+    /// `Some(tip)`: link l's frame is first its standard D-H frame, `J_l Transx(a) Rotx(α)` with
+    /// the twist of the chain's joint l + 1 (`tip`, the last link's own, for the last link),
+    /// and the rates and motions are carried through these frames, where joint l + 1 follows
+    /// by `Rotz(θ) Transz(d)` alone. `None`: J_l.
+    pub tip_twist: Option<Twist<S>>,
+    /// Each link's frame in that frame.
+    pub poses: &'a [LinkFrame<S>],
+}
+
+/// `Transx(a) Rotx(α)`: a standard D-H frame in its link's joint frame.
+#[derive(Clone, Copy, Debug)]
+pub struct Twist<S> {
+    /// a, along J's x axis.
+    pub a: S,
+    /// sin α.
+    pub sin_alpha: S,
+    /// cos α.
+    pub cos_alpha: S,
+}
+
+impl<S: Scalar> Twist<S> {
+    /// `Rotx(α)ᵀ v`.
+    fn untwist(&self, v: V3<S>) -> V3<S> {
+        let (sa, ca) = (self.sin_alpha, self.cos_alpha);
+        V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y)
+    }
+
+    /// A unit motion at J's origin in J's axes, at the D-H frame's origin in its axes. The
+    /// origin moves along x, which the twist keeps: the arm is crossed after it.
+    fn motion(&self, (a, b): (V3<S>, V3<S>)) -> (V3<S>, V3<S>) {
+        let a = self.untwist(a);
+        (a, self.untwist(b) + a.cross(self.arm()))
+    }
+
+    /// A link's rates in J at the D-H frame: `U` is a tensor, so the shift of `v̇` by `U (a, 0, 0)`
+    /// is taken after the turn, where the arm reads the same.
+    fn rates(&self, w: V3<S>, wd: V3<S>, vd: V3<S>) -> Rates<S> {
+        let turned = Rates::new(self.untwist(w), self.untwist(wd), self.untwist(vd));
+        let vd = turned.vd + mul(&turned.u, self.arm());
+        Rates { vd, ..turned }
+    }
+
+    fn arm(&self) -> V3<S> {
+        let zero = self.a.zero();
+        V3::new(self.a, zero, zero)
+    }
+}
+
+/// Joint torques of `chain` (its bodies in J frames, or each in its own of `frames`) moving
 /// with velocities `qd` and accelerations `qdd` under `gravity`: [`super::rnea`]'s, in the form
 /// of the module's sum. Actuator inertia and springs are not included.
 pub fn projected_torques<S: Scalar>(
     chain: &Chain<S>,
-    frames: Option<&[LinkFrame<S>]>,
+    frames: Option<&LinkFrames<'_, S>>,
     qd: &[S],
     qdd: &[S],
     gravity: V3<S>,
 ) -> Vec<S> {
-    let mut links = link_rates(chain, qd, qdd, gravity);
-    let mut motions = joint_motions(chain);
+    let twists = frames.and_then(|f| f.tip_twist).map(|tip| {
+        let next = chain.joints.iter().skip(1).map(|j| Twist {
+            a: j.a,
+            sin_alpha: j.sin_alpha,
+            cos_alpha: j.cos_alpha,
+        });
+        next.chain([tip]).collect::<Vec<_>>()
+    });
+    let twists = twists.as_deref();
+    let mut links = link_rates(chain, twists, qd, qdd, gravity);
+    let mut motions = joint_motions(chain, twists);
     if let Some(frames) = frames {
+        let frames = frames.poses;
         for (rates, frame) in links.iter_mut().zip(frames) {
             *rates = rates.in_frame(frame);
         }
@@ -143,17 +204,29 @@ fn tr_mul<S: Scalar>(u: &[[S; 3]; 3], x: V3<S>) -> V3<S> {
     Mat3 { m: *u }.tr_mul_vec(x)
 }
 
-/// Each link's rates in its joint frame: Newton-Euler's forward pass.
-fn link_rates<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) -> Vec<Rates<S>> {
+/// Each link's rates in its joint frame, or in its D-H frame where `twists` are given:
+/// Newton-Euler's forward pass.
+fn link_rates<S: Scalar>(
+    chain: &Chain<S>,
+    twists: Option<&[Twist<S>]>,
+    qd: &[S],
+    qdd: &[S],
+    gravity: V3<S>,
+) -> Vec<Rates<S>> {
     let zero = gravity.x.zero();
     let (mut w, mut wd, mut vd) = (V3::zero(zero), V3::zero(zero), -gravity);
     let mut links: Vec<Rates<S>> = Vec::with_capacity(chain.joints.len());
     for (i, j) in chain.joints.iter().enumerate() {
+        // From the parent's frame: J_{i−1}, or its D-H frame, whence J_i is `Rotz(θ) Transz(d)`.
+        let (offset, into): (_, &dyn Fn(V3<S>) -> V3<S>) = match twists {
+            Some(_) => (V3::new(zero, zero, j.d), &|v| j.unturn(v)),
+            None => (j.offset(), &|v| j.to_child(v)),
+        };
         if let Some(parent) = links.last() {
-            vd = vd + mul(&parent.u, j.offset());
+            vd = vd + mul(&parent.u, offset);
         }
-        vd = j.to_child(vd);
-        let (w_in, wd_in) = (j.to_child(w), j.to_child(wd));
+        vd = into(vd);
+        let (w_in, wd_in) = (into(w), into(wd));
         match j.kind {
             JointKind::Revolute => {
                 w = V3::new(w_in.x, w_in.y, w_in.z + qd[i]);
@@ -166,14 +239,23 @@ fn link_rates<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) 
                 vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
             }
         }
-        links.push(Rates::new(w, wd, vd));
+        let rates = match twists {
+            Some(t) => t[i].rates(w, wd, vd),
+            None => Rates::new(w, wd, vd),
+        };
+        (w, wd, vd) = (rates.w, rates.wd, rates.vd);
+        links.push(rates);
     }
     links
 }
 
 /// `motions[i][l − i]`: joint i's unit motion (angular, linear) in J_l's axes at J_l's origin,
-/// for each link l ≥ i.
-fn joint_motions<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<(V3<S>, V3<S>)>> {
+/// or in link l's D-H frame where `twists` are given, for each link l ≥ i.
+fn joint_motions<S: Scalar>(
+    chain: &Chain<S>,
+    twists: Option<&[Twist<S>]>,
+) -> Vec<Vec<(V3<S>, V3<S>)>> {
+    let out = |l: usize, motion| twists.map_or(motion, |t: &[Twist<S>]| t[l].motion(motion));
     (0..chain.joints.len())
         .map(|i| {
             let zero = chain.joints[i].a.zero();
@@ -182,10 +264,14 @@ fn joint_motions<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<(V3<S>, V3<S>)>> {
                 JointKind::Revolute => (z, V3::zero(zero)),
                 JointKind::Prismatic => (V3::zero(zero), z),
             };
-            let mut along = vec![own];
-            for j in &chain.joints[i + 1..] {
+            let mut along = vec![out(i, own)];
+            for (l, j) in chain.joints.iter().enumerate().skip(i + 1) {
                 let (a, b) = along.last().copied().unwrap_or(own);
-                along.push((j.to_child(a), j.to_child(b + a.cross(j.offset()))));
+                let into = match twists {
+                    Some(_) => (j.unturn(a), j.unturn(b + a.cross_z(j.d))),
+                    None => (j.to_child(a), j.to_child(b + a.cross(j.offset()))),
+                };
+                along.push(out(l, into));
             }
             along
         })
@@ -194,7 +280,7 @@ fn joint_motions<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<(V3<S>, V3<S>)>> {
 
 #[cfg(test)]
 mod tests {
-    use super::{projected_torques, LinkFrame};
+    use super::{projected_torques, LinkFrame, LinkFrames, Twist};
     use crate::algo::{parallel_chain, rnea, test_chain, Chain, Mat3, V3};
 
     const QD: [f64; 7] = [0.8, -0.4, 1.3, -2.1, 0.5, 0.9, -0.3];
@@ -228,14 +314,15 @@ mod tests {
         }
     }
 
-    /// Bodies given in frames of their own: the same torques as carried into the joint frames.
+    /// Bodies given in frames of their own, in the joint frames or after the D-H frames: the
+    /// same torques as carried into the joint frames.
     #[test]
     fn bodies_in_frames_of_their_own() {
         let q = [-0.7, 0.4, 0.3, -1.3, 0.9];
         let gravity = V3::new(0.0, 0.3, -9.81);
         let in_joint_frames = test_chain(&q);
-        let mut in_own_frames = in_joint_frames.clone();
-        let frames: Vec<LinkFrame<f64>> = (0..q.len())
+        let n = q.len();
+        let poses: Vec<LinkFrame<f64>> = (0..n)
             .map(|l| {
                 let x = l as f64;
                 let (a, b) = (0.4 + 0.3 * x, -1.1 + 0.5 * x);
@@ -245,17 +332,41 @@ mod tests {
                 }
             })
             .collect();
-        let mut carried = in_joint_frames.clone();
-        for (l, frame) in frames.iter().enumerate() {
-            // Some body given in frame l: the joint frame's is the same body carried.
-            let body = in_joint_frames.joints[(l + 2) % q.len()].body;
-            in_own_frames.joints[l].body = body;
-            carried.joints[l].body = frame.carry(&body);
+        // The tip's twist, as the chain's next joint has it for the others.
+        let tip = Twist {
+            a: 0.13,
+            sin_alpha: 0.6_f64.sin(),
+            cos_alpha: 0.6_f64.cos(),
+        };
+        for tip_twist in [None, Some(tip)] {
+            let mut in_own_frames = in_joint_frames.clone();
+            let mut carried = in_joint_frames.clone();
+            for (l, pose) in poses.iter().enumerate() {
+                // Some body given in frame l: the joint frame's is the same body carried.
+                let body = in_joint_frames.joints[(l + 2) % n].body;
+                in_own_frames.joints[l].body = body;
+                let mut body = pose.carry(&body);
+                if tip_twist.is_some() {
+                    let next = in_joint_frames.joints.get(l + 1);
+                    let (a, s, c) = next.map_or((tip.a, tip.sin_alpha, tip.cos_alpha), |j| {
+                        (j.a, j.sin_alpha, j.cos_alpha)
+                    });
+                    let twist = LinkFrame {
+                        rotation: Mat3::rot_x(s, c),
+                        origin: V3::new(a, 0.0, 0.0),
+                    };
+                    body = twist.carry(&body);
+                }
+                carried.joints[l].body = body;
+            }
+            let expected = rnea(&carried, &QD[..n], &QDD[..n], gravity);
+            let frames = LinkFrames {
+                tip_twist,
+                poses: &poses,
+            };
+            let projected =
+                projected_torques(&in_own_frames, Some(&frames), &QD[..n], &QDD[..n], gravity);
+            assert_close(&projected, &expected);
         }
-        let n = q.len();
-        let expected = rnea(&carried, &QD[..n], &QDD[..n], gravity);
-        let projected =
-            projected_torques(&in_own_frames, Some(&frames), &QD[..n], &QDD[..n], gravity);
-        assert_close(&projected, &expected);
     }
 }

@@ -15,4 +15,4 @@ pub use graph::{Graph, Stats};
 pub use node::{Node, NodeId, Var, WRENCH};
 pub use number::Number;
 pub use tangent::{Lane, Of, Tangents, Term};
-pub use tape::Tape;
+pub use tape::{Tape, TapeScalar};

@@ -9,10 +9,58 @@
 //!
 //! Slots: the leaves first (one per distinct [`Var`] the outputs reach, whose values the caller
 //! gives in the order of [`Tape::leaves`]), then the constants, then one slot per operation.
-//! The arithmetic is [`Graph::eval`]'s, operation for operation, so both give the same bits.
+//! The arithmetic is [`Graph::eval`]'s, operation for operation, so both give the same bits in
+//! `f64`; [`Tape::eval_in`] runs it on any [`TapeScalar`] (several samples in vector lanes).
 
 use super::graph::Graph;
 use super::node::{Node, NodeId, Var};
+use std::ops::{Add, Mul, Neg};
+
+/// What a tape computes with: `f64`, or a type of several `f64` lanes (the command line's).
+pub trait TapeScalar: Copy + Add<Output = Self> + Mul<Output = Self> + Neg<Output = Self> {
+    /// Every lane `x`.
+    fn splat(x: f64) -> Self;
+    /// `1 / self`.
+    #[must_use]
+    fn recip(self) -> Self;
+    /// The sine.
+    #[must_use]
+    fn sin(self) -> Self;
+    /// The cosine.
+    #[must_use]
+    fn cos(self) -> Self;
+    /// 1, −1, or 0 for a zero (as the generated code's `Real::sign`).
+    #[must_use]
+    fn sign(self) -> Self;
+    /// The hyperbolic tangent.
+    #[must_use]
+    fn tanh(self) -> Self;
+}
+
+impl TapeScalar for f64 {
+    fn splat(x: f64) -> f64 {
+        x
+    }
+    fn recip(self) -> f64 {
+        1.0 / self
+    }
+    fn sin(self) -> f64 {
+        f64::sin(self)
+    }
+    fn cos(self) -> f64 {
+        f64::cos(self)
+    }
+    fn sign(self) -> f64 {
+        if self == 0.0 {
+            0.0
+        } else {
+            self.signum()
+        }
+    }
+    fn tanh(self) -> f64 {
+        f64::tanh(self)
+    }
+}
 
 /// One operation on earlier slots.
 #[derive(Clone, Copy, Debug)]
@@ -103,29 +151,29 @@ impl Tape {
     /// # Panics
     /// If `leaves` or `outputs` is shorter than the tape's.
     pub fn eval(&self, leaves: &[f64], work: &mut Vec<f64>, outputs: &mut [f64]) {
-        let (l, c) = (self.leaves.len(), self.constants.len());
+        self.eval_in(leaves, work, outputs);
+    }
+
+    /// [`Tape::eval`] on any [`TapeScalar`].
+    ///
+    /// # Panics
+    /// If `leaves` or `outputs` is shorter than the tape's.
+    pub fn eval_in<S: TapeScalar>(&self, leaves: &[S], work: &mut Vec<S>, outputs: &mut [S]) {
+        let l = self.leaves.len();
         work.clear();
         work.extend_from_slice(&leaves[..l]);
-        work.extend_from_slice(&self.constants);
+        work.extend(self.constants.iter().map(|&c| S::splat(c)));
         work.reserve(self.ops.len());
-        debug_assert_eq!(work.len(), l + c);
         for op in &self.ops {
             let at = |k: u32| work[k as usize];
             let v = match *op {
                 Op::Add(a, b) => at(a) + at(b),
                 Op::Mul(a, b) => at(a) * at(b),
                 Op::Neg(a) => -at(a),
-                Op::Recip(a) => 1.0 / at(a),
+                Op::Recip(a) => at(a).recip(),
                 Op::Sin(a) => at(a).sin(),
                 Op::Cos(a) => at(a).cos(),
-                Op::Sign(a) => {
-                    let x = at(a);
-                    if x == 0.0 {
-                        0.0
-                    } else {
-                        x.signum()
-                    }
-                }
+                Op::Sign(a) => at(a).sign(),
                 Op::Tanh(a) => at(a).tanh(),
             };
             work.push(v);

@@ -24,7 +24,7 @@ use super::cost;
 use super::expr::Expr;
 use super::tracer::Tracer;
 use super::Equations;
-use crate::algo::{self, Body, LinkFrame, Mat3, RobotScalars, Scalar, V3};
+use crate::algo::{self, Body, LinkFrame, LinkFrames, Mat3, RobotScalars, Scalar, Twist, V3};
 use crate::method::Family;
 use crate::model::{Convention, Joint, Pose, Robot};
 use crate::symbolic::modular::Fp;
@@ -114,26 +114,33 @@ fn placeholder_taus(
 ) -> Vec<Vec<NodeId>> {
     let mut in_joint_frames = tracer.chain(robot);
     let mut in_link_frames = in_joint_frames.clone();
-    let mut frames = Vec::with_capacity(robot.dof());
+    let mut poses = Vec::with_capacity(robot.dof());
+    let mut tip_twist = None;
     for (j, joint) in robot.joints.iter().enumerate() {
         let row = tracer.dh_row(j, joint);
         let pi = std::array::from_fn(|k| tracer.var(Var::Inertial(placeholder(j, k))));
         let (rotation, origin) = link_pose(tracer, &joint.link_pose);
+        let pose = LinkFrame { rotation, origin };
         let zero = row.a.zero();
         // The link frame in the chain's joint frame: D-H frame j there, then the link pose.
         let frame = match robot.convention {
             Convention::Standard => {
                 let twist = Mat3::rot_x(row.sin_alpha, row.cos_alpha);
+                tip_twist = Some(Twist {
+                    a: row.a,
+                    sin_alpha: row.sin_alpha,
+                    cos_alpha: row.cos_alpha,
+                });
                 LinkFrame {
                     rotation: twist.mul(&rotation),
                     origin: V3::new(row.a, zero, zero) + twist.mul_vec(origin),
                 }
             }
-            Convention::Modified => LinkFrame { rotation, origin },
+            Convention::Modified => pose,
         };
         in_link_frames.joints[j].body = body(&pi);
         in_joint_frames.joints[j].body = frame.carry(&body(&pi));
-        frames.push(frame);
+        poses.push(pose);
     }
     let n = robot.dof();
     let qd = tracer.joint_vars(n, Var::Qd);
@@ -143,6 +150,11 @@ fn placeholder_taus(
     let tau = |chain, frames| ids(&algo::projected_torques(chain, frames, &qd, &qdd, gravity));
     let mut taus = vec![tau(&regrouped, None)];
     if with_link_frames {
+        // Carried through the D-H frames, a standard table's link frames before their poses.
+        let frames = LinkFrames {
+            tip_twist,
+            poses: &poses,
+        };
         taus.push(tau(&in_link_frames, Some(&frames)));
     }
     taus

@@ -119,3 +119,19 @@ impl<T, const M: usize> StatesMut<[T; M]> for [&mut [T]; M] {
         }
     }
 }
+
+/// Through a mutable reference (a chunk of results is one).
+impl<O, S: StatesMut<O> + ?Sized> StatesMut<O> for &mut S {
+    #[inline(always)]
+    fn count(&self) -> usize {
+        (**self).count()
+    }
+    #[inline(always)]
+    fn set(&mut self, k: usize, value: O) {
+        (**self).set(k, value);
+    }
+    #[inline(always)]
+    fn group<const L: usize>(&mut self, k: usize) -> Option<&mut [O; L]> {
+        (**self).group(k)
+    }
+}

@@ -18,6 +18,10 @@
 //! for exactly the states whose mass matrix is not positive definite: a group in which one lane
 //! fails is evaluated again one state at a time.
 //!
+//! **Threads.** With the `rayon` feature, [`InParallel`]`(&robot)` has the same `_batch`
+//! methods, which cut the states into chunks of whole groups on rayon's thread pool: the same
+//! bits as on one thread.
+//!
 //! # Panics
 //!
 //! If an input does not hold as many states as the output.
@@ -26,9 +30,13 @@
 //! [`F32x8`]: crate::F32x8
 
 mod layout;
+#[cfg(feature = "rayon")]
+mod parallel;
 mod traits;
 
 pub use layout::{States, StatesMut};
+#[cfg(feature = "rayon")]
+pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
 };
@@ -42,6 +50,9 @@ pub trait BatchScalar<const L: usize>: RealScalar {
     type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
 }
 
+// Not `F64x8` where the build has AVX-512: on the Xeon measured, τ and M in batches ran no
+// faster in eight lanes than in four (bench/README.md), and the eight-lane gathers and
+// transposes cost more for 6 or 7 joints.
 impl BatchScalar<4> for f64 {
     type Lanes = crate::F64x4;
 }
@@ -61,18 +72,20 @@ where
 {
     let last = states.count() - 1;
     // Whole states first (one copy each from a slice of states), then transposed by blocks of
-    // as many values as lanes, the rest value by value.
+    // as many values as lanes, the last block padded with zeros.
     let rows: [[T; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
     let mut values = [<T::Lanes as crate::Real>::ZERO; M];
-    let whole = M / L * L;
-    for j in (0..whole).step_by(L) {
+    for j in (0..M).step_by(L) {
         let block = core::array::from_fn(|l| {
-            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| rows[l][j + i]))
+            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| {
+                rows[l]
+                    .get(j + i)
+                    .copied()
+                    .unwrap_or(<T as crate::Real>::ZERO)
+            }))
         });
-        values[j..j + L].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block));
-    }
-    for (j, value) in values.iter_mut().enumerate().skip(whole) {
-        *value = <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|l| rows[l][j]));
+        let end = (j + L).min(M);
+        values[j..end].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block)[..end - j]);
     }
     values
 }

@@ -8,6 +8,7 @@
 //! | type | lanes | x86-64 with AVX2 | x86-64 without | elsewhere |
 //! |---|---|---|---|---|
 //! | [`F64x4`] | 4 × `f64` | one AVX register | two SSE2 registers | four `f64` |
+//! | [`F64x8`] | 8 × `f64` | one AVX-512 register (AVX-512F and the `avx512` feature), else two AVX registers | four SSE2 registers | eight `f64` |
 //! | [`F64x2`] | 2 × `f64` | one SSE2 register | one SSE2 register | two `f64` |
 //! | [`F32x8`] | 8 × `f32` | one AVX register | two SSE registers | eight `f32` |
 //! | [`F32x4`] | 4 × `f32` | one SSE register | one SSE register | four `f32` |
@@ -34,6 +35,9 @@
 //! (a number, arrays of them, a [`Pose`](crate::Pose), the derivatives' structs) apart into one
 //! result per state.
 
+#[cfg(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512"))]
+#[allow(unsafe_code)]
+mod avx512;
 #[allow(unsafe_code)]
 pub(crate) mod oct;
 #[cfg(any(test, not(target_arch = "x86_64")))]
@@ -279,6 +283,40 @@ mod f64x4 {
     use super::x86::f64x4 as backend;
 }
 
+mod f64x8 {
+    use super::{Lanes, Real};
+    lane_type!(
+        /// Eight `f64` lanes: one AVX-512 register where the build has AVX-512F and the
+        /// `avx512` feature is on, else two AVX registers (AVX2) or four SSE2 registers on
+        /// x86-64, eight `f64` elsewhere.
+        /// See [the module](crate::lanes).
+        F64x8,
+        f64,
+        8,
+        backend,
+        transpose: transpose
+    );
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512"))]
+    use super::avx512::f64x8 as backend;
+    /// Eight registers transposed by AVX-512's shuffles.
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512"))]
+    use super::avx512::f64x8::transpose;
+    /// Eight registers transposed through arrays.
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512")))]
+    #[inline(always)]
+    fn transpose(values: [backend::V; 8]) -> [backend::V; 8] {
+        let rows = values.map(backend::to_array);
+        core::array::from_fn(|j| backend::from_array(core::array::from_fn(|l| rows[l][j])))
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    use super::portable::f64x8 as backend;
+    #[cfg(all(
+        target_arch = "x86_64",
+        not(all(target_feature = "avx512f", feature = "avx512"))
+    ))]
+    use super::x86::f64x8 as backend;
+}
+
 mod f64x2 {
     use super::{Lanes, Real};
     lane_type!(
@@ -304,8 +342,19 @@ mod f32x8 {
         F32x8,
         f32,
         8,
-        backend
+        backend,
+        transpose: transpose
     );
+    /// Eight registers transposed by AVX's shuffles.
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx2"))]
+    use super::x86::transpose_f32x8 as transpose;
+    /// Eight registers transposed through arrays.
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "avx2")))]
+    #[inline(always)]
+    fn transpose(values: [backend::V; 8]) -> [backend::V; 8] {
+        let rows = values.map(backend::to_array);
+        core::array::from_fn(|j| backend::from_array(core::array::from_fn(|l| rows[l][j])))
+    }
     #[cfg(not(target_arch = "x86_64"))]
     use super::portable::f32x8 as backend;
     #[cfg(target_arch = "x86_64")]
@@ -332,6 +381,7 @@ pub use f32x4::F32x4;
 pub use f32x8::F32x8;
 pub use f64x2::F64x2;
 pub use f64x4::F64x4;
+pub use f64x8::F64x8;
 
 #[cfg(test)]
 mod tests;

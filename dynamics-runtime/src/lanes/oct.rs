@@ -1,5 +1,5 @@
 //! Eight `f64` lanes for the tangents of generated derivatives ([`crate::__private::Tangent`]):
-//! one AVX-512 register where the build enables AVX-512F (32 of them, so that a Jacobian's
+//! one AVX-512 register where the build enables AVX-512F and the `avx512` feature is on (32 of them, so that a Jacobian's
 //! rows stay in registers), else two [`F64x4`]. The same IEEE operations as the scalar's on
 //! each lane, fused exactly where `Real::mul_add` is (std and FMA).
 //!
@@ -7,8 +7,10 @@
 //! `cfg` on their module makes the build enable; loads and stores go through arrays of
 //! exactly the register's size.
 #![allow(unused_unsafe)]
+// Behind the `avx512` feature, which states its own minimum Rust version (1.89).
+#![allow(clippy::incompatible_msrv)]
 
-#[cfg(all(target_arch = "x86_64", target_feature = "avx512f"))]
+#[cfg(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512"))]
 mod backend {
     #[allow(clippy::wildcard_imports)]
     use core::arch::x86_64::*;
@@ -53,7 +55,7 @@ mod backend {
     }
 }
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "avx512f")))]
+#[cfg(not(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512")))]
 mod backend {
     use crate::lanes::F64x4;
     use crate::real::Real;

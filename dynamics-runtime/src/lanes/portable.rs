@@ -79,6 +79,8 @@ macro_rules! portable_backend {
 #[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f64x4, f64, 4, <f64 as Real>::sin_cos_4);
 #[cfg(any(test, not(target_arch = "x86_64")))]
+portable_backend!(f64x8, f64, 8, <f64 as Real>::sin_cos_8);
+#[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f32x8, f32, 8, <f32 as Real>::sin_cos_8);
 #[cfg(any(test, not(target_arch = "x86_64")))]
 portable_backend!(f32x4, f32, 4, <f32 as Real>::sin_cos_4);

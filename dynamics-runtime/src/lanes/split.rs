@@ -1,7 +1,7 @@
 //! From states to lanes and back: [`gather`] puts `L` states side by side, [`SplitLanes`]
 //! takes a result of lanes apart into `L` results.
 
-use super::{F32x4, F32x8, F64x2, F64x4, Lanes};
+use super::{F32x4, F32x8, F64x2, F64x4, F64x8, Lanes};
 use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, Pose};
 
 /// `L` states of `N` joint values (`states[l]` is lane `l`'s) as `N` lane values, the
@@ -93,19 +93,14 @@ macro_rules! split_lane_type {
             #[inline(always)]
             fn write_array<const N: usize>(items: &[Self; N], mut outs: [&mut [$e; N]; $lanes]) {
                 // Blocks of as many elements as lanes, transposed whole (`Lanes::transpose`),
-                // each lane's row then one store, and the rest element by element.
-                let whole = N / $lanes * $lanes;
-                for j in (0..whole).step_by($lanes) {
-                    let block = core::array::from_fn(|i| items[j + i]);
+                // each lane's row then one store; the last, partial block padded with its last
+                // element, and only its elements stored.
+                for j in (0..N).step_by($lanes) {
+                    let block = core::array::from_fn(|i| items[(j + i).min(N - 1)]);
                     let rows = <Self as Lanes<$lanes>>::transpose(block);
+                    let end = (j + $lanes).min(N);
                     for (out, row) in outs.iter_mut().zip(rows) {
-                        out[j..j + $lanes].copy_from_slice(&row.to_array());
-                    }
-                }
-                for j in whole..N {
-                    let values = items[j].to_array();
-                    for (l, out) in outs.iter_mut().enumerate() {
-                        out[j] = values[l];
+                        out[j..end].copy_from_slice(&row.to_array()[..end - j]);
                     }
                 }
             }
@@ -113,7 +108,7 @@ macro_rules! split_lane_type {
     )*};
 }
 
-split_lane_type!(F64x4: f64 x 4, F64x2: f64 x 2, F32x8: f32 x 8, F32x4: f32 x 4);
+split_lane_type!(F64x8: f64 x 8, F64x4: f64 x 4, F64x2: f64 x 2, F32x8: f32 x 8, F32x4: f32 x 4);
 
 impl<X: SplitLanes<L>, const L: usize, const N: usize> SplitLanes<L> for [X; N] {
     type Single = [X::Single; N];

@@ -4,7 +4,7 @@
 extern crate std;
 use std::{format, vec::Vec};
 
-use super::{gather, F32x4, F32x8, F64x2, F64x4, Lanes, SplitLanes};
+use super::{gather, F32x4, F32x8, F64x2, F64x4, F64x8, Lanes, SplitLanes};
 use crate::Real;
 
 /// Arguments that take every path: ordinary, tiny, huge, signed zeros, infinities, NaN.
@@ -61,6 +61,7 @@ fn check<V: Lanes<L>, const L: usize>(xs: &[V::Scalar], bits: impl Fn(V::Scalar)
 #[allow(clippy::cast_possible_truncation)]
 fn every_operation_is_the_scalars_lane_by_lane() {
     let f32s: Vec<f32> = SPECIAL.iter().map(|&x| x as f32).collect();
+    check::<F64x8, 8>(&SPECIAL, f64::to_bits);
     check::<F64x4, 4>(&SPECIAL, f64::to_bits);
     check::<F64x2, 2>(&SPECIAL, f64::to_bits);
     check::<F32x8, 8>(&f32s, |x| u64::from(x.to_bits()));
@@ -71,6 +72,10 @@ fn every_operation_is_the_scalars_lane_by_lane() {
 /// x86-64 the real types use registers).
 mod portable {
     use super::super::{portable, Lanes, Real};
+    mod p64x8 {
+        use super::{portable::f64x8 as backend, Lanes, Real};
+        lane_type!(P64x8, f64, 8, backend);
+    }
     mod p64x4 {
         use super::{portable::f64x4 as backend, Lanes, Real};
         lane_type!(P64x4, f64, 4, backend);
@@ -87,14 +92,15 @@ mod portable {
         use super::{portable::f32x4 as backend, Lanes, Real};
         lane_type!(P32x4, f32, 4, backend);
     }
-    pub(super) use {p32x4::P32x4, p32x8::P32x8, p64x2::P64x2, p64x4::P64x4};
+    pub(super) use {p32x4::P32x4, p32x8::P32x8, p64x2::P64x2, p64x4::P64x4, p64x8::P64x8};
 }
 
 #[test]
 #[allow(clippy::cast_possible_truncation)]
 fn the_portable_backends_too() {
-    use portable::{P32x4, P32x8, P64x2, P64x4};
+    use portable::{P32x4, P32x8, P64x2, P64x4, P64x8};
     let f32s: Vec<f32> = SPECIAL.iter().map(|&x| x as f32).collect();
+    check::<P64x8, 8>(&SPECIAL, f64::to_bits);
     check::<P64x4, 4>(&SPECIAL, f64::to_bits);
     check::<P64x2, 2>(&SPECIAL, f64::to_bits);
     check::<P32x8, 8>(&f32s, |x| u64::from(x.to_bits()));
@@ -107,6 +113,8 @@ fn one_failing_lane_fails_the_pivot_test() {
     assert!(!F64x4::from_array([1.0, 2.0, 0.0, 3.0]).all_positive());
     assert!(!F32x8::from_array([1.0, 2.0, 1.0, 3.0, 1.0, -1.0, 1.0, 1.0]).all_positive());
     assert!(!F64x2::from_array([f64::NAN, 1.0]).all_positive());
+    assert!(!F64x8::from_array([1.0, 2.0, 1.0, 3.0, 1.0, 1.0, 1.0, -0.0]).all_positive());
+    assert!(F64x8::from_array([1.0; 8]).all_positive());
 }
 
 #[test]
@@ -120,8 +128,8 @@ fn gather_and_split_are_inverse() {
     assert_eq!(format!("{:?}", v[0]), "F64x2([1.0, 4.0])");
 }
 
-/// `transpose` exchanges lanes and values, whatever the backend (AVX2's shuffles for `F64x4`
-/// in a build for this CPU), and twice is the identity.
+/// `transpose` exchanges lanes and values, whatever the backend (AVX2's shuffles for `F64x4`,
+/// AVX-512's for `F64x8` in a build for this CPU), and twice is the identity.
 #[test]
 fn transpose_exchanges_lanes_and_values() {
     fn check<V: Lanes<L>, const L: usize>()
@@ -142,6 +150,7 @@ fn transpose_exchanges_lanes_and_values() {
         let back = V::transpose(t).map(V::to_array);
         assert_eq!(back, values.map(V::to_array));
     }
+    check::<F64x8, 8>();
     check::<F64x4, 4>();
     check::<F64x2, 2>();
     check::<F32x8, 8>();

@@ -164,6 +164,47 @@ pub(in crate::lanes) fn transpose_f64x4(rows: [__m256d; 4]) -> [__m256d; 4] {
     }
 }
 
+/// Eight registers of eight `f32` transposed: lane `l` of result `j` is lane `j` of `rows[l]`
+/// (unpacks of pairs of rows, shuffles of pairs of those within the 128-bit halves, then the
+/// halves exchanged).
+#[cfg(target_feature = "avx2")]
+#[inline(always)]
+pub(in crate::lanes) fn transpose_f32x8(rows: [__m256; 8]) -> [__m256; 8] {
+    use core::arch::x86_64::{
+        _mm256_permute2f128_ps, _mm256_shuffle_ps, _mm256_unpackhi_ps, _mm256_unpacklo_ps,
+    };
+    unsafe {
+        // t[2p]: lanes 0, 1 (and 4, 5) of rows 2p and 2p + 1 interleaved; t[2p + 1]: 2, 3 (6, 7).
+        let t: [__m256; 8] = core::array::from_fn(|i| {
+            let (a, b) = (rows[i & !1], rows[i | 1]);
+            if i & 1 == 0 {
+                _mm256_unpacklo_ps(a, b)
+            } else {
+                _mm256_unpackhi_ps(a, b)
+            }
+        });
+        // Of each four rows, columns (0, 4), (1, 5), (2, 6), (3, 7), in u[4h..4h + 4].
+        let u: [__m256; 8] = core::array::from_fn(|i| {
+            let base = (i & 4) | ((i >> 1) & 1);
+            let (a, b) = (t[base], t[base + 2]);
+            if i & 1 == 0 {
+                _mm256_shuffle_ps::<0x44>(a, b)
+            } else {
+                _mm256_shuffle_ps::<0xee>(a, b)
+            }
+        });
+        // Column j: the halves of rows 0 to 3 and 4 to 7.
+        core::array::from_fn(|j| {
+            let (a, b) = (u[j & 3], u[(j & 3) + 4]);
+            if j & 4 == 0 {
+                _mm256_permute2f128_ps::<0x20>(a, b)
+            } else {
+                _mm256_permute2f128_ps::<0x31>(a, b)
+            }
+        })
+    }
+}
+
 #[cfg(target_feature = "avx2")]
 x86_backend!(
     f32x8, f32, 8, __m256,
@@ -182,7 +223,11 @@ x86_backend!(
 /// `#[inline]`, not `always`: optimized builds inline them all the same, and unoptimized ones
 /// keep each operation's temporaries in its own frame rather than in the generated function's
 /// (whose frame would otherwise outgrow a test thread's stack on the larger robots).
-#[cfg(not(target_feature = "avx2"))]
+#[cfg(not(all(
+    target_feature = "avx2",
+    target_feature = "avx512f",
+    feature = "avx512"
+)))]
 macro_rules! pair_backend {
     ($m:ident, $e:ident, $lanes:literal, $half:ident, $half_lanes:literal) => {
         pub(in crate::lanes) mod $m {
@@ -250,6 +295,9 @@ macro_rules! pair_backend {
 
 #[cfg(not(target_feature = "avx2"))]
 pair_backend!(f64x4, f64, 4, f64x2, 2);
+// Two AVX registers (or four SSE2 registers) without AVX-512 and the `avx512` feature.
+#[cfg(not(all(target_feature = "avx512f", feature = "avx512")))]
+pair_backend!(f64x8, f64, 8, f64x4, 4);
 #[cfg(not(target_feature = "avx2"))]
 pair_backend!(f32x8, f32, 8, f32x4, 4);
 
@@ -268,7 +316,7 @@ use {
 /// others, so every lane is the scalar's.
 #[cold]
 #[inline(never)]
-fn one_by_one<E: Copy, const L: usize>(
+pub(in crate::lanes) fn one_by_one<E: Copy, const L: usize>(
     x: [E; L],
     sin_cos: impl Fn(E) -> (E, E),
 ) -> ([E; L], [E; L]) {

@@ -1,0 +1,197 @@
+//! `dynamics simulate ROBOT --batch FILE [--tau ..] [--duration T] [--dt H] [--csv OUT]`: the
+//! motion from many initial states at once, each integrated as `simulate` integrates one (RK4,
+//! fixed step, constant torques), four states at a time in vector lanes.
+//!
+//! The initial states are the lines of a trajectory file, in the format `size --csv` reads
+//! (`t,q1..qn`, optionally `qd1..qdn`, `qdd1..qddn`, `t` increasing): every line's `(q, q̇)` is
+//! one initial state, `q̇ = 0` in a file of positions only. The output has a line per state: its time in the file, the
+//! state at the end of the duration, and the total energy at the start and at the end.
+//!
+//! `q̈` is the forward dynamics' closed form, the same graph the generated `forward_dynamics`
+//! is emitted from (LDLᵀ of M unrolled), evaluated by a tape in the runtime's `F64x4`
+//! (`joint_tape`); a state whose mass matrix stops being positive definite, or whose motion
+//! diverges, ends with non-finite values, reported as such.
+
+use super::eval::{joints, parameters};
+use super::{load, Failure};
+use crate::args::Simulate;
+use crate::joint_tape::{gather, JointTape, Work};
+use crate::lanes::{Four, LANES};
+use crate::trajectory::{self, Given, Sample};
+use dynamics_codegen::symbolic::TapeScalar;
+use std::io::{BufReader, Write};
+
+/// The most state-steps a batch takes.
+const MAX_STATE_STEPS: f64 = 1e9;
+
+/// One robot's forward dynamics and energies, as tapes.
+struct Dynamics {
+    forward: JointTape,
+    energy: JointTape,
+    n: usize,
+}
+
+pub fn run(args: &Simulate, path: &str) -> Result<String, Failure> {
+    let robot = load(&args.robot)?;
+    let n = robot.joints.len();
+    let tau = joints("simulate", "--tau", args.tau.as_ref(), n)?;
+    let eq = dynamics_codegen::derive(&robot);
+    let fields = parameters("simulate", &eq.fields, &args.set)?;
+    let tape = |outputs: &[_]| {
+        JointTape::new(&eq.graph, outputs, &eq.angle_offsets, &fields, Some(&tau))
+            .map_err(Failure::File)
+    };
+    let dynamics = Dynamics {
+        forward: tape(&eq.forward.qdd)?,
+        energy: tape(&[eq.kinetic_energy, eq.potential_energy])?,
+        n,
+    };
+    let states = read(path, n)?;
+    let steps = (args.duration / args.dt).round().max(1.0);
+    if steps * states.len() as f64 > MAX_STATE_STEPS {
+        return Err(super::eval::usage(
+            "simulate",
+            &format!(
+                "--batch: {} states × {steps} steps; at most {MAX_STATE_STEPS} in all",
+                states.len()
+            ),
+        ));
+    }
+    let (steps, h) = (steps as usize, args.duration / steps);
+    let mut lines = vec![header(n)];
+    let mut diverged = 0;
+    for group in states.chunks(LANES) {
+        let ends = dynamics.simulate(group, steps, h);
+        for (s, end) in group.iter().zip(ends) {
+            diverged += usize::from(!end.iter().all(|x| x.is_finite()));
+            let values: Vec<String> = end.iter().map(f64::to_string).collect();
+            lines.push(format!("{},{}", s.t, values.join(",")));
+        }
+    }
+    let text = lines.join("\n") + "\n";
+    let Some(out) = &args.csv else {
+        return Ok(text);
+    };
+    let failed = |e: std::io::Error| Failure::File(format!("{out}: {e}"));
+    std::fs::File::create(out)
+        .and_then(|mut f| f.write_all(text.as_bytes()))
+        .map_err(failed)?;
+    Ok(format!(
+        "{}: {} initial states from {path}, each {steps} RK4 steps of {h} s to t = {} s, \
+         {LANES} at a time; {diverged} diverged (non-finite at the end)\n",
+        robot.name,
+        states.len(),
+        args.duration
+    ))
+}
+
+/// The initial states of the file at `path`: each line's `t`, `q` and `q̇` (zero where the file
+/// gives positions only).
+fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
+    let file = std::fs::File::open(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
+    let columns = trajectory::Columns {
+        joints: n,
+        torques: false,
+    };
+    let mut states = Vec::new();
+    trajectory::read_rows(
+        BufReader::new(file),
+        columns,
+        |given, row| {
+            let qd = match given {
+                Given::Positions => vec![0.0; n],
+                Given::Velocities | Given::Accelerations => row[1 + n..1 + 2 * n].to_vec(),
+            };
+            states.push(Sample {
+                t: row[0],
+                q: row[1..=n].to_vec(),
+                qd,
+                qdd: Vec::new(),
+                tau: Vec::new(),
+            });
+        },
+        |_| {},
+    )
+    .map_err(|e| Failure::File(format!("{path}: {e}")))?;
+    Ok(states)
+}
+
+/// The output's header: the state's time in the file, the final state, the energies.
+fn header(n: usize) -> String {
+    let joints = |g: &'static str| (1..=n).map(move |i| format!("{g}{i}"));
+    let names: Vec<String> = std::iter::once("t0".to_string())
+        .chain(joints("q"))
+        .chain(joints("qd"))
+        .chain(["energy_start".to_string(), "energy_end".to_string()])
+        .collect();
+    names.join(",")
+}
+
+impl Dynamics {
+    /// The final `(q, q̇)` and the total energy at the start and at the end, of each of up to
+    /// [`LANES`] initial states.
+    fn simulate(&self, group: &[Sample], steps: usize, h: f64) -> Vec<Vec<f64>> {
+        let lanes = |x: fn(&Sample) -> &[f64]| -> Vec<Four> {
+            let values: Vec<&[f64]> = group.iter().map(x).collect();
+            (0..self.n).map(|j| gather(&values, j)).collect()
+        };
+        let (mut q, mut qd) = (lanes(|s| &s.q), lanes(|s| &s.qd));
+        let mut work = Work::default();
+        let start = self.energy(&q, &qd, &mut work);
+        for _ in 0..steps {
+            (q, qd) = self.rk4(&q, &qd, h, &mut work);
+        }
+        let end = self.energy(&q, &qd, &mut work);
+        (0..group.len())
+            .map(|l| {
+                let lane = |x: &Four| x.lanes()[l];
+                q.iter()
+                    .chain(&qd)
+                    .map(lane)
+                    .chain([lane(&start), lane(&end)])
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// `q̈` at `(q, q̇)`.
+    fn acceleration(&self, q: &[Four], qd: &[Four], work: &mut Work) -> Vec<Four> {
+        let mut qdd = vec![Four::splat(0.0); self.n];
+        self.forward.eval(q, qd, &[], work, &mut qdd);
+        qdd
+    }
+
+    /// Kinetic plus potential energy.
+    fn energy(&self, q: &[Four], qd: &[Four], work: &mut Work) -> Four {
+        let mut e = [Four::splat(0.0); 2];
+        self.energy.eval(q, qd, &[], work, &mut e);
+        e[0] + e[1]
+    }
+
+    /// One step of the classical Runge-Kutta method, as `simulate`'s.
+    fn rk4(&self, q: &[Four], qd: &[Four], h: f64, work: &mut Work) -> (Vec<Four>, Vec<Four>) {
+        let shifted = |x: &[Four], dx: &[Four], k: f64| -> Vec<Four> {
+            x.iter()
+                .zip(dx)
+                .map(|(&a, &b)| a + Four::splat(k) * b)
+                .collect()
+        };
+        let k1 = (qd.to_vec(), self.acceleration(q, qd, work));
+        let (q2, qd2) = (shifted(q, &k1.0, h / 2.0), shifted(qd, &k1.1, h / 2.0));
+        let k2 = (qd2.clone(), self.acceleration(&q2, &qd2, work));
+        let (q3, qd3) = (shifted(q, &k2.0, h / 2.0), shifted(qd, &k2.1, h / 2.0));
+        let k3 = (qd3.clone(), self.acceleration(&q3, &qd3, work));
+        let (q4, qd4) = (shifted(q, &k3.0, h), shifted(qd, &k3.1, h));
+        let k4 = (qd4.clone(), self.acceleration(&q4, &qd4, work));
+        let (two, sixth) = (Four::splat(2.0), Four::splat(h / 6.0));
+        let combine = |x: &[Four], a: &[Four], b: &[Four], c: &[Four], d: &[Four]| -> Vec<Four> {
+            (0..x.len())
+                .map(|i| x[i] + sixth * (a[i] + two * b[i] + two * c[i] + d[i]))
+                .collect()
+        };
+        (
+            combine(q, &k1.0, &k2.0, &k3.0, &k4.0),
+            combine(qd, &k1.1, &k2.1, &k3.1, &k4.1),
+        )
+    }
+}
