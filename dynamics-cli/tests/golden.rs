@@ -77,7 +77,9 @@ fn cases() -> Vec<Case> {
     });
     // The C header: compiled and checked against Pinocchio by `tests/c_header.rs`.
     cases.push(Case {
-        args: ["emit", "--lang", "c", "robots/puma560.toml"].map(String::from).to_vec(),
+        args: ["emit", "--lang", "c", "robots/puma560.toml"]
+            .map(String::from)
+            .to_vec(),
         file: "dynamics-cli/tests/golden/puma560.h".into(),
     });
     cases
