@@ -5,7 +5,8 @@
 //! checked three ways:
 //!
 //! * every function, in `double` and in `float`, against the traced graph evaluated in `f64`
-//!   (the same closed forms: this checks the C printer, operation by operation);
+//!   (the same closed forms: this checks the C printer, operation by operation): the
+//!   `double` results bit for bit, compiled without contraction into multiply-adds;
 //! * τ, M, g, C q̇ + g, C q̇, the energies, the hand's pose and Jacobian, and the forward
 //!   dynamics against Pinocchio's values (`tests/data/reference/data/puma560.json`,
 //!   `tests/data/panda/data.json`), to 1e-10 of each result's largest element;
