@@ -112,9 +112,9 @@ fn check(file: &str, data: &str) {
         eprintln!("no C compiler (gcc, clang, g++) found: the C header of {file} is not checked");
         return;
     }
-    for (cc, out) in &runs {
-        check_against_graph(&robot, &states, out, cc);
-        check_against_pinocchio(&robot, &samples, out, cc);
+    for run in &runs {
+        check_against_graph(&robot, &states, run);
+        check_against_pinocchio(&robot, &samples, &run.printed, &run.label);
     }
 }
 
@@ -156,8 +156,9 @@ fn friction_in_the_header_is_the_description_files() {
         return;
     }
     let sign = |x: f64| if x == 0.0 { 0.0 } else { x.signum() };
-    for (cc, out) in &runs {
-        check_against_graph(&robot, &states, out, cc);
+    for run in &runs {
+        let (out, cc) = (&run.printed, &run.label);
+        check_against_graph(&robot, &states, run);
         for (s, state) in states.iter().enumerate() {
             let [v1, v2] = [state.qd[0], state.qd[1]];
             let want = [

@@ -210,49 +210,93 @@ pub fn parse(output: &str) -> Printed {
         .collect()
 }
 
-/// The compilers found, each with its language flags.
-pub fn compilers() -> Vec<(&'static str, &'static [&'static str])> {
-    let candidates: [(&str, &[&str]); 3] = [
-        ("gcc", &["-std=c99", "-x", "c", "-Wdouble-promotion"]),
-        ("clang", &["-std=c99", "-x", "c", "-Wdouble-promotion"]),
-        ("g++", &["-std=c++17", "-x", "c++"]),
+/// The compilers found, each with its language flags and whether to build it a second time
+/// with the header's own sines and cosines.
+pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
+    let candidates: [(&str, &[&str], bool); 3] = [
+        ("gcc", &["-std=c99", "-x", "c", "-Wdouble-promotion"], true),
+        (
+            "clang",
+            &["-std=c99", "-x", "c", "-Wdouble-promotion"],
+            true,
+        ),
+        ("g++", &["-std=c++17", "-x", "c++"], false),
     ];
     candidates
         .into_iter()
-        .filter(|(cc, _)| Command::new(cc).arg("--version").output().is_ok())
+        .filter(|(cc, _, _)| Command::new(cc).arg("--version").output().is_ok())
         .collect()
 }
 
-/// Compiles the header and driver of `robot` with every compiler and runs each program: what
-/// each printed, by compiler.
-pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<(&'static str, Printed)> {
+/// One build of a driver, run: by which compiler, with which sines and cosines, and what it
+/// printed.
+pub struct Run {
+    /// The compiler, and `-DDYNAMICS_OWN_SINCOS` where it has that.
+    pub label: String,
+    /// Whether the header's own sines and cosines were compiled, not `<math.h>`'s.
+    pub own_trig: bool,
+    pub printed: Printed,
+}
+
+/// Compiles `source` with `cc`, its `flags` and `extra`, to `program`; panics with the
+/// compiler's messages if it fails.
+fn compile(cc: &str, flags: &[&str], extra: &[&str], source: &Path, program: &Path) {
+    let out = Command::new(cc)
+        .args(flags)
+        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O1"])
+        // No multiply-adds fused by the compiler (clang fuses within an expression by default,
+        // where the target has them): the `double` results with `<math.h>` are then the
+        // graph's evaluation bit for bit.
+        .arg("-ffp-contract=off")
+        .arg("-o")
+        .arg(program)
+        .arg(source)
+        .args(extra)
+        .output()
+        .expect("run the compiler");
+    let errors = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.success(),
+        "{cc} {extra:?} on {source:?}:\n{errors}"
+    );
+}
+
+/// Compiles the header and driver of `robot` with every compiler (and with the header's own
+/// sines and cosines, linked without the math library where nothing else needs it) and runs
+/// each program.
+pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("c_header_{}", robot.name));
     std::fs::create_dir_all(&dir).expect("a scratch directory");
     std::fs::write(dir.join(format!("{}.h", robot.name)), &robot.header).expect("write");
     let source = dir.join("driver.c");
     std::fs::write(&source, driver(robot, states)).expect("write");
+    // Smoothed friction's tanh is the one function the header's own trigonometry leaves to
+    // the math library.
+    let own: &[&str] = if robot.header.contains("tanh") {
+        &["-DDYNAMICS_OWN_SINCOS", "-lm"]
+    } else {
+        &["-DDYNAMICS_OWN_SINCOS"]
+    };
     let mut runs = Vec::new();
-    for (cc, flags) in compilers() {
-        let program = dir.join(format!("driver_{cc}"));
-        let out = Command::new(cc)
-            .args(flags)
-            .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O1"])
-            // No multiply-adds fused by the compiler (clang fuses within an expression by
-            // default, where the target has them): the `double` results are then the graph's
-            // evaluation bit for bit.
-            .arg("-ffp-contract=off")
-            .arg("-o")
-            .arg(&program)
-            .arg(&source)
-            .arg("-lm")
-            .output()
-            .expect("run the compiler");
-        let errors = String::from_utf8_lossy(&out.stderr);
-        assert!(out.status.success(), "{cc} on {}:\n{errors}", robot.name);
-        let run = Command::new(&program).output().expect("run the driver");
-        assert!(run.status.success(), "{cc} driver of {}", robot.name);
-        let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
-        runs.push((cc, printed));
+    for (cc, flags, with_own) in compilers() {
+        let builds = [(false, &["-lm"][..])].into_iter();
+        for (own_trig, extra) in builds.chain(with_own.then_some((true, own))) {
+            let label = if own_trig {
+                format!("{cc} -DDYNAMICS_OWN_SINCOS")
+            } else {
+                cc.to_owned()
+            };
+            let program = dir.join(format!("driver_{cc}_{own_trig}"));
+            compile(cc, flags, extra, &source, &program);
+            let run = Command::new(&program).output().expect("run the driver");
+            assert!(run.status.success(), "{label} driver of {}", robot.name);
+            let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
+            runs.push(Run {
+                label,
+                own_trig,
+                printed,
+            });
+        }
     }
     runs
 }
@@ -326,12 +370,16 @@ pub fn printed<'p>(printed: &'p Printed, name: &str, k: usize, s: usize) -> &'p 
         .unwrap_or_else(|| panic!("{name} printed nothing at sample {s}"))
 }
 
-/// Every function against the graph: `double` exactly, `float` to `f32_tolerance`.
-pub fn check_against_graph(robot: &Robot, states: &[State], out: &Printed, cc: &str) {
+/// Every function against the graph: `double` exactly (to 1e-12 with the header's own sines
+/// and cosines), `float` to `f32_tolerance`.
+pub fn check_against_graph(robot: &Robot, states: &[State], run: &Run) {
+    let (out, cc) = (&run.printed, &run.label);
     for (s, state) in states.iter().enumerate() {
         let values = evaluate(&robot.eq, &robot.params, state);
         for f in &robot.functions {
             let tolerance = match f.precision {
+                // The header's own sines and cosines are within an ulp of the libm's.
+                Precision::Double if run.own_trig => 1e-12,
                 // The same operations in the same order on the same libm: the same bits.
                 Precision::Double => 0.0,
                 Precision::Single => f32_tolerance(f.method),
@@ -340,14 +388,13 @@ pub fn check_against_graph(robot: &Robot, states: &[State], out: &Printed, cc: &
             for (k, part) in parts(&shape).iter().enumerate() {
                 let want: Vec<f64> = part.iter().map(|id| values[id.index()]).collect();
                 let (status, got) = printed(out, &f.name, k, s);
-                let e = match f.precision {
-                    Precision::Double => scaled_error(got, &want),
-                    // A result near zero (q̈ where τ balances gravity) is float's rounding of
-                    // the inputs: measured against 1 at least.
-                    Precision::Single => {
-                        let scale = want.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-                        scaled_error(got, &want) * want_scale(&want) / scale
-                    }
+                let e = if tolerance == 0.0 {
+                    scaled_error(got, &want)
+                } else {
+                    // A result near zero (q̈ where τ balances gravity) is the rounding of the
+                    // inputs and of the sines: measured against 1 at least.
+                    let scale = want.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+                    scaled_error(got, &want) * want_scale(&want) / scale
                 };
                 assert!(
                     e <= tolerance,

@@ -212,40 +212,41 @@ impl<'a> Writer<'a> {
         value
     }
 
-    /// `const double s2 = sin(q[1]);` for each joint whose sine or cosine is read, with its
-    /// angle offset where it has one.
+    /// `double s2, c2; dynamics_sincos(q[1], &s2, &c2);` for each joint whose sine and
+    /// cosine are read (`const double s2 = dynamics_sin(q[1]);` for one of them), with its
+    /// angle offset where it has one: one range reduction for both.
     fn sines_and_cosines(&self, lines: &mut Vec<String>) {
         let ty = self.precision.c_type();
-        let mut leaves: Vec<Var> = self
-            .eq
-            .graph
-            .nodes()
-            .filter_map(|(id, node)| match node {
-                Node::Var(v @ (Var::SinQ(_) | Var::CosQ(_))) if self.needed[id.index()] => Some(v),
-                _ => None,
-            })
-            .collect();
-        // By joint, the sine before the cosine.
-        leaves.sort_by_key(|v| match *v {
-            Var::SinQ(i) => (i, 0),
-            Var::CosQ(i) => (i, 1),
-            _ => (u16::MAX, 2),
-        });
-        for v in leaves {
-            let (Var::SinQ(i) | Var::CosQ(i)) = v else {
-                continue;
-            };
-            let function = self.precision.math(match v {
-                Var::SinQ(_) => "sin",
-                _ => "cos",
-            });
-            let i = usize::from(i);
+        let read = |v: Var| {
+            self.eq
+                .graph
+                .nodes()
+                .any(|(id, node)| node == Node::Var(v) && self.needed[id.index()])
+        };
+        for i in 0..self.eq.dof {
+            let joint = u16::try_from(i).expect("at most 16 joints");
+            let (sine, cosine) = (Var::SinQ(joint), Var::CosQ(joint));
             let angle = match self.eq.angle_offsets[i] {
                 Some(offset) => format!("q[{i}] + {}", self.expr(offset, Place::AddRight)),
                 None => format!("q[{i}]"),
             };
-            let name = self.var_name(v);
-            lines.push(format!("const {ty} {name} = {function}({angle});"));
+            let (s, c) = (self.var_name(sine), self.var_name(cosine));
+            match (read(sine), read(cosine)) {
+                (true, true) => {
+                    lines.push(format!("{ty} {s}, {c};"));
+                    let sincos = self.precision.trig("sincos");
+                    lines.push(format!("{sincos}({angle}, &{s}, &{c});"));
+                }
+                (true, false) => {
+                    let sin = self.precision.trig("sin");
+                    lines.push(format!("const {ty} {s} = {sin}({angle});"));
+                }
+                (false, true) => {
+                    let cos = self.precision.trig("cos");
+                    lines.push(format!("const {ty} {c} = {cos}({angle});"));
+                }
+                (false, false) => {}
+            }
         }
     }
 

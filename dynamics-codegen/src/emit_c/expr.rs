@@ -36,13 +36,20 @@ impl Precision {
         }
     }
 
-    /// The `<math.h>` function `name` of this type: `sin`, or `sinf` (so that the `float`
+    /// The `<math.h>` function `name` of this type: `tanh`, or `tanhf` (so that the `float`
     /// code never widens to `double`).
     pub(super) fn math(self, name: &str) -> String {
         match self {
             Precision::Double => name.to_owned(),
             Precision::Single => format!("{name}f"),
         }
+    }
+
+    /// The header's function `name` (`sin`, `cos`, `sincos`) of this type: `dynamics_sin`,
+    /// `dynamics_sin_f32` (`<math.h>`'s, or the header's own where `DYNAMICS_OWN_SINCOS` is
+    /// defined).
+    pub(super) fn trig(self, name: &str) -> String {
+        format!("dynamics_{name}{}", self.suffix())
     }
 
     /// `x` as a literal of this type. A `double` is printed as the Rust emission prints it
@@ -185,8 +192,8 @@ impl Writer<'_> {
                 format!("-{}", self.expr(a, Place::Unary)),
                 matches!(place, Place::AddRight | Place::MulRight | Place::Unary),
             ),
-            Node::Sin(a) => (self.call(&p.math("sin"), a), false),
-            Node::Cos(a) => (self.call(&p.math("cos"), a), false),
+            Node::Sin(a) => (self.call(&p.trig("sin"), a), false),
+            Node::Cos(a) => (self.call(&p.trig("cos"), a), false),
             Node::Tanh(a) => (self.call(&p.math("tanh"), a), false),
             Node::Sign(a) => (self.call(&self.sign, a), false),
         };

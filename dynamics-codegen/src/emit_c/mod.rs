@@ -2,7 +2,8 @@
 //!
 //! The header has a `#define` guard, includes `<math.h>` (sine, cosine, and the `tanh` of
 //! smoothed friction), and holds `static inline` functions only: no allocation, no globals, no
-//! other header. For every method of the families the equations hold (the method table,
+//! other header. Its sines and cosines go through `dynamics_sincos` (`trig`): `<math.h>`'s, or
+//! with `DYNAMICS_OWN_SINCOS` defined the runtime's own kernels, for targets without a libm. For every method of the families the equations hold (the method table,
 //! `crate::method`; a robot's opt-in families where it asked for them) it has a function
 //! `{robot}_{method}` in `double` and `{robot}_{method}_f32` in `float`, whose inputs are
 //! `const` arrays (`q`, `qd`, `qdd`, `tau`, a wrench; first, `params` where the robot has
@@ -22,11 +23,13 @@
 //! (`-ffp-contract=fast`), and a C function stands alone.
 //!
 //! By job: `expr` (expressions, literals, precisions), `body` (one function's statements),
-//! `function` (the functions and their signatures), this file (the header around them).
+//! `function` (the functions and their signatures), `trig` (the sines and cosines), this file
+//! (the header around them).
 
 mod body;
 mod expr;
 mod function;
+mod trig;
 
 pub use expr::Precision;
 pub use function::{functions, Array, Function, Returns};
@@ -67,6 +70,8 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text.push_str(&format!(
         "#ifndef {guard}\n#define {guard}\n\n#include <math.h>\n\n"
     ));
+    text.push_str(trig::TRIG);
+    text.push('\n');
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
     if reads_sign(eq, &functions) {
         for p in Precision::ALL {
@@ -134,6 +139,11 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         "pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).".to_owned(),
         "For fused multiply-adds, compile with -ffp-contract=fast on a target that has them."
             .to_owned(),
+        "Sines and cosines are <math.h>'s or, with DYNAMICS_OWN_SINCOS defined before the"
+            .to_owned(),
+        "first such header, the header's own (the Rust runtime's kernels: no libm needed but"
+            .to_owned(),
+        "for the tanh of smoothed friction).".to_owned(),
     ];
     if !eq.fields.is_empty() {
         lines.push(String::new());
