@@ -104,3 +104,32 @@ fn a_robot_with_parameters_computes_the_graphs_values() {
         check_against_graph(&robot, &states, run);
     }
 }
+
+/// The opt-in families too (`--with derivatives,regressor,base_parameters`): their functions,
+/// stacks of matrices and a solve with its derivatives among them, against the graph (one
+/// build: the header is large).
+#[test]
+fn the_opt_in_families_compute_the_graphs_values() {
+    let with = ["derivatives", "regressor", "base_parameters"];
+    let robot = c_support::robot_with("robots/puma560.toml", &with);
+    for name in [
+        "puma560_inverse_dynamics_derivatives",
+        "puma560_base_regressor_f32",
+    ] {
+        assert!(robot.functions.iter().any(|f| f.name == name), "{name}");
+    }
+    let states: Vec<State> = (0..3)
+        .map(|k| {
+            let x = f64::from(k);
+            State {
+                q: (0..6).map(|i| 0.3 * x - 0.1 * f64::from(i)).collect(),
+                qd: (0..6).map(|i| 0.2 - 0.15 * x * f64::from(i)).collect(),
+                qdd: (0..6).map(|i| 1.0 - 0.3 * f64::from(i)).collect(),
+                tau: (0..6).map(|i| 5.0 - x - f64::from(i)).collect(),
+            }
+        })
+        .collect();
+    for run in &c_support::compile_and_run_builds(&robot, &states, false) {
+        check_against_graph(&robot, &states, run);
+    }
+}

@@ -8,7 +8,7 @@ use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, R
 use dynamics_codegen::method::{Argument, Method};
 use dynamics_codegen::symbolic::{NodeId, Var};
 use dynamics_codegen::trace::Shape;
-use dynamics_codegen::{derive, front, Equations};
+use dynamics_codegen::{derive, front, Equations, Family, FamilySet};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -63,8 +63,18 @@ impl Robot {
 
 /// The robot of a description file, its header written by `dynamics emit --lang c`.
 pub fn robot(file: &str) -> Robot {
+    robot_with(file, &[])
+}
+
+/// [`robot`] with the opt-in families `with` (`--with derivatives,regressor`).
+pub fn robot_with(file: &str, with: &[&str]) -> Robot {
+    let mut args = vec!["emit", "--lang", "c", file];
+    let list = with.join(",");
+    if !with.is_empty() {
+        args.extend(["--with", &list]);
+    }
     let out = Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(["emit", "--lang", "c", file])
+        .args(&args)
         .current_dir(root())
         .output()
         .expect("run dynamics");
@@ -76,7 +86,12 @@ pub fn robot(file: &str) -> Robot {
     let header = String::from_utf8(out.stdout).expect("UTF-8");
     let text = std::fs::read_to_string(root().join(file)).expect("description file");
     let loaded = front::load(file, &text).expect("a valid description");
-    let eq = derive(&loaded.robot);
+    let mut eq = derive(&loaded.robot);
+    let families = with
+        .iter()
+        .map(|name| Family::from_name(name).expect("a family"))
+        .fold(FamilySet::default(), FamilySet::with);
+    eq.add_families(&loaded.robot, families);
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);
     Robot {
@@ -265,6 +280,12 @@ fn compile(cc: &str, flags: &[&str], extra: &[&str], source: &Path, program: &Pa
 /// sines and cosines, linked without the math library where nothing else needs it) and runs
 /// each program.
 pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
+    compile_and_run_builds(robot, states, true)
+}
+
+/// [`compile_and_run`], with every build or only the first compiler's with `<math.h>` (for a
+/// large header, whose builds take long).
+pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> Vec<Run> {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("c_header_{}", robot.name));
     std::fs::create_dir_all(&dir).expect("a scratch directory");
     std::fs::write(dir.join(format!("{}.h", robot.name)), &robot.header).expect("write");
@@ -278,7 +299,10 @@ pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
         &["-DDYNAMICS_OWN_SINCOS"]
     };
     let mut runs = Vec::new();
-    for (cc, flags, with_own) in compilers() {
+    let compilers = compilers();
+    let count = if every { compilers.len() } else { 1 };
+    for (cc, flags, with_own) in compilers.into_iter().take(count) {
+        let with_own = with_own && every;
         let builds = [(false, &["-lm"][..])].into_iter();
         for (own_trig, extra) in builds.chain(with_own.then_some((true, own))) {
             let label = if own_trig {
