@@ -214,3 +214,66 @@ impl Function {
 pub(super) fn comment_safe(text: &str) -> String {
     text.replace("*/", "* /")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{functions, Precision};
+    use crate::method::{Family, FamilySet, Method};
+
+    /// A 2R arm in a description file, with friction (a method with a default body).
+    const ARM: &str = r#"
+        name = "arm"
+        gravity = [0, -9.81, 0]
+        [[joints]]
+        type = "revolute"
+        a = 0.5
+        mass = 2
+        com = [-0.25, 0, 0]
+        inertia = [0, 0.04, 0.04, 0, 0, 0]
+        friction_viscous = 0.1
+        [[joints]]
+        type = "revolute"
+        a = 0.4
+        mass = 1
+        com = [-0.2, 0, 0]
+        inertia = [0, 0.01, 0.01, 0, 0, 0]
+    "#;
+
+    /// With every family asked for, each method of the table has its two functions, in the
+    /// table's order: a new row gets its C function with no change to the C back end.
+    #[test]
+    fn every_method_of_the_table_has_a_function_in_each_precision() {
+        let robot = crate::front::from_toml(ARM, "arm").expect("a valid robot");
+        let mut eq = crate::trace::derive(&robot);
+        let every = Family::ALL
+            .iter()
+            .copied()
+            .fold(FamilySet::default(), FamilySet::with);
+        eq.add_families(&robot, every);
+        let names: Vec<String> = functions(&eq, "arm").into_iter().map(|f| f.name).collect();
+        let expected: Vec<String> = Method::ALL
+            .iter()
+            .flat_map(|m| Precision::ALL.map(|p| format!("arm_{}{}", m.name(), p.suffix())))
+            .collect();
+        assert_eq!(names, expected);
+    }
+
+    /// The names a function binds cannot meet: an output array or element (`m`, `m1_2`) is
+    /// never an argument (`q`, `tau`), a temporary (`t4`), a pivot (`d2`), a sine or cosine
+    /// (`s2`, `c2`), a parameter (`p_...`) or the solved stack's `value`.
+    #[test]
+    fn element_names_are_apart_from_every_other_local() {
+        for &m in Method::ALL {
+            let prefix = m.prefix();
+            assert!(m.arguments().iter().all(|a| a.name() != prefix), "{m:?}");
+            assert!(
+                !["t", "d", "s", "c", "value", "params"].contains(&prefix),
+                "{m:?}"
+            );
+            assert!(!prefix.starts_with("p_"), "{m:?}");
+            // An element `tau3` would be the joint torque read by a method that takes `tau`.
+            let takes_tau = m.arguments().contains(&crate::method::Argument::Tau);
+            assert!(!(takes_tau && prefix == "tau"), "{m:?}");
+        }
+    }
+}
