@@ -128,8 +128,8 @@ impl<'a> Writer<'a> {
         Body { lines, reads }
     }
 
-    /// `const double q1 = q[0];` for each joint variable, wrench component and parameter
-    /// read, in the order of the arguments.
+    /// `const double q1 = q[0];` for each joint variable, parameter, wrench component and
+    /// torque read, by kind (`Var`'s order), then by index.
     fn inputs(&self) -> (Vec<String>, Reads) {
         let mut reads = Reads::default();
         let mut lines = Vec::new();
