@@ -84,6 +84,8 @@ pub fn robot_with(file: &str, with: &[&str]) -> Robot {
         String::from_utf8_lossy(&out.stderr)
     );
     let header = String::from_utf8(out.stdout).expect("UTF-8");
+    // Every C toolchain reads ASCII; not all read UTF-8 in comments.
+    assert!(header.is_ascii(), "the header of {file} is not ASCII");
     let text = std::fs::read_to_string(root().join(file)).expect("description file");
     let loaded = front::load(file, &text).expect("a valid description");
     let mut eq = derive(&loaded.robot);

@@ -367,7 +367,7 @@ static inline void puma560_mass_matrix_f32(const float q[6], float m[6][6]) {
     m[5][5] = 0.00004f;
 }
 
-/* coriolis_matrix: C(q, q̇), with C_ij = Σ_k D_ijk q̇_k. */
+/* coriolis_matrix: C(q, qd), with C_ij = sum_k D_ijk qd_k. */
 static inline void puma560_coriolis_matrix(const double q[6], const double qd[6], double cor[6][6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -632,7 +632,7 @@ static inline void puma560_coriolis_matrix(const double q[6], const double qd[6]
     cor[5][5] = 0.0;
 }
 
-/* coriolis_matrix: C(q, q̇), with C_ij = Σ_k D_ijk q̇_k. */
+/* coriolis_matrix: C(q, qd), with C_ij = sum_k D_ijk qd_k. */
 static inline void puma560_coriolis_matrix_f32(const float q[6], const float qd[6], float cor[6][6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -897,7 +897,7 @@ static inline void puma560_coriolis_matrix_f32(const float q[6], const float qd[
     cor[5][5] = 0.0f;
 }
 
-/* coriolis_torques: C(q, q̇) q̇. */
+/* coriolis_torques: C(q, qd) qd. */
 static inline void puma560_coriolis_torques(const double q[6], const double qd[6], double cqd[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -980,7 +980,7 @@ static inline void puma560_coriolis_torques(const double q[6], const double qd[6
     cqd[5] = cqd6;
 }
 
-/* coriolis_torques: C(q, q̇) q̇. */
+/* coriolis_torques: C(q, qd) qd. */
 static inline void puma560_coriolis_torques_f32(const float q[6], const float qd[6], float cqd[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -1115,7 +1115,7 @@ static inline void puma560_gravity_torques_f32(const float q[6], float g[6]) {
     g[5] = 0.0f;
 }
 
-/* bias_torques: C(q, q̇) q̇ + g(q). */
+/* bias_torques: C(q, qd) qd + g(q). */
 static inline void puma560_bias_torques(const double q[6], const double qd[6], double h[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -1199,7 +1199,7 @@ static inline void puma560_bias_torques(const double q[6], const double qd[6], d
     h[5] = h6;
 }
 
-/* bias_torques: C(q, q̇) q̇ + g(q). */
+/* bias_torques: C(q, qd) qd + g(q). */
 static inline void puma560_bias_torques_f32(const float q[6], const float qd[6], float h[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -1283,7 +1283,7 @@ static inline void puma560_bias_torques_f32(const float q[6], const float qd[6],
     h[5] = h6;
 }
 
-/* inverse_dynamics: τ = M(q) q̈ + C(q, q̇) q̇ + g(q). */
+/* inverse_dynamics: tau = M(q) qdd + C(q, qd) qd + g(q). */
 static inline void puma560_inverse_dynamics(const double q[6], const double qd[6], const double qdd[6], double tau[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -1387,7 +1387,7 @@ static inline void puma560_inverse_dynamics(const double q[6], const double qd[6
     tau[5] = tau6;
 }
 
-/* inverse_dynamics: τ = M(q) q̈ + C(q, q̇) q̇ + g(q). */
+/* inverse_dynamics: tau = M(q) qdd + C(q, qd) qd + g(q). */
 static inline void puma560_inverse_dynamics_f32(const float q[6], const float qd[6], const float qdd[6], float tau[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -1491,7 +1491,7 @@ static inline void puma560_inverse_dynamics_f32(const float q[6], const float qd
     tau[5] = tau6;
 }
 
-/* friction_torques: Joint friction: f_v q̇ + f_c sign(q̇) + f_0. */
+/* friction_torques: Joint friction: f_v qd + f_c sign(qd) + f_0. */
 static inline void puma560_friction_torques(const double qd[6], double f[6]) {
     (void)qd;
     f[0] = 0.0;
@@ -1502,7 +1502,7 @@ static inline void puma560_friction_torques(const double qd[6], double f[6]) {
     f[5] = 0.0;
 }
 
-/* friction_torques: Joint friction: f_v q̇ + f_c sign(q̇) + f_0. */
+/* friction_torques: Joint friction: f_v qd + f_c sign(qd) + f_0. */
 static inline void puma560_friction_torques_f32(const float qd[6], float f[6]) {
     (void)qd;
     f[0] = 0.0f;
@@ -1617,7 +1617,7 @@ static inline float puma560_potential_energy_f32(const float q[6]) {
     return p;
 }
 
-/* hand_pose: The hand frame's pose, A1 ⋯ An (and the tool). */
+/* hand_pose: The hand frame's pose, A1 ... An (and the tool). */
 static inline void puma560_hand_pose(const double q[6], double hand[3][4]) {
     double s1, c1;
     dynamics_sincos(q[0], &s1, &c1);
@@ -1676,7 +1676,7 @@ static inline void puma560_hand_pose(const double q[6], double hand[3][4]) {
     hand[2][3] = hand3_4;
 }
 
-/* hand_pose: The hand frame's pose, A1 ⋯ An (and the tool). */
+/* hand_pose: The hand frame's pose, A1 ... An (and the tool). */
 static inline void puma560_hand_pose_f32(const float q[6], float hand[3][4]) {
     float s1, c1;
     dynamics_sincos_f32(q[0], &s1, &c1);
@@ -1735,7 +1735,7 @@ static inline void puma560_hand_pose_f32(const float q[6], float hand[3][4]) {
     hand[2][3] = hand3_4;
 }
 
-/* link_poses: The pose of every link frame, A1 ⋯ Ai. */
+/* link_poses: The pose of every link frame, A1 ... Ai. */
 static inline void puma560_link_poses(const double q[6], double link[6][3][4]) {
     double s1, c1;
     dynamics_sincos(q[0], &s1, &c1);
@@ -1867,7 +1867,7 @@ static inline void puma560_link_poses(const double q[6], double link[6][3][4]) {
     link[5][2][3] = link4_3_4;
 }
 
-/* link_poses: The pose of every link frame, A1 ⋯ Ai. */
+/* link_poses: The pose of every link frame, A1 ... Ai. */
 static inline void puma560_link_poses_f32(const float q[6], float link[6][3][4]) {
     float s1, c1;
     dynamics_sincos_f32(q[0], &s1, &c1);
@@ -2159,7 +2159,7 @@ static inline void puma560_hand_jacobian_in_base_f32(const float q[6], float jb[
     jb[5][5] = jb6_6;
 }
 
-/* hand_jacobian_in_hand: The book's ᴴJ, the hand's Jacobian in the hand frame. */
+/* hand_jacobian_in_hand: The book's HJ, the hand's Jacobian in the hand frame. */
 static inline void puma560_hand_jacobian_in_hand(const double q[6], double jh[6][6]) {
     double s1, c1;
     dynamics_sincos(q[0], &s1, &c1);
@@ -2253,7 +2253,7 @@ static inline void puma560_hand_jacobian_in_hand(const double q[6], double jh[6]
     jh[5][5] = 1.0;
 }
 
-/* hand_jacobian_in_hand: The book's ᴴJ, the hand's Jacobian in the hand frame. */
+/* hand_jacobian_in_hand: The book's HJ, the hand's Jacobian in the hand frame. */
 static inline void puma560_hand_jacobian_in_hand_f32(const float q[6], float jh[6][6]) {
     float s1, c1;
     dynamics_sincos_f32(q[0], &s1, &c1);
@@ -2347,7 +2347,7 @@ static inline void puma560_hand_jacobian_in_hand_f32(const float q[6], float jh[
     jh[5][5] = 1.0f;
 }
 
-/* hand_acceleration_bias_in_base: J̇ q̇ of the hand, in the base frame. */
+/* hand_acceleration_bias_in_base: Jd qd of the hand, in the base frame. */
 static inline void puma560_hand_acceleration_bias_in_base(const double q[6], const double qd[6], double ab[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -2432,7 +2432,7 @@ static inline void puma560_hand_acceleration_bias_in_base(const double q[6], con
     ab[5] = ab6;
 }
 
-/* hand_acceleration_bias_in_base: J̇ q̇ of the hand, in the base frame. */
+/* hand_acceleration_bias_in_base: Jd qd of the hand, in the base frame. */
 static inline void puma560_hand_acceleration_bias_in_base_f32(const float q[6], const float qd[6], float ab[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -2517,7 +2517,7 @@ static inline void puma560_hand_acceleration_bias_in_base_f32(const float q[6], 
     ab[5] = ab6;
 }
 
-/* hand_acceleration_bias_in_hand: J̇ q̇ of the hand, in the hand's axes. */
+/* hand_acceleration_bias_in_hand: Jd qd of the hand, in the hand's axes. */
 static inline void puma560_hand_acceleration_bias_in_hand(const double q[6], const double qd[6], double ah[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -2622,7 +2622,7 @@ static inline void puma560_hand_acceleration_bias_in_hand(const double q[6], con
     ah[5] = ah6;
 }
 
-/* hand_acceleration_bias_in_hand: J̇ q̇ of the hand, in the hand's axes. */
+/* hand_acceleration_bias_in_hand: Jd qd of the hand, in the hand's axes. */
 static inline void puma560_hand_acceleration_bias_in_hand_f32(const float q[6], const float qd[6], float ah[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];
@@ -2727,7 +2727,7 @@ static inline void puma560_hand_acceleration_bias_in_hand_f32(const float q[6], 
     ah[5] = ah6;
 }
 
-/* joint_torques_for_hand_wrench: T = ᴴJᵀ ᴴF for a wrench in the hand frame. */
+/* joint_torques_for_hand_wrench: T = HJ^T HF for a wrench in the hand frame. */
 static inline void puma560_joint_torques_for_hand_wrench(const double q[6], const double wrench[6], double tf[6]) {
     const double fx = wrench[0];
     const double fy = wrench[1];
@@ -2791,7 +2791,7 @@ static inline void puma560_joint_torques_for_hand_wrench(const double q[6], cons
     tf[5] = mz;
 }
 
-/* joint_torques_for_hand_wrench: T = ᴴJᵀ ᴴF for a wrench in the hand frame. */
+/* joint_torques_for_hand_wrench: T = HJ^T HF for a wrench in the hand frame. */
 static inline void puma560_joint_torques_for_hand_wrench_f32(const float q[6], const float wrench[6], float tf[6]) {
     const float fx = wrench[0];
     const float fy = wrench[1];
@@ -2855,7 +2855,7 @@ static inline void puma560_joint_torques_for_hand_wrench_f32(const float q[6], c
     tf[5] = mz;
 }
 
-/* joint_torques_for_base_wrench: T = Jᵀ F for a wrench in base axes. */
+/* joint_torques_for_base_wrench: T = J^T F for a wrench in base axes. */
 static inline void puma560_joint_torques_for_base_wrench(const double q[6], const double wrench[6], double tb[6]) {
     const double fx = wrench[0];
     const double fy = wrench[1];
@@ -2905,7 +2905,7 @@ static inline void puma560_joint_torques_for_base_wrench(const double q[6], cons
     tb[5] = tb6;
 }
 
-/* joint_torques_for_base_wrench: T = Jᵀ F for a wrench in base axes. */
+/* joint_torques_for_base_wrench: T = J^T F for a wrench in base axes. */
 static inline void puma560_joint_torques_for_base_wrench_f32(const float q[6], const float wrench[6], float tb[6]) {
     const float fx = wrench[0];
     const float fy = wrench[1];
@@ -2955,7 +2955,7 @@ static inline void puma560_joint_torques_for_base_wrench_f32(const float q[6], c
     tb[5] = tb6;
 }
 
-/* mass_matrix_inverse: M(q)⁻¹, through the LDLᵀ of M. */
+/* mass_matrix_inverse: M(q)^-1, through the LDL^T of M. */
 static inline int puma560_mass_matrix_inverse(const double q[6], double mi[6][6]) {
     double s2, c2;
     dynamics_sincos(q[1], &s2, &c2);
@@ -3135,7 +3135,7 @@ static inline int puma560_mass_matrix_inverse(const double q[6], double mi[6][6]
     return (d1 > 0.0 && d2 > 0.0 && d3 > 0.0 && d4 > 0.0 && d5 > 0.0 && d6 > 0.0) ? 0 : 1;
 }
 
-/* mass_matrix_inverse: M(q)⁻¹, through the LDLᵀ of M. */
+/* mass_matrix_inverse: M(q)^-1, through the LDL^T of M. */
 static inline int puma560_mass_matrix_inverse_f32(const float q[6], float mi[6][6]) {
     float s2, c2;
     dynamics_sincos_f32(q[1], &s2, &c2);
@@ -3315,7 +3315,7 @@ static inline int puma560_mass_matrix_inverse_f32(const float q[6], float mi[6][
     return (d1 > 0.0f && d2 > 0.0f && d3 > 0.0f && d4 > 0.0f && d5 > 0.0f && d6 > 0.0f) ? 0 : 1;
 }
 
-/* forward_dynamics: q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)). */
+/* forward_dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - f(qd)). */
 static inline int puma560_forward_dynamics(const double q[6], const double qd[6], const double tau[6], double qdd[6]) {
     const double qd1 = qd[0];
     const double qd2 = qd[1];
@@ -3498,7 +3498,7 @@ static inline int puma560_forward_dynamics(const double q[6], const double qd[6]
     return (d1 > 0.0 && d2 > 0.0 && d3 > 0.0 && d4 > 0.0 && d5 > 0.0 && d6 > 0.0) ? 0 : 1;
 }
 
-/* forward_dynamics: q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇)). */
+/* forward_dynamics: qdd = M(q)^-1 (tau - C(q, qd) qd - g(q) - f(qd)). */
 static inline int puma560_forward_dynamics_f32(const float q[6], const float qd[6], const float tau[6], float qdd[6]) {
     const float qd1 = qd[0];
     const float qd2 = qd[1];

@@ -164,7 +164,7 @@ impl Function {
         format!("static inline {returns} {}({arguments})", self.name)
     }
 
-    /// Its definition, with a comment from the method table; `sign` names the header's sign
+    /// Its definition, with the method table's summary as its comment; `sign` names the header's sign
     /// function of the function's precision.
     pub(super) fn definition(&self, eq: &Equations, sign: &str) -> String {
         let arrays: Vec<String> = self.outputs.iter().map(|a| a.name.clone()).collect();
@@ -210,9 +210,31 @@ impl Function {
     }
 }
 
-/// `text` without the `*/` that would end a C comment early.
+/// `text` for a C comment: in ASCII, which every C toolchain reads (the method table's
+/// `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; any other character `?`), and without the `*/`
+/// that would end the comment early.
 pub(super) fn comment_safe(text: &str) -> String {
-    text.replace("*/", "* /")
+    let mut ascii = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            c if c.is_ascii() => ascii.push(c),
+            // Combining dots: `q̇`, `q̈`, `J̇`.
+            '\u{307}' => ascii.push('d'),
+            '\u{308}' => ascii.push_str("dd"),
+            '∂' => ascii.push('d'),
+            'τ' => ascii.push_str("tau"),
+            'π' => ascii.push_str("pi"),
+            'Σ' => ascii.push_str("sum"),
+            '−' => ascii.push('-'),
+            'ᵀ' => ascii.push_str("^T"),
+            'ᴴ' => ascii.push('H'),
+            '⁻' => ascii.push_str("^-"),
+            '¹' => ascii.push('1'),
+            '⋯' | '…' => ascii.push_str("..."),
+            _ => ascii.push('?'),
+        }
+    }
+    ascii.replace("*/", "* /")
 }
 
 #[cfg(test)]
@@ -261,6 +283,26 @@ mod tests {
     /// The names a function binds cannot meet: an output array or element (`m`, `m1_2`) is
     /// never an argument (`q`, `tau`), a temporary (`t4`), a pivot (`d2`), a sine or cosine
     /// (`s2`, `c2`), a parameter (`p_...`) or the solved stack's `value`.
+    #[test]
+    fn comments_are_ascii() {
+        let table = [
+            ("C(q, q̇) q̇ + g(q).", "C(q, qd) qd + g(q)."),
+            ("q̈ = M(q)⁻¹ (τ − f(q̇)).", "qdd = M(q)^-1 (tau - f(qd))."),
+            (
+                "T = ᴴJᵀ ᴴF, ∂τ/∂q, A1 ⋯ An, Σ_k",
+                "T = HJ^T HF, dtau/dq, A1 ... An, sum_k",
+            ),
+            ("a */ b ✓", "a * / b ?"),
+        ];
+        for (text, ascii) in table {
+            assert_eq!(super::comment_safe(text), ascii);
+        }
+        for &m in Method::ALL {
+            let summary = super::comment_safe(m.summary());
+            assert!(!summary.contains('?'), "{m:?}: {summary}");
+        }
+    }
+
     #[test]
     fn element_names_are_apart_from_every_other_local() {
         for &m in Method::ALL {

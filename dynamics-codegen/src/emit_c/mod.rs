@@ -22,6 +22,9 @@
 //! a sum's additions) is not reproduced: a C compiler inlines and contracts on its own
 //! (`-ffp-contract=fast`), and a C function stands alone.
 //!
+//! The header is ASCII: the method table's summaries, its comments, are spelled out (`q̇` as
+//! `qd`), as the element descriptions already are.
+//!
 //! By job: `expr` (expressions, literals, precisions), `body` (one function's statements),
 //! `function` (the functions and their signatures), `trig` (the sines and cosines), this file
 //! (the header around them).
