@@ -69,16 +69,12 @@ fn parameters_come_first_in_the_stated_order() {
     );
     assert!(robot.header.contains(&signature), "{signature}");
     assert!(robot.header.contains("const float params[6]"));
-    // The offsets: a field's read as a parameter, the constant's as a literal.
+    // The offsets: a field's read as a parameter, the constant's as a literal; a group of
+    // joints padded with 1.
     assert!(robot
         .header
-        .contains("dynamics_sincos(q[0] + p_theta0, &s1, &c1);"));
-    assert!(robot
-        .header
-        .contains("dynamics_sincos(q[2] + 0.3, &s3, &c3);"));
-    assert!(robot
-        .header
-        .contains("dynamics_sincos_f32(q[2] + 0.3f, &s3, &c3);"));
+        .contains("{q[0] + p_theta0, q[1], q[2] + 0.3, 1.0}"));
+    assert!(robot.header.contains("{q[1], q[2] + 0.3f, 1.0f, 1.0f}"));
 }
 
 #[test]

@@ -62,7 +62,8 @@ fn ulps_f32(a: f32, b: f32) -> u64 {
     key(a).abs_diff(key(b))
 }
 
-/// The program: `sin cos sinf cosf` of each argument, the special values' NaN-ness last.
+/// The program: `sin cos sinf cosf` of each argument, how many results of `dynamics_sincos4`
+/// differ from one at a time's, the special values' NaN-ness last.
 fn program(header: &str, xs: &[f64]) -> String {
     let items: Vec<String> = xs.iter().map(|x| format!("{x:?}")).collect();
     format!(
@@ -70,11 +71,19 @@ fn program(header: &str, xs: &[f64]) -> String {
          int main(void) {{\n    static const double xs[] = {{{}}};\n    \
          volatile double zero = 0.0;\n    \
          const double specials[3] = {{zero / zero, 1.0 / zero, -1.0 / zero}};\n    \
-         unsigned i;\n    \
+         unsigned i, mismatches = 0;\n    \
          for (i = 0; i < sizeof xs / sizeof xs[0]; ++i) {{\n        \
          double s, c;\n        float sf, cf;\n        dynamics_sincos(xs[i], &s, &c);\n        \
          dynamics_sincos_f32((float)xs[i], &sf, &cf);\n        \
          printf(\"%.17g %.17g %.9g %.9g\\n\", s, c, (double)sf, (double)cf);\n    }}\n    \
+         for (i = 0; i + 4 <= sizeof xs / sizeof xs[0]; ++i) {{\n        \
+         double s4[4], c4[4], s, c;\n        float xf[4], sf4[4], cf4[4], sf, cf;\n        \
+         unsigned k;\n        dynamics_sincos4(&xs[i], s4, c4);\n        \
+         for (k = 0; k < 4; ++k) xf[k] = (float)xs[i + k];\n        \
+         dynamics_sincos4_f32(xf, sf4, cf4);\n        for (k = 0; k < 4; ++k) {{\n            \
+         dynamics_sincos(xs[i + k], &s, &c);\n            dynamics_sincos_f32(xf[k], &sf, &cf);\n            \
+         mismatches += s4[k] != s || c4[k] != c || sf4[k] != sf || cf4[k] != cf;\n        }}\n    }}\n    \
+         printf(\"sincos4 mismatches %u\\n\", mismatches);\n    \
          for (i = 0; i < 3; ++i) {{\n        double s, c;\n        float sf, cf;\n        \
          dynamics_sincos(specials[i], &s, &c);\n        \
          dynamics_sincos_f32((float)specials[i], &sf, &cf);\n        \
@@ -115,7 +124,7 @@ fn the_headers_own_sines_and_cosines_are_the_runtimes() {
     let run = Command::new(&binary).output().expect("run");
     let text = String::from_utf8(run.stdout).expect("UTF-8");
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines.len(), xs.len() + 3);
+    assert_eq!(lines.len(), xs.len() + 4);
     // The runtime fuses its multiply-adds in a build for a CPU with FMA; C here does not.
     let exact = !cfg!(target_feature = "fma");
     for (x, line) in xs.iter().zip(&lines) {
@@ -160,7 +169,10 @@ fn the_headers_own_sines_and_cosines_are_the_runtimes() {
             "{xf}"
         );
     }
-    for line in &lines[xs.len()..] {
+    // Four at a time, in vector lanes or (a tiny or huge argument among them) one by one: the
+    // results of one at a time, on every window of four consecutive arguments.
+    assert_eq!(lines[xs.len()], "sincos4 mismatches 0");
+    for line in &lines[xs.len() + 1..] {
         assert_eq!(*line, "special 1 1 1 1", "NaN and infinities give NaN");
     }
 }

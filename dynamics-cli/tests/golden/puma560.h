@@ -28,20 +28,23 @@
 /* The runtime's sine and cosine (dynamics-runtime/src/trig/): within an ulp for |x| <= 2^16
  * (2^12 in float), less accurate beyond, NaN from 2^51 (2^22) on. Not under -ffast-math,
  * whose reassociation undoes the rounding steps. */
+
+/* Whether x is in the kernel's range, 2^-27 <= |x| < 2^51, where it has no branch. */
+static inline int dynamics_sincos_fast(double x) {
+    const double ax = x < 0.0 ? -x : x;
+    return ax >= 0x1p-27 && ax < 0x1p51;
+}
+
 static inline void dynamics_sincos(double x, double *s, double *c) {
-    const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
     const double ax = x < 0.0 ? -x : x;
     if (ax < 0x1p-27) {
         *s = x;
         *c = 1.0;
-        return;
-    }
-    if (!(ax < 0x1p51)) {
+    } else if (!(ax < 0x1p51)) {
         /* Beyond the rounding to an integer, infinite or NaN: NaN. */
         *s = *c = (ax - ax) / (ax - ax);
-        return;
-    }
-    {
+    } else {
+        const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
         /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
         const double shifted = x * 0x1.45f306dc9c883p-1 + shift;
         const double n = shifted - shift;
@@ -66,42 +69,99 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
         const double w = 1.0 - half_z;
         const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
         const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
-        /* The quadrant, n mod 4. */
-        const unsigned k = (unsigned)(long long)n & 3u;
-        const double p = (k & 1u) ? cos_r : sin_r;
-        const double q = (k & 1u) ? sin_r : cos_r;
-        *s = (k & 2u) ? -p : p;
-        *c = ((k + 1u) & 2u) ? -q : q;
+        /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
+        const double m = n * 0.25;
+        const double d = m - ((m + shift) - shift);
+        const double p = d * d == 0.0625 ? cos_r : sin_r;
+        const double q = d * d == 0.0625 ? sin_r : cos_r;
+        *s = d * d == 0.25 || d == -0.25 ? -p : p;
+        *c = d * d == 0.25 || d == 0.25 ? -q : q;
     }
 }
 
+/* Four arguments side by side (in vector lanes where the compiler vectorizes the loop, as
+ * gcc does at -O2 for AVX2), the same results as one at a time. */
+static inline void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
+    int i;
+    if (dynamics_sincos_fast(x[0]) & dynamics_sincos_fast(x[1]) & dynamics_sincos_fast(x[2]) & dynamics_sincos_fast(x[3])) {
+        /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */
+        double xs[4], ss[4], cs[4];
+        for (i = 0; i < 4; ++i) {
+            xs[i] = x[i];
+        }
+        for (i = 0; i < 4; ++i) {
+            const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
+            /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
+            const double shifted = xs[i] * 0x1.45f306dc9c883p-1 + shift;
+            const double n = shifted - shift;
+            const double a = xs[i] - n * 0x1.921fb5444p+0;
+            const double b = n * 0x1.68c234c4cp-39;
+            const double cc = n * 0x1.98a2e03707345p-77;
+            const double t = a - n * 0x1.68c234c4cp-39;
+            const double e = (a - t) - b;
+            const double r = t - cc;
+            const double r_lo = ((t - r) - cc) + e;
+            /* fdlibm's k_sin.c and k_cos.c in Estrin form. */
+            const double z = t * t;
+            const double z2 = z * z;
+            const double z4 = z2 * z2;
+            const double sin_poly = z4 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
+                + (z2 * (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4)
+                    + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1));
+            const double cos_poly = z4 * (z * -1.13596475577881948265e-11 + 2.08757232129817482790e-9)
+                + (z2 * (z * -2.75573143513906633035e-7 + 2.48015872894767294178e-5)
+                    + (z * -1.38888888888741095749e-3 + 4.16666666666666019037e-2));
+            const double half_z = 0.5 * z;
+            const double w = 1.0 - half_z;
+            const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
+            const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
+            /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
+            const double m = n * 0.25;
+            const double d = m - ((m + shift) - shift);
+            const double p = d * d == 0.0625 ? cos_r : sin_r;
+            const double q = d * d == 0.0625 ? sin_r : cos_r;
+            ss[i] = d * d == 0.25 || d == -0.25 ? -p : p;
+            cs[i] = d * d == 0.25 || d == 0.25 ? -q : q;
+        }
+        for (i = 0; i < 4; ++i) {
+            s[i] = ss[i];
+            c[i] = cs[i];
+        }
+    } else {
+        for (i = 0; i < 4; ++i) {
+            dynamics_sincos(x[i], &s[i], &c[i]);
+        }
+    }
+}
+
+static inline int dynamics_sincos_fast_f32(float x) {
+    const float ax = x < 0.0f ? -x : x;
+    return ax >= 0x1p-12f && ax < 0x1p22f;
+}
+
 static inline void dynamics_sincos_f32(float x, float *s, float *c) {
-    const float shift = 12582912.0f; /* 1.5 * 2^23 */
     const float ax = x < 0.0f ? -x : x;
     if (ax < 0x1p-12f) {
         *s = x;
         *c = 1.0f;
-        return;
-    }
-    if (!(ax < 0x1p22f)) {
+    } else if (!(ax < 0x1p22f)) {
         *s = *c = (ax - ax) / (ax - ax);
-        return;
-    }
-    {
+    } else {
+        const float shift = 12582912.0f; /* 1.5 * 2^23 */
         /* pi/2 in four parts; Fast2Sum, TwoSum and Fast2Sum recover the roundings. */
         const float shifted = x * 0x1.45f306p-1f + shift;
         const float n = shifted - shift;
         const float a = x - n * 0x1.922p+0f;
         const float b = n * -0x1.2aep-18f;
         const float cc = n * -0x1.deap-31f;
-        const float d = n * 0x1.184698p-44f;
+        const float d4 = n * 0x1.184698p-44f;
         const float t0 = a - n * -0x1.2aep-18f;
         const float e1 = (a - t0) - b;
         const float t = t0 - n * -0x1.deap-31f;
         const float t_s = t - t0;
         const float e2 = (t0 - (t - t_s)) - (cc + t_s);
-        const float r = t - d;
-        const float r_lo = ((t - r) - d) + (e1 + e2);
+        const float r = t - d4;
+        const float r_lo = ((t - r) - d4) + (e1 + e2);
         /* FreeBSD's k_sinf.c and k_cosf.c, rounded to float. */
         const float z = t * t;
         const float z2 = z * z;
@@ -113,11 +173,65 @@ static inline void dynamics_sincos_f32(float x, float *s, float *c) {
         const float w = 1.0f - half_z;
         const float sin_r = r + ((r * z) * sin_poly + r_lo * w);
         const float cos_r = w + ((z2 * cos_poly + ((1.0f - w) - half_z)) - r * r_lo);
-        const unsigned k = (unsigned)(long long)n & 3u;
-        const float p = (k & 1u) ? cos_r : sin_r;
-        const float q = (k & 1u) ? sin_r : cos_r;
-        *s = (k & 2u) ? -p : p;
-        *c = ((k + 1u) & 2u) ? -q : q;
+        const float m = n * 0.25f;
+        const float d = m - ((m + shift) - shift);
+        const float p = d * d == 0.0625f ? cos_r : sin_r;
+        const float q = d * d == 0.0625f ? sin_r : cos_r;
+        *s = d * d == 0.25f || d == -0.25f ? -p : p;
+        *c = d * d == 0.25f || d == 0.25f ? -q : q;
+    }
+}
+
+static inline void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
+    int i;
+    if (dynamics_sincos_fast_f32(x[0]) & dynamics_sincos_fast_f32(x[1]) & dynamics_sincos_fast_f32(x[2]) & dynamics_sincos_fast_f32(x[3])) {
+        /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */
+        float xs[4], ss[4], cs[4];
+        for (i = 0; i < 4; ++i) {
+            xs[i] = x[i];
+        }
+        for (i = 0; i < 4; ++i) {
+            const float shift = 12582912.0f; /* 1.5 * 2^23 */
+            /* pi/2 in four parts; Fast2Sum, TwoSum and Fast2Sum recover the roundings. */
+            const float shifted = xs[i] * 0x1.45f306p-1f + shift;
+            const float n = shifted - shift;
+            const float a = xs[i] - n * 0x1.922p+0f;
+            const float b = n * -0x1.2aep-18f;
+            const float cc = n * -0x1.deap-31f;
+            const float d4 = n * 0x1.184698p-44f;
+            const float t0 = a - n * -0x1.2aep-18f;
+            const float e1 = (a - t0) - b;
+            const float t = t0 - n * -0x1.deap-31f;
+            const float t_s = t - t0;
+            const float e2 = (t0 - (t - t_s)) - (cc + t_s);
+            const float r = t - d4;
+            const float r_lo = ((t - r) - d4) + (e1 + e2);
+            /* FreeBSD's k_sinf.c and k_cosf.c, rounded to float. */
+            const float z = t * t;
+            const float z2 = z * z;
+            const float sin_poly = z2 * (z * (float)0.0000027183114939898219064 + (float)-0.000198393348360966317347)
+                + (z * (float)0.0083333293858894631756 + (float)-0.166666666416265235595);
+            const float cos_poly = z2 * (float)0.0000243904487962774090654
+                + (z * (float)-0.00138867637746099294692 + (float)0.0416666233237390631894);
+            const float half_z = 0.5f * z;
+            const float w = 1.0f - half_z;
+            const float sin_r = r + ((r * z) * sin_poly + r_lo * w);
+            const float cos_r = w + ((z2 * cos_poly + ((1.0f - w) - half_z)) - r * r_lo);
+            const float m = n * 0.25f;
+            const float d = m - ((m + shift) - shift);
+            const float p = d * d == 0.0625f ? cos_r : sin_r;
+            const float q = d * d == 0.0625f ? sin_r : cos_r;
+            ss[i] = d * d == 0.25f || d == -0.25f ? -p : p;
+            cs[i] = d * d == 0.25f || d == 0.25f ? -q : q;
+        }
+        for (i = 0; i < 4; ++i) {
+            s[i] = ss[i];
+            c[i] = cs[i];
+        }
+    } else {
+        for (i = 0; i < 4; ++i) {
+            dynamics_sincos_f32(x[i], &s[i], &c[i]);
+        }
     }
 }
 #else
@@ -129,6 +243,20 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
 static inline void dynamics_sincos_f32(float x, float *s, float *c) {
     *s = sinf(x);
     *c = cosf(x);
+}
+
+static inline void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
+    int i;
+    for (i = 0; i < 4; ++i) {
+        dynamics_sincos(x[i], &s[i], &c[i]);
+    }
+}
+
+static inline void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
+    int i;
+    for (i = 0; i < 4; ++i) {
+        dynamics_sincos_f32(x[i], &s[i], &c[i]);
+    }
 }
 #endif
 
@@ -163,14 +291,13 @@ static inline float dynamics_cos_f32(float x) {
 
 /* mass_matrix: M(q), with the actuator inertia on the diagonal. */
 static inline void puma560_mass_matrix(const double q[6], double m[6][6]) {
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s5 * c5;
     const double t2 = 0.00024216 - 0.00020216 * (s5 * s5);
     const double t3 = 0.0003 + t2;
@@ -266,14 +393,13 @@ static inline void puma560_mass_matrix(const double q[6], double m[6][6]) {
 
 /* mass_matrix: M(q), with the actuator inertia on the diagonal. */
 static inline void puma560_mass_matrix_f32(const float q[6], float m[6][6]) {
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s5 * c5;
     const float t2 = 0.00024216f - 0.00020216f * (s5 * s5);
     const float t3 = 0.0003f + t2;
@@ -375,14 +501,13 @@ static inline void puma560_coriolis_matrix(const double q[6], const double qd[6]
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s5 * s5;
     const double t2 = s5 * c5;
     const double t3 = 0.00024216 - 0.00020216 * t1;
@@ -640,14 +765,13 @@ static inline void puma560_coriolis_matrix_f32(const float q[6], const float qd[
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s5 * s5;
     const float t2 = s5 * c5;
     const float t3 = 0.00024216f - 0.00020216f * t1;
@@ -905,14 +1029,13 @@ static inline void puma560_coriolis_torques(const double q[6], const double qd[6
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double t3 = s2 * qd1;
@@ -988,14 +1111,13 @@ static inline void puma560_coriolis_torques_f32(const float q[6], const float qd
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float t3 = s2 * qd1;
@@ -1065,14 +1187,13 @@ static inline void puma560_coriolis_torques_f32(const float q[6], const float qd
 
 /* gravity_torques: g(q), with joint springs. */
 static inline void puma560_gravity_torques(const double q[6], double g[6]) {
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = 0.025375 - 0.00288 * (c4 * s5);
     const double t2 = 0.89133 + 0.00288 * c5;
     const double t3 = s2 * c3 + c2 * s3;
@@ -1091,14 +1212,13 @@ static inline void puma560_gravity_torques(const double q[6], double g[6]) {
 
 /* gravity_torques: g(q), with joint springs. */
 static inline void puma560_gravity_torques_f32(const float q[6], float g[6]) {
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = 0.025375f - 0.00288f * (c4 * s5);
     const float t2 = 0.89133f + 0.00288f * c5;
     const float t3 = s2 * c3 + c2 * s3;
@@ -1123,14 +1243,13 @@ static inline void puma560_bias_torques(const double q[6], const double qd[6], d
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double t3 = s2 * qd1;
@@ -1207,14 +1326,13 @@ static inline void puma560_bias_torques_f32(const float q[6], const float qd[6],
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float t3 = s2 * qd1;
@@ -1297,14 +1415,13 @@ static inline void puma560_inverse_dynamics(const double q[6], const double qd[6
     const double qdd4 = qdd[3];
     const double qdd5 = qdd[4];
     const double qdd6 = qdd[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double t3 = s2 * qd1;
@@ -1401,14 +1518,13 @@ static inline void puma560_inverse_dynamics_f32(const float q[6], const float qd
     const float qdd4 = qdd[3];
     const float qdd5 = qdd[4];
     const float qdd6 = qdd[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float t3 = s2 * qd1;
@@ -1521,14 +1637,13 @@ static inline double puma560_kinetic_energy(const double q[6], const double qd[6
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s2 * qd1;
     const double t2 = c2 * qd1;
     const double t3 = s3 * t2;
@@ -1558,14 +1673,13 @@ static inline float puma560_kinetic_energy_f32(const float q[6], const float qd[
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s2 * qd1;
     const float t2 = c2 * qd1;
     const float t3 = s3 * t2;
@@ -1589,13 +1703,13 @@ static inline float puma560_kinetic_energy_f32(const float q[6], const float qd[
 
 /* potential_energy: The potential energy. */
 static inline double puma560_potential_energy(const double q[6]) {
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    const double c4 = dynamics_cos(q[3]);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double p = -(-37.2347379 * s2 - 1.024164 * c2 - 154.550796435 + (-0.24892875 * t1 - 8.7439473 * t2) - 0.0282528 * (c5 * t2 - s5 * (c4 * t1))); /* potential energy */
@@ -1604,13 +1718,13 @@ static inline double puma560_potential_energy(const double q[6]) {
 
 /* potential_energy: The potential energy. */
 static inline float puma560_potential_energy_f32(const float q[6]) {
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    const float c4 = dynamics_cos_f32(q[3]);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float p = -(-37.234737f * s2 - 1.024164f * c2 - 154.5508f + (-0.24892876f * t1 - 8.743947f * t2) - 0.0282528f * (c5 * t2 - s5 * (c4 * t1))); /* potential energy */
@@ -1619,18 +1733,18 @@ static inline float puma560_potential_energy_f32(const float q[6]) {
 
 /* hand_pose: The hand frame's pose, A1 ... An (and the tool). */
 static inline void puma560_hand_pose(const double q[6], double hand[3][4]) {
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
-    double s6, c6;
-    dynamics_sincos(q[5], &s6, &c6);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
+    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    double sines2_[4], cosines2_[4];
+    dynamics_sincos4(angles2_, sines2_, cosines2_);
+    const double s5 = sines2_[0], c5 = cosines2_[0];
+    const double s6 = sines2_[1], c6 = cosines2_[1];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double t3 = c4 * t1;
@@ -1678,18 +1792,18 @@ static inline void puma560_hand_pose(const double q[6], double hand[3][4]) {
 
 /* hand_pose: The hand frame's pose, A1 ... An (and the tool). */
 static inline void puma560_hand_pose_f32(const float q[6], float hand[3][4]) {
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
-    float s6, c6;
-    dynamics_sincos_f32(q[5], &s6, &c6);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
+    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    float sines2_[4], cosines2_[4];
+    dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
+    const float s5 = sines2_[0], c5 = cosines2_[0];
+    const float s6 = sines2_[1], c6 = cosines2_[1];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float t3 = c4 * t1;
@@ -1737,18 +1851,18 @@ static inline void puma560_hand_pose_f32(const float q[6], float hand[3][4]) {
 
 /* link_poses: The pose of every link frame, A1 ... Ai. */
 static inline void puma560_link_poses(const double q[6], double link[6][3][4]) {
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
-    double s6, c6;
-    dynamics_sincos(q[5], &s6, &c6);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
+    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    double sines2_[4], cosines2_[4];
+    dynamics_sincos4(angles2_, sines2_, cosines2_);
+    const double s5 = sines2_[0], c5 = cosines2_[0];
+    const double s6 = sines2_[1], c6 = cosines2_[1];
     const double link3_3_1 = s2 * c3 + c2 * s3; /* link 3 pose [R | p], row 3 column 1 */
     const double link3_3_3 = c2 * c3 - s2 * s3; /* link 3 pose [R | p], row 3 column 3 */
     const double link4_3_1 = c4 * link3_3_1; /* link 4 pose [R | p], row 3 column 1 */
@@ -1869,18 +1983,18 @@ static inline void puma560_link_poses(const double q[6], double link[6][3][4]) {
 
 /* link_poses: The pose of every link frame, A1 ... Ai. */
 static inline void puma560_link_poses_f32(const float q[6], float link[6][3][4]) {
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
-    float s6, c6;
-    dynamics_sincos_f32(q[5], &s6, &c6);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
+    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    float sines2_[4], cosines2_[4];
+    dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
+    const float s5 = sines2_[0], c5 = cosines2_[0];
+    const float s6 = sines2_[1], c6 = cosines2_[1];
     const float link3_3_1 = s2 * c3 + c2 * s3; /* link 3 pose [R | p], row 3 column 1 */
     const float link3_3_3 = c2 * c3 - s2 * s3; /* link 3 pose [R | p], row 3 column 3 */
     const float link4_3_1 = c4 * link3_3_1; /* link 4 pose [R | p], row 3 column 1 */
@@ -2001,14 +2115,13 @@ static inline void puma560_link_poses_f32(const float q[6], float link[6][3][4])
 
 /* hand_jacobian_in_base: The hand's Jacobian in the base frame. */
 static inline void puma560_hand_jacobian_in_base(const double q[6], double jb[6][6]) {
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
     double s5, c5;
     dynamics_sincos(q[4], &s5, &c5);
     const double t1 = s2 * c3 + c2 * s3;
@@ -2081,14 +2194,13 @@ static inline void puma560_hand_jacobian_in_base(const double q[6], double jb[6]
 
 /* hand_jacobian_in_base: The hand's Jacobian in the base frame. */
 static inline void puma560_hand_jacobian_in_base_f32(const float q[6], float jb[6][6]) {
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
     float s5, c5;
     dynamics_sincos_f32(q[4], &s5, &c5);
     const float t1 = s2 * c3 + c2 * s3;
@@ -2161,18 +2273,18 @@ static inline void puma560_hand_jacobian_in_base_f32(const float q[6], float jb[
 
 /* hand_jacobian_in_hand: The book's HJ, the hand's Jacobian in the hand frame. */
 static inline void puma560_hand_jacobian_in_hand(const double q[6], double jh[6][6]) {
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
-    double s6, c6;
-    dynamics_sincos(q[5], &s6, &c6);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
+    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    double sines2_[4], cosines2_[4];
+    dynamics_sincos4(angles2_, sines2_, cosines2_);
+    const double s5 = sines2_[0], c5 = cosines2_[0];
+    const double s6 = sines2_[1], c6 = cosines2_[1];
     const double t1 = c4 * s5;
     const double jh6_2 = s4 * s5; /* HJ62, hand frame (rows dx dy dz rx ry rz) */
     const double t2 = -(c3 * t1) - s3 * c5;
@@ -2255,18 +2367,18 @@ static inline void puma560_hand_jacobian_in_hand(const double q[6], double jh[6]
 
 /* hand_jacobian_in_hand: The book's HJ, the hand's Jacobian in the hand frame. */
 static inline void puma560_hand_jacobian_in_hand_f32(const float q[6], float jh[6][6]) {
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
-    float s6, c6;
-    dynamics_sincos_f32(q[5], &s6, &c6);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
+    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    float sines2_[4], cosines2_[4];
+    dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
+    const float s5 = sines2_[0], c5 = cosines2_[0];
+    const float s6 = sines2_[1], c6 = cosines2_[1];
     const float t1 = c4 * s5;
     const float jh6_2 = s4 * s5; /* HJ62, hand frame (rows dx dy dz rx ry rz) */
     const float t2 = -(c3 * t1) - s3 * c5;
@@ -2355,14 +2467,13 @@ static inline void puma560_hand_acceleration_bias_in_base(const double q[6], con
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
     double s5, c5;
     dynamics_sincos(q[4], &s5, &c5);
     const double t1 = s2 * c3 + c2 * s3;
@@ -2440,14 +2551,13 @@ static inline void puma560_hand_acceleration_bias_in_base_f32(const float q[6], 
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
     float s5, c5;
     dynamics_sincos_f32(q[4], &s5, &c5);
     const float t1 = s2 * c3 + c2 * s3;
@@ -2525,18 +2635,18 @@ static inline void puma560_hand_acceleration_bias_in_hand(const double q[6], con
     const double qd4 = qd[3];
     const double qd5 = qd[4];
     const double qd6 = qd[5];
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
-    double s6, c6;
-    dynamics_sincos(q[5], &s6, &c6);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
+    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    double sines2_[4], cosines2_[4];
+    dynamics_sincos4(angles2_, sines2_, cosines2_);
+    const double s5 = sines2_[0], c5 = cosines2_[0];
+    const double s6 = sines2_[1], c6 = cosines2_[1];
     const double t1 = s2 * c3 + c2 * s3;
     const double t2 = c2 * c3 - s2 * s3;
     const double t3 = c4 * t1;
@@ -2630,18 +2740,18 @@ static inline void puma560_hand_acceleration_bias_in_hand_f32(const float q[6], 
     const float qd4 = qd[3];
     const float qd5 = qd[4];
     const float qd6 = qd[5];
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
-    float s6, c6;
-    dynamics_sincos_f32(q[5], &s6, &c6);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
+    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    float sines2_[4], cosines2_[4];
+    dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
+    const float s5 = sines2_[0], c5 = cosines2_[0];
+    const float s6 = sines2_[1], c6 = cosines2_[1];
     const float t1 = s2 * c3 + c2 * s3;
     const float t2 = c2 * c3 - s2 * s3;
     const float t3 = c4 * t1;
@@ -2735,18 +2845,18 @@ static inline void puma560_joint_torques_for_hand_wrench(const double q[6], cons
     const double mx = wrench[3];
     const double my = wrench[4];
     const double mz = wrench[5];
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
-    double s6, c6;
-    dynamics_sincos(q[5], &s6, &c6);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
+    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    double sines2_[4], cosines2_[4];
+    dynamics_sincos4(angles2_, sines2_, cosines2_);
+    const double s5 = sines2_[0], c5 = cosines2_[0];
+    const double s6 = sines2_[1], c6 = cosines2_[1];
     const double t1 = c4 * s5;
     const double t2 = s4 * s5;
     const double t3 = -(c3 * t1) - s3 * c5;
@@ -2799,18 +2909,18 @@ static inline void puma560_joint_torques_for_hand_wrench_f32(const float q[6], c
     const float mx = wrench[3];
     const float my = wrench[4];
     const float mz = wrench[5];
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
-    float s6, c6;
-    dynamics_sincos_f32(q[5], &s6, &c6);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
+    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    float sines2_[4], cosines2_[4];
+    dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
+    const float s5 = sines2_[0], c5 = cosines2_[0];
+    const float s6 = sines2_[1], c6 = cosines2_[1];
     const float t1 = c4 * s5;
     const float t2 = s4 * s5;
     const float t3 = -(c3 * t1) - s3 * c5;
@@ -2863,14 +2973,13 @@ static inline void puma560_joint_torques_for_base_wrench(const double q[6], cons
     const double mx = wrench[3];
     const double my = wrench[4];
     const double mz = wrench[5];
-    double s1, c1;
-    dynamics_sincos(q[0], &s1, &c1);
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
+    const double angles1_[4] = {q[0], q[1], q[2], q[3]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s1 = sines1_[0], c1 = cosines1_[0];
+    const double s2 = sines1_[1], c2 = cosines1_[1];
+    const double s3 = sines1_[2], c3 = cosines1_[2];
+    const double s4 = sines1_[3], c4 = cosines1_[3];
     double s5, c5;
     dynamics_sincos(q[4], &s5, &c5);
     const double t1 = s2 * c3 + c2 * s3;
@@ -2913,14 +3022,13 @@ static inline void puma560_joint_torques_for_base_wrench_f32(const float q[6], c
     const float mx = wrench[3];
     const float my = wrench[4];
     const float mz = wrench[5];
-    float s1, c1;
-    dynamics_sincos_f32(q[0], &s1, &c1);
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
+    const float angles1_[4] = {q[0], q[1], q[2], q[3]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s1 = sines1_[0], c1 = cosines1_[0];
+    const float s2 = sines1_[1], c2 = cosines1_[1];
+    const float s3 = sines1_[2], c3 = cosines1_[2];
+    const float s4 = sines1_[3], c4 = cosines1_[3];
     float s5, c5;
     dynamics_sincos_f32(q[4], &s5, &c5);
     const float t1 = s2 * c3 + c2 * s3;
@@ -2957,14 +3065,13 @@ static inline void puma560_joint_torques_for_base_wrench_f32(const float q[6], c
 
 /* mass_matrix_inverse: M(q)^-1, through the LDL^T of M. */
 static inline int puma560_mass_matrix_inverse(const double q[6], double mi[6][6]) {
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s5 * c5;
     const double t2 = 0.00024216 - 0.00020216 * (s5 * s5);
     const double t3 = 0.0003 + t2;
@@ -3137,14 +3244,13 @@ static inline int puma560_mass_matrix_inverse(const double q[6], double mi[6][6]
 
 /* mass_matrix_inverse: M(q)^-1, through the LDL^T of M. */
 static inline int puma560_mass_matrix_inverse_f32(const float q[6], float mi[6][6]) {
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s5 * c5;
     const float t2 = 0.00024216f - 0.00020216f * (s5 * s5);
     const float t3 = 0.0003f + t2;
@@ -3329,14 +3435,13 @@ static inline int puma560_forward_dynamics(const double q[6], const double qd[6]
     const double tau4 = tau[3];
     const double tau5 = tau[4];
     const double tau6 = tau[5];
-    double s2, c2;
-    dynamics_sincos(q[1], &s2, &c2);
-    double s3, c3;
-    dynamics_sincos(q[2], &s3, &c3);
-    double s4, c4;
-    dynamics_sincos(q[3], &s4, &c4);
-    double s5, c5;
-    dynamics_sincos(q[4], &s5, &c5);
+    const double angles1_[4] = {q[1], q[2], q[3], q[4]};
+    double sines1_[4], cosines1_[4];
+    dynamics_sincos4(angles1_, sines1_, cosines1_);
+    const double s2 = sines1_[0], c2 = cosines1_[0];
+    const double s3 = sines1_[1], c3 = cosines1_[1];
+    const double s4 = sines1_[2], c4 = cosines1_[2];
+    const double s5 = sines1_[3], c5 = cosines1_[3];
     const double t1 = s5 * c5;
     const double t2 = 0.00024216 - 0.00020216 * (s5 * s5);
     const double t3 = 0.0003 + t2;
@@ -3512,14 +3617,13 @@ static inline int puma560_forward_dynamics_f32(const float q[6], const float qd[
     const float tau4 = tau[3];
     const float tau5 = tau[4];
     const float tau6 = tau[5];
-    float s2, c2;
-    dynamics_sincos_f32(q[1], &s2, &c2);
-    float s3, c3;
-    dynamics_sincos_f32(q[2], &s3, &c3);
-    float s4, c4;
-    dynamics_sincos_f32(q[3], &s4, &c4);
-    float s5, c5;
-    dynamics_sincos_f32(q[4], &s5, &c5);
+    const float angles1_[4] = {q[1], q[2], q[3], q[4]};
+    float sines1_[4], cosines1_[4];
+    dynamics_sincos4_f32(angles1_, sines1_, cosines1_);
+    const float s2 = sines1_[0], c2 = cosines1_[0];
+    const float s3 = sines1_[1], c3 = cosines1_[1];
+    const float s4 = sines1_[2], c4 = cosines1_[2];
+    const float s5 = sines1_[3], c5 = cosines1_[3];
     const float t1 = s5 * c5;
     const float t2 = 0.00024216f - 0.00020216f * (s5 * s5);
     const float t3 = 0.0003f + t2;

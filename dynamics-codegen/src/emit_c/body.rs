@@ -212,17 +212,27 @@ impl<'a> Writer<'a> {
         value
     }
 
-    /// `double s2, c2; dynamics_sincos(q[1], &s2, &c2);` for each joint whose sine and
-    /// cosine are read (`const double s2 = dynamics_sin(q[1]);` for one of them), with its
-    /// angle offset where it has one: one range reduction for both.
+    /// The sines and cosines of the joints that read them, four joints a call as the Rust
+    /// emission groups them (five as four and one):
+    ///
+    /// ```c
+    /// const double angles1_[4] = {q[1], q[2], q[3], q[4] + 0.3};
+    /// double sines1_[4], cosines1_[4];
+    /// dynamics_sincos4(angles1_, sines1_, cosines1_);
+    /// const double s2 = sines1_[0], c2 = cosines1_[0];
+    /// ```
+    ///
+    /// a group of two or three padded with `1.0` (an angle of the kernels' fast range, whose
+    /// values nothing reads); a joint on its own, `double s6, c6; dynamics_sincos(q[5], &s6,
+    /// &c6);`, or `const double s6 = dynamics_sin(q[5]);` for its sine alone.
     fn sines_and_cosines(&self, lines: &mut Vec<String>) {
-        let ty = self.precision.c_type();
         let read = |v: Var| {
             self.eq
                 .graph
                 .nodes()
                 .any(|(id, node)| node == Node::Var(v) && self.needed[id.index()])
         };
+        let mut joints = Vec::new();
         for i in 0..self.eq.dof {
             let joint = u16::try_from(i).expect("at most 16 joints");
             let (sine, cosine) = (Var::SinQ(joint), Var::CosQ(joint));
@@ -230,23 +240,80 @@ impl<'a> Writer<'a> {
                 Some(offset) => format!("q[{i}] + {}", self.expr(offset, Place::AddRight)),
                 None => format!("q[{i}]"),
             };
-            let (s, c) = (self.var_name(sine), self.var_name(cosine));
-            match (read(sine), read(cosine)) {
-                (true, true) => {
-                    lines.push(format!("{ty} {s}, {c};"));
-                    let sincos = self.precision.trig("sincos");
-                    lines.push(format!("{sincos}({angle}, &{s}, &{c});"));
-                }
-                (true, false) => {
-                    let sin = self.precision.trig("sin");
-                    lines.push(format!("const {ty} {s} = {sin}({angle});"));
-                }
-                (false, true) => {
-                    let cos = self.precision.trig("cos");
-                    lines.push(format!("const {ty} {c} = {cos}({angle});"));
-                }
-                (false, false) => {}
+            let s = read(sine).then(|| self.var_name(sine));
+            let c = read(cosine).then(|| self.var_name(cosine));
+            if s.is_some() || c.is_some() {
+                joints.push((angle, s, c));
             }
+        }
+        let mut rest = &joints[..];
+        let mut groups = 0;
+        while !rest.is_empty() {
+            let width = if rest.len() == 5 {
+                4
+            } else {
+                rest.len().min(4)
+            };
+            let (group, tail) = rest.split_at(width);
+            rest = tail;
+            if let [(angle, s, c)] = group {
+                self.one_sine_and_cosine(angle, s.as_deref(), c.as_deref(), lines);
+            } else {
+                groups += 1;
+                self.four_sines_and_cosines(groups, group, lines);
+            }
+        }
+    }
+
+    /// The sine and cosine of one joint's `angle`, as named (`None`: not read).
+    fn one_sine_and_cosine(
+        &self,
+        angle: &str,
+        s: Option<&str>,
+        c: Option<&str>,
+        lines: &mut Vec<String>,
+    ) {
+        let p = self.precision;
+        let ty = p.c_type();
+        match (s, c) {
+            (Some(s), Some(c)) => {
+                lines.push(format!("{ty} {s}, {c};"));
+                lines.push(format!("{}({angle}, &{s}, &{c});", p.trig("sincos")));
+            }
+            (Some(s), None) => lines.push(format!("const {ty} {s} = {}({angle});", p.trig("sin"))),
+            (None, Some(c)) => lines.push(format!("const {ty} {c} = {}({angle});", p.trig("cos"))),
+            (None, None) => {}
+        }
+    }
+
+    /// Group `k`'s sines and cosines, two to four joints, in one `dynamics_sincos4`.
+    fn four_sines_and_cosines(
+        &self,
+        k: usize,
+        group: &[(String, Option<String>, Option<String>)],
+        lines: &mut Vec<String>,
+    ) {
+        let p = self.precision;
+        let ty = p.c_type();
+        let mut angles: Vec<String> = group.iter().map(|(angle, _, _)| angle.clone()).collect();
+        angles.resize(4, p.literal(1.0));
+        let (a, s, c) = (
+            format!("angles{k}_"),
+            format!("sines{k}_"),
+            format!("cosines{k}_"),
+        );
+        lines.push(format!("const {ty} {a}[4] = {{{}}};", angles.join(", ")));
+        lines.push(format!("{ty} {s}[4], {c}[4];"));
+        lines.push(format!("{}({a}, {s}, {c});", p.trig("sincos4")));
+        for (lane, (_, sine, cosine)) in group.iter().enumerate() {
+            let reads: Vec<String> = [(sine, &s), (cosine, &c)]
+                .into_iter()
+                .filter_map(|(name, array)| {
+                    name.as_ref()
+                        .map(|name| format!("{name} = {array}[{lane}]"))
+                })
+                .collect();
+            lines.push(format!("const {ty} {};", reads.join(", ")));
         }
     }
 

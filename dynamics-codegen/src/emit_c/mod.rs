@@ -73,7 +73,7 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text.push_str(&format!(
         "#ifndef {guard}\n#define {guard}\n\n#include <math.h>\n\n"
     ));
-    text.push_str(trig::TRIG);
+    text.push_str(&trig::trig());
     text.push('\n');
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
     if reads_sign(eq, &functions) {
