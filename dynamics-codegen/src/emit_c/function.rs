@@ -60,7 +60,7 @@ pub fn functions(eq: &Equations, prefix: &str) -> Vec<Function> {
             continue;
         }
         let shape = method.shape(eq);
-        let Some((outputs, returns)) = outputs(method, &shape, eq.dof) else {
+        let Some((outputs, returns)) = outputs(method, &shape) else {
             continue;
         };
         let arguments = method
@@ -85,7 +85,7 @@ pub fn functions(eq: &Equations, prefix: &str) -> Vec<Function> {
 
 /// The arrays of a result of `shape` and what the function returns; `None` for a result
 /// with no elements (C has no arrays of length zero).
-fn outputs(method: Method, shape: &Shape, n: usize) -> Option<(Vec<Array>, Returns)> {
+fn outputs(method: Method, shape: &Shape) -> Option<(Vec<Array>, Returns)> {
     // The result's array is named as its elements are (`m` for `m1_2`), unless an argument
     // has that name.
     let name = if method
@@ -113,13 +113,13 @@ fn outputs(method: Method, shape: &Shape, n: usize) -> Option<(Vec<Array>, Retur
         }
         Shape::SolvedVector { vector, .. } => (vec![(name, vec![vector.len()])], Returns::Status),
         Shape::SolvedMatrix { matrix, .. } => (vec![(name, dims_of(matrix))], Returns::Status),
-        Shape::SolvedStack { stack, .. } => {
+        Shape::SolvedStack { vector, stack, .. } => {
             let mut dims = vec![stack.len()];
             dims.extend(stack.first().map_or(vec![0, 0], |m| dims_of(m)));
             // The vector of a solved stack is the solution itself (`q̈` beside its
             // derivatives).
             (
-                vec![("value".to_owned(), vec![n]), (name, dims)],
+                vec![("value".to_owned(), vec![vector.len()]), (name, dims)],
                 Returns::Status,
             )
         }
