@@ -1,4 +1,5 @@
-//! `dynamics emit --lang c`: the headers of PUMA 560, the Panda and a two-link arm with friction,
+//! `dynamics emit --lang c`: the headers of PUMA 560, the Panda, four URDF robots and a two-link
+//! arm with friction,
 //! compiled with a driver by every compiler found (gcc and clang as C99, `-Wall -Wextra
 //! -Wpedantic -Werror`, plus `-Wdouble-promotion` so that the `float` functions never widen;
 //! g++ as C++17), and run at the states of the reference data. What the driver prints is
@@ -9,7 +10,8 @@
 //!   `double` results bit for bit, compiled without contraction into multiply-adds;
 //! * τ, M, g, C q̇ + g, C q̇, the energies, the hand's pose and Jacobian, and the forward
 //!   dynamics against Pinocchio's values (`tests/data/reference/data/puma560.json`,
-//!   `tests/data/panda/data.json`), to 1e-10 of each result's largest element;
+//!   `tests/data/panda/data.json`, and for the UR10, Panda, Z1 and SO-101 URDF files
+//!   `tests/data/urdf/`, whose friction τ adds), to 1e-10 of each result's largest element;
 //! * friction against its formula in the description file, at rest and in motion.
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
@@ -17,7 +19,8 @@
 mod c_support;
 
 use c_support::{
-    check_against_graph, compile_and_run, printed, robot, root, scaled_error, Printed, Robot, State,
+    check_against_graph, compile_and_run, compile_and_run_builds, printed, robot, root,
+    scaled_error, urdf_robot, Printed, Robot, State,
 };
 use dynamics_codegen::method::Method;
 use serde_json::Value;
@@ -40,10 +43,24 @@ fn samples(data: &str) -> (Vec<Value>, Vec<State>) {
             q: vector(&s["q"]),
             qd: vector(&s["qd"]),
             qdd: vector(&s["qdd"]),
-            tau: vector(&s["tau"]),
+            tau: applied(s),
         })
         .collect();
     (samples, states)
+}
+
+/// The torques that give the sample's q̈: its τ, plus the joints' friction where the data give
+/// it apart (the URDF robots'), which the robot's τ includes.
+fn applied(sample: &Value) -> Vec<f64> {
+    let tau = flat(&sample["tau"], usize::MAX);
+    match sample.get("friction") {
+        Some(f) => tau
+            .iter()
+            .zip(flat(f, usize::MAX))
+            .map(|(t, f)| t + f)
+            .collect(),
+        None => tau,
+    }
 }
 
 /// The elements of a JSON vector or matrix (its first `rows` rows), rows first.
@@ -66,7 +83,7 @@ fn check_against_pinocchio(robot: &Robot, samples: &[Value], out: &Printed, cc: 
         let g = flat(&sample["g"], all);
         let h = flat(&sample["h"], all);
         let table = [
-            (Method::InverseDynamics, flat(&sample["tau"], all), 1e-10),
+            (Method::InverseDynamics, applied(sample), 1e-10),
             (Method::MassMatrix, flat(&sample["M"], all), 1e-10),
             (Method::GravityTorques, g.clone(), 1e-10),
             (Method::BiasTorques, h.clone(), 1e-10),
@@ -103,18 +120,23 @@ fn check_against_pinocchio(robot: &Robot, samples: &[Value], out: &Printed, cc: 
     }
 }
 
-/// Checks `robot`'s header against the graph and Pinocchio's reference `data`.
+/// Checks `file`'s header against the graph and Pinocchio's reference `data`, built every way.
 fn check(file: &str, data: &str) {
-    let robot = robot(file);
+    check_robot(&robot(file), data, true);
+}
+
+/// Checks `robot`'s header against the graph and Pinocchio's reference `data`, built every way
+/// or only with the first compiler.
+fn check_robot(robot: &Robot, data: &str, every: bool) {
     let (samples, states) = samples(data);
-    let runs = compile_and_run(&robot, &states);
+    let runs = compile_and_run_builds(robot, &states, every);
     if runs.is_empty() {
-        eprintln!("no C compiler (gcc, clang, g++) found: the C header of {file} is not checked");
+        eprintln!("no C compiler (gcc, clang, g++) found: the C header of {data} is not checked");
         return;
     }
     for run in &runs {
-        check_against_graph(&robot, &states, run);
-        check_against_pinocchio(&robot, &samples, &run.printed, &run.label);
+        check_against_graph(robot, &states, run);
+        check_against_pinocchio(robot, &samples, &run.printed, &run.label);
     }
 }
 
@@ -129,6 +151,43 @@ fn puma560_header_matches_pinocchio() {
 #[test]
 fn panda_header_matches_pinocchio() {
     check("robots/panda.toml", "tests/data/panda/data.json");
+}
+
+/// The URDF robots, lowered to their own D-H tables (angle offsets, merged fixed links, the
+/// hand at the tip link), against Pinocchio's model of the same files: the UR10, the Panda
+/// (viscous damping), the Z1 (viscous and Coulomb friction) and the SO-101 (snapped angles),
+/// with the first compiler found only (their builds every way add nothing the reference
+/// robots' do not cover).
+#[test]
+fn urdf_headers_match_pinocchio() {
+    for (file, base, tip, data) in [
+        (
+            "robots/urdf/ur10.urdf",
+            "base_link",
+            "tool0",
+            "tests/data/urdf/ur10.json",
+        ),
+        (
+            "robots/urdf/panda.urdf",
+            "panda_link0",
+            "panda_link8",
+            "tests/data/urdf/panda.json",
+        ),
+        (
+            "robots/urdf/z1.urdf",
+            "link00",
+            "link06",
+            "tests/data/urdf/z1.json",
+        ),
+        (
+            "robots/urdf/so101.urdf",
+            "base_link",
+            "gripper_link",
+            "tests/data/urdf/so101.json",
+        ),
+    ] {
+        check_robot(&urdf_robot(file, base, tip), data, false);
+    }
 }
 
 /// `robots/two_link_friction.toml`: joint 1 has `0.3 qd + 1.5 sign(qd) - 0.2`, joint 2

@@ -68,7 +68,20 @@ pub fn robot(file: &str) -> Robot {
 
 /// [`robot`] with the opt-in families `with` (`--with derivatives,regressor`).
 pub fn robot_with(file: &str, with: &[&str]) -> Robot {
+    robot_from(file, None, with)
+}
+
+/// The robot of a URDF file, the chain from `base` to `tip`.
+pub fn urdf_robot(file: &str, base: &str, tip: &str) -> Robot {
+    robot_from(file, Some((base, tip)), &[])
+}
+
+/// The robot of a description file or (with a chain) a URDF file, with the families `with`.
+fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
     let mut args = vec!["emit", "--lang", "c", file];
+    if let Some((base, tip)) = chain {
+        args.extend(["--base", base, "--tip", tip]);
+    }
     let list = with.join(",");
     if !with.is_empty() {
         args.extend(["--with", &list]);
@@ -87,7 +100,16 @@ pub fn robot_with(file: &str, with: &[&str]) -> Robot {
     // Every C toolchain reads ASCII; not all read UTF-8 in comments.
     assert!(header.is_ascii(), "the header of {file} is not ASCII");
     let text = std::fs::read_to_string(root().join(file)).expect("description file");
-    let loaded = front::load(file, &text).expect("a valid description");
+    let loaded = match chain {
+        Some((base, tip)) => {
+            let chain = front::Chain {
+                base: Some(base),
+                tip: Some(tip),
+            };
+            front::load_urdf(file, &text, chain, true).unwrap_or_else(|_| panic!("{file}"))
+        }
+        None => front::load(file, &text).expect("a valid description"),
+    };
     let mut eq = derive(&loaded.robot);
     let families = with
         .iter()
