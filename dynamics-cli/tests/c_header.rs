@@ -1,8 +1,8 @@
 //! `dynamics emit --lang c`: the headers of PUMA 560, the Panda, four URDF robots and a two-link
-//! arm with friction,
-//! compiled with a driver by every compiler found (gcc and clang as C99, `-Wall -Wextra
-//! -Wpedantic -Werror`, plus `-Wdouble-promotion` so that the `float` functions never widen;
-//! g++ as C++17), and run at the states of the reference data. What the driver prints is
+//! arm with friction, compiled with a driver by every compiler found (gcc and clang as C99,
+//! `-Wall -Wextra -Wpedantic -Werror`, plus `-Wdouble-promotion` so that the `float` functions
+//! never widen, with `<math.h>` and with `-DDYNAMICS_OWN_SINCOS`; g++ as C++17), and run at the
+//! states of the reference data. What the driver prints is
 //! checked three ways:
 //!
 //! * every function, in `double` and in `float`, against the traced graph evaluated in `f64`
