@@ -122,6 +122,19 @@ pub struct Emit {
     pub robot: RobotFile,
     #[command(flatten)]
     pub families: Families,
+    /// The language: a Rust module on the `dynamics-runtime` crate, or one header-only C99
+    /// file (`static inline` functions in `double` and `float`, no allocation, no globals)
+    #[arg(long, value_enum, default_value_t = Lang::Rust)]
+    pub lang: Lang,
+}
+
+/// The language `dynamics emit` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Lang {
+    /// A standalone Rust module, as `#[derive(Dynamics)]` generates it
+    Rust,
+    /// A header-only C99 file
+    C,
 }
 
 #[derive(Args, Debug)]

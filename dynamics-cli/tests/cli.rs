@@ -1,7 +1,8 @@
 //! The `dynamics` command end to end: `eval --json` against Pinocchio's reference data, errors
 //! in description files reported as `file:line:col`, usage errors and help (clap's), `--`,
 //! numbers without a negative zero, `stats` and `inspect`.
-//! (`emit` is checked by the golden test and compiled by the `emitted_puma560` example.)
+//! (`emit` is checked by the golden test and compiled by the `emitted_puma560` example;
+//! `emit --lang c` by `c_header.rs`.)
 
 use dynamics_reference::scaled_error;
 use serde_json::Value;
@@ -292,6 +293,10 @@ fn usage_errors() {
                 "m",
             ],
             "expected NAME=VALUE",
+        ),
+        (
+            vec!["emit", "robots/puma560.toml", "--lang", "fortran"],
+            "[possible values: rust, c]",
         ),
     ] {
         let out = dynamics(&args);

@@ -8,7 +8,9 @@
 //!   arm (`robots/articulated_3r.toml`);
 //! * `examples/emitted_puma560.rs`: `dynamics emit robots/puma560.toml`, which cargo also
 //!   compiles and runs as part of the `emitted_puma560` example, so the emitted module is
-//!   known to build.
+//!   known to build;
+//! * `tests/golden/puma560.h`: `dynamics emit --lang c robots/puma560.toml`, the C header
+//!   (which `tests/c_header.rs` compiles and checks).
 //!
 //! A stale file fails the test with a line diff. After a deliberate change, refresh them all:
 //!
@@ -72,6 +74,13 @@ fn cases() -> Vec<Case> {
     cases.push(Case {
         args: vec!["emit".into(), "robots/puma560.toml".into()],
         file: "examples/emitted_puma560.rs".into(),
+    });
+    // The C header: compiled and checked against Pinocchio by `tests/c_header.rs`.
+    cases.push(Case {
+        args: ["emit", "--lang", "c", "robots/puma560.toml"]
+            .map(String::from)
+            .to_vec(),
+        file: "dynamics-cli/tests/golden/puma560.h".into(),
     });
     cases
 }

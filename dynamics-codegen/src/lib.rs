@@ -11,11 +11,13 @@
 //! 2. [`trace`]: the algorithms of [`algo`] run on the symbolic scalar of [`symbolic`], which
 //!    builds the closed forms as one hash-consed expression graph, simplified as it is built;
 //! 3. [`emit`]: each [`Method`]'s output (`M`, `C`, `g`, `τ`, …) becomes a straight-line
-//!    function body, and the bodies the items of the derive.
+//!    function body, and the bodies the items of the derive; [`emit_c`] writes the same
+//!    outputs as a header-only C file (`dynamics emit --lang c`).
 
 pub mod algo;
 pub mod check;
 pub mod emit;
+pub mod emit_c;
 pub mod front;
 pub mod inspect;
 pub mod method;

@@ -1,8 +1,9 @@
-//! `dynamics emit ROBOT`: a standalone Rust module with the code the derive generates.
+//! `dynamics emit ROBOT`: a standalone Rust module with the code the derive generates, or
+//! (`--lang c`) a header-only C file of the same equations.
 
 use super::{field_idents, load, self_fields, type_name, Failure};
-use crate::args::Emit;
-use dynamics_codegen::{derive, generate};
+use crate::args::{Emit, Lang};
+use dynamics_codegen::{derive, emit_c, generate};
 use quote::quote;
 
 pub fn run(args: &Emit) -> Result<String, Failure> {
@@ -10,6 +11,17 @@ pub fn run(args: &Emit) -> Result<String, Failure> {
     let path = &args.robot.path;
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
+    if args.lang == Lang::C {
+        // The command that writes it again: the robot file and the families asked for.
+        let with: Vec<&str> = args.families.set().opt_in().map(|f| f.name()).collect();
+        let with = if with.is_empty() {
+            String::new()
+        } else {
+            format!(" --with {}", with.join(","))
+        };
+        let command = format!("dynamics emit --lang c {path}{with}");
+        return Ok(emit_c::header(&eq, &robot.name, &command));
+    }
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;

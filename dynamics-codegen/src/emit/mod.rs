@@ -63,6 +63,7 @@ pub(crate) use fallback::{fallback, unreachable_family};
 pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};
 pub use items::{generate, Generated, Items, MethodCode, Module};
+pub(crate) use names::output_names;
 pub use names::{
     local, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT,
     PARAMETERS,

@@ -30,7 +30,7 @@ pub fn local(name: &str) -> Ident {
 
 /// An element of a method's result.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Element {
+pub(crate) struct Element {
     method: Method,
     index: Index,
 }
@@ -46,7 +46,7 @@ enum Index {
 
 impl Element {
     /// Its local: the method's prefix and the index from 1, `m1_2`, `tau3`, `p`.
-    pub(super) fn ident(self) -> Ident {
+    pub(crate) fn ident(self) -> Ident {
         let prefix = self.method.prefix();
         local(&match self.index {
             Index::Scalar => prefix.to_owned(),
@@ -57,7 +57,7 @@ impl Element {
     }
 
     /// What it is, in the book's terms ([`Method::describe`]).
-    pub(super) fn describe(self) -> String {
+    pub(crate) fn describe(self) -> String {
         let (k, i, j) = match self.index {
             Index::Scalar => (0, 0, 0),
             Index::Vector(i) => (0, i, 0),
@@ -71,7 +71,7 @@ impl Element {
 /// The output elements of `method`, whose result is `shape`, by node, leaves (which keep
 /// their own names) left out; an element equal to an earlier one (M's lower triangle) keeps
 /// the earlier name.
-pub(super) fn output_names(
+pub(crate) fn output_names(
     shape: &Shape,
     method: Method,
     is_leaf: impl Fn(NodeId) -> bool,

@@ -1,0 +1,272 @@
+//! Expressions as C: a node written where it is read (once) or by its name, with `a + (−b)`
+//! written `a - b`, constants as exact decimal literals, and parentheses only where C's
+//! precedence needs them to keep the graph's order of evaluation.
+
+use super::body::Writer;
+use crate::symbolic::{Node, NodeId, Var, WRENCH};
+
+/// The floating-point type of a C function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Precision {
+    /// `double`: the functions named after the method.
+    Double,
+    /// `float`: the same functions with `_f32` appended.
+    Single,
+}
+
+impl Precision {
+    /// Both, in the order the header writes them.
+    pub const ALL: [Precision; 2] = [Precision::Double, Precision::Single];
+
+    /// The C type, `double` or `float`.
+    #[must_use]
+    pub fn c_type(self) -> &'static str {
+        match self {
+            Precision::Double => "double",
+            Precision::Single => "float",
+        }
+    }
+
+    /// What the function's name ends in: nothing, or `_f32`.
+    #[must_use]
+    pub fn suffix(self) -> &'static str {
+        match self {
+            Precision::Double => "",
+            Precision::Single => "_f32",
+        }
+    }
+
+    /// The `<math.h>` function `name` of this type: `tanh`, or `tanhf` (so that the `float`
+    /// code never widens to `double`).
+    pub(super) fn math(self, name: &str) -> String {
+        match self {
+            Precision::Double => name.to_owned(),
+            Precision::Single => format!("{name}f"),
+        }
+    }
+
+    /// The header's function `name` (`sin`, `cos`, `sincos`) of this type: `dynamics_sin`,
+    /// `dynamics_sin_f32` (`<math.h>`'s, or the header's own where `DYNAMICS_OWN_SINCOS` is
+    /// defined).
+    pub(super) fn trig(self, name: &str) -> String {
+        format!("dynamics_{name}{}", self.suffix())
+    }
+
+    /// `x` as a literal of this type. A `double` is printed as the Rust emission prints it
+    /// (the shortest decimal that reads back as the same `f64`, with a `.0` where it has no
+    /// point); a `float` as the `f32` nearest that `f64` (Rust's `T::from_f64`, so both
+    /// languages compute with the same constant), shortest, with an `f`.
+    #[must_use]
+    pub fn literal(self, x: f64) -> String {
+        // A literal cannot spell a non-finite value: `<math.h>` names them (of type `float`,
+        // which converts exactly to `double`).
+        if x.is_nan() {
+            return "NAN".to_owned();
+        }
+        if x.is_infinite() {
+            return if x > 0.0 { "INFINITY" } else { "-INFINITY" }.to_owned();
+        }
+        let mut text = match self {
+            Precision::Double => format!("{x}"),
+            // The nearest f32, as `f32::from_f64` rounds: the conversion is the point.
+            #[allow(clippy::cast_possible_truncation)]
+            Precision::Single => format!("{}", x as f32),
+        };
+        if !text.contains('.') {
+            text.push_str(".0");
+        }
+        if self == Precision::Single {
+            text.push('f');
+        }
+        text
+    }
+}
+
+/// Where an expression is written, which decides whether it needs parentheses.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Place {
+    /// A statement's right-hand side, or a function's argument.
+    Top,
+    /// Left of `+` or `-`.
+    AddLeft,
+    /// Right of `+` or `-`.
+    AddRight,
+    /// Left of `*` or `/`.
+    MulLeft,
+    /// Right of `*` or `/`.
+    MulRight,
+    /// Under a unary minus.
+    Unary,
+}
+
+impl Writer<'_> {
+    /// The nodes an emitted node reads, with `a + (−b)` read as `a − b`, and the angle
+    /// offset that the sine and cosine of a joint read.
+    pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
+        match self.eq.graph.node(id) {
+            Node::Add(a, b) => {
+                let (a, b) = self.as_sub(a, b).unwrap_or((a, b));
+                vec![a, b]
+            }
+            Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
+                self.eq.angle_offsets[usize::from(i)].into_iter().collect()
+            }
+            node => node.operands().collect(),
+        }
+    }
+
+    /// `(a, x)` if `a + b` is `a − x`.
+    fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
+        match (self.eq.graph.node(a), self.eq.graph.node(b)) {
+            (_, Node::Neg(x)) => Some((a, x)),
+            (Node::Neg(x), _) => Some((b, x)),
+            _ => None,
+        }
+    }
+
+    /// The magnitude of a negative constant, which a sum subtracts.
+    fn negative_constant(&self, id: NodeId) -> Option<f64> {
+        match self.eq.graph.node(id) {
+            Node::Const(c) if c.is_negative() => Some(-c.to_f64()),
+            _ => None,
+        }
+    }
+
+    /// The name a leaf is read by, as the Rust emission names it (`q2`, `qd2`, `s2`, `c2`,
+    /// `p_m2`, `fx`, `tau2`).
+    pub(super) fn var_name(&self, v: Var) -> String {
+        match v {
+            Var::Q(i) => format!("q{}", i + 1),
+            Var::Qd(i) => format!("qd{}", i + 1),
+            Var::Qdd(i) => format!("qdd{}", i + 1),
+            Var::SinQ(i) => format!("s{}", i + 1),
+            Var::CosQ(i) => format!("c{}", i + 1),
+            Var::Param(k) => format!("p_{}", self.eq.fields[usize::from(k)]),
+            Var::Wrench(k) => WRENCH[usize::from(k)].to_owned(),
+            Var::Tau(i) => format!("tau{}", i + 1),
+            // Placeholders of the regressor's and the base parameters' analyses, which no
+            // emitted output reads.
+            Var::Inertial(k) => format!("pi{}_{}", k / 10 + 1, k % 10 + 1),
+            Var::Exact(k) => format!("constant{k}"),
+        }
+    }
+
+    /// Node `id` at `place`: its name if it has one, else written out, in parentheses where
+    /// the place needs them.
+    pub(super) fn expr(&self, id: NodeId, place: Place) -> String {
+        if let Some(name) = &self.names[id.index()] {
+            return name.clone();
+        }
+        let p = self.precision;
+        let (text, wrap) = match self.eq.graph.node(id) {
+            Node::Var(v) => return self.var_name(v),
+            Node::Const(c) => {
+                let value = p.literal(c.to_f64());
+                let bare = matches!(place, Place::Top | Place::AddLeft | Place::MulLeft);
+                return if c.is_negative() && !bare {
+                    format!("({value})")
+                } else {
+                    value
+                };
+            }
+            Node::Add(a, b) => (
+                self.sum(a, b),
+                matches!(
+                    place,
+                    Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
+                ),
+            ),
+            Node::Mul(a, b) => (
+                format!(
+                    "{} * {}",
+                    self.expr(a, Place::MulLeft),
+                    self.expr(b, Place::MulRight)
+                ),
+                matches!(place, Place::MulRight | Place::Unary),
+            ),
+            Node::Recip(a) => (
+                format!("{} / {}", p.literal(1.0), self.expr(a, Place::MulRight)),
+                matches!(place, Place::MulRight | Place::Unary),
+            ),
+            Node::Neg(a) => (
+                format!("-{}", self.expr(a, Place::Unary)),
+                matches!(place, Place::AddRight | Place::MulRight | Place::Unary),
+            ),
+            Node::Sin(a) => (self.call(&p.trig("sin"), a), false),
+            Node::Cos(a) => (self.call(&p.trig("cos"), a), false),
+            Node::Tanh(a) => (self.call(&p.math("tanh"), a), false),
+            Node::Sign(a) => (self.call(&self.sign, a), false),
+        };
+        if wrap {
+            format!("({text})")
+        } else {
+            text
+        }
+    }
+
+    /// `a + b`, written `a - x` where one operand is `−x`, a negative constant or the product
+    /// of one written in place (`a - 0.7 * x` for `a + (−0.7)·x`: negation is exact, so
+    /// the value is the same).
+    fn sum(&self, a: NodeId, b: NodeId) -> String {
+        let left = |id| self.expr(id, Place::AddLeft);
+        if let Some((l, x)) = self.as_sub(a, b) {
+            return format!("{} - {}", left(l), self.expr(x, Place::AddRight));
+        }
+        match (self.subtracted(a), self.subtracted(b)) {
+            (_, Some(x)) => format!("{} - {x}", left(a)),
+            (Some(x), None) => format!("{} - {x}", left(b)),
+            (None, None) => format!("{} + {}", left(a), self.expr(b, Place::AddRight)),
+        }
+    }
+
+    /// What a sum subtracts for its operand `id`: a negative constant's magnitude, or `c * x`
+    /// for the product `(−c)·x` written in place.
+    fn subtracted(&self, id: NodeId) -> Option<String> {
+        if let Some(m) = self.negative_constant(id) {
+            return Some(self.precision.literal(m));
+        }
+        let Node::Mul(a, b) = self.eq.graph.node(id) else {
+            return None;
+        };
+        if self.names[id.index()].is_some() {
+            return None;
+        }
+        let right = |x| self.expr(x, Place::MulRight);
+        match (self.negative_constant(a), self.negative_constant(b)) {
+            (Some(m), _) => Some(format!("{} * {}", self.precision.literal(m), right(b))),
+            (None, Some(m)) => Some(format!(
+                "{} * {}",
+                self.expr(a, Place::MulLeft),
+                self.precision.literal(m)
+            )),
+            (None, None) => None,
+        }
+    }
+
+    fn call(&self, function: &str, a: NodeId) -> String {
+        format!("{function}({})", self.expr(a, Place::Top))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Precision;
+
+    #[test]
+    fn literals_are_exact_and_typed() {
+        let table = [
+            (0.1, "0.1", "0.1f"),
+            (2.0, "2.0", "2.0f"),
+            (-0.5, "-0.5", "-0.5f"),
+            (1e-5, "0.00001", "0.00001f"),
+            // The f32 nearest the f64 nearest 0.4318, printed shortest.
+            (0.4318, "0.4318", "0.4318f"),
+            (1.0 / 3.0, "0.3333333333333333", "0.33333334f"),
+            (f64::INFINITY, "INFINITY", "INFINITY"),
+        ];
+        for (x, double, single) in table {
+            assert_eq!(Precision::Double.literal(x), double);
+            assert_eq!(Precision::Single.literal(x), single);
+        }
+    }
+}

@@ -1,0 +1,172 @@
+//! C emission: the graph's outputs become one header-only C99 file (`dynamics emit --lang c`).
+//!
+//! The header has a `#define` guard, includes `<math.h>` (sine, cosine, and the `tanh` of
+//! smoothed friction), and holds `static inline` functions only: no allocation, no globals, no
+//! other header. Its sines and cosines go through `dynamics_sincos` (`trig`): `<math.h>`'s, or
+//! with `DYNAMICS_OWN_SINCOS` defined the runtime's own kernels, for targets without a libm. For every method of the families the equations hold (the method table,
+//! `crate::method`; a robot's opt-in families where it asked for them) it has a function
+//! `{robot}_{method}` in `double` and `{robot}_{method}_f32` in `float`, whose inputs are
+//! `const` arrays (`q`, `qd`, `qdd`, `tau`, a wrench; first, `params` where the robot has
+//! struct fields) and whose result goes into arrays after them (`double m[6][6]`), named as
+//! the elements are (`m` for `m1_2`), or is returned (a scalar; the `int` status of a solve with
+//! the LDLᵀ of M).
+//!
+//! It reads the same traced graph as the Rust emission (`crate::emit`) and names what it
+//! computes as that does: the joint variables and parameters read (`qd2`, `p_payload`), each
+//! joint's sine and cosine (`s2`, `c2`) computed once, the output elements (`m1_2`, `tau3`,
+//! with what they are in the book's terms as a comment). Each function is straight-line code
+//! over its own outputs' nodes only ([`crate::symbolic::Graph::live`], as marking reads them),
+//! in the graph's order: a node read more than once is a `const` local (`t4`), a node read once
+//! is written where it is read, and every constant is an exact literal (`0.4318`, `0.4318f`).
+//! The Rust emission's schedule (shared configuration functions, multiply-adds, the order of
+//! a sum's additions) is not reproduced: a C compiler inlines and contracts on its own
+//! (`-ffp-contract=fast`), and a C function stands alone.
+//!
+//! The header is ASCII: the method table's summaries, its comments, are spelled out (`q̇` as
+//! `qd`), as the element descriptions already are.
+//!
+//! By job: `expr` (expressions, literals, precisions), `body` (one function's statements),
+//! `function` (the functions and their signatures), `trig` (the sines and cosines), this file
+//! (the header around them).
+
+mod body;
+mod expr;
+mod function;
+mod trig;
+
+pub use expr::Precision;
+pub use function::{functions, Array, Function, Returns};
+
+use crate::method::{Family, Method};
+use crate::symbolic::Node;
+use crate::trace::Equations;
+use function::comment_safe;
+
+/// The prefix of a robot's C functions: its name in lower case, every character other than a
+/// letter or digit an underscore (`UR5e` → `ur5e`), `robot_` before a leading digit.
+#[must_use]
+pub fn prefix(robot: &str) -> String {
+    let name: String = robot
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    match name.chars().next() {
+        Some(c) if c.is_ascii_alphabetic() || c == '_' => name,
+        _ => format!("robot_{name}"),
+    }
+}
+
+/// The header of `eq`, the equations of the robot named `robot`; `command` is the command
+/// that wrote it (for its first line).
+#[must_use]
+pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
+    let prefix = prefix(robot);
+    let guard = format!("{}_DYNAMICS_H", prefix.to_ascii_uppercase());
+    let functions = functions(eq, &prefix);
+    let mut text = preamble(eq, robot, command);
+    text.push_str(&format!(
+        "#ifndef {guard}\n#define {guard}\n\n#include <math.h>\n\n"
+    ));
+    text.push_str(&trig::trig());
+    text.push('\n');
+    let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
+    if reads_sign(eq, &functions) {
+        for p in Precision::ALL {
+            let (ty, zero) = (p.c_type(), p.literal(0.0));
+            text.push_str(&format!(
+                "/* sign(x): -1, 0 or 1, 0 at 0 (Coulomb friction: no torque at rest). */\n\
+                 static inline {ty} {}({ty} x) {{\n    \
+                 return ({ty})((x > {zero}) - (x < {zero}));\n}}\n\n",
+                sign(p)
+            ));
+        }
+    }
+    for f in &functions {
+        text.push_str(&f.definition(eq, &sign(f.precision)));
+        text.push('\n');
+    }
+    text.push_str(&format!("#endif /* {guard} */\n"));
+    text
+}
+
+/// Whether a function reads the sign of a velocity (Coulomb friction).
+fn reads_sign(eq: &Equations, functions: &[Function]) -> bool {
+    let outputs: Vec<_> = functions
+        .iter()
+        .flat_map(|f| f.method.shape(eq).outputs())
+        .collect();
+    let live = eq.graph.live(&outputs);
+    eq.graph
+        .nodes()
+        .any(|(id, node)| live[id.index()] && matches!(node, Node::Sign(_)))
+}
+
+/// The header's opening comment: where it comes from, and the conventions of its functions.
+fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
+    let n = eq.dof;
+    let families: Vec<&str> = Family::ALL
+        .iter()
+        .filter(|&&f| {
+            Method::ALL
+                .iter()
+                .any(|&m| m.family() == f && eq.families.has(m))
+        })
+        .map(|f| f.name())
+        .collect();
+    let mut lines = vec![
+        format!("Generated by `{command}`; do not edit:"),
+        "change the description file and run it again.".to_owned(),
+        String::new(),
+        format!("The closed-form equations of motion of `{robot}` ({n} joints) in C99, as"),
+        "`#[derive(Dynamics)]` generates them in Rust: one `static inline` function per method"
+            .to_owned(),
+        format!(
+            "of the families {}, in `double`, and in `float` with",
+            families.join(", ")
+        ),
+        "`_f32` appended. No allocation, no globals; link with the math library (-lm).".to_owned(),
+        String::new(),
+        format!("q, qd, qdd and tau have {n} elements (rad or m, per s, per s^2; N m or N), a"),
+        "wrench 6 ([fx, fy, fz, mx, my, mz]). Matrices are arrays of rows, m[i][j]. Each"
+            .to_owned(),
+        "function computes all its values before it writes its outputs, which may therefore"
+            .to_owned(),
+        "alias its inputs. A function that solves with the LDL^T of M returns 0 where every"
+            .to_owned(),
+        "pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).".to_owned(),
+        "For fused multiply-adds, compile with -ffp-contract=fast on a target that has them."
+            .to_owned(),
+        "Sines and cosines are <math.h>'s or, with DYNAMICS_OWN_SINCOS defined before the"
+            .to_owned(),
+        "first such header, the header's own (the Rust runtime's kernels: no libm needed but"
+            .to_owned(),
+        "for the tanh of smoothed friction; four joints at a time in vector lanes where the"
+            .to_owned(),
+        "compiler vectorizes them, as gcc -O2 -march=native does on AVX2).".to_owned(),
+    ];
+    if !eq.fields.is_empty() {
+        lines.push(String::new());
+        lines.push(format!(
+            "The robot's parameters are each function's first argument, `params[{}]`:",
+            eq.fields.len()
+        ));
+        for (k, field) in eq.fields.iter().enumerate() {
+            lines.push(format!("  params[{k}] = {field}"));
+        }
+    }
+    let mut text = "/*\n".to_owned();
+    for line in lines {
+        let line = comment_safe(&line);
+        text.push_str(if line.is_empty() { " *" } else { " * " });
+        text.push_str(&line);
+        text.push('\n');
+    }
+    text.push_str(" */\n");
+    text
+}
