@@ -335,7 +335,8 @@ impl<'a> Writer<'a> {
             Shape::Scalar(_) => vec![],
             Shape::Vector(v) | Shape::SolvedVector { vector: v, .. } => vec![vector(v)],
             Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => vec![matrix(m, "")],
-            Shape::Stack(s) => vec![stack(s)],
+            // The C computes the derivatives column by column, from their nodes.
+            Shape::Stack(s) | Shape::Lanes { stack: s, .. } => vec![stack(s)],
             Shape::SolvedStack {
                 vector: v,
                 stack: s,

@@ -106,7 +106,7 @@ fn outputs(method: Method, shape: &Shape) -> Option<(Vec<Array>, Returns)> {
         Shape::Scalar(_) => (vec![], Returns::Value),
         Shape::Vector(v) => (vec![(name, vec![v.len()])], Returns::Nothing),
         Shape::Matrix(m) => (vec![(name, dims_of(m))], Returns::Nothing),
-        Shape::Stack(s) => {
+        Shape::Stack(s) | Shape::Lanes { stack: s, .. } => {
             let mut dims = vec![s.len()];
             dims.extend(s.first().map_or(vec![0, 0], |m| dims_of(m)));
             (vec![(name, dims)], Returns::Nothing)
