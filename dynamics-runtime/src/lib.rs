@@ -74,6 +74,7 @@ pub mod lanes;
 pub mod nalgebra;
 mod pose;
 mod real;
+mod scalars;
 pub mod statics;
 mod tangent;
 mod trig;

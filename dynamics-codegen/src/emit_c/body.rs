@@ -7,27 +7,12 @@
 //! expression traced after the joint's sine.
 
 use super::expr::{Place, Precision};
+// The writer is declared with the expressions, which this file's statements are made of.
+pub(super) use super::expr::Writer;
 use crate::emit::output_names;
 use crate::method::Method;
 use crate::symbolic::{Node, NodeId, Var};
 use crate::trace::{Equations, Shape};
-
-/// Writes one function's body.
-pub(super) struct Writer<'a> {
-    pub(super) eq: &'a Equations,
-    pub(super) precision: Precision,
-    /// The name of the header's sign function (Coulomb friction) in this precision.
-    pub(super) sign: String,
-    /// How many times each needed node is read (an output counts once).
-    uses: Vec<u32>,
-    /// Whether each node is read, directly or not, by an output.
-    needed: Vec<bool>,
-    /// The local each bound node is read by.
-    pub(super) names: Vec<Option<String>>,
-    /// What a named output element is, for its comment.
-    comments: Vec<Option<String>>,
-    temporaries: usize,
-}
 
 /// A written body, and which inputs it reads.
 pub(super) struct Body {

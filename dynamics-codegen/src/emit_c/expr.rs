@@ -2,8 +2,25 @@
 //! written `a - b`, constants as exact decimal literals, and parentheses only where C's
 //! precedence needs them to keep the graph's order of evaluation.
 
-use super::body::Writer;
 use crate::symbolic::{Node, NodeId, Var, WRENCH};
+use crate::trace::Equations;
+
+/// Writes one function's body: its expressions here, its statements in `body.rs`.
+pub(super) struct Writer<'a> {
+    pub(super) eq: &'a Equations,
+    pub(super) precision: Precision,
+    /// The name of the header's sign function (Coulomb friction) in this precision.
+    pub(super) sign: String,
+    /// How many times each needed node is read (an output counts once).
+    pub(super) uses: Vec<u32>,
+    /// Whether each node is read, directly or not, by an output.
+    pub(super) needed: Vec<bool>,
+    /// The local each bound node is read by.
+    pub(super) names: Vec<Option<String>>,
+    /// What a named output element is, for its comment.
+    pub(super) comments: Vec<Option<String>>,
+    pub(super) temporaries: usize,
+}
 
 /// The floating-point type of a C function.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
