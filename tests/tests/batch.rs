@@ -247,7 +247,7 @@ fn inputs_of_another_length_panic() {
 #[test]
 fn threads_give_the_same_bits() {
     use dynamics_runtime::InParallel;
-    for len in [0, 5, 1_003, 4_100] {
+    for len in [0, 5, 1_003, 4_100, 9_001] {
         let (q, qd, qdd) = (
             states::<7>(len, 17),
             states::<7>(len, 18),

@@ -4,8 +4,8 @@
 //! sequential `_batch` method does. Each state's result is the same bits either way: a state is
 //! in the same lanes of the same group (groups start at multiples of the lane count in both).
 //!
-//! Below a few hundred states the threads cost more than they save; such batches run on the
-//! calling thread.
+//! A batch of up to [`MIN_CHUNK`] states runs on the calling thread: waking the pool's threads
+//! costs more than they save on it.
 
 use super::{check_count, drive, lanes, BatchScalar, States, StatesMut};
 use rayon::prelude::*;
@@ -13,9 +13,9 @@ use std::vec::Vec;
 // The result table's types name these.
 use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose};
 
-/// The smallest chunk handed to a thread, in states: enough work (a few microseconds on the
-/// cheapest methods) to pay for the hand-over.
-const MIN_CHUNK: usize = 128;
+/// The smallest chunk handed to a thread, in states: enough work (about 15 µs on the cheapest
+/// methods) to pay for waking a pool thread, which took longer than 128 states of τ.
+const MIN_CHUNK: usize = 1024;
 
 /// A robot whose `_batch` methods run on rayon's threads:
 /// `InParallel(&robot).inverse_dynamics_batch(&q, &qd, &qdd, &mut tau)`.
@@ -190,9 +190,9 @@ mod tests {
 
     #[test]
     fn chunks_are_whole_groups_and_not_too_small() {
-        assert_eq!(chunk_size::<4>(100, 2), 128);
-        assert_eq!(chunk_size::<4>(10_000, 2), 1_252);
-        assert_eq!(chunk_size::<8>(10_001, 2), 1_256);
+        assert_eq!(chunk_size::<4>(100, 2), 1_024);
+        assert_eq!(chunk_size::<4>(20_000, 2), 2_500);
+        assert_eq!(chunk_size::<8>(20_001, 2), 2_504);
         assert_eq!(chunk_size::<4>(10_000, 0), 2_500);
     }
 }
