@@ -4,6 +4,8 @@
 
 #![allow(dead_code)] // each test file uses its part
 
+mod batch;
+
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
 use dynamics_codegen::symbolic::{NodeId, Var};
@@ -138,7 +140,7 @@ pub fn c_array(values: &[f64]) -> String {
 pub fn driver(robot: &Robot, states: &[State]) -> String {
     let n = robot.eq.dof;
     let mut c = format!(
-        "#include <stdio.h>\n#include \"{}.h\"\n\n\
+        "#include <stdio.h>\n#define DYNAMICS_BATCH\n#include \"{}.h\"\n\n\
          static void show(const char *f, int s, int r, const double *x, int n) {{\n    \
          int i;\n    printf(\"%s %d %d\", f, s, r);\n    \
          for (i = 0; i < n; ++i) printf(\" %.17g\", x[i]);\n    printf(\"\\n\");\n}}\n\n\
@@ -181,7 +183,9 @@ pub fn driver(robot: &Robot, states: &[State]) -> String {
     for f in &robot.functions {
         c.push_str(&call(f));
     }
-    c.push_str("    }\n    return 0;\n}\n");
+    c.push_str("    }\n");
+    c.push_str(&batch::calls(robot, states.len()));
+    c.push_str("    return 0;\n}\n");
     c
 }
 
@@ -419,7 +423,8 @@ pub fn printed<'p>(printed: &'p Printed, name: &str, k: usize, s: usize) -> &'p 
 }
 
 /// Every function against the graph: `double` exactly (to 1e-12 with the header's own sines
-/// and cosines), `float` to `f32_tolerance`.
+/// and cosines), `float` to `f32_tolerance`; and its batch over every state, state by state,
+/// bit for bit the single-state call.
 pub fn check_against_graph(robot: &Robot, states: &[State], run: &Run) {
     let (out, cc) = (&run.printed, &run.label);
     for (s, state) in states.iter().enumerate() {
@@ -450,9 +455,23 @@ pub fn check_against_graph(robot: &Robot, states: &[State], run: &Run) {
                     f.name
                 );
                 assert_eq!(*status, 0, "{cc}: {} at sample {s}", f.name);
+                let batch = printed(out, &format!("{}_batch", f.name), k, s);
+                assert!(
+                    batch.0 == *status && same_bits(&batch.1, got),
+                    "{cc}: {}_batch part {k} at sample {s} is not the single state's",
+                    f.name
+                );
             }
         }
     }
+}
+
+/// Whether two printed arrays are the same numbers (NaN where NaN).
+fn same_bits(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .zip(b)
+            .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
 }
 
 /// How far a `float` result may be from the `f64` one, scaled: the solves with M's factors

@@ -17,6 +17,8 @@
  * first such header, the header's own (the Rust runtime's kernels: no libm needed but
  * for the tanh of smoothed friction; four joints at a time in vector lanes where the
  * compiler vectorizes them, as gcc -O2 -march=native does on AVX2).
+ * With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`
+ * over n states: flat arrays of n rows, each row one state's array.
  */
 #ifndef PUMA560_DYNAMICS_H
 #define PUMA560_DYNAMICS_H
@@ -3785,5 +3787,334 @@ static inline int puma560_forward_dynamics_f32(const float q[6], const float qd[
     qdd[5] = qdd6;
     return (d1 > 0.0f && d2 > 0.0f && d3 > 0.0f && d4 > 0.0f && d5 > 0.0f && d6 > 0.0f) ? 0 : 1;
 }
+
+#ifdef DYNAMICS_BATCH
+/* Each function over n states: row i of every array at (elements of one state) * i. */
+#include <stddef.h>
+#ifndef DYNAMICS_BATCH_API
+#define DYNAMICS_BATCH_API static inline
+#endif
+
+/* puma560_mass_matrix at each of n states. */
+DYNAMICS_BATCH_API void puma560_mass_matrix_batch(size_t n, const double *q, double *m) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_mass_matrix(q + 6 * i, (double (*)[6])(m + 36 * i));
+    }
+}
+
+/* puma560_mass_matrix_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_mass_matrix_f32_batch(size_t n, const float *q, float *m) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_mass_matrix_f32(q + 6 * i, (float (*)[6])(m + 36 * i));
+    }
+}
+
+/* puma560_coriolis_matrix at each of n states. */
+DYNAMICS_BATCH_API void puma560_coriolis_matrix_batch(size_t n, const double *q, const double *qd, double *cor) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_coriolis_matrix(q + 6 * i, qd + 6 * i, (double (*)[6])(cor + 36 * i));
+    }
+}
+
+/* puma560_coriolis_matrix_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_coriolis_matrix_f32_batch(size_t n, const float *q, const float *qd, float *cor) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_coriolis_matrix_f32(q + 6 * i, qd + 6 * i, (float (*)[6])(cor + 36 * i));
+    }
+}
+
+/* puma560_coriolis_torques at each of n states. */
+DYNAMICS_BATCH_API void puma560_coriolis_torques_batch(size_t n, const double *q, const double *qd, double *cqd) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_coriolis_torques(q + 6 * i, qd + 6 * i, cqd + 6 * i);
+    }
+}
+
+/* puma560_coriolis_torques_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_coriolis_torques_f32_batch(size_t n, const float *q, const float *qd, float *cqd) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_coriolis_torques_f32(q + 6 * i, qd + 6 * i, cqd + 6 * i);
+    }
+}
+
+/* puma560_gravity_torques at each of n states. */
+DYNAMICS_BATCH_API void puma560_gravity_torques_batch(size_t n, const double *q, double *g) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_gravity_torques(q + 6 * i, g + 6 * i);
+    }
+}
+
+/* puma560_gravity_torques_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_gravity_torques_f32_batch(size_t n, const float *q, float *g) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_gravity_torques_f32(q + 6 * i, g + 6 * i);
+    }
+}
+
+/* puma560_bias_torques at each of n states. */
+DYNAMICS_BATCH_API void puma560_bias_torques_batch(size_t n, const double *q, const double *qd, double *h) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_bias_torques(q + 6 * i, qd + 6 * i, h + 6 * i);
+    }
+}
+
+/* puma560_bias_torques_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_bias_torques_f32_batch(size_t n, const float *q, const float *qd, float *h) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_bias_torques_f32(q + 6 * i, qd + 6 * i, h + 6 * i);
+    }
+}
+
+/* puma560_inverse_dynamics at each of n states. */
+DYNAMICS_BATCH_API void puma560_inverse_dynamics_batch(size_t n, const double *q, const double *qd, const double *qdd, double *tau) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_inverse_dynamics(q + 6 * i, qd + 6 * i, qdd + 6 * i, tau + 6 * i);
+    }
+}
+
+/* puma560_inverse_dynamics_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_inverse_dynamics_f32_batch(size_t n, const float *q, const float *qd, const float *qdd, float *tau) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_inverse_dynamics_f32(q + 6 * i, qd + 6 * i, qdd + 6 * i, tau + 6 * i);
+    }
+}
+
+/* puma560_friction_torques at each of n states. */
+DYNAMICS_BATCH_API void puma560_friction_torques_batch(size_t n, const double *qd, double *f) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_friction_torques(qd + 6 * i, f + 6 * i);
+    }
+}
+
+/* puma560_friction_torques_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_friction_torques_f32_batch(size_t n, const float *qd, float *f) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_friction_torques_f32(qd + 6 * i, f + 6 * i);
+    }
+}
+
+/* puma560_kinetic_energy at each of n states. */
+DYNAMICS_BATCH_API void puma560_kinetic_energy_batch(size_t n, const double *q, const double *qd, double *value) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        value[i] = puma560_kinetic_energy(q + 6 * i, qd + 6 * i);
+    }
+}
+
+/* puma560_kinetic_energy_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_kinetic_energy_f32_batch(size_t n, const float *q, const float *qd, float *value) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        value[i] = puma560_kinetic_energy_f32(q + 6 * i, qd + 6 * i);
+    }
+}
+
+/* puma560_potential_energy at each of n states. */
+DYNAMICS_BATCH_API void puma560_potential_energy_batch(size_t n, const double *q, double *value) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        value[i] = puma560_potential_energy(q + 6 * i);
+    }
+}
+
+/* puma560_potential_energy_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_potential_energy_f32_batch(size_t n, const float *q, float *value) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        value[i] = puma560_potential_energy_f32(q + 6 * i);
+    }
+}
+
+/* puma560_hand_pose at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_pose_batch(size_t n, const double *q, double *hand) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_pose(q + 6 * i, (double (*)[4])(hand + 12 * i));
+    }
+}
+
+/* puma560_hand_pose_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_pose_f32_batch(size_t n, const float *q, float *hand) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_pose_f32(q + 6 * i, (float (*)[4])(hand + 12 * i));
+    }
+}
+
+/* puma560_link_poses at each of n states. */
+DYNAMICS_BATCH_API void puma560_link_poses_batch(size_t n, const double *q, double *link) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_link_poses(q + 6 * i, (double (*)[3][4])(link + 72 * i));
+    }
+}
+
+/* puma560_link_poses_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_link_poses_f32_batch(size_t n, const float *q, float *link) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_link_poses_f32(q + 6 * i, (float (*)[3][4])(link + 72 * i));
+    }
+}
+
+/* puma560_hand_jacobian_in_base at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_jacobian_in_base_batch(size_t n, const double *q, double *jb) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_jacobian_in_base(q + 6 * i, (double (*)[6])(jb + 36 * i));
+    }
+}
+
+/* puma560_hand_jacobian_in_base_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_jacobian_in_base_f32_batch(size_t n, const float *q, float *jb) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_jacobian_in_base_f32(q + 6 * i, (float (*)[6])(jb + 36 * i));
+    }
+}
+
+/* puma560_hand_jacobian_in_hand at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_jacobian_in_hand_batch(size_t n, const double *q, double *jh) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_jacobian_in_hand(q + 6 * i, (double (*)[6])(jh + 36 * i));
+    }
+}
+
+/* puma560_hand_jacobian_in_hand_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_jacobian_in_hand_f32_batch(size_t n, const float *q, float *jh) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_jacobian_in_hand_f32(q + 6 * i, (float (*)[6])(jh + 36 * i));
+    }
+}
+
+/* puma560_hand_acceleration_bias_in_base at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_acceleration_bias_in_base_batch(size_t n, const double *q, const double *qd, double *ab) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_acceleration_bias_in_base(q + 6 * i, qd + 6 * i, ab + 6 * i);
+    }
+}
+
+/* puma560_hand_acceleration_bias_in_base_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_acceleration_bias_in_base_f32_batch(size_t n, const float *q, const float *qd, float *ab) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_acceleration_bias_in_base_f32(q + 6 * i, qd + 6 * i, ab + 6 * i);
+    }
+}
+
+/* puma560_hand_acceleration_bias_in_hand at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_acceleration_bias_in_hand_batch(size_t n, const double *q, const double *qd, double *ah) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_acceleration_bias_in_hand(q + 6 * i, qd + 6 * i, ah + 6 * i);
+    }
+}
+
+/* puma560_hand_acceleration_bias_in_hand_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_hand_acceleration_bias_in_hand_f32_batch(size_t n, const float *q, const float *qd, float *ah) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_hand_acceleration_bias_in_hand_f32(q + 6 * i, qd + 6 * i, ah + 6 * i);
+    }
+}
+
+/* puma560_joint_torques_for_hand_wrench at each of n states. */
+DYNAMICS_BATCH_API void puma560_joint_torques_for_hand_wrench_batch(size_t n, const double *q, const double *wrench, double *tf) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_joint_torques_for_hand_wrench(q + 6 * i, wrench + 6 * i, tf + 6 * i);
+    }
+}
+
+/* puma560_joint_torques_for_hand_wrench_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_joint_torques_for_hand_wrench_f32_batch(size_t n, const float *q, const float *wrench, float *tf) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_joint_torques_for_hand_wrench_f32(q + 6 * i, wrench + 6 * i, tf + 6 * i);
+    }
+}
+
+/* puma560_joint_torques_for_base_wrench at each of n states. */
+DYNAMICS_BATCH_API void puma560_joint_torques_for_base_wrench_batch(size_t n, const double *q, const double *wrench, double *tb) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_joint_torques_for_base_wrench(q + 6 * i, wrench + 6 * i, tb + 6 * i);
+    }
+}
+
+/* puma560_joint_torques_for_base_wrench_f32 at each of n states. */
+DYNAMICS_BATCH_API void puma560_joint_torques_for_base_wrench_f32_batch(size_t n, const float *q, const float *wrench, float *tb) {
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        puma560_joint_torques_for_base_wrench_f32(q + 6 * i, wrench + 6 * i, tb + 6 * i);
+    }
+}
+
+/* puma560_mass_matrix_inverse at each of n states. */
+DYNAMICS_BATCH_API size_t puma560_mass_matrix_inverse_batch(size_t n, const double *q, double *mi, int *status) {
+    size_t failures = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        int failed = puma560_mass_matrix_inverse(q + 6 * i, (double (*)[6])(mi + 36 * i));
+        if (status) status[i] = failed;
+        failures += failed != 0;
+    }
+    return failures;
+}
+
+/* puma560_mass_matrix_inverse_f32 at each of n states. */
+DYNAMICS_BATCH_API size_t puma560_mass_matrix_inverse_f32_batch(size_t n, const float *q, float *mi, int *status) {
+    size_t failures = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        int failed = puma560_mass_matrix_inverse_f32(q + 6 * i, (float (*)[6])(mi + 36 * i));
+        if (status) status[i] = failed;
+        failures += failed != 0;
+    }
+    return failures;
+}
+
+/* puma560_forward_dynamics at each of n states. */
+DYNAMICS_BATCH_API size_t puma560_forward_dynamics_batch(size_t n, const double *q, const double *qd, const double *tau, double *qdd, int *status) {
+    size_t failures = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        int failed = puma560_forward_dynamics(q + 6 * i, qd + 6 * i, tau + 6 * i, qdd + 6 * i);
+        if (status) status[i] = failed;
+        failures += failed != 0;
+    }
+    return failures;
+}
+
+/* puma560_forward_dynamics_f32 at each of n states. */
+DYNAMICS_BATCH_API size_t puma560_forward_dynamics_f32_batch(size_t n, const float *q, const float *qd, const float *tau, float *qdd, int *status) {
+    size_t failures = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        int failed = puma560_forward_dynamics_f32(q + 6 * i, qd + 6 * i, tau + 6 * i, qdd + 6 * i);
+        if (status) status[i] = failed;
+        failures += failed != 0;
+    }
+    return failures;
+}
+
+#endif /* DYNAMICS_BATCH */
 
 #endif /* PUMA560_DYNAMICS_H */

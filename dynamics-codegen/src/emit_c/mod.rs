@@ -25,10 +25,14 @@
 //! The header is ASCII: the method table's summaries, its comments, are spelled out (`q̇` as
 //! `qd`), as the element descriptions already are.
 //!
+//! With `DYNAMICS_BATCH` defined, each function also has a `_batch` twin over `n` states in
+//! flat row-major arrays (`batch`).
+//!
 //! By job: `expr` (expressions, literals, precisions), `body` (one function's statements),
-//! `function` (the functions and their signatures), `trig` (the sines and cosines), this file
-//! (the header around them).
+//! `function` (the functions and their signatures), `batch` (the functions over many states),
+//! `trig` (the sines and cosines), this file (the header around them).
 
+mod batch;
 mod body;
 mod expr;
 mod function;
@@ -91,6 +95,7 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
         text.push_str(&f.definition(eq, &sign(f.precision)));
         text.push('\n');
     }
+    text.push_str(&batch::section(&functions));
     text.push_str(&format!("#endif /* {guard} */\n"));
     text
 }
@@ -149,6 +154,9 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         "for the tanh of smoothed friction; four joints at a time in vector lanes where the"
             .to_owned(),
         "compiler vectorizes them, as gcc -O2 -march=native does on AVX2).".to_owned(),
+        "With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`"
+            .to_owned(),
+        "over n states: flat arrays of n rows, each row one state's array.".to_owned(),
     ];
     if !eq.fields.is_empty() {
         lines.push(String::new());
