@@ -6,22 +6,52 @@ use crate::args::{Emit, Lang};
 use dynamics_codegen::{derive, emit_c, generate};
 use quote::quote;
 
-pub fn run(args: &Emit) -> Result<String, Failure> {
+/// A robot's C header and what a binding needs to call it: its functions' signatures.
+#[derive(Debug)]
+pub struct CHeader {
+    /// The robot's name in its description.
+    pub robot: String,
+    /// Its number of joints.
+    pub dof: usize,
+    /// Its parameters (struct fields), in the order of the functions' `params`.
+    pub fields: Vec<String>,
+    /// The header's text.
+    pub text: String,
+    /// Its functions, in the header's order.
+    pub functions: Vec<emit_c::Function>,
+}
+
+/// The C header of the robot of `args`, with its functions.
+pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
     let robot = load(&args.robot)?;
     let path = &args.robot.path;
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
+    // The command that writes it again: the robot file and the families asked for.
+    let with: Vec<&str> = args.families.set().opt_in().map(|f| f.name()).collect();
+    let with = if with.is_empty() {
+        String::new()
+    } else {
+        format!(" --with {}", with.join(","))
+    };
+    let command = format!("dynamics emit --lang c {path}{with}");
+    Ok(CHeader {
+        text: emit_c::header(&eq, &robot.name, &command),
+        functions: emit_c::functions(&eq, &emit_c::prefix(&robot.name)),
+        dof: eq.dof,
+        fields: eq.fields.clone(),
+        robot: robot.name,
+    })
+}
+
+pub fn run(args: &Emit) -> Result<String, Failure> {
     if args.lang == Lang::C {
-        // The command that writes it again: the robot file and the families asked for.
-        let with: Vec<&str> = args.families.set().opt_in().map(|f| f.name()).collect();
-        let with = if with.is_empty() {
-            String::new()
-        } else {
-            format!(" --with {}", with.join(","))
-        };
-        let command = format!("dynamics emit --lang c {path}{with}");
-        return Ok(emit_c::header(&eq, &robot.name, &command));
+        return Ok(c_header(args)?.text);
     }
+    let robot = load(&args.robot)?;
+    let path = &args.robot.path;
+    let mut eq = derive(&robot);
+    eq.add_families(&robot, args.families.set());
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;

@@ -22,6 +22,8 @@ use dynamics_codegen::Equations;
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
+pub use emit::{c_header, CHeader};
+
 /// Why a command failed.
 pub enum Failure {
     /// A usage error found after parsing (a list of the wrong length, a missing parameter):

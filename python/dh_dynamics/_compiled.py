@@ -1,0 +1,88 @@
+"""The robot's C header compiled into a shared library with the system's C compiler, cached by
+the hash of what went into it, and loaded with ctypes.
+
+The library holds the header's batch functions (``DYNAMICS_BATCH``): each method over ``n``
+states in one call, so that a NumPy batch costs one foreign call and no Python loop.
+
+The cache is ``$DH_DYNAMICS_CACHE`` or ``$XDG_CACHE_HOME/dh_dynamics`` (``~/.cache/dh_dynamics``);
+the compiler ``$CC`` or the first of ``cc``, ``gcc``, ``clang``; the flags ``$DH_DYNAMICS_CFLAGS``
+or ``-O2 -march=native -ffp-contract=fast`` (the vector units and fused multiply-adds of this
+machine; without ``-march=native`` where the compiler refuses it).
+"""
+
+import ctypes
+import hashlib
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+_DEFAULT_FLAGS = ["-O2", "-march=native", "-ffp-contract=fast"]
+_SOURCE = '#define DYNAMICS_BATCH\n#define DYNAMICS_BATCH_API\n#include "robot.h"\n'
+
+
+class CompilerError(RuntimeError):
+    """No C compiler was found, or it failed on the robot's header."""
+
+
+def _cache_dir():
+    if os.environ.get("DH_DYNAMICS_CACHE"):
+        return Path(os.environ["DH_DYNAMICS_CACHE"])
+    base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
+    return Path(base) / "dh_dynamics"
+
+
+def _compiler():
+    names = [os.environ["CC"]] if os.environ.get("CC") else ["cc", "gcc", "clang"]
+    for name in names:
+        path = shutil.which(name)
+        if path:
+            return path
+    raise CompilerError(
+        "no C compiler found (tried " + ", ".join(names) + "): the robot's functions are "
+        "compiled from its C header; install gcc or clang, or set CC"
+    )
+
+
+def _version(cc):
+    run = subprocess.run([cc, "--version"], capture_output=True, text=True, check=False)
+    return run.stdout
+
+
+def _build(cc, flags, header, library):
+    """Compiles ``header`` into ``library``, in a scratch directory beside it, renamed into
+    place once whole (two processes building the same robot each get a complete file)."""
+    with tempfile.TemporaryDirectory(dir=library.parent) as scratch:
+        scratch = Path(scratch)
+        (scratch / "robot.h").write_text(header)
+        (scratch / "robot.c").write_text(_SOURCE)
+        out = scratch / library.name
+        command = [cc, "-std=c99", "-shared", "-fPIC", *flags, "-o", str(out), "robot.c", "-lm"]
+        run = subprocess.run(command, cwd=scratch, capture_output=True, text=True, check=False)
+        if run.returncode != 0:
+            return run.stderr
+        os.replace(out, library)
+    return None
+
+
+def load(header):
+    """The shared library of ``header``: from the cache, or compiled into it."""
+    cc = _compiler()
+    custom = os.environ.get("DH_DYNAMICS_CFLAGS")
+    attempts = [custom.split()] if custom is not None else [_DEFAULT_FLAGS, ["-O2"]]
+    errors = []
+    for flags in attempts:
+        key = hashlib.sha256(
+            "\0".join([header, cc, _version(cc), *flags, sys.platform]).encode()
+        ).hexdigest()[:32]
+        library = _cache_dir() / f"{key}.so"
+        if not library.exists():
+            library.parent.mkdir(parents=True, exist_ok=True)
+            error = _build(cc, flags, header, library)
+            if error is not None:
+                errors.append(f"{cc} {' '.join(flags)}:\n{error}")
+                continue
+        return ctypes.CDLL(str(library))
+    raise CompilerError("the robot's header did not compile:\n" + "\n".join(errors))
