@@ -44,9 +44,10 @@ class Method:
         )
         self._by_dtype = {}
         for signature in signatures:
+            # Only a derive's struct fields are parameters; a description file has none.
+            assert signature["parameters"] == 0, "a description file's robot has no parameters"
             function = getattr(library, signature["name"] + "_batch")
             arrays = 1 + len(signature["arguments"]) + len(signature["outputs"])
-            arrays += signature["parameters"] > 0
             arrays += signature["returns"] != "nothing"
             function.argtypes = [ctypes.c_size_t] + [ctypes.c_void_p] * (arrays - 1)
             function.restype = ctypes.c_size_t if signature["returns"] == "status" else None
@@ -66,8 +67,6 @@ class Method:
         arrays, count, batch = self._inputs(inputs, dtype)
         outputs = [np.empty((count, *dims), dtype) for _, dims in signature["outputs"]]
         pointers = [a.ctypes.data for a in arrays + outputs]
-        if signature["parameters"] > 0:
-            pointers.insert(0, self._robot._parameter_array(dtype).ctypes.data)
         extra = None
         if signature["returns"] == "value":
             extra = np.empty(count, dtype)

@@ -27,17 +27,14 @@ class Robot:
     lists them.
     """
 
-    def __init__(self, source, families=(), parameters=None):
+    def __init__(self, source, families=()):
         # The description's words of the `dynamics` command (the file, and a URDF's chain or a
         # tool), which `equations` gives to `inspect`.
         self._source = list(source)
         generated = _generate(self._source + _families(families))
         self.name = generated["robot"]
         self.dof = generated["dof"]
-        self.parameter_names = tuple(generated["fields"])
         self.header = generated["text"]
-        self._parameters = {}
-        self._arrays = {}
         library = _compiled.load(self.header)
         by_method = {}
         for signature in generated["functions"]:
@@ -45,26 +42,23 @@ class Robot:
         self.methods = tuple(by_method)
         for name, signatures in by_method.items():
             setattr(self, name, Method(self, library, signatures))
-        if parameters:
-            self.set_parameters(**parameters)
 
     @classmethod
-    def from_file(cls, path, *, families=(), tool=None, parameters=None):
+    def from_file(cls, path, *, families=(), tool=None):
         """The robot of a description file (TOML or JSON, as ``#[dynamics(file = "...")]``
         reads it).
 
         ``families``: opt-in families of methods, such as ``("derivatives", "regressor")``;
-        ``tool``: the hand frame ``[x, y, z, roll, pitch, yaw]`` in the last link's frame;
-        ``parameters``: the values of the description's named parameters (struct fields).
+        ``tool``: the hand frame ``[x, y, z, roll, pitch, yaw]`` in the last link's frame.
         Raises ``DescriptionError`` with the file, line and column of a problem.
         """
         source = [os.fspath(path)]
         if tool is not None:
             source += ["--tool", ",".join(repr(float(x)) for x in tool)]
-        return cls(source, families, parameters)
+        return cls(source, families)
 
     @classmethod
-    def from_urdf(cls, path, base=None, tip=None, *, families=(), parameters=None):
+    def from_urdf(cls, path, base=None, tip=None, *, families=()):
         """The robot of a URDF file: the chain from link ``base`` to link ``tip`` (by default
         the root and the one leaf)."""
         source = [os.fspath(path)]
@@ -72,31 +66,7 @@ class Robot:
             source += ["--base", base]
         if tip is not None:
             source += ["--tip", tip]
-        return cls(source, families, parameters)
-
-    def set_parameters(self, **values):
-        """Sets named parameters of the description (``robot.set_parameters(payload=2.5)``)."""
-        unknown = sorted(set(values) - set(self.parameter_names))
-        if unknown:
-            raise ValueError(f"{self.name} has no parameter {', '.join(unknown)}; its "
-                             f"parameters: {', '.join(self.parameter_names) or 'none'}")
-        self._parameters.update({k: float(v) for k, v in values.items()})
-        self._arrays.clear()
-
-    @property
-    def parameters(self):
-        """The values of the named parameters set so far."""
-        return dict(self._parameters)
-
-    def _parameter_array(self, dtype):
-        if dtype not in self._arrays:
-            missing = [p for p in self.parameter_names if p not in self._parameters]
-            if missing:
-                raise ValueError(f"{self.name}: set the parameters {', '.join(missing)} first "
-                                 "(robot.set_parameters(...))")
-            values = [self._parameters[p] for p in self.parameter_names]
-            self._arrays[dtype] = np.array(values, dtype=dtype)
-        return self._arrays[dtype]
+        return cls(source, families)
 
     def equations(self, latex=False, kinematics=False):
         """The equations of motion in the book's notation (``kinematics=True``: the hand's pose
