@@ -61,8 +61,8 @@ class Method:
             names = ", ".join(name for name, _ in self._arguments)
             raise TypeError(f"{self.__name__}({names}) takes {len(self._arguments)} arrays, "
                             f"{len(inputs)} given")
-        single = all(float32 for float32 in [np.asarray(x).dtype == np.float32 for x in inputs])
-        dtype = np.float32 if inputs and single else np.float64
+        float32 = all(getattr(x, "dtype", None) == np.float32 for x in inputs)
+        dtype = np.float32 if inputs and float32 else np.float64
         function, signature = self._by_dtype[dtype]
         arrays, count, batch = self._inputs(inputs, dtype)
         outputs = [np.empty((count, *dims), dtype) for _, dims in signature["outputs"]]
@@ -97,7 +97,10 @@ class Method:
             raise ValueError(f"{self.__name__}: batches of different lengths: {shapes}")
         batch = bool(counts)
         count = counts.pop() if counts else 1
-        arrays = [np.ascontiguousarray(np.broadcast_to(a, (count, a.shape[-1]))) for a in arrays]
+        arrays = [
+            np.ascontiguousarray(a if a.ndim == 2 or count == 1 else np.broadcast_to(a, (count, a.shape[-1])))
+            for a in arrays
+        ]
         return arrays, count, batch
 
     def _result(self, outputs, extra, signature, batch):
