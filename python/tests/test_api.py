@@ -117,3 +117,17 @@ def test_a_tool_and_a_urdf_chain():
     ur10 = dh_dynamics.Robot.from_urdf(ROOT / "robots/urdf/ur10.urdf", base="base_link",
                                        tip="tool0")
     assert (ur10.name, ur10.dof) == ("ur10", 6)
+
+
+def test_the_regressor_and_base_parameters_give_tau():
+    """τ = Y π + the joints' columns times their parameters = Y_B π_B (τ itself is checked
+    against Pinocchio in test_pinocchio.py)."""
+    robot = dh_dynamics.Robot.from_file(PUMA, families=["regressor", "base_parameters"])
+    q, qd, qdd = states(6, 5, seed=8)
+    tau = robot.inverse_dynamics(q, qd, qdd)
+    links = np.einsum("sijk,jk->si", robot.regressor(q, qd, qdd), robot.standard_parameters())
+    joints = np.einsum("sik,ik->si", robot.joint_regressor(qd, qdd), robot.joint_parameters())
+    assert np.max(np.abs(links + joints - tau)) < 1e-10 * np.max(np.abs(tau))
+    base = robot.base_regressor(q, qd, qdd) @ robot.base_parameters()
+    assert np.max(np.abs(base - tau)) < 1e-10 * np.max(np.abs(tau))
+    assert robot.base_parameters().shape == (36,)
