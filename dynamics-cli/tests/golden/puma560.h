@@ -23,7 +23,9 @@
 #ifndef PUMA560_DYNAMICS_H
 #define PUMA560_DYNAMICS_H
 
+#ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>
+#endif
 
 #ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H

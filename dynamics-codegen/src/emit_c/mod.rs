@@ -1,7 +1,7 @@
 //! C emission: the graph's outputs become one header-only C99 file (`dynamics emit --lang c`).
 //!
 //! The header has a `#define` guard, includes `<math.h>` (sine, cosine, and the `tanh` of
-//! smoothed friction), and holds `static inline` functions only: no allocation, no globals, no
+//! smoothed friction; not where `DYNAMICS_OWN_SINCOS` leaves it nothing to declare), and holds `static inline` functions only: no allocation, no globals, no
 //! other header. Its sines and cosines go through `dynamics_sincos` (`trig`): `<math.h>`'s, or
 //! with `DYNAMICS_OWN_SINCOS` defined the runtime's own kernels, for targets without a libm. For every method of the families the equations hold (the method table,
 //! `crate::method`; a robot's opt-in families where it asked for them) it has a function
@@ -74,13 +74,24 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     let guard = format!("{}_DYNAMICS_H", prefix.to_ascii_uppercase());
     let functions = functions(eq, &prefix);
     let mut text = preamble(eq, robot, command);
-    text.push_str(&format!(
-        "#ifndef {guard}\n#define {guard}\n\n#include <math.h>\n\n"
-    ));
+    // <math.h> for what the functions call besides sines and cosines (the tanh of smoothed
+    // friction, a non-finite constant); without those, for `<math.h>`'s sines and cosines
+    // only, so that with DYNAMICS_OWN_SINCOS the header builds where there is no C library
+    // (a bare-metal compiler without newlib).
+    let math = if reads(eq, &functions, |node| match node {
+        Node::Tanh(_) => true,
+        Node::Const(c) => !c.to_f64().is_finite(),
+        _ => false,
+    }) {
+        "#include <math.h>\n"
+    } else {
+        "#ifndef DYNAMICS_OWN_SINCOS\n#include <math.h>\n#endif\n"
+    };
+    text.push_str(&format!("#ifndef {guard}\n#define {guard}\n\n{math}\n"));
     text.push_str(&trig::trig());
     text.push('\n');
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
-    if reads_sign(eq, &functions) {
+    if reads(eq, &functions, |node| matches!(node, Node::Sign(_))) {
         for p in Precision::ALL {
             let (ty, zero) = (p.c_type(), p.literal(0.0));
             text.push_str(&format!(
@@ -100,8 +111,8 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text
 }
 
-/// Whether a function reads the sign of a velocity (Coulomb friction).
-fn reads_sign(eq: &Equations, functions: &[Function]) -> bool {
+/// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).
+fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) -> bool {
     let outputs: Vec<_> = functions
         .iter()
         .flat_map(|f| f.method.shape(eq).outputs())
@@ -109,7 +120,7 @@ fn reads_sign(eq: &Equations, functions: &[Function]) -> bool {
     let live = eq.graph.live(&outputs);
     eq.graph
         .nodes()
-        .any(|(id, node)| live[id.index()] && matches!(node, Node::Sign(_)))
+        .any(|(id, node)| live[id.index()] && wanted(node))
 }
 
 /// The header's opening comment: where it comes from, and the conventions of its functions.
