@@ -80,12 +80,18 @@ impl Precision {
         if x.is_nan() {
             return "NAN".to_owned();
         }
-        if x.is_infinite() {
+        // The nearest f32, as `f32::from_f64` rounds: the conversion is the point (a finite
+        // `f64` beyond `f32`'s range becomes its infinity, as in Rust).
+        #[allow(clippy::cast_possible_truncation)]
+        let rounded = match self {
+            Precision::Double => x,
+            Precision::Single => f64::from(x as f32),
+        };
+        if rounded.is_infinite() {
             return if x > 0.0 { "INFINITY" } else { "-INFINITY" }.to_owned();
         }
         let mut text = match self {
             Precision::Double => format!("{x}"),
-            // The nearest f32, as `f32::from_f64` rounds: the conversion is the point.
             #[allow(clippy::cast_possible_truncation)]
             Precision::Single => format!("{}", x as f32),
         };
@@ -280,6 +286,8 @@ mod tests {
             (0.4318, "0.4318", "0.4318f"),
             (1.0 / 3.0, "0.3333333333333333", "0.33333334f"),
             (f64::INFINITY, "INFINITY", "INFINITY"),
+            // Finite in `double`, beyond `float`'s range: its infinity, as `f32::from_f64`.
+            (-1e39, "-1000000000000000000000000000000000000000.0", "-INFINITY"),
         ];
         for (x, double, single) in table {
             assert_eq!(Precision::Double.literal(x), double);
