@@ -1,6 +1,6 @@
 // Pinocchio side of the side-by-side benchmark (see bench/README.md; driven by bench/run).
 //
-// Usage: pinocchio_bench [--generated LIB.so] DATA.json [DATA.json ...]
+// Usage: pinocchio_bench [--generated LIB.so [--c LIB.so]] DATA.json [DATA.json ...]
 //
 // Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/ or
 // tests/data/urdf/ (format in tests/data/reference/README.md). For each file the program
@@ -49,6 +49,12 @@
 // then reads
 // `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`, each the median over its own batches;
 // a robot the library does not have (dynamics_bench_dof 0) keeps Pinocchio's column alone.
+//
+// With --c LIB.so as well (bench/c/robot.c: the headers of `dynamics emit --lang c` of the same
+// robots, compiled as C99, one lookup dynamics_bench_c_<robot> per robot), the C functions are
+// checked as the generated ones are, and timed in turn with the two others (the order rotating
+// from batch to batch): `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns`. The
+// batch rows, which the headers do not have, keep four columns.
 
 #include <algorithm>
 #include <chrono>
@@ -57,11 +63,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -748,6 +756,36 @@ static std::pair<double, double> median_ns_in_turn(
   return {median(ns_f), median(ns_g)};
 }
 
+// The same for three functions: the order within a round of three batches rotates (f g h,
+// g h f, h f g), so that each is first, second and last as often as the others.
+template<typename F, typename G, typename H>
+static std::tuple<double, double, double>
+median_ns_in_turn(std::size_t nsamples, F && f, G && g, H && h, double & checksum)
+{
+  std::size_t k = 0;
+  double sum = 0.0;
+  batch_ns(f, WARMUP, nsamples, k, sum);
+  batch_ns(g, WARMUP, nsamples, k, sum);
+  batch_ns(h, WARMUP, nsamples, k, sum);
+  std::vector<double> ns[3];
+  for (auto & v : ns)
+    v.resize(BATCHES);
+  for (std::size_t b = 0; b < static_cast<std::size_t>(BATCHES); ++b)
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+      const std::size_t which = (b + i) % 3;
+      double & t = ns[which][b];
+      if (which == 0)
+        t = batch_ns(f, CALLS, nsamples, k, sum);
+      else if (which == 1)
+        t = batch_ns(g, CALLS, nsamples, k, sum);
+      else
+        t = batch_ns(h, CALLS, nsamples, k, sum);
+    }
+  checksum += sum;
+  return {median(ns[0]), median(ns[1]), median(ns[2])};
+}
+
 // ---------------------------------------------------------------------------------------------
 // The generated code (bench/ffi), loaded at run time
 // ---------------------------------------------------------------------------------------------
@@ -785,18 +823,46 @@ struct Generated
   }
 };
 
-// Every generated function against the reference data, on every sample; the kinematics against
-// Pinocchio's; fd and Minv (`forward`) as check_forward checks Pinocchio's.
+// The C side (bench/c/robot.c, the headers of `dynamics emit --lang c`), loaded at run time: per
+// robot one lookup, dynamics_bench_c_<robot>(function), of the functions bench/ffi has, with
+// their signatures and layouts (not the batches).
+struct CHeaders
+{
+  using RobotLookup = GeneratedFunction (*)(const char *);
+  void * lib = nullptr;
+
+  explicit CHeaders(const std::string & path)
+  {
+    lib = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!lib)
+      throw std::runtime_error(std::string("cannot load ") + path + ": " + dlerror());
+  }
+
+  // The robot's lookup, or null where the library does not have the robot.
+  RobotLookup robot(const std::string & name) const
+  {
+    return reinterpret_cast<RobotLookup>(dlsym(lib, ("dynamics_bench_c_" + name).c_str()));
+  }
+};
+
+// Looks a function up by name; throws where there is none (`Generated::get`'s contract).
+using Getter = std::function<GeneratedFunction(const char *)>;
+
+// The functions of one side with n joints and b base parameters (`label`: " (generated)",
+// " (C)") against the reference data, on every sample; the kinematics against Pinocchio's; fd
+// and Minv (`forward`) as check_forward checks Pinocchio's.
 static void check_generated(
   const std::string & robot,
-  const Generated & gen,
+  const Getter & get,
+  std::size_t n,
+  std::size_t b,
+  const std::string & at,
   const json::Value & samples,
   const Model & model,
   pinocchio::FrameIndex hand,
   bool forward,
   const std::vector<SE3> & links)
 {
-  const std::size_t n = gen.dof(robot.c_str());
   Data data(model);
   std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
   auto rows = [&](std::size_t r, std::size_t c) {
@@ -827,29 +893,28 @@ static void check_generated(
     const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
     if (static_cast<std::size_t>(q.size()) != n)
       throw std::runtime_error(robot + ": the generated code has " + std::to_string(n) + " joints");
-    const std::string at = " (generated)";
-    gen.get(robot, "tau")(q.data(), v.data(), a.data(), out.data());
+    get("tau")(q.data(), v.data(), a.data(), out.data());
     check(robot, "tau" + at, vector(n), vecn(sample["tau"]), s);
-    gen.get(robot, "M")(q.data(), v.data(), a.data(), out.data());
+    get("M")(q.data(), v.data(), a.data(), out.data());
     check(robot, "M" + at, matrix(), matn(sample["M"]), s);
-    gen.get(robot, "g")(q.data(), v.data(), a.data(), out.data());
+    get("g")(q.data(), v.data(), a.data(), out.data());
     check(robot, "g" + at, vector(n), vecn(sample["g"]), s);
-    gen.get(robot, "C")(q.data(), v.data(), a.data(), out.data());
+    get("C")(q.data(), v.data(), a.data(), out.data());
     check(robot, "C" + at, matrix(), matn(sample["C"]), s);
-    gen.get(robot, "h")(q.data(), v.data(), a.data(), out.data());
+    get("h")(q.data(), v.data(), a.data(), out.data());
     check(robot, "h" + at, vector(n), vecn(sample["h"]), s);
     const Hand want = hand_of(model, hand, q, a.head<6>());
-    gen.get(robot, "fk")(q.data(), v.data(), a.data(), out.data());
+    get("fk")(q.data(), v.data(), a.data(), out.data());
     check(robot, "fk" + at + " against Pinocchio", rows(3, 4), want.pose, s);
-    gen.get(robot, "J")(q.data(), v.data(), a.data(), out.data());
+    get("J")(q.data(), v.data(), a.data(), out.data());
     check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
-    gen.get(robot, "JtF")(q.data(), v.data(), a.data(), out.data());
+    get("JtF")(q.data(), v.data(), a.data(), out.data());
     check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
     pinocchio::computeRNEADerivatives(model, data, q, v, a);
-    gen.get(robot, "dtau")(q.data(), v.data(), a.data(), out.data());
+    get("dtau")(q.data(), v.data(), a.data(), out.data());
     check(robot, "dtau/dq" + at + " against Pinocchio", block(0), data.dtau_dq, s);
     check(robot, "dtau/dqd" + at + " against Pinocchio", block(1), data.dtau_dv, s);
-    gen.get(robot, "Y")(q.data(), v.data(), a.data(), out.data());
+    get("Y")(q.data(), v.data(), a.data(), out.data());
     if (!links.empty())
     {
       const Eigen::MatrixXd Y = pinocchio::computeJointTorqueRegressor(model, data, q, v, a);
@@ -857,22 +922,21 @@ static void check_generated(
     }
     // The base regressor times the base parameters: the torques (the reference robots have no
     // springs), the rotors' inertia included.
-    const std::size_t b = gen.base_count(robot.c_str());
-    gen.get(robot, "piB")(q.data(), v.data(), a.data(), out.data());
+    get("piB")(q.data(), v.data(), a.data(), out.data());
     const Eigen::MatrixXd base_parameters = vector(b);
-    gen.get(robot, "YB")(q.data(), v.data(), a.data(), out.data());
+    get("YB")(q.data(), v.data(), a.data(), out.data());
     check(robot, "YB piB" + at, rows(n, b) * base_parameters, vecn(sample["tau"]), s);
     if (!forward)
       continue;
     const Eigen::VectorXd tau = vecn(sample["tau"]);
     pinocchio::computeABADerivatives(model, data, q, v, tau);
-    gen.get(robot, "dqdd")(q.data(), v.data(), tau.data(), out.data());
+    get("dqdd")(q.data(), v.data(), tau.data(), out.data());
     check(robot, "dqdd/dq" + at + " against Pinocchio", block(0), data.ddq_dq, s);
     check(robot, "dqdd/dqd" + at + " against Pinocchio", block(1), data.ddq_dv, s);
     check(robot, "dqdd/dtau" + at + " against Pinocchio", block(2), symmetric(data.Minv), s);
-    gen.get(robot, "fd")(q.data(), v.data(), tau.data(), out.data());
+    get("fd")(q.data(), v.data(), tau.data(), out.data());
     check(robot, "fd" + at, vector(n), a, s);
-    gen.get(robot, "Minv")(q.data(), v.data(), a.data(), out.data());
+    get("Minv")(q.data(), v.data(), a.data(), out.data());
     const Eigen::MatrixXd M = matn(sample["M"]);
     check(robot, "Minv M" + at, matrix() * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
   }
@@ -983,12 +1047,20 @@ int main(int argc, char ** argv)
 {
   int first = 1;
   std::unique_ptr<Generated> generated;
+  std::unique_ptr<CHeaders> c_headers;
   try
   {
-    if (argc > 2 && std::string(argv[1]) == "--generated")
+    if (argc > first + 1 && std::string(argv[first]) == "--generated")
     {
-      generated = std::make_unique<Generated>(argv[2]);
-      first = 3;
+      generated = std::make_unique<Generated>(argv[first + 1]);
+      first += 2;
+    }
+    if (argc > first + 1 && std::string(argv[first]) == "--c")
+    {
+      if (!generated)
+        throw std::runtime_error("--c comes with --generated, after it");
+      c_headers = std::make_unique<CHeaders>(argv[first + 1]);
+      first += 2;
     }
   }
   catch (const std::exception & e)
@@ -998,7 +1070,7 @@ int main(int argc, char ** argv)
   }
   if (argc <= first)
   {
-    std::fprintf(stderr, "usage: %s [--generated LIB.so] DATA.json [DATA.json ...]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--generated LIB.so [--c LIB.so]] DATA.json [DATA.json ...]\n", argv[0]);
     return 2;
   }
   double checksum = 0.0;
@@ -1048,11 +1120,26 @@ int main(int argc, char ** argv)
     const bool with_generated = generated && generated->dof(robot.c_str()) != 0;
     if (generated && !with_generated)
       std::fprintf(stderr, "%s: not in the generated library: Pinocchio alone\n", robot.c_str());
+    // The C side of the robot, where the C library has it: its functions are bench/ffi's,
+    // with the same number of joints and base parameters (the same description).
+    const CHeaders::RobotLookup c_robot = with_generated && c_headers ? c_headers->robot(robot) : nullptr;
+    if (c_headers && with_generated && !c_robot)
+      std::fprintf(stderr, "%s: not in the C library: no C column\n", robot.c_str());
+    auto c_get = [&](const char * function) {
+      const GeneratedFunction f = c_robot(function);
+      if (!f)
+        throw std::runtime_error("the C headers have no " + std::string(function) + " for " + robot);
+      return f;
+    };
     if (with_generated)
     {
       try
       {
-        check_generated(robot, *generated, samples, model, hand, forward, links);
+        const std::size_t n = generated->dof(robot.c_str()), b = generated->base_count(robot.c_str());
+        auto rust_get = [&](const char * function) { return generated->get(robot, function); };
+        check_generated(robot, rust_get, n, b, " (generated)", samples, model, hand, forward, links);
+        if (c_robot)
+          check_generated(robot, c_get, n, b, " (C)", samples, model, hand, forward, links);
       }
       catch (const std::exception & e)
       {
@@ -1090,8 +1177,22 @@ int main(int argc, char ** argv)
           f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
           return out[0];
         };
-        const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
-        std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+        if (!c_robot)
+        {
+          const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
+          std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+        }
+        else
+        {
+          // The C in turn with both, through the same kind of call as the Rust.
+          const GeneratedFunction fc = c_get(function);
+          auto c = [&](std::size_t k) {
+            fc(qs[k].data(), vs[k].data(), third[k].data(), out.data());
+            return out[0];
+          };
+          const auto [pin_ns, gen_ns, c_ns] = median_ns_in_turn(ns, pin, gen, c, checksum);
+          std::printf("%s\t%s\t%.1f\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, c_ns);
+        }
       }
       std::fflush(stdout);
     };
