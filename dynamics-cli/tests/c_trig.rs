@@ -176,3 +176,50 @@ fn the_headers_own_sines_and_cosines_are_the_runtimes() {
         assert_eq!(*line, "special 1 1 1 1", "NaN and infinities give NaN");
     }
 }
+
+/// By default (neither macro), the header runs the kernels on the fast range and calls
+/// `<math.h>` beyond it, as the runtime calls `libm`: the platform's `sin` and `cos` there, to
+/// the bit (Rust's `f64::sin` is the same libm's).
+#[test]
+fn the_default_header_calls_the_math_library_beyond_the_fast_range() {
+    let Some((cc, flags, _)) = compilers().into_iter().find(|c| c.2) else {
+        eprintln!("no C compiler (gcc, clang) found: the default sines are not checked");
+        return;
+    };
+    let robot = robot("robots/puma560.toml");
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("c_trig_default");
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    std::fs::write(dir.join("robot.h"), &robot.header).expect("write");
+    let xs = [65_537.0, -70_000.5, 1.0e6, -3.0e15, 2.5e30];
+    let source = dir.join("trig.c");
+    std::fs::write(&source, program("robot.h", &xs)).expect("write");
+    let binary = dir.join("trig");
+    let out = Command::new(cc)
+        .args(flags)
+        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O2", "-o"])
+        .arg(&binary)
+        .arg(&source)
+        .arg("-lm")
+        .output()
+        .expect("run the compiler");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let run = Command::new(&binary).output().expect("run");
+    let text = String::from_utf8(run.stdout).expect("UTF-8");
+    for (x, line) in xs.iter().zip(text.lines()) {
+        let v: Vec<f64> = line
+            .split(' ')
+            .map(|w| w.parse().expect("a number"))
+            .collect();
+        assert_eq!((v[0], v[1]), x.sin_cos(), "{x}");
+        #[allow(clippy::cast_possible_truncation)]
+        let xf = *x as f32;
+        #[allow(clippy::cast_possible_truncation)]
+        let (sf, cf) = (v[2] as f32, v[3] as f32);
+        assert_eq!((sf, cf), xf.sin_cos(), "{xf}");
+    }
+    assert!(text.contains("sincos4 mismatches 0"), "{text}");
+}

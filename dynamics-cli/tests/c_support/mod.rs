@@ -253,8 +253,8 @@ pub fn parse(output: &str) -> Printed {
         .collect()
 }
 
-/// The compilers found, each with its language flags and whether to build it a second time
-/// with the header's own sines and cosines.
+/// The compilers found, each with its language flags and whether to build it also with the
+/// header's default and own sines and cosines (beside `<math.h>`'s).
 pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
     let candidates: [(&str, &[&str], bool); 3] = [
         ("gcc", &["-std=c99", "-x", "c", "-Wdouble-promotion"], true),
@@ -276,7 +276,8 @@ pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
 pub struct Run {
     /// The compiler, and `-DDYNAMICS_OWN_SINCOS` where it has that.
     pub label: String,
-    /// Whether the header's own sines and cosines were compiled, not `<math.h>`'s.
+    /// Whether the header's own sines and cosines were compiled (the default, or
+    /// `DYNAMICS_OWN_SINCOS`), not `<math.h>`'s (`DYNAMICS_LIBM_SINCOS`).
     pub own_trig: bool,
     pub printed: Printed,
 }
@@ -304,9 +305,9 @@ fn compile(cc: &str, flags: &[&str], extra: &[&str], source: &Path, program: &Pa
     );
 }
 
-/// Compiles the header and driver of `robot` with every compiler (and with the header's own
-/// sines and cosines, linked without the math library where nothing else needs it) and runs
-/// each program.
+/// Compiles the header and driver of `robot` with every compiler (with `<math.h>`'s sines and
+/// cosines, the default, and the header's own, linked without the math library where nothing
+/// else needs it) and runs each program.
 pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
     compile_and_run_builds(robot, states, true)
 }
@@ -329,23 +330,25 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> V
     let mut runs = Vec::new();
     let compilers = compilers();
     let count = if every { compilers.len() } else { 1 };
-    for (cc, flags, with_own) in compilers.into_iter().take(count) {
-        let with_own = with_own && every;
-        let builds = [(false, &["-lm"][..])].into_iter();
-        for (own_trig, extra) in builds.chain(with_own.then_some((true, own))) {
-            let label = if own_trig {
-                format!("{cc} -DDYNAMICS_OWN_SINCOS")
-            } else {
-                cc.to_owned()
-            };
-            let program = dir.join(format!("driver_{cc}_{own_trig}"));
+    for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
+        // `<math.h>`'s sines and cosines (bit for bit the graph's, evaluated with the same
+        // libm), then the default (the runtime's kernels, `<math.h>`'s beyond their range) and
+        // the kernels alone.
+        let mut builds = vec![("libm", true, &["-DDYNAMICS_LIBM_SINCOS", "-lm"][..])];
+        if kernels_too && every {
+            builds.push(("default", false, &["-lm"][..]));
+            builds.push(("own", false, own));
+        }
+        for (name, libm, extra) in builds {
+            let label = format!("{cc} {}", extra.join(" "));
+            let program = dir.join(format!("driver_{cc}_{name}"));
             compile(cc, flags, extra, &source, &program);
             let run = Command::new(&program).output().expect("run the driver");
             assert!(run.status.success(), "{label} driver of {}", robot.name);
             let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
             runs.push(Run {
                 label,
-                own_trig,
+                own_trig: !libm,
                 printed,
             });
         }

@@ -13,10 +13,11 @@
  * alias its inputs. A function that solves with the LDL^T of M returns 0 where every
  * pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).
  * For fused multiply-adds, compile with -ffp-contract=fast on a target that has them.
- * Sines and cosines are <math.h>'s or, with DYNAMICS_OWN_SINCOS defined before the
- * first such header, the header's own (the Rust runtime's kernels: no libm needed but
- * for the tanh of smoothed friction; four joints at a time in vector lanes where the
- * compiler vectorizes them, as gcc -O2 -march=native does on AVX2).
+ * Sines and cosines are the Rust runtime's kernels (the Rust code's results, four joints
+ * at a time in vector lanes where the compiler vectorizes them, as gcc -O2
+ * -march=native does on AVX2), <math.h>'s beyond |x| = 2^16. Defined before the first
+ * such header, DYNAMICS_OWN_SINCOS takes the kernels alone (no libm needed but for the
+ * tanh of smoothed friction), DYNAMICS_LIBM_SINCOS <math.h>'s (also under -ffast-math).
  * With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`
  * over n states: flat arrays of n rows, each row one state's array.
  */
@@ -29,15 +30,57 @@
 
 #ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H
+/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within an
+ * ulp, the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in float), as the runtime
+ * does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less accurate beyond 2^16, NaN from
+ * 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under -ffast-math (whose reassociation
+ * undoes the kernels' rounding steps), <math.h>'s. */
+#if defined(__FAST_MATH__) && defined(DYNAMICS_OWN_SINCOS)
+#error "DYNAMICS_OWN_SINCOS: -ffast-math undoes the rounding steps of the header's sines and cosines"
+#endif
+#if !defined(DYNAMICS_LIBM_SINCOS) && !defined(__FAST_MATH__)
 #ifdef DYNAMICS_OWN_SINCOS
-/* The runtime's sine and cosine (dynamics-runtime/src/trig/): within an ulp for |x| <= 2^16
- * (2^12 in float), less accurate beyond, NaN from 2^51 (2^22) on. Not under -ffast-math,
- * whose reassociation undoes the rounding steps. */
+#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) < 0x1p51)
+#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) < 0x1p22f)
+#else
+#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) <= 0x1p16)
+#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) <= 0x1p12f)
+#endif
 
-/* Whether x is in the kernel's range, 2^-27 <= |x| < 2^51, where it has no branch. */
+/* The four-argument kernels inlined where gcc or clang would call them (passing the angles
+ * through memory), but where the code is built for size. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define DYNAMICS_SINCOS4_INLINE static inline __attribute__((always_inline))
+#else
+#define DYNAMICS_SINCOS4_INLINE static inline
+#endif
+
+/* Beyond the kernels' range: <math.h>'s, or without a libm, NaN (infinite or NaN arguments, and
+ * beyond 2^51 where x * 2/pi no longer rounds to an integer) or the kernels' own result. */
+static inline void dynamics_sincos_beyond(double x, double *s, double *c) {
+#ifdef DYNAMICS_OWN_SINCOS
+    const double ax = x < 0.0 ? -x : x;
+    *s = *c = (ax - ax) / (ax - ax);
+#else
+    *s = sin(x);
+    *c = cos(x);
+#endif
+}
+
+static inline void dynamics_sincos_beyond_f32(float x, float *s, float *c) {
+#ifdef DYNAMICS_OWN_SINCOS
+    const float ax = x < 0.0f ? -x : x;
+    *s = *c = (ax - ax) / (ax - ax);
+#else
+    *s = sinf(x);
+    *c = cosf(x);
+#endif
+}
+
+/* Whether x is in the kernel's range, from 2^-27 on, where it has no branch. */
 static inline int dynamics_sincos_fast(double x) {
     const double ax = x < 0.0 ? -x : x;
-    return ax >= 0x1p-27 && ax < 0x1p51;
+    return ax >= 0x1p-27 && DYNAMICS_SINCOS_IN_RANGE(ax);
 }
 
 static inline void dynamics_sincos(double x, double *s, double *c) {
@@ -45,9 +88,8 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
     if (ax < 0x1p-27) {
         *s = x;
         *c = 1.0;
-    } else if (!(ax < 0x1p51)) {
-        /* Beyond the rounding to an integer, infinite or NaN: NaN. */
-        *s = *c = (ax - ax) / (ax - ax);
+    } else if (!DYNAMICS_SINCOS_IN_RANGE(ax)) {
+        dynamics_sincos_beyond(x, s, c);
     } else {
         const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
         /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
@@ -86,7 +128,7 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
 
 /* Four arguments side by side (in vector lanes where the compiler vectorizes the loop, as
  * gcc does at -O2 for AVX2), the same results as one at a time. */
-static inline void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
+DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
     int i;
     if (dynamics_sincos_fast(x[0]) & dynamics_sincos_fast(x[1]) & dynamics_sincos_fast(x[2]) & dynamics_sincos_fast(x[3])) {
         /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */
@@ -141,7 +183,7 @@ static inline void dynamics_sincos4(const double x[4], double s[4], double c[4])
 
 static inline int dynamics_sincos_fast_f32(float x) {
     const float ax = x < 0.0f ? -x : x;
-    return ax >= 0x1p-12f && ax < 0x1p22f;
+    return ax >= 0x1p-12f && DYNAMICS_SINCOS_IN_RANGE_F32(ax);
 }
 
 static inline void dynamics_sincos_f32(float x, float *s, float *c) {
@@ -149,8 +191,8 @@ static inline void dynamics_sincos_f32(float x, float *s, float *c) {
     if (ax < 0x1p-12f) {
         *s = x;
         *c = 1.0f;
-    } else if (!(ax < 0x1p22f)) {
-        *s = *c = (ax - ax) / (ax - ax);
+    } else if (!DYNAMICS_SINCOS_IN_RANGE_F32(ax)) {
+        dynamics_sincos_beyond_f32(x, s, c);
     } else {
         const float shift = 12582912.0f; /* 1.5 * 2^23 */
         /* pi/2 in four parts; Fast2Sum, TwoSum and Fast2Sum recover the roundings. */
@@ -187,7 +229,7 @@ static inline void dynamics_sincos_f32(float x, float *s, float *c) {
     }
 }
 
-static inline void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
+DYNAMICS_SINCOS4_INLINE void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
     int i;
     if (dynamics_sincos_fast_f32(x[0]) & dynamics_sincos_fast_f32(x[1]) & dynamics_sincos_fast_f32(x[2]) & dynamics_sincos_fast_f32(x[3])) {
         /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */

@@ -287,7 +287,11 @@ mod tests {
             (1.0 / 3.0, "0.3333333333333333", "0.33333334f"),
             (f64::INFINITY, "INFINITY", "INFINITY"),
             // Finite in `double`, beyond `float`'s range: its infinity, as `f32::from_f64`.
-            (-1e39, "-1000000000000000000000000000000000000000.0", "-INFINITY"),
+            (
+                -1e39,
+                "-1000000000000000000000000000000000000000.0",
+                "-INFINITY",
+            ),
         ];
         for (x, double, single) in table {
             assert_eq!(Precision::Double.literal(x), double);

@@ -1,9 +1,12 @@
 //! C emission: the graph's outputs become one header-only C99 file (`dynamics emit --lang c`).
 //!
 //! The header has a `#define` guard, includes `<math.h>` (sine, cosine, and the `tanh` of
-//! smoothed friction; not where `DYNAMICS_OWN_SINCOS` leaves it nothing to declare), and holds `static inline` functions only: no allocation, no globals, no
-//! other header. Its sines and cosines go through `dynamics_sincos` (`trig`): `<math.h>`'s, or
-//! with `DYNAMICS_OWN_SINCOS` defined the runtime's own kernels, for targets without a libm. For every method of the families the equations hold (the method table,
+//! smoothed friction; not where `DYNAMICS_OWN_SINCOS` leaves it nothing to declare), and holds
+//! `static inline` functions only: no allocation, no globals, no other header. Its sines and
+//! cosines go through `dynamics_sincos` (`trig`): the runtime's kernels with `<math.h>`'s beyond
+//! their range, as the Rust code computes them; the kernels alone with `DYNAMICS_OWN_SINCOS`,
+//! for targets without a libm; `<math.h>`'s with `DYNAMICS_LIBM_SINCOS`. For every method of
+//! the families the equations hold (the method table,
 //! `crate::method`; a robot's opt-in families where it asked for them) it has a function
 //! `{robot}_{method}` in `double` and `{robot}_{method}_f32` in `float`, whose inputs are
 //! `const` arrays (`q`, `qd`, `qdd`, `tau`, a wrench; first, `params` where the robot has
@@ -158,13 +161,15 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         "pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).".to_owned(),
         "For fused multiply-adds, compile with -ffp-contract=fast on a target that has them."
             .to_owned(),
-        "Sines and cosines are <math.h>'s or, with DYNAMICS_OWN_SINCOS defined before the"
+        "Sines and cosines are the Rust runtime's kernels (the Rust code's results, four joints"
             .to_owned(),
-        "first such header, the header's own (the Rust runtime's kernels: no libm needed but"
+        "at a time in vector lanes where the compiler vectorizes them, as gcc -O2".to_owned(),
+        "-march=native does on AVX2), <math.h>'s beyond |x| = 2^16. Defined before the first"
             .to_owned(),
-        "for the tanh of smoothed friction; four joints at a time in vector lanes where the"
+        "such header, DYNAMICS_OWN_SINCOS takes the kernels alone (no libm needed but for the"
             .to_owned(),
-        "compiler vectorizes them, as gcc -O2 -march=native does on AVX2).".to_owned(),
+        "tanh of smoothed friction), DYNAMICS_LIBM_SINCOS <math.h>'s (also under -ffast-math)."
+            .to_owned(),
         "With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`"
             .to_owned(),
         "over n states: flat arrays of n rows, each row one state's array.".to_owned(),

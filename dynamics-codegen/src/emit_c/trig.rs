@@ -1,7 +1,11 @@
 //! The header's sines and cosines: `dynamics_sin`, `dynamics_cos`, `dynamics_sincos` and
-//! `dynamics_sincos4` (and their `_f32` forms), which call `<math.h>`, or, where `DYNAMICS_OWN_SINCOS` is defined, run
-//! the runtime's own kernels (`dynamics-runtime/src/trig/`) written in C, so that a target
-//! without a libm still builds.
+//! `dynamics_sincos4` (and their `_f32` forms). By default they run the runtime's kernels
+//! (`dynamics-runtime/src/trig/`) written in C, on the runtime's fast range (2^-27 ≤ |x| ≤
+//! 2^16, 2^-12 to 2^12 in `float`), and call `<math.h>` beyond it, as the runtime calls `libm`:
+//! the Rust code's results, and in vector lanes. With `DYNAMICS_OWN_SINCOS` the kernels alone,
+//! so that a target without a libm still builds; with `DYNAMICS_LIBM_SINCOS`, or under
+//! `-ffast-math` (which would reassociate the kernels' rounding steps away, `__FAST_MATH__`),
+//! `<math.h>`'s everywhere.
 //!
 //! The kernels are the runtime's operation for operation: the same Cody-Waite reduction (π/2 in
 //! parts, `k·P` exact, the rounding errors recovered by Fast2Sum and TwoSum), the same fdlibm
@@ -13,12 +17,12 @@
 //! (`n/4 − round(n/4)`, exact) rather than the runtime's table, so that the body has no
 //! branch and no table: `dynamics_sincos4` runs it on four arguments in a loop that compilers
 //! vectorize (gcc at `-O2` with `-march=native` on an AVX2 machine), the runtime's `sin_cos_4`
-//! without its intrinsics, its results those of one argument at a time. Not ported: the
-//! runtime's `libm` call beyond the fast range (|x| > 2^16, 2^12 in `float`), where these lose
-//! accuracy (and give NaN from 2^51, 2^22 in `float`, where `x·2/π` no longer rounds to an
-//! integer).
+//! without its intrinsics, its results those of one argument at a time, inlined by gcc and
+//! clang (`always_inline`) but at `-Os`. With `DYNAMICS_OWN_SINCOS` they run beyond the fast
+//! range too, less accurate there, NaN from 2^51 (2^22 in `float`, where `x·2/π` no longer
+//! rounds to an integer).
 //!
-//! Without `DYNAMICS_OWN_SINCOS`, `dynamics_sincos4` is four calls of `sin` and `cos`.
+//! With `<math.h>`'s, `dynamics_sincos4` is four calls of `sin` and `cos`.
 //!
 //! The definitions are shared by every robot's header (one guard, `DYNAMICS_TRIG_H`), so that
 //! two robots' headers in one file define them once.
@@ -126,17 +130,59 @@ pub(super) fn trig() -> String {
 }
 
 /// The C text around the kernels.
-const TRIG: &str = r"#ifndef DYNAMICS_TRIG_H
+const TRIG: &str = r##"#ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H
+/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within an
+ * ulp, the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in float), as the runtime
+ * does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less accurate beyond 2^16, NaN from
+ * 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under -ffast-math (whose reassociation
+ * undoes the kernels' rounding steps), <math.h>'s. */
+#if defined(__FAST_MATH__) && defined(DYNAMICS_OWN_SINCOS)
+#error "DYNAMICS_OWN_SINCOS: -ffast-math undoes the rounding steps of the header's sines and cosines"
+#endif
+#if !defined(DYNAMICS_LIBM_SINCOS) && !defined(__FAST_MATH__)
 #ifdef DYNAMICS_OWN_SINCOS
-/* The runtime's sine and cosine (dynamics-runtime/src/trig/): within an ulp for |x| <= 2^16
- * (2^12 in float), less accurate beyond, NaN from 2^51 (2^22) on. Not under -ffast-math,
- * whose reassociation undoes the rounding steps. */
+#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) < 0x1p51)
+#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) < 0x1p22f)
+#else
+#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) <= 0x1p16)
+#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) <= 0x1p12f)
+#endif
 
-/* Whether x is in the kernel's range, 2^-27 <= |x| < 2^51, where it has no branch. */
+/* The four-argument kernels inlined where gcc or clang would call them (passing the angles
+ * through memory), but where the code is built for size. */
+#if defined(__GNUC__) && !defined(__OPTIMIZE_SIZE__)
+#define DYNAMICS_SINCOS4_INLINE static inline __attribute__((always_inline))
+#else
+#define DYNAMICS_SINCOS4_INLINE static inline
+#endif
+
+/* Beyond the kernels' range: <math.h>'s, or without a libm, NaN (infinite or NaN arguments, and
+ * beyond 2^51 where x * 2/pi no longer rounds to an integer) or the kernels' own result. */
+static inline void dynamics_sincos_beyond(double x, double *s, double *c) {
+#ifdef DYNAMICS_OWN_SINCOS
+    const double ax = x < 0.0 ? -x : x;
+    *s = *c = (ax - ax) / (ax - ax);
+#else
+    *s = sin(x);
+    *c = cos(x);
+#endif
+}
+
+static inline void dynamics_sincos_beyond_f32(float x, float *s, float *c) {
+#ifdef DYNAMICS_OWN_SINCOS
+    const float ax = x < 0.0f ? -x : x;
+    *s = *c = (ax - ax) / (ax - ax);
+#else
+    *s = sinf(x);
+    *c = cosf(x);
+#endif
+}
+
+/* Whether x is in the kernel's range, from 2^-27 on, where it has no branch. */
 static inline int dynamics_sincos_fast(double x) {
     const double ax = x < 0.0 ? -x : x;
-    return ax >= 0x1p-27 && ax < 0x1p51;
+    return ax >= 0x1p-27 && DYNAMICS_SINCOS_IN_RANGE(ax);
 }
 
 static inline void dynamics_sincos(double x, double *s, double *c) {
@@ -144,9 +190,8 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
     if (ax < 0x1p-27) {
         *s = x;
         *c = 1.0;
-    } else if (!(ax < 0x1p51)) {
-        /* Beyond the rounding to an integer, infinite or NaN: NaN. */
-        *s = *c = (ax - ax) / (ax - ax);
+    } else if (!DYNAMICS_SINCOS_IN_RANGE(ax)) {
+        dynamics_sincos_beyond(x, s, c);
     } else {
     /* lane f64 scalar */
     }
@@ -154,7 +199,7 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
 
 /* Four arguments side by side (in vector lanes where the compiler vectorizes the loop, as
  * gcc does at -O2 for AVX2), the same results as one at a time. */
-static inline void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
+DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], double c[4]) {
     int i;
     if (dynamics_sincos_fast(x[0]) & dynamics_sincos_fast(x[1]) & dynamics_sincos_fast(x[2]) & dynamics_sincos_fast(x[3])) {
         /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */
@@ -178,7 +223,7 @@ static inline void dynamics_sincos4(const double x[4], double s[4], double c[4])
 
 static inline int dynamics_sincos_fast_f32(float x) {
     const float ax = x < 0.0f ? -x : x;
-    return ax >= 0x1p-12f && ax < 0x1p22f;
+    return ax >= 0x1p-12f && DYNAMICS_SINCOS_IN_RANGE_F32(ax);
 }
 
 static inline void dynamics_sincos_f32(float x, float *s, float *c) {
@@ -186,14 +231,14 @@ static inline void dynamics_sincos_f32(float x, float *s, float *c) {
     if (ax < 0x1p-12f) {
         *s = x;
         *c = 1.0f;
-    } else if (!(ax < 0x1p22f)) {
-        *s = *c = (ax - ax) / (ax - ax);
+    } else if (!DYNAMICS_SINCOS_IN_RANGE_F32(ax)) {
+        dynamics_sincos_beyond_f32(x, s, c);
     } else {
     /* lane f32 scalar */
     }
 }
 
-static inline void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
+DYNAMICS_SINCOS4_INLINE void dynamics_sincos4_f32(const float x[4], float s[4], float c[4]) {
     int i;
     if (dynamics_sincos_fast_f32(x[0]) & dynamics_sincos_fast_f32(x[1]) & dynamics_sincos_fast_f32(x[2]) & dynamics_sincos_fast_f32(x[3])) {
         /* Copies that alias nothing, so that the loop vectorizes without run-time checks. */
@@ -268,4 +313,4 @@ static inline float dynamics_cos_f32(float x) {
     return c;
 }
 #endif /* DYNAMICS_TRIG_H */
-";
+"##;
