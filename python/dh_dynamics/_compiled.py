@@ -13,6 +13,7 @@ machine; without ``-march=native`` where the compiler refuses it).
 import ctypes
 import hashlib
 import os
+import platform
 import shutil
 import subprocess
 import sys
@@ -51,6 +52,18 @@ def _version(cc):
     return run.stdout
 
 
+def _machine():
+    """What `-march=native` compiles for: the architecture and, on Linux, the CPU's features
+    (a cache shared by machines of different CPUs must not hand one the other's library)."""
+    features = ""
+    try:
+        with open("/proc/cpuinfo") as cpuinfo:
+            features = next((line for line in cpuinfo if line.startswith(("flags", "Features"))), "")
+    except OSError:
+        pass
+    return platform.machine() + features
+
+
 def _build(cc, flags, header, library):
     """Compiles ``header`` into ``library``, in a scratch directory beside it, renamed into
     place once whole (two processes building the same robot each get a complete file)."""
@@ -75,7 +88,7 @@ def load(header):
     errors = []
     for flags in attempts:
         key = hashlib.sha256(
-            "\0".join([header, cc, _version(cc), *flags, sys.platform]).encode()
+            "\0".join([header, cc, _version(cc), *flags, sys.platform, _machine()]).encode()
         ).hexdigest()[:32]
         library = _cache_dir() / f"{key}.so"
         if not library.exists():
