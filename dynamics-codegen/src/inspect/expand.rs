@@ -7,6 +7,7 @@ use super::fold::fold_trig;
 use super::{Monomial, Poly, Sym};
 use crate::symbolic::{Node, NodeId, Number};
 use crate::trace::Equations;
+use std::collections::BTreeMap;
 
 /// Bounds on the polynomial expansion.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -136,9 +137,15 @@ impl<'a> Expander<'a> {
         id: NodeId,
         arrange: fn(Vec<(Monomial, Number)>) -> Vec<Term>,
     ) -> Option<Vec<Term>> {
+        Some(arrange(self.folded(id)?.into_iter().collect()))
+    }
+
+    /// The polynomial of node `id` with its sines and cosines of sums folded (`C12`), an
+    /// identity; `None` when it does not fit the limits.
+    pub(super) fn folded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
         let mut terms = self.poly(id)?.into_terms();
         // Each search for a pair to fold reads every term.
         fold_trig(&mut terms, &mut |n| self.charge(n as u64))?;
-        Some(arrange(terms.into_iter().collect()))
+        Some(terms)
     }
 }

@@ -30,6 +30,7 @@ mod poly;
 mod print;
 mod render;
 mod sections;
+pub mod simplify;
 mod symbol;
 #[cfg(test)]
 mod tests;
@@ -39,6 +40,7 @@ pub use expand::Limits;
 pub use monomial::Monomial;
 pub use poly::Poly;
 pub use print::Format;
+pub use simplify::{inspect_simplified, Envelope, JointEnvelope, Simplified};
 pub use symbol::{AngleSum, Sym};
 
 use crate::algo::JointKind;

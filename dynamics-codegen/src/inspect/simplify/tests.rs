@@ -1,0 +1,176 @@
+//! The proven bound against sampling: the full polynomial is τ (the graph's), and the pruned
+//! one never strays from it by more than the bound at random states of the envelope.
+
+use super::eval::{eval_terms, State};
+use super::{inspect_simplified, Envelope, JointEnvelope, Simplified};
+use crate::model::Robot;
+use crate::symbolic::Var;
+use crate::trace::{derive, Equations};
+use dynamics_test_support::Rng;
+use std::f64::consts::PI;
+
+fn load(file: &str) -> (Robot, Equations) {
+    let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("the robot file");
+    let robot = crate::front::load(&path, &text).expect("a robot").robot;
+    let eq = derive(&robot);
+    (robot, eq)
+}
+
+fn envelope(n: usize) -> Envelope {
+    let joint = JointEnvelope {
+        lower: -PI,
+        upper: PI,
+        speed: 2.0,
+        acceleration: 5.0,
+    };
+    Envelope {
+        joints: vec![joint; n],
+    }
+}
+
+/// A random state inside `e`: positions, velocities, accelerations.
+fn state(rng: &mut Rng, e: &Envelope) -> [Vec<f64>; 3] {
+    let mut q = Vec::new();
+    let mut qd = Vec::new();
+    let mut qdd = Vec::new();
+    for j in &e.joints {
+        q.push(rng.range(j.lower, j.upper));
+        qd.push(rng.range(-j.speed, j.speed));
+        qdd.push(rng.range(-j.acceleration, j.acceleration));
+    }
+    [q, qd, qdd]
+}
+
+/// τ from the graph, as `dynamics eval` evaluates it.
+fn graph_tau(eq: &Equations, offsets: &[f64], [q, qd, qdd]: &[Vec<f64>; 3]) -> Vec<f64> {
+    let values = eq.graph.eval(|v| match v {
+        Var::Q(i) => q[usize::from(i)],
+        Var::SinQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).sin(),
+        Var::CosQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).cos(),
+        Var::Qd(i) => qd[usize::from(i)],
+        Var::Qdd(i) => qdd[usize::from(i)],
+        _ => f64::NAN,
+    });
+    eq.tau.iter().map(|id| values[id.index()]).collect()
+}
+
+/// Each joint's tolerance: `fraction` of its peak |τ| over `samples` random states.
+fn tolerances(eq: &Equations, offsets: &[f64], e: &Envelope, fraction: f64) -> Vec<f64> {
+    let mut rng = Rng::new(7);
+    let mut peak = vec![0.0f64; eq.dof];
+    for _ in 0..500 {
+        let s = state(&mut rng, e);
+        for (p, t) in peak.iter_mut().zip(graph_tau(eq, offsets, &s)) {
+            *p = p.max(t.abs());
+        }
+    }
+    peak.iter().map(|p| fraction * p).collect()
+}
+
+/// The worst `|full − kept|` per joint over `samples` random states; checks on the way that
+/// the full polynomial is the graph's τ to 1e-9 of its size.
+fn worst_errors(s: &Simplified, eq: &Equations, e: &Envelope, samples: usize) -> Vec<f64> {
+    let mut rng = Rng::new(11);
+    let mut worst = vec![0.0f64; eq.dof];
+    for _ in 0..samples {
+        let x = state(&mut rng, e);
+        let at = State {
+            q: &x[0],
+            qd: &x[1],
+            qdd: &x[2],
+        };
+        let tau = graph_tau(eq, &s.constants.offsets, &x);
+        for (i, p) in s.prunings.iter().enumerate() {
+            let full = eval_terms(&p.full, at, &s.constants).expect("numeric");
+            let kept = eval_terms(&p.kept, at, &s.constants).expect("numeric");
+            let scale = 1.0 + tau[i].abs();
+            assert!(
+                (full - tau[i]).abs() <= 1e-9 * scale,
+                "T{}: polynomial {full} vs graph {}",
+                i + 1,
+                tau[i]
+            );
+            worst[i] = worst[i].max((full - kept).abs());
+        }
+    }
+    worst
+}
+
+/// Prunes `file`'s τ at `fraction` of each joint's sampled peak and samples the error.
+fn check_sound(file: &str, fraction: f64, samples: usize) {
+    let (robot, eq) = load(file);
+    let e = envelope(eq.dof);
+    let offsets = super::eval::constants(&eq).expect("constants").offsets;
+    let tol = tolerances(&eq, &offsets, &e, fraction);
+    let s = inspect_simplified(&eq, &robot, &e, &tol).expect("prunes");
+    let worst = worst_errors(&s, &eq, &e, samples);
+    let mut dropped = 0;
+    for (i, p) in s.prunings.iter().enumerate() {
+        assert!(
+            p.bound <= p.tolerance,
+            "T{}: bound over the tolerance",
+            i + 1
+        );
+        assert!(
+            worst[i] <= p.bound,
+            "T{}: sampled error {} over the proven bound {}",
+            i + 1,
+            worst[i],
+            p.bound
+        );
+        dropped += p.dropped.len();
+        eprintln!(
+            "{file} T{}: {} of {} kept, tolerance {:.4}, bound {:.4}, worst sampled {:.4}, ratio {:.3}",
+            i + 1,
+            p.kept.len(),
+            p.full.len(),
+            p.tolerance,
+            p.bound,
+            worst[i],
+            worst[i] / p.bound.max(f64::MIN_POSITIVE)
+        );
+    }
+    assert!(dropped > 0, "{file}: nothing dropped, nothing tested");
+}
+
+#[test]
+fn puma_560_within_its_bound() {
+    check_sound("robots/puma560.toml", 0.01, 3000);
+}
+
+#[test]
+fn a_random_robot_within_its_bound() {
+    check_sound("tests/data/reference/robots/random5.json", 0.01, 2000);
+}
+
+/// Coulomb friction's `sgn θ'` is bounded by 1 and a geared rotor's inertia is in M.
+#[test]
+fn friction_and_rotors_within_their_bound() {
+    check_sound("robots/two_link_friction.toml", 0.05, 3000);
+}
+
+#[test]
+fn a_zero_tolerance_keeps_everything_and_a_huge_one_nothing() {
+    let (robot, eq) = load("robots/puma560.toml");
+    let e = envelope(eq.dof);
+    let all = inspect_simplified(&eq, &robot, &e, &[0.0; 6]).expect("prunes");
+    for p in &all.prunings {
+        assert_eq!((p.kept.len(), p.bound), (p.full.len(), 0.0));
+    }
+    let none = inspect_simplified(&eq, &robot, &e, &[1e9; 6]).expect("prunes");
+    for p in &none.prunings {
+        assert!(p.kept.is_empty() && p.bound <= p.magnitude * (1.0 + 1e-9));
+        assert!(p.bound > 0.0);
+    }
+}
+
+#[test]
+fn a_parameter_cannot_be_bounded() {
+    let (robot, eq) = load("robots/niku_example_6_1.toml");
+    let error = inspect_simplified(&eq, &robot, &envelope(1), &[0.1])
+        .err()
+        .expect("refused");
+    assert!(error.contains("the parameter `"), "{error}");
+    assert!(error.starts_with("T1: "), "{error}");
+}
