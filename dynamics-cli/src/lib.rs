@@ -39,6 +39,7 @@ mod trajectory;
 use clap::Parser;
 pub use commands::CHeader;
 use commands::Failure;
+use std::io::Write;
 use std::process::ExitCode;
 
 /// The `dynamics` binary: the command line of the process, its output on stdout, its errors on
@@ -49,8 +50,19 @@ pub fn main() -> ExitCode {
     let cli = args::Cli::parse();
     match commands::run(&cli.command) {
         Ok(out) => {
-            print!("{out}");
-            ExitCode::SUCCESS
+            // A reader that stops early (`dynamics emit .. | head`) closes the pipe: not an
+            // error of the command, and no panic as `print!` would.
+            let mut stdout = std::io::stdout().lock();
+            match stdout
+                .write_all(out.as_bytes())
+                .and_then(|()| stdout.flush())
+            {
+                Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+                    eprintln!("dynamics: writing the output: {e}");
+                    ExitCode::from(1)
+                }
+                _ => ExitCode::SUCCESS,
+            }
         }
         Err(Failure::Usage(error)) => error.exit(),
         Err(Failure::File(message)) => {
