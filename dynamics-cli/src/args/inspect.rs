@@ -1,0 +1,60 @@
+//! The options of `inspect`, with those of `--simplified`.
+
+use super::{JointTerms, Numbers, RobotFile};
+use clap::Args;
+
+#[derive(Args, Debug)]
+pub struct Inspect {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    /// LaTeX instead of plain text
+    #[arg(long)]
+    pub latex: bool,
+    /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
+    #[arg(long, conflicts_with = "base_parameters")]
+    pub kinematics: bool,
+    /// The base parameters instead of the equations of motion: the combinations of the
+    /// standard parameters that the joint torques determine
+    #[arg(long)]
+    pub base_parameters: bool,
+    #[command(flatten)]
+    pub joint_terms: JointTerms,
+    #[command(flatten)]
+    pub simplified: Simplified,
+}
+
+/// `inspect --simplified`: the joint torques pruned within a proven bound over an envelope.
+#[derive(Args, Debug)]
+pub struct Simplified {
+    /// The joint torques with their smallest terms dropped, within --tolerance over the
+    /// envelope (--q-min, --q-max, --qd-max, --qdd-max), and what was dropped
+    #[arg(long, requires = "tolerance", conflicts_with_all = ["kinematics", "base_parameters"])]
+    pub simplified: bool,
+    /// The largest error allowed in each joint torque, N·m or N: one for every joint, or one
+    /// per joint
+    #[arg(long, value_name = "T1,T2,..", requires = "simplified")]
+    pub tolerance: Option<Numbers>,
+    /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
+    /// -π rad or -1 m]
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "simplified"
+    )]
+    pub q_min: Option<Numbers>,
+    /// The joints' upper limits [default: π rad or 1 m]
+    #[arg(
+        long,
+        value_name = "Q1,Q2,..",
+        allow_hyphen_values = true,
+        requires = "simplified"
+    )]
+    pub q_max: Option<Numbers>,
+    /// The joints' speed limits (rad/s or m/s) [default: 2]
+    #[arg(long, value_name = "V1,V2,..", requires = "simplified")]
+    pub qd_max: Option<Numbers>,
+    /// The joints' acceleration limits (rad/s² or m/s²) [default: 5]
+    #[arg(long, value_name = "A1,A2,..", requires = "simplified")]
+    pub qdd_max: Option<Numbers>,
+}
