@@ -93,6 +93,26 @@ fn program(header: &str, xs: &[f64]) -> String {
     )
 }
 
+/// `source` compiled by `cc` with its language `flags`, the warnings as errors, at -O2, and
+/// `extra` after the source (macros, libraries), into `trig` beside it.
+fn build(cc: &str, flags: &[&str], source: &Path, extra: &[&str]) -> std::path::PathBuf {
+    let binary = source.with_file_name("trig");
+    let out = Command::new(cc)
+        .args(flags)
+        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O2", "-o"])
+        .arg(&binary)
+        .arg(source)
+        .args(extra)
+        .output()
+        .expect("run the compiler");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    binary
+}
+
 #[test]
 fn the_headers_own_sines_and_cosines_are_the_runtimes() {
     let Some((cc, flags, _)) = compilers().into_iter().find(|c| c.2) else {
@@ -106,20 +126,12 @@ fn the_headers_own_sines_and_cosines_are_the_runtimes() {
     let xs = arguments();
     let source = dir.join("trig.c");
     std::fs::write(&source, program("robot.h", &xs)).expect("write");
-    let binary = dir.join("trig");
     // Without -lm: nothing in it may call the math library.
-    let out = Command::new(cc)
-        .args(flags)
-        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O2"])
-        .args(["-ffp-contract=off", "-DDYNAMICS_OWN_SINCOS", "-o"])
-        .arg(&binary)
-        .arg(&source)
-        .output()
-        .expect("run the compiler");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let binary = build(
+        cc,
+        flags,
+        &source,
+        &["-ffp-contract=off", "-DDYNAMICS_OWN_SINCOS"],
     );
     let run = Command::new(&binary).output().expect("run");
     let text = String::from_utf8(run.stdout).expect("UTF-8");
@@ -193,20 +205,7 @@ fn the_default_header_calls_the_math_library_beyond_the_fast_range() {
     let xs = [65_537.0, -70_000.5, 1.0e6, -3.0e15, 2.5e30];
     let source = dir.join("trig.c");
     std::fs::write(&source, program("robot.h", &xs)).expect("write");
-    let binary = dir.join("trig");
-    let out = Command::new(cc)
-        .args(flags)
-        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-O2", "-o"])
-        .arg(&binary)
-        .arg(&source)
-        .arg("-lm")
-        .output()
-        .expect("run the compiler");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let binary = build(cc, flags, &source, &["-lm"]);
     let run = Command::new(&binary).output().expect("run");
     let text = String::from_utf8(run.stdout).expect("UTF-8");
     for (x, line) in xs.iter().zip(text.lines()) {

@@ -95,38 +95,12 @@ fn definition(f: &Function) -> String {
 #[cfg(test)]
 mod tests {
     use super::definition;
+    use crate::emit_c::function::tests::arm_with_every_family;
     use crate::emit_c::{functions, Precision};
-    use crate::method::{Family, FamilySet, Method};
-
-    fn arm() -> crate::trace::Equations {
-        let text = r#"
-            name = "arm"
-            gravity = [0, -9.81, 0]
-            [[joints]]
-            type = "revolute"
-            a = 0.5
-            mass = 2
-            com = [-0.25, 0, 0]
-            inertia = [0, 0.04, 0.04, 0, 0, 0]
-            [[joints]]
-            type = "revolute"
-            a = 0.4
-            mass = 1
-            com = [-0.2, 0, 0]
-            inertia = [0, 0.01, 0.01, 0, 0, 0]
-        "#;
-        let robot = crate::front::from_toml(text, "arm").expect("a valid robot");
-        let mut eq = crate::trace::derive(&robot);
-        let every = Family::ALL
-            .iter()
-            .copied()
-            .fold(FamilySet::default(), FamilySet::with);
-        eq.add_families(&robot, every);
-        eq
-    }
+    use crate::method::Method;
 
     fn batch_of(method: Method, precision: Precision) -> String {
-        let eq = arm();
+        let eq = arm_with_every_family();
         let f = functions(&eq, "arm")
             .into_iter()
             .find(|f| f.method == method && f.precision == precision)

@@ -238,7 +238,7 @@ pub(super) fn comment_safe(text: &str) -> String {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::{functions, Precision};
     use crate::method::{Family, FamilySet, Method};
 
@@ -261,10 +261,9 @@ mod tests {
         inertia = [0, 0.01, 0.01, 0, 0, 0]
     "#;
 
-    /// With every family asked for, each method of the table has its two functions, in the
-    /// table's order: a new row gets its C function with no change to the C back end.
-    #[test]
-    fn every_method_of_the_table_has_a_function_in_each_precision() {
+    /// The equations of [`ARM`] with every family: every method of the table (the C back
+    /// end's tests).
+    pub(in crate::emit_c) fn arm_with_every_family() -> crate::trace::Equations {
         let robot = crate::front::from_toml(ARM, "arm").expect("a valid robot");
         let mut eq = crate::trace::derive(&robot);
         let every = Family::ALL
@@ -272,6 +271,14 @@ mod tests {
             .copied()
             .fold(FamilySet::default(), FamilySet::with);
         eq.add_families(&robot, every);
+        eq
+    }
+
+    /// With every family asked for, each method of the table has its two functions, in the
+    /// table's order: a new row gets its C function with no change to the C back end.
+    #[test]
+    fn every_method_of_the_table_has_a_function_in_each_precision() {
+        let eq = arm_with_every_family();
         let names: Vec<String> = functions(&eq, "arm").into_iter().map(|f| f.name).collect();
         let expected: Vec<String> = Method::ALL
             .iter()
