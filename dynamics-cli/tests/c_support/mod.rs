@@ -253,6 +253,14 @@ pub fn parse(output: &str) -> Printed {
         .collect()
 }
 
+/// Whether this machine runs code compiled with `-mfma` (x86-64 with FMA).
+fn fused_here() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return std::arch::is_x86_feature_detected!("fma");
+    #[cfg(not(target_arch = "x86_64"))]
+    return false;
+}
+
 /// The compilers found, each with its language flags and whether to build it also with the
 /// header's default and own sines and cosines (beside `<math.h>`'s).
 pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
@@ -276,9 +284,6 @@ pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
 pub struct Run {
     /// The compiler, and `-DDYNAMICS_OWN_SINCOS` where it has that.
     pub label: String,
-    /// Whether the header's own sines and cosines were compiled (the default, or
-    /// `DYNAMICS_OWN_SINCOS`), not `<math.h>`'s (`DYNAMICS_LIBM_SINCOS`).
-    pub own_trig: bool,
     pub printed: Printed,
 }
 
@@ -331,26 +336,25 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> V
     let compilers = compilers();
     let count = if every { compilers.len() } else { 1 };
     for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
-        // `<math.h>`'s sines and cosines (bit for bit the graph's, evaluated with the same
-        // libm), then the default (the runtime's kernels, `<math.h>`'s beyond their range) and
-        // the kernels alone.
-        let mut builds = vec![("libm", true, &["-DDYNAMICS_LIBM_SINCOS", "-lm"][..])];
+        // `<math.h>`'s sines and cosines, then the default (the runtime's kernels, `<math.h>`'s
+        // beyond their range) and the kernels alone.
+        let mut builds = vec![("libm", &["-DDYNAMICS_LIBM_SINCOS", "-lm"][..])];
         if kernels_too && every {
-            builds.push(("default", false, &["-lm"][..]));
-            builds.push(("own", false, own));
+            builds.push(("default", &["-lm"][..]));
+            builds.push(("own", own));
+            // The multiply-adds fused, as the Rust's are on a CPU with FMA.
+            if fused_here() {
+                builds.push(("fused", &["-mfma", "-lm"][..]));
+            }
         }
-        for (name, libm, extra) in builds {
+        for (name, extra) in builds {
             let label = format!("{cc} {}", extra.join(" "));
             let program = dir.join(format!("driver_{cc}_{name}"));
             compile(cc, flags, extra, &source, &program);
             let run = Command::new(&program).output().expect("run the driver");
             assert!(run.status.success(), "{label} driver of {}", robot.name);
             let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
-            runs.push(Run {
-                label,
-                own_trig: !libm,
-                printed,
-            });
+            runs.push(Run { label, printed });
         }
     }
     runs
@@ -425,33 +429,27 @@ pub fn printed<'p>(printed: &'p Printed, name: &str, k: usize, s: usize) -> &'p 
         .unwrap_or_else(|| panic!("{name} printed nothing at sample {s}"))
 }
 
-/// Every function against the graph: `double` exactly (to 1e-12 with the header's own sines
-/// and cosines), `float` to `f32_tolerance`; and its batch over every state, state by state,
-/// bit for bit the single-state call.
+/// Every function against the graph: `double` to 1e-12 (the header adds each sum's terms in
+/// the emission's order, `Sums::plan`, not the graph's, and its sines and cosines are within
+/// an ulp of the libm's), `float` to `f32_tolerance`; and its batch over every state, state by
+/// state, bit for bit the single-state call.
 pub fn check_against_graph(robot: &Robot, states: &[State], run: &Run) {
     let (out, cc) = (&run.printed, &run.label);
     for (s, state) in states.iter().enumerate() {
         let values = evaluate(&robot.eq, &robot.params, state);
         for f in &robot.functions {
             let tolerance = match f.precision {
-                // The header's own sines and cosines are within an ulp of the libm's.
-                Precision::Double if run.own_trig => 1e-12,
-                // The same operations in the same order on the same libm: the same bits.
-                Precision::Double => 0.0,
+                Precision::Double => 1e-12,
                 Precision::Single => f32_tolerance(f.method),
             };
             let shape = f.method.shape(&robot.eq);
             for (k, part) in parts(&shape).iter().enumerate() {
                 let want: Vec<f64> = part.iter().map(|id| values[id.index()]).collect();
                 let (status, got) = printed(out, &f.name, k, s);
-                let e = if tolerance == 0.0 {
-                    scaled_error(got, &want)
-                } else {
-                    // A result near zero (q̈ where τ balances gravity) is the rounding of the
-                    // inputs and of the sines: measured against 1 at least.
-                    let scale = want.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
-                    scaled_error(got, &want) * want_scale(&want) / scale
-                };
+                // A result near zero (q̈ where τ balances gravity) is the rounding of the
+                // inputs and of the sines: measured against 1 at least.
+                let scale = want.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
+                let e = scaled_error(got, &want) * want_scale(&want) / scale;
                 assert!(
                     e <= tolerance,
                     "{cc}: {} part {k} at sample {s}: off by {e:e}",

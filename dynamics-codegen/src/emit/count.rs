@@ -4,7 +4,7 @@
 
 use super::emitter::Emitter;
 use super::parts::OpCount;
-use super::sum_order::sum_order;
+use super::sums::Sums;
 use crate::symbolic::{Node, NodeId, Var};
 use crate::trace::Equations;
 
@@ -33,29 +33,4 @@ pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
         }
     }
     ops
-}
-
-impl Emitter<'_> {
-    /// The number of dependent operations from the inputs to node `id` as emitted, each sum
-    /// added in [`sum_order`]. A fused multiply-add counts as its two operations, as in the
-    /// flop counts; a negation folds into what reads it.
-    pub(super) fn depth(&mut self, id: NodeId) -> u32 {
-        if self.depth[id.index()] != u32::MAX {
-            return self.depth[id.index()];
-        }
-        let d = match self.graph.node(id) {
-            Node::Add(..) => {
-                let (_, depths) = self.sum_terms_with_depth(id);
-                sum_order(&depths).1
-            }
-            Node::Mul(a, b) => 1 + self.depth(a).max(self.depth(b)),
-            Node::Recip(a) | Node::Sin(a) | Node::Cos(a) | Node::Sign(a) | Node::Tanh(a) => {
-                1 + self.depth(a)
-            }
-            Node::Neg(a) => self.depth(a),
-            Node::Const(_) | Node::Var(_) => 0,
-        };
-        self.depth[id.index()] = d;
-        d
-    }
 }

@@ -3,7 +3,9 @@
 
 use super::names::local;
 use super::parts::{Context, Shared};
+use super::sums::Sums;
 use crate::symbolic::{Graph, Node, NodeId, Var};
+use std::cell::Cell;
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -41,9 +43,9 @@ pub(super) struct Emitter<'a> {
     pub(super) temporary_prefix: &'static str,
     /// Whether there is a configuration function (the motion function takes its result).
     pub(super) has_configuration: bool,
-    /// Each node's number of dependent operations as emitted ([`Emitter::depth`]), once
+    /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
-    pub(super) depth: Vec<u32>,
+    pub(super) depth: Vec<Cell<u32>>,
 }
 
 impl<'a> Emitter<'a> {
@@ -61,7 +63,7 @@ impl<'a> Emitter<'a> {
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
-            depth: vec![u32::MAX; n],
+            depth: vec![Cell::new(u32::MAX); n],
         }
     }
 
@@ -95,15 +97,6 @@ impl<'a> Emitter<'a> {
                 self.eq.angle_offsets[usize::from(i)].into_iter().collect()
             }
             Node::Const(_) | Node::Var(_) => vec![],
-        }
-    }
-
-    /// `(a, x)` if `a + b` is `a − x`.
-    pub(super) fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
-        match (self.graph.node(a), self.graph.node(b)) {
-            (_, Node::Neg(x)) => Some((a, x)),
-            (Node::Neg(x), _) => Some((b, x)),
-            _ => None,
         }
     }
 
@@ -182,5 +175,19 @@ impl<'a> Emitter<'a> {
             }
             _ => quote!(),
         }
+    }
+}
+
+impl Sums for Emitter<'_> {
+    fn graph(&self) -> &Graph {
+        self.graph
+    }
+
+    fn in_place(&self, c: NodeId) -> bool {
+        self.names[c.index()].is_none() && self.uses[c.index()] <= 1
+    }
+
+    fn depths(&self) -> &[Cell<u32>] {
+        &self.depth
     }
 }

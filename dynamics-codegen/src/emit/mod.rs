@@ -56,6 +56,7 @@ mod parts;
 mod program;
 mod shared;
 mod sum_order;
+mod sums;
 
 pub use count::count;
 pub(crate) use equations::readable;
@@ -64,6 +65,7 @@ pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};
 pub use items::{generate, Generated, Items, MethodCode, Module};
 pub(crate) use names::output_names;
+pub(crate) use sums::{Sums, Written};
 pub use names::{
     local, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT,
     PARAMETERS,

@@ -15,10 +15,10 @@ const FMA_LATENCY: u32 = 4;
 /// included), subtracted or added, and whether it is a product that a fused multiply-add can
 /// take.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct SumTerm {
-    pub(super) depth: u32,
-    pub(super) negative: bool,
-    pub(super) fusable: bool,
+pub(crate) struct SumTerm {
+    pub(crate) depth: u32,
+    pub(crate) negative: bool,
+    pub(crate) fusable: bool,
 }
 
 /// One addition of [`sum_order`]: partial sums `a` and `b` (indices: the terms, then each

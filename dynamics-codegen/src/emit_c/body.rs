@@ -46,6 +46,7 @@ impl<'a> Writer<'a> {
             names: vec![None; n],
             comments: vec![None; n],
             temporaries: 0,
+            depth: vec![std::cell::Cell::new(u32::MAX); n],
         }
     }
 

@@ -2,8 +2,10 @@
 //! written `a - b`, constants as exact decimal literals, and parentheses only where C's
 //! precedence needs them to keep the graph's order of evaluation.
 
-use crate::symbolic::{Node, NodeId, Var, WRENCH};
+use crate::emit::{Sums, Written};
+use crate::symbolic::{Graph, Node, NodeId, Var, WRENCH};
 use crate::trace::Equations;
+use std::cell::Cell;
 
 /// Writes one function's body: its expressions here, its statements in `body.rs`.
 pub(super) struct Writer<'a> {
@@ -20,6 +22,8 @@ pub(super) struct Writer<'a> {
     /// What a named output element is, for its comment.
     pub(super) comments: Vec<Option<String>>,
     pub(super) temporaries: usize,
+    /// Each node's depth as written ([`Sums::depth`]), `u32::MAX` until asked for.
+    pub(super) depth: Vec<Cell<u32>>,
 }
 
 /// The floating-point type of a C function.
@@ -60,6 +64,12 @@ impl Precision {
             Precision::Double => name.to_owned(),
             Precision::Single => format!("{name}f"),
         }
+    }
+
+    /// The header's multiply-add `x·y + a`, `dynamics_fma` or `dynamics_fma_f32`: fused
+    /// where the Rust runtime's `mul_add` is.
+    pub(super) fn fma(self) -> String {
+        format!("dynamics_fma{}", self.suffix())
     }
 
     /// The header's function `name` (`sin`, `cos`, `sincos`) of this type: `dynamics_sin`,
@@ -138,15 +148,6 @@ impl Writer<'_> {
         }
     }
 
-    /// `(a, x)` if `a + b` is `a − x`.
-    fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
-        match (self.eq.graph.node(a), self.eq.graph.node(b)) {
-            (_, Node::Neg(x)) => Some((a, x)),
-            (Node::Neg(x), _) => Some((b, x)),
-            _ => None,
-        }
-    }
-
     /// The magnitude of a negative constant, which a sum subtracts.
     fn negative_constant(&self, id: NodeId) -> Option<f64> {
         match self.eq.graph.node(id) {
@@ -181,8 +182,21 @@ impl Writer<'_> {
             return name.clone();
         }
         let p = self.precision;
+        if self.is_sum(id) {
+            let (text, call) = self.sum(id);
+            let wrap = matches!(
+                place,
+                Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
+            );
+            return if wrap && !call {
+                format!("({text})")
+            } else {
+                text
+            };
+        }
         let (text, wrap) = match self.eq.graph.node(id) {
             Node::Var(v) => return self.var_name(v),
+            Node::Add(..) => unreachable!("a sum is written by `sum`"),
             Node::Const(c) => {
                 let value = p.literal(c.to_f64());
                 let bare = matches!(place, Place::Top | Place::AddLeft | Place::MulLeft);
@@ -192,13 +206,6 @@ impl Writer<'_> {
                     value
                 };
             }
-            Node::Add(a, b) => (
-                self.sum(a, b),
-                matches!(
-                    place,
-                    Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
-                ),
-            ),
             Node::Mul(a, b) => (
                 format!(
                     "{} * {}",
@@ -227,42 +234,61 @@ impl Writer<'_> {
         }
     }
 
-    /// `a + b`, written `a - x` where one operand is `−x`, a negative constant or the product
-    /// of one written in place (`a - 0.7 * x` for `a + (−0.7)·x`: negation is exact, so
-    /// the value is the same).
-    fn sum(&self, a: NodeId, b: NodeId) -> String {
-        let left = |id| self.expr(id, Place::AddLeft);
-        if let Some((l, x)) = self.as_sub(a, b) {
-            return format!("{} - {}", left(l), self.expr(x, Place::AddRight));
-        }
-        match (self.subtracted(a), self.subtracted(b)) {
-            (_, Some(x)) => format!("{} - {x}", left(a)),
-            (Some(x), None) => format!("{} - {x}", left(b)),
-            (None, None) => format!("{} + {}", left(a), self.expr(b, Place::AddRight)),
+    /// The sum `id` as [`Sums::plan`] writes it, `a + b`, `a - b` and `dynamics_fma(x, y,
+    /// a)`, and whether it is a call (which needs no parentheses).
+    fn sum(&self, id: NodeId) -> (String, bool) {
+        match self.plan(id) {
+            (root @ Written::MulAdd { .. }, false) => (self.written(root, Place::Top), true),
+            (root, false) => (self.written(root, Place::Top), false),
+            (root, true) => (format!("-{}", self.written(root, Place::Unary)), false),
         }
     }
 
-    /// What a sum subtracts for its operand `id`: a negative constant's magnitude, or `c * x`
-    /// for the product `(−c)·x` written in place.
-    fn subtracted(&self, id: NodeId) -> Option<String> {
-        if let Some(m) = self.negative_constant(id) {
-            return Some(self.precision.literal(m));
-        }
-        let Node::Mul(a, b) = self.eq.graph.node(id) else {
-            return None;
+    /// A planned partial sum at `place`; `a + (−0.7)` written `a - 0.7` (negation is exact,
+    /// so the value is the same).
+    fn written(&self, w: Written, place: Place) -> String {
+        let (a, b, minus) = match w {
+            Written::Term(t) => return self.expr(t, place),
+            Written::MulAdd {
+                x,
+                y,
+                negate_x,
+                addend,
+                negate_addend,
+            } => {
+                let x = if negate_x {
+                    format!("-{}", self.expr(x, Place::Unary))
+                } else {
+                    self.expr(x, Place::Top)
+                };
+                let rest = if negate_addend {
+                    format!("-{}", self.written(*addend, Place::Unary))
+                } else {
+                    self.written(*addend, Place::Top)
+                };
+                let y = self.expr(y, Place::Top);
+                return format!("{}({x}, {y}, {rest})", self.precision.fma());
+            }
+            Written::Add(a, b) => (a, b, false),
+            Written::Sub(a, b) => (a, b, true),
         };
-        if self.names[id.index()].is_some() {
-            return None;
-        }
-        let right = |x| self.expr(x, Place::MulRight);
-        match (self.negative_constant(a), self.negative_constant(b)) {
-            (Some(m), _) => Some(format!("{} * {}", self.precision.literal(m), right(b))),
-            (None, Some(m)) => Some(format!(
-                "{} * {}",
-                self.expr(a, Place::MulLeft),
-                self.precision.literal(m)
-            )),
-            (None, None) => None,
+        let a = self.written(*a, Place::AddLeft);
+        let (b, minus) = match *b {
+            Written::Term(t) => match self.negative_constant(t) {
+                Some(m) => (self.precision.literal(m), !minus),
+                None => (self.expr(t, Place::AddRight), minus),
+            },
+            b => (self.written(b, Place::AddRight), minus),
+        };
+        let text = format!("{a} {} {b}", if minus { '-' } else { '+' });
+        let wrap = matches!(
+            place,
+            Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
+        );
+        if wrap {
+            format!("({text})")
+        } else {
+            text
         }
     }
 
@@ -297,5 +323,19 @@ mod tests {
             assert_eq!(Precision::Double.literal(x), double);
             assert_eq!(Precision::Single.literal(x), single);
         }
+    }
+}
+
+impl Sums for Writer<'_> {
+    fn graph(&self) -> &Graph {
+        &self.eq.graph
+    }
+
+    fn in_place(&self, c: NodeId) -> bool {
+        self.names[c.index()].is_none() && self.uses[c.index()] <= 1
+    }
+
+    fn depths(&self) -> &[Cell<u32>] {
+        &self.depth
     }
 }

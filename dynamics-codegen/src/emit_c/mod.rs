@@ -21,9 +21,13 @@
 //! over its own outputs' nodes only ([`crate::symbolic::Graph::live`], as marking reads them),
 //! in the graph's order: a node read more than once is a `const` local (`t4`), a node read once
 //! is written where it is read, and every constant is an exact literal (`0.4318`, `0.4318f`).
-//! The Rust emission's schedule (shared configuration functions, multiply-adds, the order of
-//! a sum's additions) is not reproduced: a C compiler inlines and contracts on its own
-//! (`-ffp-contract=fast`), and a C function stands alone.
+//! Each sum is written as the Rust emission writes it, from the same plan
+//! ([`crate::emit::Sums::plan`]): its terms added in the order that waits least, a product
+//! fused with the partial sum it meets into `dynamics_fma(x, y, a)`, one instruction where the
+//! Rust runtime's `mul_add` is (FMA on x86-64, aarch64). The Rust emission's shared
+//! configuration functions are not reproduced (a C function stands alone), so a node that the
+//! Rust code reads from the configuration may be written in place here: the same terms, not
+//! always the same bits.
 //!
 //! The header is ASCII: the method table's summaries, its comments, are spelled out (`q̇` as
 //! `qd`), as the element descriptions already are.
@@ -93,6 +97,8 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text.push_str(&format!("#ifndef {guard}\n#define {guard}\n\n{math}\n"));
     text.push_str(&trig::trig());
     text.push('\n');
+    text.push_str(FMA);
+    text.push('\n');
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
     if reads(eq, &functions, |node| matches!(node, Node::Sign(_))) {
         for p in Precision::ALL {
@@ -113,6 +119,26 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text.push_str(&format!("#endif /* {guard} */\n"));
     text
 }
+
+/// The multiply-add the functions' sums end in, fused where the Rust runtime's `mul_add` is
+/// (FMA on x86-64, aarch64): the same operations in the same order, hence the same results.
+const FMA: &str = "#ifndef DYNAMICS_FMA_H
+#define DYNAMICS_FMA_H
+/* x * y + a: one fused instruction, rounded once, where the target has one (as the Rust code's
+ * mul_add), else a product and a sum. */
+#if defined(__GNUC__) && (defined(__FMA__) || defined(__aarch64__))
+#define DYNAMICS_FUSED(f, x, y, a) f(x, y, a)
+#else
+#define DYNAMICS_FUSED(f, x, y, a) (x) * (y) + (a)
+#endif
+static inline double dynamics_fma(double x, double y, double a) {
+    return DYNAMICS_FUSED(__builtin_fma, x, y, a);
+}
+static inline float dynamics_fma_f32(float x, float y, float a) {
+    return DYNAMICS_FUSED(__builtin_fmaf, x, y, a);
+}
+#endif /* DYNAMICS_FMA_H */
+";
 
 /// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).
 fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) -> bool {
@@ -159,8 +185,10 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         "alias its inputs. A function that solves with the LDL^T of M returns 0 where every"
             .to_owned(),
         "pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).".to_owned(),
-        "For fused multiply-adds, compile with -ffp-contract=fast on a target that has them."
+        "Multiply-adds are fused where the target has FMA (x86-64 with -mfma or".to_owned(),
+        "-march=native, aarch64), as the Rust code's are; compile with -ffp-contract=fast for"
             .to_owned(),
+        "the sine and cosine kernels' too.".to_owned(),
         "Sines and cosines are the Rust runtime's kernels (the Rust code's results, four joints"
             .to_owned(),
         "at a time in vector lanes where the compiler vectorizes them, as gcc -O2".to_owned(),

@@ -1,0 +1,178 @@
+//! The plan of a sum, which the Rust and the C printers both write: its terms through the sums
+//! written in place, added in [`sum_order`], a product fused into a multiply-add with the
+//! partial sum it meets. One plan, two printers: the C computes what the Rust computes, in the
+//! same order, and so gets the same bits where both fuse alike.
+
+use super::sum_order::{sum_order, SumTerm};
+use crate::symbolic::{Graph, Node, NodeId};
+use std::cell::Cell;
+
+/// A sum as it is written, the signs resolved: every partial sum positive but the root's.
+pub(crate) enum Written {
+    /// A term, written as its node is.
+    Term(NodeId),
+    /// `a + b`.
+    Add(Box<Written>, Box<Written>),
+    /// `a − b`.
+    Sub(Box<Written>, Box<Written>),
+    /// `x·y + a` in one fused multiply-add, with `x` negated (`(−x)·y + a`) or the addend
+    /// (`x·y − a`) where the signs differ: a negated operand costs nothing (x86-64 and aarch64
+    /// have fused forms with either sign, and without FMA `−x·y + a` is `a − x·y`).
+    MulAdd {
+        x: NodeId,
+        y: NodeId,
+        negate_x: bool,
+        addend: Box<Written>,
+        negate_addend: bool,
+    },
+}
+
+/// What a printer tells the plan: its graph, which nodes it writes where they are read, and
+/// where it keeps each node's depth once computed.
+pub(crate) trait Sums {
+    fn graph(&self) -> &Graph;
+
+    /// Whether node `c` is written where it is read, not bound to a name.
+    fn in_place(&self, c: NodeId) -> bool;
+
+    /// Each node's depth ([`Sums::depth`]), `u32::MAX` until asked for.
+    fn depths(&self) -> &[Cell<u32>];
+
+    /// `(a, x)` if `a + b` is `a − x`.
+    fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
+        match (self.graph().node(a), self.graph().node(b)) {
+            (_, Node::Neg(x)) => Some((a, x)),
+            (Node::Neg(x), _) => Some((b, x)),
+            _ => None,
+        }
+    }
+
+    /// Whether `id` is written as a sum: a sum, or a negated sum written in place, whose terms
+    /// then change sign (`−(a − x·y)` is written `x·y − a`, not negated again).
+    fn is_sum(&self, id: NodeId) -> bool {
+        match self.graph().node(id) {
+            Node::Add(..) => true,
+            Node::Neg(a) => matches!(self.graph().node(a), Node::Add(..)) && self.in_place(a),
+            _ => false,
+        }
+    }
+
+    /// Whether `t` is a product written in place, which a fused multiply-add can take.
+    fn fusable(&self, t: NodeId) -> bool {
+        matches!(self.graph().node(t), Node::Mul(..)) && self.in_place(t)
+    }
+
+    /// The terms of the sum `id` with their signs (`true`: subtracted), through the sums and
+    /// negated sums written in place.
+    fn sum_terms(&self, id: NodeId, negative: bool, terms: &mut Vec<(NodeId, bool)>) {
+        let Node::Add(a, b) = self.graph().node(id) else {
+            terms.push((id, negative));
+            return;
+        };
+        // The operands as the printers read them: `a + (−x)` reads `a` and `x`.
+        let (a, b, b_negative) = match self.as_sub(a, b) {
+            Some((a, x)) => (a, x, !negative),
+            None => (a, b, negative),
+        };
+        for (c, negative) in [(a, negative), (b, b_negative)] {
+            let (c, negative) = match self.graph().node(c) {
+                Node::Neg(x) if self.in_place(c) => (x, !negative),
+                _ => (c, negative),
+            };
+            match self.graph().node(c) {
+                Node::Add(..) if self.in_place(c) => self.sum_terms(c, negative, terms),
+                _ => terms.push((c, negative)),
+            }
+        }
+    }
+
+    /// The terms of the sum [`Sums::is_sum`] `id` with their signs, and as [`sum_order`]
+    /// weighs them.
+    fn weighed_terms(&self, id: NodeId) -> (Vec<(NodeId, bool)>, Vec<SumTerm>) {
+        let mut terms = Vec::new();
+        match self.graph().node(id) {
+            Node::Neg(a) => self.sum_terms(a, true, &mut terms),
+            _ => self.sum_terms(id, false, &mut terms),
+        }
+        let weighed = terms
+            .iter()
+            .map(|&(t, negative)| SumTerm {
+                depth: self.depth(t),
+                negative,
+                fusable: self.fusable(t),
+            })
+            .collect();
+        (terms, weighed)
+    }
+
+    /// The number of dependent operations from the inputs to node `id` as written, each sum
+    /// added in [`sum_order`]. A fused multiply-add counts as its two operations, as in the
+    /// flop counts; a negation folds into what reads it.
+    fn depth(&self, id: NodeId) -> u32 {
+        let known = self.depths()[id.index()].get();
+        if known != u32::MAX {
+            return known;
+        }
+        let d = match self.graph().node(id) {
+            Node::Add(..) => {
+                let (_, weighed) = self.weighed_terms(id);
+                sum_order(&weighed).1
+            }
+            Node::Mul(a, b) => 1 + self.depth(a).max(self.depth(b)),
+            Node::Recip(a) | Node::Sin(a) | Node::Cos(a) | Node::Sign(a) | Node::Tanh(a) => {
+                1 + self.depth(a)
+            }
+            Node::Neg(a) => self.depth(a),
+            Node::Const(_) | Node::Var(_) => 0,
+        };
+        self.depths()[id.index()].set(d);
+        d
+    }
+
+    /// The sum [`Sums::is_sum`] `id` as written, and whether the whole is negated.
+    fn plan(&self, id: NodeId) -> (Written, bool) {
+        let (terms, weighed) = self.weighed_terms(id);
+        let (additions, _) = sum_order(&weighed);
+        let mut parts: Vec<Option<(Written, bool)>> = terms
+            .into_iter()
+            .map(|(t, negative)| Some((Written::Term(t), negative)))
+            .collect();
+        for addition in additions {
+            let (Some(a), Some(b)) = (parts[addition.a].take(), parts[addition.b].take()) else {
+                unreachable!("each partial sum is added once");
+            };
+            parts.push(Some(self.combine(a, b, addition.fused)));
+        }
+        let Some(Some(root)) = parts.pop() else {
+            unreachable!("a sum has terms");
+        };
+        root
+    }
+
+    /// Two partial sums with their signs (`true`: negative) added: if `fused`, `b` is a
+    /// product written in place and the two are one multiply-add; else `a + b` or `a − b`.
+    fn combine(&self, a: (Written, bool), b: (Written, bool), fused: bool) -> (Written, bool) {
+        let product = match b.0 {
+            Written::Term(t) if fused => match self.graph().node(t) {
+                Node::Mul(x, y) => Some((x, y)),
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some((x, y)) = product else {
+            return match (a.1, b.1) {
+                (false, true) => (Written::Sub(Box::new(a.0), Box::new(b.0)), false),
+                (true, false) => (Written::Sub(Box::new(b.0), Box::new(a.0)), false),
+                (negative, _) => (Written::Add(Box::new(a.0), Box::new(b.0)), negative),
+            };
+        };
+        let fused = Written::MulAdd {
+            x,
+            y,
+            negate_x: b.1 && !a.1,
+            addend: Box::new(a.0),
+            negate_addend: a.1 && !b.1,
+        };
+        (fused, a.1 && b.1)
+    }
+}
