@@ -320,7 +320,15 @@ pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
 /// [`compile_and_run`], with every build or only the first compiler's with `<math.h>` (for a
 /// large header, whose builds take long).
 pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> Vec<Run> {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("c_header_{}", robot.name));
+    // Two robots may share a name (the Panda's description file and its URDF), and tests run
+    // side by side: a directory of their own per header.
+    let mut hasher = std::collections::hash_map::DefaultHasher::new();
+    std::hash::Hash::hash(&robot.header, &mut hasher);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "c_header_{}_{:016x}",
+        robot.name,
+        std::hash::Hasher::finish(&hasher)
+    ));
     std::fs::create_dir_all(&dir).expect("a scratch directory");
     std::fs::write(dir.join(format!("{}.h", robot.name)), &robot.header).expect("write");
     let source = dir.join("driver.c");
