@@ -12,7 +12,9 @@
  * function computes all its values before it writes its outputs, which may therefore
  * alias its inputs. A function that solves with the LDL^T of M returns 0 where every
  * pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).
- * For fused multiply-adds, compile with -ffp-contract=fast on a target that has them.
+ * Multiply-adds are fused where the target has FMA (x86-64 with -mfma or
+ * -march=native, aarch64), as the Rust code's are; compile with -ffp-contract=fast for
+ * the sine and cosine kernels' too.
  * Sines and cosines are the Rust runtime's kernels (the Rust code's results, four joints
  * at a time in vector lanes where the compiler vectorizes them, as gcc -O2
  * -march=native does on AVX2), <math.h>'s beyond |x| = 2^16. Defined before the first
@@ -1804,7 +1806,7 @@ static inline void puma560_hand_pose(const double q[6], double hand[3][4]) {
     const double s2 = sines1_[1], c2 = cosines1_[1];
     const double s3 = sines1_[2], c3 = cosines1_[2];
     const double s4 = sines1_[3], c4 = cosines1_[3];
-    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    const double angles2_[4] = {q[4], q[5], q[5], q[5]};
     double sines2_[4], cosines2_[4];
     dynamics_sincos4(angles2_, sines2_, cosines2_);
     const double s5 = sines2_[0], c5 = cosines2_[0];
@@ -1863,7 +1865,7 @@ static inline void puma560_hand_pose_f32(const float q[6], float hand[3][4]) {
     const float s2 = sines1_[1], c2 = cosines1_[1];
     const float s3 = sines1_[2], c3 = cosines1_[2];
     const float s4 = sines1_[3], c4 = cosines1_[3];
-    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    const float angles2_[4] = {q[4], q[5], q[5], q[5]};
     float sines2_[4], cosines2_[4];
     dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
     const float s5 = sines2_[0], c5 = cosines2_[0];
@@ -1922,7 +1924,7 @@ static inline void puma560_link_poses(const double q[6], double link[6][3][4]) {
     const double s2 = sines1_[1], c2 = cosines1_[1];
     const double s3 = sines1_[2], c3 = cosines1_[2];
     const double s4 = sines1_[3], c4 = cosines1_[3];
-    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    const double angles2_[4] = {q[4], q[5], q[5], q[5]};
     double sines2_[4], cosines2_[4];
     dynamics_sincos4(angles2_, sines2_, cosines2_);
     const double s5 = sines2_[0], c5 = cosines2_[0];
@@ -2054,7 +2056,7 @@ static inline void puma560_link_poses_f32(const float q[6], float link[6][3][4])
     const float s2 = sines1_[1], c2 = cosines1_[1];
     const float s3 = sines1_[2], c3 = cosines1_[2];
     const float s4 = sines1_[3], c4 = cosines1_[3];
-    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    const float angles2_[4] = {q[4], q[5], q[5], q[5]};
     float sines2_[4], cosines2_[4];
     dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
     const float s5 = sines2_[0], c5 = cosines2_[0];
@@ -2344,7 +2346,7 @@ static inline void puma560_hand_jacobian_in_hand(const double q[6], double jh[6]
     const double s2 = sines1_[1], c2 = cosines1_[1];
     const double s3 = sines1_[2], c3 = cosines1_[2];
     const double s4 = sines1_[3], c4 = cosines1_[3];
-    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    const double angles2_[4] = {q[4], q[5], q[5], q[5]};
     double sines2_[4], cosines2_[4];
     dynamics_sincos4(angles2_, sines2_, cosines2_);
     const double s5 = sines2_[0], c5 = cosines2_[0];
@@ -2438,7 +2440,7 @@ static inline void puma560_hand_jacobian_in_hand_f32(const float q[6], float jh[
     const float s2 = sines1_[1], c2 = cosines1_[1];
     const float s3 = sines1_[2], c3 = cosines1_[2];
     const float s4 = sines1_[3], c4 = cosines1_[3];
-    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    const float angles2_[4] = {q[4], q[5], q[5], q[5]};
     float sines2_[4], cosines2_[4];
     dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
     const float s5 = sines2_[0], c5 = cosines2_[0];
@@ -2706,7 +2708,7 @@ static inline void puma560_hand_acceleration_bias_in_hand(const double q[6], con
     const double s2 = sines1_[1], c2 = cosines1_[1];
     const double s3 = sines1_[2], c3 = cosines1_[2];
     const double s4 = sines1_[3], c4 = cosines1_[3];
-    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    const double angles2_[4] = {q[4], q[5], q[5], q[5]};
     double sines2_[4], cosines2_[4];
     dynamics_sincos4(angles2_, sines2_, cosines2_);
     const double s5 = sines2_[0], c5 = cosines2_[0];
@@ -2811,7 +2813,7 @@ static inline void puma560_hand_acceleration_bias_in_hand_f32(const float q[6], 
     const float s2 = sines1_[1], c2 = cosines1_[1];
     const float s3 = sines1_[2], c3 = cosines1_[2];
     const float s4 = sines1_[3], c4 = cosines1_[3];
-    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    const float angles2_[4] = {q[4], q[5], q[5], q[5]};
     float sines2_[4], cosines2_[4];
     dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
     const float s5 = sines2_[0], c5 = cosines2_[0];
@@ -2916,7 +2918,7 @@ static inline void puma560_joint_torques_for_hand_wrench(const double q[6], cons
     const double s2 = sines1_[1], c2 = cosines1_[1];
     const double s3 = sines1_[2], c3 = cosines1_[2];
     const double s4 = sines1_[3], c4 = cosines1_[3];
-    const double angles2_[4] = {q[4], q[5], 1.0, 1.0};
+    const double angles2_[4] = {q[4], q[5], q[5], q[5]};
     double sines2_[4], cosines2_[4];
     dynamics_sincos4(angles2_, sines2_, cosines2_);
     const double s5 = sines2_[0], c5 = cosines2_[0];
@@ -2980,7 +2982,7 @@ static inline void puma560_joint_torques_for_hand_wrench_f32(const float q[6], c
     const float s2 = sines1_[1], c2 = cosines1_[1];
     const float s3 = sines1_[2], c3 = cosines1_[2];
     const float s4 = sines1_[3], c4 = cosines1_[3];
-    const float angles2_[4] = {q[4], q[5], 1.0f, 1.0f};
+    const float angles2_[4] = {q[4], q[5], q[5], q[5]};
     float sines2_[4], cosines2_[4];
     dynamics_sincos4_f32(angles2_, sines2_, cosines2_);
     const float s5 = sines2_[0], c5 = cosines2_[0];

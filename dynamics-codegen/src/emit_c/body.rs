@@ -208,8 +208,10 @@ impl<'a> Writer<'a> {
     /// const double s2 = sines1_[0], c2 = cosines1_[0];
     /// ```
     ///
-    /// a group of two or three padded with `1.0` (an angle of the kernels' fast range, whose
-    /// values nothing reads); a joint on its own, `double s6, c6; dynamics_sincos(q[5], &s6,
+    /// a group of two or three padded with its last angle again (whose values nothing reads: a
+    /// constant there, `1.0`, made gcc build the array on the stack, and the vector load of
+    /// it wait on the narrower stores, three times the time of the UR5 twins' `g`); a joint
+    /// on its own, `double s6, c6; dynamics_sincos(q[5], &s6,
     /// &c6);`, or `const double s6 = dynamics_sin(q[5]);` for its sine alone.
     fn sines_and_cosines(&self, lines: &mut Vec<String>) {
         let read = |v: Var| {
@@ -282,7 +284,8 @@ impl<'a> Writer<'a> {
         let p = self.precision;
         let ty = p.c_type();
         let mut angles: Vec<String> = group.iter().map(|(angle, _, _)| angle.clone()).collect();
-        angles.resize(4, p.literal(1.0));
+        let last = angles.last().expect("a group has angles").clone();
+        angles.resize(4, last);
         let (a, s, c) = (
             format!("angles{k}_"),
             format!("sines{k}_"),
