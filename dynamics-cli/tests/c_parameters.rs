@@ -70,11 +70,13 @@ fn parameters_come_first_in_the_stated_order() {
     assert!(robot.header.contains(&signature), "{signature}");
     assert!(robot.header.contains("const float params[6]"));
     // The offsets: a field's read as a parameter, the constant's as a literal; a group of
-    // joints padded with 1.
+    // joints padded with its last angle.
     assert!(robot
         .header
-        .contains("{q[0] + p_theta0, q[1], q[2] + 0.3, 1.0}"));
-    assert!(robot.header.contains("{q[1], q[2] + 0.3f, 1.0f, 1.0f}"));
+        .contains("{q[0] + p_theta0, q[1], q[2] + 0.3, q[2] + 0.3}"));
+    assert!(robot
+        .header
+        .contains("{q[1], q[2] + 0.3f, q[2] + 0.3f, q[2] + 0.3f}"));
 }
 
 #[test]
