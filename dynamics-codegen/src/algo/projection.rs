@@ -51,9 +51,6 @@ pub struct LinkFrames<'a, S> {
     pub tip_twist: Option<Twist<S>>,
     /// Each link's frame in that frame.
     pub poses: &'a [LinkFrame<S>],
-    /// The links whose bodies are given in J_l instead (carried there), with `tip_twist`: the
-    /// projection computes theirs in J_l, where the joint's own motion is `z`.
-    pub in_joint_frames: &'a [bool],
 }
 
 /// `Transx(a) Rotx(α)`: a standard D-H frame in its link's joint frame.
@@ -114,30 +111,18 @@ pub fn projected_torques<S: Scalar>(
         next.chain([tip]).collect::<Vec<_>>()
     });
     let twists = twists.as_deref();
-    let (joint_rates, mut links) = link_rates(chain, twists, qd, qdd, gravity);
-    let (joint_motions, mut motions) = joint_motions(chain, twists);
+    let mut links = link_rates(chain, twists, qd, qdd, gravity);
+    let mut motions = joint_motions(chain, twists);
     if let Some(frames) = frames {
-        let poses = frames.poses;
-        for (rates, frame) in links.iter_mut().zip(poses) {
+        let frames = frames.poses;
+        for (rates, frame) in links.iter_mut().zip(frames) {
             *rates = rates.in_frame(frame);
         }
         for along in &mut motions {
-            let skipped = poses.len() - along.len();
-            for ((a, b), frame) in along.iter_mut().zip(&poses[skipped..]) {
+            let skipped = frames.len() - along.len();
+            for ((a, b), frame) in along.iter_mut().zip(&frames[skipped..]) {
                 let r = &frame.rotation;
                 (*a, *b) = (r.tr_mul_vec(*a), r.tr_mul_vec(*b + a.cross(frame.origin)));
-            }
-        }
-        // Links computed in their joint frames: the rates and motions before the twist.
-        for (l, _) in frames
-            .in_joint_frames
-            .iter()
-            .enumerate()
-            .filter(|(_, &j)| j)
-        {
-            links[l] = joint_rates[l];
-            for (i, along) in motions.iter_mut().enumerate().take(l + 1) {
-                along[l - i] = joint_motions[i][l - i];
             }
         }
     }
@@ -163,7 +148,6 @@ pub fn projected_torques<S: Scalar>(
 
 /// A link's rates as the projection reads them: `ω`, `ω̇`, `v̇`, `U = [ω̇]× + [ω]×[ω]×` and
 /// `I ω̇ + ω × I ω` for each unit inertia entry (`[xx, yy, zz, xy, xz, yz]`).
-#[derive(Clone, Copy)]
 struct Rates<S> {
     w: V3<S>,
     wd: V3<S>,
@@ -220,19 +204,18 @@ fn tr_mul<S: Scalar>(u: &[[S; 3]; 3], x: V3<S>) -> V3<S> {
     Mat3 { m: *u }.tr_mul_vec(x)
 }
 
-/// Each link's rates in its joint frame, and in its D-H frame where `twists` are given (else
-/// the joint frame's again): Newton-Euler's forward pass.
+/// Each link's rates in its joint frame, or in its D-H frame where `twists` are given:
+/// Newton-Euler's forward pass.
 fn link_rates<S: Scalar>(
     chain: &Chain<S>,
     twists: Option<&[Twist<S>]>,
     qd: &[S],
     qdd: &[S],
     gravity: V3<S>,
-) -> (Vec<Rates<S>>, Vec<Rates<S>>) {
+) -> Vec<Rates<S>> {
     let zero = gravity.x.zero();
     let (mut w, mut wd, mut vd) = (V3::zero(zero), V3::zero(zero), -gravity);
     let mut links: Vec<Rates<S>> = Vec::with_capacity(chain.joints.len());
-    let mut joints = Vec::with_capacity(chain.joints.len());
     for (i, j) in chain.joints.iter().enumerate() {
         // From the parent's frame: J_{i−1}, or its D-H frame, whence J_i is `Rotz(θ) Transz(d)`.
         let (offset, into): (_, &dyn Fn(V3<S>) -> V3<S>) = match twists {
@@ -256,27 +239,22 @@ fn link_rates<S: Scalar>(
                 vd = V3::new(vd.x + c.x, vd.y + c.y, vd.z + qdd[i]);
             }
         }
-        let in_joint = Rates::new(w, wd, vd);
         let rates = match twists {
             Some(t) => t[i].rates(w, wd, vd),
-            None => in_joint,
+            None => Rates::new(w, wd, vd),
         };
         (w, wd, vd) = (rates.w, rates.wd, rates.vd);
-        joints.push(in_joint);
         links.push(rates);
     }
-    (joints, links)
+    links
 }
 
 /// `motions[i][l − i]`: joint i's unit motion (angular, linear) in J_l's axes at J_l's origin,
-/// for each link l ≥ i; then the same in link l's D-H frame where `twists` are given (else in
-/// J_l again).
-type Motions<S> = Vec<Vec<(V3<S>, V3<S>)>>;
-
+/// or in link l's D-H frame where `twists` are given, for each link l ≥ i.
 fn joint_motions<S: Scalar>(
     chain: &Chain<S>,
     twists: Option<&[Twist<S>]>,
-) -> (Motions<S>, Motions<S>) {
+) -> Vec<Vec<(V3<S>, V3<S>)>> {
     let out = |l: usize, motion| twists.map_or(motion, |t: &[Twist<S>]| t[l].motion(motion));
     (0..chain.joints.len())
         .map(|i| {
@@ -286,7 +264,6 @@ fn joint_motions<S: Scalar>(
                 JointKind::Revolute => (z, V3::zero(zero)),
                 JointKind::Prismatic => (V3::zero(zero), z),
             };
-            let mut in_joints = vec![own];
             let mut along = vec![out(i, own)];
             for (l, j) in chain.joints.iter().enumerate().skip(i + 1) {
                 let (a, b) = along.last().copied().unwrap_or(own);
@@ -294,12 +271,11 @@ fn joint_motions<S: Scalar>(
                     Some(_) => (j.unturn(a), j.unturn(b + a.cross_z(j.d))),
                     None => (j.to_child(a), j.to_child(b + a.cross(j.offset()))),
                 };
-                in_joints.push(into);
                 along.push(out(l, into));
             }
-            (in_joints, along)
+            along
         })
-        .unzip()
+        .collect()
 }
 
 #[cfg(test)]

@@ -154,19 +154,8 @@ fn placeholder_taus(
         let frames = LinkFrames {
             tip_twist,
             poses: &poses,
-            in_joint_frames: &[],
         };
         taus.push(tau(&in_link_frames, Some(&frames)));
-        if tip_twist.is_some() {
-            // The same recursion, every link computed in its joint frame, its body carried
-            // there: a link's columns are taken from whichever way is cheaper.
-            let all = vec![true; n];
-            let in_joints = LinkFrames {
-                in_joint_frames: &all,
-                ..frames
-            };
-            taus.push(tau(&in_joint_frames, Some(&in_joints)));
-        }
     }
     taus
 }
@@ -246,38 +235,9 @@ fn cheapest_columns(g: &mut Graph, candidates: &[Vec<NodeId>]) -> Vec<Vec<Vec<No
     let candidates: Vec<_> = candidates.iter().map(|tau| columns(g, tau)).collect();
     let mut candidates = candidates.into_iter();
     let first = candidates.next().unwrap_or_default();
-    let in_link_frames = candidates.next();
-    let mixed = in_link_frames.map(|d| match candidates.next() {
-        Some(j) => per_link(g, d, &j),
-        None => d,
-    });
-    cost::cheapest(g, first, mixed, |c| {
+    cost::cheapest(g, first, candidates, |c| {
         c.iter().flatten().flatten().copied().collect()
     })
-}
-
-/// Link by link, the columns of `in_joint_frames` where they make the whole cheaper than those
-/// of `in_link_frames`.
-fn per_link(
-    g: &Graph,
-    mut chosen: Vec<Vec<Vec<NodeId>>>,
-    in_joint_frames: &[Vec<Vec<NodeId>>],
-) -> Vec<Vec<Vec<NodeId>>> {
-    let all = |c: &Vec<Vec<Vec<NodeId>>>| -> Vec<NodeId> {
-        c.iter().flatten().flatten().copied().collect()
-    };
-    let mut best = cost::operations(g, &all(&chosen));
-    for l in 0..chosen.len() {
-        let mut trial = chosen.clone();
-        for (row, other) in trial.iter_mut().zip(in_joint_frames) {
-            row[l].clone_from(&other[l]);
-        }
-        let c = cost::operations(g, &all(&trial));
-        if c < best {
-            (chosen, best) = (trial, c);
-        }
-    }
-    chosen
 }
 
 /// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0.
