@@ -9,7 +9,7 @@
  *
  * q, qd, qdd and tau have 6 elements (rad or m, per s, per s^2; N m or N), a
  * wrench 6 ([fx, fy, fz, mx, my, mz]). Matrices are arrays of rows, m[i][j]. Each
- * function computes all its values before it writes its outputs, which may therefore
+ * function reads all its inputs before it writes its outputs, which may therefore
  * alias its inputs. A function that solves with the LDL^T of M returns 0 where every
  * pivot is positive, 1 where one is not (a singular M, or NaN in the inputs).
  * Multiply-adds are fused where the target has FMA (x86-64 with -mfma or

@@ -287,6 +287,44 @@ pub(super) mod tests {
         assert_eq!(names, expected);
     }
 
+    /// The header's promise that outputs may alias inputs: in every function, no line after
+    /// the first store into an output array reads an input array, the regressors' stores as
+    /// their values are computed included.
+    #[test]
+    fn every_input_is_read_before_the_first_store() {
+        let eq = arm_with_every_family();
+        for f in functions(&eq, "arm") {
+            let inputs: Vec<String> = f
+                .arguments
+                .iter()
+                .map(|(a, _)| a.name())
+                .chain((f.parameters > 0).then_some("params"))
+                .map(|a| format!("{a}["))
+                .collect();
+            let text = f.definition(&eq, "arm_sign");
+            let stores: Vec<String> = f.outputs.iter().map(|a| format!("{}[", a.name)).collect();
+            let body = text.lines().skip_while(|l| !l.starts_with("static inline"));
+            let mut stored = false;
+            for line in body.skip(1) {
+                let line = line.trim_start();
+                let reads = |array: &str| {
+                    line.match_indices(array).any(|(i, _)| {
+                        i == 0 || !line[..i].ends_with(|c: char| c.is_alphanumeric() || c == '_')
+                    })
+                };
+                if stored {
+                    assert!(
+                        !inputs.iter().any(|a| reads(a.as_str())),
+                        "{}: `{line}` reads an input after a store",
+                        f.name
+                    );
+                }
+                stored |= stores.iter().any(|a| line.starts_with(a.as_str()));
+            }
+            assert!(stored || f.outputs.is_empty(), "{} stores nothing", f.name);
+        }
+    }
+
     /// The names a function binds cannot meet: an output array or element (`m`, `m1_2`) is
     /// never an argument (`q`, `tau`), a temporary (`t4`), a pivot (`d2`), a sine or cosine
     /// (`s2`, `c2`), a parameter (`p_...`) or the solved stack's `value`.

@@ -180,7 +180,7 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         format!("q, qd, qdd and tau have {n} elements (rad or m, per s, per s^2; N m or N), a"),
         "wrench 6 ([fx, fy, fz, mx, my, mz]). Matrices are arrays of rows, m[i][j]. Each"
             .to_owned(),
-        "function computes all its values before it writes its outputs, which may therefore"
+        "function reads all its inputs before it writes its outputs, which may therefore"
             .to_owned(),
         "alias its inputs. A function that solves with the LDL^T of M returns 0 where every"
             .to_owned(),
