@@ -23,6 +23,7 @@ pub mod inspect;
 pub mod method;
 pub mod model;
 pub mod numeric;
+pub mod simplify;
 pub mod symbolic;
 pub mod trace;
 
@@ -60,6 +61,7 @@ pub fn expand_robot(
         krate: None,
         tracked_file: None,
         families,
+        simplify: None,
     };
     expand(input, &parsed)
 }
@@ -69,6 +71,11 @@ pub fn expand_robot(
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let mut eq = trace::derive(&parsed.robot);
     eq.add_families(&parsed.robot, parsed.families);
+    // Only for a robot that asks: the expansion costs what the rest of the derive does.
+    let simplified = parsed
+        .simplify
+        .as_ref()
+        .map(|request| simplify::add(&mut eq, request));
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields
@@ -98,12 +105,21 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
                        numbers: the base parameters group the links' parameters by them, and \
                        this robot takes some from struct fields (masses and inertias may be \
                        fields)";
-        let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
-        let impls = emit::unreachable_family(input, eq.dof, &krate, Family::BaseParameters);
-        quote!(#error const _: () = { #impls };)
+        untraced_family(input, &eq, &krate, Family::BaseParameters, message)
     });
+    let simplify_error = match simplified {
+        Some(Err(e)) => Some(untraced_family(
+            input,
+            &eq,
+            &krate,
+            Family::Simplified,
+            &format!("`simplify`: {e}"),
+        )),
+        _ => None,
+    };
     quote! {
         #error
+        #simplify_error
         #beside
         const _: () = {
             #track
@@ -111,4 +127,18 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             #equations
         };
     }
+}
+
+/// The error of an opt-in family asked for that could not be traced, and its trait's methods
+/// unreachable, so that calls to them add no errors of their own.
+fn untraced_family(
+    input: &syn::DeriveInput,
+    eq: &trace::Equations,
+    krate: &TokenStream,
+    family: Family,
+    message: &str,
+) -> TokenStream {
+    let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
+    let impls = emit::unreachable_family(input, eq.dof, krate, family);
+    quote!(#error const _: () = { #impls };)
 }

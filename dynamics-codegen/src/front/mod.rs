@@ -43,6 +43,7 @@ mod errors;
 mod fields;
 mod file;
 mod named_file;
+mod simplify;
 mod sources;
 mod urdf;
 mod value;
@@ -57,7 +58,7 @@ pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::check::{self, Problem};
 use crate::method::FamilySet;
-use crate::model::Robot;
+use crate::model::{Robot, Simplification};
 use attrs::{parse_attrs, Attrs, Source};
 use named_file::Named;
 use syn::parse::ParseStream;
@@ -74,6 +75,8 @@ pub struct Input {
     /// The families to implement: the opt-in ones asked for (`derivatives = true`), and
     /// every other.
     pub families: FamilySet,
+    /// `simplify(...)`, resolved: the pruned models' tolerances and envelope.
+    pub simplify: Option<Simplification>,
 }
 
 /// Why the derive input gave no robot.
@@ -126,7 +129,42 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
         check(&lowered, &mut errors);
         lowered.robot
     });
-    finish(input, read.attrs, errors, robot, tracked_file)
+    let simplify = robot
+        .as_ref()
+        .and_then(|robot| resolve_simplify(read.attrs.simplify.as_ref()?, robot, &mut errors));
+    let read = Read {
+        attrs: read.attrs,
+        simplify,
+    };
+    finish(input, read, errors, robot, tracked_file)
+}
+
+/// The attributes read, and `simplify(...)` resolved for the robot.
+struct Read {
+    attrs: Attrs,
+    simplify: Option<Simplification>,
+}
+
+/// `simplify(...)` for `robot`, its defaults from the joints' kinds; its errors on its keys.
+fn resolve_simplify(
+    given: &simplify::Given<proc_macro2::Span>,
+    robot: &Robot,
+    errors: &mut Errors,
+) -> Option<Simplification> {
+    let defaults: Vec<_> = robot
+        .joints
+        .iter()
+        .map(|j| simplify::default_joint(j.kind))
+        .collect();
+    match given.resolve(&defaults) {
+        Ok(s) => Some(s),
+        Err(problems) => {
+            for (at, message) in problems {
+                errors.push(at, message);
+            }
+            None
+        }
+    }
 }
 
 /// Reads every `#[dynamics(...)]` of the input into one [`Attrs`].
@@ -264,11 +302,12 @@ fn tool_hint(key: &str) -> &'static str {
 /// The robot, or every error with what the fallback expansion needs.
 fn finish(
     input: &syn::DeriveInput,
-    attrs: Attrs,
+    read: Read,
     errors: Errors,
     robot: Option<Robot>,
     tracked_file: Option<String>,
 ) -> Result<Input, Failure> {
+    let Read { attrs, simplify } = read;
     let families = attrs.families();
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
@@ -280,6 +319,7 @@ fn finish(
                 krate: attrs.krate,
                 tracked_file,
                 families,
+                simplify,
             })
         }
         (Some(error), robot) => Err(Failure {

@@ -17,6 +17,7 @@ mod joints;
 mod keys;
 mod parse;
 mod reader;
+mod simplify;
 
 pub use keys::attribute_words;
 pub(super) use parse::{parse_attrs, Attrs, Source};

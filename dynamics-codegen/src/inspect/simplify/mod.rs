@@ -35,29 +35,10 @@ use super::label::{Label, Quantity};
 use super::sections::{Entry, Section};
 use super::{arrange::arrange, Inspection, Limits, Monomial};
 use crate::model::Robot;
+pub use crate::model::{Envelope, JointEnvelope};
 use crate::symbolic::Number;
 use crate::trace::Equations;
 use std::collections::BTreeMap;
-
-/// One joint's part of an [`Envelope`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct JointEnvelope {
-    /// The lowest position (rad or m), without the joint's constant offset.
-    pub lower: f64,
-    /// The highest position.
-    pub upper: f64,
-    /// The largest speed `|q̇|`.
-    pub speed: f64,
-    /// The largest acceleration `|q̈|`.
-    pub acceleration: f64,
-}
-
-/// The states over which the dropped terms are bounded.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Envelope {
-    /// One per joint.
-    pub joints: Vec<JointEnvelope>,
-}
 
 /// A dropped term and the bound of its absolute value over the envelope.
 #[derive(Clone, Debug, PartialEq)]

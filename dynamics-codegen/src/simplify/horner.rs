@@ -1,0 +1,149 @@
+//! A pruned polynomial back into the graph, factored: greedy multivariate Horner. The symbol
+//! in most terms is taken out, `p = s · p₁ + p₀`, and both parts are factored the same way,
+//! until no symbol is in two terms. The expanded polynomial has many more products than the
+//! recursive form it came from; factoring gives most of them back, and the graph's
+//! hash-consing shares the products that repeat.
+
+use crate::inspect::{AngleSum, Monomial, Sym};
+use crate::symbolic::{Graph, Node, NodeId, Number, Var};
+use std::collections::BTreeMap;
+
+/// Builds polynomials into a graph, each symbol's node made once.
+pub(super) struct Builder<'a> {
+    graph: &'a mut Graph,
+    symbols: BTreeMap<Sym, NodeId>,
+}
+
+impl<'a> Builder<'a> {
+    /// A builder into `graph`, whose friction nodes (`sign`, `tanh` of a velocity) it
+    /// reuses for their symbols.
+    pub(super) fn new(graph: &'a mut Graph) -> Builder<'a> {
+        let symbols = graph
+            .nodes()
+            .filter(|(_, node)| matches!(node, Node::Sign(_) | Node::Tanh(_)))
+            .filter_map(|(id, node)| Some((Sym::of_friction(graph, node)?, id)))
+            .collect();
+        Builder { graph, symbols }
+    }
+
+    /// The node of `Σ c m` over `terms`, factored.
+    ///
+    /// # Errors
+    /// A parameter of the robot among the symbols (the pruning refuses them first).
+    pub(super) fn build(&mut self, terms: &BTreeMap<Monomial, Number>) -> Result<NodeId, String> {
+        let terms: Vec<(Monomial, Number)> = terms.iter().map(|(m, c)| (m.clone(), *c)).collect();
+        self.horner(terms)
+    }
+
+    fn horner(&mut self, terms: Vec<(Monomial, Number)>) -> Result<NodeId, String> {
+        let Some(s) = most_common(&terms) else {
+            return self.sum(&terms);
+        };
+        let (mut with, without): (Vec<_>, Vec<_>) =
+            terms.into_iter().partition(|(m, _)| m.exponent(&s) > 0);
+        for (m, _) in &mut with {
+            m.divide_once(&s);
+        }
+        let factor = self.symbol(&s)?;
+        let inner = self.horner(with)?;
+        let product = self.graph.mul(factor, inner);
+        if without.is_empty() {
+            return Ok(product);
+        }
+        let rest = self.horner(without)?;
+        Ok(self.graph.add(product, rest))
+    }
+
+    /// `Σ c m` term by term, in order.
+    fn sum(&mut self, terms: &[(Monomial, Number)]) -> Result<NodeId, String> {
+        let mut total = self.graph.num(Number::ZERO);
+        for (m, c) in terms {
+            let mut term = self.graph.num(*c);
+            for (s, e) in m.factors() {
+                let x = self.symbol(s)?;
+                for _ in 0..*e {
+                    term = self.graph.mul(term, x);
+                }
+            }
+            total = self.graph.add(total, term);
+        }
+        Ok(total)
+    }
+
+    /// The node of symbol `s`: a leaf, friction's node, or the sine or cosine of a sum of
+    /// angles by the addition formulas over the joints' own (`C12 = C1 C2 − S1 S2`).
+    fn symbol(&mut self, s: &Sym) -> Result<NodeId, String> {
+        if let Some(&id) = self.symbols.get(s) {
+            return Ok(id);
+        }
+        let id = match s {
+            Sym::Q(i) => self.graph.var(Var::Q(*i)),
+            Sym::Qd(i) => self.graph.var(Var::Qd(*i)),
+            Sym::Qdd(i) => self.graph.var(Var::Qdd(*i)),
+            Sym::Sin(a) | Sym::Cos(a) => self.trig(matches!(s, Sym::Cos(_)), *a)?,
+            Sym::Param(_) | Sym::Sign(_) | Sym::Tanh(_) => {
+                return Err(format!(
+                    "`{s}` has no node to build the simplified model from"
+                ))
+            }
+        };
+        self.symbols.insert(s.clone(), id);
+        Ok(id)
+    }
+
+    fn trig(&mut self, cos: bool, a: AngleSum) -> Result<NodeId, String> {
+        let mut joints = a.joints();
+        let first = joints.next().ok_or("the sine of an empty sum")?;
+        let rest: Vec<u16> = joints.collect();
+        if rest.is_empty() {
+            let v = if cos {
+                Var::CosQ(first)
+            } else {
+                Var::SinQ(first)
+            };
+            return Ok(self.graph.var(v));
+        }
+        let single = AngleSum::joint(first).ok_or("a joint past 64")?;
+        let others = rest.iter().filter_map(|&j| AngleSum::joint(j)).fold(
+            AngleSum::joint(rest[0]).ok_or("a joint past 64")?,
+            AngleSum::union,
+        );
+        let (s1, c1) = (
+            self.symbol(&Sym::Sin(single))?,
+            self.symbol(&Sym::Cos(single))?,
+        );
+        let (s2, c2) = (
+            self.symbol(&Sym::Sin(others))?,
+            self.symbol(&Sym::Cos(others))?,
+        );
+        Ok(if cos {
+            // cos(x + y) = cos x cos y − sin x sin y
+            let cc = self.graph.mul(c1, c2);
+            let ss = self.graph.mul(s1, s2);
+            self.graph.sub(cc, ss)
+        } else {
+            // sin(x + y) = sin x cos y + cos x sin y
+            let sc = self.graph.mul(s1, c2);
+            let cs = self.graph.mul(c1, s2);
+            self.graph.add(sc, cs)
+        })
+    }
+}
+
+/// The symbol in most terms, if one is in two or more; ties go to the first in the symbols'
+/// order, so that the factoring is reproducible.
+fn most_common(terms: &[(Monomial, Number)]) -> Option<Sym> {
+    let mut counts: BTreeMap<&Sym, usize> = BTreeMap::new();
+    for (m, _) in terms {
+        for (s, _) in m.factors() {
+            *counts.entry(s).or_default() += 1;
+        }
+    }
+    let mut best: Option<(&Sym, usize)> = None;
+    for (s, n) in counts {
+        if n >= 2 && best.map_or(true, |(_, b)| n > b) {
+            best = Some((s, n));
+        }
+    }
+    best.map(|(s, _)| s.clone())
+}
