@@ -35,39 +35,53 @@ impl<'a> Builder<'a> {
         self.horner(terms)
     }
 
-    fn horner(&mut self, terms: Vec<(Monomial, Number)>) -> Result<NodeId, String> {
-        let Some(s) = most_common(&terms) else {
-            return self.sum(&terms);
-        };
-        let (mut with, without): (Vec<_>, Vec<_>) =
-            terms.into_iter().partition(|(m, _)| m.exponent(&s) > 0);
-        for (m, _) in &mut with {
-            m.divide_once(&s);
+    /// `Σ_k s_k · p_k + rest`: the symbol in most terms taken out of them, then the next one
+    /// out of those left, and so on; each `p_k` factored the same way. The parts are summed
+    /// as a balanced tree, so that the expression's depth grows with the terms' degree and
+    /// the logarithm of their number, not with their number: the emission inlines what is
+    /// read once, and a chain of hundreds of nested sums overflows rustc's stack.
+    fn horner(&mut self, mut terms: Vec<(Monomial, Number)>) -> Result<NodeId, String> {
+        let mut parts = Vec::new();
+        while let Some(s) = most_common(&terms) {
+            let (mut with, without): (Vec<_>, Vec<_>) =
+                terms.into_iter().partition(|(m, _)| m.exponent(&s) > 0);
+            for (m, _) in &mut with {
+                m.divide_once(&s);
+            }
+            let factor = self.symbol(&s)?;
+            let inner = self.horner(with)?;
+            parts.push(self.graph.mul(factor, inner));
+            terms = without;
         }
-        let factor = self.symbol(&s)?;
-        let inner = self.horner(with)?;
-        let product = self.graph.mul(factor, inner);
-        if without.is_empty() {
-            return Ok(product);
+        for (m, c) in &terms {
+            parts.push(self.term(m, *c)?);
         }
-        let rest = self.horner(without)?;
-        Ok(self.graph.add(product, rest))
+        Ok(self.balanced_sum(&parts))
     }
 
-    /// `Σ c m` term by term, in order.
-    fn sum(&mut self, terms: &[(Monomial, Number)]) -> Result<NodeId, String> {
-        let mut total = self.graph.num(Number::ZERO);
-        for (m, c) in terms {
-            let mut term = self.graph.num(*c);
-            for (s, e) in m.factors() {
-                let x = self.symbol(s)?;
-                for _ in 0..*e {
-                    term = self.graph.mul(term, x);
-                }
+    /// `c m`.
+    fn term(&mut self, m: &Monomial, c: Number) -> Result<NodeId, String> {
+        let mut term = self.graph.num(c);
+        for (s, e) in m.factors() {
+            let x = self.symbol(s)?;
+            for _ in 0..*e {
+                term = self.graph.mul(term, x);
             }
-            total = self.graph.add(total, term);
         }
-        Ok(total)
+        Ok(term)
+    }
+
+    /// The sum of `parts` as a balanced tree (0 for none).
+    fn balanced_sum(&mut self, parts: &[NodeId]) -> NodeId {
+        match parts {
+            [] => self.graph.num(Number::ZERO),
+            [one] => *one,
+            _ => {
+                let (a, b) = parts.split_at(parts.len() / 2);
+                let (a, b) = (self.balanced_sum(a), self.balanced_sum(b));
+                self.graph.add(a, b)
+            }
+        }
     }
 
     /// The node of symbol `s`: a leaf, friction's node, or the sine or cosine of a sum of

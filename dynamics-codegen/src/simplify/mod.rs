@@ -21,6 +21,11 @@ use crate::symbolic::NodeId;
 use crate::trace::{Equations, PrunedElement, SimplifiedEquations};
 use horner::Builder;
 
+/// Most terms a pruned output (all its elements) may keep. Past it the expanded form costs
+/// several times the exact recursive one, and one function of thousands of `let`s overflows
+/// the stack of rustc's debug-info pass (a 6-joint random arm's τ keeping 3867 terms did).
+const MAX_KEPT: usize = 1500;
+
 /// The pruning of one output element.
 struct Pruned {
     pruning: Pruning,
@@ -65,6 +70,20 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
         let mass = p.mass(&eq.mass, t, accelerations)?;
         (tau, mass, gravity)
     };
+    let kept = |p: &[Pruned]| p.iter().map(|p| p.pruning.kept.len()).sum::<usize>();
+    for (name, count) in [
+        ("τ", kept(&tau)),
+        ("g", kept(&gravity)),
+        ("M", mass.iter().map(|r| kept(r)).sum()),
+    ] {
+        if count > MAX_KEPT {
+            return Err(format!(
+                "the pruned {name} keeps {count} terms, more than {MAX_KEPT}: expanded, this \
+                 robot's equations are larger than its exact recursive form by far; raise the \
+                 tolerance or narrow the envelope"
+            ));
+        }
+    }
     let mut builder = Builder::new(&mut eq.graph);
     let mut build = |p: &Pruned| builder.build(&p.pruning.kept);
     let tau_ids = tau.iter().map(&mut build).collect::<Result<_, _>>()?;
