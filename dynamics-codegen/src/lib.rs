@@ -48,20 +48,26 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
 }
 
 /// What `#[derive(Dynamics)]` expands to for `robot` on the type `input`, once the derive
-/// input is parsed, with the opt-in families of `families`: for tools that time the derive
-/// (`dynamics stats`) on a robot they loaded.
+/// input is parsed, with the opt-in families of `families` (and the simplified models of
+/// `simplify`, which asks for their family): for tools that time the derive (`dynamics
+/// stats`) on a robot they loaded.
 #[must_use]
 pub fn expand_robot(
     input: &syn::DeriveInput,
     robot: &model::Robot,
     families: FamilySet,
+    simplify: Option<&model::Simplification>,
 ) -> TokenStream {
+    let families = match simplify {
+        Some(_) => families.with(Family::Simplified),
+        None => families,
+    };
     let parsed = front::Input {
         robot: robot.clone(),
         krate: None,
         tracked_file: None,
         families,
-        simplify: None,
+        simplify: simplify.cloned(),
     };
     expand(input, &parsed)
 }

@@ -6,17 +6,31 @@ use crate::args::Stats;
 use dynamics_codegen::inspect::{
     inspect_with_kinematics, Format, Inspection, KinematicPart, Limits,
 };
-use dynamics_codegen::model::Robot;
-use dynamics_codegen::{derive, expand_robot, generate, Equations, Generated};
+use dynamics_codegen::model::{Robot, Simplification};
+use dynamics_codegen::trace::PrunedElement;
+use dynamics_codegen::{derive, expand_robot, generate, simplify, Equations, Generated};
 use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
+    let request = if args.simplified.simplified {
+        let (envelope, tolerance) = super::inspect::envelope("stats", &args.simplified, &robot)?;
+        Some(Simplification {
+            tolerance,
+            envelope,
+        })
+    } else {
+        None
+    };
     let start = Instant::now();
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
+    if let Some(request) = &request {
+        simplify::add(&mut eq, request)
+            .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
+    }
     let generated = generate(&eq, self_fields(&field_idents(&eq)));
     let elapsed = start.elapsed();
     let mut out = format!(
@@ -27,6 +41,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         elapsed.as_secs_f64() * 1e3
     );
     out += &methods(&generated);
+    out += &bounds(&eq);
     // With the signatures, the struct and the forwarding impl around them.
     let krate = quote!(::dynamics_runtime);
     let ty = type_name(&robot.name);
@@ -37,7 +52,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         items.to_token_stream().to_string().len()
     );
     out += &readable(&eq, &robot);
-    out += &whole_derive(&robot, &ty, &field_idents(&eq), args);
+    out += &whole_derive(&robot, &ty, &field_idents(&eq), args, request.as_ref());
     Ok(out)
 }
 
@@ -95,6 +110,36 @@ fn methods(generated: &Generated) -> String {
     out
 }
 
+/// The proven bound of each simplified output over the envelope, with its tolerance and the
+/// terms kept of the expanded polynomial; nothing for a robot not simplified.
+fn bounds(eq: &Equations) -> String {
+    let Some(s) = &eq.simplified else {
+        return String::new();
+    };
+    let mut out = String::from(
+        "proven bounds of |exact - simplified| over the envelope (tolerance; terms kept of the expanded polynomial):\n",
+    );
+    let line = |out: &mut String, name: String, b: &PrunedElement| {
+        let _ = writeln!(
+            out,
+            "  {name:<5} {:>10.3e} ({:.3e}; {} of {})",
+            b.bound, b.tolerance, b.kept, b.terms
+        );
+    };
+    for (i, b) in s.tau_bounds.iter().enumerate() {
+        line(&mut out, format!("T{}", i + 1), b);
+    }
+    for (i, b) in s.gravity_bounds.iter().enumerate() {
+        line(&mut out, format!("D{}", i + 1), b);
+    }
+    for (i, row) in s.mass_bounds.iter().enumerate() {
+        for (j, b) in row.iter().enumerate().skip(i) {
+            line(&mut out, format!("D{}{}", i + 1, j + 1), b);
+        }
+    }
+    out
+}
+
 /// What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, and for the rustdoc of the
 /// kinematic methods, within its limits.
 fn readable(eq: &Equations, robot: &Robot) -> String {
@@ -137,14 +182,20 @@ fn readable(eq: &Equations, robot: &Robot) -> String {
 /// emission, readable equations and docs), the fastest of `runs`, in wall-clock time and in the
 /// thread's CPU time: the others' work on a shared machine only ever adds to the first, and
 /// leaves out of the second the time the thread waits for a core.
-fn whole_derive(robot: &Robot, ty: &syn::Ident, fields: &[syn::Ident], args: &Stats) -> String {
+fn whole_derive(
+    robot: &Robot,
+    ty: &syn::Ident,
+    fields: &[syn::Ident],
+    args: &Stats,
+    simplify: Option<&Simplification>,
+) -> String {
     let runs = args.runs;
     let input: syn::DeriveInput = syn::parse_quote!(struct #ty { #(#fields: f64,)* });
     let mut wall = Duration::MAX;
     let mut cpu: Option<Duration> = None;
     for _ in 0..runs {
         let (start, start_cpu) = (Instant::now(), thread_cpu_time());
-        let tokens = expand_robot(&input, robot, args.families.set());
+        let tokens = expand_robot(&input, robot, args.families.set(), simplify);
         let (elapsed, end_cpu) = (start.elapsed(), thread_cpu_time());
         drop(tokens);
         wall = wall.min(elapsed);
