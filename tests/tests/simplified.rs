@@ -3,6 +3,7 @@
 //! proven bound, which the generator gives for the same request; and the ratio of the worst
 //! sampled error to that bound, printed (`--nocapture`) to show that it is not vacuous.
 
+use dynamics_codegen::front::{joint_limits, load_urdf, Chain};
 use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
 use dynamics_codegen::trace::PrunedElement;
 use dynamics_runtime::{Dynamics, DynamicsSimplified};
@@ -31,6 +32,11 @@ struct Puma;
     simplify(rated = [20, 10, 5], tolerance_percent = 1, qd_max = [1, 2, 3])
 )]
 struct Random;
+
+/// The UR5 of its URDF: the range and speed of the envelope are its `<limit>`s.
+#[derive(Dynamics)]
+#[dynamics(urdf = "../robots/urdf/ur5.urdf", simplify(tolerance = 1, qdd_max = 4))]
+struct Ur5;
 
 /// The same requests, for the generator's bounds.
 fn puma_request() -> Simplification {
@@ -63,13 +69,35 @@ fn random_request() -> Simplification {
     }
 }
 
+/// The UR5's request: its URDF's limits, read here by the front end's reader of them.
+fn ur5_request() -> Simplification {
+    let path = format!("{}/../robots/urdf/ur5.urdf", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("the URDF");
+    let limits = joint_limits(&text, Chain::default()).expect("limits");
+    let joints = limits.iter().map(|l| JointEnvelope {
+        lower: l.lower.expect("a range"),
+        upper: l.upper.expect("a range"),
+        speed: l.velocity.expect("a speed"),
+        acceleration: 4.0,
+    });
+    Simplification {
+        tolerance: vec![1.0; 6],
+        envelope: Envelope {
+            joints: joints.collect(),
+        },
+    }
+}
+
 /// The proven bounds of τ, g and M (rows) of the robot in `file` for `request`.
 fn bounds(file: &str, request: &Simplification) -> [Vec<PrunedElement>; 3] {
     let path = format!("{}/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("the robot file");
-    let robot = dynamics_codegen::front::load(&path, &text)
-        .expect("a robot")
-        .robot;
+    let robot = if file.ends_with(".urdf") {
+        load_urdf(&path, &text, Chain::default(), true).expect("a robot")
+    } else {
+        dynamics_codegen::front::load(&path, &text).expect("a robot")
+    }
+    .robot;
     let mut eq = dynamics_codegen::derive(&robot);
     dynamics_codegen::simplify::add(&mut eq, request).expect("simplifies");
     let s = eq.simplified.expect("simplified");
@@ -148,5 +176,11 @@ fn a_random_robot_simplified_within_its_proven_bounds() {
         "data/reference/robots/random2.json",
         &random_request(),
     );
+    assert!(ratio > 0.0, "nothing dropped");
+}
+
+#[test]
+fn a_urdf_robot_simplified_within_its_limits() {
+    let ratio = check(&Ur5, "../robots/urdf/ur5.urdf", &ur5_request());
     assert!(ratio > 0.0, "nothing dropped");
 }

@@ -125,13 +125,14 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
     }
     let mut tracked_file = None;
     let lowered = lower(input, &read, &fields, &mut errors, &mut tracked_file);
+    let simplify = lowered.as_ref().and_then(|lowered| {
+        let attr = read.attrs.simplify.as_ref();
+        simplify::request(attr, lowered.simplify.as_ref(), &lowered.robot, &mut errors)
+    });
     let robot = lowered.map(|lowered| {
         check(&lowered, &mut errors);
         lowered.robot
     });
-    let simplify = robot
-        .as_ref()
-        .and_then(|robot| resolve_simplify(read.attrs.simplify.as_ref()?, robot, &mut errors));
     let read = Read {
         attrs: read.attrs,
         simplify,
@@ -143,28 +144,6 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
 struct Read {
     attrs: Attrs,
     simplify: Option<Simplification>,
-}
-
-/// `simplify(...)` for `robot`, its defaults from the joints' kinds; its errors on its keys.
-fn resolve_simplify(
-    given: &simplify::Given<proc_macro2::Span>,
-    robot: &Robot,
-    errors: &mut Errors,
-) -> Option<Simplification> {
-    let defaults: Vec<_> = robot
-        .joints
-        .iter()
-        .map(|j| simplify::default_joint(j.kind))
-        .collect();
-    match given.resolve(&defaults) {
-        Ok(s) => Some(s),
-        Err(problems) => {
-            for (at, message) in problems {
-                errors.push(at, message);
-            }
-            None
-        }
-    }
 }
 
 /// Reads every `#[dynamics(...)]` of the input into one [`Attrs`].
@@ -194,21 +173,35 @@ struct Derived<'a> {
     robot: Robot,
     check_inertia: Vec<bool>,
     tell: Tell<'a>,
+    /// A file's `[simplify]` and a URDF's joint limits.
+    simplify: Option<simplify::FromFile<'a>>,
 }
 
 impl<'a> Derived<'a> {
     /// The robot of the file that the string `at` names.
     fn named(at: &'a LitStr, named: Named) -> Derived<'a> {
-        let Named { loaded, path } = named;
+        let Named {
+            loaded,
+            path,
+            limits,
+        } = named;
         let Lowered {
             robot,
             check_inertia,
             sources,
+            simplify,
         } = loaded;
+        let simplify = simplify::FromFile {
+            given: simplify,
+            limits,
+            at,
+            path: path.clone(),
+        };
         Derived {
             robot,
             check_inertia,
             tell: Box::new(move |problem| named_file::tell(at, &path, &sources, problem)),
+            simplify: Some(simplify),
         }
     }
 }
@@ -281,11 +274,13 @@ fn lower<'a>(
             robot,
             check_inertia,
             sources,
+            ..
         } = lowered;
         Some(Derived {
             robot,
             check_inertia,
             tell: Box::new(move |problem| attrs::tell(&sources, counted, problem)),
+            simplify: None,
         })
     }
 }

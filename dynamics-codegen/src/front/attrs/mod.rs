@@ -80,6 +80,7 @@ pub(super) fn lower(
         robot,
         check_inertia: reader.check_inertia,
         sources: reader.sources,
+        simplify: None,
     };
     (lowered, counted)
 }
