@@ -142,6 +142,12 @@ impl<'a> Expander<'a> {
         Some(arrange(self.folded(id)?.into_iter().collect()))
     }
 
+    /// The polynomial of node `id`, before folding.
+    #[cfg(test)]
+    pub(super) fn expanded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
+        Some(self.poly(id)?.into_terms())
+    }
+
     /// The polynomial of node `id` with its sines and cosines of sums folded (`C12`), an
     /// identity; `None` when it does not fit the limits.
     pub fn folded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
