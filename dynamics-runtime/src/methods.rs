@@ -391,11 +391,9 @@ macro_rules! for_each_method {
                 }
             }
             /// Pruned equations of motion with a proven error bound (opt-in, `simplify(...)`): the
-            /// exact closed forms expanded into polynomials, the terms whose summed bound over the
-            /// robot's envelope of positions, speeds and accelerations stays within its
-            /// tolerance dropped, by interval arithmetic. Each method's rustdoc on the robot
-            /// states the proven bound of every output and the envelope; outside the envelope
-            /// nothing is promised.
+            /// closed forms expanded, the terms dropped whose summed interval bound over the
+            /// envelope of positions, speeds and accelerations stays within the tolerance. Each
+            /// method's rustdoc on the robot states every output's bound and the envelope.
             trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}
                 /// The pruned inverse dynamics, mass matrix and gravity torques.

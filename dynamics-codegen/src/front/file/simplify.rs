@@ -125,7 +125,9 @@ mod tests {
             speed: 2.0,
             acceleration: 5.0,
         }; 2];
-        let problems = given.resolve(&defaults).err().expect("errors");
+        let Err(problems) = given.resolve(&defaults) else {
+            panic!("a list of three for two joints resolved")
+        };
         assert_eq!(problems.len(), 1);
         assert_eq!(problems[0].0, (11, 10));
         assert!(
