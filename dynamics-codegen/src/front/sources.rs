@@ -4,7 +4,7 @@
 //! attribute's tokens (their spans) or a line and column of a file.
 
 use crate::check::{Problem, MAX_JOINTS};
-use crate::front::simplify::Given;
+use crate::front::simplify::given::Given;
 use crate::model::Robot;
 use proc_macro2::Span;
 use std::collections::BTreeMap;

@@ -10,7 +10,7 @@ use super::joints::{parse_joints, JointAttr};
 use super::keys::{Key, LinkKey};
 use super::simplify::parse_simplify;
 use crate::front::errors::{unknown_key, Errors};
-use crate::front::simplify::Given;
+use crate::front::simplify::given::Given;
 use crate::front::value::Spanned;
 use crate::method::{Family, FamilySet};
 use crate::model::Convention;

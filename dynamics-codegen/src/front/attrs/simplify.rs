@@ -3,7 +3,7 @@
 
 use super::entry::skip_entry;
 use crate::front::errors::{unknown_key, Errors};
-use crate::front::simplify::{Given, KEYS};
+use crate::front::simplify::given::{Given, KEYS};
 use crate::front::value::Spanned;
 use proc_macro2::Span;
 use syn::parse::ParseStream;

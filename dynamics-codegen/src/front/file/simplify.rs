@@ -2,7 +2,7 @@
 //! attribute's `simplify(...)`, each one number or a list of one per joint, with their lines
 //! and columns for the errors of [`crate::front::simplify`].
 
-use crate::front::simplify::Given;
+use crate::front::simplify::given::Given;
 use crate::front::sources::{At, Sources};
 use serde::Deserialize;
 
