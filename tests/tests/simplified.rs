@@ -38,6 +38,11 @@ struct Random;
 #[dynamics(urdf = "../robots/urdf/ur5.urdf", simplify(tolerance = 1, qdd_max = 4))]
 struct Ur5;
 
+/// A two-link arm whose description file asks for its simplified models (`[simplify]`).
+#[derive(Dynamics)]
+#[dynamics(file = "data/simplify/two_link.toml")]
+struct TwoLink;
+
 /// The same requests, for the generator's bounds.
 fn puma_request() -> Simplification {
     let joint = JointEnvelope {
@@ -63,6 +68,22 @@ fn random_request() -> Simplification {
     });
     Simplification {
         tolerance: vec![0.2, 0.1, 0.05],
+        envelope: Envelope {
+            joints: joints.to_vec(),
+        },
+    }
+}
+
+/// The request of `data/simplify/two_link.toml`.
+fn two_link_request() -> Simplification {
+    let joints = [(-1.0, 1.0), (-2.0, 2.0)].map(|(lower, upper)| JointEnvelope {
+        lower,
+        upper,
+        speed: 3.0,
+        acceleration: 5.0,
+    });
+    Simplification {
+        tolerance: vec![0.05, 0.02],
         envelope: Envelope {
             joints: joints.to_vec(),
         },
@@ -182,5 +203,11 @@ fn a_random_robot_simplified_within_its_proven_bounds() {
 #[test]
 fn a_urdf_robot_simplified_within_its_limits() {
     let ratio = check(&Ur5, "../robots/urdf/ur5.urdf", &ur5_request());
+    assert!(ratio > 0.0, "nothing dropped");
+}
+
+#[test]
+fn simplified_as_the_description_file_asks() {
+    let ratio = check(&TwoLink, "data/simplify/two_link.toml", &two_link_request());
     assert!(ratio > 0.0, "nothing dropped");
 }

@@ -193,3 +193,30 @@ fn a_pruned_model_too_large_is_refused() {
     assert!(error.contains("3867 terms"), "{error}");
     assert!(eq.simplified.is_none());
 }
+
+/// The derive documents each simplified method with every output's bound and the envelope,
+/// and a robot that does not ask gets none of it.
+#[test]
+fn the_rustdoc_states_the_bounds_and_the_envelope() {
+    let arm = "gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0], [q, 0, 0.5, 0]], \
+               link(mass = 2, com = [-0.5, 0, 0]), link(mass = 1, com = [-0.25, 0, 0])";
+    let derive = |extra: &str| {
+        let text = format!("#[dynamics({arm}{extra})] struct Arm;");
+        crate::derive_dynamics(text.parse().expect("tokens")).to_string()
+    };
+    let code = derive(", simplify(tolerance = [0.5, 0.1], qd_max = 1.5, q_min = -1, q_max = 1)");
+    for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+        assert!(
+            code.contains(&format!("fn {method}_simplified")),
+            "{method}"
+        );
+    }
+    assert!(code.contains("|T1 − T1,simplified| ≤ "), "{code}");
+    assert!(code.contains("|D12 − D12,simplified| ≤ "), "{code}");
+    assert!(
+        code.contains("q2 in [-1, 1], |qd2| <= 1.5, |qdd2| <= 5"),
+        "{code}"
+    );
+    let plain = derive("");
+    assert!(!plain.contains("simplified"), "{plain}");
+}
