@@ -83,7 +83,7 @@ fn two_link_request() -> Simplification {
         acceleration: 5.0,
     });
     Simplification {
-        tolerance: vec![0.05, 0.02],
+        tolerance: vec![0.5, 0.3],
         envelope: Envelope {
             joints: joints.to_vec(),
         },
