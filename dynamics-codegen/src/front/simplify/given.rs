@@ -61,11 +61,16 @@ impl<P: Copy> Given<P> {
         let (_, values, at) = self.keys.iter().find(|(k, _, _)| *k == key)?;
         if values.len() != 1 && values.len() != n {
             let count = values.len();
-            errors.push((*at, format!("`{key}` takes one number for every joint or one per joint ({n}), found {count}")));
+            let takes = if n == 1 {
+                "one number".to_string()
+            } else {
+                format!("one number for every joint or one per joint ({n})")
+            };
+            errors.push((*at, format!("`{key}` takes {takes}, found {count}")));
             return None;
         }
-        if let Some(problem) = values.iter().find_map(|&v| valid(v)) {
-            errors.push((*at, format!("`{key}`: {problem}")));
+        if let Some((v, problem)) = values.iter().find_map(|&v| Some((v, valid(v)?))) {
+            errors.push((*at, format!("`{key}` takes {problem}, found {v}")));
             return None;
         }
         Some(if values.len() == 1 {
@@ -84,7 +89,7 @@ impl<P: Copy> Given<P> {
         let n = defaults.len();
         let mut errors = Vec::new();
         let tolerance = self.tolerance(n, &mut errors);
-        let finite = |v: f64| (!v.is_finite()).then_some("a finite number");
+        let finite = |v: f64| (!v.is_finite()).then_some("finite numbers");
         let lower = self.per_joint("q_min", n, finite, &mut errors);
         let upper = self.per_joint("q_max", n, finite, &mut errors);
         let speed = self.per_joint("qd_max", n, non_negative, &mut errors);
@@ -157,5 +162,5 @@ impl<P: Copy> Given<P> {
 
 /// `None` for a finite number ≥ 0, else what it must be.
 fn non_negative(v: f64) -> Option<&'static str> {
-    (!(v.is_finite() && v >= 0.0)).then_some("a finite number ≥ 0")
+    (!(v.is_finite() && v >= 0.0)).then_some("finite numbers ≥ 0")
 }
