@@ -1,7 +1,7 @@
 //! `dynamics inspect ROBOT [--latex] [--kinematics | --base-parameters [--rotors]
 //! [--friction ..] | --simplified --tolerance .. [--q-min ..] [--q-max ..] [--qd-max ..]
 //! [--qdd-max ..]]`: the equations of motion, the hand pose and Jacobians, the base parameters,
-//! or the joint torques pruned within a proven bound, in the book's notation.
+//! or τ, M and g pruned within a proven bound, in the book's notation.
 
 use super::eval::usage;
 use super::{base_parameters, load, Failure};
@@ -127,7 +127,9 @@ mod tests {
         ])
         .expect("runs");
         assert!(out.contains("  T1 = "), "{out}");
-        assert!(!out.contains("D11"), "only the torques: {out}");
+        // M and g pruned too, each with its report.
+        assert!(out.contains("  D11 = ") && out.contains("  D1 = "), "{out}");
+        assert!(out.contains("\nD12: ") && out.contains("\nD2: "), "{out}");
         assert!(
             out.contains("θ1 ∈ [-1.5, 1.5], |θ1'| ≤ 1, |θ1''| ≤ 5"),
             "{out}"

@@ -13,7 +13,7 @@ mod horner;
 #[cfg(test)]
 mod tests;
 
-use crate::inspect::simplify::{eval, prune, Pruning};
+use crate::inspect::simplify::{eval, mass_tolerance, prune, Pruning};
 use crate::inspect::{Expander, Limits};
 use crate::method::Family;
 use crate::model::Simplification;
@@ -66,8 +66,7 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
         let t = &request.tolerance;
         let tau = p.vector(&eq.tau, "T", t)?;
         let gravity = p.vector(&eq.gravity, "D", t)?;
-        let accelerations: f64 = request.envelope.joints.iter().map(|j| j.acceleration).sum();
-        let mass = p.mass(&eq.mass, t, accelerations)?;
+        let mass = p.mass(&eq.mass, t)?;
         (tau, mass, gravity)
     };
     let kept = |p: &[Pruned]| p.iter().map(|p| p.pruning.kept.len()).sum::<usize>();
@@ -143,23 +142,14 @@ impl Pruner<'_> {
             .collect()
     }
 
-    /// The upper triangle of M, row i from column i (`[i][k]` is `M_i,i+k`), `M_ij` within
-    /// `min(t_i, t_j) / Σ a` (nothing dropped where no joint accelerates).
-    fn mass(
-        &mut self,
-        m: &[Vec<NodeId>],
-        t: &[f64],
-        accelerations: f64,
-    ) -> Result<Vec<Vec<Pruned>>, String> {
+    /// The upper triangle of M, row i from column i (`[i][k]` is `M_i,i+k`), each element
+    /// within its [`mass_tolerance`].
+    fn mass(&mut self, m: &[Vec<NodeId>], t: &[f64]) -> Result<Vec<Vec<Pruned>>, String> {
         let mut rows = Vec::with_capacity(m.len());
         for (i, row) in m.iter().enumerate() {
             let mut pruned = Vec::with_capacity(row.len() - i);
             for (j, &id) in row.iter().enumerate().skip(i) {
-                let tolerance = if accelerations > 0.0 {
-                    t[i].min(t[j]) / accelerations
-                } else {
-                    0.0
-                };
+                let tolerance = mass_tolerance(t, &self.request.envelope, i, j);
                 pruned.push(self.one(id, &format!("D{}{}", i + 1, j + 1), tolerance)?);
             }
             rows.push(pruned);
