@@ -4,7 +4,8 @@
 //! Each `T_i` (`M_ij`, `g_i`) is expanded into its exact canonical polynomial and folded
 //! (`C1 C2 − S1 S2` → `C12`, an identity), so `T_i = Σ_k c_k m_k` exactly, each `m_k` a
 //! product of symbols. Over an [`Envelope`] (each joint's range `q_j ∈ [lo_j, hi_j]`,
-//! `|q̇_j| ≤ v_j`, `|q̈_j| ≤ a_j`) every term is bounded by interval arithmetic, `|c_k m_k| ≤ B_k = |c_k| Π |s|max^e`, where
+//! `|q̇_j| ≤ v_j`, `|q̈_j| ≤ a_j`) every term is bounded by interval arithmetic,
+//! `|c_k m_k| ≤ B_k = |c_k| Π |s|max^e`, where
 //!
 //! * `|sin(θ_a + θ_b + …)|max`, `|cos(…)|max` are the exact maxima over the interval sum of
 //!   the angles' ranges (each shifted by its joint's constant offset);
