@@ -146,6 +146,8 @@ pub struct Stats {
     pub robot: RobotFile,
     #[command(flatten)]
     pub families: Families,
+    #[command(flatten)]
+    pub simplified: Simplified,
     /// Times the whole derive this many times and prints the fastest run, the one least slowed
     /// by the machine's other work
     #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]

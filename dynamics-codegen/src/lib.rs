@@ -23,6 +23,7 @@ pub mod inspect;
 pub mod method;
 pub mod model;
 pub mod numeric;
+pub mod simplify;
 pub mod symbolic;
 pub mod trace;
 
@@ -47,19 +48,26 @@ pub fn derive_dynamics(input: TokenStream) -> TokenStream {
 }
 
 /// What `#[derive(Dynamics)]` expands to for `robot` on the type `input`, once the derive
-/// input is parsed, with the opt-in families of `families`: for tools that time the derive
-/// (`dynamics stats`) on a robot they loaded.
+/// input is parsed, with the opt-in families of `families` (and the simplified models of
+/// `simplify`, which asks for their family): for tools that time the derive (`dynamics
+/// stats`) on a robot they loaded.
 #[must_use]
 pub fn expand_robot(
     input: &syn::DeriveInput,
     robot: &model::Robot,
     families: FamilySet,
+    simplify: Option<&model::Simplification>,
 ) -> TokenStream {
+    let families = match simplify {
+        Some(_) => families.with(Family::Simplified),
+        None => families,
+    };
     let parsed = front::Input {
         robot: robot.clone(),
         krate: None,
         tracked_file: None,
         families,
+        simplify: simplify.cloned(),
     };
     expand(input, &parsed)
 }
@@ -69,6 +77,11 @@ pub fn expand_robot(
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let mut eq = trace::derive(&parsed.robot);
     eq.add_families(&parsed.robot, parsed.families);
+    // Only for a robot that asks: the expansion costs what the rest of the derive does.
+    let simplified = parsed
+        .simplify
+        .as_ref()
+        .map(|request| simplify::add(&mut eq, request));
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields
@@ -98,12 +111,21 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
                        numbers: the base parameters group the links' parameters by them, and \
                        this robot takes some from struct fields (masses and inertias may be \
                        fields)";
-        let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
-        let impls = emit::unreachable_family(input, eq.dof, &krate, Family::BaseParameters);
-        quote!(#error const _: () = { #impls };)
+        untraced_family(input, &eq, &krate, Family::BaseParameters, message)
     });
+    let simplify_error = match simplified {
+        Some(Err(e)) => Some(untraced_family(
+            input,
+            &eq,
+            &krate,
+            Family::Simplified,
+            &format!("`simplify`: {e}"),
+        )),
+        _ => None,
+    };
     quote! {
         #error
+        #simplify_error
         #beside
         const _: () = {
             #track
@@ -111,4 +133,18 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             #equations
         };
     }
+}
+
+/// The error of an opt-in family asked for that could not be traced, and its trait's methods
+/// unreachable, so that calls to them add no errors of their own.
+fn untraced_family(
+    input: &syn::DeriveInput,
+    eq: &trace::Equations,
+    krate: &TokenStream,
+    family: Family,
+    message: &str,
+) -> TokenStream {
+    let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
+    let impls = emit::unreachable_family(input, eq.dof, krate, family);
+    quote!(#error const _: () = { #impls };)
 }

@@ -83,11 +83,11 @@ mod trig;
 pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
-    DynamicsRegressorBatch,
+    DynamicsRegressorBatch, DynamicsSimplifiedBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
-    Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor,
+    Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};

@@ -390,6 +390,51 @@ macro_rules! for_each_method {
                     }
                 }
             }
+            /// Pruned equations of motion with a proven error bound (opt-in, `simplify(...)`): the
+            /// closed forms expanded, the terms dropped whose summed interval bound over the
+            /// envelope of positions, speeds and accelerations stays within the tolerance. Each
+            /// method's rustdoc on the robot states every output's bound and the envelope.
+            trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
+                items {}
+                /// The pruned inverse dynamics, mass matrix and gravity torques.
+                family Simplified {
+                    name: simplify,
+                    module: "__simplified",
+                    opt_in: true,
+                    adjective: "simplified ",
+                }
+                methods {
+                    /// The joint torques `τ` of `inverse_dynamics` with the terms dropped whose
+                    /// summed bound over the envelope stays within each joint's tolerance:
+                    /// `|τ_i − τ_i,simplified| ≤ b_i` for every state of the envelope.
+                    fn inverse_dynamics_simplified(q, qd, qdd) -> vector, nalgebra inverse_dynamics_simplified_na, batch inverse_dynamics_simplified_batch {
+                        variant: InverseDynamicsSimplified,
+                        equation: Some("6.46"),
+                        prefix: "tau",
+                        summary: "τ pruned within the tolerance over the envelope.",
+                        element: "T{i} pruned ({equation})",
+                    }
+                    /// The mass matrix `M(q)` pruned: element `[i][j]` within
+                    /// `min(t_i, t_j) / Σ_k a_k`, `t` the joints' tolerances and `a` the envelope's
+                    /// accelerations, so that `|((M − M_simplified) q̈)_i| ≤ t_i` over the envelope.
+                    fn mass_matrix_simplified(q) -> matrix, nalgebra mass_matrix_simplified_na, batch mass_matrix_simplified_batch {
+                        variant: MassMatrixSimplified,
+                        equation: Some("6.43"),
+                        prefix: "m",
+                        summary: "M(q) pruned within the tolerance over the envelope.",
+                        element: "D{i}{j} = D{j}{i} pruned ({equation})",
+                        diagonal: "D{i}{i} pruned ({equation})",
+                    }
+                    /// The gravity torques `g(q)` pruned within each joint's tolerance.
+                    fn gravity_torques_simplified(q) -> vector, nalgebra gravity_torques_simplified_na, batch gravity_torques_simplified_batch {
+                        variant: GravityTorquesSimplified,
+                        equation: Some("6.45"),
+                        prefix: "g",
+                        summary: "g(q) pruned within the tolerance over the envelope.",
+                        element: "D{i} pruned ({equation})",
+                    }
+                }
+            }
             /// The base parameters `π_B`: the combinations of the standard parameters that the
             /// joint torques determine, and the reduced regressor `Y_B` of full column rank, with
             /// `Y_B(q, q̇, q̈) π_B` the rigid bodies' part of `inverse_dynamics` plus the terms of

@@ -11,11 +11,11 @@ pub struct Inspect {
     #[arg(long)]
     pub latex: bool,
     /// The hand pose [n o a p] and the hand's Jacobians instead of the equations of motion
-    #[arg(long, conflicts_with = "base_parameters")]
+    #[arg(long, conflicts_with_all = ["base_parameters", "simplified"])]
     pub kinematics: bool,
     /// The base parameters instead of the equations of motion: the combinations of the
     /// standard parameters that the joint torques determine
-    #[arg(long)]
+    #[arg(long, conflicts_with = "simplified")]
     pub base_parameters: bool,
     #[command(flatten)]
     pub joint_terms: JointTerms,
@@ -23,12 +23,14 @@ pub struct Inspect {
     pub simplified: Simplified,
 }
 
-/// `inspect --simplified`: the joint torques pruned within a proven bound over an envelope.
+/// `inspect --simplified` and `stats --simplified`: the equations pruned within a proven bound
+/// over an envelope.
 #[derive(Args, Debug)]
 pub struct Simplified {
-    /// The joint torques with their smallest terms dropped, within --tolerance over the
-    /// envelope (--q-min, --q-max, --qd-max, --qdd-max), and what was dropped
-    #[arg(long, requires = "tolerance", conflicts_with_all = ["kinematics", "base_parameters"])]
+    /// The equations with their smallest terms dropped, within --tolerance over the envelope
+    /// (--q-min, --q-max, --qd-max, --qdd-max): `inspect` prints the joint torques and what was
+    /// dropped, `stats` the operations of the generated `*_simplified` methods and their bounds
+    #[arg(long, requires = "tolerance")]
     pub simplified: bool,
     /// The largest error allowed in each joint torque, N·m or N: one for every joint, or one
     /// per joint

@@ -1,7 +1,7 @@
 //! `dynamics inspect ROBOT [--latex] [--kinematics | --base-parameters [--rotors]
 //! [--friction ..] | --simplified --tolerance .. [--q-min ..] [--q-max ..] [--qd-max ..]
 //! [--qdd-max ..]]`: the equations of motion, the hand pose and Jacobians, the base parameters,
-//! or the joint torques pruned within a proven bound, in the book's notation.
+//! or τ, M and g pruned within a proven bound, in the book's notation.
 
 use super::eval::usage;
 use super::{base_parameters, load, Failure};
@@ -27,7 +27,7 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
         return Ok(render_base_parameters(&robot.name, &base, format));
     }
     if args.simplified.simplified {
-        let (envelope, tolerance) = envelope(&args.simplified, &robot)?;
+        let (envelope, tolerance) = envelope("inspect", &args.simplified, &robot)?;
         let simplified = inspect_simplified(&eq, &robot, &envelope, &tolerance)
             .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
         return Ok(simplified.render(format));
@@ -42,7 +42,11 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
 
 /// The envelope and the tolerances asked for: each option one value for every joint or one per
 /// joint, else the defaults (±π rad or ±1 m, 2 per s, 5 per s²).
-fn envelope(args: &Simplified, robot: &Robot) -> Result<(Envelope, Vec<f64>), Failure> {
+pub(super) fn envelope(
+    command: &str,
+    args: &Simplified,
+    robot: &Robot,
+) -> Result<(Envelope, Vec<f64>), Failure> {
     let n = robot.joints.len();
     let per_joint = |option: &str, given: Option<&Numbers>| -> Result<Option<Vec<f64>>, Failure> {
         match given {
@@ -50,7 +54,7 @@ fn envelope(args: &Simplified, robot: &Robot) -> Result<(Envelope, Vec<f64>), Fa
             Some(Numbers(v)) if v.len() == 1 => Ok(Some(vec![v[0]; n])),
             Some(Numbers(v)) if v.len() == n => Ok(Some(v.clone())),
             Some(Numbers(v)) => Err(usage(
-                "inspect",
+                command,
                 &format!(
                     "{option}: {} values; give one for every joint or one for each of the {n} joints",
                     v.len()
@@ -60,7 +64,7 @@ fn envelope(args: &Simplified, robot: &Robot) -> Result<(Envelope, Vec<f64>), Fa
     };
     let tolerance = per_joint("--tolerance", args.tolerance.as_ref())?.unwrap_or_default();
     if let Some(t) = tolerance.iter().find(|t| **t < 0.0) {
-        return Err(usage("inspect", &format!("--tolerance: {t} is negative")));
+        return Err(usage(command, &format!("--tolerance: {t} is negative")));
     }
     let lower = per_joint("--q-min", args.q_min.as_ref())?;
     let upper = per_joint("--q-max", args.q_max.as_ref())?;
@@ -86,14 +90,14 @@ fn envelope(args: &Simplified, robot: &Robot) -> Result<(Envelope, Vec<f64>), Fa
                 e.lower,
                 e.upper
             );
-            return Err(usage("inspect", &message));
+            return Err(usage(command, &message));
         }
         if e.speed < 0.0 || e.acceleration < 0.0 {
             let message = format!(
                 "joint {}: --qd-max and --qdd-max must not be negative",
                 j + 1
             );
-            return Err(usage("inspect", &message));
+            return Err(usage(command, &message));
         }
         joints.push(e);
     }
@@ -123,7 +127,9 @@ mod tests {
         ])
         .expect("runs");
         assert!(out.contains("  T1 = "), "{out}");
-        assert!(!out.contains("D11"), "only the torques: {out}");
+        // M and g pruned too, each with its report.
+        assert!(out.contains("  D11 = ") && out.contains("  D1 = "), "{out}");
+        assert!(out.contains("\nD12: ") && out.contains("\nD2: "), "{out}");
         assert!(
             out.contains("θ1 ∈ [-1.5, 1.5], |θ1'| ≤ 1, |θ1''| ≤ 5"),
             "{out}"

@@ -6,17 +6,31 @@ use crate::args::Stats;
 use dynamics_codegen::inspect::{
     inspect_with_kinematics, Format, Inspection, KinematicPart, Limits,
 };
-use dynamics_codegen::model::Robot;
-use dynamics_codegen::{derive, expand_robot, generate, Equations, Generated};
+use dynamics_codegen::model::{Robot, Simplification};
+use dynamics_codegen::trace::PrunedElement;
+use dynamics_codegen::{derive, expand_robot, generate, simplify, Equations, Generated};
 use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
+    let request = if args.simplified.simplified {
+        let (envelope, tolerance) = super::inspect::envelope("stats", &args.simplified, &robot)?;
+        Some(Simplification {
+            tolerance,
+            envelope,
+        })
+    } else {
+        None
+    };
     let start = Instant::now();
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
+    if let Some(request) = &request {
+        simplify::add(&mut eq, request)
+            .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
+    }
     let generated = generate(&eq, self_fields(&field_idents(&eq)));
     let elapsed = start.elapsed();
     let mut out = format!(
@@ -27,6 +41,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         elapsed.as_secs_f64() * 1e3
     );
     out += &methods(&generated);
+    out += &bounds(&eq);
     // With the signatures, the struct and the forwarding impl around them.
     let krate = quote!(::dynamics_runtime);
     let ty = type_name(&robot.name);
@@ -37,7 +52,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         items.to_token_stream().to_string().len()
     );
     out += &readable(&eq, &robot);
-    out += &whole_derive(&robot, &ty, &field_idents(&eq), args);
+    out += &whole_derive(&robot, &ty, &field_idents(&eq), args, request.as_ref());
     Ok(out)
 }
 
@@ -95,6 +110,36 @@ fn methods(generated: &Generated) -> String {
     out
 }
 
+/// The proven bound of each simplified output over the envelope, with its tolerance and the
+/// terms kept of the expanded polynomial; nothing for a robot not simplified.
+fn bounds(eq: &Equations) -> String {
+    let Some(s) = &eq.simplified else {
+        return String::new();
+    };
+    let mut out = String::from(
+        "proven bounds of |exact - simplified| over the envelope (tolerance; terms kept of the expanded polynomial):\n",
+    );
+    let line = |out: &mut String, name: String, b: &PrunedElement| {
+        let _ = writeln!(
+            out,
+            "  {name:<5} {:>10.3e} ({:.3e}; {} of {})",
+            b.bound, b.tolerance, b.kept, b.terms
+        );
+    };
+    for (i, b) in s.tau_bounds.iter().enumerate() {
+        line(&mut out, format!("T{}", i + 1), b);
+    }
+    for (i, b) in s.gravity_bounds.iter().enumerate() {
+        line(&mut out, format!("D{}", i + 1), b);
+    }
+    for (i, row) in s.mass_bounds.iter().enumerate() {
+        for (j, b) in row.iter().enumerate().skip(i) {
+            line(&mut out, format!("D{}{}", i + 1, j + 1), b);
+        }
+    }
+    out
+}
+
 /// What the derive adds for `EQUATIONS` and `EQUATIONS_LATEX`, and for the rustdoc of the
 /// kinematic methods, within its limits.
 fn readable(eq: &Equations, robot: &Robot) -> String {
@@ -137,14 +182,20 @@ fn readable(eq: &Equations, robot: &Robot) -> String {
 /// emission, readable equations and docs), the fastest of `runs`, in wall-clock time and in the
 /// thread's CPU time: the others' work on a shared machine only ever adds to the first, and
 /// leaves out of the second the time the thread waits for a core.
-fn whole_derive(robot: &Robot, ty: &syn::Ident, fields: &[syn::Ident], args: &Stats) -> String {
+fn whole_derive(
+    robot: &Robot,
+    ty: &syn::Ident,
+    fields: &[syn::Ident],
+    args: &Stats,
+    simplify: Option<&Simplification>,
+) -> String {
     let runs = args.runs;
     let input: syn::DeriveInput = syn::parse_quote!(struct #ty { #(#fields: f64,)* });
     let mut wall = Duration::MAX;
     let mut cpu: Option<Duration> = None;
     for _ in 0..runs {
         let (start, start_cpu) = (Instant::now(), thread_cpu_time());
-        let tokens = expand_robot(&input, robot, args.families.set());
+        let tokens = expand_robot(&input, robot, args.families.set(), simplify);
         let (elapsed, end_cpu) = (start.elapsed(), thread_cpu_time());
         drop(tokens);
         wall = wall.min(elapsed);
@@ -181,4 +232,48 @@ fn thread_cpu_time() -> Option<Duration> {
 #[cfg(not(unix))]
 fn thread_cpu_time() -> Option<Duration> {
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::run;
+
+    const PUMA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/puma560.toml");
+
+    /// The simplified methods' rows beside the exact ones, and each output's bound within its
+    /// tolerance; with a zero tolerance nothing is dropped.
+    #[test]
+    fn simplified_methods_and_their_bounds() {
+        let args = ["stats", PUMA, "--runs", "1", "--simplified", "--tolerance"];
+        let out = run(args.iter().copied().chain(["0.5,0.5,0.5,0.01,0.01,0.01"])).expect("runs");
+        for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+            assert!(out.contains(&format!("\n{method} ")), "{out}");
+            assert!(out.contains(&format!("\n{method}_simplified ")), "{out}");
+        }
+        let t1 = out
+            .lines()
+            .find(|l| l.trim_start().starts_with("T1 "))
+            .expect("T1");
+        let numbers: Vec<f64> = t1
+            .split(|c: char| c.is_whitespace() || "();".contains(c))
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        assert!(numbers[0] > 0.0 && numbers[0] <= 0.5, "{t1}");
+        assert!(numbers[2] < numbers[3], "terms dropped: {t1}");
+        let exact = run(args.iter().copied().chain(["0"])).expect("runs");
+        assert!(
+            exact.contains("  T1       0.000e0 (0.000e0; 275 of 275)"),
+            "{exact}"
+        );
+        let plain = run(["stats", PUMA, "--runs", "1"]).expect("runs");
+        assert!(
+            !plain.contains("_simplified") && !plain.contains("proven"),
+            "{plain}"
+        );
+        let wrong = run(args.iter().copied().chain(["1,2"])).unwrap_err();
+        assert!(
+            format!("{wrong:?}").contains("--tolerance: 2 values"),
+            "{wrong:?}"
+        );
+    }
 }

@@ -5,7 +5,7 @@
 
 use crate::inspect::{Format, KinematicPart};
 use crate::method::Method;
-use crate::trace::Equations;
+use crate::trace::{Equations, PrunedElement, SimplifiedEquations};
 use crate::{inspect, model};
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -43,6 +43,7 @@ pub(crate) fn readable(input: &syn::DeriveInput, eq: &Equations, robot: &model::
         let doc = format!(" {}\n\n```text\n{text}```", method.summary());
         Some((method, doc))
     })
+    .chain(simplified_docs(eq))
     .collect();
     Readable {
         equations: equations(input, &dynamics),
@@ -90,4 +91,63 @@ fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> Toke
             }
         }
     }
+}
+
+/// The rustdoc of the simplified methods: each output's proven bound and the envelope.
+fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
+    let Some(s) = &eq.simplified else {
+        return Vec::new();
+    };
+    let unit = |i: usize| match eq.kinds[i] {
+        crate::algo::JointKind::Revolute => "N·m",
+        crate::algo::JointKind::Prismatic => "N",
+    };
+    let vector = |letter: &str, bounds: &[PrunedElement]| {
+        let rows = bounds.iter().enumerate().map(|(i, b)| {
+            format!("|{letter}{0} − {letter}{0},simplified| ≤ {1:.6e} {2} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, b.bound, unit(i), b.tolerance, b.kept, b.terms)
+        });
+        rows.collect::<Vec<_>>().join("\n")
+    };
+    let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
+        row.iter().enumerate().skip(i).map(move |(j, b)| {
+            format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
+        })
+    });
+    let mass = mass.collect::<Vec<_>>().join("\n");
+    let envelope = envelope_text(s);
+    [
+        (Method::InverseDynamicsSimplified, vector("T", &s.tau_bounds)),
+        (Method::MassMatrixSimplified, mass),
+        (Method::GravityTorquesSimplified, vector("D", &s.gravity_bounds)),
+    ]
+    .into_iter()
+    .map(|(method, bounds)| {
+        let doc = format!(
+            " {}\n\nProven over the envelope below (interval arithmetic on the closed form; nothing \
+             is promised outside it):\n\n```text\n{bounds}\n```\n\nThe envelope:\n\n```text\n{envelope}```",
+            method.summary()
+        );
+        (method, doc)
+    })
+    .collect()
+}
+
+/// The envelope, a line per joint.
+fn envelope_text(s: &SimplifiedEquations) -> String {
+    s.request
+        .envelope
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(i, j)| {
+            format!(
+                "q{0} in [{1}, {2}], |qd{0}| <= {3}, |qdd{0}| <= {4}\n",
+                i + 1,
+                j.lower,
+                j.upper,
+                j.speed,
+                j.acceleration
+            )
+        })
+        .collect()
 }

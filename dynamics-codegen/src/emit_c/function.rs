@@ -271,6 +271,15 @@ pub(super) mod tests {
             .copied()
             .fold(FamilySet::default(), FamilySet::with);
         eq.add_families(&robot, every);
+        // The simplified family needs its request, which no family set carries.
+        let joint = crate::front::default_envelope(crate::model::JointKind::Revolute);
+        let request = crate::model::Simplification {
+            tolerance: vec![0.01; 2],
+            envelope: crate::model::Envelope {
+                joints: vec![joint; 2],
+            },
+        };
+        crate::simplify::add(&mut eq, &request).expect("simplifies");
         eq
     }
 

@@ -43,6 +43,7 @@ mod errors;
 mod fields;
 mod file;
 mod named_file;
+mod simplify;
 mod sources;
 mod urdf;
 mod value;
@@ -51,13 +52,14 @@ pub use attrs::attribute_words;
 pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load};
+pub use simplify::given::default_joint as default_envelope;
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
 pub use urdf::{joint_limits, load_urdf, Chain, Limit};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::check::{self, Problem};
 use crate::method::FamilySet;
-use crate::model::Robot;
+use crate::model::{Robot, Simplification};
 use attrs::{parse_attrs, Attrs, Source};
 use named_file::Named;
 use syn::parse::ParseStream;
@@ -74,6 +76,8 @@ pub struct Input {
     /// The families to implement: the opt-in ones asked for (`derivatives = true`), and
     /// every other.
     pub families: FamilySet,
+    /// `simplify(...)`, resolved: the pruned models' tolerances and envelope.
+    pub simplify: Option<Simplification>,
 }
 
 /// Why the derive input gave no robot.
@@ -122,11 +126,25 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
     }
     let mut tracked_file = None;
     let lowered = lower(input, &read, &fields, &mut errors, &mut tracked_file);
+    let simplify = lowered.as_ref().and_then(|lowered| {
+        let attr = read.attrs.simplify.as_ref();
+        simplify::request(attr, lowered.simplify.as_ref(), &lowered.robot, &mut errors)
+    });
     let robot = lowered.map(|lowered| {
         check(&lowered, &mut errors);
         lowered.robot
     });
-    finish(input, read.attrs, errors, robot, tracked_file)
+    let read = Read {
+        attrs: read.attrs,
+        simplify,
+    };
+    finish(input, read, errors, robot, tracked_file)
+}
+
+/// The attributes read, and `simplify(...)` resolved for the robot.
+struct Read {
+    attrs: Attrs,
+    simplify: Option<Simplification>,
 }
 
 /// Reads every `#[dynamics(...)]` of the input into one [`Attrs`].
@@ -156,21 +174,35 @@ struct Derived<'a> {
     robot: Robot,
     check_inertia: Vec<bool>,
     tell: Tell<'a>,
+    /// A file's `[simplify]` and a URDF's joint limits.
+    simplify: Option<simplify::FromFile<'a>>,
 }
 
 impl<'a> Derived<'a> {
     /// The robot of the file that the string `at` names.
     fn named(at: &'a LitStr, named: Named) -> Derived<'a> {
-        let Named { loaded, path } = named;
+        let Named {
+            loaded,
+            path,
+            limits,
+        } = named;
         let Lowered {
             robot,
             check_inertia,
             sources,
+            simplify,
         } = loaded;
+        let simplify = simplify::FromFile {
+            given: simplify,
+            limits,
+            at,
+            path: path.clone(),
+        };
         Derived {
             robot,
             check_inertia,
             tell: Box::new(move |problem| named_file::tell(at, &path, &sources, problem)),
+            simplify: Some(simplify),
         }
     }
 }
@@ -243,11 +275,13 @@ fn lower<'a>(
             robot,
             check_inertia,
             sources,
+            ..
         } = lowered;
         Some(Derived {
             robot,
             check_inertia,
             tell: Box::new(move |problem| attrs::tell(&sources, counted, problem)),
+            simplify: None,
         })
     }
 }
@@ -264,11 +298,12 @@ fn tool_hint(key: &str) -> &'static str {
 /// The robot, or every error with what the fallback expansion needs.
 fn finish(
     input: &syn::DeriveInput,
-    attrs: Attrs,
+    read: Read,
     errors: Errors,
     robot: Option<Robot>,
     tracked_file: Option<String>,
 ) -> Result<Input, Failure> {
+    let Read { attrs, simplify } = read;
     let families = attrs.families();
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
@@ -280,6 +315,7 @@ fn finish(
                 krate: attrs.krate,
                 tracked_file,
                 families,
+                simplify,
             })
         }
         (Some(error), robot) => Err(Failure {

@@ -9,7 +9,7 @@ use super::errors::Errors;
 use super::fields::{check_names, field_error, Field};
 use super::file;
 use super::sources::{Loaded, Positions, Tokens};
-use super::urdf::{load_urdf, Chain};
+use super::urdf::{joint_limits, load_urdf, Chain, Limit};
 use super::value::Spanned;
 use crate::check::Problem;
 use crate::model::{mat_vec, transpose, Robot, Value};
@@ -20,6 +20,8 @@ use syn::LitStr;
 pub(super) struct Named {
     pub loaded: Loaded,
     pub path: String,
+    /// A URDF's joint limits (`<limit>`), the default envelope of `simplify(...)`.
+    pub limits: Option<Vec<Limit>>,
 }
 
 /// Reads the description file `file` names; `tracked` is set to its absolute path, for
@@ -65,7 +67,9 @@ pub(super) fn robot_from_urdf(
             return None;
         }
     };
+    let limits = joint_limits(&text, chain).ok();
     let mut named = named(urdf, loaded, relative, check_inertia, fields, errors);
+    named.limits = limits;
     if let Some(gravity) = gravity {
         for g in gravity {
             check_names(g, fields, errors);
@@ -95,7 +99,11 @@ fn named(
     for checked in &mut loaded.check_inertia {
         *checked &= check_inertia;
     }
-    Named { loaded, path }
+    Named {
+        loaded,
+        path,
+        limits: None,
+    }
 }
 
 /// Where a problem of the checks goes: on the string `file` that names the file at `path`,

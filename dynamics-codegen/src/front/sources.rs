@@ -4,6 +4,7 @@
 //! attribute's tokens (their spans) or a line and column of a file.
 
 use crate::check::{Problem, MAX_JOINTS};
+use crate::front::simplify::given::Given;
 use crate::model::Robot;
 use proc_macro2::Span;
 use std::collections::BTreeMap;
@@ -26,6 +27,8 @@ pub struct Sources<P> {
     pub joints: Vec<BTreeMap<String, P>>,
     /// Where `gravity` is given.
     pub gravity: Option<P>,
+    /// Where a file's `[simplify]` table (under the key `simplify`) and each of its keys are.
+    pub simplify: BTreeMap<String, P>,
 }
 
 impl<P> Default for Sources<P> {
@@ -33,6 +36,7 @@ impl<P> Default for Sources<P> {
         Sources {
             joints: Vec::new(),
             gravity: None,
+            simplify: BTreeMap::new(),
         }
     }
 }
@@ -91,6 +95,8 @@ pub struct Lowered<P> {
     pub check_inertia: Vec<bool>,
     /// Where each value is given, so that the checks after lowering can point at it.
     pub sources: Sources<P>,
+    /// A description file's `[simplify]`, to be resolved once the robot is known.
+    pub simplify: Option<Given<P>>,
 }
 
 /// A robot read from a file, with where the file writes each value.

@@ -35,7 +35,7 @@ impl Limits {
 
 /// Expands graph nodes into polynomials, sharing the work (and the budget of [`Limits`])
 /// between outputs.
-pub(super) struct Expander<'a> {
+pub struct Expander<'a> {
     eq: &'a Equations,
     memo: Vec<Option<Option<Poly>>>,
     /// Marks of the search in [`Expander::poly`], all false between searches.
@@ -45,7 +45,9 @@ pub(super) struct Expander<'a> {
 }
 
 impl<'a> Expander<'a> {
-    pub(super) fn new(eq: &'a Equations, limits: Limits) -> Expander<'a> {
+    /// An expander of the outputs of `eq` within `limits`.
+    #[must_use]
+    pub fn new(eq: &'a Equations, limits: Limits) -> Expander<'a> {
         Expander {
             eq,
             memo: vec![None; eq.graph.len()],
@@ -140,9 +142,15 @@ impl<'a> Expander<'a> {
         Some(arrange(self.folded(id)?.into_iter().collect()))
     }
 
+    /// The polynomial of node `id`, before folding.
+    #[cfg(test)]
+    pub(super) fn expanded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
+        Some(self.poly(id)?.into_terms())
+    }
+
     /// The polynomial of node `id` with its sines and cosines of sums folded (`C12`), an
     /// identity; `None` when it does not fit the limits.
-    pub(super) fn folded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
+    pub fn folded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
         let mut terms = self.poly(id)?.into_terms();
         // Each search for a pair to fold reads every term.
         fold_trig(&mut terms, &mut |n| self.charge(n as u64))?;

@@ -36,7 +36,7 @@ mod symbol;
 mod tests;
 
 pub use base_parameters::render_base_parameters;
-pub use expand::Limits;
+pub use expand::{Expander, Limits};
 pub use monomial::Monomial;
 pub use poly::Poly;
 pub use print::Format;
@@ -46,7 +46,6 @@ pub use symbol::{AngleSum, Sym};
 use crate::algo::JointKind;
 use crate::model::Robot;
 use crate::trace::Equations;
-use expand::Expander;
 use sections::Section;
 
 /// The equations of motion of a robot, or its kinematics, ready to print.

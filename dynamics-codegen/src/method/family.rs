@@ -92,7 +92,7 @@ mod tests {
         }
         assert_eq!(
             Family::opt_in_names(),
-            ["derivatives", "regressor", "base_parameters"]
+            ["derivatives", "regressor", "simplify", "base_parameters"]
         );
         assert_eq!(default.opt_in().count(), 0);
         let asked = default.with(Family::Derivatives);

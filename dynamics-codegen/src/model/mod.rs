@@ -7,10 +7,12 @@
 //! or `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)` (modified D-H).
 
 mod arith;
+mod envelope;
 mod frame;
 mod lower;
 mod value;
 
+pub use envelope::{Envelope, JointEnvelope, Simplification};
 pub use frame::{
     mat_mul, mat_vec, rotate_inertia, sin_cos, snap_angle, transpose, AxisFrame, Matrix, Placement,
     Pose, MAX_SNAPPED_QUARTER_TURNS, QUARTER_TURN_TOLERANCE,

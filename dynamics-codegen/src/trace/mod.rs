@@ -38,6 +38,7 @@ mod mass;
 mod newton_euler;
 mod outputs;
 mod regressor;
+mod simplified;
 mod tracer;
 
 use crate::algo::{JointKind, RobotScalars};
@@ -53,6 +54,7 @@ use joints::JointTerms;
 pub use kinematics::KinematicEquations;
 pub use outputs::Shape;
 pub use regressor::RegressorEquations;
+pub use simplified::{PrunedElement, SimplifiedEquations};
 use std::cell::RefCell;
 use tracer::Tracer;
 
@@ -106,6 +108,8 @@ pub struct Equations {
     /// The base parameters of the joint parameters the description gives, where asked for
     /// and the geometry is numbers ([`Equations::base_parameters`]).
     pub base_parameters: Option<BaseParameters>,
+    /// The pruned τ, M and g, where asked for and built by [`crate::simplify::add`].
+    pub simplified: Option<SimplifiedEquations>,
 }
 
 impl Equations {
@@ -132,7 +136,8 @@ impl Equations {
                         None => asked,
                     };
                 }
-                Family::Dynamics | Family::Kinematics | Family::Forward => {}
+                // Built by the `simplify` stage, which needs the envelope and tolerances.
+                Family::Simplified | Family::Dynamics | Family::Kinematics | Family::Forward => {}
             }
         }
     }
@@ -189,5 +194,6 @@ pub fn derive(robot: &Robot) -> Equations {
         derivatives: None,
         regressor: None,
         base_parameters: None,
+        simplified: None,
     }
 }

@@ -169,6 +169,15 @@ impl Method {
             Method::BaseFromJoints => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
             }
+            Method::InverseDynamicsSimplified => {
+                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.tau))
+            }
+            Method::MassMatrixSimplified => {
+                Shape::Matrix(eq.simplified.as_ref().map_or(&[], |s| &s.mass))
+            }
+            Method::GravityTorquesSimplified => {
+                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.gravity))
+            }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),

@@ -39,6 +39,7 @@ pub use layout::{States, StatesMut};
 pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
+    DynamicsSimplifiedBatch,
 };
 
 use crate::lanes::{Lanes, SplitLanes};

@@ -17,6 +17,7 @@ mod joints;
 mod keys;
 mod parse;
 mod reader;
+mod simplify;
 
 pub use keys::attribute_words;
 pub(super) use parse::{parse_attrs, Attrs, Source};
@@ -79,6 +80,7 @@ pub(super) fn lower(
         robot,
         check_inertia: reader.check_inertia,
         sources: reader.sources,
+        simplify: None,
     };
     (lowered, counted)
 }

@@ -8,7 +8,9 @@ use super::entry::{
 use super::friction::{parse_friction, FrictionAttr};
 use super::joints::{parse_joints, JointAttr};
 use super::keys::{Key, LinkKey};
+use super::simplify::parse_simplify;
 use crate::front::errors::{unknown_key, Errors};
+use crate::front::simplify::given::Given;
 use crate::front::value::Spanned;
 use crate::method::{Family, FamilySet};
 use crate::model::Convention;
@@ -59,6 +61,8 @@ pub(in crate::front) struct Attrs {
     pub tool: Option<[Spanned; 6]>,
     /// `derivatives = true` and the like: the opt-in families asked for, or refused.
     pub families: BTreeMap<Family, bool>,
+    /// `simplify(...)`: the pruned models' request (which also asks for their family).
+    pub simplify: Option<Given<Span>>,
 }
 
 impl Attrs {
@@ -166,6 +170,17 @@ pub(in crate::front) fn parse_attrs(
         };
         if let Some(key) = Key::find(&ident) {
             parse_attr(input, key, &ident, attrs, errors)?;
+        } else if ident == Family::Simplified.name() {
+            let given = parse_simplify(input, &ident, errors)?;
+            if attrs.simplify.is_some() {
+                errors.push(
+                    ident.span(),
+                    "duplicate `simplify`: it is given earlier in this attribute",
+                );
+            } else {
+                attrs.simplify = Some(given);
+                attrs.families.insert(Family::Simplified, true);
+            }
         } else if let Some(family) = opt_in_family(&ident) {
             parse_family(input, family, &ident, attrs, errors)?;
         } else {

@@ -143,6 +143,7 @@ pub(super) fn convert(
         },
         check_inertia,
         sources: Positions::default(),
+        simplify: file.simplify.map(super::simplify::FileSimplify::given),
     };
     if frames_given && deferred.is_empty() {
         frames::lower(&mut loaded.robot, &mut deferred);
@@ -152,7 +153,10 @@ pub(super) fn convert(
 
 /// The loaded robot, or the first of the errors found after parsing, at its position (that of
 /// the joint's `type` where the file does not write the key).
-pub(super) fn first_error(loaded: Loaded, deferred: &[Deferred]) -> Result<Loaded, FileError> {
+pub(super) fn first_error(mut loaded: Loaded, deferred: &[Deferred]) -> Result<Loaded, FileError> {
+    if let Some(given) = &mut loaded.simplify {
+        super::simplify::place(given, &loaded.sources);
+    }
     let Some((joint, key, message)) = deferred.first() else {
         return Ok(loaded);
     };

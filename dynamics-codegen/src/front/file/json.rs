@@ -49,8 +49,16 @@ fn positions(text: &str) -> Positions {
     };
     let mut joints = Vec::new();
     let mut gravity = None;
+    let mut simplify = Vec::new();
     scan.object(&mut |scan, key| {
-        if key == "joints" && scan.peek() == Some(b'[') {
+        scan.space();
+        if key == "simplify" && scan.peek() == Some(b'{') {
+            simplify.push((key.to_string(), scan.at));
+            scan.object(&mut |scan, key| {
+                simplify.push((key.to_string(), scan.at));
+                scan.value();
+            });
+        } else if key == "joints" && scan.peek() == Some(b'[') {
             scan.at += 1;
             loop {
                 scan.space();
@@ -81,9 +89,11 @@ fn positions(text: &str) -> Positions {
         (Some(l), Some(c)) => Some((l, c)),
         _ => None,
     });
+    let simplify = positions_at(text, [simplify]).pop().unwrap_or_default();
     Positions {
         joints: positions_at(text, joints),
         gravity,
+        simplify,
     }
 }
 

@@ -8,6 +8,7 @@ mod frames;
 mod json;
 mod positions;
 mod schema;
+mod simplify;
 mod toml;
 
 use crate::front::errors::FileError;

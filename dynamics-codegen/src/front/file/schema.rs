@@ -111,6 +111,9 @@ pub(super) struct FileRobot {
     /// The tool frame in link frame n, `[x, y, z, roll, pitch, yaw]`.
     #[serde(default)]
     pub(super) tool: Option<[FileValue; 6]>,
+    /// The pruned models' tolerance and envelope, as the attribute's `simplify(...)`.
+    #[serde(default)]
+    pub(super) simplify: Option<super::simplify::FileSimplify>,
 }
 
 #[derive(Deserialize)]

@@ -44,6 +44,7 @@ fn positions(text: &str) -> Positions {
         #[serde(default)]
         joints: Vec<BTreeMap<String, toml::Spanned<serde::de::IgnoredAny>>>,
         gravity: Option<toml::Spanned<serde::de::IgnoredAny>>,
+        simplify: Option<toml::Spanned<BTreeMap<String, toml::Spanned<serde::de::IgnoredAny>>>>,
     }
     let Ok(file) = toml::from_str::<Joints>(text) else {
         return Positions::default();
@@ -60,8 +61,20 @@ fn positions(text: &str) -> Positions {
             .map(|(key, value)| (key, value.span().start))
             .collect()
     });
+    let at = |offset: usize| match line_column(text, offset) {
+        (Some(l), Some(c)) => Some((l, c)),
+        _ => None,
+    };
+    let mut simplify = BTreeMap::new();
+    if let Some(table) = file.simplify {
+        simplify.extend(at(table.span().start).map(|a| ("simplify".to_string(), a)));
+        for (key, value) in table.into_inner() {
+            simplify.extend(at(value.span().start).map(|a| (key, a)));
+        }
+    }
     Positions {
         joints: positions_at(text, offsets),
         gravity,
+        simplify,
     }
 }

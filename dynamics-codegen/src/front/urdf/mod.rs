@@ -91,8 +91,9 @@ pub fn load_urdf(
         check_inertia: vec![check_inertia; dof],
         sources: Positions {
             joints: positions,
-            gravity: None,
+            ..Positions::default()
         },
+        simplify: None,
     })
 }
 

@@ -1,9 +1,11 @@
-//! Simplified joint torques with a proven error bound (issue 30, τ only).
+//! Simplified joint torques, mass matrix and gravity torques with a proven error bound (issue
+//! 30); the derive's `simplify(...)` prunes with the same functions.
 //!
-//! Each `T_i` is expanded into its exact canonical polynomial and folded (`C1 C2 − S1 S2` →
-//! `C12`, an identity), so `T_i = Σ_k c_k m_k` exactly, each `m_k` a product of symbols. Over
-//! an [`Envelope`] (each joint's range `q_j ∈ [lo_j, hi_j]`, `|q̇_j| ≤ v_j`, `|q̈_j| ≤ a_j`) every
-//! term is bounded by interval arithmetic, `|c_k m_k| ≤ B_k = |c_k| Π |s|max^e`, where
+//! Each `T_i` (`M_ij`, `g_i`) is expanded into its exact canonical polynomial and folded
+//! (`C1 C2 − S1 S2` → `C12`, an identity), so `T_i = Σ_k c_k m_k` exactly, each `m_k` a
+//! product of symbols. Over an [`Envelope`] (each joint's range `q_j ∈ [lo_j, hi_j]`,
+//! `|q̇_j| ≤ v_j`, `|q̈_j| ≤ a_j`) every term is bounded by interval arithmetic,
+//! `|c_k m_k| ≤ B_k = |c_k| Π |s|max^e`, where
 //!
 //! * `|sin(θ_a + θ_b + …)|max`, `|cos(…)|max` are the exact maxima over the interval sum of
 //!   the angles' ranges (each shifted by its joint's constant offset);
@@ -35,29 +37,10 @@ use super::label::{Label, Quantity};
 use super::sections::{Entry, Section};
 use super::{arrange::arrange, Inspection, Limits, Monomial};
 use crate::model::Robot;
+pub use crate::model::{Envelope, JointEnvelope};
 use crate::symbolic::Number;
 use crate::trace::Equations;
 use std::collections::BTreeMap;
-
-/// One joint's part of an [`Envelope`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct JointEnvelope {
-    /// The lowest position (rad or m), without the joint's constant offset.
-    pub lower: f64,
-    /// The highest position.
-    pub upper: f64,
-    /// The largest speed `|q̇|`.
-    pub speed: f64,
-    /// The largest acceleration `|q̈|`.
-    pub acceleration: f64,
-}
-
-/// The states over which the dropped terms are bounded.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Envelope {
-    /// One per joint.
-    pub joints: Vec<JointEnvelope>,
-}
 
 /// A dropped term and the bound of its absolute value over the envelope.
 #[derive(Clone, Debug, PartialEq)]
@@ -138,22 +121,40 @@ pub fn prune(
     })
 }
 
-/// The joint torques of a robot pruned within their tolerances, ready to print.
+/// The mass matrix element `M_ij`'s tolerance for joint tolerances `t` over `envelope`:
+/// `min(t_i, t_j) / Σ_k a_k`, so that the pruned `M q̈` is within `t_i` too (0, nothing
+/// dropped, where no joint accelerates).
+#[must_use]
+pub fn mass_tolerance(t: &[f64], envelope: &Envelope, i: usize, j: usize) -> f64 {
+    let accelerations: f64 = envelope.joints.iter().map(|j| j.acceleration).sum();
+    if accelerations > 0.0 {
+        t[i].min(t[j]) / accelerations
+    } else {
+        0.0
+    }
+}
+
+/// The joint torques, mass matrix and gravity torques of a robot pruned within their
+/// tolerances, ready to print.
 pub struct Simplified {
     inspection: Inspection,
     envelope: Envelope,
-    /// One per joint.
+    /// The joint torques', one per joint.
     pub prunings: Vec<Pruning>,
+    /// The mass matrix's upper triangle (`D11`, `D12`, …) and the gravity torques' (`D1`, …),
+    /// by name.
+    pub others: Vec<(String, Pruning)>,
     /// The robot's constants behind its symbols, as [`eval::constants`] gives them.
     pub constants: eval::Constants,
 }
 
-/// Expands each joint torque of `eq`, folds it and prunes it over `envelope` within
-/// `tolerance` (one per joint): see the module's documentation for the bound.
+/// Expands each joint torque, mass matrix element and gravity torque of `eq`, folds it and
+/// prunes it over `envelope` within `tolerance` (one per joint; [`mass_tolerance`] for M):
+/// see the module's documentation for the bound.
 ///
 /// # Errors
 /// An envelope or tolerance list whose length is not the joints', or a robot with a parameter
-/// (a struct field) in its torques or angle offsets.
+/// (a struct field) in its outputs or angle offsets.
 pub fn inspect_simplified(
     eq: &Equations,
     robot: &Robot,
@@ -168,28 +169,63 @@ pub fn inspect_simplified(
     }
     let constants = eval::constants(eq)?;
     let mut expander = Expander::new(eq, Limits::UNBOUNDED);
-    let mut prunings = Vec::with_capacity(n);
-    let mut entries = Vec::with_capacity(n);
-    for (i, &id) in eq.tau.iter().enumerate() {
+    let mut one = |id, name: &str, t: f64| {
         let full = expander
             .folded(id)
-            .ok_or_else(|| format!("T{} is not a polynomial in the joint variables", i + 1))?;
-        let pruning = prune(full, envelope, &constants.offsets, tolerance[i])
-            .map_err(|e| format!("T{}: {e}", i + 1))?;
-        entries.push(Entry {
-            labels: vec![Label::new(Quantity::Torque, &[i])],
-            value: Some(arrange(pruning.kept.clone().into_iter().collect())),
-        });
+            .ok_or_else(|| format!("{name} is not a polynomial in the joint variables"))?;
+        prune(full, envelope, &constants.offsets, t).map_err(|e| format!("{name}: {e}"))
+    };
+    let mut sections = Vec::new();
+    let mut prunings = Vec::with_capacity(n);
+    let mut others = Vec::new();
+    let mut entries = Vec::new();
+    for (i, &id) in eq.tau.iter().enumerate() {
+        let pruning = one(id, &format!("T{}", i + 1), tolerance[i])?;
+        entries.push(entry(Label::new(Quantity::Torque, &[i]), &pruning));
         prunings.push(pruning);
     }
-    let sections = vec![Section {
-        quantity: Quantity::Torque,
-        entries,
-    }];
+    sections.push(section(Quantity::Torque, &mut entries));
+    for i in 0..n {
+        for j in i..n {
+            let name = format!("D{}{}", i + 1, j + 1);
+            let pruning = one(
+                eq.mass[i][j],
+                &name,
+                mass_tolerance(tolerance, envelope, i, j),
+            )?;
+            entries.push(entry(Label::new(Quantity::Inertia, &[i, j]), &pruning));
+            others.push((name, pruning));
+        }
+    }
+    sections.push(section(Quantity::Inertia, &mut entries));
+    for (i, &id) in eq.gravity.iter().enumerate() {
+        let name = format!("D{}", i + 1);
+        let pruning = one(id, &name, tolerance[i])?;
+        entries.push(entry(Label::new(Quantity::Gravity, &[i]), &pruning));
+        others.push((name, pruning));
+    }
+    sections.push(section(Quantity::Gravity, &mut entries));
     Ok(Simplified {
         inspection: Inspection::new(eq, robot, false, sections, Limits::UNBOUNDED),
         envelope: envelope.clone(),
         prunings,
+        others,
         constants,
     })
+}
+
+/// The printed entry of a pruned element: what it keeps.
+fn entry(label: Label, pruning: &Pruning) -> Entry {
+    Entry {
+        labels: vec![label],
+        value: Some(arrange(pruning.kept.clone().into_iter().collect())),
+    }
+}
+
+/// The section of `quantity` holding `entries` (taken).
+fn section(quantity: Quantity, entries: &mut Vec<Entry>) -> Section {
+    Section {
+        quantity,
+        entries: std::mem::take(entries),
+    }
 }

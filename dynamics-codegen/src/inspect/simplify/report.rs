@@ -28,7 +28,8 @@ impl Simplified {
             report,
             "\nSimplified: each term's |value| bounded over the envelope by interval arithmetic; \
              the smallest dropped while their bounds sum within the tolerance, which sum bounds \
-             |T_i - T_i(simplified)|"
+             |T_i - T_i(simplified)| (M_ij within min(t_i, t_j) / the sum of the accelerations, \
+             so that (M q'')_i is within t_i)"
         );
         let _ = writeln!(report, "Envelope:");
         for (j, e) in self.envelope.joints.iter().enumerate() {
@@ -43,7 +44,10 @@ impl Simplified {
             );
         }
         for (i, pruning) in self.prunings.iter().enumerate() {
-            joint_report(&p, i, pruning, &mut report);
+            element_report(&p, &format!("T{}", i + 1), pruning, &mut report);
+        }
+        for (name, pruning) in &self.others {
+            element_report(&p, name, pruning, &mut report);
         }
         for line in report.lines() {
             let _ = writeln!(out, "{}{line}", if line.is_empty() { "" } else { comment });
@@ -52,9 +56,8 @@ impl Simplified {
     }
 }
 
-/// Joint `i`'s counts and bounds, and its largest dropped terms.
-fn joint_report(p: &Printer<'_>, i: usize, pruning: &Pruning, out: &mut String) {
-    let t = format!("T{}", i + 1);
+/// Element `t`'s counts and bounds, and its largest dropped terms.
+fn element_report(p: &Printer<'_>, t: &str, pruning: &Pruning, out: &mut String) {
     let _ = writeln!(
         out,
         "\n{t}: {} of {} terms kept; |{t} - {t}(simplified)| ≤ {} (tolerance {}); |{t}| ≤ {} over the envelope",

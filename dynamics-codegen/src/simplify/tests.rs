@@ -1,0 +1,222 @@
+//! The generated pruned outputs against the exact ones, both evaluated from the graph at
+//! random states of the envelope: never further apart than the proven bound, and not
+//! vacuously (the worst sampled error is reported against the bound).
+
+use super::add;
+use crate::model::{Envelope, JointEnvelope, Simplification};
+use crate::symbolic::{NodeId, Var};
+use crate::trace::{derive, Equations, PrunedElement};
+use dynamics_test_support::Rng;
+
+fn load(file: &str) -> Equations {
+    let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("the robot file");
+    derive(&crate::front::load(&path, &text).expect("a robot").robot)
+}
+
+fn envelope(n: usize) -> Envelope {
+    let joint = JointEnvelope {
+        lower: -2.5,
+        upper: 2.0,
+        speed: 2.0,
+        acceleration: 5.0,
+    };
+    Envelope {
+        joints: vec![joint; n],
+    }
+}
+
+/// Every node's value at a random state of `e`.
+fn sample(eq: &Equations, e: &Envelope, rng: &mut Rng) -> Vec<f64> {
+    let offsets = crate::inspect::simplify::eval::constants(eq)
+        .expect("constants")
+        .offsets;
+    let pick = |rng: &mut Rng, f: fn(&JointEnvelope) -> (f64, f64)| -> Vec<f64> {
+        e.joints
+            .iter()
+            .map(|j| {
+                let (lo, hi) = f(j);
+                rng.range(lo, hi)
+            })
+            .collect()
+    };
+    let q = pick(rng, |j| (j.lower, j.upper));
+    let qd = pick(rng, |j| (-j.speed, j.speed));
+    let qdd = pick(rng, |j| (-j.acceleration, j.acceleration));
+    eq.graph.eval(|v| match v {
+        Var::Q(i) => q[usize::from(i)],
+        Var::SinQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).sin(),
+        Var::CosQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).cos(),
+        Var::Qd(i) => qd[usize::from(i)],
+        Var::Qdd(i) => qdd[usize::from(i)],
+        _ => f64::NAN,
+    })
+}
+
+/// The exact and pruned nodes of τ, g and M's upper triangle, with their bounds and names.
+fn pairs(eq: &Equations) -> Vec<(NodeId, NodeId, PrunedElement, String)> {
+    let s = eq.simplified.as_ref().expect("simplified");
+    let mut out = Vec::new();
+    for i in 0..eq.dof {
+        out.push((eq.tau[i], s.tau[i], s.tau_bounds[i], format!("T{}", i + 1)));
+        out.push((
+            eq.gravity[i],
+            s.gravity[i],
+            s.gravity_bounds[i],
+            format!("D{}", i + 1),
+        ));
+        for j in i..eq.dof {
+            let name = format!("D{}{}", i + 1, j + 1);
+            out.push((eq.mass[i][j], s.mass[i][j], s.mass_bounds[i][j], name));
+        }
+    }
+    out
+}
+
+/// Prunes `file` at `fraction` of each joint's sampled peak torque; returns the worst
+/// sampled error over the bound of every element that dropped something.
+fn check_sound(file: &str, fraction: f64, samples: usize) -> Vec<f64> {
+    let mut eq = load(file);
+    let e = envelope(eq.dof);
+    let mut rng = Rng::new(5);
+    let mut peak = vec![0.0f64; eq.dof];
+    for _ in 0..300 {
+        let values = sample(&eq, &e, &mut rng);
+        for (p, id) in peak.iter_mut().zip(&eq.tau) {
+            *p = p.max(values[id.index()].abs());
+        }
+    }
+    let tolerance = peak.iter().map(|p| p * fraction).collect();
+    let request = Simplification {
+        tolerance,
+        envelope: e.clone(),
+    };
+    add(&mut eq, &request).expect("simplifies");
+    let pairs = pairs(&eq);
+    let mut worst = vec![0.0f64; pairs.len()];
+    for _ in 0..samples {
+        let values = sample(&eq, &e, &mut rng);
+        for (w, (exact, pruned, _, _)) in worst.iter_mut().zip(&pairs) {
+            *w = w.max((values[exact.index()] - values[pruned.index()]).abs());
+        }
+    }
+    let mut ratios = Vec::new();
+    for (w, (_, _, b, name)) in worst.iter().zip(&pairs) {
+        assert!(
+            b.bound <= b.tolerance,
+            "{file} {name}: bound over the tolerance"
+        );
+        // The evaluation's own rounding: far below any bound that matters.
+        assert!(
+            *w <= b.bound + 1e-9,
+            "{file} {name}: sampled {w} over the proven bound {}",
+            b.bound
+        );
+        if b.kept < b.terms {
+            ratios.push(w / b.bound);
+            eprintln!(
+                "{file} {name}: {} of {} kept, bound {:.3e}, worst sampled {w:.3e}, ratio {:.3}",
+                b.kept,
+                b.terms,
+                b.bound,
+                w / b.bound
+            );
+        }
+    }
+    assert!(
+        !ratios.is_empty(),
+        "{file}: nothing dropped, nothing tested"
+    );
+    ratios
+}
+
+#[test]
+fn puma_560_pruned_within_its_bounds() {
+    let ratios = check_sound("robots/puma560.toml", 0.01, 2000);
+    // Not vacuous: somewhere sampling comes within a factor of 10 of the bound.
+    assert!(ratios.iter().any(|r| *r > 0.1), "{ratios:?}");
+}
+
+#[test]
+fn a_random_robot_pruned_within_its_bounds() {
+    check_sound("tests/data/reference/robots/random2.json", 0.01, 2000);
+}
+
+#[test]
+fn friction_pruned_within_its_bounds() {
+    check_sound("robots/two_link_friction.toml", 0.05, 2000);
+}
+
+/// A zero tolerance keeps every term: the pruned outputs are the exact ones, factored.
+#[test]
+fn a_zero_tolerance_keeps_the_exact_values() {
+    let mut eq = load("robots/puma560.toml");
+    let request = Simplification {
+        tolerance: vec![0.0; 6],
+        envelope: envelope(6),
+    };
+    add(&mut eq, &request).expect("simplifies");
+    let values = sample(&eq, &envelope(6), &mut Rng::new(3));
+    for (exact, pruned, b, name) in pairs(&eq) {
+        assert_eq!((b.kept, b.bound), (b.terms, 0.0), "{name}");
+        let (x, y) = (values[exact.index()], values[pruned.index()]);
+        assert!(
+            (x - y).abs() <= 1e-9 * (1.0 + x.abs()),
+            "{name}: {x} vs {y}"
+        );
+    }
+}
+
+#[test]
+fn a_parameter_is_refused() {
+    let mut eq = load("robots/niku_example_6_1.toml");
+    let request = Simplification {
+        tolerance: vec![0.1],
+        envelope: envelope(1),
+    };
+    let error = add(&mut eq, &request).expect_err("refused");
+    assert!(error.contains("the parameter `"), "{error}");
+    assert!(eq.simplified.is_none());
+}
+
+/// A robot whose pruned model keeps too many terms is refused, not compiled: expanded, a
+/// general robot's torques grow large (random5 keeps 3867 terms of τ at these tolerances).
+#[test]
+fn a_pruned_model_too_large_is_refused() {
+    let mut eq = load("tests/data/reference/robots/random5.json");
+    let tolerance = vec![0.4, 0.3, 0.2, 0.1, 0.05, 0.02];
+    let request = Simplification {
+        tolerance,
+        envelope: envelope(6),
+    };
+    let error = add(&mut eq, &request).expect_err("refused");
+    assert!(error.contains("3867 terms"), "{error}");
+    assert!(eq.simplified.is_none());
+}
+
+/// The derive documents each simplified method with every output's bound and the envelope,
+/// and a robot that does not ask gets none of it.
+#[test]
+fn the_rustdoc_states_the_bounds_and_the_envelope() {
+    let arm = "gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0], [q, 0, 0.5, 0]], \
+               link(mass = 2, com = [-0.5, 0, 0]), link(mass = 1, com = [-0.25, 0, 0])";
+    let derive = |extra: &str| {
+        let text = format!("#[dynamics({arm}{extra})] struct Arm;");
+        crate::derive_dynamics(text.parse().expect("tokens")).to_string()
+    };
+    let code = derive(", simplify(tolerance = [0.5, 0.1], qd_max = 1.5, q_min = -1, q_max = 1)");
+    for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+        assert!(
+            code.contains(&format!("fn {method}_simplified")),
+            "{method}"
+        );
+    }
+    assert!(code.contains("|T1 − T1,simplified| ≤ "), "{code}");
+    assert!(code.contains("|D12 − D12,simplified| ≤ "), "{code}");
+    assert!(
+        code.contains("q2 in [-1, 1], |qd2| <= 1.5, |qdd2| <= 5"),
+        "{code}"
+    );
+    let plain = derive("");
+    assert!(!plain.contains("simplified"), "{plain}");
+}

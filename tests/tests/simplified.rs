@@ -1,0 +1,213 @@
+//! `simplify(...)` through the derive: the pruned τ, M and g against the exact methods of the
+//! same robot (the oracle) at random states of the envelope, never further apart than the
+//! proven bound, which the generator gives for the same request; and the ratio of the worst
+//! sampled error to that bound, printed (`--nocapture`) to show that it is not vacuous.
+
+use dynamics_codegen::front::{joint_limits, load_urdf, Chain};
+use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
+use dynamics_codegen::trace::PrunedElement;
+use dynamics_runtime::{Dynamics, DynamicsSimplified};
+use dynamics_test_support::Rng;
+
+/// PUMA 560 at about 1 % of its peak torques over the envelope below (sampled: 22, 60, 13,
+/// 0.04, 0.05 and 0.001 N·m).
+#[derive(Dynamics)]
+#[dynamics(
+    file = "../robots/puma560.toml",
+    simplify(
+        tolerance = [0.22, 0.6, 0.13, 0.0004, 0.0005, 0.00001],
+        q_min = -2.5,
+        q_max = 2.0,
+        qd_max = 2,
+        qdd_max = 5,
+    )
+)]
+struct Puma;
+
+/// A random 3-joint robot of the reference data, its tolerance relative to a stated torque.
+/// (A 6-joint random arm keeps too many terms to be worth it: `simplify/tests.rs`.)
+#[derive(Dynamics)]
+#[dynamics(
+    file = "data/reference/robots/random2.json",
+    simplify(rated = [20, 10, 5], tolerance_percent = 1, qd_max = [1, 2, 3])
+)]
+struct Random;
+
+/// The UR5 of its URDF: the range and speed of the envelope are its `<limit>`s.
+#[derive(Dynamics)]
+#[dynamics(urdf = "../robots/urdf/ur5.urdf", simplify(tolerance = 1, qdd_max = 4))]
+struct Ur5;
+
+/// A two-link arm whose description file asks for its simplified models (`[simplify]`).
+#[derive(Dynamics)]
+#[dynamics(file = "data/simplify/two_link.toml")]
+struct TwoLink;
+
+/// The same requests, for the generator's bounds.
+fn puma_request() -> Simplification {
+    let joint = JointEnvelope {
+        lower: -2.5,
+        upper: 2.0,
+        speed: 2.0,
+        acceleration: 5.0,
+    };
+    Simplification {
+        tolerance: vec![0.22, 0.6, 0.13, 0.0004, 0.0005, 0.00001],
+        envelope: Envelope {
+            joints: vec![joint; 6],
+        },
+    }
+}
+
+fn random_request() -> Simplification {
+    let joints = [1.0, 2.0, 3.0].map(|speed| JointEnvelope {
+        lower: -std::f64::consts::PI,
+        upper: std::f64::consts::PI,
+        speed,
+        acceleration: 5.0,
+    });
+    Simplification {
+        tolerance: vec![0.2, 0.1, 0.05],
+        envelope: Envelope {
+            joints: joints.to_vec(),
+        },
+    }
+}
+
+/// The request of `data/simplify/two_link.toml`.
+fn two_link_request() -> Simplification {
+    let joints = [(-1.0, 1.0), (-2.0, 2.0)].map(|(lower, upper)| JointEnvelope {
+        lower,
+        upper,
+        speed: 3.0,
+        acceleration: 5.0,
+    });
+    Simplification {
+        tolerance: vec![0.5, 0.3],
+        envelope: Envelope {
+            joints: joints.to_vec(),
+        },
+    }
+}
+
+/// The UR5's request: its URDF's limits, read here by the front end's reader of them.
+fn ur5_request() -> Simplification {
+    let path = format!("{}/../robots/urdf/ur5.urdf", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("the URDF");
+    let limits = joint_limits(&text, Chain::default()).expect("limits");
+    let joints = limits.iter().map(|l| JointEnvelope {
+        lower: l.lower.expect("a range"),
+        upper: l.upper.expect("a range"),
+        speed: l.velocity.expect("a speed"),
+        acceleration: 4.0,
+    });
+    Simplification {
+        tolerance: vec![1.0; 6],
+        envelope: Envelope {
+            joints: joints.collect(),
+        },
+    }
+}
+
+/// The proven bounds of τ, g and M (rows) of the robot in `file` for `request`.
+fn bounds(file: &str, request: &Simplification) -> [Vec<PrunedElement>; 3] {
+    let path = format!("{}/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("the robot file");
+    let robot = if file.ends_with(".urdf") {
+        load_urdf(&path, &text, Chain::default(), true).expect("a robot")
+    } else {
+        dynamics_codegen::front::load(&path, &text).expect("a robot")
+    }
+    .robot;
+    let mut eq = dynamics_codegen::derive(&robot);
+    dynamics_codegen::simplify::add(&mut eq, request).expect("simplifies");
+    let s = eq.simplified.expect("simplified");
+    [s.tau_bounds, s.gravity_bounds, s.mass_bounds.concat()]
+}
+
+/// Samples `robot` in the envelope; asserts every pruned output within its bound and returns
+/// the worst sampled error over the bound, per output kind, where something was dropped.
+fn check<const N: usize, R: DynamicsSimplified<N>>(
+    robot: &R,
+    file: &str,
+    request: &Simplification,
+) -> f64 {
+    let [tau_b, g_b, m_b] = bounds(file, request);
+    let mut rng = Rng::new(17);
+    let mut worst = [vec![0.0f64; N], vec![0.0; N], vec![0.0; N * N]];
+    for _ in 0..3000 {
+        let e = &request.envelope.joints;
+        let q: [f64; N] = std::array::from_fn(|i| rng.range(e[i].lower, e[i].upper));
+        let qd: [f64; N] = std::array::from_fn(|i| rng.range(-e[i].speed, e[i].speed));
+        let qdd = std::array::from_fn(|i| rng.range(-e[i].acceleration, e[i].acceleration));
+        let tau = (
+            robot.inverse_dynamics(&q, &qd, &qdd),
+            robot.inverse_dynamics_simplified(&q, &qd, &qdd),
+        );
+        let g = (
+            robot.gravity_torques(&q),
+            robot.gravity_torques_simplified(&q),
+        );
+        let m = (
+            robot.mass_matrix(&q).concat(),
+            robot.mass_matrix_simplified(&q).concat(),
+        );
+        let pairs = [
+            (&tau.0[..], &tau.1[..]),
+            (&g.0[..], &g.1[..]),
+            (&m.0[..], &m.1[..]),
+        ];
+        for (w, (exact, pruned)) in worst.iter_mut().zip(pairs) {
+            for (w, (x, y)) in w.iter_mut().zip(exact.iter().zip(pruned)) {
+                *w = w.max((x - y).abs());
+            }
+        }
+    }
+    let mut best_ratio = 0.0f64;
+    for ((name, w), b) in ["tau", "g", "M"]
+        .iter()
+        .zip(&worst)
+        .zip([&tau_b, &g_b, &m_b])
+    {
+        for (k, (w, b)) in w.iter().zip(b).enumerate() {
+            assert!(
+                *w <= b.bound + 1e-9,
+                "{file} {name}[{k}]: sampled {w} over the proven bound {}",
+                b.bound
+            );
+            if b.kept < b.terms {
+                best_ratio = best_ratio.max(w / b.bound);
+                eprintln!("{file} {name}[{k}]: {} of {} terms kept, bound {:.3e}, worst sampled {w:.3e}, ratio {:.3}", b.kept, b.terms, b.bound, w / b.bound);
+            }
+        }
+    }
+    best_ratio
+}
+
+#[test]
+fn puma_560_simplified_within_its_proven_bounds() {
+    let ratio = check(&Puma, "../robots/puma560.toml", &puma_request());
+    assert!(ratio > 0.1, "the bound is vacuous: best ratio {ratio}");
+}
+
+#[test]
+fn a_random_robot_simplified_within_its_proven_bounds() {
+    let ratio = check(
+        &Random,
+        "data/reference/robots/random2.json",
+        &random_request(),
+    );
+    assert!(ratio > 0.0, "nothing dropped");
+}
+
+#[test]
+fn a_urdf_robot_simplified_within_its_limits() {
+    let ratio = check(&Ur5, "../robots/urdf/ur5.urdf", &ur5_request());
+    assert!(ratio > 0.0, "nothing dropped");
+}
+
+#[test]
+fn simplified_as_the_description_file_asks() {
+    let ratio = check(&TwoLink, "data/simplify/two_link.toml", &two_link_request());
+    assert!(ratio > 0.0, "nothing dropped");
+}
