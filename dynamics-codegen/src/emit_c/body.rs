@@ -97,23 +97,16 @@ impl<'a> Writer<'a> {
         let (mut lines, reads) = self.inputs();
         let state = self.depends_on_state();
         let order: Vec<NodeId> = self.eq.graph.nodes().map(|(id, _)| id).collect();
-        // A method with an `into` form in Rust (the regressors) stores each value as soon as
-        // it is computed: its hundreds of values outnumber the registers, and kept to the end
-        // they would wait on the stack for the copy.
-        let mut stores = self.stores(&shape, arrays);
-        let at_once = method.in_place_name().is_some();
+        // Every store at the end, the regressors' too: stored as computed (as their Rust `into`
+        // form does), random5's regressor took gcc -O3 over 11 GB and a minute, and was killed.
         for &id in order.iter().filter(|id| !state[id.index()]) {
             self.bind(id, &mut lines);
         }
         self.sines_and_cosines(&mut lines);
         for &id in order.iter().filter(|id| state[id.index()]) {
             self.bind(id, &mut lines);
-            if at_once && self.is_bound(id) {
-                lines.extend(stores.iter().filter(|(_, o)| *o == id).map(|(l, _)| l.clone()));
-                stores.retain(|(_, o)| *o != id);
-            }
         }
-        lines.extend(stores.into_iter().map(|(line, _)| line));
+        lines.extend(self.stores(&shape, arrays));
         if let Shape::Scalar(id) = shape {
             lines.push(format!("return {};", self.expr(id, Place::Top)));
         }
@@ -315,8 +308,8 @@ impl<'a> Writer<'a> {
         }
     }
 
-    /// `m[0][1] = m1_2;`: each element of the result into its array, with the node it stores.
-    fn stores(&self, shape: &Shape, arrays: &[String]) -> Vec<(String, NodeId)> {
+    /// `m[0][1] = m1_2;`: each element of the result into its array.
+    fn stores(&self, shape: &Shape, arrays: &[String]) -> Vec<String> {
         let vector = |v: &[NodeId]| -> Vec<(String, NodeId)> {
             v.iter()
                 .enumerate()
@@ -350,11 +343,7 @@ impl<'a> Writer<'a> {
             .iter()
             .zip(parts)
             .flat_map(|(array, part)| part.into_iter().map(move |(index, id)| (array, index, id)))
-            // Every output that is an operation is named by now: its store reads the name.
-            .map(|(array, index, id)| {
-                let value = self.expr(id, Place::Top);
-                (format!("{array}{index} = {value};"), id)
-            })
+            .map(|(array, index, id)| format!("{array}{index} = {};", self.expr(id, Place::Top)))
             .collect()
     }
 
