@@ -5,10 +5,10 @@ use super::names::local;
 use super::parts::{Context, Shared};
 use super::sums::Sums;
 use crate::symbolic::{Graph, Node, NodeId, Var};
-use std::cell::Cell;
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
+use std::cell::Cell;
 
 /// Where a node read by a function is computed.
 #[derive(Clone, Copy, PartialEq, Eq)]

@@ -65,10 +65,10 @@ pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};
 pub use items::{generate, Generated, Items, MethodCode, Module};
 pub(crate) use names::output_names;
-pub(crate) use sums::{Sums, Written};
 pub use names::{
     local, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT,
     PARAMETERS,
 };
 pub use parts::{Body, Context, OpCount, Output, Shared};
 pub use program::{emit, Emission};
+pub(crate) use sums::{Sums, Written};
