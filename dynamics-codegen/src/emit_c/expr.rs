@@ -297,6 +297,20 @@ impl Writer<'_> {
     }
 }
 
+impl Sums for Writer<'_> {
+    fn graph(&self) -> &Graph {
+        &self.eq.graph
+    }
+
+    fn in_place(&self, c: NodeId) -> bool {
+        self.names[c.index()].is_none() && self.uses[c.index()] <= 1
+    }
+
+    fn depths(&self) -> &[Cell<u32>] {
+        &self.depth
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::Precision;
@@ -323,19 +337,5 @@ mod tests {
             assert_eq!(Precision::Double.literal(x), double);
             assert_eq!(Precision::Single.literal(x), single);
         }
-    }
-}
-
-impl Sums for Writer<'_> {
-    fn graph(&self) -> &Graph {
-        &self.eq.graph
-    }
-
-    fn in_place(&self, c: NodeId) -> bool {
-        self.names[c.index()].is_none() && self.uses[c.index()] <= 1
-    }
-
-    fn depths(&self) -> &[Cell<u32>] {
-        &self.depth
     }
 }
