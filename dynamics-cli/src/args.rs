@@ -103,20 +103,34 @@ impl Families {
 
 /// The help of `--with`, naming the opt-in families of the method table.
 fn with_help() -> String {
-    let names = Family::opt_in_names().join(", ");
+    let names = with_names().join(", ");
     format!(
         "Also these opt-in families of methods, as `#[dynamics(..., FAMILY = true)]` asks for them (comma-separated or repeated): {names}"
     )
 }
 
-/// An opt-in family's name.
+/// An opt-in family's name; not the simplified models', which need an envelope and tolerances.
 fn opt_in_family(name: &str) -> Result<Family, String> {
-    Family::from_name(name)
-        .filter(|f| f.is_opt_in())
-        .ok_or_else(|| {
-            let names = Family::opt_in_names().join(", ");
-            format!("`{name}` is not an opt-in family of methods; the opt-in families: {names}")
-        })
+    match Family::from_name(name).filter(|f| f.is_opt_in()) {
+        Some(Family::Simplified) => Err(format!(
+            "`{name}` needs an envelope and tolerances: `--simplified --tolerance T` (stats, \
+             inspect), or `simplify(...)` in the derive"
+        )),
+        Some(family) => Ok(family),
+        None => Err(format!(
+            "`{name}` is not an opt-in family of methods; the opt-in families: {}",
+            with_names().join(", ")
+        )),
+    }
+}
+
+/// The families `--with` takes.
+fn with_names() -> Vec<&'static str> {
+    let simplified = Family::Simplified.name();
+    Family::opt_in_names()
+        .into_iter()
+        .filter(|&n| n != simplified)
+        .collect()
 }
 
 #[derive(Args, Debug)]

@@ -484,3 +484,13 @@ fn stats_per_method() {
         ]
     );
 }
+
+/// The simplified models need an envelope and tolerances: `--with simplify` is a usage error
+/// that says where they go, not an emission without them.
+#[test]
+fn with_simplify_is_refused() {
+    let out = dynamics(&["emit", "robots/puma560.toml", "--with", "simplify"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--simplified --tolerance"), "{err}");
+}
