@@ -22,7 +22,7 @@
 //! in the graph's order: a node read more than once is a `const` local (`t4`), a node read once
 //! is written where it is read, and every constant is an exact literal (`0.4318`, `0.4318f`).
 //! Each sum is written as the Rust emission writes it, from the same plan
-//! ([`crate::emit::Sums::plan`]): its terms added in the order that waits least, a product
+//! (`emit::Sums::plan`): its terms added in the order that waits least, a product
 //! fused with the partial sum it meets into `dynamics_fma(x, y, a)`, one instruction where the
 //! Rust runtime's `mul_add` is (FMA on x86-64, aarch64). The Rust emission's shared
 //! configuration functions are not reproduced (a C function stands alone), so a node that the

@@ -2,7 +2,7 @@
 //! mass matrix element and gravity torque is expanded into its exact folded polynomial, the
 //! terms whose summed interval bound over the envelope stays within the element's tolerance
 //! are dropped ([`crate::inspect::simplify::prune`], the bound of `dynamics inspect
-//! --simplified`), and what is kept is factored back into the graph ([`horner`]), where the
+//! --simplified`), and what is kept is factored back into the graph (`horner`), where the
 //! emission finds it as the outputs of the family `Simplified`.
 //!
 //! Tolerances: `τ_i` and `g_i` within the joint's `t_i`; `M_ij` within

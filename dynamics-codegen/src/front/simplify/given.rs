@@ -32,8 +32,8 @@ pub struct Given<P> {
     pub keys: Vec<(&'static str, Vec<f64>, P)>,
 }
 
-/// The default envelope of a joint of `kind`: ±π rad or ±1 m, [`DEFAULT_SPEED`],
-/// [`DEFAULT_ACCELERATION`].
+/// The default envelope of a joint of `kind`: ±π rad or ±1 m, `DEFAULT_SPEED`,
+/// `DEFAULT_ACCELERATION`.
 #[must_use]
 pub fn default_joint(kind: JointKind) -> JointEnvelope {
     let range = match kind {
