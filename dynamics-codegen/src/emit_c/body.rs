@@ -1,5 +1,6 @@
 //! One function's body: the nodes its outputs need, each once, in the graph's order (children
-//! first), as `const double` locals, then the stores into the output arrays.
+//! first), as `const double` locals, then the stores into the output arrays (a regressor's
+//! output by output, as its Rust `into` form writes it).
 //!
 //! The order is the Rust emission's: the joint variables and parameters read, the nodes that
 //! depend on the parameters alone, each needed joint's sine and cosine, the rest. The sines
@@ -97,16 +98,19 @@ impl<'a> Writer<'a> {
         let (mut lines, reads) = self.inputs();
         let state = self.depends_on_state();
         let order: Vec<NodeId> = self.eq.graph.nodes().map(|(id, _)| id).collect();
-        // Every store at the end, the regressors' too: stored as computed (as their Rust `into`
-        // form does), random5's regressor took gcc -O3 over 11 GB and a minute, and was killed.
         for &id in order.iter().filter(|id| !state[id.index()]) {
             self.bind(id, &mut lines);
         }
         self.sines_and_cosines(&mut lines);
-        for &id in order.iter().filter(|id| state[id.index()]) {
-            self.bind(id, &mut lines);
+        let stores = self.stores(&shape, arrays);
+        if method.in_place_name().is_some() {
+            self.output_by_output(stores, &state, &mut lines);
+        } else {
+            for &id in order.iter().filter(|id| state[id.index()]) {
+                self.bind(id, &mut lines);
+            }
+            lines.extend(stores.iter().map(|(to, id)| self.store(to, *id)));
         }
-        lines.extend(self.stores(&shape, arrays));
         if let Shape::Scalar(id) = shape {
             lines.push(format!("return {};", self.expr(id, Place::Top)));
         }
@@ -114,6 +118,39 @@ impl<'a> Writer<'a> {
             lines.push(self.status(pivots));
         }
         Body { lines, reads }
+    }
+
+    /// A method with an `into` form in Rust (the regressors), written as that form is: its
+    /// constant elements (mostly zeros) once every input is read, then output by output in the
+    /// result's order, the bindings it needs not yet written (operands first) and its store.
+    /// In the graph's order, hundreds of values live at once, past the registers, and wait on
+    /// the stack: compilers do not reorder a block that long to shorten them.
+    fn output_by_output(
+        &mut self,
+        stores: Vec<(String, NodeId)>,
+        state: &[bool],
+        lines: &mut Vec<String>,
+    ) {
+        let (constant, computed): (Vec<_>, Vec<_>) =
+            stores.into_iter().partition(|(_, id)| !state[id.index()]);
+        lines.extend(constant.iter().map(|(to, id)| self.store(to, *id)));
+        let mut done = vec![false; self.eq.graph.len()];
+        for (to, output) in computed {
+            let mut pending = vec![(output, false)];
+            while let Some((id, operands_done)) = pending.pop() {
+                if done[id.index()] || !state[id.index()] {
+                    continue;
+                }
+                if !operands_done {
+                    pending.push((id, true));
+                    pending.extend(self.operands(id).into_iter().rev().map(|c| (c, false)));
+                    continue;
+                }
+                done[id.index()] = true;
+                self.bind(id, lines);
+            }
+            lines.push(self.store(&to, output));
+        }
     }
 
     /// `const double q1 = q[0];` for each joint variable, parameter, wrench component and
@@ -308,8 +345,8 @@ impl<'a> Writer<'a> {
         }
     }
 
-    /// `m[0][1] = m1_2;`: each element of the result into its array.
-    fn stores(&self, shape: &Shape, arrays: &[String]) -> Vec<String> {
+    /// `m[0][1]`, where each element of the result goes in its array, with the node it stores.
+    fn stores(&self, shape: &Shape, arrays: &[String]) -> Vec<(String, NodeId)> {
         let vector = |v: &[NodeId]| -> Vec<(String, NodeId)> {
             v.iter()
                 .enumerate()
@@ -342,9 +379,17 @@ impl<'a> Writer<'a> {
         arrays
             .iter()
             .zip(parts)
-            .flat_map(|(array, part)| part.into_iter().map(move |(index, id)| (array, index, id)))
-            .map(|(array, index, id)| format!("{array}{index} = {};", self.expr(id, Place::Top)))
+            .flat_map(|(array, part)| {
+                part.into_iter()
+                    .map(move |(index, id)| (format!("{array}{index}"), id))
+            })
             .collect()
+    }
+
+    /// `m[0][1] = m1_2;`: node `id` stored at `to`. Written once `id` is bound: before, its
+    /// whole expression would be written out.
+    fn store(&self, to: &str, id: NodeId) -> String {
+        format!("{to} = {};", self.expr(id, Place::Top))
     }
 
     /// `return (d1 > 0.0 && d2 > 0.0) ? 0 : 1;`: 0 where every pivot is positive (a test
