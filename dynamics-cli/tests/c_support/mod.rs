@@ -355,6 +355,16 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> V
                 builds.push(("fused", &["-mfma", "-lm"][..]));
             }
         }
+        // The derivatives' tangents in lanes, which the header computes by default only where
+        // gcc targets AVX-512: portable loops anywhere.
+        if robot.header.contains("#if DYNAMICS_TANGENT_LANES") {
+            let lanes = &[
+                "-DDYNAMICS_TANGENT_LANES=1",
+                "-DDYNAMICS_LIBM_SINCOS",
+                "-lm",
+            ][..];
+            builds.push(("lanes", lanes));
+        }
         for (name, extra) in builds {
             let label = format!("{cc} {}", extra.join(" "));
             let program = dir.join(format!("driver_{cc}_{name}"));

@@ -14,8 +14,8 @@ use crate::trace::Shape;
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
-/// The lanes still to write, in the order they are written.
-pub(super) struct Queue<'a> {
+/// The lanes still to write, in the order they are written (the C back end's too).
+pub(crate) struct Queue<'a> {
     /// `(after, plan, lane)`, sorted by `after`, the plan's order kept within.
     pending: Vec<(NodeId, usize, usize)>,
     plans: Vec<Option<&'a Tangents>>,
@@ -24,12 +24,17 @@ pub(super) struct Queue<'a> {
 
 /// The lanes' names: `dq3` for the tangents by `q`, `dqd3` by `q̇` (plan 0 and 1).
 fn lane_name(plan: usize, lane: usize) -> Ident {
-    let prefix = ["dq", "dqd"].get(plan).copied().unwrap_or("dx");
-    local(&format!("{prefix}{}", lane + 1))
+    local(&lane_text(plan, lane))
 }
 
-/// The number of lanes of a plan of `n` directions.
-fn width(n: usize) -> usize {
+/// [`lane_name`]'s text, which the C back end names its lanes by too.
+pub(crate) fn lane_text(plan: usize, lane: usize) -> String {
+    let prefix = ["dq", "dqd"].get(plan).copied().unwrap_or("dx");
+    format!("{prefix}{}", lane + 1)
+}
+
+/// The number of lanes of a plan of `n` directions: whole AVX-512 registers of `f64`.
+pub(crate) fn width(n: usize) -> usize {
     n.div_ceil(8) * 8
 }
 
@@ -52,7 +57,7 @@ pub(super) fn lane_operations(shape: &Shape) -> usize {
 
 impl<'a> Queue<'a> {
     /// The lanes of `shape`'s plans (none for another shape).
-    pub(super) fn new(shape: &Shape<'a>) -> Queue<'a> {
+    pub(crate) fn new(shape: &Shape<'a>) -> Queue<'a> {
         let plans: Vec<Option<&Tangents>> = match shape {
             Shape::Lanes { lanes, .. } => lanes.iter().map(Option::as_ref).collect(),
             _ => Vec::new(),
@@ -70,6 +75,24 @@ impl<'a> Queue<'a> {
             plans,
             next: 0,
         }
+    }
+
+    /// The next lane due before node `before` (any left for `None`): its plan's index, the
+    /// plan and the lane's index in it.
+    pub(crate) fn next_due(
+        &mut self,
+        before: Option<NodeId>,
+    ) -> Option<(usize, &'a Tangents, usize)> {
+        while let Some(&(after, p, k)) = self.pending.get(self.next) {
+            if before.is_some_and(|b| after >= b) {
+                return None;
+            }
+            self.next += 1;
+            if let Some(plan) = self.plans[p] {
+                return Some((p, plan, k));
+            }
+        }
+        None
     }
 }
 
@@ -94,14 +117,7 @@ impl Emitter<'_> {
         before: Option<NodeId>,
         statements: &mut Vec<TokenStream>,
     ) {
-        while let Some(&(after, p, k)) = queue.pending.get(queue.next) {
-            if before.is_some_and(|b| after >= b) {
-                return;
-            }
-            queue.next += 1;
-            let Some(plan) = queue.plans[p] else {
-                continue;
-            };
+        while let Some((p, plan, k)) = queue.next_due(before) {
             let name = lane_name(p, k);
             let value = self.lane(p, plan, &plan.lanes[k].terms);
             statements.push(quote!(let #name = #value;));

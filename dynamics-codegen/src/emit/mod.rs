@@ -50,7 +50,7 @@ mod impls;
 mod in_place;
 mod inputs;
 mod items;
-mod lanes;
+pub(crate) mod lanes;
 mod names;
 mod parts;
 mod program;

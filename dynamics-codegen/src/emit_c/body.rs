@@ -10,6 +10,7 @@
 use super::expr::{Place, Precision};
 // The writer is declared with the expressions, which this file's statements are made of.
 pub(super) use super::expr::Writer;
+use crate::emit::lanes::Queue;
 use crate::emit::output_names;
 use crate::method::Method;
 use crate::symbolic::{Node, NodeId, Var};
@@ -80,10 +81,13 @@ impl<'a> Writer<'a> {
     }
 
     /// The body of `method`'s function: its locals, the stores into its output arrays (named
-    /// `arrays`, as [`super::function::Function`] declares them) and its `return`.
-    pub(super) fn body(mut self, method: Method, arrays: &[String]) -> Body {
+    /// `arrays`, as [`super::function::Function`] declares them) and its `return`; with
+    /// `lanes`, the tangents of a method that plans them computed in lanes (`lanes.rs`).
+    pub(super) fn body(mut self, method: Method, arrays: &[String], lanes: bool) -> Body {
         let shape = method.shape(self.eq);
-        self.mark(&shape.outputs());
+        let shape = if lanes { shape } else { shape.scalar() };
+        self.mark(&shape.lane_outputs());
+        self.bind_factors(&shape);
         for (id, element) in output_names(&shape, method, |id| !self.is_operation(id)) {
             self.names[id.index()] = Some(element.ident().to_string());
             self.comments[id.index()] = Some(element.describe());
@@ -106,10 +110,19 @@ impl<'a> Writer<'a> {
         if method.in_place_name().is_some() {
             self.output_by_output(stores, &state, &mut lines);
         } else {
+            let mut queue = Queue::new(&shape);
             for &id in order.iter().filter(|id| state[id.index()]) {
+                self.lanes_due(&mut queue, Some(id), &mut lines);
                 self.bind(id, &mut lines);
             }
+            self.lanes_due(&mut queue, None, &mut lines);
             lines.extend(stores.iter().map(|(to, id)| self.store(to, *id)));
+            if let Shape::Lanes { lanes: plans, .. } = shape {
+                for (k, plan) in plans.iter().enumerate() {
+                    let Some(plan) = plan else { continue };
+                    lines.extend(self.lane_rows(&format!("{}[{k}]", arrays[0]), k, plan));
+                }
+            }
         }
         if let Shape::Scalar(id) = shape {
             lines.push(format!("return {};", self.expr(id, Place::Top)));
@@ -363,8 +376,18 @@ impl<'a> Writer<'a> {
             Shape::Scalar(_) => vec![],
             Shape::Vector(v) | Shape::SolvedVector { vector: v, .. } => vec![vector(v)],
             Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => vec![matrix(m, "")],
-            // The C computes the derivatives column by column, from their nodes.
-            Shape::Stack(s) | Shape::Lanes { stack: s, .. } => vec![stack(s)],
+            Shape::Stack(s) => vec![stack(s)],
+            // The matrices without a plan: the others are read off their lanes.
+            Shape::Lanes { stack: s, lanes } => {
+                let unplanned = s
+                    .iter()
+                    .zip(lanes)
+                    .enumerate()
+                    .filter(|(_, (_, p))| p.is_none());
+                vec![unplanned
+                    .flat_map(|(k, (m, _))| matrix(m, &format!("[{k}]")))
+                    .collect()]
+            }
             Shape::SolvedStack {
                 vector: v,
                 stack: s,

@@ -167,14 +167,45 @@ impl Function {
     /// Its definition, with the method table's summary as its comment; `sign` names the header's sign
     /// function of the function's precision.
     pub(super) fn definition(&self, eq: &Equations, sign: &str) -> String {
-        let arrays: Vec<String> = self.outputs.iter().map(|a| a.name.clone()).collect();
-        let body = Writer::new(eq, self.precision, sign.to_owned()).body(self.method, &arrays);
         let mut text = format!(
             "/* {}: {} */\n{} {{\n",
             self.method.name(),
             comment_safe(self.method.summary()),
             self.signature()
         );
+        if self.plans_lanes(eq) {
+            // gcc's vectors are 256 bits wide by default even where the target has AVX-512.
+            text.insert_str(
+                text.find("static inline").unwrap_or(0),
+                "DYNAMICS_LANES_WIDE\n",
+            );
+            text.push_str("#if DYNAMICS_TANGENT_LANES\n");
+            self.write_body(eq, sign, true, &mut text);
+            text.push_str("#else\n");
+            self.write_body(eq, sign, false, &mut text);
+            text.push_str("#endif\n");
+        } else {
+            self.write_body(eq, sign, false, &mut text);
+        }
+        text.push_str("}\n");
+        text
+    }
+
+    /// Whether its tangents may be computed in lanes (`DYNAMICS_TANGENT_LANES`): the inverse
+    /// dynamics' derivatives where the trace planned them.
+    pub(super) fn plans_lanes(&self, eq: &Equations) -> bool {
+        match self.method.shape(eq) {
+            Shape::Lanes { lanes, .. } => lanes.iter().any(Option::is_some),
+            _ => false,
+        }
+    }
+
+    /// The body's lines, indented, onto `text`: the inputs it does not read cast to `void`,
+    /// then its statements (with `lanes`, its tangents in lanes).
+    fn write_body(&self, eq: &Equations, sign: &str, lanes: bool, text: &mut String) {
+        let arrays: Vec<String> = self.outputs.iter().map(|a| a.name.clone()).collect();
+        let body =
+            Writer::new(eq, self.precision, sign.to_owned()).body(self.method, &arrays, lanes);
         for unread in self.unread(body.reads) {
             text.push_str(&format!("    (void){unread};\n"));
         }
@@ -183,8 +214,6 @@ impl Function {
             text.push_str(line);
             text.push('\n');
         }
-        text.push_str("}\n");
-        text
     }
 
     /// The inputs the body does not read (`qd` of a robot without friction's
@@ -316,6 +345,10 @@ pub(super) mod tests {
             let mut stored = false;
             for line in body.skip(1) {
                 let line = line.trim_start();
+                // The derivatives' second body (their tangents column by column) reads anew.
+                if line.starts_with("#else") {
+                    stored = false;
+                }
                 let reads = |array: &str| {
                     line.match_indices(array).any(|(i, _)| {
                         i == 0 || !line[..i].ends_with(|c: char| c.is_alphanumeric() || c == '_')

@@ -43,6 +43,7 @@ mod batch;
 mod body;
 mod expr;
 mod function;
+mod lanes;
 mod trig;
 
 pub use expr::Precision;
@@ -99,6 +100,10 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     text.push('\n');
     text.push_str(FMA);
     text.push('\n');
+    if functions.iter().any(|f| f.plans_lanes(eq)) {
+        text.push_str(&tangent_lanes());
+        text.push('\n');
+    }
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
     if reads(eq, &functions, |node| matches!(node, Node::Sign(_))) {
         for p in Precision::ALL {
@@ -139,6 +144,59 @@ static inline float dynamics_fma_f32(float x, float y, float a) {
 }
 #endif /* DYNAMICS_FMA_H */
 ";
+
+/// Where the derivatives compute their tangents in lanes, eight directions a vector: as the
+/// Rust code does, where the target has AVX-512 (32 registers of eight `double`s); with AVX2
+/// alone the 6-joint arms' took more instructions in Rust. `lanes.rs` writes them, with the
+/// rows of the identity (as wide as the widest lanes) its unit vectors are read from.
+fn tangent_lanes() -> String {
+    let width = crate::emit::lanes::width(crate::check::MAX_JOINTS);
+    let table = |p: Precision| {
+        let (one, zero) = (p.literal(1.0), p.literal(0.0));
+        let rows: Vec<String> = (0..width)
+            .map(|j| {
+                let row: Vec<&str> = (0..=j)
+                    .map(|k| if k == j { &*one } else { &*zero })
+                    .collect();
+                format!("{{{}}}", row.join(", "))
+            })
+            .collect();
+        format!(
+            "static const {} dynamics_unit{}[{width}][{width}] = {{\n    {}}};\n",
+            p.c_type(),
+            p.suffix(),
+            rows.join(",\n    ")
+        )
+    };
+    format!(
+        "#ifndef DYNAMICS_TANGENT_LANES
+/* The derivatives' tangents in lanes (arrays of eight directions, one loop each, which the
+ * compiler vectorizes) where gcc targets AVX-512, as the Rust code's; column by column
+ * elsewhere (clang's loops ran slower than its columns). Define it 0 or 1 before the header
+ * to choose. */
+#if defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
+#define DYNAMICS_TANGENT_LANES 1
+#else
+#define DYNAMICS_TANGENT_LANES 0
+#endif
+#endif
+#ifndef DYNAMICS_LANES_WIDE
+/* Eight doubles a vector in the functions with lanes (gcc's default is four on AVX-512). */
+#if DYNAMICS_TANGENT_LANES && defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
+#define DYNAMICS_LANES_WIDE __attribute__((target(\"prefer-vector-width=512\")))
+#else
+#define DYNAMICS_LANES_WIDE
+#endif
+#endif
+#if DYNAMICS_TANGENT_LANES && !defined(DYNAMICS_UNIT_H)
+#define DYNAMICS_UNIT_H
+/* Row j: the unit vector of direction j. */
+{}{}#endif
+",
+        table(Precision::Double),
+        table(Precision::Single)
+    )
+}
 
 /// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).
 fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) -> bool {
