@@ -118,6 +118,18 @@ fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
         .map(|name| Family::from_name(name).expect("a family"))
         .fold(FamilySet::default(), FamilySet::with);
     eq.add_families(&loaded.robot, families);
+    // The simplified models a description file asks for (`[simplify]`), as the derive has them.
+    let request = front::FileRequest {
+        given: loaded.simplify,
+        limits: None,
+        path: file.to_owned(),
+    };
+    if let Some(request) = request
+        .resolve(&loaded.robot, &[])
+        .expect("a valid request")
+    {
+        dynamics_codegen::simplify::add(&mut eq, &request).expect("simplifies");
+    }
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);
     Robot {

@@ -169,12 +169,7 @@ impl Function {
     pub(super) fn definition(&self, eq: &Equations, sign: &str) -> String {
         let arrays: Vec<String> = self.outputs.iter().map(|a| a.name.clone()).collect();
         let body = Writer::new(eq, self.precision, sign.to_owned()).body(self.method, &arrays);
-        let mut text = format!(
-            "/* {}: {} */\n{} {{\n",
-            self.method.name(),
-            comment_safe(self.method.summary()),
-            self.signature()
-        );
+        let mut text = format!("{}{} {{\n", comment(eq, self.method), self.signature());
         for unread in self.unread(body.reads) {
             text.push_str(&format!("    (void){unread};\n"));
         }
@@ -210,6 +205,31 @@ impl Function {
     }
 }
 
+/// The comment above a function of `method`: its name and summary; for a simplified method,
+/// each output's proven bound and the envelope too, the rustdoc of the Rust method.
+fn comment(eq: &Equations, method: Method) -> String {
+    let Some(doc) = crate::emit::simplified_doc(eq, method) else {
+        return format!(
+            "/* {}: {} */\n",
+            method.name(),
+            comment_safe(method.summary())
+        );
+    };
+    let mut lines = doc.lines().filter(|l| !l.starts_with("```"));
+    let summary = comment_safe(lines.next().unwrap_or_default().trim());
+    let mut text = format!("/* {}: {summary}", method.name());
+    for line in lines {
+        let line = comment_safe(line);
+        if line.trim().is_empty() {
+            text.push_str("\n *");
+        } else {
+            text.push_str(&format!("\n * {}", line.trim()));
+        }
+    }
+    text.push_str("\n */\n");
+    text
+}
+
 /// `text` for a C comment: in ASCII, which every C toolchain reads (the method table's
 /// `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; any other character `?`), and without the `*/`
 /// that would end the comment early.
@@ -226,6 +246,8 @@ pub(super) fn comment_safe(text: &str) -> String {
             'π' => ascii.push_str("pi"),
             'Σ' => ascii.push_str("sum"),
             '−' => ascii.push('-'),
+            '≤' => ascii.push_str("<="),
+            '·' => ascii.push('*'),
             'ᵀ' => ascii.push_str("^T"),
             'ᴴ' => ascii.push('H'),
             '⁻' => ascii.push_str("^-"),
