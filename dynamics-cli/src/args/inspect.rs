@@ -40,6 +40,18 @@ pub struct Simplified {
     /// per joint
     #[arg(long, value_name = "T1,T2,..", requires = "simplified")]
     pub tolerance: Option<Numbers>,
+    /// The tolerance as this percentage of each joint's rated torque, in place of --tolerance
+    #[arg(
+        long,
+        value_name = "P",
+        requires = "simplified",
+        conflicts_with = "tolerance"
+    )]
+    pub tolerance_percent: Option<Numbers>,
+    /// The joints' rated torques (N·m or N) for --tolerance-percent [default: the file's
+    /// `rated`, else a URDF's efforts]
+    #[arg(long, value_name = "R1,R2,..", requires = "simplified")]
+    pub rated: Option<Numbers>,
     /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
     /// the file's, else -π rad or -1 m]
     #[arg(

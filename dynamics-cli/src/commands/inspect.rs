@@ -54,6 +54,8 @@ pub(super) fn request(
     let n = robot.joints.len();
     let options = [
         ("tolerance", args.tolerance.as_ref()),
+        ("rated", args.rated.as_ref()),
+        ("tolerance_percent", args.tolerance_percent.as_ref()),
         ("q_min", args.q_min.as_ref()),
         ("q_max", args.q_max.as_ref()),
         ("qd_max", args.qd_max.as_ref()),
@@ -72,9 +74,11 @@ pub(super) fn request(
         }
         overrides.push((key, v.clone()));
     }
-    if args.simplified && args.tolerance.is_none() && file.given.is_none() {
+    let tolerance = args.tolerance.is_some() || args.tolerance_percent.is_some();
+    if args.simplified && !tolerance && file.given.is_none() {
         let message = format!(
-            "--simplified needs --tolerance T: `{}` has no `[simplify]` table to take it from",
+            "--simplified needs --tolerance T (or --tolerance-percent P): `{}` has no \
+             `[simplify]` table to take it from",
             file.path
         );
         return Err(usage(command, &message));
@@ -156,7 +160,10 @@ mod tests {
             "0",
         ])
         .unwrap_err();
-        assert!(empty.contains("is empty"), "{empty}");
+        assert!(
+            empty.contains("--q-min (1) is above --q-max (0)"),
+            "{empty}"
+        );
         let cart = concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/../robots/niku_example_6_1.toml"

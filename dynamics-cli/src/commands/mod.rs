@@ -139,7 +139,7 @@ fn simplification(
             // The command line's options as the user wrote them, not the file's keys.
             Some(p) => {
                 let mut message = p.message.clone();
-                for key in ["tolerance", "q_min", "q_max", "qd_max", "qdd_max"] {
+                for key in front::SIMPLIFY_KEYS {
                     let option = format!("--{}", key.replace('_', "-"));
                     message = message.replace(&format!("`{key}`"), &option);
                 }

@@ -38,7 +38,8 @@ pub struct RequestError {
 impl FileRequest {
     /// The request for `robot`: the file's `[simplify]` with each key of `overrides` (a
     /// key of `simplify(...)` and its values, one for every joint or one per joint) in place
-    /// of the file's (`tolerance` in place of `rated` and `tolerance_percent` too); the
+    /// of the file's (`tolerance` in place of `rated` and `tolerance_percent` too, and
+    /// either of these in place of `tolerance`); the
     /// defaults of the keys neither gives from the URDF's `<limit>`s, else from the joints'
     /// kinds. `None` where neither asks.
     ///
@@ -65,10 +66,10 @@ impl FileRequest {
             },
         };
         for (key, values) in overrides {
+            // A tolerance given one way replaces the file's given the other.
             let replaced: &[&str] = match *key {
-                "tolerance" | "rated" | "tolerance_percent" => {
-                    &["tolerance", "rated", "tolerance_percent"]
-                }
+                "tolerance" => &["rated", "tolerance_percent"],
+                "rated" | "tolerance_percent" => &["tolerance"],
                 _ => &[],
             };
             merged
