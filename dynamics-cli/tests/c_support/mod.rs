@@ -5,6 +5,7 @@
 #![allow(dead_code)] // each test file uses its part
 
 mod batch;
+mod simplified;
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
@@ -118,18 +119,7 @@ fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
         .map(|name| Family::from_name(name).expect("a family"))
         .fold(FamilySet::default(), FamilySet::with);
     eq.add_families(&loaded.robot, families);
-    // The simplified models a description file asks for (`[simplify]`), as the derive has them.
-    let request = front::FileRequest {
-        given: loaded.simplify,
-        limits: None,
-        path: file.to_owned(),
-    };
-    if let Some(request) = request
-        .resolve(&loaded.robot, &[])
-        .expect("a valid request")
-    {
-        dynamics_codegen::simplify::add(&mut eq, &request).expect("simplifies");
-    }
+    simplified::add(&mut eq, &loaded.robot, loaded.simplify, file);
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);
     Robot {

@@ -52,7 +52,7 @@ pub use attrs::attribute_words;
 pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load};
-pub use simplify::given::{default_joint as default_envelope, KEYS as SIMPLIFY_KEYS};
+pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
 pub use simplify::{FileRequest, RequestError};
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
 pub use urdf::{joint_limits, load_urdf, Chain, Limit};
