@@ -113,8 +113,8 @@ fn with_help() -> String {
 fn opt_in_family(name: &str) -> Result<Family, String> {
     match Family::from_name(name).filter(|f| f.is_opt_in()) {
         Some(Family::Simplified) => Err(format!(
-            "`{name}` needs an envelope and tolerances: `--simplified --tolerance T` (stats, \
-             inspect), or `simplify(...)` in the derive"
+            "`{name}` needs an envelope and tolerances: `[simplify]` in the description file \
+             (emit, stats), `--simplified --tolerance T` (stats, inspect), `simplify(...)`"
         )),
         Some(family) => Ok(family),
         None => Err(format!(

@@ -12,7 +12,9 @@
 //!   dynamics against Pinocchio's values (`tests/data/reference/data/puma560.json`,
 //!   `tests/data/panda/data.json`, and for the UR10, Panda, Z1 and SO-101 URDF files
 //!   `tests/data/urdf/`, whose friction τ adds), to 1e-10 of each result's largest element;
-//! * friction against its formula in the description file, at rest and in motion.
+//! * friction against its formula in the description file, at rest and in motion;
+//! * the simplified models a description file asks for (`[simplify]`) against the exact
+//!   functions, within the proven bounds the header states above them.
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
 
@@ -236,6 +238,85 @@ fn friction_in_the_header_is_the_description_files() {
                 e <= 1e-12,
                 "{cc}: inverse dynamics at sample {s}: off by {e:e}"
             );
+        }
+    }
+}
+
+/// The bounds a simplified function's comment states (`|T1 - T1,simplified| <= 4.2e-1 ...`),
+/// in its order.
+fn stated_bounds(header: &str, function: &str) -> Vec<f64> {
+    let at = header
+        .find(&format!(" {function}(const"))
+        .expect("the function");
+    let comment = &header[header[..at].rfind("/*").expect("its comment")..at];
+    comment
+        .lines()
+        .filter_map(|line| line.split_once(",simplified| <= "))
+        .map(|(_, rest)| {
+            let number = rest.split_whitespace().next().expect("a bound");
+            number.parse().expect("a number")
+        })
+        .collect()
+}
+
+/// `tests/data/simplify/two_link.toml` asks for its simplified models: the header has them,
+/// in `double` and `float`, and at states inside the file's envelope they stay within the
+/// bounds their comments state of the exact functions, and differ from them (terms dropped).
+#[test]
+fn simplified_functions_within_their_stated_bounds() {
+    let robot = robot("tests/data/simplify/two_link.toml");
+    // Inside the file's envelope: q1 in [-1, 1], q2 in [-2, 2], |qd| <= 3, |qdd| <= 5.
+    let states: Vec<State> = (0..24)
+        .map(|k| {
+            let x = f64::from(k) / 23.0;
+            let wave = |a: f64, b: f64| (a * x * 7.0 + b).sin();
+            State {
+                q: vec![wave(1.0, 0.2), 2.0 * wave(1.3, 1.1)],
+                qd: vec![3.0 * wave(0.7, 2.0), 3.0 * wave(1.9, 0.5)],
+                qdd: vec![5.0 * wave(2.3, 1.4), 5.0 * wave(0.4, 2.9)],
+                tau: vec![1.0, -1.0],
+            }
+        })
+        .collect();
+    let runs = compile_and_run(&robot, &states);
+    if runs.is_empty() {
+        eprintln!("no C compiler (gcc, clang, g++) found: the C header is not checked");
+        return;
+    }
+    for run in &runs {
+        let (out, cc) = (&run.printed, &run.label);
+        check_against_graph(&robot, &states, run);
+        for (exact, simplified) in [
+            ("inverse_dynamics", "inverse_dynamics_simplified"),
+            ("gravity_torques", "gravity_torques_simplified"),
+            ("mass_matrix", "mass_matrix_simplified"),
+        ] {
+            let name = |m: &str| format!("{}_{m}", robot.name);
+            let bounds = stated_bounds(&robot.header, &name(simplified));
+            let mut largest = 0.0_f64;
+            for s in 0..states.len() {
+                let (_, want) = printed(out, &name(exact), 0, s);
+                let (_, got) = printed(out, &name(simplified), 0, s);
+                // M's bounds are its upper triangle's, row by row.
+                let n = 2;
+                let elements: Vec<usize> = if want.len() == n {
+                    (0..n).collect()
+                } else {
+                    (0..n)
+                        .flat_map(|i| (i..n).map(move |j| i * n + j))
+                        .collect()
+                };
+                for (b, &e) in elements.iter().enumerate() {
+                    let off = (want[e] - got[e]).abs();
+                    largest = largest.max(off);
+                    assert!(
+                        off <= bounds[b] * (1.0 + 1e-9) + 1e-12,
+                        "{cc}: {simplified} element {e} at state {s}: off by {off:e}, bound {}",
+                        bounds[b]
+                    );
+                }
+            }
+            assert!(largest > 0.0, "{cc}: {simplified} is the exact {exact}");
         }
     }
 }

@@ -392,7 +392,8 @@ macro_rules! for_each_method {
             }
             /// Pruned equations of motion with a proven error bound (opt-in, `simplify(...)`): the
             /// closed forms expanded, the terms dropped whose summed interval bound over the
-            /// envelope of positions, speeds and accelerations stays within the tolerance. Each
+            /// envelope of positions, speeds and accelerations stays within the tolerance (or
+            /// `tolerance_percent` of `rated`, by default a URDF's `<limit effort>`s). Each
             /// method's rustdoc on the robot states every output's bound and the envelope.
             trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}

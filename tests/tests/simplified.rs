@@ -33,9 +33,13 @@ struct Puma;
 )]
 struct Random;
 
-/// The UR5 of its URDF: the range and speed of the envelope are its `<limit>`s.
+/// The UR5 of its URDF: the range and speed of the envelope are its `<limit>`s, and the
+/// rated torques of `tolerance_percent` its `effort`s.
 #[derive(Dynamics)]
-#[dynamics(urdf = "../robots/urdf/ur5.urdf", simplify(tolerance = 1, qdd_max = 4))]
+#[dynamics(
+    urdf = "../robots/urdf/ur5.urdf",
+    simplify(tolerance_percent = 1, qdd_max = 4)
+)]
 struct Ur5;
 
 /// A two-link arm whose description file asks for its simplified models (`[simplify]`).
@@ -90,7 +94,8 @@ fn two_link_request() -> Simplification {
     }
 }
 
-/// The UR5's request: its URDF's limits, read here by the front end's reader of them.
+/// The UR5's request: its URDF's limits, read here by the front end's reader of them, and 1 %
+/// of the efforts the file writes (150 N·m for the shoulder and elbow, 28 N·m for the wrist).
 fn ur5_request() -> Simplification {
     let path = format!("{}/../robots/urdf/ur5.urdf", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(path).expect("the URDF");
@@ -102,7 +107,7 @@ fn ur5_request() -> Simplification {
         acceleration: 4.0,
     });
     Simplification {
-        tolerance: vec![1.0; 6],
+        tolerance: vec![1.5, 1.5, 1.5, 0.28, 0.28, 0.28],
         envelope: Envelope {
             joints: joints.collect(),
         },

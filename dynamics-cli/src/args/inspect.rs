@@ -29,15 +29,31 @@ pub struct Inspect {
 pub struct Simplified {
     /// The equations with their smallest terms dropped, within --tolerance over the envelope
     /// (--q-min, --q-max, --qd-max, --qdd-max): `inspect` prints the joint torques and what was
-    /// dropped, `stats` the operations of the generated `*_simplified` methods and their bounds
-    #[arg(long, requires = "tolerance")]
+    /// dropped, `stats` the operations of the generated `*_simplified` methods and their bounds.
+    /// The description file's `[simplify]` gives what these options do not (the options win,
+    /// --tolerance over `rated` and `tolerance_percent` too; `stats` reads the table without
+    /// --simplified, as the derive does); a URDF's <limit>s give the default range, speed and
+    /// `rated` (efforts)
+    #[arg(long)]
     pub simplified: bool,
     /// The largest error allowed in each joint torque, N·m or N: one for every joint, or one
     /// per joint
     #[arg(long, value_name = "T1,T2,..", requires = "simplified")]
     pub tolerance: Option<Numbers>,
+    /// The tolerance as this percentage of each joint's rated torque, in place of --tolerance
+    #[arg(
+        long,
+        value_name = "P",
+        requires = "simplified",
+        conflicts_with = "tolerance"
+    )]
+    pub tolerance_percent: Option<Numbers>,
+    /// The joints' rated torques (N·m or N) for --tolerance-percent [default: the file's
+    /// `rated`, else a URDF's efforts]
+    #[arg(long, value_name = "R1,R2,..", requires = "simplified")]
+    pub rated: Option<Numbers>,
     /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
-    /// -π rad or -1 m]
+    /// the file's, else -π rad or -1 m]
     #[arg(
         long,
         value_name = "Q1,Q2,..",
@@ -45,7 +61,7 @@ pub struct Simplified {
         requires = "simplified"
     )]
     pub q_min: Option<Numbers>,
-    /// The joints' upper limits [default: π rad or 1 m]
+    /// The joints' upper limits [default: the file's, else π rad or 1 m]
     #[arg(
         long,
         value_name = "Q1,Q2,..",
@@ -53,10 +69,10 @@ pub struct Simplified {
         requires = "simplified"
     )]
     pub q_max: Option<Numbers>,
-    /// The joints' speed limits (rad/s or m/s) [default: 2]
+    /// The joints' speed limits (rad/s or m/s) [default: the file's, else 2]
     #[arg(long, value_name = "V1,V2,..", requires = "simplified")]
     pub qd_max: Option<Numbers>,
-    /// The joints' acceleration limits (rad/s² or m/s²) [default: 5]
+    /// The joints' acceleration limits (rad/s² or m/s²) [default: the file's, else 5]
     #[arg(long, value_name = "A1,A2,..", requires = "simplified")]
     pub qdd_max: Option<Numbers>,
 }

@@ -1,9 +1,16 @@
 //! `dynamics emit ROBOT`: a standalone Rust module with the code the derive generates, or
-//! (`--lang c`) a header-only C file of the same equations.
+//! (`--lang c`) a header-only C file of the same equations; with the simplified models where
+//! the description file asks for them (`[simplify]`), each function's proven bounds in its
+//! comment.
 
-use super::{field_idents, load, self_fields, type_name, Failure};
+use super::{
+    add_simplified, field_idents, load_with_request, self_fields, simplification, type_name,
+    Failure,
+};
 use crate::args::{Emit, Lang};
-use dynamics_codegen::{derive, emit_c, generate};
+use dynamics_codegen::emit::simplified_doc;
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::{derive, emit_c, generate, Equations};
 use quote::quote;
 
 /// A robot's C header and what a binding needs to call it: its functions' signatures.
@@ -23,10 +30,8 @@ pub struct CHeader {
 
 /// The C header of the robot of `args`, with its functions.
 pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
-    let robot = load(&args.robot)?;
+    let (robot, eq) = equations(args)?;
     let path = &args.robot.path;
-    let mut eq = derive(&robot);
-    eq.add_families(&robot, args.families.set());
     // The command that writes it again: the robot file and the families asked for.
     let with: Vec<&str> = args.families.set().opt_in().map(|f| f.name()).collect();
     let with = if with.is_empty() {
@@ -44,21 +49,30 @@ pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
     })
 }
 
+/// The robot of `args` and its equations: the families asked for, and the simplified models
+/// its file asks for (`[simplify]`), as the derive gives them for `file = ".."`.
+fn equations(args: &Emit) -> Result<(Robot, Equations), Failure> {
+    let (robot, request) = load_with_request(&args.robot)?;
+    let mut eq = derive(&robot);
+    eq.add_families(&robot, args.families.set());
+    let simplify = simplification(&robot, &request, &[], "emit")?;
+    add_simplified(&mut eq, simplify.as_ref(), &args.robot.path)?;
+    Ok((robot, eq))
+}
+
 pub fn run(args: &Emit) -> Result<String, Failure> {
     if args.lang == Lang::C {
         return Ok(c_header(args)?.text);
     }
-    let robot = load(&args.robot)?;
+    let (robot, eq) = equations(args)?;
     let path = &args.robot.path;
-    let mut eq = derive(&robot);
-    eq.add_families(&robot, args.families.set());
     let krate = quote!(::dynamics_runtime);
     let idents = field_idents(&eq);
     let n = eq.dof;
     let generated = generate(&eq, self_fields(&idents));
     let ty = type_name(&robot.name);
     let items = generated.items(&krate, &ty, &syn::Generics::default(), &|method| {
-        Some(format!(" {}", method.summary()))
+        simplified_doc(&eq, method).or_else(|| Some(format!(" {}", method.summary())))
     });
     let struct_doc = format!(" {}: {n} joints, read from `{path}`.", robot.name);
     let def = if idents.is_empty() {

@@ -4,17 +4,17 @@
 //! or τ, M and g pruned within a proven bound, in the book's notation.
 
 use super::eval::usage;
-use super::{base_parameters, load, Failure};
+use super::{base_parameters, load_with_request, simplification, Failure};
 use crate::args::{Inspect, Numbers, Simplified};
 use dynamics_codegen::derive;
+use dynamics_codegen::front::FileRequest;
 use dynamics_codegen::inspect::{
-    inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Envelope, Format,
-    JointEnvelope, Limits,
+    inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Format, Limits,
 };
-use dynamics_codegen::model::{JointKind, Robot};
+use dynamics_codegen::model::{Robot, Simplification};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
-    let robot = load(&args.robot)?;
+    let (robot, file) = load_with_request(&args.robot)?;
     let mut eq = derive(&robot);
     let format = if args.latex {
         Format::Latex
@@ -27,8 +27,10 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
         return Ok(render_base_parameters(&robot.name, &base, format));
     }
     if args.simplified.simplified {
-        let (envelope, tolerance) = envelope("inspect", &args.simplified, &robot)?;
-        let simplified = inspect_simplified(&eq, &robot, &envelope, &tolerance)
+        let Some(s) = request("inspect", &args.simplified, &robot, &file)? else {
+            return Err(usage("inspect", "--simplified needs --tolerance T"));
+        };
+        let simplified = inspect_simplified(&eq, &robot, &s.envelope, &s.tolerance)
             .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
         return Ok(simplified.render(format));
     }
@@ -40,68 +42,48 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
     Ok(inspection.render(format))
 }
 
-/// The envelope and the tolerances asked for: each option one value for every joint or one per
-/// joint, else the defaults (±π rad or ±1 m, 2 per s, 5 per s²).
-pub(super) fn envelope(
+/// The simplified models asked for: the description file's `[simplify]` (a URDF's `<limit>`s
+/// the defaults), each option of the command line in place of the table's key; `None` where
+/// neither asks. Each option is one value for every joint or one per joint.
+pub(super) fn request(
     command: &str,
     args: &Simplified,
     robot: &Robot,
-) -> Result<(Envelope, Vec<f64>), Failure> {
+    file: &FileRequest,
+) -> Result<Option<Simplification>, Failure> {
     let n = robot.joints.len();
-    let per_joint = |option: &str, given: Option<&Numbers>| -> Result<Option<Vec<f64>>, Failure> {
-        match given {
-            None => Ok(None),
-            Some(Numbers(v)) if v.len() == 1 => Ok(Some(vec![v[0]; n])),
-            Some(Numbers(v)) if v.len() == n => Ok(Some(v.clone())),
-            Some(Numbers(v)) => Err(usage(
-                command,
-                &format!(
-                    "{option}: {} values; give one for every joint or one for each of the {n} joints",
-                    v.len()
-                ),
-            )),
-        }
-    };
-    let tolerance = per_joint("--tolerance", args.tolerance.as_ref())?.unwrap_or_default();
-    if let Some(t) = tolerance.iter().find(|t| **t < 0.0) {
-        return Err(usage(command, &format!("--tolerance: {t} is negative")));
-    }
-    let lower = per_joint("--q-min", args.q_min.as_ref())?;
-    let upper = per_joint("--q-max", args.q_max.as_ref())?;
-    let speed = per_joint("--qd-max", args.qd_max.as_ref())?;
-    let acceleration = per_joint("--qdd-max", args.qdd_max.as_ref())?;
-    let mut joints = Vec::with_capacity(n);
-    for (j, joint) in robot.joints.iter().enumerate() {
-        let range = match joint.kind {
-            JointKind::Revolute => std::f64::consts::PI,
-            JointKind::Prismatic => 1.0,
-        };
-        let pick = |v: &Option<Vec<f64>>, default: f64| v.as_ref().map_or(default, |v| v[j]);
-        let e = JointEnvelope {
-            lower: pick(&lower, -range),
-            upper: pick(&upper, range),
-            speed: pick(&speed, 2.0),
-            acceleration: pick(&acceleration, 5.0),
-        };
-        if e.lower > e.upper {
+    let options = [
+        ("tolerance", args.tolerance.as_ref()),
+        ("rated", args.rated.as_ref()),
+        ("tolerance_percent", args.tolerance_percent.as_ref()),
+        ("q_min", args.q_min.as_ref()),
+        ("q_max", args.q_max.as_ref()),
+        ("qd_max", args.qd_max.as_ref()),
+        ("qdd_max", args.qdd_max.as_ref()),
+    ];
+    let mut overrides = Vec::new();
+    for (key, given) in options {
+        let Some(Numbers(v)) = given else { continue };
+        if v.len() != 1 && v.len() != n {
             let message = format!(
-                "joint {}: the range [{}, {}] is empty (--q-min, --q-max)",
-                j + 1,
-                e.lower,
-                e.upper
+                "--{}: {} values; give one for every joint or one for each of the {n} joints",
+                key.replace('_', "-"),
+                v.len()
             );
             return Err(usage(command, &message));
         }
-        if e.speed < 0.0 || e.acceleration < 0.0 {
-            let message = format!(
-                "joint {}: --qd-max and --qdd-max must not be negative",
-                j + 1
-            );
-            return Err(usage(command, &message));
-        }
-        joints.push(e);
+        overrides.push((key, v.clone()));
     }
-    Ok((Envelope { joints }, tolerance))
+    let tolerance = args.tolerance.is_some() || args.tolerance_percent.is_some();
+    if args.simplified && !tolerance && file.given.is_none() {
+        let message = format!(
+            "--simplified needs --tolerance T (or --tolerance-percent P): `{}` has no \
+             `[simplify]` table to take it from",
+            file.path
+        );
+        return Err(usage(command, &message));
+    }
+    simplification(robot, file, &overrides, command)
 }
 
 #[cfg(test)]
@@ -178,7 +160,10 @@ mod tests {
             "0",
         ])
         .unwrap_err();
-        assert!(empty.contains("is empty"), "{empty}");
+        assert!(
+            empty.contains("--q-min (1) is above --q-max (0)"),
+            "{empty}"
+        );
         let cart = concat!(
             env!("CARGO_MANIFEST_DIR"),
             "/../robots/niku_example_6_1.toml"

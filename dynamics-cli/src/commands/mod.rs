@@ -16,7 +16,7 @@ use clap::error::ErrorKind;
 use clap::CommandFactory;
 use dynamics_codegen::check;
 use dynamics_codegen::front;
-use dynamics_codegen::model::{Placement, Robot, Value};
+use dynamics_codegen::model::{Placement, Robot, Simplification, Value};
 use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::Equations;
 use proc_macro2::{Span, TokenStream};
@@ -66,6 +66,12 @@ fn base_parameters(
 /// of each link and the joint count); errors carry `file:line:col`. A `.urdf` file is read
 /// with its `--base` and `--tip`.
 fn load(robot: &RobotFile) -> Result<Robot, Failure> {
+    load_with_request(robot).map(|(robot, _)| robot)
+}
+
+/// [`load`], with what the file asks of the simplified models (its `[simplify]`, a URDF's
+/// `<limit>`s), as the derive reads them for `file = ".."` or `urdf = ".."`.
+fn load_with_request(robot: &RobotFile) -> Result<(Robot, front::FileRequest), Failure> {
     let path = robot.path.as_str();
     let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
     // `file:line:col: message`, or `file: message` when the error has no place.
@@ -77,15 +83,18 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
         };
         format!("{path}{sep}{e}")
     };
+    let mut limits = None;
     let loaded = if path.ends_with(".urdf") {
         let chain = front::Chain {
             base: robot.base.as_deref(),
             tip: robot.tip.as_deref(),
         };
-        front::load_urdf(path, &text, chain, true).map_err(|errors| {
+        let loaded = front::load_urdf(path, &text, chain, true).map_err(|errors| {
             let lines: Vec<String> = errors.iter().map(at).collect();
             Failure::File(lines.join("\ndynamics: "))
-        })?
+        })?;
+        limits = front::joint_limits(&text, chain).ok();
+        loaded
     } else if robot.base.is_some() || robot.tip.is_some() {
         let message =
             format!("--base and --tip name links of a URDF file; `{path}` is not one (*.urdf)");
@@ -104,9 +113,57 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
         .map(|problem| loaded.describe(path, problem))
         .collect();
     if problems.is_empty() {
-        Ok(loaded.robot)
+        let request = front::FileRequest {
+            given: loaded.simplify,
+            limits,
+            path: path.to_owned(),
+        };
+        Ok((loaded.robot, request))
     } else {
         Err(Failure::File(problems.join("\ndynamics: ")))
+    }
+}
+
+/// The simplified models of `robot` that the file's `request` asks for, each key of
+/// `overrides` (the command line's) in place of the file's; `None` where neither asks. A
+/// mistake of the file's is a file error, one of the command line's a usage error of
+/// `command`.
+fn simplification(
+    robot: &Robot,
+    request: &front::FileRequest,
+    overrides: &[(&'static str, Vec<f64>)],
+    command: &str,
+) -> Result<Option<Simplification>, Failure> {
+    request.resolve(robot, overrides).map_err(|problems| {
+        match problems.iter().find(|p| !p.in_file) {
+            // The command line's options as the user wrote them, not the file's keys.
+            Some(p) => {
+                let mut message = p.message.clone();
+                for key in front::SIMPLIFY_KEYS {
+                    let option = format!("--{}", key.replace('_', "-"));
+                    message = message.replace(&format!("`{key}`"), &option);
+                }
+                eval::usage(command, &message)
+            }
+            None => {
+                let lines: Vec<String> = problems.into_iter().map(|p| p.message).collect();
+                Failure::File(lines.join("\ndynamics: "))
+            }
+        }
+    })
+}
+
+/// The simplified models of `request` built into `eq` (the family `Simplified`), as the
+/// derive builds them; the error of one that cannot be (`path: simplify: ...`).
+fn add_simplified(
+    eq: &mut Equations,
+    request: Option<&Simplification>,
+    path: &str,
+) -> Result<(), Failure> {
+    match request {
+        Some(request) => dynamics_codegen::simplify::add(eq, request)
+            .map_err(|e| Failure::File(format!("{path}: simplify: {e}"))),
+        None => Ok(()),
     }
 }
 

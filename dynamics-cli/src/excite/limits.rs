@@ -159,11 +159,13 @@ mod tests {
                 lower: Some(-2.0),
                 upper: Some(3.0),
                 velocity: Some(1.5),
+                effort: None,
             },
             Limit {
                 lower: Some(0.0),
                 upper: None,
                 velocity: Some(0.3),
+                effort: None,
             },
         ];
         let upper = [4.0];

@@ -5,6 +5,7 @@
 #![allow(dead_code)] // each test file uses its part
 
 mod batch;
+mod simplified;
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
@@ -118,6 +119,7 @@ fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
         .map(|name| Family::from_name(name).expect("a family"))
         .fold(FamilySet::default(), FamilySet::with);
     eq.add_families(&loaded.robot, families);
+    simplified::add(&mut eq, &loaded.robot, loaded.simplify, file);
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);
     Robot {

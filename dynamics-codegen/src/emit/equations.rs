@@ -95,9 +95,22 @@ fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> Toke
 
 /// The rustdoc of the simplified methods: each output's proven bound and the envelope.
 fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
-    let Some(s) = &eq.simplified else {
-        return Vec::new();
-    };
+    [
+        Method::InverseDynamicsSimplified,
+        Method::MassMatrixSimplified,
+        Method::GravityTorquesSimplified,
+    ]
+    .into_iter()
+    .filter_map(|method| Some((method, simplified_doc(eq, method)?)))
+    .collect()
+}
+
+/// The rustdoc of a simplified method of `eq` (`None` for any other method, or equations
+/// not simplified): its summary, each output's proven bound and the envelope. The derive and
+/// `dynamics emit` write it on the method, the C header (in ASCII) above its function.
+#[must_use]
+pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
+    let s = eq.simplified.as_ref()?;
     let unit = |i: usize| match eq.kinds[i] {
         crate::algo::JointKind::Revolute => "N·m",
         crate::algo::JointKind::Prismatic => "N",
@@ -108,28 +121,25 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
         });
         rows.collect::<Vec<_>>().join("\n")
     };
-    let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
-        row.iter().enumerate().skip(i).map(move |(j, b)| {
-            format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
-        })
-    });
-    let mass = mass.collect::<Vec<_>>().join("\n");
-    let envelope = envelope_text(s);
-    [
-        (Method::InverseDynamicsSimplified, vector("T", &s.tau_bounds)),
-        (Method::MassMatrixSimplified, mass),
-        (Method::GravityTorquesSimplified, vector("D", &s.gravity_bounds)),
-    ]
-    .into_iter()
-    .map(|(method, bounds)| {
-        let doc = format!(
-            " {}\n\nProven over the envelope below (interval arithmetic on the closed form; nothing \
-             is promised outside it):\n\n```text\n{bounds}\n```\n\nThe envelope:\n\n```text\n{envelope}```",
-            method.summary()
-        );
-        (method, doc)
-    })
-    .collect()
+    let bounds = match method {
+        Method::InverseDynamicsSimplified => vector("T", &s.tau_bounds),
+        Method::GravityTorquesSimplified => vector("D", &s.gravity_bounds),
+        Method::MassMatrixSimplified => {
+            let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
+                row.iter().enumerate().skip(i).map(move |(j, b)| {
+                    format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
+                })
+            });
+            mass.collect::<Vec<_>>().join("\n")
+        }
+        _ => return None,
+    };
+    Some(format!(
+        " {}\n\nProven over the envelope below (interval arithmetic on the closed form; nothing \
+         is promised outside it):\n\n```text\n{bounds}\n```\n\nThe envelope:\n\n```text\n{}```",
+        method.summary(),
+        envelope_text(s)
+    ))
 }
 
 /// The envelope, a line per joint.

@@ -60,6 +60,7 @@ mod sums;
 
 pub use count::count;
 pub(crate) use equations::readable;
+pub use equations::simplified_doc;
 pub(crate) use fallback::{fallback, unreachable_family};
 pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};

@@ -167,12 +167,7 @@ impl Function {
     /// Its definition, with the method table's summary as its comment; `sign` names the header's sign
     /// function of the function's precision.
     pub(super) fn definition(&self, eq: &Equations, sign: &str) -> String {
-        let mut text = format!(
-            "/* {}: {} */\n{} {{\n",
-            self.method.name(),
-            comment_safe(self.method.summary()),
-            self.signature()
-        );
+        let mut text = format!("{}{} {{\n", comment(eq, self.method), self.signature());
         if self.plans_lanes(eq) {
             // gcc's vectors are 256 bits wide by default even where the target has AVX-512.
             text.insert_str(
@@ -239,6 +234,31 @@ impl Function {
     }
 }
 
+/// The comment above a function of `method`: its name and summary; for a simplified method,
+/// each output's proven bound and the envelope too, the rustdoc of the Rust method.
+fn comment(eq: &Equations, method: Method) -> String {
+    let Some(doc) = crate::emit::simplified_doc(eq, method) else {
+        return format!(
+            "/* {}: {} */\n",
+            method.name(),
+            comment_safe(method.summary())
+        );
+    };
+    let mut lines = doc.lines().filter(|l| !l.starts_with("```"));
+    let summary = comment_safe(lines.next().unwrap_or_default().trim());
+    let mut text = format!("/* {}: {summary}", method.name());
+    for line in lines {
+        let line = comment_safe(line);
+        if line.trim().is_empty() {
+            text.push_str("\n *");
+        } else {
+            text.push_str(&format!("\n * {}", line.trim()));
+        }
+    }
+    text.push_str("\n */\n");
+    text
+}
+
 /// `text` for a C comment: in ASCII, which every C toolchain reads (the method table's
 /// `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; any other character `?`), and without the `*/`
 /// that would end the comment early.
@@ -255,6 +275,8 @@ pub(super) fn comment_safe(text: &str) -> String {
             'π' => ascii.push_str("pi"),
             'Σ' => ascii.push_str("sum"),
             '−' => ascii.push('-'),
+            '≤' => ascii.push_str("<="),
+            '·' => ascii.push('*'),
             'ᵀ' => ascii.push_str("^T"),
             'ᴴ' => ascii.push('H'),
             '⁻' => ascii.push_str("^-"),

@@ -52,7 +52,8 @@ pub use attrs::attribute_words;
 pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load};
-pub use simplify::given::default_joint as default_envelope;
+pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
+pub use simplify::{FileRequest, RequestError};
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
 pub use urdf::{joint_limits, load_urdf, Chain, Limit};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
@@ -193,10 +194,12 @@ impl<'a> Derived<'a> {
             simplify,
         } = loaded;
         let simplify = simplify::FromFile {
-            given: simplify,
-            limits,
+            request: FileRequest {
+                given: simplify,
+                limits,
+                path: path.clone(),
+            },
             at,
-            path: path.clone(),
         };
         Derived {
             robot,

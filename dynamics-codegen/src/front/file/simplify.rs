@@ -74,6 +74,7 @@ pub(super) fn place(given: &mut Given<At>, sources: &Sources<At>) {
 #[cfg(test)]
 mod tests {
     use crate::front::file::load;
+    use crate::front::simplify::given::Defaults;
     use crate::model::JointEnvelope;
 
     const ROBOT: &str = "gravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\
@@ -102,7 +103,12 @@ mod tests {
             speed: 2.0,
             acceleration: 5.0,
         }];
-        let request = given.resolve(&defaults).expect("resolves");
+        let request = given
+            .resolve(&Defaults {
+                joints: defaults.to_vec(),
+                rated: None,
+            })
+            .expect("resolves");
         assert_eq!(request.tolerance, [0.5]);
         assert_eq!(request.envelope.joints[0].lower, -1.0);
     }
@@ -125,7 +131,10 @@ mod tests {
             speed: 2.0,
             acceleration: 5.0,
         }; 2];
-        let Err(problems) = given.resolve(&defaults) else {
+        let Err(problems) = given.resolve(&Defaults {
+            joints: defaults.to_vec(),
+            rated: None,
+        }) else {
             panic!("a list of three for two joints resolved")
         };
         assert_eq!(problems.len(), 1);

@@ -32,6 +32,15 @@ pub struct Given<P> {
     pub keys: Vec<(&'static str, Vec<f64>, P)>,
 }
 
+/// What a request takes where it does not say: each joint's envelope, and the rated torques
+/// of `tolerance_percent` (a URDF's `<limit effort>`, where every joint has one).
+pub struct Defaults {
+    /// Per joint, base to tip.
+    pub joints: Vec<JointEnvelope>,
+    /// Per joint, or `None`: then `tolerance_percent` needs `rated`.
+    pub rated: Option<Vec<f64>>,
+}
+
 /// The default envelope of a joint of `kind`: ±π rad or ±1 m, `DEFAULT_SPEED`,
 /// `DEFAULT_ACCELERATION`.
 #[must_use]
@@ -80,15 +89,17 @@ impl<P: Copy> Given<P> {
         })
     }
 
-    /// The request for a robot whose joints have `defaults` as their envelope.
+    /// The request for a robot whose joints take `defaults` where it does not say.
     ///
     /// # Errors
     /// Each mistake with its place: a list of the wrong length, a negative or non-finite
     /// value, a range that is empty, no tolerance or two.
-    pub fn resolve(&self, defaults: &[JointEnvelope]) -> Result<Simplification, Vec<(P, String)>> {
+    pub fn resolve(&self, defaults: &Defaults) -> Result<Simplification, Vec<(P, String)>> {
+        let rated = defaults.rated.as_deref();
+        let defaults = &defaults.joints;
         let n = defaults.len();
         let mut errors = Vec::new();
-        let tolerance = self.tolerance(n, &mut errors);
+        let tolerance = self.tolerance(n, rated, &mut errors);
         let finite = |v: f64| (!v.is_finite()).then_some("finite numbers");
         let lower = self.per_joint("q_min", n, finite, &mut errors);
         let upper = self.per_joint("q_max", n, finite, &mut errors);
@@ -131,8 +142,14 @@ impl<P: Copy> Given<P> {
             .map(|&(_, _, at)| at)
     }
 
-    /// `tolerance`, or `rated` torques with `tolerance_percent`: one of the two.
-    fn tolerance(&self, n: usize, errors: &mut Vec<(P, String)>) -> Option<Vec<f64>> {
+    /// `tolerance`, or `rated` torques with `tolerance_percent`: one of the two. `rated` may
+    /// be left to `default_rated` (a URDF's efforts).
+    fn tolerance(
+        &self,
+        n: usize,
+        default_rated: Option<&[f64]>,
+        errors: &mut Vec<(P, String)>,
+    ) -> Option<Vec<f64>> {
         let absolute = self.per_joint("tolerance", n, non_negative, errors);
         let rated = self.per_joint("rated", n, non_negative, errors);
         let percent = self.per_joint("tolerance_percent", 1, non_negative, errors);
@@ -144,9 +161,20 @@ impl<P: Copy> Given<P> {
             return None;
         }
         if relative {
-            if !(given("rated") && given("tolerance_percent")) {
-                let message = "`rated` (each joint's rated torque) and `tolerance_percent` go together: the tolerance is that percentage of each rated torque";
-                errors.push((self.at, message.into()));
+            let rated = match (rated, default_rated) {
+                (Some(rated), _) => Some(rated),
+                (None, Some(efforts)) if !given("rated") => Some(efforts.to_vec()),
+                (None, _) => None,
+            };
+            let no_rated = !given("rated") && default_rated.is_none();
+            if !given("tolerance_percent") || no_rated {
+                let efforts = if no_rated {
+                    " (a URDF's `<limit effort>` on every joint gives `rated`)"
+                } else {
+                    ""
+                };
+                let message = format!("`rated` (each joint's rated torque) and `tolerance_percent` go together: the tolerance is that percentage of each rated torque{efforts}");
+                errors.push((self.at, message));
                 return None;
             }
             let (rated, percent) = (rated?, percent?);

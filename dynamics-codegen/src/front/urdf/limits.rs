@@ -1,6 +1,7 @@
-//! The joint limits of a URDF chain: `<limit lower upper velocity>` of each moving joint, in the
-//! robot's joint order, for the tools that plan motions within them (`dynamics excite`). The
-//! dynamics do not use them.
+//! The joint limits of a URDF chain: `<limit lower upper velocity effort>` of each moving joint,
+//! in the robot's joint order, for the tools that plan motions within them (`dynamics excite`)
+//! and the default envelope and rated torques of `simplify(...)`. The exact dynamics do not
+//! use them.
 
 use super::xml::{self, Kind, Limit};
 use super::{tree, Chain};

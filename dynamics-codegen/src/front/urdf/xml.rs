@@ -64,11 +64,11 @@ pub(super) struct Joint {
     pub friction: Option<(Value, At)>,
     /// Where `<mimic>` is, if the joint has one.
     pub mimic: Option<At>,
-    /// `<limit lower upper velocity>`, each where it is written.
+    /// `<limit lower upper velocity effort>`, each where it is written.
     pub limit: Limit,
 }
 
-/// A joint's `<limit>`: the attributes the file writes (`effort` is not read).
+/// A joint's `<limit>`: the attributes the file writes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Limit {
     /// The range of the joint variable (rad or m).
@@ -76,6 +76,9 @@ pub struct Limit {
     pub upper: Option<f64>,
     /// The largest speed (rad/s or m/s).
     pub velocity: Option<f64>,
+    /// The largest torque or force (N·m or N): the rated torque of `simplify(...)`'s
+    /// `tolerance_percent` when no `rated` is given.
+    pub effort: Option<f64>,
 }
 
 /// The `<robot>`: its name, links and joints in the file's order.
@@ -404,6 +407,7 @@ impl Reader<'_> {
             lower: value("lower")?,
             upper: value("upper")?,
             velocity: value("velocity")?,
+            effort: value("effort")?,
         })
     }
 }

@@ -1,16 +1,17 @@
 //! `joint_limits`: the Panda's against Franka's published joint limits (the robot's datasheet:
-//! position ranges and the 2.175 and 2.61 rad/s speeds), and a small file for the joints that
+//! position ranges, the 2.175 and 2.61 rad/s speeds, the 87 and 12 N·m torques), and a small file for the joints that
 //! have no range or no `<limit>` and a value that is not a number.
 
 use super::super::{joint_limits, Chain, Limit};
 
 const PANDA: &str = include_str!("../../../../../robots/urdf/panda.urdf");
 
-fn limit(lower: f64, upper: f64, velocity: f64) -> Limit {
+fn limit(lower: f64, upper: f64, velocity: f64, effort: f64) -> Limit {
     Limit {
         lower: Some(lower),
         upper: Some(upper),
         velocity: Some(velocity),
+        effort: Some(effort),
     }
 }
 
@@ -22,13 +23,13 @@ fn the_pandas_limits_are_franka_s() {
     };
     let limits = joint_limits(PANDA, chain).expect("the Panda reads");
     let want = [
-        limit(-2.8973, 2.8973, 2.175),
-        limit(-1.7628, 1.7628, 2.175),
-        limit(-2.8973, 2.8973, 2.175),
-        limit(-3.0718, -0.0698, 2.175),
-        limit(-2.8973, 2.8973, 2.61),
-        limit(-0.0175, 3.7525, 2.61),
-        limit(-2.8973, 2.8973, 2.61),
+        limit(-2.8973, 2.8973, 2.175, 87.0),
+        limit(-1.7628, 1.7628, 2.175, 87.0),
+        limit(-2.8973, 2.8973, 2.175, 87.0),
+        limit(-3.0718, -0.0698, 2.175, 87.0),
+        limit(-2.8973, 2.8973, 2.61, 12.0),
+        limit(-0.0175, 3.7525, 2.61, 12.0),
+        limit(-2.8973, 2.8973, 2.61, 12.0),
     ];
     assert_eq!(limits, want);
 }
@@ -47,6 +48,7 @@ fn continuous_joints_have_no_range_and_fixed_joints_no_limits() {
     let limits = joint_limits(SMALL, Chain::default()).expect("reads");
     let continuous = Limit {
         velocity: Some(3.0),
+        effort: Some(5.0),
         ..Limit::default()
     };
     assert_eq!(limits, [continuous, Limit::default()]);
