@@ -93,7 +93,8 @@ fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> Toke
     }
 }
 
-/// The rustdoc of the simplified methods: each output's proven bound and the envelope.
+/// The rustdoc of the simplified methods: each output's proven bound and the envelope, or why
+/// the output is left exact.
 fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
     let Some(s) = &eq.simplified else {
         return Vec::new();
@@ -116,17 +117,42 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
     let mass = mass.collect::<Vec<_>>().join("\n");
     let envelope = envelope_text(s);
     [
-        (Method::InverseDynamicsSimplified, vector("T", &s.tau_bounds)),
-        (Method::MassMatrixSimplified, mass),
-        (Method::GravityTorquesSimplified, vector("D", &s.gravity_bounds)),
+        (
+            Method::InverseDynamicsSimplified,
+            vector("T", &s.tau_bounds),
+            s.tau_fallback,
+            Method::InverseDynamics,
+        ),
+        (
+            Method::MassMatrixSimplified,
+            mass,
+            s.mass_fallback,
+            Method::MassMatrix,
+        ),
+        (
+            Method::GravityTorquesSimplified,
+            vector("D", &s.gravity_bounds),
+            s.gravity_fallback,
+            Method::GravityTorques,
+        ),
     ]
     .into_iter()
-    .map(|(method, bounds)| {
-        let doc = format!(
-            " {}\n\nProven over the envelope below (interval arithmetic on the closed form; nothing \
-             is promised outside it):\n\n```text\n{bounds}\n```\n\nThe envelope:\n\n```text\n{envelope}```",
-            method.summary()
-        );
+    .map(|(method, bounds, fallback, exact)| {
+        let doc = match fallback {
+            // No link to the exact method: the trait's page has it, the robot's impl may not.
+            Some(f) => format!(
+                " {}\n\nThe same values as `{}`, {f}. The other outputs of the request are \
+                 pruned.",
+                method.summary(),
+                exact.name()
+            ),
+            None => format!(
+                " {}\n\nProven over the envelope below (interval arithmetic on the closed form; \
+                 nothing is promised outside it):\n\n```text\n{bounds}\n```\n\nThe \
+                 envelope:\n\n```text\n{envelope}```",
+                method.summary()
+            ),
+        };
         (method, doc)
     })
     .collect()
