@@ -396,9 +396,8 @@ macro_rules! for_each_method {
             /// method's rustdoc on the robot states every output's bound and the envelope.
             trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}
-                /// The pruned inverse dynamics, mass matrix and gravity torques. An output
-                /// whose pruned form would be far larger than the exact one is the exact one
-                /// (bound 0), as the method's documentation on the robot says.
+                /// The pruned inverse dynamics, mass matrix and gravity torques; an output too
+                /// large to prune is the exact one (bound 0), as its rustdoc on the robot says.
                 family Simplified {
                     name: simplify,
                     module: "__simplified",
