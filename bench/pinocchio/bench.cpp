@@ -55,6 +55,11 @@
 // checked as the generated ones are, and timed in turn with the two others (the order rotating
 // from batch to batch): `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns`. The
 // batch rows, which the headers do not have, keep four columns.
+//
+// For a robot whose generated library has simplified models (bench/ffi's `tau_simplified`,
+// `M_simplified`, `g_simplified`: PUMA 560 and the Panda), those are checked against Pinocchio
+// within their proven bounds at states drawn in their envelope (check_simplified), then timed
+// in turn with Pinocchio's exact rnea, crba and computeGeneralizedGravity, four columns.
 
 #include <algorithm>
 #include <chrono>
@@ -66,6 +71,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -800,6 +806,9 @@ struct Generated
   std::size_t (*dof)(const char *) = nullptr;
   std::size_t (*base_count)(const char *) = nullptr;
   std::size_t (*horizon)() = nullptr;
+  // The simplified models' proven bounds and envelope (null in a library without them).
+  std::size_t (*simplified_bounds)(const char *, const char *, double *) = nullptr;
+  std::size_t (*simplified_envelope)(const char *, double *) = nullptr;
 
   explicit Generated(const std::string & path)
   {
@@ -810,6 +819,10 @@ struct Generated
     dof = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_dof"));
     base_count = reinterpret_cast<std::size_t (*)(const char *)>(dlsym(lib, "dynamics_bench_base_count"));
     horizon = reinterpret_cast<std::size_t (*)()>(dlsym(lib, "dynamics_bench_horizon"));
+    simplified_bounds = reinterpret_cast<std::size_t (*)(const char *, const char *, double *)>(
+      dlsym(lib, "dynamics_bench_simplified_bounds"));
+    simplified_envelope = reinterpret_cast<std::size_t (*)(const char *, double *)>(
+      dlsym(lib, "dynamics_bench_simplified_envelope"));
     if (!lookup || !dof || !base_count || !horizon)
       throw std::runtime_error(path + " does not export dynamics_bench_function, dynamics_bench_dof, dynamics_bench_base_count and dynamics_bench_horizon");
   }
@@ -1021,6 +1034,85 @@ static void time_batches(
     });
 }
 
+// The simplified models (bench/ffi's `tau_simplified`, `M_simplified`, `g_simplified`, for the
+// robots whose derives ask for them) against Pinocchio's rnea, crba and
+// computeGeneralizedGravity at CHECK_STATES states drawn in their envelope: each element within
+// its proven bound (dynamics_bench_simplified_bounds: the generator's interval bound over the
+// envelope) plus TOLERANCE relative, for the two sides' rounding; an element of an output left
+// exact (bound 0) within TOLERANCE alone. Not the reference samples: their q spans ±π, mostly
+// outside the envelopes. The worst sampled error over the bound goes to stderr. Returns
+// whether the robot has simplified models; exits on a mismatch.
+static const int CHECK_STATES = 2000;
+
+static bool check_simplified(const std::string & robot, const Generated & gen, const Model & model)
+{
+  const auto n = static_cast<std::size_t>(model.nv);
+  std::vector<double> envelope(4 * n);
+  if (!gen.simplified_envelope || gen.simplified_envelope(robot.c_str(), envelope.data()) != n)
+    return false;
+  struct Output
+  {
+    const char * name;
+    std::vector<double> bound;
+    double worst;
+  };
+  std::vector<Output> outputs = {{"tau_simplified", {}, 0.0}, {"M_simplified", {}, 0.0}, {"g_simplified", {}, 0.0}};
+  for (auto & o : outputs)
+  {
+    o.bound.resize(n * n);
+    o.bound.resize(gen.simplified_bounds(robot.c_str(), o.name, o.bound.data()));
+    if (o.bound.empty())
+      throw std::runtime_error(robot + ": the generated code has no bounds of " + o.name);
+  }
+  std::mt19937_64 rng(17);
+  auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  Data data(model);
+  std::vector<double> out(n * n);
+  Eigen::VectorXd q(model.nv), v(model.nv), a(model.nv);
+  for (int s = 0; s < CHECK_STATES; ++s)
+  {
+    for (Eigen::Index i = 0; i < model.nv; ++i)
+    {
+      const double * e = &envelope[4 * static_cast<std::size_t>(i)];
+      q[i] = uniform(e[0], e[1]), v[i] = uniform(-e[2], e[2]), a[i] = uniform(-e[3], e[3]);
+    }
+    Eigen::MatrixXd M = pinocchio::crba(model, data, q); // upper triangle only
+    M.triangularView<Eigen::StrictlyLower>() = M.transpose().triangularView<Eigen::StrictlyLower>();
+    // M is symmetric: its column-major values are the row-major ones the generated code writes.
+    const Eigen::MatrixXd want[3] = {
+      pinocchio::rnea(model, data, q, v, a), M, pinocchio::computeGeneralizedGravity(model, data, q)};
+    for (std::size_t k = 0; k < outputs.size(); ++k)
+    {
+      Output & o = outputs[k];
+      gen.get(robot, o.name)(q.data(), v.data(), a.data(), out.data());
+      const double scale = std::max(1.0, want[k].cwiseAbs().maxCoeff());
+      for (std::size_t i = 0; i < o.bound.size(); ++i)
+      {
+        const double err = std::abs(out[i] - want[k].data()[i]);
+        if (!(err <= o.bound[i] + TOLERANCE * scale))
+        {
+          std::fprintf(
+            stderr, "%s: %s[%zu] differs from Pinocchio by %.3e at a state of its envelope, over its proven bound %.3e\n",
+            robot.c_str(), o.name, i, err, o.bound[i]);
+          std::exit(1);
+        }
+        if (o.bound[i] > 0.0)
+          o.worst = std::max(o.worst, err / o.bound[i]);
+      }
+    }
+  }
+  for (const auto & o : outputs)
+    if (*std::max_element(o.bound.begin(), o.bound.end()) > 0.0)
+      std::fprintf(
+        stderr, "%s: %s within its proven bounds of Pinocchio at %d states of the envelope; worst error over the bound %.3f\n",
+        robot.c_str(), o.name, CHECK_STATES, o.worst);
+    else
+      std::fprintf(
+        stderr, "%s: %s left exact (bound 0): within %.0e of Pinocchio at %d states of the envelope\n",
+        robot.c_str(), o.name, TOLERANCE, CHECK_STATES);
+  return true;
+}
+
 // The columns of Pinocchio's regressor that a QR with column pivoting of it, stacked over the
 // samples, finds independent: the numerical way to a base regressor.
 static std::vector<Eigen::Index> base_columns(
@@ -1131,6 +1223,7 @@ int main(int argc, char ** argv)
         throw std::runtime_error("the C headers have no " + std::string(function) + " for " + robot);
       return f;
     };
+    bool with_simplified = false;
     if (with_generated)
     {
       try
@@ -1138,6 +1231,7 @@ int main(int argc, char ** argv)
         const std::size_t n = generated->dof(robot.c_str()), b = generated->base_count(robot.c_str());
         auto rust_get = [&](const char * function) { return generated->get(robot, function); };
         check_generated(robot, rust_get, n, b, " (generated)", samples, model, hand, forward, links);
+        with_simplified = check_simplified(robot, *generated, model);
         if (c_robot)
           check_generated(robot, c_get, n, b, " (C)", samples, model, hand, forward, links);
       }
@@ -1253,6 +1347,30 @@ int main(int argc, char ** argv)
       });
       time("Minv", [&](std::size_t k) {
         return pinocchio::computeMinverse(model, data, qs[k])(0, 0);
+      });
+    }
+    // The simplified models beside the exact functions of Pinocchio, at the same states; the C
+    // headers have no simplified family yet: no C column.
+    if (with_simplified)
+    {
+      auto simplified = [&](const char * function, auto && pin) {
+        const GeneratedFunction f = generated->get(robot, function);
+        auto gen = [&](std::size_t k) {
+          f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+          return out[0];
+        };
+        const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
+        std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+        std::fflush(stdout);
+      };
+      simplified("tau_simplified", [&](std::size_t k) {
+        return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0];
+      });
+      simplified("M_simplified", [&](std::size_t k) {
+        return pinocchio::crba(model, data, qs[k])(0, 0);
+      });
+      simplified("g_simplified", [&](std::size_t k) {
+        return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0];
       });
     }
     // The batches, for the two robots of the throughput targets.

@@ -16,7 +16,9 @@
 //! Used by the `timings` binary (the numbers compared with Pinocchio) and by the criterion
 //! benchmark `benches/dynamics.rs`.
 
+use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
 use dynamics_codegen::numeric::Numeric;
+use dynamics_codegen::Equations;
 use dynamics_runtime::Dynamics;
 
 /// Number of joints of the four 6-joint reference robots.
@@ -39,7 +41,16 @@ pub const ROBOTS: [&str; 7] = [
     check_inertia = false,
     derivatives = true,
     regressor = true,
-    base_parameters = true
+    base_parameters = true,
+    // `simplification("puma560")` restates it: about 1 % of the peak torques over the
+    // envelope of docs/design.md's figures.
+    simplify(
+        tolerance = [0.22, 0.6, 0.13, 0.0004, 0.0005, 0.00001],
+        q_min = -2.5,
+        q_max = 2.0,
+        qd_max = 2,
+        qdd_max = 5,
+    )
 )]
 pub struct Puma560;
 
@@ -81,7 +92,16 @@ pub struct Random5;
     file = "../tests/data/panda/robot.json",
     derivatives = true,
     regressor = true,
-    base_parameters = true
+    base_parameters = true,
+    // `simplification("panda")` restates it: 1 % of the rated torques (the URDF's `effort`)
+    // over the URDF's ranges and speeds (robots/urdf/panda.urdf), |q̈| ≤ 5.
+    simplify(
+        rated = [87, 87, 87, 87, 12, 12, 12],
+        tolerance_percent = 1,
+        q_min = [-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973],
+        q_max = [2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973],
+        qd_max = [2.175, 2.175, 2.175, 2.175, 2.61, 2.61, 2.61],
+    )
 )]
 pub struct Panda;
 
@@ -217,3 +237,60 @@ pub fn book(robot: &str) -> dynamics_reference::Robot {
 }
 
 pub use dynamics_reference::scaled_error;
+
+/// The robots with simplified models (`simplify(...)` in their derives).
+pub const SIMPLIFIED: [&str; 2] = ["puma560", "panda"];
+
+/// The request of the `simplify(...)` of `robot`'s derive (one of [`SIMPLIFIED`]), restated
+/// for its bounds ([`simplified`]); bench/ffi's tests check that the two give the same model.
+#[must_use]
+pub fn simplification(robot: &str) -> Option<Simplification> {
+    let (tolerance, joints): (Vec<f64>, Vec<JointEnvelope>) = match robot {
+        "puma560" => {
+            let joint = JointEnvelope {
+                lower: -2.5,
+                upper: 2.0,
+                speed: 2.0,
+                acceleration: 5.0,
+            };
+            let tolerance = vec![0.22, 0.6, 0.13, 0.0004, 0.0005, 0.00001];
+            (tolerance, vec![joint; 6])
+        }
+        "panda" => {
+            let lower = [
+                -2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973,
+            ];
+            let upper = [2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973];
+            let speed = [2.175, 2.175, 2.175, 2.175, 2.61, 2.61, 2.61];
+            let rated = [87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0];
+            let joints = (0..7).map(|i| JointEnvelope {
+                lower: lower[i],
+                upper: upper[i],
+                speed: speed[i],
+                acceleration: 5.0,
+            });
+            (rated.iter().map(|r| r * 0.01).collect(), joints.collect())
+        }
+        _ => return None,
+    };
+    Some(Simplification {
+        tolerance,
+        envelope: Envelope { joints },
+    })
+}
+
+/// The equations of `robot` (one of [`SIMPLIFIED`]) with its simplified models, pruned from its
+/// description for [`simplification`] as the derive prunes them: their bounds and envelope.
+///
+/// # Panics
+/// If the description is missing or invalid, or the request refused.
+#[must_use]
+pub fn simplified(robot: &str) -> Option<Equations> {
+    let request = simplification(robot)?;
+    let model = dynamics_codegen::front::from_json(&description(robot), robot)
+        .unwrap_or_else(|e| panic!("description of {robot}: {e}"));
+    let mut eq = dynamics_codegen::derive(&model);
+    dynamics_codegen::simplify::add(&mut eq, &request)
+        .unwrap_or_else(|e| panic!("simplified {robot}: {e}"));
+    Some(eq)
+}

@@ -397,7 +397,8 @@ macro_rules! for_each_method {
             /// method's rustdoc on the robot states every output's bound and the envelope.
             trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}
-                /// The pruned inverse dynamics, mass matrix and gravity torques.
+                /// The pruned inverse dynamics, mass matrix and gravity torques; an output too
+                /// large to prune is the exact one (bound 0), as its rustdoc on the robot says.
                 family Simplified {
                     name: simplify,
                     module: "__simplified",

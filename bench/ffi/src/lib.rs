@@ -11,14 +11,18 @@
 //! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
 //! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`, the base
 //! regressor `YB` and the base parameters `piB` ([`dynamics_bench_base_count`] of them); and
-//! `tau_batch`, `M_batch`, `fd_batch`, `dtau_batch`: [`HORIZON`] states a call (`batch`).
+//! `tau_batch`, `M_batch`, `fd_batch`, `dtau_batch`: [`HORIZON`] states a call (`batch`). For
+//! the robots with simplified models, `tau_simplified`, `M_simplified`, `g_simplified`, with
+//! their proven bounds ([`dynamics_bench_simplified_bounds`]) and envelope (`simplified`).
 
 mod batch;
+mod simplified;
 
 pub use batch::{dynamics_bench_horizon, HORIZON};
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
 use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
+pub use simplified::{dynamics_bench_simplified_bounds, dynamics_bench_simplified_envelope};
 
 /// The generated traits a benchmark robot implements, with `N` joints and `B` base parameters.
 pub trait Timed<const N: usize, const B: usize>:
@@ -275,7 +279,8 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
 }
 
 /// The function `function` (`tau`, `M`, `g`, `C` or `h`, as in `timings`, or `fk`, `J`,
-/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`, `Y`, `YB`, `piB`) of `robot`
+/// `JtF`, `fd`, `Minv`, `dtau`, `dqdd`, `Y`, `YB`, `piB`, or for `puma560` and `panda`
+/// `tau_simplified`, `M_simplified`, `g_simplified`) of `robot`
 /// (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`), or null for an unknown name.
 ///
 /// # Safety
@@ -290,8 +295,9 @@ pub unsafe extern "C" fn dynamics_bench_function(
     if function.is_null() {
         return None;
     }
-    // SAFETY: the caller's contract.
-    get(unsafe { CStr::from_ptr(function) }.to_bytes())
+    // SAFETY: the caller's contract (both non-null: `self::robot` found one).
+    let (robot, function) = unsafe { (CStr::from_ptr(robot), CStr::from_ptr(function)) };
+    get(function.to_bytes()).or_else(|| simplified::get(robot.to_bytes(), function.to_bytes()))
 }
 
 /// The number of joints of `robot`, 0 for an unknown name, for the caller to check against

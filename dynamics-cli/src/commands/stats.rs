@@ -117,15 +117,27 @@ fn bounds(eq: &Equations) -> String {
             b.bound, b.tolerance, b.kept, b.terms
         );
     };
-    for (i, b) in s.tau_bounds.iter().enumerate() {
-        line(&mut out, format!("T{}", i + 1), b);
+    if let Some(f) = s.tau_fallback {
+        let _ = writeln!(out, "  T     {f}");
+    } else {
+        for (i, b) in s.tau_bounds.iter().enumerate() {
+            line(&mut out, format!("T{}", i + 1), b);
+        }
     }
-    for (i, b) in s.gravity_bounds.iter().enumerate() {
-        line(&mut out, format!("D{}", i + 1), b);
+    if let Some(f) = s.gravity_fallback {
+        let _ = writeln!(out, "  D     {f}");
+    } else {
+        for (i, b) in s.gravity_bounds.iter().enumerate() {
+            line(&mut out, format!("D{}", i + 1), b);
+        }
     }
-    for (i, row) in s.mass_bounds.iter().enumerate() {
-        for (j, b) in row.iter().enumerate().skip(i) {
-            line(&mut out, format!("D{}{}", i + 1, j + 1), b);
+    if let Some(f) = s.mass_fallback {
+        let _ = writeln!(out, "  Dij   {f}");
+    } else {
+        for (i, row) in s.mass_bounds.iter().enumerate() {
+            for (j, b) in row.iter().enumerate().skip(i) {
+                line(&mut out, format!("D{}{}", i + 1, j + 1), b);
+            }
         }
     }
     out
@@ -266,5 +278,29 @@ mod tests {
             format!("{wrong:?}").contains("--tolerance: 2 values"),
             "{wrong:?}"
         );
+    }
+
+    /// An output too large to prune is printed as exact, with why, beside the pruned ones.
+    #[test]
+    fn an_output_left_exact_says_why() {
+        let random5 = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../tests/data/reference/robots/random5.json"
+        );
+        let args = [
+            "stats",
+            random5,
+            "--runs",
+            "1",
+            "--simplified",
+            "--tolerance",
+        ];
+        let out = run(args.iter().copied().chain(["0.4,0.3,0.2,0.1,0.05,0.02"])).expect("runs");
+        assert!(
+            out.contains("\n  T     exact (bound 0): its pruned expansion keeps "),
+            "{out}"
+        );
+        assert!(!out.contains("\n  T1 "), "{out}");
+        assert!(out.contains("\n  D12 "), "{out}");
     }
 }

@@ -93,7 +93,8 @@ fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> Toke
     }
 }
 
-/// The rustdoc of the simplified methods: each output's proven bound and the envelope.
+/// The rustdoc of the simplified methods: each output's proven bound and the envelope, or why
+/// the output is left exact ([`simplified_doc`]).
 fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
     [
         Method::InverseDynamicsSimplified,
@@ -106,7 +107,8 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
 }
 
 /// The rustdoc of a simplified method of `eq` (`None` for any other method, or equations
-/// not simplified): its summary, each output's proven bound and the envelope. The derive and
+/// not simplified): its summary, each output's proven bound and the envelope, or why it is
+/// left exact. The derive and
 /// `dynamics emit` write it on the method, the C header (in ASCII) above its function.
 #[must_use]
 pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
@@ -121,25 +123,43 @@ pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
         });
         rows.collect::<Vec<_>>().join("\n")
     };
-    let bounds = match method {
-        Method::InverseDynamicsSimplified => vector("T", &s.tau_bounds),
-        Method::GravityTorquesSimplified => vector("D", &s.gravity_bounds),
-        Method::MassMatrixSimplified => {
-            let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
-                row.iter().enumerate().skip(i).map(move |(j, b)| {
-                    format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
-                })
-            });
-            mass.collect::<Vec<_>>().join("\n")
-        }
+    let mass = || {
+        let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
+            row.iter().enumerate().skip(i).map(move |(j, b)| {
+                format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
+            })
+        });
+        mass.collect::<Vec<_>>().join("\n")
+    };
+    let (bounds, fallback, exact) = match method {
+        Method::InverseDynamicsSimplified => (
+            vector("T", &s.tau_bounds),
+            s.tau_fallback,
+            Method::InverseDynamics,
+        ),
+        Method::GravityTorquesSimplified => (
+            vector("D", &s.gravity_bounds),
+            s.gravity_fallback,
+            Method::GravityTorques,
+        ),
+        Method::MassMatrixSimplified => (mass(), s.mass_fallback, Method::MassMatrix),
         _ => return None,
     };
-    Some(format!(
-        " {}\n\nProven over the envelope below (interval arithmetic on the closed form; nothing \
-         is promised outside it):\n\n```text\n{bounds}\n```\n\nThe envelope:\n\n```text\n{}```",
-        method.summary(),
-        envelope_text(s)
-    ))
+    Some(match fallback {
+        // No link to the exact method: the trait's page has it, the robot's impl may not.
+        Some(f) => format!(
+            " {}\n\nThe same values as `{}`, {f}. The other outputs of the request are pruned.",
+            method.summary(),
+            exact.name()
+        ),
+        None => format!(
+            " {}\n\nProven over the envelope below (interval arithmetic on the closed form; \
+             nothing is promised outside it):\n\n```text\n{bounds}\n```\n\nThe \
+             envelope:\n\n```text\n{}```",
+            method.summary(),
+            envelope_text(s)
+        ),
+    })
 }
 
 /// The envelope, a line per joint.

@@ -59,7 +59,7 @@ impl<'a> Expander<'a> {
 
     /// A new budget of work for further outputs, keeping the polynomials found so far: the
     /// nodes that did not fit the old budget are tried again.
-    pub(super) fn renew_budget(&mut self) {
+    pub(crate) fn renew_budget(&mut self) {
         self.work = 0;
         for p in &mut self.memo {
             if matches!(p, Some(None)) {
@@ -115,6 +115,12 @@ impl<'a> Expander<'a> {
             Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
         };
         (p.len() <= self.limits.max_terms).then_some(p)
+    }
+
+    /// Whether the budget of work ran out since it was last renewed: a `None` may then be a
+    /// polynomial too large to finish rather than no polynomial.
+    pub(crate) fn exhausted(&self) -> bool {
+        self.work > self.limits.max_work
     }
 
     fn charge(&mut self, cost: u64) -> Option<()> {

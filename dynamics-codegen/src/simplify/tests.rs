@@ -2,10 +2,10 @@
 //! random states of the envelope: never further apart than the proven bound, and not
 //! vacuously (the worst sampled error is reported against the bound).
 
-use super::add;
+use super::{add, MAX_KEPT, MAX_WORK};
 use crate::model::{Envelope, JointEnvelope, Simplification};
 use crate::symbolic::{NodeId, Var};
-use crate::trace::{derive, Equations, PrunedElement};
+use crate::trace::{derive, Equations, Fallback, PrunedElement};
 use dynamics_test_support::Rng;
 
 fn load(file: &str) -> Equations {
@@ -179,19 +179,90 @@ fn a_parameter_is_refused() {
     assert!(eq.simplified.is_none());
 }
 
-/// A robot whose pruned model keeps too many terms is refused, not compiled: expanded, a
-/// general robot's torques grow large (random5 keeps 3867 terms of τ at these tolerances).
+/// A pruned output that would keep too many terms is left exact, the others still pruned:
+/// expanded, a general robot's torques grow large (random5 keeps 3867 terms of τ at these
+/// tolerances).
 #[test]
-fn a_pruned_model_too_large_is_refused() {
+fn an_output_too_large_is_left_exact() {
     let mut eq = load("tests/data/reference/robots/random5.json");
     let tolerance = vec![0.4, 0.3, 0.2, 0.1, 0.05, 0.02];
     let request = Simplification {
         tolerance,
         envelope: envelope(6),
     };
-    let error = add(&mut eq, &request).expect_err("refused");
-    assert!(error.contains("3867 terms"), "{error}");
-    assert!(eq.simplified.is_none());
+    add(&mut eq, &request).expect("simplifies");
+    let s = eq.simplified.as_ref().expect("simplified");
+    let Some(Fallback::TooManyTerms { kept, cap }) = s.tau_fallback else {
+        panic!("τ pruned: {:?}", s.tau_fallback);
+    };
+    assert!(kept > cap, "{kept} of {cap}");
+    assert_eq!(s.tau, eq.tau);
+    assert!(s.tau_bounds.iter().all(|b| (b.bound, b.kept) == (0.0, 0)));
+    assert_eq!((s.mass_fallback, s.gravity_fallback), (None, None));
+    let kept: usize = s
+        .mass_bounds
+        .iter()
+        .enumerate()
+        .map(|(i, r)| r[i..].iter().map(|b| b.kept).sum::<usize>())
+        .sum();
+    assert!(kept < MAX_KEPT, "M keeps {kept}");
+    assert!(s.mass_bounds.concat().iter().any(|b| b.kept < b.terms));
+}
+
+/// The Panda over its URDF's ranges and speeds at 1 % of its rated torques: its τ passes the
+/// budget of work long before it is expanded (τ1 alone takes 30 million term operations and
+/// keeps 9848 terms), so τ is exact; its M keeps more than the cap, so M is exact; its g is
+/// pruned. Within the bounds, as the other robots.
+#[test]
+fn the_panda_prunes_g_and_leaves_tau_and_m_exact() {
+    let mut eq = load("robots/panda.toml");
+    let limits = [
+        (-2.8973, 2.8973, 2.175),
+        (-1.7628, 1.7628, 2.175),
+        (-2.8973, 2.8973, 2.175),
+        (-3.0718, -0.0698, 2.175),
+        (-2.8973, 2.8973, 2.61),
+        (-0.0175, 3.7525, 2.61),
+        (-2.8973, 2.8973, 2.61),
+    ];
+    let joints = limits.map(|(lower, upper, speed)| JointEnvelope {
+        lower,
+        upper,
+        speed,
+        acceleration: 5.0,
+    });
+    let request = Simplification {
+        tolerance: vec![0.87, 0.87, 0.87, 0.87, 0.12, 0.12, 0.12],
+        envelope: Envelope {
+            joints: joints.to_vec(),
+        },
+    };
+    add(&mut eq, &request).expect("simplifies");
+    let s = eq.simplified.as_ref().expect("simplified");
+    assert_eq!(
+        s.tau_fallback,
+        Some(Fallback::TooMuchWork { budget: MAX_WORK })
+    );
+    assert!(
+        matches!(s.mass_fallback, Some(Fallback::TooManyTerms { kept, .. }) if kept > MAX_KEPT),
+        "{:?}",
+        s.mass_fallback
+    );
+    assert_eq!((&s.tau, &s.mass), (&eq.tau, &eq.mass));
+    assert_eq!(s.gravity_fallback, None);
+    let dropped = s.gravity_bounds.iter().filter(|b| b.kept < b.terms);
+    assert!(dropped.count() >= 5, "{:?}", s.gravity_bounds);
+    let mut worst = [0.0f64; 7];
+    let mut rng = Rng::new(11);
+    for _ in 0..2000 {
+        let values = sample(&eq, &request.envelope, &mut rng);
+        for (w, (exact, pruned)) in worst.iter_mut().zip(eq.gravity.iter().zip(&s.gravity)) {
+            *w = w.max((values[exact.index()] - values[pruned.index()]).abs());
+        }
+    }
+    for (i, (w, b)) in worst.iter().zip(&s.gravity_bounds).enumerate() {
+        assert!(*w <= b.bound + 1e-9, "D{}: {w} over {}", i + 1, b.bound);
+    }
 }
 
 /// The derive documents each simplified method with every output's bound and the envelope,
@@ -219,4 +290,22 @@ fn the_rustdoc_states_the_bounds_and_the_envelope() {
     );
     let plain = derive("");
     assert!(!plain.contains("simplified"), "{plain}");
+}
+
+/// An output left exact says so in its method's rustdoc, in place of bounds; the outputs
+/// pruned beside it keep theirs.
+#[test]
+fn the_rustdoc_says_which_output_is_exact() {
+    let text = "#[dynamics(file = \"../tests/data/reference/robots/random5.json\", \
+                simplify(tolerance = [0.4, 0.3, 0.2, 0.1, 0.05, 0.02]))] struct Arm;";
+    let code = crate::derive_dynamics(text.parse().expect("tokens")).to_string();
+    assert!(
+        code.contains(
+            "The same values as `inverse_dynamics`, exact (bound 0): its pruned expansion keeps"
+        ),
+        "{code}"
+    );
+    assert!(!code.contains("|T1 − T1,simplified|"), "{code}");
+    assert!(code.contains("|D12 − D12,simplified| ≤ "), "{code}");
+    assert!(code.contains("|D1 − D1,simplified| ≤ "), "{code}");
 }

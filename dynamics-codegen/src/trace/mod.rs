@@ -54,7 +54,7 @@ use joints::JointTerms;
 pub use kinematics::KinematicEquations;
 pub use outputs::Shape;
 pub use regressor::RegressorEquations;
-pub use simplified::{PrunedElement, SimplifiedEquations};
+pub use simplified::{Fallback, PrunedElement, SimplifiedEquations};
 use std::cell::RefCell;
 use tracer::Tracer;
 

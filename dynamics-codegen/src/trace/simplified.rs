@@ -4,17 +4,59 @@
 use crate::model::Simplification;
 use crate::symbolic::NodeId;
 
+use std::fmt;
+
 /// One pruned output element.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PrunedElement {
-    /// The largest `|exact − pruned|` over the envelope (the dropped terms' bounds summed).
+    /// The largest `|exact − pruned|` over the envelope (the dropped terms' bounds summed);
+    /// 0 in an output left exact ([`Fallback`]).
     pub bound: f64,
     /// The tolerance it was pruned within.
     pub tolerance: f64,
-    /// Terms of the exact expanded polynomial.
+    /// Terms of the exact expanded polynomial; 0 in an output left exact.
     pub terms: usize,
-    /// Terms kept.
+    /// Terms kept; 0 in an output left exact.
     pub kept: usize,
+}
+
+/// Why an output of the family is its exact value (bound 0) rather than pruned: its expanded
+/// form would cost far more than the exact recursive one, so the request gains nothing there,
+/// while the other outputs are still pruned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fallback {
+    /// Its pruned elements keep `kept` terms or more (the count stops once past the cap),
+    /// more than `cap`.
+    TooManyTerms {
+        /// Terms kept by the elements pruned before the count passed the cap.
+        kept: usize,
+        /// Most terms a pruned output may keep.
+        cap: usize,
+    },
+    /// Expanding it took more than `budget` term operations (products of two terms, terms
+    /// added, terms read in a search for a fold) before it was done.
+    TooMuchWork {
+        /// Most term operations the expansion of one output may take.
+        budget: u64,
+    },
+}
+
+impl fmt::Display for Fallback {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Fallback::TooManyTerms { kept, cap } => write!(
+                f,
+                "exact (bound 0): its pruned expansion keeps {kept} terms or more, more than \
+                 the cap of {cap}; expanded, it would cost far more than the exact form"
+            ),
+            Fallback::TooMuchWork { budget } => write!(
+                f,
+                "exact (bound 0): its expansion took more than {budget} term operations, the \
+                 cap that keeps the derive fast; expanded, it would cost far more than the \
+                 exact form"
+            ),
+        }
+    }
 }
 
 /// The pruned outputs, as node ids into the graph, and their bounds, element by element.
@@ -34,4 +76,10 @@ pub struct SimplifiedEquations {
     pub mass_bounds: Vec<Vec<PrunedElement>>,
     /// The bounds of `gravity`.
     pub gravity_bounds: Vec<PrunedElement>,
+    /// Why `tau` is the exact torques, if it is.
+    pub tau_fallback: Option<Fallback>,
+    /// Why `mass` is the exact mass matrix, if it is.
+    pub mass_fallback: Option<Fallback>,
+    /// Why `gravity` is the exact gravity torques, if it is.
+    pub gravity_fallback: Option<Fallback>,
 }
