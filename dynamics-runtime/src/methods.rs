@@ -40,17 +40,10 @@
 //     }
 //
 // A method's arguments are among `q`, `qd`, `qdd`, `wrench`, `tau`; its result is a keyword of
-// the result table (`results.rs`), which spells each result's types. A family is emitted in a
-// module of its own, so that code calling one family's methods never inlines another's.
-// A method `compiled_apart` is `#[inline(never)]`, in its family's module beside the struct, a
-// codegen unit of its own compiled in parallel with the rest: only the largest, the forward
-// dynamics' derivatives (tens of kilobytes, microseconds a call); the inverse dynamics'
-// derivatives ran a half slower apart, where the caller copied the result at once.
-// A method with `into` gets a second trait method, `name_into(args, out: &mut result)`, which
-// stores each element where it is computed; the derive's `name` calls it on zeros. Only for the
-// regressors: their hundreds of values outnumber the registers, and returned whole they wait on
-// the stack for the copy at the end. Its result's `rows` must be its `array` (no conversion).
-// `docs/design.md` has the checklists for adding a method and a family.
+// the result table (`results.rs`). A family is emitted in a module of its own. `compiled_apart`
+// (the forward dynamics' derivatives) and `into` (the regressors, whose hundreds of values
+// outnumber the registers) are explained, with the checklists for adding a method and a
+// family, in `docs/design.md`.
 
 /// Calls `$callback!` with the rows of the method table (see the comment at the top of
 /// `methods.rs`).

@@ -5,7 +5,11 @@
 #![allow(dead_code)] // each test file uses its part
 
 mod batch;
+mod builds;
 mod simplified;
+
+use builds::builds;
+pub use builds::compilers;
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
@@ -255,32 +259,6 @@ pub fn parse(output: &str) -> Printed {
         .collect()
 }
 
-/// Whether this machine runs code compiled with `-mfma` (x86-64 with FMA).
-fn fused_here() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    return std::arch::is_x86_feature_detected!("fma");
-    #[cfg(not(target_arch = "x86_64"))]
-    return false;
-}
-
-/// The compilers found, each with its language flags and whether to build it also with the
-/// header's default and own sines and cosines (beside `<math.h>`'s).
-pub fn compilers() -> Vec<(&'static str, &'static [&'static str], bool)> {
-    let candidates: [(&str, &[&str], bool); 3] = [
-        ("gcc", &["-std=c99", "-x", "c", "-Wdouble-promotion"], true),
-        (
-            "clang",
-            &["-std=c99", "-x", "c", "-Wdouble-promotion"],
-            true,
-        ),
-        ("g++", &["-std=c++17", "-x", "c++"], false),
-    ];
-    candidates
-        .into_iter()
-        .filter(|(cc, _, _)| Command::new(cc).arg("--version").output().is_ok())
-        .collect()
-}
-
 /// One build of a driver, run: by which compiler, with which sines and cosines, and what it
 /// printed.
 pub struct Run {
@@ -335,39 +313,11 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> V
     std::fs::write(dir.join(format!("{}.h", robot.name)), &robot.header).expect("write");
     let source = dir.join("driver.c");
     std::fs::write(&source, driver(robot, states)).expect("write");
-    // Smoothed friction's tanh is the one function the header's own trigonometry leaves to
-    // the math library.
-    let own: &[&str] = if robot.header.contains("tanh") {
-        &["-DDYNAMICS_OWN_SINCOS", "-lm"]
-    } else {
-        &["-DDYNAMICS_OWN_SINCOS"]
-    };
     let mut runs = Vec::new();
     let compilers = compilers();
     let count = if every { compilers.len() } else { 1 };
     for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
-        // `<math.h>`'s sines and cosines, then the default (the runtime's kernels, `<math.h>`'s
-        // beyond their range) and the kernels alone.
-        let mut builds = vec![("libm", &["-DDYNAMICS_LIBM_SINCOS", "-lm"][..])];
-        if kernels_too && every {
-            builds.push(("default", &["-lm"][..]));
-            builds.push(("own", own));
-            // The multiply-adds fused, as the Rust's are on a CPU with FMA.
-            if fused_here() {
-                builds.push(("fused", &["-mfma", "-lm"][..]));
-            }
-        }
-        // The derivatives' tangents in lanes, which the header computes by default only where
-        // gcc targets AVX-512: portable loops anywhere.
-        if robot.header.contains("#if DYNAMICS_TANGENT_LANES") {
-            let lanes = &[
-                "-DDYNAMICS_TANGENT_LANES=1",
-                "-DDYNAMICS_LIBM_SINCOS",
-                "-lm",
-            ][..];
-            builds.push(("lanes", lanes));
-        }
-        for (name, extra) in builds {
+        for (name, extra) in builds(&robot.header, kernels_too && every) {
             let label = format!("{cc} {}", extra.join(" "));
             let program = dir.join(format!("driver_{cc}_{name}"));
             compile(cc, flags, extra, &source, &program);
