@@ -141,9 +141,7 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
         let doc = match fallback {
             // No link to the exact method: the trait's page has it, the robot's impl may not.
             Some(f) => format!(
-                " {}\n\nThe same values as `{}`, {f}. The other outputs of the request are \
-                 pruned.",
-                method.summary(),
+                " Left exact: the same values as `{}` (bound 0).\n\nNot pruned: {f}.",
                 exact.name()
             ),
             None => format!(
