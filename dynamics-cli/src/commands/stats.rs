@@ -118,21 +118,21 @@ fn bounds(eq: &Equations) -> String {
         );
     };
     if let Some(f) = s.tau_fallback {
-        let _ = writeln!(out, "  T     {f}");
+        let _ = writeln!(out, "  T     exact (bound 0): {f}");
     } else {
         for (i, b) in s.tau_bounds.iter().enumerate() {
             line(&mut out, format!("T{}", i + 1), b);
         }
     }
     if let Some(f) = s.gravity_fallback {
-        let _ = writeln!(out, "  D     {f}");
+        let _ = writeln!(out, "  D     exact (bound 0): {f}");
     } else {
         for (i, b) in s.gravity_bounds.iter().enumerate() {
             line(&mut out, format!("D{}", i + 1), b);
         }
     }
     if let Some(f) = s.mass_fallback {
-        let _ = writeln!(out, "  Dij   {f}");
+        let _ = writeln!(out, "  Dij   exact (bound 0): {f}");
     } else {
         for (i, row) in s.mass_bounds.iter().enumerate() {
             for (j, b) in row.iter().enumerate().skip(i) {

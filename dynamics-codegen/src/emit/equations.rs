@@ -148,8 +148,7 @@ pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
     Some(match fallback {
         // No link to the exact method: the trait's page has it, the robot's impl may not.
         Some(f) => format!(
-            " {}\n\nThe same values as `{}`, {f}. The other outputs of the request are pruned.",
-            method.summary(),
+            " Left exact: the same values as `{}` (bound 0).\n\nNot pruned: {f}.",
             exact.name()
         ),
         None => format!(

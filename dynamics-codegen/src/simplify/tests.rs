@@ -300,9 +300,8 @@ fn the_rustdoc_says_which_output_is_exact() {
                 simplify(tolerance = [0.4, 0.3, 0.2, 0.1, 0.05, 0.02]))] struct Arm;";
     let code = crate::derive_dynamics(text.parse().expect("tokens")).to_string();
     assert!(
-        code.contains(
-            "The same values as `inverse_dynamics`, exact (bound 0): its pruned expansion keeps"
-        ),
+        code.contains("Left exact: the same values as `inverse_dynamics` (bound 0).")
+            && code.contains("Not pruned: its pruned expansion keeps "),
         "{code}"
     );
     assert!(!code.contains("|T1 − T1,simplified|"), "{code}");

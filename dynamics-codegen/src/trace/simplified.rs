@@ -46,14 +46,13 @@ impl fmt::Display for Fallback {
         match self {
             Fallback::TooManyTerms { kept, cap } => write!(
                 f,
-                "exact (bound 0): its pruned expansion keeps {kept} terms or more, more than \
-                 the cap of {cap}; expanded, it would cost far more than the exact form"
+                "its pruned expansion keeps {kept} terms or more, more than the cap of {cap}; \
+                 expanded, it would cost far more than the exact form"
             ),
             Fallback::TooMuchWork { budget } => write!(
                 f,
-                "exact (bound 0): its expansion took more than {budget} term operations, the \
-                 cap that keeps the derive fast; expanded, it would cost far more than the \
-                 exact form"
+                "its expansion took more than {budget} term operations, the cap that keeps the \
+                 derive fast; expanded, it would cost far more than the exact form"
             ),
         }
     }
