@@ -289,6 +289,7 @@ fn simplified_functions_within_their_stated_bounds() {
         for (exact, simplified) in [
             ("inverse_dynamics", "inverse_dynamics_simplified"),
             ("gravity_torques", "gravity_torques_simplified"),
+            ("coriolis_torques", "coriolis_torques_simplified"),
             ("mass_matrix", "mass_matrix_simplified"),
         ] {
             let name = |m: &str| format!("{}_{m}", robot.name);

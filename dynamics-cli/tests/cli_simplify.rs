@@ -56,6 +56,7 @@ fn emit_writes_the_simplified_models_the_file_asks_for() {
     for method in [
         "inverse_dynamics_simplified",
         "mass_matrix_simplified",
+        "coriolis_torques_simplified",
         "gravity_torques_simplified",
     ] {
         assert!(rust.contains(&format!("fn {method}<")), "{method}: {rust}");
@@ -68,7 +69,8 @@ fn emit_writes_the_simplified_models_the_file_asks_for() {
     let derived = derive_dynamics(input).to_string();
     let stated = bounds(&rust, "≤");
     let elements: Vec<&str> = stated.keys().map(String::as_str).collect();
-    assert_eq!(elements, ["D1", "D11", "D12", "D2", "D22", "T1", "T2"]);
+    let all = ["C1", "C2", "D1", "D11", "D12", "D2", "D22", "T1", "T2"];
+    assert_eq!(elements, all);
     assert_eq!(stated, bounds(&derived, "≤"));
     let c = stdout(&dynamics(&["emit", "--lang", "c", TWO_LINK]));
     for name in [

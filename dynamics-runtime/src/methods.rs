@@ -384,14 +384,11 @@ macro_rules! for_each_method {
                 }
             }
             /// Pruned equations of motion with a proven error bound (opt-in, `simplify(...)`): the
-            /// closed forms expanded, the terms dropped whose summed interval bound over the
-            /// envelope of positions, speeds and accelerations stays within the tolerance (or
-            /// `tolerance_percent` of `rated`, by default a URDF's `<limit effort>`s). Each
-            /// method's rustdoc on the robot states every output's bound and the envelope.
+            /// terms dropped whose summed interval bound over the envelope stays within the
+            /// tolerance. Each method's rustdoc on the robot states its bounds and the envelope.
             trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}
-                /// The pruned inverse dynamics, mass matrix and gravity torques; an output too
-                /// large to prune is the exact one (bound 0), as its rustdoc on the robot says.
+                /// The pruned τ, M, C q̇ and g; an output too large to prune is the exact one.
                 family Simplified {
                     name: simplify,
                     module: "__simplified",
@@ -419,6 +416,14 @@ macro_rules! for_each_method {
                         summary: "M(q) pruned within the tolerance over the envelope.",
                         element: "D{i}{j} = D{j}{i} pruned ({equation})",
                         diagonal: "D{i}{i} pruned ({equation})",
+                    }
+                    /// The centripetal and Coriolis torques `C(q, q̇) q̇` pruned within each joint's tolerance.
+                    fn coriolis_torques_simplified(q, qd) -> vector, nalgebra coriolis_torques_simplified_na, batch coriolis_torques_simplified_batch {
+                        variant: CoriolisTorquesSimplified,
+                        equation: None,
+                        prefix: "cqd",
+                        summary: "C(q, q̇) q̇ pruned within the tolerance over the envelope.",
+                        element: "centripetal and Coriolis torque {i} pruned",
                     }
                     /// The gravity torques `g(q)` pruned within each joint's tolerance.
                     fn gravity_torques_simplified(q) -> vector, nalgebra gravity_torques_simplified_na, batch gravity_torques_simplified_batch {

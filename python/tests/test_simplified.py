@@ -39,6 +39,8 @@ def test_the_files_simplified_models_within_their_stated_bounds(two_link):
         "inverse_dynamics": (two_link.inverse_dynamics(q, qd, qdd),
                              two_link.inverse_dynamics_simplified(q, qd, qdd)),
         "gravity_torques": (two_link.gravity_torques(q), two_link.gravity_torques_simplified(q)),
+        "coriolis_torques": (two_link.coriolis_torques(q, qd),
+                             two_link.coriolis_torques_simplified(q, qd)),
         # The bounds of M are its upper triangle's, row by row.
         "mass_matrix": (two_link.mass_matrix(q)[:, upper[0], upper[1]],
                         two_link.mass_matrix_simplified(q)[:, upper[0], upper[1]]),

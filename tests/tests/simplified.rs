@@ -1,4 +1,4 @@
-//! `simplify(...)` through the derive: the pruned τ, M and g against the exact methods of the
+//! `simplify(...)` through the derive: the pruned τ, M, C q̇ and g against the exact methods of the
 //! same robot (the oracle) at random states of the envelope, never further apart than the
 //! proven bound, which the generator gives for the same request; and the ratio of the worst
 //! sampled error to that bound, printed (`--nocapture`) to show that it is not vacuous.
@@ -75,10 +75,13 @@ fn puma_request() -> Simplification {
     }
 }
 
+/// The random robot's request: the default ranges (±π rad for its revolute joints 1 and 3,
+/// ±1 m for its prismatic joint 2), its speeds, the default acceleration.
 fn random_request() -> Simplification {
-    let joints = [1.0, 2.0, 3.0].map(|speed| JointEnvelope {
-        lower: -std::f64::consts::PI,
-        upper: std::f64::consts::PI,
+    let pi = std::f64::consts::PI;
+    let joints = [(pi, 1.0), (1.0, 2.0), (pi, 3.0)].map(|(range, speed)| JointEnvelope {
+        lower: -range,
+        upper: range,
         speed,
         acceleration: 5.0,
     });
@@ -144,9 +147,9 @@ fn panda_request() -> Simplification {
     }
 }
 
-/// The proven bounds of τ, g and M (rows) of the robot in `file` for `request`, and whether
-/// each of the three is left exact.
-fn bounds(file: &str, request: &Simplification) -> ([Vec<PrunedElement>; 3], [bool; 3]) {
+/// The proven bounds of τ, g, C q̇ and M (rows) of the robot in `file` for `request`, and
+/// whether each of the four is left exact.
+fn bounds(file: &str, request: &Simplification) -> ([Vec<PrunedElement>; 4], [bool; 4]) {
     let path = format!("{}/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("the robot file");
     let robot = if file.ends_with(".urdf") {
@@ -160,11 +163,19 @@ fn bounds(file: &str, request: &Simplification) -> ([Vec<PrunedElement>; 3], [bo
     let mut eq = dynamics_codegen::derive(&robot);
     dynamics_codegen::simplify::add(&mut eq, request).expect("simplifies");
     let s = eq.simplified.expect("simplified");
-    let exact = [s.tau_fallback, s.gravity_fallback, s.mass_fallback].map(|f| f.is_some());
-    (
-        [s.tau_bounds, s.gravity_bounds, s.mass_bounds.concat()],
-        exact,
-    )
+    let fallbacks = [
+        s.tau_fallback,
+        s.gravity_fallback,
+        s.coriolis_torques_fallback,
+        s.mass_fallback,
+    ];
+    let bounds = [
+        s.tau_bounds,
+        s.gravity_bounds,
+        s.coriolis_torques_bounds,
+        s.mass_bounds.concat(),
+    ];
+    (bounds, fallbacks.map(|f| f.is_some()))
 }
 
 /// Samples `robot` in the envelope; asserts every pruned output within its bound, and every
@@ -175,9 +186,14 @@ fn check<const N: usize, R: DynamicsSimplified<N>>(
     file: &str,
     request: &Simplification,
 ) -> f64 {
-    let ([tau_b, g_b, m_b], exact) = bounds(file, request);
+    let ([tau_b, g_b, c_b, m_b], exact) = bounds(file, request);
     let mut rng = Rng::new(17);
-    let mut worst = [vec![0.0f64; N], vec![0.0; N], vec![0.0; N * N]];
+    let mut worst = [
+        vec![0.0f64; N],
+        vec![0.0; N],
+        vec![0.0; N],
+        vec![0.0; N * N],
+    ];
     for _ in 0..3000 {
         let e = &request.envelope.joints;
         let q: [f64; N] = std::array::from_fn(|i| rng.range(e[i].lower, e[i].upper));
@@ -191,6 +207,10 @@ fn check<const N: usize, R: DynamicsSimplified<N>>(
             robot.gravity_torques(&q),
             robot.gravity_torques_simplified(&q),
         );
+        let c = (
+            robot.coriolis_torques(&q, &qd),
+            robot.coriolis_torques_simplified(&q, &qd),
+        );
         let m = (
             robot.mass_matrix(&q).concat(),
             robot.mass_matrix_simplified(&q).concat(),
@@ -198,6 +218,7 @@ fn check<const N: usize, R: DynamicsSimplified<N>>(
         let pairs = [
             (&tau.0[..], &tau.1[..]),
             (&g.0[..], &g.1[..]),
+            (&c.0[..], &c.1[..]),
             (&m.0[..], &m.1[..]),
         ];
         for ((w, (x, y)), exact) in worst.iter_mut().zip(pairs).zip(exact) {
@@ -211,10 +232,10 @@ fn check<const N: usize, R: DynamicsSimplified<N>>(
         }
     }
     let mut best_ratio = 0.0f64;
-    for ((name, w), b) in ["tau", "g", "M"]
+    for ((name, w), b) in ["tau", "g", "C qd", "M"]
         .iter()
         .zip(&worst)
-        .zip([&tau_b, &g_b, &m_b])
+        .zip([&tau_b, &g_b, &c_b, &m_b])
     {
         for (k, (w, b)) in w.iter().zip(b).enumerate() {
             assert!(
@@ -259,14 +280,14 @@ fn simplified_as_the_description_file_asks() {
     assert!(ratio > 0.0, "nothing dropped");
 }
 
-/// The Panda at 1 % of its rated torques: g pruned within its bounds; τ and M, whose expanded
-/// forms are far larger than the exact ones, left exact (bound 0) and equal to the exact
+/// The Panda at 1 % of its rated torques: g pruned within its bounds; τ, C q̇ and M, whose
+/// expanded forms are far larger than the exact ones, left exact (bound 0) and equal to the exact
 /// methods to rounding.
 #[test]
 fn the_panda_simplified_within_its_proven_bounds() {
     let request = panda_request();
-    let ([_, g, _], exact) = bounds("../robots/urdf/panda.urdf", &request);
-    assert_eq!(exact, [true, false, true], "τ, g, M left exact");
+    let ([_, g, _, _], exact) = bounds("../robots/urdf/panda.urdf", &request);
+    assert_eq!(exact, [true, false, true, true], "τ, g, C q̇, M left exact");
     assert!(g.iter().filter(|b| b.kept < b.terms).count() >= 5, "{g:?}");
     let ratio = check(&Panda, "../robots/urdf/panda.urdf", &request);
     assert!(ratio > 0.1, "the bound is vacuous: best ratio {ratio}");

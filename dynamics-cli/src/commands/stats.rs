@@ -117,18 +117,17 @@ fn bounds(eq: &Equations) -> String {
             b.bound, b.tolerance, b.kept, b.terms
         );
     };
-    if let Some(f) = s.tau_fallback {
-        let _ = writeln!(out, "  T     exact (bound 0): {f}");
-    } else {
-        for (i, b) in s.tau_bounds.iter().enumerate() {
-            line(&mut out, format!("T{}", i + 1), b);
-        }
-    }
-    if let Some(f) = s.gravity_fallback {
-        let _ = writeln!(out, "  D     exact (bound 0): {f}");
-    } else {
-        for (i, b) in s.gravity_bounds.iter().enumerate() {
-            line(&mut out, format!("D{}", i + 1), b);
+    for (letter, bounds, fallback) in [
+        ("T", &s.tau_bounds, s.tau_fallback),
+        ("C", &s.coriolis_torques_bounds, s.coriolis_torques_fallback),
+        ("D", &s.gravity_bounds, s.gravity_fallback),
+    ] {
+        if let Some(f) = fallback {
+            let _ = writeln!(out, "  {letter}     exact (bound 0): {f}");
+        } else {
+            for (i, b) in bounds.iter().enumerate() {
+                line(&mut out, format!("{letter}{}", i + 1), b);
+            }
         }
     }
     if let Some(f) = s.mass_fallback {
@@ -249,7 +248,13 @@ mod tests {
     fn simplified_methods_and_their_bounds() {
         let args = ["stats", PUMA, "--runs", "1", "--simplified", "--tolerance"];
         let out = run(args.iter().copied().chain(["0.5,0.5,0.5,0.01,0.01,0.01"])).expect("runs");
-        for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+        let methods = [
+            "inverse_dynamics",
+            "mass_matrix",
+            "coriolis_torques",
+            "gravity_torques",
+        ];
+        for method in methods {
             assert!(out.contains(&format!("\n{method} ")), "{out}");
             assert!(out.contains(&format!("\n{method}_simplified ")), "{out}");
         }

@@ -99,6 +99,7 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
     [
         Method::InverseDynamicsSimplified,
         Method::MassMatrixSimplified,
+        Method::CoriolisTorquesSimplified,
         Method::GravityTorquesSimplified,
     ]
     .into_iter()
@@ -136,6 +137,11 @@ pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
             vector("T", &s.tau_bounds),
             s.tau_fallback,
             Method::InverseDynamics,
+        ),
+        Method::CoriolisTorquesSimplified => (
+            vector("C", &s.coriolis_torques_bounds),
+            s.coriolis_torques_fallback,
+            Method::CoriolisTorques,
         ),
         Method::GravityTorquesSimplified => (
             vector("D", &s.gravity_bounds),

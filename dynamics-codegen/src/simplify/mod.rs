@@ -83,7 +83,7 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
     }
     let constants = eval::constants(eq)?;
     let t = &request.tolerance;
-    let (tau, mass, gravity) = {
+    let (tau, mass, coriolis, gravity) = {
         let limits = Limits {
             max_terms: usize::MAX,
             max_work: MAX_WORK,
@@ -95,8 +95,9 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
         };
         let tau = p.vector(&eq.tau, "T", t)?;
         let gravity = p.vector(&eq.gravity, "D", t)?;
+        let coriolis = p.vector(&eq.coriolis_torques, "C", t)?;
         let mass = p.mass(&eq.mass, t)?;
-        (tau, mass, gravity)
+        (tau, mass, coriolis, gravity)
     };
     let mut builder = Builder::new(&mut eq.graph);
     let mut vector = |pruned: Result<Vec<Pruned>, Fallback>, exact_ids: &[NodeId]| {
@@ -115,6 +116,8 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
     };
     let (tau_ids, tau_bounds, tau_fallback) = vector(tau, &eq.tau)?;
     let (gravity_ids, gravity_bounds, gravity_fallback) = vector(gravity, &eq.gravity)?;
+    let (coriolis_ids, coriolis_bounds, coriolis_fallback) =
+        vector(coriolis, &eq.coriolis_torques)?;
     let (mass, mass_bounds, mass_fallback) = match mass {
         Ok(rows) => {
             let mut ids = vec![vec![NodeId(0); n]; n];
@@ -139,12 +142,15 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
         request: request.clone(),
         tau: tau_ids,
         mass,
+        coriolis_torques: coriolis_ids,
         gravity: gravity_ids,
         tau_bounds,
         mass_bounds,
+        coriolis_torques_bounds: coriolis_bounds,
         gravity_bounds,
         tau_fallback,
         mass_fallback,
+        coriolis_torques_fallback: coriolis_fallback,
         gravity_fallback,
     });
     eq.families = eq.families.with(Family::Simplified);

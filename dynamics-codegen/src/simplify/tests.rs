@@ -53,7 +53,7 @@ fn sample(eq: &Equations, e: &Envelope, rng: &mut Rng) -> Vec<f64> {
     })
 }
 
-/// The exact and pruned nodes of τ, g and M's upper triangle, with their bounds and names.
+/// The exact and pruned nodes of τ, g, C q̇ and M's upper triangle, with their bounds and names.
 fn pairs(eq: &Equations) -> Vec<(NodeId, NodeId, PrunedElement, String)> {
     let s = eq.simplified.as_ref().expect("simplified");
     let mut out = Vec::new();
@@ -64,6 +64,12 @@ fn pairs(eq: &Equations) -> Vec<(NodeId, NodeId, PrunedElement, String)> {
             s.gravity[i],
             s.gravity_bounds[i],
             format!("D{}", i + 1),
+        ));
+        out.push((
+            eq.coriolis_torques[i],
+            s.coriolis_torques[i],
+            s.coriolis_torques_bounds[i],
+            format!("C{}", i + 1),
         ));
         for j in i..eq.dof {
             let name = format!("D{}{}", i + 1, j + 1);
@@ -276,7 +282,12 @@ fn the_rustdoc_states_the_bounds_and_the_envelope() {
         crate::derive_dynamics(text.parse().expect("tokens")).to_string()
     };
     let code = derive(", simplify(tolerance = [0.5, 0.1], qd_max = 1.5, q_min = -1, q_max = 1)");
-    for method in ["inverse_dynamics", "mass_matrix", "gravity_torques"] {
+    for method in [
+        "inverse_dynamics",
+        "mass_matrix",
+        "coriolis_torques",
+        "gravity_torques",
+    ] {
         assert!(
             code.contains(&format!("fn {method}_simplified")),
             "{method}"

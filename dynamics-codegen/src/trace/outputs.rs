@@ -175,6 +175,9 @@ impl Method {
             Method::MassMatrixSimplified => {
                 Shape::Matrix(eq.simplified.as_ref().map_or(&[], |s| &s.mass))
             }
+            Method::CoriolisTorquesSimplified => {
+                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.coriolis_torques))
+            }
             Method::GravityTorquesSimplified => {
                 Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.gravity))
             }

@@ -67,18 +67,24 @@ pub struct SimplifiedEquations {
     pub tau: Vec<NodeId>,
     /// `M` pruned, n × n (symmetric: the same node on both sides).
     pub mass: Vec<Vec<NodeId>>,
+    /// `C q̇` pruned.
+    pub coriolis_torques: Vec<NodeId>,
     /// `g` pruned.
     pub gravity: Vec<NodeId>,
     /// The bounds of `tau`.
     pub tau_bounds: Vec<PrunedElement>,
     /// The bounds of `mass`, n × n.
     pub mass_bounds: Vec<Vec<PrunedElement>>,
+    /// The bounds of `coriolis_torques`.
+    pub coriolis_torques_bounds: Vec<PrunedElement>,
     /// The bounds of `gravity`.
     pub gravity_bounds: Vec<PrunedElement>,
     /// Why `tau` is the exact torques, if it is.
     pub tau_fallback: Option<Fallback>,
     /// Why `mass` is the exact mass matrix, if it is.
     pub mass_fallback: Option<Fallback>,
+    /// Why `coriolis_torques` is the exact `C q̇`, if it is.
+    pub coriolis_torques_fallback: Option<Fallback>,
     /// Why `gravity` is the exact gravity torques, if it is.
     pub gravity_fallback: Option<Fallback>,
 }
