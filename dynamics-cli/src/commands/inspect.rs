@@ -109,9 +109,10 @@ mod tests {
         ])
         .expect("runs");
         assert!(out.contains("  T1 = "), "{out}");
-        // M and g pruned too, each with its report.
+        // M, C q̇ and g pruned too, each with its report.
         assert!(out.contains("  D11 = ") && out.contains("  D1 = "), "{out}");
         assert!(out.contains("\nD12: ") && out.contains("\nD2: "), "{out}");
+        assert!(out.contains("  C1 = ") && out.contains("\nC1: "), "{out}");
         assert!(
             out.contains("θ1 ∈ [-1.5, 1.5], |θ1'| ≤ 1, |θ1''| ≤ 5"),
             "{out}"

@@ -12,6 +12,8 @@ pub(super) enum Quantity {
     Christoffel,
     /// The Coriolis matrix `C_ij`.
     Coriolis,
+    /// The centripetal and Coriolis torque `(C q̇)_i`, the simplified models' (`C1`).
+    CoriolisTorque,
     /// The gravity torque `D_i` (eq. 6.45).
     Gravity,
     /// The joint friction torque `F_i`, part of `T_i`.
@@ -31,7 +33,7 @@ impl Quantity {
     fn letter(self, latex: bool) -> &'static str {
         match self {
             Quantity::Inertia | Quantity::Christoffel | Quantity::Gravity => "D",
-            Quantity::Coriolis => "C",
+            Quantity::Coriolis | Quantity::CoriolisTorque => "C",
             Quantity::Friction => "F",
             Quantity::Torque => "T",
             Quantity::HandPose => "", // named per entry (`nx`) by `Label::render`
@@ -47,6 +49,7 @@ impl Quantity {
             Quantity::Inertia => "Inertia D_ij (eq. 6.43); M = D with the actuator inertia I_i(act) on the diagonal (6.39)",
             Quantity::Christoffel => "Centripetal and Coriolis coefficients D_ijk (eq. 6.44; D_ijk = D_ikj)",
             Quantity::Coriolis => "Coriolis matrix C_ij = Σ_k D_ijk θ_k'",
+            Quantity::CoriolisTorque => "Centripetal and Coriolis torques C_i = Σ_jk D_ijk θ_j' θ_k' (C θ')",
             Quantity::Gravity => "Gravity D_i (eq. 6.45), with joint springs",
             Quantity::Friction => "Joint friction F_i, in T_i: viscous θi', Coulomb sgn(θi') (0 at rest) or tanh(θi'/εi) (εi: joint i's smoothing velocity), offset",
             Quantity::Torque => "Joint torques and forces T_i (eq. 6.46)",

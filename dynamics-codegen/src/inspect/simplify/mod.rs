@@ -198,6 +198,13 @@ pub fn inspect_simplified(
         }
     }
     sections.push(section(Quantity::Inertia, &mut entries));
+    for (i, &id) in eq.coriolis_torques.iter().enumerate() {
+        let name = format!("C{}", i + 1);
+        let pruning = one(id, &name, tolerance[i])?;
+        entries.push(entry(Label::new(Quantity::CoriolisTorque, &[i]), &pruning));
+        others.push((name, pruning));
+    }
+    sections.push(section(Quantity::CoriolisTorque, &mut entries));
     for (i, &id) in eq.gravity.iter().enumerate() {
         let name = format!("D{}", i + 1);
         let pruning = one(id, &name, tolerance[i])?;
