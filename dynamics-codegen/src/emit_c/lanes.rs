@@ -3,8 +3,9 @@
 //! rounded up to eight values (`double dq3[8]`, one direction a value), written by one loop
 //! right after the node it is the tangent of, which compilers turn into vector instructions,
 //! and the rows of a Jacobian copied off the output lanes. The header compiles this form where
-//! `DYNAMICS_TANGENT_LANES` is 1 (by default where the compiler targets AVX-512), the columns
-//! one by one from their nodes otherwise.
+//! `DYNAMICS_TANGENT_LANES` is 1 (by default where gcc targets AVX-512, the function then asking
+//! for 512-bit vectors: `DYNAMICS_LANES_WIDE`), the columns one by one from their nodes
+//! otherwise (`emit_c/mod.rs` defines both macros).
 //!
 //! A lane `Σ ± f · e_j + Σ ± f₁ f₂ · x` is, per value `k_`, each direction's units as the row
 //! of the identity `dynamics_unit[j][k_]` times their sum, then each term folded in:
@@ -29,7 +30,7 @@ impl Writer<'_> {
 
     /// The lines of the lanes due before node `before` (all those left for `None`).
     pub(super) fn lanes_due(
-        &mut self,
+        &self,
         queue: &mut Queue,
         before: Option<NodeId>,
         lines: &mut Vec<String>,
@@ -40,7 +41,7 @@ impl Writer<'_> {
     }
 
     /// `double dq5[8];` and the loop writing it.
-    fn lane(&mut self, p: usize, plan: &Tangents, k: usize, lines: &mut Vec<String>) {
+    fn lane(&self, p: usize, plan: &Tangents, k: usize, lines: &mut Vec<String>) {
         let (ty, count) = (self.precision.c_type(), width(plan.directions));
         let name = lane_text(p, k);
         let terms = &plan.lanes[k].terms;
