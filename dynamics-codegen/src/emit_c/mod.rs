@@ -182,7 +182,7 @@ fn tangent_lanes() -> String {
 #endif
 #ifndef DYNAMICS_LANES_WIDE
 /* Eight doubles a vector in the functions with lanes (gcc's default is four on AVX-512). */
-#if DYNAMICS_TANGENT_LANES && defined(__AVX512F__) && defined(__GNUC__) && !defined(__clang__)
+#if DYNAMICS_TANGENT_LANES && defined(__AVX512F__) && defined(__GNUC__) && __GNUC__ >= 8 && !defined(__clang__)
 #define DYNAMICS_LANES_WIDE __attribute__((target(\"prefer-vector-width=512\")))
 #else
 #define DYNAMICS_LANES_WIDE
