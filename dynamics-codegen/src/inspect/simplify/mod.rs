@@ -198,20 +198,18 @@ pub fn inspect_simplified(
         }
     }
     sections.push(section(Quantity::Inertia, &mut entries));
-    for (i, &id) in eq.coriolis_torques.iter().enumerate() {
-        let name = format!("C{}", i + 1);
-        let pruning = one(id, &name, tolerance[i])?;
-        entries.push(entry(Label::new(Quantity::CoriolisTorque, &[i]), &pruning));
-        others.push((name, pruning));
+    for (quantity, letter, ids) in [
+        (Quantity::CoriolisTorque, "C", &eq.coriolis_torques),
+        (Quantity::Gravity, "D", &eq.gravity),
+    ] {
+        for (i, &id) in ids.iter().enumerate() {
+            let name = format!("{letter}{}", i + 1);
+            let pruning = one(id, &name, tolerance[i])?;
+            entries.push(entry(Label::new(quantity, &[i]), &pruning));
+            others.push((name, pruning));
+        }
+        sections.push(section(quantity, &mut entries));
     }
-    sections.push(section(Quantity::CoriolisTorque, &mut entries));
-    for (i, &id) in eq.gravity.iter().enumerate() {
-        let name = format!("D{}", i + 1);
-        let pruning = one(id, &name, tolerance[i])?;
-        entries.push(entry(Label::new(Quantity::Gravity, &[i]), &pruning));
-        others.push((name, pruning));
-    }
-    sections.push(section(Quantity::Gravity, &mut entries));
     Ok(Simplified {
         inspection: Inspection::new(eq, robot, false, sections, Limits::UNBOUNDED),
         envelope: envelope.clone(),
