@@ -23,6 +23,7 @@ pub mod inspect;
 pub mod method;
 pub mod model;
 pub mod numeric;
+pub mod poly;
 pub mod simplify;
 pub mod symbolic;
 pub mod trace;

@@ -2,7 +2,7 @@
 //! equations derived, and each output's exact canonical polynomial compared with the printed
 //! expression (Niku ch. 6, corrected per `docs/errata.md`).
 
-use dynamics_codegen::inspect::Poly;
+use dynamics_codegen::poly::Poly;
 use dynamics_codegen::symbolic::NodeId;
 use dynamics_codegen::{derive, front, Equations};
 

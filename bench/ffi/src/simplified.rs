@@ -8,7 +8,8 @@ use super::{input, output, output_matrix, Function};
 use core::ffi::{c_char, CStr};
 use core::marker::PhantomData;
 use dynamics_bench::{Panda, Puma560};
-use dynamics_codegen::trace::{PrunedElement, SimplifiedEquations};
+use dynamics_codegen::trace::SimplifiedEquations;
+use dynamics_codegen::Method;
 use dynamics_runtime::DynamicsSimplified;
 use std::sync::OnceLock;
 
@@ -71,13 +72,13 @@ fn equations(robot: &[u8]) -> Option<&'static SimplifiedEquations> {
 
 /// The bounds of `function`'s elements, row-major for `M_simplified`.
 fn bounds(s: &SimplifiedEquations, function: &[u8]) -> Option<Vec<f64>> {
-    let bound = |b: &PrunedElement| b.bound;
-    Some(match function {
-        b"tau_simplified" => s.tau_bounds.iter().map(bound).collect(),
-        b"M_simplified" => s.mass_bounds.iter().flatten().map(bound).collect(),
-        b"g_simplified" => s.gravity_bounds.iter().map(bound).collect(),
+    let method = match function {
+        b"tau_simplified" => Method::InverseDynamicsSimplified,
+        b"M_simplified" => Method::MassMatrixSimplified,
+        b"g_simplified" => Method::GravityTorquesSimplified,
         _ => return None,
-    })
+    };
+    Some(s.output(method)?.bounds.all().map(|b| b.bound).collect())
 }
 
 /// Reads a C string.
@@ -144,7 +145,7 @@ pub unsafe extern "C" fn dynamics_bench_simplified_envelope(
 mod tests {
     use super::*;
     use dynamics_bench::samples;
-    use dynamics_codegen::inspect::simplify::eval::constants;
+    use dynamics_codegen::simplify::eval::constants;
     use dynamics_codegen::symbolic::Var;
 
     /// The derive's simplified outputs equal the pruned graph of the request that
@@ -170,7 +171,19 @@ mod tests {
                 r.mass_matrix_simplified(&sample.q).concat(),
                 r.gravity_torques_simplified(&sample.q).to_vec(),
             ];
-            let graph = [s.tau.clone(), s.mass.concat(), s.gravity.clone()];
+            let graph = [
+                Method::InverseDynamicsSimplified,
+                Method::MassMatrixSimplified,
+                Method::GravityTorquesSimplified,
+            ]
+            .map(|m| {
+                s.output(m)
+                    .expect("simplified")
+                    .elements
+                    .all()
+                    .copied()
+                    .collect::<Vec<_>>()
+            });
             for (derived, graph) in derived.iter().zip(&graph) {
                 for (x, id) in derived.iter().zip(graph) {
                     let y = values[id.index()];

@@ -30,7 +30,7 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
         let Some(s) = request("inspect", &args.simplified, &robot, &file)? else {
             return Err(usage("inspect", "--simplified needs --tolerance T"));
         };
-        let simplified = inspect_simplified(&eq, &robot, &s.envelope, &s.tolerance)
+        let simplified = inspect_simplified(&eq, &robot, &s)
             .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
         return Ok(simplified.render(format));
     }

@@ -7,7 +7,7 @@ use dynamics_codegen::inspect::{
     inspect_with_kinematics, Format, Inspection, KinematicPart, Limits,
 };
 use dynamics_codegen::model::{Robot, Simplification};
-use dynamics_codegen::trace::PrunedElement;
+use dynamics_codegen::Method;
 use dynamics_codegen::{derive, expand_robot, generate, Equations, Generated};
 use quote::{quote, ToTokens};
 use std::fmt::Write;
@@ -110,33 +110,29 @@ fn bounds(eq: &Equations) -> String {
     let mut out = String::from(
         "proven bounds of |exact - simplified| over the envelope (tolerance; terms kept of the expanded polynomial):\n",
     );
-    let line = |out: &mut String, name: String, b: &PrunedElement| {
-        let _ = writeln!(
-            out,
-            "  {name:<5} {:>10.3e} ({:.3e}; {} of {})",
-            b.bound, b.tolerance, b.kept, b.terms
-        );
-    };
-    for (letter, bounds, fallback) in [
-        ("T", &s.tau_bounds, s.tau_fallback),
-        ("C", &s.coriolis_torques_bounds, s.coriolis_torques_fallback),
-        ("D", &s.gravity_bounds, s.gravity_fallback),
-    ] {
-        if let Some(f) = fallback {
-            let _ = writeln!(out, "  {letter}     exact (bound 0): {f}");
-        } else {
-            for (i, b) in bounds.iter().enumerate() {
-                line(&mut out, format!("{letter}{}", i + 1), b);
-            }
+    // The vectors first (T, C, D), then M's upper triangle.
+    let order = [
+        Method::InverseDynamicsSimplified,
+        Method::CoriolisTorquesSimplified,
+        Method::GravityTorquesSimplified,
+        Method::MassMatrixSimplified,
+    ];
+    for output in order.into_iter().filter_map(|m| s.output(m)) {
+        if let Some(f) = output.fallback {
+            let name = if output.method == Method::MassMatrixSimplified {
+                "Dij"
+            } else {
+                output.letter
+            };
+            let _ = writeln!(out, "  {name:<5} exact (bound 0): {f}");
+            continue;
         }
-    }
-    if let Some(f) = s.mass_fallback {
-        let _ = writeln!(out, "  Dij   exact (bound 0): {f}");
-    } else {
-        for (i, row) in s.mass_bounds.iter().enumerate() {
-            for (j, b) in row.iter().enumerate().skip(i) {
-                line(&mut out, format!("D{}{}", i + 1, j + 1), b);
-            }
+        for (name, _, b) in output.named_bounds() {
+            let _ = writeln!(
+                out,
+                "  {name:<5} {:>10.3e} ({:.3e}; {} of {})",
+                b.bound, b.tolerance, b.kept, b.terms
+            );
         }
     }
     out

@@ -5,7 +5,7 @@
 
 use crate::inspect::{Format, KinematicPart};
 use crate::method::Method;
-use crate::trace::{Equations, PrunedElement, SimplifiedEquations};
+use crate::trace::{Equations, SimplifiedEquations};
 use crate::{inspect, model};
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -114,48 +114,28 @@ fn simplified_docs(eq: &Equations) -> Vec<(Method, String)> {
 #[must_use]
 pub fn simplified_doc(eq: &Equations, method: Method) -> Option<String> {
     let s = eq.simplified.as_ref()?;
-    let unit = |i: usize| match eq.kinds[i] {
-        crate::algo::JointKind::Revolute => "N·m",
-        crate::algo::JointKind::Prismatic => "N",
+    let output = s.output(method)?;
+    let unit = |joint: Option<usize>| match joint.map(|i| eq.kinds[i]) {
+        Some(crate::algo::JointKind::Revolute) => " N·m",
+        Some(crate::algo::JointKind::Prismatic) => " N",
+        None => "",
     };
-    let vector = |letter: &str, bounds: &[PrunedElement]| {
-        let rows = bounds.iter().enumerate().map(|(i, b)| {
-            format!("|{letter}{0} − {letter}{0},simplified| ≤ {1:.6e} {2} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, b.bound, unit(i), b.tolerance, b.kept, b.terms)
-        });
-        rows.collect::<Vec<_>>().join("\n")
-    };
-    let mass = || {
-        let mass = s.mass_bounds.iter().enumerate().flat_map(|(i, row)| {
-            row.iter().enumerate().skip(i).map(move |(j, b)| {
-                format!("|D{0}{1} − D{0}{1},simplified| ≤ {2:.6e} (tolerance {3:.6e}; {4} of {5} terms kept)", i + 1, j + 1, b.bound, b.tolerance, b.kept, b.terms)
-            })
-        });
-        mass.collect::<Vec<_>>().join("\n")
-    };
-    let (bounds, fallback, exact) = match method {
-        Method::InverseDynamicsSimplified => (
-            vector("T", &s.tau_bounds),
-            s.tau_fallback,
-            Method::InverseDynamics,
-        ),
-        Method::CoriolisTorquesSimplified => (
-            vector("C", &s.coriolis_torques_bounds),
-            s.coriolis_torques_fallback,
-            Method::CoriolisTorques,
-        ),
-        Method::GravityTorquesSimplified => (
-            vector("D", &s.gravity_bounds),
-            s.gravity_fallback,
-            Method::GravityTorques,
-        ),
-        Method::MassMatrixSimplified => (mass(), s.mass_fallback, Method::MassMatrix),
-        _ => return None,
-    };
-    Some(match fallback {
+    let bounds = output.named_bounds().map(|(name, joint, b)| {
+        format!(
+            "|{name} − {name},simplified| ≤ {:.6e}{} (tolerance {:.6e}; {} of {} terms kept)",
+            b.bound,
+            unit(joint),
+            b.tolerance,
+            b.kept,
+            b.terms
+        )
+    });
+    let bounds = bounds.collect::<Vec<_>>().join("\n");
+    Some(match output.fallback {
         // No link to the exact method: the trait's page has it, the robot's impl may not.
         Some(f) => format!(
             " Left exact: the same values as `{}` (bound 0).\n\nNot pruned: {f}.",
-            exact.name()
+            output.exact.name()
         ),
         None => format!(
             " {}\n\nProven over the envelope below (interval arithmetic on the closed form; \

@@ -4,8 +4,8 @@
 //! cosines that several terms share out of them instead, as chapter 3 writes the hand pose:
 //! `px = C1(a2 C2 + a3 C23)`.
 
-use super::{AngleSum, Monomial, Sym};
-use crate::symbolic::Number;
+use crate::poly::{AngleSum, Expander, Monomial, Sym};
+use crate::symbolic::{NodeId, Number};
 use std::collections::BTreeMap;
 
 /// A printed term: `coef · (group) · factors`, with an empty group meaning none.
@@ -14,6 +14,18 @@ pub(super) struct Term {
     pub(super) coef: Number,
     pub(super) group: Vec<Term>,
     pub(super) factors: Monomial,
+}
+
+/// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
+/// arranged; `None` when it does not fit the expander's limits.
+pub(super) fn terms(x: &mut Expander<'_>, id: NodeId) -> Option<Vec<Term>> {
+    Some(arrange(x.folded(id)?.into_iter().collect()))
+}
+
+/// The readable form of node `id` as [`terms`] gives it, its common sines and cosines taken
+/// out (the kinematics).
+pub(super) fn factored_terms(x: &mut Expander<'_>, id: NodeId) -> Option<Vec<Term>> {
+    Some(arrange_factored(x.folded(id)?.into_iter().collect()))
 }
 
 /// Groups terms by their accelerations and velocities, then by their sines and cosines.

@@ -3,48 +3,40 @@
 //! eqs. 6.43–6.46), as plain text or LaTeX. Plain text writes the book's dots as primes
 //! (`θ1'`, `θ1''`), which read the same in a terminal and in rustdoc's code font.
 //!
-//! Each output of the [`Equations`] is expanded into its exact canonical polynomial
-//! ([`Poly`], in `expand`), then rewritten for reading:
+//! Each output of the [`Equations`] is expanded into its exact canonical polynomial, its
+//! products of sines and cosines of joint angles folded back into those of sums
+//! (`C1 C2 − S1 S2` → `C12`; both in [`crate::poly`]), then arranged for reading:
 //!
-//! * products of sines and cosines of joint angles fold back into those of sums
-//!   (`C1 C2 − S1 S2` → `C12`, `S1 C2 + C1 S2` → `S12`; `fold`);
 //! * terms are grouped by their accelerations and velocities (`(…) θ1''`, `… θ1' θ2'`), and
 //!   terms sharing a sine or cosine are grouped with their common parameters taken out
 //!   (`(1/2 m1 + m2) g l1 C1`; `arrange`);
 //! * each equation is named by a typed label (`D12`, `D11 + I1(act)`; `label`) and printed
 //!   as text or LaTeX (`print`, `render`).
 //!
-//! One vocabulary serves the polynomial and the printer: a [`Sym`] is a parameter, a joint
-//! variable or the sine or cosine of a sum of joint angles, and a [`Monomial`] a product of
-//! them.
+//! The printer reads the polynomial's vocabulary ([`crate::poly::Sym`], a parameter, a joint
+//! variable or the sine or cosine of a sum of joint angles), and prints the simplified models'
+//! prunings (`simplified`, `simplified_report`).
 
 mod arrange;
 mod base_parameters;
-mod expand;
-mod fold;
 mod label;
-mod monomial;
 mod number;
-mod parse;
-mod poly;
 mod print;
 mod render;
 mod sections;
-pub mod simplify;
-mod symbol;
+mod simplified;
+mod simplified_report;
 #[cfg(test)]
 mod tests;
 
+pub use crate::poly::Limits;
 pub use base_parameters::render_base_parameters;
-pub use expand::{Expander, Limits};
-pub use monomial::Monomial;
-pub use poly::Poly;
 pub use print::Format;
-pub use simplify::{inspect_simplified, Envelope, JointEnvelope, Simplified};
-pub use symbol::{AngleSum, Sym};
+pub use simplified::{inspect_simplified, Simplified};
 
 use crate::algo::JointKind;
 use crate::model::Robot;
+use crate::poly::Expander;
 use crate::trace::Equations;
 use sections::Section;
 

@@ -7,8 +7,8 @@
 
 use super::arrange::Term;
 use super::number::{decimal, is_small_fraction};
-use super::Sym;
 use crate::algo::JointKind;
+use crate::poly::Sym;
 use crate::symbolic::Number;
 
 /// Output format.

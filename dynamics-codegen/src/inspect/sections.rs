@@ -1,10 +1,10 @@
 //! The printed equations in sections, one per quantity: each entry names the equation and
 //! holds its arranged terms, or nothing when it did not fit the limits.
 
-use super::arrange::Term;
-use super::expand::Expander;
+use super::arrange::{factored_terms, terms, Term};
 use super::label::{Label, Quantity};
 use crate::model::Robot;
+use crate::poly::Expander;
 use crate::trace::Equations;
 
 /// One printed equation: its names (`D12 = D21`) and its right-hand side, `None` when it was
@@ -26,7 +26,7 @@ pub(super) fn sections(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> V
     let n = eq.dof;
     let entry = |x: &mut Expander<'_>, labels, id| Entry {
         labels,
-        value: x.terms(id),
+        value: terms(x, id),
     };
     let gravity = (0..n)
         .map(|i| entry(x, vec![Label::new(Quantity::Gravity, &[i])], eq.gravity[i]))
@@ -95,7 +95,7 @@ fn inertia(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Entry> {
             }
             entries.push(Entry {
                 labels,
-                value: x.terms(eq.mass[i][j]),
+                value: terms(x, eq.mass[i][j]),
             });
         }
     }
@@ -110,7 +110,7 @@ pub(super) fn kinematic_sections(x: &mut Expander<'_>, eq: &Equations) -> Vec<Se
         .flat_map(|column| (0..3).map(move |row| (row, column)))
         .map(|(row, column)| Entry {
             labels: vec![Label::new(Quantity::HandPose, &[row, column])],
-            value: x.factored_terms(k.hand_pose[row][column]),
+            value: factored_terms(x, k.hand_pose[row][column]),
         })
         .collect();
     let mut jacobian = |quantity, rows: &[Vec<_>]| {
@@ -119,7 +119,7 @@ pub(super) fn kinematic_sections(x: &mut Expander<'_>, eq: &Equations) -> Vec<Se
             for (j, &id) in row.iter().enumerate() {
                 entries.push(Entry {
                     labels: vec![Label::new(quantity, &[i, j])],
-                    value: x.factored_terms(id),
+                    value: factored_terms(x, id),
                 });
             }
         }

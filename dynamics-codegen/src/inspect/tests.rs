@@ -1,10 +1,9 @@
 //! Folding, arranging and printing of polynomials typed in [`Poly::parse`] syntax.
 
 use super::arrange::{arrange, arrange_factored};
-use super::fold::fold_trig;
 use super::print::{Format, Printer};
-use super::Poly;
 use crate::algo::JointKind;
+use crate::poly::{fold_trig, Poly};
 
 /// The readable text of a polynomial written in `Poly::parse` syntax.
 fn readable(text: &str, format: Format) -> String {

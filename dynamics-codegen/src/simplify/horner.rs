@@ -4,7 +4,7 @@
 //! recursive form it came from; factoring gives most of them back, and the graph's
 //! hash-consing shares the products that repeat.
 
-use crate::inspect::{AngleSum, Monomial, Sym};
+use crate::poly::{AngleSum, Monomial, Sym};
 use crate::symbolic::{Graph, Node, NodeId, Number, Var};
 use std::collections::BTreeMap;
 

@@ -3,9 +3,11 @@
 //! vacuously (the worst sampled error is reported against the bound).
 
 use super::{add, MAX_KEPT, MAX_WORK};
+use crate::method::Method;
 use crate::model::{Envelope, JointEnvelope, Simplification};
 use crate::symbolic::{NodeId, Var};
-use crate::trace::{derive, Equations, Fallback, PrunedElement};
+use crate::trace::{derive, Elements, Equations, Fallback, PrunedElement};
+use crate::trace::{SimplifiedEquations, SimplifiedOutput};
 use dynamics_test_support::Rng;
 
 fn load(file: &str) -> Equations {
@@ -28,9 +30,7 @@ fn envelope(n: usize) -> Envelope {
 
 /// Every node's value at a random state of `e`.
 fn sample(eq: &Equations, e: &Envelope, rng: &mut Rng) -> Vec<f64> {
-    let offsets = crate::inspect::simplify::eval::constants(eq)
-        .expect("constants")
-        .offsets;
+    let offsets = super::eval::constants(eq).expect("constants").offsets;
     let pick = |rng: &mut Rng, f: fn(&JointEnvelope) -> (f64, f64)| -> Vec<f64> {
         e.joints
             .iter()
@@ -57,26 +57,27 @@ fn sample(eq: &Equations, e: &Envelope, rng: &mut Rng) -> Vec<f64> {
 fn pairs(eq: &Equations) -> Vec<(NodeId, NodeId, PrunedElement, String)> {
     let s = eq.simplified.as_ref().expect("simplified");
     let mut out = Vec::new();
-    for i in 0..eq.dof {
-        out.push((eq.tau[i], s.tau[i], s.tau_bounds[i], format!("T{}", i + 1)));
-        out.push((
-            eq.gravity[i],
-            s.gravity[i],
-            s.gravity_bounds[i],
-            format!("D{}", i + 1),
-        ));
-        out.push((
-            eq.coriolis_torques[i],
-            s.coriolis_torques[i],
-            s.coriolis_torques_bounds[i],
-            format!("C{}", i + 1),
-        ));
-        for j in i..eq.dof {
-            let name = format!("D{}{}", i + 1, j + 1);
-            out.push((eq.mass[i][j], s.mass[i][j], s.mass_bounds[i][j], name));
+    for o in &s.outputs {
+        let exact = super::elements(o.exact.shape(eq));
+        let pruned = exact.upper().zip(o.elements.upper()).zip(o.named_bounds());
+        for (((_, _, &e), (_, _, &p)), (name, _, &b)) in pruned {
+            out.push((e, p, b, name));
         }
     }
     out
+}
+
+/// The output of `method` in `s`.
+fn output(s: &SimplifiedEquations, method: Method) -> &SimplifiedOutput {
+    s.output(method).expect("an output of the family")
+}
+
+/// The elements of a vector output.
+fn vector<T>(e: &Elements<T>) -> &[T] {
+    match e {
+        Elements::Vector(v) => v,
+        Elements::Matrix(_) => panic!("a matrix"),
+    }
 }
 
 /// Prunes `file` at `fraction` of each joint's sampled peak torque; returns the worst
@@ -198,21 +199,21 @@ fn an_output_too_large_is_left_exact() {
     };
     add(&mut eq, &request).expect("simplifies");
     let s = eq.simplified.as_ref().expect("simplified");
-    let Some(Fallback::TooManyTerms { kept, cap }) = s.tau_fallback else {
-        panic!("τ pruned: {:?}", s.tau_fallback);
+    let (tau, mass) = (
+        output(s, Method::InverseDynamicsSimplified),
+        output(s, Method::MassMatrixSimplified),
+    );
+    let gravity = output(s, Method::GravityTorquesSimplified);
+    let Some(Fallback::TooManyTerms { kept, cap }) = tau.fallback else {
+        panic!("τ pruned: {:?}", tau.fallback);
     };
     assert!(kept > cap, "{kept} of {cap}");
-    assert_eq!(s.tau, eq.tau);
-    assert!(s.tau_bounds.iter().all(|b| (b.bound, b.kept) == (0.0, 0)));
-    assert_eq!((s.mass_fallback, s.gravity_fallback), (None, None));
-    let kept: usize = s
-        .mass_bounds
-        .iter()
-        .enumerate()
-        .map(|(i, r)| r[i..].iter().map(|b| b.kept).sum::<usize>())
-        .sum();
+    assert_eq!(vector(&tau.elements), eq.tau);
+    assert!(tau.bounds.all().all(|b| (b.bound, b.kept) == (0.0, 0)));
+    assert_eq!((mass.fallback, gravity.fallback), (None, None));
+    let kept: usize = mass.bounds.upper().map(|(_, _, b)| b.kept).sum();
     assert!(kept < MAX_KEPT, "M keeps {kept}");
-    assert!(s.mass_bounds.concat().iter().any(|b| b.kept < b.terms));
+    assert!(mass.bounds.all().any(|b| b.kept < b.terms));
 }
 
 /// The Panda over its URDF's ranges and speeds at 1 % of its rated torques: its τ passes the
@@ -245,28 +246,38 @@ fn the_panda_prunes_g_and_leaves_tau_and_m_exact() {
     };
     add(&mut eq, &request).expect("simplifies");
     let s = eq.simplified.as_ref().expect("simplified");
+    let (tau, mass) = (
+        output(s, Method::InverseDynamicsSimplified),
+        output(s, Method::MassMatrixSimplified),
+    );
+    let gravity = output(s, Method::GravityTorquesSimplified);
     assert_eq!(
-        s.tau_fallback,
+        tau.fallback,
         Some(Fallback::TooMuchWork { budget: MAX_WORK })
     );
     assert!(
-        matches!(s.mass_fallback, Some(Fallback::TooManyTerms { kept, .. }) if kept > MAX_KEPT),
+        matches!(mass.fallback, Some(Fallback::TooManyTerms { kept, .. }) if kept > MAX_KEPT),
         "{:?}",
-        s.mass_fallback
+        mass.fallback
     );
-    assert_eq!((&s.tau, &s.mass), (&eq.tau, &eq.mass));
-    assert_eq!(s.gravity_fallback, None);
-    let dropped = s.gravity_bounds.iter().filter(|b| b.kept < b.terms);
-    assert!(dropped.count() >= 5, "{:?}", s.gravity_bounds);
+    assert_eq!(vector(&tau.elements), eq.tau);
+    assert_eq!(mass.elements, Elements::Matrix(eq.mass.clone()));
+    assert_eq!(gravity.fallback, None);
+    let gravity_bounds = vector(&gravity.bounds);
+    let dropped = gravity_bounds.iter().filter(|b| b.kept < b.terms);
+    assert!(dropped.count() >= 5, "{gravity_bounds:?}");
     let mut worst = [0.0f64; 7];
     let mut rng = Rng::new(11);
     for _ in 0..2000 {
         let values = sample(&eq, &request.envelope, &mut rng);
-        for (w, (exact, pruned)) in worst.iter_mut().zip(eq.gravity.iter().zip(&s.gravity)) {
+        for (w, (exact, pruned)) in worst
+            .iter_mut()
+            .zip(eq.gravity.iter().zip(vector(&gravity.elements)))
+        {
             *w = w.max((values[exact.index()] - values[pruned.index()]).abs());
         }
     }
-    for (i, (w, b)) in worst.iter().zip(&s.gravity_bounds).enumerate() {
+    for (i, (w, b)) in worst.iter().zip(gravity_bounds).enumerate() {
         assert!(*w <= b.bound + 1e-9, "D{}: {w} over {}", i + 1, b.bound);
     }
 }

@@ -54,7 +54,7 @@ use joints::JointTerms;
 pub use kinematics::KinematicEquations;
 pub use outputs::Shape;
 pub use regressor::RegressorEquations;
-pub use simplified::{Fallback, PrunedElement, SimplifiedEquations};
+pub use simplified::{Elements, Fallback, PrunedElement, SimplifiedEquations, SimplifiedOutput};
 use std::cell::RefCell;
 use tracer::Tracer;
 

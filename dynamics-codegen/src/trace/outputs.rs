@@ -1,7 +1,7 @@
 //! Where a method's result lies in the traced graph: its [`Shape`], which output of the
 //! [`Equations`] each method returns ([`Method::shape`]), and whether the derive writes it.
 
-use super::Equations;
+use super::{Elements, Equations};
 use crate::method::Method;
 use crate::symbolic::{NodeId, Tangents};
 
@@ -169,17 +169,18 @@ impl Method {
             Method::BaseFromJoints => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
             }
-            Method::InverseDynamicsSimplified => {
-                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.tau))
-            }
-            Method::MassMatrixSimplified => {
-                Shape::Matrix(eq.simplified.as_ref().map_or(&[], |s| &s.mass))
-            }
-            Method::CoriolisTorquesSimplified => {
-                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.coriolis_torques))
-            }
-            Method::GravityTorquesSimplified => {
-                Shape::Vector(eq.simplified.as_ref().map_or(&[], |s| &s.gravity))
+            Method::InverseDynamicsSimplified
+            | Method::MassMatrixSimplified
+            | Method::CoriolisTorquesSimplified
+            | Method::GravityTorquesSimplified => {
+                match eq.simplified.as_ref().and_then(|s| s.output(self)) {
+                    Some(o) => match &o.elements {
+                        Elements::Vector(v) => Shape::Vector(v),
+                        Elements::Matrix(m) => Shape::Matrix(m),
+                    },
+                    None if self == Method::MassMatrixSimplified => Shape::Matrix(&[]),
+                    None => Shape::Vector(&[]),
+                }
             }
             Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
                 pivots: &eq.forward.factors.pivots,

@@ -1,6 +1,7 @@
 //! The outputs of the opt-in family `Simplified`: the pruned τ, M and g that the `simplify`
 //! stage (`crate::simplify`) builds back into the graph, with their proven bounds.
 
+use crate::method::Method;
 use crate::model::Simplification;
 use crate::symbolic::NodeId;
 
@@ -58,33 +59,86 @@ impl fmt::Display for Fallback {
     }
 }
 
-/// The pruned outputs, as node ids into the graph, and their bounds, element by element.
+/// The pruned outputs, one row per method of the family, as node ids into the graph, with
+/// their proven bounds element by element.
 #[derive(Clone, Debug)]
 pub struct SimplifiedEquations {
     /// What was asked for: the tolerances and the envelope.
     pub request: Simplification,
-    /// `τ` pruned.
-    pub tau: Vec<NodeId>,
-    /// `M` pruned, n × n (symmetric: the same node on both sides).
-    pub mass: Vec<Vec<NodeId>>,
-    /// `C q̇` pruned.
-    pub coriolis_torques: Vec<NodeId>,
-    /// `g` pruned.
-    pub gravity: Vec<NodeId>,
-    /// The bounds of `tau`.
-    pub tau_bounds: Vec<PrunedElement>,
-    /// The bounds of `mass`, n × n.
-    pub mass_bounds: Vec<Vec<PrunedElement>>,
-    /// The bounds of `coriolis_torques`.
-    pub coriolis_torques_bounds: Vec<PrunedElement>,
-    /// The bounds of `gravity`.
-    pub gravity_bounds: Vec<PrunedElement>,
-    /// Why `tau` is the exact torques, if it is.
-    pub tau_fallback: Option<Fallback>,
-    /// Why `mass` is the exact mass matrix, if it is.
-    pub mass_fallback: Option<Fallback>,
-    /// Why `coriolis_torques` is the exact `C q̇`, if it is.
-    pub coriolis_torques_fallback: Option<Fallback>,
-    /// Why `gravity` is the exact gravity torques, if it is.
-    pub gravity_fallback: Option<Fallback>,
+    /// The outputs, in the order the stage pruned them.
+    pub outputs: Vec<SimplifiedOutput>,
+}
+
+impl SimplifiedEquations {
+    /// The output of the simplified method `method`, if it is one of the family's.
+    #[must_use]
+    pub fn output(&self, method: Method) -> Option<&SimplifiedOutput> {
+        self.outputs.iter().find(|o| o.method == method)
+    }
+}
+
+/// One simplified method's output.
+#[derive(Clone, Debug)]
+pub struct SimplifiedOutput {
+    /// The simplified method (`inverse_dynamics_simplified`).
+    pub method: Method,
+    /// The exact method whose output it prunes (`inverse_dynamics`).
+    pub exact: Method,
+    /// The letter of its elements' names, the book's: `T1`, `D12`, `C1`, `D1`.
+    pub letter: &'static str,
+    /// The pruned elements.
+    pub elements: Elements<NodeId>,
+    /// Each element's bound, in the layout of `elements`.
+    pub bounds: Elements<PrunedElement>,
+    /// Why the elements are the exact ones, if they are.
+    pub fallback: Option<Fallback>,
+}
+
+impl SimplifiedOutput {
+    /// Each element's name and bound once (a matrix's upper triangle, `D11`, `D12`, …), with
+    /// the joint of a vector's element (for its unit).
+    pub fn named_bounds(&self) -> impl Iterator<Item = (String, Option<usize>, &PrunedElement)> {
+        let letter = self.letter;
+        self.bounds.upper().map(move |(i, j, b)| match j {
+            None => (format!("{letter}{}", i + 1), Some(i), b),
+            Some(j) => (format!("{letter}{}{}", i + 1, j + 1), None, b),
+        })
+    }
+}
+
+/// An output's elements: one per joint, or n × n (M, symmetric: the same value both sides).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Elements<T> {
+    /// `v_i`.
+    Vector(Vec<T>),
+    /// `M_ij`, row by row.
+    Matrix(Vec<Vec<T>>),
+}
+
+impl<T> Elements<T> {
+    /// Each element once, `(i, None, v_i)`, or a matrix's upper triangle `(i, Some(j), M_ij)`
+    /// for `j ≥ i`, row by row.
+    pub fn upper(&self) -> impl Iterator<Item = (usize, Option<usize>, &T)> {
+        let (vector, matrix): (&[T], &[Vec<T>]) = match self {
+            Elements::Vector(v) => (v, &[]),
+            Elements::Matrix(m) => (&[], m),
+        };
+        let vector = vector.iter().enumerate().map(|(i, v)| (i, None, v));
+        let matrix = matrix.iter().enumerate().flat_map(|(i, row)| {
+            row.iter()
+                .enumerate()
+                .skip(i)
+                .map(move |(j, v)| (i, Some(j), v))
+        });
+        vector.chain(matrix)
+    }
+
+    /// Every element, a matrix's row by row.
+    pub fn all(&self) -> impl Iterator<Item = &T> {
+        let (vector, matrix): (&[T], &[Vec<T>]) = match self {
+            Elements::Vector(v) => (v, &[]),
+            Elements::Matrix(m) => (&[], m),
+        };
+        vector.iter().chain(matrix.iter().flatten())
+    }
 }

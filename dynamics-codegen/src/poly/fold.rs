@@ -25,7 +25,7 @@ struct Fold {
 /// a fold only shrinks its two terms (never flipping a sign), so only the new term and the
 /// terms it partners can start one. Searching from the start each time made the Panda's
 /// torques take minutes.
-pub(super) fn fold_trig(
+pub(crate) fn fold_trig(
     terms: &mut BTreeMap<Monomial, Number>,
     charge: &mut dyn FnMut(usize) -> Option<()>,
 ) -> Option<()> {
@@ -151,7 +151,7 @@ fn fold_pair(
 #[cfg(test)]
 mod tests {
     use super::{add_term, find_fold, fold_trig};
-    use crate::inspect::{Expander, Limits, Monomial};
+    use crate::poly::{Expander, Limits, Monomial};
     use crate::symbolic::Number;
     use std::collections::BTreeMap;
 

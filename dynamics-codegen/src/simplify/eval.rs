@@ -2,7 +2,7 @@
 //! the full polynomial and the graph: `S12 = sin(θ1 + θ2)` from the joint angles, each with
 //! its constant offset.
 
-use crate::inspect::{Monomial, Sym};
+use crate::poly::{Monomial, Sym};
 use crate::symbolic::{Node, Number, Var};
 use crate::trace::Equations;
 use std::collections::BTreeMap;

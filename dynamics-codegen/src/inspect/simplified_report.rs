@@ -2,10 +2,11 @@
 //! the envelope and, per joint, the terms kept, the proven bound and the largest dropped terms
 //! with their bounds.
 
-use super::{Pruning, Simplified};
-use crate::inspect::arrange::Term;
-use crate::inspect::number::decimal;
-use crate::inspect::print::{Format, Printer};
+use super::arrange::Term;
+use super::number::decimal;
+use super::print::{Format, Printer};
+use super::simplified::Simplified;
+use crate::simplify::Pruning;
 use crate::symbolic::Number;
 use std::fmt::Write;
 
@@ -43,10 +44,7 @@ impl Simplified {
                 num(e.acceleration)
             );
         }
-        for (i, pruning) in self.prunings.iter().enumerate() {
-            element_report(&p, &format!("T{}", i + 1), pruning, &mut report);
-        }
-        for (name, pruning) in &self.others {
+        for (name, pruning) in &self.elements {
             element_report(&p, name, pruning, &mut report);
         }
         for line in report.lines() {

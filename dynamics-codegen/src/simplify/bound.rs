@@ -1,8 +1,8 @@
 //! Bounds of each symbol's absolute value over an [`Envelope`], by interval arithmetic, and of
 //! a monomial's as the product of its factors' bounds.
 
-use super::Envelope;
-use crate::inspect::{AngleSum, Monomial, Sym};
+use crate::model::Envelope;
+use crate::poly::{AngleSum, Monomial, Sym};
 use crate::symbolic::Number;
 use std::f64::consts::{FRAC_PI_2, PI};
 

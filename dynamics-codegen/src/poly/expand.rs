@@ -2,7 +2,6 @@
 //! expanded polynomials grow fast with the number of joints (the code is emitted from the
 //! shared graph, never from these), so what does not fit is reported as too large.
 
-use super::arrange::{arrange, arrange_factored, Term};
 use super::fold::fold_trig;
 use super::{Monomial, Poly, Sym};
 use crate::symbolic::{Node, NodeId, Number};
@@ -126,26 +125,6 @@ impl<'a> Expander<'a> {
     fn charge(&mut self, cost: u64) -> Option<()> {
         self.work = self.work.saturating_add(cost);
         (self.work <= self.limits.max_work).then_some(())
-    }
-
-    /// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
-    /// arranged; `None` when it does not fit the limits.
-    pub(super) fn terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
-        self.arranged(id, arrange)
-    }
-
-    /// The readable form of node `id` as [`Expander::terms`] gives it, its common sines and
-    /// cosines taken out (the kinematics).
-    pub(super) fn factored_terms(&mut self, id: NodeId) -> Option<Vec<Term>> {
-        self.arranged(id, arrange_factored)
-    }
-
-    fn arranged(
-        &mut self,
-        id: NodeId,
-        arrange: fn(Vec<(Monomial, Number)>) -> Vec<Term>,
-    ) -> Option<Vec<Term>> {
-        Some(arrange(self.folded(id)?.into_iter().collect()))
     }
 
     /// The polynomial of node `id`, before folding.

@@ -1,9 +1,9 @@
 //! The proven bound against sampling: the full polynomial is τ (the graph's), and the pruned
 //! one never strays from it by more than the bound at random states of the envelope.
 
-use super::eval::{eval_terms, State};
-use super::{inspect_simplified, Envelope, JointEnvelope, Simplified};
-use crate::model::Robot;
+use super::eval::{eval_terms, Constants, State};
+use super::{prune_outputs, Caps, Pruning};
+use crate::model::{Envelope, JointEnvelope, Robot, Simplification};
 use crate::symbolic::Var;
 use crate::trace::{derive, Equations};
 use dynamics_test_support::Rng;
@@ -68,9 +68,27 @@ fn tolerances(eq: &Equations, offsets: &[f64], e: &Envelope, fraction: f64) -> V
     peak.iter().map(|p| fraction * p).collect()
 }
 
+/// τ's elements pruned over `e` within `tolerance`, with no cap, as `dynamics inspect
+/// --simplified` prunes them.
+fn tau_prunings(eq: &Equations, e: &Envelope, tolerance: &[f64]) -> Result<Vec<Pruning>, String> {
+    let request = Simplification {
+        tolerance: tolerance.to_vec(),
+        envelope: e.clone(),
+    };
+    let outputs = prune_outputs(eq, &request, Caps::NONE)?;
+    let tau = outputs.into_iter().next().expect("τ first").elements;
+    Ok(tau
+        .expect("no cap")
+        .into_iter()
+        .map(|p| p.pruning)
+        .collect())
+}
+
 /// The worst `|full − kept|` per joint over `samples` random states; checks on the way that
 /// the full polynomial is the graph's τ to 1e-9 of its size.
-fn worst_errors(s: &Simplified, eq: &Equations, e: &Envelope, samples: usize) -> Vec<f64> {
+fn worst_errors(prunings: &[Pruning], eq: &Equations, e: &Envelope, samples: usize) -> Vec<f64> {
+    let constants = super::eval::constants(eq).expect("constants");
+    let k: &Constants = &constants;
     let mut rng = Rng::new(11);
     let mut worst = vec![0.0f64; eq.dof];
     for _ in 0..samples {
@@ -80,10 +98,10 @@ fn worst_errors(s: &Simplified, eq: &Equations, e: &Envelope, samples: usize) ->
             qd: &x[1],
             qdd: &x[2],
         };
-        let tau = graph_tau(eq, &s.constants.offsets, &x);
-        for (i, p) in s.prunings.iter().enumerate() {
-            let full = eval_terms(&p.full, at, &s.constants).expect("numeric");
-            let kept = eval_terms(&p.kept, at, &s.constants).expect("numeric");
+        let tau = graph_tau(eq, &k.offsets, &x);
+        for (i, p) in prunings.iter().enumerate() {
+            let full = eval_terms(&p.full, at, k).expect("numeric");
+            let kept = eval_terms(&p.kept, at, k).expect("numeric");
             let scale = 1.0 + tau[i].abs();
             assert!(
                 (full - tau[i]).abs() <= 1e-9 * scale,
@@ -99,14 +117,14 @@ fn worst_errors(s: &Simplified, eq: &Equations, e: &Envelope, samples: usize) ->
 
 /// Prunes `file`'s τ at `fraction` of each joint's sampled peak and samples the error.
 fn check_sound(file: &str, fraction: f64, samples: usize) {
-    let (robot, eq) = load(file);
+    let (_, eq) = load(file);
     let e = envelope(eq.dof);
     let offsets = super::eval::constants(&eq).expect("constants").offsets;
     let tol = tolerances(&eq, &offsets, &e, fraction);
-    let s = inspect_simplified(&eq, &robot, &e, &tol).expect("prunes");
-    let worst = worst_errors(&s, &eq, &e, samples);
+    let prunings = tau_prunings(&eq, &e, &tol).expect("prunes");
+    let worst = worst_errors(&prunings, &eq, &e, samples);
     let mut dropped = 0;
-    for (i, p) in s.prunings.iter().enumerate() {
+    for (i, p) in prunings.iter().enumerate() {
         assert!(
             p.bound <= p.tolerance,
             "T{}: bound over the tolerance",
@@ -152,14 +170,14 @@ fn friction_and_rotors_within_their_bound() {
 
 #[test]
 fn a_zero_tolerance_keeps_everything_and_a_huge_one_nothing() {
-    let (robot, eq) = load("robots/puma560.toml");
+    let (_, eq) = load("robots/puma560.toml");
     let e = envelope(eq.dof);
-    let all = inspect_simplified(&eq, &robot, &e, &[0.0; 6]).expect("prunes");
-    for p in &all.prunings {
+    let all = tau_prunings(&eq, &e, &[0.0; 6]).expect("prunes");
+    for p in &all {
         assert_eq!((p.kept.len(), p.bound), (p.full.len(), 0.0));
     }
-    let none = inspect_simplified(&eq, &robot, &e, &[1e9; 6]).expect("prunes");
-    for p in &none.prunings {
+    let none = tau_prunings(&eq, &e, &[1e9; 6]).expect("prunes");
+    for p in &none {
         assert!(p.kept.is_empty() && p.bound <= p.magnitude * (1.0 + 1e-9));
         assert!(p.bound > 0.0);
     }
@@ -167,10 +185,8 @@ fn a_zero_tolerance_keeps_everything_and_a_huge_one_nothing() {
 
 #[test]
 fn a_parameter_cannot_be_bounded() {
-    let (robot, eq) = load("robots/niku_example_6_1.toml");
-    let error = inspect_simplified(&eq, &robot, &envelope(1), &[0.1])
-        .err()
-        .expect("refused");
+    let (_, eq) = load("robots/niku_example_6_1.toml");
+    let error = tau_prunings(&eq, &envelope(1), &[0.1]).expect_err("refused");
     assert!(error.contains("the parameter `"), "{error}");
     assert!(error.starts_with("T1: "), "{error}");
 }
