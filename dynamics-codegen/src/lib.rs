@@ -23,6 +23,7 @@ pub mod inspect;
 pub mod method;
 pub mod model;
 pub mod numeric;
+pub mod pipeline;
 pub mod poly;
 pub mod simplify;
 pub mod symbolic;
@@ -33,6 +34,7 @@ use quote::quote;
 
 pub use emit::{generate, Generated, MethodCode, OpCount};
 pub use method::{Family, FamilySet, Method};
+pub use pipeline::{load, Diagnostic, Loaded, Source};
 pub use trace::{derive, Equations};
 
 /// Entry point of `#[derive(Dynamics)]`.

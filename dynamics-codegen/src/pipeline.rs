@@ -1,0 +1,286 @@
+//! The front door: the generator's pipeline as a few calls, for every driver of a description
+//! file (the commands, the benchmarks, Python). The derive enters through
+//! [`crate::derive_dynamics`]; the two share every stage behind these calls.
+//!
+//! ```text
+//! load(source)          front (a TOML or JSON description, a URDF) → check: a checked Robot
+//!   .simplification(..) the file's [simplify] with the caller's overrides, resolved
+//!   .equations(..)      trace → the opt-in families → simplify: the Equations to emit
+//! ```
+//!
+//! Errors are data: a [`Diagnostic`] holds the file, line and column of a problem and its
+//! message, printed one way (`file:line:col: message`).
+
+use crate::check;
+use crate::front::{self, Chain, FileError, FileRequest, RequestError};
+use crate::method::{Family, FamilySet};
+use crate::model::{Placement, Robot, Simplification, Value};
+use crate::trace::{self, Equations};
+use std::fmt;
+
+/// A problem with a description, and where it is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    /// The file, as its path was given; `None` for a problem of the caller's own values.
+    pub file: Option<String>,
+    /// Line, 1-based, where the problem has a place in the file.
+    pub line: Option<usize>,
+    /// Column, 1-based.
+    pub column: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl Diagnostic {
+    /// A problem of the file `path` as a whole (no line).
+    fn of_file(path: &str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            file: Some(path.to_owned()),
+            line: None,
+            column: None,
+            message: message.into(),
+        }
+    }
+
+    /// A problem at `at` (line, column) in `path`, or of the whole file.
+    fn at(path: &str, at: Option<(usize, usize)>, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            line: at.map(|(line, _)| line),
+            column: at.map(|(_, column)| column),
+            ..Diagnostic::of_file(path, message)
+        }
+    }
+
+    fn from_file_error(path: &str, e: &FileError) -> Diagnostic {
+        let at = e.line.zip(e.column);
+        Diagnostic::at(path, at, e.message.clone())
+    }
+}
+
+/// `file:line:col: message`, `file: message` without a place, `message` without a file.
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (&self.file, self.line, self.column) {
+            (Some(file), Some(line), Some(column)) => {
+                write!(f, "{file}:{line}:{column}: {}", self.message)
+            }
+            (Some(file), ..) => write!(f, "{file}: {}", self.message),
+            (None, ..) => f.write_str(&self.message),
+        }
+    }
+}
+
+/// Where a robot's description comes from.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Source<'a> {
+    /// The file's path as the user wrote it (messages name it); `*.urdf` is read as a URDF,
+    /// `*.toml` and `*.json` as description files.
+    pub path: &'a str,
+    /// The file's text, or `None` to read it from `path`.
+    pub text: Option<&'a str>,
+    /// A URDF's chain: its base and tip links (by default the root and the one leaf).
+    pub chain: Chain<'a>,
+}
+
+impl<'a> Source<'a> {
+    /// The file at `path`, read when loaded.
+    #[must_use]
+    pub fn file(path: &'a str) -> Source<'a> {
+        Source {
+            path,
+            ..Source::default()
+        }
+    }
+
+    /// Whether it is a URDF file.
+    #[must_use]
+    pub fn is_urdf(&self) -> bool {
+        self.path.ends_with(".urdf")
+    }
+}
+
+/// A robot read and checked as the derive reads it, with what its file asks of the
+/// simplified models.
+pub struct Loaded {
+    /// The robot.
+    pub robot: Robot,
+    /// The file's path, as given.
+    pub path: String,
+    is_urdf: bool,
+    request: FileRequest,
+}
+
+/// Reads the description of `source` and checks it as the derive does (values, then the
+/// physical checks of each link and the joint count).
+///
+/// # Errors
+/// Every problem found, each with its file, line and column where it has them.
+pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
+    let path = source.path;
+    let read;
+    let text = match source.text {
+        Some(text) => text,
+        None => {
+            read = std::fs::read_to_string(path)
+                .map_err(|e| vec![Diagnostic::of_file(path, e.to_string())])?;
+            &read
+        }
+    };
+    let (loaded, limits) = if source.is_urdf() {
+        let loaded = front::load_urdf(path, text, source.chain, true).map_err(|errors| {
+            let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
+            each.collect::<Vec<_>>()
+        })?;
+        (loaded, front::joint_limits(text, source.chain).ok())
+    } else {
+        let loaded =
+            front::load(path, text).map_err(|e| vec![Diagnostic::from_file_error(path, &e)])?;
+        (loaded, None)
+    };
+    let problems: Vec<Diagnostic> = check::robot(&loaded.robot, &loaded.check_inertia)
+        .iter()
+        .map(|problem| {
+            let at = loaded.sources.place(problem).copied();
+            Diagnostic::at(path, at, problem.to_string())
+        })
+        .collect();
+    if !problems.is_empty() {
+        return Err(problems);
+    }
+    Ok(Loaded {
+        robot: loaded.robot,
+        path: path.to_owned(),
+        is_urdf: source.is_urdf(),
+        request: FileRequest {
+            given: loaded.simplify,
+            limits,
+            path: path.to_owned(),
+        },
+    })
+}
+
+impl Loaded {
+    /// The robot with its hand frame at `[x, y, z, roll, pitch, yaw]` in the last link's frame.
+    ///
+    /// # Errors
+    /// A URDF, whose hand frame is its tip link, or a description that declares its own tool
+    /// (which this would override unseen): the message says which.
+    pub fn with_tool(mut self, tool: [f64; 6]) -> Result<Loaded, String> {
+        let path = &self.path;
+        if self.is_urdf {
+            return Err(format!("the hand frame of `{path}` is its tip link"));
+        }
+        if self.robot.tool.is_some() {
+            return Err(format!("`{path}` declares a `tool` already"));
+        }
+        let [x, y, z, roll, pitch, yaw] = tool.map(Value::from_f64);
+        self.robot.tool = Some(Placement {
+            xyz: [x, y, z],
+            rpy: [roll, pitch, yaw],
+        });
+        Ok(self)
+    }
+
+    /// The simplified models the file asks for (its `[simplify]`, a URDF's `<limit>`s as the
+    /// defaults), each key of `overrides` (a key of `simplify(...)` and its values, one for
+    /// every joint or one per joint) in place of the file's; `None` where neither asks.
+    ///
+    /// # Errors
+    /// Every mistake, each placed: in the file, or in the overrides (`in_file` false).
+    pub fn simplification(
+        &self,
+        overrides: &[(&'static str, Vec<f64>)],
+    ) -> Result<Option<Simplification>, Vec<RequestError>> {
+        self.request.resolve(&self.robot, overrides)
+    }
+
+    /// The robot's equations: every family the derive always generates, the opt-in ones of
+    /// `families`, and the simplified models of `simplification` (which ask for their
+    /// family), as the derive builds them.
+    ///
+    /// # Errors
+    /// Simplified models that cannot be built (`file: simplify: ...`).
+    pub fn equations(
+        &self,
+        families: FamilySet,
+        simplification: Option<&Simplification>,
+    ) -> Result<Equations, Diagnostic> {
+        let mut eq = trace::derive(&self.robot);
+        eq.add_families(&self.robot, families);
+        if let Some(request) = simplification {
+            crate::simplify::add(&mut eq, request)
+                .map_err(|e| Diagnostic::of_file(&self.path, format!("simplify: {e}")))?;
+            debug_assert!(eq.families.contains(Family::Simplified));
+        }
+        Ok(eq)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{load, Diagnostic, Source};
+    use crate::method::{Family, FamilySet, Method};
+
+    fn robots(file: &str) -> String {
+        format!("{}/../robots/{file}", env!("CARGO_MANIFEST_DIR"))
+    }
+
+    #[test]
+    fn a_file_loads_and_gives_its_equations() {
+        let path = robots("puma560.toml");
+        let loaded = load(&Source::file(&path)).expect("loads");
+        assert_eq!(loaded.robot.dof(), 6);
+        let families = FamilySet::default().with(Family::Derivatives);
+        let eq = loaded.equations(families, None).expect("traces");
+        assert!(eq.families.has(Method::InverseDynamicsDerivatives));
+        assert!(!eq.families.contains(Family::Simplified));
+    }
+
+    /// A value the checks refuse (an inertia no rigid body has: 1 + 1 < 3) is placed at its
+    /// line and column; an unreadable file names the file.
+    #[test]
+    fn errors_are_data_with_their_places() {
+        let text = "name = \"arm\"\ngravity = [0, 0, -9.81]\n\n[[joints]]\ntype = \"revolute\"\n\
+                    a = 1\nmass = 2\ninertia = [1, 1, 3, 0, 0, 0]\n";
+        let source = Source {
+            path: "arm.toml",
+            text: Some(text),
+            ..Source::default()
+        };
+        let errors = load(&source).err().expect("refused");
+        let Diagnostic {
+            file, line, column, ..
+        } = &errors[0];
+        assert_eq!(
+            (file.as_deref(), *line, *column),
+            (Some("arm.toml"), Some(8), Some(11))
+        );
+        assert!(
+            errors[0].to_string().starts_with("arm.toml:8:11: "),
+            "{}",
+            errors[0]
+        );
+        let missing = load(&Source::file("no/such/robot.toml"))
+            .err()
+            .expect("refused");
+        assert_eq!(missing[0].file.as_deref(), Some("no/such/robot.toml"));
+        assert_eq!(missing[0].line, None);
+        assert!(missing[0].to_string().starts_with("no/such/robot.toml: "));
+    }
+
+    #[test]
+    fn a_tool_only_where_the_file_has_none() {
+        let path = robots("puma560.toml");
+        let with = load(&Source::file(&path)).expect("loads");
+        let with = with
+            .with_tool([0.0, 0.0, 0.1, 0.0, 0.0, 0.0])
+            .expect("no tool yet");
+        assert!(with.robot.tool.is_some());
+        let again = with.with_tool([0.0; 6]).err().expect("declared");
+        assert!(again.contains("declares a `tool` already"), "{again}");
+        let urdf = robots("urdf/ur5.urdf");
+        let ur5 = load(&Source::file(&urdf)).expect("loads");
+        let refused = ur5.with_tool([0.0; 6]).err().expect("a URDF's tip");
+        assert!(refused.contains("is its tip link"), "{refused}");
+    }
+}
