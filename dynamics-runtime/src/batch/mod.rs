@@ -52,7 +52,7 @@ pub trait BatchScalar<const L: usize>: RealScalar {
 }
 
 // Not `F64x8` where the build has AVX-512: on the Xeon measured, τ and M in batches ran no
-// faster in eight lanes than in four (bench/README.md), and the eight-lane gathers and
+// faster in eight lanes than in four (docs/performance.md), and the eight-lane gathers and
 // transposes cost more for 6 or 7 joints.
 impl BatchScalar<4> for f64 {
     type Lanes = crate::F64x4;
