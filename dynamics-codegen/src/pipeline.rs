@@ -181,6 +181,12 @@ impl Loaded {
         Ok(self)
     }
 
+    /// Whether the file has a `[simplify]` table of its own.
+    #[must_use]
+    pub fn asks_simplified(&self) -> bool {
+        self.request.given.is_some()
+    }
+
     /// The simplified models the file asks for (its `[simplify]`, a URDF's `<limit>`s as the
     /// defaults), each key of `overrides` (a key of `simplify(...)` and its values, one for
     /// every joint or one per joint) in place of the file's; `None` where neither asks.

@@ -55,7 +55,7 @@ fn equations(args: &Emit) -> Result<(Robot, Equations), Failure> {
     let (robot, request) = load_with_request(&args.robot)?;
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
-    let simplify = simplification(&robot, &request, &[], "emit")?;
+    let simplify = simplification(&request, &[], "emit")?;
     add_simplified(&mut eq, simplify.as_ref(), &args.robot.path)?;
     Ok((robot, eq))
 }

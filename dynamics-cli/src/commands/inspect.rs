@@ -7,11 +7,11 @@ use super::eval::usage;
 use super::{base_parameters, load_with_request, simplification, Failure};
 use crate::args::{Inspect, Numbers, Simplified};
 use dynamics_codegen::derive;
-use dynamics_codegen::front::FileRequest;
 use dynamics_codegen::inspect::{
     inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Format, Limits,
 };
 use dynamics_codegen::model::{Robot, Simplification};
+use dynamics_codegen::Loaded;
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
     let (robot, file) = load_with_request(&args.robot)?;
@@ -49,7 +49,7 @@ pub(super) fn request(
     command: &str,
     args: &Simplified,
     robot: &Robot,
-    file: &FileRequest,
+    file: &Loaded,
 ) -> Result<Option<Simplification>, Failure> {
     let n = robot.joints.len();
     let options = [
@@ -75,7 +75,7 @@ pub(super) fn request(
         overrides.push((key, v.clone()));
     }
     let tolerance = args.tolerance.is_some() || args.tolerance_percent.is_some();
-    if args.simplified && !tolerance && file.given.is_none() {
+    if args.simplified && !tolerance && !file.asks_simplified() {
         let message = format!(
             "--simplified needs --tolerance T (or --tolerance-percent P): `{}` has no \
              `[simplify]` table to take it from",
@@ -83,7 +83,7 @@ pub(super) fn request(
         );
         return Err(usage(command, &message));
     }
-    simplification(robot, file, &overrides, command)
+    simplification(file, &overrides, command)
 }
 
 #[cfg(test)]

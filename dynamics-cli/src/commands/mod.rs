@@ -11,14 +11,13 @@ mod simulate_batch;
 mod size;
 mod stats;
 
-use crate::args::{Cli, Command, RobotFile, Tool};
+use crate::args::{Cli, Command, RobotFile};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
-use dynamics_codegen::check;
 use dynamics_codegen::front;
-use dynamics_codegen::model::{Placement, Robot, Simplification, Value};
+use dynamics_codegen::model::{Robot, Simplification};
 use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
-use dynamics_codegen::Equations;
+use dynamics_codegen::{Equations, Loaded, Source};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
@@ -71,57 +70,38 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
 
 /// [`load`], with what the file asks of the simplified models (its `[simplify]`, a URDF's
 /// `<limit>`s), as the derive reads them for `file = ".."` or `urdf = ".."`.
-fn load_with_request(robot: &RobotFile) -> Result<(Robot, front::FileRequest), Failure> {
+fn load_with_request(robot: &RobotFile) -> Result<(Robot, Loaded), Failure> {
     let path = robot.path.as_str();
-    let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    // `file:line:col: message`, or `file: message` when the error has no place.
-    let at = |e: &front::FileError| {
-        let sep = if e.line.is_some() && e.column.is_some() {
-            ":"
-        } else {
-            ": "
-        };
-        format!("{path}{sep}{e}")
-    };
-    let mut limits = None;
-    let loaded = if path.ends_with(".urdf") {
-        let chain = front::Chain {
+    let source = Source {
+        path,
+        text: None,
+        chain: front::Chain {
             base: robot.base.as_deref(),
             tip: robot.tip.as_deref(),
-        };
-        let loaded = front::load_urdf(path, &text, chain, true).map_err(|errors| {
-            let lines: Vec<String> = errors.iter().map(at).collect();
-            Failure::File(lines.join("\ndynamics: "))
-        })?;
-        limits = front::joint_limits(&text, chain).ok();
-        loaded
-    } else if robot.base.is_some() || robot.tip.is_some() {
+        },
+    };
+    if !source.is_urdf() && (robot.base.is_some() || robot.tip.is_some()) {
         let message =
             format!("--base and --tip name links of a URDF file; `{path}` is not one (*.urdf)");
         return Err(Failure::Usage(
             Cli::command().error(ErrorKind::ArgumentConflict, message),
         ));
-    } else {
-        front::load(path, &text).map_err(|e| Failure::File(at(&e)))?
-    };
-    let mut loaded = loaded;
+    }
+    let mut loaded = dynamics_codegen::load(&source).map_err(|diagnostics| {
+        let lines: Vec<String> = diagnostics.iter().map(ToString::to_string).collect();
+        Failure::File(lines.join("\ndynamics: "))
+    })?;
     if let Some(tool) = &robot.tool {
-        loaded.robot.tool = Some(tool_placement(path, tool, loaded.robot.tool.is_some())?);
+        loaded = loaded.with_tool(tool.0).map_err(|message| {
+            let message = if source.is_urdf() {
+                format!("--tool: {message}; choose it with --tip")
+            } else {
+                format!("--tool: {message}")
+            };
+            Failure::Usage(Cli::command().error(ErrorKind::ArgumentConflict, message))
+        })?;
     }
-    let problems: Vec<String> = check::robot(&loaded.robot, &loaded.check_inertia)
-        .iter()
-        .map(|problem| loaded.describe(path, problem))
-        .collect();
-    if problems.is_empty() {
-        let request = front::FileRequest {
-            given: loaded.simplify,
-            limits,
-            path: path.to_owned(),
-        };
-        Ok((loaded.robot, request))
-    } else {
-        Err(Failure::File(problems.join("\ndynamics: ")))
-    }
+    Ok((loaded.robot.clone(), loaded))
 }
 
 /// The simplified models of `robot` that the file's `request` asks for, each key of
@@ -129,12 +109,11 @@ fn load_with_request(robot: &RobotFile) -> Result<(Robot, front::FileRequest), F
 /// mistake of the file's is a file error, one of the command line's a usage error of
 /// `command`.
 fn simplification(
-    robot: &Robot,
-    request: &front::FileRequest,
+    loaded: &Loaded,
     overrides: &[(&'static str, Vec<f64>)],
     command: &str,
 ) -> Result<Option<Simplification>, Failure> {
-    request.resolve(robot, overrides).map_err(|problems| {
+    loaded.simplification(overrides).map_err(|problems| {
         match problems.iter().find(|p| !p.in_file) {
             // The command line's options as the user wrote them, not the file's keys.
             Some(p) => {
@@ -165,26 +144,6 @@ fn add_simplified(
             .map_err(|e| Failure::File(format!("{path}: simplify: {e}"))),
         None => Ok(()),
     }
-}
-
-/// `--tool x,y,z,roll,pitch,yaw` as the robot's tool, refused where the file has one: a URDF's
-/// hand frame is its tip link (choose it with `--tip`), and a description's own `tool` would be
-/// overridden unseen.
-fn tool_placement(path: &str, tool: &Tool, declared: bool) -> Result<Placement, Failure> {
-    let message = if path.ends_with(".urdf") {
-        format!("--tool: the hand frame of `{path}` is its tip link; choose it with --tip")
-    } else if declared {
-        format!("--tool: `{path}` declares a `tool` already")
-    } else {
-        let [x, y, z, roll, pitch, yaw] = tool.0.map(Value::from_f64);
-        return Ok(Placement {
-            xyz: [x, y, z],
-            rpy: [roll, pitch, yaw],
-        });
-    };
-    Err(Failure::Usage(
-        Cli::command().error(ErrorKind::ArgumentConflict, message),
-    ))
 }
 
 /// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for.
