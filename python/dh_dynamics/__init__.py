@@ -12,10 +12,25 @@ machine (cached) and calls them over whole batches of states::
     q, qd, qdd = np.random.default_rng(0).uniform(-1, 1, (3, 1000, 6))
     tau = robot.inverse_dynamics(q, qd, qdd)        # (1000, 6), one call
     print(robot.equations())                        # M, C, g in the book's notation
+
+A description whose quantities are symbols (``mass = "m1"``) takes their values::
+
+    arm = dh_dynamics.Robot.from_file("robots/articulated_3r.toml",
+                                      parameters={"m1": 1, "m2": 2, "m3": 1, "a2": 0.4,
+                                                  "a3": 0.3, "g": 9.81})
+    arm.parameters["m3"] = 1.5                      # a payload, say
 """
 
 from ._compiled import CompilerError
-from ._errors import DescriptionError, NotPositiveDefinite
+from ._errors import DescriptionError, NonFiniteInput, NotPositiveDefinite
+from ._parameters import Parameters
 from .robot import Robot
 
-__all__ = ["Robot", "DescriptionError", "NotPositiveDefinite", "CompilerError"]
+__all__ = [
+    "Robot",
+    "Parameters",
+    "DescriptionError",
+    "NonFiniteInput",
+    "NotPositiveDefinite",
+    "CompilerError",
+]

@@ -5,11 +5,14 @@ The library holds the header's batch functions (``DYNAMICS_BATCH``): each method
 states in one call, so that a NumPy batch costs one foreign call and no Python loop.
 
 The cache is ``$DH_DYNAMICS_CACHE`` or ``$XDG_CACHE_HOME/dh_dynamics`` (``~/.cache/dh_dynamics``);
-the compiler ``$CC`` or the first of ``cc``, ``gcc``, ``clang``; the flags ``$DH_DYNAMICS_CFLAGS``
-or ``-O2 -march=native -ffp-contract=fast`` (the vector units and fused multiply-adds of this
-machine; without ``-march=native`` where the compiler refuses it).
+where it cannot be written, a private temporary directory for this process, with a warning that
+names the directory that failed and the variable that moves it. The compiler is ``$CC`` or the
+first of ``cc``, ``gcc``, ``clang``; the flags ``$DH_DYNAMICS_CFLAGS`` or ``-O2 -march=native
+-ffp-contract=fast`` (the vector units and fused multiply-adds of this machine; without
+``-march=native`` where the compiler refuses it).
 """
 
+import atexit
 import ctypes
 import hashlib
 import os
@@ -18,6 +21,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import warnings
 from pathlib import Path
 
 _DEFAULT_FLAGS = ["-O2", "-march=native", "-ffp-contract=fast"]
@@ -48,7 +52,10 @@ def _compiler():
 
 
 def _version(cc):
-    run = subprocess.run([cc, "--version"], capture_output=True, text=True, check=False)
+    try:
+        run = subprocess.run([cc, "--version"], capture_output=True, text=True, check=False)
+    except OSError as error:
+        raise CompilerError(f"{cc} cannot be run: {error}") from None
     return run.stdout
 
 
@@ -73,7 +80,11 @@ def _build(cc, flags, header, library):
         (scratch / "robot.c").write_text(_SOURCE)
         out = scratch / library.name
         command = [cc, "-std=c99", "-shared", "-fPIC", *flags, "-o", str(out), "robot.c", "-lm"]
-        run = subprocess.run(command, cwd=scratch, capture_output=True, text=True, check=False)
+        try:
+            run = subprocess.run(command, cwd=scratch, capture_output=True, text=True,
+                                 check=False)
+        except OSError as error:
+            raise CompilerError(f"{cc} cannot be run: {error}") from None
         if run.returncode != 0:
             return run.stderr
         os.replace(out, library)
@@ -90,12 +101,63 @@ def load(header):
         key = hashlib.sha256(
             "\0".join([header, cc, _version(cc), *flags, sys.platform, _machine()]).encode()
         ).hexdigest()[:32]
-        library = _cache_dir() / f"{key}.so"
-        if not library.exists():
-            library.parent.mkdir(parents=True, exist_ok=True)
-            error = _build(cc, flags, header, library)
+        library = _cached(_cache_dir() / f"{key}.so")
+        if library is None:
+            path, error = _build_somewhere(cc, flags, header, f"{key}.so")
             if error is not None:
                 errors.append(f"{cc} {' '.join(flags)}:\n{error}")
                 continue
-        return ctypes.CDLL(str(library))
+            library = ctypes.CDLL(str(path))
+        return library
     raise CompilerError("the robot's header did not compile:\n" + "\n".join(errors))
+
+
+def _cached(path):
+    """The library at ``path`` if it is there and loads (a damaged file is built again)."""
+    if not path.exists():
+        return None
+    try:
+        return ctypes.CDLL(str(path))
+    except OSError:
+        return None
+
+
+def _build_somewhere(cc, flags, header, name):
+    """Builds ``name`` in the cache, or where the cache cannot be written in this process's
+    temporary directory: its path and the compiler's errors (``None`` if it compiled)."""
+    cache = _cache_dir()
+    try:
+        cache.mkdir(parents=True, exist_ok=True)
+        return cache / name, _build(cc, flags, header, cache / name)
+    except OSError as failure:
+        cache_failure = failure
+    try:
+        scratch = _scratch_dir()
+        path = scratch / name
+        # Built here already by this process (the same robot read again).
+        error = None if path.exists() else _build(cc, flags, header, path)
+    except OSError as failure:
+        raise OSError(
+            f"dh_dynamics: the cache directory {cache} cannot be written ({cache_failure}), nor "
+            f"a temporary directory ({failure}): set DH_DYNAMICS_CACHE to a writable directory"
+        ) from None
+    warnings.warn(
+        f"dh_dynamics: the cache directory {cache} cannot be written ({cache_failure}); the "
+        f"robot is compiled in {scratch}, removed at exit. Set DH_DYNAMICS_CACHE to a writable "
+        "directory to keep compiled robots between runs.",
+        RuntimeWarning,
+        stacklevel=5,
+    )
+    return path, error
+
+
+_SCRATCH = []
+
+
+def _scratch_dir():
+    """This process's own temporary directory (made once, mode 0700, removed at exit): not a
+    shared one, where another user could leave a library for this process to load."""
+    if not _SCRATCH:
+        _SCRATCH.append(Path(tempfile.mkdtemp(prefix="dh_dynamics-")))
+        atexit.register(shutil.rmtree, _SCRATCH[0], ignore_errors=True)
+    return _SCRATCH[0]

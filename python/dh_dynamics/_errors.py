@@ -1,5 +1,5 @@
-"""The package's exceptions: a description the generator refused, and a solve whose mass matrix
-was not positive definite."""
+"""The package's exceptions: a description the generator refused, an input that is not finite,
+and a solve whose mass matrix was not positive definite."""
 
 import re
 
@@ -44,9 +44,40 @@ def generator_error(message):
     return DescriptionError(message.strip().split("\ndynamics: "))
 
 
+def _listed(states):
+    return ", ".join(str(i) for i in states[:10]) + (", ..." if len(states) > 10 else "")
+
+
+class NonFiniteInput(ValueError):
+    """An input of a method is NaN or infinite at some states (the closed forms would give NaN
+    there, and a solve would fail there for no fault of M).
+
+    ``states`` are their indices in the batch (``[0]`` for a single state); ``arguments`` the
+    names of the inputs that are not finite; ``result`` is what the method computed for every
+    state, as it would have returned it (NaN where an input is not finite).
+    """
+
+    def __init__(self, method, problems, states, count, result, singular=()):
+        # `count` is None for one state (not a batch).
+        self.states = states
+        self.arguments = [name for name, _, _ in problems]
+        self.result = result
+        parts = [
+            f"`{name}` is not finite"
+            + ("" if count is None else f" at {len(mine)} of {count} states ({_listed(mine)})")
+            + f": {where}"
+            for name, mine, where in problems
+        ]
+        message = f"{method}: " + "; ".join(parts) + "; expected finite numbers"
+        if singular:
+            message += (f" (and M(q) is not positive definite at {len(singular)} states "
+                        f"where the inputs are finite: {_listed(singular)})")
+        super().__init__(message)
+
+
 class NotPositiveDefinite(np.linalg.LinAlgError):
-    """A solve with the LDLᵀ of M met a pivot that is not positive (a singular M, or NaN in the
-    inputs) at some states.
+    """A solve with the LDLᵀ of M met a pivot that is not positive (a singular M) at some
+    states whose inputs are finite (non-finite inputs raise :class:`NonFiniteInput`).
 
     ``states`` are their indices in the batch (``[0]`` for a single state); ``result`` is what
     the method computed for every state, the failed ones included, as it would have returned it.
@@ -55,7 +86,7 @@ class NotPositiveDefinite(np.linalg.LinAlgError):
     def __init__(self, method, states, count, result):
         self.states = states
         self.result = result
-        shown = ", ".join(str(i) for i in states[:10]) + (", ..." if len(states) > 10 else "")
         super().__init__(
-            f"{method}: M(q) is not positive definite at {len(states)} of {count} states ({shown})"
+            f"{method}: M(q) is not positive definite at {len(states)} of {count} states "
+            f"({_listed(states)})"
         )

@@ -1,13 +1,14 @@
 """A robot: its description read by the generator, its C header compiled, and its methods on
 NumPy arrays."""
 
+import math
+import numbers
 import os
-
-import numpy as np
 
 from . import _compiled, _native
 from ._errors import generator_error
 from ._methods import Method
+from ._parameters import Parameters
 
 
 def _generate(words):
@@ -24,48 +25,73 @@ class Robot:
     method here with the same name (``mass_matrix``, ``inverse_dynamics``, ``forward_dynamics``,
     the hand's pose and Jacobians, and with ``families`` the derivatives or the regressor), on
     one state (arrays of shape ``(n,)``) or a batch (shape ``(N, n)``) in one call; ``methods``
-    lists them.
+    lists them. ``parameters`` holds the values of the description's symbols (``mass =
+    "m1"``), in the order of the C functions' ``params``.
     """
 
-    def __init__(self, source, families=()):
+    def __init__(self, source, families=(), parameters=None):
         # The description's words of the `dynamics` command (the file, and a URDF's chain or a
         # tool), which `equations` gives to `inspect`.
         self._source = list(source)
-        generated = _generate(self._source + _families(families))
+        families = _families(families)
+        self._asked = set(families[1].split(",")) if families else set()
+        generated = _generate(self._source + families)
         self.name = generated["robot"]
         self.dof = generated["dof"]
         self.header = generated["text"]
+        self._parameters = Parameters(self.name, generated["fields"])
+        if parameters is not None:
+            self._parameters.replace(parameters, f"{self.name}: parameters")
         library = _compiled.load(self.header)
         by_method = {}
         for signature in generated["functions"]:
             by_method.setdefault(signature["method"], []).append(signature)
         self.methods = tuple(by_method)
         for name, signatures in by_method.items():
-            setattr(self, name, Method(self, library, signatures))
+            setattr(self, name, Method(self, library, signatures, self._parameters))
+
+    @property
+    def parameters(self):
+        """The values of the description's symbols by name (``None`` until given), in the order
+        of the C functions' ``params``: ``robot.parameters["m1"] = 2.0``, or all at once,
+        ``robot.parameters = {"m1": 2.0, ...}``."""
+        return self._parameters
+
+    @parameters.setter
+    def parameters(self, values):
+        self._parameters.replace(values, f"{self.name}: parameters")
+
+    def __getattr__(self, name):
+        # Only for a name that is not an attribute: a method this robot was built without.
+        if name.startswith("_") or "methods" not in self.__dict__:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        raise AttributeError(_missing_method(self, name))
 
     @classmethod
-    def from_file(cls, path, *, families=(), tool=None):
+    def from_file(cls, path, *, families=(), tool=None, parameters=None):
         """The robot of a description file (TOML or JSON, as ``#[dynamics(file = "...")]``
         reads it).
 
         ``families``: opt-in families of methods, such as ``("derivatives", "regressor")``;
-        ``tool``: the hand frame ``[x, y, z, roll, pitch, yaw]`` in the last link's frame.
-        Raises ``DescriptionError`` with the file, line and column of a problem.
+        ``tool``: the hand frame ``[x, y, z, roll, pitch, yaw]`` in the last link's frame;
+        ``parameters``: the value of every symbol of the file (``{"m1": 2.0, "g": 9.81}``), or
+        none now and ``robot.parameters`` later. Raises ``DescriptionError`` with the file, line
+        and column of a problem, ``ValueError`` for a missing or unknown parameter.
         """
-        source = [os.fspath(path)]
+        source = [os.fsdecode(path)]
         if tool is not None:
-            source += ["--tool", ",".join(repr(float(x)) for x in tool)]
-        return cls(source, families)
+            source += ["--tool", _tool(tool)]
+        return cls(source, families, parameters)
 
     @classmethod
     def from_urdf(cls, path, base=None, tip=None, *, families=()):
         """The robot of a URDF file: the chain from link ``base`` to link ``tip`` (by default
         the root and the one leaf)."""
-        source = [os.fspath(path)]
+        source = [os.fsdecode(path)]
         if base is not None:
-            source += ["--base", base]
+            source += ["--base", os.fsdecode(base)]
         if tip is not None:
-            source += ["--tip", tip]
+            source += ["--tip", os.fsdecode(tip)]
         return cls(source, families)
 
     def equations(self, latex=False, kinematics=False):
@@ -93,5 +119,47 @@ class Robot:
 def _families(families):
     if isinstance(families, str):
         families = [families]
+    families = list(families or ())
+    if not all(isinstance(f, str) for f in families):
+        raise TypeError(f"families: expected names such as ['derivatives'], got {families!r}")
     return ["--with", ",".join(families)] if families else []
+
+
+def _tool(tool):
+    """``tool`` as the command line's ``--tool`` takes it: six finite numbers."""
+    expected = "expected six finite numbers [x, y, z, roll, pitch, yaw]"
+    try:
+        values = list(tool)
+    except TypeError:
+        raise TypeError(f"tool = {tool!r}: {expected}") from None
+    real = all(isinstance(x, numbers.Real) and not isinstance(x, bool) for x in values)
+    if len(values) != 6 or not real or not all(math.isfinite(float(x)) for x in values):
+        raise ValueError(f"tool = {tool!r}: {expected}")
+    return ",".join(repr(float(x)) for x in values)
+
+
+_METHOD_TABLE = {name: (family, opt_in) for name, family, opt_in in _native.methods()}
+
+
+def _missing_method(robot, name):
+    """Why ``robot`` has no method ``name``, and how to get it."""
+    lacks = f"{robot.name} has no method `{name}`"
+    if name not in _METHOD_TABLE:
+        return f"{lacks}; its methods: {', '.join(robot.methods)}"
+    family, opt_in = _METHOD_TABLE[name]
+    if family == "simplify":
+        return (f"{lacks}: the simplified models come from a `[simplify]` table in the "
+                "description file (an envelope and tolerances; docs/description-files.md)")
+    if opt_in and family in robot._asked:
+        # Asked for, but the trace left it out (`Equations::add_families`).
+        why = ("the base parameters need the robot's lengths and angles as numbers, not "
+               "parameters" if family == "base_parameters" else
+               f"the family `{family}` has no `{name}` for this robot")
+        return f"{lacks}: {why}"
+    if opt_in:
+        return (f"{lacks}: it belongs to the opt-in family `{family}`, which this robot was "
+                f"built without; ask for it with Robot.from_file(path, families=[{family!r}]) "
+                f"(or from_urdf(..., families=[{family!r}]))")
+    return (f"{lacks}: its result has no elements for this robot (a term it does not have), "
+            "so the header has no function for it")
 

@@ -2,9 +2,11 @@
 //! description as the `dynamics` command does and gives back the robot's C header with the
 //! signatures of its functions, which the package compiles and calls
 //! (`dh_dynamics/_compiled.py`), or what any `dynamics` command prints (the readable
-//! equations). Nothing of an algorithm is here: both are `dynamics-cli`'s.
+//! equations), and the method table's families (for the hint of a method a robot lacks).
+//! Nothing of an algorithm is here: both are `dynamics-cli`'s.
 
 use dynamics_codegen::emit_c::{Function, Precision, Returns};
+use dynamics_codegen::method::{Family, Method};
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
@@ -70,6 +72,19 @@ fn signature<'py>(py: Python<'py>, f: &Function) -> PyResult<Bound<'py, PyDict>>
     Ok(out)
 }
 
+/// The method table: each method's name, its family's name, and whether that family is
+/// opt-in (a robot has it only when asked for), for the hint of a method a robot lacks.
+#[pyfunction]
+fn methods() -> Vec<(&'static str, &'static str, bool)> {
+    Method::ALL
+        .iter()
+        .map(|m| {
+            let family: Family = m.family();
+            (m.name(), family.name(), family.is_opt_in())
+        })
+        .collect()
+}
+
 /// What the `dynamics` command `words` prints (`["inspect", "robots/puma560.toml",
 /// "--latex"]`).
 #[pyfunction]
@@ -82,6 +97,7 @@ fn run(py: Python<'_>, words: Vec<String>) -> PyResult<String> {
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(c_header, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add("GeneratorError", m.py().get_type::<GeneratorError>())?;
     Ok(())
 }

@@ -71,16 +71,90 @@ def test_bad_arrays_are_refused_with_their_names(puma):
         puma.inverse_dynamics(q, qd)
 
 
-def test_a_failed_solve_names_its_states(puma):
-    q, qd, qdd = states(6, 6, seed=5)
-    # M does not depend on q1: NaN in q2 and q3.
-    q[2, 1] = q[4, 2] = np.nan
+def test_a_failed_solve_names_its_states():
+    """A cart of no mass (Niku's Example 6.1 with m = 0): M = [m] is singular at every
+    state."""
+    cart = dh_dynamics.Robot.from_file(ROOT / "robots" / "niku_example_6_1.toml",
+                                       parameters={"m": 1.0, "k": 2.0, "g": 9.81})
+    x = np.array([[0.1], [0.2], [0.3]])
+    assert np.array_equal(cart.forward_dynamics(x, 0 * x, 2 * x), np.zeros((3, 1)))
+    cart.parameters["m"] = 0.0
     with pytest.raises(dh_dynamics.NotPositiveDefinite) as failed:
-        puma.forward_dynamics(q, qd, qdd)
-    assert failed.value.states == [2, 4]
-    assert failed.value.result.shape == (6, 6)
-    assert np.isfinite(failed.value.result[0]).all()
+        cart.forward_dynamics(x, 0 * x, 2 * x)
+    assert failed.value.states == [0, 1, 2]
+    assert "niku_example_6_1.forward_dynamics: M(q) is not positive definite at 3 of 3" in \
+        str(failed.value)
+    assert failed.value.result.shape == (3, 1)
     assert isinstance(failed.value, np.linalg.LinAlgError)
+
+
+def test_a_state_that_is_not_finite_is_named_not_blamed_on_m(puma):
+    q, qd, qdd = states(6, 6, seed=5)
+    # M does not depend on q1: NaN in q2 and q3, where the solve fails, and in q1, where not.
+    q[2, 1] = q[4, 2] = q[5, 0] = np.nan
+    qd[3, 5] = np.inf
+    with pytest.raises(dh_dynamics.NonFiniteInput) as failed:
+        puma.forward_dynamics(q, qd, qdd)
+    message = str(failed.value)
+    assert message.startswith("puma560.forward_dynamics: `q` is not finite at 3 of 6 states "
+                              "(2, 4, 5): q[2, 1] = nan; `qd` is not finite at 1 of 6 states "
+                              "(3): qd[3, 5] = inf; expected finite numbers"), message
+    assert "positive definite" not in message
+    assert failed.value.states == [2, 3, 4, 5] and failed.value.arguments == ["q", "qd"]
+    assert isinstance(failed.value, ValueError)
+    assert failed.value.result.shape == (6, 6)
+    assert np.isfinite(failed.value.result[[0, 1]]).all()
+    # Every method, one state or a batch: not only the solves.
+    with pytest.raises(dh_dynamics.NonFiniteInput, match=r"puma560\.inverse_dynamics: `qdd` "
+                                                          r"is not finite: qdd\[0\] = -inf"):
+        puma.inverse_dynamics(q[0], qd[0], np.r_[-np.inf, qdd[0, 1:]])
+    # One state used for every state of a batch.
+    with pytest.raises(dh_dynamics.NonFiniteInput, match=r"`q` is not finite at 2 of 2 states "
+                                                          r"\(0, 1\): q\[3\] = nan"):
+        puma.inverse_dynamics(np.r_[q[0, :3], np.nan, q[0, 4:]], qd[:2], qdd[:2])
+
+
+def test_a_method_the_robot_was_built_without_names_its_family(puma):
+    plain = dh_dynamics.Robot.from_file(PUMA)
+    with pytest.raises(AttributeError, match=r"puma560 has no method `regressor`: it belongs to "
+                                             r"the opt-in family `regressor`.*families=\["
+                                             r"'regressor'\]"):
+        plain.regressor
+    with pytest.raises(AttributeError, match="`forward_dynamics_derivatives`: .* family "
+                                             "`derivatives`"):
+        plain.forward_dynamics_derivatives
+    with pytest.raises(AttributeError, match=r"`gravity_torques_simplified`: .*\[simplify\]"):
+        plain.gravity_torques_simplified
+    with pytest.raises(AttributeError, match="no method `inverse_dynamic`; its methods: "
+                                             "mass_matrix, "):
+        plain.inverse_dynamic
+    arm = dh_dynamics.Robot.from_file(ROOT / "robots" / "articulated_3r.toml",
+                                      families=["base_parameters"])
+    with pytest.raises(AttributeError, match="need the robot's lengths and angles as numbers"):
+        arm.base_regressor
+    assert not hasattr(plain, "regressor") and hasattr(puma, "inverse_dynamics_derivatives")
+
+
+def test_an_unwritable_cache_falls_back_to_a_temporary_directory(tmp_path, monkeypatch):
+    from dh_dynamics import _compiled
+    blocker = tmp_path / "a-file"
+    blocker.write_text("")
+    # Under a file, not a read-only directory: root writes those anyway.
+    monkeypatch.setenv("DH_DYNAMICS_CACHE", str(blocker / "cache"))
+    monkeypatch.setattr(_compiled, "_SCRATCH", [])
+    with pytest.warns(RuntimeWarning, match=f"the cache directory {blocker / 'cache'} cannot "
+                                            "be written .*DH_DYNAMICS_CACHE"):
+        robot = dh_dynamics.Robot.from_file(ROOT / "robots" / "niku_example_6_3.toml")
+    scratch = _compiled._SCRATCH[0]
+    assert scratch.is_dir() and any(scratch.glob("*.so"))
+    robot.parameters = dict(l1=1.0, l2=1.0, m1=1.0, m2=1.0, g=1.0)
+    assert robot.mass_matrix([0.0, 0.0])[1, 1] == 1.0   # m2 l2²
+    # Nowhere to write: the error names both places and the variable.
+    monkeypatch.setattr(_compiled, "_SCRATCH", [])
+    monkeypatch.setattr(_compiled.tempfile, "tempdir", str(blocker / "tmp"))
+    with pytest.raises(OSError, match="cannot be written .* nor a temporary directory .*: set "
+                                      "DH_DYNAMICS_CACHE to a writable directory"):
+        dh_dynamics.Robot.from_file(ROOT / "robots" / "niku_example_6_2.toml")
 
 
 def test_a_bad_description_is_an_exception_at_its_line_and_column(tmp_path):

@@ -127,6 +127,39 @@ def test_dh_robots_match_pinocchio(file, table):
     check_batch(robot, model, frame, stiffness, rest)
 
 
+def articulated_3r(p):
+    """`robots/articulated_3r.toml`'s table with its parameters' values: point masses at the
+    link frames' origins."""
+    point = dict(type="revolute", theta=0.0, d=0.0, com=[0, 0, 0], inertia=[0] * 6)
+    return dict(gravity=[0, 0, -p["g"]], joints=[
+        dict(point, a=0.0, alpha=np.pi / 2, mass=p["m1"]),
+        dict(point, a=p["a2"], alpha=0.0, mass=p["m2"]),
+        dict(point, a=p["a3"], alpha=0.0, mass=p["m3"]),
+    ])
+
+
+def niku_example_6_4(p):
+    """`robots/niku_example_6_4.toml`'s table with its parameters' values: uniform rods."""
+    def rod(m, l):
+        return dict(type="revolute", theta=0.0, d=0.0, a=l, alpha=0.0, mass=m,
+                    com=[-l / 2, 0, 0], inertia=[0, m * l * l / 12, m * l * l / 12, 0, 0, 0])
+    return dict(gravity=[0, -p["g"], 0], joints=[rod(p["m1"], p["l1"]), rod(p["m2"], p["l2"])])
+
+
+@pytest.mark.parametrize("table", [articulated_3r, niku_example_6_4], ids=lambda f: f.__name__)
+def test_robots_with_parameters_match_pinocchio(table):
+    """A description's symbols given values from Python, against Pinocchio's model of the
+    table with those values."""
+    robot = dh_dynamics.Robot.from_file(ROOT / "robots" / f"{table.__name__}.toml",
+                                        families=["derivatives"])
+    rng = np.random.default_rng(11)
+    for _ in range(2):
+        robot.parameters = {name: float(rng.uniform(0.5, 2.0)) for name in robot.parameters}
+        desc = table(robot.parameters)
+        model = reference_script().model_from_dh(desc)
+        check_batch(robot, model, hand_frame(model, desc))
+
+
 @pytest.mark.parametrize("name", ["ur5", "ur10"])
 def test_urdf_robots_match_pinocchios_urdf_loader(name):
     path = ROOT / "robots" / "urdf" / f"{name}.urdf"
