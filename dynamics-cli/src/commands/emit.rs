@@ -4,7 +4,7 @@
 //! comment.
 
 use super::{
-    add_simplified, field_idents, load_with_request, self_fields, simplification, type_name,
+    add_simplified, eval, field_idents, load_with_request, self_fields, simplification, type_name,
     Failure,
 };
 use crate::args::{Emit, Lang};
@@ -40,10 +40,18 @@ pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
     } else {
         format!(" --with {}", with.join(","))
     };
-    let command = format!("dynamics emit --lang c {path}{with}");
+    let prefix = match &args.prefix {
+        Some(prefix) => format!(" --prefix {prefix}"),
+        None => String::new(),
+    };
+    let command = format!("dynamics emit --lang c {path}{with}{prefix}");
+    let prefix = args
+        .prefix
+        .clone()
+        .unwrap_or_else(|| emit_c::prefix(&robot.name));
     Ok(CHeader {
-        text: emit_c::header(&eq, &robot.name, &command),
-        functions: emit_c::functions(&eq, &emit_c::prefix(&robot.name)),
+        text: emit_c::header(&eq, &robot.name, &prefix, &command),
+        functions: emit_c::functions(&eq, &prefix),
         dof: eq.dof,
         fields: eq.fields.clone(),
         robot: robot.name,
@@ -64,6 +72,10 @@ fn equations(args: &Emit) -> Result<(Robot, Equations), Failure> {
 pub fn run(args: &Emit) -> Result<String, Failure> {
     if args.lang == Lang::C {
         return Ok(c_header(args)?.text);
+    }
+    if args.prefix.is_some() {
+        let message = "--prefix names the C functions: it needs --lang c";
+        return Err(eval::usage("emit", message));
     }
     let (robot, eq) = equations(args)?;
     let path = &args.robot.path;
