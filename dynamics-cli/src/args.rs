@@ -6,7 +6,9 @@ use dynamics_codegen::trace::base_parameters::JointColumns;
 use dynamics_codegen::{Family, FamilySet};
 use std::str::FromStr;
 
+mod emit;
 mod inspect;
+pub use emit::{Emit, Lang};
 pub use inspect::{Inspect, Simplified};
 
 /// The closed-form equations of motion of a serial robot, from its description file.
@@ -131,27 +133,6 @@ fn with_names() -> Vec<&'static str> {
         .into_iter()
         .filter(|&n| n != simplified)
         .collect()
-}
-
-#[derive(Args, Debug)]
-pub struct Emit {
-    #[command(flatten)]
-    pub robot: RobotFile,
-    #[command(flatten)]
-    pub families: Families,
-    /// The language: a Rust module on the `dynamics-runtime` crate, or one header-only C99
-    /// file (`static inline` functions in `double` and `float`, no allocation, no globals)
-    #[arg(long, value_enum, default_value_t = Lang::Rust)]
-    pub lang: Lang,
-}
-
-/// The language `dynamics emit` writes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Lang {
-    /// A standalone Rust module, as `#[derive(Dynamics)]` generates it
-    Rust,
-    /// A header-only C99 file
-    C,
 }
 
 #[derive(Args, Debug)]

@@ -19,6 +19,7 @@ pub mod check;
 pub mod emit;
 pub mod emit_c;
 pub mod front;
+pub mod identifiers;
 pub mod inspect;
 pub mod method;
 pub mod model;
@@ -89,9 +90,10 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let fields = eq
         .fields
         .iter()
-        .map(|f| {
-            let ident = syn::Ident::new(f, proc_macro2::Span::call_site());
-            quote!(self.#ident)
+        .map(|f| match identifiers::rust_field(f) {
+            Ok(ident) => quote!(self.#ident),
+            // Not expected: each name the values read is one of the struct's fields.
+            Err(message) => quote!(::core::compile_error!(#message)),
         })
         .collect();
     let generated = generate(&eq, fields);

@@ -15,6 +15,7 @@ use crate::args::{Cli, Command, RobotFile};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
 use dynamics_codegen::front;
+use dynamics_codegen::identifiers;
 use dynamics_codegen::model::{Robot, Simplification};
 use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::{Equations, Loaded, Source};
@@ -146,27 +147,19 @@ fn add_simplified(
     }
 }
 
-/// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for.
+/// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for
+/// (`Robot` before a name Rust could not take: `RobotSelf`, `Robot1arm`).
 fn type_name(name: &str) -> syn::Ident {
-    let mut out = String::new();
-    for part in name.split(|c: char| !c.is_ascii_alphanumeric()) {
-        let mut chars = part.chars();
-        if let Some(c) = chars.next() {
-            out.push(c.to_ascii_uppercase());
-            out.extend(chars);
-        }
-    }
-    if out.is_empty() || out.starts_with(|c: char| c.is_ascii_digit()) {
-        out.insert_str(0, "Robot");
-    }
-    syn::Ident::new(&out, Span::call_site())
+    syn::Ident::new(&identifiers::rust_type(name), Span::call_site())
 }
 
-/// The struct's fields, one per parameter, as the generated code reads them: `self.m1`, ...
-fn field_idents(eq: &Equations) -> Vec<syn::Ident> {
+/// The struct's fields, one per parameter, as the generated code reads them: `self.m1`, ...,
+/// `self.r#type` for a keyword; the error of a name no field can have (which the value grammar
+/// of the description file at `path` refuses first).
+fn field_idents(eq: &Equations, path: &str) -> Result<Vec<syn::Ident>, Failure> {
     eq.fields
         .iter()
-        .map(|f| syn::Ident::new(f, Span::call_site()))
+        .map(|f| identifiers::rust_field(f).map_err(|e| Failure::File(format!("{path}: {e}"))))
         .collect()
 }
 

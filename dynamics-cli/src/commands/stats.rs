@@ -22,7 +22,8 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let mut eq = derive(&robot);
     eq.add_families(&robot, args.families.set());
     add_simplified(&mut eq, request.as_ref(), &args.robot.path)?;
-    let generated = generate(&eq, self_fields(&field_idents(&eq)));
+    let fields = field_idents(&eq, &args.robot.path)?;
+    let generated = generate(&eq, self_fields(&fields));
     let elapsed = start.elapsed();
     let mut out = format!(
         "{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms\n",
@@ -43,7 +44,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         items.to_token_stream().to_string().len()
     );
     out += &readable(&eq, &robot);
-    out += &whole_derive(&robot, &ty, &field_idents(&eq), args, request.as_ref());
+    out += &whole_derive(&robot, &ty, &fields, args, request.as_ref());
     Ok(out)
 }
 

@@ -55,8 +55,9 @@ impl Robot {
     /// these parameter values.
     pub fn new(name: &str, eq: Equations, params: Vec<f64>) -> Robot {
         assert_eq!(params.len(), eq.fields.len(), "a value per parameter");
-        let header = header(&eq, name, "the test");
-        let name = prefix(name);
+        let name_prefix = prefix(name);
+        let header = header(&eq, name, &name_prefix, "the test");
+        let name = name_prefix;
         let functions = functions(&eq, &name);
         Robot {
             name,

@@ -22,9 +22,20 @@
  * tanh of smoothed friction), DYNAMICS_LIBM_SINCOS <math.h>'s (also under -ffast-math).
  * With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`
  * over n states: flat arrays of n rows, each row one state's array.
+ *
+ * The functions are puma560_*. A different header whose functions have the same
+ * prefix (another robot's) is refused in the same file (#error): choose another with
+ * `dynamics emit --lang c --prefix NAME`.
  */
-#ifndef PUMA560_DYNAMICS_H
-#define PUMA560_DYNAMICS_H
+/* A different header whose functions are also puma560_*, included before: refused,
+ * rather than one robot's functions silently standing for the other's. */
+#ifdef DYNAMICS_ROBOT_puma560_H
+#if DYNAMICS_ROBOT_puma560_H + 0 != 0xdeb4f3c36cd90791u
+#error "another header included before this one also names its functions puma560_*: emit this one (robot puma560) or the other with `dynamics emit --lang c --prefix NAME`"
+#endif
+#endif
+#ifndef DYNAMICS_ROBOT_puma560_H
+#define DYNAMICS_ROBOT_puma560_H 0xdeb4f3c36cd90791u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>
@@ -4180,4 +4191,4 @@ DYNAMICS_BATCH_API size_t puma560_forward_dynamics_f32_batch(size_t n, const flo
 
 #endif /* DYNAMICS_BATCH */
 
-#endif /* PUMA560_DYNAMICS_H */
+#endif /* DYNAMICS_ROBOT_puma560_H */

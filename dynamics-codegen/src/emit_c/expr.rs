@@ -157,7 +157,7 @@ impl Writer<'_> {
     }
 
     /// The name a leaf is read by, as the Rust emission names it (`q2`, `qd2`, `s2`, `c2`,
-    /// `p_m2`, `fx`, `tau2`).
+    /// `p_m2`, `fx`, `tau2`), but a parameter whose name C would not take as it is: `p_{k}`.
     pub(super) fn var_name(&self, v: Var) -> String {
         match v {
             Var::Q(i) => format!("q{}", i + 1),
@@ -165,7 +165,10 @@ impl Writer<'_> {
             Var::Qdd(i) => format!("qdd{}", i + 1),
             Var::SinQ(i) => format!("s{}", i + 1),
             Var::CosQ(i) => format!("c{}", i + 1),
-            Var::Param(k) => format!("p_{}", self.eq.fields[usize::from(k)]),
+            Var::Param(k) => {
+                let k = usize::from(k);
+                crate::identifiers::c_parameter(k, &self.eq.fields[k])
+            }
             Var::Wrench(k) => WRENCH[usize::from(k)].to_owned(),
             Var::Tau(i) => format!("tau{}", i + 1),
             // Placeholders of the regressor's and the base parameters' analyses, which no

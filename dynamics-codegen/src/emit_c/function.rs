@@ -259,14 +259,15 @@ fn comment(eq: &Equations, method: Method) -> String {
     text
 }
 
-/// `text` for a C comment: in ASCII, which every C toolchain reads (the method table's
-/// `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; any other character `?`), and without the `*/`
-/// that would end the comment early.
+/// `text` for a line of a C comment: in printable ASCII, which every C toolchain reads (the
+/// method table's `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; a control character, such as the
+/// NUL compilers refuse or a line break of a robot's name, and any other character `?`), and
+/// without the `*/` that would end the comment early.
 pub(super) fn comment_safe(text: &str) -> String {
     let mut ascii = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
-            c if c.is_ascii() => ascii.push(c),
+            c if c.is_ascii() && !c.is_ascii_control() => ascii.push(c),
             // Combining dots: `q̇`, `q̈`, `J̇`.
             '\u{307}' => ascii.push('d'),
             '\u{308}' => ascii.push_str("dd"),

@@ -54,34 +54,61 @@ use crate::symbolic::Node;
 use crate::trace::Equations;
 use function::comment_safe;
 
-/// The prefix of a robot's C functions: its name in lower case, every character other than a
-/// letter or digit an underscore (`UR5e` → `ur5e`), `robot_` before a leading digit.
+/// The prefix of a robot's C functions, [`crate::identifiers::c_prefix`]: its name in lower
+/// case, each run of other characters than ASCII letters and digits one underscore (`UR5e` →
+/// `ur5e`, `arm-a` → `arm_a`), `robot_` before a leading digit.
 #[must_use]
 pub fn prefix(robot: &str) -> String {
-    let name: String = robot
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '_'
-            }
-        })
-        .collect();
-    match name.chars().next() {
-        Some(c) if c.is_ascii_alphabetic() || c == '_' => name,
-        _ => format!("robot_{name}"),
-    }
+    crate::identifiers::c_prefix(robot)
 }
 
-/// The header of `eq`, the equations of the robot named `robot`; `command` is the command
-/// that wrote it (for its first line).
+/// The header of `eq`, the equations of the robot named `robot`, its functions named
+/// `{prefix}_{method}` (a prefix without [`crate::identifiers::c_prefix_problem`]); `command`
+/// is the command that wrote it (for its first line).
+///
+/// Its guard, `DYNAMICS_ROBOT_{prefix}_H`, is defined to a hash of the code it guards: the
+/// same header included twice is read once, and a different one with the same prefix (two
+/// robots whose names give one prefix, `arm-a` and `arm_a`) stops the compiler with an
+/// `#error` that names the prefix, rather than define the first one's functions only.
 #[must_use]
-pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
-    let prefix = prefix(robot);
-    let guard = format!("{}_DYNAMICS_H", prefix.to_ascii_uppercase());
-    let functions = functions(eq, &prefix);
-    let mut text = preamble(eq, robot, command);
+pub fn header(eq: &Equations, robot: &str, prefix: &str, command: &str) -> String {
+    let code = code(eq, prefix);
+    let guard = format!("DYNAMICS_ROBOT_{prefix}_H");
+    let hash = format!("{:#018x}u", fnv1a(code.as_bytes()));
+    // Only the printable ASCII an #error's string may hold as it is.
+    let name: String = robot
+        .chars()
+        .map(|c| match c {
+            'a'..='z' | 'A'..='Z' | '0'..='9' | ' ' | '_' | '-' | '.' => c,
+            _ => '?',
+        })
+        .collect();
+    let mut text = preamble(eq, robot, prefix, command);
+    text.push_str(&format!(
+        "/* A different header whose functions are also {prefix}_*, included before: refused,\n \
+         * rather than one robot's functions silently standing for the other's. */\n\
+         #ifdef {guard}\n#if {guard} + 0 != {hash}\n\
+         #error \"another header included before this one also names its functions {prefix}_*: \
+         emit this one (robot {name}) or the other with `dynamics emit --lang c --prefix NAME`\"\n\
+         #endif\n#endif\n\
+         #ifndef {guard}\n#define {guard} {hash}\n\n"
+    ));
+    text.push_str(&code);
+    text.push_str(&format!("#endif /* {guard} */\n"));
+    text
+}
+
+/// The 64-bit FNV-1a hash of `bytes`: the same on every machine, unlike `std`'s hashers.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
+        (hash ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// What the guard of the header of `eq` holds: `<math.h>` where needed, the shared helpers and
+/// the functions named `{prefix}_{method}`.
+fn code(eq: &Equations, prefix: &str) -> String {
+    let functions = functions(eq, prefix);
     // <math.h> for what the functions call besides sines and cosines (the tanh of smoothed
     // friction, a non-finite constant); without those, for `<math.h>`'s sines and cosines
     // only, so that with DYNAMICS_OWN_SINCOS the header builds where there is no C library
@@ -95,7 +122,7 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
     } else {
         "#ifndef DYNAMICS_OWN_SINCOS\n#include <math.h>\n#endif\n"
     };
-    text.push_str(&format!("#ifndef {guard}\n#define {guard}\n\n{math}\n"));
+    let mut text = format!("{math}\n");
     text.push_str(&trig::trig());
     text.push('\n');
     text.push_str(FMA);
@@ -121,7 +148,6 @@ pub fn header(eq: &Equations, robot: &str, command: &str) -> String {
         text.push('\n');
     }
     text.push_str(&batch::section(&functions));
-    text.push_str(&format!("#endif /* {guard} */\n"));
     text
 }
 
@@ -211,7 +237,43 @@ fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) 
 }
 
 /// The header's opening comment: where it comes from, and the conventions of its functions.
-fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
+fn preamble(eq: &Equations, robot: &str, prefix: &str, command: &str) -> String {
+    let mut lines = vec![
+        format!("Generated by `{command}`; do not edit:"),
+        "change the description file and run it again.".to_owned(),
+        String::new(),
+    ];
+    lines.extend(conventions(eq, robot));
+    lines.extend([
+        String::new(),
+        format!("The functions are {prefix}_*. A different header whose functions have the same"),
+        "prefix (another robot's) is refused in the same file (#error): choose another with"
+            .to_owned(),
+        "`dynamics emit --lang c --prefix NAME`.".to_owned(),
+    ]);
+    if !eq.fields.is_empty() {
+        lines.push(String::new());
+        lines.push(format!(
+            "The robot's parameters are each function's first argument, `params[{}]`:",
+            eq.fields.len()
+        ));
+        for (k, field) in eq.fields.iter().enumerate() {
+            lines.push(format!("  params[{k}] = {field}"));
+        }
+    }
+    let mut text = "/*\n".to_owned();
+    for line in lines {
+        let line = comment_safe(&line);
+        text.push_str(if line.is_empty() { " *" } else { " * " });
+        text.push_str(&line);
+        text.push('\n');
+    }
+    text.push_str(" */\n");
+    text
+}
+
+/// The preamble's paragraph on what the functions compute and how they are called.
+fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
     let n = eq.dof;
     let families: Vec<&str> = Family::ALL
         .iter()
@@ -222,10 +284,7 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         })
         .map(|f| f.name())
         .collect();
-    let mut lines = vec![
-        format!("Generated by `{command}`; do not edit:"),
-        "change the description file and run it again.".to_owned(),
-        String::new(),
+    vec![
         format!("The closed-form equations of motion of `{robot}` ({n} joints) in C99, as"),
         "`#[derive(Dynamics)]` generates them in Rust: one `static inline` function per method"
             .to_owned(),
@@ -259,24 +318,5 @@ fn preamble(eq: &Equations, robot: &str, command: &str) -> String {
         "With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`"
             .to_owned(),
         "over n states: flat arrays of n rows, each row one state's array.".to_owned(),
-    ];
-    if !eq.fields.is_empty() {
-        lines.push(String::new());
-        lines.push(format!(
-            "The robot's parameters are each function's first argument, `params[{}]`:",
-            eq.fields.len()
-        ));
-        for (k, field) in eq.fields.iter().enumerate() {
-            lines.push(format!("  params[{k}] = {field}"));
-        }
-    }
-    let mut text = "/*\n".to_owned();
-    for line in lines {
-        let line = comment_safe(&line);
-        text.push_str(if line.is_empty() { " *" } else { " * " });
-        text.push_str(&line);
-        text.push('\n');
-    }
-    text.push_str(" */\n");
-    text
+    ]
 }

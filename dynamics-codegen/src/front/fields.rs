@@ -3,6 +3,7 @@
 
 use super::errors::Errors;
 use super::value::Spanned;
+use syn::ext::IdentExt;
 
 /// A struct field the values may name.
 pub struct Field {
@@ -24,7 +25,8 @@ pub fn struct_fields(input: &syn::DeriveInput) -> Vec<Field> {
     data.fields
         .iter()
         .filter_map(|f| {
-            let name = f.ident.as_ref()?.to_string();
+            // `r#type` is the field the values name `type`.
+            let name = f.ident.as_ref()?.unraw().to_string();
             let is_float = is(&f.ty, &|i| i == "f64" || i == "f32");
             let generic = input
                 .generics

@@ -9,15 +9,19 @@
 //! atom  := number | 'pi' | 'PI' | 'q' | 'q'N | field | 'self' '.' field | '(' value ')'
 //! ```
 //!
-//! `q` (or `qN` in row N) is the joint variable and may appear only in the θ or d cell of a
-//! D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact; `rad` states that a
-//! number is in radians. A number literal takes no suffix (`2m`, `2.5f64`, `90deg`): it would
-//! be silently ignored. The terms of the top-level sum written as plain numbers (no unit, `pi`
+//! A field is a struct field's name: an identifier, or a Rust keyword with or without `r#`
+//! (`type` names the field `r#type`), but not `self`, `Self`, `super`, `crate` or `_`, which no
+//! field can have. `q` (or `qN` in row N) is the joint variable and may appear only in the θ or
+//! d cell of a D-H row. `90 deg` is exactly π/2, so its sine and cosine are exact; `rad` states
+//! that a number is in radians. A number literal takes no suffix (`2m`, `2.5f64`, `90deg`): it
+//! would be silently ignored. The terms of the top-level sum written as plain numbers (no unit, `pi`
 //! or field) are kept as [`Unitless`], for the angle check of [`super::angle`].
 
+use crate::identifiers::parameter_problem;
 use crate::model::Value;
 use crate::symbolic::Number;
 use proc_macro2::Span;
+use syn::ext::IdentExt;
 use syn::parse::{Parse, ParseStream};
 use syn::{Ident, Lit, Token};
 
@@ -268,11 +272,15 @@ fn parse_atom(input: ParseStream, state: &mut State) -> syn::Result<Value> {
         return Ok(v);
     }
     if input.peek(Token![self]) {
-        input.parse::<Token![self]>()?;
+        let this = input.parse::<Token![self]>()?;
+        if !input.peek(Token![.]) {
+            let message = parameter_problem("self").unwrap_or_default();
+            return Err(syn::Error::new(this.span, message));
+        }
         input.parse::<Token![.]>()?;
-        let name: Ident = input.parse()?;
-        state.fields.push((name.to_string(), name.span()));
-        return Ok(Value::Field(name.to_string()));
+        let name = parameter(input)?;
+        state.fields.push(name.clone());
+        return Ok(Value::Field(name.0));
     }
     if input.peek(Lit) {
         let lit: Lit = input.parse()?;
@@ -306,22 +314,37 @@ fn parse_atom(input: ParseStream, state: &mut State) -> syn::Result<Value> {
         }
         return Ok(Value::Num(n));
     }
-    if input.peek(Ident) {
-        let name: Ident = input.parse()?;
-        let text = name.to_string();
-        if text == "pi" || text == "PI" {
-            return Ok(Value::Pi);
+    if input.peek(Ident::peek_any) {
+        // `pi`, `q` and `q2` are the grammar's own; written raw (`r#pi`), they name fields.
+        let text = input.fork().call(Ident::parse_any)?.to_string();
+        let own = match text.as_str() {
+            "pi" | "PI" => Some(Value::Pi),
+            "q" => Some(Value::Joint(None)),
+            _ => text
+                .strip_prefix('q')
+                .and_then(|d| d.parse::<usize>().ok())
+                .map(|index| Value::Joint(Some(index))),
+        };
+        if let Some(value) = own {
+            input.call(Ident::parse_any)?;
+            return Ok(value);
         }
-        if text == "q" {
-            return Ok(Value::Joint(None));
-        }
-        if let Some(index) = text.strip_prefix('q').and_then(|d| d.parse::<usize>().ok()) {
-            return Ok(Value::Joint(Some(index)));
-        }
-        state.fields.push((text.clone(), name.span()));
-        return Ok(Value::Field(text));
+        let name = parameter(input)?;
+        state.fields.push(name.clone());
+        return Ok(Value::Field(name.0));
     }
     Err(input.error("expected a number, a struct field or an expression of them"))
+}
+
+/// A struct field's name and where it is written: an identifier, a keyword (Rust's field
+/// `r#type`) or a raw identifier without its `r#`, but not a name no field can have (`Self`).
+fn parameter(input: ParseStream) -> syn::Result<(String, Span)> {
+    let ident = input.call(Ident::parse_any)?;
+    let name = ident.unraw().to_string();
+    match parameter_problem(&name) {
+        Some(message) => Err(syn::Error::new(ident.span(), message)),
+        None => Ok((name, ident.span())),
+    }
 }
 
 /// Why a number may not have `suffix` (as in `2m`, `2.5f64`, `90deg`), and what to write.
@@ -391,6 +414,32 @@ mod tests {
         );
         assert!(parse_value("2 * q").unwrap().joint_offset().is_none());
         assert!(parse_value("3 +").is_err());
+    }
+
+    #[test]
+    fn keywords_name_fields_and_unrawable_names_are_refused() {
+        let field = |text: &str| match parse_value(text) {
+            Ok(Value::Field(name)) => name,
+            other => panic!("{text}: {other:?}"),
+        };
+        assert_eq!(field("type"), "type");
+        assert_eq!(field("r#type"), "type");
+        assert_eq!(field("self.fn"), "fn");
+        assert_eq!(field("self.r#gen"), "gen");
+        assert_eq!(field("r#pi"), "pi");
+        assert_eq!(parse_value("pi").unwrap(), Value::Pi);
+        for text in [
+            "self",
+            "Self",
+            "super",
+            "crate",
+            "_",
+            "self.Self",
+            "2 * Self",
+        ] {
+            let e = parse_value(text).unwrap_err();
+            assert!(e.contains("cannot name a parameter"), "{text}: {e}");
+        }
     }
 
     #[test]

@@ -1,0 +1,39 @@
+//! The options of `emit`: the language, and the C functions' prefix.
+
+use super::{Families, RobotFile};
+use clap::Args;
+use dynamics_codegen::identifiers::c_prefix_problem;
+
+#[derive(Args, Debug)]
+pub struct Emit {
+    #[command(flatten)]
+    pub robot: RobotFile,
+    #[command(flatten)]
+    pub families: Families,
+    /// The language: a Rust module on the `dynamics-runtime` crate, or one header-only C99
+    /// file (`static inline` functions in `double` and `float`, no allocation, no globals)
+    #[arg(long, value_enum, default_value_t = Lang::Rust)]
+    pub lang: Lang,
+    /// C only: the functions' prefix, NAME_mass_matrix, ... [default: the robot's name in lower
+    /// case, other characters than letters and digits `_`]. ASCII letters, digits and single
+    /// underscores, a letter first: for two robots whose names give the same prefix
+    #[arg(long, value_name = "NAME", value_parser = prefix)]
+    pub prefix: Option<String>,
+}
+
+/// The language `dynamics emit` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Lang {
+    /// A standalone Rust module, as `#[derive(Dynamics)]` generates it
+    Rust,
+    /// A header-only C99 file
+    C,
+}
+
+/// `--prefix NAME`: a name that makes valid C functions `NAME_method`.
+fn prefix(name: &str) -> Result<String, String> {
+    match c_prefix_problem(name) {
+        Some(problem) => Err(problem),
+        None => Ok(name.to_owned()),
+    }
+}
