@@ -111,15 +111,13 @@ impl Source {
             format!("{path}: {e}")
         })?;
         let low_pass = LowPass::butterworth(cutoff, rate).map_err(|e| format!("--cutoff: {e}"))?;
+        let read = data[0].len();
+        let decimation = fitting_decimation(path, cutoff, rate, read)?;
         // Not t, nor the torques at the end.
         let torques = data.len() - columns.joints;
         for column in &mut data[1..torques] {
             low_pass.filtfilt(column);
         }
-        // The cutoff at 0.8 of the kept samples' Nyquist frequency; at least 1: a cutoff above
-        // 0.4 f_s keeps every sample.
-        let decimation = ((0.4 * rate / cutoff).floor() as usize).max(1);
-        let read = data[0].len();
         Ok(Source::Filtered {
             path: path.to_string(),
             columns,
@@ -179,12 +177,85 @@ impl Source {
     }
 }
 
+/// One sample in this many is kept at `cutoff` for samples at `rate`: the Butterworth cutoff at
+/// 0.8 of the kept samples' Nyquist frequency; at least 1 (a cutoff above 0.4 f_s keeps every
+/// sample). A float: a small cutoff asks for more than any `usize`.
+fn decimation(cutoff: f64, rate: f64) -> f64 {
+    (0.4 * rate / cutoff).floor().max(1.0)
+}
+
+/// The decimation at `cutoff`, if the window of its filter, `16d + 1` samples, fits in the
+/// `read` samples of `path`; else why not, and the smallest cutoff whose window fits.
+fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result<usize, String> {
+    let d = decimation(cutoff, rate);
+    let window = 16.0 * d + 1.0;
+    if window <= read as f64 {
+        // At most the file's length: a `usize`.
+        return Ok(d as usize);
+    }
+    let count = |x: f64| {
+        if x < 1e15 {
+            format!("{x:.0}")
+        } else {
+            format!("{x:.3e}")
+        }
+    };
+    // Without the hundreds of zeros of a tiny number's decimals.
+    let cutoff = if cutoff >= 1e-4 {
+        cutoff.to_string()
+    } else {
+        format!("{cutoff:e}")
+    };
+    let fits = match (read.max(1) - 1) / 16 {
+        0 => "no cutoff does: the shortest window (a cutoff above 0.4 of the sample rate, every \
+              sample kept) is 17 samples"
+            .to_string(),
+        largest => format!(
+            "the smallest cutoff whose window fits is {} Hz",
+            smallest_cutoff(rate, largest)
+        ),
+    };
+    Err(format!(
+        "--cutoff {cutoff}: for samples at {} Hz its filter keeps one sample in {} and needs a \
+         window of {} samples (16 d + 1, d = ⌊0.4 f_s / f_c⌋), more than the {read} samples of \
+         {path}: {fits}",
+        crate::plot::number(rate),
+        count(d),
+        count(window)
+    ))
+}
+
+/// The smallest cutoff of three significant digits whose decimation is at most `largest`: the
+/// cutoff must exceed `0.4 f_s / (largest + 1)`.
+fn smallest_cutoff(rate: f64, largest: usize) -> f64 {
+    let bound = 0.4 * rate / (largest + 1) as f64;
+    let exponent = bound.log10().floor() as i32 - 2;
+    let below = (bound / 10f64.powi(exponent)).floor() as i64;
+    // A step or two above the bound rounded down (a finite rate: `even_rate`).
+    for mantissa in below..below + 4 {
+        // As the user would type it, parsed as the option is.
+        let cutoff: f64 = format!("{mantissa}e{exponent}").parse().unwrap_or(bound);
+        if decimation(cutoff, rate) <= largest as f64 {
+            return cutoff;
+        }
+    }
+    bound * (1.0 + 1e-3)
+}
+
 /// The sample rate of evenly spaced times; else the index of the first uneven step and why.
 fn even_rate(t: &[f64]) -> Result<f64, (usize, String)> {
     if t.len() < 2 {
         return Err((0, "a filter needs at least two samples".into()));
     }
     let mean = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
+    if !(1.0 / mean).is_normal() {
+        let message = format!(
+            "--cutoff needs a sample rate: the mean step {mean:e} s from t = {} s to {} s has none",
+            t[0],
+            t[t.len() - 1]
+        );
+        return Err((t.len() - 1, message));
+    }
     for k in 1..t.len() {
         let step = t[k] - t[k - 1];
         if (step - mean).abs() > EVEN * mean {
