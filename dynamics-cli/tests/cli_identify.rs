@@ -226,7 +226,7 @@ fn bad_csv_lines_are_named_by_line_and_column() {
         ),
         (
             "t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n0,0,0,0,0,1,2,3,4\n1,0,0,0,0,1,2,3\n",
-            "line 3: 8 values; the header has 9 columns",
+            "line 3, column 9 (tau4): 8 values; the header has 9 columns",
         ),
     ];
     for (k, (text, message)) in cases.iter().enumerate() {

@@ -24,6 +24,8 @@ pub enum Source {
         given: Given,
         /// The file's columns (t first), filtered (but t).
         data: Vec<Vec<f64>>,
+        /// The file's line of each sample.
+        lines: Vec<usize>,
         last_line: usize,
         filter: Filter,
     },
@@ -85,15 +87,17 @@ impl Source {
             });
         };
         let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
-        let mut data: Vec<Vec<f64>> = Vec::new();
+        let (mut data, mut lines): (Vec<Vec<f64>>, Vec<usize>) = (Vec::new(), Vec::new());
         let rows = trajectory::read_rows(
             BufReader::new(file),
             columns,
-            |_, row| {
+            |line, _, row| {
                 data.resize(row.len(), Vec::new());
                 for (column, x) in data.iter_mut().zip(row) {
                     column.push(x);
                 }
+                lines.push(line);
+                Ok(())
             },
             |_| {},
         )
@@ -104,7 +108,7 @@ impl Source {
         }
         let rate = even_rate(&data[0]).map_err(|(k, message)| {
             let e = CsvError {
-                line: line_of(path, k),
+                line: lines[k],
                 column: Some((1, "t".into())),
                 message,
             };
@@ -123,6 +127,7 @@ impl Source {
             columns,
             given: rows.given,
             data,
+            lines,
             last_line: rows.last_line,
             filter: Filter {
                 cutoff,
@@ -131,6 +136,14 @@ impl Source {
                 read,
             },
         })
+    }
+
+    /// The file's path.
+    #[must_use]
+    pub fn path(&self) -> &str {
+        match self {
+            Source::File { path, .. } | Source::Filtered { path, .. } => path,
+        }
     }
 
     /// The filter applied, if any.
@@ -160,17 +173,17 @@ impl Source {
                 columns,
                 given,
                 data,
+                lines,
                 last_line,
                 ..
             } => {
                 let mut differences = Differences::new(columns.joints, columns.torques);
-                for k in 0..data[0].len() {
+                let at = |e: CsvError| format!("{path}: {e} (after the low-pass filter)");
+                for (k, &line) in lines.iter().enumerate() {
                     let row = data.iter().map(|column| column[k]).collect();
-                    differences.push(*given, row, &mut each);
+                    differences.push(line, *given, row, &mut each).map_err(at)?;
                 }
-                differences
-                    .finish(&mut each)
-                    .map_err(|message| format!("{path}: line {last_line}: {message}"))?;
+                differences.finish(*last_line, &mut each).map_err(at)?;
                 Ok(differences.method())
             }
         }
@@ -201,11 +214,7 @@ fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result
         }
     };
     // Without the hundreds of zeros of a tiny number's decimals.
-    let cutoff = if cutoff >= 1e-4 {
-        cutoff.to_string()
-    } else {
-        format!("{cutoff:e}")
-    };
+    let cutoff = trajectory::decimal(cutoff);
     let fits = match (read.max(1) - 1) / 16 {
         0 => "no cutoff does: the shortest window (a cutoff above 0.4 of the sample rate, every \
               sample kept) is 17 samples"
@@ -269,17 +278,4 @@ fn even_rate(t: &[f64]) -> Result<f64, (usize, String)> {
         }
     }
     Ok(1.0 / mean)
-}
-
-/// The file line of data row `k` (0-based), counting the header and skipped lines: read again,
-/// only on this error's path.
-fn line_of(path: &str, k: usize) -> usize {
-    let text = std::fs::read_to_string(path).unwrap_or_default();
-    let data_lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !l.trim().starts_with('#'))
-        .map(|(i, _)| i + 1);
-    // The first such line is the header.
-    data_lines.skip(1).nth(k).unwrap_or(0)
 }
