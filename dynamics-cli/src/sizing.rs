@@ -52,6 +52,8 @@ pub struct Sizer<'a> {
     pub start: f64,
     pub end: f64,
     pub envelope: Option<Envelope>,
+    /// The first sample whose τ² or power is not a finite number: its line and time.
+    pub non_finite: Option<(usize, f64, (usize, String, f64))>,
     values: Vec<f64>,
 }
 
@@ -68,6 +70,7 @@ impl<'a> Sizer<'a> {
             start: 0.0,
             end: 0.0,
             envelope: plot.then(|| Envelope::new(SERIES * n)),
+            non_finite: None,
             values: vec![0.0; SERIES * n],
         }
     }
@@ -99,6 +102,21 @@ impl<'a> Sizer<'a> {
             })
             .collect();
         for (s, terms) in waiting.iter().zip(self.terms.terms(&at)) {
+            let parts = [
+                &terms.inertial,
+                &terms.coriolis,
+                &terms.gravity,
+                &terms.actuator,
+                &terms.friction,
+            ];
+            // τ², summed for the RMS, and the power τ q̇.
+            let finite = s.qd.iter().enumerate().all(|(j, qd)| {
+                let tau: f64 = parts.iter().map(|p| p[j]).sum();
+                (tau * tau).is_finite() && (tau * qd).is_finite()
+            });
+            if !finite && self.non_finite.is_none() {
+                self.non_finite = Some((s.line, s.t, s.largest()));
+            }
             self.add(s.t, &s.qd, &terms);
         }
         (self.waiting, self.filled) = (waiting, 0);
@@ -277,6 +295,7 @@ mod tests {
                 qd: v(&s["qd"]),
                 qdd: v(&s["qdd"]),
                 tau: v(&s["tau"]),
+                ..Sample::default()
             })
             .collect();
         for (s, data) in samples.iter().zip(data["samples"].as_array().unwrap()) {

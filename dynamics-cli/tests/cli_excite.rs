@@ -272,7 +272,7 @@ fn a_urdf_gives_its_limits() {
 
 #[test]
 fn bad_limits_and_samplings_are_usage_errors() {
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 5] = [
         (
             &["--q-min", "0,0"],
             "--q-min: 2 values; give one for every joint or one for each of the 6 joints",
@@ -283,6 +283,11 @@ fn bad_limits_and_samplings_are_usage_errors() {
         ),
         (&["--qd-max", "0"], "--qd-max: joint 1: 0 is not positive"),
         (&["--rate", "2"], "--period × --rate: 20 samples per period"),
+        // 10 s at 100 Hz: 1000 samples a period.
+        (
+            &["--periods", "10001"],
+            "10001 periods of 1000 samples, 1.0001e7 samples to write; at most 1e7",
+        ),
     ];
     for (extra, message) in cases {
         let mut args = vec!["excite", PUMA, "--evaluations", "1"];

@@ -226,7 +226,7 @@ fn bad_csv_lines_are_named_by_line_and_column() {
         ),
         (
             "t,q1,q2,q3,q4,tau1,tau2,tau3,tau4\n0,0,0,0,0,1,2,3,4\n1,0,0,0,0,1,2,3\n",
-            "line 3: 8 values; the header has 9 columns",
+            "line 3, column 9 (tau4): 8 values; the header has 9 columns",
         ),
     ];
     for (k, (text, message)) in cases.iter().enumerate() {
@@ -311,6 +311,49 @@ fn a_filter_needs_even_samples() {
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(
         stderr.contains("line 5, column 1 (t): --cutoff needs evenly spaced samples"),
+        "{stderr}"
+    );
+}
+
+/// A cutoff whose filter's window is longer than the file is a usage error that says so, with
+/// the smallest cutoff that fits: 1001 samples at 100 Hz hold a window of `16 d + 1` samples
+/// for d ≤ 62, so `d = ⌊0.4 · 100 / f_c⌋ ≤ 62` needs `f_c > 40 / 63 = 0.6349` Hz: 0.635 Hz.
+/// (`--cutoff 1e-5` asked for a window of 6.4·10⁷ samples and aborted allocating it.)
+#[test]
+fn a_cutoff_whose_window_is_longer_than_the_file_is_refused() {
+    let states = fourier(4, 1001, 100.0, 0.4, &[]);
+    let tau = torques(&arm(), &states, |_| 0.0);
+    let csv = write_csv("short_for_the_cutoff.csv", &states, &tau, true);
+    let run = |cutoff: &str| {
+        let out = dynamics(&[
+            "identify",
+            arm_file_static(),
+            "--csv",
+            &csv,
+            "--cutoff",
+            cutoff,
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+        (out.status.code(), stderr)
+    };
+    let (code, stderr) = run("1e-5");
+    assert_eq!(code, Some(2), "{stderr}");
+    for words in [
+        "--cutoff 1e-5: for samples at 100.0 Hz its filter keeps one sample in ",
+        "samples (16 d + 1, d = ⌊0.4 f_s / f_c⌋), more than the 1001 samples of ",
+        "the smallest cutoff whose window fits is 0.635 Hz",
+    ] {
+        assert!(stderr.contains(words), "{stderr}");
+    }
+    // d = ⌊40 / 0.634⌋ = 63: 1009 samples.
+    let (code, stderr) = run("0.634");
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("a window of 1009 samples"), "{stderr}");
+    // d = 62: 993 samples, one of them kept, too few for the fit, which says so.
+    let (code, stderr) = run("0.635");
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("(--cutoff 0.635 keeps one sample in 62: 1 of the 1001 samples)"),
         "{stderr}"
     );
 }

@@ -219,7 +219,7 @@ fn csv_errors_name_the_line_and_column() {
     let cases = [
         (
             "t,q1\n0,0\n1,0,2\n",
-            "line 3: 3 values; the header has 2 columns",
+            "line 3, column 3: 3 values; the header has 2 columns",
         ),
         (
             "t,q1\n0,0\n\n1,abc\n",

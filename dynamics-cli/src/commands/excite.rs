@@ -30,6 +30,10 @@ use std::time::Instant;
 
 /// The fewest samples per period: eight per period of the highest harmonic.
 const SAMPLES_PER_HARMONIC: f64 = 8.0;
+/// The most samples per period, and written: a period's sines and cosines are held (16 bytes a
+/// sample), and a line of the file is about 20 bytes a joint and derivative.
+const MOST_SAMPLES: f64 = 1e7;
+const MOST_WRITTEN: f64 = 1e7;
 
 pub fn run(args: &Excite) -> Result<String, Failure> {
     let started = Instant::now();
@@ -47,12 +51,23 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     let harmonics = args.harmonics as usize;
     let samples = (args.period * args.rate).round();
     let fewest = SAMPLES_PER_HARMONIC * harmonics as f64;
-    if samples < fewest || samples > 1e7 {
+    if samples < fewest || samples > MOST_SAMPLES {
         return Err(usage(
             "excite",
             &format!(
                 "--period × --rate: {samples} samples per period; between {fewest} (eight per \
                  period of the highest harmonic) and 10⁷"
+            ),
+        ));
+    }
+    let written = samples * f64::from(args.periods);
+    if written > MOST_WRITTEN {
+        return Err(usage(
+            "excite",
+            &format!(
+                "--periods × --period × --rate: {} periods of {samples} samples, {written:e} \
+                 samples to write; at most {MOST_WRITTEN:e}",
+                args.periods
             ),
         ));
     }

@@ -75,7 +75,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     let source = open(&args.csv, columns, args.cutoff)?;
     let (mut measured, method, span) = measure(&model, &source, &springs)?;
     let estimate = estimate(&mut measured, args.tolerance, args.weight_iterations())
-        .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
+        .map_err(|e| Failure::File(format!("{}: {e}{}", args.csv, kept(&source))))?;
     let consistent = args
         .consistent
         .then(|| {
@@ -227,6 +227,19 @@ fn measure(
     })
     .map_err(Failure::File)?;
     Ok((measured, method, span))
+}
+
+/// What a filter kept of the samples, for an estimate the samples could not give.
+fn kept(source: &Source) -> String {
+    source.filter().map_or(String::new(), |f| {
+        format!(
+            " (--cutoff {} keeps one sample in {}: {} of the {} samples)",
+            f.cutoff,
+            f.decimation,
+            f.kept(),
+            f.read
+        )
+    })
 }
 
 /// The samples of `path`, filtered at `cutoff` if given.

@@ -97,7 +97,7 @@ fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
     trajectory::read_rows(
         BufReader::new(file),
         columns,
-        |given, row| {
+        |line, given, row| {
             let qd = match given {
                 Given::Positions => vec![0.0; n],
                 Given::Velocities | Given::Accelerations => row[1 + n..1 + 2 * n].to_vec(),
@@ -108,7 +108,10 @@ fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
                 qd,
                 qdd: Vec::new(),
                 tau: Vec::new(),
+                line,
+                given,
             });
+            Ok(())
         },
         |_| {},
     )

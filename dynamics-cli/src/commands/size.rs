@@ -38,6 +38,14 @@ pub fn run(args: &Size) -> Result<String, Failure> {
         "quintic move, exact q̇ and q̈".to_string()
     };
     sizer.finish();
+    if let (Some(path), Some((line, t, (column, name, value)))) = (&args.csv, &sizer.non_finite) {
+        return Err(Failure::File(format!(
+            "{path}: line {line}, column {column} ({name}): at t = {} s τ² or the power τ q̇ is \
+             not a finite number; the sample's largest value is {value:e}, of this column (or \
+             of its differences)",
+            trajectory::decimal(*t)
+        )));
+    }
     if let (Some(path), Some(envelope)) = (&args.svg, &sizer.envelope) {
         let title = format!("{}: joint torques and power ({source})", robot.name);
         let figure = sizing::figure(title, &kinds, envelope);

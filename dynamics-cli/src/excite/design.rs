@@ -6,9 +6,9 @@
 //! the joint's range ([`Grid::fit`] scales the series to the joint's limits, so that any point
 //! of the box is a motion within them). The cost is `cond(Y_B)` over [`SEARCH_SAMPLES`] samples
 //! of the period, evenly spread among those written ([`Gram`]); the result is judged over all
-//! of the period's samples ([`accurate`]).
+//! of the period's samples, a chunk at a time ([`Factor`]).
 
-use super::condition::{accurate, Gram};
+use super::condition::{Factor, Gram};
 use super::fourier::{Grid, Limits, Series, State};
 use super::search::{minimise, Outcome};
 use crate::identify::model::JointValues;
@@ -17,6 +17,9 @@ use crate::identify::model::LinearModel;
 /// The samples of a period over which the search evaluates the condition number: enough rows
 /// (n per sample) for any robot's base parameters many times over, few enough to be cheap.
 pub const SEARCH_SAMPLES: usize = 100;
+
+/// The samples whose rows are held at once when the condition number is judged.
+const CHUNK: usize = 4096;
 
 /// What the search is given.
 pub struct Problem<'a> {
@@ -70,8 +73,13 @@ impl Problem<'_> {
     /// `cond(Y_B)` over every sample of the period, from the regressor's factor.
     #[must_use]
     pub fn accurate_condition(&self, series: &[Series]) -> f64 {
-        let rows = self.rows(series, 0..self.grid.samples());
-        accurate(self.model, &states(&rows))
+        let (m, mut factor) = (self.grid.samples(), Factor::new(self.model));
+        // A chunk of samples at a time: a period may have millions.
+        for start in (0..m).step_by(CHUNK) {
+            let rows = self.rows(series, start..m.min(start + CHUNK));
+            factor.push(&states(&rows));
+        }
+        factor.condition()
     }
 
     /// Positions, velocities and accelerations of every joint at the samples `ks`.

@@ -37,7 +37,8 @@
 //! J_i has one. Each cut holds for every feasible π, so the feasible set is never cut into: the
 //! solutions approach the constrained minimiser from outside, and the last is feasible to that
 //! tolerance; its remaining negative eigenvalues are then set to zero (`J ← V max(Λ, 0) Vᵀ`,
-//! a change of π below the tolerance).
+//! a change of π below the tolerance), and so are the joint terms that must be nonnegative but
+//! that the solver left below zero within its own tolerance.
 
 use super::estimate::Estimate;
 use super::measured::Measured;
@@ -153,13 +154,26 @@ pub fn consistent(
             }
         }
         if !added {
-            let x = clipped(x, problem.links);
+            let x = onto_bounds(clipped(x, problem.links), problem);
             return Ok(finish(measured, estimate, problem, x, round));
         }
     }
     Err(format!(
         "the consistent estimate did not converge in {ROUNDS} rounds of cuts"
     ))
+}
+
+/// `x` with the joint terms that must be nonnegative raised to zero where the solver left them
+/// below it, within its tolerance: a friction coefficient of −10⁻¹⁶ is one the description's
+/// checks refuse.
+fn onto_bounds(mut x: Vec<f64>, problem: &Problem<'_>) -> Vec<f64> {
+    let terms = &mut x[10 * problem.links..];
+    for (value, &nonnegative) in terms.iter_mut().zip(problem.joint_terms) {
+        if nonnegative {
+            *value = value.max(0.0);
+        }
+    }
+    x
 }
 
 /// The objective as a second-order cone: the rows of `[M x − z; √λ (x − π_0)]`, as `(A, b)`

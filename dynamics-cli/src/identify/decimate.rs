@@ -19,7 +19,9 @@
 //! `0.54 + 0.46 cos(π k / 8d)`, scaled to a DC gain of 1: within 0.4 % of 1 up to 0.75 of the
 //! cutoff, −6 dB at it, and at least 47 dB down from 1.2 of it (a transition about
 //! `3.3 / (16d + 1)` cycles per sample wide). The first and last `8d` samples, where the window
-//! is incomplete, give no output.
+//! is incomplete, give no output. The outputs are accumulated as the rows stream past, so that
+//! the memory held is 17 rows whatever d ([`Decimator`]); the taps, `16d + 1` numbers, are
+//! bounded by the samples of the file (`identify::source` refuses a window longer than it).
 
 /// The number of taps of the decimating low-pass for a decimation `d`: `16d + 1`, a window of
 /// eight kept samples on either side of the middle one.
@@ -49,58 +51,69 @@ pub fn taps(d: usize) -> Vec<f64> {
 }
 
 /// The filter and decimation over rows of a fixed width, as they stream.
+///
+/// Output m is the window of rows `m d ..= m d + 16d`; a row belongs to the windows of at most
+/// [`OPEN`] outputs, each accumulated as its rows arrive (in their order, as a window held
+/// whole would be summed). So the memory is `OPEN` rows whatever d, not a window of `16d + 1`.
 #[derive(Clone, Debug)]
 pub struct Decimator {
     taps: Vec<f64>,
     decimation: usize,
-    width: usize,
-    /// The last `taps.len()` rows, a ring, row-major; and their times.
-    rows: Vec<f64>,
+    /// The sums of the open outputs, output m in slot `m % OPEN`, row-major; each one's time.
+    sums: Vec<f64>,
     times: Vec<f64>,
+    width: usize,
     /// Rows taken so far.
     count: usize,
-    out: Vec<f64>,
 }
+
+/// The outputs a row can belong to: windows of `16d + 1` rows start every d rows.
+const OPEN: usize = 17;
 
 impl Decimator {
     /// For rows of `width` values, keeping one filtered row in `decimation`.
     #[must_use]
     pub fn new(decimation: usize, width: usize) -> Decimator {
-        let taps = taps(decimation.max(1));
-        let length = taps.len();
         Decimator {
-            taps,
+            taps: taps(decimation.max(1)),
             decimation: decimation.max(1),
+            sums: vec![0.0; OPEN * width],
+            times: vec![0.0; OPEN],
             width,
-            rows: vec![0.0; length * width],
-            times: vec![0.0; length],
             count: 0,
-            out: vec![0.0; width],
         }
     }
 
     /// Takes the row of time `t`; at every `d`-th complete window, the filtered row of the
     /// window's middle sample and its time.
     pub fn push(&mut self, t: f64, row: &[f64]) -> Option<(f64, &[f64])> {
-        let (length, w) = (self.taps.len(), self.width);
-        let slot = self.count % length;
-        self.rows[slot * w..(slot + 1) * w].copy_from_slice(row);
-        self.times[slot] = t;
+        let (d, w, k) = (self.decimation, self.width, self.count);
+        let last = self.taps.len() - 1;
         self.count += 1;
-        if self.count < length || (self.count - length) % self.decimation != 0 {
-            return None;
-        }
-        self.out.fill(0.0);
-        // The oldest row is the slot after the newest; the taps are symmetric, so their order
-        // along the window does not matter.
-        for (j, h) in self.taps.iter().enumerate() {
-            let s = (self.count + j) % length;
-            for (o, x) in self.out.iter_mut().zip(&self.rows[s * w..(s + 1) * w]) {
-                *o += h * x;
+        // The outputs m with m d ≤ k ≤ m d + 16d, oldest first.
+        let newest = k / d;
+        let oldest = k.saturating_sub(last).div_ceil(d);
+        for m in oldest..=newest {
+            let slot = m % OPEN;
+            let sum = &mut self.sums[slot * w..(slot + 1) * w];
+            let offset = k - m * d;
+            if offset == 0 {
+                sum.fill(0.0);
+            }
+            if offset == last / 2 {
+                self.times[slot] = t;
+            }
+            let h = self.taps[offset];
+            for (s, x) in sum.iter_mut().zip(row) {
+                *s += h * x;
             }
         }
-        let middle = (self.count + length / 2) % length;
-        Some((self.times[middle], &self.out))
+        // Row k ends output `oldest`'s window when it is its last row.
+        if k < last || (k - last) % d != 0 {
+            return None;
+        }
+        let slot = oldest % OPEN;
+        Some((self.times[slot], &self.sums[slot * w..(slot + 1) * w]))
     }
 }
 
@@ -163,5 +176,34 @@ mod tests {
             assert!((out[0] - want).abs() < 1e-12, "{t}");
             assert!((out[1] - 5.0).abs() < 1e-12);
         }
+    }
+
+    /// Each output is its window's weighted sum, summed oldest row first, and the memory held
+    /// is 17 rows whatever the decimation.
+    #[test]
+    fn outputs_are_their_windows_sums_with_seventeen_rows_held() {
+        for d in [1, 2, 5] {
+            let x: Vec<f64> = (0..300)
+                .map(|k| (0.37 * f64::from(k)).sin() + 0.1)
+                .collect();
+            let h = taps(d);
+            let mut decimator = Decimator::new(d, 1);
+            assert_eq!(decimator.sums.len(), OPEN);
+            let mut outputs = Vec::new();
+            for (k, v) in x.iter().enumerate() {
+                if let Some((t, out)) = decimator.push(k as f64, &[*v]) {
+                    outputs.push((t, out[0]));
+                }
+            }
+            let windows: Vec<(f64, f64)> = (0..=(x.len() - h.len()) / d)
+                .map(|m| {
+                    let window = &x[m * d..m * d + h.len()];
+                    let sum = h.iter().zip(window).fold(0.0, |s, (a, b)| s + a * b);
+                    ((m * d + 8 * d) as f64, sum)
+                })
+                .collect();
+            assert_eq!(outputs, windows, "{d}");
+        }
+        assert_eq!(Decimator::new(1000, 3).sums.len(), 3 * OPEN);
     }
 }

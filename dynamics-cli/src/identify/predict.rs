@@ -29,7 +29,7 @@ pub struct Prediction {
 /// `envelope` for a figure (with [`figure::values`]) if given.
 ///
 /// # Errors
-/// Reading the samples.
+/// Reading the samples; errors too large to square.
 pub fn predict(
     model: &LinearModel,
     source: &Source,
@@ -46,6 +46,8 @@ pub fn predict(
     let mut predicted = vec![0.0; n];
     let mut values = vec![0.0; figure::SERIES * n];
     let (mut measured_sq, mut error_sq, mut samples) = (vec![0.0; n], vec![0.0; n], 0);
+    // The first time whose error's square is not finite.
+    let mut overflow = None;
     each_row(model, source, springs, |t, entries, torques| {
         let mut start = 0;
         for (i, columns) in model.columns.iter().enumerate() {
@@ -54,6 +56,9 @@ pub fn predict(
             start += columns.len();
             measured_sq[i] += torques[i] * torques[i];
             error_sq[i] += (torques[i] - predicted[i]).powi(2);
+            if !error_sq[i].is_finite() {
+                overflow = overflow.or(Some(t));
+            }
         }
         samples += 1;
         if let Some(envelope) = envelope.as_deref_mut() {
@@ -61,6 +66,14 @@ pub fn predict(
             envelope.push(t, &values);
         }
     })?;
+    if let Some(t) = overflow {
+        return Err(format!(
+            "{}: at t = {} s the squared error of the predicted torques is not a finite \
+             number: the values are too large for the estimate",
+            source.path(),
+            crate::trajectory::decimal(t)
+        ));
+    }
     let rms = |sums: Vec<f64>| -> Vec<f64> {
         sums.into_iter()
             .map(|s| (s / samples.max(1) as f64).sqrt())

@@ -16,7 +16,7 @@ pub type Springs = [Option<(f64, f64)>];
 /// entries in [`LinearModel::rows`]' order, one torque per joint. How q̇ and q̈ were had.
 ///
 /// # Errors
-/// Reading the samples.
+/// Reading the samples; a sample whose equations are not finite numbers.
 pub fn each_row(
     model: &LinearModel,
     source: &Source,
@@ -34,6 +34,8 @@ pub fn each_row(
     // buffers reused from one group to the next).
     let mut group: Vec<Sample> = Vec::with_capacity(LANES);
     let mut filled = 0;
+    // The first sample whose equations are not finite: its line and time.
+    let mut failed = None;
     let mut flush = |group: &[Sample]| {
         let states: Vec<JointValues> = group
             .iter()
@@ -48,6 +50,14 @@ pub fn each_row(
             row[..entries].copy_from_slice(&rows[k * entries..(k + 1) * entries]);
             for (i, tau) in row[entries..].iter_mut().enumerate() {
                 *tau = springs[i].map_or(s.tau[i], |(k, rest)| s.tau[i] - k * (s.q[i] - rest));
+            }
+            if failed.is_some() {
+                return;
+            }
+            // Squares are summed: the fit's factors, the RMS of the residuals.
+            if !row.iter().all(|x| (x * x).is_finite()) {
+                failed = Some((s.line, s.t, s.largest()));
+                return;
             }
             match &mut decimator {
                 None => each(s.t, &row[..entries], &row[entries..]),
@@ -73,5 +83,14 @@ pub fn each_row(
     if filled > 0 {
         flush(&group[..filled]);
     }
-    Ok(how)
+    match failed {
+        None => Ok(how),
+        Some((line, t, (column, name, value))) => Err(format!(
+            "{}: line {line}, column {column} ({name}): at t = {} s a torque (less its \
+             spring) or an entry of the regressor is too large to square; the sample's largest \
+             value is {value:e}, of this column (or of its differences)",
+            source.path(),
+            crate::trajectory::decimal(t)
+        )),
+    }
 }

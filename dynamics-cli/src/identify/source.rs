@@ -24,6 +24,8 @@ pub enum Source {
         given: Given,
         /// The file's columns (t first), filtered (but t).
         data: Vec<Vec<f64>>,
+        /// The file's line of each sample.
+        lines: Vec<usize>,
         last_line: usize,
         filter: Filter,
     },
@@ -85,15 +87,17 @@ impl Source {
             });
         };
         let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
-        let mut data: Vec<Vec<f64>> = Vec::new();
+        let (mut data, mut lines): (Vec<Vec<f64>>, Vec<usize>) = (Vec::new(), Vec::new());
         let rows = trajectory::read_rows(
             BufReader::new(file),
             columns,
-            |_, row| {
+            |line, _, row| {
                 data.resize(row.len(), Vec::new());
                 for (column, x) in data.iter_mut().zip(row) {
                     column.push(x);
                 }
+                lines.push(line);
+                Ok(())
             },
             |_| {},
         )
@@ -104,27 +108,26 @@ impl Source {
         }
         let rate = even_rate(&data[0]).map_err(|(k, message)| {
             let e = CsvError {
-                line: line_of(path, k),
+                line: lines[k],
                 column: Some((1, "t".into())),
                 message,
             };
             format!("{path}: {e}")
         })?;
         let low_pass = LowPass::butterworth(cutoff, rate).map_err(|e| format!("--cutoff: {e}"))?;
+        let read = data[0].len();
+        let decimation = fitting_decimation(path, cutoff, rate, read)?;
         // Not t, nor the torques at the end.
         let torques = data.len() - columns.joints;
         for column in &mut data[1..torques] {
             low_pass.filtfilt(column);
         }
-        // The cutoff at 0.8 of the kept samples' Nyquist frequency; at least 1: a cutoff above
-        // 0.4 f_s keeps every sample.
-        let decimation = ((0.4 * rate / cutoff).floor() as usize).max(1);
-        let read = data[0].len();
         Ok(Source::Filtered {
             path: path.to_string(),
             columns,
             given: rows.given,
             data,
+            lines,
             last_line: rows.last_line,
             filter: Filter {
                 cutoff,
@@ -133,6 +136,14 @@ impl Source {
                 read,
             },
         })
+    }
+
+    /// The file's path.
+    #[must_use]
+    pub fn path(&self) -> &str {
+        match self {
+            Source::File { path, .. } | Source::Filtered { path, .. } => path,
+        }
     }
 
     /// The filter applied, if any.
@@ -162,21 +173,82 @@ impl Source {
                 columns,
                 given,
                 data,
+                lines,
                 last_line,
                 ..
             } => {
                 let mut differences = Differences::new(columns.joints, columns.torques);
-                for k in 0..data[0].len() {
+                let at = |e: CsvError| format!("{path}: {e} (after the low-pass filter)");
+                for (k, &line) in lines.iter().enumerate() {
                     let row = data.iter().map(|column| column[k]).collect();
-                    differences.push(*given, row, &mut each);
+                    differences.push(line, *given, row, &mut each).map_err(at)?;
                 }
-                differences
-                    .finish(&mut each)
-                    .map_err(|message| format!("{path}: line {last_line}: {message}"))?;
+                differences.finish(*last_line, &mut each).map_err(at)?;
                 Ok(differences.method())
             }
         }
     }
+}
+
+/// One sample in this many is kept at `cutoff` for samples at `rate`: the Butterworth cutoff at
+/// 0.8 of the kept samples' Nyquist frequency; at least 1 (a cutoff above 0.4 f_s keeps every
+/// sample). A float: a small cutoff asks for more than any `usize`.
+fn decimation(cutoff: f64, rate: f64) -> f64 {
+    (0.4 * rate / cutoff).floor().max(1.0)
+}
+
+/// The decimation at `cutoff`, if the window of its filter, `16d + 1` samples, fits in the
+/// `read` samples of `path`; else why not, and the smallest cutoff whose window fits.
+fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result<usize, String> {
+    let d = decimation(cutoff, rate);
+    let window = 16.0 * d + 1.0;
+    if window <= read as f64 {
+        // At most the file's length: a `usize`.
+        return Ok(d as usize);
+    }
+    let count = |x: f64| {
+        if x < 1e15 {
+            format!("{x:.0}")
+        } else {
+            format!("{x:.3e}")
+        }
+    };
+    // Without the hundreds of zeros of a tiny number's decimals.
+    let cutoff = trajectory::decimal(cutoff);
+    let fits = match (read.max(1) - 1) / 16 {
+        0 => "no cutoff does: the shortest window (a cutoff above 0.4 of the sample rate, every \
+              sample kept) is 17 samples"
+            .to_string(),
+        largest => format!(
+            "the smallest cutoff whose window fits is {} Hz",
+            smallest_cutoff(rate, largest)
+        ),
+    };
+    Err(format!(
+        "--cutoff {cutoff}: for samples at {} Hz its filter keeps one sample in {} and needs a \
+         window of {} samples (16 d + 1, d = ⌊0.4 f_s / f_c⌋), more than the {read} samples of \
+         {path}: {fits}",
+        crate::plot::number(rate),
+        count(d),
+        count(window)
+    ))
+}
+
+/// The smallest cutoff of three significant digits whose decimation is at most `largest`: the
+/// cutoff must exceed `0.4 f_s / (largest + 1)`.
+fn smallest_cutoff(rate: f64, largest: usize) -> f64 {
+    let bound = 0.4 * rate / (largest + 1) as f64;
+    let exponent = bound.log10().floor() as i32 - 2;
+    let below = (bound / 10f64.powi(exponent)).floor() as i64;
+    // A step or two above the bound rounded down (a finite rate: `even_rate`).
+    for mantissa in below..below + 4 {
+        // As the user would type it, parsed as the option is.
+        let cutoff: f64 = format!("{mantissa}e{exponent}").parse().unwrap_or(bound);
+        if decimation(cutoff, rate) <= largest as f64 {
+            return cutoff;
+        }
+    }
+    bound * (1.0 + 1e-3)
 }
 
 /// The sample rate of evenly spaced times; else the index of the first uneven step and why.
@@ -185,6 +257,14 @@ fn even_rate(t: &[f64]) -> Result<f64, (usize, String)> {
         return Err((0, "a filter needs at least two samples".into()));
     }
     let mean = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
+    if !(1.0 / mean).is_normal() {
+        let message = format!(
+            "--cutoff needs a sample rate: the mean step {mean:e} s from t = {} s to {} s has none",
+            t[0],
+            t[t.len() - 1]
+        );
+        return Err((t.len() - 1, message));
+    }
     for k in 1..t.len() {
         let step = t[k] - t[k - 1];
         if (step - mean).abs() > EVEN * mean {
@@ -198,17 +278,4 @@ fn even_rate(t: &[f64]) -> Result<f64, (usize, String)> {
         }
     }
     Ok(1.0 / mean)
-}
-
-/// The file line of data row `k` (0-based), counting the header and skipped lines: read again,
-/// only on this error's path.
-fn line_of(path: &str, k: usize) -> usize {
-    let text = std::fs::read_to_string(path).unwrap_or_default();
-    let data_lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !l.trim().starts_with('#'))
-        .map(|(i, _)| i + 1);
-    // The first such line is the header.
-    data_lines.skip(1).nth(k).unwrap_or(0)
 }

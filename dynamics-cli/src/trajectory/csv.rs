@@ -1,7 +1,23 @@
 //! The CSV layer of a trajectory file: the header and the data lines, checked one by one, each
 //! error naming its line and, for a value, its column.
+//!
+//! Lines are read as bytes, at most [`LONGEST_LINE`] of them (a file without line breaks is
+//! refused, not held whole), and must be UTF-8 text (else the column of the first byte that is
+//! not is named). A byte-order mark before the header, as spreadsheets write, is skipped, and
+//! `\r\n` line ends are accepted.
 
-use std::io::BufRead;
+use std::io::{BufRead, Read};
+
+/// The longest line read, in bytes: far more than any robot's line of numbers (16 joints in
+/// four groups and a time, each written out in full, 300 digits for the smallest doubles,
+/// are 20 kB).
+pub const LONGEST_LINE: usize = 1 << 20;
+
+/// A byte-order mark, as some programs start UTF-8 text.
+const BYTE_ORDER_MARK: char = '\u{feff}';
+
+/// At most this many characters of a bad value are repeated in its error.
+const SHOWN: usize = 40;
 
 /// What a file must hold: the joints' count, and whether joint torques end each line.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -12,8 +28,9 @@ pub struct Columns {
 }
 
 /// Which derivatives a file gives.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Given {
+    #[default]
     Positions,
     Velocities,
     Accelerations,
@@ -21,7 +38,7 @@ pub enum Given {
 
 impl Given {
     /// The groups of joint columns after `t`, each of `n` columns.
-    fn groups(self) -> usize {
+    pub fn groups(self) -> usize {
         match self {
             Given::Positions => 1,
             Given::Velocities => 2,
@@ -41,6 +58,9 @@ pub struct CsvError {
 impl std::fmt::Display for CsvError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match &self.column {
+            Some((c, name)) if name.is_empty() => {
+                write!(f, "line {}, column {c}: {}", self.line, self.message)
+            }
             Some((c, name)) => write!(
                 f,
                 "line {}, column {c} ({name}): {}",
@@ -89,6 +109,24 @@ fn layout(line: usize, k: usize, columns: Columns) -> Result<Given, CsvError> {
     })
 }
 
+/// `x` as a decimal, or with an exponent where the decimal would be long (`1e300`, `1e-5`).
+#[must_use]
+pub fn decimal(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e16).contains(&x.abs()) {
+        x.to_string()
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// `text`, or its first [`SHOWN`] characters and an ellipsis.
+fn shown(text: &str) -> String {
+    match text.char_indices().nth(SHOWN) {
+        Some((end, _)) => format!("{}…", &text[..end]),
+        None => text.to_string(),
+    }
+}
+
 fn parse_header(line: usize, text: &str, columns: Columns) -> Result<Given, CsvError> {
     let found: Vec<&str> = text.split(',').map(str::trim).collect();
     let given = layout(line, found.len(), columns)?;
@@ -96,7 +134,7 @@ fn parse_header(line: usize, text: &str, columns: Columns) -> Result<Given, CsvE
         if want != got {
             return Err(CsvError {
                 line,
-                column: Some((c + 1, (*got).to_string())),
+                column: Some((c + 1, shown(got))),
                 message: format!("expected the header name `{want}`"),
             });
         }
@@ -113,30 +151,38 @@ fn parse_row(
 ) -> Result<Vec<f64>, CsvError> {
     let fields: Vec<&str> = text.split(',').collect();
     if fields.len() != names.len() {
+        // The first value too many, or the first missing.
+        let (column, name) = match names.get(fields.len()) {
+            None => (names.len() + 1, String::new()),
+            Some(name) => (fields.len() + 1, name.clone()),
+        };
         return Err(CsvError {
             line,
-            column: None,
+            column: Some((column, name)),
             message: format!(
-                "{} values; the header has {} columns",
+                "{} value{}; the header has {} columns",
                 fields.len(),
+                if fields.len() == 1 { "" } else { "s" },
                 names.len()
             ),
         });
     }
     let mut row = Vec::with_capacity(fields.len());
     for (c, field) in fields.iter().enumerate() {
-        let at = || Some((c + 1, names[c].clone()));
-        let value: f64 = field.trim().parse().map_err(|_| CsvError {
+        let error = |message: String| CsvError {
             line,
-            column: at(),
-            message: format!("`{}` is not a number", field.trim()),
-        })?;
+            column: Some((c + 1, names[c].clone())),
+            message,
+        };
+        let field = field.trim();
+        if field.is_empty() {
+            return Err(error("no value".into()));
+        }
+        let value: f64 = field
+            .parse()
+            .map_err(|_| error(format!("`{}` is not a number", shown(field))))?;
         if !value.is_finite() {
-            return Err(CsvError {
-                line,
-                column: at(),
-                message: format!("`{}` is not a finite number", field.trim()),
-            });
+            return Err(error(format!("`{}` is not a finite number", shown(field))));
         }
         row.push(value);
     }
@@ -144,7 +190,11 @@ fn parse_row(
         return Err(CsvError {
             line,
             column: Some((1, "t".into())),
-            message: format!("time does not increase: {} after {before}", row[0]),
+            message: format!(
+                "time does not increase: {} after {}",
+                decimal(row[0]),
+                decimal(before)
+            ),
         });
     }
     Ok(row)
@@ -158,32 +208,39 @@ pub struct Rows {
     pub last_line: usize,
 }
 
-/// Reads the lines of `reader`, calling `each` with every data line's values and its line
-/// number, in order, and `progress` with the count of bytes read every so often. Blank lines
-/// and lines starting with `#` are skipped; the first other line is the header.
+/// Reads the lines of `reader`, calling `each` with every data line's number and values, in
+/// order, and `progress` with the count of bytes read every so often. Blank lines and lines
+/// starting with `#` are skipped; the first other line is the header.
 ///
 /// # Errors
-/// The first bad line, or a file without a header.
+/// The first bad line, a file without a header, or the first error of `each`.
 pub fn read_rows(
-    reader: impl BufRead,
+    mut reader: impl BufRead,
     columns: Columns,
-    mut each: impl FnMut(Given, Vec<f64>),
+    mut each: impl FnMut(usize, Given, Vec<f64>) -> Result<(), CsvError>,
     mut progress: impl FnMut(u64),
 ) -> Result<Rows, CsvError> {
     let mut header: Option<(Given, Vec<String>)> = None;
-    let (mut bytes, mut previous, mut last_line) = (0u64, None, 0);
-    for (index, text) in reader.lines().enumerate() {
-        let line = index + 1;
-        last_line = line;
-        let text = text.map_err(|e| CsvError {
-            line,
-            column: None,
-            message: e.to_string(),
-        })?;
-        bytes += text.len() as u64 + 1;
-        if index % 4096 == 0 {
+    let (mut bytes, mut previous, mut line) = (0u64, None, 0);
+    let mut buffer = Vec::new();
+    loop {
+        buffer.clear();
+        let read = next_line(&mut reader, &mut buffer, line + 1)?;
+        if read == 0 {
+            break;
+        }
+        line += 1;
+        bytes += read as u64;
+        if line % 4096 == 1 {
             progress(bytes);
         }
+        let names = header.as_ref().map(|(_, names)| names.as_slice());
+        let text = utf8(&buffer, line, names)?;
+        let text = if line == 1 {
+            text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text)
+        } else {
+            text
+        };
         let trimmed = text.trim();
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
@@ -195,15 +252,69 @@ pub fn read_rows(
         };
         let row = parse_row(line, trimmed, names, previous)?;
         previous = Some(row[0]);
-        each(*given, row);
+        each(line, *given, row)?;
     }
     let Some((given, _)) = header else {
         let tail = if columns.torques { ",tau1..taun" } else { "" };
         return Err(CsvError {
-            line: last_line.max(1),
+            line: line.max(1),
             column: None,
             message: format!("no header: expected t,q1..qn{tail}"),
         });
     };
-    Ok(Rows { given, last_line })
+    Ok(Rows {
+        given,
+        last_line: line,
+    })
+}
+
+/// Reads the next line of `reader` (number `line`), its end included, into `buffer`: the
+/// bytes read, 0 at the end.
+fn next_line(
+    reader: &mut impl BufRead,
+    buffer: &mut Vec<u8>,
+    line: usize,
+) -> Result<usize, CsvError> {
+    let error = |message: String| CsvError {
+        line,
+        column: None,
+        message,
+    };
+    let limit = LONGEST_LINE as u64 + 1;
+    let read = reader
+        .by_ref()
+        .take(limit)
+        .read_until(b'\n', buffer)
+        .map_err(|e| error(e.to_string()))?;
+    if read > LONGEST_LINE {
+        return Err(error(format!(
+            "longer than {LONGEST_LINE} bytes: not a line of numbers (is the file text, one \
+             sample a line?)"
+        )));
+    }
+    Ok(read)
+}
+
+/// The line's text; else where its first byte that is not UTF-8 is: the column (comma
+/// separated) it falls in, named as the header names it.
+fn utf8<'a>(bytes: &'a [u8], line: usize, names: Option<&[String]>) -> Result<&'a str, CsvError> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let at = e.valid_up_to();
+        let c = bytes[..at].iter().filter(|&&b| b == b',').count();
+        let name = names.and_then(|n| n.get(c)).cloned().unwrap_or_default();
+        let message =
+            if line == 1 && at == 0 && matches!(bytes, [0xff, 0xfe, ..] | [0xfe, 0xff, ..]) {
+                "the file is UTF-16 text (its byte-order mark): save it as UTF-8".to_string()
+            } else {
+                format!(
+                    "the byte 0x{:02x} is not UTF-8 text (a number is ASCII)",
+                    bytes[at]
+                )
+            };
+        CsvError {
+            line,
+            column: Some((c + 1, name)),
+            message,
+        }
+    })
 }

@@ -4,7 +4,8 @@
 //! **CSV** ([`csv`]). A header line names the columns: `t,q1,..,qn`, then optionally
 //! `qd1,..,qdn`, then optionally `qdd1,..,qddn`, then, for `dynamics identify`, `tau1,..,taun`
 //! (t in s; q in rad or m; τ in N m or N). Blank lines and lines starting with `#` are skipped;
-//! every other line holds as many finite numbers as the header, with t strictly increasing.
+//! every other line holds as many finite numbers as the header, with t strictly increasing. A
+//! byte-order mark before the header and `\r\n` line ends are accepted.
 //!
 //! **Missing derivatives** ([`differences`]) come from the quadratic through three neighbouring
 //! samples. Only three samples are held at once, so a file of any length streams.
@@ -15,7 +16,7 @@ mod csv;
 mod differences;
 mod quintic;
 
-pub use csv::{read_rows, Columns, CsvError, Given};
+pub use csv::{decimal, read_rows, Columns, CsvError, Given};
 pub use differences::Differences;
 pub use quintic::quintic;
 use std::io::BufRead;
@@ -29,6 +30,39 @@ pub struct Sample {
     pub qdd: Vec<f64>,
     /// The joint torques, where the file gives them; else empty.
     pub tau: Vec<f64>,
+    /// The file's line of the sample (1-based); 0 for a sample of no file.
+    pub line: usize,
+    /// The file's columns: which derivatives are its own, not differences.
+    pub given: Given,
+}
+
+impl Sample {
+    /// The value of largest magnitude, as the file's column (1-based) and name it is or is
+    /// taken from (q̇ by differences of q: q's column), and the value: where to look when the
+    /// equations of a sample overflow.
+    #[must_use]
+    pub fn largest(&self) -> (usize, String, f64) {
+        let n = self.q.len();
+        let groups = [&self.q, &self.qd, &self.qdd, &self.tau];
+        let mut best = (1, "t".to_string(), self.t);
+        for (g, values) in groups.iter().enumerate() {
+            // A derivative the file does not give is its lower derivative's differences.
+            let own = if g == 3 {
+                g
+            } else {
+                g.min(self.given.groups() - 1)
+            };
+            let column = if g == 3 { self.given.groups() } else { own };
+            let name = ["q", "qd", "qdd", "tau"][own];
+            for (j, &x) in values.iter().enumerate() {
+                // A NaN, else the larger: the first of equals.
+                if x.is_nan() || x.abs() > best.2.abs() {
+                    best = (2 + column * n + j, format!("{name}{}", j + 1), x);
+                }
+            }
+        }
+        best
+    }
 }
 
 /// Reads the trajectory of a robot from `reader`, with the columns `columns`, calling `each` on
@@ -36,7 +70,8 @@ pub struct Sample {
 /// number of samples and how their derivatives were had.
 ///
 /// # Errors
-/// The first bad line, or fewer than three samples where derivatives must be estimated.
+/// The first bad line, fewer than three samples where derivatives must be estimated, or a
+/// derivative that is not finite.
 pub fn read_csv(
     reader: impl BufRead,
     columns: Columns,
@@ -47,14 +82,10 @@ pub fn read_csv(
     let rows = read_rows(
         reader,
         columns,
-        |given, row| differences.push(given, row, &mut each),
+        |line, given, row| differences.push(line, given, row, &mut each),
         progress,
     )?;
-    let count = differences.finish(&mut each).map_err(|message| CsvError {
-        line: rows.last_line,
-        column: None,
-        message,
-    })?;
+    let count = differences.finish(rows.last_line, &mut each)?;
     Ok((count, differences.method()))
 }
 
@@ -110,9 +141,16 @@ mod tests {
             (
                 "t,q1\n0,1\n1,2,3\n",
                 3,
-                None,
+                Some(3),
                 "3 values; the header has 2 columns",
             ),
+            (
+                "t,q1\n0,1\n1\n",
+                3,
+                Some(2),
+                "1 value; the header has 2 columns",
+            ),
+            ("t,q1\n0,1\n1, \n", 3, Some(2), "no value"),
             ("t,q1\n0,1\n1,x\n", 3, Some(2), "`x` is not a number"),
             (
                 "t,q1\n0,1\n1,NaN\n",
@@ -135,6 +173,64 @@ mod tests {
             assert_eq!(e.line, line, "{text}");
             assert_eq!(e.column.as_ref().map(|c| c.0), column, "{text}");
             assert!(e.message.starts_with(message), "{text}: {e}");
+        }
+    }
+
+    fn read_bytes(bytes: &[u8]) -> Result<Vec<Sample>, CsvError> {
+        let mut out = Vec::new();
+        let columns = Columns {
+            joints: 1,
+            torques: false,
+        };
+        read_csv(bytes, columns, |s| out.push(s.clone()), |_| {})?;
+        Ok(out)
+    }
+
+    /// What other programs write: a byte-order mark, `\r\n`; and what no program should: bytes
+    /// that are not text, a line without end, times too close for their values' changes.
+    #[test]
+    fn bytes_that_are_not_lines_of_numbers() {
+        let plain = read_bytes(b"t,q1\n0,0\n1,1\n2,4\n").unwrap();
+        for text in [
+            &b"\xef\xbb\xbft,q1\n0,0\n1,1\n2,4\n"[..],
+            b"t,q1\r\n0,0\r\n1,1\r\n2,4",
+        ] {
+            let samples = read_bytes(text).unwrap();
+            assert_eq!(samples.len(), 3);
+            for (a, b) in samples.iter().zip(&plain) {
+                assert_eq!((a.t, &a.q, &a.qd, &a.qdd), (b.t, &b.q, &b.qd, &b.qdd));
+            }
+        }
+        let long = [&b"t,q1\n0,"[..], &vec![b'1'; csv::LONGEST_LINE][..]].concat();
+        let cases: [(&[u8], usize, Option<usize>, &str); 5] = [
+            (
+                b"t,q1\n0,1\n1,2\xff\n",
+                3,
+                Some(2),
+                "the byte 0xff is not UTF-8 text",
+            ),
+            (b"\xff\xfet\x00", 1, Some(1), "the file is UTF-16 text"),
+            // A byte-order mark is skipped before the header only.
+            (
+                b"t,q1\n\xef\xbb\xbf0,1\n",
+                2,
+                Some(1),
+                "`\u{feff}0` is not a number",
+            ),
+            (&long, 2, None, "longer than 1048576 bytes"),
+            // Steps of 10⁻³⁰⁰ s: q̇ of 10³⁰⁰, q̈ of 10⁶⁰⁰.
+            (
+                b"t,q1\n0,0\n1e-300,1\n2e-300,0\n",
+                2,
+                Some(2),
+                "central differences give",
+            ),
+        ];
+        for (text, line, column, message) in cases {
+            let e = read_bytes(text).unwrap_err();
+            assert_eq!(e.line, line, "{e}");
+            assert_eq!(e.column.as_ref().map(|c| c.0), column, "{e}");
+            assert!(e.message.starts_with(message), "{e}");
         }
     }
 

@@ -20,6 +20,8 @@ pub fn quintic(
         qd: vec![0.0; n],
         qdd: vec![0.0; n],
         tau: Vec::new(),
+        line: 0,
+        given: super::Given::Accelerations,
     };
     let last = samples.max(2) - 1;
     for k in 0..=last {
