@@ -52,6 +52,8 @@ pub struct Sizer<'a> {
     pub start: f64,
     pub end: f64,
     pub envelope: Option<Envelope>,
+    /// The first sample whose torque or power is not a finite number, and the joint's index.
+    pub non_finite: Option<(f64, usize)>,
     values: Vec<f64>,
 }
 
@@ -68,6 +70,7 @@ impl<'a> Sizer<'a> {
             start: 0.0,
             end: 0.0,
             envelope: plot.then(|| Envelope::new(SERIES * n)),
+            non_finite: None,
             values: vec![0.0; SERIES * n],
         }
     }
@@ -122,6 +125,9 @@ impl<'a> Sizer<'a> {
             let parts: [f64; 5] = core::array::from_fn(|k| all[k][j]);
             let tau: f64 = parts.iter().sum();
             let power = tau * qd[j];
+            if !(tau.is_finite() && power.is_finite()) && self.non_finite.is_none() {
+                self.non_finite = Some((t, j));
+            }
             if self.samples == 1 || tau.abs() > report.peak.abs() {
                 report.peak = tau;
                 report.peak_time = t;

@@ -8,7 +8,7 @@
 //!   (joint i's row only over the parameters in its equation), then
 //!   `cond = √(λ_max(G) / λ_min(G))` ([`symmetric_eigenvalues`]): cheap, and accurate to a
 //!   relative `ε cond²`, which is plenty to rank candidates.
-//! * [`accurate`], for the report: the factor `R` of the stacked `Y_B` by Householder
+//! * [`Accurate`], for the report: the factor `R` of the stacked `Y_B` by Householder
 //!   reflections and its singular values by one-sided Jacobi rotations, as `dynamics identify`
 //!   computes its condition number (with every joint's weight 1).
 
@@ -103,25 +103,51 @@ fn add(joints: &mut [Vec<f64>], columns: &[Vec<usize>], entries: &[f64]) {
     }
 }
 
-/// `σ_max / σ_min` of the stacked regressor of `states`, from its Householder factor.
-pub fn accurate(model: &LinearModel, states: &[JointValues<'_>]) -> f64 {
-    let b = model.names.len();
-    let mut measured = Measured::new(model.columns.clone(), b);
-    let entries = model.entries();
-    let (mut work, mut rows) = (Work::default(), vec![0.0; LANES * entries]);
-    for group in states.chunks(LANES) {
-        model.rows(group, &mut work, &mut rows);
-        for k in 0..group.len() {
-            let sample = &rows[k * entries..(k + 1) * entries];
-            let mut start = 0;
-            for (i, columns) in model.columns.iter().enumerate() {
-                measured.push(i, &sample[start..start + columns.len()], 0.0);
-                start += columns.len();
+/// `σ_max / σ_min` of the stacked regressor, from its Householder factor: the samples pushed in
+/// parts (whole groups of [`LANES`] but the last), so that no part of a long period is held
+/// whole.
+pub struct Accurate<'m> {
+    model: &'m LinearModel,
+    measured: Measured,
+    work: Work,
+    rows: Vec<f64>,
+}
+
+impl<'m> Accurate<'m> {
+    #[must_use]
+    pub fn new(model: &'m LinearModel) -> Accurate<'m> {
+        Accurate {
+            model,
+            measured: Measured::new(model.columns.clone(), model.names.len()),
+            work: Work::default(),
+            rows: vec![0.0; LANES * model.entries()],
+        }
+    }
+
+    /// Adds the rows of `states`, [`LANES`] at a time.
+    pub fn push(&mut self, states: &[JointValues<'_>]) {
+        let entries = self.model.entries();
+        for group in states.chunks(LANES) {
+            self.model.rows(group, &mut self.work, &mut self.rows);
+            for k in 0..group.len() {
+                let sample = &self.rows[k * entries..(k + 1) * entries];
+                let mut start = 0;
+                for (i, columns) in self.model.columns.iter().enumerate() {
+                    self.measured
+                        .push(i, &sample[start..start + columns.len()], 0.0);
+                    start += columns.len();
+                }
             }
         }
     }
-    let all: Vec<usize> = (0..b).collect();
-    let (r, _, _) = measured.stacked(&all, &vec![1.0; model.joints()]);
-    let singular = singular_values(&r, b);
-    singular[0] / singular[b - 1]
+
+    /// The condition number of the rows pushed.
+    #[must_use]
+    pub fn condition(mut self) -> f64 {
+        let b = self.model.names.len();
+        let all: Vec<usize> = (0..b).collect();
+        let (r, _, _) = self.measured.stacked(&all, &vec![1.0; self.model.joints()]);
+        let singular = singular_values(&r, b);
+        singular[0] / singular[b - 1]
+    }
 }

@@ -8,7 +8,7 @@
 //! of the period, evenly spread among those written ([`Gram`]); the result is judged over all
 //! of the period's samples ([`accurate`]).
 
-use super::condition::{accurate, Gram};
+use super::condition::{Accurate, Gram};
 use super::fourier::{Grid, Limits, Series, State};
 use super::search::{minimise, Outcome};
 use crate::identify::model::JointValues;
@@ -17,6 +17,10 @@ use crate::identify::model::LinearModel;
 /// The samples of a period over which the search evaluates the condition number: enough rows
 /// (n per sample) for any robot's base parameters many times over, few enough to be cheap.
 pub const SEARCH_SAMPLES: usize = 100;
+
+/// The samples of a period evaluated at once for the report's condition number: a whole number
+/// of groups of lanes (the same groups, the same bits, as all at once).
+const PART: usize = 1024;
 
 /// What the search is given.
 pub struct Problem<'a> {
@@ -70,8 +74,13 @@ impl Problem<'_> {
     /// `cond(Y_B)` over every sample of the period, from the regressor's factor.
     #[must_use]
     pub fn accurate_condition(&self, series: &[Series]) -> f64 {
-        let rows = self.rows(series, 0..self.grid.samples());
-        accurate(self.model, &states(&rows))
+        let mut accurate = Accurate::new(self.model);
+        let m = self.grid.samples();
+        for start in (0..m).step_by(PART) {
+            let rows = self.rows(series, start..(start + PART).min(m));
+            accurate.push(&states(&rows));
+        }
+        accurate.condition()
     }
 
     /// Positions, velocities and accelerations of every joint at the samples `ks`.
@@ -88,17 +97,22 @@ impl Problem<'_> {
     }
 
     /// The search for the motion of lowest condition number, from `seed`, with at most
-    /// `evaluations` evaluations.
+    /// `evaluations` evaluations, `progress` told the count after each.
     #[must_use]
-    pub fn design(&self, seed: u64, evaluations: usize) -> Design {
+    pub fn design(&self, seed: u64, evaluations: usize, mut progress: impl FnMut(usize)) -> Design {
         let m = self.grid.samples();
         let count = SEARCH_SAMPLES.min(m);
         let ks: Vec<usize> = (0..count).map(|j| j * m / count).collect();
         let mut gram = Gram::new(self.model);
         let dimension = self.per_joint() * self.limits.len();
-        let outcome = minimise(dimension, seed, evaluations, |x| match self.decode(x) {
-            Some(series) => self.condition(&mut gram, &series, &ks),
-            None => f64::INFINITY,
+        let mut done = 0;
+        let outcome = minimise(dimension, seed, evaluations, |x| {
+            done += 1;
+            progress(done);
+            match self.decode(x) {
+                Some(series) => self.condition(&mut gram, &series, &ks),
+                None => f64::INFINITY,
+            }
         });
         // Every point of the box decodes but a measure-zero set; these were evaluated.
         let decode = |x: &[f64]| self.decode(x).unwrap_or_default();
