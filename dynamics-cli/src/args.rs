@@ -7,9 +7,16 @@ use dynamics_codegen::{Family, FamilySet};
 use std::str::FromStr;
 
 mod emit;
+mod excite;
 mod inspect;
+mod trajectory;
+mod values;
 pub use emit::{Emit, Lang};
+pub use excite::Excite;
 pub use inspect::{Inspect, Simplified};
+pub use trajectory::{Simulate, Size};
+use values::{file, fraction, path, positive, whole};
+pub use values::{Numbers, Setting};
 
 /// The closed-form equations of motion of a serial robot, from its description file.
 #[derive(Parser, Debug)]
@@ -53,13 +60,13 @@ pub enum Command {
 #[derive(Args, Debug)]
 pub struct RobotFile {
     /// The robot's description file (.json, .toml or .urdf)
-    #[arg(value_name = "ROBOT")]
+    #[arg(value_name = "ROBOT", value_parser = path)]
     pub path: String,
     /// URDF only: the link the chain starts at, fixed to the ground [default: the root link]
-    #[arg(long, value_name = "LINK")]
+    #[arg(long, value_name = "LINK", allow_hyphen_values = true)]
     pub base: Option<String>,
     /// URDF only: the link the chain ends at [default: the last link the moving joints reach]
-    #[arg(long, value_name = "LINK")]
+    #[arg(long, value_name = "LINK", allow_hyphen_values = true)]
     pub tip: Option<String>,
     /// A tool frame on the hand, as a description file's `tool` (m, rad): the kinematic
     /// methods then give the tool's pose, Jacobians and statics
@@ -86,7 +93,7 @@ impl FromStr for Tool {
 /// The opt-in families of methods a command generates, as the attribute asks for them.
 #[derive(Args, Debug)]
 pub struct Families {
-    #[arg(long = "with", value_name = "FAMILY", value_delimiter = ',', value_parser = opt_in_family, help = with_help())]
+    #[arg(long = "with", value_name = "FAMILY", value_delimiter = ',', value_parser = opt_in_family, help = with_help(), allow_hyphen_values = true)]
     pub with: Vec<Family>,
     /// The same as `--with derivatives`
     #[arg(long)]
@@ -145,8 +152,8 @@ pub struct Stats {
     pub simplified: Simplified,
     /// Times the whole derive this many times and prints the fastest run, the one least slowed
     /// by the machine's other work
-    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
-    pub runs: u32,
+    #[arg(long, value_name = "N", default_value = "5", value_parser = whole::<1, 1000>, allow_hyphen_values = true)]
+    pub runs: u64,
 }
 
 /// Which of the joints' own parameters take part in the base parameters, beside the links'.
@@ -157,7 +164,7 @@ pub struct JointTerms {
     pub rotors: bool,
     /// These friction coefficients of every joint: viscous, coulomb, offset (comma-separated)
     /// [default: those of the joints whose description has friction]
-    #[arg(long, value_name = "TERM", value_delimiter = ',', value_parser = ["viscous", "coulomb", "offset"])]
+    #[arg(long, value_name = "TERM", value_delimiter = ',', value_parser = ["viscous", "coulomb", "offset"], allow_hyphen_values = true)]
     pub friction: Vec<String>,
 }
 
@@ -196,90 +203,11 @@ pub struct Eval {
     #[arg(long, value_name = "QDD1,QDD2,..", allow_hyphen_values = true)]
     pub qdd: Option<Numbers>,
     /// The value of a parameter of the robot; once for each of them
-    #[arg(long = "set", value_name = "NAME=VALUE")]
+    #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub set: Vec<Setting>,
     /// Print JSON: {"tau": [..], "M": [[..]..], "C": [[..]..], "g": [..]}
     #[arg(long)]
     pub json: bool,
-}
-
-#[derive(Args, Debug)]
-#[command(group(clap::ArgGroup::new("trajectory").required(true).args(["csv", "from"])))]
-pub struct Size {
-    #[command(flatten)]
-    pub robot: RobotFile,
-    /// The trajectory: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
-    /// `qdd1,..,qddn`), then one sample per line, t strictly increasing (s; rad or m). Missing
-    /// q̇ and q̈ come from central differences on the (uneven) time steps
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["from", "to"])]
-    pub csv: Option<String>,
-    /// The start pose of a quintic rest-to-rest move (with --to and --duration)
-    #[arg(
-        long,
-        value_name = "Q1,Q2,..",
-        allow_hyphen_values = true,
-        requires = "to"
-    )]
-    pub from: Option<Numbers>,
-    /// The end pose of the move
-    #[arg(
-        long,
-        value_name = "Q1,Q2,..",
-        allow_hyphen_values = true,
-        requires = "from"
-    )]
-    pub to: Option<Numbers>,
-    /// The duration of the move, s
-    #[arg(long, value_name = "SECONDS", default_value = "2", value_parser = positive)]
-    pub duration: f64,
-    /// The samples of the move, both ends included
-    #[arg(long, value_name = "N", default_value = "1001", value_parser = clap::value_parser!(u32).range(2..))]
-    pub samples: u32,
-    /// The value of a parameter of the robot; once for each of them
-    #[arg(long = "set", value_name = "NAME=VALUE")]
-    pub set: Vec<Setting>,
-    /// Write a plot of τ per joint, split into its terms, and of the power, as SVG
-    #[arg(long, value_name = "FILE")]
-    pub svg: Option<String>,
-    /// Print JSON instead of a table
-    #[arg(long)]
-    pub json: bool,
-}
-
-#[derive(Args, Debug)]
-pub struct Simulate {
-    #[command(flatten)]
-    pub robot: RobotFile,
-    /// Initial joint positions [default: 0]
-    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
-    pub q0: Option<Numbers>,
-    /// Many initial states: every line (q, and q̇ or 0) of a trajectory file in the format
-    /// `size --csv` reads; prints each state's end (t0,q..,qd..,energy_start,energy_end), four
-    /// states at a time in vector lanes
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["q0", "qd0", "svg"])]
-    pub batch: Option<String>,
-    /// Initial joint velocities [default: 0]
-    #[arg(long, value_name = "QD1,QD2,..", allow_hyphen_values = true)]
-    pub qd0: Option<Numbers>,
-    /// Constant joint torques (N m) or forces (N) [default: 0]
-    #[arg(long, value_name = "TAU1,TAU2,..", allow_hyphen_values = true)]
-    pub tau: Option<Numbers>,
-    /// The simulated time, s
-    #[arg(long, value_name = "SECONDS", default_value = "2", value_parser = positive)]
-    pub duration: f64,
-    /// The RK4 step, s
-    #[arg(long, value_name = "SECONDS", default_value = "0.001", value_parser = positive)]
-    pub dt: f64,
-    /// The value of a parameter of the robot; once for each of them
-    #[arg(long = "set", value_name = "NAME=VALUE")]
-    pub set: Vec<Setting>,
-    /// Write the trajectory (t,q..,qd..,qdd.., a valid `size --csv` input) to FILE and print
-    /// a summary [default: the trajectory on stdout]
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<String>,
-    /// Write a plot of the joint positions and of the energy, as SVG
-    #[arg(long, value_name = "FILE")]
-    pub svg: Option<String>,
 }
 
 #[derive(Args, Debug)]
@@ -289,33 +217,33 @@ pub struct Identify {
     /// The measurements: a header `t,q1,..,qn` (then optionally `qd1,..,qdn`, then optionally
     /// `qdd1,..,qddn`), then `tau1,..,taun`; then one sample per line, t strictly increasing
     /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", value_parser = file, allow_hyphen_values = true)]
     pub csv: String,
     #[command(flatten)]
     pub joint_terms: JointTerms,
     /// Low-pass q at this frequency before q̇ and q̈ are taken (a 4th-order Butterworth filter
     /// run forward and backward: zero phase), then τ and the regressor's columns alike, keeping
     /// one sample in ⌊0.4 f_s / HZ⌋. Samples must be evenly spaced
-    #[arg(long, value_name = "HZ", value_parser = positive)]
+    #[arg(long, value_name = "HZ", value_parser = positive, allow_hyphen_values = true)]
     pub cutoff: Option<f64>,
     /// A parameter whose column of the regressor is, to this fraction of its norm, a
     /// combination of the columns before it is named as not identifiable and not estimated
     /// (estimated, noise in its estimate would be amplified about 1/FRACTION times)
-    #[arg(long, value_name = "FRACTION", default_value = "1e-4", value_parser = positive)]
+    #[arg(long, value_name = "FRACTION", default_value = "1e-4", value_parser = fraction, allow_hyphen_values = true)]
     pub tolerance: f64,
     /// The value of a parameter of the robot (a struct field of the description); once for
     /// each of them
-    #[arg(long = "set", value_name = "NAME=VALUE")]
+    #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub set: Vec<Setting>,
     /// Write a plot of the measured and the predicted torque per joint, as SVG
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", value_parser = file, allow_hyphen_values = true)]
     pub plot: Option<String>,
     /// Other measurements, as --csv, not used in the fit: their torques are predicted by the
     /// estimate, and the error's RMS per joint printed (a validation)
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", value_parser = file, allow_hyphen_values = true)]
     pub validate: Option<String>,
     /// Write a plot of the measured and the predicted torque of the --validate file, as SVG
-    #[arg(long, value_name = "FILE", requires = "validate")]
+    #[arg(long, value_name = "FILE", value_parser = file, requires = "validate", allow_hyphen_values = true)]
     pub validate_plot: Option<String>,
     /// Re-estimate each joint's σ_i from the weighted fit's residuals and fit again, until no
     /// σ_i changes by 1 % (at most 10 times), instead of taking σ_i from the ordinary fit only
@@ -328,7 +256,7 @@ pub struct Identify {
     pub consistent: bool,
     /// With --consistent and a TOML ROBOT: write the description with the consistent estimate's
     /// masses, centres of mass, inertias and joint terms in place of its own, as TOML
-    #[arg(long, value_name = "FILE", requires = "consistent")]
+    #[arg(long, value_name = "FILE", value_parser = file, requires = "consistent", allow_hyphen_values = true)]
     pub description_out: Option<String>,
     /// Print JSON instead of a table
     #[arg(long)]
@@ -343,113 +271,6 @@ impl Identify {
     }
 }
 
-#[derive(Args, Debug)]
-pub struct Excite {
-    #[command(flatten)]
-    pub robot: RobotFile,
-    /// The joint terms whose base parameters the motion is to excite, as `identify` takes them
-    #[command(flatten)]
-    pub joint_terms: JointTerms,
-    /// The period T of the motion, s (its base frequency is 1/T)
-    #[arg(long, value_name = "SECONDS", default_value = "10", value_parser = positive)]
-    pub period: f64,
-    /// The harmonics L of each joint's Fourier series (at least 2: the motion starts at rest)
-    #[arg(long, value_name = "L", default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=50))]
-    pub harmonics: u32,
-    /// The periods written
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
-    pub periods: u32,
-    /// Samples per second written, rounded to a whole number of samples per period
-    #[arg(long, value_name = "HZ", default_value = "100", value_parser = positive)]
-    pub rate: f64,
-    /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
-    /// a URDF's <limit lower>, else -π/2 rad or -0.1 m]
-    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
-    pub q_min: Option<Numbers>,
-    /// The joints' upper limits [default: a URDF's <limit upper>, else π/2 rad or 0.1 m]
-    #[arg(long, value_name = "Q1,Q2,..", allow_hyphen_values = true)]
-    pub q_max: Option<Numbers>,
-    /// The joints' speed limits (rad/s or m/s) [default: a URDF's <limit velocity>, else 1
-    /// rad/s or 0.2 m/s]
-    #[arg(long, value_name = "V1,V2,..")]
-    pub qd_max: Option<Numbers>,
-    /// The joints' acceleration limits (rad/s² or m/s²) [default: 5 rad/s² or 1 m/s²]
-    #[arg(long, value_name = "A1,A2,..")]
-    pub qdd_max: Option<Numbers>,
-    /// The seed of the search's random restarts: the same seed, the same trajectory
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
-    /// The condition numbers the search evaluates: a quarter on random restarts, the rest on
-    /// a compass search from the best
-    #[arg(long, value_name = "N", default_value_t = 3000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
-    pub evaluations: u64,
-    /// The value of a parameter of the robot (a struct field of the description); once for
-    /// each of them
-    #[arg(long = "set", value_name = "NAME=VALUE")]
-    pub set: Vec<Setting>,
-    /// Write the trajectory (t,q..,qd..,qdd..) to FILE and print the report [default: the
-    /// trajectory on stdout, the report on stderr]
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<String>,
-    /// The report as JSON
-    #[arg(long)]
-    pub json: bool,
-}
-
-fn positive(text: &str) -> Result<f64, String> {
-    let x = finite(text)?;
-    if x > 0.0 {
-        Ok(x)
-    } else {
-        Err(format!("`{text}` is not a positive number"))
-    }
-}
-
-/// A comma-separated list of finite numbers: `1,2.5,-3`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Numbers(pub Vec<f64>);
-
-impl FromStr for Numbers {
-    type Err = String;
-
-    fn from_str(text: &str) -> Result<Self, String> {
-        text.split(',')
-            .map(finite)
-            .collect::<Result<_, _>>()
-            .map(Numbers)
-    }
-}
-
-/// `--set NAME=VALUE`.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Setting {
-    pub name: String,
-    pub value: f64,
-}
-
-impl FromStr for Setting {
-    type Err = String;
-
-    fn from_str(text: &str) -> Result<Self, String> {
-        let (name, value) = text
-            .split_once('=')
-            .filter(|(name, _)| !name.trim().is_empty())
-            .ok_or_else(|| "expected NAME=VALUE".to_string())?;
-        Ok(Setting {
-            name: name.trim().to_string(),
-            value: finite(value)?,
-        })
-    }
-}
-
-fn finite(text: &str) -> Result<f64, String> {
-    text.trim()
-        .parse::<f64>()
-        .ok()
-        .filter(|x| x.is_finite())
-        .ok_or_else(|| format!("`{text}` is not a finite number"))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -460,20 +281,22 @@ mod tests {
         Cli::command().debug_assert();
     }
 
+    /// A value that starts with `-` reaches the option's parser (which says what is wrong with
+    /// it), not clap's "unexpected argument" with its misleading tip.
     #[test]
-    fn lists_and_settings() {
-        assert_eq!("1, -2.5,3e1".parse(), Ok(Numbers(vec![1.0, -2.5, 30.0])));
-        assert!("1,,2".parse::<Numbers>().is_err());
-        assert!("1,inf".parse::<Numbers>().is_err());
-        assert_eq!(
-            "m=-3".parse(),
-            Ok(Setting {
-                name: "m".into(),
-                value: -3.0
-            })
-        );
-        for bad in ["m", "=3", "m=", "m=x", "m=NaN"] {
-            assert!(bad.parse::<Setting>().is_err(), "{bad}");
+    fn every_value_may_start_with_a_hyphen() {
+        for command in Cli::command().get_subcommands() {
+            for arg in command.get_arguments() {
+                let takes = arg.get_num_args().is_some_and(|n| n.takes_values());
+                if takes && !arg.is_positional() && arg.get_id() != "help" {
+                    assert!(
+                        arg.is_allow_hyphen_values_set(),
+                        "{} --{}",
+                        command.get_name(),
+                        arg.get_id()
+                    );
+                }
+            }
         }
     }
 }

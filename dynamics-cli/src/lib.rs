@@ -25,6 +25,7 @@
 //! prints out. One implementation: the binary is [`main`].
 
 mod args;
+mod budget;
 mod commands;
 mod excite;
 mod format;
@@ -70,6 +71,13 @@ pub fn main() -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// The command line as clap declares it, every command and option with its help: for programs
+/// that walk the options (the test that tries each with bad values, shell completions).
+#[must_use]
+pub fn command() -> clap::Command {
+    <args::Cli as clap::CommandFactory>::command()
 }
 
 /// Runs the command `words` (`["identify", "robot.toml", "--csv", "m.csv", "--json"]`, without

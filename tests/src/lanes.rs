@@ -1,6 +1,6 @@
 //! Lane types against the single-state path, bit for bit: every method of a robot evaluated
 //! once on `L` states in lanes and `L` times on one state, each lane's result compared with its
-//! state's by the bits of every number (`to_bits`).
+//! state's by the bits of every number (`to_bits`), a NaN as NaN (its sign is the compiler's).
 
 use dynamics_runtime::lanes::{gather, Lanes, SplitLanes};
 use dynamics_runtime::{
@@ -17,9 +17,11 @@ pub trait Bits {
     fn values(&self, out: &mut Vec<f64>);
 }
 
+// A NaN as the one NaN: its sign is the compiler's choice, which may differ between the lanes'
+// code and the scalar's (`dynamics_runtime::lanes`).
 impl Bits for f64 {
     fn bits(&self, out: &mut Vec<u64>) {
-        out.push(self.to_bits());
+        out.push(if self.is_nan() { f64::NAN } else { *self }.to_bits());
     }
     fn values(&self, out: &mut Vec<f64>) {
         out.push(*self);
@@ -28,7 +30,9 @@ impl Bits for f64 {
 
 impl Bits for f32 {
     fn bits(&self, out: &mut Vec<u64>) {
-        out.push(u64::from(self.to_bits()));
+        out.push(u64::from(
+            if self.is_nan() { f32::NAN } else { *self }.to_bits(),
+        ));
     }
     fn values(&self, out: &mut Vec<f64>) {
         out.push(f64::from(*self));

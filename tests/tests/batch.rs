@@ -293,3 +293,94 @@ fn threads_give_the_same_bits() {
         }
     }
 }
+
+/// States with one NaN or ±∞ among finite values, at every joint of q, q̇ and q̈, in every lane
+/// of a group: each result is its own call's, a NaN where it has a NaN (of a sign the compiler
+/// chooses: in an optimized SSE2 build, PUMA 560's τ with a NaN q̇₂ had −NaN in one and +NaN in
+/// the other).
+#[test]
+fn non_finite_states_as_their_own_calls() {
+    const N: usize = 6;
+    let mut q = Vec::new();
+    let (mut qd, mut qdd) = (Vec::new(), Vec::new());
+    let finite = states::<N>(3 * N * 3, 21);
+    for (i, x) in [f64::NAN, -f64::NAN, f64::INFINITY, f64::NEG_INFINITY]
+        .into_iter()
+        .enumerate()
+    {
+        for slot in 0..3 * N {
+            let mut s = [finite[slot], finite[slot + 1], finite[slot + 2]];
+            s[slot / N][slot % N] = x;
+            // The special state at lane `slot % 4`, finite states around it.
+            for k in 0..4 {
+                let s = if k == (slot + i) % 4 {
+                    s
+                } else {
+                    [finite[k], finite[k + 3], finite[k + 6]]
+                };
+                q.push(s[0]);
+                qd.push(s[1]);
+                qdd.push(s[2]);
+            }
+        }
+    }
+    let len = q.len();
+    let mut tau = vec![[0.0; N]; len];
+    Puma560.inverse_dynamics_batch(&q[..], &qd[..], &qdd[..], &mut tau[..]);
+    same("τ", &tau, |k| {
+        Puma560.inverse_dynamics(&q[k], &qd[k], &qdd[k])
+    });
+    let mut m = vec![[[0.0; N]; N]; len];
+    Puma560.mass_matrix_batch(&q[..], &mut m[..]);
+    same("M", &m, |k| Puma560.mass_matrix(&q[k]));
+    let mut c = vec![[0.0; N]; len];
+    Puma560.coriolis_torques_batch(&q[..], &qd[..], &mut c[..]);
+    same("C q̇", &c, |k| Puma560.coriolis_torques(&q[k], &qd[k]));
+    let mut g = vec![[0.0; N]; len];
+    Puma560.gravity_torques_batch(&q[..], &mut g[..]);
+    same("g", &g, |k| Puma560.gravity_torques(&q[k]));
+    let mut energy = vec![0.0; len];
+    Puma560.kinetic_energy_batch(&q[..], &qd[..], &mut energy[..]);
+    same("kinetic energy", &energy, |k| {
+        Puma560.kinetic_energy(&q[k], &qd[k])
+    });
+    let mut pose = vec![Puma560.hand_pose(&[0.0; N]); len];
+    Puma560.hand_pose_batch(&q[..], &mut pose[..]);
+    same("pose", &pose, |k| Puma560.hand_pose(&q[k]));
+}
+
+/// One slice per joint, one of them shorter than the first: the batch refuses before it reads,
+/// naming the slice and the lengths, as it does an input of another length.
+#[test]
+#[should_panic(
+    expected = "`qd` has slices of different lengths: its first holds 5 states, its slice 3 holds 4"
+)]
+fn ragged_joint_slices_in_panic_with_their_lengths() {
+    let long = [0.1; 5];
+    let short = [0.2; 4];
+    let q: [&[f64]; 6] = [&long; 6];
+    let qd: [&[f64]; 6] = [&long, &long, &long, &short, &long, &long];
+    let mut tau = [[0.0; 6]; 5];
+    Puma560.coriolis_torques_batch(&q, &qd, &mut tau[..]);
+}
+
+#[test]
+#[should_panic(
+    expected = "the output has slices of different lengths: its first holds 5 results, its slice 2 holds 6"
+)]
+fn ragged_joint_slices_out_panic_with_their_lengths() {
+    let q = states::<6>(5, 1);
+    let mut columns = [
+        vec![0.0; 5],
+        vec![0.0; 5],
+        vec![0.0; 6],
+        vec![0.0; 5],
+        vec![0.0; 5],
+        vec![0.0; 5],
+    ];
+    let mut out: [&mut [f64]; 6] = {
+        let mut it = columns.iter_mut();
+        core::array::from_fn(|_| it.next().unwrap().as_mut_slice())
+    };
+    Puma560.gravity_torques_batch(&q[..], &mut out);
+}

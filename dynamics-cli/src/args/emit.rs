@@ -12,7 +12,7 @@ pub struct Emit {
     pub families: Families,
     /// The language: a Rust module on the `dynamics-runtime` crate, or one header-only C99
     /// file (`static inline` functions in `double` and `float`, no allocation, no globals)
-    #[arg(long, value_enum, default_value_t = Lang::Rust)]
+    #[arg(long, value_enum, default_value_t = Lang::Rust, allow_hyphen_values = true)]
     pub lang: Lang,
     /// C only: the functions' prefix, NAME_mass_matrix, ... [default: the robot's name in lower
     /// case, other characters than letters and digits `_`]. ASCII letters, digits and single

@@ -38,19 +38,30 @@ pub struct Simplified {
     pub simplified: bool,
     /// The largest error allowed in each joint torque, N·m or N: one for every joint, or one
     /// per joint
-    #[arg(long, value_name = "T1,T2,..", requires = "simplified")]
+    #[arg(
+        long,
+        value_name = "T1,T2,..",
+        requires = "simplified",
+        allow_hyphen_values = true
+    )]
     pub tolerance: Option<Numbers>,
     /// The tolerance as this percentage of each joint's rated torque, in place of --tolerance
     #[arg(
         long,
         value_name = "P",
         requires = "simplified",
-        conflicts_with = "tolerance"
+        conflicts_with = "tolerance",
+        allow_hyphen_values = true
     )]
     pub tolerance_percent: Option<Numbers>,
     /// The joints' rated torques (N·m or N) for --tolerance-percent [default: the file's
     /// `rated`, else a URDF's efforts]
-    #[arg(long, value_name = "R1,R2,..", requires = "simplified")]
+    #[arg(
+        long,
+        value_name = "R1,R2,..",
+        requires = "simplified",
+        allow_hyphen_values = true
+    )]
     pub rated: Option<Numbers>,
     /// The joints' lower limits (rad or m): one for every joint, or one per joint [default:
     /// the file's, else -π rad or -1 m]
@@ -70,9 +81,19 @@ pub struct Simplified {
     )]
     pub q_max: Option<Numbers>,
     /// The joints' speed limits (rad/s or m/s) [default: the file's, else 2]
-    #[arg(long, value_name = "V1,V2,..", requires = "simplified")]
+    #[arg(
+        long,
+        value_name = "V1,V2,..",
+        requires = "simplified",
+        allow_hyphen_values = true
+    )]
     pub qd_max: Option<Numbers>,
     /// The joints' acceleration limits (rad/s² or m/s²) [default: the file's, else 5]
-    #[arg(long, value_name = "A1,A2,..", requires = "simplified")]
+    #[arg(
+        long,
+        value_name = "A1,A2,..",
+        requires = "simplified",
+        allow_hyphen_values = true
+    )]
     pub qdd_max: Option<Numbers>,
 }

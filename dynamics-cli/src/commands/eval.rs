@@ -6,6 +6,8 @@ use crate::args::{Cli, Eval, Numbers, Setting};
 use crate::format::{self, Evaluation};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
+use dynamics_codegen::check;
+use dynamics_codegen::model::{Robot, Value};
 use dynamics_codegen::symbolic::{NodeId, Var};
 use dynamics_codegen::{derive, Equations};
 
@@ -16,7 +18,7 @@ pub fn run(args: &Eval) -> Result<String, Failure> {
     let q = joints("eval", "--q", Some(&args.q), n)?;
     let qd = joints("eval", "--qd", args.qd.as_ref(), n)?;
     let qdd = joints("eval", "--qdd", args.qdd.as_ref(), n)?;
-    let params = parameters("eval", &eq.fields, &args.set)?;
+    let params = settings("eval", &robot, &args.set)?;
     let values = evaluate(&eq, &params, &q, &qd, &qdd);
     let vector = |ids: &[NodeId]| -> Vec<f64> { ids.iter().map(|id| values[id.index()]).collect() };
     let matrix =
@@ -35,7 +37,7 @@ pub fn run(args: &Eval) -> Result<String, Failure> {
 }
 
 /// A usage error of `command` found once the robot is known, reported as clap reports its own.
-pub(super) fn usage(command: &str, message: &str) -> Failure {
+pub(crate) fn usage(command: &str, message: &str) -> Failure {
     let mut cli = Cli::command();
     cli.build();
     let error = match cli.find_subcommand_mut(command) {
@@ -65,6 +67,53 @@ pub(super) fn joints(
     }
 }
 
+/// The value of each of `robot`'s parameters, in the order of its fields, as [`parameters`]
+/// gives them, checked as a description's numbers are: the masses, actuator inertias, springs
+/// and friction coefficients they give (`--set m1=-1`: a negative mass) refused where a file's
+/// would be. (Not the inertia tensors, which a description may exempt from its checks.)
+pub(super) fn settings(
+    command: &str,
+    robot: &Robot,
+    sets: &[Setting],
+) -> Result<Vec<f64>, Failure> {
+    let fields = robot.fields();
+    let values = parameters(command, &fields, sets)?;
+    let lookup = |name: &str| fields.iter().position(|f| f == name).map(|k| values[k]);
+    let mut numbers = robot.clone();
+    for joint in &mut numbers.joints {
+        let link = &mut joint.link;
+        let spring = link
+            .spring
+            .iter_mut()
+            .flat_map(|s| [&mut s.stiffness, &mut s.rest]);
+        let friction = link.friction.iter_mut().flat_map(|f| {
+            [&mut f.viscous, &mut f.coulomb, &mut f.offset]
+                .into_iter()
+                .chain(f.smoothing.as_mut())
+        });
+        for value in [&mut link.mass, &mut link.actuator_inertia]
+            .into_iter()
+            .chain(spring)
+            .chain(friction)
+        {
+            if let Some(x) = value.eval(&lookup) {
+                *value = Value::from_f64(x);
+            }
+        }
+    }
+    let exempt = vec![false; numbers.joints.len()];
+    let problems: Vec<String> = check::robot(&numbers, &exempt)
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+    if problems.is_empty() {
+        Ok(values)
+    } else {
+        let message = format!("--set: with these values, {}", problems.join("; "));
+        Err(usage(command, &message))
+    }
+}
+
 /// The value of each of the robot's parameters, in the order of its fields: each set exactly
 /// once, none unknown.
 pub(super) fn parameters(
@@ -73,9 +122,14 @@ pub(super) fn parameters(
     sets: &[Setting],
 ) -> Result<Vec<f64>, Failure> {
     if let Some(s) = sets.iter().find(|s| !fields.contains(&s.name)) {
+        let known = if fields.is_empty() {
+            "it has none".to_string()
+        } else {
+            format!("expected one of {}", fields.join(", "))
+        };
         return Err(usage(
             command,
-            &format!("--set: the robot has no parameter `{}`", s.name),
+            &format!("--set: the robot has no parameter `{}`; {known}", s.name),
         ));
     }
     fields

@@ -13,11 +13,12 @@
 //! series' own), the file a controller replays and `identify` reads once the measured torques
 //! are appended; the report gives the condition number reached, the limits and the method.
 
-use super::eval::{parameters, usage};
+use super::eval::{settings, usage};
 use super::{base_parameters, load, Failure};
 use crate::args::{Excite, Numbers};
-use crate::excite::design::Problem;
-use crate::excite::fourier::{Grid, Series};
+use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
+use crate::excite::design::{Problem, SEARCH_SAMPLES};
+use crate::excite::fourier::{Grid, Limits, Series};
 use crate::excite::limits::{joint_limits, Asked};
 use crate::excite::report::Report;
 use crate::identify::base;
@@ -30,15 +31,18 @@ use std::time::Instant;
 
 /// The fewest samples per period: eight per period of the highest harmonic.
 const SAMPLES_PER_HARMONIC: f64 = 8.0;
-/// The most samples per period, and written: a period's sines and cosines are held (16 bytes a
-/// sample), and a line of the file is about 20 bytes a joint and derivative.
-const MOST_SAMPLES: f64 = 1e7;
-const MOST_WRITTEN: f64 = 1e7;
+
+/// The most samples per period: its table of sines and cosines is held (16 bytes a sample).
+const MAX_SAMPLES: f64 = 1e7;
+
+/// The most samples of the regressor a run evaluates without `--no-limits`: those of the
+/// search's evaluations and of the report's condition numbers.
+const MAX_REGRESSOR_SAMPLES: f64 = 1e7;
 
 pub fn run(args: &Excite) -> Result<String, Failure> {
     let started = Instant::now();
     let robot = load(&args.robot)?;
-    let fields = parameters("excite", &robot.fields(), &args.set)?;
+    let fields = settings("excite", &robot, &args.set)?;
     let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
     let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;
@@ -48,35 +52,13 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     let lists = [&args.q_min, &args.q_max, &args.qd_max, &args.qdd_max].map(list);
     let asked: Asked = [0, 1, 2, 3].map(|k| lists[k].as_deref());
     let limits = joint_limits(&robot, urdf.as_deref(), asked).map_err(|e| usage("excite", &e))?;
-    let harmonics = args.harmonics as usize;
-    let samples = (args.period * args.rate).round();
-    let fewest = SAMPLES_PER_HARMONIC * harmonics as f64;
-    if samples < fewest || samples > MOST_SAMPLES {
-        return Err(usage(
-            "excite",
-            &format!(
-                "--period × --rate: {samples} samples per period; between {fewest} (eight per \
-                 period of the highest harmonic) and 10⁷"
-            ),
-        ));
-    }
-    let written = samples * f64::from(args.periods);
-    if written > MOST_WRITTEN {
-        return Err(usage(
-            "excite",
-            &format!(
-                "--periods × --period × --rate: {} periods of {samples} samples, {written:e} \
-                 samples to write; at most {MOST_WRITTEN:e}",
-                args.periods
-            ),
-        ));
-    }
-    let problem = Problem {
-        model: &model,
-        grid: Grid::new(args.period, harmonics, samples as usize),
-        limits: limits.iter().map(|l| l.limits).collect(),
-    };
-    let design = problem.design(args.seed, args.evaluations as usize);
+    let problem = problem(args, &model, limits.iter().map(|l| l.limits).collect())?;
+    check_cost(args, &problem, robot.joints.len())?;
+    let evaluations = args.evaluations as f64;
+    let mut progress = Progress::new("dynamics excite", "evaluations", evaluations);
+    let design = problem.design(args.seed, args.evaluations as usize, |done| {
+        progress.update(done as f64);
+    });
     if design.series.is_empty() {
         return Err(Failure::File("the search found no motion".into()));
     }
@@ -114,6 +96,62 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     }
 }
 
+/// The search's problem: the samples of a period (`--period × --rate`) checked.
+fn problem<'m>(
+    args: &Excite,
+    model: &'m LinearModel,
+    limits: Vec<Limits>,
+) -> Result<Problem<'m>, Failure> {
+    let harmonics = args.harmonics as usize;
+    let samples = (args.period * args.rate).round();
+    let fewest = SAMPLES_PER_HARMONIC * harmonics as f64;
+    if !(fewest..=MAX_SAMPLES).contains(&samples) {
+        return Err(usage(
+            "excite",
+            &format!(
+                "--period × --rate: {samples} samples per period; between {fewest} (eight per \
+                 period of the highest harmonic) and 10⁷"
+            ),
+        ));
+    }
+    Ok(Problem {
+        model,
+        grid: Grid::new(args.period, harmonics, samples as usize),
+        limits,
+    })
+}
+
+/// The run's cost: the samples of the regressor its search and its report evaluate, and the
+/// bytes of the trajectory of `joints` joints it writes.
+fn check_cost(args: &Excite, problem: &Problem<'_>, joints: usize) -> Result<(), Failure> {
+    let samples = problem.grid.samples() as f64;
+    let evaluations = args.evaluations as f64;
+    let per_evaluation = samples.min(SEARCH_SAMPLES as f64);
+    let rows = args.periods as f64 * samples + 1.0;
+    Cost {
+        command: "excite",
+        options: "--evaluations, --period × --rate, --periods",
+        unit: format!(
+            "samples of the regressor ({evaluations} evaluations of {per_evaluation} samples, \
+             and the {samples} of a period twice for the report)"
+        ),
+        count: evaluations * per_evaluation + 2.0 * samples,
+        limit: MAX_REGRESSOR_SAMPLES,
+        bytes: rows * (1 + 3 * joints) as f64 * BYTES_PER_NUMBER,
+    }
+    .check(args.limits.no_limits, || {
+        // One evaluation and a report over the fewest samples a period may have.
+        let fewest = SAMPLES_PER_HARMONIC as usize * problem.grid.harmonics;
+        let small = Problem {
+            grid: Grid::new(args.period, problem.grid.harmonics, fewest),
+            limits: problem.limits.clone(),
+            model: problem.model,
+        };
+        let time = time_per_unit(|| drop(small.design(args.seed, 1, |_| {})));
+        time / (fewest.min(SEARCH_SAMPLES) + 2 * fewest) as f64
+    })
+}
+
 /// A URDF's `<limit>`s, per joint of the chain; `None` for a description file.
 fn urdf_limits(args: &Excite) -> Result<Option<Vec<Limit>>, Failure> {
     let path = &args.robot.path;
@@ -140,7 +178,7 @@ fn write_trajectory(
     path: Option<&str>,
     problem: &Problem,
     series: &[Series],
-    periods: u32,
+    periods: u64,
 ) -> Result<(), Failure> {
     let failed = |e: std::io::Error| Failure::File(format!("{}: {e}", path.unwrap_or("stdout")));
     let mut out: Box<dyn Write> = match path {
@@ -155,7 +193,11 @@ fn write_trajectory(
     writeln!(out, "t,{}", header.join(",")).map_err(failed)?;
     let (m, period) = (problem.grid.samples(), problem.grid.period);
     let mut row = vec![0.0; 3 * n];
-    for k in 0..=periods as usize * m {
+    // The cost's check bounded the rows.
+    let last = periods as usize * m;
+    let mut progress = Progress::new("dynamics excite", "rows written", last as f64);
+    for k in 0..=last {
+        progress.update(k as f64);
         // Whole periods exactly, then the steps within one: no drift over many periods.
         let t = (k / m) as f64 * period + (k % m) as f64 * period / m as f64;
         for (j, s) in problem.states(series, k).into_iter().enumerate() {

@@ -38,7 +38,7 @@
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
 
-use super::eval::{parameters, usage};
+use super::eval::{settings, usage};
 use super::size::write_svg;
 use super::{base_parameters, load, Failure};
 use crate::args::Identify;
@@ -62,7 +62,7 @@ use dynamics_codegen::trace::base_parameters::Parameter;
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
-    let fields = parameters("identify", &robot.fields(), &args.set)?;
+    let fields = settings("identify", &robot, &args.set)?;
     let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
     let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;

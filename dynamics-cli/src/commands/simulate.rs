@@ -13,13 +13,14 @@ use super::eval::joints;
 use super::size::{numeric, write_svg};
 use super::{load, Failure};
 use crate::args::Simulate;
+use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::plot::{Envelope, Figure, Line, Panel};
 use dynamics_codegen::algo::Ldlt;
 use dynamics_codegen::numeric::Numeric;
 use std::io::{BufWriter, Write};
 
-/// The most steps a simulation takes.
-const MAX_STEPS: f64 = 1e7;
+/// The most steps a simulation takes without `--no-limits`.
+const MAX_STEPS: f64 = 1e6;
 
 /// Colors of the joints' lines.
 const COLORS: [&str; 8] = [
@@ -37,13 +38,20 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
     let mut qd = joints("simulate", "--qd0", args.qd0.as_ref(), n)?;
     let tau = joints("simulate", "--tau", args.tau.as_ref(), n)?;
     let steps = (args.duration / args.dt).round().max(1.0);
-    if steps > MAX_STEPS {
-        return Err(super::eval::usage(
-            "simulate",
-            &format!("--duration / --dt: {steps} steps; at most {MAX_STEPS}"),
-        ));
+    Cost {
+        command: "simulate",
+        options: "--duration / --dt",
+        unit: "RK4 steps".into(),
+        count: steps,
+        limit: MAX_STEPS,
+        // A line per step and the first: t, then q, q̇ and q̈.
+        bytes: (steps + 1.0) * (1 + 3 * n) as f64 * BYTES_PER_NUMBER,
     }
+    .check(args.limits.no_limits, || {
+        time_per_unit(|| drop(rk4(&numeric, &q, &qd, &tau, args.dt)))
+    })?;
     let (steps, h) = (steps as usize, args.duration / steps);
+    let mut progress = Progress::new("dynamics simulate", "RK4 steps", steps as f64);
     let failed = |e: std::io::Error| {
         Failure::File(format!("{}: {e}", args.csv.as_deref().unwrap_or("stdout")))
     };
@@ -62,7 +70,7 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
     let mut energy = (0.0, 0.0);
     for step in 0..=steps {
         let t = step as f64 * h;
-        let qdd = acceleration(&numeric, &q, &qd, &tau).map_err(|e| at_time(t, &e))?;
+        let qdd = acceleration(&numeric, &q, &qd, &tau).map_err(|e| at_time(args, t, &e))?;
         let (kinetic, potential) = numeric.energies(&q, &qd);
         let mut values = q.clone();
         values.extend([kinetic + potential, kinetic, potential]);
@@ -79,7 +87,8 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
             .collect();
         writeln!(out, "{t},{}", row.join(",")).map_err(failed)?;
         if step < steps {
-            (q, qd) = rk4(&numeric, &q, &qd, &tau, h).map_err(|e| at_time(t, &e))?;
+            (q, qd) = rk4(&numeric, &q, &qd, &tau, h).map_err(|e| at_time(args, t, &e))?;
+            progress.update(step as f64 + 1.0);
         }
     }
     out.flush().map_err(failed)?;
@@ -99,8 +108,19 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
     ))
 }
 
-fn at_time(t: f64, message: &str) -> Failure {
-    Failure::File(format!("at t = {t} s: {message}"))
+/// A failure of the motion at `t`, with the parameters `--set` gave, which may be its cause.
+fn at_time(args: &Simulate, t: f64, message: &str) -> Failure {
+    let sets: Vec<String> = args
+        .set
+        .iter()
+        .map(|s| format!("{}={:?}", s.name, s.value))
+        .collect();
+    let with = if sets.is_empty() {
+        String::new()
+    } else {
+        format!(" (with the parameters --set {})", sets.join(", "))
+    };
+    Failure::File(format!("at t = {t} s: {message}{with}"))
 }
 
 /// `q̈ = M⁻¹ (τ − C q̇ − g − τ_f)`.
@@ -124,7 +144,9 @@ fn acceleration(numeric: &Numeric, q: &[f64], qd: &[f64], tau: &[f64]) -> Result
     if qdd.iter().all(|x| x.is_finite()) {
         Ok(qdd)
     } else {
-        Err(format!("the motion diverges at q = {q:?}, q̇ = {qd:?}"))
+        Err(format!(
+            "the motion diverges: q̈ is not a finite number at q = {q:?}, q̇ = {qd:?}"
+        ))
     }
 }
 

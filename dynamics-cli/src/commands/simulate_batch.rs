@@ -4,25 +4,33 @@
 //!
 //! The initial states are the lines of a trajectory file, in the format `size --csv` reads
 //! (`t,q1..qn`, optionally `qd1..qdn`, `qdd1..qddn`, `t` increasing): every line's `(q, q̇)` is
-//! one initial state, `q̇ = 0` in a file of positions only. The output has a line per state: its time in the file, the
-//! state at the end of the duration, and the total energy at the start and at the end.
+//! one initial state, `q̇ = 0` in a file of positions only. The output has a line per state:
+//! its time in the file, the state at the end of the duration, and the total energy at the
+//! start and at the end. The file is read twice, to count and check its states and then to
+//! simulate them four by four, each group's lines written when it is done: nothing held grows
+//! with the file.
+//!
+//! A group costs one state's steps whether it holds one state or four: the limit without
+//! `--no-limits` counts steps of a group ([`MAX_GROUP_STEPS`]), and the output's bytes.
 //!
 //! `q̈` is the forward dynamics' closed form, the same graph the generated `forward_dynamics`
 //! is emitted from (LDLᵀ of M unrolled), evaluated by a tape in the runtime's `F64x4`
 //! (`joint_tape`); a state whose mass matrix stops being positive definite, or whose motion
 //! diverges, ends with non-finite values, reported as such.
 
-use super::eval::{joints, parameters};
+use super::eval::{joints, settings};
 use super::{load, Failure};
 use crate::args::Simulate;
+use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::joint_tape::{gather, JointTape, Work};
 use crate::lanes::{Four, LANES};
 use crate::trajectory::{self, Given, Sample};
 use dynamics_codegen::symbolic::TapeScalar;
-use std::io::{BufReader, Write};
+use std::io::{BufReader, BufWriter, Write};
 
-/// The most state-steps a batch takes.
-const MAX_STATE_STEPS: f64 = 1e9;
+/// The most RK4 steps of a group of [`LANES`] states a batch takes without `--no-limits`: a
+/// group costs one state's steps, whether it holds one state or four.
+const MAX_GROUP_STEPS: f64 = 1e6;
 
 /// One robot's forward dynamics and energies, as tapes.
 struct Dynamics {
@@ -31,12 +39,23 @@ struct Dynamics {
     n: usize,
 }
 
+/// Where the lines go, and what came of the groups so far.
+struct Output<'a> {
+    out: Box<dyn Write + 'a>,
+    path: &'a str,
+    steps: usize,
+    h: f64,
+    diverged: usize,
+    done: f64,
+    progress: Progress,
+}
+
 pub fn run(args: &Simulate, path: &str) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let n = robot.joints.len();
     let tau = joints("simulate", "--tau", args.tau.as_ref(), n)?;
     let eq = dynamics_codegen::derive(&robot);
-    let fields = parameters("simulate", &eq.fields, &args.set)?;
+    let fields = settings("simulate", &robot, &args.set)?;
     let tape = |outputs: &[_]| {
         JointTape::new(&eq.graph, outputs, &eq.angle_offsets, &fields, Some(&tau))
             .map_err(Failure::File)
@@ -46,54 +65,84 @@ pub fn run(args: &Simulate, path: &str) -> Result<String, Failure> {
         energy: tape(&[eq.kinetic_energy, eq.potential_energy])?,
         n,
     };
-    let states = read(path, n)?;
+    // A first pass checks every line and counts the states, which are then streamed: nothing
+    // held grows with the file.
+    let states = read(path, n, |_| {})?;
     let steps = (args.duration / args.dt).round().max(1.0);
-    if steps * states.len() as f64 > MAX_STATE_STEPS {
-        return Err(super::eval::usage(
-            "simulate",
-            &format!(
-                "--batch: {} states × {steps} steps; at most {MAX_STATE_STEPS} in all",
-                states.len()
-            ),
-        ));
+    let groups = states.div_ceil(LANES);
+    Cost {
+        command: "simulate",
+        options: "--batch, --duration / --dt",
+        unit: format!(
+            "RK4 steps of a group ({states} states in {groups} group{} of up to {LANES}, \
+             {steps} steps each)",
+            if groups == 1 { "" } else { "s" }
+        ),
+        count: groups as f64 * steps,
+        limit: MAX_GROUP_STEPS,
+        bytes: states as f64 * (3 + 2 * n) as f64 * BYTES_PER_NUMBER,
     }
+    .check(args.limits.no_limits, || {
+        let zero = vec![Four::splat(0.0); n];
+        let mut work = Work::default();
+        time_per_unit(|| drop(dynamics.rk4(&zero, &zero, args.dt, &mut work)))
+    })?;
     let (steps, h) = (steps as usize, args.duration / steps);
-    let mut lines = vec![header(n)];
-    let mut diverged = 0;
-    for group in states.chunks(LANES) {
-        let ends = dynamics.simulate(group, steps, h);
-        for (s, end) in group.iter().zip(ends) {
-            diverged += usize::from(!end.iter().all(|x| x.is_finite()));
-            let values: Vec<String> = end.iter().map(f64::to_string).collect();
-            lines.push(format!("{},{}", s.t, values.join(",")));
-        }
-    }
-    let text = lines.join("\n") + "\n";
-    let Some(out) = &args.csv else {
-        return Ok(text);
+    let target = args.csv.as_deref().unwrap_or("stdout");
+    let failed = |e: std::io::Error| Failure::File(format!("{target}: {e}"));
+    let out: Box<dyn Write> = match &args.csv {
+        Some(out) => Box::new(BufWriter::new(std::fs::File::create(out).map_err(failed)?)),
+        None => Box::new(BufWriter::new(std::io::stdout().lock())),
     };
-    let failed = |e: std::io::Error| Failure::File(format!("{out}: {e}"));
-    std::fs::File::create(out)
-        .and_then(|mut f| f.write_all(text.as_bytes()))
-        .map_err(failed)?;
+    let mut output = Output {
+        out,
+        path: target,
+        steps,
+        h,
+        diverged: 0,
+        done: 0.0,
+        progress: Progress::new(
+            "dynamics simulate --batch",
+            "RK4 steps of a group",
+            groups as f64 * steps as f64,
+        ),
+    };
+    writeln!(output.out, "{}", header(n)).map_err(failed)?;
+    let mut group = Vec::with_capacity(LANES);
+    let mut written = Ok(());
+    read(path, n, |state| {
+        if written.is_ok() {
+            group.push(state);
+        }
+        if group.len() == LANES {
+            written = dynamics.write(&group, &mut output);
+            group.clear();
+        }
+    })?;
+    if !group.is_empty() && written.is_ok() {
+        written = dynamics.write(&group, &mut output);
+    }
+    written?;
+    output.out.flush().map_err(failed)?;
+    if args.csv.is_none() {
+        return Ok(String::new());
+    }
     Ok(format!(
-        "{}: {} initial states from {path}, each {steps} RK4 steps of {h} s to t = {} s, \
-         {LANES} at a time; {diverged} diverged (non-finite at the end)\n",
-        robot.name,
-        states.len(),
-        args.duration
+        "{}: {states} initial states from {path}, each {steps} RK4 steps of {h} s to t = {} s, \
+         {LANES} at a time; {} diverged (non-finite at the end)\n",
+        robot.name, args.duration, output.diverged
     ))
 }
 
-/// The initial states of the file at `path`: each line's `t`, `q` and `q̇` (zero where the file
-/// gives positions only).
-fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
+/// Passes the initial states of the file at `path` to `each`, in order: each line's `t`, `q`
+/// and `q̇` (zero where the file gives positions only); how many.
+fn read(path: &str, n: usize, mut each: impl FnMut(Sample)) -> Result<usize, Failure> {
     let file = std::fs::File::open(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
     let columns = trajectory::Columns {
         joints: n,
         torques: false,
     };
-    let mut states = Vec::new();
+    let mut count = 0;
     trajectory::read_rows(
         BufReader::new(file),
         columns,
@@ -102,7 +151,8 @@ fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
                 Given::Positions => vec![0.0; n],
                 Given::Velocities | Given::Accelerations => row[1 + n..1 + 2 * n].to_vec(),
             };
-            states.push(Sample {
+            count += 1;
+            each(Sample {
                 t: row[0],
                 q: row[1..=n].to_vec(),
                 qd,
@@ -116,7 +166,7 @@ fn read(path: &str, n: usize) -> Result<Vec<Sample>, Failure> {
         |_| {},
     )
     .map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    Ok(states)
+    Ok(count)
 }
 
 /// The output's header: the state's time in the file, the final state, the energies.
@@ -131,9 +181,21 @@ fn header(n: usize) -> String {
 }
 
 impl Dynamics {
+    /// Simulates the states of `group` (up to [`LANES`]) and writes their lines.
+    fn write(&self, group: &[Sample], output: &mut Output<'_>) -> Result<(), Failure> {
+        let ends = self.simulate(group, output);
+        for (s, end) in group.iter().zip(ends) {
+            output.diverged += usize::from(!end.iter().all(|x| x.is_finite()));
+            let values: Vec<String> = end.iter().map(f64::to_string).collect();
+            writeln!(output.out, "{},{}", s.t, values.join(","))
+                .map_err(|e| Failure::File(format!("{}: {e}", output.path)))?;
+        }
+        Ok(())
+    }
+
     /// The final `(q, q̇)` and the total energy at the start and at the end, of each of up to
     /// [`LANES`] initial states.
-    fn simulate(&self, group: &[Sample], steps: usize, h: f64) -> Vec<Vec<f64>> {
+    fn simulate(&self, group: &[Sample], output: &mut Output<'_>) -> Vec<Vec<f64>> {
         let lanes = |x: fn(&Sample) -> &[f64]| -> Vec<Four> {
             let values: Vec<&[f64]> = group.iter().map(x).collect();
             (0..self.n).map(|j| gather(&values, j)).collect()
@@ -141,8 +203,10 @@ impl Dynamics {
         let (mut q, mut qd) = (lanes(|s| &s.q), lanes(|s| &s.qd));
         let mut work = Work::default();
         let start = self.energy(&q, &qd, &mut work);
-        for _ in 0..steps {
-            (q, qd) = self.rk4(&q, &qd, h, &mut work);
+        for _ in 0..output.steps {
+            (q, qd) = self.rk4(&q, &qd, output.h, &mut work);
+            output.done += 1.0;
+            output.progress.update(output.done);
         }
         let end = self.energy(&q, &qd, &mut work);
         (0..group.len())

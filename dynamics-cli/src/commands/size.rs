@@ -2,9 +2,10 @@
 //! [--set NAME=VALUE].. [--svg FILE] [--json]`: actuator sizing along a trajectory
 //! ([`crate::sizing`]), read as a stream ([`crate::trajectory`]).
 
-use super::eval::{joints, parameters};
+use super::eval::{joints, settings, usage};
 use super::{load, Failure};
 use crate::args::Size;
+use crate::budget::{time_per_unit, Cost, Progress};
 use crate::format::unsigned_zero;
 use crate::plot;
 use crate::sizing::{self, Sizer, TERMS};
@@ -19,10 +20,13 @@ use std::io::{BufReader, BufWriter};
 /// Files from this size on report their progress on stderr.
 const LONG_INPUT: u64 = 1 << 20;
 
+/// The most samples of a move `size` takes without `--no-limits`.
+const MAX_SAMPLES: f64 = 1e7;
+
 pub fn run(args: &Size) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let eq = dynamics_codegen::derive(&robot);
-    let fields = parameters("size", &eq.fields, &args.set)?;
+    let fields = settings("size", &robot, &args.set)?;
     let mut terms = TermsTape::new(&robot, &eq, &fields).map_err(Failure::File)?;
     let n = robot.joints.len();
     let kinds: Vec<JointKind> = robot.joints.iter().map(|j| j.kind).collect();
@@ -33,18 +37,52 @@ pub fn run(args: &Size) -> Result<String, Failure> {
     } else {
         let from = joints("size", "--from", args.from.as_ref(), n)?;
         let to = joints("size", "--to", args.to.as_ref(), n)?;
-        let samples = args.samples as usize;
-        trajectory::quintic(&from, &to, args.duration, samples, |s| sizer.push(s));
+        check_move(&from, &to, args.duration)?;
+        let samples = args.samples as f64;
+        Cost {
+            command: "size",
+            options: "--samples",
+            unit: "samples of the move".into(),
+            count: samples,
+            limit: MAX_SAMPLES,
+            bytes: 0.0,
+        }
+        .check(args.limits.no_limits, || {
+            let few = 64;
+            let time = time_per_unit(|| {
+                trajectory::quintic(&from, &to, args.duration, few, |s| sizer.push(s));
+            });
+            time / few as f64
+        })?;
+        let mut progress = Progress::new("dynamics size", "samples", samples);
+        let mut done = 0.0;
+        trajectory::quintic(&from, &to, args.duration, args.samples as usize, |s| {
+            sizer.push(s);
+            done += 1.0;
+            progress.update(done);
+        });
         "quintic move, exact q̇ and q̈".to_string()
     };
     sizer.finish();
-    if let (Some(path), Some((line, t, (column, name, value)))) = (&args.csv, &sizer.non_finite) {
-        return Err(Failure::File(format!(
-            "{path}: line {line}, column {column} ({name}): at t = {} s τ² or the power τ q̇ is \
-             not a finite number; the sample's largest value is {value:e}, of this column (or \
-             of its differences)",
-            trajectory::decimal(*t)
-        )));
+    if let Some((line, t, (column, name, value))) = &sizer.non_finite {
+        let t = trajectory::decimal(*t);
+        let with_set = if args.set.is_empty() {
+            ""
+        } else {
+            " (with --set's parameters)"
+        };
+        return Err(Failure::File(match &args.csv {
+            Some(path) => format!(
+                "{path}{with_set}: line {line}, column {column} ({name}): at t = {t} s τ² or the \
+                 power τ q̇ is not a finite number; the sample's largest value is {value:e}, of \
+                 this column (or of its differences)"
+            ),
+            None => format!(
+                "--from, --to, --duration{with_set}: at t = {t} s τ² or the power τ q̇ is not a \
+                 finite number (the sample's largest value is {name} = {value:e}): expected a \
+                 motion whose q̇ and q̈ the robot's torques can follow"
+            ),
+        }));
     }
     if let (Some(path), Some(envelope)) = (&args.svg, &sizer.envelope) {
         let title = format!("{}: joint torques and power ({source})", robot.name);
@@ -58,6 +96,27 @@ pub fn run(args: &Size) -> Result<String, Failure> {
     })
 }
 
+/// A quintic move whose acceleration is a finite number, largest `10/√3 · |Δq| / T²`.
+fn check_move(from: &[f64], to: &[f64], duration: f64) -> Result<(), Failure> {
+    let largest = from
+        .iter()
+        .zip(to)
+        .map(|(a, b)| (b - a).abs())
+        .fold(0.0, f64::max);
+    let peak = 10.0 / 3.0_f64.sqrt() * largest / (duration * duration);
+    if largest.is_finite() && peak.is_finite() && duration * duration > 0.0 {
+        return Ok(());
+    }
+    Err(usage(
+        "size",
+        &format!(
+            "--from, --to, --duration: a move of {largest:?} (rad or m) in {duration:?} s \
+             accelerates up to 10/√3 · |Δq| / T² = {peak:?}: expected a finite number (a \
+             longer --duration or a shorter move)"
+        ),
+    ))
+}
+
 /// The robot evaluated numerically, its parameters set by `--set`.
 pub(super) fn numeric(
     robot: &Robot,
@@ -65,7 +124,7 @@ pub(super) fn numeric(
     sets: &[crate::args::Setting],
 ) -> Result<Numeric, Failure> {
     let fields = robot.fields();
-    let values = parameters(command, &fields, sets)?;
+    let values = settings(command, robot, sets)?;
     let named: Vec<(&str, f64)> = fields.iter().map(String::as_str).zip(values).collect();
     // Every field has a value: `parameters` checked.
     Numeric::new(robot, &named).map_err(|e| Failure::File(format!("no value for `{}`", e.0)))

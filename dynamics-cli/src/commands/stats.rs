@@ -192,7 +192,9 @@ fn whole_derive(
     let input: syn::DeriveInput = syn::parse_quote!(struct #ty { #(#fields: f64,)* });
     let mut wall = Duration::MAX;
     let mut cpu: Option<Duration> = None;
-    for _ in 0..runs {
+    let mut progress = crate::budget::Progress::new("dynamics stats", "runs", runs as f64);
+    for run in 0..runs {
+        progress.update(run as f64);
         let (start, start_cpu) = (Instant::now(), thread_cpu_time());
         let tokens = expand_robot(&input, robot, args.families.set(), simplify);
         let (elapsed, end_cpu) = (start.elapsed(), thread_cpu_time());

@@ -96,17 +96,22 @@ impl Problem<'_> {
     }
 
     /// The search for the motion of lowest condition number, from `seed`, with at most
-    /// `evaluations` evaluations.
+    /// `evaluations` evaluations, `progress` told the count after each.
     #[must_use]
-    pub fn design(&self, seed: u64, evaluations: usize) -> Design {
+    pub fn design(&self, seed: u64, evaluations: usize, mut progress: impl FnMut(usize)) -> Design {
         let m = self.grid.samples();
         let count = SEARCH_SAMPLES.min(m);
         let ks: Vec<usize> = (0..count).map(|j| j * m / count).collect();
         let mut gram = Gram::new(self.model);
         let dimension = self.per_joint() * self.limits.len();
-        let outcome = minimise(dimension, seed, evaluations, |x| match self.decode(x) {
-            Some(series) => self.condition(&mut gram, &series, &ks),
-            None => f64::INFINITY,
+        let mut done = 0;
+        let outcome = minimise(dimension, seed, evaluations, |x| {
+            done += 1;
+            progress(done);
+            match self.decode(x) {
+                Some(series) => self.condition(&mut gram, &series, &ks),
+                None => f64::INFINITY,
+            }
         });
         // Every point of the box decodes but a measure-zero set; these were evaluated.
         let decode = |x: &[f64]| self.decode(x).unwrap_or_default();

@@ -16,7 +16,7 @@ pub struct Report<'a> {
     pub problem: &'a Problem<'a>,
     pub limits: &'a [JointLimits],
     pub design: &'a Design,
-    pub periods: u32,
+    pub periods: u64,
     pub seed: u64,
     /// Per joint: `rad` or `m`.
     pub units: Vec<&'static str>,

@@ -8,6 +8,12 @@ pub trait States<T, const M: usize> {
     fn count(&self) -> usize;
     /// Value `j` of state `k`.
     fn value(&self, k: usize, j: usize) -> T;
+    /// The first value whose slice holds another number of states than [`States::count`],
+    /// and that number: one slice per value may be ragged, a slice of states never is.
+    #[inline(always)]
+    fn ragged(&self) -> Option<(usize, usize)> {
+        None
+    }
     /// State `k`.
     #[inline(always)]
     fn state(&self, k: usize) -> [T; M] {
@@ -46,8 +52,8 @@ impl<T: Copy, const M: usize, const K: usize> States<T, M> for [[T; M]; K] {
     }
 }
 
-/// One slice per value. The number of states is the first slice's length (0 for `M = 0`); a
-/// shorter slice panics when read past its end.
+/// One slice per value. The number of states is the first slice's length (0 for `M = 0`); the
+/// `_batch` methods refuse slices of different lengths ([`States::ragged`]) before they read.
 impl<T: Copy, const M: usize> States<T, M> for [&[T]; M] {
     #[inline(always)]
     fn count(&self) -> usize {
@@ -57,6 +63,18 @@ impl<T: Copy, const M: usize> States<T, M> for [&[T]; M] {
     fn value(&self, k: usize, j: usize) -> T {
         self[j][k]
     }
+    #[inline(always)]
+    fn ragged(&self) -> Option<(usize, usize)> {
+        ragged(self.iter().map(|column| column.len()))
+    }
+}
+
+/// The first length of `lengths` that is not the first's, with its index.
+#[inline(always)]
+fn ragged(lengths: impl Iterator<Item = usize>) -> Option<(usize, usize)> {
+    let mut lengths = lengths.enumerate();
+    let (_, first) = lengths.next()?;
+    lengths.find(|&(_, len)| len != first)
 }
 
 /// Results written by index: `&mut [O]`, or one slice per joint for results of one value per
@@ -66,6 +84,12 @@ pub trait StatesMut<O> {
     fn count(&self) -> usize;
     /// Writes result `k`.
     fn set(&mut self, k: usize, value: O);
+    /// As [`States::ragged`]: the first slice of another length than the first's, and that
+    /// length.
+    #[inline(always)]
+    fn ragged(&self) -> Option<(usize, usize)> {
+        None
+    }
     /// Results `k` to `k + L − 1` side by side, where they are (a slice of results), for
     /// writing a group's lanes in place.
     #[inline(always)]
@@ -113,6 +137,10 @@ impl<T, const M: usize> StatesMut<[T; M]> for [&mut [T]; M] {
         self.first().map_or(0, |column| column.len())
     }
     #[inline(always)]
+    fn ragged(&self) -> Option<(usize, usize)> {
+        ragged(self.iter().map(|column| column.len()))
+    }
+    #[inline(always)]
     fn set(&mut self, k: usize, value: [T; M]) {
         for (column, x) in self.iter_mut().zip(value) {
             column[k] = x;
@@ -125,6 +153,10 @@ impl<O, S: StatesMut<O> + ?Sized> StatesMut<O> for &mut S {
     #[inline(always)]
     fn count(&self) -> usize {
         (**self).count()
+    }
+    #[inline(always)]
+    fn ragged(&self) -> Option<(usize, usize)> {
+        (**self).ragged()
     }
     #[inline(always)]
     fn set(&mut self, k: usize, value: O) {

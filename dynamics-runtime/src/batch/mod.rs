@@ -18,13 +18,20 @@
 //! for exactly the states whose mass matrix is not positive definite: a group in which one lane
 //! fails is evaluated again one state at a time.
 //!
+//! **NaN.** A state whose result has a NaN has a NaN in the same places in its batch's result,
+//! but not always of the same sign: see [`lanes`](crate::lanes). (Evaluating such a group again
+//! state by state would not give the sign of the caller's own call either: each call site of a
+//! method is compiled apart.)
+//!
 //! **Threads.** With the `rayon` feature, [`InParallel`]`(&robot)` has the same `_batch`
 //! methods, which cut the states into chunks of whole groups on rayon's thread pool: the same
 //! bits as on one thread.
 //!
 //! # Panics
 //!
-//! If an input does not hold as many states as the output.
+//! If an input does not hold as many states as the output, or one slice per joint (of an input
+//! or of the output) holds another number than its first: the message names the input and the
+//! lengths.
 //!
 //! [`F64x4`]: crate::F64x4
 //! [`F32x8`]: crate::F32x8
@@ -123,13 +130,33 @@ pub fn drive<X, O, const L: usize>(
     }
 }
 
-/// Panics unless `input` holds `len` states.
+/// Panics unless `input` holds `len` states, in slices of one length (`ragged`: the first
+/// slice of another length, and that length).
 #[doc(hidden)]
 #[inline(always)]
 #[track_caller]
-pub fn check_count(name: &str, count: usize, len: usize) {
+pub fn check_count(name: &str, count: usize, ragged: Option<(usize, usize)>, len: usize) {
+    if let Some((j, other)) = ragged {
+        panic!(
+            "`{name}` has slices of different lengths: its first holds {count} states, its \
+             slice {j} holds {other}"
+        );
+    }
     assert!(
         count == len,
         "`{name}` holds {count} states, the output {len}"
     );
+}
+
+/// Panics unless the output's slices have one length.
+#[doc(hidden)]
+#[inline(always)]
+#[track_caller]
+pub fn check_output(len: usize, ragged: Option<(usize, usize)>) {
+    if let Some((j, other)) = ragged {
+        panic!(
+            "the output has slices of different lengths: its first holds {len} results, its \
+             slice {j} holds {other}"
+        );
+    }
 }

@@ -7,7 +7,7 @@
 //! A batch of up to [`MIN_CHUNK`] states runs on the calling thread: waking the pool's threads
 //! costs more than they save on it.
 
-use super::{check_count, drive, lanes, BatchScalar, States, StatesMut};
+use super::{check_count, check_output, drive, lanes, BatchScalar, States, StatesMut};
 use rayon::prelude::*;
 use std::vec::Vec;
 // The result table's types name these.
@@ -152,7 +152,8 @@ macro_rules! parallel_method {
         ///
         /// # Panics
         ///
-        /// If an input does not hold as many states as `out`.
+        /// If an input does not hold as many states as `out`, or the slices of one (one per
+        /// joint) or of `out` differ in length.
         #[inline]
         #[track_caller]
         pub fn $batch<T, const L: usize, const N: usize $(, const $count: usize)?>(
@@ -165,7 +166,8 @@ macro_rules! parallel_method {
         {
             let robot = self.0;
             let len = out.count();
-            $(check_count(stringify!($argument), $argument.count(), len);)*
+            check_output(len, out.ragged());
+            $(check_count(stringify!($argument), $argument.count(), $argument.ragged(), len);)*
             drive_parallel::<_, _, L>(
                 len,
                 out,

@@ -1,7 +1,7 @@
 //! The batch traits, from the method table's rows (`methods.rs`): for each of the runtime's
 //! traits, one of `_batch` methods, implemented for every type that implements the first.
 
-use super::{check_count, drive, lanes, BatchScalar, States, StatesMut};
+use super::{check_count, check_output, drive, lanes, BatchScalar, States, StatesMut};
 // The result table's types name these.
 use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose};
 
@@ -45,7 +45,8 @@ macro_rules! batch_method {
         ///
         /// # Panics
         ///
-        /// If an input does not hold as many states as `out`.
+        /// If an input does not hold as many states as `out`, or the slices of one (one per
+        /// joint) or of `out` differ in length.
         #[inline]
         #[track_caller]
         fn $batch<T: BatchScalar<L>, const L: usize>(
@@ -54,7 +55,8 @@ macro_rules! batch_method {
             out: &mut (impl StatesMut<array_result!($result)> + ?Sized),
         ) {
             let len = out.count();
-            $(check_count(stringify!($argument), $argument.count(), len);)*
+            check_output(len, out.ragged());
+            $(check_count(stringify!($argument), $argument.count(), $argument.ragged(), len);)*
             drive::<_, _, L>(
                 len,
                 out,

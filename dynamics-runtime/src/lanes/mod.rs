@@ -23,7 +23,10 @@
 //! `mul_add` is fused in the lanes exactly where it is fused for the scalar (the `std` feature
 //! and FMA in the build), sines and cosines come from the same kernels as the scalar's
 //! (lanes outside their fast range one by one, as the scalar), `sign` and `tanh` lane by
-//! lane. Only NaN payloads may differ.
+//! lane. A NaN is NaN in both, but its sign and payload may differ: an operation on two NaNs
+//! gives the first operand's on x86, and the compiler orders the operands of sums and products
+//! as suits its registers (Rust leaves a NaN result's sign unspecified), differently in the
+//! lanes' code and the scalar's, and even at two call sites of the same scalar method.
 //!
 //! **Failure on lanes.** The methods that solve with the mass matrix (`forward_dynamics`,
 //! `mass_matrix_inverse`, `forward_dynamics_derivatives`) test the pivots of its LDLᵀ with
