@@ -283,10 +283,10 @@ fn bad_limits_and_samplings_are_usage_errors() {
         ),
         (&["--qd-max", "0"], "--qd-max: joint 1: 0 is not positive"),
         (&["--rate", "2"], "--period × --rate: 20 samples per period"),
-        // 10 s at 100 Hz: 1000 samples a period.
+        // 10 s at 100 Hz: 1000 samples a period, 10⁷ lines of 19 numbers.
         (
             &["--periods", "10001"],
-            "10001 periods of 1000 samples, 1.0001e7 samples to write; at most 1e7",
+            "about 3.8 GB of output; a run takes at most 1.0 GB of output without --no-limits",
         ),
     ];
     for (extra, message) in cases {

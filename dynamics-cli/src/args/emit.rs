@@ -17,7 +17,7 @@ pub struct Emit {
     /// C only: the functions' prefix, NAME_mass_matrix, ... [default: the robot's name in lower
     /// case, other characters than letters and digits `_`]. ASCII letters, digits and single
     /// underscores, a letter first: for two robots whose names give the same prefix
-    #[arg(long, value_name = "NAME", value_parser = prefix)]
+    #[arg(long, value_name = "NAME", value_parser = prefix, allow_hyphen_values = true)]
     pub prefix: Option<String>,
 }
 
