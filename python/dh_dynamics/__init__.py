@@ -23,12 +23,15 @@ A description whose quantities are symbols (``mass = "m1"``) takes their values:
 
 from ._compiled import CompilerError
 from ._errors import DescriptionError, NonFiniteInput, NotPositiveDefinite
+from ._methods import ForwardDynamicsDerivatives, InverseDynamicsDerivatives
 from ._parameters import Parameters
 from .robot import Robot
 
 __all__ = [
     "Robot",
     "Parameters",
+    "InverseDynamicsDerivatives",
+    "ForwardDynamicsDerivatives",
     "DescriptionError",
     "NonFiniteInput",
     "NotPositiveDefinite",

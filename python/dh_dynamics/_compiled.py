@@ -151,7 +151,7 @@ def _build_somewhere(cc, flags, header, name):
     return path, error
 
 
-_SCRATCH = []
+_SCRATCH: list[Path] = []
 
 
 def _scratch_dir():

@@ -1,7 +1,10 @@
 """The package's exceptions: a description the generator refused, an input that is not finite,
 and a solve whose mass matrix was not positive definite."""
 
+from __future__ import annotations
+
 import re
+from typing import Any
 
 import numpy as np
 
@@ -17,6 +20,12 @@ class DescriptionError(ValueError):
     are ``None`` where it has no place, such as a missing file); ``problems`` lists every problem
     as the ``dynamics`` command prints it, ``file:line:col: message``.
     """
+
+    problems: list[str]
+    file: str | None
+    line: int | None
+    column: int | None
+    message: str
 
     def __init__(self, problems):
         self.problems = list(problems)
@@ -57,6 +66,10 @@ class NonFiniteInput(ValueError):
     state, as it would have returned it (NaN where an input is not finite).
     """
 
+    states: list[int]
+    arguments: list[str]
+    result: Any
+
     def __init__(self, method, problems, states, count, result, singular=()):
         # `count` is None for one state (not a batch).
         self.states = states
@@ -82,6 +95,9 @@ class NotPositiveDefinite(np.linalg.LinAlgError):
     ``states`` are their indices in the batch (``[0]`` for a single state); ``result`` is what
     the method computed for every state, the failed ones included, as it would have returned it.
     """
+
+    states: list[int]
+    result: Any
 
     def __init__(self, method, states, count, result):
         self.states = states

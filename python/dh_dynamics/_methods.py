@@ -8,23 +8,39 @@ input beside batches is used for every state, as NumPy broadcasts; ``N`` may be 
 state's result with ``(N,)`` before it for a batch.
 """
 
+from __future__ import annotations
+
 import ctypes
-from collections import namedtuple
+from typing import Any, NamedTuple
 
 import numpy as np
+from numpy.typing import NDArray
 
 from . import _inputs
 from ._errors import NonFiniteInput, NotPositiveDefinite
 
+
 # The results the Rust trait returns as structs (`dynamics-runtime/src/derivatives.rs`): the
 # same fields, in the same order, as named tuples.
+class InverseDynamicsDerivatives(NamedTuple):
+    """``inverse_dynamics_derivatives``: ∂τ/∂q and ∂τ/∂q̇, row i the derivatives of τ_i."""
+
+    dtau_dq: NDArray[np.floating[Any]]
+    dtau_dqd: NDArray[np.floating[Any]]
+
+
+class ForwardDynamicsDerivatives(NamedTuple):
+    """``forward_dynamics_derivatives``: q̈, ∂q̈/∂q, ∂q̈/∂q̇ and ∂q̈/∂τ = M⁻¹."""
+
+    qdd: NDArray[np.floating[Any]]
+    dqdd_dq: NDArray[np.floating[Any]]
+    dqdd_dqd: NDArray[np.floating[Any]]
+    dqdd_dtau: NDArray[np.floating[Any]]
+
+
 _STRUCTS = {
-    "inverse_dynamics_derivatives": namedtuple(
-        "InverseDynamicsDerivatives", ["dtau_dq", "dtau_dqd"]
-    ),
-    "forward_dynamics_derivatives": namedtuple(
-        "ForwardDynamicsDerivatives", ["qdd", "dqdd_dq", "dqdd_dqd", "dqdd_dtau"]
-    ),
+    "inverse_dynamics_derivatives": InverseDynamicsDerivatives,
+    "forward_dynamics_derivatives": ForwardDynamicsDerivatives,
 }
 
 _DTYPES = {"float64": np.float64, "float32": np.float32}

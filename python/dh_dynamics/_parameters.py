@@ -9,15 +9,20 @@ which must name every one); every value is checked (a real, finite number) befor
 changed. A method called while some have no value says which.
 """
 
+from __future__ import annotations
+
 import math
 import numbers
-from collections.abc import MutableMapping
+from collections.abc import Iterator, MutableMapping
+from typing import Optional
 
 import numpy as np
 
 
-class Parameters(MutableMapping):
+class Parameters(MutableMapping[str, Optional[float]]):
     """The robot's parameters by name, in the order of the C functions' ``params``."""
+
+    names: tuple[str, ...]
 
     def __init__(self, robot, names):
         self._robot = robot
@@ -25,21 +30,21 @@ class Parameters(MutableMapping):
         self._values = {name: None for name in self.names}
         self._arrays = None
 
-    def __getitem__(self, name):
+    def __getitem__(self, name: str) -> float | None:
         if name not in self._values:
             raise KeyError(self._unknown(name))
         return self._values[name]
 
-    def __setitem__(self, name, value):
+    def __setitem__(self, name: str, value: float | None) -> None:
         self.update({name: value})
 
     def __delitem__(self, name):
         raise TypeError(f"{self._robot}: a parameter cannot be removed, only given another value")
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[str]:
         return iter(self.names)
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self.names)
 
     def __contains__(self, name):

@@ -1,0 +1,189 @@
+"""The types of :class:`Robot`, for editors and type checkers. Its methods are attached at run
+time, one per function of the robot's C header; they are declared here, one per row of the
+method table, so that a method of a family a robot was built without type-checks and raises
+``AttributeError`` when called."""
+
+import os
+from collections.abc import Iterable, Mapping
+from typing import Any, Union
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ._methods import ForwardDynamicsDerivatives, InverseDynamicsDerivatives
+from ._parameters import Parameters
+
+_Path = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
+
+class Robot:
+    name: str
+    dof: int
+    header: str
+    methods: tuple[str, ...]
+
+    def __init__(
+        self,
+        source: Iterable[str],
+        families: str | Iterable[str] = (),
+        parameters: Mapping[str, float] | None = None,
+    ) -> None: ...
+    @classmethod
+    def from_file(
+        cls,
+        path: _Path,
+        *,
+        families: str | Iterable[str] = (),
+        tool: Iterable[float] | None = None,
+        parameters: Mapping[str, float] | None = None,
+    ) -> Robot: ...
+    @classmethod
+    def from_urdf(
+        cls,
+        path: _Path,
+        base: str | None = None,
+        tip: str | None = None,
+        *,
+        families: str | Iterable[str] = (),
+    ) -> Robot: ...
+    @property
+    def parameters(self) -> Parameters: ...
+    @parameters.setter
+    def parameters(self, values: Mapping[str, float]) -> None: ...
+    def equations(self, latex: bool = False, kinematics: bool = False) -> str: ...
+    def _repr_latex_(self) -> str: ...
+
+    # The methods, generated from the method table (`dynamics-runtime/src/methods.rs`) by
+    # `tests/tests/python_stubs.rs`: `DYNAMICS_BLESS=1 cargo test -p dynamics-tests --test
+    # python_stubs` rewrites them to the end marker. Each input is one state, shape (n,), or a
+    # batch, shape (N, n); the result has (N,) before one state's shape for a batch.
+    def mass_matrix(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """M(q), with the actuator inertia on the diagonal."""
+    def coriolis_matrix(self, q: ArrayLike, qd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """C(q, q̇), with C_ij = Σ_k D_ijk q̇_k."""
+    def coriolis_torques(self, q: ArrayLike, qd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """C(q, q̇) q̇."""
+    def gravity_torques(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """g(q), with joint springs."""
+    def bias_torques(self, q: ArrayLike, qd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """C(q, q̇) q̇ + g(q)."""
+    def inverse_dynamics(
+        self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """τ = M(q) q̈ + C(q, q̇) q̇ + g(q)."""
+    def friction_torques(self, qd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Joint friction: f_v q̇ + f_c sign(q̇) + f_0."""
+    def kinetic_energy(self, q: ArrayLike, qd: ArrayLike) -> float | NDArray[np.floating[Any]]:
+        """The kinetic energy."""
+    def potential_energy(self, q: ArrayLike) -> float | NDArray[np.floating[Any]]:
+        """The potential energy."""
+    def hand_pose(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The hand frame's pose, A1 ⋯ An (and the tool)."""
+    def link_poses(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The pose of every link frame, A1 ⋯ Ai."""
+    def hand_jacobian_in_base(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The hand's Jacobian in the base frame."""
+    def hand_jacobian_in_hand(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The book's ᴴJ, the hand's Jacobian in the hand frame."""
+    def hand_acceleration_bias_in_base(
+        self, q: ArrayLike, qd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """J̇ q̇ of the hand, in the base frame."""
+    def hand_acceleration_bias_in_hand(
+        self, q: ArrayLike, qd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """J̇ q̇ of the hand, in the hand's axes."""
+    def joint_torques_for_hand_wrench(
+        self, q: ArrayLike, wrench: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """T = ᴴJᵀ ᴴF for a wrench in the hand frame."""
+    def joint_torques_for_base_wrench(
+        self, q: ArrayLike, wrench: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """T = Jᵀ F for a wrench in base axes."""
+    def mass_matrix_inverse(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """M(q)⁻¹, through the LDLᵀ of M."""
+    def forward_dynamics(
+        self, q: ArrayLike, qd: ArrayLike, tau: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """q̈ = M(q)⁻¹ (τ − C(q, q̇) q̇ − g(q) − f(q̇))."""
+    def inverse_dynamics_derivatives(
+        self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike
+    ) -> InverseDynamicsDerivatives:
+        """∂τ/∂q and ∂τ/∂q̇ at (q, q̇, q̈).
+
+        Opt-in: ``families=['derivatives']``.
+        """
+    def forward_dynamics_derivatives(
+        self, q: ArrayLike, qd: ArrayLike, tau: ArrayLike
+    ) -> ForwardDynamicsDerivatives:
+        """q̈, ∂q̈/∂q, ∂q̈/∂q̇ and ∂q̈/∂τ = M⁻¹ at (q, q̇, τ).
+
+        Opt-in: ``families=['derivatives']``.
+        """
+    def regressor(self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Y(q, q̇, q̈), with τ = Y π for the rigid bodies.
+
+        Opt-in: ``families=['regressor']``.
+        """
+    def joint_regressor(self, qd: ArrayLike, qdd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The actuator inertia's and friction's columns, per joint.
+
+        Opt-in: ``families=['regressor']``.
+        """
+    def joint_parameters(self) -> NDArray[np.floating[Any]]:
+        """The actuator inertia and friction coefficients, per joint.
+
+        Opt-in: ``families=['regressor']``.
+        """
+    def standard_parameters(self) -> NDArray[np.floating[Any]]:
+        """The standard parameters π of each link.
+
+        Opt-in: ``families=['regressor']``.
+        """
+    def inverse_dynamics_simplified(
+        self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """τ pruned within the tolerance over the envelope.
+
+        Only for a description file with a ``[simplify]`` table.
+        """
+    def mass_matrix_simplified(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """M(q) pruned within the tolerance over the envelope.
+
+        Only for a description file with a ``[simplify]`` table.
+        """
+    def coriolis_torques_simplified(
+        self, q: ArrayLike, qd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """C(q, q̇) q̇ pruned within the tolerance over the envelope.
+
+        Only for a description file with a ``[simplify]`` table.
+        """
+    def gravity_torques_simplified(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """g(q) pruned within the tolerance over the envelope.
+
+        Only for a description file with a ``[simplify]`` table.
+        """
+    def base_regressor(
+        self, q: ArrayLike, qd: ArrayLike, qdd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """Y_B(q, q̇, q̈), with τ = Y_B π_B.
+
+        Opt-in: ``families=['base_parameters']``.
+        """
+    def base_parameters(self) -> NDArray[np.floating[Any]]:
+        """The base parameters π_B of the description.
+
+        Opt-in: ``families=['base_parameters']``.
+        """
+    def base_from_standard(self) -> NDArray[np.floating[Any]]:
+        """The map P from the links' standard parameters π to π_B.
+
+        Opt-in: ``families=['base_parameters']``.
+        """
+    def base_from_joints(self) -> NDArray[np.floating[Any]]:
+        """The map P_J from the joints' parameters to π_B.
+
+        Opt-in: ``families=['base_parameters']``.
+        """
+    # End of the generated methods.
