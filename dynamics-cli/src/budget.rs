@@ -4,7 +4,6 @@
 //! past a limit with what they would cost and the option that allows them (`--no-limits`);
 //! once under way, a run longer than a few seconds shows its progress on stderr.
 
-use crate::commands::{usage, Failure};
 use std::time::{Duration, Instant};
 
 /// The most bytes a command writes without `--no-limits`.
@@ -20,8 +19,6 @@ const UNREACHABLE: f64 = 9.007_199_254_740_992e15;
 
 /// The cost of a run before it starts.
 pub struct Cost<'a> {
-    /// The command, for its usage error.
-    pub command: &'static str,
     /// The options that set the cost, as the user would change them: `--duration / --dt`.
     pub options: &'a str,
     /// What the count counts, plural, and how the count was made: `RK4 steps (2 states in 1
@@ -35,14 +32,14 @@ pub struct Cost<'a> {
 }
 
 impl Cost<'_> {
-    /// `Ok` within the limits, or past them with `allowed` (`--no-limits`); else the usage
-    /// error that says what the run would cost (its rough time from `seconds_per_unit`, which
+    /// `Ok` within the limits, or past them with `allowed` (`--no-limits`); else the message
+    /// of the usage error, which says what the run would cost (its rough time from `seconds_per_unit`, which
     /// times a little of the work) and how to allow it.
     pub fn check(
         &self,
         allowed: bool,
         seconds_per_unit: impl FnOnce() -> f64,
-    ) -> Result<(), Failure> {
+    ) -> Result<(), String> {
         let within = self.count <= self.limit && self.bytes <= MAX_OUTPUT_BYTES;
         let reachable = self.count <= UNREACHABLE && self.bytes <= UNREACHABLE;
         if reachable && (within || allowed) {
@@ -78,7 +75,7 @@ impl Cost<'_> {
                 first_word(&self.unit)
             )
         };
-        Err(usage(self.command, &message))
+        Err(message)
     }
 }
 
@@ -201,7 +198,6 @@ mod tests {
     #[test]
     fn costs_within_the_limits_pass_and_others_say_what_they_would_cost() {
         let cost = |count: f64, bytes: f64| Cost {
-            command: "simulate",
             options: "--duration / --dt",
             unit: "RK4 steps (2 states in 1 group of 4 lanes)".to_string(),
             count,
@@ -210,8 +206,8 @@ mod tests {
         };
         assert!(cost(1e6, 1e9).check(false, || unreachable!()).is_ok());
         let message = |c: Cost, allowed: bool| match c.check(allowed, || 1e-4) {
-            Err(Failure::Usage(e)) => e.to_string(),
-            _ => panic!("refused"),
+            Err(message) => message,
+            Ok(()) => panic!("refused"),
         };
         let steps = message(cost(5e8, 100.0), false);
         assert!(

@@ -6,6 +6,7 @@
 use dynamics_codegen::front::{joint_limits, load_urdf, Chain};
 use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
 use dynamics_codegen::trace::PrunedElement;
+use dynamics_codegen::Method;
 use dynamics_runtime::{Dynamics, DynamicsSimplified};
 use dynamics_test_support::Rng;
 
@@ -163,19 +164,16 @@ fn bounds(file: &str, request: &Simplification) -> ([Vec<PrunedElement>; 4], [bo
     let mut eq = dynamics_codegen::derive(&robot);
     dynamics_codegen::simplify::add(&mut eq, request).expect("simplifies");
     let s = eq.simplified.expect("simplified");
-    let fallbacks = [
-        s.tau_fallback,
-        s.gravity_fallback,
-        s.coriolis_torques_fallback,
-        s.mass_fallback,
-    ];
-    let bounds = [
-        s.tau_bounds,
-        s.gravity_bounds,
-        s.coriolis_torques_bounds,
-        s.mass_bounds.concat(),
-    ];
-    (bounds, fallbacks.map(|f| f.is_some()))
+    let outputs = [
+        Method::InverseDynamicsSimplified,
+        Method::GravityTorquesSimplified,
+        Method::CoriolisTorquesSimplified,
+        Method::MassMatrixSimplified,
+    ]
+    .map(|m| s.output(m).expect("an output of the family"));
+    // M row by row, n × n.
+    let bounds = outputs.map(|o| o.bounds.all().copied().collect());
+    (bounds, outputs.map(|o| o.fallback.is_some()))
 }
 
 /// Samples `robot` in the envelope; asserts every pruned output within its bound, and every

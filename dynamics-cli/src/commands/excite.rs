@@ -129,7 +129,6 @@ fn check_cost(args: &Excite, problem: &Problem<'_>, joints: usize) -> Result<(),
     let per_evaluation = samples.min(SEARCH_SAMPLES as f64);
     let rows = args.periods as f64 * samples + 1.0;
     Cost {
-        command: "excite",
         options: "--evaluations, --period × --rate, --periods",
         unit: format!(
             "samples of the regressor ({evaluations} evaluations of {per_evaluation} samples, \
@@ -150,6 +149,7 @@ fn check_cost(args: &Excite, problem: &Problem<'_>, joints: usize) -> Result<(),
         let time = time_per_unit(|| drop(small.design(args.seed, 1, |_| {})));
         time / (fewest.min(SEARCH_SAMPLES) + 2 * fewest) as f64
     })
+    .map_err(|message| usage("excite", &message))
 }
 
 /// A URDF's `<limit>`s, per joint of the chain; `None` for a description file.

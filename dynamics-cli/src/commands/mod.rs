@@ -23,7 +23,6 @@ use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
 pub use emit::{c_header, CHeader};
-pub(crate) use eval::usage;
 
 /// Why a command failed.
 pub enum Failure {

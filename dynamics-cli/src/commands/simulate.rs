@@ -9,7 +9,7 @@
 //! `x' = x + h/6 (k₁ + 2k₂ + 2k₃ + k₄)`, `k₁ = f(x)`, `k₂ = f(x + h/2 k₁)`, `k₃ = f(x + h/2 k₂)`,
 //! `k₄ = f(x + h k₃)`.
 
-use super::eval::joints;
+use super::eval::{joints, usage};
 use super::size::{numeric, write_svg};
 use super::{load, Failure};
 use crate::args::Simulate;
@@ -39,7 +39,6 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
     let tau = joints("simulate", "--tau", args.tau.as_ref(), n)?;
     let steps = (args.duration / args.dt).round().max(1.0);
     Cost {
-        command: "simulate",
         options: "--duration / --dt",
         unit: "RK4 steps".into(),
         count: steps,
@@ -49,7 +48,8 @@ pub fn run(args: &Simulate) -> Result<String, Failure> {
     }
     .check(args.limits.no_limits, || {
         time_per_unit(|| drop(rk4(&numeric, &q, &qd, &tau, args.dt)))
-    })?;
+    })
+    .map_err(|message| usage("simulate", &message))?;
     let (steps, h) = (steps as usize, args.duration / steps);
     let mut progress = Progress::new("dynamics simulate", "RK4 steps", steps as f64);
     let failed = |e: std::io::Error| {

@@ -18,7 +18,7 @@
 //! (`joint_tape`); a state whose mass matrix stops being positive definite, or whose motion
 //! diverges, ends with non-finite values, reported as such.
 
-use super::eval::{joints, settings};
+use super::eval::{joints, settings, usage};
 use super::{load, Failure};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
@@ -71,7 +71,6 @@ pub fn run(args: &Simulate, path: &str) -> Result<String, Failure> {
     let steps = (args.duration / args.dt).round().max(1.0);
     let groups = states.div_ceil(LANES);
     Cost {
-        command: "simulate",
         options: "--batch, --duration / --dt",
         unit: format!(
             "RK4 steps of a group ({states} states in {groups} group{} of up to {LANES}, \
@@ -86,7 +85,8 @@ pub fn run(args: &Simulate, path: &str) -> Result<String, Failure> {
         let zero = vec![Four::splat(0.0); n];
         let mut work = Work::default();
         time_per_unit(|| drop(dynamics.rk4(&zero, &zero, args.dt, &mut work)))
-    })?;
+    })
+    .map_err(|message| usage("simulate", &message))?;
     let (steps, h) = (steps as usize, args.duration / steps);
     let target = args.csv.as_deref().unwrap_or("stdout");
     let failed = |e: std::io::Error| Failure::File(format!("{target}: {e}"));

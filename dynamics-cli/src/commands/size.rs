@@ -40,7 +40,6 @@ pub fn run(args: &Size) -> Result<String, Failure> {
         check_move(&from, &to, args.duration)?;
         let samples = args.samples as f64;
         Cost {
-            command: "size",
             options: "--samples",
             unit: "samples of the move".into(),
             count: samples,
@@ -53,7 +52,8 @@ pub fn run(args: &Size) -> Result<String, Failure> {
                 trajectory::quintic(&from, &to, args.duration, few, |s| sizer.push(s));
             });
             time / few as f64
-        })?;
+        })
+        .map_err(|message| usage("size", &message))?;
         let mut progress = Progress::new("dynamics size", "samples", samples);
         let mut done = 0.0;
         trajectory::quintic(&from, &to, args.duration, args.samples as usize, |s| {
