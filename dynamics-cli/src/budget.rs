@@ -79,7 +79,8 @@ impl Cost<'_> {
     }
 }
 
-/// The seconds one unit of `work` takes: it run until a few milliseconds have passed.
+/// The seconds one unit of `work` takes: `work` run until a few milliseconds have passed (at
+/// most 1000 times).
 pub fn time_per_unit(mut work: impl FnMut()) -> f64 {
     let start = Instant::now();
     let mut runs = 0_u32;
@@ -99,7 +100,7 @@ fn count(x: f64) -> String {
     }
 }
 
-/// The first word of a unit: `steps` of `steps of a group`.
+/// A unit without its parenthesis: `RK4 steps` of `RK4 steps (2 states ...)`.
 fn first_word(unit: &str) -> &str {
     unit.split(" (").next().unwrap_or(unit)
 }
