@@ -1,7 +1,5 @@
-//! Examples of dynamics-runtime; see the `[[example]]` targets. The robot they share, and
-//! the identification examples' steps ([`identification`]):
-
-pub mod identification;
+//! Examples of dynamics-runtime; see the `[[example]]` targets. The robot they share (the
+//! identification examples, which run the command line, are `examples/identification/`):
 
 use dynamics_runtime::Dynamics;
 

@@ -6,15 +6,15 @@
 //! generated inverse dynamics with 1 % noise, the estimates beside the truth, another motion's
 //! torques predicted by the command and plotted, and by the generated `base_regressor`.
 //!
-//! Run with `cargo run --release -p dynamics-examples --example identify_panda`.
+//! Run with `cargo run --release -p dynamics-identification-examples --example identify_panda`.
 
-use dynamics_examples::identification::example;
+use dynamics_identification_examples::example;
 use dynamics_runtime::Dynamics;
 
 /// The robot of the URDF file: the simulation's truth, and its base parameters' regressor.
 #[derive(Dynamics)]
 #[dynamics(
-    urdf = "../robots/urdf/panda.urdf",
+    urdf = "../../robots/urdf/panda.urdf",
     base = "panda_link0",
     tip = "panda_hand",
     base_parameters = true
@@ -22,7 +22,7 @@ use dynamics_runtime::Dynamics;
 struct Panda;
 
 fn main() {
-    let robot = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
+    let robot = concat!(env!("CARGO_MANIFEST_DIR"), "/../../robots/urdf/panda.urdf");
     let words = [robot, "--base", "panda_link0", "--tip", "panda_hand"];
     example::<_, 7, 64>(&Panda, &words, "panda");
 }
