@@ -4,14 +4,13 @@
 //! comment.
 
 use super::{
-    add_simplified, eval, field_idents, load_with_request, self_fields, simplification, type_name,
-    Failure,
+    eval, field_idents, load_with_request, self_fields, simplification, type_name, Failure,
 };
 use crate::args::{Emit, Lang};
 use dynamics_codegen::emit::simplified_doc;
 use dynamics_codegen::identifiers::one_line;
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::{derive, emit_c, generate, Equations};
+use dynamics_codegen::{emit_c, generate, Equations};
 use quote::quote;
 
 /// A robot's C header and what a binding needs to call it: its functions' signatures.
@@ -61,12 +60,12 @@ pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
 /// The robot of `args` and its equations: the families asked for, and the simplified models
 /// its file asks for (`[simplify]`), as the derive gives them for `file = ".."`.
 fn equations(args: &Emit) -> Result<(Robot, Equations), Failure> {
-    let (robot, request) = load_with_request(&args.robot)?;
-    let mut eq = derive(&robot);
-    eq.add_families(&robot, args.families.set());
-    let simplify = simplification(&request, &[], "emit")?;
-    add_simplified(&mut eq, simplify.as_ref(), &args.robot.path)?;
-    Ok((robot, eq))
+    let loaded = load_with_request(&args.robot)?;
+    let simplify = simplification(&loaded, &[], "emit")?;
+    let eq = loaded
+        .equations(args.families.set(), simplify.as_ref())
+        .map_err(|d| Failure::File(d.to_string()))?;
+    Ok((loaded.robot, eq))
 }
 
 pub fn run(args: &Emit) -> Result<String, Failure> {

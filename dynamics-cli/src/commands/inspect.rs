@@ -14,30 +14,31 @@ use dynamics_codegen::model::{Robot, Simplification};
 use dynamics_codegen::Loaded;
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
-    let (robot, file) = load_with_request(&args.robot)?;
-    let mut eq = derive(&robot);
+    let file = load_with_request(&args.robot)?;
+    let robot = &file.robot;
+    let mut eq = derive(robot);
     let format = if args.latex {
         Format::Latex
     } else {
         Format::Text
     };
     if args.base_parameters {
-        let columns = args.joint_terms.columns(&robot);
-        let base = base_parameters(&mut eq, &robot, &args.robot, &columns)?;
+        let columns = args.joint_terms.columns(robot);
+        let base = base_parameters(&mut eq, robot, &args.robot, &columns)?;
         return Ok(render_base_parameters(&robot.name, &base, format));
     }
     if args.simplified.simplified {
-        let Some(s) = request("inspect", &args.simplified, &robot, &file)? else {
+        let Some(s) = request("inspect", &args.simplified, robot, &file)? else {
             return Err(usage("inspect", "--simplified needs --tolerance T"));
         };
-        let simplified = inspect_simplified(&eq, &robot, &s)
+        let simplified = inspect_simplified(&eq, robot, &s)
             .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
         return Ok(simplified.render(format));
     }
     let inspection = if args.kinematics {
-        inspect_kinematics(&eq, &robot, Limits::UNBOUNDED)
+        inspect_kinematics(&eq, robot, Limits::UNBOUNDED)
     } else {
-        inspect(&eq, &robot, Limits::UNBOUNDED)
+        inspect(&eq, robot, Limits::UNBOUNDED)
     };
     Ok(inspection.render(format))
 }

@@ -66,12 +66,12 @@ fn base_parameters(
 /// of each link and the joint count); errors carry `file:line:col`. A `.urdf` file is read
 /// with its `--base` and `--tip`.
 fn load(robot: &RobotFile) -> Result<Robot, Failure> {
-    load_with_request(robot).map(|(robot, _)| robot)
+    load_with_request(robot).map(|loaded| loaded.robot)
 }
 
 /// [`load`], with what the file asks of the simplified models (its `[simplify]`, a URDF's
 /// `<limit>`s), as the derive reads them for `file = ".."` or `urdf = ".."`.
-fn load_with_request(robot: &RobotFile) -> Result<(Robot, Loaded), Failure> {
+fn load_with_request(robot: &RobotFile) -> Result<Loaded, Failure> {
     let path = robot.path.as_str();
     let source = Source {
         path,
@@ -102,7 +102,7 @@ fn load_with_request(robot: &RobotFile) -> Result<(Robot, Loaded), Failure> {
             Failure::Usage(Cli::command().error(ErrorKind::ArgumentConflict, message))
         })?;
     }
-    Ok((loaded.robot.clone(), loaded))
+    Ok(loaded)
 }
 
 /// The simplified models of `robot` that the file's `request` asks for, each key of
@@ -131,20 +131,6 @@ fn simplification(
             }
         }
     })
-}
-
-/// The simplified models of `request` built into `eq` (the family `Simplified`), as the
-/// derive builds them; the error of one that cannot be (`path: simplify: ...`).
-fn add_simplified(
-    eq: &mut Equations,
-    request: Option<&Simplification>,
-    path: &str,
-) -> Result<(), Failure> {
-    match request {
-        Some(request) => dynamics_codegen::simplify::add(eq, request)
-            .map_err(|e| Failure::File(format!("{path}: simplify: {e}"))),
-        None => Ok(()),
-    }
 }
 
 /// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for

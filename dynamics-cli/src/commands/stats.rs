@@ -1,27 +1,28 @@
 //! `dynamics stats ROBOT`: expansion time, operation counts, longest chain of operations and
 //! code size per method, and the cost of the readable equations the derive adds.
 
-use super::{add_simplified, field_idents, load_with_request, self_fields, type_name, Failure};
+use super::{field_idents, load_with_request, self_fields, type_name, Failure};
 use crate::args::Stats;
 use dynamics_codegen::inspect::{
     inspect_with_kinematics, Format, Inspection, KinematicPart, Limits,
 };
 use dynamics_codegen::model::{Robot, Simplification};
 use dynamics_codegen::Method;
-use dynamics_codegen::{derive, expand_robot, generate, Equations, Generated};
+use dynamics_codegen::{expand_robot, generate, Equations, Generated};
 use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
 pub fn run(args: &Stats) -> Result<String, Failure> {
-    let (robot, file) = load_with_request(&args.robot)?;
+    let file = load_with_request(&args.robot)?;
+    let robot = &file.robot;
     // The file's `[simplify]` as the derive reads it, with the command line's options in
     // place of its keys.
-    let request = super::inspect::request("stats", &args.simplified, &robot, &file)?;
+    let request = super::inspect::request("stats", &args.simplified, robot, &file)?;
     let start = Instant::now();
-    let mut eq = derive(&robot);
-    eq.add_families(&robot, args.families.set());
-    add_simplified(&mut eq, request.as_ref(), &args.robot.path)?;
+    let eq = file
+        .equations(args.families.set(), request.as_ref())
+        .map_err(|d| Failure::File(d.to_string()))?;
     let fields = field_idents(&eq, &args.robot.path)?;
     let generated = generate(&eq, self_fields(&fields));
     let elapsed = start.elapsed();
