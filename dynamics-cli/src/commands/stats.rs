@@ -44,8 +44,8 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
         "all items the derive emits: {} bytes",
         items.to_token_stream().to_string().len()
     );
-    out += &readable(&eq, &robot);
-    out += &whole_derive(&robot, &ty, &fields, args, request.as_ref());
+    out += &readable(&eq, robot);
+    out += &whole_derive(robot, &ty, &fields, args, request.as_ref());
     Ok(out)
 }
 
