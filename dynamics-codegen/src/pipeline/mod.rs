@@ -12,63 +12,14 @@
 //! message, printed one way (`file:line:col: message`).
 
 use crate::check;
-use crate::front::{self, Chain, FileError, FileRequest, RequestError};
+use crate::front::{self, Chain, FileRequest, RequestError};
 use crate::method::{Family, FamilySet};
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
-use std::fmt;
 
-/// A problem with a description, and where it is.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Diagnostic {
-    /// The file, as its path was given; `None` for a problem of the caller's own values.
-    pub file: Option<String>,
-    /// Line, 1-based, where the problem has a place in the file.
-    pub line: Option<usize>,
-    /// Column, 1-based.
-    pub column: Option<usize>,
-    /// What is wrong.
-    pub message: String,
-}
+mod diagnostic;
 
-impl Diagnostic {
-    /// A problem of the file `path` as a whole (no line).
-    fn of_file(path: &str, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            file: Some(path.to_owned()),
-            line: None,
-            column: None,
-            message: message.into(),
-        }
-    }
-
-    /// A problem at `at` (line, column) in `path`, or of the whole file.
-    fn at(path: &str, at: Option<(usize, usize)>, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            line: at.map(|(line, _)| line),
-            column: at.map(|(_, column)| column),
-            ..Diagnostic::of_file(path, message)
-        }
-    }
-
-    fn from_file_error(path: &str, e: &FileError) -> Diagnostic {
-        let at = e.line.zip(e.column);
-        Diagnostic::at(path, at, e.message.clone())
-    }
-}
-
-/// `file:line:col: message`, `file: message` without a place, `message` without a file.
-impl fmt::Display for Diagnostic {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (&self.file, self.line, self.column) {
-            (Some(file), Some(line), Some(column)) => {
-                write!(f, "{file}:{line}:{column}: {}", self.message)
-            }
-            (Some(file), ..) => write!(f, "{file}: {}", self.message),
-            (None, ..) => f.write_str(&self.message),
-        }
-    }
-}
+pub use diagnostic::Diagnostic;
 
 /// Where a robot's description comes from.
 #[derive(Clone, Copy, Debug, Default)]
