@@ -17,8 +17,7 @@
 //! benchmark `benches/dynamics.rs`.
 
 use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
-use dynamics_codegen::numeric::Numeric;
-use dynamics_codegen::Equations;
+use dynamics_codegen::{Equations, FamilySet, Loaded, Numeric, Source};
 use dynamics_runtime::Dynamics;
 
 /// Number of joints of the four 6-joint reference robots.
@@ -219,10 +218,31 @@ pub fn description(robot: &str) -> String {
 /// If the description is missing or invalid.
 #[must_use]
 pub fn numeric(robot: &str) -> Numeric {
-    let model = dynamics_codegen::front::from_json(&description(robot), robot)
-        .unwrap_or_else(|e| panic!("description of {robot}: {e}"));
     // The reference robots name no struct fields: every parameter is a number.
-    Numeric::new(&model, &[]).unwrap_or_else(|e| panic!("{robot} needs field {:?}", e.0))
+    Numeric::new(&loaded(robot).robot, &[])
+        .unwrap_or_else(|e| panic!("{robot} needs field {:?}", e.0))
+}
+
+/// `robot`'s description read through the generator's front door, as the derives of this
+/// crate read it (`check_inertia = false`: some links as published break the triangle
+/// inequality of principal moments).
+///
+/// # Panics
+/// If the description is missing or invalid.
+#[must_use]
+pub fn loaded(robot: &str) -> Loaded {
+    let text = description(robot);
+    let path = format!("{robot}.json");
+    let source = Source {
+        path: &path,
+        text: Some(&text),
+        check_inertia: false,
+        ..Source::default()
+    };
+    dynamics_codegen::load(&source).unwrap_or_else(|problems| {
+        let lines: Vec<String> = problems.iter().map(ToString::to_string).collect();
+        panic!("description of {robot}: {}", lines.join("; "))
+    })
 }
 
 /// `robot` evaluated by the book's method (Niku, ch. 6: Lagrangian with 4×4 matrices,
@@ -287,10 +307,8 @@ pub fn simplification(robot: &str) -> Option<Simplification> {
 #[must_use]
 pub fn simplified(robot: &str) -> Option<Equations> {
     let request = simplification(robot)?;
-    let model = dynamics_codegen::front::from_json(&description(robot), robot)
-        .unwrap_or_else(|e| panic!("description of {robot}: {e}"));
-    let mut eq = dynamics_codegen::derive(&model);
-    dynamics_codegen::simplify::add(&mut eq, &request)
+    let eq = loaded(robot)
+        .equations(FamilySet::default(), Some(&request))
         .unwrap_or_else(|e| panic!("simplified {robot}: {e}"));
     Some(eq)
 }

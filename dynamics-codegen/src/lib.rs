@@ -35,8 +35,9 @@ use quote::quote;
 
 pub use emit::{generate, Generated, MethodCode, OpCount};
 pub use method::{Family, FamilySet, Method};
-pub use pipeline::{load, Diagnostic, Loaded, Source};
-pub use trace::{derive, Equations};
+pub use numeric::Numeric;
+pub use pipeline::{load, Diagnostic, Loaded, Source, State, Values};
+pub use trace::{derive, Equations, SimplifiedEquations};
 
 /// Entry point of `#[derive(Dynamics)]`.
 #[must_use]
@@ -79,13 +80,8 @@ pub fn expand_robot(
 /// The expansion of a parsed derive: the generated items and the readable equations, in a
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
-    let mut eq = trace::derive(&parsed.robot);
-    eq.add_families(&parsed.robot, parsed.families);
-    // Only for a robot that asks: the expansion costs what the rest of the derive does.
-    let simplified = parsed
-        .simplify
-        .as_ref()
-        .map(|request| simplify::add(&mut eq, request));
+    let (eq, simplified) =
+        pipeline::equations(&parsed.robot, parsed.families, parsed.simplify.as_ref());
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = eq
         .fields

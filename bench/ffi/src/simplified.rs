@@ -8,8 +8,7 @@ use super::{input, output, output_matrix, Function};
 use core::ffi::{c_char, CStr};
 use core::marker::PhantomData;
 use dynamics_bench::{Panda, Puma560};
-use dynamics_codegen::trace::SimplifiedEquations;
-use dynamics_codegen::Method;
+use dynamics_codegen::{Method, SimplifiedEquations};
 use dynamics_runtime::DynamicsSimplified;
 use std::sync::OnceLock;
 
@@ -145,8 +144,7 @@ pub unsafe extern "C" fn dynamics_bench_simplified_envelope(
 mod tests {
     use super::*;
     use dynamics_bench::samples;
-    use dynamics_codegen::simplify::eval::constants;
-    use dynamics_codegen::symbolic::Var;
+    use dynamics_codegen::State;
 
     /// The derive's simplified outputs equal the pruned graph of the request that
     /// `dynamics_bench::simplification` restates, at the reference samples: the bounds given
@@ -154,15 +152,12 @@ mod tests {
     fn same_request<R: DynamicsSimplified<N> + Default, const N: usize>(robot: &str) {
         let eq = dynamics_bench::simplified(robot).expect("simplified");
         let s = eq.simplified.as_ref().expect("simplified");
-        let offsets = constants(&eq).expect("constants").offsets;
         for sample in samples::<N>(robot) {
-            let values = eq.graph.eval(|v| match v {
-                Var::Q(i) => sample.q[usize::from(i)],
-                Var::SinQ(i) => (sample.q[usize::from(i)] + offsets[usize::from(i)]).sin(),
-                Var::CosQ(i) => (sample.q[usize::from(i)] + offsets[usize::from(i)]).cos(),
-                Var::Qd(i) => sample.qd[usize::from(i)],
-                Var::Qdd(i) => sample.qdd[usize::from(i)],
-                _ => f64::NAN,
+            let values = eq.evaluate(&State {
+                fields: &[],
+                q: &sample.q,
+                qd: &sample.qd,
+                qdd: &sample.qdd,
             });
             let r = R::default();
             let derived = [
@@ -186,7 +181,7 @@ mod tests {
             });
             for (derived, graph) in derived.iter().zip(&graph) {
                 for (x, id) in derived.iter().zip(graph) {
-                    let y = values[id.index()];
+                    let y = values.of(*id);
                     assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0), "{robot}: {x} {y}");
                 }
             }

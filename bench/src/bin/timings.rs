@@ -89,7 +89,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use dynamics_bench::{Panda, Puma560, Random5, Sample, Stanford, Ur5, Ur5Dh, Ur5Urdf, ROBOTS};
-use dynamics_codegen::numeric::Numeric;
+use dynamics_codegen::Numeric;
 use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
 
 /// The generated methods, timed by default.

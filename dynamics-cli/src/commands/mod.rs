@@ -80,6 +80,7 @@ fn load_with_request(robot: &RobotFile) -> Result<Loaded, Failure> {
             base: robot.base.as_deref(),
             tip: robot.tip.as_deref(),
         },
+        ..Source::default()
     };
     if !source.is_urdf() && (robot.base.is_some() || robot.tip.is_some()) {
         let message =

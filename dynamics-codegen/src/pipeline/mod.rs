@@ -1,11 +1,13 @@
 //! The front door: the generator's pipeline as a few calls, for every driver of a description
 //! file (the commands, the benchmarks, Python). The derive enters through
-//! [`crate::derive_dynamics`]; the two share every stage behind these calls.
+//! [`crate::derive_dynamics`], whose attributes are read by its own front end; from the
+//! checked robot on, both take the same path (`equations` below).
 //!
 //! ```text
 //! load(source)          front (a TOML or JSON description, a URDF) → check: a checked Robot
 //!   .simplification(..) the file's [simplify] with the caller's overrides, resolved
 //!   .equations(..)      trace → the opt-in families → simplify: the Equations to emit
+//!     .evaluate(state)  every node at one state, in f64 (what `dynamics eval` prints)
 //! ```
 //!
 //! Errors are data: a [`Diagnostic`] holds the file, line and column of a problem and its
@@ -13,16 +15,18 @@
 
 use crate::check;
 use crate::front::{self, Chain, FileRequest, RequestError};
-use crate::method::{Family, FamilySet};
+use crate::method::FamilySet;
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
 mod diagnostic;
+mod evaluate;
 
 pub use diagnostic::Diagnostic;
+pub use evaluate::{State, Values};
 
 /// Where a robot's description comes from.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct Source<'a> {
     /// The file's path as the user wrote it (messages name it); `*.urdf` is read as a URDF,
     /// `*.toml` and `*.json` as description files.
@@ -31,6 +35,20 @@ pub struct Source<'a> {
     pub text: Option<&'a str>,
     /// A URDF's chain: its base and tip links (by default the root and the one leaf).
     pub chain: Chain<'a>,
+    /// Whether each link's inertia is checked (by default); `false` is the derive's
+    /// `check_inertia = false`, for published data whose moments break the triangle inequality.
+    pub check_inertia: bool,
+}
+
+impl Default for Source<'_> {
+    fn default() -> Self {
+        Source {
+            path: "",
+            text: None,
+            chain: Chain::default(),
+            check_inertia: true,
+        }
+    }
 }
 
 impl<'a> Source<'a> {
@@ -78,14 +96,18 @@ pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
         }
     };
     let (loaded, limits) = if source.is_urdf() {
-        let loaded = front::load_urdf(path, text, source.chain, true).map_err(|errors| {
-            let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
-            each.collect::<Vec<_>>()
-        })?;
+        let loaded =
+            front::load_urdf(path, text, source.chain, source.check_inertia).map_err(|errors| {
+                let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
+                each.collect::<Vec<_>>()
+            })?;
         (loaded, front::joint_limits(text, source.chain).ok())
     } else {
-        let loaded =
+        let mut loaded =
             front::load(path, text).map_err(|e| vec![Diagnostic::from_file_error(path, &e)])?;
+        for checked in &mut loaded.check_inertia {
+            *checked &= source.check_inertia;
+        }
         (loaded, None)
     };
     let problems: Vec<Diagnostic> = check::robot(&loaded.robot, &loaded.check_inertia)
@@ -162,15 +184,27 @@ impl Loaded {
         families: FamilySet,
         simplification: Option<&Simplification>,
     ) -> Result<Equations, Diagnostic> {
-        let mut eq = trace::derive(&self.robot);
-        eq.add_families(&self.robot, families);
-        if let Some(request) = simplification {
-            crate::simplify::add(&mut eq, request)
-                .map_err(|e| Diagnostic::of_file(&self.path, format!("simplify: {e}")))?;
-            debug_assert!(eq.families.contains(Family::Simplified));
+        let (eq, simplified) = equations(&self.robot, families, simplification);
+        match simplified {
+            Some(Err(e)) => Err(Diagnostic::of_file(&self.path, format!("simplify: {e}"))),
+            _ => Ok(eq),
         }
-        Ok(eq)
     }
+}
+
+/// trace → the opt-in families → simplify: the one spelling of the pipeline's second half, for
+/// the derive and [`Loaded::equations`]. The simplified models' outcome beside the equations,
+/// which the derive still expands when they fail (with the error in place of their methods).
+pub(crate) fn equations(
+    robot: &Robot,
+    families: FamilySet,
+    simplification: Option<&Simplification>,
+) -> (Equations, Option<Result<(), String>>) {
+    let mut eq = trace::derive(robot);
+    eq.add_families(robot, families);
+    // Only for a robot that asks: the expansion costs what the rest of the derive does.
+    let simplified = simplification.map(|request| crate::simplify::add(&mut eq, request));
+    (eq, simplified)
 }
 
 #[cfg(test)]
