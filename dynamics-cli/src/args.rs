@@ -2,8 +2,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::trace::base_parameters::JointColumns;
-use dynamics_codegen::{Family, FamilySet};
+use dynamics_codegen::{Family, FamilySet, JointColumns};
 use std::str::FromStr;
 
 mod emit;

@@ -252,7 +252,7 @@ mod tests {
     use super::Sizer;
     use crate::terms::{At, TermsTape};
     use crate::trajectory::Sample;
-    use dynamics_codegen::front;
+    use dynamics_codegen::{load, Source};
     use serde_json::Value;
 
     fn root() -> std::path::PathBuf {
@@ -267,9 +267,8 @@ mod tests {
     #[test]
     fn terms_equal_pinocchio() {
         let path = root().join("robots/puma560.toml");
-        let robot = front::load("puma560.toml", &std::fs::read_to_string(path).unwrap())
-            .unwrap()
-            .robot;
+        let path = path.to_str().unwrap();
+        let robot = load(&Source::file(path)).unwrap().robot;
         let eq = dynamics_codegen::derive(&robot);
         let mut tape = TermsTape::new(&robot, &eq, &[]).unwrap();
         let data: Value = serde_json::from_str(

@@ -34,9 +34,12 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 pub use emit::{generate, Generated, MethodCode, OpCount};
+pub use front::{Chain, SIMPLIFY_KEYS};
+pub use identifiers::{c_prefix_problem, one_line, rust_field, rust_type};
 pub use method::{Family, FamilySet, Method};
-pub use numeric::Numeric;
-pub use pipeline::{load, Diagnostic, Loaded, Source, State, Values};
+pub use numeric::{NotPositiveDefinite, Numeric};
+pub use pipeline::{load, problems, Diagnostic, Loaded, Source, State, Values};
+pub use trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 pub use trace::{derive, Equations, SimplifiedEquations};
 
 /// Entry point of `#[derive(Dynamics)]`.

@@ -151,6 +151,43 @@ impl Numeric {
         let g = algo::rnea(&self.chain(q), &zeros, &zeros, self.gravity());
         g.iter().zip(self.springs(q)).map(|(a, b)| a + b).collect()
     }
+
+    /// `q̈ = M⁻¹ (τ − C q̇ − g − τ_f)`, through the LDLᵀ of `M(q)`.
+    ///
+    /// # Errors
+    /// The first pivot of the LDLᵀ that is not positive (`M(q)` is then not positive definite).
+    pub fn forward_dynamics(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        tau: &[f64],
+    ) -> Result<Vec<f64>, NotPositiveDefinite> {
+        let zeros = vec![0.0; q.len()];
+        let bias = self.inverse_dynamics(q, qd, &zeros);
+        let rhs: Vec<f64> = tau.iter().zip(&bias).map(|(t, b)| t - b).collect();
+        let factors = algo::Ldlt::new(&self.mass_matrix(q));
+        // `!(d > 0)`: a NaN pivot is not positive either.
+        match factors
+            .pivots
+            .iter()
+            .position(|d| d.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater))
+        {
+            Some(k) => Err(NotPositiveDefinite {
+                pivot: k,
+                value: factors.pivots[k],
+            }),
+            None => Ok(factors.solve(&rhs)),
+        }
+    }
+}
+
+/// `M(q)` is not positive definite: pivot `pivot` (0-based) of its LDLᵀ is `value`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NotPositiveDefinite {
+    /// The pivot's index, 0-based.
+    pub pivot: usize,
+    /// Its value: zero, negative or NaN.
+    pub value: f64,
 }
 
 /// The robot's values evaluated, at joint position `q`.

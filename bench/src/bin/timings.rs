@@ -38,7 +38,7 @@
 //! | function | implementation |
 //! |---|---|
 //! | `tau_reference` | the book's O(n⁴) Lagrangian method, `dynamics_reference::Robot::inverse_dynamics` |
-//! | `tau_rnea` | a plain numeric recursive Newton-Euler, `dynamics_codegen::numeric::Numeric::inverse_dynamics` |
+//! | `tau_rnea` | a plain numeric recursive Newton-Euler, `dynamics_codegen::Numeric::inverse_dynamics` |
 //! | `M_crba` | a plain numeric composite rigid body algorithm, `Numeric::mass_matrix` |
 //!
 //! `tau_rnea` and `M_crba` loop over the joints at run time and return `Vec`s, so their time

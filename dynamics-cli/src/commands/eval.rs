@@ -6,7 +6,6 @@ use crate::args::{Cli, Eval, Numbers, Setting};
 use crate::format::{self, Evaluation};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
-use dynamics_codegen::check;
 use dynamics_codegen::model::{Robot, Value};
 use dynamics_codegen::{derive, State};
 
@@ -102,11 +101,7 @@ pub(super) fn settings(
             }
         }
     }
-    let exempt = vec![false; numbers.joints.len()];
-    let problems: Vec<String> = check::robot(&numbers, &exempt)
-        .iter()
-        .map(ToString::to_string)
-        .collect();
+    let problems = dynamics_codegen::problems(&numbers, false);
     if problems.is_empty() {
         Ok(values)
     } else {

@@ -14,11 +14,11 @@ mod stats;
 use crate::args::{Cli, Command, RobotFile};
 use clap::error::ErrorKind;
 use clap::CommandFactory;
-use dynamics_codegen::front;
-use dynamics_codegen::identifiers;
 use dynamics_codegen::model::{Robot, Simplification};
-use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
-use dynamics_codegen::{Equations, Loaded, Source};
+use dynamics_codegen::{
+    rust_field, rust_type, BaseParameters, Chain, Equations, JointColumns, Loaded, Source,
+    SIMPLIFY_KEYS,
+};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
@@ -76,7 +76,7 @@ fn load_with_request(robot: &RobotFile) -> Result<Loaded, Failure> {
     let source = Source {
         path,
         text: None,
-        chain: front::Chain {
+        chain: Chain {
             base: robot.base.as_deref(),
             tip: robot.tip.as_deref(),
         },
@@ -120,7 +120,7 @@ fn simplification(
             // The command line's options as the user wrote them, not the file's keys.
             Some(p) => {
                 let mut message = p.message.clone();
-                for key in front::SIMPLIFY_KEYS {
+                for key in SIMPLIFY_KEYS {
                     let option = format!("--{}", key.replace('_', "-"));
                     message = message.replace(&format!("`{key}`"), &option);
                 }
@@ -137,7 +137,7 @@ fn simplification(
 /// `two_link` → `TwoLink`: the name of the struct the generated code implements `Dynamics` for
 /// (`Robot` before a name Rust could not take: `RobotSelf`, `Robot1arm`).
 fn type_name(name: &str) -> syn::Ident {
-    syn::Ident::new(&identifiers::rust_type(name), Span::call_site())
+    syn::Ident::new(&rust_type(name), Span::call_site())
 }
 
 /// The struct's fields, one per parameter, as the generated code reads them: `self.m1`, ...,
@@ -146,7 +146,7 @@ fn type_name(name: &str) -> syn::Ident {
 fn field_idents(eq: &Equations, path: &str) -> Result<Vec<syn::Ident>, Failure> {
     eq.fields
         .iter()
-        .map(|f| identifiers::rust_field(f).map_err(|e| Failure::File(format!("{path}: {e}"))))
+        .map(|f| rust_field(f).map_err(|e| Failure::File(format!("{path}: {e}"))))
         .collect()
 }
 

@@ -4,8 +4,8 @@
 //!
 //! The state `x = (q, q̇)` follows `ẋ = (q̇, q̈)` with `M(q) q̈ = τ − C(q, q̇) q̇ − g(q) − τ_f(q̇)`
 //! (springs in g, actuator inertia in M, friction as declared), solved through the LDLᵀ of M
-//! ([`dynamics_codegen::algo::Ldlt`], run in f64), and is integrated by the classical fourth-order
-//! Runge-Kutta method with a fixed step h:
+//! ([`dynamics_codegen::Numeric::forward_dynamics`], run in f64), and is integrated by the
+//! classical fourth-order Runge-Kutta method with a fixed step h:
 //! `x' = x + h/6 (k₁ + 2k₂ + 2k₃ + k₄)`, `k₁ = f(x)`, `k₂ = f(x + h/2 k₁)`, `k₃ = f(x + h/2 k₂)`,
 //! `k₄ = f(x + h k₃)`.
 
@@ -15,8 +15,7 @@ use super::{load, Failure};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::plot::{Envelope, Figure, Line, Panel};
-use dynamics_codegen::algo::Ldlt;
-use dynamics_codegen::numeric::Numeric;
+use dynamics_codegen::Numeric;
 use std::io::{BufWriter, Write};
 
 /// The most steps a simulation takes without `--no-limits`.
@@ -123,24 +122,16 @@ fn at_time(args: &Simulate, t: f64, message: &str) -> Failure {
     Failure::File(format!("at t = {t} s: {message}{with}"))
 }
 
-/// `q̈ = M⁻¹ (τ − C q̇ − g − τ_f)`.
+/// `q̈ = M⁻¹ (τ − C q̇ − g − τ_f)`, refused where `M(q)` is not positive definite or q̈ is not
+/// finite.
 fn acceleration(numeric: &Numeric, q: &[f64], qd: &[f64], tau: &[f64]) -> Result<Vec<f64>, String> {
-    let zeros = vec![0.0; q.len()];
-    let bias = numeric.inverse_dynamics(q, qd, &zeros);
-    let rhs: Vec<f64> = tau.iter().zip(&bias).map(|(t, b)| t - b).collect();
-    let factors = Ldlt::new(&numeric.mass_matrix(q));
-    if let Some(k) = factors
-        .pivots
-        .iter()
-        .position(|d| d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater))
-    {
-        return Err(format!(
+    let qdd = numeric.forward_dynamics(q, qd, tau).map_err(|e| {
+        format!(
             "M(q) is not positive definite (pivot {} of its LDLᵀ is {}) at q = {q:?}",
-            k + 1,
-            factors.pivots[k]
-        ));
-    }
-    let qdd = factors.solve(&rhs);
+            e.pivot + 1,
+            e.value
+        )
+    })?;
     if qdd.iter().all(|x| x.is_finite()) {
         Ok(qdd)
     } else {

@@ -12,7 +12,7 @@ use crate::sizing::{self, Sizer, TERMS};
 use crate::terms::TermsTape;
 use crate::trajectory;
 use dynamics_codegen::model::{JointKind, Robot};
-use dynamics_codegen::numeric::Numeric;
+use dynamics_codegen::Numeric;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::io::{BufReader, BufWriter};

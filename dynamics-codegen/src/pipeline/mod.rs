@@ -192,6 +192,18 @@ impl Loaded {
     }
 }
 
+/// The checks [`load`] runs, on a robot the caller has changed since (parameters given values
+/// from outside): each problem's message, base to tip. The links' inertia tensors are checked
+/// where `check_inertia` is true.
+#[must_use]
+pub fn problems(robot: &Robot, check_inertia: bool) -> Vec<String> {
+    let checked = vec![check_inertia; robot.joints.len()];
+    check::robot(robot, &checked)
+        .iter()
+        .map(ToString::to_string)
+        .collect()
+}
+
 /// trace → the opt-in families → simplify: the one spelling of the pipeline's second half, for
 /// the derive and [`Loaded::equations`]. The simplified models' outcome beside the equations,
 /// which the derive still expands when they fail (with the error in place of their methods).
