@@ -35,7 +35,7 @@ use quote::quote;
 
 pub use emit::{generate, Generated, MethodCode, OpCount};
 pub use method::{Family, FamilySet, Method};
-pub use pipeline::{load, Diagnostic, Loaded, Source};
+pub use pipeline::{load, CHeader, Diagnostic, Loaded, Readable, Source};
 pub use trace::{derive, Equations};
 
 /// Entry point of `#[derive(Dynamics)]`.

@@ -17,9 +17,15 @@ use crate::method::{Family, FamilySet};
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
+mod c_header;
 mod diagnostic;
+mod families;
+mod readable;
 
+pub use c_header::CHeader;
 pub use diagnostic::Diagnostic;
+pub use families::{asked_by_name, families, opt_in_family};
+pub use readable::Readable;
 
 /// Where a robot's description comes from.
 #[derive(Clone, Copy, Debug, Default)]
