@@ -52,8 +52,8 @@ fn c_header(
     };
     let header = py
         .detach(|| {
-            let families = pipeline::families(&families)
-                .map_err(|d| vec![source::argument("families", d)])?;
+            let families =
+                pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
             let loaded = described.load()?;
             let asked = loaded
                 .simplification(&[])
