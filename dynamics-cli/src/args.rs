@@ -2,7 +2,7 @@
 
 use clap::{Args, Parser, Subcommand};
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::{Family, FamilySet, JointColumns};
+use dynamics_codegen::{asked_by_name, Family, FamilySet, JointColumns};
 use std::str::FromStr;
 
 mod emit;
@@ -111,34 +111,26 @@ impl Families {
 
 /// The help of `--with`, naming the opt-in families of the method table.
 fn with_help() -> String {
-    let names = with_names().join(", ");
+    let names = asked_by_name().join(", ");
     format!(
         "Also these opt-in families of methods, as `#[dynamics(..., FAMILY = true)]` asks for them (comma-separated or repeated): {names}"
     )
 }
 
-/// An opt-in family's name; not the simplified models', which need an envelope and tolerances.
+/// An opt-in family's name, as the front door reads it; the simplified models' with where
+/// this command line takes their envelope and tolerances.
 fn opt_in_family(name: &str) -> Result<Family, String> {
-    match Family::from_name(name).filter(|f| f.is_opt_in()) {
-        Some(Family::Simplified) => Err(format!(
-            "`{name}` needs an envelope and tolerances: `[simplify]` in the description file \
-             (emit, stats), `--simplified --tolerance T` (stats, inspect), `simplify(...)`"
-        )),
-        Some(family) => Ok(family),
-        None => Err(format!(
-            "`{name}` is not an opt-in family of methods; the opt-in families: {}",
-            with_names().join(", ")
-        )),
-    }
-}
-
-/// The families `--with` takes.
-fn with_names() -> Vec<&'static str> {
-    let simplified = Family::Simplified.name();
-    Family::opt_in_names()
-        .into_iter()
-        .filter(|&n| n != simplified)
-        .collect()
+    dynamics_codegen::pipeline::opt_in_family(name).map_err(|d| match Family::from_name(name) {
+        Some(Family::Simplified) => format!(
+            "{}: `[simplify]` in the description file (emit, stats), `--simplified \
+             --tolerance T` (stats, inspect), `simplify(...)`",
+            d.message
+        ),
+        _ => match d.help {
+            Some(help) => format!("{}; {help}", d.message),
+            None => d.message,
+        },
+    })
 }
 
 #[derive(Args, Debug)]

@@ -38,7 +38,6 @@ mod terms;
 mod trajectory;
 
 use clap::Parser;
-pub use commands::CHeader;
 use commands::Failure;
 use std::io::Write;
 use std::process::ExitCode;
@@ -101,29 +100,6 @@ where
     })
 }
 
-/// The C header of a robot and its functions' signatures, for bindings that compile and call
-/// it (the Python package): `words` are `dynamics emit`'s, without the command's name and
-/// `--lang` (`["robots/puma560.toml", "--with", "derivatives"]`).
-///
-/// # Errors
-/// The usage or file error, as [`run`] gives it.
-pub fn c_header<I, T>(words: I) -> Result<CHeader, String>
-where
-    I: IntoIterator<Item = T>,
-    T: Into<std::ffi::OsString> + Clone,
-{
-    let start = ["dynamics", "emit", "--lang", "c"].map(std::ffi::OsString::from);
-    let cli = args::Cli::try_parse_from(start.into_iter().chain(words.into_iter().map(Into::into)))
-        .map_err(|e| e.to_string())?;
-    let args::Command::Emit(emit) = &cli.command else {
-        unreachable!("the words start with `emit`")
-    };
-    commands::c_header(emit).map_err(|failure| match failure {
-        Failure::Usage(error) => error.to_string(),
-        Failure::File(message) => message,
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::run;
@@ -143,20 +119,5 @@ mod tests {
             "{usage}"
         );
         assert!(run(["excite"]).unwrap_err().contains("<ROBOT>"));
-    }
-
-    #[test]
-    fn a_header_comes_with_the_signatures_of_its_functions() {
-        let header = super::c_header([PUMA, "--with", "derivatives"]).expect("a header");
-        assert_eq!((header.robot.as_str(), header.dof), ("puma560", 6));
-        let f = header
-            .functions
-            .iter()
-            .find(|f| f.name == "puma560_inverse_dynamics_derivatives")
-            .expect("the derivatives");
-        assert_eq!(f.outputs[0].dims, [2, 6, 6]);
-        assert!(header.text.contains(&format!("{}(", f.name)));
-        let missing = super::c_header(["no-such-robot.toml"]).unwrap_err();
-        assert!(missing.starts_with("no-such-robot.toml: "), "{missing}");
     }
 }

@@ -10,7 +10,8 @@
 //!   compiles and runs as part of the `emitted_puma560` example, so the emitted module is
 //!   known to build;
 //! * `tests/golden/puma560.h`: `dynamics emit --lang c robots/puma560.toml`, the C header
-//!   (which `tests/c_header.rs` compiles and checks).
+//!   (which `tests/c_header.rs` compiles and checks), and `tests/golden/arm_urdf.h`, a
+//!   URDF's (`tests/tests/ui/urdf/arm.urdf`).
 //!
 //! A stale file fails the test with a line diff. After a deliberate change, refresh them all:
 //!
@@ -81,6 +82,13 @@ fn cases() -> Vec<Case> {
             .map(String::from)
             .to_vec(),
         file: "dynamics-cli/tests/golden/puma560.h".into(),
+    });
+    // A URDF's: its chain, names and placements read from the URDF.
+    cases.push(Case {
+        args: ["emit", "--lang", "c", "tests/tests/ui/urdf/arm.urdf"]
+            .map(String::from)
+            .to_vec(),
+        file: "dynamics-cli/tests/golden/arm_urdf.h".into(),
     });
     cases
 }

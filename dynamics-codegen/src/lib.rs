@@ -38,7 +38,10 @@ pub use front::{Chain, SIMPLIFY_KEYS};
 pub use identifiers::{c_prefix_problem, one_line, rust_field, rust_type};
 pub use method::{Family, FamilySet, Method};
 pub use numeric::{NotPositiveDefinite, Numeric};
-pub use pipeline::{load, problems, Diagnostic, Loaded, Source, State, Values};
+pub use pipeline::{
+    asked_by_name, families, load, opt_in_family, problems, CHeader, Diagnostic, Loaded, Readable,
+    Source, State, Values,
+};
 pub use trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 pub use trace::{derive, Equations, SimplifiedEquations};
 

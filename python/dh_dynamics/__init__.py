@@ -22,7 +22,7 @@ A description whose quantities are symbols (``mass = "m1"``) takes their values:
 """
 
 from ._compiled import CompilerError
-from ._errors import DescriptionError, NonFiniteInput, NotPositiveDefinite
+from ._errors import DescriptionError, Diagnostic, NonFiniteInput, NotPositiveDefinite
 from ._methods import ForwardDynamicsDerivatives, InverseDynamicsDerivatives
 from ._parameters import Parameters
 from .robot import Robot
@@ -33,6 +33,7 @@ __all__ = [
     "InverseDynamicsDerivatives",
     "ForwardDynamicsDerivatives",
     "DescriptionError",
+    "Diagnostic",
     "NonFiniteInput",
     "NotPositiveDefinite",
     "CompilerError",

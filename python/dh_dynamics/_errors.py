@@ -3,54 +3,67 @@ and a solve whose mass matrix was not positive definite."""
 
 from __future__ import annotations
 
-import re
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
-# `file:line:col: message`, or `file: message` where the problem has no place.
-_AT = re.compile(r"^(?P<file>.+?):(?P<line>\d+):(?P<column>\d+): (?P<message>.*)$")
-_FILE = re.compile(r"^(?P<file>[^:]+): (?P<message>.*)$")
+
+class Diagnostic(NamedTuple):
+    """One problem the generator found, as data: the file (``None`` for a mistake in the
+    arguments), its 1-based line and column (``None`` where the problem has no place, such as a
+    missing file), what is wrong, and a hint where one helps."""
+
+    file: str | None
+    line: int | None
+    column: int | None
+    message: str
+    help: str | None = None
+
+    def __str__(self):
+        # As the `dynamics` command prints it.
+        if self.file is None:
+            text = self.message
+        elif self.line is None or self.column is None:
+            text = f"{self.file}: {self.message}"
+        else:
+            text = f"{self.file}:{self.line}:{self.column}: {self.message}"
+        return text if self.help is None else f"{text}\nhelp: {self.help}"
 
 
 class DescriptionError(ValueError):
     """The robot's description cannot be read or fails a check.
 
-    ``file``, ``line`` and ``column`` give where the first problem is (``line`` and ``column``
-    are ``None`` where it has no place, such as a missing file); ``problems`` lists every problem
-    as the ``dynamics`` command prints it, ``file:line:col: message``.
+    ``file``, ``line``, ``column``, ``message`` and ``help`` are those of the first problem
+    (``line`` and ``column`` are ``None`` where it has no place, such as a missing file;
+    ``help`` where there is no hint); ``diagnostics`` lists every problem as a
+    :class:`Diagnostic`, ``problems`` as the ``dynamics`` command prints it,
+    ``file:line:col: message``.
     """
 
+    diagnostics: list[Diagnostic]
     problems: list[str]
     file: str | None
     line: int | None
     column: int | None
     message: str
+    help: str | None
 
-    def __init__(self, problems):
-        self.problems = list(problems)
-        first = self.problems[0]
-        self.file = self.line = self.column = None
-        self.message = first
-        found = _AT.match(first)
-        if found:
-            self.file = found["file"]
-            self.line = int(found["line"])
-            self.column = int(found["column"])
-            self.message = found["message"]
-        else:
-            found = _FILE.match(first)
-            if found:
-                self.file, self.message = found["file"], found["message"]
+    def __init__(self, diagnostics):
+        self.diagnostics = list(diagnostics)
+        self.problems = [str(d) for d in self.diagnostics]
+        first = self.diagnostics[0]
+        self.file, self.line, self.column = first.file, first.line, first.column
+        self.message, self.help = first.message, first.help
         super().__init__("\n".join(self.problems))
 
 
-def generator_error(message):
-    """The exception for a message of the generator: a usage error (clap's, which starts with
-    ``error:``) as a ``ValueError``, anything else as a ``DescriptionError``."""
-    if message.startswith("error:"):
-        return ValueError(message.strip())
-    return DescriptionError(message.strip().split("\ndynamics: "))
+def generator_error(error):
+    """The exception for the generator's ``GeneratorError``: a mistake in the arguments (no
+    file) as a ``ValueError``, a description's problems as a ``DescriptionError``."""
+    diagnostics = [Diagnostic(**d) for d in error.diagnostics]
+    if all(d.file is None for d in diagnostics):
+        return ValueError("\n".join(str(d) for d in diagnostics))
+    return DescriptionError(diagnostics)
 
 
 def _listed(states):

@@ -11,17 +11,18 @@ from ._methods import Method
 from ._parameters import Parameters
 
 
-def _generate(words):
+def _generate(source, families):
     try:
-        return _native.c_header(words)
+        return _native.c_header(**source, families=families)
     except _native.GeneratorError as error:
-        raise generator_error(str(error)) from None
+        raise generator_error(error) from None
 
 
 class Robot:
     """A serial robot's closed-form equations of motion, compiled for this machine.
 
-    Read one with :meth:`from_file` or :meth:`from_urdf`. Every method of the Rust trait is a
+    Read one with :meth:`from_file` or :meth:`from_urdf` (or ``Robot(path, base=, tip=,
+    tool=, families=, parameters=)``, which takes the arguments of both). Every method of the Rust trait is a
     method here with the same name (``mass_matrix``, ``inverse_dynamics``, ``forward_dynamics``,
     the hand's pose and Jacobians, and with ``families`` the derivatives or the regressor), on
     one state (arrays of shape ``(n,)``) or a batch (shape ``(N, n)``) in one call; ``methods``
@@ -29,13 +30,17 @@ class Robot:
     "m1"``), in the order of the C functions' ``params``.
     """
 
-    def __init__(self, source, families=(), parameters=None):
-        # The description's words of the `dynamics` command (the file, and a URDF's chain or a
-        # tool), which `equations` gives to `inspect`.
-        self._source = list(source)
+    def __init__(self, path, *, base=None, tip=None, tool=None, families=(), parameters=None):
+        # Where the description comes from, which `equations` reads again.
+        self._source = {
+            "path": os.fsdecode(path),
+            "base": None if base is None else os.fsdecode(base),
+            "tip": None if tip is None else os.fsdecode(tip),
+            "tool": None if tool is None else _tool(tool),
+        }
         families = _families(families)
-        self._asked = set(families[1].split(",")) if families else set()
-        generated = _generate(self._source + families)
+        self._asked = set(families)
+        generated = _generate(self._source, families)
         self.name = generated["robot"]
         self.dof = generated["dof"]
         self.header = generated["text"]
@@ -78,34 +83,21 @@ class Robot:
         none now and ``robot.parameters`` later. Raises ``DescriptionError`` with the file, line
         and column of a problem, ``ValueError`` for a missing or unknown parameter.
         """
-        source = [os.fsdecode(path)]
-        if tool is not None:
-            source += ["--tool", _tool(tool)]
-        return cls(source, families, parameters)
+        return cls(path, tool=tool, families=families, parameters=parameters)
 
     @classmethod
     def from_urdf(cls, path, base=None, tip=None, *, families=()):
         """The robot of a URDF file: the chain from link ``base`` to link ``tip`` (by default
         the root and the one leaf)."""
-        source = [os.fsdecode(path)]
-        if base is not None:
-            source += ["--base", os.fsdecode(base)]
-        if tip is not None:
-            source += ["--tip", os.fsdecode(tip)]
-        return cls(source, families)
+        return cls(path, base=base, tip=tip, families=families)
 
     def equations(self, latex=False, kinematics=False):
         """The equations of motion in the book's notation (``kinematics=True``: the hand's pose
         and Jacobians), as text or as LaTeX."""
-        words = ["inspect", *self._source]
-        if latex:
-            words.append("--latex")
-        if kinematics:
-            words.append("--kinematics")
         try:
-            return _native.run(words)
+            return _native.equations(**self._source, latex=latex, kinematics=kinematics)
         except _native.GeneratorError as error:
-            raise generator_error(str(error)) from None
+            raise generator_error(error) from None
 
     def _repr_latex_(self):
         # Jupyter's MathJax reads the `align*` environments; the `%` lines are comments.
@@ -122,11 +114,11 @@ def _families(families):
     families = list(families or ())
     if not all(isinstance(f, str) for f in families):
         raise TypeError(f"families: expected names such as ['derivatives'], got {families!r}")
-    return ["--with", ",".join(families)] if families else []
+    return families
 
 
 def _tool(tool):
-    """``tool`` as the command line's ``--tool`` takes it: six finite numbers."""
+    """``tool`` as six finite numbers."""
     expected = "expected six finite numbers [x, y, z, roll, pitch, yaw]"
     try:
         values = list(tool)
@@ -135,7 +127,7 @@ def _tool(tool):
     real = all(isinstance(x, numbers.Real) and not isinstance(x, bool) for x in values)
     if len(values) != 6 or not real or not all(math.isfinite(float(x)) for x in values):
         raise ValueError(f"tool = {tool!r}: {expected}")
-    return ",".join(repr(float(x)) for x in values)
+    return [float(x) for x in values]
 
 
 _METHOD_TABLE = {name: (family, opt_in) for name, family, opt_in in _native.methods()}

@@ -23,7 +23,11 @@ class Robot:
 
     def __init__(
         self,
-        source: Iterable[str],
+        path: _Path,
+        *,
+        base: str | None = None,
+        tip: str | None = None,
+        tool: Iterable[float] | None = None,
         families: str | Iterable[str] = (),
         parameters: Mapping[str, float] | None = None,
     ) -> None: ...

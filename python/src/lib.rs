@@ -1,32 +1,68 @@
-//! `dh_dynamics._native`: the generator inside the Python package. It reads a robot's
-//! description as the `dynamics` command does and gives back the robot's C header with the
-//! signatures of its functions, which the package compiles and calls
-//! (`dh_dynamics/_compiled.py`), or what any `dynamics` command prints (the readable
-//! equations), and the method table's families (for the hint of a method a robot lacks).
-//! Nothing of an algorithm is here: both are `dynamics-cli`'s.
+//! `dh_dynamics._native`: the generator inside the Python package, through its front door
+//! (`dynamics_codegen::pipeline`). It reads a robot's description as the derive does and gives
+//! back the robot's C header with the signatures of its functions, which the package compiles
+//! and calls (`dh_dynamics/_compiled.py`), or its readable equations, and the method table's
+//! families (for the hint of a method a robot lacks). Nothing of an algorithm is here.
+//!
+//! Errors are data: a `GeneratorError` whose `diagnostics` are the door's, each a dict of
+//! `file`, `line`, `column`, `message` and `help` (`file` is `None` for a mistake in the
+//! arguments); `dh_dynamics/_errors.py` raises the package's exceptions from them.
 
-use dynamics_codegen::emit_c::{Function, Precision, Returns};
+mod source;
+
 use dynamics_codegen::method::{Family, Method};
+use dynamics_codegen::pipeline::{
+    self, Diagnostic, Format, Function, Precision, Readable, Returns,
+};
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use source::Described;
 
 create_exception!(
     _native,
     GeneratorError,
     PyException,
-    "A description the generator refused, or a command's usage error: the message as the \
-     `dynamics` command prints it (`file:line:col: message`, one line per problem)."
+    "A description the generator refused, or arguments it cannot take: `diagnostics` lists \
+     each problem as a dict of `file`, `line`, `column`, `message` and `help` (`None` where \
+     it has none; `file` is `None` for a mistake in the arguments); the message prints them \
+     as `file:line:col: message`, one per line."
 );
 
-/// The C header of the robot `words` name (`dynamics emit`'s words after `--lang c`), as a
-/// dict: `robot`, `dof`, `fields`, `text`, and `functions`, each a dict of its signature.
+/// The C header of the robot described at `path` (a URDF's chain from `base` to `tip`; the
+/// hand frame `tool` of a description file) with the opt-in `families`, and the simplified
+/// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `text`, and
+/// `functions`, each a dict of its signature.
 #[pyfunction]
-fn c_header(py: Python<'_>, words: Vec<String>) -> PyResult<Bound<'_, PyDict>> {
+#[pyo3(signature = (path, *, base=None, tip=None, tool=None, families=Vec::new()))]
+fn c_header(
+    py: Python<'_>,
+    path: String,
+    base: Option<String>,
+    tip: Option<String>,
+    tool: Option<[f64; 6]>,
+    families: Vec<String>,
+) -> PyResult<Bound<'_, PyDict>> {
+    let described = Described {
+        path,
+        base,
+        tip,
+        tool,
+    };
     let header = py
-        .detach(|| dynamics_cli::c_header(words))
-        .map_err(GeneratorError::new_err)?;
+        .detach(|| {
+            let families =
+                pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
+            let loaded = described.load()?;
+            let asked = loaded
+                .simplification(&[])
+                .map_err(|problems| problems.iter().map(Diagnostic::from).collect::<Vec<_>>())?;
+            loaded
+                .c_header(families, asked.as_ref(), None)
+                .map_err(|d| vec![d])
+        })
+        .map_err(|diagnostics| generator_error(py, &diagnostics))?;
     let out = PyDict::new(py);
     out.set_item("robot", &header.robot)?;
     out.set_item("dof", header.dof)?;
@@ -39,6 +75,39 @@ fn c_header(py: Python<'_>, words: Vec<String>) -> PyResult<Bound<'_, PyDict>> {
         .collect::<PyResult<Vec<_>>>()?;
     out.set_item("functions", functions)?;
     Ok(out)
+}
+
+/// The equations of motion of the robot described at `path` (as [`c_header`] reads it) in
+/// the book's notation, or with `kinematics` its hand pose and Jacobians; as LaTeX with
+/// `latex`.
+#[pyfunction]
+#[pyo3(signature = (path, *, base=None, tip=None, tool=None, latex=false, kinematics=false))]
+fn equations(
+    py: Python<'_>,
+    path: String,
+    base: Option<String>,
+    tip: Option<String>,
+    tool: Option<[f64; 6]>,
+    latex: bool,
+    kinematics: bool,
+) -> PyResult<String> {
+    let described = Described {
+        path,
+        base,
+        tip,
+        tool,
+    };
+    let format = if latex { Format::Latex } else { Format::Text };
+    let what = if kinematics {
+        Readable::Kinematics
+    } else {
+        Readable::Motion
+    };
+    py.detach(|| {
+        let loaded = described.load()?;
+        loaded.readable(what, format).map_err(|d| vec![d])
+    })
+    .map_err(|diagnostics| generator_error(py, &diagnostics))
 }
 
 /// One function's signature: its name, the method and its summary, its precision, its number
@@ -72,6 +141,29 @@ fn signature<'py>(py: Python<'py>, f: &Function) -> PyResult<Bound<'py, PyDict>>
     Ok(out)
 }
 
+/// A `GeneratorError` of `diagnostics`: its message their lines, its `diagnostics` their data.
+fn generator_error(py: Python<'_>, diagnostics: &[Diagnostic]) -> PyErr {
+    let lines: Vec<String> = diagnostics.iter().map(ToString::to_string).collect();
+    let error = GeneratorError::new_err(lines.join("\n"));
+    let data = diagnostics.iter().map(|d| {
+        let out = PyDict::new(py);
+        out.set_item("file", &d.file)?;
+        out.set_item("line", d.line)?;
+        out.set_item("column", d.column)?;
+        out.set_item("message", &d.message)?;
+        out.set_item("help", &d.help)?;
+        Ok(out)
+    });
+    let attached = data
+        .collect::<PyResult<Vec<_>>>()
+        .and_then(|data| error.value(py).setattr("diagnostics", data));
+    match attached {
+        Ok(()) => error,
+        // Only if Python cannot make a dict or set an attribute (out of memory).
+        Err(failure) => failure,
+    }
+}
+
 /// The method table: each method's name, its family's name, and whether that family is
 /// opt-in (a robot has it only when asked for), for the hint of a method a robot lacks.
 #[pyfunction]
@@ -85,18 +177,10 @@ fn methods() -> Vec<(&'static str, &'static str, bool)> {
         .collect()
 }
 
-/// What the `dynamics` command `words` prints (`["inspect", "robots/puma560.toml",
-/// "--latex"]`).
-#[pyfunction]
-fn run(py: Python<'_>, words: Vec<String>) -> PyResult<String> {
-    py.detach(|| dynamics_cli::run(words))
-        .map_err(GeneratorError::new_err)
-}
-
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(c_header, m)?)?;
-    m.add_function(wrap_pyfunction!(run, m)?)?;
+    m.add_function(wrap_pyfunction!(equations, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add("GeneratorError", m.py().get_type::<GeneratorError>())?;
     Ok(())

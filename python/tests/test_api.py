@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 import dh_dynamics
-from conftest import ROOT, states
+from conftest import DATA, ROOT, states
+from dh_dynamics import _native
 
 PUMA = ROOT / "robots" / "puma560.toml"
 
@@ -172,6 +173,50 @@ def test_a_bad_description_is_an_exception_at_its_line_and_column(tmp_path):
     assert missing.value.line is None and missing.value.file.endswith("missing.toml")
     with pytest.raises(ValueError, match="not an opt-in family"):
         dh_dynamics.Robot.from_file(PUMA, families=["everything"])
+
+
+def test_errors_are_the_generators_diagnostics_as_data(tmp_path):
+    """Each problem is a ``Diagnostic`` of the generator's fields, no text parsed back; a
+    mistake in the arguments (no file) is a ``ValueError`` with the hint."""
+    two_link = (DATA / "simplify" / "two_link.toml").read_text()
+    text = two_link.replace("qd_max = 3", "qd_max = -3", 1)
+    assert text != two_link
+    bad = tmp_path / "bad simplify.toml"
+    bad.write_text(text)
+    with pytest.raises(dh_dynamics.DescriptionError) as error:
+        dh_dynamics.Robot.from_file(bad)
+    line = text.splitlines().index("qd_max = -3") + 1
+    first = error.value.diagnostics[0]
+    assert isinstance(first, dh_dynamics.Diagnostic)
+    assert (first.file, first.line, first.column) == (str(bad), line, len("qd_max = ") + 1)
+    assert first.message.startswith("simplify: ") and first.help is None
+    assert error.value.problems[0] == f"{bad}:{line}:10: {first.message}"
+    assert str(error.value) == "\n".join(error.value.problems)
+    # The generator's own message, line for line what the package prints from the fields.
+    with pytest.raises(_native.GeneratorError) as native:
+        _native.c_header(str(bad))
+    fields = [dh_dynamics.Diagnostic(**d) for d in native.value.diagnostics]
+    assert fields == error.value.diagnostics
+    assert str(native.value) == str(error.value)
+    with pytest.raises(ValueError) as families:
+        dh_dynamics.Robot.from_file(PUMA, families=["derivatives", "everything"])
+    assert not isinstance(families.value, dh_dynamics.DescriptionError)
+    assert str(families.value) == ("families: `everything` is not an opt-in family of methods\n"
+                                   "help: the opt-in families: derivatives, regressor, "
+                                   "base_parameters")
+    with pytest.raises(ValueError, match=r"^families: `simplify` needs an envelope .*\nhelp: "
+                                         r".*`\[simplify\]` table"):
+        dh_dynamics.Robot.from_file(PUMA, families="simplify")
+    with pytest.raises(ValueError, match=r"^base and tip name links of a URDF file; `.*puma560"
+                                         r"\.toml` is not one"):
+        dh_dynamics.Robot.from_urdf(PUMA, tip="link6")
+    with pytest.raises(ValueError, match=r"^tool: `.*two_link\.toml` declares a `tool` already"):
+        tooled = tmp_path / "two_link.toml"
+        tooled.write_text(two_link.replace("[[joints]]", "tool = [0, 0, 0.1, 0, 0, 0]\n\n"
+                                                         "[[joints]]", 1))
+        dh_dynamics.Robot.from_file(tooled, tool=[0, 0, 0.1, 0, 0, 0])
+    with pytest.raises(ValueError, match=r"is its tip link\nhelp: choose the hand with `tip`"):
+        dh_dynamics.Robot(ROOT / "robots/urdf/ur5.urdf", tool=[0, 0, 0.1, 0, 0, 0])
 
 
 def test_the_equations_read_as_the_book_writes_them(puma):

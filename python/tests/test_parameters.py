@@ -38,7 +38,7 @@ def method_inputs(method, count, seed):
 @pytest.mark.parametrize("path", ROBOT_FILES, ids=lambda p: p.stem)
 def test_every_robot_file_loads_and_every_method_runs(path):
     # The names without compiling a header: the generator's list of the C functions' params.
-    names = _native.c_header([str(path)])["fields"]
+    names = _native.c_header(str(path))["fields"]
     families = ALL_FAMILIES if names else []
     robot = dh_dynamics.Robot.from_file(path, families=families,
                                         parameters=some_values(names, seed=1))

@@ -10,51 +10,21 @@ use crate::args::{Emit, Lang};
 use dynamics_codegen::emit::simplified_doc;
 use dynamics_codegen::identifiers::one_line;
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::{emit_c, generate, Equations};
+use dynamics_codegen::{generate, Equations};
 use quote::quote;
 
-/// A robot's C header and what a binding needs to call it: its functions' signatures.
-#[derive(Debug)]
-pub struct CHeader {
-    /// The robot's name in its description.
-    pub robot: String,
-    /// Its number of joints.
-    pub dof: usize,
-    /// Its parameters (struct fields), in the order of the functions' `params`.
-    pub fields: Vec<String>,
-    /// The header's text.
-    pub text: String,
-    /// Its functions, in the header's order.
-    pub functions: Vec<emit_c::Function>,
-}
-
-/// The C header of the robot of `args`, with its functions.
-pub fn c_header(args: &Emit) -> Result<CHeader, Failure> {
-    let (robot, eq) = equations(args)?;
-    let path = &args.robot.path;
-    // The command that writes it again: the robot file and the families asked for.
-    let with: Vec<&str> = args.families.set().opt_in().map(|f| f.name()).collect();
-    let with = if with.is_empty() {
-        String::new()
-    } else {
-        format!(" --with {}", with.join(","))
-    };
-    let prefix = match &args.prefix {
-        Some(prefix) => format!(" --prefix {prefix}"),
-        None => String::new(),
-    };
-    let command = format!("dynamics emit --lang c {path}{with}{prefix}");
-    let prefix = args
-        .prefix
-        .clone()
-        .unwrap_or_else(|| emit_c::prefix(&robot.name));
-    Ok(CHeader {
-        text: emit_c::header(&eq, &robot.name, &prefix, &command),
-        functions: emit_c::functions(&eq, &prefix),
-        dof: eq.dof,
-        fields: eq.fields.clone(),
-        robot: robot.name,
-    })
+/// The C header of the robot of `args`, as the front door writes it.
+fn c_header(args: &Emit) -> Result<String, Failure> {
+    let loaded = load_with_request(&args.robot)?;
+    let simplify = simplification(&loaded, &[], "emit")?;
+    let header = loaded
+        .c_header(
+            args.families.set(),
+            simplify.as_ref(),
+            args.prefix.as_deref(),
+        )
+        .map_err(|d| Failure::File(d.to_string()))?;
+    Ok(header.text)
 }
 
 /// The robot of `args` and its equations: the families asked for, and the simplified models
@@ -70,7 +40,7 @@ fn equations(args: &Emit) -> Result<(Robot, Equations), Failure> {
 
 pub fn run(args: &Emit) -> Result<String, Failure> {
     if args.lang == Lang::C {
-        return Ok(c_header(args)?.text);
+        return c_header(args);
     }
     if args.prefix.is_some() {
         let message = "--prefix names the C functions: it needs --lang c";

@@ -4,43 +4,37 @@
 //! or τ, M and g pruned within a proven bound, in the book's notation.
 
 use super::eval::usage;
-use super::{base_parameters, load_with_request, simplification, Failure};
+use super::{load_with_request, simplification, Failure};
 use crate::args::{Inspect, Numbers, Simplified};
-use dynamics_codegen::derive;
-use dynamics_codegen::inspect::{
-    inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Format, Limits,
-};
+use dynamics_codegen::inspect::Format;
 use dynamics_codegen::model::{Robot, Simplification};
-use dynamics_codegen::Loaded;
+use dynamics_codegen::{Loaded, Readable};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {
     let file = load_with_request(&args.robot)?;
-    let robot = &file.robot;
-    let mut eq = derive(robot);
     let format = if args.latex {
         Format::Latex
     } else {
         Format::Text
     };
-    if args.base_parameters {
-        let columns = args.joint_terms.columns(robot);
-        let base = base_parameters(&mut eq, robot, &args.robot, &columns)?;
-        return Ok(render_base_parameters(&robot.name, &base, format));
-    }
-    if args.simplified.simplified {
-        let Some(s) = request("inspect", &args.simplified, robot, &file)? else {
+    let columns;
+    let simplified;
+    let what = if args.base_parameters {
+        columns = args.joint_terms.columns(&file.robot);
+        Readable::BaseParameters(&columns)
+    } else if args.simplified.simplified {
+        let Some(s) = request("inspect", &args.simplified, &file.robot, &file)? else {
             return Err(usage("inspect", "--simplified needs --tolerance T"));
         };
-        let simplified = inspect_simplified(&eq, robot, &s)
-            .map_err(|e| Failure::File(format!("{}: {e}", args.robot.path)))?;
-        return Ok(simplified.render(format));
-    }
-    let inspection = if args.kinematics {
-        inspect_kinematics(&eq, robot, Limits::UNBOUNDED)
+        simplified = s;
+        Readable::Simplified(&simplified)
+    } else if args.kinematics {
+        Readable::Kinematics
     } else {
-        inspect(&eq, robot, Limits::UNBOUNDED)
+        Readable::Motion
     };
-    Ok(inspection.render(format))
+    file.readable(what, format)
+        .map_err(|d| Failure::File(d.to_string()))
 }
 
 /// The simplified models asked for: the description file's `[simplify]` (a URDF's `<limit>`s

@@ -22,8 +22,6 @@ use dynamics_codegen::{
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 
-pub use emit::{c_header, CHeader};
-
 /// Why a command failed.
 pub enum Failure {
     /// A usage error found after parsing (a list of the wrong length, a missing parameter):
@@ -119,7 +117,7 @@ fn simplification(
         match problems.iter().find(|p| !p.in_file) {
             // The command line's options as the user wrote them, not the file's keys.
             Some(p) => {
-                let mut message = p.message.clone();
+                let mut message = p.problem.clone();
                 for key in SIMPLIFY_KEYS {
                     let option = format!("--{}", key.replace('_', "-"));
                     message = message.replace(&format!("`{key}`"), &option);
@@ -127,7 +125,7 @@ fn simplification(
                 eval::usage(command, &message)
             }
             None => {
-                let lines: Vec<String> = problems.into_iter().map(|p| p.message).collect();
+                let lines: Vec<String> = problems.iter().map(ToString::to_string).collect();
                 Failure::File(lines.join("\ndynamics: "))
             }
         }

@@ -1,6 +1,6 @@
 //! Errors as data: a problem with a description and its place, printed one way.
 
-use crate::front::FileError;
+use crate::front::{FileError, RequestError};
 use std::fmt;
 
 /// A problem with a description, and where it is.
@@ -14,6 +14,8 @@ pub struct Diagnostic {
     pub column: Option<usize>,
     /// What is wrong.
     pub message: String,
+    /// How to put it right, where a hint helps (the option or key to use).
+    pub help: Option<String>,
 }
 
 impl Diagnostic {
@@ -24,6 +26,27 @@ impl Diagnostic {
             line: None,
             column: None,
             message: message.into(),
+            help: None,
+        }
+    }
+
+    /// A problem of the caller's own values (an argument, an option), with no file.
+    pub(crate) fn of_caller(message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            file: None,
+            line: None,
+            column: None,
+            message: message.into(),
+            help: None,
+        }
+    }
+
+    /// This problem with the hint `help`.
+    #[must_use]
+    pub(crate) fn with_help(self, help: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            help: Some(help.into()),
+            ..self
         }
     }
 
@@ -46,15 +69,36 @@ impl Diagnostic {
     }
 }
 
-/// `file:line:col: message`, `file: message` without a place, `message` without a file.
+/// A mistake in a file's `[simplify]` at its place; one of the caller's overrides without a
+/// file.
+impl From<&RequestError> for Diagnostic {
+    fn from(e: &RequestError) -> Diagnostic {
+        let diagnostic = Diagnostic::at(&e.path, e.at, e.problem.clone());
+        if e.in_file {
+            diagnostic
+        } else {
+            Diagnostic {
+                file: None,
+                ..diagnostic
+            }
+        }
+    }
+}
+
+/// `file:line:col: message`, `file: message` without a place, `message` without a file; then
+/// `help: ...` on a line of its own where there is a hint.
 impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match (&self.file, self.line, self.column) {
             (Some(file), Some(line), Some(column)) => {
-                write!(f, "{file}:{line}:{column}: {}", self.message)
+                write!(f, "{file}:{line}:{column}: {}", self.message)?;
             }
-            (Some(file), ..) => write!(f, "{file}: {}", self.message),
-            (None, ..) => f.write_str(&self.message),
+            (Some(file), ..) => write!(f, "{file}: {}", self.message)?,
+            (None, ..) => f.write_str(&self.message)?,
+        }
+        match &self.help {
+            Some(help) => write!(f, "\nhelp: {help}"),
+            None => Ok(()),
         }
     }
 }

@@ -19,11 +19,21 @@ use crate::method::FamilySet;
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
+mod c_header;
 mod diagnostic;
 mod evaluate;
+mod families;
+mod readable;
 
+/// A C function's signature, as the header declares it.
+pub use crate::emit_c::{Function, Precision, Returns};
+/// The readable equations' notation: text or LaTeX.
+pub use crate::inspect::Format;
+pub use c_header::CHeader;
 pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
+pub use families::{asked_by_name, families, opt_in_family};
+pub use readable::Readable;
 
 /// Where a robot's description comes from.
 #[derive(Clone, Copy, Debug)]

@@ -31,8 +31,22 @@ pub struct FileRequest {
 pub struct RequestError {
     /// Whether the file's table makes it.
     pub in_file: bool,
-    /// What is wrong, with the file's place where it has one.
-    pub message: String,
+    /// The file's path, as given.
+    pub path: String,
+    /// Its line and column, where the file's table makes it.
+    pub at: Option<At>,
+    /// What is wrong (`simplify: ...`), without the place.
+    pub problem: String,
+}
+
+/// `path:line:col: simplify: ...` for the file's mistake, `simplify: ...` for the caller's.
+impl std::fmt::Display for RequestError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.in_file {
+            f.write_str(&prefix(&self.path, self.at.as_ref()))?;
+        }
+        f.write_str(&self.problem)
+    }
 }
 
 impl FileRequest {
@@ -84,10 +98,9 @@ impl FileRequest {
             .map_err(|problems| {
                 let placed = problems.into_iter().map(|(at, message)| RequestError {
                     in_file: at.is_some(),
-                    message: match at {
-                        Some(at) => format!("{}simplify: {message}", prefix(&self.path, Some(&at))),
-                        None => format!("simplify: {message}"),
-                    },
+                    path: self.path.clone(),
+                    at,
+                    problem: format!("simplify: {message}"),
                 });
                 placed.collect()
             })
@@ -162,7 +175,7 @@ pub(super) fn request(
             .resolve(robot, &[])
             .map_err(|problems| {
                 for problem in problems {
-                    errors.push(f.at.span(), problem.message);
+                    errors.push(f.at.span(), problem.to_string());
                 }
             })
             .ok()

@@ -1,0 +1,116 @@
+//! The door's readable equations: a loaded robot's equations of motion, its kinematics, its
+//! base parameters or its simplified models in the book's notation, as text or LaTeX (what
+//! `dynamics inspect` prints and the Python package's `Robot.equations` returns).
+
+use super::{Diagnostic, Loaded};
+use crate::inspect::{
+    inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Format, Limits,
+};
+use crate::model::Simplification;
+use crate::trace::base_parameters::JointColumns;
+use crate::trace::derive;
+
+/// Which of a robot's equations to print.
+#[derive(Clone, Copy, Debug)]
+pub enum Readable<'a> {
+    /// The equations of motion: M, C and g (Niku, eqs. 6.43–6.46).
+    Motion,
+    /// The hand pose and the hand's Jacobians.
+    Kinematics,
+    /// The base parameters, with these joints' parameters (rotor inertia, friction) beside the
+    /// links', one entry per joint.
+    BaseParameters(&'a [JointColumns]),
+    /// τ, M, C q̇ and g pruned within these models' proven bounds.
+    Simplified(&'a Simplification),
+}
+
+impl Loaded {
+    /// The equations `what` of the robot, as `format` writes them.
+    ///
+    /// # Errors
+    /// Base parameters of a robot whose lengths or angles are parameters, or simplified models
+    /// that cannot be built (`file: message`).
+    pub fn readable(&self, what: Readable<'_>, format: Format) -> Result<String, Diagnostic> {
+        let robot = &self.robot;
+        let mut eq = derive(robot);
+        match what {
+            Readable::Motion => Ok(inspect(&eq, robot, Limits::UNBOUNDED).render(format)),
+            Readable::Kinematics => {
+                Ok(inspect_kinematics(&eq, robot, Limits::UNBOUNDED).render(format))
+            }
+            Readable::BaseParameters(columns) => {
+                let message = "the base parameters need the robot's lengths and angles as \
+                               numbers, not struct fields";
+                let base = eq.base_parameters(robot, columns).ok_or_else(|| {
+                    Diagnostic::of_file(&self.path, message).with_help(
+                        "they group the links' parameters by the lengths and angles: give \
+                         those as numbers in the description (masses and inertias may stay \
+                         parameters)",
+                    )
+                })?;
+                Ok(render_base_parameters(&robot.name, &base, format))
+            }
+            Readable::Simplified(request) => {
+                let simplified = inspect_simplified(&eq, robot, request)
+                    .map_err(|e| Diagnostic::of_file(&self.path, e))?;
+                Ok(simplified.render(format))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Readable;
+    use crate::inspect::Format;
+    use crate::pipeline::{load, Source};
+    use crate::trace::base_parameters::JointColumns;
+
+    const ROOT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+
+    fn golden(name: &str) -> String {
+        std::fs::read_to_string(format!("{ROOT}/dynamics-cli/tests/golden/{name}")).expect("golden")
+    }
+
+    /// What `dynamics inspect` printed before it called this (its golden files).
+    #[test]
+    fn the_equations_as_the_command_line_printed_them() {
+        let path = format!("{ROOT}/robots/puma560.toml");
+        let puma = load(&Source::file(&path)).expect("loads");
+        let text = puma.readable(Readable::Motion, Format::Text).expect("text");
+        assert!(text == golden("puma560.txt"), "{text}");
+        let latex = puma
+            .readable(Readable::Motion, Format::Latex)
+            .expect("LaTeX");
+        assert!(latex == golden("puma560.tex"), "{latex}");
+        let path = format!("{ROOT}/robots/niku_example_6_4.toml");
+        let arm = load(&Source::file(&path)).expect("loads");
+        let kinematics = arm.readable(Readable::Kinematics, Format::Text);
+        assert!(kinematics.expect("text") == golden("niku_example_6_4.kinematics.txt"));
+    }
+
+    #[test]
+    fn base_parameters_need_numbers_and_say_so() {
+        let path = format!("{ROOT}/robots/puma560.toml");
+        let puma = load(&Source::file(&path)).expect("loads");
+        let columns = [JointColumns::default(); 6];
+        let base = puma.readable(Readable::BaseParameters(&columns), Format::Text);
+        assert!(base.expect("numbers").contains("puma560"));
+        let path = format!("{ROOT}/robots/articulated_3r.toml");
+        let arm = load(&Source::file(&path)).expect("loads");
+        let refused = arm
+            .readable(Readable::BaseParameters(&columns[..3]), Format::Text)
+            .expect_err("its lengths are parameters");
+        assert_eq!(
+            (refused.file.as_deref(), refused.line),
+            (Some(&*path), None)
+        );
+        assert!(refused.message.contains("lengths and angles as numbers"));
+        let help = refused.help.as_deref().expect("a hint");
+        let printed = refused.to_string();
+        assert!(
+            printed.ends_with(&format!("struct fields\nhelp: {help}")),
+            "{printed}"
+        );
+    }
+}
