@@ -40,7 +40,7 @@ pub use method::{Family, FamilySet, Method};
 pub use numeric::{NotPositiveDefinite, Numeric};
 pub use pipeline::{
     asked_by_name, families, load, opt_in_family, problems, CHeader, Diagnostic, Loaded, Readable,
-    Source, State, Values,
+    RustModule, Source, State, Values,
 };
 pub use trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 pub use trace::{derive, Equations, SimplifiedEquations};

@@ -24,6 +24,7 @@ mod diagnostic;
 mod evaluate;
 mod families;
 mod readable;
+mod rust_module;
 
 /// A C function's signature, as the header declares it.
 pub use crate::emit_c::{Function, Precision, Returns};
@@ -34,6 +35,7 @@ pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
 pub use families::{asked_by_name, families, opt_in_family};
 pub use readable::Readable;
+pub use rust_module::RustModule;
 
 /// Where a robot's description comes from.
 #[derive(Clone, Copy, Debug)]
