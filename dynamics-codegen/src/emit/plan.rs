@@ -116,10 +116,18 @@ pub(crate) fn operands(p: &impl Sums, eq: &Equations, id: NodeId) -> Vec<NodeId>
             let (a, b) = p.as_sub(a, b).unwrap_or((a, b));
             vec![a, b]
         }
+        // Spelled out rather than `Node::operands`: the emitters call this for every node read.
+        Node::Mul(a, b) => vec![a, b],
+        Node::Neg(a)
+        | Node::Recip(a)
+        | Node::Sin(a)
+        | Node::Cos(a)
+        | Node::Sign(a)
+        | Node::Tanh(a) => vec![a],
         Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
             eq.angle_offsets[usize::from(i)].into_iter().collect()
         }
-        node => node.operands().collect(),
+        Node::Const(_) | Node::Var(_) => vec![],
     }
 }
 
