@@ -34,7 +34,9 @@ impl Emitter<'_> {
                 _ => {}
             }
         }
-        let kinds: [(&str, fn(u16) -> Var); 5] = [
+        // Each array argument and the input its elements are.
+        type Element = fn(u16) -> Var;
+        let kinds: [(&str, Element); 5] = [
             ("q", Var::Q),
             ("qd", Var::Qd),
             ("qdd", Var::Qdd),
