@@ -162,13 +162,12 @@ impl Printer for Writer<'_> {
     }
 
     fn binary(&self, a: String, op: Operator, b: String) -> String {
-        let op = match op {
-            Operator::Add => '+',
-            Operator::Sub => '-',
-            Operator::Mul => '*',
-            Operator::Div => '/',
-        };
-        format!("{a} {op} {b}")
+        match op {
+            Operator::Add => format!("{a} + {b}"),
+            Operator::Sub => format!("{a} - {b}"),
+            Operator::Mul => format!("{a} * {b}"),
+            Operator::Div => format!("{a} / {b}"),
+        }
     }
 
     fn negate(&self, a: String) -> String {
