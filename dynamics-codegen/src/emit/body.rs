@@ -3,11 +3,11 @@
 
 use super::count::count;
 use super::emitter::Emitter;
-use super::expr::Place;
 use super::lanes::{lane_operations, Queue};
 use super::names::{local, output_names, Element};
 use super::parts::Body;
 use super::parts::OpCount;
+use super::plan::Place;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
 use crate::trace::Shape;

@@ -1,10 +1,10 @@
 //! The emitter's state for one function: which nodes it needs and how often each is read,
 //! what each is read as, and which shared function computes it.
 
-use super::names::local;
 use super::parts::{Context, Shared};
+use super::plan;
 use super::sums::Sums;
-use crate::symbolic::{Graph, Node, NodeId, Var};
+use crate::symbolic::{Graph, Node, NodeId};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -79,25 +79,9 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// The nodes an emitted node reads, with `a + (−b)` read as `a − b`.
+    /// The nodes an emitted node reads ([`plan::operands`]).
     pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
-        match self.graph.node(id) {
-            Node::Add(a, b) => {
-                let (a, b) = self.as_sub(a, b).unwrap_or((a, b));
-                vec![a, b]
-            }
-            Node::Mul(a, b) => vec![a, b],
-            Node::Neg(a)
-            | Node::Recip(a)
-            | Node::Sin(a)
-            | Node::Cos(a)
-            | Node::Sign(a)
-            | Node::Tanh(a) => vec![a],
-            Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
-                self.eq.angle_offsets[usize::from(i)].into_iter().collect()
-            }
-            Node::Const(_) | Node::Var(_) => vec![],
-        }
+        plan::operands(self, self.eq, id)
     }
 
     pub(super) fn mark(&mut self, outputs: &[NodeId]) {
@@ -134,18 +118,7 @@ impl<'a> Emitter<'a> {
         let Node::Var(v) = self.graph.node(id) else {
             return None;
         };
-        Some(local(&match v {
-            Var::Q(i) => format!("q{}", i + 1),
-            Var::Qd(i) => format!("qd{}", i + 1),
-            Var::Qdd(i) => format!("qdd{}", i + 1),
-            Var::SinQ(i) => format!("s{}", i + 1),
-            Var::CosQ(i) => format!("c{}", i + 1),
-            Var::Param(k) => format!("p_{}", self.eq.fields[usize::from(k)]),
-            Var::Wrench(k) => crate::symbolic::WRENCH[usize::from(k)].to_owned(),
-            Var::Tau(i) => format!("tau{}", i + 1),
-            Var::Inertial(k) => format!("pi{}_{}", k / 10 + 1, k % 10 + 1),
-            Var::Exact(k) => format!("constant{k}"),
-        }))
+        Some(self.variable_name(v))
     }
 
     /// A leaf (or a bound node) as written: its name, or a constant's value.
@@ -154,25 +127,7 @@ impl<'a> Emitter<'a> {
             return quote!(#name);
         }
         match self.graph.node(id) {
-            Node::Const(c) if c.is_zero() => quote!(T::ZERO),
-            Node::Const(c) if c.is_one() => quote!(T::ONE),
-            Node::Const(c) => {
-                let x = c.to_f64();
-                // A literal cannot spell a non-finite value (and the literal constructor
-                // panics on one); such a constant can only come from overflowing arithmetic
-                // of finite parameters.
-                let value = if x.is_nan() {
-                    quote!(::core::f64::NAN)
-                } else if x.is_infinite() && x > 0.0 {
-                    quote!(::core::f64::INFINITY)
-                } else if x.is_infinite() {
-                    quote!(::core::f64::NEG_INFINITY)
-                } else {
-                    let lit = proc_macro2::Literal::f64_unsuffixed(x);
-                    quote!(#lit)
-                };
-                quote!(T::from_f64(#value))
-            }
+            Node::Const(c) => Self::literal(c),
             _ => quote!(),
         }
     }

@@ -1,155 +1,100 @@
-//! Expression printing: a node as Rust, with `a + (−b)` written `a − b`, `x·y + z` written
-//! `x.mul_add(y, z)`, the terms of a sum added as [`Sums::plan`] orders them, and parentheses only where
-//! precedence or the order of evaluation needs them.
+//! The Rust printer of the plan ([`super::plan`]): `a + b`, `x.mul_add(y, a)`, `T::sin(a)`,
+//! `T::ONE / a`, constants as `T::from_f64(0.42)` (bound to a `kN` where a function reads them)
+//! and inputs and bound nodes by their names.
 
 use super::emitter::Emitter;
-use super::sums::{Sums, Written};
-use crate::symbolic::{Node, NodeId};
+use super::names::local;
+use super::plan::{self, Function, Operator, Place, Precedence, Printer};
+use crate::symbolic::{NodeId, Number, Var};
 use proc_macro2::TokenStream;
 use quote::quote;
-
-/// Where an expression is written, which decides whether it needs parentheses.
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub(super) enum Place {
-    /// A statement's right-hand side or an array element.
-    Top,
-    /// Left of `+` or `−`.
-    AddLeft,
-    /// Right of `+` or `−`.
-    AddRight,
-    /// Left of `*`.
-    MulLeft,
-    /// Right of `*` or `/`, or under a unary minus.
-    MulRight,
-    /// Before a method call's dot.
-    Receiver,
-}
 
 impl Emitter<'_> {
     /// A node's expression at `place`: its name if it has one, else written out, in
     /// parentheses where the place needs them.
-    pub(super) fn expr(&mut self, id: NodeId, place: Place) -> TokenStream {
-        if self.is_leaf(id) {
-            return self.leaf(id);
+    pub(super) fn expr(&self, id: NodeId, place: Place) -> TokenStream {
+        plan::expr(self, id, place)
+    }
+
+    /// A node written out, not by its name.
+    pub(super) fn define(&self, id: NodeId) -> TokenStream {
+        plan::written(self, id).0
+    }
+
+    /// A constant's value: `T::ZERO`, `T::ONE`, `T::from_f64(0.42)`.
+    pub(super) fn literal(c: Number) -> TokenStream {
+        if c.is_zero() {
+            return quote!(T::ZERO);
         }
-        if let Some(name) = &self.names[id.index()] {
-            return quote!(#name);
+        if c.is_one() {
+            return quote!(T::ONE);
         }
-        if self.is_sum(id) {
-            // A fused multiply-add is a method call, which needs no parentheses.
-            let (e, call) = self.sum(id);
-            return if call || place == Place::Top || place == Place::AddLeft {
-                e
-            } else {
-                quote!((#e))
-            };
-        }
-        let wrap = match self.graph.node(id) {
-            Node::Mul(..) | Node::Recip(_) => place == Place::MulRight || place == Place::Receiver,
-            Node::Neg(_) => matches!(place, Place::MulRight | Place::AddRight | Place::Receiver),
-            _ => false,
-        };
-        let e = self.define(id);
-        if wrap {
-            quote!((#e))
+        let x = c.to_f64();
+        // A literal cannot spell a non-finite value (and the literal constructor panics on
+        // one); such a constant can only come from overflowing arithmetic of finite parameters.
+        let value = if x.is_nan() {
+            quote!(::core::f64::NAN)
+        } else if x.is_infinite() && x > 0.0 {
+            quote!(::core::f64::INFINITY)
+        } else if x.is_infinite() {
+            quote!(::core::f64::NEG_INFINITY)
         } else {
-            e
+            let lit = proc_macro2::Literal::f64_unsuffixed(x);
+            quote!(#lit)
+        };
+        quote!(T::from_f64(#value))
+    }
+
+    /// Input `v`'s name: `q2`, `s2`, `p_m2` (a parameter by its field's name).
+    pub(super) fn variable_name(&self, v: Var) -> proc_macro2::Ident {
+        local(&plan::leaf_name(v, |k| format!("p_{}", self.eq.fields[k])))
+    }
+}
+
+impl Printer for Emitter<'_> {
+    type Code = TokenStream;
+    const MUL_ADD_FIRST: Place = Place::MulRight;
+
+    fn bound(&self, id: NodeId) -> Option<TokenStream> {
+        self.names[id.index()].as_ref().map(|name| quote!(#name))
+    }
+
+    fn variable(&self, v: Var) -> TokenStream {
+        let name = self.variable_name(v);
+        quote!(#name)
+    }
+
+    fn constant(&self, c: Number) -> (TokenStream, Precedence) {
+        (Self::literal(c), Precedence::Atom)
+    }
+
+    fn binary(&self, a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
+        match op {
+            Operator::Add => quote!(#a + #b),
+            Operator::Sub => quote!(#a - #b),
+            Operator::Mul => quote!(#a * #b),
+            Operator::Div => quote!(#a / #b),
         }
     }
 
-    /// The sum `id` as [`Sums::plan`] writes it: `a + b`, `a − b` and `x.mul_add(y, a)`;
-    /// `true` if it ends in `mul_add` (a method call, which needs no parentheses).
-    fn sum(&mut self, id: NodeId) -> (TokenStream, bool) {
-        match self.plan(id) {
-            (root @ Written::MulAdd { .. }, false) => (self.written(root, Place::Top), true),
-            (root, false) => (self.written(root, Place::Top), false),
-            (root, true) => {
-                let e = self.written(root, Place::MulRight);
-                (quote!(-#e), false)
-            }
+    fn negate(&self, a: TokenStream) -> TokenStream {
+        quote!(-#a)
+    }
+
+    fn call(&self, f: Function, a: TokenStream) -> TokenStream {
+        match f {
+            Function::Sin => quote!(T::sin(#a)),
+            Function::Cos => quote!(T::cos(#a)),
+            Function::Tanh => quote!(T::tanh(#a)),
+            Function::Sign => quote!(T::sign(#a)),
         }
     }
 
-    /// A planned partial sum at `place`.
-    fn written(&mut self, w: Written, place: Place) -> TokenStream {
-        let (a, b, minus) = match w {
-            Written::Term(t) => return self.expr(t, place),
-            Written::MulAdd {
-                x,
-                y,
-                negate_x,
-                addend,
-                negate_addend,
-            } => {
-                let x = if negate_x {
-                    let x = self.expr(x, Place::MulRight);
-                    quote!((-#x))
-                } else {
-                    self.expr(x, Place::Receiver)
-                };
-                let y = self.expr(y, Place::Top);
-                let rest = if negate_addend {
-                    let rest = self.written(*addend, Place::MulRight);
-                    quote!(-#rest)
-                } else {
-                    self.written(*addend, Place::Top)
-                };
-                return quote!(#x.mul_add(#y, #rest));
-            }
-            Written::Add(a, b) => (a, b, false),
-            Written::Sub(a, b) => (a, b, true),
-        };
-        let (a, b) = (
-            self.written(*a, Place::AddLeft),
-            self.written(*b, Place::AddRight),
-        );
-        let e = if minus {
-            quote!(#a - #b)
-        } else {
-            quote!(#a + #b)
-        };
-        if matches!(place, Place::Top | Place::AddLeft) {
-            e
-        } else {
-            quote!((#e))
-        }
+    fn mul_add(&self, x: TokenStream, y: TokenStream, a: TokenStream) -> TokenStream {
+        quote!(#x.mul_add(#y, #a))
     }
 
-    pub(super) fn define(&mut self, id: NodeId) -> TokenStream {
-        if self.is_sum(id) {
-            return self.sum(id).0;
-        }
-        match self.graph.node(id) {
-            Node::Add(..) => unreachable!("a sum is written by `sum`"),
-            Node::Mul(a, b) => {
-                let (a, b) = (self.expr(a, Place::MulLeft), self.expr(b, Place::MulRight));
-                quote!(#a * #b)
-            }
-            Node::Neg(a) => {
-                let a = self.expr(a, Place::MulRight);
-                quote!(-#a)
-            }
-            Node::Recip(a) => {
-                let a = self.expr(a, Place::MulRight);
-                quote!(T::ONE / #a)
-            }
-            Node::Sin(a) => {
-                let a = self.expr(a, Place::Top);
-                quote!(T::sin(#a))
-            }
-            Node::Cos(a) => {
-                let a = self.expr(a, Place::Top);
-                quote!(T::cos(#a))
-            }
-            Node::Sign(a) => {
-                let a = self.expr(a, Place::Top);
-                quote!(T::sign(#a))
-            }
-            Node::Tanh(a) => {
-                let a = self.expr(a, Place::Top);
-                quote!(T::tanh(#a))
-            }
-            Node::Const(_) | Node::Var(_) => self.leaf(id),
-        }
+    fn parenthesized(&self, a: TokenStream) -> TokenStream {
+        quote!((#a))
     }
 }

@@ -2,9 +2,9 @@
 //! cosines of the joint angles, computed once each, four joints side by side.
 
 use super::emitter::Emitter;
-use super::expr::Place;
 use super::local;
-use crate::symbolic::{Node, Var, WRENCH};
+use super::plan::Place;
+use crate::symbolic::{Node, Var};
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -34,18 +34,24 @@ impl Emitter<'_> {
                 _ => {}
             }
         }
-        ["q", "qd", "qdd", "wrench", "tau"]
+        // Each array argument and the input its elements are.
+        type Element = fn(u16) -> Var;
+        let kinds: [(&str, Element); 5] = [
+            ("q", Var::Q),
+            ("qd", Var::Qd),
+            ("qdd", Var::Qdd),
+            ("wrench", Var::Wrench),
+            ("tau", Var::Tau),
+        ];
+        kinds
             .iter()
             .zip(used)
             .filter(|(_, used)| used.contains(&true))
-            .map(|(&name, used)| {
-                let array = local(&format!("{name}_"));
+            .map(|(&(array, var), used)| {
+                let array = local(&format!("{array}_"));
                 let names = used.iter().enumerate().map(|(i, &u)| {
                     if u {
-                        let v = local(&match name {
-                            "wrench" => WRENCH[i].to_owned(),
-                            _ => format!("{name}{}", i + 1),
-                        });
+                        let v = self.variable_name(var(u16::try_from(i).unwrap_or(u16::MAX)));
                         quote!(#v)
                     } else {
                         quote!(_)
@@ -84,15 +90,21 @@ impl Emitter<'_> {
                 }
                 None => quote!(#q[#index]),
             };
-            let name = |used: bool, letter: char| {
+            let name = |used: bool, v: Var| {
                 if used {
-                    let n = local(&format!("{letter}{}", i + 1));
+                    let n = self.variable_name(v);
                     quote!(#n)
                 } else {
                     quote!(_)
                 }
             };
-            joints.push((name(s, 's'), name(c, 'c'), angle, s, c));
+            joints.push((
+                name(s, Var::SinQ(i16)),
+                name(c, Var::CosQ(i16)),
+                angle,
+                s,
+                c,
+            ));
         }
         let mut rest = &joints[..];
         while !rest.is_empty() {

@@ -7,8 +7,8 @@
 //! the unit vectors of a tangent one array literal, `Tangent([T::ZERO, c2, …])`.
 
 use super::emitter::Emitter;
-use super::expr::Place;
 use super::names::local;
+use super::plan::Place;
 use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 use proc_macro2::{Ident, TokenStream};

@@ -31,7 +31,9 @@
 //! reads as the book numbers them, `let [qd1, _, qd3] = *qd_;`.
 //!
 //! By job: `depends` (what each node depends on, hence which function computes it),
-//! `emitter` (one function's state), `expr` (expressions and parentheses), `sum_order` (the
+//! `emitter` (one function's state), `plan` (an expression as both languages write it: its
+//! forms, their precedence and parentheses, the inputs' names), `expr` (its Rust printer),
+//! `sum_order` (the
 //! order of a sum's additions), `inputs` (joint variables, sines and cosines), `shared` (the
 //! configuration and motion functions), `body` (a method's body), `names` (output elements),
 //! `count` (operation counts), `items` (the derive's items: the families' modules, the
@@ -53,6 +55,7 @@ mod items;
 pub(crate) mod lanes;
 mod names;
 mod parts;
+pub(crate) mod plan;
 mod program;
 mod shared;
 mod sum_order;
@@ -72,4 +75,4 @@ pub use names::{
 };
 pub use parts::{Body, Context, OpCount, Output, Shared};
 pub use program::{emit, Emission};
-pub(crate) use sums::{Sums, Written};
+pub(crate) use sums::Sums;

@@ -4,12 +4,12 @@
 
 use super::depends::{dependencies, Depends};
 use super::emitter::{Emitter, Origin};
-use super::expr::Place;
 use super::names::{
     local, Element, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN,
     MOTION_STRUCT, PARAMETERS,
 };
 use super::parts::Shared;
+use super::plan::Place;
 use crate::symbolic::{Node, NodeId, Var};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;

@@ -7,7 +7,8 @@
 //! and cosines come after the parameters because a joint's angle offset may be a parameter
 //! expression traced after the joint's sine.
 
-use super::expr::{Place, Precision};
+use super::expr::Precision;
+use crate::emit::plan::Place;
 // The writer is declared with the expressions, which this file's statements are made of.
 pub(super) use super::expr::Writer;
 use crate::emit::lanes::Queue;
@@ -242,12 +243,9 @@ impl<'a> Writer<'a> {
         lines.push(line);
     }
 
-    /// A bound node's value, written out (its own name not yet in effect).
-    fn write(&mut self, id: NodeId) -> String {
-        let name = self.names[id.index()].take();
-        let value = self.expr(id, Place::Top);
-        self.names[id.index()] = name;
-        value
+    /// A bound node's value, written out (not by its own name).
+    fn write(&self, id: NodeId) -> String {
+        crate::emit::plan::written(self, id).0
     }
 
     /// The sines and cosines of the joints that read them, four joints a call as the Rust

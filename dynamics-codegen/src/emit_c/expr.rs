@@ -1,9 +1,10 @@
-//! Expressions as C: a node written where it is read (once) or by its name, with `a + (−b)`
-//! written `a - b`, constants as exact decimal literals, and parentheses only where C's
-//! precedence needs them to keep the graph's order of evaluation.
+//! Expressions as C: the plan's (`emit::plan`, which the Rust emission prints too) printed in
+//! C, a node written where it is read (once) or by its name, constants as exact decimal
+//! literals of the function's precision.
 
-use crate::emit::{Sums, Written};
-use crate::symbolic::{Graph, Node, NodeId, Var, WRENCH};
+use crate::emit::plan::{self, Function, Operator, Place, Precedence, Printer};
+use crate::emit::Sums;
+use crate::symbolic::{Graph, NodeId, Number, Var};
 use crate::trace::Equations;
 use std::cell::Cell;
 
@@ -115,188 +116,81 @@ impl Precision {
     }
 }
 
-/// Where an expression is written, which decides whether it needs parentheses.
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub(super) enum Place {
-    /// A statement's right-hand side, or a function's argument.
-    Top,
-    /// Left of `+` or `-`.
-    AddLeft,
-    /// Right of `+` or `-`.
-    AddRight,
-    /// Left of `*` or `/`.
-    MulLeft,
-    /// Right of `*` or `/`.
-    MulRight,
-    /// Under a unary minus.
-    Unary,
-}
-
 impl Writer<'_> {
-    /// The nodes an emitted node reads, with `a + (−b)` read as `a − b`, and the angle
-    /// offset that the sine and cosine of a joint read.
+    /// The nodes an emitted node reads ([`plan::operands`]).
     pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
-        match self.eq.graph.node(id) {
-            Node::Add(a, b) => {
-                let (a, b) = self.as_sub(a, b).unwrap_or((a, b));
-                vec![a, b]
-            }
-            Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
-                self.eq.angle_offsets[usize::from(i)].into_iter().collect()
-            }
-            node => node.operands().collect(),
-        }
+        plan::operands(self, self.eq, id)
     }
 
-    /// The magnitude of a negative constant, which a sum subtracts.
-    fn negative_constant(&self, id: NodeId) -> Option<f64> {
-        match self.eq.graph.node(id) {
-            Node::Const(c) if c.is_negative() => Some(-c.to_f64()),
-            _ => None,
-        }
-    }
-
-    /// The name a leaf is read by, as the Rust emission names it (`q2`, `qd2`, `s2`, `c2`,
-    /// `p_m2`, `fx`, `tau2`), but a parameter whose name C would not take as it is: `p_{k}`.
+    /// The name a leaf is read by, as the Rust emission names it ([`plan::leaf_name`]: `q2`,
+    /// `s2`, `p_m2`, `fx`), but a parameter whose name C would not take as it is: `p_{k}`.
     pub(super) fn var_name(&self, v: Var) -> String {
-        match v {
-            Var::Q(i) => format!("q{}", i + 1),
-            Var::Qd(i) => format!("qd{}", i + 1),
-            Var::Qdd(i) => format!("qdd{}", i + 1),
-            Var::SinQ(i) => format!("s{}", i + 1),
-            Var::CosQ(i) => format!("c{}", i + 1),
-            Var::Param(k) => {
-                let k = usize::from(k);
-                crate::identifiers::c_parameter(k, &self.eq.fields[k])
-            }
-            Var::Wrench(k) => WRENCH[usize::from(k)].to_owned(),
-            Var::Tau(i) => format!("tau{}", i + 1),
-            // Placeholders of the regressor's and the base parameters' analyses, which no
-            // emitted output reads.
-            Var::Inertial(k) => format!("pi{}_{}", k / 10 + 1, k % 10 + 1),
-            Var::Exact(k) => format!("constant{k}"),
-        }
+        plan::leaf_name(v, |k| {
+            crate::identifiers::c_parameter(k, &self.eq.fields[k])
+        })
     }
 
     /// Node `id` at `place`: its name if it has one, else written out, in parentheses where
-    /// the place needs them.
+    /// the place needs them ([`plan::expr`]).
     pub(super) fn expr(&self, id: NodeId, place: Place) -> String {
-        if let Some(name) = &self.names[id.index()] {
-            return name.clone();
+        plan::expr(self, id, place)
+    }
+}
+
+/// The C printer of the plan: `a + b`, `dynamics_fma(x, y, a)`, `dynamics_sin(a)`, `1.0 / a`,
+/// constants as exact literals of the precision (`0.4318`, `0.4318f`), a negative one bound
+/// as a prefix minus.
+impl Printer for Writer<'_> {
+    type Code = String;
+    const MUL_ADD_FIRST: Place = Place::Top;
+
+    fn bound(&self, id: NodeId) -> Option<String> {
+        self.names[id.index()].clone()
+    }
+
+    fn variable(&self, v: Var) -> String {
+        self.var_name(v)
+    }
+
+    fn constant(&self, c: Number) -> (String, Precedence) {
+        let precedence = if c.is_negative() {
+            Precedence::Prefix
+        } else {
+            Precedence::Atom
+        };
+        (self.precision.literal(c.to_f64()), precedence)
+    }
+
+    fn binary(&self, a: String, op: Operator, b: String) -> String {
+        match op {
+            Operator::Add => format!("{a} + {b}"),
+            Operator::Sub => format!("{a} - {b}"),
+            Operator::Mul => format!("{a} * {b}"),
+            Operator::Div => format!("{a} / {b}"),
         }
+    }
+
+    fn negate(&self, a: String) -> String {
+        format!("-{a}")
+    }
+
+    fn call(&self, f: Function, a: String) -> String {
         let p = self.precision;
-        if self.is_sum(id) {
-            let (text, call) = self.sum(id);
-            let wrap = matches!(
-                place,
-                Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
-            );
-            return if wrap && !call {
-                format!("({text})")
-            } else {
-                text
-            };
-        }
-        let (text, wrap) = match self.eq.graph.node(id) {
-            Node::Var(v) => return self.var_name(v),
-            Node::Add(..) => unreachable!("a sum is written by `sum`"),
-            Node::Const(c) => {
-                let value = p.literal(c.to_f64());
-                let bare = matches!(place, Place::Top | Place::AddLeft | Place::MulLeft);
-                return if c.is_negative() && !bare {
-                    format!("({value})")
-                } else {
-                    value
-                };
-            }
-            Node::Mul(a, b) => (
-                format!(
-                    "{} * {}",
-                    self.expr(a, Place::MulLeft),
-                    self.expr(b, Place::MulRight)
-                ),
-                matches!(place, Place::MulRight | Place::Unary),
-            ),
-            Node::Recip(a) => (
-                format!("{} / {}", p.literal(1.0), self.expr(a, Place::MulRight)),
-                matches!(place, Place::MulRight | Place::Unary),
-            ),
-            Node::Neg(a) => (
-                format!("-{}", self.expr(a, Place::Unary)),
-                matches!(place, Place::AddRight | Place::MulRight | Place::Unary),
-            ),
-            Node::Sin(a) => (self.call(&p.trig("sin"), a), false),
-            Node::Cos(a) => (self.call(&p.trig("cos"), a), false),
-            Node::Tanh(a) => (self.call(&p.math("tanh"), a), false),
-            Node::Sign(a) => (self.call(&self.sign, a), false),
+        let function = match f {
+            Function::Sin => p.trig("sin"),
+            Function::Cos => p.trig("cos"),
+            Function::Tanh => p.math("tanh"),
+            Function::Sign => self.sign.clone(),
         };
-        if wrap {
-            format!("({text})")
-        } else {
-            text
-        }
+        format!("{function}({a})")
     }
 
-    /// The sum `id` as [`Sums::plan`] writes it, `a + b`, `a - b` and `dynamics_fma(x, y,
-    /// a)`, and whether it is a call (which needs no parentheses).
-    fn sum(&self, id: NodeId) -> (String, bool) {
-        match self.plan(id) {
-            (root @ Written::MulAdd { .. }, false) => (self.written(root, Place::Top), true),
-            (root, false) => (self.written(root, Place::Top), false),
-            (root, true) => (format!("-{}", self.written(root, Place::Unary)), false),
-        }
+    fn mul_add(&self, x: String, y: String, a: String) -> String {
+        format!("{}({x}, {y}, {a})", self.precision.fma())
     }
 
-    /// A planned partial sum at `place`; `a + (−0.7)` written `a - 0.7` (negation is exact,
-    /// so the value is the same).
-    fn written(&self, w: Written, place: Place) -> String {
-        let (a, b, minus) = match w {
-            Written::Term(t) => return self.expr(t, place),
-            Written::MulAdd {
-                x,
-                y,
-                negate_x,
-                addend,
-                negate_addend,
-            } => {
-                let x = if negate_x {
-                    format!("-{}", self.expr(x, Place::Unary))
-                } else {
-                    self.expr(x, Place::Top)
-                };
-                let rest = if negate_addend {
-                    format!("-{}", self.written(*addend, Place::Unary))
-                } else {
-                    self.written(*addend, Place::Top)
-                };
-                let y = self.expr(y, Place::Top);
-                return format!("{}({x}, {y}, {rest})", self.precision.fma());
-            }
-            Written::Add(a, b) => (a, b, false),
-            Written::Sub(a, b) => (a, b, true),
-        };
-        let a = self.written(*a, Place::AddLeft);
-        let (b, minus) = match *b {
-            Written::Term(t) => match self.negative_constant(t) {
-                Some(m) => (self.precision.literal(m), !minus),
-                None => (self.expr(t, Place::AddRight), minus),
-            },
-            b => (self.written(b, Place::AddRight), minus),
-        };
-        let text = format!("{a} {} {b}", if minus { '-' } else { '+' });
-        let wrap = matches!(
-            place,
-            Place::AddRight | Place::MulLeft | Place::MulRight | Place::Unary
-        );
-        if wrap {
-            format!("({text})")
-        } else {
-            text
-        }
-    }
-
-    fn call(&self, function: &str, a: NodeId) -> String {
-        format!("{function}({})", self.expr(a, Place::Top))
+    fn parenthesized(&self, a: String) -> String {
+        format!("({a})")
     }
 }
 

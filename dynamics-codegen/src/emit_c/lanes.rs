@@ -11,8 +11,9 @@
 //! of the identity `dynamics_unit[j][k_]` times their sum, then each term folded in:
 //! `dynamics_fma(x[k_], f₁ * f₂, acc)`, `acc ± x[k_]`.
 
-use super::expr::{Place, Writer};
+use super::expr::Writer;
 use crate::emit::lanes::{lane_text, width, Queue};
+use crate::emit::plan::Place;
 use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 

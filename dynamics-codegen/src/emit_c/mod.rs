@@ -37,12 +37,14 @@
 //!
 //! By job: `expr` (expressions, literals, precisions), `body` (one function's statements),
 //! `function` (the functions and their signatures), `batch` (the functions over many states),
-//! `trig` (the sines and cosines), this file (the header around them).
+//! `trig` (the sines and cosines), `kernels` (their kernels, from the runtime's constants), this
+//! file (the header around them).
 
 mod batch;
 mod body;
 mod expr;
 mod function;
+mod kernels;
 mod lanes;
 mod trig;
 

@@ -9,9 +9,10 @@
 //!
 //! The kernels are the runtime's operation for operation: the same Cody-Waite reduction (π/2 in
 //! parts, `k·P` exact, the rounding errors recovered by Fast2Sum and TwoSum), the same fdlibm
-//! and FreeBSD polynomials in the same Estrin form, the same coefficients (the `float` ones as
-//! `(float)` of the same `double` literals, as the runtime's `f64 as f32`), the parts of π/2 as
-//! hexadecimal literals, exact. Where the runtime fuses a multiply-add the C writes `a * b + c`,
+//! and FreeBSD polynomials in the same Estrin form, the same constants, read from the runtime's
+//! own table (`kernels.rs`: the coefficients as published, the `float` ones as `(float)` of the
+//! same `double` literals, as the runtime's `f64 as f32`, the parts of π/2 and the bounds of the
+//! fast range as hexadecimal literals, exact). Where the runtime fuses a multiply-add the C writes `a * b + c`,
 //! which a compiler fuses under `-ffp-contract=fast`; the products the runtime fuses with their
 //! subtractions are exact, so the two forms agree there. The quadrant is chosen by comparisons
 //! (`n/4 − round(n/4)`, exact) rather than the runtime's table, so that the body has no
@@ -27,106 +28,51 @@
 //! The definitions are shared by every robot's header (one guard, `DYNAMICS_TRIG_H`), so that
 //! two robots' headers in one file define them once.
 
-/// The kernel of `double`, one argument `{x}` of the fast range to `{s}` and `{c}`, without a
-/// branch: written out in `dynamics_sincos` and in `dynamics_sincos4`'s loop, where a compiler
-/// vectorizes it only if it is written there, not called (gcc at `-O2` does not inline it).
-const LANE_F64: &str = "
-    const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
-    /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
-    const double shifted = {x} * 0x1.45f306dc9c883p-1 + shift;
-    const double n = shifted - shift;
-    const double a = {x} - n * 0x1.921fb5444p+0;
-    const double b = n * 0x1.68c234c4cp-39;
-    const double cc = n * 0x1.98a2e03707345p-77;
-    const double t = a - n * 0x1.68c234c4cp-39;
-    const double e = (a - t) - b;
-    const double r = t - cc;
-    const double r_lo = ((t - r) - cc) + e;
-    /* fdlibm's k_sin.c and k_cos.c in Estrin form. */
-    const double z = t * t;
-    const double z2 = z * z;
-    const double z4 = z2 * z2;
-    const double sin_poly = z4 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
-        + (z2 * (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4)
-            + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1));
-    const double cos_poly = z4 * (z * -1.13596475577881948265e-11 + 2.08757232129817482790e-9)
-        + (z2 * (z * -2.75573143513906633035e-7 + 2.48015872894767294178e-5)
-            + (z * -1.38888888888741095749e-3 + 4.16666666666666019037e-2));
-    const double half_z = 0.5 * z;
-    const double w = 1.0 - half_z;
-    const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
-    const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
-    /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
-    const double m = n * 0.25;
-    const double d = m - ((m + shift) - shift);
-    const double p = d * d == 0.0625 ? cos_r : sin_r;
-    const double q = d * d == 0.0625 ? sin_r : cos_r;
-    {s} = d * d == 0.25 || d == -0.25 ? -p : p;
-    {c} = d * d == 0.25 || d == 0.25 ? -q : q;
-";
+use super::kernels::{lane_f32, lane_f64, BOUND_F32, BOUND_F64, TINY_F32, TINY_F64};
 
-/// The kernel of `float`, as [`LANE_F64`].
-const LANE_F32: &str = "
-    const float shift = 12582912.0f; /* 1.5 * 2^23 */
-    /* pi/2 in four parts; Fast2Sum, TwoSum and Fast2Sum recover the roundings. */
-    const float shifted = {x} * 0x1.45f306p-1f + shift;
-    const float n = shifted - shift;
-    const float a = {x} - n * 0x1.922p+0f;
-    const float b = n * -0x1.2aep-18f;
-    const float cc = n * -0x1.deap-31f;
-    const float d4 = n * 0x1.184698p-44f;
-    const float t0 = a - n * -0x1.2aep-18f;
-    const float e1 = (a - t0) - b;
-    const float t = t0 - n * -0x1.deap-31f;
-    const float t_s = t - t0;
-    const float e2 = (t0 - (t - t_s)) - (cc + t_s);
-    const float r = t - d4;
-    const float r_lo = ((t - r) - d4) + (e1 + e2);
-    /* FreeBSD's k_sinf.c and k_cosf.c, rounded to float. */
-    const float z = t * t;
-    const float z2 = z * z;
-    const float sin_poly = z2 * (z * (float)0.0000027183114939898219064 + (float)-0.000198393348360966317347)
-        + (z * (float)0.0083333293858894631756 + (float)-0.166666666416265235595);
-    const float cos_poly = z2 * (float)0.0000243904487962774090654
-        + (z * (float)-0.00138867637746099294692 + (float)0.0416666233237390631894);
-    const float half_z = 0.5f * z;
-    const float w = 1.0f - half_z;
-    const float sin_r = r + ((r * z) * sin_poly + r_lo * w);
-    const float cos_r = w + ((z2 * cos_poly + ((1.0f - w) - half_z)) - r * r_lo);
-    const float m = n * 0.25f;
-    const float d = m - ((m + shift) - shift);
-    const float p = d * d == 0.0625f ? cos_r : sin_r;
-    const float q = d * d == 0.0625f ? sin_r : cos_r;
-    {s} = d * d == 0.25f || d == -0.25f ? -p : p;
-    {c} = d * d == 0.25f || d == 0.25f ? -q : q;
-";
-
-/// `kernel` for the argument `x` into `s` and `c`, indented by `indent` more spaces.
-fn lane(kernel: &str, x: &str, s: &str, c: &str, indent: usize) -> String {
-    let text = kernel.trim_start_matches('\n');
-    let text = text.replace("{x}", x).replace("{s}", s).replace("{c}", c);
+/// `kernel` indented by `indent` more spaces.
+fn lane(kernel: &str, indent: usize) -> String {
     let pad = " ".repeat(indent);
-    text.lines().map(|line| format!("{pad}{line}\n")).collect()
+    kernel
+        .lines()
+        .map(|line| format!("{pad}{line}\n"))
+        .collect()
 }
 
-/// The C text, after `#include <math.h>`: `TRIG` with its kernels written in.
+/// The C text, after `#include <math.h>`: `TRIG` with the kernels (`kernels.rs`) and the
+/// runtime's bounds of their range written in.
 pub(super) fn trig() -> String {
-    TRIG.replace(
-        "    /* lane f64 scalar */\n",
-        &lane(LANE_F64, "x", "*s", "*c", 4),
-    )
-    .replace(
-        "    /* lane f64 four */\n",
-        &lane(LANE_F64, "xs[i]", "ss[i]", "cs[i]", 8),
-    )
-    .replace(
-        "    /* lane f32 scalar */\n",
-        &lane(LANE_F32, "x", "*s", "*c", 4),
-    )
-    .replace(
-        "    /* lane f32 four */\n",
-        &lane(LANE_F32, "xs[i]", "ss[i]", "cs[i]", 8),
-    )
+    let bounds = [
+        ("{TINY_F64}", TINY_F64.hex()),
+        ("{BOUND_F64}", BOUND_F64.hex()),
+        ("{TINY_F32}", TINY_F32.hex()),
+        ("{BOUND_F32}", BOUND_F32.hex()),
+    ];
+    let kernels = [
+        (
+            "    /* lane f64 scalar */\n",
+            lane(&lane_f64("x", "*s", "*c"), 4),
+        ),
+        (
+            "    /* lane f64 four */\n",
+            lane(&lane_f64("xs[i]", "ss[i]", "cs[i]"), 8),
+        ),
+        (
+            "    /* lane f32 scalar */\n",
+            lane(&lane_f32("x", "*s", "*c"), 4),
+        ),
+        (
+            "    /* lane f32 four */\n",
+            lane(&lane_f32("xs[i]", "ss[i]", "cs[i]"), 8),
+        ),
+    ];
+    bounds
+        .into_iter()
+        .chain(kernels)
+        .fold(TRIG.to_owned(), |text, (placeholder, value)| {
+            debug_assert!(text.contains(placeholder), "{placeholder}");
+            text.replace(placeholder, &value)
+        })
 }
 
 /// The C text around the kernels.
@@ -145,8 +91,8 @@ const TRIG: &str = r##"#ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) < 0x1p51)
 #define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) < 0x1p22f)
 #else
-#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) <= 0x1p16)
-#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) <= 0x1p12f)
+#define DYNAMICS_SINCOS_IN_RANGE(ax) ((ax) <= {BOUND_F64})
+#define DYNAMICS_SINCOS_IN_RANGE_F32(ax) ((ax) <= {BOUND_F32})
 #endif
 
 /* The four-argument kernels inlined where gcc or clang would call them (passing the angles
@@ -181,7 +127,7 @@ static inline void dynamics_sincos_beyond_f32(float x, float *s, float *c) {
 
 static inline void dynamics_sincos(double x, double *s, double *c) {
     const double ax = x < 0.0 ? -x : x;
-    if (ax < 0x1p-27) {
+    if (ax < {TINY_F64}) {
         *s = x;
         *c = 1.0;
     } else if (!DYNAMICS_SINCOS_IN_RANGE(ax)) {
@@ -205,7 +151,7 @@ DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], do
     }
     for (i = 0; i < 4; ++i) {
         const double ax = xs[i] < 0.0 ? -xs[i] : xs[i];
-        fast += (ax >= 0x1p-27) & DYNAMICS_SINCOS_IN_RANGE(ax);
+        fast += (ax >= {TINY_F64}) & DYNAMICS_SINCOS_IN_RANGE(ax);
     }
     if (fast == 4) {
         for (i = 0; i < 4; ++i) {
@@ -224,7 +170,7 @@ DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], do
 
 static inline void dynamics_sincos_f32(float x, float *s, float *c) {
     const float ax = x < 0.0f ? -x : x;
-    if (ax < 0x1p-12f) {
+    if (ax < {TINY_F32}) {
         *s = x;
         *c = 1.0f;
     } else if (!DYNAMICS_SINCOS_IN_RANGE_F32(ax)) {
@@ -243,7 +189,7 @@ DYNAMICS_SINCOS4_INLINE void dynamics_sincos4_f32(const float x[4], float s[4], 
     }
     for (i = 0; i < 4; ++i) {
         const float ax = xs[i] < 0.0f ? -xs[i] : xs[i];
-        fast += (ax >= 0x1p-12f) & DYNAMICS_SINCOS_IN_RANGE_F32(ax);
+        fast += (ax >= {TINY_F32}) & DYNAMICS_SINCOS_IN_RANGE_F32(ax);
     }
     if (fast == 4) {
         for (i = 0; i < 4; ++i) {

@@ -2,37 +2,8 @@
 //! every path (scalar, SSE2, AVX2) expands, so that all of them run the same operations in
 //! the same order and agree bit for bit.
 
-// fdlibm k_sin.c: sin r ≈ r + S1·r³ + … + S6·r¹³ on [−π/4, π/4].
-pub(super) const S1_F64: f64 = -1.666_666_666_666_663_243_48e-1;
-pub(super) const S2_F64: f64 = 8.333_333_333_322_489_461_24e-3;
-pub(super) const S3_F64: f64 = -1.984_126_982_985_794_931_34e-4;
-pub(super) const S4_F64: f64 = 2.755_731_370_707_006_767_89e-6;
-pub(super) const S5_F64: f64 = -2.505_076_025_340_686_341_95e-8;
-pub(super) const S6_F64: f64 = 1.589_690_995_211_550_102_21e-10;
-// fdlibm k_cos.c: cos r ≈ 1 − r²/2 + C1·r⁴ + … + C6·r¹² on [−π/4, π/4].
-pub(super) const C1_F64: f64 = 4.166_666_666_666_660_190_37e-2;
-pub(super) const C2_F64: f64 = -1.388_888_888_887_410_957_49e-3;
-pub(super) const C3_F64: f64 = 2.480_158_728_947_672_941_78e-5;
-pub(super) const C4_F64: f64 = -2.755_731_435_139_066_330_35e-7;
-pub(super) const C5_F64: f64 = 2.087_572_321_298_174_827_90e-9;
-pub(super) const C6_F64: f64 = -1.135_964_755_778_819_482_65e-11;
-
-// FreeBSD k_sinf.c (|sin(x)/x − s(x)| < 2^-37.5) and k_cosf.c (|cos(x) − c(x)| < 2^-34.1),
-// rounded to f32; their C0 = −0.4999999973 rounds to −1/2.
-#[allow(clippy::cast_possible_truncation)]
-mod coefficients_f32 {
-    pub(in crate::trig) const S1: f32 = -0.166_666_666_416_265_235_595_f64 as f32;
-    pub(in crate::trig) const S2: f32 = 0.008_333_329_385_889_463_175_6_f64 as f32;
-    pub(in crate::trig) const S3: f32 = -0.000_198_393_348_360_966_317_347_f64 as f32;
-    pub(in crate::trig) const S4: f32 = 0.000_002_718_311_493_989_821_906_4_f64 as f32;
-    pub(in crate::trig) const C1: f32 = 0.041_666_623_323_739_063_189_4_f64 as f32;
-    pub(in crate::trig) const C2: f32 = -0.001_388_676_377_460_992_946_92_f64 as f32;
-    pub(in crate::trig) const C3: f32 = 0.000_024_390_448_796_277_409_065_4_f64 as f32;
-}
-pub(super) use coefficients_f32::{
-    C1 as C1_F32, C2 as C2_F32, C3 as C3_F32, S1 as S1_F32, S2 as S2_F32, S3 as S3_F32,
-    S4 as S4_F32,
-};
+// The coefficients, as published (`constants.rs`, which the C back end reads too).
+kernel_coefficients!(declare_constants);
 
 /// The reduction and the kernels of `f64`, written once for the scalar and the vector paths:
 /// `$x` is the argument (a number or a register), `$k` makes a constant of that kind, and

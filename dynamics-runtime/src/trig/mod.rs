@@ -48,7 +48,8 @@
 //! two SSE2 registers of two lanes, which every x86-64 build has; `f32` uses the four lanes of
 //! SSE. Elsewhere, and whenever an argument is outside the fast range, one at a time.
 //!
-//! The files, by job: [`reduction`] (the constants of the reduction), [`kernels`] (the
+//! The files, by job: `constants.rs` (the constants' table, which `dynamics-codegen` writes the C
+//! header's kernels from), [`reduction`] (the constants of the reduction), [`kernels`] (the
 //! polynomials and the one body of reduction and kernels that every path expands), [`scalar`]
 //! (one argument), [`four`] (four arguments: the choice of path), and the vector lanes
 //! `avx2_f64`, `sse2_f64` and `sse_f32`.
@@ -56,6 +57,20 @@
 // Constants are written as published (kernels) or as exact decimal expansions (parts of π/2).
 #![allow(clippy::excessive_precision)]
 
+// The constants' table (shared with `dynamics-codegen`'s C kernels), then the modules that
+// declare them with `declare_constants!`.
+#[macro_use]
+mod constants;
+/// Declares the rows of a table of `constants.rs` as constants of the module that reads it.
+macro_rules! declare_constants {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty = $value:literal $(as $cast:ty)?;)*) => {
+        $(
+            $(#[$doc])*
+            #[allow(clippy::cast_possible_truncation)]
+            pub(super) const $name: $ty = $value $(as $cast)?;
+        )*
+    };
+}
 #[macro_use]
 mod kernels;
 mod four;

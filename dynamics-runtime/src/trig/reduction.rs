@@ -1,36 +1,10 @@
 //! Cody-Waite range reduction's constants: `x = k·π/2 + r` with `k` the integer nearest
 //! `x·2/π`, π/2 split into parts whose products with every `k` of the fast range are exact.
-//! The reduction itself is written once, with the kernels, in [`super::kernels`].
+//! The reduction itself is written once, with the kernels, in [`super::kernels`]; the constants
+//! are spelled in `constants.rs`, which `dynamics-codegen` writes the C header's kernels from.
 
-/// `1.5·2^52`: adding it rounds a double of magnitude below 2^51 to an integer, which lands
-/// in the low bits of the sum's representation (`2^51 + k`, so the two lowest bits are
-/// `k mod 4`).
-pub(super) const SHIFT_F64: f64 = 6_755_399_441_055_744.0;
-/// `1.5·2^23`, the same for `f32`.
-pub(super) const SHIFT_F32: f32 = 12_582_912.0;
-
-/// `f64`: below this, `(x, 1)` is the correctly rounded result (`x³/6` and `x²/2` are under
-/// half an ulp of `x` and of 1).
-pub(super) const TINY_F64: f64 = 7.450_580_596_923_828e-9; // 2^-27
-/// `f64`: the fast path's bound, 2^16 (`|k| ≤ 41722 < 2^16`).
-pub(super) const BOUND_F64: f64 = 65_536.0;
-/// `f32`: 2^-12, as [`TINY_F64`].
-pub(super) const TINY_F32: f32 = 2.441_406_25e-4;
-/// `f32`: the fast path's bound, 2^12 (`|k| ≤ 2608 < 2^12`).
-pub(super) const BOUND_F32: f32 = 4_096.0;
-
-// π/2 = P1 + P2 + P3 + 5.3e-40 for f64. P1 and P2 have 35 significant bits, so k·P1 and k·P2
-// are exact for |k| < 2^18.
-pub(super) const P1_F64: f64 = 1.570_796_326_792_333_3; // 0x1.921fb5444p+0
-pub(super) const P2_F64: f64 = 2.563_344_151_583_955_8e-12; // 0x1.68c234c4cp-39
-pub(super) const P3_F64: f64 = 1.056_299_906_698_742_8e-23; // 0x1.98a2e03707345p-77
-
-// π/2 = P1 + P2 + P3 + P4 + 2.0e-21 for f32. P1, P2 and P3 have 12 significant bits, so their
-// products with |k| < 2^12 are exact.
-pub(super) const P1_F32: f32 = 1.570_800_781_25; // 0x1.922p+0
-pub(super) const P2_F32: f32 = -4.453_584_551_811_218e-6; // -0x1.2aep-18
-pub(super) const P3_F32: f32 = -8.706_138_032_721_356e-10; // -0x1.deap-31
-pub(super) const P4_F32: f32 = 6.223_371_969_669_989e-14; // 0x1.184698p-44
+// The constants are spelled in `constants.rs`, which the C back end reads too.
+reduction_constants!(declare_constants);
 
 #[cfg(test)]
 mod tests {

@@ -1,0 +1,1 @@
+../../../dynamics-runtime/src/trig/constants.rs
