@@ -2,7 +2,7 @@
 
 use super::{Families, RobotFile};
 use clap::Args;
-use dynamics_codegen::identifiers::c_prefix_problem;
+use dynamics_codegen::c_prefix_problem;
 
 #[derive(Args, Debug)]
 pub struct Emit {

@@ -6,8 +6,8 @@
 use super::eval::usage;
 use super::{load_with_request, simplification, Failure};
 use crate::args::{Inspect, Numbers, Simplified};
-use dynamics_codegen::inspect::Format;
 use dynamics_codegen::model::{Robot, Simplification};
+use dynamics_codegen::pipeline::Format;
 use dynamics_codegen::{Loaded, Readable};
 
 pub fn run(args: &Inspect) -> Result<String, Failure> {

@@ -3,10 +3,8 @@
 
 use super::{field_idents, load_with_request, self_fields, type_name, Failure};
 use crate::args::Stats;
-use dynamics_codegen::inspect::{
-    inspect_with_kinematics, Format, Inspection, KinematicPart, Limits,
-};
 use dynamics_codegen::model::{Robot, Simplification};
+use dynamics_codegen::pipeline::derived_readable;
 use dynamics_codegen::Method;
 use dynamics_codegen::{expand_robot, generate, Equations, Generated};
 use quote::{quote, ToTokens};
@@ -144,24 +142,10 @@ fn bounds(eq: &Equations) -> String {
 /// kinematic methods, within its limits.
 fn readable(eq: &Equations, robot: &Robot) -> String {
     let start = Instant::now();
-    let (inspection, kinematics) = inspect_with_kinematics(eq, robot, Limits::DERIVE);
-    let (text, latex) = (
-        inspection.render(Format::Text),
-        inspection.render(Format::Latex),
-    );
-    let parts = [
-        KinematicPart::HandPose,
-        KinematicPart::JacobianInBase,
-        KinematicPart::JacobianInHand,
-    ];
-    let docs: usize = parts
-        .iter()
-        .filter_map(|&part| kinematics.render_part(part, Format::Text))
-        .map(|doc| doc.len())
-        .sum();
+    let added = derived_readable(eq, robot);
     let elapsed = start.elapsed();
-    let state = |i: &Inspection| {
-        if i.complete() {
+    let state = |complete: bool| {
+        if complete {
             "complete"
         } else {
             "capped: some sections point to `dynamics inspect`"
@@ -169,12 +153,13 @@ fn readable(eq: &Equations, robot: &Robot) -> String {
     };
     format!(
         "readable equations in the derive: {:.1} ms, {} + {} bytes (text + LaTeX), {}; \
-         kinematics in the methods' rustdoc: {docs} bytes, {}\n",
+         kinematics in the methods' rustdoc: {} bytes, {}\n",
         elapsed.as_secs_f64() * 1e3,
-        text.len(),
-        latex.len(),
-        state(&inspection),
-        state(&kinematics),
+        added.text,
+        added.latex,
+        state(added.complete),
+        added.docs,
+        state(added.docs_complete),
     )
 }
 

@@ -34,7 +34,7 @@ pub use c_header::CHeader;
 pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
 pub use families::{asked_by_name, families, opt_in_family};
-pub use readable::Readable;
+pub use readable::{derived_readable, DerivedReadable, Readable};
 pub use rust_module::RustModule;
 
 /// Where a robot's description comes from.

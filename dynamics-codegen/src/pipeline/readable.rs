@@ -4,11 +4,13 @@
 
 use super::{Diagnostic, Loaded};
 use crate::inspect::{
-    inspect, inspect_kinematics, inspect_simplified, render_base_parameters, Format, Limits,
+    inspect, inspect_kinematics, inspect_simplified, inspect_with_kinematics,
+    render_base_parameters, Format, KinematicPart, Limits,
 };
-use crate::model::Simplification;
+use crate::model::{Robot, Simplification};
 use crate::trace::base_parameters::JointColumns;
 use crate::trace::derive;
+use crate::trace::Equations;
 
 /// Which of a robot's equations to print.
 #[derive(Clone, Copy, Debug)]
@@ -56,6 +58,45 @@ impl Loaded {
                 Ok(simplified.render(format))
             }
         }
+    }
+}
+
+/// What the derive adds to the code for the readable equations (`EQUATIONS`,
+/// `EQUATIONS_LATEX`) and the kinematic methods' rustdoc, within its limits.
+#[derive(Clone, Copy, Debug)]
+pub struct DerivedReadable {
+    /// Bytes of the text equations.
+    pub text: usize,
+    /// Bytes of the LaTeX equations.
+    pub latex: usize,
+    /// Whether they are whole (not capped: some sections then point to `dynamics inspect`).
+    pub complete: bool,
+    /// Bytes of the kinematic methods' rustdoc.
+    pub docs: usize,
+    /// Whether the rustdoc is whole.
+    pub docs_complete: bool,
+}
+
+/// The readable equations the derive adds for `eq` of `robot` (`dynamics stats` times it).
+#[must_use]
+pub fn derived_readable(eq: &Equations, robot: &Robot) -> DerivedReadable {
+    let (inspection, kinematics) = inspect_with_kinematics(eq, robot, Limits::DERIVE);
+    let parts = [
+        KinematicPart::HandPose,
+        KinematicPart::JacobianInBase,
+        KinematicPart::JacobianInHand,
+    ];
+    let docs = parts
+        .iter()
+        .filter_map(|&part| kinematics.render_part(part, Format::Text))
+        .map(|doc| doc.len())
+        .sum();
+    DerivedReadable {
+        text: inspection.render(Format::Text).len(),
+        latex: inspection.render(Format::Latex).len(),
+        complete: inspection.complete(),
+        docs,
+        docs_complete: kinematics.complete(),
     }
 }
 
