@@ -1,6 +1,6 @@
 //! `dynamics size ROBOT (--csv FILE | --from Q --to Q [--duration T] [--samples N])
 //! [--set NAME=VALUE].. [--svg FILE] [--json]`: actuator sizing along a trajectory
-//! ([`crate::sizing`]), read as a stream ([`crate::trajectory`]).
+//! ([`crate::sizing`]), read as a stream ([`dynamics_identification::trajectory`]).
 
 use super::eval::{joints, settings, usage};
 use super::{load, Failure};
@@ -10,9 +10,9 @@ use crate::format::unsigned_zero;
 use crate::plot;
 use crate::sizing::{self, Sizer, TERMS};
 use crate::terms::TermsTape;
-use crate::trajectory;
 use dynamics_codegen::model::{JointKind, Robot};
 use dynamics_codegen::numeric::Numeric;
+use dynamics_identification::trajectory;
 use serde_json::json;
 use std::fmt::Write as _;
 use std::io::{BufReader, BufWriter};

@@ -23,8 +23,8 @@
 //! [`ROUND_OFF`] of the largest entry of the link's pseudo-inertia is zero, with `c = 0` and
 //! `I_c = I_o` (J ⪰ 0 bounds `|h|² ≤ m tr Σ_o`: such a link's `h` is round-off too).
 
-use super::pseudo_inertia::{eigen, pseudo_inertia};
 use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_identification::identify::pseudo_inertia::{eigen, pseudo_inertia};
 use toml_edit::{value, Array, DocumentMut};
 
 /// A value below this fraction of the quantities it is computed from is round-off of zero.
