@@ -13,9 +13,8 @@
 //! series' own), the file a controller replays and `identify` reads once the measured torques
 //! are appended; the report gives the condition number reached, the limits and the method.
 
-use super::eval::{settings, usage};
-use super::identify::robot_failure;
-use super::{load, Failure};
+use super::values::settings;
+use super::{load, robot_failure, usage, Failure};
 use crate::args::{Excite, Numbers};
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::report::excite::Report;

@@ -38,9 +38,8 @@
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
 
-use super::eval::{settings, usage};
-use super::size::write_svg;
-use super::{load, Failure};
+use super::values::settings;
+use super::{load, robot_failure, usage, write_svg, Failure};
 use crate::args::Identify;
 use crate::description;
 use crate::plot::Envelope;
@@ -135,14 +134,6 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     } else {
         report.text()
     })
-}
-
-/// The error of a robot whose regressor cannot be had, from the description file at `path`.
-pub(super) fn robot_failure(path: &str, e: Error) -> Failure {
-    match e {
-        Error::StructFields => Failure::File(format!("{path}: {e}")),
-        e => Failure::File(e.to_string()),
-    }
 }
 
 /// The torques the estimate predicts for `source`, drawn against the measured ones into the

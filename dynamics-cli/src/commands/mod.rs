@@ -1,5 +1,6 @@
-//! One module per subcommand; what they share: reading the description file and the names the
-//! generated code uses.
+//! One module per subcommand; what they share: reading the description file, the names the
+//! generated code uses, usage errors, writing a figure ([`values`]: the options' values checked
+//! against the robot).
 
 mod emit;
 mod eval;
@@ -10,8 +11,10 @@ mod simulate;
 mod simulate_batch;
 mod size;
 mod stats;
+mod values;
 
 use crate::args::{Cli, Command, RobotFile};
+use crate::plot;
 use clap::error::ErrorKind;
 use clap::CommandFactory;
 use dynamics_codegen::front;
@@ -21,6 +24,7 @@ use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::{Equations, Loaded, Source};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
+use std::io::BufWriter;
 
 pub use emit::{c_header, CHeader};
 
@@ -123,7 +127,7 @@ fn simplification(
                     let option = format!("--{}", key.replace('_', "-"));
                     message = message.replace(&format!("`{key}`"), &option);
                 }
-                eval::usage(command, &message)
+                usage(command, &message)
             }
             None => {
                 let lines: Vec<String> = problems.into_iter().map(|p| p.message).collect();
@@ -151,4 +155,32 @@ fn field_idents(eq: &Equations, path: &str) -> Result<Vec<syn::Ident>, Failure> 
 
 fn self_fields(idents: &[syn::Ident]) -> Vec<TokenStream> {
     idents.iter().map(|i| quote!(self.#i)).collect()
+}
+
+/// A usage error of `command` found once the robot is known, reported as clap reports its own.
+pub(crate) fn usage(command: &str, message: &str) -> Failure {
+    let mut cli = Cli::command();
+    cli.build();
+    let error = match cli.find_subcommand_mut(command) {
+        Some(eval) => eval.error(ErrorKind::ValueValidation, message),
+        None => cli.error(ErrorKind::ValueValidation, message),
+    };
+    Failure::Usage(error)
+}
+
+/// Writes `figure` as SVG to the file at `path`.
+pub(super) fn write_svg(path: &str, figure: &plot::Figure<'_>) -> Result<(), Failure> {
+    let failed = |e: std::io::Error| Failure::File(format!("{path}: {e}"));
+    let file = std::fs::File::create(path).map_err(failed)?;
+    let mut out = BufWriter::new(file);
+    plot::write_svg(&mut out, figure).map_err(failed)?;
+    std::io::Write::flush(&mut out).map_err(failed)
+}
+
+/// The error of a robot whose regressor cannot be had, from the description file at `path`.
+fn robot_failure(path: &str, e: dynamics_identification::Error) -> Failure {
+    match e {
+        dynamics_identification::Error::StructFields => Failure::File(format!("{path}: {e}")),
+        e => Failure::File(e.to_string()),
+    }
 }

@@ -18,7 +18,8 @@
 //! (`joint_tape`); a state whose mass matrix stops being positive definite, or whose motion
 //! diverges, ends with non-finite values, reported as such.
 
-use super::eval::{joints, settings, usage};
+use super::usage;
+use super::values::{joints, settings};
 use super::{load, Failure};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
