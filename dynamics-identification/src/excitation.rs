@@ -14,6 +14,17 @@ pub struct Motion {
     pub rate: f64,
 }
 
+impl Default for Motion {
+    /// `dynamics excite`'s: a period of 10 s, 5 harmonics, 100 samples a second.
+    fn default() -> Motion {
+        Motion {
+            period: 10.0,
+            harmonics: 5,
+            rate: 100.0,
+        }
+    }
+}
+
 impl Motion {
     /// The fewest samples per period: eight per period of the highest harmonic.
     pub const SAMPLES_PER_HARMONIC: usize = 8;
@@ -66,6 +77,14 @@ impl Excited {
             .iter()
             .map(|s| self.grid.state(s, k))
             .collect()
+    }
+
+    /// The time of sample `k`, in s: whole periods exactly, then the steps within one (no
+    /// drift over many periods).
+    #[must_use]
+    pub fn time(&self, k: usize) -> f64 {
+        let (m, period) = (self.grid.samples(), self.grid.period);
+        (k / m) as f64 * period + (k % m) as f64 * period / m as f64
     }
 }
 
