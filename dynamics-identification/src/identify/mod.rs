@@ -8,7 +8,7 @@
 //!   filtered source;
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
-//!   standard deviations, condition number ([`singular`]);
+//!   standard deviations, condition number ([`crate::linear_algebra`]);
 //! * [`consistent`]: the physically consistent estimate beside it (each link's
 //!   [`pseudo_inertia`] positive semidefinite);
 //! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others.
@@ -25,5 +25,4 @@ pub mod predict;
 pub mod pseudo_inertia;
 pub mod rank;
 pub mod rows;
-pub mod singular;
 pub mod source;

@@ -12,7 +12,7 @@
 //! left out first. Columns are taken in the model's order, so that of a dependent group the
 //! later ones are named.
 
-use super::householder::back_substitute;
+use crate::linear_algebra::back_substitute;
 
 /// A parameter the data cannot identify.
 #[derive(Clone, Debug, PartialEq)]
