@@ -5,7 +5,7 @@ use crate::identify::base::Standard;
 use crate::identify::consistent::{consistent, Consistent, Problem};
 use crate::identify::estimate::{estimate, Estimate, ITERATIONS};
 use crate::identify::measured::Measured;
-use crate::identify::predict::Prediction;
+use crate::identify::predict::{EachSample, Prediction};
 use crate::identify::rows::each_row;
 use crate::identify::source::Source;
 use crate::{Error, Regressor};
@@ -86,7 +86,7 @@ pub fn predict(
     regressor: &Regressor,
     samples: &Source,
     estimate: &Estimate,
-    each: Option<&mut dyn FnMut(f64, &[f64], &[f64])>,
+    each: Option<EachSample<'_>>,
 ) -> Result<Prediction, Error> {
     crate::identify::predict::predict(
         regressor.model(),

@@ -47,8 +47,9 @@ use crate::report::identify::Report;
 use crate::report::identify_figure as figure;
 use crate::sizing::unit;
 use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_identification::identify::consistent::Consistent;
 use dynamics_identification::identify::predict::Prediction;
-use dynamics_identification::{identify, predict, Error, Options, Regressor, Samples};
+use dynamics_identification::{identify, predict, Error, Identified, Options, Regressor, Samples};
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
@@ -67,21 +68,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         Error::Consistent(e) => Failure::File(format!("{}: {e}", args.csv)),
         e => Failure::File(e.to_string()),
     })?;
-    let consistent = match &identified.consistent {
-        Some((standard, found)) => {
-            if let Some(path) = &args.description_out {
-                write_description(
-                    &args.robot.path,
-                    path,
-                    &standard.parameters,
-                    &found.standard,
-                )?;
-            }
-            let names = standard.parameters.iter().map(|p| p.name()).collect();
-            Some((found, names))
-        }
-        None => None,
-    };
+    let consistent = consistent(args, &identified)?;
     let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
     let figure_of = |path: &str, what: &str, source: &Samples| -> Result<Prediction, Failure> {
         let title = format!("{}: {what}", robot.name);
@@ -134,6 +121,27 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     } else {
         report.text()
     })
+}
+
+/// The consistent estimate, if asked for, with its standard parameters' names; the description
+/// rewritten with it if asked for.
+fn consistent<'i>(
+    args: &Identify,
+    identified: &'i Identified,
+) -> Result<Option<(&'i Consistent, Vec<String>)>, Failure> {
+    let Some((standard, found)) = &identified.consistent else {
+        return Ok(None);
+    };
+    if let Some(path) = &args.description_out {
+        write_description(
+            &args.robot.path,
+            path,
+            &standard.parameters,
+            &found.standard,
+        )?;
+    }
+    let names = standard.parameters.iter().map(|p| p.name()).collect();
+    Ok(Some((found, names)))
 }
 
 /// The torques the estimate predicts for `source`, drawn against the measured ones into the

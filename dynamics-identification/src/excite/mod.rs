@@ -4,7 +4,8 @@
 //!
 //! * [`fourier`]: the series, its derivatives, and its scaling into the limits;
 //! * [`limits`]: each joint's limits, from the options, a URDF or the defaults;
-//! * [`condition`]: the condition number of the stacked `Y_B` over samples ([`crate::linear_algebra`]);
+//! * [`condition`]: the condition number of the stacked `Y_B` over samples
+//!   ([`crate::linear_algebra`]);
 //! * [`search`]: random restarts, then a compass search, within a budget of evaluations;
 //! * [`design`]: the problem put together: the coefficients searched, the motion found.
 

@@ -1,5 +1,6 @@
 //! System identification: the estimate of a model linear in its parameters,
-//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`, [`crate::identify()`]).
+//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`,
+//! [`crate::identify()`]).
 //!
 //! * [`model`]: the regressor of a robot's graph, evaluated at a sample;
 //! * [`base`]: that model for a robot's base parameters;

@@ -15,6 +15,9 @@ use super::rows::{each_row, Springs};
 use super::source::Source;
 use crate::Error;
 
+/// Told each sample's time, measured torques and predicted torques (for a figure).
+pub type EachSample<'a> = &'a mut dyn FnMut(f64, &[f64], &[f64]);
+
 /// The prediction's errors over a file.
 #[derive(Clone, Debug)]
 pub struct Prediction {
@@ -34,7 +37,7 @@ pub fn predict(
     source: &Source,
     springs: &Springs,
     estimate: &Estimate,
-    mut each: Option<&mut dyn FnMut(f64, &[f64], &[f64])>,
+    mut each: Option<EachSample<'_>>,
 ) -> Result<Prediction, Error> {
     let n = model.joints();
     let pi: Vec<f64> = estimate
