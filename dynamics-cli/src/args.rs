@@ -258,7 +258,7 @@ impl Identify {
     /// How many times the weights may be re-estimated (`--iterate-weights`).
     #[must_use]
     pub fn weight_iterations(&self) -> usize {
-        crate::identify::estimate::ITERATIONS * usize::from(self.iterate_weights)
+        dynamics_identification::identify::estimate::ITERATIONS * usize::from(self.iterate_weights)
     }
 }
 

@@ -27,15 +27,12 @@
 mod args;
 mod budget;
 mod commands;
-mod excite;
+mod description;
 mod format;
-mod identify;
-mod joint_tape;
-mod lanes;
 mod plot;
+mod report;
 mod sizing;
 mod terms;
-mod trajectory;
 
 use clap::Parser;
 use commands::Failure;

@@ -5,6 +5,7 @@
 //! merge in pairs and the width doubles. Memory is bounded whatever the length of the input, and
 //! a line drawn through each bucket's minimum and maximum shows every peak of the full series.
 
+pub use dynamics_identification::text::number;
 use std::fmt::Write as _;
 use std::io::{self, Write};
 
@@ -283,22 +284,6 @@ fn draw_panel(
         )?;
     }
     Ok(())
-}
-
-/// Four significant digits, without exponent for everyday magnitudes.
-pub fn number(v: f64) -> String {
-    let v = if v.abs() < 1e-12 { 0.0 } else { v };
-    if v != 0.0 && (v.abs() >= 1e5 || v.abs() < 1e-3) {
-        format!("{v:.2e}")
-    } else {
-        let magnitude = if v == 0.0 {
-            0
-        } else {
-            v.abs().log10().floor() as i32
-        };
-        let digits = (3 - magnitude).clamp(0, 4);
-        format!("{v:.*}", digits as usize)
-    }
 }
 
 /// `0.7500` as `0.75`.

@@ -5,11 +5,11 @@
 //! The RMS is over time, by the trapezoidal rule on `τ²` (samples need not be evenly spaced);
 //! each peak is the sample of largest magnitude. Samples are consumed one at a time.
 
-use crate::lanes::LANES;
 use crate::plot::{Envelope, Figure, Line, Panel};
 use crate::terms::{At, Terms, TermsTape};
-use crate::trajectory::Sample;
 use dynamics_codegen::model::JointKind;
+use dynamics_identification::lanes::LANES;
+use dynamics_identification::trajectory::Sample;
 
 /// The terms of τ, in the order [`Terms`] lists them.
 pub const TERMS: [(&str, &str); 5] = [
@@ -251,8 +251,8 @@ fn envelope_is_zero(envelope: &Envelope, series: usize) -> bool {
 mod tests {
     use super::Sizer;
     use crate::terms::{At, TermsTape};
-    use crate::trajectory::Sample;
     use dynamics_codegen::{load, Source};
+    use dynamics_identification::trajectory::Sample;
     use serde_json::Value;
 
     fn root() -> std::path::PathBuf {

@@ -4,10 +4,11 @@
 //! joint viscous, Coulomb and offset friction, identified with the links' parameters: 64 base
 //! parameters. Otherwise as `identify_puma560`: an exciting motion, torques simulated by the
 //! generated inverse dynamics with 1 % noise, the estimates beside the truth, another motion's
-//! torques predicted by the command and plotted, and by the generated `base_regressor`.
+//! torques predicted by the library, and by the generated `base_regressor`.
 //!
 //! Run with `cargo run --release -p dynamics-identification-examples --example identify_panda`.
 
+use dynamics_codegen::{front, Source};
 use dynamics_identification_examples::example;
 use dynamics_runtime::Dynamics;
 
@@ -23,6 +24,13 @@ struct Panda;
 
 fn main() {
     let robot = concat!(env!("CARGO_MANIFEST_DIR"), "/../../robots/urdf/panda.urdf");
-    let words = [robot, "--base", "panda_link0", "--tip", "panda_hand"];
-    example::<_, 7, 64>(&Panda, &words, "panda");
+    let chain = front::Chain {
+        base: Some("panda_link0"),
+        tip: Some("panda_hand"),
+    };
+    let source = Source {
+        chain,
+        ..Source::file(robot)
+    };
+    example::<_, 7, 64>(&Panda, source, "panda");
 }

@@ -13,27 +13,19 @@
 //! series' own), the file a controller replays and `identify` reads once the measured torques
 //! are appended; the report gives the condition number reached, the limits and the method.
 
-use super::eval::{settings, usage};
-use super::{base_parameters, load, Failure};
+use super::values::settings;
+use super::{load, robot_failure, usage, Failure};
 use crate::args::{Excite, Numbers};
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
-use crate::excite::design::{Problem, SEARCH_SAMPLES};
-use crate::excite::fourier::{Grid, Limits, Series};
-use crate::excite::limits::{joint_limits, Asked};
-use crate::excite::report::Report;
-use crate::identify::base;
-use crate::identify::model::LinearModel;
-use dynamics_codegen::derive;
+use crate::report::excite::Report;
 use dynamics_codegen::front::{self, Limit};
 use dynamics_codegen::model::JointKind;
+use dynamics_identification::excite::design::{Problem, SEARCH_SAMPLES};
+use dynamics_identification::excite::fourier::{Grid, Series};
+use dynamics_identification::excite::limits::{joint_limits, Asked};
+use dynamics_identification::{Error, Motion, Regressor};
 use std::io::{BufWriter, Write};
 use std::time::Instant;
-
-/// The fewest samples per period: eight per period of the highest harmonic.
-const SAMPLES_PER_HARMONIC: f64 = 8.0;
-
-/// The most samples per period: its table of sines and cosines is held (16 bytes a sample).
-const MAX_SAMPLES: f64 = 1e7;
 
 /// The most samples of the regressor a run evaluates without `--no-limits`: those of the
 /// search's evaluations and of the report's condition numbers.
@@ -43,16 +35,22 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     let started = Instant::now();
     let robot = load(&args.robot)?;
     let fields = settings("excite", &robot, &args.set)?;
-    let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
-    let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;
-    let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
+    let regressor = Regressor::new(&robot, joint_columns, fields)
+        .map_err(|e| robot_failure(&args.robot.path, e))?;
     let urdf = urdf_limits(args)?;
     let list = |o: &Option<Numbers>| o.as_ref().map(|Numbers(v)| v.clone());
     let lists = [&args.q_min, &args.q_max, &args.qd_max, &args.qdd_max].map(list);
     let asked: Asked = [0, 1, 2, 3].map(|k| lists[k].as_deref());
-    let limits = joint_limits(&robot, urdf.as_deref(), asked).map_err(|e| usage("excite", &e))?;
-    let problem = problem(args, &model, limits.iter().map(|l| l.limits).collect())?;
+    let limits = joint_limits(&robot, urdf.as_deref(), asked).map_err(setting)?;
+    let motion = Motion {
+        period: args.period,
+        harmonics: args.harmonics as usize,
+        rate: args.rate,
+    };
+    let problem = motion
+        .problem(&regressor, limits.iter().map(|l| l.limits).collect())
+        .map_err(setting)?;
     check_cost(args, &problem, robot.joints.len())?;
     let evaluations = args.evaluations as f64;
     let mut progress = Progress::new("dynamics excite", "evaluations", evaluations);
@@ -60,7 +58,7 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
         progress.update(done as f64);
     });
     if design.series.is_empty() {
-        return Err(Failure::File("the search found no motion".into()));
+        return Err(Failure::File(Error::NoMotion.to_string()));
     }
     write_trajectory(args.csv.as_deref(), &problem, &design.series, args.periods)?;
     let units = robot
@@ -73,7 +71,7 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
         .collect();
     let report = Report {
         robot: &robot.name,
-        model: &base::describe(&joint_columns),
+        model: &regressor.joint_terms(),
         problem: &problem,
         limits: &limits,
         design: &design,
@@ -96,29 +94,9 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     }
 }
 
-/// The search's problem: the samples of a period (`--period × --rate`) checked.
-fn problem<'m>(
-    args: &Excite,
-    model: &'m LinearModel,
-    limits: Vec<Limits>,
-) -> Result<Problem<'m>, Failure> {
-    let harmonics = args.harmonics as usize;
-    let samples = (args.period * args.rate).round();
-    let fewest = SAMPLES_PER_HARMONIC * harmonics as f64;
-    if !(fewest..=MAX_SAMPLES).contains(&samples) {
-        return Err(usage(
-            "excite",
-            &format!(
-                "--period × --rate: {samples} samples per period; between {fewest} (eight per \
-                 period of the highest harmonic) and 10⁷"
-            ),
-        ));
-    }
-    Ok(Problem {
-        model,
-        grid: Grid::new(args.period, harmonics, samples as usize),
-        limits,
-    })
+/// An option's value refused.
+fn setting(e: Error) -> Failure {
+    usage("excite", &e.to_string())
 }
 
 /// The run's cost: the samples of the regressor its search and its report evaluate, and the
@@ -140,7 +118,7 @@ fn check_cost(args: &Excite, problem: &Problem<'_>, joints: usize) -> Result<(),
     }
     .check(args.limits.no_limits, || {
         // One evaluation and a report over the fewest samples a period may have.
-        let fewest = SAMPLES_PER_HARMONIC as usize * problem.grid.harmonics;
+        let fewest = Motion::SAMPLES_PER_HARMONIC * problem.grid.harmonics;
         let small = Problem {
             grid: Grid::new(args.period, problem.grid.harmonics, fewest),
             limits: problem.limits.clone(),

@@ -24,7 +24,7 @@
 //!   and `100 σ_π̂k / |π̂_k|` %; the condition number `σ_max / σ_min` of the weighted `Y_w`.
 //!
 //! With `--cutoff`, q is low-passed before differentiation, and τ and the regressor's columns
-//! alike before they are used, one sample in d kept (`identify::source`, `identify::decimate`).
+//! alike before they are used, one sample in d kept (`dynamics_identification::identify::source`, `::decimate`).
 //!
 //! `--validate FILE`: the torques of other measurements (read, filtered and with springs
 //! subtracted as the fit's) predicted by the estimate, `τ̂ = Y π̂`, and the RMS of
@@ -38,60 +38,47 @@
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
 
-use super::eval::{settings, usage};
-use super::size::write_svg;
-use super::{base_parameters, load, Failure};
+use super::values::settings;
+use super::{load, robot_failure, usage, write_svg, Failure};
 use crate::args::Identify;
-use crate::identify::base;
-use crate::identify::consistent::{consistent, Consistent, Problem};
-use crate::identify::description;
-use crate::identify::estimate::estimate;
-use crate::identify::figure;
-use crate::identify::measured::Measured;
-use crate::identify::model::LinearModel;
-use crate::identify::predict::{predict, Prediction};
-use crate::identify::report::Report;
-use crate::identify::rows::{each_row, Springs};
-use crate::identify::source::Source;
+use crate::description;
 use crate::plot::Envelope;
+use crate::report::identify::Report;
+use crate::report::identify_figure as figure;
 use crate::sizing::unit;
-use crate::trajectory::Columns;
-use dynamics_codegen::derive;
-use dynamics_codegen::model::Robot;
 use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_identification::identify::consistent::Consistent;
+use dynamics_identification::identify::predict::Prediction;
+use dynamics_identification::{identify, predict, Error, Identified, Options, Regressor, Samples};
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let fields = settings("identify", &robot, &args.set)?;
-    let mut eq = derive(&robot);
     let joint_columns = args.joint_terms.columns(&robot);
-    let base = base_parameters(&mut eq, &robot, &args.robot, &joint_columns)?;
-    let model = LinearModel::new(&base::entries(&eq, &base, &fields)).map_err(Failure::File)?;
-    let springs = springs(&robot, &robot.fields(), &fields);
-    let columns = Columns {
-        joints: model.joints(),
-        torques: true,
+    let regressor = Regressor::new(&robot, joint_columns, fields)
+        .map_err(|e| robot_failure(&args.robot.path, e))?;
+    let source = open(&args.csv, &regressor, args.cutoff)?;
+    let options = Options {
+        tolerance: args.tolerance,
+        weight_iterations: args.weight_iterations(),
+        consistent: args.consistent,
     };
-    let source = open(&args.csv, columns, args.cutoff)?;
-    let (mut measured, method, span) = measure(&model, &source, &springs)?;
-    let estimate = estimate(&mut measured, args.tolerance, args.weight_iterations())
-        .map_err(|e| Failure::File(format!("{}: {e}{}", args.csv, kept(&source))))?;
-    let consistent = args
-        .consistent
-        .then(|| {
-            let standard = base::standard(&eq, &base, &joint_columns, &fields);
-            consistent_estimate(args, &mut measured, &estimate, &standard)
-        })
-        .transpose()?;
+    let identified = identify(&regressor, &source, &options).map_err(|e| match e {
+        Error::Estimate(e) => Failure::File(format!("{}: {e}{}", args.csv, kept(&source))),
+        Error::Consistent(e) => Failure::File(format!("{}: {e}", args.csv)),
+        e => Failure::File(e.to_string()),
+    })?;
+    let consistent = consistent(args, &identified)?;
     let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
-    let figure_of = |path: &str, what: &str, source: &Source| -> Result<Prediction, Failure> {
-        let mut envelope = Envelope::new(figure::SERIES * model.joints());
-        let prediction = predict(&model, source, &springs, &estimate, Some(&mut envelope))
-            .map_err(Failure::File)?;
+    let figure_of = |path: &str, what: &str, source: &Samples| -> Result<Prediction, Failure> {
         let title = format!("{}: {what}", robot.name);
-        let filtered = source.filter().is_some();
-        write_svg(path, &figure::figure(title, &units, filtered, &envelope))?;
-        Ok(prediction)
+        figure_file(
+            &regressor,
+            source,
+            &identified.estimate,
+            path,
+            (title, &units),
+        )
     };
     if let Some(path) = &args.plot {
         figure_of(path, "measured and predicted joint torques", &source)?;
@@ -99,12 +86,11 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     let validation = match &args.validate {
         None => None,
         Some(csv) => {
-            let other = open(csv, columns, args.cutoff)?;
+            let other = open(csv, &regressor, args.cutoff)?;
             let prediction = match &args.validate_plot {
                 Some(path) => figure_of(path, &format!("torques of {csv} predicted"), &other)?,
-                None => {
-                    predict(&model, &other, &springs, &estimate, None).map_err(Failure::File)?
-                }
+                None => predict(&regressor, &other, &identified.estimate, None)
+                    .map_err(|e| Failure::File(e.to_string()))?,
             };
             Some((csv.as_str(), prediction))
         }
@@ -112,22 +98,22 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     let description = format!(
         "the base parameters of the links and the joint terms: {} (their groupings: \
          `dynamics inspect --base-parameters` with the same options)",
-        base::describe(&joint_columns)
+        regressor.joint_terms()
     );
     let report = Report {
         robot: &robot.name,
         csv: &args.csv,
-        method,
+        method: identified.method,
         filter: source.filter(),
         model: &description,
-        springs: springs.iter().any(Option::is_some),
+        springs: regressor.springs().iter().any(Option::is_some),
         tolerance: args.tolerance,
-        start: span.0,
-        end: span.1,
+        start: identified.span.0,
+        end: identified.span.1,
         units,
-        linear: &model,
-        estimate: &estimate,
-        consistent: consistent.as_ref(),
+        linear: regressor.model(),
+        estimate: &identified.estimate,
+        consistent,
         validation,
     };
     Ok(if args.json {
@@ -137,29 +123,15 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     })
 }
 
-/// The consistent estimate, with the standard parameters' names; the description rewritten
-/// with it if asked for.
-fn consistent_estimate(
+/// The consistent estimate, if asked for, with its standard parameters' names; the description
+/// rewritten with it if asked for.
+fn consistent<'i>(
     args: &Identify,
-    measured: &mut Measured,
-    estimate: &crate::identify::estimate::Estimate,
-    standard: &base::Standard,
-) -> Result<(Consistent, Vec<String>), Failure> {
-    let links = measured.joints.len();
-    // Offset friction may have either sign; the other joint terms dissipate or add inertia.
-    let joint_terms: Vec<bool> = standard.parameters[10 * links..]
-        .iter()
-        .map(|p| !matches!(p, Parameter::Joint { index: 3, .. }))
-        .collect();
-    let problem = Problem {
-        links,
-        joint_terms: &joint_terms,
-        map: &standard.map,
-        described: &standard.described,
+    identified: &'i Identified,
+) -> Result<Option<(&'i Consistent, Vec<String>)>, Failure> {
+    let Some((standard, found)) = &identified.consistent else {
+        return Ok(None);
     };
-    let names = standard.parameters.iter().map(|p| p.name()).collect();
-    let found = consistent(measured, estimate, &problem)
-        .map_err(|e| Failure::File(format!("{}: {e}", args.csv)))?;
     if let Some(path) = &args.description_out {
         write_description(
             &args.robot.path,
@@ -168,9 +140,32 @@ fn consistent_estimate(
             &found.standard,
         )?;
     }
-    Ok((found, names))
+    let names = standard.parameters.iter().map(|p| p.name()).collect();
+    Ok(Some((found, names)))
 }
 
+/// The torques the estimate predicts for `source`, drawn against the measured ones into the
+/// SVG file `path`, titled `title`, for joints of these `units`.
+fn figure_file(
+    regressor: &Regressor,
+    source: &Samples,
+    estimate: &dynamics_identification::identify::estimate::Estimate,
+    path: &str,
+    (title, units): (String, &[&str]),
+) -> Result<Prediction, Failure> {
+    let n = regressor.model().joints();
+    let mut envelope = Envelope::new(figure::SERIES * n);
+    let mut values = vec![0.0; figure::SERIES * n];
+    let mut each = |t: f64, measured: &[f64], predicted: &[f64]| {
+        figure::values(measured, predicted, &mut values);
+        envelope.push(t, &values);
+    };
+    let prediction = predict(regressor, source, estimate, Some(&mut each))
+        .map_err(|e| Failure::File(e.to_string()))?;
+    let filtered = source.filter().is_some();
+    write_svg(path, &figure::figure(title, units, filtered, &envelope))?;
+    Ok(prediction)
+}
 /// The description `robot` (TOML) rewritten with the standard parameters `values`, to `path`.
 fn write_description(
     robot: &str,
@@ -190,47 +185,8 @@ fn write_description(
     std::fs::write(path, out).map_err(|e| Failure::File(format!("{path}: {e}")))
 }
 
-/// Per joint, the description's spring `(k, rest)`, if any, at these fields' values.
-fn springs(robot: &Robot, names: &[String], values: &[f64]) -> Vec<Option<(f64, f64)>> {
-    let field = |f: &str| names.iter().position(|n| n == f).map(|k| values[k]);
-    robot
-        .joints
-        .iter()
-        .map(|j| {
-            let spring = j.link.spring.as_ref()?;
-            // Every field has a value (`parameters` checked), and a spring has no joint variable.
-            let value = |v: &dynamics_codegen::model::Value| v.eval(&field).unwrap_or(f64::NAN);
-            Some((value(&spring.stiffness), value(&spring.rest)))
-        })
-        .collect()
-}
-
-/// One pass over the samples into the joints' factors; how q̇ and q̈ were had, and the time
-/// span.
-fn measure(
-    model: &LinearModel,
-    source: &Source,
-    springs: &Springs,
-) -> Result<(Measured, &'static str, (f64, f64)), Failure> {
-    let mut measured = Measured::new(model.columns.clone(), model.names.len());
-    let mut span = (f64::NAN, f64::NAN);
-    let method = each_row(model, source, springs, |t, entries, torques| {
-        if span.0.is_nan() {
-            span.0 = t;
-        }
-        span.1 = t;
-        let mut start = 0;
-        for (i, columns) in model.columns.iter().enumerate() {
-            measured.push(i, &entries[start..start + columns.len()], torques[i]);
-            start += columns.len();
-        }
-    })
-    .map_err(Failure::File)?;
-    Ok((measured, method, span))
-}
-
 /// What a filter kept of the samples, for an estimate the samples could not give.
-fn kept(source: &Source) -> String {
+fn kept(source: &Samples) -> String {
     source.filter().map_or(String::new(), |f| {
         format!(
             " (--cutoff {} keeps one sample in {}: {} of the {} samples)",
@@ -242,13 +198,10 @@ fn kept(source: &Source) -> String {
     })
 }
 
-/// The samples of `path`, filtered at `cutoff` if given.
-fn open(path: &str, columns: Columns, cutoff: Option<f64>) -> Result<Source, Failure> {
-    Source::open(path, columns, cutoff).map_err(|e| {
-        if e.starts_with("--cutoff") {
-            usage("identify", &e)
-        } else {
-            Failure::File(e)
-        }
+/// The samples of `path` for `regressor`, filtered at `cutoff` if given.
+fn open(path: &str, regressor: &Regressor, cutoff: Option<f64>) -> Result<Samples, Failure> {
+    Samples::open(path, regressor.columns(), cutoff).map_err(|e| match e {
+        Error::Setting(e) => usage("identify", &e),
+        e => Failure::File(e.to_string()),
     })
 }

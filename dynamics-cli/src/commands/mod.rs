@@ -1,5 +1,6 @@
-//! One module per subcommand; what they share: reading the description file and the names the
-//! generated code uses.
+//! One module per subcommand; what they share: reading the description file, the names the
+//! generated code uses, usage errors, writing a figure ([`values`]: the options' values checked
+//! against the robot).
 
 mod emit;
 mod eval;
@@ -10,17 +11,17 @@ mod simulate;
 mod simulate_batch;
 mod size;
 mod stats;
+mod values;
 
 use crate::args::{Cli, Command, RobotFile};
+use crate::plot;
 use clap::error::ErrorKind;
 use clap::CommandFactory;
 use dynamics_codegen::model::{Robot, Simplification};
-use dynamics_codegen::{
-    rust_field, rust_type, BaseParameters, Chain, Equations, JointColumns, Loaded, Source,
-    SIMPLIFY_KEYS,
-};
+use dynamics_codegen::{rust_field, rust_type, Chain, Equations, Loaded, Source, SIMPLIFY_KEYS};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
+use std::io::BufWriter;
 
 /// Why a command failed.
 pub enum Failure {
@@ -44,20 +45,6 @@ pub fn run(command: &Command) -> Result<String, Failure> {
         Command::Identify(args) => identify::run(args),
         Command::Excite(args) => excite::run(args),
     }
-}
-
-/// The base parameters of `robot` with the joint columns asked for (tracing its regressor into
-/// `eq`), or the error of a robot whose lengths or angles are struct fields.
-fn base_parameters(
-    eq: &mut Equations,
-    robot: &Robot,
-    file: &RobotFile,
-    joint_columns: &[JointColumns],
-) -> Result<BaseParameters, Failure> {
-    let message = "the base parameters need the robot's lengths and angles as numbers, not \
-                   struct fields";
-    eq.base_parameters(robot, joint_columns)
-        .ok_or_else(|| Failure::File(format!("{}: {message}", file.path)))
 }
 
 /// Reads and checks a description file as the derive does (values, then the physical checks
@@ -122,7 +109,7 @@ fn simplification(
                     let option = format!("--{}", key.replace('_', "-"));
                     message = message.replace(&format!("`{key}`"), &option);
                 }
-                eval::usage(command, &message)
+                usage(command, &message)
             }
             None => {
                 let lines: Vec<String> = problems.iter().map(ToString::to_string).collect();
@@ -150,4 +137,32 @@ fn field_idents(eq: &Equations, path: &str) -> Result<Vec<syn::Ident>, Failure> 
 
 fn self_fields(idents: &[syn::Ident]) -> Vec<TokenStream> {
     idents.iter().map(|i| quote!(self.#i)).collect()
+}
+
+/// A usage error of `command` found once the robot is known, reported as clap reports its own.
+pub(crate) fn usage(command: &str, message: &str) -> Failure {
+    let mut cli = Cli::command();
+    cli.build();
+    let error = match cli.find_subcommand_mut(command) {
+        Some(eval) => eval.error(ErrorKind::ValueValidation, message),
+        None => cli.error(ErrorKind::ValueValidation, message),
+    };
+    Failure::Usage(error)
+}
+
+/// Writes `figure` as SVG to the file at `path`.
+pub(super) fn write_svg(path: &str, figure: &plot::Figure<'_>) -> Result<(), Failure> {
+    let failed = |e: std::io::Error| Failure::File(format!("{path}: {e}"));
+    let file = std::fs::File::create(path).map_err(failed)?;
+    let mut out = BufWriter::new(file);
+    plot::write_svg(&mut out, figure).map_err(failed)?;
+    std::io::Write::flush(&mut out).map_err(failed)
+}
+
+/// The error of a robot whose regressor cannot be had, from the description file at `path`.
+fn robot_failure(path: &str, e: dynamics_identification::Error) -> Failure {
+    match e {
+        dynamics_identification::Error::StructFields => Failure::File(format!("{path}: {e}")),
+        e => Failure::File(e.to_string()),
+    }
 }

@@ -9,9 +9,9 @@
 //! `x' = x + h/6 (k₁ + 2k₂ + 2k₃ + k₄)`, `k₁ = f(x)`, `k₂ = f(x + h/2 k₁)`, `k₃ = f(x + h/2 k₂)`,
 //! `k₄ = f(x + h k₃)`.
 
-use super::eval::{joints, usage};
-use super::size::{numeric, write_svg};
+use super::values::{joints, numeric};
 use super::{load, Failure};
+use super::{usage, write_svg};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::plot::{Envelope, Figure, Line, Panel};

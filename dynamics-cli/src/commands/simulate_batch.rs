@@ -18,14 +18,15 @@
 //! (`joint_tape`); a state whose mass matrix stops being positive definite, or whose motion
 //! diverges, ends with non-finite values, reported as such.
 
-use super::eval::{joints, settings, usage};
+use super::usage;
+use super::values::{joints, settings};
 use super::{load, Failure};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
-use crate::joint_tape::{gather, JointTape, Work};
-use crate::lanes::{Four, LANES};
-use crate::trajectory::{self, Given, Sample};
 use dynamics_codegen::symbolic::TapeScalar;
+use dynamics_identification::joint_tape::{gather, JointTape, Work};
+use dynamics_identification::lanes::{Four, LANES};
+use dynamics_identification::trajectory::{self, Given, Sample};
 use std::io::{BufReader, BufWriter, Write};
 
 /// The most RK4 steps of a group of [`LANES`] states a batch takes without `--no-limits`: a

@@ -1,21 +1,21 @@
 //! `dynamics size ROBOT (--csv FILE | --from Q --to Q [--duration T] [--samples N])
 //! [--set NAME=VALUE].. [--svg FILE] [--json]`: actuator sizing along a trajectory
-//! ([`crate::sizing`]), read as a stream ([`crate::trajectory`]).
+//! ([`crate::sizing`]), read as a stream ([`dynamics_identification::trajectory`]).
 
-use super::eval::{joints, settings, usage};
+use super::values::{joints, settings};
 use super::{load, Failure};
+use super::{usage, write_svg};
 use crate::args::Size;
 use crate::budget::{time_per_unit, Cost, Progress};
 use crate::format::unsigned_zero;
 use crate::plot;
 use crate::sizing::{self, Sizer, TERMS};
 use crate::terms::TermsTape;
-use crate::trajectory;
-use dynamics_codegen::model::{JointKind, Robot};
-use dynamics_codegen::Numeric;
+use dynamics_codegen::model::JointKind;
+use dynamics_identification::trajectory;
 use serde_json::json;
 use std::fmt::Write as _;
-use std::io::{BufReader, BufWriter};
+use std::io::BufReader;
 
 /// Files from this size on report their progress on stderr.
 const LONG_INPUT: u64 = 1 << 20;
@@ -117,19 +117,6 @@ fn check_move(from: &[f64], to: &[f64], duration: f64) -> Result<(), Failure> {
     ))
 }
 
-/// The robot evaluated numerically, its parameters set by `--set`.
-pub(super) fn numeric(
-    robot: &Robot,
-    command: &str,
-    sets: &[crate::args::Setting],
-) -> Result<Numeric, Failure> {
-    let fields = robot.fields();
-    let values = settings(command, robot, sets)?;
-    let named: Vec<(&str, f64)> = fields.iter().map(String::as_str).zip(values).collect();
-    // Every field has a value: `parameters` checked.
-    Numeric::new(robot, &named).map_err(|e| Failure::File(format!("no value for `{}`", e.0)))
-}
-
 /// Streams the CSV file at `path` into `sizer`, with progress on stderr for a long file.
 /// How q̇ and q̈ were had.
 fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Failure> {
@@ -150,14 +137,6 @@ fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Fai
     trajectory::read_csv(BufReader::new(file), columns, |s| sizer.push(s), progress)
         .map(|(_, method)| method)
         .map_err(|e| Failure::File(format!("{path}: {e}")))
-}
-
-pub(super) fn write_svg(path: &str, figure: &plot::Figure<'_>) -> Result<(), Failure> {
-    let failed = |e: std::io::Error| Failure::File(format!("{path}: {e}"));
-    let file = std::fs::File::create(path).map_err(failed)?;
-    let mut out = BufWriter::new(file);
-    plot::write_svg(&mut out, figure).map_err(failed)?;
-    std::io::Write::flush(&mut out).map_err(failed)
 }
 
 /// The report as aligned columns; the terms as shares of τ at its peak (signed, summing to

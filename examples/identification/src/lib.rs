@@ -1,29 +1,39 @@
 //! What the identification examples share: excitation, measurement, identification and
 //! validation, end to end, for any robot the derive knows.
 //!
-//! 1. **Excite** (`dynamics excite`): a periodic motion within the joints' limits whose base
+//! 1. **Excite** ([`dynamics_identification::excite`](fn@dynamics_identification::excite)): a
+//!    periodic motion within the joints' limits whose base
 //!    regressor is well conditioned.
 //! 2. **Measure**: here simulated. A controller tracking the motion applies, up to its
 //!    tracking error, the inverse dynamics along it, `τ = M(q) q̈ + C(q, q̇) q̇ + g(q) + f(q̇)`,
 //!    evaluated by the derive's generated code; each joint's torque gets Gaussian noise of
 //!    standard deviation [`NOISE`] times that joint's RMS torque over the motion.
-//! 3. **Identify** (`dynamics identify`): the base parameters by weighted least squares, with
+//! 3. **Identify** ([`dynamics_identification::identify`](fn@dynamics_identification::identify)):
+//!    the base parameters by weighted least squares, with
 //!    standard deviations, beside the description's (the truth here, which the simulation used).
-//! 4. **Validate** (`dynamics identify --validate`): the torques of another motion (another
-//!    seed's, not optimised), measured likewise, predicted by the estimates; the RMS of the
-//!    prediction error is printed per joint, and plotted.
+//! 4. **Validate** ([`dynamics_identification::predict`]): the torques of another motion
+//!    (another seed's, not optimised), measured likewise, predicted by the estimates; the RMS of
+//!    the prediction error is printed per joint (`dynamics identify --validate-plot` draws it).
 //! 5. **Use**: the estimates loaded into the generated code (`base_parameters = true`): the
 //!    other motion's torques predicted again, `τ̂ = Y_B(q, q̇, q̈) π̂_B` by `base_regressor`,
 //!    as a controller would compute them; their errors are the validation's, to rounding (two
-//!    implementations of `Y_B`: the generated code and the command's tape).
+//!    implementations of `Y_B`: the generated code and the library's tape).
 //!
-//! The commands run in this process through `dynamics_cli::run`, the same code as the
-//! `dynamics` binary. Files go to a directory of the system's temporary directory.
+//! The library under `dynamics excite` and `dynamics identify`, `dynamics_identification`, is
+//! called directly. Files go to a directory of the system's temporary directory.
 
+use dynamics_codegen::front;
+use dynamics_codegen::trace::base_parameters::JointColumns;
+use dynamics_codegen::Source;
+use dynamics_identification::excite::limits::joint_limits;
+use dynamics_identification::identify::estimate::Estimate;
+use dynamics_identification::identify::predict::Prediction;
+use dynamics_identification::{excite, identify, predict, Excited, Motion, Options};
+use dynamics_identification::{Regressor, Samples};
 use dynamics_runtime::DynamicsBaseParameters;
-use serde_json::Value;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::time::Instant;
 
 /// The torque noise, as a fraction of each joint's RMS torque.
 pub const NOISE: f64 = 0.01;
@@ -35,12 +45,6 @@ pub const NOISE: f64 = 0.01;
 /// noise seen through the shared parameters, not the joint's own noise, so its rows are
 /// weighted thousands of times too little (`docs/excitation.md`).
 pub const PREDICTION: f64 = 0.05;
-
-/// Runs a `dynamics` command; what it prints. A failure is the example's failure.
-#[must_use]
-pub fn dynamics(words: &[&str]) -> String {
-    dynamics_cli::run(words).unwrap_or_else(|e| panic!("dynamics {}: {e}", words.join(" ")))
-}
 
 /// Normal deviates from a seed (xorshift64, Box-Muller).
 pub struct Normal(u64);
@@ -117,66 +121,79 @@ fn directory(name: &str) -> PathBuf {
     dir
 }
 
-/// The example end to end on `robot`, described to the commands by `robot_words` (the file and
-/// its options); `name` names its files. Panics if an estimate is more than five standard
-/// deviations from the truth, a joint's prediction error on the other motion more than
-/// [`PREDICTION`] of its RMS torque, or the generated code's predictions are not the command's.
-pub fn example<R, const N: usize, const B: usize>(robot: &R, robot_words: &[&str], name: &str)
+/// The search's evaluations for the motion to identify from, as `dynamics excite`'s default.
+const EVALUATIONS: usize = 3000;
+
+/// The periods of that motion written and measured.
+const PERIODS: usize = 3;
+
+/// The example end to end on `robot`, read from `source` by the library (its joint terms those
+/// its description gives); `name` names its files. Panics if an estimate is more than five
+/// standard deviations from the truth, a joint's prediction error on the other motion more than
+/// [`PREDICTION`] of its RMS torque, or the generated code's predictions are not the library's.
+pub fn example<R, const N: usize, const B: usize>(robot: &R, source: Source<'_>, name: &str)
 where
     R: DynamicsBaseParameters<N, B>,
 {
     let dir = directory(name);
-    let file = |f: &str| dir.join(f).to_string_lossy().into_owned();
-    let run = |words: &[&str]| {
-        let mut all = vec![words[0]];
-        all.extend(robot_words);
-        all.extend(&words[1..]);
-        dynamics(&all)
-    };
-    let (motion, other) = (file("excite.csv"), file("other.csv"));
-    excite_step(&run(&[
-        "excite",
-        "--periods",
-        "3",
-        "--csv",
-        &motion,
-        "--json",
-    ]));
+    let described = dynamics_codegen::load(&source)
+        .unwrap_or_else(|e| panic!("{}: {e:?}", source.path))
+        .robot;
+    let columns = described
+        .joints
+        .iter()
+        .map(JointColumns::described)
+        .collect();
+    let regressor = Regressor::new(&described, columns, Vec::new()).expect("the base regressor");
+    let urdf = source.is_urdf().then(|| {
+        let text = std::fs::read_to_string(source.path).expect("the URDF");
+        front::joint_limits(&text, source.chain).expect("the URDF's limits")
+    });
+    let limits: Vec<_> = joint_limits(&described, urdf.as_deref(), [None; 4])
+        .expect("the joints' limits")
+        .iter()
+        .map(|l| l.limits)
+        .collect();
+    let (motion, other) = (dir.join("excite.csv"), dir.join("other.csv"));
+    let started = Instant::now();
+    let form = Motion::default();
+    let excited = excite(&regressor, limits.clone(), &form, 1, EVALUATIONS, |_| {})
+        .expect("an exciting motion");
+    excite_step(&regressor, &excited, started.elapsed().as_secs_f64());
+    write_motion(&excited, PERIODS, &motion);
     // Another motion for the validation: another seed's first random guess.
-    run(&[
-        "excite",
-        "--seed",
-        "2",
-        "--evaluations",
-        "1",
-        "--csv",
-        &other,
-    ]);
-    let (measured, measured_other) = (file("measured.csv"), file("measured_other.csv"));
-    let sigma = measure(robot, Path::new(&motion), Path::new(&measured), 11);
-    measure(robot, Path::new(&other), Path::new(&measured_other), 12);
+    let guess = excite(&regressor, limits, &form, 2, 1, |_| {}).expect("another motion");
+    write_motion(&guess, 1, &other);
+    let (measured, measured_other) = (dir.join("measured.csv"), dir.join("measured_other.csv"));
+    let sigma = measure(robot, &motion, &measured, 11);
+    measure(robot, &other, &measured_other, 12);
     println!(
         "2. measure: the generated inverse dynamics along both motions, with noise of {} % of \
          each joint's RMS torque (σ = {})",
         100.0 * NOISE,
         list(&sigma)
     );
-    let svg = file("validation.svg");
-    let report = run(&[
-        "identify",
-        "--csv",
-        &measured,
-        "--validate",
+    let open = |path: &Path| {
+        Samples::open(&path.to_string_lossy(), regressor.columns(), None).expect("the samples")
+    };
+    let identified =
+        identify(&regressor, &open(&measured), &Options::default()).expect("an estimate");
+    let worst = estimates(&regressor, &identified.estimate);
+    let prediction = predict(
+        &regressor,
+        &open(&measured_other),
+        &identified.estimate,
+        None,
+    )
+    .expect("the predictions");
+    let relative = validation(&prediction);
+    use_step(
+        robot,
+        &regressor,
+        &identified.estimate,
+        &prediction,
         &measured_other,
-        "--validate-plot",
-        &svg,
-        "--json",
-    ]);
-    let report: Value = serde_json::from_str(&report).expect("JSON");
-    let worst = estimates(&report);
-    let relative = validation(&report);
-    println!("   measured against predicted torques of the other motion: {svg}");
-    use_step(robot, &report, Path::new(&measured_other));
+    );
     assert!(
         worst < 5.0,
         "an estimate {worst:.1} standard deviations off"
@@ -187,65 +204,99 @@ where
     );
 }
 
-/// Step 1: prints what `excite` reported (`json`).
-fn excite_step(json: &str) {
-    let excite: Value = serde_json::from_str(json).expect("JSON");
-    let number = |key: &str| excite[key].as_f64().unwrap_or(f64::NAN);
+/// Writes `periods` periods of the motion, and the first sample of the next (at rest, where the
+/// motion started), as `t,q..,qd..,qdd..` to `path`, as `dynamics excite --csv` does.
+fn write_motion(excited: &Excited, periods: usize, path: &Path) {
+    let n = excited.design.series.len();
+    let header: Vec<String> = ["q", "qd", "qdd"]
+        .iter()
+        .flat_map(|g| (1..=n).map(move |i| format!("{g}{i}")))
+        .collect();
+    let mut file = format!("t,{}\n", header.join(","));
+    for k in 0..=periods * excited.grid.samples() {
+        let states = excited.states(k);
+        let groups = [
+            states.iter().map(|s| s.q).collect::<Vec<_>>(),
+            states.iter().map(|s| s.qd).collect(),
+            states.iter().map(|s| s.qdd).collect(),
+        ];
+        let values: Vec<String> = groups.iter().flatten().map(f64::to_string).collect();
+        let _ = writeln!(file, "{},{}", excited.time(k), values.join(","));
+    }
+    std::fs::write(path, file).expect("write the motion");
+}
+
+/// Step 1: prints what the search found, in `seconds`.
+fn excite_step(regressor: &Regressor, excited: &Excited, seconds: f64) {
     println!(
-        "1. excite: {} base parameters; a motion of {} periods of {} s within the joints' \
-         limits; condition number {:.1} (the first guess's {:.1}), in {:.1} s",
-        excite["base_parameters"],
-        excite["periods"],
-        excite["period"],
-        number("condition_number"),
-        number("initial_condition_number"),
-        number("seconds"),
+        "1. excite: {} base parameters; a motion of {PERIODS} periods of {} s within the joints' \
+         limits; condition number {:.1} (the first guess's {:.1}), in {seconds:.1} s",
+        regressor.names().len(),
+        excited.grid.period,
+        excited.design.condition,
+        excited.design.initial_condition,
     );
 }
 
-/// Step 5: prints the generated code's prediction errors with the estimates on the file at
-/// `path`; panics where they are not the command's validation's.
-fn use_step<R, const N: usize, const B: usize>(robot: &R, report: &Value, path: &Path)
-where
+/// Step 5: prints the generated code's prediction errors with `estimate` on the file at `path`;
+/// panics where they are not the library's `prediction`'s.
+fn use_step<R, const N: usize, const B: usize>(
+    robot: &R,
+    regressor: &Regressor,
+    estimate: &Estimate,
+    prediction: &Prediction,
+    path: &Path,
+) where
     R: DynamicsBaseParameters<N, B>,
 {
-    let generated = use_estimates(robot, report, path);
+    let generated = use_estimates(robot, regressor, estimate, path);
     println!(
         "5. use: the estimates in the generated base_regressor, on the other motion: RMS error \
          per joint {}",
         list(&generated)
     );
-    let commands = &report["validation"]["joints"];
-    for (j, error) in generated.iter().enumerate() {
-        let validated = commands[j]["error_rms"].as_f64().unwrap_or(f64::NAN);
+    for (j, (error, validated)) in generated.iter().zip(&prediction.error_rms).enumerate() {
         assert!(
             (error - validated).abs() <= 1e-9 * validated,
-            "joint {}: {error} from the generated code, {validated} from identify",
+            "joint {}: {error} from the generated code, {validated} from the library",
             j + 1
         );
     }
 }
 
-/// The estimates of `report` as the generated code's `π̂_B`, and per joint the RMS error of
-/// `Y_B π̂_B` against the torques measured in the file at `path` (`t,q..,qd..,qdd..,tau..`).
+/// `estimate` as the generated code's `π̂_B`, and per joint the RMS error of `Y_B π̂_B` against
+/// the torques measured in the file at `path` (`t,q..,qd..,qdd..,tau..`).
 fn use_estimates<R, const N: usize, const B: usize>(
     robot: &R,
-    report: &Value,
+    regressor: &Regressor,
+    estimate: &Estimate,
     path: &Path,
 ) -> [f64; N]
 where
     R: DynamicsBaseParameters<N, B>,
 {
-    let parameters = report["parameters"].as_array().expect("parameters");
-    assert_eq!(parameters.len(), B, "every base parameter identified");
-    // The command's order is the generated code's: the description's values agree.
+    assert_eq!(estimate.values.len(), B, "every base parameter estimated");
+    assert!(
+        estimate.unidentified.is_empty(),
+        "every base parameter identified"
+    );
+    // The library's order is the generated code's: the description's values agree.
     let described = robot.base_parameters::<f64>();
-    let number = |p: &Value, key: &str| p[key].as_f64().unwrap_or(f64::NAN);
     let largest = described.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    for (p, d) in parameters.iter().zip(described) {
-        assert!((number(p, "described") - d).abs() <= 1e-12 * largest, "{p}");
+    for (k, (ours, theirs)) in regressor
+        .model()
+        .described
+        .iter()
+        .zip(described)
+        .enumerate()
+    {
+        let name = &regressor.names()[k];
+        assert!(
+            (ours - theirs).abs() <= 1e-12 * largest,
+            "{name}: {ours}, {theirs}"
+        );
     }
-    let estimates: [f64; B] = core::array::from_fn(|b| number(&parameters[b], "estimate"));
+    let estimates: [f64; B] = core::array::from_fn(|b| estimate.values[b]);
     let text = std::fs::read_to_string(path).expect("the measurements");
     let (mut squares, mut samples) = ([0.0; N], 0.0);
     for line in text.lines().skip(1) {
@@ -265,14 +316,13 @@ where
 }
 
 /// Prints the estimates beside the truth; the largest error in standard deviations.
-fn estimates(report: &Value) -> f64 {
-    let parameters = report["parameters"].as_array().expect("parameters");
+fn estimates(regressor: &Regressor, e: &Estimate) -> f64 {
     println!(
         "3. identify: {} samples, condition number {:.1}; the {} base parameters:\n   {:<8} \
          {:>13} {:>13} {:>11} {:>8}",
-        report["samples"],
-        report["condition_number"].as_f64().unwrap_or(f64::NAN),
-        parameters.len(),
+        e.samples,
+        e.condition,
+        e.values.len(),
         "name",
         "true",
         "estimate",
@@ -280,36 +330,27 @@ fn estimates(report: &Value) -> f64 {
         "error/σ"
     );
     let mut worst = 0.0f64;
-    for p in parameters {
-        let number = |key: &str| p[key].as_f64().unwrap_or(f64::NAN);
-        let (truth, estimate, deviation) =
-            (number("described"), number("estimate"), number("std_dev"));
+    let described = &regressor.model().described;
+    for (k, name) in regressor.names().iter().enumerate() {
+        let (truth, estimate, deviation) = (described[k], e.values[k], e.deviations[k]);
         let error = (estimate - truth) / deviation;
         worst = worst.max(error.abs());
-        println!(
-            "   {:<8} {truth:>13.6} {estimate:>13.6} {deviation:>11.2e} {error:>8.2}",
-            p["name"].as_str().unwrap_or("?")
-        );
+        println!("   {name:<8} {truth:>13.6} {estimate:>13.6} {deviation:>11.2e} {error:>8.2}");
     }
-    let unidentified = report["unidentifiable"].as_array().map_or(0, Vec::len);
+    let unidentified = e.unidentified.len();
     println!("   not identifiable from these data: {unidentified}; the worst error {worst:.2} σ");
     worst
 }
 
 /// Prints the validation's errors per joint; the largest relative to the joint's RMS torque, %.
-fn validation(report: &Value) -> f64 {
-    let v = &report["validation"];
+fn validation(p: &Prediction) -> f64 {
     println!(
         "4. validate: the other motion's {} samples, predicted by the estimates:\n   {:>5} \
          {:>12} {:>12} {:>9}",
-        v["samples"], "joint", "RMS τ", "RMS error", "relative"
+        p.samples, "joint", "RMS τ", "RMS error", "relative"
     );
     let mut worst = 0.0f64;
-    for (j, joint) in v["joints"].as_array().expect("joints").iter().enumerate() {
-        let (rms, error) = (
-            joint["rms"].as_f64().unwrap_or(f64::NAN),
-            joint["error_rms"].as_f64().unwrap_or(f64::NAN),
-        );
+    for (j, (rms, error)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
         let relative = 100.0 * error / rms;
         worst = worst.max(relative);
         println!(

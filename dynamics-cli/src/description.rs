@@ -23,8 +23,9 @@
 //! [`ROUND_OFF`] of the largest entry of the link's pseudo-inertia is zero, with `c = 0` and
 //! `I_c = I_o` (J ⪰ 0 bounds `|h|² ≤ m tr Σ_o`: such a link's `h` is round-off too).
 
-use super::pseudo_inertia::{eigen, pseudo_inertia};
 use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_identification::identify::pseudo_inertia::pseudo_inertia;
+use dynamics_identification::linear_algebra::eigen3;
 use toml_edit::{value, Array, DocumentMut};
 
 /// A value below this fraction of the quantities it is computed from is round-off of zero.
@@ -65,13 +66,8 @@ pub fn about_com(pi: &[f64]) -> (f64, [f64; 3], [f64; 6]) {
 /// The symmetric `sigma` with its eigenvalues below `floor` set to zero (itself if there are
 /// none).
 fn second_moment(sigma: [[f64; 3]; 3], floor: f64) -> [[f64; 3]; 3] {
-    // Σ in the corner of a 4 × 4 whose last row and column are zero: the rotations never touch
-    // them, and the first three eigenpairs are Σ's.
-    let padded = std::array::from_fn(|a| {
-        std::array::from_fn(|b| if a < 3 && b < 3 { sigma[a][b] } else { 0.0 })
-    });
-    let (values, vectors) = eigen(padded);
-    if values[..3].iter().all(|&v| v > floor) {
+    let (values, vectors) = eigen3(sigma);
+    if values.iter().all(|&v| v > floor) {
         return sigma;
     }
     std::array::from_fn(|a| {

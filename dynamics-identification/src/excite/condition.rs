@@ -9,14 +9,13 @@
 //!   `cond = √(λ_max(G) / λ_min(G))` ([`symmetric_eigenvalues`]): cheap, and accurate to a
 //!   relative `ε cond²`, which is plenty to rank candidates.
 //! * [`Factor`], for the report: the factor `R` of the stacked `Y_B` by Householder
-//!   reflections and its singular values by one-sided Jacobi rotations, as `dynamics identify`
+//!   reflections and its singular values (nalgebra's SVD), as `dynamics identify`
 //!   computes its condition number (with every joint's weight 1).
 
-use super::eigen::symmetric_eigenvalues;
 use crate::identify::measured::Measured;
 use crate::identify::model::{JointValues, LinearModel, Work};
-use crate::identify::singular::singular_values;
 use crate::lanes::LANES;
+use crate::linear_algebra::{singular_values, symmetric_eigenvalues};
 
 /// The Gram matrix of the stacked regressor, accumulated sample by sample: per joint over the
 /// parameters of its equation (a dense lower triangle, whose update is a contiguous loop), the
@@ -77,7 +76,7 @@ impl<'m> Gram<'m> {
                 }
             }
         }
-        let eigen = symmetric_eigenvalues(&mut gram, b);
+        let eigen = symmetric_eigenvalues(&gram, b);
         let (smallest, largest) = (eigen[0], eigen[b - 1]);
         if smallest > 0.0 {
             (largest / smallest).sqrt()

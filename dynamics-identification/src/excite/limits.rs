@@ -7,6 +7,7 @@
 //! 0.2 m/s and 1 m/s². A real robot's own limits should be given.
 
 use super::fourier::Limits;
+use crate::Error;
 use dynamics_codegen::front::Limit;
 use dynamics_codegen::model::{JointKind, Robot};
 
@@ -48,23 +49,23 @@ pub const OPTIONS: [&str; 4] = ["--q-min", "--q-max", "--qd-max", "--qdd-max"];
 ///
 /// # Errors
 /// A list whose length is neither 1 nor the joints', an empty range, a speed or acceleration
-/// limit that is not positive: the option's name and the joint.
+/// limit that is not positive ([`Error::Setting`]): the option's name and the joint.
 pub fn joint_limits(
     robot: &Robot,
     urdf: Option<&[Limit]>,
     asked: Asked,
-) -> Result<Vec<JointLimits>, String> {
+) -> Result<Vec<JointLimits>, Error> {
     let n = robot.joints.len();
     if let Some((k, list)) = (0..4).find_map(|k| {
         asked[k]
             .filter(|v| v.len() != 1 && v.len() != n)
             .map(|v| (k, v))
     }) {
-        return Err(format!(
+        return Err(Error::Setting(format!(
             "{}: {} values; give one for every joint or one for each of the {n} joints",
             OPTIONS[k],
             list.len()
-        ));
+        )));
     }
     let mut out = Vec::with_capacity(n);
     for (j, joint) in robot.joints.iter().enumerate() {
@@ -89,16 +90,16 @@ pub fn joint_limits(
         let [lower, upper, velocity, acceleration] = values;
         let joint = j + 1;
         if lower >= upper {
-            return Err(format!(
+            return Err(Error::Setting(format!(
                 "joint {joint}: the range [{lower}, {upper}] is empty (--q-min, --q-max)"
-            ));
+            )));
         }
         for (k, x) in [(2, velocity), (3, acceleration)] {
             if x <= 0.0 {
-                return Err(format!(
+                return Err(Error::Setting(format!(
                     "{}: joint {joint}: {x} is not positive",
                     OPTIONS[k]
-                ));
+                )));
             }
         }
         out.push(JointLimits {

@@ -1,5 +1,6 @@
 //! System identification: the estimate of a model linear in its parameters,
-//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`).
+//! `τ = Y(q, q̇, q̈) π`, from measured motions and torques (`dynamics identify`,
+//! [`crate::identify()`]).
 //!
 //! * [`model`]: the regressor of a robot's graph, evaluated at a sample;
 //! * [`base`]: that model for a robot's base parameters;
@@ -8,19 +9,15 @@
 //!   filtered source;
 //! * [`measured`]: one triangular factor per joint ([`householder`]);
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
-//!   standard deviations, condition number ([`singular`]);
+//!   standard deviations, condition number ([`crate::linear_algebra`]);
 //! * [`consistent`]: the physically consistent estimate beside it (each link's
-//!   [`pseudo_inertia`] positive semidefinite), and [`description`]: the description file
-//!   rewritten with it;
-//! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others;
-//! * [`report`], [`figure`]: what is printed and drawn.
+//!   [`pseudo_inertia`] positive semidefinite);
+//! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others.
 
 pub mod base;
 pub mod consistent;
 pub mod decimate;
-pub mod description;
 pub mod estimate;
-pub mod figure;
 pub mod filter;
 pub mod householder;
 pub mod measured;
@@ -28,7 +25,5 @@ pub mod model;
 pub mod predict;
 pub mod pseudo_inertia;
 pub mod rank;
-pub mod report;
 pub mod rows;
-pub mod singular;
 pub mod source;

@@ -1,16 +1,16 @@
 //! Trajectories as streams of samples `(t, q, q̇, q̈)`, with the joint torques τ where the file
 //! gives them: read from a CSV file, or a built-in quintic point-to-point move.
 //!
-//! **CSV** ([`csv`]). A header line names the columns: `t,q1,..,qn`, then optionally
-//! `qd1,..,qdn`, then optionally `qdd1,..,qddn`, then, for `dynamics identify`, `tau1,..,taun`
-//! (t in s; q in rad or m; τ in N m or N). Blank lines and lines starting with `#` are skipped;
-//! every other line holds as many finite numbers as the header, with t strictly increasing. A
-//! byte-order mark before the header and `\r\n` line ends are accepted.
+//! **CSV** ([`read_csv`], [`read_rows`]). A header line names the columns: `t,q1,..,qn`, then
+//! optionally `qd1,..,qdn`, then optionally `qdd1,..,qddn`, then, for `dynamics identify`,
+//! `tau1,..,taun` (t in s; q in rad or m; τ in N m or N). Blank lines and lines starting with
+//! `#` are skipped; every other line holds as many finite numbers as the header, with t strictly
+//! increasing. A byte-order mark before the header and `\r\n` line ends are accepted.
 //!
-//! **Missing derivatives** ([`differences`]) come from the quadratic through three neighbouring
+//! **Missing derivatives** ([`Differences`]) come from the quadratic through three neighbouring
 //! samples. Only three samples are held at once, so a file of any length streams.
 //!
-//! **Quintic move** ([`quintic`]).
+//! **Quintic move** ([`quintic()`]).
 
 mod csv;
 mod differences;

@@ -5,8 +5,9 @@
 //! columns, and decimated ([`super::decimate`]).
 
 use super::decimate;
-use super::filter::{LowPass, ORDER};
+use super::filter::LowPass;
 use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
+use crate::Error;
 use std::io::BufReader;
 
 /// Steps may differ from the mean step by this fraction for the filter's design to hold.
@@ -43,25 +44,6 @@ pub struct Filter {
 }
 
 impl Filter {
-    /// In words.
-    #[must_use]
-    pub fn describe(&self) -> String {
-        format!(
-            "q (and any q̇, q̈ given): {ORDER}th-order Butterworth low-pass at {} Hz (samples \
-             at {} Hz), forward and backward (zero phase, −6 dB at the cutoff), before \
-             differentiation; τ and every column of the regressor alike: a zero-phase FIR \
-             low-pass ({} taps) at {} Hz, then one sample in {} kept, {} of {} (parallel \
-             filtering and decimation)",
-            self.cutoff,
-            crate::plot::number(self.rate),
-            decimate::length(self.decimation),
-            crate::plot::number(self.rate / (2.0 * self.decimation as f64)),
-            self.decimation,
-            self.kept(),
-            self.read
-        )
-    }
-
     /// The samples the decimation keeps: one in `d` once a window of `16d + 1` is full.
     #[must_use]
     pub fn kept(&self) -> usize {
@@ -78,15 +60,16 @@ impl Source {
     /// The samples of the file at `path`, filtered at `cutoff` Hz if given.
     ///
     /// # Errors
-    /// The file cannot be read, a bad line, or uneven samples where a filter is asked for.
-    pub fn open(path: &str, columns: Columns, cutoff: Option<f64>) -> Result<Source, String> {
+    /// [`Error::Samples`]: the file cannot be read, a bad line, or uneven samples where a
+    /// filter is asked for; [`Error::Setting`]: a cutoff the samples' rate or count refuses.
+    pub fn open(path: &str, columns: Columns, cutoff: Option<f64>) -> Result<Source, Error> {
         let Some(cutoff) = cutoff else {
             return Ok(Source::File {
                 path: path.to_string(),
                 columns,
             });
         };
-        let file = std::fs::File::open(path).map_err(|e| format!("{path}: {e}"))?;
+        let file = std::fs::File::open(path).map_err(|e| Error::Samples(format!("{path}: {e}")))?;
         let (mut data, mut lines): (Vec<Vec<f64>>, Vec<usize>) = (Vec::new(), Vec::new());
         let rows = trajectory::read_rows(
             BufReader::new(file),
@@ -101,10 +84,12 @@ impl Source {
             },
             |_| {},
         )
-        .map_err(|e| format!("{path}: {e}"))?;
+        .map_err(|e| Error::Samples(format!("{path}: {e}")))?;
         if data.is_empty() {
             let line = rows.last_line;
-            return Err(format!("{path}: line {line}: no samples after the header"));
+            return Err(Error::Samples(format!(
+                "{path}: line {line}: no samples after the header"
+            )));
         }
         let rate = even_rate(&data[0]).map_err(|(k, message)| {
             let e = CsvError {
@@ -112,9 +97,10 @@ impl Source {
                 column: Some((1, "t".into())),
                 message,
             };
-            format!("{path}: {e}")
+            Error::Samples(format!("{path}: {e}"))
         })?;
-        let low_pass = LowPass::butterworth(cutoff, rate).map_err(|e| format!("--cutoff: {e}"))?;
+        let low_pass = LowPass::butterworth(cutoff, rate)
+            .map_err(|e| Error::Setting(format!("--cutoff: {e}")))?;
         let read = data[0].len();
         let decimation = fitting_decimation(path, cutoff, rate, read)?;
         // Not t, nor the torques at the end.
@@ -199,7 +185,7 @@ fn decimation(cutoff: f64, rate: f64) -> f64 {
 
 /// The decimation at `cutoff`, if the window of its filter, `16d + 1` samples, fits in the
 /// `read` samples of `path`; else why not, and the smallest cutoff whose window fits.
-fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result<usize, String> {
+fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result<usize, Error> {
     let d = decimation(cutoff, rate);
     let window = 16.0 * d + 1.0;
     if window <= read as f64 {
@@ -224,14 +210,14 @@ fn fitting_decimation(path: &str, cutoff: f64, rate: f64, read: usize) -> Result
             smallest_cutoff(rate, largest)
         ),
     };
-    Err(format!(
+    Err(Error::Setting(format!(
         "--cutoff {cutoff}: for samples at {} Hz its filter keeps one sample in {} and needs a \
          window of {} samples (16 d + 1, d = ⌊0.4 f_s / f_c⌋), more than the {read} samples of \
          {path}: {fits}",
-        crate::plot::number(rate),
+        crate::text::number(rate),
         count(d),
         count(window)
-    ))
+    )))
 }
 
 /// The smallest cutoff of three significant digits whose decimation is at most `largest`: the

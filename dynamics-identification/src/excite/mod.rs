@@ -4,15 +4,13 @@
 //!
 //! * [`fourier`]: the series, its derivatives, and its scaling into the limits;
 //! * [`limits`]: each joint's limits, from the options, a URDF or the defaults;
-//! * [`condition`]: the condition number of the stacked `Y_B` over samples ([`eigen`]);
+//! * [`condition`]: the condition number of the stacked `Y_B` over samples
+//!   ([`crate::linear_algebra`]);
 //! * [`search`]: random restarts, then a compass search, within a budget of evaluations;
-//! * [`design`]: the problem put together: the coefficients searched, the motion found;
-//! * [`report`]: what is printed.
+//! * [`design`]: the problem put together: the coefficients searched, the motion found.
 
 pub mod condition;
 pub mod design;
-pub mod eigen;
 pub mod fourier;
 pub mod limits;
-pub mod report;
 pub mod search;

@@ -10,11 +10,13 @@
 //! description's springs, as in the fit; through a filter, both sides are filtered alike.
 
 use super::estimate::Estimate;
-use super::figure;
 use super::model::LinearModel;
 use super::rows::{each_row, Springs};
 use super::source::Source;
-use crate::plot::Envelope;
+use crate::Error;
+
+/// Told each sample's time, measured torques and predicted torques (for a figure).
+pub type EachSample<'a> = &'a mut dyn FnMut(f64, &[f64], &[f64]);
 
 /// The prediction's errors over a file.
 #[derive(Clone, Debug)]
@@ -25,18 +27,18 @@ pub struct Prediction {
     pub error_rms: Vec<f64>,
 }
 
-/// One pass over `source`: the estimate's predictions against the measured torques, into
-/// `envelope` for a figure (with [`figure::values`]) if given.
+/// One pass over `source`: the estimate's predictions against the measured torques, each
+/// sample's told `each(t, measured, predicted)` if given (for a figure).
 ///
 /// # Errors
-/// Reading the samples; errors too large to square.
+/// Reading the samples ([`Error::Samples`]); errors too large to square ([`Error::Estimate`]).
 pub fn predict(
     model: &LinearModel,
     source: &Source,
     springs: &Springs,
     estimate: &Estimate,
-    mut envelope: Option<&mut Envelope>,
-) -> Result<Prediction, String> {
+    mut each: Option<EachSample<'_>>,
+) -> Result<Prediction, Error> {
     let n = model.joints();
     let pi: Vec<f64> = estimate
         .values
@@ -44,7 +46,6 @@ pub fn predict(
         .map(|v| if v.is_nan() { 0.0 } else { *v })
         .collect();
     let mut predicted = vec![0.0; n];
-    let mut values = vec![0.0; figure::SERIES * n];
     let (mut measured_sq, mut error_sq, mut samples) = (vec![0.0; n], vec![0.0; n], 0);
     // The first time whose error's square is not finite.
     let mut overflow = None;
@@ -61,18 +62,18 @@ pub fn predict(
             }
         }
         samples += 1;
-        if let Some(envelope) = envelope.as_deref_mut() {
-            figure::values(torques, &predicted, &mut values);
-            envelope.push(t, &values);
+        if let Some(each) = each.as_deref_mut() {
+            each(t, torques, &predicted);
         }
-    })?;
+    })
+    .map_err(Error::Samples)?;
     if let Some(t) = overflow {
-        return Err(format!(
+        return Err(Error::Estimate(format!(
             "{}: at t = {} s the squared error of the predicted torques is not a finite \
              number: the values are too large for the estimate",
             source.path(),
             crate::trajectory::decimal(t)
-        ));
+        )));
     }
     let rms = |sums: Vec<f64>| -> Vec<f64> {
         sums.into_iter()

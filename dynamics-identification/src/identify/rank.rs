@@ -11,8 +11,11 @@
 //! below 10⁻¹² of the largest: a joint that never moves, an effect the motion never excites) is
 //! left out first. Columns are taken in the model's order, so that of a dependent group the
 //! later ones are named.
+//!
+//! By hand: nalgebra's rank-revealing QR (`ColPivQR`) chooses its columns by their norms, not
+//! in the model's order, and has no tolerance to leave a column out.
 
-use super::householder::back_substitute;
+use crate::linear_algebra::back_substitute;
 
 /// A parameter the data cannot identify.
 #[derive(Clone, Debug, PartialEq)]

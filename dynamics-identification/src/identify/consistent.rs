@@ -42,7 +42,8 @@
 
 use super::estimate::Estimate;
 use super::measured::Measured;
-use super::pseudo_inertia::{clipped, eigen, pseudo_inertia, smallest_eigenvalue};
+use super::pseudo_inertia::{clipped, pseudo_inertia, smallest_eigenvalue};
+use crate::linear_algebra::eigen4 as eigen;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
     DefaultSettings, DefaultSolver, IPSolver, NonnegativeConeT, SecondOrderConeT, SolverStatus,

@@ -53,7 +53,7 @@ pub fn taps(d: usize) -> Vec<f64> {
 /// The filter and decimation over rows of a fixed width, as they stream.
 ///
 /// Output m is the window of rows `m d ..= m d + 16d`; a row belongs to the windows of at most
-/// [`OPEN`] outputs, each accumulated as its rows arrive (in their order, as a window held
+/// `OPEN` outputs, each accumulated as its rows arrive (in their order, as a window held
 /// whole would be summed). So the memory is `OPEN` rows whatever d, not a window of `16d + 1`.
 #[derive(Clone, Debug)]
 pub struct Decimator {

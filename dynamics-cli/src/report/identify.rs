@@ -1,12 +1,15 @@
 //! What `dynamics identify` prints: a table, or the same as JSON.
 
-use super::consistent::Consistent;
-use super::estimate::Estimate;
-use super::model::LinearModel;
-use super::predict::Prediction;
-use super::rank::Unidentified;
-use super::source::Filter;
 use crate::format::unsigned_zero;
+use crate::plot::number;
+use dynamics_identification::identify::consistent::Consistent;
+use dynamics_identification::identify::decimate;
+use dynamics_identification::identify::estimate::Estimate;
+use dynamics_identification::identify::filter::ORDER;
+use dynamics_identification::identify::model::LinearModel;
+use dynamics_identification::identify::predict::Prediction;
+use dynamics_identification::identify::rank::Unidentified;
+use dynamics_identification::Filter;
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 
@@ -28,7 +31,7 @@ pub struct Report<'a> {
     pub linear: &'a LinearModel,
     pub estimate: &'a Estimate,
     /// The consistent estimate and its standard parameters' names, if asked for.
-    pub consistent: Option<&'a (Consistent, Vec<String>)>,
+    pub consistent: Option<(&'a Consistent, Vec<String>)>,
     /// Other measurements' file and their torques predicted, if asked for.
     pub validation: Option<(&'a str, Prediction)>,
 }
@@ -47,7 +50,7 @@ impl Report<'_> {
             "{}: {} samples, t = {} to {} s ({}, {})",
             self.robot, e.samples, self.start, self.end, self.csv, self.method
         );
-        let filter = self.filter.map_or("none".into(), |f| f.describe());
+        let filter = self.filter.map_or("none".into(), |f| describe(&f));
         let _ = writeln!(out, "filter: {filter}");
         let _ = writeln!(out, "model: {}", self.model);
         if self.springs {
@@ -95,7 +98,7 @@ impl Report<'_> {
             let unit = self.units[i];
             let _ = writeln!(out, "{:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}", i + 1);
         }
-        if let Some((c, names)) = self.consistent {
+        if let Some((c, names)) = &self.consistent {
             self.consistent_text(&mut out, c, names);
         }
         if let Some((csv, p)) = &self.validation {
@@ -240,9 +243,9 @@ impl Report<'_> {
             .collect();
         let filter = self.filter.map(|f| {
             // The positions' filter, then the torques' and regressor's (parallel) one.
-            json!({ "kind": "butterworth", "order": super::filter::ORDER, "cutoff_hz": f.cutoff,
+            json!({ "kind": "butterworth", "order": ORDER, "cutoff_hz": f.cutoff,
                     "rate_hz": f.rate, "zero_phase": true, "decimation": f.decimation,
-                    "parallel_fir_taps": super::decimate::length(f.decimation), "samples_read": f.read })
+                    "parallel_fir_taps": decimate::length(f.decimation), "samples_read": f.read })
         });
         let report = json!({
             "robot": self.robot,
@@ -261,7 +264,7 @@ impl Report<'_> {
             "parameters": parameters,
             "unidentifiable": unidentifiable,
             "joints": joints,
-            "consistent": self.consistent.map(|(c, names)| consistent_json(c, names, names_of(self.linear))),
+            "consistent": self.consistent.as_ref().map(|(c, names)| consistent_json(c, names, names_of(self.linear))),
             "validation": self.validation.as_ref().map(|(csv, p)| json!({
                 "csv": csv,
                 "samples": p.samples,
@@ -336,4 +339,21 @@ fn short(x: f64) -> String {
     } else {
         "infinite".into()
     }
+}
+
+/// The filter in words.
+fn describe(f: &Filter) -> String {
+    format!(
+        "q (and any q̇, q̈ given): {ORDER}th-order Butterworth low-pass at {} Hz (samples at {} \
+         Hz), forward and backward (zero phase, −6 dB at the cutoff), before differentiation; τ \
+         and every column of the regressor alike: a zero-phase FIR low-pass ({} taps) at {} Hz, \
+         then one sample in {} kept, {} of {} (parallel filtering and decimation)",
+        f.cutoff,
+        number(f.rate),
+        decimate::length(f.decimation),
+        number(f.rate / (2.0 * f.decimation as f64)),
+        f.decimation,
+        f.kept(),
+        f.read
+    )
 }

@@ -28,10 +28,9 @@
 //! 10⁻⁶ of the largest, so that a joint's round-off is not weighted as information; when every
 //! σ_i is zero the weights are all one.
 
-use super::householder::{back_substitute, inverse};
 use super::measured::Measured;
 use super::rank::{self, Unidentified};
-use super::singular::singular_values;
+use crate::linear_algebra::{back_substitute, inverse, singular_values};
 
 /// The smallest σ_i relative to the largest, where weights are capped.
 const WEIGHT_RANGE: f64 = 1e-6;

@@ -72,7 +72,7 @@ pub fn minimise(
         let x: Vec<f64> = (0..dimension).map(|_| random.symmetric()).collect();
         let value = f(&x);
         initial.get_or_insert_with(|| (x.clone(), value));
-        if best.as_ref().is_none_or(|(_, b)| value < *b) {
+        if best.as_ref().map_or(true, |(_, b)| value < *b) {
             best = Some((x, value));
         }
     }

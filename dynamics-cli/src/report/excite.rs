@@ -2,9 +2,9 @@
 //! and the first guess's, and per joint its limits (and where they came from), how near the
 //! motion comes to each, and its series' coefficients.
 
-use super::design::{Design, Problem, SEARCH_SAMPLES};
-use super::fourier::State;
-use super::limits::JointLimits;
+use dynamics_identification::excite::design::{Design, Problem, SEARCH_SAMPLES};
+use dynamics_identification::excite::fourier::State;
+use dynamics_identification::excite::limits::{JointLimits, Origin};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 
@@ -79,7 +79,7 @@ impl Report<'_> {
 
     fn method(&self) -> String {
         let o = &self.design.outcome;
-        let converged = if o.step < super::search::SMALLEST_STEP {
+        let converged = if o.step < dynamics_identification::excite::search::SMALLEST_STEP {
             "converged"
         } else {
             "stopped by the budget"
@@ -132,7 +132,7 @@ impl Report<'_> {
         );
         for (j, (l, r)) in self.limits.iter().zip(self.reached()).enumerate() {
             let x = l.limits;
-            let origins = l.origins.map(super::limits::Origin::word).join(", ");
+            let origins = l.origins.map(Origin::word).join(", ");
             let columns = numbers([x.lower, x.upper, x.velocity, x.acceleration]);
             let reached = numbers([r.low, r.high, r.speed, r.acceleration]);
             let _ = writeln!(
@@ -164,7 +164,7 @@ impl Report<'_> {
             .zip(&d.series)
             .enumerate()
             .map(|(j, ((l, r), s))| {
-                let o = l.origins.map(super::limits::Origin::word);
+                let o = l.origins.map(Origin::word);
                 json!({
                     "unit": self.units[j],
                     "limits": { "lower": l.limits.lower, "upper": l.limits.upper,
