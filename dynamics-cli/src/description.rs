@@ -23,7 +23,7 @@
 //! [`ROUND_OFF`] of the largest entry of the link's pseudo-inertia is zero, with `c = 0` and
 //! `I_c = I_o` (J ⪰ 0 bounds `|h|² ≤ m tr Σ_o`: such a link's `h` is round-off too).
 
-use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_codegen::Parameter;
 use dynamics_identification::identify::pseudo_inertia::pseudo_inertia;
 use dynamics_identification::linear_algebra::eigen3;
 use toml_edit::{value, Array, DocumentMut};
@@ -193,7 +193,7 @@ mod tests {
     /// Links on the edge of the cone J ⪰ 0, as the consistent estimate leaves poorly excited
     /// ones: point masses (`I_c = 0`), rods (`0 + I = I`), laminas and massless links with a
     /// mass of round-off; each written into a description that the description's own checks
-    /// (`dynamics_codegen::check`, as `dynamics inspect` and the derive run them) must pass.
+    /// (the front door's, as `dynamics inspect` and the derive run them) must pass.
     #[test]
     fn links_on_the_edge_are_written_as_bodies_the_checks_accept() {
         let text =
@@ -237,9 +237,12 @@ mod tests {
                 }
             };
             let out = rewrite(text, &parameters, &pi).expect("rewrites");
-            let loaded = dynamics_codegen::front::load("one.toml", &out).expect("reads");
-            let problems = dynamics_codegen::check::robot(&loaded.robot, &loaded.check_inertia);
-            if !problems.is_empty() {
+            let source = dynamics_codegen::Source {
+                path: "one.toml",
+                text: Some(&out),
+                ..dynamics_codegen::Source::default()
+            };
+            if let Err(problems) = dynamics_codegen::load(&source) {
                 failures.push(format!("case {case}: {}\n{out}", problems[0]));
             }
             let (written, _, inertia) = about_com(&pi);

@@ -4,8 +4,8 @@
 //! actuators' `I_a q̈` from the description, and the links' inertial term the rest of τ.
 
 use dynamics_codegen::model::Robot;
-use dynamics_codegen::symbolic::TapeScalar;
-use dynamics_codegen::trace::Equations;
+use dynamics_codegen::pipeline::TapeScalar;
+use dynamics_codegen::Equations;
 use dynamics_identification::joint_tape::{gather, JointTape, Work};
 use dynamics_identification::lanes::{Four, LANES};
 

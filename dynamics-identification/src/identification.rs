@@ -9,7 +9,7 @@ use crate::identify::predict::{EachSample, Prediction};
 use crate::identify::rows::each_row;
 use crate::identify::source::Source;
 use crate::{Error, Regressor};
-use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_codegen::Parameter;
 
 /// How the estimate is made.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -5,7 +5,7 @@
 //! dynamics.
 
 use crate::lanes::Four;
-use dynamics_codegen::symbolic::{Graph, NodeId, Tape, TapeScalar, Var};
+use dynamics_codegen::pipeline::{Graph, NodeId, Tape, TapeScalar, Var};
 
 /// How a leaf gets its value at a state.
 #[derive(Clone, Copy, Debug)]

@@ -6,7 +6,7 @@
 //! sines and cosines: the runtime's kernels (those of the generated code) rather than the
 //! platform's `libm`, which may differ in the last bit.
 
-use dynamics_codegen::symbolic::TapeScalar;
+use dynamics_codegen::pipeline::TapeScalar;
 use dynamics_runtime::{F64x4, Real};
 use std::ops::{Add, Mul, Neg};
 

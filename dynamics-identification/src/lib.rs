@@ -14,7 +14,7 @@
 //!   of the stacked `Y_B` low, to measure.
 //!
 //! ```no_run
-//! use dynamics_codegen::trace::base_parameters::JointColumns;
+//! use dynamics_codegen::JointColumns;
 //! use dynamics_identification::{identify, Options, Regressor, Samples};
 //!
 //! let source = dynamics_codegen::Source { path: "robots/puma560.toml", ..Default::default() };

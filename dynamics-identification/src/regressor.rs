@@ -9,8 +9,8 @@ use crate::trajectory::Columns;
 use crate::Error;
 use dynamics_codegen::derive;
 use dynamics_codegen::model::{Robot, Value};
-use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns};
 use dynamics_codegen::Equations;
+use dynamics_codegen::{BaseParameters, JointColumns};
 
 /// The base regressor of a robot, for [`crate::identify()`], [`crate::predict`] and
 /// [`crate::excite()`].

@@ -18,8 +18,9 @@ use super::{load, robot_failure, usage, Failure};
 use crate::args::{Excite, Numbers};
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
 use crate::report::excite::Report;
-use dynamics_codegen::front::{self, Limit};
 use dynamics_codegen::model::JointKind;
+use dynamics_codegen::pipeline::{self, Limit};
+use dynamics_codegen::{Chain, Source};
 use dynamics_identification::excite::design::{Problem, SEARCH_SAMPLES};
 use dynamics_identification::excite::fourier::{Grid, Series};
 use dynamics_identification::excite::limits::{joint_limits, Asked};
@@ -136,18 +137,18 @@ fn urdf_limits(args: &Excite) -> Result<Option<Vec<Limit>>, Failure> {
     if !path.ends_with(".urdf") {
         return Ok(None);
     }
-    // `load` read the same file without error.
-    let text = std::fs::read_to_string(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
-    let chain = front::Chain {
-        base: args.robot.base.as_deref(),
-        tip: args.robot.tip.as_deref(),
+    let source = Source {
+        path,
+        chain: Chain {
+            base: args.robot.base.as_deref(),
+            tip: args.robot.tip.as_deref(),
+        },
+        ..Source::default()
     };
-    front::joint_limits(&text, chain)
-        .map(Some)
-        .map_err(|errors| {
-            let lines: Vec<String> = errors.iter().map(|e| format!("{path}: {e}")).collect();
-            Failure::File(lines.join("\ndynamics: "))
-        })
+    pipeline::joint_limits(&source).map(Some).map_err(|errors| {
+        let lines: Vec<String> = errors.iter().map(ToString::to_string).collect();
+        Failure::File(lines.join("\ndynamics: "))
+    })
 }
 
 /// Writes `periods` periods of the motion, and the first sample of the next (at rest, where

@@ -6,7 +6,7 @@
 //! gives one equation per joint, `τ_i(t_k) − τ_spring,i = Y_i(t_k) π` (the description's springs
 //! are known, not identified), and the N samples of n joints stack into `τ = Y π + ρ`:
 //!
-//! * π: the base parameters (`dynamics_codegen::trace::base_parameters`): the combinations of
+//! * π: the base parameters ([`dynamics_codegen::BaseParameters`]): the combinations of
 //!   the links' standard parameters and of the joint terms that τ determines, with `Y` their
 //!   reduced regressor of full column rank. The joint terms are those the description gives
 //!   (its actuator inertias, its friction) and those asked for on every joint (`--rotors`:
@@ -46,7 +46,7 @@ use crate::plot::Envelope;
 use crate::report::identify::Report;
 use crate::report::identify_figure as figure;
 use crate::sizing::unit;
-use dynamics_codegen::trace::base_parameters::Parameter;
+use dynamics_codegen::Parameter;
 use dynamics_identification::identify::consistent::Consistent;
 use dynamics_identification::identify::predict::Prediction;
 use dynamics_identification::{identify, predict, Error, Identified, Options, Regressor, Samples};

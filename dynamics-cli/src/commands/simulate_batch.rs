@@ -23,7 +23,7 @@ use super::values::{joints, settings};
 use super::{load, Failure};
 use crate::args::Simulate;
 use crate::budget::{time_per_unit, Cost, Progress, BYTES_PER_NUMBER};
-use dynamics_codegen::symbolic::TapeScalar;
+use dynamics_codegen::pipeline::TapeScalar;
 use dynamics_identification::joint_tape::{gather, JointTape, Work};
 use dynamics_identification::lanes::{Four, LANES};
 use dynamics_identification::trajectory::{self, Given, Sample};

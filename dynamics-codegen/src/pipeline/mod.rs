@@ -28,8 +28,13 @@ mod rust_module;
 
 /// A C function's signature, as the header declares it.
 pub use crate::emit_c::{Function, Precision, Returns};
+/// A URDF joint's `<limit>`.
+pub use crate::front::Limit;
 /// The readable equations' notation: text or LaTeX.
 pub use crate::inspect::Format;
+/// The equations' graph, its leaves, and its outputs compiled to a tape that evaluates many
+/// states on any scalar (lanes of four, tangents): for drivers that evaluate outputs at run time.
+pub use crate::symbolic::{Graph, NodeId, Tape, TapeScalar, Var};
 pub use c_header::CHeader;
 pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
@@ -202,6 +207,27 @@ impl Loaded {
             _ => Ok(eq),
         }
     }
+}
+
+/// A URDF's `<limit>`s, one per joint of the chain of `source` (which must be a URDF).
+///
+/// # Errors
+/// The file's problems, each at its place.
+pub fn joint_limits(source: &Source<'_>) -> Result<Vec<Limit>, Vec<Diagnostic>> {
+    let path = source.path;
+    let read;
+    let text = match source.text {
+        Some(text) => text,
+        None => {
+            read = std::fs::read_to_string(path)
+                .map_err(|e| vec![Diagnostic::of_file(path, e.to_string())])?;
+            &read
+        }
+    };
+    front::joint_limits(text, source.chain).map_err(|errors| {
+        let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
+        each.collect()
+    })
 }
 
 /// The checks [`load`] runs, on a robot the caller has changed since (parameters given values

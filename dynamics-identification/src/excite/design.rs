@@ -143,16 +143,20 @@ fn states(rows: &[[Vec<f64>; 3]]) -> Vec<JointValues<'_>> {
 mod tests {
     use super::*;
     use crate::identify::base;
-    use dynamics_codegen::trace::base_parameters::JointColumns;
+    use dynamics_codegen::JointColumns;
 
     /// The search's cost, by the Gram matrix's eigenvalues, against the condition number the
     /// report gives, by the regressor's factor and its singular values, over the same samples.
     #[test]
     fn the_search_s_cost_is_the_condition_number_reported() {
         let text = include_str!("../../../robots/puma560.toml");
-        let robot = dynamics_codegen::front::load("puma560.toml", text)
-            .expect("reads")
-            .robot;
+        let robot = dynamics_codegen::load(&dynamics_codegen::Source {
+            path: "puma560.toml",
+            text: Some(text),
+            ..dynamics_codegen::Source::default()
+        })
+        .expect("reads")
+        .robot;
         let mut eq = dynamics_codegen::derive(&robot);
         let base = eq
             .base_parameters(&robot, &[JointColumns::default(); 6])

@@ -8,8 +8,8 @@
 
 use super::fourier::Limits;
 use crate::Error;
-use dynamics_codegen::front::Limit;
 use dynamics_codegen::model::{JointKind, Robot};
+use dynamics_codegen::pipeline::Limit;
 
 /// Where a limit came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -135,9 +135,12 @@ mod tests {
         let text =
             "name = \"rp\"\ngravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\
                     [[joints]]\ntype = \"prismatic\"\nmass = 1\n";
-        dynamics_codegen::front::load("rp.toml", text)
-            .expect("reads")
-            .robot
+        let source = dynamics_codegen::Source {
+            path: "rp.toml",
+            text: Some(text),
+            ..dynamics_codegen::Source::default()
+        };
+        dynamics_codegen::load(&source).expect("reads").robot
     }
 
     #[test]

@@ -5,8 +5,8 @@
 
 use super::model::Entries;
 use crate::joint_tape::constant_values;
-use dynamics_codegen::trace::base_parameters::{BaseParameters, JointColumns, Parameter};
 use dynamics_codegen::Equations;
+use dynamics_codegen::{BaseParameters, JointColumns, Parameter};
 
 /// The standard parameters behind the base parameters, for the consistent estimate: the links'
 /// ten each, then the joint terms taken, joint by joint in `IA, FV, FC, FO` order.

@@ -7,7 +7,7 @@
 
 use crate::joint_tape::{constant_values, gather, JointTape};
 use crate::lanes::{Four, LANES};
-use dynamics_codegen::symbolic::{Graph, NodeId, TapeScalar};
+use dynamics_codegen::pipeline::{Graph, NodeId, TapeScalar};
 
 /// The regressor of a linear model, ready to evaluate.
 #[derive(Clone, Debug)]
@@ -123,17 +123,21 @@ impl LinearModel {
 mod tests {
     use super::{JointValues, LinearModel, Work, LANES};
     use crate::identify::base;
-    use dynamics_codegen::numeric::Numeric;
-    use dynamics_codegen::trace::base_parameters::JointColumns;
+    use dynamics_codegen::JointColumns;
+    use dynamics_codegen::Numeric;
 
     /// PUMA 560's base regressor in four lanes: each state's entries the same bits alone as in
     /// a group (a partial one too), and `Y_B π_B` the torques of the numeric Newton-Euler.
     #[test]
     fn four_states_at_once_as_one_at_a_time() {
         let text = include_str!("../../../robots/puma560.toml");
-        let robot = dynamics_codegen::front::load("puma560.toml", text)
-            .expect("reads")
-            .robot;
+        let robot = dynamics_codegen::load(&dynamics_codegen::Source {
+            path: "puma560.toml",
+            text: Some(text),
+            ..dynamics_codegen::Source::default()
+        })
+        .expect("reads")
+        .robot;
         let mut eq = dynamics_codegen::derive(&robot);
         let base = eq
             .base_parameters(&robot, &[JointColumns::default(); 6])
