@@ -42,7 +42,7 @@ pub const ROBOTS: [&str; 7] = [
     regressor = true,
     base_parameters = true,
     // `simplification("puma560")` restates it: about 1 % of the peak torques over the
-    // envelope of docs/design.md's figures.
+    // envelope of docs/design/simplified.md's figures.
     simplify(
         tolerance = [0.22, 0.6, 0.13, 0.0004, 0.0005, 0.00001],
         q_min = -2.5,

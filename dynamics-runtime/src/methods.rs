@@ -43,7 +43,7 @@
 // the result table (`results.rs`). A family is emitted in a module of its own. `compiled_apart`
 // (the forward dynamics' derivatives) and `into` (the regressors, whose hundreds of values
 // outnumber the registers) are explained, with the checklists for adding a method and a
-// family, in `docs/design.md`.
+// family, in `docs/design/families.md`.
 
 /// Calls `$callback!` with the rows of the method table (see the comment at the top of
 /// `methods.rs`).

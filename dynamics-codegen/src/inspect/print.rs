@@ -3,7 +3,7 @@
 //!
 //! Plain text writes the book's dots as primes after the index (`θ1'` for θ̇1, `d2''` for
 //! d̈2): a combining dot over `θ` is invisible or misplaced in rustdoc's code font, which made
-//! `S2 θ̇2` read as `S2 θ2` (docs/design.md, "Primes for dots").
+//! `S2 θ̇2` read as `S2 θ2` (docs/design/emission.md, "Primes for dots").
 
 use super::arrange::Term;
 use super::number::{decimal, is_small_fraction};

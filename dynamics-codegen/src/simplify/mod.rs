@@ -47,7 +47,7 @@ const MAX_KEPT: usize = 1500;
 /// Most term operations (see [`crate::trace::Fallback::TooMuchWork`]) the expansion of one
 /// output may take. The derive runs in every build of the user's crate, unoptimized unless the crate says
 /// otherwise, so the work of a request must stay within seconds there; an output that needs
-/// more is far past `MAX_KEPT` anyway. The figures behind the value are in `docs/design.md`.
+/// more is far past `MAX_KEPT` anyway. The figures behind the value are in `docs/design/simplified.md`.
 const MAX_WORK: u64 = 10_000_000;
 
 /// The derive's caps on each output.
