@@ -27,12 +27,9 @@
 mod args;
 mod budget;
 mod commands;
-mod description;
 mod format;
 mod plot;
 mod report;
-mod sizing;
-mod terms;
 
 use clap::Parser;
 use commands::Failure;

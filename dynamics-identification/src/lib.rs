@@ -1,6 +1,7 @@
-//! A robot's parameters identified from measured motions and torques, and the exciting motions
-//! to measure them with: the library under `dynamics identify` and `dynamics excite`, for a Rust
-//! program that calls them without the command line.
+//! The numerics of measured and planned motion: a robot's parameters identified from measured
+//! motions and torques, the exciting motions to measure them with, trajectories, and actuator
+//! sizing along a motion. The library under `dynamics identify`, `dynamics excite` and
+//! `dynamics size`, for a Rust program that calls them without the command line.
 //!
 //! Inverse dynamics is linear in the parameters, `τ = Y(q, q̇, q̈) π`. For a robot of
 //! `dynamics_codegen` (`dynamics_codegen::load`), a [`Regressor`] is its base regressor `Y_B`,
@@ -11,7 +12,9 @@
 //!   physically consistent standard parameters beside them;
 //! * [`predict`]: the torques an estimate predicts for other samples (validation);
 //! * [`excite()`]: a periodic motion within the joints' limits that keeps the condition number
-//!   of the stacked `Y_B` low, to measure.
+//!   of the stacked `Y_B` low, to measure;
+//! * [`sizing`]: along a trajectory, per joint, the peak and RMS of τ, the peak power and the
+//!   five terms of τ at its peak ([`sizing::Sizer`], the terms by [`sizing::terms`]).
 //!
 //! ```no_run
 //! use dynamics_codegen::JointColumns;
@@ -32,7 +35,7 @@
 //! The steps are public modules for what the commands print: [`identify`](mod@identify) (the
 //! streamed factors, the rank, the estimate, the consistent estimate), [`excite`](mod@excite)
 //! (the Fourier series, the limits, the search), [`trajectory`] (samples read from CSV, missing
-//! derivatives by differences), the evaluation of a joint's tape four samples at a time
+//! derivatives by differences, a quintic move), the evaluation of a joint's tape four samples at a time
 //! ([`joint_tape`], [`lanes`]), and the dense linear algebra by nalgebra ([`linear_algebra`]).
 
 mod error;
@@ -44,6 +47,7 @@ pub mod joint_tape;
 pub mod lanes;
 pub mod linear_algebra;
 mod regressor;
+pub mod sizing;
 pub mod text;
 pub mod trajectory;
 

@@ -41,14 +41,14 @@
 use super::values::settings;
 use super::{load, robot_failure, usage, write_svg, Failure};
 use crate::args::Identify;
-use crate::description;
 use crate::plot::Envelope;
+use crate::report::description;
 use crate::report::identify::Report;
 use crate::report::identify_figure as figure;
-use crate::sizing::unit;
 use dynamics_codegen::Parameter;
 use dynamics_identification::identify::consistent::Consistent;
 use dynamics_identification::identify::predict::Prediction;
+use dynamics_identification::sizing::unit;
 use dynamics_identification::{identify, predict, Error, Identified, Options, Regressor, Samples};
 
 pub fn run(args: &Identify) -> Result<String, Failure> {

@@ -1,6 +1,6 @@
 //! `dynamics size ROBOT (--csv FILE | --from Q --to Q [--duration T] [--samples N])
 //! [--set NAME=VALUE].. [--svg FILE] [--json]`: actuator sizing along a trajectory
-//! ([`crate::sizing`]), read as a stream ([`dynamics_identification::trajectory`]).
+//! ([`dynamics_identification::sizing`], its figure [`crate::report::sizing`]), read as a stream ([`dynamics_identification::trajectory`]).
 
 use super::values::{joints, settings};
 use super::{load, Failure};
@@ -8,10 +8,11 @@ use super::{usage, write_svg};
 use crate::args::Size;
 use crate::budget::{time_per_unit, Cost, Progress};
 use crate::format::unsigned_zero;
-use crate::plot;
-use crate::sizing::{self, Sizer, TERMS};
-use crate::terms::TermsTape;
+use crate::plot::{self, Envelope};
+use crate::report::sizing::figure;
 use dynamics_codegen::model::JointKind;
+use dynamics_identification::sizing::terms::TermsTape;
+use dynamics_identification::sizing::{unit, Sizer, SERIES, TERMS};
 use dynamics_identification::trajectory;
 use serde_json::json;
 use std::fmt::Write as _;
@@ -30,7 +31,8 @@ pub fn run(args: &Size) -> Result<String, Failure> {
     let mut terms = TermsTape::new(&robot, &eq, &fields).map_err(Failure::File)?;
     let n = robot.joints.len();
     let kinds: Vec<JointKind> = robot.joints.iter().map(|j| j.kind).collect();
-    let mut sizer = Sizer::new(&mut terms, n, args.svg.is_some());
+    let envelope = args.svg.is_some().then(|| Envelope::new(SERIES * n));
+    let mut sizer = Sizer::new(&mut terms, n, envelope);
     let source = if let Some(path) = &args.csv {
         let method = read(path, n, &mut sizer)?;
         format!("{path}, {method}")
@@ -84,10 +86,9 @@ pub fn run(args: &Size) -> Result<String, Failure> {
             ),
         }));
     }
-    if let (Some(path), Some(envelope)) = (&args.svg, &sizer.envelope) {
+    if let (Some(path), Some(envelope)) = (&args.svg, &sizer.series) {
         let title = format!("{}: joint torques and power ({source})", robot.name);
-        let figure = sizing::figure(title, &kinds, envelope);
-        write_svg(path, &figure)?;
+        write_svg(path, &figure(title, &kinds, envelope))?;
     }
     Ok(if args.json {
         json_report(&robot.name, &source, &kinds, &sizer)
@@ -119,7 +120,11 @@ fn check_move(from: &[f64], to: &[f64], duration: f64) -> Result<(), Failure> {
 
 /// Streams the CSV file at `path` into `sizer`, with progress on stderr for a long file.
 /// How q̇ and q̈ were had.
-fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Failure> {
+fn read(
+    path: &str,
+    n: usize,
+    sizer: &mut Sizer<'_, Option<Envelope>>,
+) -> Result<&'static str, Failure> {
     let file = std::fs::File::open(path).map_err(|e| Failure::File(format!("{path}: {e}")))?;
     let total = file.metadata().map(|m| m.len()).unwrap_or(0);
     let mut reported = 0;
@@ -141,7 +146,12 @@ fn read(path: &str, n: usize, sizer: &mut Sizer<'_>) -> Result<&'static str, Fai
 
 /// The report as aligned columns; the terms as shares of τ at its peak (signed, summing to
 /// 100 %).
-fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> String {
+fn table(
+    name: &str,
+    source: &str,
+    kinds: &[JointKind],
+    sizer: &Sizer<'_, Option<Envelope>>,
+) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -157,10 +167,10 @@ fn table(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> St
         "RMS τ",
         "peak power",
         "at t (s)",
-        TERMS.map(|t| t.0).join(", ")
+        TERMS.join(", ")
     );
     for (j, (r, &kind)) in sizer.joints.iter().zip(kinds).enumerate() {
-        let unit = sizing::unit(kind);
+        let unit = unit(kind);
         let shares: Vec<String> = r
             .terms_at_peak
             .iter()
@@ -192,7 +202,12 @@ fn share(term: f64, terms: &[f64; 5]) -> String {
     }
 }
 
-fn json_report(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>) -> String {
+fn json_report(
+    name: &str,
+    source: &str,
+    kinds: &[JointKind],
+    sizer: &Sizer<'_, Option<Envelope>>,
+) -> String {
     let joints: Vec<serde_json::Value> = sizer
         .joints
         .iter()
@@ -201,10 +216,10 @@ fn json_report(name: &str, source: &str, kinds: &[JointKind], sizer: &Sizer<'_>)
             let terms: serde_json::Map<String, serde_json::Value> = TERMS
                 .iter()
                 .zip(r.terms_at_peak)
-                .map(|((name, _), x)| ((*name).to_string(), json!(unsigned_zero(x))))
+                .map(|(name, x)| ((*name).to_string(), json!(unsigned_zero(x))))
                 .collect();
             json!({
-                "unit": sizing::unit(kind),
+                "unit": unit(kind),
                 "peak": unsigned_zero(r.peak),
                 "peak_time": r.peak_time,
                 "rms": r.rms,

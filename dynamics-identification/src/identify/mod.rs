@@ -11,9 +11,11 @@
 //! * [`estimate`]: the identifiable parameters ([`rank`]), two-step weighted least squares,
 //!   standard deviations, condition number ([`crate::linear_algebra`]);
 //! * [`consistent`]: the physically consistent estimate beside it (each link's
-//!   [`pseudo_inertia`] positive semidefinite);
+//!   [`pseudo_inertia`] positive semidefinite), its links as a description gives bodies
+//!   ([`about_com`]);
 //! * [`predict`]: the torques an estimate predicts, on the data of the fit or on others.
 
+pub mod about_com;
 pub mod base;
 pub mod consistent;
 pub mod decimate;

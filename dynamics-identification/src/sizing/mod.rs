@@ -3,25 +3,45 @@
 //! mechanical power `τ q̇`, and the five terms at the peak.
 //!
 //! The RMS is over time, by the trapezoidal rule on `τ²` (samples need not be evenly spaced);
-//! each peak is the sample of largest magnitude. Samples are consumed one at a time.
+//! each peak is the sample of largest magnitude. Samples are consumed one at a time; each
+//! sample's values can also go to a [`Series`] (the figure of `dynamics size --svg`).
+//!
+//! The terms themselves, four samples at a time, are [`terms`].
 
-use crate::plot::{Envelope, Figure, Line, Panel};
-use crate::terms::{At, Terms, TermsTape};
+pub mod terms;
+
+use crate::lanes::LANES;
+use crate::trajectory::Sample;
 use dynamics_codegen::model::JointKind;
-use dynamics_identification::lanes::LANES;
-use dynamics_identification::trajectory::Sample;
+use terms::{At, Terms, TermsTape};
 
-/// The terms of τ, in the order [`Terms`] lists them.
-pub const TERMS: [(&str, &str); 5] = [
-    ("inertial", "#1f77b4"),
-    ("coriolis", "#ff7f0e"),
-    ("gravity", "#2ca02c"),
-    ("actuator", "#9467bd"),
-    ("friction", "#d62728"),
-];
+/// The names of the terms of τ, in the order [`Terms`] lists them.
+pub const TERMS: [&str; 5] = ["inertial", "coriolis", "gravity", "actuator", "friction"];
 
-/// Series per joint in the envelope: τ, its five terms, the power.
-const SERIES: usize = 7;
+/// Values per joint that a [`Series`] receives for each sample: τ, its five terms (in the order
+/// of [`TERMS`]), the power.
+pub const SERIES: usize = 7;
+
+/// What receives each sample's values besides the sizing's report, e.g. a decimation for a
+/// figure.
+pub trait Series {
+    /// The sample at time `t`: [`SERIES`] values per joint, joint after joint.
+    fn push(&mut self, t: f64, values: &[f64]);
+}
+
+/// No series kept.
+impl Series for () {
+    fn push(&mut self, _: f64, _: &[f64]) {}
+}
+
+/// A series kept or not.
+impl<S: Series> Series for Option<S> {
+    fn push(&mut self, t: f64, values: &[f64]) {
+        if let Some(series) = self {
+            series.push(t, values);
+        }
+    }
+}
 
 /// What one joint needs.
 #[derive(Clone, Debug, Default)]
@@ -41,8 +61,8 @@ pub struct JointReport {
 }
 
 /// The sizing of a robot as samples arrive (their terms evaluated [`LANES`] at a time: call
-/// [`Sizer::finish`] after the last).
-pub struct Sizer<'a> {
+/// [`Sizer::finish`] after the last), each sample's values also pushed to `series`.
+pub struct Sizer<'a, S: Series = ()> {
     terms: &'a mut TermsTape,
     /// The samples waiting for a group of [`LANES`], and how many.
     waiting: Vec<Sample>,
@@ -51,16 +71,16 @@ pub struct Sizer<'a> {
     pub samples: usize,
     pub start: f64,
     pub end: f64,
-    pub envelope: Option<Envelope>,
+    pub series: S,
     /// The first sample whose τ² or power is not a finite number: its line and time.
     pub non_finite: Option<(usize, f64, (usize, String, f64))>,
     values: Vec<f64>,
 }
 
-impl<'a> Sizer<'a> {
-    /// A sizing of `n` joints; with `plot`, the series are decimated for a figure.
+impl<'a, S: Series> Sizer<'a, S> {
+    /// A sizing of `n` joints whose samples' values also go to `series`.
     #[must_use]
-    pub fn new(terms: &'a mut TermsTape, n: usize, plot: bool) -> Sizer<'a> {
+    pub fn new(terms: &'a mut TermsTape, n: usize, series: S) -> Sizer<'a, S> {
         Sizer {
             terms,
             waiting: Vec::with_capacity(LANES),
@@ -69,7 +89,7 @@ impl<'a> Sizer<'a> {
             samples: 0,
             start: 0.0,
             end: 0.0,
-            envelope: plot.then(|| Envelope::new(SERIES * n)),
+            series,
             non_finite: None,
             values: vec![0.0; SERIES * n],
         }
@@ -163,9 +183,7 @@ impl<'a> Sizer<'a> {
             v[1..6].copy_from_slice(&parts);
             v[6] = power;
         }
-        if let Some(envelope) = &mut self.envelope {
-            envelope.push(t, &self.values);
-        }
+        self.series.push(t, &self.values);
     }
 }
 
@@ -178,81 +196,12 @@ pub fn unit(kind: JointKind) -> &'static str {
     }
 }
 
-/// The figure of a sizing: per joint, τ and its terms (left) and the power (right). Terms that
-/// are zero all along are left out.
-#[must_use]
-pub fn figure<'e>(title: String, kinds: &[JointKind], envelope: &'e Envelope) -> Figure<'e> {
-    let zero = |series: usize| envelope_is_zero(envelope, series);
-    let present: Vec<bool> = (0..5)
-        .map(|k| (0..kinds.len()).any(|j| !zero(SERIES * j + 1 + k)))
-        .collect();
-    let mut legend = vec![("τ".to_string(), "#000000")];
-    legend.extend(
-        TERMS
-            .iter()
-            .zip(&present)
-            .filter(|(_, &p)| p)
-            .map(|((name, color), _)| ((*name).to_string(), *color)),
-    );
-    legend.push(("power τ q̇".to_string(), "#17becf"));
-    let rows = kinds
-        .iter()
-        .enumerate()
-        .map(|(j, &kind)| {
-            let base = SERIES * j;
-            let mut lines: Vec<Line> = TERMS
-                .iter()
-                .enumerate()
-                .filter(|&(k, _)| present[k] && !zero(base + 1 + k))
-                .map(|(k, (name, color))| Line {
-                    label: (*name).to_string(),
-                    color,
-                    series: base + 1 + k,
-                    bold: false,
-                })
-                .collect();
-            lines.push(Line {
-                label: "τ".into(),
-                color: "#000000",
-                series: base,
-                bold: true,
-            });
-            vec![
-                Panel {
-                    title: format!("joint {}: τ{} ({})", j + 1, j + 1, unit(kind)),
-                    lines,
-                },
-                Panel {
-                    title: format!("joint {}: power (W)", j + 1),
-                    lines: vec![Line {
-                        label: "power".into(),
-                        color: "#17becf",
-                        series: base + 6,
-                        bold: false,
-                    }],
-                },
-            ]
-        })
-        .collect();
-    Figure {
-        title,
-        legend,
-        rows,
-        widths: vec![560.0, 300.0],
-        envelope,
-    }
-}
-
-fn envelope_is_zero(envelope: &Envelope, series: usize) -> bool {
-    envelope.range(series) == (0.0, 0.0)
-}
-
 #[cfg(test)]
 mod tests {
+    use super::terms::{At, TermsTape};
     use super::Sizer;
-    use crate::terms::{At, TermsTape};
+    use crate::trajectory::Sample;
     use dynamics_codegen::{load, Source};
-    use dynamics_identification::trajectory::Sample;
     use serde_json::Value;
 
     fn root() -> std::path::PathBuf {
@@ -316,7 +265,7 @@ mod tests {
             }
         }
         // The sizing's peak is the largest |τ| over the samples (not a whole number of groups).
-        let mut sizer = Sizer::new(&mut tape, 6, false);
+        let mut sizer = Sizer::new(&mut tape, 6, ());
         for s in &samples[..samples.len() - 1] {
             sizer.push(s);
         }

@@ -3,11 +3,11 @@
 //! τ, `C q̇` (`coriolis_torques`), g with the springs (`gravity_torques`) and the friction, the
 //! actuators' `I_a q̈` from the description, and the links' inertial term the rest of τ.
 
+use crate::joint_tape::{gather, JointTape, Work};
+use crate::lanes::{Four, LANES};
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::pipeline::TapeScalar;
 use dynamics_codegen::Equations;
-use dynamics_identification::joint_tape::{gather, JointTape, Work};
-use dynamics_identification::lanes::{Four, LANES};
 
 /// The terms of the inverse dynamics apart, per joint.
 #[derive(Clone, Debug, PartialEq)]
