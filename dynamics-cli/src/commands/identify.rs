@@ -32,7 +32,7 @@
 //!
 //! `--consistent`: beside the plain estimate, standard parameters π with every link's
 //! pseudo-inertia `J_i ⪰ 0` minimising `‖R_w (P π) − z_w‖²` (`identify::consistent`), and
-//! with `--description-out` the TOML description rewritten with them (`identify::description`).
+//! with `--description-out` the TOML description rewritten with them (`report::description`).
 //!
 //! `Y` is never held: each joint's rows update a triangular factor as they are read
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
