@@ -13,7 +13,7 @@
 
 use dynamics_runtime::Dynamics;
 
-/// Traps at the crate root.
+/// Traps in the module where the robots are derived.
 #[allow(dead_code, non_upper_case_globals)]
 mod traps {
     pub fn sin(v: f64) -> f64 {

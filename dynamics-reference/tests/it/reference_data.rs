@@ -2,9 +2,7 @@
 //! (`tests/data/reference/data/*.json`, computed with Pinocchio and cross-checked with
 //! the Robotics Toolbox) for all robots and all 20 samples.
 
-mod common;
-
-use common::{json_files, load_robot, matrix4_error, matrix_error, scaled_error};
+use crate::common::{json_files, load_robot, matrix4_error, matrix_error, scaled_error};
 use dynamics_reference::nalgebra::{DMatrix, Matrix4};
 use dynamics_reference::{Convention, Robot};
 use serde::Deserialize;
@@ -144,7 +142,7 @@ fn matches_reference_data_for_all_robots() {
 /// Pinocchio 4.1.0, checked against the URDF its parameters come from).
 #[test]
 fn matches_the_panda_data() {
-    let path = common::reference_dir().join("../panda/data.json");
+    let path = crate::common::reference_dir().join("../panda/data.json");
     let text = std::fs::read_to_string(&path).expect("tests/data/panda/data.json");
     let data: DataFile = serde_json::from_str(&text).expect("panda data");
     assert_eq!((data.n, data.samples.len()), (7, 20));

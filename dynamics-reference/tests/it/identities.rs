@@ -1,9 +1,7 @@
 //! Structural identities of the Lagrangian dynamics, checked on every reference robot at
 //! pseudo-random states (independently of the stored reference data).
 
-mod common;
-
-use common::{all_robots, matrix4_error, matrix_error, scaled_error};
+use crate::common::{all_robots, matrix4_error, matrix_error, scaled_error};
 use dynamics_reference::nalgebra::{DMatrix, DVector};
 use dynamics_reference::{JointKind, Robot};
 use dynamics_test_support::Rng;
@@ -284,7 +282,7 @@ fn from_json_fills_defaults_and_reports_errors() {
 fn modified_convention_derivative_is_not_q_times_a() {
     // In Craig's form the joint motion is the last factor of A_i, so the book's
     // ∂A_i/∂q_i = Q_i A_i (eqs. 6.23, 6.26) does not hold; the crate uses X·Q·Z.
-    let robot = common::load_robot("random2");
+    let robot = crate::common::load_robot("random2");
     assert_eq!(robot.convention, dynamics_reference::Convention::Modified);
     for (i, joint) in robot.joints.iter().enumerate() {
         let q_i = 0.3;

@@ -1,9 +1,7 @@
 //! The worked examples of Niku, *Introduction to Robotics*, chapter 6, with the printed
 //! numbers and formulas typed in by hand.
 
-mod common;
-
-use common::{load_robot, matrix4_error};
+use crate::common::{load_robot, matrix4_error};
 use dynamics_reference::nalgebra::{DMatrix, Matrix4};
 use dynamics_reference::statics::{equivalent_wrench, joint_forces};
 use dynamics_reference::{q_matrix, JointKind};

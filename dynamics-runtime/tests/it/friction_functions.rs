@@ -1,16 +1,13 @@
 //! `Real::sign` and `Real::tanh`, the functions of the friction torque
 //! `f_v q̇ + f_c sign(q̇) + f_0` (smooth form `f_c tanh(q̇ / ε)`), against std: tanh within
 //! 2 ulp in `f64` (musl's `libm` against glibc, each within about 1 ulp of the exact value),
-//! 1 ulp of the exact value in `f32`, at random arguments of every magnitude and a dense sweep of [−20, 20]; sign exactly,
-//! with 0 at ±0 and NaN through.
+//! 1 ulp of the exact value in `f32`, at random arguments of every magnitude and a dense sweep of
+//! [−20, 20]; sign exactly, with 0 at ±0 and NaN through.
 
 use dynamics_runtime::Real;
 use dynamics_test_support::Rng;
 
-// Shared with `trig.rs`, whose worst-case tracking this test does not use.
-#[allow(dead_code)]
-mod ulp;
-use ulp::{err_f32, err_f64};
+use crate::ulp::{err_f32, err_f64};
 
 /// Arguments: a sweep of [−20, 20] (tanh's whole curve and its saturation), random ones of
 /// every magnitude and sign, and the special values.

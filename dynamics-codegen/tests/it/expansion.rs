@@ -3,7 +3,7 @@
 
 use dynamics_codegen::{derive, derive_dynamics, front, model};
 
-const PUMA: &str = include_str!("../../tests/data/reference/robots/puma560.json");
+const PUMA: &str = include_str!("../../../tests/data/reference/robots/puma560.json");
 
 fn expand(source: &str) -> String {
     derive_dynamics(source.parse().expect("tokens")).to_string()

@@ -4,9 +4,7 @@
 //! its own thread under `catch_unwind` and must finish within `fuzz::BOUND`. The generator is
 //! deterministic (a fixed-seed generator), so a failure is reproducible; the case is printed.
 
-// Each test binary uses part of the shared module.
-#[allow(dead_code)]
-mod fuzz;
+use crate::fuzz;
 
 use dynamics_codegen::{derive_dynamics, front};
 use dynamics_test_support::Rng;
@@ -270,8 +268,8 @@ fn adversarial_inputs_never_panic_or_hang() {
 
 #[test]
 fn random_description_files_never_panic_or_hang() {
-    let toml = include_str!("../../robots/puma560.toml");
-    let json = include_str!("../../tests/data/reference/robots/stanford.json");
+    let toml = include_str!("../../../robots/puma560.toml");
+    let json = include_str!("../../../tests/data/reference/robots/stanford.json");
     let mut rng = Rng::new(0xDEAD_BEEF_CAFE_F00D);
     for k in 0..600 {
         let (path, base) = if k % 2 == 0 {

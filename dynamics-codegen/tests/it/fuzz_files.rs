@@ -9,15 +9,13 @@
 //!   one about the file's content names `path:line:col` inside the text, unless about the whole.
 //!
 //! proptest, seed fixed: 1,500 cases by default (about 10 s in the debug build). Long run:
-//! `DYNAMICS_FUZZ_CASES=40000 cargo test -p dynamics-codegen --test fuzz_files -- --nocapture`.
+//! `DYNAMICS_FUZZ_CASES=40000 cargo test -p dynamics-codegen --test it fuzz_files -- --nocapture`.
 //! Run for issue 15 (debug build, 2 cores shared with other builds): a first run, 20,000 to
 //! 30,000 cases in 4:48,
 //! found the JSON byte columns (a BOM in a string), fixed; then 40,000 cases in 7:45, no failure.
 //! The other fixes were found by the default run: see the regression tests at the end.
 
-// Each test binary uses part of the shared module.
-#[allow(dead_code)]
-mod fuzz;
+use crate::fuzz;
 
 use dynamics_codegen::{check, derive_dynamics, front};
 use proptest::prelude::*;
@@ -27,63 +25,66 @@ use proptest::sample::Index;
 const BASES: [(&str, &str); 18] = [
     (
         "niku_example_6_1.toml",
-        include_str!("../../robots/niku_example_6_1.toml"),
+        include_str!("../../../robots/niku_example_6_1.toml"),
     ),
     (
         "niku_example_6_2.toml",
-        include_str!("../../robots/niku_example_6_2.toml"),
+        include_str!("../../../robots/niku_example_6_2.toml"),
     ),
     (
         "niku_example_6_3.toml",
-        include_str!("../../robots/niku_example_6_3.toml"),
+        include_str!("../../../robots/niku_example_6_3.toml"),
     ),
     (
         "niku_example_6_4.toml",
-        include_str!("../../robots/niku_example_6_4.toml"),
+        include_str!("../../../robots/niku_example_6_4.toml"),
     ),
     (
         "niku_example_6_5.toml",
-        include_str!("../../robots/niku_example_6_5.toml"),
+        include_str!("../../../robots/niku_example_6_5.toml"),
     ),
     (
         "niku_example_6_8.toml",
-        include_str!("../../robots/niku_example_6_8.toml"),
+        include_str!("../../../robots/niku_example_6_8.toml"),
     ),
-    ("panda.toml", include_str!("../../robots/panda.toml")),
-    ("puma560.toml", include_str!("../../robots/puma560.toml")),
-    ("stanford.toml", include_str!("../../robots/stanford.toml")),
-    ("ur5.toml", include_str!("../../robots/ur5.toml")),
+    ("panda.toml", include_str!("../../../robots/panda.toml")),
+    ("puma560.toml", include_str!("../../../robots/puma560.toml")),
+    (
+        "stanford.toml",
+        include_str!("../../../robots/stanford.toml"),
+    ),
+    ("ur5.toml", include_str!("../../../robots/ur5.toml")),
     (
         "niku_2link.json",
-        include_str!("../../tests/data/reference/robots/niku_2link.json"),
+        include_str!("../../../tests/data/reference/robots/niku_2link.json"),
     ),
     (
         "niku_polar.json",
-        include_str!("../../tests/data/reference/robots/niku_polar.json"),
+        include_str!("../../../tests/data/reference/robots/niku_polar.json"),
     ),
     (
         "puma560.json",
-        include_str!("../../tests/data/reference/robots/puma560.json"),
+        include_str!("../../../tests/data/reference/robots/puma560.json"),
     ),
     (
         "random1.json",
-        include_str!("../../tests/data/reference/robots/random1.json"),
+        include_str!("../../../tests/data/reference/robots/random1.json"),
     ),
     (
         "random2.json",
-        include_str!("../../tests/data/reference/robots/random2.json"),
+        include_str!("../../../tests/data/reference/robots/random2.json"),
     ),
     (
         "random5.json",
-        include_str!("../../tests/data/reference/robots/random5.json"),
+        include_str!("../../../tests/data/reference/robots/random5.json"),
     ),
     (
         "stanford.json",
-        include_str!("../../tests/data/reference/robots/stanford.json"),
+        include_str!("../../../tests/data/reference/robots/stanford.json"),
     ),
     (
         "ur5.json",
-        include_str!("../../tests/data/reference/robots/ur5.json"),
+        include_str!("../../../tests/data/reference/robots/ur5.json"),
     ),
 ];
 

@@ -14,15 +14,13 @@
 //!
 //! proptest, seed fixed: 1,000 cases by default (about 8 s of CPU in the debug build, 14 to
 //! 20 s on the 2-core machine shared with other builds; `huge_files` included). Long run:
-//! `DYNAMICS_FUZZ_CASES=30000 cargo test -p dynamics-codegen --test fuzz_urdf --release -- --nocapture`.
+//! `DYNAMICS_FUZZ_CASES=30000 cargo test -p dynamics-codegen --test it fuzz_urdf --release -- --nocapture`.
 //! Run for issue 26: the default run found files of many links quadratic to read (more than
 //! 10 s for 28,000 links; fixed, see `front/urdf/tests/errors.rs`); then 30,000 cases in
 //! 10:45, and after the last fixes 60,000 in 19:47 (release build, 2 cores shared with other
 //! builds), no failure.
 
-// Each test binary uses part of the shared module.
-#[allow(dead_code)]
-mod fuzz;
+use crate::fuzz;
 
 use dynamics_codegen::{check, derive_dynamics, front};
 use fuzz::urdf::{ATTRIBUTES, EXTREMES, PIECES, TAGS, VALUES};

@@ -5,7 +5,7 @@
 //! so that a new row of the table fails this test until the stub is refreshed:
 //!
 //! ```text
-//! DYNAMICS_BLESS=1 cargo test -p dynamics-tests --test python_stubs
+//! DYNAMICS_BLESS=1 cargo test -p dynamics-tests --test it python_stubs
 //! ```
 //!
 //! which rewrites that block (the rest of the stub, the constructors and attributes, is written
@@ -85,9 +85,9 @@ fn declaration(method: Method) -> String {
 fn render() -> String {
     let mut text = format!(
         "{BEGIN} (`dynamics-runtime/src/methods.rs`) by\n    \
-         # `tests/tests/python_stubs.rs`: `DYNAMICS_BLESS=1 cargo test -p dynamics-tests --test\n    \
-         # python_stubs` rewrites them to the end marker. Each input is one state, shape (n,), or a\n    \
-         # batch, shape (N, n); the result has (N,) before one state's shape for a batch.\n"
+         # `tests/tests/it/python_stubs.rs`: `DYNAMICS_BLESS=1 cargo test -p dynamics-tests\n    \
+         # --test it python_stubs` rewrites them to the end marker. Each input is one state, shape\n    \
+         # (n,), or a batch, shape (N, n); the result has (N,) before one state's shape for a batch.\n"
     );
     for &method in Method::ALL {
         text += &declaration(method);
@@ -127,7 +127,7 @@ fn the_python_stub_declares_every_method_of_the_table() {
         panic!(
             "{} is stale from line {}:\n  committed: {}\n  now:       {}\n\nIf the method \
              table changed, refresh the stub with\n  DYNAMICS_BLESS=1 cargo test -p \
-             dynamics-tests --test python_stubs\nand review `git diff`.",
+             dynamics-tests --test it python_stubs\nand review `git diff`.",
             path.display(),
             first_line + i,
             old.get(i).unwrap_or(&"(none)"),

@@ -44,11 +44,11 @@ use lint_clean::Rod;
 fn example_6_4_carries_the_book_equations() {
     assert_eq!(
         Example64::EQUATIONS,
-        include_str!("../../dynamics-cli/tests/golden/niku_example_6_4.txt")
+        include_str!("../../../dynamics-cli/tests/golden/niku_example_6_4.txt")
     );
     assert_eq!(
         Example64::EQUATIONS_LATEX,
-        include_str!("../../dynamics-cli/tests/golden/niku_example_6_4.tex")
+        include_str!("../../../dynamics-cli/tests/golden/niku_example_6_4.tex")
     );
     // the functions return the constants, also in a const context
     const TEXT: &str = Example64::equations();

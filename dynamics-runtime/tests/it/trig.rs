@@ -5,15 +5,15 @@
 //! either side of the fast path's bound, huge values, NaN and ±∞.
 //!
 //! Errors are in ulps of the reference value: for `f32`, the `f64` std result, unrounded, in
-//! `f32` ulps. `cargo test -p dynamics-runtime --test trig -- --nocapture` prints the worst
+//! `f32` ulps. `cargo test -p dynamics-runtime --test it trig:: -- --nocapture` prints the worst
 //! cases; `-- --ignored` also runs the exhaustive test of every `f32` of the fast range.
 
 use dynamics_runtime::Real;
 use dynamics_test_support::Rng;
 
 mod lanes;
-mod ulp;
-use ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
+
+use crate::ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
 
 /// Fast path bounds (`src/trig/reduction.rs`).
 const BOUND_F64: f64 = 65_536.0;
@@ -376,7 +376,7 @@ fn pythagoras_symmetry_and_bounds() {
 }
 
 /// Every `f32` of the fast range, against std's `f64` result. About a minute in release:
-/// `cargo test --release -p dynamics-runtime --test trig -- --ignored --nocapture`.
+/// `cargo test --release -p dynamics-runtime --test it trig:: -- --ignored --nocapture`.
 #[test]
 #[ignore = "exhaustive: about a minute in release mode"]
 fn f32_exhaustive_fast_range() {

@@ -10,13 +10,11 @@
 //! rustc rejects it before any macro sees it.
 //!
 //! proptest, seed fixed: 1,500 cases by default (about 4 s in the debug build). Long run:
-//! `DYNAMICS_FUZZ_CASES=60000 cargo test -p dynamics-codegen --test fuzz_attributes -- --nocapture`.
+//! `DYNAMICS_FUZZ_CASES=60000 cargo test -p dynamics-codegen --test it fuzz_attributes -- --nocapture`.
 //! Run for issue 15: 60,000 cases in 5 min (debug build, 2 cores shared with other builds),
 //! 15,318 did not lex, 42,321 gave errors, 2,361 gave code; no failure.
 
-// Each test binary uses part of the shared module.
-#[allow(dead_code)]
-mod fuzz;
+use crate::fuzz;
 
 use dynamics_codegen::derive_dynamics;
 use proc_macro2::{Delimiter, Spacing, TokenStream, TokenTree};

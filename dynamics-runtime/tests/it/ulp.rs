@@ -1,4 +1,5 @@
-//! Errors in ulps, and the worst error seen, for the accuracy tests of `trig.rs`.
+//! Errors in ulps, and the worst error seen, for the accuracy tests of `trig.rs` and
+//! `friction_functions.rs`.
 
 use dynamics_runtime::Real;
 
