@@ -18,7 +18,7 @@
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
 
-mod c_support;
+use crate::c_support;
 
 use c_support::{
     check_against_graph, compile_and_run, compile_and_run_builds, printed, robot, root,

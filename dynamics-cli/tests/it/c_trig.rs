@@ -5,7 +5,7 @@
 //! platform's `sin` and `cos` (`f64`), or of the correctly rounded `f32` (`float`), on the fast
 //! range. NaN in, NaN out.
 
-mod c_support;
+use crate::c_support;
 
 use c_support::{compilers, robot};
 use dynamics_runtime::Real;

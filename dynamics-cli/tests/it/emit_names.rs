@@ -3,8 +3,8 @@
 //! a C local `p_2`) or a clear error where they are written; two robots whose names give one C
 //! prefix (`arm-a`, `arm_a`) cannot be included together, and `--prefix` separates them.
 
-mod c_support;
-mod compile_support;
+use crate::c_support;
+use crate::compile_support;
 
 use compile_support::{c_compile, dynamics_in, emitted, rustc_check, scratch};
 use std::path::Path;

@@ -2,9 +2,7 @@
 //! parameters (`synthetic`): the consistent estimate equals the plain one where that is
 //! physically consistent, and is consistent where the plain one is not.
 
-// Each test binary uses part of the synthetic data's helpers.
-#[allow(dead_code)]
-mod synthetic;
+use crate::synthetic;
 
 use dynamics_codegen::derive;
 use dynamics_codegen::model::Robot;

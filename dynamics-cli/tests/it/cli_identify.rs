@@ -3,9 +3,7 @@
 //! the predictions the tests check are the reduced regressor's graph evaluated by `Graph::eval`,
 //! not by the tape `identify` uses.
 
-// Each test binary uses part of the synthetic data's helpers.
-#[allow(dead_code)]
-mod synthetic;
+use crate::synthetic;
 
 use dynamics_codegen::model::Robot;
 use dynamics_codegen::symbolic::Var;

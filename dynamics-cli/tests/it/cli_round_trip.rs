@@ -6,9 +6,7 @@
 //! inspect`'s checks, the derive's expansion of `#[dynamics(file = "...")]` on it has no error,
 //! and the module `dynamics emit` writes from it type-checks against `dynamics-runtime`.
 
-// Each test binary uses part of the synthetic data's helpers.
-#[allow(dead_code)]
-mod synthetic;
+use crate::synthetic;
 
 use std::path::{Path, PathBuf};
 use synthetic::{dynamics, normal, scratch, torques, write_csv, State};

@@ -4,8 +4,8 @@
 //! compiler found accepts under strict flags, included once and twice. (`c_header.rs` runs some
 //! of the headers against reference data; this checks that all of them build.)
 
-mod c_support;
-mod compile_support;
+use crate::c_support;
+use crate::compile_support;
 
 use compile_support::{c_compile, emitted, root, rustc_check, scratch};
 use dynamics_codegen::Family;

@@ -4,7 +4,7 @@
 //! other than a quarter turn, goes into its sine and cosine. Compiled and checked against the
 //! graph as `c_header.rs` does, with parameter values that are not the defaults.
 
-mod c_support;
+use crate::c_support;
 
 use c_support::{check_against_graph, compile_and_run, Robot, State};
 use dynamics_codegen::{derive, front};

@@ -8,7 +8,7 @@
 //! The runs are the binary's (a crash or an abort is one too), two at a time, on a 2-joint robot
 //! whose equations derive in milliseconds.
 
-mod fuzz;
+use crate::fuzz;
 
 use fuzz::{check, run_all, Case, Outcome};
 use std::path::{Path, PathBuf};
