@@ -15,7 +15,7 @@
 //!   usage error that names `--cutoff`.
 //!
 //! proptest, seed fixed: 96 cases, each through the five readers (a few seconds in the debug
-//! build). Long run: `DYNAMICS_FUZZ_CASES=5000 cargo test -p dynamics-cli --test cli_csv`.
+//! build). Long run: `DYNAMICS_FUZZ_CASES=5000 cargo test -p dynamics-cli --test it cli_csv`.
 
 use proptest::prelude::*;
 use proptest::sample::Index;

@@ -10,12 +10,12 @@
 //!   compiles and runs as part of the `emitted_puma560` example, so the emitted module is
 //!   known to build;
 //! * `tests/golden/puma560.h`: `dynamics emit --lang c robots/puma560.toml`, the C header
-//!   (which `tests/c_header.rs` compiles and checks).
+//!   (which `tests/it/c_header.rs` compiles and checks).
 //!
 //! A stale file fails the test with a line diff. After a deliberate change, refresh them all:
 //!
 //! ```text
-//! DYNAMICS_BLESS=1 cargo test -p dynamics-cli --test golden
+//! DYNAMICS_BLESS=1 cargo test -p dynamics-cli --test it golden
 //! ```
 //!
 //! and review the change with `git diff`.
@@ -75,7 +75,7 @@ fn cases() -> Vec<Case> {
         args: vec!["emit".into(), "robots/puma560.toml".into()],
         file: "examples/emitted_puma560.rs".into(),
     });
-    // The C header: compiled and checked against Pinocchio by `tests/c_header.rs`.
+    // The C header: compiled and checked against Pinocchio by `tests/it/c_header.rs`.
     cases.push(Case {
         args: ["emit", "--lang", "c", "robots/puma560.toml"]
             .map(String::from)
@@ -171,7 +171,7 @@ fn golden_files_are_current() {
     assert!(
         failures.is_empty(),
         "{}\n\nIf the change is intended, refresh the files with\n  \
-         DYNAMICS_BLESS=1 cargo test -p dynamics-cli --test golden\nand review `git diff`.",
+         DYNAMICS_BLESS=1 cargo test -p dynamics-cli --test it golden\nand review `git diff`.",
         failures.join("\n\n")
     );
 }
