@@ -57,9 +57,9 @@ class Robot:
     def _repr_latex_(self) -> str: ...
 
     # The methods, generated from the method table (`dynamics-runtime/src/methods.rs`) by
-    # `tests/tests/python_stubs.rs`: `DYNAMICS_BLESS=1 cargo test -p dynamics-tests --test
-    # python_stubs` rewrites them to the end marker. Each input is one state, shape (n,), or a
-    # batch, shape (N, n); the result has (N,) before one state's shape for a batch.
+    # `tests/tests/it/python_stubs.rs`: `DYNAMICS_BLESS=1 cargo test -p dynamics-tests
+    # --test it python_stubs` rewrites them to the end marker. Each input is one state, shape
+    # (n,), or a batch, shape (N, n); the result has (N,) before one state's shape for a batch.
     def mass_matrix(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
         """M(q), with the actuator inertia on the diagonal."""
     def coriolis_matrix(self, q: ArrayLike, qd: ArrayLike) -> NDArray[np.floating[Any]]:

@@ -1,5 +1,5 @@
 """The package's type information (``py.typed``, ``dh_dynamics/robot.pyi``, whose methods
-``tests/tests/python_stubs.rs`` generates from the method table): the stub against the methods a
+``tests/tests/it/python_stubs.rs`` generates from the method table): the stub against the methods a
 robot has at run time, and mypy on calls against the installed package, where a correct call
 type-checks and a missing argument or a misspelt method is an error (skipped without mypy)."""
 

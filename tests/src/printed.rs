@@ -2,7 +2,7 @@
 //! (`-1/2 m2 l1 l2 S2 θ̇2² + (1/2 m1 + m2) g l1 C1`, or the generator's `θ2'²`) into
 //! [`Term`]s, their expansion into
 //! monomials with exact rational coefficients ([`expand`]) and their grouped form ([`form`]),
-//! so that `tests/tests/readable_book.rs` can compare the generator's readable equations with
+//! so that `tests/tests/it/readable_book.rs` can compare the generator's readable equations with
 //! the book's, blind to the order of terms.
 
 use std::collections::BTreeMap;

@@ -38,7 +38,7 @@
 //! subnormal. Larger arguments than the bound, `±∞` and NaN go to `libm` (NaN in, NaN out).
 //!
 //! **Accuracy.** Within an ulp of the correctly rounded values (mpmath) in the fast range, for
-//! `f64` on random arguments and for `f32` on every argument; `tests/trig.rs` holds the bounds
+//! `f64` on random arguments and for `f32` on every argument; `tests/it/trig.rs` holds the bounds
 //! and the hardest cases. The measured errors and costs are in `docs/performance.md`.
 //!
 //! **Four at once** (`Real::sin_cos_4`, which generated code calls for groups of up to four

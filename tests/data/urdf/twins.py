@@ -4,7 +4,7 @@
 A twin is the robot of a URDF file written as a D-H table: the same joints, their axes along
 the z axes of modified (Craig) D-H frames, each link's mass, centre of mass and inertia
 re-expressed in its D-H frame. The URDF robots are compared with their twins in value (the test
-`tests/tests/urdf_robots.rs`) and in operation count (the issue asks for counts within 5 %).
+`tests/tests/it/urdf_robots.rs`) and in operation count (the issue asks for counts within 5 %).
 
 * `ur5`: the table below, derived by hand from the URDF's joint origins and axes (D-H frame 0 is
   the URDF's base_link frame).

@@ -1,0 +1,31 @@
+//! The workspace's integration tests, one module per file, in one test binary: one link of the
+//! generator, the runtime and the reference instead of one per file, and the robots of
+//! `dynamics_tests::robots` derived once for all. `cargo test -p dynamics-tests --test it
+//! regressor::` runs one file's tests. The UI tests (`../ui.rs`) are a binary of their own: they
+//! run cargo, and `.ci/run` runs them again with another target directory.
+
+mod base_parameters;
+mod batch;
+mod derivatives;
+mod energy_drift;
+mod forward_dynamics;
+mod friction;
+mod front_door;
+mod generics;
+mod keyword_fields;
+mod kinematics;
+mod lanes;
+mod layout;
+mod lint;
+mod niku_arm_examples;
+mod niku_lagrangian_examples;
+mod non_finite;
+mod properties;
+mod python_stubs;
+mod readable_book;
+mod readable_derive;
+mod reference_data;
+mod regressor;
+mod simplified;
+mod urdf_robots;
+mod urdf_twins;
