@@ -78,6 +78,16 @@ impl<'a> Source<'a> {
         }
     }
 
+    /// Its text: as given, or read from its path.
+    fn read(&self) -> Result<std::borrow::Cow<'a, str>, Vec<Diagnostic>> {
+        match self.text {
+            Some(text) => Ok(text.into()),
+            None => std::fs::read_to_string(self.path)
+                .map(Into::into)
+                .map_err(|e| vec![Diagnostic::of_file(self.path, e.to_string())]),
+        }
+    }
+
     /// Whether it is a URDF file.
     #[must_use]
     pub fn is_urdf(&self) -> bool {
@@ -103,15 +113,8 @@ pub struct Loaded {
 /// Every problem found, each with its file, line and column where it has them.
 pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
     let path = source.path;
-    let read;
-    let text = match source.text {
-        Some(text) => text,
-        None => {
-            read = std::fs::read_to_string(path)
-                .map_err(|e| vec![Diagnostic::of_file(path, e.to_string())])?;
-            &read
-        }
-    };
+    let text = source.read()?;
+    let text = text.as_ref();
     let (loaded, limits) = if source.is_urdf() {
         let loaded =
             front::load_urdf(path, text, source.chain, source.check_inertia).map_err(|errors| {
@@ -215,15 +218,8 @@ impl Loaded {
 /// The file's problems, each at its place.
 pub fn joint_limits(source: &Source<'_>) -> Result<Vec<Limit>, Vec<Diagnostic>> {
     let path = source.path;
-    let read;
-    let text = match source.text {
-        Some(text) => text,
-        None => {
-            read = std::fs::read_to_string(path)
-                .map_err(|e| vec![Diagnostic::of_file(path, e.to_string())])?;
-            &read
-        }
-    };
+    let text = source.read()?;
+    let text = text.as_ref();
     front::joint_limits(text, source.chain).map_err(|errors| {
         let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
         each.collect()
