@@ -2,7 +2,6 @@
 //! value, as the generated code would compute it, for the tests that check the trace itself on
 //! random robots.
 
-use dynamics_codegen::symbolic::Var;
 use dynamics_codegen::Equations;
 
 /// The joint variables, and the torques the forward dynamics' graph reads.
@@ -14,25 +13,20 @@ pub struct State<'a> {
     pub tau: &'a [f64],
 }
 
-/// The value of every node of `eq.graph` at `state`, with a zero wrench.
+/// The value of every node of `eq.graph` at `state`, with a zero wrench: the front door's
+/// evaluation ([`Equations::evaluate`]), by node index.
 ///
 /// # Panics
 /// If the graph reads a struct field: the robot must have none.
 #[must_use]
 pub fn evaluate(eq: &Equations, state: State) -> Vec<f64> {
-    // The offsets are constant nodes: their values do not depend on the inputs.
-    let constants = eq.graph.eval(|_| 0.0);
-    let offset = |i: u16| eq.angle_offsets[usize::from(i)].map_or(0.0, |id| constants[id.index()]);
     let State { q, qd, qdd, tau } = state;
-    eq.graph.eval(|v| match v {
-        Var::Q(i) => q[usize::from(i)],
-        Var::SinQ(i) => (q[usize::from(i)] + offset(i)).sin(),
-        Var::CosQ(i) => (q[usize::from(i)] + offset(i)).cos(),
-        Var::Qd(i) => qd[usize::from(i)],
-        Var::Qdd(i) => qdd[usize::from(i)],
-        Var::Tau(i) => tau[usize::from(i)],
-        Var::Param(k) => panic!("the robot has no struct fields, yet parameter {k} appears"),
-        // The regressor's placeholders never reach its outputs.
-        Var::Wrench(_) | Var::Inertial(_) | Var::Exact(_) => 0.0,
-    })
+    let state = dynamics_codegen::State {
+        fields: &[],
+        q,
+        qd,
+        qdd,
+        tau,
+    };
+    eq.evaluate(&state).into_vec()
 }

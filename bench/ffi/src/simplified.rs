@@ -158,6 +158,7 @@ mod tests {
                 q: &sample.q,
                 qd: &sample.qd,
                 qdd: &sample.qdd,
+                tau: &[],
             });
             let r = R::default();
             let derived = [

@@ -22,6 +22,7 @@ pub fn run(args: &Eval) -> Result<String, Failure> {
         q: &q,
         qd: &qd,
         qdd: &qdd,
+        tau: &[],
     });
     let e = Evaluation {
         tau: values.vector(&eq.tau),

@@ -16,6 +16,8 @@ pub struct State<'a> {
     pub qd: &'a [f64],
     /// Joint accelerations.
     pub qdd: &'a [f64],
+    /// Joint torques, which the forward dynamics read; empty for none applied.
+    pub tau: &'a [f64],
 }
 
 /// Every node of the equations' graph at one [`State`].
@@ -35,6 +37,12 @@ impl Values {
         ids.iter().map(|&id| self.of(id)).collect()
     }
 
+    /// Every node's value, by node index.
+    #[must_use]
+    pub fn into_vec(self) -> Vec<f64> {
+        self.0
+    }
+
     /// The values of `rows`, rows first.
     #[must_use]
     pub fn matrix(&self, rows: &[Vec<NodeId>]) -> Vec<Vec<f64>> {
@@ -43,14 +51,20 @@ impl Values {
 }
 
 impl Equations {
-    /// Every node at `state`. No wrench and no joint torque is given: the statics are those of
-    /// a zero wrench, the forward dynamics the motion with no torque applied.
+    /// Every node at `state`. No wrench is given: the statics are those of a zero wrench; the
+    /// forward dynamics are the motion under `state.tau` (none applied where it is empty).
     ///
     /// # Panics
     /// If `state` has fewer joints or fields than the equations read.
     #[must_use]
     pub fn evaluate(&self, state: &State<'_>) -> Values {
-        let State { fields, q, qd, qdd } = *state;
+        let State {
+            fields,
+            q,
+            qd,
+            qdd,
+            tau,
+        } = *state;
         let leaf = |v: Var, offsets: &[f64]| -> f64 {
             match v {
                 Var::Q(i) => q[usize::from(i)],
@@ -59,7 +73,8 @@ impl Equations {
                 Var::Qd(i) => qd[usize::from(i)],
                 Var::Qdd(i) => qdd[usize::from(i)],
                 Var::Param(k) => fields[usize::from(k)],
-                Var::Wrench(_) | Var::Tau(_) => 0.0,
+                Var::Tau(i) => tau.get(usize::from(i)).copied().unwrap_or(0.0),
+                Var::Wrench(_) => 0.0,
                 // The regressor's placeholders: the equations' outputs never read them.
                 Var::Inertial(_) | Var::Exact(_) => 0.0,
             }
@@ -102,6 +117,7 @@ mod tests {
             q: &[0.3],
             qd: &[1.5],
             qdd: &[0.5],
+            tau: &[],
         };
         let values = eq.evaluate(&state);
         let tau = values.vector(&eq.tau);
