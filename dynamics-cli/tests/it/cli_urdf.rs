@@ -55,7 +55,7 @@ fn urdf_errors_name_the_file_line_and_column() {
         "{}",
         stderr(&out)
     );
-    let file = "tests/tests/ui/urdf/negative_mass.urdf";
+    let file = "dynamics-macros/tests/ui/urdf/negative_mass.urdf";
     let out = dynamics(&["inspect", file]);
     assert_eq!(out.status.code(), Some(1));
     let want = format!("dynamics: {file}:15:20: link `fore`: the mass is negative (-1.5)");

@@ -1,5 +1,6 @@
 //! Compile-fail tests: each file under `ui/<category>/` makes one mistake, and its `.stderr`
-//! holds the error the derive must give, on the offending token. The categories are
+//! holds the error the derive must give, on the offending token. They live with the derive so
+//! that trybuild's crate depends on it and the runtime only. The categories are
 //! `attributes` (keys of `#[dynamics(...)]`), `values` (the D-H table and its values),
 //! `fields` (struct fields named by values), `physics` (mass, inertia, actuator inertia,
 //! springs), `friction` (joint friction and geared drives, in attributes and files), `files`
