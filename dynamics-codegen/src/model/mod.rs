@@ -128,6 +128,24 @@ pub struct Joint {
     /// The user's link frame i in D-H frame i (the identity for a robot given by its D-H
     /// table); the inertial parameters above are in D-H frame i.
     pub link_pose: Pose,
+    /// Where joint i hangs in a kinematic tree; `None` in a serial chain, where joint i's
+    /// antecedent is joint i − 1 and its frame follows from that joint's alone.
+    pub branch: Option<Branch>,
+}
+
+/// A joint's place in a kinematic tree (Khalil and Kleinfinger's modified D-H table): its
+/// antecedent, and the turn γ and offset b about and along the antecedent's z that carry the
+/// antecedent's frame onto the common normal to this joint's axis. The joint's frame is then
+/// `Rotz(γ) Transz(b) Rotx(α) Transx(a) Rotz(θ) Transz(d)` in its antecedent's (with γ = b = 0
+/// this is the modified D-H row).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Branch {
+    /// The antecedent joint, earlier in [`Robot::joints`], or `None` for the base.
+    pub parent: Option<usize>,
+    /// γ.
+    pub gamma: Value,
+    /// b.
+    pub b: Value,
 }
 
 impl Joint {
@@ -143,6 +161,7 @@ impl Joint {
             link,
             frame: None,
             link_pose: Pose::identity(),
+            branch: None,
         }
     }
 
@@ -180,6 +199,22 @@ impl Robot {
         self.joints.len()
     }
 
+    /// Joint i's antecedent: the joint whose link carries it, or `None` for the base.
+    #[must_use]
+    pub fn parent(&self, i: usize) -> Option<usize> {
+        match &self.joints[i].branch {
+            Some(branch) => branch.parent,
+            None => i.checked_sub(1),
+        }
+    }
+
+    /// Whether some joint's antecedent is not the joint before it: the robot branches (a joint
+    /// carries two or more, or two hang off the base).
+    #[must_use]
+    pub fn is_tree(&self) -> bool {
+        (0..self.dof()).any(|i| self.parent(i) != i.checked_sub(1))
+    }
+
     /// Every value of the robot, in a fixed order.
     pub fn values(&self) -> impl Iterator<Item = &Value> {
         self.gravity
@@ -187,6 +222,7 @@ impl Robot {
             .chain(self.joints.iter().flat_map(|j| {
                 [&j.theta, &j.d, &j.a, &j.alpha]
                     .into_iter()
+                    .chain(j.branch.iter().flat_map(|b| [&b.gamma, &b.b]))
                     .chain(j.link.values())
             }))
             .chain(

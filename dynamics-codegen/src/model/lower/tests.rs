@@ -150,6 +150,7 @@ fn random_joint(rng: &mut Rng) -> Joint {
             axis: random_axis(rng),
         }),
         link_pose: Pose::identity(),
+        branch: None,
     }
 }
 
