@@ -1,4 +1,4 @@
-"""What the reference-data scripts share (`panda/`, `frames/`, `urdf/` make.py): the 20 states
+"""What the reference-data scripts share (`panda/`, `frames/`, `urdf/`, `trees/` make.py): the 20 states
 of a sample set, Pinocchio's quantities at a state, the identities they must satisfy, the
 scaled error measure and the rounding of the numbers written.
 
@@ -50,8 +50,8 @@ def samples(n, rng):
     return out
 
 
-def quantities(model, frame, q, qd, qdd):
-    """tau, M, h, g, C, both energies, and the pose and base-axes Jacobian of `frame`."""
+def dynamics(model, q, qd, qdd):
+    """tau, M, h, g, C and both energies at a state."""
     data = model.createData()
     tau = pin.rnea(model, data, q, qd, qdd).copy()
     M = symmetric(pin.crba(model, data, q))
@@ -60,14 +60,33 @@ def quantities(model, frame, q, qd, qdd):
     C = pin.computeCoriolisMatrix(model, data, q, qd).copy()
     ke = pin.computeKineticEnergy(model, data, q, qd)
     pe = pin.computePotentialEnergy(model, data, q)
+    return dict(tau=tau, M=M, h=h, g=g, C=C, kinetic_energy=ke, potential_energy=pe)
+
+
+def frame_kinematics(model, frames, q):
+    """Each frame's pose (4x4, in the base frame) and geometric Jacobian (rows [v; w] in base
+    axes: LOCAL_WORLD_ALIGNED), by frame name (a link's BODY frame when names repeat)."""
+    data = model.createData()
     pin.forwardKinematics(model, data, q)
     pin.updateFramePlacements(model, data)
     pin.computeJointJacobians(model, data, q)
-    fid = model.getFrameId(frame)
-    pose = data.oMf[fid].homogeneous.copy()
-    jac = pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).copy()
-    return dict(tau=tau, M=M, h=h, g=g, C=C, kinetic_energy=ke, potential_energy=pe,
-                ee_pose=pose, jacobian=jac)
+    out = {}
+    for frame in frames:
+        fid = model.getFrameId(frame, pin.FrameType.BODY)
+        if fid >= model.nframes:
+            fid = model.getFrameId(frame)
+        out[frame] = dict(
+            pose=data.oMf[fid].homogeneous.copy(),
+            jacobian=pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED).copy())
+    return out
+
+
+def quantities(model, frame, q, qd, qdd):
+    """tau, M, h, g, C, both energies, and the pose and base-axes Jacobian of `frame`."""
+    x = dynamics(model, q, qd, qdd)
+    tip = frame_kinematics(model, [frame], q)[frame]
+    x.update(ee_pose=tip["pose"], jacobian=tip["jacobian"])
+    return x
 
 
 def identities(x, qd, qdd):
@@ -76,4 +95,14 @@ def identities(x, qd, qdd):
     worst = max(worst, scaled_error(x["C"] @ qd + x["g"], x["h"]))
     worst = max(worst, scaled_error(0.5 * qd @ x["M"] @ qd, x["kinetic_energy"]))
     assert worst < TOLERANCE, f"identities: {worst:e}"
+    return worst
+
+
+def central_differences(mass, potential, q, qd, C, g, eps=1e-6):
+    """Mdot = C + C^T along qd and g = dP/dq by central differences, for any coordinates:
+    `mass(q)` and `potential(q)` are M and P as functions of them. The worst scaled error."""
+    mdot = (mass(q + eps * qd) - mass(q - eps * qd)) / (2 * eps)
+    grad = np.array([(potential(q + eps * e) - potential(q - eps * e)) / (2 * eps) for e in np.eye(len(q))])
+    worst = max(scaled_error(mdot, C + C.T), scaled_error(grad, g))
+    assert worst < 1e-7, f"finite differences: {worst:e}"
     return worst
