@@ -12,6 +12,7 @@ mod forward_dynamics;
 mod friction;
 mod front_door;
 mod generics;
+mod harness;
 mod keyword_fields;
 mod kinematics;
 mod lanes;
