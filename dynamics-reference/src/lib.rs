@@ -71,12 +71,17 @@
 #![warn(missing_docs)]
 
 mod dynamics;
+mod json;
 mod kinematics;
+mod pinocchio;
 mod robot;
 pub mod statics;
 
-pub use kinematics::{q_matrix, rot_x, rot_z, trans_x, trans_z};
-pub use robot::{Convention, Joint, JointKind, Robot};
+pub use kinematics::{
+    axis_motion, axis_q_matrix, placement_matrix, q_matrix, rot_x, rot_z, trans_x, trans_z,
+};
+pub use pinocchio::PinocchioFrame;
+pub use robot::{Convention, Joint, JointKind, Placement, Robot};
 
 /// Re-export of the linear-algebra crate used in the public API.
 pub use nalgebra;

@@ -6,3 +6,4 @@ mod common;
 mod identities;
 mod niku_examples;
 mod reference_data;
+mod tree_data;
