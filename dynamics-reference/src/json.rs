@@ -220,10 +220,9 @@ impl Robot {
     /// unit axis and zero D-H values.
     pub(crate) fn check_joint(&self, i: usize) -> Result<(), String> {
         let joint = &self.joints[i];
-        let at = format!("joint {i}");
         if let Some(p) = joint.parent.filter(|&p| p >= i) {
             return Err(format!(
-                "{at}: antecedent (`parent`) {p} does not come before it (joints are numbered so that every antecedent comes earlier)"
+                "joint {i}: antecedent (`parent`) {p} does not come before it (joints are numbered so that every antecedent comes earlier)"
             ));
         }
         let dh_values = [
@@ -236,19 +235,19 @@ impl Robot {
         ];
         match (self.convention, &joint.placement) {
             (Convention::Standard, _) if joint.parent != i.checked_sub(1) || joint.gamma != 0.0 || joint.b != 0.0 => Err(format!(
-                "{at}: an antecedent other than the joint before, γ or b in a standard D-H table (trees need the modified convention)"
+                "joint {i}: an antecedent other than the joint before, γ or b in a standard D-H table (trees need the modified convention)"
             )),
             (Convention::Standard | Convention::Modified, Some(_)) => {
-                Err(format!("{at}: a placement in a D-H table"))
+                Err(format!("joint {i}: a placement in a D-H table"))
             }
-            (Convention::Urdf, None) => Err(format!("{at}: no placement in a URDF-style robot")),
+            (Convention::Urdf, None) => Err(format!("joint {i}: no placement in a URDF-style robot")),
             (Convention::Urdf, Some(_)) if dh_values.iter().any(|&v| v != 0.0) => {
-                Err(format!("{at}: D-H values in a URDF-style joint"))
+                Err(format!("joint {i}: D-H values in a URDF-style joint"))
             }
             (Convention::Urdf, Some(p)) => {
                 let norm = p.axis.iter().map(|x| x * x).sum::<f64>().sqrt();
                 if (norm - 1.0).abs() > 1e-9 {
-                    Err(format!("{at}: `axis` {:?} is not of unit length ({norm})", p.axis))
+                    Err(format!("joint {i}: `axis` {:?} is not of unit length ({norm})", p.axis))
                 } else {
                     Ok(())
                 }
