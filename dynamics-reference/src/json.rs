@@ -217,7 +217,7 @@ impl From<Robot> for RawRobot {
 impl Robot {
     /// Checks joint `i`: its antecedent comes earlier, a standard-convention joint is in a
     /// chain without `γ`, `b`, a D-H joint has no placement, a URDF-style joint has one, with a
-    /// unit axis and zero D-H values.
+    /// unit axis, an orthonormal rotation and zero D-H values.
     pub(crate) fn check_joint(&self, i: usize) -> Result<(), String> {
         let joint = &self.joints[i];
         if let Some(p) = joint.parent.filter(|&p| p >= i) {
@@ -246,8 +246,21 @@ impl Robot {
             }
             (Convention::Urdf, Some(p)) => {
                 let norm = p.axis.iter().map(|x| x * x).sum::<f64>().sqrt();
+                // Rows of a rotation are orthonormal: RRᵀ = 1.
+                let r = &p.rotation;
+                let off = (0..3)
+                    .flat_map(|a| (0..3).map(move |b| (a, b)))
+                    .map(|(a, b)| {
+                        let dot: f64 = (0..3).map(|k| r[a][k] * r[b][k]).sum();
+                        (dot - f64::from(u8::from(a == b))).abs()
+                    })
+                    .fold(0.0, f64::max);
                 if (norm - 1.0).abs() > 1e-9 {
                     Err(format!("joint {i}: `axis` {:?} is not of unit length ({norm})", p.axis))
+                } else if off > 1e-9 {
+                    Err(format!(
+                        "joint {i}: `rotation` {r:?} is not a rotation (R Rᵀ differs from 1 by {off:e})"
+                    ))
                 } else {
                     Ok(())
                 }

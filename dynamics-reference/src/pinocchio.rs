@@ -127,7 +127,7 @@ impl Robot {
     ///
     /// If the text does not match the record, a joint type is unknown, a parent does not
     /// come before its joint, an inertia is not symmetric, or the robot does not pass
-    /// [`Robot::check`] (a non-unit axis); the message names the joint.
+    /// [`Robot::check`] (a non-unit axis, a rotation that is not one); the message names the joint.
     pub fn from_pinocchio_model(
         name: &str,
         json: &str,

@@ -111,7 +111,7 @@ pub struct Joint {
 ///
 /// Parsed through the JSON form of `json.rs`, which fills the defaults and refuses what does
 /// not describe a robot (an antecedent that does not come earlier, a tree in the standard
-/// convention, D-H values on a URDF-style joint, a non-unit axis).
+/// convention, D-H values on a URDF-style joint, a non-unit axis, a rotation that is not one).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "RawRobot", into = "RawRobot")]
 pub struct Robot {
