@@ -1,5 +1,6 @@
 //! Pseudo-inertia, energies and the Lagrangian equations of motion
-//! (Niku eqs. 6.36–6.46).
+//! (Niku eqs. 6.36–6.46); in a tree each sum runs over the links that the joints of its
+//! indices move (in a chain, `p ≥ max(i, …)`).
 
 use nalgebra::{DMatrix, DVector, Matrix3, Matrix4, Vector3, Vector4};
 
@@ -22,6 +23,8 @@ struct Tables {
     u2: Vec<Vec<Vec<Matrix4<f64>>>>,
     /// `j[i] = J_i`.
     j: Vec<Matrix4<f64>>,
+    /// `moves[j][p]`: whether joint `j` is `p` or an ancestor of `p` ([`Robot::moves`]).
+    moves: Vec<Vec<bool>>,
 }
 
 impl Tables {
@@ -40,20 +43,30 @@ impl Tables {
                 })
                 .collect(),
             j: (0..n).map(|i| robot.pseudo_inertia(i)).collect(),
+            moves: (0..n)
+                .map(|j| (0..n).map(|p| robot.moves(j, p)).collect())
+                .collect(),
         }
     }
 
+    /// The links `p` that every joint of `joints` moves: `p ≥ max(joints)` in a chain.
+    fn links_moved_by<'a>(&'a self, joints: &'a [usize]) -> impl Iterator<Item = usize> + 'a {
+        (0..self.j.len()).filter(move |&p| joints.iter().all(|&j| self.moves[j][p]))
+    }
+
     /// `D_ij` of eq. (6.43) without the actuator term:
-    /// `Σ_{p = max(i,j)}^{n} Tr(U_pj J_p U_piᵀ)`.
+    /// `Σ_p Tr(U_pj J_p U_piᵀ)` over the links `p` moved by both `i` and `j`
+    /// (`p = max(i,j) … n` in a chain).
     fn inertia_coefficient(&self, i: usize, j: usize) -> f64 {
-        (i.max(j)..self.j.len())
+        self.links_moved_by(&[i, j])
             .map(|p| trace_abct(&self.u[p][j], &self.j[p], &self.u[p][i]))
             .sum()
     }
 
-    /// `D_ijk` of eq. (6.44): `Σ_{p = max(i,j,k)}^{n} Tr(U_pjk J_p U_piᵀ)`.
+    /// `D_ijk` of eq. (6.44): `Σ_p Tr(U_pjk J_p U_piᵀ)` over the links `p` moved by `i`, `j`
+    /// and `k` (`p = max(i,j,k) … n` in a chain).
     fn coriolis_coefficient(&self, i: usize, j: usize, k: usize) -> f64 {
-        (i.max(j).max(k)..self.j.len())
+        self.links_moved_by(&[i, j, k])
             .map(|p| trace_abct(&self.u2[p][j][k], &self.j[p], &self.u[p][i]))
             .sum()
     }
@@ -112,7 +125,9 @@ impl Robot {
     }
 
     /// Joint-space inertia (mass) matrix: `D_ij` of eq. (6.43),
-    /// `D_ij = Σ_{p = max(i,j)}^{n} Tr(U_pj J_p U_piᵀ)`, plus the actuator inertia
+    /// `D_ij = Σ_p Tr(U_pj J_p U_piᵀ)` over the links `p` that joints `i` and `j` both move
+    /// (`p = max(i,j) … n` in a chain; so `D_ij = 0` when neither joint is an ancestor of the
+    /// other), plus the actuator inertia
     /// `I_i(act)` on the diagonal (the `I_i(act) q̈_i` term of eq. 6.46). Symmetric.
     ///
     /// # Panics
@@ -132,7 +147,8 @@ impl Robot {
     }
 
     /// All coefficients `D_ijk` of eq. (6.44),
-    /// `D_ijk = Σ_{p = max(i,j,k)}^{n} Tr(U_pjk J_p U_piᵀ)`.
+    /// `D_ijk = Σ_p Tr(U_pjk J_p U_piᵀ)` over the links `p` that joints `i`, `j`, `k` all
+    /// move (`p = max(i,j,k) … n` in a chain).
     ///
     /// Indexing: `christoffel(q)[i][(j, k)] = D_ijk` (0-based; the book's `D_{i+1,j+1,k+1}`).
     /// `D_ijk` is symmetric in `j`, `k` (because `U_pjk = U_pkj`) and equals the
@@ -186,7 +202,8 @@ impl Robot {
         })
     }
 
-    /// Gravity torques `D_i` of eq. (6.45), `D_i = −Σ_{p=i}^{n} m_p gᵀ U_pi r̄_p`, with
+    /// Gravity torques `D_i` of eq. (6.45), `D_i = −Σ_p m_p gᵀ U_pi r̄_p` over the links `p`
+    /// that joint `i` moves (`p = i … n` in a chain), with
     /// `gᵀ = [gx, gy, gz, 0]` the gravity acceleration and `r̄_p` the homogeneous centre
     /// of mass of link `p` in frame `p`; plus the joint-spring force `k_i (q_i − rest_i)`.
     /// Equals `∂P/∂q` for the potential energy of [`Robot::potential_energy`].
@@ -199,7 +216,8 @@ impl Robot {
         let n = self.dof();
         let g = self.gravity_homogeneous();
         DVector::from_fn(n, |i, _| {
-            let gravity: f64 = (i..n)
+            let gravity: f64 = (0..n)
+                .filter(|&p| self.moves(i, p))
                 .map(|p| {
                     let u_r = self.u(q, p, i) * self.com_homogeneous(p);
                     -self.joints[p].mass * g.dot(&u_r)
@@ -237,7 +255,8 @@ impl Robot {
     }
 
     /// Kinetic energy, eq. (6.39):
-    /// `K = ½ Σ_i Σ_{p≤i} Σ_{r≤i} Tr(U_ip J_i U_irᵀ) q̇_p q̇_r + ½ Σ_i I_i(act) q̇_i²`.
+    /// `K = ½ Σ_i Σ_{p≤i} Σ_{r≤i} Tr(U_ip J_i U_irᵀ) q̇_p q̇_r + ½ Σ_i I_i(act) q̇_i²`, where in
+    /// a tree `p ≤ i` reads "`p` is `i` or an ancestor of `i`".
     ///
     /// # Panics
     ///
@@ -248,8 +267,9 @@ impl Robot {
         let n = self.dof();
         let mut k = 0.0;
         for i in 0..n {
-            for p in 0..=i {
-                for r in 0..=i {
+            let path = self.path(i);
+            for &p in &path {
+                for &r in &path {
                     let trace = trace_abct(&tables.u[i][p], &tables.j[i], &tables.u[i][r]);
                     k += 0.5 * trace * qd[p] * qd[r];
                 }
@@ -260,7 +280,7 @@ impl Robot {
     }
 
     /// Potential energy (the equation after (6.39) in the book; its number is lost in the
-    /// text extraction): `P = −Σ_i m_i gᵀ ⁰T_i r̄_i` (zero for a mass at the base origin)
+    /// text extraction): `P = −Σ_i m_i gᵀ ⁰T_i r̄_i` (`⁰T_i` along the path to link `i`) (zero for a mass at the base origin)
     /// plus the joint springs `Σ_i ½ k_i (q_i − rest_i)²`.
     ///
     /// # Panics

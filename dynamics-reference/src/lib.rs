@@ -1,5 +1,6 @@
-//! Independent numeric reference for the dynamics of serial robots described by a
-//! Denavit–Hartenberg table.
+//! Independent numeric reference for the dynamics of serial robots and kinematic trees
+//! described by a Denavit–Hartenberg table (Khalil and Kleinfinger's for trees) or by URDF-style
+//! joint placements.
 //!
 //! This crate is a direct, deliberately plain implementation of the method of
 //! S. B. Niku, *Introduction to Robotics*, chapter 6 ("Dynamic and Force Analysis"):
@@ -17,6 +18,29 @@
 //!   torques `T_i` (eq. 6.46),
 //! * and, in [`statics`], the static force relations `T = Jᵀ F` (eq. 6.64) and the
 //!   equivalent force/moment in another frame (eq. 6.73).
+//!
+//! # Trees
+//!
+//! Joint `i` hangs off its antecedent `a(i)` ([`Joint::parent`], an earlier joint, or the
+//! base; by default the joint before, as in a chain), and `⁰T_i = ⁰T_{a(i)} A_i`: the product
+//! of the `A`s along the path from the base to link `i` ([`Robot::path`]). Write `j ≼ p` for
+//! "joint `j` is `p` or an ancestor of `p`" ([`Robot::moves`]); in a chain `j ≼ p` is `j ≤ p`,
+//! and every sum below is the book's.
+//!
+//! * Modified convention (Khalil and Kleinfinger 1986):
+//!   `A_i = Rotz(γ_i) Transz(b_i) Rotx(α_i) Transx(a_i) Rotz(θ_i) Transz(d_i)`, with
+//!   `γ = b = 0` by default. The standard convention describes chains only.
+//! * URDF style ([`Convention::Urdf`], [`Placement`]): `A_i = X_i Rot(axis_i, q_i)` or
+//!   `X_i Trans(axis_i q_i)`, whose `Q_i` is `[[axis_i]×, 0; 0, 0]` or `[0, axis_i; 0, 0]`
+//!   ([`axis_q_matrix`]); [`Robot::from_pinocchio_model`] reads a Pinocchio model's record so.
+//! * `U_ij = ∂ ⁰T_i/∂q_j` is the path's product with `A_j` differentiated if `j ≼ i`, zero
+//!   otherwise; `U_ijk` likewise with `j, k ≼ i`.
+//! * `D_ij = Σ_{p: i ≼ p, j ≼ p} Tr(U_pj J_p U_piᵀ)` (zero when neither of `i`, `j` is an
+//!   ancestor of the other), `D_ijk = Σ_{p: i, j, k ≼ p} Tr(U_pjk J_p U_piᵀ)`,
+//!   `D_i = −Σ_{p: i ≼ p} m_p gᵀ U_pi r̄_p`,
+//!   `K = ½ Σ_i Σ_{p ≼ i} Σ_{r ≼ i} Tr(U_ip J_i U_irᵀ) q̇_p q̇_r`, `P = −Σ_i m_i gᵀ ⁰T_i r̄_i`.
+//! * Kinematics of any link ([`Robot::frame`], [`Robot::frame_jacobian`], whose column `j` is
+//!   zero unless `j ≼ i`) and statics per link as in a chain.
 //!
 //! # For tests only
 //!
@@ -42,7 +66,10 @@
 //! * [`Convention::Standard`] (Niku, Paul):
 //!   `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)`.
 //! * [`Convention::Modified`] (Craig): `A_i = Rotx(α) Transx(a) Rotz(θ_i) Transz(d_i)`,
-//!   where the `a`, `alpha` stored in joint entry `i` are Craig's `a_{i−1}`, `α_{i−1}`.
+//!   where the `a`, `alpha` stored in joint entry `i` are Craig's `a_{i−1}`, `α_{i−1}`;
+//!   in a tree preceded by `Rotz(γ_i) Transz(b_i)`.
+//! * [`Convention::Urdf`]: a joint is a fixed placement in its antecedent's link frame and
+//!   a unit axis (URDF's `<origin>` and `<axis>`); link frame `i` is the joint frame moved.
 //! * Inertial data: `com` is the centre of mass in link frame `i`; `inertia` holds the
 //!   entries `[Ixx, Iyy, Izz, Ixy, Ixz, Iyz]` of the inertia **tensor about the centre
 //!   of mass** (off-diagonal entries are `−∫xy dm` etc., as in URDF). The book's
@@ -71,12 +98,17 @@
 #![warn(missing_docs)]
 
 mod dynamics;
+mod json;
 mod kinematics;
+mod pinocchio;
 mod robot;
 pub mod statics;
 
-pub use kinematics::{q_matrix, rot_x, rot_z, trans_x, trans_z};
-pub use robot::{Convention, Joint, JointKind, Robot};
+pub use kinematics::{
+    axis_motion, axis_q_matrix, placement_matrix, q_matrix, rot_x, rot_z, trans_x, trans_z,
+};
+pub use pinocchio::PinocchioFrame;
+pub use robot::{Convention, Joint, JointKind, Placement, Robot};
 
 /// Re-export of the linear-algebra crate used in the public API.
 pub use nalgebra;

@@ -4,11 +4,14 @@
 //! physically consistent inertial data, optional actuator inertia and joint springs) and a
 //! state `q`, `q̇`, `q̈`. A [`RobotSpec`] holds plain numbers and turns into both the
 //! generator's model ([`RobotSpec::model`]) and the independent reference's
-//! ([`RobotSpec::reference`]).
+//! ([`RobotSpec::reference`]). [`tree`] draws a kinematic tree (2 to 9 joints, each joint's
+//! antecedent among the earlier joints or the base, Khalil and Kleinfinger's γ, b and the rest
+//! of the row from the same distributions as the chain's), a [`TreeSpec`], and [`tree_case`]
+//! adds a state.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use dynamics_codegen::model::{self, Convention, JointKind, Spring, Value};
+use dynamics_codegen::model::{self, Branch, Convention, JointKind, Spring, Value};
 use dynamics_codegen::symbolic::Number;
 use proptest::collection::vec;
 use proptest::prelude::*;
@@ -74,32 +77,58 @@ pub struct RobotSpec {
     pub joints: Vec<JointSpec>,
 }
 
+impl JointSpec {
+    /// The generator's joint (a D-H row, in a chain).
+    fn model(&self) -> model::Joint {
+        let v = Value::from_f64;
+        let link = model::Link {
+            mass: v(self.mass),
+            com: self.com.map(v),
+            inertia: self.inertia.map(v),
+            actuator_inertia: v(self.actuator_inertia),
+            spring: self.spring.map(|(k, rest)| Spring {
+                stiffness: v(k),
+                rest: v(rest),
+            }),
+            friction: None,
+        };
+        let row = [self.theta.value(), v(self.d), v(self.a), self.alpha.value()];
+        model::Joint::dh(self.kind, row, link)
+    }
+
+    /// The reference's joint, with its antecedent and γ, b.
+    fn reference(&self, parent: Option<usize>, gamma: f64, b: f64) -> dynamics_reference::Joint {
+        use dynamics_reference as r;
+        r::Joint {
+            kind: match self.kind {
+                JointKind::Revolute => r::JointKind::Revolute,
+                JointKind::Prismatic => r::JointKind::Prismatic,
+            },
+            theta: self.theta.radians(),
+            d: self.d,
+            a: self.a,
+            alpha: self.alpha.radians(),
+            parent,
+            gamma,
+            b,
+            placement: None,
+            mass: self.mass,
+            com: self.com,
+            inertia: self.inertia,
+            actuator_inertia: self.actuator_inertia,
+            spring_stiffness: self.spring.map_or(0.0, |(k, _)| k),
+            spring_rest: self.spring.map_or(0.0, |(_, rest)| rest),
+        }
+    }
+}
+
 impl RobotSpec {
     pub fn model(&self) -> model::Robot {
-        let v = Value::from_f64;
         model::Robot {
             name: "random".into(),
             convention: self.convention,
-            gravity: self.gravity.map(v),
-            joints: self
-                .joints
-                .iter()
-                .map(|j| {
-                    let link = model::Link {
-                        mass: v(j.mass),
-                        com: j.com.map(v),
-                        inertia: j.inertia.map(v),
-                        actuator_inertia: v(j.actuator_inertia),
-                        spring: j.spring.map(|(k, rest)| Spring {
-                            stiffness: v(k),
-                            rest: v(rest),
-                        }),
-                        friction: None,
-                    };
-                    let row = [j.theta.value(), v(j.d), v(j.a), j.alpha.value()];
-                    model::Joint::dh(j.kind, row, link)
-                })
-                .collect(),
+            gravity: self.gravity.map(Value::from_f64),
+            joints: self.joints.iter().map(JointSpec::model).collect(),
             base: model::Pose::identity(),
             tool: None,
         }
@@ -134,25 +163,85 @@ impl RobotSpec {
             joints: self
                 .joints
                 .iter()
-                .map(|j| r::Joint {
-                    kind: match j.kind {
-                        JointKind::Revolute => r::JointKind::Revolute,
-                        JointKind::Prismatic => r::JointKind::Prismatic,
-                    },
-                    theta: j.theta.radians(),
-                    d: j.d,
-                    a: j.a,
-                    alpha: j.alpha.radians(),
-                    mass: j.mass,
-                    com: j.com,
-                    inertia: j.inertia,
-                    actuator_inertia: j.actuator_inertia,
-                    spring_stiffness: j.spring.map_or(0.0, |(k, _)| k),
-                    spring_rest: j.spring.map_or(0.0, |(_, rest)| rest),
-                })
+                .enumerate()
+                .map(|(i, j)| j.reference(i.checked_sub(1), 0.0, 0.0))
                 .collect(),
         }
     }
+}
+
+/// A joint of a tree: its D-H row and link, its antecedent (`None`: the base) and Khalil and
+/// Kleinfinger's γ, b.
+#[derive(Clone, Debug)]
+pub struct TreeJointSpec {
+    pub joint: JointSpec,
+    pub parent: Option<usize>,
+    pub gamma: Angle,
+    pub b: f64,
+}
+
+/// A kinematic tree in plain numbers (modified convention), turned into both the generator's
+/// model ([`TreeSpec::model`]) and the reference's ([`TreeSpec::reference`]).
+#[derive(Clone, Debug)]
+pub struct TreeSpec {
+    pub gravity: [f64; 3],
+    pub joints: Vec<TreeJointSpec>,
+}
+
+impl TreeSpec {
+    /// The generator's model: every joint with `branch: Some(..)`, the modified convention.
+    pub fn model(&self) -> model::Robot {
+        model::Robot {
+            name: "random tree".into(),
+            convention: Convention::Modified,
+            gravity: self.gravity.map(Value::from_f64),
+            joints: self
+                .joints
+                .iter()
+                .map(|t| model::Joint {
+                    branch: Some(Branch {
+                        parent: t.parent,
+                        gamma: t.gamma.value(),
+                        b: Value::from_f64(t.b),
+                    }),
+                    ..t.joint.model()
+                })
+                .collect(),
+            base: model::Pose::identity(),
+            tool: None,
+        }
+    }
+
+    pub fn reference(&self) -> dynamics_reference::Robot {
+        dynamics_reference::Robot {
+            name: "random tree".into(),
+            description: String::new(),
+            convention: dynamics_reference::Convention::Modified,
+            gravity: self.gravity,
+            joints: self
+                .joints
+                .iter()
+                .map(|t| t.joint.reference(t.parent, t.gamma.radians(), t.b))
+                .collect(),
+        }
+    }
+
+    /// Whether every joint hangs off the one before with `γ = b = 0`: a chain written as a tree.
+    pub fn is_chain(&self) -> bool {
+        self.joints
+            .iter()
+            .enumerate()
+            .all(|(i, t)| t.parent == i.checked_sub(1) && t.gamma.radians() == 0.0 && t.b == 0.0)
+    }
+}
+
+/// A tree and a state.
+#[derive(Clone, Debug)]
+pub struct TreeCase {
+    pub tree: TreeSpec,
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
 }
 
 /// A robot and a state.
@@ -277,12 +366,7 @@ pub fn robot() -> impl Strategy<Value = RobotSpec> {
 /// A robot of `joints` joints.
 pub fn robot_of(joints: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = RobotSpec> {
     let convention = prop_oneof![Just(Convention::Standard), Just(Convention::Modified)];
-    let gravity = prop_oneof![
-        1 => Just([0.0, 0.0, -9.81]),
-        1 => Just([0.0, -9.81, 0.0]),
-        2 => proptest::array::uniform3(-10.0..10.0),
-    ];
-    (convention, gravity, vec(joint(), joints)).prop_map(|(convention, gravity, joints)| {
+    (convention, gravity(), vec(joint(), joints)).prop_map(|(convention, gravity, joints)| {
         RobotSpec {
             convention,
             gravity,
@@ -308,5 +392,68 @@ pub fn case() -> impl Strategy<Value = Case> {
                 qdd,
                 x,
             })
+    })
+}
+
+/// A gravity: along −z, along −y, or random.
+fn gravity() -> impl Strategy<Value = [f64; 3]> {
+    prop_oneof![
+        1 => Just([0.0, 0.0, -9.81]),
+        1 => Just([0.0, -9.81, 0.0]),
+        2 => proptest::array::uniform3(-10.0..10.0),
+    ]
+}
+
+/// A kinematic tree of 2 to 9 joints: joint i's antecedent drawn uniformly among the base and
+/// joints 0 … i − 1, γ an [`angle`], b a [`length`], the rest a [`joint`].
+pub fn tree() -> impl Strategy<Value = TreeSpec> {
+    let joints = vec(
+        (joint(), any::<proptest::sample::Index>(), angle(), length()),
+        2..=9,
+    );
+    (gravity(), joints).prop_map(|(gravity, joints)| TreeSpec {
+        gravity,
+        joints: joints
+            .into_iter()
+            .enumerate()
+            .map(|(i, (joint, index, gamma, b))| TreeJointSpec {
+                joint,
+                parent: index.index(i + 1).checked_sub(1),
+                gamma,
+                b,
+            })
+            .collect(),
+    })
+}
+
+/// A chain of 2 to 9 joints written as a tree: each joint's antecedent the joint before,
+/// `γ = b = 0` (exactly the modified D-H chain).
+pub fn chain_as_tree() -> impl Strategy<Value = TreeSpec> {
+    (gravity(), vec(joint(), 2..=9)).prop_map(|(gravity, joints)| TreeSpec {
+        gravity,
+        joints: joints
+            .into_iter()
+            .enumerate()
+            .map(|(i, joint)| TreeJointSpec {
+                joint,
+                parent: i.checked_sub(1),
+                gamma: Angle::Float(0.0),
+                b: 0.0,
+            })
+            .collect(),
+    })
+}
+
+/// A tree of `trees` and a state.
+pub fn tree_case(trees: impl Strategy<Value = TreeSpec>) -> impl Strategy<Value = TreeCase> {
+    trees.prop_flat_map(|tree| {
+        let n = tree.joints.len();
+        (
+            Just(tree),
+            vec(-PI..PI, n),
+            vec(-2.0..2.0, n),
+            vec(-2.0..2.0, n),
+        )
+            .prop_map(|(tree, q, qd, qdd)| TreeCase { tree, q, qd, qdd })
     })
 }

@@ -5,4 +5,7 @@
 mod common;
 mod identities;
 mod niku_examples;
+mod random_trees;
 mod reference_data;
+mod tree_data;
+mod tree_json;

@@ -28,5 +28,6 @@ mod readable_derive;
 mod reference_data;
 mod regressor;
 mod simplified;
+mod trees;
 mod urdf_robots;
 mod urdf_twins;
