@@ -40,6 +40,8 @@ mod outputs;
 mod regressor;
 mod simplified;
 mod tracer;
+#[cfg(test)]
+mod tree_tests;
 
 use crate::algo::{JointKind, RobotScalars};
 use crate::method::{Family, FamilySet};

@@ -1,0 +1,139 @@
+//! Hand-built kinematic trees through the whole trace (`pipeline::equations`, the graph
+//! evaluated by `Equations::evaluate`), against the f64 algorithms that `algo`'s tree tests
+//! check against independent values: every output, the opt-in families (derivatives by
+//! central differences, the regressor and the base parameters against τ), and `M`'s entries
+//! off the ancestry as exact zeros of the graph.
+
+use crate::algo::tree_tests::{chain, robot, symmetric_last, trees, At};
+use crate::algo::{
+    coriolis_matrix, crba, jacobian_in_base, kinematics, kinetic_energy, potential_energy, rnea,
+    RobotScalars, V3,
+};
+use crate::method::{Family, FamilySet};
+use crate::model::Robot;
+use crate::pipeline::{equations, State};
+
+const Q: [f64; 5] = [-0.4, 0.9, 0.15, -1.3, 0.7];
+const QD: [f64; 5] = [0.3, -1.2, 0.6, 0.9, -0.5];
+const QDD: [f64; 5] = [1.1, 0.2, -0.7, 0.4, 1.6];
+const TAU: [f64; 5] = [2.0, -1.5, 0.8, 0.3, -0.6];
+
+fn close(a: &[f64], b: &[f64], tol: f64, what: &str) {
+    assert_eq!(a.len(), b.len(), "{what}");
+    for (k, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!((x - y).abs() <= tol * (1.0 + y.abs()), "{what} [{k}]: {x} vs {y}");
+    }
+}
+
+fn torques(robot: &Robot, q: &[f64], qd: &[f64], qdd: &[f64]) -> Vec<f64> {
+    rnea(&chain(robot, q), qd, qdd, At(&[]).gravity(robot))
+}
+
+fn check(robot: &Robot) {
+    let n = robot.dof();
+    let (q, qd, qdd, tau) = (&Q[..n], &QD[..n], &QDD[..n], &TAU[..n]);
+    let families = FamilySet::default()
+        .with(Family::Derivatives)
+        .with(Family::Regressor)
+        .with(Family::BaseParameters);
+    let (eq, _) = equations(robot, families, None);
+    let state = State {
+        fields: &[],
+        q,
+        qd,
+        qdd,
+        tau,
+    };
+    let at = eq.evaluate(&state);
+    let c = chain(robot, q);
+    let g = At(&[]).gravity(robot);
+    let m = crba(&c);
+    close(&at.matrix(&eq.mass).concat(), &m.concat(), 1e-12, "M");
+    for i in 0..n {
+        for j in 0..n {
+            let related = c.supports(i, j) || c.supports(j, i);
+            assert_eq!(eq.graph.is_zero(eq.mass[i][j]), !related, "M({i}, {j})");
+        }
+    }
+    let expected_tau = torques(robot, q, qd, qdd);
+    close(&at.vector(&eq.tau), &expected_tau, 1e-12, "τ");
+    let zeros = vec![0.0; n];
+    close(&at.vector(&eq.gravity), &rnea(&c, &zeros, &zeros, g), 1e-12, "g");
+    let coriolis = coriolis_matrix(&c, qd).expect("no runs in a tree");
+    close(&at.matrix(&eq.coriolis).concat(), &coriolis.concat(), 1e-12, "C");
+    let none = V3::zero(0.0);
+    close(&at.vector(&eq.coriolis_torques), &rnea(&c, qd, &zeros, none), 1e-12, "C q̇");
+    let k = kinetic_energy(&c, qd, 0.0);
+    close(&[at.of(eq.kinetic_energy)], &[k], 1e-12, "K");
+    close(&[at.of(eq.potential_energy)], &[potential_energy(&c, g)], 1e-12, "P");
+    // M q̈ = τ − (C q̇ + g).
+    let forward = at.vector(&eq.forward.qdd);
+    let bias = rnea(&c, qd, &zeros, g);
+    let m_qdd: Vec<f64> = (0..n)
+        .map(|i| (0..n).map(|j| m[i][j] * forward[j]).sum::<f64>() + bias[i])
+        .collect();
+    close(&m_qdd, tau, 1e-10, "forward dynamics");
+    let jacobian = jacobian_in_base(&kinematics(&mut At(q), robot));
+    let traced = at.matrix(&eq.kinematics.jacobian_in_base).concat();
+    close(&traced, &jacobian.concat(), 1e-12, "Jacobian");
+    check_families(robot, &eq, &at, &expected_tau);
+}
+
+/// `∂τ/∂q`, `∂τ/∂q̇` by central differences, `∂q̈/∂τ = M⁻¹`; the regressor and the base
+/// regressor times their parameters give τ.
+fn check_families(
+    robot: &Robot,
+    eq: &crate::trace::Equations,
+    at: &crate::pipeline::Values,
+    tau: &[f64],
+) {
+    let n = robot.dof();
+    let (q, qd, qdd) = (&Q[..n], &QD[..n], &QDD[..n]);
+    let d = eq.derivatives.as_ref().expect("derivatives traced");
+    let h = 1e-6;
+    for (which, matrix) in d.inverse.iter().enumerate() {
+        for k in 0..n {
+            let shifted = |s: f64| {
+                let (mut a, mut b) = (q.to_vec(), qd.to_vec());
+                let moved = if which == 0 { &mut a } else { &mut b };
+                moved[k] += s;
+                torques(robot, &a, &b, qdd)
+            };
+            let (p, m) = (shifted(h), shifted(-h));
+            let fd: Vec<f64> = p.iter().zip(&m).map(|(x, y)| (x - y) / (2.0 * h)).collect();
+            let column: Vec<f64> = (0..n).map(|i| at.of(matrix[i][k])).collect();
+            close(&column, &fd, 1e-6, &format!("∂τ/∂{} column {k}", ["q", "q̇"][which]));
+        }
+    }
+    let inverse = at.matrix(&eq.forward.mass_inverse).concat();
+    close(&at.matrix(&d.forward[2]).concat(), &inverse, 1e-12, "∂q̈/∂τ");
+    let r = eq.regressor.as_ref().expect("regressor traced");
+    let by_columns: Vec<f64> = (0..n)
+        .map(|i| {
+            let links: f64 = (0..n)
+                .map(|j| {
+                    let pairs = r.columns[i][j].iter().zip(&r.parameters[j]);
+                    pairs.map(|(&y, &p)| at.of(y) * at.of(p)).sum::<f64>()
+                })
+                .sum();
+            let joint = r.joint_columns[i].iter().zip(&r.joint_parameters[i]);
+            links + joint.map(|(&y, &p)| at.of(y) * at.of(p)).sum::<f64>()
+        })
+        .collect();
+    close(&by_columns, tau, 1e-10, "Y π");
+    let base = eq.base_parameters.as_ref().expect("base parameters traced");
+    let by_base: Vec<f64> = base
+        .regressor
+        .iter()
+        .map(|row| row.iter().zip(&base.values).map(|(&y, &p)| at.of(y) * at.of(p)).sum())
+        .collect();
+    close(&by_base, tau, 1e-10, "Y_B π_B");
+}
+
+#[test]
+fn traced_trees_equal_the_algorithms() {
+    for specs in trees() {
+        check(&robot(&specs, true));
+        check(&symmetric_last(robot(&specs, true)));
+    }
+}
