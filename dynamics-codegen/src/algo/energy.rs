@@ -16,7 +16,9 @@ pub fn kinetic_energy<S: Scalar>(chain: &Chain<S>, qd: &[S], zero: S) -> S {
     let mut twists: Vec<(V3<S>, V3<S>)> = Vec::with_capacity(chain.joints.len());
     let mut twice = zero;
     for (i, j) in chain.joints.iter().enumerate() {
-        let (w, v) = j.parent.map_or((V3::zero(zero), V3::zero(zero)), |p| twists[p]);
+        let (w, v) = j
+            .parent
+            .map_or((V3::zero(zero), V3::zero(zero)), |p| twists[p]);
         let v_parent = v.add(w.cross(j.offset()));
         let mut v = j.to_child(v_parent);
         let mut w = j.to_child(w);

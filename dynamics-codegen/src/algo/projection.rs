@@ -219,9 +219,11 @@ fn link_rates<S: Scalar>(
     let lifted = -gravity;
     let mut links: Vec<Rates<S>> = Vec::with_capacity(chain.joints.len());
     for (i, j) in chain.joints.iter().enumerate() {
-        let (w, mut wd, mut vd) = j.parent.map_or((V3::zero(zero), V3::zero(zero), lifted), |p| {
-            (links[p].w, links[p].wd, links[p].vd)
-        });
+        let (w, mut wd, mut vd) = j
+            .parent
+            .map_or((V3::zero(zero), V3::zero(zero), lifted), |p| {
+                (links[p].w, links[p].wd, links[p].vd)
+            });
         let mut w = w;
         // From the parent's frame: J_{i−1}, or its D-H frame, whence J_i is `Rotz(θ) Transz(d)`.
         let (offset, into): (_, &dyn Fn(V3<S>) -> V3<S>) = match twists {

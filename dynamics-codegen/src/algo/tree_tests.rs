@@ -198,14 +198,19 @@ fn kinetic_by_poses(robot: &Robot, q: &[f64], qd: &[f64]) -> f64 {
         let v: Vec<f64> = (0..3).map(|i| (a[i] - b[i]) / (2.0 * h)).collect();
         // [ω]× = Ṙ Rᵀ; ω in the link's axes is Rᵀ ω.
         let r = &now[l].rotation.m;
-        let rdot = |i: usize, j: usize| {
-            (plus[l].rotation.m[i][j] - minus[l].rotation.m[i][j]) / (2.0 * h)
-        };
+        let rdot =
+            |i: usize, j: usize| (plus[l].rotation.m[i][j] - minus[l].rotation.m[i][j]) / (2.0 * h);
         let skew = |i: usize, j: usize| (0..3).map(|k| rdot(i, k) * r[j][k]).sum::<f64>();
         let w = [skew(2, 1), skew(0, 2), skew(1, 0)];
-        let w_local: Vec<f64> = (0..3).map(|i| (0..3).map(|k| r[k][i] * w[k]).sum()).collect();
+        let w_local: Vec<f64> = (0..3)
+            .map(|i| (0..3).map(|k| r[k][i] * w[k]).sum())
+            .collect();
         let iw: f64 = (0..3)
-            .map(|i| (0..3).map(|k| w_local[i] * inertia[i][k] * w_local[k]).sum::<f64>())
+            .map(|i| {
+                (0..3)
+                    .map(|k| w_local[i] * inertia[i][k] * w_local[k])
+                    .sum::<f64>()
+            })
             .sum();
         let mass = val(&link.mass);
         total += 0.5 * mass * v.iter().map(|x| x * x).sum::<f64>() + 0.5 * iw;
@@ -236,10 +241,22 @@ fn check_identities(robot: &Robot) {
             }
         }
     }
-    let m_qd: Vec<f64> = (0..n).map(|i| (0..n).map(|j| m[i][j] * qd[j]).sum()).collect();
+    let m_qd: Vec<f64> = (0..n)
+        .map(|i| (0..n).map(|j| m[i][j] * qd[j]).sum())
+        .collect();
     let twice: f64 = qd.iter().zip(&m_qd).map(|(a, b)| a * b).sum();
-    close(kinetic_energy(&c, qd, 0.0), 0.5 * twice, 1e-12, "K = ½ q̇ᵀ M q̇");
-    close(kinetic_by_poses(robot, q, qd), 0.5 * twice, 1e-7, "K link by link");
+    close(
+        kinetic_energy(&c, qd, 0.0),
+        0.5 * twice,
+        1e-12,
+        "K = ½ q̇ᵀ M q̇",
+    );
+    close(
+        kinetic_by_poses(robot, q, qd),
+        0.5 * twice,
+        1e-7,
+        "K link by link",
+    );
     let h = 1e-6;
     let dp: Vec<f64> = (0..n)
         .map(|k| {
@@ -251,7 +268,12 @@ fn check_identities(robot: &Robot) {
         })
         .collect();
     each_close(&gravity_torques(&c, g), &dp, 1e-7, "g = ∂P/∂q");
-    each_close(&rnea(&c, &zeros, &zeros, g), &dp, 1e-7, "Newton-Euler at rest");
+    each_close(
+        &rnea(&c, &zeros, &zeros, g),
+        &dp,
+        1e-7,
+        "Newton-Euler at rest",
+    );
     let coriolis = coriolis_matrix(&c, qd).expect("no sums of angles in a tree");
     let dm: Vec<Vec<Vec<f64>>> = (0..n).map(|k| mass_derivative(robot, q, k)).collect();
     for i in 0..n {

@@ -49,7 +49,10 @@ mod tests {
     /// with the joint named; the hand-built trees pass.
     #[test]
     fn antecedents_come_first_and_trees_are_modified() {
-        let good = robot(&[at(None, R, 0.0, 0.0, 0.0), at(None, R, 0.0, 0.0, 1.0)], true);
+        let good = robot(
+            &[at(None, R, 0.0, 0.0, 0.0), at(None, R, 0.0, 0.0, 1.0)],
+            true,
+        );
         assert!(tree(&good).is_empty());
         let mut standard = good.clone();
         standard.convention = Convention::Standard;

@@ -173,7 +173,13 @@ pub fn derive(robot: &Robot) -> Equations {
         tau.map(|(&t, &f)| g.add(t, f)).collect()
     };
     // After τ, so that the nodes of the other outputs are those they always had.
-    let forward = forward::forward(&graph, &mass, &newton_euler.bias, &friction);
+    let forward = forward::forward(
+        &graph,
+        &mass,
+        &newton_euler.bias,
+        &friction,
+        robot.is_tree(),
+    );
     Equations {
         graph: graph.into_inner(),
         dof: robot.dof(),

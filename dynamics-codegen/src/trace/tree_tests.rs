@@ -21,7 +21,10 @@ const TAU: [f64; 5] = [2.0, -1.5, 0.8, 0.3, -0.6];
 fn close(a: &[f64], b: &[f64], tol: f64, what: &str) {
     assert_eq!(a.len(), b.len(), "{what}");
     for (k, (x, y)) in a.iter().zip(b).enumerate() {
-        assert!((x - y).abs() <= tol * (1.0 + y.abs()), "{what} [{k}]: {x} vs {y}");
+        assert!(
+            (x - y).abs() <= tol * (1.0 + y.abs()),
+            "{what} [{k}]: {x} vs {y}"
+        );
     }
 }
 
@@ -58,14 +61,34 @@ fn check(robot: &Robot) {
     let expected_tau = torques(robot, q, qd, qdd);
     close(&at.vector(&eq.tau), &expected_tau, 1e-12, "τ");
     let zeros = vec![0.0; n];
-    close(&at.vector(&eq.gravity), &rnea(&c, &zeros, &zeros, g), 1e-12, "g");
+    close(
+        &at.vector(&eq.gravity),
+        &rnea(&c, &zeros, &zeros, g),
+        1e-12,
+        "g",
+    );
     let coriolis = coriolis_matrix(&c, qd).expect("no runs in a tree");
-    close(&at.matrix(&eq.coriolis).concat(), &coriolis.concat(), 1e-12, "C");
+    close(
+        &at.matrix(&eq.coriolis).concat(),
+        &coriolis.concat(),
+        1e-12,
+        "C",
+    );
     let none = V3::zero(0.0);
-    close(&at.vector(&eq.coriolis_torques), &rnea(&c, qd, &zeros, none), 1e-12, "C q̇");
+    close(
+        &at.vector(&eq.coriolis_torques),
+        &rnea(&c, qd, &zeros, none),
+        1e-12,
+        "C q̇",
+    );
     let k = kinetic_energy(&c, qd, 0.0);
     close(&[at.of(eq.kinetic_energy)], &[k], 1e-12, "K");
-    close(&[at.of(eq.potential_energy)], &[potential_energy(&c, g)], 1e-12, "P");
+    close(
+        &[at.of(eq.potential_energy)],
+        &[potential_energy(&c, g)],
+        1e-12,
+        "P",
+    );
     // M q̈ = τ − (C q̇ + g).
     let forward = at.vector(&eq.forward.qdd);
     let bias = rnea(&c, qd, &zeros, g);
@@ -102,7 +125,12 @@ fn check_families(
             let (p, m) = (shifted(h), shifted(-h));
             let fd: Vec<f64> = p.iter().zip(&m).map(|(x, y)| (x - y) / (2.0 * h)).collect();
             let column: Vec<f64> = (0..n).map(|i| at.of(matrix[i][k])).collect();
-            close(&column, &fd, 1e-6, &format!("∂τ/∂{} column {k}", ["q", "q̇"][which]));
+            close(
+                &column,
+                &fd,
+                1e-6,
+                &format!("∂τ/∂{} column {k}", ["q", "q̇"][which]),
+            );
         }
     }
     let inverse = at.matrix(&eq.forward.mass_inverse).concat();
@@ -125,7 +153,12 @@ fn check_families(
     let by_base: Vec<f64> = base
         .regressor
         .iter()
-        .map(|row| row.iter().zip(&base.values).map(|(&y, &p)| at.of(y) * at.of(p)).sum())
+        .map(|row| {
+            row.iter()
+                .zip(&base.values)
+                .map(|(&y, &p)| at.of(y) * at.of(p))
+                .sum()
+        })
         .collect();
     close(&by_base, tau, 1e-10, "Y_B π_B");
 }
@@ -135,5 +168,76 @@ fn traced_trees_equal_the_algorithms() {
     for specs in trees() {
         check(&robot(&specs, true));
         check(&symmetric_last(robot(&specs, true)));
+    }
+}
+
+/// The generated methods' operations (flops, as `dynamics stats` counts them) of `robot`.
+fn flops(robot: &Robot, families: FamilySet) -> Vec<(String, usize)> {
+    let (eq, _) = equations(robot, families, None);
+    let generated = crate::emit::generate(&eq, Vec::new());
+    let methods = generated.methods.iter();
+    methods
+        .map(|m| (m.name.to_string(), m.ops.flops()))
+        .collect()
+}
+
+fn flops_of(table: &[(String, usize)], method: &str) -> usize {
+    table
+        .iter()
+        .find(|(n, _)| n == method)
+        .map_or(0, |&(_, f)| f)
+}
+
+/// Two chains off the base cost what the two chains cost apart, for `M` and τ: the zero block
+/// between them costs nothing, and neither does it in the forward dynamics, factored from the
+/// tips.
+#[test]
+fn zero_blocks_cost_nothing() {
+    let specs = &trees()[2];
+    let mut second = specs[3..].to_vec();
+    second[1].gamma = 0.0;
+    second[1].b = 0.0;
+    let mut tree_specs = specs.clone();
+    tree_specs[4] = second[1];
+    tree_specs[4].parent = Some(3);
+    let families = FamilySet::default();
+    let tree = flops(&robot(&tree_specs, true), families);
+    let apart = [
+        flops(&robot(&specs[..3], false), families),
+        flops(&robot(&second, false), families),
+    ];
+    for method in [
+        "mass_matrix",
+        "inverse_dynamics",
+        "gravity_torques",
+        "forward_dynamics",
+    ] {
+        let sum: usize = apart.iter().map(|t| flops_of(t, method)).sum();
+        let together = flops_of(&tree, method);
+        // Not more; one fewer where the two chains share a node.
+        assert!(together <= sum, "{method}: {together} against {sum} apart");
+    }
+}
+
+/// `cargo test -p dynamics-codegen --lib -- --ignored --nocapture operation_counts`: the
+/// operations of τ, M and the forward dynamics of the hand-built trees.
+#[test]
+#[ignore = "prints the counts the report quotes"]
+fn operation_counts() {
+    for (k, specs) in trees().iter().enumerate() {
+        let table = flops(&robot(specs, true), FamilySet::default());
+        let serial: Vec<_> = specs
+            .iter()
+            .enumerate()
+            .map(|(i, s)| crate::algo::tree_tests::Spec {
+                parent: i.checked_sub(1),
+                ..*s
+            })
+            .collect();
+        let chain = flops(&robot(&serial, true), FamilySet::default());
+        for method in ["inverse_dynamics", "mass_matrix", "forward_dynamics"] {
+            let (t, c) = (flops_of(&table, method), flops_of(&chain, method));
+            eprintln!("tree {k}: {method}: {t} flops (the same links as a chain: {c})");
+        }
     }
 }
