@@ -247,6 +247,7 @@ mod tests {
     /// Factored from the tips, a tree's M (joint 0 carrying 1 and 2, joint 2 carrying 3)
     /// keeps its zeros in L, solves `M x = b` and inverts M.
     #[test]
+    #[allow(clippy::needless_range_loop)]
     fn from_the_tips_keeps_a_trees_zeros() {
         let m = [
             [4.0, 1.0, 0.5, 0.3],

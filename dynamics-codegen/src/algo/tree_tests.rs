@@ -218,19 +218,16 @@ fn kinetic_by_poses(robot: &Robot, q: &[f64], qd: &[f64]) -> f64 {
     total
 }
 
-/// The identities every robot's algorithms satisfy, checked on `robot` at one state.
-fn check_identities(robot: &Robot) {
-    let n = robot.dof();
-    let (q, qd, qdd) = (&Q[..n], &QD[..n], &QDD[..n]);
-    let g = gravity(robot);
+/// M's columns are Newton-Euler's with `q̇ = 0`, `q̈ = e_j` and no gravity; its entries are
+/// exact zeros where neither joint is the other's ancestor, and not zero elsewhere.
+#[allow(clippy::needless_range_loop)]
+fn check_mass(c: &Chain<f64>, m: &[Vec<f64>]) {
+    let n = m.len();
     let zeros = vec![0.0; n];
-    let none = V3::zero(0.0);
-    let c = chain(robot, q);
-    let m = crba(&c);
     for j in 0..n {
         let mut e = zeros.clone();
         e[j] = 1.0;
-        let column = rnea(&c, &zeros, &e, none);
+        let column = rnea(c, &zeros, &e, V3::zero(0.0));
         let from_m: Vec<f64> = (0..n).map(|i| m[i][j]).collect();
         each_close(&column, &from_m, 1e-12, "Newton-Euler column of M");
         for i in 0..n {
@@ -241,6 +238,18 @@ fn check_identities(robot: &Robot) {
             }
         }
     }
+}
+
+/// The identities every robot's algorithms satisfy, checked on `robot` at one state.
+fn check_identities(robot: &Robot) {
+    let n = robot.dof();
+    let (q, qd, qdd) = (&Q[..n], &QD[..n], &QDD[..n]);
+    let g = gravity(robot);
+    let zeros = vec![0.0; n];
+    let none = V3::zero(0.0);
+    let c = chain(robot, q);
+    let m = crba(&c);
+    check_mass(&c, &m);
     let m_qd: Vec<f64> = (0..n)
         .map(|i| (0..n).map(|j| m[i][j] * qd[j]).sum())
         .collect();

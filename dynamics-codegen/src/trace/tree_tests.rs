@@ -241,3 +241,73 @@ fn operation_counts() {
         }
     }
 }
+
+/// The simplified models of a tree: sampled over the envelope, each pruned element within its
+/// proven bound of the exact one, something dropped, and `M`'s zeros still zero.
+#[test]
+fn simplified_models_of_a_tree_are_within_their_bounds() {
+    use crate::method::Method;
+    use crate::model::{Envelope, JointEnvelope, Simplification};
+    use crate::trace::Elements;
+    let tree = robot(&trees()[1], true);
+    let n = tree.dof();
+    let joint = JointEnvelope {
+        lower: -2.0,
+        upper: 1.5,
+        speed: 1.5,
+        acceleration: 4.0,
+    };
+    let request = Simplification {
+        tolerance: vec![0.05; n],
+        envelope: Envelope {
+            joints: vec![joint; n],
+        },
+    };
+    let families = FamilySet::default().with(Family::Simplified);
+    let (eq, outcome) = equations(&tree, families, Some(&request));
+    assert_eq!(outcome, Some(Ok(())));
+    let s = eq.simplified.as_ref().expect("simplified");
+    let exact = |m: Method| match m {
+        Method::InverseDynamicsSimplified => Elements::Vector(eq.tau.clone()),
+        Method::CoriolisTorquesSimplified => Elements::Vector(eq.coriolis_torques.clone()),
+        Method::GravityTorquesSimplified => Elements::Vector(eq.gravity.clone()),
+        _ => Elements::Matrix(eq.mass.clone()),
+    };
+    let mut seed = 7_u64;
+    let mut next = |lo: f64, hi: f64| {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+        lo + (hi - lo) * ((seed >> 11) as f64 / (1u64 << 53) as f64)
+    };
+    let mut dropped = false;
+    for _ in 0..200 {
+        let q: Vec<f64> = (0..n).map(|_| next(joint.lower, joint.upper)).collect();
+        let qd: Vec<f64> = (0..n).map(|_| next(-joint.speed, joint.speed)).collect();
+        let a = joint.acceleration;
+        let qdd: Vec<f64> = (0..n).map(|_| next(-a, a)).collect();
+        let state = State {
+            fields: &[],
+            q: &q,
+            qd: &qd,
+            qdd: &qdd,
+            tau: &[],
+        };
+        let at = eq.evaluate(&state);
+        for o in &s.outputs {
+            let whole = exact(o.method);
+            let triples = whole.upper().zip(o.elements.upper()).zip(o.bounds.upper());
+            for (((i, j, &e), (_, _, &p)), (_, _, b)) in triples {
+                let error = (at.of(e) - at.of(p)).abs();
+                assert!(
+                    error <= b.bound + 1e-9,
+                    "{:?} ({i}, {j:?}): {error}",
+                    o.method
+                );
+                dropped |= b.kept < b.terms;
+                if eq.graph.is_zero(e) {
+                    assert!(eq.graph.is_zero(p), "M({i}, {j:?}) is zero");
+                }
+            }
+        }
+    }
+    assert!(dropped, "nothing pruned, nothing tested");
+}
