@@ -41,7 +41,11 @@ pub trait RobotScalars {
             if let Some(branch) = &joint.branch {
                 let (sin_gamma, cos_gamma) = self.sin_cos(&branch.gamma);
                 let b = self.value(&branch.b);
-                let turned = !sin_gamma.is_zero() || !(cos_gamma - cos_gamma.one()).is_zero();
+                // Tested on constants only, so that a symbolic γ adds no node.
+                let unturned = sin_gamma.is_zero()
+                    && cos_gamma.is_constant()
+                    && (cos_gamma - cos_gamma.one()).is_zero();
+                let turned = !unturned;
                 chain.joints[i].parent = robot.parent(i);
                 chain.joints[i].pre = (turned || !b.is_zero()).then_some(Pre {
                     sin_gamma,

@@ -133,6 +133,17 @@ fn check_families(
             );
         }
     }
+    // The same derivatives planned in lanes of tangents (no smoothed friction: both planned).
+    assert!(d.inverse_lanes.iter().all(Option::is_some));
+    for (which, plan) in d.inverse_lanes.iter().enumerate() {
+        let Some(plan) = plan else { continue };
+        let lanes = tangent_lanes(plan, at);
+        for i in 0..n {
+            let row = plan.outputs[i].map_or(vec![0.0; n], |k| lanes[k].clone());
+            let traced: Vec<f64> = d.inverse[which][i].iter().map(|&id| at.of(id)).collect();
+            close(&row, &traced, 1e-12, &format!("lanes of ∂τ_{i}"));
+        }
+    }
     let inverse = at.matrix(&eq.forward.mass_inverse).concat();
     close(&at.matrix(&d.forward[2]).concat(), &inverse, 1e-12, "∂q̈/∂τ");
     let r = eq.regressor.as_ref().expect("regressor traced");
@@ -161,6 +172,29 @@ fn check_families(
         })
         .collect();
     close(&by_base, tau, 1e-10, "Y_B π_B");
+}
+
+/// Each lane of a plan of tangents: the sum of its terms, `± Π factors · (lane or e_j)`.
+fn tangent_lanes(plan: &crate::symbolic::Tangents, at: &crate::pipeline::Values) -> Vec<Vec<f64>> {
+    use crate::symbolic::Of;
+    let mut lanes: Vec<Vec<f64>> = Vec::with_capacity(plan.lanes.len());
+    for lane in &plan.lanes {
+        let mut sum = vec![0.0; plan.directions];
+        for term in &lane.terms {
+            let scale = term.factors.iter().map(|&f| at.of(f)).product::<f64>();
+            let scale = if term.negative { -scale } else { scale };
+            match term.of {
+                Of::Lane(k) => {
+                    for (s, x) in sum.iter_mut().zip(&lanes[k]) {
+                        *s += scale * x;
+                    }
+                }
+                Of::Unit(j) => sum[usize::from(j)] += scale,
+            }
+        }
+        lanes.push(sum);
+    }
+    lanes
 }
 
 #[test]
