@@ -248,6 +248,7 @@ fn zero_blocks_cost_nothing() {
     ] {
         let sum: usize = apart.iter().map(|t| flops_of(t, method)).sum();
         let together = flops_of(&tree, method);
+        eprintln!("{method}: {together} flops together, {sum} apart");
         // Not more; one fewer where the two chains share a node.
         assert!(together <= sum, "{method}: {together} against {sum} apart");
     }
