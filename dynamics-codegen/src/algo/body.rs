@@ -112,8 +112,24 @@ impl<S: Scalar> ChainJoint<S> {
         rotate_inertia(i, self.sin_theta, self.cos_theta, 0, 1)
     }
 
-    /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes.
+    /// A body given in J_i expressed about J_{i−1}'s origin in J_{i−1} axes (the antecedent's
+    /// in a tree: the row first, then `Rotz(γ)`, then the shift by b along z).
     pub fn body_to_parent(&self, b: &Body<S>) -> Body<S> {
+        let Some(pre) = self.pre else {
+            return self.body_through_row(b);
+        };
+        let carried = ChainJoint { pre: None, ..*self }.body_through_row(b);
+        let zero = b.mass.zero();
+        let turned = Body {
+            mass: carried.mass,
+            h: pre.turn(carried.h),
+            inertia: rotate_inertia(carried.inertia, pre.sin_gamma, pre.cos_gamma, 0, 1),
+        };
+        turned.moved_by(V3::new(zero, zero, pre.b))
+    }
+
+    /// [`ChainJoint::body_to_parent`] through the D-H row alone.
+    fn body_through_row(&self, b: &Body<S>) -> Body<S> {
         if !self.move_before_twist || self.twist_is_quarter_turn() {
             let turned = Body {
                 mass: b.mass,

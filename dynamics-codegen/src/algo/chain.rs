@@ -8,6 +8,11 @@
 //! follows from J_{i−1} by `Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)`: the modified
 //! (Craig) form. The algorithms work in J frames, where joint i's axis is z and its torque is
 //! a single component. A link's inertia, given in standard frame i, is carried into J_i exactly.
+//!
+//! A kinematic tree (Khalil and Kleinfinger) is modified-convention only: joint i's frame is
+//! `Rotz(γ_i) Transz(b_i) Rotx(α_i) Transx(a_i) Rotz(θ_i) Transz(d_i)` in the frame of its
+//! antecedent `a(i) < i` ([`ChainJoint::parent`], [`Pre`]); in a serial chain `a(i) = i − 1`
+//! and γ = b = 0, and every transform below reads as before.
 
 use super::{Body, Mat3, Scalar, V3};
 use crate::model::JointKind;
@@ -46,12 +51,48 @@ pub struct Inertial<S> {
     pub inertia: [S; 6],
 }
 
-/// Joint i of a [`Chain`]: the transform from J_{i−1} to J_i, `Rotx(α) Transx(a) Rotz(θ)
-/// Transz(d)`, and link i's body in J_i.
+/// The turn γ and offset b about and along the antecedent's z that come before a tree joint's
+/// modified D-H row: `Rotz(γ) Transz(b)`.
+#[derive(Clone, Copy, Debug)]
+pub struct Pre<S> {
+    /// sin γ.
+    pub sin_gamma: S,
+    /// cos γ.
+    pub cos_gamma: S,
+    /// b.
+    pub b: S,
+}
+
+impl<S: Scalar> Pre<S> {
+    /// `Rotz(γ) v`.
+    pub(super) fn turn(&self, v: V3<S>) -> V3<S> {
+        let (s, c) = (self.sin_gamma, self.cos_gamma);
+        V3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
+    }
+
+    /// `Rotz(γ)ᵀ v`.
+    pub(super) fn unturn(&self, v: V3<S>) -> V3<S> {
+        let (s, c) = (self.sin_gamma, self.cos_gamma);
+        V3::new(c * v.x + s * v.y, c * v.y - s * v.x, v.z)
+    }
+
+    /// `b z × v`.
+    fn arm_cross(&self, v: V3<S>) -> V3<S> {
+        V3::new(-(self.b * v.y), self.b * v.x, self.b.zero())
+    }
+}
+
+/// Joint i of a [`Chain`]: the transform from J_{a(i)} (its antecedent's frame; J_{i−1} in a
+/// serial chain) to J_i, `[Rotz(γ) Transz(b)] Rotx(α) Transx(a) Rotz(θ) Transz(d)`, and link
+/// i's body in J_i. "Parent" below is the antecedent.
 #[derive(Clone, Copy, Debug)]
 pub struct ChainJoint<S> {
     /// Joint kind.
     pub kind: JointKind,
+    /// The antecedent joint, `None` for the base.
+    pub parent: Option<usize>,
+    /// `Rotz(γ) Transz(b)` before the row, for a tree joint whose γ or b is not known zero.
+    pub pre: Option<Pre<S>>,
     /// sin α (twist about the previous x axis).
     pub sin_alpha: S,
     /// cos α.
@@ -82,6 +123,7 @@ pub struct ChainJoint<S> {
 impl<S: Scalar> ChainJoint<S> {
     /// `Rᵀ v`: a vector in J_{i−1} axes expressed in J_i axes, with `R = Rotx(α) Rotz(θ)`.
     pub fn to_child(&self, v: V3<S>) -> V3<S> {
+        let v = self.pre.map_or(v, |p| p.unturn(v));
         let (sa, ca, st, ct) = (
             self.sin_alpha,
             self.cos_alpha,
@@ -102,6 +144,7 @@ impl<S: Scalar> ChainJoint<S> {
     /// `Rotx(α)ᵀ v`: a vector in J_{i−1} axes expressed in the axes of J_i before its turn by
     /// θ, which differ from J_i's by a rotation about z.
     pub fn untwist(&self, v: V3<S>) -> V3<S> {
+        let v = self.pre.map_or(v, |p| p.unturn(v));
         let (sa, ca) = (self.sin_alpha, self.cos_alpha);
         V3::new(v.x, ca * v.y + sa * v.z, ca * v.z - sa * v.y)
     }
@@ -109,14 +152,13 @@ impl<S: Scalar> ChainJoint<S> {
     /// `Rotx(α) v`: back from the axes of [`ChainJoint::untwist`] to J_{i−1}'s.
     pub fn twist(&self, v: V3<S>) -> V3<S> {
         let (sa, ca) = (self.sin_alpha, self.cos_alpha);
-        V3::new(v.x, ca * v.y - sa * v.z, sa * v.y + ca * v.z)
+        let v = V3::new(v.x, ca * v.y - sa * v.z, sa * v.y + ca * v.z);
+        self.pre.map_or(v, |p| p.turn(v))
     }
 
     /// `R v`: a vector in J_i axes expressed in J_{i−1} axes.
     pub fn to_parent(&self, v: V3<S>) -> V3<S> {
-        let (sa, ca) = (self.sin_alpha, self.cos_alpha);
-        let u = self.to_turned(v);
-        V3::new(u.x, ca * u.y - sa * u.z, sa * u.y + ca * u.z)
+        self.twist(self.to_turned(v))
     }
 
     /// A wrench about J_i's origin in J_i axes (force `f`, moment `n`) carried to J_{i−1}:
@@ -135,7 +177,11 @@ impl<S: Scalar> ChainJoint<S> {
             return (rf, self.twist(n).add(self.offset().cross(rf)));
         }
         let arm = V3::new(self.a, self.d.zero(), self.d);
-        (self.twist(f), self.twist(n.add(arm.cross(f))))
+        let (rf, rn) = (self.twist(f), self.twist(n.add(arm.cross(f))));
+        match self.pre {
+            Some(p) => (rf, rn.add(p.arm_cross(rf))),
+            None => (rf, rn),
+        }
     }
 
     /// Whether α is a known multiple of 90°, so that the twist only swaps axes and signs.
@@ -143,15 +189,24 @@ impl<S: Scalar> ChainJoint<S> {
         is_quarter_turn(self.sin_alpha, self.cos_alpha)
     }
 
-    /// The origin of J_i in J_{i−1}: `(a, −sin α · d, cos α · d)`.
+    /// The origin of J_i in J_{i−1}: `(a, −sin α · d, cos α · d)`, or in a tree
+    /// `Rotz(γ) (a, −sin α · d, cos α · d + b)`.
     pub fn offset(&self) -> V3<S> {
-        V3::new(self.a, -(self.sin_alpha * self.d), self.cos_alpha * self.d)
+        let o = V3::new(self.a, -(self.sin_alpha * self.d), self.cos_alpha * self.d);
+        match self.pre {
+            Some(p) => p.turn(V3::new(o.x, o.y, o.z + p.b)),
+            None => o,
+        }
     }
 
     /// The rotation `R` as a matrix.
     pub fn rotation(&self) -> Mat3<S> {
-        Mat3::rot_x(self.sin_alpha, self.cos_alpha)
-            .mul(&Mat3::rot_z(self.sin_theta, self.cos_theta))
+        let r = Mat3::rot_x(self.sin_alpha, self.cos_alpha)
+            .mul(&Mat3::rot_z(self.sin_theta, self.cos_theta));
+        match self.pre {
+            Some(p) => Mat3::rot_z(p.sin_gamma, p.cos_gamma).mul(&r),
+            None => r,
+        }
     }
 
     /// `Rotz(θ) v`: the first step of [`ChainJoint::to_parent`].
@@ -161,11 +216,38 @@ impl<S: Scalar> ChainJoint<S> {
     }
 }
 
-/// A serial robot as joint frames; see the module documentation.
+/// A robot (serial or a tree) as joint frames; see the module documentation.
 #[derive(Clone, Debug)]
 pub struct Chain<S> {
-    /// The joints, base to tip.
+    /// The joints, base to tip, each after its antecedent.
     pub joints: Vec<ChainJoint<S>>,
+}
+
+impl<S> Chain<S> {
+    /// Joint i's antecedent.
+    pub fn parent(&self, i: usize) -> Option<usize> {
+        self.joints[i].parent
+    }
+
+    /// Whether some joint's antecedent is not the joint before it.
+    pub fn is_tree(&self) -> bool {
+        (0..self.joints.len()).any(|i| self.parent(i) != i.checked_sub(1))
+    }
+
+    /// Whether `a` is `d` or one of its ancestors.
+    pub fn supports(&self, a: usize, d: usize) -> bool {
+        let mut at = Some(d);
+        while let Some(k) = at {
+            if k == a {
+                return true;
+            }
+            if k < a {
+                return false;
+            }
+            at = self.parent(k);
+        }
+        false
+    }
 }
 
 impl<S: Scalar> Chain<S> {
@@ -183,6 +265,8 @@ impl<S: Scalar> Chain<S> {
                 };
                 ChainJoint {
                     kind: row.kind,
+                    parent: i.checked_sub(1),
+                    pre: None,
                     sin_alpha: sa,
                     cos_alpha: ca,
                     a,
@@ -204,10 +288,13 @@ impl<S: Scalar> Chain<S> {
         let joints = rows
             .iter()
             .zip(links)
-            .map(|(row, link)| {
+            .enumerate()
+            .map(|(i, (row, link))| {
                 let zero = row.d.zero();
                 ChainJoint {
                     kind: row.kind,
+                    parent: i.checked_sub(1),
+                    pre: None,
                     sin_alpha: row.sin_alpha,
                     cos_alpha: row.cos_alpha,
                     a: row.a,

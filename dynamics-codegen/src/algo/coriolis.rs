@@ -4,15 +4,17 @@
 //! With `p = M q̇` (the generalized momentum), `C = ½(Ṁ + P)`, `P_ij = ∂p_i/∂q_j − ∂p_j/∂q_i`
 //! (q̇ held): the Christoffel form, `Ṁ = C + Cᵀ`. In spatial vectors (motion `(ω, v)`, force
 //! `(n, f)`, each in its joint frame), with `S_j` joint j's axis, `Ic_j` the composite body of
-//! links j..n, `hc_j = Σ_{k≥j} I_k v_k` its momentum and `İc_j` its rate:
+//! link j and its descendants (links j..n in a chain), `hc_j = Σ_k I_k v_k` over them its
+//! momentum and `İc_j` its rate; every carry goes from a joint to its antecedent:
 //!
 //! * `a_j = Ic_j Ṡ_j + ½(İc_j S_j + S_j ×* hc_j)`, `b_j = ½(İc_j S_j − S_j ×* hc_j)`,
 //!   `Ṡ_j = v_j × S_j`;
-//! * for `i ≤ j`, with `a_j`, `b_j` and `Ic_j S_j` carried to J_i:
-//!   `C_ij = S_i · a_j` and `C_ji = Ṡ_i · Ic_j S_j + S_i · b_j`.
+//! * for i = j and each ancestor i of j, with `a_j`, `b_j` and `Ic_j S_j` carried to J_i:
+//!   `C_ij = S_i · a_j` and `C_ji = Ṡ_i · Ic_j S_j + S_i · b_j`; elsewhere (neither an
+//!   ancestor of the other) `C_ij = 0`.
 //!
 //! `İc_j` in J_j's axes is `v_j ×* Ic_j − Ic_j v_j × + L_j`, where `L_j` is the rate of `Ic_j`
-//! as J_j sees it: each joint k > j turning at `q̇_k` adds its commutator, carried inward as in
+//! as J_j sees it: each joint k below j turning at `q̇_k` adds its commutator, carried inward as in
 //! [`super::crba_derivative`] (a prismatic joint adds the rate of a shift along z instead).
 //! `None` for a chain that turns through sums of angles.
 
@@ -107,7 +109,7 @@ fn link_twists<S: Scalar>(chain: &Chain<S>, qd: &[S], zero: S) -> (Vec<V3<S>>, V
     let mut omega = Vec::with_capacity(n);
     let mut vel = Vec::with_capacity(n);
     for (i, joint) in chain.joints.iter().enumerate() {
-        let (w, v) = match i.checked_sub(1) {
+        let (w, v) = match joint.parent {
             Some(p) => {
                 let (w, v): (V3<S>, V3<S>) = (omega[p], vel[p]);
                 (
@@ -132,15 +134,17 @@ fn link_twists<S: Scalar>(chain: &Chain<S>, qd: &[S], zero: S) -> (Vec<V3<S>>, V
     (omega, vel)
 }
 
-/// Momenta of the composites, `hc_i = I_i v_i + X(hc_{i+1})`.
+/// Momenta of the composites, `hc_i = I_i v_i + Σ_{a(c) = i} X_c(hc_c)`.
 fn composite_momenta<S: Scalar>(chain: &Chain<S>, omega: &[V3<S>], vel: &[V3<S>]) -> Vec<Force<S>> {
     let n = chain.joints.len();
     let mut hc: Vec<Force<S>> = (0..n)
         .map(|i| momentum(&chain.joints[i].body, omega[i], vel[i]))
         .collect();
-    for i in (0..n.saturating_sub(1)).rev() {
-        let (f, nn) = hc[i + 1];
-        hc[i] = add(hc[i], chain.joints[i + 1].wrench_to_parent(f, nn));
+    for c in (1..n).rev() {
+        if let Some(i) = chain.parent(c) {
+            let (f, nn) = hc[c];
+            hc[i] = add(hc[i], chain.joints[c].wrench_to_parent(f, nn));
+        }
     }
     hc
 }
@@ -154,16 +158,23 @@ fn composite_rates<S: Scalar>(
 ) -> Vec<Option<Body<S>>> {
     let n = chain.joints.len();
     let mut rate: Vec<Option<Body<S>>> = vec![None; n];
-    for i in (0..n.saturating_sub(1)).rev() {
-        let joint = &chain.joints[i + 1];
-        let carried = rate[i + 1].as_ref().map(|r| joint.body_to_parent(r));
-        let own = match joint.kind {
-            JointKind::Revolute => commutator(joint, &composite[i + 1], qd[i + 1]),
-            JointKind::Prismatic => slide(joint, &composite[i + 1], qd[i + 1]),
+    for c in (1..n).rev() {
+        let Some(i) = chain.parent(c) else {
+            continue;
         };
-        rate[i] = Some(match carried {
+        let joint = &chain.joints[c];
+        let carried = rate[c].as_ref().map(|r| joint.body_to_parent(r));
+        let own = match joint.kind {
+            JointKind::Revolute => commutator(joint, &composite[c], qd[c]),
+            JointKind::Prismatic => slide(joint, &composite[c], qd[c]),
+        };
+        let through = match carried {
             Some(c) => c.add(&own),
             None => own,
+        };
+        rate[i] = Some(match rate[i] {
+            Some(sibling) => sibling.add(&through),
+            None => through,
         });
     }
     rate
@@ -196,8 +207,10 @@ fn fill_column<S: Scalar>(chain: &Chain<S>, at: &Composites<S>, j: usize, c: &mu
     let mut b = half(sub(ic_rate_s, s_hc));
     let mut f2 = f2;
     c[j][j] = axis(chain, j, a);
-    for i in (0..j).rev() {
-        let through = &chain.joints[i + 1];
+    let mut child = j;
+    while let Some(i) = chain.parent(child) {
+        let through = &chain.joints[child];
+        child = i;
         f2 = through.wrench_to_parent(f2.0, f2.1);
         let (wi, vi) = (at.omega[i], at.vel[i]);
         // Ṡ_i · Ic_j S_j with Ṡ_i = (ω_i × z, v_i × z), or (0, ω_i × z).

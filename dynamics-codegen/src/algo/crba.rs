@@ -1,10 +1,13 @@
 //! Composite rigid body algorithm: the mass matrix `M(q)`, the book's D_ij (eq. 6.43)
 //! without actuator inertia.
 //!
-//! The composite body of links i..n, `Ic_i = body_i + X_{i+1}(Ic_{i+1})`, moved by a unit
-//! acceleration of joint i alone exerts the wrench `(f, n) = (z × h, I z)` (revolute) or
+//! The composite body of link i and its descendants (links i..n in a chain),
+//! `Ic_i = body_i + Σ_{a(c) = i} X_c(Ic_c)` over the joints c whose antecedent is i, moved by a
+//! unit acceleration of joint i alone exerts the wrench `(f, n) = (z × h, I z)` (revolute) or
 //! `(m z, h × z)` (prismatic) at J_i. `M_ii` is its component on joint i's axis; carried to
-//! J_j (`f ← R f`, `n ← R n + p × R f`) its component on joint j's axis is `M_ji`. Column j of
+//! each ancestor j in turn, antecedent by antecedent (`f ← R f`, `n ← R n + p × R f`), its
+//! component on joint j's axis is `M_ji`. Where neither of i, j is an ancestor of the other
+//! nothing moves both: `M_ij` is an exact zero. Column j of
 //! the result equals [`super::rnea`] with `qd = 0`, `qdd = e_j` and no gravity. The wrenches
 //! go through a [`super::WrenchCarrier`], which turns moments through runs of parallel joints
 //! in one step where the chain asks for it.
@@ -25,10 +28,12 @@ pub fn crba<S: Scalar>(chain: &Chain<S>) -> Vec<Vec<S>> {
         let (mut f, mut nn) = wrench(chain, i, &composite[i]);
         m[i][i] = axis(chain, i, f, nn);
         let mut carrier = WrenchCarrier::new(chain);
-        for j in (0..i).rev() {
-            (f, nn) = carrier.to_parent(j + 1, f, nn);
+        let mut child = i;
+        while let Some(j) = chain.parent(child) {
+            (f, nn) = carrier.to_parent(child, f, nn);
             m[j][i] = axis(chain, j, f, nn);
             m[i][j] = m[j][i];
+            child = j;
         }
     }
     m
@@ -51,13 +56,16 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
     let zero = joint.a.zero();
     let composite = composites(chain);
     // ∂Ic_i for i < k.
+    // ∂Ic_i for the ancestors i of k.
     let mut d_composite: Vec<Option<Body<S>>> = vec![None; n];
-    if k > 0 {
-        d_composite[k - 1] = Some(turn_derivative(joint, &composite[k]));
-        for i in (0..k - 1).rev() {
-            d_composite[i] = d_composite[i + 1]
+    if let Some(p) = joint.parent {
+        d_composite[p] = Some(turn_derivative(joint, &composite[k]));
+        let mut child = p;
+        while let Some(i) = chain.parent(child) {
+            d_composite[i] = d_composite[child]
                 .as_ref()
-                .map(|d| chain.joints[i + 1].body_to_parent(d));
+                .map(|d| chain.joints[child].body_to_parent(d));
+            child = i;
         }
     }
     let mut dm = vec![vec![zero; n]; n];
@@ -67,10 +75,11 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
         if let Some((df, dn)) = d {
             dm[i][i] = axis(chain, i, df, dn);
         }
-        for j in (0..i).rev() {
-            let through = &chain.joints[j + 1];
+        let mut child = i;
+        while let Some(j) = chain.parent(child) {
+            let through = &chain.joints[child];
             // ∂(R v) = z × (Rotz v) carried on by the twist: Rotz v is already computed.
-            let turned = (j + 1 == k).then(|| {
+            let turned = (child == k).then(|| {
                 let cross_z = |v: V3<S>| {
                     let u = through.to_turned(v);
                     V3::new(-u.y, u.x, zero)
@@ -87,6 +96,7 @@ pub fn crba_derivative<S: Scalar>(chain: &Chain<S>, k: usize) -> Option<Vec<Vec<
                 dm[j][i] = axis(chain, j, df, dn);
                 dm[i][j] = dm[j][i];
             }
+            child = j;
         }
     }
     Some(dm)
@@ -112,13 +122,16 @@ pub(super) fn turn_derivative<S: Scalar>(joint: &ChainJoint<S>, b: &Body<S>) -> 
     frozen.body_to_parent(&d_turned)
 }
 
-/// The composite bodies `Ic_i = body_i + X_{i+1}(Ic_{i+1})`, each about J_i.
+/// The composite bodies `Ic_i = body_i + Σ_{c: a(c) = i} X_c(Ic_c)`, each about J_i: link i
+/// and all its descendants.
 pub(super) fn composites<S: Scalar>(chain: &Chain<S>) -> Vec<Body<S>> {
     let n = chain.joints.len();
     let mut composite: Vec<Body<S>> = chain.joints.iter().map(|j| j.body).collect();
-    for i in (0..n.saturating_sub(1)).rev() {
-        let moved = chain.joints[i + 1].body_to_parent(&composite[i + 1]);
-        composite[i] = composite[i].add(&moved);
+    for c in (1..n).rev() {
+        if let Some(i) = chain.parent(c) {
+            let moved = chain.joints[c].body_to_parent(&composite[c]);
+            composite[i] = composite[i].add(&moved);
+        }
     }
     composite
 }

@@ -1,7 +1,8 @@
 //! Gravity torques from composite first moments: `g(q) = ∂P/∂q`, with
 //! `g_i = −gravity · (z_i × H_i)` for a revolute joint and `g_i = −M_i gravity · z_i` for a
 //! prismatic one, where `M_i` and `H_i` are the mass and the first moment about J_i of links
-//! i..n (the composite bodies of [`super::crba`]) and `gravity` is expressed in J_i axes.
+//! i and its descendants (the composite bodies of [`super::crba`]; links i..n in a chain) and
+//! `gravity` is expressed in J_i axes, carried out from the antecedent's.
 //!
 //! The gravity vector is carried outward and the composites inward independently, so the two
 //! chains of rotations run side by side instead of one after the other as in Newton-Euler.
@@ -12,13 +13,14 @@ use super::{crba::composites, Chain, JointKind, Scalar, V3};
 /// in the base frame). Springs are not included.
 pub fn gravity_torques<S: Scalar>(chain: &Chain<S>, gravity: V3<S>) -> Vec<S> {
     let composite = composites(chain);
-    let mut g = gravity;
+    let mut in_joint: Vec<V3<S>> = Vec::with_capacity(chain.joints.len());
     chain
         .joints
         .iter()
         .zip(&composite)
         .map(|(j, c)| {
-            g = j.to_child(g);
+            let g = j.to_child(j.parent.map_or(gravity, |p| in_joint[p]));
+            in_joint.push(g);
             match j.kind {
                 JointKind::Revolute => g.x * c.h.y - g.y * c.h.x,
                 JointKind::Prismatic => -(g.z * c.mass),

@@ -4,7 +4,10 @@
 //! * **Poses.** D-H frame i in the base frame is `base · A_1 ⋯ A_i` (standard:
 //!   `A_i = Rotz(θ_i) Transz(d_i) Transx(a_i) Rotx(α_i)`; modified:
 //!   `A_i = Rotx(α_{i−1}) Transx(a_{i−1}) Rotz(θ_i) Transz(d_i)`), the user's link frame i is
-//!   that times `link_pose_i`, and the hand frame is link frame n times the tool transform.
+//!   that times `link_pose_i`, and the hand frame is link frame n times the tool transform. In
+//!   a tree, frame i is its antecedent's times `Rotz(γ_i) Transz(b_i) A_i`, and the hand is
+//!   the last joint's link: only that joint and its ancestors move it (the Jacobians' other
+//!   columns are zero, and the sums below run over them alone).
 //! * **Jacobian in the base frame** (Pinocchio's `LOCAL_WORLD_ALIGNED`): the velocity of the
 //!   hand's origin and its angular velocity, in base axes. Column i is `[z_i × (p − o_i); z_i]`
 //!   for a revolute joint and `[z_i; 0]` for a prismatic one, with `z_i`, `o_i` the axis and
@@ -67,6 +70,9 @@ pub struct Kinematics<S> {
     pub axes: Vec<(JointKind, V3<S>, V3<S>)>,
     /// For each joint i, the hand in joint i's axis frame (Paul's `[n o a p]`).
     pub hand_from_axis: Vec<Frame<S>>,
+    /// Whether joint i moves the hand: it is the last joint or one of its ancestors. The
+    /// Jacobians' other columns are zero.
+    pub moves_hand: Vec<bool>,
 }
 
 /// A 6-row Jacobian, rows `[dx, dy, dz, δx, δy, δz]`, one column per joint.
@@ -83,25 +89,30 @@ pub fn kinematics<R: RobotScalars>(scalars: &mut R, robot: &Robot) -> Kinematics
     let steps: Vec<Frame<R::Scalar>> = (0..robot.dof())
         .map(|i| dh_transform(scalars, robot, i))
         .collect();
-    let mut frame = base;
+    // D-H frame i, from its antecedent's.
+    let mut frames: Vec<Frame<R::Scalar>> = Vec::with_capacity(robot.dof());
     let (mut links, mut axes) = (Vec::new(), Vec::new());
     for (i, (joint, step)) in robot.joints.iter().zip(&steps).enumerate() {
-        let before = frame;
-        frame = frame.then(step);
+        let before = robot.parent(i).map_or(base, |p| frames[p]);
+        let frame = before.then(step);
         let axis = match robot.convention {
             Convention::Standard => before,
             Convention::Modified => frame,
         };
         axes.push((joint.kind, column(&axis.rotation, 2), axis.position));
         links.push(frame.then(&pose(scalars, &robot.joints[i].link_pose)));
+        frames.push(frame);
     }
     let last = robot.joints.last().map(|j| pose(scalars, &j.link_pose));
     let end = last.map_or_else(|| identity(zero), |l| l.then(&tool));
-    let hand = frame.then(&end);
-    // Backward, Paul's U: the hand in D-H frame i, from frame n down.
+    let hand = frames.last().copied().unwrap_or(base).then(&end);
+    // Backward, Paul's U: the hand in D-H frame i, from frame n down its ancestors.
     let mut from = end;
     let mut hand_from_axis = vec![end; robot.dof()];
-    for i in (0..robot.dof()).rev() {
+    let mut moves_hand = vec![false; robot.dof()];
+    let mut at = robot.dof().checked_sub(1);
+    while let Some(i) = at {
+        moves_hand[i] = true;
         if robot.convention == Convention::Modified {
             hand_from_axis[i] = from;
         }
@@ -109,12 +120,14 @@ pub fn kinematics<R: RobotScalars>(scalars: &mut R, robot: &Robot) -> Kinematics
         if robot.convention == Convention::Standard {
             hand_from_axis[i] = from;
         }
+        at = robot.parent(i);
     }
     Kinematics {
         links,
         hand,
         axes,
         hand_from_axis,
+        moves_hand,
     }
 }
 
@@ -122,8 +135,9 @@ pub fn kinematics<R: RobotScalars>(scalars: &mut R, robot: &Robot) -> Kinematics
 pub fn jacobian_in_base<S: Scalar>(k: &Kinematics<S>) -> Jacobian<S> {
     let zero = k.hand.position.x.zero();
     let mut rows: Jacobian<S> = Default::default();
-    for &(kind, z, o) in &k.axes {
+    for (&(kind, z, o), &moves) in k.axes.iter().zip(&k.moves_hand) {
         let (v, w) = match kind {
+            _ if !moves => (V3::zero(zero), V3::zero(zero)),
             JointKind::Revolute => (z.cross(k.hand.position - o), z),
             JointKind::Prismatic => (z, V3::zero(zero)),
         };
@@ -137,11 +151,12 @@ pub fn jacobian_in_base<S: Scalar>(k: &Kinematics<S>) -> Jacobian<S> {
 /// The book's ᴴJ, by Paul's method (see the module documentation).
 pub fn jacobian_in_hand<S: Scalar>(k: &Kinematics<S>) -> Jacobian<S> {
     let mut rows: Jacobian<S> = Default::default();
-    for (&(kind, ..), u) in k.axes.iter().zip(&k.hand_from_axis) {
+    for ((&(kind, ..), u), &moves) in k.axes.iter().zip(&k.hand_from_axis).zip(&k.moves_hand) {
         let (r, p) = (&u.rotation.m, u.position);
         let zero = p.x.zero();
         // Column c of the rotation: n, o, a.
         let column = match kind {
+            _ if !moves => [zero; 6],
             JointKind::Revolute => {
                 let d = |c: usize| r[1][c] * p.x - r[0][c] * p.y;
                 [d(0), d(1), d(2), r[2][0], r[2][1], r[2][2]]
@@ -172,6 +187,9 @@ pub fn acceleration_bias_in_base<S: Scalar>(
     let (mut linear, mut angular) = (V3::zero(zero), V3::zero(zero));
     let mut omega = V3::zero(zero);
     for (i, &(kind, z, o)) in k.axes.iter().enumerate() {
+        if !k.moves_hand[i] {
+            continue;
+        }
         let z_dot = omega.cross(z);
         match kind {
             JointKind::Revolute => {
@@ -224,7 +242,7 @@ fn identity<S: Scalar>(zero: S) -> Frame<S> {
 fn dh_transform<R: RobotScalars>(scalars: &mut R, robot: &Robot, i: usize) -> Frame<R::Scalar> {
     let row = scalars.dh_row(i, &robot.joints[i]);
     let (st, ct, sa, ca) = (row.sin_theta, row.cos_theta, row.sin_alpha, row.cos_alpha);
-    match robot.convention {
+    let step = match robot.convention {
         Convention::Standard => Frame {
             rotation: Mat3::rot_z(st, ct).mul(&Mat3::rot_x(sa, ca)),
             position: V3::new(row.a * ct, row.a * st, row.d),
@@ -233,6 +251,17 @@ fn dh_transform<R: RobotScalars>(scalars: &mut R, robot: &Robot, i: usize) -> Fr
             rotation: Mat3::rot_x(sa, ca).mul(&Mat3::rot_z(st, ct)),
             position: V3::new(row.a, -(sa * row.d), ca * row.d),
         },
+    };
+    match &robot.joints[i].branch {
+        Some(branch) => {
+            let (sg, cg) = scalars.sin_cos(&branch.gamma);
+            let pre = Frame {
+                rotation: Mat3::rot_z(sg, cg),
+                position: V3::new(sg.zero(), sg.zero(), scalars.value(&branch.b)),
+            };
+            pre.then(&step)
+        }
+        None => step,
     }
 }
 

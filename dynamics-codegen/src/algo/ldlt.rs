@@ -5,6 +5,14 @@
 //! `M⁻¹ = L⁻ᵀ D⁻¹ L⁻¹`. A serial chain's M is dense, so Featherstone's sparse LTL is this plain
 //! form. The only divisions are the n reciprocals of the pivots; M is positive definite exactly
 //! when every pivot is positive, which the generated code checks.
+//!
+//! A kinematic tree's M is zero wherever neither joint is an ancestor of the other; eliminating
+//! from the first joint fills those zeros in. Featherstone's `M = Lᵀ D L` (*Rigid Body Dynamics
+//! Algorithms* §6.5) eliminates from the last joint instead, where joint k's column reaches only
+//! its ancestors, which are all related to each other: no fill-in, L keeps M's zeros. It is
+//! the form above on M with its joints in reverse order, `P M P = (P Lᵀ P) (P D P) (P L P)`
+//! with P the reversal ([`Ldlt::from_the_tips`]); the zeros of M, exact in the trace, fold
+//! every product that would have filled them.
 
 use super::Scalar;
 
@@ -18,6 +26,9 @@ pub struct Ldlt<S> {
     pub pivots: Vec<S>,
     /// `1 / d_j`.
     pub inverse_pivots: Vec<S>,
+    /// Whether these are the factors of M with its joints in reverse order (Featherstone's
+    /// `Lᵀ D L`); the solutions and the inverse are in M's order either way.
+    pub reversed: bool,
 }
 
 impl<S: Copy> Ldlt<S> {
@@ -32,6 +43,7 @@ impl<S: Copy> Ldlt<S> {
                 .collect(),
             pivots: self.pivots.iter().map(|&x| f(x)).collect(),
             inverse_pivots: self.inverse_pivots.iter().map(|&x| f(x)).collect(),
+            reversed: self.reversed,
         }
     }
 }
@@ -60,12 +72,39 @@ impl<S: Scalar> Ldlt<S> {
             lower,
             pivots,
             inverse_pivots,
+            reversed: false,
+        }
+    }
+
+    /// Featherstone's `M = Lᵀ D L`: the factors of `m` with its rows and columns in reverse
+    /// order (see the module documentation), for a tree's M.
+    #[must_use]
+    pub fn from_the_tips(m: &[Vec<S>]) -> Ldlt<S> {
+        let reversed: Vec<Vec<S>> = m
+            .iter()
+            .rev()
+            .map(|row| row.iter().rev().copied().collect())
+            .collect();
+        Ldlt {
+            reversed: true,
+            ..Ldlt::new(&reversed)
         }
     }
 
     /// `x = M⁻¹ b`.
     #[must_use]
     pub fn solve(&self, b: &[S]) -> Vec<S> {
+        if self.reversed {
+            let b: Vec<S> = b.iter().rev().copied().collect();
+            let mut x = self.solve_in_order(&b);
+            x.reverse();
+            return x;
+        }
+        self.solve_in_order(b)
+    }
+
+    /// [`Ldlt::solve`] in the factors' own order.
+    fn solve_in_order(&self, b: &[S]) -> Vec<S> {
         let n = b.len();
         // L y = b, then z = D⁻¹ y.
         let mut y: Vec<S> = Vec::with_capacity(n);
@@ -101,8 +140,20 @@ impl<S: Scalar> Ldlt<S> {
     /// `M⁻¹ = L⁻ᵀ D⁻¹ L⁻¹`, symmetric: `(M⁻¹)_ij = Σ_{k ≥ max(i, j)} X_ki X_kj / d_k` with
     /// `X = L⁻¹` (unit lower triangular).
     #[must_use]
-    #[allow(clippy::needless_range_loop)]
     pub fn inverse(&self) -> Vec<Vec<S>> {
+        let mut inverse = self.inverse_in_order();
+        if self.reversed {
+            inverse.reverse();
+            for row in &mut inverse {
+                row.reverse();
+            }
+        }
+        inverse
+    }
+
+    /// [`Ldlt::inverse`] in the factors' own order.
+    #[allow(clippy::needless_range_loop)]
+    fn inverse_in_order(&self) -> Vec<Vec<S>> {
         let n = self.pivots.len();
         let Some(&first) = self.pivots.first() else {
             return Vec::new();
@@ -191,5 +242,35 @@ mod tests {
             }
         }
         assert!(f.pivots.iter().all(|&d| d > 0.0));
+    }
+
+    /// Factored from the tips, a tree's M (joint 0 carrying 1 and 2, joint 2 carrying 3)
+    /// keeps its zeros in L, solves `M x = b` and inverts M.
+    #[test]
+    #[allow(clippy::needless_range_loop)]
+    fn from_the_tips_keeps_a_trees_zeros() {
+        let m = [
+            [4.0, 1.0, 0.5, 0.3],
+            [1.0, 3.0, 0.0, 0.0],
+            [0.5, 0.0, 2.5, 0.4],
+            [0.3, 0.0, 0.4, 2.0],
+        ]
+        .map(Vec::from)
+        .to_vec();
+        let f = Ldlt::from_the_tips(&m);
+        // In reverse order, row k of L is (the reversed) joint 3 − k: joint 1's row (k = 2)
+        // reaches joint 0 alone, never joints 2 or 3.
+        assert_eq!(f.lower[2], vec![0.0, 0.0]);
+        let b = [0.3, -1.2, 0.7, 2.0];
+        let x = f.solve(&b);
+        let inverse = f.inverse();
+        for i in 0..4 {
+            let mx: f64 = (0..4).map(|j| m[i][j] * x[j]).sum();
+            assert!((mx - b[i]).abs() < 1e-12, "row {i}: {mx} vs {}", b[i]);
+            for j in 0..4 {
+                let identity: f64 = (0..4).map(|k| m[i][k] * inverse[k][j]).sum();
+                assert!((identity - f64::from(i == j)).abs() < 1e-12);
+            }
+        }
     }
 }

@@ -18,11 +18,13 @@ mod regroup;
 mod rnea;
 mod robot;
 mod runs;
+#[cfg(test)]
+pub(crate) mod tree_tests;
 mod vector;
 
 pub use crate::model::JointKind;
 pub use body::Body;
-pub use chain::{Chain, ChainJoint, DhRow, Inertial};
+pub use chain::{Chain, ChainJoint, DhRow, Inertial, Pre};
 pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};

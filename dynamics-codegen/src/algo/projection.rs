@@ -9,7 +9,9 @@
 //! joint i's unit motion `(a, b)` (angular, linear, in F's axes at F's origin), summed over the
 //! links from i on:
 //! `τ_i = Σ_{l≥i} m (b · v̇) + h · (Uᵀ b + v̇ × a) + Σ_k I_k (a · n_k)`, `n_k` the moment of the
-//! unit inertia entry k. Each term is one parameter times its coefficient, so with symbolic
+//! unit inertia entry k, over the links l that joint i moves (i and its descendants: a unit
+//! motion is carried from each joint to its children, and the rates likewise from each link's
+//! antecedent). Each term is one parameter times its coefficient, so with symbolic
 //! parameters the regressor's columns are read off one by one.
 //!
 //! Newton-Euler ([`super::rnea`]) carries each link's wrench back towards the base; with ten
@@ -214,16 +216,22 @@ fn link_rates<S: Scalar>(
     gravity: V3<S>,
 ) -> Vec<Rates<S>> {
     let zero = gravity.x.zero();
-    let (mut w, mut wd, mut vd) = (V3::zero(zero), V3::zero(zero), -gravity);
+    let lifted = -gravity;
     let mut links: Vec<Rates<S>> = Vec::with_capacity(chain.joints.len());
     for (i, j) in chain.joints.iter().enumerate() {
+        let (w, mut wd, mut vd) = j
+            .parent
+            .map_or((V3::zero(zero), V3::zero(zero), lifted), |p| {
+                (links[p].w, links[p].wd, links[p].vd)
+            });
+        let mut w = w;
         // From the parent's frame: J_{i−1}, or its D-H frame, whence J_i is `Rotz(θ) Transz(d)`.
         let (offset, into): (_, &dyn Fn(V3<S>) -> V3<S>) = match twists {
             Some(_) => (V3::new(zero, zero, j.d), &|v| j.unturn(v)),
             None => (j.offset(), &|v| j.to_child(v)),
         };
-        if let Some(parent) = links.last() {
-            vd = vd + mul(&parent.u, offset);
+        if let Some(p) = j.parent {
+            vd = vd + mul(&links[p].u, offset);
         }
         vd = into(vd);
         let (w_in, wd_in) = (into(w), into(wd));
@@ -243,14 +251,14 @@ fn link_rates<S: Scalar>(
             Some(t) => t[i].rates(w, wd, vd),
             None => Rates::new(w, wd, vd),
         };
-        (w, wd, vd) = (rates.w, rates.wd, rates.vd);
         links.push(rates);
     }
     links
 }
 
 /// `motions[i][l − i]`: joint i's unit motion (angular, linear) in J_l's axes at J_l's origin,
-/// or in link l's D-H frame where `twists` are given, for each link l ≥ i.
+/// or in link l's D-H frame where `twists` are given, for each link l ≥ i: carried from l's
+/// antecedent's, and zero where l is not i's descendant.
 fn joint_motions<S: Scalar>(
     chain: &Chain<S>,
     twists: Option<&[Twist<S>]>,
@@ -266,7 +274,12 @@ fn joint_motions<S: Scalar>(
             };
             let mut along = vec![out(i, own)];
             for (l, j) in chain.joints.iter().enumerate().skip(i + 1) {
-                let (a, b) = along.last().copied().unwrap_or(own);
+                // Joint i moves only its descendants.
+                let Some(p) = j.parent.filter(|_| chain.supports(i, l)) else {
+                    along.push((V3::zero(zero), V3::zero(zero)));
+                    continue;
+                };
+                let (a, b) = along[p - i];
                 let into = match twists {
                     Some(_) => (j.unturn(a), j.unturn(b + a.cross_z(j.d))),
                     None => (j.to_child(a), j.to_child(b + a.cross(j.offset()))),

@@ -16,13 +16,18 @@ impl<S: Scalar> Chain<S> {
     /// * prismatic joint j: link j turns with link j−1, so its rotational inertia moves onto
     ///   link j−1; link j keeps its mass and first moment.
     ///
-    /// Joint 1 is left alone: its symmetric part would move onto the base, which changes the
-    /// potential energy by a constant.
+    /// Joints on the base are left alone: their symmetric part would move onto the base, which
+    /// changes the potential energy by a constant. In a tree "link j−1" is the antecedent's
+    /// link, carried onto through γ and b too; the joints are taken from the last, so that a
+    /// link has received its children's parts before it hands its own on.
     #[must_use]
     pub fn regrouped(&self) -> Chain<S> {
         let mut joints = self.joints.clone();
         for j in (1..joints.len()).rev() {
             let joint = joints[j];
+            let Some(parent) = joint.parent else {
+                continue;
+            };
             let b = joint.body;
             let zero = b.mass.zero();
             let (moved, kept, through) = match joint.kind {
@@ -62,7 +67,7 @@ impl<S: Scalar> Chain<S> {
             };
             joints[j].body = kept;
             let carried = through.body_to_parent(&moved);
-            joints[j - 1].body = joints[j - 1].body.add(&carried);
+            joints[parent].body = joints[parent].body.add(&carried);
         }
         Chain { joints }
     }

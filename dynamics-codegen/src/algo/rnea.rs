@@ -1,12 +1,14 @@
 //! Recursive Newton-Euler (Luh, Walker, Paul): inverse dynamics
 //! `tau = M(q) qdd + C(q, qd) qd + g(q)` in O(n).
 //!
-//! Forward, in joint frames: `ω_i = Rᵀω_{i−1} + q̇_i z`, `ω̇_i = Rᵀω̇_{i−1} + Rᵀω_{i−1} × q̇_i z +
-//! q̈_i z`, `v̇_i = Rᵀ(v̇_{i−1} + ω̇_{i−1} × p_i + ω_{i−1} × (ω_{i−1} × p_i))` (plus `2ω_i × ḋ z + d̈ z`
-//! for a prismatic joint), with `v̇_0 = −gravity`. With first moments `h = m c`:
+//! Forward, in joint frames, from each joint's antecedent `a = a(i)` (`i − 1` in a chain):
+//! `ω_i = Rᵀω_a + q̇_i z`, `ω̇_i = Rᵀω̇_a + Rᵀω_a × q̇_i z + q̈_i z`,
+//! `v̇_i = Rᵀ(v̇_a + ω̇_a × p_i + ω_a × (ω_a × p_i))` (plus `2ω_i × ḋ z + d̈ z` for a prismatic
+//! joint), with `v̇_0 = −gravity` at the base. With first moments `h = m c`:
 //! `F_i = m v̇_i + ω̇_i × h + ω_i × (ω_i × h)`, `N_i = I ω̇_i + ω_i × I ω_i + h × v̇_i`, the first two
 //! terms of `N_i` read off Khalil's `U = [ω̇]× + [ω]×[ω]×`, which `F_i` and `v̇_{i+1}` use too.
-//! Backward: `f_i = F_i + R f_{i+1}`, `n_i = N_i + R n_{i+1} + p_{i+1} × R f_{i+1}`, and
+//! Backward, over the children c of i (joints whose antecedent is i; `i + 1` in a chain):
+//! `f_i = F_i + Σ R_c f_c`, `n_i = N_i + Σ (R_c n_c + p_c × R_c f_c)`, and
 //! `tau_i = n_i · z` (revolute) or `f_i · z` (prismatic). Setting `qdd = 0` and gravity to zero
 //! gives `C(q, qd) qd`; `qd = qdd = 0` gives `g(q)`; column j of `M` is `qd = 0`, `qdd = e_j`
 //! without gravity.
@@ -32,11 +34,14 @@ use std::ops::{Add, Neg};
 pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) -> Vec<S> {
     let n = chain.joints.len();
     let zero = gravity.x.zero();
-    let mut w = V3::zero(zero);
-    let mut wd = V3::zero(zero);
-    let mut vd = gravity.neg();
-    // The base does not move.
-    let mut u = Rates::new(w, wd);
+    let base = Link {
+        w: V3::zero(zero),
+        wd: V3::zero(zero),
+        vd: gravity.neg(),
+        // The base does not move.
+        u: Rates::new(V3::zero(zero), V3::zero(zero)),
+    };
+    let mut links: Vec<Link<S>> = Vec::with_capacity(n);
     let mut forces = Vec::with_capacity(n);
     let unturned = unturned_last(chain);
     // The rates that entered the first joint of the current run of parallel revolute joints
@@ -44,8 +49,10 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     let mut run: Option<(V3<S>, V3<S>)> = None;
     let angles = chain.run_angles();
     for (i, j) in chain.joints.iter().enumerate() {
+        let parent = j.parent.map_or(&base, |p| &links[p]);
+        let (mut w, mut wd) = (parent.w, parent.wd);
         let p = j.offset();
-        let vd_parent = vd.add(u.mul(p));
+        let vd_parent = parent.vd.add(parent.u.mul(p));
         let to_child = |v| {
             if unturned == Some(i) {
                 j.untwist(v)
@@ -53,7 +60,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
                 j.to_child(v)
             }
         };
-        vd = to_child(vd_parent);
+        let mut vd = to_child(vd_parent);
         let summed = match (run, angles[i]) {
             (Some(entered), Some(angle)) if j.sum_angles && unturned != Some(i) => {
                 Some((entered, angle))
@@ -87,32 +94,50 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
             }
         }
         let b = &j.body;
-        u = Rates::new(w, wd);
+        let u = Rates::new(w, wd);
         let f = vd.scale(b.mass).add(u.mul(b.h));
         let nn = u.inertial_moment(b.inertia).add(b.h.cross(vd));
         forces.push((f, nn));
+        links.push(Link { w, wd, vd, u });
     }
+    backward(chain, forces, unturned, zero)
+}
+
+/// Newton-Euler's backward pass: from the last joint down, each link's total wrench (its own
+/// and its children's) gives its joint's torque and is added to its antecedent's.
+fn backward<S: Scalar>(
+    chain: &Chain<S>,
+    mut forces: Vec<(V3<S>, V3<S>)>,
+    unturned: Option<usize>,
+    zero: S,
+) -> Vec<S> {
+    let n = chain.joints.len();
     let mut tau = vec![zero; n];
-    let mut child: Option<(V3<S>, V3<S>)> = None;
     let mut carrier = WrenchCarrier::new(chain);
     for i in (0..n).rev() {
-        let (mut f, mut nn) = forces[i];
-        if let Some((fc, nc)) = child {
-            let (rf, rn) = if unturned == Some(i + 1) {
-                chain.joints[i + 1].wrench_from_turned(fc, nc)
-            } else {
-                carrier.to_parent(i + 1, fc, nc)
-            };
-            f = f.add(rf);
-            nn = nn.add(rn);
-        }
+        let (f, nn) = forces[i];
         tau[i] = match chain.joints[i].kind {
             JointKind::Revolute => nn.z,
             JointKind::Prismatic => f.z,
         };
-        child = Some((f, nn));
+        if let Some(p) = chain.parent(i) {
+            let (rf, rn) = if unturned == Some(i) {
+                chain.joints[i].wrench_from_turned(f, nn)
+            } else {
+                carrier.to_parent(i, f, nn)
+            };
+            forces[p] = (forces[p].0.add(rf), forces[p].1.add(rn));
+        }
     }
     tau
+}
+
+/// A link's rates in its joint frame, which its children's recursions start from.
+struct Link<S> {
+    w: V3<S>,
+    wd: V3<S>,
+    vd: V3<S>,
+    u: Rates<S>,
 }
 
 /// The last joint, if it is revolute and its link axially symmetric about it: that link is

@@ -3,7 +3,7 @@
 //! its link's inertial parameters, in the robot's D-H convention. Written once for the numeric
 //! evaluation and the symbolic trace, which differ only in how a [`Value`] becomes a scalar.
 
-use super::{Chain, DhRow, Inertial, JointKind, Scalar, V3};
+use super::{Chain, DhRow, Inertial, JointKind, Pre, Scalar, V3};
 use crate::model::{Convention, Joint, Robot, Value};
 
 /// How a robot's values and joint variables become scalars: numbers for an evaluation at a
@@ -24,7 +24,8 @@ pub trait RobotScalars {
     /// `(sin(q_i + offset), cos(q_i + offset))` of revolute joint `joint`.
     fn joint_sin_cos(&mut self, joint: usize, offset: &Value) -> (Self::Scalar, Self::Scalar);
 
-    /// The robot as a chain of joint frames.
+    /// The robot as a chain of joint frames; a tree's joints (modified convention only: the
+    /// pipeline refuses a standard table with branches) know their antecedents and `γ`, `b`.
     fn chain(&mut self, robot: &Robot) -> Chain<Self::Scalar> {
         let mut rows = Vec::with_capacity(robot.dof());
         let mut links = Vec::with_capacity(robot.dof());
@@ -32,10 +33,28 @@ pub trait RobotScalars {
             rows.push(self.dh_row(i, joint));
             links.push(self.inertial(joint));
         }
-        match robot.convention {
+        let mut chain = match robot.convention {
             Convention::Standard => Chain::standard(&rows, &links),
             Convention::Modified => Chain::modified(&rows, &links),
+        };
+        for (i, joint) in robot.joints.iter().enumerate() {
+            if let Some(branch) = &joint.branch {
+                let (sin_gamma, cos_gamma) = self.sin_cos(&branch.gamma);
+                let b = self.value(&branch.b);
+                // Tested on constants only, so that a symbolic γ adds no node.
+                let unturned = sin_gamma.is_zero()
+                    && cos_gamma.is_constant()
+                    && (cos_gamma - cos_gamma.one()).is_zero();
+                let turned = !unturned;
+                chain.joints[i].parent = robot.parent(i);
+                chain.joints[i].pre = (turned || !b.is_zero()).then_some(Pre {
+                    sin_gamma,
+                    cos_gamma,
+                    b,
+                });
+            }
         }
+        chain
     }
 
     /// Joint `i`'s D-H row with its joint variable substituted.

@@ -11,6 +11,7 @@ impl<S: Scalar> ChainJoint<S> {
     pub fn parallel_to(&self, previous: &ChainJoint<S>) -> bool {
         self.kind == JointKind::Revolute
             && previous.kind == JointKind::Revolute
+            && self.pre.is_none()
             && self.sin_alpha.is_zero()
             && (self.cos_alpha - self.cos_alpha.one()).is_zero()
     }
@@ -60,9 +61,11 @@ impl<'c, S: Scalar> WrenchCarrier<'c, S> {
 
 impl<S: Scalar> Chain<S> {
     /// The same chain with [`ChainJoint::sum_angles`] set to `on` for every joint parallel to
-    /// the one before it.
+    /// the one before it. Not in a tree: the recursions' runs follow the joints' order, which
+    /// there is not the path from a joint to its antecedent.
     #[must_use]
     pub fn summing_angles(mut self, on: bool) -> Chain<S> {
+        let on = on && !self.is_tree();
         for i in 1..self.joints.len() {
             let parallel = self.joints[i].parallel_to(&self.joints[i - 1]);
             self.joints[i].sum_angles = on && parallel;

@@ -4,7 +4,8 @@
 //! ([`link`]), and each joint's actuator inertia and spring are not negative ([`drive`]), its
 //! friction coefficients not negative and its smoothing velocity positive ([`friction`];
 //! [`gear`] for a rotor and gear ratio, which the model does not keep: the front ends check
-//! them before turning them into an actuator inertia). Each problem names the value it
+//! them before turning them into an actuator inertia), and a tree's joints each after its
+//! antecedent, in the modified convention ([`tree`]). Each problem names the value it
 //! concerns by its description-file key ([`LinkParameter::key`]); the front end's table of
 //! sources places it on the tokens or at the line and column that give that value.
 
@@ -12,11 +13,13 @@ mod drive;
 mod eigenvalues;
 mod friction;
 mod link;
+mod tree;
 
 pub use drive::drive;
 pub use eigenvalues::eigenvalues;
 pub use friction::{friction, gear, geared_inertia};
 pub use link::{link, LinkParameter, LinkProblem};
+pub use tree::{tree, BranchProblem};
 
 use crate::model::Robot;
 
@@ -31,6 +34,13 @@ pub enum Problem {
     TooManyJoints {
         /// The number of joints.
         count: usize,
+    },
+    /// Joint `joint` (0-based) hangs in the tree where the algorithms cannot take it.
+    Branch {
+        /// The joint's index, 0-based.
+        joint: usize,
+        /// What is wrong with its place.
+        problem: BranchProblem,
     },
     /// A physical problem with link `joint` (0-based).
     Link {
@@ -49,6 +59,7 @@ impl std::fmt::Display for Problem {
                 "{count} joints; at most {MAX_JOINTS} are supported (the generated code grows as n³)"
             ),
             Problem::Link { joint, problem } => write!(f, "joint {}: {}", joint + 1, problem.message),
+            Problem::Branch { joint, problem } => write!(f, "joint {}: {}", joint + 1, problem.message),
         }
     }
 }
@@ -67,7 +78,10 @@ pub fn robot(robot: &Robot, check_inertia: &[bool]) -> Vec<Problem> {
             .chain(j.link.friction.iter().flat_map(friction))
             .map(move |problem| Problem::Link { joint, problem })
     });
-    too_many.into_iter().chain(links).collect()
+    let branches = tree(robot)
+        .into_iter()
+        .map(|(joint, problem)| Problem::Branch { joint, problem });
+    too_many.into_iter().chain(branches).chain(links).collect()
 }
 
 #[cfg(test)]

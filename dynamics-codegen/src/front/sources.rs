@@ -55,6 +55,7 @@ impl<P> Sources<P> {
         match problem {
             Problem::TooManyJoints { .. } => self.get(MAX_JOINTS, "type"),
             Problem::Link { joint, problem } => self.get(*joint, problem.parameter.key()),
+            Problem::Branch { joint, .. } => self.get(*joint, "type"),
         }
     }
 }

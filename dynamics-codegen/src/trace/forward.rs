@@ -1,5 +1,6 @@
 //! Forward dynamics, `q̈ = M⁻¹(τ − C q̇ − g − f(q̇))`, and `M⁻¹`, through the unrolled LDLᵀ of
-//! M ([`algo::Ldlt`]) traced on the graph where M already is. The factors depend on the
+//! M ([`algo::Ldlt`]) traced on the graph where M already is, or for a kinematic tree
+//! Featherstone's `Lᵀ D L`, which keeps M's zeros. The factors depend on the
 //! parameters and `q` alone: in the forward family's module they go to its shared
 //! configuration, and each method adds only its right-hand side and the substitutions.
 
@@ -30,19 +31,25 @@ impl ForwardEquations {
 }
 
 /// Traces the factorization of `mass` and the solutions; `bias` is `C q̇ + g` and `friction`
-/// the friction torques.
+/// the friction torques; `tree` factors from the tips ([`algo::Ldlt::from_the_tips`]).
 pub(super) fn forward(
     graph: &RefCell<Graph>,
     mass: &[Vec<NodeId>],
     bias: &[NodeId],
     friction: &[NodeId],
+    tree: bool,
 ) -> ForwardEquations {
     let expr = |id: NodeId| Expr::new(graph, id);
     let m: Vec<Vec<Expr>> = mass
         .iter()
         .map(|row| row.iter().map(|&id| expr(id)).collect())
         .collect();
-    let factors = algo::Ldlt::new(&m);
+    // A tree's M factored from the tips keeps its zeros (Featherstone's Lᵀ D L).
+    let factors = if tree {
+        algo::Ldlt::from_the_tips(&m)
+    } else {
+        algo::Ldlt::new(&m)
+    };
     let mass_inverse = factors
         .inverse()
         .iter()

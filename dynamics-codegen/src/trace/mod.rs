@@ -40,6 +40,8 @@ mod outputs;
 mod regressor;
 mod simplified;
 mod tracer;
+#[cfg(test)]
+mod tree_tests;
 
 use crate::algo::{JointKind, RobotScalars};
 use crate::method::{Family, FamilySet};
@@ -171,7 +173,13 @@ pub fn derive(robot: &Robot) -> Equations {
         tau.map(|(&t, &f)| g.add(t, f)).collect()
     };
     // After τ, so that the nodes of the other outputs are those they always had.
-    let forward = forward::forward(&graph, &mass, &newton_euler.bias, &friction);
+    let forward = forward::forward(
+        &graph,
+        &mass,
+        &newton_euler.bias,
+        &friction,
+        robot.is_tree(),
+    );
     Equations {
         graph: graph.into_inner(),
         dof: robot.dof(),

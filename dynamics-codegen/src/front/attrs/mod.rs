@@ -100,9 +100,10 @@ pub(super) fn tell(
             counted(*count)
         ),
         Problem::Link { joint, problem } => format!("link {}: {}", joint + 1, problem.message),
+        Problem::Branch { joint, problem } => format!("joint {}: {}", joint + 1, problem.message),
     };
     let fallback = match problem {
-        Problem::Link { joint, .. } => sources.get(*joint, "link"),
+        Problem::Link { joint, .. } | Problem::Branch { joint, .. } => sources.get(*joint, "link"),
         Problem::TooManyJoints { .. } => None,
     };
     let at = sources.place(problem).or(fallback).copied();

@@ -1,0 +1,75 @@
+//! The checks of a kinematic tree's shape, which the algorithms rely on: every antecedent is an
+//! earlier joint (so that a joint's rates follow from its antecedent's, computed before it),
+//! and a tree is given in the modified D-H convention (Khalil and Kleinfinger's table: a
+//! standard table has no antecedent column and no γ, b).
+
+use crate::model::{Convention, Robot};
+
+/// Joint `joint`'s place in the tree is not one the algorithms can take; the message says why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct BranchProblem {
+    /// What is wrong.
+    pub message: String,
+}
+
+/// The problems of `robot`'s branches, each with its joint (0-based).
+#[must_use]
+pub fn tree(robot: &Robot) -> Vec<(usize, BranchProblem)> {
+    let mut problems = Vec::new();
+    for (j, joint) in robot.joints.iter().enumerate() {
+        let Some(branch) = &joint.branch else {
+            continue;
+        };
+        if let Some(parent) = branch.parent.filter(|&p| p >= j) {
+            let message = format!(
+                "its antecedent is joint {}, which is not an earlier joint: number the joints \
+                 so that each comes after the joint that carries it",
+                parent + 1
+            );
+            problems.push((j, BranchProblem { message }));
+        }
+    }
+    if robot.is_tree() && robot.convention == Convention::Standard {
+        let first = (0..robot.dof()).find(|&i| robot.parent(i) != i.checked_sub(1));
+        let message = "a kinematic tree is given in the modified D-H convention \
+                       (Khalil-Kleinfinger): a standard table has no antecedent"
+            .to_string();
+        problems.extend(first.map(|j| (j, BranchProblem { message })));
+    }
+    problems
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tree;
+    use crate::algo::tree_tests::{at, robot, R};
+    use crate::model::Convention;
+
+    /// A joint carried by a later joint, and a tree in the standard convention, are refused
+    /// with the joint named; the hand-built trees pass.
+    #[test]
+    fn antecedents_come_first_and_trees_are_modified() {
+        let good = robot(
+            &[at(None, R, 0.0, 0.0, 0.0), at(None, R, 0.0, 0.0, 1.0)],
+            true,
+        );
+        assert!(tree(&good).is_empty());
+        let mut standard = good.clone();
+        standard.convention = Convention::Standard;
+        let problems = tree(&standard);
+        assert_eq!(problems.len(), 1);
+        assert_eq!(problems[0].0, 1);
+        assert!(problems[0].1.message.contains("modified D-H"));
+        // Through the door's checks, named by its joint.
+        let told = crate::pipeline::problems(&standard, true);
+        assert!(told[0].starts_with("joint 2: a kinematic tree"), "{told:?}");
+        let specs = [
+            at(None, R, 0.0, 0.0, 0.0),
+            at(Some(2), R, 0.0, 0.0, 1.0),
+            at(Some(0), R, 0.0, 0.0, 2.0),
+        ];
+        let problems = tree(&robot(&specs, true));
+        assert_eq!(problems.len(), 1);
+        assert!(problems[0].1.message.contains("antecedent is joint 3"));
+    }
+}
