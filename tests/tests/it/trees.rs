@@ -14,7 +14,7 @@ use dynamics_codegen::symbolic::NodeId;
 use dynamics_reference::nalgebra::DMatrix;
 use dynamics_reference::scaled_error;
 use dynamics_tests::interpret::{evaluate, State};
-use dynamics_tests::random::{chain_as_tree, tree_case, TreeCase, TreeSpec};
+use dynamics_tests::random::{chain_as_tree, tree, tree_case, TreeCase, TreeSpec};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestError, TestRunner};
 
@@ -116,4 +116,10 @@ fn generated_matches_reference(seed: u64, trees: impl Strategy<Value = TreeSpec>
 #[test]
 fn chains_written_as_trees_match_the_reference() {
     generated_matches_reference(1, chain_as_tree(), "chains as trees");
+}
+
+/// The property: on random trees the closed form equals the book's method.
+#[test]
+fn generated_matches_reference_on_random_trees() {
+    generated_matches_reference(2, tree(), "trees");
 }
