@@ -73,7 +73,7 @@ fn base_and_tip_are_for_urdf_files() {
     let out = dynamics(&["inspect", "robots/ur5.toml", "--tip", "tool0"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(
-        stderr(&out).contains("--base and --tip name links of a URDF file"),
+        stderr(&out).contains("--base, --tip and --tips name links of a URDF file"),
         "{}",
         stderr(&out)
     );

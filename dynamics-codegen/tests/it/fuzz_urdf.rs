@@ -227,7 +227,11 @@ static ROBOTS: AtomicUsize = AtomicUsize::new(0);
 
 /// Loads `text` as `path` the ways the tools do; the first broken promise, if any.
 fn check_file(path: &str, text: &str, tip: Option<&str>) -> Result<(), String> {
-    let chain = front::Chain { base: None, tip };
+    let chain = front::Chain {
+        base: None,
+        tip,
+        tips: &[],
+    };
     let lines = fuzz::Lines::of(text);
     match front::load_urdf(path, text, chain, true) {
         Err(errors) if errors.is_empty() => return Err("an empty list of errors".into()),
@@ -321,6 +325,7 @@ fn the_bases_load() {
         let chain = front::Chain {
             base: None,
             tip: tip_of(name),
+            tips: &[],
         };
         if let Err(e) = front::load_urdf(name, text, chain, true) {
             panic!("{name}: {e:?}");

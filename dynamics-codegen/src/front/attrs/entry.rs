@@ -145,3 +145,21 @@ pub(super) fn string(input: ParseStream, usage: &str) -> syn::Result<LitStr> {
         Err(input.error(format!("expected a string: {usage}")))
     }
 }
+
+/// A bracketed list of strings, `["a", "b"]`, with the span of its brackets.
+pub(super) fn strings(input: ParseStream, usage: &str) -> syn::Result<(Vec<LitStr>, Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(format!("expected a list of strings: {usage}")));
+    }
+    let content;
+    let bracket = syn::bracketed!(content in input);
+    let mut list = Vec::new();
+    while !content.is_empty() {
+        list.push(string(&content, usage)?);
+        if content.is_empty() {
+            break;
+        }
+        content.parse::<Token![,]>()?;
+    }
+    Ok((list, bracket.span.join()))
+}

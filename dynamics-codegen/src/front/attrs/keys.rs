@@ -40,13 +40,15 @@ keys! {
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
-    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`,
+    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"` (a chain) or
+    /// `tips = ["left_hand", "right_hand"]` (the branches to those links),
     /// `tool = [x, y, z, roll, pitch, yaw]`. An opt-in family's name is a key too
     /// (`derivatives = true`), from the method table.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
-        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tool = "tool",
+        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tips = "tips",
+        Tool = "tool",
     }
 }
 

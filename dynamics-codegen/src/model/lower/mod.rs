@@ -52,6 +52,11 @@ pub const AXIS_LENGTH_TOLERANCE: f64 = 1e-4;
 /// snapping to a quarter turn, since a component of 1e-5 tilts the axis by 1e-5 rad.
 pub const AXIS_COMPONENT_TOLERANCE: f64 = super::QUARTER_TURN_TOLERANCE;
 
+/// How small the sine of the angle between two joint axes must be for the axes to be taken as
+/// parallel (the common normal then follows Craig's rule for parallel axes): the tilt ignored
+/// moves a frame by at most this times the distance between the axes.
+pub const PARALLEL_TOLERANCE: f64 = 1e-6;
+
 /// Why a joint given URDF style has no D-H row.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameProblem {
@@ -402,7 +407,7 @@ fn common_normal(
     let (u, v) = (&axis.direction, &next.direction);
     let normal = cross(u, v);
     let reference = previous_x.cloned().unwrap_or_else(|| link_x(axis));
-    let (origin, x) = if geometry::is_zero(&normal) {
+    let (origin, x) = if nearly_parallel(&normal) {
         let origin = foot.cloned().unwrap_or_else(|| axis.point.clone());
         let w = sub(&next.point, &origin);
         let offset = sub(&w, &scale(&dot(&w, u), u));
@@ -427,7 +432,7 @@ fn common_normal(
         let scale_by = (Value::one() - b.clone() * b.clone())
             .exact()
             .and_then(crate::symbolic::Number::recip)
-            .expect("directions are numbers, not parallel");
+            .expect("directions are numbers, not nearly parallel");
         let s = clean((b * e - d) * Value::num(scale_by));
         (add(&axis.point, &scale(&s, u)), x)
     };
@@ -441,6 +446,14 @@ fn common_normal(
         x,
         z: u.clone(),
     })
+}
+
+/// Whether two unit directions whose cross product is `normal` are parallel for the common
+/// normal: exactly, or within [`PARALLEL_TOLERANCE`]: nearer, the skew foot
+/// `s = (b e − d) / (1 − b²)` is far off and loses more to rounding than the tilt ignored.
+fn nearly_parallel(normal: &Vec3) -> bool {
+    geometry::is_zero(normal)
+        || number(&dot(normal, normal)).is_some_and(|sin2| sin2 <= PARALLEL_TOLERANCE.powi(2))
 }
 
 /// The unit direction of an offset: the coordinate axis it lies along (any component may name

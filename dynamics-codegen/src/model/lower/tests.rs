@@ -477,3 +477,40 @@ fn a_hand_lowered_tree() {
     assert_eq!(row(2), ["0", "1/2", "-1/2 * pi", "0", "0", "0"]);
     assert_eq!(row(3), ["1/2 * pi", "0", "0", "1", "0", "0"]);
 }
+
+/// Axes a billionth of a radian off parallel (the Allegro hand's thumb against its first
+/// finger, as the URDF's rounded angles make them) are taken as parallel: the skew formula's
+/// `1 − b²` rounds to 0 there. The frames still agree to the tilt times the offset.
+#[test]
+fn nearly_parallel_axes_lower_as_parallel_ones() {
+    let mut rng = Rng::new(9);
+    for tilt in [1e-9, -3e-8, 5e-7] {
+        let mut robot = random_robot(&mut rng);
+        robot.joints.truncate(2);
+        while robot.joints.len() < 2 {
+            robot.joints.push(random_joint(&mut rng));
+        }
+        let places = [([0.0, 0.0, 0.0], 0.0), ([0.1, 0.0, 0.05], tilt)];
+        for (joint, (xyz, roll)) in robot.joints.iter_mut().zip(places) {
+            joint.frame = Some(AxisFrame {
+                origin: Placement {
+                    xyz: xyz.map(Value::from_f64),
+                    rpy: [roll, 0.0, 0.0].map(Value::from_f64),
+                },
+                axis: [0.0, 0.0, 1.0].map(Value::from_f64),
+            });
+        }
+        let mut lowered = robot.clone();
+        lower_frames(&mut lowered).unwrap_or_else(|p| panic!("tilt {tilt}: {p:?}"));
+        let q = rng.vector(2, -3.0, 3.0);
+        let (want, dh) = (user_frames(&robot, &q), dh_frames(&lowered, &q));
+        for (i, (w, d)) in want.iter().zip(&dh).enumerate() {
+            let got = mul(d, &pose_matrix(&lowered.joints[i].link_pose));
+            for r in 0..4 {
+                for c in 0..4 {
+                    assert!((got[r][c] - w[r][c]).abs() < 1e-6, "tilt {tilt}, link {i}");
+                }
+            }
+        }
+    }
+}
