@@ -61,10 +61,12 @@ keys! {
 
 keys! {
     /// A key of `revolute(...)` and `prismatic(...)`: `xyz = [x, y, z]` and
-    /// `rpy = [roll, pitch, yaw]` place the joint frame in the previous link's frame (as URDF's
-    /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame.
+    /// `rpy = [roll, pitch, yaw]` place the joint frame in the parent link's frame (as URDF's
+    /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame; in a tree,
+    /// `parent = 2` or `parent = "palm"` names the joint it hangs from (default: the one
+    /// before; 0 the base) and `name = "palm"` names it.
     JointKey {
-        Xyz = "xyz", Rpy = "rpy", Axis = "axis",
+        Xyz = "xyz", Rpy = "rpy", Axis = "axis", Parent = "parent", Name = "name",
     }
 }
 
