@@ -78,12 +78,10 @@ fn branch(
         return None;
     };
     let parent = ParentAttr::Number(number, antecedent.span);
-    let parent = match tree::antecedent(n, &parent, count, &BTreeMap::new()) {
+    let parent = match tree::antecedent(n, &parent, count, &BTreeMap::new(), true) {
         Ok(parent) => parent,
         Err(message) => {
-            reader
-                .errors
-                .push(antecedent.span, message.replacen("joint", "row", 1));
+            reader.errors.push(antecedent.span, message);
             return None;
         }
     };

@@ -46,10 +46,12 @@ pub(super) fn joints(
         .map(|(i, j)| {
             let mut joint = joint(reader, i + 1, j, attrs, span);
             let parent = j.parent.as_ref().map(|parent| {
-                tree::antecedent(i + 1, parent, joints.len(), &names).unwrap_or_else(|message| {
-                    reader.errors.push(parent.span(), message);
-                    i.checked_sub(1)
-                })
+                tree::antecedent(i + 1, parent, joints.len(), &names, false).unwrap_or_else(
+                    |message| {
+                        reader.errors.push(parent.span(), message);
+                        i.checked_sub(1)
+                    },
+                )
             });
             joint.branch = parent.map(|parent| Branch {
                 parent,

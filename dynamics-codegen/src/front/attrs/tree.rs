@@ -36,8 +36,29 @@ const PARENT_USAGE: &str = "expected an earlier joint's number or name: `parent 
      first joint), `parent = \"palm\"`, or `parent = 0` (the base)";
 
 /// Joint `n`'s (1-based) antecedent from its parent: an earlier joint (0-based), or `None` for
-/// the base; `count` joints, `names` their names.
+/// the base; `count` joints, `names` their names. Messages call the joints `joint`, or `row`
+/// in a D-H table (`rows`), and the parent its antecedent there.
 pub(super) fn antecedent(
+    n: usize,
+    parent: &ParentAttr,
+    count: usize,
+    names: &BTreeMap<String, usize>,
+    rows: bool,
+) -> Result<Option<usize>, String> {
+    antecedent_of(n, parent, count, names).map_err(|message| {
+        if rows {
+            message
+                .replace("parent joint", "antecedent row")
+                .replace("parent", "antecedent")
+                .replace("joint", "row")
+                .replace("are given", "rows")
+        } else {
+            message
+        }
+    })
+}
+
+fn antecedent_of(
     n: usize,
     parent: &ParentAttr,
     count: usize,
@@ -171,7 +192,7 @@ mod tests {
             (joints("revolute(name = \"a\")"), "joint 1 is named `a` too"),
             (joints("revolute(parent = 1.5)"), "expected an earlier joint's number or name"),
             (format!("dh = [[q, 0, 0, 0], [q, 0, 0, 0, 1, 0, 0.5], [q, 0, 0, 0]], {LINKS}"), "a standard D-H table has no antecedent column"),
-            (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, 2, 0, 0], [q, 0, 0, 0]], {LINKS}"), "row 2: parent joint 2: a joint cannot hang from itself"),
+            (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, 2, 0, 0], [q, 0, 0, 0]], {LINKS}"), "row 2: antecedent row 2: a row cannot hang from itself"),
             (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, l, 0, 0], [q, 0, 0, 0]], {LINKS}"), "row 2: the antecedent is an earlier row's number"),
             (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, 1, 0], [q, 0, 0, 0]], {LINKS}"), "takes 4 values, found 6"),
             ("file = \"robots/ur5.toml\", tips = [\"a\"]".into(), "`tips` names links of a URDF file"),
