@@ -49,6 +49,7 @@ pub(super) fn antecedent(
         if rows {
             message
                 .replace("parent joint", "antecedent row")
+                .replace("a parent", "an antecedent")
                 .replace("parent", "antecedent")
                 .replace("joint", "row")
                 .replace("are given", "rows")
