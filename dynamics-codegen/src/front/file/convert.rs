@@ -101,11 +101,7 @@ pub(super) fn convert(
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
-    let branches = if super::tree::given(&file.joints) {
-        super::tree::branches(&file.joints, convention, frames_given, &mut deferred)
-    } else {
-        vec![None; file.joints.len()]
-    };
+    let branches = super::tree::branches(&file.joints, convention, frames_given, &mut deferred);
     for ((i, j), branch) in file.joints.into_iter().enumerate().zip(branches) {
         deferred.extend(angle_problems(i, &j));
         let kind = match j.kind {

@@ -46,7 +46,7 @@ impl serde::de::Visitor<'_> for ParentVisitor {
 }
 
 /// Whether some joint gives `name`, `parent`, `gamma` or `b`.
-pub(super) fn given(joints: &[FileJoint]) -> bool {
+fn given(joints: &[FileJoint]) -> bool {
     joints
         .iter()
         .any(|j| j.name.is_some() || j.parent.is_some() || j.gamma.is_some() || j.b.is_some())
@@ -60,6 +60,9 @@ pub(super) fn branches(
     frames_given: bool,
     deferred: &mut Vec<Deferred>,
 ) -> Vec<Option<Branch>> {
+    if !given(joints) {
+        return vec![None; joints.len()];
+    }
     let names = names(joints, deferred);
     let mut branches = Vec::with_capacity(joints.len());
     for (i, j) in joints.iter().enumerate() {

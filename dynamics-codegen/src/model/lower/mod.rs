@@ -36,6 +36,8 @@
 mod geometry;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tree_tests;
 
 pub use geometry::NOISE_TOLERANCE;
 
