@@ -160,14 +160,16 @@ fn nearly_parallel_axes_lower_as_parallel_ones() {
         while robot.joints.len() < 2 {
             robot.joints.push(random_joint(&mut rng));
         }
-        let places = [([0.0, 0.0, 0.0], 0.0), ([0.1, 0.0, 0.05], tilt)];
-        for (joint, (xyz, roll)) in robot.joints.iter_mut().zip(places) {
+        // Axes 0.3 rad from z and `tilt` apart: a tilted placement would snap to none.
+        let places = [([0.0, 0.0, 0.0], 0.3), ([0.1, 0.0, 0.05], 0.3 + tilt)];
+        for (joint, (xyz, angle)) in robot.joints.iter_mut().zip(places) {
+            let (s, c) = f64::sin_cos(angle);
             joint.frame = Some(AxisFrame {
                 origin: Placement {
                     xyz: xyz.map(Value::from_f64),
-                    rpy: [roll, 0.0, 0.0].map(Value::from_f64),
+                    rpy: [0.0; 3].map(Value::from_f64),
                 },
-                axis: [0.0, 0.0, 1.0].map(Value::from_f64),
+                axis: [0.0, -s, c].map(Value::from_f64),
             });
         }
         let mut lowered = robot.clone();
