@@ -64,9 +64,19 @@ pub struct RobotFile {
     /// URDF only: the link the chain starts at, fixed to the ground [default: the root link]
     #[arg(long, value_name = "LINK", allow_hyphen_values = true)]
     pub base: Option<String>,
-    /// URDF only: the link the chain ends at [default: the last link the moving joints reach]
-    #[arg(long, value_name = "LINK", allow_hyphen_values = true)]
+    /// URDF only: the link the serial chain ends at (what branches off the path is refused)
+    /// [default: every moving joint below the base, a tree if they branch]
+    #[arg(
+        long,
+        value_name = "LINK",
+        allow_hyphen_values = true,
+        conflicts_with = "tips"
+    )]
     pub tip: Option<String>,
+    /// URDF only: the links the branches kept lead to, comma-separated (what moves off them
+    /// is cut off) [default: every branch]
+    #[arg(long, value_name = "LINK,..", value_delimiter = ',', num_args = 1.., allow_hyphen_values = true)]
+    pub tips: Vec<String>,
     /// A tool frame on the hand, as a description file's `tool` (m, rad): the kinematic
     /// methods then give the tool's pose, Jacobians and statics
     #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", allow_hyphen_values = true)]

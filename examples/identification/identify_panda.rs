@@ -27,6 +27,7 @@ fn main() {
     let chain = front::Chain {
         base: Some("panda_link0"),
         tip: Some("panda_hand"),
+        tips: &[],
     };
     let source = Source {
         chain,

@@ -28,6 +28,7 @@ impl Described {
             chain: Chain {
                 base: self.base.as_deref(),
                 tip: self.tip.as_deref(),
+                tips: &[],
             },
             ..Source::default()
         };

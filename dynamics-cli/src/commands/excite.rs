@@ -137,11 +137,13 @@ fn urdf_limits(args: &Excite) -> Result<Option<Vec<Limit>>, Failure> {
     if !path.ends_with(".urdf") {
         return Ok(None);
     }
+    let tips: Vec<&str> = args.robot.tips.iter().map(String::as_str).collect();
     let source = Source {
         path,
         chain: Chain {
             base: args.robot.base.as_deref(),
             tip: args.robot.tip.as_deref(),
+            tips: &tips,
         },
         ..Source::default()
     };

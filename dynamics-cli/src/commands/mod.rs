@@ -58,18 +58,22 @@ fn load(robot: &RobotFile) -> Result<Robot, Failure> {
 /// `<limit>`s), as the derive reads them for `file = ".."` or `urdf = ".."`.
 fn load_with_request(robot: &RobotFile) -> Result<Loaded, Failure> {
     let path = robot.path.as_str();
+    let tips: Vec<&str> = robot.tips.iter().map(String::as_str).collect();
     let source = Source {
         path,
         text: None,
         chain: Chain {
             base: robot.base.as_deref(),
             tip: robot.tip.as_deref(),
+            tips: &tips,
         },
         ..Source::default()
     };
-    if !source.is_urdf() && (robot.base.is_some() || robot.tip.is_some()) {
-        let message =
-            format!("--base and --tip name links of a URDF file; `{path}` is not one (*.urdf)");
+    let names_links = robot.base.is_some() || robot.tip.is_some() || !tips.is_empty();
+    if !source.is_urdf() && names_links {
+        let message = format!(
+            "--base, --tip and --tips name links of a URDF file; `{path}` is not one (*.urdf)"
+        );
         return Err(Failure::Usage(
             Cli::command().error(ErrorKind::ArgumentConflict, message),
         ));

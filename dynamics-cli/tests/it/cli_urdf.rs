@@ -1,5 +1,6 @@
-//! The `dynamics` command on URDF files: `--base` and `--tip` choose the chain, errors name
-//! `file:line:col`, and the two options are refused for other description files.
+//! The `dynamics` command on URDF files: `--base` and `--tip` choose the chain (`--tips` the
+//! branches), errors name `file:line:col`, and the options are refused for other description
+//! files.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -42,16 +43,12 @@ fn a_urdf_chain_from_base_to_tip() {
 
 #[test]
 fn urdf_errors_name_the_file_line_and_column() {
-    // The Panda's hand has two fingers: without a tip, the chain is not known.
+    // Without a tip, every branch: the Panda's second finger follows the first (`<mimic>`).
     let out = dynamics(&["inspect", "robots/urdf/panda.urdf"]);
     assert_eq!(out.status.code(), Some(1));
     assert!(
-        stderr(&out).contains("robots/urdf/panda.urdf:"),
-        "{}",
         stderr(&out)
-    );
-    assert!(
-        stderr(&out).contains("the robot branches at link `panda_hand`"),
+            .contains("robots/urdf/panda.urdf:348:9: joint `panda_finger_joint2` has `<mimic>`"),
         "{}",
         stderr(&out)
     );
@@ -73,7 +70,54 @@ fn base_and_tip_are_for_urdf_files() {
     let out = dynamics(&["inspect", "robots/ur5.toml", "--tip", "tool0"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(
-        stderr(&out).contains("--base and --tip name links of a URDF file"),
+        stderr(&out).contains("--base, --tip and --tips name links of a URDF file"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn tips_choose_the_branches() {
+    // One tip: the serial path to it, as `--tip` gives (the fingers below cut off).
+    let stats = |choice: &str| {
+        let out = dynamics(&["stats", "robots/urdf/panda.urdf", choice, "panda_link8"]);
+        assert!(out.status.success(), "{}", stderr(&out));
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let tips = stats("--tips");
+    assert!(tips.starts_with("panda: 7 joints"), "{tips}");
+    // The counts, without the lines that give times.
+    let counts = |text: &str| {
+        let lines = text.lines().filter(|line| !line.contains(" ms"));
+        lines.collect::<Vec<_>>().join("\n")
+    };
+    assert_eq!(counts(&tips), counts(&stats("--tip")));
+    let tree = "robots/urdf/trees/allegro_right_hand.urdf";
+    let out = dynamics(&["inspect", tree, "--tips", "link_3.0_tip,hand"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains("allegro_right_hand.urdf:6:1: no link `hand` for `tips`"),
+        "{}",
+        stderr(&out)
+    );
+    let out = dynamics(&[
+        "inspect",
+        tree,
+        "--tip",
+        "link_3.0_tip",
+        "--tips",
+        "link_7.0_tip",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("cannot be used with"),
+        "{}",
+        stderr(&out)
+    );
+    let out = dynamics(&["inspect", "robots/ur5.toml", "--tips", "tool0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("--base, --tip and --tips name links of a URDF file"),
         "{}",
         stderr(&out)
     );

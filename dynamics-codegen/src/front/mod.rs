@@ -241,9 +241,13 @@ fn lower<'a>(
             attrs.base.as_ref().map(LitStr::value),
             attrs.tip.as_ref().map(LitStr::value),
         );
+        let tips = attrs.tip_names(errors).unwrap_or_default();
+        let tips: Vec<&str> = tips.iter().map(String::as_str).collect();
         let chain = Chain {
             base: base.as_deref(),
             tip: tip.as_deref(),
+            // Both given: refused at the list; the path to the tip is read.
+            tips: if tip.is_some() { &[] } else { &tips },
         };
         let checked = attrs.check_inertia.unwrap_or(true);
         let gravity = attrs.gravity.as_ref();

@@ -19,7 +19,7 @@ pub use frame::{
 };
 pub use lower::{
     lower_frames, FramePart, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE,
-    NOISE_TOLERANCE,
+    NOISE_TOLERANCE, PARALLEL_TOLERANCE,
 };
 pub use value::Value;
 

@@ -50,7 +50,8 @@ pub struct Source<'a> {
     pub path: &'a str,
     /// The file's text, or `None` to read it from `path`.
     pub text: Option<&'a str>,
-    /// A URDF's chain: its base and tip links (by default the root and the one leaf).
+    /// A URDF's joints: its base link, and the tip of a chain or the tips of the branches kept
+    /// (by default the root link and every branch).
     pub chain: Chain<'a>,
     /// Whether each link's inertia is checked (by default); `false` is the derive's
     /// `check_inertia = false`, for published data whose moments break the triangle inequality.

@@ -29,8 +29,18 @@ static SKIPPED: AtomicUsize = AtomicUsize::new(0);
 static ERRORS: AtomicUsize = AtomicUsize::new(0);
 static CODE: AtomicUsize = AtomicUsize::new(0);
 
-/// Valid inputs: every key of the attribute, both conventions, generics, the PUMA 560.
-const VALID: [&str; 4] = [
+/// Valid inputs: every key of the attribute, both conventions, generics, the PUMA 560, trees
+/// by frames and by modified D-H rows.
+const VALID: [&str; 6] = [
+    "#[dynamics(gravity = [0, 0, -9.81], joints = [revolute(name = \"palm\"),
+       revolute(parent = \"palm\", xyz = [0.05, 0, 0], rpy = [0, 90 deg, 0], axis = [0, 1, 0]),
+       prismatic(parent = 1, xyz = [0, l, 0.01], axis = [0.6, 0.8, 0]), revolute(parent = 0, xyz = [0, 0, 0.2])],
+       link(mass = 0.5), link(mass = 0.1, com = [0, 0, 0.02]), link(mass = m), link(mass = 0.2))]
+     struct Hand { l: f64, m: f64 }",
+    "#[dynamics(convention = modified, gravity = [0, 0, -9.81], dh = [[q, 0, 0.1, 0],
+       [q, 0, 0.2, 90 deg], [0, q, 0.3, 0, 1, -90 deg, 0.05], [q, 0.2, 0, 0, 0, 0.4, b]],
+       link(mass = 1), link(mass = 1), link(mass = 1, com = [0, 0, 0.1]), link(mass = 1))]
+     struct Tree { b: f64 }",
     "#[dynamics(gravity = [0, 0, -9.81], dh = [[q, 0.5, l1, 90 deg], [q + 0.3, 0, l2, 0], [0.2, q, 0, -pi/2]],
        link(mass = m1, com = [-l1 / 2, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]),
        link(mass = 2.5, com = [0, 0.1, 0], inertia = [0.2, 0.1, 0.15, 0.01, 0, 0], actuator_inertia = 0.05),

@@ -1,5 +1,6 @@
 //! Fuzzing the description-file front end: the valid robots of `robots/*.toml` and
-//! `tests/data/reference/robots/*.json`, mutated (byte flips, deletions, duplications, lines
+//! `tests/data/reference/robots/*.json`, and two trees (by frames and by modified D-H rows),
+//! mutated (byte flips, deletions, duplications, lines
 //! spliced between files, numbers replaced by extreme values, deep nesting, long strings), go
 //! through `front::load`, the command-line tool's checks after it, and the derive's
 //! `file = "..."`. Each case must finish within [`fuzz::BOUND`] without a panic, and:
@@ -21,8 +22,56 @@ use dynamics_codegen::{check, derive_dynamics, front};
 use proptest::prelude::*;
 use proptest::sample::Index;
 
+/// A tree given by frames, parents by name and number.
+const TREE_FRAMES: &str = r#"name = "hand"
+gravity = [0, 0, -9.81]
+
+[[joints]]
+name = "palm"
+type = "revolute"
+mass = 0.5
+inertia = [0.001, 0.001, 0.001, 0, 0, 0]
+
+[[joints]]
+type = "revolute"
+parent = "palm"
+origin = { xyz = [0.05, 0, 0], rpy = [0, "90 deg", 0] }
+axis = [0, 1, 0]
+mass = 0.1
+com = [0, 0, 0.02]
+inertia = [0.0001, 0.0001, 0.0001, 0, 0, 0]
+
+[[joints]]
+type = "prismatic"
+parent = 1
+origin = { xyz = [0, 0.05, 0.01], rpy = [0.3, 0, 0] }
+axis = [0.6, 0.8, 0]
+mass = 0.1
+inertia = [0.0001, 0.0001, 0.0001, 0, 0, 0]
+
+[[joints]]
+type = "revolute"
+parent = 0
+origin = { xyz = [0, 0, 0.2] }
+mass = 0.2
+inertia = [0.001, 0.001, 0.001, 0, 0, 0]
+"#;
+
+/// A tree given by Khalil-Kleinfinger's modified D-H rows.
+const TREE_ROWS: &str = r#"{"name": "tree", "convention": "modified", "gravity": [0, 0, -9.81],
+  "joints": [
+    {"type": "revolute", "name": "root", "a": 0.1, "mass": 1, "inertia": [0.1, 0.1, 0.1, 0, 0, 0]},
+    {"type": "revolute", "alpha": "90 deg", "a": 0.2, "mass": 1, "inertia": [0.1, 0.1, 0.1, 0, 0, 0]},
+    {"type": "prismatic", "parent": "root", "gamma": "-90 deg", "b": 0.05, "a": 0.3,
+     "mass": 1, "com": [0, 0, 0.1], "inertia": [0.1, 0.1, 0.1, 0, 0, 0]},
+    {"type": "revolute", "parent": 0, "gamma": 0.4, "b": -0.1, "d": 0.2,
+     "mass": 1, "inertia": [0.1, 0.1, 0.1, 0, 0, 0]}
+  ]}"#;
+
 /// The valid description files the mutations start from.
-const BASES: [(&str, &str); 18] = [
+const BASES: [(&str, &str); 20] = [
+    ("tree_frames.toml", TREE_FRAMES),
+    ("tree_rows.json", TREE_ROWS),
     (
         "niku_example_6_1.toml",
         include_str!("../../../robots/niku_example_6_1.toml"),
@@ -361,5 +410,14 @@ fn gravity_field_regression() {
         let _ = std::fs::remove_file(&file);
         let expected = format!("{path}:2:{column}: `gz` is not a field");
         assert!(out.contains(&expected), "{expected}\n{out}");
+    }
+}
+
+/// The tree bases load, as trees, so that the mutations start from the tree's paths.
+#[test]
+fn the_tree_bases_load_as_trees() {
+    for (path, text) in &BASES[..2] {
+        let robot = front::from_text(path, text).unwrap_or_else(|e| panic!("{path}: {e}"));
+        assert!(robot.is_tree(), "{path}");
     }
 }

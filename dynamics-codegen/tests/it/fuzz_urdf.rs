@@ -9,8 +9,9 @@
 //! - every `compile_error!` of the derive is on the `urdf = "..."` token (not the call site) and
 //!   names `path:line:col` inside the text.
 //!
-//! The robots are taken with their tip (the Panda's flange) or with the default chain, so that
-//! both the chain's search and its refusals are reached.
+//! The robots, chains and trees (`robots/urdf/trees/`), are taken with their tip (the Panda's
+//! flange), their tips (Baxter's head and grippers) or with the default (every branch), so that
+//! the chain's search, the tree's walk and their refusals are reached.
 //!
 //! proptest, seed fixed: 1,000 cases by default (about 8 s of CPU in the debug build, 14 to
 //! 20 s on the 2-core machine shared with other builds; `huge_files` included). Long run:
@@ -29,12 +30,13 @@ use proptest::sample::Index;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::LazyLock;
 
-/// The robots the mutations start from: every `robots/urdf/*.urdf`, read where the crate is (not
-/// where the test runs), so that a robot added there is fuzzed too.
+/// The robots the mutations start from: every `robots/urdf/*.urdf` and `robots/urdf/trees/*.urdf`,
+/// read where the crate is (not where the test runs), so that a robot added there is fuzzed too.
 static BASES: LazyLock<Vec<(String, String)>> = LazyLock::new(|| {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf");
-    let mut found: Vec<(String, String)> = std::fs::read_dir(dir)
-        .expect("robots/urdf")
+    let entries = |dir: String| std::fs::read_dir(dir).expect("robots/urdf");
+    let mut found: Vec<(String, String)> = entries(dir.into())
+        .chain(entries(format!("{dir}/trees")))
         .map(|entry| entry.expect("an entry").path())
         .filter(|path| path.extension().is_some_and(|e| e == "urdf"))
         .map(|path| {
@@ -46,11 +48,28 @@ static BASES: LazyLock<Vec<(String, String)>> = LazyLock::new(|| {
     found
 });
 
-/// The tip of the robots whose moving joints do not end in one chain (the Panda's fingers).
-const TIPS: [(&str, &str); 1] = [("panda.urdf", "panda_link8")];
+/// How a base is taken, besides the default (every branch): the Panda to its flange (`tip`, the
+/// serial path), Baxter to its head and grippers (`tips`, the branches, above the mimic fingers
+/// that the default refuses); the Allegro hand's published inertias break the triangle
+/// inequality, so its inertias are not checked.
+#[derive(Clone, Copy, Debug, Default)]
+struct Take {
+    tip: Option<&'static str>,
+    tips: &'static [&'static str],
+    check_inertia: bool,
+}
 
-fn tip_of(name: &str) -> Option<&'static str> {
-    TIPS.iter().find(|(file, _)| *file == name).map(|t| t.1)
+fn take(name: &str, own: bool) -> Take {
+    let mut take = Take {
+        check_inertia: name != "allegro_right_hand.urdf",
+        ..Take::default()
+    };
+    match name {
+        "panda.urdf" if own => take.tip = Some("panda_link8"),
+        "baxter.urdf" if own => take.tips = &["head", "right_gripper", "left_gripper"],
+        _ => {}
+    }
+    take
 }
 
 #[derive(Clone, Debug)]
@@ -226,10 +245,14 @@ static ERRORS: AtomicUsize = AtomicUsize::new(0);
 static ROBOTS: AtomicUsize = AtomicUsize::new(0);
 
 /// Loads `text` as `path` the ways the tools do; the first broken promise, if any.
-fn check_file(path: &str, text: &str, tip: Option<&str>) -> Result<(), String> {
-    let chain = front::Chain { base: None, tip };
+fn check_file(path: &str, text: &str, take: Take) -> Result<(), String> {
+    let chain = front::Chain {
+        base: None,
+        tip: take.tip,
+        tips: take.tips,
+    };
     let lines = fuzz::Lines::of(text);
-    match front::load_urdf(path, text, chain, true) {
+    match front::load_urdf(path, text, chain, take.check_inertia) {
         Err(errors) if errors.is_empty() => return Err("an empty list of errors".into()),
         Err(errors) => {
             ERRORS.fetch_add(1, Ordering::Relaxed);
@@ -251,20 +274,23 @@ fn check_file(path: &str, text: &str, tip: Option<&str>) -> Result<(), String> {
             }
         }
     }
-    check_derive(path, text, &lines, tip)
+    check_derive(path, text, &lines, take)
 }
 
 /// The derive's `urdf = "..."` on `text`, written to a temporary file.
-fn check_derive(
-    path: &str,
-    text: &str,
-    lines: &fuzz::Lines,
-    tip: Option<&str>,
-) -> Result<(), String> {
+fn check_derive(path: &str, text: &str, lines: &fuzz::Lines, take: Take) -> Result<(), String> {
     let file = fuzz::temp_file(path, text).map_err(|e| e.to_string())?;
     let file_name = file.display().to_string();
-    let tip = tip.map_or_else(String::new, |t| format!(", tip = \"{t}\""));
-    let source = format!("#[dynamics(urdf = \"{file_name}\"{tip})] struct R;");
+    let mut keys = take
+        .tip
+        .map_or_else(String::new, |t| format!(", tip = \"{t}\""));
+    if !take.tips.is_empty() {
+        keys += &format!(", tips = {:?}", take.tips);
+    }
+    if !take.check_inertia {
+        keys += ", check_inertia = false";
+    }
+    let source = format!("#[dynamics(urdf = \"{file_name}\"{keys})] struct R;");
     let out = derive_dynamics(source.parse().expect("tokens"));
     let _ = std::fs::remove_file(&file);
     for e in fuzz::compile_errors(out) {
@@ -288,10 +314,10 @@ fn run(base: usize, own_tip: bool, mutations: &[Mutation]) -> Result<(), TestCas
     }
     let text = String::from_utf8_lossy(&bytes).into_owned();
     let shown: String = text.chars().take(4000).collect();
-    let tip = tip_of(name).filter(|_| own_tip);
+    let take = take(name, own_tip);
     let name = name.clone();
-    let what = format!("{name} (tip {tip:?}), {mutations:?}:\n{shown}");
-    fuzz::bounded(&what, move || check_file(&name, &text, tip))
+    let what = format!("{name} ({take:?}), {mutations:?}:\n{shown}");
+    fuzz::bounded(&what, move || check_file(&name, &text, take))
         .and_then(|r| r)
         .map_err(TestCaseError::fail)
 }
@@ -318,14 +344,16 @@ fn mutated_urdf_files() {
 fn the_bases_load() {
     assert!(BASES.len() >= 5, "{:?}", BASES.iter().map(|b| &b.0));
     for (name, text) in BASES.iter() {
+        let take = take(name, true);
         let chain = front::Chain {
             base: None,
-            tip: tip_of(name),
+            tip: take.tip,
+            tips: take.tips,
         };
-        if let Err(e) = front::load_urdf(name, text, chain, true) {
+        if let Err(e) = front::load_urdf(name, text, chain, take.check_inertia) {
             panic!("{name}: {e:?}");
         }
-        check_derive(name, text, &fuzz::Lines::of(text), tip_of(name)).unwrap();
+        check_derive(name, text, &fuzz::Lines::of(text), take).unwrap();
     }
 }
 
@@ -352,10 +380,15 @@ fn huge_files() {
             })
             .collect()
     };
+    // A tree as wide as the chains are long: every joint on the flange.
+    let fan: String = (0..n)
+        .map(|i| format!("<link name=\"f{i}\"/><joint name=\"fj{i}\" type=\"revolute\"><parent link=\"tool0\"/><child link=\"f{i}\"/><origin xyz=\"0.1 0 0\"/></joint>\n"))
+        .collect();
     let cases = [
         ("lone links", before_end(ur5, &lone)),
         ("a moving chain", before_end(ur5, &chain("revolute"))),
         ("a fixed chain", before_end(ur5, &chain("fixed"))),
+        ("a fan of branches", before_end(ur5, &fan)),
         (
             "a long number",
             ur5.replacen("0.089159", &"9".repeat(10_000_000), 1),
@@ -372,9 +405,18 @@ fn huge_files() {
     for (what, text) in cases {
         let start = std::time::Instant::now();
         let name = format!("{what}.urdf");
-        fuzz::bounded(what, move || check_file(&name, &text, None))
-            .and_then(|r| r)
-            .unwrap();
+        fuzz::bounded(what, move || {
+            check_file(
+                &name,
+                &text,
+                Take {
+                    check_inertia: true,
+                    ..Take::default()
+                },
+            )
+        })
+        .and_then(|r| r)
+        .unwrap();
         println!("{what}: {:?}", start.elapsed());
     }
 }

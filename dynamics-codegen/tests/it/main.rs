@@ -11,3 +11,4 @@ mod fuzz_urdf;
 mod niku_symbolic;
 mod numeric;
 mod robustness;
+mod urdf_trees;

@@ -37,6 +37,7 @@ fn robot(name: &str) -> Robot {
         let chain = front::Chain {
             base: Some(base),
             tip: Some(tip),
+            tips: &[],
         };
         front::load_urdf(&path, &read(&path), chain, true)
             .unwrap_or_else(|e| panic!("{path}: {e:?}"))

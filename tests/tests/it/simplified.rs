@@ -141,6 +141,7 @@ fn panda_request() -> Simplification {
     let chain = Chain {
         base: None,
         tip: Some("panda_link8"),
+        tips: &[],
     };
     Simplification {
         tolerance: vec![0.87, 0.87, 0.87, 0.87, 0.12, 0.12, 0.12],
@@ -156,7 +157,17 @@ fn bounds(file: &str, request: &Simplification) -> ([Vec<PrunedElement>; 4], [bo
     let robot = if file.ends_with(".urdf") {
         // The Panda's fingers branch below its hand: its chain ends at panda_link8.
         let tip = file.contains("panda").then_some("panda_link8");
-        load_urdf(&path, &text, Chain { base: None, tip }, true).expect("a robot")
+        load_urdf(
+            &path,
+            &text,
+            Chain {
+                base: None,
+                tip,
+                tips: &[],
+            },
+            true,
+        )
+        .expect("a robot")
     } else {
         dynamics_codegen::front::load(&path, &text).expect("a robot")
     }

@@ -113,6 +113,7 @@ fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
             let chain = front::Chain {
                 base: Some(base),
                 tip: Some(tip),
+                tips: &[],
             };
             front::load_urdf(file, &text, chain, true).unwrap_or_else(|_| panic!("{file}"))
         }

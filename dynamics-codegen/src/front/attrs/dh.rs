@@ -1,16 +1,19 @@
 //! The joints of `dh = [...]`: one per D-H row, with its `link(...)`. In row i, `q` (or `qi`)
 //! in the θ cell makes joint i revolute with `θ = q + offset`, in the d cell prismatic with
-//! `d = q + offset`.
+//! `d = q + offset`. A tree's row adds its antecedent (0 the base, else an earlier row's
+//! number), γ and b: `[θ, d, a, α, antecedent, γ, b]` (modified convention only).
 
 use super::entry::DhRowAttr;
 use super::parse::Attrs;
 use super::reader::{check_arithmetic, check_joint_count, JointList, Reader};
+use super::tree::{self, ParentAttr};
 use crate::front::angle::unitless_angle;
 use crate::front::errors::Errors;
 use crate::front::fields::check_names;
 use crate::front::value::Spanned;
-use crate::model::{snap_angle, Joint, JointKind, Value};
+use crate::model::{snap_angle, Branch, Convention, Joint, JointKind, Value};
 use proc_macro2::Span;
+use std::collections::BTreeMap;
 
 /// What the count errors call the D-H table's rows.
 pub(super) fn counted(n: usize) -> String {
@@ -25,7 +28,7 @@ pub(super) fn joints(
     attrs: &Attrs,
     span: Span,
 ) -> Vec<Joint> {
-    let spans: Vec<Span> = rows.iter().map(|(at, _)| *at).collect();
+    let spans: Vec<Span> = rows.iter().map(|(at, _, _)| *at).collect();
     let list = JointList {
         spans: &spans,
         span: *table_span,
@@ -33,15 +36,68 @@ pub(super) fn joints(
         counted,
     };
     check_joint_count(&list, &attrs.links, reader.errors);
-    rows.iter()
+    let mut joints: Vec<Joint> = rows
+        .iter()
         .enumerate()
-        .map(|(i, row)| joint(reader, i + 1, row, attrs, span))
-        .collect()
+        .map(|(i, row)| {
+            let mut joint = joint(reader, i + 1, row, attrs, span);
+            let tree = row.2.as_ref();
+            joint.branch = tree.and_then(|tree| branch(reader, (i + 1, rows.len()), tree, attrs));
+            joint
+        })
+        .collect();
+    tree::settle(&mut joints);
+    joints
+}
+
+/// Row `n`'s antecedent column `[antecedent, γ, b]` (modified convention only), or `None`
+/// with an error on the cell at fault.
+fn branch(
+    reader: &mut Reader,
+    (n, count): (usize, usize),
+    tree: &[Spanned; 3],
+    attrs: &Attrs,
+) -> Option<Branch> {
+    let [antecedent, gamma, b] = tree;
+    if attrs.convention.map(|c| c.0) != Some(Convention::Modified) {
+        let message = "a standard D-H table has no antecedent column: trees are given in the \
+                       modified convention (Khalil-Kleinfinger); add `convention = modified` \
+                       and write the rows in it";
+        reader.errors.push(antecedent.span, message);
+        return None;
+    }
+    let number = antecedent
+        .value
+        .exact()
+        .filter(|k| k.is_exact() && !k.is_negative())
+        .and_then(crate::symbolic::Number::as_integer)
+        .and_then(|k| u64::try_from(k).ok());
+    let Some(number) = number else {
+        let message = format!("row {n}: the antecedent is an earlier row's number (1 for the first) or 0 for the base, not `{}`", antecedent.value);
+        reader.errors.push(antecedent.span, message);
+        return None;
+    };
+    let parent = ParentAttr::Number(number, antecedent.span);
+    let parent = match tree::antecedent(n, &parent, count, &BTreeMap::new(), true) {
+        Ok(parent) => parent,
+        Err(message) => {
+            reader.errors.push(antecedent.span, message);
+            return None;
+        }
+    };
+    if let Some((term, message)) = unitless_angle(&gamma.unitless, false) {
+        reader.errors.push_range(term.span, term.end, message);
+    }
+    Some(Branch {
+        parent,
+        gamma: snap_angle(&reader.value(Some(gamma))),
+        b: reader.value(Some(b)),
+    })
 }
 
 /// Joint `n` (1-based) from its D-H row and its `link(...)`.
 fn joint(reader: &mut Reader, n: usize, row: &DhRowAttr, attrs: &Attrs, span: Span) -> Joint {
-    let (row_span, [theta, d, a, alpha]) = row;
+    let (row_span, [theta, d, a, alpha], _) = row;
     for cell in [theta, d] {
         check_names(cell, reader.fields, reader.errors);
         check_arithmetic(cell, reader.errors);

@@ -12,7 +12,8 @@ use syn::punctuated::Punctuated;
 use syn::{bracketed, parenthesized, Ident, LitStr, Token};
 
 /// A D-H row `[θ, d, a, α]` with the span of its first token.
-pub(super) type DhRowAttr = (Span, [Spanned; 4]);
+/// A D-H row: its span, `[θ, d, a, α]`, and in a tree `[antecedent, γ, b]`.
+pub(super) type DhRowAttr = (Span, [Spanned; 4], Option<[Spanned; 3]>);
 
 /// One `key = value` entry of an attribute list, where a repeated key is reported.
 pub(super) struct Entry<'a> {
@@ -120,8 +121,8 @@ pub(super) fn parse_dh(input: ParseStream) -> syn::Result<(Vec<DhRowAttr>, Span)
     let mut rows = Vec::new();
     while !content.is_empty() {
         let span = content.span();
-        let (row, _) = values::<4>(&content, "a D-H row `[θ, d, a, α]`")?;
-        rows.push((span, row));
+        let (cells, tree) = row(&content)?;
+        rows.push((span, cells, tree));
         if !content.is_empty() {
             content.parse::<Token![,]>()?;
         }
@@ -144,4 +145,47 @@ pub(super) fn string(input: ParseStream, usage: &str) -> syn::Result<LitStr> {
     } else {
         Err(input.error(format!("expected a string: {usage}")))
     }
+}
+
+/// A bracketed list of strings, `["a", "b"]`, with the span of its brackets.
+pub(super) fn strings(input: ParseStream, usage: &str) -> syn::Result<(Vec<LitStr>, Span)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error(format!("expected a list of strings: {usage}")));
+    }
+    let content;
+    let bracket = syn::bracketed!(content in input);
+    let mut list = Vec::new();
+    while !content.is_empty() {
+        list.push(string(&content, usage)?);
+        if content.is_empty() {
+            break;
+        }
+        content.parse::<Token![,]>()?;
+    }
+    Ok((list, bracket.span.join()))
+}
+
+/// A D-H row of 4 values, or of 7 in a tree: `[θ, d, a, α, antecedent, γ, b]`.
+fn row(input: ParseStream) -> syn::Result<([Spanned; 4], Option<[Spanned; 3]>)> {
+    if !input.peek(syn::token::Bracket) {
+        return Err(input.error("expected 4 values in brackets: a D-H row `[θ, d, a, α]`"));
+    }
+    let content;
+    let bracket = bracketed!(content in input);
+    let items: Punctuated<Spanned, Token![,]> = Punctuated::parse_terminated(&content)?;
+    let count = items.len();
+    if count != 4 && count != 7 {
+        return Err(syn::Error::new(
+            bracket.span.join(),
+            format!(
+                "a D-H row `[θ, d, a, α]` takes 4 values, found {count} (or 7 in a tree, \
+                 modified convention: `[θ, d, a, α, antecedent, γ, b]`)"
+            ),
+        ));
+    }
+    let mut cells = items.into_iter();
+    let mut next = || cells.next().expect("counted");
+    let row = [next(), next(), next(), next()];
+    let tree = (count == 7).then(|| [next(), next(), next()]);
+    Ok((row, tree))
 }

@@ -5,9 +5,11 @@
 use super::joints::JointAttr;
 use super::parse::Attrs;
 use super::reader::{check_joint_count, JointList, Reader};
+use super::tree;
 use crate::front::angle::unitless_angle;
-use crate::model::{lower_frames, AxisFrame, Joint, Placement, Robot, Value};
+use crate::model::{lower_frames, AxisFrame, Branch, Joint, Placement, Robot, Value};
 use proc_macro2::Span;
+use std::collections::BTreeMap;
 
 /// What the count errors call the list's entries.
 pub(super) fn counted(n: usize) -> String {
@@ -37,11 +39,49 @@ pub(super) fn joints(
              to their own modified D-H table; remove `convention`",
         );
     }
-    joints
+    let names = names(joints, reader);
+    let mut model: Vec<Joint> = joints
         .iter()
         .enumerate()
-        .map(|(i, j)| joint(reader, i + 1, j, attrs, span))
-        .collect()
+        .map(|(i, j)| {
+            let mut joint = joint(reader, i + 1, j, attrs, span);
+            let parent = j.parent.as_ref().map(|parent| {
+                tree::antecedent(i + 1, parent, joints.len(), &names, false).unwrap_or_else(
+                    |message| {
+                        reader.errors.push(parent.span(), message);
+                        i.checked_sub(1)
+                    },
+                )
+            });
+            joint.branch = parent.map(|parent| Branch {
+                parent,
+                gamma: Value::zero(),
+                b: Value::zero(),
+            });
+            joint
+        })
+        .collect();
+    tree::settle(&mut model);
+    model
+}
+
+/// Each named joint's index; a name given twice is an error on the second.
+fn names(joints: &[JointAttr], reader: &mut Reader) -> BTreeMap<String, usize> {
+    let mut names = BTreeMap::new();
+    for (i, j) in joints.iter().enumerate() {
+        let Some(name) = &j.name else { continue };
+        if let Some(first) = names.get(&name.value()) {
+            let message = format!(
+                "joint {} is named `{}` too: give each joint its own name",
+                first + 1,
+                name.value()
+            );
+            reader.errors.push(name.span(), message);
+        } else {
+            names.insert(name.value(), i);
+        }
+    }
+    names
 }
 
 /// Lowers `robot`, whose joints are those of `joints`, where every value was read without

@@ -1,15 +1,17 @@
 //! The value of `joints = [...]`: joints given URDF style, base to tip, each
 //! `revolute(xyz = [..], rpy = [..], axis = [..])` or `prismatic(..)`, read into [`JointAttr`]s
-//! with their spans. `xyz` and `rpy` default to zero, `axis` to `[0, 0, 1]`.
+//! with their spans. `xyz` and `rpy` default to zero, `axis` to `[0, 0, 1]`; in a tree,
+//! `parent` (default: the joint before) and `name`.
 
-use super::entry::{skip_entry, values, Entry};
+use super::entry::{skip_entry, string, values, Entry};
 use super::keys::{JointKey, JointType};
+use super::tree::{parse_parent, ParentAttr};
 use crate::front::errors::{unknown_key, Errors};
 use crate::front::value::Spanned;
 use crate::model::JointKind;
 use proc_macro2::Span;
 use syn::parse::ParseStream;
-use syn::{bracketed, parenthesized, Ident, Token};
+use syn::{bracketed, parenthesized, Ident, LitStr, Token};
 
 /// One entry of `joints = [...]`.
 pub(super) struct JointAttr {
@@ -22,6 +24,9 @@ pub(super) struct JointAttr {
     pub rpy: Option<[Spanned; 3]>,
     /// The three values and the span of their brackets.
     pub axis: Option<([Spanned; 3], Span)>,
+    /// In a tree: the joint it hangs from, and its own name.
+    pub parent: Option<ParentAttr>,
+    pub name: Option<LitStr>,
 }
 
 /// What the keys of `revolute(...)` are called in messages.
@@ -66,6 +71,8 @@ pub(super) fn parse_joints(
             xyz: None,
             rpy: None,
             axis: None,
+            parent: None,
+            name: None,
         };
         parse_joint_keys(&keys, &mut joint, errors)?;
         joints.push(joint);
@@ -113,6 +120,10 @@ fn parse_joint_keys(
             JointKey::Axis => {
                 let axis = values::<3>(input, "`axis = [x, y, z]`")?;
                 entry.keep_first(&mut joint.axis, axis);
+            }
+            JointKey::Parent => entry.keep_first(&mut joint.parent, parse_parent(input)?),
+            JointKey::Name => {
+                entry.keep_first(&mut joint.name, string(input, "`name = \"palm\"`")?)
             }
         }
         if !input.is_empty() {

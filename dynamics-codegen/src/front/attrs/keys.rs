@@ -40,13 +40,15 @@ keys! {
     /// `link(...)` (one per joint), `convention = standard | modified`, `file = "robot.toml"`,
     /// `name = "arm"`, `crate = "path::to::dynamics_runtime"`, `check_inertia = false`,
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
-    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"`,
+    /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"` (a chain) or
+    /// `tips = ["left_hand", "right_hand"]` (the branches to those links),
     /// `tool = [x, y, z, roll, pitch, yaw]`. An opt-in family's name is a key too
     /// (`derivatives = true`), from the method table.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
-        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tool = "tool",
+        Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tips = "tips",
+        Tool = "tool",
     }
 }
 
@@ -59,10 +61,12 @@ keys! {
 
 keys! {
     /// A key of `revolute(...)` and `prismatic(...)`: `xyz = [x, y, z]` and
-    /// `rpy = [roll, pitch, yaw]` place the joint frame in the previous link's frame (as URDF's
-    /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame.
+    /// `rpy = [roll, pitch, yaw]` place the joint frame in the parent link's frame (as URDF's
+    /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame; in a tree,
+    /// `parent = 2` or `parent = "palm"` names the joint it hangs from (default: the one
+    /// before; 0 the base) and `name = "palm"` names it.
     JointKey {
-        Xyz = "xyz", Rpy = "rpy", Axis = "axis",
+        Xyz = "xyz", Rpy = "rpy", Axis = "axis", Parent = "parent", Name = "name",
     }
 }
 

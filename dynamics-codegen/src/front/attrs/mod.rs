@@ -18,6 +18,7 @@ mod keys;
 mod parse;
 mod reader;
 mod simplify;
+mod tree;
 
 pub use keys::attribute_words;
 pub(super) use parse::{parse_attrs, Attrs, Source};

@@ -3,7 +3,8 @@
 //! and parsing goes on with the next key, so that one build reports every mistake.
 
 use super::entry::{
-    boolean, parse_convention, parse_dh, parse_spring, skip_entry, string, values, DhRowAttr, Entry,
+    boolean, parse_convention, parse_dh, parse_spring, skip_entry, string, strings, values,
+    DhRowAttr, Entry,
 };
 use super::friction::{parse_friction, FrictionAttr};
 use super::joints::{parse_joints, JointAttr};
@@ -53,10 +54,12 @@ pub(in crate::front) struct Attrs {
     pub name: Option<LitStr>,
     /// `check_inertia = false` for every link (or every joint of the file).
     pub check_inertia: Option<bool>,
-    /// `urdf = "..."`, and the links of the chain it takes: `base = ".."`, `tip = ".."`.
+    /// `urdf = "..."`, and the links of the chain it takes: `base = ".."`, `tip = ".."`, or of
+    /// the tree: `tips = ["..", ..]` (with the span of its brackets).
     pub urdf: Option<LitStr>,
     pub base: Option<LitStr>,
     pub tip: Option<LitStr>,
+    pub tips: Option<(Vec<LitStr>, Span)>,
     /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
     pub tool: Option<[Spanned; 6]>,
     /// `derivatives = true` and the like: the opt-in families asked for, or refused.
@@ -120,17 +123,32 @@ impl Attrs {
 }
 
 impl Attrs {
-    /// `base = ".."` and `tip = ".."` name links of a URDF file: an error on each without
-    /// `urdf`.
+    /// `base = ".."`, `tip = ".."` and `tips = [..]` name links of a URDF file: an error on
+    /// each without `urdf`.
     pub(in crate::front) fn refuse_chain_without_urdf(&self, errors: &mut Errors) {
-        for (key, given) in [("base", &self.base), ("tip", &self.tip)] {
-            if let Some(literal) = given {
+        let tips = self.tips.as_ref().map(|(_, span)| *span);
+        let given = [("base", &self.base), ("tip", &self.tip)]
+            .map(|(key, literal)| (key, "a link", literal.as_ref().map(LitStr::span)));
+        for (key, what, span) in given.into_iter().chain([("tips", "links", tips)]) {
+            if let Some(span) = span {
                 errors.push(
-                    literal.span(),
-                    format!("`{key}` names a link of a URDF file: give the file with `urdf = \"robots/arm.urdf\"`"),
+                    span,
+                    format!("`{key}` names {what} of a URDF file: give the file with `urdf = \"robots/arm.urdf\"`"),
                 );
             }
         }
+    }
+
+    /// The `tips` named, as strings; an error at the list where `tip` is given too (a serial
+    /// chain or a tree: one of them) or the list is empty.
+    pub(in crate::front) fn tip_names(&self, errors: &mut Errors) -> Option<Vec<String>> {
+        let (tips, span) = self.tips.as_ref()?;
+        if self.tip.is_some() {
+            errors.push(*span, "`tips` cannot be combined with `tip`: `tip` takes the serial path to one link, `tips` the branches to several; give one");
+        } else if tips.is_empty() {
+            errors.push(*span, "`tips` is empty: name the links the branches lead to, e.g. `tips = [\"left_hand\", \"right_hand\"]`, or leave it out to take every branch");
+        }
+        Some(tips.iter().map(LitStr::value).collect())
     }
 }
 
@@ -259,6 +277,10 @@ fn parse_attr(
         ),
         Key::Base => entry.keep_first(&mut attrs.base, string(input, "`base = \"base_link\"`")?),
         Key::Tip => entry.keep_first(&mut attrs.tip, string(input, "`tip = \"tool0\"`")?),
+        Key::Tips => entry.keep_first(
+            &mut attrs.tips,
+            strings(input, "`tips = [\"left_hand\", \"right_hand\"]`")?,
+        ),
         Key::Name => entry.keep_first(&mut attrs.name, string(input, "`name = \"arm\"`")?),
         Key::Crate => {
             let path = string(input, "`crate = \"path::to::dynamics_runtime\"`")?.parse()?;

@@ -57,13 +57,17 @@ fn value(v: Option<&FileValue>) -> Value {
     v.map_or_else(Value::zero, |v| v.0.clone())
 }
 
-/// The angles (θ, α and the origin's rpy) of joint `joint` written as plain numbers above 2π.
+/// The angles (θ, α, γ and the origin's rpy) of joint `joint` written as plain numbers above 2π.
 fn angle_problems(joint: usize, j: &FileJoint) -> impl Iterator<Item = Deferred> + '_ {
     let rpy = j.origin.iter().flat_map(|o| o.rpy.iter().flatten());
-    [("theta", &j.theta), ("alpha", &j.alpha)]
-        .into_iter()
-        .filter_map(move |(key, v)| Some((joint, key, v.as_ref()?.1.clone()?)))
-        .chain(rpy.filter_map(move |v| Some((joint, "origin", v.1.clone()?))))
+    [
+        ("theta", &j.theta),
+        ("alpha", &j.alpha),
+        ("gamma", &j.gamma),
+    ]
+    .into_iter()
+    .filter_map(move |(key, v)| Some((joint, key, v.as_ref()?.1.clone()?)))
+    .chain(rpy.filter_map(move |v| Some((joint, "origin", v.1.clone()?))))
 }
 
 /// The robot the file describes, with its per-joint check flags (positions are filled in by
@@ -97,7 +101,8 @@ pub(super) fn convert(
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
-    for (i, j) in file.joints.into_iter().enumerate() {
+    let branches = super::tree::branches(&file.joints, convention, frames_given, &mut deferred);
+    for ((i, j), branch) in file.joints.into_iter().enumerate().zip(branches) {
         deferred.extend(angle_problems(i, &j));
         let kind = match j.kind {
             FileKind::Revolute => JointKind::Revolute,
@@ -129,6 +134,7 @@ pub(super) fn convert(
         ];
         joints.push(Joint {
             frame,
+            branch,
             ..Joint::dh(kind, row, link)
         });
     }

@@ -10,6 +10,7 @@ mod positions;
 mod schema;
 mod simplify;
 mod toml;
+mod tree;
 
 use crate::front::errors::FileError;
 use crate::front::sources::Loaded;

@@ -121,6 +121,19 @@ pub(super) struct FileRobot {
 pub(super) struct FileJoint {
     #[serde(rename = "type")]
     pub(super) kind: FileKind,
+    /// A name other joints' `parent` can give.
+    #[serde(default)]
+    pub(super) name: Option<String>,
+    /// The antecedent, in a tree: an earlier joint's 1-based number (0: the base) or name;
+    /// default: the joint before.
+    #[serde(default)]
+    pub(super) parent: Option<super::tree::FileParent>,
+    /// Khalil-Kleinfinger's γ and b (modified D-H rows only): the turn about and offset along
+    /// the antecedent's z onto the common normal to this joint's axis.
+    #[serde(default)]
+    pub(super) gamma: Option<FileValue>,
+    #[serde(default)]
+    pub(super) b: Option<FileValue>,
     #[serde(default)]
     pub(super) theta: Option<FileValue>,
     #[serde(default)]

@@ -7,7 +7,7 @@ use super::xml::{self, Kind, Limit};
 use super::{tree, Chain};
 use crate::front::errors::FileError;
 
-/// Per joint of the robot `chain` of the URDF text makes (its moving joints from base to tip),
+/// Per joint of the robot `chain` of the URDF text makes (its moving joints, in its order),
 /// the limits its `<limit>` writes. A continuous joint has no range: its `lower` and `upper`,
 /// if written, are left out.
 ///
@@ -17,7 +17,7 @@ use crate::front::errors::FileError;
 pub fn joint_limits(text: &str, chain: Chain) -> Result<Vec<Limit>, Vec<FileError>> {
     let doc = xml::read(text)?;
     let tree = tree::tree(&doc)?;
-    let path = tree.chain(chain.base, chain.tip)?;
+    let path = tree.select(chain)?;
     Ok(path
         .joints
         .iter()

@@ -2,8 +2,9 @@
 //! and the command line's `ROBOT.urdf --base .. --tip ..`.
 //!
 //! The file is read with `roxmltree`, which keeps every element's position, so that each
-//! error names `file:line:col` (`xml`). The serial chain from the base link to the tip link is
-//! found in the joint tree (`tree`); each moving joint becomes a joint of the robot given by
+//! error names `file:line:col` (`xml`). The serial chain from the base link to the tip link,
+//! or the tree of the branches below the base, is found in the joint tree (`tree`,
+//! `select`); each moving joint becomes a joint of the robot given by
 //! its frame `P_i · Rot(u_i, q_i)` (`P_i` its `<origin>` after the fixed joints before it,
 //! `u_i` its unit `<axis>`), its link the rigid body of its child link and every link fixed to
 //! it, combined exactly (`inertial`), and its `<dynamics damping friction>` its viscous and
@@ -14,6 +15,7 @@
 mod inertial;
 mod limits;
 mod robot;
+mod select;
 mod tree;
 mod xml;
 
@@ -27,14 +29,19 @@ use crate::model::{FrameProblem, Robot};
 pub use limits::joint_limits;
 pub use xml::Limit;
 
-/// Which chain of the URDF to take: the links it starts and ends at, by name.
+/// Which joints of the URDF to take: the link fixed to the ground, and the serial path to one
+/// link (`tip`) or the branches to some (`tips`), by name; by default every moving joint
+/// below the base.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Chain<'a> {
     /// The link fixed to the ground; default: the root link.
     pub base: Option<&'a str>,
-    /// The last link; default: where the moving joints below the base end, if they form one
-    /// chain.
+    /// The last link of a serial chain: the path from the base to it, refused if a moving
+    /// joint branches off it.
     pub tip: Option<&'a str>,
+    /// The links the branches kept lead to (empty: every branch); what moves off them is cut
+    /// off.
+    pub tips: &'a [&'a str],
 }
 
 /// Reads the chain `chain` of the URDF text of the file `path` as a robot lowered to its D-H
@@ -43,7 +50,7 @@ pub struct Chain<'a> {
 ///
 /// # Errors
 /// Every problem found, each at its line and column: malformed XML, an unknown link, a chain
-/// that is not serial, a zero or non-unit axis, a negative mass or friction coefficient, an
+/// to a `tip` that is not serial, a `tips` link not below the base, a zero or non-unit axis, a negative mass or friction coefficient, an
 /// inertia a rigid body cannot have.
 pub fn load_urdf(
     path: &str,
@@ -53,7 +60,7 @@ pub fn load_urdf(
 ) -> Result<Loaded, Vec<FileError>> {
     let doc = xml::read(text)?;
     let tree = tree::tree(&doc)?;
-    let path_joints = tree.chain(chain.base, chain.tip)?;
+    let path_joints = tree.select(chain)?;
     too_many_joints(&doc, &path_joints.joints)?;
     let stem = std::path::Path::new(path)
         .file_stem()

@@ -1,7 +1,8 @@
-//! The chain as the generator's [`Robot`]: one joint per moving URDF joint, given by its frame
-//! (placement and axis, in the frame of the link before it), its link the rigid body of the
-//! joint's child link and every link fixed to it (`inertial`), and its `<dynamics>` as
-//! friction. Fixed joints before a moving joint fold into its placement.
+//! The chain or tree as the generator's [`Robot`]: one joint per moving URDF joint, given by
+//! its frame (placement and axis, in the frame of the link it hangs from) and its antecedent
+//! (the moving joint above it, in a tree), its link the rigid body of the joint's child link
+//! and every link fixed to it (`inertial`), and its `<dynamics>` as friction. Fixed joints
+//! before a moving joint fold into its placement.
 
 use super::inertial::Body;
 use super::tree::{Chain, Tree};
@@ -10,7 +11,7 @@ use crate::check;
 use crate::front::errors::FileError;
 use crate::front::sources::At;
 use crate::model::{
-    AxisFrame, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Value,
+    AxisFrame, Branch, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Value,
     AXIS_LENGTH_TOLERANCE,
 };
 use std::collections::BTreeMap;
@@ -21,6 +22,8 @@ type JointPositions = BTreeMap<String, At>;
 /// A moving joint with the links it carries, each with its pose in the joint's child frame.
 struct Segment {
     joint: usize,
+    /// The segment it hangs from, or `None` for the base.
+    parent: Option<usize>,
     placement: Placement,
     parts: Vec<(usize, Pose)>,
 }
@@ -36,6 +39,7 @@ pub(super) fn build(
     let mut joints = Vec::new();
     let mut positions = Vec::new();
     let (segments, tip) = segments(tree, chain);
+    let parents: Vec<Option<usize>> = segments.iter().map(|s| s.parent).collect();
     for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
         match joint(tree, segment) {
@@ -48,6 +52,15 @@ pub(super) fn build(
     }
     if !errors.is_empty() {
         return Err(errors);
+    }
+    if (0..parents.len()).any(|i| parents[i] != i.checked_sub(1)) {
+        for (joint, parent) in joints.iter_mut().zip(parents) {
+            joint.branch = Some(Branch {
+                parent,
+                gamma: Value::zero(),
+                b: Value::zero(),
+            });
+        }
     }
     let number =
         |text| crate::symbolic::Number::parse_decimal(text).map_or_else(Value::zero, Value::num);
@@ -65,46 +78,59 @@ pub(super) fn build(
     Ok((robot, positions))
 }
 
-/// The moving joints of the chain, each with the links fixed to its child link, and the tip
-/// link's pose in the last moving joint's child frame (the hand's tool transform).
+/// The moving joints kept, in the chain's order, each with the links fixed to its child link
+/// and the segment it hangs from; and the hand's tool transform: the pose of the last tip link
+/// that hangs from the last moving joint, in that joint's child frame.
 fn segments(tree: &Tree, chain: &Chain) -> (Vec<Segment>, Pose) {
     let mut segments: Vec<Segment> = Vec::new();
-    // The current path link in the frame of the last moving joint's child (or of the base).
-    let mut pose = Pose::identity();
-    for (k, &j) in chain.joints.iter().enumerate() {
+    // Per link reached: the segment it belongs to (`None` for the base's body) and its pose
+    // in that segment's child frame (or the base's).
+    let mut reached = BTreeMap::from([(chain.base, (None, Pose::identity()))]);
+    let kept: std::collections::BTreeSet<usize> = chain.joints.iter().copied().collect();
+    for &j in &chain.joints {
         let joint = &tree.doc.joints[j];
-        if joint.kind.moves() {
+        let Some((segment, pose)) = reached.get(&tree.parent_link(j)).cloned() else {
+            continue;
+        };
+        let (segment, pose) = if joint.kind.moves() {
             segments.push(Segment {
                 joint: j,
+                parent: segment,
                 placement: compose(&pose, &joint.origin),
                 parts: Vec::new(),
             });
-            pose = Pose::identity();
+            (Some(segments.len() - 1), Pose::identity())
         } else {
-            pose = pose.then(&placement_pose(&joint.origin));
+            (segment, pose.then(&placement_pose(&joint.origin)))
+        };
+        let link = tree.child(j);
+        if let Some(s) = segment {
+            attach(tree, link, pose.clone(), &kept, &mut segments[s].parts);
         }
-        if let Some(segment) = segments.last_mut() {
-            let next = chain.joints.get(k + 1).copied();
-            attach(tree, tree.child(j), pose.clone(), next, &mut segment.parts);
-        }
+        reached.insert(link, (segment, pose));
     }
-    (segments, pose)
+    let last = segments.len().checked_sub(1);
+    let tool = chain.tips.iter().rev().find_map(|tip| {
+        let (segment, pose) = reached.get(tip)?;
+        (*segment == last).then(|| pose.clone())
+    });
+    (segments, tool.unwrap_or_default())
 }
 
-/// Adds `link` at `pose` and every link fixed to it, except through `path_next` (the chain's
-/// next joint) and moving joints: past the tip, a part fixed to the tip link (a hand) is merged
-/// into it and what moves (its fingers) is cut off, as a tool is mounted on a flange.
+/// Adds `link` at `pose` and every link fixed to it, except through the joints `kept` (walked
+/// on their own) and moving joints: past a tip, a part fixed to the tip link (a hand) is
+/// merged into it and what moves (its fingers) is cut off, as a tool is mounted on a flange.
 fn attach(
     tree: &Tree,
     link: usize,
     pose: Pose,
-    path_next: Option<usize>,
+    kept: &std::collections::BTreeSet<usize>,
     parts: &mut Vec<(usize, Pose)>,
 ) {
     let mut stack = vec![(link, pose)];
     while let Some((link, pose)) = stack.pop() {
         for &j in tree.children(link) {
-            if Some(j) != path_next && !tree.doc.joints[j].kind.moves() {
+            if !kept.contains(&j) && !tree.doc.joints[j].kind.moves() {
                 let origin = placement_pose(&tree.doc.joints[j].origin);
                 stack.push((tree.child(j), pose.then(&origin)));
             }

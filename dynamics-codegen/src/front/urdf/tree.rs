@@ -1,10 +1,10 @@
-//! The kinematic tree of a URDF and the serial chain in it from the base link to the tip link.
+//! The kinematic tree of a URDF and the serial chain in it from the base link to a `tip` link.
 //!
-//! The chain is the path of joints from `base` (default: the root link) to `tip` (default:
-//! where the moving joints below the base end, if they form one chain). A joint that moves
-//! but is not on the path, hanging off a link from the base up to the link before the tip, is
-//! a branch and refused; so are floating, planar and mimic joints on the path. Below the tip,
-//! a part fixed to the tip link is merged into it and what moves below it is cut off.
+//! The chain is the path of joints from `base` (default: the root link) to `tip`. A joint that
+//! moves but is not on the path, hanging off a link from the base up to the link before the
+//! tip, is a branch and refused; so are floating, planar and mimic joints on the path. Below
+//! the tip, a part fixed to the tip link is merged into it and what moves below it is cut off.
+//! Without a `tip`, the joints below the base are taken as a tree (`select`).
 
 use super::xml::{error, Description, Kind};
 use crate::front::errors::FileError;
@@ -17,19 +17,22 @@ pub(super) struct Tree<'a> {
     /// Each link's index by name.
     index: BTreeMap<&'a str, usize>,
     /// Per link, the joint that has it as child.
-    parent: Vec<Option<usize>>,
+    pub(super) parent: Vec<Option<usize>>,
     /// Per link, the joints that have it as parent, in the file's order.
     children: Vec<Vec<usize>>,
     /// Per joint, whether it or a joint below it moves.
     moving: Vec<bool>,
 }
 
-/// The serial chain from base to tip.
+/// The joints the robot is made of: a serial chain from base to tip, or a tree below the base.
 pub(super) struct Chain {
     /// The base link.
     pub base: usize,
-    /// The joints from base to tip, fixed ones included.
+    /// The joints below the base that are kept, fixed ones included, in depth-first order
+    /// (each link's child joints in the file's order).
     pub joints: Vec<usize>,
+    /// The links named as tips, in the order named (for the hand frame).
+    pub tips: Vec<usize>,
 }
 
 /// The tree of `doc`; every link named twice, joint naming an unknown link, or link with two
@@ -103,7 +106,7 @@ pub(super) fn tree(doc: &Description) -> Result<Tree<'_>, Vec<FileError>> {
 
 impl Tree<'_> {
     /// The link named `name` (said as `role`, `base` or `tip`).
-    fn find(&self, name: &str, role: &str) -> Result<usize, FileError> {
+    pub(super) fn find(&self, name: &str, role: &str) -> Result<usize, FileError> {
         self.index.get(name).copied().ok_or_else(|| {
             let names: Vec<String> = self
                 .doc
@@ -122,7 +125,7 @@ impl Tree<'_> {
     }
 
     /// The parent link of joint `joint`.
-    fn parent_link(&self, joint: usize) -> usize {
+    pub(super) fn parent_link(&self, joint: usize) -> usize {
         self.index[self.doc.joints[joint].parent.as_str()]
     }
 
@@ -175,7 +178,7 @@ impl Tree<'_> {
     }
 
     /// The joints from the root down to `link` (the tree has no loop).
-    fn ancestors(&self, link: usize) -> Vec<usize> {
+    pub(super) fn ancestors(&self, link: usize) -> Vec<usize> {
         let mut joints = Vec::new();
         let mut at = link;
         while let Some(j) = self.parent[at] {
@@ -201,17 +204,17 @@ impl Tree<'_> {
         self.moving[joint]
     }
 
-    /// The chain from `base` (default: the root link) to `tip` (default: the end of the moving
-    /// joints below the base, if they form one chain).
-    pub fn chain(&self, base: Option<&str>, tip: Option<&str>) -> Result<Chain, Vec<FileError>> {
-        let base = match base {
-            Some(name) => self.find(name, "base").map_err(|e| vec![e])?,
-            None => self.root().map_err(|e| vec![e])?,
-        };
-        let tip = match tip {
-            Some(name) => self.find(name, "tip").map_err(|e| vec![e])?,
-            None => self.last_moving(base).map_err(|e| vec![e])?,
-        };
+    /// The base link: the one named, or the root link.
+    pub(super) fn base(&self, base: Option<&str>) -> Result<usize, Vec<FileError>> {
+        match base {
+            Some(name) => self.find(name, "base").map_err(|e| vec![e]),
+            None => self.root().map_err(|e| vec![e]),
+        }
+    }
+
+    /// The chain from `base` to the link named `tip`.
+    pub fn chain(&self, base: usize, tip: &str) -> Result<Chain, Vec<FileError>> {
+        let tip = self.find(tip, "tip").map_err(|e| vec![e])?;
         let from_root = self.ancestors(tip);
         let start = from_root
             .iter()
@@ -227,7 +230,11 @@ impl Tree<'_> {
                 )]);
             }
         };
-        let chain = Chain { base, joints };
+        let chain = Chain {
+            base,
+            joints,
+            tips: vec![tip],
+        };
         let errors: Vec<FileError> = self
             .path_problems(&chain)
             .chain(self.branches(&chain))
@@ -263,40 +270,18 @@ impl Tree<'_> {
         }
     }
 
-    /// Below `base`, the link where the moving joints end, following the one child that leads
-    /// to a moving joint; an error where two do.
-    fn last_moving(&self, base: usize) -> Result<usize, FileError> {
-        let mut link = base;
-        loop {
-            let moving: Vec<usize> = self.children[link]
-                .iter()
-                .copied()
-                .filter(|j| self.moves(*j))
-                .collect();
-            match moving[..] {
-                [] => return Ok(link),
-                [next] => link = self.child(next),
-                _ => {
-                    let l = &self.doc.links[link];
-                    let names: Vec<String> = moving
-                        .iter()
-                        .map(|j| format!("`{}`", self.doc.joints[*j].name))
-                        .collect();
-                    return Err(error(l.at, format!("the robot branches at link `{}` (joints {}): name the end of the chain with `tip = \"..\"`", l.name, names.join(" and "))));
-                }
-            }
-        }
-    }
-
     /// The joints on the path that cannot be part of a serial chain.
-    fn path_problems<'c>(&'c self, chain: &'c Chain) -> impl Iterator<Item = FileError> + 'c {
+    pub(super) fn path_problems<'c>(
+        &'c self,
+        chain: &'c Chain,
+    ) -> impl Iterator<Item = FileError> + 'c {
         chain.joints.iter().filter_map(move |&j| {
             let joint = &self.doc.joints[j];
             let name = &joint.name;
             match (joint.kind, joint.mimic) {
                 (Kind::Floating | Kind::Planar, _) => {
                     let kind = if joint.kind == Kind::Floating { "floating" } else { "planar" };
-                    Some(error(joint.at, format!("`<joint name=\"{name}\" type=\"{kind}\">`: a {kind} joint moves in more than one direction; a serial chain has revolute, continuous, prismatic and fixed joints")))
+                    Some(error(joint.at, format!("`<joint name=\"{name}\" type=\"{kind}\">`: a {kind} joint moves in more than one direction; a robot has revolute, continuous, prismatic and fixed joints")))
                 }
                 (kind, Some(at)) if kind.moves() => Some(mimic_error(at, name)),
                 _ => None,
@@ -326,5 +311,5 @@ impl Tree<'_> {
 
 /// The error for a mimic joint at `at`.
 fn mimic_error(at: At, joint: &str) -> FileError {
-    error(at, format!("joint `{joint}` has `<mimic>`: a joint that follows another is not supported; make it fixed or choose a tip before it"))
+    error(at, format!("joint `{joint}` has `<mimic>`: a joint that follows another is not supported; make it fixed, or choose a `tip` or `tips` that leave it out"))
 }

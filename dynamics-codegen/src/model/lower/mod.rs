@@ -22,10 +22,22 @@
 //! about `x_{i−1}`, `a_{i−1} = (o_i − o_{i−1})·x_{i−1}`, `θ_i = ∠(x_{i−1}, x_i)` about `z_i`,
 //! `d_i = (o_i − o_{i−1})·z_i`; each link's com and inertia are re-expressed in D-H frame i
 //! through `link_pose_i = D_i⁻¹ L_i`.
+//!
+//! **Trees** (Khalil-Kleinfinger). Joint i hangs from its antecedent p (`Joint::branch`, an
+//! earlier joint or the base): `L_i = L_p P_i`. "Axis i + 1" above is axis i's first child's
+//! (the first joint in order whose antecedent is i), so a chain lowers as before; a leaf's
+//! frame is the last frame's rule, with the normal that reaches it. Each other child k of p
+//! (and each root after the first, with D-H frame 0 as antecedent) gets the common normal from
+//! axis p to axis k, by the same rules with p's origin as the foot (so `b = 0` where the axes
+//! are parallel) and `x_p` as the sign reference (γ in (−90°, 90°]): γ_k turns `x_p` onto it
+//! about `z_p`, `b_k` is its foot's offset from `o_p` along `z_p`, and α_k, a_k, θ_k, d_k
+//! follow from that turned frame as above. First children get γ = b = 0.
 
 mod geometry;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tree_tests;
 
 pub use geometry::NOISE_TOLERANCE;
 
@@ -41,6 +53,11 @@ pub const AXIS_LENGTH_TOLERANCE: f64 = 1e-4;
 /// How close an axis component must be to 0 or ±1 to snap to it: the same 1e-5 as an angle's
 /// snapping to a quarter turn, since a component of 1e-5 tilts the axis by 1e-5 rad.
 pub const AXIS_COMPONENT_TOLERANCE: f64 = super::QUARTER_TURN_TOLERANCE;
+
+/// How small the sine of the angle between two joint axes must be for the axes to be taken as
+/// parallel (the common normal then follows Craig's rule for parallel axes): the tilt ignored
+/// moves a frame by at most this times the distance between the axes.
+pub const PARALLEL_TOLERANCE: f64 = 1e-6;
 
 /// Why a joint given URDF style has no D-H row.
 #[derive(Clone, Debug, PartialEq)]
@@ -108,18 +125,26 @@ pub fn lower_frames(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
     if robot.joints.iter().all(|j| j.frame.is_none()) {
         return Ok(());
     }
-    let axes = axes(robot)?;
-    let mut frames = dh_frames(&axes)?;
-    frames.insert(0, frame_zero(&frames[0])?);
-    let base = frames[0].pose();
+    let parents = parents(robot)?;
+    let axes = axes(robot, &parents)?;
+    let frames = dh_frames(&axes, &parents)?;
+    let base = frames.zero.pose();
     for (i, joint) in robot.joints.iter_mut().enumerate() {
-        let (before, frame) = (&frames[i], &frames[i + 1]);
+        let antecedent = parents[i].map_or(&frames.zero, |p| &frames.own[p]);
+        let (before, frame) = (
+            frames.turned[i].as_ref().unwrap_or(antecedent),
+            &frames.own[i],
+        );
+        if let Some(branch) = &mut joint.branch {
+            branch.gamma = angle(&antecedent.x, &before.x, &antecedent.z);
+            branch.b = dot(&sub(&before.origin, &antecedent.origin), &antecedent.z);
+        }
         let step = sub(&frame.origin, &before.origin);
         joint.alpha = angle(&before.z, &frame.z, &before.x);
         joint.a = dot(&step, &before.x);
         joint.theta = angle(&before.x, &frame.x, &frame.z);
         joint.d = dot(&step, &frame.z);
-        let link_pose = frame_pose_inverse(&frames[i + 1]).then(&axes[i].link);
+        let link_pose = frame_pose_inverse(frame).then(&axes[i].link);
         joint.link.com = clean3(link_pose.apply(&joint.link.com));
         joint.link.inertia = rotate_inertia(&link_pose.rotation, &joint.link.inertia).map(clean);
         joint.link_pose = clean_pose(link_pose);
@@ -129,6 +154,30 @@ pub fn lower_frames(robot: &mut Robot) -> Result<(), Vec<FrameProblem>> {
     robot.base = clean_pose(base);
     robot.convention = Convention::Modified;
     Ok(())
+}
+
+/// Every joint's antecedent, or a problem for each that is not an earlier joint.
+fn parents(robot: &Robot) -> Result<Vec<Option<usize>>, Vec<FrameProblem>> {
+    let parents: Vec<Option<usize>> = (0..robot.dof()).map(|i| robot.parent(i)).collect();
+    let problems: Vec<FrameProblem> = parents
+        .iter()
+        .enumerate()
+        .filter(|(i, p)| p.is_some_and(|p| p >= *i))
+        .map(|(joint, p)| FrameProblem {
+            joint,
+            part: FramePart::Origin,
+            message: format!(
+                "its antecedent, joint {}, does not come before it: number the joints so that \
+                 each hangs from an earlier one",
+                p.map_or(0, |p| p + 1)
+            ),
+        })
+        .collect();
+    if problems.is_empty() {
+        Ok(parents)
+    } else {
+        Err(problems)
+    }
 }
 
 /// D-H frame 0: at the base frame's origin, so that the base pose is a rotation and the
@@ -180,11 +229,14 @@ fn clean_pose(pose: Pose) -> Pose {
 }
 
 /// Every joint's axis at q = 0, or every problem with the joints' frames.
-fn axes(robot: &Robot) -> Result<Vec<Axis>, Vec<FrameProblem>> {
+fn axes(robot: &Robot, parents: &[Option<usize>]) -> Result<Vec<Axis>, Vec<FrameProblem>> {
     let mut problems = Vec::new();
-    let mut link = Pose::identity();
+    // Each joint's user link frame at q = 0 (its antecedent's where the joint has a problem).
+    let mut links: Vec<Pose> = Vec::with_capacity(robot.dof());
     let mut axes = Vec::new();
     for (joint, j) in robot.joints.iter().enumerate() {
+        let mut link = parents[joint].map_or_else(Pose::identity, |p| links[p].clone());
+        links.push(link.clone());
         let mut problem = |part, message: String| {
             problems.push(FrameProblem {
                 joint,
@@ -217,6 +269,7 @@ fn axes(robot: &Robot) -> Result<Vec<Axis>, Vec<FrameProblem>> {
             }
         };
         link = clean_pose(link.then(&placement));
+        links[joint] = link.clone();
         match unit_axis(&frame.axis) {
             Ok(local) => axes.push(Axis {
                 point: link.translation.clone(),
@@ -267,39 +320,82 @@ fn unit_axis(axis: &[Value; 3]) -> Result<Vec3, String> {
     normalize(&snapped).ok_or_else(|| "the axis snaps to zero".into())
 }
 
-/// The D-H frames at q = 0, base to tip.
-fn dh_frames(axes: &[Axis]) -> Result<Vec<DhFrame>, Vec<FrameProblem>> {
-    let mut frames: Vec<DhFrame> = Vec::new();
-    let mut problems = Vec::new();
-    // Where the previous common normal meets this joint's axis.
-    let mut foot: Option<Vec3> = None;
-    for (i, axis) in axes.iter().enumerate() {
-        let previous_x = frames.last().map(|f| f.x.clone());
-        let frame = match axes.get(i + 1) {
+/// The D-H frames at q = 0: frame 0, each joint's, and for a joint that is not its
+/// antecedent's first child, the antecedent's frame turned by γ about its z and moved by b
+/// along it onto the common normal to the joint's axis.
+struct Frames {
+    zero: DhFrame,
+    own: Vec<DhFrame>,
+    turned: Vec<Option<DhFrame>>,
+}
+
+/// The D-H frames at q = 0, in the joints' order (each antecedent before its children).
+fn dh_frames(axes: &[Axis], parents: &[Option<usize>]) -> Result<Frames, Vec<FrameProblem>> {
+    let problem = |joint, message| {
+        vec![FrameProblem {
+            joint,
+            part: FramePart::Origin,
+            message,
+        }]
+    };
+    let mut first_child: Vec<Option<usize>> = vec![None; axes.len()];
+    for (c, parent) in parents.iter().enumerate() {
+        if let Some(p) = *parent {
+            first_child[p].get_or_insert(c);
+        }
+    }
+    let mut own: Vec<DhFrame> = Vec::with_capacity(axes.len());
+    let mut turned = vec![None; axes.len()];
+    let mut zero: Option<DhFrame> = None;
+    // Per joint, where its frame's x (the normal to its first child) meets that child's axis.
+    let mut feet: Vec<Option<Vec3>> = vec![None; axes.len()];
+    for (j, axis) in axes.iter().enumerate() {
+        // The normal that reaches this axis: the foot on it, and its direction.
+        let (foot, incoming_x) = match (parents[j], zero.as_ref()) {
+            (Some(p), _) if first_child[p] == Some(j) => (feet[p].clone(), Some(own[p].x.clone())),
+            (None, None) => (None, None),
+            (parent, zero) => {
+                let antecedent =
+                    parent.map_or_else(|| zero.expect("joint 1 is a root"), |p| &own[p]);
+                let line = Axis {
+                    point: antecedent.origin.clone(),
+                    direction: antecedent.z.clone(),
+                    link: Pose::identity(),
+                };
+                let normal =
+                    common_normal(&line, axis, Some(&antecedent.origin), Some(&antecedent.x))
+                        .map_err(|message| problem(j, message))?;
+                let (foot, x) = (foot_on(&normal, axis), normal.x.clone());
+                turned[j] = Some(normal);
+                (Some(foot), Some(x))
+            }
+        };
+        let frame = match first_child[j] {
             None => DhFrame {
-                origin: foot.clone().unwrap_or_else(|| axis.point.clone()),
-                x: previous_x.unwrap_or_else(|| perpendicular(axis)),
+                origin: foot.unwrap_or_else(|| axis.point.clone()),
+                x: incoming_x.unwrap_or_else(|| perpendicular(axis)),
                 z: axis.direction.clone(),
             },
-            Some(next) => match common_normal(axis, next, foot.as_ref(), previous_x.as_ref()) {
-                Ok(frame) => frame,
-                Err(message) => {
-                    problems.push(FrameProblem {
-                        joint: i + 1,
-                        part: FramePart::Origin,
-                        message,
-                    });
-                    return Err(problems);
-                }
-            },
+            Some(c) => common_normal(axis, &axes[c], foot.as_ref(), incoming_x.as_ref())
+                .map_err(|message| problem(c, message))?,
         };
-        if let Some(next) = axes.get(i + 1) {
-            let a = dot(&sub(&next.point, &frame.origin), &frame.x);
-            foot = Some(add(&frame.origin, &scale(&a, &frame.x)));
+        feet[j] = first_child[j].map(|c| foot_on(&frame, &axes[c]));
+        own.push(frame);
+        if j == 0 {
+            zero = Some(frame_zero(&own[0])?);
         }
-        frames.push(frame);
     }
-    Ok(frames)
+    Ok(Frames {
+        zero: zero.expect("a robot lowered has joints"),
+        own,
+        turned,
+    })
+}
+
+/// Where the x axis of `frame`, the common normal to `next`'s axis, meets that axis.
+fn foot_on(frame: &DhFrame, next: &Axis) -> Vec3 {
+    let a = dot(&sub(&next.point, &frame.origin), &frame.x);
+    add(&frame.origin, &scale(&a, &frame.x))
 }
 
 /// D-H frame i from axes i and i + 1; `foot` is where the previous normal meets axis i, and
@@ -313,7 +409,7 @@ fn common_normal(
     let (u, v) = (&axis.direction, &next.direction);
     let normal = cross(u, v);
     let reference = previous_x.cloned().unwrap_or_else(|| link_x(axis));
-    let (origin, x) = if geometry::is_zero(&normal) {
+    let (origin, x) = if nearly_parallel(&normal) {
         let origin = foot.cloned().unwrap_or_else(|| axis.point.clone());
         let w = sub(&next.point, &origin);
         let offset = sub(&w, &scale(&dot(&w, u), u));
@@ -338,7 +434,7 @@ fn common_normal(
         let scale_by = (Value::one() - b.clone() * b.clone())
             .exact()
             .and_then(crate::symbolic::Number::recip)
-            .expect("directions are numbers, not parallel");
+            .expect("directions are numbers, not nearly parallel");
         let s = clean((b * e - d) * Value::num(scale_by));
         (add(&axis.point, &scale(&s, u)), x)
     };
@@ -352,6 +448,14 @@ fn common_normal(
         x,
         z: u.clone(),
     })
+}
+
+/// Whether two unit directions whose cross product is `normal` are parallel for the common
+/// normal: exactly, or within [`PARALLEL_TOLERANCE`]: nearer, the skew foot
+/// `s = (b e − d) / (1 − b²)` is far off and loses more to rounding than the tilt ignored.
+fn nearly_parallel(normal: &Vec3) -> bool {
+    geometry::is_zero(normal)
+        || number(&dot(normal, normal)).is_some_and(|sin2| sin2 <= PARALLEL_TOLERANCE.powi(2))
 }
 
 /// The unit direction of an offset: the coordinate axis it lies along (any component may name

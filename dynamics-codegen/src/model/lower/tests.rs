@@ -9,21 +9,21 @@ use crate::model::{AxisFrame, Convention, Joint, JointKind, Link, Placement, Pos
 use crate::symbolic::Number;
 use dynamics_test_support::Rng;
 
-type M4 = [[f64; 4]; 4];
+pub(super) type M4 = [[f64; 4]; 4];
 
-fn num(v: &Value) -> f64 {
+pub(super) fn num(v: &Value) -> f64 {
     v.eval(&|_| None).expect("a number")
 }
 
-fn mul(a: &M4, b: &M4) -> M4 {
+pub(super) fn mul(a: &M4, b: &M4) -> M4 {
     std::array::from_fn(|i| std::array::from_fn(|j| (0..4).map(|k| a[i][k] * b[k][j]).sum()))
 }
 
-fn identity() -> M4 {
+pub(super) fn identity() -> M4 {
     std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j))))
 }
 
-fn rotation(r: [[f64; 3]; 3], t: [f64; 3]) -> M4 {
+pub(super) fn rotation(r: [[f64; 3]; 3], t: [f64; 3]) -> M4 {
     let mut m = identity();
     for i in 0..3 {
         m[i][..3].copy_from_slice(&r[i]);
@@ -33,7 +33,7 @@ fn rotation(r: [[f64; 3]; 3], t: [f64; 3]) -> M4 {
 }
 
 /// Rotation by `angle` about the unit `axis` (Rodrigues).
-fn rodrigues(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
+pub(super) fn rodrigues(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
     let (s, c) = angle.sin_cos();
     let [x, y, z] = axis;
     let v = 1.0 - c;
@@ -45,7 +45,7 @@ fn rodrigues(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
 }
 
 /// `Trans(xyz) · Rz(yaw) Ry(pitch) Rx(roll)`, each factor by Rodrigues.
-fn placement(xyz: [f64; 3], rpy: [f64; 3]) -> M4 {
+pub(super) fn placement(xyz: [f64; 3], rpy: [f64; 3]) -> M4 {
     let r = |k: usize| {
         rotation(
             rodrigues(std::array::from_fn(|i| f64::from(u8::from(i == k))), rpy[k]),
@@ -58,7 +58,7 @@ fn placement(xyz: [f64; 3], rpy: [f64; 3]) -> M4 {
     )
 }
 
-fn pose_matrix(p: &Pose) -> M4 {
+pub(super) fn pose_matrix(p: &Pose) -> M4 {
     rotation(
         p.rotation.clone().map(|row| row.map(|v| num(&v))),
         p.translation.clone().map(|v| num(&v)),
@@ -66,7 +66,7 @@ fn pose_matrix(p: &Pose) -> M4 {
 }
 
 /// Modified D-H: `Rotx(α) Transx(a) Rotz(θ) Transz(d)`.
-fn modified_dh(alpha: f64, a: f64, theta: f64, d: f64) -> M4 {
+pub(super) fn modified_dh(alpha: f64, a: f64, theta: f64, d: f64) -> M4 {
     let (sa, ca) = alpha.sin_cos();
     let (st, ct) = theta.sin_cos();
     [
@@ -115,7 +115,7 @@ fn random_length(rng: &mut Rng) -> Value {
     }
 }
 
-fn random_joint(rng: &mut Rng) -> Joint {
+pub(super) fn random_joint(rng: &mut Rng) -> Joint {
     let diagonal = rng.vector(3, 0.5, 1.0);
     let off = rng.vector(3, -0.1, 0.1);
     Joint {
@@ -154,7 +154,7 @@ fn random_joint(rng: &mut Rng) -> Joint {
     }
 }
 
-fn random_robot(rng: &mut Rng) -> Robot {
+pub(super) fn random_robot(rng: &mut Rng) -> Robot {
     Robot {
         name: "random".into(),
         convention: Convention::Standard,
@@ -166,7 +166,7 @@ fn random_robot(rng: &mut Rng) -> Robot {
 }
 
 /// The user's link frames at `q`, by the plain product.
-fn user_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
+pub(super) fn user_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
     let mut pose = identity();
     robot
         .joints
@@ -194,7 +194,7 @@ fn user_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
 }
 
 /// D-H frames at `q`, from the lowered table.
-fn dh_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
+pub(super) fn dh_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
     assert_eq!(robot.convention, Convention::Modified);
     let mut pose = pose_matrix(&robot.base);
     robot
@@ -212,7 +212,7 @@ fn dh_frames(robot: &Robot, q: &[f64]) -> Vec<M4> {
         .collect()
 }
 
-fn close(a: &M4, b: &M4, what: &str) {
+pub(super) fn close(a: &M4, b: &M4, what: &str) {
     for i in 0..4 {
         for j in 0..4 {
             assert!((a[i][j] - b[i][j]).abs() < 1e-9, "{what}: {a:?} vs {b:?}");

@@ -21,7 +21,16 @@ fn two_links(joint: &str, inertial: &str) -> String {
 const INERTIAL: &str = r#"<inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>"#;
 
 fn errors(text: &str, tip: Option<&str>) -> Vec<FileError> {
-    match load_urdf("r.urdf", text, Chain { base: None, tip }, true) {
+    match load_urdf(
+        "r.urdf",
+        text,
+        Chain {
+            base: None,
+            tip,
+            tips: &[],
+        },
+        true,
+    ) {
         Ok(_) => panic!("no error for\n{text}"),
         Err(e) => e,
     }
@@ -131,37 +140,74 @@ fn each_mistake_at_its_place() {
 }
 
 #[test]
-fn a_moving_branch_before_the_tip_is_refused() {
+fn a_moving_branch_before_the_tip_is_refused_and_without_a_tip_makes_a_tree() {
     let branch = format!(
         "{}<link name=\"c\"/><joint name=\"side\" type=\"prismatic\"><parent link=\"a\"/><child link=\"c\"/></joint>",
         joint("revolute", "")
     );
     let text = two_links(&branch, INERTIAL);
-    // Without a tip the robot branches at `a`; with tip `b`, the joint `side` is a branch.
-    let (line, _, message) = first(&text, None);
-    assert_eq!(line, 3);
-    assert!(
-        message.contains("branches at link `a` (joints `j1` and `side`)"),
-        "{message}"
-    );
+    // With tip `b`, the joint `side` is a branch.
     let (line, column, message) = first(&text, Some("b"));
     assert_eq!((line, column), (4, 93));
     assert!(
         message.contains("`<joint name=\"side\">` branches off the chain at link `a`"),
         "{message}"
     );
-    // With tip `a`, both are below the tip and cut off.
-    let loaded = load_urdf(
-        "r.urdf",
-        &text,
-        Chain {
+    let load = |tip, tips| {
+        let chain = Chain {
             base: None,
-            tip: Some("a"),
-        },
-        true,
-    )
-    .expect("loads");
-    assert_eq!(loaded.robot.dof(), 1);
+            tip,
+            tips,
+        };
+        load_urdf("r.urdf", &text, chain, true)
+            .expect("loads")
+            .robot
+    };
+    // With tip `a`, both are below the tip and cut off.
+    assert_eq!(load(Some("a"), &[]).dof(), 1);
+    // Without a tip, a tree: `j0` (written last) from the ground, `j1` and `side` from `a`, in
+    // the file's order; so with both tips.
+    for tips in [&[][..], &["b", "c"]] {
+        let tree = load(None, tips);
+        let parents: Vec<_> = (0..3).map(|i| tree.parent(i)).collect();
+        assert_eq!(parents, [None, Some(0), Some(0)], "{tips:?}");
+        assert!(tree.is_tree());
+    }
+    // The branch to `c` alone: a chain, `j1` cut off.
+    let chain = load(None, &["c"]);
+    assert_eq!(chain.dof(), 2);
+    assert!(chain.joints.iter().all(|j| j.branch.is_none()));
+    assert_eq!(chain.joints[1].kind, crate::model::JointKind::Prismatic);
+}
+
+#[test]
+fn tips_unknown_or_not_below_the_base_or_beside_a_tip_are_refused() {
+    let text = two_links(&joint("revolute", ""), INERTIAL);
+    let refused = |base, tip, tips| {
+        let chain = Chain { base, tip, tips };
+        let e = load_urdf("r.urdf", &text, chain, true)
+            .err()
+            .expect("an error");
+        (e[0].line, e[0].column, e[0].message.clone())
+    };
+    let (line, _, message) = refused(None, None, &["b", "hand"]);
+    assert_eq!(line, Some(1));
+    assert!(
+        message.starts_with("no link `hand` for `tips`: the links are"),
+        "{message}"
+    );
+    let (line, column, message) = refused(Some("b"), None, &["a"]);
+    assert_eq!((line, column), (Some(3), Some(1)));
+    assert_eq!(
+        message,
+        "`tips`: the link `a` is not below the base link `b`"
+    );
+    let (line, _, message) = refused(None, Some("b"), &["b"]);
+    assert_eq!(line, Some(1));
+    assert!(
+        message.starts_with("`tip` and `tips` are both given"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -173,6 +219,7 @@ fn a_tip_above_the_base_is_refused() {
         Chain {
             base: Some("b"),
             tip: Some("a"),
+            tips: &[],
         },
         true,
     )

@@ -20,6 +20,7 @@ fn the_pandas_limits_are_franka_s() {
     let chain = Chain {
         base: Some("panda_link0"),
         tip: Some("panda_hand"),
+        tips: &[],
     };
     let limits = joint_limits(PANDA, chain).expect("the Panda reads");
     let want = [

@@ -14,7 +14,16 @@ const Z1: &str = include_str!("../../../../../robots/urdf/z1.urdf");
 const SO101: &str = include_str!("../../../../../robots/urdf/so101.urdf");
 
 fn load(text: &str, base: Option<&str>, tip: Option<&str>) -> Result<Loaded, Vec<FileError>> {
-    load_urdf("robot.urdf", text, Chain { base, tip }, true)
+    load_urdf(
+        "robot.urdf",
+        text,
+        Chain {
+            base,
+            tip,
+            tips: &[],
+        },
+        true,
+    )
 }
 
 fn robot(text: &str, tip: Option<&str>) -> Robot {

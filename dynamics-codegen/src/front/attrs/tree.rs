@@ -1,0 +1,229 @@
+//! Trees in the attribute: a joint's antecedent, `parent = 2` or `parent = "palm"` in
+//! `joints = [revolute(..), ..]` (0 is the base; joints may have a `name`), and the antecedent
+//! column of a modified D-H table, `[θ, d, a, α, antecedent, γ, b]`. A parent must come
+//! earlier (so the joints make no cycle); each mistake is an error on its token.
+
+use crate::model::{Branch, Joint, Value};
+use proc_macro2::Span;
+use std::collections::BTreeMap;
+use syn::parse::ParseStream;
+
+/// A joint's `parent`: an earlier joint's 1-based number (0: the base) or name, with its span.
+pub(super) enum ParentAttr {
+    Number(u64, Span),
+    Name(String, Span),
+}
+
+impl ParentAttr {
+    pub(super) fn span(&self) -> Span {
+        match self {
+            ParentAttr::Number(_, span) | ParentAttr::Name(_, span) => *span,
+        }
+    }
+}
+
+/// `parent = 2` or `parent = "palm"`.
+pub(super) fn parse_parent(input: ParseStream) -> syn::Result<ParentAttr> {
+    match input.parse::<syn::Lit>() {
+        Ok(syn::Lit::Int(n)) => Ok(ParentAttr::Number(n.base10_parse()?, n.span())),
+        Ok(syn::Lit::Str(s)) => Ok(ParentAttr::Name(s.value(), s.span())),
+        Ok(other) => Err(syn::Error::new(other.span(), PARENT_USAGE)),
+        Err(e) => Err(syn::Error::new(e.span(), PARENT_USAGE)),
+    }
+}
+
+const PARENT_USAGE: &str = "expected an earlier joint's number or name: `parent = 1` (the \
+     first joint), `parent = \"palm\"`, or `parent = 0` (the base)";
+
+/// Joint `n`'s (1-based) antecedent from its parent: an earlier joint (0-based), or `None` for
+/// the base; `count` joints, `names` their names. Messages call the joints `joint`, or `row`
+/// in a D-H table (`rows`), and the parent its antecedent there.
+pub(super) fn antecedent(
+    n: usize,
+    parent: &ParentAttr,
+    count: usize,
+    names: &BTreeMap<String, usize>,
+    rows: bool,
+) -> Result<Option<usize>, String> {
+    antecedent_of(n, parent, count, names).map_err(|message| {
+        if rows {
+            message
+                .replace("parent joint", "antecedent row")
+                .replace("a parent", "an antecedent")
+                .replace("parent", "antecedent")
+                .replace("joint", "row")
+                .replace("are given", "rows")
+        } else {
+            message
+        }
+    })
+}
+
+fn antecedent_of(
+    n: usize,
+    parent: &ParentAttr,
+    count: usize,
+    names: &BTreeMap<String, usize>,
+) -> Result<Option<usize>, String> {
+    let (index, said) = match parent {
+        ParentAttr::Number(0, _) => return Ok(None),
+        ParentAttr::Number(k, _) => {
+            let k = usize::try_from(*k).unwrap_or(usize::MAX);
+            if k > count {
+                return Err(format!(
+                    "joint {n}: parent {k}: there is no joint {k} ({count} are given; 0 is the base)"
+                ));
+            }
+            (k - 1, format!("joint {k}"))
+        }
+        ParentAttr::Name(name, _) => match names.get(name) {
+            Some(&k) => (k, format!("`{name}` (joint {})", k + 1)),
+            None => {
+                let known: Vec<String> = names.keys().map(|n| format!("`{n}`")).collect();
+                let known = if known.is_empty() {
+                    "no joint has a `name`".to_string()
+                } else {
+                    format!("the joints named are {}", known.join(", "))
+                };
+                return Err(format!(
+                    "joint {n}: parent `{name}`: no joint has that name ({known})"
+                ));
+            }
+        },
+    };
+    match (index + 1).cmp(&n) {
+        std::cmp::Ordering::Less => Ok(Some(index)),
+        std::cmp::Ordering::Equal => Err(format!(
+            "joint {n}: parent {said}: a joint cannot hang from itself (a cycle)"
+        )),
+        std::cmp::Ordering::Greater => Err(format!(
+            "joint {n}: parent {said} comes after it: declare a parent before its children (a \
+             later one could close a cycle)"
+        )),
+    }
+}
+
+/// The joints' branches made whole: where some joint has one, every other hangs from the joint
+/// before; where they make a chain (each joint's antecedent the one before, γ = b = 0), none.
+pub(super) fn settle(joints: &mut [Joint]) {
+    if joints.iter().all(|j| j.branch.is_none()) {
+        return;
+    }
+    for (i, joint) in joints.iter_mut().enumerate() {
+        joint.branch.get_or_insert_with(|| Branch {
+            parent: i.checked_sub(1),
+            gamma: Value::zero(),
+            b: Value::zero(),
+        });
+    }
+    let serial = joints.iter().enumerate().all(|(i, j)| {
+        j.branch
+            .as_ref()
+            .is_some_and(|b| b.parent == i.checked_sub(1) && b.gamma.is_zero() && b.b.is_zero())
+    });
+    if serial {
+        for joint in joints {
+            joint.branch = None;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::front::parse_str;
+    use crate::model::Robot;
+
+    const LINKS: &str = "link(mass = 1), link(mass = 1), link(mass = 1)";
+
+    fn robot(keys: &str) -> Robot {
+        let text = format!(
+            "#[derive(Dynamics)] #[dynamics(gravity = [0, 0, -9.81], {keys}, {LINKS})] struct Arm;"
+        );
+        parse_str(&text).unwrap_or_else(|e| panic!("{e}")).robot
+    }
+
+    fn error(keys: &str) -> String {
+        let text =
+            format!("#[derive(Dynamics)] #[dynamics(gravity = [0, 0, -9.81], {keys})] struct Arm;");
+        parse_str(&text).err().expect("an error").to_string()
+    }
+
+    fn parents(robot: &Robot) -> Vec<Option<usize>> {
+        (0..robot.dof()).map(|i| robot.parent(i)).collect()
+    }
+
+    /// `model::lower`'s hand-lowered tree: joint 3 at height 1/2 on joint 1, about y.
+    #[test]
+    fn joints_with_parents_by_name_and_number() {
+        let tree = robot(
+            r#"joints = [revolute(name = "palm"), revolute(parent = "palm", xyz = [1, 0, 0]),
+               revolute(parent = 1, xyz = [0, 0, 0.5], axis = [0, 1, 0])]"#,
+        );
+        assert_eq!(parents(&tree), [None, Some(0), Some(0)]);
+        let branch = tree.joints[2].branch.as_ref().unwrap();
+        assert_eq!(branch.b.to_string(), "1/2");
+        assert_eq!(tree.joints[2].alpha.to_string(), "-1/2 * pi");
+        let chain = robot("joints = [revolute(parent = 0), revolute(parent = 1), revolute()]");
+        assert!(chain.joints.iter().all(|j| j.branch.is_none()));
+    }
+
+    #[test]
+    fn modified_rows_with_an_antecedent_column() {
+        let robot = robot(
+            "convention = modified, dh = [[q, 0, 0.1, 0], [0, q, 0, 90 deg], \
+             [q, 0, 0.3, 0, 1, -90 deg, 0.25]]",
+        );
+        assert_eq!(parents(&robot), [None, Some(0), Some(0)]);
+        let branch = robot.joints[2].branch.as_ref().unwrap();
+        let quarter = crate::symbolic::Number::ratio(-1, 2);
+        assert_eq!(branch.gamma.pi_multiple(), quarter);
+        assert_eq!(branch.b.to_string(), "1/4");
+    }
+
+    #[test]
+    fn mistakes_in_a_tree_are_errors() {
+        let joints = |third: &str| {
+            format!("joints = [revolute(name = \"a\"), revolute(), {third}], {LINKS}")
+        };
+        let cases = [
+            (joints("revolute(parent = 4)"), "joint 3: parent 4: there is no joint 4 (3 are given; 0 is the base)"),
+            (joints("revolute(parent = 3)"), "joint 3: parent joint 3: a joint cannot hang from itself (a cycle)"),
+            (format!("joints = [revolute(parent = 2), revolute(), revolute()], {LINKS}"), "joint 1: parent joint 2 comes after it"),
+            (joints("revolute(parent = \"b\")"), "joint 3: parent `b`: no joint has that name (the joints named are `a`)"),
+            (joints("revolute(name = \"a\")"), "joint 1 is named `a` too"),
+            (joints("revolute(parent = 1.5)"), "expected an earlier joint's number or name"),
+            (format!("dh = [[q, 0, 0, 0], [q, 0, 0, 0, 1, 0, 0.5], [q, 0, 0, 0]], {LINKS}"), "a standard D-H table has no antecedent column"),
+            (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, 2, 0, 0], [q, 0, 0, 0]], {LINKS}"), "row 2: antecedent row 2: a row cannot hang from itself"),
+            (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, l, 0, 0], [q, 0, 0, 0]], {LINKS}"), "row 2: the antecedent is an earlier row's number"),
+            (format!("convention = modified, dh = [[q, 0, 0, 0], [q, 0, 0, 0, 1, 0], [q, 0, 0, 0]], {LINKS}"), "takes 4 values, found 6"),
+            ("file = \"robots/ur5.toml\", tips = [\"a\"]".into(), "`tips` names links of a URDF file"),
+            ("urdf = \"../robots/urdf/ur5.urdf\", tip = \"tool0\", tips = [\"tool0\"]".into(), "`tips` cannot be combined with `tip`"),
+            ("urdf = \"../robots/urdf/ur5.urdf\", tips = []".into(), "`tips` is empty"),
+            ("urdf = \"../robots/urdf/ur5.urdf\", tips = [\"hand\"]".into(), "no link `hand` for `tips`"),
+        ];
+        for (keys, message) in cases {
+            let e = error(&keys);
+            assert!(e.contains(message), "{keys}\n{e}");
+        }
+    }
+
+    #[test]
+    fn urdf_tips_in_the_derive() {
+        let text = r#"#[derive(Dynamics)]
+            #[dynamics(urdf = "../robots/urdf/trees/allegro_right_hand.urdf", check_inertia = false,
+                       tips = ["link_3.0_tip", "link_15.0_tip"])]
+            struct Hand;"#;
+        let robot = parse_str(text).unwrap_or_else(|e| panic!("{e}")).robot;
+        let roots = [
+            None,
+            Some(0),
+            Some(1),
+            Some(2),
+            None,
+            Some(4),
+            Some(5),
+            Some(6),
+        ];
+        assert_eq!(parents(&robot), roots);
+    }
+}

@@ -1,0 +1,268 @@
+//! Trees in a description file: each joint's `parent` (an earlier joint's 1-based number, 0
+//! for the base, or its `name`; by default the joint before) and, in a modified D-H table,
+//! Khalil-Kleinfinger's `gamma` and `b`. Each mistake is deferred to its joint's key.
+
+use super::schema::{Deferred, FileJoint};
+use crate::model::{snap_angle, Branch, Convention, Value};
+use std::collections::BTreeMap;
+
+/// A joint's `parent`: a number or a name, as written.
+pub(super) enum FileParent {
+    Number(u64),
+    Name(String),
+}
+
+impl<'de> serde::Deserialize<'de> for FileParent {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(ParentVisitor)
+    }
+}
+
+struct ParentVisitor;
+
+impl serde::de::Visitor<'_> for ParentVisitor {
+    type Value = FileParent;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("an earlier joint's number (1 for the first, 0 for the base) or name")
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileParent, E> {
+        Ok(FileParent::Number(x))
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileParent, E> {
+        u64::try_from(x).map(FileParent::Number).map_err(|_| {
+            E::custom(format!(
+                "parent {x}: name an earlier joint by its number (1 for the first) or name, or \
+                 the base by 0"
+            ))
+        })
+    }
+
+    fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<FileParent, E> {
+        Ok(FileParent::Name(name.to_string()))
+    }
+}
+
+/// Whether some joint gives `name`, `parent`, `gamma` or `b`.
+fn given(joints: &[FileJoint]) -> bool {
+    joints
+        .iter()
+        .any(|j| j.name.is_some() || j.parent.is_some() || j.gamma.is_some() || j.b.is_some())
+}
+
+/// Per joint, its branch: `None` everywhere for a chain (no joint names another antecedent
+/// than the one before, and γ = b = 0), with every problem deferred.
+pub(super) fn branches(
+    joints: &[FileJoint],
+    convention: Convention,
+    frames_given: bool,
+    deferred: &mut Vec<Deferred>,
+) -> Vec<Option<Branch>> {
+    if !given(joints) {
+        return vec![None; joints.len()];
+    }
+    let names = names(joints, deferred);
+    let mut branches = Vec::with_capacity(joints.len());
+    for (i, j) in joints.iter().enumerate() {
+        let parent = match &j.parent {
+            None => i.checked_sub(1),
+            Some(parent) => resolve(i, parent, joints.len(), &names).unwrap_or_else(|message| {
+                deferred.push((i, "parent", message));
+                i.checked_sub(1)
+            }),
+        };
+        if convention == Convention::Standard && !frames_given && j.parent.is_some() {
+            deferred.push((i, "parent", "a standard D-H table has no antecedent column: trees are given in the modified convention (Khalil-Kleinfinger); add `convention = \"modified\"` and write the rows in it".into()));
+        }
+        for (key, v) in [("gamma", &j.gamma), ("b", &j.b)] {
+            if v.is_none() {
+                continue;
+            }
+            if frames_given {
+                deferred.push((i, key, format!("`{key}` is a D-H parameter of a tree (Khalil-Kleinfinger); a joint given by `origin` and `axis` has it derived: remove it")));
+            } else if convention == Convention::Standard {
+                deferred.push((i, key, format!("`{key}` is Khalil-Kleinfinger's, of the modified convention: add `convention = \"modified\"` and write the rows in it")));
+            }
+        }
+        let value = |v: &Option<super::schema::FileValue>| {
+            v.as_ref().map_or_else(Value::zero, |v| v.0.clone())
+        };
+        branches.push(Branch {
+            parent,
+            gamma: snap_angle(&value(&j.gamma)),
+            b: value(&j.b),
+        });
+    }
+    let serial = branches
+        .iter()
+        .enumerate()
+        .all(|(i, b)| b.parent == i.checked_sub(1) && b.gamma.is_zero() && b.b.is_zero());
+    if serial {
+        vec![None; joints.len()]
+    } else {
+        branches.into_iter().map(Some).collect()
+    }
+}
+
+/// Each joint's index by name; a name given twice is an error at the second.
+fn names<'a>(joints: &'a [FileJoint], deferred: &mut Vec<Deferred>) -> BTreeMap<&'a str, usize> {
+    let mut names = BTreeMap::new();
+    for (i, j) in joints.iter().enumerate() {
+        if let Some(name) = &j.name {
+            if let Some(first) = names.insert(name.as_str(), i) {
+                names.insert(name.as_str(), first);
+                deferred.push((
+                    i,
+                    "name",
+                    format!(
+                        "joint {} is named `{name}` too: give each joint its own name",
+                        first + 1
+                    ),
+                ));
+            }
+        }
+    }
+    names
+}
+
+/// Joint `i`'s antecedent from its `parent`: an earlier joint, or `None` for the base.
+fn resolve(
+    i: usize,
+    parent: &FileParent,
+    count: usize,
+    names: &BTreeMap<&str, usize>,
+) -> Result<Option<usize>, String> {
+    let (index, said) = match parent {
+        FileParent::Number(0) => return Ok(None),
+        FileParent::Number(n) => {
+            let n = usize::try_from(*n).unwrap_or(usize::MAX);
+            if n > count {
+                return Err(format!(
+                    "parent {n}: there is no joint {n} (the file has {count}; 0 is the base)"
+                ));
+            }
+            (n - 1, format!("joint {n}"))
+        }
+        FileParent::Name(name) => match names.get(name.as_str()) {
+            Some(&k) => (k, format!("`{name}` (joint {})", k + 1)),
+            None => {
+                let known: Vec<String> = names.keys().map(|n| format!("`{n}`")).collect();
+                let known = if known.is_empty() {
+                    "no joint has a `name`".to_string()
+                } else {
+                    format!("the joints named are {}", known.join(", "))
+                };
+                return Err(format!("parent `{name}`: no joint has that name ({known})"));
+            }
+        },
+    };
+    match index.cmp(&i) {
+        std::cmp::Ordering::Less => Ok(Some(index)),
+        std::cmp::Ordering::Equal => Err(format!("parent {said}: a joint cannot hang from itself (a cycle)")),
+        std::cmp::Ordering::Greater => Err(format!("parent {said} comes after this joint: declare a parent before its children (a later one could close a cycle)")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{from_json, from_toml};
+    use crate::model::Robot;
+
+    const LINK: &str = "mass = 1\ninertia = [1, 1, 1, 0, 0, 0]\n";
+
+    fn toml_joints(joints: &[&str]) -> String {
+        let mut text = String::from("gravity = [0, 0, -9.81]\n");
+        for j in joints {
+            text += &format!("[[joints]]\n{j}\n{LINK}");
+        }
+        text
+    }
+
+    fn parents(robot: &Robot) -> Vec<Option<usize>> {
+        (0..robot.dof()).map(|i| robot.parent(i)).collect()
+    }
+
+    /// The tree of `model::lower`'s hand-lowered test: joint 3 hangs from joint 1 at height
+    /// 1/2, about y: b = 1/2, α = −90°.
+    #[test]
+    fn frames_with_parents_by_name_and_number() {
+        let toml = toml_joints(&[
+            "name = \"palm\"\ntype = \"revolute\"\naxis = [0, 0, 1]",
+            "type = \"revolute\"\nparent = \"palm\"\norigin = { xyz = [1, 0, 0] }",
+            "type = \"revolute\"\nparent = 1\norigin = { xyz = [0, 0, 0.5] }\naxis = [0, 1, 0]",
+        ]);
+        let robot = from_toml(&toml, "x").unwrap();
+        assert_eq!(parents(&robot), [None, Some(0), Some(0)]);
+        let third = &robot.joints[2];
+        let branch = third.branch.as_ref().unwrap();
+        assert_eq!(
+            (branch.gamma.to_string(), branch.b.to_string()),
+            ("0".into(), "1/2".into())
+        );
+        assert_eq!(third.alpha.to_string(), "-1/2 * pi");
+        // Parents that make a chain leave it a chain.
+        let chain = toml_joints(&[
+            "type = \"revolute\"\nparent = 0\naxis = [0, 0, 1]",
+            "type = \"revolute\"\nparent = 1\norigin = { xyz = [1, 0, 0] }",
+        ]);
+        let chain = from_toml(&chain, "x").unwrap();
+        assert!(chain.joints.iter().all(|j| j.branch.is_none()));
+    }
+
+    #[test]
+    fn modified_rows_with_an_antecedent_column_in_toml_and_json() {
+        let toml = format!(
+            "convention = \"modified\"\n{}",
+            toml_joints(&[
+                "type = \"revolute\"\na = 0.1",
+                "type = \"prismatic\"\nalpha = \"90 deg\"",
+                "type = \"revolute\"\nparent = 1\ngamma = \"-90 deg\"\nb = 0.25\na = 0.3",
+            ])
+        );
+        let json = r#"{"convention": "modified", "gravity": [0, 0, -9.81], "joints": [
+            {"type": "revolute", "a": 0.1, "mass": 1, "inertia": [1, 1, 1, 0, 0, 0]},
+            {"type": "prismatic", "alpha": "90 deg", "mass": 1, "inertia": [1, 1, 1, 0, 0, 0]},
+            {"type": "revolute", "parent": 1, "gamma": "-90 deg", "b": 0.25, "a": 0.3,
+             "mass": 1, "inertia": [1, 1, 1, 0, 0, 0]}]}"#;
+        for robot in [
+            from_toml(&toml, "x").unwrap(),
+            from_json(json, "x").unwrap(),
+        ] {
+            assert_eq!(parents(&robot), [None, Some(0), Some(0)]);
+            let branch = robot.joints[2].branch.as_ref().unwrap();
+            let quarter = crate::symbolic::Number::ratio(-1, 2);
+            assert_eq!(branch.gamma.pi_multiple(), quarter);
+            assert_eq!(branch.b.to_string(), "1/4");
+            assert_eq!(robot.joints[2].a.to_string(), "3/10");
+        }
+    }
+
+    /// Each mistake at its key's line (`at`, the key's line written).
+    #[test]
+    fn mistakes_in_a_tree_are_placed() {
+        let frame = "type = \"revolute\"\naxis = [0, 0, 1]";
+        let row = "type = \"revolute\"";
+        let named = "name = \"a\"\ntype = \"revolute\"";
+        let cases: [(String, &str, &str); 9] = [
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 3", frame]), "parent = 3", "joint 2: parent joint 3 comes after this joint"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 2"]), "parent = 2", "a joint cannot hang from itself (a cycle)"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 7"]), "parent = 7", "there is no joint 7 (the file has 2; 0 is the base)"),
+            (toml_joints(&[named, "type = \"revolute\"\nparent = \"b\""]), "parent = \"b\"", "parent `b`: no joint has that name (the joints named are `a`)"),
+            (toml_joints(&[row, named, named]), "name = \"a\"\ntype = \"revolute\"\nmass = 1\ninertia = [1, 1, 1, 0, 0, 0]\n[[joints]]\nname", "joint 3: joint 2 is named `a` too"),
+            (toml_joints(&[row, "type = \"revolute\"\nparent = 0"]), "parent = 0", "a standard D-H table has no antecedent column"),
+            (toml_joints(&[row, "type = \"revolute\"\ngamma = 0.5"]), "gamma", "`gamma` is Khalil-Kleinfinger's, of the modified convention"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 1\nb = 0.5"]), "b = 0.5", "`b` is a D-H parameter of a tree (Khalil-Kleinfinger); a joint given by `origin` and `axis` has it derived"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = -1"]), "parent = -1", "parent -1: name an earlier joint"),
+        ];
+        for (text, at, message) in cases {
+            let e = from_toml(&text, "x").expect_err(&text);
+            // The line of the last line of `at` (a repeated key is the later one).
+            let offset = text.rfind(at).unwrap() + at.rfind('\n').map_or(0, |k| k + 1);
+            let line = text[..offset].matches('\n').count() + 1;
+            assert_eq!(e.line, Some(line), "{e}\n{text}");
+            assert!(e.message.contains(message), "{e}\n{text}");
+        }
+    }
+}

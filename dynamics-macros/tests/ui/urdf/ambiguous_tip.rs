@@ -1,8 +1,0 @@
-use dynamics_runtime::Dynamics;
-
-// The path is relative to this file: trybuild's crate, inside `target/`, has no such file.
-#[derive(Dynamics)]
-#[dynamics(urdf = "branch.urdf")]
-struct Arm;
-
-fn main() {}
