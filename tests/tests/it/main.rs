@@ -30,4 +30,5 @@ mod regressor;
 mod simplified;
 mod trees;
 mod urdf_robots;
+mod urdf_trees;
 mod urdf_twins;
