@@ -29,6 +29,9 @@ fn root() -> PathBuf {
 /// The scratch directory the runs work in (files they write land there).
 fn scratch() -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_fuzz");
+    // Emptied first: a file an earlier run wrote (`--csv NaN`) must not become the input of
+    // this run's case in the same numbered folder (`--batch NaN`).
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("scratch dir");
     dir
 }
