@@ -43,6 +43,7 @@ mod errors;
 mod fields;
 mod file;
 mod named_file;
+mod parent;
 mod simplify;
 mod sources;
 mod urdf;

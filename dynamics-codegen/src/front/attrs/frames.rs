@@ -40,6 +40,7 @@ pub(super) fn joints(
         );
     }
     let names = names(joints, reader);
+    let names: BTreeMap<&str, usize> = names.iter().map(|(k, &i)| (k.as_str(), i)).collect();
     let mut model: Vec<Joint> = joints
         .iter()
         .enumerate()

@@ -3,6 +3,7 @@
 //! column of a modified D-H table, `[θ, d, a, α, antecedent, γ, b]`. A parent must come
 //! earlier (so the joints make no cycle); each mistake is an error on its token.
 
+use crate::front::parent::{resolve, ParentRef};
 use crate::model::{Branch, Joint, Value};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
@@ -42,10 +43,15 @@ pub(super) fn antecedent(
     n: usize,
     parent: &ParentAttr,
     count: usize,
-    names: &BTreeMap<String, usize>,
+    names: &BTreeMap<&str, usize>,
     rows: bool,
 ) -> Result<Option<usize>, String> {
-    antecedent_of(n, parent, count, names).map_err(|message| {
+    let written = match parent {
+        ParentAttr::Number(k, _) => ParentRef::Number(*k),
+        ParentAttr::Name(name, _) => ParentRef::Name(name),
+    };
+    resolve(n - 1, written, count, names).map_err(|message| {
+        let message = format!("joint {n}: {message}");
         if rows {
             message
                 .replace("parent joint", "antecedent row")
@@ -57,50 +63,6 @@ pub(super) fn antecedent(
             message
         }
     })
-}
-
-fn antecedent_of(
-    n: usize,
-    parent: &ParentAttr,
-    count: usize,
-    names: &BTreeMap<String, usize>,
-) -> Result<Option<usize>, String> {
-    let (index, said) = match parent {
-        ParentAttr::Number(0, _) => return Ok(None),
-        ParentAttr::Number(k, _) => {
-            let k = usize::try_from(*k).unwrap_or(usize::MAX);
-            if k > count {
-                return Err(format!(
-                    "joint {n}: parent {k}: there is no joint {k} ({count} are given; 0 is the base)"
-                ));
-            }
-            (k - 1, format!("joint {k}"))
-        }
-        ParentAttr::Name(name, _) => match names.get(name) {
-            Some(&k) => (k, format!("`{name}` (joint {})", k + 1)),
-            None => {
-                let known: Vec<String> = names.keys().map(|n| format!("`{n}`")).collect();
-                let known = if known.is_empty() {
-                    "no joint has a `name`".to_string()
-                } else {
-                    format!("the joints named are {}", known.join(", "))
-                };
-                return Err(format!(
-                    "joint {n}: parent `{name}`: no joint has that name ({known})"
-                ));
-            }
-        },
-    };
-    match (index + 1).cmp(&n) {
-        std::cmp::Ordering::Less => Ok(Some(index)),
-        std::cmp::Ordering::Equal => Err(format!(
-            "joint {n}: parent {said}: a joint cannot hang from itself (a cycle)"
-        )),
-        std::cmp::Ordering::Greater => Err(format!(
-            "joint {n}: parent {said} comes after it: declare a parent before its children (a \
-             later one could close a cycle)"
-        )),
-    }
 }
 
 /// The joints' branches made whole: where some joint has one, every other hangs from the joint

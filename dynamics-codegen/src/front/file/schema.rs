@@ -127,7 +127,7 @@ pub(super) struct FileJoint {
     /// The antecedent, in a tree: an earlier joint's 1-based number (0: the base) or name;
     /// default: the joint before.
     #[serde(default)]
-    pub(super) parent: Option<super::tree::FileParent>,
+    pub(super) parent: Option<FileParent>,
     /// Khalil-Kleinfinger's γ and b (modified D-H rows only): the turn about and offset along
     /// the antecedent's z onto the common normal to this joint's axis.
     #[serde(default)]
@@ -187,4 +187,43 @@ pub(super) struct FileOrigin {
     pub(super) xyz: Option<[FileValue; 3]>,
     #[serde(default)]
     pub(super) rpy: Option<[FileValue; 3]>,
+}
+
+/// A joint's `parent`: a number or a name, as written.
+pub(super) enum FileParent {
+    Number(u64),
+    Name(String),
+}
+
+impl<'de> serde::Deserialize<'de> for FileParent {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        deserializer.deserialize_any(ParentVisitor)
+    }
+}
+
+struct ParentVisitor;
+
+impl serde::de::Visitor<'_> for ParentVisitor {
+    type Value = FileParent;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("an earlier joint's number (1 for the first, 0 for the base) or name")
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileParent, E> {
+        Ok(FileParent::Number(x))
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileParent, E> {
+        u64::try_from(x).map(FileParent::Number).map_err(|_| {
+            E::custom(format!(
+                "parent {x}: name an earlier joint by its number (1 for the first) or name, or \
+                 the base by 0"
+            ))
+        })
+    }
+
+    fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<FileParent, E> {
+        Ok(FileParent::Name(name.to_string()))
+    }
 }

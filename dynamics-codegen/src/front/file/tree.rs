@@ -2,46 +2,17 @@
 //! for the base, or its `name`; by default the joint before) and, in a modified D-H table,
 //! Khalil-Kleinfinger's `gamma` and `b`. Each mistake is deferred to its joint's key.
 
-use super::schema::{Deferred, FileJoint};
+use super::schema::{Deferred, FileJoint, FileParent};
+use crate::front::parent::{resolve, ParentRef};
 use crate::model::{snap_angle, Branch, Convention, Value};
 use std::collections::BTreeMap;
 
-/// A joint's `parent`: a number or a name, as written.
-pub(super) enum FileParent {
-    Number(u64),
-    Name(String),
-}
-
-impl<'de> serde::Deserialize<'de> for FileParent {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        deserializer.deserialize_any(ParentVisitor)
-    }
-}
-
-struct ParentVisitor;
-
-impl serde::de::Visitor<'_> for ParentVisitor {
-    type Value = FileParent;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.write_str("an earlier joint's number (1 for the first, 0 for the base) or name")
-    }
-
-    fn visit_u64<E: serde::de::Error>(self, x: u64) -> Result<FileParent, E> {
-        Ok(FileParent::Number(x))
-    }
-
-    fn visit_i64<E: serde::de::Error>(self, x: i64) -> Result<FileParent, E> {
-        u64::try_from(x).map(FileParent::Number).map_err(|_| {
-            E::custom(format!(
-                "parent {x}: name an earlier joint by its number (1 for the first) or name, or \
-                 the base by 0"
-            ))
-        })
-    }
-
-    fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<FileParent, E> {
-        Ok(FileParent::Name(name.to_string()))
+impl FileParent {
+    fn as_ref(&self) -> ParentRef<'_> {
+        match self {
+            FileParent::Number(n) => ParentRef::Number(*n),
+            FileParent::Name(name) => ParentRef::Name(name),
+        }
     }
 }
 
@@ -68,10 +39,12 @@ pub(super) fn branches(
     for (i, j) in joints.iter().enumerate() {
         let parent = match &j.parent {
             None => i.checked_sub(1),
-            Some(parent) => resolve(i, parent, joints.len(), &names).unwrap_or_else(|message| {
-                deferred.push((i, "parent", message));
-                i.checked_sub(1)
-            }),
+            Some(parent) => {
+                resolve(i, parent.as_ref(), joints.len(), &names).unwrap_or_else(|message| {
+                    deferred.push((i, "parent", message));
+                    i.checked_sub(1)
+                })
+            }
         };
         if convention == Convention::Standard && !frames_given && j.parent.is_some() {
             deferred.push((i, "parent", "a standard D-H table has no antecedent column: trees are given in the modified convention (Khalil-Kleinfinger); add `convention = \"modified\"` and write the rows in it".into()));
@@ -125,44 +98,6 @@ fn names<'a>(joints: &'a [FileJoint], deferred: &mut Vec<Deferred>) -> BTreeMap<
         }
     }
     names
-}
-
-/// Joint `i`'s antecedent from its `parent`: an earlier joint, or `None` for the base.
-fn resolve(
-    i: usize,
-    parent: &FileParent,
-    count: usize,
-    names: &BTreeMap<&str, usize>,
-) -> Result<Option<usize>, String> {
-    let (index, said) = match parent {
-        FileParent::Number(0) => return Ok(None),
-        FileParent::Number(n) => {
-            let n = usize::try_from(*n).unwrap_or(usize::MAX);
-            if n > count {
-                return Err(format!(
-                    "parent {n}: there is no joint {n} (the file has {count}; 0 is the base)"
-                ));
-            }
-            (n - 1, format!("joint {n}"))
-        }
-        FileParent::Name(name) => match names.get(name.as_str()) {
-            Some(&k) => (k, format!("`{name}` (joint {})", k + 1)),
-            None => {
-                let known: Vec<String> = names.keys().map(|n| format!("`{n}`")).collect();
-                let known = if known.is_empty() {
-                    "no joint has a `name`".to_string()
-                } else {
-                    format!("the joints named are {}", known.join(", "))
-                };
-                return Err(format!("parent `{name}`: no joint has that name ({known})"));
-            }
-        },
-    };
-    match index.cmp(&i) {
-        std::cmp::Ordering::Less => Ok(Some(index)),
-        std::cmp::Ordering::Equal => Err(format!("parent {said}: a joint cannot hang from itself (a cycle)")),
-        std::cmp::Ordering::Greater => Err(format!("parent {said} comes after this joint: declare a parent before its children (a later one could close a cycle)")),
-    }
 }
 
 #[cfg(test)]
@@ -246,9 +181,9 @@ mod tests {
         let row = "type = \"revolute\"";
         let named = "name = \"a\"\ntype = \"revolute\"";
         let cases: [(String, &str, &str); 9] = [
-            (toml_joints(&[frame, "type = \"revolute\"\nparent = 3", frame]), "parent = 3", "joint 2: parent joint 3 comes after this joint"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 3", frame]), "parent = 3", "joint 2: parent joint 3 comes after it"),
             (toml_joints(&[frame, "type = \"revolute\"\nparent = 2"]), "parent = 2", "a joint cannot hang from itself (a cycle)"),
-            (toml_joints(&[frame, "type = \"revolute\"\nparent = 7"]), "parent = 7", "there is no joint 7 (the file has 2; 0 is the base)"),
+            (toml_joints(&[frame, "type = \"revolute\"\nparent = 7"]), "parent = 7", "there is no joint 7 (2 are given; 0 is the base)"),
             (toml_joints(&[named, "type = \"revolute\"\nparent = \"b\""]), "parent = \"b\"", "parent `b`: no joint has that name (the joints named are `a`)"),
             (toml_joints(&[row, named, named]), "name = \"a\"\ntype = \"revolute\"\nmass = 1\ninertia = [1, 1, 1, 0, 0, 0]\n[[joints]]\nname", "joint 3: joint 2 is named `a` too"),
             (toml_joints(&[row, "type = \"revolute\"\nparent = 0"]), "parent = 0", "a standard D-H table has no antecedent column"),
