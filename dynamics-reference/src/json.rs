@@ -214,6 +214,21 @@ impl From<Robot> for RawRobot {
     }
 }
 
+// By hand rather than `#[serde(try_from, into)]` on `Robot`, which would make `robot.rs` name
+// this module's types while this module builds the robot's.
+impl Serialize for Robot {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        RawRobot::from(self.clone()).serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for Robot {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Robot, D::Error> {
+        let raw = RawRobot::deserialize(deserializer)?;
+        Robot::try_from(raw).map_err(serde::de::Error::custom)
+    }
+}
+
 impl Robot {
     /// Checks joint `i`: its antecedent comes earlier, a standard-convention joint is in a
     /// chain without `γ`, `b`, a D-H joint has no placement, a URDF-style joint has one, with a

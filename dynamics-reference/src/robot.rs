@@ -4,8 +4,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::json::RawRobot;
-
 /// How each joint's frame is given: which form of the Denavit–Hartenberg link matrix the table
 /// uses, or URDF-style placements.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -112,13 +110,11 @@ pub struct Joint {
 /// Parsed through the JSON form of `json.rs`, which fills the defaults and refuses what does
 /// not describe a robot (an antecedent that does not come earlier, a tree in the standard
 /// convention, D-H values on a URDF-style joint, a non-unit axis, a rotation that is not one).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(try_from = "RawRobot", into = "RawRobot")]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Robot {
     /// Short name.
     pub name: String,
     /// Free text. Defaults to the empty string.
-    #[serde(default)]
     pub description: String,
     /// Standard or modified D-H.
     pub convention: Convention,
