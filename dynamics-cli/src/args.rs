@@ -17,7 +17,8 @@ pub use trajectory::{Simulate, Size};
 use values::{file, fraction, path, positive, whole};
 pub use values::{Numbers, Setting};
 
-/// The closed-form equations of motion of a serial robot, from its description file.
+/// The closed-form equations of motion of a robot arm, hand or other tree of joints, from its
+/// description file.
 #[derive(Parser, Debug)]
 #[command(
     name = "dynamics",

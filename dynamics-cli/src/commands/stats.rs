@@ -11,6 +11,18 @@ use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
+/// " in 4 branches" for a tree (one per tip: a joint no other hangs from), nothing for a chain.
+fn branches(robot: &Robot) -> String {
+    if !robot.is_tree() {
+        return String::new();
+    }
+    let n = robot.dof();
+    let tips = (0..n)
+        .filter(|&j| (0..n).all(|k| robot.parent(k) != Some(j)))
+        .count();
+    format!(" in {tips} branches")
+}
+
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let file = load_with_request(&args.robot)?;
     let robot = &file.robot;
@@ -25,9 +37,10 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let generated = generate(&eq, self_fields(&fields));
     let elapsed = start.elapsed();
     let mut out = format!(
-        "{}: {} joints, graph {} nodes, derived and emitted in {:.1} ms\n",
+        "{}: {} joints{}, graph {} nodes, derived and emitted in {:.1} ms\n",
         robot.name,
         eq.dof,
+        branches(robot),
         eq.graph.len(),
         elapsed.as_secs_f64() * 1e3
     );

@@ -122,3 +122,24 @@ fn tips_choose_the_branches() {
         stderr(&out)
     );
 }
+
+#[test]
+fn a_tree_prints_its_branches() {
+    // The Panda with both fingers free: finger 2 (joint 9) hangs from the hand on link 7, beside
+    // finger 1 (joint 8), so D89 is zero by the structure and left out.
+    let out = dynamics(&["inspect", "robots/urdf/trees/panda_free_fingers.urdf"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let tree =
+        "a tree (Khalil-Kleinfinger's antecedents): joints 1-8 from the base; joint 9 from joint 7";
+    assert!(text.contains(tree), "{text}");
+    let zeros = "zero, as their joints are on different branches (left out below): D89\n";
+    assert!(text.contains(zeros), "{text}");
+    assert!(!text.contains("\n  D89 ="), "{text}");
+    assert!(text.contains("\n  D79 = D97 ="), "{text}");
+    let out = dynamics(&["stats", "robots/urdf/trees/panda_free_fingers.urdf"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.starts_with("panda: 9 joints in 2 branches,"), "{text}");
+    let chain = dynamics(&["inspect", "robots/urdf/panda.urdf", "--tip", "panda_link8"]);
+    assert!(!String::from_utf8_lossy(&chain.stdout).contains("a tree"));
+}

@@ -19,6 +19,7 @@
 
 mod arrange;
 mod base_parameters;
+mod branches;
 mod label;
 mod number;
 mod print;
@@ -47,6 +48,8 @@ pub struct Inspection {
     kinematics: bool,
     kinds: Vec<JointKind>,
     offsets: bool,
+    /// Each joint's antecedent, for a tree.
+    antecedents: Option<Vec<Option<usize>>>,
     sections: Vec<Section>,
     limits: Limits,
 }
@@ -112,6 +115,7 @@ impl Inspection {
             kinematics,
             kinds: eq.kinds.clone(),
             offsets: eq.angle_offsets.iter().any(Option::is_some),
+            antecedents: branches::antecedents(robot),
             sections,
             limits,
         }

@@ -2,7 +2,8 @@
 //! with its equations (LaTeX in `align*` environments), or a note where a section did not
 //! fit the limits.
 
-use super::label::Quantity;
+use super::branches;
+use super::label::{Label, Quantity};
 use super::print::{Format, Printer};
 use super::sections::{Entry, Section};
 use super::{Inspection, KinematicPart};
@@ -75,6 +76,9 @@ impl Inspection {
             );
         }
         let _ = writeln!(out, "{comment}joint variables {variables}");
+        if let Some(antecedents) = &self.antecedents {
+            self.tree_lines(p, antecedents, &mut out);
+        }
         let _ = writeln!(
             out,
             "{comment}Si = sin θi, Ci = cos θi, S12 = sin(θ1 + θ2), C12 = cos(θ1 + θ2), …"
@@ -86,6 +90,29 @@ impl Inspection {
             );
         }
         out
+    }
+
+    /// A tree's branches, and the entries of `D` its branches make zero (left out below).
+    fn tree_lines(&self, p: &Printer<'_>, antecedents: &[Option<usize>], out: &mut String) {
+        let comment = if p.latex() { "% " } else { "" };
+        let _ = writeln!(
+            out,
+            "{comment}a tree (Khalil-Kleinfinger's antecedents): {}",
+            branches::describe(antecedents)
+        );
+        let zeros = branches::zero_inertia(antecedents);
+        if self.kinematics || zeros.is_empty() {
+            return;
+        }
+        let zeros: Vec<String> = zeros
+            .iter()
+            .map(|&(i, j)| Label::new(Quantity::Inertia, &[i, j]).render(p))
+            .collect();
+        let _ = writeln!(
+            out,
+            "{comment}zero, as their joints are on different branches (left out below): {}",
+            zeros.join(", ")
+        );
     }
 
     fn render_section(&self, p: &Printer<'_>, section: &Section, out: &mut String) {

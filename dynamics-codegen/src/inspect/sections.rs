@@ -2,6 +2,7 @@
 //! holds its arranged terms, or nothing when it did not fit the limits.
 
 use super::arrange::{factored_terms, terms, Term};
+use super::branches;
 use super::label::{Label, Quantity};
 use crate::model::Robot;
 use crate::poly::Expander;
@@ -85,8 +86,12 @@ pub(super) fn sections(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> V
 /// has one (M's diagonal holds it).
 fn inertia(x: &mut Expander<'_>, eq: &Equations, robot: &Robot) -> Vec<Entry> {
     let mut entries = Vec::new();
+    let antecedents = branches::antecedents(robot);
     for (i, joint) in robot.joints.iter().enumerate() {
         for j in i..eq.dof {
+            if !branches::related(antecedents.as_deref(), i, j) {
+                continue;
+            }
             let mut labels = vec![Label::new(Quantity::Inertia, &[i, j])];
             if j != i {
                 labels.push(Label::new(Quantity::Inertia, &[j, i]));
