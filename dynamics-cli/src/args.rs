@@ -76,12 +76,21 @@ pub struct RobotFile {
     pub tip: Option<String>,
     /// URDF only: the links the branches kept lead to, comma-separated (what moves off them
     /// is cut off) [default: every branch]
-    #[arg(long, value_name = "LINK,..", value_delimiter = ',', num_args = 1.., allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "LINK,..",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
     pub tips: Vec<String>,
     /// A tool frame on the hand, as a description file's `tool` (m, rad): the kinematic
     /// methods then give the tool's pose, Jacobians and statics
     #[arg(long, value_name = "X,Y,Z,ROLL,PITCH,YAW", allow_hyphen_values = true)]
     pub tool: Option<Tool>,
+    /// Keep every link's inertia as given, unchecked (the derive's `check_inertia = false`):
+    /// for published data whose principal moments break the triangle inequality
+    #[arg(long)]
+    pub no_check_inertia: bool,
 }
 
 /// `--tool x,y,z,roll,pitch,yaw`: six finite numbers.

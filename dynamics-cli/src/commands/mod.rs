@@ -67,7 +67,7 @@ fn load_with_request(robot: &RobotFile) -> Result<Loaded, Failure> {
             tip: robot.tip.as_deref(),
             tips: &tips,
         },
-        ..Source::default()
+        check_inertia: !robot.no_check_inertia,
     };
     let names_links = robot.base.is_some() || robot.tip.is_some() || !tips.is_empty();
     if !source.is_urdf() && names_links {

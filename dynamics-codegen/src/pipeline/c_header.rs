@@ -68,7 +68,11 @@ impl Loaded {
             format!(" --with {}", with.join(","))
         };
         let prefix = prefix.map_or_else(String::new, |prefix| format!(" --prefix {prefix}"));
-        format!("dynamics emit --lang c {}{with}{prefix}", self.path)
+        let options: String = self.options.iter().map(|o| format!(" {o}")).collect();
+        format!(
+            "dynamics emit --lang c {}{options}{with}{prefix}",
+            self.path
+        )
     }
 }
 
@@ -113,6 +117,39 @@ mod tests {
             header.text == golden("arm_urdf.h"),
             "the URDF's header changed"
         );
+    }
+
+    /// A URDF's chain, the inertia check and a tool are in the command too: without them it
+    /// would write another robot's header (or none).
+    #[test]
+    fn the_command_keeps_the_options_that_chose_the_robot() {
+        let path = "robots/urdf/trees/allegro_right_hand.urdf";
+        let tips = ["link_3.0_tip", "link_15.0_tip"];
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+        let text = std::fs::read_to_string(format!("{root}/{path}")).expect("readable");
+        let source = Source {
+            path,
+            text: Some(&text),
+            chain: crate::front::Chain {
+                tips: &tips,
+                ..Default::default()
+            },
+            check_inertia: false,
+        };
+        let hand = load(&source).expect("the hand, unchecked");
+        let header = hand
+            .c_header(FamilySet::default(), None, None)
+            .expect("a header");
+        let command = format!(
+            "dynamics emit --lang c {path} --tips link_3.0_tip,link_15.0_tip --no-check-inertia`"
+        );
+        assert!(header.text.contains(&command), "{}", &header.text[..300]);
+        let puma = loaded("robots/puma560.toml").with_tool([0.0, 0.0, 0.1, 0.0, 0.5, -1.0]);
+        let header = puma
+            .expect("a tool")
+            .c_header(FamilySet::default(), None, None);
+        let command = "dynamics emit --lang c robots/puma560.toml --tool 0,0,0.1,0,0.5,-1`";
+        assert!(header.expect("a header").text.contains(command));
     }
 
     #[test]

@@ -70,6 +70,22 @@ impl Default for Source<'_> {
 }
 
 impl<'a> Source<'a> {
+    /// The command line's options that choose what this source loads.
+    fn options(&self) -> Vec<String> {
+        let Chain { base, tip, tips } = self.chain;
+        let mut options: Vec<String> = [("--base", base), ("--tip", tip)]
+            .into_iter()
+            .filter_map(|(option, link)| link.map(|link| format!("{option} {link}")))
+            .collect();
+        if !tips.is_empty() {
+            options.push(format!("--tips {}", tips.join(",")));
+        }
+        if !self.check_inertia {
+            options.push("--no-check-inertia".to_owned());
+        }
+        options
+    }
+
     /// The file at `path`, read when loaded.
     #[must_use]
     pub fn file(path: &'a str) -> Source<'a> {
@@ -103,6 +119,10 @@ pub struct Loaded {
     pub robot: Robot,
     /// The file's path, as given.
     pub path: String,
+    /// The command line's options that load the robot again as loaded (`--tips a,b`,
+    /// `--no-check-inertia`, `--tool ..`): the generated files name the command that writes
+    /// them.
+    pub options: Vec<String>,
     is_urdf: bool,
     request: FileRequest,
 }
@@ -144,6 +164,7 @@ pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
     Ok(Loaded {
         robot: loaded.robot,
         path: path.to_owned(),
+        options: source.options(),
         is_urdf: source.is_urdf(),
         request: FileRequest {
             given: loaded.simplify,
@@ -167,6 +188,8 @@ impl Loaded {
         if self.robot.tool.is_some() {
             return Err(format!("`{path}` declares a `tool` already"));
         }
+        let numbers: Vec<String> = tool.iter().map(f64::to_string).collect();
+        self.options.push(format!("--tool {}", numbers.join(",")));
         let [x, y, z, roll, pitch, yaw] = tool.map(Value::from_f64);
         self.robot.tool = Some(Placement {
             xyz: [x, y, z],

@@ -193,7 +193,10 @@ fn link_problems<'a>(
                     _ => inertial.inertia_at,
                 };
                 // A URDF link has no `check_inertia` of its own: the derive's covers them all.
-                let message = p.message.replace("to this link", "to the derive");
+                let message = p.message.replace(
+                    "to this link",
+                    "to the derive (`--no-check-inertia` to the command)",
+                );
                 error(at, format!("link `{}`: {message}", link.name))
             })
         })
