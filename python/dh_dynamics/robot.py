@@ -19,10 +19,11 @@ def _generate(source, families):
 
 
 class Robot:
-    """A serial robot's closed-form equations of motion, compiled for this machine.
+    """A robot's closed-form equations of motion (a serial arm, or a tree such as a hand),
+    compiled for this machine.
 
-    Read one with :meth:`from_file` or :meth:`from_urdf` (or ``Robot(path, base=, tip=,
-    tool=, families=, parameters=)``, which takes the arguments of both). Every method of the Rust trait is a
+    Read one with :meth:`from_file` or :meth:`from_urdf` (or ``Robot(path, base=, tip=, tips=,
+    tool=, families=, parameters=, check_inertia=)``, which takes the arguments of both). Every method of the Rust trait is a
     method here with the same name (``mass_matrix``, ``inverse_dynamics``, ``forward_dynamics``,
     the hand's pose and Jacobians, and with ``families`` the derivatives or the regressor), on
     one state (arrays of shape ``(n,)``) or a batch (shape ``(N, n)``) in one call; ``methods``
@@ -30,13 +31,16 @@ class Robot:
     "m1"``), in the order of the C functions' ``params``.
     """
 
-    def __init__(self, path, *, base=None, tip=None, tool=None, families=(), parameters=None):
+    def __init__(self, path, *, base=None, tip=None, tips=(), tool=None, families=(),
+                 parameters=None, check_inertia=True):
         # Where the description comes from, which `equations` reads again.
         self._source = {
             "path": os.fsdecode(path),
             "base": None if base is None else os.fsdecode(base),
             "tip": None if tip is None else os.fsdecode(tip),
+            "tips": _names(tips, "tips"),
             "tool": None if tool is None else _tool(tool),
+            "check_inertia": bool(check_inertia),
         }
         families = _families(families)
         self._asked = set(families)
@@ -86,10 +90,13 @@ class Robot:
         return cls(path, tool=tool, families=families, parameters=parameters)
 
     @classmethod
-    def from_urdf(cls, path, base=None, tip=None, *, families=()):
-        """The robot of a URDF file: the chain from link ``base`` to link ``tip`` (by default
-        the root and the one leaf)."""
-        return cls(path, base=base, tip=tip, families=families)
+    def from_urdf(cls, path, base=None, tip=None, *, tips=(), families=(), check_inertia=True):
+        """The robot of a URDF file: every moving joint below link ``base`` (by default the
+        root link; a tree if they branch), or the chain to link ``tip``, or the branches that
+        lead to the links ``tips``. ``check_inertia=False`` keeps published inertias whose
+        principal moments break the triangle inequality."""
+        return cls(path, base=base, tip=tip, tips=tips, families=families,
+                   check_inertia=check_inertia)
 
     def equations(self, latex=False, kinematics=False):
         """The equations of motion in the book's notation (``kinematics=True``: the hand's pose
@@ -115,6 +122,16 @@ def _families(families):
     if not all(isinstance(f, str) for f in families):
         raise TypeError(f"families: expected names such as ['derivatives'], got {families!r}")
     return families
+
+
+def _names(names, what):
+    """``names`` as a list of link names: one name (a string) or an iterable of them."""
+    if isinstance(names, (str, bytes, os.PathLike)):
+        names = [names]
+    try:
+        return [os.fsdecode(name) for name in names]
+    except TypeError:
+        raise TypeError(f"{what} = {names!r}: expected link names") from None
 
 
 def _tool(tool):

@@ -27,9 +27,11 @@ class Robot:
         *,
         base: str | None = None,
         tip: str | None = None,
+        tips: str | Iterable[str] = (),
         tool: Iterable[float] | None = None,
         families: str | Iterable[str] = (),
         parameters: Mapping[str, float] | None = None,
+        check_inertia: bool = True,
     ) -> None: ...
     @classmethod
     def from_file(
@@ -47,7 +49,9 @@ class Robot:
         base: str | None = None,
         tip: str | None = None,
         *,
+        tips: str | Iterable[str] = (),
         families: str | Iterable[str] = (),
+        check_inertia: bool = True,
     ) -> Robot: ...
     @property
     def parameters(self) -> Parameters: ...

@@ -30,25 +30,31 @@ create_exception!(
      as `file:line:col: message`, one per line."
 );
 
-/// The C header of the robot described at `path` (a URDF's chain from `base` to `tip`; the
+/// The C header of the robot described at `path` (a URDF's chain from `base` to `tip`, or its branches to `tips`; the
 /// hand frame `tool` of a description file) with the opt-in `families`, and the simplified
 /// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `text`, and
 /// `functions`, each a dict of its signature.
 #[pyfunction]
-#[pyo3(signature = (path, *, base=None, tip=None, tool=None, families=Vec::new()))]
+// One argument per keyword of the Python signature, as pyo3 maps them.
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new()))]
 fn c_header(
     py: Python<'_>,
     path: String,
     base: Option<String>,
     tip: Option<String>,
+    tips: Vec<String>,
     tool: Option<[f64; 6]>,
+    check_inertia: bool,
     families: Vec<String>,
 ) -> PyResult<Bound<'_, PyDict>> {
     let described = Described {
         path,
         base,
         tip,
+        tips,
         tool,
+        check_inertia,
     };
     let header = py
         .detach(|| {
@@ -81,13 +87,17 @@ fn c_header(
 /// the book's notation, or with `kinematics` its hand pose and Jacobians; as LaTeX with
 /// `latex`.
 #[pyfunction]
-#[pyo3(signature = (path, *, base=None, tip=None, tool=None, latex=false, kinematics=false))]
+// One argument per keyword of the Python signature, as pyo3 maps them.
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, latex=false, kinematics=false))]
 fn equations(
     py: Python<'_>,
     path: String,
     base: Option<String>,
     tip: Option<String>,
+    tips: Vec<String>,
     tool: Option<[f64; 6]>,
+    check_inertia: bool,
     latex: bool,
     kinematics: bool,
 ) -> PyResult<String> {
@@ -95,7 +105,9 @@ fn equations(
         path,
         base,
         tip,
+        tips,
         tool,
+        check_inertia,
     };
     let format = if latex { Format::Latex } else { Format::Text };
     let what = if kinematics {

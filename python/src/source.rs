@@ -1,4 +1,5 @@
-//! Where a `Robot`'s description comes from, as Python gives it: the file, a URDF's chain,
+//! Where a `Robot`'s description comes from, as Python gives it: the file, a URDF's chain or
+//! branches,
 //! a description file's hand frame; loaded through the front door.
 
 use dynamics_codegen::pipeline::{self, Diagnostic, Loaded, Source};
@@ -10,10 +11,15 @@ pub struct Described {
     pub path: String,
     /// A URDF's first link.
     pub base: Option<String>,
-    /// A URDF's last link.
+    /// A URDF's last link, of a chain.
     pub tip: Option<String>,
+    /// The links a URDF's branches kept lead to (empty: every branch).
+    pub tips: Vec<String>,
     /// A description file's hand frame `[x, y, z, roll, pitch, yaw]`.
     pub tool: Option<[f64; 6]>,
+    /// Whether each link's inertia is checked (`check_inertia=False`: published data kept as
+    /// given).
+    pub check_inertia: bool,
 }
 
 impl Described {
@@ -22,19 +28,21 @@ impl Described {
     /// # Errors
     /// The description's problems, each at its place, or the arguments' (no file).
     pub fn load(&self) -> Result<Loaded, Vec<Diagnostic>> {
+        let tips: Vec<&str> = self.tips.iter().map(String::as_str).collect();
         let source = Source {
             path: &self.path,
             text: None,
             chain: Chain {
                 base: self.base.as_deref(),
                 tip: self.tip.as_deref(),
-                tips: &[],
+                tips: &tips,
             },
-            ..Source::default()
+            check_inertia: self.check_inertia,
         };
-        if !source.is_urdf() && (self.base.is_some() || self.tip.is_some()) {
+        let names_links = self.base.is_some() || self.tip.is_some() || !tips.is_empty();
+        if !source.is_urdf() && names_links {
             let message = format!(
-                "base and tip name links of a URDF file; `{}` is not one (*.urdf)",
+                "base, tip and tips name links of a URDF file; `{}` is not one (*.urdf)",
                 self.path
             );
             return Err(vec![caller(message, None)]);

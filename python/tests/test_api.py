@@ -207,8 +207,8 @@ def test_errors_are_the_generators_diagnostics_as_data(tmp_path):
     with pytest.raises(ValueError, match=r"^families: `simplify` needs an envelope .*\nhelp: "
                                          r".*`\[simplify\]` table"):
         dh_dynamics.Robot.from_file(PUMA, families="simplify")
-    with pytest.raises(ValueError, match=r"^base and tip name links of a URDF file; `.*puma560"
-                                         r"\.toml` is not one"):
+    with pytest.raises(ValueError, match=r"^base, tip and tips name links of a URDF file; "
+                                         r"`.*puma560\.toml` is not one"):
         dh_dynamics.Robot.from_urdf(PUMA, tip="link6")
     with pytest.raises(ValueError, match=r"^tool: `.*two_link\.toml` declares a `tool` already"):
         tooled = tmp_path / "two_link.toml"
@@ -237,6 +237,22 @@ def test_a_tool_and_a_urdf_chain():
     ur10 = dh_dynamics.Robot.from_urdf(ROOT / "robots/urdf/ur10.urdf", base="base_link",
                                        tip="tool0")
     assert (ur10.name, ur10.dof) == ("ur10", 6)
+
+
+def test_a_tree_from_a_urdf_with_its_published_inertias():
+    """Two fingers of the Allegro hand: a tree off the palm, whose inertias break the triangle
+    inequality (refused, then kept with ``check_inertia=False``). Fingers on different branches
+    do not couple: M's block between them is exactly zero."""
+    hand = ROOT / "robots/urdf/trees/allegro_right_hand.urdf"
+    index_and_middle = ["link_3.0_tip", "link_7.0_tip"]
+    with pytest.raises(dh_dynamics.DescriptionError, match="triangle inequality"):
+        dh_dynamics.Robot.from_urdf(hand, tips=index_and_middle)
+    fingers = dh_dynamics.Robot.from_urdf(hand, tips=index_and_middle, check_inertia=False)
+    assert fingers.dof == 8
+    m = fingers.mass_matrix(states(8, 1, seed=8)[0][0])
+    assert np.array_equal(m[:4, 4:], np.zeros((4, 4)))
+    assert np.all(np.linalg.eigvalsh(m) > 0)
+    assert "joints 5-8 from the base" in fingers.equations()
 
 
 def test_the_regressor_and_base_parameters_give_tau():
