@@ -169,6 +169,29 @@ impl Method {
             Method::BaseFromJoints => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
             }
+            Method::TipPoses => Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.poses)),
+            Method::TipJacobiansInBase => {
+                Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.jacobians_in_base))
+            }
+            Method::TipJacobiansInTip => {
+                Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.jacobians_in_tip))
+            }
+            Method::TipAccelerationBiasesInBase => {
+                Shape::Matrix(eq.tips.as_ref().map_or(&[], |t| &t.biases_in_base))
+            }
+            Method::TipAccelerationBiasesInTip => {
+                Shape::Matrix(eq.tips.as_ref().map_or(&[], |t| &t.biases_in_tip))
+            }
+            Method::JointTorquesForTipWrenches => Shape::Vector(
+                eq.tips
+                    .as_ref()
+                    .map_or(&[], |t| &t.torques_for_tip_wrenches),
+            ),
+            Method::JointTorquesForTipWrenchesInBase => Shape::Vector(
+                eq.tips
+                    .as_ref()
+                    .map_or(&[], |t| &t.torques_for_base_wrenches),
+            ),
             Method::InverseDynamicsSimplified
             | Method::MassMatrixSimplified
             | Method::CoriolisTorquesSimplified

@@ -30,5 +30,6 @@ mod regressor;
 mod simplified;
 mod trees;
 mod urdf_robots;
+mod urdf_tips;
 mod urdf_trees;
 mod urdf_twins;
