@@ -28,6 +28,7 @@ mod readable_derive;
 mod reference_data;
 mod regressor;
 mod simplified;
+mod tree_tips;
 mod trees;
 mod urdf_robots;
 mod urdf_tips;

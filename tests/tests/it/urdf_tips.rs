@@ -256,3 +256,53 @@ fn the_pandas_free_fingers_are_its_leaves_against_pinocchio() {
         1e-8,
     );
 }
+
+/// PUMA 560 asking for the family: one tip, its last link, whose kinematics are the hand's
+/// (the description declares no tool).
+#[derive(Dynamics)]
+#[dynamics(
+    file = "data/reference/robots/puma560.json",
+    check_inertia = false,
+    tip_kinematics = true
+)]
+struct PumaTip;
+
+#[test]
+fn a_serial_robot_that_asks_has_one_tip_its_hand() {
+    assert_eq!(PumaTip::TIP_NAMES, ["link6"]);
+    assert_eq!(PumaTip::TIP_LINK6, 0);
+    let q = [0.3, -0.7, 1.1, 0.4, -0.9, 2.0];
+    let qd = [0.5, -0.2, 0.9, -1.1, 0.3, 0.7];
+    // The same nodes of the graph, in another family's function: equal to rounding.
+    let close = |a: Vec<f64>, b: Vec<f64>| {
+        let e = a
+            .iter()
+            .zip(&b)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        assert!(e < 1e-12, "{a:?} against {b:?}");
+    };
+    let flat = |m: [[f64; 6]; 6]| m.concat();
+    let (pose, hand) = (PumaTip.tip_poses(&q)[0], PumaTip.hand_pose(&q));
+    close(pose.homogeneous().concat(), hand.homogeneous().concat());
+    close(
+        flat(PumaTip.tip_jacobians_in_base(&q)[0]),
+        flat(PumaTip.hand_jacobian_in_base(&q)),
+    );
+    close(
+        flat(PumaTip.tip_jacobians_in_tip(&q)[0]),
+        flat(PumaTip.hand_jacobian_in_hand(&q)),
+    );
+    close(
+        PumaTip.tip_acceleration_biases_in_tip(&q, &qd)[0].to_vec(),
+        PumaTip.hand_acceleration_bias_in_hand(&q, &qd).to_vec(),
+    );
+    let w = [[1.0, -2.0, 3.0, 0.5, -0.25, 0.125]];
+    let (tip, hand) = (
+        PumaTip.joint_torques_for_tip_wrenches(&q, &w),
+        PumaTip.joint_torques_for_hand_wrench(&q, &w[0]),
+    );
+    assert!(
+        (0..6).all(|i| (tip[i] - hand[i]).abs() < 1e-12),
+        "{tip:?} against {hand:?}"
+    );
+}
