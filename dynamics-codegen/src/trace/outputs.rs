@@ -1,7 +1,7 @@
 //! Where a method's result lies in the traced graph: its [`Shape`], which output of the
 //! [`Equations`] each method returns ([`Method::shape`]), and whether the derive writes it.
 
-use super::{Elements, Equations};
+use super::{Elements, Equations, TipEquations};
 use crate::method::Method;
 use crate::symbolic::{NodeId, Tangents};
 
@@ -106,6 +106,9 @@ impl Shape<'_> {
     }
 }
 
+/// The tips of a robot whose tips were not traced.
+static NO_TIPS: TipEquations = TipEquations::NONE;
+
 impl Method {
     /// The outputs of `eq` it returns.
     #[must_use]
@@ -169,29 +172,6 @@ impl Method {
             Method::BaseFromJoints => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
             }
-            Method::TipPoses => Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.poses)),
-            Method::TipJacobiansInBase => {
-                Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.jacobians_in_base))
-            }
-            Method::TipJacobiansInTip => {
-                Shape::Stack(eq.tips.as_ref().map_or(&[], |t| &t.jacobians_in_tip))
-            }
-            Method::TipAccelerationBiasesInBase => {
-                Shape::Matrix(eq.tips.as_ref().map_or(&[], |t| &t.biases_in_base))
-            }
-            Method::TipAccelerationBiasesInTip => {
-                Shape::Matrix(eq.tips.as_ref().map_or(&[], |t| &t.biases_in_tip))
-            }
-            Method::JointTorquesForTipWrenches => Shape::Vector(
-                eq.tips
-                    .as_ref()
-                    .map_or(&[], |t| &t.torques_for_tip_wrenches),
-            ),
-            Method::JointTorquesForTipWrenchesInBase => Shape::Vector(
-                eq.tips
-                    .as_ref()
-                    .map_or(&[], |t| &t.torques_for_base_wrenches),
-            ),
             Method::InverseDynamicsSimplified
             | Method::MassMatrixSimplified
             | Method::CoriolisTorquesSimplified
@@ -210,6 +190,8 @@ impl Method {
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
                 stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
             },
+            // The tips' (`TipEquations::shape` tells them apart).
+            tips => eq.tips.as_ref().unwrap_or(&NO_TIPS).shape(tips),
         }
     }
 

@@ -10,8 +10,9 @@ use super::expr::Expr;
 use super::joints::JointTerms;
 use super::tracer::Tracer;
 use super::Equations;
+use super::Shape;
 use crate::algo;
-use crate::method::Family;
+use crate::method::{Family, Method};
 use crate::model::Robot;
 use crate::symbolic::{NodeId, Var};
 use std::cell::RefCell;
@@ -35,6 +36,35 @@ pub struct TipEquations {
     pub torques_for_tip_wrenches: Vec<NodeId>,
     /// `Σ_t J_tᵀ F_t`, each wrench in base axes.
     pub torques_for_base_wrenches: Vec<NodeId>,
+}
+
+impl TipEquations {
+    /// No tips: the equations of a robot whose tips were not traced.
+    pub const NONE: TipEquations = TipEquations {
+        names: Vec::new(),
+        poses: Vec::new(),
+        jacobians_in_base: Vec::new(),
+        jacobians_in_tip: Vec::new(),
+        biases_in_base: Vec::new(),
+        biases_in_tip: Vec::new(),
+        torques_for_tip_wrenches: Vec::new(),
+        torques_for_base_wrenches: Vec::new(),
+    };
+
+    /// The result of one of the tips' methods ([`Method::shape`]).
+    pub(super) fn shape(&self, method: Method) -> Shape<'_> {
+        match method {
+            Method::TipPoses => Shape::Stack(&self.poses),
+            Method::TipJacobiansInBase => Shape::Stack(&self.jacobians_in_base),
+            Method::TipJacobiansInTip => Shape::Stack(&self.jacobians_in_tip),
+            Method::TipAccelerationBiasesInBase => Shape::Matrix(&self.biases_in_base),
+            Method::TipAccelerationBiasesInTip => Shape::Matrix(&self.biases_in_tip),
+            Method::JointTorquesForTipWrenchesInBase => {
+                Shape::Vector(&self.torques_for_base_wrenches)
+            }
+            _ => Shape::Vector(&self.torques_for_tip_wrenches),
+        }
+    }
 }
 
 impl Equations {

@@ -21,8 +21,11 @@ use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 const EXACT: f64 = 1e-9;
 const DIFFERENCES: f64 = 1e-7;
 
+/// Quantities compared: what, the closed form's, the reference's.
+type Checks = Vec<(String, Vec<f64>, Vec<f64>)>;
+
 /// The closed form's and the reference's pose, Jacobians and `J̇ q̇` of every leaf, by name.
-fn both(c: &TreeCase) -> Result<Vec<(String, Vec<f64>, Vec<f64>)>, TestCaseError> {
+fn both(c: &TreeCase) -> Result<Checks, TestCaseError> {
     let model = c.tree.model();
     let mut eq = dynamics_codegen::derive(&model);
     // A tree asks for nothing; a random tree that came out a chain asks.
@@ -58,54 +61,64 @@ fn both(c: &TreeCase) -> Result<Vec<(String, Vec<f64>, Vec<f64>)>, TestCaseError
             .collect::<Vec<f64>>()
     };
     let matrix = |ids: &[Vec<NodeId>]| ids.iter().flat_map(|row| list(row)).collect::<Vec<f64>>();
-    let rows = |m: &DMatrix<f64>| m.transpose().as_slice().to_vec();
     let mut out = Vec::new();
     for (t, &i) in leaves.iter().enumerate() {
-        let frame = reference.frame(q, i);
-        let j = reference.frame_jacobian(q, i, &Matrix4::identity());
-        let r = frame.fixed_view::<3, 3>(0, 0).into_owned();
-        let mut local = j.clone();
-        for block in [0, 3] {
-            let turned = r.transpose() * j.rows(block, 3);
-            local.rows_mut(block, 3).copy_from(&turned);
-        }
-        let pose: Vec<f64> = (0..3)
-            .flat_map(|row| (0..4).map(move |c| frame[(row, c)]))
-            .collect();
-        let bias = bias_by_differences(&reference, i, q, qd);
-        let bias_local: Vec<f64> = [0, 3]
-            .iter()
-            .flat_map(|&b| {
-                (r.transpose() * bias.rows(b, 3))
-                    .iter()
-                    .copied()
-                    .collect::<Vec<_>>()
-            })
-            .collect();
+        let [pose, j, local, bias, bias_local] = wanted(&reference, i, q, qd);
         let name = |what: &str| format!("{} {what}", names[t]);
-        out.push((name("pose"), matrix(&tips.poses[t]), pose));
-        out.push((
-            name("J in base"),
+        let got = [
+            matrix(&tips.poses[t]),
             matrix(&tips.jacobians_in_base[t]),
-            rows(&j),
-        ));
-        out.push((
-            name("J in tip"),
             matrix(&tips.jacobians_in_tip[t]),
-            rows(&local),
-        ));
-        out.push((
-            name("J'q' in base"),
             list(&tips.biases_in_base[t]),
-            bias.as_slice().to_vec(),
-        ));
-        out.push((
-            name("J'q' in tip"),
             list(&tips.biases_in_tip[t]),
-            bias_local,
-        ));
+        ];
+        let what = [
+            "pose",
+            "J in base",
+            "J in tip",
+            "J'q' in base",
+            "J'q' in tip",
+        ];
+        let want = [pose, j, local, bias, bias_local];
+        for ((what, got), want) in what.iter().zip(got).zip(want) {
+            out.push((name(what), got, want));
+        }
     }
     Ok(out)
+}
+
+/// The reference's pose rows of link frame `i`, its Jacobian in base axes and in its own (by
+/// rows), and `J̇ q̇` in both.
+fn wanted(reference: &dynamics_reference::Robot, i: usize, q: &[f64], qd: &[f64]) -> [Vec<f64>; 5] {
+    let frame = reference.frame(q, i);
+    let j = reference.frame_jacobian(q, i, &Matrix4::identity());
+    let r = frame.fixed_view::<3, 3>(0, 0).into_owned();
+    let mut local = j.clone();
+    for block in [0, 3] {
+        let turned = r.transpose() * j.rows(block, 3);
+        local.rows_mut(block, 3).copy_from(&turned);
+    }
+    let rows = |m: &DMatrix<f64>| m.transpose().as_slice().to_vec();
+    let pose: Vec<f64> = (0..3)
+        .flat_map(|row| (0..4).map(move |c| frame[(row, c)]))
+        .collect();
+    let bias = bias_by_differences(reference, i, q, qd);
+    let bias_local: Vec<f64> = [0, 3]
+        .iter()
+        .flat_map(|&b| {
+            (r.transpose() * bias.rows(b, 3))
+                .iter()
+                .copied()
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    [
+        pose,
+        rows(&j),
+        rows(&local),
+        bias.as_slice().to_vec(),
+        bias_local,
+    ]
 }
 
 /// `J̇ q̇` of link frame `i` by central differences of the reference's Jacobian along

@@ -14,7 +14,7 @@
 
 use dynamics_reference::nalgebra::{DMatrix, DVector};
 use dynamics_reference::{PinocchioFrame, Robot};
-use dynamics_runtime::{Dynamics, TipKinematics};
+use dynamics_runtime::{Dynamics, Pose, TipKinematics};
 use dynamics_tests::reference::{samples, vector};
 use serde_json::Value;
 
@@ -101,6 +101,27 @@ fn bias_by_differences(robot: &Robot, frame: &PinocchioFrame, q: &[f64], qd: &[f
         .collect()
 }
 
+/// A pose's rows `[R | p]`, one after the other.
+fn pose_rows(pose: &Pose<f64>) -> Vec<f64> {
+    (0..3)
+        .flat_map(|i| {
+            [
+                pose.rotation[i][0],
+                pose.rotation[i][1],
+                pose.rotation[i][2],
+                pose.position[i],
+            ]
+        })
+        .collect()
+}
+
+/// A spatial vector `[v; ω]` in base axes in axes turned by `r`: `[Rᵀ v; Rᵀ ω]`.
+fn turned(x: &[f64], r: &[Vec<f64>]) -> Vec<f64> {
+    (0..6)
+        .map(|row| (0..3).map(|m| r[m][row % 3] * x[row / 3 * 3 + m]).sum())
+        .collect()
+}
+
 /// Every tip of `robot` against every sample of `file`, within `tolerance` (the differences'
 /// `J̇ q̇` within `difference_tolerance`); returns the worst error of each check.
 fn check<R, const N: usize, const TIPS: usize>(
@@ -138,27 +159,12 @@ where
             let (pose, j) = (rows(&tip["pose"]), rows(&tip["jacobian"]));
             let r: Vec<Vec<f64>> = pose[..3].iter().map(|row| row[..3].to_vec()).collect();
             let local = in_axes(&j, &r);
-            let got_pose: Vec<f64> = (0..3)
-                .flat_map(|i| (0..4).map(move |c| (i, c)))
-                .map(|(i, c)| {
-                    if c < 3 {
-                        poses[t].rotation[i][c]
-                    } else {
-                        poses[t].position[i]
-                    }
-                })
-                .collect();
+            let got_pose = pose_rows(&poses[t]);
             let want_pose: Vec<f64> = pose[..3].iter().flatten().copied().collect();
             let flat = |m: &[[f64; N]; 6]| m.iter().flatten().copied().collect::<Vec<f64>>();
             let frame = &frames[names.iter().position(|n| *n == name).expect("a frame")];
             let by_differences = bias_by_differences(&reference, frame, &q, &qd);
-            let bias_in_tip: Vec<f64> = (0..6)
-                .map(|row| {
-                    (0..3)
-                        .map(|m| r[m][row % 3] * by_differences[row / 3 * 3 + m])
-                        .sum()
-                })
-                .collect();
+            let bias_in_tip = turned(&by_differences, &r);
             for i in 0..N {
                 for c in 0..6 {
                     want_tip[i] += local[c][i] * wrenches[t][c];
