@@ -95,7 +95,10 @@ fn leaf(v: Var, offsets: &[f64], fields: &[f64], tau: Option<&[f64]>) -> Result<
         (Var::Qdd(i), _) => Leaf::Qdd(i.into()),
         (Var::Param(k), _) => Leaf::Constant(fields[usize::from(k)]),
         (Var::Tau(i), Some(tau)) => Leaf::Constant(tau[usize::from(i)]),
-        (Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_) | Var::Exact(_), _) => {
+        (
+            Var::Wrench(_) | Var::TipWrench(_) | Var::Tau(_) | Var::Inertial(_) | Var::Exact(_),
+            _,
+        ) => {
             return Err(format!(
                 "the equations depend on {v:?}, which a state does not give"
             ))

@@ -126,10 +126,14 @@ macro_rules! into_method {
 }
 
 /// The type of a method's argument: `&[T; N]` for the joint variables, `&[T; 6]` for a wrench
-/// `[fx, fy, fz, mx, my, mz]`.
+/// `[fx, fy, fz, mx, my, mz]`, `&[[T; 6]; TIPS]` for a wrench at each tip (`TipKinematics`'
+/// count).
 macro_rules! argument_type {
     (wrench, $t:ty, $n:ident) => {
         &[$t; 6]
+    };
+    (wrenches, $t:ty, $n:ident) => {
+        &[[$t; 6]; TIPS]
     };
     ($joint:ident, $t:ty, $n:ident) => {
         &[$t; $n]

@@ -57,6 +57,9 @@
 
 // First: the tables of methods and of their results that `dynamics` and `nalgebra` declare
 // their traits from.
+// Before `methods`, whose `for_each_method!` calls its `for_each_tip_method!`.
+#[macro_use]
+mod tip_methods;
 #[macro_use]
 mod methods;
 #[macro_use]
@@ -83,11 +86,12 @@ mod trig;
 pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
-    DynamicsRegressorBatch, DynamicsSimplifiedBatch,
+    DynamicsRegressorBatch, DynamicsSimplifiedBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
+    TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};

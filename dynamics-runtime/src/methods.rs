@@ -49,7 +49,7 @@
 /// `methods.rs`).
 macro_rules! for_each_method {
     ($callback:ident) => {
-        $callback! {
+        for_each_tip_method! { $callback {
             /// Closed-form equations of motion of a serial robot with `N` joints,
             /// `tau = M(q) qdd + C(q, qd) qd + g(q)` (Niku eq. 6.46).
             ///
@@ -494,6 +494,6 @@ macro_rules! for_each_method {
                     }
                 }
             }
-        }
+        }}
     };
 }

@@ -64,6 +64,7 @@ macro_rules! nalgebra_wrapper {
 /// variables an `SVector<T, N>`.
 macro_rules! nalgebra_argument {
     (wrench, $t:ty, $n:ident) => { &SVector<$t, 6> };
+    (wrenches, $t:ty, $n:ident) => { &[SVector<$t, 6>; TIPS] };
     ($joint:ident, $t:ty, $n:ident) => { &SVector<$t, $n> };
 }
 
@@ -75,8 +76,30 @@ fn convert<A, B>(value: A, into: impl FnOnce(A) -> B) -> B {
     into(value)
 }
 
-fn array<T: Real + RealField, const N: usize>(v: &SVector<T, N>) -> [T; N] {
-    core::array::from_fn(|i| v[i])
+/// An argument's nalgebra form as the array the trait takes.
+trait AsArray {
+    /// The array.
+    type Array;
+    fn as_array(&self) -> Self::Array;
+}
+
+impl<T: Real + RealField, const N: usize> AsArray for SVector<T, N> {
+    type Array = [T; N];
+    fn as_array(&self) -> [T; N] {
+        core::array::from_fn(|i| self[i])
+    }
+}
+
+/// A vector per tip (the tips' wrenches).
+impl<T: Real + RealField, const M: usize, const K: usize> AsArray for [SVector<T, M>; K] {
+    type Array = [[T; M]; K];
+    fn as_array(&self) -> [[T; M]; K] {
+        self.each_ref().map(AsArray::as_array)
+    }
+}
+
+fn array<A: AsArray>(v: &A) -> A::Array {
+    v.as_array()
 }
 
 fn matrix<T: Real + RealField, const N: usize>(m: &[[T; N]; N]) -> SMatrix<T, N, N> {

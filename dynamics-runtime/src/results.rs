@@ -5,8 +5,9 @@
 // declare the traits' result types (`dynamics.rs`) and their nalgebra forms (`nalgebra.rs`);
 // `dynamics-codegen` reads the same file (a symlink, `include!`d) for the types it writes into
 // the derive's impls and modules. `T` is the scalar and `N` the number of joints wherever a
-// row is used, `B` the number of base parameters (in `DynamicsBaseParameters` only); a type name
-// other than `T`, `N`, `B`, `Result` and `Option` is the runtime's.
+// row is used, `B` the number of base parameters (in `DynamicsBaseParameters` only), `TIPS` the
+// number of tips (in `TipKinematics` only); a type name other than `T`, `N`, `B`, `TIPS`,
+// `Result` and `Option` is the runtime's.
 //
 //     /// What the result is.
 //     matrix {
@@ -192,6 +193,34 @@ macro_rules! for_each_result {
                 nalgebra: [SMatrix<T, N, 4>; B],
                 to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
                 rows: [[[T; 4]; N]; B],
+                from_rows: |value| value,
+            }
+            /// A `Pose` per tip; in the generated module, their rows `[R | p]`.
+            tip_poses {
+                variant: TipPoses,
+                array: [Pose<T>; TIPS],
+                nalgebra: [Isometry3<T>; TIPS],
+                to_nalgebra: |value| value.map(|p| isometry(&p)),
+                rows: [[[T; 4]; 3]; TIPS],
+                from_rows: |value| value.map(Pose::from_rows),
+            }
+            /// A Jacobian per tip, each six rows `[dx, dy, dz, δx, δy, δz]` of a column per
+            /// joint.
+            tip_jacobians {
+                variant: TipJacobians,
+                array: [[[T; N]; 6]; TIPS],
+                nalgebra: [SMatrix<T, 6, N>; TIPS],
+                to_nalgebra: |value| value.map(|j| SMatrix::from_fn(|i, k| j[i][k])),
+                rows: [[[T; N]; 6]; TIPS],
+                from_rows: |value| value,
+            }
+            /// A spatial 6-vector per tip, a linear and an angular part.
+            tip_spatials {
+                variant: TipSpatials,
+                array: [[T; 6]; TIPS],
+                nalgebra: [SVector<T, 6>; TIPS],
+                to_nalgebra: |value| value.map(SVector::from),
+                rows: [[T; 6]; TIPS],
                 from_rows: |value| value,
             }
             /// The `B` base parameters.

@@ -194,4 +194,47 @@ class Robot:
 
         Opt-in: ``families=['base_parameters']``.
         """
+    def tip_poses(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The pose of every tip frame.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def tip_jacobians_in_base(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Every tip's Jacobian in the base frame.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def tip_jacobians_in_tip(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Every tip's Jacobian in its own frame.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def tip_acceleration_biases_in_base(
+        self, q: ArrayLike, qd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """J̇ q̇ of every tip, in the base frame.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def tip_acceleration_biases_in_tip(
+        self, q: ArrayLike, qd: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """J̇ q̇ of every tip, in its own axes.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def joint_torques_for_tip_wrenches(
+        self, q: ArrayLike, wrenches: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """T = Σ J_tᵀ F_t for a wrench at each tip, in its frame.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
+    def joint_torques_for_tip_wrenches_in_base(
+        self, q: ArrayLike, wrenches: ArrayLike
+    ) -> NDArray[np.floating[Any]]:
+        """T = Σ J_tᵀ F_t for a wrench at each tip, in base axes.
+
+        Opt-in: ``families=['tip_kinematics']``.
+        """
     # End of the generated methods.

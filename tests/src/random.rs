@@ -131,6 +131,7 @@ impl RobotSpec {
             joints: self.joints.iter().map(JointSpec::model).collect(),
             base: model::Pose::identity(),
             tool: None,
+            tips: Vec::new(),
         }
     }
 
@@ -209,6 +210,7 @@ impl TreeSpec {
                 .collect(),
             base: model::Pose::identity(),
             tool: None,
+            tips: Vec::new(),
         }
     }
 

@@ -103,16 +103,23 @@ fn a_robot_with_parameters_computes_the_graphs_values() {
     }
 }
 
-/// The opt-in families too (`--with derivatives,regressor,base_parameters`): their functions,
+/// The opt-in families too (`--with derivatives,regressor,base_parameters,tip_kinematics`):
+/// their functions,
 /// stacks of matrices and a solve with its derivatives among them, against the graph (one
 /// build: the header is large).
 #[test]
 fn the_opt_in_families_compute_the_graphs_values() {
-    let with = ["derivatives", "regressor", "base_parameters"];
+    let with = [
+        "derivatives",
+        "regressor",
+        "base_parameters",
+        "tip_kinematics",
+    ];
     let robot = c_support::robot_with("robots/puma560.toml", &with);
     for name in [
         "puma560_inverse_dynamics_derivatives",
         "puma560_base_regressor_f32",
+        "puma560_joint_torques_for_tip_wrenches",
     ] {
         assert!(robot.functions.iter().any(|f| f.name == name), "{name}");
     }

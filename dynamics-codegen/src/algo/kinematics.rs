@@ -27,7 +27,7 @@
 //!   moment about the hand's origin.
 
 use super::{JointKind, Mat3, RobotScalars, Scalar, V3};
-use crate::model::{Convention, Placement, Pose, Robot};
+use crate::model::{Convention, Placement, Pose, Robot, Tip};
 
 /// A rigid transform `x ↦ rotation · x + position`.
 #[derive(Clone, Copy, Debug)]
@@ -78,14 +78,36 @@ pub struct Kinematics<S> {
 /// A 6-row Jacobian, rows `[dx, dy, dz, δx, δy, δz]`, one column per joint.
 pub type Jacobian<S> = [Vec<S>; 6];
 
-/// The kinematics of `robot` at the joint variables of `scalars`.
+/// The kinematics of `robot` at the joint variables of `scalars`, its hand at the last joint's
+/// link and tool.
 pub fn kinematics<R: RobotScalars>(scalars: &mut R, robot: &Robot) -> Kinematics<R::Scalar> {
+    kinematics_to(scalars, robot, None)
+}
+
+/// The kinematics of `robot` with `tip` for the hand: its frame, and the Jacobians' columns of
+/// the joints that carry it.
+pub fn tip_kinematics<R: RobotScalars>(
+    scalars: &mut R,
+    robot: &Robot,
+    tip: &Tip,
+) -> Kinematics<R::Scalar> {
+    kinematics_to(scalars, robot, Some(tip))
+}
+
+/// The kinematics with the hand at `tip`, or at the last joint's link and tool. Each value is
+/// built in the same order either way, so a robot's graph (and code) does not depend on tips.
+fn kinematics_to<R: RobotScalars>(
+    scalars: &mut R,
+    robot: &Robot,
+    tip: Option<&Tip>,
+) -> Kinematics<R::Scalar> {
     let zero = scalars.value(&crate::model::Value::zero());
     let base = pose(scalars, &robot.base);
-    let tool = robot
-        .tool
-        .as_ref()
-        .map_or_else(|| identity(zero), |t| placement(scalars, t));
+    let tool = match (tip, robot.tool.as_ref()) {
+        (Some(tip), _) => pose(scalars, &tip.offset),
+        (None, Some(t)) => placement(scalars, t),
+        (None, None) => identity(zero),
+    };
     let steps: Vec<Frame<R::Scalar>> = (0..robot.dof())
         .map(|i| dh_transform(scalars, robot, i))
         .collect();
@@ -103,14 +125,15 @@ pub fn kinematics<R: RobotScalars>(scalars: &mut R, robot: &Robot) -> Kinematics
         links.push(frame.then(&pose(scalars, &robot.joints[i].link_pose)));
         frames.push(frame);
     }
-    let last = robot.joints.last().map(|j| pose(scalars, &j.link_pose));
+    let at = tip.map_or(robot.dof().checked_sub(1), |t| Some(t.joint));
+    let last = at.map(|i| pose(scalars, &robot.joints[i].link_pose));
     let end = last.map_or_else(|| identity(zero), |l| l.then(&tool));
-    let hand = frames.last().copied().unwrap_or(base).then(&end);
-    // Backward, Paul's U: the hand in D-H frame i, from frame n down its ancestors.
+    let hand = at.map_or(base, |i| frames[i]).then(&end);
+    // Backward, Paul's U: the hand in D-H frame i, from its joint's frame down its ancestors.
     let mut from = end;
     let mut hand_from_axis = vec![end; robot.dof()];
     let mut moves_hand = vec![false; robot.dof()];
-    let mut at = robot.dof().checked_sub(1);
+    let mut at = at;
     while let Some(i) = at {
         moves_hand[i] = true;
         if robot.convention == Convention::Modified {

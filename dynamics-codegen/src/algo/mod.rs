@@ -31,7 +31,7 @@ pub use energy::{kinetic_energy, potential_energy};
 pub use gravity::gravity_torques;
 pub use kinematics::{
     acceleration_bias_in_base, in_hand_axes, jacobian_in_base, jacobian_in_hand, joint_torques,
-    kinematics, Frame, Jacobian, Kinematics,
+    kinematics, tip_kinematics, Frame, Jacobian, Kinematics,
 };
 pub use ldlt::Ldlt;
 pub use projection::{projected_torques, LinkFrame, LinkFrames, Twist};

@@ -68,6 +68,7 @@ pub(crate) fn robot(specs: &[Spec], tree: bool) -> Robot {
         joints,
         base: crate::model::Pose::identity(),
         tool: None,
+        tips: Vec::new(),
     }
 }
 

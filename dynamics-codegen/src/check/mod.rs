@@ -106,6 +106,7 @@ mod tests {
             joints: masses.iter().map(|m| joint(*m)).collect(),
             base: Pose::identity(),
             tool: None,
+            tips: Vec::new(),
         }
     }
 

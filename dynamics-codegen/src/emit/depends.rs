@@ -33,7 +33,9 @@ pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
             Node::Var(Var::Q(_)) => Depends::Configuration,
             Node::Var(Var::Qd(_)) => Depends::Velocity,
             // A wrench or τ is read by its method alone, as late as q̈.
-            Node::Var(Var::Qdd(_) | Var::Wrench(_) | Var::Tau(_)) => Depends::Acceleration,
+            Node::Var(Var::Qdd(_) | Var::Wrench(_) | Var::TipWrench(_) | Var::Tau(_)) => {
+                Depends::Acceleration
+            }
             // A sine or cosine of `q_i`, or an operation: as late as its operands (a joint
             // angle's offset), `q` at least for the former.
             _ => {

@@ -16,6 +16,7 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
     let sizes = Sizes {
         joints: failure.dof,
         base: None,
+        tips: None,
     };
     let krate = runtime_path(failure.krate.as_ref());
     let impls = unreachable_impls(input, &sizes, &krate, |m| failure.families.has(m));
@@ -38,6 +39,7 @@ pub(crate) fn unreachable_family(
     let sizes = Sizes {
         joints: Some(joints),
         base: None,
+        tips: None,
     };
     unreachable_impls(input, &sizes, krate, |m| m.family() == family)
 }

@@ -36,11 +36,33 @@ fn unused_name(generics: &syn::Generics, names: &[&str], prefix: &str) -> Ident 
     Ident::new(&name, Span::call_site())
 }
 
-/// The counts a derive's types are written with: the number of joints (`N`) and of base
-/// parameters (`B`), each a literal or a const parameter of the impls.
+/// The counts a derive's types are written with: the number of joints (`N`), of base
+/// parameters (`B`) and of tips (`TIPS`), each a literal or a const parameter of the impls.
 pub struct Counts {
     pub joints: TokenStream,
     pub base: TokenStream,
+    pub tips: TokenStream,
+}
+
+impl Counts {
+    /// The count a family's trait takes after `N`, by the name its row gives it.
+    fn of(&self, parameter: &str) -> &TokenStream {
+        match parameter {
+            "TIPS" => &self.tips,
+            _ => &self.base,
+        }
+    }
+
+    /// What a result's types are written with, over scalar `t`.
+    fn instance<'a>(&'a self, t: &'a Ident, krate: &'a TokenStream) -> Instance<'a> {
+        Instance {
+            scalar: t,
+            n: &self.joints,
+            base: &self.base,
+            tips: &self.tips,
+            krate,
+        }
+    }
 }
 
 /// The counts the traits are implemented for: the robot's, or, where a derive failed before it
@@ -50,6 +72,7 @@ pub struct Counts {
 pub(super) struct Sizes {
     pub joints: Option<usize>,
     pub base: Option<usize>,
+    pub tips: Option<usize>,
 }
 
 impl Sizes {
@@ -64,7 +87,19 @@ impl Sizes {
             Some(b) => quote!(#b),
             None => unused_name(generics, &["B", "K"], "B").into_token_stream(),
         };
-        Counts { joints, base }
+        let tips = match self.tips {
+            Some(t) => quote!(#t),
+            None => unused_name(generics, &["TIPS"], "TIPS").into_token_stream(),
+        };
+        Counts { joints, base, tips }
+    }
+
+    /// Whether the count named `parameter` (a trait row's) is known.
+    fn knows(&self, parameter: &str) -> bool {
+        match parameter {
+            "TIPS" => self.tips.is_some(),
+            _ => self.base.is_some(),
+        }
     }
 }
 
@@ -102,7 +137,8 @@ pub(super) fn trait_impls(
     methods: impl Iterator<Item = (Method, TokenStream)>,
 ) -> TokenStream {
     let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
-    let Counts { joints: n, base } = sizes.counts(generics);
+    let counts = sizes.counts(generics);
+    let n = &counts.joints;
     let methods: Vec<(Method, TokenStream)> = methods.collect();
     let mut families: Vec<Family> = Family::ALL.to_vec();
     families.dedup_by_key(|f| f.trait_name());
@@ -112,20 +148,22 @@ pub(super) fn trait_impls(
             .iter()
             .filter(|(m, _)| m.family().trait_name() == name);
         let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
-        let has_count = family.count_parameter().is_some();
+        let count = family.count_parameter();
         // The struct's parameters as an impl writes them (no defaults), and the counts not known.
         let mut params: syn::Generics =
             syn::parse2(impl_generics.to_token_stream()).unwrap_or_default();
         if sizes.joints.is_none() {
             params.params.push(syn::parse_quote!(const #n: usize));
         }
-        if has_count && sizes.base.is_none() {
-            params.params.push(syn::parse_quote!(const #base: usize));
-        }
-        let counts = if has_count {
-            quote!(#n, #base)
-        } else {
-            quote!(#n)
+        let counts = match count {
+            Some(parameter) => {
+                let c = counts.of(parameter);
+                if !sizes.knows(parameter) {
+                    params.params.push(syn::parse_quote!(const #c: usize));
+                }
+                quote!(#n, #c)
+            }
+            None => quote!(#n),
         };
         let name = Ident::new(name, Span::call_site());
         (!fns.is_empty()).then(|| {
@@ -160,15 +198,14 @@ pub(super) fn signature(
         let name = argument_local(a);
         match a {
             Argument::Wrench => quote!(#name: &[#t; 6]),
+            Argument::Wrenches => {
+                let tips = &counts.tips;
+                quote!(#name: &[[#t; 6]; #tips])
+            }
             Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => quote!(#name: &[#t; #n]),
         }
     });
-    let at = Instance {
-        scalar: t,
-        n,
-        base: &counts.base,
-        krate,
-    };
+    let at = counts.instance(t, krate);
     let result = if rows {
         method.returns().rows_type(&at)
     } else {
@@ -187,12 +224,7 @@ pub(super) fn forward(
     t: &Ident,
     krate: &TokenStream,
 ) -> TokenStream {
-    let at = Instance {
-        scalar: t,
-        n: &counts.joints,
-        base: &counts.base,
-        krate,
-    };
+    let at = counts.instance(t, krate);
     method.returns().convert_rows(call, &at)
 }
 

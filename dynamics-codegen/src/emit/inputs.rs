@@ -20,6 +20,7 @@ impl Emitter<'_> {
             vec![false; n],
             vec![false; 6],
             vec![false; n],
+            vec![false; 6 * self.eq.tips.as_ref().map_or(0, |t| t.names.len())],
         ];
         for (id, node) in self.graph.nodes() {
             if !self.needed[id.index()] {
@@ -31,6 +32,7 @@ impl Emitter<'_> {
                 Node::Var(Var::Qdd(i)) => used[2][usize::from(i)] = true,
                 Node::Var(Var::Wrench(k)) => used[3][usize::from(k)] = true,
                 Node::Var(Var::Tau(i)) => used[4][usize::from(i)] = true,
+                Node::Var(Var::TipWrench(k)) => used[5][usize::from(k)] = true,
                 _ => {}
             }
         }
@@ -43,6 +45,8 @@ impl Emitter<'_> {
             ("wrench", Var::Wrench),
             ("tau", Var::Tau),
         ];
+        let mut used = Vec::from(used);
+        let wrenches = self.tip_wrenches(&used.pop().unwrap_or_default());
         kinds
             .iter()
             .zip(used)
@@ -59,7 +63,30 @@ impl Emitter<'_> {
                 });
                 quote!(let [#(#names),*] = *#array;)
             })
+            .chain(wrenches)
             .collect()
+    }
+
+    /// `let [[fx1, ..], [_, _, fz2, ..]] = *wrenches_;`: the components of the tips' wrenches
+    /// read (`used[6 t + k]`), if any.
+    fn tip_wrenches(&self, used: &[bool]) -> Option<TokenStream> {
+        if !used.contains(&true) {
+            return None;
+        }
+        let tips = used.chunks(6).enumerate().map(|(t, used)| {
+            let names = used.iter().enumerate().map(|(k, &u)| {
+                if u {
+                    let index = u16::try_from(6 * t + k).unwrap_or(u16::MAX);
+                    let v = self.variable_name(Var::TipWrench(index));
+                    quote!(#v)
+                } else {
+                    quote!(_)
+                }
+            });
+            quote!([#(#names),*])
+        });
+        let array = local("wrenches_");
+        Some(quote!(let [#(#tips),*] = *#array;))
     }
 
     /// The sines and cosines of the joints that need them, computed side by side: up to eight

@@ -36,6 +36,8 @@ pub struct Generated {
     pub dof: usize,
     /// Number of base parameters (zero unless the robot asked for them).
     pub base_count: usize,
+    /// The tips' names, where the robot has the tips' kinematics.
+    pub tip_names: Option<Vec<String>>,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
     /// The shared functions of each [`Family`] of methods, in the order of [`Family::ALL`]:
@@ -144,6 +146,11 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     Generated {
         dof: eq.dof,
         base_count: eq.base_parameters.as_ref().map_or(0, |b| b.values.len()),
+        tip_names: eq
+            .families
+            .contains(Family::Tips)
+            .then(|| eq.tips.as_ref().map(|t| t.names.clone()))
+            .flatten(),
         fields,
         modules,
         methods,
@@ -154,9 +161,11 @@ impl Generated {
     /// The counts its types are written with.
     fn counts(&self) -> Counts {
         let (dof, base) = (self.dof, self.base_count);
+        let tips = self.tip_names.as_ref().map_or(0, Vec::len);
         Counts {
             joints: quote!(#dof),
             base: quote!(#base),
+            tips: quote!(#tips),
         }
     }
 
@@ -227,7 +236,9 @@ impl Generated {
         let known = Sizes {
             joints: Some(self.dof),
             base: Some(self.base_count),
+            tips: Some(self.tip_names.as_ref().map_or(0, Vec::len)),
         };
+        let tip_names = self.tip_names.as_deref().map(super::tip_names::constants);
         let impls = trait_impls(krate, &known, ident, generics, fns);
         let fields = &self.fields;
         let reader = (k > 0).then(|| quote!(use #krate::__private::param;));
@@ -242,6 +253,7 @@ impl Generated {
                     #reader
                     [#(param(#fields)),*]
                 }
+                #tip_names
             }
             #impls
         };

@@ -60,6 +60,7 @@ mod program;
 mod shared;
 mod sum_order;
 mod sums;
+mod tip_names;
 
 pub use count::count;
 pub(crate) use equations::readable;

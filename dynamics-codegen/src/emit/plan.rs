@@ -100,6 +100,8 @@ pub(crate) fn leaf_name(v: Var, parameter: impl FnOnce(usize) -> String) -> Stri
         Var::CosQ(i) => format!("c{}", i + 1),
         Var::Param(k) => parameter(usize::from(k)),
         Var::Wrench(k) => WRENCH[usize::from(k)].to_owned(),
+        // Tip t's (from 1): `fx1`, `mz2`.
+        Var::TipWrench(k) => format!("{}{}", WRENCH[usize::from(k % 6)], k / 6 + 1),
         Var::Tau(i) => format!("tau{}", i + 1),
         // Placeholders of the regressor's and the base parameters' analyses, which no emitted
         // output reads.

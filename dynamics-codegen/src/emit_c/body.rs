@@ -34,6 +34,7 @@ pub(super) struct Reads {
     pub(super) qd: bool,
     pub(super) qdd: bool,
     pub(super) wrench: bool,
+    pub(super) wrenches: bool,
     pub(super) tau: bool,
 }
 
@@ -190,6 +191,7 @@ impl<'a> Writer<'a> {
                 Var::Qdd(i) => (("qdd", &mut reads.qdd), usize::from(i)),
                 Var::Param(k) => (("params", &mut reads.params), usize::from(k)),
                 Var::Wrench(k) => (("wrench", &mut reads.wrench), usize::from(k)),
+                Var::TipWrench(k) => (("wrenches", &mut reads.wrenches), usize::from(k)),
                 Var::Tau(i) => (("tau", &mut reads.tau), usize::from(i)),
                 // Computed by `sines_and_cosines`; the placeholders are never emitted.
                 Var::SinQ(_) | Var::CosQ(_) => {

@@ -66,7 +66,7 @@ pub fn functions(eq: &Equations, prefix: &str) -> Vec<Function> {
         let arguments = method
             .arguments()
             .iter()
-            .map(|&a| (a, if a == Argument::Wrench { 6 } else { eq.dof }))
+            .map(|&a| (a, argument_length(eq, a)))
             .collect::<Vec<_>>();
         for precision in Precision::ALL {
             functions.push(Function {
@@ -81,6 +81,16 @@ pub fn functions(eq: &Equations, prefix: &str) -> Vec<Function> {
         }
     }
     functions
+}
+
+/// The length of argument `a`'s array: a wrench's 6, the tips' wrenches one after the other
+/// (6 per tip), the joints' `n`.
+fn argument_length(eq: &Equations, a: Argument) -> usize {
+    match a {
+        Argument::Wrench => 6,
+        Argument::Wrenches => 6 * eq.tips.as_ref().map_or(0, |t| t.names.len()),
+        Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => eq.dof,
+    }
 }
 
 /// The arrays of a result of `shape` and what the function returns; `None` for a result
@@ -224,6 +234,7 @@ impl Function {
                 Argument::Qd => reads.qd,
                 Argument::Qdd => reads.qdd,
                 Argument::Wrench => reads.wrench,
+                Argument::Wrenches => reads.wrenches,
                 Argument::Tau => reads.tau,
             };
             if !read {

@@ -321,4 +321,15 @@ fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
             .to_owned(),
         "over n states: flat arrays of n rows, each row one state's array.".to_owned(),
     ]
+    .into_iter()
+    .chain(eq.tips.iter().flat_map(|tips| {
+        [
+            format!(
+                "The tips' functions take `wrenches`, 6 per tip one after the other; tips: {}.",
+                tips.names.join(", ")
+            ),
+            "Their results have one block per tip, in that order.".to_owned(),
+        ]
+    }))
+    .collect()
 }

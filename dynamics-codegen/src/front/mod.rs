@@ -329,10 +329,16 @@ fn finish(
         (Some(error), robot) => Err(Failure {
             error,
             dof: robot
-                .map(|r| r.dof())
+                .as_ref()
+                .map(Robot::dof)
                 .or_else(|| attrs.joint_count())
                 .filter(|n| *n > 0),
-            families,
+            // A tree's calls of its tips' methods compile too (for any number of tips).
+            families: if attrs.tips.is_some() || robot.as_ref().is_some_and(Robot::is_tree) {
+                families.with(crate::method::Family::Tips)
+            } else {
+                families
+            },
             krate: attrs.krate,
         }),
         (None, None) => Err(Failure {

@@ -92,7 +92,13 @@ mod tests {
         }
         assert_eq!(
             Family::opt_in_names(),
-            ["derivatives", "regressor", "simplify", "base_parameters"]
+            [
+                "derivatives",
+                "regressor",
+                "simplify",
+                "base_parameters",
+                "tip_kinematics"
+            ]
         );
         assert_eq!(default.opt_in().count(), 0);
         let asked = default.with(Family::Derivatives);

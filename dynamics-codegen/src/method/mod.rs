@@ -2,11 +2,13 @@
 //! arguments, result, documentation, the book's equation and the names and docs of its output
 //! elements; for each family, its trait, module and whether a robot must ask for it.
 //!
-//! The rows live in `dynamics-runtime/src/methods.rs` and `results.rs` (symlinked here), which
+//! The rows live in `dynamics-runtime/src/methods.rs`, `tip_methods.rs` and `results.rs`
+//! (symlinked here), which
 //! the runtime's traits and nalgebra wrappers are declared from, so the traits and the
 //! generator cannot disagree. The table is data: which output of the traced equations a
 //! method returns is the trace's to say (`Method::shape`).
 
+include!("tip_methods.rs");
 include!("methods.rs");
 include!("results.rs");
 
@@ -30,6 +32,8 @@ pub enum Argument {
     Qdd,
     /// A wrench `[fx, fy, fz, mx, my, mz]`.
     Wrench,
+    /// A wrench at each tip, `&[[T; 6]; TIPS]`.
+    Wrenches,
     /// Joint torques and forces.
     Tau,
 }
@@ -43,6 +47,7 @@ impl Argument {
             Argument::Qd => "qd",
             Argument::Qdd => "qdd",
             Argument::Wrench => "wrench",
+            Argument::Wrenches => "wrenches",
             Argument::Tau => "tau",
         }
     }
@@ -61,6 +66,9 @@ macro_rules! argument {
     };
     (wrench) => {
         Argument::Wrench
+    };
+    (wrenches) => {
+        Argument::Wrenches
     };
     (tau) => {
         Argument::Tau

@@ -59,6 +59,8 @@ pub struct Instance<'a> {
     pub n: &'a TokenStream,
     /// The number of base parameters, likewise (read by `DynamicsBaseParameters` only).
     pub base: &'a TokenStream,
+    /// The number of tips, likewise (read by `TipKinematics` only).
+    pub tips: &'a TokenStream,
     /// The runtime crate's path.
     pub krate: &'a TokenStream,
 }
@@ -117,6 +119,7 @@ impl Instance<'_> {
             "T" => TokenTree::Ident(self.scalar.clone()).into(),
             "N" => self.n.clone(),
             "B" => self.base.clone(),
+            "TIPS" => self.tips.clone(),
             "value" => value.cloned().unwrap_or_else(|| quote!(#ident)),
             "Result" => quote!(::core::result::Result),
             "Option" => quote!(::core::option::Option),

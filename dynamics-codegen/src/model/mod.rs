@@ -10,6 +10,7 @@ mod arith;
 mod envelope;
 mod frame;
 mod lower;
+mod tip;
 mod value;
 
 pub use envelope::{Envelope, JointEnvelope, Simplification};
@@ -21,6 +22,7 @@ pub use lower::{
     lower_frames, FramePart, FrameProblem, AXIS_COMPONENT_TOLERANCE, AXIS_LENGTH_TOLERANCE,
     NOISE_TOLERANCE, PARALLEL_TOLERANCE,
 };
+pub use tip::Tip;
 pub use value::Value;
 
 /// Revolute or prismatic.
@@ -190,6 +192,9 @@ pub struct Robot {
     pub base: Pose,
     /// The tool (hand) frame in the user's link frame n, if one is declared.
     pub tool: Option<Placement>,
+    /// The tips the description names (a URDF's), in order; empty where it names none (see
+    /// [`Robot::tip_frames`]).
+    pub tips: Vec<Tip>,
 }
 
 impl Robot {

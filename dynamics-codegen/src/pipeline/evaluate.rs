@@ -74,7 +74,7 @@ impl Equations {
                 Var::Qdd(i) => qdd[usize::from(i)],
                 Var::Param(k) => fields[usize::from(k)],
                 Var::Tau(i) => tau.get(usize::from(i)).copied().unwrap_or(0.0),
-                Var::Wrench(_) => 0.0,
+                Var::Wrench(_) | Var::TipWrench(_) => 0.0,
                 // The regressor's placeholders: the equations' outputs never read them.
                 Var::Inertial(_) | Var::Exact(_) => 0.0,
             }

@@ -107,6 +107,7 @@ impl Sym {
             Var::Param(k) => Sym::Param(fields.get(usize::from(k))?.clone()),
             // Printed as the book names the wrench's components.
             Var::Wrench(k) => Sym::Param((*WRENCH.get(usize::from(k))?).to_owned()),
+            Var::TipWrench(k) => Sym::Param(format!("{}{}", WRENCH[usize::from(k % 6)], k / 6 + 1)),
             Var::Tau(i) => Sym::Param(format!("T{}", i + 1)),
             Var::Inertial(k) => Sym::Param(format!("pi{}_{}", k / 10 + 1, k % 10 + 1)),
             Var::Exact(k) => Sym::Param(format!("constant{k}")),

@@ -40,6 +40,8 @@ pub enum Var {
     Wrench(u16),
     /// Joint torque or force `τ_i` (an argument of the forward dynamics).
     Tau(u16),
+    /// Component `k % 6` of the wrench at tip `k / 6` (an argument of the tips' statics).
+    TipWrench(u16),
     /// Standard inertial parameter `k % 10` of link `k / 10`: a placeholder of the regressor's
     /// trace, replaced by 0 or 1 for each of its columns and never emitted.
     Inertial(u16),

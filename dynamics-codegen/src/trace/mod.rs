@@ -39,6 +39,7 @@ mod newton_euler;
 mod outputs;
 mod regressor;
 mod simplified;
+mod tips;
 mod tracer;
 #[cfg(test)]
 mod tree_tests;
@@ -58,6 +59,7 @@ pub use outputs::Shape;
 pub use regressor::RegressorEquations;
 pub use simplified::{Elements, Fallback, PrunedElement, SimplifiedEquations, SimplifiedOutput};
 use std::cell::RefCell;
+pub use tips::TipEquations;
 use tracer::Tracer;
 
 /// The closed-form equations of a robot: node ids into [`Equations::graph`].
@@ -112,13 +114,21 @@ pub struct Equations {
     pub base_parameters: Option<BaseParameters>,
     /// The pruned τ, M and g, where asked for and built by [`crate::simplify::add`].
     pub simplified: Option<SimplifiedEquations>,
+    /// The kinematics of every tip, where asked for (every tree asks): [`Equations::add_tips`].
+    pub tips: Option<TipEquations>,
 }
 
 impl Equations {
     /// Traces the opt-in families of `families` not traced yet for `robot` (the robot these
     /// equations are of), after every other output, in the table's order, so that the outputs
     /// traced before keep their nodes.
+    /// A tree has its tips' kinematics whether it asks or not.
     pub fn add_families(&mut self, robot: &Robot, families: FamilySet) {
+        let families = if robot.is_tree() {
+            families.with(Family::Tips)
+        } else {
+            families
+        };
         for family in families.opt_in() {
             if self.families.contains(family) {
                 continue;
@@ -126,6 +136,7 @@ impl Equations {
             match family {
                 Family::Derivatives => self.add_derivatives(),
                 Family::Regressor => self.add_regressor(robot),
+                Family::Tips => self.add_tips(robot),
                 Family::BaseParameters => {
                     let joints: Vec<JointColumns> =
                         robot.joints.iter().map(JointColumns::described).collect();
@@ -203,5 +214,6 @@ pub fn derive(robot: &Robot) -> Equations {
         regressor: None,
         base_parameters: None,
         simplified: None,
+        tips: None,
     }
 }

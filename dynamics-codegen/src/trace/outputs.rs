@@ -1,7 +1,7 @@
 //! Where a method's result lies in the traced graph: its [`Shape`], which output of the
 //! [`Equations`] each method returns ([`Method::shape`]), and whether the derive writes it.
 
-use super::{Elements, Equations};
+use super::{Elements, Equations, TipEquations};
 use crate::method::Method;
 use crate::symbolic::{NodeId, Tangents};
 
@@ -106,6 +106,9 @@ impl Shape<'_> {
     }
 }
 
+/// The tips of a robot whose tips were not traced.
+static NO_TIPS: TipEquations = TipEquations::NONE;
+
 impl Method {
     /// The outputs of `eq` it returns.
     #[must_use]
@@ -187,6 +190,8 @@ impl Method {
                 vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
                 stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
             },
+            // The tips' (`TipEquations::shape` tells them apart).
+            tips => eq.tips.as_ref().unwrap_or(&NO_TIPS).shape(tips),
         }
     }
 

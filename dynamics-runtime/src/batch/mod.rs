@@ -46,7 +46,7 @@ pub use layout::{States, StatesMut};
 pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
-    DynamicsSimplifiedBatch,
+    DynamicsSimplifiedBatch, TipKinematicsBatch,
 };
 
 use crate::lanes::{Lanes, SplitLanes};

@@ -49,7 +49,10 @@ fn python_type(returns: Returns) -> String {
         | Returns::BaseColumns
         | Returns::BaseVector
         | Returns::BaseLinkMap
-        | Returns::BaseJointMap => ARRAY.to_owned(),
+        | Returns::BaseJointMap
+        | Returns::TipPoses
+        | Returns::TipJacobians
+        | Returns::TipSpatials => ARRAY.to_owned(),
     }
 }
 

@@ -20,6 +20,15 @@ pub fn calls(robot: &Robot, states: usize) -> String {
          qd_all_f[s][i] = (float)qd[s][i];\n                qdd_all_f[s][i] = (float)qdd[s][i];\n                \
          tau_all_f[s][i] = (float)tau[s][i];\n            }}\n        }}\n"
     );
+    if let Some(w) = super::tip_wrenches_length(robot) {
+        c.push_str(&format!(
+            "        static double wrenches_all[{states}][{w}];\n        \
+             static float wrenches_all_f[{states}][{w}];\n        \
+             for (s = 0; s < {states}; ++s) for (i = 0; i < {w}; ++i) {{\n            \
+             wrenches_all[s][i] = wrenches[i];\n            \
+             wrenches_all_f[s][i] = (float)wrenches[i];\n        }}\n"
+        ));
+    }
     for f in &robot.functions {
         c.push_str(&call(f, states));
     }
@@ -41,6 +50,7 @@ fn call(f: &Function, states: usize) -> String {
         let name = a.name();
         args.push(match (a, f.precision) {
             (Argument::Wrench, _) => format!("&wrench_all{suffix}[0][0]"),
+            (Argument::Wrenches, _) => format!("&wrenches_all{suffix}[0][0]"),
             (_, Precision::Double) => format!("&{name}[0][0]"),
             (_, Precision::Single) => format!("&{name}_all_f[0][0]"),
         });

@@ -37,6 +37,19 @@ pub struct State {
     pub tau: Vec<f64>,
 }
 
+/// Component `k` of the tips' wrenches the tips' statics are called with: tip t's is
+/// [`WRENCH`] times t + 1.
+pub fn tip_wrench(k: usize) -> f64 {
+    WRENCH[k % 6] * (k / 6 + 1) as f64
+}
+
+/// The length of the driver's `wrenches` array, 6 per tip, where the robot has tips (a
+/// variable the driver sets but no function reads would be an error under `-Werror`).
+pub fn tip_wrenches_length(robot: &Robot) -> Option<usize> {
+    let tips = robot.eq.tips.as_ref()?.names.len();
+    (tips > 0).then_some(6 * tips)
+}
+
 /// The wrench every statics function is called with.
 pub const WRENCH: [f64; 6] = [3.0, -2.0, 5.0, 0.5, -0.25, 1.5];
 
@@ -172,6 +185,14 @@ pub fn driver(robot: &Robot, states: &[State]) -> String {
             rows.join(", ")
         ));
     }
+    if let Some(w) = tip_wrenches_length(robot) {
+        let tips: Vec<f64> = (0..w).map(tip_wrench).collect();
+        c.push_str(&format!(
+            "    static const double wrenches[{w}] = {};\n    float wrenches_f[{w}];\n    \
+             for (i = 0; i < {w}; ++i) wrenches_f[i] = (float)wrenches[i];\n",
+            c_array(&tips)
+        ));
+    }
     let k = robot.params.len();
     if k > 0 {
         c.push_str(&format!(
@@ -209,6 +230,8 @@ pub fn call(f: &Function) -> String {
     };
     let inputs = f.arguments.iter().map(|&(a, _)| match (a, f.precision) {
         (Argument::Wrench, Precision::Double) => "wrench".to_owned(),
+        (Argument::Wrenches, Precision::Double) => "wrenches".to_owned(),
+        (Argument::Wrenches, Precision::Single) => "wrenches_f".to_owned(),
         (a, _) => format!("{}{at}", a.name()),
     });
     let mut args: Vec<String> = (f.parameters > 0)
@@ -352,6 +375,7 @@ pub fn evaluate(eq: &Equations, params: &[f64], state: &State) -> Vec<f64> {
             Var::Qdd(k) => state.qdd[i(k)],
             Var::Tau(k) => state.tau[i(k)],
             Var::Wrench(k) => WRENCH[i(k)],
+            Var::TipWrench(k) => tip_wrench(i(k)),
             Var::Param(k) => params[i(k)],
             Var::Inertial(_) | Var::Exact(_) => f64::NAN,
         }

@@ -72,6 +72,7 @@ pub(super) fn lower(
         joints,
         base: Pose::identity(),
         tool,
+        tips: Vec::new(),
     };
     if let (None, Some((list, _))) = (&attrs.dh, &attrs.joints) {
         robot.convention = Convention::Standard;

@@ -146,6 +146,7 @@ pub(super) fn convert(
             joints,
             base: Pose::identity(),
             tool,
+            tips: Vec::new(),
         },
         check_inertia,
         sources: Positions::default(),

@@ -11,8 +11,8 @@ use crate::check;
 use crate::front::errors::FileError;
 use crate::front::sources::At;
 use crate::model::{
-    AxisFrame, Branch, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Value,
-    AXIS_LENGTH_TOLERANCE,
+    AxisFrame, Branch, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Tip,
+    Value, AXIS_LENGTH_TOLERANCE,
 };
 use std::collections::BTreeMap;
 
@@ -39,6 +39,7 @@ pub(super) fn build(
     let mut joints = Vec::new();
     let mut positions = Vec::new();
     let (segments, tip) = segments(tree, chain);
+    let tips = tips(tree, chain, &segments);
     let parents: Vec<Option<usize>> = segments.iter().map(|s| s.parent).collect();
     for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
@@ -74,6 +75,7 @@ pub(super) fn build(
             xyz: tip.translation.clone(),
             rpy: rpy_of(&tip.rotation),
         }),
+        tips,
     };
     Ok((robot, positions))
 }
@@ -115,6 +117,41 @@ fn segments(tree: &Tree, chain: &Chain) -> (Vec<Segment>, Pose) {
         (*segment == last).then(|| pose.clone())
     });
     (segments, tool.unwrap_or_default())
+}
+
+/// The tips: the links `chain` names, each on the segment whose body it is part of (a link
+/// fixed to the base has none, and is left out), else the leaf segments' child links.
+fn tips(tree: &Tree, chain: &Chain, segments: &[Segment]) -> Vec<Tip> {
+    let named = |link: usize| tree.doc.links[link].name.clone();
+    if chain.tips.is_empty() {
+        let carries = |s: usize| segments.iter().any(|c| c.parent == Some(s));
+        return (0..segments.len())
+            .filter(|&s| !carries(s))
+            .map(|joint| Tip {
+                name: named(tree.child(segments[joint].joint)),
+                joint,
+                offset: Pose::identity(),
+            })
+            .collect();
+    }
+    let part_of = |link: usize| {
+        segments.iter().enumerate().find_map(|(s, segment)| {
+            let (_, pose) = segment.parts.iter().find(|(l, _)| *l == link)?;
+            Some((s, pose.clone()))
+        })
+    };
+    chain
+        .tips
+        .iter()
+        .filter_map(|&link| {
+            let (joint, offset) = part_of(link)?;
+            Some(Tip {
+                name: named(link),
+                joint,
+                offset,
+            })
+        })
+        .collect()
 }
 
 /// Adds `link` at `pose` and every link fixed to it, except through the joints `kept` (walked

@@ -162,6 +162,7 @@ pub(super) fn random_robot(rng: &mut Rng) -> Robot {
         joints: (0..=rng.below(7)).map(|_| random_joint(rng)).collect(),
         base: Pose::identity(),
         tool: None,
+        tips: Vec::new(),
     }
 }
 
@@ -307,6 +308,7 @@ fn ur5() -> Robot {
             .collect(),
         base: Pose::identity(),
         tool: None,
+        tips: Vec::new(),
     }
 }
 

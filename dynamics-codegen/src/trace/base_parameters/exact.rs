@@ -31,7 +31,13 @@ pub(super) fn relations(
         !mask[id.index()]
             || !matches!(
                 node,
-                Node::Var(Var::Param(_) | Var::Wrench(_) | Var::Tau(_) | Var::Inertial(_))
+                Node::Var(
+                    Var::Param(_)
+                        | Var::Wrench(_)
+                        | Var::TipWrench(_)
+                        | Var::Tau(_)
+                        | Var::Inertial(_)
+                )
             )
     });
     if !only_joint_variables {

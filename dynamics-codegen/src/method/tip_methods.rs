@@ -1,0 +1,1 @@
+../../../dynamics-runtime/src/tip_methods.rs
