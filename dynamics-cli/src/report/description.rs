@@ -8,22 +8,17 @@
 //! estimated replace `actuator_inertia` (and a `rotor_inertia`, `gear_ratio` pair),
 //! `friction_viscous`, `friction_coulomb`, `friction_offset`.
 
+use super::toml_joints::JointEdits;
 use dynamics_codegen::Parameter;
 use dynamics_identification::identify::about_com::about_com;
-use toml_edit::{value, Array, DocumentMut};
 
 /// `text` (a TOML description) with the standard parameters `values` (`parameters`' order)
 /// written into its joints.
 ///
 /// # Errors
-/// The text is not TOML, or its joints are not the robot's.
+/// The text is not TOML, its joints are not the robot's, or a value is not finite.
 pub fn rewrite(text: &str, parameters: &[Parameter], values: &[f64]) -> Result<String, String> {
-    let mut doc: DocumentMut = text.parse().map_err(|e| format!("{e}"))?;
-    let joints = doc
-        .get_mut("joints")
-        .and_then(|j| j.as_array_of_tables_mut())
-        .ok_or("the description has no [[joints]] tables")?;
-    let array = |xs: &[f64]| value(xs.iter().copied().collect::<Array>());
+    let mut joints = JointEdits::new(text)?;
     let links = parameters
         .iter()
         .filter(|p| matches!(p, Parameter::Link { index: 0, .. }))
@@ -34,21 +29,24 @@ pub fn rewrite(text: &str, parameters: &[Parameter], values: &[f64]) -> Result<S
             joints.len()
         ));
     }
-    for (l, table) in joints.iter_mut().enumerate() {
+    for l in 0..links {
         let (mass, com, inertia) = about_com(&values[10 * l..10 * l + 10]);
-        table["mass"] = value(mass);
-        table["com"] = array(&com);
-        table["inertia"] = array(&inertia);
-        table.remove("check_inertia");
+        let joint = l + 1;
+        joints.set(l, "mass", number(mass, joint, "mass")?);
+        joints.set(l, "com", array(&com, joint, "com")?);
+        joints.set(l, "inertia", array(&inertia, joint, "inertia")?);
+        joints.remove(l, "check_inertia");
     }
     for (p, &x) in parameters.iter().zip(values) {
         let Parameter::Joint { joint, index } = *p else {
             continue;
         };
-        let table = joints.get_mut(joint).ok_or("a joint term of no joint")?;
+        if joint >= links {
+            return Err(format!("a joint term of joint {}, of no joint", joint + 1));
+        }
         if index == 0 {
-            table.remove("rotor_inertia");
-            table.remove("gear_ratio");
+            joints.remove(joint, "rotor_inertia");
+            joints.remove(joint, "gear_ratio");
         }
         let key = [
             "actuator_inertia",
@@ -56,9 +54,37 @@ pub fn rewrite(text: &str, parameters: &[Parameter], values: &[f64]) -> Result<S
             "friction_coulomb",
             "friction_offset",
         ][index];
-        table[key] = value(x);
+        joints.set(joint, key, number(x, joint + 1, key)?);
     }
-    Ok(doc.to_string())
+    Ok(joints.finish())
+}
+
+/// `x` as a TOML float that reads back as `x` (`1.0`, `0.25`, `1e-19`).
+///
+/// # Errors
+/// `x` is not finite: the estimate of `key` of joint `joint` (1-based) failed.
+fn number(x: f64, joint: usize, key: &str) -> Result<String, String> {
+    if x == 0.0 {
+        // Not `-0.0`, which reads as a sign that matters.
+        Ok("0.0".to_string())
+    } else if x.is_finite() {
+        // `Debug` writes the shortest digits that read back as `x`, with a `.0` or an exponent
+        // that keeps it a TOML float.
+        Ok(format!("{x:?}"))
+    } else {
+        Err(format!(
+            "the estimate's `{key}` of joint {joint} is {x}, not a number to write"
+        ))
+    }
+}
+
+/// `xs` as a TOML array of floats.
+fn array(xs: &[f64], joint: usize, key: &str) -> Result<String, String> {
+    let items: Vec<String> = xs
+        .iter()
+        .map(|&x| number(x, joint, key))
+        .collect::<Result<_, _>>()?;
+    Ok(format!("[{}]", items.join(", ")))
 }
 
 #[cfg(test)]
@@ -84,6 +110,54 @@ mod tests {
             -s[1][2],
             trace - s[2][2],
         ]
+    }
+
+    /// A link and its joint terms written over a description's values, by hand: the link's
+    /// mass, centre of mass and inertia about it (exact in binary, so each is written as it
+    /// is), the geared drive replaced by its actuator inertia, the unchecked inertia checked,
+    /// friction added; the comments stay.
+    #[test]
+    fn values_are_written_in_place_of_the_descriptions() {
+        let text = "\
+gravity = [0, 0, -9.81]
+[[joints]]
+type = \"revolute\"
+mass = 1   # kg
+com = [0, 0, 0]
+inertia = [1, 1, 1, 0, 0, 0]
+check_inertia = false
+rotor_inertia = 1e-4  # the motor's
+gear_ratio = 100
+";
+        let mut parameters: Vec<Parameter> = (0..10)
+            .map(|index| Parameter::Link { link: 0, index })
+            .collect();
+        parameters.extend((0..2).map(|index| Parameter::Joint { joint: 0, index }));
+        let mut values = standard(
+            2.0,
+            [0.0, 0.0, 0.5],
+            [[0.25, 0.0, 0.0], [0.0, 0.5, 0.0], [0.0, 0.0, 0.125]],
+        )
+        .to_vec();
+        values.extend([0.0625, 0.5]);
+        let expected = "\
+gravity = [0, 0, -9.81]
+[[joints]]
+type = \"revolute\"
+mass = 2.0   # kg
+com = [0.0, 0.0, 0.5]
+inertia = [0.625, 0.375, 0.75, 0.0, 0.0, 0.0]
+actuator_inertia = 0.0625
+friction_viscous = 0.5
+";
+        assert_eq!(rewrite(text, &parameters, &values).as_deref(), Ok(expected));
+        values[11] = f64::NAN;
+        assert_eq!(
+            rewrite(text, &parameters, &values),
+            Err(
+                "the estimate's `friction_viscous` of joint 1 is NaN, not a number to write".into()
+            )
+        );
     }
 
     /// Links on the edge of the cone J ⪰ 0, as the consistent estimate leaves poorly excited

@@ -7,3 +7,4 @@ pub mod excite;
 pub mod identify;
 pub mod identify_figure;
 pub mod sizing;
+mod toml_joints;

@@ -1,6 +1,7 @@
 //! A target built without a test harness (`test = false` in its `Cargo.toml`, which saves
-//! `cargo test` compiling it a second time) holds no tests: one added there later would never
-//! run, so this fails instead.
+//! `cargo test` compiling it a second time) holds no tests, and a library whose documentation
+//! is not tested (`doctest = false`) no examples: one added there later would never run, so
+//! this fails instead.
 
 use crate::layout::rust_files;
 use std::path::{Path, PathBuf};
@@ -17,15 +18,15 @@ fn manifests(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// The sources of each `[lib]` or `[[bin]]` section of `manifest` that says `test = false`,
-/// one list per section.
-fn unharnessed_sources(manifest: &Path) -> Vec<Vec<PathBuf>> {
+/// The sources of each `[lib]` or `[[bin]]` section of `manifest` that has the line `setting`
+/// (`test = false`), one list per section.
+fn sources_saying(manifest: &Path, setting: &str) -> Vec<Vec<PathBuf>> {
     let package = manifest.parent().expect("a package folder");
     let text = std::fs::read_to_string(manifest).expect("read Cargo.toml");
     let mut sources = Vec::new();
     for section in text.split("\n[").skip(1) {
         let (header, body) = section.split_once('\n').unwrap_or((section, ""));
-        if !body.lines().any(|l| l.trim() == "test = false") {
+        if !body.lines().any(|l| l.trim() == setting) {
             continue;
         }
         let value = |key: &str| {
@@ -60,7 +61,10 @@ fn targets_without_a_harness_hold_no_tests() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let mut found = Vec::new();
     manifests(&root, &mut found);
-    let targets: Vec<Vec<PathBuf>> = found.iter().flat_map(|m| unharnessed_sources(m)).collect();
+    let targets: Vec<Vec<PathBuf>> = found
+        .iter()
+        .flat_map(|m| sources_saying(m, "test = false"))
+        .collect();
     // The libraries and binaries whose manifests say so: the benchmarks', the examples', the
     // reference's, the derive's, the test support's, the command's binary, Python's.
     assert!(targets.len() >= 9, "found only {targets:?}");
@@ -77,5 +81,35 @@ fn targets_without_a_harness_hold_no_tests() {
         with_tests.is_empty(),
         "these sources hold tests that `test = false` in their Cargo.toml never runs: \
          {with_tests:#?}"
+    );
+}
+
+#[test]
+fn libraries_without_doctests_hold_no_examples() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut found = Vec::new();
+    manifests(&root, &mut found);
+    let targets: Vec<PathBuf> = found
+        .iter()
+        .flat_map(|m| sources_saying(m, "doctest = false"))
+        .flatten()
+        .collect();
+    // The derive's and Python's.
+    assert!(targets.len() >= 2, "found only {targets:?}");
+    let with_examples: Vec<String> = targets
+        .iter()
+        .filter(|f| {
+            let text = std::fs::read_to_string(f).unwrap_or_else(|e| panic!("{f:?}: {e}"));
+            text.lines().any(|l| {
+                let l = l.trim_start();
+                (l.starts_with("///") || l.starts_with("//!")) && l[3..].trim().starts_with("```")
+            })
+        })
+        .map(|f| f.display().to_string())
+        .collect();
+    assert!(
+        with_examples.is_empty(),
+        "these sources hold examples that `doctest = false` in their Cargo.toml never runs: \
+         {with_examples:#?}"
     );
 }
