@@ -102,7 +102,9 @@ pub(super) fn convert(
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
     let branches = super::tree::branches(&file.joints, convention, frames_given, &mut deferred);
-    for ((i, j), branch) in file.joints.into_iter().enumerate().zip(branches) {
+    let mimics = super::tree::mimics(&file.joints, &mut deferred);
+    let per_joint = branches.into_iter().zip(mimics);
+    for ((i, j), (branch, mimic)) in file.joints.into_iter().enumerate().zip(per_joint) {
         deferred.extend(angle_problems(i, &j));
         let kind = match j.kind {
             FileKind::Revolute => JointKind::Revolute,
@@ -135,6 +137,7 @@ pub(super) fn convert(
         joints.push(Joint {
             frame,
             branch,
+            mimic,
             ..Joint::dh(kind, row, link)
         });
     }

@@ -1,9 +1,11 @@
 //! Trees in a description file: each joint's `parent` (an earlier joint's 1-based number, 0
 //! for the base, or its `name`; by default the joint before) and, in a modified D-H table,
-//! Khalil-Kleinfinger's `gamma` and `b`. Each mistake is deferred to its joint's key.
+//! Khalil-Kleinfinger's `gamma` and `b`; a mimic joint's `mimic = { joint = .., multiplier =
+//! .., offset = .. }` (the joint followed by number or name, before or after it). Each mistake
+//! is deferred to its joint's key.
 
 use super::schema::{Deferred, FileJoint};
-use crate::model::{snap_angle, Branch, Convention, Value};
+use crate::model::{snap_angle, Branch, Convention, Mimic, Value};
 use std::collections::BTreeMap;
 
 /// A joint's `parent`: a number or a name, as written.
@@ -43,6 +45,60 @@ impl serde::de::Visitor<'_> for ParentVisitor {
     fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<FileParent, E> {
         Ok(FileParent::Name(name.to_string()))
     }
+}
+
+/// Per joint, its mimic rule, with every problem deferred to its `mimic` key (the model's
+/// check refuses a mimic of a mimic joint and a mimic of the other kind).
+pub(super) fn mimics(joints: &[FileJoint], deferred: &mut Vec<Deferred>) -> Vec<Option<Mimic>> {
+    if joints.iter().all(|j| j.mimic.is_none()) {
+        return vec![None; joints.len()];
+    }
+    let names: BTreeMap<&str, usize> = joints
+        .iter()
+        .enumerate()
+        .filter_map(|(i, j)| Some((j.name.as_deref()?, i)))
+        .collect();
+    let count = joints.len();
+    let value = |v: &Option<super::schema::FileValue>, default: Value| {
+        v.as_ref().map_or(default, |v| v.0.clone())
+    };
+    let mut mimics = Vec::with_capacity(count);
+    for (i, j) in joints.iter().enumerate() {
+        let Some(m) = &j.mimic else {
+            mimics.push(None);
+            continue;
+        };
+        let followed = match &m.joint {
+            FileParent::Number(n) => usize::try_from(*n)
+                .ok()
+                .filter(|n| (1..=count).contains(n))
+                .map(|n| n - 1)
+                .ok_or_else(|| format!("mimic joint {n}: there is no joint {n} (the file has {count}, numbered from 1)")),
+            FileParent::Name(name) => names
+                .get(name.as_str())
+                .copied()
+                .ok_or_else(|| format!("mimic joint `{name}`: no joint has that name")),
+        };
+        let followed = followed.and_then(|k| {
+            if k == i {
+                Err("a joint cannot mimic itself".to_string())
+            } else {
+                Ok(k)
+            }
+        });
+        match followed {
+            Ok(k) => mimics.push(Some(Mimic {
+                joint: k,
+                multiplier: value(&m.multiplier, Value::num(crate::symbolic::Number::ONE)),
+                offset: value(&m.offset, Value::zero()),
+            })),
+            Err(message) => {
+                deferred.push((i, "mimic", message));
+                mimics.push(None);
+            }
+        }
+    }
+    mimics
 }
 
 /// Whether some joint gives `name`, `parent`, `gamma` or `b`.

@@ -40,6 +40,7 @@ pub(super) fn build(
     let mut positions = Vec::new();
     let (segments, tip) = segments(tree, chain);
     let parents: Vec<Option<usize>> = segments.iter().map(|s| s.parent).collect();
+    let urdf_joints: Vec<usize> = segments.iter().map(|s| s.joint).collect();
     for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
         match joint(tree, segment) {
@@ -49,6 +50,9 @@ pub(super) fn build(
             }
             Err(e) => errors.extend(e),
         }
+    }
+    if errors.is_empty() {
+        errors = super::mimic::resolve(tree.doc, &urdf_joints, &mut joints);
     }
     if !errors.is_empty() {
         return Err(errors);
