@@ -124,13 +124,15 @@ fn check(robot: &Robot) {
     let (eq, _) = equations(robot, families, None);
     let (eq_full, _) = equations(&free, families, None);
     assert_eq!((eq.dof, eq_full.dof), (n, robot.dof()));
-    let state = |q: &[f64], qd: &[f64], qdd: &[f64]| State {
-        fields: &[],
-        q,
-        qd,
-        qdd,
-        tau: &[],
-    };
+    fn state<'a>(q: &'a [f64], qd: &'a [f64], qdd: &'a [f64]) -> State<'a> {
+        State {
+            fields: &[],
+            q,
+            qd,
+            qdd,
+            tau: &[],
+        }
+    }
     let (fq, fqd, fqdd) = (full(q, true), full(qd, false), full(qdd, false));
     let at = eq.evaluate(&State {
         tau,
