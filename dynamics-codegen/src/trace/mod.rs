@@ -128,6 +128,8 @@ impl Equations {
             }
             match family {
                 Family::Derivatives => self.add_derivatives(),
+                // Not traced for mimic joints: the caller says so ([`MIMIC_UNSUPPORTED`]).
+                Family::Regressor | Family::BaseParameters if robot.has_mimics() => {}
                 Family::Regressor => self.add_regressor(robot),
                 Family::BaseParameters => {
                     let joints: Vec<JointColumns> =
@@ -147,6 +149,12 @@ impl Equations {
         }
     }
 }
+
+/// Why the regressor, the base parameters and the simplified models are not traced for a
+/// robot with mimic joints: their parameters are per link, their rows per coordinate.
+pub const MIMIC_UNSUPPORTED: &str = "is not supported for a robot with mimic joints yet (the \
+     parameters are per link, the rows per coordinate); every other family is, in the reduced \
+     coordinates";
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
 /// the table is not empty.
