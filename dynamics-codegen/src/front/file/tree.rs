@@ -321,4 +321,59 @@ mod tests {
             assert!(e.message.contains(message), "{e}\n{text}");
         }
     }
+
+    /// `mimic = { joint = .., multiplier = .., offset = .. }` by number or name, either side;
+    /// each mistake at its `mimic` key, a mimic of a mimic at the joint (the model's check).
+    #[test]
+    fn mimic_joints_and_their_mistakes() {
+        let frame = "type = \"revolute\"\naxis = [0, 0, 1]";
+        let toml = toml_joints(&[
+            "type = \"revolute\"\nmimic = { joint = \"b\", multiplier = -0.5, offset = 0.1 }",
+            "name = \"b\"\ntype = \"revolute\"\norigin = { xyz = [1, 0, 0] }",
+            "type = \"revolute\"\nmimic = { joint = 2 }\norigin = { xyz = [0, 1, 0] }",
+        ]);
+        let robot = from_toml(&toml, "x").unwrap();
+        let rules: Vec<Option<(usize, String, String)>> = robot
+            .joints
+            .iter()
+            .map(|j| {
+                let m = j.mimic.as_ref()?;
+                Some((m.joint, m.multiplier.to_string(), m.offset.to_string()))
+            })
+            .collect();
+        let first = Some((1, "-1/2".to_string(), "1/10".to_string()));
+        assert_eq!(rules, [first, None, Some((1, "1".into(), "0".into()))]);
+        assert_eq!(robot.coordinates(), [1]);
+        let cases: [(String, &str, &str); 4] = [
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = 5 }"]),
+                "mimic",
+                "joint 2: mimic joint 5: there is no joint 5 (the file has 2",
+            ),
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = 2 }"]),
+                "mimic",
+                "joint 2: a joint cannot mimic itself",
+            ),
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = \"z\" }"]),
+                "mimic",
+                "mimic joint `z`: no joint has that name",
+            ),
+            (
+                toml_joints(&[
+                    frame,
+                    "type = \"revolute\"\nmimic = { joint = 1, gain = 2 }",
+                ]),
+                "gain",
+                "unknown field `gain`",
+            ),
+        ];
+        for (text, at, message) in cases {
+            let e = from_toml(&text, "x").expect_err(&text);
+            let line = text[..text.rfind(at).unwrap()].matches('\n').count() + 1;
+            assert_eq!(e.line, Some(line), "{e}\n{text}");
+            assert!(e.message.contains(message), "{e}\n{text}");
+        }
+    }
 }
