@@ -280,3 +280,46 @@ fn a_chain_whose_last_joint_mirrors_the_first() {
     });
     assert_eq!(sines.count(), 0, "a sine of a joint angle traced as a node");
 }
+
+/// The Panda with its URDF's mimic finger through every other route out of the door: the C
+/// header, the Rust module and the readable equations have 8 coordinates and no panic; the
+/// regressor is refused by name.
+#[test]
+fn the_panda_with_a_mimic_finger_out_of_the_door() {
+    use crate::inspect::Format;
+    use crate::pipeline::{load, Readable, Source};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
+    let text = std::fs::read_to_string(path).expect("readable");
+    let source = Source {
+        path: "panda.urdf",
+        text: Some(&text),
+        chain: crate::front::Chain {
+            base: Some("panda_link0"),
+            ..Default::default()
+        },
+        ..Source::default()
+    };
+    let panda = load(&source).expect("loads");
+    assert_eq!((panda.robot.dof(), panda.robot.coordinates().len()), (9, 8));
+    let families = FamilySet::default().with(Family::Derivatives);
+    let header = panda.c_header(families, None, None).expect("a header");
+    assert_eq!(header.dof, 8);
+    let text = &header.text;
+    assert!(text.contains("const double q[8]") && !text.contains("q[9]"));
+    let module = panda.rust_module(families, None).expect("a module");
+    let items = module.items.to_string();
+    let dimensions = items.contains("Dynamics < 8usize >") && !items.contains("9usize");
+    assert!(
+        dimensions,
+        "the module's dimensions are not the 8 coordinates"
+    );
+    for what in [Readable::Motion, Readable::Kinematics] {
+        panda.readable(what, Format::Text).expect("readable");
+    }
+    let refused = panda
+        .equations(FamilySet::default().with(Family::Regressor), None)
+        .expect_err("refused");
+    assert!(refused
+        .message
+        .contains("`regressor` is not supported for a robot with mimic joints"));
+}
