@@ -67,7 +67,7 @@ fn sandwich(a: &[[f64; 4]; 4]) -> Vec<f64> {
             _ => row,
         })
         .collect();
-    rows.iter().flat_map(|row| project(row)).collect()
+    rows.iter().flat_map(project).collect()
 }
 
 /// A matrix's elements, rows first.

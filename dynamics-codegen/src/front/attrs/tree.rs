@@ -237,7 +237,8 @@ mod tests {
         );
         // Written in the attribute as expressions (`-2` is `-(2)`): compared by value.
         let number = |v: &crate::model::Value| v.eval(&|_| None);
-        let rules: Vec<Option<(usize, Option<f64>, Option<f64>)>> = arm
+        type Rule = Option<(usize, Option<f64>, Option<f64>)>;
+        let rules: Vec<Rule> = arm
             .joints
             .iter()
             .map(|j| {

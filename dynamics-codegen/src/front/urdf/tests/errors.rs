@@ -105,7 +105,7 @@ type Case<'a> = (String, Option<&'a str>, (usize, usize), &'a str);
 
 #[test]
 fn each_mistake_at_its_place() {
-    let cases: [Case; 14] = [
+    let cases: [Case; 9] = [
         (
             "<robot><link name=\"a\">\n</robot>".into(),
             None,
@@ -123,39 +123,6 @@ fn each_mistake_at_its_place() {
             None,
             (4, 1),
             "a planar joint moves",
-        ),
-        (
-            two_links(&joint("revolute", "<mimic joint=\"j1\"/>"), INERTIAL),
-            None,
-            (4, 69),
-            "joint `j1`'s `<mimic joint=\"j1\">`: a joint cannot follow itself",
-        ),
-        (
-            two_links(&joint("revolute", "<mimic joint=\"jx\"/>"), INERTIAL),
-            None,
-            (4, 69),
-            "the file has no joint `jx`",
-        ),
-        (
-            two_links(&joint("prismatic", "<mimic joint=\"j0\"/>"), INERTIAL),
-            None,
-            (4, 70),
-            "`j1` and `j0` are not of the same kind (revolute or prismatic)",
-        ),
-        (
-            two_links(&joint("revolute", "<mimic multiplier=\"2\"/>"), INERTIAL),
-            None,
-            (4, 69),
-            "`<mimic>` has no `joint` attribute",
-        ),
-        (
-            two_links(
-                &joint("revolute", "<mimic joint=\"j0\" offset=\"x\"/>"),
-                INERTIAL,
-            ),
-            None,
-            (4, 95),
-            "offset",
         ),
         (
             two_links(&joint("revolute", "<axis xyz=\"0 0 0\"/>"), INERTIAL),
@@ -417,4 +384,49 @@ fn a_value_after_many_spaces_at_its_place() {
     let (line, column, message) = first(&text, None);
     assert_eq!((line, column), (5, 303), "{message}");
     assert!(message.contains("is zero"), "{message}");
+}
+
+/// Each mistake of a `<mimic>` at the element (or its attribute).
+#[test]
+fn mimic_mistakes_at_the_element() {
+    let cases: [Case; 5] = [
+        (
+            two_links(&joint("revolute", "<mimic joint=\"j1\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "joint `j1`'s `<mimic joint=\"j1\">`: a joint cannot follow itself",
+        ),
+        (
+            two_links(&joint("revolute", "<mimic joint=\"jx\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "the file has no joint `jx`",
+        ),
+        (
+            two_links(&joint("prismatic", "<mimic joint=\"j0\"/>"), INERTIAL),
+            None,
+            (4, 70),
+            "`j1` and `j0` are not of the same kind (revolute or prismatic)",
+        ),
+        (
+            two_links(&joint("revolute", "<mimic multiplier=\"2\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "`<mimic>` has no `joint` attribute",
+        ),
+        (
+            two_links(
+                &joint("revolute", "<mimic joint=\"j0\" offset=\"x\"/>"),
+                INERTIAL,
+            ),
+            None,
+            (4, 95),
+            "offset",
+        ),
+    ];
+    for (text, tip, at, message) in cases {
+        let (line, column, said) = first(&text, tip);
+        assert_eq!((line, column), at, "{said}");
+        assert!(said.contains(message), "{said}");
+    }
 }
