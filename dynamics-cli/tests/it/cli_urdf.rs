@@ -43,15 +43,17 @@ fn a_urdf_chain_from_base_to_tip() {
 
 #[test]
 fn urdf_errors_name_the_file_line_and_column() {
-    // Without a tip, every branch: the Panda's second finger follows the first (`<mimic>`).
-    let out = dynamics(&["inspect", "robots/urdf/panda.urdf"]);
+    // Without a tip, every branch: the Panda's second finger follows the first (`<mimic>`),
+    // no longer an error; a `<mimic>` naming itself is, at the element.
+    let out = dynamics(&["stats", "robots/urdf/panda.urdf"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let file = "dynamics-macros/tests/ui/trees/mimic_itself.urdf";
+    let out = dynamics(&["inspect", file]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(
-        stderr(&out)
-            .contains("robots/urdf/panda.urdf:348:9: joint `panda_finger_joint2` has `<mimic>`"),
-        "{}",
-        stderr(&out)
+    let want = format!(
+        "{file}:25:5: joint `elbow`'s `<mimic joint=\"elbow\">`: a joint cannot follow itself"
     );
+    assert!(stderr(&out).contains(&want), "{}", stderr(&out));
     let file = "dynamics-macros/tests/ui/urdf/negative_mass.urdf";
     let out = dynamics(&["inspect", file]);
     assert_eq!(out.status.code(), Some(1));

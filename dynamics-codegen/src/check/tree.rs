@@ -1,7 +1,8 @@
 //! The checks of a kinematic tree's shape, which the algorithms rely on: every antecedent is an
 //! earlier joint (so that a joint's rates follow from its antecedent's, computed before it),
 //! and a tree is given in the modified D-H convention (Khalil and Kleinfinger's table: a
-//! standard table has no antecedent column and no γ, b).
+//! standard table has no antecedent column and no γ, b); and each mimic joint follows another
+//! joint of its kind that is not a mimic joint.
 
 use crate::model::{Convention, Robot};
 
@@ -35,6 +36,38 @@ pub fn tree(robot: &Robot) -> Vec<(usize, BranchProblem)> {
                        (Khalil-Kleinfinger): a standard table has no antecedent"
             .to_string();
         problems.extend(first.map(|j| (j, BranchProblem { message })));
+    }
+    problems.extend(mimics(robot));
+    problems
+}
+
+/// The problems of the mimic joints: each follows another joint of the robot, of its own kind
+/// (Pinocchio's rule), that is not a mimic joint itself.
+fn mimics(robot: &Robot) -> Vec<(usize, BranchProblem)> {
+    let mut problems = Vec::new();
+    for (m, joint) in robot.joints.iter().enumerate() {
+        let Some(mimic) = &joint.mimic else { continue };
+        let j = mimic.joint;
+        let message = match robot.joints.get(j) {
+            None => format!(
+                "it follows joint {}, which the robot does not have ({} joints)",
+                j + 1,
+                robot.dof()
+            ),
+            Some(_) if j == m => "it follows itself: a mimic joint follows another joint".into(),
+            Some(followed) if followed.mimic.is_some() => format!(
+                "it follows joint {}, a mimic joint itself: a mimic joint follows a joint that \
+                 is not",
+                j + 1
+            ),
+            Some(followed) if followed.kind != joint.kind => format!(
+                "it follows joint {}, which is not of its kind (revolute or prismatic): a mimic \
+                 joint follows a joint of its own kind",
+                j + 1
+            ),
+            Some(_) => continue,
+        };
+        problems.push((m, BranchProblem { message }));
     }
     problems
 }

@@ -126,9 +126,14 @@ pub(crate) fn operands(p: &impl Sums, eq: &Equations, id: NodeId) -> Vec<NodeId>
         | Node::Cos(a)
         | Node::Sign(a)
         | Node::Tanh(a) => vec![a],
-        Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
-            eq.angle_offsets[usize::from(i)].into_iter().collect()
-        }
+        // A joint's leaf past the coordinates (a mimic joint's, read by no output) has none.
+        Node::Var(Var::SinQ(i) | Var::CosQ(i)) => eq
+            .angle_offsets
+            .get(usize::from(i))
+            .copied()
+            .flatten()
+            .into_iter()
+            .collect(),
         Node::Const(_) | Node::Var(_) => vec![],
     }
 }

@@ -133,6 +133,22 @@ pub struct Joint {
     /// Where joint i hangs in a kinematic tree; `None` in a serial chain, where joint i's
     /// antecedent is joint i − 1 and its frame follows from that joint's alone.
     pub branch: Option<Branch>,
+    /// The joint this one follows, if it is a mimic joint: then it is not a coordinate of the
+    /// robot (see [`Robot::coordinates`]).
+    pub mimic: Option<Mimic>,
+}
+
+/// A mimic joint's rule: it follows `q = multiplier · q_joint + offset` (URDF's `<mimic>`), so
+/// that `q̇ = multiplier · q̇_joint` and `q̈ = multiplier · q̈_joint`; its torque is carried onto
+/// the joint it follows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mimic {
+    /// The joint followed, in [`Robot::joints`]; not itself a mimic joint.
+    pub joint: usize,
+    /// k.
+    pub multiplier: Value,
+    /// o, in the joint's unit (rad or m).
+    pub offset: Value,
 }
 
 /// A joint's place in a kinematic tree (Khalil and Kleinfinger's modified D-H table): its
@@ -164,6 +180,7 @@ impl Joint {
             frame: None,
             link_pose: Pose::identity(),
             branch: None,
+            mimic: None,
         }
     }
 
@@ -198,10 +215,25 @@ pub struct Robot {
 }
 
 impl Robot {
-    /// Number of joints.
+    /// Number of joints, mimic joints included (see [`Robot::coordinates`]).
     #[must_use]
     pub fn dof(&self) -> usize {
         self.joints.len()
+    }
+
+    /// The robot's coordinates: its joints that are not mimic joints, in order. Every
+    /// generated function's q, q̇, q̈ and τ have one entry per coordinate.
+    #[must_use]
+    pub fn coordinates(&self) -> Vec<usize> {
+        (0..self.dof())
+            .filter(|&i| self.joints[i].mimic.is_none())
+            .collect()
+    }
+
+    /// Whether some joint follows another.
+    #[must_use]
+    pub fn has_mimics(&self) -> bool {
+        self.joints.iter().any(|j| j.mimic.is_some())
     }
 
     /// Joint i's antecedent: the joint whose link carries it, or `None` for the base.
@@ -228,6 +260,7 @@ impl Robot {
                 [&j.theta, &j.d, &j.a, &j.alpha]
                     .into_iter()
                     .chain(j.branch.iter().flat_map(|b| [&b.gamma, &b.b]))
+                    .chain(j.mimic.iter().flat_map(|m| [&m.multiplier, &m.offset]))
                     .chain(j.link.values())
             }))
             .chain(

@@ -65,13 +65,16 @@ impl Equations {
             qdd,
             tau,
         } = *state;
+        // A robot with mimic joints keeps its joints' leaves past its coordinates in the graph,
+        // read by no output: zero.
+        let at = |x: &[f64], i: u16| x.get(usize::from(i)).copied().unwrap_or(0.0);
         let leaf = |v: Var, offsets: &[f64]| -> f64 {
             match v {
-                Var::Q(i) => q[usize::from(i)],
-                Var::SinQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).sin(),
-                Var::CosQ(i) => (q[usize::from(i)] + offsets[usize::from(i)]).cos(),
-                Var::Qd(i) => qd[usize::from(i)],
-                Var::Qdd(i) => qdd[usize::from(i)],
+                Var::Q(i) => at(q, i),
+                Var::SinQ(i) => (at(q, i) + at(offsets, i)).sin(),
+                Var::CosQ(i) => (at(q, i) + at(offsets, i)).cos(),
+                Var::Qd(i) => at(qd, i),
+                Var::Qdd(i) => at(qdd, i),
                 Var::Param(k) => fields[usize::from(k)],
                 Var::Tau(i) => tau.get(usize::from(i)).copied().unwrap_or(0.0),
                 Var::Wrench(_) | Var::TipWrench(_) => 0.0,

@@ -15,7 +15,7 @@
 
 use crate::check;
 use crate::front::{self, Chain, FileRequest, RequestError};
-use crate::method::FamilySet;
+use crate::method::{Family, FamilySet};
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
@@ -229,6 +229,13 @@ impl Loaded {
         simplification: Option<&Simplification>,
     ) -> Result<Equations, Diagnostic> {
         let (eq, simplified) = equations(&self.robot, families, simplification);
+        let untraced = [Family::Regressor, Family::BaseParameters]
+            .into_iter()
+            .find(|&f| families.contains(f) && self.robot.has_mimics());
+        if let Some(family) = untraced {
+            let message = format!("`{}` {}", family.name(), trace::MIMIC_UNSUPPORTED);
+            return Err(Diagnostic::of_file(&self.path, message));
+        }
         match simplified {
             Some(Err(e)) => Err(Diagnostic::of_file(&self.path, format!("simplify: {e}"))),
             _ => Ok(eq),
@@ -273,7 +280,15 @@ pub(crate) fn equations(
     let mut eq = trace::derive(robot);
     eq.add_families(robot, families);
     // Only for a robot that asks: the expansion costs what the rest of the derive does.
-    let simplified = simplification.map(|request| crate::simplify::add(&mut eq, request));
+    let simplified = simplification.map(|request| {
+        if robot.has_mimics() {
+            return Err(format!(
+                "the simplified models {}",
+                trace::MIMIC_UNSUPPORTED
+            ));
+        }
+        crate::simplify::add(&mut eq, request)
+    });
     (eq, simplified)
 }
 

@@ -35,6 +35,9 @@ mod gravity;
 mod joints;
 mod kinematics;
 mod mass;
+mod mimic;
+#[cfg(test)]
+mod mimic_tests;
 mod newton_euler;
 mod outputs;
 mod regressor;
@@ -135,6 +138,8 @@ impl Equations {
             }
             match family {
                 Family::Derivatives => self.add_derivatives(),
+                // Not traced for mimic joints: the caller says so ([`MIMIC_UNSUPPORTED`]).
+                Family::Regressor | Family::BaseParameters if robot.has_mimics() => {}
                 Family::Regressor => self.add_regressor(robot),
                 Family::Tips => self.add_tips(robot),
                 Family::BaseParameters => {
@@ -155,6 +160,12 @@ impl Equations {
         }
     }
 }
+
+/// Why the regressor, the base parameters and the simplified models are not traced for a
+/// robot with mimic joints: their parameters are per link, their rows per coordinate.
+pub const MIMIC_UNSUPPORTED: &str = "is not supported for a robot with mimic joints yet (the \
+     parameters are per link, the rows per coordinate); every other family is, in the reduced \
+     coordinates";
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
 /// the table is not empty.
@@ -183,26 +194,52 @@ pub fn derive(robot: &Robot) -> Equations {
         let tau = newton_euler.tau.iter().zip(&friction);
         tau.map(|(&t, &f)| g.add(t, f)).collect()
     };
-    // After τ, so that the nodes of the other outputs are those they always had.
-    let forward = forward::forward(
-        &graph,
-        &mass,
-        &newton_euler.bias,
-        &friction,
-        robot.is_tree(),
-    );
-    Equations {
-        graph: graph.into_inner(),
-        dof: robot.dof(),
-        fields: fields.clone(),
-        kinds: robot.joints.iter().map(|j| j.kind).collect(),
-        angle_offsets,
+    let mut joint_space = JointSpace {
         mass,
         christoffel,
         coriolis,
         coriolis_torques: newton_euler.coriolis_torques,
         gravity: gravity_torques,
         bias: newton_euler.bias,
+        tau,
+        friction,
+        energies: [kinetic_energy, potential_energy],
+        kinematics,
+        angle_offsets,
+        kinds: robot.joints.iter().map(|j| j.kind).collect(),
+    };
+    if robot.has_mimics() {
+        let reduction = mimic::Reduction::new(&graph, &tracer, robot, &joint_space.angle_offsets);
+        joint_space = joint_space.reduced(&reduction, &mut graph.borrow_mut());
+    }
+    let JointSpace {
+        mass,
+        christoffel,
+        coriolis,
+        coriolis_torques,
+        gravity,
+        bias,
+        tau,
+        friction,
+        energies: [kinetic_energy, potential_energy],
+        kinematics,
+        angle_offsets,
+        kinds,
+    } = joint_space;
+    // After τ, so that the nodes of the other outputs are those they always had.
+    let forward = forward::forward(&graph, &mass, &bias, &friction, robot.is_tree());
+    Equations {
+        graph: graph.into_inner(),
+        dof: mass.len(),
+        fields: fields.clone(),
+        kinds,
+        angle_offsets,
+        mass,
+        christoffel,
+        coriolis,
+        coriolis_torques,
+        gravity,
+        bias,
         tau,
         friction,
         kinetic_energy,
@@ -215,5 +252,43 @@ pub fn derive(robot: &Robot) -> Equations {
         base_parameters: None,
         simplified: None,
         tips: None,
+    }
+}
+
+/// The outputs traced on every joint, before forward dynamics: those of the robot, or of its
+/// joints when some are mimic joints, reduced to its coordinates ([`JointSpace::reduced`]).
+struct JointSpace {
+    mass: Vec<Vec<NodeId>>,
+    christoffel: Vec<Vec<Vec<NodeId>>>,
+    coriolis: Vec<Vec<NodeId>>,
+    coriolis_torques: Vec<NodeId>,
+    gravity: Vec<NodeId>,
+    bias: Vec<NodeId>,
+    tau: Vec<NodeId>,
+    friction: Vec<NodeId>,
+    energies: [NodeId; 2],
+    kinematics: KinematicEquations,
+    angle_offsets: Vec<Option<NodeId>>,
+    kinds: Vec<JointKind>,
+}
+
+impl JointSpace {
+    /// The same outputs in the coordinates of `reduction`.
+    fn reduced(self, reduction: &mimic::Reduction, g: &mut Graph) -> JointSpace {
+        let energies = reduction.substitute(g, &self.energies);
+        JointSpace {
+            mass: reduction.matrix(g, &self.mass),
+            christoffel: reduction.christoffel(g, &self.christoffel),
+            coriolis: reduction.matrix(g, &self.coriolis),
+            coriolis_torques: reduction.vector(g, &self.coriolis_torques),
+            gravity: reduction.vector(g, &self.gravity),
+            bias: reduction.vector(g, &self.bias),
+            tau: reduction.vector(g, &self.tau),
+            friction: reduction.vector(g, &self.friction),
+            energies: [energies[0], energies[1]],
+            kinematics: reduction.kinematics(g, &self.kinematics),
+            angle_offsets: reduction.of_coordinates(&self.angle_offsets),
+            kinds: reduction.of_coordinates(&self.kinds),
+        }
     }
 }

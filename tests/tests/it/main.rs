@@ -18,6 +18,7 @@ mod kinematics;
 mod lanes;
 mod layout;
 mod lint;
+mod mimic;
 mod niku_arm_examples;
 mod niku_lagrangian_examples;
 mod non_finite;

@@ -11,6 +11,9 @@
 //! * The Panda with its gripper's fingers free (`panda_free_fingers.urdf`: the URDF with its
 //!   `<mimic>` element removed, by `free_fingers.py`): a tree that branches below the base, the
 //!   two fingers hanging off the last arm link.
+//! * The Panda with its URDF's `<mimic>`: the second finger follows the first, 9 joints and 8
+//!   coordinates, every output in the reduced coordinates (`panda_fingers.json`: Pinocchio 4.1's
+//!   mimic model; C the projected `Gᵀ C G`, the forward dynamics the reduced solve).
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
@@ -35,6 +38,12 @@ struct AllegroHand;
 urdf_tree!(
     PandaFreeFingers,
     "../robots/urdf/trees/panda_free_fingers.urdf",
+    "panda_link0"
+);
+
+urdf_tree!(
+    PandaMimicFingers,
+    "../robots/urdf/panda.urdf",
     "panda_link0"
 );
 
@@ -189,4 +198,14 @@ fn panda_with_free_fingers_matches_pinocchio() {
         TOLERANCE,
     );
     zero_blocks(&PandaFreeFingers, "panda_fingers_no_mimic.json");
+}
+
+#[test]
+fn panda_with_mimic_fingers_matches_pinocchio() {
+    check(
+        &PandaMimicFingers,
+        "panda_fingers.json",
+        Measure::Scaled,
+        TOLERANCE,
+    );
 }

@@ -3,11 +3,12 @@
 //! robot's own modified D-H table by [`lower_frames`], whose problems go on the joint's tokens.
 
 use super::joints::JointAttr;
+use super::mimic;
 use super::parse::Attrs;
 use super::reader::{check_joint_count, JointList, Reader};
-use super::tree;
+use super::tree::{self, ParentAttr};
 use crate::front::angle::unitless_angle;
-use crate::model::{lower_frames, AxisFrame, Branch, Joint, Placement, Robot, Value};
+use crate::model::{lower_frames, AxisFrame, Branch, Joint, Mimic, Placement, Robot, Value};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 
@@ -58,6 +59,21 @@ pub(super) fn joints(
                 parent,
                 gamma: Value::zero(),
                 b: Value::zero(),
+            });
+            joint.mimic = j.mimic.as_ref().and_then(|m| {
+                let followed = mimic::followed(i + 1, m.joint.as_ref()?, joints.len(), &names);
+                let followed = followed.map_err(|message| {
+                    let span = m.joint.as_ref().map_or(m.span, ParentAttr::span);
+                    reader.errors.push(span, message);
+                });
+                Some(Mimic {
+                    joint: followed.ok()?,
+                    multiplier: m.multiplier.as_ref().map_or_else(
+                        || Value::num(crate::symbolic::Number::ONE),
+                        |v| reader.value(Some(v)),
+                    ),
+                    offset: reader.value(m.offset.as_ref()),
+                })
             });
             joint
         })

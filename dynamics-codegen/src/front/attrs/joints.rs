@@ -1,10 +1,12 @@
 //! The value of `joints = [...]`: joints given URDF style, base to tip, each
 //! `revolute(xyz = [..], rpy = [..], axis = [..])` or `prismatic(..)`, read into [`JointAttr`]s
 //! with their spans. `xyz` and `rpy` default to zero, `axis` to `[0, 0, 1]`; in a tree,
-//! `parent` (default: the joint before) and `name`.
+//! `parent` (default: the joint before) and `name`; `mimic = (..)` for a joint that follows
+//! another.
 
 use super::entry::{skip_entry, string, values, Entry};
 use super::keys::{JointKey, JointType};
+use super::mimic::{parse_mimic, MimicAttr};
 use super::tree::{parse_parent, ParentAttr};
 use crate::front::errors::{unknown_key, Errors};
 use crate::front::value::Spanned;
@@ -27,6 +29,8 @@ pub(super) struct JointAttr {
     /// In a tree: the joint it hangs from, and its own name.
     pub parent: Option<ParentAttr>,
     pub name: Option<LitStr>,
+    /// The joint it follows, if it is a mimic joint.
+    pub mimic: Option<MimicAttr>,
 }
 
 /// What the keys of `revolute(...)` are called in messages.
@@ -73,6 +77,7 @@ pub(super) fn parse_joints(
             axis: None,
             parent: None,
             name: None,
+            mimic: None,
         };
         parse_joint_keys(&keys, &mut joint, errors)?;
         joints.push(joint);
@@ -122,6 +127,10 @@ fn parse_joint_keys(
                 entry.keep_first(&mut joint.axis, axis);
             }
             JointKey::Parent => entry.keep_first(&mut joint.parent, parse_parent(input)?),
+            JointKey::Mimic => {
+                let mimic = parse_mimic(input, entry.errors)?;
+                entry.keep_first(&mut joint.mimic, mimic);
+            }
             JointKey::Name => {
                 entry.keep_first(&mut joint.name, string(input, "`name = \"palm\"`")?)
             }

@@ -64,9 +64,11 @@ keys! {
     /// `rpy = [roll, pitch, yaw]` place the joint frame in the parent link's frame (as URDF's
     /// `<origin>`), `axis = [x, y, z]` is the unit axis in the joint frame; in a tree,
     /// `parent = 2` or `parent = "palm"` names the joint it hangs from (default: the one
-    /// before; 0 the base) and `name = "palm"` names it.
+    /// before; 0 the base) and `name = "palm"` names it; `mimic = (joint = 2, multiplier = k,
+    /// offset = o)` makes it follow joint 2 (`q = k q_2 + o`), not a coordinate.
     JointKey {
         Xyz = "xyz", Rpy = "rpy", Axis = "axis", Parent = "parent", Name = "name",
+        Mimic = "mimic",
     }
 }
 

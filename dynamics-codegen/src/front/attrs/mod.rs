@@ -15,6 +15,7 @@ mod frames;
 mod friction;
 mod joints;
 mod keys;
+mod mimic;
 mod parse;
 mod reader;
 mod simplify;

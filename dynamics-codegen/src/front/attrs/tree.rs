@@ -188,4 +188,46 @@ mod tests {
         ];
         assert_eq!(parents(&robot), roots);
     }
+
+    /// `mimic = (joint = .., multiplier = .., offset = ..)` by name or number, and its mistakes
+    /// on their tokens; a mimic of a mimic and of the other kind from the model's check.
+    #[test]
+    fn mimic_joints_in_the_attribute() {
+        let arm = robot(
+            r#"joints = [revolute(name = "a"), revolute(mimic = (joint = "a", multiplier = -2)),
+               revolute(mimic = (joint = 1, offset = 0.25))]"#,
+        );
+        // Written in the attribute as expressions (`-2` is `-(2)`): compared by value.
+        let number = |v: &crate::model::Value| v.eval(&|_| None);
+        type Rule = Option<(usize, Option<f64>, Option<f64>)>;
+        let rules: Vec<Rule> = arm
+            .joints
+            .iter()
+            .map(|j| {
+                let m = j.mimic.as_ref()?;
+                Some((m.joint, number(&m.multiplier), number(&m.offset)))
+            })
+            .collect();
+        let second = Some((0, Some(-2.0), Some(0.0)));
+        assert_eq!(rules, [None, second, Some((0, Some(1.0), Some(0.25)))]);
+        let joints = |third: &str| {
+            format!("joints = [revolute(name = \"a\"), revolute(), {third}], {LINKS}")
+        };
+        let cases = [
+            (joints("revolute(mimic = (joint = 4))"), "joint 3: mimic joint 4: there is no joint 4 (joints are numbered 1 to 3)"),
+            (joints("revolute(mimic = (joint = 0))"), "there is no joint 0"),
+            (joints("revolute(mimic = (joint = 3))"), "joint 3: it cannot mimic itself"),
+            (joints("revolute(mimic = (joint = \"b\"))"), "mimic joint `b`: no joint has that name"),
+            (joints("revolute(mimic = (multiplier = 2))"), "`mimic` names no `joint`"),
+            (joints("revolute(mimic = (joint = 1, gain = 2))"), "unknown mimic key `gain`"),
+            (joints("revolute(mimic = (joint = 1.5))"), "expected the joint followed, by number or name"),
+            (joints("revolute(mimic = 1)"), "expected `mimic = (joint = 2, multiplier = 1, offset = 0)`"),
+            (joints("prismatic(mimic = (joint = 1))"), "joint 3: it follows joint 1, which is not of its kind"),
+            (format!("joints = [revolute(), revolute(mimic = (joint = 3)), revolute(mimic = (joint = 1))], {LINKS}"), "joint 2: it follows joint 3, a mimic joint itself"),
+        ];
+        for (keys, message) in cases {
+            let e = error(&keys);
+            assert!(e.contains(message), "{keys}\n{e}");
+        }
+    }
 }

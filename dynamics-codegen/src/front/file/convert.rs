@@ -2,8 +2,8 @@
 //! kept with the key they concern, so that they get its line and column. Absent D-H entries,
 //! offsets and spring values are zero.
 
-use super::frames;
 use super::schema::{Deferred, FileConvention, FileJoint, FileKind, FileRobot, FileValue};
+use super::{frames, tree};
 use crate::check;
 use crate::front::errors::FileError;
 use crate::front::sources::{Loaded, Positions};
@@ -94,15 +94,15 @@ pub(super) fn convert(
                 .to_string(),
         ));
     }
-    let tool = file.tool.map(|t| {
-        let [x, y, z, roll, pitch, yaw] = t.map(|v| v.0);
-        Placement::written([x, y, z], [roll, pitch, yaw])
-    });
+    let tool = file.tool.map(tool_placement);
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
-    let branches = super::tree::branches(&file.joints, convention, frames_given, &mut deferred);
-    for ((i, j), branch) in file.joints.into_iter().enumerate().zip(branches) {
+    let branches = tree::branches(&file.joints, convention, frames_given, &mut deferred);
+    let per_joint = branches
+        .into_iter()
+        .zip(tree::mimics(&file.joints, &mut deferred));
+    for ((i, j), (branch, mimic)) in file.joints.into_iter().enumerate().zip(per_joint) {
         deferred.extend(angle_problems(i, &j));
         let kind = match j.kind {
             FileKind::Revolute => JointKind::Revolute,
@@ -135,6 +135,7 @@ pub(super) fn convert(
         joints.push(Joint {
             frame,
             branch,
+            mimic,
             ..Joint::dh(kind, row, link)
         });
     }
@@ -156,6 +157,12 @@ pub(super) fn convert(
         frames::lower(&mut loaded.robot, &mut deferred);
     }
     Ok((loaded, deferred))
+}
+
+/// The file's `tool = [x, y, z, roll, pitch, yaw]`.
+fn tool_placement(tool: [FileValue; 6]) -> Placement {
+    let [x, y, z, roll, pitch, yaw] = tool.map(|v| v.0);
+    Placement::written([x, y, z], [roll, pitch, yaw])
 }
 
 /// The loaded robot, or the first of the errors found after parsing, at its position (that of

@@ -128,6 +128,10 @@ pub(super) struct FileJoint {
     /// default: the joint before.
     #[serde(default)]
     pub(super) parent: Option<FileParent>,
+    /// The joint it follows, if a mimic joint: `mimic = { joint = 2, multiplier = -1,
+    /// offset = 0.1 }`.
+    #[serde(default)]
+    pub(super) mimic: Option<FileMimic>,
     /// Khalil-Kleinfinger's γ and b (modified D-H rows only): the turn about and offset along
     /// the antecedent's z onto the common normal to this joint's axis.
     #[serde(default)]
@@ -177,6 +181,18 @@ pub(super) struct FileJoint {
     pub(super) rotor_inertia: Option<FileValue>,
     #[serde(default)]
     pub(super) gear_ratio: Option<FileValue>,
+}
+
+/// `mimic = { joint = 2 | "name", multiplier = k, offset = o }`: `q = k q_joint + o`
+/// (multiplier 1 and offset 0 by default).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileMimic {
+    pub(super) joint: FileParent,
+    #[serde(default)]
+    pub(super) multiplier: Option<FileValue>,
+    #[serde(default)]
+    pub(super) offset: Option<FileValue>,
 }
 
 /// `origin = { xyz = [..], rpy = [..] }`: translation, and roll, pitch, yaw in radians.

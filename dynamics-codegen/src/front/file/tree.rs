@@ -1,10 +1,12 @@
 //! Trees in a description file: each joint's `parent` (an earlier joint's 1-based number, 0
 //! for the base, or its `name`; by default the joint before) and, in a modified D-H table,
-//! Khalil-Kleinfinger's `gamma` and `b`. Each mistake is deferred to its joint's key.
+//! Khalil-Kleinfinger's `gamma` and `b`; a mimic joint's `mimic = { joint = .., multiplier =
+//! .., offset = .. }` (the joint followed by number or name, before or after it). Each mistake
+//! is deferred to its joint's key.
 
 use super::schema::{Deferred, FileJoint, FileParent};
 use crate::front::parent::{resolve, ParentRef};
-use crate::model::{snap_angle, Branch, Convention, Value};
+use crate::model::{snap_angle, Branch, Convention, Mimic, Value};
 use std::collections::BTreeMap;
 
 impl FileParent {
@@ -14,6 +16,60 @@ impl FileParent {
             FileParent::Name(name) => ParentRef::Name(name),
         }
     }
+}
+
+/// Per joint, its mimic rule, with every problem deferred to its `mimic` key (the model's
+/// check refuses a mimic of a mimic joint and a mimic of the other kind).
+pub(super) fn mimics(joints: &[FileJoint], deferred: &mut Vec<Deferred>) -> Vec<Option<Mimic>> {
+    if joints.iter().all(|j| j.mimic.is_none()) {
+        return vec![None; joints.len()];
+    }
+    let names: BTreeMap<&str, usize> = joints
+        .iter()
+        .enumerate()
+        .filter_map(|(i, j)| Some((j.name.as_deref()?, i)))
+        .collect();
+    let count = joints.len();
+    let value = |v: &Option<super::schema::FileValue>, default: Value| {
+        v.as_ref().map_or(default, |v| v.0.clone())
+    };
+    let mut mimics = Vec::with_capacity(count);
+    for (i, j) in joints.iter().enumerate() {
+        let Some(m) = &j.mimic else {
+            mimics.push(None);
+            continue;
+        };
+        let followed = match &m.joint {
+            FileParent::Number(n) => usize::try_from(*n)
+                .ok()
+                .filter(|n| (1..=count).contains(n))
+                .map(|n| n - 1)
+                .ok_or_else(|| format!("mimic joint {n}: there is no joint {n} (the file has {count}, numbered from 1)")),
+            FileParent::Name(name) => names
+                .get(name.as_str())
+                .copied()
+                .ok_or_else(|| format!("mimic joint `{name}`: no joint has that name")),
+        };
+        let followed = followed.and_then(|k| {
+            if k == i {
+                Err("a joint cannot mimic itself".to_string())
+            } else {
+                Ok(k)
+            }
+        });
+        match followed {
+            Ok(k) => mimics.push(Some(Mimic {
+                joint: k,
+                multiplier: value(&m.multiplier, Value::num(crate::symbolic::Number::ONE)),
+                offset: value(&m.offset, Value::zero()),
+            })),
+            Err(message) => {
+                deferred.push((i, "mimic", message));
+                mimics.push(None);
+            }
+        }
+    }
+    mimics
 }
 
 /// Whether some joint gives `name`, `parent`, `gamma` or `b`.
@@ -196,6 +252,61 @@ mod tests {
             // The line of the last line of `at` (a repeated key is the later one).
             let offset = text.rfind(at).unwrap() + at.rfind('\n').map_or(0, |k| k + 1);
             let line = text[..offset].matches('\n').count() + 1;
+            assert_eq!(e.line, Some(line), "{e}\n{text}");
+            assert!(e.message.contains(message), "{e}\n{text}");
+        }
+    }
+
+    /// `mimic = { joint = .., multiplier = .., offset = .. }` by number or name, either side;
+    /// each mistake at its `mimic` key, a mimic of a mimic at the joint (the model's check).
+    #[test]
+    fn mimic_joints_and_their_mistakes() {
+        let frame = "type = \"revolute\"\naxis = [0, 0, 1]";
+        let toml = toml_joints(&[
+            "type = \"revolute\"\nmimic = { joint = \"b\", multiplier = -0.5, offset = 0.1 }",
+            "name = \"b\"\ntype = \"revolute\"\norigin = { xyz = [1, 0, 0] }",
+            "type = \"revolute\"\nmimic = { joint = 2 }\norigin = { xyz = [0, 1, 0] }",
+        ]);
+        let robot = from_toml(&toml, "x").unwrap();
+        let rules: Vec<Option<(usize, String, String)>> = robot
+            .joints
+            .iter()
+            .map(|j| {
+                let m = j.mimic.as_ref()?;
+                Some((m.joint, m.multiplier.to_string(), m.offset.to_string()))
+            })
+            .collect();
+        let first = Some((1, "-1/2".to_string(), "1/10".to_string()));
+        assert_eq!(rules, [first, None, Some((1, "1".into(), "0".into()))]);
+        assert_eq!(robot.coordinates(), [1]);
+        let cases: [(String, &str, &str); 4] = [
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = 5 }"]),
+                "mimic",
+                "joint 2: mimic joint 5: there is no joint 5 (the file has 2",
+            ),
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = 2 }"]),
+                "mimic",
+                "joint 2: a joint cannot mimic itself",
+            ),
+            (
+                toml_joints(&[frame, "type = \"revolute\"\nmimic = { joint = \"z\" }"]),
+                "mimic",
+                "mimic joint `z`: no joint has that name",
+            ),
+            (
+                toml_joints(&[
+                    frame,
+                    "type = \"revolute\"\nmimic = { joint = 1, gain = 2 }",
+                ]),
+                "gain",
+                "unknown field `gain`",
+            ),
+        ];
+        for (text, at, message) in cases {
+            let e = from_toml(&text, "x").expect_err(&text);
+            let line = text[..text.rfind(at).unwrap()].matches('\n').count() + 1;
             assert_eq!(e.line, Some(line), "{e}\n{text}");
             assert!(e.message.contains(message), "{e}\n{text}");
         }

@@ -14,6 +14,7 @@
 
 mod inertial;
 mod limits;
+mod mimic;
 mod robot;
 mod select;
 mod tree;

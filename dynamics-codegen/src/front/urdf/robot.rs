@@ -41,6 +41,7 @@ pub(super) fn build(
     let (segments, tip) = segments(tree, chain);
     let tips = tips(tree, chain, &segments);
     let parents: Vec<Option<usize>> = segments.iter().map(|s| s.parent).collect();
+    let urdf_joints: Vec<usize> = segments.iter().map(|s| s.joint).collect();
     for segment in segments {
         errors.extend(link_problems(tree, &segment, check_inertia));
         match joint(tree, segment) {
@@ -50,6 +51,9 @@ pub(super) fn build(
             }
             Err(e) => errors.extend(e),
         }
+    }
+    if errors.is_empty() {
+        errors = super::mimic::resolve(tree.doc, &urdf_joints, &mut joints);
     }
     if !errors.is_empty() {
         return Err(errors);

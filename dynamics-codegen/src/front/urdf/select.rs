@@ -2,7 +2,7 @@
 //! the tree below `base`: every branch by default, or the branches that lead to the `tips`.
 //! The joints come in depth-first order, a link's child joints in the file's order; a part
 //! fixed to a kept link is merged into it and a branch that is not kept is cut off, as below a
-//! tip. Floating, planar and mimic joints that are kept are refused.
+//! tip. Floating and planar joints that are kept are refused.
 
 use super::tree::{Chain, Tree};
 use super::xml::error;

@@ -2,13 +2,12 @@
 //!
 //! The chain is the path of joints from `base` (default: the root link) to `tip`. A joint that
 //! moves but is not on the path, hanging off a link from the base up to the link before the
-//! tip, is a branch and refused; so are floating, planar and mimic joints on the path. Below
+//! tip, is a branch and refused; so are floating and planar joints on the path. Below
 //! the tip, a part fixed to the tip link is merged into it and what moves below it is cut off.
 //! Without a `tip`, the joints below the base are taken as a tree (`select`).
 
 use super::xml::{error, Description, Kind};
 use crate::front::errors::FileError;
-use crate::front::sources::At;
 use std::collections::BTreeMap;
 
 /// The links and joints of a URDF as a tree.
@@ -278,12 +277,11 @@ impl Tree<'_> {
         chain.joints.iter().filter_map(move |&j| {
             let joint = &self.doc.joints[j];
             let name = &joint.name;
-            match (joint.kind, joint.mimic) {
-                (Kind::Floating | Kind::Planar, _) => {
+            match joint.kind {
+                Kind::Floating | Kind::Planar => {
                     let kind = if joint.kind == Kind::Floating { "floating" } else { "planar" };
                     Some(error(joint.at, format!("`<joint name=\"{name}\" type=\"{kind}\">`: a {kind} joint moves in more than one direction; a robot has revolute, continuous, prismatic and fixed joints")))
                 }
-                (kind, Some(at)) if kind.moves() => Some(mimic_error(at, name)),
                 _ => None,
             }
         })
@@ -307,9 +305,4 @@ impl Tree<'_> {
             })
         })
     }
-}
-
-/// The error for a mimic joint at `at`.
-fn mimic_error(at: At, joint: &str) -> FileError {
-    error(at, format!("joint `{joint}` has `<mimic>`: a joint that follows another is not supported; make it fixed, or choose a `tip` or `tips` that leave it out"))
 }

@@ -62,10 +62,19 @@ pub(super) struct Joint {
     /// `<dynamics damping>` and `friction`, each with where it is written.
     pub damping: Option<(Value, At)>,
     pub friction: Option<(Value, At)>,
-    /// Where `<mimic>` is, if the joint has one.
-    pub mimic: Option<At>,
+    /// `<mimic>`, if the joint has one.
+    pub mimic: Option<Mimic>,
     /// `<limit lower upper velocity effort>`, each where it is written.
     pub limit: Limit,
+}
+
+/// A joint's `<mimic joint multiplier offset>` (defaults 1 and 0): it follows
+/// `q = multiplier · q_joint + offset`.
+pub(super) struct Mimic {
+    pub joint: String,
+    pub multiplier: Value,
+    pub offset: Value,
+    pub at: At,
 }
 
 /// A joint's `<limit>`: the attributes the file writes.
@@ -380,7 +389,15 @@ impl Reader<'_> {
             origin: self.origin(node)?,
             damping: coefficient("damping")?,
             friction: coefficient("friction")?,
-            mimic: Self::child(node, "mimic").map(|m| self.at(m)),
+            mimic: match Self::child(node, "mimic") {
+                Some(m) => Some(Mimic {
+                    joint: self.required(m, "joint")?.to_string(),
+                    multiplier: self.numbers(m, "multiplier", ["1"])?.0[0].clone(),
+                    offset: self.numbers(m, "offset", ["0"])?.0[0].clone(),
+                    at: self.at(m),
+                }),
+                None => None,
+            },
             name,
             kind,
             at,

@@ -151,6 +151,7 @@ pub(super) fn random_joint(rng: &mut Rng) -> Joint {
         }),
         link_pose: Pose::identity(),
         branch: None,
+        mimic: None,
     }
 }
 

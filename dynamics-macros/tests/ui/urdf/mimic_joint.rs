@@ -1,6 +1,7 @@
 use dynamics_runtime::Dynamics;
 
-// The path is relative to this file: trybuild's crate, inside `target/`, has no such file.
+// A <mimic> naming a joint the file does not have. The path is relative to this file:
+// trybuild's crate, inside `target/`, has no such file.
 #[derive(Dynamics)]
 #[dynamics(urdf = "mimic_joint.urdf")]
 struct Arm;

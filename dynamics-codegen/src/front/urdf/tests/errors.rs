@@ -51,6 +51,47 @@ fn joint(kind: &str, inner: &str) -> String {
     )
 }
 
+/// `<mimic>` read: the joint followed, the multiplier and offset; one coordinate fewer.
+#[test]
+fn a_mimic_joint_follows_its_joint() {
+    let mimic = "<mimic joint=\"j0\" multiplier=\"-2\" offset=\"0.5\"/>";
+    let text = two_links(&joint("revolute", mimic), INERTIAL);
+    let robot = load_urdf("r.urdf", &text, Chain::default(), true)
+        .expect("loads")
+        .robot;
+    let rule = robot.joints[1].mimic.as_ref().expect("a mimic joint");
+    let said = (
+        rule.joint,
+        rule.multiplier.to_string(),
+        rule.offset.to_string(),
+    );
+    assert_eq!(said, (0, "-2".into(), "1/2".into()));
+    assert_eq!(robot.coordinates(), [0]);
+    // A mimic joint that is cut off with its branch is no problem: one joint, no rule.
+    let cut = load_urdf(
+        "r.urdf",
+        &text,
+        Chain {
+            tip: Some("a"),
+            ..Chain::default()
+        },
+        true,
+    );
+    assert!(cut.expect("loads").robot.joints[0].mimic.is_none());
+    // Following a joint that is cut off is: the rule would read a joint the robot lacks.
+    let text = two_links(&joint("revolute", ""), INERTIAL).replace(
+        "<child link=\"a\"/></joint>",
+        "<child link=\"a\"/><mimic joint=\"j1\"/></joint>",
+    );
+    let e = errors(&text, Some("a")).remove(0);
+    assert!(
+        e.message
+            .contains("`j1` is not a moving joint of the robot"),
+        "{}",
+        e.message
+    );
+}
+
 #[test]
 fn a_good_file_loads() {
     let text = two_links(&joint("revolute", ""), INERTIAL);
@@ -64,7 +105,7 @@ type Case<'a> = (String, Option<&'a str>, (usize, usize), &'a str);
 
 #[test]
 fn each_mistake_at_its_place() {
-    let cases: [Case; 10] = [
+    let cases: [Case; 9] = [
         (
             "<robot><link name=\"a\">\n</robot>".into(),
             None,
@@ -82,12 +123,6 @@ fn each_mistake_at_its_place() {
             None,
             (4, 1),
             "a planar joint moves",
-        ),
-        (
-            two_links(&joint("revolute", "<mimic joint=\"j0\"/>"), INERTIAL),
-            None,
-            (4, 69),
-            "has `<mimic>`",
         ),
         (
             two_links(&joint("revolute", "<axis xyz=\"0 0 0\"/>"), INERTIAL),
@@ -349,4 +384,49 @@ fn a_value_after_many_spaces_at_its_place() {
     let (line, column, message) = first(&text, None);
     assert_eq!((line, column), (5, 303), "{message}");
     assert!(message.contains("is zero"), "{message}");
+}
+
+/// Each mistake of a `<mimic>` at the element (or its attribute).
+#[test]
+fn mimic_mistakes_at_the_element() {
+    let cases: [Case; 5] = [
+        (
+            two_links(&joint("revolute", "<mimic joint=\"j1\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "joint `j1`'s `<mimic joint=\"j1\">`: a joint cannot follow itself",
+        ),
+        (
+            two_links(&joint("revolute", "<mimic joint=\"jx\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "the file has no joint `jx`",
+        ),
+        (
+            two_links(&joint("prismatic", "<mimic joint=\"j0\"/>"), INERTIAL),
+            None,
+            (4, 70),
+            "`j1` and `j0` are not of the same kind (revolute or prismatic)",
+        ),
+        (
+            two_links(&joint("revolute", "<mimic multiplier=\"2\"/>"), INERTIAL),
+            None,
+            (4, 69),
+            "`<mimic>` has no `joint` attribute",
+        ),
+        (
+            two_links(
+                &joint("revolute", "<mimic joint=\"j0\" offset=\"x\"/>"),
+                INERTIAL,
+            ),
+            None,
+            (4, 95),
+            "offset",
+        ),
+    ];
+    for (text, tip, at, message) in cases {
+        let (line, column, said) = first(&text, tip);
+        assert_eq!((line, column), at, "{said}");
+        assert!(said.contains(message), "{said}");
+    }
 }
