@@ -102,6 +102,12 @@ impl Equations {
         let sum = |s: Vec<Expr>| ids(&if s.is_empty() { none() } else { s });
         out.torques_for_tip_wrenches = sum(in_tip_sum);
         out.torques_for_base_wrenches = sum(in_base_sum);
+        if robot.has_mimics() {
+            // In the coordinates, as every other output ([`super::mimic`]).
+            let offsets = tracer.angle_offsets();
+            let reduction = super::mimic::Reduction::new(&graph, &tracer, robot, &offsets);
+            out = reduction.tips(&mut graph.borrow_mut(), &out);
+        }
         drop(tracer);
         self.graph = graph.into_inner();
         self.tips = Some(out);

@@ -87,7 +87,7 @@ pub(super) fn followed(
     n: usize,
     joint: &ParentAttr,
     count: usize,
-    names: &BTreeMap<String, usize>,
+    names: &BTreeMap<&str, usize>,
 ) -> Result<usize, String> {
     let index = match joint {
         ParentAttr::Number(k, _) => match usize::try_from(*k) {
@@ -100,7 +100,7 @@ pub(super) fn followed(
             }
         },
         ParentAttr::Name(name, _) => *names
-            .get(name)
+            .get(name.as_str())
             .ok_or_else(|| format!("joint {n}: mimic joint `{name}`: no joint has that name"))?,
     };
     if index + 1 == n {
