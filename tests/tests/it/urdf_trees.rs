@@ -11,6 +11,9 @@
 //! * The Panda with its gripper's fingers free (`panda_free_fingers.urdf`: the URDF with its
 //!   `<mimic>` element removed, by `free_fingers.py`): a tree that branches below the base, the
 //!   two fingers hanging off the last arm link.
+//! * Baxter with its grippers' fingers free (`baxter_free_fingers.urdf`, by `free_fingers.py`):
+//!   19 joints, past the serial limit of 16 (a tree is bounded along each path): the head and
+//!   two arms of seven off the base, two fingers off each arm's last link.
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
@@ -36,6 +39,11 @@ urdf_tree!(
     PandaFreeFingers,
     "../robots/urdf/trees/panda_free_fingers.urdf",
     "panda_link0"
+);
+urdf_tree!(
+    BaxterFreeFingers,
+    "../robots/urdf/trees/baxter_free_fingers.urdf",
+    "base"
 );
 
 /// How a quantity's error is measured: scaled by max(1, max|want|) as every other data file,
@@ -189,4 +197,16 @@ fn panda_with_free_fingers_matches_pinocchio() {
         TOLERANCE,
     );
     zero_blocks(&PandaFreeFingers, "panda_fingers_no_mimic.json");
+}
+
+#[test]
+fn baxter_with_free_fingers_matches_pinocchio() {
+    let worst = check(
+        &BaxterFreeFingers,
+        "baxter_no_mimic.json",
+        Measure::Scaled,
+        1e-12,
+    );
+    assert!(worst > 0.0, "every quantity exact: the check compares nothing");
+    zero_blocks(&BaxterFreeFingers, "baxter_no_mimic.json");
 }
