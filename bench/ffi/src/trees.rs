@@ -35,7 +35,9 @@ mod tests {
         let rows = |m: [[f64; N]; N]| m.iter().flatten().copied().collect::<Vec<f64>>();
         for s in samples::<N>(robot) {
             let d = r.inverse_dynamics_derivatives(&s.q, &s.qd, &s.qdd);
-            let fd = r.forward_dynamics_derivatives(&s.q, &s.qd, &s.tau).expect("M > 0");
+            let fd = r
+                .forward_dynamics_derivatives(&s.q, &s.qd, &s.tau)
+                .expect("M > 0");
             let tau = r.inverse_dynamics(&s.q, &s.qd, &s.qdd).to_vec();
             let checks = [
                 ("tau", s.qdd, tau.clone()),
@@ -43,19 +45,43 @@ mod tests {
                 ("g", s.qdd, r.gravity_torques(&s.q).to_vec()),
                 ("C", s.qdd, rows(r.coriolis_matrix(&s.q, &s.qd))),
                 ("h", s.qdd, r.bias_torques(&s.q, &s.qd).to_vec()),
-                ("fd", s.tau, r.forward_dynamics(&s.q, &s.qd, &s.tau).expect("M > 0").to_vec()),
-                ("Minv", s.qdd, rows(r.mass_matrix_inverse(&s.q).expect("M > 0"))),
+                (
+                    "fd",
+                    s.tau,
+                    r.forward_dynamics(&s.q, &s.qd, &s.tau)
+                        .expect("M > 0")
+                        .to_vec(),
+                ),
+                (
+                    "Minv",
+                    s.qdd,
+                    rows(r.mass_matrix_inverse(&s.q).expect("M > 0")),
+                ),
                 ("dtau", s.qdd, [rows(d.dtau_dq), rows(d.dtau_dqd)].concat()),
-                ("dqdd", s.tau, [rows(fd.dqdd_dq), rows(fd.dqdd_dqd), rows(fd.dqdd_dtau)].concat()),
+                (
+                    "dqdd",
+                    s.tau,
+                    [rows(fd.dqdd_dq), rows(fd.dqdd_dqd), rows(fd.dqdd_dtau)].concat(),
+                ),
             ];
             for (function, third, want) in checks {
                 let f = lookup(robot, function).expect("a tree's function");
                 let mut got = vec![f64::NAN; 3 * N * N + 1];
                 // SAFETY: N inputs each, room for the largest output (3 N × N) and one more.
-                unsafe { f(s.q.as_ptr(), s.qd.as_ptr(), third.as_ptr(), got.as_mut_ptr()) };
+                unsafe {
+                    f(
+                        s.q.as_ptr(),
+                        s.qd.as_ptr(),
+                        third.as_ptr(),
+                        got.as_mut_ptr(),
+                    )
+                };
                 let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
                 assert_eq!(bits(&got[..want.len()]), bits(&want), "{robot} {function}");
-                assert!(got[want.len()..].iter().all(|x| x.is_nan()), "{robot} {function}");
+                assert!(
+                    got[want.len()..].iter().all(|x| x.is_nan()),
+                    "{robot} {function}"
+                );
             }
             let err = dynamics_bench::scaled_error(&tau, &s.tau);
             assert!(err < 1e-9, "{robot}: {err:e}");
@@ -70,5 +96,4 @@ mod tests {
         check_tree(&BaxterFreeFingers, "baxter_no_mimic");
         check_tree(&AllegroHand, "allegro_right_hand");
     }
-
 }

@@ -12,11 +12,14 @@ use serde_json::Value;
 /// URDF's joint friction (which the data give apart and the robot's τ includes).
 fn states(file: &str, count: usize) -> Vec<State> {
     let path = root().join("tests/data/trees").join(file);
-    let json: Value = serde_json::from_str(&std::fs::read_to_string(path).expect("data"))
-        .expect("JSON");
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(path).expect("data")).expect("JSON");
     let vector = |v: &Value| -> Vec<f64> {
         let items = v.as_array().expect("an array");
-        items.iter().map(|x| x.as_f64().expect("a number")).collect()
+        items
+            .iter()
+            .map(|x| x.as_f64().expect("a number"))
+            .collect()
     };
     let samples = json["samples"].as_array().expect("samples");
     samples
@@ -42,7 +45,10 @@ fn baxter_s_header_with_derivatives_past_sixteen_joints() {
         &["derivatives"],
     );
     let header = &robot.header;
-    assert!(header.contains("#define DYNAMICS_UNIT24_H"), "no wide table's guard");
+    assert!(
+        header.contains("#define DYNAMICS_UNIT24_H"),
+        "no wide table's guard"
+    );
     assert!(header.contains("static const double dynamics_unit24[24][24] = {"));
     assert!(header.contains("static const float dynamics_unit24_f32[24][24] = {"));
     // The last direction's unit vector is read, and the serial robots' table is not there.
@@ -55,7 +61,8 @@ fn baxter_s_header_with_derivatives_past_sixteen_joints() {
         return;
     }
     assert!(
-        runs.iter().any(|r| r.label.contains("DYNAMICS_TANGENT_LANES=1")),
+        runs.iter()
+            .any(|r| r.label.contains("DYNAMICS_TANGENT_LANES=1")),
         "no build with the tangents in lanes"
     );
     for run in &runs {

@@ -5,8 +5,8 @@
 mod c_header;
 mod c_parameters;
 mod c_support;
-mod c_trig;
 mod c_tree;
+mod c_trig;
 mod cli;
 mod cli_consistent;
 mod cli_csv;

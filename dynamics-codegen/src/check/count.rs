@@ -85,10 +85,7 @@ mod tests {
         // The second arm's seventeenth joint (joint 34, 0-based 33) is the first past the limit.
         let mut long = arms(3, 17);
         long[..17].iter_mut().skip(1).for_each(|p| *p = None);
-        assert_eq!(
-            joint_count(&long),
-            Some(Problem::PathTooLong { joint: 33 })
-        );
+        assert_eq!(joint_count(&long), Some(Problem::PathTooLong { joint: 33 }));
         assert!(Problem::PathTooLong { joint: 33 }
             .to_string()
             .starts_with("joint 34 is the 17th joint on its path from the base; at most 16"));

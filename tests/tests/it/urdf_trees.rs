@@ -207,6 +207,9 @@ fn baxter_with_free_fingers_matches_pinocchio() {
         Measure::Scaled,
         1e-12,
     );
-    assert!(worst > 0.0, "every quantity exact: the check compares nothing");
+    assert!(
+        worst > 0.0,
+        "every quantity exact: the check compares nothing"
+    );
     zero_blocks(&BaxterFreeFingers, "baxter_no_mimic.json");
 }

@@ -118,4 +118,3 @@ pub(super) fn tell(
     let at = sources.place(problem).or(fallback).copied();
     (at.unwrap_or(call_site), message)
 }
-

@@ -70,7 +70,10 @@ fn a_path_of_seventeen_joints_is_refused_at_its_seventeenth() {
     // That arm taken alone (`tips`) is a serial robot of 17 joints.
     let (line, message) = refused(&text, &["a1l16"]);
     assert_eq!(line, lines[3 + 16]);
-    assert!(message.starts_with("17 joints; at most 16 are supported"), "{message}");
+    assert!(
+        message.starts_with("17 joints; at most 16 are supported"),
+        "{message}"
+    );
 }
 
 #[test]
