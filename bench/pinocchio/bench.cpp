@@ -544,7 +544,16 @@ static Eigen::MatrixXd matn(const json::Value & v)
 static const double TOLERANCE = 1e-9;
 static const std::size_t CHECK_SAMPLE = 5;
 
-// max|got - want| / max(1, max|want|) must not exceed TOLERANCE.
+// The tolerance of `robot`'s checks: TOLERANCE, but 1e-6 for the Allegro hand, whose thumb's
+// first axis is 9e-10 rad off parallel to the palm's in the URDF; the generator takes such axes
+// as parallel, a change of the robot that its small links' forward dynamics and derivatives (M
+// is at most 1.1e-3 kg m²) show at 4e-8 (tests/tests/it/urdf_trees.rs checks the same change).
+static double tolerance_of(const std::string & robot)
+{
+  return robot == "allegro_right_hand" ? 1e-6 : TOLERANCE;
+}
+
+// max|got - want| / max(1, max|want|) must not exceed the robot's tolerance.
 static void check(
   const std::string & robot,
   const std::string & what,
@@ -558,11 +567,12 @@ static void check(
     std::exit(1);
   }
   const double err = (got - want).cwiseAbs().maxCoeff() / std::max(1.0, want.cwiseAbs().maxCoeff());
-  if (!(err <= TOLERANCE))
+  const double tolerance = tolerance_of(robot);
+  if (!(err <= tolerance))
   {
     std::fprintf(
       stderr, "%s: %s differs from the reference (sample %zu) by %.3e relative (> %.0e): wrong model?\n",
-      robot.c_str(), what.c_str(), sample, err, TOLERANCE);
+      robot.c_str(), what.c_str(), sample, err, tolerance);
     std::exit(1);
   }
 }
