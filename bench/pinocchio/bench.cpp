@@ -2,8 +2,10 @@
 //
 // Usage: pinocchio_bench [--generated LIB.so [--c LIB.so]] DATA.json [DATA.json ...]
 //
-// Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/ or
-// tests/data/urdf/ (format in tests/data/reference/README.md). For each file the program
+// Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/,
+// tests/data/urdf/ (format in tests/data/reference/README.md) or tests/data/trees/ (a robot that
+// branches, its joints' "parents" given: no hand frame, so no fk, J, JtF, and no Y, YB; the
+// other functions as below). For each file the program
 //   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
 //      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
 //      transforms, link inertias mapped with post_i.act(...), armature = actuator inertias,
@@ -542,7 +544,16 @@ static Eigen::MatrixXd matn(const json::Value & v)
 static const double TOLERANCE = 1e-9;
 static const std::size_t CHECK_SAMPLE = 5;
 
-// max|got - want| / max(1, max|want|) must not exceed TOLERANCE.
+// The tolerance of `robot`'s checks: TOLERANCE, but 1e-6 for the Allegro hand, whose thumb's
+// first axis is 9e-10 rad off parallel to the palm's in the URDF; the generator takes such axes
+// as parallel, a change of the robot that its small links' forward dynamics and derivatives (M
+// is at most 1.1e-3 kg m²) show at 4e-8 (tests/tests/it/urdf_trees.rs checks the same change).
+static double tolerance_of(const std::string & robot)
+{
+  return robot == "allegro_right_hand" ? 1e-6 : TOLERANCE;
+}
+
+// max|got - want| / max(1, max|want|) must not exceed the robot's tolerance.
 static void check(
   const std::string & robot,
   const std::string & what,
@@ -556,11 +567,12 @@ static void check(
     std::exit(1);
   }
   const double err = (got - want).cwiseAbs().maxCoeff() / std::max(1.0, want.cwiseAbs().maxCoeff());
-  if (!(err <= TOLERANCE))
+  const double tolerance = tolerance_of(robot);
+  if (!(err <= tolerance))
   {
     std::fprintf(
       stderr, "%s: %s differs from the reference (sample %zu) by %.3e relative (> %.0e): wrong model?\n",
-      robot.c_str(), what.c_str(), sample, err, TOLERANCE);
+      robot.c_str(), what.c_str(), sample, err, tolerance);
     std::exit(1);
   }
 }
@@ -874,7 +886,8 @@ static void check_generated(
   const Model & model,
   pinocchio::FrameIndex hand,
   bool forward,
-  const std::vector<SE3> & links)
+  const std::vector<SE3> & links,
+  bool tree)
 {
   Data data(model);
   std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
@@ -916,29 +929,37 @@ static void check_generated(
     check(robot, "C" + at, matrix(), matn(sample["C"]), s);
     get("h")(q.data(), v.data(), a.data(), out.data());
     check(robot, "h" + at, vector(n), vecn(sample["h"]), s);
-    const Hand want = hand_of(model, hand, q, a.head<6>());
-    get("fk")(q.data(), v.data(), a.data(), out.data());
-    check(robot, "fk" + at + " against Pinocchio", rows(3, 4), want.pose, s);
-    get("J")(q.data(), v.data(), a.data(), out.data());
-    check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
-    get("JtF")(q.data(), v.data(), a.data(), out.data());
-    check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
+    // A tree (tests/data/trees/) has no hand frame, regressor or base parameters here: its
+    // dynamics and their derivatives alone.
+    if (!tree)
+    {
+      const Hand want = hand_of(model, hand, q, a.head<6>());
+      get("fk")(q.data(), v.data(), a.data(), out.data());
+      check(robot, "fk" + at + " against Pinocchio", rows(3, 4), want.pose, s);
+      get("J")(q.data(), v.data(), a.data(), out.data());
+      check(robot, "J" + at + " against Pinocchio", rows(6, n), want.J, s);
+      get("JtF")(q.data(), v.data(), a.data(), out.data());
+      check(robot, "JtF" + at + " against Pinocchio", vector(n), want.JtF, s);
+    }
     pinocchio::computeRNEADerivatives(model, data, q, v, a);
     get("dtau")(q.data(), v.data(), a.data(), out.data());
     check(robot, "dtau/dq" + at + " against Pinocchio", block(0), data.dtau_dq, s);
     check(robot, "dtau/dqd" + at + " against Pinocchio", block(1), data.dtau_dv, s);
-    get("Y")(q.data(), v.data(), a.data(), out.data());
-    if (!links.empty())
+    if (!tree)
     {
-      const Eigen::MatrixXd Y = pinocchio::computeJointTorqueRegressor(model, data, q, v, a);
-      check(robot, "Y" + at + " against Pinocchio", rows(n, 10 * n), regressor_in_link_frames(Y, links), s);
+      get("Y")(q.data(), v.data(), a.data(), out.data());
+      if (!links.empty())
+      {
+        const Eigen::MatrixXd Y = pinocchio::computeJointTorqueRegressor(model, data, q, v, a);
+        check(robot, "Y" + at + " against Pinocchio", rows(n, 10 * n), regressor_in_link_frames(Y, links), s);
+      }
+      // The base regressor times the base parameters: the torques (the reference robots have no
+      // springs), the rotors' inertia included.
+      get("piB")(q.data(), v.data(), a.data(), out.data());
+      const Eigen::MatrixXd base_parameters = vector(b);
+      get("YB")(q.data(), v.data(), a.data(), out.data());
+      check(robot, "YB piB" + at, rows(n, b) * base_parameters, vecn(sample["tau"]), s);
     }
-    // The base regressor times the base parameters: the torques (the reference robots have no
-    // springs), the rotors' inertia included.
-    get("piB")(q.data(), v.data(), a.data(), out.data());
-    const Eigen::MatrixXd base_parameters = vector(b);
-    get("YB")(q.data(), v.data(), a.data(), out.data());
-    check(robot, "YB piB" + at, rows(n, b) * base_parameters, vecn(sample["tau"]), s);
     if (!forward)
       continue;
     const Eigen::VectorXd tau = vecn(sample["tau"]);
@@ -1176,12 +1197,21 @@ int main(int argc, char ** argv)
     // Each link frame's placement on its joint: a D-H model's, from its table; a URDF model's
     // link frames are its joint frames, as the generator's regressor has them.
     std::vector<SE3> links;
+    // A robot that branches (tests/data/trees/: its joints' "parents"): no hand frame, so no fk,
+    // J, JtF; no regressor rows.
+    bool tree = false;
     try
     {
       file = json::parse_file(path);
       robot = file["robot"].string();
-      SE3 placement;
-      if (file.has("pinocchio_model"))
+      tree = file.has("parents");
+      SE3 placement = SE3::Identity();
+      if (tree)
+      {
+        model = build_model_from_pinocchio(file["pinocchio_model"]);
+        links.assign(static_cast<std::size_t>(model.njoints - 1), SE3::Identity());
+      }
+      else if (file.has("pinocchio_model"))
       {
         // The tip link's placement on the last joint, from sample 0's pose (oMi⁻¹ · oMtip).
         model = build_model_from_pinocchio(file["pinocchio_model"]);
@@ -1230,10 +1260,10 @@ int main(int argc, char ** argv)
       {
         const std::size_t n = generated->dof(robot.c_str()), b = generated->base_count(robot.c_str());
         auto rust_get = [&](const char * function) { return generated->get(robot, function); };
-        check_generated(robot, rust_get, n, b, " (generated)", samples, model, hand, forward, links);
+        check_generated(robot, rust_get, n, b, " (generated)", samples, model, hand, forward, links, tree);
         with_simplified = check_simplified(robot, *generated, model);
         if (c_robot)
-          check_generated(robot, c_get, n, b, " (C)", samples, model, hand, forward, links);
+          check_generated(robot, c_get, n, b, " (C)", samples, model, hand, forward, links, tree);
       }
       catch (const std::exception & e)
       {
@@ -1306,36 +1336,42 @@ int main(int argc, char ** argv)
     time("h", [&](std::size_t k) {
       return pinocchio::nonLinearEffects(model, data, qs[k], vs[k])[0];
     });
-    time("fk", [&](std::size_t k) {
-      pinocchio::forwardKinematics(model, data, qs[k]);
-      return pinocchio::updateFramePlacement(model, data, hand).translation()[0];
-    });
-    time("J", [&](std::size_t k) {
-      pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
-      return J(0, 0);
-    });
-    time("JtF", [&](std::size_t k) {
-      pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
-      JtF.noalias() = J.transpose() * as[k].head<6>();
-      return JtF[0];
-    });
+    if (!tree)
+    {
+      time("fk", [&](std::size_t k) {
+        pinocchio::forwardKinematics(model, data, qs[k]);
+        return pinocchio::updateFramePlacement(model, data, hand).translation()[0];
+      });
+      time("J", [&](std::size_t k) {
+        pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
+        return J(0, 0);
+      });
+      time("JtF", [&](std::size_t k) {
+        pinocchio::computeFrameJacobian(model, data, qs[k], hand, pinocchio::LOCAL_WORLD_ALIGNED, J);
+        JtF.noalias() = J.transpose() * as[k].head<6>();
+        return JtF[0];
+      });
+    }
     time("dtau", [&](std::size_t k) {
       pinocchio::computeRNEADerivatives(model, data, qs[k], vs[k], as[k]);
       return data.dtau_dq(0, 0);
     });
-    time("Y", [&](std::size_t k) {
-      return pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k])(0, 0);
-    });
-    // Pinocchio has no base regressor: its user computes Y and keeps the independent columns
-    // (found once, by a QR with column pivoting of Y stacked over the samples).
-    const std::vector<Eigen::Index> base = base_columns(model, qs, vs, as);
-    Eigen::MatrixXd Yb(model.nv, static_cast<Eigen::Index>(base.size()));
-    time("YB", [&](std::size_t k) {
-      const Eigen::MatrixXd & Y = pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k]);
-      for (std::size_t c = 0; c < base.size(); ++c)
-        Yb.col(static_cast<Eigen::Index>(c)) = Y.col(base[c]);
-      return Yb(0, 0);
-    });
+    if (!tree)
+    {
+      time("Y", [&](std::size_t k) {
+        return pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k])(0, 0);
+      });
+      // Pinocchio has no base regressor: its user computes Y and keeps the independent columns
+      // (found once, by a QR with column pivoting of Y stacked over the samples).
+      const std::vector<Eigen::Index> base = base_columns(model, qs, vs, as);
+      Eigen::MatrixXd Yb(model.nv, static_cast<Eigen::Index>(base.size()));
+      time("YB", [&](std::size_t k) {
+        const Eigen::MatrixXd & Y = pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k]);
+        for (std::size_t c = 0; c < base.size(); ++c)
+          Yb.col(static_cast<Eigen::Index>(c)) = Y.col(base[c]);
+        return Yb(0, 0);
+      });
+    }
     if (forward)
     {
       time_with("dqdd", taus, [&](std::size_t k) {

@@ -155,6 +155,7 @@ fn data_file(robot: &str) -> String {
         "panda" => "panda/data.json".into(),
         "ur5_dh" => "urdf/ur5_dh.json".into(),
         "ur5_urdf" => "urdf/ur5.json".into(),
+        "baxter_no_mimic" | "allegro_right_hand" => format!("trees/{robot}.json"),
         _ => format!("reference/data/{robot}.json"),
     }
 }
@@ -170,7 +171,8 @@ fn vector<const N: usize>(v: &serde_json::Value, what: &str) -> [f64; N] {
     })
 }
 
-/// The 20 reference samples of `robot` (one of [`ROBOTS`]), read from its data file.
+/// The 20 reference samples of `robot` (one of [`ROBOTS`], or a tree: `baxter_no_mimic`,
+/// `allegro_right_hand`), read from its data file.
 ///
 /// # Panics
 /// If the file is missing or malformed, or the robot has not `N` joints.
@@ -257,6 +259,9 @@ pub fn book(robot: &str) -> dynamics_reference::Robot {
 }
 
 pub use dynamics_reference::scaled_error;
+
+mod trees;
+pub use trees::{AllegroHand, BaxterFreeFingers};
 
 /// The robots with simplified models (`simplify(...)` in their derives).
 pub const SIMPLIFIED: [&str; 2] = ["puma560", "panda"];

@@ -17,12 +17,16 @@
 
 mod batch;
 mod simplified;
+mod trees;
 
 pub use batch::{dynamics_bench_horizon, HORIZON};
 use core::ffi::{c_char, CStr};
-use dynamics_bench::{Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf};
+use dynamics_bench::{
+    AllegroHand, BaxterFreeFingers, Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf,
+};
 use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
 pub use simplified::{dynamics_bench_simplified_bounds, dynamics_bench_simplified_envelope};
+use trees::tree;
 
 /// The generated traits a benchmark robot implements, with `N` joints and `B` base parameters.
 pub trait Timed<const N: usize, const B: usize>:
@@ -67,7 +71,7 @@ unsafe fn output<const N: usize>(out: *mut f64, values: [f64; N]) {
 /// The timed functions of one `N`-joint robot type, as C functions.
 struct Functions<R, const N: usize, const B: usize>(core::marker::PhantomData<R>);
 
-impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
+impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functions<R, N, B> {
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
@@ -97,29 +101,6 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
     unsafe extern "C" fn bias(q: *const f64, qd: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe { output(out, R::default().bias_torques(&input(q), &input(qd))) }
-    }
-
-    unsafe extern "C" fn hand_pose(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
-        let pose = R::default().hand_pose(&input(q));
-        let rows = core::array::from_fn(|i| {
-            let r = pose.rotation[i];
-            [r[0], r[1], r[2], pose.position[i]]
-        });
-        // SAFETY: the contract of `Function`.
-        unsafe { output_rows::<4, 3>(out, rows) }
-    }
-
-    unsafe extern "C" fn jacobian(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
-        // SAFETY: the contract of `Function`.
-        unsafe { output_rows(out, R::default().hand_jacobian_in_base(&input(q))) }
-    }
-
-    unsafe extern "C" fn statics(q: *const f64, _: *const f64, wrench: *const f64, out: *mut f64) {
-        // SAFETY: the contract of `Function` (six values at `wrench`).
-        unsafe {
-            let tau = R::default().joint_torques_for_base_wrench(&input(q), &input(wrench));
-            output(out, tau);
-        }
     }
 
     unsafe extern "C" fn forward(q: *const f64, qd: *const f64, tau: *const f64, out: *mut f64) {
@@ -170,6 +151,48 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         }
     }
 
+    /// The functions of the dynamics and their derivatives alone: a tree's (no hand frame,
+    /// regressor or base parameters).
+    fn dynamics(function: &[u8]) -> Option<Function> {
+        Some(match function {
+            b"tau" => Self::tau,
+            b"M" => Self::mass,
+            b"g" => Self::gravity,
+            b"C" => Self::coriolis,
+            b"h" => Self::bias,
+            b"fd" => Self::forward,
+            b"Minv" => Self::mass_inverse,
+            b"dtau" => Self::inverse_derivatives,
+            b"dqdd" => Self::forward_derivatives,
+            _ => return None,
+        })
+    }
+}
+
+impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
+    unsafe extern "C" fn hand_pose(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        let pose = R::default().hand_pose(&input(q));
+        let rows = core::array::from_fn(|i| {
+            let r = pose.rotation[i];
+            [r[0], r[1], r[2], pose.position[i]]
+        });
+        // SAFETY: the contract of `Function`.
+        unsafe { output_rows::<4, 3>(out, rows) }
+    }
+
+    unsafe extern "C" fn jacobian(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function`.
+        unsafe { output_rows(out, R::default().hand_jacobian_in_base(&input(q))) }
+    }
+
+    unsafe extern "C" fn statics(q: *const f64, _: *const f64, wrench: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (six values at `wrench`).
+        unsafe {
+            let tau = R::default().joint_torques_for_base_wrench(&input(q), &input(wrench));
+            output(out, tau);
+        }
+    }
+
     unsafe extern "C" fn regressor(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function` (room for n × 10 n values at `out`).
         unsafe {
@@ -206,22 +229,13 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
 
     fn get(function: &[u8]) -> Option<Function> {
         Some(match function {
-            b"tau" => Self::tau,
-            b"M" => Self::mass,
-            b"g" => Self::gravity,
-            b"C" => Self::coriolis,
-            b"h" => Self::bias,
             b"fk" => Self::hand_pose,
             b"J" => Self::jacobian,
             b"JtF" => Self::statics,
-            b"fd" => Self::forward,
-            b"Minv" => Self::mass_inverse,
-            b"dtau" => Self::inverse_derivatives,
-            b"dqdd" => Self::forward_derivatives,
             b"Y" => Self::regressor,
             b"YB" => Self::base_regressor,
             b"piB" => Self::base_parameters,
-            _ => return Self::get_batch(function),
+            _ => return Self::dynamics(function).or_else(|| Self::get_batch(function)),
         })
     }
 }
@@ -257,7 +271,8 @@ fn entry<R: Timed<N, B>, const N: usize, const B: usize>(_: &R) -> Robot {
     (N, B, Functions::<R, N, B>::get)
 }
 
-/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh` or `ur5_urdf`).
+/// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh`,
+/// `ur5_urdf`, or the trees `baxter_no_mimic` and `allegro_right_hand`).
 ///
 /// # Safety
 /// `name` is null or a NUL-terminated string.
@@ -274,6 +289,8 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"panda" => entry(&Panda),
         b"ur5_dh" => entry(&Ur5Dh),
         b"ur5_urdf" => entry(&Ur5Urdf),
+        b"baxter_no_mimic" => tree(&BaxterFreeFingers),
+        b"allegro_right_hand" => tree(&AllegroHand),
         _ => return None,
     })
 }

@@ -5,6 +5,7 @@
 mod c_header;
 mod c_parameters;
 mod c_support;
+mod c_tree;
 mod c_trig;
 mod cli;
 mod cli_consistent;

@@ -274,7 +274,7 @@ impl<'a> Writer<'a> {
         };
         let mut joints = Vec::new();
         for i in 0..self.eq.dof {
-            let joint = u16::try_from(i).expect("at most 16 joints");
+            let joint = u16::try_from(i).expect("at most 64 joints");
             let (sine, cosine) = (Var::SinQ(joint), Var::CosQ(joint));
             let angle = match self.eq.angle_offsets[i] {
                 Some(offset) => format!("q[{i}] + {}", self.expr(offset, Place::AddRight)),

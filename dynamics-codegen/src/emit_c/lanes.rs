@@ -52,7 +52,7 @@ impl Writer<'_> {
         // Each direction's units as a row of the identity times their sum: an array of them
         // built from scalars would be written to the stack value by value and read back as
         // one vector, which waits for the stores.
-        let unit = format!("dynamics_unit{}", self.precision.suffix());
+        let unit = super::unit_table(plan.directions, self.precision);
         let mut acc: Option<String> = None;
         for j in 0..plan.directions {
             let at: Vec<&&Term> = units

@@ -130,7 +130,7 @@ fn code(eq: &Equations, prefix: &str) -> String {
     text.push_str(FMA);
     text.push('\n');
     if functions.iter().any(|f| f.plans_lanes(eq)) {
-        text.push_str(&tangent_lanes());
+        text.push_str(&tangent_lanes(eq.dof));
         text.push('\n');
     }
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
@@ -176,9 +176,11 @@ static inline float dynamics_fma_f32(float x, float y, float a) {
 /// Where the derivatives compute their tangents in lanes, eight directions a vector: as the
 /// Rust code does, where the target has AVX-512 (32 registers of eight `double`s); with AVX2
 /// alone the 6-joint arms' took more instructions in Rust. `lanes.rs` writes them, with the
-/// rows of the identity (as wide as the widest lanes) its unit vectors are read from.
-fn tangent_lanes() -> String {
-    let width = crate::emit::lanes::width(crate::check::MAX_JOINTS);
+/// rows of the identity its unit vectors are read from: as wide as a serial robot's widest
+/// lanes in every header (the same table, which headers included together share), a tree's
+/// wider lanes (`dof` past [`crate::check::MAX_JOINTS`]) from a table of their own width.
+fn tangent_lanes(dof: usize) -> String {
+    let width = unit_width(dof);
     let table = |p: Precision| {
         let (one, zero) = (p.literal(1.0), p.literal(0.0));
         let rows: Vec<String> = (0..width)
@@ -190,12 +192,13 @@ fn tangent_lanes() -> String {
             })
             .collect();
         format!(
-            "static const {} dynamics_unit{}[{width}][{width}] = {{\n    {}}};\n",
+            "static const {} {}[{width}][{width}] = {{\n    {}}};\n",
             p.c_type(),
-            p.suffix(),
+            unit_table(dof, p),
             rows.join(",\n    ")
         )
     };
+    let guard = format!("{}_H", unit_table(dof, Precision::Double).to_uppercase());
     format!(
         "#ifndef DYNAMICS_TANGENT_LANES
 /* The derivatives' tangents in lanes (arrays of eight directions, one loop each, which the
@@ -216,14 +219,33 @@ fn tangent_lanes() -> String {
 #define DYNAMICS_LANES_WIDE
 #endif
 #endif
-#if DYNAMICS_TANGENT_LANES && !defined(DYNAMICS_UNIT_H)
-#define DYNAMICS_UNIT_H
+#if DYNAMICS_TANGENT_LANES && !defined({guard})
+#define {guard}
 /* Row j: the unit vector of direction j. */
 {}{}#endif
 ",
         table(Precision::Double),
         table(Precision::Single)
     )
+}
+
+/// The width of the identity table the lanes of a robot of `dof` joints read their unit vectors
+/// from: a serial robot's widest lanes' at least.
+fn unit_width(dof: usize) -> usize {
+    use crate::emit::lanes::width;
+    width(crate::check::MAX_JOINTS).max(width(dof))
+}
+
+/// The name of that table: `dynamics_unit` (`_f32`) for serial robots' width, `dynamics_unit24`
+/// for a wider one.
+pub(super) fn unit_table(dof: usize, precision: Precision) -> String {
+    let width = unit_width(dof);
+    let wider = if width > crate::emit::lanes::width(crate::check::MAX_JOINTS) {
+        width.to_string()
+    } else {
+        String::new()
+    };
+    format!("dynamics_unit{wider}{}", precision.suffix())
 }
 
 /// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).
@@ -332,4 +354,27 @@ fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
         ]
     }))
     .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{tangent_lanes, unit_table, Precision};
+
+    /// Serial robots' headers keep the one identity table of 16 (shared by the headers included
+    /// together); a robot past 16 joints has a wider one under its own name and guard.
+    #[test]
+    fn the_identity_table_widens_only_past_sixteen_joints() {
+        for dof in [1, 6, 7, 16] {
+            let text = tangent_lanes(dof);
+            assert!(text.contains("#define DYNAMICS_UNIT_H\n"), "{dof}");
+            assert!(text.contains("static const double dynamics_unit[16][16] = {"));
+            assert!(text.contains("static const float dynamics_unit_f32[16][16] = {"));
+            assert_eq!(unit_table(dof, Precision::Single), "dynamics_unit_f32");
+        }
+        let text = tangent_lanes(19);
+        assert!(text.contains("#define DYNAMICS_UNIT24_H\n"));
+        assert!(text.contains("static const double dynamics_unit24[24][24] = {"));
+        assert!(!text.contains("dynamics_unit["));
+        assert_eq!(unit_table(64, Precision::Double), "dynamics_unit64");
+    }
 }

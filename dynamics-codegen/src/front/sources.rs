@@ -3,7 +3,7 @@
 //! place each problem on the value it concerns, whatever the input looked like. A place is the
 //! attribute's tokens (their spans) or a line and column of a file.
 
-use crate::check::{Problem, MAX_JOINTS};
+use crate::check::{Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::front::simplify::given::Given;
 use crate::model::Robot;
 use proc_macro2::Span;
@@ -49,11 +49,13 @@ impl<P> Sources<P> {
     }
 
     /// Where `problem` is: the value it concerns, or for a robot with too many joints the first
-    /// joint past the limit (its entry).
+    /// joint past the limit (its entry): in all, or along a path of a tree.
     #[must_use]
     pub fn place(&self, problem: &Problem) -> Option<&P> {
         match problem {
             Problem::TooManyJoints { .. } => self.get(MAX_JOINTS, "type"),
+            Problem::TooManyInTree { .. } => self.get(MAX_TREE_JOINTS, "type"),
+            Problem::PathTooLong { joint } => self.get(*joint, "type"),
             Problem::Link { joint, problem } => self.get(*joint, problem.parameter.key()),
             Problem::Branch { joint, .. } => self.get(*joint, "type"),
         }

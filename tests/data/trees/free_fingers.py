@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""The URDF of `robots/urdf/trees/panda_free_fingers.urdf`: the Panda's with its `<mimic>`
-element removed, so that each finger joint is a coordinate of its own.
+"""The URDFs of `robots/urdf/trees/panda_free_fingers.urdf` and `baxter_free_fingers.urdf`: the
+Panda's and Baxter's with their `<mimic>` elements removed, so that each finger joint is a
+coordinate of its own.
 
-This is the model `panda_fingers_no_mimic.json` describes (Pinocchio loads a URDF without
-`mimic=True` by ignoring the element): the tests load it to check a tree that branches below
-its base (the gripper's two fingers) before mimic joints are supported. The text is otherwise
+These are the models `panda_fingers_no_mimic.json` and `baxter_no_mimic.json` describe
+(Pinocchio loads a URDF without `mimic=True` by ignoring the element): the tests load them to
+check trees that branch at the grippers' two fingers before mimic joints are supported. The text is otherwise
 the original's, byte for byte, with a comment naming this script after the XML declaration.
 
 Usage, from the repository root (any Python 3):
@@ -18,6 +19,7 @@ import re
 ROOT = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 ROBOTS = [
     ("robots/urdf/panda.urdf", "robots/urdf/trees/panda_free_fingers.urdf", 1),
+    ("robots/urdf/trees/baxter.urdf", "robots/urdf/trees/baxter_free_fingers.urdf", 2),
 ]
 MIMIC = re.compile(r"^[ \t]*<mimic\b[^>]*/>[ \t]*\n", re.MULTILINE)
 

@@ -14,6 +14,10 @@
 //! * The Panda with its URDF's `<mimic>`: the second finger follows the first, 9 joints and 8
 //!   coordinates, every output in the reduced coordinates (`panda_fingers.json`: Pinocchio 4.1's
 //!   mimic model; C the projected `Gᵀ C G`, the forward dynamics the reduced solve).
+//! * Baxter with its grippers' fingers free (`baxter_free_fingers.urdf`, by `free_fingers.py`):
+//!   19 joints, past the serial limit of 16 (a tree is bounded along each path): the head and
+//!   two arms of seven off the base, two fingers off each arm's last link; and with its
+//!   `<mimic>` fingers (`baxter.json`), 17 coordinates.
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
@@ -40,7 +44,17 @@ urdf_tree!(
     "../robots/urdf/trees/panda_free_fingers.urdf",
     "panda_link0"
 );
+urdf_tree!(
+    BaxterFreeFingers,
+    "../robots/urdf/trees/baxter_free_fingers.urdf",
+    "base"
+);
 
+urdf_tree!(
+    BaxterMimicFingers,
+    "../robots/urdf/trees/baxter.urdf",
+    "base"
+);
 urdf_tree!(
     PandaMimicFingers,
     "../robots/urdf/panda.urdf",
@@ -208,4 +222,25 @@ fn panda_with_mimic_fingers_matches_pinocchio() {
         Measure::Scaled,
         TOLERANCE,
     );
+}
+
+#[test]
+fn baxter_with_free_fingers_matches_pinocchio() {
+    let worst = check(
+        &BaxterFreeFingers,
+        "baxter_no_mimic.json",
+        Measure::Scaled,
+        1e-12,
+    );
+    assert!(
+        worst > 0.0,
+        "every quantity exact: the check compares nothing"
+    );
+    zero_blocks(&BaxterFreeFingers, "baxter_no_mimic.json");
+}
+
+#[test]
+fn baxter_with_mimic_fingers_matches_pinocchio() {
+    // Each gripper's second finger follows its first: 19 joints, 17 coordinates.
+    check(&BaxterMimicFingers, "baxter.json", Measure::Scaled, 1e-12);
 }

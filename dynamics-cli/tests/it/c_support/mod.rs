@@ -94,14 +94,21 @@ pub fn robot_with(file: &str, with: &[&str]) -> Robot {
 
 /// The robot of a URDF file, the chain from `base` to `tip`.
 pub fn urdf_robot(file: &str, base: &str, tip: &str) -> Robot {
-    robot_from(file, Some((base, tip)), &[])
+    robot_from(file, Some((base, Some(tip))), &[])
 }
 
-/// The robot of a description file or (with a chain) a URDF file, with the families `with`.
-fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
+/// The robot of a URDF file, every branch below `base`, with the families `with`.
+pub fn urdf_tree_robot_with(file: &str, base: &str, with: &[&str]) -> Robot {
+    robot_from(file, Some((base, None)), with)
+}
+
+/// The robot of a description file or (with a base and a tip, or every branch) a URDF file,
+/// with the families `with`.
+fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) -> Robot {
     let mut args = vec!["emit", "--lang", "c", file];
     if let Some((base, tip)) = chain {
-        args.extend(["--base", base, "--tip", tip]);
+        args.extend(["--base", base]);
+        args.extend(tip.iter().flat_map(|tip| ["--tip", tip]));
     }
     let list = with.join(",");
     if !with.is_empty() {
@@ -125,7 +132,7 @@ fn robot_from(file: &str, chain: Option<(&str, &str)>, with: &[&str]) -> Robot {
         Some((base, tip)) => {
             let chain = front::Chain {
                 base: Some(base),
-                tip: Some(tip),
+                tip,
                 tips: &[],
             };
             front::load_urdf(file, &text, chain, true).unwrap_or_else(|_| panic!("{file}"))

@@ -27,7 +27,7 @@ pub(super) use parse::{parse_attrs, Attrs, Source};
 use super::errors::Errors;
 use super::fields::Field;
 use super::sources::{Lowered, Sources, Tokens};
-use crate::check::{Problem, MAX_JOINTS};
+use crate::check::{Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::model::{Convention, Pose, Robot};
 use proc_macro2::Span;
 use reader::Reader;
@@ -102,12 +102,20 @@ pub(super) fn tell(
             "{}; at most {MAX_JOINTS} joints are supported (the generated code grows as n³)",
             counted(*count)
         ),
+        Problem::TooManyInTree { count } => format!(
+            "{}; at most {MAX_TREE_JOINTS} joints are supported in a tree (and {MAX_JOINTS} \
+             along any path from the base)",
+            counted(*count)
+        ),
+        Problem::PathTooLong { .. } => problem.to_string(),
         Problem::Link { joint, problem } => format!("link {}: {}", joint + 1, problem.message),
         Problem::Branch { joint, problem } => format!("joint {}: {}", joint + 1, problem.message),
     };
     let fallback = match problem {
-        Problem::Link { joint, .. } | Problem::Branch { joint, .. } => sources.get(*joint, "link"),
-        Problem::TooManyJoints { .. } => None,
+        Problem::Link { joint, .. }
+        | Problem::Branch { joint, .. }
+        | Problem::PathTooLong { joint } => sources.get(*joint, "link"),
+        Problem::TooManyJoints { .. } | Problem::TooManyInTree { .. } => None,
     };
     let at = sources.place(problem).or(fallback).copied();
     (at.unwrap_or(call_site), message)

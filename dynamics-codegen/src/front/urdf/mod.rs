@@ -25,7 +25,7 @@ mod tests;
 
 use super::errors::FileError;
 use super::sources::{Loaded, Positions};
-use crate::check::{Problem, MAX_JOINTS};
+use crate::check::{joint_count, Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::model::{FrameProblem, Robot};
 pub use limits::joint_limits;
 pub use xml::Limit;
@@ -62,7 +62,7 @@ pub fn load_urdf(
     let doc = xml::read(text)?;
     let tree = tree::tree(&doc)?;
     let path_joints = tree.select(chain)?;
-    too_many_joints(&doc, &path_joints.joints)?;
+    too_many_joints(&tree, &path_joints.joints)?;
     let stem = std::path::Path::new(path)
         .file_stem()
         .and_then(|s| s.to_str());
@@ -105,22 +105,35 @@ pub fn load_urdf(
     })
 }
 
-/// More moving joints than a robot may have, at the first one past the limit: the error
-/// `check::robot` gives, found before thousands of joints are built and lowered for nothing.
-fn too_many_joints(doc: &xml::Description, path: &[usize]) -> Result<(), Vec<FileError>> {
-    let moving: Vec<&xml::Joint> = path
-        .iter()
-        .map(|j| &doc.joints[*j])
-        .filter(|j| j.kind.moves())
-        .collect();
-    match moving.get(MAX_JOINTS) {
-        Some(first_past) => {
-            let count = moving.len();
-            let message = Problem::TooManyJoints { count }.to_string();
-            Err(vec![xml::error(first_past.at, message)])
+/// More moving joints than a robot may have, at the first one past the limit (in all, or along
+/// a tree's path): the error `check::robot` gives, found before thousands of joints are built
+/// and lowered for nothing.
+fn too_many_joints(tree: &tree::Tree, path: &[usize]) -> Result<(), Vec<FileError>> {
+    let doc = tree.doc;
+    // Per URDF joint, the index among the moving ones of the nearest moving joint at or above it
+    // (the path is depth first: a joint's ancestors come before it).
+    let mut nearest: Vec<Option<usize>> = vec![None; doc.joints.len()];
+    let (mut moving, mut parents) = (Vec::new(), Vec::new());
+    for &j in path {
+        let above = tree.parent[tree.parent_link(j)].and_then(|p| nearest[p]);
+        nearest[j] = above;
+        if doc.joints[j].kind.moves() {
+            parents.push(above);
+            nearest[j] = Some(moving.len());
+            moving.push(&doc.joints[j]);
         }
-        None => Ok(()),
     }
+    let Some(problem) = joint_count(&parents) else {
+        return Ok(());
+    };
+    let first_past = match problem {
+        Problem::TooManyJoints { .. } => MAX_JOINTS,
+        Problem::TooManyInTree { .. } => MAX_TREE_JOINTS,
+        Problem::PathTooLong { joint } => joint,
+        Problem::Link { joint, .. } | Problem::Branch { joint, .. } => joint,
+    };
+    let at = moving.get(first_past).map_or(doc.at, |j| j.at);
+    Err(vec![xml::error(at, problem.to_string())])
 }
 
 /// The robot lowered to its own modified D-H table.
