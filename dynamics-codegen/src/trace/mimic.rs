@@ -203,10 +203,22 @@ impl Reduction {
         TipEquations {
             names: t.names.clone(),
             poses: t.poses.iter().map(|p| poses(g, p)).collect(),
-            jacobians_in_base: t.jacobians_in_base.iter().map(|j| self.rows(g, j)).collect(),
+            jacobians_in_base: t
+                .jacobians_in_base
+                .iter()
+                .map(|j| self.rows(g, j))
+                .collect(),
             jacobians_in_tip: t.jacobians_in_tip.iter().map(|j| self.rows(g, j)).collect(),
-            biases_in_base: t.biases_in_base.iter().map(|b| self.substitute(g, b)).collect(),
-            biases_in_tip: t.biases_in_tip.iter().map(|b| self.substitute(g, b)).collect(),
+            biases_in_base: t
+                .biases_in_base
+                .iter()
+                .map(|b| self.substitute(g, b))
+                .collect(),
+            biases_in_tip: t
+                .biases_in_tip
+                .iter()
+                .map(|b| self.substitute(g, b))
+                .collect(),
             torques_for_tip_wrenches: self.vector(g, &t.torques_for_tip_wrenches),
             torques_for_base_wrenches: self.vector(g, &t.torques_for_base_wrenches),
         }

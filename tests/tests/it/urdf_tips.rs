@@ -35,6 +35,15 @@ struct AllegroTips;
 )]
 struct PandaTips;
 
+/// The Panda with its URDF's `<mimic>`: the second finger follows the first (8 coordinates).
+#[derive(Dynamics)]
+#[dynamics(
+    urdf = "../robots/urdf/panda.urdf",
+    base = "panda_link0",
+    tips = ["panda_leftfinger", "panda_rightfinger"]
+)]
+struct PandaMimicTips;
+
 /// `max|got − want| / max(1, max|want|)`, or relative to `max|want|` (`relative`).
 fn error(got: &[f64], want: &[f64], relative: bool) -> f64 {
     let largest = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
@@ -310,5 +319,40 @@ fn a_serial_robot_that_asks_has_one_tip_its_hand() {
     assert!(
         (0..6).all(|i| (tip[i] - hand[i]).abs() < 1e-12),
         "{tip:?} against {hand:?}"
+    );
+}
+
+/// The fingertips of the mimic Panda in its coordinates: the poses, and the Jacobians `J S`
+/// (the second finger's column carried onto the first's), against Pinocchio 4.1's mimic model;
+/// the wrench torques against `Sᵀ Jᵀ F` from the same Jacobians.
+#[test]
+fn the_mimic_pandas_fingertips_in_its_coordinates() {
+    let mut worst = 0.0f64;
+    for s in samples("trees/panda_fingers.json") {
+        let q = vector::<8>(&s["q"]);
+        let poses = PandaMimicTips.tip_poses(&q);
+        let in_base = PandaMimicTips.tip_jacobians_in_base(&q);
+        let wrenches: [[f64; 6]; 2] =
+            core::array::from_fn(|t| core::array::from_fn(|c| c as f64 - 1.5 * t as f64));
+        let mut want_torques = [0.0; 8];
+        for (t, name) in PandaMimicTips::TIP_NAMES.iter().enumerate() {
+            let tip = &s["tips"][*name];
+            let (pose, j) = (rows(&tip["pose"]), rows(&tip["jacobian"]));
+            let want_pose: Vec<f64> = pose[..3].iter().flatten().copied().collect();
+            let got_j: Vec<f64> = in_base[t].iter().flatten().copied().collect();
+            for (i, torque) in want_torques.iter_mut().enumerate() {
+                *torque += (0..6).map(|c| j[c][i] * wrenches[t][c]).sum::<f64>();
+            }
+            worst = worst
+                .max(error(&pose_rows(&poses[t]), &want_pose, false))
+                .max(error(&got_j, &j.concat(), false));
+        }
+        let torques = PandaMimicTips.joint_torques_for_tip_wrenches_in_base(&q, &wrenches);
+        worst = worst.max(error(&torques, &want_torques, false));
+    }
+    assert!(worst < 1e-12, "off by {worst:e}");
+    assert!(
+        worst > 0.0,
+        "every quantity exact: the check compares nothing"
     );
 }
