@@ -191,25 +191,25 @@ fn the_allegro_hand_comes_in_as_its_tree() {
 }
 
 #[test]
-fn baxter_refuses_its_mimic_fingers_and_comes_in_without_them() {
-    let refused = load("baxter", &[]).err().expect("mimic joints are refused");
-    let messages: Vec<String> = refused.iter().map(ToString::to_string).collect();
-    assert_eq!(messages.len(), 2, "{messages:?}");
-    for (finger, line) in [
-        ("r_gripper_r_finger_joint", 1375),
-        ("l_gripper_r_finger_joint", 1177),
-    ] {
-        let at = format!("baxter.urdf:{line}:");
-        let message = format!(
-            "joint `{finger}` has `<mimic>`: a joint that follows another is not supported"
-        );
-        assert!(
-            messages
-                .iter()
-                .any(|m| m.contains(&at) && m.contains(&message)),
-            "{messages:?}"
-        );
-    }
+fn baxter_comes_in_with_its_mimic_fingers_and_without_them() {
+    // Each gripper's right finger follows its left one, as the data's `mimic` says: 19 joints,
+    // 17 coordinates.
+    let whole = load("baxter", &[]).expect("loads").robot;
+    assert_eq!((whole.dof(), whole.coordinates().len()), (19, 17));
+    let mimics: Vec<(usize, usize, Option<f64>, Option<f64>)> = (0..19)
+        .filter_map(|i| {
+            let m = whole.joints[i].mimic.as_ref()?;
+            let number = |v: &Value| v.eval(&|_| None);
+            Some((i, m.joint, number(&m.multiplier), number(&m.offset)))
+        })
+        .collect();
+    assert_eq!(
+        mimics,
+        [
+            (9, 8, Some(-1.0), Some(0.0)),
+            (18, 17, Some(-1.0), Some(0.0))
+        ]
+    );
     // The head and both arms, to the grippers' end-point frames above the fingers.
     let data = data("baxter_no_mimic");
     let tips = ["head", "right_gripper", "left_gripper"];
