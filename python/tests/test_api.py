@@ -203,7 +203,7 @@ def test_errors_are_the_generators_diagnostics_as_data(tmp_path):
     assert not isinstance(families.value, dh_dynamics.DescriptionError)
     assert str(families.value) == ("families: `everything` is not an opt-in family of methods\n"
                                    "help: the opt-in families: derivatives, regressor, "
-                                   "base_parameters")
+                                   "base_parameters, tip_kinematics")
     with pytest.raises(ValueError, match=r"^families: `simplify` needs an envelope .*\nhelp: "
                                          r".*`\[simplify\]` table"):
         dh_dynamics.Robot.from_file(PUMA, families="simplify")

@@ -39,7 +39,8 @@ def test_the_package_is_typed():
 def test_the_stub_declares_each_method_as_a_robot_has_it():
     # Every family: the opt-in ones, and the simplified models of the file's `[simplify]`.
     robot = dh_dynamics.Robot.from_file(DATA / "simplify" / "two_link.toml",
-                                        families=["derivatives", "regressor", "base_parameters"])
+                                        families=["derivatives", "regressor", "base_parameters",
+                                                  "tip_kinematics"])
     declared = stub_methods()
     table = [name for name, _, _ in _native.methods()]
     assert set(robot.methods) == set(table)
