@@ -3,9 +3,10 @@
 //! are 24 wide and read the rows of an identity table of their own width
 //! (`dynamics_unit24`, beside the serial robots' `dynamics_unit`, which keeps its width in
 //! every header). Compiled by the first compiler found every way its builds go (the lanes
-//! among them) and checked against the traced graph at five of the reference data's states.
+//! among them), unoptimized, and checked against the traced graph at five of the reference
+//! data's states.
 
-use crate::c_support::{self, check_against_graph, compile_and_run_builds, root, State};
+use crate::c_support::{self, check_against_graph, compile_and_run_builds_at, root, State};
 use serde_json::Value;
 
 /// The first `count` samples of `tests/data/trees/<file>` as states, their torques with the
@@ -55,7 +56,8 @@ fn baxter_s_header_with_derivatives_past_sixteen_joints() {
     assert!(header.contains("dynamics_unit24[18][k_]"));
     assert!(!header.contains("dynamics_unit["));
     let states = states("baxter_no_mimic.json", 5);
-    let runs = compile_and_run_builds(&robot, &states, false);
+    // Unoptimized: optimizing this header took most of the command line's test time.
+    let runs = compile_and_run_builds_at(&robot, &states, false, false);
     if runs.is_empty() {
         eprintln!("no C compiler (gcc, clang, g++) found: Baxter's C header is not checked");
         return;
