@@ -8,8 +8,7 @@ mod batch;
 mod builds;
 mod simplified;
 
-use builds::builds;
-pub use builds::compilers;
+pub use builds::{compile_and_run, compile_and_run_builds, compile_and_run_builds_at, compilers};
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
@@ -297,95 +296,6 @@ pub struct Run {
     /// The compiler, and `-DDYNAMICS_OWN_SINCOS` where it has that.
     pub label: String,
     pub printed: Printed,
-}
-
-/// Compiles `source` with `cc`, its `flags` and `extra`, to `program`, optimized (`-O1`, where
-/// the compilers' flow analyses warn) or not; panics with the compiler's messages if it fails.
-fn compile(cc: &str, flags: &[&str], extra: &[&str], optimize: bool, files: (&Path, &Path)) {
-    let (source, program) = files;
-    let out = Command::new(cc)
-        .args(flags)
-        .args(["-Wall", "-Wextra", "-Wpedantic", "-Werror"])
-        .arg(if optimize { "-O1" } else { "-O0" })
-        // No multiply-adds fused by the compiler (clang fuses within an expression by default,
-        // where the target has them): the `double` results with `<math.h>` are then the
-        // graph's evaluation bit for bit.
-        .arg("-ffp-contract=off")
-        .arg("-o")
-        .arg(program)
-        .arg(source)
-        .args(extra)
-        .output()
-        .expect("run the compiler");
-    let errors = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        out.status.success(),
-        "{cc} {extra:?} on {source:?}:\n{errors}"
-    );
-}
-
-/// Compiles the header and driver of `robot` with every compiler (with `<math.h>`'s sines and
-/// cosines, the default, and the header's own, linked without the math library where nothing
-/// else needs it) and runs each program.
-pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
-    compile_and_run_builds(robot, states, true)
-}
-
-/// [`compile_and_run`], with every build or only the first compiler's with `<math.h>` (for a
-/// large header, whose builds take long).
-pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> Vec<Run> {
-    compile_and_run_builds_at(robot, states, every, true)
-}
-
-/// [`compile_and_run_builds`], each compiler's first build optimized only with
-/// `optimize_first`: a header far larger than the others' (a tree's with its derivatives)
-/// whose flow-analysis warnings the serial robots' headers already cover.
-pub fn compile_and_run_builds_at(
-    robot: &Robot,
-    states: &[State],
-    every: bool,
-    optimize_first: bool,
-) -> Vec<Run> {
-    // Two robots may share a name (the Panda's description file and its URDF), and tests run
-    // side by side: a directory of their own per header.
-    let mut hasher = std::collections::hash_map::DefaultHasher::new();
-    std::hash::Hash::hash(&robot.header, &mut hasher);
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "c_header_{}_{:016x}",
-        robot.name,
-        std::hash::Hasher::finish(&hasher)
-    ));
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    std::fs::write(dir.join(format!("{}.h", robot.name)), &robot.header).expect("write");
-    let source = dir.join("driver.c");
-    std::fs::write(&source, driver(robot, states)).expect("write");
-    let mut runs = Vec::new();
-    let compilers = compilers();
-    let count = if every { compilers.len() } else { 1 };
-    for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
-        // Each compiler's first build optimized; the others, which differ only in what the
-        // header's macros select, unoptimized: the same IEEE results (no contraction), in
-        // a fraction of the time a large header takes to optimize.
-        for (b, (name, extra)) in builds(&robot.header, kernels_too && every)
-            .into_iter()
-            .enumerate()
-        {
-            let label = format!("{cc} {}", extra.join(" "));
-            let program = dir.join(format!("driver_{cc}_{name}"));
-            compile(
-                cc,
-                flags,
-                extra,
-                optimize_first && b == 0,
-                (&source, &program),
-            );
-            let run = Command::new(&program).output().expect("run the driver");
-            assert!(run.status.success(), "{label} driver of {}", robot.name);
-            let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
-            runs.push(Run { label, printed });
-        }
-    }
-    runs
 }
 
 /// Every node of the graph at `state`, as `dynamics eval` evaluates it.
