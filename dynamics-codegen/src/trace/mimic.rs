@@ -11,7 +11,6 @@
 //! reduced graph, follow by the chain rule.
 
 use super::kinematics::KinematicEquations;
-use super::tips::TipEquations;
 use super::tracer::{joint_index, Tracer};
 use crate::algo::RobotScalars;
 use crate::model::Robot;
@@ -192,35 +191,6 @@ impl Reduction {
             bias_in_hand: self.substitute(g, &k.bias_in_hand),
             torques_for_hand_wrench: self.vector(g, &k.torques_for_hand_wrench),
             torques_for_base_wrench: self.vector(g, &k.torques_for_base_wrench),
-        }
-    }
-
-    /// Every tip's kinematics in the coordinates, as the hand's ([`Reduction::kinematics`]).
-    pub(super) fn tips(&self, g: &mut Graph, t: &TipEquations) -> TipEquations {
-        let poses = |g: &mut Graph, rows: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
-            rows.iter().map(|r| self.substitute(g, r)).collect()
-        };
-        TipEquations {
-            names: t.names.clone(),
-            poses: t.poses.iter().map(|p| poses(g, p)).collect(),
-            jacobians_in_base: t
-                .jacobians_in_base
-                .iter()
-                .map(|j| self.rows(g, j))
-                .collect(),
-            jacobians_in_tip: t.jacobians_in_tip.iter().map(|j| self.rows(g, j)).collect(),
-            biases_in_base: t
-                .biases_in_base
-                .iter()
-                .map(|b| self.substitute(g, b))
-                .collect(),
-            biases_in_tip: t
-                .biases_in_tip
-                .iter()
-                .map(|b| self.substitute(g, b))
-                .collect(),
-            torques_for_tip_wrenches: self.vector(g, &t.torques_for_tip_wrenches),
-            torques_for_base_wrenches: self.vector(g, &t.torques_for_base_wrenches),
         }
     }
 }

@@ -8,13 +8,14 @@
 use super::cost::{ids, matrix_ids};
 use super::expr::Expr;
 use super::joints::JointTerms;
+use super::mimic::Reduction;
 use super::tracer::Tracer;
 use super::Equations;
 use super::Shape;
 use crate::algo;
 use crate::method::{Family, Method};
 use crate::model::Robot;
-use crate::symbolic::{NodeId, Var};
+use crate::symbolic::{Graph, NodeId, Var};
 use std::cell::RefCell;
 
 /// The tips' outputs, as node ids, one entry per tip.
@@ -97,7 +98,7 @@ impl Equations {
             out.biases_in_base.push(ids(&bias_in_base));
             out.biases_in_tip.push(ids(&bias_in_tip));
         }
-        // No tip (every tip the URDF names fixed to the base): no torques.
+        // A robot has a tip (a leaf, else a named link that moves); none would give zeros.
         let none = || vec![zero; robot.dof()];
         let sum = |s: Vec<Expr>| ids(&if s.is_empty() { none() } else { s });
         out.torques_for_tip_wrenches = sum(in_tip_sum);
@@ -105,8 +106,8 @@ impl Equations {
         if robot.has_mimics() {
             // In the coordinates, as every other output ([`super::mimic`]).
             let offsets = tracer.angle_offsets();
-            let reduction = super::mimic::Reduction::new(&graph, &tracer, robot, &offsets);
-            out = reduction.tips(&mut graph.borrow_mut(), &out);
+            let reduction = Reduction::new(&graph, &tracer, robot, &offsets);
+            out = reduced(&reduction, &mut graph.borrow_mut(), &out);
         }
         drop(tracer);
         self.graph = graph.into_inner();
@@ -123,5 +124,25 @@ fn add_into<'g>(sum: &mut Vec<Expr<'g>>, terms: Vec<Expr<'g>>) {
         for (s, t) in sum.iter_mut().zip(terms) {
             *s = *s + t;
         }
+    }
+}
+
+/// Every tip's kinematics in the coordinates, as the hand's ([`Reduction::kinematics`]).
+fn reduced(r: &Reduction, g: &mut Graph, t: &TipEquations) -> TipEquations {
+    let poses = |g: &mut Graph, rows: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
+        rows.iter().map(|row| r.substitute(g, row)).collect()
+    };
+    let substituted = |g: &mut Graph, vs: &[Vec<NodeId>]| -> Vec<Vec<NodeId>> {
+        vs.iter().map(|v| r.substitute(g, v)).collect()
+    };
+    TipEquations {
+        names: t.names.clone(),
+        poses: t.poses.iter().map(|p| poses(g, p)).collect(),
+        jacobians_in_base: t.jacobians_in_base.iter().map(|j| r.rows(g, j)).collect(),
+        jacobians_in_tip: t.jacobians_in_tip.iter().map(|j| r.rows(g, j)).collect(),
+        biases_in_base: substituted(g, &t.biases_in_base),
+        biases_in_tip: substituted(g, &t.biases_in_tip),
+        torques_for_tip_wrenches: r.vector(g, &t.torques_for_tip_wrenches),
+        torques_for_base_wrenches: r.vector(g, &t.torques_for_base_wrenches),
     }
 }
