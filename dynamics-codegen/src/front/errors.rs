@@ -56,6 +56,41 @@ pub struct FileError {
     pub line: Option<usize>,
     /// Column, 1-based.
     pub column: Option<usize>,
+    /// The request key whose link the error is about, where it is one: the derive puts the
+    /// error on that key's string rather than on the file's name.
+    pub about: Option<Requested>,
+}
+
+/// A key of the request that names a link of a URDF file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Requested {
+    /// `base`.
+    Base,
+    /// `tip`.
+    Tip,
+    /// The i-th name of `tips`.
+    Tips(usize),
+}
+
+impl Requested {
+    /// The key, as written.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            Requested::Base => "base",
+            Requested::Tip => "tip",
+            Requested::Tips(_) => "tips",
+        }
+    }
+}
+
+impl FileError {
+    /// The error, about the link `key` names.
+    #[must_use]
+    pub fn about(mut self, key: Requested) -> FileError {
+        self.about = Some(key);
+        self
+    }
 }
 
 impl std::fmt::Display for FileError {

@@ -252,9 +252,15 @@ fn lower<'a>(
         };
         let checked = attrs.check_inertia.unwrap_or(true);
         let gravity = attrs.gravity.as_ref();
+        let request = named_file::UrdfRequest {
+            chain,
+            base: attrs.base.as_ref(),
+            tip: attrs.tip.as_ref(),
+            tips: attrs.tips.as_ref().map_or(&[], |(tips, _)| tips.as_slice()),
+        };
         let named = named_file::robot_from_urdf(
             urdf,
-            chain,
+            &request,
             checked,
             gravity,
             fields,

@@ -5,7 +5,7 @@
 //! fields its values name must be floats of it. Every error goes on the string that names the
 //! file, with the file's name, line and column in the message.
 
-use super::errors::Errors;
+use super::errors::{Errors, Requested};
 use super::fields::{check_names, field_error, Field};
 use super::file;
 use super::sources::{Loaded, Positions, Tokens};
@@ -45,11 +45,31 @@ pub(super) fn robot_from_file(
     Some(named(file, loaded, relative, check_inertia, fields, errors))
 }
 
-/// The robot of the URDF file `urdf = "..."` names, the chain `chain` of it; `gravity = [..]`
-/// replaces its default `[0, 0, −9.81]` (in the base link's frame).
+/// The joints asked of a URDF file, and the strings of the derive's `base`, `tip` and `tips`
+/// where given: an error about the link one names goes on it.
+pub(super) struct UrdfRequest<'a> {
+    pub chain: Chain<'a>,
+    pub base: Option<&'a LitStr>,
+    pub tip: Option<&'a LitStr>,
+    pub tips: &'a [LitStr],
+}
+
+impl UrdfRequest<'_> {
+    /// The string `key` is, if given.
+    fn get(&self, key: Requested) -> Option<&LitStr> {
+        match key {
+            Requested::Base => self.base,
+            Requested::Tip => self.tip,
+            Requested::Tips(i) => self.tips.get(i),
+        }
+    }
+}
+
+/// The robot of the URDF file `urdf = "..."` names, the joints `request` asks of it;
+/// `gravity = [..]` replaces its default `[0, 0, −9.81]` (in the base link's frame).
 pub(super) fn robot_from_urdf(
     urdf: &LitStr,
-    chain: Chain,
+    request: &UrdfRequest<'_>,
     check_inertia: bool,
     gravity: Option<&[Spanned; 3]>,
     fields: &[Field],
@@ -57,17 +77,18 @@ pub(super) fn robot_from_urdf(
     tracked: &mut Option<String>,
 ) -> Option<Named> {
     let (relative, text) = read_relative(urdf, errors, tracked)?;
-    let loaded = match load_urdf(&relative, &text, chain, check_inertia) {
+    let loaded = match load_urdf(&relative, &text, request.chain, check_inertia) {
         Ok(loaded) => loaded,
         Err(found) => {
             for e in found {
                 let sep = if e.line.is_some() { "" } else { " " };
-                errors.push(urdf.span(), format!("{relative}:{sep}{e}"));
+                let at = e.about.and_then(|key| request.get(key)).unwrap_or(urdf);
+                errors.push(at.span(), format!("{relative}:{sep}{e}"));
             }
             return None;
         }
     };
-    let limits = joint_limits(&text, chain).ok();
+    let limits = joint_limits(&text, request.chain).ok();
     let mut named = named(urdf, loaded, relative, check_inertia, fields, errors);
     named.limits = limits;
     if let Some(gravity) = gravity {

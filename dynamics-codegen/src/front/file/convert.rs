@@ -183,6 +183,7 @@ pub(super) fn first_error(mut loaded: Loaded, deferred: &[Deferred]) -> Result<L
         message: format!("joint {}: {message}", joint + 1),
         line,
         column,
+        about: None,
     })
 }
 
@@ -191,5 +192,6 @@ pub(super) fn plain(message: String) -> FileError {
         message,
         line: None,
         column: None,
+        about: None,
     }
 }

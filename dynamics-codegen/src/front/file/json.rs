@@ -18,6 +18,7 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
                 .to_string(),
             line: Some(line),
             column: Some(column),
+            about: None,
         }
     })?;
     let (mut loaded, deferred) = convert::convert(file, default_name)?;

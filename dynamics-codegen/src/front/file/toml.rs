@@ -30,6 +30,7 @@ pub(super) fn read(text: &str, default_name: &str) -> Result<Loaded, FileError> 
             message,
             line,
             column,
+            about: None,
         }
     })?;
     let (mut loaded, deferred) = convert::convert(file, default_name)?;

@@ -89,6 +89,7 @@ pub fn load_urdf(
                     message: format!("joint {}: {}", p.joint + 1, p.message),
                     line: at.map(|a| a.0),
                     column: at.map(|a| a.1),
+                    about: None,
                 }
             })
             .collect::<Vec<_>>()

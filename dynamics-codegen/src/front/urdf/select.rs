@@ -7,7 +7,7 @@
 use super::tree::{Chain, Tree};
 use super::xml::error;
 use super::Chain as Request;
-use crate::front::errors::FileError;
+use crate::front::errors::{FileError, Requested};
 
 impl Tree<'_> {
     /// The joints `request` keeps.
@@ -30,29 +30,35 @@ impl Tree<'_> {
         let mut errors = Vec::new();
         let mut tip_links = Vec::new();
         let mut leads_to_tip = vec![false; self.doc.joints.len()];
-        for name in tips {
-            let tip = match self.find(name, "tips") {
+        for (i, name) in tips.iter().enumerate() {
+            let tip = match self.find(name, Requested::Tips(i)) {
                 Ok(tip) => tip,
                 Err(e) => {
                     errors.push(e);
                     continue;
                 }
             };
+            let (b, t) = (&self.doc.links[base].name, &self.doc.links[tip].name);
             let from_root = self.ancestors(tip);
             let start = from_root.iter().position(|j| self.parent_link(*j) == base);
-            match start {
-                Some(start) => from_root[start..]
-                    .iter()
-                    .for_each(|j| leads_to_tip[*j] = true),
-                None if tip == base => {}
-                None => {
-                    let (b, t) = (&self.doc.links[base].name, &self.doc.links[tip].name);
-                    errors.push(error(
-                        self.doc.links[tip].at,
-                        format!("`tips`: the link `{t}` is not below the base link `{b}`"),
-                    ));
-                }
+            let Some(path) = start.map(|start| &from_root[start..]) else {
+                let message = if tip == base {
+                    format!("`tips`: the link `{t}` is the base link")
+                } else {
+                    format!("`tips`: the link `{t}` is not below the base link `{b}`")
+                };
+                errors.push(error(self.doc.links[tip].at, message).about(Requested::Tips(i)));
+                continue;
+            };
+            if !path.iter().any(|j| self.doc.joints[*j].kind.moves()) {
+                let message = format!(
+                    "`tips`: the link `{t}` is fixed to the base link `{b}` (no joint between \
+                     them moves): its pose and Jacobian would be constants; name a link that moves"
+                );
+                errors.push(error(self.doc.links[tip].at, message).about(Requested::Tips(i)));
+                continue;
             }
+            path.iter().for_each(|j| leads_to_tip[*j] = true);
             tip_links.push(tip);
         }
         if !errors.is_empty() {

@@ -7,7 +7,7 @@
 //! Without a `tip`, the joints below the base are taken as a tree (`select`).
 
 use super::xml::{error, Description, Kind};
-use crate::front::errors::FileError;
+use crate::front::errors::{FileError, Requested};
 use std::collections::BTreeMap;
 
 /// The links and joints of a URDF as a tree.
@@ -104,8 +104,8 @@ pub(super) fn tree(doc: &Description) -> Result<Tree<'_>, Vec<FileError>> {
 }
 
 impl Tree<'_> {
-    /// The link named `name` (said as `role`, `base` or `tip`).
-    pub(super) fn find(&self, name: &str, role: &str) -> Result<usize, FileError> {
+    /// The link named `name` by the request's key `role`.
+    pub(super) fn find(&self, name: &str, role: Requested) -> Result<usize, FileError> {
         self.index.get(name).copied().ok_or_else(|| {
             let names: Vec<String> = self
                 .doc
@@ -116,10 +116,12 @@ impl Tree<'_> {
             error(
                 self.doc.at,
                 format!(
-                    "no link `{name}` for `{role}`: the links are {}",
+                    "no link `{name}` for `{}`: the links are {}",
+                    role.key(),
                     names.join(", ")
                 ),
             )
+            .about(role)
         })
     }
 
@@ -206,14 +208,14 @@ impl Tree<'_> {
     /// The base link: the one named, or the root link.
     pub(super) fn base(&self, base: Option<&str>) -> Result<usize, Vec<FileError>> {
         match base {
-            Some(name) => self.find(name, "base").map_err(|e| vec![e]),
+            Some(name) => self.find(name, Requested::Base).map_err(|e| vec![e]),
             None => self.root().map_err(|e| vec![e]),
         }
     }
 
     /// The chain from `base` to the link named `tip`.
     pub fn chain(&self, base: usize, tip: &str) -> Result<Chain, Vec<FileError>> {
-        let tip = self.find(tip, "tip").map_err(|e| vec![e])?;
+        let tip = self.find(tip, Requested::Tip).map_err(|e| vec![e])?;
         let from_root = self.ancestors(tip);
         let start = from_root
             .iter()
@@ -226,7 +228,8 @@ impl Tree<'_> {
                 return Err(vec![error(
                     self.doc.links[tip].at,
                     format!("the tip link `{t}` is not below the base link `{b}`"),
-                )]);
+                )
+                .about(Requested::Tip)]);
             }
         };
         let chain = Chain {

@@ -179,6 +179,7 @@ pub(super) fn error(at: At, message: impl Into<String>) -> FileError {
         message: message.into(),
         line: Some(at.0),
         column: Some(at.1),
+        about: None,
     }
 }
 
