@@ -10,20 +10,28 @@ use quote::quote;
 /// The errors, and an impl of every [`Method`] of the families asked for, unreachable: for
 /// the robot's number of joints where it was read, else for any number, so that each mistake
 /// is one error even where the robot could not be read at all (a missing file, a base link the
-/// URDF does not have).
+/// URDF does not have); the tips' constants where their names are known.
 pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> TokenStream {
     let errors = failure.error.to_compile_error();
+    let names = failure.tip_names.as_deref();
     let sizes = Sizes {
         joints: failure.dof,
         base: None,
-        tips: None,
+        tips: names.map(<[String]>::len),
     };
     let krate = runtime_path(failure.krate.as_ref());
     let impls = unreachable_impls(input, &sizes, &krate, |m| failure.families.has(m));
+    let constants = names.map(|names| {
+        let ident = &input.ident;
+        let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
+        let constants = super::tip_names::constants(names);
+        quote!(impl #impl_generics #ident #ty_generics #where_clause { #constants })
+    });
     quote! {
         #errors
         const _: () = {
             #impls
+            #constants
         };
     }
 }

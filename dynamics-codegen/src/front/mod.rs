@@ -94,6 +94,9 @@ pub struct Failure {
     /// The families asked for, as far as read: the fallback then implements their traits
     /// too.
     pub families: FamilySet,
+    /// The tips' names where known (the robot's, else the derive's `tips = [..]` as written):
+    /// the fallback then names them too (`TIP_NAMES`, `TIP_<NAME>`).
+    pub tip_names: Option<Vec<String>>,
 }
 
 /// The `#[dynamics(...)]` attributes of the input.
@@ -334,6 +337,14 @@ fn finish(
         }
         (Some(error), robot) => Err(Failure {
             error,
+            tip_names: robot
+                .as_ref()
+                .filter(|r| r.is_tree())
+                .map(|r| r.tip_frames().into_iter().map(|t| t.name).collect())
+                .or_else(|| {
+                    let (tips, _) = attrs.tips.as_ref()?;
+                    Some(tips.iter().map(LitStr::value).collect())
+                }),
             dof: robot
                 .as_ref()
                 .map(Robot::dof)
@@ -350,6 +361,7 @@ fn finish(
         (None, None) => Err(Failure {
             error: syn::Error::new(input.ident.span(), "no robot description"),
             dof: None,
+            tip_names: None,
             families,
             krate: attrs.krate,
         }),

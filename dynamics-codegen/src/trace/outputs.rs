@@ -150,6 +150,48 @@ impl Method {
                 },
                 d => Shape::Stack(d.as_ref().map_or(&[], |d| &d.inverse)),
             },
+            Method::Regressor
+            | Method::JointRegressor
+            | Method::JointParameters
+            | Method::StandardParameters
+            | Method::BaseRegressor
+            | Method::BaseParameters
+            | Method::BaseFromStandard
+            | Method::BaseFromJoints => self.identification_shape(eq),
+            Method::InverseDynamicsSimplified
+            | Method::MassMatrixSimplified
+            | Method::CoriolisTorquesSimplified
+            | Method::GravityTorquesSimplified => {
+                match eq.simplified.as_ref().and_then(|s| s.output(self)) {
+                    Some(o) => match &o.elements {
+                        Elements::Vector(v) => Shape::Vector(v),
+                        Elements::Matrix(m) => Shape::Matrix(m),
+                    },
+                    None if self == Method::MassMatrixSimplified => Shape::Matrix(&[]),
+                    None => Shape::Vector(&[]),
+                }
+            }
+            Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
+                pivots: &eq.forward.factors.pivots,
+                vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
+                stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
+            },
+            Method::TipPoses
+            | Method::TipJacobiansInBase
+            | Method::TipJacobiansInTip
+            | Method::TipAccelerationBiasesInBase
+            | Method::TipAccelerationBiasesInTip
+            | Method::JointTorquesForTipWrenches
+            | Method::JointTorquesForTipWrenchesInBase => {
+                eq.tips.as_ref().unwrap_or(&NO_TIPS).shape(self)
+            }
+        }
+    }
+
+    /// The result of a method of the regressor or base parameters (which [`Method::shape`]
+    /// sends here).
+    fn identification_shape(self, eq: &Equations) -> Shape<'_> {
+        match self {
             Method::Regressor => Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns)),
             Method::JointRegressor => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_columns))
@@ -169,29 +211,8 @@ impl Method {
             Method::BaseFromStandard => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.link_map))
             }
-            Method::BaseFromJoints => {
-                Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map))
-            }
-            Method::InverseDynamicsSimplified
-            | Method::MassMatrixSimplified
-            | Method::CoriolisTorquesSimplified
-            | Method::GravityTorquesSimplified => {
-                match eq.simplified.as_ref().and_then(|s| s.output(self)) {
-                    Some(o) => match &o.elements {
-                        Elements::Vector(v) => Shape::Vector(v),
-                        Elements::Matrix(m) => Shape::Matrix(m),
-                    },
-                    None if self == Method::MassMatrixSimplified => Shape::Matrix(&[]),
-                    None => Shape::Vector(&[]),
-                }
-            }
-            Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
-                pivots: &eq.forward.factors.pivots,
-                vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
-                stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
-            },
-            // The tips' (`TipEquations::shape` tells them apart).
-            tips => eq.tips.as_ref().unwrap_or(&NO_TIPS).shape(tips),
+            // `BaseFromJoints`, the last of them.
+            _ => Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.joint_map)),
         }
     }
 

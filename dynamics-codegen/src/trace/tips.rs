@@ -52,7 +52,7 @@ impl TipEquations {
         torques_for_base_wrenches: Vec::new(),
     };
 
-    /// The result of one of the tips' methods ([`Method::shape`]).
+    /// The result of one of the tips' methods (which [`Method::shape`] sends here).
     pub(super) fn shape(&self, method: Method) -> Shape<'_> {
         match method {
             Method::TipPoses => Shape::Stack(&self.poses),
@@ -63,6 +63,7 @@ impl TipEquations {
             Method::JointTorquesForTipWrenchesInBase => {
                 Shape::Vector(&self.torques_for_base_wrenches)
             }
+            // `JointTorquesForTipWrenches`, the last of them.
             _ => Shape::Vector(&self.torques_for_tip_wrenches),
         }
     }
