@@ -72,6 +72,57 @@ pub fn flat<const N: usize>(m: [[f64; N]; N]) -> Vec<f64> {
     m.iter().flatten().copied().collect()
 }
 
+/// A quantity compared: its name, the generated code's values, the data's.
+pub type Compared = (&'static str, Vec<f64>, Vec<f64>);
+
+/// τ, M, C, h, g, C·q̇ and both energies of `robot` at sample `s`, each beside the sample's. With
+/// [`Friction::Added`] the robot's τ less the sample's `friction` is compared with Pinocchio's
+/// friction-free τ.
+///
+/// # Panics
+/// If the sample lacks one of its keys.
+#[must_use]
+pub fn quantities<R: Dynamics<N>, const N: usize>(
+    robot: &R,
+    s: &Value,
+    friction: Friction,
+) -> Vec<Compared> {
+    let v = |key: &str| vector::<N>(&s[key]);
+    let (q, qd, qdd, h, g) = (v("q"), v("qd"), v("qdd"), v("h"), v("g"));
+    let mut tau = robot.inverse_dynamics(&q, &qd, &qdd);
+    if friction == Friction::Added {
+        let f = v("friction");
+        (0..N).for_each(|i| tau[i] -= f[i]);
+    }
+    let number = |key: &str| vec![s[key].as_f64().expect("number")];
+    vec![
+        ("tau", tau.to_vec(), v("tau").to_vec()),
+        ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
+        (
+            "C",
+            flat(robot.coriolis_matrix(&q, &qd)),
+            flat(matrix::<N>(&s["C"])),
+        ),
+        ("h", robot.bias_torques(&q, &qd).to_vec(), h.to_vec()),
+        ("g", robot.gravity_torques(&q).to_vec(), g.to_vec()),
+        (
+            "C qd",
+            robot.coriolis_torques(&q, &qd).to_vec(),
+            (0..N).map(|i| h[i] - g[i]).collect(),
+        ),
+        (
+            "kinetic energy",
+            vec![robot.kinetic_energy(&q, &qd)],
+            number("kinetic_energy"),
+        ),
+        (
+            "potential energy",
+            vec![robot.potential_energy(&q)],
+            number("potential_energy"),
+        ),
+    ]
+}
+
 /// `robot` against every sample of `tests/data/<file>`; returns the worst scaled error.
 ///
 /// # Panics
@@ -79,49 +130,7 @@ pub fn flat<const N: usize>(m: [[f64; N]; N]) -> Vec<f64> {
 pub fn check<R: Dynamics<N>, const N: usize>(robot: &R, file: &str, friction: Friction) -> f64 {
     let mut worst = 0.0f64;
     for (k, s) in samples(file).iter().enumerate() {
-        let (q, qd, qdd) = (
-            vector::<N>(&s["q"]),
-            vector::<N>(&s["qd"]),
-            vector::<N>(&s["qdd"]),
-        );
-        let (h, g) = (vector::<N>(&s["h"]), vector::<N>(&s["g"]));
-        let mut tau = vector::<N>(&s["tau"]);
-        if friction == Friction::Added {
-            let f = vector::<N>(&s["friction"]);
-            (0..N).for_each(|i| tau[i] += f[i]);
-        }
-        let number = |key: &str| vec![s[key].as_f64().expect("number")];
-        let checks: [(&str, Vec<f64>, Vec<f64>); 8] = [
-            (
-                "tau",
-                robot.inverse_dynamics(&q, &qd, &qdd).to_vec(),
-                tau.to_vec(),
-            ),
-            ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
-            (
-                "C",
-                flat(robot.coriolis_matrix(&q, &qd)),
-                flat(matrix::<N>(&s["C"])),
-            ),
-            ("h", robot.bias_torques(&q, &qd).to_vec(), h.to_vec()),
-            ("g", robot.gravity_torques(&q).to_vec(), g.to_vec()),
-            (
-                "C qd",
-                robot.coriolis_torques(&q, &qd).to_vec(),
-                (0..N).map(|i| h[i] - g[i]).collect(),
-            ),
-            (
-                "kinetic energy",
-                vec![robot.kinetic_energy(&q, &qd)],
-                number("kinetic_energy"),
-            ),
-            (
-                "potential energy",
-                vec![robot.potential_energy(&q)],
-                number("potential_energy"),
-            ),
-        ];
-        for (what, got, want) in checks {
+        for (what, got, want) in quantities(robot, s, friction) {
             let e = scaled_error(&got, &want);
             assert!(
                 e < TOLERANCE,

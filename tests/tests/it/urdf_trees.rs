@@ -21,7 +21,7 @@
 
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
-use dynamics_tests::reference::{flat, matrix, samples, vector, TOLERANCE};
+use dynamics_tests::reference::{quantities, samples, vector, Friction, TOLERANCE};
 
 macro_rules! urdf_tree {
     ($name:ident, $file:literal, $base:literal) => {
@@ -92,48 +92,19 @@ fn check<R: Dynamics<N>, const N: usize>(
     let mut worst = 0.0f64;
     for (k, s) in samples(&format!("trees/{file}")).iter().enumerate() {
         let v = |key: &str| vector::<N>(&s[key]);
-        let (q, qd, qdd, h, g, friction) =
-            (v("q"), v("qd"), v("qdd"), v("h"), v("g"), v("friction"));
-        // τ less the URDF's joint friction, which the hand's swamps (25 N·m against 0.04).
-        let tau = robot.inverse_dynamics(&q, &qd, &qdd);
-        let tau: Vec<f64> = (0..N).map(|i| tau[i] - friction[i]).collect();
+        let (q, qd, friction) = (v("q"), v("qd"), v("friction"));
         let forward_tau = vector::<N>(&s["forward"]["tau"]);
         let torque: [f64; N] = core::array::from_fn(|i| forward_tau[i] + friction[i]);
         let forward = robot
             .forward_dynamics(&q, &qd, &torque)
             .unwrap_or_else(|_| panic!("{file} sample {k}: M not positive definite"));
-        let number = |key: &str| vec![s[key].as_f64().expect("number")];
-        let checks: [(&str, Vec<f64>, Vec<f64>); 9] = [
-            ("tau", tau, v("tau").to_vec()),
-            ("M", flat(robot.mass_matrix(&q)), flat(matrix::<N>(&s["M"]))),
-            (
-                "C",
-                flat(robot.coriolis_matrix(&q, &qd)),
-                flat(matrix::<N>(&s["C"])),
-            ),
-            ("h", robot.bias_torques(&q, &qd).to_vec(), h.to_vec()),
-            ("g", robot.gravity_torques(&q).to_vec(), g.to_vec()),
-            (
-                "C qd",
-                robot.coriolis_torques(&q, &qd).to_vec(),
-                (0..N).map(|i| h[i] - g[i]).collect(),
-            ),
-            (
-                "kinetic energy",
-                vec![robot.kinetic_energy(&q, &qd)],
-                number("kinetic_energy"),
-            ),
-            (
-                "potential energy",
-                vec![robot.potential_energy(&q)],
-                number("potential_energy"),
-            ),
-            (
-                "forward dynamics",
-                forward.to_vec(),
-                vector::<N>(&s["forward"]["qdd"]).to_vec(),
-            ),
-        ];
+        // τ less the URDF's joint friction, which the hand's swamps (25 N·m against 0.04).
+        let mut checks = quantities(robot, s, Friction::Added);
+        checks.push((
+            "forward dynamics",
+            forward.to_vec(),
+            vector::<N>(&s["forward"]["qdd"]).to_vec(),
+        ));
         for (what, got, want) in checks {
             let e = measure.error(&got, &want);
             // The forward dynamics is a solve: its error is M's condition number times larger.
