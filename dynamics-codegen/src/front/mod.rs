@@ -96,7 +96,7 @@ pub struct Failure {
     pub families: FamilySet,
     /// The tips' names where known (the robot's, else the derive's `tips = [..]` as written):
     /// the fallback then names them too (`TIP_NAMES`, `TIP_<NAME>`).
-    pub tip_names: Option<Vec<String>>,
+    pub tip_names: Option<Box<[String]>>,
 }
 
 /// The `#[dynamics(...)]` attributes of the input.
