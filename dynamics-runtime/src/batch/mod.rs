@@ -23,7 +23,7 @@
 //! state by state would not give the sign of the caller's own call either: each call site of a
 //! method is compiled apart.)
 //!
-//! **Threads.** With the `rayon` feature, [`InParallel`]`(&robot)` has the same `_batch`
+//! **Threads.** With the `rayon` feature, `InParallel(&robot)` has the same `_batch`
 //! methods, which cut the states into chunks of whole groups on rayon's thread pool: the same
 //! bits as on one thread.
 //!
