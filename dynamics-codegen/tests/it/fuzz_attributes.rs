@@ -30,11 +30,12 @@ static ERRORS: AtomicUsize = AtomicUsize::new(0);
 static CODE: AtomicUsize = AtomicUsize::new(0);
 
 /// Valid inputs: every key of the attribute, both conventions, generics, the PUMA 560, trees
-/// by frames and by modified D-H rows.
+/// by frames (one joint a mimic) and by modified D-H rows.
 const VALID: [&str; 6] = [
     "#[dynamics(gravity = [0, 0, -9.81], joints = [revolute(name = \"palm\"),
        revolute(parent = \"palm\", xyz = [0.05, 0, 0], rpy = [0, 90 deg, 0], axis = [0, 1, 0]),
-       prismatic(parent = 1, xyz = [0, l, 0.01], axis = [0.6, 0.8, 0]), revolute(parent = 0, xyz = [0, 0, 0.2])],
+       prismatic(parent = 1, xyz = [0, l, 0.01], axis = [0.6, 0.8, 0]), revolute(parent = 0, xyz = [0, 0, 0.2],
+       mimic = (joint = \"palm\", multiplier = -0.5, offset = 0.1))],
        link(mass = 0.5), link(mass = 0.1, com = [0, 0, 0.02]), link(mass = m), link(mass = 0.2))]
      struct Hand { l: f64, m: f64 }",
     "#[dynamics(convention = modified, gravity = [0, 0, -9.81], dh = [[q, 0, 0.1, 0],

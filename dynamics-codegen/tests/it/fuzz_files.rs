@@ -22,7 +22,7 @@ use dynamics_codegen::{check, derive_dynamics, front};
 use proptest::prelude::*;
 use proptest::sample::Index;
 
-/// A tree given by frames, parents by name and number.
+/// A tree given by frames, parents by name and number, its last joint a mimic of the first.
 const TREE_FRAMES: &str = r#"name = "hand"
 gravity = [0, 0, -9.81]
 
@@ -53,6 +53,7 @@ inertia = [0.0001, 0.0001, 0.0001, 0, 0, 0]
 type = "revolute"
 parent = 0
 origin = { xyz = [0, 0, 0.2] }
+mimic = { joint = "palm", multiplier = -0.5, offset = 0.1 }
 mass = 0.2
 inertia = [0.001, 0.001, 0.001, 0, 0, 0]
 "#;
