@@ -9,7 +9,7 @@
 
 use super::node::{Node, NodeId, Var};
 use super::number::Number;
-use std::collections::HashMap;
+use super::hasher::FxHashMap;
 use std::ops::{Add, Mul, Neg};
 
 /// Counters of the graph's construction, for tests and benchmarks.
@@ -28,7 +28,7 @@ pub struct Stats {
 pub struct Graph {
     pub(super) nodes: Vec<Node>,
     // Only looked up, never iterated: emission order is the arena's order.
-    memo: HashMap<Node, NodeId>,
+    memo: FxHashMap<Node, NodeId>,
     stats: Stats,
 }
 

@@ -4,6 +4,7 @@
 
 mod calculus;
 mod graph;
+mod hasher;
 pub mod modular;
 mod node;
 mod number;
