@@ -317,3 +317,28 @@ fn the_panda_with_its_mimic_finger() {
     free.joints.iter_mut().for_each(|j| j.mimic = None);
     assert!(b < base_parameters_have_the_rank(&free), "{b}");
 }
+
+/// The simplified models of a mimic robot: refused with their own reason, not the regressor's.
+#[test]
+fn the_simplified_models_of_a_mimic_robot_are_refused_by_name() {
+    use crate::method::FamilySet;
+    use crate::model::{Envelope, JointEnvelope, Simplification};
+    let arm = arm();
+    let joint = JointEnvelope {
+        lower: -1.0,
+        upper: 1.0,
+        speed: 1.0,
+        acceleration: 1.0,
+    };
+    let request = Simplification {
+        tolerance: vec![0.01; 3],
+        envelope: Envelope {
+            joints: vec![joint; 3],
+        },
+    };
+    let (_, simplified) = crate::pipeline::equations(&arm, FamilySet::default(), Some(&request));
+    let message = simplified.expect("asked").expect_err("refused");
+    assert!(
+        message.starts_with("the simplified models are not built for a robot with mimic joints")
+    );
+}
