@@ -31,7 +31,7 @@ impl Regressor {
     ///
     /// # Errors
     /// [`Error::StructFields`]: lengths or angles that are struct fields;
-    /// [`Error::Regressor`]: an entry a sample does not give.
+    /// [`Error::Regressor`]: an entry a sample does not give, or a robot with mimic joints.
     ///
     /// # Panics
     /// `fields` or `joint_columns` of another length than the robot's.
@@ -40,6 +40,16 @@ impl Regressor {
         joint_columns: Vec<JointColumns>,
         fields: Vec<f64>,
     ) -> Result<Regressor, Error> {
+        if robot.has_mimics() {
+            // The regressor has a row per coordinate and a column per link, where the estimate
+            // and the samples read both per joint.
+            return Err(Error::Regressor(
+                "a robot with mimic joints is not identified yet: its base regressor is traced \
+                 (a row per coordinate, the links' parameters), but the estimate reads a link \
+                 per coordinate"
+                    .to_owned(),
+            ));
+        }
         let names = robot.fields();
         assert_eq!(fields.len(), names.len(), "a value per field");
         assert_eq!(joint_columns.len(), robot.joints.len(), "columns per joint");

@@ -108,3 +108,19 @@ fn errors_come_back_as_their_kind() {
         "{few:?}"
     );
 }
+
+/// A robot with mimic joints is refused by name, not estimated with links and coordinates
+/// confused (it panicked in the base parameters' analysis before).
+#[test]
+fn a_robot_with_mimic_joints_is_refused() {
+    let panda = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
+    let mut source = Source::file(panda);
+    source.chain.base = Some("panda_link0");
+    let robot = load(&source).expect("the Panda").robot;
+    assert!(robot.has_mimics());
+    let columns = robot.joints.iter().map(JointColumns::described).collect();
+    match Regressor::new(&robot, columns, Vec::new()) {
+        Err(Error::Regressor(message)) => assert!(message.contains("mimic joints"), "{message}"),
+        other => panic!("{:?}", other.err()),
+    }
+}

@@ -59,6 +59,14 @@ impl FamilySet {
         }
     }
 
+    /// This set without `family`.
+    #[must_use]
+    pub fn without(self, family: Family) -> FamilySet {
+        FamilySet {
+            bits: self.bits & !family.bit(),
+        }
+    }
+
     /// Whether it holds `family`.
     #[must_use]
     pub fn contains(self, family: Family) -> bool {

@@ -278,14 +278,19 @@ pub(crate) fn equations(
     simplification: Option<&Simplification>,
 ) -> (Equations, Option<Result<(), String>>) {
     let mut eq = trace::derive(robot);
+    // Traced, but not in the traits' shape ([`trace::MIMIC_UNSUPPORTED`]): the callers say so.
+    let families = if robot.has_mimics() {
+        families
+            .without(Family::Regressor)
+            .without(Family::BaseParameters)
+    } else {
+        families
+    };
     eq.add_families(robot, families);
     // Only for a robot that asks: the expansion costs what the rest of the derive does.
     let simplified = simplification.map(|request| {
         if robot.has_mimics() {
-            return Err(format!(
-                "the simplified models {}",
-                trace::MIMIC_UNSUPPORTED
-            ));
+            return Err(trace::MIMIC_SIMPLIFIED.to_owned());
         }
         crate::simplify::add(&mut eq, request)
     });

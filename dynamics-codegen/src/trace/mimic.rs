@@ -95,6 +95,19 @@ impl Reduction {
         self.joints.len()
     }
 
+    /// Per joint, its coordinate (a mimic joint's: that of the joint it follows).
+    pub(super) fn coordinate_of_joints(&self) -> &[usize] {
+        &self.coordinate
+    }
+
+    /// `S_ic · x`, joint i's term in its coordinate c's row of `Sᵀ v` (`x` substituted).
+    pub(super) fn scaled(&self, g: &mut Graph, joint: usize, x: NodeId) -> NodeId {
+        match self.factor[joint] {
+            Some(k) => g.mul(k, x),
+            None => x,
+        }
+    }
+
     /// Per coordinate, its joint's entry of `per_joint`.
     pub(super) fn of_coordinates<T: Clone>(&self, per_joint: &[T]) -> Vec<T> {
         self.joints.iter().map(|&j| per_joint[j].clone()).collect()
@@ -120,10 +133,7 @@ impl Reduction {
     pub(super) fn project(&self, g: &mut Graph, v: &[NodeId]) -> Vec<NodeId> {
         let mut out: Vec<Option<NodeId>> = vec![None; self.coordinates()];
         for (i, &x) in v.iter().enumerate() {
-            let term = match self.factor[i] {
-                Some(k) => g.mul(k, x),
-                None => x,
-            };
+            let term = self.scaled(g, i, x);
             let slot = &mut out[self.coordinate[i]];
             *slot = Some(match *slot {
                 Some(sum) => g.add(sum, term),

@@ -321,5 +321,5 @@ fn the_panda_with_a_mimic_finger_out_of_the_door() {
         .expect_err("refused");
     assert!(refused
         .message
-        .contains("`regressor` is not supported for a robot with mimic joints"));
+        .contains("`regressor` is not generated for a robot with mimic joints"));
 }

@@ -37,6 +37,8 @@ mod kinematics;
 mod mass;
 mod mimic;
 #[cfg(test)]
+mod mimic_regressor_tests;
+#[cfg(test)]
 mod mimic_tests;
 mod newton_euler;
 mod outputs;
@@ -138,8 +140,6 @@ impl Equations {
             }
             match family {
                 Family::Derivatives => self.add_derivatives(),
-                // Not traced for mimic joints: the caller says so ([`MIMIC_UNSUPPORTED`]).
-                Family::Regressor | Family::BaseParameters if robot.has_mimics() => {}
                 Family::Regressor => self.add_regressor(robot),
                 Family::Tips => self.add_tips(robot),
                 Family::BaseParameters => {
@@ -161,11 +161,18 @@ impl Equations {
     }
 }
 
-/// Why the regressor, the base parameters and the simplified models are not traced for a
-/// robot with mimic joints: their parameters are per link, their rows per coordinate.
-pub const MIMIC_UNSUPPORTED: &str = "is not supported for a robot with mimic joints yet (the \
-     parameters are per link, the rows per coordinate); every other family is, in the reduced \
-     coordinates";
+/// Why the regressor and the base parameters are not generated for a robot with mimic joints
+/// (they are traced: [`Equations::add_regressor`], [`Equations::base_parameters`]), nor the
+/// simplified models: the first two have a row per coordinate and a column per link, where the
+/// traits' arrays have one size N for both.
+pub const MIMIC_UNSUPPORTED: &str = "is not generated for a robot with mimic joints yet: its \
+     rows are per coordinate (N) and its columns per link (N plus the mimic joints), where the \
+     trait's arrays have the one size N; every other family is, in the reduced coordinates";
+
+/// Why the simplified models are not built for a robot with mimic joints.
+pub const MIMIC_SIMPLIFIED: &str = "the simplified models are not built for a robot with mimic \
+     joints yet: the envelope bounds each coordinate, and a mimic joint's terms are not carried \
+     through `q_m = k q_j + o` into it (its sine of `k q_j + o` is no polynomial in q_j's)";
 
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
 /// the table is not empty.

@@ -19,9 +19,15 @@
 //! generated code. The standard parameters come from the description: `m`, `m c`, and the
 //! inertia about the centre of mass moved to the origin. The actuator inertia and the friction
 //! coefficients have a column each per joint, `[q̈_i, q̇_i, sign(q̇_i), 1]`, beside the links'.
+//!
+//! A robot with mimic joints has a row per coordinate and still a column per link: `Sᵀ Y` with
+//! the joints' leaves replaced ([`super::mimic`]), each mimic link keeping its own parameters;
+//! a mimic joint's own columns are those of `k q̇_j` (and `k q̈_j`), times k, in its
+//! coordinate's row.
 
 use super::cost;
 use super::expr::Expr;
+use super::mimic::Reduction;
 use super::tracer::Tracer;
 use super::Equations;
 use crate::algo::{self, Body, LinkFrame, LinkFrames, Mat3, RobotScalars, Scalar, Twist, V3};
@@ -45,6 +51,9 @@ pub struct RegressorEquations {
     pub joint_columns: Vec<Vec<NodeId>>,
     /// Row i: `[I_act, f_v, f_c, f_0]` of joint i, from the description.
     pub joint_parameters: Vec<Vec<NodeId>>,
+    /// Per joint, the row of τ its joint columns add to: its coordinate (i itself but on a
+    /// robot with mimic joints).
+    pub rows: Vec<usize>,
 }
 
 impl Equations {
@@ -62,15 +71,65 @@ impl Equations {
             .collect();
         let (joint_columns, joint_parameters) = joint_terms(&tracer, robot);
         let columns = cheapest_columns(&mut graph.borrow_mut(), &candidates);
+        let (columns, joint_columns, rows) =
+            in_coordinates(&graph, &tracer, robot, columns, joint_columns);
+        drop(tracer);
         self.graph = graph.into_inner();
         self.regressor = Some(RegressorEquations {
             columns,
             parameters,
             joint_columns,
             joint_parameters,
+            rows,
         });
         self.families = self.families.with(Family::Regressor);
     }
+}
+
+/// Link columns (`[row][link][k]`), joint columns (per joint) and each joint's row.
+type InCoordinates = (Vec<Vec<Vec<NodeId>>>, Vec<Vec<NodeId>>, Vec<usize>);
+
+/// The columns (`columns[i][j][k]` of joint i's torque) and joint columns in the coordinates
+/// of `robot`: as they are for a robot without mimic joints; else each link's column `Sᵀ Y_jk`
+/// with the joints' leaves replaced, each joint's columns with its leaves replaced, times its
+/// entry of S, in its coordinate's row.
+fn in_coordinates(
+    graph: &RefCell<Graph>,
+    tracer: &Tracer<'_>,
+    robot: &Robot,
+    columns: Vec<Vec<Vec<NodeId>>>,
+    joint_columns: Vec<Vec<NodeId>>,
+) -> InCoordinates {
+    if !robot.has_mimics() {
+        return (columns, joint_columns, (0..robot.dof()).collect());
+    }
+    let reduction = Reduction::new(graph, tracer, robot, &tracer.angle_offsets());
+    let g = &mut graph.borrow_mut();
+    let links = robot.dof();
+    // One substitution for all, then each link parameter's column projected.
+    let by_parameter: Vec<NodeId> = (0..links)
+        .flat_map(|j| (0..PARAMETERS).map(move |k| (j, k)))
+        .flat_map(|(j, k)| columns.iter().map(move |row| row[j][k]))
+        .collect();
+    let substituted = reduction.substitute(g, &by_parameter);
+    let zero = g.num(Number::ZERO);
+    let mut reduced = vec![vec![vec![zero; PARAMETERS]; links]; reduction.coordinates()];
+    for (p, column) in substituted.chunks(links).enumerate() {
+        let (j, k) = (p / PARAMETERS, p % PARAMETERS);
+        for (c, x) in reduction.project(g, column).into_iter().enumerate() {
+            reduced[c][j][k] = x;
+        }
+    }
+    let joint_columns = joint_columns
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            let row = reduction.substitute(g, row);
+            row.iter().map(|&x| reduction.scaled(g, i, x)).collect()
+        })
+        .collect();
+    let rows = reduction.coordinate_of_joints().to_vec();
+    (reduced, joint_columns, rows)
 }
 
 /// The regressor's columns and joint columns alone, traced into a graph of their own with the
@@ -84,12 +143,17 @@ pub(super) fn exact_columns(robot: &Robot) -> ExactColumns {
     // need a link pose's turn to be exactly orthogonal, as its entries as leaves are not.
     let tau = placeholder_taus(&mut tracer, robot, false).swap_remove(0);
     let (joint_columns, _) = joint_terms(&tracer, robot);
-    let leaves = tracer.exact_leaf_values();
     let columns = columns(&mut graph.borrow_mut(), &tau);
+    // The reduced rows, so that parameters the coupling makes inseparable are grouped.
+    let (columns, joint_columns, rows) =
+        in_coordinates(&graph, &tracer, robot, columns, joint_columns);
+    let leaves = tracer.exact_leaf_values();
+    drop(tracer);
     ExactColumns {
         graph: graph.into_inner(),
         columns,
         joint_columns,
+        rows,
         leaves,
     }
 }
@@ -101,6 +165,8 @@ pub(super) struct ExactColumns {
     pub columns: Vec<Vec<Vec<NodeId>>>,
     /// As [`RegressorEquations::joint_columns`].
     pub joint_columns: Vec<Vec<NodeId>>,
+    /// As [`RegressorEquations::rows`].
+    pub rows: Vec<usize>,
     /// The value of leaf [`Var::Exact`]`(k)`.
     pub leaves: Vec<Fp>,
 }

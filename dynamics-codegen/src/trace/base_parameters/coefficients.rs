@@ -66,12 +66,16 @@ fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64
     for _ in 0..count {
         let angles: Vec<f64> = (0..n).map(|_| PI * uniform()).collect();
         let others: Vec<[f64; 3]> = (0..n).map(|_| [uniform(), uniform(), uniform()]).collect();
+        // A robot with mimic joints keeps its joints' leaves past its coordinates in the
+        // graph, read by no column: zero.
+        let angle = |i: u16| angles.get(usize::from(i)).copied().unwrap_or(0.0);
+        let other = |i: u16, k: usize| others.get(usize::from(i)).map_or(0.0, |o| o[k]);
         let values = graph.eval(|v| match v {
-            Var::SinQ(i) => angles[usize::from(i)].sin(),
-            Var::CosQ(i) => angles[usize::from(i)].cos(),
-            Var::Q(i) => others[usize::from(i)][0],
-            Var::Qd(i) => others[usize::from(i)][1],
-            Var::Qdd(i) => others[usize::from(i)][2],
+            Var::SinQ(i) => angle(i).sin(),
+            Var::CosQ(i) => angle(i).cos(),
+            Var::Q(i) => other(i, 0),
+            Var::Qd(i) => other(i, 1),
+            Var::Qdd(i) => other(i, 2),
             // The columns depend on the joint variables alone (`exact::relations`).
             _ => 0.0,
         });

@@ -136,13 +136,25 @@ impl Equations {
             self.add_regressor(robot);
         }
         let regressor = self.regressor.clone()?;
-        let taken = taken(self.dof, joints);
+        // A column per link and joint, a row per coordinate (fewer on a robot with mimics).
+        let links = regressor.parameters.len();
+        let taken = taken(links, joints);
         let zero = self.graph.num(Number::ZERO);
-        let columns = column_ids(&taken, &regressor.columns, &regressor.joint_columns, zero);
+        let ours = Columns {
+            links: &regressor.columns,
+            joints: &regressor.joint_columns,
+            rows: &regressor.rows,
+        };
+        let columns = column_ids(&taken, &ours, zero);
         // Exactly on a trace of their own, in which the description's constants are leaves.
         let mut exact = super::regressor::exact_columns(robot);
         let exact_zero = exact.graph.num(Number::ZERO);
-        let exact_columns = column_ids(&taken, &exact.columns, &exact.joint_columns, exact_zero);
+        let theirs = Columns {
+            links: &exact.columns,
+            joints: &exact.joint_columns,
+            rows: &exact.rows,
+        };
+        let exact_columns = column_ids(&taken, &theirs, exact_zero);
         let relations = exact::relations(&exact.graph, &exact_columns, &exact.leaves)?;
         let pivots = relations.pivots;
         let numbers =
@@ -165,7 +177,7 @@ impl Equations {
                 })
             })
             .collect();
-        let (link_map, joint_map) = maps(&mut self.graph, self.dof, &groups);
+        let (link_map, joint_map) = maps(&mut self.graph, links, &groups);
         Some(BaseParameters {
             link_map,
             joint_map,
@@ -203,23 +215,27 @@ fn taken(n: usize, joints: &[JointColumns]) -> Vec<Parameter> {
     links.chain(joints).collect()
 }
 
-/// Per parameter, its column: `columns[i][link][index]` or joint i's `joint_columns[i][index]`
-/// in row i and `zero` in the others.
-fn column_ids(
-    taken: &[Parameter],
-    columns: &[Vec<Vec<NodeId>>],
-    joint_columns: &[Vec<NodeId>],
-    zero: NodeId,
-) -> Vec<Vec<NodeId>> {
-    let n = columns.len();
+/// A regressor's columns, as [`super::regressor::RegressorEquations`] has them.
+struct Columns<'a> {
+    links: &'a [Vec<Vec<NodeId>>],
+    joints: &'a [Vec<NodeId>],
+    rows: &'a [usize],
+}
+
+/// Per parameter, its column: `links[i][link][index]`, or joint j's `joints[j][index]` in its
+/// row `rows[j]` and `zero` in the others.
+fn column_ids(taken: &[Parameter], columns: &Columns<'_>, zero: NodeId) -> Vec<Vec<NodeId>> {
+    let n = columns.links.len();
     taken
         .iter()
         .map(|p| match *p {
-            Parameter::Link { link, index } => (0..n).map(|i| columns[i][link][index]).collect(),
+            Parameter::Link { link, index } => {
+                (0..n).map(|i| columns.links[i][link][index]).collect()
+            }
             Parameter::Joint { joint, index } => (0..n)
                 .map(|i| {
-                    if i == joint {
-                        joint_columns[joint][index]
+                    if i == columns.rows[joint] {
+                        columns.joints[joint][index]
                     } else {
                         zero
                     }
