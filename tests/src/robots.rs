@@ -2,7 +2,11 @@
 //! D-H twins of two URDF robots (`robots/*_urdf_dh.toml`, made by `data/urdf/twins.py`) and a
 //! two-link arm with friction, derived once for the tests that use them; those with derivatives'
 //! reference data (`data/derivatives/`) and the friction arm implement `DynamicsDerivatives`.
-//! Paths are relative to this crate's `Cargo.toml`.
+//! The reference robots carry every family a test file asks of them (the regressor everywhere,
+//! the base parameters of the PUMA 560 and the Panda) rather than each file deriving its own copy:
+//! a derive's code is compiled once per copy, the test binaries' largest compile cost.
+//! The URDF chains of `robots/urdf/` are in [`urdf`]. Paths are relative to this crate's
+//! `Cargo.toml`.
 
 use dynamics_runtime::Dynamics;
 
@@ -23,55 +27,66 @@ robot!(
     Puma560,
     "data/reference/robots/puma560.json",
     check_inertia = false,
-    derivatives = true
+    derivatives = true,
+    regressor = true,
+    base_parameters = true
 );
 robot!(
     /// The Stanford arm (6 joints, one prismatic).
     Stanford,
     "data/reference/robots/stanford.json",
     check_inertia = false,
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// The Robotics Toolbox's UR5 (point masses).
     Ur5,
-    "data/reference/robots/ur5.json"
+    "data/reference/robots/ur5.json",
+    regressor = true
 );
 robot!(
     /// The book's two-link arm.
     NikuTwoLink,
     "data/reference/robots/niku_2link.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// The book's polar arm (revolute, prismatic).
     NikuPolar,
     "data/reference/robots/niku_polar.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// A random 2-joint robot.
     Random1,
     "data/reference/robots/random1.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// A random 3-joint robot.
     Random2,
     "data/reference/robots/random2.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// A random 6-joint robot.
     Random5,
     "data/reference/robots/random5.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true
 );
 robot!(
     /// The Franka Emika Panda (7 joints).
     Panda,
     "data/panda/robot.json",
-    derivatives = true
+    derivatives = true,
+    regressor = true,
+    base_parameters = true
 );
 robot!(
     /// A UR5 transcribed from its URDF as placements and axes.
@@ -137,4 +152,57 @@ macro_rules! for_each_robot_with_forward_data {
         $check(&Random5, "random5");
         $check(&Panda, "panda");
     }};
+}
+
+/// The serial chains of `robots/urdf/` (example-robot-data 6.0.0), base to tip, each derived once
+/// with its regressor: `urdf_robots.rs` checks them against Pinocchio, `regressor.rs` their
+/// regressors, `lanes.rs` the Panda's methods in lanes.
+pub mod urdf {
+    use dynamics_runtime::Dynamics;
+
+    /// A unit struct deriving a URDF robot's chain, with its regressor.
+    macro_rules! urdf_robot {
+        ($(#[doc = $doc:literal])* $name:ident, $file:literal, $base:literal, $tip:literal) => {
+            $(#[doc = $doc])*
+            #[derive(Dynamics)]
+            #[dynamics(urdf = $file, base = $base, tip = $tip, regressor = true)]
+            pub struct $name;
+        };
+    }
+
+    urdf_robot!(
+        /// Universal Robots' UR5.
+        Ur5,
+        "../robots/urdf/ur5.urdf",
+        "base_link",
+        "tool0"
+    );
+    urdf_robot!(
+        /// Universal Robots' UR10.
+        Ur10,
+        "../robots/urdf/ur10.urdf",
+        "base_link",
+        "tool0"
+    );
+    urdf_robot!(
+        /// The Franka Emika Panda to its flange, with its joints' friction.
+        Panda,
+        "../robots/urdf/panda.urdf",
+        "panda_link0",
+        "panda_link8"
+    );
+    urdf_robot!(
+        /// Unitree's Z1.
+        Z1,
+        "../robots/urdf/z1.urdf",
+        "link00",
+        "link06"
+    );
+    urdf_robot!(
+        /// The SO-101 arm to its gripper.
+        So101,
+        "../robots/urdf/so101.urdf",
+        "base_link",
+        "gripper_link"
+    );
 }

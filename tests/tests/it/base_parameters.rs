@@ -20,6 +20,7 @@ use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsRegressor};
 use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::robot_of;
+use dynamics_tests::robots::{Panda, Puma560};
 use nalgebra::DMatrix;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 use serde_json::Value;
@@ -308,20 +309,6 @@ fn random_robots_against_the_rank_of_the_textbook_methods_torques() {
         "robots of every size: {seen:?}"
     );
 }
-
-// Both publish link inertias that break the triangle inequality; the reference data keep them.
-#[derive(Dynamics)]
-#[dynamics(
-    file = "data/reference/robots/puma560.json",
-    base_parameters = true,
-    regressor = true,
-    check_inertia = false
-)]
-struct Puma560;
-
-#[derive(Dynamics)]
-#[dynamics(file = "data/panda/robot.json", base_parameters = true)]
-struct Panda;
 
 /// `Y_B π_B` of a robot at a state.
 fn predicted<R, const N: usize, const B: usize>(

@@ -11,16 +11,6 @@ use dynamics_runtime::{
 use dynamics_tests::lanes::{close_values, routes_differ, Bits};
 use dynamics_tests::robots::{Panda, Puma560, Stanford};
 
-/// PUMA 560 with the regressors.
-#[derive(Dynamics)]
-#[dynamics(
-    file = "data/reference/robots/puma560.json",
-    check_inertia = false,
-    regressor = true,
-    base_parameters = true
-)]
-struct Puma560Identified;
-
 /// Lengths around the groups of four (`f64`) and eight (`f32`).
 const LENGTHS: [usize; 8] = [0, 1, 3, 4, 5, 8, 9, 19];
 
@@ -215,7 +205,7 @@ fn single_precision_in_groups_of_eight() {
 
 #[test]
 fn regressors_in_batches() {
-    let robot = Puma560Identified;
+    let robot = Puma560;
     let len = 6;
     let (q, qd, qdd) = (
         states::<6>(len, 14),

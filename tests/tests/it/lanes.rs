@@ -15,28 +15,11 @@ use dynamics_runtime::lanes::{gather, F32x4, F32x8, F64x2, F64x4, F64x8, SplitLa
 use dynamics_runtime::{Dynamics, NotPositiveDefinite};
 use dynamics_tests::lanes::{derivatives, dynamics, regressor, Motion, States};
 use dynamics_tests::reference::{flat, matrix, samples, vector, TOLERANCE};
+use dynamics_tests::robots::urdf;
 use dynamics_tests::robots::{
     General, NikuPolar, NikuTwoLink, Panda, PandaTwin, Puma560, Random1, Random2, Random5, Rubbing,
     Stanford, Tilted, Ur5, Ur5Twin, Ur5Urdf,
 };
-
-/// A robot with every family, from a description file.
-#[derive(Dynamics)]
-#[dynamics(
-    file = "data/reference/robots/random5.json",
-    derivatives = true,
-    regressor = true
-)]
-struct Random5All;
-
-/// The Panda from its URDF, with its joints' friction.
-#[derive(Dynamics)]
-#[dynamics(
-    urdf = "../robots/urdf/panda.urdf",
-    base = "panda_link0",
-    tip = "panda_link8"
-)]
-struct PandaUrdf;
 
 /// Every method in `F64x4`, and the derivatives where the robot has them.
 macro_rules! f64x4 {
@@ -59,14 +42,14 @@ f64x4! {
     random1_f64x4: Random1, 2, derivatives;
     random2_f64x4: Random2, 3, derivatives;
     random5_f64x4: Random5, 6, derivatives;
-    random5_regressor_f64x4: Random5All, 6, regressor;
+    random5_regressor_f64x4: Random5, 6, regressor;
     panda_f64x4: Panda, 7, derivatives;
     ur5_frames_f64x4: Ur5Urdf, 6;
     tilted_f64x4: Tilted, 3;
     general_f64x4: General, 6;
     ur5_twin_f64x4: Ur5Twin, 6;
     panda_twin_f64x4: PandaTwin, 7;
-    panda_urdf_f64x4: PandaUrdf, 7;
+    panda_urdf_f64x4: urdf::Panda, 7;
     friction_f64x4: Rubbing { fv2: 0.05, eps: 0.01 }, 2, derivatives;
 }
 
@@ -75,7 +58,7 @@ fn single_precision_f32x8() {
     dynamics(&Puma560, &Motion::<F32x8, 8, 6>::new(8));
     derivatives(&Puma560, &Motion::<F32x8, 8, 6>::new(9));
     derivatives(&Panda, &Motion::<F32x8, 8, 7>::new(10));
-    regressor(&Random5All, &Motion::<F32x8, 8, 6>::new(11));
+    regressor(&Random5, &Motion::<F32x8, 8, 6>::new(11));
     let rubbing = Rubbing {
         fv2: 0.05,
         eps: 0.01,
@@ -104,7 +87,7 @@ fn eight_lanes_f64x8() {
         .spawn(|| {
             dynamics(&Puma560, &Motion::<F64x8, 8, 6>::new(20));
             derivatives(&Panda, &Motion::<F64x8, 8, 7>::new(21));
-            regressor(&Random5All, &Motion::<F64x8, 8, 6>::new(22));
+            regressor(&Random5, &Motion::<F64x8, 8, 6>::new(22));
         })
         .expect("a thread")
         .join()

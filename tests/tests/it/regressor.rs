@@ -14,62 +14,12 @@ use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsRegressor};
 use dynamics_tests::interpret::{evaluate, State};
 use dynamics_tests::random::case;
+use dynamics_tests::robots::urdf;
+use dynamics_tests::robots::{
+    NikuPolar, NikuTwoLink, Panda, Puma560, Random1, Random2, Random5, Stanford, Ur5,
+};
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestRunner};
 use serde_json::Value;
-
-/// A unit struct deriving the robot of a reference description, with its regressor.
-macro_rules! robot {
-    ($name:ident, $file:literal $(, $key:ident = $value:tt)*) => {
-        #[derive(Dynamics)]
-        #[dynamics(file = $file, regressor = true $(, $key = $value)*)]
-        struct $name;
-    };
-}
-
-// PUMA 560 links 1 and 3 and Stanford link 5, as published, break the triangle inequality of
-// principal moments of inertia; the reference data keep them.
-robot!(
-    Puma560,
-    "data/reference/robots/puma560.json",
-    check_inertia = false
-);
-robot!(
-    Stanford,
-    "data/reference/robots/stanford.json",
-    check_inertia = false
-);
-robot!(Ur5, "data/reference/robots/ur5.json");
-robot!(NikuTwoLink, "data/reference/robots/niku_2link.json");
-robot!(NikuPolar, "data/reference/robots/niku_polar.json");
-robot!(Random1, "data/reference/robots/random1.json");
-robot!(Random2, "data/reference/robots/random2.json");
-robot!(Random5, "data/reference/robots/random5.json");
-robot!(Panda, "data/panda/robot.json");
-
-/// A unit struct deriving a URDF robot's chain, with its regressor.
-macro_rules! urdf_robot {
-    ($name:ident, $file:literal, $base:literal, $tip:literal) => {
-        #[derive(Dynamics)]
-        #[dynamics(urdf = $file, base = $base, tip = $tip, regressor = true)]
-        struct $name;
-    };
-}
-
-urdf_robot!(Ur5Urdf, "../robots/urdf/ur5.urdf", "base_link", "tool0");
-urdf_robot!(Ur10Urdf, "../robots/urdf/ur10.urdf", "base_link", "tool0");
-urdf_robot!(
-    PandaUrdf,
-    "../robots/urdf/panda.urdf",
-    "panda_link0",
-    "panda_link8"
-);
-urdf_robot!(Z1Urdf, "../robots/urdf/z1.urdf", "link00", "link06");
-urdf_robot!(
-    So101Urdf,
-    "../robots/urdf/so101.urdf",
-    "base_link",
-    "gripper_link"
-);
 
 /// Largest accepted scaled error.
 const TOLERANCE: f64 = 1e-10;
@@ -174,11 +124,11 @@ fn pinocchio_joint_torque_regressor() {
 /// The URDF robots: π about each URDF link frame's origin, in its axes, as Pinocchio's.
 #[test]
 fn pinocchio_joint_torque_regressor_of_urdf_robots() {
-    against_pinocchio(&Ur5Urdf, "ur5_urdf");
-    against_pinocchio(&Ur10Urdf, "ur10_urdf");
-    against_pinocchio(&PandaUrdf, "panda_urdf");
-    against_pinocchio(&Z1Urdf, "z1_urdf");
-    against_pinocchio(&So101Urdf, "so101_urdf");
+    against_pinocchio(&urdf::Ur5, "ur5_urdf");
+    against_pinocchio(&urdf::Ur10, "ur10_urdf");
+    against_pinocchio(&urdf::Panda, "panda_urdf");
+    against_pinocchio(&urdf::Z1, "z1_urdf");
+    against_pinocchio(&urdf::So101, "so101_urdf");
 }
 
 /// A planar two-link arm with actuator inertia, a spring and friction on both joints, joint 2's

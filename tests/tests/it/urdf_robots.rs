@@ -1,5 +1,6 @@
 //! The URDF robots of `robots/urdf/` (example-robot-data 6.0.0), each derived from its file with
-//! `#[derive(Dynamics)] #[dynamics(urdf = .., base = .., tip = ..)]`, against Pinocchio 4.1.0's
+//! `#[derive(Dynamics)] #[dynamics(urdf = .., base = .., tip = ..)]` (in
+//! `dynamics_tests::robots::urdf`, shared with `regressor.rs`), against Pinocchio 4.1.0's
 //! URDF loader (`tests/data/urdf/<robot>.json`, by `make.py`: the chain from base to tip with
 //! the links fixed to it, angles within 1e-5 rad of a quarter turn snapped): for every sample,
 //! τ, M, C, C·q̇ + g, g and both energies match to 1e-10 (scaled). τ adds each joint's
@@ -16,31 +17,8 @@ use dynamics_codegen::{derive, front, generate};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::Dynamics;
 use dynamics_tests::reference::{check, flat, samples, vector, Friction, TOLERANCE};
+use dynamics_tests::robots::urdf::{Panda, So101, Ur10, Ur5, Z1};
 use dynamics_tests::robots::{PandaTwin, Ur5Twin};
-
-macro_rules! urdf_robot {
-    ($name:ident, $file:literal, $base:literal, $tip:literal) => {
-        #[derive(Dynamics)]
-        #[dynamics(urdf = $file, base = $base, tip = $tip)]
-        struct $name;
-    };
-}
-
-urdf_robot!(Ur5, "../robots/urdf/ur5.urdf", "base_link", "tool0");
-urdf_robot!(Ur10, "../robots/urdf/ur10.urdf", "base_link", "tool0");
-urdf_robot!(
-    Panda,
-    "../robots/urdf/panda.urdf",
-    "panda_link0",
-    "panda_link8"
-);
-urdf_robot!(Z1, "../robots/urdf/z1.urdf", "link00", "link06");
-urdf_robot!(
-    So101,
-    "../robots/urdf/so101.urdf",
-    "base_link",
-    "gripper_link"
-);
 
 #[test]
 fn ur5_matches_pinocchio() {

@@ -16,6 +16,8 @@ use dynamics_reference::nalgebra::{DMatrix, DVector};
 use dynamics_reference::{PinocchioFrame, Robot};
 use dynamics_runtime::{Dynamics, Pose, TipKinematics};
 use dynamics_tests::reference::{samples, vector};
+// The same derive as `urdf_trees.rs`' (its attribute names no tips: the leaves, both fingers).
+use crate::urdf_trees::PandaFreeFingers;
 use serde_json::Value;
 
 /// The hand's published inertias break the triangle inequality (Pinocchio takes them as given).
@@ -27,13 +29,6 @@ use serde_json::Value;
     check_inertia = false
 )]
 struct AllegroTips;
-
-#[derive(Dynamics)]
-#[dynamics(
-    urdf = "../robots/urdf/trees/panda_free_fingers.urdf",
-    base = "panda_link0"
-)]
-struct PandaTips;
 
 /// The Panda with its URDF's `<mimic>`: the second finger follows the first (8 coordinates).
 #[derive(Dynamics)]
@@ -258,13 +253,13 @@ fn the_allegro_hands_fingertips_against_pinocchio() {
 #[test]
 fn the_pandas_free_fingers_are_its_leaves_against_pinocchio() {
     assert_eq!(
-        PandaTips::TIP_NAMES,
+        PandaFreeFingers::TIP_NAMES,
         ["panda_leftfinger", "panda_rightfinger"]
     );
-    assert_eq!(PandaTips::TIP_PANDA_RIGHTFINGER, 1);
+    assert_eq!(PandaFreeFingers::TIP_PANDA_RIGHTFINGER, 1);
     check(
-        &PandaTips,
-        PandaTips::TIP_NAMES,
+        &PandaFreeFingers,
+        PandaFreeFingers::TIP_NAMES,
         "panda_fingers_no_mimic.json",
         false,
         1e-12,

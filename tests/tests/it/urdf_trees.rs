@@ -27,7 +27,8 @@ macro_rules! urdf_tree {
     ($name:ident, $file:literal, $base:literal) => {
         #[derive(Dynamics)]
         #[dynamics(urdf = $file, base = $base)]
-        struct $name;
+        // Shared with `urdf_tips.rs` (one derive of each robot in the binary).
+        pub(crate) struct $name;
     };
 }
 
