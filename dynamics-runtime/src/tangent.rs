@@ -40,6 +40,62 @@ impl<T: Real, const Q: usize> Tangent<T, Q> {
     pub fn row<const N: usize>(self) -> [T; N] {
         core::array::from_fn(|j| self.0[j / 8][j % 8])
     }
+
+    /// A row of `N` columns of a tangent kept in the groups `at..at + Q` of the whole (the
+    /// directions outside them zero).
+    #[inline(always)]
+    #[must_use]
+    pub fn row_at<const N: usize>(self, at: usize) -> [T; N] {
+        core::array::from_fn(|j| match (j / 8).checked_sub(at) {
+            Some(g) if g < Q => self.0[g][j % 8],
+            _ => T::ZERO,
+        })
+    }
+
+    /// This tangent as groups `at..at + Q` of a wider one of `W` groups, zero elsewhere.
+    #[inline(always)]
+    #[must_use]
+    pub fn widen<const W: usize>(self, at: usize) -> Tangent<T, W> {
+        let mut wide = Tangent([[T::ZERO; 8]; W]);
+        wide.0[at..at + Q].copy_from_slice(&self.0);
+        wide
+    }
+
+    /// `c ∂v` added into groups `at..at + Q` of `acc` ([`Tangent::mul_add`] there, `acc` kept
+    /// elsewhere).
+    #[inline(always)]
+    #[must_use]
+    pub fn mul_add_into<const W: usize>(
+        self,
+        c: T,
+        mut acc: Tangent<T, W>,
+        at: usize,
+    ) -> Tangent<T, W> {
+        for (k, x) in self.0.into_iter().enumerate() {
+            acc.0[at + k] = T::oct_mul_add(x, c, acc.0[at + k]);
+        }
+        acc
+    }
+
+    /// `acc + ∂v`, `∂v` in groups `at..at + Q` of `acc`.
+    #[inline(always)]
+    #[must_use]
+    pub fn add_into<const W: usize>(self, mut acc: Tangent<T, W>, at: usize) -> Tangent<T, W> {
+        for (k, x) in self.0.into_iter().enumerate() {
+            acc.0[at + k] = T::oct_add(acc.0[at + k], x);
+        }
+        acc
+    }
+
+    /// `acc - ∂v`, `∂v` in groups `at..at + Q` of `acc`.
+    #[inline(always)]
+    #[must_use]
+    pub fn sub_from<const W: usize>(self, mut acc: Tangent<T, W>, at: usize) -> Tangent<T, W> {
+        for (k, x) in self.0.into_iter().enumerate() {
+            acc.0[at + k] = T::oct_sub(acc.0[at + k], x);
+        }
+        acc
+    }
 }
 
 impl<T: Real, const Q: usize> Add for Tangent<T, Q> {
@@ -89,6 +145,25 @@ mod tests {
         }
         let row: [T; 7] = a.row();
         assert_eq!(row[..], x[..7]);
+        // Kept in group 1 of three: the other groups' lanes are zero, and every step is the
+        // scalar one in group 1 alone.
+        let wide: Tangent<T, 3> = Tangent([y, y, y]);
+        let row: [T; 20] = a.row_at(1);
+        assert!(row[..8].iter().chain(&row[16..]).all(|&v| v == T::ZERO));
+        assert_eq!(row[8..16], x[..]);
+        assert_eq!(a.widen::<3>(1).0, [[T::ZERO; 8], x, [T::ZERO; 8]]);
+        for l in 0..8 {
+            assert_eq!(a.mul_add_into(c, wide, 1).0[1][l], x[l].mul_add(c, y[l]));
+            assert_eq!(a.add_into(wide, 1).0[1][l], y[l] + x[l]);
+            assert_eq!(a.sub_from(wide, 1).0[1][l], y[l] - x[l]);
+        }
+        for step in [
+            a.mul_add_into(c, wide, 1),
+            a.add_into(wide, 1),
+            a.sub_from(wide, 1),
+        ] {
+            assert_eq!((step.0[0], step.0[2]), (y, y));
+        }
     }
 
     #[test]

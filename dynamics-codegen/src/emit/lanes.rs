@@ -5,12 +5,18 @@
 //! `K` is n rounded up to a multiple of eight, whole AVX-512 registers of `f64` (the lanes past n
 //! stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
 //! the unit vectors of a tangent one array literal, `Tangent([T::ZERO, c2, …])`.
+//!
+//! A lane is kept in its blocks of eight ([`Tangents::blocks`]), `Tangent<T, Q>` with `Q` its
+//! own count: a term of fewer blocks is added into its place (`x.mul_add_into(f, acc, 1)`, 1
+//! the offset of its blocks in the lane's), and a row read off at its place (`dq7.row_at(1)`).
+//! A lane of every block is written as before.
 
 use super::emitter::Emitter;
 use super::names::local;
 use super::plan::Place;
-use crate::symbolic::{NodeId, Of, Tangents, Term};
+use crate::symbolic::{NodeId, Of, Tangents, Term, BLOCK};
 use crate::trace::Shape;
+use core::ops::Range;
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
@@ -19,6 +25,8 @@ pub(crate) struct Queue<'a> {
     /// `(after, plan, lane)`, sorted by `after`, the plan's order kept within.
     pending: Vec<(NodeId, usize, usize)>,
     plans: Vec<Option<&'a Tangents>>,
+    /// Per plan, each lane's blocks ([`Tangents::blocks`]).
+    blocks: Vec<Vec<Range<usize>>>,
     next: usize,
 }
 
@@ -31,6 +39,11 @@ fn lane_name(plan: usize, lane: usize) -> Ident {
 pub(crate) fn lane_text(plan: usize, lane: usize) -> String {
     let prefix = ["dq", "dqd"].get(plan).copied().unwrap_or("dx");
     format!("{prefix}{}", lane + 1)
+}
+
+/// `n` as a literal without a suffix (`2`, not `2usize`).
+fn unsuffixed(n: usize) -> proc_macro2::Literal {
+    proc_macro2::Literal::usize_unsuffixed(n)
 }
 
 /// The number of lanes of a plan of `n` directions: whole AVX-512 registers of `f64`.
@@ -70,11 +83,21 @@ impl<'a> Queue<'a> {
             .collect();
         // Stable: a lane reads only lanes of its plan written before it, after nodes before.
         pending.sort_by_key(|&(after, p, _)| (after, p));
+        let blocks = plans
+            .iter()
+            .map(|plan| plan.map(Tangents::blocks).unwrap_or_default())
+            .collect();
         Queue {
             pending,
             plans,
+            blocks,
             next: 0,
         }
+    }
+
+    /// The blocks of each lane of plan `p`.
+    pub(crate) fn blocks(&self, p: usize) -> &[Range<usize>] {
+        &self.blocks[p]
     }
 
     /// The next lane due before node `before` (any left for `None`): its plan's index, the
@@ -119,19 +142,28 @@ impl Emitter<'_> {
     ) {
         while let Some((p, plan, k)) = queue.next_due(before) {
             let name = lane_name(p, k);
-            let value = self.lane(p, plan, &plan.lanes[k].terms);
+            let value = self.lane(p, plan, k, queue.blocks(p));
             statements.push(quote!(let #name = #value;));
         }
     }
 
-    /// The sum of a lane's terms.
-    fn lane(&mut self, p: usize, plan: &Tangents, terms: &[Term]) -> TokenStream {
-        let k = width(plan.directions);
+    /// The sum of lane `k`'s terms, in its blocks.
+    fn lane(
+        &mut self,
+        p: usize,
+        plan: &Tangents,
+        k: usize,
+        blocks: &[Range<usize>],
+    ) -> TokenStream {
+        let terms = &plan.lanes[k].terms;
+        let own = blocks[k].clone();
+        // A lane of every block is written as it was before lanes had blocks.
+        let whole = own.len() == plan.block_count();
         let (units, lanes): (Vec<&Term>, Vec<&Term>) =
             terms.iter().partition(|t| matches!(t.of, Of::Unit(_)));
         let mut acc: Option<TokenStream> = None;
         if !units.is_empty() {
-            let elements: Vec<TokenStream> = (0..k)
+            let elements: Vec<TokenStream> = (own.start * BLOCK..own.end * BLOCK)
                 .map(|j| {
                     let at: Vec<&&Term> = units
                         .iter()
@@ -154,6 +186,8 @@ impl Emitter<'_> {
         for (t, n) in counted {
             let Of::Lane(l) = t.of else { continue };
             let x = lane_name(p, l);
+            // Added into its place where the term has fewer blocks than the lane.
+            let at = (blocks[l] != own).then(|| unsuffixed(blocks[l].start - own.start));
             // Without factors, a negative term is subtracted (or negated, first).
             let signed = t.negative && (!t.factors.is_empty() || n > 1);
             let factor = match self.product(&t.factors, signed) {
@@ -167,16 +201,27 @@ impl Emitter<'_> {
                 }
                 f => f,
             };
-            acc = Some(match (acc, factor) {
-                (None, None) if t.negative => quote!(-#x),
-                (None, None) => quote!(#x),
-                (None, Some(f)) => quote!(#x.scale(#f)),
-                (Some(a), None) if t.negative => quote!(#a - #x),
-                (Some(a), None) => quote!(#a + #x),
-                (Some(a), Some(f)) => quote!(#x.mul_add(#f, #a)),
+            let q = unsuffixed(own.len());
+            acc = Some(match (at, acc, factor) {
+                (None, None, None) if t.negative => quote!(-#x),
+                (None, None, None) => quote!(#x),
+                (None, None, Some(f)) => quote!(#x.scale(#f)),
+                (None, Some(a), None) if t.negative => quote!(#a - #x),
+                (None, Some(a), None) => quote!(#a + #x),
+                (None, Some(a), Some(f)) => quote!(#x.mul_add(#f, #a)),
+                (Some(at), None, None) if t.negative => quote!((-#x).widen::<#q>(#at)),
+                (Some(at), None, None) => quote!(#x.widen::<#q>(#at)),
+                (Some(at), None, Some(f)) => quote!(#x.scale(#f).widen::<#q>(#at)),
+                (Some(at), Some(a), None) if t.negative => quote!(#x.sub_from(#a, #at)),
+                (Some(at), Some(a), None) => quote!(#x.add_into(#a, #at)),
+                (Some(at), Some(a), Some(f)) => quote!(#x.mul_add_into(#f, #a, #at)),
             });
         }
-        let groups = k / 8;
+        let groups = if whole {
+            width(plan.directions) / BLOCK
+        } else {
+            own.len()
+        };
         acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; 8]; #groups])))
     }
 
@@ -230,10 +275,15 @@ impl Emitter<'_> {
                 None => self.matrix(m),
                 Some(plan) => {
                     let n = plan.directions;
+                    let blocks = plan.blocks();
                     let rows = plan.outputs.iter().map(|lane| match lane {
-                        Some(l) => {
+                        Some(l) if blocks[*l].len() == plan.block_count() => {
                             let x = lane_name(p, *l);
                             quote!(#x.row())
+                        }
+                        Some(l) => {
+                            let (x, at) = (lane_name(p, *l), unsuffixed(blocks[*l].start));
+                            quote!(#x.row_at(#at))
                         }
                         None => quote!([T::ZERO; #n]),
                     });

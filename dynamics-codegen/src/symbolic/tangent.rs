@@ -13,10 +13,18 @@
 //! multiply a sum of more than two terms, or at an output. Where a tangent would need a new
 //! scalar node (a sine of a sum, a reciprocal, a hyperbolic tangent that depends on the
 //! variables), there is no plan, and the caller differentiates column by column.
+//!
+//! The directions are held in blocks of [`BLOCK`] (a register each), and a lane only in the
+//! blocks its terms reach ([`Tangents::blocks`]): on a tree a value depends on the joints of its
+//! branch alone, so a finger's tangents take one block of the hand's, not all of them.
 
 use super::calculus::Wrt;
 use super::graph::Graph;
 use super::node::{Node, NodeId, Var};
+use core::ops::Range;
+
+/// The directions a register holds: a lane is kept in whole blocks of this many.
+pub const BLOCK: usize = 8;
 
 /// How many scalar factors a term may carry before its vector is written out.
 const FACTORS: usize = 2;
@@ -77,6 +85,35 @@ impl Tangents {
         all.sort_unstable();
         all.dedup();
         all
+    }
+
+    /// The blocks of [`BLOCK`] directions of the whole tangent (`n` rounded up).
+    #[must_use]
+    pub fn block_count(&self) -> usize {
+        self.directions.div_ceil(BLOCK).max(1)
+    }
+
+    /// Per lane, the blocks it is kept in: the smallest run of blocks that holds every
+    /// direction its terms can be nonzero in (outside it the lane is exactly zero). A lane's
+    /// blocks hold those of every lane it reads, so a term is added block by block.
+    #[must_use]
+    pub fn blocks(&self) -> Vec<Range<usize>> {
+        let mut blocks: Vec<Range<usize>> = Vec::with_capacity(self.lanes.len());
+        for lane in &self.lanes {
+            let hull = lane
+                .terms
+                .iter()
+                .map(|t| match t.of {
+                    Of::Lane(k) => blocks[k].clone(),
+                    Of::Unit(j) => {
+                        let b = usize::from(j) / BLOCK;
+                        b..b + 1
+                    }
+                })
+                .reduce(|a, b| a.start.min(b.start)..a.end.max(b.end));
+            blocks.push(hull.unwrap_or(0..1));
+        }
+        blocks
     }
 }
 

@@ -205,6 +205,50 @@ fn traced_trees_equal_the_algorithms() {
     }
 }
 
+/// Two chains of eight joints off the base: every lane of ∂τ's tangents is kept in the one
+/// block of eight directions of its chain (a chain's torques depend on its own joints alone),
+/// not in both, and is exactly zero outside its block.
+#[test]
+fn a_chain_s_tangents_take_its_block_alone() {
+    use crate::algo::tree_tests::{at as joint, P, R};
+    let specs: Vec<_> = (0..16)
+        .map(|i| {
+            let parent = (i % 8 != 0).then(|| i - 1);
+            let kind = if i % 5 == 3 { P } else { R };
+            let gamma = if i == 8 { 0.7 } else { 0.0 };
+            joint(parent, kind, gamma, 0.0, 0.3 * i as f64)
+        })
+        .collect();
+    let robot = robot(&specs, true);
+    let (eq, _) = equations(&robot, FamilySet::default().with(Family::Derivatives), None);
+    let d = eq.derivatives.as_ref().expect("derivatives traced");
+    let values = |k: f64| -> Vec<f64> { (0..16).map(|i| (0.37 * i as f64 + k).sin()).collect() };
+    let (q, qd, qdd, tau) = (values(0.1), values(1.3), values(2.2), values(3.1));
+    let state = State {
+        fields: &[],
+        q: &q,
+        qd: &qd,
+        qdd: &qdd,
+        tau: &tau,
+    };
+    let at = eq.evaluate(&state);
+    for plan in d.inverse_lanes.iter().flatten() {
+        assert_eq!(plan.block_count(), 2);
+        let lanes = tangent_lanes(plan, &at);
+        let blocks = plan.blocks();
+        for (k, (blocks, lane)) in blocks.iter().zip(&lanes).enumerate() {
+            assert_eq!(blocks.len(), 1, "lane {k} in blocks {blocks:?}");
+            let mut outside = (0..16).filter(|j| !blocks.contains(&(j / 8)));
+            assert!(outside.all(|j| lane[j] == 0.0), "lane {k}: {lane:?}");
+        }
+        // τ_i's row in the block of i's chain.
+        for (i, lane) in plan.outputs.iter().enumerate() {
+            let lane = lane.expect("every torque depends on its chain");
+            assert_eq!(blocks[lane], i / 8..i / 8 + 1, "∂τ_{i}");
+        }
+    }
+}
+
 /// The generated methods' operations (flops, as `dynamics stats` counts them) of `robot`.
 fn flops(robot: &Robot, families: FamilySet) -> Vec<(String, usize)> {
     let (eq, _) = equations(robot, families, None);

@@ -5,7 +5,7 @@
 //!   a positive definite M;
 //! * against central differences of the generated `inverse_dynamics` and `forward_dynamics`,
 //!   on the same robots and on the friction arm (Coulomb smoothed on joint 2), in `f64`; `f32`
-//!   against `f64`;
+//!   against `f64`; on a tree of nine joints (the Panda with free fingers);
 //! * the friction arm's `∂τ/∂q̇` by hand: `2 C` plus the viscous slope, plus `f_c/ε sech²(q̇/ε)`
 //!   where smoothed (the plain Coulomb step is flat away from 0);
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
@@ -127,6 +127,22 @@ fn check_differences<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name:
     println!("{name}: central differences {differences:.1e}, f32 {single:.1e}");
     assert!(differences < 1e-5, "{name}: {differences:e}");
     assert!(single < 1e-4, "{name}: f32 {single:e}");
+}
+
+/// The Panda with its two fingers free: a tree of nine joints, whose tangents in lanes (where the
+/// build has AVX-512) are kept in the first block of eight directions or in both (a finger's
+/// and the arm's in the first, the second finger's across both).
+#[derive(Dynamics)]
+#[dynamics(
+    urdf = "../robots/urdf/trees/panda_free_fingers.urdf",
+    base = "panda_link0",
+    derivatives = true
+)]
+struct PandaFreeFingers;
+
+#[test]
+fn a_tree_against_central_differences() {
+    check_differences(&PandaFreeFingers, "Panda with free fingers");
 }
 
 #[test]
