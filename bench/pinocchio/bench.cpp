@@ -1,6 +1,6 @@
 // Pinocchio side of the side-by-side benchmark (see bench/README.md; driven by bench/run).
 //
-// Usage: pinocchio_bench [--generated LIB.so [--c LIB.so]] DATA.json [DATA.json ...]
+// Usage: pinocchio_bench [--generated LIB.so [--c LIB.so [--casadi LIB.so]]] DATA.json [DATA.json ...]
 //
 // Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/,
 // tests/data/urdf/ (format in tests/data/reference/README.md) or tests/data/trees/ (a robot that
@@ -58,12 +58,21 @@
 // from batch to batch): `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns`. The
 // batch rows, which the headers do not have, keep four columns.
 //
+// With --casadi LIB.so after --generated and --c (the generated-code peer: Pinocchio's rnea, crba,
+// computeRNEADerivatives and computeABADerivatives traced on casadi::SX and exported as C by
+// bench/casadi/generate.cpp, one lookup casadi_bench_<robot>(function) per robot, the functions'
+// signatures and layouts bench/ffi's), those four are checked against Pinocchio's doubles on
+// every sample (the same tolerance) and timed in turn with the others, a sixth column:
+// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns<TAB>casadi_ns`, c_ns `-` for a
+// robot without C headers (the trees).
+//
 // For a robot whose generated library has simplified models (bench/ffi's `tau_simplified`,
 // `M_simplified`, `g_simplified`: PUMA 560 and the Panda), those are checked against Pinocchio
 // within their proven bounds at states drawn in their envelope (check_simplified), then timed
 // in turn with Pinocchio's exact rnea, crba and computeGeneralizedGravity, four columns.
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cctype>
 #include <cmath>
@@ -85,7 +94,8 @@
 
 #include <Eigen/QR>
 
-#include "pinocchio/multibody.hpp"
+#include "model.hpp"
+
 #include "pinocchio/algorithm/aba.hpp"
 #include "pinocchio/algorithm/aba-derivatives.hpp"
 #include "pinocchio/algorithm/parallel/aba.hpp"
@@ -98,448 +108,8 @@
 #include "pinocchio/algorithm/rnea-derivatives.hpp"
 
 // ---------------------------------------------------------------------------------------------
-// Minimal JSON reader: null, booleans, numbers, strings, arrays, objects. Enough for the
-// reference data files; not a general-purpose validating parser.
-// ---------------------------------------------------------------------------------------------
-
-namespace json
-{
-  struct Value
-  {
-    enum Kind
-    {
-      Null,
-      Bool,
-      Number,
-      String,
-      Array,
-      Object
-    } kind = Null;
-    bool b = false;
-    double num = 0.0;
-    std::string str;
-    std::vector<Value> arr;
-    std::map<std::string, Value> obj;
-
-    const Value & operator[](const std::string & key) const
-    {
-      if (kind != Object)
-        throw std::runtime_error("JSON: not an object (looking up \"" + key + "\")");
-      auto it = obj.find(key);
-      if (it == obj.end())
-        throw std::runtime_error("JSON: missing key \"" + key + "\"");
-      return it->second;
-    }
-    const Value & operator[](std::size_t i) const
-    {
-      if (kind != Array)
-        throw std::runtime_error("JSON: not an array");
-      if (i >= arr.size())
-        throw std::runtime_error("JSON: index out of range");
-      return arr[i];
-    }
-    bool has(const std::string & key) const
-    {
-      return kind == Object && obj.count(key) != 0;
-    }
-    std::size_t size() const
-    {
-      if (kind != Array)
-        throw std::runtime_error("JSON: not an array");
-      return arr.size();
-    }
-    double number() const
-    {
-      if (kind != Number)
-        throw std::runtime_error("JSON: not a number");
-      return num;
-    }
-    const std::string & string() const
-    {
-      if (kind != String)
-        throw std::runtime_error("JSON: not a string");
-      return str;
-    }
-  };
-
-  class Parser
-  {
-  public:
-    explicit Parser(const std::string & text)
-    : s(text)
-    {
-    }
-
-    Value parse()
-    {
-      Value v = value();
-      ws();
-      if (pos != s.size())
-        fail("trailing characters");
-      return v;
-    }
-
-  private:
-    const std::string & s;
-    std::size_t pos = 0;
-
-    [[noreturn]] void fail(const std::string & what) const
-    {
-      throw std::runtime_error("JSON parse error at byte " + std::to_string(pos) + ": " + what);
-    }
-    void ws()
-    {
-      while (pos < s.size() && std::isspace(static_cast<unsigned char>(s[pos])))
-        ++pos;
-    }
-    char peek()
-    {
-      ws();
-      if (pos >= s.size())
-        fail("unexpected end of input");
-      return s[pos];
-    }
-    void expect(char c)
-    {
-      if (peek() != c)
-        fail(std::string("expected '") + c + "'");
-      ++pos;
-    }
-    bool literal(const char * word)
-    {
-      std::size_t len = std::char_traits<char>::length(word);
-      if (s.compare(pos, len, word) == 0)
-      {
-        pos += len;
-        return true;
-      }
-      return false;
-    }
-
-    Value value()
-    {
-      Value v;
-      char c = peek();
-      if (c == '{')
-      {
-        v.kind = Value::Object;
-        ++pos;
-        if (peek() == '}')
-        {
-          ++pos;
-          return v;
-        }
-        for (;;)
-        {
-          if (peek() != '"')
-            fail("expected a string key");
-          std::string key = string();
-          expect(':');
-          v.obj[key] = value();
-          char d = peek();
-          ++pos;
-          if (d == '}')
-            break;
-          if (d != ',')
-            fail("expected ',' or '}'");
-        }
-      }
-      else if (c == '[')
-      {
-        v.kind = Value::Array;
-        ++pos;
-        if (peek() == ']')
-        {
-          ++pos;
-          return v;
-        }
-        for (;;)
-        {
-          v.arr.push_back(value());
-          char d = peek();
-          ++pos;
-          if (d == ']')
-            break;
-          if (d != ',')
-            fail("expected ',' or ']'");
-        }
-      }
-      else if (c == '"')
-      {
-        v.kind = Value::String;
-        v.str = string();
-      }
-      else if (literal("true"))
-      {
-        v.kind = Value::Bool;
-        v.b = true;
-      }
-      else if (literal("false"))
-      {
-        v.kind = Value::Bool;
-      }
-      else if (literal("null"))
-      {
-        v.kind = Value::Null;
-      }
-      else
-      {
-        const char * begin = s.c_str() + pos;
-        char * end = nullptr;
-        v.kind = Value::Number;
-        v.num = std::strtod(begin, &end);
-        if (end == begin)
-          fail("unexpected character");
-        pos += static_cast<std::size_t>(end - begin);
-      }
-      return v;
-    }
-
-    std::string string()
-    {
-      expect('"');
-      std::string out;
-      while (pos < s.size() && s[pos] != '"')
-      {
-        char c = s[pos++];
-        if (c == '\\')
-        {
-          if (pos >= s.size())
-            fail("unterminated escape");
-          char e = s[pos++];
-          switch (e)
-          {
-          case 'n':
-            out += '\n';
-            break;
-          case 't':
-            out += '\t';
-            break;
-          case 'r':
-            out += '\r';
-            break;
-          case 'b':
-            out += '\b';
-            break;
-          case 'f':
-            out += '\f';
-            break;
-          case 'u': // code point not needed here: keep a placeholder
-            if (pos + 4 > s.size())
-              fail("bad \\u escape");
-            pos += 4;
-            out += '?';
-            break;
-          default: // '"', '\\', '/'
-            out += e;
-          }
-        }
-        else
-          out += c;
-      }
-      if (pos >= s.size())
-        fail("unterminated string");
-      ++pos;
-      return out;
-    }
-  };
-
-  Value parse_file(const std::string & path)
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-      throw std::runtime_error("cannot open " + path);
-    std::stringstream buf;
-    buf << in.rdbuf();
-    std::string text = buf.str();
-    return Parser(text).parse();
-  }
-} // namespace json
-
-// ---------------------------------------------------------------------------------------------
-// Model from a D-H description
-// ---------------------------------------------------------------------------------------------
-
-using pinocchio::Data;
-using pinocchio::Inertia;
-using pinocchio::Model;
-using pinocchio::SE3;
-
-static SE3 rotz(double t)
-{
-  return SE3(Eigen::AngleAxisd(t, Eigen::Vector3d::UnitZ()).toRotationMatrix(), Eigen::Vector3d::Zero());
-}
-static SE3 rotx(double t)
-{
-  return SE3(Eigen::AngleAxisd(t, Eigen::Vector3d::UnitX()).toRotationMatrix(), Eigen::Vector3d::Zero());
-}
-static SE3 transz(double d)
-{
-  return SE3(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0.0, 0.0, d));
-}
-static SE3 transx(double a)
-{
-  return SE3(Eigen::Matrix3d::Identity(), Eigen::Vector3d(a, 0.0, 0.0));
-}
-
-static double num_or(const json::Value & v, const std::string & key, double dflt)
-{
-  return v.has(key) ? v[key].number() : dflt;
-}
-
-static Eigen::Vector3d vec3(const json::Value & v)
-{
-  if (v.size() != 3)
-    throw std::runtime_error("expected a 3-vector");
-  return Eigen::Vector3d(v[0].number(), v[1].number(), v[2].number());
-}
-
-// One Pinocchio joint per D-H joint, as in "How the reference models were built". `hand` gets
-// the hand frame's placement on the last joint, `links` each link frame's placement on its joint
-// (the D-H post transform: the identity in the modified convention).
-static Model build_model(const json::Value & desc, SE3 & hand, std::vector<SE3> & links)
-{
-  Model model;
-  const std::string convention = desc.has("convention") ? desc["convention"].string() : "standard";
-  if (convention != "standard" && convention != "modified")
-    throw std::runtime_error("unknown convention " + convention);
-  const bool modified = convention == "modified";
-  const json::Value & joints = desc["joints"];
-  const std::size_t n = joints.size();
-
-  model.gravity.linear(vec3(desc["gravity"]));
-  model.gravity.angular().setZero();
-
-  std::vector<double> armature(n, 0.0);
-  SE3 post_prev = SE3::Identity();
-  pinocchio::JointIndex parent = 0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const json::Value & j = joints[i];
-    const std::string type = j["type"].string();
-    const bool revolute = type == "revolute";
-    if (!revolute && type != "prismatic")
-      throw std::runtime_error("unknown joint type " + type);
-    const double theta = j["theta"].number(), d = j["d"].number();
-    const double a = j["a"].number(), alpha = j["alpha"].number();
-    if (num_or(j, "spring_stiffness", 0.0) != 0.0)
-      throw std::runtime_error("joint springs are not modelled by Pinocchio");
-
-    SE3 pre, post;
-    if (modified)
-    {
-      pre = rotx(alpha) * transx(a) * rotz(theta) * transz(d);
-      post = SE3::Identity();
-    }
-    else if (revolute)
-    {
-      pre = rotz(theta);
-      post = transz(d) * transx(a) * rotx(alpha);
-    }
-    else
-    {
-      pre = rotz(theta) * transz(d);
-      post = transx(a) * rotx(alpha);
-    }
-
-    const std::string name = "joint" + std::to_string(i + 1);
-    pinocchio::JointIndex jid =
-      revolute ? model.addJoint(parent, pinocchio::JointModelRZ(), post_prev * pre, name)
-               : model.addJoint(parent, pinocchio::JointModelPZ(), post_prev * pre, name);
-
-    const json::Value & in = j["inertia"]; // [Ixx, Iyy, Izz, Ixy, Ixz, Iyz] about the CoM, frame i
-    Eigen::Matrix3d I;
-    I << in[0].number(), in[3].number(), in[4].number(), //
-      in[3].number(), in[1].number(), in[5].number(),     //
-      in[4].number(), in[5].number(), in[2].number();
-    const Inertia link(j["mass"].number(), vec3(j["com"]), I);
-    model.appendBodyToJoint(jid, post.act(link), SE3::Identity());
-
-    armature[i] = num_or(j, "actuator_inertia", 0.0);
-    links.push_back(post);
-    post_prev = post;
-    parent = jid;
-  }
-  for (std::size_t i = 0; i < n; ++i)
-    model.armature[static_cast<Eigen::Index>(i)] = armature[i];
-  hand = post_prev;
-  return model;
-}
-
-// The model Pinocchio's URDF loader built, as tests/data/urdf/make.py records it
-// ("pinocchio_model": per joint its parent, joint type, placement and merged body). Pinocchio's
-// URDF parser is a compiled library (urdfdom), which this header-only build does not link.
-static Model build_model_from_pinocchio(const json::Value & record)
-{
-  Model model;
-  model.gravity.linear(vec3(record["gravity"]));
-  model.gravity.angular().setZero();
-  const json::Value & joints = record["joints"];
-  for (std::size_t i = 0; i < joints.size(); ++i)
-  {
-    const json::Value & j = joints[i];
-    Eigen::Matrix3d R, I;
-    for (Eigen::Index r = 0; r < 3; ++r)
-      for (Eigen::Index c = 0; c < 3; ++c)
-      {
-        R(r, c) = j["rotation"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].number();
-        I(r, c) = j["inertia"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].number();
-      }
-    const SE3 placement(R, vec3(j["translation"]));
-    const auto parent = static_cast<pinocchio::JointIndex>(j["parent"].number());
-    const std::string type = j["type"].string(), name = j["name"].string();
-    pinocchio::JointIndex jid;
-    if (type == "JointModelRX")
-      jid = model.addJoint(parent, pinocchio::JointModelRX(), placement, name);
-    else if (type == "JointModelRY")
-      jid = model.addJoint(parent, pinocchio::JointModelRY(), placement, name);
-    else if (type == "JointModelRZ")
-      jid = model.addJoint(parent, pinocchio::JointModelRZ(), placement, name);
-    else if (type == "JointModelPX")
-      jid = model.addJoint(parent, pinocchio::JointModelPX(), placement, name);
-    else if (type == "JointModelPY")
-      jid = model.addJoint(parent, pinocchio::JointModelPY(), placement, name);
-    else if (type == "JointModelPZ")
-      jid = model.addJoint(parent, pinocchio::JointModelPZ(), placement, name);
-    else if (type == "JointModelRevoluteUnaligned")
-      jid = model.addJoint(parent, pinocchio::JointModelRevoluteUnaligned(vec3(j["axis"])), placement, name);
-    else if (type == "JointModelPrismaticUnaligned")
-      jid = model.addJoint(parent, pinocchio::JointModelPrismaticUnaligned(vec3(j["axis"])), placement, name);
-    else
-      throw std::runtime_error("unknown Pinocchio joint type " + type);
-    model.appendBodyToJoint(jid, Inertia(j["mass"].number(), vec3(j["lever"]), I), SE3::Identity());
-  }
-  return model;
-}
-
-// The hand frame, an operational frame on the last joint.
-static pinocchio::FrameIndex add_hand_frame(Model & model, const SE3 & placement)
-{
-  const auto last = static_cast<pinocchio::JointIndex>(model.njoints - 1);
-  return model.addFrame(pinocchio::Frame("hand", last, placement, pinocchio::OP_FRAME));
-}
-
-// ---------------------------------------------------------------------------------------------
 // Check against the reference data
 // ---------------------------------------------------------------------------------------------
-
-static Eigen::VectorXd vecn(const json::Value & v)
-{
-  Eigen::VectorXd out(static_cast<Eigen::Index>(v.size()));
-  for (std::size_t i = 0; i < v.size(); ++i)
-    out[static_cast<Eigen::Index>(i)] = v[i].number();
-  return out;
-}
-
-static Eigen::MatrixXd matn(const json::Value & v)
-{
-  const std::size_t rows = v.size(), cols = v[0].size();
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-  for (std::size_t r = 0; r < rows; ++r)
-    for (std::size_t c = 0; c < cols; ++c)
-      out(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = v[r][c].number();
-  return out;
-}
 
 static const double TOLERANCE = 1e-9;
 static const std::size_t CHECK_SAMPLE = 5;
@@ -774,34 +344,31 @@ static std::pair<double, double> median_ns_in_turn(
   return {median(ns_f), median(ns_g)};
 }
 
-// The same for three functions: the order within a round of three batches rotates (f g h,
-// g h f, h f g), so that each is first, second and last as often as the others.
-template<typename F, typename G, typename H>
-static std::tuple<double, double, double>
-median_ns_in_turn(std::size_t nsamples, F && f, G && g, H && h, double & checksum)
+// The same for three or four functions: the order within a round of batches rotates (f g h,
+// g h f, h f g), so that each is first, second, ... and last as often as the others. Returns
+// the medians in the functions' order.
+template<typename... Fs>
+static std::array<double, sizeof...(Fs)> median_ns_rotating(std::size_t nsamples, double & checksum, Fs &&... fs)
 {
+  constexpr std::size_t m = sizeof...(Fs);
   std::size_t k = 0;
   double sum = 0.0;
-  batch_ns(f, WARMUP, nsamples, k, sum);
-  batch_ns(g, WARMUP, nsamples, k, sum);
-  batch_ns(h, WARMUP, nsamples, k, sum);
-  std::vector<double> ns[3];
+  (batch_ns(fs, WARMUP, nsamples, k, sum), ...);
+  std::array<std::vector<double>, m> ns;
   for (auto & v : ns)
     v.resize(BATCHES);
   for (std::size_t b = 0; b < static_cast<std::size_t>(BATCHES); ++b)
-    for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t i = 0; i < m; ++i)
     {
-      const std::size_t which = (b + i) % 3;
-      double & t = ns[which][b];
-      if (which == 0)
-        t = batch_ns(f, CALLS, nsamples, k, sum);
-      else if (which == 1)
-        t = batch_ns(g, CALLS, nsamples, k, sum);
-      else
-        t = batch_ns(h, CALLS, nsamples, k, sum);
+      const std::size_t which = (b + i) % m;
+      std::size_t index = 0;
+      ((index++ == which ? static_cast<void>(ns[which][b] = batch_ns(fs, CALLS, nsamples, k, sum)) : static_cast<void>(0)), ...);
     }
   checksum += sum;
-  return {median(ns[0]), median(ns[1]), median(ns[2])};
+  std::array<double, m> medians;
+  for (std::size_t i = 0; i < m; ++i)
+    medians[i] = median(ns[i]);
+  return medians;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -850,13 +417,15 @@ struct Generated
 
 // The C side (bench/c/robot.c, the headers of `dynamics emit --lang c`), loaded at run time: per
 // robot one lookup, dynamics_bench_c_<robot>(function), of the functions bench/ffi has, with
-// their signatures and layouts (not the batches).
+// their signatures and layouts (not the batches). The CasADi peer's library alike
+// (bench/casadi/generate.cpp: casadi_bench_<robot>(function), tau, M, dtau and dqdd alone).
 struct CHeaders
 {
   using RobotLookup = GeneratedFunction (*)(const char *);
   void * lib = nullptr;
+  std::string prefix;
 
-  explicit CHeaders(const std::string & path)
+  CHeaders(const std::string & path, std::string lookup_prefix) : prefix(std::move(lookup_prefix))
   {
     lib = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!lib)
@@ -866,7 +435,7 @@ struct CHeaders
   // The robot's lookup, or null where the library does not have the robot.
   RobotLookup robot(const std::string & name) const
   {
-    return reinterpret_cast<RobotLookup>(dlsym(lib, ("dynamics_bench_c_" + name).c_str()));
+    return reinterpret_cast<RobotLookup>(dlsym(lib, (prefix + name).c_str()));
   }
 };
 
@@ -974,6 +543,64 @@ static void check_generated(
     const Eigen::MatrixXd M = matn(sample["M"]);
     check(robot, "Minv M" + at, matrix() * M, Eigen::MatrixXd::Identity(M.rows(), M.cols()), s);
   }
+}
+
+// The CasADi peer's functions (`get`: null where it has none) against Pinocchio's doubles on
+// every sample: tau (rnea), M (crba, mirrored), dtau (computeRNEADerivatives) and, with
+// `forward`, dqdd (computeABADerivatives, M⁻¹ mirrored), at the robot's tolerance. Returns the
+// names of the functions it has, which are then timed.
+static std::vector<std::string> check_casadi(
+  const std::string & robot,
+  const std::function<GeneratedFunction(const char *)> & get,
+  const json::Value & samples,
+  const Model & model,
+  bool forward)
+{
+  Data data(model);
+  const Eigen::Index n = model.nv;
+  std::vector<double> out(static_cast<std::size_t>(3 * n * n));
+  // The k-th n × n block of the output, row-major.
+  auto block = [&](Eigen::Index k) {
+    Eigen::MatrixXd m(n, n);
+    for (Eigen::Index r = 0; r < n; ++r)
+      for (Eigen::Index c = 0; c < n; ++c)
+        m(r, c) = out[static_cast<std::size_t>(k * n * n + r * n + c)];
+    return m;
+  };
+  std::vector<std::string> have;
+  for (const char * function : {"tau", "M", "dtau", "dqdd"})
+    if (get(function) && (forward || std::string(function) != "dqdd"))
+      have.push_back(function);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const json::Value & sample = samples[s];
+    const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
+    const Eigen::VectorXd tau = vecn(sample["tau"]);
+    for (const std::string & function : have)
+    {
+      const bool dqdd = function == "dqdd";
+      get(function.c_str())(q.data(), v.data(), dqdd ? tau.data() : a.data(), out.data());
+      const std::string what = function + " (CasADi) against Pinocchio";
+      if (function == "tau")
+        check(robot, what, Eigen::Map<const Eigen::VectorXd>(out.data(), n), pinocchio::rnea(model, data, q, v, a), s);
+      else if (function == "M")
+        check(robot, what, block(0), symmetric(pinocchio::crba(model, data, q)), s);
+      else if (function == "dtau")
+      {
+        pinocchio::computeRNEADerivatives(model, data, q, v, a);
+        check(robot, "dtau/dq (CasADi) against Pinocchio", block(0), data.dtau_dq, s);
+        check(robot, "dtau/dqd (CasADi) against Pinocchio", block(1), data.dtau_dv, s);
+      }
+      else
+      {
+        pinocchio::computeABADerivatives(model, data, q, v, tau);
+        check(robot, "dqdd/dq (CasADi) against Pinocchio", block(0), data.ddq_dq, s);
+        check(robot, "dqdd/dqd (CasADi) against Pinocchio", block(1), data.ddq_dv, s);
+        check(robot, "dqdd/dtau (CasADi) against Pinocchio", block(2), symmetric(data.Minv), s);
+      }
+    }
+  }
+  return have;
 }
 
 // The batch rows, per state: a horizon of `gen.horizon()` states (the samples in turn) in one
@@ -1161,6 +788,7 @@ int main(int argc, char ** argv)
   int first = 1;
   std::unique_ptr<Generated> generated;
   std::unique_ptr<CHeaders> c_headers;
+  std::unique_ptr<CHeaders> casadi_peer;
   try
   {
     if (argc > first + 1 && std::string(argv[first]) == "--generated")
@@ -1172,7 +800,14 @@ int main(int argc, char ** argv)
     {
       if (!generated)
         throw std::runtime_error("--c comes with --generated, after it");
-      c_headers = std::make_unique<CHeaders>(argv[first + 1]);
+      c_headers = std::make_unique<CHeaders>(argv[first + 1], "dynamics_bench_c_");
+      first += 2;
+    }
+    if (argc > first + 1 && std::string(argv[first]) == "--casadi")
+    {
+      if (!generated)
+        throw std::runtime_error("--casadi comes with --generated, after it (and after --c)");
+      casadi_peer = std::make_unique<CHeaders>(argv[first + 1], "casadi_bench_");
       first += 2;
     }
   }
@@ -1183,7 +818,7 @@ int main(int argc, char ** argv)
   }
   if (argc <= first)
   {
-    std::fprintf(stderr, "usage: %s [--generated LIB.so [--c LIB.so]] DATA.json [DATA.json ...]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--generated LIB.so [--c LIB.so [--casadi LIB.so]]] DATA.json [DATA.json ...]\n", argv[0]);
     return 2;
   }
   double checksum = 0.0;
@@ -1253,6 +888,12 @@ int main(int argc, char ** argv)
         throw std::runtime_error("the C headers have no " + std::string(function) + " for " + robot);
       return f;
     };
+    // The CasADi peer of the robot, where its library has it (its column follows the C's), and
+    // the functions of it that are checked, then timed.
+    const CHeaders::RobotLookup casadi_robot = with_generated && casadi_peer ? casadi_peer->robot(robot) : nullptr;
+    if (casadi_peer && with_generated && !casadi_robot)
+      std::fprintf(stderr, "%s: not in the CasADi library: no CasADi column\n", robot.c_str());
+    std::vector<std::string> casadi_functions;
     bool with_simplified = false;
     if (with_generated)
     {
@@ -1264,6 +905,8 @@ int main(int argc, char ** argv)
         with_simplified = check_simplified(robot, *generated, model);
         if (c_robot)
           check_generated(robot, c_get, n, b, " (C)", samples, model, hand, forward, links, tree);
+        if (casadi_robot)
+          casadi_functions = check_casadi(robot, casadi_robot, samples, model, forward);
       }
       catch (const std::exception & e)
       {
@@ -1301,10 +944,24 @@ int main(int argc, char ** argv)
           f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
           return out[0];
         };
-        if (!c_robot)
+        const bool peer =
+          std::find(casadi_functions.begin(), casadi_functions.end(), function) != casadi_functions.end();
+        // The CasADi peer, through the same kind of call.
+        const GeneratedFunction fp = peer ? casadi_robot(function) : nullptr;
+        auto casadi = [&](std::size_t k) {
+          fp(qs[k].data(), vs[k].data(), third[k].data(), out.data());
+          return out[0];
+        };
+        if (!c_robot && !peer)
         {
           const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
           std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+        }
+        else if (!c_robot)
+        {
+          // A robot without C headers (a tree): `-` in the C's column.
+          const auto [pin_ns, gen_ns, casadi_ns] = median_ns_rotating(ns, checksum, pin, gen, casadi);
+          std::printf("%s\t%s\t%.1f\t%.1f\t-\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, casadi_ns);
         }
         else
         {
@@ -1314,8 +971,17 @@ int main(int argc, char ** argv)
             fc(qs[k].data(), vs[k].data(), third[k].data(), out.data());
             return out[0];
           };
-          const auto [pin_ns, gen_ns, c_ns] = median_ns_in_turn(ns, pin, gen, c, checksum);
-          std::printf("%s\t%s\t%.1f\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, c_ns);
+          if (!peer)
+          {
+            const auto [pin_ns, gen_ns, c_ns] = median_ns_rotating(ns, checksum, pin, gen, c);
+            std::printf("%s\t%s\t%.1f\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, c_ns);
+          }
+          else
+          {
+            const auto [pin_ns, gen_ns, c_ns, casadi_ns] = median_ns_rotating(ns, checksum, pin, gen, c, casadi);
+            std::printf(
+              "%s\t%s\t%.1f\t%.1f\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, c_ns, casadi_ns);
+          }
         }
       }
       std::fflush(stdout);
