@@ -10,7 +10,7 @@ use super::parts::OpCount;
 use super::plan::Place;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
-use crate::trace::Shape;
+use crate::trace::{Shape, Solved};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
@@ -84,7 +84,21 @@ impl Emitter<'_> {
         self.lanes_due(&mut lanes, None, &mut statements);
         let result = match shape {
             Shape::Scalar(id) => self.expr(*id, Place::Top),
-            Shape::Lanes { stack, lanes } => self.lane_stack(stack, lanes),
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: None,
+            } => self.lane_stack(stack, lanes),
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: Some(Solved { pivots, vector }),
+            } => {
+                let items: Vec<TokenStream> =
+                    vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                let matrices = self.lane_stack(stack, lanes);
+                self.checked(pivots, &quote!(([#(#items),*], #matrices)))
+            }
             Shape::Vector(v) => {
                 let items: Vec<TokenStream> =
                     v.iter().map(|&id| self.expr(id, Place::Top)).collect();
