@@ -82,7 +82,21 @@ impl Emitter<'_> {
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
-        let result = match shape {
+        let result = self.result(shape);
+        Body {
+            tokens: quote!(#(#statements)* #result),
+            ops: OpCount {
+                lanes: lane_operations(shape),
+                ..count(self.eq, &outputs)
+            },
+            zeros: None,
+            lanes: matches!(shape, Shape::Lanes { .. }),
+        }
+    }
+
+    /// The value a function of `shape` returns, its elements bound before.
+    fn result(&mut self, shape: &Shape) -> TokenStream {
+        match shape {
             Shape::Scalar(id) => self.expr(*id, Place::Top),
             Shape::Lanes {
                 stack,
@@ -125,15 +139,6 @@ impl Emitter<'_> {
                 let matrices = self.stack(stack);
                 self.checked(pivots, &quote!(([#(#items),*], #matrices)))
             }
-        };
-        Body {
-            tokens: quote!(#(#statements)* #result),
-            ops: OpCount {
-                lanes: lane_operations(shape),
-                ..count(self.eq, &outputs)
-            },
-            zeros: None,
-            lanes: matches!(shape, Shape::Lanes { .. }),
         }
     }
 

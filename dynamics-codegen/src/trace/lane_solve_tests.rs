@@ -29,10 +29,11 @@ fn gauss(a: &[Vec<f64>], b: &[f64]) -> Vec<f64> {
             .max_by(|&x, &y| m[x][j].abs().total_cmp(&m[y][j].abs()))
             .expect("a row");
         m.swap(j, p);
-        for i in j + 1..n {
-            let f = m[i][j] / m[j][j];
-            for k in j..=n {
-                m[i][k] -= f * m[j][k];
+        let pivot_row = m[j].clone();
+        for row in &mut m[j + 1..] {
+            let f = row[j] / pivot_row[j];
+            for (x, p) in row[j..].iter_mut().zip(&pivot_row[j..]) {
+                *x -= f * p;
             }
         }
     }

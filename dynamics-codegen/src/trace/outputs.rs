@@ -149,6 +149,26 @@ impl Shape<'_> {
     }
 }
 
+/// `∂q̈` with `q̈` through the LDLᵀ of M: in lanes where planned.
+fn forward_derivatives(eq: &Equations) -> Shape<'_> {
+    let pivots = &eq.forward.factors.pivots;
+    match &eq.derivatives {
+        Some(d) if d.forward_lanes.iter().any(Option::is_some) => Shape::Lanes {
+            stack: &d.forward,
+            lanes: &d.forward_lanes,
+            solved: Some(Solved {
+                pivots,
+                vector: &d.qdd,
+            }),
+        },
+        d => Shape::SolvedStack {
+            pivots,
+            vector: d.as_ref().map_or(&[], |d| &d.qdd),
+            stack: d.as_ref().map_or(&[], |d| &d.forward),
+        },
+    }
+}
+
 /// The tips of a robot whose tips were not traced.
 static NO_TIPS: TipEquations = TipEquations::NONE;
 
@@ -229,24 +249,7 @@ impl Method {
                     None => Shape::Vector(&[]),
                 }
             }
-            Method::ForwardDynamicsDerivatives => {
-                let pivots = &eq.forward.factors.pivots;
-                match &eq.derivatives {
-                    Some(d) if d.forward_lanes.iter().any(Option::is_some) => Shape::Lanes {
-                        stack: &d.forward,
-                        lanes: &d.forward_lanes,
-                        solved: Some(Solved {
-                            pivots,
-                            vector: &d.qdd,
-                        }),
-                    },
-                    d => Shape::SolvedStack {
-                        pivots,
-                        vector: d.as_ref().map_or(&[], |d| &d.qdd),
-                        stack: d.as_ref().map_or(&[], |d| &d.forward),
-                    },
-                }
-            }
+            Method::ForwardDynamicsDerivatives => forward_derivatives(eq),
             // The tips' (`TipEquations::shape` tells them apart).
             tips => eq.tips.as_ref().unwrap_or(&NO_TIPS).shape(tips),
         }
