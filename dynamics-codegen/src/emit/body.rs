@@ -10,7 +10,7 @@ use super::parts::OpCount;
 use super::plan::Place;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
-use crate::trace::Shape;
+use crate::trace::{Shape, Solved};
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
@@ -82,9 +82,37 @@ impl Emitter<'_> {
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
-        let result = match shape {
+        let result = self.result(shape);
+        Body {
+            tokens: quote!(#(#statements)* #result),
+            ops: OpCount {
+                lanes: lane_operations(shape),
+                ..count(self.eq, &outputs)
+            },
+            zeros: None,
+            lanes: matches!(shape, Shape::Lanes { .. }),
+        }
+    }
+
+    /// The value a function of `shape` returns, its elements bound before.
+    fn result(&mut self, shape: &Shape) -> TokenStream {
+        match shape {
             Shape::Scalar(id) => self.expr(*id, Place::Top),
-            Shape::Lanes { stack, lanes } => self.lane_stack(stack, lanes),
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: None,
+            } => self.lane_stack(stack, lanes),
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: Some(Solved { pivots, vector }),
+            } => {
+                let items: Vec<TokenStream> =
+                    vector.iter().map(|&id| self.expr(id, Place::Top)).collect();
+                let matrices = self.lane_stack(stack, lanes);
+                self.checked(pivots, &quote!(([#(#items),*], #matrices)))
+            }
             Shape::Vector(v) => {
                 let items: Vec<TokenStream> =
                     v.iter().map(|&id| self.expr(id, Place::Top)).collect();
@@ -111,15 +139,6 @@ impl Emitter<'_> {
                 let matrices = self.stack(stack);
                 self.checked(pivots, &quote!(([#(#items),*], #matrices)))
             }
-        };
-        Body {
-            tokens: quote!(#(#statements)* #result),
-            ops: OpCount {
-                lanes: lane_operations(shape),
-                ..count(self.eq, &outputs)
-            },
-            zeros: None,
-            lanes: matches!(shape, Shape::Lanes { .. }),
         }
     }
 

@@ -15,7 +15,7 @@ use crate::emit::lanes::Queue;
 use crate::emit::output_names;
 use crate::method::Method;
 use crate::symbolic::{Node, NodeId, Var};
-use crate::trace::{Equations, Shape};
+use crate::trace::{Equations, Shape, Solved};
 
 /// A written body, and which inputs it reads.
 pub(super) struct Body {
@@ -120,9 +120,11 @@ impl<'a> Writer<'a> {
             self.lanes_due(&mut queue, None, &mut lines);
             lines.extend(stores.iter().map(|(to, id)| self.store(to, *id)));
             if let Shape::Lanes { lanes: plans, .. } = shape {
+                // The matrices' array, after the solution's where there is one.
+                let matrices = arrays.last().map_or("", String::as_str);
                 for (k, plan) in plans.iter().enumerate() {
                     let Some(plan) = plan else { continue };
-                    lines.extend(self.lane_rows(&format!("{}[{k}]", arrays[0]), k, plan));
+                    lines.extend(self.lane_rows(&format!("{matrices}[{k}]"), k, plan));
                 }
             }
         }
@@ -378,15 +380,21 @@ impl<'a> Writer<'a> {
             Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => vec![matrix(m, "")],
             Shape::Stack(s) => vec![stack(s)],
             // The matrices without a plan: the others are read off their lanes.
-            Shape::Lanes { stack: s, lanes } => {
+            Shape::Lanes {
+                stack: s,
+                lanes,
+                solved,
+            } => {
                 let unplanned = s
                     .iter()
                     .zip(lanes)
                     .enumerate()
                     .filter(|(_, (_, p))| p.is_none());
-                vec![unplanned
+                let matrices = unplanned
                     .flat_map(|(k, (m, _))| matrix(m, &format!("[{k}]")))
-                    .collect()]
+                    .collect();
+                let solution = solved.map(|s| vector(s.vector));
+                solution.into_iter().chain([matrices]).collect()
             }
             Shape::SolvedStack {
                 vector: v,
@@ -451,7 +459,11 @@ fn pivots<'s>(shape: &Shape<'s>) -> &'s [NodeId] {
     match *shape {
         Shape::SolvedVector { pivots, .. }
         | Shape::SolvedMatrix { pivots, .. }
-        | Shape::SolvedStack { pivots, .. } => pivots,
+        | Shape::SolvedStack { pivots, .. }
+        | Shape::Lanes {
+            solved: Some(Solved { pivots, .. }),
+            ..
+        } => pivots,
         _ => &[],
     }
 }

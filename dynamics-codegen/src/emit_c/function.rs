@@ -5,7 +5,7 @@
 use super::body::{Reads, Writer};
 use super::expr::Precision;
 use crate::method::{Argument, Method};
-use crate::trace::{Equations, Shape};
+use crate::trace::{Equations, Shape, Solved};
 
 /// What a C function returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -116,14 +116,24 @@ fn outputs(method: Method, shape: &Shape) -> Option<(Vec<Array>, Returns)> {
         Shape::Scalar(_) => (vec![], Returns::Value),
         Shape::Vector(v) => (vec![(name, vec![v.len()])], Returns::Nothing),
         Shape::Matrix(m) => (vec![(name, dims_of(m))], Returns::Nothing),
-        Shape::Stack(s) | Shape::Lanes { stack: s, .. } => {
+        Shape::Stack(s)
+        | Shape::Lanes {
+            stack: s,
+            solved: None,
+            ..
+        } => {
             let mut dims = vec![s.len()];
             dims.extend(s.first().map_or(vec![0, 0], |m| dims_of(m)));
             (vec![(name, dims)], Returns::Nothing)
         }
         Shape::SolvedVector { vector, .. } => (vec![(name, vec![vector.len()])], Returns::Status),
         Shape::SolvedMatrix { matrix, .. } => (vec![(name, dims_of(matrix))], Returns::Status),
-        Shape::SolvedStack { vector, stack, .. } => {
+        Shape::SolvedStack { vector, stack, .. }
+        | Shape::Lanes {
+            stack,
+            solved: Some(Solved { vector, .. }),
+            ..
+        } => {
             let mut dims = vec![stack.len()];
             dims.extend(stack.first().map_or(vec![0, 0], |m| dims_of(m)));
             // The vector of a solved stack is the solution itself (`q̈` beside its

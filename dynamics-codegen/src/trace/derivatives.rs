@@ -10,10 +10,14 @@
 //!   at once ([`Graph::tangents`]), instead of the two above;
 //! * `∂q̈/∂x = −M⁻¹ ∂τ/∂x` at the forward dynamics' `q̈` (Carpentier and Mansard, RSS 2018):
 //!   `∂τ/∂q` with each `q̈_i` replaced by that `q̈_i`, solved column by column with the LDLᵀ of
-//!   M that the forward dynamics factored; `∂q̈/∂τ = M⁻¹`.
+//!   M that the forward dynamics factored; `∂q̈/∂τ = M⁻¹`;
+//! * where the build computes tangents in lanes, `∂q̈/∂q` and `∂q̈/∂q̇` from the same plan as
+//!   `∂τ`'s, its factors at that `q̈`, and the solve on the lanes, a row of n directions a step
+//!   (`lane_solve`), and `M⁻¹` the same solve of the identity's rows.
 
 use super::cost::{cheapest, flat};
 use super::expr::Expr;
+use super::lane_solve;
 use super::tracer::joint_index;
 use super::Equations;
 use crate::method::Family;
@@ -31,6 +35,8 @@ pub struct DerivativeEquations {
     pub qdd: Vec<NodeId>,
     /// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]`, n × n each.
     pub forward: Vec<Vec<Vec<NodeId>>>,
+    /// Per matrix of `forward`, the plan that computes it in lanes instead, where taken.
+    pub forward_lanes: Vec<Option<Tangents>>,
 }
 
 impl Equations {
@@ -42,11 +48,13 @@ impl Equations {
         let forward = forward_derivatives(self, &graph, &inverse);
         self.graph = graph.into_inner();
         let inverse_lanes = inverse_lanes(self);
+        let forward_lanes = forward_lanes(self, &inverse_lanes);
         self.derivatives = Some(DerivativeEquations {
             inverse,
             inverse_lanes,
             qdd: self.forward.qdd.clone(),
             forward,
+            forward_lanes,
         });
         self.families = self.families.with(Family::Derivatives);
     }
@@ -94,6 +102,22 @@ fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
     [Wrt::Position(0), Wrt::Velocity(0)]
         .map(|wrt| eq.graph.tangents(&eq.tau, wrt, n))
         .into()
+}
+
+/// The plans of `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` in lanes: `∂τ`'s at the forward dynamics' `q̈`, then
+/// the solve with M's factors (`lane_solve`), `None` where `∂τ`'s is; `M⁻¹` solved for the
+/// identity's rows.
+fn forward_lanes(eq: &mut Equations, inverse: &[Option<Tangents>]) -> Vec<Option<Tangents>> {
+    let (graph, qdd, factors) = (&mut eq.graph, &eq.forward.qdd, &eq.forward.factors);
+    let mut planned: Vec<Option<Tangents>> = inverse
+        .iter()
+        .map(|plan| {
+            let at_qdd = lane_solve::at_qdd(plan.as_ref()?, graph, qdd);
+            Some(lane_solve::solve_negated(at_qdd, factors, graph))
+        })
+        .collect();
+    planned.push(Some(lane_solve::inverse(factors, graph)));
+    planned
 }
 
 /// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` at the forward dynamics' `q̈`.

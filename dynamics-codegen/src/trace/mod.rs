@@ -34,6 +34,9 @@ mod friction;
 mod gravity;
 mod joints;
 mod kinematics;
+mod lane_solve;
+#[cfg(test)]
+mod lane_solve_tests;
 mod mass;
 mod mimic;
 #[cfg(test)]
@@ -60,7 +63,7 @@ pub use expr::Expr;
 pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
-pub use outputs::Shape;
+pub use outputs::{Shape, Solved};
 pub use regressor::RegressorEquations;
 pub use simplified::{Elements, Fallback, PrunedElement, SimplifiedEquations, SimplifiedOutput};
 use std::cell::RefCell;

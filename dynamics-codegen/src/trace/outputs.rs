@@ -24,6 +24,9 @@ pub enum Shape<'a> {
         stack: &'a [Vec<Vec<NodeId>>],
         /// Per matrix, the plan computing it in lanes, if any.
         lanes: &'a [Option<Tangents>],
+        /// For matrices through the LDLᵀ of M (`∂q̈`), its pivots and the vector returned
+        /// beside them, `Some((vector, [matrices]))` where every pivot is positive.
+        solved: Option<Solved<'a>>,
     },
     /// A vector through the LDLᵀ of M, `Some` where every pivot is positive.
     SolvedVector {
@@ -51,24 +54,59 @@ pub enum Shape<'a> {
     },
 }
 
+/// The part of a [`Shape::Lanes`] through the LDLᵀ of M, as in [`Shape::SolvedStack`].
+#[derive(Clone, Copy)]
+pub struct Solved<'a> {
+    /// The pivots.
+    pub pivots: &'a [NodeId],
+    /// The vector.
+    pub vector: &'a [NodeId],
+}
+
+impl Solved<'_> {
+    /// The pivots, then the vector.
+    fn nodes(&self) -> impl Iterator<Item = NodeId> + '_ {
+        self.pivots.iter().chain(self.vector).copied()
+    }
+}
+
 impl Shape<'_> {
     /// The nodes a function computing it in lanes reads: the plans' factors and the matrices
     /// without a plan (the other shapes' elements).
     pub fn lane_outputs(&self) -> Vec<NodeId> {
-        let Shape::Lanes { stack, lanes, .. } = self else {
+        let Shape::Lanes {
+            stack,
+            lanes,
+            solved,
+        } = self
+        else {
             return self.outputs();
         };
         let factors = lanes.iter().flatten().flat_map(Tangents::factors);
         let unplanned = stack.iter().zip(*lanes).filter(|(_, plan)| plan.is_none());
         let nodes = unplanned.flat_map(|(m, _)| m.iter().flatten().copied());
-        nodes.chain(factors).collect()
+        let solved = solved.iter().flat_map(Solved::nodes);
+        solved.chain(nodes).chain(factors).collect()
     }
 
     /// The same result computed from its nodes alone (itself for the other shapes).
     #[must_use]
     pub fn scalar(&self) -> Self {
         match *self {
-            Shape::Lanes { stack, .. } => Shape::Stack(stack),
+            Shape::Lanes {
+                stack,
+                solved: None,
+                ..
+            } => Shape::Stack(stack),
+            Shape::Lanes {
+                stack,
+                solved: Some(Solved { pivots, vector }),
+                ..
+            } => Shape::SolvedStack {
+                pivots,
+                vector,
+                stack,
+            },
             shape => shape,
         }
     }
@@ -81,10 +119,15 @@ impl Shape<'_> {
             Shape::Matrix(m) => m.iter().flatten().copied().collect(),
             Shape::Stack(s) => s.iter().flatten().flatten().copied().collect(),
             // Both routes' nodes: the code chooses by the scalar type (`Real::TANGENTS_IN_LANES`).
-            Shape::Lanes { stack, lanes, .. } => {
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved,
+            } => {
                 let factors = lanes.iter().flatten().flat_map(Tangents::factors);
                 let nodes = stack.iter().flatten().flatten().copied();
-                nodes.chain(factors).collect()
+                let solved = solved.iter().flat_map(Solved::nodes);
+                solved.chain(nodes).chain(factors).collect()
             }
             Shape::SolvedVector { pivots, vector } => {
                 pivots.iter().chain(*vector).copied().collect()
@@ -103,6 +146,26 @@ impl Shape<'_> {
                 pivots.iter().chain(values).copied().collect()
             }
         }
+    }
+}
+
+/// `∂q̈` with `q̈` through the LDLᵀ of M: in lanes where planned.
+fn forward_derivatives(eq: &Equations) -> Shape<'_> {
+    let pivots = &eq.forward.factors.pivots;
+    match &eq.derivatives {
+        Some(d) if d.forward_lanes.iter().any(Option::is_some) => Shape::Lanes {
+            stack: &d.forward,
+            lanes: &d.forward_lanes,
+            solved: Some(Solved {
+                pivots,
+                vector: &d.qdd,
+            }),
+        },
+        d => Shape::SolvedStack {
+            pivots,
+            vector: d.as_ref().map_or(&[], |d| &d.qdd),
+            stack: d.as_ref().map_or(&[], |d| &d.forward),
+        },
     }
 }
 
@@ -147,6 +210,7 @@ impl Method {
                 Some(d) if d.inverse_lanes.iter().any(Option::is_some) => Shape::Lanes {
                     stack: &d.inverse,
                     lanes: &d.inverse_lanes,
+                    solved: None,
                 },
                 d => Shape::Stack(d.as_ref().map_or(&[], |d| &d.inverse)),
             },
@@ -171,11 +235,7 @@ impl Method {
                     None => Shape::Vector(&[]),
                 }
             }
-            Method::ForwardDynamicsDerivatives => Shape::SolvedStack {
-                pivots: &eq.forward.factors.pivots,
-                vector: eq.derivatives.as_ref().map_or(&[], |d| &d.qdd),
-                stack: eq.derivatives.as_ref().map_or(&[], |d| &d.forward),
-            },
+            Method::ForwardDynamicsDerivatives => forward_derivatives(eq),
             Method::TipPoses
             | Method::TipJacobiansInBase
             | Method::TipJacobiansInTip

@@ -135,9 +135,19 @@ fn solves_fail_exactly_for_the_failing_states() {
     });
     let mut d = vec![Panda.forward_dynamics_derivatives(&q[0], &qd[0], &tau[0]); len];
     Panda.forward_dynamics_derivatives_batch(&q[..], &qd[..], &tau[..], &mut d[..]);
-    same_solved("forward_dynamics_derivatives", &d, |k| {
-        Panda.forward_dynamics_derivatives(&q[k], &qd[k], &tau[k])
-    });
+    let single = |k: usize| Panda.forward_dynamics_derivatives(&q[k], &qd[k], &tau[k]);
+    if routes_differ::<F64x4, 4>() {
+        // The states in lanes solve column by column, one state on its tangents' lanes.
+        for (k, d) in d.iter().enumerate() {
+            match (d, single(k)) {
+                (Ok(a), Ok(b)) => close_values(&format!("state {k}"), a, &b, 1e-9),
+                (Err(_), Err(_)) => {}
+                (a, b) => panic!("state {k}: {:?} against {:?}", a.is_ok(), b.is_ok()),
+            }
+        }
+    } else {
+        same_solved("forward_dynamics_derivatives", &d, single);
+    }
 }
 
 /// One slice per joint.

@@ -333,10 +333,21 @@ pub fn parts(shape: &Shape) -> Vec<Vec<NodeId>> {
         Shape::Scalar(id) => vec![vec![id]],
         Shape::Vector(v) | Shape::SolvedVector { vector: v, .. } => vec![v.to_vec()],
         Shape::Matrix(m) | Shape::SolvedMatrix { matrix: m, .. } => vec![flat(m)],
-        Shape::Stack(s) | Shape::Lanes { stack: s, .. } => vec![stack(s)],
+        Shape::Stack(s)
+        | Shape::Lanes {
+            stack: s,
+            solved: None,
+            ..
+        } => vec![stack(s)],
         Shape::SolvedStack {
             vector, stack: s, ..
         } => vec![vector.to_vec(), stack(s)],
+        // `∂q̈` in lanes: `q̈` beside the matrices, as a solved stack.
+        Shape::Lanes {
+            stack: s,
+            solved: Some(solved),
+            ..
+        } => vec![solved.vector.to_vec(), stack(s)],
     }
 }
 
