@@ -7,9 +7,9 @@
 //! algorithm comes out already customized to its robot: every zero, one and exact constant of
 //! the D-H table folded away.
 
+use super::hasher::FxHashMap;
 use super::node::{Node, NodeId, Var};
 use super::number::Number;
-use super::hasher::FxHashMap;
 use std::ops::{Add, Mul, Neg};
 
 /// Counters of the graph's construction, for tests and benchmarks.
