@@ -5,45 +5,31 @@
 //! `Y_B π_B` is τ again.
 
 use super::base_parameters::JointColumns;
-use crate::algo::tree_tests::{at, robot, P, R};
-use crate::model::{Friction, Mimic, Robot, Value};
+use super::mimic_tests::follow;
+use crate::algo::tree_tests::{at, robot, R};
+use crate::model::{Friction, Robot, Value};
 use crate::pipeline::{State, Values};
 use crate::trace::{derive, Equations};
 
-/// Joint `m` follows joint `j` with multiplier `k` and offset `o`; friction and actuator
-/// inertia on it, so that its own columns show.
-fn follow(robot: &mut Robot, m: usize, j: usize, k: f64, o: f64) {
+/// Friction and actuator inertia on every mimic joint, so that its own columns show.
+fn with_drives(mut robot: Robot) -> Robot {
     let v = Value::from_f64;
-    let joint = &mut robot.joints[m];
-    joint.mimic = Some(Mimic {
-        joint: j,
-        multiplier: v(k),
-        offset: v(o),
-    });
-    joint.link.friction = Some(Friction {
-        viscous: v(0.4),
-        coulomb: v(0.2),
-        offset: v(0.05),
-        smoothing: Some(v(0.5)),
-    });
-    joint.link.actuator_inertia = v(0.02);
+    for joint in robot.joints.iter_mut().filter(|j| j.mimic.is_some()) {
+        joint.link.friction = Some(Friction {
+            viscous: v(0.4),
+            coulomb: v(0.2),
+            offset: v(0.05),
+            smoothing: Some(v(0.5)),
+        });
+        joint.link.actuator_inertia = v(0.02);
+    }
+    robot
 }
 
 /// The tree of `mimic_tests` (a revolute joint following its sibling with k = −0.7, o = 0.3,
-/// both with θ offsets; a prismatic one following its cousin with k = 1, o = 0).
+/// both with θ offsets; a prismatic one following its cousin with k = 1, o = 0), with drives.
 fn tree() -> Robot {
-    let specs = [
-        at(None, R, 0.0, 0.0, 0.0),
-        at(Some(0), R, 0.3, 0.1, 1.0),
-        at(Some(0), R, -0.2, 0.05, 2.0),
-        at(Some(1), P, 0.0, 0.0, 3.0),
-        at(Some(2), R, 0.1, 0.0, 4.0),
-        at(Some(2), P, 0.0, 0.2, 5.0),
-    ];
-    let mut tree = robot(&specs, true);
-    follow(&mut tree, 2, 1, -0.7, 0.3);
-    follow(&mut tree, 5, 3, 1.0, 0.0);
-    tree
+    with_drives(super::mimic_tests::tree())
 }
 
 /// A serial arm whose third joint follows the second, `q3 = −0.7 q2 + 0.3`.
@@ -56,7 +42,7 @@ fn arm() -> Robot {
     ];
     let mut arm = robot(&specs, false);
     follow(&mut arm, 2, 1, -0.7, 0.3);
-    arm
+    with_drives(arm)
 }
 
 /// Deterministic values in (−1, 1).
@@ -287,29 +273,9 @@ fn the_base_parameters_of_robots_with_mimics_are_the_reduced_rank() {
     base_parameters_have_the_rank(&arm());
 }
 
-/// The Panda of its URDF, whose second finger follows the first (`k = 1`, `o = 0`): 9 links,
-/// 8 coordinates.
-fn panda() -> Robot {
-    use crate::pipeline::{load, Source};
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
-    let text = std::fs::read_to_string(path).expect("readable");
-    let source = Source {
-        path: "panda.urdf",
-        text: Some(&text),
-        chain: crate::front::Chain {
-            base: Some("panda_link0"),
-            ..Default::default()
-        },
-        ..Source::default()
-    };
-    let panda = load(&source).expect("loads").robot;
-    assert_eq!((panda.dof(), panda.coordinates().len()), (9, 8));
-    panda
-}
-
 #[test]
 fn the_panda_with_its_mimic_finger() {
-    let panda = panda();
+    let panda = super::mimic_tests::panda().robot;
     regressor_is_the_projected_one(&panda);
     let b = base_parameters_have_the_rank(&panda);
     // The free Panda's fingers move apart: the coupled one identifies fewer combinations.

@@ -16,7 +16,7 @@ const QDD: [f64; 4] = [1.1, 0.2, -0.7, 0.4];
 const TAU: [f64; 4] = [2.0, -1.5, 0.8, 0.3];
 
 /// Joint `m` follows joint `j` with multiplier `k` and offset `o`.
-fn follow(robot: &mut Robot, m: usize, j: usize, k: f64, o: f64) {
+pub(super) fn follow(robot: &mut Robot, m: usize, j: usize, k: f64, o: f64) {
     robot.joints[m].mimic = Some(Mimic {
         joint: j,
         multiplier: Value::from_f64(k),
@@ -240,8 +240,7 @@ fn derivatives(eq: &Equations, full: &Equations, at: &Values, at_full: &Values, 
 /// A tree: a revolute joint following its sibling with k = −0.7, o = 0.3 (and both with θ
 /// offsets, so its sine and cosine are of `k q + o + θ`), a prismatic one following its cousin
 /// with k = 1, o = 0.
-#[test]
-fn a_tree_with_mimic_joints_is_its_free_robot_projected() {
+pub(super) fn tree() -> Robot {
     let specs = [
         at(None, R, 0.0, 0.0, 0.0),
         at(Some(0), R, 0.3, 0.1, 1.0),
@@ -253,7 +252,12 @@ fn a_tree_with_mimic_joints_is_its_free_robot_projected() {
     let mut tree = robot(&specs, true);
     follow(&mut tree, 2, 1, -0.7, 0.3);
     follow(&mut tree, 5, 3, 1.0, 0.0);
-    check(&with_drives(tree));
+    tree
+}
+
+#[test]
+fn a_tree_with_mimic_joints_is_its_free_robot_projected() {
+    check(&with_drives(tree()));
 }
 
 /// A serial chain whose last joint follows the first with k = −1, o = 0 and no θ offsets:
@@ -281,13 +285,10 @@ fn a_chain_whose_last_joint_mirrors_the_first() {
     assert_eq!(sines.count(), 0, "a sine of a joint angle traced as a node");
 }
 
-/// The Panda with its URDF's mimic finger through every other route out of the door: the C
-/// header, the Rust module and the readable equations have 8 coordinates and no panic; the
-/// regressor is refused by name.
-#[test]
-fn the_panda_with_a_mimic_finger_out_of_the_door() {
-    use crate::inspect::Format;
-    use crate::pipeline::{load, Readable, Source};
+/// The Panda of its URDF, whose second finger follows the first (`k = 1`, `o = 0`): 9 joints,
+/// 8 coordinates.
+pub(super) fn panda() -> crate::pipeline::Loaded {
+    use crate::pipeline::{load, Source};
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
     let text = std::fs::read_to_string(path).expect("readable");
     let source = Source {
@@ -301,6 +302,17 @@ fn the_panda_with_a_mimic_finger_out_of_the_door() {
     };
     let panda = load(&source).expect("loads");
     assert_eq!((panda.robot.dof(), panda.robot.coordinates().len()), (9, 8));
+    panda
+}
+
+/// The Panda with its URDF's mimic finger through every other route out of the door: the C
+/// header, the Rust module and the readable equations have 8 coordinates and no panic; the
+/// regressor is refused by name.
+#[test]
+fn the_panda_with_a_mimic_finger_out_of_the_door() {
+    use crate::inspect::Format;
+    use crate::pipeline::Readable;
+    let panda = panda();
     let families = FamilySet::default().with(Family::Derivatives);
     let header = panda.c_header(families, None, None).expect("a header");
     assert_eq!(header.dof, 8);
