@@ -89,17 +89,29 @@ fn compile(cc: &str, flags: &[&str], extra: &[&str], optimize: bool, files: (&Pa
     );
 }
 
+/// How many ways a header is built.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Reach {
+    /// The first compiler found, with `<math.h>`'s sines and cosines (and the tangents in
+    /// lanes, where the header has them): for a large header.
+    First,
+    /// Every compiler, each with `<math.h>`'s (and the lanes): the header's own and default
+    /// sines and cosines are the same text in every header, built every way on smaller ones.
+    Compilers,
+    /// Every compiler, every build.
+    EveryWay,
+}
+
 /// Compiles the header and driver of `robot` with every compiler (with `<math.h>`'s sines and
 /// cosines, the default, and the header's own, linked without the math library where nothing
 /// else needs it) and runs each program.
 pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
-    compile_and_run_builds(robot, states, true)
+    compile_and_run_builds(robot, states, Reach::EveryWay)
 }
 
-/// [`compile_and_run`], with every build or only the first compiler's with `<math.h>` (for a
-/// large header, whose builds take long).
-pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> Vec<Run> {
-    compile_and_run_builds_at(robot, states, every, true)
+/// [`compile_and_run`], built as far as `reach` says.
+pub fn compile_and_run_builds(robot: &Robot, states: &[State], reach: Reach) -> Vec<Run> {
+    compile_and_run_builds_at(robot, states, reach, true)
 }
 
 /// [`compile_and_run_builds`], each compiler's first build optimized only with
@@ -108,7 +120,7 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], every: bool) -> V
 pub fn compile_and_run_builds_at(
     robot: &Robot,
     states: &[State],
-    every: bool,
+    reach: Reach,
     optimize_first: bool,
 ) -> Vec<Run> {
     // Two robots may share a name (the Panda's description file and its URDF), and tests run
@@ -126,12 +138,16 @@ pub fn compile_and_run_builds_at(
     std::fs::write(&source, driver(robot, states)).expect("write");
     let mut runs = Vec::new();
     let compilers = compilers();
-    let count = if every { compilers.len() } else { 1 };
+    let count = if reach == Reach::First {
+        1
+    } else {
+        compilers.len()
+    };
     for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
         // Each compiler's first build optimized; the others, which differ only in what the
         // header's macros select, unoptimized: the same IEEE results (no contraction), in
         // a fraction of the time a large header takes to optimize.
-        for (b, (name, extra)) in builds(&robot.header, kernels_too && every)
+        for (b, (name, extra)) in builds(&robot.header, kernels_too && reach == Reach::EveryWay)
             .into_iter()
             .enumerate()
         {

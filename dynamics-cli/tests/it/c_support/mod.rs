@@ -8,7 +8,9 @@ mod batch;
 mod builds;
 mod simplified;
 
-pub use builds::{compile_and_run, compile_and_run_builds, compile_and_run_builds_at, compilers};
+pub use builds::{
+    compile_and_run, compile_and_run_builds, compile_and_run_builds_at, compilers, Reach,
+};
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
