@@ -5,13 +5,15 @@
 use dynamics_runtime::batch::{States, StatesMut};
 use dynamics_runtime::F64x4;
 use dynamics_runtime::{
-    Dynamics, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivatives,
-    DynamicsDerivativesBatch, DynamicsRegressorBatch, NotPositiveDefinite,
+    DerivativesBatchScalar, Dynamics, DynamicsBaseParametersBatch, DynamicsBatch,
+    DynamicsDerivatives, DynamicsDerivativesBatch, DynamicsRegressorBatch, NotPositiveDefinite,
+    Real,
 };
 use dynamics_tests::lanes::{close_values, routes_differ, Bits};
 use dynamics_tests::robots::{Panda, Puma560, Stanford};
 
-/// Lengths around the groups of four (`f64`) and eight (`f32`).
+/// Lengths around the groups of four (`f64`) and eight (`f32`, the derivatives' `f64` with
+/// AVX-512).
 const LENGTHS: [usize; 8] = [0, 1, 3, 4, 5, 8, 9, 19];
 
 /// `count` states of `N` values in `[-2, 2)`, deterministic.
@@ -108,6 +110,22 @@ fn every_length_as_one_call_per_state() {
     dynamics_methods(&Puma560, "puma560");
     dynamics_methods(&Stanford, "stanford");
     dynamics_methods(&Panda, "panda");
+}
+
+/// The derivatives' batches take eight `f64` states a group where the build computes tangents
+/// in lanes (AVX-512), four otherwise; `f32` eight either way.
+#[test]
+fn derivatives_in_groups_of_eight_where_tangents_are_in_lanes() {
+    fn group<T: DerivativesBatchScalar<L>, const L: usize>(_: T) -> usize {
+        L
+    }
+    let f64_group = if <f64 as Real>::TANGENTS_IN_LANES {
+        8
+    } else {
+        4
+    };
+    assert_eq!(group(0.0_f64), f64_group);
+    assert_eq!(group(0.0_f32), 8);
 }
 
 #[test]
