@@ -170,7 +170,7 @@ fn forward_derivatives_written_in_place_are_each_lanes() {
         core::array::from_fn(|i| core::array::from_fn(|j| value(base + 3 * i + j)))
     };
     let group: Result<_, NotPositiveDefinite> = Ok(ForwardDynamicsDerivatives::from_parts((
-        core::array::from_fn(|j| value(j)),
+        core::array::from_fn(value),
         [matrix(3), matrix(12), matrix(21)],
     )));
     let zero = ForwardDynamicsDerivatives::from_parts(([0.0; 3], [[[0.0; 3]; 3]; 3]));
