@@ -74,7 +74,10 @@ impl BatchScalar<8> for f32 {
 /// A scalar with the lane type the derivatives' batches are evaluated in, `L` of it: `f64` in
 /// [`F64x8`](crate::F64x8) where the build computes tangents in lanes (AVX-512 and the `avx512`
 /// feature), else as [`BatchScalar`]. Eight states in one AVX-512 register take the Panda's
-/// derivatives column by column in about half the time a state of four (`docs/performance.md`).
+/// derivatives column by column in two thirds to three quarters of the time a state of four
+/// (`docs/performance.md`).
+/// Unoptimized, the Panda's derivatives on `F64x8` take about 4 MB of stack, more than a
+/// spawned thread's default 2 MB: a debug build batching them on such threads needs more.
 pub trait DerivativesBatchScalar<const L: usize>: RealScalar {
     /// `L` of these side by side, a [`Real`](crate::Real) of its own.
     type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
