@@ -85,8 +85,8 @@ mod trig;
 #[cfg(feature = "rayon")]
 pub use crate::batch::InParallel;
 pub use crate::batch::{
-    BatchScalar, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch,
-    DynamicsRegressorBatch, DynamicsSimplifiedBatch, TipKinematicsBatch,
+    BatchScalar, DerivativesBatchScalar, DynamicsBaseParametersBatch, DynamicsBatch,
+    DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{

@@ -5,7 +5,8 @@
 //! [`DynamicsRegressorBatch`], [`DynamicsBaseParametersBatch`], implemented for every robot.
 //!
 //! The states are taken [`lanes`](crate::lanes) at a time — four for `f64` ([`F64x4`]), eight
-//! for `f32` ([`F32x8`]): one call of the generated code on the lane type per group, each lane
+//! for `f32` ([`F32x8`]); the derivatives' eight `f64` ([`F64x8`]) where the build computes
+//! tangents in lanes ([`DerivativesBatchScalar`]): one call of the generated code on the lane type per group, each lane
 //! giving bit for bit what one call gives for its state. A last, partial group repeats its last
 //! state in the lanes it does not fill, and only the filled lanes are written. No heap.
 //!
@@ -34,6 +35,7 @@
 //! lengths.
 //!
 //! [`F64x4`]: crate::F64x4
+//! [`F64x8`]: crate::F64x8
 //! [`F32x8`]: crate::F32x8
 
 mod layout;
@@ -60,7 +62,7 @@ pub trait BatchScalar<const L: usize>: RealScalar {
 
 // Not `F64x8` where the build has AVX-512: on the Xeon measured, τ and M in batches ran no
 // faster in eight lanes than in four (docs/performance.md), and the eight-lane gathers and
-// transposes cost more for 6 or 7 joints.
+// transposes cost more for 6 or 7 joints. The derivatives do gain: `DerivativesBatchScalar`.
 impl BatchScalar<4> for f64 {
     type Lanes = crate::F64x4;
 }
@@ -69,31 +71,57 @@ impl BatchScalar<8> for f32 {
     type Lanes = crate::F32x8;
 }
 
+/// A scalar with the lane type the derivatives' batches are evaluated in, `L` of it: `f64` in
+/// [`F64x8`](crate::F64x8) where the build computes tangents in lanes (AVX-512 and the `avx512`
+/// feature), else as [`BatchScalar`]. Eight states in one AVX-512 register take the Panda's
+/// derivatives column by column in two thirds to three quarters of the time a state of four
+/// (`docs/performance.md`).
+/// Unoptimized, the Panda's derivatives on `F64x8` take about 4 MB of stack, more than a
+/// spawned thread's default 2 MB: a debug build batching them on such threads needs more.
+pub trait DerivativesBatchScalar<const L: usize>: RealScalar {
+    /// `L` of these side by side, a [`Real`](crate::Real) of its own.
+    type Lanes: Lanes<L, Scalar = Self> + SplitLanes<L, Single = Self>;
+}
+
+#[cfg(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512"))]
+impl DerivativesBatchScalar<8> for f64 {
+    type Lanes = crate::F64x8;
+}
+
+#[cfg(not(all(target_arch = "x86_64", target_feature = "avx512f", feature = "avx512")))]
+impl DerivativesBatchScalar<4> for f64 {
+    type Lanes = crate::F64x4;
+}
+
+impl DerivativesBatchScalar<8> for f32 {
+    type Lanes = crate::F32x8;
+}
+
 /// The `M` values of states `k` to `k + L − 1` of `states` as lanes, the last state repeated
 /// past the end.
 #[doc(hidden)]
 #[inline(always)]
-pub fn lanes<T, S, const L: usize, const M: usize>(states: &S, k: usize) -> [T::Lanes; M]
+pub fn lanes<V, S, const L: usize, const M: usize>(states: &S, k: usize) -> [V; M]
 where
-    T: BatchScalar<L>,
-    S: States<T, M> + ?Sized,
+    V: Lanes<L>,
+    S: States<V::Scalar, M> + ?Sized,
 {
     let last = states.count() - 1;
     // Whole states first (one copy each from a slice of states), then transposed by blocks of
     // as many values as lanes, the last block padded with zeros.
-    let rows: [[T; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
-    let mut values = [<T::Lanes as crate::Real>::ZERO; M];
+    let rows: [[V::Scalar; M]; L] = core::array::from_fn(|l| states.state((k + l).min(last)));
+    let mut values = [<V as crate::Real>::ZERO; M];
     for j in (0..M).step_by(L) {
         let block = core::array::from_fn(|l| {
-            <T::Lanes as Lanes<L>>::from_array(core::array::from_fn(|i| {
+            V::from_array(core::array::from_fn(|i| {
                 rows[l]
                     .get(j + i)
                     .copied()
-                    .unwrap_or(<T as crate::Real>::ZERO)
+                    .unwrap_or(<V::Scalar as crate::Real>::ZERO)
             }))
         });
         let end = (j + L).min(M);
-        values[j..end].copy_from_slice(&<T::Lanes as Lanes<L>>::transpose(block)[..end - j]);
+        values[j..end].copy_from_slice(&V::transpose(block)[..end - j]);
     }
     values
 }

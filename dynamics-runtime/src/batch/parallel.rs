@@ -7,7 +7,9 @@
 //! A batch of up to [`MIN_CHUNK`] states runs on the calling thread: waking the pool's threads
 //! costs more than they save on it.
 
-use super::{check_count, check_output, drive, lanes, BatchScalar, States, StatesMut};
+use super::{
+    check_count, check_output, drive, lanes, BatchScalar, DerivativesBatchScalar, States, StatesMut,
+};
 use rayon::prelude::*;
 use std::vec::Vec;
 // The result table's types name these.
@@ -143,10 +145,20 @@ macro_rules! parallel_impl {
     };
 }
 
-/// The parallel form of one method, if its row names a `_batch` form.
+/// The parallel form of one method, if its row names a `_batch` form: the derivatives' states
+/// in the lanes of [`DerivativesBatchScalar`], the others' in those of [`BatchScalar`].
 macro_rules! parallel_method {
     ($trait:ident $_generics:tt fn $name:ident($($argument:ident),*) -> $result:ident;) => {};
-    ($trait:ident [$($count:ident)?] fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+    ($trait:ident $generics:tt fn $name:ident($($argument:ident),*) -> inverse_derivatives; $batch:ident) => {
+        parallel_method!(@ DerivativesBatchScalar $trait $generics fn $name($($argument),*) -> inverse_derivatives; $batch);
+    };
+    ($trait:ident $generics:tt fn $name:ident($($argument:ident),*) -> forward_derivatives; $batch:ident) => {
+        parallel_method!(@ DerivativesBatchScalar $trait $generics fn $name($($argument),*) -> forward_derivatives; $batch);
+    };
+    ($trait:ident $generics:tt fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+        parallel_method!(@ BatchScalar $trait $generics fn $name($($argument),*) -> $result; $batch);
+    };
+    (@ $scalar:ident $trait:ident [$($count:ident)?] fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
         #[doc = concat!("[`", stringify!($trait), "Batch::", stringify!($batch), "`](crate::", stringify!($trait), "Batch::", stringify!($batch), ") ")]
         #[doc = "with the states cut into chunks on rayon's threads."]
         ///
@@ -162,7 +174,7 @@ macro_rules! parallel_method {
             out: &mut (impl ChunksMut<array_result!($result)> + ?Sized),
         ) where
             R: crate::$trait<N $(, $count)?>,
-            T: BatchScalar<L> + Sync,
+            T: $scalar<L> + Sync,
         {
             let robot = self.0;
             let len = out.count();
@@ -171,7 +183,7 @@ macro_rules! parallel_method {
             drive_parallel::<_, _, L>(
                 len,
                 out,
-                |k| robot.$name::<T::Lanes>($(&lanes::<T, _, L, _>($argument, k)),*),
+                |k| robot.$name::<T::Lanes>($(&lanes::<T::Lanes, _, L, _>($argument, k)),*),
                 |k| robot.$name::<T>($(&$argument.state(k)),*),
             );
         }

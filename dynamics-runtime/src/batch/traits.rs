@@ -1,7 +1,9 @@
 //! The batch traits, from the method table's rows (`methods.rs`): for each of the runtime's
 //! traits, one of `_batch` methods, implemented for every type that implements the first.
 
-use super::{check_count, check_output, drive, lanes, BatchScalar, States, StatesMut};
+use super::{
+    check_count, check_output, drive, lanes, BatchScalar, DerivativesBatchScalar, States, StatesMut,
+};
 // The result table's types name these.
 use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveDefinite, Pose};
 
@@ -36,10 +38,20 @@ macro_rules! declare_batch {
     )*};
 }
 
-/// The `_batch` form of one method, if its row names one.
+/// The `_batch` form of one method, if its row names one: the derivatives' states in the lanes
+/// of [`DerivativesBatchScalar`], the others' in those of [`BatchScalar`].
 macro_rules! batch_method {
     ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident;) => {};
+    ($trait:ident fn $name:ident($($argument:ident),*) -> inverse_derivatives; $batch:ident) => {
+        batch_method!(@ DerivativesBatchScalar $trait fn $name($($argument),*) -> inverse_derivatives; $batch);
+    };
+    ($trait:ident fn $name:ident($($argument:ident),*) -> forward_derivatives; $batch:ident) => {
+        batch_method!(@ DerivativesBatchScalar $trait fn $name($($argument),*) -> forward_derivatives; $batch);
+    };
     ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+        batch_method!(@ BatchScalar $trait fn $name($($argument),*) -> $result; $batch);
+    };
+    (@ $scalar:ident $trait:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
         #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`](crate::", stringify!($trait), "::", stringify!($name), ") of every state, into `out`: ")]
         #[doc = "[`batch`](crate::batch) has the layouts and what a failed solve writes."]
         ///
@@ -49,7 +61,7 @@ macro_rules! batch_method {
         /// joint) or of `out` differ in length.
         #[inline]
         #[track_caller]
-        fn $batch<T: BatchScalar<L>, const L: usize>(
+        fn $batch<T: $scalar<L>, const L: usize>(
             &self,
             $($argument: &batch_input!($argument, T),)*
             out: &mut (impl StatesMut<array_result!($result)> + ?Sized),
@@ -60,7 +72,7 @@ macro_rules! batch_method {
             drive::<_, _, L>(
                 len,
                 out,
-                |k| self.$name::<T::Lanes>($(&lanes::<T, _, L, _>($argument, k)),*),
+                |k| self.$name::<T::Lanes>($(&lanes::<T::Lanes, _, L, _>($argument, k)),*),
                 |k| self.$name::<T>($(&$argument.state(k)),*),
             );
         }

@@ -71,6 +71,22 @@ impl<X: SplitLanes<L>, E: Copy, const L: usize> SplitLanes<L> for Result<X, E> {
             Err(e) => Err(*e),
         }
     }
+    /// `Ok` written in place where every output already holds an `Ok` (a group's results
+    /// written over again, whole rows at a time), else lane by lane.
+    #[inline(always)]
+    fn write_lanes(&self, outs: [&mut Self::Single; L]) {
+        match (self, outs.iter().all(|out| out.is_ok())) {
+            (Ok(x), true) => x.write_lanes(outs.map(|out| match out {
+                Ok(out) => out,
+                Err(_) => unreachable!("every output holds an `Ok`"),
+            })),
+            _ => {
+                for (l, out) in outs.into_iter().enumerate() {
+                    *out = self.lane(l);
+                }
+            }
+        }
+    }
     #[inline(always)]
     fn is_complete(&self) -> bool {
         self.is_ok()
@@ -165,5 +181,16 @@ impl<Y: SplitLanes<L>, X: SplitLanes<L>, const L: usize> SplitLanes<L>
             self.dqdd_dtau.lane(l),
         ];
         ForwardDynamicsDerivatives::from_parts((self.qdd.lane(l), blocks))
+    }
+    #[inline(always)]
+    fn write_lanes(&self, mut outs: [&mut Self::Single; L]) {
+        self.qdd
+            .write_lanes(outs.each_mut().map(|out| &mut out.qdd));
+        self.dqdd_dq
+            .write_lanes(outs.each_mut().map(|out| &mut out.dqdd_dq));
+        self.dqdd_dqd
+            .write_lanes(outs.each_mut().map(|out| &mut out.dqdd_dqd));
+        self.dqdd_dtau
+            .write_lanes(outs.map(|out| &mut out.dqdd_dtau));
     }
 }

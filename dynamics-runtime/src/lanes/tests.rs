@@ -156,3 +156,35 @@ fn transpose_exchanges_lanes_and_values() {
     check::<F32x8, 8>();
     check::<F32x4, 4>();
 }
+
+/// A group of forward derivatives written in place (whole rows, `write_lanes`) is each lane's
+/// value, as `lane` gives it; an `Err`, or outputs not all `Ok`, lane by lane.
+#[test]
+fn forward_derivatives_written_in_place_are_each_lanes() {
+    use crate::{ForwardDynamicsDerivatives, NotPositiveDefinite};
+    type Single = Result<ForwardDynamicsDerivatives<[f64; 3], [[f64; 3]; 3]>, NotPositiveDefinite>;
+    let value = |seed: usize| -> F64x8 {
+        F64x8::from_array(core::array::from_fn(|l| (seed * 8 + l) as f64 * 0.5 - 7.0))
+    };
+    let matrix = |base: usize| -> [[F64x8; 3]; 3] {
+        core::array::from_fn(|i| core::array::from_fn(|j| value(base + 3 * i + j)))
+    };
+    let group: Result<_, NotPositiveDefinite> = Ok(ForwardDynamicsDerivatives::from_parts((
+        core::array::from_fn(value),
+        [matrix(3), matrix(12), matrix(21)],
+    )));
+    let zero = ForwardDynamicsDerivatives::from_parts(([0.0; 3], [[[0.0; 3]; 3]; 3]));
+    for start in [Ok(zero), Err(NotPositiveDefinite)] {
+        let mut outs: [Single; 8] = [start; 8];
+        outs[5] = Ok(zero);
+        group.write_lanes(outs.each_mut());
+        for (l, out) in outs.iter().enumerate() {
+            assert_eq!(*out, group.lane(l), "lane {l}");
+        }
+    }
+    let failed: Result<ForwardDynamicsDerivatives<[F64x8; 3], [[F64x8; 3]; 3]>, _> =
+        Err(NotPositiveDefinite);
+    let mut outs: [Single; 8] = [Ok(zero); 8];
+    failed.write_lanes(outs.each_mut());
+    assert!(outs.iter().all(Result::is_err));
+}

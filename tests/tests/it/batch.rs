@@ -5,13 +5,15 @@
 use dynamics_runtime::batch::{States, StatesMut};
 use dynamics_runtime::F64x4;
 use dynamics_runtime::{
-    Dynamics, DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivatives,
-    DynamicsDerivativesBatch, DynamicsRegressorBatch, NotPositiveDefinite,
+    DerivativesBatchScalar, Dynamics, DynamicsBaseParametersBatch, DynamicsBatch,
+    DynamicsDerivatives, DynamicsDerivativesBatch, DynamicsRegressorBatch, NotPositiveDefinite,
+    Real,
 };
 use dynamics_tests::lanes::{close_values, routes_differ, Bits};
 use dynamics_tests::robots::{Panda, Puma560, Stanford};
 
-/// Lengths around the groups of four (`f64`) and eight (`f32`).
+/// Lengths around the groups of four (`f64`) and eight (`f32`, the derivatives' `f64` with
+/// AVX-512).
 const LENGTHS: [usize; 8] = [0, 1, 3, 4, 5, 8, 9, 19];
 
 /// `count` states of `N` values in `[-2, 2)`, deterministic.
@@ -61,6 +63,22 @@ fn same_solved<O: Bits>(
     }
 }
 
+/// Runs `f` on a thread, and rayon's work on a pool, with room for the derivatives' batches:
+/// on `F64x8` (AVX-512) the Panda's derivatives take about 4 MB of stack unoptimized, more than
+/// a thread's 2 MB (as `lanes.rs`' `eight_lanes_f64x8`).
+fn with_room(f: impl FnOnce() + Send) {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .stack_size(64 << 20)
+        .build()
+        .expect("a pool");
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .stack_size(64 << 20)
+            .spawn_scoped(s, || pool.install(f))
+            .expect("a thread");
+    });
+}
+
 fn dynamics_methods<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name: &str) {
     for len in LENGTHS {
         let (q, qd, qdd) = (
@@ -105,13 +123,35 @@ fn dynamics_methods<R: DynamicsDerivatives<N>, const N: usize>(robot: &R, name: 
 
 #[test]
 fn every_length_as_one_call_per_state() {
-    dynamics_methods(&Puma560, "puma560");
-    dynamics_methods(&Stanford, "stanford");
-    dynamics_methods(&Panda, "panda");
+    with_room(|| {
+        dynamics_methods(&Puma560, "puma560");
+        dynamics_methods(&Stanford, "stanford");
+        dynamics_methods(&Panda, "panda");
+    });
+}
+
+/// The derivatives' batches take eight `f64` states a group where the build computes tangents
+/// in lanes (AVX-512), four otherwise; `f32` eight either way.
+#[test]
+fn derivatives_in_groups_of_eight_where_tangents_are_in_lanes() {
+    fn group<T: DerivativesBatchScalar<L>, const L: usize>(_: T) -> usize {
+        L
+    }
+    let f64_group = if <f64 as Real>::TANGENTS_IN_LANES {
+        8
+    } else {
+        4
+    };
+    assert_eq!(group(0.0_f64), f64_group);
+    assert_eq!(group(0.0_f32), 8);
 }
 
 #[test]
 fn solves_fail_exactly_for_the_failing_states() {
+    with_room(solves_fail);
+}
+
+fn solves_fail() {
     let len = 11;
     let (mut q, qd, tau) = (
         states::<7>(len, 5),
@@ -246,6 +286,10 @@ fn inputs_of_another_length_panic() {
 /// threshold where it runs on the caller's thread, and through joint columns.
 #[test]
 fn threads_give_the_same_bits() {
+    with_room(threads_agree);
+}
+
+fn threads_agree() {
     use dynamics_runtime::InParallel;
     for len in [0, 5, 1_003, 4_100, 9_001] {
         let (q, qd, qdd) = (
