@@ -12,10 +12,18 @@
 //   dqdd  computeABADerivatives(model, data, q, v, tau)    ∂q̈/∂q, ∂q̈/∂q̇, M⁻¹: 3 n × n, row-major
 // (`dqdd` only where the file's M is positive definite at every sample, as bench.cpp times it),
 // the outputs laid out as bench/ffi's functions write theirs, each into a casadi::Function of
-// (q, v, third) with common subexpressions eliminated ("cse"), and writes
-//   OUTDIR/ROBOT_FUNCTION.c   CasADi's C code of the function (CodeGenerator), and
-//   OUTDIR/ROBOT.c            casadi_bench_ROBOT(name): the function behind bench.cpp's signature
-//                             f(q, v, third, out), its work arrays static, or null.
+// (q, v, third), in three variants, the peer's best being whichever runs fastest
+// (bench.cpp picks it per function):
+//   plain  CasADi's default options;
+//   cse    common subexpressions eliminated ("cse");
+//   snap   "cse" on a model whose constants within 1e-15 of 0, 1 or -1 (the rotations'
+//          cos(π/2) = 6.1e-17 above all) are those exactly, so that CasADi's construction-time
+//          simplifications (x · 0, x · 1, x + 0) drop what they multiply or add.
+// It writes
+//   OUTDIR/ROBOT_VARIANT_FUNCTION.c   CasADi's C code of the function (CodeGenerator), and
+//   OUTDIR/ROBOT.c            casadi_bench_ROBOT("FUNCTION:VARIANT"): the function behind
+//                             bench.cpp's signature f(q, v, third, out), its work arrays static,
+//                             or null.
 // A file whose text is unchanged is not rewritten, so that its object is not rebuilt. The time
 // each robot's tracing and code generation took goes to stderr.
 
@@ -78,23 +86,63 @@ static SX rows_of(const std::vector<std::pair<const MatrixSX *, bool>> & blocks)
 
 struct Traced
 {
-  std::string name; // the function's name in bench.cpp (tau, M, dtau, dqdd)
+  std::string name; // the function's name in bench.cpp's lookup (tau:cse, M:snap, ...)
   casadi::Function f;
 };
 
-// The four functions of a robot, traced through Pinocchio's algorithms on casadi::SX.
-static std::vector<Traced> trace(const std::string & robot, const pinocchio::Model & model, bool forward)
+// `x` made exactly 0, 1 or -1 where it is within 1e-15 of one of them.
+static void snap(double & x)
+{
+  for (const double exact : {0.0, 1.0, -1.0})
+    if (std::abs(x - exact) <= 1e-15)
+      x = exact;
+}
+
+// Every entry of a fixed-size Eigen matrix snapped.
+template<typename Matrix>
+static void snap_all(Matrix && m)
+{
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    snap(m.data()[i]);
+}
+
+// The model with its joints' placements and its bodies' inertias snapped (`snap`).
+static pinocchio::Model snapped(pinocchio::Model model)
+{
+  for (auto & placement : model.jointPlacements)
+  {
+    snap_all(placement.rotation());
+    snap_all(placement.translation());
+  }
+  for (auto & inertia : model.inertias)
+  {
+    snap(inertia.mass());
+    snap_all(inertia.lever());
+    snap_all(inertia.inertia().data());
+  }
+  return model;
+}
+
+// The four functions of a robot, traced through Pinocchio's algorithms on casadi::SX, each in
+// the variants of `variants` (name and CasADi options) on the model as given.
+static std::vector<Traced> trace(
+  const std::string & robot,
+  const pinocchio::Model & model,
+  bool forward,
+  const std::vector<std::pair<std::string, casadi::Dict>> & variants)
 {
   const ModelSX m = model.cast<SX>();
   DataSX data(m);
   const casadi_int n = model.nv;
   const SX q = SX::sym("q", n), v = SX::sym("v", n), third = SX::sym("third", n);
   const VectorSX qe = entries(q), ve = entries(v), te = entries(third);
-  const casadi::Dict options = {{"cse", true}};
   std::vector<Traced> out;
   auto add = [&](const std::string & name, const SX & result) {
     // Dense: a structural zero would otherwise be left out of the output, moving its successors.
-    out.push_back({name, casadi::Function(robot + "_" + name, {q, v, third}, {SX::densify(result)}, options)});
+    for (const auto & [variant, options] : variants)
+      out.push_back(
+        {name + ":" + variant,
+         casadi::Function(robot + "_" + variant + "_" + name, {q, v, third}, {SX::densify(result)}, options)});
   };
   pinocchio::rnea(m, data, qe, ve, te);
   add("tau", SX::vertcat(std::vector<SX>(data.tau.data(), data.tau.data() + n)));
@@ -176,7 +224,11 @@ int main(int argc, char ** argv)
         std::vector<SE3> links;
         model = build_model(file["description"], hand, links);
       }
-      const std::vector<Traced> functions = trace(robot, model, invertible(file["samples"]));
+      const bool forward = invertible(file["samples"]);
+      const casadi::Dict plain, cse = {{"cse", true}};
+      std::vector<Traced> functions = trace(robot, model, forward, {{"plain", plain}, {"cse", cse}});
+      for (Traced & t : trace(robot, snapped(model), forward, {{"snap", cse}}))
+        functions.push_back(std::move(t));
       for (const auto & t : functions)
       {
         casadi::CodeGenerator gen(t.f.name() + ".c");

@@ -61,10 +61,12 @@
 // With --casadi LIB.so after --generated and --c (the generated-code peer: Pinocchio's rnea, crba,
 // computeRNEADerivatives and computeABADerivatives traced on casadi::SX and exported as C by
 // bench/casadi/generate.cpp, one lookup casadi_bench_<robot>(function) per robot, the functions'
-// signatures and layouts bench/ffi's), those four are checked against Pinocchio's doubles on
-// every sample (the same tolerance) and timed in turn with the others, a sixth column:
-// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns<TAB>casadi_ns`, c_ns `-` for a
-// robot without C headers (the trees).
+// signatures and layouts bench/ffi's, each in three variants: "tau:plain", "tau:cse",
+// "tau:snap"), those four are checked, every variant, against Pinocchio's doubles on every
+// sample (the same tolerance); the fastest variant of each (short batches of each in turn,
+// fastest_variant) is timed in turn with the others, a sixth column and its name a seventh:
+// `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns<TAB>c_ns<TAB>casadi_ns<TAB>variant`,
+// c_ns `-` for a robot without C headers (the trees).
 //
 // For a robot whose generated library has simplified models (bench/ffi's `tau_simplified`,
 // `M_simplified`, `g_simplified`: PUMA 560 and the Panda), those are checked against Pinocchio
@@ -80,6 +82,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <random>
@@ -545,10 +548,16 @@ static void check_generated(
   }
 }
 
+// The variants of each CasADi peer function (bench/casadi/generate.cpp), looked up as
+// "FUNCTION:VARIANT": CasADi's defaults, common subexpressions eliminated, and the latter on a
+// model whose constants near 0 and ±1 are exact.
+static const char * const CASADI_VARIANTS[] = {"plain", "cse", "snap"};
+
 // The CasADi peer's functions (`get`: null where it has none) against Pinocchio's doubles on
-// every sample: tau (rnea), M (crba, mirrored), dtau (computeRNEADerivatives) and, with
-// `forward`, dqdd (computeABADerivatives, M⁻¹ mirrored), at the robot's tolerance. Returns the
-// names of the functions it has, which are then timed.
+// every sample, every variant of each: tau (rnea), M (crba, mirrored), dtau
+// (computeRNEADerivatives) and, with `forward`, dqdd (computeABADerivatives, M⁻¹ mirrored), at
+// the robot's tolerance. Returns the names of the functions it has (some variant of), which
+// are then timed.
 static std::vector<std::string> check_casadi(
   const std::string & robot,
   const std::function<GeneratedFunction(const char *)> & get,
@@ -567,40 +576,83 @@ static std::vector<std::string> check_casadi(
         m(r, c) = out[static_cast<std::size_t>(k * n * n + r * n + c)];
     return m;
   };
+  // Each function and variant the library has.
   std::vector<std::string> have;
+  std::vector<std::pair<std::string, std::string>> variants;
   for (const char * function : {"tau", "M", "dtau", "dqdd"})
-    if (get(function) && (forward || std::string(function) != "dqdd"))
+  {
+    if (!forward && std::string(function) == "dqdd")
+      continue;
+    for (const char * variant : CASADI_VARIANTS)
+      if (get((std::string(function) + ":" + variant).c_str()))
+        variants.emplace_back(function, variant);
+    if (!variants.empty() && variants.back().first == function)
       have.push_back(function);
+  }
   for (std::size_t s = 0; s < samples.size(); ++s)
   {
     const json::Value & sample = samples[s];
     const Eigen::VectorXd q = vecn(sample["q"]), v = vecn(sample["qd"]), a = vecn(sample["qdd"]);
     const Eigen::VectorXd tau = vecn(sample["tau"]);
-    for (const std::string & function : have)
+    for (const auto & [function, variant] : variants)
     {
       const bool dqdd = function == "dqdd";
-      get(function.c_str())(q.data(), v.data(), dqdd ? tau.data() : a.data(), out.data());
-      const std::string what = function + " (CasADi) against Pinocchio";
+      get((function + ":" + variant).c_str())(q.data(), v.data(), dqdd ? tau.data() : a.data(), out.data());
+      const std::string peer = " (CasADi, " + variant + ") against Pinocchio";
       if (function == "tau")
-        check(robot, what, Eigen::Map<const Eigen::VectorXd>(out.data(), n), pinocchio::rnea(model, data, q, v, a), s);
+        check(robot, function + peer, Eigen::Map<const Eigen::VectorXd>(out.data(), n), pinocchio::rnea(model, data, q, v, a), s);
       else if (function == "M")
-        check(robot, what, block(0), symmetric(pinocchio::crba(model, data, q)), s);
+        check(robot, function + peer, block(0), symmetric(pinocchio::crba(model, data, q)), s);
       else if (function == "dtau")
       {
         pinocchio::computeRNEADerivatives(model, data, q, v, a);
-        check(robot, "dtau/dq (CasADi) against Pinocchio", block(0), data.dtau_dq, s);
-        check(robot, "dtau/dqd (CasADi) against Pinocchio", block(1), data.dtau_dv, s);
+        check(robot, "dtau/dq" + peer, block(0), data.dtau_dq, s);
+        check(robot, "dtau/dqd" + peer, block(1), data.dtau_dv, s);
       }
       else
       {
         pinocchio::computeABADerivatives(model, data, q, v, tau);
-        check(robot, "dqdd/dq (CasADi) against Pinocchio", block(0), data.ddq_dq, s);
-        check(robot, "dqdd/dqd (CasADi) against Pinocchio", block(1), data.ddq_dv, s);
-        check(robot, "dqdd/dtau (CasADi) against Pinocchio", block(2), symmetric(data.Minv), s);
+        check(robot, "dqdd/dq" + peer, block(0), data.ddq_dq, s);
+        check(robot, "dqdd/dqd" + peer, block(1), data.ddq_dv, s);
+        check(robot, "dqdd/dtau" + peer, block(2), symmetric(data.Minv), s);
       }
     }
   }
   return have;
+}
+
+// The fastest of a CasADi function's variants (`get`: null where one is missing), by short
+// batches of each in turn, each variant's fastest batch (the one least slowed by the
+// machine's neighbours): PICK_ROUNDS rounds of PICK_CALLS calls of each. Returns its name, or
+// an empty name where it has none.
+static const int PICK_ROUNDS = 9;
+static const int PICK_CALLS = 2000;
+template<typename Call>
+static std::string fastest_variant(
+  const std::string & function,
+  const std::function<GeneratedFunction(const char *)> & get,
+  std::size_t nsamples,
+  Call && call,
+  double & checksum)
+{
+  std::vector<std::pair<std::string, GeneratedFunction>> variants;
+  for (const char * variant : CASADI_VARIANTS)
+    if (const GeneratedFunction f = get((function + ":" + variant).c_str()))
+      variants.emplace_back(variant, f);
+  std::vector<double> least(variants.size(), std::numeric_limits<double>::infinity());
+  std::size_t k = 0;
+  double sum = 0.0;
+  for (int round = 0; round < PICK_ROUNDS; ++round)
+    for (std::size_t i = 0; i < variants.size(); ++i)
+    {
+      const GeneratedFunction f = variants[i].second;
+      auto one = [&](std::size_t sample) { return call(f, sample); };
+      least[i] = std::min(least[i], batch_ns(one, PICK_CALLS, nsamples, k, sum));
+    }
+  checksum += sum;
+  if (variants.empty())
+    return "";
+  return variants[static_cast<std::size_t>(std::min_element(least.begin(), least.end()) - least.begin())].first;
 }
 
 // The batch rows, per state: a horizon of `gen.horizon()` states (the samples in turn) in one
@@ -946,12 +998,15 @@ int main(int argc, char ** argv)
         };
         const bool peer =
           std::find(casadi_functions.begin(), casadi_functions.end(), function) != casadi_functions.end();
-        // The CasADi peer, through the same kind of call.
-        const GeneratedFunction fp = peer ? casadi_robot(function) : nullptr;
-        auto casadi = [&](std::size_t k) {
-          fp(qs[k].data(), vs[k].data(), third[k].data(), out.data());
+        // The CasADi peer, through the same kind of call: its fastest variant, timed as the
+        // others are, and named in a last column.
+        auto call = [&](GeneratedFunction f, std::size_t k) {
+          f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
           return out[0];
         };
+        const std::string variant = peer ? fastest_variant(function, casadi_robot, ns, call, checksum) : "";
+        const GeneratedFunction fp = peer ? casadi_robot((function + (":" + variant)).c_str()) : nullptr;
+        auto casadi = [&](std::size_t k) { return call(fp, k); };
         if (!c_robot && !peer)
         {
           const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin, gen, checksum);
@@ -961,7 +1016,8 @@ int main(int argc, char ** argv)
         {
           // A robot without C headers (a tree): `-` in the C's column.
           const auto [pin_ns, gen_ns, casadi_ns] = median_ns_rotating(ns, checksum, pin, gen, casadi);
-          std::printf("%s\t%s\t%.1f\t%.1f\t-\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, casadi_ns);
+          std::printf(
+            "%s\t%s\t%.1f\t%.1f\t-\t%.1f\t%s\n", robot.c_str(), function, pin_ns, gen_ns, casadi_ns, variant.c_str());
         }
         else
         {
@@ -980,7 +1036,14 @@ int main(int argc, char ** argv)
           {
             const auto [pin_ns, gen_ns, c_ns, casadi_ns] = median_ns_rotating(ns, checksum, pin, gen, c, casadi);
             std::printf(
-              "%s\t%s\t%.1f\t%.1f\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns, c_ns, casadi_ns);
+              "%s\t%s\t%.1f\t%.1f\t%.1f\t%.1f\t%s\n",
+              robot.c_str(),
+              function,
+              pin_ns,
+              gen_ns,
+              c_ns,
+              casadi_ns,
+              variant.c_str());
           }
         }
       }
