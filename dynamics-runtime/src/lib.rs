@@ -117,3 +117,17 @@ pub mod __private {
         T::from_f64(value.into())
     }
 }
+
+/// `[0, 1, …, L − 1]`: the default of `DynamicsRegressor::JOINT_ROWS`, each joint's columns in
+/// its own row (a robot without mimic joints). Not public API.
+#[doc(hidden)]
+#[must_use]
+pub const fn identity_rows<const L: usize>() -> [usize; L] {
+    let mut rows = [0; L];
+    let mut i = 0;
+    while i < L {
+        rows[i] = i;
+        i += 1;
+    }
+    rows
+}

@@ -326,8 +326,20 @@ macro_rules! for_each_method {
             /// or a URDF's link frame), in its axes:
             /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia's and friction's terms, linear
             /// in their coefficients (`joint_regressor`, `joint_parameters`), and the springs.
-            trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
-                items {}
+            ///
+            /// `LINKS` is the number of links, `N` by default: a robot with mimic joints (each
+            /// following `q_m = k q_j + o`, not a coordinate) has a row per coordinate (`N`) and
+            /// still a column block per link (`LINKS`, one per joint).
+            trait DynamicsRegressor<LINKS = N>: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
+                items {
+                    /// Number of links: of column blocks of `regressor`, of rows of
+                    /// `joint_regressor`.
+                    const LINK_COUNT: usize = LINKS;
+                    /// Per joint, the row of τ (its coordinate) that its columns of
+                    /// `joint_regressor` add to: joint i's own row i, but that a mimic joint's
+                    /// add to the row of the joint it follows.
+                    const JOINT_ROWS: [usize; LINKS] = crate::identity_rows::<LINKS>();
+                }
                 /// The joint torque regressor and the standard parameters.
                 family Regressor {
                     name: regressor,
@@ -351,8 +363,9 @@ macro_rules! for_each_method {
                     /// The joints' columns: row i is `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)`
                     /// in place of the sign where the robot smooths joint i's Coulomb friction),
                     /// the columns of joint i's actuator inertia, viscous, Coulomb and offset
-                    /// friction (`joint_parameters`): with `regressor`, `inverse_dynamics` minus
-                    /// the spring torques.
+                    /// friction (`joint_parameters`), which add to τ's row `JOINT_ROWS[i]`: with
+                    /// `regressor`, `inverse_dynamics` minus the spring torques. A mimic joint's
+                    /// row is that of `k q̇_j` (and `k q̈_j`), times k.
                     fn joint_regressor(qd, qdd) -> joint_columns, nalgebra joint_regressor_na, batch joint_regressor_batch {
                         variant: JointRegressor,
                         equation: None,
@@ -441,8 +454,8 @@ macro_rules! for_each_method {
             /// the joint parameters the description gives (actuator inertia, friction); `B` is
             /// their number. Found exactly from the closed form; `dynamics inspect ROBOT
             /// --base-parameters` prints each as its grouping of standard parameters
-            /// (`ZZR1 = ZZ1 + YY2 + …`).
-            trait DynamicsBaseParameters<B>: Dynamics, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
+            /// (`ZZR1 = ZZ1 + YY2 + …`). `LINKS` is `DynamicsRegressor`'s.
+            trait DynamicsBaseParameters<B, LINKS = N>: Dynamics, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
                 items {}
                 /// The base parameters and their reduced regressor.
                 family BaseParameters {

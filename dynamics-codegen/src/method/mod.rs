@@ -79,7 +79,7 @@ macro_rules! argument {
 macro_rules! declare_method {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $family_doc:literal])*
@@ -132,17 +132,17 @@ macro_rules! declare_method {
                 match self { $($(Family::$family => stringify!($trait),)*)* }
             }
 
-            /// Whether the derive writes it only for a robot that asks for it.
-            /// The name of its trait's second const parameter, a count of its own (the base
-            /// parameters' `B`), if it has one.
+            /// The names of its trait's const parameters after `N`, counts of its own (the base
+            /// parameters' `B`, the links' `LINKS`), in order.
             #[must_use]
-            pub fn count_parameter(self) -> Option<&'static str> {
+            pub fn count_parameters(self) -> &'static [&'static str] {
                 match self.trait_name() {
-                    $(name if name == stringify!($trait) => None $(.or(Some(stringify!($count))))?,)*
-                    _ => None,
+                    $(name if name == stringify!($trait) => &[$($(stringify!($count)),+)?],)*
+                    _ => &[],
                 }
             }
 
+            /// Whether the derive writes it only for a robot that asks for it.
             #[must_use]
             pub fn is_opt_in(self) -> bool {
                 match self { $($(Family::$family => $opt_in,)*)* }
