@@ -57,9 +57,12 @@
 
 // First: the tables of methods and of their results that `dynamics` and `nalgebra` declare
 // their traits from.
-// Before `methods`, whose `for_each_method!` calls its `for_each_tip_method!`.
+// Before `methods`, whose `for_each_method!` calls `for_each_base_method!`, which calls
+// `for_each_tip_method!`.
 #[macro_use]
 mod tip_methods;
+#[macro_use]
+mod base_methods;
 #[macro_use]
 mod methods;
 #[macro_use]

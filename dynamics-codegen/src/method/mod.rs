@@ -2,13 +2,15 @@
 //! arguments, result, documentation, the book's equation and the names and docs of its output
 //! elements; for each family, its trait, module and whether a robot must ask for it.
 //!
-//! The rows live in `dynamics-runtime/src/methods.rs`, `tip_methods.rs` and `results.rs`
+//! The rows live in `dynamics-runtime/src/methods.rs`, `base_methods.rs`, `tip_methods.rs` and
+//! `results.rs`
 //! (symlinked here), which
 //! the runtime's traits and nalgebra wrappers are declared from, so the traits and the
 //! generator cannot disagree. The table is data: which output of the traced equations a
 //! method returns is the trace's to say (`Method::shape`).
 
 include!("tip_methods.rs");
+include!("base_methods.rs");
 include!("methods.rs");
 include!("results.rs");
 

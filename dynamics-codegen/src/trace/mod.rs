@@ -194,11 +194,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let angle_offsets = tracer.angle_offsets();
     // Last, so that the nodes of a robot without friction are those it always had.
     let friction = friction::friction_torques(&tracer, robot, &joints);
-    let tau = {
-        let mut g = graph.borrow_mut();
-        let tau = newton_euler.tau.iter().zip(&friction);
-        tau.map(|(&t, &f)| g.add(t, f)).collect()
-    };
+    let tau = with_friction(&mut graph.borrow_mut(), &newton_euler.tau, &friction);
     let mut joint_space = JointSpace {
         mass,
         christoffel,
@@ -259,6 +255,15 @@ pub fn derive(robot: &Robot) -> Equations {
         simplified: None,
         tips: None,
     }
+}
+
+/// τ of the rigid bodies plus the friction torques, joint by joint.
+fn with_friction(g: &mut Graph, rigid: &[NodeId], friction: &[NodeId]) -> Vec<NodeId> {
+    rigid
+        .iter()
+        .zip(friction)
+        .map(|(&t, &f)| g.add(t, f))
+        .collect()
 }
 
 /// The outputs traced on every joint, before forward dynamics: those of the robot, or of its
