@@ -112,15 +112,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let emit::Items { beside, within } = items;
     // A family asked for that could not be traced: its error, and its methods unreachable.
     let untraced = |family| parsed.families.contains(family) && !eq.families.contains(family);
-    let mimic_errors = [Family::Regressor, Family::BaseParameters]
-        .into_iter()
-        .filter(|&family| untraced(family) && parsed.robot.has_mimics())
-        .map(|family| {
-            let message = format!("`{} = true` {}", family.name(), trace::MIMIC_UNSUPPORTED);
-            untraced_family(input, &eq, &krate, family, &message)
-        });
-    let mimic_errors: Vec<TokenStream> = mimic_errors.collect();
-    let untraced = untraced(Family::BaseParameters) && !parsed.robot.has_mimics();
+    let untraced = untraced(Family::BaseParameters);
     let error = untraced.then(|| {
         let message = "`base_parameters = true` needs the robot's lengths and angles as \
                        numbers: the base parameters group the links' parameters by them, and \
@@ -139,7 +131,6 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
         _ => None,
     };
     quote! {
-        #(#mimic_errors)*
         #error
         #simplify_error
         #beside
@@ -161,6 +152,6 @@ fn untraced_family(
     message: &str,
 ) -> TokenStream {
     let error = syn::Error::new(proc_macro2::Span::call_site(), message).to_compile_error();
-    let impls = emit::unreachable_family(input, eq.dof, krate, family);
+    let impls = emit::unreachable_family(input, (eq.dof, eq.links), krate, family);
     quote!(#error const _: () = { #impls };)
 }

@@ -31,7 +31,7 @@ impl Regressor {
     ///
     /// # Errors
     /// [`Error::StructFields`]: lengths or angles that are struct fields;
-    /// [`Error::Regressor`]: an entry a sample does not give, or a robot with mimic joints.
+    /// [`Error::Regressor`]: an entry a sample does not give.
     ///
     /// # Panics
     /// `fields` or `joint_columns` of another length than the robot's.
@@ -40,16 +40,6 @@ impl Regressor {
         joint_columns: Vec<JointColumns>,
         fields: Vec<f64>,
     ) -> Result<Regressor, Error> {
-        if robot.has_mimics() {
-            // The regressor has a row per coordinate and a column per link, where the estimate
-            // and the samples read both per joint.
-            return Err(Error::Regressor(
-                "a robot with mimic joints is not identified yet: its base regressor is traced \
-                 (a row per coordinate, the links' parameters), but the estimate reads a link \
-                 per coordinate"
-                    .to_owned(),
-            ));
-        }
         let names = robot.fields();
         assert_eq!(fields.len(), names.len(), "a value per field");
         assert_eq!(joint_columns.len(), robot.joints.len(), "columns per joint");
@@ -112,17 +102,83 @@ impl Regressor {
     }
 }
 
-/// Per joint, the description's spring `(k, rest)`, if any, at these fields' values.
+/// Per coordinate, the description's springs on it, `(k, rest)`, if any, at these fields'
+/// values. A mimic joint m following j (`q_m = c q_j + o`) carries its spring's torque
+/// `k (q_m − rest)` onto j times c: `c² k (q_j − (rest − o) / c)`; springs on one coordinate add
+/// to one of their summed stiffness, its rest the stiffness-weighted mean.
 fn springs(robot: &Robot, names: &[String], values: &[f64]) -> Vec<Option<(f64, f64)>> {
     let field = |f: &str| names.iter().position(|n| n == f).map(|k| values[k]);
-    robot
-        .joints
-        .iter()
-        .map(|j| {
-            let spring = j.link.spring.as_ref()?;
-            // Every field has a value (checked above), and a spring has no joint variable.
-            let value = |v: &Value| v.eval(&field).unwrap_or(f64::NAN);
-            Some((value(&spring.stiffness), value(&spring.rest)))
-        })
+    // Every field has a value (checked above), and a spring has no joint variable.
+    let value = |v: &Value| v.eval(&field).unwrap_or(f64::NAN);
+    let coordinates = robot.coordinates();
+    // Per coordinate, Σ stiffness and Σ stiffness × rest.
+    let mut sums: Vec<Option<(f64, f64)>> = vec![None; coordinates.len()];
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let Some(spring) = joint.link.spring.as_ref() else {
+            continue;
+        };
+        let (k, rest) = (value(&spring.stiffness), value(&spring.rest));
+        let (followed, c, o) = joint.mimic.as_ref().map_or((i, 1.0, 0.0), |m| {
+            (m.joint, value(&m.multiplier), value(&m.offset))
+        });
+        let Some(row) = coordinates.iter().position(|&j| j == followed) else {
+            continue;
+        };
+        let (k, rest) = (c * c * k, (rest - o) / c);
+        let (sum, moment) = sums[row].unwrap_or((0.0, 0.0));
+        sums[row] = Some((sum + k, moment + k * rest));
+    }
+    sums.into_iter()
+        .map(|s| s.map(|(k, moment)| (k, if k == 0.0 { 0.0 } else { moment / k })))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use dynamics_codegen::{load, Source};
+
+    /// Joint 3 follows joint 2 (`q3 = −0.5 q2 + 0.2`), both with springs: their torques on
+    /// coordinate 2 are `2 (q2 − 0.3) + (−0.5) · 4 (−0.5 q2 + 0.2 − 0.1)`
+    /// `= 3 q2 − 0.8`, one spring of stiffness 3 at rest 0.8 / 3.
+    #[test]
+    fn a_mimic_joints_spring_is_carried_onto_its_coordinate() {
+        let text = r#"
+name = "sprung"
+gravity = [0, 0, -9.81]
+
+[[joints]]
+type = "revolute"
+mass = 1
+
+[[joints]]
+name = "driver"
+type = "revolute"
+a = 0.5
+mass = 1
+spring_stiffness = 2
+spring_rest = 0.3
+
+[[joints]]
+type = "revolute"
+a = 0.4
+mass = 1
+spring_stiffness = 4
+spring_rest = 0.1
+mimic = { joint = "driver", multiplier = -0.5, offset = 0.2 }
+"#;
+        let source = Source {
+            path: "sprung.toml",
+            text: Some(text),
+            ..Source::default()
+        };
+        let robot = load(&source).expect("loads").robot;
+        let springs = super::springs(&robot, &[], &[]);
+        assert_eq!(springs.len(), 2);
+        assert_eq!(springs[0], None);
+        let (k, rest) = springs[1].expect("a spring");
+        assert!(
+            (k - 3.0).abs() < 1e-15 && (rest - 0.8 / 3.0).abs() < 1e-15,
+            "{k} {rest}"
+        );
+    }
 }

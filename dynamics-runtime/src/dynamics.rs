@@ -50,7 +50,7 @@ for_each_result!(declare_result_lookups $);
 macro_rules! declare_traits {
     ($(
         $(#[doc = $trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -73,7 +73,7 @@ macro_rules! declare_traits {
         }
     )*) => {$(
         $(#[doc = $trait_doc])*
-        pub trait $trait<const N: usize $(, const $count: usize)?> $(: $supertrait<N>)? {
+        pub trait $trait<const N: usize $($(, const $count: usize $(= $count_default)?)+)?> $(: $supertrait<N>)? {
             $($items)*
             $($(
                 trait_method!(

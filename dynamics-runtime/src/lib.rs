@@ -57,9 +57,12 @@
 
 // First: the tables of methods and of their results that `dynamics` and `nalgebra` declare
 // their traits from.
-// Before `methods`, whose `for_each_method!` calls its `for_each_tip_method!`.
+// Before `methods`, whose `for_each_method!` calls `for_each_base_method!`, which calls
+// `for_each_tip_method!`.
 #[macro_use]
 mod tip_methods;
+#[macro_use]
+mod base_methods;
 #[macro_use]
 mod methods;
 #[macro_use]
@@ -116,4 +119,18 @@ pub mod __private {
     pub fn param<T: Real, F: Into<f64>>(value: F) -> T {
         T::from_f64(value.into())
     }
+}
+
+/// `[0, 1, …, L − 1]`: the default of `DynamicsRegressor::JOINT_ROWS`, each joint's columns in
+/// its own row (a robot without mimic joints). Not public API.
+#[doc(hidden)]
+#[must_use]
+pub const fn identity_rows<const L: usize>() -> [usize; L] {
+    let mut rows = [0; L];
+    let mut i = 0;
+    while i < L {
+        rows[i] = i;
+        i += 1;
+    }
+    rows
 }

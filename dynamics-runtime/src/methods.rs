@@ -49,7 +49,7 @@
 /// `methods.rs`).
 macro_rules! for_each_method {
     ($callback:ident) => {
-        for_each_tip_method! { $callback {
+        for_each_base_method! { $callback {
             /// Closed-form equations of motion of a serial robot with `N` joints,
             /// `tau = M(q) qdd + C(q, qd) qd + g(q)` (Niku eq. 6.46).
             ///
@@ -326,8 +326,20 @@ macro_rules! for_each_method {
             /// or a URDF's link frame), in its axes:
             /// `τ = Σ_j Y_j(q, q̇, q̈) π_j`, plus the actuator inertia's and friction's terms, linear
             /// in their coefficients (`joint_regressor`, `joint_parameters`), and the springs.
-            trait DynamicsRegressor: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
-                items {}
+            ///
+            /// `LINKS` is the number of links, `N` by default: a robot with mimic joints (each
+            /// following `q_m = k q_j + o`, not a coordinate) has a row per coordinate (`N`) and
+            /// still a column block per link (`LINKS`, one per joint).
+            trait DynamicsRegressor<LINKS = N>: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
+                items {
+                    /// Number of links: of column blocks of `regressor`, of rows of
+                    /// `joint_regressor`.
+                    const LINK_COUNT: usize = LINKS;
+                    /// Per joint, the row of τ (its coordinate) that its columns of
+                    /// `joint_regressor` add to: joint i's own row i, but that a mimic joint's
+                    /// add to the row of the joint it follows.
+                    const JOINT_ROWS: [usize; LINKS] = crate::identity_rows::<LINKS>();
+                }
                 /// The joint torque regressor and the standard parameters.
                 family Regressor {
                     name: regressor,
@@ -351,8 +363,9 @@ macro_rules! for_each_method {
                     /// The joints' columns: row i is `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)`
                     /// in place of the sign where the robot smooths joint i's Coulomb friction),
                     /// the columns of joint i's actuator inertia, viscous, Coulomb and offset
-                    /// friction (`joint_parameters`): with `regressor`, `inverse_dynamics` minus
-                    /// the spring torques.
+                    /// friction (`joint_parameters`), which add to τ's row `JOINT_ROWS[i]`: with
+                    /// `regressor`, `inverse_dynamics` minus the spring torques. A mimic joint's
+                    /// row is that of `k q̇_j` (and `k q̈_j`), times k.
                     fn joint_regressor(qd, qdd) -> joint_columns, nalgebra joint_regressor_na, batch joint_regressor_batch {
                         variant: JointRegressor,
                         equation: None,
@@ -432,65 +445,6 @@ macro_rules! for_each_method {
                         prefix: "g",
                         summary: "g(q) pruned within the tolerance over the envelope.",
                         element: "D{i} pruned ({equation})",
-                    }
-                }
-            }
-            /// The base parameters `π_B`: the combinations of the standard parameters that the
-            /// joint torques determine, and the reduced regressor `Y_B` of full column rank, with
-            /// `Y_B(q, q̇, q̈) π_B` the rigid bodies' part of `inverse_dynamics` plus the terms of
-            /// the joint parameters the description gives (actuator inertia, friction); `B` is
-            /// their number. Found exactly from the closed form; `dynamics inspect ROBOT
-            /// --base-parameters` prints each as its grouping of standard parameters
-            /// (`ZZR1 = ZZ1 + YY2 + …`).
-            trait DynamicsBaseParameters<B>: Dynamics, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
-                items {}
-                /// The base parameters and their reduced regressor.
-                family BaseParameters {
-                    name: base_parameters,
-                    module: "__base_parameters",
-                    opt_in: true,
-                    adjective: "base parameters' ",
-                }
-                methods {
-                    /// The reduced regressor `Y_B(q, q̇, q̈)`: element `[i][b]` is the derivative
-                    /// of joint i's torque by base parameter b, in the order of
-                    /// `base_parameters` (and of `dynamics inspect --base-parameters`).
-                    fn base_regressor(q, qd, qdd) -> base_columns, nalgebra base_regressor_na, batch base_regressor_batch {
-                        variant: BaseRegressor,
-                        equation: None,
-                        prefix: "yb",
-                        summary: "Y_B(q, q̇, q̈), with τ = Y_B π_B.",
-                        element: "d tau{i} / d base parameter {j}",
-                        into: base_regressor_into,
-                    }
-                    /// The base parameters `π_B` of the description.
-                    fn base_parameters() -> base_vector, nalgebra base_parameters_na {
-                        variant: BaseParameters,
-                        equation: None,
-                        prefix: "pib",
-                        summary: "The base parameters π_B of the description.",
-                        element: "base parameter {i}",
-                    }
-                    /// The map from the links' standard parameters to the base parameters:
-                    /// `π_B[b] = Σ_j Σ_k P[b][j][k] π_jk + Σ_i Σ_k P_J[b][i][k] p_ik`, with `π`
-                    /// in `standard_parameters`' layout and `P_J` from `base_from_joints` on the
-                    /// joints' parameters in `joint_parameters`' layout: for identified or
-                    /// edited standard parameters. Constants, Khalil's grouping.
-                    fn base_from_standard() -> base_link_map, nalgebra base_from_standard_na {
-                        variant: BaseFromStandard,
-                        equation: None,
-                        prefix: "pbs",
-                        summary: "The map P from the links' standard parameters π to π_B.",
-                        element: "base parameter {k}: coefficient of pi{i}_{j}",
-                    }
-                    /// The map from the joints' parameters (`joint_parameters`' layout) to the
-                    /// base parameters: `P_J` of `base_from_standard`.
-                    fn base_from_joints() -> base_joint_map, nalgebra base_from_joints_na {
-                        variant: BaseFromJoints,
-                        equation: None,
-                        prefix: "pbj",
-                        summary: "The map P_J from the joints' parameters to π_B.",
-                        element: "base parameter {k}: coefficient of joint {i} parameter {j}",
                     }
                 }
             }

@@ -20,7 +20,7 @@ use nalgebra::{
 macro_rules! declare_nalgebra {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -36,14 +36,14 @@ macro_rules! declare_nalgebra {
     )*) => {$(
         #[doc = concat!("nalgebra versions of the [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods, ")]
         #[doc = concat!("implemented for every type that implements it.")]
-        pub trait $nalgebra<const N: usize $(, const $count: usize)?>: crate::$trait<N $(, $count)?> {
+        pub trait $nalgebra<const N: usize $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<N $($(, $count)+)?> {
             $($(
                 nalgebra_wrapper!($trait fn $name, $wrapper($($argument),*) -> $result);
             )*)*
         }
 
-        impl<R: crate::$trait<N $(, $count)?> + ?Sized, const N: usize $(, const $count: usize)?>
-            $nalgebra<N $(, $count)?> for R {}
+        impl<R: crate::$trait<N $($(, $count)+)?> + ?Sized, const N: usize $($(, const $count: usize)+)?>
+            $nalgebra<N $($(, $count)+)?> for R {}
     )*};
 }
 

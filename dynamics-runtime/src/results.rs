@@ -5,9 +5,10 @@
 // declare the traits' result types (`dynamics.rs`) and their nalgebra forms (`nalgebra.rs`);
 // `dynamics-codegen` reads the same file (a symlink, `include!`d) for the types it writes into
 // the derive's impls and modules. `T` is the scalar and `N` the number of joints wherever a
-// row is used, `B` the number of base parameters (in `DynamicsBaseParameters` only), `TIPS` the
-// number of tips (in `TipKinematics` only); a type name other than `T`, `N`, `B`, `TIPS`,
-// `Result` and `Option` is the runtime's.
+// row is used, `B` the number of base parameters (in `DynamicsBaseParameters` only), `LINKS` the
+// number of links (in `DynamicsRegressor` and `DynamicsBaseParameters` only: `N` but on a robot
+// with mimic joints), `TIPS` the number of tips (in `TipKinematics` only); a type name other
+// than `T`, `N`, `B`, `LINKS`, `TIPS`, `Result` and `Option` is the runtime's.
 //
 //     /// What the result is.
 //     matrix {
@@ -142,30 +143,30 @@ macro_rules! for_each_result {
             /// block per link.
             link_columns {
                 variant: LinkColumns,
-                array: [[[T; 10]; N]; N],
-                nalgebra: [SMatrix<T, N, 10>; N],
+                array: [[[T; 10]; LINKS]; N],
+                nalgebra: [SMatrix<T, N, 10>; LINKS],
                 to_nalgebra: |value| core::array::from_fn(|j| SMatrix::from_fn(|i, k| value[i][j][k])),
-                rows: [[[T; 10]; N]; N],
+                rows: [[[T; 10]; LINKS]; N],
                 from_rows: |value| value,
             }
             /// Per joint `i`, its 4 columns `[q̈_i, q̇_i, sign(q̇_i), 1]` (`tanh(q̇_i / ε)` for a
             /// smoothed Coulomb term), of the actuator inertia and the friction coefficients.
             joint_columns {
                 variant: JointColumns,
-                array: [[T; 4]; N],
-                nalgebra: SMatrix<T, N, 4>,
+                array: [[T; 4]; LINKS],
+                nalgebra: SMatrix<T, LINKS, 4>,
                 to_nalgebra: |value| SMatrix::from_fn(|i, k| value[i][k]),
-                rows: [[T; 4]; N],
+                rows: [[T; 4]; LINKS],
                 from_rows: |value| value,
             }
             /// Per link, its 10 standard parameters `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz,
             /// Iyz, Izz]`.
             link_parameters {
                 variant: LinkParameters,
-                array: [[T; 10]; N],
-                nalgebra: [SVector<T, 10>; N],
+                array: [[T; 10]; LINKS],
+                nalgebra: [SVector<T, 10>; LINKS],
                 to_nalgebra: |value| value.map(SVector::from),
-                rows: [[T; 10]; N],
+                rows: [[T; 10]; LINKS],
                 from_rows: |value| value,
             }
             /// Per joint `i`, the columns of the base parameters, `B` of them.
@@ -180,19 +181,19 @@ macro_rules! for_each_result {
             /// Per base parameter, its coefficients on the links' standard parameters.
             base_link_map {
                 variant: BaseLinkMap,
-                array: [[[T; 10]; N]; B],
-                nalgebra: [SMatrix<T, N, 10>; B],
+                array: [[[T; 10]; LINKS]; B],
+                nalgebra: [SMatrix<T, LINKS, 10>; B],
                 to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
-                rows: [[[T; 10]; N]; B],
+                rows: [[[T; 10]; LINKS]; B],
                 from_rows: |value| value,
             }
             /// Per base parameter, its coefficients on the joints' parameters.
             base_joint_map {
                 variant: BaseJointMap,
-                array: [[[T; 4]; N]; B],
-                nalgebra: [SMatrix<T, N, 4>; B],
+                array: [[[T; 4]; LINKS]; B],
+                nalgebra: [SMatrix<T, LINKS, 4>; B],
                 to_nalgebra: |value| value.map(|m| SMatrix::from_fn(|i, k| m[i][k])),
-                rows: [[[T; 4]; N]; B],
+                rows: [[[T; 4]; LINKS]; B],
                 from_rows: |value| value,
             }
             /// A `Pose` per tip; in the generated module, their rows `[R | p]`.

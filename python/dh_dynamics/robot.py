@@ -29,6 +29,11 @@ class Robot:
     one state (arrays of shape ``(n,)``) or a batch (shape ``(N, n)``) in one call; ``methods``
     lists them. ``parameters`` holds the values of the description's symbols (``mass =
     "m1"``), in the order of the C functions' ``params``.
+
+    ``dof`` counts the coordinates; a robot with mimic joints (``q_m = k q_j + o``) has more
+    links, one per joint: the regressor's blocks and ``joint_regressor``'s rows. ``joint_rows[i]``
+    is the row of τ joint i's columns of ``joint_regressor`` add to (i itself but for a mimic
+    joint: the row of the joint it follows).
     """
 
     def __init__(self, path, *, base=None, tip=None, tips=(), tool=None, families=(),
@@ -47,6 +52,7 @@ class Robot:
         generated = _generate(self._source, families)
         self.name = generated["robot"]
         self.dof = generated["dof"]
+        self.joint_rows = tuple(generated["joint_rows"])
         self.header = generated["text"]
         self._parameters = Parameters(self.name, generated["fields"])
         if parameters is not None:

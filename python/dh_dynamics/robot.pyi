@@ -18,6 +18,7 @@ _Path = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 class Robot:
     name: str
     dof: int
+    joint_rows: tuple[int, ...]
     header: str
     methods: tuple[str, ...]
 

@@ -32,7 +32,7 @@ create_exception!(
 
 /// The C header of the robot described at `path` (a URDF's chain from `base` to `tip`, or its branches to `tips`; the
 /// hand frame `tool` of a description file) with the opt-in `families`, and the simplified
-/// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `text`, and
+/// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `joint_rows`, `text`, and
 /// `functions`, each a dict of its signature.
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
@@ -73,6 +73,7 @@ fn c_header(
     out.set_item("robot", &header.robot)?;
     out.set_item("dof", header.dof)?;
     out.set_item("fields", &header.fields)?;
+    out.set_item("joint_rows", &header.joint_rows)?;
     out.set_item("text", &header.text)?;
     let functions = header
         .functions

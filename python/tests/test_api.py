@@ -267,3 +267,24 @@ def test_the_regressor_and_base_parameters_give_tau():
     base = robot.base_regressor(q, qd, qdd) @ robot.base_parameters()
     assert np.max(np.abs(base - tau)) < 1e-10 * np.max(np.abs(tau))
     assert robot.base_parameters().shape == (36,)
+
+
+def test_the_regressor_of_a_robot_with_mimic_joints():
+    """The Panda's second finger follows the first: 8 coordinates (rows), 9 links (blocks);
+    each joint's columns add to its row of τ (``joint_rows``)."""
+    panda = ROOT / "robots" / "urdf" / "panda.urdf"
+    robot = dh_dynamics.Robot.from_urdf(panda, base="panda_link0",
+                                        families=["regressor", "base_parameters"])
+    assert robot.dof == 8 and robot.joint_rows == (0, 1, 2, 3, 4, 5, 6, 7, 7)
+    q, qd, qdd = states(8, 5, seed=9)
+    tau = robot.inverse_dynamics(q, qd, qdd)
+    y = robot.regressor(q, qd, qdd)
+    assert y.shape == (5, 8, 9, 10)
+    links = np.einsum("sijk,jk->si", y, robot.standard_parameters())
+    per_joint = np.einsum("smk,mk->sm", robot.joint_regressor(qd, qdd), robot.joint_parameters())
+    joints = np.zeros_like(tau)
+    for m, row in enumerate(robot.joint_rows):
+        joints[:, row] += per_joint[:, m]
+    assert np.max(np.abs(links + joints - tau)) < 1e-10 * np.max(np.abs(tau))
+    base = robot.base_regressor(q, qd, qdd) @ robot.base_parameters()
+    assert np.max(np.abs(base - tau)) < 1e-10 * np.max(np.abs(tau))

@@ -30,8 +30,9 @@ fn states(file: &str, count: usize) -> Vec<State> {
             q: vector(&s["q"]),
             qd: vector(&s["qd"]),
             qdd: vector(&s["qdd"]),
+            // The regressor's data have no friction apart: their τ is the rigid bodies'.
             tau: (vector(&s["tau"]).iter())
-                .zip(vector(&s["friction"]))
+                .zip(s.get("friction").map_or_else(|| vec![0.0; 64], vector))
                 .map(|(t, f)| t + f)
                 .collect(),
         })
@@ -67,6 +68,30 @@ fn baxter_s_header_with_derivatives_past_sixteen_joints() {
             .any(|r| r.label.contains("DYNAMICS_TANGENT_LANES=1")),
         "no build with the tangents in lanes"
     );
+    for run in &runs {
+        check_against_graph(&robot, &states, run);
+    }
+}
+
+/// The Panda of its URDF, its second finger mimicking the first (8 coordinates, 9 links), with
+/// its regressor and base parameters: a block per link, a row per coordinate, and the joints'
+/// rows stated; compiled and checked against the traced graph (which `mimic_regressor.rs`
+/// checks against Pinocchio) at the regressor data's states.
+#[test]
+fn the_mimic_pandas_regressor_in_c() {
+    let robot = c_support::urdf_tree_robot_with(
+        "robots/urdf/panda.urdf",
+        "panda_link0",
+        &["regressor", "base_parameters"],
+    );
+    let header = &robot.header;
+    assert!(
+        header.contains("double y[8][9][10]"),
+        "no 8 x 9 x 10 regressor"
+    );
+    assert!(header.contains("static const int panda_joint_rows[9] = {0, 1, 2, 3, 4, 5, 6, 7, 7};"));
+    let states = states("panda_fingers_regressor.json", 3);
+    let runs = compile_and_run_builds_at(&robot, &states, false, false);
     for run in &runs {
         check_against_graph(&robot, &states, run);
     }

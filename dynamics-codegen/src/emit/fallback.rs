@@ -18,6 +18,7 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
         joints: failure.dof,
         base: None,
         tips: names.map(<[String]>::len),
+        links: None,
     };
     let krate = runtime_path(failure.krate.as_ref());
     let impls = unreachable_impls(input, &sizes, &krate, |m| failure.families.has(m));
@@ -36,11 +37,11 @@ pub(crate) fn fallback(input: &syn::DeriveInput, failure: &front::Failure) -> To
     }
 }
 
-/// The impls of `family`'s methods for a robot of `joints` joints, unreachable: beside the error
-/// of a family the derive could not trace.
+/// The impls of `family`'s methods for a robot of `joints` coordinates and `links` links,
+/// unreachable: beside the error of a family the derive could not trace.
 pub(crate) fn unreachable_family(
     input: &syn::DeriveInput,
-    joints: usize,
+    (joints, links): (usize, usize),
     krate: &TokenStream,
     family: Family,
 ) -> TokenStream {
@@ -48,6 +49,7 @@ pub(crate) fn unreachable_family(
         joints: Some(joints),
         base: None,
         tips: None,
+        links: (links != joints).then_some(links),
     };
     unreachable_impls(input, &sizes, krate, |m| m.family() == family)
 }

@@ -37,11 +37,13 @@ fn unused_name(generics: &syn::Generics, names: &[&str], prefix: &str) -> Ident 
 }
 
 /// The counts a derive's types are written with: the number of joints (`N`), of base
-/// parameters (`B`) and of tips (`TIPS`), each a literal or a const parameter of the impls.
+/// parameters (`B`), of tips (`TIPS`) and of links (`LINKS`: `N` but on a robot with mimic
+/// joints), each a literal or a const parameter of the impls.
 pub struct Counts {
     pub joints: TokenStream,
     pub base: TokenStream,
     pub tips: TokenStream,
+    pub links: TokenStream,
 }
 
 impl Counts {
@@ -49,6 +51,7 @@ impl Counts {
     fn of(&self, parameter: &str) -> &TokenStream {
         match parameter {
             "TIPS" => &self.tips,
+            "LINKS" => &self.links,
             _ => &self.base,
         }
     }
@@ -60,6 +63,7 @@ impl Counts {
             n: &self.joints,
             base: &self.base,
             tips: &self.tips,
+            links: &self.links,
             krate,
         }
     }
@@ -73,6 +77,8 @@ pub(super) struct Sizes {
     pub joints: Option<usize>,
     pub base: Option<usize>,
     pub tips: Option<usize>,
+    /// The number of links where it is not the number of joints (a robot with mimic joints).
+    pub links: Option<usize>,
 }
 
 impl Sizes {
@@ -91,13 +97,25 @@ impl Sizes {
             Some(t) => quote!(#t),
             None => unused_name(generics, &["TIPS"], "TIPS").into_token_stream(),
         };
-        Counts { joints, base, tips }
+        // The trait's default, `N`, unless the robot has more links than coordinates.
+        let links = match self.links {
+            Some(l) => quote!(#l),
+            None => joints.clone(),
+        };
+        Counts {
+            joints,
+            base,
+            tips,
+            links,
+        }
     }
 
     /// Whether the count named `parameter` (a trait row's) is known.
     fn knows(&self, parameter: &str) -> bool {
         match parameter {
             "TIPS" => self.tips.is_some(),
+            // `N`'s, when not a count of its own.
+            "LINKS" => true,
             _ => self.base.is_some(),
         }
     }
@@ -148,23 +166,26 @@ pub(super) fn trait_impls(
             .iter()
             .filter(|(m, _)| m.family().trait_name() == name);
         let fns: Vec<&TokenStream> = fns.map(|(_, f)| f).collect();
-        let count = family.count_parameter();
         // The struct's parameters as an impl writes them (no defaults), and the counts not known.
         let mut params: syn::Generics =
             syn::parse2(impl_generics.to_token_stream()).unwrap_or_default();
         if sizes.joints.is_none() {
             params.params.push(syn::parse_quote!(const #n: usize));
         }
-        let counts = match count {
-            Some(parameter) => {
-                let c = counts.of(parameter);
-                if !sizes.knows(parameter) {
-                    params.params.push(syn::parse_quote!(const #c: usize));
-                }
-                quote!(#n, #c)
+        // `LINKS` left to its default, `N`, where it is `N`: the impls of every serial robot.
+        let written = family
+            .count_parameters()
+            .iter()
+            .filter(|&&parameter| parameter != "LINKS" || sizes.links.is_some());
+        let mut trait_counts = vec![n.clone()];
+        for &parameter in written {
+            let c = counts.of(parameter);
+            if !sizes.knows(parameter) {
+                params.params.push(syn::parse_quote!(const #c: usize));
             }
-            None => quote!(#n),
-        };
+            trait_counts.push(c.clone());
+        }
+        let counts = quote!(#(#trait_counts),*);
         let name = Ident::new(name, Span::call_site());
         (!fns.is_empty()).then(|| {
             quote! {

@@ -36,6 +36,11 @@ pub struct Generated {
     pub dof: usize,
     /// Number of base parameters (zero unless the robot asked for them).
     pub base_count: usize,
+    /// Number of links (one per joint): `dof` but on a robot with mimic joints.
+    pub links: usize,
+    /// Per joint, the row of τ its joint regressor's columns add to, where that is not the
+    /// joint itself (a robot with mimic joints that asked for the regressor).
+    pub joint_rows: Option<Vec<usize>>,
     /// The tips' names, where the robot has the tips' kinematics.
     pub tip_names: Option<Vec<String>>,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
@@ -146,6 +151,12 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     Generated {
         dof: eq.dof,
         base_count: eq.base_parameters.as_ref().map_or(0, |b| b.values.len()),
+        links: eq.links,
+        joint_rows: eq
+            .regressor
+            .as_ref()
+            .map(|r| r.rows.clone())
+            .filter(|rows| rows.iter().enumerate().any(|(i, &row)| row != i)),
         tip_names: eq
             .families
             .contains(Family::Tips)
@@ -160,12 +171,13 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
 impl Generated {
     /// The counts its types are written with.
     fn counts(&self) -> Counts {
-        let (dof, base) = (self.dof, self.base_count);
+        let (dof, base, links) = (self.dof, self.base_count, self.links);
         let tips = self.tip_names.as_ref().map_or(0, Vec::len);
         Counts {
             joints: quote!(#dof),
             base: quote!(#base),
             tips: quote!(#tips),
+            links: quote!(#links),
         }
     }
 
@@ -237,7 +249,17 @@ impl Generated {
             joints: Some(self.dof),
             base: Some(self.base_count),
             tips: Some(self.tip_names.as_ref().map_or(0, Vec::len)),
+            links: (self.links != self.dof).then_some(self.links),
         };
+        // The trait's default (each joint's own row) but on a robot with mimic joints.
+        let joint_rows = self.joint_rows.as_ref().map(|rows| {
+            let links = self.links;
+            (
+                Method::JointRegressor,
+                quote!(const JOINT_ROWS: [usize; #links] = [#(#rows),*];),
+            )
+        });
+        let fns = fns.chain(joint_rows);
         let tip_names = self.tip_names.as_deref().map(super::tip_names::constants);
         let impls = trait_impls(krate, &known, ident, generics, fns);
         let fields = &self.fields;

@@ -145,6 +145,7 @@ fn code(eq: &Equations, prefix: &str) -> String {
             ));
         }
     }
+    text.push_str(&joint_rows(eq, prefix));
     for f in &functions {
         text.push_str(&f.definition(eq, &sign(f.precision)));
         text.push('\n');
@@ -246,6 +247,27 @@ pub(super) fn unit_table(dof: usize, precision: Precision) -> String {
         String::new()
     };
     format!("dynamics_unit{wider}{}", precision.suffix())
+}
+
+/// For the regressor of a robot with mimic joints, the row of τ each joint's columns of
+/// `{prefix}_joint_regressor` add to (the Rust trait's `JOINT_ROWS`); nothing where each is its
+/// own joint's.
+fn joint_rows(eq: &Equations, prefix: &str) -> String {
+    let Some(rows) = eq.regressor.as_ref().map(|r| &r.rows) else {
+        return String::new();
+    };
+    if rows.iter().enumerate().all(|(i, &row)| row == i) {
+        return String::new();
+    }
+    let list: Vec<String> = rows.iter().map(ToString::to_string).collect();
+    format!(
+        "/* A robot with mimic joints: the regressor has a row per coordinate and a block per \
+         link\n * (per joint). Per joint, the row of tau its columns of {prefix}_joint_regressor \
+         add to: a\n * mimic joint's add to the row of the joint it follows. */\n\
+         static const int {prefix}_joint_rows[{}] = {{{}}};\n\n",
+        rows.len(),
+        list.join(", ")
+    )
 }
 
 /// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).

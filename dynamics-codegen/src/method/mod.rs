@@ -2,13 +2,15 @@
 //! arguments, result, documentation, the book's equation and the names and docs of its output
 //! elements; for each family, its trait, module and whether a robot must ask for it.
 //!
-//! The rows live in `dynamics-runtime/src/methods.rs`, `tip_methods.rs` and `results.rs`
+//! The rows live in `dynamics-runtime/src/methods.rs`, `base_methods.rs`, `tip_methods.rs` and
+//! `results.rs`
 //! (symlinked here), which
 //! the runtime's traits and nalgebra wrappers are declared from, so the traits and the
 //! generator cannot disagree. The table is data: which output of the traced equations a
 //! method returns is the trace's to say (`Method::shape`).
 
 include!("tip_methods.rs");
+include!("base_methods.rs");
 include!("methods.rs");
 include!("results.rs");
 
@@ -79,7 +81,7 @@ macro_rules! argument {
 macro_rules! declare_method {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $family_doc:literal])*
@@ -132,17 +134,17 @@ macro_rules! declare_method {
                 match self { $($(Family::$family => stringify!($trait),)*)* }
             }
 
-            /// Whether the derive writes it only for a robot that asks for it.
-            /// The name of its trait's second const parameter, a count of its own (the base
-            /// parameters' `B`), if it has one.
+            /// The names of its trait's const parameters after `N`, counts of its own (the base
+            /// parameters' `B`, the links' `LINKS`), in order.
             #[must_use]
-            pub fn count_parameter(self) -> Option<&'static str> {
+            pub fn count_parameters(self) -> &'static [&'static str] {
                 match self.trait_name() {
-                    $(name if name == stringify!($trait) => None $(.or(Some(stringify!($count))))?,)*
-                    _ => None,
+                    $(name if name == stringify!($trait) => &[$($(stringify!($count)),+)?],)*
+                    _ => &[],
                 }
             }
 
+            /// Whether the derive writes it only for a robot that asks for it.
             #[must_use]
             pub fn is_opt_in(self) -> bool {
                 match self { $($(Family::$family => $opt_in,)*)* }

@@ -61,6 +61,9 @@ pub struct Instance<'a> {
     pub base: &'a TokenStream,
     /// The number of tips, likewise (read by `TipKinematics` only).
     pub tips: &'a TokenStream,
+    /// The number of links, likewise (read by `DynamicsRegressor` and `DynamicsBaseParameters`
+    /// only): `n` but on a robot with mimic joints.
+    pub links: &'a TokenStream,
     /// The runtime crate's path.
     pub krate: &'a TokenStream,
 }
@@ -92,7 +95,7 @@ impl Returns {
 
 impl Instance<'_> {
     /// `tokens` with `T` the scalar, `N` the number of joints, `B` the number of base
-    /// parameters, `value` the given tokens,
+    /// parameters, `TIPS` of tips, `LINKS` of links, `value` the given tokens,
     /// `Result` and `Option` core's, and every other type name the runtime's.
     fn instantiate(&self, tokens: TokenStream, value: Option<&TokenStream>) -> TokenStream {
         let mut out = TokenStream::new();
@@ -120,6 +123,7 @@ impl Instance<'_> {
             "N" => self.n.clone(),
             "B" => self.base.clone(),
             "TIPS" => self.tips.clone(),
+            "LINKS" => self.links.clone(),
             "value" => value.cloned().unwrap_or_else(|| quote!(#ident)),
             "Result" => quote!(::core::result::Result),
             "Option" => quote!(::core::option::Option),

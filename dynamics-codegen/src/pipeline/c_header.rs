@@ -17,6 +17,9 @@ pub struct CHeader {
     pub dof: usize,
     /// Its parameters (struct fields), in the order of the functions' `params`.
     pub fields: Vec<String>,
+    /// Per joint (link), the row of τ its columns of `joint_regressor` add to: the joint
+    /// itself but for a mimic joint, whose row is the joint's it follows.
+    pub joint_rows: Vec<usize>,
     /// The header's text.
     pub text: String,
     /// Its functions, in the header's order.
@@ -50,6 +53,10 @@ impl Loaded {
             functions: emit_c::functions(&eq, &prefix),
             dof: eq.dof,
             fields: eq.fields.clone(),
+            joint_rows: eq
+                .regressor
+                .as_ref()
+                .map_or_else(|| (0..eq.links).collect(), |r| r.rows.clone()),
             robot: name.clone(),
         })
     }

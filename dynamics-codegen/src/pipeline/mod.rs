@@ -15,7 +15,7 @@
 
 use crate::check;
 use crate::front::{self, Chain, FileRequest, RequestError};
-use crate::method::{Family, FamilySet};
+use crate::method::FamilySet;
 use crate::model::{Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
@@ -229,13 +229,6 @@ impl Loaded {
         simplification: Option<&Simplification>,
     ) -> Result<Equations, Diagnostic> {
         let (eq, simplified) = equations(&self.robot, families, simplification);
-        let untraced = [Family::Regressor, Family::BaseParameters]
-            .into_iter()
-            .find(|&f| families.contains(f) && self.robot.has_mimics());
-        if let Some(family) = untraced {
-            let message = format!("`{}` {}", family.name(), trace::MIMIC_UNSUPPORTED);
-            return Err(Diagnostic::of_file(&self.path, message));
-        }
         match simplified {
             Some(Err(e)) => Err(Diagnostic::of_file(&self.path, format!("simplify: {e}"))),
             _ => Ok(eq),
@@ -278,14 +271,6 @@ pub(crate) fn equations(
     simplification: Option<&Simplification>,
 ) -> (Equations, Option<Result<(), String>>) {
     let mut eq = trace::derive(robot);
-    // Traced, but not in the traits' shape ([`trace::MIMIC_UNSUPPORTED`]): the callers say so.
-    let families = if robot.has_mimics() {
-        families
-            .without(Family::Regressor)
-            .without(Family::BaseParameters)
-    } else {
-        families
-    };
     eq.add_families(robot, families);
     // Only for a robot that asks: the expansion costs what the rest of the derive does.
     let simplified = simplification.map(|request| {

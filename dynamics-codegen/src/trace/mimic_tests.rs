@@ -307,7 +307,7 @@ pub(super) fn panda() -> crate::pipeline::Loaded {
 
 /// The Panda with its URDF's mimic finger through every other route out of the door: the C
 /// header, the Rust module and the readable equations have 8 coordinates and no panic; the
-/// regressor is refused by name.
+/// regressor and the base parameters have 8 rows and 9 links, in the module's trait too.
 #[test]
 fn the_panda_with_a_mimic_finger_out_of_the_door() {
     use crate::inspect::Format;
@@ -328,10 +328,20 @@ fn the_panda_with_a_mimic_finger_out_of_the_door() {
     for what in [Readable::Motion, Readable::Kinematics] {
         panda.readable(what, Format::Text).expect("readable");
     }
-    let refused = panda
-        .equations(FamilySet::default().with(Family::Regressor), None)
-        .expect_err("refused");
-    assert!(refused
-        .message
-        .contains("`regressor` is not generated for a robot with mimic joints"));
+    let families = FamilySet::default()
+        .with(Family::Regressor)
+        .with(Family::BaseParameters);
+    let eq = panda.equations(families, None).expect("traced");
+    let regressor = eq.regressor.as_ref().expect("a regressor");
+    assert_eq!(
+        (regressor.columns.len(), regressor.columns[0].len()),
+        (8, 9)
+    );
+    assert!(eq.base_parameters.is_some());
+    let items = panda.rust_module(families, None).expect("a module").items;
+    let items = items.to_string();
+    assert!(
+        items.contains("DynamicsRegressor < 8usize , 9usize >"),
+        "{items:.300}"
+    );
 }

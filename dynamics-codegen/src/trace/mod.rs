@@ -75,8 +75,11 @@ use tracer::Tracer;
 pub struct Equations {
     /// The shared expression graph.
     pub graph: Graph,
-    /// Number of joints.
+    /// Number of coordinates (of joints, but on a robot with mimic joints).
     pub dof: usize,
+    /// Number of links, one per joint: `dof` but on a robot with mimic joints (the regressor's
+    /// column blocks).
+    pub links: usize,
     /// Struct fields, in the order of [`crate::symbolic::Var::Param`] indices.
     pub fields: Vec<String>,
     /// Joint kinds.
@@ -164,14 +167,6 @@ impl Equations {
     }
 }
 
-/// Why the regressor and the base parameters are not generated for a robot with mimic joints
-/// (they are traced: [`Equations::add_regressor`], [`Equations::base_parameters`]), nor the
-/// simplified models: the first two have a row per coordinate and a column per link, where the
-/// traits' arrays have one size N for both.
-pub const MIMIC_UNSUPPORTED: &str = "is not generated for a robot with mimic joints yet: its \
-     rows are per coordinate (N) and its columns per link (N plus the mimic joints), where the \
-     trait's arrays have the one size N; every other family is, in the reduced coordinates";
-
 /// Why the simplified models are not built for a robot with mimic joints.
 pub const MIMIC_SIMPLIFIED: &str = "the simplified models are not built for a robot with mimic \
      joints yet: the envelope bounds each coordinate, and a mimic joint's terms are not carried \
@@ -199,11 +194,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let angle_offsets = tracer.angle_offsets();
     // Last, so that the nodes of a robot without friction are those it always had.
     let friction = friction::friction_torques(&tracer, robot, &joints);
-    let tau = {
-        let mut g = graph.borrow_mut();
-        let tau = newton_euler.tau.iter().zip(&friction);
-        tau.map(|(&t, &f)| g.add(t, f)).collect()
-    };
+    let tau = with_friction(&mut graph.borrow_mut(), &newton_euler.tau, &friction);
     let mut joint_space = JointSpace {
         mass,
         christoffel,
@@ -241,6 +232,7 @@ pub fn derive(robot: &Robot) -> Equations {
     Equations {
         graph: graph.into_inner(),
         dof: mass.len(),
+        links: robot.joints.len(),
         fields: fields.clone(),
         kinds,
         angle_offsets,
@@ -263,6 +255,15 @@ pub fn derive(robot: &Robot) -> Equations {
         simplified: None,
         tips: None,
     }
+}
+
+/// τ of the rigid bodies plus the friction torques, joint by joint.
+fn with_friction(g: &mut Graph, rigid: &[NodeId], friction: &[NodeId]) -> Vec<NodeId> {
+    rigid
+        .iter()
+        .zip(friction)
+        .map(|(&t, &f)| g.add(t, f))
+        .collect()
 }
 
 /// The outputs traced on every joint, before forward dynamics: those of the robot, or of its

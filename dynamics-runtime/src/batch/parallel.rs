@@ -113,7 +113,7 @@ fn chunk_size<const L: usize>(len: usize, threads: usize) -> usize {
 macro_rules! declare_parallel {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $_count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -128,7 +128,7 @@ macro_rules! declare_parallel {
         }
     )*) => {$(
         // The trait's generics as one token tree, which its methods' repetition can carry.
-        parallel_impl!($trait [$($count)?] {$($(
+        parallel_impl!($trait [$($($count)+)?] {$($(
             fn $name($($argument),*) -> $result $(, $batch_fn)?;
         )*)*});
     )*};
@@ -158,7 +158,7 @@ macro_rules! parallel_method {
     ($trait:ident $generics:tt fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
         parallel_method!(@ BatchScalar $trait $generics fn $name($($argument),*) -> $result; $batch);
     };
-    (@ $scalar:ident $trait:ident [$($count:ident)?] fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+    (@ $scalar:ident $trait:ident [$($count:ident)*] fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
         #[doc = concat!("[`", stringify!($trait), "Batch::", stringify!($batch), "`](crate::", stringify!($trait), "Batch::", stringify!($batch), ") ")]
         #[doc = "with the states cut into chunks on rayon's threads."]
         ///
@@ -168,12 +168,12 @@ macro_rules! parallel_method {
         /// joint) or of `out` differ in length.
         #[inline]
         #[track_caller]
-        pub fn $batch<T, const L: usize, const N: usize $(, const $count: usize)?>(
+        pub fn $batch<T, const L: usize, const N: usize $(, const $count: usize)*>(
             &self,
             $($argument: &parallel_input!($argument, T),)*
             out: &mut (impl ChunksMut<array_result!($result)> + ?Sized),
         ) where
-            R: crate::$trait<N $(, $count)?>,
+            R: crate::$trait<N $(, $count)*>,
             T: $scalar<L> + Sync,
         {
             let robot = self.0;

@@ -11,7 +11,7 @@ use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveD
 macro_rules! declare_batch {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$count:ident>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $batch:ident {
+        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -27,14 +27,14 @@ macro_rules! declare_batch {
     )*) => {$(
         #[doc = concat!("The [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods over many states ")]
         #[doc = "([`batch`](crate::batch)), implemented for every type that implements it."]
-        pub trait $batch<const N: usize $(, const $count: usize)?>: crate::$trait<N $(, $count)?> {
+        pub trait $batch<const N: usize $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<N $($(, $count)+)?> {
             $($(
                 batch_method!($trait fn $name($($argument),*) -> $result; $($batch_fn)?);
             )*)*
         }
 
-        impl<R: crate::$trait<N $(, $count)?> + ?Sized, const N: usize $(, const $count: usize)?>
-            $batch<N $(, $count)?> for R {}
+        impl<R: crate::$trait<N $($(, $count)+)?> + ?Sized, const N: usize $($(, const $count: usize)+)?>
+            $batch<N $($(, $count)+)?> for R {}
     )*};
 }
 

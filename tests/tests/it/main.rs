@@ -19,6 +19,7 @@ mod lanes;
 mod layout;
 mod lint;
 mod mimic;
+mod mimic_derive_regressor;
 mod mimic_regressor;
 mod niku_arm_examples;
 mod niku_lagrangian_examples;

@@ -304,13 +304,16 @@ pub struct Run {
 pub fn evaluate(eq: &Equations, params: &[f64], state: &State) -> Vec<f64> {
     let base = |v: Var, offsets: &[f64]| -> f64 {
         let i = |k: u16| usize::from(k);
+        // A robot with mimic joints keeps its joints' leaves past its coordinates in the graph,
+        // read by no output: zero (as `Equations::evaluate` has them).
+        let at = |x: &[f64], k: u16| x.get(i(k)).copied().unwrap_or(0.0);
         match v {
-            Var::Q(k) => state.q[i(k)],
-            Var::SinQ(k) => (state.q[i(k)] + offsets[i(k)]).sin(),
-            Var::CosQ(k) => (state.q[i(k)] + offsets[i(k)]).cos(),
-            Var::Qd(k) => state.qd[i(k)],
-            Var::Qdd(k) => state.qdd[i(k)],
-            Var::Tau(k) => state.tau[i(k)],
+            Var::Q(k) => at(&state.q, k),
+            Var::SinQ(k) => (at(&state.q, k) + at(offsets, k)).sin(),
+            Var::CosQ(k) => (at(&state.q, k) + at(offsets, k)).cos(),
+            Var::Qd(k) => at(&state.qd, k),
+            Var::Qdd(k) => at(&state.qdd, k),
+            Var::Tau(k) => at(&state.tau, k),
             Var::Wrench(k) => WRENCH[i(k)],
             Var::TipWrench(k) => tip_wrench(i(k)),
             Var::Param(k) => params[i(k)],

@@ -1,0 +1,1 @@
+../../../dynamics-runtime/src/base_methods.rs
