@@ -91,7 +91,7 @@ fn the_mimic_pandas_regressor_in_c() {
     );
     assert!(header.contains("static const int panda_joint_rows[9] = {0, 1, 2, 3, 4, 5, 6, 7, 7};"));
     let states = states("panda_fingers_regressor.json", 3);
-    let runs = compile_and_run_builds_at(&robot, &states, false, false);
+    let runs = compile_and_run_builds_at(&robot, &states, Reach::First, false);
     for run in &runs {
         check_against_graph(&robot, &states, run);
     }
