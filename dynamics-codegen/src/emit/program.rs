@@ -1,7 +1,7 @@
 //! One emission: the shared configuration and motion functions of a set of outputs, and each
 //! output's body reading them.
 
-use super::depends::{boundary, dependencies, shared_motion, trig_and_constants};
+use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
 use super::emitter::{Emitter, Origin};
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
@@ -31,24 +31,7 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     // The shared functions take `q`: a method without it (friction) computes all it reads.
     let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
     let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
-    // Per output, the parameter- and q-only nodes its own code reads.
-    let mut shared = vec![false; eq.graph.len()];
-    // What an output written apart reads of the configuration.
-    let mut apart_reads = vec![false; eq.graph.len()];
-    for o in &outputs {
-        let reads = if written_apart(eq, o) {
-            let reads = trig_and_constants(eq, &depends, &o.shape.outputs());
-            for id in &reads {
-                apart_reads[id.index()] = true;
-            }
-            reads
-        } else {
-            boundary(eq, &depends, &o.shape.outputs())
-        };
-        for id in reads {
-            shared[id.index()] = true;
-        }
-    }
+    let (shared, apart_reads) = configuration_reads(eq, &depends, &outputs);
     let boundary: Vec<NodeId> = eq
         .graph
         .nodes()
@@ -143,4 +126,30 @@ fn written_apart(eq: &Equations, output: &Output) -> bool {
 /// `reversed`).
 fn branches(eq: &Equations) -> bool {
     eq.forward.factors.reversed
+}
+
+/// Per node, whether the code of `outputs` reads it from the configuration (the parameter- and
+/// q-only nodes), and whether an output written apart ([`written_apart`]) does.
+fn configuration_reads(
+    eq: &Equations,
+    depends: &[Depends],
+    outputs: &[&Output],
+) -> (Vec<bool>, Vec<bool>) {
+    let mut shared = vec![false; eq.graph.len()];
+    let mut apart_reads = vec![false; eq.graph.len()];
+    for o in outputs {
+        let reads = if written_apart(eq, o) {
+            let reads = trig_and_constants(eq, depends, &o.shape.outputs());
+            for id in &reads {
+                apart_reads[id.index()] = true;
+            }
+            reads
+        } else {
+            boundary(eq, depends, &o.shape.outputs())
+        };
+        for id in reads {
+            shared[id.index()] = true;
+        }
+    }
+    (shared, apart_reads)
 }
