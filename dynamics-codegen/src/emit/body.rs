@@ -4,14 +4,14 @@
 use super::count::count;
 use super::emitter::Emitter;
 use super::lanes::{lane_operations, Queue};
-use super::names::{local, output_names, Element};
+use super::names::{local, output_names, Element, OUTPUT};
 use super::parts::Body;
 use super::parts::OpCount;
 use super::plan::Place;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Shape, Solved};
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
 impl Emitter<'_> {
@@ -56,17 +56,39 @@ impl Emitter<'_> {
         // The shared fields this function reads, bound under their names.
         statements.extend(self.bind_shared(true));
         statements.extend(self.joint_variables());
-        if method.in_place_name().is_some() {
+        let into = method.in_place_name().is_some();
+        if into || self.returned_in_place {
             if let Some((stores, zeros)) = self.write_in_place(shape, &output_names) {
                 statements.extend(stores);
+                let y = local(OUTPUT);
+                let (tokens, zeros) = if into {
+                    (quote!(#(#statements)*), Some(zeros))
+                } else {
+                    (quote!(let mut #y = #zeros; #(#statements)* #y), None)
+                };
                 return Body {
-                    tokens: quote!(#(#statements)*),
+                    tokens,
                     ops: count(self.eq, &outputs),
-                    zeros: Some(zeros),
+                    zeros,
                     lanes: false,
                 };
             }
         }
+        // Lanes stored as they are computed ([`Emitter::lanes_due`]) where asked for and every
+        // matrix has its plan: the zeros of the result they are stored into.
+        let lanes_in_place = match shape {
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: None,
+            } if self.returned_in_place && lanes.iter().all(Option::is_some) => {
+                let n = Literal::usize_unsuffixed(self.eq.dof);
+                let count = Literal::usize_unsuffixed(stack.len());
+                Some(quote!([[[T::ZERO; #n]; #n]; #count]))
+            }
+            _ => None,
+        };
+        self.returned_in_place = lanes_in_place.is_some();
         for (id, _) in self.graph.nodes() {
             self.lanes_due(&mut lanes, Some(id), &mut statements);
             let i = id.index();
@@ -82,7 +104,13 @@ impl Emitter<'_> {
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
-        let result = self.result(shape);
+        let result = if let Some(zeros) = &lanes_in_place {
+            let y = local(OUTPUT);
+            statements.insert(0, quote!(let mut #y = #zeros;));
+            quote!(#y)
+        } else {
+            self.result(shape)
+        };
         Body {
             tokens: quote!(#(#statements)* #result),
             ops: OpCount {

@@ -75,6 +75,40 @@ pub(super) fn boundary(eq: &Equations, depends: &[Depends], outputs: &[NodeId]) 
     found
 }
 
+/// The nodes the code of `outputs` reads when it computes its terms in `q` itself rather than
+/// reading them from the configuration ([`super::program`]'s mass matrix of a tree): the nodes
+/// in the parameters and constants alone and every node other than a sum, negation or product
+/// (the sines and cosines, which the configuration computes in its vector kernels), except
+/// zero, one and `q_i`, which are written in place.
+pub(super) fn trig_and_constants(
+    eq: &Equations,
+    depends: &[Depends],
+    outputs: &[NodeId],
+) -> Vec<NodeId> {
+    let e = Emitter::new(eq, None);
+    let mut seen = vec![false; eq.graph.len()];
+    let mut found = Vec::new();
+    let mut stack = outputs.to_vec();
+    while let Some(id) = stack.pop() {
+        if std::mem::replace(&mut seen[id.index()], true) {
+            continue;
+        }
+        let node = eq.graph.node(id);
+        if matches!(node, Node::Var(Var::Q(_)))
+            || matches!(node, Node::Const(c) if c.is_zero() || c.is_one())
+        {
+            continue;
+        }
+        let arithmetic = matches!(node, Node::Add(..) | Node::Neg(_) | Node::Mul(..));
+        if arithmetic && depends[id.index()] >= Depends::Configuration {
+            stack.extend(e.operands(id));
+        } else {
+            found.push(id);
+        }
+    }
+    found
+}
+
 /// The terms in `q̇` (without `q̈`) that the code of two outputs or more computes, as the
 /// nodes the rest of each output's code reads of them, in the arena's order.
 pub(super) fn shared_motion(

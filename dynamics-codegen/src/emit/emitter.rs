@@ -43,6 +43,9 @@ pub(super) struct Emitter<'a> {
     pub(super) temporary_prefix: &'static str,
     /// Whether there is a configuration function (the motion function takes its result).
     pub(super) has_configuration: bool,
+    /// Whether the function stores its result's elements into a local as they are computed
+    /// and returns it, as the `into` methods store into the caller's (a tree's `M`).
+    pub(super) returned_in_place: bool,
     /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
     pub(super) depth: Vec<Cell<u32>>,
@@ -63,6 +66,7 @@ impl<'a> Emitter<'a> {
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
+            returned_in_place: false,
             depth: vec![Cell::new(u32::MAX); n],
         }
     }
@@ -71,6 +75,24 @@ impl<'a> Emitter<'a> {
     /// computing them.
     pub(super) fn read_from(&mut self, computed: &[NodeId], shared: &Shared, origin: Origin) {
         for (&id, field) in computed.iter().zip(&shared.fields) {
+            let mut local = field.clone();
+            local.set_span(Span::mixed_site());
+            self.names[id.index()] = Some(local);
+            self.stop[id.index()] = true;
+            self.origin[id.index()] = origin;
+        }
+    }
+
+    /// [`Emitter::read_from`] for the nodes of `computed` that `keep` marks, by index.
+    pub(super) fn read_some_from(
+        &mut self,
+        computed: &[NodeId],
+        shared: &Shared,
+        origin: Origin,
+        keep: &[bool],
+    ) {
+        let kept = computed.iter().zip(&shared.fields);
+        for (&id, field) in kept.filter(|(id, _)| keep[id.index()]) {
             let mut local = field.clone();
             local.set_span(Span::mixed_site());
             self.names[id.index()] = Some(local);

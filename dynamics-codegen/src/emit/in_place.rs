@@ -84,8 +84,13 @@ impl Emitter<'_> {
         let (rows, zeros) = rows(shape)?;
         let mut statements = Vec::new();
         let mut places: Vec<Vec<TokenStream>> = vec![Vec::new(); self.graph.len()];
+        // A local starts as zeros: only the caller's matrix needs its zeros stored.
+        let zeros_stored = !self.returned_in_place;
         for row in &rows {
             if row.elements.iter().all(|&id| self.graph.is_zero(id)) {
+                if !zeros_stored {
+                    continue;
+                }
                 let (y, len) = (
                     place(&row.path),
                     Literal::usize_unsuffixed(row.elements.len()),
@@ -96,6 +101,9 @@ impl Emitter<'_> {
             for (k, &id) in row.elements.iter().enumerate() {
                 let path: Vec<usize> = row.path.iter().copied().chain([k]).collect();
                 if self.is_leaf(id) {
+                    if !zeros_stored && self.graph.is_zero(id) {
+                        continue;
+                    }
                     let (y, e) = (place(&path), self.leaf(id));
                     statements.push(quote!(#y = #e;));
                 } else {

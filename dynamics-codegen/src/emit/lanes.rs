@@ -12,7 +12,7 @@
 //! A lane of every block is written as before.
 
 use super::emitter::Emitter;
-use super::names::local;
+use super::names::{local, OUTPUT};
 use super::plan::Place;
 use crate::symbolic::{NodeId, Of, Tangents, Term, BLOCK};
 use crate::trace::Shape;
@@ -44,6 +44,18 @@ pub(crate) fn lane_text(plan: usize, lane: usize) -> String {
 /// `n` as a literal without a suffix (`2`, not `2usize`).
 fn unsuffixed(n: usize) -> proc_macro2::Literal {
     proc_macro2::Literal::usize_unsuffixed(n)
+}
+
+/// The row of a Jacobian that lane `l` of plan `p` holds: `dq7.row()`, or `dq7.row_at(1)` for
+/// a lane kept in fewer blocks than the whole.
+fn lane_row(p: usize, plan: &Tangents, l: usize, blocks: &[Range<usize>]) -> TokenStream {
+    let x = lane_name(p, l);
+    if blocks[l].len() == plan.block_count() {
+        quote!(#x.row())
+    } else {
+        let at = unsuffixed(blocks[l].start);
+        quote!(#x.row_at(#at))
+    }
 }
 
 /// The number of lanes of a plan of `n` directions: whole AVX-512 registers of `f64`.
@@ -144,6 +156,16 @@ impl Emitter<'_> {
             let name = lane_name(p, k);
             let value = self.lane(p, plan, k, queue.blocks(p));
             statements.push(quote!(let #name = #value;));
+            if self.returned_in_place {
+                // Its rows stored at once, so that it need not be kept to the end.
+                let y = local(OUTPUT);
+                let rows = plan.outputs.iter().enumerate();
+                for (i, _) in rows.filter(|(_, lane)| **lane == Some(k)) {
+                    let row = lane_row(p, plan, k, queue.blocks(p));
+                    let (p, i) = (unsuffixed(p), unsuffixed(i));
+                    statements.push(quote!(#y[#p][#i] = #row;));
+                }
+            }
         }
     }
 
@@ -277,14 +299,7 @@ impl Emitter<'_> {
                     let n = plan.directions;
                     let blocks = plan.blocks();
                     let rows = plan.outputs.iter().map(|lane| match lane {
-                        Some(l) if blocks[*l].len() == plan.block_count() => {
-                            let x = lane_name(p, *l);
-                            quote!(#x.row())
-                        }
-                        Some(l) => {
-                            let (x, at) = (lane_name(p, *l), unsuffixed(blocks[*l].start));
-                            quote!(#x.row_at(#at))
-                        }
+                        Some(l) => lane_row(p, plan, *l, &blocks),
                         None => quote!([T::ZERO; #n]),
                     });
                     quote!([#(#rows),*])

@@ -1,11 +1,11 @@
 //! One emission: the shared configuration and motion functions of a set of outputs, and each
 //! output's body reading them.
 
-use super::depends::{boundary, dependencies, shared_motion};
+use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
 use super::emitter::{Emitter, Origin};
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
-use crate::method::Argument;
+use crate::method::{Argument, Method};
 use crate::symbolic::NodeId;
 use crate::trace::{Equations, Shape};
 use quote::quote;
@@ -31,13 +31,7 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     // The shared functions take `q`: a method without it (friction) computes all it reads.
     let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
     let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
-    // Per output, the parameter- and q-only nodes its own code reads.
-    let mut shared = vec![false; eq.graph.len()];
-    for o in &outputs {
-        for id in boundary(eq, &depends, &o.shape.outputs()) {
-            shared[id.index()] = true;
-        }
-    }
+    let (shared, apart_reads) = configuration_reads(eq, &depends, &outputs);
     let boundary: Vec<NodeId> = eq
         .graph
         .nodes()
@@ -75,9 +69,20 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
         config_names(&mut e);
         e.motion(&motion_boundary, &field_names)
     });
+    let tree = branches(eq);
     let body = |o: &Output, shape: &Shape| {
         let mut e = Emitter::new(eq, Some(ctx));
+        // A tree's lanes: each row stored once its lane is computed.
+        e.returned_in_place = tree && matches!(shape, Shape::Lanes { .. });
         if !reads_q(&o) {
+            return e.function(shape, o.method);
+        }
+        if written_apart(eq, o) {
+            e.has_configuration = configuration.is_some();
+            if let Some(c) = &configuration {
+                e.read_some_from(&boundary, c, Origin::Configuration, &apart_reads);
+            }
+            e.returned_in_place = true;
             return e.function(shape, o.method);
         }
         config_names(&mut e);
@@ -107,4 +112,44 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
         motion,
         bodies,
     }
+}
+
+/// Whether `output` computes its terms in `q` itself, from the configuration's sines, cosines
+/// and constants, storing each element as soon as it is computed: the mass matrix of a tree
+/// ([`branches`]). Read from the configuration, its hundreds of
+/// elements would all be computed before the first is stored, and wait on the stack.
+fn written_apart(eq: &Equations, output: &Output) -> bool {
+    output.method == Method::MassMatrix && branches(eq)
+}
+
+/// Whether the robot branches (its `M` factored from the tips, [`crate::algo::Ldlt`]'s
+/// `reversed`).
+fn branches(eq: &Equations) -> bool {
+    eq.forward.factors.reversed
+}
+
+/// Per node, whether the code of `outputs` reads it from the configuration (the parameter- and
+/// q-only nodes), and whether an output written apart ([`written_apart`]) does.
+fn configuration_reads(
+    eq: &Equations,
+    depends: &[Depends],
+    outputs: &[&Output],
+) -> (Vec<bool>, Vec<bool>) {
+    let mut shared = vec![false; eq.graph.len()];
+    let mut apart_reads = vec![false; eq.graph.len()];
+    for o in outputs {
+        let reads = if written_apart(eq, o) {
+            let reads = trig_and_constants(eq, depends, &o.shape.outputs());
+            for id in &reads {
+                apart_reads[id.index()] = true;
+            }
+            reads
+        } else {
+            boundary(eq, depends, &o.shape.outputs())
+        };
+        for id in reads {
+            shared[id.index()] = true;
+        }
+    }
+    (shared, apart_reads)
 }

@@ -232,3 +232,55 @@ fn puma560_inverse_dynamics_stays_within_its_operation_budget() {
         "{mul} multiplications and {add} additions"
     );
 }
+
+/// The text of the generated function `pub(super) fn NAME<…>` up to the next function.
+fn generated_function<'a>(code: &'a str, name: &str) -> &'a str {
+    let start = code
+        .find(&format!("pub (super) fn {name} <"))
+        .unwrap_or_else(|| panic!("no {name} in {code}"));
+    let rest = &code[start + 1..];
+    &code[start..=start + rest.find("pub (super) fn").unwrap_or(rest.len())]
+}
+
+/// A tree's `M` is stored element by element into the result as soon as each is computed
+/// (its exact zeros left as the result starts), rather than returned as one array of values
+/// all computed first, and so are the rows of its `∂τ` in lanes; a chain's `M` stays one
+/// array, even where it has an exact zero.
+#[test]
+fn a_trees_mass_matrix_is_stored_as_it_is_computed() {
+    // Three parallel axes, joints 1 and 2 both hanging off joint 0: a planar fork whose links
+    // 1 and 2 move with joint 0 (M(0, 1), M(0, 2) ≠ 0) but not with each other (M(1, 2) =
+    // M(2, 1) = 0): seven entries to store.
+    let tree = expand(
+        "#[dynamics(gravity = [0, 0, -9.81], derivatives = true, joints = [revolute(name = \"root\"),
+            revolute(parent = \"root\", xyz = [0.3, 0, 0], axis = [0, 0, 1]),
+            revolute(parent = \"root\", xyz = [0, 0.3, 0], axis = [0, 0, 1])],
+            link(mass = 1, com = [0.1, 0, 0], inertia = [0.1, 0.2, 0.3, 0, 0, 0]),
+            link(mass = 2, com = [0.1, 0, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0]),
+            link(mass = 3, com = [0, 0.1, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0]))]
+         struct Fork;",
+    );
+    let m = generated_function(&tree, "mass_matrix");
+    assert!(m.contains("let mut y_ = [[T :: ZERO ; 3] ; 3] ;"), "{m}");
+    assert_eq!(m.matches("y_ [").count(), 7, "{m}");
+    assert!(
+        !m.contains("y_ [1] [2]") && !m.contains("y_ [2] [1]"),
+        "{m}"
+    );
+    // ∂τ in lanes: each of the six rows (∂τ_i/∂q, ∂τ_i/∂q̇, none zero) stored once its lane is.
+    let d = generated_function(&tree, "inverse_dynamics_derivatives");
+    assert!(
+        d.contains("let mut y_ = [[[T :: ZERO ; 3] ; 3] ; 2] ;"),
+        "{d}"
+    );
+    assert_eq!(d.matches("y_ [").count(), 6, "{d}");
+    // M(0, 1) = 0 here, exactly (the generated M has a zero): still a chain.
+    let chain = expand(
+        "#[dynamics(gravity = [0, 0, -9.81], dh = [[q, 0.4, 0.1, 90 deg], [q, 0, 0.5, 0]],
+            link(mass = 2, com = [0, 0.1, 0], inertia = [0.1, 0.2, 0.3, 0, 0, 0]),
+            link(mass = 1, com = [0.2, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]))]
+         struct Arm;",
+    );
+    let m = generated_function(&chain, "mass_matrix");
+    assert!(!m.contains("y_") && m.contains("T :: ZERO"), "{m}");
+}
