@@ -56,23 +56,7 @@ pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
 /// configuration and the configuration's operands of the nodes in `q̇` or `q̈`, except zero,
 /// one and `q_i`, which are written in place.
 pub(super) fn boundary(eq: &Equations, depends: &[Depends], outputs: &[NodeId]) -> Vec<NodeId> {
-    let e = Emitter::new(eq, None);
-    let mut seen = vec![false; eq.graph.len()];
-    let mut found = Vec::new();
-    let mut stack = outputs.to_vec();
-    while let Some(id) = stack.pop() {
-        if std::mem::replace(&mut seen[id.index()], true) {
-            continue;
-        }
-        if depends[id.index()] >= Depends::Velocity {
-            stack.extend(e.operands(id));
-        } else if !matches!(eq.graph.node(id), Node::Var(Var::Q(_)))
-            && !matches!(eq.graph.node(id), Node::Const(c) if c.is_zero() || c.is_one())
-        {
-            found.push(id);
-        }
-    }
-    found
+    frontier(eq, outputs, |id| depends[id.index()] >= Depends::Velocity)
 }
 
 /// The nodes the code of `outputs` reads when it computes its terms in `q` itself rather than
@@ -85,6 +69,18 @@ pub(super) fn trig_and_constants(
     depends: &[Depends],
     outputs: &[NodeId],
 ) -> Vec<NodeId> {
+    frontier(eq, outputs, |id| {
+        let arithmetic = matches!(
+            eq.graph.node(id),
+            Node::Add(..) | Node::Neg(_) | Node::Mul(..)
+        );
+        arithmetic && depends[id.index()] >= Depends::Configuration
+    })
+}
+
+/// Where a walk down from `outputs` stops: the nodes it does not `descend` into, except zero,
+/// one and `q_i`, which the code writes in place.
+fn frontier(eq: &Equations, outputs: &[NodeId], descend: impl Fn(NodeId) -> bool) -> Vec<NodeId> {
     let e = Emitter::new(eq, None);
     let mut seen = vec![false; eq.graph.len()];
     let mut found = Vec::new();
@@ -93,16 +89,14 @@ pub(super) fn trig_and_constants(
         if std::mem::replace(&mut seen[id.index()], true) {
             continue;
         }
-        let node = eq.graph.node(id);
-        if matches!(node, Node::Var(Var::Q(_)))
-            || matches!(node, Node::Const(c) if c.is_zero() || c.is_one())
-        {
-            continue;
-        }
-        let arithmetic = matches!(node, Node::Add(..) | Node::Neg(_) | Node::Mul(..));
-        if arithmetic && depends[id.index()] >= Depends::Configuration {
+        let in_place = match eq.graph.node(id) {
+            Node::Var(Var::Q(_)) => true,
+            Node::Const(c) => c.is_zero() || c.is_one(),
+            _ => false,
+        };
+        if descend(id) {
             stack.extend(e.operands(id));
-        } else {
+        } else if !in_place {
             found.push(id);
         }
     }
