@@ -310,15 +310,16 @@ fn random_robots_against_the_rank_of_the_textbook_methods_torques() {
     );
 }
 
-/// `Y_B π_B` of a robot at a state.
-fn predicted<R, const N: usize, const B: usize>(
+/// `Y_B π_B` of a robot at a state (a robot with mimic joints has `L` links past its `N`
+/// coordinates).
+pub(crate) fn predicted<R, const N: usize, const B: usize, const L: usize>(
     robot: &R,
     q: &[f64; N],
     qd: &[f64; N],
     qdd: &[f64; N],
 ) -> Vec<f64>
 where
-    R: DynamicsBaseParameters<N, B>,
+    R: DynamicsBaseParameters<N, B, L>,
 {
     let y = robot.base_regressor(q, qd, qdd);
     // Written in place, every element of a buffer that held something else, bit for bit.

@@ -12,6 +12,7 @@
 //!   Pinocchio's projected regressor (`mimic_regressor.rs` computes it from the file).
 //! * The batch form over states of the mimic arm.
 
+use crate::mimic_regressor::rank;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsRegressor};
 use dynamics_tests::reference::TOLERANCE;
@@ -87,24 +88,6 @@ where
     tau
 }
 
-/// `Y_B π_B`.
-fn base_predicted<R, const N: usize, const B: usize, const L: usize>(
-    robot: &R,
-    q: &[f64; N],
-    qd: &[f64; N],
-    qdd: &[f64; N],
-) -> Vec<f64>
-where
-    R: DynamicsBaseParameters<N, B, L>,
-{
-    let (yb, pb) = (
-        robot.base_regressor(q, qd, qdd),
-        robot.base_parameters::<f64>(),
-    );
-    let row = |r: &[f64; B]| r.iter().zip(&pb).map(|(a, b)| a * b).sum();
-    yb.iter().map(row).collect()
-}
-
 fn check(what: &str, got: &[f64], want: &[f64]) {
     let e = scaled_error(got, want);
     assert!(
@@ -126,7 +109,11 @@ fn a_mimic_arms_regressor_has_a_block_per_link_and_a_row_per_coordinate() {
     for (q, qd, qdd) in states {
         let tau = Mimic.inverse_dynamics(&q, &qd, &qdd);
         check("Y π + joints", &predicted(&Mimic, &q, &qd, &qdd), &tau);
-        check("Y_B π_B", &base_predicted(&Mimic, &q, &qd, &qdd), &tau);
+        check(
+            "Y_B π_B",
+            &crate::base_parameters::predicted(&Mimic, &q, &qd, &qdd),
+            &tau,
+        );
         // Y = Sᵀ Y_free at the full state: rows 1 and 2 of the free arm's summed, 2 times K.
         let (fq, fqd, fqdd) = (full(&q, true), full(&qd, false), full(&qdd, false));
         let y_free = Free.regressor(&fq, &fqd, &fqdd);
@@ -238,7 +225,7 @@ fn the_generated_regressor_of_the_mimic_panda_is_pinocchios() {
             .max(scaled_error(&y_pi, &numbers(&sample["tau"])))
             .max(scaled_error(&predicted(&PandaMimic, &q, &qd, &qdd), &tau))
             .max(scaled_error(
-                &base_predicted(&PandaMimic, &q, &qd, &qdd),
+                &crate::base_parameters::predicted(&PandaMimic, &q, &qd, &qdd),
                 &tau,
             ));
     }
@@ -273,21 +260,4 @@ fn ranks_over_states() -> (usize, usize) {
         }
     }
     (rank(&links), rank(&both))
-}
-
-/// Numerical rank: the singular values above 1e-9 of the largest, the columns scaled to unit
-/// norm (those of rounding alone, below 1e-12 of the largest, dropped).
-fn rank(rows: &[Vec<f64>]) -> usize {
-    let width = rows[0].len();
-    let norms: Vec<f64> = (0..width)
-        .map(|c| rows.iter().map(|r| r[c] * r[c]).sum::<f64>().sqrt())
-        .collect();
-    let largest = norms.iter().fold(0.0_f64, |m, &x| m.max(x));
-    let kept: Vec<usize> = (0..width).filter(|&c| norms[c] > 1e-12 * largest).collect();
-    let m = nalgebra::DMatrix::from_fn(rows.len(), kept.len(), |i, j| {
-        rows[i][kept[j]] / norms[kept[j]]
-    });
-    let singular = m.singular_values();
-    let largest = singular.max();
-    singular.iter().filter(|&&s| s > 1e-9 * largest).count()
 }

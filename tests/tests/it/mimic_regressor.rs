@@ -89,7 +89,7 @@ fn the_mimic_pandas_regressor_is_pinocchios_projected() {
 /// Numerical rank of `rows`, its columns scaled to unit norm: the singular values above 1e-9 of
 /// the largest. Columns of rounding alone (below 1e-12 of the largest column) are dropped
 /// first: Pinocchio's has one of norm 8e-16, which scaling would make a unit column.
-fn rank(rows: &[Vec<f64>]) -> usize {
+pub(crate) fn rank(rows: &[Vec<f64>]) -> usize {
     let width = rows[0].len();
     let norms: Vec<f64> = (0..width)
         .map(|c| rows.iter().map(|r| r[c] * r[c]).sum::<f64>().sqrt())
