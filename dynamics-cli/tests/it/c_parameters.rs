@@ -104,9 +104,9 @@ fn a_robot_with_parameters_computes_the_graphs_values() {
 }
 
 /// The opt-in families too (`--with derivatives,regressor,base_parameters,tip_kinematics`):
-/// their functions,
-/// stacks of matrices and a solve with its derivatives among them, against the graph (one
-/// build: the header is large).
+/// their functions, stacks of matrices and a solve with its derivatives among them, against the
+/// graph: a two-link arm's header built by every compiler (each one's flow analyses see the
+/// families' code), PUMA 560's by one, unoptimized (it is large).
 #[test]
 fn the_opt_in_families_compute_the_graphs_values() {
     let with = [
@@ -115,26 +115,34 @@ fn the_opt_in_families_compute_the_graphs_values() {
         "base_parameters",
         "tip_kinematics",
     ];
-    let robot = c_support::robot_with("robots/puma560.toml", &with);
-    for name in [
-        "puma560_inverse_dynamics_derivatives",
-        "puma560_base_regressor_f32",
-        "puma560_joint_torques_for_tip_wrenches",
+    for (file, reach) in [
+        ("robots/two_link_friction.toml", Reach::Compilers),
+        ("robots/puma560.toml", Reach::First),
     ] {
-        assert!(robot.functions.iter().any(|f| f.name == name), "{name}");
-    }
-    let states: Vec<State> = (0..3)
-        .map(|k| {
-            let x = f64::from(k);
-            State {
-                q: (0..6).map(|i| 0.3 * x - 0.1 * f64::from(i)).collect(),
-                qd: (0..6).map(|i| 0.2 - 0.15 * x * f64::from(i)).collect(),
-                qdd: (0..6).map(|i| 1.0 - 0.3 * f64::from(i)).collect(),
-                tau: (0..6).map(|i| 5.0 - x - f64::from(i)).collect(),
-            }
-        })
-        .collect();
-    for run in &c_support::compile_and_run_builds(&robot, &states, Reach::First) {
-        check_against_graph(&robot, &states, run);
+        let robot = c_support::robot_with(file, &with);
+        let n = robot.eq.dof;
+        for name in [
+            "inverse_dynamics_derivatives",
+            "base_regressor_f32",
+            "joint_torques_for_tip_wrenches",
+        ] {
+            let name = format!("{}_{name}", robot.name);
+            assert!(robot.functions.iter().any(|f| f.name == name), "{name}");
+        }
+        let states: Vec<State> = (0..3)
+            .map(|k| {
+                let x = f64::from(k);
+                let joints = (0..n).map(|i| f64::from(u32::try_from(i).expect("few joints")));
+                State {
+                    q: joints.clone().map(|i| 0.3 * x - 0.1 * i).collect(),
+                    qd: joints.clone().map(|i| 0.2 - 0.15 * x * i).collect(),
+                    qdd: joints.clone().map(|i| 1.0 - 0.3 * i).collect(),
+                    tau: joints.map(|i| 5.0 - x - i).collect(),
+                }
+            })
+            .collect();
+        for run in &c_support::compile_and_run_builds(&robot, &states, reach) {
+            check_against_graph(&robot, &states, run);
+        }
     }
 }

@@ -6,7 +6,7 @@
 //! among them), unoptimized, and checked against the traced graph at five of the reference
 //! data's states.
 
-use crate::c_support::{self, check_against_graph, compile_and_run_builds_at, root, Reach, State};
+use crate::c_support::{self, check_against_graph, compile_and_run_builds, root, Reach, State};
 use serde_json::Value;
 
 /// The first `count` samples of `tests/data/trees/<file>` as states, their torques with the
@@ -57,8 +57,7 @@ fn baxter_s_header_with_derivatives_past_sixteen_joints() {
     assert!(header.contains("dynamics_unit24[18][k_]"));
     assert!(!header.contains("dynamics_unit["));
     let states = states("baxter_no_mimic.json", 5);
-    // Unoptimized: optimizing this header took most of the command line's test time.
-    let runs = compile_and_run_builds_at(&robot, &states, Reach::First, false);
+    let runs = compile_and_run_builds(&robot, &states, Reach::First);
     if runs.is_empty() {
         eprintln!("no C compiler (gcc, clang, g++) found: Baxter's C header is not checked");
         return;
@@ -91,7 +90,7 @@ fn the_mimic_pandas_regressor_in_c() {
     );
     assert!(header.contains("static const int panda_joint_rows[9] = {0, 1, 2, 3, 4, 5, 6, 7, 7};"));
     let states = states("panda_fingers_regressor.json", 3);
-    let runs = compile_and_run_builds_at(&robot, &states, Reach::First, false);
+    let runs = compile_and_run_builds(&robot, &states, Reach::First);
     for run in &runs {
         check_against_graph(&robot, &states, run);
     }

@@ -93,12 +93,14 @@ fn compile(cc: &str, flags: &[&str], extra: &[&str], optimize: bool, files: (&Pa
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub enum Reach {
     /// The first compiler found, with `<math.h>`'s sines and cosines (and the tangents in
-    /// lanes, where the header has them): for a large header.
+    /// lanes, where the header has them), unoptimized: for a large header, or one whose code
+    /// is of a kind another test builds every way.
     First,
-    /// Every compiler, each with `<math.h>`'s (and the lanes): the header's own and default
-    /// sines and cosines are the same text in every header, built every way on smaller ones.
+    /// Every compiler, each with `<math.h>`'s (and the lanes), the first build optimized (`-O1`,
+    /// where the compilers' flow analyses warn): the header's own and default sines and
+    /// cosines are the same text in every header, built every way on smaller ones.
     Compilers,
-    /// Every compiler, every build.
+    /// Every compiler, every build, the first optimized.
     EveryWay,
 }
 
@@ -109,20 +111,10 @@ pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
     compile_and_run_builds(robot, states, Reach::EveryWay)
 }
 
-/// [`compile_and_run`], built as far as `reach` says.
+/// [`compile_and_run`], built as far as `reach` says. Optimizing a large header took most of
+/// the command line's test time and finds nothing the small headers of the same code do not.
 pub fn compile_and_run_builds(robot: &Robot, states: &[State], reach: Reach) -> Vec<Run> {
-    compile_and_run_builds_at(robot, states, reach, true)
-}
-
-/// [`compile_and_run_builds`], each compiler's first build optimized only with
-/// `optimize_first`: a header far larger than the others' (a tree's with its derivatives)
-/// whose flow-analysis warnings the serial robots' headers already cover.
-pub fn compile_and_run_builds_at(
-    robot: &Robot,
-    states: &[State],
-    reach: Reach,
-    optimize_first: bool,
-) -> Vec<Run> {
+    let optimize_first = reach != Reach::First;
     // Two robots may share a name (the Panda's description file and its URDF), and tests run
     // side by side: a directory of their own per header.
     let mut hasher = std::collections::hash_map::DefaultHasher::new();

@@ -8,9 +8,7 @@ mod batch;
 mod builds;
 mod simplified;
 
-pub use builds::{
-    compile_and_run, compile_and_run_builds, compile_and_run_builds_at, compilers, Reach,
-};
+pub use builds::{compile_and_run, compile_and_run_builds, compilers, Reach};
 
 use dynamics_codegen::emit_c::{functions, header, prefix, Function, Precision, Returns};
 use dynamics_codegen::method::{Argument, Method};
