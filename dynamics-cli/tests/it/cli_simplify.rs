@@ -184,11 +184,11 @@ fn a_urdfs_efforts_are_the_rated_torques() {
 }
 
 /// A mistake in the table: exit code 1 and `file:line:col: simplify: ...`, as the derive
-/// reports it (`dynamics-macros/tests/ui/files/simplify_mistakes.stderr`), for every command that
+/// reports it (`dynamics-runtime/tests/ui/files/simplify_mistakes.stderr`), for every command that
 /// reads the table.
 #[test]
 fn a_mistake_in_the_table_at_its_line_and_column() {
-    let file = "dynamics-macros/tests/ui/files/simplify_mistakes.toml";
+    let file = "dynamics-runtime/tests/ui/files/simplify_mistakes.toml";
     for args in [
         vec!["emit", file],
         vec!["emit", "--lang", "c", file],

@@ -47,14 +47,14 @@ fn urdf_errors_name_the_file_line_and_column() {
     // no longer an error; a `<mimic>` naming itself is, at the element.
     let out = dynamics(&["stats", "robots/urdf/panda.urdf"]);
     assert!(out.status.success(), "{}", stderr(&out));
-    let file = "dynamics-macros/tests/ui/trees/mimic_itself.urdf";
+    let file = "dynamics-runtime/tests/ui/trees/mimic_itself.urdf";
     let out = dynamics(&["inspect", file]);
     assert_eq!(out.status.code(), Some(1));
     let want = format!(
         "{file}:25:5: joint `elbow`'s `<mimic joint=\"elbow\">`: a joint cannot follow itself"
     );
     assert!(stderr(&out).contains(&want), "{}", stderr(&out));
-    let file = "dynamics-macros/tests/ui/urdf/negative_mass.urdf";
+    let file = "dynamics-runtime/tests/ui/urdf/negative_mass.urdf";
     let out = dynamics(&["inspect", file]);
     assert_eq!(out.status.code(), Some(1));
     let want = format!("dynamics: {file}:15:20: link `fore`: the mass is negative (-1.5)");

@@ -11,7 +11,7 @@
 //!   known to build;
 //! * `tests/golden/puma560.h`: `dynamics emit --lang c robots/puma560.toml`, the C header
 //!   (which `tests/it/c_header.rs` compiles and checks), and `tests/golden/arm_urdf.h`, a
-//!   URDF's (`dynamics-macros/tests/ui/urdf/arm.urdf`).
+//!   URDF's (`dynamics-runtime/tests/ui/urdf/arm.urdf`).
 //!
 //! A stale file fails the test with a line diff. After a deliberate change, refresh them all:
 //!
@@ -89,7 +89,7 @@ fn cases() -> Vec<Case> {
             "emit",
             "--lang",
             "c",
-            "dynamics-macros/tests/ui/urdf/arm.urdf",
+            "dynamics-runtime/tests/ui/urdf/arm.urdf",
         ]
         .map(String::from)
         .to_vec(),

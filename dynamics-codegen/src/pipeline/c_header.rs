@@ -118,7 +118,7 @@ mod tests {
         );
         assert_eq!((header.robot.as_str(), header.dof), ("puma560", 6));
         assert!(header.fields.is_empty());
-        let arm = loaded("dynamics-macros/tests/ui/urdf/arm.urdf");
+        let arm = loaded("dynamics-runtime/tests/ui/urdf/arm.urdf");
         let header = arm.c_header(families, None, None).expect("a header");
         assert!(
             header.text == golden("arm_urdf.h"),

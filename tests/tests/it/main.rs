@@ -1,8 +1,8 @@
 //! The workspace's integration tests, one module per file, in one test binary: one link of the
 //! generator, the runtime and the reference instead of one per file, and the robots of
 //! `dynamics_tests::robots` derived once for all. `cargo test -p dynamics-tests --test it
-//! regressor::` runs one file's tests. The derive's compile-fail tests live with it, in
-//! `dynamics-macros/tests/ui.rs`.
+//! regressor::` runs one file's tests. The derive's compile-fail tests live with the runtime
+//! that users derive through, in `dynamics-runtime/tests/ui.rs`.
 
 mod base_parameters;
 mod batch;
