@@ -181,7 +181,10 @@ fn into_leaves_zero_blocks<R: Dynamics<N>, const N: usize>(
                 if ancestor(i, j) || ancestor(j, i) {
                     // Written, unless zero at every state (some element along one branch may be).
                     let left = got.is_nan() && want == 0.0;
-                    assert!(got.to_bits() == want.to_bits() || left, "{file}: M[{i}][{j}]");
+                    assert!(
+                        got.to_bits() == want.to_bits() || left,
+                        "{file}: M[{i}][{j}]"
+                    );
                 } else {
                     assert!(got.is_nan(), "{file}: M[{i}][{j}] between branches written");
                 }
