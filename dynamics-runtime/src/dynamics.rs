@@ -117,7 +117,9 @@ macro_rules! into_method {
         /// the same values, each stored where it is computed rather than returned together (the
         /// faster of the two: hundreds of values do not fit in the registers and would wait on
         /// the stack for the copy). For stacking samples into the rows of an identification
-        /// problem without a copy.
+        /// problem without a copy. The elements that are zero at every state need not be
+        /// stored: a tree's `mass_matrix_into` leaves the blocks between its branches as `out`
+        /// has them, so `out` must hold zeros there (zeros, or an earlier result of the robot).
         #[inline]
         fn $into<T: Real>(&self, $($argument: $ty,)* out: &mut $ret) {
             *out = self.$name($($argument),*);

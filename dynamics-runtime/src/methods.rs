@@ -79,6 +79,7 @@ macro_rules! for_each_method {
                         summary: "M(q), with the actuator inertia on the diagonal.",
                         element: "D{i}{j} = D{j}{i} ({equation})",
                         diagonal: "D{i}{i} ({equation}) + actuator inertia",
+                        into: mass_matrix_into,
                     }
                     /// Coriolis matrix `C(q, qd)` with `C_ij = Σ_k D_ijk qd_k`, where the book's
                     /// D_ijk (eq. 6.44) are the Christoffel symbols of `M`. `Ṁ − 2C` is

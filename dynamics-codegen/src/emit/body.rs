@@ -56,7 +56,10 @@ impl Emitter<'_> {
         // The shared fields this function reads, bound under their names.
         statements.extend(self.bind_shared(true));
         statements.extend(self.joint_variables());
-        let into = method.in_place_name().is_some();
+        // A tree's `M` is written apart and in place: its `_into` leaves the zero blocks between
+        // the branches unwritten ([`Emitter::write_in_place`]).
+        let into = method.always_in_place()
+            || (method.in_place_name().is_some() && self.returned_in_place);
         if into || self.returned_in_place {
             if let Some((stores, zeros)) = self.write_in_place(shape, &output_names) {
                 statements.extend(stores);

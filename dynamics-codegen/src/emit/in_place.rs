@@ -84,7 +84,8 @@ impl Emitter<'_> {
         let (rows, zeros) = rows(shape)?;
         let mut statements = Vec::new();
         let mut places: Vec<Vec<TokenStream>> = vec![Vec::new(); self.graph.len()];
-        // A local starts as zeros: only the caller's matrix needs its zeros stored.
+        // A local starts as zeros, and a tree's `M` leaves them to the caller's matrix (the
+        // `_into`'s contract): only the regressors store their zeros.
         let zeros_stored = !self.returned_in_place;
         for row in &rows {
             if row.elements.iter().all(|&id| self.graph.is_zero(id)) {

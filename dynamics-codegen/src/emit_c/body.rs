@@ -109,7 +109,7 @@ impl<'a> Writer<'a> {
         }
         self.sines_and_cosines(&mut lines);
         let stores = self.stores(&shape, arrays);
-        if method.in_place_name().is_some() {
+        if method.always_in_place() {
             self.output_by_output(stores, &state, &mut lines);
         } else {
             let mut queue = Queue::new(&shape);

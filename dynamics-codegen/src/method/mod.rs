@@ -266,6 +266,15 @@ macro_rules! declare_method {
 for_each_method!(declare_method);
 
 impl Method {
+    /// Whether its result is always written in place (`into` in its row), its by-value form
+    /// calling that function on zeros: the regressors. `M`'s `_into` is written so only
+    /// where it is computed apart and stored element by element, a tree's (elsewhere the
+    /// trait's default copies the by-value result).
+    #[must_use]
+    pub fn always_in_place(self) -> bool {
+        self.in_place_name().is_some() && self != Method::MassMatrix
+    }
+
     /// The method called `name`.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Method> {

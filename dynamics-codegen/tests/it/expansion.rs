@@ -243,7 +243,7 @@ fn generated_function<'a>(code: &'a str, name: &str) -> &'a str {
 }
 
 /// A tree's `M` is stored element by element into the result as soon as each is computed
-/// (its exact zeros left as the result starts), rather than returned as one array of values
+/// (its exact zeros left as the caller's matrix has them), rather than returned as one array of values
 /// all computed first, and so are the rows of its `∂τ` in lanes; a chain's `M` stays one
 /// array, even where it has an exact zero.
 #[test]
@@ -260,12 +260,19 @@ fn a_trees_mass_matrix_is_stored_as_it_is_computed() {
             link(mass = 3, com = [0, 0.1, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0]))]
          struct Fork;",
     );
-    let m = generated_function(&tree, "mass_matrix");
-    assert!(m.contains("let mut y_ = [[T :: ZERO ; 3] ; 3] ;"), "{m}");
+    // Into the caller's matrix (`mass_matrix_into`, its zeros between branches left as they
+    // are); the by-value `mass_matrix` calls it on zeros.
+    let m = generated_function(&tree, "mass_matrix_into");
     assert_eq!(m.matches("y_ [").count(), 7, "{m}");
     assert!(
         !m.contains("y_ [1] [2]") && !m.contains("y_ [2] [1]"),
         "{m}"
+    );
+    let by_value = generated_function(&tree, "mass_matrix");
+    assert!(
+        by_value.contains("let mut y_ = [[T :: ZERO ; 3] ; 3] ;")
+            && by_value.contains("mass_matrix_into (p_ , q_ , & mut y_)"),
+        "{by_value}"
     );
     // ∂τ in lanes: each of the six rows (∂τ_i/∂q, ∂τ_i/∂q̇, none zero) stored once its lane is.
     let d = generated_function(&tree, "inverse_dynamics_derivatives");

@@ -159,6 +159,45 @@ fn zero_blocks<R: Dynamics<N>, const N: usize>(robot: &R, file: &str) {
         }
     }
     assert!(pairs > 0, "{file}: no pair of joints on different branches");
+    into_leaves_zero_blocks(robot, file, &ancestor);
+}
+
+/// `mass_matrix_into` writes M's elements along each branch, bit for bit the by-value
+/// `mass_matrix`'s, and leaves the exact zeros between branches as the caller's matrix has them
+/// (NaN stays NaN there): a matrix of zeros, or the previous sample's M, becomes M.
+fn into_leaves_zero_blocks<R: Dynamics<N>, const N: usize>(
+    robot: &R,
+    file: &str,
+    ancestor: &dyn Fn(usize, usize) -> bool,
+) {
+    let mut previous = [[0.0; N]; N];
+    for s in samples(&format!("trees/{file}")) {
+        let q = vector::<N>(&s["q"]);
+        let want = robot.mass_matrix(&q);
+        let mut nan = [[f64::NAN; N]; N];
+        robot.mass_matrix_into(&q, &mut nan);
+        for (i, (got, want)) in nan.iter().zip(&want).enumerate() {
+            for (j, (&got, &want)) in got.iter().zip(want).enumerate() {
+                if ancestor(i, j) || ancestor(j, i) {
+                    // Written, unless zero at every state (some element along one branch may be).
+                    let left = got.is_nan() && want == 0.0;
+                    assert!(
+                        got.to_bits() == want.to_bits() || left,
+                        "{file}: M[{i}][{j}]"
+                    );
+                } else {
+                    assert!(got.is_nan(), "{file}: M[{i}][{j}] between branches written");
+                }
+            }
+        }
+        let mut zeros = [[0.0; N]; N];
+        robot.mass_matrix_into(&q, &mut zeros);
+        robot.mass_matrix_into(&q, &mut previous);
+        for m in [zeros, previous] {
+            let bits = |m: [[f64; N]; N]| m.map(|row| row.map(f64::to_bits));
+            assert_eq!(bits(m), bits(want), "{file}");
+        }
+    }
 }
 
 #[test]
