@@ -38,7 +38,16 @@ impl Graph {
     /// Marks the nodes that `outputs` depend on.
     #[must_use]
     pub fn live(&self, outputs: &[NodeId]) -> Vec<bool> {
-        let mut live = vec![false; self.nodes.len()];
+        let mut live = self.live_below(outputs);
+        live.resize(self.nodes.len(), false);
+        live
+    }
+
+    /// [`Graph::live`] up to the last of `outputs` (an operand comes before what reads it):
+    /// what a walk up to there reads, without clearing the rest of the graph.
+    fn live_below(&self, outputs: &[NodeId]) -> Vec<bool> {
+        let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
+        let mut live = vec![false; end];
         let mut stack: Vec<NodeId> = outputs.to_vec();
         while let Some(id) = stack.pop() {
             if std::mem::replace(&mut live[id.index()], true) {
@@ -60,7 +69,7 @@ impl Graph {
     /// per output, by forward differentiation of the graph.
     pub fn derivative_by(&mut self, outputs: &[NodeId], wrt: Wrt) -> Vec<NodeId> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
-        let live = self.live(outputs);
+        let live = self.live_below(outputs);
         let zero = self.num(Number::ZERO);
         let one = self.num(Number::ONE);
         let mut d: Vec<NodeId> = vec![zero; end];
@@ -123,15 +132,58 @@ impl Graph {
         outputs: &[NodeId],
         leaf: impl Fn(Var) -> Option<NodeId>,
     ) -> Vec<NodeId> {
+        let live = self.live_below(outputs);
+        let nodes = live.iter().enumerate().filter(|(_, &l)| l).map(|(i, _)| i);
+        self.substitute_at(outputs, nodes, leaf)
+    }
+
+    /// The live nodes of `outputs` that depend on a leaf `varies` picks, in the arena's order:
+    /// the only ones a substitution of those leaves can change, found once for many
+    /// substitutions ([`Graph::substitute_within`]).
+    #[must_use]
+    pub fn dependents(&self, outputs: &[NodeId], varies: impl Fn(Var) -> bool) -> Vec<NodeId> {
+        let live = self.live_below(outputs);
+        let mut depends = vec![false; live.len()];
+        let mut found = Vec::new();
+        for (i, _) in live.iter().enumerate().filter(|(_, &l)| l) {
+            let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
+            let node = self.node(id);
+            depends[i] = match node {
+                Node::Var(v) => varies(v),
+                _ => node.operands().any(|a| depends[a.index()]),
+            };
+            if depends[i] {
+                found.push(id);
+            }
+        }
+        found
+    }
+
+    /// [`Graph::substitute`] of leaves that only `nodes`, the [`Graph::dependents`] of
+    /// `outputs` on every leaf `leaf` replaces, depend on: the same nodes built in the same
+    /// order, without a walk of the others.
+    pub fn substitute_within(
+        &mut self,
+        outputs: &[NodeId],
+        nodes: &[NodeId],
+        leaf: impl Fn(Var) -> Option<NodeId>,
+    ) -> Vec<NodeId> {
+        self.substitute_at(outputs, nodes.iter().map(|id| id.index()), leaf)
+    }
+
+    /// The substitution's walk over `nodes`, by index in increasing order, every node that
+    /// can change among them.
+    fn substitute_at(
+        &mut self,
+        outputs: &[NodeId],
+        nodes: impl Iterator<Item = usize>,
+        leaf: impl Fn(Var) -> Option<NodeId>,
+    ) -> Vec<NodeId> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
-        let live = self.live(outputs);
         let mut new: Vec<NodeId> = (0..end)
             .map(|i| NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")))
             .collect();
-        for i in 0..end {
-            if !live[i] {
-                continue;
-            }
+        for i in nodes {
             let id = new[i];
             let node = self.node(id);
             let changed = node.operands().any(|a| new[a.index()] != a);
