@@ -90,7 +90,6 @@ impl Emitter<'_> {
         };
         self.returned_in_place = lanes_in_place.is_some();
         for (id, _) in self.graph.nodes() {
-            self.lanes_due(&mut lanes, Some(id), &mut statements);
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
                 continue;
@@ -100,6 +99,9 @@ impl Emitter<'_> {
             if self.uses[i] <= 1 && !bound_output {
                 continue;
             }
+            // The lanes due before a node that writes nothing come before the next that does:
+            // the same statements in the same order, without a call at every node.
+            self.lanes_due(&mut lanes, Some(id), &mut statements);
             let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
             statements.push(self.bind(id, element));
         }

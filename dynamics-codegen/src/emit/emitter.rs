@@ -102,8 +102,8 @@ impl<'a> Emitter<'a> {
     }
 
     /// The nodes an emitted node reads ([`plan::operands`]).
-    pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
-        plan::operands(self, self.eq, id)
+    pub(super) fn operands(&self, id: NodeId) -> plan::Operands {
+        plan::operands(self.eq, id)
     }
 
     pub(super) fn mark(&mut self, outputs: &[NodeId]) {

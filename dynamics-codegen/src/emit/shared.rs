@@ -2,7 +2,7 @@
 //! `q` alone, and the motion, what several methods compute from `q̇` too; and the statements
 //! with which a function binds the fields it reads of them.
 
-use super::depends::{dependencies, Depends};
+use super::depends::Depends;
 use super::emitter::{Emitter, Origin};
 use super::names::{
     local, Element, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN,
@@ -21,11 +21,11 @@ impl Emitter<'_> {
         &mut self,
         boundary: &[NodeId],
         field_names: &[Option<Element>],
+        depends: &[Depends],
     ) -> Shared {
         self.mark(boundary);
         let mut statements = Vec::new();
         self.constants_and_parameters(&mut statements);
-        let depends = dependencies(self.eq);
         statements.extend(self.joint_variables());
         // What depends on the parameters alone first, then the sines and cosines, then the
         // rest.
