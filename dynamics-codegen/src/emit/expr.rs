@@ -6,7 +6,7 @@ use super::emitter::Emitter;
 use super::names::local;
 use super::plan::{self, Function, Operator, Place, Precedence, Printer};
 use crate::symbolic::{NodeId, Number, Var};
-use proc_macro2::TokenStream;
+use proc_macro2::{Delimiter, Group, Punct, Spacing, TokenStream, TokenTree};
 use quote::quote;
 
 impl Emitter<'_> {
@@ -68,33 +68,51 @@ impl Printer for Emitter<'_> {
         (Self::literal(c), Precedence::Atom)
     }
 
-    fn binary(&self, a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
-        match op {
-            Operator::Add => quote!(#a + #b),
-            Operator::Sub => quote!(#a - #b),
-            Operator::Mul => quote!(#a * #b),
-            Operator::Div => quote!(#a / #b),
-        }
+    // The operators join their operands' streams by moving them: `quote!(#a + #b)` would copy
+    // each (a shared stream is copied when extended), at every level of an expression.
+    fn binary(&self, mut a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
+        let op = match op {
+            Operator::Add => '+',
+            Operator::Sub => '-',
+            Operator::Mul => '*',
+            Operator::Div => '/',
+        };
+        a.extend([TokenTree::Punct(Punct::new(op, Spacing::Alone))]);
+        a.extend([b]);
+        a
     }
 
     fn negate(&self, a: TokenStream) -> TokenStream {
-        quote!(-#a)
+        let mut minus = TokenStream::from(TokenTree::Punct(Punct::new('-', Spacing::Alone)));
+        minus.extend([a]);
+        minus
     }
 
     fn call(&self, f: Function, a: TokenStream) -> TokenStream {
-        match f {
-            Function::Sin => quote!(T::sin(#a)),
-            Function::Cos => quote!(T::cos(#a)),
-            Function::Tanh => quote!(T::tanh(#a)),
-            Function::Sign => quote!(T::sign(#a)),
-        }
+        let mut call = match f {
+            Function::Sin => quote!(T::sin),
+            Function::Cos => quote!(T::cos),
+            Function::Tanh => quote!(T::tanh),
+            Function::Sign => quote!(T::sign),
+        };
+        call.extend([parenthesized(a)]);
+        call
     }
 
-    fn mul_add(&self, x: TokenStream, y: TokenStream, a: TokenStream) -> TokenStream {
-        quote!(#x.mul_add(#y, #a))
+    fn mul_add(&self, mut x: TokenStream, mut y: TokenStream, a: TokenStream) -> TokenStream {
+        x.extend(quote!(.mul_add));
+        y.extend([TokenTree::Punct(Punct::new(',', Spacing::Alone))]);
+        y.extend([a]);
+        x.extend([parenthesized(y)]);
+        x
     }
 
     fn parenthesized(&self, a: TokenStream) -> TokenStream {
-        quote!((#a))
+        TokenStream::from(parenthesized(a))
     }
+}
+
+/// `(a)`, `a` moved into the group.
+fn parenthesized(a: TokenStream) -> TokenTree {
+    TokenTree::Group(Group::new(Delimiter::Parenthesis, a))
 }
