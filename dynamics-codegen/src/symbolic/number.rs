@@ -18,15 +18,40 @@ pub enum Number {
     Float(f64),
 }
 
-fn gcd(mut a: i128, mut b: i128) -> i128 {
-    a = a.abs();
-    b = b.abs();
+fn gcd(a: i128, b: i128) -> i128 {
+    // The constants of a trace are small: in 64 bits the remainders are one instruction each,
+    // where those of `i128` are library calls.
+    if let (Ok(a), Ok(b)) = (
+        u64::try_from(a.unsigned_abs()),
+        u64::try_from(b.unsigned_abs()),
+    ) {
+        return i128::from(gcd_u64(a, b));
+    }
+    let (mut a, mut b) = (a.abs(), b.abs());
     while b != 0 {
         let t = a % b;
         a = b;
         b = t;
     }
     a
+}
+
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        let t = a % b;
+        a = b;
+        b = t;
+    }
+    a
+}
+
+/// `a / b` of a divisor from [`gcd`], without the library's division where it is 1.
+fn divide(a: i128, b: i128) -> i128 {
+    if b == 1 {
+        a
+    } else {
+        a / b
+    }
 }
 
 impl Number {
@@ -50,7 +75,7 @@ impl Number {
             return None;
         }
         let g = gcd(num, den).max(1);
-        let (mut n, mut d) = (num / g, den / g);
+        let (mut n, mut d) = (divide(num, g), divide(den, g));
         if d < 0 {
             n = n.checked_neg()?;
             d = d.checked_neg()?;
@@ -263,8 +288,8 @@ impl std::ops::Mul for Number {
             let g1 = gcd(a, d).max(1);
             let g2 = gcd(c, b).max(1);
             let exact = (|| {
-                let num = (a / g1).checked_mul(c / g2)?;
-                Number::ratio(num, (b / g2).checked_mul(d / g1)?)
+                let num = divide(a, g1).checked_mul(divide(c, g2))?;
+                Number::ratio(num, divide(b, g2).checked_mul(divide(d, g1))?)
             })();
             if let Some(n) = exact {
                 return n;
