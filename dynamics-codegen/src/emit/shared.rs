@@ -56,7 +56,7 @@ impl Emitter<'_> {
         let ctx = self.ctx.expect("emission has a context");
         // Constants, once each.
         let mut constants = 0;
-        for (id, _) in self.graph.nodes() {
+        for (id, _) in self.graph.leaves() {
             if self.needed[id.index()] && self.is_named_constant(id) {
                 let value = self.leaf(id);
                 constants += 1;
@@ -68,7 +68,7 @@ impl Emitter<'_> {
         // Parameters, read once: `let [p_m1, _, p_cx1, …] = *p_;`.
         let mut parameters = vec![quote!(_); self.eq.fields.len()];
         let mut any = false;
-        for (id, node) in self.graph.nodes() {
+        for (id, node) in self.graph.leaves() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
                     parameters[usize::from(k)] = self.leaf(id);
