@@ -8,9 +8,15 @@ use super::number::Number;
 
 impl Graph {
     /// Evaluates every node in order, reading inputs from `input`.
-    pub fn eval(&self, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
-        let mut values: Vec<f64> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
+    pub fn eval(&self, input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        self.eval_below(self.nodes.len(), input)
+    }
+
+    /// Evaluates the first `end` nodes in order (the values of `outputs` need those before the
+    /// last of them), reading inputs from `input`.
+    pub fn eval_below(&self, end: usize, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        let mut values: Vec<f64> = Vec::with_capacity(end);
+        for node in &self.nodes[..end] {
             let v = match *node {
                 Node::Const(c) => c.to_f64(),
                 Node::Var(v) => input(v),
@@ -238,5 +244,38 @@ mod tests {
         assert!((values[d.index()] - (2.0 * 0.3f64).cos()).abs() < 1e-15);
         let independent = g.derivative(&[sc], 1)[0];
         assert!(g.is_zero(independent));
+    }
+
+    /// `π₁·s + π₂·q̇ + s·c`: the dependents on the placeholders are π₁, π₂, their products and
+    /// the sums above them, not `s·c`; substituting within them builds the nodes the whole
+    /// substitution builds, for each choice of the placeholder set to one.
+    #[test]
+    fn substitution_within_the_dependents_builds_the_same_nodes() {
+        let mut g = Graph::new();
+        let (p1, p2) = (g.var(Var::Inertial(0)), g.var(Var::Inertial(1)));
+        let (s, c, qd) = (g.var(Var::SinQ(0)), g.var(Var::CosQ(0)), g.var(Var::Qd(0)));
+        let (a, b, sc) = (g.mul(p1, s), g.mul(p2, qd), g.mul(s, c));
+        let ab = g.add(a, b);
+        let tau = [g.add(ab, sc), sc];
+        let dependents = g.dependents(&tau, |v| matches!(v, Var::Inertial(_)));
+        assert_eq!(dependents, vec![p1, p2, a, b, ab, tau[0]]);
+        for chosen in 0..2 {
+            let (zero, one) = (g.num(super::Number::ZERO), g.num(super::Number::ONE));
+            let leaf = |v| match v {
+                Var::Inertial(p) => Some(if p == chosen { one } else { zero }),
+                _ => None,
+            };
+            let whole = g.substitute(&tau, leaf);
+            let nodes = g.len();
+            let within = g.substitute_within(&tau, &dependents, leaf);
+            assert_eq!(within, whole);
+            assert_eq!(g.len(), nodes, "nothing new the second time");
+            let expected = if chosen == 0 {
+                g.add(s, sc)
+            } else {
+                g.add(qd, sc)
+            };
+            assert_eq!(whole, vec![expected, sc]);
+        }
     }
 }
