@@ -3,6 +3,7 @@
 
 use super::count::count;
 use super::emitter::Emitter;
+use super::expr::array;
 use super::lanes::{lane_operations, Queue};
 use super::names::{local, output_names, Element, OUTPUT};
 use super::parts::Body;
@@ -24,14 +25,17 @@ impl Emitter<'_> {
             None => self.temporary(),
         };
         let e = self.define(id);
-        self.names[id.index()] = Some(name.clone());
-        match element {
+        self.names.set(id.index(), name.clone());
+        let mut statement = match element {
             Some(element) => {
                 let doc = format!(" {}", element.describe());
-                quote!(#[doc = #doc] let #name = #e;)
+                quote!(#[doc = #doc] let #name =)
             }
-            None => quote!(let #name = #e;),
-        }
+            None => quote!(let #name =),
+        };
+        // Moved in, not interpolated: `quote!` would copy the expression's tokens.
+        statement.extend([e, quote!(;)]);
+        statement
     }
 
     /// A function's body computing `shape`: the configuration's fields it reads, then
@@ -62,7 +66,7 @@ impl Emitter<'_> {
                 statements.extend(stores);
                 let y = local(OUTPUT);
                 let (tokens, zeros) = if into {
-                    (quote!(#(#statements)*), Some(zeros))
+                    (statements.into_iter().collect(), Some(zeros))
                 } else {
                     (quote!(let mut #y = #zeros; #(#statements)* #y), None)
                 };
@@ -114,7 +118,7 @@ impl Emitter<'_> {
             self.result(shape)
         };
         Body {
-            tokens: quote!(#(#statements)* #result),
+            tokens: statements.into_iter().chain([result]).collect(),
             ops: OpCount {
                 lanes: lane_operations(shape),
                 ..count(self.eq, &outputs)
@@ -203,19 +207,15 @@ impl Emitter<'_> {
     pub(super) fn matrix(&mut self, m: &[Vec<NodeId>]) -> TokenStream {
         let rows: Vec<TokenStream> = m
             .iter()
-            .map(|r| {
-                let items: Vec<TokenStream> =
-                    r.iter().map(|&id| self.expr(id, Place::Top)).collect();
-                quote!([#(#items),*])
-            })
+            .map(|r| array(r.iter().map(|&id| self.expr(id, Place::Top))))
             .collect();
-        quote!([#(#rows),*])
+        array(rows)
     }
 
     /// The array of matrices `s`.
     fn stack(&mut self, s: &[Vec<Vec<NodeId>>]) -> TokenStream {
         let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
-        quote!([#(#matrices),*])
+        array(matrices)
     }
 
     /// A new temporary, `t3` (`u3`, `v3` in the shared functions).

@@ -3,6 +3,7 @@
 
 use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
 use super::emitter::{Emitter, Origin};
+use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
 use crate::method::{Argument, Method};
@@ -106,12 +107,11 @@ pub(super) fn emit_with(
             // Tangents in lanes where the build computes them there (AVX-512), else the columns
             // one by one. The test is a constant: the compiler keeps one branch.
             Shape::Lanes { .. } => {
-                let (lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
-                let (a, b) = (&lanes.tokens, &scalar.tokens);
-                Body {
-                    tokens: quote!(if T::TANGENTS_IN_LANES { #a } else { #b }),
-                    ..lanes
-                }
+                let (mut lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
+                let a = std::mem::take(&mut lanes.tokens);
+                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+                tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
+                Body { tokens, ..lanes }
             }
             _ => body(o, &o.shape),
         })

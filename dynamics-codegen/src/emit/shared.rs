@@ -46,7 +46,10 @@ impl Emitter<'_> {
         let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
         Shared {
             fields,
-            tokens: quote!(#(#statements)* #ty { #(#locals),* }),
+            tokens: statements
+                .into_iter()
+                .chain([quote!(#ty { #(#locals),* })])
+                .collect(),
         }
     }
 
@@ -62,7 +65,7 @@ impl Emitter<'_> {
                 constants += 1;
                 let k = local(&format!("k{constants}"));
                 statements.push(quote!(let #k: T = #value;));
-                self.names[id.index()] = Some(k);
+                self.names.set(id.index(), k);
             }
         }
         // Parameters, read once: `let [p_m1, _, p_cx1, …] = *p_;`.
@@ -152,7 +155,7 @@ impl Emitter<'_> {
                     let i = id.index();
                     self.stop[i] && self.needed[i] && self.origin[i] == origin
                 })
-                .filter_map(|(id, _)| self.names[id.index()].clone())
+                .filter_map(|(id, _)| self.names.get(id.index()).cloned())
                 .collect()
         };
         let (config, motion) = (read(Origin::Configuration), read(Origin::Motion));

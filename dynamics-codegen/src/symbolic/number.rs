@@ -352,6 +352,31 @@ mod tests {
         assert_eq!(Number::parse_decimal("."), None);
     }
 
+    /// Reduction on either side of 64 bits (where the gcd changes method): `2⁷⁰·3 / 2⁷⁰·6` is
+    /// `1/2`, `(2⁶⁴ − 1)·2 / 4` is `(2⁶⁴ − 1)/2` (odd numerator), signs to the numerator.
+    #[test]
+    fn reduction_across_64_bits() {
+        let big = 1i128 << 70;
+        assert_eq!(Number::ratio(3 * big, 6 * big), Number::ratio(1, 2));
+        assert_eq!(
+            Number::ratio(3 * big, 6 * big),
+            Some(Number::Rational(1, 2))
+        );
+        let max = i128::from(u64::MAX);
+        assert_eq!(Number::ratio(2 * max, 4), Some(Number::Rational(max, 2)));
+        assert_eq!(Number::ratio(-6, -4), Some(Number::Rational(3, 2)));
+        assert_eq!(Number::ratio(0, -7), Some(Number::ZERO));
+        assert_eq!(Number::ratio(5, 0), None);
+        // (2⁷⁰/3)·(9/2⁶⁹) = 6, reduced crosswise before multiplying.
+        let a = Number::ratio(big, 3).unwrap();
+        let b = Number::ratio(9, big / 2).unwrap();
+        assert_eq!(a * b, Number::int(6));
+        assert_eq!(
+            Number::int(-4) * Number::ratio(3, 8).unwrap(),
+            Number::ratio(-3, 2).unwrap()
+        );
+    }
+
     #[test]
     fn arithmetic_is_exact_and_falls_back_to_float() {
         let third = Number::ratio(1, 3).unwrap();
