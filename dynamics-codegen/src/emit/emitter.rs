@@ -37,6 +37,8 @@ pub(super) struct Emitter<'a> {
     pub(super) stop: Vec<bool>,
     /// Which shared function computes a stop node.
     pub(super) origin: Vec<Origin>,
+    /// The stop nodes, as they were read (each boundary in the arena's order).
+    pub(super) stops: Vec<NodeId>,
     pub(super) temporaries: usize,
     /// `t` in a method, `u` in the configuration and `v` in the motion, whose fields a method
     /// binds as locals too.
@@ -63,6 +65,7 @@ impl<'a> Emitter<'a> {
             names: Names::new(n),
             stop: vec![false; n],
             origin: vec![Origin::Here; n],
+            stops: Vec::new(),
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
@@ -79,6 +82,7 @@ impl<'a> Emitter<'a> {
             local.set_span(Span::mixed_site());
             self.names.set(id.index(), local);
             self.stop[id.index()] = true;
+            self.stops.push(id);
             self.origin[id.index()] = origin;
         }
     }
@@ -97,6 +101,7 @@ impl<'a> Emitter<'a> {
             local.set_span(Span::mixed_site());
             self.names.set(id.index(), local);
             self.stop[id.index()] = true;
+            self.stops.push(id);
             self.origin[id.index()] = origin;
         }
     }

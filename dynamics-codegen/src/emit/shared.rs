@@ -148,14 +148,18 @@ impl Emitter<'_> {
     /// function (`in_method` false), `let c_ = configuration(p_, q_);` and
     /// `let Configuration { s2, .. } = c_;`.
     pub(super) fn bind_shared(&self, in_method: bool) -> Vec<TokenStream> {
+        // The stop nodes in the arena's order, without a walk of the whole arena.
+        let mut stops = self.stops.clone();
+        stops.sort_unstable();
+        stops.dedup();
         let read = |origin: Origin| -> Vec<Ident> {
-            self.graph
-                .nodes()
-                .filter(|(id, _)| {
+            stops
+                .iter()
+                .filter(|id| {
                     let i = id.index();
-                    self.stop[i] && self.needed[i] && self.origin[i] == origin
+                    self.needed[i] && self.origin[i] == origin
                 })
-                .filter_map(|(id, _)| self.names.get(id.index()).cloned())
+                .filter_map(|id| self.names.get(id.index()).cloned())
                 .collect()
         };
         let (config, motion) = (read(Origin::Configuration), read(Origin::Motion));
