@@ -14,6 +14,7 @@ use crate::symbolic::{Node, NodeId};
 use crate::trace::{Shape, Solved};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
+use std::collections::HashMap;
 
 impl Emitter<'_> {
     /// `let name = expr;` for node `id`, which from then on is read by its name: an output
@@ -93,20 +94,26 @@ impl Emitter<'_> {
             _ => None,
         };
         self.returned_in_place = lanes_in_place.is_some();
+        // By node, rather than a search of the outputs at every node.
+        let mut is_output = vec![false; self.graph.len()];
+        for o in &outputs {
+            is_output[o.index()] = true;
+        }
+        let element_of: HashMap<NodeId, Element> = output_names.iter().copied().collect();
         for (id, _) in self.graph.nodes() {
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
                 continue;
             }
             // A scalar result is written in place unless it is read elsewhere too.
-            let bound_output = outputs.contains(&id) && !matches!(shape, Shape::Scalar(_));
+            let bound_output = is_output[i] && !matches!(shape, Shape::Scalar(_));
             if self.uses[i] <= 1 && !bound_output {
                 continue;
             }
             // The lanes due before a node that writes nothing come before the next that does:
             // the same statements in the same order, without a call at every node.
             self.lanes_due(&mut lanes, Some(id), &mut statements);
-            let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
+            let element = element_of.get(&id).copied();
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
