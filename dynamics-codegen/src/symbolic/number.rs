@@ -267,6 +267,12 @@ impl fmt::Display for Number {
 impl std::ops::Add for Number {
     type Output = Number;
     fn add(self, other: Number) -> Number {
+        // Integers, the most common case: what the general rule gives, without its gcd.
+        if let (Number::Rational(a, 1), Number::Rational(c, 1)) = (self, other) {
+            if let Some(sum) = a.checked_add(c) {
+                return Number::Rational(sum, 1);
+            }
+        }
         if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
             let exact = (|| {
                 let num = a.checked_mul(d)?.checked_add(c.checked_mul(b)?)?;
@@ -284,6 +290,11 @@ impl std::ops::Add for Number {
 impl std::ops::Mul for Number {
     type Output = Number;
     fn mul(self, other: Number) -> Number {
+        if let (Number::Rational(a, 1), Number::Rational(c, 1)) = (self, other) {
+            if let Some(product) = a.checked_mul(c) {
+                return Number::Rational(product, 1);
+            }
+        }
         if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
             let g1 = gcd(a, d).max(1);
             let g2 = gcd(c, b).max(1);
@@ -375,6 +386,12 @@ mod tests {
             Number::int(-4) * Number::ratio(3, 8).unwrap(),
             Number::ratio(-3, 2).unwrap()
         );
+        // Integers: exact, and past i128 a float, as for any rational.
+        assert_eq!(Number::int(-4) * Number::int(6), Number::int(-24));
+        assert_eq!(Number::int(7) + Number::int(-9), Number::int(-2));
+        let huge = Number::Rational(i128::MAX, 1);
+        assert!(!(huge + Number::ONE).is_exact());
+        assert!(!(huge * Number::int(2)).is_exact());
     }
 
     #[test]
