@@ -30,8 +30,8 @@ pub struct MethodCode {
     pub lanes: bool,
 }
 
-/// The generated code of a robot: the shared configuration (see [`emit`]) and the methods of
-/// the `Dynamics` impl.
+/// The generated code of a robot: the shared configuration (see [`emit`](super::emit)) and the
+/// methods of the `Dynamics` impl.
 pub struct Generated {
     /// Number of joints.
     pub dof: usize,

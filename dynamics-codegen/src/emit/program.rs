@@ -31,7 +31,7 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     emit_with(eq, all, ctx, &dependencies(eq))
 }
 
-/// [`emit`] with `depends`, [`dependencies`] of `eq`, which every family's emission shares.
+/// `emit` with `depends`, the dependencies of `eq`'s nodes, shared by every family's emission.
 pub(super) fn emit_with(
     eq: &Equations,
     all: &[Output],
