@@ -3,6 +3,7 @@
 
 use super::count::count;
 use super::emitter::Emitter;
+use super::expr::array;
 use super::lanes::{lane_operations, Queue};
 use super::names::{local, output_names, Element, OUTPUT};
 use super::parts::Body;
@@ -13,6 +14,7 @@ use crate::symbolic::{Node, NodeId};
 use crate::trace::{Shape, Solved};
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
+use std::collections::HashMap;
 
 impl Emitter<'_> {
     /// `let name = expr;` for node `id`, which from then on is read by its name: an output
@@ -24,14 +26,17 @@ impl Emitter<'_> {
             None => self.temporary(),
         };
         let e = self.define(id);
-        self.names[id.index()] = Some(name.clone());
-        match element {
+        self.names.set(id.index(), name.clone());
+        let mut statement = match element {
             Some(element) => {
                 let doc = format!(" {}", element.describe());
-                quote!(#[doc = #doc] let #name = #e;)
+                quote!(#[doc = #doc] let #name =)
             }
-            None => quote!(let #name = #e;),
-        }
+            None => quote!(let #name =),
+        };
+        // Moved in, not interpolated: `quote!` would copy the expression's tokens.
+        statement.extend([e, quote!(;)]);
+        statement
     }
 
     /// A function's body computing `shape`: the configuration's fields it reads, then
@@ -65,7 +70,7 @@ impl Emitter<'_> {
                 statements.extend(stores);
                 let y = local(OUTPUT);
                 let (tokens, zeros) = if into {
-                    (quote!(#(#statements)*), Some(zeros))
+                    (statements.into_iter().collect(), Some(zeros))
                 } else {
                     (quote!(let mut #y = #zeros; #(#statements)* #y), None)
                 };
@@ -92,18 +97,26 @@ impl Emitter<'_> {
             _ => None,
         };
         self.returned_in_place = lanes_in_place.is_some();
+        // By node, rather than a search of the outputs at every node.
+        let mut is_output = vec![false; self.graph.len()];
+        for o in &outputs {
+            is_output[o.index()] = true;
+        }
+        let element_of: HashMap<NodeId, Element> = output_names.iter().copied().collect();
         for (id, _) in self.graph.nodes() {
-            self.lanes_due(&mut lanes, Some(id), &mut statements);
             let i = id.index();
             if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
                 continue;
             }
             // A scalar result is written in place unless it is read elsewhere too.
-            let bound_output = outputs.contains(&id) && !matches!(shape, Shape::Scalar(_));
+            let bound_output = is_output[i] && !matches!(shape, Shape::Scalar(_));
             if self.uses[i] <= 1 && !bound_output {
                 continue;
             }
-            let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
+            // The lanes due before a node that writes nothing come before the next that does:
+            // the same statements in the same order, without a call at every node.
+            self.lanes_due(&mut lanes, Some(id), &mut statements);
+            let element = element_of.get(&id).copied();
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
@@ -115,7 +128,7 @@ impl Emitter<'_> {
             self.result(shape)
         };
         Body {
-            tokens: quote!(#(#statements)* #result),
+            tokens: statements.into_iter().chain([result]).collect(),
             ops: OpCount {
                 lanes: lane_operations(shape),
                 ..count(self.eq, &outputs)
@@ -204,19 +217,15 @@ impl Emitter<'_> {
     pub(super) fn matrix(&mut self, m: &[Vec<NodeId>]) -> TokenStream {
         let rows: Vec<TokenStream> = m
             .iter()
-            .map(|r| {
-                let items: Vec<TokenStream> =
-                    r.iter().map(|&id| self.expr(id, Place::Top)).collect();
-                quote!([#(#items),*])
-            })
+            .map(|r| array(r.iter().map(|&id| self.expr(id, Place::Top))))
             .collect();
-        quote!([#(#rows),*])
+        array(rows)
     }
 
     /// The array of matrices `s`.
     fn stack(&mut self, s: &[Vec<Vec<NodeId>>]) -> TokenStream {
         let matrices: Vec<TokenStream> = s.iter().map(|m| self.matrix(m)).collect();
-        quote!([#(#matrices),*])
+        array(matrices)
     }
 
     /// A new temporary, `t3` (`u3`, `v3` in the shared functions).

@@ -2,18 +2,18 @@
 //! cosines of an emitted function once inlined, and its depth, the longest chain of dependent
 //! operations from the inputs to a result.
 
-use super::emitter::Emitter;
 use super::parts::OpCount;
+use super::plan::operands;
 use super::sums::Sums;
-use crate::symbolic::{Node, NodeId, Var};
+use crate::symbolic::{Graph, Node, NodeId, Var};
 use crate::trace::Equations;
+use std::cell::Cell;
 
 /// Operation counts of the code computing `outputs`, shared parts included: what a function
 /// costs once the compiler has inlined the configuration and dropped what it does not read.
 #[must_use]
 pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
-    let mut e = Emitter::new(eq, None);
-    e.mark(outputs);
+    let e = Marked::new(eq, outputs);
     let mut ops = OpCount::default();
     for &o in outputs {
         ops.depth = ops.depth.max(e.depth(o) as usize);
@@ -33,4 +33,56 @@ pub fn count(eq: &Equations, outputs: &[NodeId]) -> OpCount {
         }
     }
     ops
+}
+
+/// What the code of some outputs computes, as an emitter without names marks it (every node
+/// computed where it is read, nothing read from a shared function): the nodes needed, how
+/// often each is read, and the depths once asked for. Only what counting needs, without an
+/// emitter's names.
+struct Marked<'a> {
+    graph: &'a Graph,
+    uses: Vec<u32>,
+    needed: Vec<bool>,
+    depth: Vec<Cell<u32>>,
+}
+
+impl<'a> Marked<'a> {
+    fn new(eq: &'a Equations, outputs: &[NodeId]) -> Marked<'a> {
+        let n = eq.graph.len();
+        let mut uses = vec![0; n];
+        let mut needed = vec![false; n];
+        let mut stack = outputs.to_vec();
+        for &o in outputs {
+            uses[o.index()] += 1;
+        }
+        while let Some(id) = stack.pop() {
+            if std::mem::replace(&mut needed[id.index()], true) {
+                continue;
+            }
+            for c in operands(eq, id) {
+                uses[c.index()] += 1;
+                stack.push(c);
+            }
+        }
+        Marked {
+            graph: &eq.graph,
+            uses,
+            needed,
+            depth: vec![Cell::new(u32::MAX); n],
+        }
+    }
+}
+
+impl Sums for Marked<'_> {
+    fn graph(&self) -> &Graph {
+        self.graph
+    }
+
+    fn in_place(&self, c: NodeId) -> bool {
+        self.uses[c.index()] <= 1
+    }
+
+    fn depths(&self) -> &[Cell<u32>] {
+        &self.depth
+    }
 }

@@ -3,8 +3,8 @@
 //! is computed once in the configuration, a term in `q̇` that several methods need once in the
 //! motion, the rest in each method.
 
-use super::emitter::Emitter;
 use super::parts::Output;
+use super::plan::operands;
 use crate::symbolic::{Node, NodeId, Var};
 use crate::trace::Equations;
 
@@ -23,7 +23,6 @@ pub(super) enum Depends {
 
 /// What each node of `eq`'s graph depends on, by index.
 pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
-    let e = Emitter::new(eq, None);
     let mut depends = vec![Depends::Constants; eq.graph.len()];
     for (id, node) in eq.graph.nodes() {
         depends[id.index()] = match node {
@@ -39,9 +38,9 @@ pub(super) fn dependencies(eq: &Equations) -> Vec<Depends> {
             // A sine or cosine of `q_i`, or an operation: as late as its operands (a joint
             // angle's offset), `q` at least for the former.
             _ => {
-                let operands = e.operands(id).iter().map(|c| depends[c.index()]).max();
+                let latest = operands(eq, id).iter().map(|c| depends[c.index()]).max();
                 let trig = matches!(node, Node::Var(Var::SinQ(_) | Var::CosQ(_)));
-                match operands {
+                match latest {
                     Some(d) if trig => d.max(Depends::Configuration),
                     Some(d) => d,
                     None => Depends::Configuration,
@@ -81,7 +80,6 @@ pub(super) fn trig_and_constants(
 /// Where a walk down from `outputs` stops: the nodes it does not `descend` into, except zero,
 /// one and `q_i`, which the code writes in place.
 fn frontier(eq: &Equations, outputs: &[NodeId], descend: impl Fn(NodeId) -> bool) -> Vec<NodeId> {
-    let e = Emitter::new(eq, None);
     let mut seen = vec![false; eq.graph.len()];
     let mut found = Vec::new();
     let mut stack = outputs.to_vec();
@@ -95,7 +93,7 @@ fn frontier(eq: &Equations, outputs: &[NodeId], descend: impl Fn(NodeId) -> bool
             _ => false,
         };
         if descend(id) {
-            stack.extend(e.operands(id));
+            stack.extend(operands(eq, id));
         } else if !in_place {
             found.push(id);
         }
@@ -110,7 +108,6 @@ pub(super) fn shared_motion(
     depends: &[Depends],
     outputs: &[&Output],
 ) -> Vec<NodeId> {
-    let e = Emitter::new(eq, None);
     let n = eq.graph.len();
     // Per node, how many outputs' code computes it.
     let mut users = vec![0u32; n];
@@ -120,7 +117,7 @@ pub(super) fn shared_motion(
         while let Some(id) = stack.pop() {
             let i = id.index();
             if depends[i] < Depends::Velocity
-                || e.is_leaf(id)
+                || matches!(eq.graph.node(id), Node::Var(_) | Node::Const(_))
                 || std::mem::replace(&mut seen[i], true)
             {
                 continue;
@@ -131,7 +128,7 @@ pub(super) fn shared_motion(
                 found[i] = true;
                 continue;
             }
-            stack.extend(e.operands(id));
+            stack.extend(operands(eq, id));
         }
         seen
     };

@@ -32,11 +32,13 @@ pub(super) struct Emitter<'a> {
     pub(super) needed: Vec<bool>,
     /// What each bound node (and each constant) is read as: a local, or a field of the
     /// configuration.
-    pub(super) names: Vec<Option<Ident>>,
+    pub(super) names: Names,
     /// Nodes computed elsewhere (the configuration's and the motion's fields): marking stops there.
     pub(super) stop: Vec<bool>,
     /// Which shared function computes a stop node.
     pub(super) origin: Vec<Origin>,
+    /// The stop nodes, as they were read (each boundary in the arena's order).
+    pub(super) stops: Vec<NodeId>,
     pub(super) temporaries: usize,
     /// `t` in a method, `u` in the configuration and `v` in the motion, whose fields a method
     /// binds as locals too.
@@ -60,9 +62,10 @@ impl<'a> Emitter<'a> {
             ctx,
             uses: vec![0; n],
             needed: vec![false; n],
-            names: vec![None; n],
+            names: Names::new(n),
             stop: vec![false; n],
             origin: vec![Origin::Here; n],
+            stops: Vec::new(),
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
@@ -77,8 +80,9 @@ impl<'a> Emitter<'a> {
         for (&id, field) in computed.iter().zip(&shared.fields) {
             let mut local = field.clone();
             local.set_span(Span::mixed_site());
-            self.names[id.index()] = Some(local);
+            self.names.set(id.index(), local);
             self.stop[id.index()] = true;
+            self.stops.push(id);
             self.origin[id.index()] = origin;
         }
     }
@@ -95,15 +99,16 @@ impl<'a> Emitter<'a> {
         for (&id, field) in kept.filter(|(id, _)| keep[id.index()]) {
             let mut local = field.clone();
             local.set_span(Span::mixed_site());
-            self.names[id.index()] = Some(local);
+            self.names.set(id.index(), local);
             self.stop[id.index()] = true;
+            self.stops.push(id);
             self.origin[id.index()] = origin;
         }
     }
 
     /// The nodes an emitted node reads ([`plan::operands`]).
-    pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
-        plan::operands(self, self.eq, id)
+    pub(super) fn operands(&self, id: NodeId) -> plan::Operands {
+        plan::operands(self.eq, id)
     }
 
     pub(super) fn mark(&mut self, outputs: &[NodeId]) {
@@ -134,7 +139,7 @@ impl<'a> Emitter<'a> {
     /// What node `id` is read as, if it is read by name: its binding, or a joint variable,
     /// sine, cosine or parameter (`q2`, `qd2`, `s2`, `c2`, `p_m2`).
     pub(super) fn name(&self, id: NodeId) -> Option<Ident> {
-        if let Some(name) = &self.names[id.index()] {
+        if let Some(name) = self.names.get(id.index()) {
             return Some(name.clone());
         }
         let Node::Var(v) = self.graph.node(id) else {
@@ -161,10 +166,39 @@ impl Sums for Emitter<'_> {
     }
 
     fn in_place(&self, c: NodeId) -> bool {
-        self.names[c.index()].is_none() && self.uses[c.index()] <= 1
+        self.names.get(c.index()).is_none() && self.uses[c.index()] <= 1
     }
 
     fn depths(&self) -> &[Cell<u32>] {
         &self.depth
+    }
+}
+
+/// What each node is read as, if it has a name: an index per node into the names given, so
+/// that an emitter for a graph of many nodes starts from zeros and drops only the names.
+pub(super) struct Names {
+    /// Per node, 0 for none, else 1 + its name's index in `idents`.
+    slots: Vec<u32>,
+    idents: Vec<Ident>,
+}
+
+impl Names {
+    fn new(n: usize) -> Names {
+        Names {
+            slots: vec![0; n],
+            idents: Vec::new(),
+        }
+    }
+
+    /// Node `i`'s name, if it has one.
+    pub(super) fn get(&self, i: usize) -> Option<&Ident> {
+        let slot = self.slots[i].checked_sub(1)?;
+        self.idents.get(slot as usize)
+    }
+
+    /// Names node `i` (in place of a name it had).
+    pub(super) fn set(&mut self, i: usize, name: Ident) {
+        self.idents.push(name);
+        self.slots[i] = u32::try_from(self.idents.len()).expect("fewer names than nodes");
     }
 }

@@ -6,7 +6,7 @@ use super::emitter::Emitter;
 use super::names::local;
 use super::plan::{self, Function, Operator, Place, Precedence, Printer};
 use crate::symbolic::{NodeId, Number, Var};
-use proc_macro2::TokenStream;
+use proc_macro2::{Delimiter, Group, Punct, Spacing, TokenStream, TokenTree};
 use quote::quote;
 
 impl Emitter<'_> {
@@ -56,7 +56,8 @@ impl Printer for Emitter<'_> {
     const MUL_ADD_FIRST: Place = Place::MulRight;
 
     fn bound(&self, id: NodeId) -> Option<TokenStream> {
-        self.names[id.index()].as_ref().map(|name| quote!(#name))
+        let name = self.names.get(id.index())?;
+        Some(TokenStream::from(TokenTree::Ident(name.clone())))
     }
 
     fn variable(&self, v: Var) -> TokenStream {
@@ -69,32 +70,149 @@ impl Printer for Emitter<'_> {
     }
 
     fn binary(&self, a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
-        match op {
-            Operator::Add => quote!(#a + #b),
-            Operator::Sub => quote!(#a - #b),
-            Operator::Mul => quote!(#a * #b),
-            Operator::Div => quote!(#a / #b),
-        }
+        binary(a, op, b)
     }
 
     fn negate(&self, a: TokenStream) -> TokenStream {
-        quote!(-#a)
+        negate(a)
     }
 
     fn call(&self, f: Function, a: TokenStream) -> TokenStream {
-        match f {
-            Function::Sin => quote!(T::sin(#a)),
-            Function::Cos => quote!(T::cos(#a)),
-            Function::Tanh => quote!(T::tanh(#a)),
-            Function::Sign => quote!(T::sign(#a)),
-        }
+        call(f, a)
     }
 
     fn mul_add(&self, x: TokenStream, y: TokenStream, a: TokenStream) -> TokenStream {
-        quote!(#x.mul_add(#y, #a))
+        mul_add(x, y, a)
     }
 
     fn parenthesized(&self, a: TokenStream) -> TokenStream {
-        quote!((#a))
+        TokenStream::from(parenthesized(a))
+    }
+}
+
+// The printer's forms join their operands' streams by moving them: `quote!(#a + #b)` would
+// copy each (an interpolated stream is shared, and a shared stream is copied when extended),
+// at every level of an expression.
+
+/// `a + b`, `a - b`, `a * b`, `a / b`.
+fn binary(mut a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
+    let op = match op {
+        Operator::Add => '+',
+        Operator::Sub => '-',
+        Operator::Mul => '*',
+        Operator::Div => '/',
+    };
+    a.extend([TokenTree::Punct(Punct::new(op, Spacing::Alone))]);
+    a.extend([b]);
+    a
+}
+
+/// `-a`.
+fn negate(a: TokenStream) -> TokenStream {
+    let mut minus = TokenStream::from(TokenTree::Punct(Punct::new('-', Spacing::Alone)));
+    minus.extend([a]);
+    minus
+}
+
+/// `T::sin(a)`.
+fn call(f: Function, a: TokenStream) -> TokenStream {
+    let mut call = match f {
+        Function::Sin => quote!(T::sin),
+        Function::Cos => quote!(T::cos),
+        Function::Tanh => quote!(T::tanh),
+        Function::Sign => quote!(T::sign),
+    };
+    call.extend([parenthesized(a)]);
+    call
+}
+
+/// `x.mul_add(y, a)`.
+fn mul_add(mut x: TokenStream, mut y: TokenStream, a: TokenStream) -> TokenStream {
+    x.extend(quote!(.mul_add));
+    y.extend([TokenTree::Punct(Punct::new(',', Spacing::Alone))]);
+    y.extend([a]);
+    x.extend([parenthesized(y)]);
+    x
+}
+
+/// `[a, b, c]`, the elements moved in.
+pub(super) fn array(items: impl IntoIterator<Item = TokenStream>) -> TokenStream {
+    let mut inner = TokenStream::new();
+    for (k, item) in items.into_iter().enumerate() {
+        if k > 0 {
+            inner.extend([TokenTree::Punct(Punct::new(',', Spacing::Alone))]);
+        }
+        inner.extend([item]);
+    }
+    TokenStream::from(TokenTree::Group(Group::new(Delimiter::Bracket, inner)))
+}
+
+/// `{ a }`, `a` moved into the block.
+pub(super) fn block(a: TokenStream) -> TokenStream {
+    TokenStream::from(TokenTree::Group(Group::new(Delimiter::Brace, a)))
+}
+
+/// `let name = value;`, the value moved in.
+pub(super) fn let_statement(name: &proc_macro2::Ident, value: TokenStream) -> TokenStream {
+    let mut statement = quote!(let #name =);
+    statement.extend([value, quote!(;)]);
+    statement
+}
+
+/// `(a)`, `a` moved into the group.
+fn parenthesized(a: TokenStream) -> TokenTree {
+    TokenTree::Group(Group::new(Delimiter::Parenthesis, a))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{array, binary, block, call, let_statement, mul_add, negate, parenthesized};
+    use super::{Function, Operator};
+    use proc_macro2::TokenStream;
+    use quote::quote;
+
+    /// Each form as `quote!` writes it, token for token (the text of a stream shows its
+    /// tokens' spacing and groups): nested, so that the operands are streams built the same
+    /// way.
+    #[test]
+    fn the_forms_are_the_tokens_quote_writes() {
+        let (a, b, c) = (quote!(a), quote!(t12), quote!(T::ONE));
+        let moved = mul_add(
+            negate(binary(a.clone(), Operator::Sub, b.clone())),
+            call(Function::Cos, binary(b.clone(), Operator::Div, c.clone())),
+            TokenStream::from(parenthesized(binary(c.clone(), Operator::Mul, a.clone()))),
+        );
+        let quoted = quote!(-#a - #b.mul_add(T::cos(#b / #c), (#c * #a)));
+        assert_eq!(moved.to_string(), quoted.to_string());
+        for (f, q) in [
+            (Function::Sin, quote!(T::sin(a))),
+            (Function::Tanh, quote!(T::tanh(a))),
+            (Function::Sign, quote!(T::sign(a))),
+        ] {
+            assert_eq!(call(f, quote!(a)).to_string(), q.to_string());
+        }
+        assert_eq!(
+            binary(quote!(a), Operator::Add, quote!(-b)).to_string(),
+            quote!(a + -b).to_string()
+        );
+        let items = [quote!(a), quote!(b + c), quote!([d])];
+        let arrays = [array(items.clone()), array([]), array([quote!(a)])];
+        let quoted = [quote!([#(#items),*]), quote!([]), quote!([a])];
+        for (built, quoted) in arrays.iter().zip(&quoted) {
+            assert_eq!(built.to_string(), quoted.to_string());
+        }
+        assert_eq!(
+            block(quote!(a; b)).to_string(),
+            quote!({
+                a;
+                b
+            })
+            .to_string()
+        );
+        let name = proc_macro2::Ident::new("t1", proc_macro2::Span::call_site());
+        assert_eq!(
+            let_statement(&name, quote!(a * b)).to_string(),
+            quote!(let t1 = a * b;).to_string()
+        );
     }
 }

@@ -149,7 +149,7 @@ impl Emitter<'_> {
                 let element = output_names.iter().find(|(n, _)| *n == id).map(|&(_, e)| e);
                 statements.push(self.bind(id, element));
             }
-            let name = self.names[i].clone();
+            let name = self.names.get(i).cloned();
             for y in &places[i] {
                 statements.push(quote!(#y = #name;));
             }

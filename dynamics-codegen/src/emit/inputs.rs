@@ -22,7 +22,7 @@ impl Emitter<'_> {
             vec![false; n],
             vec![false; 6 * self.eq.tips.as_ref().map_or(0, |t| t.names.len())],
         ];
-        for (id, node) in self.graph.nodes() {
+        for (id, node) in self.graph.leaves() {
             if !self.needed[id.index()] {
                 continue;
             }

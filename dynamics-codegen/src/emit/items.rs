@@ -1,12 +1,13 @@
 //! The generated items: the emitted bodies of every [`Method`] put together into a module of
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
+use super::depends::dependencies;
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
 use super::impls::{trait_impls, Counts, Sizes};
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
 use super::names::{OUTPUT, PARAMETERS};
 use super::parts::{Context, OpCount, Output, Shared};
-use super::program::emit;
+use super::program::emit_with;
 use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
@@ -29,8 +30,8 @@ pub struct MethodCode {
     pub lanes: bool,
 }
 
-/// The generated code of a robot: the shared configuration (see [`emit`]) and the methods of
-/// the `Dynamics` impl.
+/// The generated code of a robot: the shared configuration (see [`emit`](super::emit)) and the
+/// methods of the `Dynamics` impl.
 pub struct Generated {
     /// Number of joints.
     pub dof: usize,
@@ -108,6 +109,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
     };
     let mut modules = Vec::new();
     let mut methods = Vec::new();
+    let depends = dependencies(eq);
     for &family in Family::ALL {
         // A method the trait gives a body of zeros (friction) only where the robot has the
         // term, so that the code of a robot without it is what it always was.
@@ -127,7 +129,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
                 shape: method.shape(eq),
             })
             .collect();
-        let emission = emit(eq, &outputs, &ctx);
+        let emission = emit_with(eq, &outputs, &ctx, &depends);
         methods.extend(
             members
                 .iter()

@@ -12,6 +12,7 @@
 //! A lane of every block is written as before.
 
 use super::emitter::Emitter;
+use super::expr::let_statement;
 use super::names::{local, OUTPUT};
 use super::plan::Place;
 use crate::symbolic::{NodeId, Of, Tangents, Term, BLOCK};
@@ -155,7 +156,7 @@ impl Emitter<'_> {
         while let Some((p, plan, k)) = queue.next_due(before) {
             let name = lane_name(p, k);
             let value = self.lane(p, plan, k, queue.blocks(p));
-            statements.push(quote!(let #name = #value;));
+            statements.push(let_statement(&name, value));
             if self.returned_in_place {
                 // Its rows stored at once, so that it need not be kept to the end.
                 let y = local(OUTPUT);

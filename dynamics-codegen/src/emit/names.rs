@@ -77,8 +77,9 @@ pub(crate) fn output_names(
     is_leaf: impl Fn(NodeId) -> bool,
 ) -> Vec<(NodeId, Element)> {
     let mut named: Vec<(NodeId, Element)> = Vec::new();
+    let mut seen = std::collections::BTreeSet::new();
     let mut add = |id: NodeId, index: Index| {
-        if !is_leaf(id) && !named.iter().any(|(n, _)| *n == id) {
+        if !is_leaf(id) && seen.insert(id) {
             named.push((id, Element { method, index }));
         }
     };

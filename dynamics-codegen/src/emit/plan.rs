@@ -6,7 +6,7 @@
 //! printers: the C writes the Rust's expressions, operation for operation.
 
 use super::sums::{Sums, Written};
-use crate::symbolic::{Node, NodeId, Number, Var, WRENCH};
+use crate::symbolic::{Graph, Node, NodeId, Number, Var, WRENCH};
 use crate::trace::Equations;
 
 /// Where an expression is written, which decides whether it needs parentheses.
@@ -112,29 +112,80 @@ pub(crate) fn leaf_name(v: Var, parameter: impl FnOnce(usize) -> String) -> Stri
 
 /// The nodes an emitted node reads, as both printers read them: `a + (−b)` reads `a` and `b`
 /// (written `a − b`), and a joint's sine and cosine read its angle offset.
-pub(crate) fn operands(p: &impl Sums, eq: &Equations, id: NodeId) -> Vec<NodeId> {
-    match p.graph().node(id) {
+pub(crate) fn operands(eq: &Equations, id: NodeId) -> Operands {
+    match eq.graph.node(id) {
         Node::Add(a, b) => {
-            let (a, b) = p.as_sub(a, b).unwrap_or((a, b));
-            vec![a, b]
+            let (a, b) = as_sub(&eq.graph, a, b).unwrap_or((a, b));
+            Operands::two(a, b)
         }
         // Spelled out rather than `Node::operands`: the emitters call this for every node read.
-        Node::Mul(a, b) => vec![a, b],
+        Node::Mul(a, b) => Operands::two(a, b),
         Node::Neg(a)
         | Node::Recip(a)
         | Node::Sin(a)
         | Node::Cos(a)
         | Node::Sign(a)
-        | Node::Tanh(a) => vec![a],
+        | Node::Tanh(a) => Operands::one(a),
         // A joint's leaf past the coordinates (a mimic joint's, read by no output) has none.
-        Node::Var(Var::SinQ(i) | Var::CosQ(i)) => eq
-            .angle_offsets
-            .get(usize::from(i))
-            .copied()
-            .flatten()
-            .into_iter()
-            .collect(),
-        Node::Const(_) | Node::Var(_) => vec![],
+        Node::Var(Var::SinQ(i) | Var::CosQ(i)) => {
+            match eq.angle_offsets.get(usize::from(i)).copied().flatten() {
+                Some(offset) => Operands::one(offset),
+                None => Operands::NONE,
+            }
+        }
+        Node::Const(_) | Node::Var(_) => Operands::NONE,
+    }
+}
+
+/// `(a, x)` if `a + b` is `a − x`.
+pub(crate) fn as_sub(graph: &Graph, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
+    match (graph.node(a), graph.node(b)) {
+        (_, Node::Neg(x)) => Some((a, x)),
+        (Node::Neg(x), _) => Some((b, x)),
+        _ => None,
+    }
+}
+
+/// At most two operands, without an allocation: the emitters ask for them at every node of
+/// every walk.
+#[derive(Clone, Copy)]
+pub(crate) struct Operands {
+    ids: [NodeId; 2],
+    len: usize,
+}
+
+impl Operands {
+    const NONE: Operands = Operands {
+        ids: [NodeId(0); 2],
+        len: 0,
+    };
+
+    fn one(a: NodeId) -> Operands {
+        Operands {
+            ids: [a, a],
+            len: 1,
+        }
+    }
+
+    fn two(a: NodeId, b: NodeId) -> Operands {
+        Operands {
+            ids: [a, b],
+            len: 2,
+        }
+    }
+
+    /// The operands in order.
+    pub(crate) fn iter(&self) -> std::slice::Iter<'_, NodeId> {
+        self.ids[..self.len].iter()
+    }
+}
+
+impl IntoIterator for Operands {
+    type Item = NodeId;
+    type IntoIter = std::iter::Take<std::array::IntoIter<NodeId, 2>>;
+
+    fn into_iter(self) -> Self::IntoIter {
+        self.ids.into_iter().take(self.len)
     }
 }
 

@@ -3,10 +3,11 @@
 
 use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
 use super::emitter::{Emitter, Origin};
+use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
 use crate::method::{Argument, Method};
-use crate::symbolic::NodeId;
+use crate::symbolic::{Node, NodeId};
 use crate::trace::{Equations, Shape};
 use quote::quote;
 
@@ -27,11 +28,20 @@ pub struct Emission {
 /// time is that of separate functions, and the code is written once.
 #[must_use]
 pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
-    let depends = dependencies(eq);
+    emit_with(eq, all, ctx, &dependencies(eq))
+}
+
+/// `emit` with `depends`, the dependencies of `eq`'s nodes, shared by every family's emission.
+pub(super) fn emit_with(
+    eq: &Equations,
+    all: &[Output],
+    ctx: &Context,
+    depends: &[Depends],
+) -> Emission {
     // The shared functions take `q`: a method without it (friction) computes all it reads.
     let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
     let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
-    let (shared, apart_reads) = configuration_reads(eq, &depends, &outputs);
+    let (shared, apart_reads) = configuration_reads(eq, depends, &outputs);
     let boundary: Vec<NodeId> = eq
         .graph
         .nodes()
@@ -42,8 +52,8 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     // `g3`); leaves keep theirs (`s1`, `p_m2`, `k4`); the rest are numbered temporaries.
     let mut field_names: Vec<Option<Element>> = vec![None; eq.graph.len()];
     for o in &outputs {
-        let e = Emitter::new(eq, Some(ctx));
-        for (id, element) in output_names(&o.shape, o.method, |id| e.is_leaf(id)) {
+        let is_leaf = |id| matches!(eq.graph.node(id), Node::Var(_) | Node::Const(_));
+        for (id, element) in output_names(&o.shape, o.method, is_leaf) {
             if shared[id.index()] && field_names[id.index()].is_none() {
                 field_names[id.index()] = Some(element);
             }
@@ -52,11 +62,11 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
     let configuration = (!boundary.is_empty()).then(|| {
         let mut e = Emitter::new(eq, Some(ctx));
         e.temporary_prefix = "u";
-        e.configuration(&boundary, &field_names)
+        e.configuration(&boundary, &field_names, depends)
     });
     // Terms in q̇ (without q̈) that two methods or more compute: written once, in the motion
     // function, whose fields the methods read.
-    let motion_boundary = shared_motion(eq, &depends, &outputs);
+    let motion_boundary = shared_motion(eq, depends, &outputs);
     let config_names = |e: &mut Emitter| {
         e.has_configuration = configuration.is_some();
         if let Some(c) = &configuration {
@@ -97,12 +107,11 @@ pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
             // Tangents in lanes where the build computes them there (AVX-512), else the columns
             // one by one. The test is a constant: the compiler keeps one branch.
             Shape::Lanes { .. } => {
-                let (lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
-                let (a, b) = (&lanes.tokens, &scalar.tokens);
-                Body {
-                    tokens: quote!(if T::TANGENTS_IN_LANES { #a } else { #b }),
-                    ..lanes
-                }
+                let (mut lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
+                let a = std::mem::take(&mut lanes.tokens);
+                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+                tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
+                Body { tokens, ..lanes }
             }
             _ => body(o, &o.shape),
         })

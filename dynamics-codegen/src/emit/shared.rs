@@ -2,7 +2,7 @@
 //! `q` alone, and the motion, what several methods compute from `q̇` too; and the statements
 //! with which a function binds the fields it reads of them.
 
-use super::depends::{dependencies, Depends};
+use super::depends::Depends;
 use super::emitter::{Emitter, Origin};
 use super::names::{
     local, Element, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN,
@@ -21,11 +21,11 @@ impl Emitter<'_> {
         &mut self,
         boundary: &[NodeId],
         field_names: &[Option<Element>],
+        depends: &[Depends],
     ) -> Shared {
         self.mark(boundary);
         let mut statements = Vec::new();
         self.constants_and_parameters(&mut statements);
-        let depends = dependencies(self.eq);
         statements.extend(self.joint_variables());
         // What depends on the parameters alone first, then the sines and cosines, then the
         // rest.
@@ -46,7 +46,10 @@ impl Emitter<'_> {
         let ty = Ident::new(CONFIGURATION_STRUCT, Span::call_site());
         Shared {
             fields,
-            tokens: quote!(#(#statements)* #ty { #(#locals),* }),
+            tokens: statements
+                .into_iter()
+                .chain([quote!(#ty { #(#locals),* })])
+                .collect(),
         }
     }
 
@@ -56,19 +59,19 @@ impl Emitter<'_> {
         let ctx = self.ctx.expect("emission has a context");
         // Constants, once each.
         let mut constants = 0;
-        for (id, _) in self.graph.nodes() {
+        for (id, _) in self.graph.leaves() {
             if self.needed[id.index()] && self.is_named_constant(id) {
                 let value = self.leaf(id);
                 constants += 1;
                 let k = local(&format!("k{constants}"));
                 statements.push(quote!(let #k: T = #value;));
-                self.names[id.index()] = Some(k);
+                self.names.set(id.index(), k);
             }
         }
         // Parameters, read once: `let [p_m1, _, p_cx1, …] = *p_;`.
         let mut parameters = vec![quote!(_); self.eq.fields.len()];
         let mut any = false;
-        for (id, node) in self.graph.nodes() {
+        for (id, node) in self.graph.leaves() {
             if let Node::Var(Var::Param(k)) = node {
                 if self.needed[id.index()] {
                     parameters[usize::from(k)] = self.leaf(id);
@@ -145,14 +148,18 @@ impl Emitter<'_> {
     /// function (`in_method` false), `let c_ = configuration(p_, q_);` and
     /// `let Configuration { s2, .. } = c_;`.
     pub(super) fn bind_shared(&self, in_method: bool) -> Vec<TokenStream> {
+        // The stop nodes in the arena's order, without a walk of the whole arena.
+        let mut stops = self.stops.clone();
+        stops.sort_unstable();
+        stops.dedup();
         let read = |origin: Origin| -> Vec<Ident> {
-            self.graph
-                .nodes()
-                .filter(|(id, _)| {
+            stops
+                .iter()
+                .filter(|id| {
                     let i = id.index();
-                    self.stop[i] && self.needed[i] && self.origin[i] == origin
+                    self.needed[i] && self.origin[i] == origin
                 })
-                .filter_map(|(id, _)| self.names[id.index()].clone())
+                .filter_map(|id| self.names.get(id.index()).cloned())
                 .collect()
         };
         let (config, motion) = (read(Origin::Configuration), read(Origin::Motion));

@@ -40,11 +40,7 @@ pub(crate) trait Sums {
 
     /// `(a, x)` if `a + b` is `a − x`.
     fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
-        match (self.graph().node(a), self.graph().node(b)) {
-            (_, Node::Neg(x)) => Some((a, x)),
-            (Node::Neg(x), _) => Some((b, x)),
-            _ => None,
-        }
+        super::plan::as_sub(self.graph(), a, b)
     }
 
     /// Whether `id` is written as a sum: a sum, or a negated sum written in place, whose terms

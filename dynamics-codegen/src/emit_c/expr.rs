@@ -118,8 +118,8 @@ impl Precision {
 
 impl Writer<'_> {
     /// The nodes an emitted node reads ([`plan::operands`]).
-    pub(super) fn operands(&self, id: NodeId) -> Vec<NodeId> {
-        plan::operands(self, self.eq, id)
+    pub(super) fn operands(&self, id: NodeId) -> plan::Operands {
+        plan::operands(self.eq, id)
     }
 
     /// The name a leaf is read by, as the Rust emission names it ([`plan::leaf_name`]: `q2`,

@@ -8,9 +8,15 @@ use super::number::Number;
 
 impl Graph {
     /// Evaluates every node in order, reading inputs from `input`.
-    pub fn eval(&self, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
-        let mut values: Vec<f64> = Vec::with_capacity(self.nodes.len());
-        for node in &self.nodes {
+    pub fn eval(&self, input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        self.eval_below(self.nodes.len(), input)
+    }
+
+    /// Evaluates the first `end` nodes in order (the values of `outputs` need those before the
+    /// last of them), reading inputs from `input`.
+    pub fn eval_below(&self, end: usize, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        let mut values: Vec<f64> = Vec::with_capacity(end);
+        for node in &self.nodes[..end] {
             let v = match *node {
                 Node::Const(c) => c.to_f64(),
                 Node::Var(v) => input(v),
@@ -38,7 +44,16 @@ impl Graph {
     /// Marks the nodes that `outputs` depend on.
     #[must_use]
     pub fn live(&self, outputs: &[NodeId]) -> Vec<bool> {
-        let mut live = vec![false; self.nodes.len()];
+        let mut live = self.live_below(outputs);
+        live.resize(self.nodes.len(), false);
+        live
+    }
+
+    /// [`Graph::live`] up to the last of `outputs` (an operand comes before what reads it):
+    /// what a walk up to there reads, without clearing the rest of the graph.
+    fn live_below(&self, outputs: &[NodeId]) -> Vec<bool> {
+        let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
+        let mut live = vec![false; end];
         let mut stack: Vec<NodeId> = outputs.to_vec();
         while let Some(id) = stack.pop() {
             if std::mem::replace(&mut live[id.index()], true) {
@@ -60,7 +75,7 @@ impl Graph {
     /// per output, by forward differentiation of the graph.
     pub fn derivative_by(&mut self, outputs: &[NodeId], wrt: Wrt) -> Vec<NodeId> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
-        let live = self.live(outputs);
+        let live = self.live_below(outputs);
         let zero = self.num(Number::ZERO);
         let one = self.num(Number::ONE);
         let mut d: Vec<NodeId> = vec![zero; end];
@@ -123,15 +138,58 @@ impl Graph {
         outputs: &[NodeId],
         leaf: impl Fn(Var) -> Option<NodeId>,
     ) -> Vec<NodeId> {
+        let live = self.live_below(outputs);
+        let nodes = live.iter().enumerate().filter(|(_, &l)| l).map(|(i, _)| i);
+        self.substitute_at(outputs, nodes, leaf)
+    }
+
+    /// The live nodes of `outputs` that depend on a leaf `varies` picks, in the arena's order:
+    /// the only ones a substitution of those leaves can change, found once for many
+    /// substitutions ([`Graph::substitute_within`]).
+    #[must_use]
+    pub fn dependents(&self, outputs: &[NodeId], varies: impl Fn(Var) -> bool) -> Vec<NodeId> {
+        let live = self.live_below(outputs);
+        let mut depends = vec![false; live.len()];
+        let mut found = Vec::new();
+        for (i, _) in live.iter().enumerate().filter(|(_, &l)| l) {
+            let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
+            let node = self.node(id);
+            depends[i] = match node {
+                Node::Var(v) => varies(v),
+                _ => node.operands().any(|a| depends[a.index()]),
+            };
+            if depends[i] {
+                found.push(id);
+            }
+        }
+        found
+    }
+
+    /// [`Graph::substitute`] of leaves that only `nodes`, the [`Graph::dependents`] of
+    /// `outputs` on every leaf `leaf` replaces, depend on: the same nodes built in the same
+    /// order, without a walk of the others.
+    pub fn substitute_within(
+        &mut self,
+        outputs: &[NodeId],
+        nodes: &[NodeId],
+        leaf: impl Fn(Var) -> Option<NodeId>,
+    ) -> Vec<NodeId> {
+        self.substitute_at(outputs, nodes.iter().map(|id| id.index()), leaf)
+    }
+
+    /// The substitution's walk over `nodes`, by index in increasing order, every node that
+    /// can change among them.
+    fn substitute_at(
+        &mut self,
+        outputs: &[NodeId],
+        nodes: impl Iterator<Item = usize>,
+        leaf: impl Fn(Var) -> Option<NodeId>,
+    ) -> Vec<NodeId> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
-        let live = self.live(outputs);
         let mut new: Vec<NodeId> = (0..end)
             .map(|i| NodeId(u32::try_from(i).expect("graph exceeds u32 nodes")))
             .collect();
-        for i in 0..end {
-            if !live[i] {
-                continue;
-            }
+        for i in nodes {
             let id = new[i];
             let node = self.node(id);
             let changed = node.operands().any(|a| new[a.index()] != a);
@@ -186,5 +244,38 @@ mod tests {
         assert!((values[d.index()] - (2.0 * 0.3f64).cos()).abs() < 1e-15);
         let independent = g.derivative(&[sc], 1)[0];
         assert!(g.is_zero(independent));
+    }
+
+    /// `π₁·s + π₂·q̇ + s·c`: the dependents on the placeholders are π₁, π₂, their products and
+    /// the sums above them, not `s·c`; substituting within them builds the nodes the whole
+    /// substitution builds, for each choice of the placeholder set to one.
+    #[test]
+    fn substitution_within_the_dependents_builds_the_same_nodes() {
+        let mut g = Graph::new();
+        let (p1, p2) = (g.var(Var::Inertial(0)), g.var(Var::Inertial(1)));
+        let (s, c, qd) = (g.var(Var::SinQ(0)), g.var(Var::CosQ(0)), g.var(Var::Qd(0)));
+        let (a, b, sc) = (g.mul(p1, s), g.mul(p2, qd), g.mul(s, c));
+        let ab = g.add(a, b);
+        let tau = [g.add(ab, sc), sc];
+        let dependents = g.dependents(&tau, |v| matches!(v, Var::Inertial(_)));
+        assert_eq!(dependents, vec![p1, p2, a, b, ab, tau[0]]);
+        for chosen in 0..2 {
+            let (zero, one) = (g.num(super::Number::ZERO), g.num(super::Number::ONE));
+            let leaf = |v| match v {
+                Var::Inertial(p) => Some(if p == chosen { one } else { zero }),
+                _ => None,
+            };
+            let whole = g.substitute(&tau, leaf);
+            let nodes = g.len();
+            let within = g.substitute_within(&tau, &dependents, leaf);
+            assert_eq!(within, whole);
+            assert_eq!(g.len(), nodes, "nothing new the second time");
+            let expected = if chosen == 0 {
+                g.add(s, sc)
+            } else {
+                g.add(qd, sc)
+            };
+            assert_eq!(whole, vec![expected, sc]);
+        }
     }
 }

@@ -29,6 +29,9 @@ pub struct Graph {
     pub(super) nodes: Vec<Node>,
     // Only looked up, never iterated: emission order is the arena's order.
     memo: FxHashMap<Node, NodeId>,
+    /// The inputs and constants, in the arena's order: what the emitters look for at the top
+    /// of every function, without a walk of the whole arena.
+    leaves: Vec<NodeId>,
     stats: Stats,
 }
 
@@ -73,6 +76,11 @@ impl Graph {
         })
     }
 
+    /// The inputs and constants with their ids, in the arena's order.
+    pub fn leaves(&self) -> impl Iterator<Item = (NodeId, Node)> + '_ {
+        self.leaves.iter().map(|&id| (id, self.node(id)))
+    }
+
     /// The node's id, if the graph has it.
     #[must_use]
     pub fn lookup(&self, node: Node) -> Option<NodeId> {
@@ -87,6 +95,9 @@ impl Graph {
         let id = NodeId(u32::try_from(self.nodes.len()).expect("graph exceeds u32 nodes"));
         self.nodes.push(node);
         self.memo.insert(node, id);
+        if matches!(node, Node::Var(_) | Node::Const(_)) {
+            self.leaves.push(id);
+        }
         self.stats.nodes += 1;
         id
     }

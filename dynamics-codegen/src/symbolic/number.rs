@@ -18,15 +18,40 @@ pub enum Number {
     Float(f64),
 }
 
-fn gcd(mut a: i128, mut b: i128) -> i128 {
-    a = a.abs();
-    b = b.abs();
+fn gcd(a: i128, b: i128) -> i128 {
+    // The constants of a trace are small: in 64 bits the remainders are one instruction each,
+    // where those of `i128` are library calls.
+    if let (Ok(a), Ok(b)) = (
+        u64::try_from(a.unsigned_abs()),
+        u64::try_from(b.unsigned_abs()),
+    ) {
+        return i128::from(gcd_u64(a, b));
+    }
+    let (mut a, mut b) = (a.abs(), b.abs());
     while b != 0 {
         let t = a % b;
         a = b;
         b = t;
     }
     a
+}
+
+fn gcd_u64(mut a: u64, mut b: u64) -> u64 {
+    while b != 0 {
+        let t = a % b;
+        a = b;
+        b = t;
+    }
+    a
+}
+
+/// `a / b` of a divisor from [`gcd`], without the library's division where it is 1.
+fn divide(a: i128, b: i128) -> i128 {
+    if b == 1 {
+        a
+    } else {
+        a / b
+    }
 }
 
 impl Number {
@@ -50,7 +75,7 @@ impl Number {
             return None;
         }
         let g = gcd(num, den).max(1);
-        let (mut n, mut d) = (num / g, den / g);
+        let (mut n, mut d) = (divide(num, g), divide(den, g));
         if d < 0 {
             n = n.checked_neg()?;
             d = d.checked_neg()?;
@@ -242,6 +267,12 @@ impl fmt::Display for Number {
 impl std::ops::Add for Number {
     type Output = Number;
     fn add(self, other: Number) -> Number {
+        // Integers, the most common case: what the general rule gives, without its gcd.
+        if let (Number::Rational(a, 1), Number::Rational(c, 1)) = (self, other) {
+            if let Some(sum) = a.checked_add(c) {
+                return Number::Rational(sum, 1);
+            }
+        }
         if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
             let exact = (|| {
                 let num = a.checked_mul(d)?.checked_add(c.checked_mul(b)?)?;
@@ -259,12 +290,17 @@ impl std::ops::Add for Number {
 impl std::ops::Mul for Number {
     type Output = Number;
     fn mul(self, other: Number) -> Number {
+        if let (Number::Rational(a, 1), Number::Rational(c, 1)) = (self, other) {
+            if let Some(product) = a.checked_mul(c) {
+                return Number::Rational(product, 1);
+            }
+        }
         if let (Number::Rational(a, b), Number::Rational(c, d)) = (self, other) {
             let g1 = gcd(a, d).max(1);
             let g2 = gcd(c, b).max(1);
             let exact = (|| {
-                let num = (a / g1).checked_mul(c / g2)?;
-                Number::ratio(num, (b / g2).checked_mul(d / g1)?)
+                let num = divide(a, g1).checked_mul(divide(c, g2))?;
+                Number::ratio(num, divide(b, g2).checked_mul(divide(d, g1))?)
             })();
             if let Some(n) = exact {
                 return n;
@@ -325,6 +361,37 @@ mod tests {
         );
         assert_eq!(Number::parse_decimal("abc"), None);
         assert_eq!(Number::parse_decimal("."), None);
+    }
+
+    /// Reduction on either side of 64 bits (where the gcd changes method): `2⁷⁰·3 / 2⁷⁰·6` is
+    /// `1/2`, `(2⁶⁴ − 1)·2 / 4` is `(2⁶⁴ − 1)/2` (odd numerator), signs to the numerator.
+    #[test]
+    fn reduction_across_64_bits() {
+        let big = 1i128 << 70;
+        assert_eq!(Number::ratio(3 * big, 6 * big), Number::ratio(1, 2));
+        assert_eq!(
+            Number::ratio(3 * big, 6 * big),
+            Some(Number::Rational(1, 2))
+        );
+        let max = i128::from(u64::MAX);
+        assert_eq!(Number::ratio(2 * max, 4), Some(Number::Rational(max, 2)));
+        assert_eq!(Number::ratio(-6, -4), Some(Number::Rational(3, 2)));
+        assert_eq!(Number::ratio(0, -7), Some(Number::ZERO));
+        assert_eq!(Number::ratio(5, 0), None);
+        // (2⁷⁰/3)·(9/2⁶⁹) = 6, reduced crosswise before multiplying.
+        let a = Number::ratio(big, 3).unwrap();
+        let b = Number::ratio(9, big / 2).unwrap();
+        assert_eq!(a * b, Number::int(6));
+        assert_eq!(
+            Number::int(-4) * Number::ratio(3, 8).unwrap(),
+            Number::ratio(-3, 2).unwrap()
+        );
+        // Integers: exact, and past i128 a float, as for any rational.
+        assert_eq!(Number::int(-4) * Number::int(6), Number::int(-24));
+        assert_eq!(Number::int(7) + Number::int(-9), Number::int(-2));
+        let huge = Number::Rational(i128::MAX, 1);
+        assert!(!(huge + Number::ONE).is_exact());
+        assert!(!(huge * Number::int(2)).is_exact());
     }
 
     #[test]

@@ -310,13 +310,14 @@ fn cheapest_columns(g: &mut Graph, candidates: &[Vec<NodeId>]) -> Vec<Vec<Vec<No
 fn columns(g: &mut Graph, tau: &[NodeId]) -> Vec<Vec<Vec<NodeId>>> {
     let n = tau.len();
     let (zero, one) = (g.num(Number::ZERO), g.num(Number::ONE));
+    let inertial = g.dependents(tau, |v| matches!(v, Var::Inertial(_)));
     // by_parameter[j][k][i]: the column of π_jk, row i.
     let by_parameter: Vec<Vec<Vec<NodeId>>> = (0..n)
         .map(|j| {
             (0..PARAMETERS)
                 .map(|k| {
                     let chosen = placeholder(j, k);
-                    g.substitute(tau, |v| match v {
+                    g.substitute_within(tau, &inertial, |v| match v {
                         Var::Inertial(p) => Some(if p == chosen { one } else { zero }),
                         _ => None,
                     })
