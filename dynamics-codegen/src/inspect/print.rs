@@ -85,6 +85,22 @@ impl Printer<'_> {
                 let letter = if matches!(s, Sym::Cos(_)) { "C" } else { "S" };
                 format!("{letter}{}", self.indices(&joints))
             }
+            Sym::MimicSin(a) | Sym::MimicCos(a) => {
+                let cos = matches!(s, Sym::MimicCos(_));
+                let name = match (cos, self.latex()) {
+                    (true, true) => "\\cos",
+                    (false, true) => "\\sin",
+                    (true, false) => "cos",
+                    (false, false) => "sin",
+                };
+                // The coordinate's own q (without its θ offset): the rule reads q_j.
+                let q = format!("q{}", index(&a.joint));
+                match (a.offset.is_zero(), a.offset.is_negative()) {
+                    (true, _) => format!("{name}({} {q})", a.multiplier),
+                    (false, true) => format!("{name}({} {q} - {})", a.multiplier, -a.offset),
+                    (false, false) => format!("{name}({} {q} + {})", a.multiplier, a.offset),
+                }
+            }
             Sym::Qd(i) | Sym::Qdd(i) => {
                 let letter = self.joint_letter(usize::from(*i));
                 let second = matches!(s, Sym::Qdd(_));
