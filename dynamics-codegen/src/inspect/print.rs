@@ -79,6 +79,10 @@ impl Printer<'_> {
         match s {
             Sym::Param(p) if self.latex() => latex_name(p),
             Sym::Param(p) => p.clone(),
+            // A revolute joint's own q appears where a mimic joint's spring reads it.
+            Sym::Q(i) if self.kinds.get(usize::from(*i)) == Some(&JointKind::Revolute) => {
+                format!("q{}", index(i))
+            }
             Sym::Q(i) => format!("d{}", index(i)),
             Sym::Sin(a) | Sym::Cos(a) => {
                 let joints: Vec<usize> = a.joints().map(usize::from).collect();
