@@ -163,3 +163,31 @@ fn a_mimic_robot_is_identified_from_its_coordinates() {
     let figure = std::fs::read_to_string(svg).expect("the figure is written");
     assert!(figure.contains("joint 5: τ4 (N)"), "{figure}");
 }
+
+/// `dynamics excite` on the same arm: a trajectory of its four coordinates (not its five
+/// joints), each row of the report its joint's number and unit.
+#[test]
+fn a_mimic_robot_is_excited_in_its_coordinates() {
+    let path = scratch("arm5_excite.toml");
+    std::fs::write(&path, text(true)).expect("write robot");
+    let csv = scratch("arm5_excite.csv");
+    let args = [
+        "excite",
+        path.to_str().expect("a path"),
+        "--evaluations",
+        "20",
+        "--json",
+        "--csv",
+        csv.to_str().expect("a path"),
+    ];
+    let report = json(&dynamics(&args));
+    let joints = report["joints"].as_array().expect("joints");
+    let rows: Vec<(u64, &str)> = joints
+        .iter()
+        .map(|j| (j["joint"].as_u64().unwrap(), j["unit"].as_str().unwrap()))
+        .collect();
+    assert_eq!(rows, [(1, "rad"), (2, "rad"), (4, "rad"), (5, "m")]);
+    let trajectory = std::fs::read_to_string(&csv).expect("the trajectory");
+    let header = trajectory.lines().next().expect("a header");
+    assert_eq!(header, "t,q1,q2,q3,q4,qd1,qd2,qd3,qd4,qdd1,qdd2,qdd3,qdd4");
+}
