@@ -139,8 +139,7 @@ impl Report<'_> {
             let _ = writeln!(
                 out,
                 "{:>5}{columns}  {reached}  {:<4}  {origins}",
-                self.rows[j].0,
-                self.rows[j].1
+                self.rows[j].0, self.rows[j].1
             );
         }
         let start: Vec<String> = self.start().iter().map(|s| format!("{:.6}", s.q)).collect();

@@ -125,8 +125,17 @@ fn a_mimic_robot_is_identified_from_its_coordinates() {
     // YZR3's column is within 1e-4 of the others' span (the default --tolerance would leave it
     // out, residual 2e-5 N m), not within 1e-8.
     let args = [
-        "identify", robot, "--csv", &csv, "--json", "--validate", &other_csv, "--plot", svg,
-        "--tolerance", "1e-8",
+        "identify",
+        robot,
+        "--csv",
+        &csv,
+        "--json",
+        "--validate",
+        &other_csv,
+        "--plot",
+        svg,
+        "--tolerance",
+        "1e-8",
     ];
     let report = json(&dynamics(&args));
     assert_eq!(report["springs_subtracted"].as_bool(), Some(true));
@@ -134,7 +143,10 @@ fn a_mimic_robot_is_identified_from_its_coordinates() {
     let joints = report["joints"].as_array().expect("joints");
     let units: Vec<&str> = joints.iter().map(|j| j["unit"].as_str().unwrap()).collect();
     assert_eq!(units, ["N m", "N m", "N m", "N"]);
-    let numbers: Vec<u64> = joints.iter().map(|j| j["joint"].as_u64().unwrap()).collect();
+    let numbers: Vec<u64> = joints
+        .iter()
+        .map(|j| j["joint"].as_u64().unwrap())
+        .collect();
     assert_eq!(numbers, [1, 2, 4, 5]);
     for joint in joints {
         let rms = joint["residual_rms"].as_f64().unwrap();
@@ -152,14 +164,21 @@ fn a_mimic_robot_is_identified_from_its_coordinates() {
     let text_args = ["identify", robot, "--csv", &csv, "--tolerance", "1e-8"];
     let out = dynamics(&text_args);
     let table = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let row = table
         .lines()
         .rev()
         .find(|l| l.trim_start().starts_with("5 "))
         .unwrap_or_else(|| panic!("joint 5's row: {table}"));
     assert!(row.trim_end().ends_with(" N"), "{row}");
-    assert!(!table.lines().any(|l| l.trim_start().starts_with("3 ")), "{table}");
+    assert!(
+        !table.lines().any(|l| l.trim_start().starts_with("3 ")),
+        "{table}"
+    );
     let figure = std::fs::read_to_string(svg).expect("the figure is written");
     assert!(figure.contains("joint 5: τ4 (N)"), "{figure}");
 }

@@ -46,7 +46,15 @@ fn bounded(text: &str, sign: &str) -> BTreeSet<String> {
     let parts: Vec<&str> = text.split(&format!(",simplified| {sign} ")).collect();
     parts[..parts.len() - 1]
         .iter()
-        .map(|p| p.rsplit('|').next().expect("a name").split(' ').next().unwrap().to_owned())
+        .map(|p| {
+            p.rsplit('|')
+                .next()
+                .expect("a name")
+                .split(' ')
+                .next()
+                .unwrap()
+                .to_owned()
+        })
         .collect()
 }
 
@@ -70,7 +78,10 @@ fn the_commands_count_and_simplify_a_mimic_robot() {
     // The mimic joint's angle in its coordinate's q2 (its offset and θ offset summed); the
     // spring on it reads q2 itself, a revolute coordinate's, not a prismatic `d2`.
     assert!(inspect.contains(" sin(-7/10 q2 - 0.897"), "{inspect}");
-    assert!(inspect.contains(" q2 ") && !inspect.contains(" d2 "), "{inspect}");
+    assert!(
+        inspect.contains(" q2 ") && !inspect.contains(" d2 "),
+        "{inspect}"
+    );
     // A list of one per joint (4) is refused: the lists are per coordinate.
     let mut args = vec!["inspect", ARM];
     args.extend(REQUEST);
@@ -81,7 +92,9 @@ fn the_commands_count_and_simplify_a_mimic_robot() {
     assert!(err.contains("one for each of the 3 coordinates"), "{err}");
     // `emit` reads the file's table: Rust and C state bounds for the same elements, every
     // one of the three coordinates'.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("root");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("root");
     let text = std::fs::read_to_string(root.join(ARM)).expect("the arm");
     let table = "\n[simplify]\ntolerance = [0.1, 0.25, 0.003]\nq_min = -1\nq_max = 1.5\n";
     let file = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mimic_arm_simplify.toml");
@@ -95,5 +108,9 @@ fn the_commands_count_and_simplify_a_mimic_robot() {
     }
     assert!(!elements.contains("T4"), "{elements:?}");
     assert_eq!(bounded(&c, "<="), elements);
-    assert!(c.contains("mimic_arm_inverse_dynamics_simplified("), "{}", &c[..300]);
+    assert!(
+        c.contains("mimic_arm_inverse_dynamics_simplified("),
+        "{}",
+        &c[..300]
+    );
 }

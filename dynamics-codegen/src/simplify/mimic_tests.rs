@@ -78,26 +78,41 @@ fn a_mimic_arm_is_pruned_within_its_bounds() {
     };
     let pruned = prune_outputs(&eq, &request, Caps::NONE).expect("prunes");
     let mimic = |s: &Sym| matches!(s, Sym::MimicSin(_) | Sym::MimicCos(_));
-    let reads_mimic = pruned.iter().flat_map(|o| o.elements.as_ref().ok()).any(|e| {
-        e.iter()
-            .any(|p| p.pruning.full.keys().any(|m| m.factors().iter().any(|(s, _)| mimic(s))))
-    });
+    let reads_mimic = pruned
+        .iter()
+        .flat_map(|o| o.elements.as_ref().ok())
+        .any(|e| {
+            e.iter().any(|p| {
+                p.pruning
+                    .full
+                    .keys()
+                    .any(|m| m.factors().iter().any(|(s, _)| mimic(s)))
+            })
+        });
     assert!(reads_mimic, "no term holds the mimic angle");
-    let eq = arm.equations(FamilySet::default(), Some(&request)).expect("simplifies");
+    let eq = arm
+        .equations(FamilySet::default(), Some(&request))
+        .expect("simplifies");
     let ratios = within_bounds(&eq, &envelope, &mut rng, 2000, "mimic_arm");
     assert!(ratios.iter().any(|r| *r > 0.1), "{ratios:?}");
     let exact = Simplification {
         tolerance: vec![0.0; 3],
         envelope: envelope.clone(),
     };
-    let eq = arm.equations(FamilySet::default(), Some(&exact)).expect("simplifies");
+    let eq = arm
+        .equations(FamilySet::default(), Some(&exact))
+        .expect("simplifies");
     let s = eq.simplified.as_ref().expect("simplified");
     let values = sample(&eq, &envelope, &mut rng);
     for o in &s.outputs {
         let exact = super::elements(o.exact.shape(&eq));
         for ((_, _, e), (_, _, p)) in exact.upper().zip(o.elements.upper()) {
             let (x, y) = (values[e.index()], values[p.index()]);
-            assert!((x - y).abs() <= 1e-9 * (1.0 + x.abs()), "{:?}: {x} vs {y}", o.method);
+            assert!(
+                (x - y).abs() <= 1e-9 * (1.0 + x.abs()),
+                "{:?}: {x} vs {y}",
+                o.method
+            );
         }
     }
 }
@@ -115,9 +130,14 @@ fn the_mimic_panda_is_pruned_within_its_bounds() {
         .expect("asked");
     let joints = &request.envelope.joints;
     assert_eq!((joints.len(), request.tolerance.len()), (8, 8));
-    assert_eq!((joints[7].lower, joints[7].upper, joints[7].speed), (0.0, 0.04, 0.2));
+    assert_eq!(
+        (joints[7].lower, joints[7].upper, joints[7].speed),
+        (0.0, 0.04, 0.2)
+    );
     assert_eq!((joints[3].lower, joints[3].upper), (-3.0718, -0.0698));
-    assert!((request.tolerance[0] - 0.87).abs() < 1e-12 && (request.tolerance[7] - 1.0).abs() < 1e-12);
+    assert!(
+        (request.tolerance[0] - 0.87).abs() < 1e-12 && (request.tolerance[7] - 1.0).abs() < 1e-12
+    );
     let eq = panda
         .equations(FamilySet::default(), Some(&request))
         .expect("simplifies");

@@ -278,18 +278,29 @@ mod tests {
             velocity: Some(velocity),
             effort: None,
         };
-        let urdf = [limit(-2.0, 3.0, 1.5), limit(-1.0, 0.6, 0.4), Limit::default()];
+        let urdf = [
+            limit(-2.0, 3.0, 1.5),
+            limit(-1.0, 0.6, 0.4),
+            Limit::default(),
+        ];
         let got = joint_limits(&robot, Some(&urdf), [None; 4]).expect("limits");
         assert_eq!(got.len(), 2);
         let l = got[0].limits;
         let want = [-0.8, 2.4, 0.8, 5.0];
-        for (x, w) in [l.lower, l.upper, l.velocity, l.acceleration].iter().zip(want) {
+        for (x, w) in [l.lower, l.upper, l.velocity, l.acceleration]
+            .iter()
+            .zip(want)
+        {
             assert!((x - w).abs() < 1e-12, "{l:?}");
         }
-        assert_eq!(got[0].origins, [Origin::Urdf, Origin::Urdf, Origin::Urdf, Origin::Default]);
+        assert_eq!(
+            got[0].origins,
+            [Origin::Urdf, Origin::Urdf, Origin::Urdf, Origin::Default]
+        );
         assert_eq!(got[1].limits.upper, 0.1);
         let three = [1.0, 1.0, 1.0];
-        let Err(Error::Setting(e)) = joint_limits(&robot, None, [None, None, Some(&three[..]), None])
+        let Err(Error::Setting(e)) =
+            joint_limits(&robot, None, [None, None, Some(&three[..]), None])
         else {
             panic!("three speeds for two coordinates")
         };

@@ -45,7 +45,10 @@ fn request(
     overrides: &[(&'static str, Vec<f64>)],
 ) -> (Simplification, ([Vec<PrunedElement>; 4], [bool; 4])) {
     let robot = loaded(file);
-    let request = robot.simplification(overrides).expect("resolves").expect("asked");
+    let request = robot
+        .simplification(overrides)
+        .expect("resolves")
+        .expect("asked");
     let eq = robot
         .equations(FamilySet::default(), Some(&request))
         .expect("simplifies");
@@ -86,7 +89,11 @@ fn the_mimic_panda_simplified_within_its_proven_bounds() {
     let file = "../robots/urdf/panda.urdf";
     let (request, bounds) = request(file, &[("tolerance_percent", vec![1.0])]);
     assert_eq!(request.envelope.joints.len(), 8);
-    assert_eq!(bounds.1, [true, false, true, true], "τ, g, C q̇, M left exact");
+    assert_eq!(
+        bounds.1,
+        [true, false, true, true],
+        "τ, g, C q̇, M left exact"
+    );
     let ratio = check_within(&MimicPanda, file, &request, bounds);
     assert!(ratio > 0.1, "the bound is vacuous: best ratio {ratio}");
 }

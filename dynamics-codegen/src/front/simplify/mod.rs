@@ -133,7 +133,9 @@ fn defaults(robot: &Robot, limits: &[Limit]) -> Defaults {
         .collect();
     let rated = (limits.len() == robot.joints.len())
         .then(|| {
-            let efforts = coordinates.iter().map(|&i| limits[i].effort.filter(|e| *e >= 0.0));
+            let efforts = coordinates
+                .iter()
+                .map(|&i| limits[i].effort.filter(|e| *e >= 0.0));
             efforts.collect::<Option<Vec<f64>>>()
         })
         .flatten();
