@@ -92,16 +92,8 @@ fn the_commands_count_and_simplify_a_mimic_robot() {
     assert!(err.contains("one for each of the 3 coordinates"), "{err}");
     // `emit` reads the file's table: Rust and C state bounds for the same elements, every
     // one of the three coordinates'.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("root");
-    let text = std::fs::read_to_string(root.join(ARM)).expect("the arm");
-    let table = "\n[simplify]\ntolerance = [0.1, 0.25, 0.003]\nq_min = -1\nq_max = 1.5\n";
-    let file = Path::new(env!("CARGO_TARGET_TMPDIR")).join("mimic_arm_simplify.toml");
-    std::fs::write(&file, text + table).expect("write the file");
-    let file = file.to_str().expect("a path");
-    let rust = stdout(&dynamics(&["emit", file]));
-    let c = stdout(&dynamics(&["emit", "--lang", "c", file]));
+    let rust = stdout(&dynamics(&["emit", ARM]));
+    let c = stdout(&dynamics(&["emit", "--lang", "c", ARM]));
     let elements = bounded(&rust, "≤");
     for name in ["T1", "T2", "T3", "D1", "D3", "C3", "D11", "D33"] {
         assert!(elements.contains(name), "{name}: {elements:?}");
