@@ -52,7 +52,8 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
     let problem = motion
         .problem(&regressor, limits.iter().map(|l| l.limits).collect())
         .map_err(setting)?;
-    check_cost(args, &problem, robot.joints.len())?;
+    let coordinates = robot.coordinates();
+    check_cost(args, &problem, coordinates.len())?;
     let evaluations = args.evaluations as f64;
     let mut progress = Progress::new("dynamics excite", "evaluations", evaluations);
     let design = problem.design(args.seed, args.evaluations as usize, |done| {
@@ -62,12 +63,12 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
         return Err(Failure::File(Error::NoMotion.to_string()));
     }
     write_trajectory(args.csv.as_deref(), &problem, &design.series, args.periods)?;
-    let units = robot
-        .joints
+    // A row per coordinate: a mimic joint follows its joint, in its limits.
+    let rows = coordinates
         .iter()
-        .map(|j| match j.kind {
-            JointKind::Revolute => "rad",
-            JointKind::Prismatic => "m",
+        .map(|&j| match robot.joints[j].kind {
+            JointKind::Revolute => (j + 1, "rad"),
+            JointKind::Prismatic => (j + 1, "m"),
         })
         .collect();
     let report = Report {
@@ -78,7 +79,7 @@ pub fn run(args: &Excite) -> Result<String, Failure> {
         design: &design,
         periods: args.periods,
         seed: args.seed,
-        units,
+        rows,
         seconds: started.elapsed().as_secs_f64(),
     };
     let text = if args.json {

@@ -69,7 +69,12 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         e => Failure::File(e.to_string()),
     })?;
     let consistent = consistent(args, &identified)?;
-    let units: Vec<&str> = robot.joints.iter().map(|j| unit(j.kind)).collect();
+    // A row of τ per coordinate (a mimic joint's torque is carried onto the joint it follows).
+    let rows: Vec<(usize, &str)> = robot
+        .coordinates()
+        .iter()
+        .map(|&j| (j + 1, unit(robot.joints[j].kind)))
+        .collect();
     let figure_of = |path: &str, what: &str, source: &Samples| -> Result<Prediction, Failure> {
         let title = format!("{}: {what}", robot.name);
         figure_file(
@@ -77,7 +82,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
             source,
             &identified.estimate,
             path,
-            (title, &units),
+            (title, &rows),
         )
     };
     if let Some(path) = &args.plot {
@@ -110,7 +115,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         tolerance: args.tolerance,
         start: identified.span.0,
         end: identified.span.1,
-        units,
+        rows,
         linear: regressor.model(),
         estimate: &identified.estimate,
         consistent,
@@ -145,13 +150,13 @@ fn consistent<'i>(
 }
 
 /// The torques the estimate predicts for `source`, drawn against the measured ones into the
-/// SVG file `path`, titled `title`, for joints of these `units`.
+/// SVG file `path`, titled `title`, for rows of τ of these joints' numbers and units.
 fn figure_file(
     regressor: &Regressor,
     source: &Samples,
     estimate: &dynamics_identification::identify::estimate::Estimate,
     path: &str,
-    (title, units): (String, &[&str]),
+    (title, rows): (String, &[(usize, &str)]),
 ) -> Result<Prediction, Failure> {
     let n = regressor.model().joints();
     let mut envelope = Envelope::new(figure::SERIES * n);
@@ -163,7 +168,7 @@ fn figure_file(
     let prediction = predict(regressor, source, estimate, Some(&mut each))
         .map_err(|e| Failure::File(e.to_string()))?;
     let filtered = source.filter().is_some();
-    write_svg(path, &figure::figure(title, units, filtered, &envelope))?;
+    write_svg(path, &figure::figure(title, rows, filtered, &envelope))?;
     Ok(prediction)
 }
 /// The description `robot` (TOML) rewritten with the standard parameters `values`, to `path`.

@@ -39,14 +39,20 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
 
 /// The simplified models asked for: the description file's `[simplify]` (a URDF's `<limit>`s
 /// the defaults), each option of the command line in place of the table's key; `None` where
-/// neither asks. Each option is one value for every joint or one per joint.
+/// neither asks. Each option is one value for every joint or one per joint (per coordinate on
+/// a robot with mimic joints, which follow theirs).
 pub(super) fn request(
     command: &str,
     args: &Simplified,
     robot: &Robot,
     file: &Loaded,
 ) -> Result<Option<Simplification>, Failure> {
-    let n = robot.joints.len();
+    let n = robot.coordinates().len();
+    let each = if robot.has_mimics() {
+        "coordinate"
+    } else {
+        "joint"
+    };
     let options = [
         ("tolerance", args.tolerance.as_ref()),
         ("rated", args.rated.as_ref()),
@@ -61,7 +67,7 @@ pub(super) fn request(
         let Some(Numbers(v)) = given else { continue };
         if v.len() != 1 && v.len() != n {
             let message = format!(
-                "--{}: {} values; give one for every joint or one for each of the {n} joints",
+                "--{}: {} values; give one for every {each} or one for each of the {n} {each}s",
                 key.replace('_', "-"),
                 v.len()
             );

@@ -23,6 +23,17 @@ fn branches(robot: &Robot) -> String {
     format!(" in {tips} branches")
 }
 
+/// "6 joints", or "3 coordinates (4 joints, 1 of them mimic)" for a robot with mimic joints,
+/// which follow others and are not coordinates.
+fn joints(robot: &Robot) -> String {
+    let (joints, coordinates) = (robot.dof(), robot.coordinates().len());
+    if joints == coordinates {
+        return format!("{joints} joints");
+    }
+    let mimic = joints - coordinates;
+    format!("{coordinates} coordinates ({joints} joints, {mimic} of them mimic)")
+}
+
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let file = load_with_request(&args.robot)?;
     let robot = &file.robot;
@@ -37,9 +48,9 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let generated = generate(&eq, self_fields(&fields));
     let elapsed = start.elapsed();
     let mut out = format!(
-        "{}: {} joints{}, graph {} nodes, derived and emitted in {:.1} ms\n",
+        "{}: {}{}, graph {} nodes, derived and emitted in {:.1} ms\n",
         robot.name,
-        eq.dof,
+        joints(robot),
         branches(robot),
         eq.graph.len(),
         elapsed.as_secs_f64() * 1e3

@@ -18,8 +18,9 @@ pub struct Report<'a> {
     pub design: &'a Design,
     pub periods: u64,
     pub seed: u64,
-    /// Per joint: `rad` or `m`.
-    pub units: Vec<&'static str>,
+    /// Per coordinate (every joint but the mimic ones), its joint's number and unit, `rad` or
+    /// `m`.
+    pub rows: Vec<(usize, &'static str)>,
     pub seconds: f64,
 }
 
@@ -138,8 +139,7 @@ impl Report<'_> {
             let _ = writeln!(
                 out,
                 "{:>5}{columns}  {reached}  {:<4}  {origins}",
-                j + 1,
-                self.units[j]
+                self.rows[j].0, self.rows[j].1
             );
         }
         let start: Vec<String> = self.start().iter().map(|s| format!("{:.6}", s.q)).collect();
@@ -166,7 +166,8 @@ impl Report<'_> {
             .map(|(j, ((l, r), s))| {
                 let o = l.origins.map(Origin::word);
                 json!({
-                    "unit": self.units[j],
+                    "joint": self.rows[j].0,
+                    "unit": self.rows[j].1,
                     "limits": { "lower": l.limits.lower, "upper": l.limits.upper,
                                 "velocity": l.limits.velocity,
                                 "acceleration": l.limits.acceleration },

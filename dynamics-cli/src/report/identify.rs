@@ -26,8 +26,9 @@ pub struct Report<'a> {
     pub tolerance: f64,
     pub start: f64,
     pub end: f64,
-    /// Per joint: `N m` or `N`.
-    pub units: Vec<&'static str>,
+    /// Per row of τ (a coordinate: every joint but the mimic ones), its joint's number and
+    /// unit, `N m` or `N`.
+    pub rows: Vec<(usize, &'static str)>,
     pub linear: &'a LinearModel,
     pub estimate: &'a Estimate,
     /// The consistent estimate and its standard parameters' names, if asked for.
@@ -95,8 +96,8 @@ impl Report<'_> {
         }
         let _ = writeln!(out, "\n{:>5} {:>14} {:>14}", "joint", "σ_i", "residual RMS");
         for (i, (s, r)) in e.sigma.iter().zip(&e.rms).enumerate() {
-            let unit = self.units[i];
-            let _ = writeln!(out, "{:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}", i + 1);
+            let (joint, unit) = self.rows[i];
+            let _ = writeln!(out, "{joint:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}");
         }
         if let Some((c, names)) = &self.consistent {
             self.consistent_text(&mut out, c, names);
@@ -109,12 +110,11 @@ impl Report<'_> {
                 p.samples, "joint", "RMS of τ", "RMS error", "relative"
             );
             for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
-                let unit = self.units[i];
+                let (joint, unit) = self.rows[i];
                 let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
                 let _ = writeln!(
                     out,
-                    "{:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}",
-                    i + 1
+                    "{joint:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}"
                 );
             }
         }
@@ -183,8 +183,8 @@ impl Report<'_> {
             "joint", "residual RMS plain", "consistent"
         );
         for (i, (p, r)) in e.rms.iter().zip(&c.rms).enumerate() {
-            let unit = self.units[i];
-            let _ = writeln!(out, "{:>5} {p:>14.3e} {unit:<3} {r:>14.3e} {unit}", i + 1);
+            let (joint, unit) = self.rows[i];
+            let _ = writeln!(out, "{joint:>5} {p:>14.3e} {unit:<3} {r:>14.3e} {unit}");
         }
     }
 
@@ -238,7 +238,7 @@ impl Report<'_> {
             .collect();
         let joints: Vec<Value> = (0..e.rms.len())
             .map(
-                |i| json!({ "unit": self.units[i], "sigma": e.sigma[i], "residual_rms": e.rms[i] }),
+                |i| json!({ "joint": self.rows[i].0, "unit": self.rows[i].1, "sigma": e.sigma[i], "residual_rms": e.rms[i] }),
             )
             .collect();
         let filter = self.filter.map(|f| {

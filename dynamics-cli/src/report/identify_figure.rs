@@ -17,12 +17,13 @@ pub fn values(measured: &[f64], predicted: &[f64], out: &mut [f64]) {
     }
 }
 
-/// The figure of `envelope` (filled with [`values`]) for joints with these units; `filtered`
+/// The figure of `envelope` (filled with [`values`]) for rows of τ of these joints' numbers and
+/// units (a coordinate's row i is its joint's, `joint 5: τ4` past a mimic joint); `filtered`
 /// when the measured torques were low-passed (the figure says so: it shows them filtered).
 #[must_use]
 pub fn figure<'e>(
     title: String,
-    units: &[&str],
+    rows: &[(usize, &str)],
     filtered: bool,
     envelope: &'e Envelope,
 ) -> Figure<'e> {
@@ -37,21 +38,21 @@ pub fn figure<'e>(
         series,
         bold,
     };
-    let rows = units
+    let rows = rows
         .iter()
         .enumerate()
-        .map(|(i, unit)| {
+        .map(|(i, (joint, unit))| {
             let base = SERIES * i;
             vec![
                 Panel {
-                    title: format!("joint {}: τ{} ({unit})", i + 1, i + 1),
+                    title: format!("joint {joint}: τ{} ({unit})", i + 1),
                     lines: vec![
                         line("measured", MEASURED, base, false),
                         line("predicted", PREDICTED, base + 1, false),
                     ],
                 },
                 Panel {
-                    title: format!("joint {}: measured − predicted ({unit})", i + 1),
+                    title: format!("joint {joint}: measured − predicted ({unit})"),
                     lines: vec![line("residual", RESIDUAL, base + 2, false)],
                 },
             ]

@@ -14,7 +14,7 @@
 //!   `tests/data/panda/data.json`, and for the UR10, Panda, Z1 and SO-101 URDF files
 //!   `tests/data/urdf/`, whose friction τ adds), to 1e-10 of each result's largest element;
 //! * friction against its formula in the description file, at rest and in motion;
-//! * the simplified models a description file asks for (`[simplify]`) against the exact
+//! * the simplified models a description file asks for (`[simplify]`; a mimic robot's too) against the exact
 //!   functions, within the proven bounds the header states above them.
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
@@ -264,7 +264,6 @@ fn stated_bounds(header: &str, function: &str) -> Vec<f64> {
 /// bounds their comments state of the exact functions, and differ from them (terms dropped).
 #[test]
 fn simplified_functions_within_their_stated_bounds() {
-    let robot = robot("tests/data/simplify/two_link.toml");
     // Inside the file's envelope: q1 in [-1, 1], q2 in [-2, 2], |qd| <= 3, |qdd| <= 5.
     let states: Vec<State> = (0..24)
         .map(|k| {
@@ -278,14 +277,52 @@ fn simplified_functions_within_their_stated_bounds() {
             }
         })
         .collect();
-    let runs = compile_and_run(&robot, &states);
+    simplified_within_bounds("tests/data/simplify/two_link.toml", &states);
+}
+
+/// The small mimic arm's (`tests/data/trees/mimic_arm.toml`: 3 coordinates, the mimic joint's
+/// `sin(-0.7 q2 + c)` among the pruned terms) likewise, inside its envelope: q in [-1, 1.5],
+/// |qd| <= 2, |qdd| <= 5.
+#[test]
+fn a_mimic_robots_simplified_functions_within_their_stated_bounds() {
+    let states: Vec<State> = (0..24)
+        .map(|k| {
+            let x = f64::from(k) / 23.0;
+            let wave = |a: f64, b: f64| (a * x * 7.0 + b).sin();
+            let q = |a, b| 0.25 + 1.25 * wave(a, b);
+            State {
+                q: vec![q(1.0, 0.2), q(1.3, 1.1), q(0.6, 2.5)],
+                qd: vec![
+                    2.0 * wave(0.7, 2.0),
+                    2.0 * wave(1.9, 0.5),
+                    2.0 * wave(1.1, 0.1),
+                ],
+                qdd: vec![
+                    5.0 * wave(2.3, 1.4),
+                    5.0 * wave(0.4, 2.9),
+                    5.0 * wave(1.7, 0.8),
+                ],
+                tau: vec![1.0, -1.0, 0.5],
+            }
+        })
+        .collect();
+    simplified_within_bounds("tests/data/trees/mimic_arm.toml", &states);
+}
+
+/// The header of `file` (which asks for its simplified models) compiled and run at `states`:
+/// each simplified function within the bounds its comment states of the exact one, and not
+/// the exact one.
+fn simplified_within_bounds(file: &str, states: &[State]) {
+    let robot = robot(file);
+    let runs = compile_and_run(&robot, states);
     if runs.is_empty() {
         eprintln!("no C compiler (gcc, clang, g++) found: the C header is not checked");
         return;
     }
+    let n = robot.eq.dof;
     for run in &runs {
         let (out, cc) = (&run.printed, &run.label);
-        check_against_graph(&robot, &states, run);
+        check_against_graph(&robot, states, run);
         for (exact, simplified) in [
             ("inverse_dynamics", "inverse_dynamics_simplified"),
             ("gravity_torques", "gravity_torques_simplified"),
@@ -299,7 +336,6 @@ fn simplified_functions_within_their_stated_bounds() {
                 let (_, want) = printed(out, &name(exact), 0, s);
                 let (_, got) = printed(out, &name(simplified), 0, s);
                 // M's bounds are its upper triangle's, row by row.
-                let n = 2;
                 let elements: Vec<usize> = if want.len() == n {
                     (0..n).collect()
                 } else {
@@ -307,6 +343,7 @@ fn simplified_functions_within_their_stated_bounds() {
                         .flat_map(|i| (i..n).map(move |j| i * n + j))
                         .collect()
                 };
+                assert_eq!(elements.len(), bounds.len(), "{cc}: {simplified}'s bounds");
                 for (b, &e) in elements.iter().enumerate() {
                     let off = (want[e] - got[e]).abs();
                     largest = largest.max(off);

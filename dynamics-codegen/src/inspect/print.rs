@@ -79,11 +79,31 @@ impl Printer<'_> {
         match s {
             Sym::Param(p) if self.latex() => latex_name(p),
             Sym::Param(p) => p.clone(),
+            // A revolute joint's own q appears where a mimic joint's spring reads it.
+            Sym::Q(i) if self.kinds.get(usize::from(*i)) == Some(&JointKind::Revolute) => {
+                format!("q{}", index(i))
+            }
             Sym::Q(i) => format!("d{}", index(i)),
             Sym::Sin(a) | Sym::Cos(a) => {
                 let joints: Vec<usize> = a.joints().map(usize::from).collect();
                 let letter = if matches!(s, Sym::Cos(_)) { "C" } else { "S" };
                 format!("{letter}{}", self.indices(&joints))
+            }
+            Sym::MimicSin(a) | Sym::MimicCos(a) => {
+                let cos = matches!(s, Sym::MimicCos(_));
+                let name = match (cos, self.latex()) {
+                    (true, true) => "\\cos",
+                    (false, true) => "\\sin",
+                    (true, false) => "cos",
+                    (false, false) => "sin",
+                };
+                // The coordinate's own q (without its θ offset): the rule reads q_j.
+                let q = format!("q{}", index(&a.joint));
+                match (a.offset.is_zero(), a.offset.is_negative()) {
+                    (true, _) => format!("{name}({} {q})", a.multiplier),
+                    (false, true) => format!("{name}({} {q} - {})", a.multiplier, -a.offset),
+                    (false, false) => format!("{name}({} {q} + {})", a.multiplier, a.offset),
+                }
             }
             Sym::Qd(i) | Sym::Qdd(i) => {
                 let letter = self.joint_letter(usize::from(*i));

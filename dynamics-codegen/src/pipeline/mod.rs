@@ -273,12 +273,7 @@ pub(crate) fn equations(
     let mut eq = trace::derive(robot);
     eq.add_families(robot, families);
     // Only for a robot that asks: the expansion costs what the rest of the derive does.
-    let simplified = simplification.map(|request| {
-        if robot.has_mimics() {
-            return Err(trace::MIMIC_SIMPLIFIED.to_owned());
-        }
-        crate::simplify::add(&mut eq, request)
-    });
+    let simplified = simplification.map(|request| crate::simplify::add(&mut eq, request));
     (eq, simplified)
 }
 

@@ -111,7 +111,11 @@ impl<'a> Expander<'a> {
             }
             Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
             Node::Sign(_) | Node::Tanh(_) => Poly::sym(Sym::of_friction(&self.eq.graph, node)?),
-            Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
+            // A mimic joint's `sin(k q_j + c)`: a symbol of its own.
+            Node::Sin(a) | Node::Cos(a) => {
+                Poly::sym(Sym::mimic_trig(matches!(node, Node::Cos(_)), &get(a)?)?)
+            }
+            Node::Recip(_) => return None,
         };
         (p.len() <= self.limits.max_terms).then_some(p)
     }

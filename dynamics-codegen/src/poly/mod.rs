@@ -25,4 +25,4 @@ pub use expand::{Expander, Limits};
 pub(crate) use fold::fold_trig;
 pub use monomial::Monomial;
 pub use polynomial::Poly;
-pub use symbol::{AngleSum, Sym};
+pub use symbol::{AngleSum, MimicAngle, Sym};

@@ -1,5 +1,5 @@
 //! A canonical form for closed forms: sparse polynomials in sines and cosines of joint angles
-//! (`S1`, `C1`), prismatic positions, velocities, accelerations and parameters, with exact
+//! (`S1`, `C1`) and of mimic joints' angles, prismatic positions, velocities, accelerations and parameters, with exact
 //! rational coefficients and `S² = 1 − C²` applied, so that two expressions are equal
 //! exactly when their canonical forms are. For display and tests on small robots; code is
 //! emitted from the graph.
@@ -180,7 +180,10 @@ impl Poly {
                 Node::Mul(a, b) => get(a)?.mul(&get(b)?),
                 Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
                 Node::Sign(_) | Node::Tanh(_) => Poly::sym(Sym::of_friction(graph, node)?),
-                Node::Recip(_) | Node::Sin(_) | Node::Cos(_) => return None,
+                Node::Sin(a) | Node::Cos(a) => {
+                    Poly::sym(Sym::mimic_trig(matches!(node, Node::Cos(_)), &get(a)?)?)
+                }
+                Node::Recip(_) => return None,
             };
             if p.len() > max_terms {
                 return None;
@@ -197,6 +200,7 @@ enum SummationKey<'a> {
     Param(&'a str),
     Cos(AngleSum),
     Sin(AngleSum),
+    Mimic(&'a Sym),
     Q(u16),
     Qd(u16),
     Qdd(u16),
@@ -209,6 +213,7 @@ impl SummationKey<'_> {
             Sym::Param(p) => SummationKey::Param(p),
             Sym::Cos(a) => SummationKey::Cos(*a),
             Sym::Sin(a) => SummationKey::Sin(*a),
+            Sym::MimicSin(_) | Sym::MimicCos(_) => SummationKey::Mimic(s),
             Sym::Q(i) => SummationKey::Q(*i),
             Sym::Qd(i) => SummationKey::Qd(*i),
             Sym::Qdd(i) => SummationKey::Qdd(*i),
@@ -223,7 +228,7 @@ fn reduce_sine_squares(m: Monomial) -> Vec<(Monomial, Number)> {
     let square_sine = |m: &Monomial| {
         m.factors()
             .iter()
-            .find(|(s, e)| matches!(s, Sym::Sin(_)) && *e >= 2)
+            .find(|(s, e)| s.cosine_of_sine().is_some() && *e >= 2)
             .map(|(s, _)| s.clone())
     };
     let mut out = vec![(m, Number::ONE)];
@@ -233,13 +238,13 @@ fn reduce_sine_squares(m: Monomial) -> Vec<(Monomial, Number)> {
         .find_map(|(k, (m, _))| Some((k, square_sine(m)?)))
     {
         let (m, c) = out.swap_remove(pos);
-        let Some((_, angle)) = sine.as_trig() else {
+        let Some(cosine) = sine.cosine_of_sine() else {
             break;
         };
         let mut base = m;
         base.divide(&Monomial::from_iter([(sine, 2)]));
         let mut with_cos = base.clone();
-        with_cos.multiply(Sym::Cos(angle), 2);
+        with_cos.multiply(cosine, 2);
         out.push((base, c));
         out.push((with_cos, -c));
     }

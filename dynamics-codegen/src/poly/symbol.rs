@@ -5,7 +5,7 @@
 //! ([`Var`]) map onto these, and folding turns products of single-joint sines and cosines into
 //! ones of sums. The order of the variants is the order of printing.
 
-use crate::symbolic::{Graph, Node, NodeId, Var};
+use crate::symbolic::{Graph, Node, NodeId, Number, Var};
 use std::cmp::Ordering;
 use std::fmt;
 
@@ -70,6 +70,34 @@ impl PartialOrd for AngleSum {
     }
 }
 
+/// A mimic joint's angle `k q_j + c` in its coordinate j (0-based): the multiplier k, and c its
+/// offset plus its own θ offset. Its sine and cosine are symbols of their own, bounded over
+/// q_j's range through k and c, as the coordinates' own `sin q_j` are over theirs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct MimicAngle {
+    /// The coordinate followed.
+    pub joint: u16,
+    /// `k`.
+    pub multiplier: Number,
+    /// `c`.
+    pub offset: Number,
+}
+
+impl MimicAngle {
+    /// `k q_j + c` at the coordinate's position `q`.
+    #[must_use]
+    pub fn at(self, q: f64) -> f64 {
+        self.multiplier.to_f64() * q + self.offset.to_f64()
+    }
+
+    /// The interval of `k q_j + c` over `q_j ∈ [lo, hi]`.
+    #[must_use]
+    pub fn range(self, lo: f64, hi: f64) -> (f64, f64) {
+        let (a, b) = (self.at(lo), self.at(hi));
+        (a.min(b), a.max(b))
+    }
+}
+
 /// A symbol of a polynomial. The order of the variants is the order of printing.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Sym {
@@ -81,6 +109,10 @@ pub enum Sym {
     Sin(AngleSum),
     /// The cosine of a sum of joint angles.
     Cos(AngleSum),
+    /// The sine of a mimic joint's angle.
+    MimicSin(MimicAngle),
+    /// The cosine of a mimic joint's angle.
+    MimicCos(MimicAngle),
     /// The acceleration `q̈_i`.
     Qdd(u16),
     /// The velocity `q̇_i`.
@@ -134,6 +166,33 @@ impl Sym {
         }
     }
 
+    /// The sine (`cos` false) or cosine of the angle of a graph node whose polynomial is `p`,
+    /// if `p` is `k q_j + c` (a mimic joint's angle, k ≠ 0): no other sine is a polynomial's
+    /// symbol.
+    #[must_use]
+    pub fn mimic_trig(cos: bool, p: &super::Poly) -> Option<Sym> {
+        let mut offset = Number::ZERO;
+        let mut linear = None;
+        for (m, c) in p.terms() {
+            match m.factors() {
+                [] => offset = c,
+                [(Sym::Q(j), 1)] if linear.is_none() => linear = Some((*j, c)),
+                _ => return None,
+            }
+        }
+        let (joint, multiplier) = linear?;
+        let angle = MimicAngle {
+            joint,
+            multiplier,
+            offset,
+        };
+        Some(if cos {
+            Sym::MimicCos(angle)
+        } else {
+            Sym::MimicSin(angle)
+        })
+    }
+
     /// Whether it is a velocity or an acceleration, or friction's function of a velocity.
     #[must_use]
     pub fn is_motion(&self) -> bool {
@@ -161,10 +220,20 @@ impl Sym {
         }
     }
 
-    /// Whether it is a sine or a cosine.
+    /// The cosine of the same angle, if it is a sine (of joint angles or of a mimic joint's).
+    #[must_use]
+    pub fn cosine_of_sine(&self) -> Option<Sym> {
+        match self {
+            Sym::Sin(a) => Some(Sym::Cos(*a)),
+            Sym::MimicSin(a) => Some(Sym::MimicCos(*a)),
+            _ => None,
+        }
+    }
+
+    /// Whether it is a sine or a cosine (of joint angles or of a mimic joint's angle).
     #[must_use]
     pub fn is_trig(&self) -> bool {
-        self.as_trig().is_some()
+        matches!(self, Sym::MimicSin(_) | Sym::MimicCos(_)) || self.as_trig().is_some()
     }
 }
 
@@ -185,6 +254,8 @@ impl fmt::Display for Sym {
                 write!(f, "C")?;
                 angle(f, a)
             }
+            Sym::MimicSin(a) => write!(f, "sin({}*q{} + {})", a.multiplier, a.joint + 1, a.offset),
+            Sym::MimicCos(a) => write!(f, "cos({}*q{} + {})", a.multiplier, a.joint + 1, a.offset),
             Sym::Qdd(i) => write!(f, "qdd{}", i + 1),
             Sym::Qd(i) => write!(f, "qd{}", i + 1),
             Sym::Sign(i) => write!(f, "sgn(qd{})", i + 1),

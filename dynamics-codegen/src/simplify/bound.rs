@@ -67,6 +67,15 @@ pub(super) fn symbol_bound(s: &Sym, envelope: &Envelope, offsets: &[f64]) -> Res
                 max_abs_cos(lo, hi)
             }
         }
+        Sym::MimicSin(a) | Sym::MimicCos(a) => {
+            let j = joint(&a.joint)?;
+            let (lo, hi) = a.range(j.lower, j.upper);
+            if matches!(s, Sym::MimicSin(_)) {
+                max_abs_sin(lo, hi)
+            } else {
+                max_abs_cos(lo, hi)
+            }
+        }
         Sym::Qd(i) => joint(i)?.speed,
         Sym::Qdd(i) => joint(i)?.acceleration,
         Sym::Sign(_) | Sym::Tanh(_) => 1.0,

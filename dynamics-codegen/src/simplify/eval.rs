@@ -88,6 +88,8 @@ pub fn symbol_value(s: &Sym, state: State<'_>, k: &Constants) -> Option<f64> {
                 angle.cos()
             }
         }
+        Sym::MimicSin(a) => a.at(at(state.q, &a.joint)?).sin(),
+        Sym::MimicCos(a) => a.at(at(state.q, &a.joint)?).cos(),
         Sym::Qd(i) => at(state.qd, i)?,
         Sym::Qdd(i) => at(state.qdd, i)?,
         Sym::Sign(i) => {

@@ -84,8 +84,9 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// The node of symbol `s`: a leaf, friction's node, or the sine or cosine of a sum of
-    /// angles by the addition formulas over the joints' own (`C12 = C1 C2 − S1 S2`).
+    /// The node of symbol `s`: a leaf, friction's node, the sine or cosine of a sum of
+    /// angles by the addition formulas over the joints' own (`C12 = C1 C2 − S1 S2`), or of a
+    /// mimic joint's angle `k q_j + c`.
     fn symbol(&mut self, s: &Sym) -> Result<NodeId, String> {
         if let Some(&id) = self.symbols.get(s) {
             return Ok(id);
@@ -95,6 +96,18 @@ impl<'a> Builder<'a> {
             Sym::Qd(i) => self.graph.var(Var::Qd(*i)),
             Sym::Qdd(i) => self.graph.var(Var::Qdd(*i)),
             Sym::Sin(a) | Sym::Cos(a) => self.trig(matches!(s, Sym::Cos(_)), *a)?,
+            Sym::MimicSin(a) | Sym::MimicCos(a) => {
+                let q = self.graph.var(Var::Q(a.joint));
+                let k = self.graph.num(a.multiplier);
+                let kq = self.graph.mul(k, q);
+                let c = self.graph.num(a.offset);
+                let angle = self.graph.add(kq, c);
+                if matches!(s, Sym::MimicSin(_)) {
+                    self.graph.sin(angle)
+                } else {
+                    self.graph.cos(angle)
+                }
+            }
             Sym::Param(_) | Sym::Sign(_) | Sym::Tanh(_) => {
                 return Err(format!(
                     "`{s}` has no node to build the simplified model from"

@@ -21,6 +21,8 @@
 mod bound;
 pub mod eval;
 mod horner;
+#[cfg(test)]
+mod mimic_tests;
 mod outputs;
 mod prune;
 #[cfg(test)]

@@ -167,11 +167,6 @@ impl Equations {
     }
 }
 
-/// Why the simplified models are not built for a robot with mimic joints.
-pub const MIMIC_SIMPLIFIED: &str = "the simplified models are not built for a robot with mimic \
-     joints yet: the envelope bounds each coordinate, and a mimic joint's terms are not carried \
-     through `q_m = k q_j + o` into it (its sine of `k q_j + o` is no polynomial in q_j's)";
-
 /// Traces the equations of `robot`. The front end has checked the robot: every field exists and
 /// the table is not empty.
 #[must_use]

@@ -44,54 +44,67 @@ pub type Asked<'a> = [Option<&'a [f64]>; 4];
 /// The options' names, in [`Asked`]'s order.
 pub const OPTIONS: [&str; 4] = ["--q-min", "--q-max", "--qd-max", "--qdd-max"];
 
-/// Per joint of `robot`, its limits: asked for, else from `urdf` (per joint, if the robot is
-/// one), else the defaults.
+/// Per coordinate of `robot` (every joint but the mimic ones, which follow theirs), its
+/// limits: asked for, else from `urdf` (per joint, if the robot is one), else the defaults;
+/// narrowed to keep each mimic joint following it (`q_m = k q_j + o`) within its own URDF
+/// `<limit>`s, mapped through its rule (`(lower_m − o) / k`, `velocity_m / |k|`).
 ///
 /// # Errors
-/// A list whose length is neither 1 nor the joints', an empty range, a speed or acceleration
-/// limit that is not positive ([`Error::Setting`]): the option's name and the joint.
+/// A list whose length is neither 1 nor the coordinates', an empty range, a speed or
+/// acceleration limit that is not positive ([`Error::Setting`]): the option's name and the
+/// joint.
 pub fn joint_limits(
     robot: &Robot,
     urdf: Option<&[Limit]>,
     asked: Asked,
 ) -> Result<Vec<JointLimits>, Error> {
-    let n = robot.joints.len();
+    let coordinates = robot.coordinates();
+    let n = coordinates.len();
+    let each = if robot.has_mimics() {
+        "coordinate"
+    } else {
+        "joint"
+    };
     if let Some((k, list)) = (0..4).find_map(|k| {
         asked[k]
             .filter(|v| v.len() != 1 && v.len() != n)
             .map(|v| (k, v))
     }) {
         return Err(Error::Setting(format!(
-            "{}: {} values; give one for every joint or one for each of the {n} joints",
+            "{}: {} values; give one for every {each} or one for each of the {n} {each}s",
             OPTIONS[k],
             list.len()
         )));
     }
     let mut out = Vec::with_capacity(n);
-    for (j, joint) in robot.joints.iter().enumerate() {
-        let file = urdf.and_then(|u| u.get(j)).copied().unwrap_or_default();
-        // A range only where both ends are written (URDF's default for a missing end is 0).
-        let range = match (file.lower, file.upper) {
-            (Some(l), Some(u)) if l < u => [Some(l), Some(u)],
-            _ => [None, None],
-        };
-        let from_file = [range[0], range[1], file.velocity.filter(|v| *v > 0.0), None];
-        let defaults = defaults(joint.kind);
+    for (c, &j) in coordinates.iter().enumerate() {
+        let file = file_limits(urdf, j);
+        let defaults = defaults(robot.joints[j].kind);
         let mut values = [0.0; 4];
         let mut origins = [Origin::Default; 4];
         for k in 0..4 {
-            let given = asked[k].map(|v| if v.len() == 1 { v[0] } else { v[j] });
-            (values[k], origins[k]) = match (given, from_file[k]) {
+            let given = asked[k].map(|v| if v.len() == 1 { v[0] } else { v[c] });
+            (values[k], origins[k]) = match (given, file[k]) {
                 (Some(x), _) => (x, Origin::Option),
                 (None, Some(x)) => (x, Origin::Urdf),
                 (None, None) => (defaults[k], Origin::Default),
             };
         }
+        for mimic in followers(robot, urdf, j) {
+            for (k, x) in mimic.into_iter().enumerate() {
+                let Some(x) = x else { continue };
+                let tighter = if k == 0 { x > values[k] } else { x < values[k] };
+                if tighter {
+                    (values[k], origins[k]) = (x, Origin::Urdf);
+                }
+            }
+        }
         let [lower, upper, velocity, acceleration] = values;
         let joint = j + 1;
         if lower >= upper {
             return Err(Error::Setting(format!(
-                "joint {joint}: the range [{lower}, {upper}] is empty (--q-min, --q-max)"
+                "joint {joint}: the range [{lower}, {upper}] is empty (--q-min, --q-max, and \
+                 the URDF's limits of the mimic joints that follow it)"
             )));
         }
         for (k, x) in [(2, velocity), (3, acceleration)] {
@@ -113,6 +126,46 @@ pub fn joint_limits(
         });
     }
     Ok(out)
+}
+
+/// Joint `j`'s limits in `urdf` (lower, upper, speed; URDF has no acceleration limit): a range
+/// only where both ends are written (URDF's default for a missing end is 0).
+fn file_limits(urdf: Option<&[Limit]>, j: usize) -> [Option<f64>; 4] {
+    let file = urdf.and_then(|u| u.get(j)).copied().unwrap_or_default();
+    let range = match (file.lower, file.upper) {
+        (Some(l), Some(u)) if l < u => [Some(l), Some(u)],
+        _ => [None, None],
+    };
+    [range[0], range[1], file.velocity.filter(|v| *v > 0.0), None]
+}
+
+/// The URDF limits of each mimic joint that follows joint `j`, in j's terms.
+fn followers(robot: &Robot, urdf: Option<&[Limit]>, j: usize) -> Vec<[Option<f64>; 4]> {
+    let number = |v: &dynamics_codegen::model::Value| v.eval(&|_| None);
+    let mut out = Vec::new();
+    for (m, joint) in robot.joints.iter().enumerate() {
+        let Some(rule) = joint.mimic.as_ref().filter(|r| r.joint == j) else {
+            continue;
+        };
+        let (Some(k), Some(o)) = (number(&rule.multiplier), number(&rule.offset)) else {
+            continue;
+        };
+        if k == 0.0 {
+            continue;
+        }
+        let [lower, upper, velocity, _] = file_limits(urdf, m);
+        let range = lower.zip(upper).map(|(l, u)| {
+            let (a, b) = ((l - o) / k, (u - o) / k);
+            (a.min(b), a.max(b))
+        });
+        out.push([
+            range.map(|r| r.0),
+            range.map(|r| r.1),
+            velocity.map(|v| v / k.abs()),
+            None,
+        ]);
+    }
+    out
 }
 
 /// The defaults of a joint of this kind: lower, upper, speed, acceleration.
@@ -201,5 +254,56 @@ mod tests {
             assert_eq!(got[j].origins[..3], origins, "{j}");
             assert_eq!(got[j].origins[3], Origin::Option);
         }
+    }
+
+    /// A mimic joint (the second, `q₂ = −0.5 q₁ + 0.2`) is no row: its URDF range [−1, 0.6]
+    /// and speed 0.4 bound joint 1 through its rule, to [(0.6 − 0.2)/−0.5, (−1 − 0.2)/−0.5] =
+    /// [−0.8, 2.4] within joint 1's own [−2, 3], and 0.4/0.5 = 0.8 rad/s below its 1.5; the
+    /// options are per coordinate.
+    #[test]
+    fn a_mimic_joints_limits_bound_the_joint_it_follows() {
+        let text = "name = \"rrp\"\ngravity = [0, 0, -9.81]\n[[joints]]\ntype = \"revolute\"\n\
+                    mass = 1\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\
+                    mimic = { joint = 1, multiplier = -0.5, offset = 0.2 }\n\
+                    [[joints]]\ntype = \"prismatic\"\nmass = 1\n";
+        let source = dynamics_codegen::Source {
+            path: "rrp.toml",
+            text: Some(text),
+            ..dynamics_codegen::Source::default()
+        };
+        let robot = dynamics_codegen::load(&source).expect("reads").robot;
+        let limit = |lower, upper, velocity| Limit {
+            lower: Some(lower),
+            upper: Some(upper),
+            velocity: Some(velocity),
+            effort: None,
+        };
+        let urdf = [
+            limit(-2.0, 3.0, 1.5),
+            limit(-1.0, 0.6, 0.4),
+            Limit::default(),
+        ];
+        let got = joint_limits(&robot, Some(&urdf), [None; 4]).expect("limits");
+        assert_eq!(got.len(), 2);
+        let l = got[0].limits;
+        let want = [-0.8, 2.4, 0.8, 5.0];
+        for (x, w) in [l.lower, l.upper, l.velocity, l.acceleration]
+            .iter()
+            .zip(want)
+        {
+            assert!((x - w).abs() < 1e-12, "{l:?}");
+        }
+        assert_eq!(
+            got[0].origins,
+            [Origin::Urdf, Origin::Urdf, Origin::Urdf, Origin::Default]
+        );
+        assert_eq!(got[1].limits.upper, 0.1);
+        let three = [1.0, 1.0, 1.0];
+        let Err(Error::Setting(e)) =
+            joint_limits(&robot, None, [None, None, Some(&three[..]), None])
+        else {
+            panic!("three speeds for two coordinates")
+        };
+        assert!(e.contains("one for each of the 2 coordinates"), "{e}");
     }
 }

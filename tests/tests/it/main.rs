@@ -21,6 +21,7 @@ mod lint;
 mod mimic;
 mod mimic_derive_regressor;
 mod mimic_regressor;
+mod mimic_simplified;
 mod niku_arm_examples;
 mod niku_lagrangian_examples;
 mod non_finite;

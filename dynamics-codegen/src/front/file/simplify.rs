@@ -107,6 +107,7 @@ mod tests {
             .resolve(&Defaults {
                 joints: defaults.to_vec(),
                 rated: None,
+                coordinates: false,
             })
             .expect("resolves");
         assert_eq!(request.tolerance, [0.5]);
@@ -134,6 +135,7 @@ mod tests {
         let Err(problems) = given.resolve(&Defaults {
             joints: defaults.to_vec(),
             rated: None,
+            coordinates: false,
         }) else {
             panic!("a list of three for two joints resolved")
         };

@@ -39,6 +39,9 @@ pub struct Defaults {
     pub joints: Vec<JointEnvelope>,
     /// Per joint, or `None`: then `tolerance_percent` needs `rated`.
     pub rated: Option<Vec<f64>>,
+    /// Whether the robot has mimic joints: then the lists are per coordinate, and the
+    /// messages say so.
+    pub coordinates: bool,
 }
 
 /// The default envelope of a joint of `kind`: ±π rad or ±1 m, `DEFAULT_SPEED`,
@@ -63,7 +66,7 @@ impl<P: Copy> Given<P> {
     fn per_joint(
         &self,
         key: &str,
-        n: usize,
+        (n, each): (usize, &str),
         valid: fn(f64) -> Option<&'static str>,
         errors: &mut Vec<(P, String)>,
     ) -> Option<Vec<f64>> {
@@ -73,7 +76,7 @@ impl<P: Copy> Given<P> {
             let takes = if n == 1 {
                 "one number".to_string()
             } else {
-                format!("one number for every joint or one per joint ({n})")
+                format!("one number for every {each} or one per {each} ({n})")
             };
             errors.push((*at, format!("`{key}` takes {takes}, found {count}")));
             return None;
@@ -96,8 +99,14 @@ impl<P: Copy> Given<P> {
     /// value, a range that is empty, no tolerance or two.
     pub fn resolve(&self, defaults: &Defaults) -> Result<Simplification, Vec<(P, String)>> {
         let rated = defaults.rated.as_deref();
+        // A mimic joint follows its joint: the lists are per coordinate.
+        let each = if defaults.coordinates {
+            "coordinate"
+        } else {
+            "joint"
+        };
         let defaults = &defaults.joints;
-        let n = defaults.len();
+        let n = (defaults.len(), each);
         let mut errors = Vec::new();
         let tolerance = self.tolerance(n, rated, &mut errors);
         let finite = |v: f64| (!v.is_finite()).then_some("finite numbers");
@@ -105,7 +114,7 @@ impl<P: Copy> Given<P> {
         let upper = self.per_joint("q_max", n, finite, &mut errors);
         let speed = self.per_joint("qd_max", n, non_negative, &mut errors);
         let acceleration = self.per_joint("qdd_max", n, non_negative, &mut errors);
-        let joints: Vec<JointEnvelope> = (0..n)
+        let joints: Vec<JointEnvelope> = (0..n.0)
             .map(|i| JointEnvelope {
                 lower: lower.as_ref().map_or(defaults[i].lower, |v| v[i]),
                 upper: upper.as_ref().map_or(defaults[i].upper, |v| v[i]),
@@ -119,7 +128,7 @@ impl<P: Copy> Given<P> {
             let at = self.place("q_min").unwrap_or(self.at);
             let j = &joints[i];
             let message = format!(
-                "joint {}: `q_min` ({}) is above `q_max` ({})",
+                "{each} {}: `q_min` ({}) is above `q_max` ({})",
                 i + 1,
                 j.lower,
                 j.upper
@@ -146,13 +155,13 @@ impl<P: Copy> Given<P> {
     /// be left to `default_rated` (a URDF's efforts).
     fn tolerance(
         &self,
-        n: usize,
+        n: (usize, &str),
         default_rated: Option<&[f64]>,
         errors: &mut Vec<(P, String)>,
     ) -> Option<Vec<f64>> {
         let absolute = self.per_joint("tolerance", n, non_negative, errors);
         let rated = self.per_joint("rated", n, non_negative, errors);
-        let percent = self.per_joint("tolerance_percent", 1, non_negative, errors);
+        let percent = self.per_joint("tolerance_percent", (1, n.1), non_negative, errors);
         let given = |key| self.place(key).is_some();
         let relative = given("rated") || given("tolerance_percent");
         if given("tolerance") && relative {

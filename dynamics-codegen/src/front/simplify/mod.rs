@@ -113,15 +113,16 @@ pub(super) struct FromFile<'a> {
     pub at: &'a LitStr,
 }
 
-/// What a request for `robot` takes where it does not say: a URDF's `<limit>`s (range, speed;
-/// the efforts as rated torques where every joint has one), else the joints' kinds'.
+/// What a request for `robot` takes where it does not say, per coordinate (every joint but
+/// the mimic ones, which follow theirs): a URDF's `<limit>`s (range, speed; the efforts as
+/// rated torques where every joint has one, a coordinate's its own joint's), else the joints'
+/// kinds'.
 fn defaults(robot: &Robot, limits: &[Limit]) -> Defaults {
-    let joints = robot
-        .joints
+    let coordinates = robot.coordinates();
+    let joints = coordinates
         .iter()
-        .enumerate()
-        .map(|(i, j)| {
-            let mut e = default_joint(j.kind);
+        .map(|&i| {
+            let mut e = default_joint(robot.joints[i].kind);
             if let Some(limit) = limits.get(i) {
                 e.lower = limit.lower.unwrap_or(e.lower);
                 e.upper = limit.upper.unwrap_or(e.upper);
@@ -132,11 +133,17 @@ fn defaults(robot: &Robot, limits: &[Limit]) -> Defaults {
         .collect();
     let rated = (limits.len() == robot.joints.len())
         .then(|| {
-            let efforts = limits.iter().map(|l| l.effort.filter(|e| *e >= 0.0));
+            let efforts = coordinates
+                .iter()
+                .map(|&i| limits[i].effort.filter(|e| *e >= 0.0));
             efforts.collect::<Option<Vec<f64>>>()
         })
         .flatten();
-    Defaults { joints, rated }
+    Defaults {
+        joints,
+        rated,
+        coordinates: robot.has_mimics(),
+    }
 }
 
 /// The request for `robot`: the attribute's `simplify(...)` or the file's `[simplify]` (not
