@@ -1,12 +1,13 @@
 //! The batch functions: [`HORIZON`] states a call through the `_batch` methods, `tau_batch`,
-//! `M_batch`, `fd_batch` and `dtau_batch`, as a model-predictive controller evaluates the knots
-//! of its horizon. Each input holds `HORIZON × n` values, state after state (row k is state k);
+//! `M_batch`, `fd_batch`, `dtau_batch` and `dqdd_batch`, as a model-predictive controller
+//! evaluates the knots of its horizon. Each input holds `HORIZON × n` values, state after state (row k is state k);
 //! the output is each state's output, as the single-state function writes it, one after the
 //! other (NaN for a failed solve).
 
 use super::{Function, Functions, Timed};
 use dynamics_runtime::{
-    DynamicsBatch, DynamicsDerivativesBatch, InverseDynamicsDerivatives, NotPositiveDefinite,
+    DynamicsBatch, DynamicsDerivativesBatch, ForwardDynamicsDerivatives,
+    InverseDynamicsDerivatives, NotPositiveDefinite,
 };
 
 /// The number of states of a batch call.
@@ -80,6 +81,31 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         }
     }
 
+    unsafe extern "C" fn forward_derivatives_batch(
+        q: *const f64,
+        qd: *const f64,
+        tau: *const f64,
+        out: *mut f64,
+    ) {
+        let mut derivatives: [Result<ForwardDynamicsDerivatives<[f64; N], [[f64; N]; N]>, _>;
+            HORIZON] = [Err(NotPositiveDefinite); HORIZON];
+        // SAFETY: the contract of `Function`, `HORIZON` times over: each state's output is
+        // `dqdd`'s, `∂q̈/∂q`, `∂q̈/∂q̇` and `∂q̈/∂τ` (3 × N × N values).
+        unsafe {
+            R::default().forward_dynamics_derivatives_batch(
+                states(q),
+                states(qd),
+                states(tau),
+                &mut derivatives,
+            );
+            let out = results::<[[[f64; N]; N]; 3]>(out);
+            for (o, d) in out.iter_mut().zip(derivatives) {
+                let nan = [[f64::NAN; N]; N];
+                *o = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+            }
+        }
+    }
+
     /// The batch function named `function`.
     pub(super) fn get_batch(function: &[u8]) -> Option<Function> {
         Some(match function {
@@ -87,6 +113,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
             b"M_batch" => Self::mass_batch,
             b"fd_batch" => Self::forward_batch,
             b"dtau_batch" => Self::inverse_derivatives_batch,
+            b"dqdd_batch" => Self::forward_derivatives_batch,
             _ => return None,
         })
     }
@@ -111,7 +138,8 @@ mod tests {
         unsafe { dynamics_bench_function(robot.as_ptr(), function.as_ptr()) }.unwrap()
     }
 
-    /// Each state's output of a batch function has the bits of the single-state function's.
+    /// Each state's output of a batch function has the bits of the single-state function's
+    /// (`fd` and `dqdd` read the sample's `q̈` as torques).
     fn check<const N: usize>(robot: &str) {
         let s = samples::<N>(robot);
         let rows = |f: &dyn Fn(usize) -> [f64; N]| (0..HORIZON).flat_map(f).collect::<Vec<_>>();
@@ -122,6 +150,7 @@ mod tests {
             ("M_batch", "M", N * N),
             ("fd_batch", "fd", N),
             ("dtau_batch", "dtau", 2 * N * N),
+            ("dqdd_batch", "dqdd", 3 * N * N),
         ] {
             let mut out = vec![0.0; HORIZON * size];
             // SAFETY: HORIZON states in each input, room for as many outputs.
