@@ -87,21 +87,29 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         tau: *const f64,
         out: *mut f64,
     ) {
+        // Eight states a call (a group of `F64x8` lanes), so that the results stay in the
+        // first-level cache until they are copied out (`Result` is not `repr(C)`).
+        const GROUP: usize = 8;
         let mut derivatives: [Result<ForwardDynamicsDerivatives<[f64; N], [[f64; N]; N]>, _>;
-            HORIZON] = [Err(NotPositiveDefinite); HORIZON];
+            GROUP] = [Err(NotPositiveDefinite); GROUP];
         // SAFETY: the contract of `Function`, `HORIZON` times over: each state's output is
         // `dqdd`'s, `∂q̈/∂q`, `∂q̈/∂q̇` and `∂q̈/∂τ` (3 × N × N values).
         unsafe {
-            R::default().forward_dynamics_derivatives_batch(
-                states(q),
-                states(qd),
-                states(tau),
-                &mut derivatives,
-            );
+            let (q, qd, tau) = (states::<N>(q), states::<N>(qd), states::<N>(tau));
             let out = results::<[[[f64; N]; N]; 3]>(out);
-            for (o, d) in out.iter_mut().zip(derivatives) {
-                let nan = [[f64::NAN; N]; N];
-                *o = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+            for at in (0..HORIZON).step_by(GROUP) {
+                let k = GROUP.min(HORIZON - at);
+                let range = at..at + k;
+                R::default().forward_dynamics_derivatives_batch(
+                    &q[range.clone()],
+                    &qd[range.clone()],
+                    &tau[range.clone()],
+                    &mut derivatives[..k],
+                );
+                for (o, d) in out[range].iter_mut().zip(&derivatives[..k]) {
+                    let nan = [[f64::NAN; N]; N];
+                    *o = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+                }
             }
         }
     }
