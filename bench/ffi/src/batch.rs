@@ -13,6 +13,10 @@ use dynamics_runtime::{
 /// The number of states of a batch call.
 pub const HORIZON: usize = 100;
 
+/// One state's forward dynamics and derivatives, or the failed solve.
+type Forward<const N: usize> =
+    Result<ForwardDynamicsDerivatives<[f64; N], [[f64; N]; N]>, NotPositiveDefinite>;
+
 /// `HORIZON` states of `N` values.
 ///
 /// # Safety
@@ -90,8 +94,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         // Eight states a call (a group of `F64x8` lanes), so that the results stay in the
         // first-level cache until they are copied out (`Result` is not `repr(C)`).
         const GROUP: usize = 8;
-        let mut derivatives: [Result<ForwardDynamicsDerivatives<[f64; N], [[f64; N]; N]>, _>;
-            GROUP] = [Err(NotPositiveDefinite); GROUP];
+        let mut derivatives: [Forward<N>; GROUP] = [Err(NotPositiveDefinite); GROUP];
         // SAFETY: the contract of `Function`, `HORIZON` times over: each state's output is
         // `dqdd`'s, `∂q̈/∂q`, `∂q̈/∂q̇` and `∂q̈/∂τ` (3 × N × N values).
         unsafe {
