@@ -658,7 +658,7 @@ static std::string fastest_variant(
 // The batch rows, per state: a horizon of `gen.horizon()` states (the samples in turn) in one
 // call of the generated `_batch` functions, beside Pinocchio's own batch (rneaInParallel and
 // abaInParallel on one thread of a ModelPool) or, where it has none (crba,
-// computeRNEADerivatives), a loop. The generated results are checked first against the
+// computeRNEADerivatives, computeABADerivatives), a loop. The generated results are checked first against the
 // generated single-state functions, state by state.
 static void time_batches(
   const std::string & robot,
@@ -678,7 +678,7 @@ static void time_batches(
     const std::size_t s = static_cast<std::size_t>(k) % qs.size();
     Q.col(k) = qs[s], V.col(k) = vs[s], A.col(k) = as[s], TAU.col(k) = taus[s];
   }
-  std::vector<double> out(static_cast<std::size_t>(2 * n * n * h)), one(static_cast<std::size_t>(2 * n * n));
+  std::vector<double> out(static_cast<std::size_t>(3 * n * n * h)), one(static_cast<std::size_t>(3 * n * n));
   // Each state's output of `batch` against the single-state `single`'s, `size` values each.
   auto check_batch = [&](const char * batch, const char * single, const Eigen::MatrixXd & third, Eigen::Index size) {
     gen.get(robot, batch)(Q.data(), V.data(), third.data(), out.data());
@@ -693,7 +693,10 @@ static void time_batches(
   check_batch("M_batch", "M", A, n * n);
   check_batch("dtau_batch", "dtau", A, 2 * n * n);
   if (forward)
+  {
     check_batch("fd_batch", "fd", TAU, n);
+    check_batch("dqdd_batch", "dqdd", TAU, 3 * n * n);
+  }
   pinocchio::ModelPool pool(model, 1);
   Data data(model);
   const int warmup = 100, calls = 200;
@@ -727,11 +730,21 @@ static void time_batches(
     }
     return sum;
   });
-  if (forward)
-    row("fd_batch", TAU, [&] {
-      pinocchio::abaInParallel(1, pool, Q, V, TAU, OUT);
-      return OUT(0, 0);
-    });
+  if (!forward)
+    return;
+  row("fd_batch", TAU, [&] {
+    pinocchio::abaInParallel(1, pool, Q, V, TAU, OUT);
+    return OUT(0, 0);
+  });
+  row("dqdd_batch", TAU, [&] {
+    double sum = 0.0;
+    for (Eigen::Index k = 0; k < h; ++k)
+    {
+      pinocchio::computeABADerivatives(model, data, Q.col(k), V.col(k), TAU.col(k));
+      sum += data.ddq_dq(0, 0);
+    }
+    return sum;
+  });
 }
 
 // The simplified models (bench/ffi's `tau_simplified`, `M_simplified`, `g_simplified`, for the

@@ -1,16 +1,21 @@
 //! The batch functions: [`HORIZON`] states a call through the `_batch` methods, `tau_batch`,
-//! `M_batch`, `fd_batch` and `dtau_batch`, as a model-predictive controller evaluates the knots
-//! of its horizon. Each input holds `HORIZON × n` values, state after state (row k is state k);
+//! `M_batch`, `fd_batch`, `dtau_batch` and `dqdd_batch`, as a model-predictive controller
+//! evaluates the knots of its horizon. Each input holds `HORIZON × n` values, state after state (row k is state k);
 //! the output is each state's output, as the single-state function writes it, one after the
 //! other (NaN for a failed solve).
 
 use super::{Function, Functions, Timed};
 use dynamics_runtime::{
-    DynamicsBatch, DynamicsDerivativesBatch, InverseDynamicsDerivatives, NotPositiveDefinite,
+    DynamicsBatch, DynamicsDerivativesBatch, ForwardDynamicsDerivatives,
+    InverseDynamicsDerivatives, NotPositiveDefinite,
 };
 
 /// The number of states of a batch call.
 pub const HORIZON: usize = 100;
+
+/// One state's forward dynamics and derivatives, or the failed solve.
+type Forward<const N: usize> =
+    Result<ForwardDynamicsDerivatives<[f64; N], [[f64; N]; N]>, NotPositiveDefinite>;
 
 /// `HORIZON` states of `N` values.
 ///
@@ -80,6 +85,38 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         }
     }
 
+    unsafe extern "C" fn forward_derivatives_batch(
+        q: *const f64,
+        qd: *const f64,
+        tau: *const f64,
+        out: *mut f64,
+    ) {
+        // Eight states a call (a group of `F64x8` lanes), so that the results stay in the
+        // first-level cache until they are copied out (`Result` is not `repr(C)`).
+        const GROUP: usize = 8;
+        let mut derivatives: [Forward<N>; GROUP] = [Err(NotPositiveDefinite); GROUP];
+        // SAFETY: the contract of `Function`, `HORIZON` times over: each state's output is
+        // `dqdd`'s, `∂q̈/∂q`, `∂q̈/∂q̇` and `∂q̈/∂τ` (3 × N × N values).
+        unsafe {
+            let (q, qd, tau) = (states::<N>(q), states::<N>(qd), states::<N>(tau));
+            let out = results::<[[[f64; N]; N]; 3]>(out);
+            for at in (0..HORIZON).step_by(GROUP) {
+                let k = GROUP.min(HORIZON - at);
+                let range = at..at + k;
+                R::default().forward_dynamics_derivatives_batch(
+                    &q[range.clone()],
+                    &qd[range.clone()],
+                    &tau[range.clone()],
+                    &mut derivatives[..k],
+                );
+                for (o, d) in out[range].iter_mut().zip(&derivatives[..k]) {
+                    let nan = [[f64::NAN; N]; N];
+                    *o = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+                }
+            }
+        }
+    }
+
     /// The batch function named `function`.
     pub(super) fn get_batch(function: &[u8]) -> Option<Function> {
         Some(match function {
@@ -87,6 +124,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
             b"M_batch" => Self::mass_batch,
             b"fd_batch" => Self::forward_batch,
             b"dtau_batch" => Self::inverse_derivatives_batch,
+            b"dqdd_batch" => Self::forward_derivatives_batch,
             _ => return None,
         })
     }
@@ -111,7 +149,8 @@ mod tests {
         unsafe { dynamics_bench_function(robot.as_ptr(), function.as_ptr()) }.unwrap()
     }
 
-    /// Each state's output of a batch function has the bits of the single-state function's.
+    /// Each state's output of a batch function has the bits of the single-state function's
+    /// (`fd` and `dqdd` read the sample's `q̈` as torques).
     fn check<const N: usize>(robot: &str) {
         let s = samples::<N>(robot);
         let rows = |f: &dyn Fn(usize) -> [f64; N]| (0..HORIZON).flat_map(f).collect::<Vec<_>>();
@@ -122,6 +161,7 @@ mod tests {
             ("M_batch", "M", N * N),
             ("fd_batch", "fd", N),
             ("dtau_batch", "dtau", 2 * N * N),
+            ("dqdd_batch", "dqdd", 3 * N * N),
         ] {
             let mut out = vec![0.0; HORIZON * size];
             // SAFETY: HORIZON states in each input, room for as many outputs.

@@ -11,8 +11,8 @@
 //! positive definite; the derivatives `dtau` (of inverse dynamics) and `dqdd` (of forward
 //! dynamics, NaN where M is not positive definite); the joint torque regressor `Y`, the base
 //! regressor `YB` and the base parameters `piB` ([`dynamics_bench_base_count`] of them); and
-//! `tau_batch`, `M_batch`, `fd_batch`, `dtau_batch`: [`HORIZON`] states a call (`batch`). For
-//! the robots with simplified models, `tau_simplified`, `M_simplified`, `g_simplified`, with
+//! `tau_batch`, `M_batch`, `fd_batch`, `dtau_batch`, `dqdd_batch`: [`HORIZON`] states a call
+//! (`batch`). For the robots with simplified models, `tau_simplified`, `M_simplified`, `g_simplified`, with
 //! their proven bounds ([`dynamics_bench_simplified_bounds`]) and envelope (`simplified`).
 
 mod batch;
