@@ -39,6 +39,23 @@ impl Emitter<'_> {
         statement
     }
 
+    /// Lanes stored as they are computed ([`Emitter::lanes_due`]) where asked for and every
+    /// matrix has its plan: the zeros of the result they are stored into.
+    fn lanes_in_place(&self, shape: &Shape) -> Option<TokenStream> {
+        match shape {
+            Shape::Lanes {
+                stack,
+                lanes,
+                solved: None,
+            } if self.returned_in_place && lanes.iter().all(Option::is_some) => {
+                let n = Literal::usize_unsuffixed(self.eq.dof);
+                let count = Literal::usize_unsuffixed(stack.len());
+                Some(quote!([[[T::ZERO; #n]; #n]; #count]))
+            }
+            _ => None,
+        }
+    }
+
     /// A function's body computing `shape`: the configuration's fields it reads, then
     /// the terms in `q̇` and `q̈`, then the result, returned or, for a method with an `into`
     /// form, written into `y_` (`in_place`).
@@ -82,20 +99,7 @@ impl Emitter<'_> {
                 };
             }
         }
-        // Lanes stored as they are computed ([`Emitter::lanes_due`]) where asked for and every
-        // matrix has its plan: the zeros of the result they are stored into.
-        let lanes_in_place = match shape {
-            Shape::Lanes {
-                stack,
-                lanes,
-                solved: None,
-            } if self.returned_in_place && lanes.iter().all(Option::is_some) => {
-                let n = Literal::usize_unsuffixed(self.eq.dof);
-                let count = Literal::usize_unsuffixed(stack.len());
-                Some(quote!([[[T::ZERO; #n]; #n]; #count]))
-            }
-            _ => None,
-        };
+        let lanes_in_place = self.lanes_in_place(shape);
         self.returned_in_place = lanes_in_place.is_some();
         // By node, rather than a search of the outputs at every node.
         let mut is_output = vec![false; self.graph.len()];
