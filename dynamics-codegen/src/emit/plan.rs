@@ -5,8 +5,8 @@
 //! `dynamics_fma(x, y, a)`, `T::sin(a)` or `dynamics_sin(a)`, `p_m1` or `p_0`. One plan, two
 //! printers: the C writes the Rust's expressions, operation for operation.
 
-use super::sums::{Sums, Written};
-use crate::symbolic::{Graph, Node, NodeId, Number, Var, WRENCH};
+use super::sums::{as_sub, Sums, Written};
+use crate::symbolic::{Node, NodeId, Number, Var, WRENCH};
 use crate::trace::Equations;
 
 /// Where an expression is written, which decides whether it needs parentheses.
@@ -134,15 +134,6 @@ pub(crate) fn operands(eq: &Equations, id: NodeId) -> Operands {
             }
         }
         Node::Const(_) | Node::Var(_) => Operands::NONE,
-    }
-}
-
-/// `(a, x)` if `a + b` is `a − x`.
-pub(crate) fn as_sub(graph: &Graph, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
-    match (graph.node(a), graph.node(b)) {
-        (_, Node::Neg(x)) => Some((a, x)),
-        (Node::Neg(x), _) => Some((b, x)),
-        _ => None,
     }
 }
 

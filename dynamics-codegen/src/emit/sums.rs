@@ -40,7 +40,7 @@ pub(crate) trait Sums {
 
     /// `(a, x)` if `a + b` is `a − x`.
     fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
-        super::plan::as_sub(self.graph(), a, b)
+        as_sub(self.graph(), a, b)
     }
 
     /// Whether `id` is written as a sum: a sum, or a negated sum written in place, whose terms
@@ -170,5 +170,14 @@ pub(crate) trait Sums {
             negate_addend: a.1 && !b.1,
         };
         (fused, a.1 && b.1)
+    }
+}
+
+/// `(a, x)` if `a + b` is `a − x`.
+pub(crate) fn as_sub(graph: &Graph, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
+    match (graph.node(a), graph.node(b)) {
+        (_, Node::Neg(x)) => Some((a, x)),
+        (Node::Neg(x), _) => Some((b, x)),
+        _ => None,
     }
 }
