@@ -92,16 +92,41 @@ fn compile(cc: &str, flags: &[&str], extra: &[&str], optimize: bool, files: (&Pa
 /// How many ways a header is built.
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub enum Reach {
-    /// The first compiler found, with `<math.h>`'s sines and cosines (and the tangents in
-    /// lanes, where the header has them), unoptimized: for a large header, or one whose code
-    /// is of a kind another test builds every way.
+    /// One compiler, the cheapest found (clang builds a large header unoptimized in a third of
+    /// gcc's time), with `<math.h>`'s sines and cosines (and the tangents in lanes, where the
+    /// header has them), unoptimized: for a large header, or one whose code is of a kind
+    /// another test builds every way.
     First,
-    /// Every compiler, each with `<math.h>`'s (and the lanes), the first build optimized (`-O1`,
-    /// where the compilers' flow analyses warn): the header's own and default sines and
+    /// Every compiler, each with `<math.h>`'s (and the lanes), gcc's and g++'s first build of a
+    /// small header optimized (see [`optimized`]): the header's own and default sines and
     /// cosines are the same text in every header, built every way on smaller ones.
     Compilers,
-    /// Every compiler, every build, the first optimized.
+    /// Every compiler, every build, gcc's and g++'s first of a small header optimized.
     EveryWay,
+}
+
+/// Headers up to this size get an optimized build: gcc's flow analyses at `-O1` took 7 to 19 s
+/// of CPU on PUMA 560's and the Panda's and warn on the emitters' code, which the small
+/// headers of the same families show them.
+const OPTIMIZED_UP_TO_BYTES: usize = 400_000;
+
+/// Whether `cc`'s build `b` (0 the first) of `header` at `reach` is optimized (`-O1`): gcc's
+/// and g++'s first, where their flow analyses warn (clang's warnings do not depend on the
+/// optimization level), on a header small enough.
+fn optimized(cc: &str, b: usize, header: &str, reach: Reach) -> bool {
+    reach != Reach::First && b == 0 && cc != "clang" && header.len() <= OPTIMIZED_UP_TO_BYTES
+}
+
+/// The compilers of a build at `reach`: all, or the cheapest found.
+fn compilers_for(reach: Reach) -> Vec<(&'static str, &'static [&'static str], bool)> {
+    let mut all = compilers();
+    if reach == Reach::First {
+        if let Some(k) = all.iter().position(|(cc, _, _)| *cc == "clang") {
+            all.swap(0, k);
+        }
+        all.truncate(1);
+    }
+    all
 }
 
 /// Compiles the header and driver of `robot` with every compiler (with `<math.h>`'s sines and
@@ -114,7 +139,6 @@ pub fn compile_and_run(robot: &Robot, states: &[State]) -> Vec<Run> {
 /// [`compile_and_run`], built as far as `reach` says. Optimizing a large header took most of
 /// the command line's test time and finds nothing the small headers of the same code do not.
 pub fn compile_and_run_builds(robot: &Robot, states: &[State], reach: Reach) -> Vec<Run> {
-    let optimize_first = reach != Reach::First;
     // Two robots may share a name (the Panda's description file and its URDF), and tests run
     // side by side: a directory of their own per header.
     let mut hasher = std::collections::hash_map::DefaultHasher::new();
@@ -129,29 +153,17 @@ pub fn compile_and_run_builds(robot: &Robot, states: &[State], reach: Reach) -> 
     let source = dir.join("driver.c");
     std::fs::write(&source, driver(robot, states)).expect("write");
     let mut runs = Vec::new();
-    let compilers = compilers();
-    let count = if reach == Reach::First {
-        1
-    } else {
-        compilers.len()
-    };
-    for (cc, flags, kernels_too) in compilers.into_iter().take(count) {
-        // Each compiler's first build optimized; the others, which differ only in what the
-        // header's macros select, unoptimized: the same IEEE results (no contraction), in
-        // a fraction of the time a large header takes to optimize.
+    for (cc, flags, kernels_too) in compilers_for(reach) {
+        // The builds differ only in what the header's macros select: the same IEEE results
+        // (no contraction), most of them unoptimized.
         for (b, (name, extra)) in builds(&robot.header, kernels_too && reach == Reach::EveryWay)
             .into_iter()
             .enumerate()
         {
             let label = format!("{cc} {}", extra.join(" "));
             let program = dir.join(format!("driver_{cc}_{name}"));
-            compile(
-                cc,
-                flags,
-                extra,
-                optimize_first && b == 0,
-                (&source, &program),
-            );
+            let optimize = optimized(cc, b, &robot.header, reach);
+            compile(cc, flags, extra, optimize, (&source, &program));
             let run = Command::new(&program).output().expect("run the driver");
             assert!(run.status.success(), "{label} driver of {}", robot.name);
             let printed = parse(&String::from_utf8(run.stdout).expect("UTF-8"));
