@@ -110,13 +110,57 @@ pub fn eval_terms(
     state: State<'_>,
     k: &Constants,
 ) -> Option<f64> {
-    let mut sum = 0.0;
-    for (m, c) in terms {
-        let mut x = c.to_f64();
-        for (s, e) in m.factors() {
-            x *= symbol_value(s, state, k)?.powi(i32::try_from(*e).ok()?);
+    Terms::new(terms)?.eval(state, k)
+}
+
+/// A polynomial made ready to evaluate at many states: its few dozen distinct symbols each
+/// valued once a state (a sine or cosine per factor of thousands of terms took most of a test's
+/// time), each term its coefficient and its factors as indices into them.
+pub struct Terms<'a> {
+    symbols: Vec<&'a Sym>,
+    terms: Vec<(f64, Vec<(usize, i32)>)>,
+}
+
+impl<'a> Terms<'a> {
+    /// `terms` indexed; `None` where an exponent does not fit an `i32`.
+    #[must_use]
+    pub fn new(terms: &'a BTreeMap<Monomial, Number>) -> Option<Self> {
+        let mut index: BTreeMap<&Sym, usize> = BTreeMap::new();
+        let mut symbols = Vec::new();
+        let mut indexed = Vec::with_capacity(terms.len());
+        for (m, c) in terms {
+            let mut factors = Vec::new();
+            for (s, e) in m.factors() {
+                let k = *index.entry(s).or_insert_with(|| {
+                    symbols.push(s);
+                    symbols.len() - 1
+                });
+                factors.push((k, i32::try_from(*e).ok()?));
+            }
+            indexed.push((c.to_f64(), factors));
         }
-        sum += x;
+        Some(Terms {
+            symbols,
+            terms: indexed,
+        })
     }
-    Some(sum)
+
+    /// The sum of the terms at `state`; `None` where a symbol has no value ([`symbol_value`]).
+    #[must_use]
+    pub fn eval(&self, state: State<'_>, k: &Constants) -> Option<f64> {
+        let values = self
+            .symbols
+            .iter()
+            .map(|s| symbol_value(s, state, k))
+            .collect::<Option<Vec<f64>>>()?;
+        let mut sum = 0.0;
+        for (c, factors) in &self.terms {
+            let mut x = *c;
+            for &(s, e) in factors {
+                x *= values[s].powi(e);
+            }
+            sum += x;
+        }
+        Some(sum)
+    }
 }

@@ -1,7 +1,7 @@
 //! The proven bound against sampling: the full polynomial is τ (the graph's), and the pruned
 //! one never strays from it by more than the bound at random states of the envelope.
 
-use super::eval::{eval_terms, Constants, State};
+use super::eval::{Constants, State, Terms};
 use super::{prune_outputs, Caps, Pruning};
 use crate::model::{Envelope, JointEnvelope, Robot, Simplification};
 use crate::symbolic::Var;
@@ -91,6 +91,11 @@ fn worst_errors(prunings: &[Pruning], eq: &Equations, e: &Envelope, samples: usi
     let k: &Constants = &constants;
     let mut rng = Rng::new(11);
     let mut worst = vec![0.0f64; eq.dof];
+    let ready = |t| Terms::new(t).expect("exponents fit");
+    let polynomials: Vec<_> = prunings
+        .iter()
+        .map(|p| (ready(&p.full), ready(&p.kept)))
+        .collect();
     for _ in 0..samples {
         let x = state(&mut rng, e);
         let at = State {
@@ -99,9 +104,9 @@ fn worst_errors(prunings: &[Pruning], eq: &Equations, e: &Envelope, samples: usi
             qdd: &x[2],
         };
         let tau = graph_tau(eq, &k.offsets, &x);
-        for (i, p) in prunings.iter().enumerate() {
-            let full = eval_terms(&p.full, at, k).expect("numeric");
-            let kept = eval_terms(&p.kept, at, k).expect("numeric");
+        for (i, (full, kept)) in polynomials.iter().enumerate() {
+            let full = full.eval(at, k).expect("numeric");
+            let kept = kept.eval(at, k).expect("numeric");
             let scale = 1.0 + tau[i].abs();
             assert!(
                 (full - tau[i]).abs() <= 1e-9 * scale,
