@@ -115,7 +115,10 @@ mod tests {
             let mut marked = vec![marker; N * N];
             call(&s.q, &mut marked);
             let left = (0..N * N).filter(|&k| marked[k] == marker).count();
-            assert!(left >= 2 * 3 * 4, "{robot}: {left} markers left between the branches");
+            assert!(
+                left >= 2 * 3 * 4,
+                "{robot}: {left} markers left between the branches"
+            );
             for (k, (&got, &want)) in marked.iter().zip(&want).enumerate() {
                 if got == marker {
                     assert_eq!(want, 0.0, "{robot}: M[{k}] left unwritten");
