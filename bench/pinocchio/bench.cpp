@@ -33,6 +33,8 @@
 //      (q, qd, qdd), n × 10 n, each link's ten columns about Pinocchio's joint frame), and `YB`:
 //      the same, then its base columns gathered (Pinocchio has no base regressor; the columns a
 //      QR with column pivoting of Y stacked over the samples finds independent, found once).
+//      The generated `M` (`mass_matrix_into`) writes into a matrix of its own, kept across the
+//      calls and zeroed once, as crba keeps data.M: a tree's leaves its zero blocks unwritten.
 //
 // Output: one line per (robot, function) on stdout, `robot<TAB>function<TAB>median_ns`, robot =
 // the file's "robot". A checksum (one output element per call, summed) goes to stderr so that the
@@ -463,6 +465,9 @@ static void check_generated(
 {
   Data data(model);
   std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
+  // `M`'s own matrix, zeroed once and kept across the samples (a tree's `M` leaves the blocks
+  // between its branches as it finds them), as it is kept when timed.
+  std::vector<double> kept_M(n * n, 0.0);
   auto rows = [&](std::size_t r, std::size_t c) {
     Eigen::MatrixXd m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c));
     for (std::size_t i = 0; i < r; ++i)
@@ -493,8 +498,10 @@ static void check_generated(
       throw std::runtime_error(robot + ": the generated code has " + std::to_string(n) + " joints");
     get("tau")(q.data(), v.data(), a.data(), out.data());
     check(robot, "tau" + at, vector(n), vecn(sample["tau"]), s);
-    get("M")(q.data(), v.data(), a.data(), out.data());
+    get("M")(q.data(), v.data(), a.data(), kept_M.data());
+    std::copy(kept_M.begin(), kept_M.end(), out.begin());
     check(robot, "M" + at, matrix(), matn(sample["M"]), s);
+    check(robot, "M" + at + " against Pinocchio", matrix(), symmetric(pinocchio::crba(model, data, q)), s);
     get("g")(q.data(), v.data(), a.data(), out.data());
     check(robot, "g" + at, vector(n), vecn(sample["g"]), s);
     get("C")(q.data(), v.data(), a.data(), out.data());
@@ -993,11 +1000,14 @@ int main(int argc, char ** argv)
 
     const auto n = static_cast<std::size_t>(qs[0].size());
     std::vector<double> out(std::max(10 * n * n, std::size_t(12)));
+    // `M`'s matrix, kept across its calls and zeroed once, as Pinocchio keeps `data.M`: a tree's
+    // generated `M` (`mass_matrix_into`) writes the elements along its branches alone.
+    std::vector<double> kept_M(n * n, 0.0);
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(6, model.nv);
     Eigen::VectorXd JtF(model.nv);
     // Pinocchio's `function`, and the generated one in turn with it when it is loaded, the
-    // generated one given `third` as its third input.
-    auto time_with = [&](const char * function, const std::vector<Eigen::VectorXd> & third, auto && pin) {
+    // generated one given `third` as its third input and `into` as its output.
+    auto time_into = [&](const char * function, const std::vector<Eigen::VectorXd> & third, double * into, auto && pin) {
       if (!with_generated)
       {
         std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin, checksum));
@@ -1006,16 +1016,16 @@ int main(int argc, char ** argv)
       {
         const GeneratedFunction f = generated->get(robot, function);
         auto gen = [&](std::size_t k) {
-          f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
-          return out[0];
+          f(qs[k].data(), vs[k].data(), third[k].data(), into);
+          return into[0];
         };
         const bool peer =
           std::find(casadi_functions.begin(), casadi_functions.end(), function) != casadi_functions.end();
         // The CasADi peer, through the same kind of call: its fastest variant, timed as the
         // others are, and named in a last column.
         auto call = [&](GeneratedFunction f, std::size_t k) {
-          f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
-          return out[0];
+          f(qs[k].data(), vs[k].data(), third[k].data(), into);
+          return into[0];
         };
         const std::string variant = peer ? fastest_variant(function, casadi_robot, ns, call, checksum) : "";
         const GeneratedFunction fp = peer ? casadi_robot((function + (":" + variant)).c_str()) : nullptr;
@@ -1037,8 +1047,8 @@ int main(int argc, char ** argv)
           // The C in turn with both, through the same kind of call as the Rust.
           const GeneratedFunction fc = c_get(function);
           auto c = [&](std::size_t k) {
-            fc(qs[k].data(), vs[k].data(), third[k].data(), out.data());
-            return out[0];
+            fc(qs[k].data(), vs[k].data(), third[k].data(), into);
+            return into[0];
           };
           if (!peer)
           {
@@ -1062,11 +1072,14 @@ int main(int argc, char ** argv)
       }
       std::fflush(stdout);
     };
+    auto time_with = [&](const char * function, const std::vector<Eigen::VectorXd> & third, auto && pin) {
+      time_into(function, third, out.data(), pin);
+    };
     auto time = [&](const char * function, auto && pin) { time_with(function, as, pin); };
     time("tau", [&](std::size_t k) {
       return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0];
     });
-    time("M", [&](std::size_t k) {
+    time_into("M", as, kept_M.data(), [&](std::size_t k) {
       return pinocchio::crba(model, data, qs[k])(0, 0);
     });
     time("g", [&](std::size_t k) {

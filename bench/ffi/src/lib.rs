@@ -47,7 +47,9 @@ impl<R, const N: usize, const B: usize> Timed<N, B> for R where
 /// `computeJointTorqueRegressor` layout), the n × B rows of the base regressor for `YB`, the B
 /// base parameters for `piB` (no input read), n for the others. `JtF` reads the wrench
 /// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
-/// `dqdd` the joint torques `tau`.
+/// `dqdd` the joint torques `tau`. `M` is `mass_matrix_into`: on a tree it leaves the blocks
+/// between the branches as `out` has them, so its caller keeps a matrix for it, zeroed once (as
+/// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// Reads `N` values.
@@ -81,8 +83,12 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
     }
 
     unsafe extern "C" fn mass(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
-        // SAFETY: the contract of `Function`.
-        unsafe { output_matrix(out, R::default().mass_matrix(&input(q))) }
+        // SAFETY: the contract of `Function` (room for n × n values at `out`, which holds `f64`s,
+        // so it is aligned for them).
+        unsafe {
+            let m = &mut *out.cast::<[[f64; N]; N]>();
+            R::default().mass_matrix_into(&input(q), m);
+        }
     }
 
     unsafe extern "C" fn gravity(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {

@@ -67,6 +67,10 @@ mod tests {
             for (function, third, want) in checks {
                 let f = lookup(robot, function).expect("a tree's function");
                 let mut got = vec![f64::NAN; 3 * N * N + 1];
+                if function == "M" {
+                    // Its contract: zeros where M is zero at every state.
+                    got[..N * N].fill(0.0);
+                }
                 // SAFETY: N inputs each, room for the largest output (3 N × N) and one more.
                 unsafe {
                     f(
@@ -89,6 +93,46 @@ mod tests {
         for function in ["fk", "J", "JtF", "Y", "YB", "piB", "tau_batch"] {
             assert!(lookup(robot, function).is_none(), "{robot} {function}");
         }
+    }
+
+    /// A tree's `M` through the C ABI writes the elements along its branches and leaves the
+    /// blocks between them as the caller's matrix has them: a matrix kept across the samples,
+    /// zeroed once, holds each sample's M bit for bit, and a marker put between the branches
+    /// stays there (only where M is zero at the sample).
+    fn check_mass_kept<R: DynamicsDerivatives<N>, const N: usize>(r: &R, robot: &str) {
+        let f = lookup(robot, "M").expect("a tree's M");
+        let call = |q: &[f64; N], out: &mut [f64]| {
+            // SAFETY: N joint values, room for N × N outputs; the other inputs are not read.
+            unsafe { f(q.as_ptr(), q.as_ptr(), q.as_ptr(), out.as_mut_ptr()) }
+        };
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+        let mut kept = vec![0.0; N * N];
+        for s in samples::<N>(robot) {
+            let want: Vec<f64> = r.mass_matrix(&s.q).iter().flatten().copied().collect();
+            call(&s.q, &mut kept);
+            assert_eq!(bits(&kept), bits(&want), "{robot}: M into a kept matrix");
+            let marker = 7.5;
+            let mut marked = vec![marker; N * N];
+            call(&s.q, &mut marked);
+            let left = (0..N * N).filter(|&k| marked[k] == marker).count();
+            assert!(
+                left >= 2 * 3 * 4,
+                "{robot}: {left} markers left between the branches"
+            );
+            for (k, (&got, &want)) in marked.iter().zip(&want).enumerate() {
+                if got == marker {
+                    assert_eq!(want, 0.0, "{robot}: M[{k}] left unwritten");
+                } else {
+                    assert_eq!(got.to_bits(), want.to_bits(), "{robot}: M[{k}]");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_tree_s_mass_matrix_leaves_the_callers_zeros_between_branches() {
+        check_mass_kept(&BaxterFreeFingers, "baxter_no_mimic");
+        check_mass_kept(&AllegroHand, "allegro_right_hand");
     }
 
     #[test]

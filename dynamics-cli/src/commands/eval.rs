@@ -3,7 +3,7 @@
 
 // `inspect.rs` imports `usage` from here (left to the helper moving `inspect`).
 pub(crate) use super::usage;
-use super::values::{joints, settings};
+use super::values::{coordinates, settings};
 use super::{load, Failure};
 use crate::args::Eval;
 use crate::format::{self, Evaluation};
@@ -12,10 +12,9 @@ use dynamics_codegen::{derive, State};
 pub fn run(args: &Eval) -> Result<String, Failure> {
     let robot = load(&args.robot)?;
     let eq = derive(&robot);
-    let n = eq.dof;
-    let q = joints("eval", "--q", Some(&args.q), n)?;
-    let qd = joints("eval", "--qd", args.qd.as_ref(), n)?;
-    let qdd = joints("eval", "--qdd", args.qdd.as_ref(), n)?;
+    let q = coordinates("eval", "--q", Some(&args.q), &robot)?;
+    let qd = coordinates("eval", "--qd", args.qd.as_ref(), &robot)?;
+    let qdd = coordinates("eval", "--qdd", args.qdd.as_ref(), &robot)?;
     let params = settings("eval", &robot, &args.set)?;
     let values = eq.evaluate(&State {
         fields: &params,

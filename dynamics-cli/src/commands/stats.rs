@@ -1,6 +1,7 @@
 //! `dynamics stats ROBOT`: expansion time, operation counts, longest chain of operations and
 //! code size per method, and the cost of the readable equations the derive adds.
 
+use super::values::joint_count;
 use super::{field_idents, load_with_request, self_fields, type_name, Failure};
 use crate::args::Stats;
 use dynamics_codegen::model::{Robot, Simplification};
@@ -23,17 +24,6 @@ fn branches(robot: &Robot) -> String {
     format!(" in {tips} branches")
 }
 
-/// "6 joints", or "3 coordinates (4 joints, 1 of them mimic)" for a robot with mimic joints,
-/// which follow others and are not coordinates.
-fn joints(robot: &Robot) -> String {
-    let (joints, coordinates) = (robot.dof(), robot.coordinates().len());
-    if joints == coordinates {
-        return format!("{joints} joints");
-    }
-    let mimic = joints - coordinates;
-    format!("{coordinates} coordinates ({joints} joints, {mimic} of them mimic)")
-}
-
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let file = load_with_request(&args.robot)?;
     let robot = &file.robot;
@@ -50,7 +40,7 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     let mut out = format!(
         "{}: {}{}, graph {} nodes, derived and emitted in {:.1} ms\n",
         robot.name,
-        joints(robot),
+        joint_count(robot),
         branches(robot),
         eq.graph.len(),
         elapsed.as_secs_f64() * 1e3

@@ -13,17 +13,48 @@ pub(super) fn joints(
     given: Option<&Numbers>,
     n: usize,
 ) -> Result<Vec<f64>, Failure> {
+    per(command, option, given, n, &format!("{n} joints"))
+}
+
+/// One value per coordinate of `robot` (per joint where no joint follows another), zeros when
+/// the option is not given.
+pub(super) fn coordinates(
+    command: &str,
+    option: &str,
+    given: Option<&Numbers>,
+    robot: &Robot,
+) -> Result<Vec<f64>, Failure> {
+    let n = robot.coordinates().len();
+    per(command, option, given, n, &joint_count(robot))
+}
+
+/// `n` values, zeros when the option is not given; `has` says how many the robot has.
+fn per(
+    command: &str,
+    option: &str,
+    given: Option<&Numbers>,
+    n: usize,
+    has: &str,
+) -> Result<Vec<f64>, Failure> {
     match given {
         None => Ok(vec![0.0; n]),
         Some(Numbers(v)) if v.len() == n => Ok(v.clone()),
         Some(Numbers(v)) => Err(usage(
             command,
-            &format!(
-                "{option}: {} values given, the robot has {n} joints",
-                v.len()
-            ),
+            &format!("{option}: {} values given, the robot has {has}", v.len()),
         )),
     }
+}
+
+/// "6 joints", or "3 coordinates (4 joints, 1 of them mimic)" for a robot with mimic joints,
+/// which follow others and are not coordinates.
+pub(super) fn joint_count(robot: &Robot) -> String {
+    let (joints, coordinates) = (robot.dof(), robot.coordinates().len());
+    if joints == coordinates {
+        return format!("{joints} joints");
+    }
+    let mimic = joints - coordinates;
+    format!("{coordinates} coordinates ({joints} joints, {mimic} of them mimic)")
 }
 
 /// The value of each of `robot`'s parameters, in the order of its fields, as [`parameters`]

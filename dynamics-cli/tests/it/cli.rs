@@ -4,29 +4,10 @@
 //! (`emit` is checked by the golden test and compiled by the `emitted_puma560` example;
 //! `emit --lang c` by `c_header.rs`.)
 
+use crate::runner::{dynamics, dynamics_in, root};
 use dynamics_reference::scaled_error;
 use serde_json::Value;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("workspace root")
-        .to_path_buf()
-}
-
-fn dynamics(args: &[&str]) -> Output {
-    dynamics_in(&root(), args)
-}
-
-fn dynamics_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run dynamics")
-}
+use std::process::Output;
 
 fn stdout(out: &Output) -> String {
     assert!(

@@ -4,22 +4,15 @@
 //! the file identified by `dynamics identify` once torques from the numeric inverse dynamics are
 //! appended; the same seed, the same file.
 
+use crate::runner::dynamics;
 use dynamics_codegen::derive;
 use dynamics_codegen::numeric::Numeric;
 use dynamics_codegen::symbolic::Var;
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 const PUMA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/puma560.toml");
 const PANDA_URDF: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
-
-fn dynamics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .output()
-        .expect("run dynamics")
-}
 
 fn scratch(name: &str) -> String {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli_excite");

@@ -210,3 +210,33 @@ fn a_mimic_robot_is_excited_in_its_coordinates() {
     let header = trajectory.lines().next().expect("a header");
     assert_eq!(header, "t,q1,q2,q3,q4,qd1,qd2,qd3,qd4,qdd1,qdd2,qdd3,qdd4");
 }
+
+/// A mimic joint's Coulomb friction is not grouped into its joint's base parameter: on the
+/// coordinate it follows, its torque `k sign(k q̇₂)` is `|k| sign(q̇₂)`, `|k|` = 0.7 times the
+/// column of that joint's own Coulomb friction, so `identify` names it not identified, a
+/// multiple of `FC2` (docs/identification.md).
+#[test]
+fn a_mimic_joints_coulomb_friction_is_a_multiple_of_its_joints() {
+    let viscous = "friction_viscous = 0.4\n";
+    let described = text(true).replacen(viscous, &format!("{viscous}friction_coulomb = 0.6\n"), 1);
+    assert_ne!(described, text(true), "the third joint's friction");
+    let path = scratch("arm5_coulomb.toml");
+    std::fs::write(&path, described).expect("write robot");
+    // The torques of the arm without it: its column, not its value, is what is checked.
+    let states = fourier(4, 600, 100.0, 0.7, &[]);
+    let (tau, _) = torques(&states);
+    let csv = write_csv("mimic_coulomb.csv", &states, &tau, true);
+    let robot = path.to_str().expect("a path");
+    let out = dynamics(&["identify", robot, "--csv", &csv, "--tolerance", "1e-8"]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = report
+        .lines()
+        .find(|l| l.trim_start().starts_with("FC3: "))
+        .unwrap_or_else(|| panic!("FC3 not identified: {report}"));
+    assert!(line.contains("its column is +7.0000e-1 FC2 "), "{line}");
+}

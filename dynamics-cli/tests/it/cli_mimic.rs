@@ -4,9 +4,9 @@
 //! (Rust and C) build its simplified models, one tolerance and range per coordinate, with the
 //! mimic joint's `sin(−0.7 q2 + c)` bounded through its rule, and state the same bounds.
 
+use crate::runner::dynamics;
 use std::collections::BTreeSet;
-use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 const ARM: &str = "tests/data/trees/mimic_arm.toml";
 
@@ -23,17 +23,6 @@ const REQUEST: [&str; 10] = [
     "5",
     "--qd-max=2",
 ];
-
-fn dynamics(args: &[&str]) -> Output {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("root");
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .current_dir(root)
-        .output()
-        .expect("run dynamics")
-}
 
 fn stdout(out: &Output) -> String {
     let err = String::from_utf8_lossy(&out.stderr);
@@ -105,4 +94,37 @@ fn the_commands_count_and_simplify_a_mimic_robot() {
         "{}",
         &c[..300]
     );
+}
+
+/// `eval`'s lists are one value per coordinate, and a wrong count names the coordinates and
+/// the joints beside them (a serial robot's message unchanged); `inspect`'s legend explains the
+/// mimic joint's `sin(k qj + c)` (and a robot without mimic joints has no such line).
+#[test]
+fn eval_counts_coordinates_and_inspect_explains_the_mimic_notation() {
+    let out = dynamics(&["eval", ARM, "--q", "0.1,0.2,0.3,0.4"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let counted = "--q: 4 values given, the robot has 3 coordinates (4 joints, 1 of them mimic)";
+    assert!(err.contains(counted), "{err}");
+    let out = dynamics(&["eval", ARM, "--q", "0.1,0.2,0.3", "--qd", "1,2"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--qd: 2 values given, the robot has 3 coordinates"),
+        "{err}"
+    );
+    stdout(&dynamics(&["eval", ARM, "--q", "0.1,0.2,0.3"]));
+    let out = dynamics(&["eval", "robots/puma560.toml", "--q", "0,0"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--q: 2 values given, the robot has 6 joints"),
+        "{err}"
+    );
+    let legend = "a mimic joint follows joint j: sin(k qj + c), cos(k qj + c)";
+    let inspect = stdout(&dynamics(&["inspect", ARM]));
+    let header: Vec<&str> = inspect.lines().take(6).collect();
+    assert!(header.iter().any(|l| l.starts_with(legend)), "{inspect}");
+    let kinematics = stdout(&dynamics(&["inspect", "--kinematics", ARM]));
+    assert!(kinematics.contains(legend), "{kinematics}");
+    let serial = stdout(&dynamics(&["inspect", "robots/puma560.toml"]));
+    assert!(!serial.contains("mimic"), "{serial}");
 }

@@ -4,23 +4,12 @@
 //! efforts are the rated torques of `--tolerance-percent`, and a mistake in the table is
 //! reported at its line and column.
 
+use crate::runner::dynamics;
 use dynamics_codegen::derive_dynamics;
 use std::collections::BTreeMap;
-use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 const TWO_LINK: &str = "tests/data/simplify/two_link.toml";
-
-fn dynamics(args: &[&str]) -> Output {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("root");
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .current_dir(root)
-        .output()
-        .expect("run dynamics")
-}
 
 fn stdout(out: &Output) -> String {
     let err = String::from_utf8_lossy(&out.stderr);

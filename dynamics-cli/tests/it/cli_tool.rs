@@ -2,23 +2,7 @@
 //! description file's `tool`; refused beside a URDF (its tip link is the hand) and beside a file
 //! that declares a tool.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("workspace root")
-        .to_path_buf()
-}
-
-fn dynamics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .current_dir(root())
-        .output()
-        .expect("run dynamics")
-}
+use crate::runner::{dynamics, root};
 
 /// The printed line of `name` (`px`, `J11`, …) of `dynamics inspect --kinematics` with `args`.
 fn entry(args: &[&str], name: &str) -> String {

@@ -3,9 +3,10 @@
 //! horizontal), with actuator inertia I_a and viscous friction b:
 //! `τ = m l² q̈ + I_a q̈ + m g l cos q + b q̇`. Also the CSV errors, named by line and column.
 
+use crate::runner::dynamics;
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
 const M: f64 = 2.0;
 const L: f64 = 0.5;
@@ -34,13 +35,6 @@ fn pendulum(test: &str, friction: bool) -> String {
     );
     std::fs::write(&path, text).expect("write robot");
     path.to_string_lossy().into_owned()
-}
-
-fn dynamics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .output()
-        .expect("run dynamics")
 }
 
 fn json(out: &Output) -> Value {

@@ -2,19 +2,8 @@
 //! branches), errors name `file:line:col`, and the options are refused for other description
 //! files.
 
-use std::path::Path;
-use std::process::{Command, Output};
-
-fn dynamics(args: &[&str]) -> Output {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("root");
-    Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(args)
-        .current_dir(root)
-        .output()
-        .expect("run dynamics")
-}
+use crate::runner::dynamics;
+use std::process::Output;
 
 fn stderr(out: &Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()

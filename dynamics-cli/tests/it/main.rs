@@ -28,4 +28,5 @@ mod emit_names;
 mod emit_round_trip;
 mod fuzz;
 mod golden;
+mod runner;
 mod synthetic;

@@ -48,6 +48,8 @@ pub struct Inspection {
     kinematics: bool,
     kinds: Vec<JointKind>,
     offsets: bool,
+    /// Whether some joint follows another (a mimic joint's sines read like `sin(k q2 + c)`).
+    mimics: bool,
     /// Each joint's antecedent, for a tree.
     antecedents: Option<Vec<Option<usize>>>,
     sections: Vec<Section>,
@@ -115,6 +117,7 @@ impl Inspection {
             kinematics,
             kinds: eq.kinds.clone(),
             offsets: eq.angle_offsets.iter().any(Option::is_some),
+            mimics: robot.has_mimics(),
             antecedents: branches::antecedents(robot),
             sections,
             limits,

@@ -89,6 +89,13 @@ impl Inspection {
                 "{comment}θi in Si, Ci includes the joint's constant offset where it is not a multiple of 90°"
             );
         }
+        if self.mimics {
+            let _ = writeln!(
+                out,
+                "{comment}a mimic joint follows joint j: sin(k qj + c), cos(k qj + c) are its sine and cosine, \
+                 k its multiplier, qj joint j's variable without its constant offset, c the mimic's offset plus its own constant offset"
+            );
+        }
         out
     }
 
