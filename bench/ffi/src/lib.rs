@@ -39,7 +39,7 @@ impl<R, const N: usize, const B: usize> Timed<N, B> for R where
 {
 }
 
-/// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints) from each input it uses
+/// `f(q, qd, qdd, out)`: reads n values (the robot's number of joints, aligned `f64`s) from each input it uses
 /// and writes its output to `out`, row-major: n × n values for `M` and `C`, the 3 × 4 rows
 /// `[R | p]` for `fk`, 6 × n for `J`, `∂τ/∂q` then `∂τ/∂q̇` for `dtau` (2 n × n), `∂q̈/∂q`,
 /// `∂q̈/∂q̇`, `∂q̈/∂τ` for `dqdd` (3 n × n), the n × 10 n rows of the regressor for `Y`
@@ -52,13 +52,15 @@ impl<R, const N: usize, const B: usize> Timed<N, B> for R where
 /// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
-/// Reads `N` values.
+/// The `N` values at `p`, by reference as a caller's array is passed: a copy onto the stack,
+/// made with overlapping vector moves (48 or 56 bytes), stalls the loads of a method that is
+/// not inlined here (they cannot be forwarded from the overlapping stores).
 ///
 /// # Safety
-/// `p` points to `N` readable `f64`s.
-unsafe fn input<const N: usize>(p: *const f64) -> [f64; N] {
+/// `p` points to `N` readable `f64`s, aligned, unchanged while the reference lives.
+unsafe fn input<'a, const N: usize>(p: *const f64) -> &'a [f64; N] {
     // SAFETY: the caller's contract.
-    unsafe { p.cast::<[f64; N]>().read_unaligned() }
+    unsafe { &*p.cast::<[f64; N]>() }
 }
 
 /// Writes `values`.
@@ -77,7 +79,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
     unsafe extern "C" fn tau(q: *const f64, qd: *const f64, qdd: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
-            let tau = R::default().inverse_dynamics(&input(q), &input(qd), &input(qdd));
+            let tau = R::default().inverse_dynamics(input(q), input(qd), input(qdd));
             output(out, tau);
         }
     }
@@ -87,32 +89,32 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
         // so it is aligned for them).
         unsafe {
             let m = &mut *out.cast::<[[f64; N]; N]>();
-            R::default().mass_matrix_into(&input(q), m);
+            R::default().mass_matrix_into(input(q), m);
         }
     }
 
     unsafe extern "C" fn gravity(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output(out, R::default().gravity_torques(&input(q))) }
+        unsafe { output(out, R::default().gravity_torques(input(q))) }
     }
 
     unsafe extern "C" fn coriolis(q: *const f64, qd: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
-            let c = R::default().coriolis_matrix(&input(q), &input(qd));
+            let c = R::default().coriolis_matrix(input(q), input(qd));
             output_matrix(out, c);
         }
     }
 
     unsafe extern "C" fn bias(q: *const f64, qd: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output(out, R::default().bias_torques(&input(q), &input(qd))) }
+        unsafe { output(out, R::default().bias_torques(input(q), input(qd))) }
     }
 
     unsafe extern "C" fn forward(q: *const f64, qd: *const f64, tau: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function` (n torques at `tau`).
         unsafe {
-            let qdd = R::default().forward_dynamics(&input(q), &input(qd), &input(tau));
+            let qdd = R::default().forward_dynamics(input(q), input(qd), input(tau));
             output(out, qdd.unwrap_or([f64::NAN; N]));
         }
     }
@@ -120,7 +122,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
     unsafe extern "C" fn mass_inverse(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
         unsafe {
-            let inverse = R::default().mass_matrix_inverse(&input(q));
+            let inverse = R::default().mass_matrix_inverse(input(q));
             output_matrix(out, inverse.unwrap_or([[f64::NAN; N]; N]));
         }
     }
@@ -133,7 +135,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
     ) {
         // SAFETY: the contract of `Function` (room for 2 n × n values at `out`).
         unsafe {
-            let d = R::default().inverse_dynamics_derivatives(&input(q), &input(qd), &input(qdd));
+            let d = R::default().inverse_dynamics_derivatives(input(q), input(qd), input(qdd));
             output_matrix(out, d.dtau_dq);
             output_matrix(out.add(N * N), d.dtau_dqd);
         }
@@ -148,7 +150,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
         // SAFETY: the contract of `Function` (n torques at `tau`, room for 3 n × n values at
         // `out`).
         unsafe {
-            let d = R::default().forward_dynamics_derivatives(&input(q), &input(qd), &input(tau));
+            let d = R::default().forward_dynamics_derivatives(input(q), input(qd), input(tau));
             let nan = [[f64::NAN; N]; N];
             let blocks = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
             for (k, block) in blocks.into_iter().enumerate() {
@@ -177,7 +179,7 @@ impl<R: DynamicsDerivatives<N> + Default, const N: usize, const B: usize> Functi
 
 impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
     unsafe extern "C" fn hand_pose(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
-        let pose = R::default().hand_pose(&input(q));
+        let pose = R::default().hand_pose(input(q));
         let rows = core::array::from_fn(|i| {
             let r = pose.rotation[i];
             [r[0], r[1], r[2], pose.position[i]]
@@ -188,13 +190,13 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
 
     unsafe extern "C" fn jacobian(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output_rows(out, R::default().hand_jacobian_in_base(&input(q))) }
+        unsafe { output_rows(out, R::default().hand_jacobian_in_base(input(q))) }
     }
 
     unsafe extern "C" fn statics(q: *const f64, _: *const f64, wrench: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function` (six values at `wrench`).
         unsafe {
-            let tau = R::default().joint_torques_for_base_wrench(&input(q), &input(wrench));
+            let tau = R::default().joint_torques_for_base_wrench(input(q), input(wrench));
             output(out, tau);
         }
     }
@@ -205,7 +207,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
             // Written in place (`[i][j][k]` is at `(i n + j) 10 + k`), as Pinocchio writes its
             // `data.jointTorqueRegressor`. `out` holds `f64`s, so it is aligned for them.
             let y = &mut *out.cast::<[[[f64; 10]; N]; N]>();
-            R::default().regressor_into(&input(q), &input(qd), &input(qdd), y);
+            R::default().regressor_into(input(q), input(qd), input(qdd), y);
         }
     }
 
@@ -219,7 +221,7 @@ impl<R: Timed<N, B>, const N: usize, const B: usize> Functions<R, N, B> {
         // `f64`s).
         unsafe {
             let y = &mut *out.cast::<[[f64; B]; N]>();
-            R::default().base_regressor_into(&input(q), &input(qd), &input(qdd), y);
+            R::default().base_regressor_into(input(q), input(qd), input(qdd), y);
         }
     }
 

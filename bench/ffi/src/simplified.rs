@@ -22,19 +22,19 @@ impl<R: DynamicsSimplified<N> + Default, const N: usize> Functions<R, N> {
             let r = R::default();
             output(
                 out,
-                r.inverse_dynamics_simplified(&input(q), &input(qd), &input(qdd)),
+                r.inverse_dynamics_simplified(input(q), input(qd), input(qdd)),
             );
         }
     }
 
     unsafe extern "C" fn mass(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output_matrix(out, R::default().mass_matrix_simplified(&input(q))) }
+        unsafe { output_matrix(out, R::default().mass_matrix_simplified(input(q))) }
     }
 
     unsafe extern "C" fn gravity(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`.
-        unsafe { output(out, R::default().gravity_torques_simplified(&input(q))) }
+        unsafe { output(out, R::default().gravity_torques_simplified(input(q))) }
     }
 
     fn get(function: &[u8]) -> Option<Function> {
