@@ -6,9 +6,8 @@
 //! inspect`'s checks, the derive's expansion of `#[dynamics(file = "...")]` on it has no error,
 //! and the module `dynamics emit` writes from it type-checks against `dynamics-runtime`.
 
-use crate::synthetic;
+use crate::{compile_support, synthetic};
 
-use std::path::{Path, PathBuf};
 use synthetic::{dynamics, normal, scratch, torques, write_csv, State};
 
 const FRICTION: [&str; 3] = ["--rotors", "--friction", "viscous,coulomb"];
@@ -87,52 +86,20 @@ fn written(name: &str, n: usize, seed: u64, terms: &[&str]) -> String {
     run(&["emit", &out])
 }
 
-/// Type-checks the modules `(name, text)` in a crate of their own on `dynamics-runtime`.
-fn type_checks(dir: &Path, modules: &[(String, String)]) {
-    let src = dir.join("src");
-    std::fs::create_dir_all(&src).expect("a crate");
-    let runtime = Path::new(env!("CARGO_MANIFEST_DIR")).join("../dynamics-runtime");
-    let manifest = format!(
-        "[package]\nname = \"round_trip\"\nversion = \"0.0.0\"\nedition = \"2021\"\n\
-         [dependencies]\ndynamics-runtime = {{ path = {:?}, default-features = false }}\n\
-         [workspace]\n",
-        runtime.display().to_string()
-    );
-    std::fs::write(dir.join("Cargo.toml"), manifest).expect("a manifest");
-    // The workspace's versions, so that the check needs no registry.
-    let lock = Path::new(env!("CARGO_MANIFEST_DIR")).join("../Cargo.lock");
-    std::fs::copy(lock, dir.join("Cargo.lock")).expect("the lock file");
-    let mut lib = String::from("#![no_std]\n");
-    for (name, text) in modules {
-        std::fs::write(src.join(format!("{name}.rs")), text).expect("a module");
-        lib += &format!("pub mod {name};\n");
+/// Type-checks the module `dynamics emit` wrote for `name` against `dynamics-runtime`.
+fn type_checks(name: &str, module: String) {
+    let dir = compile_support::scratch(&format!("round_trip_{name}"));
+    if let Err(errors) = compile_support::rustc_check(&dir, &[(name.to_owned(), module)]) {
+        panic!("the module written for {name} does not compile:\n{errors}");
     }
-    std::fs::write(src.join("lib.rs"), lib).expect("lib.rs");
-    let out = std::process::Command::new(env!("CARGO"))
-        .args(["check", "--offline", "--quiet", "--manifest-path"])
-        .arg(dir.join("Cargo.toml"))
-        .env("CARGO_TARGET_DIR", dir.join("target"))
-        .output()
-        .expect("run cargo");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
-
-fn crate_dir(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("round_trip_{name}"))
 }
 
 #[test]
 fn puma560_with_noise_round_trips() {
-    let module = written("puma560", 6, 2, &FRICTION);
-    type_checks(&crate_dir("puma560"), &[("puma560".into(), module)]);
+    type_checks("puma560", written("puma560", 6, 2, &FRICTION));
 }
 
 #[test]
 fn panda_with_noise_round_trips() {
-    let module = written("panda", 7, 1, &FRICTION);
-    type_checks(&crate_dir("panda"), &[("panda".into(), module)]);
+    type_checks("panda", written("panda", 7, 1, &FRICTION));
 }
