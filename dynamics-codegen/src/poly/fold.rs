@@ -4,7 +4,8 @@
 
 use super::{AngleSum, Monomial, Sym};
 use crate::symbolic::Number;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
+use std::ops::Bound;
 
 /// One fold: `k · rest · trig(a + b)` replaces `k` of term `m` and of its partner.
 struct Fold {
@@ -21,28 +22,67 @@ struct Fold {
 /// told the number of terms before each search and stops the folding with `None`.
 ///
 /// Each fold is the first in the terms' order, as a search from the start would find it, but
-/// the search resumes where a new fold can be: no term before the one folded had a fold, and
-/// a fold only shrinks its two terms (never flipping a sign), so only the new term and the
-/// terms it partners can start one. Searching from the start each time made the Panda's
-/// torques take minutes.
+/// no term is searched twice unless a fold may have given it one: a fold only shrinks its two
+/// terms (never flipping a sign), so only the term folded (if some of it is left), the new term
+/// and the terms the new one partners can start a new fold. Those are searched again, in order,
+/// before the terms past the furthest searched. Searching from the start each time made the
+/// Panda's torques take minutes; resuming from the first of those terms still searched the
+/// terms between them again, most of a 7-joint arm's `dynamics inspect`.
 pub(crate) fn fold_trig(
     terms: &mut BTreeMap<Monomial, Number>,
     charge: &mut dyn FnMut(usize) -> Option<()>,
 ) -> Option<()> {
-    let mut from: Option<Monomial> = None;
+    let mut search = Search::default();
     loop {
         charge(terms.len())?;
-        let Some(fold) = find_fold(terms, from.as_ref()) else {
+        let Some(fold) = search.next(terms) else {
             return Some(());
         };
-        let mut resume = fold.m.clone().min(fold.folded.clone());
         for p in partners(&fold.folded).filter(|p| terms.contains_key(p)) {
-            resume = resume.min(p);
+            search.again.insert(p);
         }
+        search.again.insert(fold.m.clone());
+        search.again.insert(fold.folded.clone());
         add_term(terms, fold.m, -fold.k);
         add_term(terms, fold.partner, fold.partner_delta);
         add_term(terms, fold.folded, fold.k);
-        from = Some(resume);
+    }
+}
+
+/// Where the folding's search stands: every term up to `searched` starts no fold, except
+/// those in `again`.
+#[derive(Default)]
+struct Search {
+    searched: Option<Monomial>,
+    again: BTreeSet<Monomial>,
+}
+
+impl Search {
+    /// The first fold in the terms' order.
+    fn next(&mut self, terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
+        while let Some(m) = self.again.first().cloned() {
+            if !self.searched.as_ref().is_some_and(|s| m <= *s) {
+                break;
+            }
+            self.again.pop_first();
+            if let Some(fold) = terms
+                .get_key_value(&m)
+                .and_then(|(m, &c)| fold_of(terms, m, c))
+            {
+                return Some(fold);
+            }
+        }
+        let range = match &self.searched {
+            Some(s) => terms.range((Bound::Excluded(s.clone()), Bound::Unbounded)),
+            None => terms.range(..),
+        };
+        for (m, &c) in range {
+            self.searched = Some(m.clone());
+            if let Some(fold) = fold_of(terms, m, c) {
+                return Some(fold);
+            }
+        }
+        None
     }
 }
 
@@ -78,23 +118,23 @@ fn add_term(terms: &mut BTreeMap<Monomial, Number>, m: Monomial, c: Number) {
     }
 }
 
-/// The first pair of terms, in order from `from` (the start if `None`), that folds.
-fn find_fold(terms: &BTreeMap<Monomial, Number>, from: Option<&Monomial>) -> Option<Fold> {
-    let range = match from {
-        Some(m) => terms.range(m.clone()..),
-        None => terms.range(..),
-    };
-    for (m, &c) in range {
-        let trigs: Vec<(bool, AngleSum)> = m
-            .factors()
-            .iter()
-            .filter_map(|(s, _)| s.as_trig())
-            .collect();
-        for (x, &a) in trigs.iter().enumerate() {
-            for &b in &trigs[x + 1..] {
-                if let Some(fold) = fold_pair(terms, m, c, a, b) {
-                    return Some(fold);
-                }
+/// The first pair of terms, in their order, that folds.
+#[cfg(test)]
+fn find_fold(terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
+    terms.iter().find_map(|(m, &c)| fold_of(terms, m, c))
+}
+
+/// The first fold that term `c · m` starts, its pairs of factors in order.
+fn fold_of(terms: &BTreeMap<Monomial, Number>, m: &Monomial, c: Number) -> Option<Fold> {
+    let trigs: Vec<(bool, AngleSum)> = m
+        .factors()
+        .iter()
+        .filter_map(|(s, _)| s.as_trig())
+        .collect();
+    for (x, &a) in trigs.iter().enumerate() {
+        for &b in &trigs[x + 1..] {
+            if let Some(fold) = fold_pair(terms, m, c, a, b) {
+                return Some(fold);
             }
         }
     }
@@ -157,7 +197,7 @@ mod tests {
 
     /// The folding as first written: each search from the start.
     fn from_the_start(terms: &mut BTreeMap<Monomial, Number>) {
-        while let Some(fold) = find_fold(terms, None) {
+        while let Some(fold) = find_fold(terms) {
             add_term(terms, fold.m, -fold.k);
             add_term(terms, fold.partner, fold.partner_delta);
             add_term(terms, fold.folded, fold.k);
