@@ -56,7 +56,7 @@ pub use file::{from_json, from_text, from_toml, load};
 pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
 pub use simplify::{FileRequest, RequestError};
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
-pub use urdf::{joint_limits, load_urdf, Chain, Limit};
+pub use urdf::{free_flyer, joint_limits, load_urdf, Chain, Limit};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::check::{self, Problem};
