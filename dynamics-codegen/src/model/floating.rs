@@ -3,7 +3,7 @@
 //! joints, its [`super::Robot::base`] and gravity are as for a fixed base; this adds the body
 //! itself, whose inertia a fixed base never needs.
 
-use super::Link;
+use super::{Link, Value};
 
 /// The floating body: the base link and every link fixed to it, combined, in the base link's
 /// frame (its mass, centre of mass and inertia in [`Link`]; its joint terms unused).
@@ -13,4 +13,14 @@ pub struct FreeFlyer {
     pub link: String,
     /// Its inertial parameters.
     pub body: Link,
+    /// The gravity acceleration in the world frame (the robot's own gravity is in its frame 0,
+    /// fixed to the base): `[0, 0, −9.81]` unless the description gives another.
+    pub gravity: [Value; 3],
+}
+
+impl FreeFlyer {
+    /// Its values: the body's, then gravity.
+    pub fn values(&self) -> impl Iterator<Item = &Value> {
+        self.body.values().chain(self.gravity.iter())
+    }
 }

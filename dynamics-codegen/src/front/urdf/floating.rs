@@ -6,7 +6,8 @@ use super::inertial::Body;
 use super::tree::Tree;
 use super::xml;
 use crate::front::errors::FileError;
-use crate::model::{FreeFlyer, Link, Pose};
+use crate::model::{FreeFlyer, Link, Pose, Value};
+use crate::symbolic::Number;
 
 /// The floating body of the URDF text `text` with base link `base` (the root link if `None`).
 ///
@@ -27,6 +28,9 @@ pub fn free_flyer(text: &str, base: Option<&str>) -> Result<FreeFlyer, Vec<FileE
             inertia: body.inertia,
             ..Link::default()
         },
+        // As the robot's default, exact.
+        gravity: ["0", "0", "-9.81"]
+            .map(|x| Number::parse_decimal(x).map_or_else(Value::zero, Value::num)),
     })
 }
 
