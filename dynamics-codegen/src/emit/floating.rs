@@ -4,7 +4,7 @@
 //! `FloatingDynamics<NQ, NV>` impl, whose methods take the configuration's `n + 7` entries and
 //! pass on all but the first (the base's x, which nothing reads).
 
-use super::impls::{argument_local, forward, signature, Counts};
+use super::impls::{forward, signature, Counts};
 use super::items::{module_name, Generated, MethodCode, Module, PARAMETERS_FN};
 use super::program::emit;
 use super::{local, Context, Output, PARAMETERS};
@@ -13,8 +13,8 @@ use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
-/// The floating-base methods: the `FloatingDynamics` method each becomes, the arguments it
-/// takes, and the output of [`Equations`] it returns.
+/// The floating-base methods: the `Dynamics` method whose output of [`Equations`] each
+/// returns, and its name in `FloatingDynamics`.
 const METHODS: [(Method, &str); 4] = [
     (Method::MassMatrix, "mass_matrix"),
     (Method::BiasTorques, "bias_forces"),
@@ -100,7 +100,6 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
         let (_, ret) = signature(method, &counts, &t, krate, false);
         let (mut args, mut pass) = (Vec::new(), Vec::new());
         for &a in method.arguments() {
-            let local = argument_local(a);
             if a == Argument::Q {
                 args.push(quote!(q: &[#t; #nq]));
                 pass.push(quote!(&::core::array::from_fn(|i| q[i + 1])));
@@ -109,7 +108,6 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
                 args.push(quote!(#public: &[#t; #nv]));
                 pass.push(quote!(#public));
             }
-            let _ = local;
         }
         let call = quote!(#module::#inner(&self.#parameters(), #(#pass),*));
         let call = forward(method, call, &counts, &t, krate);
