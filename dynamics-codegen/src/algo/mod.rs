@@ -42,7 +42,7 @@ pub use kinematics::{
 };
 pub use ldlt::Ldlt;
 pub use projection::{projected_torques, LinkFrame, LinkFrames, Twist};
-pub use rnea::{rnea, rnea_from, BaseMotion};
+pub use rnea::{rnea, rnea_from, BaseMotion, Wrench};
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;
 pub use vector::{Mat3, V3};

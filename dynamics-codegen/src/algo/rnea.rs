@@ -42,6 +42,9 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
     rnea_from(chain, &base, qd, qdd, false).0
 }
 
+/// A wrench `(f, n)`: force, and moment about a frame's origin, in its axes.
+pub type Wrench<S> = (V3<S>, V3<S>);
+
 /// The motion of frame 0 (the chain's base), in its axes: angular velocity `w`, angular
 /// acceleration `wd`, and the acceleration of its origin less gravity `vd`.
 pub struct BaseMotion<S> {
@@ -62,7 +65,7 @@ pub fn rnea_from<S: Scalar>(
     qd: &[S],
     qdd: &[S],
     carry_root: bool,
-) -> (Vec<S>, Option<(V3<S>, V3<S>)>) {
+) -> (Vec<S>, Option<Wrench<S>>) {
     let n = chain.joints.len();
     let zero = base.w.x.zero();
     let base = Link {
@@ -141,10 +144,10 @@ fn backward<S: Scalar>(
     unturned: Option<usize>,
     zero: S,
     carry_root: bool,
-) -> (Vec<S>, Option<(V3<S>, V3<S>)>) {
+) -> (Vec<S>, Option<Wrench<S>>) {
     let n = chain.joints.len();
     let mut tau = vec![zero; n];
-    let mut root: Option<(V3<S>, V3<S>)> = carry_root.then(|| (V3::zero(zero), V3::zero(zero)));
+    let mut root: Option<Wrench<S>> = carry_root.then(|| (V3::zero(zero), V3::zero(zero)));
     let mut carrier = WrenchCarrier::new(chain);
     for i in (0..n).rev() {
         let (f, nn) = forces[i];
