@@ -79,6 +79,7 @@ pub fn expand_robot(
         tracked_file: None,
         families,
         simplify: simplify.cloned(),
+        floating: None,
     };
     expand(input, &parsed)
 }
@@ -86,6 +87,9 @@ pub fn expand_robot(
 /// The expansion of a parsed derive: the generated items and the readable equations, in a
 /// `const _: () = { … };` block, with the description file (if any) tracked for rebuilds.
 fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
+    if let Some(flyer) = &parsed.floating {
+        return pipeline::expand_floating(input, parsed, flyer);
+    }
     let (eq, simplified) =
         pipeline::equations(&parsed.robot, parsed.families, parsed.simplify.as_ref());
     let krate = emit::runtime_path(parsed.krate.as_ref());

@@ -75,6 +75,7 @@ mod dynamics;
 // After `dynamics`, whose `array_result!` it reads.
 pub mod batch;
 mod factor;
+mod floating;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
@@ -97,6 +98,7 @@ pub use crate::dynamics::{
     TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
+pub use crate::floating::FloatingDynamics;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};

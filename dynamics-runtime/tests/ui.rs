@@ -6,8 +6,9 @@
 //! and its values), `fields` (struct fields named by values), `physics` (mass, inertia,
 //! actuator inertia, springs), `friction` (joint friction and geared drives, in attributes and
 //! files), `files` (description files, which live next to their tests), `frames` (joints given
-//! by placements and axes, in the attribute and in files) and `trees` (parents, antecedent
-//! columns, URDF `tips` and trees). A case names its file relative to itself: trybuild's crate,
+//! by placements and axes, in the attribute and in files), `trees` (parents, antecedent
+//! columns, URDF `tips` and trees) and `floating` (`base = floating` and what it does not
+//! support yet). A case names its file relative to itself: trybuild's crate,
 //! somewhere inside the target directory, has no such file, so the derive finds it beside the
 //! case, and the cases pass wherever `CARGO_TARGET_DIR` points. Refresh with
 //! `TRYBUILD=overwrite`, then read every changed `.stderr`.

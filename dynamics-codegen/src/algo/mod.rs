@@ -10,6 +10,9 @@ mod chain;
 mod coriolis;
 mod crba;
 mod energy;
+mod floating;
+#[cfg(test)]
+mod floating_tests;
 mod gravity;
 mod kinematics;
 mod ldlt;
@@ -28,6 +31,10 @@ pub use chain::{Chain, ChainJoint, DhRow, Inertial, Pre};
 pub use coriolis::coriolis_matrix;
 pub use crba::{crba, crba_derivative};
 pub use energy::{kinetic_energy, potential_energy};
+pub use floating::{
+    floating_crba, floating_gravity, floating_rnea, quaternion_rotation, spatial_inertia,
+    FloatingBase,
+};
 pub use gravity::gravity_torques;
 pub use kinematics::{
     acceleration_bias_in_base, in_hand_axes, jacobian_in_base, jacobian_in_hand, joint_torques,
@@ -35,7 +42,7 @@ pub use kinematics::{
 };
 pub use ldlt::Ldlt;
 pub use projection::{projected_torques, LinkFrame, LinkFrames, Twist};
-pub use rnea::rnea;
+pub use rnea::{rnea, rnea_from, BaseMotion, Wrench};
 pub use robot::RobotScalars;
 pub use runs::WrenchCarrier;
 pub use vector::{Mat3, V3};

@@ -32,14 +32,47 @@ use std::ops::{Add, Neg};
 /// Joint torques of `chain` moving with velocities `qd` and accelerations `qdd` under `gravity`
 /// (the gravity acceleration in the base frame). Actuator inertia and springs are not included.
 pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) -> Vec<S> {
-    let n = chain.joints.len();
     let zero = gravity.x.zero();
-    let base = Link {
+    // The base does not move.
+    let base = BaseMotion {
         w: V3::zero(zero),
         wd: V3::zero(zero),
         vd: gravity.neg(),
-        // The base does not move.
-        u: Rates::new(V3::zero(zero), V3::zero(zero)),
+    };
+    rnea_from(chain, &base, qd, qdd, false).0
+}
+
+/// A wrench `(f, n)`: force, and moment about a frame's origin, in its axes.
+pub type Wrench<S> = (V3<S>, V3<S>);
+
+/// The motion of frame 0 (the chain's base), in its axes: angular velocity `w`, angular
+/// acceleration `wd`, and the acceleration of its origin less gravity `vd`.
+pub struct BaseMotion<S> {
+    /// ω.
+    pub w: V3<S>,
+    /// ω̇.
+    pub wd: V3<S>,
+    /// The origin's classical acceleration minus gravity.
+    pub vd: V3<S>,
+}
+
+/// [`rnea`] on a chain whose base moves as `base`; with `carry_root`, also the wrench
+/// `(f, n)` the joints on the base exert on it at frame 0's origin, in its axes (a floating
+/// base's share, [`super::floating_rnea`]). Without it no node is added for that wrench.
+pub fn rnea_from<S: Scalar>(
+    chain: &Chain<S>,
+    base: &BaseMotion<S>,
+    qd: &[S],
+    qdd: &[S],
+    carry_root: bool,
+) -> (Vec<S>, Option<Wrench<S>>) {
+    let n = chain.joints.len();
+    let zero = base.w.x.zero();
+    let base = Link {
+        w: base.w,
+        wd: base.wd,
+        vd: base.vd,
+        u: Rates::new(base.w, base.wd),
     };
     let mut links: Vec<Link<S>> = Vec::with_capacity(n);
     let mut forces = Vec::with_capacity(n);
@@ -100,7 +133,7 @@ pub fn rnea<S: Scalar>(chain: &Chain<S>, qd: &[S], qdd: &[S], gravity: V3<S>) ->
         forces.push((f, nn));
         links.push(Link { w, wd, vd, u });
     }
-    backward(chain, forces, unturned, zero)
+    backward(chain, forces, unturned, zero, carry_root)
 }
 
 /// Newton-Euler's backward pass: from the last joint down, each link's total wrench (its own
@@ -110,9 +143,11 @@ fn backward<S: Scalar>(
     mut forces: Vec<(V3<S>, V3<S>)>,
     unturned: Option<usize>,
     zero: S,
-) -> Vec<S> {
+    carry_root: bool,
+) -> (Vec<S>, Option<Wrench<S>>) {
     let n = chain.joints.len();
     let mut tau = vec![zero; n];
+    let mut root: Option<Wrench<S>> = carry_root.then(|| (V3::zero(zero), V3::zero(zero)));
     let mut carrier = WrenchCarrier::new(chain);
     for i in (0..n).rev() {
         let (f, nn) = forces[i];
@@ -120,16 +155,22 @@ fn backward<S: Scalar>(
             JointKind::Revolute => nn.z,
             JointKind::Prismatic => f.z,
         };
-        if let Some(p) = chain.parent(i) {
-            let (rf, rn) = if unturned == Some(i) {
-                chain.joints[i].wrench_from_turned(f, nn)
-            } else {
-                carrier.to_parent(i, f, nn)
-            };
+        let parent = chain.parent(i);
+        if parent.is_none() && root.is_none() {
+            continue;
+        }
+        let (rf, rn) = if unturned == Some(i) {
+            chain.joints[i].wrench_from_turned(f, nn)
+        } else {
+            carrier.to_parent(i, f, nn)
+        };
+        if let Some(p) = parent {
             forces[p] = (forces[p].0.add(rf), forces[p].1.add(rn));
+        } else if let Some((f0, n0)) = root {
+            root = Some((f0.add(rf), n0.add(rn)));
         }
     }
-    tau
+    (tau, root)
 }
 
 /// A link's rates in its joint frame, which its children's recursions start from.

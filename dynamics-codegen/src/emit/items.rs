@@ -84,7 +84,7 @@ impl ToTokens for Items {
 
 /// The name of `family`'s module for the robot `ident`: the robot's name is part of it where
 /// the module goes beside the struct, so that two robots' modules differ.
-fn module_name(family: Family, ident: &syn::Ident) -> Ident {
+pub(super) fn module_name(family: Family, ident: &syn::Ident) -> Ident {
     if family.is_beside_the_struct() {
         // `unraw`: a struct may be named `r#type`.
         let robot = syn::ext::IdentExt::unraw(ident);
@@ -98,7 +98,7 @@ fn module_name(family: Family, ident: &syn::Ident) -> Ident {
 }
 
 /// Name of the hidden inherent method reading the robot's parameters.
-const PARAMETERS_FN: &str = "__dynamics_parameters";
+pub(super) const PARAMETERS_FN: &str = "__dynamics_parameters";
 
 /// The generated code of the [`Equations`], every method of [`Method::ALL`]; `fields` reads
 /// struct field `k` of the robot (`self.name`), in the order of [`Equations::fields`].
@@ -289,7 +289,12 @@ impl Generated {
 
     /// The module of one family's functions: the shared functions and one function per
     /// method.
-    fn module(&self, module: &Module, krate: &TokenStream, ident: &syn::Ident) -> TokenStream {
+    pub(super) fn module(
+        &self,
+        module: &Module,
+        krate: &TokenStream,
+        ident: &syn::Ident,
+    ) -> TokenStream {
         let k = self.fields.len();
         let counts = &self.counts();
         let p = local(PARAMETERS);

@@ -32,6 +32,11 @@ impl Errors {
         self.0.is_empty()
     }
 
+    /// How many errors there are.
+    pub(super) fn len(&self) -> usize {
+        self.0.len()
+    }
+
     /// Adds an error that already has its span (a syntax error).
     pub(super) fn push_error(&mut self, error: syn::Error) {
         self.0.push(error);

@@ -42,6 +42,7 @@ mod attrs;
 mod errors;
 mod fields;
 mod file;
+mod floating;
 mod named_file;
 mod parent;
 mod simplify;
@@ -56,12 +57,12 @@ pub use file::{from_json, from_text, from_toml, load};
 pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
 pub use simplify::{FileRequest, RequestError};
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
-pub use urdf::{joint_limits, load_urdf, Chain, Limit};
+pub use urdf::{free_flyer, joint_limits, load_urdf, Chain, Limit};
 pub use value::{parse_spanned, parse_value, Spanned, Unitless};
 
 use crate::check::{self, Problem};
 use crate::method::FamilySet;
-use crate::model::{Robot, Simplification};
+use crate::model::{FreeFlyer, Robot, Simplification};
 use attrs::{parse_attrs, Attrs, Source};
 use named_file::Named;
 use syn::parse::ParseStream;
@@ -80,6 +81,8 @@ pub struct Input {
     pub families: FamilySet,
     /// `simplify(...)`, resolved: the pruned models' tolerances and envelope.
     pub simplify: Option<Simplification>,
+    /// `base = floating`: the free-flying base the robot's tree hangs from.
+    pub floating: Option<FreeFlyer>,
 }
 
 /// Why the derive input gave no robot.
@@ -139,9 +142,12 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
         check(&lowered, &mut errors);
         lowered.robot
     });
+    let tracked = tracked_file.as_deref();
+    let floating = floating::free_flyer(&read.attrs, tracked, robot.as_ref(), &mut errors);
     let read = Read {
         attrs: read.attrs,
         simplify,
+        floating,
     };
     finish(input, read, errors, robot, tracked_file)
 }
@@ -150,6 +156,7 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
 struct Read {
     attrs: Attrs,
     simplify: Option<Simplification>,
+    floating: Option<FreeFlyer>,
 }
 
 /// Reads every `#[dynamics(...)]` of the input into one [`Attrs`].
@@ -320,7 +327,11 @@ fn finish(
     robot: Option<Robot>,
     tracked_file: Option<String>,
 ) -> Result<Input, Failure> {
-    let Read { attrs, simplify } = read;
+    let Read {
+        attrs,
+        simplify,
+        floating,
+    } = read;
     let families = attrs.families();
     match (errors.combine(), robot) {
         (None, Some(mut robot)) => {
@@ -333,6 +344,7 @@ fn finish(
                 tracked_file,
                 families,
                 simplify,
+                floating,
             })
         }
         (Some(error), robot) => Err(Failure {

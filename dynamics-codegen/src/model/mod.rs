@@ -8,12 +8,14 @@
 
 mod arith;
 mod envelope;
+mod floating;
 mod frame;
 mod lower;
 mod tip;
 mod value;
 
 pub use envelope::{Envelope, JointEnvelope, Simplification};
+pub use floating::FreeFlyer;
 pub use frame::{
     mat_mul, mat_vec, rotate_inertia, sin_cos, snap_angle, transpose, AxisFrame, Matrix, Placement,
     Pose, MAX_SNAPPED_QUARTER_TURNS, QUARTER_TURN_TOLERANCE,

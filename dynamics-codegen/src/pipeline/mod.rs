@@ -23,6 +23,7 @@ mod c_header;
 mod diagnostic;
 mod evaluate;
 mod families;
+mod floating;
 mod readable;
 mod rust_module;
 
@@ -39,6 +40,7 @@ pub use c_header::CHeader;
 pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
 pub use families::{asked_by_name, families, opt_in_family};
+pub(crate) use floating::expand_floating;
 pub use readable::{derived_readable, DerivedReadable, Readable};
 pub use rust_module::RustModule;
 

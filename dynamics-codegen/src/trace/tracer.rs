@@ -20,6 +20,9 @@ pub(super) struct Tracer<'g> {
     /// Where the description's constants are traced as leaves [`Var::Exact`] (for the base
     /// parameters' exact analysis): their values in `ℤ/p`, by leaf index.
     exact_leaves: Option<RefCell<Vec<Fp>>>,
+    /// The index of joint 0 among the coordinates: 0, but 6 on a floating base, whose
+    /// velocity's first six are the base's.
+    shift: usize,
 }
 
 /// The index of joint `i` in a [`Var`].
@@ -35,7 +38,16 @@ impl<'g> Tracer<'g> {
             fields,
             angle_offsets: vec![None; robot.dof()],
             exact_leaves: None,
+            shift: 0,
         }
+    }
+
+    /// The same tracer with joint i's variables at index `i + shift` (a floating base's
+    /// joints come after its six coordinates of velocity).
+    pub(super) fn shifted(mut self, shift: usize) -> Self {
+        self.angle_offsets = vec![None; self.angle_offsets.len() + shift];
+        self.shift = shift;
+        self
     }
 
     /// The same tracer, tracing the description's numbers other than 0 and ±1, and the sines
@@ -159,12 +171,13 @@ impl<'g> RobotScalars for Tracer<'g> {
     }
 
     fn joint_variable(&self, joint: usize) -> Expr<'g> {
-        self.var(Var::Q(joint_index(joint)))
+        self.var(Var::Q(joint_index(joint + self.shift)))
     }
 
     /// From the leaves `sin q_i`, `cos q_i`: turned by a quarter-turn offset, or with any other
     /// offset recorded for the emitter, which makes the leaves `sin(q_i + θ)`, `cos(q_i + θ)`.
     fn joint_sin_cos(&mut self, joint: usize, offset: &Value) -> (Expr<'g>, Expr<'g>) {
+        let joint = joint + self.shift;
         let i = joint_index(joint);
         let (s, c) = (self.var(Var::SinQ(i)), self.var(Var::CosQ(i)));
         let quarter_turns = offset

@@ -4,6 +4,7 @@
 
 mod determinism;
 mod expansion;
+mod floating_base;
 mod fuzz;
 mod fuzz_attributes;
 mod fuzz_files;

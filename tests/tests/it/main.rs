@@ -8,6 +8,7 @@ mod base_parameters;
 mod batch;
 mod derivatives;
 mod energy_drift;
+mod floating_base;
 mod forward_dynamics;
 mod friction;
 mod front_door;

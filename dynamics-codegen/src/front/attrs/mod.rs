@@ -11,6 +11,7 @@
 
 mod dh;
 mod entry;
+mod floating;
 mod frames;
 mod friction;
 mod joints;

@@ -6,6 +6,7 @@ use super::entry::{
     boolean, parse_convention, parse_dh, parse_spring, skip_entry, string, strings, values,
     DhRowAttr, Entry,
 };
+use super::floating::{parse_base, FloatingAttr};
 use super::friction::{parse_friction, FrictionAttr};
 use super::joints::{parse_joints, JointAttr};
 use super::keys::{Key, LinkKey};
@@ -58,6 +59,8 @@ pub(in crate::front) struct Attrs {
     /// the tree: `tips = ["..", ..]` (with the span of its brackets).
     pub urdf: Option<LitStr>,
     pub base: Option<LitStr>,
+    /// `base = floating` or `base = floating("trunk")` (whose link is `base` too).
+    pub floating: Option<FloatingAttr>,
     pub tip: Option<LitStr>,
     pub tips: Option<(Vec<LitStr>, Span)>,
     /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
@@ -275,7 +278,7 @@ fn parse_attr(
             &mut attrs.urdf,
             string(input, "`urdf = \"robots/arm.urdf\"`")?,
         ),
-        Key::Base => entry.keep_first(&mut attrs.base, string(input, "`base = \"base_link\"`")?),
+        Key::Base => parse_base(input, &mut entry, attrs)?,
         Key::Tip => entry.keep_first(&mut attrs.tip, string(input, "`tip = \"tool0\"`")?),
         Key::Tips => entry.keep_first(
             &mut attrs.tips,

@@ -12,6 +12,7 @@
 //! every robot given by joint frames is. The joints' `<limit>`s are read apart, for tools that
 //! plan motions (`limits`).
 
+mod floating;
 mod inertial;
 mod limits;
 mod mimic;
@@ -27,6 +28,7 @@ use super::errors::FileError;
 use super::sources::{Loaded, Positions};
 use crate::check::{joint_count, Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::model::{FrameProblem, Robot};
+pub use floating::free_flyer;
 pub use limits::joint_limits;
 pub use xml::Limit;
 

@@ -1,0 +1,40 @@
+//! The derive's expansion for a robot on a free-flying base (`base = floating`): its
+//! equations traced by [`crate::trace::derive_floating`], emitted as
+//! [`crate::emit::floating_items`], in the derive's `const _: () = { … };` block.
+
+use crate::front::Input;
+use crate::model::FreeFlyer;
+use crate::{emit, identifiers, trace};
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// What `#[derive(Dynamics)]` expands to for `parsed`, whose base is the free flyer `flyer`.
+pub(crate) fn expand_floating(
+    input: &syn::DeriveInput,
+    parsed: &Input,
+    flyer: &FreeFlyer,
+) -> TokenStream {
+    let eq = trace::derive_floating(&parsed.robot, flyer);
+    let krate = emit::runtime_path(parsed.krate.as_ref());
+    let fields: Vec<TokenStream> = eq
+        .fields
+        .iter()
+        .map(|f| match identifiers::rust_field(f) {
+            Ok(ident) => quote!(self.#ident),
+            // Not expected: each name the values read is one of the struct's fields.
+            Err(message) => quote!(::core::compile_error!(#message)),
+        })
+        .collect();
+    let items = emit::floating_items(&eq, &fields, &krate, input);
+    let track = parsed.tracked_file.as_ref().map(|path| {
+        quote!(
+            const _: &[u8] = ::core::include_bytes!(#path);
+        )
+    });
+    quote! {
+        const _: () = {
+            #track
+            #items
+        };
+    }
+}

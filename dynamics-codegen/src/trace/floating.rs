@@ -1,0 +1,120 @@
+//! The equations of a tree on a free-flying base ([`algo::floating_rnea`],
+//! [`algo::floating_crba`]): `M`, the bias `h = C v + g`, `τ = M a + h` and the generalized
+//! gravity `g`, each `6 + n` long, in one graph.
+//!
+//! The coordinates are numbered as the velocity's: the base's six (`0..6`), then joint i at
+//! `6 + i` ([`Var::Q`], [`Var::SinQ`], [`Var::Qd`], [`Var::Qdd`] alike). The configuration
+//! `[x, y, z, qx, qy, qz, qw, q_1 …]` is read without its first entry, which nothing reads
+//! (the base position): `Var::Q(k)` is its entry `k + 1`, so the quaternion is `Q(2..6)` and
+//! joint i's angle `Q(6 + i)`. The chain is traced as given, not regrouped: a floating base's
+//! rows see every link parameter, so no parameter may be moved onto another.
+
+use super::expr::Expr;
+use super::tracer::{joint_index, Tracer};
+use super::{Equations, ForwardEquations, KinematicEquations};
+use crate::algo::{self, FloatingBase, Inertial, Mat3, RobotScalars, V3};
+use crate::method::FamilySet;
+use crate::model::{FreeFlyer, JointKind, Robot};
+use crate::symbolic::{Graph, Number, Var};
+use std::cell::RefCell;
+
+/// The coordinates of the base: the velocity's first six.
+pub const BASE_COORDINATES: usize = 6;
+
+/// Traces the floating-base equations of `robot` on the free flyer `flyer`. The front end has
+/// checked the robot; it has no mimic joints.
+#[must_use]
+pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
+    let mut names = std::collections::BTreeSet::new();
+    for v in robot.values().chain(flyer.values()) {
+        v.collect_fields(&mut names);
+    }
+    let fields: Vec<String> = names.into_iter().collect();
+    let graph = RefCell::new(Graph::new());
+    let mut tracer = Tracer::new(&graph, &fields, robot).shifted(BASE_COORDINATES);
+    let zero = tracer.num(Number::ZERO);
+    let chain = tracer.chain(robot);
+    let base = floating_base(&tracer, robot, flyer);
+    let nv = robot.dof() + BASE_COORDINATES;
+    let vars = |kind: fn(u16) -> Var| -> Vec<Expr> {
+        (0..nv).map(|i| tracer.var(kind(joint_index(i)))).collect()
+    };
+    let (v, a) = (vars(Var::Qd), vars(Var::Qdd));
+    let quaternion = [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)));
+    let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
+    let gravity = V3::new(g[0], g[1], g[2]);
+    let zeros = vec![zero; nv];
+    let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
+    let mass: Vec<_> = algo::floating_crba(&chain, &base)
+        .into_iter()
+        .map(ids)
+        .collect();
+    let bias = ids(algo::floating_rnea(
+        &chain, &base, quaternion, &v, &zeros, gravity,
+    ));
+    let tau = ids(algo::floating_rnea(
+        &chain, &base, quaternion, &v, &a, gravity,
+    ));
+    let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
+    let kinds = [JointKind::Prismatic; BASE_COORDINATES]
+        .into_iter()
+        .chain(robot.joints.iter().map(|j| j.kind))
+        .collect();
+    let angle_offsets = tracer.angle_offsets();
+    let nothing = zero.id();
+    Equations {
+        graph: graph.into_inner(),
+        dof: nv,
+        links: robot.dof(),
+        fields,
+        kinds,
+        angle_offsets,
+        mass,
+        christoffel: Vec::new(),
+        coriolis: Vec::new(),
+        coriolis_torques: Vec::new(),
+        gravity,
+        bias,
+        tau,
+        friction: Vec::new(),
+        kinetic_energy: nothing,
+        potential_energy: nothing,
+        kinematics: KinematicEquations::default(),
+        forward: ForwardEquations {
+            factors: algo::Ldlt {
+                lower: Vec::new(),
+                pivots: Vec::new(),
+                inverse_pivots: Vec::new(),
+                reversed: false,
+            },
+            mass_inverse: Vec::new(),
+            qdd: Vec::new(),
+        },
+        families: FamilySet::default(),
+        derivatives: None,
+        regressor: None,
+        base_parameters: None,
+        simplified: None,
+        tips: None,
+    }
+}
+
+/// The free flyer's body and frame 0's placement on it, as expressions.
+fn floating_base<'g>(
+    tracer: &Tracer<'g>,
+    robot: &Robot,
+    flyer: &FreeFlyer,
+) -> FloatingBase<Expr<'g>> {
+    let v = |x| tracer.value(x);
+    let b = &flyer.body;
+    let link = Inertial {
+        mass: v(&b.mass),
+        com: V3::new(v(&b.com[0]), v(&b.com[1]), v(&b.com[2])),
+        inertia: b.inertia.each_ref().map(v),
+    };
+    let (r, t) = (&robot.base.rotation, &robot.base.translation);
+    let rotation = Mat3 {
+        m: std::array::from_fn(|i| std::array::from_fn(|j| v(&r[i][j]))),
+    };
+    FloatingBase::new(&link, rotation, V3::new(v(&t[0]), v(&t[1]), v(&t[2])))
+}

@@ -1,0 +1,90 @@
+//! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
+//! and nothing else, and every key or family this slice does not support is a compile error
+//! naming it (never methods that would be wrong on a flying base).
+
+use dynamics_codegen::derive_dynamics;
+
+/// The derive's expansion of Solo 12 with the keys `keys` after its `urdf`.
+fn solo(keys: &str) -> String {
+    let urdf = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../robots/urdf/floating/solo12.urdf"
+    );
+    let source = format!("#[dynamics(urdf = {urdf:?}, {keys})] struct Solo;");
+    derive_dynamics(source.parse().expect("tokens")).to_string()
+}
+
+#[test]
+fn a_floating_base_implements_floating_dynamics_only() {
+    for keys in ["base = floating", "base = floating(\"base_link\")"] {
+        let out = solo(keys);
+        assert!(!out.contains("compile_error"), "{keys}: {out}");
+        assert!(
+            out.contains("FloatingDynamics < 19usize , 18usize >"),
+            "{out}"
+        );
+        assert!(!out.contains(":: Dynamics <"), "{out}");
+    }
+}
+
+#[test]
+fn what_a_floating_base_does_not_have_yet_is_refused() {
+    for (keys, message) in [
+        (
+            "base = floating, derivatives = true",
+            "`derivatives = true` is not supported on a floating base yet",
+        ),
+        (
+            "base = floating, regressor = true",
+            "`regressor = true` is not supported on a floating base yet",
+        ),
+        (
+            "base = floating, tips = [\"FL_FOOT\"]",
+            "`tips` is not supported on a floating base yet",
+        ),
+        (
+            "base = floating, tip = \"FL_FOOT\"",
+            "`tip` is not supported on a floating base yet",
+        ),
+        (
+            "base = floating, simplify(tolerance_percent = 1)",
+            "`simplify(..)` is not supported on a floating base yet",
+        ),
+        (
+            "base = flying",
+            "unknown base `flying`: expected `base = \\\"base_link\\\"`",
+        ),
+        ("base = floating(\"trunk\")", "no link `trunk` for `base`"),
+        (
+            "base = floating(3)",
+            "expected a string: `floating(\\\"trunk\\\")`",
+        ),
+        (
+            "base = floating, base = floating",
+            "duplicate dynamics attribute `base`",
+        ),
+    ] {
+        let out = solo(keys);
+        assert!(out.contains("compile_error"), "{keys}: {out}");
+        assert!(
+            out.contains(message),
+            "{keys}: expected {message:?} in {out}"
+        );
+        assert!(!out.contains("FloatingDynamics <"), "{keys}: {out}");
+    }
+}
+
+#[test]
+fn a_floating_base_needs_a_urdf() {
+    let source = "#[dynamics(
+        base = floating,
+        gravity = [0, 0, -9.81],
+        dh = [[q, 0, 1, 0]],
+        link(mass = 1, com = [0, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]),
+    )] struct Arm;";
+    let out = derive_dynamics(source.parse().expect("tokens")).to_string();
+    assert!(
+        out.contains("`base = floating` reads the robot from a URDF"),
+        "{out}"
+    );
+}

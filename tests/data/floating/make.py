@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Reference data for a robot on a free-flying base (issue 43), from Pinocchio's own URDF
+loader with its free-flyer root joint.
+
+For each robot of ROBOTS this script
+
+1. loads the URDF with `pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())` (gravity
+   [0, 0, -9.81] in the world frame): the root link, and every link fixed to it, is the
+   floating body;
+2. checks that Pinocchio's joints after the free flyer are in the order the project's front end
+   takes them (depth first from the root link, a link's child joints in the file's order), so
+   that the data need no reordering;
+3. draws SAMPLES states: the base position uniform in [-1, 1]^3, the base orientation a uniform
+   random unit quaternion (a normalised Gaussian 4-vector, stored [qx, qy, qz, qw] as Pinocchio's
+   q), each joint in [-pi, pi], v and a uniform in [-2, 2] (the base's twist in its own frame,
+   then the joint rates, as Pinocchio's v); sample #0 is the base at rest, upright, joints at 0;
+4. writes M (`crba`, its upper triangle mirrored), h (`nonLinearEffects`), tau (`rnea`) and
+   g (`computeGeneralizedGravity`), and checks tau = M a + h and g = rnea(q, 0, 0) to 1e-12.
+
+Usage, from the repository root (Pinocchio 4.1, the `pin` wheel):
+
+    target/python-venv/bin/python tests/data/floating/make.py
+"""
+
+import hashlib
+import importlib.metadata
+import json
+import os
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pinocchio as pin
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
+
+# name: URDF from the repository root
+ROBOTS = {"solo12": "robots/urdf/floating/solo12.urdf"}
+SEED = 20261129
+SAMPLES = 12
+TOLERANCE = 1e-12
+
+
+def file_order(path):
+    """The moving joints depth first from the root link, a link's child joints in file order."""
+    robot = ET.parse(path).getroot()
+    joints = robot.findall("joint")
+    children = {}
+    for j in joints:
+        children.setdefault(j.find("parent").get("link"), []).append(j)
+    child_links = {j.find("child").get("link") for j in joints}
+    roots = [link.get("name") for link in robot.findall("link") if link.get("name") not in child_links]
+    assert len(roots) == 1, roots
+    order = []
+
+    def walk(link):
+        for j in children.get(link, []):
+            if j.get("type") not in ("fixed",):
+                order.append(j.get("name"))
+            walk(j.find("child").get("link"))
+
+    walk(roots[0])
+    return roots[0], order
+
+
+def scaled(a, b):
+    """max |a - b| / max(1, max |b|)."""
+    a, b = np.asarray(a), np.asarray(b)
+    return float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
+
+
+def sample(rng, model, k):
+    """State k: q (nq), v and a (nv)."""
+    n = model.nv - 6
+    if k == 0:
+        q = pin.neutral(model)
+        return q, np.zeros(model.nv), np.zeros(model.nv)
+    quaternion = rng.normal(size=4)
+    quaternion /= np.linalg.norm(quaternion)
+    q = np.concatenate([rng.uniform(-1, 1, 3), quaternion, rng.uniform(-np.pi, np.pi, n)])
+    return q, rng.uniform(-2, 2, model.nv), rng.uniform(-2, 2, model.nv)
+
+
+def make(name, urdf):
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    root, order = file_order(path)
+    names = list(model.names)[2:]
+    assert names == order, (names, order)
+    assert model.joints[1].shortname() == "JointModelFreeFlyer"
+    rng = np.random.default_rng(SEED)
+    samples = []
+    for k in range(SAMPLES):
+        q, v, a = sample(rng, model, k)
+        m = pin.crba(model, data, q).copy()
+        m = np.triu(m) + np.triu(m, 1).T
+        h = pin.nonLinearEffects(model, data, q, v).copy()
+        tau = pin.rnea(model, data, q, v, a).copy()
+        g = pin.computeGeneralizedGravity(model, data, q).copy()
+        assert scaled(m @ a + h, tau) < TOLERANCE
+        assert scaled(pin.rnea(model, data, q, np.zeros(model.nv), np.zeros(model.nv)), g) < TOLERANCE
+        samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
+                        "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()})
+    with open(path, "rb") as f:
+        sha = hashlib.sha256(f.read()).hexdigest()
+    out = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py with pinocchio %s (buildModelFromUrdf with JointModelFreeFlyer)"
+                     % importlib.metadata.version("pin"),
+        "urdf_source": "example-robot-data 6.0.0 (PyPI)",
+        "urdf_sha256": sha,
+        "urdf": urdf,
+        "floating_body": root,
+        "joints": order,
+        "nq": model.nq,
+        "nv": model.nv,
+        "gravity": [0.0, 0.0, -9.81],
+        "conventions": "q = [x, y, z, qx, qy, qz, qw, joints]; v, a = [linear, angular (base frame), joints]; "
+                       "tau[0:6] = base wrench [force, moment] in the base frame",
+        "seed": SEED,
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(out, f, indent=1)
+        f.write("\n")
+    print(name, model.nq, model.nv, "mass %.4f" % sum(i.mass for i in model.inertias))
+
+
+if __name__ == "__main__":
+    for name, urdf in ROBOTS.items():
+        make(name, urdf)
