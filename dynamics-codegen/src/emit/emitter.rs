@@ -8,7 +8,7 @@ use crate::symbolic::{Graph, Node, NodeId};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// Where a node read by a function is computed.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -56,21 +56,33 @@ pub(super) struct Emitter<'a> {
 impl<'a> Emitter<'a> {
     pub(super) fn new(eq: &'a Equations, ctx: Option<&'a Context>) -> Emitter<'a> {
         let n = eq.graph.len();
+        let mut t = SPARE
+            .with(|spare| spare.borrow_mut().pop())
+            .unwrap_or_default();
+        refill(&mut t.uses, n, 0);
+        refill(&mut t.needed, n, false);
+        refill(&mut t.slots, n, 0);
+        refill(&mut t.stop, n, false);
+        refill(&mut t.origin, n, Origin::Here);
+        refill(&mut t.depth, n, Cell::new(u32::MAX));
         Emitter {
             graph: &eq.graph,
             eq,
             ctx,
-            uses: vec![0; n],
-            needed: vec![false; n],
-            names: Names::new(n),
-            stop: vec![false; n],
-            origin: vec![Origin::Here; n],
+            uses: t.uses,
+            needed: t.needed,
+            names: Names {
+                slots: t.slots,
+                idents: Vec::new(),
+            },
+            stop: t.stop,
+            origin: t.origin,
             stops: Vec::new(),
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
             returned_in_place: false,
-            depth: vec![Cell::new(u32::MAX); n],
+            depth: t.depth,
         }
     }
 
@@ -160,6 +172,57 @@ impl<'a> Emitter<'a> {
     }
 }
 
+/// An emitter's tables of the graph's size, kept for the next emitter when one is dropped.
+#[derive(Default)]
+struct Tables {
+    uses: Vec<u32>,
+    needed: Vec<bool>,
+    slots: Vec<u32>,
+    stop: Vec<bool>,
+    origin: Vec<Origin>,
+    depth: Vec<Cell<u32>>,
+}
+
+thread_local! {
+    /// Tables of dropped emitters: an emission makes one emitter per function, each with
+    /// tables of the whole graph's size, whose allocation and release cost more than refilling.
+    static SPARE: RefCell<Vec<Tables>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The tables an emission keeps at most: each function's emitter is dropped before the next
+/// is made.
+const SPARE_TABLES: usize = 2;
+
+/// Drops the spare tables: called at the end of an emission, so that none outlives it.
+pub(super) fn release_spare_tables() {
+    SPARE.with(|spare| spare.borrow_mut().clear());
+}
+
+/// `table` holding `n` copies of `value`, its allocation reused.
+fn refill<T: Clone>(table: &mut Vec<T>, n: usize, value: T) {
+    table.clear();
+    table.resize(n, value);
+}
+
+impl Drop for Emitter<'_> {
+    fn drop(&mut self) {
+        let tables = Tables {
+            uses: std::mem::take(&mut self.uses),
+            needed: std::mem::take(&mut self.needed),
+            slots: std::mem::take(&mut self.names.slots),
+            stop: std::mem::take(&mut self.stop),
+            origin: std::mem::take(&mut self.origin),
+            depth: std::mem::take(&mut self.depth),
+        };
+        SPARE.with(|spare| {
+            let mut spare = spare.borrow_mut();
+            if spare.len() < SPARE_TABLES {
+                spare.push(tables);
+            }
+        });
+    }
+}
+
 impl Sums for Emitter<'_> {
     fn graph(&self) -> &Graph {
         self.graph
@@ -183,13 +246,6 @@ pub(super) struct Names {
 }
 
 impl Names {
-    fn new(n: usize) -> Names {
-        Names {
-            slots: vec![0; n],
-            idents: Vec::new(),
-        }
-    }
-
     /// Node `i`'s name, if it has one.
     pub(super) fn get(&self, i: usize) -> Option<&Ident> {
         let slot = self.slots[i].checked_sub(1)?;

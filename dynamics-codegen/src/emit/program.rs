@@ -2,7 +2,7 @@
 //! output's body reading them.
 
 use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
-use super::emitter::{Emitter, Origin};
+use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
@@ -116,6 +116,7 @@ pub(super) fn emit_with(
             _ => body(o, &o.shape),
         })
         .collect();
+    release_spare_tables();
     Emission {
         configuration,
         motion,

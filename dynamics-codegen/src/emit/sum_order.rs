@@ -44,33 +44,83 @@ pub(super) struct Addition {
 /// through all the others, and a chain of n terms ready together waits n − 1 operations where
 /// pairs wait about log₂ n.
 pub(super) fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
-    #[derive(Clone, Copy)]
-    struct Partial {
-        cycles: u32,
-        index: usize,
-        depth: u32,
-        negative: bool,
-        /// When a fusable product's operands are ready.
-        operands: Option<u32>,
-    }
-    let mut ready: Vec<Partial> = terms
-        .iter()
-        .zip(0..)
-        .map(|(t, index)| {
-            let cycles = ADD_LATENCY * t.depth;
-            Partial {
-                cycles,
-                index,
-                depth: t.depth,
-                negative: t.negative,
-                operands: t.fusable.then(|| cycles.saturating_sub(MUL_LATENCY)),
-            }
-        })
-        .collect();
     let mut additions = Vec::with_capacity(terms.len().saturating_sub(1));
-    while ready.len() > 1 {
-        ready.sort_unstable_by_key(|p| (p.cycles, p.index));
-        let (x, y) = (ready.remove(0), ready.remove(0));
+    let depth = order(terms, |addition| additions.push(addition));
+    (additions, depth)
+}
+
+/// The depth of [`sum_order`] alone, without its additions: what every sum's depth asks.
+pub(super) fn sum_depth(terms: &[SumTerm]) -> u32 {
+    order(terms, |_| {})
+}
+
+/// A partial sum of [`order`]: ready after `cycles`, the `index`th of the terms and the
+/// additions' results.
+#[derive(Clone, Copy)]
+struct Partial {
+    cycles: u32,
+    index: usize,
+    depth: u32,
+    negative: bool,
+    /// When a fusable product's operands are ready.
+    operands: Option<u32>,
+}
+
+/// The partial sums a sum of this many terms or fewer keeps on the stack.
+const INLINE: usize = 16;
+
+/// [`sum_order`]'s additions, each handed to `add` in turn, and the sum's depth. The two
+/// partial sums ready first are found by a scan: their order is that of `(cycles, index)`,
+/// unique per partial sum, so the list's own order does not matter.
+fn order(terms: &[SumTerm], mut add: impl FnMut(Addition)) -> u32 {
+    let partial = |(t, index): (&SumTerm, usize)| {
+        let cycles = ADD_LATENCY * t.depth;
+        Partial {
+            cycles,
+            index,
+            depth: t.depth,
+            negative: t.negative,
+            operands: t.fusable.then(|| cycles.saturating_sub(MUL_LATENCY)),
+        }
+    };
+    let empty = Partial {
+        cycles: 0,
+        index: 0,
+        depth: 0,
+        negative: false,
+        operands: None,
+    };
+    let mut inline = [empty; INLINE];
+    let mut spilled = Vec::new();
+    let ready: &mut [Partial] = if terms.len() <= INLINE {
+        &mut inline[..terms.len()]
+    } else {
+        spilled.extend(terms.iter().zip(0..).map(partial));
+        &mut spilled
+    };
+    if terms.len() <= INLINE {
+        for (slot, term) in ready.iter_mut().zip(terms.iter().zip(0..)) {
+            *slot = partial(term);
+        }
+    }
+    let mut len = ready.len();
+    let mut next = terms.len();
+    while len > 1 {
+        let key = |p: &Partial| (p.cycles, p.index);
+        let (mut first, mut second) = if key(&ready[0]) <= key(&ready[1]) {
+            (0, 1)
+        } else {
+            (1, 0)
+        };
+        for k in 2..len {
+            if key(&ready[k]) < key(&ready[first]) {
+                second = first;
+                first = k;
+            } else if key(&ready[k]) < key(&ready[second]) {
+                second = k;
+            }
+        }
+        let (x, y) = (ready[first], ready[second]);
         let (a, b) = match (x.operands, y.operands) {
             (Some(_), Some(_)) if x.negative != y.negative => {
                 if x.negative {
@@ -84,27 +134,29 @@ pub(super) fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
             _ => (x, y),
         };
         let fused = b.operands.is_some();
-        let (cycles, depth, negative) = if fused {
-            let cycles = a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY;
-            (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
+        let cycles = if fused {
+            a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY
         } else {
-            let cycles = a.cycles.max(b.cycles) + ADD_LATENCY;
-            (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
+            a.cycles.max(b.cycles) + ADD_LATENCY
         };
-        additions.push(Addition {
+        add(Addition {
             a: a.index,
             b: b.index,
             fused,
         });
-        ready.push(Partial {
+        // The sum in the first's place, the last partial sum in the second's.
+        ready[first] = Partial {
             cycles,
-            index: terms.len() + additions.len() - 1,
-            depth,
-            negative,
+            index: next,
+            depth: 1 + a.depth.max(b.depth),
+            negative: a.negative && b.negative,
             operands: None,
-        });
+        };
+        next += 1;
+        len -= 1;
+        ready[second] = ready[len];
     }
-    (additions, ready.first().map_or(0, |p| p.depth))
+    ready.first().map_or(0, |p| p.depth)
 }
 
 #[cfg(test)]
