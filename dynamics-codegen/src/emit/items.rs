@@ -2,6 +2,7 @@
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
 use super::depends::dependencies;
+use super::emitter::release_spare_tables;
 use super::expr::block;
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
 use super::impls::{trait_impls, Counts, Sizes};
@@ -164,6 +165,7 @@ fn generate_with(eq: &Equations, fields: Vec<TokenStream>, counted: bool) -> Gen
             motion: emission.motion,
         });
     }
+    release_spare_tables();
     methods.sort_by_key(|m| m.method);
     Generated {
         dof: eq.dof,

@@ -153,8 +153,7 @@ impl Emitter<'_> {
         };
         for plan in lanes.iter().flatten() {
             for f in plan.factors() {
-                let i = f.index();
-                self.uses[i] = self.uses[i].max(2);
+                self.read_twice(f.index());
             }
         }
     }

@@ -28,7 +28,9 @@ pub struct Emission {
 /// time is that of separate functions, and the code is written once.
 #[must_use]
 pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
-    emit_with(eq, all, ctx, &dependencies(eq))
+    let emission = emit_with(eq, all, ctx, &dependencies(eq));
+    release_spare_tables();
+    emission
 }
 
 /// `emit` with `depends`, the dependencies of `eq`'s nodes, shared by every family's emission.
@@ -116,7 +118,6 @@ pub(super) fn emit_with(
             _ => body(o, &o.shape),
         })
         .collect();
-    release_spare_tables();
     Emission {
         configuration,
         motion,

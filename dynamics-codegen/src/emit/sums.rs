@@ -38,6 +38,11 @@ pub(crate) trait Sums {
     /// Each node's depth ([`Sums::depth`]), `u32::MAX` until asked for.
     fn depths(&self) -> &[Cell<u32>];
 
+    /// Keeps node `id`'s depth once computed, in [`Sums::depths`].
+    fn remember_depth(&self, id: NodeId, depth: u32) {
+        self.depths()[id.index()].set(depth);
+    }
+
     /// `(a, x)` if `a + b` is `a − x`.
     fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
         as_sub(self.graph(), a, b)
@@ -134,7 +139,7 @@ pub(crate) trait Sums {
             Node::Neg(a) => self.depth(a),
             Node::Const(_) | Node::Var(_) => 0,
         };
-        self.depths()[id.index()].set(d);
+        self.remember_depth(id, d);
         d
     }
 
@@ -234,5 +239,24 @@ pub(crate) fn as_sub(graph: &Graph, a: NodeId, b: NodeId) -> Option<(NodeId, Nod
         (_, Node::Neg(x)) => Some((a, x)),
         (Node::Neg(x), _) => Some((b, x)),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Inline;
+
+    /// A list longer than its stack slots keeps every item, in order.
+    #[test]
+    fn an_inline_list_spills_in_order() {
+        for n in [0, 1, 7, 8, 9, 30] {
+            let mut list = Inline::new(0_usize);
+            list.extend(0..n);
+            assert_eq!(
+                list.as_slice(),
+                (0..n).collect::<Vec<_>>().as_slice(),
+                "{n} items"
+            );
+        }
     }
 }
