@@ -2,7 +2,9 @@
 //! family (derivatives, regressor, base parameters), the methods of the dynamics, forward
 //! dynamics, derivatives, regressor and base regressor instantiated in `f64` and `f32`: the
 //! compile-time case of issues 3, 18 and 42, timed by `bench/compile-time`.
-use dynamics_runtime::{Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, Real};
+use dynamics_runtime::{
+    Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, Real,
+};
 
 /// KUKA iiwa 14 kinematics, parameters as fields.
 #[derive(Dynamics)]
