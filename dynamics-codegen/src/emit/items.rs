@@ -3,7 +3,7 @@
 
 use super::depends::dependencies;
 use super::emitter::release_spare_tables;
-use super::expr::block;
+use super::expr::{block, with_body};
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
 use super::impls::{trait_impls, Counts, Sizes};
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
@@ -483,13 +483,6 @@ impl Generated {
         };
         with_body(head, shared.tokens.clone())
     }
-}
-
-/// `head { body }`, the body moved into its braces: interpolated into `quote!`, a stream is
-/// copied token by token (each name allocated again), where a clone of it is shared.
-fn with_body(mut head: TokenStream, body: TokenStream) -> TokenStream {
-    head.extend([block(body)]);
-    head
 }
 
 /// A shared function: its struct's doc and name, its name, its arguments after the

@@ -54,6 +54,43 @@ pub(super) fn sum_depth(terms: &[SumTerm]) -> u32 {
     order(terms, |_| {})
 }
 
+/// The indices of the two partial sums ready first, by `(cycles, index)` (at least two).
+fn ready_first(ready: &[Partial]) -> (usize, usize) {
+    let key = |p: &Partial| (p.cycles, p.index);
+    let (mut first, mut second) = if key(&ready[0]) <= key(&ready[1]) {
+        (0, 1)
+    } else {
+        (1, 0)
+    };
+    for (k, p) in ready.iter().enumerate().skip(2) {
+        if key(p) < key(&ready[first]) {
+            second = first;
+            first = k;
+        } else if key(p) < key(&ready[second]) {
+            second = k;
+        }
+    }
+    (first, second)
+}
+
+/// The two partial sums `x` (ready first) and `y` as added, `(a, b)`: `b` the product fused
+/// if either is one (of two, the negative one where the signs differ, else the one whose
+/// operands come later).
+fn fused_last(x: Partial, y: Partial) -> (Partial, Partial) {
+    match (x.operands, y.operands) {
+        (Some(_), Some(_)) if x.negative != y.negative => {
+            if x.negative {
+                (y, x)
+            } else {
+                (x, y)
+            }
+        }
+        (Some(i), Some(j)) if i > j => (y, x),
+        (Some(_), None) => (y, x),
+        _ => (x, y),
+    }
+}
+
 /// A partial sum of [`order`]: ready after `cycles`, the `index`th of the terms and the
 /// additions' results.
 #[derive(Clone, Copy)]
@@ -106,33 +143,8 @@ fn order(terms: &[SumTerm], mut add: impl FnMut(Addition)) -> u32 {
     let mut len = ready.len();
     let mut next = terms.len();
     while len > 1 {
-        let key = |p: &Partial| (p.cycles, p.index);
-        let (mut first, mut second) = if key(&ready[0]) <= key(&ready[1]) {
-            (0, 1)
-        } else {
-            (1, 0)
-        };
-        for k in 2..len {
-            if key(&ready[k]) < key(&ready[first]) {
-                second = first;
-                first = k;
-            } else if key(&ready[k]) < key(&ready[second]) {
-                second = k;
-            }
-        }
-        let (x, y) = (ready[first], ready[second]);
-        let (a, b) = match (x.operands, y.operands) {
-            (Some(_), Some(_)) if x.negative != y.negative => {
-                if x.negative {
-                    (y, x)
-                } else {
-                    (x, y)
-                }
-            }
-            (Some(i), Some(j)) if i > j => (y, x),
-            (Some(_), None) => (y, x),
-            _ => (x, y),
-        };
+        let (first, second) = ready_first(&ready[..len]);
+        let (a, b) = fused_last(ready[first], ready[second]);
         let fused = b.operands.is_some();
         let cycles = if fused {
             a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY
