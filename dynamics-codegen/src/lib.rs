@@ -102,7 +102,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
             Err(message) => quote!(::core::compile_error!(#message)),
         })
         .collect();
-    let generated = generate(&eq, fields);
+    let generated = emit::generate_uncounted(&eq, fields);
     let readable = emit::readable(input, &eq, &parsed.robot);
     let items = generated.items(&krate, &input.ident, &input.generics, &|method| {
         readable.doc(method)

@@ -1,11 +1,19 @@
-//! Two 7-joint robots whose 70 inertial parameters are all struct fields, every generated
-//! method of the dynamics, forward dynamics and derivatives instantiated in `f64` and `f32`:
-//! the compile-time case of issues 3 and 18, timed by `bench/compile-time`.
-use dynamics_runtime::{Dynamics, DynamicsDerivatives, Real};
+//! Two 7-joint robots whose 70 inertial parameters are all struct fields, derived with every
+//! family (derivatives, regressor, base parameters), the methods of the dynamics, forward
+//! dynamics, derivatives, regressor and base regressor instantiated in `f64` and `f32`: the
+//! compile-time case of issues 3, 18 and 42, timed by `bench/compile-time`.
+use dynamics_runtime::{
+    Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, Real,
+};
 
 /// KUKA iiwa 14 kinematics, parameters as fields.
 #[derive(Dynamics)]
-#[dynamics(file = "../robots/iiwa14_fields.toml", derivatives = true)]
+#[dynamics(
+    file = "../robots/iiwa14_fields.toml",
+    derivatives = true,
+    regressor = true,
+    base_parameters = true
+)]
 pub struct A {
     pub m1: f64,
     pub cx1: f64,
@@ -81,7 +89,12 @@ pub struct A {
 
 /// The same arm with another link length.
 #[derive(Dynamics)]
-#[dynamics(file = "iiwa14_fields_b.toml", derivatives = true)]
+#[dynamics(
+    file = "iiwa14_fields_b.toml",
+    derivatives = true,
+    regressor = true,
+    base_parameters = true
+)]
 pub struct B {
     pub m1: f64,
     pub cx1: f64,
@@ -185,12 +198,32 @@ fn all<R: DynamicsDerivatives<7>, T: Real>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: 
     sum
 }
 
+/// The regressor's and the base regressor's elements of `r` at one state, summed.
+fn identification<R, T: Real, const P: usize>(r: &R, q: &[T; 7], qd: &[T; 7], qdd: &[T; 7]) -> T
+where
+    R: DynamicsRegressor<7> + DynamicsBaseParameters<7, P>,
+{
+    let y = r.regressor(q, qd, qdd);
+    let yb = r.base_regressor(q, qd, qdd);
+    let mut sum = T::ZERO;
+    for i in 0..7 {
+        sum += y[i][i][0] + yb[i][0];
+    }
+    sum
+}
+
 /// Both robots in `f64`.
 pub fn f64s(a: &A, b: &B, q: &[f64; 7], qd: &[f64; 7], qdd: &[f64; 7]) -> f64 {
-    all(a, q, qd, qdd) + all(b, q, qd, qdd)
+    all(a, q, qd, qdd)
+        + all(b, q, qd, qdd)
+        + identification(a, q, qd, qdd)
+        + identification(b, q, qd, qdd)
 }
 
 /// Both robots in `f32`.
 pub fn f32s(a: &A, b: &B, q: &[f32; 7], qd: &[f32; 7], qdd: &[f32; 7]) -> f32 {
-    all(a, q, qd, qdd) + all(b, q, qd, qdd)
+    all(a, q, qd, qdd)
+        + all(b, q, qd, qdd)
+        + identification(a, q, qd, qdd)
+        + identification(b, q, qd, qdd)
 }

@@ -8,7 +8,7 @@ use crate::symbolic::{Graph, Node, NodeId};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 
 /// Where a node read by a function is computed.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -51,26 +51,50 @@ pub(super) struct Emitter<'a> {
     /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
     pub(super) depth: Vec<Cell<u32>>,
+    /// The nodes marked needed (the only ones whose `uses` may be non-zero) and those whose
+    /// depth is known: the entries of the tables to reset for the next emitter.
+    marked: Vec<u32>,
+    depth_known: RefCell<Vec<u32>>,
 }
 
 impl<'a> Emitter<'a> {
     pub(super) fn new(eq: &'a Equations, ctx: Option<&'a Context>) -> Emitter<'a> {
         let n = eq.graph.len();
+        let mut t = SPARE
+            .with(|spare| spare.borrow_mut().pop())
+            .unwrap_or_default();
+        // Tables of this graph's size come back reset (`Drop`); others are filled anew.
+        if t.uses.len() != n {
+            refill(&mut t.uses, n, 0);
+            refill(&mut t.needed, n, false);
+            refill(&mut t.slots, n, 0);
+            refill(&mut t.stop, n, false);
+            refill(&mut t.origin, n, Origin::Here);
+            refill(&mut t.depth, n, Cell::new(u32::MAX));
+        }
+        #[cfg(test)]
+        t.assert_reset();
         Emitter {
             graph: &eq.graph,
             eq,
             ctx,
-            uses: vec![0; n],
-            needed: vec![false; n],
-            names: Names::new(n),
-            stop: vec![false; n],
-            origin: vec![Origin::Here; n],
+            uses: t.uses,
+            needed: t.needed,
+            names: Names {
+                slots: t.slots,
+                idents: Vec::new(),
+                named: Vec::new(),
+            },
+            stop: t.stop,
+            origin: t.origin,
             stops: Vec::new(),
             temporaries: 0,
             temporary_prefix: "t",
             has_configuration: false,
             returned_in_place: false,
-            depth: vec![Cell::new(u32::MAX); n],
+            depth: t.depth,
+            marked: Vec::new(),
+            depth_known: RefCell::new(Vec::new()),
         }
     }
 
@@ -117,7 +141,12 @@ impl<'a> Emitter<'a> {
             self.uses[o.index()] += 1;
         }
         while let Some(id) = stack.pop() {
-            if std::mem::replace(&mut self.needed[id.index()], true) || self.stop[id.index()] {
+            if std::mem::replace(&mut self.needed[id.index()], true) {
+                continue;
+            }
+            // Every node whose uses count is read first, as it is pushed.
+            self.marked.push(id.0);
+            if self.stop[id.index()] {
                 continue;
             }
             for c in self.operands(id) {
@@ -125,6 +154,13 @@ impl<'a> Emitter<'a> {
                 stack.push(c);
             }
         }
+    }
+
+    /// Counts node `i` as read at least twice, so that it is bound to a name.
+    pub(super) fn read_twice(&mut self, i: usize) {
+        self.uses[i] = self.uses[i].max(2);
+        self.marked
+            .push(u32::try_from(i).expect("graph exceeds u32 nodes"));
     }
 
     pub(super) fn is_leaf(&self, id: NodeId) -> bool {
@@ -160,6 +196,92 @@ impl<'a> Emitter<'a> {
     }
 }
 
+/// An emitter's tables of the graph's size, kept for the next emitter when one is dropped.
+#[derive(Default)]
+struct Tables {
+    uses: Vec<u32>,
+    needed: Vec<bool>,
+    slots: Vec<u32>,
+    stop: Vec<bool>,
+    origin: Vec<Origin>,
+    depth: Vec<Cell<u32>>,
+}
+
+thread_local! {
+    /// Tables of dropped emitters: an emission makes one emitter per function, each with
+    /// tables of the whole graph's size, whose allocation and release cost more than refilling.
+    static SPARE: RefCell<Vec<Tables>> = const { RefCell::new(Vec::new()) };
+}
+
+/// The tables an emission keeps at most: each function's emitter is dropped before the next
+/// is made.
+const SPARE_TABLES: usize = 2;
+
+impl Tables {
+    /// Whether every entry is its default, as an emitter expects its tables.
+    #[cfg(test)]
+    fn assert_reset(&self) {
+        assert!(self.uses.iter().all(|&u| u == 0), "uses reset");
+        assert!(self.needed.iter().all(|&x| !x), "needed reset");
+        assert!(self.slots.iter().all(|&x| x == 0), "names reset");
+        assert!(self.stop.iter().all(|&x| !x), "stops reset");
+        assert!(
+            self.origin.iter().all(|&x| x == Origin::Here),
+            "origins reset"
+        );
+        assert!(
+            self.depth.iter().all(|x| x.get() == u32::MAX),
+            "depths reset"
+        );
+    }
+}
+
+/// Drops the spare tables: called at the end of an emission, so that none outlives it.
+pub(super) fn release_spare_tables() {
+    SPARE.with(|spare| spare.borrow_mut().clear());
+}
+
+/// `table` holding `n` copies of `value`, its allocation reused.
+fn refill<T: Clone>(table: &mut Vec<T>, n: usize, value: T) {
+    table.clear();
+    table.resize(n, value);
+}
+
+impl Drop for Emitter<'_> {
+    /// Resets the entries the emitter wrote, a few thousand where the graph may have tens of
+    /// thousands of nodes, and keeps the tables for the next emitter.
+    fn drop(&mut self) {
+        for &i in &self.marked {
+            self.uses[i as usize] = 0;
+            self.needed[i as usize] = false;
+        }
+        for &i in &self.names.named {
+            self.names.slots[i as usize] = 0;
+        }
+        for id in &self.stops {
+            self.stop[id.index()] = false;
+            self.origin[id.index()] = Origin::Here;
+        }
+        for &i in self.depth_known.get_mut().iter() {
+            self.depth[i as usize].set(u32::MAX);
+        }
+        let tables = Tables {
+            uses: std::mem::take(&mut self.uses),
+            needed: std::mem::take(&mut self.needed),
+            slots: std::mem::take(&mut self.names.slots),
+            stop: std::mem::take(&mut self.stop),
+            origin: std::mem::take(&mut self.origin),
+            depth: std::mem::take(&mut self.depth),
+        };
+        SPARE.with(|spare| {
+            let mut spare = spare.borrow_mut();
+            if spare.len() < SPARE_TABLES {
+                spare.push(tables);
+            }
+        });
+    }
+}
+
 impl Sums for Emitter<'_> {
     fn graph(&self) -> &Graph {
         self.graph
@@ -172,6 +294,11 @@ impl Sums for Emitter<'_> {
     fn depths(&self) -> &[Cell<u32>] {
         &self.depth
     }
+
+    fn remember_depth(&self, id: NodeId, depth: u32) {
+        self.depth[id.index()].set(depth);
+        self.depth_known.borrow_mut().push(id.0);
+    }
 }
 
 /// What each node is read as, if it has a name: an index per node into the names given, so
@@ -180,16 +307,11 @@ pub(super) struct Names {
     /// Per node, 0 for none, else 1 + its name's index in `idents`.
     slots: Vec<u32>,
     idents: Vec<Ident>,
+    /// The nodes named, whose slots are reset when the emitter is dropped.
+    named: Vec<u32>,
 }
 
 impl Names {
-    fn new(n: usize) -> Names {
-        Names {
-            slots: vec![0; n],
-            idents: Vec::new(),
-        }
-    }
-
     /// Node `i`'s name, if it has one.
     pub(super) fn get(&self, i: usize) -> Option<&Ident> {
         let slot = self.slots[i].checked_sub(1)?;
@@ -200,5 +322,7 @@ impl Names {
     pub(super) fn set(&mut self, i: usize, name: Ident) {
         self.idents.push(name);
         self.slots[i] = u32::try_from(self.idents.len()).expect("fewer names than nodes");
+        self.named
+            .push(u32::try_from(i).expect("graph exceeds u32 nodes"));
     }
 }

@@ -152,6 +152,13 @@ pub(super) fn block(a: TokenStream) -> TokenStream {
     TokenStream::from(TokenTree::Group(Group::new(Delimiter::Brace, a)))
 }
 
+/// `head { body }`, the body moved into its braces: interpolated into `quote!`, a stream is
+/// copied token by token (each name allocated again), where a clone of it is shared.
+pub(super) fn with_body(mut head: TokenStream, body: TokenStream) -> TokenStream {
+    head.extend([block(body)]);
+    head
+}
+
 /// `let name = value;`, the value moved in.
 pub(super) fn let_statement(name: &proc_macro2::Ident, value: TokenStream) -> TokenStream {
     let mut statement = quote!(let #name =);

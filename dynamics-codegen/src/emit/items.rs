@@ -2,6 +2,8 @@
 //! functions, a parameter reader and the `Dynamics` impl forwarding to them.
 
 use super::depends::dependencies;
+use super::emitter::release_spare_tables;
+use super::expr::{block, with_body};
 use super::impls::{argument_local, call_arguments, forward, scalar_name, signature};
 use super::impls::{trait_impls, Counts, Sizes};
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
@@ -10,7 +12,7 @@ use super::parts::{Context, OpCount, Output, Shared};
 use super::program::emit_with;
 use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
-use proc_macro2::{Ident, Span, TokenStream};
+use proc_macro2::{Delimiter, Group, Ident, Span, TokenStream, TokenTree};
 use quote::{quote, ToTokens};
 
 /// One generated method: which, its body, with operation counts.
@@ -104,8 +106,21 @@ pub(super) const PARAMETERS_FN: &str = "__dynamics_parameters";
 /// struct field `k` of the robot (`self.name`), in the order of [`Equations::fields`].
 #[must_use]
 pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
+    generate_with(eq, fields, true)
+}
+
+/// [`generate`] without the operation counts (each [`MethodCode::ops`] zero): what the derive
+/// and the standalone module write, which read none.
+#[must_use]
+pub(crate) fn generate_uncounted(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
+    generate_with(eq, fields, false)
+}
+
+/// [`generate`], the operations counted if `counted`.
+fn generate_with(eq: &Equations, fields: Vec<TokenStream>, counted: bool) -> Generated {
     let ctx = Context {
         parameters: local(PARAMETERS),
+        counted,
     };
     let mut modules = Vec::new();
     let mut methods = Vec::new();
@@ -130,16 +145,17 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
             })
             .collect();
         let emission = emit_with(eq, &outputs, &ctx, &depends);
+        // The bodies moved, not cloned: a shared stream is copied when extended.
         methods.extend(
             members
                 .iter()
-                .zip(&emission.bodies)
+                .zip(emission.bodies)
                 .map(|(&method, b)| MethodCode {
                     method,
                     name: method.name(),
-                    body: b.tokens.clone(),
+                    body: b.tokens,
                     ops: b.ops,
-                    zeros: b.zeros.clone(),
+                    zeros: b.zeros,
                     lanes: b.lanes,
                 }),
         );
@@ -149,6 +165,7 @@ pub fn generate(eq: &Equations, fields: Vec<TokenStream>) -> Generated {
             motion: emission.motion,
         });
     }
+    release_spare_tables();
     methods.sort_by_key(|m| m.method);
     Generated {
         dof: eq.dof,
@@ -318,19 +335,22 @@ impl Generated {
             let apart = m.method.is_compiled_apart();
             let (args, ret) = signature(m.method, counts, &scalar, krate, !apart);
             let (inline, body) = if apart {
+                let call = TokenStream::from(TokenTree::Group(Group::new(
+                    Delimiter::Parenthesis,
+                    block(body.clone()),
+                )));
                 (
                     quote!(#[inline(never)]),
-                    forward(m.method, quote!(({ #body })), counts, &scalar, krate),
+                    forward(m.method, call, counts, &scalar, krate),
                 )
             } else {
-                (quote!(#[inline(always)]), quote!(#body))
+                (quote!(#[inline(always)]), body.clone())
             };
-            quote! {
+            let head = quote! {
                 #inline
-                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
-                    #body
-                }
-            }
+                pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret
+            };
+            with_body(head, body)
         });
         let name = module_name(module.family, ident);
         let tangent = self
@@ -343,17 +363,21 @@ impl Generated {
             .family
             .is_beside_the_struct()
             .then(|| quote!(#[doc(hidden)]));
-        quote! {
+        let mut inner = TokenStream::new();
+        inner.extend(
+            tangent
+                .into_iter()
+                .chain(configuration_item)
+                .chain(motion_item),
+        );
+        inner.extend(bodies);
+        let head = quote! {
             /// The generated functions, out of reach of the names around the derive.
             #hidden
             #[allow(non_snake_case, non_camel_case_types, unused_variables, unused_doc_comments, clippy::all, clippy::pedantic, clippy::nursery)]
-            mod #name {
-                #tangent
-                #configuration_item
-                #motion_item
-                #(#bodies)*
-            }
-        }
+            mod #name
+        };
+        with_body(head, inner)
     }
 
     /// The two functions of a method written in place: `name_into`, its body storing into
@@ -373,19 +397,21 @@ impl Generated {
         let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
         let scalar = Ident::new("T", Span::call_site());
         let (args, ret) = signature(m.method, &self.counts(), &scalar, krate, true);
-        let (pass, body) = (call_arguments(m.method), &m.body);
-        quote! {
+        let pass = call_arguments(m.method);
+        let head = quote! {
             #[inline(always)]
-            pub(super) fn #into<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret) {
-                #body
-            }
+            pub(super) fn #into<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+        };
+        let mut into_fn = with_body(head, m.body.clone());
+        into_fn.extend(quote! {
             #[inline(always)]
             pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
                 let mut #y = #zeros;
                 #into(#p, #pass, &mut #y);
                 #y
             }
-        }
+        });
+        into_fn
     }
 
     /// The configuration struct and function, if any method reads them.
@@ -453,16 +479,14 @@ impl Generated {
         let name = Ident::new(name, Span::call_site());
         let arguments = arguments.iter().map(|&a| argument_local(a));
         let fields = &shared.fields;
-        let body = &shared.tokens;
-        quote! {
+        let head = quote! {
             #doc
             pub(super) struct #ty<T> { #(#fields: T),* }
             // Inlined into each method, which keeps of it only what it reads.
             #[inline(always)]
-            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #(#arguments: &[T; #n]),*) -> #result {
-                #body
-            }
-        }
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #(#arguments: &[T; #n]),*) -> #result
+        };
+        with_body(head, shared.tokens.clone())
     }
 }
 

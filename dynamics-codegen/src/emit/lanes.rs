@@ -18,7 +18,7 @@ use super::plan::Place;
 use crate::symbolic::{NodeId, Of, Tangents, Term, BLOCK};
 use crate::trace::Shape;
 use core::ops::Range;
-use proc_macro2::{Ident, TokenStream};
+use proc_macro2::{Delimiter, Group, Ident, TokenStream, TokenTree};
 use quote::quote;
 
 /// The lanes still to write, in the order they are written (the C back end's too).
@@ -57,6 +57,19 @@ fn lane_row(p: usize, plan: &Tangents, l: usize, blocks: &[Range<usize>]) -> Tok
         let at = unsuffixed(blocks[l].start);
         quote!(#x.row_at(#at))
     }
+}
+
+/// The streams one after the other, moved: `quote!` would copy each (the sums of a lane's
+/// terms, growing with each term).
+fn cat<const N: usize>(parts: [TokenStream; N]) -> TokenStream {
+    let mut all = TokenStream::new();
+    all.extend(parts);
+    all
+}
+
+/// `(a)`, `a` moved in.
+fn parenthesized(a: TokenStream) -> TokenStream {
+    TokenStream::from(TokenTree::Group(Group::new(Delimiter::Parenthesis, a)))
 }
 
 /// The number of lanes of a plan of `n` directions: whole AVX-512 registers of `f64`.
@@ -140,8 +153,7 @@ impl Emitter<'_> {
         };
         for plan in lanes.iter().flatten() {
             for f in plan.factors() {
-                let i = f.index();
-                self.uses[i] = self.uses[i].max(2);
+                self.read_twice(f.index());
             }
         }
     }
@@ -229,15 +241,24 @@ impl Emitter<'_> {
                 (None, None, None) if t.negative => quote!(-#x),
                 (None, None, None) => quote!(#x),
                 (None, None, Some(f)) => quote!(#x.scale(#f)),
-                (None, Some(a), None) if t.negative => quote!(#a - #x),
-                (None, Some(a), None) => quote!(#a + #x),
-                (None, Some(a), Some(f)) => quote!(#x.mul_add(#f, #a)),
+                (None, Some(a), None) if t.negative => cat([a, quote!(- #x)]),
+                (None, Some(a), None) => cat([a, quote!(+ #x)]),
+                (None, Some(a), Some(f)) => {
+                    cat([quote!(#x.mul_add), parenthesized(cat([f, quote!(,), a]))])
+                }
                 (Some(at), None, None) if t.negative => quote!((-#x).widen::<#q>(#at)),
                 (Some(at), None, None) => quote!(#x.widen::<#q>(#at)),
                 (Some(at), None, Some(f)) => quote!(#x.scale(#f).widen::<#q>(#at)),
-                (Some(at), Some(a), None) if t.negative => quote!(#x.sub_from(#a, #at)),
-                (Some(at), Some(a), None) => quote!(#x.add_into(#a, #at)),
-                (Some(at), Some(a), Some(f)) => quote!(#x.mul_add_into(#f, #a, #at)),
+                (Some(at), Some(a), None) if t.negative => {
+                    cat([quote!(#x.sub_from), parenthesized(cat([a, quote!(, #at)]))])
+                }
+                (Some(at), Some(a), None) => {
+                    cat([quote!(#x.add_into), parenthesized(cat([a, quote!(, #at)]))])
+                }
+                (Some(at), Some(a), Some(f)) => cat([
+                    quote!(#x.mul_add_into),
+                    parenthesized(cat([f, quote!(,), a, quote!(, #at)])),
+                ]),
             });
         }
         let groups = if whole {
@@ -257,9 +278,9 @@ impl Emitter<'_> {
                 .unwrap_or_else(|| quote!(T::ONE));
             sum = Some(match (sum, t.negative) {
                 (None, false) => value,
-                (None, true) => quote!(-#value),
-                (Some(s), false) => quote!(#s + #value),
-                (Some(s), true) => quote!(#s - #value),
+                (None, true) => cat([quote!(-), value]),
+                (Some(s), false) => cat([s, quote!(+), value]),
+                (Some(s), true) => cat([s, quote!(-), value]),
             });
         }
         sum.unwrap_or_else(|| quote!(T::ZERO))
@@ -272,14 +293,14 @@ impl Emitter<'_> {
             let e = self.expr(f, Place::MulRight);
             product = Some(match product {
                 None => e,
-                Some(p) => quote!(#p * #e),
+                Some(p) => cat([p, quote!(*), e]),
             });
         }
         match (product, negative) {
             (None, false) => None,
             (None, true) => Some(quote!(-T::ONE)),
             (Some(p), false) => Some(p),
-            (Some(p), true) => Some(quote!((-(#p)))),
+            (Some(p), true) => Some(parenthesized(cat([quote!(-), parenthesized(p)]))),
         }
     }
 

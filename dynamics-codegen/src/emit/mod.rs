@@ -70,6 +70,7 @@ pub(crate) use fallback::{fallback, unreachable_family};
 pub use floating::floating_items;
 pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};
+pub(crate) use items::generate_uncounted;
 pub use items::{generate, Generated, Items, MethodCode, Module};
 pub(crate) use names::output_names;
 pub use names::{

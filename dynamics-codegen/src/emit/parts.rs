@@ -42,7 +42,7 @@ impl OpCount {
 pub struct Body {
     /// The statements and the result expression.
     pub tokens: TokenStream,
-    /// Its operations, shared code included.
+    /// Its operations, shared code included (zeros where [`Context::counted`] is false).
     pub ops: OpCount,
     /// For a body that writes its result into `y_` rather than returning it, the result's
     /// value of zeros, which the function returning the result fills with it.
@@ -55,6 +55,9 @@ pub struct Body {
 pub struct Context {
     /// The array `[T; N]` of the parameters, in the order of [`crate::trace::Equations::fields`] (`p_`).
     pub parameters: proc_macro2::Ident,
+    /// Whether each body's operations are counted ([`Body::ops`]): the derive reads no
+    /// counts, and counting walks each function's nodes again.
+    pub counted: bool,
 }
 
 /// One output of [`super::emit`]: the method returning it, which names its elements (`m1_2`,

@@ -2,7 +2,7 @@
 //! output's body reading them.
 
 use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, Depends};
-use super::emitter::{Emitter, Origin};
+use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
@@ -28,7 +28,9 @@ pub struct Emission {
 /// time is that of separate functions, and the code is written once.
 #[must_use]
 pub fn emit(eq: &Equations, all: &[Output], ctx: &Context) -> Emission {
-    emit_with(eq, all, ctx, &dependencies(eq))
+    let emission = emit_with(eq, all, ctx, &dependencies(eq));
+    release_spare_tables();
+    emission
 }
 
 /// `emit` with `depends`, the dependencies of `eq`'s nodes, shared by every family's emission.

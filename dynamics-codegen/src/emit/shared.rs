@@ -132,14 +132,14 @@ impl Emitter<'_> {
         let ty = Ident::new(MOTION_STRUCT, Span::call_site());
         let result = quote!(#ty { #(#locals),* });
         let c = local(CONFIGURATION_LOCAL);
-        Shared {
-            fields,
-            tokens: if self.has_configuration {
-                quote!(#(#statements)* (#c, #result))
-            } else {
-                quote!(#(#statements)* #result)
-            },
+        // Moved in, not interpolated: `quote!` would copy the statements.
+        let mut tokens: TokenStream = statements.into_iter().collect();
+        if self.has_configuration {
+            tokens.extend([quote!((#c, #result))]);
+        } else {
+            tokens.extend([result]);
         }
+        Shared { fields, tokens }
     }
 
     /// The statements binding the shared fields this function reads: in a method,

@@ -44,67 +44,131 @@ pub(super) struct Addition {
 /// through all the others, and a chain of n terms ready together waits n − 1 operations where
 /// pairs wait about log₂ n.
 pub(super) fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
-    #[derive(Clone, Copy)]
-    struct Partial {
-        cycles: u32,
-        index: usize,
-        depth: u32,
-        negative: bool,
-        /// When a fusable product's operands are ready.
-        operands: Option<u32>,
-    }
-    let mut ready: Vec<Partial> = terms
-        .iter()
-        .zip(0..)
-        .map(|(t, index)| {
-            let cycles = ADD_LATENCY * t.depth;
-            Partial {
-                cycles,
-                index,
-                depth: t.depth,
-                negative: t.negative,
-                operands: t.fusable.then(|| cycles.saturating_sub(MUL_LATENCY)),
-            }
-        })
-        .collect();
     let mut additions = Vec::with_capacity(terms.len().saturating_sub(1));
-    while ready.len() > 1 {
-        ready.sort_unstable_by_key(|p| (p.cycles, p.index));
-        let (x, y) = (ready.remove(0), ready.remove(0));
-        let (a, b) = match (x.operands, y.operands) {
-            (Some(_), Some(_)) if x.negative != y.negative => {
-                if x.negative {
-                    (y, x)
-                } else {
-                    (x, y)
-                }
+    let depth = order(terms, |addition| additions.push(addition));
+    (additions, depth)
+}
+
+/// The depth of [`sum_order`] alone, without its additions: what every sum's depth asks.
+pub(super) fn sum_depth(terms: &[SumTerm]) -> u32 {
+    order(terms, |_| {})
+}
+
+/// The indices of the two partial sums ready first, by `(cycles, index)` (at least two).
+fn ready_first(ready: &[Partial]) -> (usize, usize) {
+    let key = |p: &Partial| (p.cycles, p.index);
+    let (mut first, mut second) = if key(&ready[0]) <= key(&ready[1]) {
+        (0, 1)
+    } else {
+        (1, 0)
+    };
+    for (k, p) in ready.iter().enumerate().skip(2) {
+        if key(p) < key(&ready[first]) {
+            second = first;
+            first = k;
+        } else if key(p) < key(&ready[second]) {
+            second = k;
+        }
+    }
+    (first, second)
+}
+
+/// The two partial sums `x` (ready first) and `y` as added, `(a, b)`: `b` the product fused
+/// if either is one (of two, the negative one where the signs differ, else the one whose
+/// operands come later).
+fn fused_last(x: Partial, y: Partial) -> (Partial, Partial) {
+    match (x.operands, y.operands) {
+        (Some(_), Some(_)) if x.negative != y.negative => {
+            if x.negative {
+                (y, x)
+            } else {
+                (x, y)
             }
-            (Some(i), Some(j)) if i > j => (y, x),
-            (Some(_), None) => (y, x),
-            _ => (x, y),
-        };
+        }
+        (Some(i), Some(j)) if i > j => (y, x),
+        (Some(_), None) => (y, x),
+        _ => (x, y),
+    }
+}
+
+/// A partial sum of [`order`]: ready after `cycles`, the `index`th of the terms and the
+/// additions' results.
+#[derive(Clone, Copy)]
+struct Partial {
+    cycles: u32,
+    index: usize,
+    depth: u32,
+    negative: bool,
+    /// When a fusable product's operands are ready.
+    operands: Option<u32>,
+}
+
+/// The partial sums a sum of this many terms or fewer keeps on the stack.
+const INLINE: usize = 16;
+
+/// [`sum_order`]'s additions, each handed to `add` in turn, and the sum's depth. The two
+/// partial sums ready first are found by a scan: their order is that of `(cycles, index)`,
+/// unique per partial sum, so the list's own order does not matter.
+fn order(terms: &[SumTerm], mut add: impl FnMut(Addition)) -> u32 {
+    let partial = |(t, index): (&SumTerm, usize)| {
+        let cycles = ADD_LATENCY * t.depth;
+        Partial {
+            cycles,
+            index,
+            depth: t.depth,
+            negative: t.negative,
+            operands: t.fusable.then(|| cycles.saturating_sub(MUL_LATENCY)),
+        }
+    };
+    let empty = Partial {
+        cycles: 0,
+        index: 0,
+        depth: 0,
+        negative: false,
+        operands: None,
+    };
+    let mut inline = [empty; INLINE];
+    let mut spilled = Vec::new();
+    let ready: &mut [Partial] = if terms.len() <= INLINE {
+        &mut inline[..terms.len()]
+    } else {
+        spilled.extend(terms.iter().zip(0..).map(partial));
+        &mut spilled
+    };
+    if terms.len() <= INLINE {
+        for (slot, term) in ready.iter_mut().zip(terms.iter().zip(0..)) {
+            *slot = partial(term);
+        }
+    }
+    let mut len = ready.len();
+    let mut next = terms.len();
+    while len > 1 {
+        let (first, second) = ready_first(&ready[..len]);
+        let (a, b) = fused_last(ready[first], ready[second]);
         let fused = b.operands.is_some();
-        let (cycles, depth, negative) = if fused {
-            let cycles = a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY;
-            (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
+        let cycles = if fused {
+            a.cycles.max(b.operands.unwrap_or(b.cycles)) + FMA_LATENCY
         } else {
-            let cycles = a.cycles.max(b.cycles) + ADD_LATENCY;
-            (cycles, 1 + a.depth.max(b.depth), a.negative && b.negative)
+            a.cycles.max(b.cycles) + ADD_LATENCY
         };
-        additions.push(Addition {
+        add(Addition {
             a: a.index,
             b: b.index,
             fused,
         });
-        ready.push(Partial {
+        // The sum in the first's place, the last partial sum in the second's.
+        ready[first] = Partial {
             cycles,
-            index: terms.len() + additions.len() - 1,
-            depth,
-            negative,
+            index: next,
+            depth: 1 + a.depth.max(b.depth),
+            negative: a.negative && b.negative,
             operands: None,
-        });
+        };
+        next += 1;
+        len -= 1;
+        ready[second] = ready[len];
     }
-    (additions, ready.first().map_or(0, |p| p.depth))
+    ready.first().map_or(0, |p| p.depth)
 }
 
 #[cfg(test)]
@@ -168,6 +232,78 @@ mod tests {
         ];
         for (terms, additions, depth) in table {
             assert_eq!(sum_order(&terms), (additions, depth), "{terms:?}");
+        }
+    }
+
+    /// The rule of `sum_order`'s doc spelled out the plain way, as it was first written:
+    /// sort the partial sums by when they are ready (then by index) and add the first two.
+    fn sorted_each_time(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
+        // (cycles, index, depth, negative, operands ready)
+        let mut ready: Vec<(u32, usize, u32, bool, Option<u32>)> = terms
+            .iter()
+            .zip(0..)
+            .map(|(t, i)| {
+                let cycles = 3 * t.depth;
+                (
+                    cycles,
+                    i,
+                    t.depth,
+                    t.negative,
+                    t.fusable.then(|| cycles.saturating_sub(3)),
+                )
+            })
+            .collect();
+        let mut additions = Vec::new();
+        while ready.len() > 1 {
+            ready.sort_by_key(|p| (p.0, p.1));
+            let (x, y) = (ready.remove(0), ready.remove(0));
+            let (a, b) = match (x.4, y.4) {
+                (Some(_), Some(_)) if x.3 != y.3 => {
+                    if x.3 {
+                        (y, x)
+                    } else {
+                        (x, y)
+                    }
+                }
+                (Some(i), Some(j)) if i > j => (y, x),
+                (Some(_), None) => (y, x),
+                _ => (x, y),
+            };
+            let fused = b.4.is_some();
+            let cycles = if fused {
+                a.0.max(b.4.unwrap_or(b.0)) + 4
+            } else {
+                a.0.max(b.0) + 3
+            };
+            additions.push(add(a.1, b.1, fused));
+            let index = terms.len() + additions.len() - 1;
+            ready.push((cycles, index, 1 + a.2.max(b.2), a.3 && b.3, None));
+        }
+        (additions, ready.first().map_or(0, |p| p.2))
+    }
+
+    /// The scan for the two partial sums ready first adds in the same order as sorting them
+    /// at every step, on the stack and past it (more than `INLINE` terms), and `sum_depth` is
+    /// its depth.
+    #[test]
+    fn the_scan_adds_as_sorting_would() {
+        let mut rng = dynamics_test_support::Rng::new(42);
+        for case in 0..2000 {
+            let n = if case % 10 == 0 {
+                17 + rng.below(30)
+            } else {
+                rng.below(12)
+            };
+            // Few distinct depths, so that ties (broken by index) are common.
+            let terms: Vec<SumTerm> = (0..n)
+                .map(|_| {
+                    let depth = u32::try_from(rng.below(6)).expect("small");
+                    term(depth, rng.below(2) == 0, rng.below(3) == 0)
+                })
+                .collect();
+            let expected = sorted_each_time(&terms);
+            assert_eq!(sum_order(&terms), expected, "{terms:?}");
+            assert_eq!(super::sum_depth(&terms), expected.1, "{terms:?}");
         }
     }
 }

@@ -3,7 +3,7 @@
 //! partial sum it meets. One plan, two printers: the C computes what the Rust computes, in the
 //! same order, and so gets the same bits where both fuse alike.
 
-use super::sum_order::{sum_order, SumTerm};
+use super::sum_order::{sum_depth, sum_order, SumTerm};
 use crate::symbolic::{Graph, Node, NodeId};
 use std::cell::Cell;
 
@@ -38,6 +38,11 @@ pub(crate) trait Sums {
     /// Each node's depth ([`Sums::depth`]), `u32::MAX` until asked for.
     fn depths(&self) -> &[Cell<u32>];
 
+    /// Keeps node `id`'s depth once computed, in [`Sums::depths`].
+    fn remember_depth(&self, id: NodeId, depth: u32) {
+        self.depths()[id.index()].set(depth);
+    }
+
     /// `(a, x)` if `a + b` is `a − x`.
     fn as_sub(&self, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
         as_sub(self.graph(), a, b)
@@ -60,9 +65,9 @@ pub(crate) trait Sums {
 
     /// The terms of the sum `id` with their signs (`true`: subtracted), through the sums and
     /// negated sums written in place.
-    fn sum_terms(&self, id: NodeId, negative: bool, terms: &mut Vec<(NodeId, bool)>) {
+    fn sum_terms(&self, id: NodeId, negative: bool, terms: &mut impl Extend<(NodeId, bool)>) {
         let Node::Add(a, b) = self.graph().node(id) else {
-            terms.push((id, negative));
+            terms.extend([(id, negative)]);
             return;
         };
         // The operands as the printers read them: `a + (−x)` reads `a` and `x`.
@@ -77,7 +82,7 @@ pub(crate) trait Sums {
             };
             match self.graph().node(c) {
                 Node::Add(..) if self.in_place(c) => self.sum_terms(c, negative, terms),
-                _ => terms.push((c, negative)),
+                _ => terms.extend([(c, negative)]),
             }
         }
     }
@@ -111,8 +116,21 @@ pub(crate) trait Sums {
         }
         let d = match self.graph().node(id) {
             Node::Add(..) => {
-                let (_, weighed) = self.weighed_terms(id);
-                sum_order(&weighed).1
+                // On the stack: every sum of every function asks for its depth.
+                let mut terms = Inline::new((id, false));
+                self.sum_terms(id, false, &mut terms);
+                let weigh = |&(t, negative): &(NodeId, bool)| SumTerm {
+                    depth: self.depth(t),
+                    negative,
+                    fusable: self.fusable(t),
+                };
+                let mut weighed = Inline::new(SumTerm {
+                    depth: 0,
+                    negative: false,
+                    fusable: false,
+                });
+                weighed.extend(terms.as_slice().iter().map(weigh));
+                sum_depth(weighed.as_slice())
             }
             Node::Mul(a, b) => 1 + self.depth(a).max(self.depth(b)),
             Node::Recip(a) | Node::Sin(a) | Node::Cos(a) | Node::Sign(a) | Node::Tanh(a) => {
@@ -121,7 +139,7 @@ pub(crate) trait Sums {
             Node::Neg(a) => self.depth(a),
             Node::Const(_) | Node::Var(_) => 0,
         };
-        self.depths()[id.index()].set(d);
+        self.remember_depth(id, d);
         d
     }
 
@@ -173,11 +191,72 @@ pub(crate) trait Sums {
     }
 }
 
+/// A short list kept on the stack, spilled to the heap past its capacity.
+struct Inline<T: Copy> {
+    items: [T; 8],
+    len: usize,
+    spilled: Vec<T>,
+}
+
+impl<T: Copy> Inline<T> {
+    /// An empty list, its slots filled with `fill` (never read).
+    fn new(fill: T) -> Inline<T> {
+        Inline {
+            items: [fill; 8],
+            len: 0,
+            spilled: Vec::new(),
+        }
+    }
+
+    fn as_slice(&self) -> &[T] {
+        if self.spilled.is_empty() {
+            &self.items[..self.len]
+        } else {
+            &self.spilled
+        }
+    }
+}
+
+impl<T: Copy> Extend<T> for Inline<T> {
+    fn extend<I: IntoIterator<Item = T>>(&mut self, items: I) {
+        for item in items {
+            if self.spilled.is_empty() && self.len < self.items.len() {
+                self.items[self.len] = item;
+                self.len += 1;
+            } else {
+                if self.spilled.is_empty() {
+                    self.spilled.extend_from_slice(&self.items);
+                }
+                self.spilled.push(item);
+            }
+        }
+    }
+}
+
 /// `(a, x)` if `a + b` is `a − x`.
 pub(crate) fn as_sub(graph: &Graph, a: NodeId, b: NodeId) -> Option<(NodeId, NodeId)> {
     match (graph.node(a), graph.node(b)) {
         (_, Node::Neg(x)) => Some((a, x)),
         (Node::Neg(x), _) => Some((b, x)),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Inline;
+
+    /// A list longer than its stack slots keeps every item, in order.
+    #[test]
+    fn an_inline_list_spills_in_order() {
+        for n in [0, 1, 7, 8, 9, 30] {
+            let mut list = Inline::new(0_usize);
+            list.extend(0..n);
+            assert_eq!(
+                list.as_slice(),
+                (0..n).collect::<Vec<_>>().as_slice(),
+                "{n} items"
+            );
+        }
     }
 }

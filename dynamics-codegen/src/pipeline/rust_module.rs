@@ -2,7 +2,7 @@
 //! generate for it, as tokens (what `dynamics emit` pretty-prints into a standalone file).
 
 use super::{Diagnostic, Loaded};
-use crate::emit::{generate, simplified_doc};
+use crate::emit::{generate_uncounted, simplified_doc};
 use crate::identifiers::{one_line, rust_field, rust_type};
 use crate::method::FamilySet;
 use crate::model::Simplification;
@@ -37,7 +37,7 @@ impl Loaded {
             .map(|f| rust_field(f).map_err(|e| Diagnostic::of_file(&self.path, e)))
             .collect::<Result<Vec<_>, _>>()?;
         let fields = idents.iter().map(|i| quote!(self.#i)).collect();
-        let generated = generate(&eq, fields);
+        let generated = generate_uncounted(&eq, fields);
         let ty = syn::Ident::new(&rust_type(&self.robot.name), Span::call_site());
         let krate = quote!(::dynamics_runtime);
         let items = generated.items(&krate, &ty, &syn::Generics::default(), &|method| {

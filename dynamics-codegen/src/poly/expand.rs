@@ -95,25 +95,32 @@ impl<'a> Expander<'a> {
     }
 
     fn node(&mut self, node: Node) -> Option<Poly> {
-        let get = |x: NodeId| self.memo[x.index()].clone().flatten();
+        // The operands by reference: a polynomial cloned is every monomial allocated again.
+        let memo = &self.memo;
+        let get = |x: NodeId| memo[x.index()].as_ref().and_then(Option::as_ref);
+        let (work, max_work) = (&mut self.work, self.limits.max_work);
+        let mut charge = |cost: u64| {
+            *work = work.saturating_add(cost);
+            (*work <= max_work).then_some(())
+        };
         let p = match node {
             Node::Const(c) => Poly::constant(c),
             Node::Var(v) => Poly::sym(Sym::of(v, &self.eq.fields)?),
             Node::Add(a, b) => {
                 let (a, b) = (get(a)?, get(b)?);
-                self.charge((a.len() + b.len()) as u64)?;
-                a.add(&b)
+                charge((a.len() + b.len()) as u64)?;
+                a.add(b)
             }
             Node::Mul(a, b) => {
                 let (a, b) = (get(a)?, get(b)?);
-                self.charge((a.len() as u64).saturating_mul(b.len() as u64))?;
-                a.mul(&b)
+                charge((a.len() as u64).saturating_mul(b.len() as u64))?;
+                a.mul(b)
             }
             Node::Neg(a) => get(a)?.scale(Number::MINUS_ONE),
             Node::Sign(_) | Node::Tanh(_) => Poly::sym(Sym::of_friction(&self.eq.graph, node)?),
             // A mimic joint's `sin(k q_j + c)`: a symbol of its own.
             Node::Sin(a) | Node::Cos(a) => {
-                Poly::sym(Sym::mimic_trig(matches!(node, Node::Cos(_)), &get(a)?)?)
+                Poly::sym(Sym::mimic_trig(matches!(node, Node::Cos(_)), get(a)?)?)
             }
             Node::Recip(_) => return None,
         };
