@@ -1,4 +1,4 @@
-//! The crate's tests, one binary: its front ([`api`]), and each module's numerics, a module
+//! The crate's tests, one binary: its front (`api`), and each module's numerics, a module
 //! here per module of the library.
 //!
 //! They are integration tests rather than unit tests (`[lib] test = false` in the manifest):
@@ -6,23 +6,8 @@
 //! fiftieth of a second to run.
 
 mod api;
-mod excite {
-    mod design;
-    mod fourier;
-    mod limits;
-    mod search;
-}
-mod identify {
-    mod about_com;
-    mod base;
-    mod consistent;
-    mod decimate;
-    mod estimate;
-    mod filter;
-    mod householder;
-    mod model;
-    mod rank;
-}
+mod excite;
+mod identify;
 mod lanes;
 mod linear_algebra;
 mod regressor;
