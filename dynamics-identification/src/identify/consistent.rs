@@ -53,9 +53,9 @@ use clarabel::solver::{
 /// The regulariser's weight, relative to the mean diagonal of `MᵀM`.
 const REGULARISER: f64 = 1e-8;
 /// Eigenvalues of J above `−EIGEN_TOLERANCE max(1, |J|)` count as nonnegative.
-const EIGEN_TOLERANCE: f64 = 1e-11;
+pub const EIGEN_TOLERANCE: f64 = 1e-11;
 /// Rounds of cuts before giving up.
-const ROUNDS: usize = 200;
+pub const ROUNDS: usize = 200;
 
 /// What the consistent problem is posed with.
 pub struct Problem<'a> {
@@ -180,7 +180,9 @@ fn onto_bounds(mut x: Vec<f64>, problem: &Problem<'_>) -> Vec<f64> {
 /// The objective as a second-order cone: the rows of `[M x − z; √λ (x − π_0)]`, as `(A, b)`
 /// with the vector `b − A x`, scaled so that M's mean squared column norm is 1 (the scale
 /// does not move the minimiser). `λ = REGULARISER · tr(MᵀM) / s`.
-fn objective(m: &[Vec<f64>], z: &[f64], described: &[f64]) -> (Vec<Vec<f64>>, Vec<f64>) {
+#[must_use]
+#[doc(hidden)] // For the cuts' test, on exactly its inputs (a `Measured` rounds them).
+pub fn objective(m: &[Vec<f64>], z: &[f64], described: &[f64]) -> (Vec<Vec<f64>>, Vec<f64>) {
     let s = described.len();
     let trace: f64 = m.iter().flatten().map(|x| x * x).sum::<f64>() / s as f64;
     let scale = if trace > 0.0 { 1.0 / trace.sqrt() } else { 1.0 };
@@ -202,7 +204,11 @@ fn objective(m: &[Vec<f64>], z: &[f64], described: &[f64]) -> (Vec<Vec<f64>>, Ve
 /// The minimiser of `‖b − A x‖` (the objective's rows) subject to `cut · x ≥ 0` for every cut,
 /// as the conic program `min t` subject to `(t, b − A x) ∈ SOC`, `cut · x ≥ 0`: the squared
 /// residual is not formed, whose condition number would be the square of M's.
-fn solve(rows: &[Vec<f64>], b: &[f64], cuts: &[Vec<f64>]) -> Result<Vec<f64>, String> {
+///
+/// # Errors
+/// The solver's, or a status other than solved.
+#[doc(hidden)] // For the cuts' test, on exactly its inputs (a `Measured` rounds them).
+pub fn solve(rows: &[Vec<f64>], b: &[f64], cuts: &[Vec<f64>]) -> Result<Vec<f64>, String> {
     let s = rows.first().map_or(0, Vec::len);
     // Variables [x; t]; constraints `A [x; t] + slack = b`: the cuts as `−cut · x + slack = 0`,
     // slack ≥ 0; then `−t + slack_0 = 0` and the objective's rows, slack in the cone.
@@ -249,7 +255,9 @@ fn solve(rows: &[Vec<f64>], b: &[f64], cuts: &[Vec<f64>]) -> Result<Vec<f64>, St
 }
 
 /// The cut `vᵀ J_link(π) v ≥ 0`, as coefficients on all `s` standard parameters.
-fn cut(link: usize, s: usize, v: &[f64; 4]) -> Vec<f64> {
+#[must_use]
+#[doc(hidden)] // For the cuts' test, on exactly its inputs (a `Measured` rounds them).
+pub fn cut(link: usize, s: usize, v: &[f64; 4]) -> Vec<f64> {
     let mut row = vec![0.0; s];
     for k in 0..10 {
         let mut unit = [0.0; 10];
@@ -326,115 +334,5 @@ fn finish(
         residual,
         plain_is_consistent,
         rounds,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_pseudo_inertia_of_point_masses_is_their_second_moment() {
-        // Two point masses: J = Σ m_k [r_k; 1][r_k; 1]ᵀ, and the parameters from their
-        // definitions, with the products of inertia as −Σ m x y.
-        let points = [(2.0, [0.1, -0.2, 0.3]), (0.5, [-0.4, 0.05, 0.2])];
-        let mut pi = [0.0; 10];
-        let mut want = [[0.0; 4]; 4];
-        for (m, r) in points {
-            let [x, y, z] = r;
-            let moments = [
-                m,
-                m * x,
-                m * y,
-                m * z,
-                m * (y * y + z * z),
-                -m * x * y,
-                m * (x * x + z * z),
-                -m * x * z,
-                -m * y * z,
-                m * (x * x + y * y),
-            ];
-            pi.iter_mut().zip(moments).for_each(|(p, v)| *p += v);
-            let e = [x, y, z, 1.0];
-            for a in 0..4 {
-                for b in 0..4 {
-                    want[a][b] += m * e[a] * e[b];
-                }
-            }
-        }
-        let j = pseudo_inertia(&pi);
-        for a in 0..4 {
-            for b in 0..4 {
-                assert!((j[a][b] - want[a][b]).abs() < 1e-15, "{a} {b}: {j:?}");
-            }
-        }
-        // Two points span a line: two zero eigenvalues, two positive.
-        let (values, _) = eigen(j);
-        let mut sorted = values;
-        sorted.sort_by(f64::total_cmp);
-        assert!(
-            sorted[0].abs() < 1e-14 && sorted[1].abs() < 1e-14,
-            "{sorted:?}"
-        );
-        assert!(sorted[2] > 1e-3, "{sorted:?}");
-    }
-
-    #[test]
-    fn eigenvectors_diagonalise_a_symmetric_matrix() {
-        let a = [
-            [4.0, 1.0, -2.0, 0.5],
-            [1.0, 3.0, 0.0, 1.0],
-            [-2.0, 0.0, -1.0, 2.0],
-            [0.5, 1.0, 2.0, 0.1],
-        ];
-        let (values, vectors) = eigen(a);
-        for (value, v) in values.iter().zip(&vectors) {
-            for row in 0..4 {
-                let av: f64 = (0..4).map(|k| a[row][k] * v[k]).sum();
-                assert!((av - value * v[row]).abs() < 1e-12, "{values:?}");
-            }
-        }
-        let trace: f64 = values.iter().sum();
-        assert!((trace - 6.1).abs() < 1e-12);
-    }
-
-    /// A one-link problem whose unconstrained minimiser is a link with negative mass: the
-    /// consistent one has J ⪰ 0 and lies on the boundary.
-    #[test]
-    fn an_infeasible_minimiser_is_moved_onto_the_cone() {
-        // The objective ‖π − t‖² (M = 1) with t: mass −0.1, an inertia of a 1 kg body.
-        let t = [-0.1, 0.0, 0.0, 0.0, 0.1, 0.0, 0.1, 0.0, 0.0, 0.1];
-        let m: Vec<Vec<f64>> = (0..10)
-            .map(|i| (0..10).map(|k| f64::from(u8::from(i == k))).collect())
-            .collect();
-        let (q, c) = objective(&m, &t, &t);
-        let mut cuts: Vec<Vec<f64>> = (0..4)
-            .map(|e| {
-                let mut v = [0.0; 4];
-                v[e] = 1.0;
-                cut(0, 10, &v)
-            })
-            .collect();
-        let mut x = solve(&q, &c, &cuts).unwrap();
-        for _ in 0..ROUNDS {
-            let (values, vectors) = eigen(pseudo_inertia(&x));
-            let before = cuts.len();
-            for (value, v) in values.iter().zip(&vectors) {
-                if *value < -EIGEN_TOLERANCE {
-                    cuts.push(cut(0, 10, v));
-                }
-            }
-            if cuts.len() == before {
-                break;
-            }
-            x = solve(&q, &c, &cuts).unwrap();
-        }
-        assert!(smallest_eigenvalue(&x) >= -1e-9, "{x:?}");
-        // The nearest point has mass zero (J's last diagonal entry is the mass, decoupled from
-        // Σ when h = 0) and keeps the inertia, which is feasible.
-        assert!(x[0].abs() < 1e-8, "{x:?}");
-        for k in [4, 6, 9] {
-            assert!((x[k] - 0.1).abs() < 1e-8, "{x:?}");
-        }
     }
 }

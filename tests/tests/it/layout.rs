@@ -79,6 +79,7 @@ fn every_file_of_a_test_binary_is_a_module_of_it() {
     for krate in [
         "dynamics-cli",
         "dynamics-codegen",
+        "dynamics-identification",
         "dynamics-reference",
         "dynamics-runtime",
     ] {

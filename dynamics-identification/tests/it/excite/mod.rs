@@ -1,0 +1,6 @@
+//! The exciting motion's steps (`dynamics_identification::excite`).
+
+mod design;
+mod fourier;
+mod limits;
+mod search;
