@@ -32,8 +32,10 @@ pub fn floating_items(
     krate: &TokenStream,
     input: &syn::DeriveInput,
 ) -> TokenStream {
+    // The derive reads no operation counts (`dynamics stats` does not know floating robots).
     let ctx = Context {
         parameters: local(PARAMETERS),
+        counted: false,
     };
     let outputs: Vec<Output> = METHODS
         .iter()
@@ -45,13 +47,13 @@ pub fn floating_items(
     let emission = emit(eq, &outputs, &ctx);
     let methods = METHODS
         .iter()
-        .zip(&emission.bodies)
+        .zip(emission.bodies)
         .map(|(&(method, _), b)| MethodCode {
             method,
             name: method.name(),
-            body: b.tokens.clone(),
+            body: b.tokens,
             ops: b.ops,
-            zeros: b.zeros.clone(),
+            zeros: b.zeros,
             lanes: b.lanes,
         })
         .collect();
