@@ -48,9 +48,8 @@ pub struct Generated {
     pub tip_names: Option<Vec<String>>,
     /// How to read each struct field of the robot, in the order of [`Equations::fields`].
     pub fields: Vec<TokenStream>,
-    /// The shared functions of each [`Family`] of methods, in the order of [`Family::ALL`]:
-    /// each family is emitted apart, so code that calls only the dynamics does not inline the
-    /// kinematics, nor the reverse.
+    /// Each [`Family`]'s shared functions, in [`Family::ALL`]'s order: emitted apart, so code
+    /// that calls only the dynamics does not inline the kinematics, nor the reverse.
     pub modules: Vec<Module>,
     /// The methods, in the trait's order.
     pub methods: Vec<MethodCode>,
