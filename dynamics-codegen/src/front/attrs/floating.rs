@@ -3,7 +3,6 @@
 //! fixed to the ground.
 
 use super::entry::{string, Entry};
-use super::parse::Attrs;
 use proc_macro2::Span;
 use syn::parse::ParseStream;
 use syn::{parenthesized, Ident, LitStr, Token};
@@ -18,16 +17,16 @@ pub(in crate::front) struct FloatingAttr {
 const USAGE: &str = "`base = \"base_link\"` (the link fixed to the ground), `base = floating` \
                      (the root link flies free) or `base = floating(\"trunk\")`";
 
-/// The value of `base`: a link's name, or a floating base (whose link, if named, is also the
-/// base of the URDF's tree).
+/// The value of `base` into the attributes' `base` and `floating`: a link's name, or a floating
+/// base (whose link, if named, is also the base of the URDF's tree).
 pub(super) fn parse_base(
     input: ParseStream,
     entry: &mut Entry,
-    attrs: &mut Attrs,
+    (base, floating): (&mut Option<LitStr>, &mut Option<FloatingAttr>),
 ) -> syn::Result<()> {
     if !input.peek(Ident) {
         let link = string(input, USAGE)?;
-        entry.keep_first(&mut attrs.base, link);
+        entry.keep_first(base, link);
         return Ok(());
     }
     let ident: Ident = input.parse()?;
@@ -50,13 +49,13 @@ pub(super) fn parse_base(
         None
     };
     if let Some(link) = &link {
-        entry.keep_first(&mut attrs.base, link.clone());
-    } else if attrs.base.is_some() || attrs.floating.is_some() {
+        entry.keep_first(base, link.clone());
+    } else if base.is_some() || floating.is_some() {
         // The same error as any repeated key.
         entry.keep_first(&mut Some(()), ());
         return Ok(());
     }
     let span = ident.span();
-    attrs.floating.get_or_insert(FloatingAttr { span, link });
+    floating.get_or_insert(FloatingAttr { span, link });
     Ok(())
 }

@@ -278,7 +278,7 @@ fn parse_attr(
             &mut attrs.urdf,
             string(input, "`urdf = \"robots/arm.urdf\"`")?,
         ),
-        Key::Base => parse_base(input, &mut entry, attrs)?,
+        Key::Base => parse_base(input, &mut entry, (&mut attrs.base, &mut attrs.floating))?,
         Key::Tip => entry.keep_first(&mut attrs.tip, string(input, "`tip = \"tool0\"`")?),
         Key::Tips => entry.keep_first(
             &mut attrs.tips,
