@@ -60,11 +60,12 @@ struct Search {
 impl Search {
     /// The first fold in the terms' order.
     fn next(&mut self, terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
-        while let Some(m) = self.again.first().cloned() {
+        while let Some(m) = self.again.pop_first() {
             if !self.searched.as_ref().is_some_and(|s| m <= *s) {
+                // Past the furthest searched: the search below reaches it in its turn.
+                self.again.insert(m);
                 break;
             }
-            self.again.pop_first();
             if let Some(fold) = terms
                 .get_key_value(&m)
                 .and_then(|(m, &c)| fold_of(terms, m, c))
@@ -76,11 +77,17 @@ impl Search {
             Some(s) => terms.range((Bound::Excluded(s.clone()), Bound::Unbounded)),
             None => terms.range(..),
         };
+        // The furthest term searched, cloned once a search rather than once a term.
+        let mut last = None;
         for (m, &c) in range {
-            self.searched = Some(m.clone());
+            last = Some(m);
             if let Some(fold) = fold_of(terms, m, c) {
+                self.searched = Some(m.clone());
                 return Some(fold);
             }
+        }
+        if let Some(m) = last {
+            self.searched = Some(m.clone());
         }
         None
     }
