@@ -15,7 +15,8 @@
 //!   share `arm_a`): the guard carries a hash of the header, which refuses to compile beside
 //!   another header with the same prefix (`emit_c`).
 
-use proc_macro2::{Ident, Span};
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::quote;
 
 /// Rust's keywords of every edition: strict, reserved for later use (`abstract`, `yield`,
 /// 2018's `async`, `await`, `dyn`, `try`, 2024's `gen`). A field so named is written raw.
@@ -224,4 +225,17 @@ mod tests {
         assert_eq!(one_line("a\0b"), "a\\0b");
         assert_eq!(one_line("θ"), "θ");
     }
+}
+
+/// How the generated code reads each of `fields` (the struct fields the equations name):
+/// `self.field`.
+pub(crate) fn field_readers(fields: &[String]) -> Vec<TokenStream> {
+    fields
+        .iter()
+        .map(|f| match rust_field(f) {
+            Ok(ident) => quote!(self.#ident),
+            // Not expected: each name the values read is one of the struct's fields.
+            Err(message) => quote!(::core::compile_error!(#message)),
+        })
+        .collect()
 }

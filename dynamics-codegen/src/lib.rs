@@ -93,15 +93,7 @@ fn expand(input: &syn::DeriveInput, parsed: &front::Input) -> TokenStream {
     let (eq, simplified) =
         pipeline::equations(&parsed.robot, parsed.families, parsed.simplify.as_ref());
     let krate = emit::runtime_path(parsed.krate.as_ref());
-    let fields = eq
-        .fields
-        .iter()
-        .map(|f| match identifiers::rust_field(f) {
-            Ok(ident) => quote!(self.#ident),
-            // Not expected: each name the values read is one of the struct's fields.
-            Err(message) => quote!(::core::compile_error!(#message)),
-        })
-        .collect();
+    let fields = identifiers::field_readers(&eq.fields);
     let generated = emit::generate_uncounted(&eq, fields);
     let readable = emit::readable(input, &eq, &parsed.robot);
     let items = generated.items(&krate, &input.ident, &input.generics, &|method| {

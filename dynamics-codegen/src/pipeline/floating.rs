@@ -16,15 +16,7 @@ pub(crate) fn expand_floating(
 ) -> TokenStream {
     let eq = trace::derive_floating(&parsed.robot, flyer);
     let krate = emit::runtime_path(parsed.krate.as_ref());
-    let fields: Vec<TokenStream> = eq
-        .fields
-        .iter()
-        .map(|f| match identifiers::rust_field(f) {
-            Ok(ident) => quote!(self.#ident),
-            // Not expected: each name the values read is one of the struct's fields.
-            Err(message) => quote!(::core::compile_error!(#message)),
-        })
-        .collect();
+    let fields = identifiers::field_readers(&eq.fields);
     let items = emit::floating_items(&eq, &fields, &krate, input);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
