@@ -164,6 +164,19 @@ pub fn one_line(text: &str) -> String {
     out
 }
 
+/// How the generated code reads each of `fields` (the struct fields the equations name):
+/// `self.field`.
+pub(crate) fn field_readers(fields: &[String]) -> Vec<TokenStream> {
+    fields
+        .iter()
+        .map(|f| match rust_field(f) {
+            Ok(ident) => quote!(self.#ident),
+            // Not expected: each name the values read is one of the struct's fields.
+            Err(message) => quote!(::core::compile_error!(#message)),
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -225,17 +238,4 @@ mod tests {
         assert_eq!(one_line("a\0b"), "a\\0b");
         assert_eq!(one_line("θ"), "θ");
     }
-}
-
-/// How the generated code reads each of `fields` (the struct fields the equations name):
-/// `self.field`.
-pub(crate) fn field_readers(fields: &[String]) -> Vec<TokenStream> {
-    fields
-        .iter()
-        .map(|f| match rust_field(f) {
-            Ok(ident) => quote!(self.#ident),
-            // Not expected: each name the values read is one of the struct's fields.
-            Err(message) => quote!(::core::compile_error!(#message)),
-        })
-        .collect()
 }
