@@ -7,9 +7,11 @@ For each robot of ROBOTS this script
 1. loads the URDF with `pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())` (gravity
    [0, 0, -9.81] in the world frame): the root link, and every link fixed to it, is the
    floating body;
-2. checks that Pinocchio's joints after the free flyer are in the order the project's front end
-   takes them (depth first from the root link, a link's child joints in the file's order), so
-   that the data need no reordering;
+2. takes Pinocchio's joints after the free flyer to the order the project's front end takes
+   them (depth first from the root link, a link's child joints in the file's order; Pinocchio's
+   URDF parser orders a link's child joints by name, so ANYmal's LF, RF, LH, RH legs are LF, LH,
+   RF, RH there): every joint's q, v, a and row and column of M, h, tau, g are written in the
+   front end's order (`to_file_order`), the same numbers;
 3. draws SAMPLES states: the base position uniform in [-1, 1]^3, the base orientation a uniform
    random unit quaternion (a normalised Gaussian 4-vector, stored [qx, qy, qz, qw] as Pinocchio's
    q), each joint in [-pi, pi], v and a uniform in [-2, 2] (the base's twist in its own frame,
@@ -35,7 +37,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 
 # name: URDF from the repository root
-ROBOTS = {"solo12": "robots/urdf/floating/solo12.urdf"}
+ROBOTS = {
+    "solo12": "robots/urdf/floating/solo12.urdf",
+    "anymal_b": "robots/urdf/floating/anymal_b.urdf",
+    "g1_29dof": "robots/urdf/floating/g1_29dof.urdf",
+}
 SEED = 20261129
 SAMPLES = 12
 TOLERANCE = 1e-12
@@ -63,6 +69,17 @@ def file_order(path):
     return roots[0], order
 
 
+def to_file_order(model, names, order, q, v, a, m, h, tau, g):
+    """Pinocchio's joint coordinates (its `names` order) permuted into the file's `order`; the
+    free flyer's 7 (q) and 6 (v) first coordinates stay."""
+    assert sorted(names) == sorted(order), (names, order)
+    pick = [names.index(j) for j in order]
+    iq = list(range(7)) + [7 + k for k in pick]
+    iv = list(range(6)) + [6 + k for k in pick]
+    assert model.nq == len(iq) and model.nv == len(iv)
+    return q[iq], v[iv], a[iv], m[np.ix_(iv, iv)], h[iv], tau[iv], g[iv]
+
+
 def scaled(a, b):
     """max |a - b| / max(1, max |b|)."""
     a, b = np.asarray(a), np.asarray(b)
@@ -87,7 +104,6 @@ def make(name, urdf):
     data = model.createData()
     root, order = file_order(path)
     names = list(model.names)[2:]
-    assert names == order, (names, order)
     assert model.joints[1].shortname() == "JointModelFreeFlyer"
     rng = np.random.default_rng(SEED)
     samples = []
@@ -100,6 +116,7 @@ def make(name, urdf):
         g = pin.computeGeneralizedGravity(model, data, q).copy()
         assert scaled(m @ a + h, tau) < TOLERANCE
         assert scaled(pin.rnea(model, data, q, np.zeros(model.nv), np.zeros(model.nv)), g) < TOLERANCE
+        q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
         samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
                         "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()})
     with open(path, "rb") as f:

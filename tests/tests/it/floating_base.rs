@@ -1,6 +1,6 @@
-//! A robot on a free-flying base, derived from its URDF with `base = floating`: Solo 12 (four
-//! legs of three joints on a flying trunk) against Pinocchio 4.1's free flyer
-//! (`tests/data/floating/solo12.json`, by `make.py`): M, h, τ and g at random states with random
+//! Robots on a free-flying base, derived from their URDFs with `base = floating`: the quadrupeds
+//! Solo 12 and ANYmal B and the humanoid Unitree G1 against Pinocchio 4.1's free flyer
+//! (`tests/data/floating/*.json`, by `make.py`): M, h, τ and g at random states with random
 //! unit quaternions, to 1e-12 scaled by the largest element of each.
 
 use dynamics_reference::scaled_error;
@@ -21,6 +21,16 @@ struct Solo12;
 )]
 struct Solo12Named;
 
+/// ANYmal B (`anymal_b_simple_description`), a quadruped of 12 joints.
+#[derive(dynamics_runtime::Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/anymal_b.urdf", base = floating)]
+struct AnymalB;
+
+/// The Unitree G1 humanoid (`g1_description`, 29 joints, no hands).
+#[derive(dynamics_runtime::Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
+struct G1;
+
 fn numbers(x: &serde_json::Value) -> Vec<f64> {
     x.as_array()
         .expect("a list")
@@ -33,60 +43,94 @@ fn array<const N: usize>(x: &serde_json::Value) -> [f64; N] {
     numbers(x).try_into().expect("the length")
 }
 
-#[test]
-fn solo12_against_pinocchio() {
-    assert_eq!((Solo12::NQ, Solo12::NV), (19, 18));
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/floating/solo12.json");
-    let text = std::fs::read_to_string(path).expect("the data");
-    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+/// The reference data of `robot` (`tests/data/floating/ROBOT.json`).
+fn reference(robot: &str) -> serde_json::Value {
+    let path = format!("{}/data/floating/{robot}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("the data");
+    serde_json::from_str(&text).expect("JSON")
+}
+
+/// M, h, τ and g of `robot` at every sample of its data file `name`, to [`TOLERANCE`].
+fn check_against_pinocchio<R: FloatingDynamics<Q, V>, const Q: usize, const V: usize>(
+    robot: &R,
+    name: &str,
+) {
+    let data = reference(name);
+    assert_eq!(
+        (data["nq"].as_u64(), data["nv"].as_u64()),
+        (Some(Q as u64), Some(V as u64))
+    );
     let samples = data["samples"].as_array().expect("samples");
     assert!(samples.len() >= 10);
     for (k, s) in samples.iter().enumerate() {
         let (q, v, a) = (
-            array::<19>(&s["q"]),
-            array::<18>(&s["v"]),
-            array::<18>(&s["a"]),
+            array::<Q>(&s["q"]),
+            array::<V>(&s["v"]),
+            array::<V>(&s["a"]),
         );
-        let m: Vec<f64> = Solo12.mass_matrix(&q).iter().flatten().copied().collect();
+        let m: Vec<f64> = robot.mass_matrix(&q).iter().flatten().copied().collect();
         let expected_m: Vec<f64> = s["M"]
             .as_array()
             .expect("rows")
             .iter()
             .flat_map(numbers)
             .collect();
-        let named: Vec<f64> = Solo12Named
-            .mass_matrix(&q)
-            .iter()
-            .flatten()
-            .copied()
-            .collect();
-        assert_eq!(m, named, "sample {k}: the root link named is the root link");
         for (what, got, expected) in [
             ("M", m, expected_m),
-            ("h", Solo12.bias_forces(&q, &v).to_vec(), numbers(&s["h"])),
+            ("h", robot.bias_forces(&q, &v).to_vec(), numbers(&s["h"])),
             (
                 "tau",
-                Solo12.inverse_dynamics(&q, &v, &a).to_vec(),
+                robot.inverse_dynamics(&q, &v, &a).to_vec(),
                 numbers(&s["tau"]),
             ),
             (
                 "g",
-                Solo12.generalized_gravity(&q).to_vec(),
+                robot.generalized_gravity(&q).to_vec(),
                 numbers(&s["g"]),
             ),
         ] {
             let error = scaled_error(&got, &expected);
-            assert!(error < TOLERANCE, "sample {k}: {what} off by {error:e}");
+            assert!(
+                error < TOLERANCE,
+                "{name} sample {k}: {what} off by {error:e}"
+            );
         }
     }
+}
+
+#[test]
+fn solo12_against_pinocchio() {
+    assert_eq!((Solo12::NQ, Solo12::NV), (19, 18));
+    check_against_pinocchio(&Solo12, "solo12");
+    for s in reference("solo12")["samples"].as_array().expect("samples") {
+        let q = array::<19>(&s["q"]);
+        assert_eq!(
+            Solo12.mass_matrix(&q),
+            Solo12Named.mass_matrix(&q),
+            "the root link named is the root link"
+        );
+    }
+}
+
+/// ANYmal B: its legs are LF, RF, LH, RH in the file (Pinocchio's parser orders them by name;
+/// the data are in the file's order), the trunk carries ten fixed links.
+#[test]
+fn anymal_b_against_pinocchio() {
+    assert_eq!((AnymalB::NQ, AnymalB::NV), (19, 18));
+    check_against_pinocchio(&AnymalB, "anymal_b");
+}
+
+/// The Unitree G1 humanoid, 29 joints: two legs of six, a waist of three, two arms of seven.
+#[test]
+fn g1_against_pinocchio() {
+    assert_eq!((G1::NQ, G1::NV), (36, 35));
+    check_against_pinocchio(&G1, "g1_29dof");
 }
 
 /// In `f32` too, at the precision of `f32`.
 #[test]
 fn solo12_in_f32() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/floating/solo12.json");
-    let text = std::fs::read_to_string(path).expect("the data");
-    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let data = reference("solo12");
     let s = &data["samples"][3];
     let (q, v, a) = (
         array::<19>(&s["q"]),
