@@ -5,7 +5,8 @@
 // Each argument is a reference data file, of tests/data/reference/data/, tests/data/panda/,
 // tests/data/urdf/ (format in tests/data/reference/README.md) or tests/data/trees/ (a robot that
 // branches, its joints' "parents" given: no hand frame, so no fk, J, JtF, and no Y, YB; the
-// other functions as below). For each file the program
+// other functions as below), or tests/data/floating/ (a robot on a free-flying base: tau, M, h
+// and g alone, floating.hpp). For each other file the program
 //   1. builds a Pinocchio model from the file's "description" exactly as the reference data were
 //      built (one JointModelRZ / JointModelPZ per D-H joint, placements from the D-H pre/post
 //      transforms, link inertias mapped with post_i.act(...), armature = actuator inertias,
@@ -855,6 +856,9 @@ static std::vector<Eigen::Index> base_columns(
   return columns;
 }
 
+// The robots on a free-flying base: run_floating.
+#include "floating.hpp"
+
 int main(int argc, char ** argv)
 {
   int first = 1;
@@ -911,6 +915,12 @@ int main(int argc, char ** argv)
     {
       file = json::parse_file(path);
       robot = file["robot"].string();
+      // A robot on a free-flying base (tests/data/floating/): its own checks and rows.
+      if (file.has("floating_body"))
+      {
+        run_floating(robot, file, generated.get(), checksum);
+        continue;
+      }
       tree = file.has("parents");
       SE3 placement = SE3::Identity();
       if (tree)

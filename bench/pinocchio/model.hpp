@@ -411,7 +411,9 @@ static Model build_model_from_pinocchio(const json::Value & record)
     const auto parent = static_cast<pinocchio::JointIndex>(j["parent"].number());
     const std::string type = j["type"].string(), name = j["name"].string();
     pinocchio::JointIndex jid;
-    if (type == "JointModelRX")
+    if (type == "JointModelFreeFlyer")
+      jid = model.addJoint(parent, pinocchio::JointModelFreeFlyer(), placement, name);
+    else if (type == "JointModelRX")
       jid = model.addJoint(parent, pinocchio::JointModelRX(), placement, name);
     else if (type == "JointModelRY")
       jid = model.addJoint(parent, pinocchio::JointModelRY(), placement, name);

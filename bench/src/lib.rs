@@ -260,7 +260,9 @@ pub fn book(robot: &str) -> dynamics_reference::Robot {
 
 pub use dynamics_reference::scaled_error;
 
+mod floating;
 mod trees;
+pub use floating::{floating_samples, AnymalB, FloatingSample, Solo12, FLOATING, G1};
 pub use trees::{AllegroHand, BaxterFreeFingers};
 
 /// The robots with simplified models (`simplify(...)` in their derives).

@@ -16,15 +16,18 @@
 //! their proven bounds ([`dynamics_bench_simplified_bounds`]) and envelope (`simplified`).
 
 mod batch;
+mod floating;
 mod simplified;
 mod trees;
 
 pub use batch::{dynamics_bench_horizon, HORIZON};
 use core::ffi::{c_char, CStr};
 use dynamics_bench::{
-    AllegroHand, BaxterFreeFingers, Panda, Puma560, Random5, Stanford, Ur5, Ur5Dh, Ur5Urdf,
+    AllegroHand, AnymalB, BaxterFreeFingers, Panda, Puma560, Random5, Solo12, Stanford, Ur5, Ur5Dh,
+    Ur5Urdf, G1,
 };
 use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
+use floating::floating;
 pub use simplified::{dynamics_bench_simplified_bounds, dynamics_bench_simplified_envelope};
 use trees::tree;
 
@@ -49,7 +52,10 @@ impl<R, const N: usize, const B: usize> Timed<N, B> for R where
 /// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
 /// `dqdd` the joint torques `tau`. `M` is `mass_matrix_into`: on a tree it leaves the blocks
 /// between the branches as `out` has them, so its caller keeps a matrix for it, zeroed once (as
-/// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into.
+/// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into. A robot
+/// on a free-flying base has `tau`, `M`, `h` and `g` alone: `q` holds its `NQ = n + 7` values
+/// (`[x, y, z, qx, qy, qz, qw, joints]`), the other inputs and outputs `NV = n + 6` where n is
+/// written above (`floating`).
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// The `N` values at `p`, by reference as a caller's array is passed: a copy onto the stack,
@@ -280,7 +286,8 @@ fn entry<R: Timed<N, B>, const N: usize, const B: usize>(_: &R) -> Robot {
 }
 
 /// The robot named `name` (`puma560`, `stanford`, `ur5`, `random5`, `panda`, `ur5_dh`,
-/// `ur5_urdf`, or the trees `baxter_no_mimic` and `allegro_right_hand`).
+/// `ur5_urdf`, the trees `baxter_no_mimic` and `allegro_right_hand`, or on a free-flying base
+/// `solo12`, `anymal_b` and `g1_29dof`).
 ///
 /// # Safety
 /// `name` is null or a NUL-terminated string.
@@ -299,6 +306,9 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"ur5_urdf" => entry(&Ur5Urdf),
         b"baxter_no_mimic" => tree(&BaxterFreeFingers),
         b"allegro_right_hand" => tree(&AllegroHand),
+        b"solo12" => floating(&Solo12),
+        b"anymal_b" => floating(&AnymalB),
+        b"g1_29dof" => floating(&G1),
         _ => return None,
     })
 }
@@ -325,8 +335,8 @@ pub unsafe extern "C" fn dynamics_bench_function(
     get(function.to_bytes()).or_else(|| simplified::get(robot.to_bytes(), function.to_bytes()))
 }
 
-/// The number of joints of `robot`, 0 for an unknown name, for the caller to check against
-/// its model.
+/// The number of joints of `robot` (of a robot on a free-flying base, its `NV`: the joints and
+/// the base's six), 0 for an unknown name, for the caller to check against its model.
 ///
 /// # Safety
 /// `robot` is null or a NUL-terminated string.

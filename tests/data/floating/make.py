@@ -17,7 +17,11 @@ For each robot of ROBOTS this script
    q), each joint in [-pi, pi], v and a uniform in [-2, 2] (the base's twist in its own frame,
    then the joint rates, as Pinocchio's v); sample #0 is the base at rest, upright, joints at 0;
 4. writes M (`crba`, its upper triangle mirrored), h (`nonLinearEffects`), tau (`rnea`) and
-   g (`computeGeneralizedGravity`), and checks tau = M a + h and g = rnea(q, 0, 0) to 1e-12.
+   g (`computeGeneralizedGravity`), and checks tau = M a + h and g = rnea(q, 0, 0) to 1e-12;
+5. writes the model as "pinocchio_model" (`pinocchio_model`), the free flyer first, then the
+   joints in the file's order, for `bench/pinocchio/bench.cpp` (header-only Pinocchio, no URDF
+   parser), and checks that the model rebuilt from it (`rebuild`, as bench.cpp builds it) gives
+   every sample's M and tau to 1e-12.
 
 Usage, from the repository root (Pinocchio 4.1, the `pin` wheel):
 
@@ -80,6 +84,48 @@ def to_file_order(model, names, order, q, v, a, m, h, tau, g):
     return q[iq], v[iv], a[iv], m[np.ix_(iv, iv)], h[iv], tau[iv], g[iv]
 
 
+def pinocchio_model(model, names, order):
+    """The model, joint by joint in the file's `order`, the free flyer first: each joint's type,
+    parent (an index into this list, 0 the universe), placement and body inertia."""
+    index = [1] + [2 + names.index(j) for j in order]
+    new = {old: k + 1 for k, old in enumerate(index)}
+    new[0] = 0
+    joints = []
+    for i in index:
+        joint, inertia, placement = model.joints[i], model.inertias[i], model.jointPlacements[i]
+        joints.append({"name": model.names[i], "parent": new[int(model.parents[i])], "type": joint.shortname(),
+                       "rotation": placement.rotation.tolist(), "translation": placement.translation.tolist(),
+                       "mass": inertia.mass, "lever": inertia.lever.tolist(), "inertia": inertia.inertia.tolist()})
+    assert all(j["type"] in ("JointModelFreeFlyer", "JointModelRX", "JointModelRY", "JointModelRZ")
+               for j in joints), [j["type"] for j in joints]
+    return {"gravity": [0.0, 0.0, -9.81], "joints": joints}
+
+
+def rebuild(record):
+    """The model of `pinocchio_model`, built again as bench/pinocchio/bench.cpp builds it."""
+    model = pin.Model()
+    model.gravity = pin.Motion(np.array(record["gravity"]), np.zeros(3))
+    kinds = {"JointModelFreeFlyer": pin.JointModelFreeFlyer, "JointModelRX": pin.JointModelRX,
+             "JointModelRY": pin.JointModelRY, "JointModelRZ": pin.JointModelRZ}
+    for j in record["joints"]:
+        kind = kinds[j["type"]]()
+        jid = model.addJoint(j["parent"], kind, pin.SE3(np.array(j["rotation"]), np.array(j["translation"])), j["name"])
+        model.appendBodyToJoint(jid, pin.Inertia(j["mass"], np.array(j["lever"]), np.array(j["inertia"])),
+                                pin.SE3.Identity())
+    return model
+
+
+def check_rebuilt(record, samples):
+    """The rebuilt model's M and tau at every sample (in the file's order) to 1e-12."""
+    model = rebuild(record)
+    data = model.createData()
+    for s in samples:
+        q, v, a = (np.array(s[k]) for k in ("q", "v", "a"))
+        m = pin.crba(model, data, q)
+        assert scaled(np.triu(m) + np.triu(m, 1).T, s["M"]) < TOLERANCE
+        assert scaled(pin.rnea(model, data, q, v, a), s["tau"]) < TOLERANCE
+
+
 def scaled(a, b):
     """max |a - b| / max(1, max |b|)."""
     a, b = np.asarray(a), np.asarray(b)
@@ -119,6 +165,8 @@ def make(name, urdf):
         q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
         samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
                         "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()})
+    record = pinocchio_model(model, names, order)
+    check_rebuilt(record, samples)
     with open(path, "rb") as f:
         sha = hashlib.sha256(f.read()).hexdigest()
     out = {
@@ -136,6 +184,7 @@ def make(name, urdf):
         "conventions": "q = [x, y, z, qx, qy, qz, qw, joints]; v, a = [linear, angular (base frame), joints]; "
                        "tau[0:6] = base wrench [force, moment] in the base frame",
         "seed": SEED,
+        "pinocchio_model": record,
         "samples": samples,
     }
     with open(os.path.join(HERE, name + ".json"), "w") as f:

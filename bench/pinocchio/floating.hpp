@@ -1,0 +1,99 @@
+// Robots on a free-flying base (tests/data/floating/, issue 43): Solo 12, ANYmal B, the Unitree
+// G1. Included by bench.cpp after its checks, timing protocol and `Generated`.
+//
+// A file with "floating_body" holds "pinocchio_model": the model Pinocchio's URDF loader built
+// with `JointModelFreeFlyer` as its root joint, the free flyer first, then the joints in the
+// generator's order (tests/data/floating/make.py), so that q = [x, y, z, qx, qy, qz, qw, joints]
+// (nq = n + 7) and v, a, tau = [base twist or wrench in the base frame, joints] (nv = n + 6) are
+// the same numbers on both sides. Its samples' quaternions are unit (normalised Gaussian 4-vectors),
+// checked here: Pinocchio reads a quaternion as given, and so does the generated code.
+//
+// `run_floating` checks Pinocchio's rnea, crba (mirrored), nonLinearEffects and
+// computeGeneralizedGravity against the file on every sample; then, where the generated library
+// has the robot (bench/ffi: `tau`, `M`, `h`, `g`, reading nq values from q and nv from v and a),
+// each generated function against Pinocchio's doubles on every sample (TOLERANCE); then times the
+// four, Pinocchio and the generated code in turn: `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`
+// (Pinocchio's column alone without the library). No C header or CasADi peer has them yet.
+
+// The largest departure of a sample's quaternion from unit length that is taken as unit.
+static const double UNIT_QUATERNION = 1e-12;
+
+static void run_floating(const std::string & robot, const json::Value & file, const Generated * generated, double & checksum)
+{
+  const Model model = build_model_from_pinocchio(file["pinocchio_model"]);
+  if (model.joints[1].shortname() != "JointModelFreeFlyer")
+    throw std::runtime_error(robot + ": the first joint of pinocchio_model is not a free flyer");
+  Data data(model);
+  const json::Value & samples = file["samples"];
+  std::vector<Eigen::VectorXd> qs, vs, as;
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const json::Value & x = samples[s];
+    qs.push_back(vecn(x["q"]));
+    vs.push_back(vecn(x["v"]));
+    as.push_back(vecn(x["a"]));
+    if (qs[s].size() != model.nq || vs[s].size() != model.nv || as[s].size() != model.nv)
+      throw std::runtime_error(robot + ": sample " + std::to_string(s) + " has the wrong lengths");
+    if (std::abs(qs[s].segment<4>(3).norm() - 1.0) > UNIT_QUATERNION)
+      throw std::runtime_error(robot + ": sample " + std::to_string(s) + "'s quaternion is not unit");
+    check(robot, "rnea", pinocchio::rnea(model, data, qs[s], vs[s], as[s]), vecn(x["tau"]), s);
+    check(robot, "crba", symmetric(pinocchio::crba(model, data, qs[s])), matn(x["M"]), s);
+    check(robot, "nonLinearEffects", pinocchio::nonLinearEffects(model, data, qs[s], vs[s]), vecn(x["h"]), s);
+    check(robot, "computeGeneralizedGravity", pinocchio::computeGeneralizedGravity(model, data, qs[s]), vecn(x["g"]), s);
+  }
+  const std::size_t ns = qs.size(), nv = static_cast<std::size_t>(model.nv);
+  const bool with_generated = generated && generated->dof(robot.c_str()) != 0;
+  if (generated && !with_generated)
+    std::fprintf(stderr, "%s: not in the generated library: Pinocchio alone\n", robot.c_str());
+  if (with_generated && generated->dof(robot.c_str()) != nv)
+    throw std::runtime_error(robot + ": the generated library's dof is not the model's nv");
+  // Room for M (nv × nv) and one more value, which no function may write.
+  std::vector<double> out(nv * nv + 1);
+  // Pinocchio's `function` (its output at sample k as a row-major vector, for the check, and one
+  // element of it, timed), beside the generated one where it is loaded.
+  auto time = [&](const char * function, auto && pin_output, auto && pin_timed) {
+    if (!with_generated)
+    {
+      std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin_timed, checksum));
+      std::fflush(stdout);
+      return;
+    }
+    const GeneratedFunction f = generated->get(robot, function);
+    for (std::size_t s = 0; s < ns; ++s)
+    {
+      const Eigen::VectorXd want = pin_output(s);
+      std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+      f(qs[s].data(), vs[s].data(), as[s].data(), out.data());
+      const auto size = static_cast<std::size_t>(want.size());
+      if (!std::isnan(out[size]))
+        throw std::runtime_error(robot + ": the generated " + function + " writes past its output");
+      const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXd>(out.data(), want.size());
+      check(robot, std::string(function) + " (generated)", got, want, s);
+    }
+    auto gen = [&](std::size_t k) {
+      f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+      return out[0];
+    };
+    const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin_timed, gen, checksum);
+    std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+    std::fflush(stdout);
+  };
+  // M row-major (symmetric, so its transpose's column-major storage is the same numbers).
+  auto mass = [&](std::size_t k) {
+    const Eigen::MatrixXd m = symmetric(pinocchio::crba(model, data, qs[k]));
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(m.data(), m.size()));
+  };
+  time(
+    "tau",
+    [&](std::size_t k) { return Eigen::VectorXd(pinocchio::rnea(model, data, qs[k], vs[k], as[k])); },
+    [&](std::size_t k) { return pinocchio::rnea(model, data, qs[k], vs[k], as[k])[0]; });
+  time("M", mass, [&](std::size_t k) { return pinocchio::crba(model, data, qs[k])(0, 0); });
+  time(
+    "h",
+    [&](std::size_t k) { return Eigen::VectorXd(pinocchio::nonLinearEffects(model, data, qs[k], vs[k])); },
+    [&](std::size_t k) { return pinocchio::nonLinearEffects(model, data, qs[k], vs[k])[0]; });
+  time(
+    "g",
+    [&](std::size_t k) { return Eigen::VectorXd(pinocchio::computeGeneralizedGravity(model, data, qs[k])); },
+    [&](std::size_t k) { return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0]; });
+}

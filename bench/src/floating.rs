@@ -1,0 +1,76 @@
+//! The robots on a free-flying base of `bench/run`'s floating rows (issue 43), derived from their
+//! URDFs with `base = floating` (`FloatingDynamics<NQ, NV>`: M, h, τ, g), and their reference
+//! samples (`tests/data/floating/`, Pinocchio 4.1's free flyer, joints in the generator's order).
+
+use dynamics_runtime::Dynamics;
+
+/// Solo 12: four legs of three joints on a flying trunk. NQ 19, NV 18.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
+pub struct Solo12;
+
+/// ANYmal B: four legs of three joints, the trunk carrying ten fixed links. NQ 19, NV 18.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/anymal_b.urdf", base = floating)]
+pub struct AnymalB;
+
+/// The Unitree G1 humanoid without hands: two legs of six joints, a waist of three, two arms of
+/// seven. NQ 36, NV 35.
+#[derive(Clone, Copy, Debug, Default, Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
+pub struct G1;
+
+/// The robots on a free-flying base, by their data files' names.
+pub const FLOATING: [&str; 3] = ["solo12", "anymal_b", "g1_29dof"];
+
+/// A reference sample of a robot on a free-flying base: `Q` configuration values, `V` velocity
+/// values, and Pinocchio's outputs.
+#[derive(Clone, Debug)]
+pub struct FloatingSample<const Q: usize, const V: usize> {
+    /// `[x, y, z, qx, qy, qz, qw, joints]`, the quaternion unit.
+    pub q: [f64; Q],
+    /// The base's twist in its own frame, then the joint rates.
+    pub v: [f64; V],
+    /// The time derivative of `v`.
+    pub a: [f64; V],
+    /// `rnea(q, v, a)`.
+    pub tau: [f64; V],
+    /// `crba(q)`, both triangles, row-major.
+    pub mass: Vec<f64>,
+    /// `nonLinearEffects(q, v)`.
+    pub bias: [f64; V],
+    /// `computeGeneralizedGravity(q)`.
+    pub gravity: [f64; V],
+}
+
+/// The reference samples of `robot` (one of [`FLOATING`]), from `tests/data/floating/`.
+///
+/// # Panics
+/// If the file is missing or malformed, or its lengths are not `Q` and `V`.
+#[must_use]
+pub fn floating_samples<const Q: usize, const V: usize>(robot: &str) -> Vec<FloatingSample<Q, V>> {
+    let text = super::read(&format!("floating/{robot}.json"));
+    let data: serde_json::Value =
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("data of {robot}: {e}"));
+    let samples = data["samples"]
+        .as_array()
+        .unwrap_or_else(|| panic!("data of {robot} has no samples"));
+    let rows = |m: &serde_json::Value| -> Vec<f64> {
+        let rows = m.as_array().expect("M's rows");
+        rows.iter()
+            .flat_map(|r| super::vector::<V>(r, "M"))
+            .collect()
+    };
+    samples
+        .iter()
+        .map(|s| FloatingSample {
+            q: super::vector(&s["q"], "q"),
+            v: super::vector(&s["v"], "v"),
+            a: super::vector(&s["a"], "a"),
+            tau: super::vector(&s["tau"], "tau"),
+            mass: rows(&s["M"]),
+            bias: super::vector(&s["h"], "h"),
+            gravity: super::vector(&s["g"], "g"),
+        })
+        .collect()
+}
