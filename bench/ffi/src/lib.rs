@@ -52,10 +52,8 @@ impl<R, const N: usize, const B: usize> Timed<N, B> for R where
 /// `[fx, fy, fz, mx, my, mz]` (six values) from the third input, in place of `qdd`, and `fd` and
 /// `dqdd` the joint torques `tau`. `M` is `mass_matrix_into`: on a tree it leaves the blocks
 /// between the branches as `out` has them, so its caller keeps a matrix for it, zeroed once (as
-/// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into. A robot
-/// on a free-flying base has `tau`, `M`, `h` and `g` alone: `q` holds its `NQ = n + 7` values
-/// (`[x, y, z, qx, qy, qz, qw, joints]`), the other inputs and outputs `NV = n + 6` where n is
-/// written above (`floating`).
+/// Pinocchio's `crba` keeps `data.M`), rather than an array other functions write into. On a
+/// free-flying base, `tau`, `M`, `h`, `g` alone, `q` of `NV + 1` values, n = `NV` elsewhere.
 pub type Function = unsafe extern "C" fn(*const f64, *const f64, *const f64, *mut f64);
 
 /// The `N` values at `p`, by reference as a caller's array is passed: a copy onto the stack,
