@@ -2,8 +2,8 @@
 //! `Tangent<T, K>` right after the node it is the tangent of, so that it is computed while the
 //! scalar values it reads are fresh, and the rows of a Jacobian read off the output lanes.
 //!
-//! `K` is n rounded up to a multiple of eight, whole AVX-512 registers of `f64` (the lanes past n
-//! stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
+//! `K` is n rounded up to a multiple of the plan's block (eight, whole AVX-512 registers of
+//! `f64`, or four, AVX registers; the lanes past n stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
 //! the unit vectors of a tangent one array literal, `Tangent([T::ZERO, c2, …])`.
 //!
 //! A lane is kept in its blocks of eight or four ([`Tangents::blocks`], [`Tangents::group`]),
