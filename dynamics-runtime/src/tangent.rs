@@ -207,7 +207,7 @@ mod tests {
         assert_eq!(row[..], x[..7]);
         // Kept in group 1 of three: the other groups' lanes are zero, and every step is the
         // scalar one in group 1 alone.
-        let wide: Tangent<T, 3> = Tangent([y, y, y]);
+        let wide: Tangent<[T; 8], 3> = Tangent([y, y, y]);
         let row: [T; 20] = a.row_at(1);
         assert!(row[..8].iter().chain(&row[16..]).all(|&v| v == T::ZERO));
         assert_eq!(row[8..16], x[..]);

@@ -1,5 +1,5 @@
 //! Tangents in lanes ([`crate::symbolic::Tangents`]): each planned lane written as a
-//! `Tangent<T, K>` right after the node it is the tangent of, so that it is computed while the
+//! `Tangent<[T; 8], K>` right after the node it is the tangent of, so that it is computed while the
 //! scalar values it reads are fresh, and the rows of a Jacobian read off the output lanes.
 //!
 //! `K` is n rounded up to a multiple of the plan's block (eight, whole AVX-512 registers of
