@@ -126,7 +126,7 @@ impl Tangents {
     /// Whether blocks of four cost less than of eight, where the CPU executes a 512-bit
     /// operation as two 256-bit halves (AMD's Zen 4): a lane within four directions takes one
     /// half, not two, and a lane of 5-8 two halves either way. Not where the plan's operations
-    /// in blocks of eight pass [`FETCH_BOUND_OPERATIONS`]: there the count of instructions
+    /// in blocks of eight pass `FETCH_BOUND_OPERATIONS` (1,000): there the count of instructions
     /// (each a few bytes of code to fetch) weighs more than their halves.
     #[must_use]
     pub fn prefer_groups_of_four(&self) -> bool {
