@@ -110,6 +110,39 @@ pub trait Real:
     fn oct_neg(x: [Self; 8]) -> [Self; 8] {
         x.map(|x| -x)
     }
+
+    /// `c x + acc` on four values, lane by lane as [`Real::mul_add`]: the step of tangents
+    /// kept in groups of four ([`crate::__private::Tangent`] of `[T; 4]` groups), where a
+    /// plan's lanes hold fewer directions than whole groups of eight would waste.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quad_mul_add(x: [Self; 4], c: Self, acc: [Self; 4]) -> [Self; 4] {
+        core::array::from_fn(|l| x[l].mul_add(c, acc[l]))
+    }
+    /// `c x` on four values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quad_scale(x: [Self; 4], c: Self) -> [Self; 4] {
+        x.map(|x| x * c)
+    }
+    /// `a + b` on four values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quad_add(a: [Self; 4], b: [Self; 4]) -> [Self; 4] {
+        core::array::from_fn(|l| a[l] + b[l])
+    }
+    /// `a − b` on four values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quad_sub(a: [Self; 4], b: [Self; 4]) -> [Self; 4] {
+        core::array::from_fn(|l| a[l] - b[l])
+    }
+    /// `−x` on four values.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn quad_neg(x: [Self; 4]) -> [Self; 4] {
+        x.map(|x| -x)
+    }
 }
 
 /// One number, `f32` or `f64`: a [`Real`] that is ordered and converts to `f64`, and the

@@ -105,6 +105,32 @@ impl_real!(
         fn oct_neg(x: [f64; 8]) -> [Self; 8] {
             crate::lanes::oct::neg(x)
         }
+        // And in four: one AVX register.
+        #[inline(always)]
+        fn quad_mul_add(x: [f64; 4], c: f64, acc: [f64; 4]) -> [Self; 4] {
+            crate::lanes::F64x4::from_array(x)
+                .mul_add(
+                    crate::lanes::F64x4::splat(c),
+                    crate::lanes::F64x4::from_array(acc),
+                )
+                .to_array()
+        }
+        #[inline(always)]
+        fn quad_scale(x: [f64; 4], c: f64) -> [Self; 4] {
+            (crate::lanes::F64x4::from_array(x) * crate::lanes::F64x4::splat(c)).to_array()
+        }
+        #[inline(always)]
+        fn quad_add(a: [f64; 4], b: [f64; 4]) -> [Self; 4] {
+            (crate::lanes::F64x4::from_array(a) + crate::lanes::F64x4::from_array(b)).to_array()
+        }
+        #[inline(always)]
+        fn quad_sub(a: [f64; 4], b: [f64; 4]) -> [Self; 4] {
+            (crate::lanes::F64x4::from_array(a) - crate::lanes::F64x4::from_array(b)).to_array()
+        }
+        #[inline(always)]
+        fn quad_neg(x: [f64; 4]) -> [Self; 4] {
+            (-crate::lanes::F64x4::from_array(x)).to_array()
+        }
     },
     crate::trig::sin_cos_f64,
     crate::trig::sin_cos_4_f64,

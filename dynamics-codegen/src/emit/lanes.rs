@@ -1,12 +1,13 @@
 //! Tangents in lanes ([`crate::symbolic::Tangents`]): each planned lane written as a
-//! `Tangent<T, K>` right after the node it is the tangent of, so that it is computed while the
+//! `Tangent<[T; 8], K>` right after the node it is the tangent of, so that it is computed while the
 //! scalar values it reads are fresh, and the rows of a Jacobian read off the output lanes.
 //!
-//! `K` is n rounded up to a multiple of eight, whole AVX-512 registers of `f64` (the lanes past n
-//! stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
+//! `K` is n rounded up to a multiple of the plan's block (eight, whole AVX-512 registers of
+//! `f64`, or four, AVX registers; the lanes past n stay zero). A term `± f₁ f₂ · x` is `x.mul_add(f₁ * f₂, acc)`, a term of no factor `acc ± x`,
 //! the unit vectors of a tangent one array literal, `Tangent([T::ZERO, c2, …])`.
 //!
-//! A lane is kept in its blocks of eight ([`Tangents::blocks`]), `Tangent<T, Q>` with `Q` its
+//! A lane is kept in its blocks of eight or four ([`Tangents::blocks`], [`Tangents::group`]),
+//! `Tangent<[T; 8], Q>` or `Tangent<[T; 4], Q>` with `Q` its
 //! own count: a term of fewer blocks is added into its place (`x.mul_add_into(f, acc, 1)`, 1
 //! the offset of its blocks in the lane's), and a row read off at its place (`dq7.row_at(1)`).
 //! A lane of every block is written as before.
@@ -15,7 +16,7 @@ use super::emitter::Emitter;
 use super::expr::let_statement;
 use super::names::{local, OUTPUT};
 use super::plan::Place;
-use crate::symbolic::{NodeId, Of, Tangents, Term, BLOCK};
+use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 use core::ops::Range;
 use proc_macro2::{Delimiter, Group, Ident, TokenStream, TokenTree};
@@ -198,7 +199,7 @@ impl Emitter<'_> {
             terms.iter().partition(|t| matches!(t.of, Of::Unit(_)));
         let mut acc: Option<TokenStream> = None;
         if !units.is_empty() {
-            let elements: Vec<TokenStream> = (own.start * BLOCK..own.end * BLOCK)
+            let elements: Vec<TokenStream> = (own.start * plan.group..own.end * plan.group)
                 .map(|j| {
                     let at: Vec<&&Term> = units
                         .iter()
@@ -207,7 +208,7 @@ impl Emitter<'_> {
                     self.unit_sum(&at)
                 })
                 .collect();
-            let groups = elements.chunks(8).map(|g| quote!([#(#g),*]));
+            let groups = elements.chunks(plan.group).map(|g| quote!([#(#g),*]));
             acc = Some(quote!(Tangent([#(#groups),*])));
         }
         // A term twice (the tangent of a square, `2 a ∂a`) is taken once, its factor times the count.
@@ -261,12 +262,9 @@ impl Emitter<'_> {
                 ]),
             });
         }
-        let groups = if whole {
-            width(plan.directions) / BLOCK
-        } else {
-            own.len()
-        };
-        acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; 8]; #groups])))
+        let groups = if whole { plan.block_count() } else { own.len() };
+        let group = unsuffixed(plan.group);
+        acc.unwrap_or_else(|| quote!(Tangent([[T::ZERO; #group]; #groups])))
     }
 
     /// One lane's value in a sum of unit vectors: the sum of the terms' signed products.

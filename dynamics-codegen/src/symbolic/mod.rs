@@ -15,5 +15,5 @@ pub use calculus::Wrt;
 pub use graph::{Graph, Stats};
 pub use node::{Node, NodeId, Var, WRENCH};
 pub use number::Number;
-pub use tangent::{Lane, Of, Tangents, Term, BLOCK};
+pub use tangent::{Lane, Of, Tangents, Term, BLOCK, QUARTER_BLOCK};
 pub use tape::{Tape, TapeScalar};

@@ -14,7 +14,8 @@
 //! scalar node (a sine of a sum, a reciprocal, a hyperbolic tangent that depends on the
 //! variables), there is no plan, and the caller differentiates column by column.
 //!
-//! The directions are held in blocks of [`BLOCK`] (a register each), and a lane only in the
+//! The directions are held in blocks of [`Tangents::group`] lanes (a register each: [`BLOCK`],
+//! or four where that costs less, [`Tangents::prefer_groups_of_four`]), and a lane only in the
 //! blocks its terms reach ([`Tangents::blocks`]): on a tree a value depends on the joints of its
 //! branch alone, so a finger's tangents take one block of the hand's, not all of them.
 
@@ -23,8 +24,15 @@ use super::graph::Graph;
 use super::node::{Node, NodeId, Var};
 use core::ops::Range;
 
-/// The directions a register holds: a lane is kept in whole blocks of this many.
+/// The directions a register holds: a lane is kept in whole blocks of this many (an AVX-512
+/// register of `f64`), unless its plan takes [`QUARTER_BLOCK`].
 pub const BLOCK: usize = 8;
+/// The directions of a smaller block, an AVX register of `f64`.
+pub const QUARTER_BLOCK: usize = 4;
+/// The lane operations in blocks of [`BLOCK`] beyond which a plan keeps them: its function's
+/// code outgrows the instruction cache, and fetching it costs more than the halves of 512-bit
+/// operations that blocks of four would save.
+const FETCH_BOUND_OPERATIONS: usize = 1_000;
 
 /// How many scalar factors a term may carry before its vector is written out.
 const FACTORS: usize = 2;
@@ -71,6 +79,8 @@ pub struct Tangents {
     pub lanes: Vec<Lane>,
     /// Per output, its tangent's lane, or `None` where it is zero.
     pub outputs: Vec<Option<usize>>,
+    /// The directions of a block: [`BLOCK`] or [`QUARTER_BLOCK`].
+    pub group: usize,
 }
 
 impl Tangents {
@@ -87,10 +97,42 @@ impl Tangents {
         all
     }
 
-    /// The blocks of [`BLOCK`] directions of the whole tangent (`n` rounded up).
+    /// The blocks of [`Tangents::group`] directions of the whole tangent (`n` rounded up).
     #[must_use]
     pub fn block_count(&self) -> usize {
-        self.directions.div_ceil(BLOCK).max(1)
+        self.directions.div_ceil(self.group).max(1)
+    }
+
+    /// The lane operations (a term that reads a lane, a lane's unit vectors together), each
+    /// counted once per block of `group` directions it takes.
+    #[must_use]
+    pub fn block_operations(&self, group: usize) -> usize {
+        let blocks = Tangents {
+            group,
+            ..self.clone()
+        }
+        .blocks();
+        self.lanes
+            .iter()
+            .zip(blocks)
+            .map(|(lane, blocks)| {
+                let vectors = lane.terms.iter().filter(|t| matches!(t.of, Of::Lane(_)));
+                let units = lane.terms.iter().any(|t| matches!(t.of, Of::Unit(_)));
+                (vectors.count() + usize::from(units)) * blocks.len()
+            })
+            .sum()
+    }
+
+    /// Whether blocks of four cost less than of eight, where the CPU executes a 512-bit
+    /// operation as two 256-bit halves (AMD's Zen 4): a lane within four directions takes one
+    /// half, not two, and a lane of 5-8 two halves either way. Not where the plan's operations
+    /// in blocks of eight pass `FETCH_BOUND_OPERATIONS` (1,000): there the count of instructions
+    /// (each a few bytes of code to fetch) weighs more than their halves.
+    #[must_use]
+    pub fn prefer_groups_of_four(&self) -> bool {
+        let eights = self.block_operations(BLOCK);
+        eights <= FETCH_BOUND_OPERATIONS
+            && self.block_operations(QUARTER_BLOCK) < eights * (BLOCK / QUARTER_BLOCK)
     }
 
     /// Per lane, the blocks it is kept in: the smallest run of blocks that holds every
@@ -106,7 +148,7 @@ impl Tangents {
                 .map(|t| match t.of {
                     Of::Lane(k) => blocks[k].clone(),
                     Of::Unit(j) => {
-                        let b = usize::from(j) / BLOCK;
+                        let b = usize::from(j) / self.group;
                         b..b + 1
                     }
                 })
@@ -169,6 +211,7 @@ impl Graph {
             directions,
             lanes: plan.lanes,
             outputs,
+            group: BLOCK,
         })
     }
 
@@ -280,5 +323,67 @@ impl Planner {
                 t
             })
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Lane, NodeId, Of, Tangents, Term, BLOCK, FETCH_BOUND_OPERATIONS};
+
+    /// A lane of the unit vectors `directions`, read `reads` times by lanes of one term each.
+    fn plan(directions: usize, units: &[u16], reads: usize) -> Tangents {
+        let term = |of| Term {
+            of,
+            factors: vec![NodeId(0)],
+            negative: false,
+        };
+        let mut lanes = vec![Lane {
+            after: NodeId(0),
+            terms: units.iter().map(|&j| term(Of::Unit(j))).collect(),
+        }];
+        lanes.extend((0..reads).map(|_| Lane {
+            after: NodeId(1),
+            terms: vec![term(Of::Lane(0))],
+        }));
+        Tangents {
+            directions,
+            lanes,
+            outputs: vec![Some(1)],
+            group: BLOCK,
+        }
+    }
+
+    #[test]
+    fn blocks_of_four_where_lanes_fit_them() {
+        // Directions 0..3 of six: one block of four (one half) against one of eight (two).
+        let narrow = plan(6, &[0, 1, 2, 3], 10);
+        assert_eq!(narrow.block_operations(8), 11);
+        assert_eq!(narrow.block_operations(4), 11);
+        assert!(narrow.prefer_groups_of_four());
+        // Directions 2..5: two blocks of four, two halves either way; eight kept.
+        let across = plan(6, &[2, 5], 10);
+        assert_eq!(across.block_operations(4), 22);
+        assert!(!across.prefer_groups_of_four());
+        // Directions 1..9 of 19: two blocks of eight (four halves), three of four.
+        let arm = plan(19, &[1, 9], 10);
+        assert_eq!((arm.block_operations(8), arm.block_operations(4)), (22, 33));
+        assert!(arm.prefer_groups_of_four());
+    }
+
+    #[test]
+    fn blocks_of_eight_where_the_code_is_fetch_bound() {
+        let big = plan(6, &[0, 1], FETCH_BOUND_OPERATIONS);
+        assert_eq!(big.block_operations(8), FETCH_BOUND_OPERATIONS + 1);
+        assert!(!big.prefer_groups_of_four());
+        let just = plan(6, &[0, 1], FETCH_BOUND_OPERATIONS - 1);
+        assert!(just.prefer_groups_of_four());
+    }
+
+    #[test]
+    fn a_lane_is_kept_in_the_blocks_of_its_group() {
+        let mut arm = plan(19, &[1, 9], 1);
+        assert_eq!(arm.blocks(), vec![0..2, 0..2]);
+        arm.group = 4;
+        assert_eq!((arm.blocks(), arm.block_count()), (vec![0..3, 0..3], 5));
     }
 }

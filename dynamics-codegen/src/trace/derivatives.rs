@@ -21,7 +21,7 @@ use super::lane_solve;
 use super::tracer::joint_index;
 use super::Equations;
 use crate::method::Family;
-use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt};
+use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt, BLOCK, QUARTER_BLOCK};
 use std::cell::RefCell;
 
 /// The derivatives' outputs: node ids into [`Equations::graph`].
@@ -96,11 +96,18 @@ fn inverse_derivatives(eq: &Equations, graph: &RefCell<Graph>) -> Vec<Vec<Vec<No
 
 /// The plans of `[∂τ/∂q, ∂τ/∂q̇]` in lanes ([`Graph::tangents`]), which the code takes where
 /// the build computes tangents in lanes; `None` where a tangent needs a node the graph
-/// lacks (`∂q̇` of smoothed friction's `tanh`), which is then computed as above.
+/// lacks (`∂q̇` of smoothed friction's `tanh`), which is then computed as above. Each in
+/// blocks of four directions where those cost less ([`Tangents::prefer_groups_of_four`]).
 fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
     let n = eq.dof;
     [Wrt::Position(0), Wrt::Velocity(0)]
-        .map(|wrt| eq.graph.tangents(&eq.tau, wrt, n))
+        .map(|wrt| {
+            let mut plan = eq.graph.tangents(&eq.tau, wrt, n)?;
+            if plan.prefer_groups_of_four() {
+                plan.group = QUARTER_BLOCK;
+            }
+            Some(plan)
+        })
         .into()
 }
 
@@ -112,7 +119,12 @@ fn forward_lanes(eq: &mut Equations, inverse: &[Option<Tangents>]) -> Vec<Option
     let mut planned: Vec<Option<Tangents>> = inverse
         .iter()
         .map(|plan| {
-            let at_qdd = lane_solve::at_qdd(plan.as_ref()?, graph, qdd);
+            // In blocks of eight, as they were measured (the choice of four is ∂τ's alone).
+            let eights = Tangents {
+                group: BLOCK,
+                ..plan.clone()?
+            };
+            let at_qdd = lane_solve::at_qdd(&eights, graph, qdd);
             Some(lane_solve::solve_negated(at_qdd, factors, graph))
         })
         .collect();

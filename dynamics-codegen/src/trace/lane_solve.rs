@@ -69,6 +69,7 @@ pub(super) fn inverse(factors: &algo::Ldlt<NodeId>, graph: &Graph) -> Tangents {
         directions: n,
         lanes: Vec::new(),
         outputs: Vec::new(),
+        group: crate::symbolic::BLOCK,
     };
     solve(plan, rows, factors, graph, false)
 }
