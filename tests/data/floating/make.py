@@ -127,6 +127,84 @@ def make(name, urdf):
     print(name, model.nq, model.nv, "mass %.4f" % sum(i.mass for i in model.inertias))
 
 
+# Frames of KINEMATICS[name] (the feet of Solo 12: its leaf links), read by `kinematics`.
+KINEMATICS = {"solo12": ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"]}
+
+
+def kinematics(name, urdf):
+    """The kinematic outputs at the states of `<name>.json` (issue 43, item 2), written to
+    `<name>_kinematics.json`: the centre of mass (`centerOfMass`) and its Jacobian
+    (`jacobianCenterOfMass`), the centroidal momentum matrix A_G (`computeCentroidalMap`) and
+    dA_G v (`computeCentroidalMapTimeVariation`, times v), and for each frame its placement in
+    the world, its Jacobian (`getFrameJacobian`) and its classical acceleration at a = 0
+    (`getFrameClassicalAcceleration`: the origin's acceleration in the world, dJ v) in LOCAL
+    and LOCAL_WORLD_ALIGNED. Checks A_G's linear rows = m Jcom, A_G v = the momentum about the
+    CoM computed body by body, and dA_G v against a central difference of A_G along the motion."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    frames = KINEMATICS[name]
+    ids = [model.getFrameId(f) for f in frames]
+    mass = sum(i.mass for i in model.inertias)
+    zero = np.zeros(model.nv)
+    samples = []
+    for s in states:
+        q, v = np.array(s["q"]), np.array(s["v"])
+        com = pin.centerOfMass(model, data, q).copy()
+        jcom = pin.jacobianCenterOfMass(model, data, q).copy()
+        ag = pin.computeCentroidalMap(model, data, q).copy()
+        dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
+        assert scaled(ag[:3], mass * jcom) < TOLERANCE
+        # A_G v: each body's momentum about the CoM, in world axes (body velocities in world).
+        pin.forwardKinematics(model, data, q, v)
+        momentum = pin.Force.Zero()
+        for k in range(1, model.njoints):
+            momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
+        h = pin.SE3(np.eye(3), com).actInv(momentum)
+        assert scaled(ag @ v, h.vector) < TOLERANCE
+        step = 1e-6
+        diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
+                - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
+        assert scaled(diff @ v, dag @ v) < 1e-6
+        pin.forwardKinematics(model, data, q, v, zero)
+        pin.updateFramePlacements(model, data)
+        pin.computeJointJacobians(model, data, q)
+        out = {"com": com.tolist(), "Jcom": jcom.tolist(), "Ag": ag.tolist(), "dAg_v": (dag @ v).tolist(),
+               "frames": {}}
+        for frame, i in zip(frames, ids):
+            placement = data.oMf[i]
+            entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
+            for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
+                jac = pin.getFrameJacobian(model, data, i, ref)
+                acc = pin.getFrameClassicalAcceleration(model, data, i, ref).vector
+                assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
+                entry["J_" + key] = jac.tolist()
+                entry["dJv_" + key] = acc.tolist()
+            out["frames"][frame] = entry
+        samples.append(out)
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (kinematics) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v of its samples, in order)",
+        "frames": frames,
+        "mass": mass,
+        "conventions": "com and Jcom in the world frame; Ag, dAg_v: [linear; angular] momentum about the CoM in "
+                       "world axes; frame rotation and translation in the world; J_local, dJv_local in the frame's "
+                       "axes, J_world_aligned, dJv_world_aligned in world axes at the frame's origin; dJv = "
+                       "getFrameClassicalAcceleration at a = 0 ([origin's acceleration; angular acceleration])",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_kinematics.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "kinematics:", len(samples), "samples,", len(frames), "frames")
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
+    for name, urdf in ROBOTS.items():
+        if name in KINEMATICS:
+            kinematics(name, urdf)
