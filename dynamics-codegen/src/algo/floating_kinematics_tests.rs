@@ -12,10 +12,10 @@ use super::{
 use crate::model::{FreeFlyer, Robot};
 use serde_json::Value as Json;
 
-const FEET: [&str; 4] = ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"];
+pub(crate) const FEET: [&str; 4] = ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"];
 
 /// Solo 12 with its feet for tips, and its floating body.
-fn solo12_with_feet() -> (Robot, FreeFlyer) {
+pub(crate) fn solo12_with_feet() -> (Robot, FreeFlyer) {
     let path = format!(
         "{}/../robots/urdf/floating/solo12.urdf",
         env!("CARGO_MANIFEST_DIR")
@@ -30,7 +30,7 @@ fn solo12_with_feet() -> (Robot, FreeFlyer) {
     (loaded.robot, flyer)
 }
 
-fn data(file: &str) -> Json {
+pub(crate) fn data(file: &str) -> Json {
     let path = format!(
         "{}/../tests/data/floating/{file}",
         env!("CARGO_MANIFEST_DIR")
@@ -39,14 +39,14 @@ fn data(file: &str) -> Json {
 }
 
 /// The numbers of `x`, a list or a list of lists, flattened.
-fn flat(x: &Json) -> Vec<f64> {
+pub(crate) fn flat(x: &Json) -> Vec<f64> {
     match x {
         Json::Array(items) => items.iter().flat_map(flat).collect(),
         _ => vec![x.as_f64().expect("a number")],
     }
 }
 
-fn check(what: &str, got: &[f64], expected: &Json) {
+pub(crate) fn check(what: &str, got: &[f64], expected: &Json) {
     let expected = flat(expected);
     assert_eq!(got.len(), expected.len(), "{what}: the length");
     let scale = expected.iter().fold(1.0f64, |x, e| x.max(e.abs()));

@@ -13,7 +13,7 @@ mod energy;
 mod floating;
 mod floating_kinematics;
 #[cfg(test)]
-mod floating_kinematics_tests;
+pub(crate) mod floating_kinematics_tests;
 #[cfg(test)]
 mod floating_tests;
 mod gravity;

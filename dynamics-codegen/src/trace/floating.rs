@@ -100,7 +100,7 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
 }
 
 /// The free flyer's body and frame 0's placement on it, as expressions.
-fn floating_base<'g>(
+pub(super) fn floating_base<'g>(
     tracer: &Tracer<'g>,
     robot: &Robot,
     flyer: &FreeFlyer,
