@@ -76,6 +76,7 @@ mod dynamics;
 pub mod batch;
 mod factor;
 mod floating;
+mod floating_kinematics;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
@@ -99,6 +100,7 @@ pub use crate::dynamics::{
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::floating::FloatingDynamics;
+pub use crate::floating_kinematics::FloatingKinematics;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};
