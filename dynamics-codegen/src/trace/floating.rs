@@ -90,7 +90,7 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
             mass_inverse: Vec::new(),
             qdd: Vec::new(),
         },
-        families: FamilySet::default(),
+        families: FamilySet::floating(),
         derivatives: None,
         regressor: None,
         base_parameters: None,
