@@ -11,7 +11,7 @@ macro_rules! for_each_floating_method {
         $callback! {
             $($rows)*
             /// Closed-form dynamics of a kinematic tree on a free-flying base, Pinocchio's free
-            /// flyer: `τ = M(q) a + h(q, v)`. Implemented by `#[derive(Dynamics)]` for a robot
+            /// flyer: `τ = M(q) a + h(q, v)`, and its forward dynamics. Implemented by `#[derive(Dynamics)]` for a robot
             /// with `base = floating` (see `docs/floating-base.md`).
             ///
             /// The configuration `q` has `Q = NQ = n + 7` entries,
@@ -76,6 +76,37 @@ macro_rules! for_each_floating_method {
                         prefix: "g",
                         summary: "g(q) of a floating base.",
                         element: "gravity force {i}",
+                    }
+                }
+                /// Forward dynamics and `M⁻¹` of a floating base, through the LDLᵀ of `M`.
+                family FloatingForward {
+                    name: floating_forward,
+                    module: "__floating_forward",
+                    opt_in: false,
+                    adjective: "floating forward ",
+                }
+                methods {
+                    /// The inverse of the mass matrix, `M(q)⁻¹` (Pinocchio's `computeMinverse`),
+                    /// through the LDLᵀ of `M` factored from the tips (Featherstone's `Lᵀ D L`,
+                    /// the base last); `Err(NotPositiveDefinite)` where a pivot is not positive
+                    /// (on lane types, where at least one lane's is not).
+                    fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na, batch mass_matrix_inverse_batch {
+                        variant: FloatingMassMatrixInverse,
+                        equation: None,
+                        prefix: "mi",
+                        summary: "M(q)⁻¹ of a floating base, through the LDLᵀ of M.",
+                        element: "(M^-1){i}{j}",
+                    }
+                    /// Forward dynamics without contact, `a = M(q)⁻¹ (tau − h(q, v))` (Pinocchio's
+                    /// `aba`), through the same factors: the inverse of `inverse_dynamics`, the
+                    /// base's six entries of `tau` a wrench on the base in its frame.
+                    /// `Err(NotPositiveDefinite)` where a pivot is not positive.
+                    fn forward_dynamics(q, v, tau) -> solved_vector, nalgebra forward_dynamics_na, batch forward_dynamics_batch {
+                        variant: FloatingForwardDynamics,
+                        equation: None,
+                        prefix: "acc",
+                        summary: "a = M(q)⁻¹ (τ − h(q, v)) of a floating base.",
+                        element: "acceleration {i}",
                     }
                 }
             }

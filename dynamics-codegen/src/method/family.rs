@@ -125,7 +125,7 @@ mod tests {
         );
         assert_eq!(default.opt_in().count(), 0);
         let floating: Vec<_> = Family::ALL.iter().filter(|f| f.is_floating()).collect();
-        assert_eq!(floating, [&Family::Floating]);
+        assert_eq!(floating, [&Family::Floating, &Family::FloatingForward]);
         let asked = default.with(Family::Derivatives);
         assert_eq!(asked.opt_in().collect::<Vec<_>>(), [Family::Derivatives]);
     }

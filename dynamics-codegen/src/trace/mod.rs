@@ -167,7 +167,8 @@ impl Equations {
                 | Family::Dynamics
                 | Family::Kinematics
                 | Family::Forward
-                | Family::Floating => {}
+                | Family::Floating
+                | Family::FloatingForward => {}
             }
         }
     }

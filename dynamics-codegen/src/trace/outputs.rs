@@ -198,11 +198,11 @@ impl Method {
             Method::JointTorquesForBaseWrench => {
                 Shape::Vector(&eq.kinematics.torques_for_base_wrench)
             }
-            Method::MassMatrixInverse => Shape::SolvedMatrix {
+            Method::MassMatrixInverse | Method::FloatingMassMatrixInverse => Shape::SolvedMatrix {
                 pivots: &eq.forward.factors.pivots,
                 matrix: &eq.forward.mass_inverse,
             },
-            Method::ForwardDynamics => Shape::SolvedVector {
+            Method::ForwardDynamics | Method::FloatingForwardDynamics => Shape::SolvedVector {
                 pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },
