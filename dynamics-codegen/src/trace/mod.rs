@@ -167,7 +167,12 @@ impl Equations {
                     };
                 }
                 // Built by the `simplify` stage, which needs the envelope and tolerances.
-                Family::Simplified | Family::Dynamics | Family::Kinematics | Family::Forward => {}
+                Family::Simplified
+                | Family::Dynamics
+                | Family::Kinematics
+                | Family::Forward
+                | Family::Floating
+                | Family::FloatingForward => {}
             }
         }
     }

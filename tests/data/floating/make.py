@@ -16,6 +16,14 @@ For each robot of ROBOTS this script
    then the joint rates, as Pinocchio's v); sample #0 is the base at rest, upright, joints at 0;
 4. writes M (`crba`, its upper triangle mirrored), h (`nonLinearEffects`), tau (`rnea`) and
    g (`computeGeneralizedGravity`), and checks tau = M a + h and g = rnea(q, 0, 0) to 1e-12.
+5. draws, from a second generator (seeded SEED + 1, so that the states above stay as they
+   were), per state a generalized force `tau_in` uniform in [-20, 20], a velocity step `dv`
+   uniform in [-1.5, 1.5] (its base rotation up to 2.6 rad) and a second configuration `q1`
+   as q is drawn; on sample #1 the step's rotation is tiny (1e-9 rad), for the Taylor branch;
+   and writes the forward dynamics `a_fd = aba(q, v, tau_in)`, `M_inv` (`computeMinverse`, its
+   upper triangle mirrored), `q_next = integrate(q, dv)`, `dq = difference(q, q1)`, and the
+   Jacobians `dIntegrate` by q and by v at (q, dv) and `dDifference` by q0 and by q1 at
+   (q, q1); it checks M a_fd + h = tau_in, M M_inv = 1 and integrate(q, dq) = q1.
 
 Usage, from the repository root (Pinocchio 4.1, the `pin` wheel):
 
@@ -81,6 +89,36 @@ def sample(rng, model, k):
     return q, rng.uniform(-2, 2, model.nv), rng.uniform(-2, 2, model.nv)
 
 
+def configuration_space(rng, model, data, k, q, v, m, h):
+    """Forward dynamics, M^-1, integrate, difference and their Jacobians at state k."""
+    tau_in = rng.uniform(-20, 20, model.nv)
+    dv = rng.uniform(-1.5, 1.5, model.nv)
+    if k == 1:
+        dv[3:6] *= 1e-9
+    q1, _, _ = sample(rng, model, 2)
+    a_fd = pin.aba(model, data, q, v, tau_in).copy()
+    m_inv = pin.computeMinverse(model, data, q).copy()
+    m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+    q_next = pin.integrate(model, q, dv)
+    dq = pin.difference(model, q, q1)
+    assert scaled(m @ a_fd + h, tau_in) < TOLERANCE
+    assert scaled(m @ m_inv, np.eye(model.nv)) < TOLERANCE
+    back = pin.integrate(model, q, dq)
+    assert scaled(back[7:], q1[7:]) < TOLERANCE and scaled(back[:3], q1[:3]) < TOLERANCE
+    # The same rotation: the quaternions equal up to sign.
+    assert min(scaled(back[3:7], q1[3:7]), scaled(back[3:7], -q1[3:7])) < TOLERANCE
+    jacobians = {
+        "dintegrate_dq": pin.dIntegrate(model, q, dv, pin.ARG0),
+        "dintegrate_dv": pin.dIntegrate(model, q, dv, pin.ARG1),
+        "ddifference_dq0": pin.dDifference(model, q, q1, pin.ARG0),
+        "ddifference_dq1": pin.dDifference(model, q, q1, pin.ARG1),
+    }
+    out = {"tau_in": tau_in.tolist(), "a_fd": a_fd.tolist(), "M_inv": m_inv.tolist(),
+           "dv": dv.tolist(), "q_next": q_next.tolist(), "q1": q1.tolist(), "dq": dq.tolist()}
+    out.update({key: np.asarray(j).tolist() for key, j in jacobians.items()})
+    return out
+
+
 def make(name, urdf):
     path = os.path.join(ROOT, urdf)
     model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
@@ -90,6 +128,7 @@ def make(name, urdf):
     assert names == order, (names, order)
     assert model.joints[1].shortname() == "JointModelFreeFlyer"
     rng = np.random.default_rng(SEED)
+    extra = np.random.default_rng(SEED + 1)
     samples = []
     for k in range(SAMPLES):
         q, v, a = sample(rng, model, k)
@@ -100,8 +139,10 @@ def make(name, urdf):
         g = pin.computeGeneralizedGravity(model, data, q).copy()
         assert scaled(m @ a + h, tau) < TOLERANCE
         assert scaled(pin.rnea(model, data, q, np.zeros(model.nv), np.zeros(model.nv)), g) < TOLERANCE
-        samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
-                        "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()})
+        record = {"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
+                  "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()}
+        record.update(configuration_space(extra, model, data, k, q, v, m, h))
+        samples.append(record)
     with open(path, "rb") as f:
         sha = hashlib.sha256(f.read()).hexdigest()
     out = {
