@@ -25,8 +25,8 @@ fn solo12_traced_against_pinocchio() {
             Var::SinQ(i) => q[usize::from(i) + 1].sin(),
             Var::CosQ(i) => q[usize::from(i) + 1].cos(),
             Var::Qd(i) => v[usize::from(i)],
-            // The acceleration, which only τ reads.
-            Var::Qdd(_) => 0.0,
+            // The acceleration and the generalized force, which the kinematics do not read.
+            Var::Qdd(_) | Var::Tau(_) => 0.0,
             other => panic!("{other:?} is not an input of the floating equations"),
         });
         let at = |ids: &[NodeId]| -> Vec<f64> { ids.iter().map(|id| values[id.index()]).collect() };
