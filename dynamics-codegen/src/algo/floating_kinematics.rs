@@ -69,8 +69,8 @@ pub fn centroidal<S: Scalar>(
     let columns = m[0].len();
     let mut matrix: [Vec<S>; 6] = Default::default();
     let mut com_jacobian: [Vec<S>; 3] = Default::default();
-    for k in 0..columns {
-        let column: Vec<S> = (0..6).map(|i| m[i][k]).collect();
+    let momenta = (0..columns).map(|k| std::array::from_fn::<S, 6, _>(|i| m[i][k]));
+    for column in momenta {
         let (p, l) = (vector(&column, 0), vector(&column, 3));
         let linear = r.mul_vec(p);
         let angular = r.mul_vec(l - c.cross(p));
@@ -163,10 +163,8 @@ pub fn floating_frame<S: Scalar>(
     for i in 0..3 {
         columns.push((unit(i).cross(pf), unit(i)));
     }
-    for j in 0..fixed[0].len() {
-        let column: Vec<S> = (0..6).map(|i| fixed[i][j]).collect();
-        columns.push((vector(&column, 0), vector(&column, 3)));
-    }
+    let joints = (0..fixed[0].len()).map(|j| std::array::from_fn::<S, 6, _>(|i| fixed[i][j]));
+    columns.extend(joints.map(|c| (vector(&c, 0), vector(&c, 3))));
     let world = jacobian(&columns, |x| r.mul_vec(x));
     let local = jacobian(&columns, |x| rf.tr_mul_vec(x));
     let (lin, w) = (vector(v, 0), vector(v, 3));

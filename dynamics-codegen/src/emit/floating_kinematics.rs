@@ -7,7 +7,7 @@
 //!
 //! The emitter names an output's elements after a method of the table (`m1_2`), and these
 //! outputs have no rows there yet: each borrows the element names of a method of the same
-//! arguments ([`CARRIERS`]), within this module only, where no other output uses them.
+//! arguments (`CARRIERS`), within this module only, where no other output uses them.
 
 use super::expr::with_body;
 use super::impls::argument_local;
@@ -124,7 +124,7 @@ pub fn floating_kinematics_items(
     }
 }
 
-/// The module functions' result types, in [`CARRIERS`]' order: arrays of rows.
+/// The module functions' result types, in `CARRIERS`' order: arrays of rows.
 fn result_types(nv: usize, frames: usize) -> [TokenStream; 9] {
     [
         quote!([T; 3]),

@@ -1,7 +1,7 @@
 //! The frames of a floating base named by `tips = [..]`: on a fixed base the tips choose the
 //! branches the robot keeps, but a floating base's dynamics need every branch, so the URDF's
 //! loader is asked for the named links followed by every moving leaf
-//! ([`super::urdf::moving_leaves`]), and the robot's tips are cut back to the named ones.
+//! (`urdf::moving_leaves`), and the robot's tips are cut back to the named ones.
 //! Without `tips`, a floating base's frames are its moving leaves (a quadruped's feet).
 
 use super::attrs::Attrs;
