@@ -15,7 +15,7 @@ macro_rules! for_each_base_method {
             /// their number. Found exactly from the closed form; `dynamics inspect ROBOT
             /// --base-parameters` prints each as its grouping of standard parameters
             /// (`ZZR1 = ZZ1 + YY2 + …`). `LINKS` is `DynamicsRegressor`'s.
-            trait DynamicsBaseParameters<B, LINKS = N>: Dynamics, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
+            trait DynamicsBaseParameters<N; B, LINKS = N>: Dynamics<N>, nalgebra DynamicsBaseParametersNalgebra, batch DynamicsBaseParametersBatch {
                 items {}
                 /// The base parameters and their reduced regressor.
                 family BaseParameters {

@@ -50,7 +50,7 @@ for_each_result!(declare_result_lookups $);
 macro_rules! declare_traits {
     ($(
         $(#[doc = $trait_doc:literal])*
-        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident<$config:ident $(, $space:ident)* $(; $($count:ident $(= $count_default:ident)?),+)?> $(: $supertrait:ident<$($super_argument:ident),+>)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -73,16 +73,16 @@ macro_rules! declare_traits {
         }
     )*) => {$(
         $(#[doc = $trait_doc])*
-        pub trait $trait<const N: usize $($(, const $count: usize $(= $count_default)?)+)?> $(: $supertrait<N>)? {
+        pub trait $trait<const $config: usize $(, const $space: usize)* $($(, const $count: usize $(= $count_default)?)+)?> $(: $supertrait<$($super_argument),+>)? {
             $($items)*
             $($(
                 trait_method!(
                     $(#[doc = $doc])*
-                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result);
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, $config)),*) -> array_result!($result);
                     $($default)?
                 );
                 into_method!(
-                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, N)),*) -> array_result!($result);
+                    fn $name<T: Real>(&self, $($argument: argument_type!($argument, T, $config)),*) -> array_result!($result);
                     $($into)?
                 );
             )*)*
@@ -127,18 +127,22 @@ macro_rules! into_method {
     };
 }
 
-/// The type of a method's argument: `&[T; N]` for the joint variables, `&[T; 6]` for a wrench
-/// `[fx, fy, fz, mx, my, mz]`, `&[[T; 6]; TIPS]` for a wrench at each tip (`TipKinematics`'
-/// count).
+/// The type of a method's argument: `&[T; C]` for the configuration `q`, `C` the trait's first
+/// const parameter (`N` on a fixed base, `Q` on a floating one), `&[T; N]` for the other joint
+/// variables (the velocity's length), `&[T; 6]` for a wrench `[fx, fy, fz, mx, my, mz]`,
+/// `&[[T; 6]; TIPS]` for a wrench at each tip (`TipKinematics`' count).
 macro_rules! argument_type {
-    (wrench, $t:ty, $n:ident) => {
+    (q, $t:ty, $config:ident) => {
+        &[$t; $config]
+    };
+    (wrench, $t:ty, $config:ident) => {
         &[$t; 6]
     };
-    (wrenches, $t:ty, $n:ident) => {
+    (wrenches, $t:ty, $config:ident) => {
         &[[$t; 6]; TIPS]
     };
-    ($joint:ident, $t:ty, $n:ident) => {
-        &[$t; $n]
+    ($joint:ident, $t:ty, $config:ident) => {
+        &[$t; N]
     };
 }
 

@@ -58,7 +58,9 @@
 // First: the tables of methods and of their results that `dynamics` and `nalgebra` declare
 // their traits from.
 // Before `methods`, whose `for_each_method!` calls `for_each_base_method!`, which calls
-// `for_each_tip_method!`.
+// `for_each_tip_method!`, which calls `for_each_floating_method!`.
+#[macro_use]
+mod floating_methods;
 #[macro_use]
 mod tip_methods;
 #[macro_use]
@@ -75,7 +77,7 @@ mod dynamics;
 // After `dynamics`, whose `array_result!` it reads.
 pub mod batch;
 mod factor;
-mod floating;
+mod floating_kinematics;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
@@ -90,15 +92,16 @@ mod trig;
 pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DerivativesBatchScalar, DynamicsBaseParametersBatch, DynamicsBatch,
-    DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch, TipKinematicsBatch,
+    DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch,
+    FloatingDynamicsBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
-    TipKinematics,
+    FloatingDynamics, TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
-pub use crate::floating::FloatingDynamics;
+pub use crate::floating_kinematics::FloatingKinematics;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};

@@ -8,7 +8,7 @@
 // `enum Family` and `enum Method`. The rows nest:
 //
 //     /// Rustdoc of the trait.
-//     trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra,
+//     trait DynamicsDerivatives<N>: Dynamics<N>, nalgebra DynamicsDerivativesNalgebra,
 //             batch DynamicsDerivativesBatch {
 //         items {}                         // the trait's other items (`const DOF`)
 //         /// Doc of the family.
@@ -39,7 +39,14 @@
 //         }
 //     }
 //
-// A method's arguments are among `q`, `qd`, `qdd`, `wrench`, `tau`; its result is a keyword of
+// A trait's const parameters: first the configuration's length (`q: &[T; _]`), then, for a
+// floating base only, `N`; then, after a `;`, counts of its own (`LINKS`, `TIPS`). `N` is always
+// the velocity's length (of `qd`, `qdd`, `tau`, and the results' `N`): the joints of a fixed
+// base, whose configuration is as long (`Dynamics<N>`), or `n + 6` on a floating base, whose
+// configuration has `n + 7` (`FloatingDynamics<Q, N>`, in `floating_methods.rs`).
+//
+// A method's arguments are among `q`, `qd`, `qdd`, `wrench`, `tau` (and a floating base's `v`,
+// `a`, the velocity's length as `qd`'s); its result is a keyword of
 // the result table (`results.rs`). A family is emitted in a module of its own. `compiled_apart`
 // (the forward dynamics' derivatives) and `into` (the regressors, whose hundreds of values
 // outnumber the registers) are explained, with the checklists for adding a method and a
@@ -57,7 +64,7 @@ macro_rules! for_each_method {
             /// loops, no heap. Each is generic over the scalar, so one robot evaluates in `f32`
             /// or `f64`; the robot's parameters (struct fields) are converted to that scalar on
             /// each call.
-            trait Dynamics, nalgebra DynamicsNalgebra, batch DynamicsBatch {
+            trait Dynamics<N>, nalgebra DynamicsNalgebra, batch DynamicsBatch {
                 items {
                     /// Number of joints.
                     const DOF: usize = N;
@@ -281,7 +288,7 @@ macro_rules! for_each_method {
             /// derivatives of its traced `τ` (forward differentiation at compile time, no finite
             /// differences, no automatic differentiation at run time), and `∂q̈/∂x = −M⁻¹ ∂τ/∂x`
             /// solved with the LDLᵀ of `M` (Carpentier and Mansard, RSS 2018).
-            trait DynamicsDerivatives: Dynamics, nalgebra DynamicsDerivativesNalgebra, batch DynamicsDerivativesBatch {
+            trait DynamicsDerivatives<N>: Dynamics<N>, nalgebra DynamicsDerivativesNalgebra, batch DynamicsDerivativesBatch {
                 items {}
                 /// The derivatives of inverse and forward dynamics.
                 family Derivatives {
@@ -331,7 +338,7 @@ macro_rules! for_each_method {
             /// `LINKS` is the number of links, `N` by default: a robot with mimic joints (each
             /// following `q_m = k q_j + o`, not a coordinate) has a row per coordinate (`N`) and
             /// still a column block per link (`LINKS`, one per joint).
-            trait DynamicsRegressor<LINKS = N>: Dynamics, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
+            trait DynamicsRegressor<N; LINKS = N>: Dynamics<N>, nalgebra DynamicsRegressorNalgebra, batch DynamicsRegressorBatch {
                 items {
                     /// Number of links: of column blocks of `regressor`, of rows of
                     /// `joint_regressor`.
@@ -400,7 +407,7 @@ macro_rules! for_each_method {
             /// Pruned equations of motion with a proven error bound (opt-in, `simplify(...)`): the
             /// terms dropped whose summed interval bound over the envelope stays within the
             /// tolerance. Each method's rustdoc on the robot states its bounds and the envelope.
-            trait DynamicsSimplified: Dynamics, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
+            trait DynamicsSimplified<N>: Dynamics<N>, nalgebra DynamicsSimplifiedNalgebra, batch DynamicsSimplifiedBatch {
                 items {}
                 /// The pruned τ, M, C q̇ and g; an output too large to prune is the exact one.
                 family Simplified {

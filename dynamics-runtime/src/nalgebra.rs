@@ -20,7 +20,7 @@ use nalgebra::{
 macro_rules! declare_nalgebra {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident<$config:ident $(, $space:ident)* $(; $($count:ident $(= $count_default:ident)?),+)?> $(: $_supertrait:ident<$($_super_argument:ident),+>)?, nalgebra $nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -36,36 +36,38 @@ macro_rules! declare_nalgebra {
     )*) => {$(
         #[doc = concat!("nalgebra versions of the [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods, ")]
         #[doc = concat!("implemented for every type that implements it.")]
-        pub trait $nalgebra<const N: usize $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<N $($(, $count)+)?> {
+        pub trait $nalgebra<const $config: usize $(, const $space: usize)* $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<$config $(, $space)* $($(, $count)+)?> {
             $($(
-                nalgebra_wrapper!($trait fn $name, $wrapper($($argument),*) -> $result);
+                nalgebra_wrapper!($trait $config fn $name, $wrapper($($argument),*) -> $result);
             )*)*
         }
 
-        impl<R: crate::$trait<N $($(, $count)+)?> + ?Sized, const N: usize $($(, const $count: usize)+)?>
-            $nalgebra<N $($(, $count)+)?> for R {}
+        impl<R: crate::$trait<$config $(, $space)* $($(, $count)+)?> + ?Sized, const $config: usize $(, const $space: usize)* $($(, const $count: usize)+)?>
+            $nalgebra<$config $(, $space)* $($(, $count)+)?> for R {}
     )*};
 }
 
 /// The `_na` wrapper of one method: the arguments from nalgebra's types, the result to them.
 macro_rules! nalgebra_wrapper {
-    ($trait:ident fn $name:ident, $wrapper:ident($($argument:ident),*) -> $result:ident) => {
+    ($trait:ident $config:ident fn $name:ident, $wrapper:ident($($argument:ident),*) -> $result:ident) => {
         #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`](crate::", stringify!($trait), "::", stringify!($name), ") with nalgebra types.")]
         fn $wrapper<T: Real + RealField>(
             &self,
-            $($argument: nalgebra_argument!($argument, T, N)),*
+            $($argument: nalgebra_argument!($argument, T, $config)),*
         ) -> nalgebra_result!($result) {
             to_nalgebra!($result, self.$name($(&array($argument)),*))
         }
     };
 }
 
-/// A method's argument as nalgebra gives it: a wrench is an `SVector<T, 6>`, the joint
-/// variables an `SVector<T, N>`.
+/// A method's argument as nalgebra gives it: a wrench is an `SVector<T, 6>`, the configuration
+/// an `SVector<T, C>` (`C` the trait's first const parameter), the other joint variables an
+/// `SVector<T, N>`.
 macro_rules! nalgebra_argument {
-    (wrench, $t:ty, $n:ident) => { &SVector<$t, 6> };
-    (wrenches, $t:ty, $n:ident) => { &[SVector<$t, 6>; TIPS] };
-    ($joint:ident, $t:ty, $n:ident) => { &SVector<$t, $n> };
+    (q, $t:ty, $config:ident) => { &SVector<$t, $config> };
+    (wrench, $t:ty, $config:ident) => { &SVector<$t, 6> };
+    (wrenches, $t:ty, $config:ident) => { &[SVector<$t, 6>; TIPS] };
+    ($joint:ident, $t:ty, $config:ident) => { &SVector<$t, N> };
 }
 
 for_each_method!(declare_nalgebra);

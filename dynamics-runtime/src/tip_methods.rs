@@ -1,11 +1,11 @@
 // The method table's rows of the tips' kinematics, apart from `methods.rs` for its length:
-// `for_each_method!` hands its rows to `for_each_tip_method!`, which adds these and calls the
-// callback with all of them (the same `include!`d symlink in `dynamics-codegen`).
+// `for_each_method!` hands its rows to `for_each_tip_method!`, which adds these and hands all to
+// `for_each_floating_method!` (the same `include!`d symlink in `dynamics-codegen`).
 
-/// Calls `$callback!` with the rows given and the tips' trait row after them.
+/// Calls `for_each_floating_method!` with the rows given and the tips' trait row after them.
 macro_rules! for_each_tip_method {
     ($callback:ident { $($rows:tt)* }) => {
-        $callback! {
+        for_each_floating_method! { $callback {
             $($rows)*
             /// The kinematics of every tip of a robot that branches, all at once: `TIPS` tips,
             /// the leaves of its tree in joint order (a URDF's `tips = [..]` in their order),
@@ -18,7 +18,7 @@ macro_rules! for_each_tip_method {
             /// One straight-line function computes every tip, so the links they share are
             /// computed once: a dual arm's or a hand's controller wants them all. The serial
             /// robots' `hand_*` methods stay those of the last joint's link.
-            trait TipKinematics<TIPS>: Dynamics, nalgebra TipKinematicsNalgebra, batch TipKinematicsBatch {
+            trait TipKinematics<N; TIPS>: Dynamics<N>, nalgebra TipKinematicsNalgebra, batch TipKinematicsBatch {
                 items {
                     /// Number of tips.
                     const TIP_COUNT: usize = TIPS;
@@ -98,6 +98,6 @@ macro_rules! for_each_tip_method {
                     }
                 }
             }
-        }
+        }}
     };
 }

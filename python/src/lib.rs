@@ -178,11 +178,13 @@ fn generator_error(py: Python<'_>, diagnostics: &[Diagnostic]) -> PyErr {
 }
 
 /// The method table: each method's name, its family's name, and whether that family is
-/// opt-in (a robot has it only when asked for), for the hint of a method a robot lacks.
+/// opt-in (a robot has it only when asked for), for the hint of a method a robot lacks; a
+/// floating base's methods left out (Python does not load one yet).
 #[pyfunction]
 fn methods() -> Vec<(&'static str, &'static str, bool)> {
     Method::ALL
         .iter()
+        .filter(|m| !m.family().is_floating())
         .map(|m| {
             let family: Family = m.family();
             (m.name(), family.name(), family.is_opt_in())

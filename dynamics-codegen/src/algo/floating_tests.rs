@@ -190,7 +190,7 @@ fn urdf_robot(name: &str) -> (Robot, crate::model::FreeFlyer) {
 }
 
 /// The numbers of a robot's floating base: its body and where frame 0 sits.
-fn numeric_base(robot: &Robot, flyer: &crate::model::FreeFlyer) -> FloatingBase<f64> {
+pub(super) fn numeric_base(robot: &Robot, flyer: &crate::model::FreeFlyer) -> FloatingBase<f64> {
     let v = |x: &Value| x.eval(&|_| None).expect("a number");
     let b = &flyer.body;
     let link = Inertial {

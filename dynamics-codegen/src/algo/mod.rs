@@ -11,6 +11,9 @@ mod coriolis;
 mod crba;
 mod energy;
 mod floating;
+mod floating_kinematics;
+#[cfg(test)]
+pub(crate) mod floating_kinematics_tests;
 #[cfg(test)]
 mod floating_tests;
 mod gravity;
@@ -34,6 +37,9 @@ pub use energy::{kinetic_energy, potential_energy};
 pub use floating::{
     floating_crba, floating_gravity, floating_rnea, quaternion_rotation, spatial_inertia,
     FloatingBase,
+};
+pub use floating_kinematics::{
+    centroidal, centroidal_bias, floating_frame, Centroidal, FloatingFrame,
 };
 pub use gravity::gravity_torques;
 pub use kinematics::{

@@ -1,26 +1,16 @@
-//! The derive's items for a robot on a free-flying base: the module of `M`, `h`, `τ` and `g`
-//! emitted as every family's is, over the coordinates `[y, z, qx, qy, qz, qw, q_1 …]` of
-//! [`crate::trace::derive_floating`] (`n + 6` entries, as the velocity), and the
-//! `FloatingDynamics<NQ, NV>` impl, whose methods take the configuration's `n + 7` entries and
-//! pass on all but the first (the base's x, which nothing reads).
+//! The derive's items for a robot on a free-flying base: the module of its family's methods
+//! (the method table's `FloatingDynamics` rows, emitted as every family's are, over the
+//! coordinates `[y, z, qx, qy, qz, qw, q_1 …]` of [`crate::trace::derive_floating`], `n + 6`
+//! entries, as the velocity), and the `FloatingDynamics<NQ, NV>` impl, whose methods take the
+//! configuration's `n + 7` entries and pass on all but the first (the base's x, which nothing
+//! reads).
 
 use super::impls::{forward, signature, Counts};
-use super::items::{module_name, Generated, MethodCode, Module, PARAMETERS_FN};
-use super::program::emit;
-use super::{local, Context, Output, PARAMETERS};
-use crate::method::{Argument, Family, Method};
+use super::items::{generate_uncounted, module_name, Generated, PARAMETERS_FN};
+use crate::method::{Argument, Method};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
-
-/// The floating-base methods: the `Dynamics` method whose output of [`Equations`] each
-/// returns, and its name in `FloatingDynamics`.
-const METHODS: [(Method, &str); 4] = [
-    (Method::MassMatrix, "mass_matrix"),
-    (Method::BiasTorques, "bias_forces"),
-    (Method::InverseDynamics, "inverse_dynamics"),
-    (Method::GravityTorques, "generalized_gravity"),
-];
 
 /// The items of the floating-base robot `ident` whose equations are `eq`; `fields` reads its
 /// struct fields, in the order of [`Equations::fields`]. They go in a `const _: () = { … };`
@@ -32,51 +22,16 @@ pub fn floating_items(
     krate: &TokenStream,
     input: &syn::DeriveInput,
 ) -> TokenStream {
-    // The derive reads no operation counts (`dynamics stats` does not know floating robots).
-    let ctx = Context {
-        parameters: local(PARAMETERS),
-        counted: false,
-    };
-    let outputs: Vec<Output> = METHODS
-        .iter()
-        .map(|&(method, _)| Output {
-            method,
-            shape: method.shape(eq),
-        })
-        .collect();
-    let emission = emit(eq, &outputs, &ctx);
-    let methods = METHODS
-        .iter()
-        .zip(emission.bodies)
-        .map(|(&(method, _), b)| MethodCode {
-            method,
-            name: method.name(),
-            body: b.tokens,
-            ops: b.ops,
-            zeros: b.zeros,
-            lanes: b.lanes,
-        })
-        .collect();
-    let module = Module {
-        family: Family::Dynamics,
-        configuration: emission.configuration,
-        motion: emission.motion,
-    };
-    let generated = Generated {
-        dof: eq.dof,
-        base_count: 0,
-        links: eq.links,
-        joint_rows: None,
-        tip_names: None,
-        fields: fields.to_vec(),
-        modules: Vec::new(),
-        methods,
-    };
+    let generated = generate_uncounted(eq, fields.to_vec());
     let ident = &input.ident;
-    let module = generated.module(&module, krate, ident);
+    let modules = generated
+        .modules
+        .iter()
+        .map(|module| generated.module(module, krate, ident));
+    let modules: Vec<TokenStream> = modules.collect();
     let impls = trait_impl(&generated, krate, input);
     quote! {
-        #module
+        #(#modules)*
         #impls
     }
 }
@@ -95,28 +50,47 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
         links: quote!(#nv),
     };
     let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
-    let module = module_name(Family::Dynamics, ident);
-    let fns = METHODS.iter().map(|&(method, name)| {
-        let name = Ident::new(name, Span::call_site());
-        let inner = Ident::new(method.name(), Span::call_site());
-        let (_, ret) = signature(method, &counts, &t, krate, false);
-        let (mut args, mut pass) = (Vec::new(), Vec::new());
-        for &a in method.arguments() {
-            if a == Argument::Q {
-                args.push(quote!(q: &[#t; #nq]));
-                pass.push(quote!(&::core::array::from_fn(|i| q[i + 1])));
-            } else {
-                let public = Ident::new(public_name(a), Span::call_site());
-                args.push(quote!(#public: &[#t; #nv]));
-                pass.push(quote!(#public));
+    let fns: Vec<(Method, TokenStream)> = generated
+        .methods
+        .iter()
+        .map(|code| {
+            let method = code.method;
+            let module = module_name(method.family(), ident);
+            let name = Ident::new(code.name, Span::call_site());
+            let (_, ret) = signature(method, &counts, &t, krate, false);
+            let (mut args, mut pass) = (Vec::new(), Vec::new());
+            for (&a, &public) in method.arguments().iter().zip(method.argument_names()) {
+                let public = Ident::new(public, Span::call_site());
+                if a == Argument::Q {
+                    args.push(quote!(#public: &[#t; #nq]));
+                    pass.push(quote!(&::core::array::from_fn(|i| #public[i + 1])));
+                } else {
+                    args.push(quote!(#public: &[#t; #nv]));
+                    pass.push(quote!(#public));
+                }
             }
-        }
-        let call = quote!(#module::#inner(&self.#parameters(), #(#pass),*));
-        let call = forward(method, call, &counts, &t, krate);
+            let call = quote!(#module::#name(&self.#parameters(), #(#pass),*));
+            let call = forward(method, call, &counts, &t, krate);
+            let function = quote! {
+                #[inline]
+                fn #name<#t: #krate::Real>(&self, #(#args),*) -> #ret {
+                    #call
+                }
+            };
+            (method, function)
+        })
+        .collect();
+    // One impl per trait, in the table's order.
+    let mut traits: Vec<&str> = fns.iter().map(|(m, _)| m.family().trait_name()).collect();
+    traits.dedup();
+    let impls = traits.into_iter().map(|name| {
+        let functions = fns.iter().filter(|(m, _)| m.family().trait_name() == name);
+        let functions = functions.map(|(_, f)| f);
+        let name = Ident::new(name, Span::call_site());
         quote! {
-            #[inline]
-            fn #name<#t: #krate::Real>(&self, #(#args),*) -> #ret {
-                #call
+            #[automatically_derived]
+            impl #impl_generics #krate::#name<#nq, #nv> for #ident #ty_generics #where_clause {
+                #(#functions)*
             }
         }
     });
@@ -133,17 +107,6 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
                 [#(param(#fields)),*]
             }
         }
-        #[automatically_derived]
-        impl #impl_generics #krate::FloatingDynamics<#nq, #nv> for #ident #ty_generics #where_clause {
-            #(#fns)*
-        }
-    }
-}
-
-/// The trait's name for an argument other than `q`: `v`, `a`.
-fn public_name(argument: Argument) -> &'static str {
-    match argument {
-        Argument::Qdd => "a",
-        _ => "v",
+        #(#impls)*
     }
 }

@@ -414,7 +414,7 @@ impl Generated {
     }
 
     /// The configuration struct and function, if any method reads them.
-    fn configuration_item(
+    pub(super) fn configuration_item(
         &self,
         configuration: Option<&Shared>,
         krate: &TokenStream,
@@ -434,7 +434,7 @@ impl Generated {
 
     /// The motion struct and function, if two methods share terms in `q̇`; with a
     /// configuration, the motion function computes it too and hands both over.
-    fn motion_item(
+    pub(super) fn motion_item(
         &self,
         motion: Option<&Shared>,
         with_configuration: bool,

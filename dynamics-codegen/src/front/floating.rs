@@ -25,14 +25,10 @@ pub(super) fn free_flyer(
             "`base = floating` reads the robot from a URDF: give it with `urdf = \"robots/robot.urdf\"` (D-H tables, joint lists and description files on a floating base are not supported yet)",
         );
     }
-    let unsupported = [
-        ("tip", attrs.tip.as_ref().map(syn::LitStr::span)),
-        ("tips", attrs.tips.as_ref().map(|(_, s)| *s)),
-    ];
-    for (key, at) in unsupported {
-        if let Some(at) = at {
-            errors.push(at, format!("`{key}` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`); the kinematics of tips are to come"));
-        }
+    // `tips = [..]` names the frames of `FloatingKinematics`; a serial `tip` has no meaning
+    // on a tree that flies.
+    if let Some(at) = attrs.tip.as_ref().map(syn::LitStr::span) {
+        errors.push(at, "`tip` is not supported on a floating base: name the frames with `tips = [\"FL_FOOT\", ..]` (`FloatingKinematics`)");
     }
     let asked = attrs.families.iter().filter(|(_, &asked)| asked);
     for (family, _) in asked {

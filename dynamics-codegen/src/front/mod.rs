@@ -43,6 +43,7 @@ mod errors;
 mod fields;
 mod file;
 mod floating;
+mod floating_frames;
 mod named_file;
 mod parent;
 mod simplify;
@@ -252,8 +253,9 @@ fn lower<'a>(
             attrs.base.as_ref().map(LitStr::value),
             attrs.tip.as_ref().map(LitStr::value),
         );
-        let tips = attrs.tip_names(errors).unwrap_or_default();
-        let tips: Vec<&str> = tips.iter().map(String::as_str).collect();
+        let named_tips = attrs.tip_names(errors).unwrap_or_default();
+        let (every_branch, frames) = floating_frames::every_branch(attrs, urdf, &named_tips);
+        let tips: Vec<&str> = every_branch.iter().map(String::as_str).collect();
         let chain = Chain {
             base: base.as_deref(),
             tip: tip.as_deref(),
@@ -277,7 +279,13 @@ fn lower<'a>(
             errors,
             tracked_file,
         );
-        return named.map(|named| Derived::named(urdf, named));
+        return named.map(|mut named| {
+            // The leaves asked for beside a floating base's frames are not frames.
+            if let Some(frames) = frames {
+                named.loaded.robot.tips.truncate(frames);
+            }
+            Derived::named(urdf, named)
+        });
     }
     attrs.refuse_chain_without_urdf(errors);
     if let Some(file) = &attrs.file {

@@ -41,16 +41,29 @@ pub struct FamilySet {
 }
 
 impl Default for FamilySet {
-    /// The families every robot has.
+    /// The families every robot on a fixed base has.
     fn default() -> FamilySet {
-        let always = Family::ALL.iter().filter(|f| !f.is_opt_in());
-        FamilySet {
-            bits: always.fold(0, |bits, f| bits | f.bit()),
-        }
+        FamilySet::always(false)
     }
 }
 
 impl FamilySet {
+    /// The families every robot on a floating base has (`FloatingDynamics`'s).
+    #[must_use]
+    pub fn floating() -> FamilySet {
+        FamilySet::always(true)
+    }
+
+    /// The families that are not opt-in, of a floating base or of a fixed one.
+    fn always(floating: bool) -> FamilySet {
+        let always = Family::ALL
+            .iter()
+            .filter(|f| !f.is_opt_in() && f.is_floating() == floating);
+        FamilySet {
+            bits: always.fold(0, |bits, f| bits | f.bit()),
+        }
+    }
+
     /// This set with `family` too.
     #[must_use]
     pub fn with(self, family: Family) -> FamilySet {
@@ -92,9 +105,11 @@ mod tests {
 
     #[test]
     fn a_robot_has_every_family_but_those_it_must_ask_for() {
-        let default = FamilySet::default();
+        let (default, floating) = (FamilySet::default(), FamilySet::floating());
         for &f in Family::ALL {
-            assert_eq!(default.contains(f), !f.is_opt_in(), "{f:?}");
+            let always = !f.is_opt_in();
+            assert_eq!(default.contains(f), always && !f.is_floating(), "{f:?}");
+            assert_eq!(floating.contains(f), always && f.is_floating(), "{f:?}");
             assert!(default.with(f).contains(f));
             assert_eq!(Family::from_name(f.name()), Some(f));
         }
@@ -109,6 +124,8 @@ mod tests {
             ]
         );
         assert_eq!(default.opt_in().count(), 0);
+        let floating: Vec<_> = Family::ALL.iter().filter(|f| f.is_floating()).collect();
+        assert_eq!(floating, [&Family::Floating, &Family::FloatingForward]);
         let asked = default.with(Family::Derivatives);
         assert_eq!(asked.opt_in().collect::<Vec<_>>(), [Family::Derivatives]);
     }

@@ -2,13 +2,14 @@
 //! arguments, result, documentation, the book's equation and the names and docs of its output
 //! elements; for each family, its trait, module and whether a robot must ask for it.
 //!
-//! The rows live in `dynamics-runtime/src/methods.rs`, `base_methods.rs`, `tip_methods.rs` and
-//! `results.rs`
+//! The rows live in `dynamics-runtime/src/methods.rs`, `base_methods.rs`, `tip_methods.rs`,
+//! `floating_methods.rs` and `results.rs`
 //! (symlinked here), which
 //! the runtime's traits and nalgebra wrappers are declared from, so the traits and the
 //! generator cannot disagree. The table is data: which output of the traced equations a
 //! method returns is the trace's to say (`Method::shape`).
 
+include!("floating_methods.rs");
 include!("tip_methods.rs");
 include!("base_methods.rs");
 include!("methods.rs");
@@ -22,8 +23,8 @@ mod returns;
 pub use family::FamilySet;
 pub use returns::{Instance, Returns};
 
-/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]`, or a wrench
-/// `&[T; 6]`.
+/// An argument of a generated method: `q`, `q̇` or `q̈`, each `&[T; N]` (a floating base's `q`
+/// `&[T; Q]`, its `v` and `a` are `Qd` and `Qdd`), or a wrench `&[T; 6]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Argument {
     /// Joint positions.
@@ -66,6 +67,12 @@ macro_rules! argument {
     (qdd) => {
         Argument::Qdd
     };
+    (v) => {
+        Argument::Qd
+    };
+    (a) => {
+        Argument::Qdd
+    };
     (wrench) => {
         Argument::Wrench
     };
@@ -81,7 +88,7 @@ macro_rules! argument {
 macro_rules! declare_method {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident<$config:ident $(, $space:ident)* $(; $($count:ident $(= $_count_default:ident)?),+)?> $(: $_supertrait:ident<$($_super_argument:ident),+>)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $family_doc:literal])*
@@ -134,13 +141,24 @@ macro_rules! declare_method {
                 match self { $($(Family::$family => stringify!($trait),)*)* }
             }
 
-            /// The names of its trait's const parameters after `N`, counts of its own (the base
-            /// parameters' `B`, the links' `LINKS`), in order.
+            /// The names of its trait's const parameters after the configuration's and the
+            /// velocity's lengths, counts of its own (the base parameters' `B`, the links'
+            /// `LINKS`), in order.
             #[must_use]
             pub fn count_parameters(self) -> &'static [&'static str] {
                 match self.trait_name() {
                     $(name if name == stringify!($trait) => &[$($(stringify!($count)),+)?],)*
                     _ => &[],
+                }
+            }
+
+            /// Whether its trait is a floating base's, whose configuration (`Q`, its first const
+            /// parameter) is longer than its velocity (`N`): `FloatingDynamics<Q, N>`.
+            #[must_use]
+            pub fn is_floating(self) -> bool {
+                match self.trait_name() {
+                    $(name if name == stringify!($trait) => stringify!($config) != "N",)*
+                    _ => false,
                 }
             }
 
@@ -199,6 +217,12 @@ macro_rules! declare_method {
             #[must_use]
             pub fn in_place_name(self) -> Option<&'static str> {
                 match self { $($($(Method::$variant => None $(.or(Some(stringify!($into))))?,)*)*)* }
+            }
+
+            /// Its arguments' names in its trait, in order (a floating base's `v`, `a`).
+            #[must_use]
+            pub fn argument_names(self) -> &'static [&'static str] {
+                match self { $($($(Method::$variant => &[$(stringify!($argument)),*],)*)*)* }
             }
 
             /// Its arguments, in order.
@@ -275,10 +299,22 @@ impl Method {
         self.in_place_name().is_some() && self != Method::MassMatrix
     }
 
-    /// The method called `name`.
+    /// The method called `name` of a fixed base (a floating base's have the same names:
+    /// [`Method::from_name_on`]).
     #[must_use]
     pub fn from_name(name: &str) -> Option<Method> {
-        Method::ALL.iter().copied().find(|m| m.name() == name)
+        Method::from_name_on(name, false)
+    }
+
+    /// The method called `name` of a floating base (`floating`) or of a fixed one.
+    #[must_use]
+    pub fn from_name_on(name: &str, floating: bool) -> Option<Method> {
+        let on = |m: &Method| m.family().is_floating() == floating;
+        Method::ALL
+            .iter()
+            .copied()
+            .filter(on)
+            .find(|m| m.name() == name)
     }
 
     /// What element `(i, j)` (from 0; `j` 0 for a vector, both for a scalar) is, in the
@@ -346,9 +382,35 @@ mod tests {
     }
 
     #[test]
+    fn a_floating_base_has_rows_of_its_own_named_as_its_trait_names_them() {
+        use super::{Argument, Family};
+        let floating: Vec<Method> = Method::ALL
+            .iter()
+            .copied()
+            .filter(|m| m.family().is_floating())
+            .collect();
+        assert!(floating.iter().all(|m| m.family() == Family::Floating));
+        assert_eq!(Family::Floating.trait_name(), "FloatingDynamics");
+        let tau = Method::FloatingInverseDynamics;
+        assert_eq!(tau.argument_names(), ["q", "v", "a"]);
+        assert_eq!(tau.arguments(), [Argument::Q, Argument::Qd, Argument::Qdd]);
+        assert_eq!(Method::InverseDynamics.argument_names(), ["q", "qd", "qdd"]);
+        assert_eq!(
+            Method::from_name_on("inverse_dynamics", true),
+            Some(Method::FloatingInverseDynamics)
+        );
+        assert_eq!(
+            Method::from_name("inverse_dynamics"),
+            Some(Method::InverseDynamics)
+        );
+        assert!(!Family::Dynamics.is_floating());
+    }
+
+    #[test]
     fn every_method_is_complete() {
         for &m in Method::ALL {
-            assert_eq!(Method::from_name(m.name()), Some(m));
+            let floating = m.family().is_floating();
+            assert_eq!(Method::from_name_on(m.name(), floating), Some(m));
             assert!(!m.doc().is_empty() && !m.summary().is_empty(), "{m:?}");
             // Every method reads q but friction's, the joints' regressor and the parameters.
             let reads_q = m.arguments().first() == Some(&super::Argument::Q);

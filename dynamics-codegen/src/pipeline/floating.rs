@@ -14,10 +14,12 @@ pub(crate) fn expand_floating(
     parsed: &Input,
     flyer: &FreeFlyer,
 ) -> TokenStream {
-    let eq = trace::derive_floating(&parsed.robot, flyer);
+    let mut eq = trace::derive_floating(&parsed.robot, flyer);
+    let kinematics = eq.floating_kinematics(&parsed.robot, flyer);
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = identifiers::field_readers(&eq.fields);
     let items = emit::floating_items(&eq, &fields, &krate, input);
+    let kinematics = emit::floating_kinematics_items(&eq, &kinematics, &fields, &krate, input);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
             const _: &[u8] = ::core::include_bytes!(#path);
@@ -27,6 +29,7 @@ pub(crate) fn expand_floating(
         const _: () = {
             #track
             #items
+            #kinematics
         };
     }
 }

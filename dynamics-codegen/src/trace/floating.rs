@@ -1,6 +1,7 @@
 //! The equations of a tree on a free-flying base ([`algo::floating_rnea`],
 //! [`algo::floating_crba`]): `M`, the bias `h = C v + g`, `τ = M a + h` and the generalized
-//! gravity `g`, each `6 + n` long, in one graph.
+//! gravity `g`, each `6 + n` long, and the forward dynamics and `M⁻¹` through the LDLᵀ of `M`
+//! factored from the tips, in one graph.
 //!
 //! The coordinates are numbered as the velocity's: the base's six (`0..6`), then joint i at
 //! `6 + i` ([`Var::Q`], [`Var::SinQ`], [`Var::Qd`], [`Var::Qdd`] alike). The configuration
@@ -11,7 +12,7 @@
 
 use super::expr::Expr;
 use super::tracer::{joint_index, Tracer};
-use super::{Equations, ForwardEquations, KinematicEquations};
+use super::{Equations, KinematicEquations};
 use crate::algo::{self, FloatingBase, Inertial, Mat3, RobotScalars, V3};
 use crate::method::FamilySet;
 use crate::model::{FreeFlyer, JointKind, Robot};
@@ -62,6 +63,9 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
         .collect();
     let angle_offsets = tracer.angle_offsets();
     let nothing = zero.id();
+    // The base is the root of the tree: factored from the tips, each branch's joints reach
+    // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
+    let forward = super::forward::forward(&graph, &mass, &bias, &vec![nothing; nv], true);
     Equations {
         graph: graph.into_inner(),
         dof: nv,
@@ -80,17 +84,8 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
         kinetic_energy: nothing,
         potential_energy: nothing,
         kinematics: KinematicEquations::default(),
-        forward: ForwardEquations {
-            factors: algo::Ldlt {
-                lower: Vec::new(),
-                pivots: Vec::new(),
-                inverse_pivots: Vec::new(),
-                reversed: false,
-            },
-            mass_inverse: Vec::new(),
-            qdd: Vec::new(),
-        },
-        families: FamilySet::default(),
+        forward,
+        families: FamilySet::floating(),
         derivatives: None,
         regressor: None,
         base_parameters: None,
@@ -100,7 +95,7 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
 }
 
 /// The free flyer's body and frame 0's placement on it, as expressions.
-fn floating_base<'g>(
+pub(super) fn floating_base<'g>(
     tracer: &Tracer<'g>,
     robot: &Robot,
     flyer: &FreeFlyer,

@@ -30,6 +30,9 @@ mod derivatives;
 mod energy;
 mod expr;
 mod floating;
+mod floating_kinematics;
+#[cfg(test)]
+mod floating_kinematics_tests;
 mod forward;
 mod friction;
 mod gravity;
@@ -62,6 +65,7 @@ use cost::matrix_ids;
 pub use derivatives::DerivativeEquations;
 pub use expr::Expr;
 pub use floating::{derive_floating, BASE_COORDINATES};
+pub use floating_kinematics::FloatingKinematicEquations;
 pub use forward::ForwardEquations;
 use joints::JointTerms;
 pub use kinematics::KinematicEquations;
@@ -163,7 +167,12 @@ impl Equations {
                     };
                 }
                 // Built by the `simplify` stage, which needs the envelope and tolerances.
-                Family::Simplified | Family::Dynamics | Family::Kinematics | Family::Forward => {}
+                Family::Simplified
+                | Family::Dynamics
+                | Family::Kinematics
+                | Family::Forward
+                | Family::Floating
+                | Family::FloatingForward => {}
             }
         }
     }

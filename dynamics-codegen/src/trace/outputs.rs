@@ -177,12 +177,12 @@ impl Method {
     #[must_use]
     pub fn shape(self, eq: &Equations) -> Shape<'_> {
         match self {
-            Method::MassMatrix => Shape::Matrix(&eq.mass),
+            Method::MassMatrix | Method::FloatingMassMatrix => Shape::Matrix(&eq.mass),
             Method::CoriolisMatrix => Shape::Matrix(&eq.coriolis),
             Method::CoriolisTorques => Shape::Vector(&eq.coriolis_torques),
-            Method::GravityTorques => Shape::Vector(&eq.gravity),
-            Method::BiasTorques => Shape::Vector(&eq.bias),
-            Method::InverseDynamics => Shape::Vector(&eq.tau),
+            Method::GravityTorques | Method::FloatingGravity => Shape::Vector(&eq.gravity),
+            Method::BiasTorques | Method::FloatingBiasForces => Shape::Vector(&eq.bias),
+            Method::InverseDynamics | Method::FloatingInverseDynamics => Shape::Vector(&eq.tau),
             Method::FrictionTorques => Shape::Vector(&eq.friction),
             Method::KineticEnergy => Shape::Scalar(eq.kinetic_energy),
             Method::PotentialEnergy => Shape::Scalar(eq.potential_energy),
@@ -198,11 +198,11 @@ impl Method {
             Method::JointTorquesForBaseWrench => {
                 Shape::Vector(&eq.kinematics.torques_for_base_wrench)
             }
-            Method::MassMatrixInverse => Shape::SolvedMatrix {
+            Method::MassMatrixInverse | Method::FloatingMassMatrixInverse => Shape::SolvedMatrix {
                 pivots: &eq.forward.factors.pivots,
                 matrix: &eq.forward.mass_inverse,
             },
-            Method::ForwardDynamics => Shape::SolvedVector {
+            Method::ForwardDynamics | Method::FloatingForwardDynamics => Shape::SolvedVector {
                 pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },

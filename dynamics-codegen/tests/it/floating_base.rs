@@ -1,5 +1,5 @@
 //! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
-//! and nothing else, and every key or family this slice does not support is a compile error
+//! and `FloatingKinematics<19, 18, F>` and nothing else, and every key or family this slice does not support is a compile error
 //! naming it (never methods that would be wrong on a flying base).
 
 use dynamics_codegen::derive_dynamics;
@@ -15,7 +15,7 @@ fn solo(keys: &str) -> String {
 }
 
 #[test]
-fn a_floating_base_implements_floating_dynamics_only() {
+fn a_floating_base_implements_the_floating_traits_only() {
     for keys in ["base = floating", "base = floating(\"base_link\")"] {
         let out = solo(keys);
         assert!(!out.contains("compile_error"), "{keys}: {out}");
@@ -24,7 +24,20 @@ fn a_floating_base_implements_floating_dynamics_only() {
             "{out}"
         );
         assert!(!out.contains(":: Dynamics <"), "{out}");
+        // The URDF's moving leaves, the feet, are the frames by default.
+        assert!(
+            out.contains("FloatingKinematics < 19usize , 18usize , 4usize >"),
+            "{out}"
+        );
+        assert!(out.contains("FRAME_FL_FOOT"), "{out}");
     }
+    let feet = solo("base = floating, tips = [\"FL_FOOT\", \"HR_FOOT\"]");
+    assert!(!feet.contains("compile_error"), "{feet}");
+    assert!(
+        feet.contains("FloatingKinematics < 19usize , 18usize , 2usize >"),
+        "{feet}"
+    );
+    assert!(feet.contains("FRAME_HR_FOOT"), "{feet}");
 }
 
 #[test]
@@ -39,12 +52,8 @@ fn what_a_floating_base_does_not_have_yet_is_refused() {
             "`regressor = true` is not supported on a floating base yet",
         ),
         (
-            "base = floating, tips = [\"FL_FOOT\"]",
-            "`tips` is not supported on a floating base yet",
-        ),
-        (
             "base = floating, tip = \"FL_FOOT\"",
-            "`tip` is not supported on a floating base yet",
+            "`tip` is not supported on a floating base: name the frames with `tips",
         ),
         (
             "base = floating, simplify(tolerance_percent = 1)",

@@ -48,7 +48,7 @@ pub use layout::{States, StatesMut};
 pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
-    DynamicsSimplifiedBatch, TipKinematicsBatch,
+    DynamicsSimplifiedBatch, FloatingDynamicsBatch, TipKinematicsBatch,
 };
 
 use crate::lanes::{Lanes, SplitLanes};

@@ -113,7 +113,7 @@ fn chunk_size<const L: usize>(len: usize, threads: usize) -> usize {
 macro_rules! declare_parallel {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$($count:ident $(= $_count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
+        trait $trait:ident<$config:ident $(, $space:ident)* $(; $($count:ident $(= $_count_default:ident)?),+)?> $(: $_supertrait:ident<$($_super_argument:ident),+>)?, nalgebra $_nalgebra:ident, batch $_batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -128,7 +128,7 @@ macro_rules! declare_parallel {
         }
     )*) => {$(
         // The trait's generics as one token tree, which its methods' repetition can carry.
-        parallel_impl!($trait [$($($count)+)?] {$($(
+        parallel_impl!($trait [$config $($space)*] [$($($count)+)?] {$($(
             fn $name($($argument),*) -> $result $(, $batch_fn)?;
         )*)*});
     )*};
@@ -136,7 +136,10 @@ macro_rules! declare_parallel {
 
 /// One trait's methods on [`InParallel`].
 macro_rules! parallel_impl {
-    ($trait:ident $generics:tt {$(
+    // A floating base's (`FloatingDynamics<Q, N>`) has none yet: its methods' names are
+    // `Dynamics`' and an inherent impl cannot hold both.
+    ($trait:ident [$config:ident $space:ident] $generics:tt { $($_methods:tt)* }) => {};
+    ($trait:ident [N] $generics:tt {$(
         fn $name:ident($($argument:ident),*) -> $result:ident $(, $batch:ident)?;
     )*}) => {
         impl<R: ?Sized + Sync> InParallel<'_, R> {$(

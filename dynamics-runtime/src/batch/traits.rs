@@ -11,7 +11,7 @@ use crate::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives, NotPositiveD
 macro_rules! declare_batch {
     ($(
         $(#[doc = $_trait_doc:literal])*
-        trait $trait:ident $(<$($count:ident $(= $count_default:ident)?),+>)? $(: $_supertrait:ident)?, nalgebra $_nalgebra:ident, batch $batch:ident {
+        trait $trait:ident<$config:ident $(, $space:ident)* $(; $($count:ident $(= $count_default:ident)?),+)?> $(: $_supertrait:ident<$($_super_argument:ident),+>)?, nalgebra $_nalgebra:ident, batch $batch:ident {
             items { $($_items:tt)* }
             $(
                 $(#[doc = $_family_doc:literal])*
@@ -27,31 +27,31 @@ macro_rules! declare_batch {
     )*) => {$(
         #[doc = concat!("The [`", stringify!($trait), "`](crate::", stringify!($trait), ") methods over many states ")]
         #[doc = "([`batch`](crate::batch)), implemented for every type that implements it."]
-        pub trait $batch<const N: usize $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<N $($(, $count)+)?> {
+        pub trait $batch<const $config: usize $(, const $space: usize)* $($(, const $count: usize $(= $count_default)?)+)?>: crate::$trait<$config $(, $space)* $($(, $count)+)?> {
             $($(
-                batch_method!($trait fn $name($($argument),*) -> $result; $($batch_fn)?);
+                batch_method!($trait $config fn $name($($argument),*) -> $result; $($batch_fn)?);
             )*)*
         }
 
-        impl<R: crate::$trait<N $($(, $count)+)?> + ?Sized, const N: usize $($(, const $count: usize)+)?>
-            $batch<N $($(, $count)+)?> for R {}
+        impl<R: crate::$trait<$config $(, $space)* $($(, $count)+)?> + ?Sized, const $config: usize $(, const $space: usize)* $($(, const $count: usize)+)?>
+            $batch<$config $(, $space)* $($(, $count)+)?> for R {}
     )*};
 }
 
 /// The `_batch` form of one method, if its row names one: the derivatives' states in the lanes
 /// of [`DerivativesBatchScalar`], the others' in those of [`BatchScalar`].
 macro_rules! batch_method {
-    ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident;) => {};
-    ($trait:ident fn $name:ident($($argument:ident),*) -> inverse_derivatives; $batch:ident) => {
-        batch_method!(@ DerivativesBatchScalar $trait fn $name($($argument),*) -> inverse_derivatives; $batch);
+    ($trait:ident $config:ident fn $name:ident($($argument:ident),*) -> $result:ident;) => {};
+    ($trait:ident $config:ident fn $name:ident($($argument:ident),*) -> inverse_derivatives; $batch:ident) => {
+        batch_method!(@ DerivativesBatchScalar $trait $config fn $name($($argument),*) -> inverse_derivatives; $batch);
     };
-    ($trait:ident fn $name:ident($($argument:ident),*) -> forward_derivatives; $batch:ident) => {
-        batch_method!(@ DerivativesBatchScalar $trait fn $name($($argument),*) -> forward_derivatives; $batch);
+    ($trait:ident $config:ident fn $name:ident($($argument:ident),*) -> forward_derivatives; $batch:ident) => {
+        batch_method!(@ DerivativesBatchScalar $trait $config fn $name($($argument),*) -> forward_derivatives; $batch);
     };
-    ($trait:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
-        batch_method!(@ BatchScalar $trait fn $name($($argument),*) -> $result; $batch);
+    ($trait:ident $config:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+        batch_method!(@ BatchScalar $trait $config fn $name($($argument),*) -> $result; $batch);
     };
-    (@ $scalar:ident $trait:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
+    (@ $scalar:ident $trait:ident $config:ident fn $name:ident($($argument:ident),*) -> $result:ident; $batch:ident) => {
         #[doc = concat!("[`", stringify!($trait), "::", stringify!($name), "`](crate::", stringify!($trait), "::", stringify!($name), ") of every state, into `out`: ")]
         #[doc = "[`batch`](crate::batch) has the layouts and what a failed solve writes."]
         ///
@@ -63,7 +63,7 @@ macro_rules! batch_method {
         #[track_caller]
         fn $batch<T: $scalar<L>, const L: usize>(
             &self,
-            $($argument: &batch_input!($argument, T),)*
+            $($argument: &batch_input!($argument, T, $config),)*
             out: &mut (impl StatesMut<array_result!($result)> + ?Sized),
         ) {
             let len = out.count();
@@ -79,10 +79,12 @@ macro_rules! batch_method {
     };
 }
 
-/// The type of a method's input states: a wrench has six values, the joint variables `N`.
+/// The type of a method's input states: a wrench has six values, the configuration `C` (the
+/// trait's first const parameter), the other joint variables `N`.
 macro_rules! batch_input {
-    (wrench, $t:ident) => { (impl States<$t, 6> + ?Sized) };
-    ($joint:ident, $t:ident) => { (impl States<$t, N> + ?Sized) };
+    (q, $t:ident, $config:ident) => { (impl States<$t, $config> + ?Sized) };
+    (wrench, $t:ident, $config:ident) => { (impl States<$t, 6> + ?Sized) };
+    ($joint:ident, $t:ident, $config:ident) => { (impl States<$t, N> + ?Sized) };
 }
 
 for_each_method!(declare_batch);

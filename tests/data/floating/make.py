@@ -21,7 +21,16 @@ For each robot of ROBOTS this script
 5. writes the model as "pinocchio_model" (`pinocchio_model`), the free flyer first, then the
    joints in the file's order, for `bench/pinocchio/bench.cpp` (header-only Pinocchio, no URDF
    parser), and checks that the model rebuilt from it (`rebuild`, as bench.cpp builds it) gives
-   every sample's M and tau to 1e-12.
+   every sample's M and tau to 1e-12;
+6. for the robots of CONFIGURATION_SPACE (Solo 12), draws, from a second generator
+   (seeded SEED + 1, so that the states above stay as they were), per state a generalized
+   force `tau_in` uniform in [-20, 20], a velocity step `dv` uniform in [-1.5, 1.5] (its base
+   rotation up to 2.6 rad) and a second configuration `q1` as q is drawn; on sample #1 the
+   step's rotation is tiny (1e-9 rad), for the Taylor branch; and writes the forward dynamics
+   `a_fd = aba(q, v, tau_in)`, `M_inv` (`computeMinverse`, its upper triangle mirrored),
+   `q_next = integrate(q, dv)`, `dq = difference(q, q1)`, and the Jacobians `dIntegrate` by q
+   and by v at (q, dv) and `dDifference` by q0 and by q1 at (q, q1); it checks
+   M a_fd + h = tau_in, M M_inv = 1 and integrate(q, dq) = q1.
 
 Usage, from the repository root (Pinocchio 4.1, the `pin` wheel):
 
@@ -46,6 +55,9 @@ ROBOTS = {
     "anymal_b": "robots/urdf/floating/anymal_b.urdf",
     "g1_29dof": "robots/urdf/floating/g1_29dof.urdf",
 }
+# The robots whose forward dynamics, M^-1 and configuration space are written (step 6). Not the
+# G1: its M's condition (light wrists beside a heavy trunk) puts aba's M a + h - tau above 1e-12.
+CONFIGURATION_SPACE = ["solo12"]
 SEED = 20261129
 SAMPLES = 12
 TOLERANCE = 1e-12
@@ -144,6 +156,36 @@ def sample(rng, model, k):
     return q, rng.uniform(-2, 2, model.nv), rng.uniform(-2, 2, model.nv)
 
 
+def configuration_space(rng, model, data, k, q, v, m, h):
+    """Forward dynamics, M^-1, integrate, difference and their Jacobians at state k."""
+    tau_in = rng.uniform(-20, 20, model.nv)
+    dv = rng.uniform(-1.5, 1.5, model.nv)
+    if k == 1:
+        dv[3:6] *= 1e-9
+    q1, _, _ = sample(rng, model, 2)
+    a_fd = pin.aba(model, data, q, v, tau_in).copy()
+    m_inv = pin.computeMinverse(model, data, q).copy()
+    m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+    q_next = pin.integrate(model, q, dv)
+    dq = pin.difference(model, q, q1)
+    assert scaled(m @ a_fd + h, tau_in) < TOLERANCE
+    assert scaled(m @ m_inv, np.eye(model.nv)) < TOLERANCE
+    back = pin.integrate(model, q, dq)
+    assert scaled(back[7:], q1[7:]) < TOLERANCE and scaled(back[:3], q1[:3]) < TOLERANCE
+    # The same rotation: the quaternions equal up to sign.
+    assert min(scaled(back[3:7], q1[3:7]), scaled(back[3:7], -q1[3:7])) < TOLERANCE
+    jacobians = {
+        "dintegrate_dq": pin.dIntegrate(model, q, dv, pin.ARG0),
+        "dintegrate_dv": pin.dIntegrate(model, q, dv, pin.ARG1),
+        "ddifference_dq0": pin.dDifference(model, q, q1, pin.ARG0),
+        "ddifference_dq1": pin.dDifference(model, q, q1, pin.ARG1),
+    }
+    out = {"tau_in": tau_in.tolist(), "a_fd": a_fd.tolist(), "M_inv": m_inv.tolist(),
+           "dv": dv.tolist(), "q_next": q_next.tolist(), "q1": q1.tolist(), "dq": dq.tolist()}
+    out.update({key: np.asarray(j).tolist() for key, j in jacobians.items()})
+    return out
+
+
 def make(name, urdf):
     path = os.path.join(ROOT, urdf)
     model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
@@ -152,6 +194,7 @@ def make(name, urdf):
     names = list(model.names)[2:]
     assert model.joints[1].shortname() == "JointModelFreeFlyer"
     rng = np.random.default_rng(SEED)
+    extra = np.random.default_rng(SEED + 1)
     samples = []
     for k in range(SAMPLES):
         q, v, a = sample(rng, model, k)
@@ -163,8 +206,12 @@ def make(name, urdf):
         assert scaled(m @ a + h, tau) < TOLERANCE
         assert scaled(pin.rnea(model, data, q, np.zeros(model.nv), np.zeros(model.nv)), g) < TOLERANCE
         q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
-        samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
-                        "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()})
+        state = {"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
+                 "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist()}
+        if name in CONFIGURATION_SPACE:
+            assert names == order, "computed in Pinocchio's joint order"
+            state.update(configuration_space(extra, model, data, k, q, v, m, h))
+        samples.append(state)
     record = pinocchio_model(model, names, order)
     check_rebuilt(record, samples)
     with open(path, "rb") as f:
@@ -193,6 +240,84 @@ def make(name, urdf):
     print(name, model.nq, model.nv, "mass %.4f" % sum(i.mass for i in model.inertias))
 
 
+# Frames of KINEMATICS[name] (the feet of Solo 12: its leaf links), read by `kinematics`.
+KINEMATICS = {"solo12": ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"]}
+
+
+def kinematics(name, urdf):
+    """The kinematic outputs at the states of `<name>.json` (issue 43, item 2), written to
+    `<name>_kinematics.json`: the centre of mass (`centerOfMass`) and its Jacobian
+    (`jacobianCenterOfMass`), the centroidal momentum matrix A_G (`computeCentroidalMap`) and
+    dA_G v (`computeCentroidalMapTimeVariation`, times v), and for each frame its placement in
+    the world, its Jacobian (`getFrameJacobian`) and its classical acceleration at a = 0
+    (`getFrameClassicalAcceleration`: the origin's acceleration in the world, dJ v) in LOCAL
+    and LOCAL_WORLD_ALIGNED. Checks A_G's linear rows = m Jcom, A_G v = the momentum about the
+    CoM computed body by body, and dA_G v against a central difference of A_G along the motion."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    frames = KINEMATICS[name]
+    ids = [model.getFrameId(f) for f in frames]
+    mass = sum(i.mass for i in model.inertias)
+    zero = np.zeros(model.nv)
+    samples = []
+    for s in states:
+        q, v = np.array(s["q"]), np.array(s["v"])
+        com = pin.centerOfMass(model, data, q).copy()
+        jcom = pin.jacobianCenterOfMass(model, data, q).copy()
+        ag = pin.computeCentroidalMap(model, data, q).copy()
+        dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
+        assert scaled(ag[:3], mass * jcom) < TOLERANCE
+        # A_G v: each body's momentum about the CoM, in world axes (body velocities in world).
+        pin.forwardKinematics(model, data, q, v)
+        momentum = pin.Force.Zero()
+        for k in range(1, model.njoints):
+            momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
+        h = pin.SE3(np.eye(3), com).actInv(momentum)
+        assert scaled(ag @ v, h.vector) < TOLERANCE
+        step = 1e-6
+        diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
+                - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
+        assert scaled(diff @ v, dag @ v) < 1e-6
+        pin.forwardKinematics(model, data, q, v, zero)
+        pin.updateFramePlacements(model, data)
+        pin.computeJointJacobians(model, data, q)
+        out = {"com": com.tolist(), "Jcom": jcom.tolist(), "Ag": ag.tolist(), "dAg_v": (dag @ v).tolist(),
+               "frames": {}}
+        for frame, i in zip(frames, ids):
+            placement = data.oMf[i]
+            entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
+            for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
+                jac = pin.getFrameJacobian(model, data, i, ref)
+                acc = pin.getFrameClassicalAcceleration(model, data, i, ref).vector
+                assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
+                entry["J_" + key] = jac.tolist()
+                entry["dJv_" + key] = acc.tolist()
+            out["frames"][frame] = entry
+        samples.append(out)
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (kinematics) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v of its samples, in order)",
+        "frames": frames,
+        "mass": mass,
+        "conventions": "com and Jcom in the world frame; Ag, dAg_v: [linear; angular] momentum about the CoM in "
+                       "world axes; frame rotation and translation in the world; J_local, dJv_local in the frame's "
+                       "axes, J_world_aligned, dJv_world_aligned in world axes at the frame's origin; dJv = "
+                       "getFrameClassicalAcceleration at a = 0 ([origin's acceleration; angular acceleration])",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_kinematics.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "kinematics:", len(samples), "samples,", len(frames), "frames")
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
+    for name, urdf in ROBOTS.items():
+        if name in KINEMATICS:
+            kinematics(name, urdf)

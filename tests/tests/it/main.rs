@@ -9,6 +9,8 @@ mod batch;
 mod derivatives;
 mod energy_drift;
 mod floating_base;
+mod floating_forward;
+mod floating_kinematics;
 mod forward_dynamics;
 mod friction;
 mod front_door;

@@ -14,6 +14,7 @@
 
 mod floating;
 mod inertial;
+mod leaves;
 mod limits;
 mod mimic;
 mod robot;
@@ -29,6 +30,7 @@ use super::sources::{Loaded, Positions};
 use crate::check::{joint_count, Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::model::{FrameProblem, Robot};
 pub use floating::free_flyer;
+pub use leaves::moving_leaves;
 pub use limits::joint_limits;
 pub use xml::Limit;
 

@@ -1,0 +1,1 @@
+../../../dynamics-runtime/src/floating_methods.rs

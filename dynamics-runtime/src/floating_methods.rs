@@ -1,0 +1,115 @@
+// The method table's rows of a robot on a free-flying base (`base = floating`), apart from
+// `methods.rs` for its length: `for_each_tip_method!` hands every other row to
+// `for_each_floating_method!`, which adds these and calls the callback with all of them (the
+// same `include!`d symlink in `dynamics-codegen`). The trait's first const parameter, `Q`, is
+// the configuration's length (`n + 7`), `N` the velocity's (`n + 6`): `q` is `&[T; Q]`, `v`, `a`
+// and `tau` are `&[T; N]`, and the results' `N` is the velocity's.
+
+/// Calls `$callback!` with the rows given and the floating base's trait row after them.
+macro_rules! for_each_floating_method {
+    ($callback:ident { $($rows:tt)* }) => {
+        $callback! {
+            $($rows)*
+            /// Closed-form dynamics of a kinematic tree on a free-flying base, Pinocchio's free
+            /// flyer: `τ = M(q) a + h(q, v)`, and its forward dynamics. Implemented by `#[derive(Dynamics)]` for a robot
+            /// with `base = floating` (see `docs/floating-base.md`).
+            ///
+            /// The configuration `q` has `Q = NQ = n + 7` entries,
+            /// `[x, y, z, qx, qy, qz, qw, q_1 … q_n]`: the base origin in the world, the base
+            /// orientation as a unit quaternion, then the joints. The velocity `v` and
+            /// acceleration `a` have `N = NV = n + 6`, `[v_x, v_y, v_z, ω_x, ω_y, ω_z, q̇_1 …]`:
+            /// the base origin's velocity and the base's angular velocity, both in the base
+            /// frame, then the joint rates. The first six rows of a generalized force are the
+            /// wrench on the base, `[f_x, f_y, f_z, m_x, m_y, m_z]` in the base frame, its moment
+            /// about the base origin.
+            ///
+            /// The quaternion is read as given: its rotation matrix is the polynomial of its
+            /// components, a rotation only if it is unit (as in Pinocchio). Only gravity reads
+            /// it; nothing reads the base position.
+            trait FloatingDynamics<Q, N>, nalgebra FloatingDynamicsNalgebra, batch FloatingDynamicsBatch {
+                items {
+                    /// The configuration's length, `n + 7`.
+                    const NQ: usize = Q;
+                    /// The velocity's length, `n + 6`.
+                    const NV: usize = N;
+                }
+                /// M, h, τ and g of a floating base.
+                family Floating {
+                    name: floating,
+                    module: "__floating",
+                    opt_in: false,
+                    adjective: "floating ",
+                }
+                methods {
+                    /// The mass matrix `M(q)`, base rows and columns first (Pinocchio's `crba`,
+                    /// symmetric).
+                    fn mass_matrix(q) -> matrix, nalgebra mass_matrix_na, batch mass_matrix_batch {
+                        variant: FloatingMassMatrix,
+                        equation: None,
+                        prefix: "m",
+                        summary: "M(q) of a floating base, its rows first.",
+                        element: "M{i}{j} = M{j}{i}",
+                        diagonal: "M{i}{i}",
+                    }
+                    /// The bias `h(q, v) = C(q, v) v + g(q)` (Pinocchio's `nonLinearEffects`).
+                    fn bias_forces(q, v) -> vector, nalgebra bias_forces_na, batch bias_forces_batch {
+                        variant: FloatingBiasForces,
+                        equation: None,
+                        prefix: "h",
+                        summary: "h(q, v) = C(q, v) v + g(q) of a floating base.",
+                        element: "centripetal, Coriolis and gravity force {i}",
+                    }
+                    /// Inverse dynamics `τ = M(q) a + h(q, v)` (Pinocchio's `rnea`): the base's six
+                    /// rows are the wrench the base needs (from contacts), the others the joint
+                    /// torques.
+                    fn inverse_dynamics(q, v, a) -> vector, nalgebra inverse_dynamics_na, batch inverse_dynamics_batch {
+                        variant: FloatingInverseDynamics,
+                        equation: None,
+                        prefix: "tau",
+                        summary: "τ = M(q) a + h(q, v) of a floating base, the base's wrench first.",
+                        element: "generalized force {i}",
+                    }
+                    /// The generalized gravity `g(q)` (Pinocchio's `computeGeneralizedGravity`).
+                    fn generalized_gravity(q) -> vector, nalgebra generalized_gravity_na, batch generalized_gravity_batch {
+                        variant: FloatingGravity,
+                        equation: None,
+                        prefix: "g",
+                        summary: "g(q) of a floating base.",
+                        element: "gravity force {i}",
+                    }
+                }
+                /// Forward dynamics and `M⁻¹` of a floating base, through the LDLᵀ of `M`.
+                family FloatingForward {
+                    name: floating_forward,
+                    module: "__floating_forward",
+                    opt_in: false,
+                    adjective: "floating forward ",
+                }
+                methods {
+                    /// The inverse of the mass matrix, `M(q)⁻¹` (Pinocchio's `computeMinverse`),
+                    /// through the LDLᵀ of `M` factored from the tips (Featherstone's `Lᵀ D L`,
+                    /// the base last); `Err(NotPositiveDefinite)` where a pivot is not positive
+                    /// (on lane types, where at least one lane's is not).
+                    fn mass_matrix_inverse(q) -> solved_matrix, nalgebra mass_matrix_inverse_na, batch mass_matrix_inverse_batch {
+                        variant: FloatingMassMatrixInverse,
+                        equation: None,
+                        prefix: "mi",
+                        summary: "M(q)⁻¹ of a floating base, through the LDLᵀ of M.",
+                        element: "(M^-1){i}{j}",
+                    }
+                    /// Forward dynamics without contact, `a = M(q)⁻¹ (tau − h(q, v))` (Pinocchio's
+                    /// `aba`), through the same factors: the inverse of `inverse_dynamics`, the
+                    /// base's six entries of `tau` a wrench on the base in its frame.
+                    /// `Err(NotPositiveDefinite)` where a pivot is not positive.
+                    fn forward_dynamics(q, v, tau) -> solved_vector, nalgebra forward_dynamics_na, batch forward_dynamics_batch {
+                        variant: FloatingForwardDynamics,
+                        equation: None,
+                        prefix: "acc",
+                        summary: "a = M(q)⁻¹ (τ − h(q, v)) of a floating base.",
+                        element: "acceleration {i}",
+                    }
+                }
+            }
+        }
+    };
+}

@@ -1,0 +1,93 @@
+//! The forward dynamics and `M⁻¹` of a robot on a free-flying base, and their nalgebra and
+//! batch forms: Solo 12 against Pinocchio 4.1's `aba` and `computeMinverse`
+//! (`tests/data/floating/solo12.json`, by `make.py`), to 1e-12 scaled.
+
+use dynamics_reference::scaled_error;
+use dynamics_runtime::{FloatingDynamics, FloatingDynamicsBatch, NotPositiveDefinite};
+
+/// The bar: 1e-12, scaled by max(1, the largest element).
+const TOLERANCE: f64 = 1e-12;
+
+#[derive(dynamics_runtime::Dynamics)]
+#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
+struct Solo12;
+
+fn numbers(x: &serde_json::Value) -> Vec<f64> {
+    x.as_array()
+        .expect("a list")
+        .iter()
+        .map(|e| e.as_f64().expect("a number"))
+        .collect()
+}
+
+fn array<const N: usize>(x: &serde_json::Value) -> [f64; N] {
+    numbers(x).try_into().expect("the length")
+}
+
+fn flat(x: &serde_json::Value) -> Vec<f64> {
+    x.as_array()
+        .expect("rows")
+        .iter()
+        .flat_map(numbers)
+        .collect()
+}
+
+pub(crate) fn samples() -> Vec<serde_json::Value> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/floating/solo12.json");
+    let text = std::fs::read_to_string(path).expect("the data");
+    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    data["samples"].as_array().expect("samples").clone()
+}
+
+#[test]
+fn forward_dynamics_and_inverse_mass_against_pinocchio() {
+    let samples = samples();
+    assert!(samples.len() >= 10);
+    for (k, s) in samples.iter().enumerate() {
+        let (q, v, tau) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["v"]),
+            array::<18>(&s["tau_in"]),
+        );
+        let a = Solo12
+            .forward_dynamics(&q, &v, &tau)
+            .expect("M is positive definite");
+        let error = scaled_error(&a, &numbers(&s["a_fd"]));
+        assert!(error < TOLERANCE, "sample {k}: aba off by {error:e}");
+        let inverse = Solo12
+            .mass_matrix_inverse(&q)
+            .expect("M is positive definite");
+        let got: Vec<f64> = inverse.iter().flatten().copied().collect();
+        let error = scaled_error(&got, &flat(&s["M_inv"]));
+        assert!(error < TOLERANCE, "sample {k}: M⁻¹ off by {error:e}");
+        // The inverse of inverse dynamics: τ(q, v, a(τ)) = τ.
+        let back = Solo12.inverse_dynamics(&q, &v, &a);
+        let error = scaled_error(&back, &tau);
+        assert!(error < TOLERANCE, "sample {k}: rnea(aba) off by {error:e}");
+    }
+}
+
+/// The batch form gives each state's scalar result, bit for bit, and a state whose M is not
+/// positive definite (a NaN joint angle: a NaN pivot) is reported, not computed.
+#[test]
+fn batch_form_agrees_with_the_scalar_calls() {
+    let samples = samples();
+    let mut q: Vec<[f64; 19]> = samples.iter().map(|s| array(&s["q"])).collect();
+    let v: Vec<[f64; 18]> = samples.iter().map(|s| array(&s["v"])).collect();
+    let tau: Vec<[f64; 18]> = samples.iter().map(|s| array(&s["tau_in"])).collect();
+    q[5][8] = f64::NAN;
+    let mut out = vec![Ok([0.0; 18]); q.len()];
+    Solo12.forward_dynamics_batch(&q[..], &v[..], &tau[..], &mut out[..]);
+    for (k, got) in out.iter().enumerate() {
+        let expected = Solo12.forward_dynamics(&q[k], &v[k], &tau[k]);
+        match (got, expected) {
+            (Ok(a), Ok(b)) => {
+                let bits = |x: &[f64; 18]| x.map(f64::to_bits);
+                assert_eq!(bits(a), bits(&b), "state {k}");
+            }
+            (Err(NotPositiveDefinite), Err(NotPositiveDefinite)) => assert_eq!(k, 5),
+            (a, b) => panic!("state {k}: {a:?} against {b:?}"),
+        }
+    }
+    assert!(out[5].is_err());
+}
