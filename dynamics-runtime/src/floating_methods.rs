@@ -32,6 +32,30 @@ macro_rules! for_each_floating_method {
                     const NQ: usize = Q;
                     /// The velocity's length, `n + 6`.
                     const NV: usize = N;
+                    /// Pinocchio's `integrate(q, v)`: the configuration reached from `q` by the
+                    /// velocity `v` held for unit time, the base moved by SE(3)'s exponential of
+                    /// its twist (in its own frame), the quaternion renormalised to first order,
+                    /// the joints `q_i + v_i`. The same function for every robot (in the runtime,
+                    /// not generated); `f32` and `f64`.
+                    #[inline]
+                    fn integrate<T: crate::RealScalar>(&self, q: &[T; Q], v: &[T; N]) -> [T; Q] {
+                        crate::configuration::integrate(q, v)
+                    }
+                    /// Pinocchio's `difference(q0, q1)`: the velocity `v` with
+                    /// `integrate(q0, v) = q1`, the base's the logarithm of `M0⁻¹ M1` (the shorter
+                    /// rotation), the joints `q1_i − q0_i`.
+                    #[inline]
+                    fn difference<T: crate::RealScalar>(&self, q0: &[T; Q], q1: &[T; Q]) -> [T; N] {
+                        crate::configuration::difference(q0, q1)
+                    }
+                    /// Pinocchio's `dIntegrate(q, v, ARG1)`: `∂ integrate(q, v) / ∂v`, in the
+                    /// tangent space at the result (the base's block SE(3)'s right Jacobian of
+                    /// `v`'s twist, the joints' the identity); it does not depend on `q`.
+                    #[inline]
+                    fn integrate_jacobian_v<T: crate::RealScalar>(&self, q: &[T; Q], v: &[T; N]) -> [[T; N]; N] {
+                        let _ = q;
+                        crate::configuration::integrate_jacobian(v)
+                    }
                 }
                 /// M, h, τ and g of a floating base.
                 family Floating {

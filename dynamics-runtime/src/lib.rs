@@ -76,6 +76,7 @@ mod derivatives;
 mod dynamics;
 // After `dynamics`, whose `array_result!` it reads.
 pub mod batch;
+mod configuration;
 mod factor;
 mod floating_kinematics;
 pub mod lanes;

@@ -389,8 +389,13 @@ mod tests {
             .copied()
             .filter(|m| m.family().is_floating())
             .collect();
-        assert!(floating.iter().all(|m| m.family() == Family::Floating));
-        assert_eq!(Family::Floating.trait_name(), "FloatingDynamics");
+        assert!(floating
+            .iter()
+            .all(|m| m.family().trait_name() == "FloatingDynamics"));
+        assert_eq!(
+            Method::FloatingForwardDynamics.argument_names(),
+            ["q", "v", "tau"]
+        );
         let tau = Method::FloatingInverseDynamics;
         assert_eq!(tau.argument_names(), ["q", "v", "a"]);
         assert_eq!(tau.arguments(), [Argument::Q, Argument::Qd, Argument::Qdd]);

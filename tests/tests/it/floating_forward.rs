@@ -91,3 +91,33 @@ fn batch_form_agrees_with_the_scalar_calls() {
     }
     assert!(out[5].is_err());
 }
+
+/// `integrate`, `difference` and `∂ integrate / ∂v` against Pinocchio's, sample #1's step a
+/// rotation of 1e-9 rad (the Taylor branch), the others up to 2.6 rad.
+#[test]
+fn configuration_space_against_pinocchio() {
+    for (k, s) in samples().iter().enumerate() {
+        let (q, dv, q1) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["dv"]),
+            array::<19>(&s["q1"]),
+        );
+        let moved = Solo12.integrate(&q, &dv);
+        let error = scaled_error(&moved, &numbers(&s["q_next"]));
+        assert!(error < TOLERANCE, "sample {k}: integrate off by {error:e}");
+        let d = Solo12.difference(&q, &q1);
+        let error = scaled_error(&d, &numbers(&s["dq"]));
+        assert!(error < TOLERANCE, "sample {k}: difference off by {error:e}");
+        let j: Vec<f64> = Solo12
+            .integrate_jacobian_v(&q, &dv)
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        let error = scaled_error(&j, &flat(&s["dintegrate_dv"]));
+        assert!(
+            error < TOLERANCE,
+            "sample {k}: dIntegrate/dv off by {error:e}"
+        );
+    }
+}

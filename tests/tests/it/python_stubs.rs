@@ -92,7 +92,8 @@ fn render() -> String {
          # --test it python_stubs` rewrites them to the end marker. Each input is one state, shape\n    \
          # (n,), or a batch, shape (N, n); the result has (N,) before one state's shape for a batch.\n"
     );
-    for &method in Method::ALL {
+    // Python loads no floating base yet: its rows are left out.
+    for &method in Method::ALL.iter().filter(|m| !m.family().is_floating()) {
         text += &declaration(method);
     }
     text + END
