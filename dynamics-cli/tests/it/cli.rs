@@ -6,6 +6,7 @@
 
 use crate::runner::{dynamics, dynamics_in, root};
 use dynamics_reference::scaled_error;
+use dynamics_test_support::Scratch;
 use serde_json::Value;
 use std::process::Output;
 
@@ -127,11 +128,8 @@ fn eval_with_parameters() {
 /// Writes `text` to a fresh file named `name` and runs `dynamics inspect` on it; returns the
 /// path as given and the error output (the run must fail with exit code 1).
 fn inspect_bad_file(name: &str, text: &str) -> (String, String) {
-    let dir = std::env::temp_dir().join(format!("dynamics-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, text).expect("write");
-    let path = path.to_string_lossy().into_owned();
+    let dir = Scratch::new("cli");
+    let path = dir.write(name, text).to_string_lossy().into_owned();
     let out = dynamics(&["inspect", &path]);
     assert_eq!(
         out.status.code(),
@@ -228,15 +226,12 @@ fn file_errors_have_line_and_column() {
 /// 0 + 0 < 0.35), as the derive does; about z0 = z1 the link's inertia is Izz.
 #[test]
 fn check_inertia_opt_out() {
-    let dir = std::env::temp_dir().join(format!("dynamics-cli-opt-out-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join("opt_out.toml");
-    std::fs::write(
-        &path,
+    let dir = Scratch::new("cli-opt-out");
+    let path = dir.write(
+        "opt_out.toml",
         "name = \"arm\"\ngravity = [0, 0, -9.81]\n\n[[joints]]\ntype = \"revolute\"\nmass = 1\n\
          inertia = [0, 0, 0.35, 0, 0, 0]\ncheck_inertia = false\n",
-    )
-    .expect("write");
+    );
     let out = stdout(&dynamics(&["inspect", &path.to_string_lossy()]));
     assert!(out.contains("D11 = 0.35"), "{out}");
 }
@@ -346,22 +341,21 @@ fn version() {
 /// unknown option.
 #[test]
 fn double_dash_ends_the_options() {
-    let dir = std::env::temp_dir().join(format!("dynamics-cli-dash-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let scratch = Scratch::new("cli-dash");
     // One link of length 2 with a point mass 3 at its end, turning in the plane of gravity.
-    std::fs::write(
-        dir.join("-x.json"),
+    let _ = scratch.write(
+        "-x.json",
         r#"{"name": "arm", "gravity": [0, -9.81, 0], "joints": [{"type": "revolute", "a": 2, "mass": 3}]}"#,
-    )
-    .expect("write");
-    let out = dynamics_in(&dir, &["eval", "--q", "0", "--json", "--", "-x.json"]);
+    );
+    let dir = scratch.path();
+    let out = dynamics_in(dir, &["eval", "--q", "0", "--json", "--", "-x.json"]);
     let got: Value = serde_json::from_str(&stdout(&out)).expect("JSON");
     // Held horizontal: τ = m g a = 3 · 9.81 · 2; M = m a² = 12.
     assert!((numbers(&got["tau"])[0] - 58.86).abs() < 1e-12, "{got}");
     assert!((numbers(&got["M"])[0] - 12.0).abs() < 1e-12, "{got}");
 
     // Read as the short option `-x`.
-    let out = dynamics_in(&dir, &["inspect", "-x.json"]);
+    let out = dynamics_in(dir, &["inspect", "-x.json"]);
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("unexpected argument '-x'"), "{err}");

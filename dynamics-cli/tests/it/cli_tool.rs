@@ -3,6 +3,7 @@
 //! that declares a tool.
 
 use crate::runner::{dynamics, root};
+use dynamics_test_support::Scratch;
 
 /// The printed line of `name` (`px`, `J11`, …) of `dynamics inspect --kinematics` with `args`.
 fn entry(args: &[&str], name: &str) -> String {
@@ -64,8 +65,8 @@ fn a_turned_tool_turns_the_hand_axes() {
 fn a_tool_is_refused_where_the_file_has_one() {
     let arm = std::fs::read_to_string(root().join("robots/articulated_3r.toml")).expect("read");
     let with_tool = arm.replace("gravity =", "tool = [0, 0, 1, 0, 0, 0]\ngravity =");
-    let file = std::env::temp_dir().join(format!("dynamics-tool-{}.toml", std::process::id()));
-    std::fs::write(&file, with_tool).expect("write");
+    let dir = Scratch::new("tool");
+    let file = dir.write("arm.toml", &with_tool);
     let file = file.to_str().expect("UTF-8 path");
     let cases: [(&[&str], &str); 3] = [
         (
@@ -91,5 +92,4 @@ fn a_tool_is_refused_where_the_file_has_one() {
     }
     // Without --tool the file's own tool is taken.
     assert_eq!(entry(&[file], "px"), "C1(a2 C2 + a3 C23) + S1");
-    std::fs::remove_file(file).expect("remove");
 }

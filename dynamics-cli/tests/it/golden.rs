@@ -21,6 +21,7 @@
 //!
 //! and review the change with `git diff`.
 
+use dynamics_test_support::Scratch;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -213,12 +214,10 @@ fn no_orphan_golden_files() {
 fn stale_file_is_reported_with_a_diff() {
     let case = &cases()[0];
     let actual = run(&case.args);
-    let dir = std::env::temp_dir().join(format!("dynamics-golden-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let file = dir.join("stale.txt");
+    let dir = Scratch::new("golden");
     let stale = actual.replacen("D11 = ", "D11 = 2 ", 1);
     assert_ne!(stale, actual, "the example prints D11");
-    std::fs::write(&file, &stale).expect("write");
+    let file = dir.write("stale.txt", &stale);
     let err = check(&file, &actual).expect_err("a stale file must fail");
     let line = actual
         .lines()
@@ -228,7 +227,6 @@ fn stale_file_is_reported_with_a_diff() {
     assert!(err.contains("D11 = 2 "), "{err}");
     std::fs::write(&file, &actual).expect("write");
     assert_eq!(check(&file, &actual), Ok(()));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -1,5 +1,6 @@
 //! Test helpers shared by the workspace's tests, written once: a seeded random generator
-//! ([`Rng`]) and the relative error measures ([`error_over`], [`relative_error`]).
+//! ([`Rng`]), the relative error measures ([`error_over`], [`relative_error`]) and a scratch
+//! directory removed when the test ends ([`Scratch`]).
 //!
 //! The crate has no dependencies, so that every crate of the workspace, the generator and the
 //! runtime included, can take it as a dev-dependency: `dynamics-tests` (the integration tests)
@@ -11,6 +12,8 @@
 
 mod error;
 mod rng;
+mod scratch;
 
 pub use error::{error_over, relative_error};
 pub use rng::Rng;
+pub use scratch::Scratch;
