@@ -164,7 +164,8 @@ impl<S: Scalar> ChainJoint<S> {
 /// `I_vv' = s² I_uu + 2cs I_uv + c² I_vv = I_uu + I_vv − I_uu'`,
 /// `I_uv' = cs (I_uu − I_vv) + (c² − s²) I_uv`; the products with the third axis w turn as a
 /// vector.
-fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6] {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn rotate_inertia<S: Scalar>(i: [S; 6], s: S, c: S, u: usize, v: usize) -> [S; 6] {
     // Index of the product of two axes in [xx, yy, zz, xy, xz, yz].
     let product = |a: usize, b: usize| match (a.min(b), a.max(b)) {
         (0, 1) => 3,

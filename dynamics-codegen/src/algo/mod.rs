@@ -5,7 +5,8 @@
 //! All of them work on a [`Chain`]: the robot re-expressed with one frame per joint, on the
 //! joint's axis (the modified D-H form), which both D-H conventions convert to exactly.
 
-mod body;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod body;
 mod chain;
 mod coriolis;
 mod crba;
@@ -18,7 +19,8 @@ mod kinematics;
 mod ldlt;
 mod projection;
 mod regroup;
-mod rnea;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod rnea;
 mod robot;
 mod runs;
 #[cfg(test)]

@@ -192,7 +192,8 @@ fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
 /// A link's angular velocity `ω` and acceleration `ω̇` as Khalil writes them: the products
 /// `ω_i ω_j` and `U = [ω̇]× + [ω]×[ω]×`, which the link's force, its moment and the next
 /// link's acceleration all read.
-struct Rates<S> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Rates<S> {
     /// `ω̇`.
     wd: V3<S>,
     /// `[ω_x², ω_y², ω_z², ω_x ω_y, ω_x ω_z, ω_y ω_z]`.
@@ -202,7 +203,8 @@ struct Rates<S> {
 }
 
 impl<S: Scalar> Rates<S> {
-    fn new(w: V3<S>, wd: V3<S>) -> Rates<S> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn new(w: V3<S>, wd: V3<S>) -> Rates<S> {
         let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
         let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
         let u = [
@@ -233,7 +235,8 @@ impl<S: Scalar> Rates<S> {
     /// `a ω̇_x − d U_zx + e U_yx + f (ω_y² − ω_z²) + (c − b) ω_y ω_z`, and y and z follow by
     /// turning the axes. 30 operations against 42, the off-diagonal `U_ij` being shared with
     /// the forces.
-    fn inertial_moment(&self, inertia: [S; 6]) -> V3<S> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn inertial_moment(&self, inertia: [S; 6]) -> V3<S> {
         let [xx, yy, zz, xy, xz, yz] = self.products;
         let (u, wd) = (&self.u, self.wd);
         let [a, b, c, d, e, f] = inertia;

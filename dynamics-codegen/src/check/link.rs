@@ -131,7 +131,8 @@ fn principal_moments_problem(i: &[f64]) -> Option<String> {
 }
 
 /// A number with four significant digits, for messages.
-pub(super) fn short(x: f64) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn short(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return format!("{x}");
     }

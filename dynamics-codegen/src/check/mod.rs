@@ -13,7 +13,8 @@ mod count;
 mod drive;
 mod eigenvalues;
 mod friction;
-mod link;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod link;
 mod tree;
 
 pub use count::{joint_count, MAX_JOINTS, MAX_TREE_JOINTS};

@@ -11,7 +11,8 @@ use crate::trace::Equations;
 
 /// Where an expression is written, which decides whether it needs parentheses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Place {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Place {
     /// A statement's right-hand side, an array element, a function's argument.
     Top,
     /// Left of `+` or `−`.
@@ -26,7 +27,8 @@ pub(crate) enum Place {
 
 /// How tightly a written form binds, loosest first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Precedence {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Precedence {
     /// `a + b`, `a − b`, and a negated sum.
     Sum,
     /// `a * b`, `1 / a`.
@@ -40,7 +42,8 @@ pub(crate) enum Precedence {
 /// Whether a form of precedence `p` needs parentheses at `place`: a sum anywhere but first in
 /// a sum, a product right of `*` or `/`, and a prefix minus as a right operand (`a + (-b)`,
 /// `a * (-b)`) or under another.
-pub(crate) fn needs_parentheses(p: Precedence, place: Place) -> bool {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn needs_parentheses(p: Precedence, place: Place) -> bool {
     match (p, place) {
         (Precedence::Atom, _) | (_, Place::Top | Place::AddLeft) => false,
         (Precedence::Sum, _) => true,
@@ -51,7 +54,8 @@ pub(crate) fn needs_parentheses(p: Precedence, place: Place) -> bool {
 
 /// A binary operator.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Operator {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Operator {
     Add,
     Sub,
     Mul,
@@ -60,7 +64,8 @@ pub(crate) enum Operator {
 
 /// A function of one argument that the graph calls.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Function {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Function {
     Sin,
     Cos,
     Tanh,

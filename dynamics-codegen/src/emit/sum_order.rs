@@ -15,19 +15,27 @@ const FMA_LATENCY: u32 = 4;
 /// included), subtracted or added, and whether it is a product that a fused multiply-add can
 /// take.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct SumTerm {
-    pub(crate) depth: u32,
-    pub(crate) negative: bool,
-    pub(crate) fusable: bool,
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct SumTerm {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub depth: u32,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub negative: bool,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fusable: bool,
 }
 
 /// One addition of [`sum_order`]: partial sums `a` and `b` (indices: the terms, then each
 /// addition's result in turn), with `b` a product that a fused multiply-add takes if `fused`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) struct Addition {
-    pub(super) a: usize,
-    pub(super) b: usize,
-    pub(super) fused: bool,
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Addition {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub a: usize,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub b: usize,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fused: bool,
 }
 
 /// The order in which the terms of a sum are added: repeatedly the two that are ready first
@@ -43,14 +51,16 @@ pub(super) struct Addition {
 /// the order in which the algorithm met the terms may start with the latest and carry it
 /// through all the others, and a chain of n terms ready together waits n − 1 operations where
 /// pairs wait about log₂ n.
-pub(super) fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn sum_order(terms: &[SumTerm]) -> (Vec<Addition>, u32) {
     let mut additions = Vec::with_capacity(terms.len().saturating_sub(1));
     let depth = order(terms, |addition| additions.push(addition));
     (additions, depth)
 }
 
 /// The depth of [`sum_order`] alone, without its additions: what every sum's depth asks.
-pub(super) fn sum_depth(terms: &[SumTerm]) -> u32 {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn sum_depth(terms: &[SumTerm]) -> u32 {
     order(terms, |_| {})
 }
 

@@ -33,7 +33,8 @@ pub(super) fn section(functions: &[Function]) -> String {
 }
 
 /// One batch function: a loop over the states that calls the single-state function.
-fn definition(f: &Function) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn definition(f: &Function) -> String {
     let ty = f.precision.c_type();
     let mut parameters = vec!["size_t n".to_owned()];
     let mut call = Vec::new();

@@ -186,7 +186,8 @@ impl Function {
 
     /// Its definition, with the method table's summary as its comment; `sign` names the header's sign
     /// function of the function's precision.
-    pub(super) fn definition(&self, eq: &Equations, sign: &str) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn definition(&self, eq: &Equations, sign: &str) -> String {
         let mut text = format!("{}{} {{\n", comment(eq, self.method), self.signature());
         if self.plans_lanes(eq) {
             // gcc's vectors are 256 bits wide by default even where the target has AVX-512.
@@ -284,7 +285,8 @@ fn comment(eq: &Equations, method: Method) -> String {
 /// method table's `q̇`, `τ`, `ᵀ` spelled `qd`, `tau`, `^T`; a control character, such as the
 /// NUL compilers refuse or a line break of a robot's name, and any other character `?`), and
 /// without the `*/` that would end the comment early.
-pub(super) fn comment_safe(text: &str) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn comment_safe(text: &str) -> String {
     let mut ascii = String::with_capacity(text.len());
     for c in text.chars() {
         match c {

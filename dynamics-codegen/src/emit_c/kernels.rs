@@ -12,13 +12,16 @@ include!("trig_constants.rs");
 
 /// One constant of the runtime's kernels: its value, and its literal in the runtime's source.
 #[derive(Clone, Copy)]
-pub(super) struct Constant {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Constant {
     /// The value, in the runtime's type (a `float` one widened exactly).
-    value: f64,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub value: f64,
     /// The literal as the runtime spells it, `-1.666_666_666_666_663_243_48e-1`.
     source: &'static str,
     /// Whether the runtime's type is `f32`.
-    single: bool,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub single: bool,
     /// Whether the literal is a `double` rounded to the type (`… _f64 as f32`).
     rounded: bool,
 }
@@ -29,7 +32,8 @@ macro_rules! define_constants {
         $(
             $(#[$doc])*
             #[allow(clippy::cast_possible_truncation, clippy::unnecessary_cast, clippy::excessive_precision)]
-            pub(super) const $name: Constant = Constant {
+            #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+            pub const $name: Constant = Constant {
                 value: {
                     const VALUE: $ty = $value $(as $cast)?;
                     VALUE as f64
@@ -49,7 +53,8 @@ impl Constant {
     /// The C literal of the runtime's: its sign and digits without the `_` that group them
     /// (nor the space `stringify!` may put after a minus) and without the Rust suffix, `f`
     /// after a `float`'s, `(float)` before a `double` rounded to `float`.
-    pub(super) fn decimal(self) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn decimal(self) -> String {
         let digits: String = self
             .source
             .chars()
@@ -64,7 +69,8 @@ impl Constant {
     }
 
     /// The value exactly, as [`hexadecimal`] writes it, `f` after a `float`'s.
-    pub(super) fn hex(self) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn hex(self) -> String {
         let text = hexadecimal(self.value);
         if self.single {
             text + "f"
@@ -76,7 +82,8 @@ impl Constant {
 
 /// A normal `x` as a hexadecimal literal, exact: printf's `%a` (`0x1.921fb5444p+0`,
 /// `-0x1.2aep-18`), but a power of two as `0x1p16`.
-fn hexadecimal(x: f64) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn hexadecimal(x: f64) -> String {
     debug_assert!(x.is_normal(), "{x} is not a normal number");
     let bits = x.to_bits();
     let sign = if x < 0.0 { "-" } else { "" };

@@ -8,7 +8,8 @@ use crate::symbolic::Number;
 
 /// The first of `unitless` (the plain-number terms of an angle) that exceeds 2π in magnitude,
 /// with the message for it; `quoted` writes the suggestions as description-file strings.
-pub(crate) fn unitless_angle(unitless: &[Unitless], quoted: bool) -> Option<(&Unitless, String)> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn unitless_angle(unitless: &[Unitless], quoted: bool) -> Option<(&Unitless, String)> {
     let term = unitless
         .iter()
         .find(|t| t.value.to_f64().abs() > std::f64::consts::TAU)?;
@@ -17,7 +18,8 @@ pub(crate) fn unitless_angle(unitless: &[Unitless], quoted: bool) -> Option<(&Un
 
 /// "an angle of 90 without a unit is 90 radians (5157°): write `90 deg`, or `90 rad` if you
 /// mean radians".
-pub(crate) fn message(value: Number, quoted: bool) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn message(value: Number, quoted: bool) -> String {
     let x = value.to_f64();
     // As a decimal: `6.3`, not the exact `63/10` (which would read as 63 / (10 deg)).
     let text = match value {

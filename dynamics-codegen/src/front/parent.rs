@@ -6,7 +6,8 @@ use std::collections::BTreeMap;
 
 /// A `parent` as written: a number or a name.
 #[derive(Clone, Copy)]
-pub(crate) enum ParentRef<'a> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum ParentRef<'a> {
     Number(u64),
     Name(&'a str),
 }
@@ -14,7 +15,8 @@ pub(crate) enum ParentRef<'a> {
 /// Joint `i`'s (0-based) antecedent: an earlier joint (0-based), or `None` for the base;
 /// `count` joints, `names` the index of each named one. The message names the parent as
 /// written, for the caller to place (and to prefix with the joint it is about).
-pub(crate) fn resolve(
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn resolve(
     i: usize,
     parent: ParentRef,
     count: usize,

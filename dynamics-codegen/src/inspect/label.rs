@@ -5,7 +5,8 @@ use super::print::Printer;
 
 /// A quantity of the equations of motion, each printed in its own section.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Quantity {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Quantity {
     /// The inertia `D_ij` (eq. 6.43).
     Inertia,
     /// The centripetal and Coriolis coefficient `D_ijk` (eq. 6.44).
@@ -62,7 +63,8 @@ impl Quantity {
 
 /// The name of one printed equation: `D12`, `D112`, `T1`, `D11 + I1(act)`.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(super) struct Label {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Label {
     quantity: Quantity,
     /// 0-based joint indices.
     joints: Vec<usize>,
@@ -71,7 +73,8 @@ pub(super) struct Label {
 }
 
 impl Label {
-    pub(super) fn new(quantity: Quantity, joints: &[usize]) -> Label {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn new(quantity: Quantity, joints: &[usize]) -> Label {
         Label {
             quantity,
             joints: joints.to_vec(),
@@ -80,7 +83,8 @@ impl Label {
     }
 
     /// The same name with the actuator inertia added.
-    pub(super) fn with_actuator_inertia(self) -> Label {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn with_actuator_inertia(self) -> Label {
         Label {
             actuator_inertia: true,
             ..self
@@ -88,7 +92,8 @@ impl Label {
     }
 
     /// The name as `printer` writes it.
-    pub(super) fn render(&self, printer: &Printer<'_>) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn render(&self, printer: &Printer<'_>) -> String {
         if self.quantity == Quantity::HandPose {
             // The book's `n_x` … `p_z`: column letter, row axis.
             let column = ["n", "o", "a", "p"][self.joints[1]];

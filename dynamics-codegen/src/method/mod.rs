@@ -248,7 +248,8 @@ macro_rules! declare_method {
 
             /// The doc template of an element, on the diagonal or not (`{i}`, `{j}`,
             /// `{equation}` to fill in).
-            fn element_template(self, diagonal: bool) -> &'static str {
+            #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+            pub fn element_template(self, diagonal: bool) -> &'static str {
                 match self {
                     $($($(Method::$variant => {
                         let on_diagonal: Option<&'static str> = None $(.or(Some($diagonal)))?;

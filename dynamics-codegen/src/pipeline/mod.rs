@@ -267,7 +267,8 @@ pub fn problems(robot: &Robot, check_inertia: bool) -> Vec<String> {
 /// trace → the opt-in families → simplify: the one spelling of the pipeline's second half, for
 /// the derive and [`Loaded::equations`]. The simplified models' outcome beside the equations,
 /// which the derive still expands when they fail (with the error in place of their methods).
-pub(crate) fn equations(
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn equations(
     robot: &Robot,
     families: FamilySet,
     simplification: Option<&Simplification>,

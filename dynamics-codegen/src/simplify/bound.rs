@@ -41,7 +41,8 @@ fn angle_range(a: AngleSum, envelope: &Envelope, offsets: &[f64]) -> Option<(f64
 }
 
 /// The largest `|s|` over the envelope; `Err` for a parameter, which no envelope bounds.
-pub(super) fn symbol_bound(s: &Sym, envelope: &Envelope, offsets: &[f64]) -> Result<f64, String> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn symbol_bound(s: &Sym, envelope: &Envelope, offsets: &[f64]) -> Result<f64, String> {
     let joint = |i: &u16| {
         envelope
             .joints

@@ -18,7 +18,7 @@ pub const P: u64 = (1 << 61) - 1;
 
 /// An element of `ℤ/p`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Fp(u64);
+pub struct Fp(#[doc(hidden)] pub u64); // The field public for the generator's tests.
 
 impl Fp {
     pub const ZERO: Fp = Fp(0);

@@ -49,7 +49,8 @@ mod outputs;
 mod regressor;
 mod simplified;
 mod tips;
-mod tracer;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod tracer;
 #[cfg(test)]
 mod tree_tests;
 

@@ -214,7 +214,8 @@ fn rational_point(angle: f64) -> (Fp, Fp) {
 }
 
 /// Sine and cosine of an exact multiple `k` of π when they are rational.
-fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
     // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
     let quarter_turns = k.mul(Number::int(2)).as_integer()?;
     Some(match quarter_turns.rem_euclid(4) {

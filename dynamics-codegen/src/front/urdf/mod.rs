@@ -19,7 +19,8 @@ mod mimic;
 mod robot;
 mod select;
 mod tree;
-mod xml;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod xml;
 
 #[cfg(test)]
 mod tests;

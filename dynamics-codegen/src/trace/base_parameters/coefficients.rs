@@ -46,7 +46,8 @@ pub(super) fn numbers(
 }
 
 /// The rational whose residue is `residue`, where it is `x` to rounding; else `x`.
-fn exact_or_float(residue: Fp, x: f64) -> Number {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn exact_or_float(residue: Fp, x: f64) -> Number {
     let rational = residue
         .to_small_rational(HEIGHT)
         .and_then(|(a, b)| Number::ratio(a, b));
@@ -95,7 +96,8 @@ fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64
 
 /// `argmin ‖A x − b‖` for `A` of full column rank (rows given), by Householder QR on columns
 /// scaled to unit norm.
-fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
     let (m, k) = (a.len(), a.first().map_or(0, Vec::len));
     let scale: Vec<f64> = (0..k)
         .map(|j| {

@@ -10,7 +10,8 @@ use crate::symbolic::{Graph, Node, NodeId, Var};
 use std::collections::HashMap;
 
 /// The relations found.
-pub(super) struct Relations {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Relations {
     /// The pivot columns, ascending.
     pub pivots: Vec<usize>,
     /// Per column, its coefficients on `pivots` (a pivot: 1 on itself).
@@ -20,11 +21,8 @@ pub(super) struct Relations {
 /// The relations between `columns[c][i]` (column c, row i), in the columns' order, or `None`
 /// where the columns depend on a leaf that is not a joint variable (a struct field).
 /// The leaf [`Var::Exact`]`(k)` is `leaves[k]`.
-pub(super) fn relations(
-    graph: &Graph,
-    columns: &[Vec<NodeId>],
-    leaves: &[Fp],
-) -> Option<Relations> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn relations(graph: &Graph, columns: &[Vec<NodeId>], leaves: &[Fp]) -> Option<Relations> {
     let outputs: Vec<NodeId> = columns.iter().flatten().copied().collect();
     let mask = modular::needed(graph, &outputs);
     let only_joint_variables = graph.nodes().all(|(id, node)| {
