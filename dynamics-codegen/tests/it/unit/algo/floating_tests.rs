@@ -3,12 +3,12 @@
 //! wrench), `M` by composite bodies against Newton-Euler's columns on hand-built trees, and
 //! Solo 12 against Pinocchio's free flyer (`tests/data/floating/`).
 
-use super::tree_tests::{at, chain, robot, trees, R};
-use super::{
+use crate::unit::algo::tree_tests::{at, chain, robot, trees, R};
+use dynamics_codegen::algo::{
     floating_crba, floating_gravity, floating_rnea, quaternion_rotation, Chain, FloatingBase,
     Inertial, Mat3, V3,
 };
-use crate::model::{Robot, Value};
+use dynamics_codegen::model::{Robot, Value};
 
 /// A body of mass 2 with its centre of mass off the origin and a full inertia tensor.
 fn lopsided() -> Inertial<f64> {
@@ -177,20 +177,20 @@ fn composite_bodies_agree_with_newton_euler() {
 }
 
 /// The robot and floating body of `robots/urdf/floating/<name>.urdf`.
-fn urdf_robot(name: &str) -> (Robot, crate::model::FreeFlyer) {
+fn urdf_robot(name: &str) -> (Robot, dynamics_codegen::model::FreeFlyer) {
     let path = format!(
         "{}/../robots/urdf/floating/{name}.urdf",
         env!("CARGO_MANIFEST_DIR")
     );
     let text = std::fs::read_to_string(&path).expect("the URDF");
-    let chain = crate::front::Chain::default();
-    let loaded = crate::front::load_urdf(&path, &text, chain, true).expect("loads");
-    let flyer = crate::front::free_flyer(&text, None).expect("a floating body");
+    let chain = dynamics_codegen::front::Chain::default();
+    let loaded = dynamics_codegen::front::load_urdf(&path, &text, chain, true).expect("loads");
+    let flyer = dynamics_codegen::front::free_flyer(&text, None).expect("a floating body");
     (loaded.robot, flyer)
 }
 
 /// The numbers of a robot's floating base: its body and where frame 0 sits.
-fn numeric_base(robot: &Robot, flyer: &crate::model::FreeFlyer) -> FloatingBase<f64> {
+fn numeric_base(robot: &Robot, flyer: &dynamics_codegen::model::FreeFlyer) -> FloatingBase<f64> {
     let v = |x: &Value| x.eval(&|_| None).expect("a number");
     let b = &flyer.body;
     let link = Inertial {

@@ -3,11 +3,11 @@
 //! kinetic energy from the links' velocities by differences of their poses, `g = ∂P/∂q`,
 //! `Ṁ = C + Cᵀ` and the Jacobian by central differences.
 
-use super::{
+use dynamics_codegen::algo::{
     coriolis_matrix, crba, crba_derivative, gravity_torques, jacobian_in_base, kinematics,
     kinetic_energy, potential_energy, projected_torques, rnea, Chain, JointKind, RobotScalars, V3,
 };
-use crate::model::{Branch, Convention, Joint, Link, Robot, Value};
+use dynamics_codegen::model::{Branch, Convention, Joint, Link, Robot, Value};
 
 /// One joint of a hand-built robot: its antecedent (`Some` makes it a tree joint), kind, γ, b
 /// and a seed its geometry and link follow from.
@@ -66,7 +66,7 @@ pub(crate) fn robot(specs: &[Spec], tree: bool) -> Robot {
         convention: Convention::Modified,
         gravity: [0.5, -1.0, -9.7].map(v),
         joints,
-        base: crate::model::Pose::identity(),
+        base: dynamics_codegen::model::Pose::identity(),
         tool: None,
         tips: Vec::new(),
     }
@@ -186,7 +186,7 @@ fn kinetic_by_poses(robot: &Robot, q: &[f64], qd: &[f64]) -> f64 {
         let c = link.com.each_ref().map(val);
         let [xx, yy, zz, xy, xz, yz] = link.inertia.each_ref().map(val);
         let inertia = [[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]];
-        let point = |f: &super::Frame<f64>| {
+        let point = |f: &dynamics_codegen::algo::Frame<f64>| {
             let r = &f.rotation.m;
             let p = f.position;
             [
