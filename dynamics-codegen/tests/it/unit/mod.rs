@@ -4,3 +4,4 @@
 //! derive and every test; a unit test binary compiled it a second time.
 
 mod algo;
+mod check;
