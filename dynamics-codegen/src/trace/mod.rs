@@ -36,14 +36,8 @@ mod gravity;
 mod joints;
 mod kinematics;
 mod lane_solve;
-#[cfg(test)]
-mod lane_solve_tests;
 mod mass;
 mod mimic;
-#[cfg(test)]
-mod mimic_regressor_tests;
-#[cfg(test)]
-mod mimic_tests;
 mod newton_euler;
 mod outputs;
 mod regressor;
@@ -51,8 +45,6 @@ mod simplified;
 mod tips;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod tracer;
-#[cfg(test)]
-mod tree_tests;
 
 use crate::algo::{JointKind, RobotScalars};
 use crate::method::{Family, FamilySet};

@@ -225,24 +225,3 @@ pub fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
         _ => (Number::MINUS_ONE, Number::ZERO),
     })
 }
-
-#[cfg(test)]
-mod tests {
-    use super::exact_sin_cos;
-    use crate::symbolic::Number;
-
-    #[test]
-    fn exact_angles() {
-        let half = Number::ratio(1, 2).unwrap();
-        assert_eq!(exact_sin_cos(half), Some((Number::ONE, Number::ZERO)));
-        assert_eq!(
-            exact_sin_cos(-half),
-            Some((Number::MINUS_ONE, Number::ZERO))
-        );
-        assert_eq!(
-            exact_sin_cos(Number::ONE),
-            Some((Number::ZERO, Number::MINUS_ONE))
-        );
-        assert_eq!(exact_sin_cos(Number::ratio(1, 3).unwrap()), None);
-    }
-}

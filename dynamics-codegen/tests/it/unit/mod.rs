@@ -5,3 +5,4 @@
 
 mod algo;
 mod check;
+mod trace;

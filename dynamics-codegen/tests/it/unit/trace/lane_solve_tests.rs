@@ -3,12 +3,12 @@
 //! central differences of `q̈ = M⁻¹(τ − C q̇ − g)` by the f64 algorithms, solved by Gaussian
 //! elimination, and `M⁻¹` against that elimination; every lane due after what it reads.
 
-use crate::algo::tree_tests::{chain, robot, trees, At};
-use crate::algo::{crba, rnea, RobotScalars};
-use crate::method::{Family, FamilySet};
-use crate::model::Robot;
-use crate::pipeline::{equations, State, Values};
-use crate::symbolic::{Of, Tangents};
+use crate::unit::algo::tree_tests::{chain, robot, trees, At};
+use dynamics_codegen::algo::{crba, rnea, RobotScalars};
+use dynamics_codegen::method::{Family, FamilySet};
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::pipeline::{equations, State, Values};
+use dynamics_codegen::symbolic::{Of, Tangents};
 
 const Q: [f64; 5] = [-0.4, 0.9, 0.15, -1.3, 0.7];
 const QD: [f64; 5] = [0.3, -1.2, 0.6, 0.9, -0.5];

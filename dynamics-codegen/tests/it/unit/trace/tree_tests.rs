@@ -4,14 +4,14 @@
 //! central differences, the regressor and the base parameters against τ), and `M`'s entries
 //! off the ancestry as exact zeros of the graph.
 
-use crate::algo::tree_tests::{chain, robot, symmetric_last, trees, At};
-use crate::algo::{
+use crate::unit::algo::tree_tests::{chain, robot, symmetric_last, trees, At};
+use dynamics_codegen::algo::{
     coriolis_matrix, crba, jacobian_in_base, kinematics, kinetic_energy, potential_energy, rnea,
     RobotScalars, V3,
 };
-use crate::method::{Family, FamilySet};
-use crate::model::Robot;
-use crate::pipeline::{equations, State};
+use dynamics_codegen::method::{Family, FamilySet};
+use dynamics_codegen::model::Robot;
+use dynamics_codegen::pipeline::{equations, State};
 
 const Q: [f64; 5] = [-0.4, 0.9, 0.15, -1.3, 0.7];
 const QD: [f64; 5] = [0.3, -1.2, 0.6, 0.9, -0.5];
@@ -106,8 +106,8 @@ fn check(robot: &Robot) {
 /// regressor times their parameters give τ.
 fn check_families(
     robot: &Robot,
-    eq: &crate::trace::Equations,
-    at: &crate::pipeline::Values,
+    eq: &dynamics_codegen::trace::Equations,
+    at: &dynamics_codegen::pipeline::Values,
     tau: &[f64],
 ) {
     let n = robot.dof();
@@ -175,8 +175,11 @@ fn check_families(
 }
 
 /// Each lane of a plan of tangents: the sum of its terms, `± Π factors · (lane or e_j)`.
-fn tangent_lanes(plan: &crate::symbolic::Tangents, at: &crate::pipeline::Values) -> Vec<Vec<f64>> {
-    use crate::symbolic::Of;
+fn tangent_lanes(
+    plan: &dynamics_codegen::symbolic::Tangents,
+    at: &dynamics_codegen::pipeline::Values,
+) -> Vec<Vec<f64>> {
+    use dynamics_codegen::symbolic::Of;
     let mut lanes: Vec<Vec<f64>> = Vec::with_capacity(plan.lanes.len());
     for lane in &plan.lanes {
         let mut sum = vec![0.0; plan.directions];
@@ -210,7 +213,7 @@ fn traced_trees_equal_the_algorithms() {
 /// not in both, and is exactly zero outside its block.
 #[test]
 fn a_chain_s_tangents_take_its_block_alone() {
-    use crate::algo::tree_tests::{at as joint, P, R};
+    use crate::unit::algo::tree_tests::{at as joint, P, R};
     let specs: Vec<_> = (0..16)
         .map(|i| {
             let parent = (i % 8 != 0).then(|| i - 1);
@@ -252,7 +255,7 @@ fn a_chain_s_tangents_take_its_block_alone() {
 /// The generated methods' operations (flops, as `dynamics stats` counts them) of `robot`.
 fn flops(robot: &Robot, families: FamilySet) -> Vec<(String, usize)> {
     let (eq, _) = equations(robot, families, None);
-    let generated = crate::emit::generate(&eq, Vec::new());
+    let generated = dynamics_codegen::emit::generate(&eq, Vec::new());
     let methods = generated.methods.iter();
     methods
         .map(|m| (m.name.to_string(), m.ops.flops()))
@@ -298,7 +301,7 @@ fn zero_blocks_cost_nothing() {
     }
 }
 
-/// `cargo test -p dynamics-codegen --lib -- --ignored --nocapture operation_counts`: the
+/// `cargo test -p dynamics-codegen --test it -- --ignored --nocapture operation_counts`: the
 /// operations of τ, M and the forward dynamics of the hand-built trees.
 #[test]
 #[ignore = "prints the counts the report quotes"]
@@ -308,7 +311,7 @@ fn operation_counts() {
         let serial: Vec<_> = specs
             .iter()
             .enumerate()
-            .map(|(i, s)| crate::algo::tree_tests::Spec {
+            .map(|(i, s)| crate::unit::algo::tree_tests::Spec {
                 parent: i.checked_sub(1),
                 ..*s
             })
@@ -325,9 +328,9 @@ fn operation_counts() {
 /// proven bound of the exact one, something dropped, and `M`'s zeros still zero.
 #[test]
 fn simplified_models_of_a_tree_are_within_their_bounds() {
-    use crate::method::Method;
-    use crate::model::{Envelope, JointEnvelope, Simplification};
-    use crate::trace::Elements;
+    use dynamics_codegen::method::Method;
+    use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
+    use dynamics_codegen::trace::Elements;
     let tree = robot(&trees()[1], true);
     let n = tree.dof();
     let joint = JointEnvelope {

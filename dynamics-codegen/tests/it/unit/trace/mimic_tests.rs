@@ -4,11 +4,11 @@
 //! the hand's pose equal, its Jacobian is `J S`, `M q̈ = τ − h − f` holds for the forward
 //! dynamics, and the derivatives are `Sᵀ (∂τ/∂q) S`, `Sᵀ (∂τ/∂q̇) S` and `∂q̈/∂τ = M⁻¹`.
 
-use crate::algo::tree_tests::{at, robot, P, R};
-use crate::method::{Family, FamilySet};
-use crate::model::{Friction, Mimic, Robot, Spring, Value};
-use crate::pipeline::{equations, State, Values};
-use crate::trace::Equations;
+use crate::unit::algo::tree_tests::{at, robot, P, R};
+use dynamics_codegen::method::{Family, FamilySet};
+use dynamics_codegen::model::{Friction, Mimic, Robot, Spring, Value};
+use dynamics_codegen::pipeline::{equations, State, Values};
+use dynamics_codegen::trace::Equations;
 
 const Q: [f64; 4] = [-0.4, 0.9, 0.15, 0.07];
 const QD: [f64; 4] = [0.3, -1.2, 0.6, 0.9];
@@ -175,8 +175,8 @@ fn check(robot: &Robot) {
 
 type Vectors<'a> = [(
     &'a str,
-    &'a [crate::symbolic::NodeId],
-    &'a [crate::symbolic::NodeId],
+    &'a [dynamics_codegen::symbolic::NodeId],
+    &'a [dynamics_codegen::symbolic::NodeId],
 ); 6];
 
 fn vectors<'a>(eq: &'a Equations, full: &'a Equations) -> Vectors<'a> {
@@ -196,8 +196,8 @@ fn vectors<'a>(eq: &'a Equations, full: &'a Equations) -> Vectors<'a> {
 
 type Matrices<'a> = [(
     &'a str,
-    &'a [Vec<crate::symbolic::NodeId>],
-    &'a [Vec<crate::symbolic::NodeId>],
+    &'a [Vec<dynamics_codegen::symbolic::NodeId>],
+    &'a [Vec<dynamics_codegen::symbolic::NodeId>],
 ); 2];
 
 fn matrices<'a>(eq: &'a Equations, full: &'a Equations) -> Matrices<'a> {
@@ -278,23 +278,23 @@ fn a_chain_whose_last_joint_mirrors_the_first() {
     let chain = with_drives(chain);
     check(&chain);
     let (eq, _) = equations(&chain, FamilySet::default(), None);
-    let of_q = |a: crate::symbolic::NodeId| eq.graph.constant(a).is_none();
+    let of_q = |a: dynamics_codegen::symbolic::NodeId| eq.graph.constant(a).is_none();
     let sines = eq.graph.nodes().filter(|(_, node)| {
-        matches!(node, crate::symbolic::Node::Sin(a) | crate::symbolic::Node::Cos(a) if of_q(*a))
+        matches!(node, dynamics_codegen::symbolic::Node::Sin(a) | dynamics_codegen::symbolic::Node::Cos(a) if of_q(*a))
     });
     assert_eq!(sines.count(), 0, "a sine of a joint angle traced as a node");
 }
 
 /// The Panda of its URDF, whose second finger follows the first (`k = 1`, `o = 0`): 9 joints,
 /// 8 coordinates.
-pub(super) fn panda() -> crate::pipeline::Loaded {
-    use crate::pipeline::{load, Source};
+pub(super) fn panda() -> dynamics_codegen::pipeline::Loaded {
+    use dynamics_codegen::pipeline::{load, Source};
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/urdf/panda.urdf");
     let text = std::fs::read_to_string(path).expect("readable");
     let source = Source {
         path: "panda.urdf",
         text: Some(&text),
-        chain: crate::front::Chain {
+        chain: dynamics_codegen::front::Chain {
             base: Some("panda_link0"),
             ..Default::default()
         },
@@ -310,8 +310,8 @@ pub(super) fn panda() -> crate::pipeline::Loaded {
 /// regressor and the base parameters have 8 rows and 9 links, in the module's trait too.
 #[test]
 fn the_panda_with_a_mimic_finger_out_of_the_door() {
-    use crate::inspect::Format;
-    use crate::pipeline::Readable;
+    use dynamics_codegen::inspect::Format;
+    use dynamics_codegen::pipeline::Readable;
     let panda = panda();
     let families = FamilySet::default().with(Family::Derivatives);
     let header = panda.c_header(families, None, None).expect("a header");

@@ -4,12 +4,12 @@
 //! parameters is the numerical rank of the reduced columns stacked over random states, and
 //! `Y_B π_B` is τ again.
 
-use super::base_parameters::JointColumns;
-use super::mimic_tests::follow;
-use crate::algo::tree_tests::{at, robot, R};
-use crate::model::{Friction, Robot, Value};
-use crate::pipeline::{State, Values};
-use crate::trace::{derive, Equations};
+use crate::unit::algo::tree_tests::{at, robot, R};
+use crate::unit::trace::mimic_tests::follow;
+use dynamics_codegen::model::{Friction, Robot, Value};
+use dynamics_codegen::pipeline::{State, Values};
+use dynamics_codegen::trace::base_parameters::JointColumns;
+use dynamics_codegen::trace::{derive, Equations};
 
 /// Friction and actuator inertia on every mimic joint, so that its own columns show.
 fn with_drives(mut robot: Robot) -> Robot {
@@ -29,7 +29,7 @@ fn with_drives(mut robot: Robot) -> Robot {
 /// The tree of `mimic_tests` (a revolute joint following its sibling with k = −0.7, o = 0.3,
 /// both with θ offsets; a prismatic one following its cousin with k = 1, o = 0), with drives.
 fn tree() -> Robot {
-    with_drives(super::mimic_tests::tree())
+    with_drives(crate::unit::trace::mimic_tests::tree())
 }
 
 /// A serial arm whose third joint follows the second, `q3 = −0.7 q2 + 0.3`.
@@ -275,7 +275,7 @@ fn the_base_parameters_of_robots_with_mimics_are_the_reduced_rank() {
 
 #[test]
 fn the_panda_with_its_mimic_finger() {
-    let panda = super::mimic_tests::panda().robot;
+    let panda = crate::unit::trace::mimic_tests::panda().robot;
     regressor_is_the_projected_one(&panda);
     let b = base_parameters_have_the_rank(&panda);
     // The free Panda's fingers move apart: the coupled one identifies fewer combinations.
@@ -288,8 +288,8 @@ fn the_panda_with_its_mimic_finger() {
 /// bounds are checked in `simplify/mimic_tests.rs`).
 #[test]
 fn the_simplified_models_of_a_mimic_robot_are_built_beside_its_regressor() {
-    use crate::method::{Family, FamilySet};
-    use crate::model::{Envelope, JointEnvelope, Simplification};
+    use dynamics_codegen::method::{Family, FamilySet};
+    use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
     let arm = arm();
     let joint = JointEnvelope {
         lower: -1.0,
@@ -304,7 +304,7 @@ fn the_simplified_models_of_a_mimic_robot_are_built_beside_its_regressor() {
         },
     };
     let families = FamilySet::default().with(Family::Regressor);
-    let (eq, simplified) = crate::pipeline::equations(&arm, families, Some(&request));
+    let (eq, simplified) = dynamics_codegen::pipeline::equations(&arm, families, Some(&request));
     simplified.expect("asked").expect("built");
     assert!(eq.families.contains(Family::Simplified) && eq.families.contains(Family::Regressor));
 }
