@@ -5,4 +5,5 @@
 
 mod algo;
 mod check;
+mod emit;
 mod trace;
