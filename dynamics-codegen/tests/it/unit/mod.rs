@@ -6,4 +6,5 @@
 mod algo;
 mod check;
 mod emit;
+mod emit_c;
 mod trace;
