@@ -22,9 +22,6 @@ mod tree;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod xml;
 
-#[cfg(test)]
-mod tests;
-
 use super::errors::FileError;
 use super::sources::{Loaded, Positions};
 use crate::check::{joint_count, Problem, MAX_JOINTS, MAX_TREE_JOINTS};

@@ -7,4 +7,5 @@ mod algo;
 mod check;
 mod emit;
 mod emit_c;
+mod front;
 mod trace;

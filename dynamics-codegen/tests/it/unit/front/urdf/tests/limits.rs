@@ -2,9 +2,9 @@
 //! position ranges, the 2.175 and 2.61 rad/s speeds, the 87 and 12 N·m torques), and a small file for the joints that
 //! have no range or no `<limit>` and a value that is not a number.
 
-use super::super::{joint_limits, Chain, Limit};
+use dynamics_codegen::front::{joint_limits, Chain, Limit};
 
-const PANDA: &str = include_str!("../../../../../robots/urdf/panda.urdf");
+const PANDA: &str = include_str!("../../../../../../../robots/urdf/panda.urdf");
 
 fn limit(lower: f64, upper: f64, velocity: f64, effort: f64) -> Limit {
     Limit {

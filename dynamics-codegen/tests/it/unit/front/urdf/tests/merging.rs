@@ -1,8 +1,8 @@
 //! Fixed links merged and inertial axes turned, against hand computations.
 
-use super::super::{load_urdf, Chain};
-use crate::model::{Robot, Value};
-use crate::symbolic::Number;
+use dynamics_codegen::front::{load_urdf, Chain};
+use dynamics_codegen::model::{Robot, Value};
+use dynamics_codegen::symbolic::Number;
 
 /// A one-joint robot whose moving link `a` carries `extra` (links and joints).
 fn arm(a_inertial: &str, extra: &str) -> String {

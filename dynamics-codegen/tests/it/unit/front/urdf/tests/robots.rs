@@ -2,16 +2,16 @@
 //! masses are summed here from the file's own numbers, read with a plain XML walk; merged
 //! inertias are checked against a hand computation.
 
-use super::super::{load_urdf, Chain};
-use crate::front::{FileError, Loaded};
-use crate::model::{JointKind, Robot, Value};
-use crate::symbolic::Number;
+use dynamics_codegen::front::{load_urdf, Chain};
+use dynamics_codegen::front::{FileError, Loaded};
+use dynamics_codegen::model::{JointKind, Robot, Value};
+use dynamics_codegen::symbolic::Number;
 
-const UR5: &str = include_str!("../../../../../robots/urdf/ur5.urdf");
-const UR10: &str = include_str!("../../../../../robots/urdf/ur10.urdf");
-const PANDA: &str = include_str!("../../../../../robots/urdf/panda.urdf");
-const Z1: &str = include_str!("../../../../../robots/urdf/z1.urdf");
-const SO101: &str = include_str!("../../../../../robots/urdf/so101.urdf");
+const UR5: &str = include_str!("../../../../../../../robots/urdf/ur5.urdf");
+const UR10: &str = include_str!("../../../../../../../robots/urdf/ur10.urdf");
+const PANDA: &str = include_str!("../../../../../../../robots/urdf/panda.urdf");
+const Z1: &str = include_str!("../../../../../../../robots/urdf/z1.urdf");
+const SO101: &str = include_str!("../../../../../../../robots/urdf/so101.urdf");
 
 fn load(text: &str, base: Option<&str>, tip: Option<&str>) -> Result<Loaded, Vec<FileError>> {
     load_urdf(

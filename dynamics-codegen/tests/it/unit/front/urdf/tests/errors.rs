@@ -1,9 +1,9 @@
 //! Bad input: each mistake an error at the line and column of the element or attribute that
 //! makes it.
 
-use super::super::xml::Lines;
-use super::super::{load_urdf, Chain};
-use crate::front::FileError;
+use dynamics_codegen::front::urdf::xml::Lines;
+use dynamics_codegen::front::FileError;
+use dynamics_codegen::front::{load_urdf, Chain};
 
 /// Two links `a` (line 3) and `b` (line 6) joined by `joint` (line 4), with `b`'s inertial.
 fn two_links(joint: &str, inertial: &str) -> String {
@@ -212,7 +212,10 @@ fn a_moving_branch_before_the_tip_is_refused_and_without_a_tip_makes_a_tree() {
     let chain = load(None, &["c"]);
     assert_eq!(chain.dof(), 2);
     assert!(chain.joints.iter().all(|j| j.branch.is_none()));
-    assert_eq!(chain.joints[1].kind, crate::model::JointKind::Prismatic);
+    assert_eq!(
+        chain.joints[1].kind,
+        dynamics_codegen::model::JointKind::Prismatic
+    );
 }
 
 #[test]

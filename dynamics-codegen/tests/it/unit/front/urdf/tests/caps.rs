@@ -2,10 +2,11 @@
 //! `MAX_TREE_JOINTS` in all, each refused at the first joint past it; Baxter's 19 joints (two
 //! arms of seven with two fingers each, and the head) pass.
 
-use super::super::{load_urdf, Chain};
-use crate::front::{FileError, Loaded};
+use dynamics_codegen::front::{load_urdf, Chain};
+use dynamics_codegen::front::{FileError, Loaded};
 
-const BAXTER: &str = include_str!("../../../../../robots/urdf/trees/baxter_free_fingers.urdf");
+const BAXTER: &str =
+    include_str!("../../../../../../../robots/urdf/trees/baxter_free_fingers.urdf");
 
 fn load(text: &str, tips: &[&str]) -> Result<Loaded, Vec<FileError>> {
     let chain = Chain {

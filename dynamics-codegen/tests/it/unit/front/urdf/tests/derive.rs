@@ -1,8 +1,8 @@
 //! `urdf = ".."` in the derive: the chain read, `gravity` replacing the default, and the keys
 //! that cannot go with it.
 
-use crate::front::parse_str;
-use crate::model::Value;
+use dynamics_codegen::front::parse_str;
+use dynamics_codegen::model::Value;
 
 // Unit tests run in the crate's directory: the robots are one level up.
 #[test]
