@@ -31,8 +31,6 @@ mod render;
 mod sections;
 mod simplified;
 mod simplified_report;
-#[cfg(test)]
-mod tests;
 
 pub use crate::poly::Limits;
 pub use base_parameters::render_base_parameters;

@@ -8,4 +8,5 @@ mod check;
 mod emit;
 mod emit_c;
 mod front;
+mod inspect;
 mod trace;

@@ -1,9 +1,9 @@
 //! Folding, arranging and printing of polynomials typed in [`Poly::parse`] syntax.
 
-use super::arrange::{arrange, arrange_factored};
-use super::print::{Format, Printer};
-use crate::algo::JointKind;
-use crate::poly::{fold_trig, Poly};
+use dynamics_codegen::algo::JointKind;
+use dynamics_codegen::inspect::arrange::{arrange, arrange_factored};
+use dynamics_codegen::inspect::print::{Format, Printer};
+use dynamics_codegen::poly::{fold_trig, Poly};
 
 /// The readable text of a polynomial written in `Poly::parse` syntax.
 fn readable(text: &str, format: Format) -> String {
