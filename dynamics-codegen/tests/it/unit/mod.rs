@@ -9,4 +9,5 @@ mod emit;
 mod emit_c;
 mod front;
 mod inspect;
+mod method;
 mod trace;
