@@ -10,4 +10,5 @@ mod emit_c;
 mod front;
 mod inspect;
 mod method;
+mod model;
 mod trace;

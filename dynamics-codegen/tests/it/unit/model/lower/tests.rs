@@ -4,9 +4,11 @@
 //! from the derived modified D-H table, and every link's mass, com and inertia in base
 //! coordinates agree.
 
-use super::lower_frames;
-use crate::model::{AxisFrame, Convention, Joint, JointKind, Link, Placement, Pose, Robot, Value};
-use crate::symbolic::Number;
+use dynamics_codegen::model::lower_frames;
+use dynamics_codegen::model::{
+    AxisFrame, Convention, Joint, JointKind, Link, Placement, Pose, Robot, Value,
+};
+use dynamics_codegen::symbolic::Number;
 use dynamics_test_support::Rng;
 
 pub(super) type M4 = [[f64; 4]; 4];

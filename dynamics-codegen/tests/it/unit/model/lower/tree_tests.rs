@@ -3,12 +3,14 @@
 //! from the Khalil-Kleinfinger rows (`Rotz(γ) Transz(b)` before each modified row) times the
 //! link's pose; a tree lowered by hand; nearly parallel axes.
 
-use super::lower_frames;
-use super::tests::{
+use crate::unit::model::lower::tests::{
     close, dh_frames, identity, modified_dh, mul, num, placement, pose_matrix, random_joint,
     random_robot, rodrigues, rotation, user_frames, M4,
 };
-use crate::model::{AxisFrame, Branch, Convention, Joint, JointKind, Placement, Robot, Value};
+use dynamics_codegen::model::lower_frames;
+use dynamics_codegen::model::{
+    AxisFrame, Branch, Convention, Joint, JointKind, Placement, Robot, Value,
+};
 use dynamics_test_support::Rng;
 
 /// A random tree: each joint hangs from the base or an earlier joint, more often the one before.
