@@ -11,4 +11,5 @@ mod front;
 mod inspect;
 mod method;
 mod model;
+mod pipeline;
 mod trace;
