@@ -12,4 +12,5 @@ mod inspect;
 mod method;
 mod model;
 mod pipeline;
+mod poly;
 mod trace;
