@@ -22,14 +22,8 @@
 pub mod bound;
 pub mod eval;
 mod horner;
-#[cfg(test)]
-mod mimic_tests;
 mod outputs;
 mod prune;
-#[cfg(test)]
-mod prune_tests;
-#[cfg(test)]
-mod tests;
 
 pub use bound::{max_abs_cos, max_abs_sin};
 pub use outputs::{prune_outputs, Caps, Output, Pruned, PrunedOutput, OUTPUTS};

@@ -13,4 +13,5 @@ mod method;
 mod model;
 mod pipeline;
 mod poly;
+mod simplify;
 mod trace;

@@ -2,18 +2,22 @@
 //! random states of the envelope: never further apart than the proven bound, and not
 //! vacuously (the worst sampled error is reported against the bound).
 
-use super::{add, MAX_KEPT, MAX_WORK};
-use crate::method::Method;
-use crate::model::{Envelope, JointEnvelope, Simplification};
-use crate::symbolic::{NodeId, Var};
-use crate::trace::{derive, Elements, Equations, Fallback, PrunedElement};
-use crate::trace::{SimplifiedEquations, SimplifiedOutput};
+use dynamics_codegen::method::Method;
+use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
+use dynamics_codegen::simplify::{add, MAX_KEPT, MAX_WORK};
+use dynamics_codegen::symbolic::{NodeId, Var};
+use dynamics_codegen::trace::{derive, Elements, Equations, Fallback, PrunedElement};
+use dynamics_codegen::trace::{SimplifiedEquations, SimplifiedOutput};
 use dynamics_test_support::Rng;
 
 fn load(file: &str) -> Equations {
     let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("the robot file");
-    derive(&crate::front::load(&path, &text).expect("a robot").robot)
+    derive(
+        &dynamics_codegen::front::load(&path, &text)
+            .expect("a robot")
+            .robot,
+    )
 }
 
 fn envelope(n: usize) -> Envelope {
@@ -30,7 +34,9 @@ fn envelope(n: usize) -> Envelope {
 
 /// Every node's value at a random state of `e`.
 pub(super) fn sample(eq: &Equations, e: &Envelope, rng: &mut Rng) -> Vec<f64> {
-    let offsets = super::eval::constants(eq).expect("constants").offsets;
+    let offsets = dynamics_codegen::simplify::eval::constants(eq)
+        .expect("constants")
+        .offsets;
     let pick = |rng: &mut Rng, f: fn(&JointEnvelope) -> (f64, f64)| -> Vec<f64> {
         e.joints
             .iter()
@@ -61,7 +67,7 @@ fn pairs(eq: &Equations) -> Vec<(NodeId, NodeId, PrunedElement, String)> {
     let s = eq.simplified.as_ref().expect("simplified");
     let mut out = Vec::new();
     for o in &s.outputs {
-        let exact = super::elements(o.exact.shape(eq));
+        let exact = dynamics_codegen::simplify::elements(o.exact.shape(eq));
         let pruned = exact.upper().zip(o.elements.upper()).zip(o.named_bounds());
         for (((_, _, &e), (_, _, &p)), (name, _, &b)) in pruned {
             out.push((e, p, b, name));
@@ -306,7 +312,7 @@ fn the_rustdoc_states_the_bounds_and_the_envelope() {
                link(mass = 2, com = [-0.5, 0, 0]), link(mass = 1, com = [-0.25, 0, 0])";
     let derive = |extra: &str| {
         let text = format!("#[dynamics({arm}{extra})] struct Arm;");
-        crate::derive_dynamics(text.parse().expect("tokens")).to_string()
+        dynamics_codegen::derive_dynamics(text.parse().expect("tokens")).to_string()
     };
     let code = derive(", simplify(tolerance = [0.5, 0.1], qd_max = 1.5, q_min = -1, q_max = 1)");
     for method in [
@@ -336,7 +342,7 @@ fn the_rustdoc_states_the_bounds_and_the_envelope() {
 fn the_rustdoc_says_which_output_is_exact() {
     let text = "#[dynamics(file = \"../tests/data/reference/robots/random5.json\", \
                 simplify(tolerance = [0.4, 0.3, 0.2, 0.1, 0.05, 0.02]))] struct Arm;";
-    let code = crate::derive_dynamics(text.parse().expect("tokens")).to_string();
+    let code = dynamics_codegen::derive_dynamics(text.parse().expect("tokens")).to_string();
     assert!(
         code.contains("Left exact: the same values as `inverse_dynamics` (bound 0).")
             && code.contains("Not pruned: its pruned expansion keeps "),

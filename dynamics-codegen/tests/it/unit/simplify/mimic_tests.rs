@@ -4,14 +4,14 @@
 //! envelope, on the small mimic arm (a revolute joint following another with k = −0.7) and the
 //! Panda's URDF (its second finger following the first), over the URDF's own limits.
 
-use super::bound::symbol_bound;
-use super::tests::{sample, within_bounds};
-use super::{prune_outputs, Caps};
-use crate::method::{FamilySet, Method};
-use crate::model::{Envelope, JointEnvelope, Simplification};
-use crate::pipeline::{load, Loaded, Source};
-use crate::poly::{MimicAngle, Sym};
-use crate::symbolic::Number;
+use crate::unit::simplify::tests::{sample, within_bounds};
+use dynamics_codegen::method::{FamilySet, Method};
+use dynamics_codegen::model::{Envelope, JointEnvelope, Simplification};
+use dynamics_codegen::pipeline::{load, Loaded, Source};
+use dynamics_codegen::poly::{MimicAngle, Sym};
+use dynamics_codegen::simplify::bound::symbol_bound;
+use dynamics_codegen::simplify::{prune_outputs, Caps};
+use dynamics_codegen::symbolic::Number;
 use dynamics_test_support::Rng;
 
 fn loaded(file: &str) -> Loaded {
@@ -105,7 +105,7 @@ fn a_mimic_arm_is_pruned_within_its_bounds() {
     let s = eq.simplified.as_ref().expect("simplified");
     let values = sample(&eq, &envelope, &mut rng);
     for o in &s.outputs {
-        let exact = super::elements(o.exact.shape(&eq));
+        let exact = dynamics_codegen::simplify::elements(o.exact.shape(&eq));
         for ((_, _, e), (_, _, p)) in exact.upper().zip(o.elements.upper()) {
             let (x, y) = (values[e.index()], values[p.index()]);
             assert!(

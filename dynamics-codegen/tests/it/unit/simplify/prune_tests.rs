@@ -1,18 +1,20 @@
 //! The proven bound against sampling: the full polynomial is τ (the graph's), and the pruned
 //! one never strays from it by more than the bound at random states of the envelope.
 
-use super::eval::{Constants, State, Terms};
-use super::{prune_outputs, Caps, Pruning};
-use crate::model::{Envelope, JointEnvelope, Robot, Simplification};
-use crate::symbolic::Var;
-use crate::trace::{derive, Equations};
+use dynamics_codegen::model::{Envelope, JointEnvelope, Robot, Simplification};
+use dynamics_codegen::simplify::eval::{Constants, State, Terms};
+use dynamics_codegen::simplify::{prune_outputs, Caps, Pruning};
+use dynamics_codegen::symbolic::Var;
+use dynamics_codegen::trace::{derive, Equations};
 use dynamics_test_support::Rng;
 use std::f64::consts::PI;
 
 fn load(file: &str) -> (Robot, Equations) {
     let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("the robot file");
-    let robot = crate::front::load(&path, &text).expect("a robot").robot;
+    let robot = dynamics_codegen::front::load(&path, &text)
+        .expect("a robot")
+        .robot;
     let eq = derive(&robot);
     (robot, eq)
 }
@@ -87,7 +89,7 @@ fn tau_prunings(eq: &Equations, e: &Envelope, tolerance: &[f64]) -> Result<Vec<P
 /// The worst `|full − kept|` per joint over `samples` random states; checks on the way that
 /// the full polynomial is the graph's τ to 1e-9 of its size.
 fn worst_errors(prunings: &[Pruning], eq: &Equations, e: &Envelope, samples: usize) -> Vec<f64> {
-    let constants = super::eval::constants(eq).expect("constants");
+    let constants = dynamics_codegen::simplify::eval::constants(eq).expect("constants");
     let k: &Constants = &constants;
     let mut rng = Rng::new(11);
     let mut worst = vec![0.0f64; eq.dof];
@@ -124,7 +126,9 @@ fn worst_errors(prunings: &[Pruning], eq: &Equations, e: &Envelope, samples: usi
 fn check_sound(file: &str, fraction: f64, samples: usize) {
     let (_, eq) = load(file);
     let e = envelope(eq.dof);
-    let offsets = super::eval::constants(&eq).expect("constants").offsets;
+    let offsets = dynamics_codegen::simplify::eval::constants(&eq)
+        .expect("constants")
+        .offsets;
     let tol = tolerances(&eq, &offsets, &e, fraction);
     let prunings = tau_prunings(&eq, &e, &tol).expect("prunes");
     let worst = worst_errors(&prunings, &eq, &e, samples);
