@@ -14,4 +14,5 @@ mod model;
 mod pipeline;
 mod poly;
 mod simplify;
+mod symbolic;
 mod trace;

@@ -1,0 +1,7 @@
+//! The tests of `dynamics_codegen::symbolic`, by file.
+
+mod calculus;
+mod graph;
+mod modular;
+mod number;
+mod tape;
