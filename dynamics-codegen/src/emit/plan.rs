@@ -1,6 +1,6 @@
 //! The plan of an expression, which the Rust (`emit`) and the C (`emit_c`) printers both write:
 //! what a node is written as (a bound name, a leaf by its role, an operator on operands at
-//! their places, a sum as [`Sums::plan`] adds it), each form's precedence, and one table of
+//! their places, a sum as `Sums::plan` adds it), each form's precedence, and one table of
 //! where a form needs parentheses. A printer only spells: `x.mul_add(y, a)` or
 //! `dynamics_fma(x, y, a)`, `T::sin(a)` or `dynamics_sin(a)`, `p_m1` or `p_0`. One plan, two
 //! printers: the C writes the Rust's expressions, operation for operation.
