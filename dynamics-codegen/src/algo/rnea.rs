@@ -192,7 +192,8 @@ fn unturned_last<S: Scalar>(chain: &Chain<S>) -> Option<usize> {
 /// A link's angular velocity `ω` and acceleration `ω̇` as Khalil writes them: the products
 /// `ω_i ω_j` and `U = [ω̇]× + [ω]×[ω]×`, which the link's force, its moment and the next
 /// link's acceleration all read.
-struct Rates<S> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Rates<S> {
     /// `ω̇`.
     wd: V3<S>,
     /// `[ω_x², ω_y², ω_z², ω_x ω_y, ω_x ω_z, ω_y ω_z]`.
@@ -202,7 +203,8 @@ struct Rates<S> {
 }
 
 impl<S: Scalar> Rates<S> {
-    fn new(w: V3<S>, wd: V3<S>) -> Rates<S> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn new(w: V3<S>, wd: V3<S>) -> Rates<S> {
         let (xx, yy, zz) = (w.x * w.x, w.y * w.y, w.z * w.z);
         let (xy, xz, yz) = (w.x * w.y, w.x * w.z, w.y * w.z);
         let u = [
@@ -233,7 +235,8 @@ impl<S: Scalar> Rates<S> {
     /// `a ω̇_x − d U_zx + e U_yx + f (ω_y² − ω_z²) + (c − b) ω_y ω_z`, and y and z follow by
     /// turning the axes. 30 operations against 42, the off-diagonal `U_ij` being shared with
     /// the forces.
-    fn inertial_moment(&self, inertia: [S; 6]) -> V3<S> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn inertial_moment(&self, inertia: [S; 6]) -> V3<S> {
         let [xx, yy, zz, xy, xz, yz] = self.products;
         let (u, wd) = (&self.u, self.wd);
         let [a, b, c, d, e, f] = inertia;
@@ -242,52 +245,5 @@ impl<S: Scalar> Rates<S> {
             b * wd.y + d * u[2][1] - f * u[0][1] + e * (zz - xx) + (a - c) * xz,
             c * wd.z - e * u[1][2] + f * u[0][2] + d * (xx - yy) + (b - a) * xy,
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{rnea, Rates};
-    use crate::algo::{parallel_chain, Mat3, V3};
-    use std::ops::Add;
-
-    /// Rates turned through the sums of parallel joints' angles, and moments turned back the
-    /// same way, give the torques of the joint-by-joint recursion.
-    #[test]
-    fn summing_angles_of_parallel_joints() {
-        let q = [0.3, -1.1, 0.7, 2.0, -0.6, 1.4, 0.15];
-        let qd = [0.8, -0.4, 1.3, -2.1, 0.5, 0.9, -0.3];
-        let qdd = [-1.2, 0.6, 0.2, 1.7, -0.9, 0.4, 0.8];
-        let gravity = V3::new(0.5, -1.0, -9.7);
-        for symmetric_tip in [false, true] {
-            let chain = parallel_chain(&q, symmetric_tip);
-            let summed = chain.clone().summing_angles(true);
-            let flags: Vec<bool> = summed.joints.iter().map(|j| j.sum_angles).collect();
-            let expected = [false, false, true, true, false, true, false];
-            assert_eq!(flags, expected[..chain.joints.len()]);
-            let n = chain.joints.len();
-            let plain = rnea(&chain, &qd[..n], &qdd[..n], gravity);
-            let by_sums = rnea(&summed, &qd[..n], &qdd[..n], gravity);
-            for (a, b) in plain.iter().zip(&by_sums) {
-                assert!((a - b).abs() < 1e-12, "{plain:?} vs {by_sums:?}");
-            }
-        }
-    }
-
-    /// The moment read off `U` equals `I ω̇ + ω × I ω` computed directly.
-    #[test]
-    fn inertial_moment_from_u() {
-        let inertia = [0.7, 0.5, 0.4, -0.05, 0.08, 0.03];
-        for (w, wd) in [
-            (V3::new(0.3, -1.2, 2.1), V3::new(-0.7, 0.4, 1.9)),
-            (V3::new(-2.0, 0.1, 0.0), V3::new(0.0, 3.3, -0.2)),
-        ] {
-            let i = Mat3::symmetric(inertia);
-            let direct = i.mul_vec(wd).add(w.cross(i.mul_vec(w)));
-            let by_u = Rates::new(w, wd).inertial_moment(inertia);
-            for (a, b) in [(by_u.x, direct.x), (by_u.y, direct.y), (by_u.z, direct.z)] {
-                assert!((a - b).abs() < 1e-14, "{a} vs {b}");
-            }
-        }
     }
 }

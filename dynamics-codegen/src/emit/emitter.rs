@@ -72,7 +72,8 @@ impl<'a> Emitter<'a> {
             refill(&mut t.origin, n, Origin::Here);
             refill(&mut t.depth, n, Cell::new(u32::MAX));
         }
-        #[cfg(test)]
+        // The check the tests once made: run wherever debug assertions are, cheap beside emission.
+        #[cfg(debug_assertions)]
         t.assert_reset();
         Emitter {
             graph: &eq.graph,
@@ -219,7 +220,7 @@ const SPARE_TABLES: usize = 2;
 
 impl Tables {
     /// Whether every entry is its default, as an emitter expects its tables.
-    #[cfg(test)]
+    #[cfg(debug_assertions)]
     fn assert_reset(&self) {
         assert!(self.uses.iter().all(|&u| u == 0), "uses reset");
         assert!(self.needed.iter().all(|&x| !x), "needed reset");

@@ -95,7 +95,8 @@ impl Printer for Emitter<'_> {
 // at every level of an expression.
 
 /// `a + b`, `a - b`, `a * b`, `a / b`.
-fn binary(mut a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn binary(mut a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
     let op = match op {
         Operator::Add => '+',
         Operator::Sub => '-',
@@ -108,14 +109,16 @@ fn binary(mut a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
 }
 
 /// `-a`.
-fn negate(a: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn negate(a: TokenStream) -> TokenStream {
     let mut minus = TokenStream::from(TokenTree::Punct(Punct::new('-', Spacing::Alone)));
     minus.extend([a]);
     minus
 }
 
 /// `T::sin(a)`.
-fn call(f: Function, a: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn call(f: Function, a: TokenStream) -> TokenStream {
     let mut call = match f {
         Function::Sin => quote!(T::sin),
         Function::Cos => quote!(T::cos),
@@ -127,7 +130,8 @@ fn call(f: Function, a: TokenStream) -> TokenStream {
 }
 
 /// `x.mul_add(y, a)`.
-fn mul_add(mut x: TokenStream, mut y: TokenStream, a: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn mul_add(mut x: TokenStream, mut y: TokenStream, a: TokenStream) -> TokenStream {
     x.extend(quote!(.mul_add));
     y.extend([TokenTree::Punct(Punct::new(',', Spacing::Alone))]);
     y.extend([a]);
@@ -136,7 +140,8 @@ fn mul_add(mut x: TokenStream, mut y: TokenStream, a: TokenStream) -> TokenStrea
 }
 
 /// `[a, b, c]`, the elements moved in.
-pub(super) fn array(items: impl IntoIterator<Item = TokenStream>) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn array(items: impl IntoIterator<Item = TokenStream>) -> TokenStream {
     let mut inner = TokenStream::new();
     for (k, item) in items.into_iter().enumerate() {
         if k > 0 {
@@ -148,7 +153,8 @@ pub(super) fn array(items: impl IntoIterator<Item = TokenStream>) -> TokenStream
 }
 
 /// `{ a }`, `a` moved into the block.
-pub(super) fn block(a: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn block(a: TokenStream) -> TokenStream {
     TokenStream::from(TokenTree::Group(Group::new(Delimiter::Brace, a)))
 }
 
@@ -160,66 +166,15 @@ pub(super) fn with_body(mut head: TokenStream, body: TokenStream) -> TokenStream
 }
 
 /// `let name = value;`, the value moved in.
-pub(super) fn let_statement(name: &proc_macro2::Ident, value: TokenStream) -> TokenStream {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn let_statement(name: &proc_macro2::Ident, value: TokenStream) -> TokenStream {
     let mut statement = quote!(let #name =);
     statement.extend([value, quote!(;)]);
     statement
 }
 
 /// `(a)`, `a` moved into the group.
-fn parenthesized(a: TokenStream) -> TokenTree {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn parenthesized(a: TokenStream) -> TokenTree {
     TokenTree::Group(Group::new(Delimiter::Parenthesis, a))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{array, binary, block, call, let_statement, mul_add, negate, parenthesized};
-    use super::{Function, Operator};
-    use proc_macro2::TokenStream;
-    use quote::quote;
-
-    /// Each form as `quote!` writes it, token for token (the text of a stream shows its
-    /// tokens' spacing and groups): nested, so that the operands are streams built the same
-    /// way.
-    #[test]
-    fn the_forms_are_the_tokens_quote_writes() {
-        let (a, b, c) = (quote!(a), quote!(t12), quote!(T::ONE));
-        let moved = mul_add(
-            negate(binary(a.clone(), Operator::Sub, b.clone())),
-            call(Function::Cos, binary(b.clone(), Operator::Div, c.clone())),
-            TokenStream::from(parenthesized(binary(c.clone(), Operator::Mul, a.clone()))),
-        );
-        let quoted = quote!(-#a - #b.mul_add(T::cos(#b / #c), (#c * #a)));
-        assert_eq!(moved.to_string(), quoted.to_string());
-        for (f, q) in [
-            (Function::Sin, quote!(T::sin(a))),
-            (Function::Tanh, quote!(T::tanh(a))),
-            (Function::Sign, quote!(T::sign(a))),
-        ] {
-            assert_eq!(call(f, quote!(a)).to_string(), q.to_string());
-        }
-        assert_eq!(
-            binary(quote!(a), Operator::Add, quote!(-b)).to_string(),
-            quote!(a + -b).to_string()
-        );
-        let items = [quote!(a), quote!(b + c), quote!([d])];
-        let arrays = [array(items.clone()), array([]), array([quote!(a)])];
-        let quoted = [quote!([#(#items),*]), quote!([]), quote!([a])];
-        for (built, quoted) in arrays.iter().zip(&quoted) {
-            assert_eq!(built.to_string(), quoted.to_string());
-        }
-        assert_eq!(
-            block(quote!(a; b)).to_string(),
-            quote!({
-                a;
-                b
-            })
-            .to_string()
-        );
-        let name = proc_macro2::Ident::new("t1", proc_macro2::Span::call_site());
-        assert_eq!(
-            let_statement(&name, quote!(a * b)).to_string(),
-            quote!(let t1 = a * b;).to_string()
-        );
-    }
 }

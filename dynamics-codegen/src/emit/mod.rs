@@ -46,7 +46,8 @@ mod count;
 mod depends;
 mod emitter;
 mod equations;
-mod expr;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod expr;
 mod fallback;
 mod floating;
 mod floating_kinematics;
@@ -57,12 +58,16 @@ mod items;
 pub(crate) mod lanes;
 mod names;
 mod parts;
-pub(crate) mod plan;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod plan;
 mod program;
 mod shared;
-mod sum_order;
-mod sums;
-mod tip_names;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod sum_order;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod sums;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod tip_names;
 
 pub use count::count;
 pub(crate) use equations::readable;

@@ -1,6 +1,6 @@
 //! The plan of an expression, which the Rust (`emit`) and the C (`emit_c`) printers both write:
 //! what a node is written as (a bound name, a leaf by its role, an operator on operands at
-//! their places, a sum as [`Sums::plan`] adds it), each form's precedence, and one table of
+//! their places, a sum as `Sums::plan` adds it), each form's precedence, and one table of
 //! where a form needs parentheses. A printer only spells: `x.mul_add(y, a)` or
 //! `dynamics_fma(x, y, a)`, `T::sin(a)` or `dynamics_sin(a)`, `p_m1` or `p_0`. One plan, two
 //! printers: the C writes the Rust's expressions, operation for operation.
@@ -11,7 +11,8 @@ use crate::trace::Equations;
 
 /// Where an expression is written, which decides whether it needs parentheses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Place {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Place {
     /// A statement's right-hand side, an array element, a function's argument.
     Top,
     /// Left of `+` or `−`.
@@ -26,7 +27,8 @@ pub(crate) enum Place {
 
 /// How tightly a written form binds, loosest first.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Precedence {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Precedence {
     /// `a + b`, `a − b`, and a negated sum.
     Sum,
     /// `a * b`, `1 / a`.
@@ -40,7 +42,8 @@ pub(crate) enum Precedence {
 /// Whether a form of precedence `p` needs parentheses at `place`: a sum anywhere but first in
 /// a sum, a product right of `*` or `/`, and a prefix minus as a right operand (`a + (-b)`,
 /// `a * (-b)`) or under another.
-pub(crate) fn needs_parentheses(p: Precedence, place: Place) -> bool {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn needs_parentheses(p: Precedence, place: Place) -> bool {
     match (p, place) {
         (Precedence::Atom, _) | (_, Place::Top | Place::AddLeft) => false,
         (Precedence::Sum, _) => true,
@@ -51,7 +54,8 @@ pub(crate) fn needs_parentheses(p: Precedence, place: Place) -> bool {
 
 /// A binary operator.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Operator {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Operator {
     Add,
     Sub,
     Mul,
@@ -60,7 +64,8 @@ pub(crate) enum Operator {
 
 /// A function of one argument that the graph calls.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Function {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Function {
     Sin,
     Cos,
     Tanh,
@@ -289,35 +294,5 @@ fn negative_literal(p: &impl Printer, t: NodeId) -> Option<Number> {
     match p.graph().node(t) {
         Node::Const(c) if c.is_negative() && p.bound(t).is_none() => Some(c),
         _ => None,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{needs_parentheses, Place, Precedence};
-
-    /// The table, against the places' meanings: `a - (b + c)`, `(a + b) * c`, `a * (b * c)`,
-    /// `a + (-b)`, `a * (-b)`, `-(-a)`, but `a + b * c`, `-a * b`, `a * b * c` as written.
-    #[test]
-    fn parentheses_only_where_the_order_or_a_sign_needs_them() {
-        use Place::{AddLeft, AddRight, MulLeft, MulRight, Top};
-        use Precedence::{Atom, Prefix, Product, Sum};
-        let wrapped = [
-            (Sum, AddRight),
-            (Sum, MulLeft),
-            (Sum, MulRight),
-            (Product, MulRight),
-            (Prefix, AddRight),
-            (Prefix, MulRight),
-        ];
-        for p in [Sum, Product, Prefix, Atom] {
-            for place in [Top, AddLeft, AddRight, MulLeft, MulRight] {
-                assert_eq!(
-                    needs_parentheses(p, place),
-                    wrapped.contains(&(p, place)),
-                    "{p:?} at {place:?}"
-                );
-            }
-        }
     }
 }

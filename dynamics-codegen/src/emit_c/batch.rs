@@ -33,7 +33,8 @@ pub(super) fn section(functions: &[Function]) -> String {
 }
 
 /// One batch function: a loop over the states that calls the single-state function.
-fn definition(f: &Function) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn definition(f: &Function) -> String {
     let ty = f.precision.c_type();
     let mut parameters = vec!["size_t n".to_owned()];
     let mut call = Vec::new();
@@ -90,53 +91,4 @@ fn definition(f: &Function) -> String {
         name = f.name,
         parameters = parameters.join(", "),
     )
-}
-
-#[cfg(test)]
-mod tests {
-    use super::definition;
-    use crate::emit_c::function::tests::arm_with_every_family;
-    use crate::emit_c::{functions, Precision};
-    use crate::method::Method;
-
-    fn batch_of(method: Method, precision: Precision) -> String {
-        let eq = arm_with_every_family();
-        let f = functions(&eq, "arm")
-            .into_iter()
-            .find(|f| f.method == method && f.precision == precision)
-            .expect("the function");
-        definition(&f)
-    }
-
-    /// A matrix result is addressed as the array of rows the single-state function takes.
-    #[test]
-    fn a_matrix_is_passed_as_its_rows() {
-        let text = batch_of(Method::MassMatrix, Precision::Double);
-        assert!(
-            text.contains("void arm_mass_matrix_batch(size_t n, const double *q, double *m)"),
-            "{text}"
-        );
-        assert!(
-            text.contains("arm_mass_matrix(q + 2 * i, (double (*)[2])(m + 4 * i));"),
-            "{text}"
-        );
-    }
-
-    /// A scalar goes into an array; a solve counts its failures and reports each state's.
-    #[test]
-    fn scalars_and_statuses_become_arrays() {
-        let energy = batch_of(Method::KineticEnergy, Precision::Single);
-        assert!(energy.contains("float *value)"), "{energy}");
-        assert!(
-            energy.contains("value[i] = arm_kinetic_energy_f32("),
-            "{energy}"
-        );
-        let solve = batch_of(Method::ForwardDynamics, Precision::Double);
-        assert!(
-            solve.contains("size_t arm_forward_dynamics_batch("),
-            "{solve}"
-        );
-        assert!(solve.contains("if (status) status[i] = failed;"), "{solve}");
-        assert!(solve.contains("return failures;"), "{solve}");
-    }
 }

@@ -40,11 +40,14 @@
 //! `trig` (the sines and cosines), `kernels` (their kernels, from the runtime's constants), this
 //! file (the header around them).
 
-mod batch;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod batch;
 mod body;
 mod expr;
-mod function;
-mod kernels;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod function;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod kernels;
 mod lanes;
 mod trig;
 
@@ -180,7 +183,8 @@ static inline float dynamics_fma_f32(float x, float y, float a) {
 /// rows of the identity its unit vectors are read from: as wide as a serial robot's widest
 /// lanes in every header (the same table, which headers included together share), a tree's
 /// wider lanes (`dof` past [`crate::check::MAX_JOINTS`]) from a table of their own width.
-fn tangent_lanes(dof: usize) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn tangent_lanes(dof: usize) -> String {
     let width = unit_width(dof);
     let table = |p: Precision| {
         let (one, zero) = (p.literal(1.0), p.literal(0.0));
@@ -239,7 +243,8 @@ fn unit_width(dof: usize) -> usize {
 
 /// The name of that table: `dynamics_unit` (`_f32`) for serial robots' width, `dynamics_unit24`
 /// for a wider one.
-pub(super) fn unit_table(dof: usize, precision: Precision) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn unit_table(dof: usize, precision: Precision) -> String {
     let width = unit_width(dof);
     let wider = if width > crate::emit::lanes::width(crate::check::MAX_JOINTS) {
         width.to_string()
@@ -376,27 +381,4 @@ fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
         ]
     }))
     .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{tangent_lanes, unit_table, Precision};
-
-    /// Serial robots' headers keep the one identity table of 16 (shared by the headers included
-    /// together); a robot past 16 joints has a wider one under its own name and guard.
-    #[test]
-    fn the_identity_table_widens_only_past_sixteen_joints() {
-        for dof in [1, 6, 7, 16] {
-            let text = tangent_lanes(dof);
-            assert!(text.contains("#define DYNAMICS_UNIT_H\n"), "{dof}");
-            assert!(text.contains("static const double dynamics_unit[16][16] = {"));
-            assert!(text.contains("static const float dynamics_unit_f32[16][16] = {"));
-            assert_eq!(unit_table(dof, Precision::Single), "dynamics_unit_f32");
-        }
-        let text = tangent_lanes(19);
-        assert!(text.contains("#define DYNAMICS_UNIT24_H\n"));
-        assert!(text.contains("static const double dynamics_unit24[24][24] = {"));
-        assert!(!text.contains("dynamics_unit["));
-        assert_eq!(unit_table(64, Precision::Double), "dynamics_unit64");
-    }
 }

@@ -37,7 +37,8 @@
 //! Every error goes to one [`Errors`] and all are reported together. The command-line tool
 //! runs steps 2 and 3 on its files, with the same table ([`Loaded::describe`]).
 
-mod angle;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod angle;
 mod attrs;
 mod errors;
 mod fields;
@@ -45,10 +46,13 @@ mod file;
 mod floating;
 mod floating_frames;
 mod named_file;
-mod parent;
-mod simplify;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod parent;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod simplify;
 mod sources;
-mod urdf;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod urdf;
 mod value;
 
 pub use attrs::attribute_words;

@@ -10,7 +10,8 @@ use std::collections::BTreeMap;
 
 /// A printed term: `coef · (group) · factors`, with an empty group meaning none.
 #[derive(Clone, Debug, PartialEq)]
-pub(super) struct Term {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Term {
     pub(super) coef: Number,
     pub(super) group: Vec<Term>,
     pub(super) factors: Monomial,
@@ -29,7 +30,8 @@ pub(super) fn factored_terms(x: &mut Expander<'_>, id: NodeId) -> Option<Vec<Ter
 }
 
 /// Groups terms by their accelerations and velocities, then by their sines and cosines.
-pub(super) fn arrange(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn arrange(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
     let mut by_motion: BTreeMap<(u8, Monomial), Vec<(Monomial, Number)>> = BTreeMap::new();
     for (m, c) in terms {
         let (motion, rest) = m.split(Sym::is_motion);
@@ -98,7 +100,8 @@ fn arrange_configuration(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
 /// lowest joints where several tie), then again inside and in the rest, until no two terms
 /// share one: `a2 C1 C2 + a3 C1 C23 + d3 S1` → `C1(a2 C2 + a3 C23) + d3 S1`. A sum starts with
 /// its positive terms (`C4 C5 C6 - S4 S6`), each sign's in the order of their lowest joints.
-pub(super) fn arrange_factored(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn arrange_factored(terms: Vec<(Monomial, Number)>) -> Vec<Term> {
     let mut out = factor_out(terms);
     // The lowest joints' sines and cosines first, as `l1 C1 + l2 C12`.
     let first_angle = |t: &Term| {

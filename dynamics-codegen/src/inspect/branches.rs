@@ -25,13 +25,15 @@ fn supports(antecedents: &[Option<usize>], a: usize, mut d: usize) -> bool {
 }
 
 /// Whether `D_ij` can be nonzero: one joint is the other or an ancestor of it.
-pub(super) fn related(antecedents: Option<&[Option<usize>]>, i: usize, j: usize) -> bool {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn related(antecedents: Option<&[Option<usize>]>, i: usize, j: usize) -> bool {
     antecedents.map_or(true, |a| supports(a, i, j) || supports(a, j, i))
 }
 
 /// The branches, 1-based: each run of joints that hang one from the one before, with where it
 /// hangs: "joints 1-7 from the base; joint 8 from joint 7; joint 9 from joint 7".
-pub(super) fn describe(antecedents: &[Option<usize>]) -> String {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn describe(antecedents: &[Option<usize>]) -> String {
     let mut runs: Vec<(usize, usize)> = Vec::new();
     for (j, &a) in antecedents.iter().enumerate() {
         match runs.last_mut() {
@@ -57,28 +59,11 @@ pub(super) fn describe(antecedents: &[Option<usize>]) -> String {
 
 /// The entries `D_ij` (i < j, 1-based) that are zero because i and j are on different
 /// branches, as `D89, D8 10`.
-pub(super) fn zero_inertia(antecedents: &[Option<usize>]) -> Vec<(usize, usize)> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn zero_inertia(antecedents: &[Option<usize>]) -> Vec<(usize, usize)> {
     let n = antecedents.len();
     (0..n)
         .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
         .filter(|&(i, j)| !related(Some(antecedents), i, j))
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{describe, related, zero_inertia};
-
-    /// A hand: a palm joint, then two fingers of two joints each off it.
-    #[test]
-    fn a_palm_with_two_fingers() {
-        let a = [None, Some(0), Some(1), Some(0), Some(3)];
-        assert_eq!(
-            describe(&a),
-            "joints 1-3 from the base; joints 4-5 from joint 1"
-        );
-        assert!(related(Some(&a), 0, 4) && related(Some(&a), 2, 1) && !related(Some(&a), 2, 3));
-        assert_eq!(zero_inertia(&a), [(1, 3), (1, 4), (2, 3), (2, 4)]);
-        assert!(related(None, 2, 3));
-    }
 }

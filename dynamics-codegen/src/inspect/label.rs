@@ -5,7 +5,8 @@ use super::print::Printer;
 
 /// A quantity of the equations of motion, each printed in its own section.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Quantity {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub enum Quantity {
     /// The inertia `D_ij` (eq. 6.43).
     Inertia,
     /// The centripetal and Coriolis coefficient `D_ijk` (eq. 6.44).
@@ -62,7 +63,8 @@ impl Quantity {
 
 /// The name of one printed equation: `D12`, `D112`, `T1`, `D11 + I1(act)`.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(super) struct Label {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Label {
     quantity: Quantity,
     /// 0-based joint indices.
     joints: Vec<usize>,
@@ -71,7 +73,8 @@ pub(super) struct Label {
 }
 
 impl Label {
-    pub(super) fn new(quantity: Quantity, joints: &[usize]) -> Label {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn new(quantity: Quantity, joints: &[usize]) -> Label {
         Label {
             quantity,
             joints: joints.to_vec(),
@@ -80,7 +83,8 @@ impl Label {
     }
 
     /// The same name with the actuator inertia added.
-    pub(super) fn with_actuator_inertia(self) -> Label {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn with_actuator_inertia(self) -> Label {
         Label {
             actuator_inertia: true,
             ..self
@@ -88,7 +92,8 @@ impl Label {
     }
 
     /// The name as `printer` writes it.
-    pub(super) fn render(&self, printer: &Printer<'_>) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn render(&self, printer: &Printer<'_>) -> String {
         if self.quantity == Quantity::HandPose {
             // The book's `n_x` … `p_z`: column letter, row axis.
             let column = ["n", "o", "a", "p"][self.joints[1]];
@@ -110,51 +115,5 @@ impl Label {
             "act"
         };
         format!("{name} + I{}({act})", printer.indices(&self.joints[..1]))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{Label, Quantity};
-    use crate::algo::JointKind;
-    use crate::inspect::print::{Format, Printer};
-
-    #[test]
-    fn labels_print_themselves() {
-        let kinds = [JointKind::Revolute; 2];
-        let text = Printer {
-            format: Format::Text,
-            kinds: &kinds,
-            factors_first: false,
-        };
-        let latex = Printer {
-            format: Format::Latex,
-            kinds: &kinds,
-            factors_first: false,
-        };
-        let diagonal = Label::new(Quantity::Inertia, &[1, 1]).with_actuator_inertia();
-        assert_eq!(diagonal.render(&text), "D22 + I2(act)");
-        assert_eq!(diagonal.render(&latex), "D_{22} + I_{2}(\\mathrm{act})");
-        let christoffel = Label::new(Quantity::Christoffel, &[0, 1, 0]);
-        assert_eq!(christoffel.render(&text), "D121");
-        assert_eq!(Label::new(Quantity::Torque, &[0]).render(&text), "T1");
-        assert_eq!(Label::new(Quantity::HandPose, &[2, 1]).render(&text), "oz");
-        assert_eq!(
-            Label::new(Quantity::HandPose, &[0, 3]).render(&latex),
-            "p_x"
-        );
-        let hand = Label::new(Quantity::JacobianInHand, &[5, 1]);
-        assert_eq!(hand.render(&text), "ᴴJ62");
-        assert_eq!(hand.render(&latex), "{}^{H}J_{62}");
-        let ten = [JointKind::Revolute; 10];
-        let wide = Printer {
-            format: Format::Text,
-            kinds: &ten,
-            factors_first: false,
-        };
-        assert_eq!(
-            Label::new(Quantity::Coriolis, &[0, 9]).render(&wide),
-            "C1,10"
-        );
     }
 }

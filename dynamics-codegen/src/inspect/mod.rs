@@ -17,18 +17,20 @@
 //! variable or the sine or cosine of a sum of joint angles), and prints the simplified models'
 //! prunings (`simplified`, `simplified_report`).
 
-mod arrange;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod arrange;
 mod base_parameters;
-mod branches;
-mod label;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod branches;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod label;
 mod number;
-mod print;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod print;
 mod render;
 mod sections;
 mod simplified;
 mod simplified_report;
-#[cfg(test)]
-mod tests;
 
 pub use crate::poly::Limits;
 pub use base_parameters::render_base_parameters;

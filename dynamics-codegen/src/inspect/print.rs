@@ -21,13 +21,17 @@ pub enum Format {
 }
 
 /// Prints terms in one format for a robot with the given joints.
-pub(super) struct Printer<'a> {
-    pub(super) format: Format,
-    pub(super) kinds: &'a [JointKind],
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Printer<'a> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub format: Format,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub kinds: &'a [JointKind],
     /// Whether a group of sines and cosines has its factors before it, `C1(a2 C2 + a3 C23)`
     /// as chapter 3 writes the kinematics, rather than after, as chapter 6 writes the dynamics
     /// and any group of parameters alone: `(1/2 m1 + m2) g l1 C1`, `(l2 + 0.1) C12`.
-    pub(super) factors_first: bool,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub factors_first: bool,
 }
 
 const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
@@ -128,7 +132,8 @@ impl Printer<'_> {
     }
 
     /// A sum of terms.
-    pub(super) fn sum(&self, terms: &[Term]) -> String {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn sum(&self, terms: &[Term]) -> String {
         if terms.is_empty() {
             return "0".into();
         }

@@ -139,8 +139,8 @@ impl<'a> Expander<'a> {
     }
 
     /// The polynomial of node `id`, before folding.
-    #[cfg(test)]
-    pub(super) fn expanded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn expanded(&mut self, id: NodeId) -> Option<BTreeMap<Monomial, Number>> {
         Some(self.poly(id)?.into_terms())
     }
 

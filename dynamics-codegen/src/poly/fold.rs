@@ -8,13 +8,19 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Bound;
 
 /// One fold: `k · rest · trig(a + b)` replaces `k` of term `m` and of its partner.
-struct Fold {
-    m: Monomial,
-    partner: Monomial,
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Fold {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub m: Monomial,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub partner: Monomial,
     /// Added to the partner's coefficient.
-    partner_delta: Number,
-    folded: Monomial,
-    k: Number,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub partner_delta: Number,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub folded: Monomial,
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub k: Number,
 }
 
 /// Folds `c Ca Cb − c Sa Sb` into `c C(a+b)` and `c Sa Cb + c Ca Sb` into `c S(a+b)` until
@@ -28,7 +34,8 @@ struct Fold {
 /// before the terms past the furthest searched. Searching from the start each time made the
 /// Panda's torques take minutes; resuming from the first of those terms still searched the
 /// terms between them again, most of a 7-joint arm's `dynamics inspect`.
-pub(crate) fn fold_trig(
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn fold_trig(
     terms: &mut BTreeMap<Monomial, Number>,
     charge: &mut dyn FnMut(usize) -> Option<()>,
 ) -> Option<()> {
@@ -117,7 +124,8 @@ fn partners(m: &Monomial) -> impl Iterator<Item = Monomial> + '_ {
     })
 }
 
-fn add_term(terms: &mut BTreeMap<Monomial, Number>, m: Monomial, c: Number) {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn add_term(terms: &mut BTreeMap<Monomial, Number>, m: Monomial, c: Number) {
     let entry = terms.entry(m.clone()).or_insert(Number::ZERO);
     *entry = *entry + c;
     if entry.is_zero() {
@@ -126,8 +134,8 @@ fn add_term(terms: &mut BTreeMap<Monomial, Number>, m: Monomial, c: Number) {
 }
 
 /// The first pair of terms, in their order, that folds.
-#[cfg(test)]
-fn find_fold(terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn find_fold(terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
     terms.iter().find_map(|(m, &c)| fold_of(terms, m, c))
 }
 
@@ -193,51 +201,4 @@ fn fold_pair(
         folded,
         k,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{add_term, find_fold, fold_trig};
-    use crate::poly::{Expander, Limits, Monomial};
-    use crate::symbolic::Number;
-    use std::collections::BTreeMap;
-
-    /// The folding as first written: each search from the start.
-    fn from_the_start(terms: &mut BTreeMap<Monomial, Number>) {
-        while let Some(fold) = find_fold(terms) {
-            add_term(terms, fold.m, -fold.k);
-            add_term(terms, fold.partner, fold.partner_delta);
-            add_term(terms, fold.folded, fold.k);
-        }
-    }
-
-    /// Resuming the search gives the very terms a search from the start gives, on robots'
-    /// torques, mass matrices and gravity torques.
-    #[test]
-    fn resumed_as_from_the_start() {
-        for file in [
-            "robots/puma560.toml",
-            "robots/stanford.toml",
-            "tests/data/reference/robots/random2.json",
-            "robots/two_link_friction.toml",
-        ] {
-            let path = format!("{}/../{file}", env!("CARGO_MANIFEST_DIR"));
-            let text = std::fs::read_to_string(&path).expect("the robot file");
-            let eq =
-                crate::trace::derive(&crate::front::load(&path, &text).expect("a robot").robot);
-            let mut expander = Expander::new(&eq, Limits::UNBOUNDED);
-            let ids = eq
-                .tau
-                .iter()
-                .chain(&eq.gravity)
-                .chain(eq.mass.iter().flatten());
-            for &id in ids {
-                let mut unfolded = expander.expanded(id).expect("a polynomial");
-                let mut resumed = unfolded.clone();
-                from_the_start(&mut unfolded);
-                fold_trig(&mut resumed, &mut |_| Some(())).expect("no budget");
-                assert_eq!(resumed, unfolded, "{file}");
-            }
-        }
-    }
 }

@@ -14,15 +14,16 @@
 //! stays shared.
 
 mod expand;
-mod fold;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod fold;
 mod monomial;
 mod parse;
 mod polynomial;
 mod symbol;
 
 pub use expand::{Expander, Limits};
-#[cfg(test)]
-pub(crate) use fold::fold_trig;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub use fold::fold_trig;
 pub use monomial::Monomial;
 pub use polynomial::Poly;
 pub use symbol::{AngleSum, MimicAngle, Sym};

@@ -18,17 +18,12 @@
 //! g and M beside its τ); stable proc macros have no warnings, so the rustdoc is where the user
 //! reads it.
 
-mod bound;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod bound;
 pub mod eval;
 mod horner;
-#[cfg(test)]
-mod mimic_tests;
 mod outputs;
 mod prune;
-#[cfg(test)]
-mod prune_tests;
-#[cfg(test)]
-mod tests;
 
 pub use bound::{max_abs_cos, max_abs_sin};
 pub use outputs::{prune_outputs, Caps, Output, Pruned, PrunedOutput, OUTPUTS};
@@ -44,13 +39,15 @@ use horner::Builder;
 /// Most terms a pruned output (all its elements) may keep. Past it the expanded form costs
 /// several times the exact recursive one, and one function of thousands of `let`s overflows
 /// the stack of rustc's debug-info pass (a 6-joint random arm's τ keeping 3867 terms did).
-const MAX_KEPT: usize = 1500;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub const MAX_KEPT: usize = 1500;
 
 /// Most term operations (see [`crate::trace::Fallback::TooMuchWork`]) the expansion of one
 /// output may take. The derive runs in every build of the user's crate, unoptimized unless the crate says
 /// otherwise, so the work of a request must stay within seconds there; an output that needs
 /// more is far past `MAX_KEPT` anyway. The figures behind the value are in `docs/design/simplified.md`.
-const MAX_WORK: u64 = 10_000_000;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub const MAX_WORK: u64 = 10_000_000;
 
 /// The derive's caps on each output.
 const DERIVE: Caps = Caps {
@@ -86,7 +83,8 @@ pub fn add(eq: &mut Equations, request: &Simplification) -> Result<(), String> {
 }
 
 /// The node ids of an exact output.
-fn elements(shape: Shape<'_>) -> Elements<NodeId> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn elements(shape: Shape<'_>) -> Elements<NodeId> {
     match shape {
         Shape::Vector(v) => Elements::Vector(v.to_vec()),
         Shape::Matrix(m) => Elements::Matrix(m.to_vec()),

@@ -8,7 +8,8 @@ mod hasher;
 pub mod modular;
 mod node;
 mod number;
-mod tangent;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod tangent;
 mod tape;
 
 pub use calculus::Wrt;

@@ -31,30 +31,21 @@ mod energy;
 mod expr;
 mod floating;
 mod floating_kinematics;
-#[cfg(test)]
-mod floating_kinematics_tests;
 mod forward;
 mod friction;
 mod gravity;
 mod joints;
 mod kinematics;
 mod lane_solve;
-#[cfg(test)]
-mod lane_solve_tests;
 mod mass;
 mod mimic;
-#[cfg(test)]
-mod mimic_regressor_tests;
-#[cfg(test)]
-mod mimic_tests;
 mod newton_euler;
 mod outputs;
 mod regressor;
 mod simplified;
 mod tips;
-mod tracer;
-#[cfg(test)]
-mod tree_tests;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod tracer;
 
 use crate::algo::{JointKind, RobotScalars};
 use crate::method::{Family, FamilySet};

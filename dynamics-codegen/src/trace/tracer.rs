@@ -214,7 +214,8 @@ fn rational_point(angle: f64) -> (Fp, Fp) {
 }
 
 /// Sine and cosine of an exact multiple `k` of π when they are rational.
-fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
     // Quarter turns give 0 and ±1; other angles (30°: cos = √3/2) are not rational in both.
     let quarter_turns = k.mul(Number::int(2)).as_integer()?;
     Some(match quarter_turns.rem_euclid(4) {
@@ -223,25 +224,4 @@ fn exact_sin_cos(k: Number) -> Option<(Number, Number)> {
         2 => (Number::ZERO, Number::MINUS_ONE),
         _ => (Number::MINUS_ONE, Number::ZERO),
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::exact_sin_cos;
-    use crate::symbolic::Number;
-
-    #[test]
-    fn exact_angles() {
-        let half = Number::ratio(1, 2).unwrap();
-        assert_eq!(exact_sin_cos(half), Some((Number::ONE, Number::ZERO)));
-        assert_eq!(
-            exact_sin_cos(-half),
-            Some((Number::MINUS_ONE, Number::ZERO))
-        );
-        assert_eq!(
-            exact_sin_cos(Number::ONE),
-            Some((Number::ZERO, Number::MINUS_ONE))
-        );
-        assert_eq!(exact_sin_cos(Number::ratio(1, 3).unwrap()), None);
-    }
 }

@@ -12,4 +12,5 @@ mod fuzz_urdf;
 mod niku_symbolic;
 mod numeric;
 mod robustness;
+mod unit;
 mod urdf_trees;

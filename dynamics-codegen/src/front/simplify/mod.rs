@@ -3,7 +3,8 @@
 //! source and the defaults (a URDF's `<limit>`s). The derive and the command-line tool resolve
 //! a file's request here, the same way ([`FileRequest::resolve`]).
 
-pub(in crate::front) mod given;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod given;
 
 use given::{default_joint, Defaults, Given};
 

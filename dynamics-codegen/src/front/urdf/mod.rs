@@ -20,10 +20,8 @@ mod mimic;
 mod robot;
 mod select;
 mod tree;
-mod xml;
-
-#[cfg(test)]
-mod tests;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod xml;
 
 use super::errors::FileError;
 use super::sources::{Loaded, Positions};

@@ -189,7 +189,8 @@ const STRIDE: usize = 64;
 /// The line and column of each byte offset, as roxmltree counts them (lines after `\n`,
 /// columns in characters), found in constant time: roxmltree's `text_pos_at` counts from the
 /// start of the text, which made reading a file of many elements quadratic.
-pub(super) struct Lines {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Lines {
     /// The offset where each line starts.
     starts: Vec<usize>,
     /// The characters before each multiple of [`STRIDE`] bytes.
@@ -197,7 +198,8 @@ pub(super) struct Lines {
 }
 
 impl Lines {
-    pub(super) fn new(text: &str) -> Lines {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn new(text: &str) -> Lines {
         let bytes = text.as_bytes();
         let starts = std::iter::once(0)
             .chain(
@@ -217,7 +219,8 @@ impl Lines {
         Lines { starts, chars }
     }
 
-    pub(super) fn at(&self, text: &[u8], offset: usize) -> At {
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub fn at(&self, text: &[u8], offset: usize) -> At {
         let line = self.starts.partition_point(|start| *start <= offset);
         let start = self.starts[line - 1];
         let chars_before = |offset: usize| {

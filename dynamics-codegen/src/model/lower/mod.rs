@@ -34,10 +34,6 @@
 //! follow from that turned frame as above. First children get γ = b = 0.
 
 mod geometry;
-#[cfg(test)]
-mod tests;
-#[cfg(test)]
-mod tree_tests;
 
 pub use geometry::NOISE_TOLERANCE;
 

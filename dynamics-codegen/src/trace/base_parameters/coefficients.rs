@@ -46,7 +46,8 @@ pub(super) fn numbers(
 }
 
 /// The rational whose residue is `residue`, where it is `x` to rounding; else `x`.
-fn exact_or_float(residue: Fp, x: f64) -> Number {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn exact_or_float(residue: Fp, x: f64) -> Number {
     let rational = residue
         .to_small_rational(HEIGHT)
         .and_then(|(a, b)| Number::ratio(a, b));
@@ -95,7 +96,8 @@ fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64
 
 /// `argmin ‖A x − b‖` for `A` of full column rank (rows given), by Householder QR on columns
 /// scaled to unit norm.
-fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
     let (m, k) = (a.len(), a.first().map_or(0, Vec::len));
     let scale: Vec<f64> = (0..k)
         .map(|j| {
@@ -147,37 +149,4 @@ fn least_squares(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Vec<f64> {
         };
     }
     x.iter().zip(&scale).map(|(x, s)| x / s).collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{exact_or_float, least_squares};
-    use crate::symbolic::modular::Fp;
-    use crate::symbolic::Number;
-
-    #[test]
-    fn solves_an_overdetermined_system() {
-        // Rows of x + 2y = b with b exact for x = 3, y = −1.
-        let a = vec![
-            vec![1.0, 0.0],
-            vec![0.0, 1.0],
-            vec![1.0, 1.0],
-            vec![2.0, 1.0],
-        ];
-        let b = vec![3.0, -1.0, 2.0, 5.0];
-        let x = least_squares(a, b);
-        assert!((x[0] - 3.0).abs() < 1e-14 && (x[1] + 1.0).abs() < 1e-14);
-    }
-
-    #[test]
-    fn recovers_decimals() {
-        // 0.4318² = 0.18645124, exactly.
-        let residue = Fp::int(4318 * 4318) * Fp::int(100_000_000).recip().unwrap();
-        assert_eq!(
-            exact_or_float(residue, 0.186_451_24),
-            Number::ratio(18_645_124, 100_000_000).unwrap()
-        );
-        // A residue that disagrees with the float keeps the float.
-        assert_eq!(exact_or_float(Fp::int(3), 0.5), Number::Float(0.5));
-    }
 }

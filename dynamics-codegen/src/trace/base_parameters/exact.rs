@@ -10,7 +10,8 @@ use crate::symbolic::{Graph, Node, NodeId, Var};
 use std::collections::HashMap;
 
 /// The relations found.
-pub(super) struct Relations {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub struct Relations {
     /// The pivot columns, ascending.
     pub pivots: Vec<usize>,
     /// Per column, its coefficients on `pivots` (a pivot: 1 on itself).
@@ -20,11 +21,8 @@ pub(super) struct Relations {
 /// The relations between `columns[c][i]` (column c, row i), in the columns' order, or `None`
 /// where the columns depend on a leaf that is not a joint variable (a struct field).
 /// The leaf [`Var::Exact`]`(k)` is `leaves[k]`.
-pub(super) fn relations(
-    graph: &Graph,
-    columns: &[Vec<NodeId>],
-    leaves: &[Fp],
-) -> Option<Relations> {
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn relations(graph: &Graph, columns: &[Vec<NodeId>], leaves: &[Fp]) -> Option<Relations> {
     let outputs: Vec<NodeId> = columns.iter().flatten().copied().collect();
     let mask = modular::needed(graph, &outputs);
     let only_joint_variables = graph.nodes().all(|(id, node)| {
@@ -179,49 +177,5 @@ fn subtract(row: &mut [Fp], other: &[Fp], factor: Fp) {
         if !y.is_zero() {
             *x = *x - factor * *y;
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::relations;
-    use crate::symbolic::modular::Fp;
-    use crate::symbolic::{Graph, Number, Var};
-
-    #[test]
-    fn finds_the_identity_of_sine_and_cosine() {
-        // Columns s², c², 1, 2s + 3, s: the third is the sum of the first two, the fifth a
-        // combination of the fourth and the third.
-        let mut g = Graph::new();
-        let (s, c) = (g.var(Var::SinQ(0)), g.var(Var::CosQ(0)));
-        let (one, two, three) = (
-            g.num(Number::ONE),
-            g.num(Number::int(2)),
-            g.num(Number::int(3)),
-        );
-        let s2 = g.mul(s, s);
-        let c2 = g.mul(c, c);
-        let two_s = g.mul(two, s);
-        let affine = g.add(two_s, three);
-        let columns: Vec<Vec<_>> = [s2, c2, one, affine, s].iter().map(|&x| vec![x]).collect();
-        let r = relations(&g, &columns, &[]).unwrap();
-        assert_eq!(r.pivots, vec![0, 1, 3]);
-        assert_eq!(r.coefficients[2], vec![Fp::ONE, Fp::ONE, Fp::ZERO]);
-        let half = Fp::int(2).recip().unwrap();
-        // s = (2s + 3)/2 − (3/2)(s² + c²)
-        let minus_three_halves = Fp::int(-3) * half;
-        assert_eq!(
-            r.coefficients[4],
-            vec![minus_three_halves, minus_three_halves, half]
-        );
-    }
-
-    #[test]
-    fn refuses_a_field() {
-        let mut g = Graph::new();
-        let p = g.var(Var::Param(0));
-        let s = g.var(Var::SinQ(0));
-        let x = g.mul(p, s);
-        assert!(relations(&g, &[vec![x]], &[]).is_none());
     }
 }

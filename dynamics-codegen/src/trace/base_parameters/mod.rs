@@ -14,8 +14,10 @@
 //! before it, so a parameter is grouped into the links nearer the base, `YY` into `XX` and
 //! `ZZ`, and the mass and `MZ` of a link into its predecessors, as Khalil's rules group them.
 
-mod coefficients;
-mod exact;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod coefficients;
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub mod exact;
 
 use super::Equations;
 use crate::model::{Joint, Robot, Value};

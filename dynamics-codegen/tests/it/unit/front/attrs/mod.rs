@@ -1,0 +1,3 @@
+//! The tests of `dynamics_codegen::front::attrs`, by file.
+
+mod tree;

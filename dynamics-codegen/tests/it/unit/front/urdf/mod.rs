@@ -1,0 +1,3 @@
+//! The tests of `dynamics_codegen::front::urdf`, by file.
+
+mod tests;

@@ -1,0 +1,5 @@
+//! The tests of `dynamics_codegen::inspect`, by file.
+
+mod branches;
+mod label;
+mod tests;

@@ -1,0 +1,4 @@
+//! The tests of `dynamics_codegen::model::lower`, by file.
+
+mod tests;
+mod tree_tests;
