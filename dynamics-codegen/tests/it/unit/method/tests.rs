@@ -91,3 +91,4 @@ fn every_method_is_complete() {
         let indexed = |key| template.iter().all(|t| t.contains(key));
         assert_eq!(indexed("{i}"), m.returns() != Returns::Scalar, "{m:?}");
     }
+}

@@ -237,7 +237,7 @@ fn a_chain_s_tangents_take_its_block_alone() {
     let at = eq.evaluate(&state);
     for plan in d.inverse_lanes.iter().flatten() {
         // In blocks of eight, whichever the plan takes.
-        let plan = &crate::symbolic::Tangents {
+        let plan = &dynamics_codegen::symbolic::Tangents {
             group: dynamics_codegen::symbolic::BLOCK,
             ..plan.clone()
         };
