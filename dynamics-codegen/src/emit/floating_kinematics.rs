@@ -196,7 +196,7 @@ fn trait_impl(
             fn frame_poses<T: #krate::Real>(&self, #q: &[T; #nq]) -> [#krate::Pose<T>; #frames] {
                 #poses.map(|mut rows| {
                     for (row, x) in rows.iter_mut().zip(&#q[..3]) {
-                        row[3] = row[3] + *x;
+                        row[3] += *x;
                     }
                     #krate::Pose::from_rows(rows)
                 })
@@ -225,30 +225,19 @@ fn trait_impl(
 /// every other character than a letter or digit an underscore).
 fn frame_constants(names: &[String]) -> TokenStream {
     let count = names.len();
-    let mut taken = vec!["FRAME_NAMES".to_owned(), "FRAME_COUNT".to_owned()];
-    let indices = names.iter().enumerate().map(|(i, name)| {
-        let upper: String = name
-            .chars()
-            .map(|c| {
-                if c.is_ascii_alphanumeric() {
-                    c.to_ascii_uppercase()
-                } else {
-                    '_'
-                }
-            })
-            .collect();
-        let mut ident = format!("FRAME_{upper}");
-        if taken.contains(&ident) {
-            ident = format!("{ident}_{i}");
-        }
-        taken.push(ident.clone());
-        let ident = Ident::new(&ident, Span::call_site());
-        let doc = format!("The index of the frame `{name}` in the `FloatingKinematics` results.");
-        quote! {
-            #[doc = #doc]
-            pub const #ident: usize = #i;
-        }
-    });
+    let idents = super::tip_names::index_names(names, "FRAME");
+    let indices = names
+        .iter()
+        .zip(idents)
+        .enumerate()
+        .map(|(i, (name, ident))| {
+            let doc =
+                format!("The index of the frame `{name}` in the `FloatingKinematics` results.");
+            quote! {
+                #[doc = #doc]
+                pub const #ident: usize = #i;
+            }
+        });
     quote! {
         /// The frames' names, in the order of the `FloatingKinematics` results.
         pub const FRAME_NAMES: [&'static str; #count] = [#(#names),*];

@@ -8,7 +8,7 @@ use quote::quote;
 /// robot's inherent impl.
 pub(super) fn constants(names: &[String]) -> TokenStream {
     let count = names.len();
-    let idents = index_names(names);
+    let idents = index_names(names, "TIP");
     let indices = names
         .iter()
         .zip(&idents)
@@ -28,12 +28,13 @@ pub(super) fn constants(names: &[String]) -> TokenStream {
     }
 }
 
-/// `TIP_` and the name in capitals, every other character than a letter or digit an
-/// underscore (`link_3.0_tip` gives `TIP_LINK_3_0_TIP`); a name that another already gives
-/// takes its index too (`TIP_A_B_2`).
+/// `{prefix}_` and the name in capitals, every other character than a letter or digit an
+/// underscore (`link_3.0_tip` gives `TIP_LINK_3_0_TIP` for the prefix `TIP`); a name that
+/// another already gives takes its index too (`TIP_A_B_2`), and none is `{prefix}_NAMES` or
+/// `{prefix}_COUNT`.
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
-pub fn index_names(names: &[String]) -> Vec<Ident> {
-    let mut taken: Vec<String> = vec!["TIP_NAMES".to_owned(), "TIP_COUNT".to_owned()];
+pub fn index_names(names: &[String], prefix: &str) -> Vec<Ident> {
+    let mut taken: Vec<String> = vec![format!("{prefix}_NAMES"), format!("{prefix}_COUNT")];
     names
         .iter()
         .enumerate()
@@ -48,7 +49,7 @@ pub fn index_names(names: &[String]) -> Vec<Ident> {
                     }
                 })
                 .collect();
-            let mut ident = format!("TIP_{upper}");
+            let mut ident = format!("{prefix}_{upper}");
             if taken.contains(&ident) {
                 ident = format!("{ident}_{i}");
             }

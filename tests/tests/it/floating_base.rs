@@ -9,9 +9,12 @@ use dynamics_runtime::FloatingDynamics;
 /// The bar: 1e-12, scaled by max(1, the largest element).
 const TOLERANCE: f64 = 1e-12;
 
+/// Solo 12, its root link the floating body, its four feet (the leaf links) the frames of its
+/// kinematics: the one derive of it that the floating tests share (each derive costs the
+/// tests' build).
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
-struct Solo12;
+pub(crate) struct Solo12;
 
 /// The same robot with its floating body named.
 #[derive(dynamics_runtime::Dynamics)]
@@ -31,7 +34,7 @@ struct AnymalB;
 #[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
 struct G1;
 
-fn numbers(x: &serde_json::Value) -> Vec<f64> {
+pub(crate) fn numbers(x: &serde_json::Value) -> Vec<f64> {
     x.as_array()
         .expect("a list")
         .iter()
@@ -39,12 +42,12 @@ fn numbers(x: &serde_json::Value) -> Vec<f64> {
         .collect()
 }
 
-fn array<const N: usize>(x: &serde_json::Value) -> [f64; N] {
+pub(crate) fn array<const N: usize>(x: &serde_json::Value) -> [f64; N] {
     numbers(x).try_into().expect("the length")
 }
 
 /// The reference data of `robot` (`tests/data/floating/ROBOT.json`).
-fn reference(robot: &str) -> serde_json::Value {
+pub(crate) fn reference(robot: &str) -> serde_json::Value {
     let path = format!("{}/data/floating/{robot}.json", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("the data");
     serde_json::from_str(&text).expect("JSON")

@@ -2,27 +2,12 @@
 //! batch forms: Solo 12 against Pinocchio 4.1's `aba` and `computeMinverse`
 //! (`tests/data/floating/solo12.json`, by `make.py`), to 1e-12 scaled.
 
+use super::floating_base::{array, numbers, reference, Solo12};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{FloatingDynamics, FloatingDynamicsBatch, NotPositiveDefinite};
 
 /// The bar: 1e-12, scaled by max(1, the largest element).
 const TOLERANCE: f64 = 1e-12;
-
-#[derive(dynamics_runtime::Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
-struct Solo12;
-
-fn numbers(x: &serde_json::Value) -> Vec<f64> {
-    x.as_array()
-        .expect("a list")
-        .iter()
-        .map(|e| e.as_f64().expect("a number"))
-        .collect()
-}
-
-fn array<const N: usize>(x: &serde_json::Value) -> [f64; N] {
-    numbers(x).try_into().expect("the length")
-}
 
 fn flat(x: &serde_json::Value) -> Vec<f64> {
     x.as_array()
@@ -32,11 +17,11 @@ fn flat(x: &serde_json::Value) -> Vec<f64> {
         .collect()
 }
 
-pub(crate) fn samples() -> Vec<serde_json::Value> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/data/floating/solo12.json");
-    let text = std::fs::read_to_string(path).expect("the data");
-    let data: serde_json::Value = serde_json::from_str(&text).expect("JSON");
-    data["samples"].as_array().expect("samples").clone()
+fn samples() -> Vec<serde_json::Value> {
+    reference("solo12")["samples"]
+        .as_array()
+        .expect("samples")
+        .clone()
 }
 
 #[test]

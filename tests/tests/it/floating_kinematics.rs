@@ -4,19 +4,12 @@
 //! and its Jacobian, `A_G`, `Ȧ_G v`, and each foot's pose, Jacobian and classical `J̇ v` in
 //! LOCAL and LOCAL_WORLD_ALIGNED, to 1e-12 scaled by the largest element of each.
 
+use super::floating_base::Solo12;
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{FloatingKinematics, Pose};
 
 /// The bar: 1e-12, scaled by max(1, the largest element).
 const TOLERANCE: f64 = 1e-12;
-
-#[derive(dynamics_runtime::Dynamics)]
-#[dynamics(
-    urdf = "../robots/urdf/floating/solo12.urdf",
-    base = floating,
-    tips = ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"]
-)]
-struct Solo12;
 
 fn json(file: &str) -> serde_json::Value {
     let path = format!("{}/data/floating/{file}", env!("CARGO_MANIFEST_DIR"));

@@ -98,8 +98,12 @@ fn every_file_of_a_test_binary_is_a_module_of_it() {
             };
             let declared = std::fs::read_to_string(&parent).is_ok_and(|text| {
                 text.lines().any(|line| {
-                    line.trim().trim_start_matches("pub ")
-                        == format!("mod {};", module.to_string_lossy())
+                    let line = line.trim();
+                    // `mod x;`, `pub mod x;`, `pub(crate) mod x;`
+                    let line = line.strip_prefix("pub").map_or(line, |rest| {
+                        rest.strip_prefix("(crate)").unwrap_or(rest).trim_start()
+                    });
+                    line == format!("mod {};", module.to_string_lossy())
                 })
             });
             (!declared)

@@ -2,9 +2,9 @@
 //! states of `tests/data/floating/solo12.json` and checked against Pinocchio 4.1
 //! (`solo12_kinematics.json`): the closed form the derive emits, before it is emitted.
 
-use dynamics_codegen::trace::derive_floating;
 use crate::unit::algo::floating_kinematics_tests::{check, data, flat, solo12_with_feet, FEET};
 use dynamics_codegen::symbolic::{NodeId, Var};
+use dynamics_codegen::trace::derive_floating;
 
 #[test]
 fn solo12_traced_against_pinocchio() {
