@@ -74,6 +74,7 @@ macro_rules! for_each_floating_method {
                         summary: "M(q) of a floating base, its rows first.",
                         element: "M{i}{j} = M{j}{i}",
                         diagonal: "M{i}{i}",
+                        into: mass_matrix_into,
                     }
                     /// The bias `h(q, v) = C(q, v) v + g(q)` (Pinocchio's `nonLinearEffects`).
                     fn bias_forces(q, v) -> vector, nalgebra bias_forces_na, batch bias_forces_batch {

@@ -7,6 +7,7 @@
 
 use super::impls::{forward, signature, Counts};
 use super::items::{generate_uncounted, module_name, Generated, PARAMETERS_FN};
+use super::names::{local, OUTPUT};
 use crate::method::{Argument, Method};
 use crate::trace::Equations;
 use proc_macro2::{Ident, Span, TokenStream};
@@ -71,11 +72,22 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
             }
             let call = quote!(#module::#name(&self.#parameters(), #(#pass),*));
             let call = forward(method, call, &counts, &t, krate);
+            // A tree's `M` written in place: the blocks between the legs left as the caller's.
+            let into = code.zeros.as_ref().and(method.in_place_name()).map(|into| {
+                let (into, y) = (Ident::new(into, Span::call_site()), local(OUTPUT));
+                quote! {
+                    #[inline]
+                    fn #into<#t: #krate::Real>(&self, #(#args),*, #y: &mut #ret) {
+                        #module::#into(&self.#parameters(), #(#pass),*, #y)
+                    }
+                }
+            });
             let function = quote! {
                 #[inline]
                 fn #name<#t: #krate::Real>(&self, #(#args),*) -> #ret {
                     #call
                 }
+                #into
             };
             (method, function)
         })

@@ -6,7 +6,7 @@ use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Shared};
-use crate::method::{Argument, Method};
+use crate::method::Argument;
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Equations, Shape};
 use quote::quote;
@@ -130,7 +130,7 @@ pub(super) fn emit_with(
 /// ([`branches`]). Read from the configuration, its hundreds of
 /// elements would all be computed before the first is stored, and wait on the stack.
 fn written_apart(eq: &Equations, output: &Output) -> bool {
-    output.method == Method::MassMatrix && branches(eq)
+    output.method.is_mass_matrix() && branches(eq)
 }
 
 /// Whether the robot branches (its `M` factored from the tips, [`crate::algo::Ldlt`]'s

@@ -292,12 +292,18 @@ for_each_method!(declare_method);
 
 impl Method {
     /// Whether its result is always written in place (`into` in its row), its by-value form
-    /// calling that function on zeros: the regressors. `M`'s `_into` is written so only
-    /// where it is computed apart and stored element by element, a tree's (elsewhere the
-    /// trait's default copies the by-value result).
+    /// calling that function on zeros: the regressors. `M`'s `_into` (a fixed or a floating
+    /// base's) is written so only where it is computed apart and stored element by element, a
+    /// tree's (elsewhere the trait's default copies the by-value result).
     #[must_use]
     pub fn always_in_place(self) -> bool {
-        self.in_place_name().is_some() && self != Method::MassMatrix
+        self.in_place_name().is_some() && !self.is_mass_matrix()
+    }
+
+    /// Whether it is a mass matrix `M(q)`, of a fixed or a floating base.
+    #[must_use]
+    pub fn is_mass_matrix(self) -> bool {
+        matches!(self, Method::MassMatrix | Method::FloatingMassMatrix)
     }
 
     /// The method called `name` of a fixed base (a floating base's have the same names:

@@ -151,3 +151,36 @@ fn solo12_in_f32() {
     let error = scaled_error(&got, &numbers(&s["tau"]));
     assert!(error < 1e-4, "τ in f32 off by {error:e}");
 }
+
+/// `mass_matrix_into` is the by-value `mass_matrix` bit for bit, into a matrix of zeros or the
+/// previous state's M, and leaves the blocks between two legs (exact zeros: no leg moves
+/// another) as the caller's matrix has them.
+#[test]
+fn solo12_mass_matrix_into() {
+    // Joints 3 per leg, after the base's six coordinates.
+    let leg = |k: usize| (k >= 6).then(|| (k - 6) / 3);
+    let mut previous = [[0.0; 18]; 18];
+    for s in reference("solo12")["samples"].as_array().expect("samples") {
+        let q = array::<19>(&s["q"]);
+        let want = Solo12.mass_matrix(&q);
+        let mut nan = [[f64::NAN; 18]; 18];
+        Solo12.mass_matrix_into(&q, &mut nan);
+        for (i, row) in nan.iter().enumerate() {
+            for (j, &got) in row.iter().enumerate() {
+                let between_legs = matches!((leg(i), leg(j)), (Some(a), Some(b)) if a != b);
+                if between_legs {
+                    assert!(got.is_nan(), "M[{i}][{j}] between legs written");
+                } else {
+                    let left = got.is_nan() && want[i][j] == 0.0;
+                    assert!(got.to_bits() == want[i][j].to_bits() || left, "M[{i}][{j}]");
+                }
+            }
+        }
+        let mut zeros = [[0.0; 18]; 18];
+        Solo12.mass_matrix_into(&q, &mut zeros);
+        Solo12.mass_matrix_into(&q, &mut previous);
+        let bits = |m: [[f64; 18]; 18]| m.map(|row| row.map(f64::to_bits));
+        assert_eq!(bits(zeros), bits(want));
+        assert_eq!(bits(previous), bits(want));
+    }
+}
