@@ -72,9 +72,6 @@ impl<'a> Emitter<'a> {
             refill(&mut t.origin, n, Origin::Here);
             refill(&mut t.depth, n, Cell::new(u32::MAX));
         }
-        // The check the tests once made: run wherever debug assertions are, cheap beside emission.
-        #[cfg(debug_assertions)]
-        t.assert_reset();
         Emitter {
             graph: &eq.graph,
             eq,
@@ -217,25 +214,6 @@ thread_local! {
 /// The tables an emission keeps at most: each function's emitter is dropped before the next
 /// is made.
 const SPARE_TABLES: usize = 2;
-
-impl Tables {
-    /// Whether every entry is its default, as an emitter expects its tables.
-    #[cfg(debug_assertions)]
-    fn assert_reset(&self) {
-        assert!(self.uses.iter().all(|&u| u == 0), "uses reset");
-        assert!(self.needed.iter().all(|&x| !x), "needed reset");
-        assert!(self.slots.iter().all(|&x| x == 0), "names reset");
-        assert!(self.stop.iter().all(|&x| !x), "stops reset");
-        assert!(
-            self.origin.iter().all(|&x| x == Origin::Here),
-            "origins reset"
-        );
-        assert!(
-            self.depth.iter().all(|x| x.get() == u32::MAX),
-            "depths reset"
-        );
-    }
-}
 
 /// Drops the spare tables: called at the end of an emission, so that none outlives it.
 pub(super) fn release_spare_tables() {
