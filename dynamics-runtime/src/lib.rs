@@ -78,6 +78,7 @@ mod dynamics;
 pub mod batch;
 mod configuration;
 mod factor;
+mod floating_contacts;
 mod floating_kinematics;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
@@ -102,6 +103,7 @@ pub use crate::dynamics::{
     FloatingDynamics, TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
+pub use crate::floating_contacts::{ContactDynamics, ContactError, FloatingContacts};
 pub use crate::floating_kinematics::FloatingKinematics;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;

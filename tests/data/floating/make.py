@@ -315,9 +315,106 @@ def kinematics(name, urdf):
     print(name, "kinematics:", len(samples), "samples,", len(frames), "frames")
 
 
+# Contacts at the feet of Solo 12 (issue 43, item 3), read by `contacts`: the sets of feet in
+# contact, one per sample in turn (sample 0, the neutral posture with straight legs, has two
+# diagonal feet: with all four its contacts are dependent).
+CONTACT_MASKS = [[True, False, False, True], [True, True, True, True], [False, True, True, False],
+                 [True, True, True, False], [False, False, True, False], [False, False, False, False]]
+
+
+def contacts(name, urdf):
+    """Contacts at the frames KINEMATICS[name], at the states of `<name>.json`, written to
+    `<name>_contacts.json`: for random wrenches [f, m] and point forces f exerted on the robot at
+    each frame's origin in LOCAL_WORLD_ALIGNED, tau = rnea(q, v, a, fext) and
+    a = aba(q, v, tau, fext) (fext: each wrench carried to its frame's joint, in the joint's
+    frame), each checked against tau -/+ sum J^T w with getFrameJacobian in LOCAL_WORLD_ALIGNED;
+    and constraintDynamics with a RigidConstraintModel CONTACT_3D in LOCAL_WORLD_ALIGNED at each
+    frame of CONTACT_MASKS (no Baumgarte), its ddq and lambda_c checked against the KKT system
+    [M J^T; J 0] [a; -lambda] = [tau - h; -gamma] solved with numpy."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    frames = KINEMATICS[name]
+    ids = [model.getFrameId(f) for f in frames]
+    rng = np.random.default_rng(SEED + 2)
+    samples = []
+    for k, s in enumerate(states):
+        q, v, a, tau = (np.array(s[key]) for key in ("q", "v", "a", "tau"))
+        wrenches = rng.uniform(-10, 10, (len(frames), 6))
+        forces = rng.uniform(-10, 10, (len(frames), 3))
+        pin.computeJointJacobians(model, data, q)
+        pin.updateFramePlacements(model, data)
+        jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
+        out = {}
+        for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
+            fext = [pin.Force.Zero() for _ in range(model.njoints)]
+            for i, wrench in zip(ids, w):
+                frame = model.frames[i]
+                rotation = data.oMf[i].rotation
+                local = pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:])
+                fext[frame.parentJoint] += frame.placement.act(local)
+            generalized = sum(j.T @ wrench for j, wrench in zip(jac, w))
+            tau_ext = pin.rnea(model, data, q, v, a, fext).copy()
+            assert scaled(tau_ext, tau - generalized) < TOLERANCE
+            acc_ext = pin.aba(model, data, q, v, tau, fext).copy()
+            assert scaled(pin.rnea(model, data, q, v, acc_ext) - generalized, tau) < 1e-9
+            out[key] = (w if key == "wrenches" else forces).tolist()
+            out["tau_" + key] = tau_ext.tolist()
+            out["a_" + key] = acc_ext.tolist()
+        mask = CONTACT_MASKS[k % len(CONTACT_MASKS)]
+        held = [i for i, m in zip(ids, mask) if m]
+        models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
+                                           model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in held]
+        datas = [c.createData() for c in models]
+        pin.initConstraintDynamics(model, data, models, datas)
+        ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
+        lambda_c = data.lambda_c.copy().reshape(-1, 3)
+        # The same by the KKT system, from M, h, the Jacobians' linear rows and the feet's
+        # classical accelerations at a = 0.
+        m = pin.crba(model, data, q)
+        m = np.triu(m) + np.triu(m, 1).T
+        h = pin.nonLinearEffects(model, data, q, v)
+        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+        pin.computeJointJacobians(model, data, q)
+        pin.updateFramePlacements(model, data)
+        jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in held]
+                       + [np.zeros((0, model.nv))])
+        gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
+                                for i in held] + [np.zeros(0)])
+        c = len(gamma)
+        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
+        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
+        assert scaled(ddq, solution[:model.nv]) < 1e-10
+        assert not held or scaled(lambda_c.ravel(), -solution[model.nv:]) < 1e-10
+        full = np.zeros((len(frames), 3))
+        full[np.array(mask, dtype=bool)] = lambda_c
+        out.update({"in_contact": mask, "a_contact": ddq.tolist(), "lambda": full.tolist()})
+        samples.append(out)
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (contacts) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, a, tau of its samples, in order)",
+        "frames": frames,
+        "seed": SEED + 2,
+        "conventions": "wrenches [f, m] and forces f exerted on the robot at each frame's origin in world axes "
+                       "(LOCAL_WORLD_ALIGNED); tau_X = rnea(q, v, a, fext), a_X = aba(q, v, tau, fext); "
+                       "a_contact, lambda = constraintDynamics(q, v, tau) with CONTACT_3D in LOCAL_WORLD_ALIGNED "
+                       "at the frames in_contact (no Baumgarte), lambda the force on the robot in world axes, "
+                       "zero at a frame not in contact",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_contacts.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "contacts:", len(samples), "samples,", len(frames), "frames")
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
     for name, urdf in ROBOTS.items():
         if name in KINEMATICS:
             kinematics(name, urdf)
+    contacts("solo12", ROBOTS["solo12"])

@@ -1,0 +1,287 @@
+//! Contacts at the named frames of a robot on a free-flying base (issue 43, item 3): inverse
+//! and forward dynamics with given contact wrenches, and the forward dynamics with 3-D point
+//! contacts held, for every robot that has both [`FloatingDynamics`] and
+//! [`FloatingKinematics`] (every `base = floating` derive). Written once over the generated
+//! methods, heap-free; see `docs/floating-base.md`.
+//!
+//! With `w_f` the wrench `[f, m]` that the environment exerts on the robot at frame `f`'s
+//! origin, in world axes (Pinocchio's LOCAL_WORLD_ALIGNED), and `J_f` the frame's Jacobian in
+//! the same axes:
+//!
+//! ```text
+//! τ = M(q) a + h(q, v) − Σ_f J_fᵀ w_f          a = M(q)⁻¹ (τ − h(q, v) + Σ_f J_fᵀ w_f)
+//! ```
+//!
+//! Held point contacts at the frames in contact, `J` their Jacobians' linear rows stacked
+//! (3 per foot) and `γ = J̇ v` their origins' classical accelerations at `a = 0`, solve
+//! Pinocchio's `constraintDynamics` (CONTACT_3D, LOCAL_WORLD_ALIGNED, no Baumgarte):
+//!
+//! ```text
+//! [M  Jᵀ] [ a] = [τ − h]        a₀ = M⁻¹ (τ − h),   (J M⁻¹ Jᵀ) λ = −(J a₀ + γ),
+//! [J  0 ] [−λ]   [ −γ  ]        a = a₀ + M⁻¹ Jᵀ λ
+//! ```
+//!
+//! `J M⁻¹ Jᵀ` (the inverse of the operational-space inertia, 3F × 3F) is factored `L D Lᵀ` on
+//! the stack; its pivots are positive exactly when the contacts are independent (J of full row
+//! rank).
+
+use crate::{FloatingDynamics, FloatingKinematics, NotPositiveDefinite, Real};
+use core::fmt;
+
+/// Why [`FloatingContacts::contact_dynamics`] has no solution.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ContactError {
+    /// `M(q)` is not positive definite (as in `forward_dynamics`).
+    NotPositiveDefinite,
+    /// The contacts constrain the robot dependently: `J M⁻¹ Jᵀ` has a pivot that is not
+    /// positive (two feet in contact at one point, a leg stretched so that a foot cannot move
+    /// along some direction in any way, or an input is NaN).
+    DependentContacts,
+}
+
+impl From<NotPositiveDefinite> for ContactError {
+    fn from(_: NotPositiveDefinite) -> Self {
+        Self::NotPositiveDefinite
+    }
+}
+
+impl fmt::Display for ContactError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::NotPositiveDefinite => {
+                "the mass matrix is not positive definite at this configuration"
+            }
+            Self::DependentContacts => "the contacts are not independent at this configuration",
+        })
+    }
+}
+
+impl core::error::Error for ContactError {}
+
+/// The forward dynamics with point contacts held: the acceleration and the contact forces.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactDynamics<T, const V: usize, const F: usize> {
+    /// `a`, as `FloatingDynamics::forward_dynamics`' (the base's in its own frame).
+    pub acceleration: [T; V],
+    /// `λ_f`: the force that the ground exerts on the robot at frame `f`'s origin, in world
+    /// axes (Pinocchio's `lambda_c` in LOCAL_WORLD_ALIGNED); zero for a frame not in contact.
+    pub forces: [[T; 3]; F],
+}
+
+/// Contact wrenches, forces and held point contacts at the `F` frames of
+/// [`FloatingKinematics`] (`tips = [..]`, else the leaf links: a quadruped's feet), indexed as
+/// its results (`Robot::FRAME_FL_FOOT`). Implemented for every robot with [`FloatingDynamics`]
+/// and [`FloatingKinematics`]; not generated (written once over their methods).
+///
+/// Every wrench or force here is the one the **environment exerts on the robot**, at the
+/// frame's origin, in **world axes** (Pinocchio's LOCAL_WORLD_ALIGNED): a standing foot
+/// pushed up by the ground has `f_z > 0`. A wrench is `[f_x, f_y, f_z, m_x, m_y, m_z]`, its
+/// moment about the frame's origin.
+pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
+    FloatingDynamics<Q, V> + FloatingKinematics<Q, V, F>
+{
+    /// `τ = M(q) a + h(q, v) − Σ_f J_fᵀ w_f`: the generalized forces that give `a` while the
+    /// environment exerts the wrench `wrenches[f]` at frame `f` (Pinocchio's `rnea` with
+    /// `fext`). The base's six rows are what is left for other contacts to supply (zero where
+    /// the wrenches hold the robot).
+    fn inverse_dynamics_with_wrenches<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        a: &[T; V],
+        wrenches: &[[T; 6]; F],
+    ) -> [T; V] {
+        let mut tau = self.inverse_dynamics(q, v, a);
+        let generalized = wrenches_to_generalized(&self.frame_jacobians_world_aligned(q), wrenches);
+        for (t, w) in tau.iter_mut().zip(generalized) {
+            *t -= w;
+        }
+        tau
+    }
+
+    /// As [`Self::inverse_dynamics_with_wrenches`] with point forces `forces[f]` at the
+    /// frames' origins (no moments).
+    fn inverse_dynamics_with_forces<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        a: &[T; V],
+        forces: &[[T; 3]; F],
+    ) -> [T; V] {
+        self.inverse_dynamics_with_wrenches(q, v, a, &point_wrenches(forces))
+    }
+
+    /// `a = M(q)⁻¹ (τ − h(q, v) + Σ_f J_fᵀ w_f)` (Pinocchio's `aba` with `fext`), the inverse of
+    /// [`Self::inverse_dynamics_with_wrenches`]. `Err(NotPositiveDefinite)` as
+    /// `forward_dynamics`.
+    fn forward_dynamics_with_wrenches<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        tau: &[T; V],
+        wrenches: &[[T; 6]; F],
+    ) -> Result<[T; V], NotPositiveDefinite> {
+        let mut total = *tau;
+        let generalized = wrenches_to_generalized(&self.frame_jacobians_world_aligned(q), wrenches);
+        for (t, w) in total.iter_mut().zip(generalized) {
+            *t += w;
+        }
+        self.forward_dynamics(q, v, &total)
+    }
+
+    /// As [`Self::forward_dynamics_with_wrenches`] with point forces at the frames' origins.
+    fn forward_dynamics_with_forces<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        tau: &[T; V],
+        forces: &[[T; 3]; F],
+    ) -> Result<[T; V], NotPositiveDefinite> {
+        self.forward_dynamics_with_wrenches(q, v, tau, &point_wrenches(forces))
+    }
+
+    /// The forward dynamics with the origins of the frames where `in_contact[f]` held fixed
+    /// in the world (3-D point contacts, no friction limit): the acceleration and the contact
+    /// forces of Pinocchio's `constraintDynamics` with a `RigidConstraintModel` CONTACT_3D in
+    /// LOCAL_WORLD_ALIGNED at each such frame and no Baumgarte correction (see the module's
+    /// equations). The contacts change from call to call with the mask (a gait's stance
+    /// feet); a frame not in contact moves freely and has a zero force. No foot in contact
+    /// gives `forward_dynamics`' acceleration.
+    ///
+    /// `Err(NotPositiveDefinite)` as `forward_dynamics`, `Err(DependentContacts)` where
+    /// `J M⁻¹ Jᵀ` is singular (on lane types, where one lane's is).
+    fn contact_dynamics<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        tau: &[T; V],
+        in_contact: &[bool; F],
+    ) -> Result<ContactDynamics<T, V, F>, ContactError> {
+        let minv = self.mass_matrix_inverse(q)?;
+        let h = self.bias_forces(q, v);
+        let jacobians = self.frame_jacobians_world_aligned(q);
+        let drifts = self.frame_acceleration_biases_world_aligned(q, v);
+        let free = mat_vec(&minv, &core::array::from_fn(|i| tau[i] - h[i]));
+        // M⁻¹ J_fᵀ's columns, one per axis of a foot in contact (zero otherwise).
+        let minv_jt: [[[T; V]; 3]; F] = core::array::from_fn(|f| {
+            core::array::from_fn(|i| {
+                if in_contact[f] {
+                    mat_vec(&minv, &jacobians[f][i])
+                } else {
+                    [T::ZERO; V]
+                }
+            })
+        });
+        // The system (J M⁻¹ Jᵀ) λ = −(J a₀ + γ), a foot not in contact the identity's rows with
+        // a zero right side (λ_f = 0).
+        let mut system = [[[[T::ZERO; 3]; F]; 3]; F];
+        let mut rhs = [[T::ZERO; 3]; F];
+        for f in 0..F {
+            for i in 0..3 {
+                if !in_contact[f] {
+                    system[f][i][f][i] = T::ONE;
+                    continue;
+                }
+                rhs[f][i] = -(dot(&jacobians[f][i], &free) + drifts[f][i]);
+                for g in (0..F).filter(|&g| in_contact[g]) {
+                    for j in 0..3 {
+                        system[f][i][g][j] = dot(&jacobians[f][i], &minv_jt[g][j]);
+                    }
+                }
+            }
+        }
+        let forces = solve_contacts(system, rhs).ok_or(ContactError::DependentContacts)?;
+        let mut acceleration = free;
+        for (columns, force) in minv_jt.iter().zip(&forces) {
+            for (column, &lambda) in columns.iter().zip(force) {
+                for (x, &c) in acceleration.iter_mut().zip(column) {
+                    *x += c * lambda;
+                }
+            }
+        }
+        Ok(ContactDynamics {
+            acceleration,
+            forces,
+        })
+    }
+}
+
+impl<R, const Q: usize, const V: usize, const F: usize> FloatingContacts<Q, V, F> for R where
+    R: FloatingDynamics<Q, V> + FloatingKinematics<Q, V, F>
+{
+}
+
+/// `Σ_f J_fᵀ w_f`.
+fn wrenches_to_generalized<T: Real, const V: usize, const F: usize>(
+    jacobians: &[[[T; V]; 6]; F],
+    wrenches: &[[T; 6]; F],
+) -> [T; V] {
+    let mut out = [T::ZERO; V];
+    for (jacobian, wrench) in jacobians.iter().zip(wrenches) {
+        for (row, &w) in jacobian.iter().zip(wrench) {
+            for (o, &j) in out.iter_mut().zip(row) {
+                *o += j * w;
+            }
+        }
+    }
+    out
+}
+
+fn point_wrenches<T: Real, const F: usize>(forces: &[[T; 3]; F]) -> [[T; 6]; F] {
+    forces.map(|[x, y, z]| [x, y, z, T::ZERO, T::ZERO, T::ZERO])
+}
+
+fn dot<T: Real, const V: usize>(a: &[T; V], b: &[T; V]) -> T {
+    a.iter().zip(b).fold(T::ZERO, |s, (&x, &y)| s + x * y)
+}
+
+/// `m x` for a symmetric `m` (`M⁻¹`): its rows are its columns.
+fn mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
+    core::array::from_fn(|i| dot(&m[i], x))
+}
+
+/// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, on the
+/// stack; `None` where a pivot is not positive.
+fn solve_contacts<T: Real, const F: usize>(
+    mut a: [[[[T; 3]; F]; 3]; F],
+    rhs: [[T; 3]; F],
+) -> Option<[[T; 3]; F]> {
+    let n = 3 * F;
+    let at = |a: &[[[[T; 3]; F]; 3]; F], k: usize, l: usize| a[k / 3][k % 3][l / 3][l % 3];
+    // In place: `L` below the diagonal (unit diagonal), `D` on it.
+    for j in 0..n {
+        let mut d = at(&a, j, j);
+        for k in 0..j {
+            let l = at(&a, j, k);
+            d -= l * l * at(&a, k, k);
+        }
+        if !d.all_positive() {
+            return None;
+        }
+        a[j / 3][j % 3][j / 3][j % 3] = d;
+        for i in j + 1..n {
+            let mut s = at(&a, i, j);
+            for k in 0..j {
+                s -= at(&a, i, k) * at(&a, j, k) * at(&a, k, k);
+            }
+            a[i / 3][i % 3][j / 3][j % 3] = s / d;
+        }
+    }
+    let mut x = rhs;
+    for i in 0..n {
+        for k in 0..i {
+            let v = at(&a, i, k) * x[k / 3][k % 3];
+            x[i / 3][i % 3] -= v;
+        }
+    }
+    for i in 0..n {
+        x[i / 3][i % 3] = x[i / 3][i % 3] / at(&a, i, i);
+    }
+    for i in (0..n).rev() {
+        for k in i + 1..n {
+            let v = at(&a, k, i) * x[k / 3][k % 3];
+            x[i / 3][i % 3] -= v;
+        }
+    }
+    Some(x)
+}
