@@ -166,7 +166,7 @@ pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
         let minv_jt: [[[T; V]; 3]; F] = core::array::from_fn(|f| {
             core::array::from_fn(|i| {
                 if in_contact[f] {
-                    mat_vec(&minv, &jacobians[f][i])
+                    sparse_mat_vec(&minv, &jacobians[f][i])
                 } else {
                     [T::ZERO; V]
                 }
@@ -183,9 +183,13 @@ pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
                     continue;
                 }
                 rhs[f][i] = -(dot(&jacobians[f][i], &free) + drifts[f][i]);
-                for g in (0..F).filter(|&g| in_contact[g]) {
-                    for j in 0..3 {
-                        system[f][i][g][j] = dot(&jacobians[f][i], &minv_jt[g][j]);
+                // The lower triangle, mirrored: the system is symmetric.
+                for g in (0..=f).filter(|&g| in_contact[g]) {
+                    let columns = if g == f { i + 1 } else { 3 };
+                    for j in 0..columns {
+                        let x = dot(&jacobians[f][i], &minv_jt[g][j]);
+                        system[f][i][g][j] = x;
+                        system[g][j][f][i] = x;
                     }
                 }
             }
@@ -238,6 +242,20 @@ fn dot<T: Real, const V: usize>(a: &[T; V], b: &[T; V]) -> T {
 /// `m x` for a symmetric `m` (`M⁻¹`): its rows are its columns.
 fn mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
     core::array::from_fn(|i| dot(&m[i], x))
+}
+
+/// `m x` for a symmetric `m` and an `x` of a frame's Jacobian row, which is zero at the
+/// joints of the other branches: those columns skipped (half of Solo 12's).
+fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
+    let mut out = [T::ZERO; V];
+    for (column, &x) in m.iter().zip(x) {
+        if x != T::ZERO {
+            for (o, &c) in out.iter_mut().zip(column) {
+                *o += c * x;
+            }
+        }
+    }
+    out
 }
 
 /// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, on the

@@ -316,8 +316,7 @@ def kinematics(name, urdf):
 
 
 # Contacts at the feet of Solo 12 (issue 43, item 3), read by `contacts`: the sets of feet in
-# contact, one per sample in turn (sample 0, the neutral posture with straight legs, has two
-# diagonal feet: with all four its contacts are dependent).
+# contact, one per sample in turn, from two diagonal feet (a trot's stance) to none.
 CONTACT_MASKS = [[True, False, False, True], [True, True, True, True], [False, True, True, False],
                  [True, True, True, False], [False, False, True, False], [False, False, False, False]]
 
