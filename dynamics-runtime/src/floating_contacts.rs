@@ -258,48 +258,56 @@ fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V
     out
 }
 
-/// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, on the
-/// stack; `None` where a pivot is not positive.
+/// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, row by
+/// row (each row of the system, `[[T; 3]; F]`, is 3F numbers in a row), on the stack; `None`
+/// where a pivot is not positive.
 fn solve_contacts<T: Real, const F: usize>(
-    mut a: [[[[T; 3]; F]; 3]; F],
+    mut system: [[[[T; 3]; F]; 3]; F],
     rhs: [[T; 3]; F],
 ) -> Option<[[T; 3]; F]> {
-    let n = 3 * F;
-    let at = |a: &[[[[T; 3]; F]; 3]; F], k: usize, l: usize| a[k / 3][k % 3][l / 3][l % 3];
-    // In place: `L` below the diagonal (unit diagonal), `D` on it.
-    for j in 0..n {
-        let mut d = at(&a, j, j);
-        for k in 0..j {
-            let l = at(&a, j, k);
-            d -= l * l * at(&a, k, k);
+    let rows = system.as_flattened_mut();
+    let mut pivots = [[T::ZERO; 3]; F];
+    let d = pivots.as_flattened_mut();
+    // In place: row i's entries before the diagonal become L's (unit diagonal).
+    for i in 0..rows.len() {
+        let (done, rest) = rows.split_at_mut(i);
+        let row = rest[0].as_flattened_mut();
+        for (k, above) in done.iter().enumerate() {
+            let above = above.as_flattened();
+            let mut s = row[k];
+            for ((&l, &u), &p) in row[..k].iter().zip(&above[..k]).zip(&d[..k]) {
+                s -= l * u * p;
+            }
+            row[k] = s / d[k];
         }
-        if !d.all_positive() {
+        let mut pivot = row[i];
+        for (&l, &p) in row[..i].iter().zip(&d[..i]) {
+            pivot -= l * l * p;
+        }
+        if !pivot.all_positive() {
             return None;
         }
-        a[j / 3][j % 3][j / 3][j % 3] = d;
-        for i in j + 1..n {
-            let mut s = at(&a, i, j);
-            for k in 0..j {
-                s -= at(&a, i, k) * at(&a, j, k) * at(&a, k, k);
-            }
-            a[i / 3][i % 3][j / 3][j % 3] = s / d;
-        }
+        d[i] = pivot;
     }
-    let mut x = rhs;
-    for i in 0..n {
-        for k in 0..i {
-            let v = at(&a, i, k) * x[k / 3][k % 3];
-            x[i / 3][i % 3] -= v;
-        }
+    let mut solution = rhs;
+    let x = solution.as_flattened_mut();
+    for (i, row) in rows.iter().enumerate() {
+        let row = row.as_flattened();
+        let s = row[..i]
+            .iter()
+            .zip(&x[..i])
+            .fold(x[i], |s, (&l, &y)| s - l * y);
+        x[i] = s;
     }
-    for i in 0..n {
-        x[i / 3][i % 3] = x[i / 3][i % 3] / at(&a, i, i);
+    for (y, &p) in x.iter_mut().zip(d.iter()) {
+        *y = *y / p;
     }
-    for i in (0..n).rev() {
-        for k in i + 1..n {
-            let v = at(&a, k, i) * x[k / 3][k % 3];
-            x[i / 3][i % 3] -= v;
-        }
+    for i in (0..rows.len()).rev() {
+        let s = rows[i + 1..]
+            .iter()
+            .zip(&x[i + 1..])
+            .fold(x[i], |s, (row, &y)| s - row.as_flattened()[i] * y);
+        x[i] = s;
     }
-    Some(x)
+    Some(solution)
 }
