@@ -22,12 +22,12 @@ impl Emitter<'_> {
     }
 
     /// A constant's value: `T::ZERO`, `T::ONE`, `T::from_f64(0.42)`.
-    pub(super) fn literal(c: Number) -> TokenStream {
+    pub(super) fn literal(&self, c: Number) -> TokenStream {
         if c.is_zero() {
-            return quote!(T::ZERO);
+            return self.zero.clone();
         }
         if c.is_one() {
-            return quote!(T::ONE);
+            return self.one.clone();
         }
         let x = c.to_f64();
         // A literal cannot spell a non-finite value (and the literal constructor panics on
@@ -66,7 +66,7 @@ impl Printer for Emitter<'_> {
     }
 
     fn constant(&self, c: Number) -> (TokenStream, Precedence) {
-        (Self::literal(c), Precedence::Atom)
+        (self.literal(c), Precedence::Atom)
     }
 
     fn binary(&self, a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
