@@ -111,9 +111,9 @@ impl Emitter<'_> {
             is_output[o.index()] = true;
         }
         let element_of: HashMap<NodeId, Element> = output_names.iter().copied().collect();
-        for (id, _) in self.graph.nodes() {
+        for id in self.needed_in_order() {
             let i = id.index();
-            if !self.needed[i] || self.stop[i] || self.is_leaf(id) {
+            if self.stop[i] || self.is_leaf(id) {
                 continue;
             }
             // A scalar result is written in place unless it is read elsewhere too.

@@ -55,6 +55,10 @@ pub(super) struct Emitter<'a> {
     /// depth is known: the entries of the tables to reset for the next emitter.
     marked: Vec<u32>,
     depth_known: RefCell<Vec<u32>>,
+    /// `T::ZERO` and `T::ONE`, made once and cloned: a regressor's or a derivative's result
+    /// writes thousands of zeros, each a new pair of idents otherwise.
+    pub(super) zero: TokenStream,
+    pub(super) one: TokenStream,
 }
 
 impl<'a> Emitter<'a> {
@@ -93,6 +97,8 @@ impl<'a> Emitter<'a> {
             depth: t.depth,
             marked: Vec::new(),
             depth_known: RefCell::new(Vec::new()),
+            zero: quote!(T::ZERO),
+            one: quote!(T::ONE),
         }
     }
 
@@ -154,6 +160,16 @@ impl<'a> Emitter<'a> {
         }
     }
 
+    /// The needed nodes, in the arena's order (children first): the few thousand a function
+    /// computes, where a scan of the arena visits every node of every family's graph.
+    pub(super) fn needed_in_order(&self) -> Vec<NodeId> {
+        let mut order = self.marked.clone();
+        order.sort_unstable();
+        order.dedup();
+        order.retain(|&i| self.needed[i as usize]);
+        order.into_iter().map(NodeId).collect()
+    }
+
     /// Counts node `i` as read at least twice, so that it is bound to a name.
     pub(super) fn read_twice(&mut self, i: usize) {
         self.uses[i] = self.uses[i].max(2);
@@ -188,7 +204,7 @@ impl<'a> Emitter<'a> {
             return quote!(#name);
         }
         match self.graph.node(id) {
-            Node::Const(c) => Self::literal(c),
+            Node::Const(c) => self.literal(c),
             _ => quote!(),
         }
     }

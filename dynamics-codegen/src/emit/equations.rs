@@ -3,6 +3,7 @@
 //! notation ([`inspect`]), the text also shown in the rustdoc of that impl; and the hand pose
 //! and Jacobians in the same notation, in the rustdoc of their methods.
 
+use super::expr::raw_string;
 use crate::inspect::{Format, KinematicPart};
 use crate::method::Method;
 use crate::trace::{Equations, SimplifiedEquations};
@@ -59,6 +60,7 @@ fn equations(input: &syn::DeriveInput, inspection: &inspect::Inspection) -> Toke
         " The equations of motion of `{}`, derived by `#[derive(Dynamics)]`.\n\n```text\n{text}```",
         input.ident
     );
+    let (text, latex, doc) = (raw_string(&text), raw_string(&latex), raw_string(&doc));
     let ident = &input.ident;
     let (impl_generics, ty_generics, where_clause) = input.generics.split_for_impl();
     // The constants are hidden: rustdoc would print their whole values, escaped

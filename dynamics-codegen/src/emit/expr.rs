@@ -22,12 +22,12 @@ impl Emitter<'_> {
     }
 
     /// A constant's value: `T::ZERO`, `T::ONE`, `T::from_f64(0.42)`.
-    pub(super) fn literal(c: Number) -> TokenStream {
+    pub(super) fn literal(&self, c: Number) -> TokenStream {
         if c.is_zero() {
-            return quote!(T::ZERO);
+            return self.zero.clone();
         }
         if c.is_one() {
-            return quote!(T::ONE);
+            return self.one.clone();
         }
         let x = c.to_f64();
         // A literal cannot spell a non-finite value (and the literal constructor panics on
@@ -66,7 +66,7 @@ impl Printer for Emitter<'_> {
     }
 
     fn constant(&self, c: Number) -> (TokenStream, Precedence) {
-        (Self::literal(c), Precedence::Atom)
+        (self.literal(c), Precedence::Atom)
     }
 
     fn binary(&self, a: TokenStream, op: Operator, b: TokenStream) -> TokenStream {
@@ -177,4 +177,26 @@ pub fn let_statement(name: &proc_macro2::Ident, value: TokenStream) -> TokenStre
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub fn parenthesized(a: TokenStream) -> TokenTree {
     TokenTree::Group(Group::new(Delimiter::Parenthesis, a))
+}
+
+/// `text` as a raw string literal, `r#"…"#` with enough `#`s: the same string as
+/// `Literal::string`, which escapes it character by character (a tenth of the readable
+/// equations' cost for tens of kilobytes of text), where a raw string is only scanned for its
+/// end. A text a raw string cannot hold (a bare carriage return) is escaped as before.
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn raw_string(text: &str) -> proc_macro2::Literal {
+    let mut fence = 0;
+    let mut run = None;
+    for c in text.chars() {
+        run = match (c, run) {
+            ('"', _) => Some(0),
+            ('#', Some(n)) => Some(n + 1),
+            _ => None,
+        };
+        fence = fence.max(run.map_or(0, |n| n + 1));
+    }
+    let fence = "#".repeat(fence);
+    format!("r{fence}\"{text}\"{fence}")
+        .parse()
+        .unwrap_or_else(|_| proc_macro2::Literal::string(text))
 }

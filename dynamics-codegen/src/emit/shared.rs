@@ -99,9 +99,9 @@ impl Emitter<'_> {
         for id in boundary {
             handed_over[id.index()] = true;
         }
-        for (id, _) in self.graph.nodes() {
+        for id in self.needed_in_order() {
             let i = id.index();
-            if !self.needed[i] || !select(i) || self.is_leaf(id) {
+            if !select(i) || self.is_leaf(id) {
                 continue;
             }
             if self.uses[i] <= 1 && !handed_over[i] {

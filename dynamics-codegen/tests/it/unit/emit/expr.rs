@@ -1,5 +1,5 @@
 use dynamics_codegen::emit::expr::{
-    array, binary, block, call, let_statement, mul_add, negate, parenthesized,
+    array, binary, block, call, let_statement, mul_add, negate, parenthesized, raw_string,
 };
 use dynamics_codegen::emit::plan::{Function, Operator};
 use proc_macro2::TokenStream;
@@ -48,4 +48,24 @@ fn the_forms_are_the_tokens_quote_writes() {
         let_statement(&name, quote!(a * b)).to_string(),
         quote!(let t1 = a * b;).to_string()
     );
+}
+
+/// A raw string literal holds the text as it is, with enough `#`s that no quote in it ends
+/// the literal; a text it cannot hold (a bare carriage return) is escaped instead.
+#[test]
+fn raw_strings_hold_any_text() {
+    for text in [
+        "",
+        "plain text, θ̈ and ∂τ/∂q",
+        "a \"quoted\" word",
+        "ends in a quote\"",
+        "\"# and \"## inside",
+        "a backslash \\ and a\nnew line",
+        "a bare \r return",
+    ] {
+        let literal = raw_string(text);
+        let parsed: syn::LitStr = syn::parse2(quote!(#literal)).expect("a string literal");
+        assert_eq!(parsed.value(), text);
+    }
+    assert!(raw_string("x\"#y").to_string().starts_with("r##\""));
 }
