@@ -83,17 +83,58 @@ fn what_a_floating_base_does_not_have_yet_is_refused() {
     }
 }
 
+/// The derive's expansion of a one-joint arm on a floating base with the keys `keys`.
+fn arm(keys: &str) -> String {
+    let source = format!(
+        "#[dynamics({keys}, gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0]], \
+         link(mass = 1, com = [0, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]))] struct Arm;"
+    );
+    derive_dynamics(source.parse().expect("tokens")).to_string()
+}
+
 #[test]
-fn a_floating_base_needs_a_urdf() {
-    let source = "#[dynamics(
-        base = floating,
-        gravity = [0, 0, -9.81],
-        dh = [[q, 0, 1, 0]],
-        link(mass = 1, com = [0, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]),
-    )] struct Arm;";
-    let out = derive_dynamics(source.parse().expect("tokens")).to_string();
+fn a_dh_table_on_a_floating_base_takes_its_body_from_the_attribute() {
+    let out =
+        arm("base = floating(mass = 2, com = [0, 0, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0])");
+    assert!(!out.contains("compile_error"), "{out}");
     assert!(
-        out.contains("`base = floating` reads the robot from a URDF"),
+        out.contains("FloatingDynamics < 8usize , 7usize >"),
         "{out}"
     );
+    for (keys, message) in [
+        (
+            "base = floating",
+            "`base = floating` without a URDF needs the floating body: `base = floating(mass = ..",
+        ),
+        (
+            "base = floating(com = [0, 0, 0])",
+            "the floating body has no `mass = ..`",
+        ),
+        (
+            "base = floating(mass = 1, actuator_inertia = 0.1)",
+            "`actuator_inertia` has no meaning on a floating body",
+        ),
+        (
+            "base = floating(mass = 1, mas = 2)",
+            "unknown link attribute `mas`",
+        ),
+        (
+            "base = floating(\"trunk\")",
+            "`floating(\\\"link\\\")` names a URDF's link",
+        ),
+    ] {
+        let out = arm(keys);
+        assert!(out.contains("compile_error"), "{keys}: {out}");
+        assert!(
+            out.contains(message),
+            "{keys}: expected {message:?} in {out}"
+        );
+        assert!(!out.contains("FloatingDynamics <"), "{keys}: {out}");
+    }
+}
+
+#[test]
+fn a_urdf_gives_its_own_floating_body() {
+    let out = solo("base = floating(mass = 1)");
+    assert!(out.contains("the URDF gives the floating body"), "{out}");
 }

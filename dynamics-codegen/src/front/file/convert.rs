@@ -8,7 +8,8 @@ use crate::check;
 use crate::front::errors::FileError;
 use crate::front::sources::{Loaded, Positions};
 use crate::model::{
-    snap_angle, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Spring, Value,
+    snap_angle, Convention, FreeFlyer, Friction, Joint, JointKind, Link, Placement, Pose, Robot,
+    Spring, Value,
 };
 use crate::symbolic::Number;
 
@@ -86,6 +87,7 @@ pub(super) fn convert(
         ));
     }
     let gravity = file.gravity.map(|g| g.0);
+    let written_gravity = gravity.clone();
     let frames_given = file.joints.iter().any(FileJoint::has_frame);
     if frames_given && file.convention.is_some() {
         return Err(plain(
@@ -152,6 +154,20 @@ pub(super) fn convert(
         check_inertia,
         sources: Positions::default(),
         simplify: file.simplify.map(super::simplify::FileSimplify::given),
+        floating: file.floating.map(|body| FreeFlyer {
+            link: "base".to_string(),
+            body: Link {
+                mass: body.mass.0,
+                com: body.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
+                inertia: body
+                    .inertia
+                    .map_or_else(Default::default, |c| c.map(|v| v.0)),
+                ..Link::default()
+            },
+            // As written, in the world frame: the robot's own is turned into its frame 0 when
+            // joints given by frames are lowered.
+            gravity: written_gravity,
+        }),
     };
     if frames_given && deferred.is_empty() {
         frames::lower(&mut loaded.robot, &mut deferred);
