@@ -138,3 +138,42 @@ fn a_urdf_gives_its_own_floating_body() {
     let out = solo("base = floating(mass = 1)");
     assert!(out.contains("the URDF gives the floating body"), "{out}");
 }
+
+/// A description file's `[floating]` table and `base = floating` go together.
+#[test]
+fn a_description_file_floats_with_its_floating_table() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/");
+    let derive = |file: &str, keys: &str| {
+        let source = format!(
+            "#[dynamics(file = {:?}{keys})] struct Robot;",
+            format!("{root}{file}")
+        );
+        derive_dynamics(source.parse().expect("tokens")).to_string()
+    };
+    let solo = derive("floating/solo12.toml", ", base = floating");
+    assert!(!solo.contains("compile_error"), "{solo}");
+    assert!(
+        solo.contains("FloatingDynamics < 19usize , 18usize >"),
+        "{solo}"
+    );
+    for (file, keys, message) in [
+        (
+            "puma560.toml",
+            ", base = floating",
+            "the file has no `[floating]` table",
+        ),
+        ("floating/solo12.toml", "", "add `base = floating`"),
+        (
+            "floating/solo12.toml",
+            ", base = floating(mass = 1)",
+            "a description file gives the floating body in its `[floating]` table",
+        ),
+    ] {
+        let out = derive(file, keys);
+        assert!(out.contains("compile_error"), "{file}{keys}: {out}");
+        assert!(
+            out.contains(message),
+            "{file}{keys}: expected {message:?} in {out}"
+        );
+    }
+}
