@@ -165,6 +165,10 @@ pub struct Stats {
     /// by the machine's other work
     #[arg(long, value_name = "N", default_value = "5", value_parser = whole::<1, 1000>, allow_hyphen_values = true)]
     pub runs: u64,
+    /// The robot on a free-flying base (the derive's `base = floating`): a URDF's root link
+    /// (or `--base`) flies, a description file's `[floating]` table is the body
+    #[arg(long, conflicts_with_all = ["tip", "tips", "tool", "simplified"])]
+    pub floating: bool,
 }
 
 /// Which of the joints' own parameters take part in the base parameters, beside the links'.

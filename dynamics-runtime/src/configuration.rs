@@ -172,9 +172,24 @@ pub fn difference<T: RealScalar, const Q: usize, const N: usize>(
     // R0ᵀ (p1 − p0): the displacement in the base frame at q0.
     let local: V3<T> =
         core::array::from_fn(|j| (0..3).fold(T::ZERO, |acc, i| acc + r0[i][j] * d[i]));
-    // V(ω)⁻¹ = 1 − ½[ω]× + e [ω]×², e = 1/θ² − (1 + cos θ)/(2 θ sin θ).
-    let t = dot(omega, omega);
-    let e = if t.to_f64() < 1e-2 {
+    // V(ω)⁻¹ = 1 − ½[ω]× + e [ω]×².
+    let e = inverse_coefficient(dot(omega, omega));
+    let wl = cross(omega, local);
+    let linear = add(
+        add(local, scale(T::from_f64(-0.5), wl)),
+        scale(e, cross(omega, wl)),
+    );
+    core::array::from_fn(|i| match i {
+        0..=2 => linear[i],
+        3..=5 => omega[i - 3],
+        _ => q1[i + 1] - q0[i + 1],
+    })
+}
+
+/// `e = 1/θ² − (1 + cos θ)/(2 θ sin θ)` at `θ² = t`, of `V(ω)⁻¹ = 1 − ½[ω]× + e [ω]×²` and
+/// `J_r3(ω)⁻¹ = 1 + ½[ω]× + e [ω]×²`; its series below `θ² = 10⁻²`.
+fn inverse_coefficient<T: RealScalar>(t: T) -> T {
+    if t.to_f64() < 1e-2 {
         let c = [
             1.0 / 12.0,
             1.0 / 720.0,
@@ -189,17 +204,7 @@ pub fn difference<T: RealScalar, const Q: usize, const N: usize>(
         let theta = T::from_f64(libm::sqrt(t.to_f64()));
         let (s, c) = theta.sin_cos();
         T::ONE / t - (T::ONE + c) / (T::from_f64(2.0) * theta * s)
-    };
-    let wl = cross(omega, local);
-    let linear = add(
-        add(local, scale(T::from_f64(-0.5), wl)),
-        scale(e, cross(omega, wl)),
-    );
-    core::array::from_fn(|i| match i {
-        0..=2 => linear[i],
-        3..=5 => omega[i - 3],
-        _ => q1[i + 1] - q0[i + 1],
-    })
+    }
 }
 
 /// `[a]×`.
@@ -246,22 +251,123 @@ pub fn integrate_jacobian<T: RealScalar, const N: usize>(v: &[T; N]) -> [[T; N];
         (d, prpp),
         (d, pprp),
     ]);
-    let identity = [
-        [one, T::ZERO, T::ZERO],
-        [T::ZERO, one, T::ZERO],
-        [T::ZERO, T::ZERO, one],
-    ];
-    let j3 = combine(&[(one, identity), (-a, p), (b, pp)]);
+    let j3 = combine(&[(one, identity()), (-a, p), (b, pp)]);
+    blocks(&j3, &q, &j3, one)
+}
+
+/// `Mᵀ`.
+fn transpose<T: RealScalar>(m: &M3<T>) -> M3<T> {
+    core::array::from_fn(|i| core::array::from_fn(|j| m[j][i]))
+}
+
+/// `[[a, b], [0, d]]` in the base's 6 × 6 block, `diagonal` on the joints'.
+fn blocks<T: RealScalar, const N: usize>(
+    a: &M3<T>,
+    b: &M3<T>,
+    d: &M3<T>,
+    diagonal: T,
+) -> [[T; N]; N] {
     let mut out = [[T::ZERO; N]; N];
     for i in 0..3 {
         for j in 0..3 {
-            out[i][j] = j3[i][j];
-            out[i + 3][j + 3] = j3[i][j];
-            out[i][j + 3] = q[i][j];
+            out[i][j] = a[i][j];
+            out[i][j + 3] = b[i][j];
+            out[i + 3][j + 3] = d[i][j];
         }
     }
     for (i, row) in out.iter_mut().enumerate().skip(6) {
-        row[i] = one;
+        row[i] = diagonal;
     }
     out
+}
+
+/// `Ad(M⁻¹) = [[Rᵀ, −Rᵀ [p]×], [0, Rᵀ]]`, `M = (R, p)`, scaled by `sign`.
+fn inverse_adjoint<T: RealScalar>(r: &M3<T>, p: V3<T>, sign: T) -> [M3<T>; 2] {
+    let rt = transpose(r);
+    let corner = mul(&rt, &skew(p));
+    [combine(&[(sign, rt)]), combine(&[(-sign, corner)])]
+}
+
+/// Pinocchio's `dIntegrate(q, v, ARG0)`: `∂ integrate(q, v) / ∂q` in the tangent spaces at
+/// `q` and at the result, the base's block `Ad(exp6(v_b)⁻¹)` (a change `δ` of the base at `q`
+/// is `exp6(v_b)⁻¹ δ exp6(v_b)` at the result), the joints' the identity; it does not depend
+/// on `q`. `exp6(ρ, φ) = (exp3(φ), V(φ) ρ)`, `exp3(φ) = 1 + sin θ/θ [φ]× + (1 − cos θ)/θ² [φ]×²`.
+#[must_use]
+pub fn integrate_jacobian_q<T: RealScalar, const N: usize>(v: &[T; N]) -> [[T; N]; N] {
+    let (rho, phi) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
+    let [sinc, a, b, ..] = coefficients(dot(phi, phi));
+    let (p, pp) = (skew(phi), mul(&skew(phi), &skew(phi)));
+    let identity = identity();
+    let r = combine(&[(T::ONE, identity), (sinc, p), (a, pp)]);
+    let pr = cross(phi, rho);
+    let origin = add(add(rho, scale(a, pr)), scale(b, cross(phi, pr)));
+    let [rt, corner] = inverse_adjoint(&r, origin, T::ONE);
+    blocks(&rt, &corner, &rt, T::ONE)
+}
+
+/// The 3 × 3 identity.
+fn identity<T: RealScalar>() -> M3<T> {
+    core::array::from_fn(|i| core::array::from_fn(|j| if i == j { T::ONE } else { T::ZERO }))
+}
+
+/// Pinocchio's `Jlog6(M0⁻¹ M1)`, the base's block of `∂ difference(q0, q1) / ∂q1`: the inverse
+/// of SE(3)'s right Jacobian at `ξ = log6(M0⁻¹ M1)`,
+/// `[[J_r3⁻¹, −J_r3⁻¹ Q_r J_r3⁻¹], [0, J_r3⁻¹]]`, `J_r3(φ)⁻¹ = 1 + ½[φ]× + e [φ]×²`.
+fn log_jacobian<T: RealScalar>(xi: &[T; 6]) -> [M3<T>; 2] {
+    let right = integrate_jacobian(xi);
+    let q: M3<T> = core::array::from_fn(|i| core::array::from_fn(|j| right[i][j + 3]));
+    let phi = [xi[3], xi[4], xi[5]];
+    let e = inverse_coefficient(dot(phi, phi));
+    let p = skew(phi);
+    let inverse = combine(&[
+        (T::ONE, identity()),
+        (T::from_f64(0.5), p),
+        (e, mul(&p, &p)),
+    ]);
+    let corner = mul(&mul(&inverse, &q), &inverse);
+    [inverse, combine(&[(-T::ONE, corner)])]
+}
+
+/// The base's twist `log6(M0⁻¹ M1)`.
+fn base_difference<T: RealScalar, const Q: usize>(q0: &[T; Q], q1: &[T; Q]) -> [T; 6] {
+    let (b0, b1): ([T; 7], [T; 7]) = (
+        core::array::from_fn(|i| q0[i]),
+        core::array::from_fn(|i| q1[i]),
+    );
+    difference(&b0, &b1)
+}
+
+/// Pinocchio's `dDifference(q0, q1, ARG1)`: `∂ difference(q0, q1) / ∂q1` in the tangent space
+/// at `q1`, the base's block `Jlog6(M0⁻¹ M1)`, the joints' the identity.
+#[must_use]
+pub fn difference_jacobian_q1<T: RealScalar, const Q: usize, const N: usize>(
+    q0: &[T; Q],
+    q1: &[T; Q],
+) -> [[T; N]; N] {
+    let [inverse, corner] = log_jacobian(&base_difference(q0, q1));
+    blocks(&inverse, &corner, &inverse, T::ONE)
+}
+
+/// Pinocchio's `dDifference(q0, q1, ARG0)`: `∂ difference(q0, q1) / ∂q0` in the tangent space
+/// at `q0`, the base's block `−Jlog6(M) Ad(M⁻¹)` for `M = M0⁻¹ M1 = (R0ᵀ R1, R0ᵀ (p1 − p0))`
+/// (moving `M0` by `δ` moves `M` by `−Ad(M⁻¹) δ` on its right), the joints' `−1`.
+#[must_use]
+pub fn difference_jacobian_q0<T: RealScalar, const Q: usize, const N: usize>(
+    q0: &[T; Q],
+    q1: &[T; Q],
+) -> [[T; N]; N] {
+    let ((p0, a0), (p1, a1)) = (base(q0), base(q1));
+    let r0t = transpose(&rotation(a0));
+    let r = mul(&r0t, &rotation(a1));
+    let d = [p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]];
+    let p: V3<T> = core::array::from_fn(|i| dot(r0t[i], d));
+    let [ad, ad_corner] = inverse_adjoint(&r, p, -T::ONE);
+    let [inverse, corner] = log_jacobian(&base_difference(q0, q1));
+    // [[A, B], [0, A]] [[C, D], [0, C]] = [[AC, AD + BC], [0, AC]].
+    let ac = mul(&inverse, &ad);
+    let top = combine(&[
+        (T::ONE, mul(&inverse, &ad_corner)),
+        (T::ONE, mul(&corner, &ad)),
+    ]);
+    blocks(&ac, &top, &ac, -T::ONE)
 }

@@ -56,6 +56,28 @@ macro_rules! for_each_floating_method {
                         let _ = q;
                         crate::configuration::integrate_jacobian(v)
                     }
+                    /// Pinocchio's `dIntegrate(q, v, ARG0)`: `∂ integrate(q, v) / ∂q`, from the
+                    /// tangent space at `q` to the one at the result (the base's block
+                    /// `Ad(exp6(v_b)⁻¹)`, the joints' the identity); it does not depend on `q`.
+                    #[inline]
+                    fn integrate_jacobian_q<T: crate::RealScalar>(&self, q: &[T; Q], v: &[T; N]) -> [[T; N]; N] {
+                        let _ = q;
+                        crate::configuration::integrate_jacobian_q(v)
+                    }
+                    /// Pinocchio's `dDifference(q0, q1, ARG0)`: `∂ difference(q0, q1) / ∂q0` in
+                    /// the tangent space at `q0` (the base's block `−Jlog6(M) Ad(M⁻¹)`,
+                    /// `M = M0⁻¹ M1`, the joints' `−1`).
+                    #[inline]
+                    fn difference_jacobian_q0<T: crate::RealScalar>(&self, q0: &[T; Q], q1: &[T; Q]) -> [[T; N]; N] {
+                        crate::configuration::difference_jacobian_q0(q0, q1)
+                    }
+                    /// Pinocchio's `dDifference(q0, q1, ARG1)`: `∂ difference(q0, q1) / ∂q1` in
+                    /// the tangent space at `q1` (the base's block `Jlog6(M0⁻¹ M1)`, the
+                    /// joints' the identity).
+                    #[inline]
+                    fn difference_jacobian_q1<T: crate::RealScalar>(&self, q0: &[T; Q], q1: &[T; Q]) -> [[T; N]; N] {
+                        crate::configuration::difference_jacobian_q1(q0, q1)
+                    }
                 }
                 /// M, h, τ and g of a floating base.
                 family Floating {

@@ -26,6 +26,9 @@ fn branches(robot: &Robot) -> String {
 
 pub fn run(args: &Stats) -> Result<String, Failure> {
     let file = load_with_request(&args.robot)?;
+    if args.floating {
+        return floating(args, &file);
+    }
     let robot = &file.robot;
     // The file's `[simplify]` as the derive reads it, with the command line's options in
     // place of its keys.
@@ -58,6 +61,37 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
     );
     out += &readable(&eq, robot);
     out += &whole_derive(robot, &ty, &fields, args, request.as_ref());
+    Ok(out)
+}
+
+/// `--floating`: the robot on a free-flying base, as the derive's `base = floating` traces
+/// it, and its methods' table (`FloatingDynamics`: M, h, τ, g, the forward dynamics, M⁻¹).
+fn floating(args: &Stats, file: &dynamics_codegen::Loaded) -> Result<String, Failure> {
+    if args.families.derivatives || !args.families.with.is_empty() {
+        let message = "--floating gives M, h, τ, g, the forward dynamics and M⁻¹: the opt-in \
+                       families are not supported on a floating base yet";
+        return Err(super::usage("stats", message));
+    }
+    let start = Instant::now();
+    let eq = file.floating_equations().map_err(|d| {
+        let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
+        Failure::File(lines.join("\ndynamics: "))
+    })?;
+    let fields = field_idents(&eq, &args.robot.path)?;
+    let generated = generate(&eq, self_fields(&fields));
+    let elapsed = start.elapsed();
+    let robot = &file.robot;
+    let mut out = format!(
+        "{} on a floating base: {} and the base's 6 (NQ {}, NV {}){}, graph {} nodes, derived and emitted in {:.1} ms\n",
+        robot.name,
+        joint_count(robot),
+        eq.dof + 1,
+        eq.dof,
+        branches(robot),
+        eq.graph.len(),
+        elapsed.as_secs_f64() * 1e3
+    );
+    out += &methods(&generated);
     Ok(out)
 }
 
@@ -306,5 +340,46 @@ mod tests {
         );
         assert!(!out.contains("\n  T1 "), "{out}");
         assert!(out.contains("\n  D12 "), "{out}");
+    }
+
+    /// `--floating`: Solo 12 from its URDF and from its description file (`[floating]`), the
+    /// floating base's methods, the same operations from both; a file without `[floating]`
+    /// says so.
+    #[test]
+    fn a_robot_on_a_floating_base() {
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/");
+        let urdf = format!("{root}urdf/floating/solo12.urdf");
+        let file = format!("{root}floating/solo12.toml");
+        let row = |out: &str, method: &str| {
+            let line = out.lines().find(|l| l.starts_with(&format!("{method} ")));
+            line.expect(method)
+                .split_whitespace()
+                .skip(1)
+                .take(5)
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        let from_urdf = run(["stats", urdf.as_str(), "--floating", "--runs", "1"]).expect("runs");
+        assert!(
+            from_urdf.contains("on a floating base: 12 joints and the base's 6 (NQ 19, NV 18)"),
+            "{from_urdf}"
+        );
+        let from_file = run(["stats", file.as_str(), "--floating", "--runs", "1"]).expect("runs");
+        for method in [
+            "mass_matrix",
+            "bias_forces",
+            "inverse_dynamics",
+            "generalized_gravity",
+            "forward_dynamics",
+            "mass_matrix_inverse",
+        ] {
+            assert_eq!(row(&from_urdf, method), row(&from_file, method), "{method}");
+        }
+        let fixed = format!("{root}puma560.toml");
+        let wrong = run(["stats", fixed.as_str(), "--floating", "--runs", "1"]).unwrap_err();
+        assert!(
+            format!("{wrong:?}").contains("no `[floating]` table"),
+            "{wrong:?}"
+        );
     }
 }

@@ -1,30 +1,54 @@
-//! The free flyer of `base = floating`: its body read from the URDF the robot came from, its
-//! gravity from `gravity = [..]` (in the world frame) or `[0, 0, −9.81]`; and every key or
-//! family this first slice of the floating base does not support yet refused on its token,
-//! so that no robot gets methods that would be wrong on a flying base.
+//! The free flyer of `base = floating`: its body read from the URDF the robot came from (its
+//! root link and every link fixed to it), from a description file's `[floating]` table, or
+//! from the attribute's `base = floating(mass = .., com = [..], inertia = [..])` beside a D-H
+//! table or `joints = [..]`, in the base frame (frame 0) as a link's; its gravity, in the
+//! world frame, from `gravity = [..]` (the URDF's default `[0, 0, −9.81]`). Every key or family
+//! the floating base does not support yet is refused on its token, so that no robot gets
+//! methods that would be wrong on a flying base.
 
 use super::attrs::Attrs;
 use super::errors::Errors;
+use super::fields::Field;
 use super::urdf;
-use crate::model::{FreeFlyer, Robot};
+use crate::model::{FreeFlyer, Link, Robot};
+
+/// What the input gives beside the attributes.
+pub(super) struct Given<'a> {
+    /// The description file's absolute path (a URDF's is read again for its root link).
+    pub tracked_file: Option<&'a str>,
+    /// A description file's `[floating]` body, with the file's gravity as written.
+    pub file_body: Option<FreeFlyer>,
+    /// The struct's fields, which values may name.
+    pub fields: &'a [Field],
+}
+
+/// Where the floating body comes from.
+enum Body {
+    /// The URDF's root link (or the link named) and the links fixed to it.
+    Urdf,
+    /// The attribute's `floating(mass = ..)`.
+    Attribute(Link),
+    /// A description file's `[floating]`, with its gravity.
+    File(FreeFlyer),
+}
 
 /// The free flyer the attributes ask for, if any and if it can be read; every problem in
-/// `errors`. `tracked_file` is the URDF's absolute path, `robot` its robot.
+/// `errors`. `robot` is the robot the input describes, if it could be read.
 pub(super) fn free_flyer(
     attrs: &Attrs,
-    tracked_file: Option<&str>,
+    given: Given,
     robot: Option<&Robot>,
     errors: &mut Errors,
 ) -> Option<FreeFlyer> {
-    let floating = attrs.floating.as_ref()?;
+    let Some(floating) = attrs.floating.as_ref() else {
+        if let (Some(file), Some(_)) = (&attrs.file, &given.file_body) {
+            errors.push(file.span(), "the file's `[floating]` table is the body of a robot on a floating base: add `base = floating` (or remove the table)");
+        }
+        return None;
+    };
     let span = floating.span;
     let before = errors.len();
-    if attrs.urdf.is_none() {
-        errors.push(
-            span,
-            "`base = floating` reads the robot from a URDF: give it with `urdf = \"robots/robot.urdf\"` (D-H tables, joint lists and description files on a floating base are not supported yet)",
-        );
-    }
+    let body = body(attrs, &given, errors);
     // `tips = [..]` names the frames of `FloatingKinematics`; a serial `tip` has no meaning
     // on a tree that flies.
     if let Some(at) = attrs.tip.as_ref().map(syn::LitStr::span) {
@@ -37,14 +61,78 @@ pub(super) fn free_flyer(
     if attrs.simplify.is_some() {
         errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)");
     }
-    // Without a robot, the URDF's own errors are told already.
+    // Without a robot, the description's own errors are told already.
     let robot = robot?;
     robot_problems(robot, span, errors);
     if errors.len() > before {
         return None;
     }
-    let text = std::fs::read_to_string(tracked_file?).ok()?;
-    let link = floating.link.as_ref().map(syn::LitStr::value);
+    match body? {
+        Body::Urdf => urdf_flyer(attrs, given.tracked_file?, span, errors),
+        Body::File(flyer) => Some(flyer),
+        Body::Attribute(body) => Some(FreeFlyer {
+            // Frame 0's link: a table's or a list's base has no name of its own.
+            link: "base".to_string(),
+            body,
+            // As written: the robot's own is turned into its frame 0 when joints given by
+            // frames are lowered. Its absence is told with the robot's.
+            gravity: std::array::from_fn(|i| {
+                let given = attrs.gravity.as_ref().map(|g| g[i].value.clone());
+                given.unwrap_or_else(|| robot.gravity[i].clone())
+            }),
+        }),
+    }
+}
+
+/// Where the body comes from, or `None` with an error where the input does not give it or
+/// gives it twice.
+fn body(attrs: &Attrs, given: &Given, errors: &mut Errors) -> Option<Body> {
+    let floating = attrs.floating.as_ref()?;
+    let in_attribute = floating.body(given.fields, errors);
+    let at = floating.body_span().unwrap_or(floating.span);
+    if attrs.urdf.is_some() {
+        if in_attribute.is_some() {
+            errors.push(at, "the URDF gives the floating body (its root link, or the link `floating(\"trunk\")` names): remove `mass`, `com` and `inertia` here");
+            return None;
+        }
+        return Some(Body::Urdf);
+    }
+    if let Some(link) = &floating.link {
+        errors.push(link.span(), "`floating(\"link\")` names a URDF's link: without a URDF, give the floating body as `base = floating(mass = .., com = [..], inertia = [..])`");
+        return None;
+    }
+    match (in_attribute, given.file_body.clone(), &attrs.file) {
+        (Some(_), _, Some(file)) => {
+            errors.push(at, format!("a description file gives the floating body in its `[floating]` table: remove `mass`, `com` and `inertia` here (file `{}`)", file.value()));
+            None
+        }
+        (None, None, Some(file)) => {
+            errors.push(file.span(), "`base = floating`: the file has no `[floating]` table, the floating body (`mass`, `com`, `inertia` in the base frame, as a joint's)");
+            None
+        }
+        (None, Some(flyer), Some(_)) => Some(Body::File(flyer)),
+        (Some(body), _, None) => Some(Body::Attribute(body)),
+        (None, _, None) => {
+            errors.push(floating.span, "`base = floating` without a URDF needs the floating body: `base = floating(mass = .., com = [..], inertia = [..])`, in the base frame (frame 0), as a `link(..)`");
+            None
+        }
+    }
+}
+
+/// The free flyer of the URDF at `path`: its root link (or the link named) and the links fixed
+/// to it; gravity `gravity = [..]` or `[0, 0, −9.81]`.
+fn urdf_flyer(
+    attrs: &Attrs,
+    path: &str,
+    span: proc_macro2::Span,
+    errors: &mut Errors,
+) -> Option<FreeFlyer> {
+    let text = std::fs::read_to_string(path).ok()?;
+    let link = attrs
+        .floating
+        .as_ref()
+        .and_then(|f| f.link.as_ref())
+        .map(syn::LitStr::value);
     match urdf::free_flyer(&text, link.as_deref()) {
         Ok(mut flyer) => {
             if let Some(gravity) = &attrs.gravity {
@@ -64,11 +152,18 @@ pub(super) fn free_flyer(
 /// What a floating base's equations leave out, refused: mimic joints, and joint terms that are
 /// not zero (friction, actuator inertia, springs).
 fn robot_problems(robot: &Robot, span: proc_macro2::Span, errors: &mut Errors) {
+    for message in unsupported(robot) {
+        errors.push(span, message);
+    }
+}
+
+/// What of `robot` a floating base does not support yet, one message each: mimic joints, and
+/// joint terms that are not zero (friction, actuator inertia, springs).
+#[must_use]
+pub fn unsupported(robot: &Robot) -> Vec<String> {
+    let mut found = Vec::new();
     if robot.has_mimics() {
-        errors.push(
-            span,
-            "mimic joints are not supported on a floating base yet",
-        );
+        found.push("mimic joints are not supported on a floating base yet".to_string());
     }
     for (i, joint) in robot.joints.iter().enumerate() {
         let link = &joint.link;
@@ -81,7 +176,8 @@ fn robot_problems(robot: &Robot, span: proc_macro2::Span, errors: &mut Errors) {
             .any(|v| !v.is_zero())
             || link.spring.is_some();
         if nonzero {
-            errors.push(span, format!("joint {}: friction, actuator inertia and springs are not supported on a floating base yet (Pinocchio's free flyer has none): the joint's `<dynamics>` must be zero", i + 1));
+            found.push(format!("joint {}: friction, actuator inertia and springs are not supported on a floating base yet (Pinocchio's free flyer has none): the joint's `<dynamics>` must be zero", i + 1));
         }
     }
+    found
 }

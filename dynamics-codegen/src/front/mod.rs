@@ -59,6 +59,7 @@ pub use attrs::attribute_words;
 pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load};
+pub use floating::unsupported as floating_unsupported;
 pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
 pub use simplify::{FileRequest, RequestError};
 pub use sources::{At, Loaded, Lowered, Positions, Sources, Tokens};
@@ -143,12 +144,18 @@ pub fn parse(input: &syn::DeriveInput) -> Result<Input, Failure> {
         let attr = read.attrs.simplify.as_ref();
         simplify::request(attr, lowered.simplify.as_ref(), &lowered.robot, &mut errors)
     });
+    let mut file_body = None;
     let robot = lowered.map(|lowered| {
         check(&lowered, &mut errors);
+        file_body = lowered.floating;
         lowered.robot
     });
-    let tracked = tracked_file.as_deref();
-    let floating = floating::free_flyer(&read.attrs, tracked, robot.as_ref(), &mut errors);
+    let given = floating::Given {
+        tracked_file: tracked_file.as_deref(),
+        file_body,
+        fields: &fields,
+    };
+    let floating = floating::free_flyer(&read.attrs, given, robot.as_ref(), &mut errors);
     let read = Read {
         attrs: read.attrs,
         simplify,
@@ -193,6 +200,8 @@ struct Derived<'a> {
     tell: Tell<'a>,
     /// A file's `[simplify]` and a URDF's joint limits.
     simplify: Option<simplify::FromFile<'a>>,
+    /// A description file's `[floating]` body, and its gravity as written.
+    floating: Option<FreeFlyer>,
 }
 
 impl<'a> Derived<'a> {
@@ -208,6 +217,7 @@ impl<'a> Derived<'a> {
             check_inertia,
             sources,
             simplify,
+            floating,
         } = loaded;
         let simplify = simplify::FromFile {
             request: FileRequest {
@@ -222,6 +232,7 @@ impl<'a> Derived<'a> {
             check_inertia,
             tell: Box::new(move |problem| named_file::tell(at, &path, &sources, problem)),
             simplify: Some(simplify),
+            floating,
         }
     }
 }
@@ -318,6 +329,7 @@ fn lower<'a>(
             check_inertia,
             tell: Box::new(move |problem| attrs::tell(&sources, counted, problem)),
             simplify: None,
+            floating: None,
         })
     }
 }

@@ -5,7 +5,7 @@
 
 use crate::check::{Problem, MAX_JOINTS, MAX_TREE_JOINTS};
 use crate::front::simplify::given::Given;
-use crate::model::Robot;
+use crate::model::{FreeFlyer, Robot};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 
@@ -100,6 +100,9 @@ pub struct Lowered<P> {
     pub sources: Sources<P>,
     /// A description file's `[simplify]`, to be resolved once the robot is known.
     pub simplify: Option<Given<P>>,
+    /// A description file's `[floating]`: the body of a robot on a free-flying base, in its
+    /// base frame, and the file's gravity as written (in the world frame).
+    pub floating: Option<FreeFlyer>,
 }
 
 /// A robot read from a file, with where the file writes each value.

@@ -16,7 +16,7 @@
 use crate::check;
 use crate::front::{self, Chain, FileRequest, RequestError};
 use crate::method::FamilySet;
-use crate::model::{Placement, Robot, Simplification, Value};
+use crate::model::{FreeFlyer, Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
 mod c_header;
@@ -127,6 +127,9 @@ pub struct Loaded {
     pub options: Vec<String>,
     is_urdf: bool,
     request: FileRequest,
+    /// The body it flies on if its base floats: a URDF's root link (or `chain.base`) and the
+    /// links fixed to it, a description file's `[floating]`; else why it has none.
+    flyer: Result<FreeFlyer, Vec<Diagnostic>>,
 }
 
 /// Reads the description of `source` and checks it as the derive does (values, then the
@@ -163,6 +166,16 @@ pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
     if !problems.is_empty() {
         return Err(problems);
     }
+    let flyer = if source.is_urdf() {
+        front::free_flyer(text, source.chain.base).map_err(|errors| {
+            let each = errors.iter().map(|e| Diagnostic::from_file_error(path, e));
+            each.collect()
+        })
+    } else {
+        let message = "no `[floating]` table: the floating body (`mass`, `com`, `inertia` in the \
+                       base frame, as a joint's)";
+        (loaded.floating.clone()).ok_or_else(|| vec![Diagnostic::of_file(path, message)])
+    };
     Ok(Loaded {
         robot: loaded.robot,
         path: path.to_owned(),
@@ -173,6 +186,7 @@ pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
             limits,
             path: path.to_owned(),
         },
+        flyer,
     })
 }
 
@@ -198,6 +212,24 @@ impl Loaded {
             rpy: [roll, pitch, yaw],
         });
         Ok(self)
+    }
+
+    /// The equations of the robot on a free-flying base (`base = floating` in the derive): M, h,
+    /// τ, g, the forward dynamics and M⁻¹, as the derive traces them.
+    ///
+    /// # Errors
+    /// A description file without a `[floating]` table, a URDF whose body cannot be read, or
+    /// what a floating base does not support yet (mimic joints, joint friction).
+    pub fn floating_equations(&self) -> Result<Equations, Vec<Diagnostic>> {
+        let flyer = self.flyer.as_ref().map_err(Clone::clone)?;
+        let unsupported = front::floating_unsupported(&self.robot);
+        if !unsupported.is_empty() {
+            let each = unsupported
+                .into_iter()
+                .map(|m| Diagnostic::of_file(&self.path, m));
+            return Err(each.collect());
+        }
+        Ok(crate::trace::derive_floating(&self.robot, flyer))
     }
 
     /// Whether the file has a `[simplify]` table of its own.

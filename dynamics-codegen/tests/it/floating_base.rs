@@ -83,17 +83,97 @@ fn what_a_floating_base_does_not_have_yet_is_refused() {
     }
 }
 
+/// The derive's expansion of a one-joint arm on a floating base with the keys `keys`.
+fn arm(keys: &str) -> String {
+    let source = format!(
+        "#[dynamics({keys}, gravity = [0, 0, -9.81], dh = [[q, 0, 1, 0]], \
+         link(mass = 1, com = [0, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]))] struct Arm;"
+    );
+    derive_dynamics(source.parse().expect("tokens")).to_string()
+}
+
 #[test]
-fn a_floating_base_needs_a_urdf() {
-    let source = "#[dynamics(
-        base = floating,
-        gravity = [0, 0, -9.81],
-        dh = [[q, 0, 1, 0]],
-        link(mass = 1, com = [0, 0, 0], inertia = [0.1, 0.1, 0.1, 0, 0, 0]),
-    )] struct Arm;";
-    let out = derive_dynamics(source.parse().expect("tokens")).to_string();
+fn a_dh_table_on_a_floating_base_takes_its_body_from_the_attribute() {
+    let out =
+        arm("base = floating(mass = 2, com = [0, 0, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0])");
+    assert!(!out.contains("compile_error"), "{out}");
     assert!(
-        out.contains("`base = floating` reads the robot from a URDF"),
+        out.contains("FloatingDynamics < 8usize , 7usize >"),
         "{out}"
     );
+    for (keys, message) in [
+        (
+            "base = floating",
+            "`base = floating` without a URDF needs the floating body: `base = floating(mass = ..",
+        ),
+        (
+            "base = floating(com = [0, 0, 0])",
+            "the floating body has no `mass = ..`",
+        ),
+        (
+            "base = floating(mass = 1, actuator_inertia = 0.1)",
+            "`actuator_inertia` has no meaning on a floating body",
+        ),
+        (
+            "base = floating(mass = 1, mas = 2)",
+            "unknown link attribute `mas`",
+        ),
+        (
+            "base = floating(\"trunk\")",
+            "`floating(\\\"link\\\")` names a URDF's link",
+        ),
+    ] {
+        let out = arm(keys);
+        assert!(out.contains("compile_error"), "{keys}: {out}");
+        assert!(
+            out.contains(message),
+            "{keys}: expected {message:?} in {out}"
+        );
+        assert!(!out.contains("FloatingDynamics <"), "{keys}: {out}");
+    }
+}
+
+#[test]
+fn a_urdf_gives_its_own_floating_body() {
+    let out = solo("base = floating(mass = 1)");
+    assert!(out.contains("the URDF gives the floating body"), "{out}");
+}
+
+/// A description file's `[floating]` table and `base = floating` go together.
+#[test]
+fn a_description_file_floats_with_its_floating_table() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../robots/");
+    let derive = |file: &str, keys: &str| {
+        let source = format!(
+            "#[dynamics(file = {:?}{keys})] struct Robot;",
+            format!("{root}{file}")
+        );
+        derive_dynamics(source.parse().expect("tokens")).to_string()
+    };
+    let solo = derive("floating/solo12.toml", ", base = floating");
+    assert!(!solo.contains("compile_error"), "{solo}");
+    assert!(
+        solo.contains("FloatingDynamics < 19usize , 18usize >"),
+        "{solo}"
+    );
+    for (file, keys, message) in [
+        (
+            "puma560.toml",
+            ", base = floating",
+            "the file has no `[floating]` table",
+        ),
+        ("floating/solo12.toml", "", "add `base = floating`"),
+        (
+            "floating/solo12.toml",
+            ", base = floating(mass = 1)",
+            "a description file gives the floating body in its `[floating]` table",
+        ),
+    ] {
+        let out = derive(file, keys);
+        assert!(out.contains("compile_error"), "{file}{keys}: {out}");
+        assert!(
+            out.contains(message),
+            "{file}{keys}: expected {message:?} in {out}"
+        );
+    }
 }

@@ -54,7 +54,7 @@ pub(crate) fn reference(robot: &str) -> serde_json::Value {
 }
 
 /// M, h, τ and g of `robot` at every sample of its data file `name`, to [`TOLERANCE`].
-fn check_against_pinocchio<R: FloatingDynamics<Q, V>, const Q: usize, const V: usize>(
+pub(crate) fn check_against_pinocchio<R: FloatingDynamics<Q, V>, const Q: usize, const V: usize>(
     robot: &R,
     name: &str,
 ) {

@@ -106,3 +106,35 @@ fn configuration_space_against_pinocchio() {
         );
     }
 }
+
+/// `∂ integrate / ∂q` and `∂ difference / ∂q0`, `∂q1` against Pinocchio's `dIntegrate(.., ARG0)`
+/// and `dDifference(.., ARG0 / ARG1)`, at the same states (sample #1's step the Taylor branch;
+/// `q1` an independent random state, rotations up to π away).
+#[test]
+fn configuration_jacobians_against_pinocchio() {
+    fn rows(m: [[f64; 18]; 18]) -> Vec<f64> {
+        m.iter().flatten().copied().collect()
+    }
+    for (k, s) in samples().iter().enumerate() {
+        let (q, dv, q1) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["dv"]),
+            array::<19>(&s["q1"]),
+        );
+        let found = [
+            ("dintegrate_dq", rows(Solo12.integrate_jacobian_q(&q, &dv))),
+            (
+                "ddifference_dq0",
+                rows(Solo12.difference_jacobian_q0(&q, &q1)),
+            ),
+            (
+                "ddifference_dq1",
+                rows(Solo12.difference_jacobian_q1(&q, &q1)),
+            ),
+        ];
+        for (key, j) in found {
+            let error = scaled_error(&j, &flat(&s[key]));
+            assert!(error < TOLERANCE, "sample {k}: {key} off by {error:e}");
+        }
+    }
+}

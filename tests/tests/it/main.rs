@@ -11,6 +11,7 @@ mod energy_drift;
 mod floating_base;
 mod floating_contacts;
 mod floating_forward;
+mod floating_front;
 mod floating_kinematics;
 mod forward_dynamics;
 mod friction;

@@ -85,6 +85,8 @@ pub(super) fn lower(
         check_inertia: reader.check_inertia,
         sources: reader.sources,
         simplify: None,
+        // `floating(mass = ..)`'s body is read beside the robot (`FloatingAttr::body`).
+        floating: None,
     };
     (lowered, counted)
 }

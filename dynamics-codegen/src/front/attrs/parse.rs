@@ -322,7 +322,11 @@ fn parse_attr(
 }
 
 /// Parses the keys of one `link(...)`, whose keyword is at `span`.
-fn parse_link(input: ParseStream, span: Span, errors: &mut Errors) -> syn::Result<LinkAttr> {
+pub(super) fn parse_link(
+    input: ParseStream,
+    span: Span,
+    errors: &mut Errors,
+) -> syn::Result<LinkAttr> {
     let mut link = LinkAttr {
         span: Some(span),
         ..LinkAttr::default()

@@ -8,7 +8,8 @@ use crate::check;
 use crate::front::errors::FileError;
 use crate::front::sources::{Loaded, Positions};
 use crate::model::{
-    snap_angle, Convention, Friction, Joint, JointKind, Link, Placement, Pose, Robot, Spring, Value,
+    snap_angle, Convention, FreeFlyer, Friction, Joint, JointKind, Link, Placement, Pose, Robot,
+    Spring, Value,
 };
 use crate::symbolic::Number;
 
@@ -94,7 +95,6 @@ pub(super) fn convert(
                 .to_string(),
         ));
     }
-    let tool = file.tool.map(tool_placement);
     let mut joints = Vec::with_capacity(file.joints.len());
     let mut check_inertia = Vec::with_capacity(file.joints.len());
     let mut deferred = Vec::new();
@@ -140,13 +140,15 @@ pub(super) fn convert(
         });
     }
     let mut loaded = Loaded {
+        // Before `gravity` moves into the robot.
+        floating: file.floating.map(|body| free_flyer(body, &gravity)),
         robot: Robot {
             name: file.name.unwrap_or_else(|| default_name.to_string()),
             convention,
             gravity,
             joints,
             base: Pose::identity(),
-            tool,
+            tool: file.tool.map(tool_placement),
             tips: Vec::new(),
         },
         check_inertia,
@@ -157,6 +159,23 @@ pub(super) fn convert(
         frames::lower(&mut loaded.robot, &mut deferred);
     }
     Ok((loaded, deferred))
+}
+
+/// The file's `[floating]` body, with its gravity as written (in the world frame: the robot's
+/// own is turned into its frame 0 when joints given by frames are lowered).
+fn free_flyer(body: super::schema::FileFloating, gravity: &[Value; 3]) -> FreeFlyer {
+    FreeFlyer {
+        link: "base".to_string(),
+        body: Link {
+            mass: body.mass.0,
+            com: body.com.map_or_else(Default::default, |c| c.map(|v| v.0)),
+            inertia: body
+                .inertia
+                .map_or_else(Default::default, |c| c.map(|v| v.0)),
+            ..Link::default()
+        },
+        gravity: gravity.clone(),
+    }
 }
 
 /// The file's `tool = [x, y, z, roll, pitch, yaw]`.

@@ -114,6 +114,21 @@ pub(super) struct FileRobot {
     /// The pruned models' tolerance and envelope, as the attribute's `simplify(...)`.
     #[serde(default)]
     pub(super) simplify: Option<super::simplify::FileSimplify>,
+    /// The body of a robot on a free-flying base (`base = floating` in the derive).
+    #[serde(default)]
+    pub(super) floating: Option<FileFloating>,
+}
+
+/// `[floating]`: the floating body's mass, centre of mass and inertia about it, in the base
+/// frame (frame 0), as a joint's link.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct FileFloating {
+    pub(super) mass: FileValue,
+    #[serde(default)]
+    pub(super) com: Option<[FileValue; 3]>,
+    #[serde(default)]
+    pub(super) inertia: Option<[FileValue; 6]>,
 }
 
 #[derive(Deserialize)]

@@ -105,6 +105,8 @@ pub fn load_urdf(
             ..Positions::default()
         },
         simplify: None,
+        // The URDF's floating body is its root link's (`urdf::free_flyer`).
+        floating: None,
     })
 }
 
