@@ -111,9 +111,12 @@ pub(super) fn lane_f64(x: &str, s: &str, c: &str) -> String {
     /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
     const double z = t * t;
     const double z2 = z * z;
-    const double sin_poly = z2 * (z2 * (z * {s6} + {s5}) + (z * {s4} + {s3}))
+    const double sin_poly = z2 * (z2 * (z * {s6} + {s5})
+            + (z * {s4} + {s3}))
         + (z * {s2} + {s1});
-    const double cos_poly = z2 * (z2 * (z2 * {c6} + (z * {c5} + {c4})) + (z * {c3} + {c2}))
+    const double cos_poly = z2 * (z2 * (z2 * {c6}
+                + (z * {c5} + {c4}))
+            + (z * {c3} + {c2}))
         + (z * {c1} + -0.5);
     const double sin_r = (r * z) * sin_poly + r;
     const double cos_r = z * cos_poly + 1.0;

@@ -80,10 +80,10 @@ pub(super) fn trig() -> String {
 const TRIG: &str = r##"#ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H
 /* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within two
- * ulps (one in float), the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in float), as the runtime
- * does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less accurate beyond 2^16, NaN from
- * 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under -ffast-math (whose reassociation
- * undoes the kernels' rounding steps), <math.h>'s. */
+ * ulps (one in float), the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in
+ * float), as the runtime does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less
+ * accurate beyond 2^16, NaN from 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under
+ * -ffast-math (whose reassociation undoes the kernels' rounding steps), <math.h>'s. */
 #if defined(__FAST_MATH__) && defined(DYNAMICS_OWN_SINCOS)
 #error "DYNAMICS_OWN_SINCOS: -ffast-math undoes the rounding steps of the header's sines and cosines"
 #endif

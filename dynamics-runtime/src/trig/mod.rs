@@ -42,10 +42,11 @@
 //! in, NaN out). For `f32`, tiny arguments (`|x| < 2^-12`) return `(x, 1)`, which is the
 //! correctly rounded result, keeps the sign of `±0` and never squares a subnormal.
 //!
-//! **Accuracy.** `f64`: within two ulps of std's (glibc's) results over the fast range (1.0 ulp
-//! and less on the joint angles' [−4π, 4π]), where the kernels carried `r_lo` and the rounding
-//! of `1 − z/2` until 2026-11-29 for 0.76 ulp against correctly rounded values: a dozen fewer
-//! operations a vector for an error that the robots' 1e-12 checks cannot see. `f32`: within an
+//! **Accuracy.** `f64`: within two ulps of std's (glibc's) results over the fast range (one on
+//! the joint angles' [−4π, 4π] where the build fuses multiply-adds), and the hardest reductions
+//! correctly rounded. Until 2026-11-29 the kernel carried `r_lo` for 0.76 ulp against correctly
+//! rounded values: a third fewer operations a vector for an error (4.4e-16 relatively) that the
+//! robots' 1e-12 checks cannot see. `f32`: within an
 //! ulp of the correctly rounded values on every argument. `tests/it/trig.rs` holds the bounds
 //! and the hardest cases. The measured errors and costs are in `docs/performance.md`.
 //!
