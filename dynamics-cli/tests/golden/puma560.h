@@ -30,12 +30,12 @@
 /* A different header whose functions are also puma560_*, included before: refused,
  * rather than one robot's functions silently standing for the other's. */
 #ifdef DYNAMICS_ROBOT_puma560_H
-#if DYNAMICS_ROBOT_puma560_H + 0 != 0xdeb4f3c36cd90791u
+#if DYNAMICS_ROBOT_puma560_H + 0 != 0x0ef3e5df4177e2e7u
 #error "another header included before this one also names its functions puma560_*: emit this one (robot puma560) or the other with `dynamics emit --lang c --prefix NAME`"
 #endif
 #endif
 #ifndef DYNAMICS_ROBOT_puma560_H
-#define DYNAMICS_ROBOT_puma560_H 0xdeb4f3c36cd90791u
+#define DYNAMICS_ROBOT_puma560_H 0x0ef3e5df4177e2e7u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>
@@ -43,11 +43,11 @@
 
 #ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H
-/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within an
- * ulp, the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in float), as the runtime
- * does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less accurate beyond 2^16, NaN from
- * 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under -ffast-math (whose reassociation
- * undoes the kernels' rounding steps), <math.h>'s. */
+/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within two
+ * ulps (one in float), the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in
+ * float), as the runtime does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less
+ * accurate beyond 2^16, NaN from 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under
+ * -ffast-math (whose reassociation undoes the kernels' rounding steps), <math.h>'s. */
 #if defined(__FAST_MATH__) && defined(DYNAMICS_OWN_SINCOS)
 #error "DYNAMICS_OWN_SINCOS: -ffast-math undoes the rounding steps of the header's sines and cosines"
 #endif
@@ -99,30 +99,24 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
         dynamics_sincos_beyond(x, s, c);
     } else {
         const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
-        /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
+        /* x = n pi/2 + r, pi/2 in three parts, the first two's products with n exact. */
         const double shifted = x * 0x1.45f306dc9c883p-1 + shift;
         const double n = shifted - shift;
         const double a = x - n * 0x1.921fb5444p+0;
-        const double b = n * 0x1.68c234c4cp-39;
-        const double cc = n * 0x1.98a2e03707345p-77;
         const double t = a - n * 0x1.68c234c4cp-39;
-        const double e = (a - t) - b;
-        const double r = t - cc;
-        const double r_lo = ((t - r) - cc) + e;
-        /* fdlibm's k_sin.c and k_cos.c in Estrin form. */
+        const double r = t - n * 0x1.98a2e03707345p-77;
+        /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
         const double z = t * t;
         const double z2 = z * z;
-        const double z4 = z2 * z2;
-        const double sin_poly = z4 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
-            + (z2 * (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4)
-                + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1));
-        const double cos_poly = z4 * (z * -1.13596475577881948265e-11 + 2.08757232129817482790e-9)
-            + (z2 * (z * -2.75573143513906633035e-7 + 2.48015872894767294178e-5)
-                + (z * -1.38888888888741095749e-3 + 4.16666666666666019037e-2));
-        const double half_z = 0.5 * z;
-        const double w = 1.0 - half_z;
-        const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
-        const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
+        const double sin_poly = z2 * (z2 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
+                + (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4))
+            + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1);
+        const double cos_poly = z2 * (z2 * (z2 * -1.13596475577881948265e-11
+                    + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
+                + (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3))
+            + (z * 4.16666666666666019037e-2 + -0.5);
+        const double sin_r = (r * z) * sin_poly + r;
+        const double cos_r = z * cos_poly + 1.0;
         /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
         const double m = n * 0.25;
         const double d = m - ((m + shift) - shift);
@@ -152,30 +146,24 @@ DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], do
     if (fast == 4) {
         for (i = 0; i < 4; ++i) {
             const double shift = 6755399441055744.0; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
-            /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
+            /* x = n pi/2 + r, pi/2 in three parts, the first two's products with n exact. */
             const double shifted = xs[i] * 0x1.45f306dc9c883p-1 + shift;
             const double n = shifted - shift;
             const double a = xs[i] - n * 0x1.921fb5444p+0;
-            const double b = n * 0x1.68c234c4cp-39;
-            const double cc = n * 0x1.98a2e03707345p-77;
             const double t = a - n * 0x1.68c234c4cp-39;
-            const double e = (a - t) - b;
-            const double r = t - cc;
-            const double r_lo = ((t - r) - cc) + e;
-            /* fdlibm's k_sin.c and k_cos.c in Estrin form. */
+            const double r = t - n * 0x1.98a2e03707345p-77;
+            /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
             const double z = t * t;
             const double z2 = z * z;
-            const double z4 = z2 * z2;
-            const double sin_poly = z4 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
-                + (z2 * (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4)
-                    + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1));
-            const double cos_poly = z4 * (z * -1.13596475577881948265e-11 + 2.08757232129817482790e-9)
-                + (z2 * (z * -2.75573143513906633035e-7 + 2.48015872894767294178e-5)
-                    + (z * -1.38888888888741095749e-3 + 4.16666666666666019037e-2));
-            const double half_z = 0.5 * z;
-            const double w = 1.0 - half_z;
-            const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
-            const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
+            const double sin_poly = z2 * (z2 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
+                    + (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4))
+                + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1);
+            const double cos_poly = z2 * (z2 * (z2 * -1.13596475577881948265e-11
+                        + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
+                    + (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3))
+                + (z * 4.16666666666666019037e-2 + -0.5);
+            const double sin_r = (r * z) * sin_poly + r;
+            const double cos_r = z * cos_poly + 1.0;
             /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
             const double m = n * 0.25;
             const double d = m - ((m + shift) - shift);

@@ -102,30 +102,24 @@ pub fn hexadecimal(x: f64) -> String {
 pub(super) fn lane_f64(x: &str, s: &str, c: &str) -> String {
     format!(
         "    const double shift = {shift}; /* 1.5 * 2^52: x * 2/pi rounded to an integer */
-    /* x = n pi/2 + (r + r_lo), pi/2 in three parts whose products with n are exact. */
+    /* x = n pi/2 + r, pi/2 in three parts, the first two's products with n exact. */
     const double shifted = {x} * {two_over_pi} + shift;
     const double n = shifted - shift;
     const double a = {x} - n * {p1};
-    const double b = n * {p2};
-    const double cc = n * {p3};
     const double t = a - n * {p2};
-    const double e = (a - t) - b;
-    const double r = t - cc;
-    const double r_lo = ((t - r) - cc) + e;
-    /* fdlibm's k_sin.c and k_cos.c in Estrin form. */
+    const double r = t - n * {p3};
+    /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
     const double z = t * t;
     const double z2 = z * z;
-    const double z4 = z2 * z2;
-    const double sin_poly = z4 * (z * {s6} + {s5})
-        + (z2 * (z * {s4} + {s3})
-            + (z * {s2} + {s1}));
-    const double cos_poly = z4 * (z * {c6} + {c5})
-        + (z2 * (z * {c4} + {c3})
-            + (z * {c2} + {c1}));
-    const double half_z = 0.5 * z;
-    const double w = 1.0 - half_z;
-    const double sin_r = r + ((r * z) * sin_poly + r_lo * w);
-    const double cos_r = w + ((z2 * cos_poly + ((1.0 - w) - half_z)) - r * r_lo);
+    const double sin_poly = z2 * (z2 * (z * {s6} + {s5})
+            + (z * {s4} + {s3}))
+        + (z * {s2} + {s1});
+    const double cos_poly = z2 * (z2 * (z2 * {c6}
+                + (z * {c5} + {c4}))
+            + (z * {c3} + {c2}))
+        + (z * {c1} + -0.5);
+    const double sin_r = (r * z) * sin_poly + r;
+    const double cos_r = z * cos_poly + 1.0;
     /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
     const double m = n * 0.25;
     const double d = m - ((m + shift) - shift);

@@ -1,15 +1,16 @@
 //! The header's sines and cosines: `dynamics_sin`, `dynamics_cos`, `dynamics_sincos` and
 //! `dynamics_sincos4` (and their `_f32` forms). By default they run the runtime's kernels
-//! (`dynamics-runtime/src/trig/`) written in C, on the runtime's fast range (2^-27 ≤ |x| ≤
-//! 2^16, 2^-12 to 2^12 in `float`), and call `<math.h>` beyond it, as the runtime calls `libm`:
+//! (`dynamics-runtime/src/trig/`) written in C, on the runtime's fast range (|x| ≤ 2^16,
+//! 2^-12 to 2^12 in `float`; `(x, 1)` below 2^-27, which the runtime's kernel gives there), and
+//! call `<math.h>` beyond it, as the runtime calls `libm`:
 //! the Rust code's results, and in vector lanes. With `DYNAMICS_OWN_SINCOS` the kernels alone,
 //! so that a target without a libm still builds; with `DYNAMICS_LIBM_SINCOS`, or under
 //! `-ffast-math` (which would reassociate the kernels' rounding steps away, `__FAST_MATH__`),
 //! `<math.h>`'s everywhere.
 //!
 //! The kernels are the runtime's operation for operation: the same Cody-Waite reduction (π/2 in
-//! parts, `k·P` exact, the rounding errors recovered by Fast2Sum and TwoSum), the same fdlibm
-//! and FreeBSD polynomials in the same Estrin form, the same constants, read from the runtime's
+//! parts, `k·P` exact; for `float` the rounding errors recovered by Fast2Sum and TwoSum), the
+//! same fdlibm and FreeBSD polynomials in the same form, the same constants, read from the runtime's
 //! own table (`kernels.rs`: the coefficients as published, the `float` ones as `(float)` of the
 //! same `double` literals, as the runtime's `f64 as f32`, the parts of π/2 and the bounds of the
 //! fast range as hexadecimal literals, exact). Where the runtime fuses a multiply-add the C writes `a * b + c`,
@@ -78,11 +79,11 @@ pub(super) fn trig() -> String {
 /// The C text around the kernels.
 const TRIG: &str = r##"#ifndef DYNAMICS_TRIG_H
 #define DYNAMICS_TRIG_H
-/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within an
- * ulp, the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in float), as the runtime
- * does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less accurate beyond 2^16, NaN from
- * 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under -ffast-math (whose reassociation
- * undoes the kernels' rounding steps), <math.h>'s. */
+/* Sines and cosines: by default the runtime's kernels (dynamics-runtime/src/trig/), within two
+ * ulps (one in float), the Rust code's results, and <math.h>'s beyond |x| = 2^16 (2^12 in
+ * float), as the runtime does; with DYNAMICS_OWN_SINCOS the kernels alone (no libm: less
+ * accurate beyond 2^16, NaN from 2^51, 2^22 in float); with DYNAMICS_LIBM_SINCOS, or under
+ * -ffast-math (whose reassociation undoes the kernels' rounding steps), <math.h>'s. */
 #if defined(__FAST_MATH__) && defined(DYNAMICS_OWN_SINCOS)
 #error "DYNAMICS_OWN_SINCOS: -ffast-math undoes the rounding steps of the header's sines and cosines"
 #endif

@@ -8,13 +8,12 @@
 use super::kernels::{
     C1_F64, C2_F64, C3_F64, C4_F64, C5_F64, C6_F64, S1_F64, S2_F64, S3_F64, S4_F64, S5_F64, S6_F64,
 };
-use super::reduction::{BOUND_F64, P1_F64, P2_F64, P3_F64, SHIFT_F64, TINY_F64};
+use super::reduction::{BOUND_F64, P1_F64, P2_F64, P3_F64, SHIFT_F64};
 use core::arch::x86_64::{
-    __m256d, _mm256_add_epi64, _mm256_add_pd, _mm256_and_pd, _mm256_and_si256, _mm256_andnot_pd,
-    _mm256_blendv_pd, _mm256_castpd256_pd128, _mm256_castpd_si256, _mm256_castsi256_pd,
-    _mm256_cmp_pd, _mm256_cmpeq_epi64, _mm256_extractf128_pd, _mm256_movemask_pd, _mm256_mul_pd,
-    _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set_pd, _mm256_slli_epi64, _mm256_sub_pd,
-    _mm256_xor_pd, _mm_cvtsd_f64, _mm_unpackhi_pd, _CMP_GE_OQ, _CMP_LE_OQ,
+    __m256d, _mm256_and_pd, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd256_pd128,
+    _mm256_castpd_si256, _mm256_castsi256_pd, _mm256_cmp_pd, _mm256_extractf128_pd,
+    _mm256_movemask_pd, _mm256_mul_pd, _mm256_set1_pd, _mm256_set_pd, _mm256_slli_epi64,
+    _mm256_sub_pd, _mm256_xor_pd, _mm_cvtsd_f64, _mm_unpackhi_pd, _CMP_LE_OQ,
 };
 
 /// The four lanes of `v`.
@@ -38,11 +37,11 @@ unsafe fn fma(a: __m256d, b: __m256d, c: __m256d) -> __m256d {
     #[cfg(target_feature = "fma")]
     return core::arch::x86_64::_mm256_fmadd_pd(a, b, c);
     #[cfg(not(target_feature = "fma"))]
-    return _mm256_add_pd(_mm256_mul_pd(a, b), c);
+    return core::arch::x86_64::_mm256_add_pd(_mm256_mul_pd(a, b), c);
 }
 
-/// Whether all four `|x|` lie in `[TINY_F64, BOUND_F64]` (a NaN does not): two vector
-/// comparisons and one mask, where four scalar tests take a dozen instructions and branches.
+/// Whether all four `|x|` are at most `BOUND_F64` (a NaN is not): one vector comparison and
+/// one mask, where four scalar tests take a dozen instructions and branches.
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(super) unsafe fn in_fast_range(x: [f64; 4]) -> bool {
@@ -56,44 +55,42 @@ pub(super) unsafe fn in_fast_range_8(lo: [f64; 4], hi: [f64; 4]) -> bool {
     _mm256_movemask_pd(_mm256_and_pd(inside(lo), inside(hi))) == 0b1111
 }
 
-/// All ones in the lanes whose `|x|` lies in `[TINY_F64, BOUND_F64]`.
+/// All ones in the lanes whose `|x|` is at most `BOUND_F64`.
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn inside(x: [f64; 4]) -> __m256d {
     let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
     let abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), x);
-    let low = _mm256_cmp_pd::<_CMP_GE_OQ>(abs, _mm256_set1_pd(TINY_F64));
-    let high = _mm256_cmp_pd::<_CMP_LE_OQ>(abs, _mm256_set1_pd(BOUND_F64));
-    _mm256_and_pd(low, high)
+    _mm256_cmp_pd::<_CMP_LE_OQ>(abs, _mm256_set1_pd(BOUND_F64))
 }
 
 /// `(sin x, cos x)` of four arguments in the fast range: `super::scalar::fast_f64` lane by lane,
-/// the quadrant chosen by a swap (odd `k`) and two sign flips instead of the table.
+/// on `|x|`, the quadrant chosen by a swap (odd `k`) and two sign flips.
 #[inline]
 #[target_feature(enable = "avx2")]
 pub(super) unsafe fn fast_4(x: [f64; 4]) -> ([f64; 4], [f64; 4]) {
     let x = _mm256_set_pd(x[3], x[2], x[1], x[0]);
+    let sign_bit = _mm256_set1_pd(-0.0);
     let (shifted, sin_r, cos_r) = reduce_and_evaluate_f64!(
-        x,
+        _mm256_andnot_pd(sign_bit, x),
         |c: f64| _mm256_set1_pd(c),
-        |a, b| _mm256_add_pd(a, b),
         |a, b| _mm256_sub_pd(a, b),
         |a, b| _mm256_mul_pd(a, b),
         |a, b, c| fma(a, b, c)
     );
 
-    // k mod 4 is in the low bits of `shifted`.
+    // k mod 4 is in the low bits of `shifted`: bit 0 moved to the top selects (blendv reads
+    // the top bit alone), bit 1 moved to the top is the sine's sign, and the cosine's is their
+    // exclusive or.
     let bits = _mm256_castpd_si256(shifted);
-    let one = _mm256_set1_epi64x(1);
-    let two = _mm256_set1_epi64x(2);
-    let odd = _mm256_castsi256_pd(_mm256_cmpeq_epi64(_mm256_and_si256(bits, one), one));
+    let odd = _mm256_castsi256_pd(_mm256_slli_epi64::<63>(bits));
+    let half = _mm256_and_pd(_mm256_castsi256_pd(_mm256_slli_epi64::<62>(bits)), sign_bit);
     let sin_k = _mm256_blendv_pd(sin_r, cos_r, odd);
     let cos_k = _mm256_blendv_pd(cos_r, sin_r, odd);
-    let sin_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(bits, two));
-    let cos_sign = _mm256_slli_epi64::<62>(_mm256_and_si256(_mm256_add_epi64(bits, one), two));
+    let sin_sign = _mm256_xor_pd(half, _mm256_and_pd(x, sign_bit));
     (
-        lanes(_mm256_xor_pd(sin_k, _mm256_castsi256_pd(sin_sign))),
-        lanes(_mm256_xor_pd(cos_k, _mm256_castsi256_pd(cos_sign))),
+        lanes(_mm256_xor_pd(sin_k, sin_sign)),
+        lanes(_mm256_xor_pd(cos_k, _mm256_xor_pd(half, odd))),
     )
 }
 

@@ -6,60 +6,48 @@
 kernel_coefficients!(declare_constants);
 
 /// The reduction and the kernels of `f64`, written once for the scalar and the vector paths:
-/// `$x` is the argument (a number or a register), `$k` makes a constant of that kind, and
-/// `$add`, `$sub`, `$mul` are its operations and `$fma` its `a·b + c` (one rounding where the
-/// build has FMA, two elsewhere, on every path alike). Gives `(shifted, sin r, cos r)`:
+/// `$x` is the argument's magnitude `|x|` (a number or a register), `$k` makes a constant of
+/// that kind, and `$sub`, `$mul` are its operations and `$fma` its `a·b + c` (one rounding where
+/// the build has FMA, two elsewhere, on every path alike). Gives `(shifted, sin r, cos r)`:
 /// `k mod 4` is in the low bits of `shifted`. Every path runs these operations in this order,
 /// which is why their results agree bit for bit.
 macro_rules! reduce_and_evaluate_f64 {
-    ($x:expr, $k:expr, $add:expr, $sub:expr, $mul:expr, $fma:expr) => {{
-        let (x, k, add, sub, mul, fma) = ($x, $k, $add, $sub, $mul, $fma);
+    ($x:expr, $k:expr, $sub:expr, $mul:expr, $fma:expr) => {{
+        let (x, k, sub, mul, fma) = ($x, $k, $sub, $mul, $fma);
         // One rounding where the build has FMA: the integer nearest the exact x·(2/π).
         let shifted = fma(x, k(core::f64::consts::FRAC_2_PI), k(SHIFT_F64));
         let n = sub(shifted, k(SHIFT_F64));
 
-        // x − n·P1, n·P2 are exact. Their difference is exact below 2^-20 (both lie on the
-        // grid 2^-73); above, |x − n·P1| > |n·P2|, so Fast2Sum recovers its rounding error `e`.
-        // Then |r| > 400·|n·P3| over the whole range, so the second Fast2Sum is valid too. `e`
-        // goes into `r_lo` rather than `r`, off the critical path (|r_lo| stays below an ulp
-        // of `r`).
-        // Exact products: fusing them with their subtraction changes no bit, only the chain.
+        // x − n·P1 and n·P2 are exact (`a`, then `s` exact below 2^-20, where r is small and
+        // every bit counts; above, rounded once). n·P3 is rounded, but |r| > 400·|n·P3|: r is
+        // within an ulp of x − k·π/2, relatively, over the whole fast range, even at the
+        // hardest reductions (2^-60.5). Fusing the exact products with their subtractions
+        // changes no bit, only the chain.
         let a = fma(n, k(-P1_F64), x);
-        let b = mul(n, k(P2_F64));
-        let c = mul(n, k(P3_F64));
         let s = fma(n, k(-P2_F64), a);
-        let e = sub(sub(a, s), b);
-        let r = sub(s, c);
-        let r_lo = add(sub(sub(s, r), c), e);
+        let r = fma(n, k(-P3_F64), s);
 
-        // The polynomials in Estrin's scheme, `fma(a, b, c) = a·b + c` fused where the build
-        // has FMA: a shorter chain from the argument to the result. `z` is squared from `s`, a
-        // step before `r = s − n·P3`: it only feeds terms of order r³ and r², which it changes by
-        // |r·n·P3| < 4e-19, under 0.003 ulp of the result.
+        // fdlibm's polynomials, `z` squared from `s`, a step before `r` (it only feeds terms of
+        // order r³ and r², which |r·n·P3| < 4e-19 changes by under 0.003 ulp of the result),
+        // evaluated as (p1 + z·p2) + z²·((p3 + z·p4) + z²·(p5 + z·p6)): a depth of four
+        // multiply-adds from `z` as in Estrin's form, without its z⁴, and one more for the result.
         let z = mul(s, s);
         let z2 = mul(z, z);
-        let z4 = mul(z2, z2);
         let pair = |p: f64, q: f64| fma(z, k(q), k(p));
         let sin_poly = fma(
-            z4,
-            pair(S5_F64, S6_F64),
-            fma(z2, pair(S3_F64, S4_F64), pair(S1_F64, S2_F64)),
+            z2,
+            fma(z2, pair(S5_F64, S6_F64), pair(S3_F64, S4_F64)),
+            pair(S1_F64, S2_F64),
         );
+        // cos r = 1 + z·(−1/2 + C1·z + … + C6·z⁶): one rounding at the result's scale, where
+        // 1 − z/2 rounded apart would be a second.
         let cos_poly = fma(
-            z4,
-            pair(C5_F64, C6_F64),
-            fma(z2, pair(C3_F64, C4_F64), pair(C1_F64, C2_F64)),
+            z2,
+            fma(z2, fma(z2, k(C6_F64), pair(C4_F64, C5_F64)), pair(C2_F64, C3_F64)),
+            pair(-0.5, C1_F64),
         );
-        let half_z = mul(k(0.5), z);
-        let w = sub(k(1.0), half_z);
-        let sin_r = add(r, fma(mul(r, z), sin_poly, mul(r_lo, w)));
-        let cos_r = add(
-            w,
-            sub(
-                fma(z2, cos_poly, sub(sub(k(1.0), w), half_z)),
-                mul(r, r_lo),
-            ),
-        );
+        let sin_r = fma(mul(r, z), sin_poly, r);
+        let cos_r = fma(z, cos_poly, k(1.0));
         (shifted, sin_r, cos_r)
     }};
 }

@@ -19,8 +19,10 @@ use crate::ulp::{err_f32, err_f64, see_f32, see_f64, Worst};
 const BOUND_F64: f64 = 65_536.0;
 const BOUND_F32: f32 = 4_096.0;
 
-/// Allowed error against std in the fast range, where std (glibc) is itself within 1 ulp.
-const MAX_ULP_F64: f64 = 1.0;
+/// Allowed error against std in the fast range, where std (glibc) is itself within 1 ulp. `f64`:
+/// 2 ulps since the kernels dropped the reduction's tail `r_lo` (2026-11-29); measured 2 in the
+/// default build (multiply-adds in two roundings) and 1 with FMA on [−4π, 4π].
+const MAX_ULP_F64: f64 = 2.0;
 const MAX_ULP_F32: f64 = 1.0;
 /// Allowed error beyond it, where `libm` (musl's algorithms) and glibc may each be off by
 /// nearly 1 ulp, in opposite directions.
