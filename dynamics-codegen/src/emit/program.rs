@@ -5,7 +5,8 @@ use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, 
 use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
-use super::parts::{Body, Context, Output, Shared};
+use super::parts::{Body, Context, Output, Part, Shared};
+use super::rows::{kept_lanes, row_groups, split};
 use crate::method::Argument;
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Equations, Shape};
@@ -19,6 +20,8 @@ pub struct Emission {
     pub motion: Option<Shared>,
     /// One body per output, in order.
     pub bodies: Vec<Body>,
+    /// The functions of groups of rows the bodies call ([`super::rows`]).
+    pub parts: Vec<Part>,
 }
 
 /// Emits the functions computing `outputs` from `eq`. What depends only on the parameters and
@@ -82,10 +85,11 @@ pub(super) fn emit_with(
         e.motion(&motion_boundary, &field_names)
     });
     let tree = branches(eq);
-    let body = |o: &Output, shape: &Shape| {
+    let body_of = |o: &Output, shape: &Shape, kept: Option<Vec<Vec<bool>>>| {
         let mut e = Emitter::new(eq, Some(ctx));
         // A tree's lanes: each row stored once its lane is computed.
         e.returned_in_place = tree && matches!(shape, Shape::Lanes { .. });
+        e.kept = kept;
         if !reads_q(&o) {
             return e.function(shape, o.method);
         }
@@ -103,12 +107,36 @@ pub(super) fn emit_with(
         }
         e.function(shape, o.method)
     };
+    let body = |o: &Output, shape: &Shape| body_of(o, shape, None);
+    let groups = |o: &Output| match o.shape {
+        Shape::Lanes {
+            lanes,
+            solved: None,
+            ..
+        } if tree && reads_q(&o) => row_groups(lanes),
+        _ => Vec::new(),
+    };
+    let mut parts = Vec::new();
     let bodies = all
         .iter()
-        .map(|o| match o.shape {
+        .map(|o| match (o.shape, groups(o)) {
+            // A tree's ∂τ in functions of groups of rows, where it has several.
+            (Shape::Lanes { lanes: plans, .. }, groups) if groups.len() > 1 => {
+                let first = parts.len();
+                parts.extend(groups.iter().enumerate().map(|(k, rows)| Part {
+                    method: o.method,
+                    index: k + 1,
+                    tokens: body_of(o, &o.shape, Some(kept_lanes(plans, rows))).tokens,
+                }));
+                let lanes = split(eq, ctx, o, &parts[first..]);
+                let scalar = body(o, &o.shape.scalar()).tokens;
+                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+                tokens.extend([block(lanes.tokens), quote!(else), block(scalar)]);
+                Body { tokens, ..lanes }
+            }
             // Tangents in lanes where the build computes them there (AVX-512), else the columns
             // one by one. The test is a constant: the compiler keeps one branch.
-            Shape::Lanes { .. } => {
+            (Shape::Lanes { .. }, _) => {
                 let (mut lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
                 let a = std::mem::take(&mut lanes.tokens);
                 let mut tokens = quote!(if T::TANGENTS_IN_LANES);
@@ -122,6 +150,7 @@ pub(super) fn emit_with(
         configuration,
         motion,
         bodies,
+        parts,
     }
 }
 
