@@ -9,7 +9,6 @@ use super::names::{local, output_names, Element, OUTPUT};
 use super::parts::Body;
 use super::parts::OpCount;
 use super::plan::Place;
-use super::rows::kept_factors;
 use crate::method::{Argument, Method};
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Shape, Solved};
@@ -61,10 +60,7 @@ impl Emitter<'_> {
     /// the terms in `q̇` and `q̈`, then the result, returned or, for a method with an `into`
     /// form, written into `y_` (`in_place`).
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
-        let outputs = match (&self.kept, shape) {
-            (Some(kept), Shape::Lanes { lanes, .. }) => kept_factors(lanes, kept),
-            _ => shape.lane_outputs(),
-        };
+        let outputs = self.lane_outputs(shape);
         self.mark(&outputs);
         self.bind_factors(shape);
         let mut lanes = Queue::new(shape, self.kept.as_deref());

@@ -16,6 +16,7 @@ use super::emitter::Emitter;
 use super::expr::let_statement;
 use super::names::{local, OUTPUT};
 use super::plan::Place;
+use super::rows::kept_factors;
 use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 use core::ops::Range;
@@ -107,7 +108,10 @@ impl<'a> Queue<'a> {
             .enumerate()
             .filter_map(|(p, plan)| plan.map(|plan| (p, plan)))
             .flat_map(|(p, plan)| (0..plan.lanes.len()).map(move |k| (plan.lanes[k].after, p, k)))
-            .filter(|&(_, p, k)| kept.map_or(true, |kept| kept[p][k]))
+            .filter(|&(_, p, k)| match kept {
+                Some(kept) => kept[p][k],
+                None => true,
+            })
             .collect();
         // Stable: a lane reads only lanes of its plan written before it, after nodes before.
         pending.sort_by_key(|&(after, p, _)| (after, p));
@@ -154,7 +158,7 @@ impl Emitter<'_> {
             return;
         };
         let factors = match &self.kept {
-            Some(kept) => super::rows::kept_factors(lanes, kept),
+            Some(kept) => kept_factors(lanes, kept),
             None => lanes.iter().flatten().flat_map(Tangents::factors).collect(),
         };
         for f in factors {

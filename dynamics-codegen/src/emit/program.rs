@@ -107,20 +107,30 @@ pub(super) fn emit_with(
         }
         e.function(shape, o.method)
     };
-    let body = |o: &Output, shape: &Shape| body_of(o, shape, None);
-    let groups = |o: &Output| match o.shape {
-        Shape::Lanes {
-            lanes,
-            solved: None,
-            ..
-        } if tree && reads_q(&o) => row_groups(lanes),
-        _ => Vec::new(),
-    };
+    let (bodies, parts) = bodies(eq, ctx, all, tree, body_of);
+    Emission {
+        configuration,
+        motion,
+        bodies,
+        parts,
+    }
+}
+
+/// The body of each output in `all`, by `body_of` (a function of a group of rows where it is
+/// given the lanes the group keeps), and the functions of groups of rows they call: a tree's
+/// ∂τ in functions of groups of rows where it has several ([`super::rows`]).
+fn bodies<'a>(
+    eq: &Equations,
+    ctx: &Context,
+    all: &[Output<'a>],
+    tree: bool,
+    body_of: impl Fn(&Output<'a>, &Shape<'a>, Option<Vec<Vec<bool>>>) -> Body,
+) -> (Vec<Body>, Vec<Part>) {
+    let body = |o: &Output<'a>, shape: &Shape<'a>| body_of(o, shape, None);
     let mut parts = Vec::new();
     let bodies = all
         .iter()
-        .map(|o| match (o.shape, groups(o)) {
-            // A tree's ∂τ in functions of groups of rows, where it has several.
+        .map(|o| match (o.shape, groups(o, tree)) {
             (Shape::Lanes { lanes: plans, .. }, groups) if groups.len() > 1 => {
                 let first = parts.len();
                 parts.extend(groups.iter().enumerate().map(|(k, rows)| Part {
@@ -129,29 +139,35 @@ pub(super) fn emit_with(
                     tokens: body_of(o, &o.shape, Some(kept_lanes(plans, rows))).tokens,
                 }));
                 let lanes = split(eq, ctx, o, &parts[first..]);
-                let scalar = body(o, &o.shape.scalar()).tokens;
-                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
-                tokens.extend([block(lanes.tokens), quote!(else), block(scalar)]);
-                Body { tokens, ..lanes }
+                either(lanes, body(o, &o.shape.scalar()))
             }
-            // Tangents in lanes where the build computes them there (AVX-512), else the columns
-            // one by one. The test is a constant: the compiler keeps one branch.
-            (Shape::Lanes { .. }, _) => {
-                let (mut lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
-                let a = std::mem::take(&mut lanes.tokens);
-                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
-                tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
-                Body { tokens, ..lanes }
-            }
+            (Shape::Lanes { .. }, _) => either(body(o, &o.shape), body(o, &o.shape.scalar())),
             _ => body(o, &o.shape),
         })
         .collect();
-    Emission {
-        configuration,
-        motion,
-        bodies,
-        parts,
+    (bodies, parts)
+}
+
+/// The groups of rows of `output`'s plans ([`row_groups`]): a tree's ∂τ (not ∂q̈, which is
+/// solved through M, nor a method without `q`).
+fn groups(output: &Output, tree: bool) -> Vec<Vec<bool>> {
+    match output.shape {
+        Shape::Lanes {
+            lanes,
+            solved: None,
+            ..
+        } if tree && output.method.arguments().contains(&Argument::Q) => row_groups(lanes),
+        _ => Vec::new(),
     }
+}
+
+/// Tangents in lanes where the build computes them there (AVX-512), else the columns one by
+/// one. The test is a constant: the compiler keeps one branch.
+fn either(mut lanes: Body, scalar: Body) -> Body {
+    let a = std::mem::take(&mut lanes.tokens);
+    let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+    tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
+    Body { tokens, ..lanes }
 }
 
 /// Whether `output` computes its terms in `q` itself, from the configuration's sines, cosines

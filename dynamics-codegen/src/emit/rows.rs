@@ -13,6 +13,7 @@
 //! blocks of eight): a smaller tree's and a serial robot's ∂τ are one function, as before.
 
 use super::count::count;
+use super::emitter::Emitter;
 use super::expr::with_body;
 use super::impls::{call_arguments, signature};
 use super::items::Generated;
@@ -159,6 +160,17 @@ fn split_ops(eq: &Equations, ctx: &Context, shape: &Shape) -> OpCount {
 fn part_name(part: &Part) -> Ident {
     let name = format!("{}_rows{}", part.method.name(), part.index);
     Ident::new(&name, Span::call_site())
+}
+
+impl Emitter<'_> {
+    /// The nodes a function computing `shape` in lanes reads ([`Shape::lane_outputs`]): of a
+    /// group of rows, the factors of the lanes it keeps.
+    pub(super) fn lane_outputs(&self, shape: &Shape) -> Vec<NodeId> {
+        match (&self.kept, shape) {
+            (Some(kept), Shape::Lanes { lanes, .. }) => kept_factors(lanes, kept),
+            _ => shape.lane_outputs(),
+        }
+    }
 }
 
 impl Generated {
