@@ -63,7 +63,7 @@ pub struct Module {
     pub configuration: Option<Shared>,
     /// The motion function's struct fields and body, if two methods share terms in `q̇`.
     pub motion: Option<Shared>,
-    /// The functions of groups of a tree's rows its methods call ([`super::rows`]).
+    /// The functions of groups of a tree's rows its methods call (`emit/rows.rs`).
     pub parts: Vec<Part>,
 }
 

@@ -51,7 +51,7 @@ pub struct Body {
     pub lanes: bool,
 }
 
-/// The function of one group of a tree's rows ([`super::rows`]), which the method's body calls:
+/// The function of one group of a tree's rows (`emit/rows.rs`), which the method's body calls:
 /// `inverse_dynamics_derivatives_rows1(p_, q_, qd_, qdd_, &mut y_)`.
 pub struct Part {
     /// The method whose rows it stores.

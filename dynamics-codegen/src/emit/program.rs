@@ -20,7 +20,7 @@ pub struct Emission {
     pub motion: Option<Shared>,
     /// One body per output, in order.
     pub bodies: Vec<Body>,
-    /// The functions of groups of rows the bodies call ([`super::rows`]).
+    /// The functions of groups of rows the bodies call (`emit/rows.rs`).
     pub parts: Vec<Part>,
 }
 
@@ -118,7 +118,7 @@ pub(super) fn emit_with(
 
 /// The body of each output in `all`, by `body_of` (a function of a group of rows where it is
 /// given the lanes the group keeps), and the functions of groups of rows they call: a tree's
-/// ∂τ in functions of groups of rows where it has several ([`super::rows`]).
+/// ∂τ in functions of groups of rows where it has several (`emit/rows.rs`).
 fn bodies<'a>(
     eq: &Equations,
     ctx: &Context,
