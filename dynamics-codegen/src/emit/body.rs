@@ -60,10 +60,10 @@ impl Emitter<'_> {
     /// the terms in `q̇` and `q̈`, then the result, returned or, for a method with an `into`
     /// form, written into `y_` (`in_place`).
     pub(super) fn function(mut self, shape: &Shape, method: Method) -> Body {
-        let outputs = shape.lane_outputs();
+        let outputs = self.lane_outputs(shape);
         self.mark(&outputs);
         self.bind_factors(shape);
-        let mut lanes = Queue::new(shape);
+        let mut lanes = Queue::new(shape, self.kept.as_deref());
         let mut output_names = output_names(shape, method, |id| self.is_leaf(id));
         // A scalar result is returned as an expression, not bound.
         if matches!(shape, Shape::Scalar(_)) {
@@ -128,7 +128,10 @@ impl Emitter<'_> {
             statements.push(self.bind(id, element));
         }
         self.lanes_due(&mut lanes, None, &mut statements);
-        let result = if let Some(zeros) = &lanes_in_place {
+        let result = if self.kept.is_some() {
+            // A group's function: the caller's `y_` holds the zeros and is returned there.
+            TokenStream::new()
+        } else if let Some(zeros) = &lanes_in_place {
             let y = local(OUTPUT);
             statements.insert(0, quote!(let mut #y = #zeros;));
             quote!(#y)

@@ -48,6 +48,9 @@ pub(super) struct Emitter<'a> {
     /// Whether the function stores its result's elements into a local as they are computed
     /// and returns it, as the `into` methods store into the caller's (a tree's `M`).
     pub(super) returned_in_place: bool,
+    /// Per plan, the lanes a function of a group of rows writes ([`super::rows`]); `None`: all,
+    /// the result's zeros its own.
+    pub(super) kept: Option<Vec<Vec<bool>>>,
     /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
     pub(super) depth: Vec<Cell<u32>>,
@@ -94,6 +97,7 @@ impl<'a> Emitter<'a> {
             temporary_prefix: "t",
             has_configuration: false,
             returned_in_place: false,
+            kept: None,
             depth: t.depth,
             marked: Vec::new(),
             depth_known: RefCell::new(Vec::new()),

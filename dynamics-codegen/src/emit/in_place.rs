@@ -4,10 +4,13 @@
 //! stack, past the registers, for the copy at the end.
 
 use super::emitter::Emitter;
-use super::names::{local, Element, OUTPUT};
+use super::expr::with_body;
+use super::impls::{call_arguments, signature};
+use super::items::{Generated, MethodCode};
+use super::names::{local, Element, OUTPUT, PARAMETERS};
 use crate::symbolic::NodeId;
 use crate::trace::Shape;
-use proc_macro2::{Literal, TokenStream};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
 /// One innermost row of a result: the indices that lead to it, and its elements.
@@ -154,5 +157,41 @@ impl Emitter<'_> {
                 statements.push(quote!(#y = #name;));
             }
         }
+    }
+}
+
+impl Generated {
+    /// The two functions of a method written in place: `name_into`, its body storing into
+    /// `y_`, and `name`, calling it on zeros (which the stores overwrite: the optimiser drops
+    /// them).
+    pub(super) fn in_place_functions(
+        &self,
+        m: &MethodCode,
+        zeros: &TokenStream,
+        into: &str,
+        krate: &TokenStream,
+    ) -> TokenStream {
+        let (name, into) = (
+            Ident::new(m.name, Span::call_site()),
+            Ident::new(into, Span::call_site()),
+        );
+        let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
+        let scalar = Ident::new("T", Span::call_site());
+        let (args, ret) = signature(m.method, &self.counts(), &scalar, krate, true);
+        let pass = call_arguments(m.method);
+        let head = quote! {
+            #[inline(always)]
+            pub(super) fn #into<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+        };
+        let mut into_fn = with_body(head, m.body.clone());
+        into_fn.extend(quote! {
+            #[inline(always)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
+                let mut #y = #zeros;
+                #into(#p, #pass, &mut #y);
+                #y
+            }
+        });
+        into_fn
     }
 }

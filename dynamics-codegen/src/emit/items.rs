@@ -8,7 +8,7 @@ use super::impls::{argument_local, call_arguments, forward, scalar_name, signatu
 use super::impls::{trait_impls, Counts, Sizes};
 use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT};
 use super::names::{OUTPUT, PARAMETERS};
-use super::parts::{Context, OpCount, Output, Shared};
+use super::parts::{Context, OpCount, Output, Part, Shared};
 use super::program::emit_with;
 use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
@@ -63,6 +63,8 @@ pub struct Module {
     pub configuration: Option<Shared>,
     /// The motion function's struct fields and body, if two methods share terms in `q̇`.
     pub motion: Option<Shared>,
+    /// The functions of groups of a tree's rows its methods call (`emit/rows.rs`).
+    pub parts: Vec<Part>,
 }
 
 /// A derive's items: those that go beside the robot's struct and those that go in the
@@ -162,6 +164,7 @@ fn generate_with(eq: &Equations, fields: Vec<TokenStream>, counted: bool) -> Gen
             family,
             configuration: emission.configuration,
             motion: emission.motion,
+            parts: emission.parts,
         });
     }
     release_spare_tables();
@@ -188,7 +191,7 @@ fn generate_with(eq: &Equations, fields: Vec<TokenStream>, counted: bool) -> Gen
 
 impl Generated {
     /// The counts its types are written with.
-    fn counts(&self) -> Counts {
+    pub(super) fn counts(&self) -> Counts {
         let (dof, base, links) = (self.dof, self.base_count, self.links);
         let tips = self.tip_names.as_ref().map_or(0, Vec::len);
         Counts {
@@ -369,6 +372,8 @@ impl Generated {
                 .chain(configuration_item)
                 .chain(motion_item),
         );
+        let parts = module.parts.iter();
+        inner.extend(parts.map(|part| self.part_function(part, krate)));
         inner.extend(bodies);
         let head = quote! {
             /// The generated functions, out of reach of the names around the derive.
@@ -377,40 +382,6 @@ impl Generated {
             mod #name
         };
         with_body(head, inner)
-    }
-
-    /// The two functions of a method written in place: `name_into`, its body storing into
-    /// `y_`, and `name`, calling it on zeros (which the stores overwrite: the optimiser drops
-    /// them).
-    fn in_place_functions(
-        &self,
-        m: &MethodCode,
-        zeros: &TokenStream,
-        into: &str,
-        krate: &TokenStream,
-    ) -> TokenStream {
-        let (name, into) = (
-            Ident::new(m.name, Span::call_site()),
-            Ident::new(into, Span::call_site()),
-        );
-        let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
-        let scalar = Ident::new("T", Span::call_site());
-        let (args, ret) = signature(m.method, &self.counts(), &scalar, krate, true);
-        let pass = call_arguments(m.method);
-        let head = quote! {
-            #[inline(always)]
-            pub(super) fn #into<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
-        };
-        let mut into_fn = with_body(head, m.body.clone());
-        into_fn.extend(quote! {
-            #[inline(always)]
-            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args) -> #ret {
-                let mut #y = #zeros;
-                #into(#p, #pass, &mut #y);
-                #y
-            }
-        });
-        into_fn
     }
 
     /// The configuration struct and function, if any method reads them.

@@ -16,6 +16,7 @@ use super::emitter::Emitter;
 use super::expr::let_statement;
 use super::names::{local, OUTPUT};
 use super::plan::Place;
+use super::rows::kept_factors;
 use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 use core::ops::Range;
@@ -96,8 +97,8 @@ pub(super) fn lane_operations(shape: &Shape) -> usize {
 }
 
 impl<'a> Queue<'a> {
-    /// The lanes of `shape`'s plans (none for another shape).
-    pub(crate) fn new(shape: &Shape<'a>) -> Queue<'a> {
+    /// The lanes of `shape`'s plans (none for another shape), those `kept` marks if given.
+    pub(crate) fn new(shape: &Shape<'a>, kept: Option<&[Vec<bool>]>) -> Queue<'a> {
         let plans: Vec<Option<&Tangents>> = match shape {
             Shape::Lanes { lanes, .. } => lanes.iter().map(Option::as_ref).collect(),
             _ => Vec::new(),
@@ -107,6 +108,10 @@ impl<'a> Queue<'a> {
             .enumerate()
             .filter_map(|(p, plan)| plan.map(|plan| (p, plan)))
             .flat_map(|(p, plan)| (0..plan.lanes.len()).map(move |k| (plan.lanes[k].after, p, k)))
+            .filter(|&(_, p, k)| match kept {
+                Some(kept) => kept[p][k],
+                None => true,
+            })
             .collect();
         // Stable: a lane reads only lanes of its plan written before it, after nodes before.
         pending.sort_by_key(|&(after, p, _)| (after, p));
@@ -152,10 +157,12 @@ impl Emitter<'_> {
         let Shape::Lanes { lanes, .. } = shape else {
             return;
         };
-        for plan in lanes.iter().flatten() {
-            for f in plan.factors() {
-                self.read_twice(f.index());
-            }
+        let factors = match &self.kept {
+            Some(kept) => kept_factors(lanes, kept),
+            None => lanes.iter().flatten().flat_map(Tangents::factors).collect(),
+        };
+        for f in factors {
+            self.read_twice(f.index());
         }
     }
 

@@ -61,6 +61,7 @@ mod parts;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod plan;
 mod program;
+mod rows;
 mod shared;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod sum_order;
@@ -84,6 +85,6 @@ pub use names::{
     local, CONFIGURATION_FN, CONFIGURATION_LOCAL, CONFIGURATION_STRUCT, MOTION_FN, MOTION_STRUCT,
     PARAMETERS,
 };
-pub use parts::{Body, Context, OpCount, Output, Shared};
+pub use parts::{Body, Context, OpCount, Output, Part, Shared};
 pub use program::{emit, Emission};
 pub(crate) use sums::Sums;

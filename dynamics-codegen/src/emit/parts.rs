@@ -51,6 +51,17 @@ pub struct Body {
     pub lanes: bool,
 }
 
+/// The function of one group of a tree's rows (`emit/rows.rs`), which the method's body calls:
+/// `inverse_dynamics_derivatives_rows1(p_, q_, qd_, qdd_, &mut y_)`.
+pub struct Part {
+    /// The method whose rows it stores.
+    pub method: Method,
+    /// The group's number, from 1.
+    pub index: usize,
+    /// Its statements, storing into `y_`.
+    pub tokens: TokenStream,
+}
+
 /// Where emitted code finds the robot's parameters.
 pub struct Context {
     /// The array `[T; N]` of the parameters, in the order of [`crate::trace::Equations::fields`] (`p_`).

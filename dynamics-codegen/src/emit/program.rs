@@ -5,7 +5,8 @@ use super::depends::{boundary, dependencies, shared_motion, trig_and_constants, 
 use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
-use super::parts::{Body, Context, Output, Shared};
+use super::parts::{Body, Context, Output, Part, Shared};
+use super::rows::{kept_lanes, row_groups, split};
 use crate::method::Argument;
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Equations, Shape};
@@ -19,6 +20,8 @@ pub struct Emission {
     pub motion: Option<Shared>,
     /// One body per output, in order.
     pub bodies: Vec<Body>,
+    /// The functions of groups of rows the bodies call (`emit/rows.rs`).
+    pub parts: Vec<Part>,
 }
 
 /// Emits the functions computing `outputs` from `eq`. What depends only on the parameters and
@@ -82,10 +85,11 @@ pub(super) fn emit_with(
         e.motion(&motion_boundary, &field_names)
     });
     let tree = branches(eq);
-    let body = |o: &Output, shape: &Shape| {
+    let body_of = |o: &Output, shape: &Shape, kept: Option<Vec<Vec<bool>>>| {
         let mut e = Emitter::new(eq, Some(ctx));
         // A tree's lanes: each row stored once its lane is computed.
         e.returned_in_place = tree && matches!(shape, Shape::Lanes { .. });
+        e.kept = kept;
         if !reads_q(&o) {
             return e.function(shape, o.method);
         }
@@ -103,26 +107,67 @@ pub(super) fn emit_with(
         }
         e.function(shape, o.method)
     };
-    let bodies = all
-        .iter()
-        .map(|o| match o.shape {
-            // Tangents in lanes where the build computes them there (AVX-512), else the columns
-            // one by one. The test is a constant: the compiler keeps one branch.
-            Shape::Lanes { .. } => {
-                let (mut lanes, scalar) = (body(o, &o.shape), body(o, &o.shape.scalar()));
-                let a = std::mem::take(&mut lanes.tokens);
-                let mut tokens = quote!(if T::TANGENTS_IN_LANES);
-                tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
-                Body { tokens, ..lanes }
-            }
-            _ => body(o, &o.shape),
-        })
-        .collect();
+    let (bodies, parts) = bodies(eq, ctx, all, tree, body_of);
     Emission {
         configuration,
         motion,
         bodies,
+        parts,
     }
+}
+
+/// The body of each output in `all`, by `body_of` (a function of a group of rows where it is
+/// given the lanes the group keeps), and the functions of groups of rows they call: a tree's
+/// ∂τ in functions of groups of rows where it has several (`emit/rows.rs`).
+fn bodies<'a>(
+    eq: &Equations,
+    ctx: &Context,
+    all: &[Output<'a>],
+    tree: bool,
+    body_of: impl Fn(&Output<'a>, &Shape<'a>, Option<Vec<Vec<bool>>>) -> Body,
+) -> (Vec<Body>, Vec<Part>) {
+    let body = |o: &Output<'a>, shape: &Shape<'a>| body_of(o, shape, None);
+    let mut parts = Vec::new();
+    let bodies = all
+        .iter()
+        .map(|o| match (o.shape, groups(o, tree)) {
+            (Shape::Lanes { lanes: plans, .. }, groups) if groups.len() > 1 => {
+                let first = parts.len();
+                parts.extend(groups.iter().enumerate().map(|(k, rows)| Part {
+                    method: o.method,
+                    index: k + 1,
+                    tokens: body_of(o, &o.shape, Some(kept_lanes(plans, rows))).tokens,
+                }));
+                let lanes = split(eq, ctx, o, &parts[first..]);
+                either(lanes, body(o, &o.shape.scalar()))
+            }
+            (Shape::Lanes { .. }, _) => either(body(o, &o.shape), body(o, &o.shape.scalar())),
+            _ => body(o, &o.shape),
+        })
+        .collect();
+    (bodies, parts)
+}
+
+/// The groups of rows of `output`'s plans ([`row_groups`]): a tree's ∂τ (not ∂q̈, which is
+/// solved through M, nor a method without `q`).
+fn groups(output: &Output, tree: bool) -> Vec<Vec<bool>> {
+    match output.shape {
+        Shape::Lanes {
+            lanes,
+            solved: None,
+            ..
+        } if tree && output.method.arguments().contains(&Argument::Q) => row_groups(lanes),
+        _ => Vec::new(),
+    }
+}
+
+/// Tangents in lanes where the build computes them there (AVX-512), else the columns one by
+/// one. The test is a constant: the compiler keeps one branch.
+fn either(mut lanes: Body, scalar: Body) -> Body {
+    let a = std::mem::take(&mut lanes.tokens);
+    let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+    tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
+    Body { tokens, ..lanes }
 }
 
 /// Whether `output` computes its terms in `q` itself, from the configuration's sines, cosines

@@ -112,7 +112,7 @@ impl<'a> Writer<'a> {
         if method.always_in_place() {
             self.output_by_output(stores, &state, &mut lines);
         } else {
-            let mut queue = Queue::new(&shape);
+            let mut queue = Queue::new(&shape, None);
             for &id in order.iter().filter(|id| state[id.index()]) {
                 self.lanes_due(&mut queue, Some(id), &mut lines);
                 self.bind(id, &mut lines);

@@ -5,7 +5,8 @@
 //!   a positive definite M;
 //! * against central differences of the generated `inverse_dynamics` and `forward_dynamics`,
 //!   on the same robots and on the friction arm (Coulomb smoothed on joint 2), in `f64`; `f32`
-//!   against `f64`; on a tree of nine joints (the Panda with free fingers);
+//!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ on Baxter with
+//!   free fingers (19 joints, its ∂τ in lanes one function per arm);
 //! * the friction arm's `∂τ/∂q̇` by hand: `2 C` plus the viscous slope, plus `f_c/ε sech²(q̇/ε)`
 //!   where smoothed (the plain Coulomb step is flat away from 0);
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
@@ -143,6 +144,34 @@ struct PandaFreeFingers;
 #[test]
 fn a_tree_against_central_differences() {
     check_differences(&PandaFreeFingers, "Panda with free fingers");
+}
+
+/// Baxter with its fingers free: a tree of 19 joints, two arms with two fingers each and a head,
+/// whose ∂τ in lanes (where the build has AVX-512) is fetch-bound and computed by one function
+/// per arm with its fingers, each storing its rows: every row must be there.
+#[derive(Dynamics)]
+#[dynamics(
+    urdf = "../robots/urdf/trees/baxter_free_fingers.urdf",
+    base = "base",
+    derivatives = true
+)]
+struct BaxterFreeFingers;
+
+#[test]
+fn a_dual_arm_against_central_differences() {
+    let robot = BaxterFreeFingers;
+    let mut worst = 0.0f64;
+    for seed in 0..5 {
+        let [q, qd, qdd] = state::<19>(seed);
+        let inverse = robot.inverse_dynamics_derivatives(&q, &qd, &qdd);
+        let by_q = central(q, |x| robot.inverse_dynamics(&x, &qd, &qdd));
+        let by_qd = central(qd, |x| robot.inverse_dynamics(&q, &x, &qdd));
+        worst = worst
+            .max(scaled_error(&flat(inverse.dtau_dq), &flat(by_q)))
+            .max(scaled_error(&flat(inverse.dtau_dqd), &flat(by_qd)));
+    }
+    println!("Baxter with free fingers: ∂τ against central differences {worst:.1e}");
+    assert!(worst < 1e-5, "{worst:e}");
 }
 
 #[test]

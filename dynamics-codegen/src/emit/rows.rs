@@ -1,0 +1,237 @@
+//! A tree's ∂τ in one function per group of rows: rows whose tangents share no direction (a
+//! dual arm's two arms, each with its fingers: branches with no joint in common) are computed
+//! by functions of their own, `inverse_dynamics_derivatives_rows1`, `…_rows2`, each storing
+//! its rows `∂τ_i/∂q` and `∂τ_i/∂q̇` into the caller's result, called one after the other.
+//!
+//! Written as one function, Baxter's ∂τ is 61 kB of straight-line code, fetch-bound (twice the
+//! 32 kB instruction cache), and no layout of its lanes made it faster (docs/performance.md).
+//! Apart, each function is the code of one branch, about half, and is compiled on its own:
+//! fewer values live at once, fewer spills. Each reads the configuration and the motion
+//! itself (inlined: the compiler keeps of them what it reads, its branch's sines and cosines)
+//! and computes the scalars and lanes its rows need by the same expressions as the whole
+//! function: the same bits. Only where a plan is fetch-bound ([`FETCH_BOUND_OPERATIONS`] in
+//! blocks of eight): a smaller tree's and a serial robot's ∂τ are one function, as before.
+
+use super::count::count;
+use super::emitter::Emitter;
+use super::expr::with_body;
+use super::impls::{call_arguments, signature};
+use super::items::Generated;
+use super::lanes::lane_operations;
+use super::names::{local, OUTPUT, PARAMETERS};
+use super::parts::{Body, Context, OpCount, Output, Part};
+use crate::symbolic::tangent::FETCH_BOUND_OPERATIONS;
+use crate::symbolic::{NodeId, Of, Tangents, BLOCK};
+use crate::trace::{Equations, Shape};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+
+/// The groups of rows of `plans` (one mask of rows each, in the order of their first row)
+/// whose tangents share no direction, by `q` or by `q̇`, where a plan is fetch-bound; none
+/// otherwise. A row whose tangents are zero belongs to none.
+pub(super) fn row_groups(plans: &[Option<Tangents>]) -> Vec<Vec<bool>> {
+    let plans: Vec<&Tangents> = plans.iter().flatten().collect();
+    let fetch_bound = plans
+        .iter()
+        .any(|p| p.block_operations(BLOCK) > FETCH_BOUND_OPERATIONS);
+    let Some(first) = plans.first() else {
+        return Vec::new();
+    };
+    if !fetch_bound {
+        return Vec::new();
+    }
+    let (directions, rows) = (first.directions, first.outputs.len());
+    let mut sets = Sets::new(directions);
+    // Per plan, per lane, one direction it can be nonzero in, its others joined to it.
+    let seeds: Vec<Vec<Option<usize>>> = plans.iter().map(|p| sets.join_lanes(p)).collect();
+    // A row's tangents by q and by q̇ go together.
+    let row_seed = |sets: &mut Sets, i: usize| {
+        let mut seed = None;
+        for (plan, lanes) in plans.iter().zip(&seeds) {
+            if let Some(d) = plan.outputs[i].and_then(|k| lanes[k]) {
+                seed = Some(seed.map_or(d, |s| sets.join(s, d)));
+            }
+        }
+        seed
+    };
+    let seeds: Vec<Option<usize>> = (0..rows).map(|i| row_seed(&mut sets, i)).collect();
+    let mut groups: Vec<(usize, Vec<bool>)> = Vec::new();
+    for (i, seed) in seeds.iter().enumerate() {
+        let Some(d) = *seed else { continue };
+        let root = sets.root(d);
+        match groups.iter_mut().find(|(r, _)| *r == root) {
+            Some((_, rows)) => rows[i] = true,
+            None => {
+                let mut mask = vec![false; rows];
+                mask[i] = true;
+                groups.push((root, mask));
+            }
+        }
+    }
+    groups.into_iter().map(|(_, rows)| rows).collect()
+}
+
+/// Per plan, the lanes the rows `rows` read: their own and, back to front, every lane those
+/// read.
+pub(super) fn kept_lanes(plans: &[Option<Tangents>], rows: &[bool]) -> Vec<Vec<bool>> {
+    plans
+        .iter()
+        .map(|plan| {
+            let Some(plan) = plan else {
+                return Vec::new();
+            };
+            let mut kept = vec![false; plan.lanes.len()];
+            let outputs = plan.outputs.iter().zip(rows);
+            for (k, _) in outputs.filter(|(_, &row)| row) {
+                if let Some(k) = *k {
+                    kept[k] = true;
+                }
+            }
+            for k in (0..plan.lanes.len()).rev() {
+                if !kept[k] {
+                    continue;
+                }
+                for t in &plan.lanes[k].terms {
+                    if let Of::Lane(l) = t.of {
+                        kept[l] = true;
+                    }
+                }
+            }
+            kept
+        })
+        .collect()
+}
+
+/// The scalar nodes the lanes `kept` read as factors: what a group's function computes.
+pub(super) fn kept_factors(plans: &[Option<Tangents>], kept: &[Vec<bool>]) -> Vec<NodeId> {
+    let mut all: Vec<NodeId> = plans
+        .iter()
+        .zip(kept)
+        .filter_map(|(plan, kept)| plan.as_ref().map(|plan| (plan, kept)))
+        .flat_map(|(plan, kept)| plan.lanes.iter().zip(kept).filter(|(_, &k)| k))
+        .flat_map(|(lane, _)| lane.terms.iter().flat_map(|t| t.factors.iter().copied()))
+        .collect();
+    all.sort_unstable();
+    all.dedup();
+    all
+}
+
+/// The lanes' branch of `output`'s body: its result's zeros, each group's function called on
+/// them (`parts`), the result returned.
+pub(super) fn split(eq: &Equations, ctx: &Context, output: &Output, parts: &[Part]) -> Body {
+    let y = local(OUTPUT);
+    let (p, arguments) = (&ctx.parameters, call_arguments(output.method));
+    let (n, count) = (
+        Literal::usize_unsuffixed(eq.dof),
+        Literal::usize_unsuffixed(match output.shape {
+            Shape::Lanes { stack, .. } => stack.len(),
+            _ => 0,
+        }),
+    );
+    let calls = parts.iter().map(|part| {
+        let name = part_name(part);
+        quote!(#name(#p, #arguments, &mut #y);)
+    });
+    Body {
+        tokens: quote! {
+            let mut #y = [[[T::ZERO; #n]; #n]; #count];
+            #(#calls)*
+            #y
+        },
+        ops: split_ops(eq, ctx, &output.shape),
+        zeros: None,
+        lanes: true,
+    }
+}
+
+/// The operations of the groups' functions together: those of the whole (the groups share
+/// nothing but the configuration's leaves), where the context asks.
+fn split_ops(eq: &Equations, ctx: &Context, shape: &Shape) -> OpCount {
+    if !ctx.counted {
+        return OpCount::default();
+    }
+    OpCount {
+        lanes: lane_operations(shape),
+        ..count(eq, &shape.lane_outputs())
+    }
+}
+
+/// The name of group `index`'s function (from 1): `inverse_dynamics_derivatives_rows1`.
+fn part_name(part: &Part) -> Ident {
+    let name = format!("{}_rows{}", part.method.name(), part.index);
+    Ident::new(&name, Span::call_site())
+}
+
+impl Emitter<'_> {
+    /// The nodes a function computing `shape` in lanes reads ([`Shape::lane_outputs`]): of a
+    /// group of rows, the factors of the lanes it keeps.
+    pub(super) fn lane_outputs(&self, shape: &Shape) -> Vec<NodeId> {
+        match (&self.kept, shape) {
+            (Some(kept), Shape::Lanes { lanes, .. }) => kept_factors(lanes, kept),
+            _ => shape.lane_outputs(),
+        }
+    }
+}
+
+impl Generated {
+    /// Group `part`'s function, storing its rows into the caller's `y_`: `#[inline(never)]`,
+    /// so that each is compiled, and fetched, on its own.
+    pub(super) fn part_function(&self, part: &Part, krate: &TokenStream) -> TokenStream {
+        let name = part_name(part);
+        let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
+        let scalar = Ident::new("T", Span::call_site());
+        let (args, ret) = signature(part.method, &self.counts(), &scalar, krate, true);
+        let head = quote! {
+            #[inline(never)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+        };
+        with_body(head, part.tokens.clone())
+    }
+}
+
+/// Disjoint sets of directions (union-find).
+struct Sets {
+    parent: Vec<usize>,
+}
+
+impl Sets {
+    fn new(n: usize) -> Sets {
+        Sets {
+            parent: (0..n).collect(),
+        }
+    }
+
+    fn root(&mut self, mut d: usize) -> usize {
+        while self.parent[d] != d {
+            self.parent[d] = self.parent[self.parent[d]];
+            d = self.parent[d];
+        }
+        d
+    }
+
+    /// Joins the sets of `a` and `b`; returns the root.
+    fn join(&mut self, a: usize, b: usize) -> usize {
+        let (a, b) = (self.root(a), self.root(b));
+        self.parent[b] = a;
+        a
+    }
+
+    /// Joins the directions each lane of `plan` can be nonzero in; per lane, one of them.
+    fn join_lanes(&mut self, plan: &Tangents) -> Vec<Option<usize>> {
+        let mut seeds: Vec<Option<usize>> = Vec::with_capacity(plan.lanes.len());
+        for lane in &plan.lanes {
+            let mut seed = None;
+            for t in &lane.terms {
+                let d = match t.of {
+                    Of::Lane(l) => seeds[l],
+                    Of::Unit(j) => Some(usize::from(j)),
+                };
+                if let Some(d) = d {
+                    seed = Some(seed.map_or(d, |s| self.join(s, d)));
+                }
+            }
+            seeds.push(seed);
+        }
+        seeds
+    }
+}
