@@ -1,7 +1,8 @@
 //! The free flyer of `base = floating`: its body read from the URDF the robot came from, its
 //! gravity from `gravity = [..]` (in the world frame) or `[0, 0, −9.81]`; and every key or
-//! family this first slice of the floating base does not support yet refused on its token,
-//! so that no robot gets methods that would be wrong on a flying base.
+//! family the floating base does not support yet refused on its token (`derivatives = true`
+//! is, as `FloatingDynamicsDerivatives`), so that no robot gets methods that would be wrong
+//! on a flying base.
 
 use super::attrs::Attrs;
 use super::errors::Errors;
@@ -30,7 +31,11 @@ pub(super) fn free_flyer(
     if let Some(at) = attrs.tip.as_ref().map(syn::LitStr::span) {
         errors.push(at, "`tip` is not supported on a floating base: name the frames with `tips = [\"FL_FOOT\", ..]` (`FloatingKinematics`)");
     }
-    let asked = attrs.families.iter().filter(|(_, &asked)| asked);
+    // A family with a floating base's twin (`derivatives`) is that family's.
+    let asked = attrs
+        .families
+        .iter()
+        .filter(|(family, &asked)| asked && family.on_floating_base().is_none());
     for (family, _) in asked {
         errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)", family.name()));
     }
