@@ -9,6 +9,7 @@ mod batch;
 mod derivatives;
 mod energy_drift;
 mod floating_base;
+mod floating_derivatives;
 mod floating_forward;
 mod floating_kinematics;
 mod forward_dynamics;
