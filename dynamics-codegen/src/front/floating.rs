@@ -37,10 +37,10 @@ pub(super) fn free_flyer(
         .iter()
         .filter(|(family, &asked)| asked && family.on_floating_base().is_none());
     for (family, _) in asked {
-        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)", family.name()));
+        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`", family.name()));
     }
     if attrs.simplify.is_some() {
-        errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)");
+        errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`");
     }
     // Without a robot, the URDF's own errors are told already.
     let robot = robot?;
