@@ -57,12 +57,17 @@ fn a_floating_base_asks_for_its_derivatives() {
     );
     assert!(!out.contains(":: DynamicsDerivatives <"), "{out}");
     let (beside, block) = out.split_once("const _ : () =").expect("the block");
-    assert!(beside.contains("mod __floating_derivatives_of_Solo"), "{out}");
+    assert!(
+        beside.contains("mod __floating_derivatives_of_Solo"),
+        "{out}"
+    );
     assert!(!block.contains("mod __floating_derivatives"), "{out}");
     // The floating family's module and the kinematics' as without the derivatives.
     let floating = |x: &str| {
         let start = x.find("mod __floating ").expect("the floating module");
-        let end = x.find("mod __floating_forward").expect("the forward module");
+        let end = x
+            .find("mod __floating_forward")
+            .expect("the forward module");
         x[start..end].to_owned()
     };
     assert_eq!(floating(&out), floating(&plain));

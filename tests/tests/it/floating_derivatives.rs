@@ -116,15 +116,19 @@ fn against_pinocchio<R: FloatingDynamicsDerivatives<Q, V>, const Q: usize, const
 
 #[test]
 fn solo12_against_pinocchio() {
-    let [inverse, forward] = against_pinocchio(&Solo12, "solo12", TOLERANCE);
-    eprintln!("Solo 12: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    with_room(|| {
+        let [inverse, forward] = against_pinocchio(&Solo12, "solo12", TOLERANCE);
+        eprintln!("Solo 12: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    });
 }
 
 /// ANYmal B: its legs in the file's order (the data permuted from Pinocchio's by name).
 #[test]
 fn anymal_b_against_pinocchio() {
-    let [inverse, forward] = against_pinocchio(&AnymalB, "anymal_b", TOLERANCE);
-    eprintln!("ANYmal B: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    with_room(|| {
+        let [inverse, forward] = against_pinocchio(&AnymalB, "anymal_b", TOLERANCE);
+        eprintln!("ANYmal B: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    });
 }
 
 /// The G1, 35 coordinates. Its M's condition number reaches 3.5e5 at these states (light
@@ -133,11 +137,15 @@ fn anymal_b_against_pinocchio() {
 /// dynamics and its derivatives to 1e-10, `∂τ` to 1e-12.
 #[test]
 fn g1_against_pinocchio() {
-    let [inverse, forward] = against_pinocchio(&G1, "g1_29dof", 1e-10);
-    eprintln!("G1: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    with_room(|| {
+        let [inverse, forward] = against_pinocchio(&G1, "g1_29dof", 1e-10);
+        eprintln!("G1: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}");
+    });
 }
 
-/// Runs `f` on a thread with room for the derivatives on lanes of eight `f64` unoptimized.
+/// Runs `f` on a thread with room for the derivatives unoptimized: on tangents in lanes
+/// (AVX-512), one state's take more than a test thread's 2 MB of stack, as the lanes of eight
+/// `f64` do.
 fn with_room(f: impl FnOnce() + Send) {
     std::thread::scope(|s| {
         std::thread::Builder::new()
