@@ -13,10 +13,86 @@
 // has the robot (bench/ffi: `tau`, `M`, `h`, `g`, reading nq values from q and nv from v and a),
 // each generated function against Pinocchio's doubles on every sample (TOLERANCE); then times the
 // four, Pinocchio and the generated code in turn: `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`
-// (Pinocchio's column alone without the library). No C header or CasADi peer has them yet.
+// (Pinocchio's column alone without the library); then the derivatives, `dtau` and `dqdd`
+// (run_floating_derivatives). No C header or CasADi peer has them yet.
 
 // The largest departure of a sample's quaternion from unit length that is taken as unit.
 static const double UNIT_QUATERNION = 1e-12;
+
+// The first derivatives, `dtau` and `dqdd` (bench/ffi's FloatingDynamicsDerivatives, where the
+// generated library has them): Pinocchio's computeRNEADerivatives at (q, v, a) and
+// computeABADerivatives at (q, v, tau), tau the sample's rnea(q, v, a) (as bench.cpp's fixed
+// robots take it), its derivatives by q along the tangent (integrate) as the generated ones; the
+// generated blocks row-major, dtau = [dtau_dq; dtau_dv], dqdd = [ddq_dq; ddq_dv; Minv mirrored],
+// checked against Pinocchio's on every sample, then timed in turn as run_floating times the others.
+static void run_floating_derivatives(
+  const std::string & robot, const Model & model, Data & data, const json::Value & samples,
+  const std::vector<Eigen::VectorXd> & qs, const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & as, const Generated * generated, double & checksum)
+{
+  if (generated && !generated->lookup(robot.c_str(), "dtau"))
+    return;
+  const std::size_t ns = qs.size(), nv = static_cast<std::size_t>(model.nv);
+  std::vector<Eigen::VectorXd> taus;
+  for (std::size_t s = 0; s < ns; ++s)
+    taus.push_back(vecn(samples[s]["tau"]));
+  std::vector<double> out(3 * nv * nv + 1);
+  auto row_major = [](std::initializer_list<Eigen::MatrixXd> blocks) {
+    std::vector<double> values;
+    for (const Eigen::MatrixXd & m : blocks)
+      for (Eigen::Index i = 0; i < m.rows(); ++i)
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+          values.push_back(m(i, j));
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size())));
+  };
+  auto time = [&](const char * function, const std::vector<Eigen::VectorXd> & thirds, auto && pin_output, auto && pin_timed) {
+    if (!generated)
+    {
+      std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin_timed, checksum));
+      std::fflush(stdout);
+      return;
+    }
+    const GeneratedFunction f = generated->get(robot, function);
+    for (std::size_t s = 0; s < ns; ++s)
+    {
+      const Eigen::VectorXd want = pin_output(s);
+      std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+      f(qs[s].data(), vs[s].data(), thirds[s].data(), out.data());
+      const auto size = static_cast<std::size_t>(want.size());
+      if (!std::isnan(out[size]))
+        throw std::runtime_error(robot + ": the generated " + function + " writes past its output");
+      const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXd>(out.data(), want.size());
+      check(robot, std::string(function) + " (generated)", got, want, s);
+    }
+    auto gen = [&](std::size_t k) {
+      f(qs[k].data(), vs[k].data(), thirds[k].data(), out.data());
+      return out[0];
+    };
+    const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin_timed, gen, checksum);
+    std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
+    std::fflush(stdout);
+  };
+  time(
+    "dtau", as,
+    [&](std::size_t k) {
+      pinocchio::computeRNEADerivatives(model, data, qs[k], vs[k], as[k]);
+      return row_major({data.dtau_dq, data.dtau_dv});
+    },
+    [&](std::size_t k) {
+      pinocchio::computeRNEADerivatives(model, data, qs[k], vs[k], as[k]);
+      return data.dtau_dq(0, 0);
+    });
+  time(
+    "dqdd", taus,
+    [&](std::size_t k) {
+      pinocchio::computeABADerivatives(model, data, qs[k], vs[k], taus[k]);
+      return row_major({data.ddq_dq, data.ddq_dv, symmetric(data.Minv)});
+    },
+    [&](std::size_t k) {
+      pinocchio::computeABADerivatives(model, data, qs[k], vs[k], taus[k]);
+      return data.ddq_dq(0, 0);
+    });
+}
 
 static void run_floating(const std::string & robot, const json::Value & file, const Generated * generated, double & checksum)
 {
@@ -96,4 +172,5 @@ static void run_floating(const std::string & robot, const json::Value & file, co
     "g",
     [&](std::size_t k) { return Eigen::VectorXd(pinocchio::computeGeneralizedGravity(model, data, qs[k])); },
     [&](std::size_t k) { return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0]; });
+  run_floating_derivatives(robot, model, data, samples, qs, vs, as, with_generated ? generated : nullptr, checksum);
 }

@@ -1,23 +1,36 @@
 //! The robots on a free-flying base of `bench/run`'s floating rows (issue 43), derived from their
-//! URDFs with `base = floating` (`FloatingDynamics<NQ, NV>`: M, h, τ, g), and their reference
-//! samples (`tests/data/floating/`, Pinocchio 4.1's free flyer, joints in the generator's order).
+//! URDFs with `base = floating` (`FloatingDynamics<NQ, NV>`: M, h, τ, g) and `derivatives = true`
+//! (`FloatingDynamicsDerivatives`), and their reference samples (`tests/data/floating/`,
+//! Pinocchio 4.1's free flyer, joints in the generator's order).
 
 use dynamics_runtime::Dynamics;
 
 /// Solo 12: four legs of three joints on a flying trunk. NQ 19, NV 18.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/solo12.urdf",
+    base = floating,
+    derivatives = true
+)]
 pub struct Solo12;
 
 /// ANYmal B: four legs of three joints, the trunk carrying ten fixed links. NQ 19, NV 18.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/anymal_b.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/anymal_b.urdf",
+    base = floating,
+    derivatives = true
+)]
 pub struct AnymalB;
 
 /// The Unitree G1 humanoid without hands: two legs of six joints, a waist of three, two arms of
 /// seven. NQ 36, NV 35.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/g1_29dof.urdf",
+    base = floating,
+    derivatives = true
+)]
 pub struct G1;
 
 /// The robots on a free-flying base, by their data files' names.
@@ -71,6 +84,50 @@ pub fn floating_samples<const Q: usize, const V: usize>(robot: &str) -> Vec<Floa
             mass: rows(&s["M"]),
             bias: super::vector(&s["h"], "h"),
             gravity: super::vector(&s["g"], "g"),
+        })
+        .collect()
+}
+
+/// Pinocchio's first derivatives at the state of the [`FloatingSample`] of the same index
+/// (`tests/data/floating/<robot>_derivatives.json`), each matrix row-major.
+#[derive(Clone, Debug)]
+pub struct FloatingDerivativeSample<const V: usize> {
+    /// The generalized force `computeABADerivatives` was given.
+    pub tau: [f64; V],
+    /// `computeRNEADerivatives(q, v, a)`: `dtau_dq` (along the tangent), then `dtau_dv`.
+    pub inverse: Vec<f64>,
+    /// `computeABADerivatives(q, v, tau)`: `ddq_dq`, `ddq_dv`, then `ddq_dtau` (M⁻¹).
+    pub forward: Vec<f64>,
+}
+
+/// The first derivatives of `robot` (one of [`FLOATING`]) at its samples' states.
+///
+/// # Panics
+/// If the file is missing or malformed, or its matrices are not `V × V`.
+#[must_use]
+pub fn floating_derivative_samples<const V: usize>(
+    robot: &str,
+) -> Vec<FloatingDerivativeSample<V>> {
+    let text = super::read(&format!("floating/{robot}_derivatives.json"));
+    let data: serde_json::Value =
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("derivatives of {robot}: {e}"));
+    let samples = data["samples"]
+        .as_array()
+        .unwrap_or_else(|| panic!("derivatives of {robot} have no samples"));
+    let rows = |s: &serde_json::Value, keys: &[&str]| -> Vec<f64> {
+        let matrices = keys
+            .iter()
+            .map(|k| s[*k].as_array().expect("a matrix's rows"));
+        matrices
+            .flat_map(|rows| rows.iter().flat_map(|r| super::vector::<V>(r, "a row")))
+            .collect()
+    };
+    samples
+        .iter()
+        .map(|s| FloatingDerivativeSample {
+            tau: super::vector(&s["tau_in"], "tau_in"),
+            inverse: rows(s, &["dtau_dq", "dtau_dv"]),
+            forward: rows(s, &["ddq_dq", "ddq_dv", "ddq_dtau"]),
         })
         .collect()
 }

@@ -262,7 +262,10 @@ pub use dynamics_reference::scaled_error;
 
 mod floating;
 mod trees;
-pub use floating::{floating_samples, AnymalB, FloatingSample, Solo12, FLOATING, G1};
+pub use floating::{
+    floating_derivative_samples, floating_samples, AnymalB, FloatingDerivativeSample,
+    FloatingSample, Solo12, FLOATING, G1,
+};
 pub use trees::{AllegroHand, BaxterFreeFingers};
 
 /// The robots with simplified models (`simplify(...)` in their derives).

@@ -157,6 +157,54 @@ macro_rules! for_each_floating_method {
                     }
                 }
             }
+            /// The first derivatives of a floating base's dynamics (Pinocchio's
+            /// `computeRNEADerivatives` and `computeABADerivatives` on the free flyer), for
+            /// model-predictive control: implemented by `#[derive(Dynamics)]` for a robot with
+            /// `base = floating` and `derivatives = true`.
+            ///
+            /// A derivative by `q` is along the tangent, `N = n + 6` columns: column j is
+            /// `d/dε f(integrate(q, ε e_j))` at 0, the base moved in its own frame (its
+            /// position, then its rotation `δω`), then the joints. Only gravity reads the base
+            /// pose, as `g_b = Rᵀ g`, which turns as `g_b × δω`: the position's three columns are
+            /// zero and the rotation's `−M[:, 0..3] [g_b]×`. By `v`, `a` and `tau`, the vectors'
+            /// own entries. The quaternion is taken to be unit (its rotation a rotation).
+            trait FloatingDynamicsDerivatives<Q, N>: FloatingDynamics<Q, N>, nalgebra FloatingDynamicsDerivativesNalgebra, batch FloatingDynamicsDerivativesBatch {
+                items {}
+                /// The derivatives of a floating base's inverse and forward dynamics.
+                family FloatingDerivatives {
+                    name: derivatives,
+                    module: "__floating_derivatives",
+                    opt_in: true,
+                    adjective: "floating derivatives' ",
+                }
+                methods {
+                    /// `∂τ/∂q` (along the tangent, `N × N`) and `∂τ/∂v` at `(q, v, a)`, row i the
+                    /// derivatives of `τ_i` (Pinocchio's `computeRNEADerivatives`; `∂τ/∂a` is
+                    /// `mass_matrix(q)`). The fields are named as a fixed base's: `dtau_dq`,
+                    /// `dtau_dqd` (by `v`).
+                    fn inverse_dynamics_derivatives(q, v, a) -> inverse_derivatives, nalgebra inverse_dynamics_derivatives_na, batch inverse_dynamics_derivatives_batch {
+                        variant: FloatingInverseDynamicsDerivatives,
+                        equation: None,
+                        prefix: "dtau",
+                        summary: "∂τ/∂q (along the tangent) and ∂τ/∂v of a floating base at (q, v, a).",
+                        element: "d tau{i} / d {x}{j}",
+                    }
+                    /// Forward dynamics and its derivatives at `(q, v, tau)` (Pinocchio's
+                    /// `computeABADerivatives`): `a`, `∂a/∂q` (along the tangent), `∂a/∂v` and
+                    /// `∂a/∂tau = M⁻¹`, the first two `−M⁻¹ ∂τ/∂x` at that `a`, solved with the
+                    /// LDLᵀ of `M`; the base rotation's columns are exact, `[g_b]×` in the base's
+                    /// linear rows and zero elsewhere. `Err(NotPositiveDefinite)` where a pivot is
+                    /// not positive.
+                    fn forward_dynamics_derivatives(q, v, tau) -> forward_derivatives, nalgebra forward_dynamics_derivatives_na, batch forward_dynamics_derivatives_batch {
+                        variant: FloatingForwardDynamicsDerivatives,
+                        equation: None,
+                        prefix: "dacc",
+                        summary: "a, ∂a/∂q (along the tangent), ∂a/∂v and ∂a/∂τ = M⁻¹ of a floating base at (q, v, τ).",
+                        element: "d acc{i} / d {x}{j}",
+                        compiled_apart: true,
+                    }
+                }
+            }
         }
     };
 }

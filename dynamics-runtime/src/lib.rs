@@ -95,12 +95,12 @@ pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DerivativesBatchScalar, DynamicsBaseParametersBatch, DynamicsBatch,
     DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch,
-    FloatingDynamicsBatch, TipKinematicsBatch,
+    FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
-    FloatingDynamics, TipKinematics,
+    FloatingDynamics, FloatingDynamicsDerivatives, TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::floating_contacts::{ContactDynamics, ContactError, FloatingContacts};

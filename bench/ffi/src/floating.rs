@@ -1,14 +1,19 @@
 //! The entries of the robots on a free-flying base ([`floating`]): `tau`, `M`, `h` and `g` of
 //! `FloatingDynamics<Q, V>`, each reading `Q` values from `q` and `V` from the other inputs and
-//! writing `V` values (`V × V` for `M`, row-major); `dynamics_bench_dof` gives `V`.
+//! writing `V` values (`V × V` for `M`, row-major); `dynamics_bench_dof` gives `V`. And the
+//! first derivatives of `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the
+//! tangent, then `∂τ/∂v`: 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M
+//! is not positive definite; its third input `tau`).
 
 use super::{input, output, output_matrix, Function, Robot};
-use dynamics_runtime::FloatingDynamics;
+use dynamics_runtime::FloatingDynamicsDerivatives;
 
 /// The timed functions of one robot type on a free-flying base, as C functions.
 struct Floating<R, const Q: usize, const V: usize>(core::marker::PhantomData<R>);
 
-impl<R: FloatingDynamics<Q, V> + Default, const Q: usize, const V: usize> Floating<R, Q, V> {
+impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: usize>
+    Floating<R, Q, V>
+{
     unsafe extern "C" fn tau(q: *const f64, v: *const f64, a: *const f64, out: *mut f64) {
         // SAFETY: the contract of `Function`, with `Q` values at `q`.
         unsafe {
@@ -40,6 +45,50 @@ impl<R: FloatingDynamics<Q, V> + Default, const Q: usize, const V: usize> Floati
             b"M" => Self::mass,
             b"h" => Self::bias,
             b"g" => Self::gravity,
+            _ => return Self::derivatives(function),
+        })
+    }
+}
+
+// The first derivatives.
+impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: usize>
+    Floating<R, Q, V>
+{
+    unsafe extern "C" fn inverse_derivatives(
+        q: *const f64,
+        v: *const f64,
+        a: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (room for 2 V × V values at `out`).
+        unsafe {
+            let d = R::default().inverse_dynamics_derivatives(input::<Q>(q), input(v), input(a));
+            output_matrix(out, d.dtau_dq);
+            output_matrix(out.add(V * V), d.dtau_dqd);
+        }
+    }
+
+    unsafe extern "C" fn forward_derivatives(
+        q: *const f64,
+        v: *const f64,
+        tau: *const f64,
+        out: *mut f64,
+    ) {
+        // SAFETY: the contract of `Function` (V forces at `tau`, room for 3 V × V values).
+        unsafe {
+            let d = R::default().forward_dynamics_derivatives(input::<Q>(q), input(v), input(tau));
+            let nan = [[f64::NAN; V]; V];
+            let blocks = d.map_or([nan; 3], |d| [d.dqdd_dq, d.dqdd_dqd, d.dqdd_dtau]);
+            for (k, block) in blocks.into_iter().enumerate() {
+                output_matrix(out.add(k * V * V), block);
+            }
+        }
+    }
+
+    fn derivatives(function: &[u8]) -> Option<Function> {
+        Some(match function {
+            b"dtau" => Self::inverse_derivatives,
+            b"dqdd" => Self::forward_derivatives,
             _ => return None,
         })
     }
@@ -47,7 +96,11 @@ impl<R: FloatingDynamics<Q, V> + Default, const Q: usize, const V: usize> Floati
 
 /// The entry of the robot `R` on a free-flying base: `V` generalized velocities, no base
 /// parameters.
-pub(super) fn floating<R: FloatingDynamics<Q, V> + Default, const Q: usize, const V: usize>(
+pub(super) fn floating<
+    R: FloatingDynamicsDerivatives<Q, V> + Default,
+    const Q: usize,
+    const V: usize,
+>(
     _: &R,
 ) -> Robot {
     (V, 0, Floating::<R, Q, V>::get)
@@ -56,8 +109,10 @@ pub(super) fn floating<R: FloatingDynamics<Q, V> + Default, const Q: usize, cons
 #[cfg(test)]
 mod tests {
     use crate::{dynamics_bench_dof, dynamics_bench_function, Function};
-    use dynamics_bench::{floating_samples, scaled_error, AnymalB, Solo12, G1};
-    use dynamics_runtime::FloatingDynamics;
+    use dynamics_bench::{
+        floating_derivative_samples, floating_samples, scaled_error, AnymalB, Solo12, G1,
+    };
+    use dynamics_runtime::{FloatingDynamics, FloatingDynamicsDerivatives};
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -106,17 +161,7 @@ mod tests {
                 assert!(error < 1e-9, "{robot} {function}: {error:e} from Pinocchio");
             }
         }
-        for function in [
-            "C",
-            "fk",
-            "J",
-            "fd",
-            "Minv",
-            "dtau",
-            "dqdd",
-            "Y",
-            "tau_batch",
-        ] {
+        for function in ["C", "fk", "J", "fd", "Minv", "Y", "tau_batch"] {
             assert!(lookup(robot, function).is_none(), "{robot} {function}");
         }
     }
@@ -126,5 +171,58 @@ mod tests {
         check_floating(&Solo12, "solo12");
         check_floating(&AnymalB, "anymal_b");
         check_floating(&G1, "g1_29dof");
+    }
+
+    /// `dtau` and `dqdd` through the C ABI: the trait methods' bits, nothing written past their
+    /// output, and Pinocchio's derivatives (the data) to 1e-9.
+    fn check_floating_derivatives<R, const Q: usize, const V: usize>(r: &R, robot: &str)
+    where
+        R: FloatingDynamicsDerivatives<Q, V>,
+    {
+        let states = floating_samples::<Q, V>(robot);
+        for (s, d) in states.iter().zip(floating_derivative_samples::<V>(robot)) {
+            let inverse = r.inverse_dynamics_derivatives(&s.q, &s.v, &s.a);
+            let forward = r
+                .forward_dynamics_derivatives(&s.q, &s.v, &d.tau)
+                .expect("M is positive definite");
+            let flat = |ms: &[[[f64; V]; V]]| -> Vec<f64> {
+                ms.iter().flatten().flatten().copied().collect()
+            };
+            let checks = [
+                (
+                    "dtau",
+                    s.a,
+                    flat(&[inverse.dtau_dq, inverse.dtau_dqd]),
+                    &d.inverse,
+                ),
+                (
+                    "dqdd",
+                    d.tau,
+                    flat(&[forward.dqdd_dq, forward.dqdd_dqd, forward.dqdd_dtau]),
+                    &d.forward,
+                ),
+            ];
+            for (function, third, want, pinocchio) in checks {
+                let f = lookup(robot, function).expect("a floating robot's derivatives");
+                let mut got = vec![f64::NAN; 3 * V * V + 1];
+                // SAFETY: Q values at q, V at v and the third, room for 3 V × V and one more.
+                unsafe { f(s.q.as_ptr(), s.v.as_ptr(), third.as_ptr(), got.as_mut_ptr()) };
+                let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+                assert_eq!(bits(&got[..want.len()]), bits(&want), "{robot} {function}");
+                assert!(
+                    got[want.len()..].iter().all(|x| x.is_nan()),
+                    "{robot} {function}"
+                );
+                let error = scaled_error(&want, pinocchio);
+                assert!(error < 1e-9, "{robot} {function}: {error:e} from Pinocchio");
+            }
+        }
+    }
+
+    #[test]
+    fn the_floating_derivatives_through_the_c_abi_equal_the_trait_methods_and_pinocchio() {
+        check_floating_derivatives(&Solo12, "solo12");
+        check_floating_derivatives(&AnymalB, "anymal_b");
+        check_floating_derivatives(&G1, "g1_29dof");
     }
 }

@@ -3,10 +3,11 @@
 //! coordinates `[y, z, qx, qy, qz, qw, q_1 …]` of [`crate::trace::derive_floating`], `n + 6`
 //! entries, as the velocity), and the `FloatingDynamics<NQ, NV>` impl, whose methods take the
 //! configuration's `n + 7` entries and pass on all but the first (the base's x, which nothing
-//! reads).
+//! reads). The modules of a family with a method compiled apart (the derivatives') go beside
+//! the struct, as a fixed base's ([`Items::beside`]).
 
 use super::impls::{forward, signature, Counts};
-use super::items::{generate_uncounted, module_name, Generated, PARAMETERS_FN};
+use super::items::{generate_uncounted, module_name, Generated, Items, PARAMETERS_FN};
 use super::names::{local, OUTPUT};
 use crate::method::{Argument, Method};
 use crate::trace::Equations;
@@ -14,26 +15,32 @@ use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
 /// The items of the floating-base robot `ident` whose equations are `eq`; `fields` reads its
-/// struct fields, in the order of [`Equations::fields`]. They go in a `const _: () = { … };`
-/// block.
+/// struct fields, in the order of [`Equations::fields`]. Those of [`Items::within`] go in a
+/// `const _: () = { … };` block, those of [`Items::beside`] beside the struct.
 #[must_use]
 pub fn floating_items(
     eq: &Equations,
     fields: &[TokenStream],
     krate: &TokenStream,
     input: &syn::DeriveInput,
-) -> TokenStream {
+) -> Items {
     let generated = generate_uncounted(eq, fields.to_vec());
     let ident = &input.ident;
-    let modules = generated
+    let (beside, within): (Vec<_>, Vec<_>) = generated
         .modules
         .iter()
-        .map(|module| generated.module(module, krate, ident));
-    let modules: Vec<TokenStream> = modules.collect();
+        .partition(|module| module.family.is_beside_the_struct());
+    let module = |m: &&super::Module| generated.module(m, krate, ident);
+    let (beside, modules) = (beside.iter().map(module), within.iter().map(module));
+    let (beside, modules): (Vec<TokenStream>, Vec<TokenStream>) =
+        (beside.collect(), modules.collect());
     let impls = trait_impl(&generated, krate, input);
-    quote! {
-        #(#modules)*
-        #impls
+    Items {
+        beside: quote!(#(#beside)*),
+        within: quote! {
+            #(#modules)*
+            #impls
+        },
     }
 }
 
@@ -59,19 +66,14 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
             let module = module_name(method.family(), ident);
             let name = Ident::new(code.name, Span::call_site());
             let (_, ret) = signature(method, &counts, &t, krate, false);
-            let (mut args, mut pass) = (Vec::new(), Vec::new());
-            for (&a, &public) in method.arguments().iter().zip(method.argument_names()) {
-                let public = Ident::new(public, Span::call_site());
-                if a == Argument::Q {
-                    args.push(quote!(#public: &[#t; #nq]));
-                    pass.push(quote!(&::core::array::from_fn(|i| #public[i + 1])));
-                } else {
-                    args.push(quote!(#public: &[#t; #nv]));
-                    pass.push(quote!(#public));
-                }
-            }
+            let (args, pass) = arguments(method, &t, nv);
             let call = quote!(#module::#name(&self.#parameters(), #(#pass),*));
-            let call = forward(method, call, &counts, &t, krate);
+            // A function compiled apart returns the trait's type itself.
+            let call = if method.is_compiled_apart() {
+                call
+            } else {
+                forward(method, call, &counts, &t, krate)
+            };
             // A tree's `M` written in place: the blocks between the legs left as the caller's.
             let into = code.zeros.as_ref().and(method.in_place_name()).map(|into| {
                 let (into, y) = (Ident::new(into, Span::call_site()), local(OUTPUT));
@@ -121,4 +123,22 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
         }
         #(#impls)*
     }
+}
+
+/// A method's arguments in the trait (`q: &[T; NQ]`, the others `&[T; NV]`) and what it passes
+/// its module's function: `q` without its first entry (the base's x, which nothing reads).
+fn arguments(method: Method, t: &Ident, nv: usize) -> (Vec<TokenStream>, Vec<TokenStream>) {
+    let nq = nv + 1;
+    let (mut args, mut pass) = (Vec::new(), Vec::new());
+    for (&a, &public) in method.arguments().iter().zip(method.argument_names()) {
+        let public = Ident::new(public, Span::call_site());
+        if a == Argument::Q {
+            args.push(quote!(#public: &[#t; #nq]));
+            pass.push(quote!(&::core::array::from_fn(|i| #public[i + 1])));
+        } else {
+            args.push(quote!(#public: &[#t; #nv]));
+            pass.push(quote!(#public));
+        }
+    }
+    (args, pass)
 }

@@ -3,8 +3,9 @@
 //! from the attribute's `base = floating(mass = .., com = [..], inertia = [..])` beside a D-H
 //! table or `joints = [..]`, in the base frame (frame 0) as a link's; its gravity, in the
 //! world frame, from `gravity = [..]` (the URDF's default `[0, 0, −9.81]`). Every key or family
-//! the floating base does not support yet is refused on its token, so that no robot gets
-//! methods that would be wrong on a flying base.
+//! the floating base does not support yet is refused on its token (`derivatives = true` is
+//! supported, as `FloatingDynamicsDerivatives`), so that no robot gets methods that would be
+//! wrong on a flying base.
 
 use super::attrs::Attrs;
 use super::errors::Errors;
@@ -54,12 +55,16 @@ pub(super) fn free_flyer(
     if let Some(at) = attrs.tip.as_ref().map(syn::LitStr::span) {
         errors.push(at, "`tip` is not supported on a floating base: name the frames with `tips = [\"FL_FOOT\", ..]` (`FloatingKinematics`)");
     }
-    let asked = attrs.families.iter().filter(|(_, &asked)| asked);
+    // A family with a floating base's twin (`derivatives`) is that family's.
+    let asked = attrs
+        .families
+        .iter()
+        .filter(|(family, &asked)| asked && family.on_floating_base().is_none());
     for (family, _) in asked {
-        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)", family.name()));
+        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`", family.name()));
     }
     if attrs.simplify.is_some() {
-        errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ and g (`FloatingDynamics`)");
+        errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`");
     }
     // Without a robot, the description's own errors are told already.
     let robot = robot?;

@@ -15,16 +15,30 @@ impl Family {
             .any(|m| m.family() == self && m.is_compiled_apart())
     }
 
-    /// The family named `name` (`derivatives`).
+    /// The family named `name` (`derivatives`): a fixed base's, which the attribute and the
+    /// command line name (a floating base's opt-in family answers the same name:
+    /// [`Family::on_floating_base`]).
     #[must_use]
     pub fn from_name(name: &str) -> Option<Family> {
-        Family::ALL.iter().copied().find(|f| f.name() == name)
+        let fixed = Family::ALL.iter().filter(|f| !f.is_floating());
+        fixed.copied().find(|f| f.name() == name)
     }
 
-    /// The opt-in families' names, for a message: `derivatives`.
+    /// The floating base's family that answers this one's name where a robot with `base =
+    /// floating` asks for it (`derivatives = true`: `FloatingDerivatives`), if any.
+    #[must_use]
+    pub fn on_floating_base(self) -> Option<Family> {
+        let floating = Family::ALL.iter().filter(|f| f.is_floating());
+        floating.copied().find(|f| f.name() == self.name())
+    }
+
+    /// The opt-in families' names, for a message: `derivatives` (each once: a floating base's
+    /// answer a fixed base's names).
     #[must_use]
     pub fn opt_in_names() -> Vec<&'static str> {
-        let opt_in = Family::ALL.iter().filter(|f| f.is_opt_in());
+        let opt_in = Family::ALL
+            .iter()
+            .filter(|f| f.is_opt_in() && !f.is_floating());
         opt_in.map(|f| f.name()).collect()
     }
 

@@ -1,8 +1,10 @@
 //! The derive's expansion for a robot on a free-flying base (`base = floating`): its
-//! equations traced by [`crate::trace::derive_floating`], emitted as
-//! [`crate::emit::floating_items`], in the derive's `const _: () = { … };` block.
+//! equations traced by [`crate::trace::derive_floating`] (and, where asked for, their
+//! derivatives), emitted as [`crate::emit::floating_items`], in the derive's
+//! `const _: () = { … };` block but for the modules compiled apart, beside the struct.
 
 use crate::front::Input;
+use crate::method::Family;
 use crate::model::FreeFlyer;
 use crate::{emit, identifiers, trace};
 use proc_macro2::TokenStream;
@@ -16,9 +18,13 @@ pub(crate) fn expand_floating(
 ) -> TokenStream {
     let mut eq = trace::derive_floating(&parsed.robot, flyer);
     let kinematics = eq.floating_kinematics(&parsed.robot, flyer);
+    // After the kinematics, whose code stays what it is without them.
+    if parsed.families.contains(Family::Derivatives) {
+        eq.add_floating_derivatives(&parsed.robot, flyer);
+    }
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = identifiers::field_readers(&eq.fields);
-    let items = emit::floating_items(&eq, &fields, &krate, input);
+    let emit::Items { beside, within } = emit::floating_items(&eq, &fields, &krate, input);
     let kinematics = emit::floating_kinematics_items(&eq, &kinematics, &fields, &krate, input);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
@@ -26,9 +32,10 @@ pub(crate) fn expand_floating(
         )
     });
     quote! {
+        #beside
         const _: () = {
             #track
-            #items
+            #within
             #kinematics
         };
     }

@@ -162,8 +162,9 @@ impl Tangents {
 
 impl Graph {
     /// The plan of the tangents of `outputs` by the joint variables of kind `wrt` (positions
-    /// or velocities, the index in `wrt` ignored) of `directions` joints, or `None` where one
-    /// would need a scalar node the graph lacks.
+    /// or velocities) of `directions` joints, from the index in `wrt` on (the variables before
+    /// it held fixed: a floating base's quaternion, whose tangent is not its components'), or
+    /// `None` where one would need a scalar node the graph lacks.
     #[must_use]
     pub fn tangents(&self, outputs: &[NodeId], wrt: Wrt, directions: usize) -> Option<Tangents> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
@@ -229,13 +230,15 @@ impl Graph {
         Some(match self.node(id) {
             Node::Const(_) => Vec::new(),
             Node::Var(v) => match (v, wrt) {
-                (Var::Q(j), Wrt::Position(_)) | (Var::Qd(j), Wrt::Velocity(_)) => {
+                (Var::Q(j), Wrt::Position(first)) | (Var::Qd(j), Wrt::Velocity(first))
+                    if j >= first =>
+                {
                     unit(j, Vec::new(), false)
                 }
-                (Var::SinQ(j), Wrt::Position(_)) => {
+                (Var::SinQ(j), Wrt::Position(first)) if j >= first => {
                     unit(j, vec![self.find_var(Var::CosQ(j))?], false)
                 }
-                (Var::CosQ(j), Wrt::Position(_)) => {
+                (Var::CosQ(j), Wrt::Position(first)) if j >= first => {
                     unit(j, vec![self.find_var(Var::SinQ(j))?], true)
                 }
                 _ => Vec::new(),

@@ -132,8 +132,8 @@ fn forward_lanes(eq: &mut Equations, inverse: &[Option<Tangents>]) -> Vec<Option
     planned
 }
 
-/// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` at the forward dynamics' `q̈`.
-fn forward_derivatives(
+/// `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` at the forward dynamics' `q̈`, from `inverse`, `[∂τ/∂q, ∂τ/∂q̇]`.
+pub(super) fn forward_derivatives(
     eq: &Equations,
     graph: &RefCell<Graph>,
     inverse: &[Vec<Vec<NodeId>>],
@@ -167,7 +167,7 @@ fn forward_derivatives(
 }
 
 /// The rows of a matrix given by its columns.
-fn transpose(columns: &[Vec<NodeId>]) -> Vec<Vec<NodeId>> {
+pub(super) fn transpose(columns: &[Vec<NodeId>]) -> Vec<Vec<NodeId>> {
     let rows = columns.first().map_or(0, Vec::len);
     (0..rows)
         .map(|i| columns.iter().map(|column| column[i]).collect())

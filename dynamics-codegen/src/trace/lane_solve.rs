@@ -115,7 +115,7 @@ fn direction(j: usize) -> u16 {
 }
 
 /// `± Π factors · of`.
-fn lane_term(of: Of, factors: Vec<NodeId>, negative: bool) -> Term {
+pub(super) fn lane_term(of: Of, factors: Vec<NodeId>, negative: bool) -> Term {
     Term {
         of,
         factors,
@@ -124,7 +124,7 @@ fn lane_term(of: Of, factors: Vec<NodeId>, negative: bool) -> Term {
 }
 
 /// The lane of the sum of `terms` (`None` for none; a lane itself where it is the only term).
-fn write(plan: &mut Tangents, terms: Vec<Term>) -> Option<usize> {
+pub(super) fn write(plan: &mut Tangents, terms: Vec<Term>) -> Option<usize> {
     match terms.as_slice() {
         [] => return None,
         [Term {

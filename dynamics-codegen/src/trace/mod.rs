@@ -30,6 +30,7 @@ mod derivatives;
 mod energy;
 mod expr;
 mod floating;
+mod floating_derivatives;
 mod floating_kinematics;
 mod forward;
 mod friction;
@@ -163,7 +164,9 @@ impl Equations {
                 | Family::Kinematics
                 | Family::Forward
                 | Family::Floating
-                | Family::FloatingForward => {}
+                | Family::FloatingForward
+                // A floating base's, traced by `Equations::add_floating_derivatives`.
+                | Family::FloatingDerivatives => {}
             }
         }
     }

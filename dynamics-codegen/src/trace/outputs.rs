@@ -206,14 +206,16 @@ impl Method {
                 pivots: &eq.forward.factors.pivots,
                 vector: &eq.forward.qdd,
             },
-            Method::InverseDynamicsDerivatives => match &eq.derivatives {
-                Some(d) if d.inverse_lanes.iter().any(Option::is_some) => Shape::Lanes {
-                    stack: &d.inverse,
-                    lanes: &d.inverse_lanes,
-                    solved: None,
-                },
-                d => Shape::Stack(d.as_ref().map_or(&[], |d| &d.inverse)),
-            },
+            Method::InverseDynamicsDerivatives | Method::FloatingInverseDynamicsDerivatives => {
+                match &eq.derivatives {
+                    Some(d) if d.inverse_lanes.iter().any(Option::is_some) => Shape::Lanes {
+                        stack: &d.inverse,
+                        lanes: &d.inverse_lanes,
+                        solved: None,
+                    },
+                    d => Shape::Stack(d.as_ref().map_or(&[], |d| &d.inverse)),
+                }
+            }
             Method::Regressor
             | Method::JointRegressor
             | Method::JointParameters
@@ -235,7 +237,9 @@ impl Method {
                     None => Shape::Vector(&[]),
                 }
             }
-            Method::ForwardDynamicsDerivatives => forward_derivatives(eq),
+            Method::ForwardDynamicsDerivatives | Method::FloatingForwardDynamicsDerivatives => {
+                forward_derivatives(eq)
+            }
             Method::TipPoses
             | Method::TipJacobiansInBase
             | Method::TipJacobiansInTip

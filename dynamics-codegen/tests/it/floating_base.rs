@@ -1,5 +1,6 @@
 //! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
-//! and `FloatingKinematics<19, 18, F>` and nothing else, and every key or family this slice does not support is a compile error
+//! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives` where
+//! it asks), and every key or family the floating base does not support is a compile error
 //! naming it (never methods that would be wrong on a flying base).
 
 use dynamics_codegen::derive_dynamics;
@@ -30,6 +31,8 @@ fn a_floating_base_implements_the_floating_traits_only() {
             "{out}"
         );
         assert!(out.contains("FRAME_FL_FOOT"), "{out}");
+        // No derivatives unless asked for.
+        assert!(!out.contains("FloatingDynamicsDerivatives"), "{out}");
     }
     let feet = solo("base = floating, tips = [\"FL_FOOT\", \"HR_FOOT\"]");
     assert!(!feet.contains("compile_error"), "{feet}");
@@ -40,13 +43,39 @@ fn a_floating_base_implements_the_floating_traits_only() {
     assert!(feet.contains("FRAME_HR_FOOT"), "{feet}");
 }
 
+/// `derivatives = true` implements `FloatingDynamicsDerivatives<19, 18>` beside the rest, its
+/// module beside the struct (outside the `const _` block, compiled apart), and leaves the rest
+/// of the expansion as it was.
+#[test]
+fn a_floating_base_asks_for_its_derivatives() {
+    let plain = solo("base = floating");
+    let out = solo("base = floating, derivatives = true");
+    assert!(!out.contains("compile_error"), "{out}");
+    assert!(
+        out.contains("FloatingDynamicsDerivatives < 19usize , 18usize >"),
+        "{out}"
+    );
+    assert!(!out.contains(":: DynamicsDerivatives <"), "{out}");
+    let (beside, block) = out.split_once("const _ : () =").expect("the block");
+    assert!(
+        beside.contains("mod __floating_derivatives_of_Solo"),
+        "{out}"
+    );
+    assert!(!block.contains("mod __floating_derivatives"), "{out}");
+    // The floating family's module and the kinematics' as without the derivatives.
+    let floating = |x: &str| {
+        let start = x.find("mod __floating ").expect("the floating module");
+        let end = x
+            .find("mod __floating_forward")
+            .expect("the forward module");
+        x[start..end].to_owned()
+    };
+    assert_eq!(floating(&out), floating(&plain));
+}
+
 #[test]
 fn what_a_floating_base_does_not_have_yet_is_refused() {
     for (keys, message) in [
-        (
-            "base = floating, derivatives = true",
-            "`derivatives = true` is not supported on a floating base yet",
-        ),
         (
             "base = floating, regressor = true",
             "`regressor = true` is not supported on a floating base yet",

@@ -48,7 +48,8 @@ pub use layout::{States, StatesMut};
 pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
-    DynamicsSimplifiedBatch, FloatingDynamicsBatch, TipKinematicsBatch,
+    DynamicsSimplifiedBatch, FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch,
+    TipKinematicsBatch,
 };
 
 use crate::lanes::{Lanes, SplitLanes};

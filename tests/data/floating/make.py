@@ -410,6 +410,97 @@ def contacts(name, urdf):
     print(name, "contacts:", len(samples), "samples,", len(frames), "frames")
 
 
+# Robots whose first derivatives are written by `derivatives` (all three).
+DERIVATIVES = ["solo12", "anymal_b", "g1_29dof"]
+
+
+def from_file_order(names, order, x, offset):
+    """A vector in the file's joint `order` back in Pinocchio's (`names`), its first `offset`
+    (the free flyer's 7 of q, 6 of v) kept."""
+    pick = [names.index(j) for j in order]
+    index = list(range(offset)) + [offset + k for k in pick]
+    out = np.empty(len(index))
+    out[index] = x
+    return out
+
+
+def central(f, model, q, step=1e-6):
+    """The columns d f(q (+) dq) / d dq by central differences along `integrate`."""
+    columns = []
+    for j in range(model.nv):
+        e = np.zeros(model.nv)
+        e[j] = step
+        columns.append((f(pin.integrate(model, q, e)) - f(pin.integrate(model, q, -e))) / (2 * step))
+    return np.array(columns).T
+
+
+def derivatives(name, urdf):
+    """The first derivatives (issue 43, item 2) at the states of `<name>.json`, written to
+    `<name>_derivatives.json`: `computeRNEADerivatives(q, v, a)`'s dtau_dq and dtau_dv, and, at
+    a generalized force `tau_in` uniform in [-20, 20] drawn from a third generator (seeded SEED
+    + 2), `aba(q, v, tau_in)` and `computeABADerivatives`' ddq_dq, ddq_dv and Minv (ddq_dtau,
+    its upper triangle mirrored). The derivatives by q are along the tangent,
+    q (+) dq = integrate(q, dq): the base moved in its own frame. Rows and columns in the
+    file's joint order (the states are read in it, taken to Pinocchio's for the calls, and the
+    results back). Checks dtau_dq, dtau_dv, ddq_dq and ddq_dv against central differences
+    (1e-5 scaled: a wrong convention is off by O(1)), Minv M = 1 and ddq_dq = -Minv dtau_dq at a = ddq (1e-10 scaled)."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    rng = np.random.default_rng(SEED + 2)
+    pick = [names.index(j) for j in order]
+    iv = list(range(6)) + [6 + k for k in pick]
+    to_file = lambda m: m[np.ix_(iv, iv)]
+    samples = []
+    for s in states:
+        q = from_file_order(names, order, np.array(s["q"]), 7)
+        v, a = (from_file_order(names, order, np.array(s[k]), 6) for k in ("v", "a"))
+        tau_in = rng.uniform(-20, 20, model.nv)
+        dtau_dq, dtau_dv, _ = (x.copy() for x in pin.computeRNEADerivatives(model, data, q, v, a))
+        fd_q = central(lambda x: pin.rnea(model, data, x, v, a), model, q)
+        assert scaled(fd_q, dtau_dq) < 1e-5, scaled(fd_q, dtau_dq)
+        fd_v = np.array([(pin.rnea(model, data, q, v + e, a) - pin.rnea(model, data, q, v - e, a)) / 2e-6
+                         for e in np.eye(model.nv) * 1e-6]).T
+        assert scaled(fd_v, dtau_dv) < 1e-5, scaled(fd_v, dtau_dv)
+        ddq = pin.aba(model, data, q, v, tau_in).copy()
+        ddq_dq, ddq_dv, m_inv = (x.copy() for x in pin.computeABADerivatives(model, data, q, v, tau_in))
+        m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+        m = pin.crba(model, data, q).copy()
+        m = np.triu(m) + np.triu(m, 1).T
+        assert scaled(m_inv @ m, np.eye(model.nv)) < 1e-10
+        at_ddq, _, _ = pin.computeRNEADerivatives(model, data, q, v, ddq)
+        assert scaled(-m_inv @ at_ddq, ddq_dq) < 1e-10, scaled(-m_inv @ at_ddq, ddq_dq)
+        fd_q = central(lambda x: pin.aba(model, data, x, v, tau_in), model, q)
+        assert scaled(fd_q, ddq_dq) < 1e-5, scaled(fd_q, ddq_dq)
+        fd_v = np.array([(pin.aba(model, data, q, v + e, tau_in) - pin.aba(model, data, q, v - e, tau_in)) / 2e-6
+                         for e in np.eye(model.nv) * 1e-6]).T
+        assert scaled(fd_v, ddq_dv) < 1e-5, scaled(fd_v, ddq_dv)
+        samples.append({"tau_in": tau_in[iv].tolist(), "dtau_dq": to_file(dtau_dq).tolist(),
+                        "dtau_dv": to_file(dtau_dv).tolist(), "ddq": ddq[iv].tolist(),
+                        "ddq_dq": to_file(ddq_dq).tolist(), "ddq_dv": to_file(ddq_dv).tolist(),
+                        "ddq_dtau": to_file(m_inv).tolist()})
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (derivatives) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, a of its samples, in order)",
+        "joints": order,
+        "conventions": "row i, column j: d y_i / d x_j; by q along the tangent, q (+) dq = integrate(q, dq) (the base "
+                       "perturbed in its own frame, [linear, angular]), by v and tau as the vectors; "
+                       "dtau_* = computeRNEADerivatives(q, v, a); ddq = aba(q, v, tau_in), ddq_* = "
+                       "computeABADerivatives(q, v, tau_in), ddq_dtau = Minv",
+        "seed": SEED + 2,
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_derivatives.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "derivatives:", len(samples), "samples")
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
@@ -417,3 +508,6 @@ if __name__ == "__main__":
         if name in KINEMATICS:
             kinematics(name, urdf)
     contacts("solo12", ROBOTS["solo12"])
+    for name, urdf in ROBOTS.items():
+        if name in DERIVATIVES:
+            derivatives(name, urdf)

@@ -10,6 +10,7 @@ mod derivatives;
 mod energy_drift;
 mod floating_base;
 mod floating_contacts;
+mod floating_derivatives;
 mod floating_forward;
 mod floating_front;
 mod floating_kinematics;

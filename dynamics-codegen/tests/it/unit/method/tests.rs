@@ -45,9 +45,18 @@ fn a_floating_base_has_rows_of_its_own_named_as_its_trait_names_them() {
         .copied()
         .filter(|m| m.family().is_floating())
         .collect();
+    let traits = ["FloatingDynamics", "FloatingDynamicsDerivatives"];
     assert!(floating
         .iter()
-        .all(|m| m.family().trait_name() == "FloatingDynamics"));
+        .all(|m| traits.contains(&m.family().trait_name())));
+    assert_eq!(
+        Method::from_name_on("inverse_dynamics_derivatives", true),
+        Some(Method::FloatingInverseDynamicsDerivatives)
+    );
+    assert_eq!(
+        Method::FloatingForwardDynamicsDerivatives.argument_names(),
+        ["q", "v", "tau"]
+    );
     assert_eq!(
         Method::FloatingForwardDynamics.argument_names(),
         ["q", "v", "tau"]
