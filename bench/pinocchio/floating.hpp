@@ -13,8 +13,13 @@
 // has the robot (bench/ffi: `tau`, `M`, `h`, `g`, reading nq values from q and nv from v and a),
 // each generated function against Pinocchio's doubles on every sample (TOLERANCE); then times the
 // four, Pinocchio and the generated code in turn: `robot<TAB>function<TAB>pinocchio_ns<TAB>generated_ns`
-// (Pinocchio's column alone without the library); then the derivatives, `dtau` and `dqdd`
-// (run_floating_derivatives). No C header or CasADi peer has them yet.
+// (Pinocchio's column alone without the library). No C header or CasADi peer has them yet.
+// The generated `M` is `mass_matrix_into`, which leaves the blocks between two legs as it finds
+// them: it writes into a matrix of its own, zeroed once and kept (as Pinocchio's crba keeps
+// data.M). Then `fd` (aba at the sample's (q, v, tau)) and `Minv` (computeMinverse, mirrored),
+// and the batch rows `tau_batch` (rneaInParallel on one thread) and `fd_batch` (abaInParallel),
+// per state, as the fixed robots' (`time_floating_batches`).
+// Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives).
 
 // The largest departure of a sample's quaternion from unit length that is taken as unit.
 static const double UNIT_QUATERNION = 1e-12;
@@ -94,6 +99,62 @@ static void run_floating_derivatives(
     });
 }
 
+// The batch rows of a robot on a free-flying base, per state: `tau_batch` and `fd_batch`
+// (a horizon of `gen.horizon()` states, the samples in turn, nq values of q and nv of the others
+// per state) beside rneaInParallel and abaInParallel on one thread of a ModelPool, each state's
+// generated output checked first against the single-state function's.
+static void time_floating_batches(
+  const std::string & robot,
+  const Generated & gen,
+  const Model & model,
+  const std::vector<Eigen::VectorXd> & qs,
+  const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & as,
+  const std::vector<Eigen::VectorXd> & taus,
+  double & checksum)
+{
+  const Eigen::Index nq = model.nq, n = model.nv, h = static_cast<Eigen::Index>(gen.horizon());
+  Eigen::MatrixXd Q(nq, h), V(n, h), A(n, h), TAU(n, h), OUT(n, h);
+  for (Eigen::Index k = 0; k < h; ++k)
+  {
+    const std::size_t s = static_cast<std::size_t>(k) % qs.size();
+    Q.col(k) = qs[s], V.col(k) = vs[s], A.col(k) = as[s], TAU.col(k) = taus[s];
+  }
+  std::vector<double> out(static_cast<std::size_t>(n * h)), one(static_cast<std::size_t>(n));
+  for (const auto & [batch, single, third] :
+       {std::make_tuple("tau_batch", "tau", &A), std::make_tuple("fd_batch", "fd", &TAU)})
+  {
+    gen.get(robot, batch)(Q.data(), V.data(), third->data(), out.data());
+    for (Eigen::Index k = 0; k < h; ++k)
+    {
+      gen.get(robot, single)(Q.col(k).data(), V.col(k).data(), third->col(k).data(), one.data());
+      const Eigen::Map<const Eigen::VectorXd> got(out.data() + k * n, n), want(one.data(), n);
+      check(robot, std::string(batch) + " state " + std::to_string(k), got, want, static_cast<std::size_t>(k));
+    }
+  }
+  pinocchio::ModelPool pool(model, 1);
+  const int warmup = 100, calls = 200;
+  auto row = [&](const char * function, const Eigen::MatrixXd & third, auto && pin) {
+    const GeneratedFunction f = gen.get(robot, function);
+    auto g = [&](std::size_t) {
+      f(Q.data(), V.data(), third.data(), out.data());
+      return out[0];
+    };
+    auto p = [&](std::size_t) { return pin(); };
+    const auto [pin_ns, gen_ns] = median_ns_in_turn(1, p, g, checksum, warmup, calls);
+    std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns / double(h), gen_ns / double(h));
+    std::fflush(stdout);
+  };
+  row("tau_batch", A, [&] {
+    pinocchio::rneaInParallel(1, pool, Q, V, A, OUT);
+    return OUT(0, 0);
+  });
+  row("fd_batch", TAU, [&] {
+    pinocchio::abaInParallel(1, pool, Q, V, TAU, OUT);
+    return OUT(0, 0);
+  });
+}
+
 static void run_floating(const std::string & robot, const json::Value & file, const Generated * generated, double & checksum)
 {
   const Model model = build_model_from_pinocchio(file["pinocchio_model"]);
@@ -125,9 +186,13 @@ static void run_floating(const std::string & robot, const json::Value & file, co
     throw std::runtime_error(robot + ": the generated library's dof is not the model's nv");
   // Room for M (nv × nv) and one more value, which no function may write.
   std::vector<double> out(nv * nv + 1);
+  std::vector<Eigen::VectorXd> taus;
+  for (std::size_t s = 0; s < ns; ++s)
+    taus.push_back(vecn(samples[s]["tau"]));
   // Pinocchio's `function` (its output at sample k as a row-major vector, for the check, and one
   // element of it, timed), beside the generated one where it is loaded.
-  auto time = [&](const char * function, auto && pin_output, auto && pin_timed) {
+  // `function` reads `third` (the accelerations, or the torques of `fd`) as its third input.
+  auto time_with = [&](const char * function, const std::vector<Eigen::VectorXd> & third, auto && pin_output, auto && pin_timed) {
     if (!with_generated)
     {
       std::printf("%s\t%s\t%.1f\n", robot.c_str(), function, median_ns(ns, pin_timed, checksum));
@@ -135,11 +200,16 @@ static void run_floating(const std::string & robot, const json::Value & file, co
       return;
     }
     const GeneratedFunction f = generated->get(robot, function);
+    // `M` keeps its matrix, zeroed once; every other output starts as NaN.
+    const bool kept = std::string(function) == "M";
+    std::fill(out.begin(), out.end(), kept ? 0.0 : std::numeric_limits<double>::quiet_NaN());
     for (std::size_t s = 0; s < ns; ++s)
     {
       const Eigen::VectorXd want = pin_output(s);
-      std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
-      f(qs[s].data(), vs[s].data(), as[s].data(), out.data());
+      if (!kept)
+        std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+      out[nv * nv] = std::numeric_limits<double>::quiet_NaN();
+      f(qs[s].data(), vs[s].data(), third[s].data(), out.data());
       const auto size = static_cast<std::size_t>(want.size());
       if (!std::isnan(out[size]))
         throw std::runtime_error(robot + ": the generated " + function + " writes past its output");
@@ -147,12 +217,15 @@ static void run_floating(const std::string & robot, const json::Value & file, co
       check(robot, std::string(function) + " (generated)", got, want, s);
     }
     auto gen = [&](std::size_t k) {
-      f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+      f(qs[k].data(), vs[k].data(), third[k].data(), out.data());
       return out[0];
     };
     const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin_timed, gen, checksum);
     std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns, gen_ns);
     std::fflush(stdout);
+  };
+  auto time = [&](const char * function, auto && pin_output, auto && pin_timed) {
+    time_with(function, as, pin_output, pin_timed);
   };
   // M row-major (symmetric, so its transpose's column-major storage is the same numbers).
   auto mass = [&](std::size_t k) {
@@ -172,5 +245,19 @@ static void run_floating(const std::string & robot, const json::Value & file, co
     "g",
     [&](std::size_t k) { return Eigen::VectorXd(pinocchio::computeGeneralizedGravity(model, data, qs[k])); },
     [&](std::size_t k) { return pinocchio::computeGeneralizedGravity(model, data, qs[k])[0]; });
+  // The forward dynamics, M⁻¹, and the batches.
+  time_with(
+    "fd", taus,
+    [&](std::size_t k) { return Eigen::VectorXd(pinocchio::aba(model, data, qs[k], vs[k], taus[k])); },
+    [&](std::size_t k) { return pinocchio::aba(model, data, qs[k], vs[k], taus[k])[0]; });
+  time(
+    "Minv",
+    [&](std::size_t k) {
+      const Eigen::MatrixXd m = symmetric(pinocchio::computeMinverse(model, data, qs[k]));
+      return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(m.data(), m.size()));
+    },
+    [&](std::size_t k) { return pinocchio::computeMinverse(model, data, qs[k])(0, 0); });
+  if (with_generated)
+    time_floating_batches(robot, *generated, model, qs, vs, as, taus, checksum);
   run_floating_derivatives(robot, model, data, samples, qs, vs, as, with_generated ? generated : nullptr, checksum);
 }

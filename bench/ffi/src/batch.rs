@@ -21,7 +21,7 @@ type Forward<const N: usize> =
 ///
 /// # Safety
 /// `p` points to `HORIZON × N` readable `f64`s.
-unsafe fn states<'a, const N: usize>(p: *const f64) -> &'a [[f64; N]; HORIZON] {
+pub(super) unsafe fn states<'a, const N: usize>(p: *const f64) -> &'a [[f64; N]; HORIZON] {
     // SAFETY: the caller's contract; `f64`s are aligned for arrays of them.
     unsafe { &*p.cast::<[[f64; N]; HORIZON]>() }
 }
@@ -30,7 +30,7 @@ unsafe fn states<'a, const N: usize>(p: *const f64) -> &'a [[f64; N]; HORIZON] {
 ///
 /// # Safety
 /// `p` points to room for `HORIZON` values of `O`, made of `f64`s.
-unsafe fn results<'a, O>(p: *mut f64) -> &'a mut [O; HORIZON] {
+pub(super) unsafe fn results<'a, O>(p: *mut f64) -> &'a mut [O; HORIZON] {
     // SAFETY: the caller's contract.
     unsafe { &mut *p.cast::<[O; HORIZON]>() }
 }

@@ -1,12 +1,19 @@
 //! The entries of the robots on a free-flying base ([`floating`]): `tau`, `M`, `h` and `g` of
 //! `FloatingDynamics<Q, V>`, each reading `Q` values from `q` and `V` from the other inputs and
-//! writing `V` values (`V × V` for `M`, row-major); `dynamics_bench_dof` gives `V`. And the
-//! first derivatives of `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the
-//! tangent, then `∂τ/∂v`: 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M
-//! is not positive definite; its third input `tau`).
+//! writing `V` values (`V × V` for `M`, row-major); `dynamics_bench_dof` gives `V`. `M` is
+//! `mass_matrix_into`, which leaves the blocks between two legs as `out` has them (its caller
+//! keeps a matrix for it, zeroed once, as Pinocchio's `crba` keeps `data.M`); `fd` reads the
+//! torques from the third input (NaN where M is not positive definite), `Minv` writes `M⁻¹`;
+//! `tau_batch` and `fd_batch` take [`HORIZON`] states a call, as the fixed robots' do. And the first derivatives of
+//! `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the tangent, then `∂τ/∂v`:
+//! 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M is not positive
+//! definite; its third input `tau`).
 
+use super::batch::{results, states, HORIZON};
 use super::{input, output, output_matrix, Function, Robot};
-use dynamics_runtime::FloatingDynamicsDerivatives;
+use dynamics_runtime::{
+    FloatingDynamics, FloatingDynamicsBatch, FloatingDynamicsDerivatives, NotPositiveDefinite,
+};
 
 /// The timed functions of one robot type on a free-flying base, as C functions.
 struct Floating<R, const Q: usize, const V: usize>(core::marker::PhantomData<R>);
@@ -25,8 +32,12 @@ impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: us
     }
 
     unsafe extern "C" fn mass(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
-        // SAFETY: the contract of `Function` (room for V × V values at `out`).
-        unsafe { output_matrix(out, R::default().mass_matrix(input::<Q>(q))) }
+        // SAFETY: the contract of `Function` (room for V × V values at `out`, which holds
+        // `f64`s, so it is aligned for them).
+        unsafe {
+            let m = &mut *out.cast::<[[f64; V]; V]>();
+            R::default().mass_matrix_into(input::<Q>(q), m);
+        }
     }
 
     unsafe extern "C" fn bias(q: *const f64, v: *const f64, _: *const f64, out: *mut f64) {
@@ -45,12 +56,66 @@ impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: us
             b"M" => Self::mass,
             b"h" => Self::bias,
             b"g" => Self::gravity,
-            _ => return Self::derivatives(function),
+            _ => return Self::forward_and_batch(function).or_else(|| Self::derivatives(function)),
         })
     }
 }
 
-// The first derivatives.
+/// The forward dynamics, `M⁻¹` and the batch rows.
+impl<R: FloatingDynamics<Q, V> + Default, const Q: usize, const V: usize> Floating<R, Q, V> {
+    unsafe extern "C" fn forward(q: *const f64, v: *const f64, tau: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (V torques at `tau`).
+        unsafe {
+            let a = R::default().forward_dynamics(input::<Q>(q), input(v), input(tau));
+            output(out, a.unwrap_or([f64::NAN; V]));
+        }
+    }
+
+    unsafe extern "C" fn mass_inverse(q: *const f64, _: *const f64, _: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (room for V × V values at `out`).
+        unsafe {
+            let inverse = R::default().mass_matrix_inverse(input::<Q>(q));
+            output_matrix(out, inverse.unwrap_or([[f64::NAN; V]; V]));
+        }
+    }
+
+    unsafe extern "C" fn tau_batch(q: *const f64, v: *const f64, a: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function`, `HORIZON` times over (`HORIZON × Q` values at
+        // `q`).
+        unsafe {
+            let out = results::<[f64; V]>(out);
+            R::default().inverse_dynamics_batch(states::<Q>(q), states(v), states(a), out);
+        }
+    }
+
+    unsafe extern "C" fn forward_batch(
+        q: *const f64,
+        v: *const f64,
+        tau: *const f64,
+        out: *mut f64,
+    ) {
+        let mut a: [Result<[f64; V], NotPositiveDefinite>; HORIZON] = [Ok([0.0; V]); HORIZON];
+        // SAFETY: the contract of `Function`, `HORIZON` times over.
+        unsafe {
+            R::default().forward_dynamics_batch(states::<Q>(q), states(v), states(tau), &mut a);
+            for (o, r) in results::<[f64; V]>(out).iter_mut().zip(a) {
+                *o = r.unwrap_or([f64::NAN; V]);
+            }
+        }
+    }
+
+    fn forward_and_batch(function: &[u8]) -> Option<Function> {
+        Some(match function {
+            b"fd" => Self::forward,
+            b"Minv" => Self::mass_inverse,
+            b"tau_batch" => Self::tau_batch,
+            b"fd_batch" => Self::forward_batch,
+            _ => return None,
+        })
+    }
+}
+
+/// The first derivatives.
 impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: usize>
     Floating<R, Q, V>
 {
@@ -149,6 +214,10 @@ mod tests {
             for (function, want, pinocchio) in checks {
                 let f = lookup(robot, function).expect("a floating robot's function");
                 let mut got = vec![f64::NAN; V * V + 1];
+                if function == "M" {
+                    // `mass_matrix_into` leaves the zeros between the legs as it finds them.
+                    got[..V * V].fill(0.0);
+                }
                 // SAFETY: Q values at q, V at v and a, room for V × V outputs and one more.
                 unsafe { f(s.q.as_ptr(), s.v.as_ptr(), s.a.as_ptr(), got.as_mut_ptr()) };
                 let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
@@ -161,8 +230,80 @@ mod tests {
                 assert!(error < 1e-9, "{robot} {function}: {error:e} from Pinocchio");
             }
         }
-        for function in ["C", "fk", "J", "fd", "Minv", "Y", "tau_batch"] {
+        check_forward(r, robot);
+        for function in ["C", "fk", "J", "Y", "M_batch"] {
             assert!(lookup(robot, function).is_none(), "{robot} {function}");
+        }
+    }
+
+    /// `fd` and `Minv` through the C ABI: the trait methods' bits, `fd` at Pinocchio's
+    /// `τ = rnea(q, v, a)` its `a`, `M⁻¹ M = 1` with Pinocchio's `M`; `tau_batch` and `fd_batch`
+    /// each state's single-state bits.
+    fn check_forward<R, const Q: usize, const V: usize>(r: &R, robot: &str)
+    where
+        R: FloatingDynamics<Q, V>,
+    {
+        let samples = floating_samples::<Q, V>(robot);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+        for s in &samples {
+            let mut got = vec![f64::NAN; V * V + 1];
+            let fd = lookup(robot, "fd").expect("fd");
+            // SAFETY: Q values at q, V at v and tau, room for V outputs.
+            unsafe { fd(s.q.as_ptr(), s.v.as_ptr(), s.tau.as_ptr(), got.as_mut_ptr()) };
+            let want = r.forward_dynamics(&s.q, &s.v, &s.tau).expect("M > 0");
+            assert_eq!(bits(&got[..V]), bits(&want), "{robot} fd");
+            assert!(got[V..].iter().all(|x| x.is_nan()), "{robot} fd");
+            assert!(
+                scaled_error(&want, &s.a) < 1e-9,
+                "{robot} fd from Pinocchio's a"
+            );
+            let minv = lookup(robot, "Minv").expect("Minv");
+            // SAFETY: Q values at q, room for V × V outputs.
+            unsafe { minv(s.q.as_ptr(), s.v.as_ptr(), s.a.as_ptr(), got.as_mut_ptr()) };
+            let want = r.mass_matrix_inverse(&s.q).expect("M > 0");
+            let want: Vec<f64> = want.iter().flatten().copied().collect();
+            assert_eq!(bits(&got[..V * V]), bits(&want), "{robot} Minv");
+            assert!(got[V * V].is_nan(), "{robot} Minv");
+            let product: Vec<f64> = (0..V * V)
+                .map(|ij| {
+                    (0..V)
+                        .map(|k| want[ij / V * V + k] * s.mass[k * V + ij % V])
+                        .sum()
+                })
+                .collect();
+            let identity: Vec<f64> = (0..V * V)
+                .map(|ij| f64::from(u8::from(ij / V == ij % V)))
+                .collect();
+            assert!(scaled_error(&product, &identity) < 1e-9, "{robot} Minv M");
+        }
+        let horizon = crate::batch::HORIZON;
+        let rows = |f: &dyn Fn(usize) -> Vec<f64>| (0..horizon).flat_map(f).collect::<Vec<f64>>();
+        let at = |k: usize| &samples[k % samples.len()];
+        let q = rows(&|k| at(k).q.to_vec());
+        let (v, a) = (rows(&|k| at(k).v.to_vec()), rows(&|k| at(k).tau.to_vec()));
+        for (batch, single) in [("tau_batch", "tau"), ("fd_batch", "fd")] {
+            let mut out = vec![f64::NAN; horizon * V];
+            let f = lookup(robot, batch).expect("a batch function");
+            // SAFETY: HORIZON states in each input, room for as many outputs.
+            unsafe { f(q.as_ptr(), v.as_ptr(), a.as_ptr(), out.as_mut_ptr()) };
+            let one = lookup(robot, single).expect("its single-state function");
+            for k in 0..horizon {
+                let mut want = vec![f64::NAN; V];
+                // SAFETY: one state in each input, room for its output.
+                unsafe {
+                    one(
+                        q[k * Q..].as_ptr(),
+                        v[k * V..].as_ptr(),
+                        a[k * V..].as_ptr(),
+                        want.as_mut_ptr(),
+                    );
+                }
+                assert_eq!(
+                    bits(&out[k * V..(k + 1) * V]),
+                    bits(&want),
+                    "{robot} {batch} {k}"
+                );
+            }
         }
     }
 
