@@ -14,13 +14,21 @@
 //! symmetrically about the centre of mass they stand nearly vertical), and the joint torques
 //! are the joints' rows of `τ`. Then the constrained forward dynamics with the four feet held
 //! (`contact_dynamics`, Pinocchio's `constraintDynamics`) at these torques gives `a = 0` and
-//! the same forces: the posture is an equilibrium. It checks itself and fails otherwise.
+//! the same forces: the posture is an equilibrium. Last, one linearisation of its dynamics for
+//! an MPC step, from the floating base's first derivatives (`derivatives = true`). It checks
+//! itself and fails otherwise.
 
-use dynamics_runtime::{FloatingContacts, FloatingDynamics, FloatingKinematics};
+use dynamics_runtime::{
+    FloatingContacts, FloatingDynamics, FloatingDynamicsDerivatives, FloatingKinematics,
+};
 use nalgebra::{SMatrix, SVector};
 
 #[derive(dynamics_runtime::Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/solo12.urdf",
+    base = floating,
+    derivatives = true
+)]
 struct Solo12;
 
 const NV: usize = 18;
@@ -102,13 +110,116 @@ fn main() {
     );
     assert!((momentum[0] - 0.1 * mass).abs() < 1e-12);
 
-    // MPC linearisation (issue 43): the constrained dynamics' derivatives ∂a/∂q, ∂a/∂v,
-    // ∂a/∂τ about this posture, from the floating base's first derivatives (∂τ, ∂q̈ on a
-    // floating base, being written beside this example). LEAD: add the linearised step here
-    // after merging the floating derivatives.
+    // One linearisation for an MPC step about this posture. The state is x = (δq, v), δq in
+    // the tangent (the base's position and rotation in its own frame, then the joints), the
+    // input the generalized force u = τ + Σ J_fᵀ λ_f (the joints' torques and the feet's
+    // forces together; the feet's Jacobians held at the posture, the usual first-order model of
+    // one step). Semi-implicit Euler with step dt: v⁺ = v + dt a(q, v, u), q⁺ = q ⊕ dt v⁺; at
+    // v = 0, ∂(q ⊕ dt v⁺)/∂q is the identity, so
+    //   A = [[1 + dt² ∂a/∂q, dt 1 + dt² ∂a/∂v], [dt ∂a/∂q, 1 + dt ∂a/∂v]],  B = [[dt² M⁻¹], [dt M⁻¹]],
+    // ∂a/∂q, ∂a/∂v and ∂a/∂u = M⁻¹ Pinocchio's computeABADerivatives (`derivatives = true`).
+    let u = Solo12.generalized_gravity(&q);
+    let d = Solo12
+        .forward_dynamics_derivatives(&q, &zero, &u)
+        .expect("M is positive definite");
+    let dt = 0.01;
+    let step = SMatrix::<f64, { 2 * NV }, { 2 * NV }>::from_fn(|r, c| {
+        let (row, col) = (r % NV, c % NV);
+        let identity = if r == c { 1.0 } else { 0.0 };
+        let da = if c < NV {
+            d.dqdd_dq[row][col]
+        } else {
+            d.dqdd_dqd[row][col]
+        };
+        let dq_dv = if r < NV && c == r + NV { dt } else { 0.0 };
+        identity + dq_dv + if r < NV { dt * dt * da } else { dt * da }
+    });
+    let input = SMatrix::<f64, { 2 * NV }, NV>::from_fn(|r, c| {
+        (if r < NV { dt * dt } else { dt }) * d.dqdd_dtau[r % NV][c]
+    });
+    println!("\n  one MPC step, linearised about the posture (dt = {dt} s): x⁺ = A x + B u,");
+    println!(
+        "  A {}×{}, B {}×{}; a = {:.1e} at the posture",
+        step.nrows(),
+        step.ncols(),
+        input.nrows(),
+        input.ncols(),
+        max_abs(&d.qdd)
+    );
+    // Tilting the base turns gravity in its frame and accelerates every body alike: the
+    // rotation's columns of ∂a/∂q are [g_b]× in the base's linear rows and zero elsewhere.
+    println!(
+        "  ∂a/∂q, the base's linear rows by its rotation (gravity tilted with it) [m/s² per rad]:"
+    );
+    for row in &d.dqdd_dq[..3] {
+        println!("    {:8.4} {:8.4} {:8.4}", row[3], row[4], row[5]);
+    }
+    let tilt = max_abs(
+        &d.dqdd_dq[3..]
+            .iter()
+            .flat_map(|r| r[3..6].to_vec())
+            .collect::<Vec<_>>(),
+    );
+    assert!(
+        (d.dqdd_dq[0][4] - G).abs() < 1e-9 && (d.dqdd_dq[1][3] + G).abs() < 1e-9 && tilt < 1e-9
+    );
+    // The linearisation against central differences of the forward dynamics along the tangent.
+    let error = (0..NV)
+        .map(|j| {
+            let h = 1e-6;
+            let mut e = zero;
+            e[j] = h;
+            let plus = Solo12
+                .forward_dynamics(&Solo12.integrate(&q, &e), &zero, &u)
+                .unwrap();
+            e[j] = -h;
+            let minus = Solo12
+                .forward_dynamics(&Solo12.integrate(&q, &e), &zero, &u)
+                .unwrap();
+            (0..NV)
+                .map(|i| ((plus[i] - minus[i]) / (2.0 * h) - d.dqdd_dq[i][j]).abs())
+                .fold(0.0, f64::max)
+        })
+        .fold(0.0, f64::max);
+    println!("  ∂a/∂q against central differences along integrate: {error:.1e}");
+    // One step of the nonlinear dynamics from the posture tilted about x, u held, beside A x:
+    // their gap is second order in the tilt (a tenth of the tilt, a hundredth of the gap).
+    let one_step =
+        |tilt: f64| {
+            let mut x = SVector::<f64, { 2 * NV }>::zeros();
+            x[3] = tilt;
+            let tilted = Solo12.integrate(&q, &core::array::from_fn(|i| x[i]));
+            let a = Solo12.forward_dynamics(&tilted, &zero, &u).unwrap();
+            let v_next: [f64; NV] = core::array::from_fn(|i| dt * a[i]);
+            let q_next = Solo12.integrate(&tilted, &core::array::from_fn(|i| dt * v_next[i]));
+            let dq_next = Solo12.difference(&q, &q_next);
+            let nonlinear = SVector::<f64, { 2 * NV }>::from_fn(|i, _| {
+                if i < NV {
+                    dq_next[i]
+                } else {
+                    v_next[i - NV]
+                }
+            });
+            (nonlinear[NV + 1], (step * x - nonlinear).amax())
+        };
+    let ((v_y, gap), (_, smaller)) = (one_step(1e-2), one_step(1e-3));
+    println!(
+        "  one step from a 0.01 rad tilt about x: v_y⁺ = {v_y:.6} m/s, |A x − step| = {gap:.1e}"
+    );
+    println!("  (from 0.001 rad: {smaller:.1e}, second order in the tilt)");
+    assert!(
+        smaller * 50.0 < gap && gap < 1e-4,
+        "the linear step is {gap:e} from the nonlinear one"
+    );
+
+    assert!(
+        error < 1e-5,
+        "∂a/∂q is {error:e} from its central differences"
+    );
 
     println!("\nchecks passed: the feet carry the weight, the base needs no wrench, the held");
-    println!("feet keep the robot at rest (a = 0) with the same forces, the momentum is m v");
+    println!("feet keep the robot at rest (a = 0) with the same forces, the momentum is m v,");
+    println!("the linearisation matches central differences");
 }
 
 /// The minimum-norm forces on the four feet, in world axes, whose wrench on the base is the
