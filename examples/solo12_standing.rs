@@ -33,6 +33,8 @@ struct Solo12;
 
 const NV: usize = 18;
 const G: f64 = 9.81;
+/// The MPC's step [s].
+const DT: f64 = 0.01;
 
 /// example-robot-data's `standing` posture of Solo 12 (its `solo.srdf`), the joints in the
 /// file's order: FL, FR, HL, HR, each HAA, HFE, KFE.
@@ -110,40 +112,52 @@ fn main() {
     );
     assert!((momentum[0] - 0.1 * mass).abs() < 1e-12);
 
-    // One linearisation for an MPC step about this posture. The state is x = (δq, v), δq in
-    // the tangent (the base's position and rotation in its own frame, then the joints), the
-    // input the generalized force u = τ + Σ J_fᵀ λ_f (the joints' torques and the feet's
-    // forces together; the feet's Jacobians held at the posture, the usual first-order model of
-    // one step). Semi-implicit Euler with step dt: v⁺ = v + dt a(q, v, u), q⁺ = q ⊕ dt v⁺; at
-    // v = 0, ∂(q ⊕ dt v⁺)/∂q is the identity, so
-    //   A = [[1 + dt² ∂a/∂q, dt 1 + dt² ∂a/∂v], [dt ∂a/∂q, 1 + dt ∂a/∂v]],  B = [[dt² M⁻¹], [dt M⁻¹]],
-    // ∂a/∂q, ∂a/∂v and ∂a/∂u = M⁻¹ Pinocchio's computeABADerivatives (`derivatives = true`).
-    let u = Solo12.generalized_gravity(&q);
+    linearise_for_one_mpc_step(&q);
+
+    println!("\nchecks passed: the feet carry the weight, the base needs no wrench, the held");
+    println!("feet keep the robot at rest (a = 0) with the same forces, the momentum is m v,");
+    println!("the linearisation matches central differences");
+}
+
+/// The step of the MPC's model: `x⁺ = A x + B u`, `A` (36 × 36) over the state `x = (δq, v)`,
+/// `δq` in the tangent (the base's position and rotation in its own frame, then the joints), `B`
+/// (36 × 18) over the generalized force `u = τ + Σ J_fᵀ λ_f` (the joints' torques and the feet's
+/// forces together, the feet's Jacobians held at the posture: the usual first-order model of
+/// one step). Semi-implicit Euler, `v⁺ = v + dt a(q, v, u)`, `q⁺ = q ⊕ dt v⁺`; at `v = 0`
+/// `∂(q ⊕ dt v⁺)/∂q` is the identity, so
+/// `A = [[1 + dt² ∂a/∂q, dt 1 + dt² ∂a/∂v], [dt ∂a/∂q, 1 + dt ∂a/∂v]]`,
+/// `B = [[dt² M⁻¹], [dt M⁻¹]]`, with `∂a/∂q`, `∂a/∂v`, `∂a/∂u = M⁻¹` Pinocchio's
+/// `computeABADerivatives` (`derivatives = true`).
+type StepMatrix = SMatrix<f64, { 2 * NV }, { 2 * NV }>;
+
+/// One linearisation about the posture `q` at rest, for an MPC step of `DT`; it checks itself.
+fn linearise_for_one_mpc_step(q: &[f64; 19]) {
+    let zero = [0.0; NV];
+    let u = Solo12.generalized_gravity(q);
     let d = Solo12
-        .forward_dynamics_derivatives(&q, &zero, &u)
+        .forward_dynamics_derivatives(q, &zero, &u)
         .expect("M is positive definite");
-    let dt = 0.01;
-    let step = SMatrix::<f64, { 2 * NV }, { 2 * NV }>::from_fn(|r, c| {
+    let step = StepMatrix::from_fn(|r, c| {
         let (row, col) = (r % NV, c % NV);
-        let identity = if r == c { 1.0 } else { 0.0 };
         let da = if c < NV {
             d.dqdd_dq[row][col]
         } else {
             d.dqdd_dqd[row][col]
         };
-        let dq_dv = if r < NV && c == r + NV { dt } else { 0.0 };
-        identity + dq_dv + if r < NV { dt * dt * da } else { dt * da }
+        let identity = f64::from(u8::from(r == c)) + if r < NV && c == r + NV { DT } else { 0.0 };
+        identity + if r < NV { DT * DT * da } else { DT * da }
     });
     let input = SMatrix::<f64, { 2 * NV }, NV>::from_fn(|r, c| {
-        (if r < NV { dt * dt } else { dt }) * d.dqdd_dtau[r % NV][c]
+        (if r < NV { DT * DT } else { DT }) * d.dqdd_dtau[r % NV][c]
     });
-    println!("\n  one MPC step, linearised about the posture (dt = {dt} s): x⁺ = A x + B u,");
+    println!("\n  one MPC step, linearised about the posture (dt = {DT} s): x⁺ = A x + B u,");
+    let (a, b) = (step.shape(), input.shape());
     println!(
         "  A {}×{}, B {}×{}; a = {:.1e} at the posture",
-        step.nrows(),
-        step.ncols(),
-        input.nrows(),
-        input.ncols(),
+        a.0,
+        a.1,
+        b.0,
+        b.1,
         max_abs(&d.qdd)
     );
     // Tilting the base turns gravity in its frame and accelerates every body alike: the
@@ -154,55 +168,21 @@ fn main() {
     for row in &d.dqdd_dq[..3] {
         println!("    {:8.4} {:8.4} {:8.4}", row[3], row[4], row[5]);
     }
-    let tilt = max_abs(
-        &d.dqdd_dq[3..]
-            .iter()
-            .flat_map(|r| r[3..6].to_vec())
-            .collect::<Vec<_>>(),
-    );
-    assert!(
-        (d.dqdd_dq[0][4] - G).abs() < 1e-9 && (d.dqdd_dq[1][3] + G).abs() < 1e-9 && tilt < 1e-9
-    );
-    // The linearisation against central differences of the forward dynamics along the tangent.
-    let error = (0..NV)
-        .map(|j| {
-            let h = 1e-6;
-            let mut e = zero;
-            e[j] = h;
-            let plus = Solo12
-                .forward_dynamics(&Solo12.integrate(&q, &e), &zero, &u)
-                .unwrap();
-            e[j] = -h;
-            let minus = Solo12
-                .forward_dynamics(&Solo12.integrate(&q, &e), &zero, &u)
-                .unwrap();
-            (0..NV)
-                .map(|i| ((plus[i] - minus[i]) / (2.0 * h) - d.dqdd_dq[i][j]).abs())
-                .fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max);
+    let others: Vec<f64> = d.dqdd_dq[3..]
+        .iter()
+        .flat_map(|r| r[3..6].to_vec())
+        .collect();
+    assert!((d.dqdd_dq[0][4] - G).abs() < 1e-9 && (d.dqdd_dq[1][3] + G).abs() < 1e-9);
+    assert!(max_abs(&others) < 1e-9);
+    let error = central_differences_error(q, &u, &d.dqdd_dq);
     println!("  ∂a/∂q against central differences along integrate: {error:.1e}");
-    // One step of the nonlinear dynamics from the posture tilted about x, u held, beside A x:
-    // their gap is second order in the tilt (a tenth of the tilt, a hundredth of the gap).
-    let one_step =
-        |tilt: f64| {
-            let mut x = SVector::<f64, { 2 * NV }>::zeros();
-            x[3] = tilt;
-            let tilted = Solo12.integrate(&q, &core::array::from_fn(|i| x[i]));
-            let a = Solo12.forward_dynamics(&tilted, &zero, &u).unwrap();
-            let v_next: [f64; NV] = core::array::from_fn(|i| dt * a[i]);
-            let q_next = Solo12.integrate(&tilted, &core::array::from_fn(|i| dt * v_next[i]));
-            let dq_next = Solo12.difference(&q, &q_next);
-            let nonlinear = SVector::<f64, { 2 * NV }>::from_fn(|i, _| {
-                if i < NV {
-                    dq_next[i]
-                } else {
-                    v_next[i - NV]
-                }
-            });
-            (nonlinear[NV + 1], (step * x - nonlinear).amax())
-        };
-    let ((v_y, gap), (_, smaller)) = (one_step(1e-2), one_step(1e-3));
+    assert!(
+        error < 1e-5,
+        "∂a/∂q is {error:e} from its central differences"
+    );
+    // One nonlinear step from the posture tilted about x, u held, beside A x: the gap is second
+    // order in the tilt (a tenth of the tilt, a hundredth of the gap).
+    let ((v_y, gap), (_, smaller)) = (one_step(q, &u, &step, 1e-2), one_step(q, &u, &step, 1e-3));
     println!(
         "  one step from a 0.01 rad tilt about x: v_y⁺ = {v_y:.6} m/s, |A x − step| = {gap:.1e}"
     );
@@ -211,15 +191,43 @@ fn main() {
         smaller * 50.0 < gap && gap < 1e-4,
         "the linear step is {gap:e} from the nonlinear one"
     );
+}
 
-    assert!(
-        error < 1e-5,
-        "∂a/∂q is {error:e} from its central differences"
-    );
+/// The largest gap between `∂a/∂q` and central differences of the forward dynamics at `u`
+/// along `integrate`, at rest.
+fn central_differences_error(q: &[f64; 19], u: &[f64; NV], dqdd_dq: &[[f64; NV]; NV]) -> f64 {
+    let (zero, h) = ([0.0; NV], 1e-6);
+    let at = |j: usize, h: f64| {
+        let mut e = zero;
+        e[j] = h;
+        Solo12
+            .forward_dynamics(&Solo12.integrate(q, &e), &zero, u)
+            .unwrap()
+    };
+    (0..NV)
+        .flat_map(|j| {
+            let (plus, minus) = (at(j, h), at(j, -h));
+            (0..NV).map(move |i| ((plus[i] - minus[i]) / (2.0 * h) - dqdd_dq[i][j]).abs())
+        })
+        .fold(0.0, f64::max)
+}
 
-    println!("\nchecks passed: the feet carry the weight, the base needs no wrench, the held");
-    println!("feet keep the robot at rest (a = 0) with the same forces, the momentum is m v,");
-    println!("the linearisation matches central differences");
+/// One nonlinear step of `DT` from `q` tilted by `tilt` about the base's x, at rest, `u` held:
+/// the base's `v_y⁺`, and the largest gap between `A x` and the step, `x` the tilt.
+fn one_step(q: &[f64; 19], u: &[f64; NV], step: &StepMatrix, tilt: f64) -> (f64, f64) {
+    let zero = [0.0; NV];
+    let mut x = SVector::<f64, { 2 * NV }>::zeros();
+    x[3] = tilt;
+    let tilted = Solo12.integrate(q, &core::array::from_fn(|i| x[i]));
+    let a = Solo12.forward_dynamics(&tilted, &zero, u).unwrap();
+    let v_next: [f64; NV] = core::array::from_fn(|i| DT * a[i]);
+    let q_next = Solo12.integrate(&tilted, &core::array::from_fn(|i| DT * v_next[i]));
+    let dq_next = Solo12.difference(q, &q_next);
+    let nonlinear =
+        SVector::<f64, { 2 * NV }>::from_fn(
+            |i, _| if i < NV { dq_next[i] } else { v_next[i - NV] },
+        );
+    (nonlinear[NV + 1], (step * x - nonlinear).amax())
 }
 
 /// The minimum-norm forces on the four feet, in world axes, whose wrench on the base is the
