@@ -10,6 +10,7 @@ use super::names::{local, CONFIGURATION_FN, CONFIGURATION_STRUCT, MOTION_FN, MOT
 use super::names::{OUTPUT, PARAMETERS};
 use super::parts::{Context, OpCount, Output, Part, Shared};
 use super::program::emit_with;
+use super::rows::part_function;
 use crate::method::{Argument, Family, Method};
 use crate::trace::Equations;
 use proc_macro2::{Delimiter, Group, Ident, Span, TokenStream, TokenTree};
@@ -373,7 +374,8 @@ impl Generated {
                 .chain(motion_item),
         );
         let parts = module.parts.iter();
-        inner.extend(parts.map(|part| self.part_function(part, krate)));
+        let (k, counts) = (self.fields.len(), self.counts());
+        inner.extend(parts.map(|part| part_function(part, k, &counts, krate)));
         inner.extend(bodies);
         let head = quote! {
             /// The generated functions, out of reach of the names around the derive.

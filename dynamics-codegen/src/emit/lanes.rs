@@ -16,7 +16,6 @@ use super::emitter::Emitter;
 use super::expr::let_statement;
 use super::names::{local, OUTPUT};
 use super::plan::Place;
-use super::rows::kept_factors;
 use crate::symbolic::{NodeId, Of, Tangents, Term};
 use crate::trace::Shape;
 use core::ops::Range;
@@ -335,4 +334,18 @@ impl Emitter<'_> {
             .collect();
         quote!([#(#matrices),*])
     }
+}
+
+/// The scalar nodes the lanes `kept` read as factors: what a group's function computes.
+pub(super) fn kept_factors(plans: &[Option<Tangents>], kept: &[Vec<bool>]) -> Vec<NodeId> {
+    let mut all: Vec<NodeId> = plans
+        .iter()
+        .zip(kept)
+        .filter_map(|(plan, kept)| plan.as_ref().map(|plan| (plan, kept)))
+        .flat_map(|(plan, kept)| plan.lanes.iter().zip(kept).filter(|(_, &k)| k))
+        .flat_map(|(lane, _)| lane.terms.iter().flat_map(|t| t.factors.iter().copied()))
+        .collect();
+    all.sort_unstable();
+    all.dedup();
+    all
 }

@@ -15,9 +15,8 @@
 use super::count::count;
 use super::emitter::Emitter;
 use super::expr::with_body;
-use super::impls::{call_arguments, signature};
-use super::items::Generated;
-use super::lanes::lane_operations;
+use super::impls::{call_arguments, signature, Counts};
+use super::lanes::{kept_factors, lane_operations};
 use super::names::{local, OUTPUT, PARAMETERS};
 use super::parts::{Body, Context, OpCount, Output, Part};
 use crate::symbolic::tangent::FETCH_BOUND_OPERATIONS;
@@ -102,20 +101,6 @@ pub(super) fn kept_lanes(plans: &[Option<Tangents>], rows: &[bool]) -> Vec<Vec<b
         .collect()
 }
 
-/// The scalar nodes the lanes `kept` read as factors: what a group's function computes.
-pub(super) fn kept_factors(plans: &[Option<Tangents>], kept: &[Vec<bool>]) -> Vec<NodeId> {
-    let mut all: Vec<NodeId> = plans
-        .iter()
-        .zip(kept)
-        .filter_map(|(plan, kept)| plan.as_ref().map(|plan| (plan, kept)))
-        .flat_map(|(plan, kept)| plan.lanes.iter().zip(kept).filter(|(_, &k)| k))
-        .flat_map(|(lane, _)| lane.terms.iter().flat_map(|t| t.factors.iter().copied()))
-        .collect();
-    all.sort_unstable();
-    all.dedup();
-    all
-}
-
 /// The lanes' branch of `output`'s body: its result's zeros, each group's function called on
 /// them (`parts`), the result returned.
 pub(super) fn split(eq: &Equations, ctx: &Context, output: &Output, parts: &[Part]) -> Body {
@@ -173,20 +158,23 @@ impl Emitter<'_> {
     }
 }
 
-impl Generated {
-    /// Group `part`'s function, storing its rows into the caller's `y_`: `#[inline(never)]`,
-    /// so that each is compiled, and fetched, on its own.
-    pub(super) fn part_function(&self, part: &Part, krate: &TokenStream) -> TokenStream {
-        let name = part_name(part);
-        let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
-        let scalar = Ident::new("T", Span::call_site());
-        let (args, ret) = signature(part.method, &self.counts(), &scalar, krate, true);
-        let head = quote! {
-            #[inline(never)]
-            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
-        };
-        with_body(head, part.tokens.clone())
-    }
+/// Group `part`'s function, storing its rows into the caller's `y_`: `#[inline(never)]`,
+/// so that each is compiled, and fetched, on its own. `k` is the parameters' count.
+pub(super) fn part_function(
+    part: &Part,
+    k: usize,
+    counts: &Counts,
+    krate: &TokenStream,
+) -> TokenStream {
+    let name = part_name(part);
+    let (p, y) = (local(PARAMETERS), local(OUTPUT));
+    let scalar = Ident::new("T", Span::call_site());
+    let (args, ret) = signature(part.method, counts, &scalar, krate, true);
+    let head = quote! {
+        #[inline(never)]
+        pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+    };
+    with_body(head, part.tokens.clone())
 }
 
 /// Disjoint sets of directions (union-find).

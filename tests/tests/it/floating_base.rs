@@ -6,8 +6,8 @@
 use dynamics_reference::scaled_error;
 use dynamics_runtime::FloatingDynamics;
 
-/// The bar: 1e-12, scaled by max(1, the largest element).
-const TOLERANCE: f64 = 1e-12;
+/// The bar: 1e-12, scaled by max(1, the largest element); the floating tests share it.
+pub(crate) const TOLERANCE: f64 = 1e-12;
 
 /// Solo 12, its root link the floating body, its four feet (the leaf links) the frames of its
 /// kinematics: the one derive of it that the floating tests share (each derive costs the
@@ -33,6 +33,14 @@ struct AnymalB;
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
 struct G1;
+
+/// The numbers of `x`, a list or a list of lists, flattened.
+pub(crate) fn flat(x: &serde_json::Value) -> Vec<f64> {
+    match x.as_array() {
+        Some(items) => items.iter().flat_map(flat).collect(),
+        None => vec![x.as_f64().expect("a number")],
+    }
+}
 
 pub(crate) fn numbers(x: &serde_json::Value) -> Vec<f64> {
     x.as_array()

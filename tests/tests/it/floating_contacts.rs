@@ -5,12 +5,9 @@
 //! 1e-12 scaled by the largest element of each; and the constraint itself, `J a + J̇ v = 0` at
 //! the feet in contact, and `τ` given back by inverse dynamics with the contact forces.
 
-use super::floating_base::{array, numbers, reference, Solo12};
+use super::floating_base::{array, numbers, reference, Solo12, TOLERANCE};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{ContactError, FloatingContacts, FloatingDynamics, FloatingKinematics};
-
-/// The bar: 1e-12, scaled by max(1, the largest element).
-const TOLERANCE: f64 = 1e-12;
 
 fn check(what: &str, got: &[f64], expected: &[f64]) {
     assert_eq!(got.len(), expected.len(), "{what}: the length");

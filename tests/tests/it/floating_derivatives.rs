@@ -5,7 +5,7 @@
 //! element; the derivatives by `q` along the tangent (`integrate`), the base moved in its own
 //! frame. And the batch form against one call per state.
 
-use super::floating_base::{array, numbers, reference};
+use super::floating_base::{array, flat, numbers, reference, TOLERANCE};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{
     FloatingDynamicsDerivatives, FloatingDynamicsDerivativesBatch, NotPositiveDefinite,
@@ -37,17 +37,6 @@ struct AnymalB;
     derivatives = true
 )]
 struct G1;
-
-/// The bar: 1e-12, scaled by max(1, the largest element).
-const TOLERANCE: f64 = 1e-12;
-
-fn flat(x: &serde_json::Value) -> Vec<f64> {
-    x.as_array()
-        .expect("rows")
-        .iter()
-        .flat_map(numbers)
-        .collect()
-}
 
 fn flatten<const N: usize>(m: &[[f64; N]; N]) -> Vec<f64> {
     m.iter().flatten().copied().collect()

@@ -2,20 +2,9 @@
 //! batch forms: Solo 12 against Pinocchio 4.1's `aba` and `computeMinverse`
 //! (`tests/data/floating/solo12.json`, by `make.py`), to 1e-12 scaled.
 
-use super::floating_base::{array, numbers, reference, Solo12};
+use super::floating_base::{array, flat, numbers, reference, Solo12, TOLERANCE};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{FloatingDynamics, FloatingDynamicsBatch, NotPositiveDefinite};
-
-/// The bar: 1e-12, scaled by max(1, the largest element).
-const TOLERANCE: f64 = 1e-12;
-
-fn flat(x: &serde_json::Value) -> Vec<f64> {
-    x.as_array()
-        .expect("rows")
-        .iter()
-        .flat_map(numbers)
-        .collect()
-}
 
 fn samples() -> Vec<serde_json::Value> {
     reference("solo12")["samples"]

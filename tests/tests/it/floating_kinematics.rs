@@ -4,24 +4,13 @@
 //! and its Jacobian, `A_G`, `Ȧ_G v`, and each foot's pose, Jacobian and classical `J̇ v` in
 //! LOCAL and LOCAL_WORLD_ALIGNED, to 1e-12 scaled by the largest element of each.
 
-use super::floating_base::Solo12;
+use super::floating_base::{flat, Solo12, TOLERANCE};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{FloatingKinematics, Pose};
-
-/// The bar: 1e-12, scaled by max(1, the largest element).
-const TOLERANCE: f64 = 1e-12;
 
 fn json(file: &str) -> serde_json::Value {
     let path = format!("{}/data/floating/{file}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_str(&std::fs::read_to_string(path).expect("the data")).expect("JSON")
-}
-
-/// The numbers of `x`, a list or a list of lists, flattened.
-fn flat(x: &serde_json::Value) -> Vec<f64> {
-    match x.as_array() {
-        Some(items) => items.iter().flat_map(flat).collect(),
-        None => vec![x.as_f64().expect("a number")],
-    }
 }
 
 fn check(what: &str, got: Vec<f64>, expected: &serde_json::Value) {

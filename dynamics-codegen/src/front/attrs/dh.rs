@@ -114,7 +114,7 @@ fn joint(reader: &mut Reader, n: usize, row: &DhRowAttr, attrs: &Attrs, span: Sp
     let d = offset(reader.errors, d);
     let a = reader.value(Some(a));
     let alpha = snap_angle(&reader.value(Some(alpha)));
-    let link = reader.link(n, *row_span, attrs, span);
+    let link = reader.link((n, *row_span), &attrs.links, attrs.check_inertia, span);
     Joint::dh(kind, [theta, d, a, alpha], link)
 }
 

@@ -5,7 +5,7 @@
 //! in its base frame (frame 0); a description file as its `[floating]` table.
 
 use super::entry::{string, Entry};
-use super::parse::{parse_link, LinkAttr};
+use super::link::{parse_link, LinkAttr};
 use super::reader::Reader;
 use crate::front::errors::Errors;
 use crate::front::fields::Field;

@@ -141,7 +141,7 @@ fn joint(reader: &mut Reader, n: usize, j: &JointAttr, attrs: &Attrs, span: Span
         Some((v, _)) => reader.values(v),
         None => [Value::zero(), Value::zero(), Value::one()],
     };
-    let link = reader.link(n, j.span, attrs, span);
+    let link = reader.link((n, j.span), &attrs.links, attrs.check_inertia, span);
     let frame = AxisFrame {
         origin: Placement { xyz, rpy },
         axis,

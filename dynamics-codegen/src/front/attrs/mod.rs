@@ -2,11 +2,11 @@
 //! `joints = [..]` in place of `dh`) lowered to a [`Robot`] with the tokens of each value.
 //!
 //! The steps, one file each, each using only those before it: `keys` names every key once;
-//! `entry` reads the value after a key; `friction` and `joints` read `friction = (..)` and
-//! `joints = [..]`; `parse` reads every key of the attribute into [`Attrs`], still as tokens;
-//! `reader` turns values into model values, checked where they are written, and a `link(..)`
-//! into a [`crate::model::Link`]; `dh` and `frames` build the joints of a D-H table or of a
-//! joint list, the latter then lowered to its own D-H table. The physical checks of the links
+//! `entry` reads the value after a key; `friction`, `link` and `joints` read
+//! `friction = (..)`, `link(..)` and `joints = [..]`; `parse` reads every key of the attribute
+//! into [`Attrs`], still as tokens; `reader` turns values into model values, checked where they
+//! are written, and a `link(..)` into a [`crate::model::Link`]; `dh` and `frames` build the
+//! joints of a D-H table or of a joint list, the latter then lowered to its own D-H table. The physical checks of the links
 //! are not made here: [`tell`] places their problems on these tokens afterwards.
 
 mod dh;
@@ -16,6 +16,7 @@ mod frames;
 mod friction;
 mod joints;
 mod keys;
+mod link;
 mod mimic;
 mod parse;
 mod reader;
@@ -66,7 +67,7 @@ pub(super) fn lower(
             Vec::new()
         }
     };
-    let tool = reader.tool(attrs);
+    let tool = reader.tool(attrs.tool.as_ref());
     let mut robot = Robot {
         name: input.ident.to_string(),
         convention: attrs.convention.map_or(Convention::Standard, |c| c.0),

@@ -3,13 +3,12 @@
 //! and parsing goes on with the next key, so that one build reports every mistake.
 
 use super::entry::{
-    boolean, parse_convention, parse_dh, parse_spring, skip_entry, string, strings, values,
-    DhRowAttr, Entry,
+    boolean, parse_convention, parse_dh, skip_entry, string, strings, values, DhRowAttr, Entry,
 };
 use super::floating::{parse_base, FloatingAttr};
-use super::friction::{parse_friction, FrictionAttr};
 use super::joints::{parse_joints, JointAttr};
-use super::keys::{Key, LinkKey};
+use super::keys::Key;
+use super::link::{parse_link, LinkAttr, KEEP};
 use super::simplify::parse_simplify;
 use crate::front::errors::{unknown_key, Errors};
 use crate::front::simplify::given::Given;
@@ -20,25 +19,6 @@ use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::parse::ParseStream;
 use syn::{parenthesized, Ident, LitStr, Token};
-
-/// The keys of one `link(...)`.
-#[derive(Default)]
-pub(super) struct LinkAttr {
-    /// The `link` keyword.
-    pub span: Option<Span>,
-    pub mass: Option<Spanned>,
-    pub com: Option<[Spanned; 3]>,
-    /// The six values and the span of their brackets.
-    pub inertia: Option<([Spanned; 6], Span)>,
-    pub actuator_inertia: Option<Spanned>,
-    pub spring: Option<(Spanned, Spanned)>,
-    pub check_inertia: Option<bool>,
-    pub friction: Option<FrictionAttr>,
-    pub rotor_inertia: Option<Spanned>,
-    pub gear_ratio: Option<Spanned>,
-    /// Whether an unknown key was given (perhaps a misspelt `mass`).
-    pub unknown_key: bool,
-}
 
 /// The keys of every `#[dynamics(...)]` of the input.
 #[derive(Default)]
@@ -171,10 +151,6 @@ const ATTRIBUTE: &str = "dynamics attribute";
 const BOTH_TABLES: &str = "`dh` and `joints` cannot be combined: give the joints either as a \
                            D-H table (`dh = [[θ, d, a, α], ...]`) or by placements and axes \
                            (`joints = [revolute(xyz = [..], rpy = [..], axis = [..]), ...]`)";
-/// What the keys of `link(...)` are called in messages.
-const LINK_ATTRIBUTE: &str = "link attribute";
-/// What `check_inertia` does, for an error in its value.
-const KEEP: &str = "`check_inertia = false` keeps an inertia tensor that fails the physical checks";
 
 /// Parses the keys of one `#[dynamics(...)]` into `attrs`.
 pub(in crate::front) fn parse_attrs(
@@ -317,70 +293,6 @@ fn parse_attr(
         }
         // Read above: a `link(...)` has no `=`.
         Key::Link => {}
-    }
-    Ok(())
-}
-
-/// Parses the keys of one `link(...)`, whose keyword is at `span`.
-pub(super) fn parse_link(
-    input: ParseStream,
-    span: Span,
-    errors: &mut Errors,
-) -> syn::Result<LinkAttr> {
-    let mut link = LinkAttr {
-        span: Some(span),
-        ..LinkAttr::default()
-    };
-    while !input.is_empty() {
-        let ident: Ident = input.parse()?;
-        if let Some(key) = LinkKey::find(&ident) {
-            input.parse::<Token![=]>()?;
-            parse_link_attr(input, key, &ident, &mut link, errors)?;
-        } else {
-            let message = unknown_key(&ident, LINK_ATTRIBUTE, LinkKey::NAMES);
-            errors.push(ident.span(), message);
-            link.unknown_key = true;
-            skip_entry(input)?;
-        }
-        if !input.is_empty() {
-            input.parse::<Token![,]>()?;
-        }
-    }
-    Ok(link)
-}
-
-/// Parses the value after `key =` (written as `ident`) into its slot of `link`.
-fn parse_link_attr(
-    input: ParseStream,
-    key: LinkKey,
-    ident: &Ident,
-    link: &mut LinkAttr,
-    errors: &mut Errors,
-) -> syn::Result<()> {
-    let mut entry = Entry {
-        ident,
-        what: LINK_ATTRIBUTE,
-        errors,
-    };
-    match key {
-        LinkKey::Mass => entry.keep_first(&mut link.mass, input.parse()?),
-        LinkKey::Com => {
-            let (com, _) = values::<3>(input, "`com = [x, y, z]`")?;
-            entry.keep_first(&mut link.com, com);
-        }
-        LinkKey::Inertia => {
-            let inertia = values::<6>(input, "`inertia = [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]`")?;
-            entry.keep_first(&mut link.inertia, inertia);
-        }
-        LinkKey::ActuatorInertia => entry.keep_first(&mut link.actuator_inertia, input.parse()?),
-        LinkKey::Spring => entry.keep_first(&mut link.spring, parse_spring(input)?),
-        LinkKey::CheckInertia => entry.keep_first(&mut link.check_inertia, boolean(input, KEEP)?),
-        LinkKey::Friction => {
-            let friction = parse_friction(input, entry.errors)?;
-            entry.keep_first(&mut link.friction, friction);
-        }
-        LinkKey::RotorInertia => entry.keep_first(&mut link.rotor_inertia, input.parse()?),
-        LinkKey::GearRatio => entry.keep_first(&mut link.gear_ratio, input.parse()?),
     }
     Ok(())
 }

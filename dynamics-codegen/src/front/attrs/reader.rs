@@ -4,7 +4,7 @@
 //! joint list against the `link(...)` entries. The physical checks of the links come later,
 //! in the one pass every input goes through.
 
-use super::parse::{Attrs, LinkAttr};
+use super::link::LinkAttr;
 use crate::check;
 use crate::front::errors::Errors;
 use crate::front::fields::{check_names, Field};
@@ -90,8 +90,8 @@ impl<'a> Reader<'a> {
     }
 
     /// The tool frame in the hand frame, `tool = [x, y, z, roll, pitch, yaw]`.
-    pub(super) fn tool(&mut self, attrs: &Attrs) -> Option<Placement> {
-        attrs.tool.as_ref().map(|t| {
+    pub(super) fn tool(&mut self, tool: Option<&[Spanned; 6]>) -> Option<Placement> {
+        tool.map(|t| {
             let [x, y, z, roll, pitch, yaw] = self.values(t);
             Placement::written([x, y, z], [roll, pitch, yaw])
         })
@@ -99,10 +99,16 @@ impl<'a> Reader<'a> {
 
     /// The link of joint `n` (1-based), whose entry (`type`) is at `entry`, from its
     /// `link(...)`, zero where it gives no value; its inertia is checked unless its own
-    /// `check_inertia`, or else the derive's, is false. `span` is the derive's name, for a
-    /// missing mass.
-    pub(super) fn link(&mut self, n: usize, entry: Span, attrs: &Attrs, span: Span) -> Link {
-        let given = attrs.links.get(n - 1);
+    /// `check_inertia`, or else the derive's `check_inertia`, is false. `span` is the
+    /// derive's name, for a missing mass.
+    pub(super) fn link(
+        &mut self,
+        (n, entry): (usize, Span),
+        links: &[LinkAttr],
+        check_inertia: Option<bool>,
+        span: Span,
+    ) -> Link {
+        let given = links.get(n - 1);
         let mut places = given.map(places).unwrap_or_default();
         places.insert("type".into(), (entry, entry));
         self.sources.joints.push(places);
@@ -111,7 +117,7 @@ impl<'a> Reader<'a> {
             return Link::default();
         };
         let link = self.link_values(n, given, span);
-        let checked = given.check_inertia.or(attrs.check_inertia).unwrap_or(true);
+        let checked = given.check_inertia.or(check_inertia).unwrap_or(true);
         self.check_inertia
             .push(checked && link.inertia.iter().all(finite));
         // A non-finite literal was reported where it is written: the checks do not report it
