@@ -2,7 +2,8 @@
 //! (`robots/floating/solo12.toml`, written from its URDF by `robots/floating/from_urdf.py`)
 //! against Pinocchio 4.1 (`tests/data/floating/solo12.json`), and a two-legged toy given as a
 //! URDF, a `joints = [..]` list and a Khalil-Kleinfinger D-H table, the floating body in the
-//! attribute's `base = floating(mass = .., com = [..], inertia = [..])`: the same M, h, τ, g.
+//! attribute's `base = floating(mass = .., com = [..], inertia = [..])`: the same M, h, τ, g;
+//! and the toy with no joint's axis along its frame's z, as a URDF and a joint list.
 
 use super::floating_base::{check_against_pinocchio, reference, Solo12};
 use dynamics_reference::scaled_error;
@@ -69,6 +70,31 @@ struct TwoLegsJoints;
 )]
 struct TwoLegsDh;
 
+/// The toy with its hips turning about x and its knees about y, the hips' frames turned: no
+/// joint's axis is its frame's z, so the joint list's lowering puts a fixed frame before each
+/// leg's first D-H frame, on the floating body.
+#[derive(dynamics_runtime::Dynamics)]
+#[dynamics(urdf = "data/floating/two_legs_tilted.urdf", base = floating)]
+struct TiltedUrdf;
+
+/// The tilted toy as a list of joints.
+#[derive(dynamics_runtime::Dynamics)]
+#[dynamics(
+    base = floating(mass = 2, com = [0.01, 0.02, -0.03], inertia = [0.02, 0.03, 0.04, 0.001, 0, 0.002]),
+    gravity = [0, 0, -9.81],
+    joints = [
+        revolute(xyz = [0.1, 0.05, -0.02], rpy = [0.3 rad, 0, 0.2 rad], axis = [1, 0, 0], parent = 0),
+        revolute(xyz = [0, 0, -0.2], axis = [0, 1, 0]),
+        revolute(xyz = [-0.1, 0.05, -0.02], rpy = [0, -0.4 rad, 0], axis = [1, 0, 0], parent = 0),
+        revolute(xyz = [0, 0, -0.2], axis = [0, 1, 0]),
+    ],
+    link(mass = 0.5, com = [0.05, 0.01, 0], inertia = [0.001, 0.002, 0.003, 0.0001, 0, 0]),
+    link(mass = 0.3, com = [0.1, 0, 0.01], inertia = [0.0005, 0.001, 0.0012, 0, 0.0001, 0]),
+    link(mass = 0.5, com = [-0.05, 0.01, 0], inertia = [0.001, 0.002, 0.003, 0.0001, 0, 0]),
+    link(mass = 0.3, com = [-0.1, 0, 0.01], inertia = [0.0005, 0.001, 0.0012, 0, 0.0001, 0]),
+)]
+struct TiltedJoints;
+
 /// A state of the toy from `seed`: a unit quaternion, angles and rates in ±1.5 (a fixed
 /// linear congruential sequence, so that the test reads the same numbers every run).
 fn state(seed: u64) -> ([f64; 11], [f64; 10], [f64; 10]) {
@@ -116,5 +142,17 @@ fn a_joint_list_and_a_dh_table_on_a_floating_base_are_their_urdf() {
             let error = scaled_error(&got, &urdf);
             assert!(error < 1e-13, "seed {seed}: {what} off by {error:e}");
         }
+    }
+}
+
+#[test]
+fn a_joint_list_whose_axes_are_not_z_on_a_floating_base_is_its_urdf() {
+    for seed in 0..8 {
+        let x = state(seed);
+        let (urdf, joints) = (outputs(&TiltedUrdf, &x), outputs(&TiltedJoints, &x));
+        let error = scaled_error(&joints, &urdf);
+        assert!(error < 1e-13, "seed {seed}: off by {error:e}");
+        // Not the untilted toy: the axes matter.
+        assert!(scaled_error(&urdf, &outputs(&TwoLegsUrdf, &x)) > 1e-3);
     }
 }
