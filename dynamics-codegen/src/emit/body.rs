@@ -83,7 +83,9 @@ impl Emitter<'_> {
         let into = method.always_in_place()
             || (method.in_place_name().is_some() && self.returned_in_place);
         if into || self.returned_in_place {
-            if let Some((stores, zeros)) = self.write_in_place(shape, &output_names) {
+            if let Some((stores, zeros)) =
+                self.write_in_place(shape, &output_names, method == Method::FloatingMassMatrix)
+            {
                 statements.extend(stores);
                 let y = local(OUTPUT);
                 let (tokens, zeros) = if into {
