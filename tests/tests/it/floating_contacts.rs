@@ -7,7 +7,10 @@
 
 use super::floating_base::{array, numbers, reference, Solo12};
 use dynamics_reference::scaled_error;
-use dynamics_runtime::{ContactError, FloatingContacts, FloatingDynamics, FloatingKinematics};
+use dynamics_runtime::{
+    ContactDynamics, ContactError, ContactTerms, FloatingContactTerms, FloatingContacts,
+    FloatingDynamics, FloatingKinematics,
+};
 
 /// The bar: 1e-12, scaled by max(1, the largest element).
 const TOLERANCE: f64 = 1e-12;
@@ -156,4 +159,84 @@ fn contact_dynamics_edges() {
         .collect();
     let expected: Vec<f64> = double.forces.iter().flatten().copied().collect();
     assert!(scaled_error(&got, &expected) < 1e-2);
+}
+
+/// The generated contact terms against the products of the generated (and checked) `M⁻¹`,
+/// `h`, `J` and `J̇ v`: `a₀ = M⁻¹ (τ − h)`, `J a₀ + γ`, `M⁻¹ Jᵀ` and `J M⁻¹ Jᵀ`.
+#[test]
+fn closed_form_contact_terms() {
+    assert!(<Solo12 as FloatingContactTerms<19, 18, 4>>::CLOSED_FORM);
+    for (k, (s, _)) in samples().iter().enumerate() {
+        let (q, v, tau) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["v"]),
+            array::<18>(&s["tau"]),
+        );
+        let at = |what: &str| format!("sample {k}: {what}");
+        let terms = Solo12.contact_terms(&q, &v, &tau).expect("M");
+        let minv = Solo12.mass_matrix_inverse(&q).expect("M");
+        let free = Solo12.forward_dynamics(&q, &v, &tau).expect("M");
+        check(&at("a0"), &terms.free_acceleration, &free);
+        let jacobians = Solo12.frame_jacobians_world_aligned(&q);
+        let drifts = Solo12.frame_acceleration_biases_world_aligned(&q, &v);
+        let dot =
+            |a: &[f64; 18], b: &[f64; 18]| -> f64 { a.iter().zip(b).map(|(x, y)| x * y).sum() };
+        let minv_jt: Vec<[f64; 18]> = (0..12)
+            .map(|r| std::array::from_fn(|i| dot(&minv[i], &jacobians[r / 3][r % 3])))
+            .collect();
+        let got: Vec<f64> = terms.minv_jt.iter().flatten().flatten().copied().collect();
+        check(&at("M⁻¹ Jᵀ"), &got, &minv_jt.concat());
+        let delassus: Vec<f64> = (0..144)
+            .map(|e| dot(&jacobians[e / 36][e / 12 % 3], &minv_jt[e % 12]))
+            .collect();
+        let got: Vec<f64> = terms
+            .delassus
+            .iter()
+            .flatten()
+            .flatten()
+            .flatten()
+            .copied()
+            .collect();
+        check(&at("J M⁻¹ Jᵀ"), &got, &delassus);
+        let accelerations: Vec<f64> = (0..12)
+            .map(|r| dot(&jacobians[r / 3][r % 3], &free) + drifts[r / 3][r % 3])
+            .collect();
+        let got: Vec<f64> = terms
+            .frame_accelerations
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        check(&at("J a0 + γ"), &got, &accelerations);
+    }
+}
+
+/// Two frames held at one point, exactly: the block of `Λ⁻¹` `[[1, 1], [1, 1]]` (each entry
+/// a 3 × 3 identity) has a zero pivot in exact arithmetic, as in `f64`. One frame alone, or
+/// none, is solved: `λ = −(J a₀ + γ)`, `a = a₀ + M⁻¹ Jᵀ λ`.
+#[test]
+fn dependent_contacts() {
+    let identity: [[f64; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j))));
+    let terms = ContactTerms::<f64, 2, 2> {
+        free_acceleration: [1.0, 2.0],
+        frame_accelerations: [[1.0, 2.0, 3.0], [1.0, 2.0, 3.0]],
+        minv_jt: [[[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]; 2],
+        delassus: std::array::from_fn(|_| std::array::from_fn(|i| [identity[i]; 2])),
+    };
+    assert_eq!(
+        terms.solve(&[true; 2]),
+        Err(ContactError::DependentContacts)
+    );
+    assert_eq!(
+        terms.solve(&[false, true]),
+        Ok(ContactDynamics {
+            acceleration: [1.0 - 1.0 - 3.0, 2.0 - 2.0 - 3.0],
+            forces: [[0.0; 3], [-1.0, -2.0, -3.0]],
+        })
+    );
+    assert_eq!(
+        terms.solve(&[false; 2]).map(|d| d.acceleration),
+        Ok([1.0, 2.0])
+    );
 }
