@@ -5,7 +5,7 @@
 //! 1e-12 scaled by the largest element of each; and the constraint itself, `J a + J̇ v = 0` at
 //! the feet in contact, and `τ` given back by inverse dynamics with the contact forces.
 
-use super::floating_base::{array, numbers, reference, Solo12};
+use super::floating_base::{array, numbers, reference, AnymalB, Solo12};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{
     ContactDynamics, ContactError, ContactTerms, FloatingContactTerms, FloatingContacts,
@@ -239,4 +239,48 @@ fn dependent_contacts() {
         terms.solve(&[false; 2]).map(|d| d.acceleration),
         Ok([1.0, 2.0])
     );
+}
+
+/// Every foot held, on Solo 12 and ANYmal B, against Pinocchio's `constraintDynamics`
+/// (`<robot>_contact_fd.json`): the feet the same frames in the same order.
+fn every_foot_held<R: FloatingContacts<19, 18, 4>>(robot: &R, name: &str, frames: [&str; 4]) {
+    let data = reference(&format!("{name}_contact_fd"));
+    let names: Vec<&str> = data["frames"]
+        .as_array()
+        .expect("frames")
+        .iter()
+        .map(|f| f["name"].as_str().expect("a name"))
+        .collect();
+    assert_eq!(names, frames, "{name}");
+    let states = reference(name)["samples"]
+        .as_array()
+        .expect("samples")
+        .clone();
+    let samples = data["samples"].as_array().expect("samples");
+    assert_eq!(states.len(), samples.len());
+    for (k, (s, c)) in states.iter().zip(samples).enumerate() {
+        let (q, v, tau) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["v"]),
+            array::<18>(&s["tau"]),
+        );
+        let got = robot
+            .contact_dynamics(&q, &v, &tau, &[true; 4])
+            .expect("independent contacts");
+        let at = |what: &str| format!("{name} sample {k}: {what}");
+        check(&at("ddq"), &got.acceleration, &numbers(&c["a_contact"]));
+        let expected: Vec<f64> = rows::<3, 4>(&c["lambda"])
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        let forces: Vec<f64> = got.forces.iter().flatten().copied().collect();
+        check(&at("lambda"), &forces, &expected);
+    }
+}
+
+#[test]
+fn every_foot_held_against_pinocchio() {
+    every_foot_held(&Solo12, "solo12", Solo12::FRAME_NAMES);
+    every_foot_held(&AnymalB, "anymal_b", AnymalB::FRAME_NAMES);
 }
