@@ -11,8 +11,8 @@
 use super::expr::with_body;
 use super::impls::argument_local;
 use super::items::{Generated, PARAMETERS_FN};
-use super::program::emit;
-use super::{local, Context, Output, PARAMETERS};
+use super::program::{emit, Emission};
+use super::{local, Context, OpCount, Output, PARAMETERS};
 use crate::method::{Argument, Method};
 use crate::trace::{Equations, FloatingContactEquations, Shape};
 use proc_macro2::{Ident, Span, TokenStream};
@@ -32,24 +32,7 @@ pub fn floating_contacts_items(
     krate: &TokenStream,
     input: &syn::DeriveInput,
 ) -> TokenStream {
-    let ctx = Context {
-        parameters: local(PARAMETERS),
-        counted: false,
-    };
-    let stack = [out.rows.clone()];
-    let shape = Shape::SolvedStack {
-        pivots: &eq.forward.factors.pivots,
-        vector: &out.free,
-        stack: &stack,
-    };
-    let emission = emit(
-        eq,
-        &[Output {
-            method: CARRIER,
-            shape,
-        }],
-        &ctx,
-    );
+    let emission = emission(eq, out, false);
     let nv = eq.dof;
     let (width, rows) = (out.free.len(), out.rows.len());
     let generated = Generated {
@@ -91,6 +74,31 @@ pub fn floating_contacts_items(
         }
         #impls
     }
+}
+
+/// The emission of the one function, its operations `counted` or not.
+fn emission(eq: &Equations, out: &FloatingContactEquations, counted: bool) -> Emission {
+    let ctx = Context {
+        parameters: local(PARAMETERS),
+        counted,
+    };
+    let stack = [out.rows.clone()];
+    let shape = Shape::SolvedStack {
+        pivots: &eq.forward.factors.pivots,
+        vector: &out.free,
+        stack: &stack,
+    };
+    let output = Output {
+        method: CARRIER,
+        shape,
+    };
+    emit(eq, &[output], &ctx)
+}
+
+/// The operations of the emitted function (for `dynamics stats --floating`).
+#[must_use]
+pub fn floating_contacts_count(eq: &Equations, out: &FloatingContactEquations) -> OpCount {
+    emission(eq, out, true).bodies[0].ops
 }
 
 /// `impl FloatingContactTerms<NQ, NV, F>` with the closed form.
