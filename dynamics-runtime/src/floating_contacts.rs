@@ -159,7 +159,7 @@ pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
         tau: &[T; V],
         in_contact: &[bool; F],
     ) -> Result<ContactDynamics<T, V, F>, ContactError> {
-        Ok(self.contact_terms(q, v, tau)?.solve(in_contact)?)
+        self.contact_terms(q, v, tau)?.solve(in_contact)
     }
 }
 
