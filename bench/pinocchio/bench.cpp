@@ -918,7 +918,7 @@ int main(int argc, char ** argv)
       // A robot on a free-flying base (tests/data/floating/): its own checks and rows.
       if (file.has("floating_body"))
       {
-        run_floating(robot, file, generated.get(), checksum);
+        run_floating(robot, file, path, generated.get(), checksum);
         continue;
       }
       tree = file.has("parents");

@@ -19,7 +19,10 @@
 // data.M). Then `fd` (aba at the sample's (q, v, tau)) and `Minv` (computeMinverse, mirrored),
 // and the batch rows `tau_batch` (rneaInParallel on one thread) and `fd_batch` (abaInParallel),
 // per state, as the fixed robots' (`time_floating_batches`).
-// Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives).
+// Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives), and, where the robot has a
+// `<robot>_contact_fd.json` beside its file, `contact_fd` (run_floating_contacts).
+
+#include "pinocchio/algorithm/constrained-dynamics.hpp"
 
 // The largest departure of a sample's quaternion from unit length that is taken as unit.
 static const double UNIT_QUATERNION = 1e-12;
@@ -155,7 +158,90 @@ static void time_floating_batches(
   });
 }
 
-static void run_floating(const std::string & robot, const json::Value & file, const Generated * generated, double & checksum)
+// `contact_fd`: constraintDynamics with every foot of `<robot>_contact_fd.json` held (a
+// RigidConstraintModel CONTACT_3D in LOCAL_WORLD_ALIGNED on the foot's joint at its placement, no
+// Baumgarte; initConstraintDynamics once) at the samples' (q, v, tau), beside the generated
+// FloatingContacts::contact_dynamics with every frame in contact (bench/ffi: [a; lambda], lambda
+// a row of 3 per foot). Pinocchio's checked against the file, the generated against Pinocchio's,
+// then both timed in turn.
+static void run_floating_contacts(
+  const std::string & robot, const std::string & path, const Model & model,
+  const std::vector<Eigen::VectorXd> & qs, const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & taus, const Generated * generated, double & checksum)
+{
+  const std::string contact_path = path.substr(0, path.rfind(".json")) + "_contact_fd.json";
+  if (!std::ifstream(contact_path).good())
+    return;
+  const json::Value file = json::parse_file(contact_path);
+  const json::Value & frames = file["frames"], & samples = file["samples"];
+  if (samples.size() != qs.size())
+    throw std::runtime_error(robot + ": " + contact_path + " has not a sample per state");
+  pinocchio::RigidConstraintModelVector models;
+  for (std::size_t f = 0; f < frames.size(); ++f)
+  {
+    const json::Value & frame = frames[f];
+    Eigen::Matrix3d R;
+    for (Eigen::Index r = 0; r < 3; ++r)
+      for (Eigen::Index c = 0; c < 3; ++c)
+        R(r, c) = frame["rotation"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].number();
+    const std::string joint = frame["joint"].string();
+    if (!model.existJointName(joint))
+      throw std::runtime_error(robot + ": no joint " + joint + " for the foot " + frame["name"].string());
+    models.emplace_back(
+      pinocchio::CONTACT_3D, model, model.getJointId(joint), SE3(R, vec3(frame["translation"])),
+      pinocchio::LOCAL_WORLD_ALIGNED);
+  }
+  pinocchio::RigidConstraintDataVector datas;
+  for (const auto & m : models)
+    datas.emplace_back(m);
+  Data data(model);
+  pinocchio::initConstraintDynamics(model, data, models, datas);
+  pinocchio::ProximalSettings settings;
+  const std::size_t ns = qs.size(), nv = static_cast<std::size_t>(model.nv), nc = 3 * frames.size();
+  auto pin_output = [&](std::size_t k) {
+    pinocchio::constraintDynamics(model, data, qs[k], vs[k], taus[k], models, datas, settings);
+    Eigen::VectorXd out(nv + nc);
+    out << data.ddq, data.lambda_c;
+    return out;
+  };
+  for (std::size_t s = 0; s < ns; ++s)
+  {
+    // lambda a row of 3 per foot, one after the other (data.lambda_c's order).
+    const Eigen::MatrixXd lambda = matn(samples[s]["lambda"]).transpose();
+    Eigen::VectorXd want(nv + nc);
+    want << vecn(samples[s]["a_contact"]), Eigen::Map<const Eigen::VectorXd>(lambda.data(), lambda.size());
+    check(robot, "constraintDynamics", pin_output(s), want, s);
+  }
+  auto pin_timed = [&](std::size_t k) {
+    return pinocchio::constraintDynamics(model, data, qs[k], vs[k], taus[k], models, datas, settings)[0];
+  };
+  if (!generated || !generated->lookup(robot.c_str(), "contact_fd"))
+  {
+    std::printf("%s\tcontact_fd\t%.1f\n", robot.c_str(), median_ns(ns, pin_timed, checksum));
+    std::fflush(stdout);
+    return;
+  }
+  const GeneratedFunction f = generated->get(robot, "contact_fd");
+  std::vector<double> out(nv + nc + 1);
+  for (std::size_t s = 0; s < ns; ++s)
+  {
+    std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+    f(qs[s].data(), vs[s].data(), taus[s].data(), out.data());
+    if (!std::isnan(out[nv + nc]))
+      throw std::runtime_error(robot + ": the generated contact_fd writes past its output");
+    const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXd>(out.data(), static_cast<Eigen::Index>(nv + nc));
+    check(robot, "contact_fd (generated)", got, pin_output(s), s);
+  }
+  auto gen = [&](std::size_t k) {
+    f(qs[k].data(), vs[k].data(), taus[k].data(), out.data());
+    return out[0];
+  };
+  const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin_timed, gen, checksum);
+  std::printf("%s\tcontact_fd\t%.1f\t%.1f\n", robot.c_str(), pin_ns, gen_ns);
+  std::fflush(stdout);
+}
+
+static void run_floating(const std::string & robot, const json::Value & file, const std::string & path, const Generated * generated, double & checksum)
 {
   const Model model = build_model_from_pinocchio(file["pinocchio_model"]);
   if (model.joints[1].shortname() != "JointModelFreeFlyer")
@@ -260,4 +346,5 @@ static void run_floating(const std::string & robot, const json::Value & file, co
   if (with_generated)
     time_floating_batches(robot, *generated, model, qs, vs, as, taus, checksum);
   run_floating_derivatives(robot, model, data, samples, qs, vs, as, with_generated ? generated : nullptr, checksum);
+  run_floating_contacts(robot, path, model, qs, vs, taus, with_generated ? generated : nullptr, checksum);
 }

@@ -131,3 +131,42 @@ pub fn floating_derivative_samples<const V: usize>(
         })
         .collect()
 }
+
+/// Pinocchio's `constraintDynamics` with every foot held at the states of the
+/// [`FloatingSample`]s of the same index (`tests/data/floating/<robot>_contact_fd.json`): the
+/// feet's names, in the order of the robot's `FloatingKinematics` frames, and per state `a`
+/// and `λ` (a row per foot, the force on the robot in world axes).
+///
+/// # Panics
+/// If the file is missing or malformed, or its lengths are not `V` and `F`.
+#[must_use]
+pub fn floating_contact_samples<const V: usize, const F: usize>(
+    robot: &str,
+) -> ([String; F], Vec<([f64; V], [[f64; 3]; F])>) {
+    let text = super::read(&format!("floating/{robot}_contact_fd.json"));
+    let data: serde_json::Value =
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("contacts of {robot}: {e}"));
+    let names: Vec<String> = data["frames"]
+        .as_array()
+        .unwrap_or_else(|| panic!("contacts of {robot} have no frames"))
+        .iter()
+        .map(|f| f["name"].as_str().expect("a frame's name").to_owned())
+        .collect();
+    let samples = data["samples"]
+        .as_array()
+        .unwrap_or_else(|| panic!("contacts of {robot} have no samples"));
+    let samples = samples
+        .iter()
+        .map(|s| {
+            let rows: Vec<[f64; 3]> = s["lambda"]
+                .as_array()
+                .expect("a row per foot")
+                .iter()
+                .map(|r| super::vector::<3>(r, "lambda"))
+                .collect();
+            let rows = rows.try_into().expect("a row per foot");
+            (super::vector(&s["a_contact"], "a_contact"), rows)
+        })
+        .collect();
+    (names.try_into().expect("a name per foot"), samples)
+}

@@ -1,7 +1,7 @@
 //! Contacts at the named frames of a robot on a free-flying base (issue 43, item 3): inverse
 //! and forward dynamics with given contact wrenches, and the forward dynamics with 3-D point
-//! contacts held, for every robot that has both [`FloatingDynamics`] and
-//! [`FloatingKinematics`] (every `base = floating` derive). Written once over the generated
+//! contacts held, for every robot that has [`FloatingContactTerms`] (every `base = floating`
+//! derive, whose contact terms are generated in closed form). Written once over the generated
 //! methods, heap-free; see `docs/floating-base.md`.
 //!
 //! With `w_f` the wrench `[f, m]` that the environment exerts on the robot at frame `f`'s
@@ -21,11 +21,12 @@
 //! [J  0 ] [−λ]   [ −γ  ]        a = a₀ + M⁻¹ Jᵀ λ
 //! ```
 //!
-//! `J M⁻¹ Jᵀ` (the inverse of the operational-space inertia, 3F × 3F) is factored `L D Lᵀ` on
-//! the stack; its pivots are positive exactly when the contacts are independent (J of full row
-//! rank).
+//! `a₀`, `J a₀ + γ`, `M⁻¹ Jᵀ` and `J M⁻¹ Jᵀ` (the inverse of the operational-space inertia,
+//! 3F × 3F) come for every frame from [`FloatingContactTerms::contact_terms`]; the block of
+//! the frames in contact is factored `L D Lᵀ` on the stack; its pivots are positive exactly
+//! when the contacts are independent (J of full row rank).
 
-use crate::{FloatingDynamics, FloatingKinematics, NotPositiveDefinite, Real};
+use crate::{FloatingContactTerms, NotPositiveDefinite, Real};
 use core::fmt;
 
 /// Why [`FloatingContacts::contact_dynamics`] has no solution.
@@ -70,15 +71,16 @@ pub struct ContactDynamics<T, const V: usize, const F: usize> {
 
 /// Contact wrenches, forces and held point contacts at the `F` frames of
 /// [`FloatingKinematics`] (`tips = [..]`, else the leaf links: a quadruped's feet), indexed as
-/// its results (`Robot::FRAME_FL_FOOT`). Implemented for every robot with [`FloatingDynamics`]
-/// and [`FloatingKinematics`]; not generated (written once over their methods).
+/// its results (`Robot::FRAME_FL_FOOT`). Implemented for every robot with
+/// [`FloatingContactTerms`]; not generated (written once over its methods and those of
+/// `FloatingDynamics` and `FloatingKinematics`).
 ///
 /// Every wrench or force here is the one the **environment exerts on the robot**, at the
 /// frame's origin, in **world axes** (Pinocchio's LOCAL_WORLD_ALIGNED): a standing foot
 /// pushed up by the ground has `f_z > 0`. A wrench is `[f_x, f_y, f_z, m_x, m_y, m_z]`, its
 /// moment about the frame's origin.
 pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
-    FloatingDynamics<Q, V> + FloatingKinematics<Q, V, F>
+    FloatingContactTerms<Q, V, F>
 {
     /// `τ = M(q) a + h(q, v) − Σ_f J_fᵀ w_f`: the generalized forces that give `a` while the
     /// environment exerts the wrench `wrenches[f]` at frame `f` (Pinocchio's `rnea` with
@@ -157,61 +159,12 @@ pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
         tau: &[T; V],
         in_contact: &[bool; F],
     ) -> Result<ContactDynamics<T, V, F>, ContactError> {
-        let minv = self.mass_matrix_inverse(q)?;
-        let h = self.bias_forces(q, v);
-        let jacobians = self.frame_jacobians_world_aligned(q);
-        let drifts = self.frame_acceleration_biases_world_aligned(q, v);
-        let free = mat_vec(&minv, &core::array::from_fn(|i| tau[i] - h[i]));
-        // M⁻¹ J_fᵀ's columns, one per axis of a foot in contact (zero otherwise).
-        let minv_jt: [[[T; V]; 3]; F] = core::array::from_fn(|f| {
-            core::array::from_fn(|i| {
-                if in_contact[f] {
-                    sparse_mat_vec(&minv, &jacobians[f][i])
-                } else {
-                    [T::ZERO; V]
-                }
-            })
-        });
-        // The system (J M⁻¹ Jᵀ) λ = −(J a₀ + γ), a foot not in contact the identity's rows with
-        // a zero right side (λ_f = 0).
-        let mut system = [[[[T::ZERO; 3]; F]; 3]; F];
-        let mut rhs = [[T::ZERO; 3]; F];
-        for f in 0..F {
-            for i in 0..3 {
-                if !in_contact[f] {
-                    system[f][i][f][i] = T::ONE;
-                    continue;
-                }
-                rhs[f][i] = -(dot(&jacobians[f][i], &free) + drifts[f][i]);
-                // The lower triangle, mirrored: the system is symmetric.
-                for g in (0..=f).filter(|&g| in_contact[g]) {
-                    let columns = if g == f { i + 1 } else { 3 };
-                    for j in 0..columns {
-                        let x = dot(&jacobians[f][i], &minv_jt[g][j]);
-                        system[f][i][g][j] = x;
-                        system[g][j][f][i] = x;
-                    }
-                }
-            }
-        }
-        let forces = solve_contacts(system, rhs).ok_or(ContactError::DependentContacts)?;
-        let mut acceleration = free;
-        for (columns, force) in minv_jt.iter().zip(&forces) {
-            for (column, &lambda) in columns.iter().zip(force) {
-                for (x, &c) in acceleration.iter_mut().zip(column) {
-                    *x += c * lambda;
-                }
-            }
-        }
-        Ok(ContactDynamics {
-            acceleration,
-            forces,
-        })
+        self.contact_terms(q, v, tau)?.solve(in_contact)
     }
 }
 
 impl<R, const Q: usize, const V: usize, const F: usize> FloatingContacts<Q, V, F> for R where
-    R: FloatingDynamics<Q, V> + FloatingKinematics<Q, V, F>
+    R: FloatingContactTerms<Q, V, F>
 {
 }
 
@@ -235,18 +188,18 @@ fn point_wrenches<T: Real, const F: usize>(forces: &[[T; 3]; F]) -> [[T; 6]; F] 
     forces.map(|[x, y, z]| [x, y, z, T::ZERO, T::ZERO, T::ZERO])
 }
 
-fn dot<T: Real, const V: usize>(a: &[T; V], b: &[T; V]) -> T {
+pub(crate) fn dot<T: Real, const V: usize>(a: &[T; V], b: &[T; V]) -> T {
     a.iter().zip(b).fold(T::ZERO, |s, (&x, &y)| s + x * y)
 }
 
 /// `m x` for a symmetric `m` (`M⁻¹`): its rows are its columns.
-fn mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
+pub(crate) fn mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
     core::array::from_fn(|i| dot(&m[i], x))
 }
 
 /// `m x` for a symmetric `m` and an `x` of a frame's Jacobian row, which is zero at the
 /// joints of the other branches: those columns skipped (half of Solo 12's).
-fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
+pub(crate) fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
     let mut out = [T::ZERO; V];
     for (column, &x) in m.iter().zip(x) {
         if x != T::ZERO {
@@ -261,7 +214,7 @@ fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V
 /// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, row by
 /// row (each row of the system, `[[T; 3]; F]`, is 3F numbers in a row), on the stack; `None`
 /// where a pivot is not positive.
-fn solve_contacts<T: Real, const F: usize>(
+pub(crate) fn solve_contacts<T: Real, const F: usize>(
     mut system: [[[[T; 3]; F]; 3]; F],
     rhs: [[T; 3]; F],
 ) -> Option<[[T; 3]; F]> {

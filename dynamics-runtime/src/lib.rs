@@ -78,6 +78,7 @@ mod dynamics;
 pub mod batch;
 mod configuration;
 mod factor;
+mod floating_contact_terms;
 mod floating_contacts;
 mod floating_kinematics;
 pub mod lanes;
@@ -103,6 +104,7 @@ pub use crate::dynamics::{
     FloatingDynamics, FloatingDynamicsDerivatives, TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
+pub use crate::floating_contact_terms::{ContactTerms, FloatingContactTerms};
 pub use crate::floating_contacts::{ContactDynamics, ContactError, FloatingContacts};
 pub use crate::floating_kinematics::FloatingKinematics;
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};

@@ -7,12 +7,14 @@
 //! `tau_batch` and `fd_batch` take [`HORIZON`] states a call, as the fixed robots' do. And the first derivatives of
 //! `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the tangent, then `∂τ/∂v`:
 //! 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M is not positive
-//! definite; its third input `tau`).
+//! definite; its third input `tau`). `contact_fd`: `FloatingContacts::contact_dynamics` with every
+//! frame of `FloatingKinematics` held, `a` (V) then `λ` (3 per frame).
 
 use super::batch::{results, states, HORIZON};
 use super::{input, output, output_matrix, Function, Robot};
 use dynamics_runtime::{
-    FloatingDynamics, FloatingDynamicsBatch, FloatingDynamicsDerivatives, NotPositiveDefinite,
+    FloatingContacts, FloatingDynamics, FloatingDynamicsBatch, FloatingDynamicsDerivatives,
+    NotPositiveDefinite,
 };
 
 /// The timed functions of one robot type on a free-flying base, as C functions.
@@ -159,25 +161,52 @@ impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: us
     }
 }
 
+/// The forward dynamics with every one of the `F` frames held (`contact_fd`).
+struct Contacts<R, const Q: usize, const V: usize, const F: usize>(core::marker::PhantomData<R>);
+
+impl<R, const Q: usize, const V: usize, const F: usize> Contacts<R, Q, V, F>
+where
+    R: FloatingDynamicsDerivatives<Q, V> + FloatingContacts<Q, V, F> + Default,
+{
+    /// `FloatingContacts::contact_dynamics` with every frame in contact: `a` (V), then `λ`, a
+    /// row of 3 per frame (NaN where there is no solution).
+    unsafe extern "C" fn contact_fd(q: *const f64, v: *const f64, tau: *const f64, out: *mut f64) {
+        // SAFETY: the contract of `Function` (V torques at `tau`, room for V + 3 F values).
+        unsafe {
+            let d = R::default().contact_dynamics(input::<Q>(q), input(v), input(tau), &[true; F]);
+            let (a, forces) = d.map_or(([f64::NAN; V], [[f64::NAN; 3]; F]), |d| {
+                (d.acceleration, d.forces)
+            });
+            output(out, a);
+            super::output_rows(out.add(V), forces);
+        }
+    }
+
+    fn get(function: &[u8]) -> Option<Function> {
+        match function {
+            b"contact_fd" => Some(Self::contact_fd),
+            _ => Floating::<R, Q, V>::get(function),
+        }
+    }
+}
+
 /// The entry of the robot `R` on a free-flying base: `V` generalized velocities, no base
 /// parameters.
-pub(super) fn floating<
-    R: FloatingDynamicsDerivatives<Q, V> + Default,
-    const Q: usize,
-    const V: usize,
->(
-    _: &R,
-) -> Robot {
-    (V, 0, Floating::<R, Q, V>::get)
+pub(super) fn floating<R, const Q: usize, const V: usize, const F: usize>(_: &R) -> Robot
+where
+    R: FloatingDynamicsDerivatives<Q, V> + FloatingContacts<Q, V, F> + Default,
+{
+    (V, 0, Contacts::<R, Q, V, F>::get)
 }
 
 #[cfg(test)]
 mod tests {
     use crate::{dynamics_bench_dof, dynamics_bench_function, Function};
     use dynamics_bench::{
-        floating_derivative_samples, floating_samples, scaled_error, AnymalB, Solo12, G1,
+        floating_contact_samples, floating_derivative_samples, floating_samples, scaled_error,
+        AnymalB, Solo12, G1,
     };
-    use dynamics_runtime::{FloatingDynamics, FloatingDynamicsDerivatives};
+    use dynamics_runtime::{FloatingContacts, FloatingDynamics, FloatingDynamicsDerivatives};
 
     fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
@@ -317,6 +346,49 @@ mod tests {
                 .expect("a thread")
                 .join()
                 .expect("the checks pass");
+        });
+    }
+
+    /// `contact_fd` through the C ABI: the trait method's bits (every frame in contact),
+    /// nothing written past its output, and Pinocchio's `constraintDynamics` with every foot
+    /// held (`<robot>_contact_fd.json`) to 1e-9, the frames the same feet in the same order.
+    fn check_contacts<R, const Q: usize, const V: usize, const F: usize>(
+        r: &R,
+        robot: &str,
+        names: [&str; F],
+    ) where
+        R: FloatingContacts<Q, V, F>,
+    {
+        let (frames, pinocchio) = floating_contact_samples::<V, F>(robot);
+        assert_eq!(frames, names.map(str::to_owned), "{robot}");
+        let f = lookup(robot, "contact_fd").expect("contact_fd");
+        for (s, (a, lambda)) in floating_samples::<Q, V>(robot).iter().zip(pinocchio) {
+            let d = r
+                .contact_dynamics(&s.q, &s.v, &s.tau, &[true; F])
+                .expect("independent contacts");
+            let want: Vec<f64> = d
+                .acceleration
+                .iter()
+                .chain(d.forces.iter().flatten())
+                .copied()
+                .collect();
+            let mut got = vec![f64::NAN; V + 3 * F + 1];
+            // SAFETY: Q values at q, V at v and tau, room for V + 3 F outputs and one more.
+            unsafe { f(s.q.as_ptr(), s.v.as_ptr(), s.tau.as_ptr(), got.as_mut_ptr()) };
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<u64>>();
+            assert_eq!(bits(&got[..want.len()]), bits(&want), "{robot} contact_fd");
+            assert!(got[want.len()].is_nan(), "{robot} contact_fd");
+            let expected: Vec<f64> = a.iter().chain(lambda.iter().flatten()).copied().collect();
+            let error = scaled_error(&want, &expected);
+            assert!(error < 1e-9, "{robot} contact_fd: {error:e} from Pinocchio");
+        }
+    }
+
+    #[test]
+    fn contact_fd_through_the_c_abi_equals_the_trait_method_and_pinocchio() {
+        with_room(|| {
+            check_contacts(&Solo12, "solo12", Solo12::FRAME_NAMES);
+            check_contacts(&AnymalB, "anymal_b", AnymalB::FRAME_NAMES);
         });
     }
 

@@ -73,7 +73,7 @@ fn floating(args: &Stats, file: &dynamics_codegen::Loaded) -> Result<String, Fai
         return Err(super::usage("stats", message));
     }
     let start = Instant::now();
-    let eq = file.floating_equations().map_err(|d| {
+    let mut eq = file.floating_equations().map_err(|d| {
         let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
         Failure::File(lines.join("\ndynamics: "))
     })?;
@@ -92,6 +92,21 @@ fn floating(args: &Stats, file: &dynamics_codegen::Loaded) -> Result<String, Fai
         elapsed.as_secs_f64() * 1e3
     );
     out += &methods(&generated);
+    // Every floating derive's too, beside the table (`FloatingContactTerms`), after the frames'
+    // kinematics, which it reads.
+    if let Some((elapsed, o)) = file.floating_contact_terms(&mut eq) {
+        let _ = writeln!(
+            out,
+            "contact_terms (every frame): {} mul, {} add, {} neg, {} div, {} flops, depth {}; traced and emitted in {:.1} ms",
+            o.mul,
+            o.add,
+            o.neg,
+            o.div,
+            o.flops(),
+            o.depth,
+            elapsed.as_secs_f64() * 1e3
+        );
+    }
     Ok(out)
 }
 

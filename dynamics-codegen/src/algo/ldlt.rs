@@ -124,6 +124,39 @@ impl<S: Scalar> Ldlt<S> {
         x
     }
 
+    /// `y = L⁻¹ b`, in the factors' order (reversed where they are), `b` in M's: the first
+    /// half of [`Ldlt::solve`]. For two such `y` and `z`, `bᵀ M⁻¹ c = Σ_k y_k z_k / d_k`; from
+    /// the tips, a column that is zero outside one branch and the root stays so (no fill-in).
+    #[must_use]
+    pub fn forward_substitution(&self, b: &[S]) -> Vec<S> {
+        let mut y: Vec<S> = Vec::with_capacity(b.len());
+        let b: Vec<S> = if self.reversed {
+            b.iter().rev().copied().collect()
+        } else {
+            b.to_vec()
+        };
+        for (row, &bi) in self.lower.iter().zip(&b) {
+            let yi = row.iter().zip(&y).fold(bi, |acc, (&l, &yk)| acc - l * yk);
+            y.push(yi);
+        }
+        y
+    }
+
+    /// `x = L⁻ᵀ z`, `z` in the factors' order, `x` in M's: the second half of [`Ldlt::solve`]
+    /// (`z = D⁻¹ y` for `y` of [`Ldlt::forward_substitution`] gives `x = M⁻¹ b`).
+    #[must_use]
+    pub fn back_substitution(&self, z: &[S]) -> Vec<S> {
+        let n = z.len();
+        let mut x = z.to_vec();
+        for i in (0..n).rev() {
+            x[i] = (i + 1..n).fold(x[i], |acc, k| acc - self.lower[k][i] * x[k]);
+        }
+        if self.reversed {
+            x.reverse();
+        }
+        x
+    }
+
     /// `X = M⁻¹ B` for `B` given by its rows (n × k, any k): each column solved with the same
     /// factors.
     #[must_use]

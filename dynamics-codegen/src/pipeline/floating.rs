@@ -22,10 +22,13 @@ pub(crate) fn expand_floating(
     if parsed.families.contains(Family::Derivatives) {
         eq.add_floating_derivatives(&parsed.robot, flyer);
     }
+    // Last, so that the code of the other outputs stays what it is without it.
+    let contacts = eq.floating_contacts(&kinematics);
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = identifiers::field_readers(&eq.fields);
     let emit::Items { beside, within } = emit::floating_items(&eq, &fields, &krate, input);
     let kinematics = emit::floating_kinematics_items(&eq, &kinematics, &fields, &krate, input);
+    let contacts = emit::floating_contacts_items(&eq, &contacts, &fields, &krate, input);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
             const _: &[u8] = ::core::include_bytes!(#path);
@@ -37,6 +40,7 @@ pub(crate) fn expand_floating(
             #track
             #within
             #kinematics
+            #contacts
         };
     }
 }

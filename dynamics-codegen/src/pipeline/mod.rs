@@ -232,6 +232,22 @@ impl Loaded {
         Ok(crate::trace::derive_floating(&self.robot, flyer))
     }
 
+    /// The frames' kinematics traced into `eq` ([`Loaded::floating_equations`]'), then the
+    /// contact terms of every frame (`FloatingContactTerms`), as the derive traces them; the
+    /// wall-clock time of the contact terms' trace and emission, and their emitted count.
+    #[must_use]
+    pub fn floating_contact_terms(
+        &self,
+        eq: &mut Equations,
+    ) -> Option<(std::time::Duration, crate::emit::OpCount)> {
+        let flyer = self.flyer.as_ref().ok()?;
+        let kinematics = eq.floating_kinematics(&self.robot, flyer);
+        let start = std::time::Instant::now();
+        let contacts = eq.floating_contacts(&kinematics);
+        let ops = crate::emit::floating_contacts_count(eq, &contacts);
+        Some((start.elapsed(), ops))
+    }
+
     /// Whether the file has a `[simplify]` table of its own.
     #[must_use]
     pub fn asks_simplified(&self) -> bool {

@@ -410,6 +410,76 @@ def contacts(name, urdf):
     print(name, "contacts:", len(samples), "samples,", len(frames), "frames")
 
 
+# The feet held by `contact_fd` (bench/run's `contact_fd` row), in the front end's frame order
+# (the leaf links below a moving joint, in the file's order).
+CONTACT_FD = {"solo12": ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"],
+              "anymal_b": ["LF_FOOT", "RF_FOOT", "LH_FOOT", "RH_FOOT"]}
+
+
+def contact_fd(name, urdf):
+    """Every foot of CONTACT_FD[name] held (CONTACT_3D in LOCAL_WORLD_ALIGNED, no Baumgarte) at
+    the states of `<name>.json` (its q, v, tau), written to `<name>_contact_fd.json`:
+    constraintDynamics' ddq and lambda_c, each checked against numpy's solve of the KKT system;
+    and each foot's frame (its parent joint's name, its placement in the joint's frame) for
+    bench/pinocchio/floating.hpp, which holds the same feet of the rebuilt model. Joints in the
+    file's order, as `<name>.json`'s."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    frames = CONTACT_FD[name]
+    ids = [model.getFrameId(f) for f in frames]
+    models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
+                                       model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in ids]
+    datas = [c.createData() for c in models]
+    pin.initConstraintDynamics(model, data, models, datas)
+    samples = []
+    for s in states:
+        q = from_file_order(names, order, np.array(s["q"]), 7)
+        v = from_file_order(names, order, np.array(s["v"]), 6)
+        tau = from_file_order(names, order, np.array(s["tau"]), 6)
+        ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
+        lambda_c = data.lambda_c.copy()
+        m = pin.crba(model, data, q)
+        m = np.triu(m) + np.triu(m, 1).T
+        h = pin.nonLinearEffects(model, data, q, v)
+        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+        pin.computeJointJacobians(model, data, q)
+        pin.updateFramePlacements(model, data)
+        jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in ids])
+        gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
+                                for i in ids])
+        c = len(gamma)
+        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
+        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
+        assert scaled(ddq, solution[:model.nv]) < 1e-10
+        assert scaled(lambda_c, -solution[model.nv:]) < 1e-10
+        pick = [names.index(j) for j in order]
+        a_file = np.concatenate([ddq[:6], ddq[6:][pick]])
+        samples.append({"a_contact": a_file.tolist(), "lambda": lambda_c.reshape(-1, 3).tolist()})
+    feet = [{"name": model.frames[i].name, "joint": model.names[model.frames[i].parentJoint],
+             "rotation": model.frames[i].placement.rotation.tolist(),
+             "translation": model.frames[i].placement.translation.tolist()} for i in ids]
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (contact_fd) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, tau of its samples, in order)",
+        "frames": feet,
+        "conventions": "every frame held: a_contact, lambda = constraintDynamics(q, v, tau) with CONTACT_3D in "
+                       "LOCAL_WORLD_ALIGNED at each frame (no Baumgarte), a_contact's joints in the file's order, "
+                       "lambda the force on the robot in world axes, a row per frame; a frame's placement in its "
+                       "parent joint's frame",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_contact_fd.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "contact_fd:", len(samples), "samples,", len(frames), "frames")
+
+
 # Robots whose first derivatives are written by `derivatives` (all three).
 DERIVATIVES = ["solo12", "anymal_b", "g1_29dof"]
 
@@ -508,6 +578,8 @@ if __name__ == "__main__":
         if name in KINEMATICS:
             kinematics(name, urdf)
     contacts("solo12", ROBOTS["solo12"])
+    for name in CONTACT_FD:
+        contact_fd(name, ROBOTS[name])
     for name, urdf in ROBOTS.items():
         if name in DERIVATIVES:
             derivatives(name, urdf)

@@ -27,7 +27,7 @@ struct Solo12Named;
 /// ANYmal B (`anymal_b_simple_description`), a quadruped of 12 joints.
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(urdf = "../robots/urdf/floating/anymal_b.urdf", base = floating)]
-struct AnymalB;
+pub(crate) struct AnymalB;
 
 /// The Unitree G1 humanoid (`g1_description`, 29 joints, no hands).
 #[derive(dynamics_runtime::Dynamics)]
