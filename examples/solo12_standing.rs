@@ -27,7 +27,8 @@ use nalgebra::{SMatrix, SVector};
 #[dynamics(
     urdf = "../robots/urdf/floating/solo12.urdf",
     base = floating,
-    derivatives = true
+    derivatives = true,
+    contacts = true
 )]
 struct Solo12;
 

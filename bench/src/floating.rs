@@ -1,6 +1,7 @@
 //! The robots on a free-flying base of `bench/run`'s floating rows (issue 43), derived from their
 //! URDFs with `base = floating` (`FloatingDynamics<NQ, NV>`: M, h, τ, g) and `derivatives = true`
-//! (`FloatingDynamicsDerivatives`), and their reference samples (`tests/data/floating/`,
+//! (`FloatingDynamicsDerivatives`), the quadrupeds with `contacts = true` (the contact terms in
+//! closed form), and their reference samples (`tests/data/floating/`,
 //! Pinocchio 4.1's free flyer, joints in the generator's order).
 
 use dynamics_runtime::Dynamics;
@@ -10,7 +11,8 @@ use dynamics_runtime::Dynamics;
 #[dynamics(
     urdf = "../robots/urdf/floating/solo12.urdf",
     base = floating,
-    derivatives = true
+    derivatives = true,
+    contacts = true
 )]
 pub struct Solo12;
 
@@ -19,7 +21,8 @@ pub struct Solo12;
 #[dynamics(
     urdf = "../robots/urdf/floating/anymal_b.urdf",
     base = floating,
-    derivatives = true
+    derivatives = true,
+    contacts = true
 )]
 pub struct AnymalB;
 

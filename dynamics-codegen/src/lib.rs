@@ -80,6 +80,7 @@ pub fn expand_robot(
         families,
         simplify: simplify.cloned(),
         floating: None,
+        contact_terms: false,
     };
     expand(input, &parsed)
 }

@@ -14,7 +14,7 @@ use super::items::{Generated, PARAMETERS_FN};
 use super::program::{emit, Emission};
 use super::{local, Context, OpCount, Output, PARAMETERS};
 use crate::method::{Argument, Method};
-use crate::trace::{Equations, FloatingContactEquations, Shape};
+use crate::trace::{Equations, FloatingContactEquations, FloatingKinematicEquations, Shape};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
@@ -135,5 +135,23 @@ fn trait_impl(
                 }
             }
         }
+    }
+}
+
+/// `impl FloatingContactTerms<NQ, NV, F>` without `contacts = true`: the trait's provided
+/// method computes the terms at run time from the generated `M⁻¹`, `h` and Jacobians.
+#[must_use]
+pub fn floating_contacts_at_run_time(
+    nv: usize,
+    kinematics: &FloatingKinematicEquations,
+    krate: &TokenStream,
+    input: &syn::DeriveInput,
+) -> TokenStream {
+    let (nq, frames) = (nv + 1, kinematics.frame_names.len());
+    let (ident, generics) = (&input.ident, &input.generics);
+    let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
+    quote! {
+        #[automatically_derived]
+        impl #impl_generics #krate::FloatingContactTerms<#nq, #nv, #frames> for #ident #ty_generics #where_clause {}
     }
 }

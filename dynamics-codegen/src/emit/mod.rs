@@ -76,7 +76,9 @@ pub(crate) use equations::readable;
 pub use equations::simplified_doc;
 pub(crate) use fallback::{fallback, unreachable_family};
 pub use floating::floating_items;
-pub use floating_contacts::{floating_contacts_count, floating_contacts_items};
+pub use floating_contacts::{
+    floating_contacts_at_run_time, floating_contacts_count, floating_contacts_items,
+};
 pub use floating_kinematics::floating_kinematics_items;
 pub(crate) use impls::runtime_path;
 pub use impls::{method, Counts};

@@ -42,6 +42,9 @@ pub(super) fn free_flyer(
     errors: &mut Errors,
 ) -> Option<FreeFlyer> {
     let Some(floating) = attrs.floating.as_ref() else {
+        if let Some(contacts) = &attrs.contacts {
+            errors.push(contacts.span(), "`contacts` are a floating base's: add `base = floating` (a fixed base's contact is its base)");
+        }
         if let (Some(file), Some(_)) = (&attrs.file, &given.file_body) {
             errors.push(file.span(), "the file's `[floating]` table is the body of a robot on a floating base: add `base = floating` (or remove the table)");
         }

@@ -89,6 +89,8 @@ pub struct Input {
     pub simplify: Option<Simplification>,
     /// `base = floating`: the free-flying base the robot's tree hangs from.
     pub floating: Option<FreeFlyer>,
+    /// `contacts = true`: the floating base's contact terms in closed form, not at run time.
+    pub contact_terms: bool,
 }
 
 /// Why the derive input gave no robot.
@@ -369,6 +371,7 @@ fn finish(
                 families,
                 simplify,
                 floating,
+                contact_terms: attrs.contacts.as_ref().is_some_and(|c| c.value),
             })
         }
         (Some(error), robot) => Err(Failure {

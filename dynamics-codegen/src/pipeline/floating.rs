@@ -22,13 +22,19 @@ pub(crate) fn expand_floating(
     if parsed.families.contains(Family::Derivatives) {
         eq.add_floating_derivatives(&parsed.robot, flyer);
     }
-    // Last, so that the code of the other outputs stays what it is without it.
-    let contacts = eq.floating_contacts(&kinematics);
+    // Last, so that the code of the other outputs stays what it is without it; asked for, as
+    // its trace costs the derive about as much as the rest (the run-time form serves else).
+    let contacts = parsed
+        .contact_terms
+        .then(|| eq.floating_contacts(&kinematics));
     let krate = emit::runtime_path(parsed.krate.as_ref());
     let fields = identifiers::field_readers(&eq.fields);
     let emit::Items { beside, within } = emit::floating_items(&eq, &fields, &krate, input);
+    let contacts = match &contacts {
+        Some(contacts) => emit::floating_contacts_items(&eq, contacts, &fields, &krate, input),
+        None => emit::floating_contacts_at_run_time(eq.dof, &kinematics, &krate, input),
+    };
     let kinematics = emit::floating_kinematics_items(&eq, &kinematics, &fields, &krate, input);
-    let contacts = emit::floating_contacts_items(&eq, &contacts, &fields, &krate, input);
     let track = parsed.tracked_file.as_ref().map(|path| {
         quote!(
             const _: &[u8] = ::core::include_bytes!(#path);

@@ -13,20 +13,29 @@ pub(crate) const TOLERANCE: f64 = 1e-12;
 /// kinematics: the one derive of it that the floating tests share (each derive costs the
 /// tests' build).
 #[derive(dynamics_runtime::Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/solo12.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/solo12.urdf",
+    base = floating,
+    contacts = true
+)]
 pub(crate) struct Solo12;
 
-/// The same robot with its floating body named.
+/// The same robot with its floating body named, and without `contacts = true`: its contact
+/// terms are computed at run time.
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(
     urdf = "../robots/urdf/floating/solo12.urdf",
     base = floating("base_link")
 )]
-struct Solo12Named;
+pub(crate) struct Solo12Named;
 
 /// ANYmal B (`anymal_b_simple_description`), a quadruped of 12 joints.
 #[derive(dynamics_runtime::Dynamics)]
-#[dynamics(urdf = "../robots/urdf/floating/anymal_b.urdf", base = floating)]
+#[dynamics(
+    urdf = "../robots/urdf/floating/anymal_b.urdf",
+    base = floating,
+    contacts = true
+)]
 pub(crate) struct AnymalB;
 
 /// The Unitree G1 humanoid (`g1_description`, 29 joints, no hands).

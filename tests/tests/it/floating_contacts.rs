@@ -5,7 +5,7 @@
 //! 1e-12 scaled by the largest element of each; and the constraint itself, `J a + J̇ v = 0` at
 //! the feet in contact, and `τ` given back by inverse dynamics with the contact forces.
 
-use super::floating_base::{array, numbers, reference, AnymalB, Solo12, TOLERANCE};
+use super::floating_base::{array, numbers, reference, AnymalB, Solo12, Solo12Named, TOLERANCE};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{
     ContactDynamics, ContactError, ContactTerms, FloatingContactTerms, FloatingContacts,
@@ -163,6 +163,8 @@ fn contact_dynamics_edges() {
 #[test]
 fn closed_form_contact_terms() {
     assert!(<Solo12 as FloatingContactTerms<19, 18, 4>>::CLOSED_FORM);
+    // Without `contacts = true`, the trait's run-time form: the same terms.
+    assert!(!<Solo12Named as FloatingContactTerms<19, 18, 4>>::CLOSED_FORM);
     for (k, (s, _)) in samples().iter().enumerate() {
         let (q, v, tau) = (
             array::<19>(&s["q"]),
@@ -171,6 +173,15 @@ fn closed_form_contact_terms() {
         );
         let at = |what: &str| format!("sample {k}: {what}");
         let terms = Solo12.contact_terms(&q, &v, &tau).expect("M");
+        let at_run_time = Solo12Named.contact_terms(&q, &v, &tau).expect("M");
+        let flat = |t: &ContactTerms<f64, 18, 4>| -> Vec<f64> {
+            let mut all = t.free_acceleration.to_vec();
+            all.extend(t.frame_accelerations.iter().flatten());
+            all.extend(t.minv_jt.iter().flatten().flatten());
+            all.extend(t.delassus.iter().flatten().flatten().flatten());
+            all
+        };
+        check(&at("at run time"), &flat(&at_run_time), &flat(&terms));
         let minv = Solo12.mass_matrix_inverse(&q).expect("M");
         let free = Solo12.forward_dynamics(&q, &v, &tau).expect("M");
         check(&at("a0"), &terms.free_acceleration, &free);
@@ -279,5 +290,6 @@ fn every_foot_held<R: FloatingContacts<19, 18, 4>>(robot: &R, name: &str, frames
 #[test]
 fn every_foot_held_against_pinocchio() {
     every_foot_held(&Solo12, "solo12", Solo12::FRAME_NAMES);
+    every_foot_held(&Solo12Named, "solo12", Solo12Named::FRAME_NAMES);
     every_foot_held(&AnymalB, "anymal_b", AnymalB::FRAME_NAMES);
 }

@@ -42,13 +42,14 @@ keys! {
     /// `joints = [revolute(..), prismatic(..), ...]` (joints by placements and axes),
     /// `urdf = "robots/ur10.urdf"` with `base = "base_link"` and `tip = "tool0"` (a chain) or
     /// `tips = ["left_hand", "right_hand"]` (the branches to those links),
-    /// `tool = [x, y, z, roll, pitch, yaw]`. An opt-in family's name is a key too
+    /// `tool = [x, y, z, roll, pitch, yaw]`, `contacts = true` (a floating base's contact terms
+    /// in closed form). An opt-in family's name is a key too
     /// (`derivatives = true`), from the method table.
     Key {
         Gravity = "gravity", Dh = "dh", Link = "link", Convention = "convention",
         File = "file", Name = "name", Crate = "crate", CheckInertia = "check_inertia",
         Joints = "joints", Urdf = "urdf", Base = "base", Tip = "tip", Tips = "tips",
-        Tool = "tool",
+        Tool = "tool", Contacts = "contacts",
     }
 }
 

@@ -45,6 +45,8 @@ pub(in crate::front) struct Attrs {
     pub tips: Option<(Vec<LitStr>, Span)>,
     /// `tool = [x, y, z, roll, pitch, yaw]`: the tool frame in link frame n.
     pub tool: Option<[Spanned; 6]>,
+    /// `contacts = true`: a floating base's contact terms traced in closed form.
+    pub contacts: Option<syn::LitBool>,
     /// `derivatives = true` and the like: the opt-in families asked for, or refused.
     pub families: BTreeMap<Family, bool>,
     /// `simplify(...)`: the pruned models' request (which also asks for their family).
@@ -151,6 +153,9 @@ const ATTRIBUTE: &str = "dynamics attribute";
 const BOTH_TABLES: &str = "`dh` and `joints` cannot be combined: give the joints either as a \
                            D-H table (`dh = [[θ, d, a, α], ...]`) or by placements and axes \
                            (`joints = [revolute(xyz = [..], rpy = [..], axis = [..]), ...]`)";
+
+/// What `contacts` does, for an error in its value.
+const CONTACTS: &str = "`contacts = true` traces a floating base's contact terms (`FloatingContactTerms`) in closed form";
 
 /// Parses the keys of one `#[dynamics(...)]` into `attrs`.
 pub(in crate::front) fn parse_attrs(
@@ -286,6 +291,14 @@ fn parse_attr(
             } else {
                 entry.keep_first(&mut attrs.joints, joints);
             }
+        }
+        Key::Contacts => {
+            let contacts = if input.peek(syn::LitBool) {
+                input.parse::<syn::LitBool>()?
+            } else {
+                return Err(input.error(format!("expected `true` or `false`: {CONTACTS}")));
+            };
+            entry.keep_first(&mut attrs.contacts, contacts);
         }
         Key::Tool => {
             let (tool, _) = values::<6>(input, "`tool = [x, y, z, roll, pitch, yaw]`")?;
