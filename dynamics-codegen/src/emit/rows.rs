@@ -175,7 +175,8 @@ impl Emitter<'_> {
 
 impl Generated {
     /// Group `part`'s function, storing its rows into the caller's `y_`: `#[inline(never)]`,
-    /// so that each is compiled, and fetched, on its own.
+    /// so that each is compiled, and fetched, on its own; its frame aligned for its lanes'
+    /// spills (`align_stack`).
     pub(super) fn part_function(&self, part: &Part, krate: &TokenStream) -> TokenStream {
         let name = part_name(part);
         let (p, y, k) = (local(PARAMETERS), local(OUTPUT), self.fields.len());
@@ -185,7 +186,9 @@ impl Generated {
             #[inline(never)]
             pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
         };
-        with_body(head, part.tokens.clone())
+        let mut body = quote!(align_stack::<T>(););
+        body.extend(part.tokens.clone());
+        with_body(head, body)
     }
 }
 
