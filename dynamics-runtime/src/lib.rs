@@ -119,7 +119,7 @@ pub use dynamics_macros::Dynamics;
 pub mod __private {
     pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
     pub use crate::real::{Real, RealScalar};
-    pub use crate::tangent::Tangent;
+    pub use crate::tangent::{align_stack, Tangent};
     pub use core;
 
     /// Converts a robot parameter (a struct field of type `f32` or `f64`) to the scalar type

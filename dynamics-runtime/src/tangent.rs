@@ -11,6 +11,25 @@
 use crate::real::Real;
 use core::ops::{Add, Neg, Sub};
 
+/// Keeps the stack frame of the function this is inlined into aligned to 64 bytes where `T`'s
+/// code fills vector registers (tangents in AVX-512 lanes, or a batch's lanes of 32 bytes or
+/// more). The derivatives are straight-line code that spills hundreds of those registers: LLVM
+/// aligns its spill slots only in a frame it realigns anyway, which it decides before register
+/// allocation, from the stack objects alone. A 64-byte slot whose address escapes is such an
+/// object; without it the slots are 16-byte aligned, and three spills of a 64-byte register in
+/// four straddle two cache lines (the Panda's `forward_dynamics_derivatives` 13-16 % slower on
+/// an Intel Xeon). Nothing for a scalar `T` without lanes.
+#[doc(hidden)]
+#[inline(always)]
+pub fn align_stack<T: Real>() {
+    if T::TANGENTS_IN_LANES || core::mem::size_of::<T>() >= 32 {
+        #[repr(C, align(64))]
+        struct Line([u8; 64]);
+        let mut line = core::mem::MaybeUninit::<Line>::uninit();
+        core::hint::black_box(line.as_mut_ptr());
+    }
+}
+
 /// A group of lanes a tangent is kept in: eight (`[T; 8]`, one AVX-512 register of `f64`) or
 /// four (`[T; 4]`, one AVX register), each lane's step [`Real::oct_mul_add`] or
 /// [`Real::quad_mul_add`] and the like.

@@ -360,7 +360,7 @@ impl Generated {
             .methods
             .iter()
             .any(|m| m.method.family() == module.family && m.lanes)
-            .then(|| quote!(use #krate::__private::Tangent;));
+            .then(|| quote!(use #krate::__private::{align_stack, Tangent};));
         // Beside the struct, the module is in the user's namespace, out of their docs.
         let hidden = module
             .family

@@ -162,10 +162,11 @@ fn groups(output: &Output, tree: bool) -> Vec<Vec<bool>> {
 }
 
 /// Tangents in lanes where the build computes them there (AVX-512), else the columns one by
-/// one. The test is a constant: the compiler keeps one branch.
+/// one. The test is a constant: the compiler keeps one branch. Either branch spills vector
+/// registers where `T` has lanes: the frame is kept aligned for them (`align_stack`).
 fn either(mut lanes: Body, scalar: Body) -> Body {
     let a = std::mem::take(&mut lanes.tokens);
-    let mut tokens = quote!(if T::TANGENTS_IN_LANES);
+    let mut tokens = quote!(align_stack::<T>(); if T::TANGENTS_IN_LANES);
     tokens.extend([block(a), quote!(else), block(scalar.tokens)]);
     Body { tokens, ..lanes }
 }

@@ -159,7 +159,8 @@ impl Emitter<'_> {
 }
 
 /// Group `part`'s function, storing its rows into the caller's `y_`: `#[inline(never)]`,
-/// so that each is compiled, and fetched, on its own. `k` is the parameters' count.
+/// so that each is compiled, and fetched, on its own; its frame aligned for its lanes' spills
+/// (`align_stack`). `k` is the parameters' count.
 pub(super) fn part_function(
     part: &Part,
     k: usize,
@@ -174,7 +175,9 @@ pub(super) fn part_function(
         #[inline(never)]
         pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
     };
-    with_body(head, part.tokens.clone())
+    let mut body = quote!(align_stack::<T>(););
+    body.extend(part.tokens.clone());
+    with_body(head, body)
 }
 
 /// Disjoint sets of directions (union-find).
