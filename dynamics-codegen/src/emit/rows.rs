@@ -11,6 +11,10 @@
 //! and computes the scalars and lanes its rows need by the same expressions as the whole
 //! function: the same bits. Only where a plan is fetch-bound ([`FETCH_BOUND_OPERATIONS`] in
 //! blocks of eight): a smaller tree's and a serial robot's ∂τ are one function, as before.
+//!
+//! Each group's lanes hold its own directions first ([`local_layout`]), so that an arm's lanes
+//! take the blocks its directions need, not those their columns straddle in the whole; a row
+//! is stored into its columns of `y_` by runs.
 
 use super::count::count;
 use super::emitter::Emitter;
