@@ -73,12 +73,17 @@ fn scattered(
     blocks: Range<usize>,
 ) -> TokenStream {
     let mut runs: Vec<(usize, usize, usize)> = Vec::new();
-    for l in blocks.start.min(columns.len())..blocks.end.min(columns.len()) {
+    let within = columns
+        .iter()
+        .enumerate()
+        .skip(blocks.start)
+        .take(blocks.len());
+    for (l, &column) in within {
         match runs.last_mut() {
-            Some((from, column, len)) if *from + *len == l && *column + *len == columns[l] => {
+            Some((from, start, len)) if *from + *len == l && *start + *len == column => {
                 *len += 1;
             }
-            _ => runs.push((l, columns[l], 1)),
+            _ => runs.push((l, column, 1)),
         }
     }
     let (n, p, i, r) = (unsuffixed(n), unsuffixed(p), unsuffixed(i), local("r_"));
