@@ -51,6 +51,9 @@ pub(super) struct Emitter<'a> {
     /// Per plan, the lanes a function of a group of rows writes ([`super::rows`]); `None`: all,
     /// the result's zeros its own.
     pub(super) kept: Option<Vec<Vec<bool>>>,
+    /// Per plan of a group's function, the column of `y_` each of its local directions is
+    /// stored in ([`super::rows::local_layout`]); `None`: the plan's own order.
+    pub(super) columns: Option<Vec<Vec<usize>>>,
     /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
     pub(super) depth: Vec<Cell<u32>>,
@@ -98,6 +101,7 @@ impl<'a> Emitter<'a> {
             has_configuration: false,
             returned_in_place: false,
             kept: None,
+            columns: None,
             depth: t.depth,
             marked: Vec::new(),
             depth_known: RefCell::new(Vec::new()),

@@ -60,6 +60,43 @@ fn lane_row(p: usize, plan: &Tangents, l: usize, blocks: &[Range<usize>]) -> Tok
     }
 }
 
+/// Row `i` of plan `p` stored from `row`, a row in a group's own order of directions
+/// (`columns`: the column of `y_` of each local direction): each run of local directions in
+/// `blocks` (the lane's) whose columns follow each other copied at once.
+fn scattered(
+    y: &Ident,
+    (p, i): (usize, usize),
+    row: TokenStream,
+    n: usize,
+    columns: &[usize],
+    blocks: Range<usize>,
+) -> TokenStream {
+    let mut runs: Vec<(usize, usize, usize)> = Vec::new();
+    let within = columns
+        .iter()
+        .enumerate()
+        .skip(blocks.start)
+        .take(blocks.len());
+    for (l, &column) in within {
+        match runs.last_mut() {
+            Some((from, start, len)) if *from + *len == l && *start + *len == column => {
+                *len += 1;
+            }
+            _ => runs.push((l, column, 1)),
+        }
+    }
+    let (n, p, i, r) = (unsuffixed(n), unsuffixed(p), unsuffixed(i), local("r_"));
+    let copies = runs.iter().map(|&(from, column, len)| {
+        let (a, b) = (unsuffixed(column), unsuffixed(column + len));
+        let (c, d) = (unsuffixed(from), unsuffixed(from + len));
+        quote!(#y[#p][#i][#a..#b].copy_from_slice(&#r[#c..#d]);)
+    });
+    quote!({
+        let #r: [T; #n] = #row;
+        #(#copies)*
+    })
+}
+
 /// The streams one after the other, moved: `quote!` would copy each (the sums of a lane's
 /// terms, growing with each term).
 fn cat<const N: usize>(parts: [TokenStream; N]) -> TokenStream {
@@ -182,8 +219,17 @@ impl Emitter<'_> {
                 let rows = plan.outputs.iter().enumerate();
                 for (i, _) in rows.filter(|(_, lane)| **lane == Some(k)) {
                     let row = lane_row(p, plan, k, queue.blocks(p));
-                    let (p, i) = (unsuffixed(p), unsuffixed(i));
-                    statements.push(quote!(#y[#p][#i] = #row;));
+                    statements.push(match &self.columns {
+                        Some(columns) => {
+                            let own = &queue.blocks(p)[k];
+                            let local = own.start * plan.group..own.end * plan.group;
+                            scattered(&y, (p, i), row, plan.directions, &columns[p], local)
+                        }
+                        None => {
+                            let (p, i) = (unsuffixed(p), unsuffixed(i));
+                            quote!(#y[#p][#i] = #row;)
+                        }
+                    });
                 }
             }
         }

@@ -6,7 +6,7 @@ use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Part, Shared};
-use super::rows::{kept_lanes, row_groups, split};
+use super::rows::{kept_lanes, local_layout, row_groups, split};
 use crate::method::Argument;
 use crate::symbolic::{Node, NodeId};
 use crate::trace::{Equations, Shape};
@@ -85,11 +85,11 @@ pub(super) fn emit_with(
         e.motion(&motion_boundary, &field_names)
     });
     let tree = branches(eq);
-    let body_of = |o: &Output, shape: &Shape, kept: Option<Vec<Vec<bool>>>| {
+    let body_of = |o: &Output, shape: &Shape, group: Option<Group>| {
         let mut e = Emitter::new(eq, Some(ctx));
         // A tree's lanes: each row stored once its lane is computed.
         e.returned_in_place = tree && matches!(shape, Shape::Lanes { .. });
-        e.kept = kept;
+        (e.kept, e.columns) = group.unzip();
         if !reads_q(&o) {
             return e.function(shape, o.method);
         }
@@ -124,19 +124,37 @@ fn bodies<'a>(
     ctx: &Context,
     all: &[Output<'a>],
     tree: bool,
-    body_of: impl Fn(&Output<'a>, &Shape<'a>, Option<Vec<Vec<bool>>>) -> Body,
+    body_of: impl Fn(&Output<'a>, &Shape<'_>, Option<Group>) -> Body,
 ) -> (Vec<Body>, Vec<Part>) {
     let body = |o: &Output<'a>, shape: &Shape<'a>| body_of(o, shape, None);
     let mut parts = Vec::new();
     let bodies = all
         .iter()
         .map(|o| match (o.shape, groups(o, tree)) {
-            (Shape::Lanes { lanes: plans, .. }, groups) if groups.len() > 1 => {
+            (
+                Shape::Lanes {
+                    lanes: plans,
+                    stack,
+                    solved,
+                },
+                groups,
+            ) if groups.len() > 1 => {
                 let first = parts.len();
-                parts.extend(groups.iter().enumerate().map(|(k, rows)| Part {
-                    method: o.method,
-                    index: k + 1,
-                    tokens: body_of(o, &o.shape, Some(kept_lanes(plans, rows))).tokens,
+                parts.extend(groups.iter().enumerate().map(|(k, rows)| {
+                    // Each group's lanes in its own layout of directions (`local_layout`).
+                    let kept = kept_lanes(plans, rows);
+                    let (local, columns) = local_layout(plans, &kept);
+                    let lanes = &local;
+                    let shape = Shape::Lanes {
+                        stack,
+                        lanes,
+                        solved,
+                    };
+                    Part {
+                        method: o.method,
+                        index: k + 1,
+                        tokens: body_of(o, &shape, Some((kept, columns))).tokens,
+                    }
                 }));
                 let lanes = split(eq, ctx, o, &parts[first..]);
                 either(lanes, body(o, &o.shape.scalar()))
@@ -160,6 +178,10 @@ fn groups(output: &Output, tree: bool) -> Vec<Vec<bool>> {
         _ => Vec::new(),
     }
 }
+
+/// A group of rows' lanes: per plan, the lanes it writes and the column of each of its
+/// directions ([`local_layout`]).
+type Group = (Vec<Vec<bool>>, Vec<Vec<usize>>);
 
 /// Tangents in lanes where the build computes them there (AVX-512), else the columns one by
 /// one. The test is a constant: the compiler keeps one branch. Either branch spills vector

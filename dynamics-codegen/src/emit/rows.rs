@@ -11,6 +11,10 @@
 //! and computes the scalars and lanes its rows need by the same expressions as the whole
 //! function: the same bits. Only where a plan is fetch-bound ([`FETCH_BOUND_OPERATIONS`] in
 //! blocks of eight): a smaller tree's and a serial robot's ∂τ are one function, as before.
+//!
+//! Each group's lanes hold its own directions first ([`local_layout`]), so that an arm's lanes
+//! take the blocks its directions need, not those their columns straddle in the whole; a row
+//! is stored into its columns of `y_` by runs.
 
 use super::count::count;
 use super::emitter::Emitter;
@@ -99,6 +103,46 @@ pub(super) fn kept_lanes(plans: &[Option<Tangents>], rows: &[bool]) -> Vec<Vec<b
             kept
         })
         .collect()
+}
+
+/// Per plan, the plan with the directions of the lanes `kept` first, in their order, the others
+/// after them, and the column of each of the first: a group's own layout of its directions.
+/// Baxter's arm reads eight directions by `q` (the shoulder's own angle is none of them) at
+/// columns 2-9 or 11-18 of nineteen: in the whole's blocks of eight, two blocks a lane; in its
+/// own, one. Each lane computes what it computed at its place, so the bits are the same.
+pub(super) fn local_layout(
+    plans: &[Option<Tangents>],
+    kept: &[Vec<bool>],
+) -> (Vec<Option<Tangents>>, Vec<Vec<usize>>) {
+    plans
+        .iter()
+        .zip(kept)
+        .map(|(plan, kept)| {
+            let Some(plan) = plan else {
+                return (None, Vec::new());
+            };
+            let mut read = vec![false; plan.directions];
+            let lanes = plan.lanes.iter().zip(kept).filter(|(_, &k)| k);
+            for t in lanes.flat_map(|(lane, _)| &lane.terms) {
+                if let Of::Unit(j) = t.of {
+                    read[usize::from(j)] = true;
+                }
+            }
+            let (first, rest): (Vec<usize>, Vec<usize>) =
+                (0..plan.directions).partition(|&j| read[j]);
+            let mut position = vec![0u16; plan.directions];
+            for (l, &j) in first.iter().chain(&rest).enumerate() {
+                position[j] = u16::try_from(l).unwrap_or(u16::MAX);
+            }
+            let mut local = plan.clone();
+            for t in local.lanes.iter_mut().flat_map(|lane| &mut lane.terms) {
+                if let Of::Unit(j) = t.of {
+                    t.of = Of::Unit(position[usize::from(j)]);
+                }
+            }
+            (Some(local), first)
+        })
+        .unzip()
 }
 
 /// The lanes' branch of `output`'s body: its result's zeros, each group's function called on

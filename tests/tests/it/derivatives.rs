@@ -6,7 +6,8 @@
 //! * against central differences of the generated `inverse_dynamics` and `forward_dynamics`,
 //!   on the same robots and on the friction arm (Coulomb smoothed on joint 2), in `f64`; `f32`
 //!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ on Baxter with
-//!   free fingers (19 joints, its ∂τ in lanes one function per arm);
+//!   free fingers (19 joints, its ∂τ in lanes one function per arm), and against the same
+//!   states in `F64x4` (the columns one by one) to 1e-12;
 //! * the friction arm's `∂τ/∂q̇` by hand: `2 C` plus the viscous slope, plus `f_c/ε sech²(q̇/ε)`
 //!   where smoothed (the plain Coulomb step is flat away from 0);
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
@@ -14,8 +15,10 @@
 //!   (`dynamics-reference`), an implementation that shares no code with the generator.
 
 use dynamics_reference::scaled_error;
+use dynamics_runtime::lanes::F64x4;
 use dynamics_runtime::{Dynamics, DynamicsDerivatives, NotPositiveDefinite};
 use dynamics_tests::interpret::{evaluate, State};
+use dynamics_tests::lanes::{close, routes_differ, same, Motion};
 use dynamics_tests::random::case;
 use dynamics_tests::reference::{flat, matrix, samples_counted, vector};
 use dynamics_tests::robots::{NikuPolar, Panda, Puma560, Rubbing, Stanford};
@@ -172,6 +175,31 @@ fn a_dual_arm_against_central_differences() {
     }
     println!("Baxter with free fingers: ∂τ against central differences {worst:.1e}");
     assert!(worst < 1e-5, "{worst:e}");
+}
+
+/// Baxter's ∂τ on one state (in lanes of tangents, each arm's rows in its own layout of
+/// directions, where the build has AVX-512) against the same states four at a time in `F64x4`,
+/// which computes the columns one by one: to 1e-12 where the routes differ, bit for bit where
+/// they do not.
+#[test]
+fn a_dual_arm_in_lanes_against_the_columns() {
+    let m = Motion::<F64x4, 4, 19>::new(0xba7e5);
+    let robot = BaxterFreeFingers;
+    let (q, qd, qdd) = (&m.q, &m.qd, &m.qdd);
+    let lanes = robot.inverse_dynamics_derivatives(&q.lanes, &qd.lanes, &qdd.lanes);
+    let singles: [_; 4] = core::array::from_fn(|l| {
+        robot.inverse_dynamics_derivatives(&q.singles[l], &qd.singles[l], &qdd.singles[l])
+    });
+    if routes_differ::<F64x4, 4>() {
+        close(
+            "Baxter's inverse_dynamics_derivatives",
+            lanes,
+            &singles,
+            1e-12,
+        );
+    } else {
+        same("Baxter's inverse_dynamics_derivatives", lanes, &singles);
+    }
 }
 
 #[test]
