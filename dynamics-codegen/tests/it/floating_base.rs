@@ -77,8 +77,8 @@ fn a_floating_base_asks_for_its_derivatives() {
 fn what_a_floating_base_does_not_have_yet_is_refused() {
     for (keys, message) in [
         (
-            "base = floating, regressor = true",
-            "`regressor = true` is not supported on a floating base yet",
+            "base = floating, tip_kinematics = true",
+            "`tip_kinematics = true` is not supported on a floating base yet",
         ),
         (
             "base = floating, tip = \"FL_FOOT\"",
