@@ -382,6 +382,30 @@ mod tests {
         ] {
             assert_eq!(row(&from_urdf, method), row(&from_file, method), "{method}");
         }
+        // The opt-in families a floating base has, and one it has not.
+        let with = [
+            "stats",
+            urdf.as_str(),
+            "--floating",
+            "--runs",
+            "1",
+            "--with",
+        ];
+        let identification = run(with.into_iter().chain(["regressor,base_parameters"]));
+        let identification = identification.expect("runs");
+        for method in [
+            "regressor",
+            "standard_parameters",
+            "base_regressor",
+            "base_parameters",
+        ] {
+            assert!(!row(&identification, method).is_empty(), "{method}");
+        }
+        let refused = run(with.into_iter().chain(["tip_kinematics"])).unwrap_err();
+        assert!(
+            format!("{refused:?}").contains("not supported"),
+            "{refused:?}"
+        );
         let fixed = format!("{root}puma560.toml");
         let wrong = run(["stats", fixed.as_str(), "--floating", "--runs", "1"]).unwrap_err();
         assert!(

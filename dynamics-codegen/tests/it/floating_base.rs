@@ -1,6 +1,6 @@
 //! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
-//! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives` where
-//! it asks), and every key or family the floating base does not support is a compile error
+//! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives`,
+//! `FloatingDynamicsRegressor`, `FloatingDynamicsBaseParameters` where it asks), and every key or family the floating base does not support is a compile error
 //! naming it (never methods that would be wrong on a flying base).
 
 use dynamics_codegen::derive_dynamics;
@@ -71,6 +71,37 @@ fn a_floating_base_asks_for_its_derivatives() {
         x[start..end].to_owned()
     };
     assert_eq!(floating(&out), floating(&plain));
+}
+
+/// `regressor = true` and `base_parameters = true` implement `FloatingDynamicsRegressor<19, 18,
+/// 13>` (the floating body and 12 links) and `FloatingDynamicsBaseParameters<19, 18, B, 13>`,
+/// and leave the floating family's module as it was; `base_parameters` alone does not emit the
+/// regressor it traces.
+#[test]
+fn a_floating_base_asks_for_its_regressor_and_base_parameters() {
+    let plain = solo("base = floating");
+    let out = solo("base = floating, regressor = true, base_parameters = true");
+    assert!(!out.contains("compile_error"), "{out}");
+    assert!(
+        out.contains("FloatingDynamicsRegressor < 19usize , 18usize , 13usize >"),
+        "{out}"
+    );
+    assert!(
+        out.contains("FloatingDynamicsBaseParameters < 19usize , 18usize , 94usize , 13usize >"),
+        "{out}"
+    );
+    assert!(!out.contains(":: DynamicsRegressor <"), "{out}");
+    let floating = |x: &str| {
+        let start = x.find("mod __floating ").expect("the floating module");
+        let end = x
+            .find("mod __floating_forward")
+            .expect("the forward module");
+        x[start..end].to_owned()
+    };
+    assert_eq!(floating(&out), floating(&plain));
+    let alone = solo("base = floating, base_parameters = true");
+    assert!(!alone.contains("FloatingDynamicsRegressor <"), "{alone}");
+    assert!(alone.contains("FloatingDynamicsBaseParameters <"), "{alone}");
 }
 
 #[test]
