@@ -101,7 +101,40 @@ fn a_floating_base_asks_for_its_regressor_and_base_parameters() {
     assert_eq!(floating(&out), floating(&plain));
     let alone = solo("base = floating, base_parameters = true");
     assert!(!alone.contains("FloatingDynamicsRegressor <"), "{alone}");
-    assert!(alone.contains("FloatingDynamicsBaseParameters <"), "{alone}");
+    assert!(
+        alone.contains("FloatingDynamicsBaseParameters <"),
+        "{alone}"
+    );
+}
+
+/// The number of base parameters of the three robots equals the numerical rank of Pinocchio's
+/// regressor stacked at 40 random states (`tests/data/floating/*_regressor.json`, `make.py`):
+/// Solo 12 and ANYmal B 94 of 130, the G1 213 of 300.
+#[test]
+fn base_parameters_count_the_rank_of_pinocchios_regressor() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    for (robot, bodies) in [("solo12", 13), ("anymal_b", 13), ("g1_29dof", 30)] {
+        let data =
+            std::fs::read_to_string(format!("{root}/tests/data/floating/{robot}_regressor.json"))
+                .expect("the data");
+        let at = data.find("\"rank\": ").expect("rank") + "\"rank\": ".len();
+        let rank: usize = data[at..]
+            .split(|c: char| !c.is_ascii_digit())
+            .next()
+            .and_then(|x| x.parse().ok())
+            .expect("a number");
+        let urdf = format!("{root}/robots/urdf/floating/{robot}.urdf");
+        let source = format!(
+            "#[dynamics(urdf = {urdf:?}, base = floating, base_parameters = true)] struct R;"
+        );
+        let out = derive_dynamics(source.parse().expect("tokens")).to_string();
+        let nv = (bodies - 1) + 6;
+        let nq = nv + 1;
+        let expected = format!(
+            "FloatingDynamicsBaseParameters < {nq}usize , {nv}usize , {rank}usize , {bodies}usize >"
+        );
+        assert!(out.contains(&expected), "{robot}: {expected}");
+    }
 }
 
 #[test]

@@ -9,8 +9,8 @@
 use super::floating_base::{array, numbers, reference};
 use dynamics_reference::scaled_error;
 use dynamics_runtime::{
-    FloatingDynamicsBaseParameters, FloatingDynamicsBaseParametersBatch,
-    FloatingDynamicsRegressor, FloatingDynamicsRegressorBatch,
+    FloatingDynamicsBaseParameters, FloatingDynamicsBaseParametersBatch, FloatingDynamicsRegressor,
+    FloatingDynamicsRegressorBatch,
 };
 
 #[derive(dynamics_runtime::Dynamics)]
