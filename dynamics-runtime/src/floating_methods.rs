@@ -205,6 +205,99 @@ macro_rules! for_each_floating_method {
                     }
                 }
             }
+            /// The joint torque regressor of a floating base (Pinocchio's
+            /// `computeJointTorqueRegressor` on the free flyer), for identifying its inertial
+            /// parameters: implemented by `#[derive(Dynamics)]` for a robot with
+            /// `base = floating` and `regressor = true`.
+            ///
+            /// `τ = Σ_j Y_j(q, v, a) π_j` over the `LINKS = n + 1` bodies, the floating body
+            /// first (`π_0` about the base origin in base axes), then link j of joint j about the
+            /// origin of its link frame (a URDF's link frame), each
+            /// `π_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]` (Pinocchio's
+            /// `Inertia::toDynamicParameters`); the `N = n + 6` rows are `inverse_dynamics`'.
+            trait FloatingDynamicsRegressor<Q, N; LINKS>: FloatingDynamics<Q, N>, nalgebra FloatingDynamicsRegressorNalgebra, batch FloatingDynamicsRegressorBatch {
+                items {
+                    /// Number of bodies, the floating one first: of column blocks of
+                    /// `regressor`.
+                    const LINK_COUNT: usize = LINKS;
+                }
+                /// The joint torque regressor and the standard parameters of a floating base.
+                family FloatingRegressor {
+                    name: regressor,
+                    module: "__floating_regressor",
+                    opt_in: true,
+                    adjective: "floating regressor's ",
+                }
+                methods {
+                    /// The regressor `Y(q, v, a)`: element `[i][j][k]` is `∂τ_i/∂π_jk`, body 0
+                    /// the floating one, so that `Σ_j Σ_k Y[i][j][k] π_jk` is
+                    /// `inverse_dynamics(q, v, a)`.
+                    fn regressor(q, v, a) -> link_columns, nalgebra regressor_na, batch regressor_batch {
+                        variant: FloatingRegressor,
+                        equation: None,
+                        prefix: "y",
+                        summary: "Y(q, v, a) of a floating base, with τ = Y π.",
+                        element: "d tau{k} / d pi{i}_{j}",
+                        into: regressor_into,
+                    }
+                    /// The standard parameters `π_j` as the description gives them, the floating
+                    /// body's first (about the base origin, in base axes), then each link's about
+                    /// the origin of its link frame, per body
+                    /// `[m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]`.
+                    fn standard_parameters() -> link_parameters, nalgebra standard_parameters_na {
+                        variant: FloatingStandardParameters,
+                        equation: None,
+                        prefix: "pi",
+                        summary: "The standard parameters π of each body, the floating one first.",
+                        element: "pi{i}_{j}",
+                    }
+                }
+            }
+            /// The base parameters of a floating base: the `B` combinations of the standard
+            /// parameters (`FloatingDynamicsRegressor`'s, the floating body's first) that the
+            /// generalized forces determine, and the reduced regressor `Y_B` of full column
+            /// rank, `Y_B(q, v, a) π_B = inverse_dynamics(q, v, a)`. Found exactly from the
+            /// closed form, as a fixed base's. `LINKS` is `FloatingDynamicsRegressor`'s.
+            trait FloatingDynamicsBaseParameters<Q, N; B, LINKS>: FloatingDynamics<Q, N>, nalgebra FloatingDynamicsBaseParametersNalgebra, batch FloatingDynamicsBaseParametersBatch {
+                items {}
+                /// The base parameters of a floating base and their reduced regressor.
+                family FloatingBaseParameters {
+                    name: base_parameters,
+                    module: "__floating_base_parameters",
+                    opt_in: true,
+                    adjective: "floating base parameters' ",
+                }
+                methods {
+                    /// The reduced regressor `Y_B(q, v, a)`: element `[i][b]` is the derivative
+                    /// of `τ_i` by base parameter b, in the order of `base_parameters`.
+                    fn base_regressor(q, v, a) -> base_columns, nalgebra base_regressor_na, batch base_regressor_batch {
+                        variant: FloatingBaseRegressor,
+                        equation: None,
+                        prefix: "yb",
+                        summary: "Y_B(q, v, a) of a floating base, with τ = Y_B π_B.",
+                        element: "d tau{i} / d base parameter {j}",
+                        into: base_regressor_into,
+                    }
+                    /// The base parameters `π_B` of the description.
+                    fn base_parameters() -> base_vector, nalgebra base_parameters_na {
+                        variant: FloatingBaseParameters,
+                        equation: None,
+                        prefix: "pib",
+                        summary: "The base parameters π_B of the description.",
+                        element: "base parameter {i}",
+                    }
+                    /// The map from the bodies' standard parameters (`standard_parameters`'
+                    /// layout, the floating body first) to the base parameters:
+                    /// `π_B[b] = Σ_j Σ_k P[b][j][k] π_jk`. Constants.
+                    fn base_from_standard() -> base_link_map, nalgebra base_from_standard_na {
+                        variant: FloatingBaseFromStandard,
+                        equation: None,
+                        prefix: "pbs",
+                        summary: "The map P from the bodies' standard parameters π to π_B.",
+                        element: "base parameter {k}: coefficient of pi{i}_{j}",
+                    }
+                }
+            }
         }
     };
 }

@@ -96,12 +96,14 @@ pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DerivativesBatchScalar, DynamicsBaseParametersBatch, DynamicsBatch,
     DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch,
-    FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch, TipKinematicsBatch,
+    FloatingDynamicsBaseParametersBatch, FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch,
+    FloatingDynamicsRegressorBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
-    FloatingDynamics, FloatingDynamicsDerivatives, TipKinematics,
+    FloatingDynamics, FloatingDynamicsBaseParameters, FloatingDynamicsDerivatives,
+    FloatingDynamicsRegressor, TipKinematics,
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::floating_contact_terms::{ContactTerms, FloatingContactTerms};

@@ -6,8 +6,8 @@ use super::{field_idents, load_with_request, self_fields, type_name, Failure};
 use crate::args::Stats;
 use dynamics_codegen::model::{Robot, Simplification};
 use dynamics_codegen::pipeline::derived_readable;
-use dynamics_codegen::Method;
 use dynamics_codegen::{expand_robot, generate, Equations, Generated};
+use dynamics_codegen::{Family, Method};
 use quote::{quote, ToTokens};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
@@ -67,13 +67,20 @@ pub fn run(args: &Stats) -> Result<String, Failure> {
 /// `--floating`: the robot on a free-flying base, as the derive's `base = floating` traces
 /// it, and its methods' table (`FloatingDynamics`: M, h, τ, g, the forward dynamics, M⁻¹).
 fn floating(args: &Stats, file: &dynamics_codegen::Loaded) -> Result<String, Failure> {
-    if args.families.derivatives || !args.families.with.is_empty() {
-        let message = "--floating gives M, h, τ, g, the forward dynamics and M⁻¹: the opt-in \
-                       families are not supported on a floating base yet";
+    let families = args.families.set();
+    let supported = [
+        Family::Derivatives,
+        Family::Regressor,
+        Family::BaseParameters,
+    ];
+    if families.opt_in().any(|f| !supported.contains(&f)) {
+        let message = "--floating gives M, h, τ, g, the forward dynamics and M⁻¹, and with \
+                       --with the derivatives, the regressor and the base parameters: the other \
+                       opt-in families are not supported on a floating base yet";
         return Err(super::usage("stats", message));
     }
     let start = Instant::now();
-    let mut eq = file.floating_equations().map_err(|d| {
+    let mut eq = file.floating_equations_with(families).map_err(|d| {
         let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
         Failure::File(lines.join("\ndynamics: "))
     })?;
@@ -390,6 +397,30 @@ mod tests {
         ] {
             assert_eq!(row(&from_urdf, method), row(&from_file, method), "{method}");
         }
+        // The opt-in families a floating base has, and one it has not.
+        let with = [
+            "stats",
+            urdf.as_str(),
+            "--floating",
+            "--runs",
+            "1",
+            "--with",
+        ];
+        let identification = run(with.into_iter().chain(["regressor,base_parameters"]));
+        let identification = identification.expect("runs");
+        for method in [
+            "regressor",
+            "standard_parameters",
+            "base_regressor",
+            "base_parameters",
+        ] {
+            assert!(!row(&identification, method).is_empty(), "{method}");
+        }
+        let refused = run(with.into_iter().chain(["tip_kinematics"])).unwrap_err();
+        assert!(
+            format!("{refused:?}").contains("not supported"),
+            "{refused:?}"
+        );
         let fixed = format!("{root}puma560.toml");
         let wrong = run(["stats", fixed.as_str(), "--floating", "--runs", "1"]).unwrap_err();
         assert!(

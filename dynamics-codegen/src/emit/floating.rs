@@ -24,7 +24,12 @@ pub fn floating_items(
     krate: &TokenStream,
     input: &syn::DeriveInput,
 ) -> Items {
-    let generated = generate_uncounted(eq, fields.to_vec());
+    let mut generated = generate_uncounted(eq, fields.to_vec());
+    // The regressor's bodies: the floating one and the links.
+    generated.links = eq
+        .regressor
+        .as_ref()
+        .map_or(eq.links, |r| r.parameters.len());
     let ident = &input.ident;
     let (beside, within): (Vec<_>, Vec<_>) = generated
         .modules
@@ -51,11 +56,12 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
     let (ident, generics) = (&input.ident, &input.generics);
     let (impl_generics, ty_generics, where_clause) = generics.split_for_impl();
     let t = Ident::new("T", Span::call_site());
+    let (base, links) = (generated.base_count, generated.links);
     let counts = Counts {
         joints: quote!(#nv),
-        base: quote!(0),
+        base: quote!(#base),
         tips: quote!(0),
-        links: quote!(#nv),
+        links: quote!(#links),
     };
     let parameters = Ident::new(PARAMETERS_FN, Span::call_site());
     let fns: Vec<(Method, TokenStream)> = generated
@@ -99,11 +105,17 @@ fn trait_impl(generated: &Generated, krate: &TokenStream, input: &syn::DeriveInp
     traits.dedup();
     let impls = traits.into_iter().map(|name| {
         let functions = fns.iter().filter(|(m, _)| m.family().trait_name() == name);
+        let counts_of = functions.clone().next().map(|(m, _)| m.family().count_parameters());
+        // The trait's counts of its own (`B`, `LINKS`), after the two lengths.
+        let own = counts_of.unwrap_or_default().iter().map(|&c| match c {
+            "LINKS" => &counts.links,
+            _ => &counts.base,
+        });
         let functions = functions.map(|(_, f)| f);
         let name = Ident::new(name, Span::call_site());
         quote! {
             #[automatically_derived]
-            impl #impl_generics #krate::#name<#nq, #nv> for #ident #ty_generics #where_clause {
+            impl #impl_generics #krate::#name<#nq, #nv #(, #own)*> for #ident #ty_generics #where_clause {
                 #(#functions)*
             }
         }

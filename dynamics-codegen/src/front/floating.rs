@@ -3,9 +3,11 @@
 //! from the attribute's `base = floating(mass = .., com = [..], inertia = [..])` beside a D-H
 //! table or `joints = [..]`, in the base frame (frame 0) as a link's; its gravity, in the
 //! world frame, from `gravity = [..]` (the URDF's default `[0, 0, −9.81]`). Every key or family
-//! the floating base does not support yet is refused on its token (`derivatives = true` is
-//! supported, as `FloatingDynamicsDerivatives`), so that no robot gets methods that would be
-//! wrong on a flying base.
+//! the floating base does not support yet is refused on its token (`derivatives = true`,
+//! `regressor = true` and `base_parameters = true` are supported, as
+//! `FloatingDynamicsDerivatives`, `FloatingDynamicsRegressor`,
+//! `FloatingDynamicsBaseParameters`), so that no robot gets methods that would be wrong on a
+//! flying base.
 
 use super::attrs::Attrs;
 use super::errors::Errors;
@@ -64,7 +66,7 @@ pub(super) fn free_flyer(
         .iter()
         .filter(|(family, &asked)| asked && family.on_floating_base().is_none());
     for (family, _) in asked {
-        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`", family.name()));
+        errors.push(span, format!("`{} = true` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives, regressor and base parameters with `derivatives = true`, `regressor = true`, `base_parameters = true`", family.name()));
     }
     if attrs.simplify.is_some() {
         errors.push(span, "`simplify(..)` is not supported on a floating base yet: `base = floating` gives M, h, τ, g and the forward dynamics (`FloatingDynamics`), and their first derivatives with `derivatives = true`");

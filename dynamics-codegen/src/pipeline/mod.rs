@@ -248,6 +248,25 @@ impl Loaded {
         Some((start.elapsed(), ops))
     }
 
+    /// [`Loaded::floating_equations`] with the opt-in families of `families` traced, as the
+    /// derive traces them (`derivatives`, `regressor`, `base_parameters`).
+    ///
+    /// # Errors
+    /// As [`Loaded::floating_equations`], and where the base parameters cannot be traced (a
+    /// length or angle given by a struct field).
+    pub fn floating_equations_with(
+        &self,
+        families: FamilySet,
+    ) -> Result<Equations, Vec<Diagnostic>> {
+        let mut eq = self.floating_equations()?;
+        let flyer = self.flyer.as_ref().map_err(Clone::clone)?;
+        if floating::add_floating_families(&mut eq, &self.robot, flyer, families) {
+            return Ok(eq);
+        }
+        let message = "the base parameters need the robot's lengths and angles as numbers";
+        Err(vec![Diagnostic::of_file(&self.path, message)])
+    }
+
     /// Whether the file has a `[simplify]` table of its own.
     #[must_use]
     pub fn asks_simplified(&self) -> bool {

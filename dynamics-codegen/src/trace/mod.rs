@@ -33,6 +33,7 @@ mod floating;
 mod floating_contacts;
 mod floating_derivatives;
 mod floating_kinematics;
+mod floating_regressor;
 mod forward;
 mod friction;
 mod gravity;
@@ -167,8 +168,11 @@ impl Equations {
                 | Family::Forward
                 | Family::Floating
                 | Family::FloatingForward
-                // A floating base's, traced by `Equations::add_floating_derivatives`.
-                | Family::FloatingDerivatives => {}
+                // A floating base's, traced by `Equations::add_floating_derivatives`,
+                // `add_floating_regressor` and `floating_base_parameters`.
+                | Family::FloatingDerivatives
+                | Family::FloatingRegressor
+                | Family::FloatingBaseParameters => {}
             }
         }
     }

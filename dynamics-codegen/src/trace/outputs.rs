@@ -223,7 +223,12 @@ impl Method {
             | Method::BaseRegressor
             | Method::BaseParameters
             | Method::BaseFromStandard
-            | Method::BaseFromJoints => self.identification_shape(eq),
+            | Method::BaseFromJoints
+            | Method::FloatingRegressor
+            | Method::FloatingStandardParameters
+            | Method::FloatingBaseRegressor
+            | Method::FloatingBaseParameters
+            | Method::FloatingBaseFromStandard => self.identification_shape(eq),
             Method::InverseDynamicsSimplified
             | Method::MassMatrixSimplified
             | Method::CoriolisTorquesSimplified
@@ -256,23 +261,25 @@ impl Method {
     /// sends here).
     fn identification_shape(self, eq: &Equations) -> Shape<'_> {
         match self {
-            Method::Regressor => Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns)),
+            Method::Regressor | Method::FloatingRegressor => {
+                Shape::Stack(eq.regressor.as_ref().map_or(&[], |r| &r.columns))
+            }
             Method::JointRegressor => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_columns))
             }
             Method::JointParameters => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.joint_parameters))
             }
-            Method::StandardParameters => {
+            Method::StandardParameters | Method::FloatingStandardParameters => {
                 Shape::Matrix(eq.regressor.as_ref().map_or(&[], |r| &r.parameters))
             }
-            Method::BaseRegressor => {
+            Method::BaseRegressor | Method::FloatingBaseRegressor => {
                 Shape::Matrix(eq.base_parameters.as_ref().map_or(&[], |b| &b.regressor))
             }
-            Method::BaseParameters => {
+            Method::BaseParameters | Method::FloatingBaseParameters => {
                 Shape::Vector(eq.base_parameters.as_ref().map_or(&[], |b| &b.values))
             }
-            Method::BaseFromStandard => {
+            Method::BaseFromStandard | Method::FloatingBaseFromStandard => {
                 Shape::Stack(eq.base_parameters.as_ref().map_or(&[], |b| &b.link_map))
             }
             // `BaseFromJoints`, the last of them.

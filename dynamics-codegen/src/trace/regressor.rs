@@ -38,7 +38,7 @@ use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
 /// The parameters of a link, in `π`'s order.
-const PARAMETERS: usize = 10;
+pub(super) const PARAMETERS: usize = 10;
 
 /// The regressor's outputs: node ids into [`Equations::graph`].
 #[derive(Clone, Debug)]
@@ -143,7 +143,7 @@ pub(super) fn exact_columns(robot: &Robot) -> ExactColumns {
     // need a link pose's turn to be exactly orthogonal, as its entries as leaves are not.
     let tau = placeholder_taus(&mut tracer, robot, false).swap_remove(0);
     let (joint_columns, _) = joint_terms(&tracer, robot);
-    let columns = columns(&mut graph.borrow_mut(), &tau);
+    let columns = columns(&mut graph.borrow_mut(), &tau, robot.dof());
     // The reduced rows, so that parameters the coupling makes inseparable are grouped.
     let (columns, joint_columns, rows) =
         in_coordinates(&graph, &tracer, robot, columns, joint_columns);
@@ -228,7 +228,7 @@ fn placeholder_taus(
 
 /// `π` of link `joint`, about the origin of its link frame, in its axes: the description's
 /// body in D-H frame i, carried back into the link frame (the same frame for a D-H table).
-fn link_parameters<'g>(tracer: &Tracer<'g>, joint: &Joint) -> [Expr<'g>; PARAMETERS] {
+pub(super) fn link_parameters<'g>(tracer: &Tracer<'g>, joint: &Joint) -> [Expr<'g>; PARAMETERS] {
     let link = tracer.inertial(joint);
     let zero = link.mass.zero();
     let in_dh_frame = Body::from_inertial(&link, zero, zero, zero.one());
@@ -245,7 +245,7 @@ fn link_parameters<'g>(tracer: &Tracer<'g>, joint: &Joint) -> [Expr<'g>; PARAMET
 }
 
 /// The link frame in D-H frame i: its axes (columns) and its origin.
-fn link_pose<'g>(tracer: &Tracer<'g>, pose: &Pose) -> (Mat3<Expr<'g>>, V3<Expr<'g>>) {
+pub(super) fn link_pose<'g>(tracer: &Tracer<'g>, pose: &Pose) -> (Mat3<Expr<'g>>, V3<Expr<'g>>) {
     let v = |x| tracer.value(x);
     let t = &pose.translation;
     let rotation = Mat3 {
@@ -281,12 +281,12 @@ fn joint_terms(t: &Tracer<'_>, robot: &Robot) -> (Vec<Vec<NodeId>>, Vec<Vec<Node
 }
 
 /// The placeholder of parameter `k` of link `j`.
-fn placeholder(j: usize, k: usize) -> u16 {
+pub(super) fn placeholder(j: usize, k: usize) -> u16 {
     u16::try_from(j * PARAMETERS + k).unwrap_or(u16::MAX)
 }
 
 /// The body of `π`, about the origin of the frame it is given in, in its axes.
-fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
+pub(super) fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
     let [m, mx, my, mz, ixx, ixy, iyy, ixz, iyz, izz] = *pi;
     Body {
         mass: m,
@@ -298,7 +298,10 @@ fn body<S: Scalar>(pi: &[S; PARAMETERS]) -> Body<S> {
 /// Of the columns of each way of tracing τ ([`placeholder_taus`]), those that take the fewest
 /// operations.
 fn cheapest_columns(g: &mut Graph, candidates: &[Vec<NodeId>]) -> Vec<Vec<Vec<NodeId>>> {
-    let candidates: Vec<_> = candidates.iter().map(|tau| columns(g, tau)).collect();
+    let candidates: Vec<_> = candidates
+        .iter()
+        .map(|tau| columns(g, tau, tau.len()))
+        .collect();
     let mut candidates = candidates.into_iter();
     let first = candidates.next().unwrap_or_default();
     cost::cheapest(g, first, candidates, |c| {
@@ -306,13 +309,13 @@ fn cheapest_columns(g: &mut Graph, candidates: &[Vec<NodeId>]) -> Vec<Vec<Vec<No
     })
 }
 
-/// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0.
-fn columns(g: &mut Graph, tau: &[NodeId]) -> Vec<Vec<Vec<NodeId>>> {
-    let n = tau.len();
+/// `columns[i][j][k]`: τ_i with `π_jk = 1` and every other placeholder 0, for the `links`
+/// bodies whose placeholders τ reads.
+pub(super) fn columns(g: &mut Graph, tau: &[NodeId], links: usize) -> Vec<Vec<Vec<NodeId>>> {
     let (zero, one) = (g.num(Number::ZERO), g.num(Number::ONE));
     let inertial = g.dependents(tau, |v| matches!(v, Var::Inertial(_)));
     // by_parameter[j][k][i]: the column of π_jk, row i.
-    let by_parameter: Vec<Vec<Vec<NodeId>>> = (0..n)
+    let by_parameter: Vec<Vec<Vec<NodeId>>> = (0..links)
         .map(|j| {
             (0..PARAMETERS)
                 .map(|k| {
@@ -325,7 +328,7 @@ fn columns(g: &mut Graph, tau: &[NodeId]) -> Vec<Vec<Vec<NodeId>>> {
                 .collect()
         })
         .collect();
-    (0..n)
+    (0..tau.len())
         .map(|i| {
             let link = |columns: &Vec<Vec<NodeId>>| columns.iter().map(|c| c[i]).collect();
             by_parameter.iter().map(link).collect()
@@ -333,6 +336,6 @@ fn columns(g: &mut Graph, tau: &[NodeId]) -> Vec<Vec<Vec<NodeId>>> {
         .collect()
 }
 
-fn ids(values: &[Expr<'_>]) -> Vec<NodeId> {
+pub(super) fn ids(values: &[Expr<'_>]) -> Vec<NodeId> {
     values.iter().map(|e| e.id()).collect()
 }

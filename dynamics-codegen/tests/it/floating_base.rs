@@ -1,6 +1,6 @@
 //! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
-//! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives` where
-//! it asks), and every key or family the floating base does not support is a compile error
+//! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives`,
+//! `FloatingDynamicsRegressor`, `FloatingDynamicsBaseParameters` where it asks), and every key or family the floating base does not support is a compile error
 //! naming it (never methods that would be wrong on a flying base).
 
 use dynamics_codegen::derive_dynamics;
@@ -73,12 +73,76 @@ fn a_floating_base_asks_for_its_derivatives() {
     assert_eq!(floating(&out), floating(&plain));
 }
 
+/// `regressor = true` and `base_parameters = true` implement `FloatingDynamicsRegressor<19, 18,
+/// 13>` (the floating body and 12 links) and `FloatingDynamicsBaseParameters<19, 18, B, 13>`,
+/// and leave the floating family's module as it was; `base_parameters` alone does not emit the
+/// regressor it traces.
+#[test]
+fn a_floating_base_asks_for_its_regressor_and_base_parameters() {
+    let plain = solo("base = floating");
+    let out = solo("base = floating, regressor = true, base_parameters = true");
+    assert!(!out.contains("compile_error"), "{out}");
+    assert!(
+        out.contains("FloatingDynamicsRegressor < 19usize , 18usize , 13usize >"),
+        "{out}"
+    );
+    assert!(
+        out.contains("FloatingDynamicsBaseParameters < 19usize , 18usize , 94usize , 13usize >"),
+        "{out}"
+    );
+    assert!(!out.contains(":: DynamicsRegressor <"), "{out}");
+    let floating = |x: &str| {
+        let start = x.find("mod __floating ").expect("the floating module");
+        let end = x
+            .find("mod __floating_forward")
+            .expect("the forward module");
+        x[start..end].to_owned()
+    };
+    assert_eq!(floating(&out), floating(&plain));
+    let alone = solo("base = floating, base_parameters = true");
+    assert!(!alone.contains("FloatingDynamicsRegressor <"), "{alone}");
+    assert!(
+        alone.contains("FloatingDynamicsBaseParameters <"),
+        "{alone}"
+    );
+}
+
+/// The number of base parameters of the three robots equals the numerical rank of Pinocchio's
+/// regressor stacked at 40 random states (`tests/data/floating/*_regressor.json`, `make.py`):
+/// Solo 12 and ANYmal B 94 of 130, the G1 213 of 300.
+#[test]
+fn base_parameters_count_the_rank_of_pinocchios_regressor() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    for (robot, bodies) in [("solo12", 13), ("anymal_b", 13), ("g1_29dof", 30)] {
+        let data =
+            std::fs::read_to_string(format!("{root}/tests/data/floating/{robot}_regressor.json"))
+                .expect("the data");
+        let at = data.find("\"rank\": ").expect("rank") + "\"rank\": ".len();
+        let rank: usize = data[at..]
+            .split(|c: char| !c.is_ascii_digit())
+            .next()
+            .and_then(|x| x.parse().ok())
+            .expect("a number");
+        let urdf = format!("{root}/robots/urdf/floating/{robot}.urdf");
+        let source = format!(
+            "#[dynamics(urdf = {urdf:?}, base = floating, base_parameters = true)] struct R;"
+        );
+        let out = derive_dynamics(source.parse().expect("tokens")).to_string();
+        let nv = (bodies - 1) + 6;
+        let nq = nv + 1;
+        let expected = format!(
+            "FloatingDynamicsBaseParameters < {nq}usize , {nv}usize , {rank}usize , {bodies}usize >"
+        );
+        assert!(out.contains(&expected), "{robot}: {expected}");
+    }
+}
+
 #[test]
 fn what_a_floating_base_does_not_have_yet_is_refused() {
     for (keys, message) in [
         (
-            "base = floating, regressor = true",
-            "`regressor = true` is not supported on a floating base yet",
+            "base = floating, tip_kinematics = true",
+            "`tip_kinematics = true` is not supported on a floating base yet",
         ),
         (
             "base = floating, tip = \"FL_FOOT\"",

@@ -48,8 +48,8 @@ pub use layout::{States, StatesMut};
 pub use parallel::{ChunksMut, InParallel};
 pub use traits::{
     DynamicsBaseParametersBatch, DynamicsBatch, DynamicsDerivativesBatch, DynamicsRegressorBatch,
-    DynamicsSimplifiedBatch, FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch,
-    TipKinematicsBatch,
+    DynamicsSimplifiedBatch, FloatingDynamicsBaseParametersBatch, FloatingDynamicsBatch,
+    FloatingDynamicsDerivativesBatch, FloatingDynamicsRegressorBatch, TipKinematicsBatch,
 };
 
 use crate::lanes::{Lanes, SplitLanes};

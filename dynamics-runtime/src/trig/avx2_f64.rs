@@ -43,9 +43,9 @@ unsafe fn fma(a: __m256d, b: __m256d, c: __m256d) -> __m256d {
 /// The four arguments in one register. On a build with AVX-512 each half goes through an empty
 /// `asm!` that LLVM cannot see into: otherwise it gathers arguments read from scattered
 /// elements of one array (random5's `q[1]`, `q[3]`, `q[4]`, `q[5]`) with a masked 512-bit load
-/// and a 512-bit permute, and on an Intel Xeon those two instructions slowed every method that
-/// follows them by 15-20 ns (random5's gravity torques 40 → 21 ns; `docs/performance.md`,
-/// 2026-11-29). A half of two lanes is at most a 128-bit load or two.
+/// and a 512-bit permute, and on Intel's AVX-512 cores those two instructions slow down the
+/// scalar code after them (`docs/performance.md`). A half of two lanes is at most a 128-bit
+/// load or two.
 #[inline]
 #[target_feature(enable = "avx2")]
 unsafe fn load(x: [f64; 4]) -> __m256d {

@@ -571,6 +571,75 @@ def derivatives(name, urdf):
     print(name, "derivatives:", len(samples), "samples")
 
 
+# The robots whose regressor is written (`regressor`).
+REGRESSOR = ["solo12", "anymal_b", "g1_29dof"]
+# States stacked for the regressor's numerical rank, and the relative tolerance on the singular
+# values that decides it.
+RANK_STATES = 40
+RANK_TOLERANCE = 1e-9
+
+
+def regressor(name, urdf):
+    """The joint torque regressor (issue 43, item 2) at the states of `<name>.json`, written to
+    `<name>_regressor.json`: `computeJointTorqueRegressor(q, v, a)` (nv x 10 (n + 1)), the column
+    blocks body by body, the free flyer's first, then the joints' in the file's order, each
+    block the body's `[m, m c, I(6)]` (`Inertia::toDynamicParameters`: about the joint frame's
+    origin, in its axes; a URDF's joint frame is its child link's frame), rows in the file's
+    joint order; and the standard parameters `pi` in the same layout. Checks Y pi = rnea(q, v, a)
+    to 1e-12 scaled. Also the numerical rank of Y stacked at RANK_STATES random states (seed
+    SEED + 3: joints in [-pi, pi], unit quaternions, v and a in [-2, 2]), by the SVD with
+    singular values below RANK_TOLERANCE times the largest taken as zero, and the gap there."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    pick = [names.index(j) for j in order]
+    iv = list(range(6)) + [6 + k for k in pick]
+    # Body blocks: the free flyer's (Pinocchio's joint 1), then the file's joints.
+    bodies = [1] + [2 + k for k in pick]
+    columns = [10 * (b - 1) + k for b in bodies for k in range(10)]
+    pi = np.concatenate([model.inertias[b].toDynamicParameters() for b in bodies])
+    samples = []
+    for s in states:
+        q = from_file_order(names, order, np.array(s["q"]), 7)
+        v, a = (from_file_order(names, order, np.array(s[k]), 6) for k in ("v", "a"))
+        y = pin.computeJointTorqueRegressor(model, data, q, v, a).copy()[np.ix_(iv, columns)]
+        tau = pin.rnea(model, data, q, v, a)[iv]
+        assert scaled(y @ pi, tau) < TOLERANCE, scaled(y @ pi, tau)
+        assert scaled(tau, s["tau"]) < TOLERANCE
+        samples.append({"Y": y.tolist()})
+    rng = np.random.default_rng(SEED + 3)
+    stacked = []
+    for _ in range(RANK_STATES):
+        q, v, a = sample(rng, model, 1)
+        stacked.append(pin.computeJointTorqueRegressor(model, data, q, v, a).copy())
+    singular = np.linalg.svd(np.vstack(stacked), compute_uv=False)
+    rank = int(np.sum(singular > RANK_TOLERANCE * singular[0]))
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (regressor) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, a of its samples, in order)",
+        "joints": order,
+        "conventions": "Y[i][10 j + k] = d tau_i / d pi_jk; body 0 the floating body (about the base origin, base "
+                       "axes), body j the link of joint j in the file's order (about its joint frame's origin, in "
+                       "its axes); pi_j = [m, m cx, m cy, m cz, Ixx, Ixy, Iyy, Ixz, Iyz, Izz]",
+        "pi": pi.tolist(),
+        "rank": rank,
+        "rank_gap": [float(singular[rank - 1] / singular[0]), float(singular[rank] / singular[0])
+                     if rank < len(singular) else 0.0],
+        "rank_states": RANK_STATES,
+        "seed": SEED + 3,
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_regressor.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "regressor:", len(samples), "samples, rank", rank, "of", len(columns), result["rank_gap"])
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
@@ -583,3 +652,5 @@ if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         if name in DERIVATIVES:
             derivatives(name, urdf)
+    for name in REGRESSOR:
+        regressor(name, ROBOTS[name])

@@ -14,6 +14,7 @@ mod floating_derivatives;
 mod floating_forward;
 mod floating_front;
 mod floating_kinematics;
+mod floating_regressor;
 mod forward_dynamics;
 mod friction;
 mod front_door;

@@ -137,6 +137,19 @@ impl Equations {
         if self.regressor.is_none() {
             self.add_regressor(robot);
         }
+        // Exactly on a trace of their own, in which the description's constants are leaves.
+        let exact = super::regressor::exact_columns(robot);
+        self.grouped(joints, exact)
+    }
+
+    /// The base parameters of the regressor traced ([`Equations::regressor`]), the relations
+    /// between its columns decided on `exact`, the same columns traced with the description's
+    /// constants as leaves; with the joint parameters `joints[i]` says for joint i.
+    pub(super) fn grouped(
+        &mut self,
+        joints: &[JointColumns],
+        mut exact: super::regressor::ExactColumns,
+    ) -> Option<BaseParameters> {
         let regressor = self.regressor.clone()?;
         // A column per link and joint, a row per coordinate (fewer on a robot with mimics).
         let links = regressor.parameters.len();
@@ -148,8 +161,6 @@ impl Equations {
             rows: &regressor.rows,
         };
         let columns = column_ids(&taken, &ours, zero);
-        // Exactly on a trace of their own, in which the description's constants are leaves.
-        let mut exact = super::regressor::exact_columns(robot);
         let exact_zero = exact.graph.num(Number::ZERO);
         let theirs = Columns {
             links: &exact.columns,

@@ -45,7 +45,12 @@ fn a_floating_base_has_rows_of_its_own_named_as_its_trait_names_them() {
         .copied()
         .filter(|m| m.family().is_floating())
         .collect();
-    let traits = ["FloatingDynamics", "FloatingDynamicsDerivatives"];
+    let traits = [
+        "FloatingDynamics",
+        "FloatingDynamicsDerivatives",
+        "FloatingDynamicsRegressor",
+        "FloatingDynamicsBaseParameters",
+    ];
     assert!(floating
         .iter()
         .all(|m| traits.contains(&m.family().trait_name())));
