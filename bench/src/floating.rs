@@ -135,6 +135,9 @@ pub fn floating_derivative_samples<const V: usize>(
         .collect()
 }
 
+/// Per state, Pinocchio's `a` and `λ` with every foot held (a row per foot).
+pub type HeldSample<const V: usize, const F: usize> = ([f64; V], [[f64; 3]; F]);
+
 /// Pinocchio's `constraintDynamics` with every foot held at the states of the
 /// [`FloatingSample`]s of the same index (`tests/data/floating/<robot>_contact_fd.json`): the
 /// feet's names, in the order of the robot's `FloatingKinematics` frames, and per state `a`
@@ -145,7 +148,7 @@ pub fn floating_derivative_samples<const V: usize>(
 #[must_use]
 pub fn floating_contact_samples<const V: usize, const F: usize>(
     robot: &str,
-) -> ([String; F], Vec<([f64; V], [[f64; 3]; F])>) {
+) -> ([String; F], Vec<HeldSample<V, F>>) {
     let text = super::read(&format!("floating/{robot}_contact_fd.json"));
     let data: serde_json::Value =
         serde_json::from_str(&text).unwrap_or_else(|e| panic!("contacts of {robot}: {e}"));
