@@ -29,7 +29,9 @@ fn a_robot_has_every_family_but_those_it_must_ask_for() {
         [
             &Family::Floating,
             &Family::FloatingForward,
-            &Family::FloatingDerivatives
+            &Family::FloatingDerivatives,
+            &Family::FloatingRegressor,
+            &Family::FloatingBaseParameters
         ]
     );
     // A floating base's opt-in family answers a fixed base's name, which the attribute and the
@@ -38,7 +40,15 @@ fn a_robot_has_every_family_but_those_it_must_ask_for() {
         Family::Derivatives.on_floating_base(),
         Some(Family::FloatingDerivatives)
     );
-    assert_eq!(Family::Regressor.on_floating_base(), None);
+    assert_eq!(
+        Family::Regressor.on_floating_base(),
+        Some(Family::FloatingRegressor)
+    );
+    assert_eq!(
+        Family::BaseParameters.on_floating_base(),
+        Some(Family::FloatingBaseParameters)
+    );
+    assert_eq!(Family::Tips.on_floating_base(), None);
     assert_eq!(Family::from_name("derivatives"), Some(Family::Derivatives));
     let asked = default.with(Family::Derivatives);
     assert_eq!(asked.opt_in().collect::<Vec<_>>(), [Family::Derivatives]);

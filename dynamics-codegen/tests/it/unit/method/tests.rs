@@ -97,6 +97,9 @@ fn every_method_is_complete() {
             Method::BaseParameters,
             Method::BaseFromStandard,
             Method::BaseFromJoints,
+            Method::FloatingStandardParameters,
+            Method::FloatingBaseParameters,
+            Method::FloatingBaseFromStandard,
         ];
         assert_eq!(reads_q, !without_q.contains(&m), "{m:?}");
         let template = [m.element_template(false), m.element_template(true)];
