@@ -70,7 +70,7 @@ pub struct ContactDynamics<T, const V: usize, const F: usize> {
 }
 
 /// Contact wrenches, forces and held point contacts at the `F` frames of
-/// [`FloatingKinematics`] (`tips = [..]`, else the leaf links: a quadruped's feet), indexed as
+/// [`FloatingKinematics`](crate::FloatingKinematics) (`tips = [..]`, else the leaf links: a quadruped's feet), indexed as
 /// its results (`Robot::FRAME_FL_FOOT`). Implemented for every robot with
 /// [`FloatingContactTerms`]; not generated (written once over its methods and those of
 /// `FloatingDynamics` and `FloatingKinematics`).
