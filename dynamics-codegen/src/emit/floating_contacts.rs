@@ -35,16 +35,7 @@ pub fn floating_contacts_items(
     let emission = emission(eq, out, false);
     let nv = eq.dof;
     let (width, rows) = (out.free.len(), out.rows.len());
-    let generated = Generated {
-        dof: nv,
-        base_count: 0,
-        links: eq.links,
-        joint_rows: None,
-        tip_names: None,
-        fields: fields.to_vec(),
-        modules: Vec::new(),
-        methods: Vec::new(),
-    };
+    let generated = Generated::counts_only(eq, fields);
     let (p, k) = (local(PARAMETERS), fields.len());
     let (q, v, tau) = (
         argument_local(Argument::Q),

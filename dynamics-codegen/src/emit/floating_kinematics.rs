@@ -75,16 +75,7 @@ pub fn floating_kinematics_items(
         .collect();
     let emission = emit(eq, &outputs, &ctx);
     let (nv, frames) = (eq.dof, out.frame_names.len());
-    let generated = Generated {
-        dof: nv,
-        base_count: 0,
-        links: eq.links,
-        joint_rows: None,
-        tip_names: None,
-        fields: fields.to_vec(),
-        modules: Vec::new(),
-        methods: Vec::new(),
-    };
+    let generated = Generated::counts_only(eq, fields);
     let types = result_types(nv, frames);
     let (p, k) = (local(PARAMETERS), fields.len());
     let functions =

@@ -191,6 +191,21 @@ fn generate_with(eq: &Equations, fields: Vec<TokenStream>, counted: bool) -> Gen
 }
 
 impl Generated {
+    /// A robot's counts and fields alone, without methods: what a family emitted outside the
+    /// method table (a floating base's kinematics, its contact terms) writes its types with.
+    pub(super) fn counts_only(eq: &Equations, fields: &[TokenStream]) -> Self {
+        Generated {
+            dof: eq.dof,
+            base_count: 0,
+            links: eq.links,
+            joint_rows: None,
+            tip_names: None,
+            fields: fields.to_vec(),
+            modules: Vec::new(),
+            methods: Vec::new(),
+        }
+    }
+
     /// The counts its types are written with.
     pub(super) fn counts(&self) -> Counts {
         let (dof, base, links) = (self.dof, self.base_count, self.links);

@@ -26,24 +26,19 @@ pub const BASE_COORDINATES: usize = 6;
 /// checked the robot; it has no mimic joints.
 #[must_use]
 pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
-    let mut names = std::collections::BTreeSet::new();
-    for v in robot.values().chain(flyer.values()) {
-        v.collect_fields(&mut names);
-    }
-    let fields: Vec<String> = names.into_iter().collect();
+    let fields = floating_fields(robot, flyer);
     let graph = RefCell::new(Graph::new());
     let mut tracer = Tracer::new(&graph, &fields, robot).shifted(BASE_COORDINATES);
     let zero = tracer.num(Number::ZERO);
     let chain = tracer.chain(robot);
     let base = floating_base(&tracer, robot, flyer);
     let nv = robot.dof() + BASE_COORDINATES;
-    let vars = |kind: fn(u16) -> Var| -> Vec<Expr> {
-        (0..nv).map(|i| tracer.var(kind(joint_index(i)))).collect()
-    };
-    let (v, a) = (vars(Var::Qd), vars(Var::Qdd));
-    let quaternion = [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)));
-    let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
-    let gravity = V3::new(g[0], g[1], g[2]);
+    let (v, a) = (
+        coordinates(&tracer, nv, Var::Qd),
+        coordinates(&tracer, nv, Var::Qdd),
+    );
+    let quaternion = base_quaternion(&tracer);
+    let gravity = world_gravity(&tracer, flyer);
     let zeros = vec![zero; nv];
     let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
     let mass: Vec<_> = algo::floating_crba(&chain, &base)
@@ -101,15 +96,50 @@ pub(super) fn floating_base<'g>(
     flyer: &FreeFlyer,
 ) -> FloatingBase<Expr<'g>> {
     let v = |x| tracer.value(x);
-    let b = &flyer.body;
-    let link = Inertial {
-        mass: v(&b.mass),
-        com: V3::new(v(&b.com[0]), v(&b.com[1]), v(&b.com[2])),
-        inertia: b.inertia.each_ref().map(v),
-    };
+    let link = flyer_inertial(tracer, flyer);
     let (r, t) = (&robot.base.rotation, &robot.base.translation);
     let rotation = Mat3 {
         m: std::array::from_fn(|i| std::array::from_fn(|j| v(&r[i][j]))),
     };
     FloatingBase::new(&link, rotation, V3::new(v(&t[0]), v(&t[1]), v(&t[2])))
+}
+
+/// The free flyer's mass, centre of mass and inertia, as expressions.
+pub(super) fn flyer_inertial<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> Inertial<Expr<'g>> {
+    let v = |x| tracer.value(x);
+    let b = &flyer.body;
+    Inertial {
+        mass: v(&b.mass),
+        com: V3::new(v(&b.com[0]), v(&b.com[1]), v(&b.com[2])),
+        inertia: b.inertia.each_ref().map(v),
+    }
+}
+
+/// The struct fields that the robot's and the free flyer's values name, sorted, once each.
+pub(super) fn floating_fields(robot: &Robot, flyer: &FreeFlyer) -> Vec<String> {
+    let mut names = std::collections::BTreeSet::new();
+    for v in robot.values().chain(flyer.values()) {
+        v.collect_fields(&mut names);
+    }
+    names.into_iter().collect()
+}
+
+/// The `nv` velocity coordinates of one kind (`Var::Qd`, `Var::Qdd`), the base's six first.
+pub(super) fn coordinates<'g>(
+    tracer: &Tracer<'g>,
+    nv: usize,
+    kind: fn(u16) -> Var,
+) -> Vec<Expr<'g>> {
+    (0..nv).map(|i| tracer.var(kind(joint_index(i)))).collect()
+}
+
+/// The base's unit quaternion `(qx, qy, qz, qw)`: the configuration's entries 3..7.
+pub(super) fn base_quaternion<'g>(tracer: &Tracer<'g>) -> [Expr<'g>; 4] {
+    [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)))
+}
+
+/// Gravity in world axes.
+pub(super) fn world_gravity<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> V3<Expr<'g>> {
+    let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
+    V3::new(g[0], g[1], g[2])
 }

@@ -24,14 +24,14 @@
 //! [`crate::algo::quaternion_rotation`]) and no tangent moves the base along a rotation.
 
 use super::derivatives::{forward_derivatives, transpose, DerivativeEquations};
-use super::floating::BASE_COORDINATES;
+use super::floating::{base_quaternion, world_gravity, BASE_COORDINATES};
 use super::lane_solve::{self, lane_term};
 use super::tracer::{joint_index, Tracer};
 use super::Equations;
-use crate::algo::{self, RobotScalars, V3};
+use crate::algo;
 use crate::method::Family;
 use crate::model::{FreeFlyer, Robot};
-use crate::symbolic::{Graph, NodeId, Number, Of, Tangents, Term, Var, Wrt, BLOCK, QUARTER_BLOCK};
+use crate::symbolic::{Graph, NodeId, Number, Of, Tangents, Term, Wrt, BLOCK, QUARTER_BLOCK};
 use std::cell::RefCell;
 
 /// The base rotation's three coordinates of the tangent: `δω`, after the position's.
@@ -87,9 +87,8 @@ fn base_gravity(
     flyer: &FreeFlyer,
 ) -> [NodeId; 3] {
     let tracer = Tracer::new(graph, fields, robot).shifted(BASE_COORDINATES);
-    let quaternion = [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)));
-    let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
-    let g_b = algo::quaternion_rotation(quaternion).tr_mul_vec(V3::new(g[0], g[1], g[2]));
+    let quaternion = base_quaternion(&tracer);
+    let g_b = algo::quaternion_rotation(quaternion).tr_mul_vec(world_gravity(&tracer, flyer));
     [g_b.x.id(), g_b.y.id(), g_b.z.id()]
 }
 

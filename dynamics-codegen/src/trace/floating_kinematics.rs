@@ -8,8 +8,8 @@
 //! the base origin, in world axes, and the base position is added where they are returned.
 
 use super::cost::{ids, matrix_ids};
-use super::floating::{floating_base, BASE_COORDINATES};
-use super::tracer::{joint_index, Tracer};
+use super::floating::{base_quaternion, coordinates, floating_base, BASE_COORDINATES};
+use super::tracer::Tracer;
 use super::Equations;
 use crate::algo::{self, RobotScalars};
 use crate::model::{FreeFlyer, Robot};
@@ -56,10 +56,8 @@ impl Equations {
         let chain = tracer.chain(robot);
         let base = floating_base(&tracer, robot, flyer);
         let nv = robot.dof() + BASE_COORDINATES;
-        let v: Vec<_> = (0..nv)
-            .map(|i| tracer.var(Var::Qd(joint_index(i))))
-            .collect();
-        let quaternion = [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)));
+        let v = coordinates(&tracer, nv, Var::Qd);
+        let quaternion = base_quaternion(&tracer);
         let centroidal = algo::centroidal(&chain, &base, quaternion);
         let bias = algo::centroidal_bias(&chain, &base, quaternion, &v, centroidal.com_in_base);
         let c = centroidal.com;

@@ -21,9 +21,12 @@
 
 use super::base_parameters::BaseParameters;
 use super::expr::Expr;
-use super::floating::{floating_base, BASE_COORDINATES};
+use super::floating::{
+    base_quaternion, coordinates, floating_base, floating_fields, flyer_inertial, world_gravity,
+    BASE_COORDINATES,
+};
 use super::regressor::{self, body, ids, link_parameters, placeholder, ExactColumns, PARAMETERS};
-use super::tracer::{joint_index, Tracer};
+use super::tracer::Tracer;
 use super::{Equations, RegressorEquations};
 use crate::algo::{self, Body, LinkFrame, Mat3, RobotScalars, Scalar, V3};
 use crate::method::Family;
@@ -75,11 +78,7 @@ impl Equations {
 /// constants as leaves, and those leaves' values.
 fn exact_floating_columns(robot: &Robot, flyer: &FreeFlyer) -> ExactColumns {
     let graph = RefCell::new(Graph::new());
-    let mut names = std::collections::BTreeSet::new();
-    for v in robot.values().chain(flyer.values()) {
-        v.collect_fields(&mut names);
-    }
-    let fields: Vec<String> = names.into_iter().collect();
+    let fields = floating_fields(robot, flyer);
     let mut tracer = Tracer::new(&graph, &fields, robot)
         .with_exact_leaves()
         .shifted(BASE_COORDINATES);
@@ -119,13 +118,12 @@ fn placeholder_tau(tracer: &mut Tracer<'_>, robot: &Robot, flyer: &FreeFlyer) ->
     let mut base = floating_base(tracer, robot, flyer);
     base.body = body(&placeholders(tracer, 0));
     let nv = robot.dof() + BASE_COORDINATES;
-    let vars = |kind: fn(u16) -> Var| -> Vec<Expr> {
-        (0..nv).map(|i| tracer.var(kind(joint_index(i)))).collect()
-    };
-    let (v, a) = (vars(Var::Qd), vars(Var::Qdd));
-    let quaternion = [2, 3, 4, 5].map(|k| tracer.var(Var::Q(k)));
-    let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
-    let gravity = V3::new(g[0], g[1], g[2]);
+    let (v, a) = (
+        coordinates(tracer, nv, Var::Qd),
+        coordinates(tracer, nv, Var::Qdd),
+    );
+    let quaternion = base_quaternion(tracer);
+    let gravity = world_gravity(tracer, flyer);
     ids(&algo::floating_rnea(
         &chain, &base, quaternion, &v, &a, gravity,
     ))
@@ -138,13 +136,7 @@ fn placeholders<'g>(tracer: &Tracer<'g>, j: usize) -> [Expr<'g>; PARAMETERS] {
 
 /// `π` of the floating body, about the base origin in base axes.
 fn flyer_parameters<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> [Expr<'g>; PARAMETERS] {
-    let v = |x| tracer.value(x);
-    let b = &flyer.body;
-    let link = algo::Inertial {
-        mass: v(&b.mass),
-        com: V3::new(v(&b.com[0]), v(&b.com[1]), v(&b.com[2])),
-        inertia: b.inertia.each_ref().map(v),
-    };
+    let link = flyer_inertial(tracer, flyer);
     let zero = link.mass.zero();
     let body = Body::from_inertial(&link, zero, zero, zero.one());
     let [xx, yy, zz, xy, xz, yz] = body.inertia;
