@@ -46,8 +46,7 @@ pub(super) fn emit_with(
     // The shared functions take `q`: a method without it (friction) computes all it reads.
     let reads_q = |o: &&Output| o.method.arguments().contains(&Argument::Q);
     let outputs: Vec<&Output> = all.iter().filter(reads_q).collect();
-    let tree = branches(eq);
-    let (shared, apart_reads) = configuration_reads(eq, depends, &outputs, tree);
+    let (shared, apart_reads) = configuration_reads(eq, depends, &outputs);
     let boundary: Vec<NodeId> = eq
         .graph
         .nodes()
@@ -85,6 +84,7 @@ pub(super) fn emit_with(
         config_names(&mut e);
         e.motion(&motion_boundary, &field_names)
     });
+    let tree = branches(eq);
     let body_of = |o: &Output, shape: &Shape, group: Option<Group>| {
         let mut e = Emitter::new(eq, Some(ctx));
         // A tree's lanes: each row stored once its lane is computed.
@@ -93,8 +93,7 @@ pub(super) fn emit_with(
         if !reads_q(&o) {
             return e.function(shape, o.method);
         }
-        // A group's function, like a tree's `M`, computes its terms itself (`configuration_reads`).
-        if written_apart(eq, o) || e.kept.is_some() {
+        if written_apart(eq, o) {
             e.has_configuration = configuration.is_some();
             if let Some(c) = &configuration {
                 e.read_some_from(&boundary, c, Origin::Configuration, &apart_reads);
@@ -214,36 +213,21 @@ fn configuration_reads(
     eq: &Equations,
     depends: &[Depends],
     outputs: &[&Output],
-    tree: bool,
 ) -> (Vec<bool>, Vec<bool>) {
     let mut shared = vec![false; eq.graph.len()];
     let mut apart_reads = vec![false; eq.graph.len()];
-    let mut apart = |nodes: &[NodeId], shared: &mut Vec<bool>| {
-        // Not `q̇` and `q̈`, which the function reads itself (a lane's factor may be `q̇_i`).
-        let reads = trig_and_constants(eq, depends, nodes);
-        for id in reads
-            .into_iter()
-            .filter(|id| depends[id.index()] <= Depends::Configuration)
-        {
-            apart_reads[id.index()] = true;
-            shared[id.index()] = true;
-        }
-    };
     for o in outputs {
-        if written_apart(eq, o) {
-            apart(&o.shape.outputs(), &mut shared);
-            continue;
-        }
-        for id in boundary(eq, depends, &o.shape.outputs()) {
+        let reads = if written_apart(eq, o) {
+            let reads = trig_and_constants(eq, depends, &o.shape.outputs());
+            for id in &reads {
+                apart_reads[id.index()] = true;
+            }
+            reads
+        } else {
+            boundary(eq, depends, &o.shape.outputs())
+        };
+        for id in reads {
             shared[id.index()] = true;
-        }
-        // A tree's ∂τ in groups of rows: each group's function computes its terms in `q` and
-        // `q̇` itself, in the graph's order (each link's values next to the lanes that read
-        // them), from the sines, cosines and constants; read from the configuration and the
-        // motion, hundreds of scalars were computed before the first lane and waited on the
-        // stack.
-        if groups(o, tree).len() > 1 {
-            apart(&o.shape.lane_outputs(), &mut shared);
         }
     }
     (shared, apart_reads)

@@ -6,11 +6,10 @@
 //! Written as one function, Baxter's ∂τ is 61 kB of straight-line code, fetch-bound (twice the
 //! 32 kB instruction cache), and no layout of its lanes made it faster (docs/performance.md).
 //! Apart, each function is the code of one branch, about half, and is compiled on its own:
-//! fewer values live at once, fewer spills. Each reads the configuration's sines, cosines and
-//! constants (inlined: the compiler keeps of them what it reads, its branch's) and computes
-//! the scalars its lanes read itself, as a tree's `M` does, in the graph's order: each link's
-//! values next to the lanes that read them, not all before the first lane. Only where a plan
-//! is fetch-bound ([`FETCH_BOUND_OPERATIONS`] in
+//! fewer values live at once, fewer spills. Each reads the configuration and the motion
+//! itself (inlined: the compiler keeps of them what it reads, its branch's sines and cosines)
+//! and computes the scalars and lanes its rows need by the same expressions as the whole
+//! function: the same bits. Only where a plan is fetch-bound ([`FETCH_BOUND_OPERATIONS`] in
 //! blocks of eight): a smaller tree's and a serial robot's ∂τ are one function, as before.
 //!
 //! Each group's lanes hold its own directions first ([`local_layout`]), so that an arm's lanes

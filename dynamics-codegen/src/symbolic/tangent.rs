@@ -167,31 +167,12 @@ impl Graph {
     /// `None` where one would need a scalar node the graph lacks.
     #[must_use]
     pub fn tangents(&self, outputs: &[NodeId], wrt: Wrt, directions: usize) -> Option<Tangents> {
-        self.tangents_within(outputs, wrt, directions, None)
-    }
-
-    /// [`Graph::tangents`], with the tangent of several terms of a node read once written as a
-    /// lane where its reader comes more than `reach` nodes after it (`None`: never). Inlined
-    /// into a far reader, its terms keep the lanes they scale live until there: a link's
-    /// force, read by the backward pass, would keep the lanes of its rates live across every
-    /// link after it. Written, one lane waits instead, for one more addition.
-    #[must_use]
-    pub fn tangents_within(
-        &self,
-        outputs: &[NodeId],
-        wrt: Wrt,
-        directions: usize,
-        reach: Option<usize>,
-    ) -> Option<Tangents> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
         let live = self.live(outputs);
         let mut readers = vec![0u32; end];
-        // The last node reading each node.
-        let mut last_reader = vec![0usize; end];
         for i in (0..end).filter(|&i| live[i]) {
             for a in self.nodes[i].operands() {
                 readers[a.index()] += 1;
-                last_reader[a.index()] = i;
             }
         }
         for o in outputs {
@@ -205,8 +186,7 @@ impl Graph {
             let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
             let terms = self.tangent_of(id, wrt, &mut plan)?;
             // Read by several nodes: written once, unless it is a lane or a unit already.
-            let far = reach.is_some_and(|r| last_reader[i] > i + r && terms.len() > 1);
-            let shared = (readers[i] > 1 || far) && !is_plain(&terms);
+            let shared = readers[i] > 1 && !is_plain(&terms);
             plan.terms[i] = if shared { plan.write(id, terms) } else { terms };
         }
         let outputs = outputs

@@ -21,7 +21,6 @@ use super::lane_solve;
 use super::tracer::joint_index;
 use super::Equations;
 use crate::method::Family;
-use crate::symbolic::tangent::FETCH_BOUND_OPERATIONS;
 use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt, BLOCK, QUARTER_BLOCK};
 use std::cell::RefCell;
 
@@ -50,7 +49,6 @@ impl Equations {
         self.graph = graph.into_inner();
         let inverse_lanes = inverse_lanes(self);
         let forward_lanes = forward_lanes(self, &inverse_lanes);
-        let inverse_lanes = nearer_lanes(self, inverse_lanes);
         self.derivatives = Some(DerivativeEquations {
             inverse,
             inverse_lanes,
@@ -111,39 +109,6 @@ fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
             Some(plan)
         })
         .into()
-}
-
-/// How far (in nodes of the graph) a tangent read once may be read from where it is computed
-/// and still be added into its reader's lane: on Baxter 30 to 300 give the same plans (a
-/// link's own terms are closer, the backward pass reads its force and moment thousands of
-/// nodes later), 1,000 keeps some of the forward pass's lanes live to it.
-const REACH: usize = 100;
-
-/// `plans` (of `[∂τ/∂q, ∂τ/∂q̇]`), planned again with every lane read far from where it is
-/// written ([`Graph::tangents_within`]) where one is fetch-bound (of the robots derived today,
-/// Baxter's: each arm's force terms would otherwise keep its rates' lanes to the backward
-/// pass). Its ∂q̈ keeps the plans it was measured with.
-fn nearer_lanes(eq: &Equations, plans: Vec<Option<Tangents>>) -> Vec<Option<Tangents>> {
-    let fetch_bound = |p: &Option<Tangents>| {
-        p.as_ref()
-            .is_some_and(|p| p.block_operations(BLOCK) > FETCH_BOUND_OPERATIONS)
-    };
-    if !plans.iter().any(fetch_bound) {
-        return plans;
-    }
-    let n = eq.dof;
-    plans
-        .into_iter()
-        .zip([Wrt::Position(0), Wrt::Velocity(0)])
-        .map(|(plan, wrt)| {
-            let plan = plan?;
-            let near = eq.graph.tangents_within(&eq.tau, wrt, n, Some(REACH))?;
-            Some(Tangents {
-                group: plan.group,
-                ..near
-            })
-        })
-        .collect()
 }
 
 /// The plans of `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` in lanes: `∂τ`'s at the forward dynamics' `q̈`, then
