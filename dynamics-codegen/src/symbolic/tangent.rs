@@ -167,6 +167,18 @@ impl Graph {
     /// `None` where one would need a scalar node the graph lacks.
     #[must_use]
     pub fn tangents(&self, outputs: &[NodeId], wrt: Wrt, directions: usize) -> Option<Tangents> {
+        self.tangents_with(outputs, wrt, directions, FACTORS)
+    }
+
+    /// [`Graph::tangents`] with at most `factors` scalar factors to a term.
+    #[must_use]
+    pub fn tangents_with(
+        &self,
+        outputs: &[NodeId],
+        wrt: Wrt,
+        directions: usize,
+        factors: usize,
+    ) -> Option<Tangents> {
         let end = outputs.iter().map(|o| o.index() + 1).max().unwrap_or(0);
         let live = self.live(outputs);
         let mut readers = vec![0u32; end];
@@ -181,6 +193,7 @@ impl Graph {
         let mut plan = Planner {
             lanes: Vec::new(),
             terms: vec![Vec::new(); end],
+            factors,
         };
         for i in (0..end).filter(|&i| live[i]) {
             let id = NodeId(u32::try_from(i).expect("graph exceeds u32 nodes"));
@@ -290,6 +303,8 @@ fn is_plain(terms: &[Term]) -> bool {
 struct Planner {
     lanes: Vec<Lane>,
     terms: Vec<Vec<Term>>,
+    /// How many scalar factors a term may carry ([`FACTORS`] unless asked otherwise).
+    factors: usize,
 }
 
 impl Planner {
@@ -311,7 +326,7 @@ impl Planner {
             return Vec::new();
         }
         let crowded =
-            terms.len() > SCALED_TERMS || terms.iter().any(|t| t.factors.len() >= FACTORS);
+            terms.len() > SCALED_TERMS || terms.iter().any(|t| t.factors.len() >= self.factors);
         let terms = if crowded {
             let terms = terms.clone();
             let written = self.write(a, terms);

@@ -21,8 +21,17 @@ use super::lane_solve;
 use super::tracer::joint_index;
 use super::Equations;
 use crate::method::Family;
-use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt, BLOCK, QUARTER_BLOCK};
+use crate::symbolic::{Graph, NodeId, Number, Tangents, Var, Wrt, QUARTER_BLOCK};
 use std::cell::RefCell;
+
+/// The scalar factors a term of `∂q̈`'s tangents may carry before its vector is written out
+/// ([`Graph::tangents_with`]); `∂τ`'s carry two. `∂q̈`'s function holds the forward dynamics'
+/// scalars beside the tangents, and a product of two factors computed once into a vector
+/// (one more lane operation) costs less there than the scalar product at each reader with its
+/// broadcast and its spill: in a probe crate (AVX-512, docs/performance.md, 2026-11-30) one
+/// factor took the Panda's `forward_dynamics_derivatives` from 35.3 to 33.8 kB and 8-9 % less
+/// time, random5's and PUMA 560's 6-8 % less.
+const SOLVED_FACTORS: usize = 1;
 
 /// The derivatives' outputs: node ids into [`Equations::graph`].
 #[derive(Clone, Debug)]
@@ -111,20 +120,20 @@ fn inverse_lanes(eq: &Equations) -> Vec<Option<Tangents>> {
         .into()
 }
 
-/// The plans of `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` in lanes: `∂τ`'s at the forward dynamics' `q̈`, then
-/// the solve with M's factors (`lane_solve`), `None` where `∂τ`'s is; `M⁻¹` solved for the
-/// identity's rows.
+/// The plans of `[∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ]` in lanes: `∂τ`'s tangents at the forward dynamics'
+/// `q̈`, then the solve with M's factors (`lane_solve`), `None` where `∂τ`'s plan is; `M⁻¹`
+/// solved for the identity's rows. `∂τ`'s tangents planned again with one scalar factor to a
+/// term ([`SOLVED_FACTORS`]) and in blocks of eight, as they were measured.
 fn forward_lanes(eq: &mut Equations, inverse: &[Option<Tangents>]) -> Vec<Option<Tangents>> {
+    let n = eq.dof;
     let (graph, qdd, factors) = (&mut eq.graph, &eq.forward.qdd, &eq.forward.factors);
     let mut planned: Vec<Option<Tangents>> = inverse
         .iter()
-        .map(|plan| {
-            // In blocks of eight, as they were measured (the choice of four is ∂τ's alone).
-            let eights = Tangents {
-                group: BLOCK,
-                ..plan.clone()?
-            };
-            let at_qdd = lane_solve::at_qdd(&eights, graph, qdd);
+        .zip([Wrt::Position(0), Wrt::Velocity(0)])
+        .map(|(plan, wrt)| {
+            plan.as_ref()?;
+            let plan = graph.tangents_with(&eq.tau, wrt, n, SOLVED_FACTORS)?;
+            let at_qdd = lane_solve::at_qdd(&plan, graph, qdd);
             Some(lane_solve::solve_negated(at_qdd, factors, graph))
         })
         .collect();

@@ -138,6 +138,14 @@ fn check(robot: &Robot, what: &str) {
             .collect();
         let tolerance = if which == 2 { 1e-12 } else { 1e-6 };
         let matrix = ["∂q̈/∂q", "∂q̈/∂q̇", "M⁻¹"][which];
+        // ∂τ's tangents planned with one scalar factor to a term, as the solve's steps are.
+        let most = plan
+            .lanes
+            .iter()
+            .flat_map(|l| &l.terms)
+            .map(|t| t.factors.len());
+        let most = most.max().unwrap_or(0);
+        assert!(most <= 1, "{what}: {matrix}: a term of {most} factors");
         close(&rows, &expected, tolerance, &format!("{what}: {matrix}"));
         let traced = at.matrix(&d.forward[which]);
         close(&rows, &traced, 1e-10, &format!("{what}: {matrix} traced"));
