@@ -17,6 +17,7 @@ impl Inspection {
             format,
             kinds: &self.kinds,
             factors_first: self.kinematics,
+            floating: self.floating,
         };
         let mut out = self.header(&p);
         for section in &self.sections {
@@ -39,6 +40,7 @@ impl Inspection {
             format,
             kinds: &self.kinds,
             factors_first: self.kinematics,
+            floating: self.floating,
         };
         let mut out = self.header(&p);
         self.render_section(&p, section, &mut out);
@@ -47,6 +49,9 @@ impl Inspection {
 
     /// The robot's name, its joint variables and the notation.
     fn header(&self, p: &Printer<'_>) -> String {
+        if self.floating {
+            return self.floating_header(p);
+        }
         let comment = if p.latex() { "% " } else { "" };
         let joints = |primes: &str| {
             let names: Vec<String> = (0..self.kinds.len())
@@ -133,6 +138,8 @@ impl Inspection {
         if section.entries.iter().any(|e| e.value.is_none()) {
             let command = if self.kinematics {
                 "dynamics inspect --kinematics"
+            } else if self.floating {
+                "dynamics inspect --floating"
             } else {
                 "dynamics inspect"
             };
