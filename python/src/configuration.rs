@@ -52,8 +52,8 @@ pub fn integrate<'py>(
         let base_q: [f64; 7] = std::array::from_fn(|i| q[i]);
         let base_v: [f64; 6] = std::array::from_fn(|i| v[i]);
         out[..7].copy_from_slice(&configuration::integrate(&base_q, &base_v));
-        for i in 7..nq {
-            out[i] = q[i] + v[i - 1];
+        for ((out, q), v) in out[7..].iter_mut().zip(&q[7..]).zip(&v[6..]) {
+            *out = q + v;
         }
     }
     Ok(bytes(py, &out))
@@ -80,8 +80,8 @@ pub fn difference<'py>(
         let base = |q: &[f64]| -> [f64; 7] { std::array::from_fn(|i| q[i]) };
         let twist: [f64; 6] = configuration::difference(&base(q0), &base(q1));
         out[..6].copy_from_slice(&twist);
-        for i in 6..nv {
-            out[i] = q1[i + 1] - q0[i + 1];
+        for ((out, q0), q1) in out[6..].iter_mut().zip(&q0[7..]).zip(&q1[7..]) {
+            *out = q1 - q0;
         }
     }
     Ok(bytes(py, &out))

@@ -128,7 +128,7 @@ const DYNAMICS: [(Method, &str); 6] = [
 fn solo12_floating_header_matches_pinocchio() {
     let robot = floating_robot("robots/urdf/floating/solo12.urdf", &[]);
     assert!(robot.header.contains("--floating"), "its command names it");
-    let signature = "solo12_inverse_dynamics(const double q[19], const double qd[18], \
+    let signature = "_inverse_dynamics(const double q[19], const double qd[18], \
                      const double qdd[18], double tau[18])";
     assert!(robot.header.contains(signature), "{}", robot.header);
     check(&robot, "solo12.json", Reach::Compilers, &DYNAMICS);

@@ -20,7 +20,8 @@ pub fn calls(robot: &Robot, states: usize) -> String {
          for (i = 0; i < {nq}; ++i) q_all_f[s][i] = (float)q[s][i];\n            \
          for (i = 0; i < {n}; ++i) {{\n                \
          qd_all_f[s][i] = (float)qd[s][i];\n                qdd_all_f[s][i] = (float)qdd[s][i];\n                \
-         tau_all_f[s][i] = (float)tau[s][i];\n            }}\n        }}\n"
+         tau_all_f[s][i] = (float)tau[s][i];\n            }}\n        }}\n        \
+         (void)wrench_all;\n        (void)wrench_all_f;\n"
     );
     if let Some(w) = super::tip_wrenches_length(robot) {
         c.push_str(&format!(
