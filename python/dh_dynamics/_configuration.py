@@ -8,7 +8,7 @@ input used for every state of a batch.
 
 import numpy as np
 
-from . import _inputs, _native
+from . import _inputs
 
 
 class ConfigurationMethod:
@@ -41,16 +41,18 @@ class ConfigurationMethod:
         return out if batch else out[0]
 
 
-def methods(robot):
-    """The configuration space's methods of the floating-base robot ``robot``."""
+def methods(robot, native):
+    """The configuration space's methods of the floating-base robot ``robot``, computed by
+    ``native`` (the extension ``_native``, which ``robot.py`` imports: mypy reads it through
+    ``robot.pyi``)."""
     nq, nv = robot.dof + 1, robot.dof
     return {
         "integrate": ConfigurationMethod(
-            robot, "integrate", [("q", nq), ("v", nv)], nq, _native.integrate,
+            robot, "integrate", [("q", nq), ("v", nv)], nq, native.integrate,
             "Pinocchio's integrate: the configuration reached from q by the velocity v held "
             "for unit time (the base moved by SE(3)'s exponential of its twist)."),
         "difference": ConfigurationMethod(
-            robot, "difference", [("q0", nq), ("q1", nq)], nv, _native.difference,
+            robot, "difference", [("q0", nq), ("q1", nq)], nv, native.difference,
             "Pinocchio's difference: the velocity v with integrate(q0, v) = q1 (the base's "
             "the logarithm of M0^-1 M1)."),
     }

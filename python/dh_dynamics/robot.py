@@ -75,7 +75,7 @@ class Robot:
             setattr(self, name, Method(self, library, signatures, self._parameters))
         if self.floating:
             # The same for every robot: the runtime's, not the header's.
-            for name, method in _configuration.methods(self).items():
+            for name, method in _configuration.methods(self, _native).items():
                 by_method[name] = method
                 setattr(self, name, method)
         self.methods = tuple(by_method)

@@ -138,15 +138,18 @@ impl Inspection {
         if section.entries.iter().any(|e| e.value.is_none()) {
             let command = if self.kinematics {
                 "dynamics inspect --kinematics"
-            } else if self.floating {
-                "dynamics inspect --floating"
             } else {
                 "dynamics inspect"
             };
-            let msg = format!(
-                "too large to print here (over {} terms or {} term operations): the `{command}` command prints it",
-                self.limits.max_terms, self.limits.max_work
-            );
+            let (terms, work) = (self.limits.max_terms, self.limits.max_work);
+            let msg = if self.floating {
+                // The command's own bound (`FLOATING_LIMITS`): nothing else prints more.
+                format!("too large to print (over {terms} terms or {work} term operations in all)")
+            } else {
+                format!(
+                    "too large to print here (over {terms} terms or {work} term operations): the `{command}` command prints it"
+                )
+            };
             if p.latex() {
                 let _ = writeln!(out, "&\\text{{{msg}}}");
             } else {

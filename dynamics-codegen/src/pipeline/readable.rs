@@ -73,9 +73,17 @@ impl Loaded {
         // The same checks, and what the derive would refuse, as the emitted equations'.
         let flyer = self.floating_flyer()?;
         let readable = crate::trace::derive_floating_readable(&self.robot, flyer);
-        Ok(inspect_floating(&readable, &self.robot, Limits::UNBOUNDED).render(format))
+        Ok(inspect_floating(&readable, &self.robot, FLOATING_LIMITS).render(format))
     }
 }
+
+/// The floating printout's bound, for all its equations together: Solo 12's and ANYmal B's take
+/// under a second; unbounded, the G1's (29 joints) had taken 23 GB of memory when it was stopped
+/// after 400 s, its τ's expanded terms multiplying leg by arm.
+const FLOATING_LIMITS: Limits = Limits {
+    max_terms: 200_000,
+    max_work: 20_000_000,
+};
 
 /// What the derive adds to the code for the readable equations (`EQUATIONS`,
 /// `EQUATIONS_LATEX`) and the kinematic methods' rustdoc, within its limits.
