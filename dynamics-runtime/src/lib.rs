@@ -76,7 +76,9 @@ mod derivatives;
 mod dynamics;
 // After `dynamics`, whose `array_result!` it reads.
 pub mod batch;
-mod configuration;
+// Public for the Python package (`python/src/configuration.rs`), which calls it on NumPy arrays.
+#[doc(hidden)]
+pub mod configuration;
 mod factor;
 mod floating_contact_terms;
 mod floating_contacts;

@@ -5,15 +5,15 @@ import math
 import numbers
 import os
 
-from . import _compiled, _native
+from . import _compiled, _configuration, _native
 from ._errors import generator_error
 from ._methods import Method
 from ._parameters import Parameters
 
 
-def _generate(source, families):
+def _generate(source, families, floating):
     try:
-        return _native.c_header(**source, families=families)
+        return _native.c_header(**source, families=families, floating=floating)
     except _native.GeneratorError as error:
         raise generator_error(error) from None
 
@@ -30,6 +30,15 @@ class Robot:
     lists them. ``parameters`` holds the values of the description's symbols (``mass =
     "m1"``), in the order of the C functions' ``params``.
 
+    ``floating=True`` (``from_urdf``, ``from_file``) reads the robot on a free-flying base, as
+    ``#[dynamics(base = floating)]`` does, in Pinocchio's free-flyer conventions: ``q`` has
+    ``nq = n + 7`` elements (the base position, its quaternion ``[qx, qy, qz, qw]``, the joints),
+    the velocity (the methods' ``qd``), acceleration (``qdd``) and ``tau`` have ``nv = n + 6``
+    (the base's twist in its own frame, then the joints); its methods are ``FloatingDynamics``'
+    (``mass_matrix``, ``bias_forces``, ``inverse_dynamics``, ``generalized_gravity``,
+    ``forward_dynamics``, ``mass_matrix_inverse``) and ``integrate`` and ``difference``;
+    ``dof`` is ``nv``.
+
     ``dof`` counts the coordinates; a robot with mimic joints (``q_m = k q_j + o``) has more
     links, one per joint: the regressor's blocks and ``joint_regressor``'s rows. ``joint_rows[i]``
     is the row of τ joint i's columns of ``joint_regressor`` add to (i itself but for a mimic
@@ -37,7 +46,7 @@ class Robot:
     """
 
     def __init__(self, path, *, base=None, tip=None, tips=(), tool=None, families=(),
-                 parameters=None, check_inertia=True):
+                 parameters=None, check_inertia=True, floating=False):
         # Where the description comes from, which `equations` reads again.
         self._source = {
             "path": os.fsdecode(path),
@@ -49,7 +58,8 @@ class Robot:
         }
         families = _families(families)
         self._asked = set(families)
-        generated = _generate(self._source, families)
+        self.floating = bool(floating)
+        generated = _generate(self._source, families, self.floating)
         self.name = generated["robot"]
         self.dof = generated["dof"]
         self.joint_rows = tuple(generated["joint_rows"])
@@ -61,9 +71,14 @@ class Robot:
         by_method = {}
         for signature in generated["functions"]:
             by_method.setdefault(signature["method"], []).append(signature)
-        self.methods = tuple(by_method)
         for name, signatures in by_method.items():
             setattr(self, name, Method(self, library, signatures, self._parameters))
+        if self.floating:
+            # The same for every robot: the runtime's, not the header's.
+            for name, method in _configuration.methods(self, _native).items():
+                by_method[name] = method
+                setattr(self, name, method)
+        self.methods = tuple(by_method)
 
     @property
     def parameters(self):
@@ -83,7 +98,7 @@ class Robot:
         raise AttributeError(_missing_method(self, name))
 
     @classmethod
-    def from_file(cls, path, *, families=(), tool=None, parameters=None):
+    def from_file(cls, path, *, families=(), tool=None, parameters=None, floating=False):
         """The robot of a description file (TOML or JSON, as ``#[dynamics(file = "...")]``
         reads it).
 
@@ -92,23 +107,32 @@ class Robot:
         ``parameters``: the value of every symbol of the file (``{"m1": 2.0, "g": 9.81}``), or
         none now and ``robot.parameters`` later. Raises ``DescriptionError`` with the file, line
         and column of a problem, ``ValueError`` for a missing or unknown parameter.
+        ``floating=True``: the robot on a free-flying base, its body the file's ``[floating]``
+        table.
         """
-        return cls(path, tool=tool, families=families, parameters=parameters)
+        return cls(path, tool=tool, families=families, parameters=parameters, floating=floating)
 
     @classmethod
-    def from_urdf(cls, path, base=None, tip=None, *, tips=(), families=(), check_inertia=True):
+    def from_urdf(cls, path, base=None, tip=None, *, tips=(), families=(), check_inertia=True,
+                  floating=False):
         """The robot of a URDF file: every moving joint below link ``base`` (by default the
         root link; a tree if they branch), or the chain to link ``tip``, or the branches that
         lead to the links ``tips``. ``check_inertia=False`` keeps published inertias whose
-        principal moments break the triangle inequality."""
+        principal moments break the triangle inequality. ``floating=True``: the robot on a
+        free-flying base, the root link (or ``base``) and the links fixed to it its body."""
         return cls(path, base=base, tip=tip, tips=tips, families=families,
-                   check_inertia=check_inertia)
+                   check_inertia=check_inertia, floating=floating)
 
     def equations(self, latex=False, kinematics=False):
         """The equations of motion in the book's notation (``kinematics=True``: the hand's pose
-        and Jacobians), as text or as LaTeX."""
+        and Jacobians), as text or as LaTeX; a floating base's M, h, g and τ in Pinocchio's
+        coordinates."""
+        if kinematics and self.floating:
+            raise ValueError(f"{self.name}: a floating base's equations have no kinematics "
+                             "printout yet; call equations() without kinematics")
         try:
-            return _native.equations(**self._source, latex=latex, kinematics=kinematics)
+            return _native.equations(**self._source, latex=latex, kinematics=kinematics,
+                                     floating=self.floating)
         except _native.GeneratorError as error:
             raise generator_error(error) from None
 
@@ -118,6 +142,9 @@ class Robot:
         return "\n".join(line for line in lines if not line.startswith("%"))
 
     def __repr__(self):
+        if self.floating:
+            return (f"<Robot {self.name} on a floating base: {self.dof - 6} joints and the "
+                    f"base's 6, {len(self.methods)} methods>")
         return f"<Robot {self.name}: {self.dof} joints, {len(self.methods)} methods>"
 
 

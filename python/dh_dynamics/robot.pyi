@@ -18,6 +18,7 @@ _Path = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 class Robot:
     name: str
     dof: int
+    floating: bool
     joint_rows: tuple[int, ...]
     header: str
     methods: tuple[str, ...]
@@ -33,6 +34,7 @@ class Robot:
         families: str | Iterable[str] = (),
         parameters: Mapping[str, float] | None = None,
         check_inertia: bool = True,
+        floating: bool = False,
     ) -> None: ...
     @classmethod
     def from_file(
@@ -42,6 +44,7 @@ class Robot:
         families: str | Iterable[str] = (),
         tool: Iterable[float] | None = None,
         parameters: Mapping[str, float] | None = None,
+        floating: bool = False,
     ) -> Robot: ...
     @classmethod
     def from_urdf(
@@ -53,6 +56,7 @@ class Robot:
         tips: str | Iterable[str] = (),
         families: str | Iterable[str] = (),
         check_inertia: bool = True,
+        floating: bool = False,
     ) -> Robot: ...
     @property
     def parameters(self) -> Parameters: ...
@@ -239,3 +243,14 @@ class Robot:
         Opt-in: ``families=['tip_kinematics']``.
         """
     # End of the generated methods.
+
+    # A floating base's (`floating=True`): `FloatingDynamics`' methods that a fixed base has not
+    # (its others share their names and arguments), and the configuration space's.
+    def bias_forces(self, q: ArrayLike, qd: ArrayLike) -> NDArray[np.floating[Any]]:
+        """h(q, v) = C(q, v) v + g(q) of a floating base."""
+    def generalized_gravity(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """g(q) of a floating base."""
+    def integrate(self, q: ArrayLike, v: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's integrate: the configuration reached from q by the velocity v."""
+    def difference(self, q0: ArrayLike, q1: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's difference: the velocity v with integrate(q0, v) = q1."""

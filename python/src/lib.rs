@@ -8,6 +8,7 @@
 //! `file`, `line`, `column`, `message` and `help` (`file` is `None` for a mistake in the
 //! arguments); `dh_dynamics/_errors.py` raises the package's exceptions from them.
 
+mod configuration;
 mod source;
 
 use dynamics_codegen::method::{Family, Method};
@@ -33,11 +34,13 @@ create_exception!(
 /// The C header of the robot described at `path` (a URDF's chain from `base` to `tip`, or its branches to `tips`; the
 /// hand frame `tool` of a description file) with the opt-in `families`, and the simplified
 /// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `joint_rows`, `text`, and
-/// `functions`, each a dict of its signature.
+/// `functions`, each a dict of its signature. With `floating`, the robot on a free-flying base
+/// (the derive's `base = floating`; no simplified models): `dof` is then the velocity's length,
+/// `n + 6`.
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new()))]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new(), floating=false))]
 fn c_header(
     py: Python<'_>,
     path: String,
@@ -47,6 +50,7 @@ fn c_header(
     tool: Option<[f64; 6]>,
     check_inertia: bool,
     families: Vec<String>,
+    floating: bool,
 ) -> PyResult<Bound<'_, PyDict>> {
     let described = Described {
         path,
@@ -61,6 +65,9 @@ fn c_header(
             let families =
                 pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
             let loaded = described.load()?;
+            if floating {
+                return loaded.floating_c_header(families, None);
+            }
             let asked = loaded
                 .simplification(&[])
                 .map_err(|problems| problems.iter().map(Diagnostic::from).collect::<Vec<_>>())?;
@@ -72,6 +79,7 @@ fn c_header(
     let out = PyDict::new(py);
     out.set_item("robot", &header.robot)?;
     out.set_item("dof", header.dof)?;
+    out.set_item("floating", header.floating)?;
     out.set_item("fields", &header.fields)?;
     out.set_item("joint_rows", &header.joint_rows)?;
     out.set_item("text", &header.text)?;
@@ -85,12 +93,12 @@ fn c_header(
 }
 
 /// The equations of motion of the robot described at `path` (as [`c_header`] reads it) in
-/// the book's notation, or with `kinematics` its hand pose and Jacobians; as LaTeX with
-/// `latex`.
+/// the book's notation, or with `kinematics` its hand pose and Jacobians, or with `floating`
+/// its M, h, g and τ on a free-flying base in Pinocchio's coordinates; as LaTeX with `latex`.
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, latex=false, kinematics=false))]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, latex=false, kinematics=false, floating=false))]
 fn equations(
     py: Python<'_>,
     path: String,
@@ -101,6 +109,7 @@ fn equations(
     check_inertia: bool,
     latex: bool,
     kinematics: bool,
+    floating: bool,
 ) -> PyResult<String> {
     let described = Described {
         path,
@@ -118,6 +127,9 @@ fn equations(
     };
     py.detach(|| {
         let loaded = described.load()?;
+        if floating {
+            return loaded.floating_readable(format);
+        }
         loaded.readable(what, format).map_err(|d| vec![d])
     })
     .map_err(|diagnostics| generator_error(py, &diagnostics))
@@ -197,6 +209,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(c_header, m)?)?;
     m.add_function(wrap_pyfunction!(equations, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::integrate, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::difference, m)?)?;
     m.add("GeneratorError", m.py().get_type::<GeneratorError>())?;
     Ok(())
 }

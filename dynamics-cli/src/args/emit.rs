@@ -19,6 +19,12 @@ pub struct Emit {
     /// underscores, a letter first: for two robots whose names give the same prefix
     #[arg(long, value_name = "NAME", value_parser = prefix, allow_hyphen_values = true)]
     pub prefix: Option<String>,
+    /// C only: the robot on a free-flying base (the derive's `base = floating`): its
+    /// `FloatingDynamics` methods, `q` of n + 7 elements (base position, quaternion, joints),
+    /// the others n + 6. A URDF's root link (or --base) flies, a description file's
+    /// `[floating]` table is the body
+    #[arg(long, conflicts_with_all = ["tip", "tips", "tool"])]
+    pub floating: bool,
 }
 
 /// The language `dynamics emit` writes.

@@ -17,6 +17,11 @@ pub struct Inspect {
     /// standard parameters that the joint torques determine
     #[arg(long, conflicts_with = "simplified")]
     pub base_parameters: bool,
+    /// The robot on a free-flying base (the derive's `base = floating`): M, h, g and τ in
+    /// Pinocchio's coordinates (base position, quaternion, base twist, joints). A URDF's root
+    /// link (or --base) flies, a description file's `[floating]` table is the body
+    #[arg(long, conflicts_with_all = ["kinematics", "base_parameters", "simplified", "tip", "tips", "tool"])]
+    pub floating: bool,
     #[command(flatten)]
     pub joint_terms: JointTerms,
     #[command(flatten)]

@@ -20,7 +20,27 @@ fn c_header(args: &Emit) -> Result<String, Failure> {
     Ok(header.text)
 }
 
+/// `--floating`: the C header of the robot on a free-flying base.
+fn floating_c_header(args: &Emit) -> Result<String, Failure> {
+    let loaded = load_with_request(&args.robot)?;
+    let header = loaded
+        .floating_c_header(args.families.set(), args.prefix.as_deref())
+        .map_err(|d| {
+            let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
+            Failure::File(lines.join("\ndynamics: "))
+        })?;
+    Ok(header.text)
+}
+
 pub fn run(args: &Emit) -> Result<String, Failure> {
+    if args.floating && args.lang != Lang::C {
+        let message = "--floating emits the C header (--lang c): the derive's `base = floating` \
+                       writes the Rust";
+        return Err(eval::usage("emit", message));
+    }
+    if args.floating {
+        return floating_c_header(args);
+    }
     if args.lang == Lang::C {
         return c_header(args);
     }

@@ -1,7 +1,8 @@
 //! `dynamics inspect ROBOT [--latex] [--kinematics | --base-parameters [--rotors]
 //! [--friction ..] | --simplified --tolerance .. [--q-min ..] [--q-max ..] [--qd-max ..]
-//! [--qdd-max ..]]`: the equations of motion, the hand pose and Jacobians, the base parameters,
-//! or τ, M and g pruned within a proven bound, in the book's notation.
+//! [--qdd-max ..] | --floating]`: the equations of motion, the hand pose and Jacobians, the base
+//! parameters, τ, M and g pruned within a proven bound, in the book's notation, or a floating
+//! base's M, h, g and τ in Pinocchio's coordinates.
 
 use super::eval::usage;
 use super::{load_with_request, simplification, Failure};
@@ -17,6 +18,12 @@ pub fn run(args: &Inspect) -> Result<String, Failure> {
     } else {
         Format::Text
     };
+    if args.floating {
+        return file.floating_readable(format).map_err(|d| {
+            let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
+            Failure::File(lines.join("\ndynamics: "))
+        });
+    }
     let columns;
     let simplified;
     let what = if args.base_parameters {

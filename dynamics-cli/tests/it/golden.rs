@@ -11,7 +11,10 @@
 //!   known to build;
 //! * `tests/golden/puma560.h`: `dynamics emit --lang c robots/puma560.toml`, the C header
 //!   (which `tests/it/c_header.rs` compiles and checks), and `tests/golden/arm_urdf.h`, a
-//!   URDF's (`dynamics-runtime/tests/ui/urdf/arm.urdf`).
+//!   URDF's (`dynamics-runtime/tests/ui/urdf/arm.urdf`);
+//! * `tests/golden/two_legs.floating.txt`, `.tex` and `.h`: `dynamics inspect --floating` (and
+//!   `--latex`) and `dynamics emit --lang c --floating` for a two-legged toy on a floating base
+//!   (`tests/data/floating/two_legs.urdf`).
 //!
 //! A stale file fails the test with a line diff. After a deliberate change, refresh them all:
 //!
@@ -96,6 +99,19 @@ fn cases() -> Vec<Case> {
         .to_vec(),
         file: "dynamics-cli/tests/golden/arm_urdf.h".into(),
     });
+    // A floating base's equations and C header: a two-legged toy (`tests/it/cli_floating.rs`
+    // and `c_floating.rs` check Solo 12's against Pinocchio).
+    let toy = "tests/data/floating/two_legs.urdf";
+    for (args, ext) in [
+        (vec!["inspect", toy, "--floating"], "txt"),
+        (vec!["inspect", toy, "--floating", "--latex"], "tex"),
+        (vec!["emit", "--lang", "c", toy, "--floating"], "h"),
+    ] {
+        cases.push(Case {
+            args: args.into_iter().map(String::from).collect(),
+            file: format!("dynamics-cli/tests/golden/two_legs.floating.{ext}"),
+        });
+    }
     cases
 }
 

@@ -2,6 +2,7 @@
 //! the generator and the command's library instead of one per file. `cargo test -p dynamics-cli
 //! --test it golden::` runs one file's tests.
 
+mod c_floating;
 mod c_header;
 mod c_parameters;
 mod c_support;
@@ -11,6 +12,7 @@ mod cli;
 mod cli_consistent;
 mod cli_csv;
 mod cli_excite;
+mod cli_floating;
 mod cli_fuzz;
 mod cli_identify;
 mod cli_identify_mimic;

@@ -188,7 +188,10 @@ impl<'a> Writer<'a> {
         vars.sort();
         for v in vars {
             let (array, index) = match v {
-                Var::Q(i) => (("q", &mut reads.q), usize::from(i)),
+                Var::Q(i) => (
+                    ("q", &mut reads.q),
+                    usize::from(i) + super::q_shift(self.eq),
+                ),
                 Var::Qd(i) => (("qd", &mut reads.qd), usize::from(i)),
                 Var::Qdd(i) => (("qdd", &mut reads.qdd), usize::from(i)),
                 Var::Param(k) => (("params", &mut reads.params), usize::from(k)),
@@ -278,9 +281,10 @@ impl<'a> Writer<'a> {
         for i in 0..self.eq.dof {
             let joint = u16::try_from(i).expect("at most 64 joints");
             let (sine, cosine) = (Var::SinQ(joint), Var::CosQ(joint));
+            let at = i + super::q_shift(self.eq);
             let angle = match self.eq.angle_offsets[i] {
-                Some(offset) => format!("q[{i}] + {}", self.expr(offset, Place::AddRight)),
-                None => format!("q[{i}]"),
+                Some(offset) => format!("q[{at}] + {}", self.expr(offset, Place::AddRight)),
+                None => format!("q[{at}]"),
             };
             let s = read(sine).then(|| self.var_name(sine));
             let c = read(cosine).then(|| self.var_name(cosine));

@@ -84,12 +84,13 @@ pub fn functions(eq: &Equations, prefix: &str) -> Vec<Function> {
 }
 
 /// The length of argument `a`'s array: a wrench's 6, the tips' wrenches one after the other
-/// (6 per tip), the joints' `n`.
+/// (6 per tip), the joints' `n`; on a floating base `q`'s `n + 7` and the others' `n + 6`.
 fn argument_length(eq: &Equations, a: Argument) -> usize {
     match a {
         Argument::Wrench => 6,
         Argument::Wrenches => 6 * eq.tips.as_ref().map_or(0, |t| t.names.len()),
-        Argument::Q | Argument::Qd | Argument::Qdd | Argument::Tau => eq.dof,
+        Argument::Q => eq.dof + super::q_shift(eq),
+        Argument::Qd | Argument::Qdd | Argument::Tau => eq.dof,
     }
 }
 

@@ -103,6 +103,13 @@ pub fn header(eq: &Equations, robot: &str, prefix: &str, command: &str) -> Strin
     text
 }
 
+/// How far past a coordinate's index its entry of `q` is: 1 on a floating base, whose `q`
+/// holds the base's `x` before the graph's coordinates `[y, z, qx, qy, qz, qw, q_1 …]`
+/// (`crate::trace::derive_floating`; nothing reads `x`), else 0.
+pub(super) fn q_shift(eq: &Equations) -> usize {
+    usize::from(eq.families.contains(Family::Floating))
+}
+
 /// The 64-bit FNV-1a hash of `bytes`: the same on every machine, unlike `std`'s hashers.
 fn fnv1a(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |hash, &b| {
@@ -323,9 +330,56 @@ fn preamble(eq: &Equations, robot: &str, prefix: &str, command: &str) -> String 
     text
 }
 
+/// What the preamble says the equations are of, how the derive generates them, and the lines
+/// on the inputs' lengths (ending with "... Each"): a floating base's in Pinocchio's terms.
+fn opening(eq: &Equations, robot: &str) -> (String, Vec<String>, Vec<String>) {
+    let n = eq.dof;
+    if q_shift(eq) == 0 {
+        return (
+            format!("`{robot}` ({n} joints)"),
+            vec![
+                "`#[derive(Dynamics)]` generates them in Rust: one `static inline` function per method"
+                    .to_owned(),
+            ],
+            vec![
+                format!("q, qd, qdd and tau have {n} elements (rad or m, per s, per s^2; N m or N), a"),
+                "wrench 6 ([fx, fy, fz, mx, my, mz]). Matrices are arrays of rows, m[i][j]. Each"
+                    .to_owned(),
+            ],
+        );
+    }
+    let lines = |text: &[&str]| text.iter().map(|&l| l.to_owned()).collect::<Vec<_>>();
+    let mut elements = vec![format!(
+        "q has {} elements, [x, y, z, qx, qy, qz, qw, q_1 ...]: the base origin in",
+        n + 1
+    )];
+    elements.extend(lines(&[
+        "world axes, the base's orientation as a quaternion (read as given: not normalised),",
+    ]));
+    elements.push(format!(
+        "then the joints. qd (Pinocchio's v), qdd (a) and tau have {n}: [vx, vy, vz, wx,"
+    ));
+    elements.extend(lines(&[
+        "wy, wz, ...], the base origin's velocity and the base's angular velocity in base",
+        "axes, then the joint rates; a generalized force's first six are the wrench on the",
+        "base, [fx, fy, fz, mx, my, mz] in base axes, its moment about the base origin.",
+        "Matrices are arrays of rows, m[i][j]. Each",
+    ]));
+    (
+        format!(
+            "`{robot}` on a free-flying base ({} joints and the base's 6)",
+            n - 6
+        ),
+        lines(&[
+            "`#[derive(Dynamics)]` generates them in Rust with `base = floating`, in Pinocchio's",
+            "free-flyer conventions: one `static inline` function per method",
+        ]),
+        elements,
+    )
+}
+
 /// The preamble's paragraph on what the functions compute and how they are called.
 fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
-    let n = eq.dof;
     let families: Vec<&str> = Family::ALL
         .iter()
         .filter(|&&f| {
@@ -335,19 +389,21 @@ fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
         })
         .map(|f| f.name())
         .collect();
-    vec![
-        format!("The closed-form equations of motion of `{robot}` ({n} joints) in C99, as"),
-        "`#[derive(Dynamics)]` generates them in Rust: one `static inline` function per method"
-            .to_owned(),
+    let (what, derive, elements) = opening(eq, robot);
+    let mut lines = vec![format!(
+        "The closed-form equations of motion of {what} in C99, as"
+    )];
+    lines.extend(derive);
+    lines.extend([
         format!(
             "of the families {}, in `double`, and in `float` with",
             families.join(", ")
         ),
         "`_f32` appended. No allocation, no globals; link with the math library (-lm).".to_owned(),
         String::new(),
-        format!("q, qd, qdd and tau have {n} elements (rad or m, per s, per s^2; N m or N), a"),
-        "wrench 6 ([fx, fy, fz, mx, my, mz]). Matrices are arrays of rows, m[i][j]. Each"
-            .to_owned(),
+    ]);
+    lines.extend(elements);
+    lines.extend([
         "function reads all its inputs before it writes its outputs, which may therefore"
             .to_owned(),
         "alias its inputs. A function that solves with the LDL^T of M returns 0 where every"
@@ -369,16 +425,17 @@ fn conventions(eq: &Equations, robot: &str) -> Vec<String> {
         "With DYNAMICS_BATCH defined, each function has a twin `{name}_batch(size_t n, ...)`"
             .to_owned(),
         "over n states: flat arrays of n rows, each row one state's array.".to_owned(),
-    ]
-    .into_iter()
-    .chain(eq.tips.iter().flat_map(|tips| {
-        [
-            format!(
-                "The tips' functions take `wrenches`, 6 per tip one after the other; tips: {}.",
-                tips.names.join(", ")
-            ),
-            "Their results have one block per tip, in that order.".to_owned(),
-        ]
-    }))
-    .collect()
+    ]);
+    lines
+        .into_iter()
+        .chain(eq.tips.iter().flat_map(|tips| {
+            [
+                format!(
+                    "The tips' functions take `wrenches`, 6 per tip one after the other; tips: {}.",
+                    tips.names.join(", ")
+                ),
+                "Their results have one block per tip, in that order.".to_owned(),
+            ]
+        }))
+        .collect()
 }

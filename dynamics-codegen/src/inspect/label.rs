@@ -27,6 +27,16 @@ pub enum Quantity {
     JacobianInBase,
     /// The book's ᴴJ, the hand's Jacobian in the hand frame (eq. 6.64).
     JacobianInHand,
+    /// A floating base's gravity in base axes, `g_b = Rᵀ g` (joints = [axis]).
+    BaseGravity,
+    /// A floating base's mass matrix `M` (joints = two coordinates of `v`).
+    FloatingMass,
+    /// A floating base's bias `h = C v + g` (joints = [coordinate]).
+    FloatingBias,
+    /// A floating base's generalized gravity `g`.
+    FloatingGravity,
+    /// A floating base's inverse dynamics `τ = M a + h`.
+    FloatingTorque,
 }
 
 impl Quantity {
@@ -41,6 +51,12 @@ impl Quantity {
             Quantity::JacobianInBase => "J",
             Quantity::JacobianInHand if latex => "{}^{H}J",
             Quantity::JacobianInHand => "ᴴJ",
+            // Named by their coordinates (`M[vx, θ1]`) by `super::floating`.
+            Quantity::BaseGravity
+            | Quantity::FloatingMass
+            | Quantity::FloatingBias
+            | Quantity::FloatingGravity
+            | Quantity::FloatingTorque => "",
         }
     }
 
@@ -57,6 +73,11 @@ impl Quantity {
             Quantity::HandPose => "Hand pose, the base frame's T_H = A1 ⋯ An (and the tool) = [n o a p]: rotation columns n, o, a and position p",
             Quantity::JacobianInBase => "Hand Jacobian J_ij in the base frame: rows i = dx, dy, dz, δx, δy, δz (the hand's velocity and angular velocity), column j = joint j",
             Quantity::JacobianInHand => "Hand Jacobian ᴴJ_ij in the hand frame (eq. 6.64): rows i = dx, dy, dz, δx, δy, δz in the hand's axes, column j = joint j",
+            Quantity::BaseGravity => "Gravity in base axes g_b = Rᵀ g, R the quaternion's matrix (a polynomial of qx, qy, qz, qw, not normalised, as Pinocchio reads it), g gravity in world axes",
+            Quantity::FloatingMass => "Mass matrix M[a, b] = M[b, a] (Pinocchio's crba), rows and columns in v's order",
+            Quantity::FloatingBias => "Bias h = C(q, v) v + g(q) (Pinocchio's nonLinearEffects)",
+            Quantity::FloatingGravity => "Generalized gravity g(q) (Pinocchio's computeGeneralizedGravity)",
+            Quantity::FloatingTorque => "Inverse dynamics τ = M(q) a + h(q, v) (Pinocchio's rnea): rows vx … ωz the wrench on the base [fx, fy, fz, mx, my, mz] in base axes, about its origin; then the joint torques",
         }
     }
 }
@@ -94,6 +115,9 @@ impl Label {
     /// The name as `printer` writes it.
     #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
     pub fn render(&self, printer: &Printer<'_>) -> String {
+        if let Some(name) = printer.floating_label(self.quantity, &self.joints) {
+            return name;
+        }
         if self.quantity == Quantity::HandPose {
             // The book's `n_x` … `p_z`: column letter, row axis.
             let column = ["n", "o", "a", "p"][self.joints[1]];

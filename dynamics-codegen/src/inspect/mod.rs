@@ -22,6 +22,7 @@ pub mod arrange;
 mod base_parameters;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod branches;
+mod floating;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod label;
 mod number;
@@ -34,6 +35,7 @@ mod simplified_report;
 
 pub use crate::poly::Limits;
 pub use base_parameters::render_base_parameters;
+pub use floating::inspect_floating;
 pub use print::Format;
 pub use simplified::{inspect_simplified, Simplified};
 
@@ -48,6 +50,8 @@ pub struct Inspection {
     name: String,
     /// Whether these are the kinematics ([`inspect_kinematics`]).
     kinematics: bool,
+    /// Whether these are a floating base's equations ([`inspect_floating`]).
+    floating: bool,
     kinds: Vec<JointKind>,
     offsets: bool,
     /// Whether some joint follows another (a mimic joint's sines read like `sin(k q2 + c)`).
@@ -117,6 +121,7 @@ impl Inspection {
         Inspection {
             name: robot.name.clone(),
             kinematics,
+            floating: false,
             kinds: eq.kinds.clone(),
             offsets: eq.angle_offsets.iter().any(Option::is_some),
             mimics: robot.has_mimics(),

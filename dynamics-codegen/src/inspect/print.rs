@@ -32,6 +32,10 @@ pub struct Printer<'a> {
     /// and any group of parameters alone: `(1/2 m1 + m2) g l1 C1`, `(l2 + 0.1) C12`.
     #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
     pub factors_first: bool,
+    /// Whether the equations are a floating base's (`super::floating`): the coordinates'
+    /// first six are the base's (`vx` … `ωz`), joint i's is `6 + i`, and `kinds` the joints'.
+    #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+    pub floating: bool,
 }
 
 const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
@@ -79,6 +83,13 @@ impl Printer<'_> {
     }
 
     fn symbol(&self, s: &Sym) -> String {
+        if self.floating {
+            if let Some(name) = self.base_symbol(s) {
+                return name;
+            }
+        }
+        let joint = self.floating.then(|| super::floating::joint_symbol(s));
+        let s = joint.as_ref().unwrap_or(s);
         let index = |i: &u16| self.indices(&[usize::from(*i)]);
         match s {
             Sym::Param(p) if self.latex() => latex_name(p),

@@ -17,6 +17,7 @@ impl Inspection {
             format,
             kinds: &self.kinds,
             factors_first: self.kinematics,
+            floating: self.floating,
         };
         let mut out = self.header(&p);
         for section in &self.sections {
@@ -39,6 +40,7 @@ impl Inspection {
             format,
             kinds: &self.kinds,
             factors_first: self.kinematics,
+            floating: self.floating,
         };
         let mut out = self.header(&p);
         self.render_section(&p, section, &mut out);
@@ -47,6 +49,9 @@ impl Inspection {
 
     /// The robot's name, its joint variables and the notation.
     fn header(&self, p: &Printer<'_>) -> String {
+        if self.floating {
+            return self.floating_header(p);
+        }
         let comment = if p.latex() { "% " } else { "" };
         let joints = |primes: &str| {
             let names: Vec<String> = (0..self.kinds.len())
@@ -136,10 +141,15 @@ impl Inspection {
             } else {
                 "dynamics inspect"
             };
-            let msg = format!(
-                "too large to print here (over {} terms or {} term operations): the `{command}` command prints it",
-                self.limits.max_terms, self.limits.max_work
-            );
+            let (terms, work) = (self.limits.max_terms, self.limits.max_work);
+            let msg = if self.floating {
+                // The command's own bound (`FLOATING_LIMITS`): nothing else prints more.
+                format!("too large to print (over {terms} terms or {work} term operations in all)")
+            } else {
+                format!(
+                    "too large to print here (over {terms} terms or {work} term operations): the `{command}` command prints it"
+                )
+            };
             if p.latex() {
                 let _ = writeln!(out, "&\\text{{{msg}}}");
             } else {

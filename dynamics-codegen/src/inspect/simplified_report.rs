@@ -21,6 +21,7 @@ impl Simplified {
             format,
             kinds: &self.inspection.kinds,
             factors_first: false,
+            floating: false,
         };
         let mut out = self.inspection.render(format);
         let comment = if p.latex() { "% " } else { "" };

@@ -20,6 +20,8 @@ pub struct CHeader {
     /// Per joint (link), the row of τ its columns of `joint_regressor` add to: the joint
     /// itself but for a mimic joint, whose row is the joint's it follows.
     pub joint_rows: Vec<usize>,
+    /// Whether it is a floating base's (`base = floating`): `q` has `dof + 1` elements.
+    pub floating: bool,
     /// The header's text.
     pub text: String,
     /// Its functions, in the header's order.
@@ -45,12 +47,43 @@ impl Loaded {
             return Err(Diagnostic::of_caller(format!("prefix: {problem}")));
         }
         let eq = self.equations(families, simplification)?;
+        Ok(self.header_of(&eq, families, prefix, false))
+    }
+
+    /// The C header of the robot on a free-flying base ([`Loaded::floating_equations_with`]
+    /// the opt-in `families`), as [`Loaded::c_header`] names its functions: `FloatingDynamics`'
+    /// methods, `q` of `n + 7` elements, the others `n + 6`.
+    ///
+    /// # Errors
+    /// A `prefix` that makes no C name, and those of [`Loaded::floating_equations_with`].
+    pub fn floating_c_header(
+        &self,
+        families: FamilySet,
+        prefix: Option<&str>,
+    ) -> Result<CHeader, Vec<Diagnostic>> {
+        if let Some(problem) = prefix.and_then(c_prefix_problem) {
+            return Err(vec![Diagnostic::of_caller(format!("prefix: {problem}"))]);
+        }
+        let eq = self.floating_equations_with(families)?;
+        Ok(self.header_of(&eq, families, prefix, true))
+    }
+
+    /// The header of `eq`, these equations of the robot (on a free-flying base where
+    /// `floating`).
+    fn header_of(
+        &self,
+        eq: &crate::trace::Equations,
+        families: FamilySet,
+        prefix: Option<&str>,
+        floating: bool,
+    ) -> CHeader {
         let name = &self.robot.name;
-        let command = self.emit_command(families, prefix);
+        let command = self.emit_command(families, prefix, floating);
         let prefix = prefix.map_or_else(|| emit_c::prefix(name), str::to_owned);
-        Ok(CHeader {
-            text: emit_c::header(&eq, name, &prefix, &command),
-            functions: emit_c::functions(&eq, &prefix),
+        CHeader {
+            floating,
+            text: emit_c::header(eq, name, &prefix, &command),
+            functions: emit_c::functions(eq, &prefix),
             dof: eq.dof,
             fields: eq.fields.clone(),
             joint_rows: eq
@@ -58,12 +91,12 @@ impl Loaded {
                 .as_ref()
                 .map_or_else(|| (0..eq.links).collect(), |r| r.rows.clone()),
             robot: name.clone(),
-        })
+        }
     }
 
     /// The command that writes the header again: the file, the opt-in families asked for
     /// (the simplified models come from the file) and the prefix if one was given.
-    fn emit_command(&self, families: FamilySet, prefix: Option<&str>) -> String {
+    fn emit_command(&self, families: FamilySet, prefix: Option<&str>, floating: bool) -> String {
         let with: Vec<&str> = families
             .opt_in()
             .filter(|&f| f != Family::Simplified)
@@ -75,7 +108,10 @@ impl Loaded {
             format!(" --with {}", with.join(","))
         };
         let prefix = prefix.map_or_else(String::new, |prefix| format!(" --prefix {prefix}"));
-        let options: String = self.options.iter().map(|o| format!(" {o}")).collect();
+        let mut options: String = self.options.iter().map(|o| format!(" {o}")).collect();
+        if floating {
+            options.push_str(" --floating");
+        }
         format!(
             "dynamics emit --lang c {}{options}{with}{prefix}",
             self.path

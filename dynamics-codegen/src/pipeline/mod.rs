@@ -221,6 +221,12 @@ impl Loaded {
     /// A description file without a `[floating]` table, a URDF whose body cannot be read, or
     /// what a floating base does not support yet (mimic joints, joint friction).
     pub fn floating_equations(&self) -> Result<Equations, Vec<Diagnostic>> {
+        let flyer = self.floating_flyer()?;
+        Ok(crate::trace::derive_floating(&self.robot, flyer))
+    }
+
+    /// The body the robot flies on, where a floating base supports the robot.
+    fn floating_flyer(&self) -> Result<&FreeFlyer, Vec<Diagnostic>> {
         let flyer = self.flyer.as_ref().map_err(Clone::clone)?;
         let unsupported = front::floating_unsupported(&self.robot);
         if !unsupported.is_empty() {
@@ -229,7 +235,7 @@ impl Loaded {
                 .map(|m| Diagnostic::of_file(&self.path, m));
             return Err(each.collect());
         }
-        Ok(crate::trace::derive_floating(&self.robot, flyer))
+        Ok(flyer)
     }
 
     /// The frames' kinematics traced into `eq` ([`Loaded::floating_equations`]'), then the

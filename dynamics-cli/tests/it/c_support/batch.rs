@@ -10,15 +10,18 @@ use dynamics_codegen::method::Argument;
 /// batch call per function and its results printed state by state.
 pub fn calls(robot: &Robot, states: usize) -> String {
     let n = robot.eq.dof;
+    let nq = n + super::q_shift(&robot.eq);
     let mut c = format!(
         "    {{\n        static double wrench_all[{states}][6];\n        \
-         static float q_all_f[{states}][{n}], qd_all_f[{states}][{n}], \
+         static float q_all_f[{states}][{nq}], qd_all_f[{states}][{n}], \
          qdd_all_f[{states}][{n}], tau_all_f[{states}][{n}], wrench_all_f[{states}][6];\n        \
          for (s = 0; s < {states}; ++s) {{\n            for (i = 0; i < 6; ++i) {{\n                \
          wrench_all[s][i] = wrench[i];\n                wrench_all_f[s][i] = (float)wrench[i];\n            }}\n            \
-         for (i = 0; i < {n}; ++i) {{\n                q_all_f[s][i] = (float)q[s][i];\n                \
+         for (i = 0; i < {nq}; ++i) q_all_f[s][i] = (float)q[s][i];\n            \
+         for (i = 0; i < {n}; ++i) {{\n                \
          qd_all_f[s][i] = (float)qd[s][i];\n                qdd_all_f[s][i] = (float)qdd[s][i];\n                \
-         tau_all_f[s][i] = (float)tau[s][i];\n            }}\n        }}\n"
+         tau_all_f[s][i] = (float)tau[s][i];\n            }}\n        }}\n        \
+         (void)wrench_all;\n        (void)wrench_all_f;\n"
     );
     if let Some(w) = super::tip_wrenches_length(robot) {
         c.push_str(&format!(

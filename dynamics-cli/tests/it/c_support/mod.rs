@@ -156,6 +156,11 @@ fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) ->
     }
 }
 
+/// 1 on a floating base, whose `q` has the base's x before the graph's coordinates, else 0.
+pub fn q_shift(eq: &Equations) -> usize {
+    usize::from(eq.families.contains(Family::Floating))
+}
+
 /// `{a, b, c}`, each number exactly (Rust's shortest round trip, which C reads back).
 pub fn c_array(values: &[f64]) -> String {
     let items: Vec<String> = values.iter().map(|x| format!("{x:?}")).collect();
@@ -166,6 +171,7 @@ pub fn c_array(values: &[f64]) -> String {
 /// status values...`.
 pub fn driver(robot: &Robot, states: &[State]) -> String {
     let n = robot.eq.dof;
+    let nq = n + q_shift(&robot.eq);
     let mut c = format!(
         "#include <stdio.h>\n#define DYNAMICS_BATCH\n#include \"{}.h\"\n\n\
          static void show(const char *f, int s, int r, const double *x, int n) {{\n    \
@@ -178,15 +184,15 @@ pub fn driver(robot: &Robot, states: &[State]) -> String {
         robot.name,
         c_array(&WRENCH)
     );
-    for (name, pick) in [
-        ("q", (|s: &State| &s.q) as fn(&State) -> &Vec<f64>),
-        ("qd", |s| &s.qd),
-        ("qdd", |s| &s.qdd),
-        ("tau", |s| &s.tau),
+    for (name, pick, len) in [
+        ("q", (|s: &State| &s.q) as fn(&State) -> &Vec<f64>, nq),
+        ("qd", |s| &s.qd, n),
+        ("qdd", |s| &s.qdd, n),
+        ("tau", |s| &s.tau, n),
     ] {
         let rows: Vec<String> = states.iter().map(|s| c_array(pick(s))).collect();
         c.push_str(&format!(
-            "    static const double {name}[{}][{n}] = {{{}}};\n",
+            "    static const double {name}[{}][{len}] = {{{}}};\n",
             states.len(),
             rows.join(", ")
         ));
@@ -208,12 +214,19 @@ pub fn driver(robot: &Robot, states: &[State]) -> String {
         ));
     }
     c.push_str(&format!(
-        "    float wrench_f[6], q_f[{n}], qd_f[{n}], qdd_f[{n}], tau_f[{n}];\n    \
+        "    float wrench_f[6], q_f[{nq}], qd_f[{n}], qdd_f[{n}], tau_f[{n}];\n    \
          for (i = 0; i < 6; ++i) wrench_f[i] = (float)wrench[i];\n    \
+         (void)wrench_f; /* a robot without statics (a floating base's) reads none */\n    \
          for (s = 0; s < {}; ++s) {{\n        for (i = 0; i < {n}; ++i) {{\n            \
          q_f[i] = (float)q[s][i];\n            qd_f[i] = (float)qd[s][i];\n            \
-         qdd_f[i] = (float)qdd[s][i];\n            tau_f[i] = (float)tau[s][i];\n        }}\n",
-        states.len()
+         qdd_f[i] = (float)qdd[s][i];\n            tau_f[i] = (float)tau[s][i];\n        }}\n{}",
+        states.len(),
+        // A floating base's q is one longer (the base's x first).
+        if nq > n {
+            format!("        for (i = {n}; i < {nq}; ++i) q_f[i] = (float)q[s][i];\n")
+        } else {
+            String::new()
+        }
     ));
     for f in &robot.functions {
         c.push_str(&call(f));
@@ -300,15 +313,17 @@ pub struct Run {
 
 /// Every node of the graph at `state`, as `dynamics eval` evaluates it.
 pub fn evaluate(eq: &Equations, params: &[f64], state: &State) -> Vec<f64> {
+    // A floating base's coordinate k is entry k + 1 of its q.
+    let q = &state.q[q_shift(eq)..];
     let base = |v: Var, offsets: &[f64]| -> f64 {
         let i = |k: u16| usize::from(k);
         // A robot with mimic joints keeps its joints' leaves past its coordinates in the graph,
         // read by no output: zero (as `Equations::evaluate` has them).
         let at = |x: &[f64], k: u16| x.get(i(k)).copied().unwrap_or(0.0);
         match v {
-            Var::Q(k) => at(&state.q, k),
-            Var::SinQ(k) => (at(&state.q, k) + at(offsets, k)).sin(),
-            Var::CosQ(k) => (at(&state.q, k) + at(offsets, k)).cos(),
+            Var::Q(k) => at(q, k),
+            Var::SinQ(k) => (at(q, k) + at(offsets, k)).sin(),
+            Var::CosQ(k) => (at(q, k) + at(offsets, k)).cos(),
             Var::Qd(k) => at(&state.qd, k),
             Var::Qdd(k) => at(&state.qdd, k),
             Var::Tau(k) => at(&state.tau, k),
@@ -432,7 +447,11 @@ fn same_bits(a: &[f64], b: &[f64]) -> bool {
 /// lose what M's condition number takes.
 pub fn f32_tolerance(method: Method) -> f64 {
     match method {
-        Method::MassMatrixInverse | Method::ForwardDynamics => 1e-2,
+        Method::MassMatrixInverse
+        | Method::ForwardDynamics
+        | Method::FloatingMassMatrixInverse
+        | Method::FloatingForwardDynamics
+        | Method::FloatingForwardDynamicsDerivatives => 1e-2,
         _ => 1e-4,
     }
 }

@@ -9,11 +9,13 @@ fn labels_print_themselves() {
         format: Format::Text,
         kinds: &kinds,
         factors_first: false,
+        floating: false,
     };
     let latex = Printer {
         format: Format::Latex,
         kinds: &kinds,
         factors_first: false,
+        floating: false,
     };
     let diagonal = Label::new(Quantity::Inertia, &[1, 1]).with_actuator_inertia();
     assert_eq!(diagonal.render(&text), "D22 + I2(act)");
@@ -34,6 +36,7 @@ fn labels_print_themselves() {
         format: Format::Text,
         kinds: &ten,
         factors_first: false,
+        floating: false,
     };
     assert_eq!(
         Label::new(Quantity::Coriolis, &[0, 9]).render(&wide),

@@ -27,6 +27,7 @@ fn print(text: &str, format: Format, kinematics: bool) -> String {
         format,
         kinds: &kinds,
         factors_first: kinematics,
+        floating: false,
     };
     let terms = terms.into_iter().collect();
     p.sum(&if kinematics {

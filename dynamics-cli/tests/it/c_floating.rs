@@ -1,0 +1,210 @@
+//! `dynamics emit --lang c ROBOT --floating`: the C header of a robot on a free-flying base
+//! (`FloatingDynamics`' M, h, τ, g, M⁻¹ and the forward dynamics, `q` of `n + 7` elements),
+//! compiled by the C compilers found and run at the 12 states of Pinocchio 4.1's reference data
+//! (`tests/data/floating/`, by `make.py`). Every function, `double` and `float`, against the
+//! traced graph (as `c_header.rs` checks a fixed base's, its batch twin bit for bit), and the
+//! `double` results against Pinocchio's `crba`, `nonLinearEffects`, `rnea`,
+//! `computeGeneralizedGravity`, `computeMinverse` and `aba` (at the data's `tau_in`) to 1e-12
+//! of each result's largest element; with `--with derivatives`, `computeRNEADerivatives` and
+//! `computeABADerivatives` too.
+//!
+//! Without any C compiler the test says so and passes; CI has gcc.
+
+use crate::c_support::{
+    check_against_graph, compile_and_run_builds, printed, root, scaled_error, Reach, Robot, State,
+};
+use dynamics_codegen::emit_c::{functions, prefix};
+use dynamics_codegen::method::Method;
+use dynamics_codegen::pipeline::{self, Source};
+use dynamics_codegen::{Family, FamilySet};
+use serde_json::Value;
+use std::process::Command;
+
+/// The robot of `file` on a free-flying base, its header written by `dynamics emit --lang c
+/// --floating` (with the opt-in families `with`), its equations traced in process.
+fn floating_robot(file: &str, with: &[&str]) -> Robot {
+    let list = with.join(",");
+    let mut args = vec!["emit", "--lang", "c", file, "--floating"];
+    if !with.is_empty() {
+        args.extend(["--with", &list]);
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(&args)
+        .current_dir(root())
+        .output()
+        .expect("run dynamics");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let header = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(header.is_ascii(), "the header of {file} is not ASCII");
+    let path = root().join(file);
+    let path = path.to_str().expect("a UTF-8 path");
+    let loaded = pipeline::load(&Source::file(path)).expect("a valid description");
+    let families = with
+        .iter()
+        .map(|name| Family::from_name(name).expect("a family"))
+        .fold(FamilySet::default(), FamilySet::with);
+    let eq = loaded
+        .floating_equations_with(families)
+        .expect("a floating base");
+    let name = prefix(&loaded.robot.name);
+    let functions = functions(&eq, &name);
+    Robot {
+        name,
+        header,
+        eq,
+        functions,
+        params: vec![],
+    }
+}
+
+/// A JSON vector or matrix, rows first.
+fn flat(value: &Value) -> Vec<f64> {
+    match value {
+        Value::Array(items) => items.iter().flat_map(flat).collect(),
+        x => vec![x.as_f64().expect("a number")],
+    }
+}
+
+/// The samples of `data` (under `tests/data/floating/`) and their states: `q`, `v`, `a`, and
+/// the generalized force the forward dynamics are called with, `tau_in` where the data have
+/// one, else `tau` (whose forward dynamics are `a`).
+fn samples(data: &str) -> (Vec<Value>, Vec<State>) {
+    let (samples, _) = samples_of(data);
+    let states = samples
+        .iter()
+        .map(|s| State {
+            q: flat(&s["q"]),
+            qd: flat(&s["v"]),
+            qdd: flat(&s["a"]),
+            tau: flat(s.get("tau_in").unwrap_or(&s["tau"])),
+        })
+        .collect();
+    (samples, states)
+}
+
+/// Compiles and runs `robot`'s header at the states of `data` as far as `reach` says; checks
+/// every function against the graph and each of `table`'s (method, key of `data`) against
+/// Pinocchio's values.
+fn check(robot: &Robot, data: &str, reach: Reach, table: &[(Method, &str)]) {
+    let (samples, states) = samples(data);
+    let runs = compile_and_run_builds(robot, &states, reach);
+    if runs.is_empty() {
+        eprintln!("no C compiler (gcc, clang, g++) found: the floating C header is not checked");
+        return;
+    }
+    for run in &runs {
+        check_against_graph(robot, &states, run);
+        for (s, sample) in samples.iter().enumerate() {
+            for &(method, key) in table {
+                let name = format!("{}_{}", robot.name, method.name());
+                let (status, got) = printed(&run.printed, &name, 0, s);
+                assert_eq!(*status, 0, "{}: {name} at sample {s}", run.label);
+                let e = scaled_error(got, &flat(&sample[key]));
+                assert!(
+                    e <= 1e-12,
+                    "{}: {name} at sample {s}: off by {e:e}",
+                    run.label
+                );
+            }
+        }
+    }
+}
+
+/// The methods every floating header has, and the data's key of each.
+const DYNAMICS: [(Method, &str); 6] = [
+    (Method::FloatingMassMatrix, "M"),
+    (Method::FloatingBiasForces, "h"),
+    (Method::FloatingInverseDynamics, "tau"),
+    (Method::FloatingGravity, "g"),
+    (Method::FloatingMassMatrixInverse, "M_inv"),
+    (Method::FloatingForwardDynamics, "a_fd"),
+];
+
+#[test]
+fn solo12_floating_header_matches_pinocchio() {
+    let robot = floating_robot("robots/urdf/floating/solo12.urdf", &[]);
+    assert!(robot.header.contains("--floating"), "its command names it");
+    let signature = "_inverse_dynamics(const double q[19], const double qd[18], \
+                     const double qdd[18], double tau[18])";
+    assert!(robot.header.contains(signature), "{}", robot.header);
+    check(&robot, "solo12.json", Reach::Compilers, &DYNAMICS);
+}
+
+#[test]
+fn anymal_b_floating_header_matches_pinocchio() {
+    let robot = floating_robot("robots/urdf/floating/anymal_b.urdf", &[]);
+    let table = [
+        (Method::FloatingMassMatrix, "M"),
+        (Method::FloatingBiasForces, "h"),
+        (Method::FloatingInverseDynamics, "tau"),
+        (Method::FloatingGravity, "g"),
+        (Method::FloatingForwardDynamics, "a"),
+    ];
+    check(&robot, "anymal_b.json", Reach::First, &table);
+}
+
+/// `--with derivatives`: `inverse_dynamics_derivatives` (`∂τ/∂q` along the tangent, `∂τ/∂v`)
+/// and `forward_dynamics_derivatives` (`a`, `∂a/∂q`, `∂a/∂v`, `∂a/∂τ`) at the data's
+/// `tau_in` against Pinocchio's `computeRNEADerivatives` and `computeABADerivatives`
+/// (`solo12_derivatives.json`), each matrix to 1e-12 of its largest element, as the derive's
+/// are (`tests/tests/it/floating_derivatives.rs`).
+#[test]
+fn solo12_floating_derivatives_header_matches_pinocchio() {
+    let robot = floating_robot("robots/urdf/floating/solo12.urdf", &["derivatives"]);
+    let (_, mut states) = samples("solo12.json");
+    let (derivatives, _) = samples_of("solo12_derivatives.json");
+    for (state, d) in states.iter_mut().zip(&derivatives) {
+        state.tau = flat(&d["tau_in"]);
+    }
+    let runs = compile_and_run_builds(&robot, &states, Reach::First);
+    let nv = robot.eq.dof;
+    for run in &runs {
+        check_against_graph(&robot, &states, run);
+        for (s, d) in derivatives.iter().enumerate() {
+            let parts = [
+                (
+                    "inverse_dynamics_derivatives",
+                    0,
+                    vec!["dtau_dq", "dtau_dv"],
+                ),
+                ("forward_dynamics_derivatives", 0, vec!["ddq"]),
+                (
+                    "forward_dynamics_derivatives",
+                    1,
+                    vec!["ddq_dq", "ddq_dv", "ddq_dtau"],
+                ),
+            ];
+            for (method, part, keys) in parts {
+                let name = format!("{}_{method}", robot.name);
+                let (status, got) = printed(&run.printed, &name, part, s);
+                assert_eq!(*status, 0, "{}: {name} at sample {s}", run.label);
+                let size = got.len() / keys.len();
+                assert!(
+                    size == nv || size == nv * nv,
+                    "{name}: {} numbers",
+                    got.len()
+                );
+                for (k, key) in keys.iter().enumerate() {
+                    let e = scaled_error(&got[k * size..(k + 1) * size], &flat(&d[*key]));
+                    assert!(
+                        e <= 1e-12,
+                        "{}: {name} {key} at sample {s}: off by {e:e}",
+                        run.label
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The samples of `data` under `tests/data/floating/`, and the data.
+fn samples_of(data: &str) -> (Vec<Value>, Value) {
+    let text = std::fs::read_to_string(root().join("tests/data/floating").join(data))
+        .expect("reference data");
+    let json: Value = serde_json::from_str(&text).expect("JSON");
+    (json["samples"].as_array().expect("samples").clone(), json)
+}
