@@ -6,16 +6,16 @@
 //! `a = 0`:
 //!
 //! ```text
-//! a₀ = M⁻¹ (τ − h),   J a₀ + γ,   M⁻¹ Jᵀ,   Λ⁻¹ = J M⁻¹ Jᵀ   (3F × 3F)
+//! a₀ = M⁻¹ (τ − h − τ_f),   J a₀ + γ,   M⁻¹ Jᵀ,   Λ⁻¹ = J M⁻¹ Jᵀ   (3F × 3F)
 //! (Λ⁻¹)_cc λ_c = −(J a₀ + γ)_c,   a = a₀ + (M⁻¹ Jᵀ)_c λ_c       (c: the frames in contact)
 //! ```
 //!
 //! The block of `Λ⁻¹` of the frames in contact is exactly `J_c M⁻¹ J_cᵀ`. `#[derive(Dynamics)]`
 //! generates [`FloatingContactTerms::contact_terms`] in closed form (through the LDLᵀ of `M`
 //! factored from the tips, see `docs/floating-base.md`); the provided method computes the same
-//! at run time from the generated `M⁻¹`, `h` and the frames' Jacobians.
+//! at run time from the generated forward dynamics, `M⁻¹` and the frames' Jacobians.
 
-use crate::floating_contacts::{dot, mat_vec, solve_contacts, sparse_mat_vec};
+use crate::floating_contacts::{dot, solve_contacts, sparse_mat_vec};
 use crate::{
     ContactDynamics, ContactError, FloatingDynamics, FloatingKinematics, NotPositiveDefinite, Real,
 };
@@ -127,10 +127,10 @@ pub trait FloatingContactTerms<const Q: usize, const V: usize, const F: usize>:
         tau: &[T; V],
     ) -> Result<ContactTerms<T, V, F>, NotPositiveDefinite> {
         let minv = self.mass_matrix_inverse(q)?;
-        let h = self.bias_forces(q, v);
         let jacobians = self.frame_jacobians_world_aligned(q);
         let drifts = self.frame_acceleration_biases_world_aligned(q, v);
-        let free = mat_vec(&minv, &core::array::from_fn(|i| tau[i] - h[i]));
+        // `forward_dynamics`' own: `M⁻¹ (τ − h − τ_f)`, with the joints' friction.
+        let free = self.forward_dynamics(q, v, tau)?;
         let minv_jt: [[[T; V]; 3]; F] = core::array::from_fn(|f| {
             core::array::from_fn(|i| sparse_mat_vec(&minv, &jacobians[f][i]))
         });

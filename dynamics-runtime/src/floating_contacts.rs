@@ -26,7 +26,7 @@
 //! the frames in contact is factored `L D Lᵀ` on the stack; its pivots are positive exactly
 //! when the contacts are independent (J of full row rank).
 
-use crate::{FloatingContactTerms, NotPositiveDefinite, Real};
+use crate::{ConstrainedDynamics, Contact, FloatingContactTerms, NotPositiveDefinite, Real};
 use core::fmt;
 
 /// Why [`FloatingContacts::contact_dynamics`] has no solution.
@@ -161,6 +161,27 @@ pub trait FloatingContacts<const Q: usize, const V: usize, const F: usize>:
     ) -> Result<ContactDynamics<T, V, F>, ContactError> {
         self.contact_terms(q, v, tau)?.solve(in_contact)
     }
+
+    /// The forward dynamics with each frame held as `contacts[f]` says: a 3-D point contact
+    /// (its origin held, Pinocchio's CONTACT_3D), a 6-D surface contact (its pose held, a flat
+    /// foot: CONTACT_6D), or free; the acceleration and the contact wrenches of Pinocchio's
+    /// `constraintDynamics` with those `RigidConstraintModel`s in LOCAL_WORLD_ALIGNED and no
+    /// Baumgarte correction (a surface's drift its spatial acceleration, see
+    /// `docs/floating-base.md`). Computed at run time from the generated methods (the point
+    /// contacts alone: [`Self::contact_dynamics`], in closed form).
+    ///
+    /// `Err(NotPositiveDefinite)` as `forward_dynamics`, `Err(DependentContacts)` where a
+    /// pivot of the rows held is not positive (they are not independent: Solo 12's legs of
+    /// three joints cannot hold three feet flat).
+    fn constrained_dynamics<T: Real>(
+        &self,
+        q: &[T; Q],
+        v: &[T; V],
+        tau: &[T; V],
+        contacts: &[Contact; F],
+    ) -> Result<ConstrainedDynamics<T, V, F>, ContactError> {
+        crate::floating_surface_contacts::constrained_dynamics(self, q, v, tau, contacts)
+    }
 }
 
 impl<R, const Q: usize, const V: usize, const F: usize> FloatingContacts<Q, V, F> for R where
@@ -192,11 +213,6 @@ pub(crate) fn dot<T: Real, const V: usize>(a: &[T; V], b: &[T; V]) -> T {
     a.iter().zip(b).fold(T::ZERO, |s, (&x, &y)| s + x * y)
 }
 
-/// `m x` for a symmetric `m` (`M⁻¹`): its rows are its columns.
-pub(crate) fn mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
-    core::array::from_fn(|i| dot(&m[i], x))
-}
-
 /// `m x` for a symmetric `m` and an `x` of a frame's Jacobian row, which is zero at the
 /// joints of the other branches: those columns skipped (half of Solo 12's).
 pub(crate) fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V]) -> [T; V] {
@@ -211,15 +227,15 @@ pub(crate) fn sparse_mat_vec<T: Real, const V: usize>(m: &[[T; V]; V], x: &[T; V
     out
 }
 
-/// Solves the symmetric `system x = rhs` (3F unknowns, index `3 f + i`) by `L D Lᵀ`, row by
-/// row (each row of the system, `[[T; 3]; F]`, is 3F numbers in a row), on the stack; `None`
-/// where a pivot is not positive.
-pub(crate) fn solve_contacts<T: Real, const F: usize>(
-    mut system: [[[[T; 3]; F]; 3]; F],
-    rhs: [[T; 3]; F],
-) -> Option<[[T; 3]; F]> {
+/// Solves the symmetric `system x = rhs` (`R` F unknowns, `R` rows per frame, index
+/// `R f + i`) by `L D Lᵀ`, row by row (each row of the system, `[[T; R]; F]`, is `R` F numbers
+/// in a row), on the stack; `None` where a pivot is not positive.
+pub(crate) fn solve_contacts<T: Real, const R: usize, const F: usize>(
+    mut system: [[[[T; R]; F]; R]; F],
+    rhs: [[T; R]; F],
+) -> Option<[[T; R]; F]> {
     let rows = system.as_flattened_mut();
-    let mut pivots = [[T::ZERO; 3]; F];
+    let mut pivots = [[T::ZERO; R]; F];
     let d = pivots.as_flattened_mut();
     // In place: row i's entries before the diagonal become L's (unit diagonal).
     for i in 0..rows.len() {

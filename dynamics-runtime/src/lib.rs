@@ -83,6 +83,7 @@ mod factor;
 mod floating_contact_terms;
 mod floating_contacts;
 mod floating_kinematics;
+mod floating_surface_contacts;
 pub mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra;
@@ -98,8 +99,8 @@ pub use crate::batch::InParallel;
 pub use crate::batch::{
     BatchScalar, DerivativesBatchScalar, DynamicsBaseParametersBatch, DynamicsBatch,
     DynamicsDerivativesBatch, DynamicsRegressorBatch, DynamicsSimplifiedBatch,
-    FloatingDynamicsBaseParametersBatch, FloatingDynamicsBatch, FloatingDynamicsDerivativesBatch,
-    FloatingDynamicsRegressorBatch, TipKinematicsBatch,
+    FloatingContactsBatch, FloatingDynamicsBaseParametersBatch, FloatingDynamicsBatch,
+    FloatingDynamicsDerivativesBatch, FloatingDynamicsRegressorBatch, TipKinematicsBatch,
 };
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
@@ -111,6 +112,7 @@ pub use crate::factor::NotPositiveDefinite;
 pub use crate::floating_contact_terms::{ContactTerms, FloatingContactTerms};
 pub use crate::floating_contacts::{ContactDynamics, ContactError, FloatingContacts};
 pub use crate::floating_kinematics::FloatingKinematics;
+pub use crate::floating_surface_contacts::{ConstrainedDynamics, Contact};
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};
 pub use crate::pose::Pose;
 pub use crate::real::{Real, RealScalar};

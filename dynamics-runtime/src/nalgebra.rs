@@ -3,7 +3,8 @@
 //! The methods of [`Dynamics`](crate::Dynamics) take and return plain arrays; for each of the
 //! runtime's traits, a `...Nalgebra` trait (from the method table, `methods.rs`) wraps them for
 //! `SVector` and `SMatrix`, at no cost beyond a copy: [`DynamicsNalgebra`],
-//! [`DynamicsDerivativesNalgebra`], [`DynamicsRegressorNalgebra`]. A scalar result stays `T`; a
+//! [`DynamicsDerivativesNalgebra`], [`DynamicsRegressorNalgebra`]; the contacts' hand-written
+//! traits have [`FloatingContactsNalgebra`]. A scalar result stays `T`; a
 //! pose becomes an `Isometry3`, a Jacobian an `SMatrix<T, 6, N>`, the regressor one `N × 10`
 //! block per link.
 
@@ -13,6 +14,12 @@ use crate::{
 };
 use nalgebra::{
     Isometry3, Matrix3, RealField, Rotation3, SMatrix, SVector, Translation3, UnitQuaternion,
+};
+
+mod contacts;
+pub use contacts::{
+    ConstrainedDynamicsNalgebra, ContactDynamicsNalgebra, ContactTermsNalgebra,
+    FloatingContactsNalgebra,
 };
 
 /// The traits from the method table's rows: for each of the runtime's traits, one of `_na`

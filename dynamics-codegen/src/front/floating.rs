@@ -74,6 +74,7 @@ pub(super) fn free_flyer(
     // Without a robot, the description's own errors are told already.
     let robot = robot?;
     robot_problems(robot, span, errors);
+    joint_terms_with_families(attrs, robot, span, errors);
     if errors.len() > before {
         return None;
     }
@@ -159,16 +160,16 @@ fn urdf_flyer(
     }
 }
 
-/// What a floating base's equations leave out, refused: mimic joints, and joint terms that are
-/// not zero (friction, actuator inertia, springs).
+/// What a floating base's equations leave out, refused: mimic joints and springs.
 fn robot_problems(robot: &Robot, span: proc_macro2::Span, errors: &mut Errors) {
     for message in unsupported(robot) {
         errors.push(span, message);
     }
 }
 
-/// What of `robot` a floating base does not support yet, one message each: mimic joints, and
-/// joint terms that are not zero (friction, actuator inertia, springs).
+/// What of `robot` a floating base does not support yet, one message each: mimic joints and
+/// joint springs. (Joint friction and actuator inertia are modelled: in `τ`, the forward
+/// dynamics and `M`'s diagonal.)
 #[must_use]
 pub fn unsupported(robot: &Robot) -> Vec<String> {
     let mut found = Vec::new();
@@ -176,18 +177,43 @@ pub fn unsupported(robot: &Robot) -> Vec<String> {
         found.push("mimic joints are not supported on a floating base yet".to_string());
     }
     for (i, joint) in robot.joints.iter().enumerate() {
+        if joint.link.spring.is_some() {
+            found.push(format!("joint {}: springs are not supported on a floating base yet (Pinocchio's free flyer has none)", i + 1));
+        }
+    }
+    found
+}
+
+/// Whether a joint of `robot` has friction or actuator inertia that is not zero.
+fn has_joint_terms(robot: &Robot) -> bool {
+    robot.joints.iter().any(|joint| {
         let link = &joint.link;
         let friction = link
             .friction
             .iter()
             .flat_map(crate::model::Friction::values);
-        let nonzero = friction
+        friction
             .chain([&link.actuator_inertia])
             .any(|v| !v.is_zero())
-            || link.spring.is_some();
-        if nonzero {
-            found.push(format!("joint {}: friction, actuator inertia and springs are not supported on a floating base yet (Pinocchio's free flyer has none): the joint's `<dynamics>` must be zero", i + 1));
-        }
+    })
+}
+
+/// The floating base's opt-in families do not model joint friction and actuator inertia yet
+/// (their derivatives, their regressor columns): refused together.
+fn joint_terms_with_families(
+    attrs: &Attrs,
+    robot: &Robot,
+    span: proc_macro2::Span,
+    errors: &mut Errors,
+) {
+    if !has_joint_terms(robot) {
+        return;
     }
-    found
+    let asked = attrs
+        .families
+        .iter()
+        .filter(|(family, &asked)| asked && family.on_floating_base().is_some());
+    for (family, _) in asked {
+        errors.push(span, format!("`{} = true` is not supported on a floating base with joint friction or actuator inertia yet (a joint's `<dynamics damping friction>`, `friction`, `actuator_inertia`): `base = floating` models them in M, τ and the forward dynamics only", family.name()));
+    }
 }

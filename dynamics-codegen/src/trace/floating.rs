@@ -1,7 +1,11 @@
 //! The equations of a tree on a free-flying base ([`algo::floating_rnea`],
-//! [`algo::floating_crba`]): `M`, the bias `h = C v + g`, `τ = M a + h` and the generalized
-//! gravity `g`, each `6 + n` long, and the forward dynamics and `M⁻¹` through the LDLᵀ of `M`
-//! factored from the tips, in one graph.
+//! [`algo::floating_crba`]): `M`, the bias `h = C v + g`, `τ = M a + h + τ_f` and the
+//! generalized gravity `g`, each `6 + n` long, and the forward dynamics
+//! `a = M⁻¹ (τ − h − τ_f)` and `M⁻¹` through the LDLᵀ of `M` factored from the tips, in one
+//! graph. The joints' actuator inertia (Pinocchio's armature) is on `M`'s diagonal; their
+//! friction `τ_f` (`f_v q̇ + f_c sign(q̇) + f_0`, zero in the base's rows) is in `τ` and the
+//! forward dynamics, not in `h` (as a fixed base's `bias_torques`, and Pinocchio's
+//! `nonLinearEffects`).
 //!
 //! The coordinates are numbered as the velocity's: the base's six (`0..6`), then joint i at
 //! `6 + i` ([`Var::Q`], [`Var::SinQ`], [`Var::Qd`], [`Var::Qdd`] alike). The configuration
@@ -41,26 +45,37 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
     let gravity = world_gravity(&tracer, flyer);
     let zeros = vec![zero; nv];
     let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
-    let mass: Vec<_> = algo::floating_crba(&chain, &base)
-        .into_iter()
-        .map(ids)
-        .collect();
+    let mut mass = algo::floating_crba(&chain, &base);
     let bias = ids(algo::floating_rnea(
         &chain, &base, quaternion, &v, &zeros, gravity,
     ));
-    let tau = ids(algo::floating_rnea(
-        &chain, &base, quaternion, &v, &a, gravity,
-    ));
+    let mut tau = algo::floating_rnea(&chain, &base, quaternion, &v, &a, gravity);
     let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
+    // The joints' own terms, on their rows: actuator inertia (Pinocchio's armature) on M's
+    // diagonal and in τ, friction in τ and the forward dynamics' right-hand side. Zero for a
+    // joint without them, which folds: such a robot keeps every node it had.
+    let friction = super::friction::friction_torques(&tracer, robot, &v[BASE_COORDINATES..], zero);
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let k = BASE_COORDINATES + i;
+        let armature = tracer.value(&joint.link.actuator_inertia);
+        mass[k][k] = mass[k][k] + armature;
+        tau[k] = tau[k] + armature * a[k] + Expr::new(&graph, friction[i]);
+    }
+    let mass: Vec<_> = mass.into_iter().map(ids).collect();
+    let tau = ids(tau);
+    let nothing = zero.id();
+    let friction: Vec<_> = [nothing; BASE_COORDINATES]
+        .into_iter()
+        .chain(friction)
+        .collect();
     let kinds = [JointKind::Prismatic; BASE_COORDINATES]
         .into_iter()
         .chain(robot.joints.iter().map(|j| j.kind))
         .collect();
     let angle_offsets = tracer.angle_offsets();
-    let nothing = zero.id();
     // The base is the root of the tree: factored from the tips, each branch's joints reach
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
-    let forward = super::forward::forward(&graph, &mass, &bias, &vec![nothing; nv], true);
+    let forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
     Equations {
         graph: graph.into_inner(),
         dof: nv,
@@ -75,7 +90,7 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
         gravity,
         bias,
         tau,
-        friction: Vec::new(),
+        friction,
         kinetic_energy: nothing,
         potential_energy: nothing,
         kinematics: KinematicEquations::default(),

@@ -3,25 +3,27 @@
 //! or `f_c tanh(q̇_i / ε)` in place of the sign where a smoothing velocity ε is given. Zero for
 //! a joint without friction, so that a robot without any adds no node to the graph.
 
+use super::expr::Expr;
 use super::tracer::Tracer;
-use super::JointTerms;
 use crate::algo::{RobotScalars, Scalar};
 use crate::model::Robot;
 use crate::symbolic::NodeId;
 
-/// The friction torque of each joint of `robot`.
-pub(super) fn friction_torques(
-    t: &Tracer<'_>,
+/// The friction torque of each joint of `robot`, `qd` its joints' rates (a floating base's
+/// after the base's six).
+pub(super) fn friction_torques<'g>(
+    t: &Tracer<'g>,
     robot: &Robot,
-    joints: &JointTerms<'_>,
+    qd: &[Expr<'g>],
+    zero: Expr<'g>,
 ) -> Vec<NodeId> {
     robot
         .joints
         .iter()
-        .zip(&joints.qd)
+        .zip(qd)
         .map(|(joint, &qd)| {
             let Some(f) = &joint.link.friction else {
-                return joints.zero.id();
+                return zero.id();
             };
             let coulomb = t.value(&f.coulomb);
             let direction = match &f.smoothing {

@@ -201,7 +201,7 @@ pub fn derive(robot: &Robot) -> Equations {
     let kinematics = kinematics::kinematics(&mut tracer, robot, &joints.qd);
     let angle_offsets = tracer.angle_offsets();
     // Last, so that the nodes of a robot without friction are those it always had.
-    let friction = friction::friction_torques(&tracer, robot, &joints);
+    let friction = friction::friction_torques(&tracer, robot, &joints.qd, joints.zero);
     let tau = with_friction(&mut graph.borrow_mut(), &newton_euler.tau, &friction);
     let mut joint_space = JointSpace {
         mass,

@@ -2,7 +2,8 @@
 //! runtime's traits that takes joint values has a `_batch` form over slices of states
 //! (`inverse_dynamics_batch(&q, &qd, &qdd, &mut tau)`), declared from the method table
 //! (`methods.rs`) in one trait per trait: [`DynamicsBatch`], [`DynamicsDerivativesBatch`],
-//! [`DynamicsRegressorBatch`], [`DynamicsBaseParametersBatch`], implemented for every robot.
+//! [`DynamicsRegressorBatch`], [`DynamicsBaseParametersBatch`], implemented for every robot;
+//! the floating base's contacts, by hand, in [`FloatingContactsBatch`].
 //!
 //! The states are taken [`lanes`](crate::lanes) at a time — four for `f64` ([`F64x4`]), eight
 //! for `f32` ([`F32x8`]); the derivatives' eight `f64` ([`F64x8`]) where the build computes
@@ -38,11 +39,13 @@
 //! [`F64x8`]: crate::F64x8
 //! [`F32x8`]: crate::F32x8
 
+mod contacts;
 mod layout;
 #[cfg(feature = "rayon")]
 mod parallel;
 mod traits;
 
+pub use contacts::FloatingContactsBatch;
 pub use layout::{States, StatesMut};
 #[cfg(feature = "rayon")]
 pub use parallel::{ChunksMut, InParallel};

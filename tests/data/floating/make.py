@@ -640,6 +640,263 @@ def regressor(name, urdf):
     print(name, "regressor:", len(samples), "samples, rank", rank, "of", len(columns), result["rank_gap"])
 
 
+
+# Joint friction and actuator inertia on a floating base (issue 43; helper contactforms). The
+# URDF robots with `<dynamics damping friction>`: name -> URDF, their frames held by `surface`.
+FRICTION = {"talos_reduced": "robots/urdf/floating/talos_reduced.urdf"}
+# Solo 12 given again as a description file with joint terms of its own (`joint_terms`): per
+# joint (the file's order) its actuator inertia, viscous and Coulomb coefficients.
+JOINT_TERMS_TOML = "robots/floating/solo12.toml"
+
+
+def joint_friction(v, damping, friction):
+    """The joints' friction torque, `damping v + friction sign(v)` (sign(0) = 0), as the
+    front end reads `<dynamics damping friction>`; zero in the base's six rows. Pinocchio
+    parses both into `model.damping` and `model.friction` but its `rnea`, `nonLinearEffects`
+    and `aba` leave them out (checked in `friction_data`), so they are added here by hand."""
+    out = damping * v + friction * np.sign(v)
+    out[:6] = 0.0
+    return out
+
+
+def friction_states(name, model, order, names, rng, damping, friction, extra):
+    """12 states as `make` draws them, with tau = rnea + friction (Pinocchio's armature in its
+    crba and rnea) and, at tau_in, a_fd = aba(q, v, tau_in - friction), in the file's order."""
+    data = model.createData()
+    samples = []
+    for k in range(SAMPLES):
+        q, v, a = sample(rng, model, k)
+        m = pin.crba(model, data, q).copy()
+        m = np.triu(m) + np.triu(m, 1).T
+        h = pin.nonLinearEffects(model, data, q, v).copy()
+        rigid = pin.rnea(model, data, q, v, a).copy()
+        assert scaled(m @ a + h, rigid) < TOLERANCE
+        f = joint_friction(v, damping, friction)
+        tau = rigid + f
+        g = pin.computeGeneralizedGravity(model, data, q).copy()
+        tau_in = extra.uniform(-20, 20, model.nv)
+        a_fd = pin.aba(model, data, q, v, tau_in - f).copy()
+        assert scaled(m @ a_fd + h + f, tau_in) < 1e-10
+        pick = [names.index(j) for j in order]
+        iv = list(range(6)) + [6 + k for k in pick]
+        q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
+        samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
+                        "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist(),
+                        "friction": f[iv].tolist(), "tau_in": tau_in[iv].tolist(), "a_fd": a_fd[iv].tolist()})
+    return samples
+
+
+def friction_data(name, urdf):
+    """`<name>.json` for a URDF robot whose joints have `<dynamics damping friction>` (Talos):
+    `make`'s samples (M, h = nonLinearEffects, g) with tau = rnea + friction and, at a force
+    tau_in uniform in [-20, 20] (generator SEED + 1), a_fd = aba(q, v, tau_in - friction)."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    # Pinocchio reads the coefficients but its algorithms do not: the same numbers without them.
+    bare = model.copy()
+    bare.damping[:] = 0.0
+    bare.friction[:] = 0.0
+    q, v, a = sample(np.random.default_rng(SEED), model, 3)
+    assert pin.rnea(model, data, q, v, a).tolist() == pin.rnea(bare, bare.createData(), q, v, a).tolist()
+    assert np.count_nonzero(model.damping) > 0
+    samples = friction_states(name, model, order, names, np.random.default_rng(SEED), model.damping,
+                              model.friction, np.random.default_rng(SEED + 1))
+    with open(path, "rb") as f:
+        sha = hashlib.sha256(f.read()).hexdigest()
+    out = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (friction_data) with pinocchio %s (buildModelFromUrdf with "
+                     "JointModelFreeFlyer)" % importlib.metadata.version("pin"),
+        "urdf_source": "example-robot-data 6.0.0 (PyPI)",
+        "urdf_sha256": sha,
+        "urdf": urdf,
+        "joints": order,
+        "nq": model.nq,
+        "nv": model.nv,
+        "gravity": [0.0, 0.0, -9.81],
+        "conventions": "as make's; tau = rnea(q, v, a) + friction, friction = damping v + friction sign(v) of each "
+                       "joint's <dynamics> (Pinocchio's rnea leaves it out); h = nonLinearEffects (no friction); "
+                       "a_fd = aba(q, v, tau_in - friction)",
+        "seed": SEED,
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(out, f, indent=1)
+        f.write("\n")
+    print(name, model.nq, model.nv, "friction:", int(np.count_nonzero(model.damping)), "joints with damping")
+
+
+def joint_terms_values(n):
+    """Per joint k of n: actuator inertia, viscous and Coulomb coefficients, distinct and exact
+    in decimal (so that the TOML and Pinocchio read the same doubles)."""
+    return [(0.001 * (k + 1), 0.01 * (k + 2), 0.02 * (k + 1)) for k in range(n)]
+
+
+def joint_terms(name="solo12"):
+    """Solo 12 with actuator inertia, viscous and Coulomb friction at every joint:
+    `<name>_joint_terms.toml` (JOINT_TERMS_TOML with the three keys added to each joint) and
+    `<name>_joint_terms.json`, Pinocchio's model of the URDF with `armature`, `damping` and
+    `friction` set to the same numbers, at `<name>.json`'s states: M (crba, armature on the
+    diagonal), h (nonLinearEffects), tau = rnea (armature in it) + friction by hand, g, and at
+    tau_in, a_fd = aba(q, v, tau_in - friction), in the file's order (Solo's is Pinocchio's)."""
+    path = os.path.join(ROOT, ROBOTS[name])
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    assert names == order
+    values = joint_terms_values(len(order))
+    for k, (armature, viscous, coulomb) in enumerate(values):
+        model.armature[6 + k] = armature
+        model.damping[6 + k] = viscous
+        model.friction[6 + k] = coulomb
+    with open(os.path.join(ROOT, JOINT_TERMS_TOML)) as f:
+        lines = f.read().split("\n")
+    out, k = [], 0
+    for line in lines:
+        out.append(line)
+        if line.startswith("inertia = ") and k < len(values) and any(o.startswith("[[joints]]") for o in out):
+            armature, viscous, coulomb = values[k]
+            out += ["actuator_inertia = %r" % armature, "friction_viscous = %r" % viscous,
+                    "friction_coulomb = %r" % coulomb]
+            k += 1
+    assert k == len(values)
+    out[0:2] = ["# Solo 12 with joint terms, written by tests/data/floating/make.py (joint_terms) from",
+                "# %s: each joint's actuator_inertia, friction_viscous, friction_coulomb added. Do not edit." % JOINT_TERMS_TOML]
+    with open(os.path.join(HERE, name + "_joint_terms.toml"), "w") as f:
+        f.write("\n".join(out))
+    samples = friction_states(name, model, order, names, np.random.default_rng(SEED), model.damping,
+                              model.friction, np.random.default_rng(SEED + 1))
+    # The armature is Pinocchio's: on crba's diagonal and in rnea.
+    bare = model.copy()
+    bare.armature[:] = 0.0
+    q, a = np.array(samples[3]["q"]), np.array(samples[3]["a"])
+    assert scaled(np.diag(pin.crba(model, model.createData(), q) - pin.crba(bare, bare.createData(), q))[6:],
+                  model.armature[6:]) < 1e-15
+    result = {
+        "robot": name + " with joint terms",
+        "generator": "tests/data/floating/make.py (joint_terms) with pinocchio %s" % importlib.metadata.version("pin"),
+        "description": name + "_joint_terms.toml",
+        "joints": order,
+        "armature": model.armature[6:].tolist(),
+        "damping": model.damping[6:].tolist(),
+        "friction": model.friction[6:].tolist(),
+        "nq": model.nq,
+        "nv": model.nv,
+        "conventions": "as friction_data's; Pinocchio's armature on crba's diagonal and in rnea and aba",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_joint_terms.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "joint terms:", len(samples), "samples")
+
+
+# 6-D (surface) contacts, CONTACT_6D in LOCAL_WORLD_ALIGNED, read by `surface`: per robot its
+# frames (those of FloatingKinematics, the leaf links in the file's order) and the contacts of
+# each sample in turn, "surface" (CONTACT_6D), "point" (CONTACT_3D) or "none" per frame.
+SURFACE = {
+    "g1_29dof": {
+        "frames": ["left_ankle_roll_link", "right_ankle_roll_link", "logo_link", "head_link", "imu_in_torso",
+                   "d435_link", "mid360_link", "left_rubber_hand", "right_rubber_hand"],
+        "contacts": [["surface", "surface"], ["surface", "point"], ["point", "surface"], ["surface", "none"],
+                     ["point", "point"], ["surface", "surface", "none", "none", "none", "none", "none", "point"]],
+    },
+    "solo12": {
+        "frames": ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"],
+        "contacts": [["surface", "point", "point", "point"], ["point", "surface", "none", "point"],
+                     ["none", "none", "surface"], ["point", "none", "none", "surface"]],
+    },
+}
+
+
+def surface(name, urdf):
+    """Forward dynamics with contacts held at the states of `<name>.json` (its q, v, tau),
+    written to `<name>_surface_contacts.json`: Pinocchio's `constraintDynamics` with a
+    RigidConstraintModel CONTACT_6D (a foot held flat: its pose fixed) or CONTACT_3D (its origin
+    fixed) in LOCAL_WORLD_ALIGNED at each frame of SURFACE[name] (no Baumgarte), ddq and
+    lambda_c (a wrench [f, m] on the robot at the frame's origin in world axes per 6-D contact,
+    a force per 3-D one), each checked against numpy's solve of the full KKT system
+    [M J^T; J 0] [a; -lambda] = [tau - h; -gamma], with J the frames' LOCAL_WORLD_ALIGNED
+    Jacobians (6 rows, or the 3 linear), gamma a 6-D contact's spatial acceleration at a = 0
+    (getFrameAcceleration: the classical one less w x v in the linear part) and a 3-D contact's
+    classical acceleration. Joints in the file's order."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    pick = [names.index(j) for j in order]
+    frames = SURFACE[name]["frames"]
+    ids = [model.getFrameId(f) for f in frames]
+    samples = []
+    worst = 0.0
+    for k, s in enumerate(states):
+        q = from_file_order(names, order, np.array(s["q"]), 7)
+        v = from_file_order(names, order, np.array(s["v"]), 6)
+        tau = from_file_order(names, order, np.array(s["tau"]), 6)
+        kinds = SURFACE[name]["contacts"][k % len(SURFACE[name]["contacts"])]
+        kinds = kinds + ["none"] * (len(frames) - len(kinds))
+        held = [(i, kind) for i, kind in zip(ids, kinds) if kind != "none"]
+        types = {"surface": pin.ContactType.CONTACT_6D, "point": pin.ContactType.CONTACT_3D}
+        models = [pin.RigidConstraintModel(types[kind], model, model.frames[i].parentJoint,
+                                           model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i, kind in held]
+        datas = [c.createData() for c in models]
+        pin.initConstraintDynamics(model, data, models, datas)
+        ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
+        lambda_c = data.lambda_c.copy()
+        m = pin.crba(model, data, q)
+        m = np.triu(m) + np.triu(m, 1).T
+        h = pin.nonLinearEffects(model, data, q, v)
+        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+        pin.computeJointJacobians(model, data, q)
+        pin.updateFramePlacements(model, data)
+        rows, gammas = [np.zeros((0, model.nv))], [np.zeros(0)]
+        for i, kind in held:
+            jac = pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)
+            if kind == "surface":
+                rows.append(jac)
+                gammas.append(pin.getFrameAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).vector)
+            else:
+                rows.append(jac[:3])
+                gammas.append(pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear)
+        jc, gamma = np.vstack(rows), np.concatenate(gammas)
+        c = len(gamma)
+        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
+        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
+        worst = max(worst, scaled(ddq, solution[:model.nv]), scaled(lambda_c, -solution[model.nv:]) if c else 0.0)
+        assert scaled(ddq, solution[:model.nv]) < 1e-9
+        assert not c or scaled(lambda_c, -solution[model.nv:]) < 1e-9
+        wrenches = np.zeros((len(frames), 6))
+        at = 0
+        for f, kind in enumerate(kinds):
+            size = {"surface": 6, "point": 3, "none": 0}[kind]
+            wrenches[f, :size] = lambda_c[at:at + size]
+            at += size
+        samples.append({"contacts": kinds, "a_contact": np.concatenate([ddq[:6], ddq[6:][pick]]).tolist(),
+                        "wrenches": wrenches.tolist()})
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (surface) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, tau of its samples, in order)",
+        "frames": frames,
+        "kkt_gap": worst,
+        "conventions": "a_contact, wrenches = constraintDynamics(q, v, tau) with CONTACT_6D (surface) or CONTACT_3D "
+                       "(point) in LOCAL_WORLD_ALIGNED at each frame (no Baumgarte); a wrench [f, m] on the robot at "
+                       "the frame's origin in world axes per frame, its moment zero at a point, all zero at none; "
+                       "a_contact's joints in the file's order",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_surface_contacts.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "surface contacts:", len(samples), "samples, KKT gap %.1e" % worst)
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
@@ -654,3 +911,8 @@ if __name__ == "__main__":
             derivatives(name, urdf)
     for name in REGRESSOR:
         regressor(name, ROBOTS[name])
+    for name, urdf in FRICTION.items():
+        friction_data(name, urdf)
+    joint_terms("solo12")
+    for name in SURFACE:
+        surface(name, ROBOTS[name])

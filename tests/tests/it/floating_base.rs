@@ -41,7 +41,7 @@ pub(crate) struct AnymalB;
 /// The Unitree G1 humanoid (`g1_description`, 29 joints, no hands).
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(urdf = "../robots/urdf/floating/g1_29dof.urdf", base = floating)]
-struct G1;
+pub(crate) struct G1;
 
 /// The numbers of `x`, a list or a list of lists, flattened.
 pub(crate) fn flat(x: &serde_json::Value) -> Vec<f64> {
