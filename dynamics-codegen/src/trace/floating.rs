@@ -30,7 +30,30 @@ pub const BASE_COORDINATES: usize = 6;
 /// checked the robot; it has no mimic joints.
 #[must_use]
 pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
-    let fields = floating_fields(robot, flyer);
+    trace_floating(robot, flyer, Gravity::World)
+}
+
+/// How the floating equations read gravity.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(super) enum Gravity {
+    /// The world's, turned into base axes by the quaternion: the derive's equations.
+    World,
+    /// In base axes, as three leaves named [`BASE_GRAVITY`] after the fields (`R = 1`): the
+    /// same polynomials with `g_b`'s terms written once, for the readable equations.
+    BaseLeaves,
+}
+
+/// The names of `g_b`'s leaves among the readable equations' fields: not identifiers, so never
+/// a struct field's.
+pub const BASE_GRAVITY: [&str; 3] = ["g_b.x", "g_b.y", "g_b.z"];
+
+/// [`derive_floating`], gravity read as `gravity` says.
+pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity) -> Equations {
+    let mut fields = floating_fields(robot, flyer);
+    let first = fields.len();
+    if gravity == Gravity::BaseLeaves {
+        fields.extend(BASE_GRAVITY.map(str::to_owned));
+    }
     let graph = RefCell::new(Graph::new());
     let mut tracer = Tracer::new(&graph, &fields, robot).shifted(BASE_COORDINATES);
     let zero = tracer.num(Number::ZERO);
@@ -41,8 +64,14 @@ pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
         coordinates(&tracer, nv, Var::Qd),
         coordinates(&tracer, nv, Var::Qdd),
     );
-    let quaternion = base_quaternion(&tracer);
-    let gravity = world_gravity(&tracer, flyer);
+    let (quaternion, gravity) = match gravity {
+        Gravity::World => (base_quaternion(&tracer), world_gravity(&tracer, flyer)),
+        Gravity::BaseLeaves => {
+            let one = tracer.num(Number::ONE);
+            let leaf = |k: usize| tracer.var(Var::Param(joint_index(first + k)));
+            ([zero, zero, zero, one], V3::new(leaf(0), leaf(1), leaf(2)))
+        }
+    };
     let zeros = vec![zero; nv];
     let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
     let mut mass = algo::floating_crba(&chain, &base);
