@@ -11,44 +11,23 @@
 //! Without any C compiler the test says so and passes; CI has gcc.
 
 use crate::c_support::{
-    check_against_graph, compile_and_run_builds, printed, root, scaled_error, Reach, Robot, State,
+    check_against_graph, compile_and_run_builds, emitted_header, families, printed, root,
+    scaled_error, Reach, Robot, State,
 };
 use dynamics_codegen::emit_c::{functions, prefix};
 use dynamics_codegen::method::Method;
 use dynamics_codegen::pipeline::{self, Source};
-use dynamics_codegen::{Family, FamilySet};
 use serde_json::Value;
-use std::process::Command;
 
 /// The robot of `file` on a free-flying base, its header written by `dynamics emit --lang c
 /// --floating` (with the opt-in families `with`), its equations traced in process.
 fn floating_robot(file: &str, with: &[&str]) -> Robot {
-    let list = with.join(",");
-    let mut args = vec!["emit", "--lang", "c", file, "--floating"];
-    if !with.is_empty() {
-        args.extend(["--with", &list]);
-    }
-    let out = Command::new(env!("CARGO_BIN_EXE_dynamics"))
-        .args(&args)
-        .current_dir(root())
-        .output()
-        .expect("run dynamics");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let header = String::from_utf8(out.stdout).expect("UTF-8");
-    assert!(header.is_ascii(), "the header of {file} is not ASCII");
+    let header = emitted_header(file, &["--floating"], with);
     let path = root().join(file);
     let path = path.to_str().expect("a UTF-8 path");
     let loaded = pipeline::load(&Source::file(path)).expect("a valid description");
-    let families = with
-        .iter()
-        .map(|name| Family::from_name(name).expect("a family"))
-        .fold(FamilySet::default(), FamilySet::with);
     let eq = loaded
-        .floating_equations_with(families)
+        .floating_equations_with(families(with))
         .expect("a floating base");
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);

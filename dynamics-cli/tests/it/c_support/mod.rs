@@ -101,15 +101,11 @@ pub fn urdf_tree_robot_with(file: &str, base: &str, with: &[&str]) -> Robot {
     robot_from(file, Some((base, None)), with)
 }
 
-/// The robot of a description file or (with a base and a tip, or every branch) a URDF file,
-/// with the families `with`.
-fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) -> Robot {
-    let mut args = vec!["emit", "--lang", "c", file];
-    if let Some((base, tip)) = chain {
-        args.extend(["--base", base]);
-        args.extend(tip.iter().flat_map(|tip| ["--tip", tip]));
-    }
+/// The header `dynamics emit --lang c FILE EXTRA.. [--with WITH]` writes; it must be ASCII.
+pub fn emitted_header(file: &str, extra: &[&str], with: &[&str]) -> String {
     let list = with.join(",");
+    let mut args = vec!["emit", "--lang", "c", file];
+    args.extend(extra);
     if !with.is_empty() {
         args.extend(["--with", &list]);
     }
@@ -126,6 +122,25 @@ fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) ->
     let header = String::from_utf8(out.stdout).expect("UTF-8");
     // Every C toolchain reads ASCII; not all read UTF-8 in comments.
     assert!(header.is_ascii(), "the header of {file} is not ASCII");
+    header
+}
+
+/// The opt-in families named in `with`.
+pub fn families(with: &[&str]) -> FamilySet {
+    with.iter()
+        .map(|name| Family::from_name(name).expect("a family"))
+        .fold(FamilySet::default(), FamilySet::with)
+}
+
+/// The robot of a description file or (with a base and a tip, or every branch) a URDF file,
+/// with the families `with`.
+fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) -> Robot {
+    let mut extra = vec![];
+    if let Some((base, tip)) = chain {
+        extra.extend(["--base", base]);
+        extra.extend(tip.iter().flat_map(|tip| ["--tip", tip]));
+    }
+    let header = emitted_header(file, &extra, with);
     let text = std::fs::read_to_string(root().join(file)).expect("description file");
     let loaded = match chain {
         Some((base, tip)) => {
@@ -139,11 +154,7 @@ fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) ->
         None => front::load(file, &text).expect("a valid description"),
     };
     let mut eq = derive(&loaded.robot);
-    let families = with
-        .iter()
-        .map(|name| Family::from_name(name).expect("a family"))
-        .fold(FamilySet::default(), FamilySet::with);
-    eq.add_families(&loaded.robot, families);
+    eq.add_families(&loaded.robot, families(with));
     simplified::add(&mut eq, &loaded.robot, loaded.simplify, file);
     let name = prefix(&loaded.robot.name);
     let functions = functions(&eq, &name);
