@@ -15,7 +15,7 @@
 //! factored from the tips, see `docs/floating-base.md`); the provided method computes the same
 //! at run time from the generated forward dynamics, `M⁻¹` and the frames' Jacobians.
 
-use crate::floating_contacts::{dot, solve_contacts, sparse_mat_vec};
+use crate::contact_solve::{dot, solve_contacts, sparse_mat_vec};
 use crate::{
     ContactDynamics, ContactError, FloatingDynamics, FloatingKinematics, NotPositiveDefinite, Real,
 };

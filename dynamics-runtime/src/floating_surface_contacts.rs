@@ -20,7 +20,7 @@
 //! time from the generated `M⁻¹`, forward dynamics, Jacobians and `J̇ v` (the 6F × 6F block of
 //! the frames held, `L D Lᵀ` on the stack).
 
-use crate::floating_contacts::{dot, solve_contacts, sparse_mat_vec};
+use crate::contact_solve::{dot, solve_contacts, sparse_mat_vec};
 use crate::{ContactError, FloatingContactTerms, Real};
 
 /// How a frame is held in [`crate::FloatingContacts::constrained_dynamics`].

@@ -79,6 +79,7 @@ pub mod batch;
 // Public for the Python package (`python/src/configuration.rs`), which calls it on NumPy arrays.
 #[doc(hidden)]
 pub mod configuration;
+mod contact_solve;
 mod factor;
 mod floating_contact_terms;
 mod floating_contacts;
@@ -102,6 +103,7 @@ pub use crate::batch::{
     FloatingContactsBatch, FloatingDynamicsBaseParametersBatch, FloatingDynamicsBatch,
     FloatingDynamicsDerivativesBatch, FloatingDynamicsRegressorBatch, TipKinematicsBatch,
 };
+pub use crate::contact_solve::ContactError;
 pub use crate::derivatives::{ForwardDynamicsDerivatives, InverseDynamicsDerivatives};
 pub use crate::dynamics::{
     Dynamics, DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor, DynamicsSimplified,
@@ -110,7 +112,7 @@ pub use crate::dynamics::{
 };
 pub use crate::factor::NotPositiveDefinite;
 pub use crate::floating_contact_terms::{ContactTerms, FloatingContactTerms};
-pub use crate::floating_contacts::{ContactDynamics, ContactError, FloatingContacts};
+pub use crate::floating_contacts::{ContactDynamics, FloatingContacts};
 pub use crate::floating_kinematics::FloatingKinematics;
 pub use crate::floating_surface_contacts::{ConstrainedDynamics, Contact};
 pub use crate::lanes::{F32x4, F32x8, F64x2, F64x4, F64x8};

@@ -10,37 +10,14 @@
 use super::arrange::terms;
 use super::branches;
 use super::label::{Label, Quantity};
-use super::print::Printer;
+use super::print::{Printer, BASE, GRAVITY};
 use super::sections::{Entry, Section};
 use super::{Inspection, Limits};
 use crate::model::Robot;
-use crate::poly::{AngleSum, Expander, Sym};
+use crate::poly::Expander;
 use crate::symbolic::NodeId;
-use crate::trace::{FloatingReadable, BASE_COORDINATES, BASE_GRAVITY};
+use crate::trace::{FloatingReadable, BASE_COORDINATES};
 use std::fmt::Write;
-
-/// The base's coordinates of `v`, in text and in LaTeX.
-const BASE: [(&str, &str); 6] = [
-    ("vx", "v_x"),
-    ("vy", "v_y"),
-    ("vz", "v_z"),
-    ("ωx", "\\omega_x"),
-    ("ωy", "\\omega_y"),
-    ("ωz", "\\omega_z"),
-];
-
-/// `q`'s entries `y` … `qw` as the graph's `Q(0..6)` reads them (`x` is read by nothing).
-const CONFIGURATION: [(&str, &str); 6] = [
-    ("y", "y"),
-    ("z", "z"),
-    ("qx", "q_x"),
-    ("qy", "q_y"),
-    ("qz", "q_z"),
-    ("qw", "q_w"),
-];
-
-/// `g_b`'s components.
-const GRAVITY: [(&str, &str); 3] = [("gbx", "g_{b,x}"), ("gby", "g_{b,y}"), ("gbz", "g_{b,z}")];
 
 /// The equations of `readable`, the floating-base robot `robot`'s, expanded and arranged within
 /// `limits`: `g_b`, `M` (the upper triangle, without the zeros between two legs), `h`, `g`, `τ`.
@@ -102,56 +79,7 @@ pub fn inspect_floating(readable: &FloatingReadable, robot: &Robot, limits: Limi
     }
 }
 
-/// A joint's symbol of a floating base's polynomial with the joint's own index (`Q(6 + i)` →
-/// `Q(i)`, `S7` → `S1`), as the fixed base's printer names it; other symbols as they are.
-pub(super) fn joint_symbol(s: &Sym) -> Sym {
-    let shift = |i: u16| i.saturating_sub(6);
-    let angle = |a: &AngleSum| {
-        let mut joints = a.joints().filter_map(|j| AngleSum::joint(shift(j)));
-        let first = joints.next();
-        first.map_or(*a, |first| joints.fold(first, AngleSum::union))
-    };
-    match s {
-        Sym::Q(i) => Sym::Q(shift(*i)),
-        Sym::Qd(i) => Sym::Qd(shift(*i)),
-        Sym::Qdd(i) => Sym::Qdd(shift(*i)),
-        Sym::Sin(a) => Sym::Sin(angle(a)),
-        Sym::Cos(a) => Sym::Cos(angle(a)),
-        other => other.clone(),
-    }
-}
-
 impl Printer<'_> {
-    /// One of `names`, in this printer's notation.
-    fn pick(&self, (text, latex): (&str, &str)) -> String {
-        let name = if self.latex() { latex } else { text };
-        name.to_owned()
-    }
-
-    /// The name of a symbol of the base: `g_b`'s components, the quaternion, the base's
-    /// velocities (`vx`, `ωz`) and accelerations (`vx'`, `\dot{v}_x`); `None` for a joint's.
-    pub(super) fn base_symbol(&self, s: &Sym) -> Option<String> {
-        let base = |i: &u16| BASE.get(usize::from(*i)).copied();
-        match s {
-            Sym::Param(p) => {
-                let k = BASE_GRAVITY.iter().position(|g| g == p)?;
-                Some(self.pick(GRAVITY[k]))
-            }
-            Sym::Q(i) => CONFIGURATION.get(usize::from(*i)).map(|&n| self.pick(n)),
-            Sym::Qd(i) => base(i).map(|n| self.pick(n)),
-            Sym::Qdd(i) => base(i).map(|(text, latex)| {
-                if self.latex() {
-                    // `\dot{v}_x`, `\dot{\omega}_x`.
-                    let (letter, axis) = latex.split_at(latex.len() - 2);
-                    format!("\\dot{{{letter}}}{axis}")
-                } else {
-                    format!("{text}'")
-                }
-            }),
-            _ => None,
-        }
-    }
-
     /// Coordinate `i` of `v`: `vx` … `ωz`, then `θ1`, `d2` (a prismatic joint).
     fn coordinate(&self, i: usize) -> String {
         match i.checked_sub(BASE_COORDINATES) {

@@ -8,8 +8,9 @@
 use super::arrange::Term;
 use super::number::{decimal, is_small_fraction};
 use crate::algo::JointKind;
-use crate::poly::Sym;
+use crate::poly::{AngleSum, Sym};
 use crate::symbolic::Number;
+use crate::trace::BASE_GRAVITY;
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -88,7 +89,7 @@ impl Printer<'_> {
                 return name;
             }
         }
-        let joint = self.floating.then(|| super::floating::joint_symbol(s));
+        let joint = self.floating.then(|| joint_symbol(s));
         let s = joint.as_ref().unwrap_or(s);
         let index = |i: &u16| self.indices(&[usize::from(*i)]);
         match s {
@@ -274,5 +275,83 @@ fn latex_name(name: &str) -> String {
         format!("{base}_{{{rest}}}")
     } else {
         format!("{base}\\mathit{{{rest}}}")
+    }
+}
+
+// A floating base's symbols: the base's coordinates and `g_b` by name, the joints by their own
+// index (`dynamics inspect --floating`).
+
+/// The base's coordinates of `v`, in text and in LaTeX.
+pub(super) const BASE: [(&str, &str); 6] = [
+    ("vx", "v_x"),
+    ("vy", "v_y"),
+    ("vz", "v_z"),
+    ("ωx", "\\omega_x"),
+    ("ωy", "\\omega_y"),
+    ("ωz", "\\omega_z"),
+];
+
+/// `q`'s entries `y` … `qw` as the graph's `Q(0..6)` reads them (`x` is read by nothing).
+const CONFIGURATION: [(&str, &str); 6] = [
+    ("y", "y"),
+    ("z", "z"),
+    ("qx", "q_x"),
+    ("qy", "q_y"),
+    ("qz", "q_z"),
+    ("qw", "q_w"),
+];
+
+/// `g_b`'s components.
+pub(super) const GRAVITY: [(&str, &str); 3] =
+    [("gbx", "g_{b,x}"), ("gby", "g_{b,y}"), ("gbz", "g_{b,z}")];
+
+/// A joint's symbol of a floating base's polynomial with the joint's own index (`Q(6 + i)` →
+/// `Q(i)`, `S7` → `S1`), as the fixed base's printer names it; other symbols as they are.
+fn joint_symbol(s: &Sym) -> Sym {
+    let shift = |i: u16| i.saturating_sub(6);
+    let angle = |a: &AngleSum| {
+        let mut joints = a.joints().filter_map(|j| AngleSum::joint(shift(j)));
+        let first = joints.next();
+        first.map_or(*a, |first| joints.fold(first, AngleSum::union))
+    };
+    match s {
+        Sym::Q(i) => Sym::Q(shift(*i)),
+        Sym::Qd(i) => Sym::Qd(shift(*i)),
+        Sym::Qdd(i) => Sym::Qdd(shift(*i)),
+        Sym::Sin(a) => Sym::Sin(angle(a)),
+        Sym::Cos(a) => Sym::Cos(angle(a)),
+        other => other.clone(),
+    }
+}
+
+impl Printer<'_> {
+    /// One of `names`, in this printer's notation.
+    pub(super) fn pick(&self, (text, latex): (&str, &str)) -> String {
+        let name = if self.latex() { latex } else { text };
+        name.to_owned()
+    }
+
+    /// The name of a symbol of the base: `g_b`'s components, the quaternion, the base's
+    /// velocities (`vx`, `ωz`) and accelerations (`vx'`, `\dot{v}_x`); `None` for a joint's.
+    fn base_symbol(&self, s: &Sym) -> Option<String> {
+        let base = |i: &u16| BASE.get(usize::from(*i)).copied();
+        match s {
+            Sym::Param(p) => {
+                let k = BASE_GRAVITY.iter().position(|g| g == p)?;
+                Some(self.pick(GRAVITY[k]))
+            }
+            Sym::Q(i) => CONFIGURATION.get(usize::from(*i)).map(|&n| self.pick(n)),
+            Sym::Qd(i) => base(i).map(|n| self.pick(n)),
+            Sym::Qdd(i) => base(i).map(|(text, latex)| {
+                if self.latex() {
+                    // `\dot{v}_x`, `\dot{\omega}_x`.
+                    let (letter, axis) = latex.split_at(latex.len() - 2);
+                    format!("\\dot{{{letter}}}{axis}")
+                } else {
+                    format!("{text}'")
+                }
+            }),
+            _ => None,
+        }
     }
 }
