@@ -14,7 +14,6 @@ use crate::c_support::{
     check_against_graph, compile_and_run_builds, emitted_header, families, printed, root,
     scaled_error, Reach, Robot, State,
 };
-use dynamics_codegen::emit_c::{functions, prefix};
 use dynamics_codegen::method::Method;
 use dynamics_codegen::pipeline::{self, Source};
 use serde_json::Value;
@@ -29,15 +28,7 @@ fn floating_robot(file: &str, with: &[&str]) -> Robot {
     let eq = loaded
         .floating_equations_with(families(with))
         .expect("a floating base");
-    let name = prefix(&loaded.robot.name);
-    let functions = functions(&eq, &name);
-    Robot {
-        name,
-        header,
-        eq,
-        functions,
-        params: vec![],
-    }
+    Robot::emitted(&loaded.robot.name, eq, header)
 }
 
 /// A JSON vector or matrix, rows first.

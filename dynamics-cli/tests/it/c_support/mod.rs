@@ -79,6 +79,20 @@ impl Robot {
             params,
         }
     }
+
+    /// The robot of equations `eq` named `name`, its header the command line's, without
+    /// parameters.
+    pub fn emitted(name: &str, eq: Equations, header: String) -> Robot {
+        let name = prefix(name);
+        let functions = functions(&eq, &name);
+        Robot {
+            name,
+            header,
+            eq,
+            functions,
+            params: vec![],
+        }
+    }
 }
 
 /// The robot of a description file, its header written by `dynamics emit --lang c`.
@@ -156,15 +170,7 @@ fn robot_from(file: &str, chain: Option<(&str, Option<&str>)>, with: &[&str]) ->
     let mut eq = derive(&loaded.robot);
     eq.add_families(&loaded.robot, families(with));
     simplified::add(&mut eq, &loaded.robot, loaded.simplify, file);
-    let name = prefix(&loaded.robot.name);
-    let functions = functions(&eq, &name);
-    Robot {
-        name,
-        header,
-        eq,
-        functions,
-        params: vec![],
-    }
+    Robot::emitted(&loaded.robot.name, eq, header)
 }
 
 /// 1 on a floating base, whose `q` has the base's x before the graph's coordinates, else 0.
