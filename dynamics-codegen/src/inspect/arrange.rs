@@ -20,13 +20,29 @@ pub struct Term {
 /// The readable form of node `id`: its polynomial with sines and cosines of sums folded,
 /// arranged; `None` when it does not fit the expander's limits.
 pub(super) fn terms(x: &mut Expander<'_>, id: NodeId) -> Option<Vec<Term>> {
-    Some(arrange(x.folded(id)?.into_iter().collect()))
+    Some(arrange(without_rounding_noise(x.folded(id)?)))
 }
 
 /// The readable form of node `id` as [`terms`] gives it, its common sines and cosines taken
 /// out (the kinematics).
 pub(super) fn factored_terms(x: &mut Expander<'_>, id: NodeId) -> Option<Vec<Term>> {
-    Some(arrange_factored(x.folded(id)?.into_iter().collect()))
+    Some(arrange_factored(without_rounding_noise(x.folded(id)?)))
+}
+
+/// Below this fraction of an output's largest coefficient, an inexact coefficient is what is
+/// left of float constants that cancel in exact arithmetic (`5.42101e-20 S3 C1 C2`, 2⁻⁶⁴,
+/// beside `0.00051738 S2,3 C1`): far below the six digits printed, and not a term of the model.
+const ROUNDING_NOISE: f64 = 1e-12;
+
+/// The terms of a polynomial, less those whose inexact coefficient is rounding noise
+/// ([`ROUNDING_NOISE`]). Exact coefficients are all kept, however small.
+#[doc(hidden)] // Public for the generator's tests (tests/it/unit).
+pub fn without_rounding_noise(terms: BTreeMap<Monomial, Number>) -> Vec<(Monomial, Number)> {
+    let largest = terms.values().map(|c| c.to_f64().abs()).fold(0.0, f64::max);
+    terms
+        .into_iter()
+        .filter(|(_, c)| c.is_exact() || c.to_f64().abs() > ROUNDING_NOISE * largest)
+        .collect()
 }
 
 /// Groups terms by their accelerations and velocities, then by their sines and cosines.

@@ -1,9 +1,10 @@
 //! Folding, arranging and printing of polynomials typed in [`Poly::parse`] syntax.
 
 use dynamics_codegen::algo::JointKind;
-use dynamics_codegen::inspect::arrange::{arrange, arrange_factored};
+use dynamics_codegen::inspect::arrange::{arrange, arrange_factored, without_rounding_noise};
 use dynamics_codegen::inspect::print::{Format, Printer};
 use dynamics_codegen::poly::{fold_trig, Poly};
+use dynamics_codegen::symbolic::Number;
 
 /// The readable text of a polynomial written in `Poly::parse` syntax.
 fn readable(text: &str, format: Format) -> String {
@@ -103,4 +104,31 @@ fn kinematics_take_out_common_sines_and_cosines() {
     ] {
         assert_eq!(factored(polynomial), printed, "{polynomial}");
     }
+}
+
+/// Float constants that cancel exactly leave 2⁻⁶⁴-sized coefficients (Solo 12's
+/// `5.42101e-20 S3 C1 C2` beside `0.00051738 S2,3 C1`): not printed. Small terms of the model
+/// stay, and so does every exact coefficient.
+#[test]
+fn rounding_noise_is_not_printed() {
+    let coefficients = [
+        ("S2*S3*C1", Number::Float(0.00051738)),
+        ("S3*C1*C2", Number::Float(5.42101e-20)),
+        ("C1", Number::Float(3.29799e-7)),
+        ("S1", Number::Rational(1, 1_000_000_000_000_000)),
+    ];
+    let terms = coefficients
+        .iter()
+        .map(|(monomial, coef)| {
+            let mut terms = Poly::parse(monomial).unwrap().into_terms();
+            let (monomial, _) = terms.pop_first().unwrap();
+            (monomial, *coef)
+        })
+        .collect();
+    let kept: Vec<Number> = without_rounding_noise(terms)
+        .into_iter()
+        .map(|(_, coef)| coef)
+        .collect();
+    assert_eq!(kept.len(), 3, "{kept:?}");
+    assert!(!kept.contains(&Number::Float(5.42101e-20)));
 }
