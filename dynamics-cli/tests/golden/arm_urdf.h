@@ -30,12 +30,12 @@
 /* A different header whose functions are also arm_*, included before: refused,
  * rather than one robot's functions silently standing for the other's. */
 #ifdef DYNAMICS_ROBOT_arm_H
-#if DYNAMICS_ROBOT_arm_H + 0 != 0x62766cad71ca9de4u
+#if DYNAMICS_ROBOT_arm_H + 0 != 0x9d10d6d8bfce1c58u
 #error "another header included before this one also names its functions arm_*: emit this one (robot arm) or the other with `dynamics emit --lang c --prefix NAME`"
 #endif
 #endif
 #ifndef DYNAMICS_ROBOT_arm_H
-#define DYNAMICS_ROBOT_arm_H 0x62766cad71ca9de4u
+#define DYNAMICS_ROBOT_arm_H 0x9d10d6d8bfce1c58u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>

@@ -30,12 +30,12 @@
 /* A different header whose functions are also puma560_*, included before: refused,
  * rather than one robot's functions silently standing for the other's. */
 #ifdef DYNAMICS_ROBOT_puma560_H
-#if DYNAMICS_ROBOT_puma560_H + 0 != 0x0ef3e5df4177e2e7u
+#if DYNAMICS_ROBOT_puma560_H + 0 != 0x6ea20722ffb80f93u
 #error "another header included before this one also names its functions puma560_*: emit this one (robot puma560) or the other with `dynamics emit --lang c --prefix NAME`"
 #endif
 #endif
 #ifndef DYNAMICS_ROBOT_puma560_H
-#define DYNAMICS_ROBOT_puma560_H 0x0ef3e5df4177e2e7u
+#define DYNAMICS_ROBOT_puma560_H 0x6ea20722ffb80f93u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>

@@ -36,12 +36,12 @@
 /* A different header whose functions are also two_legs_*, included before: refused,
  * rather than one robot's functions silently standing for the other's. */
 #ifdef DYNAMICS_ROBOT_two_legs_H
-#if DYNAMICS_ROBOT_two_legs_H + 0 != 0x34f56290baee9c05u
+#if DYNAMICS_ROBOT_two_legs_H + 0 != 0x5b73105c8f93cbe1u
 #error "another header included before this one also names its functions two_legs_*: emit this one (robot two_legs) or the other with `dynamics emit --lang c --prefix NAME`"
 #endif
 #endif
 #ifndef DYNAMICS_ROBOT_two_legs_H
-#define DYNAMICS_ROBOT_two_legs_H 0x34f56290baee9c05u
+#define DYNAMICS_ROBOT_two_legs_H 0x5b73105c8f93cbe1u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>
