@@ -36,12 +36,12 @@
 /* A different header whose functions are also two_legs_*, included before: refused,
  * rather than one robot's functions silently standing for the other's. */
 #ifdef DYNAMICS_ROBOT_two_legs_H
-#if DYNAMICS_ROBOT_two_legs_H + 0 != 0x34f56290baee9c05u
+#if DYNAMICS_ROBOT_two_legs_H + 0 != 0x5b73105c8f93cbe1u
 #error "another header included before this one also names its functions two_legs_*: emit this one (robot two_legs) or the other with `dynamics emit --lang c --prefix NAME`"
 #endif
 #endif
 #ifndef DYNAMICS_ROBOT_two_legs_H
-#define DYNAMICS_ROBOT_two_legs_H 0x34f56290baee9c05u
+#define DYNAMICS_ROBOT_two_legs_H 0x5b73105c8f93cbe1u
 
 #ifndef DYNAMICS_OWN_SINCOS
 #include <math.h>
@@ -111,16 +111,15 @@ static inline void dynamics_sincos(double x, double *s, double *c) {
         const double a = x - n * 0x1.921fb5444p+0;
         const double t = a - n * 0x1.68c234c4cp-39;
         const double r = t - n * 0x1.98a2e03707345p-77;
-        /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
+        /* fdlibm's k_sin.c and k_cos.c, a depth of three multiply-adds from z2. */
         const double z = t * t;
         const double z2 = z * z;
+        const double z4 = z2 * z2;
         const double sin_poly = z2 * (z2 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
                 + (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4))
             + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1);
-        const double cos_poly = z2 * (z2 * (z2 * -1.13596475577881948265e-11
-                    + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
-                + (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3))
-            + (z * 4.16666666666666019037e-2 + -0.5);
+        const double cos_poly = z4 * (z2 * -1.13596475577881948265e-11 + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
+            + (z2 * (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3) + (z * 4.16666666666666019037e-2 + -0.5));
         const double sin_r = (r * z) * sin_poly + r;
         const double cos_r = z * cos_poly + 1.0;
         /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */
@@ -158,16 +157,15 @@ DYNAMICS_SINCOS4_INLINE void dynamics_sincos4(const double x[4], double s[4], do
             const double a = xs[i] - n * 0x1.921fb5444p+0;
             const double t = a - n * 0x1.68c234c4cp-39;
             const double r = t - n * 0x1.98a2e03707345p-77;
-            /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
+            /* fdlibm's k_sin.c and k_cos.c, a depth of three multiply-adds from z2. */
             const double z = t * t;
             const double z2 = z * z;
+            const double z4 = z2 * z2;
             const double sin_poly = z2 * (z2 * (z * 1.58969099521155010221e-10 + -2.50507602534068634195e-8)
                     + (z * 2.75573137070700676789e-6 + -1.98412698298579493134e-4))
                 + (z * 8.33333333332248946124e-3 + -1.66666666666666324348e-1);
-            const double cos_poly = z2 * (z2 * (z2 * -1.13596475577881948265e-11
-                        + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
-                    + (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3))
-                + (z * 4.16666666666666019037e-2 + -0.5);
+            const double cos_poly = z4 * (z2 * -1.13596475577881948265e-11 + (z * 2.08757232129817482790e-9 + -2.75573143513906633035e-7))
+                + (z2 * (z * 2.48015872894767294178e-5 + -1.38888888888741095749e-3) + (z * 4.16666666666666019037e-2 + -0.5));
             const double sin_r = (r * z) * sin_poly + r;
             const double cos_r = z * cos_poly + 1.0;
             /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */

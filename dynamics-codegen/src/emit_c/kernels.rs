@@ -108,16 +108,15 @@ pub(super) fn lane_f64(x: &str, s: &str, c: &str) -> String {
     const double a = {x} - n * {p1};
     const double t = a - n * {p2};
     const double r = t - n * {p3};
-    /* fdlibm's k_sin.c and k_cos.c, a depth of four multiply-adds from z. */
+    /* fdlibm's k_sin.c and k_cos.c, a depth of three multiply-adds from z2. */
     const double z = t * t;
     const double z2 = z * z;
+    const double z4 = z2 * z2;
     const double sin_poly = z2 * (z2 * (z * {s6} + {s5})
             + (z * {s4} + {s3}))
         + (z * {s2} + {s1});
-    const double cos_poly = z2 * (z2 * (z2 * {c6}
-                + (z * {c5} + {c4}))
-            + (z * {c3} + {c2}))
-        + (z * {c1} + -0.5);
+    const double cos_poly = z4 * (z2 * {c6} + (z * {c5} + {c4}))
+        + (z2 * (z * {c3} + {c2}) + (z * {c1} + -0.5));
     const double sin_r = (r * z) * sin_poly + r;
     const double cos_r = z * cos_poly + 1.0;
     /* The quadrant n mod 4 from d = n/4 - round(n/4), exactly 0, 1/4, +-1/2 or -1/4. */

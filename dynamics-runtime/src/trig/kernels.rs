@@ -29,8 +29,9 @@ macro_rules! reduce_and_evaluate_f64 {
 
         // fdlibm's polynomials, `z` squared from `s`, a step before `r` (it only feeds terms of
         // order r³ and r², which |r·n·P3| < 4e-19 changes by under 0.003 ulp of the result),
-        // evaluated as (p1 + z·p2) + z²·((p3 + z·p4) + z²·(p5 + z·p6)): a depth of four
-        // multiply-adds from `z` as in Estrin's form, without its z⁴, and one more for the result.
+        // evaluated as (p1 + z·p2) + z²·((p3 + z·p4) + z²·(p5 + z·p6)): a depth of two
+        // multiply-adds from `z²` as in Estrin's form, without its z⁴, and one more for the
+        // result.
         let z = mul(s, s);
         let z2 = mul(z, z);
         let pair = |p: f64, q: f64| fma(z, k(q), k(p));
@@ -40,11 +41,15 @@ macro_rules! reduce_and_evaluate_f64 {
             pair(S1_F64, S2_F64),
         );
         // cos r = 1 + z·(−1/2 + C1·z + … + C6·z⁶): one rounding at the result's scale, where
-        // 1 − z/2 rounded apart would be a second.
+        // 1 − z/2 rounded apart would be a second. Its seven terms in Estrin's form, with z⁴
+        // (one multiplication more): as deep as the sine's, where nesting in z² took one
+        // multiply-add more, which the generated code, waiting for its sines and cosines,
+        // waited for too (`docs/performance.md`, 2026-11-30).
+        let z4 = mul(z2, z2);
         let cos_poly = fma(
-            z2,
-            fma(z2, fma(z2, k(C6_F64), pair(C4_F64, C5_F64)), pair(C2_F64, C3_F64)),
-            pair(-0.5, C1_F64),
+            z4,
+            fma(z2, k(C6_F64), pair(C4_F64, C5_F64)),
+            fma(z2, pair(C2_F64, C3_F64), pair(-0.5, C1_F64)),
         );
         let sin_r = fma(mul(r, z), sin_poly, r);
         let cos_r = fma(z, cos_poly, k(1.0));
