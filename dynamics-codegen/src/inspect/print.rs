@@ -11,6 +11,7 @@ use crate::algo::JointKind;
 use crate::poly::{AngleSum, Sym};
 use crate::symbolic::Number;
 use crate::trace::BASE_GRAVITY;
+use std::fmt::Write;
 
 /// Output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,13 +50,18 @@ impl Printer<'_> {
     /// Joint indices (0-based) as the book writes them: `12`, or `1,10` past nine joints.
     pub(super) fn indices(&self, joints: &[usize]) -> String {
         let sep = if self.kinds.len() > 9 { "," } else { "" };
-        let s: Vec<String> = joints.iter().map(|j| (j + 1).to_string()).collect();
-        let s = s.join(sep);
-        if self.latex() {
-            format!("_{{{s}}}")
-        } else {
-            s
+        // Written into one string: a string per index, joined, was most of a symbol's cost.
+        let mut s = String::from(if self.latex() { "_{" } else { "" });
+        for (k, j) in joints.iter().enumerate() {
+            if k > 0 {
+                s.push_str(sep);
+            }
+            let _ = write!(s, "{}", j + 1);
         }
+        if self.latex() {
+            s.push('}');
+        }
+        s
     }
 
     /// The symbol of joint `i`'s variable: `d` for a prismatic joint, else `θ`.

@@ -141,13 +141,13 @@ pub fn find_fold(terms: &BTreeMap<Monomial, Number>) -> Option<Fold> {
 
 /// The first fold that term `c · m` starts, its pairs of factors in order.
 fn fold_of(terms: &BTreeMap<Monomial, Number>, m: &Monomial, c: Number) -> Option<Fold> {
-    let trigs: Vec<(bool, AngleSum)> = m
-        .factors()
-        .iter()
-        .filter_map(|(s, _)| s.as_trig())
-        .collect();
-    for (x, &a) in trigs.iter().enumerate() {
-        for &b in &trigs[x + 1..] {
+    // The pairs of sines and cosines read off the factors in place: collected into a vector,
+    // they were an allocation for every term searched.
+    let factors = m.factors();
+    for (x, (s, _)) in factors.iter().enumerate() {
+        let Some(a) = s.as_trig() else { continue };
+        for (t, _) in &factors[x + 1..] {
+            let Some(b) = t.as_trig() else { continue };
             if let Some(fold) = fold_pair(terms, m, c, a, b) {
                 return Some(fold);
             }

@@ -14,9 +14,21 @@ impl Graph {
 
     /// Evaluates the first `end` nodes in order (the values of `outputs` need those before the
     /// last of them), reading inputs from `input`.
-    pub fn eval_below(&self, end: usize, mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
+    pub fn eval_below(&self, end: usize, input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        self.eval_marked(&vec![true; end], input)
+    }
+
+    /// Evaluates the nodes marked in `live` (as [`Graph::live`] marks them: every operand of
+    /// a marked node marked), in order; the others are left 0 (nothing marked reads them).
+    /// Evaluating one family's outputs many times, the rest of the graph is skipped.
+    pub fn eval_marked(&self, live: &[bool], mut input: impl FnMut(Var) -> f64) -> Vec<f64> {
+        let end = live.len().min(self.nodes.len());
         let mut values: Vec<f64> = Vec::with_capacity(end);
-        for node in &self.nodes[..end] {
+        for (node, &live) in self.nodes[..end].iter().zip(live) {
+            if !live {
+                values.push(0.0);
+                continue;
+            }
             let v = match *node {
                 Node::Const(c) => c.to_f64(),
                 Node::Var(v) => input(v),

@@ -64,13 +64,11 @@ fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64
     let mut points = Points::new(0xc0ef_f1c1);
     let mut uniform = move || (points.bits() >> 11) as f64 / (1_u64 << 53) as f64 * 2.0 - 1.0;
     let mut rows = Vec::with_capacity(count * n);
-    // The columns read the nodes before their last, not the rest of the graph.
-    let end = columns
-        .iter()
-        .flatten()
-        .map(|c| c.index() + 1)
-        .max()
-        .unwrap_or(0);
+    // The columns read some of the nodes before their last, not the rest of the graph (the
+    // other families' nodes between them: the Panda's samples took 3.5 % of its derive).
+    let outputs: Vec<NodeId> = columns.iter().flatten().copied().collect();
+    let mut live = graph.live(&outputs);
+    live.truncate(outputs.iter().map(|c| c.index() + 1).max().unwrap_or(0));
     for _ in 0..count {
         let angles: Vec<f64> = (0..n).map(|_| PI * uniform()).collect();
         let others: Vec<[f64; 3]> = (0..n).map(|_| [uniform(), uniform(), uniform()]).collect();
@@ -78,7 +76,7 @@ fn samples(graph: &Graph, columns: &[Vec<NodeId>], pivots: usize) -> Vec<Vec<f64
         // graph, read by no column: zero.
         let angle = |i: u16| angles.get(usize::from(i)).copied().unwrap_or(0.0);
         let other = |i: u16, k: usize| others.get(usize::from(i)).map_or(0.0, |o| o[k]);
-        let values = graph.eval_below(end, |v| match v {
+        let values = graph.eval_marked(&live, |v| match v {
             Var::SinQ(i) => angle(i).sin(),
             Var::CosQ(i) => angle(i).cos(),
             Var::Q(i) => other(i, 0),
