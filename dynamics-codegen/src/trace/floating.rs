@@ -14,13 +14,15 @@
 //! joint i's angle `Q(6 + i)`. The chain is traced as given, not regrouped: a floating base's
 //! rows see every link parameter, so no parameter may be moved onto another.
 
+use super::cost::operations;
 use super::expr::Expr;
+use super::forward::ForwardEquations;
 use super::tracer::{joint_index, Tracer};
 use super::{Equations, KinematicEquations};
 use crate::algo::{self, FloatingBase, Inertial, Mat3, RobotScalars, V3};
 use crate::method::FamilySet;
 use crate::model::{FreeFlyer, JointKind, Robot};
-use crate::symbolic::{Graph, Number, Var};
+use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
 /// The coordinates of the base: the velocity's first six.
@@ -64,6 +66,7 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
         coordinates(&tracer, nv, Var::Qd),
         coordinates(&tracer, nv, Var::Qdd),
     );
+    let readable = gravity == Gravity::BaseLeaves;
     let (quaternion, gravity) = match gravity {
         Gravity::World => (base_quaternion(&tracer), world_gravity(&tracer, flyer)),
         Gravity::BaseLeaves => {
@@ -72,6 +75,7 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
             ([zero, zero, zero, one], V3::new(leaf(0), leaf(1), leaf(2)))
         }
     };
+    let gravity_vector = gravity;
     let zeros = vec![zero; nv];
     let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
     let mut mass = algo::floating_crba(&chain, &base);
@@ -104,7 +108,25 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     let angle_offsets = tracer.angle_offsets();
     // The base is the root of the tree: factored from the tips, each branch's joints reach
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
-    let forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
+    let mut forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
+    if !readable {
+        let armature = robot
+            .joints
+            .iter()
+            .map(|j| tracer.value(&j.link.actuator_inertia));
+        let armature: Vec<Expr> = armature.collect();
+        let rhs = forces_less_friction(&graph, &friction);
+        let aba = algo::floating_aba(
+            &chain,
+            &base,
+            quaternion,
+            &v,
+            &rhs,
+            &armature,
+            gravity_vector,
+        );
+        keep_the_cheaper(&graph, &mut forward, &aba);
+    }
     Equations {
         graph: graph.into_inner(),
         dof: nv,
@@ -186,4 +208,36 @@ pub(super) fn base_quaternion<'g>(tracer: &Tracer<'g>) -> [Expr<'g>; 4] {
 pub(super) fn world_gravity<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> V3<Expr<'g>> {
     let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
     V3::new(g[0], g[1], g[2])
+}
+
+/// `τ − τ_f`, the forward dynamics' generalized forces (leaves [`Var::Tau`]) less friction.
+fn forces_less_friction<'g>(graph: &'g RefCell<Graph>, friction: &[NodeId]) -> Vec<Expr<'g>> {
+    let tau = |i: usize| {
+        let id = graph
+            .borrow_mut()
+            .var(Var::Tau(u16::try_from(i).unwrap_or(u16::MAX)));
+        Expr::new(graph, id)
+    };
+    let f = |i: usize| Expr::new(graph, friction[i]);
+    (0..friction.len()).map(|i| tau(i) - f(i)).collect()
+}
+
+/// The forward dynamics by the articulated-body algorithm `aba` in place of M, h and the
+/// LDLᵀ where it takes fewer operations, as `forward_dynamics` returns it (its pivots with
+/// it; the factors and the `q̈` through them stay, for M⁻¹, the contacts and the
+/// derivatives).
+fn keep_the_cheaper(
+    graph: &RefCell<Graph>,
+    forward: &mut ForwardEquations,
+    aba: &algo::Articulated<Expr>,
+) {
+    let qdd: Vec<NodeId> = aba.acceleration.iter().map(|e| e.id()).collect();
+    let pivots: Vec<NodeId> = aba.pivots.iter().map(|e| e.id()).collect();
+    let cost = |x: &[NodeId], p: &[NodeId]| {
+        let outputs: Vec<NodeId> = x.iter().chain(p).copied().collect();
+        operations(&graph.borrow(), &outputs)
+    };
+    if cost(&qdd, &pivots) < cost(&forward.returned.0, &forward.returned.1) {
+        forward.returned = (qdd, pivots);
+    }
 }
