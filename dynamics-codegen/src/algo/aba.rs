@@ -216,12 +216,117 @@ fn add<S: Scalar>(x: Spatial<S>, y: Spatial<S>) -> Spatial<S> {
     (x.0.add(y.0), x.1.add(y.1))
 }
 
-/// What the inward pass keeps of joint i for the outward one.
+/// What the passes keep of joint i: its velocity-product acceleration `c`, then from the
+/// inward pass `U` (a column of `I^A`), `u` and `1 / D`.
 struct Kept<S> {
     c: Spatial<S>,
     u_column: [S; 6],
     u: S,
     inverse_pivot: S,
+}
+
+/// The first pass: per joint its velocity, its `c` and its body's inertia and bias force.
+struct Outward<S> {
+    velocity: Vec<Spatial<S>>,
+    kept: Vec<Kept<S>>,
+    inertia: Vec<Inertia<S>>,
+    bias: Vec<Spatial<S>>,
+}
+
+/// The base's velocity `(v, ω)` in frame 0's axes at its origin.
+fn at_frame0<S: Scalar>(base: &FloatingBase<S>, (l, w): Spatial<S>) -> Spatial<S> {
+    let r0 = &base.rotation;
+    let l = l.add(w.cross(base.origin));
+    (r0.tr_mul_vec(l), r0.tr_mul_vec(w))
+}
+
+/// Pass 1: `v_i = X_i v_a + S_i q̇_i`, `c_i = v_i ×ₘ S_i q̇_i`, `p_i = v_i ×* I_i v_i`.
+fn outward<S: Scalar>(chain: &Chain<S>, base: &FloatingBase<S>, v: &[S]) -> Outward<S> {
+    let n = chain.joints.len();
+    let zero = base.body.mass.zero();
+    let base_velocity = spatial(std::array::from_fn(|k| v[k]));
+    let mut pass = Outward {
+        velocity: Vec::with_capacity(n),
+        kept: Vec::with_capacity(n),
+        inertia: Vec::with_capacity(n),
+        bias: Vec::with_capacity(n),
+    };
+    for (i, joint) in chain.joints.iter().enumerate() {
+        let parent = joint
+            .parent
+            .map_or_else(|| at_frame0(base, base_velocity), |p| pass.velocity[p]);
+        let (mut l, mut w) = motion_to_child(joint, parent);
+        let qd = v[6 + i];
+        let c = match joint.kind {
+            JointKind::Revolute => {
+                w.z = w.z + qd;
+                (l.cross_z(qd), w.cross_z(qd))
+            }
+            JointKind::Prismatic => {
+                l.z = l.z + qd;
+                (w.cross_z(qd), V3::zero(zero))
+            }
+        };
+        let body = Inertia::of_body(&joint.body);
+        pass.bias.push(cross_force((l, w), body.mul((l, w))));
+        pass.inertia.push(body);
+        pass.velocity.push((l, w));
+        pass.kept.push(Kept {
+            c,
+            u_column: [zero; 6],
+            u: zero,
+            inverse_pivot: zero,
+        });
+    }
+    pass
+}
+
+/// Pass 2, inward: each joint's `U`, `D`, `u`, its articulated inertia and bias carried to
+/// its antecedent, or to the base; returns the base's articulated inertia and bias, and the
+/// joints' `D`.
+fn inward<S: Scalar>(
+    chain: &Chain<S>,
+    base: &FloatingBase<S>,
+    pass: &mut Outward<S>,
+    (tau, armature, base_velocity): (&[S], &[S], Spatial<S>),
+) -> (Inertia<S>, Spatial<S>, Vec<S>) {
+    let n = chain.joints.len();
+    let base_body = Inertia::of_body(&base.body);
+    let mut base_inertia = base_body;
+    let mut base_bias = cross_force(base_velocity, base_body.mul(base_velocity));
+    let mut pivots = Vec::with_capacity(n);
+    for i in (0..n).rev() {
+        let joint = &chain.joints[i];
+        let k = axis_index(joint.kind);
+        let column: [S; 6] = std::array::from_fn(|j| pass.inertia[i].at(j, k));
+        let d = column[k] + armature[i];
+        let r = d.recip();
+        let u = tau[6 + i] - entries(pass.bias[i])[k];
+        let w = column.map(|x| x * r);
+        let articulated = pass.inertia[i].less_outer(&w, &column, k, armature[i].is_zero());
+        let ic = articulated.mul(pass.kept[i].c);
+        let force = add(add(pass.bias[i], ic), spatial(w.map(|x| x * u)));
+        let carried = inertia_to_parent(joint, &articulated);
+        let (f, nn) = joint.wrench_to_parent(force.0, force.1);
+        match joint.parent {
+            Some(p) => {
+                pass.inertia[p] = pass.inertia[p].add(&carried);
+                pass.bias[p] = add(pass.bias[p], (f, nn));
+            }
+            None => {
+                let r0 = base.rotation;
+                let turned =
+                    carried.turned(|x| Mat3::symmetric(x).congruence(&r0), |x| r0.mul_vec(x));
+                base_inertia = base_inertia.add(&turned.moved_by(base.origin));
+                base_bias = add(base_bias, base.wrench_to_base(f, nn));
+            }
+        }
+        pivots.push(d);
+        let kept = &mut pass.kept[i];
+        (kept.u_column, kept.u, kept.inverse_pivot) = (column, u, r);
+    }
+    pivots.reverse();
+    (base_inertia, base_bias, pivots)
 }
 
 /// The forward dynamics of `chain` on the free-flying `base` by the articulated-body
@@ -239,84 +344,10 @@ pub fn floating_aba<S: Scalar>(
 ) -> Articulated<S> {
     let n = chain.joints.len();
     let zero = base.body.mass.zero();
-    let vector = |x: &[S], k: usize| V3::new(x[k], x[k + 1], x[k + 2]);
-    let base_velocity = (vector(v, 0), vector(v, 3));
-    let frame0 = |(l, w): Spatial<S>| {
-        let r0 = &base.rotation;
-        let l = l.add(w.cross(base.origin));
-        (r0.tr_mul_vec(l), r0.tr_mul_vec(w))
-    };
-    // 1. Velocities, velocity-product accelerations and bias forces, outward.
-    let mut velocity: Vec<Spatial<S>> = Vec::with_capacity(n);
-    let mut kept: Vec<Kept<S>> = Vec::with_capacity(n);
-    let mut inertia: Vec<Inertia<S>> = Vec::with_capacity(n);
-    let mut bias: Vec<Spatial<S>> = Vec::with_capacity(n);
-    for (i, joint) in chain.joints.iter().enumerate() {
-        let parent = joint
-            .parent
-            .map_or_else(|| frame0(base_velocity), |p| velocity[p]);
-        let (mut l, mut w) = motion_to_child(joint, parent);
-        let qd = v[6 + i];
-        let c = match joint.kind {
-            JointKind::Revolute => {
-                w.z = w.z + qd;
-                (l.cross_z(qd), w.cross_z(qd))
-            }
-            JointKind::Prismatic => {
-                l.z = l.z + qd;
-                (w.cross_z(qd), V3::zero(zero))
-            }
-        };
-        let body = Inertia::of_body(&joint.body);
-        bias.push(cross_force((l, w), body.mul((l, w))));
-        inertia.push(body);
-        velocity.push((l, w));
-        kept.push(Kept {
-            c,
-            u_column: [zero; 6],
-            u: zero,
-            inverse_pivot: zero,
-        });
-    }
-    // 2. Articulated inertias and biases, inward.
-    let base_body = Inertia::of_body(&base.body);
-    let mut base_inertia = base_body;
-    let mut base_bias = cross_force(base_velocity, base_body.mul(base_velocity));
-    let mut pivots = vec![zero; n];
-    for i in (0..n).rev() {
-        let joint = &chain.joints[i];
-        let k = axis_index(joint.kind);
-        let column: [S; 6] = std::array::from_fn(|j| inertia[i].at(j, k));
-        let d = column[k] + armature[i];
-        let r = d.recip();
-        let u = tau[6 + i] - entries(bias[i])[k];
-        let w = column.map(|x| x * r);
-        let articulated = inertia[i].less_outer(&w, &column, k, armature[i].is_zero());
-        let ic = articulated.mul(kept[i].c);
-        let force = add(add(bias[i], ic), spatial(w.map(|x| x * u)));
-        let carried = inertia_to_parent(joint, &articulated);
-        let (f, nn) = joint.wrench_to_parent(force.0, force.1);
-        match joint.parent {
-            Some(p) => {
-                inertia[p] = inertia[p].add(&carried);
-                bias[p] = add(bias[p], (f, nn));
-            }
-            None => {
-                let r0 = base.rotation;
-                let turned =
-                    carried.turned(|x| Mat3::symmetric(x).congruence(&r0), |x| r0.mul_vec(x));
-                base_inertia = base_inertia.add(&turned.moved_by(base.origin));
-                base_bias = add(base_bias, base.wrench_to_base(f, nn));
-            }
-        }
-        pivots[i] = d;
-        kept[i] = Kept {
-            c: kept[i].c,
-            u_column: column,
-            u,
-            inverse_pivot: r,
-        };
-    }
+    let mut pass = outward(chain, base, v);
+    let base_velocity = spatial(std::array::from_fn(|k| v[k]));
+    let (base_inertia, base_bias, mut pivots) =
+        inward(chain, base, &mut pass, (tau, armature, base_velocity));
     // 3. The base's acceleration (less gravity), then the joints', outward.
     let matrix: Vec<Vec<S>> = (0..6)
         .map(|i| (0..6).map(|j| base_inertia.at(i, j)).collect())
@@ -330,12 +361,13 @@ pub fn floating_aba<S: Scalar>(
     for (i, joint) in chain.joints.iter().enumerate() {
         let parent = joint
             .parent
-            .map_or_else(|| frame0(base_acceleration), |p| acceleration[p]);
-        let a = add(motion_to_child(joint, parent), kept[i].c);
-        let k = axis_index(joint.kind);
+            .map_or_else(|| at_frame0(base, base_acceleration), |p| acceleration[p]);
+        let kept = &pass.kept[i];
+        let a = add(motion_to_child(joint, parent), kept.c);
         let mut x = entries(a);
-        let projected = (0..6).fold(zero, |acc, j| acc + kept[i].u_column[j] * x[j]);
-        let qdd_i = (kept[i].u - projected) * kept[i].inverse_pivot;
+        let projected = (0..6).fold(zero, |acc, j| acc + kept.u_column[j] * x[j]);
+        let qdd_i = (kept.u - projected) * kept.inverse_pivot;
+        let k = axis_index(joint.kind);
         x[k] = x[k] + qdd_i;
         acceleration.push(spatial(x));
         qdd.push(qdd_i);

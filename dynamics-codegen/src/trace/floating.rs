@@ -75,7 +75,6 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
             ([zero, zero, zero, one], V3::new(leaf(0), leaf(1), leaf(2)))
         }
     };
-    let gravity_vector = gravity;
     let zeros = vec![zero; nv];
     let ids = |x: Vec<Expr>| x.into_iter().map(Expr::id).collect::<Vec<_>>();
     let mut mass = algo::floating_crba(&chain, &base);
@@ -84,23 +83,10 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     ));
     let mut tau = algo::floating_rnea(&chain, &base, quaternion, &v, &a, gravity);
     let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
-    // The joints' own terms, on their rows: actuator inertia (Pinocchio's armature) on M's
-    // diagonal and in τ, friction in τ and the forward dynamics' right-hand side. Zero for a
-    // joint without them, which folds: such a robot keeps every node it had.
-    let friction = super::friction::friction_torques(&tracer, robot, &v[BASE_COORDINATES..], zero);
-    for (i, joint) in robot.joints.iter().enumerate() {
-        let k = BASE_COORDINATES + i;
-        let armature = tracer.value(&joint.link.actuator_inertia);
-        mass[k][k] = mass[k][k] + armature;
-        tau[k] = tau[k] + armature * a[k] + Expr::new(&graph, friction[i]);
-    }
+    let friction = joint_terms(&tracer, robot, (&graph, &v, &a), &mut mass, &mut tau);
     let mass: Vec<_> = mass.into_iter().map(ids).collect();
     let tau = ids(tau);
     let nothing = zero.id();
-    let friction: Vec<_> = [nothing; BASE_COORDINATES]
-        .into_iter()
-        .chain(friction)
-        .collect();
     let kinds = [JointKind::Prismatic; BASE_COORDINATES]
         .into_iter()
         .chain(robot.joints.iter().map(|j| j.kind))
@@ -110,20 +96,14 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
     let mut forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
     if !readable {
-        let armature = robot
-            .joints
-            .iter()
-            .map(|j| tracer.value(&j.link.actuator_inertia));
-        let armature: Vec<Expr> = armature.collect();
-        let rhs = forces_less_friction(&graph, &friction);
-        let aba = algo::floating_aba(
-            &chain,
-            &base,
-            quaternion,
-            &v,
-            &rhs,
-            &armature,
-            gravity_vector,
+        let tree = (&chain, &base);
+        let aba = articulated(
+            &tracer,
+            robot,
+            flyer,
+            tree,
+            (quaternion, &v),
+            (&graph, &friction),
         );
         keep_the_cheaper(&graph, &mut forward, &aba);
     }
@@ -208,6 +188,51 @@ pub(super) fn base_quaternion<'g>(tracer: &Tracer<'g>) -> [Expr<'g>; 4] {
 pub(super) fn world_gravity<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> V3<Expr<'g>> {
     let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
     V3::new(g[0], g[1], g[2])
+}
+
+/// The joints' own terms, on their rows: actuator inertia (Pinocchio's armature) on `mass`'s
+/// diagonal and in `tau`, friction in `tau`; returns the friction torques, the base's six rows
+/// zero, for the forward dynamics' right-hand side. Zero for a joint without them, which
+/// folds: such a robot keeps every node it had.
+fn joint_terms<'g>(
+    tracer: &Tracer<'g>,
+    robot: &Robot,
+    (graph, v, a): (&'g RefCell<Graph>, &[Expr<'g>], &[Expr<'g>]),
+    mass: &mut [Vec<Expr<'g>>],
+    tau: &mut [Expr<'g>],
+) -> Vec<NodeId> {
+    let zero = tracer.num(Number::ZERO);
+    let friction = super::friction::friction_torques(tracer, robot, &v[BASE_COORDINATES..], zero);
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let k = BASE_COORDINATES + i;
+        let armature = tracer.value(&joint.link.actuator_inertia);
+        mass[k][k] = mass[k][k] + armature;
+        tau[k] = tau[k] + armature * a[k] + Expr::new(graph, friction[i]);
+    }
+    [zero.id(); BASE_COORDINATES]
+        .into_iter()
+        .chain(friction)
+        .collect()
+}
+
+/// The forward dynamics by the articulated-body algorithm ([`algo::floating_aba`]), for
+/// `τ − τ_f` (leaves [`Var::Tau`] of `graph` less `friction`), with the joints' armature.
+fn articulated<'g>(
+    tracer: &Tracer<'g>,
+    robot: &Robot,
+    flyer: &FreeFlyer,
+    (chain, base): (&algo::Chain<Expr<'g>>, &FloatingBase<Expr<'g>>),
+    (quaternion, v): ([Expr<'g>; 4], &[Expr<'g>]),
+    (graph, friction): (&'g RefCell<Graph>, &[NodeId]),
+) -> algo::Articulated<Expr<'g>> {
+    let armature = robot
+        .joints
+        .iter()
+        .map(|j| tracer.value(&j.link.actuator_inertia));
+    let armature: Vec<Expr> = armature.collect();
+    let rhs = forces_less_friction(graph, friction);
+    let gravity = world_gravity(tracer, flyer);
+    algo::floating_aba(chain, base, quaternion, v, &rhs, &armature, gravity)
 }
 
 /// `τ − τ_f`, the forward dynamics' generalized forces (leaves [`Var::Tau`]) less friction.
