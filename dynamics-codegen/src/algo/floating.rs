@@ -58,7 +58,7 @@ impl<S: Scalar> FloatingBase<S> {
     }
 
     /// A wrench at frame 0 in its axes, about the base origin in base axes.
-    fn wrench_to_base(&self, f: V3<S>, n: V3<S>) -> (V3<S>, V3<S>) {
+    pub(super) fn wrench_to_base(&self, f: V3<S>, n: V3<S>) -> (V3<S>, V3<S>) {
         let f = self.rotation.mul_vec(f);
         let n = self.rotation.mul_vec(n).add(self.origin.cross(f));
         (f, n)

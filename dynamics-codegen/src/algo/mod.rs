@@ -5,6 +5,7 @@
 //! All of them work on a [`Chain`]: the robot re-expressed with one frame per joint, on the
 //! joint's axis (the modified D-H form), which both D-H conventions convert to exactly.
 
+mod aba;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod body;
 mod chain;
@@ -25,6 +26,7 @@ mod runs;
 mod vector;
 
 pub use crate::model::JointKind;
+pub use aba::{floating_aba, Articulated};
 pub use body::Body;
 pub use chain::{Chain, ChainJoint, DhRow, Inertial, Pre};
 pub use coriolis::coriolis_matrix;

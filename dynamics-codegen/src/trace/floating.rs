@@ -14,13 +14,15 @@
 //! joint i's angle `Q(6 + i)`. The chain is traced as given, not regrouped: a floating base's
 //! rows see every link parameter, so no parameter may be moved onto another.
 
+use super::cost::operations;
 use super::expr::Expr;
+use super::forward::ForwardEquations;
 use super::tracer::{joint_index, Tracer};
 use super::{Equations, KinematicEquations};
 use crate::algo::{self, FloatingBase, Inertial, Mat3, RobotScalars, V3};
 use crate::method::FamilySet;
 use crate::model::{FreeFlyer, JointKind, Robot};
-use crate::symbolic::{Graph, Number, Var};
+use crate::symbolic::{Graph, NodeId, Number, Var};
 use std::cell::RefCell;
 
 /// The coordinates of the base: the velocity's first six.
@@ -64,6 +66,7 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
         coordinates(&tracer, nv, Var::Qd),
         coordinates(&tracer, nv, Var::Qdd),
     );
+    let readable = gravity == Gravity::BaseLeaves;
     let (quaternion, gravity) = match gravity {
         Gravity::World => (base_quaternion(&tracer), world_gravity(&tracer, flyer)),
         Gravity::BaseLeaves => {
@@ -80,23 +83,10 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     ));
     let mut tau = algo::floating_rnea(&chain, &base, quaternion, &v, &a, gravity);
     let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
-    // The joints' own terms, on their rows: actuator inertia (Pinocchio's armature) on M's
-    // diagonal and in τ, friction in τ and the forward dynamics' right-hand side. Zero for a
-    // joint without them, which folds: such a robot keeps every node it had.
-    let friction = super::friction::friction_torques(&tracer, robot, &v[BASE_COORDINATES..], zero);
-    for (i, joint) in robot.joints.iter().enumerate() {
-        let k = BASE_COORDINATES + i;
-        let armature = tracer.value(&joint.link.actuator_inertia);
-        mass[k][k] = mass[k][k] + armature;
-        tau[k] = tau[k] + armature * a[k] + Expr::new(&graph, friction[i]);
-    }
+    let friction = joint_terms(&tracer, robot, (&graph, &v, &a), &mut mass, &mut tau);
     let mass: Vec<_> = mass.into_iter().map(ids).collect();
     let tau = ids(tau);
     let nothing = zero.id();
-    let friction: Vec<_> = [nothing; BASE_COORDINATES]
-        .into_iter()
-        .chain(friction)
-        .collect();
     let kinds = [JointKind::Prismatic; BASE_COORDINATES]
         .into_iter()
         .chain(robot.joints.iter().map(|j| j.kind))
@@ -104,7 +94,19 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     let angle_offsets = tracer.angle_offsets();
     // The base is the root of the tree: factored from the tips, each branch's joints reach
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
-    let forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
+    let mut forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
+    if !readable {
+        let tree = (&chain, &base);
+        let aba = articulated(
+            &tracer,
+            robot,
+            flyer,
+            tree,
+            (quaternion, &v),
+            (&graph, &friction),
+        );
+        keep_the_cheaper(&graph, &mut forward, &aba);
+    }
     Equations {
         graph: graph.into_inner(),
         dof: nv,
@@ -186,4 +188,81 @@ pub(super) fn base_quaternion<'g>(tracer: &Tracer<'g>) -> [Expr<'g>; 4] {
 pub(super) fn world_gravity<'g>(tracer: &Tracer<'g>, flyer: &FreeFlyer) -> V3<Expr<'g>> {
     let g = flyer.gravity.each_ref().map(|x| tracer.value(x));
     V3::new(g[0], g[1], g[2])
+}
+
+/// The joints' own terms, on their rows: actuator inertia (Pinocchio's armature) on `mass`'s
+/// diagonal and in `tau`, friction in `tau`; returns the friction torques, the base's six rows
+/// zero, for the forward dynamics' right-hand side. Zero for a joint without them, which
+/// folds: such a robot keeps every node it had.
+fn joint_terms<'g>(
+    tracer: &Tracer<'g>,
+    robot: &Robot,
+    (graph, v, a): (&'g RefCell<Graph>, &[Expr<'g>], &[Expr<'g>]),
+    mass: &mut [Vec<Expr<'g>>],
+    tau: &mut [Expr<'g>],
+) -> Vec<NodeId> {
+    let zero = tracer.num(Number::ZERO);
+    let friction = super::friction::friction_torques(tracer, robot, &v[BASE_COORDINATES..], zero);
+    for (i, joint) in robot.joints.iter().enumerate() {
+        let k = BASE_COORDINATES + i;
+        let armature = tracer.value(&joint.link.actuator_inertia);
+        mass[k][k] = mass[k][k] + armature;
+        tau[k] = tau[k] + armature * a[k] + Expr::new(graph, friction[i]);
+    }
+    [zero.id(); BASE_COORDINATES]
+        .into_iter()
+        .chain(friction)
+        .collect()
+}
+
+/// The forward dynamics by the articulated-body algorithm ([`algo::floating_aba`]), for
+/// `τ − τ_f` (leaves [`Var::Tau`] of `graph` less `friction`), with the joints' armature.
+fn articulated<'g>(
+    tracer: &Tracer<'g>,
+    robot: &Robot,
+    flyer: &FreeFlyer,
+    (chain, base): (&algo::Chain<Expr<'g>>, &FloatingBase<Expr<'g>>),
+    (quaternion, v): ([Expr<'g>; 4], &[Expr<'g>]),
+    (graph, friction): (&'g RefCell<Graph>, &[NodeId]),
+) -> algo::Articulated<Expr<'g>> {
+    let armature = robot
+        .joints
+        .iter()
+        .map(|j| tracer.value(&j.link.actuator_inertia));
+    let armature: Vec<Expr> = armature.collect();
+    let rhs = forces_less_friction(graph, friction);
+    let gravity = world_gravity(tracer, flyer);
+    algo::floating_aba(chain, base, quaternion, v, &rhs, &armature, gravity)
+}
+
+/// `τ − τ_f`, the forward dynamics' generalized forces (leaves [`Var::Tau`]) less friction.
+fn forces_less_friction<'g>(graph: &'g RefCell<Graph>, friction: &[NodeId]) -> Vec<Expr<'g>> {
+    let tau = |i: usize| {
+        let id = graph
+            .borrow_mut()
+            .var(Var::Tau(u16::try_from(i).unwrap_or(u16::MAX)));
+        Expr::new(graph, id)
+    };
+    let f = |i: usize| Expr::new(graph, friction[i]);
+    (0..friction.len()).map(|i| tau(i) - f(i)).collect()
+}
+
+/// The forward dynamics by the articulated-body algorithm `aba` in place of M, h and the
+/// LDLᵀ where it takes fewer operations, as `forward_dynamics` returns it (its pivots with
+/// it; the factors and the `q̈` through them stay, for M⁻¹, the contacts and the
+/// derivatives).
+fn keep_the_cheaper(
+    graph: &RefCell<Graph>,
+    forward: &mut ForwardEquations,
+    aba: &algo::Articulated<Expr>,
+) {
+    let qdd: Vec<NodeId> = aba.acceleration.iter().map(|e| e.id()).collect();
+    let pivots: Vec<NodeId> = aba.pivots.iter().map(|e| e.id()).collect();
+    let cost = |x: &[NodeId], p: &[NodeId]| {
+        let outputs: Vec<NodeId> = x.iter().chain(p).copied().collect();
+        operations(&graph.borrow(), &outputs)
+    };
+    if cost(&qdd, &pivots) < cost(&forward.returned.0, &forward.returned.1) {
+        forward.returned = (qdd, pivots);
+    }
 }

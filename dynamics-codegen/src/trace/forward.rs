@@ -17,8 +17,14 @@ pub struct ForwardEquations {
     pub factors: algo::Ldlt<NodeId>,
     /// `M⁻¹`, n × n.
     pub mass_inverse: Vec<Vec<NodeId>>,
-    /// `q̈` for the joint torques `τ` (leaves [`Var::Tau`]).
+    /// `q̈` for the joint torques `τ` (leaves [`Var::Tau`]), through the factors: what other
+    /// outputs solving with M build on.
     pub qdd: Vec<NodeId>,
+    /// What `forward_dynamics` returns: `q̈` and the pivots it checks, all positive where M is
+    /// positive definite. [`ForwardEquations::qdd`] and the factors' pivots, or on a floating
+    /// base the articulated-body algorithm's where it takes fewer operations
+    /// ([`algo::floating_aba`]).
+    pub returned: (Vec<NodeId>, Vec<NodeId>),
 }
 
 impl ForwardEquations {
@@ -68,9 +74,11 @@ pub(super) fn forward(
             tau - expr(b) - expr(f)
         })
         .collect();
-    let qdd = factors.solve(&rhs).iter().map(|e| e.id()).collect();
+    let qdd: Vec<NodeId> = factors.solve(&rhs).iter().map(|e| e.id()).collect();
+    let factors = factors.map(Expr::id);
     ForwardEquations {
-        factors: factors.map(Expr::id),
+        returned: (qdd.clone(), factors.pivots.clone()),
+        factors,
         mass_inverse,
         qdd,
     }

@@ -203,8 +203,8 @@ impl Method {
                 matrix: &eq.forward.mass_inverse,
             },
             Method::ForwardDynamics | Method::FloatingForwardDynamics => Shape::SolvedVector {
-                pivots: &eq.forward.factors.pivots,
-                vector: &eq.forward.qdd,
+                pivots: &eq.forward.returned.1,
+                vector: &eq.forward.returned.0,
             },
             Method::InverseDynamicsDerivatives | Method::FloatingInverseDynamicsDerivatives => {
                 match &eq.derivatives {

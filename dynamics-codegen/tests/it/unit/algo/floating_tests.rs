@@ -177,7 +177,7 @@ fn composite_bodies_agree_with_newton_euler() {
 }
 
 /// The robot and floating body of `robots/urdf/floating/<name>.urdf`.
-fn urdf_robot(name: &str) -> (Robot, dynamics_codegen::model::FreeFlyer) {
+pub(crate) fn urdf_robot(name: &str) -> (Robot, dynamics_codegen::model::FreeFlyer) {
     let path = format!(
         "{}/../robots/urdf/floating/{name}.urdf",
         env!("CARGO_MANIFEST_DIR")

@@ -1,5 +1,6 @@
 //! The tests of `dynamics_codegen::algo`, by file.
 
+mod aba_tests;
 mod body;
 mod chain;
 mod coriolis;
