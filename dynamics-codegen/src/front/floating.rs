@@ -13,6 +13,7 @@ use super::attrs::Attrs;
 use super::errors::Errors;
 use super::fields::Field;
 use super::urdf;
+use crate::method::Family;
 use crate::model::{FreeFlyer, Link, Robot};
 
 /// What the input gives beside the attributes.
@@ -198,8 +199,9 @@ fn has_joint_terms(robot: &Robot) -> bool {
     })
 }
 
-/// The floating base's opt-in families do not model joint friction and actuator inertia yet
-/// (their derivatives, their regressor columns): refused together.
+/// The floating base's regressor and base parameters have no columns for joint friction and
+/// actuator inertia yet: refused beside them. (The derivatives model them: `∂τ/∂v` has the
+/// viscous coefficients on its joints' diagonal, `M` the actuator inertia.)
 fn joint_terms_with_families(
     attrs: &Attrs,
     robot: &Robot,
@@ -209,11 +211,11 @@ fn joint_terms_with_families(
     if !has_joint_terms(robot) {
         return;
     }
-    let asked = attrs
-        .families
-        .iter()
-        .filter(|(family, &asked)| asked && family.on_floating_base().is_some());
+    let asked = attrs.families.iter().filter(|(family, &asked)| {
+        let floating = family.on_floating_base();
+        asked && floating.is_some_and(|f| f != Family::FloatingDerivatives)
+    });
     for (family, _) in asked {
-        errors.push(span, format!("`{} = true` is not supported on a floating base with joint friction or actuator inertia yet (a joint's `<dynamics damping friction>`, `friction`, `actuator_inertia`): `base = floating` models them in M, τ and the forward dynamics only", family.name()));
+        errors.push(span, format!("`{} = true` is not supported on a floating base with joint friction or actuator inertia yet (a joint's `<dynamics damping friction>`, `friction`, `actuator_inertia`): `base = floating` models them in M, τ, the forward dynamics and their derivatives only", family.name()));
     }
 }
