@@ -29,7 +29,6 @@ use dynamics_bench::{
 };
 use dynamics_runtime::{DynamicsBaseParameters, DynamicsDerivatives, DynamicsRegressor};
 use floating::floating;
-use floating_regressor::floating_with_regressor;
 pub use simplified::{dynamics_bench_simplified_bounds, dynamics_bench_simplified_envelope};
 use trees::tree;
 
@@ -306,7 +305,7 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"ur5_urdf" => entry(&Ur5Urdf),
         b"baxter_no_mimic" => tree(&BaxterFreeFingers),
         b"allegro_right_hand" => tree(&AllegroHand),
-        b"solo12" => floating_with_regressor(&Solo12),
+        b"solo12" => floating_regressor::floating_with_regressor(&Solo12),
         b"anymal_b" => floating(&AnymalB),
         b"g1_29dof" => floating(&G1),
         _ => return None,
