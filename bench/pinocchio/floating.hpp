@@ -19,8 +19,9 @@
 // data.M). Then `fd` (aba at the sample's (q, v, tau)) and `Minv` (computeMinverse, mirrored),
 // and the batch rows `tau_batch` (rneaInParallel on one thread) and `fd_batch` (abaInParallel),
 // per state, as the fixed robots' (`time_floating_batches`).
-// Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives), and, where the robot has a
-// `<robot>_contact_fd.json` beside its file, `contact_fd` (run_floating_contacts).
+// Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives), the regressor `Y`
+// (run_floating_regressor), and, where the robot has a `<robot>_contact_fd.json` beside its file,
+// `contact_fd` (run_floating_contacts).
 
 #include "pinocchio/algorithm/constrained-dynamics.hpp"
 
@@ -100,6 +101,52 @@ static void run_floating_derivatives(
       pinocchio::computeABADerivatives(model, data, qs[k], vs[k], taus[k]);
       return data.ddq_dq(0, 0);
     });
+}
+
+// The joint torque regressor `Y` (bench/ffi's FloatingDynamicsRegressor, where the generated
+// library has it: Solo 12): Pinocchio's computeJointTorqueRegressor on the free flyer at
+// (q, v, a), nv × 10 (n + 1), the free flyer's body first, then the joints' in the file's order
+// (pinocchio_model's order, so the same columns); the generated one row-major, written in place
+// as Pinocchio writes data.jointTorqueRegressor. Checked against Pinocchio's on every sample,
+// then timed in turn. Without the generated library, Pinocchio's row alone for every robot.
+static void run_floating_regressor(
+  const std::string & robot, const Model & model, Data & data,
+  const std::vector<Eigen::VectorXd> & qs, const std::vector<Eigen::VectorXd> & vs,
+  const std::vector<Eigen::VectorXd> & as, const Generated * generated, double & checksum)
+{
+  if (generated && !generated->lookup(robot.c_str(), "Y"))
+    return;
+  const std::size_t ns = qs.size();
+  auto pin_timed = [&](std::size_t k) {
+    return pinocchio::computeJointTorqueRegressor(model, data, qs[k], vs[k], as[k])(0, 0);
+  };
+  if (!generated)
+  {
+    std::printf("%s\tY\t%.1f\n", robot.c_str(), median_ns(ns, pin_timed, checksum));
+    std::fflush(stdout);
+    return;
+  }
+  const GeneratedFunction f = generated->get(robot, "Y");
+  const Eigen::Index rows = model.nv, columns = 10 * (model.njoints - 1);
+  std::vector<double> out(static_cast<std::size_t>(rows * columns) + 1);
+  for (std::size_t s = 0; s < ns; ++s)
+  {
+    std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+    f(qs[s].data(), vs[s].data(), as[s].data(), out.data());
+    if (!std::isnan(out[static_cast<std::size_t>(rows * columns)]))
+      throw std::runtime_error(robot + ": the generated Y writes past its output");
+    // Row-major: the transpose of a column-major columns × rows map.
+    const Eigen::MatrixXd got = Eigen::Map<const Eigen::MatrixXd>(out.data(), columns, rows).transpose();
+    const Eigen::MatrixXd want = pinocchio::computeJointTorqueRegressor(model, data, qs[s], vs[s], as[s]);
+    check(robot, "Y (generated)", got, want, s);
+  }
+  auto gen = [&](std::size_t k) {
+    f(qs[k].data(), vs[k].data(), as[k].data(), out.data());
+    return out[0];
+  };
+  const auto [pin_ns, gen_ns] = median_ns_in_turn(ns, pin_timed, gen, checksum);
+  std::printf("%s\tY\t%.1f\t%.1f\n", robot.c_str(), pin_ns, gen_ns);
+  std::fflush(stdout);
 }
 
 // The batch rows of a robot on a free-flying base, per state: `tau_batch` and `fd_batch`
@@ -346,5 +393,6 @@ static void run_floating(const std::string & robot, const json::Value & file, co
   if (with_generated)
     time_floating_batches(robot, *generated, model, qs, vs, as, taus, checksum);
   run_floating_derivatives(robot, model, data, samples, qs, vs, as, with_generated ? generated : nullptr, checksum);
+  run_floating_regressor(robot, model, data, qs, vs, as, with_generated ? generated : nullptr, checksum);
   run_floating_contacts(robot, path, model, qs, vs, taus, with_generated ? generated : nullptr, checksum);
 }

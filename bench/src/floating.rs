@@ -1,18 +1,21 @@
 //! The robots on a free-flying base of `bench/run`'s floating rows (issue 43), derived from their
 //! URDFs with `base = floating` (`FloatingDynamics<NQ, NV>`: M, h, τ, g) and `derivatives = true`
 //! (`FloatingDynamicsDerivatives`), the quadrupeds with `contacts = true` (the contact terms in
-//! closed form), and their reference samples (`tests/data/floating/`,
-//! Pinocchio 4.1's free flyer, joints in the generator's order).
+//! closed form), Solo 12 with `regressor = true` (`FloatingDynamicsRegressor`), and their
+//! reference samples (`tests/data/floating/`, Pinocchio 4.1's free flyer, joints in the
+//! generator's order).
 
 use dynamics_runtime::Dynamics;
 
-/// Solo 12: four legs of three joints on a flying trunk. NQ 19, NV 18.
+/// Solo 12: four legs of three joints on a flying trunk. NQ 19, NV 18; 13 bodies in the
+/// regressor.
 #[derive(Clone, Copy, Debug, Default, Dynamics)]
 #[dynamics(
     urdf = "../robots/urdf/floating/solo12.urdf",
     base = floating,
     derivatives = true,
-    contacts = true
+    contacts = true,
+    regressor = true
 )]
 pub struct Solo12;
 
@@ -175,4 +178,30 @@ pub fn floating_contact_samples<const V: usize, const F: usize>(
         })
         .collect();
     (names.try_into().expect("a name per foot"), samples)
+}
+
+/// Pinocchio's `computeJointTorqueRegressor` on the free flyer at the states of the
+/// [`FloatingSample`]s of the same index (`tests/data/floating/<robot>_regressor.json`), each
+/// `V × 10 (n + 1)` row-major, the free flyer's ten columns first.
+///
+/// # Panics
+/// If the file is missing or malformed, or a row is not `C` long.
+#[must_use]
+pub fn floating_regressor_samples<const V: usize, const C: usize>(robot: &str) -> Vec<Vec<f64>> {
+    let text = super::read(&format!("floating/{robot}_regressor.json"));
+    let data: serde_json::Value =
+        serde_json::from_str(&text).unwrap_or_else(|e| panic!("regressor of {robot}: {e}"));
+    let samples = data["samples"]
+        .as_array()
+        .unwrap_or_else(|| panic!("regressor of {robot} has no samples"));
+    samples
+        .iter()
+        .map(|s| {
+            let rows = s["Y"].as_array().expect("Y's rows");
+            assert_eq!(rows.len(), V, "regressor of {robot}: rows");
+            rows.iter()
+                .flat_map(|r| super::vector::<C>(r, "a row of Y"))
+                .collect()
+        })
+        .collect()
 }

@@ -263,8 +263,8 @@ pub use dynamics_reference::scaled_error;
 mod floating;
 mod trees;
 pub use floating::{
-    floating_contact_samples, floating_derivative_samples, floating_samples, AnymalB,
-    FloatingDerivativeSample, FloatingSample, Solo12, FLOATING, G1,
+    floating_contact_samples, floating_derivative_samples, floating_regressor_samples,
+    floating_samples, AnymalB, FloatingDerivativeSample, FloatingSample, Solo12, FLOATING, G1,
 };
 pub use trees::{AllegroHand, BaxterFreeFingers};
 

@@ -8,7 +8,8 @@
 //! `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the tangent, then `∂τ/∂v`:
 //! 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M is not positive
 //! definite; its third input `tau`). `contact_fd`: `FloatingContacts::contact_dynamics` with every
-//! frame of `FloatingKinematics` held, `a` (V) then `λ` (3 per frame).
+//! frame of `FloatingKinematics` held, `a` (V) then `λ` (3 per frame); `Y` in
+//! [`super::floating_regressor`].
 
 use super::batch::{results, states, HORIZON};
 use super::{input, output, output_matrix, Function, Robot};
@@ -162,7 +163,9 @@ impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: us
 }
 
 /// The forward dynamics with every one of the `F` frames held (`contact_fd`).
-struct Contacts<R, const Q: usize, const V: usize, const F: usize>(core::marker::PhantomData<R>);
+pub(super) struct Contacts<R, const Q: usize, const V: usize, const F: usize>(
+    core::marker::PhantomData<R>,
+);
 
 impl<R, const Q: usize, const V: usize, const F: usize> Contacts<R, Q, V, F>
 where
@@ -182,7 +185,7 @@ where
         }
     }
 
-    fn get(function: &[u8]) -> Option<Function> {
+    pub(super) fn get(function: &[u8]) -> Option<Function> {
         match function {
             b"contact_fd" => Some(Self::contact_fd),
             _ => Floating::<R, Q, V>::get(function),
@@ -200,7 +203,7 @@ where
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use crate::{dynamics_bench_dof, dynamics_bench_function, Function};
     use dynamics_bench::{
         floating_contact_samples, floating_derivative_samples, floating_samples, scaled_error,
@@ -208,7 +211,7 @@ mod tests {
     };
     use dynamics_runtime::{FloatingContacts, FloatingDynamics, FloatingDynamicsDerivatives};
 
-    fn lookup(robot: &str, function: &str) -> Option<Function> {
+    pub(crate) fn lookup(robot: &str, function: &str) -> Option<Function> {
         let robot = std::ffi::CString::new(robot).unwrap();
         let function = std::ffi::CString::new(function).unwrap();
         // SAFETY: two NUL-terminated strings.
@@ -260,9 +263,11 @@ mod tests {
             }
         }
         check_forward(r, robot);
-        for function in ["C", "fk", "J", "Y", "M_batch"] {
+        for function in ["C", "fk", "J", "M_batch"] {
             assert!(lookup(robot, function).is_none(), "{robot} {function}");
         }
+        // Only Solo 12 is derived with its regressor.
+        assert_eq!(lookup(robot, "Y").is_some(), robot == "solo12", "{robot} Y");
     }
 
     /// `fd` and `Minv` through the C ABI: the trait methods' bits, `fd` at Pinocchio's
@@ -338,7 +343,7 @@ mod tests {
 
     /// Runs `f` on a thread with room: unoptimized, the G1's batches and derivatives (35
     /// coordinates) take more than a test thread's 2 MB of stack.
-    fn with_room(f: impl FnOnce() + Send) {
+    pub(crate) fn with_room(f: impl FnOnce() + Send) {
         std::thread::scope(|s| {
             std::thread::Builder::new()
                 .stack_size(64 << 20)

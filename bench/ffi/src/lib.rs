@@ -17,6 +17,7 @@
 
 mod batch;
 mod floating;
+mod floating_regressor;
 mod simplified;
 mod trees;
 
@@ -304,7 +305,7 @@ unsafe fn robot(name: *const c_char) -> Option<Robot> {
         b"ur5_urdf" => entry(&Ur5Urdf),
         b"baxter_no_mimic" => tree(&BaxterFreeFingers),
         b"allegro_right_hand" => tree(&AllegroHand),
-        b"solo12" => floating(&Solo12),
+        b"solo12" => floating_regressor::floating_with_regressor(&Solo12),
         b"anymal_b" => floating(&AnymalB),
         b"g1_29dof" => floating(&G1),
         _ => return None,

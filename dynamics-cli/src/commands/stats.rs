@@ -421,6 +421,23 @@ mod tests {
             format!("{refused:?}").contains("not supported"),
             "{refused:?}"
         );
+        // Beside joint friction and actuator inertia the derivatives are traced; the regressor
+        // has no columns for them, refused as the derive refuses it.
+        let terms = format!("{root}../tests/data/floating/solo12_joint_terms.toml");
+        let with = with.map(|w| {
+            if w == urdf.as_str() {
+                terms.as_str()
+            } else {
+                w
+            }
+        });
+        let derivatives = run(with.into_iter().chain(["derivatives"])).expect("runs");
+        assert!(!row(&derivatives, "inverse_dynamics_derivatives").is_empty());
+        let refused = run(with.into_iter().chain(["regressor"])).unwrap_err();
+        assert!(
+            format!("{refused:?}").contains("joint friction or actuator inertia"),
+            "{refused:?}"
+        );
         let fixed = format!("{root}puma560.toml");
         let wrong = run(["stats", fixed.as_str(), "--floating", "--runs", "1"]).unwrap_err();
         assert!(

@@ -13,6 +13,7 @@ use super::attrs::Attrs;
 use super::errors::Errors;
 use super::fields::Field;
 use super::urdf;
+use crate::method::Family;
 use crate::model::{FreeFlyer, Link, Robot};
 
 /// What the input gives beside the attributes.
@@ -198,22 +199,30 @@ fn has_joint_terms(robot: &Robot) -> bool {
     })
 }
 
-/// The floating base's opt-in families do not model joint friction and actuator inertia yet
-/// (their derivatives, their regressor columns): refused together.
+/// The floating base's regressor and base parameters have no columns for joint friction and
+/// actuator inertia yet: refused beside them.
 fn joint_terms_with_families(
     attrs: &Attrs,
     robot: &Robot,
     span: proc_macro2::Span,
     errors: &mut Errors,
 ) {
-    if !has_joint_terms(robot) {
-        return;
+    let asked = attrs.families.iter().filter(|(_, &asked)| asked);
+    for message in asked.filter_map(|(&family, _)| joint_terms_refusal(robot, family)) {
+        errors.push(span, message);
     }
-    let asked = attrs
-        .families
-        .iter()
-        .filter(|(family, &asked)| asked && family.on_floating_base().is_some());
-    for (family, _) in asked {
-        errors.push(span, format!("`{} = true` is not supported on a floating base with joint friction or actuator inertia yet (a joint's `<dynamics damping friction>`, `friction`, `actuator_inertia`): `base = floating` models them in M, τ and the forward dynamics only", family.name()));
+}
+
+/// Why `family` (an opt-in family, by its fixed base's name or its floating twin) cannot be
+/// traced beside the joint friction or actuator inertia of `robot` on a floating base, if it
+/// cannot: the regressor and base parameters have no columns for them yet. (The derivatives
+/// model them: `∂τ/∂v` has the viscous coefficients on its joints' diagonal, `M` the actuator
+/// inertia.)
+#[must_use]
+pub fn joint_terms_refusal(robot: &Robot, family: Family) -> Option<String> {
+    let floating = family.on_floating_base()?;
+    if floating == Family::FloatingDerivatives || !has_joint_terms(robot) {
+        return None;
     }
+    Some(format!("`{} = true` is not supported on a floating base with joint friction or actuator inertia yet (a joint's `<dynamics damping friction>`, `friction`, `actuator_inertia`): `base = floating` models them in M, τ, the forward dynamics and their derivatives only", family.name()))
 }

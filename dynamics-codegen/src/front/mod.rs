@@ -59,6 +59,7 @@ pub use attrs::attribute_words;
 pub use errors::{Errors, FileError};
 pub use fields::{struct_fields, Field};
 pub use file::{from_json, from_text, from_toml, load};
+pub use floating::joint_terms_refusal as floating_joint_terms_refusal;
 pub use floating::unsupported as floating_unsupported;
 pub use simplify::given::{default_joint as default_envelope, Given, KEYS as SIMPLIFY_KEYS};
 pub use simplify::{FileRequest, RequestError};

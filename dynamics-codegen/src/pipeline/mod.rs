@@ -15,7 +15,7 @@
 
 use crate::check;
 use crate::front::{self, Chain, FileRequest, RequestError};
-use crate::method::FamilySet;
+use crate::method::{Family, FamilySet};
 use crate::model::{FreeFlyer, Placement, Robot, Simplification, Value};
 use crate::trace::{self, Equations};
 
@@ -258,12 +258,22 @@ impl Loaded {
     /// derive traces them (`derivatives`, `regressor`, `base_parameters`).
     ///
     /// # Errors
-    /// As [`Loaded::floating_equations`], and where the base parameters cannot be traced (a
-    /// length or angle given by a struct field).
+    /// As [`Loaded::floating_equations`], where the base parameters cannot be traced (a
+    /// length or angle given by a struct field), and the regressor or base parameters beside
+    /// joint friction or actuator inertia (no columns for them yet).
     pub fn floating_equations_with(
         &self,
         families: FamilySet,
     ) -> Result<Equations, Vec<Diagnostic>> {
+        let refused: Vec<Diagnostic> = Family::ALL
+            .iter()
+            .filter(|&&f| families.contains(f))
+            .filter_map(|&f| front::floating_joint_terms_refusal(&self.robot, f))
+            .map(|m| Diagnostic::of_file(&self.path, m))
+            .collect();
+        if !refused.is_empty() {
+            return Err(refused);
+        }
         let mut eq = self.floating_equations()?;
         let flyer = self.flyer.as_ref().map_err(Clone::clone)?;
         if floating::add_floating_families(&mut eq, &self.robot, flyer, families) {

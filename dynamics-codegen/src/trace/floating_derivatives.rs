@@ -20,6 +20,11 @@
 //!   fixed base's ([`Graph::tangents`] from the first joint's index on), the rotation's columns
 //!   added to each row's lane as unit vectors times the nodes above.
 //!
+//! The joints' friction and actuator inertia need nothing of their own: τ and M hold them, so
+//! `∂τ/∂v` gains the viscous coefficients on the joints' diagonal (Coulomb's `sign` is flat,
+//! `∂ sign/∂v = 0` away from 0), `∂τ/∂q` nothing, and the solves use M with the armature at
+//! `a = M⁻¹ (τ − h − τ_f)`.
+//!
 //! The quaternion is taken to be unit: for one that is not, `R` is not a rotation (see
 //! [`crate::algo::quaternion_rotation`]) and no tangent moves the base along a rotation.
 

@@ -10,8 +10,8 @@
 //! chain's joint frame as the fixed base's regressor carries it. The chain is not regrouped: on
 //! a floating base every body's parameters reach the base's six rows, so none may be moved onto
 //! another. τ is linear in the placeholders, so the column of `π_jk` is that trace with
-//! `π_jk = 1` and every other placeholder 0, folded as it is rebuilt. A floating base has no
-//! actuator inertia, friction or springs (the front end refuses them), so no joint columns.
+//! `π_jk = 1` and every other placeholder 0, folded as it is rebuilt. The regressor has no
+//! joint columns (actuator inertia, friction): the front end refuses it beside them.
 //!
 //! The base parameters are decided exactly as a fixed base's ([`super::base_parameters`]), on
 //! the same columns traced with the description's constants as leaves. The quaternion's four

@@ -794,6 +794,67 @@ def joint_terms(name="solo12"):
     print(name, "joint terms:", len(samples), "samples")
 
 
+def joint_terms_derivatives(name="solo12"):
+    """The first derivatives of Solo 12 with joint terms (`joint_terms`' model: armature, damping,
+    friction) at the states of `<name>_joint_terms.json`, written to
+    `<name>_joint_terms_derivatives.json`. Pinocchio's derivatives model the armature (in M) but
+    not the friction, which is added by hand: tau = rnea + f_v v + f_c sign(v), so dtau_dq is
+    `computeRNEADerivatives`' and dtau_dv gains diag(0_6, f_v) (Coulomb's sign is flat away from
+    v = 0: its derivative is taken as 0); at tau_in, ddq = aba(q, v, tau_in - friction),
+    ddq_dq = `computeABADerivatives(q, v, tau_in - friction)`' (friction does not depend on q),
+    ddq_dv its less Minv diag(0_6, f_v), ddq_dtau = Minv (armature in it). Checks the armature is
+    in Pinocchio's derivatives (Minv M = 1 with M = crba), and dtau_dq, dtau_dv, ddq_dq, ddq_dv
+    against central differences of rnea + the viscous term and of aba(q, v, tau_in - viscous)
+    (1e-5 scaled; the Coulomb term, constant near each state but the one at rest, left out of
+    the differences). Solo's joint order is Pinocchio's."""
+    path = os.path.join(ROOT, ROBOTS[name])
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    with open(os.path.join(HERE, name + "_joint_terms.json")) as f:
+        terms = json.load(f)
+    model.armature[6:] = terms["armature"]
+    damping = np.concatenate([np.zeros(6), terms["damping"]])
+    coulomb = np.concatenate([np.zeros(6), terms["friction"]])
+    data = model.createData()
+    viscous = lambda x, v, a: pin.rnea(model, data, x, v, a) + damping * v
+    samples = []
+    for s in terms["samples"]:
+        q, v, a, tau_in = (np.array(s[k]) for k in ("q", "v", "a", "tau_in"))
+        dtau_dq, dtau_dv, _ = (x.copy() for x in pin.computeRNEADerivatives(model, data, q, v, a))
+        dtau_dv += np.diag(damping)
+        assert scaled(central(lambda x: viscous(x, v, a), model, q), dtau_dq) < 1e-5
+        fd_v = np.array([(viscous(q, v + e, a) - viscous(q, v - e, a)) / 2e-6 for e in np.eye(model.nv) * 1e-6]).T
+        assert scaled(fd_v, dtau_dv) < 1e-5, scaled(fd_v, dtau_dv)
+        friction = joint_friction(v, damping, coulomb)
+        assert scaled(friction, np.array(s["friction"])) < 1e-15
+        ddq = pin.aba(model, data, q, v, tau_in - friction).copy()
+        assert scaled(ddq, np.array(s["a_fd"])) < 1e-15
+        ddq_dq, ddq_dv, m_inv = (x.copy() for x in pin.computeABADerivatives(model, data, q, v, tau_in - friction))
+        m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+        assert scaled(m_inv @ np.array(s["M"]), np.eye(model.nv)) < 1e-10
+        ddq_dv -= m_inv @ np.diag(damping)
+        forward = lambda x, v: pin.aba(model, data, x, v, tau_in - coulomb * np.sign(s["v"]) - damping * v)
+        assert scaled(central(lambda x: forward(x, v), model, q), ddq_dq) < 1e-5
+        fd_v = np.array([(forward(q, v + e) - forward(q, v - e)) / 2e-6 for e in np.eye(model.nv) * 1e-6]).T
+        assert scaled(fd_v, ddq_dv) < 1e-5, scaled(fd_v, ddq_dv)
+        samples.append({"tau_in": tau_in.tolist(), "dtau_dq": dtau_dq.tolist(), "dtau_dv": dtau_dv.tolist(), "ddq": ddq.tolist(),
+                        "ddq_dq": ddq_dq.tolist(), "ddq_dv": ddq_dv.tolist(), "ddq_dtau": m_inv.tolist()})
+    result = {
+        "robot": name + " with joint terms",
+        "generator": "tests/data/floating/make.py (joint_terms_derivatives) with pinocchio %s"
+                     % importlib.metadata.version("pin"),
+        "states": name + "_joint_terms.json (q, v, a, tau_in of its samples, in order)",
+        "conventions": "as derivatives'; dtau_* = computeRNEADerivatives(q, v, a) (armature in the model) with "
+                       "dtau_dv + diag(0_6, damping); ddq = aba(q, v, tau_in - friction), ddq_dq = "
+                       "computeABADerivatives(q, v, tau_in - friction)'s, ddq_dv its - Minv diag(0_6, damping), "
+                       "ddq_dtau = Minv; Coulomb friction's derivative taken as 0 (flat away from v = 0)",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_joint_terms_derivatives.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "joint terms derivatives:", len(samples), "samples")
+
+
 # 6-D (surface) contacts, CONTACT_6D in LOCAL_WORLD_ALIGNED, read by `surface`: per robot its
 # frames (those of FloatingKinematics, the leaf links in the file's order) and the contacts of
 # each sample in turn, "surface" (CONTACT_6D), "point" (CONTACT_3D) or "none" per frame.
@@ -914,5 +975,6 @@ if __name__ == "__main__":
     for name, urdf in FRICTION.items():
         friction_data(name, urdf)
     joint_terms("solo12")
+    joint_terms_derivatives("solo12")
     for name in SURFACE:
         surface(name, ROBOTS[name])

@@ -20,7 +20,7 @@ use dynamics_tests::lanes::{close_values, routes_differ, Bits};
     base = floating,
     derivatives = true
 )]
-struct Solo12;
+pub(super) struct Solo12;
 
 #[derive(dynamics_runtime::Dynamics)]
 #[dynamics(
@@ -46,7 +46,11 @@ fn flatten<const N: usize>(m: &[[f64; N]; N]) -> Vec<f64> {
 /// [`TOLERANCE`], those of forward dynamics to `forward_tolerance`; the base position's columns
 /// exactly zero, and the rotation's columns of `∂a/∂q` below the base's linear rows too.
 /// Returns the largest errors of each.
-fn against_pinocchio<R: FloatingDynamicsDerivatives<Q, V>, const Q: usize, const V: usize>(
+pub(super) fn against_pinocchio<
+    R: FloatingDynamicsDerivatives<Q, V>,
+    const Q: usize,
+    const V: usize,
+>(
     robot: &R,
     name: &str,
     forward_tolerance: f64,
@@ -135,7 +139,7 @@ fn g1_against_pinocchio() {
 /// Runs `f` on a thread with room for the derivatives unoptimized: on tangents in lanes
 /// (AVX-512), one state's take more than a test thread's 2 MB of stack, as the lanes of eight
 /// `f64` do.
-fn with_room(f: impl FnOnce() + Send) {
+pub(super) fn with_room(f: impl FnOnce() + Send) {
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .stack_size(64 << 20)

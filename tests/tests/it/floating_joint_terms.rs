@@ -9,8 +9,9 @@
 //! 1e-10: its M's condition number reaches 8.7e4).
 
 use super::floating_base::{array, check_against_pinocchio, numbers, reference, TOLERANCE};
+use super::floating_derivatives::{against_pinocchio, with_room, Solo12 as RigidSolo12};
 use dynamics_reference::scaled_error;
-use dynamics_runtime::{FloatingContacts, FloatingDynamics};
+use dynamics_runtime::{FloatingContacts, FloatingDynamics, FloatingDynamicsDerivatives};
 
 /// Talos, its feet's soles the frames of its kinematics (not its 16 leaves).
 #[derive(dynamics_runtime::Dynamics)]
@@ -21,9 +22,13 @@ use dynamics_runtime::{FloatingContacts, FloatingDynamics};
 )]
 struct Talos;
 
-/// Solo 12 with joint terms, from its description file.
+/// Solo 12 with joint terms, from its description file, and their derivatives.
 #[derive(dynamics_runtime::Dynamics)]
-#[dynamics(file = "data/floating/solo12_joint_terms.toml", base = floating)]
+#[dynamics(
+    file = "data/floating/solo12_joint_terms.toml",
+    base = floating,
+    derivatives = true
+)]
 struct Solo12JointTerms;
 
 /// `forward_dynamics` at each sample's `tau_in` against `a_fd` to `tolerance`, and `τ` back
@@ -72,6 +77,55 @@ fn talos_with_friction_against_pinocchio() {
 fn joint_terms_against_pinocchio() {
     check_against_pinocchio(&Solo12JointTerms, "solo12_joint_terms");
     forward(&Solo12JointTerms, "solo12_joint_terms", TOLERANCE);
+}
+
+/// The derivatives beside actuator inertia and friction, against Pinocchio's with the armature
+/// in its model and the friction's terms added by hand (`solo12_joint_terms_derivatives.json`):
+/// `∂τ/∂v` has the viscous coefficients on its joints' diagonal, Coulomb's sign is flat (its
+/// derivative 0 away from `v = 0`), `∂a/∂v = −M⁻¹ ∂τ/∂v`, M with the armature.
+#[test]
+fn joint_terms_derivatives_against_pinocchio() {
+    with_room(|| {
+        let [inverse, forward] =
+            against_pinocchio(&Solo12JointTerms, "solo12_joint_terms", TOLERANCE);
+        eprintln!(
+            "Solo 12 with joint terms: largest scaled errors ∂τ {inverse:e}, a and ∂a {forward:e}"
+        );
+    });
+}
+
+/// The viscous coefficients are `∂τ/∂v`'s joints' diagonal beyond the rigid body's: the same
+/// state's derivatives less those of Solo 12 without joint terms (its `∂τ/∂v` does not depend
+/// on the armature, `a` held).
+#[test]
+fn viscous_friction_on_the_diagonal_of_dtau_dv() {
+    with_room(|| {
+        let data = reference("solo12_joint_terms");
+        let s = &data["samples"][5];
+        let (q, v, a) = (
+            array::<19>(&s["q"]),
+            array::<18>(&s["v"]),
+            array::<18>(&s["a"]),
+        );
+        let with = Solo12JointTerms
+            .inverse_dynamics_derivatives(&q, &v, &a)
+            .dtau_dqd;
+        let without = RigidSolo12
+            .inverse_dynamics_derivatives(&q, &v, &a)
+            .dtau_dqd;
+        let damping = numbers(&data["damping"]);
+        for i in 0..18 {
+            for j in 0..18 {
+                let expected = if i == j && i >= 6 {
+                    damping[i - 6]
+                } else {
+                    0.0
+                };
+                let gap = with[i][j] - without[i][j] - expected;
+                assert!(gap.abs() < 1e-12, "∂τ_{i}/∂v_{j}: {gap:e}");
+            }
+        }
+    });
 }
 
 /// Friction is in τ and not in h: `τ(q, v, 0) − h(q, v)` is the joints' friction torque, zero

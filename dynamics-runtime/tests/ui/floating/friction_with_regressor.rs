@@ -1,13 +1,13 @@
 use dynamics_runtime::Dynamics;
 
 // The path is relative to this file: trybuild's crate, inside `target/`, has no such file.
-// Talos's joints have friction, which a floating base's derivatives do not model yet: refused,
-// not wrong.
+// Talos's joints have friction, for which a floating base's regressor has no columns yet:
+// refused, not wrong (its derivatives model friction).
 #[derive(Dynamics)]
 #[dynamics(
     urdf = "../../../../robots/urdf/floating/talos_reduced.urdf",
     base = floating,
-    derivatives = true
+    regressor = true
 )]
 struct Talos;
 
