@@ -5,9 +5,9 @@
 //!   a positive definite M;
 //! * against central differences of the generated `inverse_dynamics` and `forward_dynamics`,
 //!   on the same robots and on the friction arm (Coulomb smoothed on joint 2), in `f64`; `f32`
-//!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ on Baxter with
-//!   free fingers (19 joints, its ∂τ in lanes one function per arm), and against the same
-//!   states in `F64x4` (the columns one by one) to 1e-12;
+//!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ and ∂q̈ on
+//!   Baxter with free fingers (19 joints, in lanes one function per arm, and per subtree for
+//!   ∂q̈), and against the same states in `F64x4` (the columns one by one) to 1e-12;
 //! * the friction arm's `∂τ/∂q̇` by hand: `2 C` plus the viscous slope, plus `f_c/ε sech²(q̇/ε)`
 //!   where smoothed (the plain Coulomb step is flat away from 0);
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
