@@ -43,11 +43,15 @@ impl Emitter<'_> {
     /// matrix has its plan: the zeros of the result they are stored into.
     fn lanes_in_place(&self, shape: &Shape) -> Option<TokenStream> {
         match shape {
+            // A group of `∂q̈`'s rows stores its rows too.
             Shape::Lanes {
                 stack,
                 lanes,
-                solved: None,
-            } if self.returned_in_place && lanes.iter().all(Option::is_some) => {
+                solved,
+            } if self.returned_in_place
+                && (solved.is_none() || self.kept.is_some())
+                && lanes.iter().all(Option::is_some) =>
+            {
                 let n = Literal::usize_unsuffixed(self.eq.dof);
                 let count = Literal::usize_unsuffixed(stack.len());
                 Some(quote!([[[T::ZERO; #n]; #n]; #count]))
@@ -132,7 +136,7 @@ impl Emitter<'_> {
         self.lanes_due(&mut lanes, None, &mut statements);
         let result = if self.kept.is_some() {
             // A group's function: the caller's `y_` holds the zeros and is returned there.
-            TokenStream::new()
+            self.group_result(shape)
         } else if let Some(zeros) = &lanes_in_place {
             let y = local(OUTPUT);
             statements.insert(0, quote!(let mut #y = #zeros;));
@@ -206,6 +210,19 @@ impl Emitter<'_> {
     /// means that at least one lane failed. By reference, as `>` takes its operands: the same
     /// machine code as `d > T::ZERO` for `f64` and `f32`.
     fn checked(&mut self, pivots: &[NodeId], value: &TokenStream) -> TokenStream {
+        match self.positive(pivots) {
+            None => quote!(::core::option::Option::Some(#value)),
+            Some(tests) => quote!(if #tests {
+                ::core::option::Option::Some(#value)
+            } else {
+                ::core::option::Option::None
+            }),
+        }
+    }
+
+    /// Whether every pivot is positive, `T::all_positive(&d1) && ⋯`; `None` where each is a
+    /// positive constant.
+    pub(super) fn positive(&mut self, pivots: &[NodeId]) -> Option<TokenStream> {
         let graph = self.graph;
         let positive = |id: NodeId| matches!(graph.node(id), Node::Const(c) if c.to_f64() > 0.0);
         let tests: Vec<TokenStream> = pivots
@@ -216,14 +233,7 @@ impl Emitter<'_> {
                 quote!(T::all_positive(&#d))
             })
             .collect();
-        if tests.is_empty() {
-            return quote!(::core::option::Option::Some(#value));
-        }
-        quote!(if #(#tests)&&* {
-            ::core::option::Option::Some(#value)
-        } else {
-            ::core::option::Option::None
-        })
+        (!tests.is_empty()).then(|| quote!(#(#tests)&&*))
     }
 
     /// The array of arrays of matrix `m`'s rows.

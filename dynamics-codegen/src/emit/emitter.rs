@@ -54,6 +54,8 @@ pub(super) struct Emitter<'a> {
     /// Per plan of a group's function, the column of `y_` each of its local directions is
     /// stored in ([`super::rows::local_layout`]); `None`: the plan's own order.
     pub(super) columns: Option<Vec<Vec<usize>>>,
+    /// A group's rows, of which a group of `∂q̈`'s stores `q̈` into `x_` ([`super::rows`]).
+    pub(super) rows: Option<Vec<bool>>,
     /// Each node's number of dependent operations as emitted ([`Sums::depth`]), once
     /// asked for (`u32::MAX` before).
     pub(super) depth: Vec<Cell<u32>>,
@@ -102,6 +104,7 @@ impl<'a> Emitter<'a> {
             returned_in_place: false,
             kept: None,
             columns: None,
+            rows: None,
             depth: t.depth,
             marked: Vec::new(),
             depth_known: RefCell::new(Vec::new()),

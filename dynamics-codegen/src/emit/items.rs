@@ -376,6 +376,12 @@ impl Generated {
             .iter()
             .any(|m| m.method.family() == module.family && m.lanes)
             .then(|| quote!(use #krate::__private::{align_stack, Tangent};));
+        // ∂q̈ by subtrees builds the trait's result itself (`emit/rows.rs`).
+        let solved = module
+            .parts
+            .iter()
+            .any(|part| part.solved)
+            .then(|| quote!(use #krate::{ForwardDynamicsDerivatives, NotPositiveDefinite};));
         // Beside the struct, the module is in the user's namespace, out of their docs.
         let hidden = module
             .family
@@ -385,6 +391,7 @@ impl Generated {
         inner.extend(
             tangent
                 .into_iter()
+                .chain(solved)
                 .chain(configuration_item)
                 .chain(motion_item),
         );

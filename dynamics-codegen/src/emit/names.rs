@@ -18,6 +18,8 @@ pub const MOTION_FN: &str = "motion";
 pub const CONFIGURATION_LOCAL: &str = "c_";
 /// Name of the argument a result written in place goes to (`&mut`, the result's type).
 pub const OUTPUT: &str = "y_";
+/// Name of the argument a group of `∂q̈`'s rows stores its `q̈` into (`emit/rows.rs`).
+pub const SOLUTION: &str = "x_";
 /// Name of the argument holding the robot's parameters, `[T; K]` in the order of
 /// `Equations::fields`.
 pub const PARAMETERS: &str = "p_";

@@ -60,6 +60,11 @@ pub struct Part {
     pub index: usize,
     /// Its statements, storing into `y_`.
     pub tokens: TokenStream,
+    /// Whether it is a group of `∂q̈`'s rows: it stores its `q̈` into `x_` too and returns
+    /// whether its pivots are positive.
+    pub solved: bool,
+    /// The number of matrices of the result.
+    pub matrices: usize,
 }
 
 /// Where emitted code finds the robot's parameters.

@@ -6,10 +6,10 @@ use super::emitter::{release_spare_tables, Emitter, Origin};
 use super::expr::block;
 use super::names::{output_names, Element};
 use super::parts::{Body, Context, Output, Part, Shared};
-use super::rows::{kept_lanes, local_layout, row_groups, split};
+use super::rows::{kept_lanes, local_layout, row_groups, solved_groups, split};
 use crate::method::Argument;
 use crate::symbolic::{Node, NodeId};
-use crate::trace::{Equations, Shape};
+use crate::trace::{Equations, Shape, Solved};
 use quote::quote;
 
 /// Everything [`emit`] writes.
@@ -89,7 +89,9 @@ pub(super) fn emit_with(
         let mut e = Emitter::new(eq, Some(ctx));
         // A tree's lanes: each row stored once its lane is computed.
         e.returned_in_place = tree && matches!(shape, Shape::Lanes { .. });
-        (e.kept, e.columns) = group.unzip();
+        if let Some(group) = group {
+            (e.kept, e.columns, e.rows) = (Some(group.kept), Some(group.columns), Some(group.rows));
+        }
         if !reads_q(&o) {
             return e.function(shape, o.method);
         }
@@ -145,15 +147,28 @@ fn bodies<'a>(
                     let kept = kept_lanes(plans, rows);
                     let (local, columns) = local_layout(plans, &kept);
                     let lanes = &local;
+                    // `∂q̈`'s group tests its own pivots.
+                    let pivots = solved.map(|s| own_pivots(eq, s.pivots, rows));
+                    let solved = solved.zip(pivots.as_deref()).map(|(s, pivots)| Solved {
+                        pivots,
+                        vector: s.vector,
+                    });
                     let shape = Shape::Lanes {
                         stack,
                         lanes,
                         solved,
                     };
+                    let group = Group {
+                        kept,
+                        columns,
+                        rows: rows.clone(),
+                    };
                     Part {
                         method: o.method,
                         index: k + 1,
-                        tokens: body_of(o, &shape, Some((kept, columns))).tokens,
+                        tokens: body_of(o, &shape, Some(group)).tokens,
+                        solved: solved.is_some(),
+                        matrices: stack.len(),
                     }
                 }));
                 let lanes = split(eq, ctx, o, &parts[first..]);
@@ -166,22 +181,44 @@ fn bodies<'a>(
     (bodies, parts)
 }
 
-/// The groups of rows of `output`'s plans ([`row_groups`]): a tree's ∂τ (not ∂q̈, which is
-/// solved through M, nor a method without `q`).
+/// The groups of rows of `output`'s plans on a tree (not of a method without `q`): ∂τ's where
+/// fetch-bound ([`row_groups`]), ∂q̈'s, solved through M, by its independent subtrees
+/// ([`solved_groups`]).
 fn groups(output: &Output, tree: bool) -> Vec<Vec<bool>> {
     match output.shape {
+        _ if !tree || !output.method.arguments().contains(&Argument::Q) => Vec::new(),
         Shape::Lanes {
             lanes,
             solved: None,
             ..
-        } if tree && output.method.arguments().contains(&Argument::Q) => row_groups(lanes),
+        } => row_groups(lanes),
+        Shape::Lanes { lanes, .. } => solved_groups(lanes),
         _ => Vec::new(),
     }
 }
 
-/// A group of rows' lanes: per plan, the lanes it writes and the column of each of its
-/// directions ([`local_layout`]).
-type Group = (Vec<Vec<bool>>, Vec<Vec<usize>>);
+/// The pivots of M's factors that belong to the joints of `rows`: pivot k is joint k's, or
+/// joint n − 1 − k's where the factors are M's reversed (a tree's).
+fn own_pivots(eq: &Equations, pivots: &[NodeId], rows: &[bool]) -> Vec<NodeId> {
+    let n = pivots.len();
+    let joint = |k: usize| {
+        if eq.forward.factors.reversed {
+            n - 1 - k
+        } else {
+            k
+        }
+    };
+    let own = pivots.iter().enumerate().filter(|&(k, _)| rows[joint(k)]);
+    own.map(|(_, &pivot)| pivot).collect()
+}
+
+/// A group of rows: per plan, the lanes it writes and the column of each of its directions
+/// ([`local_layout`]); its rows.
+struct Group {
+    kept: Vec<Vec<bool>>,
+    columns: Vec<Vec<usize>>,
+    rows: Vec<bool>,
+}
 
 /// Tangents in lanes where the build computes them there (AVX-512), else the columns one by
 /// one. The test is a constant: the compiler keeps one branch. Either branch spills vector

@@ -15,34 +15,73 @@
 //! Each group's lanes hold its own directions first ([`local_layout`]), so that an arm's lanes
 //! take the blocks its directions need, not those their columns straddle in the whole; a row
 //! is stored into its columns of `y_` by runs.
+//!
+//! A fixed-base tree's fetch-bound ∂q̈ = −M⁻¹ ∂τ/∂x splits the same way: M is
+//! block-diagonal across the subtrees hanging from the base (no joint in common), so each
+//! subtree's `q̈ = M_s⁻¹ (τ_s − h_s)`, its pivots, its rows of `∂q̈/∂q`, `∂q̈/∂q̇` and `M⁻¹` are
+//! its own problem, with its own directions ([`solved_groups`]: Baxter's head and arms; the
+//! Allegro hand's fingers, not fetch-bound, measured no faster apart). Each group's function
+//! `forward_dynamics_derivatives_rows1`, … also stores its `q̈` into `x_` and its rows into
+//! the trait's result, which the function compiled apart builds and returns, and returns
+//! whether its pivots are positive; the entries between subtrees stay zeros.
 
 use super::count::count;
 use super::emitter::Emitter;
 use super::expr::with_body;
 use super::impls::{call_arguments, signature, Counts};
 use super::lanes::{kept_factors, lane_operations};
-use super::names::{local, OUTPUT, PARAMETERS};
+use super::names::{local, OUTPUT, PARAMETERS, SOLUTION};
 use super::parts::{Body, Context, OpCount, Output, Part};
+use super::plan::Place;
 use crate::symbolic::tangent::FETCH_BOUND_OPERATIONS;
 use crate::symbolic::{NodeId, Of, Tangents, BLOCK};
-use crate::trace::{Equations, Shape};
+use crate::trace::{Equations, Shape, Solved};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
-/// The groups of rows of `plans` (one mask of rows each, in the order of their first row)
-/// whose tangents share no direction, by `q` or by `q̇`, where a plan is fetch-bound; none
-/// otherwise. A row whose tangents are zero belongs to none.
+/// The groups of rows of `∂τ`'s `plans` ([`independent_rows`]) where a plan is fetch-bound;
+/// none otherwise.
 pub(super) fn row_groups(plans: &[Option<Tangents>]) -> Vec<Vec<bool>> {
-    let plans: Vec<&Tangents> = plans.iter().flatten().collect();
-    let fetch_bound = plans
+    if !fetch_bound(plans) {
+        return Vec::new();
+    }
+    independent_rows(plans)
+}
+
+/// Whether a plan passes [`FETCH_BOUND_OPERATIONS`] in blocks of eight.
+fn fetch_bound(plans: &[Option<Tangents>]) -> bool {
+    plans
         .iter()
-        .any(|p| p.block_operations(BLOCK) > FETCH_BOUND_OPERATIONS);
+        .flatten()
+        .any(|p| p.block_operations(BLOCK) > FETCH_BOUND_OPERATIONS)
+}
+
+/// The groups of rows of `∂q̈`'s `plans` ([`independent_rows`]) where a plan is fetch-bound,
+/// there are several and every row is in one: a fixed-base tree's subtrees hanging from the
+/// base, whose block of M is their own, so that `q̈`, its pivots and its derivatives are each
+/// subtree's own problem.
+pub(super) fn solved_groups(plans: &[Option<Tangents>]) -> Vec<Vec<bool>> {
+    if !fetch_bound(plans) {
+        return Vec::new();
+    }
+    let groups = independent_rows(plans);
+    let rows = groups.first().map_or(0, Vec::len);
+    let covered = (0..rows).all(|i| groups.iter().any(|g| g[i]));
+    if groups.len() > 1 && covered {
+        groups
+    } else {
+        Vec::new()
+    }
+}
+
+/// The groups of rows of `plans` (one mask of rows each, in the order of their first row)
+/// whose tangents share no direction, by `q` or by `q̇`. A row whose tangents are zero belongs
+/// to none.
+fn independent_rows(plans: &[Option<Tangents>]) -> Vec<Vec<bool>> {
+    let plans: Vec<&Tangents> = plans.iter().flatten().collect();
     let Some(first) = plans.first() else {
         return Vec::new();
     };
-    if !fetch_bound {
-        return Vec::new();
-    }
     let (directions, rows) = (first.directions, first.outputs.len());
     let mut sets = Sets::new(directions);
     // Per plan, per lane, one direction it can be nonzero in, its others joined to it.
@@ -146,7 +185,9 @@ pub(super) fn local_layout(
 }
 
 /// The lanes' branch of `output`'s body: its result's zeros, each group's function called on
-/// them (`parts`), the result returned.
+/// them (`parts`), the result returned. `∂q̈`'s groups store `q̈` too and say whether their
+/// pivots are positive: the trait's result, `Ok` where all are, is returned from the function
+/// compiled apart.
 pub(super) fn split(eq: &Equations, ctx: &Context, output: &Output, parts: &[Part]) -> Body {
     let y = local(OUTPUT);
     let (p, arguments) = (&ctx.parameters, call_arguments(output.method));
@@ -157,16 +198,42 @@ pub(super) fn split(eq: &Equations, ctx: &Context, output: &Output, parts: &[Par
             _ => 0,
         }),
     );
-    let calls = parts.iter().map(|part| {
-        let name = part_name(part);
-        quote!(#name(#p, #arguments, &mut #y);)
-    });
-    Body {
-        tokens: quote! {
+    let names = parts.iter().map(part_name);
+    let tokens = if parts.iter().any(|part| part.solved) {
+        // The trait's result built where the groups store into it, and returned from the
+        // function compiled apart: stored into locals and converted, Baxter's 9 kB were
+        // copied five times a call (docs/performance.md, 2026-11-30).
+        let (r, d, positive) = (local("r_"), local("d_"), local("positive_"));
+        let calls = names.map(|name| {
+            let blocks = quote!([&mut #d.dqdd_dq, &mut #d.dqdd_dqd, &mut #d.dqdd_dtau]);
+            quote!(#name(#p, #arguments, &mut #d.qdd, #blocks))
+        });
+        quote! {
+            let mut #r = ::core::result::Result::Ok(ForwardDynamicsDerivatives::from_parts((
+                [T::ZERO; #n],
+                [[[T::ZERO; #n]; #n]; #count],
+            )));
+            let mut #positive = false;
+            if let ::core::result::Result::Ok(#d) = &mut #r {
+                // `&`, not `&&`: every group stores its rows.
+                #positive = #(#calls)&*;
+            }
+            return if #positive {
+                #r
+            } else {
+                ::core::result::Result::Err(NotPositiveDefinite)
+            };
+        }
+    } else {
+        let calls = names.map(|name| quote!(#name(#p, #arguments, &mut #y);));
+        quote! {
             let mut #y = [[[T::ZERO; #n]; #n]; #count];
             #(#calls)*
             #y
-        },
+        }
+    };
+    Body {
+        tokens,
         ops: split_ops(eq, ctx, &output.shape),
         zeros: None,
         lanes: true,
@@ -196,9 +263,44 @@ impl Emitter<'_> {
     /// group of rows, the factors of the lanes it keeps.
     pub(super) fn lane_outputs(&self, shape: &Shape) -> Vec<NodeId> {
         match (&self.kept, shape) {
-            (Some(kept), Shape::Lanes { lanes, .. }) => kept_factors(lanes, kept),
+            (Some(kept), Shape::Lanes { lanes, solved, .. }) => {
+                let mut nodes = solved.map_or_else(Vec::new, |s| self.own_solved(&s));
+                nodes.extend(kept_factors(lanes, kept));
+                nodes
+            }
             _ => shape.lane_outputs(),
         }
+    }
+
+    /// Of a group of `∂q̈`'s rows: its pivots, then its rows' `q̈`.
+    fn own_solved(&self, solved: &Solved) -> Vec<NodeId> {
+        let rows = self.rows.as_deref().unwrap_or_default();
+        let own = solved.vector.iter().zip(rows).filter(|(_, &row)| row);
+        let vector = own.map(|(&id, _)| id);
+        solved.pivots.iter().copied().chain(vector).collect()
+    }
+
+    /// The end of a group's function: nothing for ∂τ's; for ∂q̈'s, its rows' `q̈` stored into
+    /// `x_` and whether its pivots are positive.
+    pub(super) fn group_result(&mut self, shape: &Shape) -> TokenStream {
+        let Shape::Lanes {
+            solved: Some(solved),
+            ..
+        } = shape
+        else {
+            return TokenStream::new();
+        };
+        let x = local(SOLUTION);
+        let rows = self.rows.clone().unwrap_or_default();
+        let own = solved.vector.iter().enumerate().filter(|&(i, _)| rows[i]);
+        let stores: Vec<TokenStream> = own
+            .map(|(i, &id)| {
+                let (i, value) = (Literal::usize_unsuffixed(i), self.expr(id, Place::Top));
+                quote!(#x[#i] = #value;)
+            })
+            .collect();
+        let positive = self.positive(solved.pivots).unwrap_or_else(|| quote!(true));
+        quote!(#(#stores)* #positive)
     }
 }
 
@@ -215,9 +317,20 @@ pub(super) fn part_function(
     let (p, y) = (local(PARAMETERS), local(OUTPUT));
     let scalar = Ident::new("T", Span::call_site());
     let (args, ret) = signature(part.method, counts, &scalar, krate, true);
-    let head = quote! {
-        #[inline(never)]
-        pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+    let head = if part.solved {
+        let (x, n) = (local(SOLUTION), &counts.joints);
+        let count = Literal::usize_unsuffixed(part.matrices);
+        quote! {
+            #[inline(never)]
+            pub(super) fn #name<T: #krate::Real>(
+                #p: &[T; #k], #args, #x: &mut [T; #n], #y: [&mut [[T; #n]; #n]; #count]
+            ) -> bool
+        }
+    } else {
+        quote! {
+            #[inline(never)]
+            pub(super) fn #name<T: #krate::Real>(#p: &[T; #k], #args, #y: &mut #ret)
+        }
     };
     let mut body = quote!(align_stack::<T>(););
     body.extend(part.tokens.clone());

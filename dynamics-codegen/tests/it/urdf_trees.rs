@@ -224,3 +224,25 @@ fn baxter_comes_in_with_its_mimic_fingers_and_without_them() {
     // The head and the two grippers' frames at twenty samples.
     assert_eq!(check_tip_poses(&robot, &data, &keep), 60);
 }
+
+/// A fixed-base tree's fetch-bound ∂q̈ in lanes is one function per subtree hanging from the
+/// base (their blocks of M are their own): Baxter's head and two arms. The Allegro hand's
+/// (four fingers, not fetch-bound: apart they measured no faster) and the Panda with free
+/// fingers' (whose fingers share the arm's joints) keep one function.
+#[test]
+fn a_trees_forward_derivatives_by_subtree() {
+    use dynamics_codegen::{Family, FamilySet};
+    let families = FamilySet::default().with(Family::Derivatives);
+    let functions = |urdf: &str, tips: &[&str]| {
+        let loaded = load(urdf, tips).expect("loads");
+        let items = loaded.rust_module(families, None).expect("a module").items;
+        let items = items.to_string();
+        (1..=5)
+            .take_while(|k| items.contains(&format!("fn forward_dynamics_derivatives_rows{k}")))
+            .count()
+    };
+    assert_eq!(functions("allegro_right_hand", &[]), 0);
+    let tips = ["head", "right_gripper", "left_gripper"];
+    assert_eq!(functions("baxter", &tips), 3);
+    assert_eq!(functions("panda_free_fingers", &[]), 0);
+}

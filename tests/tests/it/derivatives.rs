@@ -5,9 +5,9 @@
 //!   a positive definite M;
 //! * against central differences of the generated `inverse_dynamics` and `forward_dynamics`,
 //!   on the same robots and on the friction arm (Coulomb smoothed on joint 2), in `f64`; `f32`
-//!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ on Baxter with
-//!   free fingers (19 joints, its ∂τ in lanes one function per arm), and against the same
-//!   states in `F64x4` (the columns one by one) to 1e-12;
+//!   against `f64`; on a tree of nine joints (the Panda with free fingers); ∂τ and ∂q̈ on
+//!   Baxter with free fingers (19 joints, in lanes one function per arm, and per subtree for
+//!   ∂q̈), and against the same states in `F64x4` (the columns one by one) to 1e-12;
 //! * the friction arm's `∂τ/∂q̇` by hand: `2 C` plus the viscous slope, plus `f_c/ε sech²(q̇/ε)`
 //!   where smoothed (the plain Coulomb step is flat away from 0);
 //! * on random robots ([`dynamics_tests::random::case`]), the expression graph interpreted:
@@ -160,20 +160,16 @@ fn a_tree_against_central_differences() {
 )]
 struct BaxterFreeFingers;
 
+/// Its ∂q̈ (in lanes, one function per subtree hanging from the base: the head and each arm
+/// with its fingers) too: every subtree's rows, `q̈` and pivots must be there.
 #[test]
 fn a_dual_arm_against_central_differences() {
     let robot = BaxterFreeFingers;
     let mut worst = 0.0f64;
     for seed in 0..5 {
-        let [q, qd, qdd] = state::<19>(seed);
-        let inverse = robot.inverse_dynamics_derivatives(&q, &qd, &qdd);
-        let by_q = central(q, |x| robot.inverse_dynamics(&x, &qd, &qdd));
-        let by_qd = central(qd, |x| robot.inverse_dynamics(&q, &x, &qdd));
-        worst = worst
-            .max(scaled_error(&flat(inverse.dtau_dq), &flat(by_q)))
-            .max(scaled_error(&flat(inverse.dtau_dqd), &flat(by_qd)));
+        worst = worst.max(against_differences(&robot, state::<19>(seed)).0);
     }
-    println!("Baxter with free fingers: ∂τ against central differences {worst:.1e}");
+    println!("Baxter with free fingers: ∂τ and ∂q̈ against central differences {worst:.1e}");
     assert!(worst < 1e-5, "{worst:e}");
 }
 
@@ -200,6 +196,15 @@ fn dual_arm_in_lanes_against_the_columns() {
     let singles: [_; 4] = core::array::from_fn(|l| {
         robot.inverse_dynamics_derivatives(&q.singles[l], &qd.singles[l], &qdd.singles[l])
     });
+    // ∂q̈ at the torques of those accelerations: one function per subtree in lanes.
+    let tau = robot.inverse_dynamics(&q.lanes, &qd.lanes, &qdd.lanes);
+    let forward = robot.forward_dynamics_derivatives(&q.lanes, &qd.lanes, &tau);
+    let forward = forward.expect("M ≻ 0");
+    let forward_singles: [_; 4] = core::array::from_fn(|l| {
+        let tau = robot.inverse_dynamics(&q.singles[l], &qd.singles[l], &qdd.singles[l]);
+        let forward = robot.forward_dynamics_derivatives(&q.singles[l], &qd.singles[l], &tau);
+        forward.expect("M ≻ 0")
+    });
     if routes_differ::<F64x4, 4>() {
         close(
             "Baxter's inverse_dynamics_derivatives",
@@ -207,8 +212,19 @@ fn dual_arm_in_lanes_against_the_columns() {
             &singles,
             1e-12,
         );
+        close(
+            "Baxter's forward_dynamics_derivatives",
+            forward,
+            &forward_singles,
+            1e-12,
+        );
     } else {
         same("Baxter's inverse_dynamics_derivatives", lanes, &singles);
+        same(
+            "Baxter's forward_dynamics_derivatives",
+            forward,
+            &forward_singles,
+        );
     }
 }
 
