@@ -92,6 +92,40 @@ fn wrenches(c: &Value, key: &str) -> Vec<f64> {
 /// `float`, its results printed as `c_support::parse` reads them.
 pub fn calls(name: &str, data: &Data, nv: usize) -> String {
     let (nq, frames) = (nv + 1, data.frames.len());
+    let mut c = declarations(data, nv);
+    for (call, out, len, status) in called(nv, frames) {
+        let call = call
+            .replace("{nv}", &nv.to_string())
+            .replace("{nq}", &nq.to_string())
+            .replace("{frames}", &frames.to_string());
+        let assign = if status { "r = " } else { "r = 0; " };
+        let show = if out.ends_with("_f") {
+            "show_f32"
+        } else {
+            "show"
+        };
+        let ty = if out.ends_with("_f") {
+            "float"
+        } else {
+            "double"
+        };
+        c.push_str(&format!(
+            "            {assign}{name}_{call};\n            \
+             {show}(\"{out}:0\", s, r, (const {ty} *){out}, {len});\n"
+        ));
+    }
+    c.push_str(&format!(
+        "            show(\"lambda:0\", s, r, (const double *)lambda, {});\n            \
+         show_f32(\"lambda_f:0\", s, r, (const float *)lambda_f, {});\n        }}\n",
+        3 * frames,
+        3 * frames
+    ));
+    c
+}
+
+/// The block's opening: the data's inputs beyond the driver's and the results' arrays.
+fn declarations(data: &Data, nv: usize) -> String {
+    let (nq, frames) = (nv + 1, data.frames.len());
     let mut c = "        {\n".to_owned();
     c.push_str(&table("double", "tau_rnea", &data.states, |s| {
         flat(&s["tau"])
@@ -124,7 +158,15 @@ pub fn calls(name: &str, data: &Data, nv: usize) -> String {
 ",
         w = 6 * frames
     ));
-    let lines = [
+    c
+}
+
+/// Each call (its text after the prefix, `{nv}`, `{nq}`, `{frames}` to fill in), the array it
+/// prints, its length, and whether it returns a status.
+#[allow(clippy::too_many_lines)] // A table, one call a row.
+fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool); 22] {
+    let nq = nv + 1;
+    [
         ("center_of_mass(q[s], com)", "com", 3, false),
         ("center_of_mass_jacobian(q[s], jcom)", "jcom", 3 * nv, false),
         ("centroidal_momentum_matrix(q[s], ag)", "ag", 6 * nv, false),
@@ -212,35 +254,7 @@ pub fn calls(name: &str, data: &Data, nv: usize) -> String {
         ),
         ("integrate_f32(q_f, dv_f, qn_f)", "qn_f", nq, false),
         ("difference_f32(q_f, q1_f, dq_f)", "dq_f", nv, false),
-    ];
-    for (call, out, len, status) in lines {
-        let call = call
-            .replace("{nv}", &nv.to_string())
-            .replace("{nq}", &nq.to_string())
-            .replace("{frames}", &frames.to_string());
-        let assign = if status { "r = " } else { "r = 0; " };
-        let show = if out.ends_with("_f") {
-            "show_f32"
-        } else {
-            "show"
-        };
-        let ty = if out.ends_with("_f") {
-            "float"
-        } else {
-            "double"
-        };
-        c.push_str(&format!(
-            "            {assign}{name}_{call};\n            \
-             {show}(\"{out}:0\", s, r, (const {ty} *){out}, {len});\n"
-        ));
-    }
-    c.push_str(&format!(
-        "            show(\"lambda:0\", s, r, (const double *)lambda, {});\n            \
-         show_f32(\"lambda_f:0\", s, r, (const float *)lambda_f, {});\n        }}\n",
-        3 * frames,
-        3 * frames
-    ));
-    c
+    ]
 }
 
 /// Checks what the driver of [`calls`] printed (by compiler `label`).

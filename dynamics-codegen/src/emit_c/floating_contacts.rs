@@ -18,6 +18,7 @@ use super::floating_extras::parameters;
 use crate::trace::Equations;
 
 /// The three functions in precision `p`, for a robot of `frames` frames.
+#[allow(clippy::too_many_lines)] // One C text, read as C.
 pub(super) fn functions(eq: &Equations, frames: usize, prefix: &str, p: Precision) -> String {
     let ty = p.c_type();
     let sfx = p.suffix();
