@@ -17,10 +17,12 @@
 //! * the configuration space (`configuration.rs`): `integrate` and `difference`.
 //!
 //! The generated bodies are written as the table's functions' are (`body.rs`), the element
-//! names of a carrier method left out (they would describe another output).
+//! names of a carrier method left out (they would describe another output). Each has a batch
+//! twin (`floating_batch.rs`).
 
 use super::body::Writer;
 use super::expr::Precision;
+use super::floating_batch::Signature;
 use crate::method::Method;
 use crate::trace::{Equations, FloatingContactEquations, FloatingKinematicEquations, Shape};
 
@@ -158,7 +160,109 @@ pub(super) fn extras(
     if extras.configuration {
         text.push_str(&super::configuration::functions(eq.dof, prefix));
     }
+    let signatures = signatures(eq, extras);
+    if !signatures.is_empty() {
+        text.push_str(&super::floating_batch::section(
+            &signatures,
+            prefix,
+            eq.fields.len(),
+        ));
+    }
     text
+}
+
+/// The extras' signatures, for their batch twins.
+fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
+    let (nq, nv) = (eq.dof + 1, eq.dof);
+    let state = |names: [&'static str; 3]| {
+        let lengths = [nq, nv, nv];
+        names
+            .into_iter()
+            .zip(lengths)
+            .map(|(name, len)| (name, len, vec![], false))
+            .collect::<Vec<_>>()
+    };
+    let mut signatures = Vec::new();
+    if let Some(k) = extras.kinematics {
+        for (name, shape, with_v) in kinematic_outputs(k) {
+            let mut inputs = state(["q", "qd", "qd"]);
+            inputs.truncate(if with_v { 2 } else { 1 });
+            signatures.push(Signature {
+                name,
+                inputs,
+                outputs: vec![("out", dimensions(&shape))],
+                status: false,
+            });
+        }
+    }
+    if let (Some(c), Some(k)) = (extras.contacts, extras.kinematics) {
+        let frames = k.frame_names.len();
+        let width = c.free.len();
+        let wrenches = ("wrenches", 6 * frames, vec![6], false);
+        let with = |mut inputs: Vec<_>, extra| {
+            inputs.push(extra);
+            inputs
+        };
+        signatures.extend([
+            Signature {
+                name: "contact_terms",
+                inputs: state(["q", "qd", "tau"]),
+                outputs: vec![
+                    ("accelerations", vec![width]),
+                    ("rows", vec![3 * frames, width]),
+                ],
+                status: true,
+            },
+            Signature {
+                name: "inverse_dynamics_with_wrenches",
+                inputs: with(state(["q", "qd", "qdd"]), wrenches.clone()),
+                outputs: vec![("tau", vec![nv])],
+                status: false,
+            },
+            Signature {
+                name: "forward_dynamics_with_wrenches",
+                inputs: with(state(["q", "qd", "tau"]), wrenches),
+                outputs: vec![("qdd", vec![nv])],
+                status: true,
+            },
+            Signature {
+                name: "contact_dynamics",
+                inputs: with(
+                    state(["q", "qd", "tau"]),
+                    ("in_contact", frames, vec![], true),
+                ),
+                outputs: vec![("qdd", vec![nv]), ("forces", vec![frames, 3])],
+                status: true,
+            },
+        ]);
+    }
+    if extras.configuration {
+        signatures.extend([
+            Signature {
+                name: "integrate",
+                inputs: vec![("q", nq, vec![], false), ("v", nv, vec![], false)],
+                outputs: vec![("out", vec![nq])],
+                status: false,
+            },
+            Signature {
+                name: "difference",
+                inputs: vec![("q0", nq, vec![], false), ("q1", nq, vec![], false)],
+                outputs: vec![("out", vec![nv])],
+                status: false,
+            },
+        ]);
+    }
+    signatures
+}
+
+/// The dimensions of a kinematic output's array.
+fn dimensions(shape: &Shape) -> Vec<usize> {
+    match *shape {
+        Shape::Vector(v) => vec![v.len()],
+        Shape::Matrix(m) => vec![m.len(), m[0].len()],
+        Shape::Stack(s) => vec![s.len(), s[0].len(), s[0][0].len()],
+        _ => unreachable!("the kinematic outputs are vectors, matrices and stacks"),
+    }
 }
 
 /// `#define SOLO12_FRAMES 4`, `#define SOLO12_FRAME_FL_FOOT 0`: the frames' count and each
@@ -202,12 +306,10 @@ impl Generated {
         let ty = p.c_type();
         let (nq, nv) = (eq.dof + 1, eq.dof);
         let array = "out";
-        let dims: String = match shape {
-            Shape::Vector(v) => format!("[{}]", v.len()),
-            Shape::Matrix(m) => format!("[{}][{}]", m.len(), m[0].len()),
-            Shape::Stack(s) => format!("[{}][{}][{}]", s.len(), s[0].len(), s[0][0].len()),
-            _ => unreachable!("the kinematic outputs are vectors, matrices and stacks"),
-        };
+        let dims: String = dimensions(&shape)
+            .iter()
+            .map(|d| format!("[{d}]"))
+            .collect();
         let mut arguments = parameters(eq, p);
         arguments.push(format!("const {ty} q[{nq}]"));
         if self.with_v {

@@ -45,6 +45,7 @@ pub mod batch;
 mod body;
 mod configuration;
 mod expr;
+mod floating_batch;
 mod floating_contacts;
 mod floating_extras;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
