@@ -5,7 +5,7 @@ import math
 import numbers
 import os
 
-from . import _compiled, _configuration, _native
+from . import _compiled, _configuration, _floating, _native
 from ._errors import generator_error
 from ._methods import Method
 from ._parameters import Parameters
@@ -73,11 +73,21 @@ class Robot:
             by_method.setdefault(signature["method"], []).append(signature)
         for name, signatures in by_method.items():
             setattr(self, name, Method(self, library, signatures, self._parameters))
+        # A floating base's frames (its kinematics' and contacts'), in their results' order.
+        self.frames = tuple(generated["frames"])
         if self.floating:
             # The same for every robot: the runtime's, not the header's.
             for name, method in _configuration.methods(self, _native).items():
                 by_method[name] = method
                 setattr(self, name, method)
+            # The header's kinematics and contacts, called state by state (no batch twins);
+            # not yet for a robot with parameters, which they would take first.
+            if self.frames and not generated["fields"]:
+                prefix = generated["functions"][0]["name"].removesuffix(
+                    "_" + generated["functions"][0]["method"])
+                for name, method in _floating.methods(self, library, prefix).items():
+                    by_method[name] = method
+                    setattr(self, name, method)
         self.methods = tuple(by_method)
 
     @property

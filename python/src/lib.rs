@@ -36,7 +36,7 @@ create_exception!(
 /// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `joint_rows`, `text`, and
 /// `functions`, each a dict of its signature. With `floating`, the robot on a free-flying base
 /// (the derive's `base = floating`; no simplified models): `dof` is then the velocity's length,
-/// `n + 6`.
+/// `n + 6`, and the header has the kinematics and contacts of its `frames` too.
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
 #[allow(clippy::too_many_arguments)]
@@ -66,7 +66,13 @@ fn c_header(
                 pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
             let loaded = described.load()?;
             if floating {
-                return loaded.floating_c_header(families, None);
+                // The kinematics and contacts too: Python's users (MPC) ask for them.
+                let extra = pipeline::FloatingC {
+                    kinematics: true,
+                    contacts: true,
+                    configuration: false,
+                };
+                return loaded.floating_c_header_with(families, extra, None);
             }
             let asked = loaded
                 .simplification(&[])
@@ -82,6 +88,7 @@ fn c_header(
     out.set_item("floating", header.floating)?;
     out.set_item("fields", &header.fields)?;
     out.set_item("joint_rows", &header.joint_rows)?;
+    out.set_item("frames", &header.frames)?;
     out.set_item("text", &header.text)?;
     let functions = header
         .functions
