@@ -156,6 +156,8 @@ def methods(robot, library, prefix):
         ("frame_acceleration_biases_local", [q, v], (frames, 6), "the same in the frame's axes"),
     ]
     out = {spec[0]: FloatingMethod(robot, library, prefix, spec) for spec in kinematic}
+    if not hasattr(library, f"{prefix}_contact_dynamics_batch"):
+        return out
     out["inverse_dynamics_with_wrenches"] = WrenchMethod(robot, library, prefix, (
         "inverse_dynamics_with_wrenches", [q, v, ("a", nv)], (nv,),
         "tau = M a + h - sum_f J_f^T w_f (rnea with fext)"))

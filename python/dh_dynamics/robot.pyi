@@ -36,6 +36,7 @@ class Robot:
         parameters: Mapping[str, float] | None = None,
         check_inertia: bool = True,
         floating: bool = False,
+        contacts: bool = False,
     ) -> None: ...
     @classmethod
     def from_file(
@@ -46,6 +47,7 @@ class Robot:
         tool: Iterable[float] | None = None,
         parameters: Mapping[str, float] | None = None,
         floating: bool = False,
+        contacts: bool = False,
     ) -> Robot: ...
     @classmethod
     def from_urdf(
@@ -58,6 +60,7 @@ class Robot:
         families: str | Iterable[str] = (),
         check_inertia: bool = True,
         floating: bool = False,
+        contacts: bool = False,
     ) -> Robot: ...
     @property
     def parameters(self) -> Parameters: ...

@@ -36,11 +36,12 @@ create_exception!(
 /// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `joint_rows`, `text`, and
 /// `functions`, each a dict of its signature. With `floating`, the robot on a free-flying base
 /// (the derive's `base = floating`; no simplified models): `dof` is then the velocity's length,
-/// `n + 6`, and the header has the kinematics and contacts of its `frames` too.
+/// `n + 6`, and the header has the kinematics of its `frames` too (and with `contacts` their
+/// contacts).
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new(), floating=false))]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new(), floating=false, contacts=false))]
 fn c_header(
     py: Python<'_>,
     path: String,
@@ -51,6 +52,7 @@ fn c_header(
     check_inertia: bool,
     families: Vec<String>,
     floating: bool,
+    contacts: bool,
 ) -> PyResult<Bound<'_, PyDict>> {
     let described = Described {
         path,
@@ -66,10 +68,11 @@ fn c_header(
                 pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
             let loaded = described.load()?;
             if floating {
-                // The kinematics and contacts too: Python's users (MPC) ask for them.
+                // The kinematics too (Python's users, MPC, ask for them), the contacts where
+                // asked (their closed form triples the header's compile time).
                 let extra = pipeline::FloatingC {
                     kinematics: true,
-                    contacts: true,
+                    contacts,
                     configuration: false,
                 };
                 return loaded.floating_c_header_with(families, extra, None);

@@ -27,6 +27,11 @@ def solo():
 
 
 @pytest.fixture(scope="module")
+def solo_contacts():
+    return dh_dynamics.Robot.from_urdf(SOLO, floating=True, contacts=True)
+
+
+@pytest.fixture(scope="module")
 def model():
     return pin.buildModelFromUrdf(str(SOLO), pin.JointModelFreeFlyer())
 
@@ -176,9 +181,11 @@ def local_force(model, data, frame, wrench):
     return placement.act(pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:]))
 
 
-def test_contacts_match_pinocchio(solo, model):
+def test_contacts_match_pinocchio(solo, solo_contacts, model):
     """rnea and aba with fext at the feet, and constraintDynamics with some feet held
     (CONTACT_3D in LOCAL_WORLD_ALIGNED), against the header's contacts."""
+    assert not hasattr(solo, "contact_dynamics"), "contacts=True asks for them"
+    solo = solo_contacts
     data = model.createData()
     q, v, a, tau = random_states(model, 3, 48)
     rng = np.random.default_rng(49)
