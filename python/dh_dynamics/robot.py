@@ -5,15 +5,16 @@ import math
 import numbers
 import os
 
-from . import _compiled, _configuration, _native
+from . import _compiled, _configuration, _floating, _native
 from ._errors import generator_error
 from ._methods import Method
 from ._parameters import Parameters
 
 
-def _generate(source, families, floating):
+def _generate(source, families, floating, contacts):
     try:
-        return _native.c_header(**source, families=families, floating=floating)
+        return _native.c_header(**source, families=families, floating=floating,
+                                contacts=contacts)
     except _native.GeneratorError as error:
         raise generator_error(error) from None
 
@@ -46,7 +47,7 @@ class Robot:
     """
 
     def __init__(self, path, *, base=None, tip=None, tips=(), tool=None, families=(),
-                 parameters=None, check_inertia=True, floating=False):
+                 parameters=None, check_inertia=True, floating=False, contacts=False):
         # Where the description comes from, which `equations` reads again.
         self._source = {
             "path": os.fsdecode(path),
@@ -59,7 +60,9 @@ class Robot:
         families = _families(families)
         self._asked = set(families)
         self.floating = bool(floating)
-        generated = _generate(self._source, families, self.floating)
+        if contacts and not self.floating:
+            raise ValueError("contacts=True is a floating base's (floating=True)")
+        generated = _generate(self._source, families, self.floating, bool(contacts))
         self.name = generated["robot"]
         self.dof = generated["dof"]
         self.joint_rows = tuple(generated["joint_rows"])
@@ -73,11 +76,21 @@ class Robot:
             by_method.setdefault(signature["method"], []).append(signature)
         for name, signatures in by_method.items():
             setattr(self, name, Method(self, library, signatures, self._parameters))
+        # A floating base's frames (its kinematics' and contacts'), in their results' order.
+        self.frames = tuple(generated["frames"])
         if self.floating:
             # The same for every robot: the runtime's, not the header's.
             for name, method in _configuration.methods(self, _native).items():
                 by_method[name] = method
                 setattr(self, name, method)
+            # The header's kinematics and contacts, called state by state (no batch twins);
+            # not yet for a robot with parameters, which they would take first.
+            if self.frames and not generated["fields"]:
+                prefix = generated["functions"][0]["name"].removesuffix(
+                    "_" + generated["functions"][0]["method"])
+                for name, method in _floating.methods(self, library, prefix).items():
+                    by_method[name] = method
+                    setattr(self, name, method)
         self.methods = tuple(by_method)
 
     @property
@@ -98,7 +111,8 @@ class Robot:
         raise AttributeError(_missing_method(self, name))
 
     @classmethod
-    def from_file(cls, path, *, families=(), tool=None, parameters=None, floating=False):
+    def from_file(cls, path, *, families=(), tool=None, parameters=None, floating=False,
+                  contacts=False):
         """The robot of a description file (TOML or JSON, as ``#[dynamics(file = "...")]``
         reads it).
 
@@ -108,20 +122,23 @@ class Robot:
         none now and ``robot.parameters`` later. Raises ``DescriptionError`` with the file, line
         and column of a problem, ``ValueError`` for a missing or unknown parameter.
         ``floating=True``: the robot on a free-flying base, its body the file's ``[floating]``
-        table.
+        table; with ``contacts=True``, its contacts too (``contact_dynamics``, ...).
         """
-        return cls(path, tool=tool, families=families, parameters=parameters, floating=floating)
+        return cls(path, tool=tool, families=families, parameters=parameters, floating=floating,
+                   contacts=contacts)
 
     @classmethod
     def from_urdf(cls, path, base=None, tip=None, *, tips=(), families=(), check_inertia=True,
-                  floating=False):
+                  floating=False, contacts=False):
         """The robot of a URDF file: every moving joint below link ``base`` (by default the
         root link; a tree if they branch), or the chain to link ``tip``, or the branches that
         lead to the links ``tips``. ``check_inertia=False`` keeps published inertias whose
         principal moments break the triangle inequality. ``floating=True``: the robot on a
-        free-flying base, the root link (or ``base``) and the links fixed to it its body."""
+        free-flying base, the root link (or ``base``) and the links fixed to it its body;
+        ``contacts=True``, its contacts too (``contact_dynamics``, ...: their closed form
+        triples the header's compile time)."""
         return cls(path, base=base, tip=tip, tips=tips, families=families,
-                   check_inertia=check_inertia, floating=floating)
+                   check_inertia=check_inertia, floating=floating, contacts=contacts)
 
     def equations(self, latex=False, kinematics=False):
         """The equations of motion in the book's notation (``kinematics=True``: the hand's pose

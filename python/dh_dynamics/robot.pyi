@@ -19,6 +19,7 @@ class Robot:
     name: str
     dof: int
     floating: bool
+    frames: tuple[str, ...]
     joint_rows: tuple[int, ...]
     header: str
     methods: tuple[str, ...]
@@ -35,6 +36,7 @@ class Robot:
         parameters: Mapping[str, float] | None = None,
         check_inertia: bool = True,
         floating: bool = False,
+        contacts: bool = False,
     ) -> None: ...
     @classmethod
     def from_file(
@@ -45,6 +47,7 @@ class Robot:
         tool: Iterable[float] | None = None,
         parameters: Mapping[str, float] | None = None,
         floating: bool = False,
+        contacts: bool = False,
     ) -> Robot: ...
     @classmethod
     def from_urdf(
@@ -57,6 +60,7 @@ class Robot:
         families: str | Iterable[str] = (),
         check_inertia: bool = True,
         floating: bool = False,
+        contacts: bool = False,
     ) -> Robot: ...
     @property
     def parameters(self) -> Parameters: ...
@@ -254,3 +258,38 @@ class Robot:
         """Pinocchio's integrate: the configuration reached from q by the velocity v."""
     def difference(self, q0: ArrayLike, q1: ArrayLike) -> NDArray[np.floating[Any]]:
         """Pinocchio's difference: the velocity v with integrate(q0, v) = q1."""
+    # A floating base's kinematics and contacts (the header's, `_floating.py`), frames by name.
+    def center_of_mass(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """The centre of mass in the world (centerOfMass)."""
+    def center_of_mass_jacobian(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Its Jacobian, 3 x nv (jacobianCenterOfMass)."""
+    def centroidal_momentum_matrix(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
+        """A_G, 6 x nv (computeCentroidalMap)."""
+    def centroidal_momentum_bias(self, q: ArrayLike, v: ArrayLike) -> NDArray[np.floating[Any]]:
+        """dA_G/dt v."""
+    def frame_poses(self, q: ArrayLike) -> dict[str, NDArray[np.floating[Any]]]:
+        """Each frame's pose [R | p] in the world, 3 x 4 (oMf)."""
+    def frame_jacobians_world_aligned(self, q: ArrayLike) -> dict[str, NDArray[np.floating[Any]]]:
+        """Each frame's Jacobian in LOCAL_WORLD_ALIGNED, 6 x nv."""
+    def frame_jacobians_local(self, q: ArrayLike) -> dict[str, NDArray[np.floating[Any]]]:
+        """Each frame's Jacobian in LOCAL, 6 x nv."""
+    def frame_acceleration_biases_world_aligned(
+        self, q: ArrayLike, v: ArrayLike
+    ) -> dict[str, NDArray[np.floating[Any]]]:
+        """Each frame origin's classical acceleration at a = 0, world axes: Jd v."""
+    def frame_acceleration_biases_local(
+        self, q: ArrayLike, v: ArrayLike
+    ) -> dict[str, NDArray[np.floating[Any]]]:
+        """The same in the frame's own axes."""
+    def inverse_dynamics_with_wrenches(
+        self, q: ArrayLike, v: ArrayLike, a: ArrayLike, wrenches: Mapping[str, ArrayLike]
+    ) -> NDArray[np.floating[Any]]:
+        """tau = M a + h - sum_f J_f^T w_f, wrenches [f, m] (or forces f) by frame name."""
+    def forward_dynamics_with_wrenches(
+        self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, wrenches: Mapping[str, ArrayLike]
+    ) -> NDArray[np.floating[Any]]:
+        """a = M^-1 (tau - h + sum_f J_f^T w_f)."""
+    def contact_dynamics(
+        self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, in_contact: Iterable[str]
+    ) -> tuple[NDArray[np.floating[Any]], dict[str, NDArray[np.floating[Any]]]]:
+        """The forward dynamics with the named frames' origins held: (a, forces by frame)."""

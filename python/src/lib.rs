@@ -36,11 +36,12 @@ create_exception!(
 /// models its file asks for (`[simplify]`), as a dict: `robot`, `dof`, `fields`, `joint_rows`, `text`, and
 /// `functions`, each a dict of its signature. With `floating`, the robot on a free-flying base
 /// (the derive's `base = floating`; no simplified models): `dof` is then the velocity's length,
-/// `n + 6`.
+/// `n + 6`, and the header has the kinematics of its `frames` too (and with `contacts` their
+/// contacts).
 #[pyfunction]
 // One argument per keyword of the Python signature, as pyo3 maps them.
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new(), floating=false))]
+#[pyo3(signature = (path, *, base=None, tip=None, tips=Vec::new(), tool=None, check_inertia=true, families=Vec::new(), floating=false, contacts=false))]
 fn c_header(
     py: Python<'_>,
     path: String,
@@ -51,6 +52,7 @@ fn c_header(
     check_inertia: bool,
     families: Vec<String>,
     floating: bool,
+    contacts: bool,
 ) -> PyResult<Bound<'_, PyDict>> {
     let described = Described {
         path,
@@ -66,7 +68,14 @@ fn c_header(
                 pipeline::families(&families).map_err(|d| vec![source::argument("families", d)])?;
             let loaded = described.load()?;
             if floating {
-                return loaded.floating_c_header(families, None);
+                // The kinematics too (Python's users, MPC, ask for them), the contacts where
+                // asked (their closed form triples the header's compile time).
+                let extra = pipeline::FloatingC {
+                    kinematics: true,
+                    contacts,
+                    configuration: false,
+                };
+                return loaded.floating_c_header_with(families, extra, None);
             }
             let asked = loaded
                 .simplification(&[])
@@ -82,6 +91,7 @@ fn c_header(
     out.set_item("floating", header.floating)?;
     out.set_item("fields", &header.fields)?;
     out.set_item("joint_rows", &header.joint_rows)?;
+    out.set_item("frames", &header.frames)?;
     out.set_item("text", &header.text)?;
     let functions = header
         .functions

@@ -27,6 +27,11 @@ def solo():
 
 
 @pytest.fixture(scope="module")
+def solo_contacts():
+    return dh_dynamics.Robot.from_urdf(SOLO, floating=True, contacts=True)
+
+
+@pytest.fixture(scope="module")
 def model():
     return pin.buildModelFromUrdf(str(SOLO), pin.JointModelFreeFlyer())
 
@@ -127,3 +132,90 @@ def test_the_equations_name_pinocchios_coordinates(solo):
     assert "M_{v_x v_x} &= " in solo.equations(latex=True)
     with pytest.raises(ValueError, match="kinematics"):
         solo.equations(kinematics=True)
+
+
+FEET = ("FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT")
+
+
+def test_kinematics_match_pinocchio(solo, model):
+    """The header's kinematics (frames by name) against centerOfMass, jacobianCenterOfMass,
+    computeCentroidalMap (and its time variation times v), oMf, getFrameJacobian and
+    getFrameClassicalAcceleration, in LOCAL_WORLD_ALIGNED and LOCAL."""
+    assert solo.frames == FEET
+    data = model.createData()
+    q, v, _, _ = random_states(model, 4, 47)
+    com, jcom = solo.center_of_mass(q), solo.center_of_mass_jacobian(q)
+    ag, bias = solo.centroidal_momentum_matrix(q), solo.centroidal_momentum_bias(q, v)
+    poses = solo.frame_poses(q)
+    jacobians = {"world": solo.frame_jacobians_world_aligned(q),
+                 "local": solo.frame_jacobians_local(q)}
+    drifts = {"world": solo.frame_acceleration_biases_world_aligned(q, v),
+              "local": solo.frame_acceleration_biases_local(q, v)}
+    assert com.shape == (4, 3) and ag.shape == (4, 6, 18) and poses["FL_FOOT"].shape == (4, 3, 4)
+    references = {"world": pin.LOCAL_WORLD_ALIGNED, "local": pin.LOCAL}
+    for s in range(4):
+        checks = [(com[s], pin.centerOfMass(model, data, q[s])),
+                  (jcom[s], pin.jacobianCenterOfMass(model, data, q[s])),
+                  (ag[s], pin.computeCentroidalMap(model, data, q[s])),
+                  (bias[s], pin.computeCentroidalMapTimeVariation(model, data, q[s], v[s]) @ v[s])]
+        pin.forwardKinematics(model, data, q[s], v[s], np.zeros(model.nv))
+        pin.updateFramePlacements(model, data)
+        pin.computeJointJacobians(model, data, q[s])
+        for name in FEET:
+            i = model.getFrameId(name)
+            checks.append((poses[name][s], data.oMf[i].homogeneous[:3]))
+            for key, ref in references.items():
+                checks.append((jacobians[key][name][s], pin.getFrameJacobian(model, data, i, ref)))
+                checks.append((drifts[key][name][s],
+                               pin.getFrameClassicalAcceleration(model, data, i, ref).vector))
+        for k, (got, want) in enumerate(checks):
+            assert scaled_error(got, want) <= TOLERANCE, (s, k)
+    # One state alone is the batch's.
+    assert np.array_equal(solo.frame_poses(q[2])["HR_FOOT"], poses["HR_FOOT"][2])
+
+
+def local_force(model, data, frame, wrench):
+    """A wrench [f, m] at the frame's origin in world axes as Pinocchio's fext on its joint."""
+    placement = model.frames[frame].placement
+    rotation = data.oMf[frame].rotation
+    return placement.act(pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:]))
+
+
+def test_contacts_match_pinocchio(solo, solo_contacts, model):
+    """rnea and aba with fext at the feet, and constraintDynamics with some feet held
+    (CONTACT_3D in LOCAL_WORLD_ALIGNED), against the header's contacts."""
+    assert not hasattr(solo, "contact_dynamics"), "contacts=True asks for them"
+    solo = solo_contacts
+    data = model.createData()
+    q, v, a, tau = random_states(model, 3, 48)
+    rng = np.random.default_rng(49)
+    held_sets = [("FL_FOOT", "HR_FOOT"), FEET, ("FR_FOOT",)]
+    for s in range(3):
+        wrenches = {name: rng.uniform(-10, 10, 6) for name in FEET[:3]}
+        pin.framesForwardKinematics(model, data, q[s])
+        fext = [pin.Force.Zero() for _ in range(model.njoints)]
+        for name, w in wrenches.items():
+            i = model.getFrameId(name)
+            fext[model.frames[i].parentJoint] += local_force(model, data, i, w)
+        want = pin.rnea(model, data, q[s], v[s], a[s], fext)
+        got = solo.inverse_dynamics_with_wrenches(q[s], v[s], a[s], wrenches)
+        assert scaled_error(got, want) <= TOLERANCE, s
+        want = pin.aba(model, data, q[s], v[s], tau[s], fext)
+        got = solo.forward_dynamics_with_wrenches(q[s], v[s], tau[s], wrenches)
+        assert scaled_error(got, want) <= TOLERANCE, s
+        held = held_sets[s]
+        models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model,
+                                           model.frames[model.getFrameId(f)].parentJoint,
+                                           model.frames[model.getFrameId(f)].placement,
+                                           pin.LOCAL_WORLD_ALIGNED) for f in held]
+        datas = [c.createData() for c in models]
+        pin.initConstraintDynamics(model, data, models, datas)
+        want = pin.constraintDynamics(model, data, q[s], v[s], tau[s], models, datas)
+        forces = data.lambda_c.reshape(-1, 3)
+        qdd, got = solo.contact_dynamics(q[s], v[s], tau[s], held)
+        assert scaled_error(qdd, want) <= TOLERANCE, s
+        for k, name in enumerate(held):
+            assert scaled_error(got[name], forces[k]) <= TOLERANCE, (s, name)
+        assert all(not got[name].any() for name in FEET if name not in held)
+    with pytest.raises(ValueError, match="no frame 'HAND'"):
+        solo.contact_dynamics(q[0], v[0], tau[0], ["HAND"])

@@ -125,7 +125,12 @@ def test_the_stub_matches_the_runtime(tmp_path):
     # methods, attached per robot at run time, are checked above.
     allowed = tmp_path / "generated.txt"
     # A floating base's, attached the same way (`floating=True`; `test_floating.py`).
-    floating = ["bias_forces", "generalized_gravity", "integrate", "difference"]
+    floating = ["bias_forces", "generalized_gravity", "integrate", "difference",
+                "center_of_mass", "center_of_mass_jacobian", "centroidal_momentum_matrix",
+                "centroidal_momentum_bias", "frame_poses", "frame_jacobians_world_aligned",
+                "frame_jacobians_local", "frame_acceleration_biases_world_aligned",
+                "frame_acceleration_biases_local", "inverse_dynamics_with_wrenches",
+                "forward_dynamics_with_wrenches", "contact_dynamics"]
     names = [name for name, _, _ in _native.methods()] + floating
     allowed.write_text("".join(f"dh_dynamics.robot.Robot.{name}\n" for name in names))
     report = mypy(tmp_path, "mypy.stubtest", "dh_dynamics", "--allowlist", str(allowed))

@@ -25,6 +25,19 @@ pub struct Emit {
     /// `[floating]` table is the body
     #[arg(long, conflicts_with_all = ["tip", "tips", "tool"])]
     pub floating: bool,
+    /// With --floating: also the kinematics (`FloatingKinematics`): centre of mass and its
+    /// Jacobian, A_G and Ȧ_G v, each frame's pose, Jacobians (LOCAL_WORLD_ALIGNED, LOCAL) and
+    /// J̇ v
+    #[arg(long, requires = "floating")]
+    pub kinematics: bool,
+    /// With --floating: also the contacts at the frames (with the kinematics): the contact
+    /// terms in closed form, `contact_dynamics` (point contacts held), the inverse and forward
+    /// dynamics with given wrenches
+    #[arg(long, requires = "floating")]
+    pub contacts: bool,
+    /// With --floating: also `integrate` and `difference` on the configuration space
+    #[arg(long, requires = "floating")]
+    pub configuration: bool,
 }
 
 /// The language `dynamics emit` writes.

@@ -5,6 +5,7 @@
 
 use super::{eval, load_with_request, simplification, Failure};
 use crate::args::{Emit, Lang};
+use dynamics_codegen::pipeline::FloatingC;
 
 /// The C header of the robot of `args`, as the front door writes it.
 fn c_header(args: &Emit) -> Result<String, Failure> {
@@ -23,8 +24,13 @@ fn c_header(args: &Emit) -> Result<String, Failure> {
 /// `--floating`: the C header of the robot on a free-flying base.
 fn floating_c_header(args: &Emit) -> Result<String, Failure> {
     let loaded = load_with_request(&args.robot)?;
+    let extra = FloatingC {
+        kinematics: args.kinematics,
+        contacts: args.contacts,
+        configuration: args.configuration,
+    };
     let header = loaded
-        .floating_c_header(args.families.set(), args.prefix.as_deref())
+        .floating_c_header_with(args.families.set(), extra, args.prefix.as_deref())
         .map_err(|d| {
             let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
             Failure::File(lines.join("\ndynamics: "))

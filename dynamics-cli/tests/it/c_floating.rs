@@ -10,9 +10,10 @@
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
 
+use crate::c_floating_extras as extras;
 use crate::c_support::{
     check_against_graph, compile_and_run_builds, emitted_header, families, printed, root,
-    scaled_error, Reach, Robot, State,
+    scaled_error, Reach, Robot, Run, State,
 };
 use dynamics_codegen::method::Method;
 use dynamics_codegen::pipeline::{self, Source};
@@ -21,7 +22,12 @@ use serde_json::Value;
 /// The robot of `file` on a free-flying base, its header written by `dynamics emit --lang c
 /// --floating` (with the opt-in families `with`), its equations traced in process.
 fn floating_robot(file: &str, with: &[&str]) -> Robot {
-    let header = emitted_header(file, &["--floating"], with);
+    floating_robot_with(file, &["--floating"], with)
+}
+
+/// [`floating_robot`], the command's options `options` (`--floating` and the extras').
+fn floating_robot_with(file: &str, options: &[&str], with: &[&str]) -> Robot {
+    let header = emitted_header(file, options, with);
     let path = root().join(file);
     let path = path.to_str().expect("a UTF-8 path");
     let loaded = pipeline::load(&Source::file(path)).expect("a valid description");
@@ -58,13 +64,13 @@ fn samples(data: &str) -> (Vec<Value>, Vec<State>) {
 
 /// Compiles and runs `robot`'s header at the states of `data` as far as `reach` says; checks
 /// every function against the graph and each of `table`'s (method, key of `data`) against
-/// Pinocchio's values.
-fn check(robot: &Robot, data: &str, reach: Reach, table: &[(Method, &str)]) {
+/// Pinocchio's values; the runs, for the checks of the functions beyond the table's.
+fn check(robot: &Robot, data: &str, reach: Reach, table: &[(Method, &str)]) -> Vec<Run> {
     let (samples, states) = samples(data);
     let runs = compile_and_run_builds(robot, &states, reach);
     if runs.is_empty() {
         eprintln!("no C compiler (gcc, clang, g++) found: the floating C header is not checked");
-        return;
+        return runs;
     }
     for run in &runs {
         check_against_graph(robot, &states, run);
@@ -82,6 +88,7 @@ fn check(robot: &Robot, data: &str, reach: Reach, table: &[(Method, &str)]) {
             }
         }
     }
+    runs
 }
 
 /// The methods every floating header has, and the data's key of each.
@@ -94,14 +101,61 @@ const DYNAMICS: [(Method, &str); 6] = [
     (Method::FloatingForwardDynamics, "a_fd"),
 ];
 
+/// Solo 12's header with the kinematics, the contacts and the configuration space too
+/// (`c_floating_extras.rs` checks them, in the same driver).
 #[test]
 fn solo12_floating_header_matches_pinocchio() {
-    let robot = floating_robot("robots/urdf/floating/solo12.urdf", &[]);
-    assert!(robot.header.contains("--floating"), "its command names it");
+    let options = [
+        "--floating",
+        "--kinematics",
+        "--contacts",
+        "--configuration",
+    ];
+    let mut robot = floating_robot_with("robots/urdf/floating/solo12.urdf", &options, &[]);
+    assert!(
+        robot
+            .header
+            .contains("--floating --kinematics --contacts --configuration"),
+        "its command names them"
+    );
     let signature = "_inverse_dynamics(const double q[19], const double qd[18], \
                      const double qdd[18], double tau[18])";
     assert!(robot.header.contains(signature), "{}", robot.header);
-    check(&robot, "solo12.json", Reach::Compilers, &DYNAMICS);
+    let upper = robot.name.to_ascii_uppercase();
+    assert!(robot
+        .header
+        .contains(&format!("#define {upper}_FRAME_HR_FOOT 3")));
+    let data = extras::solo12();
+    robot.calls = extras::calls(&robot.name, &data, robot.eq.dof);
+    for run in check(&robot, "solo12.json", Reach::Compilers, &DYNAMICS) {
+        extras::check(&run.printed, &run.label, &data);
+    }
+}
+
+/// The table's functions are the same text with the extras as without.
+#[test]
+fn the_extras_leave_the_tables_functions_as_they_are() {
+    let file = "robots/floating/solo12.toml";
+    let plain = emitted_header(file, &["--floating"], &[]);
+    let more = emitted_header(file, &["--floating", "--kinematics"], &[]);
+    // From the first function to the extras (the end of the guard where there are none).
+    let body = |h: &str| -> String {
+        let start = h
+            .find("#ifndef DYNAMICS_TRIG_H")
+            .expect("the sines' functions");
+        let end = h
+            .find("/* The frames of")
+            .or_else(|| h.find("#endif /* DYNAMICS_ROBOT_"))
+            .expect("the guard's end");
+        h[start..end].to_owned()
+    };
+    assert!(body(&plain) == body(&more), "the table's functions differ");
+    let refused = std::process::Command::new(env!("CARGO_BIN_EXE_dynamics"))
+        .args(["emit", "--lang", "c", file, "--kinematics"])
+        .current_dir(root())
+        .output()
+        .expect("run dynamics");
+    assert!(!refused.status.success(), "--kinematics needs --floating");
 }
 
 #[test]

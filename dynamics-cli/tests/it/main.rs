@@ -3,6 +3,7 @@
 //! --test it golden::` runs one file's tests.
 
 mod c_floating;
+mod c_floating_extras;
 mod c_header;
 mod c_parameters;
 mod c_support;

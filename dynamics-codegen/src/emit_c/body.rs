@@ -85,14 +85,28 @@ impl<'a> Writer<'a> {
     /// The body of `method`'s function: its locals, the stores into its output arrays (named
     /// `arrays`, as [`super::function::Function`] declares them) and its `return`; with
     /// `lanes`, the tangents of a method that plans them computed in lanes (`lanes.rs`).
-    pub(super) fn body(mut self, method: Method, arrays: &[String], lanes: bool) -> Body {
+    pub(super) fn body(self, method: Method, arrays: &[String], lanes: bool) -> Body {
         let shape = method.shape(self.eq);
         let shape = if lanes { shape } else { shape.scalar() };
+        self.body_of(method, shape, arrays, true)
+    }
+
+    /// The body of an output that is no method of the table (the floating base's kinematics
+    /// and contact terms, `floating_extras.rs`): `shape`, its elements unnamed (the carrier
+    /// `method`'s element names and comments would describe another output), else as
+    /// [`Writer::body`].
+    pub(super) fn anonymous_body(self, method: Method, shape: Shape, arrays: &[String]) -> Body {
+        self.body_of(method, shape, arrays, false)
+    }
+
+    fn body_of(mut self, method: Method, shape: Shape, arrays: &[String], named: bool) -> Body {
         self.mark(&shape.lane_outputs());
         self.bind_factors(&shape);
-        for (id, element) in output_names(&shape, method, |id| !self.is_operation(id)) {
-            self.names[id.index()] = Some(element.ident().to_string());
-            self.comments[id.index()] = Some(element.describe());
+        if named {
+            for (id, element) in output_names(&shape, method, |id| !self.is_operation(id)) {
+                self.names[id.index()] = Some(element.ident().to_string());
+                self.comments[id.index()] = Some(element.describe());
+            }
         }
         let pivots = pivots(&shape);
         for (j, &id) in pivots.iter().enumerate() {

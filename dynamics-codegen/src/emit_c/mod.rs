@@ -43,7 +43,11 @@
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod batch;
 mod body;
+mod configuration;
 mod expr;
+mod floating_batch;
+mod floating_contacts;
+mod floating_extras;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
 pub mod function;
 #[doc(hidden)] // Public for the generator's tests (tests/it/unit).
@@ -52,6 +56,7 @@ mod lanes;
 mod trig;
 
 pub use expr::Precision;
+pub use floating_extras::FloatingExtras;
 pub use function::{functions, Array, Function, Returns};
 
 use crate::method::{Family, Method};
@@ -77,7 +82,21 @@ pub fn prefix(robot: &str) -> String {
 /// `#error` that names the prefix, rather than define the first one's functions only.
 #[must_use]
 pub fn header(eq: &Equations, robot: &str, prefix: &str, command: &str) -> String {
-    let code = code(eq, prefix);
+    header_with(eq, &FloatingExtras::default(), robot, prefix, command)
+}
+
+/// [`header`] with a floating base's functions beyond the method table's, `extras`
+/// (`floating_extras.rs`), after the table's and their batch twins; the same text where
+/// there are none.
+#[must_use]
+pub fn header_with(
+    eq: &Equations,
+    extras: &FloatingExtras,
+    robot: &str,
+    prefix: &str,
+    command: &str,
+) -> String {
+    let code = code(eq, extras, prefix);
     let guard = format!("DYNAMICS_ROBOT_{prefix}_H");
     let hash = format!("{:#018x}u", fnv1a(code.as_bytes()));
     // Only the printable ASCII an #error's string may hold as it is.
@@ -88,7 +107,7 @@ pub fn header(eq: &Equations, robot: &str, prefix: &str, command: &str) -> Strin
             _ => '?',
         })
         .collect();
-    let mut text = preamble(eq, robot, prefix, command);
+    let mut text = preamble(eq, extras, robot, prefix, command);
     text.push_str(&format!(
         "/* A different header whose functions are also {prefix}_*, included before: refused,\n \
          * rather than one robot's functions silently standing for the other's. */\n\
@@ -119,17 +138,20 @@ fn fnv1a(bytes: &[u8]) -> u64 {
 
 /// What the guard of the header of `eq` holds: `<math.h>` where needed, the shared helpers and
 /// the functions named `{prefix}_{method}`.
-fn code(eq: &Equations, prefix: &str) -> String {
+fn code(eq: &Equations, extras: &FloatingExtras, prefix: &str) -> String {
     let functions = functions(eq, prefix);
+    let extra_outputs = extras.outputs(eq);
     // <math.h> for what the functions call besides sines and cosines (the tanh of smoothed
     // friction, a non-finite constant); without those, for `<math.h>`'s sines and cosines
     // only, so that with DYNAMICS_OWN_SINCOS the header builds where there is no C library
     // (a bare-metal compiler without newlib).
-    let math = if reads(eq, &functions, |node| match node {
-        Node::Tanh(_) => true,
-        Node::Const(c) => !c.to_f64().is_finite(),
-        _ => false,
-    }) {
+    // The configuration's functions call <math.h>'s square roots and arc tangents.
+    let math = if extras.configuration
+        || reads(eq, &functions, &extra_outputs, |node| match node {
+            Node::Tanh(_) => true,
+            Node::Const(c) => !c.to_f64().is_finite(),
+            _ => false,
+        }) {
         "#include <math.h>\n"
     } else {
         "#ifndef DYNAMICS_OWN_SINCOS\n#include <math.h>\n#endif\n"
@@ -144,7 +166,9 @@ fn code(eq: &Equations, prefix: &str) -> String {
         text.push('\n');
     }
     let sign = |p: Precision| format!("{prefix}_sign{}", p.suffix());
-    if reads(eq, &functions, |node| matches!(node, Node::Sign(_))) {
+    if reads(eq, &functions, &extra_outputs, |node| {
+        matches!(node, Node::Sign(_))
+    }) {
         for p in Precision::ALL {
             let (ty, zero) = (p.c_type(), p.literal(0.0));
             text.push_str(&format!(
@@ -161,6 +185,7 @@ fn code(eq: &Equations, prefix: &str) -> String {
         text.push('\n');
     }
     text.push_str(&batch::section(&functions));
+    text.push_str(&floating_extras::extras(eq, extras, prefix, sign));
     text
 }
 
@@ -282,11 +307,18 @@ fn joint_rows(eq: &Equations, prefix: &str) -> String {
     )
 }
 
-/// Whether a function reads a node that `wanted` picks (`Sign`: Coulomb friction).
-fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) -> bool {
+/// Whether a function (of the table's, or one reading the nodes `extra`) reads a node that
+/// `wanted` picks (`Sign`: Coulomb friction).
+fn reads(
+    eq: &Equations,
+    functions: &[Function],
+    extra: &[crate::symbolic::NodeId],
+    wanted: impl Fn(Node) -> bool,
+) -> bool {
     let outputs: Vec<_> = functions
         .iter()
         .flat_map(|f| f.method.shape(eq).outputs())
+        .chain(extra.iter().copied())
         .collect();
     let live = eq.graph.live(&outputs);
     eq.graph
@@ -295,13 +327,20 @@ fn reads(eq: &Equations, functions: &[Function], wanted: impl Fn(Node) -> bool) 
 }
 
 /// The header's opening comment: where it comes from, and the conventions of its functions.
-fn preamble(eq: &Equations, robot: &str, prefix: &str, command: &str) -> String {
+fn preamble(
+    eq: &Equations,
+    extras: &FloatingExtras,
+    robot: &str,
+    prefix: &str,
+    command: &str,
+) -> String {
     let mut lines = vec![
         format!("Generated by `{command}`; do not edit:"),
         "change the description file and run it again.".to_owned(),
         String::new(),
     ];
     lines.extend(conventions(eq, robot));
+    lines.extend(floating_extras::preamble(extras, prefix));
     lines.extend([
         String::new(),
         format!("The functions are {prefix}_*. A different header whose functions have the same"),

@@ -8,6 +8,37 @@ use crate::identifiers::c_prefix_problem;
 use crate::method::{Family, FamilySet};
 use crate::model::Simplification;
 
+/// What a floating base's C header holds beyond the method table's functions
+/// (`dynamics emit --lang c --floating --kinematics --contacts --configuration`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FloatingC {
+    /// The kinematics: the centre of mass, centroidal momentum, the frames' poses, Jacobians
+    /// and `J̇ v`.
+    pub kinematics: bool,
+    /// The contacts (with the kinematics): the contact terms in closed form, the constrained
+    /// forward dynamics, the dynamics with given wrenches.
+    pub contacts: bool,
+    /// `integrate` and `difference`.
+    pub configuration: bool,
+}
+
+impl FloatingC {
+    /// The command line's options that ask for them, for the header's first line.
+    fn options(self) -> String {
+        let mut options = String::new();
+        for (asked, option) in [
+            (self.kinematics, " --kinematics"),
+            (self.contacts, " --contacts"),
+            (self.configuration, " --configuration"),
+        ] {
+            if asked {
+                options.push_str(option);
+            }
+        }
+        options
+    }
+}
+
 /// A robot's C header and what a binding needs to call it: its functions' signatures.
 #[derive(Debug)]
 pub struct CHeader {
@@ -22,6 +53,9 @@ pub struct CHeader {
     pub joint_rows: Vec<usize>,
     /// Whether it is a floating base's (`base = floating`): `q` has `dof + 1` elements.
     pub floating: bool,
+    /// The frames of a floating base's kinematics and contacts, where the header has them
+    /// (`FloatingC`), in the order of their results; else none.
+    pub frames: Vec<String>,
     /// The header's text.
     pub text: String,
     /// Its functions, in the header's order.
@@ -47,7 +81,7 @@ impl Loaded {
             return Err(Diagnostic::of_caller(format!("prefix: {problem}")));
         }
         let eq = self.equations(families, simplification)?;
-        Ok(self.header_of(&eq, families, prefix, false))
+        Ok(self.header_of(&eq, families, prefix, None))
     }
 
     /// The C header of the robot on a free-flying base ([`Loaded::floating_equations_with`]
@@ -61,28 +95,62 @@ impl Loaded {
         families: FamilySet,
         prefix: Option<&str>,
     ) -> Result<CHeader, Vec<Diagnostic>> {
+        self.floating_c_header_with(families, FloatingC::default(), prefix)
+    }
+
+    /// [`Loaded::floating_c_header`] with the functions beyond the method table's that `extra`
+    /// asks for (the kinematics, the contacts, the configuration space:
+    /// [`emit_c::FloatingExtras`]), traced after the table's families, so that the table's
+    /// functions are the same text with or without them.
+    ///
+    /// # Errors
+    /// As [`Loaded::floating_c_header`].
+    pub fn floating_c_header_with(
+        &self,
+        families: FamilySet,
+        extra: FloatingC,
+        prefix: Option<&str>,
+    ) -> Result<CHeader, Vec<Diagnostic>> {
         if let Some(problem) = prefix.and_then(c_prefix_problem) {
             return Err(vec![Diagnostic::of_caller(format!("prefix: {problem}"))]);
         }
-        let eq = self.floating_equations_with(families)?;
-        Ok(self.header_of(&eq, families, prefix, true))
+        let mut eq = self.floating_equations_with(families)?;
+        let flyer = self.flyer.as_ref().map_err(Clone::clone)?;
+        // The contacts read the frames' Jacobians.
+        let kinematics = (extra.kinematics || extra.contacts)
+            .then(|| eq.floating_kinematics(&self.floating_frames_robot(), flyer));
+        let contacts = match (&kinematics, extra.contacts) {
+            (Some(k), true) => Some(eq.floating_contacts(k)),
+            _ => None,
+        };
+        let extras = emit_c::FloatingExtras {
+            kinematics: kinematics.as_ref(),
+            contacts: contacts.as_ref(),
+            configuration: extra.configuration,
+        };
+        Ok(self.header_of(&eq, families, prefix, Some((&extras, extra))))
     }
 
     /// The header of `eq`, these equations of the robot (on a free-flying base where
-    /// `floating`).
+    /// `floating` gives its extras and the options that asked for them).
     fn header_of(
         &self,
         eq: &crate::trace::Equations,
         families: FamilySet,
         prefix: Option<&str>,
-        floating: bool,
+        floating: Option<(&emit_c::FloatingExtras, FloatingC)>,
     ) -> CHeader {
         let name = &self.robot.name;
-        let command = self.emit_command(families, prefix, floating);
+        let mut command = self.emit_command(families, prefix, floating.is_some());
+        command.push_str(&floating.map_or_else(String::new, |(_, asked)| asked.options()));
         let prefix = prefix.map_or_else(|| emit_c::prefix(name), str::to_owned);
+        let extras = floating.map_or_else(emit_c::FloatingExtras::default, |(e, _)| *e);
         CHeader {
-            floating,
-            text: emit_c::header(eq, name, &prefix, &command),
+            frames: extras
+                .kinematics
+                .map_or_else(Vec::new, |k| k.frame_names.clone()),
+            floating: floating.is_some(),
+            text: emit_c::header_with(eq, &extras, name, &prefix, &command),
             functions: emit_c::functions(eq, &prefix),
             dof: eq.dof,
             fields: eq.fields.clone(),

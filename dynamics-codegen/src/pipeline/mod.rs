@@ -36,7 +36,7 @@ pub use crate::inspect::Format;
 /// The equations' graph, its leaves, and its outputs compiled to a tape that evaluates many
 /// states on any scalar (lanes of four, tangents): for drivers that evaluate outputs at run time.
 pub use crate::symbolic::{Graph, NodeId, Tape, TapeScalar, Var};
-pub use c_header::CHeader;
+pub use c_header::{CHeader, FloatingC};
 pub use diagnostic::Diagnostic;
 pub use evaluate::{State, Values};
 pub use families::{asked_by_name, families, opt_in_family};
@@ -130,6 +130,9 @@ pub struct Loaded {
     /// The body it flies on if its base floats: a URDF's root link (or `chain.base`) and the
     /// links fixed to it, a description file's `[floating]`; else why it has none.
     flyer: Result<FreeFlyer, Vec<Diagnostic>>,
+    /// A URDF loaded without named tips: its text, base link and inertia check, from which
+    /// [`Loaded::floating_frames_robot`] loads it again with its moving leaves as tips.
+    urdf: Option<(String, Option<String>, bool)>,
 }
 
 /// Reads the description of `source` and checks it as the derive does (values, then the
@@ -187,6 +190,11 @@ pub fn load(source: &Source<'_>) -> Result<Loaded, Vec<Diagnostic>> {
             path: path.to_owned(),
         },
         flyer,
+        urdf: (source.is_urdf() && source.chain.tip.is_none() && source.chain.tips.is_empty())
+            .then(|| {
+                let base = source.chain.base.map(str::to_owned);
+                (text.to_owned(), base, source.check_inertia)
+            }),
     })
 }
 
@@ -223,6 +231,27 @@ impl Loaded {
     pub fn floating_equations(&self) -> Result<Equations, Vec<Diagnostic>> {
         let flyer = self.floating_flyer()?;
         Ok(crate::trace::derive_floating(&self.robot, flyer))
+    }
+
+    /// The robot whose tip frames are a floating base's frames as the derive has them: a URDF
+    /// loaded without named tips again with its moving leaves as tips (the derive's
+    /// `front::floating_frames`: Solo 12's feet, links fixed below its lower legs), else the
+    /// robot as loaded. The same joints in the same order: only its tips differ.
+    pub(crate) fn floating_frames_robot(&self) -> std::borrow::Cow<'_, Robot> {
+        let Some((text, base, check_inertia)) = &self.urdf else {
+            return std::borrow::Cow::Borrowed(&self.robot);
+        };
+        let leaves = front::urdf::moving_leaves(text, base.as_deref());
+        let tips: Vec<&str> = leaves.iter().map(String::as_str).collect();
+        let chain = front::Chain {
+            base: base.as_deref(),
+            tip: None,
+            tips: &tips,
+        };
+        match front::load_urdf(&self.path, text, chain, *check_inertia) {
+            Ok(loaded) if !tips.is_empty() => std::borrow::Cow::Owned(loaded.robot),
+            _ => std::borrow::Cow::Borrowed(&self.robot),
+        }
     }
 
     /// The body the robot flies on, where a floating base supports the robot.

@@ -60,6 +60,9 @@ pub struct Robot {
     pub functions: Vec<Function>,
     /// The values of the robot's parameters (struct fields) the driver passes.
     pub params: Vec<f64>,
+    /// More of the driver's statements, at each state `s` after the functions' calls: those
+    /// of functions beyond the method table's (a floating base's kinematics, contacts).
+    pub calls: String,
 }
 
 impl Robot {
@@ -77,6 +80,7 @@ impl Robot {
             eq,
             functions,
             params,
+            calls: String::new(),
         }
     }
 
@@ -91,6 +95,7 @@ impl Robot {
             eq,
             functions,
             params: vec![],
+            calls: String::new(),
         }
     }
 }
@@ -248,6 +253,7 @@ pub fn driver(robot: &Robot, states: &[State]) -> String {
     for f in &robot.functions {
         c.push_str(&call(f));
     }
+    c.push_str(&robot.calls);
     c.push_str("    }\n");
     c.push_str(&batch::calls(robot, states.len()));
     c.push_str("    return 0;\n}\n");
