@@ -4,8 +4,10 @@
 //! every state, a status per state (`NULL` allowed) and the count of failures returned where
 //! the function returns a status. Behind `DYNAMICS_BATCH`, `DYNAMICS_BATCH_API` before each
 //! (the Python package exports them from its shared library).
+//! The parameters' argument of every such function is spelled here too ([`parameters`]).
 
 use super::expr::Precision;
+use crate::trace::Equations;
 
 /// One single-state function's signature, as its batch twin reads it.
 pub(super) struct Signature {
@@ -86,4 +88,13 @@ fn definition(s: &Signature, prefix: &str, parameters: usize, p: Precision) -> S
          {open}    size_t i;\n    for (i = 0; i < n; ++i) {{\n{body}    }}\n{close}}}\n\n",
         arguments.join(", ")
     )
+}
+
+/// `const double params[K]` where the robot has parameters (struct fields).
+pub(super) fn parameters(eq: &Equations, p: Precision) -> Vec<String> {
+    if eq.fields.is_empty() {
+        vec![]
+    } else {
+        vec![format!("const {} params[{}]", p.c_type(), eq.fields.len())]
+    }
 }

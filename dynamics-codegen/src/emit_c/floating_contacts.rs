@@ -14,7 +14,7 @@
 //! frame not in contact given the identity's rows and `λ_f = 0`, as `ContactTerms::solve`.
 
 use super::expr::Precision;
-use super::floating_extras::parameters;
+use super::floating_batch::parameters;
 use crate::trace::Equations;
 
 /// The three functions in precision `p`, for a robot of `frames` frames.

@@ -22,7 +22,7 @@
 
 use super::body::Writer;
 use super::expr::Precision;
-use super::floating_batch::Signature;
+use super::floating_batch::{parameters, Signature};
 use crate::method::Method;
 use crate::trace::{Equations, FloatingContactEquations, FloatingKinematicEquations, Shape};
 
@@ -366,15 +366,6 @@ impl Generated {
         }
         text.push_str("}\n\n");
         text
-    }
-}
-
-/// `const double params[K]` where the robot has parameters (struct fields).
-pub(super) fn parameters(eq: &Equations, p: Precision) -> Vec<String> {
-    if eq.fields.is_empty() {
-        vec![]
-    } else {
-        vec![format!("const {} params[{}]", p.c_type(), eq.fields.len())]
     }
 }
 
