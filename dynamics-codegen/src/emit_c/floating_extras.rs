@@ -238,34 +238,40 @@ fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
         ]);
     }
     if extras.configuration {
-        signatures.extend([
-            Signature {
-                name: "integrate",
-                inputs: vec![("q", nq, vec![], false), ("v", nv, vec![], false)],
-                outputs: vec![("out", vec![nq])],
-                status: false,
-            },
-            Signature {
-                name: "difference",
-                inputs: vec![("q0", nq, vec![], false), ("q1", nq, vec![], false)],
-                outputs: vec![("out", vec![nv])],
-                status: false,
-            },
-        ]);
-        // The Jacobians, n x n: of integrate(q, v) and of difference(q0, q1).
-        for (name, first, second, len) in [
-            ("integrate_jacobian_v", "q", "v", nv),
-            ("integrate_jacobian_q", "q", "v", nv),
-            ("difference_jacobian_q0", "q0", "q1", nq),
-            ("difference_jacobian_q1", "q0", "q1", nq),
-        ] {
-            signatures.push(Signature {
-                name,
-                inputs: vec![(first, nq, vec![], false), (second, len, vec![], false)],
-                outputs: vec![("out", vec![nv, nv])],
-                status: false,
-            });
-        }
+        signatures.extend(configuration_signatures(nq, nv));
+    }
+    signatures
+}
+
+/// `integrate`'s and `difference`'s signatures and their Jacobians', for their batch twins.
+fn configuration_signatures(nq: usize, nv: usize) -> Vec<Signature> {
+    let mut signatures = vec![
+        Signature {
+            name: "integrate",
+            inputs: vec![("q", nq, vec![], false), ("v", nv, vec![], false)],
+            outputs: vec![("out", vec![nq])],
+            status: false,
+        },
+        Signature {
+            name: "difference",
+            inputs: vec![("q0", nq, vec![], false), ("q1", nq, vec![], false)],
+            outputs: vec![("out", vec![nv])],
+            status: false,
+        },
+    ];
+    // The Jacobians, n x n: of integrate(q, v) and of difference(q0, q1).
+    for (name, first, second, len) in [
+        ("integrate_jacobian_v", "q", "v", nv),
+        ("integrate_jacobian_q", "q", "v", nv),
+        ("difference_jacobian_q0", "q0", "q1", nq),
+        ("difference_jacobian_q1", "q0", "q1", nq),
+    ] {
+        signatures.push(Signature {
+            name,
+            inputs: vec![(first, nq, vec![], false), (second, len, vec![], false)],
+            outputs: vec![("out", vec![nv, nv])],
+            status: false,
+        });
     }
     signatures
 }
