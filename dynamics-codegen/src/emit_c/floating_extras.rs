@@ -169,10 +169,16 @@ pub(super) fn extras(
             eq.fields.len(),
         ));
     }
+    if extras.configuration {
+        // The same for every robot: no parameters, whatever the robot's.
+        let (nq, nv) = (eq.dof + 1, eq.dof);
+        let signatures = configuration_signatures(nq, nv);
+        text.push_str(&super::floating_batch::section(&signatures, prefix, 0));
+    }
     text
 }
 
-/// The extras' signatures, for their batch twins.
+/// The extras' signatures but the configuration's, for their batch twins.
 fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
     let (nq, nv) = (eq.dof + 1, eq.dof);
     let state = |names: [&'static str; 3]| {
@@ -236,9 +242,6 @@ fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
                 status: true,
             },
         ]);
-    }
-    if extras.configuration {
-        signatures.extend(configuration_signatures(nq, nv));
     }
     signatures
 }
