@@ -1,6 +1,7 @@
 """A floating base's configuration space on NumPy arrays: Pinocchio's ``integrate(q, v)`` and
-``difference(q0, q1)``, the Rust runtime's (``dynamics-runtime/src/configuration.rs``, through
-``_native``), state by state over a batch, in ``float64``.
+``difference(q0, q1)`` and their Jacobians (``dIntegrate``, ``dDifference``), the Rust
+runtime's (``dynamics-runtime/src/configuration.rs``, through ``_native``), state by state over
+a batch, in ``float64``.
 
 Inputs as a method's (``_inputs``): one state, shape ``(n,)``, or a batch ``(N, n)``, a 1-D
 input used for every state of a batch.
@@ -12,7 +13,8 @@ from . import _inputs
 
 
 class ConfigurationMethod:
-    """``robot.integrate(q, v)`` or ``robot.difference(q0, q1)`` of a floating base."""
+    """``robot.integrate(q, v)``, ``robot.difference(q0, q1)`` or a Jacobian of theirs, of a
+    floating base."""
 
     def __init__(self, robot, name, arguments, result, function, summary):
         self._where = f"{robot.name}.{name}"
@@ -37,7 +39,8 @@ class ConfigurationMethod:
             raise ValueError(f"{self._where}: not finite: {where}")
         raw = self._function(*(np.ascontiguousarray(a).tobytes() for a in arrays), count,
                              self._nv)
-        out = np.frombuffer(raw, np.float64).reshape(count, self._result).copy()
+        shape = self._result if isinstance(self._result, tuple) else (self._result,)
+        out = np.frombuffer(raw, np.float64).reshape((count,) + shape).copy()
         return out if batch else out[0]
 
 
@@ -55,4 +58,20 @@ def methods(robot, native):
             robot, "difference", [("q0", nq), ("q1", nq)], nv, native.difference,
             "Pinocchio's difference: the velocity v with integrate(q0, v) = q1 (the base's "
             "the logarithm of M0^-1 M1)."),
+        "integrate_jacobian_v": ConfigurationMethod(
+            robot, "integrate_jacobian_v", [("q", nq), ("v", nv)], (nv, nv),
+            native.integrate_jacobian_v,
+            "Pinocchio's dIntegrate(q, v, ARG1): d integrate(q, v) / dv, (nv, nv)."),
+        "integrate_jacobian_q": ConfigurationMethod(
+            robot, "integrate_jacobian_q", [("q", nq), ("v", nv)], (nv, nv),
+            native.integrate_jacobian_q,
+            "Pinocchio's dIntegrate(q, v, ARG0): d integrate(q, v) / dq, (nv, nv)."),
+        "difference_jacobian_q0": ConfigurationMethod(
+            robot, "difference_jacobian_q0", [("q0", nq), ("q1", nq)], (nv, nv),
+            native.difference_jacobian_q0,
+            "Pinocchio's dDifference(q0, q1, ARG0): d difference(q0, q1) / dq0, (nv, nv)."),
+        "difference_jacobian_q1": ConfigurationMethod(
+            robot, "difference_jacobian_q1", [("q0", nq), ("q1", nq)], (nv, nv),
+            native.difference_jacobian_q1,
+            "Pinocchio's dDifference(q0, q1, ARG1): d difference(q0, q1) / dq1, (nv, nv)."),
     }

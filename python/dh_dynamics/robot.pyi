@@ -258,6 +258,14 @@ class Robot:
         """Pinocchio's integrate: the configuration reached from q by the velocity v."""
     def difference(self, q0: ArrayLike, q1: ArrayLike) -> NDArray[np.floating[Any]]:
         """Pinocchio's difference: the velocity v with integrate(q0, v) = q1."""
+    def integrate_jacobian_v(self, q: ArrayLike, v: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's dIntegrate(q, v, ARG1): d integrate(q, v) / dv."""
+    def integrate_jacobian_q(self, q: ArrayLike, v: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's dIntegrate(q, v, ARG0): d integrate(q, v) / dq."""
+    def difference_jacobian_q0(self, q0: ArrayLike, q1: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's dDifference(q0, q1, ARG0): d difference(q0, q1) / dq0."""
+    def difference_jacobian_q1(self, q0: ArrayLike, q1: ArrayLike) -> NDArray[np.floating[Any]]:
+        """Pinocchio's dDifference(q0, q1, ARG1): d difference(q0, q1) / dq1."""
     # A floating base's kinematics and contacts (the header's, `_floating.py`), frames by name.
     def center_of_mass(self, q: ArrayLike) -> NDArray[np.floating[Any]]:
         """The centre of mass in the world (centerOfMass)."""

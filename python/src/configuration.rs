@@ -2,7 +2,8 @@
 //! `difference` (Pinocchio's, `dynamics-runtime/src/configuration.rs`), state by state over
 //! flat arrays of `f64` (the bytes of C-contiguous `float64` arrays, as `_configuration.py`
 //! passes them). The base's seven entries of `q` and six of `v` are the runtime's; a joint's
-//! are added or subtracted, as the runtime does.
+//! are added or subtracted, as the runtime does; the Jacobians (`dIntegrate`, `dDifference`)
+//! the runtime's base block, the joints' the identity (`−1` for `∂/∂q0`).
 
 use dynamics_runtime::configuration;
 use pyo3::exceptions::PyValueError;
@@ -85,4 +86,100 @@ pub fn difference<'py>(
         }
     }
     Ok(bytes(py, &out))
+}
+
+/// The base's 6 × 6 block of a Jacobian of the runtime's, from a state's two inputs.
+type BaseJacobian = fn(&[f64], &[f64]) -> [[f64; 6]; 6];
+
+/// A Jacobian of `integrate` or `difference` at `count` states: `first` rows of `nv + 1`,
+/// `second` rows of `width`; the `nv × nv` matrices, rows first, the base's block `base`'s,
+/// the joints' `diagonal` times the identity (as the runtime's).
+fn jacobians<'py>(
+    py: Python<'py>,
+    (first, second): (&[u8], &[u8]),
+    (count, nv, width): (usize, usize, usize),
+    base: BaseJacobian,
+    diagonal: f64,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let names = if width == nv {
+        ("q", "v")
+    } else {
+        ("q0", "q1")
+    };
+    let first = rows(first, count, nv + 1, names.0)?;
+    let second = rows(second, count, width, names.1)?;
+    let mut out = vec![0.0; count * nv * nv];
+    for ((a, b), out) in first
+        .chunks_exact(nv + 1)
+        .zip(second.chunks_exact(width))
+        .zip(out.chunks_exact_mut(nv * nv))
+    {
+        for (i, row) in base(a, b).iter().enumerate() {
+            out[nv * i..nv * i + 6].copy_from_slice(row);
+        }
+        for i in 6..nv {
+            out[nv * i + i] = diagonal;
+        }
+    }
+    Ok(bytes(py, &out))
+}
+
+fn base_q(q: &[f64]) -> [f64; 7] {
+    std::array::from_fn(|i| q[i])
+}
+
+fn base_v(v: &[f64]) -> [f64; 6] {
+    std::array::from_fn(|i| v[i])
+}
+
+/// `∂ integrate(q, v) / ∂v` (Pinocchio's `dIntegrate`, `ARG1`) at `count` states.
+#[pyfunction]
+pub fn integrate_jacobian_v<'py>(
+    py: Python<'py>,
+    q: &[u8],
+    v: &[u8],
+    count: usize,
+    nv: usize,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let base: BaseJacobian = |_, v| configuration::integrate_jacobian(&base_v(v));
+    jacobians(py, (q, v), (count, nv, nv), base, 1.0)
+}
+
+/// `∂ integrate(q, v) / ∂q` (Pinocchio's `dIntegrate`, `ARG0`) at `count` states.
+#[pyfunction]
+pub fn integrate_jacobian_q<'py>(
+    py: Python<'py>,
+    q: &[u8],
+    v: &[u8],
+    count: usize,
+    nv: usize,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let base: BaseJacobian = |_, v| configuration::integrate_jacobian_q(&base_v(v));
+    jacobians(py, (q, v), (count, nv, nv), base, 1.0)
+}
+
+/// `∂ difference(q0, q1) / ∂q0` (Pinocchio's `dDifference`, `ARG0`) at `count` states.
+#[pyfunction]
+pub fn difference_jacobian_q0<'py>(
+    py: Python<'py>,
+    q0: &[u8],
+    q1: &[u8],
+    count: usize,
+    nv: usize,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let base: BaseJacobian = |a, b| configuration::difference_jacobian_q0(&base_q(a), &base_q(b));
+    jacobians(py, (q0, q1), (count, nv, nv + 1), base, -1.0)
+}
+
+/// `∂ difference(q0, q1) / ∂q1` (Pinocchio's `dDifference`, `ARG1`) at `count` states.
+#[pyfunction]
+pub fn difference_jacobian_q1<'py>(
+    py: Python<'py>,
+    q0: &[u8],
+    q1: &[u8],
+    count: usize,
+    nv: usize,
+) -> PyResult<Bound<'py, PyBytes>> {
+    let base: BaseJacobian = |a, b| configuration::difference_jacobian_q1(&base_q(a), &base_q(b));
+    jacobians(py, (q0, q1), (count, nv, nv + 1), base, 1.0)
 }

@@ -221,6 +221,10 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add_function(wrap_pyfunction!(configuration::integrate, m)?)?;
     m.add_function(wrap_pyfunction!(configuration::difference, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::integrate_jacobian_v, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::integrate_jacobian_q, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::difference_jacobian_q0, m)?)?;
+    m.add_function(wrap_pyfunction!(configuration::difference_jacobian_q1, m)?)?;
     m.add("GeneratorError", m.py().get_type::<GeneratorError>())?;
     Ok(())
 }

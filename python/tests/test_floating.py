@@ -106,6 +106,29 @@ def test_integrate_and_difference_match_pinocchio(solo, model):
     assert np.array_equal(solo.difference(q[0], q1)[2], solo.difference(q[0], q1[2]))
 
 
+def test_the_configuration_jacobians_match_pinocchio(solo, model):
+    q, v, _, _ = random_states(model, COUNT, 47)
+    q1, _, _, _ = random_states(model, COUNT, 48)
+    # A small step too, where the runtime takes its Taylor series.
+    v[0] *= 1e-9
+    q1[1] = pin.integrate(model, q[1], 1e-9 * v[1])
+    got = {
+        (pin.dIntegrate, pin.ARG1): solo.integrate_jacobian_v(q, v),
+        (pin.dIntegrate, pin.ARG0): solo.integrate_jacobian_q(q, v),
+        (pin.dDifference, pin.ARG0): solo.difference_jacobian_q0(q, q1),
+        (pin.dDifference, pin.ARG1): solo.difference_jacobian_q1(q, q1),
+    }
+    for (function, argument), jacobian in got.items():
+        assert jacobian.shape == (COUNT, 18, 18)
+        second = v if function is pin.dIntegrate else q1
+        for s in range(COUNT):
+            want = function(model, q[s], second[s], argument)
+            e = scaled_error(jacobian[s], want)
+            assert e <= TOLERANCE, f"{function.__name__} {argument} at state {s}: off by {e:.3g}"
+    alone = solo.difference_jacobian_q0(q[2], q1[2])
+    assert np.array_equal(alone, got[pin.dDifference, pin.ARG0][2])
+
+
 def test_a_batch_is_each_state_alone_and_float32_follows(solo, model):
     q, v, a, _ = random_states(model, 5, 46)
     batch = solo.inverse_dynamics(q, v, a)

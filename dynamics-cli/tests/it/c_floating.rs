@@ -132,6 +132,34 @@ fn solo12_floating_header_matches_pinocchio() {
     }
 }
 
+/// A robot with a parameter (`params`): the configuration's functions and their batch twins
+/// take none (the same for every robot).
+#[test]
+fn the_configurations_batch_twins_take_no_parameters() {
+    let file = "tests/data/floating/solo12_joint_terms.toml";
+    let text = std::fs::read_to_string(root().join(file)).expect("the description");
+    let with_parameter = text.replacen("mass = 0.14853845", "mass = \"m1\"", 1);
+    assert_ne!(with_parameter, text, "a mass to name");
+    let path = std::env::temp_dir().join(format!("c_floating_{}.toml", std::process::id()));
+    std::fs::write(&path, with_parameter).expect("a temporary file");
+    let header = emitted_header(
+        path.to_str().expect("a UTF-8 path"),
+        &["--floating", "--configuration"],
+        &[],
+    );
+    std::fs::remove_file(&path).ok();
+    assert!(
+        header.contains("const double params[1]"),
+        "it has a parameter"
+    );
+    for call in [
+        "solo_integrate(q + 19 * i, v + 18 * i, out + 19 * i);",
+        "solo_difference_jacobian_q1(q0 + 19 * i, q1 + 19 * i, (double (*)[18])(out + 324 * i));",
+    ] {
+        assert!(header.contains(call), "{call}");
+    }
+}
+
 /// The table's functions are the same text with the extras as without.
 #[test]
 fn the_extras_leave_the_tables_functions_as_they_are() {

@@ -5,8 +5,8 @@
 //! (`centerOfMass`, `jacobianCenterOfMass`, `computeCentroidalMap`, its time variation times
 //! `v`, `oMf`, `getFrameJacobian` and `getFrameClassicalAcceleration` in LOCAL_WORLD_ALIGNED and
 //! LOCAL), the contacts against `solo12_contacts.json` (`rnea` and `aba` with `fext`,
-//! `constraintDynamics` with the data's feet held) and `integrate`/`difference` against
-//! `solo12.json`, each `double` result to 1e-12 scaled (by its largest element, at least 1, as
+//! `constraintDynamics` with the data's feet held) and `integrate`/`difference` and their
+//! Jacobians (`dIntegrate`, `dDifference`, ARG0 and ARG1) against `solo12.json`, each `double` result to 1e-12 scaled (by its largest element, at least 1, as
 //! `dynamics_reference::scaled_error`), each `float` one against the `double` one.
 
 use crate::c_support::{c_array, printed, root, Printed};
@@ -116,10 +116,34 @@ pub fn calls(name: &str, data: &Data, nv: usize) -> String {
     }
     c.push_str(&format!(
         "            show(\"lambda:0\", s, r, (const double *)lambda, {});\n            \
-         show_f32(\"lambda_f:0\", s, r, (const float *)lambda_f, {});\n        }}\n",
+         show_f32(\"lambda_f:0\", s, r, (const float *)lambda_f, {});\n",
         3 * frames,
         3 * frames
     ));
+    c.push_str(&batches(name, data.states.len(), nv));
+    c.push_str("        }\n");
+    c
+}
+
+/// The configuration space's Jacobians' batch twins over every state, state `s`'s printed as
+/// `{key}_batch` (checked bit for bit against the single state's).
+fn batches(name: &str, states: usize, nv: usize) -> String {
+    let size = states * nv * nv;
+    let mut c = String::new();
+    for (function, key, second) in [
+        ("integrate_jacobian_v", "jv", "dv"),
+        ("integrate_jacobian_q", "jq", "dv"),
+        ("difference_jacobian_q0", "j0", "q1"),
+        ("difference_jacobian_q1", "j1", "q1"),
+    ] {
+        c.push_str(&format!(
+            "            {{\n                static double all[{size}];\n                \
+             {name}_{function}_batch({states}, &q[0][0], {second}, all);\n                \
+             show(\"{key}_batch:0\", s, 0, all + {} * s, {});\n            }}\n",
+            nv * nv,
+            nv * nv
+        ));
+    }
     c
 }
 
@@ -147,6 +171,8 @@ fn declarations(data: &Data, nv: usize) -> String {
             double tw[{nv}], tf[{nv}], aw[{nv}], af[{nv}], ac[{nv}], lambda[{frames}][3], qn[{nq}], dq[{nv}];
             float com_f[3], jw_f[{frames}][6][{nv}], bw_f[{frames}][6], ac_f[{nv}], lambda_f[{frames}][3];
             float tau_rnea_f[{nv}], dv_f[{nv}], q1_f[{nq}], qn_f[{nq}], dq_f[{nv}];
+            double jv[{nv}][{nv}], jq[{nv}][{nv}], j0[{nv}][{nv}], j1[{nv}][{nv}];
+            float jv_f[{nv}][{nv}], jq_f[{nv}][{nv}], j0_f[{nv}][{nv}], j1_f[{nv}][{nv}];
             const double (*w)[6] = (const double (*)[6])(wrenches + {w} * s);
             const double (*fo)[6] = (const double (*)[6])(forces + {w} * s);
             int r;
@@ -164,7 +190,7 @@ fn declarations(data: &Data, nv: usize) -> String {
 /// Each call (its text after the prefix, `{nv}`, `{nq}`, `{frames}` to fill in), the array it
 /// prints, its length, and whether it returns a status.
 #[allow(clippy::too_many_lines)] // A table, one call a row.
-fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool); 22] {
+fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool); 30] {
     let nq = nv + 1;
     [
         ("center_of_mass(q[s], com)", "com", 3, false),
@@ -233,6 +259,30 @@ fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool
         ),
         ("integrate(q[s], dv + {nv} * s, qn)", "qn", nq, false),
         ("difference(q[s], q1 + {nq} * s, dq)", "dq", nv, false),
+        (
+            "integrate_jacobian_v(q[s], dv + {nv} * s, jv)",
+            "jv",
+            nv * nv,
+            false,
+        ),
+        (
+            "integrate_jacobian_q(q[s], dv + {nv} * s, jq)",
+            "jq",
+            nv * nv,
+            false,
+        ),
+        (
+            "difference_jacobian_q0(q[s], q1 + {nq} * s, j0)",
+            "j0",
+            nv * nv,
+            false,
+        ),
+        (
+            "difference_jacobian_q1(q[s], q1 + {nq} * s, j1)",
+            "j1",
+            nv * nv,
+            false,
+        ),
         ("center_of_mass_f32(q_f, com_f)", "com_f", 3, false),
         (
             "frame_jacobians_world_aligned_f32(q_f, jw_f)",
@@ -254,6 +304,30 @@ fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool
         ),
         ("integrate_f32(q_f, dv_f, qn_f)", "qn_f", nq, false),
         ("difference_f32(q_f, q1_f, dq_f)", "dq_f", nv, false),
+        (
+            "integrate_jacobian_v_f32(q_f, dv_f, jv_f)",
+            "jv_f",
+            nv * nv,
+            false,
+        ),
+        (
+            "integrate_jacobian_q_f32(q_f, dv_f, jq_f)",
+            "jq_f",
+            nv * nv,
+            false,
+        ),
+        (
+            "difference_jacobian_q0_f32(q_f, q1_f, j0_f)",
+            "j0_f",
+            nv * nv,
+            false,
+        ),
+        (
+            "difference_jacobian_q1_f32(q_f, q1_f, j1_f)",
+            "j1_f",
+            nv * nv,
+            false,
+        ),
     ]
 }
 
@@ -305,7 +379,12 @@ pub fn check(out: &Printed, label: &str, data: &Data) {
             ("lambda", flat(&contact["lambda"])),
             ("qn", flat(&state["q_next"])),
             ("dq", flat(&state["dq"])),
+            ("jv", flat(&state["dintegrate_dv"])),
+            ("jq", flat(&state["dintegrate_dq"])),
+            ("j0", flat(&state["ddifference_dq0"])),
+            ("j1", flat(&state["ddifference_dq1"])),
         ];
+        check_jacobians(out, label, s);
         for (key, want) in &wants {
             let (status, got) = printed(out, key, 0, s);
             assert_eq!(*status, 0, "{label}: {key} at sample {s}");
@@ -332,5 +411,18 @@ pub fn check(out: &Printed, label: &str, data: &Data) {
                 "{label}: {key}_f at sample {s}: off by {e:e}"
             );
         }
+    }
+}
+
+/// The configuration space's Jacobians at state `s` beyond their check against Pinocchio's:
+/// the batch twins bit for bit the single state's, `float` against `double`.
+fn check_jacobians(out: &Printed, label: &str, s: usize) {
+    for key in ["jv", "jq", "j0", "j1"] {
+        let (_, single) = printed(out, key, 0, s);
+        let (_, batch) = printed(out, &format!("{key}_batch"), 0, s);
+        assert_eq!(single, batch, "{label}: {key}'s batch twin at sample {s}");
+        let (_, got) = printed(out, &format!("{key}_f"), 0, s);
+        let e = scaled_error(got, single);
+        assert!(e <= 1e-5, "{label}: {key}_f at sample {s}: off by {e:e}");
     }
 }

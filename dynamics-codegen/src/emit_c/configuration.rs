@@ -1,7 +1,8 @@
 //! The configuration space of a floating base in C (`--configuration`): the runtime's
 //! `integrate` and `difference` (`dynamics-runtime/src/configuration.rs`, Pinocchio's free
 //! flyer), the same operations in the same order, but the sines, cosines and square roots
-//! `<math.h>`'s (so not always the Rust results' bits). The base's part is the same for every
+//! `<math.h>`'s (so not always the Rust results' bits); their Jacobians in
+//! `configuration_jacobians.rs`. The base's part is the same for every
 //! robot: `dynamics_integrate`, `dynamics_difference` (`_f32`), defined once under a guard that
 //! headers included together share; each robot's `{prefix}_integrate`, `_difference` call them
 //! with its number of joints.
@@ -29,6 +30,7 @@ pub(super) fn functions(dof: usize, prefix: &str) -> String {
         .to_owned();
     for p in Precision::ALL {
         text.push_str(&shared(p));
+        text.push_str(&super::configuration_jacobians::shared(p));
     }
     text.push_str("#endif /* DYNAMICS_CONFIGURATION_H */\n\n");
     for p in Precision::ALL {
@@ -45,6 +47,9 @@ pub(super) fn functions(dof: usize, prefix: &str) -> String {
              dynamics_difference{sfx}(q0, q1, out, {joints});\n}}\n\n"
         ));
     }
+    text.push_str(&super::configuration_jacobians::robot_functions(
+        dof, prefix,
+    ));
     text
 }
 

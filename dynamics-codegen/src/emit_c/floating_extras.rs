@@ -14,7 +14,8 @@
 //!   `contact_dynamics` (`(J M⁻¹ Jᵀ)_cc λ_c = −(J a₀ + γ)_c`, `a = a₀ + (M⁻¹ Jᵀ)_c λ_c`, by
 //!   `L D Lᵀ` on the stack as `ContactTerms::solve`), `inverse_dynamics_with_wrenches`
 //!   (`τ = M a + h − Σ J_fᵀ w_f`) and `forward_dynamics_with_wrenches`;
-//! * the configuration space (`configuration.rs`): `integrate` and `difference`.
+//! * the configuration space (`configuration.rs`): `integrate` and `difference`, and their
+//!   Jacobians (`configuration_jacobians.rs`).
 //!
 //! The generated bodies are written as the table's functions' are (`body.rs`), the element
 //! names of a carrier method left out (they would describe another output). Each has a batch
@@ -168,10 +169,16 @@ pub(super) fn extras(
             eq.fields.len(),
         ));
     }
+    if extras.configuration {
+        // The same for every robot: no parameters, whatever the robot's.
+        let (nq, nv) = (eq.dof + 1, eq.dof);
+        let signatures = configuration_signatures(nq, nv);
+        text.push_str(&super::floating_batch::section(&signatures, prefix, 0));
+    }
     text
 }
 
-/// The extras' signatures, for their batch twins.
+/// The extras' signatures but the configuration's, for their batch twins.
 fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
     let (nq, nv) = (eq.dof + 1, eq.dof);
     let state = |names: [&'static str; 3]| {
@@ -236,21 +243,38 @@ fn signatures(eq: &Equations, extras: &FloatingExtras) -> Vec<Signature> {
             },
         ]);
     }
-    if extras.configuration {
-        signatures.extend([
-            Signature {
-                name: "integrate",
-                inputs: vec![("q", nq, vec![], false), ("v", nv, vec![], false)],
-                outputs: vec![("out", vec![nq])],
-                status: false,
-            },
-            Signature {
-                name: "difference",
-                inputs: vec![("q0", nq, vec![], false), ("q1", nq, vec![], false)],
-                outputs: vec![("out", vec![nv])],
-                status: false,
-            },
-        ]);
+    signatures
+}
+
+/// `integrate`'s and `difference`'s signatures and their Jacobians', for their batch twins.
+fn configuration_signatures(nq: usize, nv: usize) -> Vec<Signature> {
+    let mut signatures = vec![
+        Signature {
+            name: "integrate",
+            inputs: vec![("q", nq, vec![], false), ("v", nv, vec![], false)],
+            outputs: vec![("out", vec![nq])],
+            status: false,
+        },
+        Signature {
+            name: "difference",
+            inputs: vec![("q0", nq, vec![], false), ("q1", nq, vec![], false)],
+            outputs: vec![("out", vec![nv])],
+            status: false,
+        },
+    ];
+    // The Jacobians, n x n: of integrate(q, v) and of difference(q0, q1).
+    for (name, first, second, len) in [
+        ("integrate_jacobian_v", "q", "v", nv),
+        ("integrate_jacobian_q", "q", "v", nv),
+        ("difference_jacobian_q0", "q0", "q1", nq),
+        ("difference_jacobian_q1", "q0", "q1", nq),
+    ] {
+        signatures.push(Signature {
+            name,
+            inputs: vec![(first, nq, vec![], false), (second, len, vec![], false)],
+            outputs: vec![("out", vec![nv, nv])],
+            status: false,
+        });
     }
     signatures
 }
@@ -455,8 +479,10 @@ pub(super) fn preamble(extras: &FloatingExtras, prefix: &str) -> Vec<String> {
     if extras.configuration {
         lines.extend([
             String::new(),
-            "The configuration space: integrate and difference (Pinocchio's); they call".to_owned(),
-            "<math.h>'s sqrt, atan2, sin and cos (link with -lm).".to_owned(),
+            "The configuration space: integrate and difference (Pinocchio's) and their".to_owned(),
+            "Jacobians (dIntegrate, dDifference); they call <math.h>'s sqrt, atan2, sin and"
+                .to_owned(),
+            "cos (link with -lm).".to_owned(),
         ]);
     }
     lines

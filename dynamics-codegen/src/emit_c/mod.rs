@@ -44,6 +44,7 @@
 pub mod batch;
 mod body;
 mod configuration;
+mod configuration_jacobians;
 mod expr;
 mod floating_batch;
 mod floating_contacts;
