@@ -12,6 +12,7 @@
 use crate::c_support::{c_array, printed, root, Printed};
 use dynamics_reference::scaled_error;
 use serde_json::Value;
+use std::collections::BTreeMap;
 
 /// The data: per state, its `solo12.json`, `solo12_kinematics.json` and `solo12_contacts.json`
 /// samples, and the frames' names.
@@ -363,7 +364,7 @@ fn called(nv: usize, frames: usize) -> [(&'static str, &'static str, usize, bool
 /// Checks what the driver of [`calls`] printed (by compiler `label`).
 pub fn check(out: &Printed, label: &str, data: &Data) {
     // The largest error of each `double` result, printed for the docs.
-    let mut worst = std::collections::BTreeMap::<String, f64>::new();
+    let mut worst = BTreeMap::<String, f64>::new();
     for (s, ((state, kin), contact)) in data
         .states
         .iter()
@@ -429,31 +430,35 @@ pub fn check(out: &Printed, label: &str, data: &Data) {
             let largest = worst.entry((*key).to_owned()).or_insert(0.0);
             *largest = largest.max(e);
         }
-        // `float` against `double`: the contacts solve with M's factors, whose condition
-        // number costs digits.
-        for (key, tolerance) in [
-            ("com", 1e-5),
-            ("jw", 1e-5),
-            ("bw", 1e-4),
-            ("ac", 1e-2),
-            ("lambda", 1e-2),
-            ("qn", 1e-5),
-            ("dq", 1e-4),
-        ] {
-            let (_, want) = printed(out, key, 0, s);
-            let (status, got) = printed(out, &format!("{key}_f"), 0, s);
-            assert_eq!(*status, 0, "{label}: {key}_f at sample {s}");
-            let e = scaled_error(got, want);
-            assert!(
-                e <= tolerance,
-                "{label}: {key}_f at sample {s}: off by {e:e}"
-            );
-            let largest = worst.entry(format!("{key}_f")).or_insert(0.0);
-            *largest = largest.max(e);
-        }
+        check_float(out, label, s, &mut worst);
     }
     let worst: Vec<String> = worst.iter().map(|(k, e)| format!("{k} {e:.1e}")).collect();
     eprintln!("{label}: the largest scaled errors: {}", worst.join(", "));
+}
+
+/// The `float` results at state `s` against the `double` ones (the contacts solve with M's
+/// factors, whose condition number costs digits), each's largest error kept in `worst`.
+fn check_float(out: &Printed, label: &str, s: usize, worst: &mut BTreeMap<String, f64>) {
+    for (key, tolerance) in [
+        ("com", 1e-5),
+        ("jw", 1e-5),
+        ("bw", 1e-4),
+        ("ac", 1e-2),
+        ("lambda", 1e-2),
+        ("qn", 1e-5),
+        ("dq", 1e-4),
+    ] {
+        let (_, want) = printed(out, key, 0, s);
+        let (status, got) = printed(out, &format!("{key}_f"), 0, s);
+        assert_eq!(*status, 0, "{label}: {key}_f at sample {s}");
+        let e = scaled_error(got, want);
+        assert!(
+            e <= tolerance,
+            "{label}: {key}_f at sample {s}: off by {e:e}"
+        );
+        let largest = worst.entry(format!("{key}_f")).or_insert(0.0);
+        *largest = largest.max(e);
+    }
 }
 
 /// The configuration space's Jacobians at state `s` beyond their check against Pinocchio's:
