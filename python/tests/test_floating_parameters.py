@@ -85,7 +85,8 @@ def check_against(solo, model, seed):
             rotation = data.oMf[i].rotation
             local = pin.Force(rotation.T @ wrenches[mine][:3], rotation.T @ wrenches[mine][3:])
             fext[model.frames[i].parentJoint] += model.frames[i].placement.act(local)
-        checks.append(("tau with wrenches", solo.inverse_dynamics_with_wrenches(q[s], v[s], a[s], wrenches),
+        checks.append(("tau with wrenches",
+                       solo.inverse_dynamics_with_wrenches(q[s], v[s], a[s], wrenches),
                        pin.rnea(model, data, q[s], v[s], a[s], fext)))
         checks.append(("a with wrenches",
                        solo.forward_dynamics_with_wrenches(q[s], v[s], tau[s], wrenches),
