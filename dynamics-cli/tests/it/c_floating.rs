@@ -6,7 +6,8 @@
 //! `double` results against Pinocchio's `crba`, `nonLinearEffects`, `rnea`,
 //! `computeGeneralizedGravity`, `computeMinverse` and `aba` (at the data's `tau_in`) to 1e-12
 //! of each result's largest element; with `--with derivatives`, `computeRNEADerivatives` and
-//! `computeABADerivatives` too.
+//! `computeABADerivatives` too. Solo 12's, ANYmal B's and the G1's headers with the extras
+//! (`--kinematics --contacts --configuration`), which `c_floating_extras.rs`' driver checks.
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
 
