@@ -1,7 +1,7 @@
 """A floating base's kinematics and contacts on NumPy arrays: the C header's functions beyond
 the method table's (``dynamics emit --lang c --floating --kinematics --contacts``), called state
 through ctypes in ``float64`` (their batch twins: one foreign call a batch), the frames by name
-(``robot.frames``).
+(``robot.frames``), the robot's parameters first where it has any (``robot.parameters``).
 
 A frame's results are a dict by frame name; a wrench ``[f, m]`` or force ``f`` is what the
 environment exerts on the robot at the frame's origin, in world axes (Pinocchio's
@@ -36,6 +36,7 @@ class FloatingMethod:
         self._frames = robot.frames
         self._function = getattr(library, f"{prefix}_{name}_batch")
         self._status = name in _STATUS
+        self._parameters = robot.parameters
         self._function.restype = ctypes.c_size_t if self._status else None
         self.__doc__ = (f"{name}({', '.join(n for n, _ in arguments)}): {summary}\n\n"
                         "Each input one state, shape (n,), or a batch, shape (N, n); float64.")
@@ -57,7 +58,11 @@ class FloatingMethod:
         """The batch function over the ``count`` states of ``arrays``, ``extra`` its arguments
         after them: its outputs (each ``(count, ...)``) and the states whose status is not 0."""
         outputs = [np.zeros((count, *self._result))] if outputs is None else outputs
-        arguments = [ctypes.c_size_t(count), *(_pointer(a) for a in arrays), *extra,
+        # A robot with parameters (`mass = "m1"`): their values first, as the table's methods.
+        params = []
+        if len(self._parameters):
+            params = [_pointer(self._parameters.arrays(self.__name__)[np.float64])]
+        arguments = [ctypes.c_size_t(count), *params, *(_pointer(a) for a in arrays), *extra,
                      *(_pointer(o) for o in outputs)]
         status = np.zeros(count, np.intc)
         if self._status:
@@ -111,7 +116,8 @@ class ContactDynamics(FloatingMethod):
 
     def __call__(self, q, v, tau, in_contact):
         arrays, count, batch = self._states([q, v, tau])
-        held = list(in_contact)
+        # One frame's name alone is that frame, not its letters.
+        held = [in_contact] if isinstance(in_contact, str) else list(in_contact)
         for name in held:
             if name not in self._frames:
                 raise ValueError(f"{self._where}: no frame {name!r}; the frames are "

@@ -83,9 +83,9 @@ class Robot:
             for name, method in _configuration.methods(self, _native).items():
                 by_method[name] = method
                 setattr(self, name, method)
-            # The header's kinematics and contacts, called state by state (no batch twins);
-            # not yet for a robot with parameters, which they would take first.
-            if self.frames and not generated["fields"]:
+            # The header's kinematics and contacts, through their batch twins, the robot's
+            # parameters first where it has any.
+            if self.frames:
                 prefix = generated["functions"][0]["name"].removesuffix(
                     "_" + generated["functions"][0]["method"])
                 for name, method in _floating.methods(self, library, prefix).items():

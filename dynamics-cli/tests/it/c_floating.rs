@@ -6,7 +6,8 @@
 //! `double` results against Pinocchio's `crba`, `nonLinearEffects`, `rnea`,
 //! `computeGeneralizedGravity`, `computeMinverse` and `aba` (at the data's `tau_in`) to 1e-12
 //! of each result's largest element; with `--with derivatives`, `computeRNEADerivatives` and
-//! `computeABADerivatives` too.
+//! `computeABADerivatives` too. Solo 12's, ANYmal B's and the G1's headers with the extras
+//! (`--kinematics --contacts --configuration`), which `c_floating_extras.rs`' driver checks.
 //!
 //! Without any C compiler the test says so and passes; CI has gcc.
 
@@ -50,6 +51,11 @@ fn flat(value: &Value) -> Vec<f64> {
 /// one, else `tau` (whose forward dynamics are `a`).
 fn samples(data: &str) -> (Vec<Value>, Vec<State>) {
     let (samples, _) = samples_of(data);
+    states_of(samples)
+}
+
+/// The states of `samples`, as [`samples`] reads them.
+fn states_of(samples: Vec<Value>) -> (Vec<Value>, Vec<State>) {
     let states = samples
         .iter()
         .map(|s| State {
@@ -66,7 +72,16 @@ fn samples(data: &str) -> (Vec<Value>, Vec<State>) {
 /// every function against the graph and each of `table`'s (method, key of `data`) against
 /// Pinocchio's values; the runs, for the checks of the functions beyond the table's.
 fn check(robot: &Robot, data: &str, reach: Reach, table: &[(Method, &str)]) -> Vec<Run> {
-    let (samples, states) = samples(data);
+    check_samples(robot, samples(data), reach, table)
+}
+
+/// [`check`] at the samples given and their states.
+fn check_samples(
+    robot: &Robot,
+    (samples, states): (Vec<Value>, Vec<State>),
+    reach: Reach,
+    table: &[(Method, &str)],
+) -> Vec<Run> {
     let runs = compile_and_run_builds(robot, &states, reach);
     if runs.is_empty() {
         eprintln!("no C compiler (gcc, clang, g++) found: the floating C header is not checked");
@@ -186,17 +201,60 @@ fn the_extras_leave_the_tables_functions_as_they_are() {
     assert!(!refused.status.success(), "--kinematics needs --floating");
 }
 
+/// The options of a header with every extra.
+const EXTRAS: [&str; 4] = [
+    "--floating",
+    "--kinematics",
+    "--contacts",
+    "--configuration",
+];
+
+/// The table's methods checked where the data have no `a_fd` or `M_inv` (the forward
+/// dynamics at `tau`, whose result is `a`).
+const DYNAMICS_AT_TAU: [(Method, &str); 5] = [
+    (Method::FloatingMassMatrix, "M"),
+    (Method::FloatingBiasForces, "h"),
+    (Method::FloatingInverseDynamics, "tau"),
+    (Method::FloatingGravity, "g"),
+    (Method::FloatingForwardDynamics, "a"),
+];
+
+/// ANYmal B with every extra (its legs in Pinocchio's `q` in another order than the file's:
+/// `anymal_b_extras.json` has them in the file's), one compiler.
 #[test]
 fn anymal_b_floating_header_matches_pinocchio() {
-    let robot = floating_robot("robots/urdf/floating/anymal_b.urdf", &[]);
-    let table = [
-        (Method::FloatingMassMatrix, "M"),
-        (Method::FloatingBiasForces, "h"),
-        (Method::FloatingInverseDynamics, "tau"),
-        (Method::FloatingGravity, "g"),
-        (Method::FloatingForwardDynamics, "a"),
-    ];
-    check(&robot, "anymal_b.json", Reach::First, &table);
+    let mut robot = floating_robot_with("robots/urdf/floating/anymal_b.urdf", &EXTRAS, &[]);
+    let data = extras::extras("anymal_b");
+    robot.calls = extras::calls(&robot.name, &data, robot.eq.dof);
+    for run in check(&robot, "anymal_b.json", Reach::First, &DYNAMICS_AT_TAU) {
+        extras::check(&run.printed, &run.label, &data);
+    }
+}
+
+/// The Unitree G1 (29 joints, 9 frames: its ankles, hands, head and sensors) with every
+/// extra, one compiler.
+#[test]
+fn g1_floating_header_matches_pinocchio() {
+    let mut robot = floating_robot_with("robots/urdf/floating/g1_29dof.urdf", &EXTRAS, &[]);
+    // Its M's condition number reaches 3.5e5: M⁻¹ was 2.3e-12 from the graph's evaluation.
+    robot.solve_tolerance = 1e-10;
+    let mut data = extras::extras("g1_29dof");
+    data.solve_tolerance = 1e-10;
+    robot.calls = extras::calls(&robot.name, &data, robot.eq.dof);
+    // The forward dynamics against Pinocchio's `aba` at the derivatives' `tau_in` (`ddq`):
+    // at `tau = rnea(q, v, a)` it is 2.1e-11 from `a`, the rounding of `tau` times M's
+    // condition number.
+    let (mut samples, _) = samples_of("g1_29dof.json");
+    let (derivatives, _) = samples_of("g1_29dof_derivatives.json");
+    for (sample, d) in samples.iter_mut().zip(&derivatives) {
+        sample["tau_in"] = d["tau_in"].clone();
+        sample["ddq"] = d["ddq"].clone();
+    }
+    let mut table = DYNAMICS_AT_TAU;
+    table[4] = (Method::FloatingForwardDynamics, "ddq");
+    for run in check_samples(&robot, states_of(samples), Reach::First, &table) {
+        extras::check(&run.printed, &run.label, &data);
+    }
 }
 
 /// `--with derivatives`: `inverse_dynamics_derivatives` (`∂τ/∂q` along the tangent, `∂τ/∂v`)

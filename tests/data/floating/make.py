@@ -958,6 +958,187 @@ def surface(name, urdf):
     print(name, "surface contacts:", len(samples), "samples, KKT gap %.1e" % worst)
 
 
+# The C header's and the Python package's extras (`--kinematics --contacts --configuration`)
+# beyond Solo 12, read by `extras`: per robot its frames (FloatingKinematics': the leaf links
+# below a moving joint, in the file's order) and the point contacts held at each sample in turn.
+EXTRAS = {
+    "anymal_b": {
+        "frames": ["LF_FOOT", "RF_FOOT", "LH_FOOT", "RH_FOOT"],
+        "held": CONTACT_MASKS,
+    },
+    "g1_29dof": {
+        "frames": SURFACE["g1_29dof"]["frames"],
+        # Both feet, one, both and a hand, none, one foot and the other hand, the feet and the head.
+        "held": [[True, True] + [False] * 7, [True] + [False] * 8,
+                 [True, True] + [False] * 5 + [True, False], [False] * 9,
+                 [False, True] + [False] * 5 + [True, False], [True, True, False, True] + [False] * 5],
+    },
+}
+
+
+def extras(name, urdf):
+    """The extras of the C header and the Python package beyond the table's methods at the 12
+    states of `<name>.json`, in one file, `<name>_extras.json`, as Solo 12's three files
+    (`kinematics`, `contacts` and step 6 of `make`) hold them: the kinematics (centre of mass,
+    its Jacobian, A_G, dA_G v, each frame of EXTRAS[name]'s placement, Jacobian and classical
+    acceleration at a = 0 in LOCAL and LOCAL_WORLD_ALIGNED), the contacts (rnea and aba with
+    random wrenches and forces at the frames, constraintDynamics with CONTACT_3D in
+    LOCAL_WORLD_ALIGNED at the frames `held`, no Baumgarte) and the configuration space
+    (integrate, difference, dIntegrate and dDifference by both arguments at a random step `dv`
+    and second configuration `q1`, sample 1's step's rotation 1e-9 rad). The states are read in
+    the file's joint order, taken to Pinocchio's for the calls, and every result back (rows and
+    columns). Checks as `kinematics`, `contacts` and `configuration_space` do; the constrained
+    and external-force accelerations against numpy's solves to 1e-9 (the G1's M has a
+    condition number up to 3.5e5)."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    _, order = file_order(path)
+    names = list(model.names)[2:]
+    pick = [names.index(j) for j in order]
+    iq = list(range(7)) + [7 + k for k in pick]
+    iv = list(range(6)) + [6 + k for k in pick]
+    columns = lambda m: np.asarray(m)[..., iv]
+    frames = EXTRAS[name]["frames"]
+    ids = [model.getFrameId(f) for f in frames]
+    assert all(model.frames[i].name == f for i, f in zip(ids, frames)), frames
+    mass = sum(i.mass for i in model.inertias)
+    rng = np.random.default_rng(SEED + 4)
+    samples = []
+    for k, s in enumerate(states):
+        q = from_file_order(names, order, np.array(s["q"]), 7)
+        v, a, tau = (from_file_order(names, order, np.array(s[key]), 6) for key in ("v", "a", "tau"))
+        out = {"tau": s["tau"]}
+        out.update(extras_kinematics(model, data, q, v, ids, frames, mass, columns))
+        out.update(extras_contacts(model, data, (q, v, a, tau), ids, EXTRAS[name]["held"][k % 6], rng, iv))
+        # The configuration space, its inputs drawn in the file's order.
+        dv = rng.uniform(-1.5, 1.5, model.nv)
+        if k == 1:
+            dv[3:6] *= 1e-9
+        q1_file, _, _ = sample(rng, model, 2)
+        dv_pin = from_file_order(names, order, dv, 6)
+        q1 = from_file_order(names, order, q1_file, 7)
+        q_next = pin.integrate(model, q, dv_pin)
+        dq = pin.difference(model, q, q1)
+        back = pin.integrate(model, q, dq)
+        assert scaled(back[7:], q1[7:]) < TOLERANCE and scaled(back[:3], q1[:3]) < TOLERANCE
+        assert min(scaled(back[3:7], q1[3:7]), scaled(back[3:7], -q1[3:7])) < TOLERANCE
+        jacobians = {
+            "dintegrate_dq": pin.dIntegrate(model, q, dv_pin, pin.ARG0),
+            "dintegrate_dv": pin.dIntegrate(model, q, dv_pin, pin.ARG1),
+            "ddifference_dq0": pin.dDifference(model, q, q1, pin.ARG0),
+            "ddifference_dq1": pin.dDifference(model, q, q1, pin.ARG1),
+        }
+        out.update({"dv": dv.tolist(), "q1": q1_file.tolist(), "q_next": q_next[iq].tolist(),
+                    "dq": dq[iv].tolist()})
+        out.update({key: np.asarray(j)[np.ix_(iv, iv)].tolist() for key, j in jacobians.items()})
+        samples.append(out)
+    result = {
+        "robot": name,
+        "generator": "tests/data/floating/make.py (extras) with pinocchio %s" % importlib.metadata.version("pin"),
+        "states": name + ".json (q, v, a, tau of its samples, in order)",
+        "frames": frames,
+        "mass": mass,
+        "seed": SEED + 4,
+        "conventions": "as solo12_kinematics.json, solo12_contacts.json and solo12.json's configuration space, "
+                       "joints (rows, columns) in the file's order",
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_extras.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    print(name, "extras:", len(samples), "samples,", len(frames), "frames")
+
+
+def extras_kinematics(model, data, q, v, ids, frames, mass, columns):
+    """`kinematics`' outputs at one state (Pinocchio's joint order), checked as it checks them;
+    `columns` takes a matrix's columns to the file's order."""
+    com = pin.centerOfMass(model, data, q).copy()
+    jcom = pin.jacobianCenterOfMass(model, data, q).copy()
+    ag = pin.computeCentroidalMap(model, data, q).copy()
+    dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
+    assert scaled(ag[:3], mass * jcom) < TOLERANCE
+    pin.forwardKinematics(model, data, q, v)
+    momentum = pin.Force.Zero()
+    for k in range(1, model.njoints):
+        momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
+    assert scaled(ag @ v, pin.SE3(np.eye(3), com).actInv(momentum).vector) < TOLERANCE
+    step = 1e-6
+    diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
+            - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
+    assert scaled(diff @ v, dag @ v) < 1e-6
+    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+    pin.updateFramePlacements(model, data)
+    pin.computeJointJacobians(model, data, q)
+    out = {"com": com.tolist(), "Jcom": columns(jcom).tolist(), "Ag": columns(ag).tolist(),
+           "dAg_v": (dag @ v).tolist(), "frames": {}}
+    for frame, i in zip(frames, ids):
+        placement = data.oMf[i]
+        entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
+        for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
+            jac = pin.getFrameJacobian(model, data, i, ref)
+            assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
+            entry["J_" + key] = columns(jac).tolist()
+            entry["dJv_" + key] = pin.getFrameClassicalAcceleration(model, data, i, ref).vector.tolist()
+        out["frames"][frame] = entry
+    return out
+
+
+def extras_contacts(model, data, state, ids, mask, rng, iv):
+    """`contacts`' outputs at one state (Pinocchio's joint order), the frames `ids`, those of
+    `mask` held; the vectors in the file's order (`iv`)."""
+    q, v, a, tau = state
+    wrenches = rng.uniform(-10, 10, (len(ids), 6))
+    forces = rng.uniform(-10, 10, (len(ids), 3))
+    pin.computeJointJacobians(model, data, q)
+    pin.updateFramePlacements(model, data)
+    jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
+    m = pin.crba(model, data, q).copy()
+    m = np.triu(m) + np.triu(m, 1).T
+    out = {}
+    for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
+        fext = [pin.Force.Zero() for _ in range(model.njoints)]
+        for i, wrench in zip(ids, w):
+            frame = model.frames[i]
+            rotation = data.oMf[i].rotation
+            fext[frame.parentJoint] += frame.placement.act(pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:]))
+        generalized = sum(j.T @ wrench for j, wrench in zip(jac, w))
+        tau_ext = pin.rnea(model, data, q, v, a, fext).copy()
+        assert scaled(tau_ext, tau - generalized) < TOLERANCE
+        acc_ext = pin.aba(model, data, q, v, tau, fext).copy()
+        h = pin.nonLinearEffects(model, data, q, v)
+        assert scaled(acc_ext, np.linalg.solve(m, tau - h + generalized)) < 1e-9
+        out[key] = (w if key == "wrenches" else forces).tolist()
+        out["tau_" + key] = tau_ext[iv].tolist()
+        out["a_" + key] = acc_ext[iv].tolist()
+    held = [i for i, flag in zip(ids, mask) if flag]
+    models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
+                                       model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in held]
+    datas = [c.createData() for c in models]
+    pin.initConstraintDynamics(model, data, models, datas)
+    ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
+    lambda_c = data.lambda_c.copy().reshape(-1, 3)
+    h = pin.nonLinearEffects(model, data, q, v)
+    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+    pin.computeJointJacobians(model, data, q)
+    pin.updateFramePlacements(model, data)
+    jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in held]
+                   + [np.zeros((0, model.nv))])
+    gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
+                            for i in held] + [np.zeros(0)])
+    c = len(gamma)
+    kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
+    solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
+    assert scaled(ddq, solution[:model.nv]) < 1e-9
+    assert not held or scaled(lambda_c.ravel(), -solution[model.nv:]) < 1e-9
+    full = np.zeros((len(ids), 3))
+    full[np.array(mask, dtype=bool)] = lambda_c
+    out.update({"in_contact": mask, "a_contact": ddq[iv].tolist(), "lambda": full.tolist()})
+    return out
+
+
 if __name__ == "__main__":
     for name, urdf in ROBOTS.items():
         make(name, urdf)
@@ -978,3 +1159,5 @@ if __name__ == "__main__":
     joint_terms_derivatives("solo12")
     for name in SURFACE:
         surface(name, ROBOTS[name])
+    for name in EXTRAS:
+        extras(name, ROBOTS[name])
