@@ -6,7 +6,7 @@
 
 use super::decimate;
 use super::filter::LowPass;
-use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
+use crate::trajectory::{self, Base, Columns, CsvError, Differences, Given, Sample};
 use crate::Error;
 use std::io::BufReader;
 
@@ -69,6 +69,14 @@ impl Source {
                 columns,
             });
         };
+        if columns.base != Base::Fixed {
+            // Filtered entry by entry, the base's quaternion would leave the unit sphere.
+            return Err(Error::Setting(
+                "--cutoff: a floating base's samples are not filtered yet (its quaternion, \
+                 filtered entry by entry, would not stay of unit norm)"
+                    .into(),
+            ));
+        }
         let file = std::fs::File::open(path).map_err(|e| Error::Samples(format!("{path}: {e}")))?;
         let (mut data, mut lines): (Vec<Vec<f64>>, Vec<usize>) = (Vec::new(), Vec::new());
         let rows = trajectory::read_rows(
@@ -163,7 +171,7 @@ impl Source {
                 last_line,
                 ..
             } => {
-                let mut differences = Differences::new(columns.joints, columns.torques);
+                let mut differences = Differences::new(*columns);
                 let at = |e: CsvError| format!("{path}: {e} (after the low-pass filter)");
                 for (k, &line) in lines.iter().enumerate() {
                     let row = data.iter().map(|column| column[k]).collect();
