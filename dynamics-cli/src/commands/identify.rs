@@ -162,9 +162,18 @@ fn fixed(args: &Identify) -> Result<Fitted, Failure> {
 /// joints' alone (the floating body's parameters, in the base's rows only, then unidentifiable).
 fn floating(args: &Identify) -> Result<Fitted, Failure> {
     let not_yet = [
-        (args.joint_terms.rotors, "--rotors: the floating base's regressor has no joint columns yet"),
-        (!args.joint_terms.friction.is_empty(), "--friction: the floating base's regressor has no joint columns yet"),
-        (args.consistent, "--consistent: not on a floating base yet (its floating body's pseudo-inertia, about the base origin, is not written)"),
+        (
+            args.joint_terms.rotors,
+            "--rotors: the floating base's regressor has no joint columns yet",
+        ),
+        (
+            !args.joint_terms.friction.is_empty(),
+            "--friction: the floating base's regressor has no joint columns yet",
+        ),
+        (
+            args.description_out.is_some(),
+            "--description-out: a description's `[floating]` body is not rewritten yet",
+        ),
     ];
     if let Some((_, message)) = not_yet.iter().find(|(asked, _)| *asked) {
         return Err(usage("identify", &format!("{message} (with --floating)")));

@@ -120,6 +120,38 @@ fn every_row_of_noise_free_data_gives_the_base_parameters_exactly() {
     }
 }
 
+/// `--consistent` on a floating base: `n + 1` bodies, the floating one first (its
+/// pseudo-inertia about the base origin). On noise-free data of the description's bodies, which
+/// are consistent, the consistent estimate is the plain one.
+#[test]
+fn the_consistent_estimate_of_noise_free_data_is_the_plain_one() {
+    let report = identify(&repository(DATA), &["--consistent"]);
+    let consistent = &report["consistent"];
+    assert_eq!(consistent["plain_is_consistent"], true, "{consistent}");
+    let links = consistent["links"].as_array().expect("links");
+    assert_eq!(links.len(), 13);
+    for link in links {
+        assert!(
+            link["smallest_eigenvalue"].as_f64().unwrap() >= -1e-9,
+            "{link}"
+        );
+    }
+    let plain = parameters(&report);
+    let found = consistent["parameters"].as_array().expect("parameters");
+    assert_eq!(found.len(), plain.len());
+    let scale = plain.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    for (p, c) in plain.iter().zip(found) {
+        assert_eq!(c["name"].as_str(), Some(p.0.as_str()));
+        let c = c["estimate"].as_f64().unwrap();
+        assert!(
+            (c - p.1).abs() <= 1e-6 * scale,
+            "{}: {c} against {}",
+            p.0,
+            p.1
+        );
+    }
+}
+
 #[test]
 fn the_joints_rows_alone_leave_the_floating_body_unidentified() {
     let (_, rank_joints) = ranks();
@@ -297,8 +329,8 @@ fn bad_floating_samples_are_errors_at_their_line_and_column() {
             "--cutoff: a floating base's samples are not filtered yet",
         ),
         (
-            &["--consistent"][..],
-            "--consistent: not on a floating base yet",
+            &["--consistent", "--description-out", "out.toml"][..],
+            "--description-out: a description's `[floating]` body is not rewritten yet",
         ),
         (
             &["--rotors"][..],
