@@ -255,6 +255,33 @@ fn positions_alone_give_v_and_a_along_the_configuration_space() {
     assert!(error < 1e-4, "{error:e}");
 }
 
+/// Through the filters (the quaternion made continuous, filtered entry by entry and put back on
+/// the unit sphere; τ and the regressor's columns alike, decimated), noise-free data still fit,
+/// given v and a or from the positions alone.
+#[test]
+fn through_the_filters_noise_free_data_still_fit() {
+    let (header, rows) = read_data();
+    let scale = rows
+        .iter()
+        .flat_map(|r| &r[r.len() - 18..])
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let positions = write_columns("solo12_positions_filtered.csv", &header, &rows, |c| {
+        !c.starts_with('v') && !c.starts_with('a')
+    });
+    for (csv, fit, estimates) in [(repository(DATA), 1e-6, 1e-6), (positions, 1e-4, 1e-4)] {
+        let report = identify(&csv, &["--cutoff", "40"]);
+        // ⌊0.4 · 500 / 40⌋: one sample in 5 of those whose window of 81 is full (the base's
+        // rows have 92 parameters each: more samples than 20 Hz would keep).
+        assert_eq!(report["filter"]["decimation"].as_u64(), Some(5));
+        assert_eq!(report["samples"].as_u64(), Some(185));
+        let residual = report["joints"].as_array().expect("rows").iter();
+        let residual = residual.fold(0.0f64, |m, r| m.max(r["residual_rms"].as_f64().unwrap()));
+        let error = worst_error(&report);
+        assert!(residual < fit * scale, "{residual:e}");
+        assert!(error < estimates, "{error:e}");
+    }
+}
+
 /// The command's error on `text` as the CSV (with `extra` options): its exit code and stderr.
 fn failure(name: &str, text: &str, extra: &[&str]) -> (Option<i32>, String) {
     let path: PathBuf = scratch(name);
@@ -322,12 +349,16 @@ fn bad_floating_samples_are_errors_at_their_line_and_column() {
         assert_eq!(code, Some(1), "{stderr}");
         assert!(stderr.contains(message), "{message}: {stderr}");
     }
+    // Read whole before the filter: the quaternion is checked as it is read.
+    let (code, stderr) = failure(
+        "bad_floating_filtered.csv",
+        &cases[1].0,
+        &["--cutoff", "20"],
+    );
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(stderr.contains(cases[1].1), "{stderr}");
     // Not supported on a floating base yet: usage errors that say so, never a panic.
     for (option, message) in [
-        (
-            &["--cutoff", "10"][..],
-            "--cutoff: a floating base's samples are not filtered yet",
-        ),
         (
             &["--consistent", "--description-out", "out.toml"][..],
             "--description-out: a description's `[floating]` body is not rewritten yet",

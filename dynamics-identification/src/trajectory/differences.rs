@@ -219,7 +219,7 @@ impl Differences {
 
 /// The quaternion `x, y, z, w` of a floating base's row at `line` (its columns 5 to 8)
 /// normalised; an error if its norm is not 1 within [`QUATERNION_NORM`].
-fn unit_quaternion(line: usize, quaternion: &mut [f64]) -> Result<(), CsvError> {
+pub fn unit_quaternion(line: usize, quaternion: &mut [f64]) -> Result<(), CsvError> {
     let norm = quaternion.iter().map(|x| x * x).sum::<f64>().sqrt();
     if (norm - 1.0).abs() <= QUATERNION_NORM {
         quaternion.iter_mut().for_each(|x| *x /= norm);

@@ -17,7 +17,7 @@ mod differences;
 mod quintic;
 
 pub use csv::{decimal, read_rows, Base, Columns, CsvError, Given, LONGEST_LINE};
-pub use differences::Differences;
+pub use differences::{unit_quaternion, Differences, QUATERNION_NORM};
 pub use quintic::quintic;
 use std::io::BufRead;
 
