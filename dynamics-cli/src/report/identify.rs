@@ -134,7 +134,13 @@ impl Report<'_> {
                 let _ = writeln!(out, "  {}", self.unidentified(u));
             }
         }
-        let _ = writeln!(out, "\n{:>5} {:>14} {:>14}", "joint", "σ_i", "residual RMS");
+        let _ = writeln!(
+            out,
+            "\n{:>5} {:>14} {:>14}",
+            self.head(),
+            "σ_i",
+            "residual RMS"
+        );
         for (i, (s, r)) in e.sigma.iter().zip(&e.rms).enumerate() {
             let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
             let _ = writeln!(out, "{joint:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}");
@@ -143,22 +149,40 @@ impl Report<'_> {
             self.consistent_text(&mut out, c, names);
         }
         if let Some((csv, p)) = &self.validation {
-            let _ = writeln!(
-                out,
-                "\nvalidation: the torques of {csv} ({} samples, not in the fit) predicted by \
-                 the estimate\n{:>5} {:>14} {:>14} {:>9}",
-                p.samples, "joint", "RMS of τ", "RMS error", "relative"
-            );
-            for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
-                let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
-                let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
-                let _ = writeln!(
-                    out,
-                    "{joint:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}"
-                );
-            }
+            self.validation_text(&mut out, csv, p);
         }
         out
+    }
+
+    /// The validation's table: per row, the RMS of τ and of the prediction's error.
+    fn validation_text(&self, out: &mut String, csv: &str, p: &Prediction) {
+        let _ = writeln!(
+            out,
+            "\nvalidation: the torques of {csv} ({} samples, not in the fit) predicted by \
+             the estimate\n{:>5} {:>14} {:>14} {:>9}",
+            p.samples,
+            self.head(),
+            "RMS of τ",
+            "RMS error",
+            "relative"
+        );
+        for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
+            let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
+            let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
+            let _ = writeln!(
+                out,
+                "{joint:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}"
+            );
+        }
+    }
+
+    /// The rows' column's heading: `joint`, or `row` where a floating base's are among them.
+    fn head(&self) -> &'static str {
+        if self.rows.iter().any(|r| r.joint.is_none()) {
+            "row"
+        } else {
+            "joint"
+        }
     }
 
     /// The consistent estimate beside the plain one.
@@ -220,7 +244,9 @@ impl Report<'_> {
         let _ = writeln!(
             out,
             "\n{:>5} {:>18} {:>18}",
-            "joint", "residual RMS plain", "consistent"
+            self.head(),
+            "residual RMS plain",
+            "consistent"
         );
         for (i, (p, r)) in e.rms.iter().zip(&c.rms).enumerate() {
             let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);

@@ -82,10 +82,9 @@ impl Differences {
         &mut self,
         line: usize,
         given: Given,
-        row: Vec<f64>,
+        mut row: Vec<f64>,
         each: &mut impl FnMut(&Sample),
     ) -> Result<(), CsvError> {
-        let mut row = row;
         self.given = given;
         self.count += 1;
         let (nq, nv) = (self.columns.positions(), self.columns.rates());
