@@ -234,6 +234,16 @@ pub struct Identify {
     /// (s; rad or m; N m or N). Missing q̇ and q̈ come from central differences
     #[arg(long, value_name = "FILE", value_parser = file, allow_hyphen_values = true)]
     pub csv: String,
+    /// The robot on a free-flying base (the derive's `base = floating`, Pinocchio's free
+    /// flyer): q1..q{n+7} (x, y, z, qx, qy, qz, qw, then the joints), optionally v1..v{n+6} and
+    /// a1..a{n+6} (the base's twist in its frame, then the joint rates), then tau1..tau{n+6}
+    /// (the wrench on the base in its frame, then the joint torques), every row fitted
+    #[arg(long)]
+    pub floating: bool,
+    /// With --floating: fit the joints' rows of τ alone (no wrench on the base measured); the
+    /// file's torques tau7..tau{n+6}, or all n + 6 (the base's six then not read)
+    #[arg(long, requires = "floating")]
+    pub joint_rows: bool,
     #[command(flatten)]
     pub joint_terms: JointTerms,
     /// Low-pass q at this frequency before q̇ and q̈ are taken (a 4th-order Butterworth filter

@@ -103,7 +103,14 @@ fn consistent_estimate(
     estimate: &Estimate,
     standard: &Standard,
 ) -> Result<Consistent, Error> {
-    let links = measured.joints.len();
+    // The bodies' count: the joints' on a fixed base, one more on a floating one (whose rows
+    // are more than its links, or fewer with its joints' rows alone).
+    let links = standard
+        .parameters
+        .iter()
+        .filter(|p| matches!(p, Parameter::Link { .. }))
+        .count()
+        / 10;
     // Offset friction may have either sign; the other joint terms dissipate or add inertia.
     let joint_terms: Vec<bool> = standard.parameters[10 * links..]
         .iter()

@@ -5,12 +5,12 @@
 use crate::identify::base::{self, Standard};
 use crate::identify::model::LinearModel;
 use crate::identify::rows::Springs;
-use crate::trajectory::Columns;
+use crate::trajectory::{Base, Columns};
 use crate::Error;
 use dynamics_codegen::derive;
 use dynamics_codegen::model::{Robot, Value};
-use dynamics_codegen::Equations;
 use dynamics_codegen::{BaseParameters, JointColumns};
+use dynamics_codegen::{Equations, Family, FamilySet, Loaded};
 
 /// The base regressor of a robot, for [`crate::identify()`], [`crate::predict`] and
 /// [`crate::excite()`].
@@ -21,6 +21,7 @@ pub struct Regressor {
     joint_columns: Vec<JointColumns>,
     fields: Vec<f64>,
     springs: Vec<Option<(f64, f64)>>,
+    layout: Base,
 }
 
 impl Regressor {
@@ -57,6 +58,57 @@ impl Regressor {
             joint_columns,
             fields,
             springs,
+            layout: Base::Fixed,
+        })
+    }
+
+    /// The base regressor of `loaded` on a free-flying base (the derive's `base = floating`,
+    /// Pinocchio's free flyer), with `fields` as [`Regressor::new`]'s: `Y_B` of the `n + 6`
+    /// rows of τ, the base's six (the wrench on it, in its frame: what the contacts supply)
+    /// then the joints', or with `joint_rows` the joints' `n` alone; the base parameters of the
+    /// `n + 1` bodies, the floating one first. Its samples' q has `n + 7` values, q̇ and q̈
+    /// `n + 6` (`trajectory::Base::Floating`).
+    ///
+    /// # Errors
+    /// [`Error::Regressor`]: what a floating base does not support (the message has the
+    /// file's diagnostics: joint friction or actuator inertia beside the regressor, lengths or
+    /// angles that are struct fields, mimic joints).
+    ///
+    /// # Panics
+    /// `fields` of another length than the robot's.
+    pub fn floating(
+        loaded: &Loaded,
+        fields: Vec<f64>,
+        joint_rows: bool,
+    ) -> Result<Regressor, Error> {
+        let robot = &loaded.robot;
+        let names = robot.fields();
+        assert_eq!(fields.len(), names.len(), "a value per field");
+        let families = FamilySet::default().with(Family::BaseParameters);
+        let eq = loaded.floating_equations_with(families).map_err(|d| {
+            let lines: Vec<String> = d.iter().map(ToString::to_string).collect();
+            Error::Regressor(lines.join("\ndynamics: "))
+        })?;
+        let Some(base) = eq.base_parameters.clone() else {
+            return Err(Error::StructFields);
+        };
+        let model = {
+            let mut entries = base::entries(&eq, &base, &fields);
+            if joint_rows {
+                entries.rows.drain(..6);
+            }
+            LinearModel::new(&entries).map_err(Error::Regressor)?
+        };
+        let model = model.on_floating_base(eq.dof);
+        let springs = vec![None; model.joints()];
+        Ok(Regressor {
+            model,
+            eq,
+            base,
+            joint_columns: vec![JointColumns::default(); robot.joints.len()],
+            fields,
+            springs,
+            layout: Base::Floating { joint_rows },
         })
     }
 
@@ -75,9 +127,14 @@ impl Regressor {
     /// The columns of the samples `identify` reads: t, q, any q̇ and q̈, and τ.
     #[must_use]
     pub fn columns(&self) -> Columns {
+        let joints = match self.layout {
+            Base::Fixed => self.model.joints(),
+            Base::Floating { .. } => self.eq.dof - 6,
+        };
         Columns {
-            joints: self.model.joints(),
+            joints,
             torques: true,
+            base: self.layout,
         }
     }
 

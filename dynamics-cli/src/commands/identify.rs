@@ -1,4 +1,4 @@
-//! `dynamics identify ROBOT --csv FILE [--rotors] [--friction KINDS] [--cutoff HZ]
+//! `dynamics identify ROBOT --csv FILE [--floating [--joint-rows]] [--rotors] [--friction KINDS] [--cutoff HZ]
 //! [--tolerance X] [--set NAME=VALUE].. [--plot FILE] [--validate FILE [--validate-plot FILE]]
 //! [--iterate-weights] [--consistent [--description-out FILE]] [--json]`: the robot's parameters estimated from measured motions and torques.
 //!
@@ -34,16 +34,21 @@
 //! pseudo-inertia `J_i ⪰ 0` minimising `‖R_w (P π) − z_w‖²` (`identify::consistent`), and
 //! with `--description-out` the TOML description rewritten with them (`report::description`).
 //!
+//! `--floating`: the robot on a free-flying base (Pinocchio's free flyer), samples of `q` of
+//! `n + 7` values and `v`, `a`, `τ` of `n + 6`; every row of τ fitted, the base's six (the
+//! wrench on it) and the joints', or with `--joint-rows` the joints' alone
+//! (`Regressor::floating`).
+//!
 //! `Y` is never held: each joint's rows update a triangular factor as they are read
 //! (`identify::measured`), `YᵀY` is never formed, and all of the above comes from the
 //! factors. The regressor is evaluated by a tape of only its own nodes of the robot's graph.
 
 use super::values::settings;
-use super::{load, robot_failure, usage, write_svg, Failure};
+use super::{load, load_with_request, robot_failure, usage, write_svg, Failure};
 use crate::args::Identify;
 use crate::plot::Envelope;
 use crate::report::description;
-use crate::report::identify::Report;
+use crate::report::identify::{Report, Row, BASE_ROWS};
 use crate::report::identify_figure as figure;
 use dynamics_codegen::Parameter;
 use dynamics_identification::identify::consistent::Consistent;
@@ -52,11 +57,11 @@ use dynamics_identification::sizing::unit;
 use dynamics_identification::{identify, predict, Error, Identified, Options, Regressor, Samples};
 
 pub fn run(args: &Identify) -> Result<String, Failure> {
-    let robot = load(&args.robot)?;
-    let fields = settings("identify", &robot, &args.set)?;
-    let joint_columns = args.joint_terms.columns(&robot);
-    let regressor = Regressor::new(&robot, joint_columns, fields)
-        .map_err(|e| robot_failure(&args.robot.path, e))?;
+    let (name, regressor, rows, rows_used) = if args.floating {
+        floating(args)?
+    } else {
+        fixed(args)?
+    };
     let source = open(&args.csv, &regressor, args.cutoff)?;
     let options = Options {
         tolerance: args.tolerance,
@@ -69,14 +74,8 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         e => Failure::File(e.to_string()),
     })?;
     let consistent = consistent(args, &identified)?;
-    // A row of τ per coordinate (a mimic joint's torque is carried onto the joint it follows).
-    let rows: Vec<(usize, &str)> = robot
-        .coordinates()
-        .iter()
-        .map(|&j| (j + 1, unit(robot.joints[j].kind)))
-        .collect();
     let figure_of = |path: &str, what: &str, source: &Samples| -> Result<Prediction, Failure> {
-        let title = format!("{}: {what}", robot.name);
+        let title = format!("{name}: {what}");
         figure_file(
             &regressor,
             source,
@@ -100,13 +99,20 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
             Some((csv.as_str(), prediction))
         }
     };
-    let description = format!(
-        "the base parameters of the links and the joint terms: {} (their groupings: \
-         `dynamics inspect --base-parameters` with the same options)",
-        regressor.joint_terms()
-    );
+    let description = if args.floating {
+        "the base parameters of the floating body and the links, the floating body's first \
+         (their groupings: the derive's `base_from_standard()` with `base = floating, \
+         base_parameters = true`)"
+            .to_string()
+    } else {
+        format!(
+            "the base parameters of the links and the joint terms: {} (their groupings: \
+             `dynamics inspect --base-parameters` with the same options)",
+            regressor.joint_terms()
+        )
+    };
     let report = Report {
-        robot: &robot.name,
+        robot: &name,
         csv: &args.csv,
         method: identified.method,
         filter: source.filter(),
@@ -116,6 +122,7 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
         start: identified.span.0,
         end: identified.span.1,
         rows,
+        rows_used,
         linear: regressor.model(),
         estimate: &identified.estimate,
         consistent,
@@ -126,6 +133,84 @@ pub fn run(args: &Identify) -> Result<String, Failure> {
     } else {
         report.text()
     })
+}
+
+/// The robot's name, its regressor, the rows of τ it fits and, where not every joint's, which.
+type Fitted = (String, Regressor, Vec<Row>, Option<String>);
+
+/// The robot on its fixed base: a row of τ per coordinate (a mimic joint's torque is carried
+/// onto the joint it follows).
+fn fixed(args: &Identify) -> Result<Fitted, Failure> {
+    let robot = load(&args.robot)?;
+    let fields = settings("identify", &robot, &args.set)?;
+    let joint_columns = args.joint_terms.columns(&robot);
+    let regressor = Regressor::new(&robot, joint_columns, fields)
+        .map_err(|e| robot_failure(&args.robot.path, e))?;
+    let rows = (robot.coordinates().iter().enumerate())
+        .map(|(i, &j)| Row {
+            tau: i + 1,
+            joint: Some(j + 1),
+            base: "",
+            unit: unit(robot.joints[j].kind),
+        })
+        .collect();
+    Ok((robot.name, regressor, rows, None))
+}
+
+/// `--floating`: the robot on a free-flying base, the base's six rows of τ (the wrench on it,
+/// which force plates or the feet's sensors give) and the joints', or with `--joint-rows` the
+/// joints' alone (the floating body's parameters, in the base's rows only, then unidentifiable).
+fn floating(args: &Identify) -> Result<Fitted, Failure> {
+    let not_yet = [
+        (
+            args.joint_terms.rotors,
+            "--rotors: the floating base's regressor has no joint columns yet",
+        ),
+        (
+            !args.joint_terms.friction.is_empty(),
+            "--friction: the floating base's regressor has no joint columns yet",
+        ),
+        (
+            args.description_out.is_some(),
+            "--description-out: a description's `[floating]` body is not rewritten yet",
+        ),
+    ];
+    if let Some((_, message)) = not_yet.iter().find(|(asked, _)| *asked) {
+        return Err(usage("identify", &format!("{message} (with --floating)")));
+    }
+    let loaded = load_with_request(&args.robot)?;
+    let fields = settings("identify", &loaded.robot, &args.set)?;
+    let regressor = Regressor::floating(&loaded, fields, args.joint_rows)
+        .map_err(|e| robot_failure(&args.robot.path, e))?;
+    let robot = &loaded.robot;
+    let base = BASE_ROWS.iter().enumerate().map(|(i, &(base, unit))| Row {
+        tau: i + 1,
+        joint: None,
+        base,
+        unit,
+    });
+    let joints = robot.joints.iter().enumerate().map(|(j, joint)| Row {
+        tau: 7 + j,
+        joint: Some(j + 1),
+        base: "",
+        unit: unit(joint.kind),
+    });
+    let n = robot.joints.len();
+    let (rows, used) = if args.joint_rows {
+        let used = format!(
+            "the joints' {n} of τ alone (--joint-rows): the floating body's parameters and the \
+             combinations only the base's rows see are not identifiable"
+        );
+        (joints.collect(), used)
+    } else {
+        let used = format!(
+            "all {} of τ, the base's 6 (the wrench on it in its frame: fx fy fz mx my mz) and \
+             the joints' {n}",
+            n + 6
+        );
+        (base.chain(joints).collect(), used)
+    };
+    Ok((robot.name.clone(), regressor, rows, Some(used)))
 }
 
 /// The consistent estimate, if asked for, with its standard parameters' names; the description
@@ -156,7 +241,7 @@ fn figure_file(
     source: &Samples,
     estimate: &dynamics_identification::identify::estimate::Estimate,
     path: &str,
-    (title, rows): (String, &[(usize, &str)]),
+    (title, rows): (String, &[Row]),
 ) -> Result<Prediction, Failure> {
     let n = regressor.model().joints();
     let mut envelope = Envelope::new(figure::SERIES * n);

@@ -142,6 +142,7 @@ fn read(path: &str, n: usize, mut each: impl FnMut(Sample)) -> Result<usize, Fai
     let columns = trajectory::Columns {
         joints: n,
         torques: false,
+        base: Default::default(),
     };
     let mut count = 0;
     trajectory::read_rows(

@@ -138,6 +138,7 @@ fn read(
     let columns = trajectory::Columns {
         joints: n,
         torques: false,
+        base: Default::default(),
     };
     trajectory::read_csv(BufReader::new(file), columns, |s| sizer.push(s), progress)
         .map(|(_, method)| method)

@@ -26,15 +26,52 @@ pub struct Report<'a> {
     pub tolerance: f64,
     pub start: f64,
     pub end: f64,
-    /// Per row of τ (a coordinate: every joint but the mimic ones), its joint's number and
-    /// unit, `N m` or `N`.
-    pub rows: Vec<(usize, &'static str)>,
+    /// Per row of τ (a coordinate: every joint but the mimic ones; a floating base's six and
+    /// its joints'), which it is and its unit.
+    pub rows: Vec<Row>,
+    /// Which rows of τ were fitted, in words, where not every joint's (a floating base).
+    pub rows_used: Option<String>,
     pub linear: &'a LinearModel,
     pub estimate: &'a Estimate,
     /// The consistent estimate and its standard parameters' names, if asked for.
     pub consistent: Option<(&'a Consistent, Vec<String>)>,
     /// Other measurements' file and their torques predicted, if asked for.
     pub validation: Option<(&'a str, Prediction)>,
+}
+
+/// A row of τ: its number in τ (1-based), its joint's number or, on a floating base, the
+/// component of the wrench on the base it is (`fx` … `mz`, in the base frame), and its unit.
+#[derive(Clone, Copy, Debug)]
+pub struct Row {
+    pub tau: usize,
+    pub joint: Option<usize>,
+    pub base: &'static str,
+    pub unit: &'static str,
+}
+
+/// A floating base's six rows of τ, the wrench on the base in its frame, and their units.
+pub const BASE_ROWS: [(&str, &str); 6] = [
+    ("fx", "N"),
+    ("fy", "N"),
+    ("fz", "N"),
+    ("mx", "N m"),
+    ("my", "N m"),
+    ("mz", "N m"),
+];
+
+impl Row {
+    /// The table's label: the joint's number, or the base's component.
+    #[must_use]
+    pub fn label(&self) -> String {
+        self.joint.map_or(self.base.to_string(), |j| j.to_string())
+    }
+
+    /// The figure's: `joint 3`, `base fx`.
+    #[must_use]
+    pub fn name(&self) -> String {
+        self.joint
+            .map_or(format!("base {}", self.base), |j| format!("joint {j}"))
+    }
 }
 
 const METHOD: &str = "two-step weighted least squares (Gautier): an ordinary fit, then each \
@@ -54,6 +91,9 @@ impl Report<'_> {
         let filter = self.filter.map_or("none".into(), |f| describe(&f));
         let _ = writeln!(out, "filter: {filter}");
         let _ = writeln!(out, "model: {}", self.model);
+        if let Some(rows) = &self.rows_used {
+            let _ = writeln!(out, "rows: {rows}");
+        }
         if self.springs {
             let _ = writeln!(out, "springs: the description's, subtracted from τ");
         }
@@ -94,31 +134,55 @@ impl Report<'_> {
                 let _ = writeln!(out, "  {}", self.unidentified(u));
             }
         }
-        let _ = writeln!(out, "\n{:>5} {:>14} {:>14}", "joint", "σ_i", "residual RMS");
+        let _ = writeln!(
+            out,
+            "\n{:>5} {:>14} {:>14}",
+            self.head(),
+            "σ_i",
+            "residual RMS"
+        );
         for (i, (s, r)) in e.sigma.iter().zip(&e.rms).enumerate() {
-            let (joint, unit) = self.rows[i];
+            let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
             let _ = writeln!(out, "{joint:>5} {s:>10.3e} {unit:<3} {r:>10.3e} {unit}");
         }
         if let Some((c, names)) = &self.consistent {
             self.consistent_text(&mut out, c, names);
         }
         if let Some((csv, p)) = &self.validation {
-            let _ = writeln!(
-                out,
-                "\nvalidation: the torques of {csv} ({} samples, not in the fit) predicted by \
-                 the estimate\n{:>5} {:>14} {:>14} {:>9}",
-                p.samples, "joint", "RMS of τ", "RMS error", "relative"
-            );
-            for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
-                let (joint, unit) = self.rows[i];
-                let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
-                let _ = writeln!(
-                    out,
-                    "{joint:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}"
-                );
-            }
+            self.validation_text(&mut out, csv, p);
         }
         out
+    }
+
+    /// The validation's table: per row, the RMS of τ and of the prediction's error.
+    fn validation_text(&self, out: &mut String, csv: &str, p: &Prediction) {
+        let _ = writeln!(
+            out,
+            "\nvalidation: the torques of {csv} ({} samples, not in the fit) predicted by \
+             the estimate\n{:>5} {:>14} {:>14} {:>9}",
+            p.samples,
+            self.head(),
+            "RMS of τ",
+            "RMS error",
+            "relative"
+        );
+        for (i, (m, e)) in p.measured_rms.iter().zip(&p.error_rms).enumerate() {
+            let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
+            let relative = relative(*m, *e).map_or("-".into(), |r| format!("{r:.2} %"));
+            let _ = writeln!(
+                out,
+                "{joint:>5} {m:>10.3e} {unit:<3} {e:>10.3e} {unit:<3} {relative:>9}"
+            );
+        }
+    }
+
+    /// The rows' column's heading: `joint`, or `row` where a floating base's are among them.
+    fn head(&self) -> &'static str {
+        if self.rows.iter().any(|r| r.joint.is_none()) {
+            "row"
+        } else {
+            "joint"
+        }
     }
 
     /// The consistent estimate beside the plain one.
@@ -180,10 +244,12 @@ impl Report<'_> {
         let _ = writeln!(
             out,
             "\n{:>5} {:>18} {:>18}",
-            "joint", "residual RMS plain", "consistent"
+            self.head(),
+            "residual RMS plain",
+            "consistent"
         );
         for (i, (p, r)) in e.rms.iter().zip(&c.rms).enumerate() {
-            let (joint, unit) = self.rows[i];
+            let (joint, unit) = (self.rows[i].label(), self.rows[i].unit);
             let _ = writeln!(out, "{joint:>5} {p:>14.3e} {unit:<3} {r:>14.3e} {unit}");
         }
     }
@@ -238,7 +304,7 @@ impl Report<'_> {
             .collect();
         let joints: Vec<Value> = (0..e.rms.len())
             .map(
-                |i| json!({ "joint": self.rows[i].0, "unit": self.rows[i].1, "sigma": e.sigma[i], "residual_rms": e.rms[i] }),
+                |i| json!({ "joint": self.rows[i].joint, "row": self.rows[i].label(), "tau": self.rows[i].tau, "unit": self.rows[i].unit, "sigma": e.sigma[i], "residual_rms": e.rms[i] }),
             )
             .collect();
         let filter = self.filter.map(|f| {
@@ -256,6 +322,7 @@ impl Report<'_> {
             "end": self.end,
             "filter": filter,
             "model": self.model,
+            "rows": self.rows_used,
             "springs_subtracted": self.springs,
             "method": if e.weighted { "weighted least squares" } else { "ordinary least squares" },
             "weights_reestimated": e.reweighted,

@@ -1,6 +1,7 @@
 //! The figure of an identification: per joint, the measured torque and the torque the
 //! estimate predicts, `Y(q, q̇, q̈) π̂` (left), and their difference (right).
 
+use super::identify::Row;
 use crate::plot::{Envelope, Figure, Line, Panel};
 
 /// Series per joint in the envelope: measured, predicted, residual.
@@ -17,13 +18,13 @@ pub fn values(measured: &[f64], predicted: &[f64], out: &mut [f64]) {
     }
 }
 
-/// The figure of `envelope` (filled with [`values`]) for rows of τ of these joints' numbers and
-/// units (a coordinate's row i is its joint's, `joint 5: τ4` past a mimic joint); `filtered`
+/// The figure of `envelope` (filled with [`values`]) for these rows of τ (a coordinate's row i
+/// is its joint's, `joint 5: τ4` past a mimic joint; a floating base's `base fx: τ1`); `filtered`
 /// when the measured torques were low-passed (the figure says so: it shows them filtered).
 #[must_use]
 pub fn figure<'e>(
     title: String,
-    rows: &[(usize, &str)],
+    rows: &[Row],
     filtered: bool,
     envelope: &'e Envelope,
 ) -> Figure<'e> {
@@ -41,18 +42,19 @@ pub fn figure<'e>(
     let rows = rows
         .iter()
         .enumerate()
-        .map(|(i, (joint, unit))| {
+        .map(|(i, row)| {
+            let (name, unit) = (row.name(), row.unit);
             let base = SERIES * i;
             vec![
                 Panel {
-                    title: format!("joint {joint}: τ{} ({unit})", i + 1),
+                    title: format!("{name}: τ{} ({unit})", row.tau),
                     lines: vec![
                         line("measured", MEASURED, base, false),
                         line("predicted", PREDICTED, base + 1, false),
                     ],
                 },
                 Panel {
-                    title: format!("joint {joint}: measured − predicted ({unit})"),
+                    title: format!("{name}: measured − predicted ({unit})"),
                     lines: vec![line("residual", RESIDUAL, base + 2, false)],
                 },
             ]

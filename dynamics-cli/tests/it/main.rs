@@ -16,6 +16,7 @@ mod cli_excite;
 mod cli_floating;
 mod cli_fuzz;
 mod cli_identify;
+mod cli_identify_floating;
 mod cli_identify_mimic;
 mod cli_limits;
 mod cli_mimic;

@@ -20,6 +20,11 @@ pub struct LinearModel {
     /// order [`LinearModel::rows`] gives their entries.
     pub columns: Vec<Vec<usize>>,
     tape: JointTape,
+    /// The count of q̇ (and q̈) values of a state, and where the tape's q starts in a state's
+    /// q: the rows' count and 0 on a fixed base; `n + 6` and 1 on a floating one, whose graph
+    /// reads `Var::Q(k)` as `q[k + 1]` (`y, z, qx, qy, qz, qw`, then the joints).
+    variables: usize,
+    q_offset: usize,
 }
 
 /// What a robot's graph gives a model: its entries `rows[i][k]` (joint i, parameter k; `None`
@@ -76,12 +81,24 @@ impl LinearModel {
         Ok(LinearModel {
             names: entries.names.clone(),
             described: constant_values(graph, &entries.described, entries.fields),
+            variables: columns.len(),
             columns,
             tape,
+            q_offset: 0,
         })
     }
 
-    /// The number of joints.
+    /// The model of a floating base's graph, whose states have `velocities` values of q̇ and
+    /// q̈ and one more of q, the graph's `Var::Q(k)` being `q[k + 1]`.
+    #[must_use]
+    pub fn on_floating_base(mut self, velocities: usize) -> LinearModel {
+        self.variables = velocities;
+        self.q_offset = 1;
+        self
+    }
+
+    /// The number of joints: of rows of τ (a floating base's six among them, unless the
+    /// joints' rows alone are fitted).
     #[must_use]
     pub fn joints(&self) -> usize {
         self.columns.len()
@@ -96,9 +113,9 @@ impl LinearModel {
     pub fn rows(&self, states: &[JointValues<'_>], work: &mut Work, out: &mut [f64]) {
         assert!((1..=LANES).contains(&states.len()), "1 to {LANES} states");
         let lanes = |values: Vec<&[f64]>| -> Vec<Four> {
-            (0..self.joints()).map(|j| gather(&values, j)).collect()
+            (0..self.variables).map(|j| gather(&values, j)).collect()
         };
-        let q = lanes(states.iter().map(|s| s.q).collect());
+        let q = lanes(states.iter().map(|s| &s.q[self.q_offset..]).collect());
         let qd = lanes(states.iter().map(|s| s.qd).collect());
         let qdd = lanes(states.iter().map(|s| s.qdd).collect());
         let entries = self.entries();

@@ -48,8 +48,12 @@ pub fn each_row(
         model.rows(&states, &mut work, &mut rows);
         for (k, s) in group.iter().enumerate() {
             row[..entries].copy_from_slice(&rows[k * entries..(k + 1) * entries]);
+            // The file's last torques: a floating base's file may give the base's six before
+            // the joints' rows alone.
+            let measured = &s.tau[s.tau.len() - n..];
             for (i, tau) in row[entries..].iter_mut().enumerate() {
-                *tau = springs[i].map_or(s.tau[i], |(k, rest)| s.tau[i] - k * (s.q[i] - rest));
+                *tau =
+                    springs[i].map_or(measured[i], |(k, rest)| measured[i] - k * (s.q[i] - rest));
             }
             if failed.is_some() {
                 return;

@@ -6,7 +6,7 @@
 
 use super::decimate;
 use super::filter::LowPass;
-use crate::trajectory::{self, Columns, CsvError, Differences, Given, Sample};
+use crate::trajectory::{self, Base, Columns, CsvError, Differences, Given, Sample};
 use crate::Error;
 use std::io::BufReader;
 
@@ -69,12 +69,16 @@ impl Source {
                 columns,
             });
         };
+        let floating = columns.base != Base::Fixed;
         let file = std::fs::File::open(path).map_err(|e| Error::Samples(format!("{path}: {e}")))?;
         let (mut data, mut lines): (Vec<Vec<f64>>, Vec<usize>) = (Vec::new(), Vec::new());
         let rows = trajectory::read_rows(
             BufReader::new(file),
             columns,
-            |line, _, row| {
+            |line, _, mut row| {
+                if floating {
+                    trajectory::unit_quaternion(line, &mut row[QUATERNION])?;
+                }
                 data.resize(row.len(), Vec::new());
                 for (column, x) in data.iter_mut().zip(row) {
                     column.push(x);
@@ -103,10 +107,18 @@ impl Source {
             .map_err(|e| Error::Setting(format!("--cutoff: {e}")))?;
         let read = data[0].len();
         let decimation = fitting_decimation(path, cutoff, rate, read)?;
+        if floating {
+            continuous(&mut data[QUATERNION]);
+        }
         // Not t, nor the torques at the end.
-        let torques = data.len() - columns.joints;
+        let torques = 1 + columns.positions() + (rows.given.groups() - 1) * columns.rates();
         for column in &mut data[1..torques] {
             low_pass.filtfilt(column);
+        }
+        if floating {
+            // Filtered entry by entry, the quaternion leaves the unit sphere by the filter's
+            // error: back onto it.
+            normalised(&mut data[QUATERNION]);
         }
         Ok(Source::Filtered {
             path: path.to_string(),
@@ -163,7 +175,7 @@ impl Source {
                 last_line,
                 ..
             } => {
-                let mut differences = Differences::new(columns.joints, columns.torques);
+                let mut differences = Differences::new(*columns);
                 let at = |e: CsvError| format!("{path}: {e} (after the low-pass filter)");
                 for (k, &line) in lines.iter().enumerate() {
                     let row = data.iter().map(|column| column[k]).collect();
@@ -173,6 +185,29 @@ impl Source {
                 Ok(differences.method())
             }
         }
+    }
+}
+
+/// A floating base's quaternion `qx, qy, qz, qw`: the columns of `q4..q7`.
+const QUATERNION: std::ops::Range<usize> = 4..8;
+
+/// The quaternions of the columns `q` (x, y, z, w) of each sample made continuous: each of the
+/// two of a rotation, the one nearer the sample before (a filter across a jump from `q` to `−q`
+/// would pass through no rotation at all).
+fn continuous(q: &mut [Vec<f64>]) {
+    for k in 1..q[0].len() {
+        let dot: f64 = q.iter().map(|c| c[k] * c[k - 1]).sum();
+        if dot < 0.0 {
+            q.iter_mut().for_each(|c| c[k] = -c[k]);
+        }
+    }
+}
+
+/// The quaternions of the columns `q` divided by their norms.
+fn normalised(q: &mut [Vec<f64>]) {
+    for k in 0..q[0].len() {
+        let norm = q.iter().map(|c| c[k] * c[k]).sum::<f64>().sqrt();
+        q.iter_mut().for_each(|c| c[k] /= norm);
     }
 }
 

@@ -19,12 +19,65 @@ const BYTE_ORDER_MARK: char = '\u{feff}';
 /// At most this many characters of a bad value are repeated in its error.
 const SHOWN: usize = 40;
 
-/// What a file must hold: the joints' count, and whether joint torques end each line.
+/// What a file must hold: the joints' count, whether joint torques end each line, and the base.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Columns {
     pub joints: usize,
     /// `tau1..taun` after the positions and derivatives (`dynamics identify`).
     pub torques: bool,
+    pub base: Base,
+}
+
+/// The robot's base, which sets the widths of a file's groups of columns.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Base {
+    /// `q`, `qd`, `qdd` and `tau` of `n` columns each.
+    #[default]
+    Fixed,
+    /// A free-flying base (Pinocchio's free flyer): `q1..q{n+7}` (`x, y, z, qx, qy, qz, qw`,
+    /// then the joints), `v1..v{n+6}` and `a1..a{n+6}` (the base's twist in its frame, then the
+    /// joint rates), `tau1..tau{n+6}` (the wrench on the base in its frame, then the joint
+    /// torques); with `joint_rows` the torques may be the joints' alone, `tau7..tau{n+6}`.
+    Floating { joint_rows: bool },
+}
+
+impl Columns {
+    /// The count of `q` columns.
+    #[must_use]
+    pub fn positions(&self) -> usize {
+        match self.base {
+            Base::Fixed => self.joints,
+            Base::Floating { .. } => self.joints + 7,
+        }
+    }
+
+    /// The count of columns of each derivative (`qd` or `v`, `qdd` or `a`) and of `tau`.
+    #[must_use]
+    pub fn rates(&self) -> usize {
+        match self.base {
+            Base::Fixed => self.joints,
+            Base::Floating { .. } => self.joints + 6,
+        }
+    }
+
+    /// The derivatives' names: `qd`, `qdd`, or a floating base's `v`, `a`.
+    #[must_use]
+    pub fn derivative_names(&self) -> [&'static str; 2] {
+        match self.base {
+            Base::Fixed => ["qd", "qdd"],
+            Base::Floating { .. } => ["v", "a"],
+        }
+    }
+
+    /// The torques' columns a file may end with, by the number of the first (1-based): every
+    /// row's, or with a floating base's `joint_rows` also the joints' alone.
+    fn torque_starts(&self) -> &'static [usize] {
+        match (self.torques, self.base) {
+            (false, _) => &[],
+            (true, Base::Floating { joint_rows: true }) => &[1, 7],
+            (true, _) => &[1],
+        }
+    }
 }
 
 /// Which derivatives a file gives.
@@ -71,39 +124,65 @@ impl std::fmt::Display for CsvError {
     }
 }
 
-/// The header's expected names, for the columns and what is given.
-pub fn header_names(columns: Columns, given: Given) -> Vec<String> {
+/// The header's expected names, for the columns and what is given, the torques from
+/// `tau{first}` (1 but for a floating base's joints' rows alone).
+pub fn header_names(columns: Columns, given: Given, first: usize) -> Vec<String> {
     let mut names = vec!["t".to_string()];
-    let groups = ["q", "qd", "qdd"];
-    let torques = if columns.torques { &["tau"][..] } else { &[] };
-    for g in groups[..given.groups()].iter().chain(torques) {
-        names.extend((1..=columns.joints).map(|i| format!("{g}{i}")));
+    names.extend((1..=columns.positions()).map(|i| format!("q{i}")));
+    let (rates, [qd, qdd]) = (columns.rates(), columns.derivative_names());
+    for g in [qd, qdd].iter().take(given.groups() - 1) {
+        names.extend((1..=rates).map(|i| format!("{g}{i}")));
+    }
+    if columns.torques {
+        names.extend((first..=rates).map(|i| format!("tau{i}")));
     }
     names
 }
 
-/// What a header of `k` names gives, for these columns.
-fn layout(line: usize, k: usize, columns: Columns) -> Result<Given, CsvError> {
-    let n = columns.joints;
-    let extra = usize::from(columns.torques) * n;
-    let given = [Given::Positions, Given::Velocities, Given::Accelerations]
+/// What a header of `k` names gives, for these columns: the derivatives, and the number of
+/// the first torque's column.
+fn layout(line: usize, k: usize, columns: Columns) -> Result<(Given, usize), CsvError> {
+    let (nq, nv) = (columns.positions(), columns.rates());
+    let starts = columns.torque_starts();
+    let width = |g: Given, first: usize| {
+        let torques = if columns.torques { nv + 1 - first } else { 0 };
+        1 + nq + (g.groups() - 1) * nv + torques
+    };
+    let layouts = [Given::Positions, Given::Velocities, Given::Accelerations]
         .into_iter()
-        .find(|g| k == 1 + g.groups() * n + extra);
-    given.ok_or_else(|| {
+        .flat_map(|g| {
+            starts
+                .iter()
+                .copied()
+                .chain((!columns.torques).then_some(1))
+                .map(move |s| (g, s))
+        });
+    let found = layouts.clone().find(|&(g, s)| k == width(g, s));
+    found.ok_or_else(|| {
+        let [qd, qdd] = columns.derivative_names();
+        let tail: Vec<String> = starts.iter().map(|s| format!("tau{s}..tau{nv}")).collect();
         let (tail, torques) = if columns.torques {
-            (format!(", then tau1..tau{n}"), " and torques")
+            (format!(", then {}", tail.join(" or ")), " and torques")
         } else {
             (String::new(), "")
+        };
+        let mut counts: Vec<String> = layouts.map(|(g, s)| width(g, s).to_string()).collect();
+        let last = counts.pop().unwrap_or_default();
+        let robot = match columns.base {
+            Base::Fixed => format!("the robot has {} joints", columns.joints),
+            Base::Floating { .. } => format!(
+                "the robot has {} joints on a floating base (q: the base's 7, x, y, z, qx, qy, \
+                 qz, qw, then the joints'; v, a and tau: the base's 6, then the joints')",
+                columns.joints
+            ),
         };
         CsvError {
             line,
             column: None,
             message: format!(
-                "the header has {k} columns; the robot has {n} joints: expected t,q1..q{n}, \
-                 optionally qd1..qd{n} and qdd1..qdd{n}{tail} ({}, {} or {} columns{torques})",
-                1 + n + extra,
-                1 + 2 * n + extra,
-                1 + 3 * n + extra
+                "the header has {k} columns; {robot}: expected t,q1..q{nq}, optionally \
+                 {qd}1..{qd}{nv} and {qdd}1..{qdd}{nv}{tail} ({} or {last} columns{torques})",
+                counts.join(", ")
             ),
         }
     })
@@ -127,10 +206,16 @@ fn shown(text: &str) -> String {
     }
 }
 
-fn parse_header(line: usize, text: &str, columns: Columns) -> Result<Given, CsvError> {
+/// What the header gives, and its names.
+fn parse_header(
+    line: usize,
+    text: &str,
+    columns: Columns,
+) -> Result<(Given, Vec<String>), CsvError> {
     let found: Vec<&str> = text.split(',').map(str::trim).collect();
-    let given = layout(line, found.len(), columns)?;
-    for (c, (want, got)) in header_names(columns, given).iter().zip(&found).enumerate() {
+    let (given, first) = layout(line, found.len(), columns)?;
+    let names = header_names(columns, given, first);
+    for (c, (want, got)) in names.iter().zip(&found).enumerate() {
         if want != got {
             return Err(CsvError {
                 line,
@@ -139,7 +224,7 @@ fn parse_header(line: usize, text: &str, columns: Columns) -> Result<Given, CsvE
             });
         }
     }
-    Ok(given)
+    Ok((given, names))
 }
 
 /// The values of one data line, checked: count, finite numbers, time after `previous`.
@@ -246,8 +331,7 @@ pub fn read_rows(
             continue;
         }
         let Some((given, names)) = &header else {
-            let given = parse_header(line, trimmed, columns)?;
-            header = Some((given, header_names(columns, given)));
+            header = Some(parse_header(line, trimmed, columns)?);
             continue;
         };
         let row = parse_row(line, trimmed, names, previous)?;

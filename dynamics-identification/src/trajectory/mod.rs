@@ -16,8 +16,8 @@ mod csv;
 mod differences;
 mod quintic;
 
-pub use csv::{decimal, read_rows, Columns, CsvError, Given, LONGEST_LINE};
-pub use differences::Differences;
+pub use csv::{decimal, read_rows, Base, Columns, CsvError, Given, LONGEST_LINE};
+pub use differences::{unit_quaternion, Differences, QUATERNION_NORM};
 pub use quintic::quintic;
 use std::io::BufRead;
 
@@ -39,25 +39,39 @@ pub struct Sample {
 impl Sample {
     /// The value of largest magnitude, as the file's column (1-based) and name it is or is
     /// taken from (q̇ by differences of q: q's column), and the value: where to look when the
-    /// equations of a sample overflow.
+    /// equations of a sample overflow. A floating base's `v`, `a` (more than q has) are
+    /// named as such, and its torques are the file's last columns.
     #[must_use]
     pub fn largest(&self) -> (usize, String, f64) {
-        let n = self.q.len();
-        let groups = [&self.q, &self.qd, &self.qdd, &self.tau];
+        let (nq, nv) = (self.q.len(), self.qd.len());
+        let names = if nq == nv {
+            ["q", "qd", "qdd"]
+        } else {
+            ["q", "v", "a"]
+        };
+        let groups = self.given.groups();
+        // The first column of each group, and of the torques after the given groups.
+        let starts = [2, 2 + nq, 2 + nq + nv, 2 + nq + (groups - 1) * nv];
+        let values = [&self.q, &self.qd, &self.qdd, &self.tau];
         let mut best = (1, "t".to_string(), self.t);
-        for (g, values) in groups.iter().enumerate() {
+        for (g, values) in values.iter().enumerate() {
             // A derivative the file does not give is its lower derivative's differences.
-            let own = if g == 3 {
-                g
+            let own = if g == 3 { g } else { g.min(groups - 1) };
+            let (name, first) = if g == 3 {
+                ("tau", nv + 1 - self.tau.len())
             } else {
-                g.min(self.given.groups() - 1)
+                (names[own], 1)
             };
-            let column = if g == 3 { self.given.groups() } else { own };
-            let name = ["q", "qd", "qdd", "tau"][own];
             for (j, &x) in values.iter().enumerate() {
                 // A NaN, else the larger: the first of equals.
                 if x.is_nan() || x.abs() > best.2.abs() {
-                    best = (2 + column * n + j, format!("{name}{}", j + 1), x);
+                    // q̇ of a floating base by differences: its joint's q, or the base's first.
+                    let j = if own == 0 && g > 0 && nq > nv {
+                        j.saturating_sub(6) + usize::from(j >= 6) * 7
+                    } else {
+                        j
+                    };
+                    best = (starts[own] + j, format!("{name}{}", first + j), x);
                 }
             }
         }
@@ -78,7 +92,7 @@ pub fn read_csv(
     mut each: impl FnMut(&Sample),
     progress: impl FnMut(u64),
 ) -> Result<(usize, &'static str), CsvError> {
-    let mut differences = Differences::new(columns.joints, columns.torques);
+    let mut differences = Differences::new(columns);
     let rows = read_rows(
         reader,
         columns,

@@ -7,6 +7,7 @@
 
 mod api;
 mod excite;
+mod floating_trajectory;
 mod identify;
 mod lanes;
 mod linear_algebra;

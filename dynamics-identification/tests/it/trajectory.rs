@@ -12,6 +12,7 @@ fn read(text: &str, n: usize) -> Result<Vec<Sample>, CsvError> {
         Columns {
             joints: n,
             torques: false,
+            base: Default::default(),
         },
         |s| out.push(s.clone()),
         |_| {},
@@ -93,6 +94,7 @@ fn read_bytes(bytes: &[u8]) -> Result<Vec<Sample>, CsvError> {
     let columns = Columns {
         joints: 1,
         torques: false,
+        base: Default::default(),
     };
     read_csv(bytes, columns, |s| out.push(s.clone()), |_| {})?;
     Ok(out)
@@ -151,6 +153,7 @@ fn read_with_torques(text: &str, n: usize) -> Result<Vec<Sample>, CsvError> {
     let columns = Columns {
         joints: n,
         torques: true,
+        base: Default::default(),
     };
     read_csv(text.as_bytes(), columns, |s| out.push(s.clone()), |_| {})?;
     Ok(out)
