@@ -284,6 +284,9 @@ static void check_forward(const std::string & robot, const Model & model, const 
 static const int WARMUP = 10000;
 static const int BATCHES = 31;
 static const int CALLS = 20000;
+// BENCH_CHECK_ONLY=1: every check, but one call a batch, so that the figures mean nothing (for
+// checking a library built unoptimized, whose timing would take hours).
+static bool CHECK_ONLY = false;
 
 // The inputs are the samples' (q, qd, qdd), used cyclically. `f(k)` runs the function on sample
 // k and returns one element of its output, which is added to `sum`; `k` moves on from call to
@@ -291,6 +294,8 @@ static const int CALLS = 20000;
 template<typename F>
 static double batch_ns(F && f, int calls, std::size_t nsamples, std::size_t & k, double & sum)
 {
+  if (CHECK_ONLY)
+    calls = 1;
   const auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < calls; ++i)
   {
@@ -862,6 +867,10 @@ static std::vector<Eigen::Index> base_columns(
 int main(int argc, char ** argv)
 {
   int first = 1;
+  const char * check_only = std::getenv("BENCH_CHECK_ONLY");
+  CHECK_ONLY = check_only && std::string(check_only) == "1";
+  if (CHECK_ONLY)
+    std::fprintf(stderr, "BENCH_CHECK_ONLY=1: every check, one call a batch: the figures are not timings\n");
   std::unique_ptr<Generated> generated;
   std::unique_ptr<CHeaders> c_headers;
   std::unique_ptr<CHeaders> casadi_peer;

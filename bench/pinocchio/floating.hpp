@@ -17,8 +17,8 @@
 // The generated `M` is `mass_matrix_into`, which leaves the blocks between two legs as it finds
 // them: it writes into a matrix of its own, zeroed once and kept (as Pinocchio's crba keeps
 // data.M). Then `fd` (aba at the sample's (q, v, tau)) and `Minv` (computeMinverse, mirrored),
-// and the batch rows `tau_batch` (rneaInParallel on one thread) and `fd_batch` (abaInParallel),
-// per state, as the fixed robots' (`time_floating_batches`).
+// and the batch rows `tau_batch` (rneaInParallel on one thread), `fd_batch` (abaInParallel),
+// `M_batch`, `h_batch`, `Minv_batch`, `dtau_batch` (loops), per state (`time_floating_batches`).
 // Then the derivatives, `dtau` and `dqdd` (run_floating_derivatives), the regressor `Y`
 // (run_floating_regressor), and, where the robot has a `<robot>_contact_fd.json` beside its file,
 // `contact_fd` (run_floating_contacts).
@@ -27,6 +27,21 @@
 
 // The largest departure of a sample's quaternion from unit length that is taken as unit.
 static const double UNIT_QUATERNION = 1e-12;
+
+// A matrix's values row-major, one block after the other (the generated functions' layout).
+static Eigen::VectorXd row_major(std::initializer_list<Eigen::MatrixXd> blocks)
+{
+  Eigen::Index size = 0;
+  for (const Eigen::MatrixXd & m : blocks)
+    size += m.size();
+  Eigen::VectorXd values(size);
+  Eigen::Index at = 0;
+  for (const Eigen::MatrixXd & m : blocks)
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+      for (Eigen::Index j = 0; j < m.cols(); ++j)
+        values[at++] = m(i, j);
+  return values;
+}
 
 // The first derivatives, `dtau` and `dqdd` (bench/ffi's FloatingDynamicsDerivatives, where the
 // generated library has them): Pinocchio's computeRNEADerivatives at (q, v, a) and
@@ -46,14 +61,6 @@ static void run_floating_derivatives(
   for (std::size_t s = 0; s < ns; ++s)
     taus.push_back(vecn(samples[s]["tau"]));
   std::vector<double> out(3 * nv * nv + 1);
-  auto row_major = [](std::initializer_list<Eigen::MatrixXd> blocks) {
-    std::vector<double> values;
-    for (const Eigen::MatrixXd & m : blocks)
-      for (Eigen::Index i = 0; i < m.rows(); ++i)
-        for (Eigen::Index j = 0; j < m.cols(); ++j)
-          values.push_back(m(i, j));
-    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), static_cast<Eigen::Index>(values.size())));
-  };
   auto time = [&](const char * function, const std::vector<Eigen::VectorXd> & thirds, auto && pin_output, auto && pin_timed) {
     if (!generated)
     {
@@ -149,10 +156,15 @@ static void run_floating_regressor(
   std::fflush(stdout);
 }
 
-// The batch rows of a robot on a free-flying base, per state: `tau_batch` and `fd_batch`
-// (a horizon of `gen.horizon()` states, the samples in turn, nq values of q and nv of the others
-// per state) beside rneaInParallel and abaInParallel on one thread of a ModelPool, each state's
-// generated output checked first against the single-state function's.
+// The batch rows of a robot on a free-flying base, per state: a horizon of `gen.horizon()`
+// states (the samples in turn, nq values of q and nv of the others per state) in one call of
+// the generated `_batch` functions, beside Pinocchio's own batch on one thread of a ModelPool
+// (`tau_batch`: rneaInParallel, `fd_batch`: abaInParallel) or, where it has none, a loop of its
+// single-state function (`M_batch`: crba, `h_batch`: nonLinearEffects, `Minv_batch`:
+// computeMinverse, `dtau_batch`: computeRNEADerivatives), as the fixed robots' batches
+// (bench.cpp's time_batches). Each state's generated output is checked first against the
+// generated single-state function's and, for the rows of the loops, against Pinocchio's at that
+// state (M and Minv mirrored, dtau = [dtau_dq; dtau_dv]). A row the library lacks is left out.
 static void time_floating_batches(
   const std::string & robot,
   const Generated & gen,
@@ -170,21 +182,59 @@ static void time_floating_batches(
     const std::size_t s = static_cast<std::size_t>(k) % qs.size();
     Q.col(k) = qs[s], V.col(k) = vs[s], A.col(k) = as[s], TAU.col(k) = taus[s];
   }
-  std::vector<double> out(static_cast<std::size_t>(n * h)), one(static_cast<std::size_t>(n));
-  for (const auto & [batch, single, third] :
-       {std::make_tuple("tau_batch", "tau", &A), std::make_tuple("fd_batch", "fd", &TAU)})
+  Data data(model);
+  // Pinocchio's output at state k of the horizon, row-major, for the rows it has no batch of.
+  using Reference = std::function<Eigen::VectorXd(Eigen::Index)>;
+  const Reference none;
+  const Reference mass = [&](Eigen::Index k) { return row_major({symmetric(pinocchio::crba(model, data, Q.col(k)))}); };
+  const Reference bias = [&](Eigen::Index k) {
+    return Eigen::VectorXd(pinocchio::nonLinearEffects(model, data, Q.col(k), V.col(k)));
+  };
+  const Reference inverse = [&](Eigen::Index k) {
+    return row_major({symmetric(pinocchio::computeMinverse(model, data, Q.col(k)))});
+  };
+  const Reference derivatives = [&](Eigen::Index k) {
+    pinocchio::computeRNEADerivatives(model, data, Q.col(k), V.col(k), A.col(k));
+    return row_major({data.dtau_dq, data.dtau_dv});
+  };
+  struct Batch
   {
-    gen.get(robot, batch)(Q.data(), V.data(), third->data(), out.data());
+    const char * batch, * single;
+    const Eigen::MatrixXd * third;
+    Eigen::Index size;
+    const Reference * pinocchio;
+  };
+  const std::vector<Batch> batches = {
+    {"tau_batch", "tau", &A, n, &none},           {"fd_batch", "fd", &TAU, n, &none},
+    {"M_batch", "M", &A, n * n, &mass},           {"h_batch", "h", &A, n, &bias},
+    {"Minv_batch", "Minv", &A, n * n, &inverse},  {"dtau_batch", "dtau", &A, 2 * n * n, &derivatives}};
+  // Room for the largest output, dtau's, and one more value, which no function may write.
+  std::vector<double> out(static_cast<std::size_t>(2 * n * n * h + 1)), one(static_cast<std::size_t>(2 * n * n));
+  for (const Batch & b : batches)
+  {
+    if (!gen.lookup(robot.c_str(), b.batch))
+      continue;
+    std::fill(out.begin(), out.end(), std::numeric_limits<double>::quiet_NaN());
+    gen.get(robot, b.batch)(Q.data(), V.data(), b.third->data(), out.data());
+    if (!std::isnan(out[static_cast<std::size_t>(b.size * h)]))
+      throw std::runtime_error(robot + ": the generated " + b.batch + " writes past its output");
     for (Eigen::Index k = 0; k < h; ++k)
     {
-      gen.get(robot, single)(Q.col(k).data(), V.col(k).data(), third->col(k).data(), one.data());
-      const Eigen::Map<const Eigen::VectorXd> got(out.data() + k * n, n), want(one.data(), n);
-      check(robot, std::string(batch) + " state " + std::to_string(k), got, want, static_cast<std::size_t>(k));
+      // Zeros first: the single-state `M` leaves the blocks between two legs as it finds them.
+      std::fill(one.begin(), one.end(), 0.0);
+      gen.get(robot, b.single)(Q.col(k).data(), V.col(k).data(), b.third->col(k).data(), one.data());
+      const Eigen::Map<const Eigen::VectorXd> got(out.data() + k * b.size, b.size), want(one.data(), b.size);
+      const std::string state = std::string(b.batch) + " state " + std::to_string(k);
+      check(robot, state, got, want, static_cast<std::size_t>(k));
+      if (*b.pinocchio)
+        check(robot, state + " (Pinocchio's)", got, (*b.pinocchio)(k), static_cast<std::size_t>(k));
     }
   }
   pinocchio::ModelPool pool(model, 1);
   const int warmup = 100, calls = 200;
   auto row = [&](const char * function, const Eigen::MatrixXd & third, auto && pin) {
+    if (!gen.lookup(robot.c_str(), function))
+      return;
     const GeneratedFunction f = gen.get(robot, function);
     auto g = [&](std::size_t) {
       f(Q.data(), V.data(), third.data(), out.data());
@@ -195,6 +245,15 @@ static void time_floating_batches(
     std::printf("%s\t%s\t%.1f\t%.1f\n", robot.c_str(), function, pin_ns / double(h), gen_ns / double(h));
     std::fflush(stdout);
   };
+  // Pinocchio's loop over the horizon of `one(k)`, one element of each state's output summed.
+  auto loop = [&](auto && one) {
+    return [&, one] {
+      double sum = 0.0;
+      for (Eigen::Index k = 0; k < h; ++k)
+        sum += one(k);
+      return sum;
+    };
+  };
   row("tau_batch", A, [&] {
     pinocchio::rneaInParallel(1, pool, Q, V, A, OUT);
     return OUT(0, 0);
@@ -203,6 +262,13 @@ static void time_floating_batches(
     pinocchio::abaInParallel(1, pool, Q, V, TAU, OUT);
     return OUT(0, 0);
   });
+  row("M_batch", A, loop([&](Eigen::Index k) { return pinocchio::crba(model, data, Q.col(k))(0, 0); }));
+  row("h_batch", A, loop([&](Eigen::Index k) { return pinocchio::nonLinearEffects(model, data, Q.col(k), V.col(k))[0]; }));
+  row("Minv_batch", A, loop([&](Eigen::Index k) { return pinocchio::computeMinverse(model, data, Q.col(k))(0, 0); }));
+  row("dtau_batch", A, loop([&](Eigen::Index k) {
+        pinocchio::computeRNEADerivatives(model, data, Q.col(k), V.col(k), A.col(k));
+        return data.dtau_dq(0, 0);
+      }));
 }
 
 // `contact_fd`: constraintDynamics with every foot of `<robot>_contact_fd.json` held (a

@@ -4,12 +4,15 @@
 //! `mass_matrix_into`, which leaves the blocks between two legs as `out` has them (its caller
 //! keeps a matrix for it, zeroed once, as Pinocchio's `crba` keeps `data.M`); `fd` reads the
 //! torques from the third input (NaN where M is not positive definite), `Minv` writes `M⁻¹`;
-//! `tau_batch` and `fd_batch` take [`HORIZON`] states a call, as the fixed robots' do. And the first derivatives of
+//! `tau_batch` and `fd_batch` take [`HORIZON`] states a call, as the fixed robots' do (`M_batch`,
+//! `h_batch`, `Minv_batch`, `dtau_batch` in [`batches`]). And the first derivatives of
 //! `FloatingDynamicsDerivatives<Q, V>`: `dtau` (`∂τ/∂q` along the tangent, then `∂τ/∂v`:
 //! 2 V × V) and `dqdd` (`∂a/∂q`, `∂a/∂v`, `∂a/∂τ`: 3 V × V, NaN where M is not positive
 //! definite; its third input `tau`). `contact_fd`: `FloatingContacts::contact_dynamics` with every
 //! frame of `FloatingKinematics` held, `a` (V) then `λ` (3 per frame); `Y` in
 //! [`super::floating_regressor`].
+
+mod batches;
 
 use super::batch::{results, states, HORIZON};
 use super::{input, output, output_matrix, Function, Robot};
@@ -59,7 +62,11 @@ impl<R: FloatingDynamicsDerivatives<Q, V> + Default, const Q: usize, const V: us
             b"M" => Self::mass,
             b"h" => Self::bias,
             b"g" => Self::gravity,
-            _ => return Self::forward_and_batch(function).or_else(|| Self::derivatives(function)),
+            _ => {
+                return Self::forward_and_batch(function)
+                    .or_else(|| Self::derivatives(function))
+                    .or_else(|| batches::Batches::<R, Q, V>::get(function))
+            }
         })
     }
 }
@@ -263,7 +270,7 @@ pub(super) mod tests {
             }
         }
         check_forward(r, robot);
-        for function in ["C", "fk", "J", "M_batch"] {
+        for function in ["C", "fk", "J", "dqdd_batch"] {
             assert!(lookup(robot, function).is_none(), "{robot} {function}");
         }
         // Only Solo 12 is derived with its regressor.
