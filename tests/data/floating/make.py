@@ -978,3 +978,7 @@ if __name__ == "__main__":
     joint_terms_derivatives("solo12")
     for name in SURFACE:
         surface(name, ROBOTS[name])
+    # Mimic joints on the free flyer (Talos with its grippers): `mimic.py`, which reads this one.
+    from mimic import MIMIC, mimic_data
+    for name in MIMIC:
+        mimic_data(name)

@@ -1,0 +1,236 @@
+"""Mimic joints on a free-flying base (issue 43, helper floatmimic), for `make.py`: PAL's Talos
+with its grippers (`talos_full_v2.urdf`, 44 moving joints of which 12 follow a gripper joint),
+written to `<name>_mimic.json`.
+
+The mimicking joint m follows q_m = k q_j + o (URDF `multiplier` k, `offset` o) and is not a
+coordinate: the coordinates are the base's six, then every joint but the mimic ones in the front
+end's order. With G the (n_full x n_red) map of the joints and S = diag(1_6, G):
+q_full = [q_base, G q_joints + o], v_full = S v, a_full = S a, and
+
+    M = S^T M_full S,  h = S^T h_full,  tau = S^T (rnea_full + friction_full(S v)),  g = S^T g_full,
+    a_fd = M^-1 (tau_in - h - S^T friction_full(S v)),  M_inv = M^-1,
+    J = J_full S (frames, centre of mass, A_G),  dJ v = that of the full model at (q_full, S v),
+    dtau/dq = S^T dtau_full/dq S (along the tangent, S constant), dtau/dv = S^T dtau_full/dv S
+    (+ S^T diag(0_6, damping) S), da/dx = -M^-1 dtau/dx at a = a_fd, da/dtau = M^-1,
+
+every full quantity Pinocchio 4.1's, its URDF loaded with `JointModelFreeFlyer` and every joint
+free (`buildModelFromUrdf(path, JointModelFreeFlyer())`). Pinocchio's own mimic joints cannot
+load this file (`buildModelFromUrdf(.., mimic=True)`: "The parent joint of the mimic joint is
+not in the kinematic tree": its parser takes a link's child joints by name, and the fingertips
+come before `gripper_left_joint`), so the cross-check against its `JointModelMimic` builds the
+mimic model from the full one with `transformJointIntoMimic` and compares crba, rnea,
+nonLinearEffects, computeGeneralizedGravity and the frames' Jacobians (`mimic_cross_check`).
+"""
+
+import hashlib
+import importlib.metadata
+import json
+import os
+
+import numpy as np
+import pinocchio as pin
+
+import make
+from make import HERE, ROOT, SAMPLES, SEED, TOLERANCE, file_order, joint_friction, scaled
+
+# name: URDF from the repository root, the frames of the kinematics.
+MIMIC = {"talos_full_v2": ("robots/urdf/floating/talos_full_v2.urdf",
+                           ["left_sole_link", "gripper_left_fingertip_3_link", "gripper_right_fingertip_1_link"])}
+
+
+def mimic_rules(path, order):
+    """Per joint of the file's `order` that has `<mimic>`: (the joint it follows, k, o)."""
+    import xml.etree.ElementTree as ET
+    rules = {}
+    for j in ET.parse(path).getroot().findall("joint"):
+        m = j.find("mimic")
+        if m is not None and j.get("name") in order:
+            rules[j.get("name")] = (m.get("joint"), float(m.get("multiplier", "1")), float(m.get("offset", "0")))
+    return rules
+
+
+class Reduction:
+    """The map S from the coordinates (file order, mimic joints left out) to Pinocchio's full
+    model (its own joint order), and back."""
+
+    def __init__(self, model, path):
+        _, order = file_order(path)
+        names = list(model.names)[2:]
+        self.rules = mimic_rules(path, order)
+        self.coordinates = [j for j in order if j not in self.rules]
+        column = {j: c for c, j in enumerate(self.coordinates)}
+        n_red = len(self.coordinates)
+        self.S = np.zeros((model.nv, 6 + n_red))
+        self.S[:6, :6] = np.eye(6)
+        self.offset = np.zeros(model.nq)
+        for j in order:
+            row = model.idx_vs[model.getJointId(j)]
+            follows, k, o = self.rules.get(j, (j, 1.0, 0.0))
+            self.S[row, 6 + column[follows]] = k
+            self.offset[model.idx_qs[model.getJointId(j)]] = o
+        assert sorted(names) == sorted(order)
+        self.nq, self.nv = 7 + n_red, 6 + n_red
+
+    def q_full(self, q):
+        """The full model's configuration of the coordinates' q: the base's 7 as they are."""
+        out = np.zeros(len(self.offset))
+        out[:7] = q[:7]
+        out[7:] = self.S[6:, 6:] @ q[7:] + self.offset[7:]
+        return out
+
+    def sample(self, rng, k):
+        """State k in the coordinates, as `make.sample` draws a robot's."""
+        if k == 0:
+            q = np.zeros(self.nq)
+            q[6] = 1.0
+            return q, np.zeros(self.nv), np.zeros(self.nv)
+        quaternion = rng.normal(size=4)
+        quaternion /= np.linalg.norm(quaternion)
+        q = np.concatenate([rng.uniform(-1, 1, 3), quaternion, rng.uniform(-np.pi, np.pi, self.nv - 6)])
+        return q, rng.uniform(-2, 2, self.nv), rng.uniform(-2, 2, self.nv)
+
+
+def symmetric(m):
+    return np.triu(m) + np.triu(m, 1).T
+
+
+def dynamics(model, data, r, q, v, a, tau_in):
+    """M, h, tau, g, the friction, a_fd and M^-1 in the coordinates."""
+    S = r.S
+    qf, vf, af = r.q_full(q), S @ v, S @ a
+    m_full = symmetric(pin.crba(model, data, qf).copy())
+    friction_full = joint_friction(vf, model.damping, model.friction)
+    m = S.T @ m_full @ S
+    h = S.T @ pin.nonLinearEffects(model, data, qf, vf)
+    tau = S.T @ (pin.rnea(model, data, qf, vf, af) + friction_full)
+    g = S.T @ pin.computeGeneralizedGravity(model, data, qf)
+    friction = S.T @ friction_full
+    assert scaled(m @ a + h + friction, tau) < TOLERANCE
+    m_inv = np.linalg.inv(m)
+    a_fd = np.linalg.solve(m, tau_in - h - friction)
+    return {"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(), "h": h.tolist(),
+            "tau": tau.tolist(), "g": g.tolist(), "friction": friction.tolist(), "tau_in": tau_in.tolist(),
+            "a_fd": a_fd.tolist(), "M_inv": symmetric(m_inv).tolist()}, (qf, vf, m, m_inv, a_fd)
+
+
+def kinematics(model, data, r, frames, qf, vf):
+    """Centre of mass, its Jacobian, A_G, dA_G v and each frame's pose, Jacobian and classical
+    dJ v in LOCAL and LOCAL_WORLD_ALIGNED, the Jacobians times S."""
+    S = r.S
+    out = {"com": pin.centerOfMass(model, data, qf).tolist(),
+           "Jcom": (pin.jacobianCenterOfMass(model, data, qf) @ S).tolist(),
+           "Ag": (pin.computeCentroidalMap(model, data, qf) @ S).tolist(),
+           "dAg_v": (pin.computeCentroidalMapTimeVariation(model, data, qf, vf) @ vf).tolist(), "frames": {}}
+    pin.forwardKinematics(model, data, qf, vf, np.zeros(model.nv))
+    pin.updateFramePlacements(model, data)
+    pin.computeJointJacobians(model, data, qf)
+    for frame in frames:
+        i = model.getFrameId(frame)
+        assert i < len(model.frames), frame
+        entry = {"rotation": data.oMf[i].rotation.tolist(), "translation": data.oMf[i].translation.tolist()}
+        for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
+            jac = pin.getFrameJacobian(model, data, i, ref)
+            assert scaled(jac @ vf, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
+            entry["J_" + key] = (jac @ S).tolist()
+            entry["dJv_" + key] = pin.getFrameClassicalAcceleration(model, data, i, ref).vector.tolist()
+        out["frames"][frame] = entry
+    return out
+
+
+def derivatives(model, data, r, qf, vf, af, m_inv, a_fd):
+    """dtau/dq, dtau/dv at (q, v, a); a_fd's da/dq, da/dv, da/dtau, all in the coordinates."""
+    S = r.S
+    damping = np.diag(np.concatenate([np.zeros(6), model.damping[6:]]))
+    dq, dv, _ = pin.computeRNEADerivatives(model, data, qf, vf, af)
+    out = {"dtau_dq": S.T @ dq @ S, "dtau_dv": S.T @ (dv + damping) @ S}
+    dq, dv, _ = pin.computeRNEADerivatives(model, data, qf, vf, S @ a_fd)
+    out.update({"ddq_dq": -m_inv @ S.T @ dq @ S, "ddq_dv": -m_inv @ S.T @ (dv + damping) @ S,
+                "ddq_dtau": symmetric(m_inv)})
+    return {k: x.tolist() for k, x in out.items()}
+
+
+def cross_check(model, r, samples, path):
+    """Pinocchio's own mimic joints: the full model rebuilt joint by joint in the file's order
+    (`make.pinocchio_model`, `make.rebuild`: there each gripper joint comes before the joints
+    that follow it, as `transformJointIntoMimic` needs), each mimic joint then made a
+    `JointModelMimic` of the joint it follows; its crba, rnea, nonLinearEffects and
+    computeGeneralizedGravity against the data (without the friction, which Pinocchio's
+    algorithms leave out); the largest scaled difference each."""
+    _, order = file_order(path)
+    mm = make.rebuild(make.pinocchio_model(model, list(model.names)[2:], order))
+    for j, (follows, k, o) in r.rules.items():
+        mm = pin.transformJointIntoMimic(mm, mm.getJointId(follows), mm.getJointId(j), k, o)
+    assert mm.nv == r.nv, (mm.nv, r.nv)
+    perm = np.array([0, 1, 2, 3, 4, 5] + [mm.idx_vs[mm.getJointId(n)] for n in r.coordinates])
+    qperm = [0, 1, 2, 3, 4, 5, 6] + [mm.idx_qs[mm.getJointId(n)] for n in r.coordinates]
+    d = mm.createData()
+    largest = {}
+
+    def record(key, mine, theirs):
+        largest[key] = max(largest.get(key, 0.0), scaled(theirs, mine))
+
+    for s in samples:
+        q, v, a = (np.array(s[k]) for k in ("q", "v", "a"))
+        qm, vm, am = np.zeros(mm.nq), np.zeros(mm.nv), np.zeros(mm.nv)
+        qm[qperm], vm[perm], am[perm] = q, v, a
+        friction = np.array(s["friction"])
+        record("M", np.array(s["M"]), symmetric(pin.crba(mm, d, qm))[np.ix_(perm, perm)])
+        record("tau", np.array(s["tau"]) - friction, pin.rnea(mm, d, qm, vm, am)[perm])
+        record("h", np.array(s["h"]), pin.nonLinearEffects(mm, d, qm, vm)[perm])
+        record("g", np.array(s["g"]), pin.computeGeneralizedGravity(mm, d, qm)[perm])
+    return {"model": "transformJointIntoMimic, mimic joint by mimic joint, on make.rebuild(make.pinocchio_model("
+                     "buildModelFromUrdf(path, JointModelFreeFlyer()))), the joints in the file's order",
+            "per_quantity": {k: float(f"{x:.1e}") for k, x in largest.items()}}
+
+
+def mimic_data(name):
+    urdf, frames = MIMIC[name]
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    data = model.createData()
+    r = Reduction(model, path)
+    rng, extra = np.random.default_rng(SEED), np.random.default_rng(SEED + 1)
+    samples = []
+    for k in range(SAMPLES):
+        q, v, a = r.sample(rng, k)
+        tau_in = extra.uniform(-20, 20, r.nv)
+        state, (qf, vf, m, m_inv, a_fd) = dynamics(model, data, r, q, v, a, tau_in)
+        state["kinematics"] = kinematics(model, data, r, frames, qf, vf)
+        state["derivatives"] = derivatives(model, data, r, qf, vf, r.S @ a, m_inv, a_fd)
+        samples.append(state)
+    check = cross_check(model, r, samples, path)
+    assert max(check["per_quantity"].values()) < TOLERANCE, check
+    with open(path, "rb") as f:
+        sha = hashlib.sha256(f.read()).hexdigest()
+    out = {
+        "robot": name,
+        "generator": "tests/data/floating/mimic.py (mimic_data, run by make.py) with pinocchio %s "
+                     "(buildModelFromUrdf with JointModelFreeFlyer, every joint free, projected)"
+                     % importlib.metadata.version("pin"),
+        "urdf_source": "example-robot-data 6.0.0 (PyPI)",
+        "urdf_sha256": sha,
+        "urdf": urdf,
+        "coordinates": r.coordinates,
+        "mimic": [{"joint": j, "follows": f, "multiplier": k, "offset": o} for j, (f, k, o) in r.rules.items()],
+        "nq": r.nq,
+        "nv": r.nv,
+        "frames": frames,
+        "gravity": [0.0, 0.0, -9.81],
+        "conventions": "q = [x, y, z, qx, qy, qz, qw, coordinates]; v, a = [linear, angular (base frame), "
+                       "coordinates]; S = diag(1_6, G) the map to every joint (q_full = G q + offset); M, h, tau "
+                       "(with the joints' friction), g, a_fd = M^-1 (tau_in - h - friction), M_inv and the "
+                       "derivatives as make.py's for the reduced system, S^T (full) S; kinematics as make.py's "
+                       "kinematics, Jacobians J_full S",
+        "seed": SEED,
+        "mimic_cross_check": check,
+        "samples": samples,
+    }
+    with open(os.path.join(HERE, name + "_mimic.json"), "w") as f:
+        json.dump(out, f, indent=1)
+        f.write("\n")
+    print(name, "mimic:", r.nq, r.nv, "of", model.nq, model.nv, check["per_quantity"])
+
+
+if __name__ == "__main__":
+    for robot in MIMIC:
+        mimic_data(robot)
