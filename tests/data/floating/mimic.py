@@ -146,7 +146,32 @@ def derivatives(model, data, r, qf, vf, af, m_inv, a_fd):
     dq, dv, _ = pin.computeRNEADerivatives(model, data, qf, vf, S @ a_fd)
     out.update({"ddq_dq": -m_inv @ S.T @ dq @ S, "ddq_dv": -m_inv @ S.T @ (dv + damping) @ S,
                 "ddq_dtau": symmetric(m_inv)})
+    check_derivatives(model, data, r, (qf, vf, af), out, a_fd)
     return {k: x.tolist() for k, x in out.items()}
+
+
+def check_derivatives(model, data, r, state, out, a_fd):
+    """dtau/dq, dtau/dv, da/dq and da/dv against central differences in the coordinates (1e-5
+    scaled: a wrong projection is off by O(1)); q moved along the tangent, the full model's
+    `integrate` along S dq (the joints' map being linear), Coulomb's friction held."""
+    S, (qf, vf, af) = r.S, state
+    # Coulomb's term held at v (its sign is flat away from 0; sample 0 is at rest).
+    coulomb = joint_friction(vf, 0 * model.damping, model.friction)
+    friction = lambda v: joint_friction(v, model.damping, 0 * model.friction) + coulomb
+    tau = lambda q, v: S.T @ (pin.rnea(model, data, q, v, af) + friction(v))
+    tau_in = S.T @ (pin.rnea(model, data, qf, vf, S @ a_fd) + friction(vf))
+
+    def fd(q, v):
+        m = S.T @ pin.crba(model, data, q) @ S
+        return np.linalg.solve(symmetric(m), tau_in - S.T @ (pin.nonLinearEffects(model, data, q, v) + friction(v)))
+
+    step = 1e-6
+    for key, f in [("dtau", tau), ("ddq", fd)]:
+        by_q = np.array([(f(pin.integrate(model, qf, S @ e), vf) - f(pin.integrate(model, qf, -S @ e), vf)) / (2 * step)
+                         for e in np.eye(r.nv) * step]).T
+        by_v = np.array([(f(qf, vf + S @ e) - f(qf, vf - S @ e)) / (2 * step) for e in np.eye(r.nv) * step]).T
+        assert scaled(by_q, out[key + "_dq"]) < 1e-5, (key, scaled(by_q, out[key + "_dq"]))
+        assert scaled(by_v, out[key + "_dv"]) < 1e-5, (key, scaled(by_v, out[key + "_dv"]))
 
 
 def cross_check(model, r, samples, path):
