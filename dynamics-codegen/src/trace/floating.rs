@@ -85,7 +85,6 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     let mut tau = algo::floating_rnea(&chain, &base, quaternion, &v, &a, gravity);
     let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
     let friction = joint_terms(&tracer, robot, (&graph, &v, &a), &mut mass, &mut tau);
-    let nothing = zero.id();
     let kinds = [JointKind::Prismatic; BASE_COORDINATES]
         .into_iter()
         .chain(robot.joints.iter().map(|j| j.kind))
@@ -99,18 +98,10 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
         kinds,
         angle_offsets: tracer.angle_offsets(),
     };
-    let JointOutputs {
-        mass,
-        bias,
-        tau,
-        gravity,
-        friction,
-        kinds,
-        angle_offsets,
-    } = in_coordinates(&graph, &tracer, robot, joints);
+    let out = in_coordinates(&graph, &tracer, robot, joints);
     // The base is the root of the tree: factored from the tips, each branch's joints reach
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
-    let mut forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
+    let mut forward = super::forward::forward(&graph, &out.mass, &out.bias, &out.friction, true);
     // The articulated bodies run on the joints: a robot with mimic joints keeps the LDLᵀ.
     if !readable && !robot.has_mimics() {
         let tree = (&chain, &base);
@@ -120,14 +111,37 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
             flyer,
             tree,
             (quaternion, &v),
-            (&graph, &friction),
+            (&graph, &out.friction),
         );
         keep_the_cheaper(&graph, &mut forward, &aba);
     }
+    let (nothing, links) = (zero.id(), robot.dof());
+    drop(tracer);
+    floating_equations(graph.into_inner(), fields, out, (forward, links), nothing)
+}
+
+/// The equations of the floating outputs `out` and `forward` in `graph`, `links` bodies past
+/// the base (`nothing`, zero, for the outputs a floating base does not have).
+fn floating_equations(
+    graph: Graph,
+    fields: Vec<String>,
+    out: JointOutputs,
+    (forward, links): (ForwardEquations, usize),
+    nothing: NodeId,
+) -> Equations {
+    let JointOutputs {
+        mass,
+        bias,
+        tau,
+        gravity,
+        friction,
+        kinds,
+        angle_offsets,
+    } = out;
     Equations {
-        graph: graph.into_inner(),
+        graph,
         dof: mass.len(),
-        links: robot.dof(),
+        links,
         fields,
         kinds,
         angle_offsets,

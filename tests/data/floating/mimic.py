@@ -38,6 +38,34 @@ MIMIC = {"talos_full_v2": ("robots/urdf/floating/talos_full_v2.urdf",
                            ["left_sole_link", "gripper_left_fingertip_3_link", "gripper_right_fingertip_1_link"])}
 
 
+# The front end takes an angle within 1e-5 rad of a multiple of pi/2 as that quarter turn
+# (`tests/data/urdf/make.py`'s `snap`, the same rule).
+SNAP_TOLERANCE = 1e-5
+
+
+def snapped_model(path):
+    """The full model of the URDF at `path` with its rpy angles (of joints and inertials) near a
+    multiple of pi/2 snapped, as the front end reads them (Talos's `1.57079632679`, 4.9e-12
+    from pi/2, turns its gripper's frames by 1e-11 otherwise); and the number of origins
+    snapped."""
+    import math
+    import xml.etree.ElementTree as ET
+    root = ET.parse(path).getroot()
+    changed = 0
+    for element in [e for e in root.iter() if e.tag in ("joint", "inertial")]:
+        origin = element.find("origin")
+        if origin is None or origin.get("rpy") is None:
+            continue
+        angles = [float(x) for x in origin.get("rpy").split()]
+        snapped = [k * (math.pi / 2) if abs(x - k * (math.pi / 2)) <= SNAP_TOLERANCE else x
+                   for x, k in ((x, round(x / (math.pi / 2))) for x in angles)]
+        if snapped != angles:
+            changed += 1
+            origin.set("rpy", " ".join(repr(x) for x in snapped))
+    xml = ET.tostring(root, encoding="unicode")
+    return pin.buildModelFromXML(xml, pin.JointModelFreeFlyer()), changed
+
+
 def mimic_rules(path, order):
     """Per joint of the file's `order` that has `<mimic>`: (the joint it follows, k, o)."""
     import xml.etree.ElementTree as ET
@@ -208,10 +236,31 @@ def cross_check(model, r, samples, path):
             "per_quantity": {k: float(f"{x:.1e}") for k, x in largest.items()}}
 
 
+def snapping_change(unsnapped, r, samples, frames):
+    """How far the URDF's own angles are from the snapped ones the data use: the largest scaled
+    change of M, tau (without friction) and the frames' rotations over the samples."""
+    data = unsnapped.createData()
+    largest = {"M": 0.0, "tau": 0.0, "frame rotation": 0.0}
+    for s in samples:
+        q, v, a = (np.array(s[k]) for k in ("q", "v", "a"))
+        qf, vf, af = r.q_full(q), r.S @ v, r.S @ a
+        m = r.S.T @ symmetric(pin.crba(unsnapped, data, qf)) @ r.S
+        tau = r.S.T @ pin.rnea(unsnapped, data, qf, vf, af)
+        largest["M"] = max(largest["M"], scaled(m, s["M"]))
+        largest["tau"] = max(largest["tau"], scaled(tau, np.array(s["tau"]) - np.array(s["friction"])))
+        pin.framesForwardKinematics(unsnapped, data, qf)
+        for f in frames:
+            rotation = data.oMf[unsnapped.getFrameId(f)].rotation
+            change = scaled(rotation, s["kinematics"]["frames"][f]["rotation"])
+            largest["frame rotation"] = max(largest["frame rotation"], change)
+    return {k: float(f"{x:.1e}") for k, x in largest.items()}
+
+
 def mimic_data(name):
     urdf, frames = MIMIC[name]
     path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    model, snapped = snapped_model(path)
+    unsnapped = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
     data = model.createData()
     r = Reduction(model, path)
     rng, extra = np.random.default_rng(SEED), np.random.default_rng(SEED + 1)
@@ -224,13 +273,16 @@ def mimic_data(name):
         state["derivatives"] = derivatives(model, data, r, qf, vf, r.S @ a, m_inv, a_fd)
         samples.append(state)
     check = cross_check(model, r, samples, path)
+    snapping = snapping_change(unsnapped, r, samples, frames)
+    snapping["origins_snapped"] = snapped
     assert max(check["per_quantity"].values()) < TOLERANCE, check
     with open(path, "rb") as f:
         sha = hashlib.sha256(f.read()).hexdigest()
     out = {
         "robot": name,
         "generator": "tests/data/floating/mimic.py (mimic_data, run by make.py) with pinocchio %s "
-                     "(buildModelFromUrdf with JointModelFreeFlyer, every joint free, projected)"
+                     "(buildModelFromXML of the URDF with its rpy angles within 1e-5 of a quarter turn snapped, "
+                     "with JointModelFreeFlyer, every joint free, projected)"
                      % importlib.metadata.version("pin"),
         "urdf_source": "example-robot-data 6.0.0 (PyPI)",
         "urdf_sha256": sha,
@@ -248,12 +300,13 @@ def mimic_data(name):
                        "kinematics, Jacobians J_full S",
         "seed": SEED,
         "mimic_cross_check": check,
+        "snapping": snapping,
         "samples": samples,
     }
     with open(os.path.join(HERE, name + "_mimic.json"), "w") as f:
         json.dump(out, f, indent=1)
         f.write("\n")
-    print(name, "mimic:", r.nq, r.nv, "of", model.nq, model.nv, check["per_quantity"])
+    print(name, "mimic:", r.nq, r.nv, "of", model.nq, model.nv, check["per_quantity"], snapping)
 
 
 if __name__ == "__main__":
