@@ -14,7 +14,8 @@ q_full = [q_base, G q_joints + o], v_full = S v, a_full = S a, and
     (+ S^T diag(0_6, damping) S), da/dx = -M^-1 dtau/dx at a = a_fd, da/dtau = M^-1,
 
 every full quantity Pinocchio 4.1's, its URDF loaded with `JointModelFreeFlyer` and every joint
-free (`buildModelFromUrdf(path, JointModelFreeFlyer())`). Pinocchio's own mimic joints cannot
+free, its rpy angles near a quarter turn snapped as the front end reads them (`snapped_model`;
+`snapping_change` records what that moves). Pinocchio's own mimic joints cannot
 load this file (`buildModelFromUrdf(.., mimic=True)`: "The parent joint of the mimic joint is
 not in the kinematic tree": its parser takes a link's child joints by name, and the fingertips
 come before `gripper_left_joint`), so the cross-check against its `JointModelMimic` builds the
