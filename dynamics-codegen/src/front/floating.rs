@@ -161,22 +161,19 @@ fn urdf_flyer(
     }
 }
 
-/// What a floating base's equations leave out, refused: mimic joints and springs.
+/// What a floating base's equations leave out, refused: springs.
 fn robot_problems(robot: &Robot, span: proc_macro2::Span, errors: &mut Errors) {
     for message in unsupported(robot) {
         errors.push(span, message);
     }
 }
 
-/// What of `robot` a floating base does not support yet, one message each: mimic joints and
-/// joint springs. (Joint friction and actuator inertia are modelled: in `τ`, the forward
-/// dynamics and `M`'s diagonal.)
+/// What of `robot` a floating base does not support yet, one message each: joint springs.
+/// (Joint friction and actuator inertia are modelled: in `τ`, the forward dynamics and `M`'s
+/// diagonal; mimic joints reduce every output to the coordinates, `trace/floating_mimic.rs`.)
 #[must_use]
 pub fn unsupported(robot: &Robot) -> Vec<String> {
     let mut found = Vec::new();
-    if robot.has_mimics() {
-        found.push("mimic joints are not supported on a floating base yet".to_string());
-    }
     for (i, joint) in robot.joints.iter().enumerate() {
         if joint.link.spring.is_some() {
             found.push(format!("joint {}: springs are not supported on a floating base yet (Pinocchio's free flyer has none)", i + 1));
@@ -218,9 +215,14 @@ fn joint_terms_with_families(
 /// cannot: the regressor and base parameters have no columns for them yet. (The derivatives
 /// model them: `∂τ/∂v` has the viscous coefficients on its joints' diagonal, `M` the actuator
 /// inertia.)
+/// Mimic joints likewise: the regressor's columns are not projected onto the coordinates on a
+/// floating base yet.
 #[must_use]
 pub fn joint_terms_refusal(robot: &Robot, family: Family) -> Option<String> {
     let floating = family.on_floating_base()?;
+    if floating != Family::FloatingDerivatives && robot.has_mimics() {
+        return Some(format!("`{} = true` is not supported on a floating base with mimic joints yet: `base = floating` reduces M, h, τ, g, the forward dynamics, the kinematics, the contacts and the first derivatives to the coordinates only", family.name()));
+    }
     if floating == Family::FloatingDerivatives || !has_joint_terms(robot) {
         return None;
     }

@@ -25,7 +25,9 @@ use std::fmt::Write;
 pub fn inspect_floating(readable: &FloatingReadable, robot: &Robot, limits: Limits) -> Inspection {
     let eq = &readable.eq;
     let x = &mut Expander::new(eq, limits);
-    let antecedents = branches::antecedents(robot);
+    // The antecedents are the joints': with mimic joints the rows are the coordinates', whose
+    // zeros between branches are not told (every entry is printed).
+    let antecedents = branches::antecedents(robot).filter(|_| !robot.has_mimics());
     let vector = |x: &mut Expander<'_>, quantity, ids: &[NodeId]| Section {
         quantity,
         entries: (ids.iter().enumerate())
@@ -72,7 +74,7 @@ pub fn inspect_floating(readable: &FloatingReadable, robot: &Robot, limits: Limi
         floating: true,
         kinds: eq.kinds[BASE_COORDINATES..].to_vec(),
         offsets: eq.angle_offsets.iter().any(Option::is_some),
-        mimics: false,
+        mimics: robot.has_mimics(),
         antecedents,
         sections: vec![base_gravity, mass, bias, gravity, tau],
         limits,
@@ -128,6 +130,9 @@ impl Inspection {
         ];
         if self.offsets {
             lines.push("θi in Si, Ci includes the joint's constant offset where it is not a multiple of 90°".to_owned());
+        }
+        if self.mimics {
+            lines.push("the coordinates are the joints but the mimic ones: a mimic joint follows joint j, sin(k qj + c), cos(k qj + c) its sine and cosine, k its multiplier, c its offset plus its own constant offset; its rows summed into joint j's with the factor k".to_owned());
         }
         if let Some(antecedents) = &self.antecedents {
             lines.push(format!(

@@ -227,7 +227,8 @@ impl Loaded {
     ///
     /// # Errors
     /// A description file without a `[floating]` table, a URDF whose body cannot be read, or
-    /// what a floating base does not support yet (mimic joints, joint friction).
+    /// what a floating base does not support yet (joint springs). A robot with mimic joints
+    /// has them in its coordinates.
     pub fn floating_equations(&self) -> Result<Equations, Vec<Diagnostic>> {
         let flyer = self.floating_flyer()?;
         Ok(crate::trace::derive_floating(&self.robot, flyer))

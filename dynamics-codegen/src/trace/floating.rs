@@ -16,6 +16,7 @@
 
 use super::cost::operations;
 use super::expr::Expr;
+use super::floating_mimic::{in_coordinates, JointOutputs};
 use super::forward::ForwardEquations;
 use super::tracer::{joint_index, Tracer};
 use super::{Equations, KinematicEquations};
@@ -28,8 +29,8 @@ use std::cell::RefCell;
 /// The coordinates of the base: the velocity's first six.
 pub const BASE_COORDINATES: usize = 6;
 
-/// Traces the floating-base equations of `robot` on the free flyer `flyer`. The front end has
-/// checked the robot; it has no mimic joints.
+/// Traces the floating-base equations of `robot` on the free flyer `flyer`, in its coordinates
+/// where it has mimic joints ([`super::floating_mimic`]). The front end has checked the robot.
 #[must_use]
 pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
     trace_floating(robot, flyer, Gravity::World)
@@ -84,18 +85,25 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
     let mut tau = algo::floating_rnea(&chain, &base, quaternion, &v, &a, gravity);
     let gravity = ids(algo::floating_gravity(&chain, &base, quaternion, gravity));
     let friction = joint_terms(&tracer, robot, (&graph, &v, &a), &mut mass, &mut tau);
-    let mass: Vec<_> = mass.into_iter().map(ids).collect();
-    let tau = ids(tau);
-    let nothing = zero.id();
     let kinds = [JointKind::Prismatic; BASE_COORDINATES]
         .into_iter()
         .chain(robot.joints.iter().map(|j| j.kind))
         .collect();
-    let angle_offsets = tracer.angle_offsets();
+    let joints = JointOutputs {
+        mass: mass.into_iter().map(ids).collect(),
+        bias,
+        tau: ids(tau),
+        gravity,
+        friction,
+        kinds,
+        angle_offsets: tracer.angle_offsets(),
+    };
+    let out = in_coordinates(&graph, &tracer, robot, joints);
     // The base is the root of the tree: factored from the tips, each branch's joints reach
     // only their ancestors and the base's six, which keeps M's zeros (Featherstone's LTDL).
-    let mut forward = super::forward::forward(&graph, &mass, &bias, &friction, true);
-    if !readable {
+    let mut forward = super::forward::forward(&graph, &out.mass, &out.bias, &out.friction, true);
+    // The articulated bodies run on the joints: a robot with mimic joints keeps the LDLᵀ.
+    if !readable && !robot.has_mimics() {
         let tree = (&chain, &base);
         let aba = articulated(
             &tracer,
@@ -103,14 +111,37 @@ pub(super) fn trace_floating(robot: &Robot, flyer: &FreeFlyer, gravity: Gravity)
             flyer,
             tree,
             (quaternion, &v),
-            (&graph, &friction),
+            (&graph, &out.friction),
         );
         keep_the_cheaper(&graph, &mut forward, &aba);
     }
+    let (nothing, links) = (zero.id(), robot.dof());
+    drop(tracer);
+    floating_equations(graph.into_inner(), fields, out, (forward, links), nothing)
+}
+
+/// The equations of the floating outputs `out` and `forward` in `graph`, `links` bodies past
+/// the base (`nothing`, zero, for the outputs a floating base does not have).
+fn floating_equations(
+    graph: Graph,
+    fields: Vec<String>,
+    out: JointOutputs,
+    (forward, links): (ForwardEquations, usize),
+    nothing: NodeId,
+) -> Equations {
+    let JointOutputs {
+        mass,
+        bias,
+        tau,
+        gravity,
+        friction,
+        kinds,
+        angle_offsets,
+    } = out;
     Equations {
-        graph: graph.into_inner(),
-        dof: nv,
-        links: robot.dof(),
+        graph,
+        dof: mass.len(),
+        links,
         fields,
         kinds,
         angle_offsets,

@@ -85,6 +85,7 @@ impl Equations {
             out.biases_world.push(ids(&frame.bias_world));
             out.biases_local.push(ids(&frame.bias_local));
         }
+        let out = super::floating_mimic::kinematics_in_coordinates(&graph, &tracer, robot, out);
         drop(tracer);
         self.graph = graph.into_inner();
         out

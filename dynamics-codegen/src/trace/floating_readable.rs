@@ -24,7 +24,7 @@ pub struct FloatingReadable {
 
 /// Traces `M`, `h`, `τ` and `g` of `robot` on the free flyer `flyer` over `g_b`'s leaves (the
 /// joints' friction and actuator inertia included, as the derive's), and `g_b` in the same
-/// graph. The front end has checked the robot; it has no mimic joints.
+/// graph, in the coordinates of a robot with mimic joints. The front end has checked the robot.
 #[must_use]
 pub fn derive_floating_readable(robot: &Robot, flyer: &FreeFlyer) -> FloatingReadable {
     let mut eq = trace_floating(robot, flyer, Gravity::BaseLeaves);

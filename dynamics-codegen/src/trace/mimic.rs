@@ -9,6 +9,9 @@
 //! `Sᵀ τ`, `Sᵀ M S`, `Sᵀ C S` (Christoffel's, so `Ṁ = C + Cᵀ` still holds), the Jacobians'
 //! rows `J S`, the energies as they are. Derivatives by the coordinates, traced afterwards on the
 //! reduced graph, follow by the chain rule.
+//!
+//! On a floating base ([`Reduction::shifted`]) the map is `S̃ = diag(1₆, S)`: the base's six
+//! velocity coordinates, numbered before the joints, are their own, so `S̃ᵀ M S̃`, `S̃ᵀ τ`, `J S̃`.
 
 use super::kinematics::KinematicEquations;
 use super::tracer::{joint_index, Tracer};
@@ -19,14 +22,17 @@ use std::cell::RefCell;
 
 /// The map from joints to coordinates, and each joint's leaves in the coordinates' terms.
 pub(super) struct Reduction {
-    /// Per joint, its coordinate (a mimic joint's: that of the joint it follows).
+    /// Per index (the `shift` coordinates of a floating base, then the joints), its
+    /// coordinate (a mimic joint's: that of the joint it follows).
     coordinate: Vec<usize>,
-    /// Per joint, its column of S: `None` for 1 (a coordinate), `Some(k)` for a mimic joint.
+    /// Per index, its column of S: `None` for 1 (a coordinate), `Some(k)` for a mimic joint.
     factor: Vec<Option<NodeId>>,
-    /// Per coordinate, its joint.
+    /// Per coordinate, its index.
     joints: Vec<usize>,
     /// Per joint, the nodes replacing its leaves `q`, `sin q`, `cos q`, `q̇`, `q̈`.
     leaves: Vec<[NodeId; 5]>,
+    /// The coordinates before the joints, their own (a floating base's six), whose leaves stay.
+    shift: usize,
 }
 
 impl Reduction {
@@ -38,15 +44,31 @@ impl Reduction {
         robot: &Robot,
         angle_offsets: &[Option<NodeId>],
     ) -> Reduction {
-        let joints = robot.coordinates();
-        let mut coordinate = vec![0; robot.dof()];
+        Reduction::shifted(graph, tracer, robot, angle_offsets, 0)
+    }
+
+    /// The reduction of `robot` whose joint i is at index `shift + i` of the leaves and the
+    /// outputs, after `shift` coordinates of its own (a floating base's six: `S̃ = diag(1, S)`);
+    /// `angle_offsets` per index, as the shifted tracer recorded them.
+    pub(super) fn shifted(
+        graph: &RefCell<Graph>,
+        tracer: &Tracer<'_>,
+        robot: &Robot,
+        angle_offsets: &[Option<NodeId>],
+        shift: usize,
+    ) -> Reduction {
+        let joints: Vec<usize> = (0..shift)
+            .chain(robot.coordinates().into_iter().map(|j| shift + j))
+            .collect();
+        let mut coordinate: Vec<usize> = (0..shift + robot.dof()).collect();
         for (c, &j) in joints.iter().enumerate() {
             coordinate[j] = c;
         }
-        let mut factor = vec![None; robot.dof()];
+        let mut factor = vec![None; shift + robot.dof()];
         let mut leaves = Vec::with_capacity(robot.dof());
-        for (i, joint) in robot.joints.iter().enumerate() {
-            let followed = joint.mimic.as_ref().map_or(i, |m| m.joint);
+        for (joint_number, joint) in robot.joints.iter().enumerate() {
+            let i = shift + joint_number;
+            let followed = shift + joint.mimic.as_ref().map_or(joint_number, |m| m.joint);
             coordinate[i] = coordinate[followed];
             let c = joint_index(coordinate[i]);
             let mut g = graph.borrow_mut();
@@ -87,20 +109,21 @@ impl Reduction {
             factor,
             joints,
             leaves,
+            shift,
         }
     }
 
-    /// Number of coordinates.
+    /// Number of coordinates (the shifted ones included).
     pub(super) fn coordinates(&self) -> usize {
         self.joints.len()
     }
 
-    /// Per joint, its coordinate (a mimic joint's: that of the joint it follows).
+    /// Per index, its coordinate (a mimic joint's: that of the joint it follows).
     pub(super) fn coordinate_of_joints(&self) -> &[usize] {
         &self.coordinate
     }
 
-    /// `S_ic · x`, joint i's term in its coordinate c's row of `Sᵀ v` (`x` substituted).
+    /// `S_ic · x`, index i's term in its coordinate c's row of `Sᵀ v` (`x` substituted).
     pub(super) fn scaled(&self, g: &mut Graph, joint: usize, x: NodeId) -> NodeId {
         match self.factor[joint] {
             Some(k) => g.mul(k, x),
@@ -108,7 +131,7 @@ impl Reduction {
         }
     }
 
-    /// Per coordinate, its joint's entry of `per_joint`.
+    /// Per coordinate, its index's entry of `per_joint` (one per index).
     pub(super) fn of_coordinates<T: Clone>(&self, per_joint: &[T]) -> Vec<T> {
         self.joints.iter().map(|&j| per_joint[j].clone()).collect()
     }
@@ -124,7 +147,8 @@ impl Reduction {
                 Var::Qdd(i) => (i, 4),
                 _ => return None,
             };
-            self.leaves.get(usize::from(i)).map(|l| l[k])
+            let joint = usize::from(i).checked_sub(self.shift)?;
+            self.leaves.get(joint).map(|l| l[k])
         };
         g.substitute(ids, leaf)
     }

@@ -33,6 +33,7 @@ mod floating;
 mod floating_contacts;
 mod floating_derivatives;
 mod floating_kinematics;
+mod floating_mimic;
 mod floating_readable;
 mod floating_regressor;
 mod forward;

@@ -1,7 +1,8 @@
 //! `base = floating` in the derive: Solo 12's expansion implements `FloatingDynamics<19, 18>`
 //! and `FloatingKinematics<19, 18, F>` and nothing else (`FloatingDynamicsDerivatives`,
 //! `FloatingDynamicsRegressor`, `FloatingDynamicsBaseParameters` where it asks), and every key or family the floating base does not support is a compile error
-//! naming it (never methods that would be wrong on a flying base).
+//! naming it (never methods that would be wrong on a flying base); mimic joints reduce to the
+//! coordinates.
 
 use dynamics_codegen::derive_dynamics;
 
@@ -268,5 +269,39 @@ fn a_description_file_floats_with_its_floating_table() {
             out.contains(message),
             "{file}{keys}: expected {message:?} in {out}"
         );
+    }
+}
+
+/// Mimic joints on a floating base: the configuration and velocity are the coordinates'
+/// (`7 + 1`, `6 + 1` for two joints of which one follows the other), the kinematics and
+/// derivatives too; the regressor and base parameters, not projected yet, are refused naming
+/// them.
+#[test]
+fn mimic_joints_float_in_their_coordinates() {
+    let derive = |keys: &str| {
+        let source = format!(
+            "#[dynamics(base = floating(mass = 2, com = [0, 0, 0.1], inertia = [0.1, 0.2, 0.3, 0, 0, 0]), \
+             gravity = [0, 0, -9.81]{keys}, joints = [revolute(xyz = [0.1, 0, 0], axis = [0, 1, 0]), \
+             revolute(xyz = [0, 0, -0.2], mimic = (joint = 1, multiplier = -1, offset = 0.25))], \
+             link(mass = 1, com = [0, 0, -0.1], inertia = [0.1, 0.1, 0.1, 0, 0, 0]), \
+             link(mass = 0.5, com = [0, 0, -0.1], inertia = [0.01, 0.01, 0.01, 0, 0, 0]))] struct Leg;"
+        );
+        derive_dynamics(source.parse().expect("tokens")).to_string()
+    };
+    let out = derive(", derivatives = true");
+    assert!(!out.contains("compile_error"), "{out}");
+    for expected in [
+        "FloatingDynamics < 8usize , 7usize >",
+        "FloatingKinematics < 8usize , 7usize , 1usize >",
+        "FloatingDynamicsDerivatives < 8usize , 7usize >",
+    ] {
+        assert!(out.contains(expected), "{expected}: {out}");
+    }
+    for family in ["regressor", "base_parameters"] {
+        let out = derive(&format!(", {family} = true"));
+        let message =
+            format!("`{family} = true` is not supported on a floating base with mimic joints yet");
+        assert!(out.contains(&message), "{family}: {out}");
+        assert!(!out.contains("FloatingDynamics <"), "{family}: {out}");
     }
 }

@@ -1161,3 +1161,8 @@ if __name__ == "__main__":
         surface(name, ROBOTS[name])
     for name in EXTRAS:
         extras(name, ROBOTS[name])
+
+    # Mimic joints on the free flyer (Talos with its grippers): `mimic.py`, which reads this one.
+    from mimic import MIMIC, mimic_data
+    for name in MIMIC:
+        mimic_data(name)

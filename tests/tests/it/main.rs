@@ -16,6 +16,7 @@ mod floating_forward;
 mod floating_front;
 mod floating_joint_terms;
 mod floating_kinematics;
+mod floating_mimic;
 mod floating_regressor;
 mod floating_surface_contacts;
 mod forward_dynamics;
