@@ -9,11 +9,12 @@
 
 use super::cost::{ids, matrix_ids};
 use super::floating::{base_quaternion, coordinates, floating_base, BASE_COORDINATES};
+use super::mimic::Reduction;
 use super::tracer::Tracer;
 use super::Equations;
 use crate::algo::{self, RobotScalars};
 use crate::model::{FreeFlyer, Robot};
-use crate::symbolic::{NodeId, Var};
+use crate::symbolic::{Graph, NodeId, Var};
 use std::cell::RefCell;
 
 /// The floating base's kinematic outputs, as node ids; `NV = n + 6` columns.
@@ -85,9 +86,52 @@ impl Equations {
             out.biases_world.push(ids(&frame.bias_world));
             out.biases_local.push(ids(&frame.bias_local));
         }
-        let out = super::floating_mimic::kinematics_in_coordinates(&graph, &tracer, robot, out);
+        let out = kinematics_in_coordinates(&graph, &tracer, robot, out);
         drop(tracer);
         self.graph = graph.into_inner();
         out
+    }
+}
+
+/// The kinematics `k` in the coordinates of `robot` where it has mimic joints
+/// ([`super::floating_mimic`]): the positions,
+/// rotations and `J̇ v` substituted, the Jacobians' rows `J S̃` (`A_G S̃` for the centroidal
+/// map); `tracer` the one that traced them.
+fn kinematics_in_coordinates(
+    graph: &RefCell<Graph>,
+    tracer: &Tracer<'_>,
+    robot: &Robot,
+    k: FloatingKinematicEquations,
+) -> FloatingKinematicEquations {
+    if !robot.has_mimics() {
+        return k;
+    }
+    let offsets = tracer.angle_offsets();
+    let r = Reduction::shifted(graph, tracer, robot, &offsets, tracer.shift());
+    let g = &mut graph.borrow_mut();
+    let mut each = |rows: &[Vec<Vec<NodeId>>], jacobian: bool| -> Vec<Vec<Vec<NodeId>>> {
+        rows.iter()
+            .map(|m| match jacobian {
+                true => r.rows(g, m),
+                false => m.iter().map(|row| r.substitute(g, row)).collect(),
+            })
+            .collect()
+    };
+    let frame_poses = each(&k.frame_poses, false);
+    let jacobians_world = each(&k.jacobians_world, true);
+    let jacobians_local = each(&k.jacobians_local, true);
+    let [com_jacobian, centroidal_matrix] = [&k.com_jacobian, &k.centroidal_matrix]
+        .map(|m| each(std::slice::from_ref(m), true).remove(0));
+    FloatingKinematicEquations {
+        com: r.substitute(g, &k.com),
+        com_jacobian,
+        centroidal_matrix,
+        centroidal_bias: r.substitute(g, &k.centroidal_bias),
+        frame_names: k.frame_names,
+        frame_poses,
+        jacobians_world,
+        jacobians_local,
+        biases_world: k.biases_world.iter().map(|b| r.substitute(g, b)).collect(),
+        biases_local: k.biases_local.iter().map(|b| r.substitute(g, b)).collect(),
     }
 }

@@ -13,8 +13,6 @@
 //! The forward dynamics solve with the LDLᵀ of `M'`: the articulated-body route
 //! ([`crate::algo::floating_aba`]) runs on the joints and has no reduced form as written.
 
-use super::floating::BASE_COORDINATES;
-use super::floating_kinematics::FloatingKinematicEquations;
 use super::mimic::Reduction;
 use super::tracer::Tracer;
 use crate::model::{JointKind, Robot};
@@ -43,7 +41,7 @@ pub(super) fn in_coordinates(
     if !robot.has_mimics() {
         return out;
     }
-    let r = Reduction::shifted(graph, tracer, robot, &out.angle_offsets, BASE_COORDINATES);
+    let r = Reduction::shifted(graph, tracer, robot, &out.angle_offsets, tracer.shift());
     let g = &mut graph.borrow_mut();
     JointOutputs {
         mass: r.matrix(g, &out.mass),
@@ -53,47 +51,5 @@ pub(super) fn in_coordinates(
         friction: r.vector(g, &out.friction),
         kinds: r.of_coordinates(&out.kinds),
         angle_offsets: r.of_coordinates(&out.angle_offsets),
-    }
-}
-
-/// The kinematics `k` in the coordinates of `robot` where it has mimic joints: the positions,
-/// rotations and `J̇ v` substituted, the Jacobians' rows `J S̃` (`A_G S̃` for the centroidal
-/// map); `tracer` the one that traced them.
-pub(super) fn kinematics_in_coordinates(
-    graph: &RefCell<Graph>,
-    tracer: &Tracer<'_>,
-    robot: &Robot,
-    k: FloatingKinematicEquations,
-) -> FloatingKinematicEquations {
-    if !robot.has_mimics() {
-        return k;
-    }
-    let offsets = tracer.angle_offsets();
-    let r = Reduction::shifted(graph, tracer, robot, &offsets, BASE_COORDINATES);
-    let g = &mut graph.borrow_mut();
-    let mut each = |rows: &[Vec<Vec<NodeId>>], jacobian: bool| -> Vec<Vec<Vec<NodeId>>> {
-        rows.iter()
-            .map(|m| match jacobian {
-                true => r.rows(g, m),
-                false => m.iter().map(|row| r.substitute(g, row)).collect(),
-            })
-            .collect()
-    };
-    let frame_poses = each(&k.frame_poses, false);
-    let jacobians_world = each(&k.jacobians_world, true);
-    let jacobians_local = each(&k.jacobians_local, true);
-    let [com_jacobian, centroidal_matrix] = [&k.com_jacobian, &k.centroidal_matrix]
-        .map(|m| each(std::slice::from_ref(m), true).remove(0));
-    FloatingKinematicEquations {
-        com: r.substitute(g, &k.com),
-        com_jacobian,
-        centroidal_matrix,
-        centroidal_bias: r.substitute(g, &k.centroidal_bias),
-        frame_names: k.frame_names,
-        frame_poses,
-        jacobians_world,
-        jacobians_local,
-        biases_world: k.biases_world.iter().map(|b| r.substitute(g, b)).collect(),
-        biases_local: k.biases_local.iter().map(|b| r.substitute(g, b)).collect(),
     }
 }

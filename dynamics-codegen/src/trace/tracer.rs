@@ -50,6 +50,11 @@ impl<'g> Tracer<'g> {
         self
     }
 
+    /// The coordinates before joint 0's: a floating base's six, else none.
+    pub(super) fn shift(&self) -> usize {
+        self.shift
+    }
+
     /// The same tracer, tracing the description's numbers other than 0 and ±1, and the sines
     /// and cosines of its angles other than quarter turns, as leaves [`Var::Exact`]: exact in
     /// `ℤ/p`, where the graph would fold their products into floats once the rationals
