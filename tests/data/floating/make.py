@@ -156,20 +156,21 @@ def sample(rng, model, k):
     return q, rng.uniform(-2, 2, model.nv), rng.uniform(-2, 2, model.nv)
 
 
-def configuration_space(rng, model, data, k, q, v, m, h):
-    """Forward dynamics, M^-1, integrate, difference and their Jacobians at state k."""
-    tau_in = rng.uniform(-20, 20, model.nv)
+def configuration_step(rng, model, k):
+    """The configuration space's inputs at state k: a velocity step `dv` uniform in [-1.5, 1.5]
+    (on state 1 its rotation 1e-9 rad, for the Taylor branch) and a second configuration `q1`."""
     dv = rng.uniform(-1.5, 1.5, model.nv)
     if k == 1:
         dv[3:6] *= 1e-9
     q1, _, _ = sample(rng, model, 2)
-    a_fd = pin.aba(model, data, q, v, tau_in).copy()
-    m_inv = pin.computeMinverse(model, data, q).copy()
-    m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+    return dv, q1
+
+
+def configuration_at(model, q, dv, q1):
+    """`q_next = integrate(q, dv)`, `dq = difference(q, q1)` and the Jacobians of both by each
+    argument (Pinocchio's joint order); checks integrate(q, dq) = q1."""
     q_next = pin.integrate(model, q, dv)
     dq = pin.difference(model, q, q1)
-    assert scaled(m @ a_fd + h, tau_in) < TOLERANCE
-    assert scaled(m @ m_inv, np.eye(model.nv)) < TOLERANCE
     back = pin.integrate(model, q, dq)
     assert scaled(back[7:], q1[7:]) < TOLERANCE and scaled(back[:3], q1[:3]) < TOLERANCE
     # The same rotation: the quaternions equal up to sign.
@@ -180,9 +181,22 @@ def configuration_space(rng, model, data, k, q, v, m, h):
         "ddifference_dq0": pin.dDifference(model, q, q1, pin.ARG0),
         "ddifference_dq1": pin.dDifference(model, q, q1, pin.ARG1),
     }
+    return q_next, dq, {key: np.asarray(j) for key, j in jacobians.items()}
+
+
+def configuration_space(rng, model, data, k, q, v, m, h):
+    """Forward dynamics, M^-1, integrate, difference and their Jacobians at state k."""
+    tau_in = rng.uniform(-20, 20, model.nv)
+    dv, q1 = configuration_step(rng, model, k)
+    a_fd = pin.aba(model, data, q, v, tau_in).copy()
+    m_inv = pin.computeMinverse(model, data, q).copy()
+    m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+    assert scaled(m @ a_fd + h, tau_in) < TOLERANCE
+    assert scaled(m @ m_inv, np.eye(model.nv)) < TOLERANCE
+    q_next, dq, jacobians = configuration_at(model, q, dv, q1)
     out = {"tau_in": tau_in.tolist(), "a_fd": a_fd.tolist(), "M_inv": m_inv.tolist(),
            "dv": dv.tolist(), "q_next": q_next.tolist(), "q1": q1.tolist(), "dq": dq.tolist()}
-    out.update({key: np.asarray(j).tolist() for key, j in jacobians.items()})
+    out.update({key: j.tolist() for key, j in jacobians.items()})
     return out
 
 
@@ -244,6 +258,41 @@ def make(name, urdf):
 KINEMATICS = {"solo12": ["FL_FOOT", "FR_FOOT", "HL_FOOT", "HR_FOOT"]}
 
 
+def kinematics_at(model, data, q, v, ids, frames, mass, columns=np.asarray):
+    """`kinematics`' outputs at one state (Pinocchio's joint order), checked as it checks them;
+    `columns` takes a matrix's columns to the file's order."""
+    com = pin.centerOfMass(model, data, q).copy()
+    jcom = pin.jacobianCenterOfMass(model, data, q).copy()
+    ag = pin.computeCentroidalMap(model, data, q).copy()
+    dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
+    assert scaled(ag[:3], mass * jcom) < TOLERANCE
+    # A_G v: each body's momentum about the CoM, in world axes (body velocities in world).
+    pin.forwardKinematics(model, data, q, v)
+    momentum = pin.Force.Zero()
+    for k in range(1, model.njoints):
+        momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
+    assert scaled(ag @ v, pin.SE3(np.eye(3), com).actInv(momentum).vector) < TOLERANCE
+    step = 1e-6
+    diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
+            - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
+    assert scaled(diff @ v, dag @ v) < 1e-6
+    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+    pin.updateFramePlacements(model, data)
+    pin.computeJointJacobians(model, data, q)
+    out = {"com": com.tolist(), "Jcom": columns(jcom).tolist(), "Ag": columns(ag).tolist(),
+           "dAg_v": (dag @ v).tolist(), "frames": {}}
+    for frame, i in zip(frames, ids):
+        placement = data.oMf[i]
+        entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
+        for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
+            jac = pin.getFrameJacobian(model, data, i, ref)
+            assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
+            entry["J_" + key] = columns(jac).tolist()
+            entry["dJv_" + key] = pin.getFrameClassicalAcceleration(model, data, i, ref).vector.tolist()
+        out["frames"][frame] = entry
+    return out
+
+
 def kinematics(name, urdf):
     """The kinematic outputs at the states of `<name>.json` (issue 43, item 2), written to
     `<name>_kinematics.json`: the centre of mass (`centerOfMass`) and its Jacobian
@@ -261,42 +310,7 @@ def kinematics(name, urdf):
     frames = KINEMATICS[name]
     ids = [model.getFrameId(f) for f in frames]
     mass = sum(i.mass for i in model.inertias)
-    zero = np.zeros(model.nv)
-    samples = []
-    for s in states:
-        q, v = np.array(s["q"]), np.array(s["v"])
-        com = pin.centerOfMass(model, data, q).copy()
-        jcom = pin.jacobianCenterOfMass(model, data, q).copy()
-        ag = pin.computeCentroidalMap(model, data, q).copy()
-        dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
-        assert scaled(ag[:3], mass * jcom) < TOLERANCE
-        # A_G v: each body's momentum about the CoM, in world axes (body velocities in world).
-        pin.forwardKinematics(model, data, q, v)
-        momentum = pin.Force.Zero()
-        for k in range(1, model.njoints):
-            momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
-        h = pin.SE3(np.eye(3), com).actInv(momentum)
-        assert scaled(ag @ v, h.vector) < TOLERANCE
-        step = 1e-6
-        diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
-                - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
-        assert scaled(diff @ v, dag @ v) < 1e-6
-        pin.forwardKinematics(model, data, q, v, zero)
-        pin.updateFramePlacements(model, data)
-        pin.computeJointJacobians(model, data, q)
-        out = {"com": com.tolist(), "Jcom": jcom.tolist(), "Ag": ag.tolist(), "dAg_v": (dag @ v).tolist(),
-               "frames": {}}
-        for frame, i in zip(frames, ids):
-            placement = data.oMf[i]
-            entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
-            for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
-                jac = pin.getFrameJacobian(model, data, i, ref)
-                acc = pin.getFrameClassicalAcceleration(model, data, i, ref).vector
-                assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
-                entry["J_" + key] = jac.tolist()
-                entry["dJv_" + key] = acc.tolist()
-            out["frames"][frame] = entry
-        samples.append(out)
+    samples = [kinematics_at(model, data, np.array(s["q"]), np.array(s["v"]), ids, frames, mass) for s in states]
     result = {
         "robot": name,
         "generator": "tests/data/floating/make.py (kinematics) with pinocchio %s" % importlib.metadata.version("pin"),
@@ -321,6 +335,88 @@ CONTACT_MASKS = [[True, False, False, True], [True, True, True, True], [False, T
                  [True, True, True, False], [False, False, True, False], [False, False, False, False]]
 
 
+def rigid_contacts(model, data, held):
+    """Pinocchio's constraints holding the frames of `held` (frame id, "surface" or "point") in
+    LOCAL_WORLD_ALIGNED, CONTACT_6D or CONTACT_3D (no Baumgarte), with their data, initialised."""
+    types = {"surface": pin.ContactType.CONTACT_6D, "point": pin.ContactType.CONTACT_3D}
+    models = [pin.RigidConstraintModel(types[kind], model, model.frames[i].parentJoint,
+                                       model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i, kind in held]
+    datas = [c.createData() for c in models]
+    pin.initConstraintDynamics(model, data, models, datas)
+    return models, datas
+
+
+def kkt_gap(model, data, q, v, tau, held, ddq, lambda_c):
+    """How far constraintDynamics' `ddq` and `lambda_c` (flat) at the frames `held` (as
+    `rigid_contacts`') are from numpy's solve of the KKT system [M J^T; J 0] [a; -lambda] =
+    [tau - h; -gamma] (scaled, the larger gap): J the frames' LOCAL_WORLD_ALIGNED Jacobians (6
+    rows at a surface, the 3 linear at a point), gamma a surface's spatial acceleration at a = 0
+    (getFrameAcceleration: the classical one less w x v in the linear part) and a point's
+    classical acceleration."""
+    m = pin.crba(model, data, q)
+    m = np.triu(m) + np.triu(m, 1).T
+    h = pin.nonLinearEffects(model, data, q, v).copy()
+    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
+    pin.computeJointJacobians(model, data, q)
+    pin.updateFramePlacements(model, data)
+    rows, gammas = [np.zeros((0, model.nv))], [np.zeros(0)]
+    for i, kind in held:
+        jac = pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)
+        if kind == "surface":
+            rows.append(jac)
+            gammas.append(pin.getFrameAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).vector)
+        else:
+            rows.append(jac[:3])
+            gammas.append(pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear)
+    jc, gamma = np.vstack(rows), np.concatenate(gammas)
+    c = len(gamma)
+    kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
+    solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
+    return max(scaled(ddq, solution[:model.nv]), scaled(lambda_c, -solution[model.nv:]) if c else 0.0)
+
+
+def contacts_at(model, data, state, ids, mask, rng, tolerance, iv=slice(None)):
+    """`contacts`' outputs at one state (Pinocchio's joint order), the frames `ids`, those of
+    `mask` held; the vectors in the file's order (`iv`). The accelerations with wrenches are
+    checked against rnea and numpy's solve to 1e-9, the constrained ones against the KKT
+    system's solve to `tolerance`."""
+    q, v, a, tau = state
+    wrenches = rng.uniform(-10, 10, (len(ids), 6))
+    forces = rng.uniform(-10, 10, (len(ids), 3))
+    pin.computeJointJacobians(model, data, q)
+    pin.updateFramePlacements(model, data)
+    jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
+    m = pin.crba(model, data, q).copy()
+    m = np.triu(m) + np.triu(m, 1).T
+    out = {}
+    for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
+        # fext: each wrench turned into its frame's axes and carried to the frame's joint.
+        fext = [pin.Force.Zero() for _ in range(model.njoints)]
+        for i, wrench in zip(ids, w):
+            frame = model.frames[i]
+            rotation = data.oMf[i].rotation
+            fext[frame.parentJoint] += frame.placement.act(pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:]))
+        generalized = sum(j.T @ wrench for j, wrench in zip(jac, w))
+        tau_ext = pin.rnea(model, data, q, v, a, fext).copy()
+        assert scaled(tau_ext, tau - generalized) < TOLERANCE
+        acc_ext = pin.aba(model, data, q, v, tau, fext).copy()
+        assert scaled(pin.rnea(model, data, q, v, acc_ext) - generalized, tau) < 1e-9
+        h = pin.nonLinearEffects(model, data, q, v)
+        assert scaled(acc_ext, np.linalg.solve(m, tau - h + generalized)) < 1e-9
+        out[key] = (w if key == "wrenches" else forces).tolist()
+        out["tau_" + key] = tau_ext[iv].tolist()
+        out["a_" + key] = acc_ext[iv].tolist()
+    held = [(i, "point") for i, flag in zip(ids, mask) if flag]
+    models, datas = rigid_contacts(model, data, held)
+    ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
+    lambda_c = data.lambda_c.copy()
+    assert kkt_gap(model, data, q, v, tau, held, ddq, lambda_c) < tolerance
+    full = np.zeros((len(ids), 3))
+    full[np.array(mask, dtype=bool)] = lambda_c.reshape(-1, 3)
+    out.update({"in_contact": mask, "a_contact": ddq[iv].tolist(), "lambda": full.tolist()})
+    return out
+
+
 def contacts(name, urdf):
     """Contacts at the frames KINEMATICS[name], at the states of `<name>.json`, written to
     `<name>_contacts.json`: for random wrenches [f, m] and point forces f exerted on the robot at
@@ -340,57 +436,9 @@ def contacts(name, urdf):
     rng = np.random.default_rng(SEED + 2)
     samples = []
     for k, s in enumerate(states):
-        q, v, a, tau = (np.array(s[key]) for key in ("q", "v", "a", "tau"))
-        wrenches = rng.uniform(-10, 10, (len(frames), 6))
-        forces = rng.uniform(-10, 10, (len(frames), 3))
-        pin.computeJointJacobians(model, data, q)
-        pin.updateFramePlacements(model, data)
-        jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
-        out = {}
-        for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
-            fext = [pin.Force.Zero() for _ in range(model.njoints)]
-            for i, wrench in zip(ids, w):
-                frame = model.frames[i]
-                rotation = data.oMf[i].rotation
-                local = pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:])
-                fext[frame.parentJoint] += frame.placement.act(local)
-            generalized = sum(j.T @ wrench for j, wrench in zip(jac, w))
-            tau_ext = pin.rnea(model, data, q, v, a, fext).copy()
-            assert scaled(tau_ext, tau - generalized) < TOLERANCE
-            acc_ext = pin.aba(model, data, q, v, tau, fext).copy()
-            assert scaled(pin.rnea(model, data, q, v, acc_ext) - generalized, tau) < 1e-9
-            out[key] = (w if key == "wrenches" else forces).tolist()
-            out["tau_" + key] = tau_ext.tolist()
-            out["a_" + key] = acc_ext.tolist()
+        state = tuple(np.array(s[key]) for key in ("q", "v", "a", "tau"))
         mask = CONTACT_MASKS[k % len(CONTACT_MASKS)]
-        held = [i for i, m in zip(ids, mask) if m]
-        models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
-                                           model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in held]
-        datas = [c.createData() for c in models]
-        pin.initConstraintDynamics(model, data, models, datas)
-        ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
-        lambda_c = data.lambda_c.copy().reshape(-1, 3)
-        # The same by the KKT system, from M, h, the Jacobians' linear rows and the feet's
-        # classical accelerations at a = 0.
-        m = pin.crba(model, data, q)
-        m = np.triu(m) + np.triu(m, 1).T
-        h = pin.nonLinearEffects(model, data, q, v)
-        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
-        pin.computeJointJacobians(model, data, q)
-        pin.updateFramePlacements(model, data)
-        jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in held]
-                       + [np.zeros((0, model.nv))])
-        gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
-                                for i in held] + [np.zeros(0)])
-        c = len(gamma)
-        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
-        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
-        assert scaled(ddq, solution[:model.nv]) < 1e-10
-        assert not held or scaled(lambda_c.ravel(), -solution[model.nv:]) < 1e-10
-        full = np.zeros((len(frames), 3))
-        full[np.array(mask, dtype=bool)] = lambda_c
-        out.update({"in_contact": mask, "a_contact": ddq.tolist(), "lambda": full.tolist()})
-        samples.append(out)
+        samples.append(contacts_at(model, data, state, ids, mask, rng, 1e-10))
     result = {
         "robot": name,
         "generator": "tests/data/floating/make.py (contacts) with pinocchio %s" % importlib.metadata.version("pin"),
@@ -432,10 +480,8 @@ def contact_fd(name, urdf):
     names = list(model.names)[2:]
     frames = CONTACT_FD[name]
     ids = [model.getFrameId(f) for f in frames]
-    models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
-                                       model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in ids]
-    datas = [c.createData() for c in models]
-    pin.initConstraintDynamics(model, data, models, datas)
+    held = [(i, "point") for i in ids]
+    models, datas = rigid_contacts(model, data, held)
     samples = []
     for s in states:
         q = from_file_order(names, order, np.array(s["q"]), 7)
@@ -443,20 +489,7 @@ def contact_fd(name, urdf):
         tau = from_file_order(names, order, np.array(s["tau"]), 6)
         ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
         lambda_c = data.lambda_c.copy()
-        m = pin.crba(model, data, q)
-        m = np.triu(m) + np.triu(m, 1).T
-        h = pin.nonLinearEffects(model, data, q, v)
-        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
-        pin.computeJointJacobians(model, data, q)
-        pin.updateFramePlacements(model, data)
-        jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in ids])
-        gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
-                                for i in ids])
-        c = len(gamma)
-        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
-        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
-        assert scaled(ddq, solution[:model.nv]) < 1e-10
-        assert scaled(lambda_c, -solution[model.nv:]) < 1e-10
+        assert kkt_gap(model, data, q, v, tau, held, ddq, lambda_c) < 1e-10
         pick = [names.index(j) for j in order]
         a_file = np.concatenate([ddq[:6], ddq[6:][pick]])
         samples.append({"a_contact": a_file.tolist(), "lambda": lambda_c.reshape(-1, 3).tolist()})
@@ -903,35 +936,12 @@ def surface(name, urdf):
         kinds = SURFACE[name]["contacts"][k % len(SURFACE[name]["contacts"])]
         kinds = kinds + ["none"] * (len(frames) - len(kinds))
         held = [(i, kind) for i, kind in zip(ids, kinds) if kind != "none"]
-        types = {"surface": pin.ContactType.CONTACT_6D, "point": pin.ContactType.CONTACT_3D}
-        models = [pin.RigidConstraintModel(types[kind], model, model.frames[i].parentJoint,
-                                           model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i, kind in held]
-        datas = [c.createData() for c in models]
-        pin.initConstraintDynamics(model, data, models, datas)
+        models, datas = rigid_contacts(model, data, held)
         ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
         lambda_c = data.lambda_c.copy()
-        m = pin.crba(model, data, q)
-        m = np.triu(m) + np.triu(m, 1).T
-        h = pin.nonLinearEffects(model, data, q, v)
-        pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
-        pin.computeJointJacobians(model, data, q)
-        pin.updateFramePlacements(model, data)
-        rows, gammas = [np.zeros((0, model.nv))], [np.zeros(0)]
-        for i, kind in held:
-            jac = pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)
-            if kind == "surface":
-                rows.append(jac)
-                gammas.append(pin.getFrameAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).vector)
-            else:
-                rows.append(jac[:3])
-                gammas.append(pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear)
-        jc, gamma = np.vstack(rows), np.concatenate(gammas)
-        c = len(gamma)
-        kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
-        solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
-        worst = max(worst, scaled(ddq, solution[:model.nv]), scaled(lambda_c, -solution[model.nv:]) if c else 0.0)
-        assert scaled(ddq, solution[:model.nv]) < 1e-9
-        assert not c or scaled(lambda_c, -solution[model.nv:]) < 1e-9
+        gap = kkt_gap(model, data, q, v, tau, held, ddq, lambda_c)
+        worst = max(worst, gap)
+        assert gap < 1e-9
         wrenches = np.zeros((len(frames), 6))
         at = 0
         for f, kind in enumerate(kinds):
@@ -1011,29 +1021,14 @@ def extras(name, urdf):
         q = from_file_order(names, order, np.array(s["q"]), 7)
         v, a, tau = (from_file_order(names, order, np.array(s[key]), 6) for key in ("v", "a", "tau"))
         out = {"tau": s["tau"]}
-        out.update(extras_kinematics(model, data, q, v, ids, frames, mass, columns))
-        out.update(extras_contacts(model, data, (q, v, a, tau), ids, EXTRAS[name]["held"][k % 6], rng, iv))
+        out.update(kinematics_at(model, data, q, v, ids, frames, mass, columns))
+        out.update(contacts_at(model, data, (q, v, a, tau), ids, EXTRAS[name]["held"][k % 6], rng, 1e-9, iv))
         # The configuration space, its inputs drawn in the file's order.
-        dv = rng.uniform(-1.5, 1.5, model.nv)
-        if k == 1:
-            dv[3:6] *= 1e-9
-        q1_file, _, _ = sample(rng, model, 2)
-        dv_pin = from_file_order(names, order, dv, 6)
-        q1 = from_file_order(names, order, q1_file, 7)
-        q_next = pin.integrate(model, q, dv_pin)
-        dq = pin.difference(model, q, q1)
-        back = pin.integrate(model, q, dq)
-        assert scaled(back[7:], q1[7:]) < TOLERANCE and scaled(back[:3], q1[:3]) < TOLERANCE
-        assert min(scaled(back[3:7], q1[3:7]), scaled(back[3:7], -q1[3:7])) < TOLERANCE
-        jacobians = {
-            "dintegrate_dq": pin.dIntegrate(model, q, dv_pin, pin.ARG0),
-            "dintegrate_dv": pin.dIntegrate(model, q, dv_pin, pin.ARG1),
-            "ddifference_dq0": pin.dDifference(model, q, q1, pin.ARG0),
-            "ddifference_dq1": pin.dDifference(model, q, q1, pin.ARG1),
-        }
-        out.update({"dv": dv.tolist(), "q1": q1_file.tolist(), "q_next": q_next[iq].tolist(),
-                    "dq": dq[iv].tolist()})
-        out.update({key: np.asarray(j)[np.ix_(iv, iv)].tolist() for key, j in jacobians.items()})
+        dv, q1 = configuration_step(rng, model, k)
+        q_next, dq, jacobians = configuration_at(model, q, from_file_order(names, order, dv, 6),
+                                                 from_file_order(names, order, q1, 7))
+        out.update({"dv": dv.tolist(), "q1": q1.tolist(), "q_next": q_next[iq].tolist(), "dq": dq[iv].tolist()})
+        out.update({key: j[np.ix_(iv, iv)].tolist() for key, j in jacobians.items()})
         samples.append(out)
     result = {
         "robot": name,
@@ -1050,93 +1045,6 @@ def extras(name, urdf):
         json.dump(result, f, indent=1)
         f.write("\n")
     print(name, "extras:", len(samples), "samples,", len(frames), "frames")
-
-
-def extras_kinematics(model, data, q, v, ids, frames, mass, columns):
-    """`kinematics`' outputs at one state (Pinocchio's joint order), checked as it checks them;
-    `columns` takes a matrix's columns to the file's order."""
-    com = pin.centerOfMass(model, data, q).copy()
-    jcom = pin.jacobianCenterOfMass(model, data, q).copy()
-    ag = pin.computeCentroidalMap(model, data, q).copy()
-    dag = pin.computeCentroidalMapTimeVariation(model, data, q, v).copy()
-    assert scaled(ag[:3], mass * jcom) < TOLERANCE
-    pin.forwardKinematics(model, data, q, v)
-    momentum = pin.Force.Zero()
-    for k in range(1, model.njoints):
-        momentum += data.oMi[k].act(model.inertias[k] * data.v[k])
-    assert scaled(ag @ v, pin.SE3(np.eye(3), com).actInv(momentum).vector) < TOLERANCE
-    step = 1e-6
-    diff = (pin.computeCentroidalMap(model, data, pin.integrate(model, q, v * step))
-            - pin.computeCentroidalMap(model, data, pin.integrate(model, q, -v * step))) / (2 * step)
-    assert scaled(diff @ v, dag @ v) < 1e-6
-    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
-    pin.updateFramePlacements(model, data)
-    pin.computeJointJacobians(model, data, q)
-    out = {"com": com.tolist(), "Jcom": columns(jcom).tolist(), "Ag": columns(ag).tolist(),
-           "dAg_v": (dag @ v).tolist(), "frames": {}}
-    for frame, i in zip(frames, ids):
-        placement = data.oMf[i]
-        entry = {"rotation": placement.rotation.tolist(), "translation": placement.translation.tolist()}
-        for key, ref in [("local", pin.LOCAL), ("world_aligned", pin.LOCAL_WORLD_ALIGNED)]:
-            jac = pin.getFrameJacobian(model, data, i, ref)
-            assert scaled(jac @ v, pin.getFrameVelocity(model, data, i, ref).vector) < TOLERANCE
-            entry["J_" + key] = columns(jac).tolist()
-            entry["dJv_" + key] = pin.getFrameClassicalAcceleration(model, data, i, ref).vector.tolist()
-        out["frames"][frame] = entry
-    return out
-
-
-def extras_contacts(model, data, state, ids, mask, rng, iv):
-    """`contacts`' outputs at one state (Pinocchio's joint order), the frames `ids`, those of
-    `mask` held; the vectors in the file's order (`iv`)."""
-    q, v, a, tau = state
-    wrenches = rng.uniform(-10, 10, (len(ids), 6))
-    forces = rng.uniform(-10, 10, (len(ids), 3))
-    pin.computeJointJacobians(model, data, q)
-    pin.updateFramePlacements(model, data)
-    jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
-    m = pin.crba(model, data, q).copy()
-    m = np.triu(m) + np.triu(m, 1).T
-    out = {}
-    for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
-        fext = [pin.Force.Zero() for _ in range(model.njoints)]
-        for i, wrench in zip(ids, w):
-            frame = model.frames[i]
-            rotation = data.oMf[i].rotation
-            fext[frame.parentJoint] += frame.placement.act(pin.Force(rotation.T @ wrench[:3], rotation.T @ wrench[3:]))
-        generalized = sum(j.T @ wrench for j, wrench in zip(jac, w))
-        tau_ext = pin.rnea(model, data, q, v, a, fext).copy()
-        assert scaled(tau_ext, tau - generalized) < TOLERANCE
-        acc_ext = pin.aba(model, data, q, v, tau, fext).copy()
-        h = pin.nonLinearEffects(model, data, q, v)
-        assert scaled(acc_ext, np.linalg.solve(m, tau - h + generalized)) < 1e-9
-        out[key] = (w if key == "wrenches" else forces).tolist()
-        out["tau_" + key] = tau_ext[iv].tolist()
-        out["a_" + key] = acc_ext[iv].tolist()
-    held = [i for i, flag in zip(ids, mask) if flag]
-    models = [pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, model.frames[i].parentJoint,
-                                       model.frames[i].placement, pin.LOCAL_WORLD_ALIGNED) for i in held]
-    datas = [c.createData() for c in models]
-    pin.initConstraintDynamics(model, data, models, datas)
-    ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
-    lambda_c = data.lambda_c.copy().reshape(-1, 3)
-    h = pin.nonLinearEffects(model, data, q, v)
-    pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
-    pin.computeJointJacobians(model, data, q)
-    pin.updateFramePlacements(model, data)
-    jc = np.vstack([pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED)[:3] for i in held]
-                   + [np.zeros((0, model.nv))])
-    gamma = np.concatenate([pin.getFrameClassicalAcceleration(model, data, i, pin.LOCAL_WORLD_ALIGNED).linear
-                            for i in held] + [np.zeros(0)])
-    c = len(gamma)
-    kkt = np.block([[m, jc.T], [jc, np.zeros((c, c))]])
-    solution = np.linalg.solve(kkt, np.concatenate([tau - h, -gamma]))
-    assert scaled(ddq, solution[:model.nv]) < 1e-9
-    assert not held or scaled(lambda_c.ravel(), -solution[model.nv:]) < 1e-9
-    full = np.zeros((len(ids), 3))
-    full[np.array(mask, dtype=bool)] = lambda_c
-    out.update({"in_contact": mask, "a_contact": ddq[iv].tolist(), "lambda": full.tolist()})
-    return out
 
 
 if __name__ == "__main__":
