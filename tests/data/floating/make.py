@@ -85,6 +85,24 @@ def file_order(path):
     return roots[0], order
 
 
+def load(name, urdf):
+    """Pinocchio's model of `urdf` on its free flyer, its data, the samples of `<name>.json`, and
+    the moving joints in the file's order and in Pinocchio's."""
+    path = os.path.join(ROOT, urdf)
+    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
+    with open(os.path.join(HERE, name + ".json")) as f:
+        states = json.load(f)["samples"]
+    _, order = file_order(path)
+    return model, model.createData(), states, order, list(model.names)[2:]
+
+
+def write_json(file, record):
+    """`record` as `file` in this directory, one space of indent, a newline at the end."""
+    with open(os.path.join(HERE, file), "w") as f:
+        json.dump(record, f, indent=1)
+        f.write("\n")
+
+
 def to_file_order(model, names, order, q, v, a, m, h, tau, g):
     """Pinocchio's joint coordinates (its `names` order) permuted into the file's `order`; the
     free flyer's 7 (q) and 6 (v) first coordinates stay."""
@@ -248,9 +266,7 @@ def make(name, urdf):
         "pinocchio_model": record,
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + ".json"), "w") as f:
-        json.dump(out, f, indent=1)
-        f.write("\n")
+    write_json(name + ".json", out)
     print(name, model.nq, model.nv, "mass %.4f" % sum(i.mass for i in model.inertias))
 
 
@@ -302,11 +318,7 @@ def kinematics(name, urdf):
     (`getFrameClassicalAcceleration`: the origin's acceleration in the world, dJ v) in LOCAL
     and LOCAL_WORLD_ALIGNED. Checks A_G's linear rows = m Jcom, A_G v = the momentum about the
     CoM computed body by body, and dA_G v against a central difference of A_G along the motion."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
+    model, data, states, _, _ = load(name, urdf)
     frames = KINEMATICS[name]
     ids = [model.getFrameId(f) for f in frames]
     mass = sum(i.mass for i in model.inertias)
@@ -323,9 +335,7 @@ def kinematics(name, urdf):
                        "getFrameClassicalAcceleration at a = 0 ([origin's acceleration; angular acceleration])",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_kinematics.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_kinematics.json", result)
     print(name, "kinematics:", len(samples), "samples,", len(frames), "frames")
 
 
@@ -426,11 +436,7 @@ def contacts(name, urdf):
     and constraintDynamics with a RigidConstraintModel CONTACT_3D in LOCAL_WORLD_ALIGNED at each
     frame of CONTACT_MASKS (no Baumgarte), its ddq and lambda_c checked against the KKT system
     [M J^T; J 0] [a; -lambda] = [tau - h; -gamma] solved with numpy."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
+    model, data, states, _, _ = load(name, urdf)
     frames = KINEMATICS[name]
     ids = [model.getFrameId(f) for f in frames]
     rng = np.random.default_rng(SEED + 2)
@@ -452,9 +458,7 @@ def contacts(name, urdf):
                        "zero at a frame not in contact",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_contacts.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_contacts.json", result)
     print(name, "contacts:", len(samples), "samples,", len(frames), "frames")
 
 
@@ -471,13 +475,7 @@ def contact_fd(name, urdf):
     and each foot's frame (its parent joint's name, its placement in the joint's frame) for
     bench/pinocchio/floating.hpp, which holds the same feet of the rebuilt model. Joints in the
     file's order, as `<name>.json`'s."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
-    _, order = file_order(path)
-    names = list(model.names)[2:]
+    model, data, states, order, names = load(name, urdf)
     frames = CONTACT_FD[name]
     ids = [model.getFrameId(f) for f in frames]
     held = [(i, "point") for i in ids]
@@ -507,9 +505,7 @@ def contact_fd(name, urdf):
                        "parent joint's frame",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_contact_fd.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_contact_fd.json", result)
     print(name, "contact_fd:", len(samples), "samples,", len(frames), "frames")
 
 
@@ -547,13 +543,7 @@ def derivatives(name, urdf):
     file's joint order (the states are read in it, taken to Pinocchio's for the calls, and the
     results back). Checks dtau_dq, dtau_dv, ddq_dq and ddq_dv against central differences
     (1e-5 scaled: a wrong convention is off by O(1)), Minv M = 1 and ddq_dq = -Minv dtau_dq at a = ddq (1e-10 scaled)."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    _, order = file_order(path)
-    names = list(model.names)[2:]
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
+    model, data, states, order, names = load(name, urdf)
     rng = np.random.default_rng(SEED + 2)
     pick = [names.index(j) for j in order]
     iv = list(range(6)) + [6 + k for k in pick]
@@ -598,9 +588,7 @@ def derivatives(name, urdf):
         "seed": SEED + 2,
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_derivatives.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_derivatives.json", result)
     print(name, "derivatives:", len(samples), "samples")
 
 
@@ -622,13 +610,7 @@ def regressor(name, urdf):
     to 1e-12 scaled. Also the numerical rank of Y stacked at RANK_STATES random states (seed
     SEED + 3: joints in [-pi, pi], unit quaternions, v and a in [-2, 2]), by the SVD with
     singular values below RANK_TOLERANCE times the largest taken as zero, and the gap there."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    _, order = file_order(path)
-    names = list(model.names)[2:]
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
+    model, data, states, order, names = load(name, urdf)
     pick = [names.index(j) for j in order]
     iv = list(range(6)) + [6 + k for k in pick]
     # Body blocks: the free flyer's (Pinocchio's joint 1), then the file's joints.
@@ -667,9 +649,7 @@ def regressor(name, urdf):
         "seed": SEED + 3,
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_regressor.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_regressor.json", result)
     print(name, "regressor:", len(samples), "samples, rank", rank, "of", len(columns), result["rank_gap"])
 
 
@@ -756,9 +736,7 @@ def friction_data(name, urdf):
         "seed": SEED,
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + ".json"), "w") as f:
-        json.dump(out, f, indent=1)
-        f.write("\n")
+    write_json(name + ".json", out)
     print(name, model.nq, model.nv, "friction:", int(np.count_nonzero(model.damping)), "joints with damping")
 
 
@@ -821,9 +799,7 @@ def joint_terms(name="solo12"):
         "conventions": "as friction_data's; Pinocchio's armature on crba's diagonal and in rnea and aba",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_joint_terms.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_joint_terms.json", result)
     print(name, "joint terms:", len(samples), "samples")
 
 
@@ -882,9 +858,7 @@ def joint_terms_derivatives(name="solo12"):
                        "ddq_dtau = Minv; Coulomb friction's derivative taken as 0 (flat away from v = 0)",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_joint_terms_derivatives.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_joint_terms_derivatives.json", result)
     print(name, "joint terms derivatives:", len(samples), "samples")
 
 
@@ -917,13 +891,7 @@ def surface(name, urdf):
     Jacobians (6 rows, or the 3 linear), gamma a 6-D contact's spatial acceleration at a = 0
     (getFrameAcceleration: the classical one less w x v in the linear part) and a 3-D contact's
     classical acceleration. Joints in the file's order."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
-    _, order = file_order(path)
-    names = list(model.names)[2:]
+    model, data, states, order, names = load(name, urdf)
     pick = [names.index(j) for j in order]
     frames = SURFACE[name]["frames"]
     ids = [model.getFrameId(f) for f in frames]
@@ -962,9 +930,7 @@ def surface(name, urdf):
                        "a_contact's joints in the file's order",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_surface_contacts.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_surface_contacts.json", result)
     print(name, "surface contacts:", len(samples), "samples, KKT gap %.1e" % worst)
 
 
@@ -1000,13 +966,7 @@ def extras(name, urdf):
     columns). Checks as `kinematics`, `contacts` and `configuration_space` do; the constrained
     and external-force accelerations against numpy's solves to 1e-9 (the G1's M has a
     condition number up to 3.5e5)."""
-    path = os.path.join(ROOT, urdf)
-    model = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
-    data = model.createData()
-    with open(os.path.join(HERE, name + ".json")) as f:
-        states = json.load(f)["samples"]
-    _, order = file_order(path)
-    names = list(model.names)[2:]
+    model, data, states, order, names = load(name, urdf)
     pick = [names.index(j) for j in order]
     iq = list(range(7)) + [7 + k for k in pick]
     iv = list(range(6)) + [6 + k for k in pick]
@@ -1041,9 +1001,7 @@ def extras(name, urdf):
                        "joints (rows, columns) in the file's order",
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_extras.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(name + "_extras.json", result)
     print(name, "extras:", len(samples), "samples,", len(frames), "frames")
 
 

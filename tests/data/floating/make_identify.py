@@ -26,13 +26,12 @@ Usage, from the repository root (Pinocchio 4.1, the `pin` wheel; imports `make.p
 """
 
 import importlib.metadata
-import json
 import os
 
 import numpy as np
 import pinocchio as pin
 
-from make import HERE, ROBOTS, ROOT, file_order, from_file_order, scaled
+from make import HERE, ROBOTS, ROOT, file_order, from_file_order, scaled, write_json
 
 NAME = "solo12"
 SEED = 20261130
@@ -159,9 +158,7 @@ def main():
         "rank_tolerance": RANK_TOLERANCE,
         "derivatives_check": worst,
     }
-    with open(os.path.join(HERE, NAME + "_identify.json"), "w") as f:
-        json.dump(result, f, indent=1)
-        f.write("\n")
+    write_json(NAME + "_identify.json", result)
     print(NAME, "identify:", count, "samples, rank", rank_all, gap_all, "joint rows", rank_joints, gap_joints,
           "derivatives %.1e" % worst)
 

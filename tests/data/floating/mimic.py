@@ -25,14 +25,13 @@ nonLinearEffects, computeGeneralizedGravity and the frames' Jacobians (`mimic_cr
 
 import hashlib
 import importlib.metadata
-import json
 import os
 
 import numpy as np
 import pinocchio as pin
 
 import make
-from make import HERE, ROOT, SAMPLES, SEED, TOLERANCE, file_order, joint_friction, scaled
+from make import HERE, ROOT, SAMPLES, SEED, TOLERANCE, file_order, joint_friction, scaled, write_json
 
 # name: URDF from the repository root, the frames of the kinematics.
 MIMIC = {"talos_full_v2": ("robots/urdf/floating/talos_full_v2.urdf",
@@ -304,9 +303,7 @@ def mimic_data(name):
         "snapping": snapping,
         "samples": samples,
     }
-    with open(os.path.join(HERE, name + "_mimic.json"), "w") as f:
-        json.dump(out, f, indent=1)
-        f.write("\n")
+    write_json(name + "_mimic.json", out)
     print(name, "mimic:", r.nq, r.nv, "of", model.nq, model.nv, check["per_quantity"], snapping)
 
 
