@@ -152,7 +152,7 @@ def check_rebuilt(record, samples):
     for s in samples:
         q, v, a = (np.array(s[k]) for k in ("q", "v", "a"))
         m = pin.crba(model, data, q)
-        assert scaled(np.triu(m) + np.triu(m, 1).T, s["M"]) < TOLERANCE
+        assert scaled(symmetric(m), s["M"]) < TOLERANCE
         assert scaled(pin.rnea(model, data, q, v, a), s["tau"]) < TOLERANCE
 
 
@@ -160,6 +160,22 @@ def scaled(a, b):
     """max |a - b| / max(1, max |b|)."""
     a, b = np.asarray(a), np.asarray(b)
     return float(np.max(np.abs(a - b)) / max(1.0, float(np.max(np.abs(b)))))
+
+
+def symmetric(m):
+    """`m`'s upper triangle mirrored (Pinocchio's crba and computeMinverse fill only that)."""
+    return np.triu(m) + np.triu(m, 1).T
+
+
+def dynamics_at(model, data, q, v, a):
+    """M (crba), h (nonLinearEffects), rnea(q, v, a) and g (computeGeneralizedGravity) at one
+    state, Pinocchio's joint order; checks rnea = M a + h to 1e-12."""
+    m = symmetric(pin.crba(model, data, q))
+    h = pin.nonLinearEffects(model, data, q, v).copy()
+    tau = pin.rnea(model, data, q, v, a).copy()
+    g = pin.computeGeneralizedGravity(model, data, q).copy()
+    assert scaled(m @ a + h, tau) < TOLERANCE
+    return m, h, tau, g
 
 
 def sample(rng, model, k):
@@ -207,8 +223,7 @@ def configuration_space(rng, model, data, k, q, v, m, h):
     tau_in = rng.uniform(-20, 20, model.nv)
     dv, q1 = configuration_step(rng, model, k)
     a_fd = pin.aba(model, data, q, v, tau_in).copy()
-    m_inv = pin.computeMinverse(model, data, q).copy()
-    m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+    m_inv = symmetric(pin.computeMinverse(model, data, q))
     assert scaled(m @ a_fd + h, tau_in) < TOLERANCE
     assert scaled(m @ m_inv, np.eye(model.nv)) < TOLERANCE
     q_next, dq, jacobians = configuration_at(model, q, dv, q1)
@@ -230,12 +245,7 @@ def make(name, urdf):
     samples = []
     for k in range(SAMPLES):
         q, v, a = sample(rng, model, k)
-        m = pin.crba(model, data, q).copy()
-        m = np.triu(m) + np.triu(m, 1).T
-        h = pin.nonLinearEffects(model, data, q, v).copy()
-        tau = pin.rnea(model, data, q, v, a).copy()
-        g = pin.computeGeneralizedGravity(model, data, q).copy()
-        assert scaled(m @ a + h, tau) < TOLERANCE
+        m, h, tau, g = dynamics_at(model, data, q, v, a)
         assert scaled(pin.rnea(model, data, q, np.zeros(model.nv), np.zeros(model.nv)), g) < TOLERANCE
         q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
         state = {"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
@@ -363,8 +373,7 @@ def kkt_gap(model, data, q, v, tau, held, ddq, lambda_c):
     rows at a surface, the 3 linear at a point), gamma a surface's spatial acceleration at a = 0
     (getFrameAcceleration: the classical one less w x v in the linear part) and a point's
     classical acceleration."""
-    m = pin.crba(model, data, q)
-    m = np.triu(m) + np.triu(m, 1).T
+    m = symmetric(pin.crba(model, data, q))
     h = pin.nonLinearEffects(model, data, q, v).copy()
     pin.forwardKinematics(model, data, q, v, np.zeros(model.nv))
     pin.computeJointJacobians(model, data, q)
@@ -396,8 +405,7 @@ def contacts_at(model, data, state, ids, mask, rng, tolerance, iv=slice(None)):
     pin.computeJointJacobians(model, data, q)
     pin.updateFramePlacements(model, data)
     jac = [pin.getFrameJacobian(model, data, i, pin.LOCAL_WORLD_ALIGNED).copy() for i in ids]
-    m = pin.crba(model, data, q).copy()
-    m = np.triu(m) + np.triu(m, 1).T
+    m = symmetric(pin.crba(model, data, q))
     out = {}
     for key, w in [("wrenches", wrenches), ("forces", np.hstack([forces, np.zeros_like(forces)]))]:
         # fext: each wrench turned into its frame's axes and carried to the frame's joint.
@@ -561,9 +569,8 @@ def derivatives(name, urdf):
         assert scaled(fd_v, dtau_dv) < 1e-5, scaled(fd_v, dtau_dv)
         ddq = pin.aba(model, data, q, v, tau_in).copy()
         ddq_dq, ddq_dv, m_inv = (x.copy() for x in pin.computeABADerivatives(model, data, q, v, tau_in))
-        m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
-        m = pin.crba(model, data, q).copy()
-        m = np.triu(m) + np.triu(m, 1).T
+        m_inv = symmetric(m_inv)
+        m = symmetric(pin.crba(model, data, q))
         assert scaled(m_inv @ m, np.eye(model.nv)) < 1e-10
         at_ddq, _, _ = pin.computeRNEADerivatives(model, data, q, v, ddq)
         assert scaled(-m_inv @ at_ddq, ddq_dq) < 1e-10, scaled(-m_inv @ at_ddq, ddq_dq)
@@ -679,14 +686,9 @@ def friction_states(name, model, order, names, rng, damping, friction, extra):
     samples = []
     for k in range(SAMPLES):
         q, v, a = sample(rng, model, k)
-        m = pin.crba(model, data, q).copy()
-        m = np.triu(m) + np.triu(m, 1).T
-        h = pin.nonLinearEffects(model, data, q, v).copy()
-        rigid = pin.rnea(model, data, q, v, a).copy()
-        assert scaled(m @ a + h, rigid) < TOLERANCE
+        m, h, rigid, g = dynamics_at(model, data, q, v, a)
         f = joint_friction(v, damping, friction)
         tau = rigid + f
-        g = pin.computeGeneralizedGravity(model, data, q).copy()
         tau_in = extra.uniform(-20, 20, model.nv)
         a_fd = pin.aba(model, data, q, v, tau_in - f).copy()
         assert scaled(m @ a_fd + h + f, tau_in) < 1e-10
@@ -838,7 +840,7 @@ def joint_terms_derivatives(name="solo12"):
         ddq = pin.aba(model, data, q, v, tau_in - friction).copy()
         assert scaled(ddq, np.array(s["a_fd"])) < 1e-15
         ddq_dq, ddq_dv, m_inv = (x.copy() for x in pin.computeABADerivatives(model, data, q, v, tau_in - friction))
-        m_inv = np.triu(m_inv) + np.triu(m_inv, 1).T
+        m_inv = symmetric(m_inv)
         assert scaled(m_inv @ np.array(s["M"]), np.eye(model.nv)) < 1e-10
         ddq_dv -= m_inv @ np.diag(damping)
         forward = lambda x, v: pin.aba(model, data, x, v, tau_in - coulomb * np.sign(s["v"]) - damping * v)

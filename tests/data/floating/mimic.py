@@ -31,7 +31,7 @@ import numpy as np
 import pinocchio as pin
 
 import make
-from make import HERE, ROOT, SAMPLES, SEED, TOLERANCE, file_order, joint_friction, scaled, write_json
+from make import HERE, ROOT, SAMPLES, SEED, TOLERANCE, file_order, joint_friction, scaled, symmetric, write_json
 
 # name: URDF from the repository root, the frames of the kinematics.
 MIMIC = {"talos_full_v2": ("robots/urdf/floating/talos_full_v2.urdf",
@@ -116,10 +116,6 @@ class Reduction:
         quaternion /= np.linalg.norm(quaternion)
         q = np.concatenate([rng.uniform(-1, 1, 3), quaternion, rng.uniform(-np.pi, np.pi, self.nv - 6)])
         return q, rng.uniform(-2, 2, self.nv), rng.uniform(-2, 2, self.nv)
-
-
-def symmetric(m):
-    return np.triu(m) + np.triu(m, 1).T
 
 
 def dynamics(model, data, r, q, v, a, tau_in):
