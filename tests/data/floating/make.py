@@ -103,13 +103,18 @@ def write_json(file, record):
         f.write("\n")
 
 
+def file_indices(names, order):
+    """The indices that take Pinocchio's q (`iq`) and v (`iv`) to the file's joint `order`:
+    `q[iq]`, `v[iv]`; the free flyer's 7 and 6 first coordinates stay."""
+    pick = [names.index(j) for j in order]
+    return list(range(7)) + [7 + k for k in pick], list(range(6)) + [6 + k for k in pick]
+
+
 def to_file_order(model, names, order, q, v, a, m, h, tau, g):
     """Pinocchio's joint coordinates (its `names` order) permuted into the file's `order`; the
     free flyer's 7 (q) and 6 (v) first coordinates stay."""
     assert sorted(names) == sorted(order), (names, order)
-    pick = [names.index(j) for j in order]
-    iq = list(range(7)) + [7 + k for k in pick]
-    iv = list(range(6)) + [6 + k for k in pick]
+    iq, iv = file_indices(names, order)
     assert model.nq == len(iq) and model.nv == len(iv)
     return q[iq], v[iv], a[iv], m[np.ix_(iv, iv)], h[iv], tau[iv], g[iv]
 
@@ -488,6 +493,7 @@ def contact_fd(name, urdf):
     ids = [model.getFrameId(f) for f in frames]
     held = [(i, "point") for i in ids]
     models, datas = rigid_contacts(model, data, held)
+    _, iv = file_indices(names, order)
     samples = []
     for s in states:
         q = from_file_order(names, order, np.array(s["q"]), 7)
@@ -496,9 +502,7 @@ def contact_fd(name, urdf):
         ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas).copy()
         lambda_c = data.lambda_c.copy()
         assert kkt_gap(model, data, q, v, tau, held, ddq, lambda_c) < 1e-10
-        pick = [names.index(j) for j in order]
-        a_file = np.concatenate([ddq[:6], ddq[6:][pick]])
-        samples.append({"a_contact": a_file.tolist(), "lambda": lambda_c.reshape(-1, 3).tolist()})
+        samples.append({"a_contact": ddq[iv].tolist(), "lambda": lambda_c.reshape(-1, 3).tolist()})
     feet = [{"name": model.frames[i].name, "joint": model.names[model.frames[i].parentJoint],
              "rotation": model.frames[i].placement.rotation.tolist(),
              "translation": model.frames[i].placement.translation.tolist()} for i in ids]
@@ -553,8 +557,7 @@ def derivatives(name, urdf):
     (1e-5 scaled: a wrong convention is off by O(1)), Minv M = 1 and ddq_dq = -Minv dtau_dq at a = ddq (1e-10 scaled)."""
     model, data, states, order, names = load(name, urdf)
     rng = np.random.default_rng(SEED + 2)
-    pick = [names.index(j) for j in order]
-    iv = list(range(6)) + [6 + k for k in pick]
+    _, iv = file_indices(names, order)
     to_file = lambda m: m[np.ix_(iv, iv)]
     samples = []
     for s in states:
@@ -692,8 +695,7 @@ def friction_states(name, model, order, names, rng, damping, friction, extra):
         tau_in = extra.uniform(-20, 20, model.nv)
         a_fd = pin.aba(model, data, q, v, tau_in - f).copy()
         assert scaled(m @ a_fd + h + f, tau_in) < 1e-10
-        pick = [names.index(j) for j in order]
-        iv = list(range(6)) + [6 + k for k in pick]
+        _, iv = file_indices(names, order)
         q, v, a, m, h, tau, g = to_file_order(model, names, order, q, v, a, m, h, tau, g)
         samples.append({"q": q.tolist(), "v": v.tolist(), "a": a.tolist(), "M": m.tolist(),
                         "h": h.tolist(), "tau": tau.tolist(), "g": g.tolist(),
@@ -894,7 +896,7 @@ def surface(name, urdf):
     (getFrameAcceleration: the classical one less w x v in the linear part) and a 3-D contact's
     classical acceleration. Joints in the file's order."""
     model, data, states, order, names = load(name, urdf)
-    pick = [names.index(j) for j in order]
+    _, iv = file_indices(names, order)
     frames = SURFACE[name]["frames"]
     ids = [model.getFrameId(f) for f in frames]
     samples = []
@@ -918,7 +920,7 @@ def surface(name, urdf):
             size = {"surface": 6, "point": 3, "none": 0}[kind]
             wrenches[f, :size] = lambda_c[at:at + size]
             at += size
-        samples.append({"contacts": kinds, "a_contact": np.concatenate([ddq[:6], ddq[6:][pick]]).tolist(),
+        samples.append({"contacts": kinds, "a_contact": ddq[iv].tolist(),
                         "wrenches": wrenches.tolist()})
     result = {
         "robot": name,
@@ -969,9 +971,7 @@ def extras(name, urdf):
     and external-force accelerations against numpy's solves to 1e-9 (the G1's M has a
     condition number up to 3.5e5)."""
     model, data, states, order, names = load(name, urdf)
-    pick = [names.index(j) for j in order]
-    iq = list(range(7)) + [7 + k for k in pick]
-    iv = list(range(6)) + [6 + k for k in pick]
+    iq, iv = file_indices(names, order)
     columns = lambda m: np.asarray(m)[..., iv]
     frames = EXTRAS[name]["frames"]
     ids = [model.getFrameId(f) for f in frames]

@@ -31,7 +31,7 @@ import os
 import numpy as np
 import pinocchio as pin
 
-from make import HERE, ROBOTS, ROOT, file_order, from_file_order, scaled, write_json
+from make import HERE, ROBOTS, ROOT, file_indices, file_order, from_file_order, scaled, write_json
 
 NAME = "solo12"
 SEED = 20261130
@@ -111,9 +111,7 @@ def main():
     count = int(round(RATE * DURATION)) + 1
     times = [k / RATE for k in range(count)]
     worst = check_derivatives(model, motion, times)
-    pick = [names.index(j) for j in order]
-    iq = list(range(7)) + [7 + k for k in pick]
-    iv = list(range(6)) + [6 + k for k in pick]
+    iq, iv = file_indices(names, order)
     rows, stacked = [], []
     previous = None
     for t in times:
