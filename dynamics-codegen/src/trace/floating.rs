@@ -30,7 +30,7 @@ use std::cell::RefCell;
 pub const BASE_COORDINATES: usize = 6;
 
 /// Traces the floating-base equations of `robot` on the free flyer `flyer`, in its coordinates
-/// where it has mimic joints ([`super::floating_mimic`]). The front end has checked the robot.
+/// where it has mimic joints (`floating_mimic`). The front end has checked the robot.
 #[must_use]
 pub fn derive_floating(robot: &Robot, flyer: &FreeFlyer) -> Equations {
     trace_floating(robot, flyer, Gravity::World)
